@@ -1,0 +1,164 @@
+//! Convergence study of the discrete invariants (Propositions 1 and 2, Section 2).
+//!
+//! Around a parameter u of an analytic surface, take the rulings R(u − H), R(u), R(u + H)
+//! for H = H₀, H₀/2, H₀/4, … and compare with the exact values at u:
+//!
+//! | quantity            | discrete                     | exact  | expected order |
+//! |---------------------|------------------------------|--------|----------------|
+//! | `footpoint`         | f_{i,i+1}                    | s(u)   | 1 (3), (6)     |
+//! | `midpoint`          | (f_{i,i−1} + f_{i,i+1})/2    | s(u)   | 2 (7)          |
+//! | `distribution`      | δ_{i,i+1} (1)                | δ(u)   | 1 (2), (5)     |
+//! | `distributionMean`  | (δ_{i−1,i} + δ_{i,i+1})/2    | δ(u)   | 2 (7)          |
+//! | `centralNormal`     | ∠(n_{i,i+1}, e₃(u))          | 0      | 1 (4)          |
+//! | `perpendicularMidpoint` | (f_{i,i+1} + f_{i+1,i})/2 | s(u + H/2) | 2 (ERRATA 6) |
+//!
+//! Orders are log₂ of successive error ratios; the fitted order is the least-squares slope
+//! of log(error) against log(H). Errors at the rounding floor carry no order (NaN).
+
+use crate::error::{Error, Result};
+use crate::examples::AnalyticSurface;
+use crate::ruled::invariants::PairInvariants;
+use crate::tolerance::MAX_STUDY_LEVELS;
+use serde::Serialize;
+
+/// Errors below this (relative to the surface's size, ~1) are rounding noise and carry no order.
+const NOISE_FLOOR: f64 = 1e-13;
+
+/// One quantity's errors over the refinement levels.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Series {
+    /// Name of the quantity (see the module table).
+    pub name: &'static str,
+    /// The order Propositions 1 and 2 predict.
+    pub expected_order: f64,
+    /// Error at each step H.
+    pub errors: Vec<f64>,
+    /// log₂(errors[k]/errors[k+1]), one fewer than the errors.
+    pub orders: Vec<f64>,
+    /// Least-squares slope of log error against log H.
+    pub fitted_order: f64,
+}
+
+/// The result of [`study`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Study {
+    /// Surface name.
+    pub surface: &'static str,
+    /// The parameter u studied.
+    pub u: f64,
+    /// The steps H₀, H₀/2, ….
+    pub steps: Vec<f64>,
+    /// One series per quantity.
+    pub series: Vec<Series>,
+}
+
+/// Runs the study at `u` with steps `h0 · 2^{−k}`, k = 0 … levels − 1.
+pub fn study(surface: &AnalyticSurface, u: f64, h0: f64, levels: usize) -> Result<Study> {
+    if !u.is_finite() {
+        return Err(Error::parameter("u", format!("must be a finite number, got {u}")));
+    }
+    if !(h0.is_finite() && h0 > 0.0 && h0 <= 1.0) {
+        return Err(Error::parameter("h0", format!("must be in (0, 1], got {h0}")));
+    }
+    if !(2..=MAX_STUDY_LEVELS).contains(&levels) {
+        return Err(Error::parameter(
+            "levels",
+            format!("must be an integer from 2 to {MAX_STUDY_LEVELS}, got {levels}"),
+        ));
+    }
+    let (Some(s), Some(e3)) = (surface.striction(u), surface.central_tangent(u)) else {
+        return Err(Error::parameter(
+            "surface",
+            format!("{} has no striction point at u = {u} (cylindrical ruling)", surface.name()),
+        ));
+    };
+    let delta = surface.distribution(u);
+    let steps: Vec<f64> = (0..levels).map(|k| h0 / f64::powi(2.0, k as i32)).collect();
+    let names = [
+        ("footpoint", 1.0),
+        ("midpoint", 2.0),
+        ("distribution", 1.0),
+        ("distributionMean", 2.0),
+        ("centralNormal", 1.0),
+        ("perpendicularMidpoint", 2.0),
+    ];
+    let mut errors = vec![Vec::with_capacity(levels); names.len()];
+    for &h in &steps {
+        let (rm, r0, rp) = (surface.line(u - h), surface.line(u), surface.line(u + h));
+        let (prev, next) = (PairInvariants::of(&rm, &r0), PairInvariants::of(&r0, &rp));
+        let (Some((_, f_back)), Some((f_fwd, f_next)), Some(n)) = (prev.feet, next.feet, next.normal)
+        else {
+            return Err(Error::parameter("h0", format!("rulings at step {h} are parallel")));
+        };
+        let s_mid = surface.striction(u + h / 2.0).unwrap_or(s);
+        let values = [
+            (f_fwd - s).length(),
+            (0.5 * (f_back + f_fwd) - s).length(),
+            (next.distribution() - delta).abs(),
+            (0.5 * (prev.distribution() + next.distribution()) - delta).abs(),
+            n.angle_between(e3),
+            (0.5 * (f_fwd + f_next) - s_mid).length(),
+        ];
+        for (series, v) in errors.iter_mut().zip(values) {
+            series.push(v);
+        }
+    }
+    let series = names
+        .iter()
+        .zip(errors)
+        .map(|(&(name, expected_order), errors)| {
+            let orders = errors
+                .windows(2)
+                .map(|w| if w[1] > NOISE_FLOOR { (w[0] / w[1]).log2() } else { f64::NAN })
+                .collect();
+            Series { name, expected_order, fitted_order: fit_order(&steps, &errors), errors, orders }
+        })
+        .collect();
+    Ok(Study { surface: surface.name(), u, steps, series })
+}
+
+/// Least-squares slope of log(error) against log(H) over the errors above the noise floor.
+pub fn fit_order(steps: &[f64], errors: &[f64]) -> f64 {
+    let pts: Vec<(f64, f64)> = steps
+        .iter()
+        .zip(errors)
+        .filter(|(_, &e)| e > NOISE_FLOOR)
+        .map(|(&h, &e)| (h.ln(), e.ln()))
+        .collect();
+    if pts.len() < 2 {
+        return f64::NAN;
+    }
+    let n = pts.len() as f64;
+    let (mx, my) = pts.iter().fold((0.0, 0.0), |(a, b), (x, y)| (a + x / n, b + y / n));
+    let (sxy, sxx) = pts
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (x, y)| (a + (x - mx) * (y - my), b + (x - mx) * (x - mx)));
+    sxy / sxx
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assert_near;
+    use crate::tolerance::test::EXACT;
+
+    #[test]
+    fn fit_recovers_a_power_law() {
+        let steps = [0.1, 0.05, 0.025, 0.0125];
+        let errors: Vec<f64> = steps.iter().map(|h: &f64| 3.0 * h.powf(2.5)).collect();
+        assert_near!(fit_order(&steps, &errors), 2.5, EXACT);
+        assert!(fit_order(&steps, &[0.0; 4]).is_nan());
+    }
+
+    #[test]
+    fn rejects_bad_parameters() {
+        let s = AnalyticSurface::Quartic;
+        assert!(study(&s, f64::NAN, 0.1, 5).is_err());
+        assert!(study(&s, 0.3, 0.0, 5).is_err());
+        assert!(study(&s, 0.3, 0.1, 1).is_err());
+        assert!(study(&s, 0.3, 0.1, 99).is_err());
+        assert!(study(&AnalyticSurface::Cylinder, 0.3, 0.1, 5).is_err());
+    }
+}

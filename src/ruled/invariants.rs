@@ -1,0 +1,274 @@
+//! Discrete invariants of a sequence of lines (Section 2, Fig. 1, Propositions 1 and 2).
+//!
+//! For consecutive rulings R_i = (a_i, e_i) and R_{i+1} = (a_{i+1}, e_{i+1}), with
+//! d = a_{i+1} − a_i and c = e_i × e_{i+1} (conventions of ERRATA.md):
+//!
+//! - angle φ_{i,i+1} = atan2(|c|, e_i·e_{i+1}) ∈ [0, π];
+//! - signed distance h_{i,i+1} = det(d, e_i, e_{i+1}) / |c| = (d·c)/|c|;
+//! - central normal n_{i,i+1} = c/|c|, the direction of the common perpendicular N_{i,i+1};
+//!   it converges to the central tangent direction e₃ (4);
+//! - footpoints f_{i,i+1} = a_i + t e_i ∈ R_i and f_{i+1,i} = a_{i+1} + s e_{i+1} ∈ R_{i+1},
+//!   t = ((d × e_{i+1})·c)/|c|², s = ((d × e_i)·c)/|c|²; they converge to the striction
+//!   point at first order (3);
+//! - discrete distribution parameter δ_{i,i+1} = h_{i,i+1}/φ_{i,i+1} (1), first order (2);
+//! - striction polygon m_i = (f_{i,i−1} + f_{i,i+1})/2 and averaged distribution parameter
+//!   (δ_{i−1,i} + δ_{i,i+1})/2 for interior rulings: second order (7), Proposition 2;
+//! - Example 1's polygon (f_{i,i+1} + f_{i+1,i})/2, the midpoints of the common
+//!   perpendiculars, which approximate s at the parameter midpoint, also at second order.
+//!
+//! **Parallel pairs.** When |sin φ| < [`PARALLEL_SIN`] (parallel, antiparallel or
+//! coincident rulings) the common perpendicular is not unique. Then `parallel` is set, the
+//! angle is still returned (≈ 0 or ≈ π), `distance` is the unsigned distance of the two
+//! lines, and the distribution parameter, footpoints, normal and every striction quantity
+//! that uses them are NaN: never a number that looks valid but is not. Intersecting
+//! rulings (h = 0) are not degenerate.
+
+use crate::line::Line;
+use crate::tolerance::PARALLEL_SIN;
+use glam::DVec3;
+
+/// The invariants of one pair of consecutive rulings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PairInvariants {
+    /// φ_{i,i+1} ∈ [0, π].
+    pub angle: f64,
+    /// Signed distance h_{i,i+1}; unsigned distance of the lines when parallel.
+    pub distance: f64,
+    /// n_{i,i+1} = (e_i × e_{i+1})/|e_i × e_{i+1}|; `None` when parallel.
+    pub normal: Option<DVec3>,
+    /// Footpoints (f_{i,i+1} ∈ R_i, f_{i+1,i} ∈ R_{i+1}); `None` when parallel.
+    pub feet: Option<(DVec3, DVec3)>,
+}
+
+impl PairInvariants {
+    /// The invariants of the lines `r0`, `r1` (unit directions).
+    pub fn of(r0: &Line, r1: &Line) -> Self {
+        let d = r1.point - r0.point;
+        let c = r0.dir.cross(r1.dir);
+        let sin = c.length();
+        let angle = sin.atan2(r0.dir.dot(r1.dir));
+        if sin < PARALLEL_SIN {
+            return PairInvariants {
+                angle,
+                distance: d.reject_from_normalized(r0.dir).length(),
+                normal: None,
+                feet: None,
+            };
+        }
+        let sin2 = sin * sin;
+        let t = d.cross(r1.dir).dot(c) / sin2;
+        let s = d.cross(r0.dir).dot(c) / sin2;
+        PairInvariants {
+            angle,
+            distance: d.dot(c) / sin,
+            normal: Some(c / sin),
+            feet: Some((r0.point + t * r0.dir, r1.point + s * r1.dir)),
+        }
+    }
+
+    /// Whether the pair counts as parallel (no unique common perpendicular).
+    pub fn is_parallel(&self) -> bool {
+        self.normal.is_none()
+    }
+
+    /// δ_{i,i+1} = h_{i,i+1}/φ_{i,i+1} (1); NaN for a parallel pair.
+    pub fn distribution(&self) -> f64 {
+        if self.is_parallel() {
+            f64::NAN
+        } else {
+            self.distance / self.angle
+        }
+    }
+}
+
+/// The invariants of a whole discrete ruled surface R_0 … R_{N−1}, as flat arrays
+/// (N − 1 pairs, N − 2 interior rulings). Points and vectors are `DVec3`s, which glam lays
+/// out as three consecutive `f64`, so [`Invariants::flat`] views them without copying.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Invariants {
+    /// φ_{i,i+1}, N − 1 values.
+    pub angle: Vec<f64>,
+    /// h_{i,i+1}, N − 1 values.
+    pub distance: Vec<f64>,
+    /// δ_{i,i+1} (1), N − 1 values.
+    pub distribution: Vec<f64>,
+    /// f_{i,i+1} then f_{i+1,i} for each pair: 2(N − 1) points.
+    pub footpoints: Vec<DVec3>,
+    /// n_{i,i+1}, N − 1 unit vectors.
+    pub central_normal: Vec<DVec3>,
+    /// Whether pair (i, i+1) is parallel, N − 1 flags.
+    pub parallel: Vec<bool>,
+    /// m_i = (f_{i,i−1} + f_{i,i+1})/2 for i = 1 … N − 2 (7).
+    pub striction: Vec<DVec3>,
+    /// (δ_{i−1,i} + δ_{i,i+1})/2 for i = 1 … N − 2 (7).
+    pub distribution_mean: Vec<f64>,
+    /// (f_{i,i+1} + f_{i+1,i})/2, N − 1 points: Example 1's polygon.
+    pub perpendicular_midpoints: Vec<DVec3>,
+}
+
+const NAN3: DVec3 = DVec3::splat(f64::NAN);
+
+impl Invariants {
+    /// Computes every invariant in one pass over the lines (O(N), one allocation per array).
+    pub fn of(lines: &[Line]) -> Self {
+        let pairs = lines.len().saturating_sub(1);
+        let interior = lines.len().saturating_sub(2);
+        let mut inv = Invariants {
+            angle: Vec::with_capacity(pairs),
+            distance: Vec::with_capacity(pairs),
+            distribution: Vec::with_capacity(pairs),
+            footpoints: Vec::with_capacity(2 * pairs),
+            central_normal: Vec::with_capacity(pairs),
+            parallel: Vec::with_capacity(pairs),
+            striction: Vec::with_capacity(interior),
+            distribution_mean: Vec::with_capacity(interior),
+            perpendicular_midpoints: Vec::with_capacity(pairs),
+        };
+        for (i, w) in lines.windows(2).enumerate() {
+            let p = PairInvariants::of(&w[0], &w[1]);
+            let (f0, f1) = p.feet.unwrap_or((NAN3, NAN3));
+            let delta = p.distribution();
+            if i > 0 {
+                // f_{i,i−1} is the foot on R_i of the previous pair, stored last.
+                let f_prev = inv.footpoints[2 * i - 1];
+                inv.striction.push(0.5 * (f_prev + f0));
+                inv.distribution_mean.push(0.5 * (inv.distribution[i - 1] + delta));
+            }
+            inv.angle.push(p.angle);
+            inv.distance.push(p.distance);
+            inv.distribution.push(delta);
+            inv.footpoints.push(f0);
+            inv.footpoints.push(f1);
+            inv.central_normal.push(p.normal.unwrap_or(NAN3));
+            inv.parallel.push(p.is_parallel());
+            inv.perpendicular_midpoints.push(0.5 * (f0 + f1));
+        }
+        inv
+    }
+
+    /// A `DVec3` slice as its flat `f64` coordinates, without copying.
+    pub fn flat(points: &[DVec3]) -> &[f64] {
+        bytemuck::cast_slice(points)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assert_near;
+    use crate::tolerance::test::EXACT;
+    use std::f64::consts::FRAC_PI_2;
+
+    fn line(p: [f64; 3], d: [f64; 3]) -> Line {
+        Line { point: DVec3::from(p), dir: DVec3::from(d).normalize() }
+    }
+
+    #[test]
+    fn perpendicular_skew_lines() {
+        // R0 = x-axis, R1 = the line through (0, 0, 2) along y: h = 2, φ = π/2.
+        let r0 = line([5.0, 0.0, 0.0], [1.0, 0.0, 0.0]);
+        let r1 = line([0.0, -3.0, 2.0], [0.0, 1.0, 0.0]);
+        let p = PairInvariants::of(&r0, &r1);
+        assert_near!(p.angle, FRAC_PI_2, EXACT);
+        assert_near!(p.distance, 2.0, EXACT);
+        assert_near!(p.distribution(), 2.0 / FRAC_PI_2, EXACT);
+        assert_eq!(p.normal, Some(DVec3::Z));
+        let (f0, f1) = p.feet.unwrap();
+        assert_near!(f0, DVec3::ZERO, EXACT);
+        assert_near!(f1, DVec3::new(0.0, 0.0, 2.0), EXACT);
+    }
+
+    #[test]
+    fn sign_of_h_follows_the_orientation_convention() {
+        // h = det(d, e0, e1)/|e0 × e1| changes sign with e1 and with the order of the lines.
+        let r0 = line([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]);
+        let r1 = line([0.0, 0.0, 2.0], [0.0, 1.0, 0.0]);
+        let r1_flipped = line([0.0, 0.0, 2.0], [0.0, -1.0, 0.0]);
+        assert_near!(PairInvariants::of(&r0, &r1).distance, 2.0, EXACT);
+        assert_near!(PairInvariants::of(&r0, &r1_flipped).distance, -2.0, EXACT);
+        assert_near!(PairInvariants::of(&r1, &r0).distance, 2.0, EXACT);
+    }
+
+    #[test]
+    fn intersecting_lines_have_zero_distance_and_meet_at_the_feet() {
+        let r0 = line([1.0, 1.0, 1.0], [1.0, 2.0, 0.5]);
+        let r1 = line([1.0, 1.0, 1.0], [-1.0, 0.3, 2.0]);
+        let p = PairInvariants::of(&r0, &r1);
+        assert_near!(p.distance, 0.0, EXACT);
+        assert_eq!(p.distribution(), 0.0);
+        let (f0, f1) = p.feet.unwrap();
+        assert_near!(f0, DVec3::ONE, EXACT);
+        assert_near!(f1, DVec3::ONE, EXACT);
+    }
+
+    #[test]
+    fn parallel_antiparallel_and_coincident_pairs_are_flagged() {
+        let r0 = line([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]);
+        let cases = [
+            (line([3.0, 4.0, 7.0], [0.0, 0.0, 1.0]), 0.0, 5.0),
+            (line([3.0, 4.0, 7.0], [0.0, 0.0, -1.0]), std::f64::consts::PI, 5.0),
+            (line([0.0, 0.0, 9.0], [0.0, 0.0, 1.0]), 0.0, 0.0),
+            // sin φ = 1e-12: below the threshold
+            (line([1.0, 0.0, 0.0], [1e-12, 0.0, 1.0]), 1e-12, 1.0),
+        ];
+        for (r1, angle, dist) in cases {
+            let p = PairInvariants::of(&r0, &r1);
+            assert!(p.is_parallel());
+            assert_near!(p.angle, angle, EXACT);
+            assert_near!(p.distance, dist, EXACT);
+            assert!(p.distribution().is_nan());
+            assert!(p.feet.is_none() && p.normal.is_none());
+        }
+    }
+
+    #[test]
+    fn nearly_parallel_skew_lines_just_above_the_threshold_are_accurate() {
+        // Lines x = 0 and x = 1 along z, the second tilted by angle 1e-6 about the x-axis
+        // through (1, 0, 0): the common perpendicular is the x-axis segment [0, 1].
+        let eps = 1e-6_f64;
+        let r0 = line([0.0, 0.0, 5.0], [0.0, 0.0, 1.0]);
+        let r1 = line([1.0, eps.sin() * 5.0, eps.cos() * 5.0], [0.0, eps.sin(), eps.cos()]);
+        let p = PairInvariants::of(&r0, &r1);
+        assert!(!p.is_parallel());
+        let (f0, f1) = p.feet.unwrap();
+        assert_near!(f0, DVec3::ZERO, 1e-8);
+        assert_near!(f1, DVec3::X, 1e-8);
+        assert_near!(p.distance.abs(), 1.0, 1e-9);
+    }
+
+    #[test]
+    fn striction_polygon_averages_the_two_feet_on_each_ruling() {
+        let lines = [
+            line([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]),
+            line([0.0, 0.0, 1.0], [1.0, 1.0, 0.0]),
+            line([0.0, 0.0, 2.0], [0.0, 1.0, 0.0]),
+        ];
+        let inv = Invariants::of(&lines);
+        assert_eq!(inv.angle.len(), 2);
+        assert_eq!(inv.footpoints.len(), 4);
+        assert_eq!(inv.striction.len(), 1);
+        // Every pair meets the z-axis orthogonally: all feet lie on it.
+        assert_near!(inv.footpoints[1], DVec3::new(0.0, 0.0, 1.0), EXACT);
+        assert_near!(inv.footpoints[2], DVec3::new(0.0, 0.0, 1.0), EXACT);
+        assert_near!(inv.striction[0], DVec3::new(0.0, 0.0, 1.0), EXACT);
+        assert_near!(inv.distribution_mean[0], 1.0 / std::f64::consts::FRAC_PI_4, EXACT);
+        assert_near!(inv.perpendicular_midpoints[0], DVec3::new(0.0, 0.0, 0.5), EXACT);
+        assert_eq!(Invariants::flat(&inv.striction), &[0.0, 0.0, 1.0][..]);
+    }
+
+    #[test]
+    fn a_parallel_pair_poisons_only_its_neighbours() {
+        let lines = [
+            line([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]),
+            line([0.0, 0.0, 1.0], [0.0, 1.0, 0.0]),
+            line([0.0, 1.0, 1.0], [0.0, 1.0, 0.0]),
+            line([0.0, 1.0, 2.0], [1.0, 0.0, 0.0]),
+            line([0.0, 1.0, 3.0], [0.0, 1.0, 0.0]),
+        ];
+        let inv = Invariants::of(&lines);
+        assert_eq!(inv.parallel, [false, true, false, false]);
+        assert!(inv.striction[0].is_nan() && inv.striction[1].is_nan());
+        assert!(inv.striction[2].is_finite());
+        assert!(inv.distribution_mean[1].is_nan() && inv.distribution_mean[2].is_finite());
+    }
+}

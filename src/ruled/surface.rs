@@ -1,0 +1,205 @@
+//! A discrete ruled surface: a validated sequence of rulings R_0 … R_{N−1}, N ≥ 2
+//! (Section 2). Every constructor checks its input, so the algorithms that take a
+//! `RuledSurface` never meet NaN, infinities or zero-length rulings.
+
+use crate::error::{Error, Result};
+use crate::line::{Line, Segment};
+use crate::ruled::invariants::Invariants;
+use crate::tolerance::{MAX_COORD, MAX_RULINGS, ZERO_LENGTH_REL};
+use glam::DVec3;
+
+/// A discrete ruled surface: N ≥ 2 segments a_i → b_i, each finite and of nonzero length.
+///
+/// Stored as the 2N endpoints a_0, b_0, a_1, b_1, …, which is exactly the flat layout of
+/// the JS API, so [`RuledSurface::flat`] is a view, not a copy.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RuledSurface {
+    points: Vec<DVec3>,
+}
+
+/// Numbers per ruling in flat arrays: a.x a.y a.z b.x b.y b.z.
+pub const FLAT_STRIDE: usize = 6;
+
+impl RuledSurface {
+    /// Fewest rulings a discrete ruled surface may have.
+    pub const MIN_RULINGS: usize = 2;
+
+    /// From flat coordinates, 6 numbers per ruling (a_i then b_i).
+    pub fn from_flat(coords: &[f64]) -> Result<Self> {
+        if coords.len() % FLAT_STRIDE != 0 {
+            return Err(Error::BadLength {
+                what: "segment coordinates",
+                len: coords.len(),
+                multiple: FLAT_STRIDE,
+            });
+        }
+        check_count(coords.len() / FLAT_STRIDE)?;
+        check_coordinates(coords)?;
+        let points = coords.chunks_exact(3).map(DVec3::from_slice).collect();
+        Self::checked_lengths(points)
+    }
+
+    /// From segments; rejects the same inputs as [`RuledSurface::from_flat`].
+    pub fn new(segments: Vec<Segment>) -> Result<Self> {
+        check_count(segments.len())?;
+        for (i, s) in segments.iter().enumerate() {
+            let c = [s.a.x, s.a.y, s.a.z, s.b.x, s.b.y, s.b.z];
+            check_coordinates(&c).map_err(|e| shift_index(e, FLAT_STRIDE * i))?;
+        }
+        Self::checked_lengths(segments.iter().flat_map(|s| [s.a, s.b]).collect())
+    }
+
+    fn checked_lengths(points: Vec<DVec3>) -> Result<Self> {
+        for (i, ab) in points.chunks_exact(2).enumerate() {
+            let len = (ab[1] - ab[0]).length();
+            if !(len > ZERO_LENGTH_REL * ab[0].length().max(ab[1].length())) {
+                return Err(Error::ZeroLength { ruling: i });
+            }
+        }
+        Ok(RuledSurface { points })
+    }
+
+    /// Number of rulings N.
+    pub fn len(&self) -> usize {
+        self.points.len() / 2
+    }
+
+    /// Always false: a surface has at least two rulings.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// Ruling i as a segment. Panics if i ≥ N.
+    pub fn segment(&self, i: usize) -> Segment {
+        Segment::new(self.points[2 * i], self.points[2 * i + 1])
+    }
+
+    /// The rulings as segments.
+    pub fn segments(&self) -> impl ExactSizeIterator<Item = Segment> + '_ {
+        self.points.chunks_exact(2).map(|ab| Segment::new(ab[0], ab[1]))
+    }
+
+    /// The rulings as oriented lines (a_i, e_i).
+    pub fn lines(&self) -> impl ExactSizeIterator<Item = Line> + '_ {
+        self.segments().map(|s| s.line())
+    }
+
+    /// The endpoints a_0, b_0, a_1, b_1, ….
+    pub fn points(&self) -> &[DVec3] {
+        &self.points
+    }
+
+    /// The segments as flat f64 coordinates, 6 per ruling (a view, no copy).
+    pub fn flat(&self) -> &[f64] {
+        bytemuck::cast_slice(&self.points)
+    }
+
+    /// The segments as flat f32 coordinates for GPU buffers.
+    pub fn flat_f32(&self) -> Vec<f32> {
+        self.flat().iter().map(|&x| x as f32).collect()
+    }
+
+    /// All discrete invariants of Section 2.
+    pub fn invariants(&self) -> Invariants {
+        let lines: Vec<Line> = self.lines().collect();
+        Invariants::of(&lines)
+    }
+
+    /// The surface with `f` applied to every endpoint (re-validated: `f` could collapse
+    /// a ruling).
+    pub fn map_points(&self, f: impl Fn(DVec3) -> DVec3) -> Result<Self> {
+        let points: Vec<DVec3> = self.points.iter().map(|&p| f(p)).collect();
+        check_coordinates(bytemuck::cast_slice(&points))?;
+        Self::checked_lengths(points)
+    }
+}
+
+/// Checks the ruling count against [`RuledSurface::MIN_RULINGS`] and [`MAX_RULINGS`].
+pub fn check_count(n: usize) -> Result<()> {
+    if n < RuledSurface::MIN_RULINGS {
+        return Err(Error::TooFew { what: "rulings", got: n, min: RuledSurface::MIN_RULINGS });
+    }
+    if n > MAX_RULINGS {
+        return Err(Error::TooMany { what: "rulings", got: n, max: MAX_RULINGS });
+    }
+    Ok(())
+}
+
+/// Every coordinate finite and at most [`MAX_COORD`] in magnitude.
+pub fn check_coordinates(coords: &[f64]) -> Result<()> {
+    for (index, &value) in coords.iter().enumerate() {
+        if !value.is_finite() {
+            return Err(Error::NonFinite { index, value });
+        }
+        if value.abs() > MAX_COORD {
+            return Err(Error::OutOfRange { index, value, max: MAX_COORD });
+        }
+    }
+    Ok(())
+}
+
+fn shift_index(e: Error, offset: usize) -> Error {
+    match e {
+        Error::NonFinite { index, value } => Error::NonFinite { index: index + offset, value },
+        Error::OutOfRange { index, value, max } => {
+            Error::OutOfRange { index: index + offset, value, max }
+        }
+        other => other,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn flat(n: usize) -> Vec<f64> {
+        (0..n).flat_map(|i| [i as f64, 0.0, 0.0, i as f64, 1.0, i as f64]).collect()
+    }
+
+    #[test]
+    fn round_trips_flat_coordinates() {
+        let c = flat(4);
+        let s = RuledSurface::from_flat(&c).unwrap();
+        assert_eq!(s.len(), 4);
+        assert_eq!(s.flat(), &c[..]);
+        assert_eq!(s.segment(2).b, DVec3::new(2.0, 1.0, 2.0));
+        assert_eq!(RuledSurface::new(s.segments().collect()).unwrap(), s);
+    }
+
+    #[test]
+    fn rejects_bad_input_with_the_reason() {
+        assert!(matches!(
+            RuledSurface::from_flat(&[0.0; 13]),
+            Err(Error::BadLength { len: 13, multiple: 6, .. })
+        ));
+        assert!(matches!(
+            RuledSurface::from_flat(&flat(1)),
+            Err(Error::TooFew { got: 1, min: 2, .. })
+        ));
+        let mut c = flat(3);
+        c[10] = f64::NAN;
+        assert!(matches!(RuledSurface::from_flat(&c), Err(Error::NonFinite { index: 10, .. })));
+        c[10] = f64::NEG_INFINITY;
+        assert!(matches!(RuledSurface::from_flat(&c), Err(Error::NonFinite { index: 10, .. })));
+        c[10] = 1e300;
+        assert!(matches!(RuledSurface::from_flat(&c), Err(Error::OutOfRange { index: 10, .. })));
+        let mut c = flat(3);
+        c[9..12].copy_from_slice(&[1.0, 2.0, 3.0]);
+        c[6..9].copy_from_slice(&[1.0, 2.0, 3.0]);
+        assert_eq!(RuledSurface::from_flat(&c), Err(Error::ZeroLength { ruling: 1 }));
+        // Far from the origin a length of 1e-13 relative is rounding noise.
+        let mut c = flat(2);
+        c[0..6].copy_from_slice(&[1e5, 0.0, 0.0, 1e5 + 1e-9, 0.0, 0.0]);
+        assert_eq!(RuledSurface::from_flat(&c), Err(Error::ZeroLength { ruling: 0 }));
+        // Tiny but well-resolved models are fine.
+        let c: Vec<f64> = flat(3).iter().map(|x| x * 1e-100).collect();
+        assert!(RuledSurface::from_flat(&c).is_ok());
+    }
+
+    #[test]
+    fn map_points_revalidates() {
+        let s = RuledSurface::from_flat(&flat(3)).unwrap();
+        assert!(matches!(s.map_points(|_| DVec3::ZERO), Err(Error::ZeroLength { ruling: 0 })));
+        assert!(matches!(s.map_points(|p| p * 1e300), Err(Error::OutOfRange { .. })));
+    }
+}

@@ -1,0 +1,96 @@
+//! Every tolerance and size limit of ruledlab, in one place.
+//!
+//! Geometric thresholds are dimensionless (sines of angles, ratios of lengths), so results
+//! do not change when a model is scaled. Test tolerances live here too, so that a reader
+//! sees at once how exact each kind of result is claimed to be.
+
+/// Consecutive rulings whose angle φ has |sin φ| below this count as parallel.
+///
+/// The footpoint parameter of skew lines is t = ((d × e₁)·(e₀ × e₁)) / sin²φ; its rounding
+/// error relative to its size is about ε/sin φ, so at this threshold footpoints are still
+/// good to ~1e-7 relative. Below it the common perpendicular is not meaningfully unique.
+pub const PARALLEL_SIN: f64 = 1e-9;
+
+/// A segment is of zero length when |b − a| ≤ this · max(|a|, |b|): its direction would be
+/// dominated by rounding.
+pub const ZERO_LENGTH_REL: f64 = 1e-12;
+
+/// Largest accepted coordinate magnitude. Squares of differences stay far from overflow.
+pub const MAX_COORD: f64 = 1e150;
+
+/// Largest number of rulings in one discrete ruled surface (input or output, checked before
+/// allocating). 2²² rulings are 192 MiB of f64 segment coordinates.
+pub const MAX_RULINGS: usize = 1 << 22;
+
+/// Largest number of refinement levels of the convergence study.
+pub const MAX_STUDY_LEVELS: usize = 20;
+
+/// Largest number of samples asked of an analytic surface in one call.
+pub const MAX_SAMPLES: usize = MAX_RULINGS;
+
+/// `|a − b| ≤ tol · max(1, |a|, |b|)`: relative for large numbers, absolute near zero.
+pub fn near(a: f64, b: f64, tol: f64) -> bool {
+    (a - b).abs() <= tol * 1f64.max(a.abs()).max(b.abs())
+}
+
+/// Tolerances the test suites use, named by what they claim.
+pub mod test {
+    /// Results that are exact up to rounding of a few dozen operations.
+    pub const EXACT: f64 = 1e-12;
+    /// Slack allowed around a measured convergence order (1 or 2).
+    pub const ORDER: f64 = 0.1;
+}
+
+/// Asserts `|a − b| ≤ tol · max(1, |a|, |b|)` for numbers or `DVec3`s, with a useful message.
+#[macro_export]
+macro_rules! assert_near {
+    ($a:expr, $b:expr, $tol:expr $(,)?) => {{
+        let (a, b, tol) = ($a, $b, $tol);
+        let err = $crate::tolerance::Distance::distance(&a, &b);
+        let scale = 1f64.max($crate::tolerance::Distance::size(&a)).max($crate::tolerance::Distance::size(&b));
+        assert!(
+            err <= tol * scale,
+            "assert_near failed: {:?} vs {:?}: error {:e} > {:e}",
+            a, b, err, tol * scale
+        );
+    }};
+}
+
+/// What [`assert_near!`] needs of a value: a distance and a size.
+pub trait Distance {
+    /// Distance between two values.
+    fn distance(&self, other: &Self) -> f64;
+    /// The value's magnitude.
+    fn size(&self) -> f64;
+}
+
+impl Distance for f64 {
+    fn distance(&self, other: &Self) -> f64 {
+        (self - other).abs()
+    }
+    fn size(&self) -> f64 {
+        self.abs()
+    }
+}
+
+impl Distance for glam::DVec3 {
+    fn distance(&self, other: &Self) -> f64 {
+        (*self - *other).length()
+    }
+    fn size(&self) -> f64 {
+        self.length()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn near_is_relative_for_large_and_absolute_for_small() {
+        assert!(near(1e6, 1e6 + 1e-7, 1e-12));
+        assert!(!near(1e6, 1e6 + 1e-4, 1e-12));
+        assert!(near(0.0, 1e-13, 1e-12));
+        assert!(!near(0.0, 1e-11, 1e-12));
+    }
+}

@@ -1,0 +1,152 @@
+//! Checking what JavaScript passed in, and building what goes back.
+
+use crate::error::Error;
+use js_sys::{Float64Array, Object, Reflect};
+use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
+
+/// The core error as a JS `Error`.
+pub fn js_error(e: Error) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+/// A JS `Error` with `message`, prefixed by the function's name.
+pub fn fail(func: &str, message: impl std::fmt::Display) -> JsError {
+    JsError::new(&format!("{func}: {message}"))
+}
+
+/// The contents of a `Float64Array`, or an error naming what was passed instead.
+pub fn float64_array(func: &str, name: &str, value: &JsValue) -> Result<Vec<f64>, JsError> {
+    match value.dyn_ref::<Float64Array>() {
+        Some(a) => Ok(a.to_vec()),
+        None => Err(fail(func, format!("{name} must be a Float64Array, got {}", describe(value)))),
+    }
+}
+
+/// A non-negative integer given as a JS number.
+pub fn integer(func: &str, name: &str, x: f64, min: usize, max: usize) -> Result<usize, JsError> {
+    if x.is_finite() && x.fract() == 0.0 && x >= min as f64 && x <= max as f64 {
+        Ok(x as usize)
+    } else {
+        Err(fail(func, format!("{name} must be an integer from {min} to {max}, got {x}")))
+    }
+}
+
+/// An options object read key by key, so that every message names the option at fault.
+/// `undefined` or `null` stand for `{}`; keys outside `known` are rejected (typos would
+/// otherwise be silently ignored).
+pub struct Options {
+    func: &'static str,
+    object: Option<Object>,
+}
+
+impl Options {
+    /// Checks that `value` is a plain object with only `known` keys.
+    pub fn new(func: &'static str, value: JsValue, known: &[&str]) -> Result<Self, JsError> {
+        if value.is_undefined() || value.is_null() {
+            return Ok(Options { func, object: None });
+        }
+        if !value.is_object() || js_sys::Array::is_array(&value) || value.is_function() {
+            return Err(fail(func, format!("options must be an object, got {}", describe(&value))));
+        }
+        let object: Object = value.unchecked_into();
+        for key in Object::keys(&object).iter() {
+            let key = key.as_string().unwrap_or_default();
+            if !known.contains(&key.as_str()) {
+                return Err(fail(
+                    func,
+                    format!("unknown option {key:?}; known options: {}", known.join(", ")),
+                ));
+            }
+        }
+        Ok(Options { func, object: Some(object) })
+    }
+
+    fn get(&self, key: &str) -> Option<JsValue> {
+        let v = Reflect::get(self.object.as_ref()?, &JsValue::from_str(key)).ok()?;
+        (!v.is_undefined()).then_some(v)
+    }
+
+    fn wrong(&self, key: &str, expected: &str, v: &JsValue) -> JsError {
+        let got = match v.as_f64() {
+            Some(x) => format!("{x}"),
+            None => describe(v),
+        };
+        fail(self.func, format!("options.{key} must be {expected}, got {got}"))
+    }
+
+    /// A finite number, if given.
+    pub fn number(&self, key: &str) -> Result<Option<f64>, JsError> {
+        match self.get(key) {
+            None => Ok(None),
+            Some(v) => match v.as_f64() {
+                Some(x) if x.is_finite() => Ok(Some(x)),
+                _ => Err(self.wrong(key, "a finite number", &v)),
+            },
+        }
+    }
+
+    /// An integer in [min, max], if given.
+    pub fn integer(&self, key: &str, min: usize, max: usize) -> Result<Option<usize>, JsError> {
+        match self.get(key) {
+            None => Ok(None),
+            Some(v) => match v.as_f64() {
+                Some(x) if x.fract() == 0.0 && x >= min as f64 && x <= max as f64 => Ok(Some(x as usize)),
+                _ => Err(self.wrong(key, &format!("an integer from {min} to {max}"), &v)),
+            },
+        }
+    }
+
+    /// A boolean, if given.
+    pub fn boolean(&self, key: &str) -> Result<Option<bool>, JsError> {
+        match self.get(key) {
+            None => Ok(None),
+            Some(v) => v.as_bool().map(Some).ok_or_else(|| self.wrong(key, "true or false", &v)),
+        }
+    }
+}
+
+/// What a JS value is, for messages: "a string", "an Array", "undefined", ….
+pub fn describe(value: &JsValue) -> String {
+    if value.is_undefined() {
+        return "undefined".into();
+    }
+    if value.is_null() {
+        return "null".into();
+    }
+    if let Some(name) = value
+        .dyn_ref::<Object>()
+        .and_then(|o| Reflect::get(&o.constructor(), &"name".into()).ok())
+        .and_then(|n| n.as_string())
+    {
+        return format!("a {name}");
+    }
+    format!("a {}", value.js_typeof().as_string().unwrap_or_default())
+}
+
+/// A plain object under construction.
+pub struct ObjectBuilder(Object);
+
+impl ObjectBuilder {
+    /// An empty `{}`.
+    pub fn new() -> Self {
+        ObjectBuilder(Object::new())
+    }
+
+    /// Sets `key` (setting a property of a fresh plain object cannot fail; if it ever
+    /// did, the key would simply be missing, which the JS tests would catch).
+    pub fn set(self, key: &str, value: impl Into<JsValue>) -> Self {
+        let _ = Reflect::set(&self.0, &JsValue::from_str(key), &value.into());
+        self
+    }
+
+    /// Sets `key` to a `Float64Array` copy of `values`.
+    pub fn f64s(self, key: &str, values: &[f64]) -> Self {
+        self.set(key, Float64Array::from(values))
+    }
+
+    /// The finished object.
+    pub fn build(self) -> JsValue {
+        self.0.into()
+    }
+}

@@ -1,0 +1,19 @@
+//! The JavaScript bindings: the only module that uses wasm-bindgen.
+//!
+//! Every export takes and returns flat typed arrays, validates its arguments (types
+//! included: a JS caller can pass anything), and turns the core's [`crate::Error`] into a
+//! JS `Error` with the same message. Nothing here panics on any input, so no trap crosses
+//! the boundary and the module stays usable after an error.
+
+mod args;
+mod surface;
+
+pub use surface::{AnalyticSurface, RuledSurface};
+
+use wasm_bindgen::prelude::*;
+
+/// The crate version, e.g. "0.1.0".
+#[wasm_bindgen]
+pub fn version() -> String {
+    env!("CARGO_PKG_VERSION").to_string()
+}

@@ -1,0 +1,262 @@
+//! `RuledSurface` and `AnalyticSurface` for JavaScript (Section 2).
+
+use super::args::{describe, fail, float64_array, integer, js_error, ObjectBuilder, Options};
+use crate::examples;
+use crate::ruled::{self, convergence, Invariants};
+use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
+use js_sys::{Float32Array, Float64Array, Uint8Array};
+use wasm_bindgen::prelude::*;
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_TYPES: &str = r#"
+/** The discrete invariants of Section 2 for N rulings (N − 1 pairs, N − 2 interior rulings). */
+export interface Invariants {
+  /** φ_{i,i+1} ∈ [0, π], N − 1 values. */
+  angle: Float64Array;
+  /** Signed distance h_{i,i+1} = det(a_{i+1} − a_i, e_i, e_{i+1}) / |e_i × e_{i+1}|, N − 1 values. */
+  distance: Float64Array;
+  /** Discrete distribution parameter δ_{i,i+1} = h/φ (1), N − 1 values. */
+  distribution: Float64Array;
+  /** f_{i,i+1} then f_{i+1,i} (x, y, z each) per pair: 6(N − 1) numbers. */
+  footpoints: Float64Array;
+  /** n_{i,i+1} = (e_i × e_{i+1}) / |e_i × e_{i+1}|, 3(N − 1) numbers. */
+  centralNormal: Float64Array;
+  /** Striction polygon (f_{i,i−1} + f_{i,i+1})/2 for rulings 1 … N − 2: 3(N − 2) numbers (7). */
+  striction: Float64Array;
+  /** (δ_{i−1,i} + δ_{i,i+1})/2 for rulings 1 … N − 2 (7). */
+  distributionMean: Float64Array;
+  /** Example 1's polygon (f_{i,i+1} + f_{i+1,i})/2: 3(N − 1) numbers. */
+  perpendicularMidpoints: Float64Array;
+  /**
+   * 1 where rulings i, i+1 are parallel (|sin φ| < 1e-9): there `distance` is the unsigned
+   * distance, and distribution, footpoints, centralNormal and the striction quantities
+   * that use the pair are NaN.
+   */
+  parallel: Uint8Array;
+}
+
+/** One analytic surface as listed by `AnalyticSurface.list()`. */
+export interface AnalyticSurfaceInfo {
+  name: string; title: string;
+  uMin: number; uMax: number; vMin: number; vMax: number; closed: boolean;
+}
+
+/** Sampling options; omitted fields take the surface's defaults. */
+export interface SampleOptions { uMin?: number; uMax?: number; vMin?: number; vMax?: number; closed?: boolean }
+
+/** Convergence study options (Propositions 1 and 2). */
+export interface ConvergenceOptions {
+  /** Parameter u to study (default 0.7). */
+  u?: number;
+  /** Largest step H₀ ∈ (0, 1] (default 0.2). */
+  h0?: number;
+  /** Number of steps H₀, H₀/2, … (2 … 20, default 8). */
+  levels?: number;
+}
+
+/** One quantity of a convergence study. */
+export interface ConvergenceSeries {
+  name: "footpoint" | "midpoint" | "distribution" | "distributionMean" | "centralNormal" | "perpendicularMidpoint";
+  expectedOrder: number; errors: number[]; orders: number[]; fittedOrder: number;
+}
+
+/** Result of `AnalyticSurface.convergence`. */
+export interface ConvergenceStudy { surface: string; u: number; steps: number[]; series: ConvergenceSeries[] }
+"#;
+
+/// A discrete ruled surface: N ≥ 2 rulings, each a segment a_i → b_i.
+#[wasm_bindgen]
+pub struct RuledSurface {
+    inner: ruled::RuledSurface,
+}
+
+impl RuledSurface {
+    /// Wraps a core surface.
+    pub fn from_core(inner: ruled::RuledSurface) -> Self {
+        RuledSurface { inner }
+    }
+
+    /// The core surface.
+    pub fn core(&self) -> &ruled::RuledSurface {
+        &self.inner
+    }
+}
+
+#[wasm_bindgen]
+impl RuledSurface {
+    /// A surface from a Float64Array of 6 numbers per ruling: a.x a.y a.z b.x b.y b.z.
+    /// Throws if the array is not a Float64Array, its length is not a multiple of 6, it
+    /// holds fewer than 2 rulings or more than 4 194 304, a number is NaN, infinite or
+    /// above 1e150 in magnitude, or a ruling has zero length.
+    #[wasm_bindgen(js_name = fromSegments)]
+    pub fn from_segments(
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] coords: JsValue,
+    ) -> Result<RuledSurface, JsError> {
+        let coords = float64_array("RuledSurface.fromSegments", "coords", &coords)?;
+        ruled::RuledSurface::from_flat(&coords)
+            .map(Self::from_core)
+            .map_err(|e| fail("RuledSurface.fromSegments", e))
+    }
+
+    /// Number of rulings N.
+    #[wasm_bindgen(getter)]
+    pub fn length(&self) -> usize {
+        self.inner.len()
+    }
+
+    /// The segments, 6 numbers per ruling (a copy).
+    pub fn segments(&self) -> Float64Array {
+        Float64Array::from(self.inner.flat())
+    }
+
+    /// The segments as 32-bit floats, ready for a WebGL buffer.
+    #[wasm_bindgen(js_name = segmentsF32)]
+    pub fn segments_f32(&self) -> Float32Array {
+        Float32Array::from(&self.inner.flat_f32()[..])
+    }
+
+    /// All discrete invariants of Section 2 as typed arrays.
+    #[wasm_bindgen(unchecked_return_type = "Invariants")]
+    pub fn invariants(&self) -> JsValue {
+        let inv = self.inner.invariants();
+        let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
+        ObjectBuilder::new()
+            .f64s("angle", &inv.angle)
+            .f64s("distance", &inv.distance)
+            .f64s("distribution", &inv.distribution)
+            .f64s("footpoints", Invariants::flat(&inv.footpoints))
+            .f64s("centralNormal", Invariants::flat(&inv.central_normal))
+            .f64s("striction", Invariants::flat(&inv.striction))
+            .f64s("distributionMean", &inv.distribution_mean)
+            .f64s("perpendicularMidpoints", Invariants::flat(&inv.perpendicular_midpoints))
+            .set("parallel", Uint8Array::from(&parallel[..]))
+            .build()
+    }
+}
+
+/// An analytic ruled surface x(u, v) = a(u) + v d(u) with exact striction curve and
+/// distribution parameter.
+#[wasm_bindgen]
+pub struct AnalyticSurface {
+    inner: examples::AnalyticSurface,
+}
+
+#[wasm_bindgen]
+impl AnalyticSurface {
+    /// Every analytic surface: name, title and default ranges.
+    #[wasm_bindgen(unchecked_return_type = "AnalyticSurfaceInfo[]")]
+    pub fn list() -> js_sys::Array {
+        examples::AnalyticSurface::ALL
+            .iter()
+            .map(|s| {
+                let r = s.ranges();
+                ObjectBuilder::new()
+                    .set("name", s.name())
+                    .set("title", s.title())
+                    .set("uMin", r.u.0)
+                    .set("uMax", r.u.1)
+                    .set("vMin", r.v.0)
+                    .set("vMax", r.v.1)
+                    .set("closed", r.closed)
+                    .build()
+            })
+            .collect()
+    }
+
+    /// The surface named `name` (see `list()`); throws for an unknown name.
+    #[wasm_bindgen(js_name = byName)]
+    pub fn by_name(#[wasm_bindgen(unchecked_param_type = "string")] name: JsValue) -> Result<AnalyticSurface, JsError> {
+        let Some(name) = name.as_string() else {
+            return Err(fail("AnalyticSurface.byName", format!("name must be a string, got {}", describe(&name))));
+        };
+        examples::AnalyticSurface::by_name(&name)
+            .map(|inner| AnalyticSurface { inner })
+            .map_err(|e| fail("AnalyticSurface.byName", e))
+    }
+
+    /// Machine name, e.g. "hyperboloid".
+    #[wasm_bindgen(getter)]
+    pub fn name(&self) -> String {
+        self.inner.name().into()
+    }
+
+    /// Human title.
+    #[wasm_bindgen(getter)]
+    pub fn title(&self) -> String {
+        self.inner.title().into()
+    }
+
+    /// `count` rulings at equally spaced u (see `SampleOptions`; defaults from `list()`).
+    pub fn sample(
+        &self,
+        count: f64,
+        #[wasm_bindgen(unchecked_param_type = "SampleOptions | undefined")] opts: JsValue,
+    ) -> Result<RuledSurface, JsError> {
+        const F: &str = "AnalyticSurface.sample";
+        let count = integer(F, "count", count, 2, MAX_SAMPLES)?;
+        let o = Options::new(F, opts, &["uMin", "uMax", "vMin", "vMax", "closed"])?;
+        let d = self.inner.ranges();
+        let r = examples::Ranges {
+            u: (o.number("uMin")?.unwrap_or(d.u.0), o.number("uMax")?.unwrap_or(d.u.1)),
+            v: (o.number("vMin")?.unwrap_or(d.v.0), o.number("vMax")?.unwrap_or(d.v.1)),
+            closed: o.boolean("closed")?.unwrap_or(d.closed),
+        };
+        self.inner.sample(count, r).map(RuledSurface::from_core).map_err(|e| fail(F, e))
+    }
+
+    /// Exact striction points s(u) for each u: 3 numbers per u (NaN on a cylindrical ruling).
+    pub fn striction(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsError> {
+        let u = self.parameters("AnalyticSurface.striction", &u)?;
+        let out: Vec<f64> = u
+            .iter()
+            .flat_map(|&u| self.inner.striction(u).unwrap_or(glam::DVec3::NAN).to_array())
+            .collect();
+        Ok(Float64Array::from(&out[..]))
+    }
+
+    /// Exact distribution parameters δ(u).
+    pub fn distribution(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsError> {
+        let u = self.parameters("AnalyticSurface.distribution", &u)?;
+        let out: Vec<f64> = u.iter().map(|&u| self.inner.distribution(u)).collect();
+        Ok(Float64Array::from(&out[..]))
+    }
+
+    /// Exact central tangent directions e₃(u) (4): 3 numbers per u (NaN on a cylindrical ruling).
+    #[wasm_bindgen(js_name = centralTangent)]
+    pub fn central_tangent(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsError> {
+        let u = self.parameters("AnalyticSurface.centralTangent", &u)?;
+        let out: Vec<f64> = u
+            .iter()
+            .flat_map(|&u| self.inner.central_tangent(u).unwrap_or(glam::DVec3::NAN).to_array())
+            .collect();
+        Ok(Float64Array::from(&out[..]))
+    }
+
+    /// Measured convergence orders of the discrete invariants (Propositions 1 and 2).
+    #[wasm_bindgen(unchecked_return_type = "ConvergenceStudy")]
+    pub fn convergence(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "ConvergenceOptions | undefined")] opts: JsValue,
+    ) -> Result<JsValue, JsError> {
+        const F: &str = "AnalyticSurface.convergence";
+        let o = Options::new(F, opts, &["u", "h0", "levels"])?;
+        let levels = o.integer("levels", 2, MAX_STUDY_LEVELS)?.unwrap_or(8);
+        let u = o.number("u")?.unwrap_or(0.7);
+        let study = convergence::study(&self.inner, u, o.number("h0")?.unwrap_or(0.2), levels)
+            .map_err(|e| fail(F, e))?;
+        serde_wasm_bindgen::to_value(&study).map_err(|e| fail(F, e))
+    }
+}
+
+impl AnalyticSurface {
+    fn parameters(&self, func: &str, u: &JsValue) -> Result<Vec<f64>, JsError> {
+        let u = float64_array(func, "u", u)?;
+        if u.len() > MAX_SAMPLES {
+            return Err(js_error(crate::Error::TooMany { what: "parameters", got: u.len(), max: MAX_SAMPLES }));
+        }
+        if let Some(x) = u.iter().find(|x| !x.is_finite()) {
+            return Err(fail(func, format!("every u must be finite, got {x}")));
+        }
+        Ok(u)
+    }
+}

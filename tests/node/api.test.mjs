@@ -1,0 +1,136 @@
+// The built package's JS API, in Node: values, shapes, and every bad-input case.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import ruledlab from './load.mjs';
+
+const { RuledSurface, AnalyticSurface } = ruledlab;
+const GOOD = new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 1, 1, 2]);
+const near = (a, b, tol = 1e-12) => Math.abs(a - b) <= tol * Math.max(1, Math.abs(a), Math.abs(b));
+
+test('fromSegments, length, segments and segmentsF32 round-trip', () => {
+  const s = RuledSurface.fromSegments(GOOD);
+  assert.equal(s.length, 3);
+  assert.deepEqual(s.segments(), GOOD);
+  assert.ok(s.segmentsF32() instanceof Float32Array);
+  assert.deepEqual([...s.segmentsF32()], [...GOOD]);
+  s.free();
+});
+
+test('invariants: typed arrays of the documented lengths and the right values', () => {
+  // rulings along x, then along y one unit higher: φ = π/2, h = 1, footpoints on the z-axis
+  const s = RuledSurface.fromSegments(GOOD);
+  const inv = s.invariants();
+  const lengths = { angle: 2, distance: 2, distribution: 2, footpoints: 12, centralNormal: 6, striction: 3, distributionMean: 1, perpendicularMidpoints: 6, parallel: 2 };
+  for (const [k, n] of Object.entries(lengths)) {
+    assert.equal(inv[k].length, n, k);
+    assert.ok(k === 'parallel' ? inv[k] instanceof Uint8Array : inv[k] instanceof Float64Array, k);
+  }
+  assert.ok(near(inv.angle[0], Math.PI / 2));
+  assert.ok(near(inv.distance[0], 1));
+  assert.ok(near(inv.distribution[0], 2 / Math.PI));
+  assert.deepEqual([...inv.footpoints.subarray(0, 6)].map((x) => Math.round(x * 1e12) / 1e12), [0, 0, 0, 0, 0, 1]);
+  assert.deepEqual([...inv.parallel], [0, 0]);
+  s.free();
+});
+
+test('parallel pairs are flagged and NaN, not plausible numbers', () => {
+  const s = RuledSurface.fromSegments(new Float64Array([0, 0, 0, 0, 0, 1, 3, 4, 0, 3, 4, 2]));
+  const inv = s.invariants();
+  assert.equal(inv.parallel[0], 1);
+  assert.ok(near(inv.distance[0], 5));
+  assert.ok(Number.isNaN(inv.distribution[0]) && Number.isNaN(inv.footpoints[0]) && Number.isNaN(inv.centralNormal[0]));
+  s.free();
+});
+
+test('wasm computes the same invariants as the native build (1e-12)', () => {
+  const native = JSON.parse(execFileSync('cargo', ['run', '-q', '--example', 'dump_invariants'], { encoding: 'utf8' }));
+  const q = AnalyticSurface.byName('quartic');
+  const s = q.sample(50);
+  const inv = s.invariants();
+  for (const [k, values] of Object.entries(native)) {
+    assert.equal(inv[k].length, values.length, k);
+    values.forEach((v, i) => assert.ok(near(inv[k][i], v), `${k}[${i}]: wasm ${inv[k][i]} vs native ${v}`));
+  }
+  s.free();
+  q.free();
+});
+
+test('analytic surfaces: list, exact values, sampling and the convergence study', () => {
+  const list = AnalyticSurface.list();
+  assert.deepEqual(list.map((s) => s.name), ['hyperboloid', 'quartic', 'helicoid', 'helical', 'pluecker-conoid', 'hyperbolic-paraboloid', 'cone', 'cylinder', 'helix-tangent']);
+  const helicoid = AnalyticSurface.byName('helicoid');
+  assert.equal(helicoid.name, 'helicoid');
+  const s = helicoid.sample(20, { uMin: 0, uMax: 2 });
+  for (const d of s.invariants().distribution) assert.ok(near(d, 0.5), `δ = ${d}`);
+  assert.deepEqual([...helicoid.distribution(new Float64Array([0.3, 1]))], [0.5, 0.5]);
+  const conoid = AnalyticSurface.byName('pluecker-conoid');
+  const st = conoid.striction(new Float64Array([0.25]));
+  assert.ok(near(st[2], Math.sin(0.5)) && st[0] === 0 && st[1] === 0);
+  assert.ok(AnalyticSurface.byName('cylinder').striction(new Float64Array([0.1])).every(Number.isNaN));
+  const study = AnalyticSurface.byName('hyperboloid').convergence({ u: 0.7, h0: 0.1, levels: 7 });
+  const order = (name) => study.series.find((x) => x.name === name).orders.at(-1);
+  assert.ok(Math.abs(order('footpoint') - 1) < 0.1, `footpoint order ${order('footpoint')}`);
+  assert.ok(Math.abs(order('midpoint') - 2) < 0.1, `midpoint order ${order('midpoint')}`);
+  assert.ok(Math.abs(order('distribution') - 1) < 0.1);
+  assert.ok(Math.abs(order('distributionMean') - 2) < 0.1);
+  assert.equal(study.steps.length, 7);
+});
+
+test('every bad input throws an Error that says what is wrong, and the module keeps working', () => {
+  const cases = [
+    [() => RuledSurface.fromSegments([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0]), /must be a Float64Array, got a Array/],
+    [() => RuledSurface.fromSegments('0,0,0'), /must be a Float64Array, got a string/],
+    [() => RuledSurface.fromSegments(), /got undefined/],
+    [() => RuledSurface.fromSegments(null), /got null/],
+    [() => RuledSurface.fromSegments(new Float32Array(12)), /must be a Float64Array, got a Float32Array/],
+    [() => RuledSurface.fromSegments(new Float64Array(13)), /length 13 is not a multiple of 6/],
+    [() => RuledSurface.fromSegments(new Float64Array(6)), /rulings: got 1, need at least 2/],
+    [() => RuledSurface.fromSegments(new Float64Array(0)), /rulings: got 0, need at least 2/],
+    [() => RuledSurface.fromSegments(GOOD.map((x, i) => (i === 7 ? NaN : x))), /coordinate 7 \(ruling 1, a.y\) is NaN/],
+    [() => RuledSurface.fromSegments(GOOD.map((x, i) => (i === 3 ? Infinity : x))), /coordinate 3 \(ruling 0, b.x\) is inf/],
+    [() => RuledSurface.fromSegments(GOOD.map((x, i) => (i === 3 ? -Infinity : x))), /is -inf/],
+    [() => RuledSurface.fromSegments(GOOD.map((x, i) => (i === 4 ? 1e300 : x))), /magnitudes above 1e150/],
+    [() => RuledSurface.fromSegments(new Float64Array(12)), /ruling 0 has zero length/],
+    [() => RuledSurface.fromSegments(new Float64Array((1 << 22) * 6 + 6)), /rulings: 4194305 exceeds the limit of 4194304/],
+    [() => AnalyticSurface.byName('torus'), /unknown surface "torus"; known: hyperboloid/],
+    [() => AnalyticSurface.byName(7), /name must be a string, got a number/],
+    [() => AnalyticSurface.byName('cone').sample(1), /count must be an integer from 2/],
+    [() => AnalyticSurface.byName('cone').sample('ten'), /count must be an integer .* got NaN/],
+    [() => AnalyticSurface.byName('cone').sample(1e9), /got 1000000000/],
+    [() => AnalyticSurface.byName('cone').sample(5, { vMin: 1, vMax: 1 }), /vMax: must differ from vMin/],
+    [() => AnalyticSurface.byName('cone').sample(5, { uMin: NaN }), /options.uMin must be a finite number, got NaN/],
+    [() => AnalyticSurface.byName('cone').sample(5, { steps: 3 }), /unknown option "steps"/],
+    [() => AnalyticSurface.byName('cone').sample(5, [1, 2]), /options must be an object, got a Array/],
+    [() => AnalyticSurface.byName('cone').striction([0.5]), /u must be a Float64Array/],
+    [() => AnalyticSurface.byName('cone').distribution(new Float64Array([Infinity])), /every u must be finite/],
+    [() => AnalyticSurface.byName('cylinder').convergence(), /no striction point/],
+    [() => AnalyticSurface.byName('cone').convergence({ levels: 99 }), /options.levels must be an integer from 2 to 20, got 99/],
+    [() => AnalyticSurface.byName('cone').convergence({ h0: 0 }), /h0: must be in \(0, 1\], got 0/],
+  ];
+  for (const [call, message] of cases) {
+    assert.throws(call, (e) => e instanceof Error && message.test(e.message), String(message));
+    // the module is still fine after every error
+    const s = RuledSurface.fromSegments(GOOD);
+    assert.equal(s.invariants().angle.length, 2);
+    s.free();
+  }
+});
+
+test('using a freed object throws an Error instead of trapping', () => {
+  const s = RuledSurface.fromSegments(GOOD);
+  s.free();
+  assert.throws(() => s.invariants(), Error);
+  assert.equal(RuledSurface.fromSegments(GOOD).length, 3);
+});
+
+test('the TypeScript declarations type the results', () => {
+  const dts = readFileSync(new URL('../../pkg/ruledlab.d.ts', import.meta.url), 'utf8');
+  assert.match(dts, /export interface Invariants \{/);
+  assert.match(dts, /invariants\(\): Invariants;/);
+  assert.match(dts, /static fromSegments\(coords: Float64Array\): RuledSurface;/);
+  assert.match(dts, /convergence\(opts\?: ConvergenceOptions \| undefined\): ConvergenceStudy;|convergence\(opts: ConvergenceOptions \| undefined\): ConvergenceStudy;/);
+  // the public API (before wasm-bindgen's internal InitOutput table) has no `any`
+  assert.doesNotMatch(dts.slice(0, dts.indexOf('export type InitInput')), /\bany\b/);
+});

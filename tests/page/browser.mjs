@@ -1,0 +1,48 @@
+// Launching Debian's Chromium through playwright-core, and watching a page for problems.
+import { chromium } from 'playwright-core';
+import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { decodePng } from './png.mjs';
+
+export const ARTIFACTS = new URL('../../test-artifacts/', import.meta.url).pathname;
+
+/** A fresh headless Chromium (fresh profile, no network chatter). */
+export async function launch() {
+  const userDataDir = mkdtempSync(join(tmpdir(), 'ruledlab-chromium-'));
+  return chromium.launchPersistentContext(userDataDir, {
+    executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+    headless: true,
+    viewport: { width: 1200, height: 800 },
+    args: [
+      '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync',
+    ],
+  });
+}
+
+/** Records console errors, page errors, failed requests and HTTP errors of `page`. */
+export function watch(page) {
+  const problems = [];
+  page.on('console', (m) => m.type() === 'error' && problems.push(`console error: ${m.text()}`));
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
+  page.on('response', (r) => r.status() >= 400 && problems.push(`HTTP ${r.status()}: ${r.url()}`));
+  return problems;
+}
+
+/** Screenshot of the canvas, saved as an artifact and decoded. */
+export async function shoot(page, name) {
+  const png = await page.locator('#view').screenshot();
+  mkdirSync(ARTIFACTS, { recursive: true });
+  writeFileSync(join(ARTIFACTS, `${name}.png`), png);
+  return decodePng(png);
+}
+
+/** Waits until the viewer has drawn more than `after` frames. */
+export async function framesAfter(page, after = 0) {
+  await page.waitForFunction((n) => Number(document.body.dataset.frames ?? 0) > n, after, { timeout: 15000 });
+  // one more animation frame so the compositor has the new picture
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  return page.evaluate(() => Number(document.body.dataset.frames));
+}

@@ -1,0 +1,88 @@
+// The page in headless Chromium: loads cleanly, draws, and its controls change the picture.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { startServer } from '../../scripts/serve.mjs';
+import { launch, watch, shoot, framesAfter } from './browser.mjs';
+import { countDifferent, countChanged } from './png.mjs';
+
+const BACKGROUND = [251, 250, 247];
+let server, url, browser;
+
+before(async () => {
+  ({ server, url } = await startServer());
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+async function open(hash = '') {
+  const page = await browser.newPage();
+  const problems = watch(page);
+  await page.goto(url + hash);
+  const frames = await framesAfter(page, 0);
+  return { page, problems, frames };
+}
+
+test('the page loads without errors or failed requests, favicon included, and draws', async () => {
+  const { page, problems } = await open();
+  const image = await shoot(page, 'striction-hyperboloid');
+  const drawn = countDifferent(image, BACKGROUND);
+  assert.ok(drawn > 0.05 * image.width * image.height, `only ${drawn} pixels differ from the background`);
+  assert.match(await page.title(), /ruledlab/);
+  assert.match(page.url(), /#scene=striction&surface=hyperboloid&n=36&.*view=/);
+  const readout = await page.locator('#readout').innerText();
+  assert.match(readout, /max \|m_i − s\(u_i\)\|/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('dragging orbits the camera and changes the picture', async () => {
+  const { page, problems, frames } = await open();
+  const before = await shoot(page, 'drag-before');
+  const box = await page.locator('#view').boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 150, box.y + box.height / 2 + 40, { steps: 5 });
+  await page.mouse.up();
+  await framesAfter(page, frames);
+  const afterDrag = await shoot(page, 'drag-after');
+  assert.ok(countChanged(before, afterDrag) > 2000, 'the picture did not change');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the rulings slider changes the picture and the URL, and the URL restores it', async () => {
+  const { page, problems, frames } = await open();
+  const before = await shoot(page, 'slider-before');
+  await page.locator('#param-n').fill('12');
+  await framesAfter(page, frames);
+  const afterSlide = await shoot(page, 'slider-after');
+  assert.ok(countChanged(before, afterSlide) > 2000, 'the picture did not change');
+  assert.match(page.url(), /n=12/);
+  const restored = await open(new URL(page.url()).hash);
+  assert.equal(await restored.page.locator('#param-n').inputValue(), '12');
+  const again = await shoot(restored.page, 'slider-restored');
+  assert.ok(countChanged(afterSlide, again) < 0.01 * again.width * again.height, 'reload did not restore the view');
+  assert.deepEqual(problems, []);
+  assert.deepEqual(restored.problems, []);
+  await page.close();
+  await restored.page.close();
+});
+
+test('every analytic surface draws without errors', async () => {
+  const { page, problems } = await open();
+  const names = await page.evaluate(() => [...document.querySelectorAll('#param-surface option')].map((o) => o.value));
+  assert.ok(names.length >= 9);
+  for (const name of names) {
+    const frames = await page.evaluate(() => Number(document.body.dataset.frames));
+    await page.selectOption('#param-surface', name);
+    await framesAfter(page, frames);
+    const image = await shoot(page, `striction-${name}`);
+    assert.ok(countDifferent(image, BACKGROUND) > 0.02 * image.width * image.height, `${name} drew nothing`);
+    assert.equal(await page.locator('#error').isHidden(), true, `${name}: ${await page.locator('#error').innerText()}`);
+  }
+  assert.deepEqual(problems, []);
+  await page.close();
+});

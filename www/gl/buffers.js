@@ -1,0 +1,31 @@
+// Buffers and vertex arrays.
+
+/**
+ * Uploads typed-array data into a new buffer.
+ * @param {WebGL2RenderingContext} gl
+ * @param {ArrayBufferView} data
+ * @param {number} [target] gl.ARRAY_BUFFER (default) or gl.ELEMENT_ARRAY_BUFFER
+ */
+export function createBuffer(gl, data, target = gl.ARRAY_BUFFER) {
+  const buffer = gl.createBuffer();
+  gl.bindBuffer(target, buffer);
+  gl.bufferData(target, data, gl.STATIC_DRAW);
+  return buffer;
+}
+
+/**
+ * Binds a float attribute of `size` components to `buffer` (bound VAO assumed).
+ * @param {WebGL2RenderingContext} gl
+ */
+export function floatAttribute(gl, location, buffer, size, { stride = 0, offset = 0, divisor = 0 } = {}) {
+  if (location < 0) return;
+  gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
+  gl.enableVertexAttribArray(location);
+  gl.vertexAttribPointer(location, size, gl.FLOAT, false, stride, offset);
+  gl.vertexAttribDivisor(location, divisor);
+}
+
+/** Float64 (or any) numbers as a Float32Array, without copying when already f32. */
+export function f32(data) {
+  return data instanceof Float32Array ? data : new Float32Array(data);
+}

@@ -1,0 +1,169 @@
+// The page: loads the wasm core, builds the controls of the current scene, keeps the scene
+// and its parameters in the URL hash, and redraws when anything changes.
+import init from '../pkg/ruledlab.js';
+import { Viewer } from './viewer.js';
+import { COLORS, css } from './theme.js';
+import { scene as striction } from './scenes/striction.js';
+
+const SCENES = [striction];
+
+const $ = (id) => document.getElementById(id);
+
+/** Reads `#scene=…&key=value…` into { scene, params } (unknown keys ignored). */
+export function readHash(hash = location.hash) {
+  const q = new URLSearchParams(hash.replace(/^#/, ''));
+  const scene = SCENES.find((s) => s.id === q.get('scene')) ?? SCENES[0];
+  const params = {};
+  for (const p of scene.params) {
+    const raw = q.get(p.key);
+    params[p.key] = raw === null ? p.value : parseParam(p, raw);
+  }
+  const view = (q.get('view') ?? '').split(',').map(Number);
+  return { scene, params, view: view.length === 6 && view.every(Number.isFinite) ? view : null };
+}
+
+function parseParam(p, raw) {
+  if (p.type === 'checkbox') return raw === '1' || raw === 'true';
+  if (p.type === 'range') {
+    const x = Number(raw);
+    return Number.isFinite(x) ? Math.min(p.max, Math.max(p.min, x)) : p.value;
+  }
+  return raw;
+}
+
+function writeHash({ scene, params }, camera) {
+  const q = new URLSearchParams({ scene: scene.id });
+  for (const p of scene.params) q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : params[p.key]);
+  const { yaw, pitch, distance, target } = camera;
+  q.set('view', [yaw, pitch, distance, ...target].map((x) => Number(x.toPrecision(6))).join(','));
+  history.replaceState(null, '', `#${q}`);
+}
+
+/** Sets the camera from a `view` hash entry: yaw, pitch, distance, target x, y, z. */
+function applyView(camera, view) {
+  const [yaw, pitch, distance, ...target] = view;
+  Object.assign(camera, { yaw, pitch, distance: Math.max(distance, 1e-6), target });
+}
+
+function buildControls(state, changed) {
+  const form = $('controls');
+  form.replaceChildren();
+  for (const p of state.scene.params) {
+    const id = `param-${p.key}`;
+    const label = Object.assign(document.createElement('label'), { htmlFor: id, textContent: p.label });
+    let input;
+    if (p.type === 'select') {
+      input = document.createElement('select');
+      for (const [value, title] of p.options()) input.add(new Option(title, value));
+      input.value = state.params[p.key];
+    } else {
+      input = Object.assign(document.createElement('input'), { type: p.type });
+      if (p.type === 'checkbox') input.checked = state.params[p.key];
+      else Object.assign(input, { min: p.min, max: p.max, step: p.step, value: state.params[p.key] });
+    }
+    input.id = id;
+    input.name = p.key;
+    const cell = document.createElement('span');
+    cell.append(input);
+    let output;
+    if (p.type === 'range') {
+      output = Object.assign(document.createElement('output'), { htmlFor: id, value: state.params[p.key] });
+      cell.append(output);
+    }
+    input.addEventListener('input', () => {
+      const v = p.type === 'checkbox' ? input.checked : p.type === 'range' ? Number(input.value) : input.value;
+      if (output) output.value = v;
+      state.params[p.key] = v;
+      changed(p);
+    });
+    form.append(label, cell);
+  }
+}
+
+/** Legend entries [colour, html, param?]: an entry with a param shows only while it is on. */
+function showLegend(scene, params) {
+  $('legend').replaceChildren(
+    ...scene.legend
+      .filter(([, , key]) => !key || params[key])
+      .map(([color, html]) => {
+        const li = document.createElement('li');
+        const sw = Object.assign(document.createElement('span'), { className: 'swatch' });
+        sw.style.background = css(COLORS[color]);
+        const label = document.createElement('span');
+        label.innerHTML = html;
+        li.append(sw, label);
+        return li;
+      }),
+  );
+}
+
+function showReadout(readout) {
+  const fmt = (x) => (typeof x !== 'number' ? x : Number.isInteger(x) ? String(x) : x.toExponential(2));
+  const labels = {
+    rulings: 'rulings N',
+    parallelPairs: 'parallel pairs',
+    footpointError: 'max |f_{i,i+1} − s(u_i)|',
+    midpointError: 'max |m_i − s(u_i)|',
+    meanDelta: 'δ̄ at the middle ruling',
+  };
+  $('readout').replaceChildren(
+    ...Object.entries(readout).flatMap(([k, v]) => [
+      Object.assign(document.createElement('dt'), { textContent: labels[k] ?? k }),
+      Object.assign(document.createElement('dd'), { textContent: fmt(v) }),
+    ]),
+  );
+}
+
+function showError(e) {
+  const box = $('error');
+  box.hidden = !e;
+  box.textContent = e ? String(e.message ?? e) : '';
+}
+
+async function main() {
+  await init({ module_or_path: new URL('../pkg/ruledlab_bg.wasm', import.meta.url) });
+  const viewer = new Viewer($('view'));
+  const initial = readHash();
+  const state = { scene: initial.scene, params: initial.params };
+  const picker = $('scene');
+  for (const s of SCENES) picker.add(new Option(s.title, s.id));
+
+  let hashTimer = 0;
+  const saveHash = () => {
+    clearTimeout(hashTimer);
+    hashTimer = setTimeout(() => writeHash(state, viewer.camera), 150);
+  };
+  const update = ({ fit = false, view = null } = {}) => {
+    try {
+      const built = state.scene.create(state.params);
+      viewer.setScene(built, { fit });
+      if (view) applyView(viewer.camera, view);
+      showReadout(built.readout);
+      showLegend(state.scene, state.params);
+      showError(null);
+    } catch (e) {
+      showError(e);
+    }
+    writeHash(state, viewer.camera);
+  };
+  const enter = ({ scene, params, view }) => {
+    Object.assign(state, { scene, params });
+    picker.value = scene.id;
+    $('text').innerHTML = scene.text;
+    buildControls(state, (p) => update({ fit: p.type === 'select' }));
+    update({ fit: true, view });
+  };
+  picker.addEventListener('change', () => enter(readHash(`scene=${picker.value}`)));
+  window.addEventListener('hashchange', () => enter(readHash()));
+  viewer.onCameraChange = saveHash;
+  enter(initial);
+  window.ruledlab = { viewer, state, scenes: SCENES };
+  viewer.onFrame = (n) => {
+    document.body.dataset.frames = String(n);
+  };
+}
+
+main().catch((e) => {
+  showError(e);
+  throw e;
+});

@@ -1,0 +1,14 @@
+// Colours shared by every scene (RGBA, 0–1), and their CSS for the legend.
+export const COLORS = {
+  ruling: [0.13, 0.18, 0.33, 1],
+  normal: [0.09, 0.55, 0.33, 1],
+  foot: [0.05, 0.3, 0.18, 1],
+  striction: [0.84, 0.16, 0.17, 1],
+  exact: [0.98, 0.72, 0.16, 0.9],
+  strip: { front: [0.45, 0.64, 0.9, 0.55], back: [0.98, 0.76, 0.5, 0.55] },
+};
+
+export function css(rgba) {
+  const [r, g, b] = rgba.map((x) => Math.round(x * 255));
+  return `rgb(${r} ${g} ${b})`;
+}
