@@ -111,6 +111,12 @@ const NAN3: DVec3 = DVec3::splat(f64::NAN);
 impl Invariants {
     /// Computes every invariant in one pass over the lines (O(N), one allocation per array).
     pub fn of(lines: &[Line]) -> Self {
+        Self::from_lines(lines.iter().copied())
+    }
+
+    /// As [`Invariants::of`], streaming: no intermediate array of lines is allocated, which
+    /// matters at 10⁶ rulings, where first-touch of fresh memory dominates the run time.
+    pub fn from_lines(mut lines: impl ExactSizeIterator<Item = Line>) -> Self {
         let pairs = lines.len().saturating_sub(1);
         let interior = lines.len().saturating_sub(2);
         let mut inv = Invariants {
@@ -124,8 +130,10 @@ impl Invariants {
             distribution_mean: Vec::with_capacity(interior),
             perpendicular_midpoints: Vec::with_capacity(pairs),
         };
-        for (i, w) in lines.windows(2).enumerate() {
-            let p = PairInvariants::of(&w[0], &w[1]);
+        let Some(mut prev) = lines.next() else { return inv };
+        for (i, line) in lines.enumerate() {
+            let p = PairInvariants::of(&prev, &line);
+            prev = line;
             let (f0, f1) = p.feet.unwrap_or((NAN3, NAN3));
             let delta = p.distribution();
             if i > 0 {

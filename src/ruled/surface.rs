@@ -101,8 +101,7 @@ impl RuledSurface {
 
     /// All discrete invariants of Section 2.
     pub fn invariants(&self) -> Invariants {
-        let lines: Vec<Line> = self.lines().collect();
-        Invariants::of(&lines)
+        Invariants::from_lines(self.lines())
     }
 
     /// The surface with `f` applied to every endpoint (re-validated: `f` could collapse

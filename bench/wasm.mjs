@@ -1,0 +1,42 @@
+// Times Section 2's invariants through the built wasm package for 10³ … 10⁶ rulings:
+// `node bench/wasm.mjs` (after `npm run build`). Prints a table (median of several runs)
+// and writes bench/results/wasm.json.
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { cpus } from 'node:os';
+import { performance } from 'node:perf_hooks';
+import * as ruledlab from '../pkg/ruledlab.js';
+
+ruledlab.initSync({ module: readFileSync(new URL('../pkg/ruledlab_bg.wasm', import.meta.url)) });
+const { AnalyticSurface, RuledSurface } = ruledlab;
+
+function median(f, runs) {
+  const times = [];
+  for (let i = 0; i < runs; i++) {
+    const t0 = performance.now();
+    f();
+    times.push(performance.now() - t0);
+  }
+  times.sort((a, b) => a - b);
+  return times[Math.floor(runs / 2)];
+}
+
+const rows = [];
+const hyp = AnalyticSurface.byName('hyperboloid');
+for (const n of [1e3, 1e4, 1e5, 1e6]) {
+  const runs = n >= 1e6 ? 7 : 15;
+  const surface = hyp.sample(n);
+  const flat = surface.segments();
+  const invariants = median(() => surface.invariants(), runs);
+  const fromSegments = median(() => RuledSurface.fromSegments(flat).free(), runs);
+  rows.push({ rulings: n, invariantsMs: invariants, fromSegmentsMs: fromSegments, nsPerRuling: (invariants * 1e6) / n });
+  surface.free();
+}
+console.log(`wasm (Node ${process.version}, ${cpus()[0].model}, ${cpus().length} cores)`);
+console.table(rows.map((r) => ({
+  rulings: r.rulings,
+  'invariants ms': r.invariantsMs.toFixed(2),
+  'fromSegments ms': r.fromSegmentsMs.toFixed(2),
+  'ns/ruling': r.nsPerRuling.toFixed(1),
+})));
+mkdirSync(new URL('./results/', import.meta.url), { recursive: true });
+writeFileSync(new URL('./results/wasm.json', import.meta.url), JSON.stringify({ node: process.version, cpu: cpus()[0].model, rows }, null, 2));
