@@ -82,6 +82,15 @@ impl Distance for glam::DVec3 {
     }
 }
 
+impl Distance for glam::DVec2 {
+    fn distance(&self, other: &Self) -> f64 {
+        (*self - *other).length()
+    }
+    fn size(&self) -> f64 {
+        self.length()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -55,3 +55,41 @@ export function maxDistance(p, q) {
   }
   return m;
 }
+
+/**
+ * Points (flat xyz) in the orthonormal frame (x, y, z) at `origin`, shifted by `offset`:
+ * the coordinates ((p − o)·x, (p − o)·y, (p − o)·z) + offset, as a Float32Array.
+ */
+export function toFrame(points, { origin, x, y, z }, offset = [0, 0, 0]) {
+  const out = new Float32Array(points.length);
+  for (let i = 0; i < points.length; i += 3) {
+    const d0 = points[i] - origin[0], d1 = points[i + 1] - origin[1], d2 = points[i + 2] - origin[2];
+    out[i] = d0 * x[0] + d1 * x[1] + d2 * x[2] + offset[0];
+    out[i + 1] = d0 * y[0] + d1 * y[1] + d2 * y[2] + offset[1];
+    out[i + 2] = d0 * z[0] + d1 * z[1] + d2 * z[2] + offset[2];
+  }
+  return out;
+}
+
+/** 2D points (flat xy) lifted to the plane z = `height`, shifted by `offset`. */
+export function lift2d(points, height = 0, offset = [0, 0, 0]) {
+  const n = points.length / 2;
+  const out = new Float32Array(3 * n);
+  for (let i = 0; i < n; i++) {
+    out[3 * i] = points[2 * i] + offset[0];
+    out[3 * i + 1] = points[2 * i + 1] + offset[1];
+    out[3 * i + 2] = height + offset[2];
+  }
+  return out;
+}
+
+/** Largest relative change between corresponding edge lengths of two flat xyz polylines. */
+export function maxRelativeEdgeChange(p, q, stride = 3, start = 0) {
+  let worst = 0;
+  for (let i = start; i + stride + 2 < p.length; i += stride) {
+    const a = Math.hypot(p[i + stride] - p[i], p[i + stride + 1] - p[i + 1], p[i + stride + 2] - p[i + 2]);
+    const b = Math.hypot(q[i + stride] - q[i], q[i + stride + 1] - q[i + 1], q[i + stride + 2] - q[i + 2]);
+    if (a > 0) worst = Math.max(worst, Math.abs(a - b) / a);
+  }
+  return worst;
+}

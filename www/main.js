@@ -4,8 +4,9 @@ import init from '../pkg/ruledlab.js';
 import { Viewer } from './viewer.js';
 import { COLORS, css } from './theme.js';
 import { scene as striction } from './scenes/striction.js';
+import { scene as isometry } from './scenes/isometry.js';
 
-const SCENES = [striction];
+const SCENES = [striction, isometry];
 
 const $ = (id) => document.getElementById(id);
 
@@ -80,11 +81,15 @@ function buildControls(state, changed) {
   }
 }
 
-/** Legend entries [colour, html, param?]: an entry with a param shows only while it is on. */
+/**
+ * Legend entries [colour, html, when?]: `when` is a param key (shown while it is on) or a
+ * predicate of the params.
+ */
 function showLegend(scene, params) {
+  const visible = (when) => !when || (typeof when === 'function' ? when(params) : params[when]);
   $('legend').replaceChildren(
     ...scene.legend
-      .filter(([, , key]) => !key || params[key])
+      .filter(([, , when]) => visible(when))
       .map(([color, html]) => {
         const li = document.createElement('li');
         const sw = Object.assign(document.createElement('span'), { className: 'swatch' });
@@ -105,6 +110,8 @@ function showReadout(readout) {
     footpointError: 'max |f_{i,i+1} − s(u_i)|',
     midpointError: 'max |m_i − s(u_i)|',
     meanDelta: 'δ̄ at the middle ruling',
+    nonDevelopability: 'non-developability (height of the conoidal model)',
+    isometryError: 'max relative change of polygon edge lengths',
   };
   $('readout').replaceChildren(
     ...Object.entries(readout).flatMap(([k, v]) => [
@@ -152,7 +159,29 @@ async function main() {
     $('text').innerHTML = scene.text;
     buildControls(state, (p) => update({ fit: p.type === 'select' }));
     update({ fit: true, view });
+    animate();
   };
+  // Checkbox params with `animate: { key, period }` sweep that slider back and forth.
+  let animation = 0;
+  const animate = () => {
+    cancelAnimationFrame(animation);
+    const driver = state.scene.params.find((p) => p.animate && state.params[p.key]);
+    if (!driver) return;
+    const { key, period } = driver.animate;
+    const slider = document.getElementById(`param-${key}`);
+    const t0 = performance.now();
+    const tick = (now) => {
+      const phase = ((now - t0) / 1000 / period) % 1;
+      const value = Number((0.5 - 0.5 * Math.cos(2 * Math.PI * phase)).toFixed(2));
+      if (slider && Number(slider.value) !== value) {
+        slider.value = value;
+        slider.dispatchEvent(new Event('input'));
+      }
+      animation = requestAnimationFrame(tick);
+    };
+    animation = requestAnimationFrame(tick);
+  };
+  $('controls').addEventListener('input', (e) => e.target.type === 'checkbox' && animate());
   picker.addEventListener('change', () => enter(readHash(`scene=${picker.value}`)));
   window.addEventListener('hashchange', () => enter(readHash()));
   viewer.onCameraChange = saveHash;

@@ -45,7 +45,11 @@ export class Viewer {
   /** Shows `scene`; `fit` reframes the camera on its bounds. */
   setScene(scene, { fit = false } = {}) {
     this.scene = scene;
-    if (fit) this.camera.fit(scene.bounds);
+    if (fit) {
+      // a scene may suggest the direction it is best seen from
+      if (scene.camera) Object.assign(this.camera, scene.camera);
+      this.camera.fit(scene.bounds);
+    }
     this.rebuild();
   }
 

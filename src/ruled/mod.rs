@@ -1,8 +1,12 @@
 //! Discrete ruled surfaces (Sections 2–4).
 
 pub mod convergence;
+pub mod development;
 pub mod invariants;
+pub mod isometry;
 pub mod surface;
 
+pub use development::Development;
 pub use invariants::{Invariants, PairInvariants};
+pub use isometry::HingeChain;
 pub use surface::RuledSurface;

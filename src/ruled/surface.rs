@@ -52,11 +52,18 @@ impl RuledSurface {
     fn checked_lengths(points: Vec<DVec3>) -> Result<Self> {
         for (i, ab) in points.chunks_exact(2).enumerate() {
             let len = (ab[1] - ab[0]).length();
-            if !(len > ZERO_LENGTH_REL * ab[0].length().max(ab[1].length())) {
+            if len <= ZERO_LENGTH_REL * ab[0].length().max(ab[1].length()) {
                 return Err(Error::ZeroLength { ruling: i });
             }
         }
         Ok(RuledSurface { points })
+    }
+
+    /// A surface from endpoints produced by ruledlab's own algorithms from a validated
+    /// surface (rigid motions, subdivision): finite and of nonzero length by construction.
+    pub(crate) fn from_trusted_points(points: Vec<DVec3>) -> Self {
+        debug_assert!(points.len() >= 4 && points.len() % 2 == 0);
+        RuledSurface { points }
     }
 
     /// Number of rulings N.

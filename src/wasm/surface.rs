@@ -2,7 +2,8 @@
 
 use super::args::{describe, fail, float64_array, integer, js_error, ObjectBuilder, Options};
 use crate::examples;
-use crate::ruled::{self, convergence, Invariants};
+use crate::ruled::{self, convergence, Development, HingeChain, Invariants};
+use std::cell::OnceCell;
 use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
 use js_sys::{Float32Array, Float64Array, Uint8Array};
 use wasm_bindgen::prelude::*;
@@ -68,12 +69,18 @@ export interface ConvergenceStudy { surface: string; u: number; steps: number[];
 #[wasm_bindgen]
 pub struct RuledSurface {
     inner: ruled::RuledSurface,
+    /// Built on first use by the isometries, so repeated `bend(t)` calls stay cheap.
+    chain: OnceCell<HingeChain>,
 }
 
 impl RuledSurface {
     /// Wraps a core surface.
     pub fn from_core(inner: ruled::RuledSurface) -> Self {
-        RuledSurface { inner }
+        RuledSurface { inner, chain: OnceCell::new() }
+    }
+
+    fn chain(&self) -> &HingeChain {
+        self.chain.get_or_init(|| HingeChain::new(&self.inner))
     }
 
     /// The core surface.
@@ -131,6 +138,49 @@ impl RuledSurface {
             .f64s("perpendicularMidpoints", Invariants::flat(&inv.perpendicular_midpoints))
             .set("parallel", Uint8Array::from(&parallel[..]))
             .build()
+    }
+
+    /// The hinge angles τ_i of the discrete Minding isometries (Section 3): the signed angle
+    /// about e_i from n_{i−1,i} to n_{i,i+1}, N − 2 values for R_1 … R_{N−2}.
+    #[wasm_bindgen(js_name = hingeAngles)]
+    pub fn hinge_angles(&self) -> Float64Array {
+        Float64Array::from(self.chain().hinge_angles())
+    }
+
+    /// The surface with each interior hinge R_k turned by `angles[k − 1]` (radians, N − 2
+    /// values); R_0 and R_1 stay put. An isometry: every polygon p_i ∈ R_i keeps its length.
+    pub fn hinge(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] angles: JsValue,
+    ) -> Result<RuledSurface, JsError> {
+        const F: &str = "RuledSurface.hinge";
+        let angles = float64_array(F, "angles", &angles)?;
+        self.chain().deform(&angles).map(Self::from_core).map_err(|e| fail(F, e))
+    }
+
+    /// The isometric conoidal model (Example 2): all common normals turned parallel to
+    /// n_{0,1}, so every ruling is parallel to the plane of R_0 and R_1.
+    pub fn conoidal(&self) -> RuledSurface {
+        Self::from_core(self.chain().conoidal())
+    }
+
+    /// The bending from this surface (t = 0) to its conoidal model (t = 1), hinge angles
+    /// scaled by t. Throws unless 0 ≤ t ≤ 1.
+    pub fn bend(&self, t: f64) -> Result<RuledSurface, JsError> {
+        self.chain().bend(t).map(Self::from_core).map_err(|e| fail("RuledSurface.bend", e))
+    }
+
+    /// The approximate development (Fig. 6): the conoidal model projected onto the plane of
+    /// its rulings; 4 numbers per ruling, x, y of a'_i then of b'_i.
+    pub fn development(&self) -> Float64Array {
+        Float64Array::from(Development::of(&self.inner).flat())
+    }
+
+    /// The non-developability measure: the extremal height difference of the conoidal
+    /// model's rulings (0 for cones and cylinders).
+    #[wasm_bindgen(js_name = nonDevelopability)]
+    pub fn non_developability(&self) -> f64 {
+        Development::of(&self.inner).non_developability()
     }
 }
 

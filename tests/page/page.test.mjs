@@ -71,18 +71,49 @@ test('the rulings slider changes the picture and the URL, and the URL restores i
   await restored.page.close();
 });
 
-test('every analytic surface draws without errors', async () => {
+test('every scene, and every choice of each of its menus, draws without errors', async () => {
   const { page, problems } = await open();
-  const names = await page.evaluate(() => [...document.querySelectorAll('#param-surface option')].map((o) => o.value));
-  assert.ok(names.length >= 9);
-  for (const name of names) {
-    const frames = await page.evaluate(() => Number(document.body.dataset.frames));
-    await page.selectOption('#param-surface', name);
-    await framesAfter(page, frames);
-    const image = await shoot(page, `striction-${name}`);
-    assert.ok(countDifferent(image, BACKGROUND) > 0.02 * image.width * image.height, `${name} drew nothing`);
-    assert.equal(await page.locator('#error').isHidden(), true, `${name}: ${await page.locator('#error').innerText()}`);
+  const scenes = await page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
+  assert.ok(scenes.length >= 2);
+  for (const id of scenes) {
+    await page.goto(`${url}#scene=${id}`);
+    await page.reload();
+    await framesAfter(page, 0);
+    const menus = await page.evaluate(() =>
+      [...document.querySelectorAll('#controls select')].map((s) => ({ id: s.id, values: [...s.options].map((o) => o.value) })),
+    );
+    for (const menu of menus) {
+      for (const value of menu.values) {
+        const frames = await page.evaluate(() => Number(document.body.dataset.frames));
+        await page.selectOption(`#${menu.id}`, value);
+        await framesAfter(page, frames);
+        const image = await shoot(page, `${id}-${menu.id.replace('param-', '')}-${value}`);
+        const drawn = countDifferent(image, BACKGROUND);
+        assert.ok(drawn > 0.02 * image.width * image.height, `${id} ${menu.id}=${value} drew only ${drawn} pixels`);
+        const error = await page.locator('#error');
+        assert.equal(await error.isHidden(), true, `${id} ${menu.id}=${value}: ${await error.innerText()}`);
+      }
+    }
   }
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('isometry scene: the bending slider bends, the readout shows an isometry, animation runs', async () => {
+  const { page, problems, frames } = await open('#scene=isometry&t=0');
+  const flat = await shoot(page, 'isometry-t0');
+  await page.locator('#param-t').fill('1');
+  const f1 = await framesAfter(page, frames);
+  const bent = await shoot(page, 'isometry-t1');
+  assert.ok(countChanged(flat, bent) > 2000, 'bending did not change the picture');
+  const readout = await page.locator('#readout').innerText();
+  const error = Number(readout.match(/max relative change of polygon edge lengths\s+([-+.\de]+)/)[1]);
+  assert.ok(error < 1e-12, `edge lengths changed by ${error}`);
+  await page.locator('#param-play').check();
+  const before = await page.locator('#param-t').inputValue();
+  await page.waitForFunction((v) => document.getElementById('param-t').value !== v, before, { timeout: 5000 });
+  await page.locator('#param-play').uncheck();
+  await framesAfter(page, f1);
   assert.deepEqual(problems, []);
   await page.close();
 });
