@@ -40,6 +40,8 @@ pub enum Error {
         index: usize,
         /// The value (NaN or ±∞).
         value: f64,
+        /// Numbers per record: 6 for segments, 3 for points.
+        stride: usize,
     },
     /// A finite coordinate too large in magnitude to compute with safely.
     OutOfRange {
@@ -49,6 +51,8 @@ pub enum Error {
         value: f64,
         /// The largest magnitude accepted.
         max: f64,
+        /// Numbers per record: 6 for segments, 3 for points.
+        stride: usize,
     },
     /// A segment whose endpoints coincide (to working precision), so it has no direction.
     ZeroLength {
@@ -80,15 +84,15 @@ impl fmt::Display for Error {
             Error::TooMany { what, got, max } => {
                 write!(f, "{what}: {got} exceeds the limit of {max}")
             }
-            Error::NonFinite { index, value } => write!(
+            Error::NonFinite { index, value, stride } => write!(
                 f,
                 "coordinate {index} {} is {value}; all coordinates must be finite numbers",
-                coordinate_name(*index)
+                coordinate_name(*index, *stride)
             ),
-            Error::OutOfRange { index, value, max } => write!(
+            Error::OutOfRange { index, value, max, stride } => write!(
                 f,
                 "coordinate {index} {} is {value:e}; magnitudes above {max:e} are not accepted",
-                coordinate_name(*index)
+                coordinate_name(*index, *stride)
             ),
             Error::ZeroLength { ruling } => write!(
                 f,
@@ -101,10 +105,16 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
-/// "(ruling 2, b.y)" for index 16 of a flat array of 6 numbers per ruling.
-fn coordinate_name(index: usize) -> String {
-    const NAMES: [&str; 6] = ["a.x", "a.y", "a.z", "b.x", "b.y", "b.z"];
-    format!("(ruling {}, {})", index / 6, NAMES[index % 6])
+/// "(ruling 2, b.y)" for index 16 of a flat array of 6 numbers per ruling, "(point 5, y)"
+/// for index 16 of 3 numbers per point.
+fn coordinate_name(index: usize, stride: usize) -> String {
+    const SEGMENT: [&str; 6] = ["a.x", "a.y", "a.z", "b.x", "b.y", "b.z"];
+    const POINT: [&str; 3] = ["x", "y", "z"];
+    match stride {
+        6 => format!("(ruling {}, {})", index / 6, SEGMENT[index % 6]),
+        3 => format!("(point {}, {})", index / 3, POINT[index % 3]),
+        _ => String::new(),
+    }
 }
 
 impl Error {
@@ -120,11 +130,13 @@ mod tests {
 
     #[test]
     fn messages_name_the_problem() {
-        let e = Error::NonFinite { index: 16, value: f64::NAN };
+        let e = Error::NonFinite { index: 16, value: f64::NAN, stride: 6 };
         assert_eq!(
             e.to_string(),
             "coordinate 16 (ruling 2, b.y) is NaN; all coordinates must be finite numbers"
         );
+        let e = Error::NonFinite { index: 16, value: f64::INFINITY, stride: 3 };
+        assert!(e.to_string().starts_with("coordinate 16 (point 5, y) is inf"));
         let e = Error::BadLength { what: "segment coordinates", len: 7, multiple: 6 };
         assert!(e.to_string().contains("not a multiple of 6"));
         let e = Error::ZeroLength { ruling: 3 };

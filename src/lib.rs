@@ -25,7 +25,9 @@
 pub mod error;
 pub mod examples;
 pub mod line;
+pub mod linalg;
 pub mod ruled;
+pub mod subdivision;
 pub mod tolerance;
 
 #[cfg(target_family = "wasm")]

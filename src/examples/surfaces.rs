@@ -271,6 +271,39 @@ impl AnalyticSurface {
         e.cross(de).try_normalize()
     }
 
+    /// Distance of `p` from the surface (rulings extended to whole lines), searching the
+    /// rulings with u in `[u0, u1]`: a scan of 64 rulings, then golden-section refinement of
+    /// the point-to-line distance around the best one.
+    pub fn distance_to(&self, p: DVec3, u0: f64, u1: f64) -> f64 {
+        let f = |u: f64| self.line(u).distance_to(p);
+        let samples = 64;
+        let h = (u1 - u0) / samples as f64;
+        let best = (0..=samples).map(|i| u0 + i as f64 * h).fold((u0, f64::INFINITY), |(bu, bf), u| {
+            let fu = f(u);
+            if fu < bf { (u, fu) } else { (bu, bf) }
+        });
+        let (mut lo, mut hi) = (best.0 - h, best.0 + h);
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut c, mut d) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        let (mut fc, mut fd) = (f(c), f(d));
+        for _ in 0..80 {
+            if fc < fd {
+                hi = d;
+                d = c;
+                fd = fc;
+                c = hi - g * (hi - lo);
+                fc = f(c);
+            } else {
+                lo = c;
+                c = d;
+                fc = fd;
+                d = lo + g * (hi - lo);
+                fd = f(d);
+            }
+        }
+        best.1.min(fc).min(fd)
+    }
+
     /// `count` rulings at equally spaced u in [u₀, u₁] (u₁ excluded when `closed`, so a
     /// closed surface is not sampled twice at the seam), each the segment from a + v₀d to
     /// a + v₁d.
@@ -364,6 +397,17 @@ mod tests {
                 assert!(spread(sp + dv * l.dir) > at, "{}", s.name());
             }
         }
+    }
+
+    #[test]
+    fn distance_to_the_surface() {
+        let hypar = AnalyticSurface::HyperbolicParaboloid;
+        // z = xy: the point (0.3, 0.4, 0.12 + 0.05) lies 0.05 above the surface point
+        let p = DVec3::new(0.3, 0.4, 0.12 + 0.05);
+        let normal = DVec3::new(-0.4, -0.3, 1.0).normalize();
+        let d = hypar.distance_to(p, -1.0, 1.0);
+        assert!(d <= 0.05 * normal.z + 1e-12 && d > 0.04, "{d}");
+        assert!(hypar.distance_to(hypar.point(0.37, -0.8), 0.0, 1.0) < 1e-12);
     }
 
     #[test]

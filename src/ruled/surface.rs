@@ -34,7 +34,7 @@ impl RuledSurface {
             });
         }
         check_count(coords.len() / FLAT_STRIDE)?;
-        check_coordinates(coords)?;
+        check_coordinates(coords, FLAT_STRIDE)?;
         let points = coords.chunks_exact(3).map(DVec3::from_slice).collect();
         Self::checked_lengths(points)
     }
@@ -44,7 +44,7 @@ impl RuledSurface {
         check_count(segments.len())?;
         for (i, s) in segments.iter().enumerate() {
             let c = [s.a.x, s.a.y, s.a.z, s.b.x, s.b.y, s.b.z];
-            check_coordinates(&c).map_err(|e| shift_index(e, FLAT_STRIDE * i))?;
+            check_coordinates(&c, FLAT_STRIDE).map_err(|e| shift_index(e, FLAT_STRIDE * i))?;
         }
         Self::checked_lengths(segments.iter().flat_map(|s| [s.a, s.b]).collect())
     }
@@ -115,7 +115,7 @@ impl RuledSurface {
     /// a ruling).
     pub fn map_points(&self, f: impl Fn(DVec3) -> DVec3) -> Result<Self> {
         let points: Vec<DVec3> = self.points.iter().map(|&p| f(p)).collect();
-        check_coordinates(bytemuck::cast_slice(&points))?;
+        check_coordinates(bytemuck::cast_slice(&points), FLAT_STRIDE)?;
         Self::checked_lengths(points)
     }
 }
@@ -131,24 +131,42 @@ pub fn check_count(n: usize) -> Result<()> {
     Ok(())
 }
 
-/// Every coordinate finite and at most [`MAX_COORD`] in magnitude.
-pub fn check_coordinates(coords: &[f64]) -> Result<()> {
+/// Every coordinate finite and at most [`MAX_COORD`] in magnitude (`stride` numbers per
+/// record, for the messages).
+pub fn check_coordinates(coords: &[f64], stride: usize) -> Result<()> {
     for (index, &value) in coords.iter().enumerate() {
         if !value.is_finite() {
-            return Err(Error::NonFinite { index, value });
+            return Err(Error::NonFinite { index, value, stride });
         }
         if value.abs() > MAX_COORD {
-            return Err(Error::OutOfRange { index, value, max: MAX_COORD });
+            return Err(Error::OutOfRange { index, value, max: MAX_COORD, stride });
         }
     }
     Ok(())
 }
 
+/// A polygon from flat coordinates, 3 per point: at least 2 and at most [`MAX_RULINGS`]
+/// points, every coordinate finite and at most [`MAX_COORD`] in magnitude.
+pub fn points_from_flat(coords: &[f64]) -> Result<Vec<DVec3>> {
+    if coords.len() % 3 != 0 {
+        return Err(Error::BadLength { what: "point coordinates", len: coords.len(), multiple: 3 });
+    }
+    let n = coords.len() / 3;
+    if n < 2 {
+        return Err(Error::TooFew { what: "points", got: n, min: 2 });
+    }
+    if n > MAX_RULINGS {
+        return Err(Error::TooMany { what: "points", got: n, max: MAX_RULINGS });
+    }
+    check_coordinates(coords, 3)?;
+    Ok(coords.chunks_exact(3).map(DVec3::from_slice).collect())
+}
+
 fn shift_index(e: Error, offset: usize) -> Error {
     match e {
-        Error::NonFinite { index, value } => Error::NonFinite { index: index + offset, value },
-        Error::OutOfRange { index, value, max } => {
-            Error::OutOfRange { index: index + offset, value, max }
+        Error::NonFinite { index, value, stride } => Error::NonFinite { index: index + offset, value, stride },
+        Error::OutOfRange { index, value, max, stride } => {
+            Error::OutOfRange { index: index + offset, value, max, stride }
         }
         other => other,
     }

@@ -97,6 +97,19 @@ impl Options {
         }
     }
 
+    /// A string, if given.
+    pub fn string(&self, key: &str) -> Result<Option<String>, JsError> {
+        match self.get(key) {
+            None => Ok(None),
+            Some(v) => v.as_string().map(Some).ok_or_else(|| self.wrong(key, "a string", &v)),
+        }
+    }
+
+    /// Whether `key` was given (not undefined).
+    pub fn has(&self, key: &str) -> bool {
+        self.get(key).is_some()
+    }
+
     /// A boolean, if given.
     pub fn boolean(&self, key: &str) -> Result<Option<bool>, JsError> {
         match self.get(key) {

@@ -6,8 +6,10 @@
 //! the boundary and the module stays usable after an error.
 
 mod args;
+mod subdivide;
 mod surface;
 
+pub use subdivide::subdivide_polygon;
 pub use surface::{AnalyticSurface, RuledSurface};
 
 use wasm_bindgen::prelude::*;

@@ -1,0 +1,92 @@
+//! The interpolatory four-point scheme of Dyn, Levin and Gregory (Section 4, Fig. 8):
+//!
+//! p_{i+½} = (½ + w)(p_i + p_{i+1}) − w(p_{i−1} + p_{i+2})        (8)
+//!
+//! The old points are kept, so N points → 2N − 1 (open) or 2N (closed), old ones at even
+//! indices. The limit is C¹ for 0 < w < ⅛; w = 1/16 reproduces cubic polynomials.
+//!
+//! **End rule for open polygons.** The first and last edges lack p_{−1} and p_{N}; they are
+//! replaced by ghost points extrapolating the cubic through the four end points
+//! (p_{−1} = 4p_0 − 6p_1 + 4p_2 − p_3; quadratic for N = 3, linear for N = 2). With
+//! w = 1/16 the inserted point is then the cubic interpolant at the edge midpoint,
+//! (5p_0 + 15p_1 − 5p_2 + p_3)/16, so cubic data are reproduced up to the ends; the
+//! tangent at the ends follows the data instead of being flattened as a repeated end
+//! point would do.
+
+use glam::DVec3;
+
+/// The ghost point before `p` (p[0] first), by polynomial extrapolation of up to 4 points.
+fn ghost(p: &[DVec3]) -> DVec3 {
+    match p.len() {
+        0 | 1 => p.first().copied().unwrap_or(DVec3::ZERO),
+        2 => 2.0 * p[0] - p[1],
+        3 => 3.0 * p[0] - 3.0 * p[1] + p[2],
+        _ => 4.0 * p[0] - 6.0 * p[1] + 4.0 * p[2] - p[3],
+    }
+}
+
+/// One step of the four-point scheme with tension `w`.
+pub fn four_point(points: &[DVec3], w: f64, closed: bool) -> Vec<DVec3> {
+    let n = points.len();
+    let at = |i: isize| -> DVec3 {
+        if closed {
+            points[i.rem_euclid(n as isize) as usize]
+        } else if i < 0 {
+            ghost(points)
+        } else if i as usize >= n {
+            let tail: Vec<DVec3> = points.iter().rev().take(4).copied().collect();
+            ghost(&tail)
+        } else {
+            points[i as usize]
+        }
+    };
+    let edges = if closed { n } else { n - 1 };
+    let mut out = Vec::with_capacity(2 * n);
+    for i in 0..edges {
+        let k = i as isize;
+        out.push(points[i]);
+        out.push((0.5 + w) * (at(k) + at(k + 1)) - w * (at(k - 1) + at(k + 2)));
+    }
+    if !closed {
+        out.push(points[n - 1]);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cubic(t: f64) -> DVec3 {
+        DVec3::new(t, 0.5 * t * t - t, 0.1 * t * t * t - 0.3 * t * t + 2.0)
+    }
+
+    #[test]
+    fn rule_eight_on_random_data() {
+        let p: Vec<DVec3> = (0..7).map(|i| DVec3::new((i as f64).sin(), (i * i) as f64 * 0.1, (3.0 * i as f64).cos())).collect();
+        let w = 1.0 / 13.0;
+        let q = four_point(&p, w, false);
+        assert_eq!(q.len(), 13);
+        for i in 1..5 {
+            assert_eq!(q[2 * i], p[i]);
+            let expected = (0.5 + w) * (p[i] + p[i + 1]) - w * (p[i - 1] + p[i + 2]);
+            assert!((q[2 * i + 1] - expected).length() < 1e-15);
+        }
+        let c = four_point(&p, w, true);
+        assert_eq!(c.len(), 14);
+        assert!((c[13] - ((0.5 + w) * (p[6] + p[0]) - w * (p[5] + p[1]))).length() < 1e-15);
+    }
+
+    /// w = 1/16 reproduces cubics everywhere, the ends included (cubic ghost points).
+    #[test]
+    fn reproduces_cubics_with_w_one_sixteenth() {
+        let p: Vec<DVec3> = (0..6).map(|i| cubic(i as f64)).collect();
+        let q = four_point(&p, 1.0 / 16.0, false);
+        for (j, x) in q.iter().enumerate() {
+            assert!((*x - cubic(j as f64 / 2.0)).length() < 1e-13, "point {j}");
+        }
+        // and the end formula is the cubic interpolant at the first midpoint
+        let expected = (5.0 * p[0] + 15.0 * p[1] - 5.0 * p[2] + p[3]) / 16.0;
+        assert!((q[1] - expected).length() < 1e-14);
+    }
+}

@@ -1,0 +1,167 @@
+//! Subdivision of polygons and of discrete ruled surfaces (Section 4).
+//!
+//! Curve schemes act on polygons in 3D, open or closed: [`chaikin`], [`bspline`]
+//! (Lane–Riesenfeld), [`bezier`] (de Casteljau) and the interpolatory [`four_point`] scheme.
+//! A ruled strip is refined by applying a curve scheme to both boundary polygons a_i and
+//! b_i ([`strip`]), or by the variational interpolatory scheme of [`variational`].
+//! Output sizes are computed and checked against [`MAX_RULINGS`] before anything is
+//! allocated.
+
+pub mod bezier;
+pub mod accuracy;
+pub mod bspline;
+pub mod chaikin;
+pub mod four_point;
+pub mod strip;
+pub mod variational;
+
+use crate::error::{Error, Result};
+use crate::tolerance::MAX_RULINGS;
+use glam::DVec3;
+
+pub use strip::{recut, subdivide_strip};
+pub use variational::Variant;
+
+/// A subdivision scheme with its parameters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Scheme {
+    /// Chaikin's corner cutting (quadratic B-spline limit).
+    Chaikin,
+    /// Uniform B-spline subdivision of the given degree (1 … 7).
+    BSpline {
+        /// Degree d.
+        degree: usize,
+    },
+    /// de Casteljau subdivision of the whole polygon as one Bézier control polygon.
+    Bezier,
+    /// The four-point scheme (8) with tension w.
+    FourPoint {
+        /// Tension w (C¹ for 0 < w < ⅛).
+        w: f64,
+    },
+    /// Variational interpolatory subdivision of a ruled strip (strips only).
+    Variational {
+        /// Each segment is divided into n parts (n ≥ 3).
+        n: usize,
+        /// Coupled (umbrellas at all interior vertices) or literal (new vertices only).
+        variant: Variant,
+    },
+}
+
+impl Scheme {
+    /// Checks the parameters.
+    pub fn validate(&self) -> Result<()> {
+        match *self {
+            Scheme::BSpline { degree } if !(1..=bspline::MAX_DEGREE).contains(&degree) => Err(Error::parameter(
+                "degree",
+                format!("must be an integer from 1 to {}, got {degree}", bspline::MAX_DEGREE),
+            )),
+            Scheme::FourPoint { w } if !(w.is_finite() && (-0.25..=0.25).contains(&w)) => Err(Error::parameter(
+                "w",
+                format!("must be a number in [−1/4, 1/4] (C¹ limits need 0 < w < 1/8), got {w}"),
+            )),
+            Scheme::Variational { n, .. } if !(3..=1000).contains(&n) => Err(Error::parameter(
+                "n",
+                format!("must be an integer from 3 to 1000 (n = 2 leaves the energy singular), got {n}"),
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// Whether the old points are kept (at even indices).
+    pub fn is_interpolatory(&self) -> bool {
+        matches!(self, Scheme::FourPoint { .. } | Scheme::Variational { .. })
+    }
+
+    /// Points after one step from `n` points; an error if the polygon is too short.
+    pub fn output_len(&self, n: usize, closed: bool) -> Result<usize> {
+        let min = match (*self, closed) {
+            (_, true) => 3,
+            (Scheme::BSpline { degree }, false) => degree / 2 + 1,
+            (Scheme::Bezier, false) => 2,
+            _ => 2,
+        };
+        if n < min {
+            return Err(Error::TooFew { what: "points (rulings) for this scheme", got: n, min });
+        }
+        if closed && matches!(self, Scheme::Bezier | Scheme::Variational { .. }) {
+            return Err(Error::parameter("closed", "this scheme refines open polygons and strips only"));
+        }
+        Ok(match (*self, closed) {
+            (_, true) => 2 * n,
+            (Scheme::Chaikin, false) => 2 * n - 2,
+            (Scheme::BSpline { degree }, false) => 2 * n - degree,
+            _ => 2 * n - 1,
+        })
+    }
+
+    /// Points after `steps` steps, checked against [`MAX_RULINGS`] before any work.
+    pub fn output_len_after(&self, n: usize, closed: bool, steps: usize) -> Result<usize> {
+        let mut len = n;
+        for _ in 0..steps {
+            len = self.output_len(len, closed)?;
+            if len > MAX_RULINGS {
+                return Err(Error::TooMany { what: "rulings after subdivision", got: len, max: MAX_RULINGS });
+            }
+        }
+        Ok(len)
+    }
+}
+
+/// Largest number of steps accepted in one call (the size limit usually binds first).
+pub const MAX_STEPS: usize = 24;
+
+/// `steps` steps of a curve scheme on a polygon (not [`Scheme::Variational`], which needs a
+/// strip: see [`subdivide_strip`]).
+pub fn subdivide_polygon(points: &[DVec3], scheme: Scheme, closed: bool, steps: usize) -> Result<Vec<DVec3>> {
+    scheme.validate()?;
+    check_steps(steps)?;
+    if matches!(scheme, Scheme::Variational { .. }) {
+        return Err(Error::parameter("scheme", "\"variational\" refines ruled strips, not polygons"));
+    }
+    scheme.output_len_after(points.len(), closed, steps)?;
+    let bezier_degree = points.len() - 1;
+    let mut p = points.to_vec();
+    for _ in 0..steps {
+        p = polygon_step(&p, scheme, closed, bezier_degree);
+    }
+    Ok(p)
+}
+
+/// Checks the step count.
+pub fn check_steps(steps: usize) -> Result<()> {
+    if steps > MAX_STEPS {
+        return Err(Error::parameter("steps", format!("must be an integer from 0 to {MAX_STEPS}, got {steps}")));
+    }
+    Ok(())
+}
+
+/// One step of a curve scheme (sizes already checked).
+pub(crate) fn polygon_step(p: &[DVec3], scheme: Scheme, closed: bool, bezier_degree: usize) -> Vec<DVec3> {
+    match scheme {
+        Scheme::Chaikin => chaikin::chaikin(p, closed),
+        Scheme::BSpline { degree } => bspline::bspline(p, degree, closed),
+        Scheme::Bezier => bezier::de_casteljau(p, bezier_degree),
+        Scheme::FourPoint { w } => four_point::four_point(p, w, closed),
+        Scheme::Variational { .. } => unreachable!("variational is a strip scheme"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_are_checked_before_work() {
+        let p = vec![DVec3::ZERO; 5];
+        assert!(subdivide_polygon(&p, Scheme::FourPoint { w: 0.0625 }, false, 30).is_err());
+        let err = subdivide_polygon(&p, Scheme::FourPoint { w: 0.0625 }, false, 22).unwrap_err();
+        assert!(matches!(err, Error::TooMany { .. }), "{err}");
+        assert_eq!(Scheme::Chaikin.output_len_after(5, false, 2).unwrap(), 14);
+        assert_eq!(Scheme::BSpline { degree: 3 }.output_len(5, false).unwrap(), 7);
+        assert!(Scheme::Bezier.output_len(5, true).is_err());
+        assert!(Scheme::FourPoint { w: f64::NAN }.validate().is_err());
+        assert!(Scheme::BSpline { degree: 0 }.validate().is_err());
+        assert!(Scheme::Variational { n: 2, variant: Variant::Coupled }.validate().is_err());
+    }
+}

@@ -1,0 +1,123 @@
+//! Subdivision for JavaScript (Section 4): `surface.subdivide(options)`, `surface.recut()`
+//! and `subdividePolygon(points, options)`.
+
+use super::args::{fail, float64_array, Options};
+use super::surface::RuledSurface;
+use crate::subdivision::{self, Scheme, Variant, MAX_STEPS};
+use crate::ruled::surface::points_from_flat;
+use js_sys::Float64Array;
+use wasm_bindgen::prelude::*;
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_TYPES: &str = r#"
+/** Options of `RuledSurface.subdivide` and `subdividePolygon` (Section 4). */
+export interface SubdivideOptions {
+  /**
+   * "chaikin" (corner cutting), "bspline" (uniform B-spline of `degree`), "bezier"
+   * (de Casteljau), "four-point" (Dyn–Levin–Gregory (8), interpolatory) or "variational"
+   * (ruled strips only, interpolatory).
+   */
+  scheme: "chaikin" | "bspline" | "bezier" | "four-point" | "variational";
+  /** Number of steps, 0 … 24 (default 1); the output may hold at most 4 194 304 rulings. */
+  steps?: number;
+  /** Four-point tension w ∈ [−1/4, 1/4] (default 1/16; C¹ for 0 < w < 1/8). */
+  w?: number;
+  /** Variational: each segment divided into n parts, 3 … 1000 (default 12). */
+  n?: number;
+  /**
+   * Variational energy (default "coupled"): umbrellas (13)/(14) at every interior vertex;
+   * "literal": at the new vertices only (equals the midpoint rule); "averaged": the averaged
+   * umbrella of the two triangulations, without the twist term (more accurate inside).
+   */
+  variant?: "coupled" | "literal" | "averaged";
+  /** B-spline degree 1 … 7 (default 3). */
+  degree?: number;
+  /** Closed polygon / strip (default false); not for "bezier" and "variational". */
+  closed?: boolean;
+}
+"#;
+
+const KNOWN: [&str; 7] = ["scheme", "steps", "w", "n", "variant", "degree", "closed"];
+
+/// Reads `options` into a scheme, `closed` and `steps`.
+fn read(func: &'static str, options: JsValue) -> Result<(Scheme, bool, usize), JsError> {
+    let o = Options::new(func, options, &KNOWN)?;
+    let Some(name) = o.string("scheme")? else {
+        return Err(fail(func, "options.scheme is required: \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""));
+    };
+    let only = |key: &str, scheme: &str| -> Result<(), JsError> {
+        if o.has(key) && name != scheme {
+            return Err(fail(func, format!("options.{key} applies to the \"{scheme}\" scheme only, not to \"{name}\"")));
+        }
+        Ok(())
+    };
+    only("w", "four-point")?;
+    only("n", "variational")?;
+    only("variant", "variational")?;
+    only("degree", "bspline")?;
+    let scheme = match name.as_str() {
+        "chaikin" => Scheme::Chaikin,
+        "bspline" => Scheme::BSpline { degree: o.integer("degree", 1, subdivision::bspline::MAX_DEGREE)?.unwrap_or(3) },
+        "bezier" => Scheme::Bezier,
+        "four-point" => Scheme::FourPoint { w: o.number("w")?.unwrap_or(1.0 / 16.0) },
+        "variational" => Scheme::Variational {
+            n: o.integer("n", 3, 1000)?.unwrap_or(12),
+            variant: match o.string("variant")?.as_deref() {
+                None | Some("coupled") => Variant::Coupled,
+                Some("literal") => Variant::Literal,
+                Some("averaged") => Variant::Averaged,
+                Some(other) => {
+                    return Err(fail(func, format!("options.variant must be \"coupled\", \"literal\" or \"averaged\", got {other:?}")))
+                }
+            },
+        },
+        other => {
+            return Err(fail(
+                func,
+                format!("unknown scheme {other:?}; use \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""),
+            ))
+        }
+    };
+    scheme.validate().map_err(|e| fail(func, e))?;
+    let steps = o.integer("steps", 0, MAX_STEPS)?.unwrap_or(1);
+    let closed = o.boolean("closed")?.unwrap_or(false);
+    Ok((scheme, closed, steps))
+}
+
+#[wasm_bindgen]
+impl RuledSurface {
+    /// The surface refined by a subdivision scheme (see `SubdivideOptions`). Interpolatory
+    /// schemes ("four-point", "variational") return 2N − 1 rulings per step (2N closed) with
+    /// the old ones at even indices, unchanged.
+    pub fn subdivide(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
+    ) -> Result<RuledSurface, JsError> {
+        const F: &str = "RuledSurface.subdivide";
+        let (scheme, closed, steps) = read(F, options)?;
+        subdivision::subdivide_strip(self.core(), scheme, closed, steps)
+            .map(RuledSurface::from_core)
+            .map_err(|e| fail(F, e))
+    }
+
+    /// The rulings re-cut to segments of one length (default: the mean length), centred on
+    /// the striction points: for data given as lines, before subdividing.
+    pub fn recut(&self, length: Option<f64>) -> Result<RuledSurface, JsError> {
+        subdivision::recut(self.core(), length).map(RuledSurface::from_core).map_err(|e| fail("RuledSurface.recut", e))
+    }
+}
+
+/// A polygon (3 numbers per point) refined by a curve scheme (see `SubdivideOptions`;
+/// "variational" is for ruled strips only).
+#[wasm_bindgen(js_name = subdividePolygon)]
+pub fn subdivide_polygon(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array")] points: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
+) -> Result<Float64Array, JsError> {
+    const F: &str = "subdividePolygon";
+    let flat = float64_array(F, "points", &points)?;
+    let points = points_from_flat(&flat).map_err(|e| fail(F, e))?;
+    let (scheme, closed, steps) = read(F, options)?;
+    let out = subdivision::subdivide_polygon(&points, scheme, closed, steps).map_err(|e| fail(F, e))?;
+    Ok(Float64Array::from(bytemuck::cast_slice::<_, f64>(&out)))
+}

@@ -1,0 +1,93 @@
+// Section 4 through the package: subdivide, recut, subdividePolygon, and their errors.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import ruledlab from './load.mjs';
+
+const { AnalyticSurface, subdividePolygon } = ruledlab;
+
+function quartic(n = 12) {
+  const q = AnalyticSurface.byName('quartic');
+  const s = q.sample(n);
+  q.free();
+  return s;
+}
+
+test('interpolatory schemes: 2N − 1 rulings per step, old rulings bit for bit at even indices', () => {
+  const s = quartic();
+  const old = s.segments();
+  for (const options of [{ scheme: 'four-point' }, { scheme: 'four-point', w: 1 / 13, steps: 2 }, { scheme: 'variational' }, { scheme: 'variational', n: 5, variant: 'averaged' }]) {
+    const r = s.subdivide(options);
+    const steps = options.steps ?? 1;
+    assert.equal(r.length, (12 - 1) * 2 ** steps + 1, JSON.stringify(options));
+    const seg = r.segments();
+    for (let i = 0; i < 12; i++) {
+      for (let k = 0; k < 6; k++) assert.equal(seg[6 * i * 2 ** steps + k], old[6 * i + k]);
+    }
+    r.free();
+  }
+});
+
+test('approximating schemes and sizes', () => {
+  const s = quartic(6);
+  assert.equal(s.subdivide({ scheme: 'chaikin', steps: 2 }).length, 18);
+  assert.equal(s.subdivide({ scheme: 'bspline', degree: 3 }).length, 9);
+  assert.equal(s.subdivide({ scheme: 'bezier', steps: 2 }).length, 21);
+  assert.equal(s.subdivide({ scheme: 'four-point', steps: 0 }).length, 6);
+});
+
+test('literal variational equals the midpoint rule', () => {
+  const s = quartic();
+  const a = s.subdivide({ scheme: 'variational', variant: 'literal' }).segments();
+  const b = s.subdivide({ scheme: 'bspline', degree: 1 }).segments();
+  a.forEach((x, i) => assert.ok(Math.abs(x - b[i]) < 1e-12));
+});
+
+test('recut gives segments of one length centred on the striction points', () => {
+  const h = AnalyticSurface.byName('hyperboloid').sample(20, { uMin: 0, uMax: 2, closed: false });
+  const r = h.recut(0.5);
+  const seg = r.segments();
+  const m = h.invariants().striction;
+  for (let i = 1; i < 19; i++) {
+    const len = Math.hypot(seg[6 * i + 3] - seg[6 * i], seg[6 * i + 4] - seg[6 * i + 1], seg[6 * i + 5] - seg[6 * i + 2]);
+    assert.ok(Math.abs(len - 0.5) < 1e-12);
+    for (let k = 0; k < 3; k++) assert.ok(Math.abs((seg[6 * i + k] + seg[6 * i + 3 + k]) / 2 - m[3 * (i - 1) + k]) < 1e-12);
+  }
+  assert.throws(() => h.recut(-1), /RuledSurface.recut: length: must be a positive finite number, got -1/);
+});
+
+test('subdividePolygon: Chaikin and four-point on a polygon', () => {
+  const p = new Float64Array([0, 0, 0, 4, 0, 0, 4, 4, 0]);
+  assert.deepEqual([...subdividePolygon(p, { scheme: 'chaikin' })], [1, 0, 0, 3, 0, 0, 4, 1, 0, 4, 3, 0]);
+  const q = subdividePolygon(p, { scheme: 'four-point', closed: true });
+  assert.equal(q.length, 18);
+  assert.throws(() => subdividePolygon(new Float64Array([0, 0, NaN, 1, 1, 1]), { scheme: 'chaikin' }), /coordinate 2 \(point 0, z\) is NaN/);
+  assert.throws(() => subdividePolygon(new Float64Array(7), { scheme: 'chaikin' }), /point coordinates: length 7 is not a multiple of 3/);
+  assert.throws(() => subdividePolygon(p, { scheme: 'variational' }), /refines ruled strips, not polygons/);
+});
+
+test('bad options throw clear Errors and the surface stays usable', () => {
+  const s = quartic(6);
+  const cases = [
+    [{}, /options.scheme is required/],
+    [undefined, /options.scheme is required/],
+    [{ scheme: 'loop' }, /unknown scheme "loop"/],
+    [{ scheme: 4 }, /options.scheme must be a string, got 4/],
+    [{ scheme: 'chaikin', w: 0.1 }, /options.w applies to the "four-point" scheme only, not to "chaikin"/],
+    [{ scheme: 'four-point', w: 0.5 }, /w: must be a number in \[−1\/4, 1\/4\]/],
+    [{ scheme: 'four-point', w: NaN }, /options.w must be a finite number, got NaN/],
+    [{ scheme: 'four-point', steps: -1 }, /options.steps must be an integer from 0 to 24, got -1/],
+    [{ scheme: 'four-point', steps: 1.5 }, /got 1.5/],
+    [{ scheme: 'four-point', steps: 22 }, /rulings after subdivision: .* exceeds the limit of 4194304/],
+    [{ scheme: 'variational', n: 2 }, /options.n must be an integer from 3 to 1000, got 2/],
+    [{ scheme: 'variational', variant: 'fancy' }, /options.variant must be "coupled", "literal" or "averaged"/],
+    [{ scheme: 'variational', closed: true }, /refines open polygons and strips only/],
+    [{ scheme: 'bezier', closed: true }, /open polygons and strips only/],
+    [{ scheme: 'bspline', degree: 9 }, /options.degree must be an integer from 1 to 7, got 9/],
+    [{ scheme: 'four-point', colour: 'red' }, /unknown option "colour"/],
+    [{ scheme: 'four-point', closed: 'yes' }, /options.closed must be true or false, got a string/],
+  ];
+  for (const [options, message] of cases) {
+    assert.throws(() => s.subdivide(options), (e) => e instanceof Error && message.test(e.message), String(message));
+  }
+  assert.equal(s.subdivide({ scheme: 'four-point' }).length, 11);
+});
