@@ -31,6 +31,21 @@ for (const n of [1e3, 1e4, 1e5, 1e6]) {
   rows.push({ rulings: n, invariantsMs: invariants, fromSegmentsMs: fromSegments, nsPerRuling: (invariants * 1e6) / n });
   surface.free();
 }
+const subdivision = [];
+for (const [name, options] of [
+  ['chaikin', { scheme: 'chaikin' }],
+  ['bspline3', { scheme: 'bspline', degree: 3 }],
+  ['four-point', { scheme: 'four-point' }],
+  ['variational', { scheme: 'variational' }],
+]) {
+  const row = { scheme: name };
+  for (const n of [1e3, 1e4, 1e5, 1e6]) {
+    const surface = hyp.sample(n, { uMin: 0, uMax: 100, closed: false });
+    row[n] = median(() => surface.subdivide(options).free(), n >= 1e6 ? 5 : 11);
+    surface.free();
+  }
+  subdivision.push(row);
+}
 console.log(`wasm (Node ${process.version}, ${cpus()[0].model}, ${cpus().length} cores)`);
 console.table(rows.map((r) => ({
   rulings: r.rulings,
@@ -38,5 +53,7 @@ console.table(rows.map((r) => ({
   'fromSegments ms': r.fromSegmentsMs.toFixed(2),
   'ns/ruling': r.nsPerRuling.toFixed(1),
 })));
+console.log('one subdivision step of a strip, ms (median)');
+console.table(subdivision.map((r) => Object.fromEntries(Object.entries(r).map(([k, v]) => [k, typeof v === 'number' ? v.toFixed(2) : v]))));
 mkdirSync(new URL('./results/', import.meta.url), { recursive: true });
-writeFileSync(new URL('./results/wasm.json', import.meta.url), JSON.stringify({ node: process.version, cpu: cpus()[0].model, rows }, null, 2));
+writeFileSync(new URL('./results/wasm.json', import.meta.url), JSON.stringify({ node: process.version, cpu: cpus()[0].model, rows, subdivision }, null, 2));

@@ -97,6 +97,9 @@ impl Scheme {
 
     /// Points after `steps` steps, checked against [`MAX_RULINGS`] before any work.
     pub fn output_len_after(&self, n: usize, closed: bool, steps: usize) -> Result<usize> {
+        if *self == Scheme::Bezier && n > MAX_BEZIER_POINTS {
+            return Err(Error::TooMany { what: "points of one Bézier control polygon (its degree + 1)", got: n, max: MAX_BEZIER_POINTS });
+        }
         let mut len = n;
         for _ in 0..steps {
             len = self.output_len(len, closed)?;
@@ -107,6 +110,10 @@ impl Scheme {
         Ok(len)
     }
 }
+
+/// Largest Bézier control polygon: de Casteljau costs O(degree) per output point, and
+/// Bernstein bases of higher degree are numerically meaningless anyway.
+pub const MAX_BEZIER_POINTS: usize = 1001;
 
 /// Largest number of steps accepted in one call (the size limit usually binds first).
 pub const MAX_STEPS: usize = 24;
@@ -160,6 +167,7 @@ mod tests {
         assert_eq!(Scheme::Chaikin.output_len_after(5, false, 2).unwrap(), 14);
         assert_eq!(Scheme::BSpline { degree: 3 }.output_len(5, false).unwrap(), 7);
         assert!(Scheme::Bezier.output_len(5, true).is_err());
+        assert!(Scheme::Bezier.output_len_after(1002, false, 1).unwrap_err().to_string().contains("Bézier"));
         assert!(Scheme::FourPoint { w: f64::NAN }.validate().is_err());
         assert!(Scheme::BSpline { degree: 0 }.validate().is_err());
         assert!(Scheme::Variational { n: 2, variant: Variant::Coupled }.validate().is_err());
