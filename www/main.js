@@ -5,8 +5,10 @@ import { Viewer } from './viewer.js';
 import { COLORS, css } from './theme.js';
 import { scene as striction } from './scenes/striction.js';
 import { scene as isometry } from './scenes/isometry.js';
+import { scene as curves } from './scenes/curves.js';
+import { scene as strip } from './scenes/strip.js';
 
-const SCENES = [striction, isometry];
+const SCENES = [striction, isometry, curves, strip];
 
 const $ = (id) => document.getElementById(id);
 
@@ -102,7 +104,7 @@ function showLegend(scene, params) {
   );
 }
 
-function showReadout(readout) {
+function showReadout(readout, extraLabels = {}) {
   const fmt = (x) => (typeof x !== 'number' ? x : Number.isInteger(x) ? String(x) : x.toExponential(2));
   const labels = {
     rulings: 'rulings N',
@@ -112,10 +114,11 @@ function showReadout(readout) {
     meanDelta: 'δ̄ at the middle ruling',
     nonDevelopability: 'non-developability (height of the conoidal model)',
     isometryError: 'max relative change of polygon edge lengths',
+    insertedDistance: 'max distance of inserted rulings from the surface',
   };
   $('readout').replaceChildren(
     ...Object.entries(readout).flatMap(([k, v]) => [
-      Object.assign(document.createElement('dt'), { textContent: labels[k] ?? k }),
+      Object.assign(document.createElement('dt'), { textContent: extraLabels[k] ?? labels[k] ?? k }),
       Object.assign(document.createElement('dd'), { textContent: fmt(v) }),
     ]),
   );
@@ -145,7 +148,7 @@ async function main() {
       const built = state.scene.create(state.params);
       viewer.setScene(built, { fit });
       if (view) applyView(viewer.camera, view);
-      showReadout(built.readout);
+      showReadout(built.readout, built.readoutLabels);
       showLegend(state.scene, state.params);
       showError(null);
     } catch (e) {

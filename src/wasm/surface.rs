@@ -282,6 +282,30 @@ impl AnalyticSurface {
         Ok(Float64Array::from(&out[..]))
     }
 
+    /// Distance of each point (3 numbers per point) from the surface, its rulings extended to
+    /// whole lines, searching the rulings with u in [uMin, uMax].
+    pub fn distances(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] points: JsValue,
+        u_min: f64,
+        u_max: f64,
+    ) -> Result<Float64Array, JsError> {
+        const F: &str = "AnalyticSurface.distances";
+        let flat = float64_array(F, "points", &points)?;
+        if !(u_min.is_finite() && u_max.is_finite() && u_min < u_max) {
+            return Err(fail(F, format!("need finite uMin < uMax, got {u_min} and {u_max}")));
+        }
+        if flat.len() % 3 != 0 || flat.len() / 3 > MAX_SAMPLES {
+            return Err(fail(F, format!("points: length {} must be a multiple of 3 and at most {}", flat.len(), 3 * MAX_SAMPLES)));
+        }
+        crate::ruled::surface::check_coordinates(&flat, 3).map_err(|e| fail(F, e))?;
+        let out: Vec<f64> = flat
+            .chunks_exact(3)
+            .map(|p| self.inner.distance_to(glam::DVec3::from_slice(p), u_min, u_max))
+            .collect();
+        Ok(Float64Array::from(&out[..]))
+    }
+
     /// Measured convergence orders of the discrete invariants (Propositions 1 and 2).
     #[wasm_bindgen(unchecked_return_type = "ConvergenceStudy")]
     pub fn convergence(

@@ -31,11 +31,17 @@ export function watch(page) {
   return problems;
 }
 
-/** Screenshot of the canvas, saved as an artifact and decoded. */
+/**
+ * Screenshot of what WebGL drew, decoded: the overlays on the canvas (legend, hint) are
+ * hidden for it, so a canvas that drew nothing really looks empty. The whole page, overlays
+ * and text included, is saved as `<name>.png` for people to look at.
+ */
 export async function shoot(page, name) {
-  const png = await page.locator('#view').screenshot();
   mkdirSync(ARTIFACTS, { recursive: true });
-  writeFileSync(join(ARTIFACTS, `${name}.png`), png);
+  writeFileSync(join(ARTIFACTS, `${name}.png`), await page.screenshot());
+  await page.evaluate(() => document.querySelectorAll('.view > :not(canvas)').forEach((e) => (e.style.visibility = 'hidden')));
+  const png = await page.locator('#view').screenshot();
+  await page.evaluate(() => document.querySelectorAll('.view > :not(canvas)').forEach((e) => (e.style.visibility = '')));
   return decodePng(png);
 }
 
