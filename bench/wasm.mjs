@@ -7,7 +7,7 @@ import { performance } from 'node:perf_hooks';
 import * as ruledlab from '../pkg/ruledlab.js';
 
 ruledlab.initSync({ module: readFileSync(new URL('../pkg/ruledlab_bg.wasm', import.meta.url)) });
-const { AnalyticSurface, RuledSurface } = ruledlab;
+const { AnalyticSurface, RuledSurface, AnalyticCongruence } = ruledlab;
 
 function median(f, runs) {
   const times = [];
@@ -46,6 +46,24 @@ for (const [name, options] of [
   }
   subdivision.push(row);
 }
+const congruence = [];
+const ex = AnalyticCongruence.byName('example5');
+for (const [scheme, sizes, options] of [
+  ['butterfly', [100, 300, 1000], { scheme: 'butterfly' }],
+  ['coupled', [33, 65, 129, 257], { scheme: 'variational' }],
+]) {
+  for (const n of sizes) {
+    const grid = ex.grid(n, n);
+    congruence.push({ scheme, grid: `${n}²`, lines: n * n, ms: median(() => grid.subdivide(options).free(), n >= 257 ? 3 : 5) });
+    grid.free();
+  }
+}
+const fit = (rows) => {
+  const xs = rows.map((r) => Math.log(r.lines)), ys = rows.map((r) => Math.log(r.ms));
+  const mx = xs.reduce((a, b) => a + b) / xs.length, my = ys.reduce((a, b) => a + b) / ys.length;
+  return xs.reduce((s, x, i) => s + (x - mx) * (ys[i] - my), 0) / xs.reduce((s, x) => s + (x - mx) ** 2, 0);
+};
+const exponent = fit(congruence.filter((r) => r.scheme === 'coupled'));
 console.log(`wasm (Node ${process.version}, ${cpus()[0].model}, ${cpus().length} cores)`);
 console.table(rows.map((r) => ({
   rulings: r.rulings,
@@ -55,5 +73,8 @@ console.table(rows.map((r) => ({
 })));
 console.log('one subdivision step of a strip, ms (median)');
 console.table(subdivision.map((r) => Object.fromEntries(Object.entries(r).map(([k, v]) => [k, typeof v === 'number' ? v.toFixed(2) : v]))));
+console.log('one congruence step, ms (median)');
+console.table(congruence.map((r) => ({ ...r, ms: r.ms.toFixed(1) })));
+console.log(`coupled variational: time ∝ lines^${exponent.toFixed(2)}`);
 mkdirSync(new URL('./results/', import.meta.url), { recursive: true });
-writeFileSync(new URL('./results/wasm.json', import.meta.url), JSON.stringify({ node: process.version, cpu: cpus()[0].model, rows, subdivision }, null, 2));
+writeFileSync(new URL('./results/wasm.json', import.meta.url), JSON.stringify({ node: process.version, cpu: cpus()[0].model, rows, subdivision, congruence, coupledExponent: exponent }, null, 2));

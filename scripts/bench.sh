@@ -5,5 +5,5 @@ cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 bash scripts/setup.sh
 bash scripts/build.sh
-cargo bench --bench invariants --bench subdivision
+cargo bench --bench invariants --bench subdivision --bench congruence
 node bench/wasm.mjs

@@ -22,6 +22,7 @@
 //! assert_eq!(inv.striction.len(), 62);
 //! ```
 
+pub mod congruence;
 pub mod error;
 pub mod examples;
 pub mod line;

@@ -16,7 +16,7 @@
 use glam::DVec3;
 
 /// The ghost point before `p` (p[0] first), by polynomial extrapolation of up to 4 points.
-fn ghost(p: &[DVec3]) -> DVec3 {
+pub(crate) fn ghost(p: &[DVec3]) -> DVec3 {
     match p.len() {
         0 | 1 => p.first().copied().unwrap_or(DVec3::ZERO),
         2 => 2.0 * p[0] - p[1],

@@ -6,9 +6,11 @@
 //! the boundary and the module stays usable after an error.
 
 mod args;
+mod congruence;
 mod subdivide;
 mod surface;
 
+pub use congruence::{AnalyticCongruence, LineCongruence};
 pub use subdivide::subdivide_polygon;
 pub use surface::{AnalyticSurface, RuledSurface};
 

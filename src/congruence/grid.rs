@@ -1,0 +1,165 @@
+//! A discrete line congruence (Section 5): a rows × cols grid of lines R_{i,j}, each a
+//! segment p_{i,j} → q_{i,j} between two director surfaces d₁ ∋ p and d₂ ∋ q, stored row
+//! by row. Every row and every column is a discrete ruled surface, so Section 2's
+//! invariants apply to them.
+
+use crate::error::{Error, Result};
+use crate::line::Segment;
+use crate::ruled::surface::check_coordinates;
+use crate::ruled::RuledSurface;
+use crate::tolerance::{MAX_RULINGS, ZERO_LENGTH_REL};
+use glam::DVec3;
+
+/// A validated grid of lines: rows, cols ≥ 2, finite, no zero-length segment.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LineCongruence {
+    rows: usize,
+    cols: usize,
+    /// p then q for each line, row-major.
+    points: Vec<DVec3>,
+}
+
+impl LineCongruence {
+    /// From flat coordinates, 6 numbers per line (p then q), row-major.
+    pub fn from_flat(rows: usize, cols: usize, coords: &[f64]) -> Result<Self> {
+        check_shape(rows, cols)?;
+        let expected = 6 * rows * cols;
+        if coords.len() != expected {
+            return Err(Error::parameter(
+                "coords",
+                format!("a {rows} × {cols} grid needs {expected} numbers (6 per line), got {}", coords.len()),
+            ));
+        }
+        check_coordinates(coords, 6).map_err(|e| name_line(e, cols))?;
+        Self::checked(rows, cols, coords.chunks_exact(3).map(DVec3::from_slice).collect())
+    }
+
+    /// From endpoints p_{i,j}, q_{i,j} (row-major), validated.
+    pub fn from_points(rows: usize, cols: usize, p: &[DVec3], q: &[DVec3]) -> Result<Self> {
+        check_shape(rows, cols)?;
+        let points: Vec<DVec3> = p.iter().zip(q).flat_map(|(&a, &b)| [a, b]).collect();
+        if points.len() != 2 * rows * cols {
+            return Err(Error::parameter("points", "need one p and one q per line"));
+        }
+        check_coordinates(bytemuck::cast_slice(&points), 6)?;
+        Self::checked(rows, cols, points)
+    }
+
+    fn checked(rows: usize, cols: usize, points: Vec<DVec3>) -> Result<Self> {
+        for (k, pq) in points.chunks_exact(2).enumerate() {
+            if (pq[1] - pq[0]).length() <= ZERO_LENGTH_REL * pq[0].length().max(pq[1].length()) {
+                return Err(Error::parameter(
+                    "coords",
+                    format!("line ({}, {}) has zero length (p = q), so it has no direction", k / cols, k % cols),
+                ));
+            }
+        }
+        Ok(LineCongruence { rows, cols, points })
+    }
+
+    /// Number of rows.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Number of columns.
+    pub fn cols(&self) -> usize {
+        self.cols
+    }
+
+    /// Line (i, j) as a segment p → q.
+    pub fn line(&self, i: usize, j: usize) -> Segment {
+        let k = 2 * (i * self.cols + j);
+        Segment::new(self.points[k], self.points[k + 1])
+    }
+
+    /// The endpoints on d₁ (row-major).
+    pub fn p(&self) -> Vec<DVec3> {
+        self.points.iter().step_by(2).copied().collect()
+    }
+
+    /// The endpoints on d₂ (row-major).
+    pub fn q(&self) -> Vec<DVec3> {
+        self.points.iter().skip(1).step_by(2).copied().collect()
+    }
+
+    /// Flat coordinates, 6 per line (a view).
+    pub fn flat(&self) -> &[f64] {
+        bytemuck::cast_slice(&self.points)
+    }
+
+    /// Row i (lines (i, 0) … (i, cols − 1)) as a discrete ruled surface.
+    pub fn row(&self, i: usize) -> Result<RuledSurface> {
+        if i >= self.rows {
+            return Err(Error::parameter("i", format!("row {i} does not exist (rows: {})", self.rows)));
+        }
+        RuledSurface::new((0..self.cols).map(|j| self.line(i, j)).collect())
+    }
+
+    /// Column j (lines (0, j) … (rows − 1, j)) as a discrete ruled surface.
+    pub fn column(&self, j: usize) -> Result<RuledSurface> {
+        if j >= self.cols {
+            return Err(Error::parameter("j", format!("column {j} does not exist (cols: {})", self.cols)));
+        }
+        RuledSurface::new((0..self.rows).map(|i| self.line(i, j)).collect())
+    }
+}
+
+/// A coordinate error restated in the congruence's terms: "line (i, j), q.x".
+fn name_line(e: Error, cols: usize) -> Error {
+    const NAMES: [&str; 6] = ["p.x", "p.y", "p.z", "q.x", "q.y", "q.z"];
+    let describe = |index: usize| {
+        let line = index / 6;
+        format!("coordinate {index} (line ({}, {}), {})", line / cols, line % cols, NAMES[index % 6])
+    };
+    match e {
+        Error::NonFinite { index, value, .. } => {
+            Error::parameter("coords", format!("{} is {value}; all coordinates must be finite numbers", describe(index)))
+        }
+        Error::OutOfRange { index, value, max, .. } => {
+            Error::parameter("coords", format!("{} is {value:e}; magnitudes above {max:e} are not accepted", describe(index)))
+        }
+        other => other,
+    }
+}
+
+/// rows, cols ≥ 2 and rows · cols ≤ [`MAX_RULINGS`] (checked without overflow).
+pub fn check_shape(rows: usize, cols: usize) -> Result<()> {
+    if rows < 2 || cols < 2 {
+        return Err(Error::parameter("rows, cols", format!("a congruence needs at least 2 × 2 lines, got {rows} × {cols}")));
+    }
+    match rows.checked_mul(cols) {
+        Some(n) if n <= MAX_RULINGS => Ok(()),
+        _ => Err(Error::TooMany { what: "lines (rows × cols)", got: rows.saturating_mul(cols), max: MAX_RULINGS }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn grid(rows: usize, cols: usize) -> Vec<f64> {
+        (0..rows * cols).flat_map(|k| { let (i, j) = ((k / cols) as f64, (k % cols) as f64); [i, j, 0.0, i, j, 1.0] }).collect()
+    }
+
+    #[test]
+    fn rows_and_columns_are_ruled_surfaces() {
+        let c = LineCongruence::from_flat(3, 4, &grid(3, 4)).unwrap();
+        assert_eq!(c.row(1).unwrap().len(), 4);
+        assert_eq!(c.column(2).unwrap().segment(2), Segment::new(DVec3::new(2.0, 2.0, 0.0), DVec3::new(2.0, 2.0, 1.0)));
+        assert!(c.row(3).is_err() && c.column(4).is_err());
+    }
+
+    #[test]
+    fn rejects_bad_grids() {
+        assert!(LineCongruence::from_flat(1, 4, &grid(1, 4)).is_err());
+        assert!(LineCongruence::from_flat(3, 4, &grid(3, 3)).unwrap_err().to_string().contains("needs 72 numbers"));
+        assert!(matches!(check_shape(1 << 12, 1 << 12), Err(Error::TooMany { .. })));
+        assert!(check_shape(usize::MAX, 3).is_err());
+        let mut g = grid(2, 2);
+        g[5] = 0.0;
+        assert!(LineCongruence::from_flat(2, 2, &g).unwrap_err().to_string().contains("line (0, 0) has zero length"));
+        g[5] = f64::NAN;
+        assert!(LineCongruence::from_flat(2, 2, &g).unwrap_err().to_string().contains("NaN"));
+    }
+}

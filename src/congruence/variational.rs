@@ -1,0 +1,272 @@
+//! Variational subdivision of line congruences (Section 5.2, Figs. 14–15).
+//!
+//! **Two-stage scheme** (as in the paper): every column j of lines is a discrete ruled
+//! surface; the strip scheme of Section 4 (coupled, n = K) inserts the lines T_{i,j}
+//! between R_{i,j} and R_{i+1,j}; every row likewise gives S_{i,j} between R_{i,j} and
+//! R_{i,j+1} (ERRATA.md 9: T for every row j). The face line R̄_{i,j} then minimises the
+//! 8-neighbour umbrella energy (20)–(21), whose neighbours are all known, so it is their
+//! average in every layer: P̄ = ⅛ Σ of the four corner and four edge points on d₁, Q̄ likewise.
+//!
+//! **Coupled scheme**: umbrellas (20) at every vertex of the refined grid in every layer
+//! k = 0 … K (and, on the boundary, the strip's umbrella along the boundary line), old
+//! lines fixed, all new lines unknown. Since every layer point is (1 − t_k)P + t_k Q, the
+//! energy is Σ_v [(LP)_v, (LQ)_v] M [(LP)_v, (LQ)_v]ᵀ with the umbrella operator L and
+//! M = [[Σ(1−t)², Σt(1−t)], [Σt(1−t), Σt²]] positive definite for K ≥ 1; its minimiser
+//! therefore solves L_newᵀ L P = … and L_newᵀ L Q = … separately, independent of K: variational
+//! subdivision of the two director grids (the 8-neighbour umbrella is symmetric, so no twist
+//! term appears, unlike the strip's two triangulations). Every unknown has fixed old
+//! neighbours at distance one, so the system's condition number does not grow with the
+//! grid: conjugate gradients, matrix-free and started from the two-stage result, converge
+//! in a bounded number of iterations, O(lines) time (measured in the benchmark).
+
+use crate::congruence::LineCongruence;
+use crate::error::{Error, Result};
+use crate::subdivision::{variational as strip, Variant};
+use glam::DVec3;
+
+/// The two-stage scheme of Section 5.2 (K parts per line, K ≥ 3).
+pub fn two_stage(c: &LineCongruence, k: usize) -> Result<LineCongruence> {
+    let (rows, cols) = (c.rows(), c.cols());
+    let (rr, cc) = (2 * rows - 1, 2 * cols - 1);
+    let mut p = vec![DVec3::ZERO; rr * cc];
+    let mut q = vec![DVec3::ZERO; rr * cc];
+    let mut put = |i: usize, j: usize, s: crate::line::Segment| {
+        p[i * cc + j] = s.a;
+        q[i * cc + j] = s.b;
+    };
+    for j in 0..cols {
+        let refined = strip::refine(&c.column(j)?, k, Variant::Coupled)?;
+        for (i, s) in refined.segments().enumerate() {
+            put(i, 2 * j, s);
+        }
+    }
+    for i in 0..rows {
+        let refined = strip::refine(&c.row(i)?, k, Variant::Coupled)?;
+        for (j, s) in refined.segments().enumerate().filter(|(j, _)| j % 2 == 1) {
+            put(2 * i, j, s);
+        }
+    }
+    for grid in [&mut p, &mut q] {
+        for i in (1..rr).step_by(2) {
+            for j in (1..cc).step_by(2) {
+                let sum: DVec3 = [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)]
+                    .iter()
+                    .map(|&(di, dj): &(isize, isize)| grid[(i as isize + di) as usize * cc + (j as isize + dj) as usize])
+                    .sum();
+                grid[i * cc + j] = sum / 8.0;
+            }
+        }
+    }
+    LineCongruence::from_points(rr, cc, &p, &q)
+}
+
+/// Iterations and final relative residual of the last coupled solve (for the benchmark).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolveReport {
+    /// Conjugate-gradient iterations (largest of the two director grids).
+    pub iterations: usize,
+}
+
+/// The coupled scheme (see the module docs); K only matters through K ≥ 1.
+pub fn coupled(c: &LineCongruence, k: usize) -> Result<(LineCongruence, SolveReport)> {
+    let start = two_stage(c, k.max(3))?;
+    let (rr, cc) = (start.rows(), start.cols());
+    let (mut p, mut q) = (start.p(), start.q());
+    let ip = solve_grid(&mut p, rr, cc)?;
+    let iq = solve_grid(&mut q, rr, cc)?;
+    Ok((LineCongruence::from_points(rr, cc, &p, &q)?, SolveReport { iterations: ip.max(iq) }))
+}
+
+/// The umbrella operator L of the refined grid: the 8-neighbour umbrella (20) at interior
+/// vertices, the 1D umbrella along the boundary line at boundary vertices (not corners).
+struct Umbrella {
+    rows: usize,
+    cols: usize,
+}
+
+impl Umbrella {
+    /// u = L x.
+    fn apply(&self, x: &[DVec3], u: &mut [DVec3]) {
+        let (r, c) = (self.rows, self.cols);
+        for i in 0..r {
+            for j in 0..c {
+                let k = i * c + j;
+                let (top, bottom, left, right) = (i == 0, i == r - 1, j == 0, j == c - 1);
+                u[k] = match (top || bottom, left || right) {
+                    (false, false) => {
+                        let ring = x[k - c - 1] + x[k - c] + x[k - c + 1] + x[k - 1] + x[k + 1] + x[k + c - 1] + x[k + c] + x[k + c + 1];
+                        x[k] - ring / 8.0
+                    }
+                    (true, false) => x[k] - 0.5 * (x[k - 1] + x[k + 1]),
+                    (false, true) => x[k] - 0.5 * (x[k - c] + x[k + c]),
+                    (true, true) => DVec3::ZERO,
+                };
+            }
+        }
+    }
+
+    /// y = Lᵀ u.
+    fn apply_transpose(&self, u: &[DVec3], y: &mut [DVec3]) {
+        let (r, c) = (self.rows, self.cols);
+        y.iter_mut().for_each(|v| *v = DVec3::ZERO);
+        for i in 0..r {
+            for j in 0..c {
+                let k = i * c + j;
+                let (top, bottom, left, right) = (i == 0, i == r - 1, j == 0, j == c - 1);
+                let w = u[k];
+                match (top || bottom, left || right) {
+                    (false, false) => {
+                        y[k] += w;
+                        for n in [k - c - 1, k - c, k - c + 1, k - 1, k + 1, k + c - 1, k + c, k + c + 1] {
+                            y[n] -= w / 8.0;
+                        }
+                    }
+                    (true, false) => {
+                        y[k] += w;
+                        y[k - 1] -= 0.5 * w;
+                        y[k + 1] -= 0.5 * w;
+                    }
+                    (false, true) => {
+                        y[k] += w;
+                        y[k - c] -= 0.5 * w;
+                        y[k + c] -= 0.5 * w;
+                    }
+                    (true, true) => {}
+                }
+            }
+        }
+    }
+}
+
+/// Whether refined node k is new (not an old line at even, even).
+fn is_new(k: usize, cols: usize) -> bool {
+    (k / cols) % 2 == 1 || (k % cols) % 2 == 1
+}
+
+/// Minimises |L x|² over the new nodes of `x` in place (old nodes fixed), by conjugate
+/// gradients on L_newᵀ L, three coordinates at once. Returns the iteration count.
+fn solve_grid(x: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
+    const TOL: f64 = 1e-13;
+    const MAX_ITERATIONS: usize = 2000;
+    let op = Umbrella { rows, cols };
+    let n = x.len();
+    let (mut u, mut ap) = (vec![DVec3::ZERO; n], vec![DVec3::ZERO; n]);
+    let normal = |v: &[DVec3], u: &mut Vec<DVec3>, out: &mut Vec<DVec3>| {
+        op.apply(v, u);
+        op.apply_transpose(u, out);
+        for (k, o) in out.iter_mut().enumerate() {
+            if !is_new(k, cols) {
+                *o = DVec3::ZERO;
+            }
+        }
+    };
+    let dot = |a: &[DVec3], b: &[DVec3]| a.iter().zip(b).fold(DVec3::ZERO, |s, (x, y)| s + *x * *y);
+    // residual r = −L_newᵀ L x
+    let mut r = vec![DVec3::ZERO; n];
+    normal(x, &mut u, &mut r);
+    r.iter_mut().for_each(|v| *v = -*v);
+    let scale = x.iter().fold(0.0f64, |m, p| m.max(p.abs().max_element())).max(f64::MIN_POSITIVE);
+    let floor = DVec3::splat((TOL * scale).powi(2) * n as f64);
+    let mut rr = dot(&r, &r);
+    let target = (rr * TOL * TOL).max(floor);
+    let mut p = r.clone();
+    for iteration in 0..MAX_ITERATIONS {
+        if rr.cmple(target).all() {
+            return Ok(iteration);
+        }
+        normal(&p, &mut u, &mut ap);
+        let pap = dot(&p, &ap);
+        let alpha = DVec3::select(pap.cmpgt(DVec3::ZERO), rr / pap, DVec3::ZERO);
+        for k in 0..n {
+            x[k] += alpha * p[k];
+            r[k] -= alpha * ap[k];
+        }
+        let rr_new = dot(&r, &r);
+        let beta = DVec3::select(rr.cmpgt(DVec3::ZERO), rr_new / rr, DVec3::ZERO);
+        for k in 0..n {
+            p[k] = r[k] + beta * p[k];
+        }
+        rr = rr_new;
+    }
+    Err(Error::parameter("system", format!("conjugate gradients did not converge in {MAX_ITERATIONS} iterations")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn congruence(rows: usize, cols: usize, f: impl Fn(f64, f64) -> (DVec3, DVec3)) -> LineCongruence {
+        let (p, q): (Vec<DVec3>, Vec<DVec3>) = (0..rows * cols).map(|k| f((k / cols) as f64, (k % cols) as f64)).unzip();
+        LineCongruence::from_points(rows, cols, &p, &q).unwrap()
+    }
+
+    fn wavy(u: f64, v: f64) -> (DVec3, DVec3) {
+        let p = DVec3::new(u, v, 0.5 * (0.4 * u + 0.3 * v).sin());
+        (p, p + DVec3::new(0.1 * u, 0.1 * v, 1.0))
+    }
+
+    /// The face line is the average of its eight neighbours, old lines are kept.
+    #[test]
+    fn two_stage_faces_average_their_neighbours() {
+        let c = congruence(4, 5, wavy);
+        let r = two_stage(&c, 6).unwrap();
+        assert_eq!((r.rows(), r.cols()), (7, 9));
+        for i in 0..4 {
+            for j in 0..5 {
+                assert_eq!(r.line(2 * i, 2 * j), c.line(i, j));
+            }
+        }
+        let avg = [(0, 0), (0, 1), (0, 2), (1, 0), (1, 2), (2, 0), (2, 1), (2, 2)].iter().map(|&(i, j)| r.line(2 + i, 4 + j).a).sum::<DVec3>() / 8.0;
+        assert!((r.line(3, 5).a - avg).length() < 1e-14);
+    }
+
+    /// The coupled solution minimises the layered energy (20)–(21) summed over k = 0 … K,
+    /// written out literally: perturbing any new endpoint raises it.
+    #[test]
+    fn coupled_minimises_the_layered_energy() {
+        let c = congruence(3, 4, wavy);
+        let (r, report) = coupled(&c, 6).unwrap();
+        assert!(report.iterations > 0);
+        let energy = |g: &LineCongruence| {
+            let (rr, cc) = (g.rows(), g.cols());
+            let op = Umbrella { rows: rr, cols: cc };
+            let mut total = 0.0;
+            for k in 0..=6 {
+                let t = k as f64 / 6.0;
+                let layer: Vec<DVec3> = g.p().iter().zip(g.q()).map(|(p, q)| (1.0 - t) * *p + t * q).collect();
+                let mut u = vec![DVec3::ZERO; layer.len()];
+                op.apply(&layer, &mut u);
+                total += u.iter().map(|v| v.length_squared()).sum::<f64>();
+            }
+            total
+        };
+        let e0 = energy(&r);
+        let (mut p, q) = (r.p(), r.q());
+        for k in [1, 5, 7, 10] {
+            for axis in 0..3 {
+                for sign in [-1.0, 1.0] {
+                    let mut e = DVec3::ZERO;
+                    e[axis] = sign * 1e-4;
+                    p[k] += e;
+                    let moved = LineCongruence::from_points(r.rows(), r.cols(), &p, &q).unwrap();
+                    assert!(energy(&moved) > e0, "node {k} axis {axis}");
+                    p[k] -= e;
+                }
+            }
+        }
+    }
+
+    /// Affine data stay affine; old lines are kept bit for bit.
+    #[test]
+    fn coupled_keeps_affine_data() {
+        let c = congruence(4, 4, |u, v| (DVec3::new(u, v, 0.2 * u - 0.1 * v), DVec3::new(u, v, 2.0)));
+        let (r, _) = coupled(&c, 6).unwrap();
+        for i in 0..7 {
+            for j in 0..7 {
+                let (u, v) = (i as f64 / 2.0, j as f64 / 2.0);
+                assert!((r.line(i, j).a - DVec3::new(u, v, 0.2 * u - 0.1 * v)).length() < 1e-10);
+            }
+        }
+        assert_eq!(r.line(2, 4), c.line(1, 2));
+    }
+}

@@ -1,0 +1,105 @@
+//! Section 5 against exact congruences. Runs natively and in Chromium.
+
+use ruledlab::congruence::{butterfly_diagonal, subdivide, CongruenceScheme, LineCongruence};
+use ruledlab::examples::AnalyticCongruence;
+
+#[cfg(target_family = "wasm")]
+use wasm_bindgen_test::wasm_bindgen_test;
+#[cfg(target_family = "wasm")]
+wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
+
+const BUTTERFLY: CongruenceScheme = CongruenceScheme::Butterfly { w: 1.0 / 16.0 };
+
+fn keeps_old_lines(c: &LineCongruence, r: &LineCongruence) {
+    assert_eq!((r.rows(), r.cols()), (2 * c.rows() - 1, 2 * c.cols() - 1));
+    for i in 0..c.rows() {
+        for j in 0..c.cols() {
+            assert_eq!(r.line(2 * i, 2 * j), c.line(i, j));
+        }
+    }
+}
+
+/// Example 5 (Fig. 15): 8 × 7 lines on [−1.1, 1.1]², K = 6, refined to 15 × 13 by every
+/// scheme with the old lines kept bit for bit; against the exact congruence, the coupled
+/// scheme beats the two-stage one, which beats bilinear averaging; butterfly is best.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn example_5() {
+    let ex = AnalyticCongruence::Example5;
+    let c = ex.grid(8, 7).unwrap();
+    let two = subdivide(&c, CongruenceScheme::TwoStage { k: 6 }, 1).unwrap();
+    let coupled = subdivide(&c, CongruenceScheme::Coupled { k: 6 }, 1).unwrap();
+    let butterfly = subdivide(&c, BUTTERFLY, 1).unwrap();
+    for r in [&two, &coupled, &butterfly] {
+        keeps_old_lines(&c, r);
+    }
+    let (e2, ec, eb) = (ex.errors(&two), ex.errors(&coupled), ex.errors(&butterfly));
+    assert!(ec.0 < e2.0 && ec.1 < e2.1, "coupled {ec:?} vs two-stage {e2:?}");
+    assert!(eb.0 < ec.0 && eb.1 < ec.1, "butterfly {eb:?} vs coupled {ec:?}");
+    assert!(e2.0 < 0.05 && e2.1 < 0.02);
+}
+
+/// On the hyperbolic paraboloid the director surface is bilinear: butterfly and the coupled
+/// scheme place every new point on it exactly.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn bilinear_director_surface_is_reproduced() {
+    let h = AnalyticCongruence::HyperbolicParaboloid;
+    let c = h.grid(6, 6).unwrap();
+    for scheme in [BUTTERFLY, CongruenceScheme::Coupled { k: 6 }] {
+        let (d, _) = h.errors(&subdivide(&c, scheme, 1).unwrap());
+        assert!(d < 1e-11, "{scheme:?}: {d:e}");
+    }
+}
+
+/// Fig. 13: the paper's diagonal-only insertion gives (rows − 1) × (cols − 1) lines, the
+/// odd-odd lines of the full butterfly step.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn diagonal_insertion_of_fig_13() {
+    let s = AnalyticCongruence::Sphere.grid(6, 6).unwrap();
+    let d = butterfly_diagonal(&s, 1.0 / 16.0).unwrap();
+    let full = subdivide(&s, BUTTERFLY, 1).unwrap();
+    assert_eq!((d.rows(), d.cols()), (5, 5));
+    for i in 0..5 {
+        for j in 0..5 {
+            assert_eq!(d.line(i, j), full.line(2 * i + 1, 2 * j + 1));
+        }
+    }
+}
+
+/// Repeated butterfly steps on the sphere converge to the exact lines at third order or
+/// better in the distance of the new points (cubic precision).
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn butterfly_error_falls_with_the_grid() {
+    let s = AnalyticCongruence::Sphere;
+    let coarse = s.errors(&subdivide(&s.grid(6, 6).unwrap(), BUTTERFLY, 1).unwrap());
+    let fine = s.errors(&subdivide(&s.grid(11, 11).unwrap(), BUTTERFLY, 1).unwrap());
+    assert!((coarse.0 / fine.0).log2() > 2.5, "{coarse:?} → {fine:?}");
+}
+
+/// Rows and columns are ruled surfaces; sizes and parameters are checked.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn rows_columns_and_limits() {
+    let c = AnalyticCongruence::Example5.grid(8, 7).unwrap();
+    assert_eq!(c.row(3).unwrap().invariants().angle.len(), 6);
+    assert_eq!(c.column(6).unwrap().len(), 8);
+    assert!(subdivide(&c, BUTTERFLY, 10).is_err());
+    assert!(subdivide(&c, CongruenceScheme::Butterfly { w: f64::NAN }, 1).is_err());
+    assert!(subdivide(&c, CongruenceScheme::TwoStage { k: 2 }, 1).is_err());
+}
+
+/// The coupled solve takes a bounded number of conjugate-gradient iterations however large
+/// the grid (every unknown has fixed old neighbours): time linear in the number of lines.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn coupled_solve_iterations_do_not_grow_with_the_grid() {
+    let counts: Vec<usize> = [9, 17, 33]
+        .iter()
+        .map(|&n| ruledlab::congruence::variational::coupled(&AnalyticCongruence::Example5.grid(n, n).unwrap(), 6).unwrap().1.iterations)
+        .collect();
+    assert!(counts.iter().all(|&k| k > 0 && k <= 40), "{counts:?}");
+    assert!(counts[2] <= counts[0] + 2, "iterations grow: {counts:?}");
+}
