@@ -7,8 +7,9 @@ import { scene as striction } from './scenes/striction.js';
 import { scene as isometry } from './scenes/isometry.js';
 import { scene as curves } from './scenes/curves.js';
 import { scene as strip } from './scenes/strip.js';
+import { scene as congruence } from './scenes/congruence.js';
 
-const SCENES = [striction, isometry, curves, strip];
+const SCENES = [striction, isometry, curves, strip, congruence];
 
 const $ = (id) => document.getElementById(id);
 
@@ -115,6 +116,8 @@ function showReadout(readout, extraLabels = {}) {
     nonDevelopability: 'non-developability (height of the conoidal model)',
     isometryError: 'max relative change of polygon edge lengths',
     insertedDistance: 'max distance of inserted rulings from the surface',
+    distanceError: 'max distance of new points from the exact d₁ points',
+    angleError: 'max angle of new lines to the exact lines (rad)',
   };
   $('readout').replaceChildren(
     ...Object.entries(readout).flatMap(([k, v]) => [

@@ -4,7 +4,7 @@
 import { AnalyticSurface } from '../../pkg/ruledlab.js';
 import { LineBatch } from '../gl/lines.js';
 import { PointBatch } from '../gl/points.js';
-import { StripMesh } from '../gl/strip.js';
+import { stripMesh } from '../gl/mesh.js';
 import { bounds, cross, normalize } from '../math.js';
 import { dropNonFinite, lift2d, maxRelativeEdgeChange, polylineSegments, toFrame } from '../geometry.js';
 import { COLORS } from '../theme.js';
@@ -97,9 +97,7 @@ export const scene = {
           layers.push(new LineBatch(gl, q.segments, { color: COLORS.ruling, width: 1.6 }));
           if (q.normals) layers.push(new LineBatch(gl, q.normals, { color: COLORS.normal, width: 2.2 }));
           layers.push(new LineBatch(gl, q.striction, { color: COLORS.striction, width: 3 }));
-          const mesh = new StripMesh(gl, q.segments, COLORS.strip);
-          mesh.transparent = true;
-          layers.push(mesh);
+          layers.push(stripMesh(gl, q.segments, COLORS.strip));
         }
         return layers;
       },

@@ -3,7 +3,7 @@
 import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { LineBatch } from '../gl/lines.js';
 import { PointBatch } from '../gl/points.js';
-import { StripMesh } from '../gl/strip.js';
+import { stripMesh } from '../gl/mesh.js';
 import { bounds } from '../math.js';
 import { dropNonFinite, maxDistance, parameters, polylineSegments, wrapClosed } from '../geometry.js';
 import { COLORS } from '../theme.js';
@@ -77,9 +77,7 @@ export const scene = {
           layers.push(new PointBatch(gl, dropNonFinite(inv.striction, 3), { color: COLORS.striction, size: 7 }));
         }
         if (p.strip) {
-          const mesh = new StripMesh(gl, segmentsF32, { ...COLORS.strip, closed: info.closed });
-          mesh.transparent = true;
-          layers.push(mesh);
+          layers.push(stripMesh(gl, segmentsF32, { ...COLORS.strip, closed: info.closed }));
         }
         return layers;
       },

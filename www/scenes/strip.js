@@ -4,7 +4,7 @@
 import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { LineBatch } from '../gl/lines.js';
 import { PointBatch } from '../gl/points.js';
-import { StripMesh } from '../gl/strip.js';
+import { stripMesh } from '../gl/mesh.js';
 import { bounds } from '../math.js';
 import { COLORS } from '../theme.js';
 
@@ -76,9 +76,7 @@ exact surface.</p>`,
         ];
         if (tri) layers.push(new LineBatch(gl, tri, { color: COLORS.mesh, width: 0.8 }));
         if (p.exact) {
-          const mesh = new StripMesh(gl, exactSegs, { front: [0.7, 0.78, 0.85, 0.28], back: [0.9, 0.85, 0.75, 0.28] });
-          mesh.transparent = true;
-          layers.push(mesh);
+          layers.push(stripMesh(gl, exactSegs, { front: [0.7, 0.78, 0.85, 0.28], back: [0.9, 0.85, 0.75, 0.28] }));
         }
         return layers;
       },

@@ -1,7 +1,8 @@
-// A discrete ruled surface drawn as a shaded strip: the quads a_i b_i b_{i+1} a_{i+1}, split
-// into two triangles each. The vertex buffer is the segment array itself (a_i at vertex 2i,
-// b_i at 2i + 1); facet normals come from screen-space derivatives, so the facets of the
-// discrete model show honestly. Front and back faces get different colours.
+// Shaded triangle meshes: a discrete ruled surface as a strip (the quads a_i b_i b_{i+1}
+// a_{i+1}; the vertex buffer is the segment array itself, a_i at vertex 2i, b_i at 2i + 1)
+// and a grid of points as a surface (a director surface of a congruence). Facet normals come
+// from screen-space derivatives, so the facets of a discrete model show honestly; front and
+// back faces get different colours.
 import { cachedProgram } from './program.js';
 import { createBuffer, floatAttribute } from './buffers.js';
 
@@ -44,20 +45,36 @@ export function stripIndices(rulings, closed = false) {
   return idx;
 }
 
-export class StripMesh {
+/** Triangle indices of a rows × cols grid of points (row-major), two triangles per quad. */
+export function gridIndices(rows, cols) {
+  const idx = new Uint32Array(6 * (rows - 1) * (cols - 1));
+  let m = 0;
+  for (let i = 0; i + 1 < rows; i++) {
+    for (let j = 0; j + 1 < cols; j++) {
+      const a = i * cols + j, b = a + 1, c = a + cols, d = c + 1;
+      idx.set([a, c, d, a, d, b], m);
+      m += 6;
+    }
+  }
+  return idx;
+}
+
+/** An indexed triangle mesh with one front and one back colour. */
+export class TriangleMesh {
   /**
    * @param {WebGL2RenderingContext} gl
-   * @param {Float32Array} segments 6 floats per ruling
-   * @param {{front: number[], back: number[], closed?: boolean}} style
+   * @param {Float32Array} positions 3 floats per vertex
+   * @param {Uint32Array} indices 3 per triangle
+   * @param {{front: number[], back: number[]}} style
    */
-  constructor(gl, segments, style) {
+  constructor(gl, positions, indices, style) {
     this.style = style;
-    const indices = stripIndices(segments.length / 6, style.closed);
+    this.transparent = style.front[3] < 1;
     this.count = indices.length;
     this.program = cachedProgram(gl, 'strip', VS, FS, ['viewProj', 'eye', 'front', 'back']);
     this.vao = gl.createVertexArray();
     gl.bindVertexArray(this.vao);
-    this.vbo = createBuffer(gl, segments);
+    this.vbo = createBuffer(gl, positions);
     floatAttribute(gl, 0, this.vbo, 3);
     this.ibo = createBuffer(gl, indices, gl.ELEMENT_ARRAY_BUFFER);
     gl.bindVertexArray(null);
@@ -81,4 +98,9 @@ export class StripMesh {
     gl.deleteBuffer(this.ibo);
     gl.deleteVertexArray(this.vao);
   }
+}
+
+/** A ruled strip from its segments (6 floats per ruling). */
+export function stripMesh(gl, segments, style) {
+  return new TriangleMesh(gl, segments, stripIndices(segments.length / 6, style.closed), style);
 }
