@@ -110,6 +110,16 @@ impl Options {
         self.get(key).is_some()
     }
 
+    /// Rejects `key` when given for a scheme other than `scheme` (a likely mistake that would
+    /// otherwise be silently ignored).
+    pub fn only_for(&self, key: &str, scheme: &str, chosen: Option<&str>) -> Result<(), JsError> {
+        if self.has(key) && chosen != Some(scheme) {
+            let chosen = chosen.map(|c| format!(", not to {c:?}")).unwrap_or_default();
+            return Err(fail(self.func, format!("options.{key} applies to the \"{scheme}\" scheme only{chosen}")));
+        }
+        Ok(())
+    }
+
     /// A boolean, if given.
     pub fn boolean(&self, key: &str) -> Result<Option<bool>, JsError> {
         match self.get(key) {

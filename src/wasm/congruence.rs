@@ -104,16 +104,9 @@ impl LineCongruence {
         const F: &str = "LineCongruence.subdivide";
         let o = Options::new(F, options, &["scheme", "w", "diagonalOnly", "K", "variant", "steps"])?;
         let scheme = o.string("scheme")?;
-        let only = |key: &str, s: &str| -> Result<(), JsError> {
-            if o.has(key) && scheme.as_deref() != Some(s) {
-                return Err(fail(F, format!("options.{key} applies to the \"{s}\" scheme only")));
-            }
-            Ok(())
-        };
-        only("w", "butterfly")?;
-        only("diagonalOnly", "butterfly")?;
-        only("K", "variational")?;
-        only("variant", "variational")?;
+        for (key, s) in [("w", "butterfly"), ("diagonalOnly", "butterfly"), ("K", "variational"), ("variant", "variational")] {
+            o.only_for(key, s, scheme.as_deref())?;
+        }
         let steps = o.integer("steps", 0, 12)?.unwrap_or(1);
         let scheme = match scheme.as_deref() {
             Some("butterfly") => {

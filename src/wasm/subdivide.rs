@@ -45,16 +45,9 @@ fn read(func: &'static str, options: JsValue) -> Result<(Scheme, bool, usize), J
     let Some(name) = o.string("scheme")? else {
         return Err(fail(func, "options.scheme is required: \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""));
     };
-    let only = |key: &str, scheme: &str| -> Result<(), JsError> {
-        if o.has(key) && name != scheme {
-            return Err(fail(func, format!("options.{key} applies to the \"{scheme}\" scheme only, not to \"{name}\"")));
-        }
-        Ok(())
-    };
-    only("w", "four-point")?;
-    only("n", "variational")?;
-    only("variant", "variational")?;
-    only("degree", "bspline")?;
+    for (key, scheme) in [("w", "four-point"), ("n", "variational"), ("variant", "variational"), ("degree", "bspline")] {
+        o.only_for(key, scheme, Some(&name))?;
+    }
     let scheme = match name.as_str() {
         "chaikin" => Scheme::Chaikin,
         "bspline" => Scheme::BSpline { degree: o.integer("degree", 1, subdivision::bspline::MAX_DEGREE)?.unwrap_or(3) },

@@ -1,7 +1,7 @@
 // Section 3 through the package: bending, hinges, conoidal model, development.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import ruledlab from './load.mjs';
+import ruledlab, { sampled } from './load.mjs';
 
 const { RuledSurface, AnalyticSurface } = ruledlab;
 const near = (a, b, tol = 1e-12) => Math.abs(a - b) <= tol * Math.max(1, Math.abs(a), Math.abs(b));
@@ -12,12 +12,7 @@ function polygon(segments, t) {
   return p.slice(1).map((q, i) => Math.hypot(q[0] - p[i][0], q[1] - p[i][1], q[2] - p[i][2]));
 }
 
-function quartic(n = 30) {
-  const q = AnalyticSurface.byName('quartic');
-  const s = q.sample(n);
-  q.free();
-  return s;
-}
+const quartic = (n = 30) => sampled('quartic', n);
 
 test('bend(0) is the input, bend(1) the conoidal model, and every bend is isometric', () => {
   const s = quartic();

@@ -5,3 +5,11 @@ import * as ruledlab from '../../pkg/ruledlab.js';
 ruledlab.initSync({ module: readFileSync(new URL('../../pkg/ruledlab_bg.wasm', import.meta.url)) });
 
 export default ruledlab;
+
+/** `n` rulings of a named analytic surface (default ranges), the surface object freed. */
+export function sampled(name, n, options) {
+  const analytic = ruledlab.AnalyticSurface.byName(name);
+  const surface = analytic.sample(n, options);
+  analytic.free();
+  return surface;
+}

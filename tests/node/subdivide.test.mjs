@@ -1,16 +1,11 @@
 // Section 4 through the package: subdivide, recut, subdividePolygon, and their errors.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import ruledlab from './load.mjs';
+import ruledlab, { sampled } from './load.mjs';
 
 const { AnalyticSurface, subdividePolygon } = ruledlab;
 
-function quartic(n = 12) {
-  const q = AnalyticSurface.byName('quartic');
-  const s = q.sample(n);
-  q.free();
-  return s;
-}
+const quartic = (n = 12) => sampled('quartic', n);
 
 test('interpolatory schemes: 2N − 1 rulings per step, old rulings bit for bit at even indices', () => {
   const s = quartic();
