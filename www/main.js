@@ -3,13 +3,15 @@
 import init from '../pkg/ruledlab.js';
 import { Viewer } from './viewer.js';
 import { COLORS, css } from './theme.js';
+import { scene as notation } from './scenes/notation.js';
 import { scene as striction } from './scenes/striction.js';
+import { scene as convergence } from './scenes/convergence.js';
 import { scene as isometry } from './scenes/isometry.js';
 import { scene as curves } from './scenes/curves.js';
 import { scene as strip } from './scenes/strip.js';
 import { scene as congruence } from './scenes/congruence.js';
 
-const SCENES = [striction, isometry, curves, strip, congruence];
+const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence];
 
 const $ = (id) => document.getElementById(id);
 
@@ -106,7 +108,7 @@ function showLegend(scene, params) {
 }
 
 function showReadout(readout, extraLabels = {}) {
-  const fmt = (x) => (typeof x !== 'number' ? x : Number.isInteger(x) ? String(x) : x.toExponential(2));
+  const fmt = (x) => (typeof x !== 'number' ? x : Number.isInteger(x) ? String(x) : Math.abs(x) >= 0.1 && Math.abs(x) < 1000 ? x.toFixed(3) : x.toExponential(2));
   const labels = {
     rulings: 'rulings N',
     parallelPairs: 'parallel pairs',
@@ -152,6 +154,8 @@ async function main() {
       viewer.setScene(built, { fit });
       if (view) applyView(viewer.camera, view);
       showReadout(built.readout, built.readoutLabels);
+      $('figure').innerHTML = built.figure ?? '';
+      $('figure').hidden = !built.figure;
       showLegend(state.scene, state.params);
       showError(null);
     } catch (e) {

@@ -21,6 +21,10 @@ export class Viewer {
     this.frames = 0;
     this.pending = false;
     this.onFrame = null;
+    // HTML labels anchored to 3D points (scene.labels: [{ at: [x, y, z], html }])
+    this.labelLayer = document.createElement('div');
+    this.labelLayer.className = 'labels';
+    canvas.after(this.labelLayer);
     const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: false });
     if (!gl) throw new Error('This page needs WebGL2, which this browser does not provide.');
     this.gl = gl;
@@ -54,6 +58,9 @@ export class Viewer {
   }
 
   rebuild() {
+    this.labelLayer.replaceChildren(
+      ...(this.scene?.labels ?? []).map(({ html }) => Object.assign(document.createElement('span'), { className: 'label', innerHTML: html })),
+    );
     const gl = this.gl;
     this.layers.forEach((l) => l.dispose(gl));
     this.layers = this.scene && !this.lost ? this.scene.build(gl) : [];
@@ -91,7 +98,24 @@ export class Viewer {
       for (const layer of this.layers) if (!!layer.transparent === transparent) layer.draw(gl, frame);
     }
     gl.depthMask(true);
+    this.placeLabels(frame.viewProj);
     this.frames++;
     this.onFrame?.(this.frames);
+  }
+
+  /** Moves each label to the screen position of its anchor (hidden behind the camera). */
+  placeLabels(viewProj) {
+    const labels = this.scene?.labels ?? [];
+    const { clientWidth: w, clientHeight: h } = this.canvas;
+    labels.forEach(({ at }, k) => {
+      const el = this.labelLayer.children[k];
+      if (!el) return;
+      const [x, y, z] = at;
+      const cx = viewProj[0] * x + viewProj[4] * y + viewProj[8] * z + viewProj[12];
+      const cy = viewProj[1] * x + viewProj[5] * y + viewProj[9] * z + viewProj[13];
+      const cw = viewProj[3] * x + viewProj[7] * y + viewProj[11] * z + viewProj[15];
+      el.hidden = cw <= 0;
+      el.style.transform = `translate(${((cx / cw + 1) / 2) * w}px, ${((1 - cy / cw) / 2) * h}px)`;
+    });
   }
 }

@@ -79,6 +79,26 @@ test('every scene, and every choice of each of its menus, draws without errors',
     await page.goto(`${url}#scene=${id}`);
     await page.reload();
     await framesAfter(page, 0);
+    const start = await shoot(page, `${id}-default`);
+    assert.ok(countDifferent(start, BACKGROUND) > 0.005 * start.width * start.height, `${id} drew nothing`);
+    // its first slider changes the picture
+    const slider = await page.evaluate(() => {
+      const r = document.querySelector('#controls input[type=range]');
+      if (!r) return null;
+      const value = Number(r.value) === Number(r.min) ? r.max : r.min;
+      return { id: r.id, value, initial: r.value };
+    });
+    if (slider) {
+      const move = async (value) => {
+        const frames = await page.evaluate(() => Number(document.body.dataset.frames));
+        await page.locator(`#${slider.id}`).fill(String(value));
+        await framesAfter(page, frames);
+      };
+      await move(slider.value);
+      const moved = await shoot(page, `${id}-${slider.id.replace('param-', '')}-${slider.value}`);
+      assert.ok(countChanged(start, moved) > 500, `${id}: moving ${slider.id} did not change the picture`);
+      await move(slider.initial);
+    }
     const menus = await page.evaluate(() =>
       [...document.querySelectorAll('#controls select')].map((s) => ({ id: s.id, values: [...s.options].map((o) => o.value) })),
     );
@@ -115,5 +135,26 @@ test('isometry scene: the bending slider bends, the readout shows an isometry, a
   await page.locator('#param-play').uncheck();
   await framesAfter(page, f1);
   assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the viewer survives a WebGL context loss and draws again after the restore', async () => {
+  const { page, problems, frames } = await open('#scene=strip');
+  const before = await shoot(page, 'context-before');
+  await page.evaluate(() => {
+    window.loseContext = document.getElementById('view').getContext('webgl2').getExtension('WEBGL_lose_context');
+    window.loseContext.loseContext();
+  });
+  await page.waitForFunction(() => document.getElementById('view').getContext('webgl2').isContextLost());
+  await page.evaluate(() => window.loseContext.restoreContext());
+  await framesAfter(page, frames);
+  const after = await shoot(page, 'context-after');
+  assert.ok(countDifferent(after, BACKGROUND) > 0.02 * after.width * after.height, 'nothing drawn after the restore');
+  assert.ok(countChanged(before, after) < 0.01 * after.width * after.height, 'the restored picture differs');
+  // and the page still reacts
+  const f = await page.evaluate(() => Number(document.body.dataset.frames));
+  await page.locator('#param-n').fill('5');
+  await framesAfter(page, f);
+  assert.deepEqual(problems.filter((p) => !/CONTEXT_LOST/.test(p)), []);
   await page.close();
 });
