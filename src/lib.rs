@@ -27,6 +27,7 @@ pub mod error;
 pub mod examples;
 pub mod line;
 pub mod linalg;
+pub mod milling;
 pub mod ruled;
 pub mod subdivision;
 pub mod tolerance;

@@ -93,3 +93,37 @@ export function maxRelativeEdgeChange(p, q, stride = 3, start = 0) {
   }
   return worst;
 }
+
+/**
+ * A tube of `radius` about a polyline (flat xyz): rings of `sides` vertices carried along by
+ * projecting the previous ring's frame (rotation-minimising), as positions and indices.
+ */
+export function tube(points, radius, sides = 14) {
+  const n = points.length / 3;
+  const positions = new Float32Array(3 * n * sides);
+  const indices = new Uint32Array(6 * (n - 1) * sides);
+  const p = (i) => [points[3 * i], points[3 * i + 1], points[3 * i + 2]];
+  const sub3 = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+  const norm = (a) => { const l = Math.hypot(...a) || 1; return a.map((x) => x / l); };
+  const crossp = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  let normal = null;
+  for (let i = 0; i < n; i++) {
+    const t = norm(sub3(p(Math.min(i + 1, n - 1)), p(Math.max(i - 1, 0))));
+    if (!normal) normal = norm(Math.abs(t[2]) < 0.9 ? crossp(t, [0, 0, 1]) : crossp(t, [1, 0, 0]));
+    const d = normal[0] * t[0] + normal[1] * t[1] + normal[2] * t[2];
+    normal = norm([normal[0] - d * t[0], normal[1] - d * t[1], normal[2] - d * t[2]]);
+    const binormal = crossp(t, normal);
+    for (let k = 0; k < sides; k++) {
+      const a = (2 * Math.PI * k) / sides;
+      for (let c = 0; c < 3; c++) positions[3 * (i * sides + k) + c] = points[3 * i + c] + radius * (Math.cos(a) * normal[c] + Math.sin(a) * binormal[c]);
+    }
+  }
+  for (let i = 0, m = 0; i + 1 < n; i++) {
+    for (let k = 0; k < sides; k++) {
+      const a = i * sides + k, b = i * sides + ((k + 1) % sides), c = a + sides, d = b + sides;
+      indices.set([a, c, d, a, d, b], m);
+      m += 6;
+    }
+  }
+  return { positions, indices };
+}

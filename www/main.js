@@ -10,8 +10,9 @@ import { scene as isometry } from './scenes/isometry.js';
 import { scene as curves } from './scenes/curves.js';
 import { scene as strip } from './scenes/strip.js';
 import { scene as congruence } from './scenes/congruence.js';
+import { scene as milling } from './scenes/milling.js';
 
-const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence];
+const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling];
 
 const $ = (id) => document.getElementById(id);
 
@@ -129,6 +130,21 @@ function showReadout(readout, extraLabels = {}) {
   );
 }
 
+/** Buttons that download text the scene made (exports). */
+function showActions(actions) {
+  $('actions').replaceChildren(
+    ...actions.map(({ label, filename, content, type }) => {
+      const button = Object.assign(document.createElement('button'), { type: 'button', textContent: label });
+      button.addEventListener('click', () => {
+        const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(new Blob([content], { type })), download: filename });
+        a.click();
+        setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+      });
+      return button;
+    }),
+  );
+}
+
 function showError(e) {
   const box = $('error');
   box.hidden = !e;
@@ -156,6 +172,7 @@ async function main() {
       showReadout(built.readout, built.readoutLabels);
       $('figure').innerHTML = built.figure ?? '';
       $('figure').hidden = !built.figure;
+      showActions(built.actions ?? []);
       showLegend(state.scene, state.params);
       showError(null);
     } catch (e) {
@@ -195,6 +212,11 @@ async function main() {
   picker.addEventListener('change', () => enter(readHash(`scene=${picker.value}`)));
   window.addEventListener('hashchange', () => enter(readHash()));
   viewer.onCameraChange = saveHash;
+  $('fit').addEventListener('click', () => {
+    viewer.camera.reset();
+    viewer.requestRender();
+    saveHash();
+  });
   enter(initial);
   window.ruledlab = { viewer, state, scenes: SCENES };
   viewer.onFrame = (n) => {

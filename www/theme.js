@@ -7,6 +7,7 @@ export const COLORS = {
   exact: [0.98, 0.72, 0.16, 0.9],
   ghost: [0.45, 0.48, 0.55, 0.35],
   inserted: [0.85, 0.35, 0.2, 0.6],
+  insertedAxis: [0.42, 0.58, 0.85, 1],
   sphereLight: [0.82, 0.84, 0.88, 1],
   sphereDark: [0.3, 0.32, 0.38, 1],
   mesh: [0.35, 0.4, 0.5, 0.45],

@@ -9,10 +9,12 @@ mod args;
 mod congruence;
 mod subdivide;
 mod surface;
+mod toolpath;
 
 pub use congruence::{AnalyticCongruence, LineCongruence};
 pub use subdivide::subdivide_polygon;
 pub use surface::{AnalyticSurface, RuledSurface};
+pub use toolpath::ToolPath;
 
 use wasm_bindgen::prelude::*;
 

@@ -39,10 +39,11 @@ export interface SubdivideOptions {
 
 const KNOWN: [&str; 7] = ["scheme", "steps", "w", "n", "variant", "degree", "closed"];
 
-/// Reads `options` into a scheme, `closed` and `steps`.
-fn read(func: &'static str, options: JsValue) -> Result<(Scheme, bool, usize), JsError> {
+/// Reads `options` into a scheme, `closed` and `steps`; `default_scheme` stands in when
+/// `options.scheme` is absent (otherwise it is required).
+pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<&str>) -> Result<(Scheme, bool, usize), JsError> {
     let o = Options::new(func, options, &KNOWN)?;
-    let Some(name) = o.string("scheme")? else {
+    let Some(name) = o.string("scheme")?.or(default_scheme.map(String::from)) else {
         return Err(fail(func, "options.scheme is required: \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""));
     };
     for (key, scheme) in [("w", "four-point"), ("n", "variational"), ("variant", "variational"), ("degree", "bspline")] {
@@ -87,7 +88,7 @@ impl RuledSurface {
         #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
     ) -> Result<RuledSurface, JsError> {
         const F: &str = "RuledSurface.subdivide";
-        let (scheme, closed, steps) = read(F, options)?;
+        let (scheme, closed, steps) = read(F, options, None)?;
         subdivision::subdivide_strip(self.core(), scheme, closed, steps)
             .map(RuledSurface::from_core)
             .map_err(|e| fail(F, e))
@@ -110,7 +111,7 @@ pub fn subdivide_polygon(
     const F: &str = "subdividePolygon";
     let flat = float64_array(F, "points", &points)?;
     let points = points_from_flat(&flat).map_err(|e| fail(F, e))?;
-    let (scheme, closed, steps) = read(F, options)?;
+    let (scheme, closed, steps) = read(F, options, None)?;
     let out = subdivision::subdivide_polygon(&points, scheme, closed, steps).map_err(|e| fail(F, e))?;
     Ok(Float64Array::from(bytemuck::cast_slice::<_, f64>(&out)))
 }

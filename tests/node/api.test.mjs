@@ -131,6 +131,7 @@ test('the TypeScript declarations type the results', () => {
   assert.match(dts, /invariants\(\): Invariants;/);
   assert.match(dts, /static fromSegments\(coords: Float64Array\): RuledSurface;/);
   assert.match(dts, /convergence\(opts\?: ConvergenceOptions \| undefined\): ConvergenceStudy;|convergence\(opts: ConvergenceOptions \| undefined\): ConvergenceStudy;/);
-  // the public API (before wasm-bindgen's internal InitOutput table) has no `any`
-  assert.doesNotMatch(dts.slice(0, dts.indexOf('export type InitInput')), /\bany\b/);
+  // the public API (before wasm-bindgen's internal InitOutput table) has no `any` type
+  const api = dts.slice(0, dts.indexOf('export type InitInput'));
+  assert.doesNotMatch(api, /[:<,|(]\s*any\b|\bany\[\]/);
 });

@@ -158,3 +158,16 @@ test('the viewer survives a WebGL context loss and draws again after the restore
   assert.deepEqual(problems.filter((p) => !/CONTEXT_LOST/.test(p)), []);
   await page.close();
 });
+
+test('milling scene: the G-code download is G-code for the path shown', async () => {
+  const { page, problems } = await open('#scene=milling&steps=2');
+  const [download] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code' }).click()]);
+  assert.equal(download.suggestedFilename(), 'toolpath.nc');
+  const chunks = [];
+  for await (const chunk of await download.createReadStream()) chunks.push(chunk);
+  const text = Buffer.concat(chunks).toString('utf8');
+  assert.match(text, /^\(ruledlab tool path, 25 poses\)/);
+  assert.equal(text.split('\n').filter((l) => l.startsWith('G1 ')).length, 25);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

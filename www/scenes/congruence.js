@@ -22,6 +22,7 @@ export const scene = {
     { key: 'scheme', label: 'Scheme', type: 'select', value: 'butterfly', options: () => SCHEMES },
     { key: 'steps', label: 'Steps', type: 'range', min: 1, max: 3, step: 1, value: 1 },
     { key: 'director', label: 'Director surface d₁', type: 'checkbox', value: true },
+    { key: 'second', label: 'Director surface d₂ (Fig. 11)', type: 'checkbox', value: false },
   ],
   text: `
 <h2>Refining a congruence of lines</h2>
@@ -71,8 +72,12 @@ is the most accurate of all on these examples.</p>`,
     // director surface d₁ from the densest grid we have
     const dense = p.scheme === 'diagonal' ? grid : refined;
     const d1 = new Float32Array(3 * dense.rows * dense.cols);
+    const d2 = new Float32Array(3 * dense.rows * dense.cols);
     const seg = dense === grid ? original : all;
-    for (let k = 0; k < dense.rows * dense.cols; k++) d1.set(seg.subarray(6 * k, 6 * k + 3), 3 * k);
+    for (let k = 0; k < dense.rows * dense.cols; k++) {
+      d1.set(seg.subarray(6 * k, 6 * k + 3), 3 * k);
+      d2.set(seg.subarray(6 * k + 3, 6 * k + 6), 3 * k);
+    }
     const indices = gridIndices(dense.rows, dense.cols);
     const feet = new Float32Array(3 * (inserted.length / 6));
     for (let k = 0; k < feet.length / 3; k++) feet.set(inserted.subarray(6 * k, 6 * k + 3), 3 * k);
@@ -89,6 +94,7 @@ is the most accurate of all on these examples.</p>`,
           new PointBatch(gl, feet, { color: COLORS.striction, size: 4 }),
         ];
         if (p.director) layers.push(new TriangleMesh(gl, d1, indices, { front: [0.55, 0.7, 0.88, 0.55], back: [0.96, 0.8, 0.6, 0.55] }));
+        if (p.second) layers.push(new TriangleMesh(gl, d2, indices, { front: [0.7, 0.85, 0.7, 0.4], back: [0.85, 0.8, 0.7, 0.4] }));
         return layers;
       },
     };

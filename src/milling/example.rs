@@ -1,0 +1,58 @@
+//! The built-in tool path of Figs. 16–18: a ball-end tool following a profile curve γ on a
+//! curved part surface, its axis tilted forward from the surface normal.
+//!
+//! Part surface z = f(x, y) = 0.3 sin x cos 0.7y; profile γ(s) = (s, 1.5 sin 0.6s, f); surface
+//! normal ν(s); tool axis a(s) = (ν + 0.35 T)/|ν + 0.35 T| with T the unit tangent of γ (a lead
+//! of about 19°); ball centre C(s) = γ(s) + r ν(s), so the ball touches the surface at γ(s);
+//! tip = C − r a. Units: millimetres scaled down (1 unit = 10 mm in the export examples).
+
+use crate::error::Result;
+use crate::milling::{Pose, Tool, ToolEnd, ToolPath};
+use glam::DVec3;
+
+/// The exact path at parameter s: (profile point γ(s), ball centre, pose).
+pub fn exact(s: f64, radius: f64) -> (DVec3, DVec3, Pose) {
+    let f = |x: f64, y: f64| 0.3 * x.sin() * (0.7 * y).cos();
+    let (x, y) = (s, 1.5 * (0.6 * s).sin());
+    let gamma = DVec3::new(x, y, f(x, y));
+    let (fx, fy) = (0.3 * x.cos() * (0.7 * y).cos(), -0.21 * x.sin() * (0.7 * y).sin());
+    let normal = DVec3::new(-fx, -fy, 1.0).normalize();
+    let dy = 0.9 * (0.6 * s).cos();
+    let tangent = DVec3::new(1.0, dy, fx + fy * dy).normalize();
+    let axis = (normal + 0.35 * tangent).normalize();
+    let centre = gamma + radius * normal;
+    (gamma, centre, Pose { tip: centre - radius * axis, axis })
+}
+
+/// Parameter range of the profile.
+pub const RANGE: (f64, f64) = (0.0, 6.0);
+
+/// The example with `count` given poses (Fig. 16 uses 7), tool radius 0.25, length 1.5.
+pub fn example(count: usize) -> Result<ToolPath> {
+    let tool = Tool::new(0.25, 1.5, ToolEnd::Ball)?;
+    let count = count.max(2);
+    let poses = (0..count)
+        .map(|i| exact(RANGE.0 + (RANGE.1 - RANGE.0) * i as f64 / (count - 1) as f64, tool.radius).2)
+        .collect();
+    Ok(ToolPath { poses, tool })
+}
+
+/// The target profile sampled at `count` points.
+pub fn profile(count: usize) -> Vec<DVec3> {
+    (0..count).map(|i| exact(RANGE.0 + (RANGE.1 - RANGE.0) * i as f64 / (count.max(2) - 1) as f64, 0.25).0).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ball_touches_the_profile() {
+        for s in [0.3, 2.0, 4.7] {
+            let (g, c, pose) = exact(s, 0.25);
+            assert!(((c - g).length() - 0.25).abs() < 1e-15);
+            assert!((pose.axis.length() - 1.0).abs() < 1e-15);
+            assert!(((pose.tip + 0.25 * pose.axis) - c).length() < 1e-15);
+        }
+    }
+}

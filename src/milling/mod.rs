@@ -1,0 +1,104 @@
+//! Example 6 (Section 4, Figs. 16–18): refining a few 5-axis tool positions into a smooth,
+//! dense tool path.
+//!
+//! A tool pose is a segment from the tool tip along the tool axis; a sequence of poses is a
+//! discrete ruled surface (the axis surface), refined by the strip schemes of Section 4
+//! (variational by default). The tool is a cylinder of radius r and length L, flat-ended or
+//! ball-ended; for a ball end the ball centre is tip + r·axis and the surface it leaves is the
+//! envelope of the moving ball, a tube of radius r about the centre curve.
+
+pub mod example;
+pub mod export;
+pub mod quality;
+
+use crate::error::{Error, Result};
+use crate::line::Segment;
+use crate::ruled::RuledSurface;
+use crate::subdivision::{subdivide_strip, Scheme};
+use glam::DVec3;
+
+/// The end of the tool.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ToolEnd {
+    /// A flat end: the tip is the centre of the bottom disk.
+    Flat,
+    /// A ball end of the tool's radius: the tip is the lowest point of the ball.
+    Ball,
+}
+
+/// A cylindrical milling tool.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tool {
+    /// Radius r > 0.
+    pub radius: f64,
+    /// Length L > 0 (from the tip along the axis).
+    pub length: f64,
+    /// Flat or ball end.
+    pub end: ToolEnd,
+}
+
+impl Tool {
+    /// A validated tool.
+    pub fn new(radius: f64, length: f64, end: ToolEnd) -> Result<Self> {
+        if !(radius.is_finite() && radius > 0.0) {
+            return Err(Error::parameter("radius", format!("the tool radius must be a positive number, got {radius}")));
+        }
+        if !(length.is_finite() && length > 0.0) {
+            return Err(Error::parameter("length", format!("the tool length must be a positive number, got {length}")));
+        }
+        Ok(Tool { radius, length, end })
+    }
+}
+
+/// One tool pose: the tip and the unit axis (pointing from the tip into the spindle).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pose {
+    /// Tool tip.
+    pub tip: DVec3,
+    /// Unit tool axis.
+    pub axis: DVec3,
+}
+
+/// A tool path: poses in order and the tool that follows them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ToolPath {
+    /// The poses.
+    pub poses: Vec<Pose>,
+    /// The tool.
+    pub tool: Tool,
+}
+
+impl ToolPath {
+    /// From axis segments tip → point on the axis (validated like a ruled surface: at least
+    /// two poses, finite, no zero-length axis).
+    pub fn from_surface(axes: &RuledSurface, tool: Tool) -> Self {
+        let poses = axes.segments().map(|s| Pose { tip: s.a, axis: s.line().dir }).collect();
+        ToolPath { poses, tool }
+    }
+
+    /// The axis surface: segments from each tip along the axis, of the tool's length.
+    pub fn axis_surface(&self) -> Result<RuledSurface> {
+        RuledSurface::new(self.poses.iter().map(|p| Segment::new(p.tip, p.tip + self.tool.length * p.axis)).collect())
+    }
+
+    /// The path refined by `steps` steps of a strip scheme applied to the axis surface.
+    pub fn refine(&self, scheme: Scheme, steps: usize) -> Result<ToolPath> {
+        let refined = subdivide_strip(&self.axis_surface()?, scheme, false, steps)?;
+        Ok(ToolPath::from_surface(&refined, self.tool))
+    }
+
+    /// The tool's barycentre curve (Fig. 16): the centre of the cylinder, tip + (L/2)·axis.
+    pub fn barycentres(&self) -> Vec<DVec3> {
+        self.poses.iter().map(|p| p.tip + 0.5 * self.tool.length * p.axis).collect()
+    }
+
+    /// The points whose offset by r is the machined surface: ball centres tip + r·axis for a
+    /// ball end; for a flat end the tip itself (the centre of the cutting disk).
+    pub fn cutting_centres(&self) -> Vec<DVec3> {
+        let r = match self.tool.end {
+            ToolEnd::Ball => self.tool.radius,
+            ToolEnd::Flat => 0.0,
+        };
+        self.poses.iter().map(|p| p.tip + r * p.axis).collect()
+    }
+}
