@@ -11,8 +11,9 @@ import { scene as curves } from './scenes/curves.js';
 import { scene as strip } from './scenes/strip.js';
 import { scene as congruence } from './scenes/congruence.js';
 import { scene as milling } from './scenes/milling.js';
+import { scene as lines } from './scenes/lines.js';
 
-const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling];
+const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling, lines];
 
 const $ = (id) => document.getElementById(id);
 

@@ -8,6 +8,8 @@ export const COLORS = {
   ghost: [0.45, 0.48, 0.55, 0.35],
   inserted: [0.85, 0.35, 0.2, 0.6],
   insertedAxis: [0.42, 0.58, 0.85, 1],
+  endpointScheme: [0.9, 0.45, 0.15, 1],
+  lineScheme: [0.15, 0.38, 0.75, 1],
   sphereLight: [0.82, 0.84, 0.88, 1],
   sphereDark: [0.3, 0.32, 0.38, 1],
   mesh: [0.35, 0.4, 0.5, 0.45],

@@ -12,6 +12,7 @@ pub mod accuracy;
 pub mod bspline;
 pub mod chaikin;
 pub mod four_point;
+pub mod line_space;
 pub mod strip;
 pub mod variational;
 

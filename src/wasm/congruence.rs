@@ -28,6 +28,14 @@ export interface CongruenceSubdivideOptions {
   variant?: "two-stage" | "coupled";
   /** Steps, 0 … 12 (default 1); the result may hold at most 4 194 304 lines. */
   steps?: number;
+  /**
+   * Butterfly only. "points" (default): on the points p, q. "lines": on the lines themselves
+   * (dual unit vectors): independent of where p and q sit on their lines; each new line is cut
+   * to `length` centred on the mean of its footpoints with its grid neighbours.
+   */
+  space?: "points" | "lines";
+  /** With space "lines": length of the output segments (default: mean input length). */
+  length?: number;
 }
 
 /** Errors of a refined congruence against the exact one, over its new lines. */
@@ -102,15 +110,28 @@ impl LineCongruence {
         #[wasm_bindgen(unchecked_param_type = "CongruenceSubdivideOptions")] options: JsValue,
     ) -> Result<LineCongruence, JsError> {
         const F: &str = "LineCongruence.subdivide";
-        let o = Options::new(F, options, &["scheme", "w", "diagonalOnly", "K", "variant", "steps"])?;
+        let o = Options::new(F, options, &["scheme", "w", "diagonalOnly", "K", "variant", "steps", "space", "length"])?;
         let scheme = o.string("scheme")?;
-        for (key, s) in [("w", "butterfly"), ("diagonalOnly", "butterfly"), ("K", "variational"), ("variant", "variational")] {
+        for (key, s) in [("w", "butterfly"), ("diagonalOnly", "butterfly"), ("K", "variational"), ("variant", "variational"), ("space", "butterfly"), ("length", "butterfly")] {
             o.only_for(key, s, scheme.as_deref())?;
         }
         let steps = o.integer("steps", 0, 12)?.unwrap_or(1);
         let scheme = match scheme.as_deref() {
             Some("butterfly") => {
                 let w = o.number("w")?.unwrap_or(1.0 / 16.0);
+                match o.string("space")?.as_deref() {
+                    None | Some("points") => {
+                        if o.has("length") {
+                            return Err(fail(F, "options.length applies to space \"lines\" only"));
+                        }
+                    }
+                    Some("lines") => {
+                        return crate::subdivision::line_space::butterfly_lines(&self.inner, w, steps, o.number("length")?)
+                            .map(|inner| LineCongruence { inner })
+                            .map_err(|e| fail(F, e));
+                    }
+                    Some(other) => return Err(fail(F, format!("options.space must be \"points\" or \"lines\", got {other:?}"))),
+                }
                 if o.boolean("diagonalOnly")?.unwrap_or(false) {
                     if steps != 1 {
                         return Err(fail(F, "options.diagonalOnly gives the lines of one step: leave steps at 1"));

@@ -34,15 +34,39 @@ export interface SubdivideOptions {
   degree?: number;
   /** Closed polygon / strip (default false); not for "bezier" and "variational". */
   closed?: boolean;
+  /**
+   * Strips only. "points" (default): the scheme acts on the endpoints a_i, b_i. "lines": it acts
+   * on the lines themselves (dual unit vectors), so the result depends only on the input lines
+   * and commutes with rigid motions; for "chaikin", "bspline", "four-point".
+   */
+  space?: "points" | "lines";
+  /** With space "lines": length of the output segments, cut symmetric to the striction points (default: mean input length). */
+  length?: number;
 }
 "#;
 
-const KNOWN: [&str; 7] = ["scheme", "steps", "w", "n", "variant", "degree", "closed"];
+const KNOWN: [&str; 9] = ["scheme", "steps", "w", "n", "variant", "degree", "closed", "space", "length"];
 
-/// Reads `options` into a scheme, `closed` and `steps`; `default_scheme` stands in when
-/// `options.scheme` is absent (otherwise it is required).
-pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<&str>) -> Result<(Scheme, bool, usize), JsError> {
+/// Where a strip scheme acts: on the endpoints, or on the lines (with the output length).
+pub(crate) enum Space {
+    Points,
+    Lines(Option<f64>),
+}
+
+/// Reads `options` into a scheme, `closed`, `steps` and the space the scheme acts in;
+/// `default_scheme` stands in when `options.scheme` is absent (otherwise it is required).
+pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<&str>) -> Result<(Scheme, bool, usize, Space), JsError> {
     let o = Options::new(func, options, &KNOWN)?;
+    let space = match o.string("space")?.as_deref() {
+        None | Some("points") => {
+            if o.has("length") {
+                return Err(fail(func, "options.length applies to space \"lines\" only"));
+            }
+            Space::Points
+        }
+        Some("lines") => Space::Lines(o.number("length")?),
+        Some(other) => return Err(fail(func, format!("options.space must be \"points\" or \"lines\", got {other:?}"))),
+    };
     let Some(name) = o.string("scheme")?.or(default_scheme.map(String::from)) else {
         return Err(fail(func, "options.scheme is required: \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""));
     };
@@ -75,7 +99,7 @@ pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<
     scheme.validate().map_err(|e| fail(func, e))?;
     let steps = o.integer("steps", 0, MAX_STEPS)?.unwrap_or(1);
     let closed = o.boolean("closed")?.unwrap_or(false);
-    Ok((scheme, closed, steps))
+    Ok((scheme, closed, steps, space))
 }
 
 #[wasm_bindgen]
@@ -88,10 +112,13 @@ impl RuledSurface {
         #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
     ) -> Result<RuledSurface, JsError> {
         const F: &str = "RuledSurface.subdivide";
-        let (scheme, closed, steps) = read(F, options, None)?;
-        subdivision::subdivide_strip(self.core(), scheme, closed, steps)
-            .map(RuledSurface::from_core)
-            .map_err(|e| fail(F, e))
+        let (scheme, closed, steps, space) = read(F, options, None)?;
+        match space {
+            Space::Points => subdivision::subdivide_strip(self.core(), scheme, closed, steps),
+            Space::Lines(length) => subdivision::line_space::subdivide_lines(self.core(), scheme, closed, steps, length),
+        }
+        .map(RuledSurface::from_core)
+        .map_err(|e| fail(F, e))
     }
 
     /// The rulings re-cut to segments of one length (default: the mean length), centred on
@@ -111,7 +138,10 @@ pub fn subdivide_polygon(
     const F: &str = "subdividePolygon";
     let flat = float64_array(F, "points", &points)?;
     let points = points_from_flat(&flat).map_err(|e| fail(F, e))?;
-    let (scheme, closed, steps) = read(F, options, None)?;
+    let (scheme, closed, steps, space) = read(F, options, None)?;
+    if matches!(space, Space::Lines(_)) {
+        return Err(fail(F, "options.space \"lines\" refines ruled surfaces, not polygons"));
+    }
     let out = subdivision::subdivide_polygon(&points, scheme, closed, steps).map_err(|e| fail(F, e))?;
     Ok(Float64Array::from(bytemuck::cast_slice::<_, f64>(&out)))
 }

@@ -106,7 +106,10 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_param_type = "Partial<SubdivideOptions> | undefined")] options: JsValue,
     ) -> Result<ToolPath, JsError> {
         const F: &str = "ToolPath.refine";
-        let (scheme, closed, steps) = super::subdivide::read(F, options, Some("variational"))?;
+        let (scheme, closed, steps, space) = super::subdivide::read(F, options, Some("variational"))?;
+        if !matches!(space, super::subdivide::Space::Points) {
+            return Err(fail(F, "options.space: a tool path is refined through its tips and axes (space \"points\")"));
+        }
         if closed {
             return Err(fail(F, "a tool path is open: options.closed must be false"));
         }

@@ -86,3 +86,37 @@ test('bad options throw clear Errors and the surface stays usable', () => {
   }
   assert.equal(s.subdivide({ scheme: 'four-point' }).length, 11);
 });
+
+test('space "lines": the result does not depend on where the endpoints sit', () => {
+  const s = quartic(9);
+  const seg = s.segments();
+  const slid = seg.slice();
+  for (let i = 0; i < 9; i++) {
+    for (let k = 0; k < 3; k++) {
+      const d = seg[6 * i + 3 + k] - seg[6 * i + k];
+      slid[6 * i + k] += (0.3 * i - 1) * d;
+      slid[6 * i + 3 + k] += 0.2 * i * d;
+    }
+  }
+  const moved = ruledlab.RuledSurface.fromSegments(slid);
+  const a = s.subdivide({ scheme: 'four-point', space: 'lines', length: 1, steps: 2 }).segments();
+  const b = moved.subdivide({ scheme: 'four-point', space: 'lines', length: 1, steps: 2 }).segments();
+  assert.equal(a.length, 6 * 33);
+  a.forEach((x, i) => assert.ok(Math.abs(x - b[i]) < 1e-12, `${i}: ${x} vs ${b[i]}`));
+  // while the endpoint scheme does move
+  const c = s.subdivide({ scheme: 'four-point', steps: 2 }).segments();
+  const d = moved.subdivide({ scheme: 'four-point', steps: 2 }).segments();
+  assert.ok(c.some((x, i) => Math.abs(x - d[i]) > 1e-3));
+  assert.throws(() => s.subdivide({ scheme: 'variational', space: 'lines' }), /line space supports "chaikin", "bspline" and "four-point"/);
+  assert.throws(() => s.subdivide({ scheme: 'four-point', length: 2 }), /options.length applies to space "lines" only/);
+  assert.throws(() => s.subdivide({ scheme: 'four-point', space: 'plane' }), /options.space must be "points" or "lines"/);
+});
+
+test('congruences: butterfly in line space', () => {
+  const c = ruledlab.AnalyticCongruence.byName('sphere').grid(5, 5);
+  const r = c.subdivide({ scheme: 'butterfly', space: 'lines', length: 0.5 });
+  assert.deepEqual([r.rows, r.cols], [9, 9]);
+  const seg = r.segments();
+  for (let k = 0; k < 81; k++) assert.ok(Math.abs(Math.hypot(seg[6 * k + 3] - seg[6 * k], seg[6 * k + 4] - seg[6 * k + 1], seg[6 * k + 5] - seg[6 * k + 2]) - 0.5) < 1e-12);
+  assert.throws(() => c.subdivide({ scheme: 'variational', space: 'lines' }), /options.space applies to the "butterfly" scheme only/);
+});

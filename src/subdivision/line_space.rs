@@ -1,0 +1,184 @@
+//! Subdivision in the space of lines, independent of the chosen endpoints (beyond the paper).
+//!
+//! Every scheme of Section 4 acts on two points per line; slide an endpoint along its line and
+//! the refined surface changes although the lines did not. Here an oriented line with unit
+//! direction e through p is the dual unit vector L = e + ε m, m = p × e (normalised Plücker
+//! coordinates). A linear scheme is applied to the real and the dual parts with the same
+//! weights, and each new dual vector a + ε a₀ is projected back onto the dual unit sphere,
+//!
+//! N(a + ε a₀) = a/|a| + ε (a₀/|a| − a (a·a₀)/|a|³),
+//!
+//! the line with direction a/|a| and moment orthogonal to it. Rigid motions act on dual vectors
+//! by dual orthogonal maps, which commute with the linear step and with N: the scheme commutes
+//! with rigid motions, and its result depends on the input lines only. Segments are recovered
+//! by cutting the refined lines symmetric to their striction points (Section 4's re-cut).
+//!
+//! **Orientation.** A line has two dual unit vectors ±L; before refining, each line's sign is
+//! chosen so that its direction makes an acute angle with its predecessor's (along rows, then
+//! down the first column, for a congruence).
+
+use crate::congruence::{butterfly, LineCongruence};
+use crate::error::{Error, Result};
+use crate::line::{Line, Segment};
+use crate::ruled::{PairInvariants, RuledSurface};
+use crate::subdivision::{check_steps, polygon_step, recut, Scheme};
+use glam::DVec3;
+
+/// An oriented line as a dual unit vector e + ε m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DualLine {
+    /// Unit direction e.
+    pub real: DVec3,
+    /// Moment m = p × e.
+    pub dual: DVec3,
+}
+
+impl DualLine {
+    /// The dual vector of `line`.
+    pub fn of(line: &Line) -> Self {
+        DualLine { real: line.dir, dual: line.point.cross(line.dir) }
+    }
+
+    /// N(a + ε a₀); an error when the real part vanishes (a combination of opposite lines).
+    pub fn normalized(real: DVec3, dual: DVec3) -> Result<Self> {
+        let n = real.length();
+        if !(n > 1e-9) {
+            return Err(Error::parameter("lines", "a refined line has no direction: the weights cancel opposite lines"));
+        }
+        Ok(DualLine { real: real / n, dual: dual / n - real * (real.dot(dual) / (n * n * n)) })
+    }
+
+    /// Back to a line: direction e, point e × m (the foot of the perpendicular from the origin).
+    pub fn line(&self) -> Line {
+        Line { point: self.real.cross(self.dual), dir: self.real }
+    }
+}
+
+/// Dual vectors of the rulings, signs made consistent along the sequence.
+fn oriented(lines: impl Iterator<Item = Line>) -> Vec<DualLine> {
+    let mut out: Vec<DualLine> = Vec::new();
+    for l in lines {
+        let mut d = DualLine::of(&l);
+        if let Some(prev) = out.last() {
+            if prev.real.dot(d.real) < 0.0 {
+                d = DualLine { real: -d.real, dual: -d.dual };
+            }
+        }
+        out.push(d);
+    }
+    out
+}
+
+fn split(d: &[DualLine]) -> (Vec<DVec3>, Vec<DVec3>) {
+    d.iter().map(|l| (l.real, l.dual)).unzip()
+}
+
+fn join(real: Vec<DVec3>, dual: Vec<DVec3>) -> Result<Vec<DualLine>> {
+    real.into_iter().zip(dual).map(|(r, d)| DualLine::normalized(r, d)).collect()
+}
+
+/// `steps` steps of a linear curve scheme (Chaikin, B-spline, four-point) on the lines of
+/// `surface`; the refined lines are cut to segments of `length` (default: the mean input
+/// length) centred on their striction points.
+pub fn subdivide_lines(surface: &RuledSurface, scheme: Scheme, closed: bool, steps: usize, length: Option<f64>) -> Result<RuledSurface> {
+    scheme.validate()?;
+    check_steps(steps)?;
+    if matches!(scheme, Scheme::Bezier | Scheme::Variational { .. }) {
+        return Err(Error::parameter("space", "line space supports \"chaikin\", \"bspline\" and \"four-point\""));
+    }
+    scheme.output_len_after(surface.len(), closed, steps)?;
+    let length = length.unwrap_or_else(|| surface.segments().map(|s| s.length()).sum::<f64>() / surface.len() as f64);
+    let mut lines = oriented(surface.lines());
+    for _ in 0..steps {
+        let (real, dual) = split(&lines);
+        lines = join(polygon_step(&real, scheme, closed, 0), polygon_step(&dual, scheme, closed, 0))?;
+    }
+    // unit segments along the refined lines, then the re-cut symmetric to the striction points
+    let rough = RuledSurface::new(lines.iter().map(|d| { let l = d.line(); Segment::new(l.point, l.point + l.dir) }).collect())?;
+    recut(&rough, Some(length))
+}
+
+/// Butterfly (16) on the lines of a congruence; each refined line is cut to `length` (default:
+/// the mean input length) centred on the mean of its footpoints with its grid neighbours.
+pub fn butterfly_lines(c: &LineCongruence, w: f64, steps: usize, length: Option<f64>) -> Result<LineCongruence> {
+    let (mut rows, mut cols) = (c.rows(), c.cols());
+    for _ in 0..steps {
+        (rows, cols) = (2 * rows - 1, 2 * cols - 1);
+        if rows.saturating_mul(cols) > crate::tolerance::MAX_RULINGS {
+            return Err(Error::TooMany { what: "lines after subdivision", got: rows.saturating_mul(cols), max: crate::tolerance::MAX_RULINGS });
+        }
+    }
+    if !(w.is_finite() && (-0.25..=0.25).contains(&w)) {
+        return Err(Error::parameter("w", format!("must be a number in [−1/4, 1/4], got {w}")));
+    }
+    let length = length.unwrap_or_else(|| {
+        let n = c.rows() * c.cols();
+        (0..n).map(|k| c.line(k / c.cols(), k % c.cols()).length()).sum::<f64>() / n as f64
+    });
+    // orientation: along each row, and each row's first line after the previous row's
+    let (mut r, mut cc) = (c.rows(), c.cols());
+    let mut lines: Vec<DualLine> = Vec::with_capacity(r * cc);
+    for i in 0..r {
+        for j in 0..cc {
+            let mut d = DualLine::of(&c.line(i, j).line());
+            let prev = if j > 0 { Some(lines[i * cc + j - 1]) } else if i > 0 { Some(lines[(i - 1) * cc]) } else { None };
+            if prev.is_some_and(|p| p.real.dot(d.real) < 0.0) {
+                d = DualLine { real: -d.real, dual: -d.dual };
+            }
+            lines.push(d);
+        }
+    }
+    for _ in 0..steps {
+        let (real, dual) = split(&lines);
+        lines = join(butterfly::refine_points(&real, r, cc, w), butterfly::refine_points(&dual, r, cc, w))?;
+        (r, cc) = (2 * r - 1, 2 * cc - 1);
+    }
+    let line_at = |i: usize, j: usize| lines[i * cc + j].line();
+    let mut p = Vec::with_capacity(r * cc);
+    let mut q = Vec::with_capacity(r * cc);
+    for i in 0..r {
+        for j in 0..cc {
+            let l = line_at(i, j);
+            let neighbours = [(i.wrapping_sub(1), j), (i + 1, j), (i, j.wrapping_sub(1)), (i, j + 1)];
+            let feet: Vec<DVec3> = neighbours
+                .iter()
+                .filter(|&&(a, b)| a < r && b < cc)
+                .filter_map(|&(a, b)| PairInvariants::of(&l, &line_at(a, b)).feet.map(|f| f.0))
+                .collect();
+            let centre = if feet.is_empty() { l.point } else { feet.iter().sum::<DVec3>() / feet.len() as f64 };
+            p.push(centre - 0.5 * length * l.dir);
+            q.push(centre + 0.5 * length * l.dir);
+        }
+    }
+    LineCongruence::from_points(r, cc, &p, &q)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dual_round_trip_and_normalisation() {
+        let l = Line { point: DVec3::new(1.0, 2.0, 3.0), dir: DVec3::new(0.0, 0.6, 0.8) };
+        let d = DualLine::of(&l);
+        let back = d.line();
+        assert!((back.dir - l.dir).length() < 1e-15);
+        assert!(back.distance_to(l.point) < 1e-14);
+        // N(2L + ε·(something along e)) is L
+        let n = DualLine::normalized(2.0 * d.real, 2.0 * d.dual + 0.7 * d.real).unwrap();
+        assert!((n.real - d.real).length() < 1e-15 && (n.dual - d.dual).length() < 1e-15);
+        assert!(DualLine::normalized(DVec3::ZERO, DVec3::X).is_err());
+    }
+
+    /// The midpoint of two lines in line space through the same point passes through it and
+    /// bisects the angle.
+    #[test]
+    fn average_of_two_concurrent_lines_bisects_them() {
+        let o = DVec3::new(1.0, -1.0, 2.0);
+        let a = DualLine::of(&Line { point: o, dir: DVec3::X });
+        let b = DualLine::of(&Line { point: o, dir: DVec3::Y });
+        let m = DualLine::normalized(0.5 * (a.real + b.real), 0.5 * (a.dual + b.dual)).unwrap().line();
+        assert!(m.distance_to(o) < 1e-15);
+        assert!((m.dir - DVec3::new(1.0, 1.0, 0.0).normalize()).length() < 1e-15);
+    }
+}
