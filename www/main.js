@@ -12,8 +12,9 @@ import { scene as strip } from './scenes/strip.js';
 import { scene as congruence } from './scenes/congruence.js';
 import { scene as milling } from './scenes/milling.js';
 import { scene as lines } from './scenes/lines.js';
+import { scene as large } from './scenes/large.js';
 
-const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling, lines];
+const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling, lines, large];
 
 const $ = (id) => document.getElementById(id);
 
@@ -165,10 +166,36 @@ async function main() {
     clearTimeout(hashTimer);
     hashTimer = setTimeout(() => writeHash(state, viewer.camera), 150);
   };
+  let generation = 0;
   const update = ({ fit = false, view = null } = {}) => {
+    const mine = ++generation;
     try {
+      const t0 = performance.now();
       const built = state.scene.create(state.params);
       viewer.setScene(built, { fit });
+      document.body.dataset.updateMs = (performance.now() - t0).toFixed(1);
+      // heavy work the scene handed to a worker: show progress, swap the result in when done
+      const progress = $('progress');
+      progress.hidden = !built.later;
+      if (built.later) {
+        progress.value = 0;
+        document.body.dataset.busy = '1';
+        built
+          .later((fraction) => mine === generation && (progress.value = fraction))
+          .then((done) => {
+            if (mine !== generation) return;
+            viewer.setScene(done);
+            showReadout(done.readout, done.readoutLabels);
+          })
+          .catch((e) => e.superseded || showError(e))
+          .finally(() => {
+            if (mine !== generation) return;
+            progress.hidden = true;
+            delete document.body.dataset.busy;
+          });
+      } else {
+        delete document.body.dataset.busy;
+      }
       if (view) applyView(viewer.camera, view);
       showReadout(built.readout, built.readoutLabels);
       $('figure').innerHTML = built.figure ?? '';

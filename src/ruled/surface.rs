@@ -49,6 +49,16 @@ impl RuledSurface {
         Self::checked_lengths(segments.iter().flat_map(|s| [s.a, s.b]).collect())
     }
 
+    /// From endpoints a_0, b_0, a_1, b_1, … (validated like [`RuledSurface::from_flat`]).
+    pub fn from_points(points: Vec<DVec3>) -> Result<Self> {
+        if points.len() % 2 != 0 {
+            return Err(Error::BadLength { what: "endpoints", len: points.len(), multiple: 2 });
+        }
+        check_count(points.len() / 2)?;
+        check_coordinates(bytemuck::cast_slice(&points), FLAT_STRIDE)?;
+        Self::checked_lengths(points)
+    }
+
     fn checked_lengths(points: Vec<DVec3>) -> Result<Self> {
         for (i, ab) in points.chunks_exact(2).enumerate() {
             let len = (ab[1] - ab[0]).length();

@@ -5,22 +5,24 @@
 //!
 //! A polygon of P pieces of degree m (N = P m + 1 points) → 2P pieces: 2N − 1 points.
 
+use crate::subdivision::Affine;
+#[cfg(test)]
 use glam::DVec3;
 
 /// One de Casteljau step on every Bézier piece of degree `degree` in `points`.
-pub fn de_casteljau(points: &[DVec3], degree: usize) -> Vec<DVec3> {
+pub fn de_casteljau<T: Affine>(points: &[T], degree: usize) -> Vec<T> {
     let pieces = (points.len() - 1) / degree;
     let mut out = Vec::with_capacity(2 * points.len() - 1);
     out.push(points[0]);
-    let mut work = vec![DVec3::ZERO; degree + 1];
-    let mut right = vec![DVec3::ZERO; degree + 1];
+    let mut work = vec![points[0]; degree + 1];
+    let mut right = vec![points[0]; degree + 1];
     for k in 0..pieces {
         work.copy_from_slice(&points[k * degree..=(k + 1) * degree]);
         // after level r, work[0] is the left polygon's point r and work[degree − r] the right's
         right[degree] = work[degree];
         for r in 1..=degree {
             for i in 0..=degree - r {
-                work[i] = 0.5 * (work[i] + work[i + 1]);
+                work[i] = (work[i] + work[i + 1]) * 0.5;
             }
             out.push(work[0]);
             right[degree - r] = work[degree - r];

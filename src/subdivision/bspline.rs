@@ -7,24 +7,26 @@
 //! unclamped uniform B-spline). Closed polygons: N → 2N, the result shifted so that it
 //! stays aligned with the input.
 
+use crate::subdivision::Affine;
+#[cfg(test)]
 use glam::DVec3;
 
 /// Largest supported degree.
 pub const MAX_DEGREE: usize = 7;
 
 /// One step of degree-`degree` uniform B-spline subdivision.
-pub fn bspline(points: &[DVec3], degree: usize, closed: bool) -> Vec<DVec3> {
-    let mut q: Vec<DVec3> = points.iter().flat_map(|&p| [p, p]).collect();
+pub fn bspline<T: Affine>(points: &[T], degree: usize, closed: bool) -> Vec<T> {
+    let mut q: Vec<T> = points.iter().flat_map(|&p| [p, p]).collect();
     for _ in 0..degree {
         if closed {
             let first = q[0];
             for i in 0..q.len() {
                 let next = if i + 1 < q.len() { q[i + 1] } else { first };
-                q[i] = 0.5 * (q[i] + next);
+                q[i] = (q[i] + next) * 0.5;
             }
         } else {
             for i in 0..q.len() - 1 {
-                q[i] = 0.5 * (q[i] + q[i + 1]);
+                q[i] = (q[i] + q[i + 1]) * 0.5;
             }
             q.pop();
         }

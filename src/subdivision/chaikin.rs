@@ -7,17 +7,19 @@
 //! the midpoint of the first edge to the midpoint of the last, exactly the uniform B-spline).
 //! Closed polygons: N → 2N.
 
+use crate::subdivision::Affine;
+#[cfg(test)]
 use glam::DVec3;
 
 /// One step of Chaikin's algorithm.
-pub fn chaikin(points: &[DVec3], closed: bool) -> Vec<DVec3> {
+pub fn chaikin<T: Affine>(points: &[T], closed: bool) -> Vec<T> {
     let n = points.len();
     let edges = if closed { n } else { n - 1 };
     let mut out = Vec::with_capacity(2 * edges);
     for i in 0..edges {
         let (p, q) = (points[i], points[(i + 1) % n]);
-        out.push(0.75 * p + 0.25 * q);
-        out.push(0.25 * p + 0.75 * q);
+        out.push(p * 0.75 + q * 0.25);
+        out.push(p * 0.25 + q * 0.75);
     }
     out
 }

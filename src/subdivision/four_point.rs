@@ -13,39 +13,53 @@
 //! tangent at the ends follows the data instead of being flattened as a repeated end
 //! point would do.
 
+use crate::subdivision::Affine;
+#[cfg(test)]
 use glam::DVec3;
 
 /// The ghost point before `p` (p[0] first), by polynomial extrapolation of up to 4 points.
-pub(crate) fn ghost(p: &[DVec3]) -> DVec3 {
+pub(crate) fn ghost<T: Affine>(p: &[T]) -> T {
     match p.len() {
-        0 | 1 => p.first().copied().unwrap_or(DVec3::ZERO),
-        2 => 2.0 * p[0] - p[1],
-        3 => 3.0 * p[0] - 3.0 * p[1] + p[2],
-        _ => 4.0 * p[0] - 6.0 * p[1] + 4.0 * p[2] - p[3],
+        0 | 1 => p[0],
+        2 => p[0] * 2.0 - p[1],
+        3 => p[0] * 3.0 - p[1] * 3.0 + p[2],
+        _ => p[0] * 4.0 - p[1] * 6.0 + p[2] * 4.0 - p[3],
     }
 }
 
 /// One step of the four-point scheme with tension `w`.
-pub fn four_point(points: &[DVec3], w: f64, closed: bool) -> Vec<DVec3> {
+pub fn four_point<T: Affine>(points: &[T], w: f64, closed: bool) -> Vec<T> {
     let n = points.len();
-    let at = |i: isize| -> DVec3 {
-        if closed {
-            points[i.rem_euclid(n as isize) as usize]
-        } else if i < 0 {
-            ghost(points)
-        } else if i as usize >= n {
-            let tail: Vec<DVec3> = points.iter().rev().take(4).copied().collect();
-            ghost(&tail)
+    let rule = |a: T, b: T, c: T, d: T| (b + c) * (0.5 + w) - (a + d) * w;
+    let (before, after) = if closed {
+        (points[n - 1], points[0])
+    } else {
+        let tail: Vec<T> = points.iter().rev().take(4).copied().collect();
+        (ghost(points), ghost(&tail))
+    };
+    // p_{k}, with the ghost or wrapped points at k = −1 and k = n, n + 1
+    let at = |k: isize| -> T {
+        if k < 0 {
+            before
+        } else if (k as usize) < n {
+            points[k as usize]
+        } else if closed {
+            points[k as usize - n]
         } else {
-            points[i as usize]
+            after
         }
     };
     let edges = if closed { n } else { n - 1 };
     let mut out = Vec::with_capacity(2 * n);
     for i in 0..edges {
-        let k = i as isize;
         out.push(points[i]);
-        out.push((0.5 + w) * (at(k) + at(k + 1)) - w * (at(k - 1) + at(k + 2)));
+        let inner = i >= 1 && i + 2 < n;
+        out.push(if inner {
+            rule(points[i - 1], points[i], points[i + 1], points[i + 2])
+        } else {
+            let k = i as isize;
+            rule(at(k - 1), at(k), at(k + 1), at(k + 2))
+        });
     }
     if !closed {
         out.push(points[n - 1]);

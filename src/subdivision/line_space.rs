@@ -21,7 +21,7 @@ use crate::congruence::{butterfly, LineCongruence};
 use crate::error::{Error, Result};
 use crate::line::{Line, Segment};
 use crate::ruled::{PairInvariants, RuledSurface};
-use crate::subdivision::{check_steps, polygon_step, recut, Scheme};
+use crate::subdivision::{check_steps, polygon_step, recut, Pair, Scheme};
 use glam::DVec3;
 
 /// An oriented line as a dual unit vector e + ε m.
@@ -77,6 +77,10 @@ fn join(real: Vec<DVec3>, dual: Vec<DVec3>) -> Result<Vec<DualLine>> {
     real.into_iter().zip(dual).map(|(r, d)| DualLine::normalized(r, d)).collect()
 }
 
+fn pairs(d: &[DualLine]) -> Vec<Pair> {
+    d.iter().map(|l| Pair(l.real, l.dual)).collect()
+}
+
 /// `steps` steps of a linear curve scheme (Chaikin, B-spline, four-point) on the lines of
 /// `surface`; the refined lines are cut to segments of `length` (default: the mean input
 /// length) centred on their striction points.
@@ -90,8 +94,7 @@ pub fn subdivide_lines(surface: &RuledSurface, scheme: Scheme, closed: bool, ste
     let length = length.unwrap_or_else(|| surface.segments().map(|s| s.length()).sum::<f64>() / surface.len() as f64);
     let mut lines = oriented(surface.lines());
     for _ in 0..steps {
-        let (real, dual) = split(&lines);
-        lines = join(polygon_step(&real, scheme, closed, 0), polygon_step(&dual, scheme, closed, 0))?;
+        lines = polygon_step(&pairs(&lines), scheme, closed, 0).into_iter().map(|p| DualLine::normalized(p.0, p.1)).collect::<Result<_>>()?;
     }
     // unit segments along the refined lines, then the re-cut symmetric to the striction points
     let rough = RuledSurface::new(lines.iter().map(|d| { let l = d.line(); Segment::new(l.point, l.point + l.dir) }).collect())?;

@@ -19,6 +19,37 @@ pub mod variational;
 use crate::error::{Error, Result};
 use crate::tolerance::MAX_RULINGS;
 use glam::DVec3;
+use std::ops::{Add, Mul, Sub};
+
+/// What the linear schemes need of their elements: affine combinations, written `p * w`.
+pub trait Affine: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<f64, Output = Self> {}
+impl<T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>> Affine for T {}
+
+/// Two points refined with the same weights: both endpoints of a ruling (a strip is a polygon
+/// of pairs), or the real and dual parts of a line.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pair(pub DVec3, pub DVec3);
+
+impl Add for Pair {
+    type Output = Pair;
+    fn add(self, o: Pair) -> Pair {
+        Pair(self.0 + o.0, self.1 + o.1)
+    }
+}
+
+impl Sub for Pair {
+    type Output = Pair;
+    fn sub(self, o: Pair) -> Pair {
+        Pair(self.0 - o.0, self.1 - o.1)
+    }
+}
+
+impl Mul<f64> for Pair {
+    type Output = Pair;
+    fn mul(self, w: f64) -> Pair {
+        Pair(self.0 * w, self.1 * w)
+    }
+}
 
 pub use strip::{recut, subdivide_strip};
 pub use variational::Variant;
@@ -145,7 +176,7 @@ pub fn check_steps(steps: usize) -> Result<()> {
 }
 
 /// One step of a curve scheme (sizes already checked).
-pub(crate) fn polygon_step(p: &[DVec3], scheme: Scheme, closed: bool, bezier_degree: usize) -> Vec<DVec3> {
+pub(crate) fn polygon_step<T: Affine>(p: &[T], scheme: Scheme, closed: bool, bezier_degree: usize) -> Vec<T> {
     match scheme {
         Scheme::Chaikin => chaikin::chaikin(p, closed),
         Scheme::BSpline { degree } => bspline::bspline(p, degree, closed),

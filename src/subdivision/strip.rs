@@ -9,7 +9,7 @@
 
 use crate::error::{Error, Result};
 use crate::ruled::RuledSurface;
-use crate::subdivision::{check_steps, polygon_step, variational, Scheme};
+use crate::subdivision::{check_steps, polygon_step, variational, Pair, Scheme};
 use crate::tolerance::MAX_COORD;
 use glam::DVec3;
 
@@ -26,12 +26,12 @@ pub fn subdivide_strip(surface: &RuledSurface, scheme: Scheme, closed: bool, ste
         return Ok(s);
     }
     let bezier_degree = surface.len() - 1;
-    let (mut a, mut b): (Vec<DVec3>, Vec<DVec3>) = surface.segments().map(|s| (s.a, s.b)).unzip();
+    // the strip as one polygon of endpoint pairs: no separate boundary copies
+    let mut pairs: Vec<Pair> = surface.points().chunks_exact(2).map(|ab| Pair(ab[0], ab[1])).collect();
     for _ in 0..steps {
-        a = polygon_step(&a, scheme, closed, bezier_degree);
-        b = polygon_step(&b, scheme, closed, bezier_degree);
+        pairs = polygon_step(&pairs, scheme, closed, bezier_degree);
     }
-    RuledSurface::new(a.into_iter().zip(b).map(|(a, b)| crate::line::Segment::new(a, b)).collect())
+    RuledSurface::from_points(pairs.into_iter().flat_map(|p| [p.0, p.1]).collect())
 }
 
 /// The segments re-cut to length `length` (default: the mean segment length), centred on the

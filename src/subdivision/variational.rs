@@ -50,21 +50,21 @@ pub enum Variant {
 }
 
 /// A linear form Σ c_m x_{u_m} + constant in the unknowns (A_0, B_0, A_1, B_1, …).
-struct Form {
-    terms: Vec<(usize, f64)>,
+struct Form<'a> {
+    terms: &'a [(usize, f64)],
     constant: DVec3,
 }
 
 /// Accumulates Σ_{p,q} M_pq F_p·F_q into the normal equations H x = r.
-fn add_energy(h: &mut SymmetricBanded, r: &mut [[f64; 3]], forms: &[Form], metric: &[&[f64]]) {
+fn add_energy(h: &mut SymmetricBanded, r: &mut [[f64; 3]], forms: &[Form<'_>], metric: &[&[f64]]) {
     for (p, fp) in forms.iter().enumerate() {
         for (q, fq) in forms.iter().enumerate() {
             let m = metric[p][q];
             if m == 0.0 {
                 continue;
             }
-            for &(u, cu) in &fp.terms {
-                for &(v, cv) in &fq.terms {
+            for &(u, cu) in fp.terms {
+                for &(v, cv) in fq.terms {
                     if u >= v {
                         // symmetric: add each unordered pair once, the diagonal once
                         h.add(u, v, m * cu * cv);
@@ -99,21 +99,21 @@ pub fn refine(surface: &RuledSurface, n: usize, variant: Variant) -> Result<Rule
     let mut r = vec![[0.0; 3]; 2 * count];
     // new columns: X = a_i + a_{i+1} − 2A_i, Y = b_i + b_{i+1} − 2B_i
     for i in 0..count {
-        let x = Form { terms: vec![(a_idx(i), -2.0)], constant: segs[i].a + segs[i + 1].a };
-        let y = Form { terms: vec![(b_idx(i), -2.0)], constant: segs[i].b + segs[i + 1].b };
+        let x = Form { terms: &[(a_idx(i), -2.0)], constant: segs[i].a + segs[i + 1].a };
+        let y = Form { terms: &[(b_idx(i), -2.0)], constant: segs[i].b + segs[i + 1].b };
         add_energy(&mut h, &mut r, &[x, y], &q);
     }
     if variant != Variant::Literal {
         // old interior columns: X = A_{i−1} + A_i − 2a_i, Y likewise, and the D-term
         for i in 1..count {
-            let x = Form { terms: vec![(a_idx(i - 1), 1.0), (a_idx(i), 1.0)], constant: -2.0 * segs[i].a };
-            let y = Form { terms: vec![(b_idx(i - 1), 1.0), (b_idx(i), 1.0)], constant: -2.0 * segs[i].b };
+            let x = Form { terms: &[(a_idx(i - 1), 1.0), (a_idx(i), 1.0)], constant: -2.0 * segs[i].a };
+            let y = Form { terms: &[(b_idx(i - 1), 1.0), (b_idx(i), 1.0)], constant: -2.0 * segs[i].b };
             add_energy(&mut h, &mut r, &[x, y], &q);
             if variant == Variant::Averaged {
                 continue;
             }
             let d = Form {
-                terms: vec![(b_idx(i), 1.0), (a_idx(i), -1.0), (b_idx(i - 1), -1.0), (a_idx(i - 1), 1.0)],
+                terms: &[(b_idx(i), 1.0), (a_idx(i), -1.0), (b_idx(i - 1), -1.0), (a_idx(i - 1), 1.0)],
                 constant: DVec3::ZERO,
             };
             add_energy(&mut h, &mut r, &[d], &[&[beta]]);

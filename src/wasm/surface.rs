@@ -7,6 +7,7 @@ use std::cell::OnceCell;
 use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
 use js_sys::{Float32Array, Float64Array, Uint8Array};
 use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_TYPES: &str = r#"
@@ -138,6 +139,49 @@ impl RuledSurface {
             .f64s("perpendicularMidpoints", Invariants::flat(&inv.perpendicular_midpoints))
             .set("parallel", Uint8Array::from(&parallel[..]))
             .build()
+    }
+
+    /// As `invariants()`, but written into the arrays of `out` (an object returned by an
+    /// earlier `invariants()` call on a surface with as many rulings): no allocation, for
+    /// animation loops and large models. Throws if an array is missing or has the wrong length.
+    #[wasm_bindgen(js_name = invariantsInto)]
+    pub fn invariants_into(&self, #[wasm_bindgen(unchecked_param_type = "Invariants")] out: JsValue) -> Result<(), JsError> {
+        const F: &str = "RuledSurface.invariantsInto";
+        if !out.is_object() {
+            return Err(fail(F, format!("out must be an Invariants object, got {}", describe(&out))));
+        }
+        let inv = self.inner.invariants();
+        let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
+        let target = |key: &str, len: usize| -> Result<JsValue, JsError> {
+            let v = js_sys::Reflect::get(&out, &key.into()).map_err(|_| fail(F, format!("out.{key} is missing")))?;
+            let got = js_sys::Reflect::get(&v, &"length".into()).ok().and_then(|l| l.as_f64());
+            if got != Some(len as f64) {
+                return Err(fail(F, format!("out.{key} must be a typed array of length {len} (this surface has {} rulings)", self.inner.len())));
+            }
+            Ok(v)
+        };
+        let copy = |key: &str, data: &[f64]| -> Result<(), JsError> {
+            match target(key, data.len())?.dyn_into::<Float64Array>() {
+                Ok(a) => {
+                    a.copy_from(data);
+                    Ok(())
+                }
+                Err(_) => Err(fail(F, format!("out.{key} must be a Float64Array"))),
+            }
+        };
+        copy("angle", &inv.angle)?;
+        copy("distance", &inv.distance)?;
+        copy("distribution", &inv.distribution)?;
+        copy("footpoints", Invariants::flat(&inv.footpoints))?;
+        copy("centralNormal", Invariants::flat(&inv.central_normal))?;
+        copy("striction", Invariants::flat(&inv.striction))?;
+        copy("distributionMean", &inv.distribution_mean)?;
+        copy("perpendicularMidpoints", Invariants::flat(&inv.perpendicular_midpoints))?;
+        match target("parallel", parallel.len())?.dyn_into::<Uint8Array>() {
+            Ok(a) => a.copy_from(&parallel),
+            Err(_) => return Err(fail(F, "out.parallel must be a Uint8Array")),
+        }
+        Ok(())
     }
 
     /// The hinge angles τ_i of the discrete Minding isometries (Section 3): the signed angle

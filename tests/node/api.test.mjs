@@ -135,3 +135,19 @@ test('the TypeScript declarations type the results', () => {
   const api = dts.slice(0, dts.indexOf('export type InitInput'));
   assert.doesNotMatch(api, /[:<,|(]\s*any\b|\bany\[\]/);
 });
+
+test('invariantsInto refills the arrays of an earlier result without allocating new ones', () => {
+  const a = ruledlab.AnalyticSurface.byName('quartic');
+  const s1 = a.sample(40);
+  const s2 = a.sample(40, { vMin: -2, vMax: 0.5 });
+  const out = s1.invariants();
+  const arrays = Object.values(out);
+  s2.invariantsInto(out);
+  const fresh = s2.invariants();
+  for (const [k, v] of Object.entries(fresh)) assert.deepEqual(out[k], v, k);
+  Object.values(out).forEach((v, i) => assert.equal(v, arrays[i], 'same array objects'));
+  const small = a.sample(10);
+  assert.throws(() => small.invariantsInto(out), /out.angle must be a typed array of length 9 \(this surface has 10 rulings\)/);
+  assert.throws(() => small.invariantsInto(null), /out must be an Invariants object, got null/);
+  assert.throws(() => s2.invariantsInto({ ...out, angle: new Float32Array(39) }), /out.angle must be a Float64Array/);
+});
