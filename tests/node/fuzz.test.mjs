@@ -1,0 +1,112 @@
+// Every export under random and adversarial arguments: each call returns or throws an Error
+// (never a wasm trap, a WebAssembly.RuntimeError), and the module keeps working afterwards.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import ruledlab from './load.mjs';
+
+const { RuledSurface, AnalyticSurface, LineCongruence, AnalyticCongruence, ToolPath, subdividePolygon } = ruledlab;
+
+let seed = Number(process.env.FUZZ_SEED ?? 12345);
+const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+const pick = (xs) => xs[Math.floor(random() * xs.length)];
+
+const NUMBERS = [0, -0, 1, -1, 0.5, 2, 3, 7, 12, 1e-300, 1e300, -1e300, NaN, Infinity, -Infinity, 2 ** 31, 2 ** 53, 1.5, -3.7, 1e9];
+const SMALL = [0, 1, 2, 3, 4, 6, 12, -1, 1.5, NaN, Infinity, 1e9, 25];
+const STRINGS = ['', 'four-point', 'chaikin', 'bspline', 'bezier', 'variational', 'butterfly', 'lines', 'points', 'coupled', 'literal', 'averaged', 'two-stage', 'json', 'csv', 'gcode', 'hyperboloid', 'sphere', 'example5', 'flat', 'ball', '💥'];
+const KEYS = ['scheme', 'steps', 'w', 'n', 'variant', 'degree', 'closed', 'space', 'length', 'K', 'diagonalOnly', 'u', 'h0', 'levels', 'uMin', 'uMax', 'vMin', 'vMax', 'radius', 'end', 'feed', 'scale', 'clearance', 'junk'];
+
+function typedArray() {
+  const n = pick([0, 1, 3, 5, 6, 11, 12, 18, 24, 36, 60, 72]);
+  const a = new Float64Array(n);
+  const mode = pick(['nice', 'nice', 'nice', 'adversarial', 'zeros', 'repeat']);
+  for (let i = 0; i < n; i++) {
+    a[i] = mode === 'nice' ? random() * 4 - 2 : mode === 'zeros' ? 0 : mode === 'repeat' ? (i % 6 < 3 ? 1 : 1) : pick(NUMBERS);
+  }
+  return a;
+}
+
+function options() {
+  const o = {};
+  const count = pick([0, 1, 2, 3, 4]);
+  for (let i = 0; i < count; i++) {
+    const k = pick(KEYS);
+    o[k] = pick([() => pick(SMALL), () => pick(STRINGS), () => pick([true, false]), () => random() * 0.3 - 0.1, () => null, () => [1, 2], () => ({})])();
+  }
+  return o;
+}
+
+function value() {
+  return pick([() => pick(NUMBERS), () => pick(STRINGS), typedArray, typedArray, options, () => undefined, () => null, () => [1, 2, 3], () => new Float32Array(6), () => ({ length: 6 }), () => true, () => 10n])();
+}
+
+/** A valid object of each class to call methods on. */
+function fixtures() {
+  const hyp = AnalyticSurface.byName('hyperboloid');
+  return {
+    hyp,
+    surface: hyp.sample(pick([2, 3, 5, 9, 20]), { closed: false }),
+    congruence: AnalyticCongruence.byName('example5').grid(pick([2, 3, 4]), pick([2, 3, 5])),
+    analyticCongruence: AnalyticCongruence.byName('sphere'),
+    path: ToolPath.example(pick([2, 3, 7])),
+  };
+}
+
+const CALLS = [
+  (f) => RuledSurface.fromSegments(value()),
+  (f) => f.surface.invariants(),
+  (f) => f.surface.invariantsInto(pick([value(), f.surface.invariants(), {}])),
+  (f) => f.surface.hinge(value()),
+  (f) => f.surface.hinge(new Float64Array(Math.max(f.surface.length - 2, 0)).map(() => pick(NUMBERS))),
+  (f) => f.surface.bend(pick([...NUMBERS, value()])),
+  (f) => f.surface.conoidal(),
+  (f) => f.surface.development(),
+  (f) => f.surface.nonDevelopability(),
+  (f) => f.surface.subdivide(value()),
+  (f) => f.surface.subdivide(options()),
+  (f) => f.surface.subdivide({ scheme: pick(STRINGS), steps: pick(SMALL), ...options() }),
+  (f) => f.surface.recut(pick([undefined, ...NUMBERS])),
+  (f) => AnalyticSurface.byName(value()),
+  (f) => f.hyp.sample(pick([...SMALL, value()]), pick([value(), options()])),
+  (f) => f.hyp.striction(value()),
+  (f) => f.hyp.distribution(value()),
+  (f) => f.hyp.centralTangent(value()),
+  (f) => f.hyp.convergence(pick([value(), options()])),
+  (f) => f.hyp.distances(value(), pick(NUMBERS), pick(NUMBERS)),
+  (f) => subdividePolygon(value(), pick([value(), options(), { scheme: pick(STRINGS), ...options() }])),
+  (f) => LineCongruence.fromGrid(pick(SMALL), pick(SMALL), value()),
+  (f) => f.congruence.subdivide(pick([value(), options(), { scheme: pick(STRINGS), ...options() }])),
+  (f) => f.congruence.row(pick([...SMALL, value()])),
+  (f) => f.congruence.column(pick([...SMALL, value()])),
+  (f) => AnalyticCongruence.byName(value()),
+  (f) => f.analyticCongruence.grid(pick([undefined, ...SMALL]), pick([undefined, ...SMALL])),
+  (f) => f.analyticCongruence.errors(f.congruence),
+  (f) => ToolPath.fromSegments(value(), pick([value(), options(), { radius: pick(NUMBERS), length: pick(NUMBERS), end: pick(STRINGS) }])),
+  (f) => ToolPath.example(pick([undefined, ...SMALL])),
+  (f) => f.path.refine(pick([value(), options()])),
+  (f) => f.path.deviation(value()),
+  (f) => f.path.export(pick([value(), ...STRINGS]), pick([value(), options()])),
+  (f) => ToolPath.exampleProfile(pick(SMALL)),
+  (f) => f.path.quality(),
+];
+
+test('20 000 random and adversarial calls: only Errors, never a trap; the module keeps working', () => {
+  let fx = fixtures();
+  let errors = 0;
+  for (let i = 0; i < 20000; i++) {
+    if (i % 500 === 0) fx = fixtures();
+    const call = pick(CALLS);
+    try {
+      const result = call(fx);
+      result?.free?.();
+    } catch (e) {
+      assert.ok(!(e instanceof WebAssembly.RuntimeError), `wasm trap in call ${CALLS.indexOf(call)}: ${e.stack}`);
+      assert.ok(e instanceof Error, `not an Error: ${e}`);
+      assert.ok(e.message.length > 10, `unclear message: ${e.message}`);
+      errors++;
+    }
+  }
+  // still working
+  const s = RuledSurface.fromSegments(new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 1, 1, 2]));
+  assert.equal(s.invariants().angle.length, 2);
+  assert.ok(errors > 1000, `only ${errors} errors: the fuzz is not adversarial enough`);
+});
