@@ -10,7 +10,7 @@ fn congruence(c: &mut Criterion) {
     let ex = AnalyticCongruence::Example5;
     let mut group = c.benchmark_group("butterfly");
     group.sample_size(10);
-    for n in [100usize, 300, 1000] {
+    for &n in sizes(&[100usize, 300, 1000]) {
         let grid = ex.grid(n, n).expect("valid grid");
         group.throughput(Throughput::Elements((n * n) as u64));
         group.bench_with_input(BenchmarkId::from_parameter(n), &grid, |b, g| {
@@ -20,7 +20,7 @@ fn congruence(c: &mut Criterion) {
     group.finish();
     let mut group = c.benchmark_group("coupled");
     group.sample_size(10);
-    for n in [33usize, 65, 129, 257] {
+    for &n in sizes(&[33usize, 65, 129, 257]) {
         let grid = ex.grid(n, n).expect("valid grid");
         group.throughput(Throughput::Elements((n * n) as u64));
         group.bench_with_input(BenchmarkId::from_parameter(n), &grid, |b, g| {
@@ -28,6 +28,12 @@ fn congruence(c: &mut Criterion) {
         });
     }
     group.finish();
+}
+
+/// All sizes under `cargo bench`; only the smallest when `cargo test` runs the bench once
+/// as a test (criterion passes `--bench` only in the former).
+fn sizes<T>(all: &[T]) -> &[T] {
+    if std::env::args().any(|a| a == "--bench") { all } else { &all[..1] }
 }
 
 criterion_group!(benches, congruence);

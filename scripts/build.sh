@@ -11,7 +11,7 @@ if [ pkg/ruledlab_bg.wasm -nt "$raw" ] && [ pkg/ruledlab.js -nt "$raw" ]; then
   echo "build: pkg/ is up to date"
   exit 0
 fi
-wasm-bindgen --target web --out-dir pkg --out-name ruledlab \
+wasm-bindgen --target web --weak-refs --out-dir pkg --out-name ruledlab \
   --remove-name-section --remove-producers-section "$raw"
 node_modules/.bin/wasm-opt -O3 pkg/ruledlab_bg.wasm -o pkg/ruledlab_bg.wasm
 size=$(stat -c %s pkg/ruledlab_bg.wasm)

@@ -25,7 +25,7 @@ step "build: pkg/"
 bash scripts/build.sh
 
 step "node: the package's API"
-node --test tests/node/*.test.mjs
+node --expose-gc --test tests/node/*.test.mjs
 
 step "page: headless Chromium"
 node --test tests/page/*.test.mjs

@@ -49,7 +49,7 @@ impl AnalyticCongruence {
     /// The congruence of that name.
     pub fn by_name(name: &str) -> Result<Self> {
         Self::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| {
-            Error::parameter("name", format!("unknown congruence {name:?}; known: sphere, hyperbolic-paraboloid, example5"))
+            Error::parameter("name", format!("unknown congruence \"{name}\"; known: sphere, hyperbolic-paraboloid, example5"))
         })
     }
 

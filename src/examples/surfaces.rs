@@ -148,7 +148,7 @@ impl AnalyticSurface {
     pub fn by_name(name: &str) -> Result<Self> {
         Self::ALL.into_iter().find(|s| s.name() == name).ok_or_else(|| {
             let names: Vec<&str> = Self::ALL.iter().map(|s| s.name()).collect();
-            Error::parameter("name", format!("unknown surface {name:?}; known: {}", names.join(", ")))
+            Error::parameter("name", format!("unknown surface \"{name}\"; known: {}", names.join(", ")))
         })
     }
 

@@ -55,7 +55,7 @@ impl Options {
             if !known.contains(&key.as_str()) {
                 return Err(fail(
                     func,
-                    format!("unknown option {key:?}; known options: {}", known.join(", ")),
+                    format!("unknown option \"{key}\"; known options: {}", known.join(", ")),
                 ));
             }
         }
@@ -114,7 +114,7 @@ impl Options {
     /// otherwise be silently ignored).
     pub fn only_for(&self, key: &str, scheme: &str, chosen: Option<&str>) -> Result<(), JsError> {
         if self.has(key) && chosen != Some(scheme) {
-            let chosen = chosen.map(|c| format!(", not to {c:?}")).unwrap_or_default();
+            let chosen = chosen.map(|c| format!(", not to \"{c}\"")).unwrap_or_default();
             return Err(fail(self.func, format!("options.{key} applies to the \"{scheme}\" scheme only{chosen}")));
         }
         Ok(())

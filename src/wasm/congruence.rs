@@ -48,6 +48,13 @@ pub struct LineCongruence {
     inner: congruence::LineCongruence,
 }
 
+impl LineCongruence {
+    /// The core congruence.
+    pub fn core(&self) -> &congruence::LineCongruence {
+        &self.inner
+    }
+}
+
 #[wasm_bindgen]
 impl LineCongruence {
     /// A congruence from a Float64Array of 6 · rows · cols numbers (p then q per line, row by
@@ -130,7 +137,7 @@ impl LineCongruence {
                             .map(|inner| LineCongruence { inner })
                             .map_err(|e| fail(F, e));
                     }
-                    Some(other) => return Err(fail(F, format!("options.space must be \"points\" or \"lines\", got {other:?}"))),
+                    Some(other) => return Err(fail(F, format!("options.space must be \"points\" or \"lines\", got \"{other}\""))),
                 }
                 if o.boolean("diagonalOnly")?.unwrap_or(false) {
                     if steps != 1 {
@@ -149,7 +156,7 @@ impl LineCongruence {
                 }
             }
             None => return Err(fail(F, "options.scheme is required: \"butterfly\" or \"variational\"")),
-            Some(other) => return Err(fail(F, format!("unknown scheme {other:?}; use \"butterfly\" or \"variational\""))),
+            Some(other) => return Err(fail(F, format!("unknown scheme \"{other}\"; use \"butterfly\" or \"variational\""))),
         };
         congruence::subdivide(&self.inner, scheme, steps).map(|inner| LineCongruence { inner }).map_err(|e| fail(F, e))
     }

@@ -7,11 +7,13 @@
 
 mod args;
 mod congruence;
+mod io;
 mod subdivide;
 mod surface;
 mod toolpath;
 
 pub use congruence::{AnalyticCongruence, LineCongruence};
+pub use io::import_segments;
 pub use subdivide::subdivide_polygon;
 pub use surface::{AnalyticSurface, RuledSurface};
 pub use toolpath::ToolPath;

@@ -65,7 +65,7 @@ pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<
             Space::Points
         }
         Some("lines") => Space::Lines(o.number("length")?),
-        Some(other) => return Err(fail(func, format!("options.space must be \"points\" or \"lines\", got {other:?}"))),
+        Some(other) => return Err(fail(func, format!("options.space must be \"points\" or \"lines\", got \"{other}\""))),
     };
     let Some(name) = o.string("scheme")?.or(default_scheme.map(String::from)) else {
         return Err(fail(func, "options.scheme is required: \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""));
@@ -85,14 +85,14 @@ pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<
                 Some("literal") => Variant::Literal,
                 Some("averaged") => Variant::Averaged,
                 Some(other) => {
-                    return Err(fail(func, format!("options.variant must be \"coupled\", \"literal\" or \"averaged\", got {other:?}")))
+                    return Err(fail(func, format!("options.variant must be \"coupled\", \"literal\" or \"averaged\", got \"{other}\"")))
                 }
             },
         },
         other => {
             return Err(fail(
                 func,
-                format!("unknown scheme {other:?}; use \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""),
+                format!("unknown scheme \"{other}\"; use \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""),
             ))
         }
     };

@@ -362,8 +362,31 @@ impl AnalyticSurface {
         let u = o.number("u")?.unwrap_or(0.7);
         let study = convergence::study(&self.inner, u, o.number("h0")?.unwrap_or(0.2), levels)
             .map_err(|e| fail(F, e))?;
-        serde_wasm_bindgen::to_value(&study).map_err(|e| fail(F, e))
+        let series: js_sys::Array = study
+            .series
+            .iter()
+            .map(|s| {
+                ObjectBuilder::new()
+                    .set("name", s.name)
+                    .set("expectedOrder", s.expected_order)
+                    .set("errors", numbers(&s.errors))
+                    .set("orders", numbers(&s.orders))
+                    .set("fittedOrder", s.fitted_order)
+                    .build()
+            })
+            .collect();
+        Ok(ObjectBuilder::new()
+            .set("surface", study.surface)
+            .set("u", study.u)
+            .set("steps", numbers(&study.steps))
+            .set("series", series)
+            .build())
     }
+}
+
+/// A plain JS array of numbers (the study's small series read best as ordinary arrays).
+fn numbers(values: &[f64]) -> js_sys::Array {
+    values.iter().map(|&x| JsValue::from_f64(x)).collect()
 }
 
 impl AnalyticSurface {

@@ -51,7 +51,7 @@ fn read_tool(func: &'static str, tool: JsValue) -> Result<milling::Tool, JsError
     let end = match o.string("end")?.as_deref() {
         None | Some("ball") => milling::ToolEnd::Ball,
         Some("flat") => milling::ToolEnd::Flat,
-        Some(other) => return Err(fail(func, format!("options.end must be \"ball\" or \"flat\", got {other:?}"))),
+        Some(other) => return Err(fail(func, format!("options.end must be \"ball\" or \"flat\", got \"{other}\""))),
     };
     milling::Tool::new(radius, length, end).map_err(|e| fail(func, e))
 }
@@ -201,7 +201,7 @@ impl ToolPath {
                 };
                 export::gcode(&self.inner, g).map_err(|e| fail(F, e))
             }
-            _ => Err(fail(F, format!("format must be \"json\", \"csv\" or \"gcode\", got {format:?}"))),
+            _ => Err(fail(F, format!("format must be \"json\", \"csv\" or \"gcode\", got \"{format}\""))),
         }
     }
 }

@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab from './load.mjs';
 
-const { RuledSurface, AnalyticSurface, LineCongruence, AnalyticCongruence, ToolPath, subdividePolygon } = ruledlab;
+const { RuledSurface, AnalyticSurface, LineCongruence, AnalyticCongruence, ToolPath, subdividePolygon, importSegments } = ruledlab;
 
 let seed = Number(process.env.FUZZ_SEED ?? 12345);
 const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
@@ -51,7 +51,28 @@ function fixtures() {
   };
 }
 
+/** Text for the importers: random bytes, or a valid file with random damage. */
+function text() {
+  const valid = pick(['0,0,0,1,0,0\n0,0,1,0,1,1\n', 'ax,ay,az,bx,by,bz\n1,2,3,4,5,6\n', '[[0,0,0,1,0,0],[0,0,1,0,1,1]]', '{"rows": 2, "cols": 2, "segments": [[0,0,0,1,0,0],[0,0,1,0,1,1],[1,0,0,1,1,0],[1,0,1,1,1,1]]}', '[1,2,3,4,5,6]']);
+  const chars = '0123456789.,;-+eE[]{}":# \n\tabcxyz\\\u00e9\u{1F4A5}';
+  if (random() < 0.3) return Array.from({ length: Math.floor(random() * 60) }, () => pick([...chars])).join('');
+  const s = [...valid];
+  for (let k = Math.floor(random() * 4); k > 0; k--) {
+    const at = Math.floor(random() * (s.length + 1));
+    const op = pick(['insert', 'delete', 'replace', 'cut']);
+    if (op === 'insert') s.splice(at, 0, pick([...chars]));
+    else if (op === 'delete') s.splice(at, 1);
+    else if (op === 'replace') s[at] = pick([...chars]);
+    else s.length = at;
+  }
+  return s.join('');
+}
+
 const CALLS = [
+  (f) => importSegments(text()),
+  (f) => importSegments(text(), pick(['csv', 'json', undefined, value()])),
+  (f) => f.surface.export(pick(['csv', 'json', value()])),
+  (f) => f.congruence.export(pick(['csv', 'json', value()])),
   (f) => RuledSurface.fromSegments(value()),
   (f) => f.surface.invariants(),
   (f) => f.surface.invariantsInto(pick([value(), f.surface.invariants(), {}])),
@@ -89,10 +110,10 @@ const CALLS = [
   (f) => f.path.quality(),
 ];
 
-test('20 000 random and adversarial calls: only Errors, never a trap; the module keeps working', () => {
+test("100 000 random and adversarial calls: only Errors, never a trap; the module keeps working", () => {
   let fx = fixtures();
   let errors = 0;
-  for (let i = 0; i < 20000; i++) {
+  for (let i = 0; i < 100000; i++) {
     if (i % 500 === 0) fx = fixtures();
     const call = pick(CALLS);
     try {

@@ -1,0 +1,269 @@
+//! JSON of segments. Accepted shapes:
+//!
+//! - `[[ax, ay, az, bx, by, bz], …]`: one array of six numbers per line;
+//! - `[ax, ay, az, bx, by, bz, …]`: flat, a multiple of six numbers;
+//! - `{ "segments": <either of the above>, "rows": r, "cols": c }`: rows and cols (both or
+//!   neither) give a congruence's grid shape; other keys are ignored.
+//!
+//! A small recursive-descent parser (nesting limited to 16 levels, so hostile input cannot
+//! exhaust the stack) reports the line and column of any problem.
+
+use super::{classify, position, rust_number, Imported, NumberParser, Token, MAX_TEXT};
+use crate::error::{Error, Result};
+use crate::tolerance::MAX_RULINGS;
+
+const MAX_DEPTH: usize = 16;
+
+#[derive(Debug, Clone, PartialEq)]
+enum Value {
+    Null,
+    Bool,
+    Number(f64),
+    String(String),
+    Array(Vec<(usize, Value)>),
+    Object(Vec<(String, usize, Value)>),
+}
+
+struct Parser<'a> {
+    text: &'a str,
+    bytes: &'a [u8],
+    at: usize,
+    numbers: usize,
+    number: NumberParser<'a>,
+}
+
+impl<'a> Parser<'a> {
+    fn fail(&self, at: usize, message: impl std::fmt::Display) -> Error {
+        let (line, column) = position(self.text, at);
+        Error::parameter("json", format!("line {line}, column {column}: {message}"))
+    }
+
+    fn skip_space(&mut self) {
+        while self.at < self.bytes.len() && matches!(self.bytes[self.at], b' ' | b'\t' | b'\n' | b'\r') {
+            self.at += 1;
+        }
+    }
+
+    fn value(&mut self, depth: usize) -> Result<(usize, Value)> {
+        self.skip_space();
+        let start = self.at;
+        if depth > MAX_DEPTH {
+            return Err(self.fail(start, format!("nested deeper than {MAX_DEPTH} levels")));
+        }
+        let Some(&c) = self.bytes.get(self.at) else { return Err(self.fail(start, "unexpected end of the text")) };
+        let v = match c {
+            b'[' => {
+                self.at += 1;
+                let mut items = Vec::new();
+                self.skip_space();
+                if self.bytes.get(self.at) == Some(&b']') {
+                    self.at += 1;
+                } else {
+                    loop {
+                        items.push(self.value(depth + 1)?);
+                        self.skip_space();
+                        match self.bytes.get(self.at) {
+                            Some(b',') => self.at += 1,
+                            Some(b']') => {
+                                self.at += 1;
+                                break;
+                            }
+                            _ => return Err(self.fail(self.at, "expected , or ] in an array")),
+                        }
+                    }
+                }
+                Value::Array(items)
+            }
+            b'{' => {
+                self.at += 1;
+                let mut fields = Vec::new();
+                self.skip_space();
+                if self.bytes.get(self.at) == Some(&b'}') {
+                    self.at += 1;
+                } else {
+                    loop {
+                        self.skip_space();
+                        let key_at = self.at;
+                        let Value::String(key) = self.value(depth + 1)?.1 else {
+                            return Err(self.fail(key_at, "expected a string key"));
+                        };
+                        self.skip_space();
+                        if self.bytes.get(self.at) != Some(&b':') {
+                            return Err(self.fail(self.at, "expected : after a key"));
+                        }
+                        self.at += 1;
+                        let (at, v) = self.value(depth + 1)?;
+                        fields.push((key, at, v));
+                        self.skip_space();
+                        match self.bytes.get(self.at) {
+                            Some(b',') => self.at += 1,
+                            Some(b'}') => {
+                                self.at += 1;
+                                break;
+                            }
+                            _ => return Err(self.fail(self.at, "expected , or } in an object")),
+                        }
+                    }
+                }
+                Value::Object(fields)
+            }
+            b'"' => {
+                self.at += 1;
+                let begin = self.at;
+                while self.at < self.bytes.len() && self.bytes[self.at] != b'"' {
+                    self.at += if self.bytes[self.at] == b'\\' { 2 } else { 1 };
+                }
+                if self.at >= self.bytes.len() {
+                    return Err(self.fail(start, "unterminated string"));
+                }
+                let s = self.text.get(begin..self.at).unwrap_or("").to_string();
+                self.at += 1;
+                Value::String(s)
+            }
+            b't' | b'f' | b'n' => {
+                for word in ["true", "false", "null"] {
+                    if self.text.get(self.at..self.at + word.len()) == Some(word) {
+                        self.at += word.len();
+                        return Ok((start, if word == "null" { Value::Null } else { Value::Bool }));
+                    }
+                }
+                return Err(self.fail(start, "unexpected word"));
+            }
+            b'-' | b'0'..=b'9' => {
+                while self.at < self.bytes.len() && matches!(self.bytes[self.at], b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9') {
+                    self.at += 1;
+                }
+                let token = &self.text[start..self.at];
+                if classify(token) != Token::Number {
+                    return Err(self.fail(start, format!("\"{token}\" is not a number")));
+                }
+                let x = (self.number)(token);
+                if !x.is_finite() {
+                    return Err(self.fail(start, format!("{token} is not a finite number")));
+                }
+                self.numbers += 1;
+                if self.numbers > 6 * MAX_RULINGS {
+                    return Err(Error::TooMany { what: "numbers in the JSON", got: self.numbers, max: 6 * MAX_RULINGS });
+                }
+                Value::Number(x)
+            }
+            _ => {
+                let c = self.text[start..].chars().next().unwrap_or(' ');
+                return Err(self.fail(start, format!("unexpected character '{c}'")));
+            }
+        };
+        Ok((start, v))
+    }
+}
+
+/// Parses JSON text into flat coordinates (and a grid shape if given).
+pub fn parse(text: &str) -> Result<Imported> {
+    parse_with(text, &rust_number)
+}
+
+/// As [`parse`], converting numbers with `number` (see [`NumberParser`]).
+pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Imported> {
+    if text.len() > MAX_TEXT {
+        return Err(Error::TooMany { what: "bytes of JSON", got: text.len(), max: MAX_TEXT });
+    }
+    let mut p = Parser { text, bytes: text.as_bytes(), at: 0, numbers: 0, number };
+    let (at, root) = p.value(0)?;
+    p.skip_space();
+    if p.at < text.len() {
+        return Err(p.fail(p.at, "unexpected text after the JSON value"));
+    }
+    let (segments_at, segments, grid) = match root {
+        Value::Object(fields) => {
+            let find = |k: &str| fields.iter().find(|f| f.0 == k);
+            let Some((_, s_at, s)) = find("segments") else {
+                return Err(p.fail(at, "an object needs a \"segments\" array"));
+            };
+            let dim = |k: &str| -> Result<Option<usize>> {
+                match find(k) {
+                    None => Ok(None),
+                    Some((_, a, Value::Number(x))) if x.fract() == 0.0 && *x >= 2.0 && *x <= MAX_RULINGS as f64 => Ok(Some(*x as usize)),
+                    Some((_, a, _)) => Err(p.fail(*a, format!("\"{k}\" must be an integer from 2 to {MAX_RULINGS}"))),
+                }
+            };
+            let grid = match (dim("rows")?, dim("cols")?) {
+                (Some(r), Some(c)) => Some((r, c)),
+                (None, None) => None,
+                _ => return Err(p.fail(at, "give both \"rows\" and \"cols\", or neither")),
+            };
+            (*s_at, s.clone(), grid)
+        }
+        other => (at, other, None),
+    };
+    let Value::Array(items) = segments else {
+        return Err(p.fail(segments_at, "segments must be an array"));
+    };
+    let mut coords = Vec::with_capacity(items.len().min(6 * MAX_RULINGS));
+    let nested = matches!(items.first(), Some((_, Value::Array(_))));
+    for (item_at, item) in &items {
+        match (nested, item) {
+            (false, Value::Number(x)) => coords.push(*x),
+            (true, Value::Array(row)) => {
+                if row.len() != 6 {
+                    return Err(p.fail(*item_at, format!("a segment needs 6 numbers, found {}", row.len())));
+                }
+                for (a, v) in row {
+                    match v {
+                        Value::Number(x) => coords.push(*x),
+                        _ => return Err(p.fail(*a, "expected a number")),
+                    }
+                }
+            }
+            (true, _) => return Err(p.fail(*item_at, "expected [ax, ay, az, bx, by, bz]")),
+            (false, _) => return Err(p.fail(*item_at, "expected a number")),
+        }
+    }
+    if coords.len() % 6 != 0 {
+        return Err(p.fail(segments_at, format!("{} numbers are not a whole number of segments (6 each)", coords.len())));
+    }
+    if let Some((r, c)) = grid {
+        if r * c * 6 != coords.len() {
+            return Err(p.fail(at, format!("a {r} × {c} grid needs {} segments, found {}", r * c, coords.len() / 6)));
+        }
+    }
+    Ok(Imported { coords, grid })
+}
+
+/// Writes segments as `{ "segments": [[…], …] }`, with the grid shape if given.
+pub fn write(coords: &[f64], grid: Option<(usize, usize)>) -> String {
+    let rows: Vec<String> = coords
+        .chunks_exact(6)
+        .map(|c| format!("[{}]", c.iter().map(|x| format!("{x:?}")).collect::<Vec<_>>().join(", ")))
+        .collect();
+    let shape = grid.map_or(String::new(), |(r, c)| format!("\"rows\": {r}, \"cols\": {c}, "));
+    format!("{{ {shape}\"segments\": [\n  {}\n] }}\n", rows.join(",\n  "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn accepted_shapes_and_round_trip() {
+        let flat = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5, -1e-300, 3.0, 0.25, 1.0, 1.0];
+        assert_eq!(parse("[0,0,0,1,0,0, 0.5,-1e-300,3,0.25,1,1]").unwrap().coords, flat);
+        assert_eq!(parse(&write(&flat, None)).unwrap().coords, flat);
+        let g = parse(&write(&[flat, flat].concat(), Some((2, 2)))).unwrap();
+        assert_eq!(g.grid, Some((2, 2)));
+        assert_eq!(parse("{\"note\": \"x\", \"segments\": [[1,2,3,4,5,6]], \"v\": [true, null]}").unwrap().coords.len(), 6);
+    }
+
+    #[test]
+    fn malformed_files_name_line_and_column() {
+        let e = |t: &str| parse(t).unwrap_err().to_string();
+        assert_eq!(e("[[0,0,0,1,0,0],\n [0,0,0,1,0]]"), "json: line 2, column 2: a segment needs 6 numbers, found 5");
+        assert_eq!(e("[0,0,0,1,0,\"x\"]"), "json: line 1, column 12: expected a number");
+        assert_eq!(e("{\"segments\": [1,2,3]}"), "json: line 1, column 14: 3 numbers are not a whole number of segments (6 each)");
+        assert_eq!(e("[1,2,3,4,5,6"), "json: line 1, column 13: expected , or ] in an array");
+        assert_eq!(e("{\"rows\": 2, \"segments\": []}"), "json: line 1, column 1: give both \"rows\" and \"cols\", or neither");
+        assert!(e(&"[".repeat(100_000)).contains("nested deeper than 16 levels"));
+        assert!(e("[1e999]").contains("not a finite number"));
+        assert!(e("[1,2] x").contains("unexpected text after"));
+        assert!(e("\"abc").contains("unterminated string"));
+        assert!(e("").contains("unexpected end"));
+    }
+}

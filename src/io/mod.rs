@@ -1,0 +1,93 @@
+//! Reading segments from text: CSV (6 numbers per line) and JSON. Malformed input is rejected
+//! with the line and column of the problem; sizes are checked before anything large is
+//! allocated ([`MAX_TEXT`], and the ruling limit).
+
+pub mod csv;
+pub mod json;
+
+/// Largest text accepted by the importers (64 MiB, about a million rulings of CSV).
+pub const MAX_TEXT: usize = 64 << 20;
+
+/// Imported data: flat coordinates (6 per line) and, for a congruence, its grid shape.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Imported {
+    /// p/a then q/b per line.
+    pub coords: Vec<f64>,
+    /// (rows, cols) when the file gives a grid shape.
+    pub grid: Option<(usize, usize)>,
+}
+
+/// Converts a token that [`classify`] found to be a decimal number into an `f64`. The core
+/// uses Rust's `str::parse`; the wasm bindings pass the host's correctly rounded `parseFloat`
+/// instead, which keeps Rust's large float-parsing tables out of the wasm file. Both round
+/// correctly, so they agree to the last bit.
+pub type NumberParser<'a> = &'a dyn Fn(&str) -> f64;
+
+/// Rust's own conversion (for native use and the tests).
+pub fn rust_number(token: &str) -> f64 {
+    token.parse().unwrap_or(f64::NAN)
+}
+
+/// What a token is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Token {
+    /// A decimal number: `[+-]? digits [. digits] [(e|E) [+-] digits]` (or `.digits`).
+    Number,
+    /// NaN or an infinity, spelled as Rust or JavaScript would.
+    NonFinite,
+    /// Anything else.
+    Invalid,
+}
+
+/// Classifies a token without converting it.
+pub fn classify(token: &str) -> Token {
+    let t = token.strip_prefix(['+', '-']).unwrap_or(token);
+    if ["nan", "inf", "infinity"].iter().any(|w| t.eq_ignore_ascii_case(w)) {
+        return Token::NonFinite;
+    }
+    let (mantissa, exponent) = match t.find(['e', 'E']) {
+        Some(i) => (&t[..i], Some(&t[i + 1..])),
+        None => (t, None),
+    };
+    let (int, frac) = match mantissa.split_once('.') {
+        Some((a, b)) => (a, Some(b)),
+        None => (mantissa, None),
+    };
+    let digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+    let mantissa_ok = digits(int) && frac.is_none_or(digits) && !(int.is_empty() && frac.is_none_or(str::is_empty));
+    let exponent_ok = exponent.is_none_or(|e| {
+        let e = e.strip_prefix(['+', '-']).unwrap_or(e);
+        !e.is_empty() && digits(e)
+    });
+    if mantissa_ok && exponent_ok {
+        Token::Number
+    } else {
+        Token::Invalid
+    }
+}
+
+/// 1-based line and column of byte offset `at` in `text`.
+pub fn position(text: &str, at: usize) -> (usize, usize) {
+    let before = &text[..at.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn token_grammar() {
+        for t in ["0", "-1", "+2.5", ".5", "5.", "1e3", "1E-300", "-0.0", "123456789012345678901234567890"] {
+            assert_eq!(classify(t), Token::Number, "{t}");
+        }
+        for t in ["NaN", "inf", "-Infinity", "+INF"] {
+            assert_eq!(classify(t), Token::NonFinite, "{t}");
+        }
+        for t in ["", ".", "-", "e5", "1e", "1e+", "0x10", "1,5", "1.2.3", "--1", "1e5.5", "١"] {
+            assert_eq!(classify(t), Token::Invalid, "{t}");
+        }
+    }
+}

@@ -1,0 +1,78 @@
+//! Import and export of segments as text (CSV, JSON) for JavaScript.
+
+use super::args::{describe, fail, ObjectBuilder};
+use super::congruence::LineCongruence;
+use super::surface::RuledSurface;
+use crate::io;
+use wasm_bindgen::prelude::*;
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_TYPES: &str = r#"
+/** Segments read by `importSegments`: 6 numbers per line, and a grid shape when the file gives one. */
+export interface ImportedSegments { segments: Float64Array; rows?: number; cols?: number }
+"#;
+
+/// The host's `parseFloat` (correctly rounded), for tokens the core has checked to be decimal
+/// numbers: keeps Rust's float-parsing tables out of the wasm file.
+fn js_number(token: &str) -> f64 {
+    js_sys::parse_float(token)
+}
+
+/// Reads segments from CSV (six numbers per line, optional header, `#` comments) or JSON
+/// (`[[ax, ay, az, bx, by, bz], …]`, a flat array, or `{ segments, rows?, cols? }`).
+/// `format` defaults to JSON when the text starts with `[` or `{`, else CSV. Throws with the
+/// line and column of anything malformed; texts over 64 MiB are refused before parsing.
+#[wasm_bindgen(js_name = importSegments, unchecked_return_type = "ImportedSegments")]
+pub fn import_segments(
+    #[wasm_bindgen(unchecked_param_type = "string")] text: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\" | undefined")] format: JsValue,
+) -> Result<JsValue, JsError> {
+    const F: &str = "importSegments";
+    let Some(text) = text.as_string() else {
+        return Err(fail(F, format!("text must be a string, got {}", describe(&text))));
+    };
+    let format = if format.is_undefined() || format.is_null() {
+        if text.trim_start().starts_with(['[', '{']) { "json".to_string() } else { "csv".to_string() }
+    } else {
+        format.as_string().unwrap_or_default()
+    };
+    let imported = match format.as_str() {
+        "csv" => io::csv::parse_with(&text, &js_number),
+        "json" => io::json::parse_with(&text, &js_number),
+        other => return Err(fail(F, format!("format must be \"csv\" or \"json\", got \"{other}\""))),
+    }
+    .map_err(|e| fail(F, e))?;
+    let mut out = ObjectBuilder::new().f64s("segments", &imported.coords);
+    if let Some((r, c)) = imported.grid {
+        out = out.set("rows", r as u32).set("cols", c as u32);
+    }
+    Ok(out.build())
+}
+
+/// CSV or JSON text of flat segments (full precision, so `importSegments` reads back the same
+/// numbers).
+fn export(func: &str, format: &JsValue, flat: &[f64], grid: Option<(usize, usize)>) -> Result<String, JsError> {
+    match format.as_string().as_deref() {
+        Some("csv") => Ok(io::csv::write(flat)),
+        Some("json") => Ok(io::json::write(flat, grid)),
+        _ => Err(fail(func, format!("format must be \"csv\" or \"json\", got {}", describe(format)))),
+    }
+}
+
+#[wasm_bindgen]
+impl RuledSurface {
+    /// The segments as text: "csv" (header `ax,ay,az,bx,by,bz`) or "json"
+    /// (`{ "segments": [[…], …] }`), full precision.
+    pub fn export(&self, #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue) -> Result<String, JsError> {
+        export("RuledSurface.export", &format, self.core().flat(), None)
+    }
+}
+
+#[wasm_bindgen]
+impl LineCongruence {
+    /// The lines as text: "json" (`{ "rows", "cols", "segments": [[…], …] }`) or "csv"
+    /// (row-major, the grid shape is not kept).
+    pub fn export(&self, #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue) -> Result<String, JsError> {
+        export("LineCongruence.export", &format, self.core().flat(), Some((self.core().rows(), self.core().cols())))
+    }
+}
