@@ -24,8 +24,11 @@ const TYPES = {
   '.md': 'text/markdown; charset=utf-8',
 };
 
-/** Serves `root` on `host:port` (port 0: any free port). Resolves to { server, url }. */
-export function startServer({ root = ROOT, port = 0, host = '127.0.0.1' } = {}) {
+/**
+ * Serves `root` on `host:port` (port 0: any free port), adding `headers` to every response
+ * (e.g. a Content-Security-Policy). Resolves to { server, url }.
+ */
+export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers = {} } = {}) {
   const server = createServer((req, res) => {
     let path;
     try {
@@ -55,6 +58,7 @@ export function startServer({ root = ROOT, port = 0, host = '127.0.0.1' } = {}) 
       'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
       'content-length': stat.size,
       'cache-control': 'no-cache',
+      ...headers,
     });
     createReadStream(file).pipe(res);
   });

@@ -32,6 +32,10 @@ if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modu
 fi
 
 if [ "${1:-}" = "--browser" ]; then
+  if ! command -v cargo-fuzz >/dev/null; then
+    say "installing cargo-fuzz (about a minute once)"
+    cargo install cargo-fuzz --version 0.13.2
+  fi
   if ! command -v chromium >/dev/null || ! command -v chromedriver >/dev/null; then
     say "installing Debian's chromium and chromium-driver"
     sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"

@@ -4,6 +4,7 @@
 #   2. wasm: the same integration tests and the bindings tests in headless Chromium
 #   3. Node: the built package's JS API
 #   4. the page in headless Chromium (playwright-core driving Debian's chromium)
+#   5. short runs of the cargo-fuzz targets (fuzz/)
 # Exits non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,3 +30,6 @@ node --expose-gc --test tests/node/*.test.mjs
 
 step "page: headless Chromium"
 node --test tests/page/*.test.mjs
+
+step "fuzz: short runs of every cargo-fuzz target"
+bash scripts/fuzz.sh 5

@@ -140,3 +140,87 @@ fn footpoints_minimise_the_distance() {
     }
     assert_near!(d, inv.distance[0].abs(), EXACT);
 }
+
+mod schemes {
+    //! Every subdivision scheme and every isometry commutes with rigid motions.
+    use super::*;
+    use ruledlab::congruence::{subdivide as refine_congruence, CongruenceScheme, LineCongruence};
+    use ruledlab::ruled::{Development, HingeChain};
+    use ruledlab::subdivision::{subdivide_strip, Scheme, Variant};
+
+    fn same(a: &[DVec3], b: &[DVec3]) {
+        assert_eq!(a.len(), b.len());
+        for (p, q) in a.iter().zip(b) {
+            assert_near!(*p, *q, TOL);
+        }
+    }
+
+    fn schemes() -> Vec<Scheme> {
+        vec![
+            Scheme::Chaikin,
+            Scheme::BSpline { degree: 3 },
+            Scheme::Bezier,
+            Scheme::FourPoint { w: 1.0 / 16.0 },
+            Scheme::Variational { n: 5, variant: Variant::Coupled },
+            Scheme::Variational { n: 5, variant: Variant::Averaged },
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        #[test]
+        fn strip_schemes_commute_with_rigid_motions(s in surface(), m in motion()) {
+            let moved = s.map_points(|p| m.transform_point3(p)).unwrap();
+            for scheme in schemes() {
+                let (Ok(a), Ok(b)) = (subdivide_strip(&s, scheme, false, 1), subdivide_strip(&moved, scheme, false, 1)) else { continue };
+                let image: Vec<DVec3> = a.points().iter().map(|&p| m.transform_point3(p)).collect();
+                same(&image, b.points());
+            }
+        }
+
+        #[test]
+        fn interpolatory_schemes_keep_old_rulings_bit_for_bit(s in surface()) {
+            for scheme in [Scheme::FourPoint { w: 0.07 }, Scheme::Variational { n: 7, variant: Variant::Coupled }] {
+                let Ok(r) = subdivide_strip(&s, scheme, false, 2) else { continue };
+                for i in 0..s.len() {
+                    prop_assert_eq!(r.segment(4 * i), s.segment(i));
+                }
+            }
+        }
+
+        #[test]
+        fn isometries_commute_with_rigid_motions_and_keep_lengths(s in surface(), m in motion(), t in 0.0..1.0f64) {
+            let moved = s.map_points(|p| m.transform_point3(p)).unwrap();
+            let (a, b) = (HingeChain::new(&s).bend(t).unwrap(), HingeChain::new(&moved).bend(t).unwrap());
+            let image: Vec<DVec3> = a.points().iter().map(|&p| m.transform_point3(p)).collect();
+            same(&image, b.points());
+            // lengths of the a-polygon and of each ruling are kept
+            for i in 0..s.len() {
+                assert_near!(a.segment(i).length(), s.segment(i).length(), EXACT);
+                if i + 1 < s.len() {
+                    assert_near!((a.segment(i + 1).a - a.segment(i).a).length(), (s.segment(i + 1).a - s.segment(i).a).length(), 1e-11);
+                }
+            }
+            // the development and the measure are invariant
+            let (d0, d1) = (Development::of(&s), Development::of(&moved));
+            assert_near!(d0.non_developability(), d1.non_developability(), TOL);
+            for (p, q) in d0.points.iter().zip(&d1.points) {
+                assert_near!(*p, *q, TOL);
+            }
+        }
+
+        #[test]
+        fn congruence_schemes_commute_with_rigid_motions(grid in prop::collection::vec(vec3(), 9), m in motion()) {
+            let p: Vec<DVec3> = (0..9).map(|k| DVec3::new((k / 3) as f64, (k % 3) as f64, 0.0) + 0.2 * grid[k]).collect();
+            let q: Vec<DVec3> = p.iter().zip(&grid).map(|(a, g)| *a + DVec3::new(0.1 * g.x, 0.1 * g.y, 1.0)).collect();
+            let c = LineCongruence::from_points(3, 3, &p, &q).unwrap();
+            let moved = LineCongruence::from_points(3, 3, &p.iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(), &q.iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>()).unwrap();
+            for scheme in [CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, CongruenceScheme::TwoStage { k: 4 }, CongruenceScheme::Coupled { k: 4 }] {
+                let (a, b) = (refine_congruence(&c, scheme, 1).unwrap(), refine_congruence(&moved, scheme, 1).unwrap());
+                same(&a.p().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(), &b.p());
+                same(&a.q().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(), &b.q());
+            }
+        }
+    }
+}

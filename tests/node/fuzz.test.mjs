@@ -113,6 +113,8 @@ const CALLS = [
 test("100 000 random and adversarial calls: only Errors, never a trap; the module keeps working", () => {
   let fx = fixtures();
   let errors = 0;
+  const probe = RuledSurface.fromSegments(new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1]));
+  const probeAngle = probe.invariants().angle[0];
   for (let i = 0; i < 100000; i++) {
     if (i % 500 === 0) fx = fixtures();
     const call = pick(CALLS);
@@ -124,6 +126,8 @@ test("100 000 random and adversarial calls: only Errors, never a trap; the modul
       assert.ok(e instanceof Error, `not an Error: ${e}`);
       assert.ok(e.message.length > 10, `unclear message: ${e.message}`);
       errors++;
+      // the module keeps working after every error
+      assert.equal(probe.invariants().angle[0], probeAngle);
     }
   }
   // still working

@@ -15,13 +15,13 @@ export const scene = {
   title: 'Large models in a Web Worker',
   params: [
     { key: 'n', label: 'Rulings N', type: 'range', min: 100, max: 10000, step: 100, value: 10000 },
-    { key: 'steps', label: 'Four-point steps', type: 'range', min: 0, max: 6, step: 1, value: 0 },
+    { key: 'steps', label: 'Four-point steps', type: 'range', min: 0, max: 7, step: 1, value: 0 },
     { key: 'rulings', label: 'Draw every ruling', type: 'checkbox', value: false },
   ],
   text: `
 <h2>Large models</h2>
-<p>A helicoid of up to 10 000 rulings, refined by up to six steps of the four-point scheme: up to
-640 000 rulings. Small jobs are computed at once; anything larger runs in a Web Worker with its
+<p>A helicoid of up to 10 000 rulings, refined by up to seven steps of the four-point scheme: up to
+1 280 000 rulings (the library's limit is 4 194 304 per surface, refused with a clear message above). Small jobs are computed at once; anything larger runs in a Web Worker with its
 own copy of the WebAssembly module, so the page keeps drawing and answering while a progress bar
 fills. The geometry crosses between threads as one typed array, never as per-ruling objects.</p>`,
 

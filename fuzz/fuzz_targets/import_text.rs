@@ -1,0 +1,9 @@
+//! The CSV and JSON importers on arbitrary text: never a panic.
+#![no_main]
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    let text = String::from_utf8_lossy(data);
+    let _ = ruledlab::io::csv::parse(&text);
+    let _ = ruledlab::io::json::parse(&text);
+});

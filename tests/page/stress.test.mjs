@@ -1,0 +1,92 @@
+// The page under stress and under a strict Content Security Policy.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { startServer } from '../../scripts/serve.mjs';
+import { launch, watch, shoot, framesAfter } from './browser.mjs';
+import { countDifferent } from './png.mjs';
+
+const BACKGROUND = [251, 250, 247];
+const CSP = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' blob: data:";
+let server, url, browser;
+
+before(async () => {
+  ({ server, url } = await startServer({ headers: { 'content-security-policy': CSP } }));
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+async function open(hash = '') {
+  const page = await browser.newPage();
+  const problems = watch(page);
+  const requests = [];
+  page.on('request', (r) => requests.push(r.url()));
+  await page.goto(url + hash);
+  const frames = await framesAfter(page, 0);
+  return { page, problems, requests, frames };
+}
+
+test('every scene works under a strict CSP and requests nothing but its own files', async () => {
+  const origin = new URL(url).origin;
+  const first = await open();
+  const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
+  await first.page.close();
+  const all = [...first.requests];
+  const problems = [...first.problems];
+  for (const id of scenes) {
+    const { page, problems: p, requests } = await open(`#scene=${id}`);
+    const image = await shoot(page, `csp-${id}`);
+    assert.ok(countDifferent(image, BACKGROUND) > 0.005 * image.width * image.height, `${id} drew nothing under the CSP`);
+    all.push(...requests);
+    problems.push(...p);
+    await page.close();
+  }
+  assert.deepEqual(problems, []);
+  const foreign = all.filter((u) => !u.startsWith(origin) && !u.startsWith('blob:') && !u.startsWith('data:'));
+  assert.deepEqual(foreign, [], 'requests outside the page’s own files');
+});
+
+test('a storm of resizes and rapid slider input leave the page consistent and error-free', async () => {
+  const { page, problems } = await open('#scene=striction');
+  for (let k = 0; k < 40; k++) await page.setViewportSize({ width: 500 + ((k * 97) % 900), height: 400 + ((k * 53) % 500) });
+  await page.setViewportSize({ width: 1200, height: 800 });
+  for (let k = 0; k < 60; k++) await page.locator('#param-n').fill(String(6 + ((k * 37) % 150)), { timeout: 2000 });
+  const f = await page.evaluate(() => Number(document.body.dataset.frames));
+  await page.locator('#param-n').fill('77');
+  await framesAfter(page, f);
+  const size = await page.evaluate(() => {
+    const c = document.getElementById('view');
+    return { w: c.width, h: c.height, cw: Math.round(c.clientWidth * devicePixelRatio), ch: Math.round(c.clientHeight * devicePixelRatio) };
+  });
+  assert.deepEqual([size.w, size.h], [size.cw, size.ch], 'the canvas follows its size');
+  assert.match(await page.locator('#readout').innerText(), /\b77\b/);
+  await page.waitForFunction(() => /n=77/.test(location.hash));
+  const image = await shoot(page, 'stress-after');
+  assert.ok(countDifferent(image, BACKGROUND) > 0.05 * image.width * image.height);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('1 280 000 rulings are refined and drawn without freezing the page', async () => {
+  const { page, problems, frames } = await open('#scene=large&n=10000&steps=7');
+  await page.waitForFunction(() => document.body.dataset.busy === '1' || Number(document.body.dataset.frames) > 0);
+  const ticks = await page.evaluate(
+    () => new Promise((resolve) => {
+      let n = 0;
+      const t0 = performance.now();
+      const tick = () => (performance.now() - t0 < 500 ? (n++, requestAnimationFrame(tick)) : resolve(n));
+      requestAnimationFrame(tick);
+    }),
+  );
+  console.log(`# ${ticks} animation frames in 500 ms while 1.28 M rulings are computed`);
+  assert.ok(ticks >= 4, `the page froze: ${ticks} frames in 500 ms`);
+  await page.waitForFunction(() => !document.body.dataset.busy, null, { timeout: 180000 });
+  await framesAfter(page, frames);
+  assert.match(await page.locator('#readout').innerText(), /1279873/);
+  const image = await shoot(page, 'large-1280k');
+  assert.ok(countDifferent(image, BACKGROUND) > 0.02 * image.width * image.height);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
