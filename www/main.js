@@ -3,18 +3,8 @@
 import init from '../pkg/ruledlab.js';
 import { Viewer } from './viewer.js';
 import { COLORS, css } from './theme.js';
-import { scene as notation } from './scenes/notation.js';
-import { scene as striction } from './scenes/striction.js';
-import { scene as convergence } from './scenes/convergence.js';
-import { scene as isometry } from './scenes/isometry.js';
-import { scene as curves } from './scenes/curves.js';
-import { scene as strip } from './scenes/strip.js';
-import { scene as congruence } from './scenes/congruence.js';
-import { scene as milling } from './scenes/milling.js';
-import { scene as lines } from './scenes/lines.js';
-import { scene as large } from './scenes/large.js';
+import { SCENES } from './scenes/index.js';
 
-const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling, lines, large];
 
 const $ = (id) => document.getElementById(id);
 
@@ -28,7 +18,7 @@ export function readHash(hash = location.hash) {
     params[p.key] = raw === null ? p.value : parseParam(p, raw);
   }
   const view = (q.get('view') ?? '').split(',').map(Number);
-  return { scene, params, view: view.length === 6 && view.every(Number.isFinite) ? view : null };
+  return { scene, params, view: view.length === 6 && view.every(Number.isFinite) ? view : null, embed: q.has('embed') };
 }
 
 function parseParam(p, raw) {
@@ -40,8 +30,9 @@ function parseParam(p, raw) {
   return raw;
 }
 
-function writeHash({ scene, params }, camera) {
-  const q = new URLSearchParams({ scene: scene.id });
+function writeHash({ scene, params, embed }, camera) {
+  const q = new URLSearchParams(embed ? { embed: '' } : {});
+  q.set('scene', scene.id);
   for (const p of scene.params) q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : params[p.key]);
   const { yaw, pitch, distance, target } = camera;
   q.set('view', [yaw, pitch, distance, ...target].map((x) => Number(x.toPrecision(6))).join(','));
@@ -157,7 +148,9 @@ async function main() {
   await init({ module_or_path: new URL('../pkg/ruledlab_bg.wasm', import.meta.url) });
   const viewer = new Viewer($('view'));
   const initial = readHash();
-  const state = { scene: initial.scene, params: initial.params };
+  const state = { scene: initial.scene, params: initial.params, embed: initial.embed };
+  // #embed: the view alone, without header and panel, for iframes
+  document.body.classList.toggle('embed', initial.embed);
   const picker = $('scene');
   for (const s of SCENES) picker.add(new Option(s.title, s.id));
 
