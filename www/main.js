@@ -1,6 +1,8 @@
 // The page: loads the wasm core, builds the controls of the current scene, keeps the scene
 // and its parameters in the URL hash, and redraws when anything changes.
-import init from '../pkg/ruledlab.js';
+import init, { importSegments } from '../pkg/ruledlab.js';
+import { imported } from './scenes/data.js';
+import { obj, segmentsText, invariantsJson, png } from './exporters.js';
 import { Viewer } from './viewer.js';
 import { COLORS, css } from './theme.js';
 import { SCENES } from './scenes/index.js';
@@ -123,16 +125,20 @@ function showReadout(readout, extraLabels = {}) {
   );
 }
 
+/** Downloads `content` (a string or a Blob) as `filename`. */
+function download(filename, content, type = 'text/plain') {
+  const blob = content instanceof Blob ? content : new Blob([content], { type });
+  const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(blob), download: filename });
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}
+
 /** Buttons that download text the scene made (exports). */
 function showActions(actions) {
   $('actions').replaceChildren(
     ...actions.map(({ label, filename, content, type }) => {
       const button = Object.assign(document.createElement('button'), { type: 'button', textContent: label });
-      button.addEventListener('click', () => {
-        const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(new Blob([content], { type })), download: filename });
-        a.click();
-        setTimeout(() => URL.revokeObjectURL(a.href), 1000);
-      });
+      button.addEventListener('click', () => download(filename, content, type));
       return button;
     }),
   );
@@ -160,6 +166,7 @@ async function main() {
     hashTimer = setTimeout(() => writeHash(state, viewer.camera), 150);
   };
   let generation = 0;
+  let current = null;
   const update = ({ fit = false, view = null } = {}) => {
     const mine = ++generation;
     try {
@@ -194,6 +201,11 @@ async function main() {
       $('figure').innerHTML = built.figure ?? '';
       $('figure').hidden = !built.figure;
       showActions(built.actions ?? []);
+      current = built;
+      for (const b of document.querySelectorAll('#exports button')) {
+        b.disabled = b.dataset.export === 'svg' ? !built.figure : ['obj', 'csv', 'json', 'invariants'].includes(b.dataset.export) && !built.data;
+      }
+      if (built.data?.grid) document.querySelector('[data-export="invariants"]').disabled = true;
       showLegend(state.scene, state.params);
       showError(null);
     } catch (e) {
@@ -233,6 +245,38 @@ async function main() {
   picker.addEventListener('change', () => enter(readHash(`scene=${picker.value}`)));
   window.addEventListener('hashchange', () => enter(readHash()));
   viewer.onCameraChange = saveHash;
+
+  // import: pasted text or an uploaded file, shown in the "Your data" scene
+  const showImport = (text) => {
+    try {
+      const got = importSegments(text);
+      Object.assign(imported, { segments: got.segments, rows: got.rows, cols: got.cols });
+      const next = readHash('scene=data');
+      enter(next);
+    } catch (e) {
+      showError(e);
+    }
+  };
+  $('import-button').addEventListener('click', () => showImport($('import-text').value));
+  $('import-file').addEventListener('change', async (e) => {
+    const file = e.target.files?.[0];
+    if (file) showImport(await file.text());
+  });
+  // exports of the current scene
+  $('exports').addEventListener('click', async (e) => {
+    const kind = e.target.dataset?.export;
+    if (!kind || !current) return;
+    const name = state.scene.id;
+    try {
+      if (kind === 'png') download(`${name}.png`, await png(viewer));
+      else if (kind === 'svg') download(`${name}.svg`, current.figure.replace('<svg ', '<svg xmlns="http://www.w3.org/2000/svg" '), 'image/svg+xml');
+      else if (kind === 'obj') download(`${name}.obj`, obj(current.data.segments, { faces: !current.data.grid, name }), 'model/obj');
+      else if (kind === 'csv' || kind === 'json') download(`${name}.${kind}`, segmentsText(current.data.segments, kind, current.data.grid), kind === 'csv' ? 'text/csv' : 'application/json');
+      else if (kind === 'invariants') download(`${name}-invariants.json`, invariantsJson(current.data.segments), 'application/json');
+    } catch (err) {
+      showError(err);
+    }
+  });
   $('fit').addEventListener('click', () => {
     viewer.camera.reset();
     viewer.requestRender();

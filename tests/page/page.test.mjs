@@ -205,3 +205,57 @@ test('large models: a 10⁴-ruling slider update, and 640 000 rulings refined in
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('import: malformed files are reported with line and column; a valid file is shown and exported back', async () => {
+  const { page, problems } = await open();
+  await page.locator('.io summary').click();
+  await page.locator('#import-text').fill('ax,ay,az,bx,by,bz\n0,0,0,1,0,0\n0,0,1,0,1\n');
+  await page.locator('#import-button').click();
+  assert.match(await page.locator('#error').innerText(), /line 3, column 10: expected 6 numbers/);
+  const csv = '0,0,0,1,0,0\n0,0,0.5,0.6,0.8,0.5\n0,0,1,0,1,1\n0,0,1.5,-0.6,0.8,1.5\n';
+  await page.locator('#import-text').fill(csv);
+  await page.locator('#import-button').click();
+  await page.waitForFunction(() => location.hash.includes('scene=data'));
+  assert.equal(await page.locator('#error').isHidden(), true);
+  assert.match(await page.locator('#readout').innerText(), /rulings N\s+4/);
+  const save = async (kind) => {
+    const [d] = await Promise.all([page.waitForEvent('download'), page.locator(`[data-export="${kind}"]`).click()]);
+    const chunks = [];
+    for await (const c of await d.createReadStream()) chunks.push(c);
+    return { name: d.suggestedFilename(), body: Buffer.concat(chunks) };
+  };
+  // CSV round trip: the same numbers come back
+  const back = await save('csv');
+  const numbers = (t) => t.trim().split('\n').filter((l) => /^[-\d]/.test(l)).flatMap((l) => l.split(',').map(Number));
+  assert.deepEqual(numbers(back.body.toString()), numbers(csv));
+  const objFile = (await save('obj')).body.toString();
+  assert.equal(objFile.split('\n').filter((l) => l.startsWith('v ')).length, 8);
+  assert.equal(objFile.split('\n').filter((l) => l.startsWith('l ')).length, 4);
+  assert.equal(objFile.split('\n').filter((l) => l.startsWith('f ')).length, 3);
+  const inv = JSON.parse((await save('invariants')).body.toString());
+  assert.equal(inv.angle.length, 3);
+  const image = (await save('png')).body;
+  assert.equal(image.subarray(1, 4).toString(), 'PNG');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('SVG exports: the convergence plot and the development of Fig. 6', async () => {
+  const { page, problems } = await open('#scene=convergence');
+  await page.locator('.io summary').click();
+  const [plot] = await Promise.all([page.waitForEvent('download'), page.locator('[data-export="svg"]').click()]);
+  const read = async (d) => {
+    const chunks = [];
+    for await (const c of await d.createReadStream()) chunks.push(c);
+    return Buffer.concat(chunks).toString();
+  };
+  assert.match(await read(plot), /^<svg xmlns="http:\/\/www.w3.org\/2000\/svg"[^>]*>.*polyline/s);
+  const second = await open('#scene=isometry&view=panels&surface=cone');
+  const [dev] = await Promise.all([second.page.waitForEvent('download'), second.page.getByRole('button', { name: 'Download development (SVG)' }).click()]);
+  const svg = await read(dev);
+  assert.match(svg, /<title>Approximate development/);
+  assert.ok((svg.match(/<line /g) ?? []).length === 24, 'one line per ruling of the cone');
+  assert.deepEqual([...problems, ...second.problems], []);
+  await page.close();
+  await second.page.close();
+});

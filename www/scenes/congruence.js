@@ -52,6 +52,8 @@ is the most accurate of all on these examples.</p>`,
       : { scheme: 'variational', variant: p.scheme, K: 6, steps: p.steps };
     const refined = grid.subdivide(options);
     const original = grid.segmentsF32();
+    const refinedF64 = refined.segments();
+    const shape = { rows: refined.rows, cols: refined.cols };
     const all = refined.segmentsF32();
     // Inserted lines: every line of the diagonal set, or the refined lines not on the old grid.
     const stride = 2 ** p.steps;
@@ -86,6 +88,7 @@ is the most accurate of all on these examples.</p>`,
       bounds: bounds(all, original),
       camera: { yaw: -2.1, pitch: 0.85 },
       readout,
+      data: { segments: refinedF64, grid: shape },
       readoutLabels: { lines: 'lines shown' },
       build(gl) {
         const layers = [

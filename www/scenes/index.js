@@ -9,5 +9,6 @@ import { scene as congruence } from './congruence.js';
 import { scene as milling } from './milling.js';
 import { scene as lines } from './lines.js';
 import { scene as large } from './large.js';
+import { scene as data } from './data.js';
 
-export const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling, lines, large];
+export const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling, lines, large, data];

@@ -8,6 +8,7 @@ import { stripMesh } from '../gl/mesh.js';
 import { bounds, cross, normalize } from '../math.js';
 import { dropNonFinite, lift2d, maxRelativeEdgeChange, polylineSegments, toFrame } from '../geometry.js';
 import { COLORS } from '../theme.js';
+import { developmentSvg } from '../exporters.js';
 import { text } from './isometry-text.js';
 
 const SURFACES = [
@@ -54,6 +55,7 @@ export const scene = {
     const z = [...inv.centralNormal.subarray(0, 3)];
     const frame = { origin, x, y: cross(z, x), z };
 
+    const development = surface.development();
     const bent = surface.bend(p.view === 'panels' ? 1 : p.t);
     const bentSegs = bent.segments();
     const bentInv = bent.invariants();
@@ -80,6 +82,10 @@ export const scene = {
       panels.push(panel(toFrame(bentSegs, frame), polylineSegments(toFrame(bentInv.striction, frame)), normals));
       if (p.ghost && p.t > 0) panels.push({ ghost: toFrame(input, frame) });
     }
+    // the striction image in the development: the conoidal model's footpoints, projected
+    const conoidal = surface.conoidal();
+    const strictionImage = projectFeet(conoidal.invariants().footpoints, frame);
+    conoidal.free();
     surface.free();
     bent.free();
     const all = panels.flatMap((q) => [q.segments ?? q.ghost]);
@@ -87,6 +93,8 @@ export const scene = {
       bounds: bounds(...all),
       camera: p.view === 'panels' ? { yaw: -Math.PI / 2, pitch: 0.8 } : { yaw: -1.2, pitch: 0.45 },
       readout,
+      data: { segments: bentSegs },
+      actions: [{ label: 'Download development (SVG)', filename: `development-${p.surface}.svg`, content: developmentSvg(development, strictionImage), type: 'image/svg+xml' }],
       build(gl) {
         const layers = [];
         for (const q of panels) {

@@ -70,6 +70,7 @@ scheme turned because of the slide.</p>`,
     const lines0 = base.subdivide({ ...options, space: 'lines', length }).segments();
     const endsSeg = ends.segmentsF32();
     const linesSeg = lines.segmentsF32();
+    const linesF64 = lines.segments();
     const readout = { endpointTurn: maxAngle(ends0, ends.segments()), lineTurn: maxAngle(lines0, lines.segments()) };
     const given = slid.segmentsF32();
     for (const o of [base, slid, ends, lines]) o.free();
@@ -77,6 +78,7 @@ scheme turned because of the slide.</p>`,
       bounds: bounds(seg0, linesSeg),
       camera: { yaw: -1.3, pitch: 0.45 },
       readout,
+      data: { segments: linesF64 },
       readoutLabels: { endpointTurn: 'endpoint scheme: new rulings turned by (rad)', lineTurn: 'line-space scheme: turned by (rad)' },
       build(gl) {
         return [

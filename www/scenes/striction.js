@@ -65,6 +65,7 @@ export const scene = {
     return {
       bounds: bounds(segments),
       readout,
+      data: { segments },
       build(gl) {
         const layers = [new LineBatch(gl, segmentsF32, { color: COLORS.ruling, width: 1.6 })];
         if (p.normals) {

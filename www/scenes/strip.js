@@ -67,6 +67,7 @@ exact surface.</p>`,
       bounds: bounds(old),
       camera: { yaw: -2.2, pitch: 0.5 },
       readout: { rulings: seg.length / 6, insertedDistance: distance },
+      data: { segments: seg },
       build(gl) {
         const layers = [
           new LineBatch(gl, old, { color: COLORS.ruling, width: 2 }),
