@@ -35,6 +35,23 @@ export function invariantsJson(segments) {
   }
 }
 
+/** The invariants of Section 2 as CSV, one row per pair of consecutive rulings. */
+export function invariantsCsv(segments) {
+  const s = RuledSurface.fromSegments(segments instanceof Float64Array ? segments : new Float64Array(segments));
+  try {
+    const inv = s.invariants();
+    const rows = ['pair,angle,distance,distribution,f0x,f0y,f0z,f1x,f1y,f1z,nx,ny,nz,parallel'];
+    for (let i = 0; i < inv.angle.length; i++) {
+      const f = Array.from(inv.footpoints.subarray(6 * i, 6 * i + 6));
+      const n = Array.from(inv.centralNormal.subarray(3 * i, 3 * i + 3));
+      rows.push([i, inv.angle[i], inv.distance[i], inv.distribution[i], ...f, ...n, inv.parallel[i]].join(','));
+    }
+    return rows.join('\n') + '\n';
+  } finally {
+    s.free();
+  }
+}
+
 /** A development (x, y of a'_i then b'_i per ruling) as SVG: rulings and the striction image. */
 export function developmentSvg(points, strictionPoints = null) {
   const xs = [], ys = [];

@@ -2,7 +2,7 @@
 // and its parameters in the URL hash, and redraws when anything changes.
 import init, { importSegments } from '../pkg/ruledlab.js';
 import { imported } from './scenes/data.js';
-import { obj, segmentsText, invariantsJson, png } from './exporters.js';
+import { obj, segmentsText, invariantsJson, invariantsCsv, png } from './exporters.js';
 import { Viewer } from './viewer.js';
 import { COLORS, css } from './theme.js';
 import { SCENES } from './scenes/index.js';
@@ -203,9 +203,9 @@ async function main() {
       showActions(built.actions ?? []);
       current = built;
       for (const b of document.querySelectorAll('#exports button')) {
-        b.disabled = b.dataset.export === 'svg' ? !built.figure : ['obj', 'csv', 'json', 'invariants'].includes(b.dataset.export) && !built.data;
+        b.disabled = b.dataset.export === 'svg' ? !built.figure : ['obj', 'csv', 'json', 'invariants', 'invariants-csv'].includes(b.dataset.export) && !built.data;
       }
-      if (built.data?.grid) document.querySelector('[data-export="invariants"]').disabled = true;
+      if (built.data?.grid) for (const k of ['invariants', 'invariants-csv']) document.querySelector(`[data-export="${k}"]`).disabled = true;
       showLegend(state.scene, state.params);
       showError(null);
     } catch (e) {
@@ -273,6 +273,7 @@ async function main() {
       else if (kind === 'obj') download(`${name}.obj`, obj(current.data.segments, { faces: !current.data.grid, name }), 'model/obj');
       else if (kind === 'csv' || kind === 'json') download(`${name}.${kind}`, segmentsText(current.data.segments, kind, current.data.grid), kind === 'csv' ? 'text/csv' : 'application/json');
       else if (kind === 'invariants') download(`${name}-invariants.json`, invariantsJson(current.data.segments), 'application/json');
+      else if (kind === 'invariants-csv') download(`${name}-invariants.csv`, invariantsCsv(current.data.segments), 'text/csv');
     } catch (err) {
       showError(err);
     }

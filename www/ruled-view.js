@@ -4,8 +4,10 @@
 //   <ruled-view scene="isometry" params="surface=helical&t=0.5" style="height: 400px"></ruled-view>
 //
 // Attributes (also properties): `scene` (a scene id: striction, notation, convergence, isometry,
-// curves, strip, congruence, milling, lines, large) and `params` (the scene's parameters as a
-// query string; omitted ones take their defaults). Several instances may share a page; each has
+// curves, strip, congruence, milling, lines, large, data) and `params` (the scene's parameters as
+// a query string; omitted ones take their defaults). The property `data` ({ segments:
+// Float64Array, rows?, cols? }, e.g. from importSegments) shows your own rulings or congruence
+// (it selects the "data" scene). Several instances may share a page; each has
 // its own WebGL context and camera. Events: `scene-change` (detail: { scene, params }) after
 // every rebuild, `view-change` (detail: { yaw, pitch, distance, target }) when the camera moves.
 import init from '../pkg/ruledlab.js';
@@ -48,6 +50,16 @@ export class RuledView extends HTMLElement {
   set scene(id) {
     this.setAttribute('scene', id);
   }
+  /** Your own segments: { segments: Float64Array (6 per line), rows?, cols? }. */
+  get data() {
+    return this._data ?? null;
+  }
+  set data(value) {
+    this._data = value;
+    if (this.scene !== 'data') this.scene = 'data';
+    else if (this.viewer) this.rebuild(true);
+  }
+
   get params() {
     return this.getAttribute('params') ?? '';
   }
@@ -84,7 +96,7 @@ export class RuledView extends HTMLElement {
         const raw = q.get(p.key);
         params[p.key] = raw === null ? p.value : p.type === 'checkbox' ? raw === '1' || raw === 'true' : p.type === 'range' ? Math.min(p.max, Math.max(p.min, Number(raw))) : raw;
       }
-      const built = scene.create(params);
+      const built = scene.id === 'data' && this._data ? scene.create(params, this._data) : scene.create(params);
       this.viewer.setScene(built, { fit });
       built.later?.(() => {}).then((done) => this.viewer.setScene(done)).catch(() => {});
       this.shadowRoot.querySelector('.legend').replaceChildren(

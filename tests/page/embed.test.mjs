@@ -58,6 +58,15 @@ test('two <ruled-view> elements on one page draw independently and announce chan
   assert.equal(detail.scene, 'isometry');
   assert.equal(detail.params.surface, 'quartic');
   assert.equal(detail.params.t, 0.5);
+  // data as a property: the element shows those rulings
+  const frames = await page.evaluate(() => Number(document.getElementById('right').dataset.frames));
+  await page.evaluate(() => {
+    document.getElementById('right').data = { segments: new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, -1, 0, 2]) };
+  });
+  await page.waitForFunction((n) => Number(document.getElementById('right').dataset.frames) > n, frames);
+  assert.equal(await page.locator('#right').getAttribute('scene'), 'data');
+  const shown = await grab(page.locator('#right'), 'component-data');
+  assert.ok(countDifferent(shown, BACKGROUND) > 0.01 * shown.width * shown.height);
   // an unknown scene is shown as an error inside the element, not thrown
   await page.evaluate(() => (document.getElementById('right').scene = 'nope'));
   assert.match(await page.locator('#right').evaluate((v) => v.shadowRoot.querySelector('.error').textContent), /unknown scene "nope"/);

@@ -234,6 +234,9 @@ test('import: malformed files are reported with line and column; a valid file is
   assert.equal(objFile.split('\n').filter((l) => l.startsWith('f ')).length, 3);
   const inv = JSON.parse((await save('invariants')).body.toString());
   assert.equal(inv.angle.length, 3);
+  const invCsv = (await save('invariants-csv')).body.toString().trim().split('\n');
+  assert.equal(invCsv.length, 4);
+  assert.equal(Number(invCsv[1].split(',')[1]), inv.angle[0]);
   const image = (await save('png')).body;
   assert.equal(image.subarray(1, 4).toString(), 'PNG');
   assert.deepEqual(problems, []);

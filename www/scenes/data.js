@@ -22,8 +22,9 @@ is fine) or JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, or
 rejected with the line and column of the problem. A ruled surface is shown with its striction
 polygon and common perpendiculars; the export buttons save it again, or its invariants.</p>`,
 
-  create(p) {
-    const { segments, rows, cols } = imported;
+  /** `source` defaults to the page's import; a <ruled-view> passes its own `data`. */
+  create(p, source = imported) {
+    const { segments, rows, cols } = source;
     if (rows && cols) {
       const c = LineCongruence.fromGrid(rows, cols, segments);
       const seg = c.segmentsF32();
