@@ -1,5 +1,7 @@
 // Launching Debian's Chromium through playwright-core, and watching a page for problems.
+import { before, after } from 'node:test';
 import { chromium } from 'playwright-core';
+import { startServer } from '../../scripts/serve.mjs';
 import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -51,4 +53,33 @@ export async function framesAfter(page, after = 0) {
   // one more animation frame so the compositor has the new picture
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   return page.evaluate(() => Number(document.body.dataset.frames));
+}
+
+/**
+ * A server (with extra response `headers`) and a browser for one test file, started before and
+ * closed after its tests. `session.open(path)` opens a fresh page at `url + path`, watching it
+ * for problems and recording its requests, and waits for the first drawn frame unless
+ * `wait: false`.
+ */
+export function pageSession({ headers = {} } = {}) {
+  const session = { url: null, browser: null };
+  let server;
+  before(async () => {
+    ({ server, url: session.url } = await startServer({ headers }));
+    session.browser = await launch();
+  });
+  after(async () => {
+    await session.browser?.close();
+    server?.close();
+  });
+  session.open = async (path = '', { wait = true } = {}) => {
+    const page = await session.browser.newPage();
+    const problems = watch(page);
+    const requests = [];
+    page.on('request', (r) => requests.push(r.url()));
+    await page.goto(session.url + path);
+    const frames = wait ? await framesAfter(page, 0) : 0;
+    return { page, problems, requests, frames };
+  };
+  return session;
 }

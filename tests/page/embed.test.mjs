@@ -1,24 +1,14 @@
 // The three ways of embedding ruledlab (examples/): a plain module, two <ruled-view>
 // elements on one page, and the page in an iframe with #embed.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startServer } from '../../scripts/serve.mjs';
-import { launch, watch } from './browser.mjs';
+import { pageSession } from './browser.mjs';
 import { decodePng, countDifferent, countChanged } from './png.mjs';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { ARTIFACTS } from './browser.mjs';
 
 const BACKGROUND = [251, 250, 247];
-let server, url, browser;
-
-before(async () => {
-  ({ server, url } = await startServer());
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
+const session = pageSession();
 
 async function grab(locator, name) {
   const png = await locator.screenshot();
@@ -28,9 +18,7 @@ async function grab(locator, name) {
 }
 
 test('examples/plain-module.html computes with the package directly', async () => {
-  const page = await browser.newPage();
-  const problems = watch(page);
-  await page.goto(`${url}examples/plain-module.html`);
+  const { page, problems } = await session.open('examples/plain-module.html', { wait: false });
   await page.waitForFunction(() => document.body.dataset.ready === '1');
   assert.equal(await page.locator('#table tbody tr').count(), 6);
   assert.match(await page.locator('#table tbody tr').first().innerText(), /^1\s+\(/);
@@ -39,9 +27,7 @@ test('examples/plain-module.html computes with the package directly', async () =
 });
 
 test('two <ruled-view> elements on one page draw independently and announce changes', async () => {
-  const page = await browser.newPage();
-  const problems = watch(page);
-  await page.goto(`${url}examples/web-component.html`);
+  const { page, problems } = await session.open('examples/web-component.html', { wait: false });
   await page.waitForFunction(() => [...document.querySelectorAll('ruled-view')].every((v) => Number(v.dataset.frames) > 0));
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   const [left, right] = [await grab(page.locator('#left'), 'component-left'), await grab(page.locator('#right'), 'component-right')];
@@ -75,9 +61,7 @@ test('two <ruled-view> elements on one page draw independently and announce chan
 });
 
 test('the page embedded in an iframe with #embed shows the view alone', async () => {
-  const page = await browser.newPage();
-  const problems = watch(page);
-  await page.goto(`${url}examples/iframe.html`);
+  const { page, problems } = await session.open('examples/iframe.html', { wait: false });
   const frame = page.frameLocator('#frame');
   await frame.locator('body').evaluate((b) => new Promise((resolve) => {
     const check = () => (Number(b.dataset.frames) > 0 ? resolve() : setTimeout(check, 50));

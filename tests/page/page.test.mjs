@@ -1,29 +1,12 @@
 // The page in headless Chromium: loads cleanly, draws, and its controls change the picture.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startServer } from '../../scripts/serve.mjs';
-import { launch, watch, shoot, framesAfter } from './browser.mjs';
+import { pageSession, shoot, framesAfter } from './browser.mjs';
 import { countDifferent, countChanged } from './png.mjs';
 
 const BACKGROUND = [251, 250, 247];
-let server, url, browser;
-
-before(async () => {
-  ({ server, url } = await startServer());
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
-
-async function open(hash = '') {
-  const page = await browser.newPage();
-  const problems = watch(page);
-  await page.goto(url + hash);
-  const frames = await framesAfter(page, 0);
-  return { page, problems, frames };
-}
+const session = pageSession();
+const open = (hash) => session.open(hash);
 
 test('the page loads without errors or failed requests, favicon included, and draws', async () => {
   const { page, problems } = await open();

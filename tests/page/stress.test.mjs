@@ -1,35 +1,16 @@
 // The page under stress and under a strict Content Security Policy.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { startServer } from '../../scripts/serve.mjs';
-import { launch, watch, shoot, framesAfter } from './browser.mjs';
+import { pageSession, shoot, framesAfter } from './browser.mjs';
 import { countDifferent } from './png.mjs';
 
 const BACKGROUND = [251, 250, 247];
 const CSP = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' blob: data:";
-let server, url, browser;
-
-before(async () => {
-  ({ server, url } = await startServer({ headers: { 'content-security-policy': CSP } }));
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
-
-async function open(hash = '') {
-  const page = await browser.newPage();
-  const problems = watch(page);
-  const requests = [];
-  page.on('request', (r) => requests.push(r.url()));
-  await page.goto(url + hash);
-  const frames = await framesAfter(page, 0);
-  return { page, problems, requests, frames };
-}
+const session = pageSession({ headers: { 'content-security-policy': CSP } });
+const open = (hash) => session.open(hash);
 
 test('every scene works under a strict CSP and requests nothing but its own files', async () => {
-  const origin = new URL(url).origin;
+  const origin = new URL(session.url).origin;
   const first = await open();
   const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
   await first.page.close();
