@@ -108,8 +108,8 @@ function showReadout(readout, extraLabels = {}) {
   const labels = {
     rulings: 'rulings N',
     parallelPairs: 'parallel pairs',
-    footpointError: 'max |f_{i,i+1} − s(u_i)|',
-    midpointError: 'max |m_i − s(u_i)|',
+    footpointError: 'max |fᵢ,ᵢ₊₁ − s(uᵢ)|',
+    midpointError: 'max |mᵢ − s(uᵢ)|',
     meanDelta: 'δ̄ at the middle ruling',
     nonDevelopability: 'non-developability (height of the conoidal model)',
     isometryError: 'max relative change of polygon edge lengths',

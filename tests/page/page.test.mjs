@@ -16,7 +16,7 @@ test('the page loads without errors or failed requests, favicon included, and dr
   assert.match(await page.title(), /ruledlab/);
   assert.match(page.url(), /#scene=striction&surface=hyperboloid&n=36&.*view=/);
   const readout = await page.locator('#readout').innerText();
-  assert.match(readout, /max \|m_i − s\(u_i\)\|/);
+  assert.match(readout, /max \|mᵢ − s\(uᵢ\)\|/);
   assert.deepEqual(problems, []);
   await page.close();
 });

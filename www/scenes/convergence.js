@@ -63,7 +63,7 @@ an even function of H. On Plücker's conoid the footpoints lie on the axis exact
         deltaOrder: pick('distribution').fittedOrder,
         deltaMeanOrder: pick('distributionMean').fittedOrder,
       },
-      readoutLabels: { footpointOrder: 'order of f_{i,i+1}', midpointOrder: 'order of the midpoint', deltaOrder: 'order of δ', deltaMeanOrder: 'order of the averaged δ' },
+      readoutLabels: { footpointOrder: 'order of fᵢ,ᵢ₊₁', midpointOrder: 'order of the midpoint', deltaOrder: 'order of δ', deltaMeanOrder: 'order of the averaged δ' },
       build(gl) {
         return [
           new LineBatch(gl, seg, { color: COLORS.ruling, width: 2 }),

@@ -13,7 +13,7 @@ export const scene = {
   title: 'Notation: angles, perpendiculars, footpoints (Fig. 1)',
   params: [
     { key: 'spacing', label: 'Ruling spacing H', type: 'range', min: 0.15, max: 0.9, step: 0.01, value: 0.55 },
-    { key: 'u', label: 'Parameter u of R_i', type: 'range', min: 0, max: 6.28, step: 0.01, value: 0.7 },
+    { key: 'u', label: 'Parameter u of Rᵢ', type: 'range', min: 0, max: 6.28, step: 0.01, value: 0.7 },
   ],
   text: `
 <h2>Fig. 1: the notation</h2>

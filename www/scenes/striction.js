@@ -20,8 +20,8 @@ export const scene = {
     },
     { key: 'n', label: 'Rulings N', type: 'range', min: 6, max: 160, step: 1, value: 36 },
     { key: 'strip', label: 'Surface strip', type: 'checkbox', value: true },
-    { key: 'normals', label: 'Common perpendiculars N_{i,i+1}', type: 'checkbox', value: true },
-    { key: 'polygon', label: 'Striction polygon m_i', type: 'checkbox', value: true },
+    { key: 'normals', label: 'Common perpendiculars Nᵢ,ᵢ₊₁', type: 'checkbox', value: true },
+    { key: 'polygon', label: 'Striction polygon mᵢ', type: 'checkbox', value: true },
     { key: 'exact', label: 'Exact striction curve s(u)', type: 'checkbox', value: false },
   ],
 
