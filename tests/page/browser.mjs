@@ -47,6 +47,19 @@ export async function shoot(page, name) {
   return decodePng(png);
 }
 
+/** How many animation frames the page runs in `ms` milliseconds (0–1 when its main thread is blocked). */
+export function animationFrames(page, ms = 500) {
+  return page.evaluate(
+    (span) => new Promise((resolve) => {
+      let n = 0;
+      const t0 = performance.now();
+      const tick = () => (performance.now() - t0 < span ? (n++, requestAnimationFrame(tick)) : resolve(n));
+      requestAnimationFrame(tick);
+    }),
+    ms,
+  );
+}
+
 /** Waits until the viewer has drawn more than `after` frames. */
 export async function framesAfter(page, after = 0) {
   await page.waitForFunction((n) => Number(document.body.dataset.frames ?? 0) > n, after, { timeout: 15000 });

@@ -1,7 +1,7 @@
 // The page in headless Chromium: loads cleanly, draws, and its controls change the picture.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { pageSession, shoot, framesAfter } from './browser.mjs';
+import { pageSession, shoot, framesAfter, animationFrames } from './browser.mjs';
 import { countDifferent, countChanged } from './png.mjs';
 
 const BACKGROUND = [251, 250, 247];
@@ -168,14 +168,7 @@ test('large models: a 10⁴-ruling slider update, and 640 000 rulings refined in
   await page.waitForFunction(() => document.body.dataset.busy === '1');
   assert.equal(await page.locator('#progress').isVisible(), true, 'no progress shown');
   // the main thread keeps running animation frames while the worker computes
-  const ticks = await page.evaluate(
-    () => new Promise((resolve) => {
-      let n = 0;
-      const t0 = performance.now();
-      const tick = () => (performance.now() - t0 < 500 ? (n++, requestAnimationFrame(tick)) : resolve(n));
-      requestAnimationFrame(tick);
-    }),
-  );
+  const ticks = await animationFrames(page);
   // a blocked main thread would give 0 or 1; on 2 cores shared by the worker and software
   // rendering, about 10 are seen here
   console.log(`# ${ticks} animation frames in 500 ms while the worker computes`);
