@@ -13,6 +13,16 @@ export function obj(segments, { faces = true, name = 'ruledlab' } = {}) {
   return out.join('\n') + '\n';
 }
 
+/** Runs `use` on a core surface made from `segments`, freeing it afterwards. */
+function withSurface(segments, use) {
+  const s = RuledSurface.fromSegments(segments instanceof Float64Array ? segments : new Float64Array(segments));
+  try {
+    return use(s);
+  } finally {
+    s.free();
+  }
+}
+
 /** Segment text through the core: a surface, or a congruence when a grid shape is known. */
 export function segmentsText(segments, format, grid) {
   const f64 = segments instanceof Float64Array ? segments : new Float64Array(segments);
@@ -24,21 +34,17 @@ export function segmentsText(segments, format, grid) {
   }
 }
 
-/** The invariants of Section 2 as JSON (plain arrays). */
+/** The invariants of Section 2 as JSON (plain arrays; NaN of parallel pairs as null). */
 export function invariantsJson(segments) {
-  const s = RuledSurface.fromSegments(segments instanceof Float64Array ? segments : new Float64Array(segments));
-  try {
+  return withSurface(segments, (s) => {
     const inv = s.invariants();
     return JSON.stringify(Object.fromEntries(Object.entries(inv).map(([k, v]) => [k, Array.from(v, (x) => (Number.isFinite(x) ? x : null))])), null, 1);
-  } finally {
-    s.free();
-  }
+  });
 }
 
 /** The invariants of Section 2 as CSV, one row per pair of consecutive rulings. */
 export function invariantsCsv(segments) {
-  const s = RuledSurface.fromSegments(segments instanceof Float64Array ? segments : new Float64Array(segments));
-  try {
+  return withSurface(segments, (s) => {
     const inv = s.invariants();
     const rows = ['pair,angle,distance,distribution,f0x,f0y,f0z,f1x,f1y,f1z,nx,ny,nz,parallel'];
     for (let i = 0; i < inv.angle.length; i++) {
@@ -47,9 +53,7 @@ export function invariantsCsv(segments) {
       rows.push([i, inv.angle[i], inv.distance[i], inv.distribution[i], ...f, ...n, inv.parallel[i]].join(','));
     }
     return rows.join('\n') + '\n';
-  } finally {
-    s.free();
-  }
+  });
 }
 
 /** A development (x, y of a'_i then b'_i per ruling) as SVG: rulings and the striction image. */
