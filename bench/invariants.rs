@@ -9,7 +9,7 @@ fn invariants(c: &mut Criterion) {
     let mut group = c.benchmark_group("invariants");
     group.sample_size(10);
     for &n in sizes(&[1_000usize, 10_000, 100_000, 1_000_000]) {
-        let hyp = AnalyticSurface::ALL[0];
+        let hyp = AnalyticSurface::ALL[0].clone();
         let surface = hyp.sample(n, hyp.ranges()).expect("valid sample");
         group.throughput(Throughput::Elements(n as u64));
         group.bench_with_input(BenchmarkId::from_parameter(n), &surface, |b, s| {
@@ -22,7 +22,7 @@ fn invariants(c: &mut Criterion) {
 fn from_flat(c: &mut Criterion) {
     let mut group = c.benchmark_group("validate");
     group.sample_size(10);
-    let hyp = AnalyticSurface::ALL[0];
+    let hyp = AnalyticSurface::ALL[0].clone();
     let n = *sizes(&[1_000usize, 1_000_000]).last().expect("a size");
     let flat = hyp.sample(n, hyp.ranges()).expect("valid sample").flat().to_vec();
     group.throughput(Throughput::Elements(n as u64));

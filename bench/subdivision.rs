@@ -7,7 +7,7 @@ use ruledlab::subdivision::{subdivide_strip, Scheme, Variant};
 use std::hint::black_box;
 
 fn schemes(c: &mut Criterion) {
-    let hyp = AnalyticSurface::ALL[0];
+    let hyp = AnalyticSurface::ALL[0].clone();
     let schemes = [
         ("chaikin", Scheme::Chaikin),
         ("bspline3", Scheme::BSpline { degree: 3 }),

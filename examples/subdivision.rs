@@ -7,8 +7,8 @@ use ruledlab::subdivision::{accuracy::max_distance, subdivide_strip, Scheme, Var
 fn main() {
     let cases = [
         ("Example 3: quartic, u ∈ [−1, 1]", AnalyticSurface::Quartic, (-1.0, 1.0)),
-        ("hyperboloid, u ∈ [0, 3]", AnalyticSurface::ALL[0], (0.0, 3.0)),
-        ("helical surface, u ∈ [0, 6]", AnalyticSurface::ALL[3], (0.0, 6.0)),
+        ("hyperboloid, u ∈ [0, 3]", AnalyticSurface::ALL[0].clone(), (0.0, 3.0)),
+        ("helical surface, u ∈ [0, 6]", AnalyticSurface::ALL[3].clone(), (0.0, 6.0)),
     ];
     let schemes: [(&str, Scheme); 7] = [
         ("midpoint (bspline d=1)", Scheme::BSpline { degree: 1 }),

@@ -20,7 +20,7 @@ cargo test --all-targets
 cargo test --doc
 
 step "wasm: wasm-bindgen-test in headless Chromium"
-CHROMEDRIVER="$(command -v chromedriver)" cargo test --target wasm32-unknown-unknown --test section2 --test section3 --test section4 --test section5 --test milling --test line_space --test bindings
+CHROMEDRIVER="$(command -v chromedriver)" cargo test --target wasm32-unknown-unknown --test section2 --test section3 --test section4 --test section5 --test milling --test line_space --test formula --test bindings
 
 step "build: pkg/"
 bash scripts/build.sh

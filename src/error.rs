@@ -1,10 +1,13 @@
-//! The core's error type: every way an input can be rejected, with a message that says
-//! what is wrong and what was expected. The bindings layer turns these into JavaScript
-//! `Error`s verbatim, so the messages are written for the person calling from JS.
+//! The core's error type: every way an input can be rejected, one variant per kind of
+//! failure, with a message that says what is wrong and what was expected.
+//!
+//! The bindings layer turns these into JavaScript `Error`s with the same message, a stable
+//! [`Error::code`] a program can branch on, and [`Error::details`] (the option, index, line,
+//! column or limit at fault). The messages are written for the person calling from JS.
 
 use std::fmt;
 
-/// Why an input was rejected.
+/// Why an input was rejected or a computation could not be carried out.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Error {
     /// A flat coordinate array whose length is not a multiple of the record size.
@@ -40,8 +43,8 @@ pub enum Error {
         index: usize,
         /// The value (NaN or ±∞).
         value: f64,
-        /// Numbers per record: 6 for segments, 3 for points.
-        stride: usize,
+        /// What the array's records are, for naming the coordinate.
+        record: Record,
     },
     /// A finite coordinate too large in magnitude to compute with safely.
     OutOfRange {
@@ -51,8 +54,8 @@ pub enum Error {
         value: f64,
         /// The largest magnitude accepted.
         max: f64,
-        /// Numbers per record: 6 for segments, 3 for points.
-        stride: usize,
+        /// What the array's records are, for naming the coordinate.
+        record: Record,
     },
     /// A segment whose endpoints coincide (to working precision), so it has no direction.
     ZeroLength {
@@ -66,10 +69,203 @@ pub enum Error {
         /// What is wrong and what is expected.
         message: String,
     },
+    /// Text that could not be read: CSV, JSON, a formula, G-code.
+    Parse {
+        /// What was being read, e.g. "csv", "json", "a[1]" (a formula field).
+        source: String,
+        /// 1-based line, where the text has lines.
+        line: Option<usize>,
+        /// 1-based column (in characters) of the problem.
+        column: Option<usize>,
+        /// What is wrong.
+        message: String,
+        /// What to do about it, said after the position.
+        hint: Option<String>,
+    },
+    /// A text longer or more deeply nested than the documented limit (checked before parsing).
+    TextLimit {
+        /// What was being read.
+        source: String,
+        /// What is limited, e.g. "characters", "levels of nesting".
+        what: &'static str,
+        /// The value found.
+        got: usize,
+        /// The limit.
+        max: usize,
+        /// 1-based column where the limit was first exceeded, if one place is at fault.
+        column: Option<usize>,
+    },
+    /// Geometry for which the quantity asked for does not exist: a formula whose value is not
+    /// finite or whose ruling direction vanishes, lines that cancel, parallel rulings where
+    /// skew ones are needed.
+    Degenerate {
+        /// What is degenerate, e.g. "e(u)", "lines".
+        what: String,
+        /// What happened and where.
+        message: String,
+    },
+    /// A formula whose value (or derivative) is not finite at a parameter of its range.
+    NotFiniteAt {
+        /// The formula, e.g. "a[1]".
+        what: String,
+        /// Where, e.g. "u = 0.5".
+        at: String,
+        /// The value found.
+        value: f64,
+        /// Whether it is the derivative (the value itself being finite).
+        derivative: bool,
+    },
+    /// An iterative solver that did not reach its tolerance.
+    NotConverged {
+        /// Which solve.
+        what: &'static str,
+        /// Iterations spent.
+        iterations: usize,
+    },
+    /// A linear system that should be symmetric positive definite but is not (numerically).
+    Singular {
+        /// Which system.
+        what: &'static str,
+        /// The failing pivot.
+        pivot: usize,
+        /// Its value.
+        value: f64,
+    },
+}
+
+/// What the records of a flat coordinate array are, so that a message can name a number:
+/// "(ruling 2, b.y)", "(point 5, y)", "(line (1, 3), q.x)".
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Record {
+    /// 6 numbers per ruling: a.x a.y a.z b.x b.y b.z.
+    Segment,
+    /// 3 numbers per point.
+    Point,
+    /// 6 numbers per line of a congruence grid with this many columns: p then q.
+    GridLine {
+        /// Columns of the grid.
+        cols: usize,
+    },
+}
+
+impl Record {
+    /// The record of `stride` numbers (6: segments, otherwise points).
+    pub fn of_stride(stride: usize) -> Self {
+        if stride == 6 {
+            Record::Segment
+        } else {
+            Record::Point
+        }
+    }
 }
 
 /// Short for `Result<T, Error>`.
 pub type Result<T> = std::result::Result<T, Error>;
+
+/// Where an error points: the fields of a JS error's `details` (all optional).
+#[derive(Debug, Clone, Default, PartialEq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
+pub struct Details {
+    /// The option or parameter at fault.
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    pub option: Option<String>,
+    /// Index into the flat input array (or of the ruling, for zero-length rulings).
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    pub index: Option<usize>,
+    /// 1-based line of a text.
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    pub line: Option<usize>,
+    /// 1-based column of a text.
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    pub column: Option<usize>,
+    /// The limit that was exceeded (or not reached).
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    pub limit: Option<f64>,
+}
+
+impl Error {
+    /// Shorthand for [`Error::InvalidParameter`].
+    pub fn parameter(name: &'static str, message: impl Into<String>) -> Self {
+        Error::InvalidParameter { name, message: message.into() }
+    }
+
+    /// Shorthand for [`Error::Parse`].
+    pub fn parse(source: impl Into<String>, line: Option<usize>, column: Option<usize>, message: impl Into<String>) -> Self {
+        Error::Parse { source: source.into(), line, column, message: message.into(), hint: None }
+    }
+
+    /// The same error with `hint` (what to do) added after its position; other kinds unchanged.
+    pub fn with_hint(self, text: impl Into<String>) -> Self {
+        match self {
+            Error::Parse { source, line, column, message, .. } => Error::Parse { source, line, column, message, hint: Some(text.into()) },
+            other => other,
+        }
+    }
+
+    /// Shorthand for [`Error::Degenerate`].
+    pub fn degenerate(what: impl Into<String>, message: impl Into<String>) -> Self {
+        Error::Degenerate { what: what.into(), message: message.into() }
+    }
+
+    /// The stable code of this kind of error, for programs to branch on:
+    ///
+    /// | code | when |
+    /// |---|---|
+    /// | `invalid-argument` | a value of the wrong type, outside its range, or an unknown option |
+    /// | `not-finite` | NaN or ±∞ where a finite number is needed |
+    /// | `out-of-range` | a coordinate above 1e150 in magnitude |
+    /// | `too-large` | a size limit (rulings, steps, text length, nesting) |
+    /// | `too-small` | fewer items than the computation needs |
+    /// | `parse-error` | malformed CSV, JSON, formula or G-code |
+    /// | `degenerate` | geometry without the quantity asked for (zero-length ruling, e(u) = 0, …) |
+    /// | `not-converged` | an iterative solver missed its tolerance |
+    /// | `singular` | a system that should be positive definite is not |
+    pub fn code(&self) -> &'static str {
+        match self {
+            Error::BadLength { .. } | Error::InvalidParameter { .. } => "invalid-argument",
+            Error::TooFew { .. } => "too-small",
+            Error::TooMany { .. } | Error::TextLimit { .. } => "too-large",
+            Error::NonFinite { .. } | Error::NotFiniteAt { .. } => "not-finite",
+            Error::OutOfRange { .. } => "out-of-range",
+            Error::ZeroLength { .. } | Error::Degenerate { .. } => "degenerate",
+            Error::Parse { .. } => "parse-error",
+            Error::NotConverged { .. } => "not-converged",
+            Error::Singular { .. } => "singular",
+        }
+    }
+
+    /// Where the error points (empty fields are omitted in JS).
+    pub fn details(&self) -> Details {
+        let mut d = Details::default();
+        match self {
+            Error::BadLength { multiple, .. } => d.limit = Some(*multiple as f64),
+            Error::TooFew { min, .. } => d.limit = Some(*min as f64),
+            Error::TooMany { max, .. } => d.limit = Some(*max as f64),
+            Error::NonFinite { index, .. } => d.index = Some(*index),
+            Error::OutOfRange { index, max, .. } => {
+                d.index = Some(*index);
+                d.limit = Some(*max);
+            }
+            Error::ZeroLength { ruling } => d.index = Some(*ruling),
+            Error::InvalidParameter { name, .. } => d.option = Some((*name).to_string()),
+            Error::Parse { source, line, column, .. } => {
+                d.option = Some(source.clone());
+                d.line = *line;
+                d.column = *column;
+            }
+            Error::TextLimit { source, max, column, .. } => {
+                d.option = Some(source.clone());
+                d.limit = Some(*max as f64);
+                d.column = *column;
+            }
+            Error::Degenerate { what, .. } | Error::NotFiniteAt { what, .. } => d.option = Some(what.clone()),
+            Error::NotConverged { iterations, .. } => d.limit = Some(*iterations as f64),
+            Error::Singular { pivot, .. } => d.index = Some(*pivot),
+        }
+        d
+    }
+}
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -84,43 +280,75 @@ impl fmt::Display for Error {
             Error::TooMany { what, got, max } => {
                 write!(f, "{what}: {got} exceeds the limit of {max}")
             }
-            Error::NonFinite { index, value, stride } => write!(
+            Error::NonFinite { index, value, record } => write!(
                 f,
                 "coordinate {index} {} is {value}; all coordinates must be finite numbers",
-                coordinate_name(*index, *stride)
+                coordinate_name(*index, *record)
             ),
-            Error::OutOfRange { index, value, max, stride } => write!(
+            Error::OutOfRange { index, value, max, record } => write!(
                 f,
                 "coordinate {index} {} is {value:e}; magnitudes above {max:e} are not accepted",
-                coordinate_name(*index, *stride)
+                coordinate_name(*index, *record)
             ),
             Error::ZeroLength { ruling } => write!(
                 f,
                 "ruling {ruling} has zero length (its two endpoints coincide), so it has no direction"
             ),
             Error::InvalidParameter { name, message } => write!(f, "{name}: {message}"),
+            Error::Parse { source, line, column, message, hint } => {
+                write!(f, "{source}: ")?;
+                match (line, column) {
+                    (Some(l), Some(c)) => write!(f, "line {l}, column {c}: {message}")?,
+                    (Some(l), None) => write!(f, "line {l}: {message}")?,
+                    (None, Some(c)) => write!(f, "{message} at column {c}")?,
+                    (None, None) => write!(f, "{message}")?,
+                }
+                match hint {
+                    Some(h) => write!(f, "; {h}"),
+                    None => Ok(()),
+                }
+            }
+            Error::TextLimit { source, what, got, max, column } => {
+                write!(f, "{source}: {got} {what} exceed the limit of {max}")?;
+                match column {
+                    Some(c) => write!(f, " (first at column {c})"),
+                    None => Ok(()),
+                }
+            }
+            Error::Degenerate { what, message } => write!(f, "{what}: {message}"),
+            Error::NotFiniteAt { what, at, value, derivative: false } => write!(
+                f,
+                "{what} is not finite at {at} (value {value}: a division by zero, or a function outside its domain?)"
+            ),
+            Error::NotFiniteAt { what, at, value, derivative: true } => write!(
+                f,
+                "{what}: the derivative is not finite at {at} (it is {value}), so the exact invariants do not exist there"
+            ),
+            Error::NotConverged { what, iterations } => {
+                write!(f, "{what}: conjugate gradients did not converge in {iterations} iterations")
+            }
+            Error::Singular { what, pivot, value } => {
+                write!(f, "{what}: matrix is not positive definite (pivot {pivot} is {value:e})")
+            }
         }
     }
 }
 
 impl std::error::Error for Error {}
 
-/// "(ruling 2, b.y)" for index 16 of a flat array of 6 numbers per ruling, "(point 5, y)"
-/// for index 16 of 3 numbers per point.
-fn coordinate_name(index: usize, stride: usize) -> String {
+/// "(ruling 2, b.y)" for index 16 of a flat array of segments, "(point 5, y)" for index 16
+/// of points, "(line (0, 2), q.y)" for index 16 of a grid of 4 columns.
+fn coordinate_name(index: usize, record: Record) -> String {
     const SEGMENT: [&str; 6] = ["a.x", "a.y", "a.z", "b.x", "b.y", "b.z"];
+    const LINE: [&str; 6] = ["p.x", "p.y", "p.z", "q.x", "q.y", "q.z"];
     const POINT: [&str; 3] = ["x", "y", "z"];
-    match stride {
-        6 => format!("(ruling {}, {})", index / 6, SEGMENT[index % 6]),
-        3 => format!("(point {}, {})", index / 3, POINT[index % 3]),
-        _ => String::new(),
-    }
-}
-
-impl Error {
-    /// Shorthand for [`Error::InvalidParameter`].
-    pub fn parameter(name: &'static str, message: impl Into<String>) -> Self {
-        Error::InvalidParameter { name, message: message.into() }
+    match record {
+        Record::Segment => format!("(ruling {}, {})", index / 6, SEGMENT[index % 6]),
+        Record::Point => format!("(point {}, {})", index / 3, POINT[index % 3]),
+        Record::GridLine { cols } => {
+            let line = index / 6;
+            format!("(line ({}, {}), {})", line / cols.max(1), line % cols.max(1), LINE[index % 6])
+        }
     }
 }
 
@@ -130,16 +358,55 @@ mod tests {
 
     #[test]
     fn messages_name_the_problem() {
-        let e = Error::NonFinite { index: 16, value: f64::NAN, stride: 6 };
+        let e = Error::NonFinite { index: 16, value: f64::NAN, record: Record::Segment };
         assert_eq!(
             e.to_string(),
             "coordinate 16 (ruling 2, b.y) is NaN; all coordinates must be finite numbers"
         );
-        let e = Error::NonFinite { index: 16, value: f64::INFINITY, stride: 3 };
+        let e = Error::NonFinite { index: 16, value: f64::INFINITY, record: Record::Point };
         assert!(e.to_string().starts_with("coordinate 16 (point 5, y) is inf"));
         let e = Error::BadLength { what: "segment coordinates", len: 7, multiple: 6 };
         assert!(e.to_string().contains("not a multiple of 6"));
         let e = Error::ZeroLength { ruling: 3 };
         assert!(e.to_string().starts_with("ruling 3 has zero length"));
+        let e = Error::NonFinite { index: 16, value: f64::NAN, record: Record::GridLine { cols: 2 } };
+        assert!(e.to_string().starts_with("coordinate 16 (line (1, 0), q.y) is NaN"), "{e}");
+        let e = Error::parse("a[1]", None, Some(1), "unknown function \"sni\"");
+        assert_eq!(e.to_string(), "a[1]: unknown function \"sni\" at column 1");
+        let e = Error::parse("csv", Some(3), Some(7), "\"x\" is not a number");
+        assert_eq!(e.to_string(), "csv: line 3, column 7: \"x\" is not a number");
+    }
+
+    #[test]
+    fn every_kind_has_its_code_and_details() {
+        let cases = [
+            (Error::BadLength { what: "x", len: 7, multiple: 6 }, "invalid-argument"),
+            (Error::TooFew { what: "x", got: 1, min: 2 }, "too-small"),
+            (Error::TooMany { what: "x", got: 9, max: 8 }, "too-large"),
+            (Error::NonFinite { index: 2, value: f64::NAN, record: Record::Point }, "not-finite"),
+            (Error::OutOfRange { index: 2, value: 1e200, max: 1e150, record: Record::Point }, "out-of-range"),
+            (Error::ZeroLength { ruling: 4 }, "degenerate"),
+            (Error::parameter("w", "bad"), "invalid-argument"),
+            (Error::parse("json", Some(1), Some(2), "bad"), "parse-error"),
+            (
+                Error::TextLimit { source: "a[0]".into(), what: "characters", got: 2000, max: 1000, column: None },
+                "too-large",
+            ),
+            (Error::degenerate("e(u)", "vanishes"), "degenerate"),
+            (Error::NotConverged { what: "system", iterations: 10 }, "not-converged"),
+            (
+                Error::NotFiniteAt { what: "a[0]".into(), at: "u = 0".into(), value: f64::INFINITY, derivative: false },
+                "not-finite",
+            ),
+            (Error::Singular { what: "system", pivot: 3, value: -1.0 }, "singular"),
+        ];
+        for (e, code) in cases {
+            assert_eq!(e.code(), code, "{e}");
+        }
+        let d = Error::parse("json", Some(3), Some(9), "x").details();
+        assert_eq!((d.line, d.column, d.option.as_deref()), (Some(3), Some(9), Some("json")));
+        assert_eq!(Error::TooMany { what: "x", got: 9, max: 8 }.details().limit, Some(8.0));
+        assert_eq!(Error::NonFinite { index: 7, value: f64::NAN, record: Record::Segment }.details().index, Some(7));
+        assert_eq!(Error::parameter("steps", "bad").details().option.as_deref(), Some("steps"));
     }
 }

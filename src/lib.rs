@@ -25,6 +25,7 @@
 pub mod congruence;
 pub mod error;
 pub mod examples;
+pub mod formula;
 pub mod io;
 pub mod line;
 pub mod linalg;

@@ -25,6 +25,20 @@ pub const MAX_RULINGS: usize = 1 << 22;
 /// Largest number of refinement levels of the convergence study.
 pub const MAX_STUDY_LEVELS: usize = 20;
 
+/// Longest formula, in characters (checked before parsing).
+pub const MAX_FORMULA_CHARS: usize = 1000;
+
+/// Deepest nesting of parentheses in a formula (checked before parsing, so neither the
+/// parser nor the evaluator can recurse deeper than the formula's length allows).
+pub const MAX_FORMULA_DEPTH: usize = 64;
+
+/// Parameter samples at which a formula surface or congruence is checked when it is made:
+/// every value and derivative finite, the ruling direction nonzero (per parameter direction).
+pub const FORMULA_PROBES: usize = 257;
+
+/// A formula's ruling direction counts as vanishing where |e| ≤ this · max |e| over the probes.
+pub const FORMULA_ZERO_DIRECTION: f64 = 1e-12;
+
 /// Largest number of samples asked of an analytic surface in one call.
 pub const MAX_SAMPLES: usize = MAX_RULINGS;
 

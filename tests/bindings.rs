@@ -13,17 +13,24 @@ fn f64s(v: &[f64]) -> JsValue {
     Float64Array::from(v).into()
 }
 
-fn message<T>(r: Result<T, wasm_bindgen::JsError>) -> String {
-    let e: JsValue = match r {
+fn error<T>(r: Result<T, JsValue>) -> js_sys::Error {
+    match r {
         Ok(_) => panic!("expected an error"),
-        Err(e) => e.into(),
-    };
-    let e: js_sys::Error = e.dyn_into().expect("a JS Error");
-    e.message().into()
+        Err(e) => e.dyn_into().expect("a JS Error"),
+    }
+}
+
+fn message<T>(r: Result<T, JsValue>) -> String {
+    error(r).message().into()
+}
+
+/// The `code` property of the thrown error.
+fn code<T>(r: Result<T, JsValue>) -> String {
+    Reflect::get(&error(r), &"code".into()).unwrap().as_string().expect("a string code")
 }
 
 /// Asserts that `r` failed with a message containing `expected`.
-fn assert_fails<T>(r: Result<T, wasm_bindgen::JsError>, expected: &str) {
+fn assert_fails<T>(r: Result<T, JsValue>, expected: &str) {
     let m = message(r);
     assert!(m.contains(expected), "{m:?} does not contain {expected:?}");
 }
@@ -49,6 +56,18 @@ fn bad_inputs_become_errors_with_messages() {
         assert!(m.contains(expected), "{m:?} does not contain {expected:?}");
         assert!(m.starts_with("RuledSurface.fromSegments: "), "{m}");
     }
+    // every kind of failure has its code, and details point at the culprit
+    assert_eq!(code(RuledSurface::from_segments(f64s(&GOOD[..11]))), "invalid-argument");
+    assert_eq!(code(RuledSurface::from_segments(f64s(&GOOD[..6]))), "too-small");
+    let nan = f64s(&[GOOD[0], f64::NAN, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]);
+    let e = error(RuledSurface::from_segments(nan));
+    assert_eq!(Reflect::get(&e, &"code".into()).unwrap(), "not-finite");
+    let details = Reflect::get(&e, &"details".into()).unwrap();
+    assert_eq!(Reflect::get(&details, &"index".into()).unwrap(), 1);
+    let big = f64s(&[0.0, 0.0, 0.0, 1e300, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]);
+    assert_eq!(code(RuledSurface::from_segments(big)), "out-of-range");
+    let flat = f64s(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 2.0, 2.0, 2.0, 2.0, 2.0, 2.0]);
+    assert_eq!(code(RuledSurface::from_segments(flat)), "degenerate");
     // still usable
     let s = RuledSurface::from_segments(f64s(&GOOD)).unwrap();
     assert_eq!(s.length(), 2);

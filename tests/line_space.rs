@@ -16,7 +16,7 @@ wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 const FOUR_POINT: Scheme = Scheme::FourPoint { w: 1.0 / 16.0 };
 
 fn hyperboloid(n: usize) -> RuledSurface {
-    AnalyticSurface::ALL[0].sample(n, Ranges { u: (0.0, 3.0), v: (-1.0, 1.0), closed: false }).unwrap()
+    AnalyticSurface::ALL[0].clone().sample(n, Ranges { u: (0.0, 3.0), v: (-1.0, 1.0), closed: false }).unwrap()
 }
 
 /// Slides both endpoints of every ruling along its line (by different amounts), and reverses
@@ -84,7 +84,7 @@ fn four_point_keeps_the_old_lines() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn converges_at_fourth_order() {
-    let hyp = AnalyticSurface::ALL[0];
+    let hyp = AnalyticSurface::ALL[0].clone();
     let error = |n: usize| {
         let r = subdivide_lines(&hyperboloid(n), FOUR_POINT, false, 1, None).unwrap();
         let h = 3.0 / (n - 1) as f64;

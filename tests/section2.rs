@@ -14,7 +14,7 @@ use wasm_bindgen_test::wasm_bindgen_test;
 #[cfg(target_family = "wasm")]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
-fn sample(s: AnalyticSurface, n: usize, u: (f64, f64)) -> RuledSurface {
+fn sample(s: &AnalyticSurface, n: usize, u: (f64, f64)) -> RuledSurface {
     s.sample(n, Ranges { u, v: (-1.0, 1.0), closed: false }).unwrap()
 }
 
@@ -28,7 +28,7 @@ fn params(n: usize, u: (f64, f64)) -> Vec<f64> {
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn helicoid_discrete_invariants_are_exact() {
     let p = 0.5;
-    let s = sample(AnalyticSurface::Helicoid { pitch: p }, 25, (0.0, 3.0));
+    let s = sample(&AnalyticSurface::Helicoid { pitch: p }, 25, (0.0, 3.0));
     let u = params(25, (0.0, 3.0));
     let inv = s.invariants();
     let h = 3.0 / 24.0;
@@ -47,7 +47,7 @@ fn helicoid_discrete_invariants_are_exact() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn pluecker_conoid_footpoints_are_on_the_axis() {
-    let s = sample(AnalyticSurface::PlueckerConoid, 31, (0.1, 1.4));
+    let s = sample(&AnalyticSurface::PlueckerConoid, 31, (0.1, 1.4));
     let u = params(31, (0.1, 1.4));
     let inv = s.invariants();
     for i in 0..30 {
@@ -65,7 +65,7 @@ fn pluecker_conoid_footpoints_are_on_the_axis() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn hyperbolic_paraboloid_distribution_in_closed_form() {
-    let s = sample(AnalyticSurface::HyperbolicParaboloid, 21, (-1.0, 1.0));
+    let s = sample(&AnalyticSurface::HyperbolicParaboloid, 21, (-1.0, 1.0));
     let u = params(21, (-1.0, 1.0));
     let inv = s.invariants();
     for i in 0..20 {
@@ -120,7 +120,7 @@ fn cylinder_pairs_are_flagged_parallel() {
 fn helix_tangent_distribution_vanishes_at_second_order() {
     let t = AnalyticSurface::HelixTangent { radius: 1.0, pitch: 0.3 };
     let delta = |n: usize| {
-        let inv = sample(t, n, (0.0, 1.0)).invariants();
+        let inv = sample(&t, n, (0.0, 1.0)).invariants();
         inv.distribution.iter().fold(0.0f64, |m, d| m.max(d.abs()))
     };
     let (coarse, fine) = (delta(11), delta(21));
@@ -136,8 +136,8 @@ fn measured_orders_match_propositions_1_and_2() {
     // Generic surfaces only: on the helicoid, the conoid, the hyperbolic paraboloid and the
     // cone the footpoints are exact, and screw symmetry makes a helical surface's δ even in H.
     let cases = [
-        (AnalyticSurface::ALL[0], 0.7),
-        (AnalyticSurface::ALL[0], 2.0),
+        (AnalyticSurface::ALL[0].clone(), 0.7),
+        (AnalyticSurface::ALL[0].clone(), 2.0),
         (AnalyticSurface::Quartic, 0.4),
         (AnalyticSurface::Quartic, -0.8),
     ];
@@ -157,11 +157,11 @@ fn measured_orders_match_propositions_1_and_2() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn striction_polygon_of_the_hyperboloid_is_second_order() {
-    let hyp = AnalyticSurface::ALL[0];
+    let hyp = AnalyticSurface::ALL[0].clone();
     // max errors over the rulings of the coarse model (index i of N = 41, 2i of N = 81)
     let errors = |n: usize, every: usize| {
         let u = params(n, (0.2, 2.2));
-        let inv = sample(hyp, n, (0.2, 2.2)).invariants();
+        let inv = sample(&hyp, n, (0.2, 2.2)).invariants();
         let (mut mid, mut foot) = (0.0f64, 0.0f64);
         for i in (every..n - 1).step_by(every) {
             let s = hyp.striction(u[i]).unwrap();

@@ -24,7 +24,7 @@ impl Lcg {
     }
 }
 
-fn sample(s: AnalyticSurface, n: usize, u: (f64, f64)) -> RuledSurface {
+fn sample(s: &AnalyticSurface, n: usize, u: (f64, f64)) -> RuledSurface {
     s.sample(n, Ranges { u, v: (-1.0, 1.0), closed: false }).unwrap()
 }
 
@@ -62,9 +62,9 @@ fn surfaces() -> Vec<RuledSurface> {
     )
     .unwrap();
     vec![
-        sample(AnalyticSurface::ALL[0], 40, (0.0, 5.0)),
-        sample(AnalyticSurface::Quartic, 25, (-1.0, 1.0)),
-        sample(AnalyticSurface::ALL[3], 60, (0.0, 9.0)),
+        sample(&AnalyticSurface::ALL[0].clone(), 40, (0.0, 5.0)),
+        sample(&AnalyticSurface::Quartic, 25, (-1.0, 1.0)),
+        sample(&AnalyticSurface::ALL[3].clone(), 60, (0.0, 9.0)),
         random,
     ]
 }
@@ -176,7 +176,7 @@ fn cone_develops_to_a_planar_fan() {
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn tangent_surface_measure_falls_at_second_order() {
     let t = AnalyticSurface::HelixTangent { radius: 1.0, pitch: 0.3 };
-    let m = |n: usize| Development::of(&sample(t, n, (0.0, 3.0))).non_developability();
+    let m = |n: usize| Development::of(&sample(&t, n, (0.0, 3.0))).non_developability();
     let (m1, m2, m3) = (m(31), m(61), m(121));
     assert!(m1 > 0.0 && m1 < 1e-2);
     assert_near!((m1 / m2).log2(), 2.0, ORDER);
@@ -187,8 +187,8 @@ fn tangent_surface_measure_falls_at_second_order() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn skew_surface_measure_converges() {
-    let hyp = AnalyticSurface::ALL[0];
-    let m: Vec<f64> = [21, 41, 81, 161].iter().map(|&n| Development::of(&sample(hyp, n, (0.0, 2.0))).non_developability()).collect();
+    let hyp = AnalyticSurface::ALL[0].clone();
+    let m: Vec<f64> = [21, 41, 81, 161].iter().map(|&n| Development::of(&sample(&hyp, n, (0.0, 2.0))).non_developability()).collect();
     assert!(m[3] > 0.5, "a hyperboloid strip is far from developable: {}", m[3]);
     let order = ((m[1] - m[0]) / (m[2] - m[1])).abs().log2();
     let order2 = ((m[2] - m[1]) / (m[3] - m[2])).abs().log2();
@@ -202,7 +202,7 @@ fn skew_surface_measure_converges() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn long_chains_do_not_drift() {
-    let hyp = AnalyticSurface::ALL[0];
+    let hyp = AnalyticSurface::ALL[0].clone();
     let s = hyp.sample(100_000, Ranges { u: (0.0, 400.0), v: (-1.0, 1.0), closed: false }).unwrap();
     let size = s.points().iter().fold(0.0f64, |m, p| m.max(p.length()));
     let chain = HingeChain::new(&s);
@@ -229,7 +229,7 @@ fn helical_surface_conoidal_image_touches_a_cylinder() {
     for (beta, rho) in [(std::f64::consts::FRAC_PI_4, r + p), ((-r / p).atan(), 0.0)] {
         let surface = AnalyticSurface::HelicalRuled { radius: r, pitch: p, slope: beta };
         let radius = |n: usize| {
-            let dev = Development::of(&sample(surface, n, (0.0, 6.0)));
+            let dev = Development::of(&sample(&surface, n, (0.0, 6.0)));
             let inv = dev.conoidal.invariants();
             // by screw symmetry every footpoint image lies on one circle about the axis
             let q: Vec<DVec2> = (0..3).map(|i| {

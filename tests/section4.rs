@@ -12,17 +12,17 @@ wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 const COUPLED: Scheme = Scheme::Variational { n: 12, variant: Variant::Coupled };
 const FOUR_POINT: Scheme = Scheme::FourPoint { w: 1.0 / 16.0 };
 
-fn sample(s: AnalyticSurface, n: usize, u: (f64, f64)) -> RuledSurface {
+fn sample(s: &AnalyticSurface, n: usize, u: (f64, f64)) -> RuledSurface {
     s.sample(n, Ranges { u, v: (-1.0, 1.0), closed: false }).unwrap()
 }
 
 /// Distances of the inserted rulings (odd indices): (max, interior without two per end).
-fn errors(surface: AnalyticSurface, u: (f64, f64), scheme: Scheme) -> (f64, f64) {
+fn errors(surface: &AnalyticSurface, u: (f64, f64), scheme: Scheme) -> (f64, f64) {
     let r = subdivide_strip(&sample(surface, 12, u), scheme, false, 1).unwrap();
     let which: Vec<usize> = (1..r.len()).step_by(2).collect();
     (
-        max_distance(&surface, &r, u.0, u.1, which.iter().copied()),
-        max_distance(&surface, &r, u.0, u.1, which[2..which.len() - 2].iter().copied()),
+        max_distance(surface, &r, u.0, u.1, which.iter().copied()),
+        max_distance(surface, &r, u.0, u.1, which[2..which.len() - 2].iter().copied()),
     )
 }
 
@@ -33,14 +33,14 @@ fn errors(surface: AnalyticSurface, u: (f64, f64), scheme: Scheme) -> (f64, f64)
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn example_3_variational_step() {
     let q = AnalyticSurface::Quartic;
-    let s = sample(q, 12, (-1.0, 1.0));
+    let s = sample(&q, 12, (-1.0, 1.0));
     let r = subdivide_strip(&s, COUPLED, false, 1).unwrap();
     assert_eq!(r.len(), 23);
     for i in 0..12 {
         assert_eq!(r.segment(2 * i), s.segment(i));
     }
-    let midpoint = errors(q, (-1.0, 1.0), Scheme::BSpline { degree: 1 });
-    let coupled = errors(q, (-1.0, 1.0), COUPLED);
+    let midpoint = errors(&q, (-1.0, 1.0), Scheme::BSpline { degree: 1 });
+    let coupled = errors(&q, (-1.0, 1.0), COUPLED);
     assert!(coupled.0 < midpoint.0 / 10.0, "max: coupled {:e} vs midpoint {:e}", coupled.0, midpoint.0);
     assert!(coupled.1 < midpoint.1 / 30.0, "interior: coupled {:e} vs midpoint {:e}", coupled.1, midpoint.1);
 }
@@ -49,7 +49,7 @@ fn example_3_variational_step() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn literal_variational_equals_the_midpoint_rule() {
-    let s = sample(AnalyticSurface::ALL[0], 15, (0.0, 3.0));
+    let s = sample(&AnalyticSurface::ALL[0], 15, (0.0, 3.0));
     let literal = subdivide_strip(&s, Scheme::Variational { n: 7, variant: Variant::Literal }, false, 2).unwrap();
     let midpoint = subdivide_strip(&s, Scheme::BSpline { degree: 1 }, false, 2).unwrap();
     for (p, q) in literal.points().iter().zip(midpoint.points()) {
@@ -62,11 +62,11 @@ fn literal_variational_equals_the_midpoint_rule() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn variational_beats_the_midpoint_rule_on_curved_surfaces() {
-    let cases = [(AnalyticSurface::Quartic, (-1.0, 1.0)), (AnalyticSurface::ALL[0], (0.0, 3.0)), (AnalyticSurface::ALL[3], (0.0, 6.0))];
+    let cases = [(AnalyticSurface::Quartic, (-1.0, 1.0)), (AnalyticSurface::ALL[0].clone(), (0.0, 3.0)), (AnalyticSurface::ALL[3].clone(), (0.0, 6.0))];
     for (surface, u) in cases {
-        let midpoint = errors(surface, u, Scheme::BSpline { degree: 1 });
-        let coupled = errors(surface, u, COUPLED);
-        let averaged = errors(surface, u, Scheme::Variational { n: 12, variant: Variant::Averaged });
+        let midpoint = errors(&surface, u, Scheme::BSpline { degree: 1 });
+        let coupled = errors(&surface, u, COUPLED);
+        let averaged = errors(&surface, u, Scheme::Variational { n: 12, variant: Variant::Averaged });
         assert!(coupled.0 < midpoint.0 / 2.0, "{}: {coupled:?} vs {midpoint:?}", surface.name());
         assert!(coupled.1 < midpoint.1 / 20.0, "{}: {coupled:?} vs {midpoint:?}", surface.name());
         assert!(averaged.1 < coupled.1, "{}: {averaged:?} vs {coupled:?}", surface.name());
@@ -80,7 +80,7 @@ fn variational_beats_the_midpoint_rule_on_curved_surfaces() {
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn four_point_reproduces_the_quartic_exactly() {
     let q = AnalyticSurface::Quartic;
-    let r = subdivide_strip(&sample(q, 12, (-1.0, 1.0)), FOUR_POINT, false, 3).unwrap();
+    let r = subdivide_strip(&sample(&q, 12, (-1.0, 1.0)), FOUR_POINT, false, 3).unwrap();
     assert_eq!(r.len(), 89);
     for (i, s) in r.segments().enumerate() {
         let u = -1.0 + 2.0 * i as f64 / 88.0;
@@ -94,7 +94,7 @@ fn four_point_reproduces_the_quartic_exactly() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn repeated_steps_converge() {
-    let s = sample(AnalyticSurface::ALL[0], 9, (0.0, 3.0));
+    let s = sample(&AnalyticSurface::ALL[0], 9, (0.0, 3.0));
     for scheme in [COUPLED, Scheme::Variational { n: 12, variant: Variant::Averaged }, FOUR_POINT] {
         let mut cur = s.clone();
         let mut last = f64::INFINITY;
@@ -117,7 +117,7 @@ fn repeated_steps_converge() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn closed_strips() {
-    let hyp = AnalyticSurface::ALL[0];
+    let hyp = AnalyticSurface::ALL[0].clone();
     let s = hyp.sample(16, hyp.ranges()).unwrap();
     let r = subdivide_strip(&s, FOUR_POINT, true, 2).unwrap();
     assert_eq!(r.len(), 64);
@@ -134,8 +134,8 @@ fn closed_strips() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn recut_makes_the_result_independent_of_the_given_endpoints() {
-    let hyp = AnalyticSurface::ALL[0];
-    let s = sample(hyp, 10, (0.0, 2.0));
+    let hyp = AnalyticSurface::ALL[0].clone();
+    let s = sample(&hyp, 10, (0.0, 2.0));
     let slid = RuledSurface::new(
         s.segments()
             .enumerate()

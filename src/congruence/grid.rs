@@ -3,7 +3,7 @@
 //! by row. Every row and every column is a discrete ruled surface, so Section 2's
 //! invariants apply to them.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Record, Result};
 use crate::line::Segment;
 use crate::ruled::surface::check_coordinates;
 use crate::ruled::RuledSurface;
@@ -48,7 +48,7 @@ impl LineCongruence {
     fn checked(rows: usize, cols: usize, points: Vec<DVec3>) -> Result<Self> {
         for (k, pq) in points.chunks_exact(2).enumerate() {
             if (pq[1] - pq[0]).length() <= ZERO_LENGTH_REL * pq[0].length().max(pq[1].length()) {
-                return Err(Error::parameter(
+                return Err(Error::degenerate(
                     "coords",
                     format!("line ({}, {}) has zero length (p = q), so it has no direction", k / cols, k % cols),
                 ));
@@ -107,18 +107,10 @@ impl LineCongruence {
 
 /// A coordinate error restated in the congruence's terms: "line (i, j), q.x".
 fn name_line(e: Error, cols: usize) -> Error {
-    const NAMES: [&str; 6] = ["p.x", "p.y", "p.z", "q.x", "q.y", "q.z"];
-    let describe = |index: usize| {
-        let line = index / 6;
-        format!("coordinate {index} (line ({}, {}), {})", line / cols, line % cols, NAMES[index % 6])
-    };
+    let record = Record::GridLine { cols };
     match e {
-        Error::NonFinite { index, value, .. } => {
-            Error::parameter("coords", format!("{} is {value}; all coordinates must be finite numbers", describe(index)))
-        }
-        Error::OutOfRange { index, value, max, .. } => {
-            Error::parameter("coords", format!("{} is {value:e}; magnitudes above {max:e} are not accepted", describe(index)))
-        }
+        Error::NonFinite { index, value, .. } => Error::NonFinite { index, value, record },
+        Error::OutOfRange { index, value, max, .. } => Error::OutOfRange { index, value, max, record },
         other => other,
     }
 }

@@ -188,7 +188,7 @@ fn solve_grid(x: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
         }
         rr = rr_new;
     }
-    Err(Error::parameter("system", format!("conjugate gradients did not converge in {MAX_ITERATIONS} iterations")))
+    Err(Error::NotConverged { what: "system", iterations: MAX_ITERATIONS })
 }
 
 #[cfg(test)]

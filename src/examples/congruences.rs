@@ -1,6 +1,7 @@
-//! The line congruences of Examples 4 and 5 (Section 5, Figs. 13 and 15), in closed form:
-//! a line L(u, v) through p(u, v) on the director surface d₁ with direction d(u, v); the
-//! segment runs to q = p + d (the paper gives no length; ERRATA.md 9).
+//! Analytic line congruences: the congruences of Examples 4 and 5 (Section 5, Figs. 13 and
+//! 15) in closed form, and congruences typed as formulas. A line L(u, v) passes through
+//! p(u, v) on the director surface d₁ with direction d(u, v); the segment of a grid runs to
+//! q = p + d (the paper gives no length; ERRATA.md 9).
 //!
 //! - `sphere` (Fig. 13 left): d₁ the unit sphere p = (cos v cos u, cos v sin u, sin v),
 //!   d = normal + 0.3 (sin 2v, cos 3u, uv): a generalised offset, not a normal congruence.
@@ -8,13 +9,158 @@
 //!   d = (−v, −u, 1) + 0.3 (cos 2v, sin u, 0).
 //! - `example5` (Fig. 15): d₁ = (u, v, ½ sin(2u + 1.5v)), d = (u, v, sin u + 1.3 cos v),
 //!   an 8 × 7 grid on [−1.1, 1.1]², K = 6.
+//!
+//! Every congruence is evaluated on dual numbers ([`Dual`]), so besides p and d it yields their
+//! exact partial derivatives p_u, p_v, d_u, d_v ([`CongruenceJet`]), which the focal geometry
+//! of a congruence needs.
 
+use super::formula_surface::{check_interval, check_parameters, parse_vector, short};
 use crate::congruence::LineCongruence;
 use crate::error::{Error, Result};
+use crate::formula::dual::Dual;
+use crate::formula::{Formula, PARAMETERS};
+use crate::tolerance::{FORMULA_ZERO_DIRECTION, MAX_COORD};
 use glam::DVec3;
+use std::sync::Arc;
 
-/// The congruences of the paper's examples.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// p, d and their first partial derivatives at one (u, v).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CongruenceJet {
+    /// p(u, v) on the director surface d₁.
+    pub p: DVec3,
+    /// ∂p/∂u.
+    pub p_u: DVec3,
+    /// ∂p/∂v.
+    pub p_v: DVec3,
+    /// Line direction d(u, v) (not necessarily unit).
+    pub d: DVec3,
+    /// ∂d/∂u.
+    pub d_u: DVec3,
+    /// ∂d/∂v.
+    pub d_v: DVec3,
+}
+
+impl CongruenceJet {
+    fn of(p: [Dual; 3], d: [Dual; 3]) -> Self {
+        let re = |x: [Dual; 3]| DVec3::new(x[0].re, x[1].re, x[2].re);
+        let du = |x: [Dual; 3]| DVec3::new(x[0].du, x[1].du, x[2].du);
+        let dv = |x: [Dual; 3]| DVec3::new(x[0].dv, x[1].dv, x[2].dv);
+        CongruenceJet { p: re(p), p_u: du(p), p_v: dv(p), d: re(d), d_u: du(d), d_v: dv(d) }
+    }
+
+    /// Whether every value and derivative is finite.
+    pub fn is_finite(&self) -> bool {
+        [self.p, self.p_u, self.p_v, self.d, self.d_u, self.d_v].iter().all(|x| x.is_finite())
+    }
+}
+
+/// What a formula congruence is made from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CongruenceSpec {
+    /// p(u, v): x, y, z.
+    pub p: [String; 3],
+    /// e(u, v): the line direction, x, y, z.
+    pub e: [String; 3],
+    /// u interval.
+    pub u: (f64, f64),
+    /// v interval.
+    pub v: (f64, f64),
+    /// Values of the named parameters a, b, c.
+    pub parameters: [f64; 3],
+    /// Default grid size (rows along u, cols along v), each 2 … 1000.
+    pub grid: (usize, usize),
+}
+
+/// A congruence typed as formulas in u, v and the parameters a, b, c.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FormulaCongruence {
+    p: [Formula; 3],
+    e: [Formula; 3],
+    spec: CongruenceSpec,
+}
+
+/// Probes per parameter direction when a formula congruence is made (a 33 × 33 grid).
+const PROBES: usize = 33;
+
+impl FormulaCongruence {
+    /// The variables of a congruence's formulas, in evaluation order.
+    pub const VARIABLES: [&'static str; 5] = ["u", "v", PARAMETERS[0], PARAMETERS[1], PARAMETERS[2]];
+
+    /// Parses, checks and probes (values and derivatives finite, e ≠ 0 on a 33 × 33 grid).
+    pub fn new(spec: &CongruenceSpec) -> Result<Self> {
+        check_interval("u", spec.u, false)?;
+        check_interval("v", spec.v, false)?;
+        check_parameters(&spec.parameters)?;
+        for (name, n) in [("rows", spec.grid.0), ("cols", spec.grid.1)] {
+            if !(2..=1000).contains(&n) {
+                return Err(Error::parameter(name, format!("must be an integer from 2 to 1000, got {n}")));
+            }
+        }
+        let c = FormulaCongruence {
+            p: parse_vector("p", &spec.p, &Self::VARIABLES)?,
+            e: parse_vector("e", &spec.e, &Self::VARIABLES)?,
+            spec: spec.clone(),
+        };
+        let mut largest = 0.0f64;
+        let mut probes = Vec::with_capacity(PROBES * PROBES);
+        for i in 0..PROBES {
+            for j in 0..PROBES {
+                let u = spec.u.0 + (spec.u.1 - spec.u.0) * i as f64 / (PROBES - 1) as f64;
+                let v = spec.v.0 + (spec.v.1 - spec.v.0) * j as f64 / (PROBES - 1) as f64;
+                let jet = c.checked_jet(u, v)?;
+                largest = largest.max(jet.d.length());
+                probes.push((u, v, jet.d.length()));
+            }
+        }
+        if let Some(&(u, v, _)) = probes.iter().find(|p| p.2 <= FORMULA_ZERO_DIRECTION * largest) {
+            return Err(vanishing(u, v));
+        }
+        Ok(c)
+    }
+
+    /// What it was made from.
+    pub fn spec(&self) -> &CongruenceSpec {
+        &self.spec
+    }
+
+    /// p, d and their derivatives (NaN where a formula is undefined).
+    pub fn jet(&self, u: f64, v: f64) -> CongruenceJet {
+        let [a, b, c] = self.spec.parameters;
+        let vars = [Dual::u(u), Dual::v(v), Dual::constant(a), Dual::constant(b), Dual::constant(c)];
+        let mut stack = Vec::new();
+        let mut eval = |f: &[Formula; 3]| [f[0].eval(&vars, &mut stack), f[1].eval(&vars, &mut stack), f[2].eval(&vars, &mut stack)];
+        let p = eval(&self.p);
+        let d = eval(&self.e);
+        CongruenceJet::of(p, d)
+    }
+
+    /// [`FormulaCongruence::jet`], refused where a value or derivative is not finite or e = 0.
+    pub fn checked_jet(&self, u: f64, v: f64) -> Result<CongruenceJet> {
+        let jet = self.jet(u, v);
+        let at = || format!("(u, v) = ({}, {})", short(u), short(v));
+        for (field, value, slopes) in [("p", jet.p, [jet.p_u, jet.p_v]), ("e", jet.d, [jet.d_u, jet.d_v])] {
+            for k in 0..3 {
+                if !value[k].is_finite() || value[k].abs() > MAX_COORD {
+                    return Err(Error::NotFiniteAt { what: format!("{field}[{k}]"), at: at(), value: value[k], derivative: false });
+                }
+                if let Some(bad) = slopes.iter().map(|s| s[k]).find(|x| !x.is_finite()) {
+                    return Err(Error::NotFiniteAt { what: format!("{field}[{k}]"), at: at(), value: bad, derivative: true });
+                }
+            }
+        }
+        if jet.d == DVec3::ZERO {
+            return Err(vanishing(u, v));
+        }
+        Ok(jet)
+    }
+}
+
+fn vanishing(u: f64, v: f64) -> Error {
+    Error::degenerate("e", format!("e(u, v) vanishes at (u, v) = ({}, {}), so the line there has no direction", short(u), short(v)))
+}
+
+/// The congruences of the paper's examples, and congruences typed as formulas.
+#[derive(Debug, Clone, PartialEq)]
 pub enum AnalyticCongruence {
     /// Lines on a part of the unit sphere (Example 4, Fig. 13 left).
     Sphere,
@@ -22,11 +168,18 @@ pub enum AnalyticCongruence {
     HyperbolicParaboloid,
     /// Example 5 (Fig. 15).
     Example5,
+    /// p(u, v) and e(u, v) typed as formulas.
+    Formula(Arc<FormulaCongruence>),
 }
 
 impl AnalyticCongruence {
-    /// Every congruence.
+    /// Every built-in congruence.
     pub const ALL: [AnalyticCongruence; 3] = [Self::Sphere, Self::HyperbolicParaboloid, Self::Example5];
+
+    /// A congruence typed as formulas.
+    pub fn from_formulas(spec: &CongruenceSpec) -> Result<Self> {
+        FormulaCongruence::new(spec).map(|c| Self::Formula(Arc::new(c)))
+    }
 
     /// Machine name.
     pub fn name(&self) -> &'static str {
@@ -34,6 +187,7 @@ impl AnalyticCongruence {
             Self::Sphere => "sphere",
             Self::HyperbolicParaboloid => "hyperbolic-paraboloid",
             Self::Example5 => "example5",
+            Self::Formula(_) => "formula",
         }
     }
 
@@ -43,6 +197,7 @@ impl AnalyticCongruence {
             Self::Sphere => "Lines on a sphere (Example 4, Fig. 13 left)",
             Self::HyperbolicParaboloid => "Lines on a hyperbolic paraboloid (Example 4, Fig. 13 right)",
             Self::Example5 => "Example 5: d₁ = (u, v, ½ sin(2u + 1.5v)) (Fig. 15)",
+            Self::Formula(_) => "Your congruence p(u, v) + t·e(u, v)",
         }
     }
 
@@ -59,35 +214,56 @@ impl AnalyticCongruence {
             Self::Sphere => ((-0.8, 0.8), (-0.6, 0.6), 6, 6),
             Self::HyperbolicParaboloid => ((-1.0, 1.0), (-1.0, 1.0), 6, 6),
             Self::Example5 => ((-1.1, 1.1), (-1.1, 1.1), 8, 7),
+            Self::Formula(c) => (c.spec.u, c.spec.v, c.spec.grid.0, c.spec.grid.1),
         }
+    }
+
+    /// p, d and their partial derivatives at (u, v), exactly.
+    pub fn jet(&self, u: f64, v: f64) -> CongruenceJet {
+        let (u, v) = (Dual::u(u), Dual::v(v));
+        let (p, d) = match self {
+            Self::Sphere => {
+                let p = [v.cos() * u.cos(), v.cos() * u.sin(), v.sin()];
+                (p, [p[0] + 0.3 * (2.0 * v).sin(), p[1] + 0.3 * (3.0 * u).cos(), p[2] + 0.3 * u * v])
+            }
+            Self::HyperbolicParaboloid => {
+                ([u, v, u * v], [-v + 0.3 * (2.0 * v).cos(), -u + 0.3 * u.sin(), Dual::constant(1.0)])
+            }
+            Self::Example5 => ([u, v, 0.5 * (2.0 * u + 1.5 * v).sin()], [u, v, u.sin() + 1.3 * v.cos()]),
+            Self::Formula(c) => return c.jet(u.re, v.re),
+        };
+        CongruenceJet::of(p, d)
     }
 
     /// p(u, v) on d₁ and the line direction d(u, v).
     pub fn line(&self, u: f64, v: f64) -> (DVec3, DVec3) {
-        match self {
-            Self::Sphere => {
-                let p = DVec3::new(v.cos() * u.cos(), v.cos() * u.sin(), v.sin());
-                (p, p + 0.3 * DVec3::new((2.0 * v).sin(), (3.0 * u).cos(), u * v))
-            }
-            Self::HyperbolicParaboloid => {
-                (DVec3::new(u, v, u * v), DVec3::new(-v, -u, 1.0) + 0.3 * DVec3::new((2.0 * v).cos(), u.sin(), 0.0))
-            }
-            Self::Example5 => (DVec3::new(u, v, 0.5 * (2.0 * u + 1.5 * v).sin()), DVec3::new(u, v, u.sin() + 1.3 * v.cos())),
-        }
+        let j = self.jet(u, v);
+        (j.p, j.d)
+    }
+
+    /// The (u, v) of line (i, j) of a rows × cols grid over the domain.
+    pub fn parameters(&self, i: usize, j: usize, rows: usize, cols: usize) -> (f64, f64) {
+        let ((u0, u1), (v0, v1), _, _) = self.domain();
+        (u0 + (u1 - u0) * i as f64 / (rows - 1) as f64, v0 + (v1 - v0) * j as f64 / (cols - 1) as f64)
     }
 
     /// The rows × cols grid of lines p → p + d at equally spaced (u_i, v_j) of the domain.
     pub fn grid(&self, rows: usize, cols: usize) -> Result<LineCongruence> {
         crate::congruence::grid::check_shape(rows, cols)?;
-        let ((u0, u1), (v0, v1), _, _) = self.domain();
-        let (p, q): (Vec<DVec3>, Vec<DVec3>) = (0..rows * cols)
-            .map(|k| {
-                let u = u0 + (u1 - u0) * (k / cols) as f64 / (rows - 1) as f64;
-                let v = v0 + (v1 - v0) * (k % cols) as f64 / (cols - 1) as f64;
-                let (p, d) = self.line(u, v);
-                (p, p + d)
-            })
-            .unzip();
+        let mut p = Vec::with_capacity(rows * cols);
+        let mut q = Vec::with_capacity(rows * cols);
+        for k in 0..rows * cols {
+            let (u, v) = self.parameters(k / cols, k % cols, rows, cols);
+            let (a, d) = match self {
+                Self::Formula(c) => {
+                    let j = c.checked_jet(u, v)?;
+                    (j.p, j.d)
+                }
+                _ => self.line(u, v),
+            };
+            p.push(a);
+            q.push(a + d);
+        }
         LineCongruence::from_points(rows, cols, &p, &q)
     }
 
@@ -95,7 +271,6 @@ impl AnalyticCongruence {
     /// the same parameters, over its new lines: (largest distance |P − p|, largest angle
     /// between P → Q and d, in radians).
     pub fn errors(&self, refined: &LineCongruence) -> (f64, f64) {
-        let ((u0, u1), (v0, v1), _, _) = self.domain();
         let (rows, cols) = (refined.rows(), refined.cols());
         let mut worst = (0.0f64, 0.0f64);
         for i in 0..rows {
@@ -103,8 +278,7 @@ impl AnalyticCongruence {
                 if i % 2 == 0 && j % 2 == 0 {
                     continue;
                 }
-                let u = u0 + (u1 - u0) * i as f64 / (rows - 1) as f64;
-                let v = v0 + (v1 - v0) * j as f64 / (cols - 1) as f64;
+                let (u, v) = self.parameters(i, j, rows, cols);
                 let (p, d) = self.line(u, v);
                 let s = refined.line(i, j);
                 worst.0 = worst.0.max((s.a - p).length());
@@ -112,5 +286,69 @@ impl AnalyticCongruence {
             }
         }
         worst
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assert_near;
+
+    /// The dual evaluation's derivatives agree with central differences of the values.
+    #[test]
+    fn jets_are_consistent_derivatives() {
+        let h = 1e-6;
+        for c in AnalyticCongruence::ALL {
+            for (u, v) in [(0.3, -0.2), (-0.5, 0.4)] {
+                let j = c.jet(u, v);
+                let (pu, du) = (c.line(u + h, v), c.line(u - h, v));
+                let (pv, dv) = (c.line(u, v + h), c.line(u, v - h));
+                assert_near!((pu.0 - du.0) / (2.0 * h), j.p_u, 1e-8);
+                assert_near!((pu.1 - du.1) / (2.0 * h), j.d_u, 1e-8);
+                assert_near!((pv.0 - dv.0) / (2.0 * h), j.p_v, 1e-8);
+                assert_near!((pv.1 - dv.1) / (2.0 * h), j.d_v, 1e-8);
+            }
+        }
+    }
+
+    fn example5_spec() -> CongruenceSpec {
+        CongruenceSpec {
+            p: ["u", "v", "sin(2*u + 1.5*v)/2"].map(String::from),
+            e: ["u", "v", "sin(u) + 1.3*cos(v)"].map(String::from),
+            u: (-1.1, 1.1),
+            v: (-1.1, 1.1),
+            parameters: [1.0, 1.0, 1.0],
+            grid: (8, 7),
+        }
+    }
+
+    #[test]
+    fn example_5_typed_as_formulas_is_example_5() {
+        let typed = AnalyticCongruence::from_formulas(&example5_spec()).unwrap();
+        for (u, v) in [(0.3, -0.2), (-1.1, 1.1)] {
+            let (a, b) = (typed.jet(u, v), AnalyticCongruence::Example5.jet(u, v));
+            assert_eq!(a, b);
+        }
+        assert_eq!(typed.domain(), AnalyticCongruence::Example5.domain());
+        assert_eq!(typed.grid(8, 7).unwrap(), AnalyticCongruence::Example5.grid(8, 7).unwrap());
+    }
+
+    #[test]
+    fn bad_formulas_are_refused() {
+        let mut s = example5_spec();
+        s.e = ["u", "v", "0"].map(String::from);
+        let e = AnalyticCongruence::from_formulas(&s).unwrap_err();
+        assert_eq!(e.to_string(), "e: e(u, v) vanishes at (u, v) = (0, 0), so the line there has no direction");
+        let mut s = example5_spec();
+        s.p[2] = "1/(u - v)".into();
+        let e = AnalyticCongruence::from_formulas(&s).unwrap_err();
+        assert_eq!(e.code(), "not-finite");
+        assert!(e.to_string().starts_with("p[2] is not finite at (u, v) = (-1.1, -1.1)"), "{e}");
+        let mut s = example5_spec();
+        s.p[0] = "w".into();
+        assert!(AnalyticCongruence::from_formulas(&s).unwrap_err().to_string().contains("unknown name \"w\""));
+        let mut s = example5_spec();
+        s.grid = (1, 5);
+        assert!(AnalyticCongruence::from_formulas(&s).is_err());
     }
 }

@@ -16,11 +16,13 @@ use crate::error::{Error, Result};
 use crate::line::{Line, Segment};
 use crate::ruled::RuledSurface;
 use crate::tolerance::MAX_SAMPLES;
+use super::formula_surface::{FormulaSpec, FormulaSurface};
 use glam::DVec3;
 use std::f64::consts::{FRAC_PI_4, TAU};
+use std::sync::Arc;
 
-/// The ruled surfaces ruledlab knows in closed form.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The ruled surfaces ruledlab knows in closed form, and surfaces typed as formulas.
+#[derive(Debug, Clone, PartialEq)]
 pub enum AnalyticSurface {
     /// One regulus of the hyperboloid x²/A² + y²/B² − z²/C² = 1 (Example 1: A=1, B=2, C=3):
     /// a = (A cos u, B sin u, 0), d = (−A sin u, B cos u, C).
@@ -65,6 +67,8 @@ pub enum AnalyticSurface {
         /// Pitch p.
         pitch: f64,
     },
+    /// a(u) and e(u) typed as formulas ([`FormulaSurface`]), differentiated exactly.
+    Formula(Arc<FormulaSurface>),
 }
 
 /// a(u), a′(u), d(u), d′(u): what the exact invariants need.
@@ -126,6 +130,7 @@ impl AnalyticSurface {
             AnalyticSurface::Cone => "cone",
             AnalyticSurface::Cylinder => "cylinder",
             AnalyticSurface::HelixTangent { .. } => "helix-tangent",
+            AnalyticSurface::Formula(_) => "formula",
         }
     }
 
@@ -141,7 +146,13 @@ impl AnalyticSurface {
             AnalyticSurface::Cone => "Elliptic cone",
             AnalyticSurface::Cylinder => "Elliptic cylinder",
             AnalyticSurface::HelixTangent { .. } => "Tangent surface of a helix",
+            AnalyticSurface::Formula(_) => "Your surface a(u) + v·e(u)",
         }
+    }
+
+    /// A surface typed as formulas (see [`FormulaSurface`]).
+    pub fn from_formulas(spec: &FormulaSpec) -> Result<Self> {
+        FormulaSurface::new(spec).map(|f| AnalyticSurface::Formula(Arc::new(f)))
     }
 
     /// The surface of that [`name`](AnalyticSurface::name).
@@ -165,6 +176,7 @@ impl AnalyticSurface {
             AnalyticSurface::Cone => Ranges { u: (0.0, TAU), v: (0.2, 1.2), closed: true },
             AnalyticSurface::Cylinder => Ranges { u: (0.0, TAU), v: (-1.0, 1.0), closed: true },
             AnalyticSurface::HelixTangent { .. } => open(0.0, TAU, 0.1, 1.2),
+            AnalyticSurface::Formula(f) => f.ranges(),
         }
     }
 
@@ -173,6 +185,7 @@ impl AnalyticSurface {
         let (s, c) = u.sin_cos();
         let v = DVec3::new;
         match *self {
+            AnalyticSurface::Formula(ref f) => f.jet(u),
             AnalyticSurface::Hyperboloid { a, b, c: h } => Jet {
                 a: v(a * c, b * s, 0.0),
                 da: v(-a * s, b * c, 0.0),
@@ -323,10 +336,14 @@ impl AnalyticSurface {
         let step = (r.u.1 - r.u.0) / intervals as f64;
         let segments = (0..count)
             .map(|i| {
-                let j = self.jet(r.u.0 + i as f64 * step);
-                Segment::new(j.a + r.v.0 * j.d, j.a + r.v.1 * j.d)
+                let u = r.u.0 + i as f64 * step;
+                let j = match self {
+                    AnalyticSurface::Formula(f) => f.checked_jet(u)?,
+                    _ => self.jet(u),
+                };
+                Ok(Segment::new(j.a + r.v.0 * j.d, j.a + r.v.1 * j.d))
             })
-            .collect();
+            .collect::<Result<Vec<Segment>>>()?;
         RuledSurface::new(segments)
     }
 }
@@ -412,7 +429,7 @@ mod tests {
 
     #[test]
     fn hyperboloid_rulings_lie_on_the_quadric() {
-        let s = AnalyticSurface::ALL[0];
+        let s = AnalyticSurface::ALL[0].clone();
         for u in US {
             for v in [-2.0, 0.5, 3.0] {
                 let p = s.point(u, v);

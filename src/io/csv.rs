@@ -8,7 +8,7 @@ use crate::error::{Error, Result};
 use crate::tolerance::MAX_RULINGS;
 
 fn fail(line: usize, column: usize, message: impl std::fmt::Display) -> Error {
-    Error::parameter("csv", format!("line {line}, column {column}: {message}"))
+    Error::parse("csv", Some(line), Some(column), message.to_string())
 }
 
 /// Parses CSV text into flat coordinates.
@@ -72,7 +72,7 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
         }
     }
     if coords.is_empty() {
-        return Err(Error::parameter("csv", "no data lines (6 numbers each) found"));
+        return Err(Error::parse("csv", None, None, "no data lines (6 numbers each) found"));
     }
     Ok(Imported { coords, grid: None })
 }

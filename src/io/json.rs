@@ -35,7 +35,7 @@ struct Parser<'a> {
 impl<'a> Parser<'a> {
     fn fail(&self, at: usize, message: impl std::fmt::Display) -> Error {
         let (line, column) = position(self.text, at);
-        Error::parameter("json", format!("line {line}, column {column}: {message}"))
+        Error::parse("json", Some(line), Some(column), message.to_string())
     }
 
     fn skip_space(&mut self) {

@@ -61,10 +61,7 @@ impl SymmetricBanded {
                 let ij = self.at(i, j);
                 if i == j {
                     if s.is_nan() || s <= 0.0 {
-                        return Err(Error::parameter(
-                            "system",
-                            format!("matrix is not positive definite (pivot {i} is {s:e})"),
-                        ));
+                        return Err(Error::Singular { what: "system", pivot: i, value: s });
                     }
                     self.band[ij] = s.sqrt();
                 } else {

@@ -115,7 +115,7 @@ pub fn parse_gcode(text: &str, scale: f64) -> Result<Vec<Pose>> {
             code.split_whitespace()
                 .find_map(|w| w.strip_prefix(letter))
                 .and_then(|v| v.parse::<f64>().ok())
-                .ok_or_else(|| Error::parameter("gcode", format!("line {}: no {letter} value in \"{code}\"", number + 1)))
+                .ok_or_else(|| Error::parse("gcode", Some(number + 1), None, format!("no {letter} value in \"{code}\"")))
         };
         let (x, y, z, a, c) = (word('X')?, word('Y')?, word('Z')?, word('A')?, word('C')?);
         let r = table_rotation(a.to_radians(), c.to_radians());

@@ -19,14 +19,15 @@ use crate::error::{Error, Result};
 use crate::examples::AnalyticSurface;
 use crate::ruled::invariants::PairInvariants;
 use crate::tolerance::MAX_STUDY_LEVELS;
-use serde::Serialize;
+
 
 /// Errors below this (relative to the surface's size, ~1) are rounding noise and carry no order.
 const NOISE_FLOOR: f64 = 1e-13;
 
 /// One quantity's errors over the refinement levels.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
 pub struct Series {
     /// Name of the quantity (see the module table).
     pub name: &'static str,
@@ -41,8 +42,9 @@ pub struct Series {
 }
 
 /// The result of [`study`].
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
 pub struct Study {
     /// Surface name.
     pub surface: &'static str,
@@ -90,7 +92,7 @@ pub fn study(surface: &AnalyticSurface, u: f64, h0: f64, levels: usize) -> Resul
         let (prev, next) = (PairInvariants::of(&rm, &r0), PairInvariants::of(&r0, &rp));
         let (Some((_, f_back)), Some((f_fwd, f_next)), Some(n)) = (prev.feet, next.feet, next.normal)
         else {
-            return Err(Error::parameter("h0", format!("rulings at step {h} are parallel")));
+            return Err(Error::degenerate("h0", format!("rulings at step {h} are parallel")));
         };
         let s_mid = surface.striction(u + h / 2.0).unwrap_or(s);
         let values = [

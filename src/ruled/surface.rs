@@ -2,7 +2,7 @@
 //! (Section 2). Every constructor checks its input, so the algorithms that take a
 //! `RuledSurface` never meet NaN, infinities or zero-length rulings.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Record, Result};
 use crate::line::{Line, Segment};
 use crate::ruled::invariants::Invariants;
 use crate::tolerance::{MAX_COORD, MAX_RULINGS, ZERO_LENGTH_REL};
@@ -146,10 +146,10 @@ pub fn check_count(n: usize) -> Result<()> {
 pub fn check_coordinates(coords: &[f64], stride: usize) -> Result<()> {
     for (index, &value) in coords.iter().enumerate() {
         if !value.is_finite() {
-            return Err(Error::NonFinite { index, value, stride });
+            return Err(Error::NonFinite { index, value, record: Record::of_stride(stride) });
         }
         if value.abs() > MAX_COORD {
-            return Err(Error::OutOfRange { index, value, max: MAX_COORD, stride });
+            return Err(Error::OutOfRange { index, value, max: MAX_COORD, record: Record::of_stride(stride) });
         }
     }
     Ok(())
@@ -174,9 +174,9 @@ pub fn points_from_flat(coords: &[f64]) -> Result<Vec<DVec3>> {
 
 fn shift_index(e: Error, offset: usize) -> Error {
     match e {
-        Error::NonFinite { index, value, stride } => Error::NonFinite { index: index + offset, value, stride },
-        Error::OutOfRange { index, value, max, stride } => {
-            Error::OutOfRange { index: index + offset, value, max, stride }
+        Error::NonFinite { index, value, record } => Error::NonFinite { index: index + offset, value, record },
+        Error::OutOfRange { index, value, max, record } => {
+            Error::OutOfRange { index: index + offset, value, max, record }
         }
         other => other,
     }

@@ -86,7 +86,7 @@ mod tests {
 
     #[test]
     fn recut_centres_on_the_striction_points() {
-        let hyp = AnalyticSurface::ALL[0];
+        let hyp = AnalyticSurface::ALL[0].clone();
         let s = hyp.sample(20, hyp.ranges()).unwrap();
         let r = recut(&s, Some(0.5)).unwrap();
         let inv = s.invariants();

@@ -1,22 +1,13 @@
 //! Checking what JavaScript passed in, and building what goes back.
 
-use crate::error::Error;
 use js_sys::{Float64Array, Object, Reflect};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
-/// The core error as a JS `Error`.
-pub fn js_error(e: Error) -> JsError {
-    JsError::new(&e.to_string())
-}
-
-/// A JS `Error` with `message`, prefixed by the function's name.
-pub fn fail(func: &str, message: impl std::fmt::Display) -> JsError {
-    JsError::new(&format!("{func}: {message}"))
-}
+pub use super::error::{fail, fail_option};
 
 /// The contents of a `Float64Array`, or an error naming what was passed instead.
-pub fn float64_array(func: &str, name: &str, value: &JsValue) -> Result<Vec<f64>, JsError> {
+pub fn float64_array(func: &str, name: &str, value: &JsValue) -> Result<Vec<f64>, JsValue> {
     match value.dyn_ref::<Float64Array>() {
         Some(a) => Ok(a.to_vec()),
         None => Err(fail(func, format!("{name} must be a Float64Array, got {}", describe(value)))),
@@ -24,7 +15,7 @@ pub fn float64_array(func: &str, name: &str, value: &JsValue) -> Result<Vec<f64>
 }
 
 /// A non-negative integer given as a JS number.
-pub fn integer(func: &str, name: &str, x: f64, min: usize, max: usize) -> Result<usize, JsError> {
+pub fn integer(func: &str, name: &str, x: f64, min: usize, max: usize) -> Result<usize, JsValue> {
     if x.is_finite() && x.fract() == 0.0 && x >= min as f64 && x <= max as f64 {
         Ok(x as usize)
     } else {
@@ -42,7 +33,7 @@ pub struct Options {
 
 impl Options {
     /// Checks that `value` is a plain object with only `known` keys.
-    pub fn new(func: &'static str, value: JsValue, known: &[&str]) -> Result<Self, JsError> {
+    pub fn new(func: &'static str, value: JsValue, known: &[&str]) -> Result<Self, JsValue> {
         if value.is_undefined() || value.is_null() {
             return Ok(Options { func, object: None });
         }
@@ -53,8 +44,9 @@ impl Options {
         for key in Object::keys(&object).iter() {
             let key = key.as_string().unwrap_or_default();
             if !known.contains(&key.as_str()) {
-                return Err(fail(
+                return Err(fail_option(
                     func,
+                    &key,
                     format!("unknown option \"{key}\"; known options: {}", known.join(", ")),
                 ));
             }
@@ -67,16 +59,16 @@ impl Options {
         (!v.is_undefined()).then_some(v)
     }
 
-    fn wrong(&self, key: &str, expected: &str, v: &JsValue) -> JsError {
+    fn wrong(&self, key: &str, expected: &str, v: &JsValue) -> JsValue {
         let got = match v.as_f64() {
             Some(x) => format!("{x}"),
             None => describe(v),
         };
-        fail(self.func, format!("options.{key} must be {expected}, got {got}"))
+        fail_option(self.func, key, format!("options.{key} must be {expected}, got {got}"))
     }
 
     /// A finite number, if given.
-    pub fn number(&self, key: &str) -> Result<Option<f64>, JsError> {
+    pub fn number(&self, key: &str) -> Result<Option<f64>, JsValue> {
         match self.get(key) {
             None => Ok(None),
             Some(v) => match v.as_f64() {
@@ -87,7 +79,7 @@ impl Options {
     }
 
     /// An integer in [min, max], if given.
-    pub fn integer(&self, key: &str, min: usize, max: usize) -> Result<Option<usize>, JsError> {
+    pub fn integer(&self, key: &str, min: usize, max: usize) -> Result<Option<usize>, JsValue> {
         match self.get(key) {
             None => Ok(None),
             Some(v) => match v.as_f64() {
@@ -98,7 +90,7 @@ impl Options {
     }
 
     /// A string, if given.
-    pub fn string(&self, key: &str) -> Result<Option<String>, JsError> {
+    pub fn string(&self, key: &str) -> Result<Option<String>, JsValue> {
         match self.get(key) {
             None => Ok(None),
             Some(v) => v.as_string().map(Some).ok_or_else(|| self.wrong(key, "a string", &v)),
@@ -112,21 +104,60 @@ impl Options {
 
     /// Rejects `key` when given for a scheme other than `scheme` (a likely mistake that would
     /// otherwise be silently ignored).
-    pub fn only_for(&self, key: &str, scheme: &str, chosen: Option<&str>) -> Result<(), JsError> {
+    pub fn only_for(&self, key: &str, scheme: &str, chosen: Option<&str>) -> Result<(), JsValue> {
         if self.has(key) && chosen != Some(scheme) {
             let chosen = chosen.map(|c| format!(", not to \"{c}\"")).unwrap_or_default();
-            return Err(fail(self.func, format!("options.{key} applies to the \"{scheme}\" scheme only{chosen}")));
+            return Err(fail_option(self.func, key, format!("options.{key} applies to the \"{scheme}\" scheme only{chosen}")));
         }
         Ok(())
     }
 
     /// A boolean, if given.
-    pub fn boolean(&self, key: &str) -> Result<Option<bool>, JsError> {
+    pub fn boolean(&self, key: &str) -> Result<Option<bool>, JsValue> {
         match self.get(key) {
             None => Ok(None),
             Some(v) => v.as_bool().map(Some).ok_or_else(|| self.wrong(key, "true or false", &v)),
         }
     }
+}
+
+/// Reads an options object with serde-wasm-bindgen into `T`, after checking that it is a
+/// plain object (`undefined`/`null` read as `{}` when `optional`) whose keys are all in
+/// `known`, and that every nested object named in `nested` has only its known keys.
+/// (serde-wasm-bindgen reads struct fields by name, so it never sees unknown keys: a typo
+/// would otherwise be silently ignored.) serde's messages name the field and what it expects.
+pub fn read_options<T: serde::de::DeserializeOwned>(
+    func: &str,
+    value: JsValue,
+    known: &[&str],
+    nested: &[(&str, &[&str])],
+    optional: bool,
+) -> Result<T, JsValue> {
+    let value = if optional && (value.is_undefined() || value.is_null()) { Object::new().into() } else { value };
+    let plain = |v: &JsValue| v.is_object() && !js_sys::Array::is_array(v) && !v.is_function();
+    if !plain(&value) {
+        return Err(fail(func, format!("options must be an object {{ {} }}, got {}", known.join(", "), describe(&value))));
+    }
+    let check_keys = |object: &JsValue, prefix: &str, known: &[&str]| -> Result<(), JsValue> {
+        for key in Object::keys(object.unchecked_ref::<Object>()).iter() {
+            let key = key.as_string().unwrap_or_default();
+            if !known.contains(&key.as_str()) {
+                return Err(fail_option(func, &key, format!("unknown option \"{prefix}{key}\"; known options: {}", known.join(", "))));
+            }
+        }
+        Ok(())
+    };
+    check_keys(&value, "", known)?;
+    for (name, keys) in nested {
+        let inner = Reflect::get(&value, &JsValue::from_str(name)).unwrap_or(JsValue::UNDEFINED);
+        if plain(&inner) {
+            check_keys(&inner, &format!("{name}."), keys)?;
+        }
+    }
+    serde_wasm_bindgen::from_value(value).map_err(|e| {
+        let text = e.to_string();
+        fail(func, text.strip_prefix("Error: ").unwrap_or(&text).to_string())
+    })
 }
 
 /// What a JS value is, for messages: "a string", "an Array", "undefined", ….

@@ -65,7 +65,7 @@ impl LineCongruence {
         rows: f64,
         cols: f64,
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] coords: JsValue,
-    ) -> Result<LineCongruence, JsError> {
+    ) -> Result<LineCongruence, JsValue> {
         const F: &str = "LineCongruence.fromGrid";
         let rows = integer(F, "rows", rows, 2, MAX_RULINGS)?;
         let cols = integer(F, "cols", cols, 2, MAX_RULINGS)?;
@@ -99,13 +99,13 @@ impl LineCongruence {
     }
 
     /// Row i as a discrete ruled surface (Section 2's invariants apply).
-    pub fn row(&self, i: f64) -> Result<RuledSurface, JsError> {
+    pub fn row(&self, i: f64) -> Result<RuledSurface, JsValue> {
         let i = integer("LineCongruence.row", "i", i, 0, self.inner.rows() - 1)?;
         self.inner.row(i).map(RuledSurface::from_core).map_err(|e| fail("LineCongruence.row", e))
     }
 
     /// Column j as a discrete ruled surface.
-    pub fn column(&self, j: f64) -> Result<RuledSurface, JsError> {
+    pub fn column(&self, j: f64) -> Result<RuledSurface, JsValue> {
         let j = integer("LineCongruence.column", "j", j, 0, self.inner.cols() - 1)?;
         self.inner.column(j).map(RuledSurface::from_core).map_err(|e| fail("LineCongruence.column", e))
     }
@@ -115,7 +115,7 @@ impl LineCongruence {
     pub fn subdivide(
         &self,
         #[wasm_bindgen(unchecked_param_type = "CongruenceSubdivideOptions")] options: JsValue,
-    ) -> Result<LineCongruence, JsError> {
+    ) -> Result<LineCongruence, JsValue> {
         const F: &str = "LineCongruence.subdivide";
         let o = Options::new(F, options, &["scheme", "w", "diagonalOnly", "K", "variant", "steps", "space", "length"])?;
         let scheme = o.string("scheme")?;
@@ -168,6 +168,13 @@ pub struct AnalyticCongruence {
     inner: examples::AnalyticCongruence,
 }
 
+impl AnalyticCongruence {
+    /// Wraps a core congruence.
+    pub(crate) fn from_core(inner: examples::AnalyticCongruence) -> Self {
+        AnalyticCongruence { inner }
+    }
+}
+
 #[wasm_bindgen]
 impl AnalyticCongruence {
     /// Every congruence: name, title, domain and the grid size of the paper's figure.
@@ -193,7 +200,7 @@ impl AnalyticCongruence {
 
     /// The congruence named `name` ("sphere", "hyperbolic-paraboloid", "example5").
     #[wasm_bindgen(js_name = byName)]
-    pub fn by_name(#[wasm_bindgen(unchecked_param_type = "string")] name: JsValue) -> Result<AnalyticCongruence, JsError> {
+    pub fn by_name(#[wasm_bindgen(unchecked_param_type = "string")] name: JsValue) -> Result<AnalyticCongruence, JsValue> {
         let Some(name) = name.as_string() else {
             return Err(fail("AnalyticCongruence.byName", format!("name must be a string, got {}", describe(&name))));
         };
@@ -201,7 +208,7 @@ impl AnalyticCongruence {
     }
 
     /// A rows × cols grid of its lines (default: the paper's grid size).
-    pub fn grid(&self, rows: Option<f64>, cols: Option<f64>) -> Result<LineCongruence, JsError> {
+    pub fn grid(&self, rows: Option<f64>, cols: Option<f64>) -> Result<LineCongruence, JsValue> {
         const F: &str = "AnalyticCongruence.grid";
         let (_, _, r0, c0) = self.inner.domain();
         let rows = integer(F, "rows", rows.unwrap_or(r0 as f64), 2, MAX_RULINGS)?;

@@ -26,7 +26,7 @@ fn js_number(token: &str) -> f64 {
 pub fn import_segments(
     #[wasm_bindgen(unchecked_param_type = "string")] text: JsValue,
     #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\" | undefined")] format: JsValue,
-) -> Result<JsValue, JsError> {
+) -> Result<JsValue, JsValue> {
     const F: &str = "importSegments";
     let Some(text) = text.as_string() else {
         return Err(fail(F, format!("text must be a string, got {}", describe(&text))));
@@ -51,7 +51,7 @@ pub fn import_segments(
 
 /// CSV or JSON text of flat segments (full precision, so `importSegments` reads back the same
 /// numbers).
-fn export(func: &str, format: &JsValue, flat: &[f64], grid: Option<(usize, usize)>) -> Result<String, JsError> {
+fn export(func: &str, format: &JsValue, flat: &[f64], grid: Option<(usize, usize)>) -> Result<String, JsValue> {
     match format.as_string().as_deref() {
         Some("csv") => Ok(io::csv::write(flat)),
         Some("json") => Ok(io::json::write(flat, grid)),
@@ -63,7 +63,7 @@ fn export(func: &str, format: &JsValue, flat: &[f64], grid: Option<(usize, usize
 impl RuledSurface {
     /// The segments as text: "csv" (header `ax,ay,az,bx,by,bz`) or "json"
     /// (`{ "segments": [[…], …] }`), full precision.
-    pub fn export(&self, #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue) -> Result<String, JsError> {
+    pub fn export(&self, #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue) -> Result<String, JsValue> {
         export("RuledSurface.export", &format, self.core().flat(), None)
     }
 }
@@ -72,7 +72,7 @@ impl RuledSurface {
 impl LineCongruence {
     /// The lines as text: "json" (`{ "rows", "cols", "segments": [[…], …] }`) or "csv"
     /// (row-major, the grid shape is not kept).
-    pub fn export(&self, #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue) -> Result<String, JsError> {
+    pub fn export(&self, #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue) -> Result<String, JsValue> {
         export("LineCongruence.export", &format, self.core().flat(), Some((self.core().rows(), self.core().cols())))
     }
 }

@@ -7,6 +7,8 @@
 
 mod args;
 mod congruence;
+mod error;
+mod formula;
 mod io;
 mod subdivide;
 mod surface;

@@ -55,7 +55,7 @@ pub(crate) enum Space {
 
 /// Reads `options` into a scheme, `closed`, `steps` and the space the scheme acts in;
 /// `default_scheme` stands in when `options.scheme` is absent (otherwise it is required).
-pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<&str>) -> Result<(Scheme, bool, usize, Space), JsError> {
+pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<&str>) -> Result<(Scheme, bool, usize, Space), JsValue> {
     let o = Options::new(func, options, &KNOWN)?;
     let space = match o.string("space")?.as_deref() {
         None | Some("points") => {
@@ -110,7 +110,7 @@ impl RuledSurface {
     pub fn subdivide(
         &self,
         #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
-    ) -> Result<RuledSurface, JsError> {
+    ) -> Result<RuledSurface, JsValue> {
         const F: &str = "RuledSurface.subdivide";
         let (scheme, closed, steps, space) = read(F, options, None)?;
         match space {
@@ -123,7 +123,7 @@ impl RuledSurface {
 
     /// The rulings re-cut to segments of one length (default: the mean length), centred on
     /// the striction points: for data given as lines, before subdividing.
-    pub fn recut(&self, length: Option<f64>) -> Result<RuledSurface, JsError> {
+    pub fn recut(&self, length: Option<f64>) -> Result<RuledSurface, JsValue> {
         subdivision::recut(self.core(), length).map(RuledSurface::from_core).map_err(|e| fail("RuledSurface.recut", e))
     }
 }
@@ -134,7 +134,7 @@ impl RuledSurface {
 pub fn subdivide_polygon(
     #[wasm_bindgen(unchecked_param_type = "Float64Array")] points: JsValue,
     #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
-) -> Result<Float64Array, JsError> {
+) -> Result<Float64Array, JsValue> {
     const F: &str = "subdividePolygon";
     let flat = float64_array(F, "points", &points)?;
     let points = points_from_flat(&flat).map_err(|e| fail(F, e))?;

@@ -1,6 +1,6 @@
 //! `RuledSurface` and `AnalyticSurface` for JavaScript (Section 2).
 
-use super::args::{describe, fail, float64_array, integer, js_error, ObjectBuilder, Options};
+use super::args::{describe, fail, float64_array, integer, ObjectBuilder, Options};
 use crate::examples;
 use crate::ruled::{self, convergence, Development, HingeChain, Invariants};
 use std::cell::OnceCell;
@@ -99,7 +99,7 @@ impl RuledSurface {
     #[wasm_bindgen(js_name = fromSegments)]
     pub fn from_segments(
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] coords: JsValue,
-    ) -> Result<RuledSurface, JsError> {
+    ) -> Result<RuledSurface, JsValue> {
         let coords = float64_array("RuledSurface.fromSegments", "coords", &coords)?;
         ruled::RuledSurface::from_flat(&coords)
             .map(Self::from_core)
@@ -145,14 +145,14 @@ impl RuledSurface {
     /// earlier `invariants()` call on a surface with as many rulings): no allocation, for
     /// animation loops and large models. Throws if an array is missing or has the wrong length.
     #[wasm_bindgen(js_name = invariantsInto)]
-    pub fn invariants_into(&self, #[wasm_bindgen(unchecked_param_type = "Invariants")] out: JsValue) -> Result<(), JsError> {
+    pub fn invariants_into(&self, #[wasm_bindgen(unchecked_param_type = "Invariants")] out: JsValue) -> Result<(), JsValue> {
         const F: &str = "RuledSurface.invariantsInto";
         if !out.is_object() {
             return Err(fail(F, format!("out must be an Invariants object, got {}", describe(&out))));
         }
         let inv = self.inner.invariants();
         let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
-        let target = |key: &str, len: usize| -> Result<JsValue, JsError> {
+        let target = |key: &str, len: usize| -> Result<JsValue, JsValue> {
             let v = js_sys::Reflect::get(&out, &key.into()).map_err(|_| fail(F, format!("out.{key} is missing")))?;
             let got = js_sys::Reflect::get(&v, &"length".into()).ok().and_then(|l| l.as_f64());
             if got != Some(len as f64) {
@@ -160,7 +160,7 @@ impl RuledSurface {
             }
             Ok(v)
         };
-        let copy = |key: &str, data: &[f64]| -> Result<(), JsError> {
+        let copy = |key: &str, data: &[f64]| -> Result<(), JsValue> {
             match target(key, data.len())?.dyn_into::<Float64Array>() {
                 Ok(a) => {
                     a.copy_from(data);
@@ -196,7 +196,7 @@ impl RuledSurface {
     pub fn hinge(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] angles: JsValue,
-    ) -> Result<RuledSurface, JsError> {
+    ) -> Result<RuledSurface, JsValue> {
         const F: &str = "RuledSurface.hinge";
         let angles = float64_array(F, "angles", &angles)?;
         self.chain().deform(&angles).map(Self::from_core).map_err(|e| fail(F, e))
@@ -210,7 +210,7 @@ impl RuledSurface {
 
     /// The bending from this surface (t = 0) to its conoidal model (t = 1), hinge angles
     /// scaled by t. Throws unless 0 ≤ t ≤ 1.
-    pub fn bend(&self, t: f64) -> Result<RuledSurface, JsError> {
+    pub fn bend(&self, t: f64) -> Result<RuledSurface, JsValue> {
         self.chain().bend(t).map(Self::from_core).map_err(|e| fail("RuledSurface.bend", e))
     }
 
@@ -233,6 +233,13 @@ impl RuledSurface {
 #[wasm_bindgen]
 pub struct AnalyticSurface {
     inner: examples::AnalyticSurface,
+}
+
+impl AnalyticSurface {
+    /// Wraps a core surface.
+    pub(crate) fn from_core(inner: examples::AnalyticSurface) -> Self {
+        AnalyticSurface { inner }
+    }
 }
 
 #[wasm_bindgen]
@@ -259,7 +266,7 @@ impl AnalyticSurface {
 
     /// The surface named `name` (see `list()`); throws for an unknown name.
     #[wasm_bindgen(js_name = byName)]
-    pub fn by_name(#[wasm_bindgen(unchecked_param_type = "string")] name: JsValue) -> Result<AnalyticSurface, JsError> {
+    pub fn by_name(#[wasm_bindgen(unchecked_param_type = "string")] name: JsValue) -> Result<AnalyticSurface, JsValue> {
         let Some(name) = name.as_string() else {
             return Err(fail("AnalyticSurface.byName", format!("name must be a string, got {}", describe(&name))));
         };
@@ -285,7 +292,7 @@ impl AnalyticSurface {
         &self,
         count: f64,
         #[wasm_bindgen(unchecked_param_type = "SampleOptions | undefined")] opts: JsValue,
-    ) -> Result<RuledSurface, JsError> {
+    ) -> Result<RuledSurface, JsValue> {
         const F: &str = "AnalyticSurface.sample";
         let count = integer(F, "count", count, 2, MAX_SAMPLES)?;
         let o = Options::new(F, opts, &["uMin", "uMax", "vMin", "vMax", "closed"])?;
@@ -299,7 +306,7 @@ impl AnalyticSurface {
     }
 
     /// Exact striction points s(u) for each u: 3 numbers per u (NaN on a cylindrical ruling).
-    pub fn striction(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsError> {
+    pub fn striction(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsValue> {
         let u = self.parameters("AnalyticSurface.striction", &u)?;
         let out: Vec<f64> = u
             .iter()
@@ -309,7 +316,7 @@ impl AnalyticSurface {
     }
 
     /// Exact distribution parameters δ(u).
-    pub fn distribution(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsError> {
+    pub fn distribution(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsValue> {
         let u = self.parameters("AnalyticSurface.distribution", &u)?;
         let out: Vec<f64> = u.iter().map(|&u| self.inner.distribution(u)).collect();
         Ok(Float64Array::from(&out[..]))
@@ -317,7 +324,7 @@ impl AnalyticSurface {
 
     /// Exact central tangent directions e₃(u) (4): 3 numbers per u (NaN on a cylindrical ruling).
     #[wasm_bindgen(js_name = centralTangent)]
-    pub fn central_tangent(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsError> {
+    pub fn central_tangent(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsValue> {
         let u = self.parameters("AnalyticSurface.centralTangent", &u)?;
         let out: Vec<f64> = u
             .iter()
@@ -333,7 +340,7 @@ impl AnalyticSurface {
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] points: JsValue,
         u_min: f64,
         u_max: f64,
-    ) -> Result<Float64Array, JsError> {
+    ) -> Result<Float64Array, JsValue> {
         const F: &str = "AnalyticSurface.distances";
         let flat = float64_array(F, "points", &points)?;
         if !(u_min.is_finite() && u_max.is_finite() && u_min < u_max) {
@@ -355,7 +362,7 @@ impl AnalyticSurface {
     pub fn convergence(
         &self,
         #[wasm_bindgen(unchecked_param_type = "ConvergenceOptions | undefined")] opts: JsValue,
-    ) -> Result<JsValue, JsError> {
+    ) -> Result<JsValue, JsValue> {
         const F: &str = "AnalyticSurface.convergence";
         let o = Options::new(F, opts, &["u", "h0", "levels"])?;
         let levels = o.integer("levels", 2, MAX_STUDY_LEVELS)?.unwrap_or(8);
@@ -390,10 +397,10 @@ fn numbers(values: &[f64]) -> js_sys::Array {
 }
 
 impl AnalyticSurface {
-    fn parameters(&self, func: &str, u: &JsValue) -> Result<Vec<f64>, JsError> {
+    fn parameters(&self, func: &str, u: &JsValue) -> Result<Vec<f64>, JsValue> {
         let u = float64_array(func, "u", u)?;
         if u.len() > MAX_SAMPLES {
-            return Err(js_error(crate::Error::TooMany { what: "parameters", got: u.len(), max: MAX_SAMPLES }));
+            return Err(fail(func, crate::Error::TooMany { what: "parameters", got: u.len(), max: MAX_SAMPLES }));
         }
         if let Some(x) = u.iter().find(|x| !x.is_finite()) {
             return Err(fail(func, format!("every u must be finite, got {x}")));

@@ -41,7 +41,7 @@ pub struct ToolPath {
     inner: milling::ToolPath,
 }
 
-fn read_tool(func: &'static str, tool: JsValue) -> Result<milling::Tool, JsError> {
+fn read_tool(func: &'static str, tool: JsValue) -> Result<milling::Tool, JsValue> {
     if tool.is_undefined() || tool.is_null() {
         return Err(fail(func, "tool is required: { radius, length, end? }"));
     }
@@ -69,7 +69,7 @@ impl ToolPath {
     pub fn from_segments(
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] coords: JsValue,
         #[wasm_bindgen(unchecked_param_type = "ToolOptions")] tool: JsValue,
-    ) -> Result<ToolPath, JsError> {
+    ) -> Result<ToolPath, JsValue> {
         const F: &str = "ToolPath.fromSegments";
         let coords = float64_array(F, "coords", &coords)?;
         let tool = read_tool(F, tool)?;
@@ -81,14 +81,14 @@ impl ToolPath {
     }
 
     /// The built-in path of Figs. 16–18 with `count` given poses (default 7).
-    pub fn example(count: Option<f64>) -> Result<ToolPath, JsError> {
+    pub fn example(count: Option<f64>) -> Result<ToolPath, JsValue> {
         let count = super::args::integer("ToolPath.example", "count", count.unwrap_or(7.0), 2, 1000)?;
         example::example(count).map(|inner| ToolPath { inner }).map_err(|e| fail("ToolPath.example", e))
     }
 
     /// The example's target profile γ, `count` points (3 numbers each).
     #[wasm_bindgen(js_name = exampleProfile)]
-    pub fn example_profile(count: f64) -> Result<Float64Array, JsError> {
+    pub fn example_profile(count: f64) -> Result<Float64Array, JsValue> {
         let count = super::args::integer("ToolPath.exampleProfile", "count", count, 2, 1_000_000)?;
         Ok(flat(&example::profile(count)))
     }
@@ -104,7 +104,7 @@ impl ToolPath {
     pub fn refine(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Partial<SubdivideOptions> | undefined")] options: JsValue,
-    ) -> Result<ToolPath, JsError> {
+    ) -> Result<ToolPath, JsValue> {
         const F: &str = "ToolPath.refine";
         let (scheme, closed, steps, space) = super::subdivide::read(F, options, Some("variational"))?;
         if !matches!(space, super::subdivide::Space::Points) {
@@ -170,7 +170,7 @@ impl ToolPath {
 
     /// Signed deviation of each target point (3 numbers each) from the surface the tool leaves
     /// (> 0: material left, < 0: gouge).
-    pub fn deviation(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] targets: JsValue) -> Result<Float64Array, JsError> {
+    pub fn deviation(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] targets: JsValue) -> Result<Float64Array, JsValue> {
         const F: &str = "ToolPath.deviation";
         let t = points_from_flat(&float64_array(F, "targets", &targets)?).map_err(|e| fail(F, e))?;
         Ok(Float64Array::from(&quality::deviation(&self.inner, &t)[..]))
@@ -182,7 +182,7 @@ impl ToolPath {
         &self,
         #[wasm_bindgen(unchecked_param_type = "\"json\" | \"csv\" | \"gcode\"")] format: JsValue,
         #[wasm_bindgen(unchecked_param_type = "ExportOptions | undefined")] options: JsValue,
-    ) -> Result<String, JsError> {
+    ) -> Result<String, JsValue> {
         const F: &str = "ToolPath.export";
         let format = format.as_string().unwrap_or_default();
         let o = Options::new(F, options, &["feed", "scale", "clearance"])?;

@@ -1,0 +1,191 @@
+//! `AnalyticSurface.fromFormulas` and `AnalyticCongruence.fromFormulas`: surfaces and
+//! congruences typed as formulas (see [`crate::formula`]). The options object is read by
+//! serde-wasm-bindgen, unknown keys refused.
+
+use super::args::read_options;
+use super::congruence::AnalyticCongruence;
+use super::error::{fail, fail_option};
+use super::surface::AnalyticSurface;
+use crate::examples::{self, CongruenceSpec, FormulaSpec};
+use crate::formula::{Formula, PARAMETERS};
+use serde::de::{self, Deserializer, Visitor};
+use serde::Deserialize;
+use wasm_bindgen::prelude::*;
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_TYPES: &str = r#"
+/**
+ * A number, or a formula of the named parameters a, b, c and the constants pi, e
+ * (e.g. "2*pi"), for the ends of a parameter interval.
+ */
+export type Bound = number | string;
+
+/** Values of the named parameters a, b, c a formula may use (each defaults to 1). */
+export interface FormulaParameters { a?: number; b?: number; c?: number }
+
+/**
+ * A ruled surface x(u, v) = a(u) + v·e(u) typed as formulas in u (and a, b, c): e.g.
+ * `{ a: ["cos(u)", "2*sin(u)", "0"], e: ["-sin(u)", "2*cos(u)", "3"], u: [0, "2*pi"], closed: true }`.
+ * Functions: + − * / ^, sin cos tan asin acos atan atan2 sinh cosh tanh exp ln log sqrt abs;
+ * constants pi, e. At most 1000 characters and 64 levels of parentheses per formula.
+ */
+export interface SurfaceFormulas {
+  a: [string, string, string];
+  e: [string, string, string];
+  u: [Bound, Bound];
+  /** Segment ends along e (default [−1, 1]). */
+  v?: [Bound, Bound];
+  /** Whether u wraps around, as on a closed surface (default false). */
+  closed?: boolean;
+  parameters?: FormulaParameters;
+}
+
+/** A line congruence p(u, v) + t·e(u, v) typed as formulas in u, v (and a, b, c). */
+export interface CongruenceFormulas {
+  p: [string, string, string];
+  e: [string, string, string];
+  u: [Bound, Bound];
+  v: [Bound, Bound];
+  parameters?: FormulaParameters;
+  /** Default grid of `grid()`: rows along u (default 8), 2 … 1000. */
+  rows?: number;
+  /** Columns along v (default 8), 2 … 1000. */
+  cols?: number;
+}
+"#;
+
+/// An interval end: a number, or a formula in the parameters.
+enum Bound {
+    Number(f64),
+    Text(String),
+}
+
+impl<'de> Deserialize<'de> for Bound {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Expect;
+        impl Visitor<'_> for Expect {
+            type Value = Bound;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a number or a formula such as \"2*pi\"")
+            }
+            fn visit_f64<E: de::Error>(self, x: f64) -> Result<Bound, E> {
+                Ok(Bound::Number(x))
+            }
+            fn visit_i64<E: de::Error>(self, x: i64) -> Result<Bound, E> {
+                Ok(Bound::Number(x as f64))
+            }
+            fn visit_u64<E: de::Error>(self, x: u64) -> Result<Bound, E> {
+                Ok(Bound::Number(x as f64))
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> Result<Bound, E> {
+                Ok(Bound::Text(s.to_string()))
+            }
+        }
+        d.deserialize_any(Expect)
+    }
+}
+
+#[derive(Deserialize, Default)]
+struct Parameters {
+    a: Option<f64>,
+    b: Option<f64>,
+    c: Option<f64>,
+}
+
+impl Parameters {
+    fn values(&self) -> [f64; 3] {
+        [self.a.unwrap_or(1.0), self.b.unwrap_or(1.0), self.c.unwrap_or(1.0)]
+    }
+}
+
+#[derive(Deserialize)]
+struct SurfaceFormulas {
+    a: [String; 3],
+    e: [String; 3],
+    u: [Bound; 2],
+    v: Option<[Bound; 2]>,
+    #[serde(default)]
+    closed: bool,
+    #[serde(default)]
+    parameters: Parameters,
+}
+
+#[derive(Deserialize)]
+struct CongruenceFormulas {
+    p: [String; 3],
+    e: [String; 3],
+    u: [Bound; 2],
+    v: [Bound; 2],
+    #[serde(default)]
+    parameters: Parameters,
+    rows: Option<f64>,
+    cols: Option<f64>,
+}
+
+const PARAMETER_KEYS: (&str, &[&str]) = ("parameters", &PARAMETERS);
+
+/// An interval from two bounds (formulas evaluated with the parameters' values).
+fn interval(func: &str, name: &str, bounds: &[Bound; 2], parameters: &[f64; 3]) -> Result<(f64, f64), JsValue> {
+    let value = |k: usize| -> Result<f64, JsValue> {
+        match &bounds[k] {
+            Bound::Number(x) => Ok(*x),
+            Bound::Text(t) => {
+                let f = Formula::parse(&format!("{name}[{k}]"), t, &PARAMETERS).map_err(|e| fail(func, e))?;
+                Ok(f.value(parameters))
+            }
+        }
+    };
+    Ok((value(0)?, value(1)?))
+}
+
+#[wasm_bindgen]
+impl AnalyticSurface {
+    /// A surface typed as formulas (`SurfaceFormulas`): everything the built-in surfaces do,
+    /// with a′ and e′ differentiated exactly. Throws with the formula and column of a syntax
+    /// error, or the parameter where a value is not finite or e(u) vanishes.
+    #[wasm_bindgen(js_name = fromFormulas)]
+    pub fn from_formulas(#[wasm_bindgen(unchecked_param_type = "SurfaceFormulas")] spec: JsValue) -> Result<AnalyticSurface, JsValue> {
+        const F: &str = "AnalyticSurface.fromFormulas";
+        let s: SurfaceFormulas = read_options(F, spec, &["a", "e", "u", "v", "closed", "parameters"], &[PARAMETER_KEYS], false)?;
+        let parameters = s.parameters.values();
+        let spec = FormulaSpec {
+            u: interval(F, "u", &s.u, &parameters)?,
+            v: match &s.v {
+                Some(v) => interval(F, "v", v, &parameters)?,
+                None => (-1.0, 1.0),
+            },
+            a: s.a,
+            e: s.e,
+            closed: s.closed,
+            parameters,
+        };
+        examples::AnalyticSurface::from_formulas(&spec).map(AnalyticSurface::from_core).map_err(|e| fail(F, e))
+    }
+}
+
+#[wasm_bindgen]
+impl AnalyticCongruence {
+    /// A congruence typed as formulas (`CongruenceFormulas`), with exact derivatives.
+    #[wasm_bindgen(js_name = fromFormulas)]
+    pub fn from_formulas(#[wasm_bindgen(unchecked_param_type = "CongruenceFormulas")] spec: JsValue) -> Result<AnalyticCongruence, JsValue> {
+        const F: &str = "AnalyticCongruence.fromFormulas";
+        let s: CongruenceFormulas = read_options(F, spec, &["p", "e", "u", "v", "parameters", "rows", "cols"], &[PARAMETER_KEYS], false)?;
+        let parameters = s.parameters.values();
+        let size = |name: &str, x: Option<f64>| -> Result<usize, JsValue> {
+            match x {
+                None => Ok(8),
+                Some(x) if x.fract() == 0.0 && (2.0..=1000.0).contains(&x) => Ok(x as usize),
+                Some(x) => Err(fail_option(F, name, format!("{name} must be an integer from 2 to 1000, got {x}"))),
+            }
+        };
+        let spec = CongruenceSpec {
+            u: interval(F, "u", &s.u, &parameters)?,
+            v: interval(F, "v", &s.v, &parameters)?,
+            grid: (size("rows", s.rows)?, size("cols", s.cols)?),
+            p: s.p,
+            e: s.e,
+            parameters,
+        };
+        examples::AnalyticCongruence::from_formulas(&spec).map(AnalyticCongruence::from_core).map_err(|e| fail(F, e))
+    }
+}
