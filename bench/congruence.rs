@@ -33,7 +33,11 @@ fn congruence(c: &mut Criterion) {
 /// All sizes under `cargo bench`; only the smallest when `cargo test` runs the bench once
 /// as a test (criterion passes `--bench` only in the former).
 fn sizes<T>(all: &[T]) -> &[T] {
-    if std::env::args().any(|a| a == "--bench") { all } else { &all[..1] }
+    if std::env::args().any(|a| a == "--bench") {
+        all
+    } else {
+        &all[..1]
+    }
 }
 
 criterion_group!(benches, congruence);

@@ -12,9 +12,7 @@ fn invariants(c: &mut Criterion) {
         let hyp = AnalyticSurface::ALL[0].clone();
         let surface = hyp.sample(n, hyp.ranges()).expect("valid sample");
         group.throughput(Throughput::Elements(n as u64));
-        group.bench_with_input(BenchmarkId::from_parameter(n), &surface, |b, s| {
-            b.iter(|| black_box(s.invariants()))
-        });
+        group.bench_with_input(BenchmarkId::from_parameter(n), &surface, |b, s| b.iter(|| black_box(s.invariants())));
     }
     group.finish();
 }
@@ -35,7 +33,11 @@ fn from_flat(c: &mut Criterion) {
 /// All sizes under `cargo bench`; only the smallest when `cargo test` runs the bench once
 /// as a test (criterion passes `--bench` only in the former).
 fn sizes<T>(all: &[T]) -> &[T] {
-    if std::env::args().any(|a| a == "--bench") { all } else { &all[..1] }
+    if std::env::args().any(|a| a == "--bench") {
+        all
+    } else {
+        &all[..1]
+    }
 }
 
 criterion_group!(benches, invariants, from_flat);

@@ -5,7 +5,8 @@ use ruledlab::ruled::convergence::study;
 
 fn main() {
     let args: Vec<f64> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
-    let (u, h0, levels) = (*args.first().unwrap_or(&0.7), *args.get(1).unwrap_or(&0.1), *args.get(2).unwrap_or(&7.0) as usize);
+    let (u, h0, levels) =
+        (*args.first().unwrap_or(&0.7), *args.get(1).unwrap_or(&0.1), *args.get(2).unwrap_or(&7.0) as usize);
     for s in AnalyticSurface::ALL {
         match study(&s, u, h0, levels) {
             Ok(st) => {
@@ -14,8 +15,11 @@ fn main() {
                     let orders: Vec<String> = series.orders.iter().map(|o| format!("{o:5.2}")).collect();
                     println!(
                         "  {:<22} expected {:.0}  fitted {:5.2}  last error {:9.2e}  orders {}",
-                        series.name, series.expected_order, series.fitted_order,
-                        series.errors.last().unwrap(), orders.join(" ")
+                        series.name,
+                        series.expected_order,
+                        series.fitted_order,
+                        series.errors.last().unwrap(),
+                        orders.join(" ")
                     );
                 }
             }

@@ -24,7 +24,11 @@ fn errors(surface: &AnalyticSurface, n: usize, u: (f64, f64), refined: &RuledSur
 }
 
 fn main() {
-    let cases = [("hyperboloid", AnalyticSurface::ALL[0].clone(), (0.0, 3.0)), ("quartic", AnalyticSurface::Quartic, (-1.0, 1.0)), ("helical", AnalyticSurface::ALL[3].clone(), (0.0, 6.0))];
+    let cases = [
+        ("hyperboloid", AnalyticSurface::ALL[0].clone(), (0.0, 3.0)),
+        ("quartic", AnalyticSurface::Quartic, (-1.0, 1.0)),
+        ("helical", AnalyticSurface::ALL[3].clone(), (0.0, 6.0)),
+    ];
     let w = Scheme::FourPoint { w: 1.0 / 16.0 };
     for (name, surface, u) in cases {
         println!("{name}: max angle / max distance of the exact striction point, four-point w = 1/16");
@@ -34,8 +38,21 @@ fn main() {
             let ends = errors(&surface, n, u, &subdivide_strip(&s, w, false, 1).unwrap());
             let lines = errors(&surface, n, u, &subdivide_lines(&s, w, false, 1, None).unwrap());
             let order = |a: f64, b: f64| (a / b).log2();
-            let orders = last.map(|l| format!("  orders: endpoints {:.2}/{:.2}, lines {:.2}/{:.2}", order(l[0].0, ends.0), order(l[0].1, ends.1), order(l[1].0, lines.0), order(l[1].1, lines.1))).unwrap_or_default();
-            println!("  N = {n:>3}: endpoints {:.2e} / {:.2e}   lines {:.2e} / {:.2e}{orders}", ends.0, ends.1, lines.0, lines.1);
+            let orders = last
+                .map(|l| {
+                    format!(
+                        "  orders: endpoints {:.2}/{:.2}, lines {:.2}/{:.2}",
+                        order(l[0].0, ends.0),
+                        order(l[0].1, ends.1),
+                        order(l[1].0, lines.0),
+                        order(l[1].1, lines.1)
+                    )
+                })
+                .unwrap_or_default();
+            println!(
+                "  N = {n:>3}: endpoints {:.2e} / {:.2e}   lines {:.2e} / {:.2e}{orders}",
+                ends.0, ends.1, lines.0, lines.1
+            );
             last = Some([ends, lines]);
         }
     }

@@ -1,7 +1,10 @@
 //! Example 6: the tool path of Figs. 16–18 refined by each scheme; deviation of the machined
 //! surface from the target profile and smoothness of the orientation.
 //! `cargo run --release --example milling`
-use ruledlab::milling::{example, quality::{deviation, Quality}};
+use ruledlab::milling::{
+    example,
+    quality::{deviation, Quality},
+};
 use ruledlab::subdivision::{Scheme, Variant};
 
 fn main() {
@@ -20,7 +23,12 @@ fn main() {
         for steps in 1..=3 {
             let r = path.refine(scheme, steps).expect("refines");
             let q = Quality::of(&r);
-            println!("{name:<22} {steps:>6} {:>12.2e} {:>14.2e} {:>16.2e}", worst(&r), q.max_angle_step(), q.max_second_difference());
+            println!(
+                "{name:<22} {steps:>6} {:>12.2e} {:>14.2e} {:>16.2e}",
+                worst(&r),
+                q.max_angle_step(),
+                q.max_second_difference()
+            );
         }
     }
 }

@@ -26,7 +26,8 @@ fn main() {
         for (name, scheme) in schemes {
             let r = subdivide_strip(&s, scheme, false, 1).unwrap();
             // interpolatory: the inserted rulings; approximating: every ruling (none is kept)
-            let which: Vec<usize> = if scheme.is_interpolatory() { (1..r.len()).step_by(2).collect() } else { (0..r.len()).collect() };
+            let which: Vec<usize> =
+                if scheme.is_interpolatory() { (1..r.len()).step_by(2).collect() } else { (0..r.len()).collect() };
             let d = max_distance(&surface, &r, u.0, u.1, which.iter().copied());
             // "interior": without the two rulings nearest each end
             let inner = max_distance(&surface, &r, u.0, u.1, which[2..which.len() - 2].iter().copied());

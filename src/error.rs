@@ -191,14 +191,21 @@ impl Error {
     }
 
     /// Shorthand for [`Error::Parse`].
-    pub fn parse(source: impl Into<String>, line: Option<usize>, column: Option<usize>, message: impl Into<String>) -> Self {
+    pub fn parse(
+        source: impl Into<String>,
+        line: Option<usize>,
+        column: Option<usize>,
+        message: impl Into<String>,
+    ) -> Self {
         Error::Parse { source: source.into(), line, column, message: message.into(), hint: None }
     }
 
     /// The same error with `hint` (what to do) added after its position; other kinds unchanged.
     pub fn with_hint(self, text: impl Into<String>) -> Self {
         match self {
-            Error::Parse { source, line, column, message, .. } => Error::Parse { source, line, column, message, hint: Some(text.into()) },
+            Error::Parse { source, line, column, message, .. } => {
+                Error::Parse { source, line, column, message, hint: Some(text.into()) }
+            }
             other => other,
         }
     }
@@ -359,10 +366,7 @@ mod tests {
     #[test]
     fn messages_name_the_problem() {
         let e = Error::NonFinite { index: 16, value: f64::NAN, record: Record::Segment };
-        assert_eq!(
-            e.to_string(),
-            "coordinate 16 (ruling 2, b.y) is NaN; all coordinates must be finite numbers"
-        );
+        assert_eq!(e.to_string(), "coordinate 16 (ruling 2, b.y) is NaN; all coordinates must be finite numbers");
         let e = Error::NonFinite { index: 16, value: f64::INFINITY, record: Record::Point };
         assert!(e.to_string().starts_with("coordinate 16 (point 5, y) is inf"));
         let e = Error::BadLength { what: "segment coordinates", len: 7, multiple: 6 };

@@ -62,11 +62,7 @@ macro_rules! assert_near {
         let (a, b, tol) = ($a, $b, $tol);
         let err = $crate::tolerance::Distance::distance(&a, &b);
         let scale = 1f64.max($crate::tolerance::Distance::size(&a)).max($crate::tolerance::Distance::size(&b));
-        assert!(
-            err <= tol * scale,
-            "assert_near failed: {:?} vs {:?}: error {:e} > {:e}",
-            a, b, err, tol * scale
-        );
+        assert!(err <= tol * scale, "assert_near failed: {:?} vs {:?}: error {:e} > {:e}", a, b, err, tol * scale);
     }};
 }
 

@@ -46,7 +46,10 @@ fn bad_inputs_become_errors_with_messages() {
         (f64s(&GOOD[..11]), "length 11 is not a multiple of 6"),
         (f64s(&GOOD[..6]), "rulings: got 1, need at least 2"),
         (f64s(&[]), "rulings: got 0, need at least 2"),
-        (f64s(&[GOOD[0], f64::NAN, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]), "coordinate 1 (ruling 0, a.y) is NaN"),
+        (
+            f64s(&[GOOD[0], f64::NAN, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]),
+            "coordinate 1 (ruling 0, a.y) is NaN",
+        ),
         (f64s(&[0.0, 0.0, 0.0, f64::INFINITY, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]), "is inf"),
         (f64s(&[0.0, 0.0, 0.0, 1e300, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]), "magnitudes above 1e150"),
         (f64s(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 2.0, 2.0, 2.0, 2.0, 2.0, 2.0]), "ruling 1 has zero length"),
@@ -106,7 +109,13 @@ fn analytic_surface_arguments_are_checked() {
     assert_fails(AnalyticSurface::by_name(JsValue::from(3)), "name must be a string, got a number");
     assert_fails(AnalyticSurface::by_name("torus".into()), "unknown surface \"torus\"");
     let hyp = AnalyticSurface::by_name("hyperboloid".into()).unwrap();
-    for (count, expected) in [(1.0, "count must be an integer from 2"), (2.5, "got 2.5"), (f64::NAN, "got NaN"), (-3.0, "got -3"), (1e12, "got 1000000000000")] {
+    for (count, expected) in [
+        (1.0, "count must be an integer from 2"),
+        (2.5, "got 2.5"),
+        (f64::NAN, "got NaN"),
+        (-3.0, "got -3"),
+        (1e12, "got 1000000000000"),
+    ] {
         let m = message(hyp.sample(count, JsValue::UNDEFINED));
         assert!(m.contains(expected), "{m}");
     }
@@ -118,9 +127,10 @@ fn analytic_surface_arguments_are_checked() {
     assert_fails(hyp.sample(5.0, opts.into()), "unknown option \"colour\"; known options: uMin");
     assert_fails(hyp.sample(5.0, JsValue::from(7)), "options must be an object, got a number");
     assert_fails(hyp.striction(f64s(&[0.1, f64::NAN])), "every u must be finite");
-    assert!(message(hyp.convergence(JsValue::NULL).and_then(|_| {
-        AnalyticSurface::by_name("cylinder".into()).unwrap().convergence(JsValue::UNDEFINED)
-    }))
+    assert!(message(
+        hyp.convergence(JsValue::NULL)
+            .and_then(|_| { AnalyticSurface::by_name("cylinder".into()).unwrap().convergence(JsValue::UNDEFINED) })
+    )
     .contains("no striction point"));
     // still usable after all of that
     assert_eq!(hyp.sample(5.0, JsValue::UNDEFINED).unwrap().length(), 5);

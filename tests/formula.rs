@@ -14,7 +14,14 @@ use wasm_bindgen_test::wasm_bindgen_test;
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
 fn surface(a: [&str; 3], e: [&str; 3], u: (f64, f64)) -> AnalyticSurface {
-    let spec = FormulaSpec { a: a.map(String::from), e: e.map(String::from), u, v: (-1.0, 1.0), closed: false, parameters: [1.0, 2.0, 3.0] };
+    let spec = FormulaSpec {
+        a: a.map(String::from),
+        e: e.map(String::from),
+        u,
+        v: (-1.0, 1.0),
+        closed: false,
+        parameters: [1.0, 2.0, 3.0],
+    };
     AnalyticSurface::from_formulas(&spec).unwrap()
 }
 
@@ -23,7 +30,8 @@ fn surface(a: [&str; 3], e: [&str; 3], u: (f64, f64)) -> AnalyticSurface {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn helical_surface_as_formulas() {
-    let typed = surface(["cos(u)", "sin(u)", "0.4*u"], ["-cos(pi/4)*sin(u)", "cos(pi/4)*cos(u)", "sin(pi/4)"], (0.0, 9.0));
+    let typed =
+        surface(["cos(u)", "sin(u)", "0.4*u"], ["-cos(pi/4)*sin(u)", "cos(pi/4)*cos(u)", "sin(pi/4)"], (0.0, 9.0));
     let built = &AnalyticSurface::ALL[3];
     for u in [0.2, 1.7, 5.0] {
         assert_near!(typed.striction(u).unwrap(), built.striction(u).unwrap(), EXACT);
@@ -50,7 +58,10 @@ fn convergence_orders_on_a_typed_surface() {
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn sampling_matches_the_built_in_surface() {
     let typed = surface(["1", "u^2/2", "u"], ["u^2", "u", "-1"], (-1.0, 1.0));
-    let (a, b) = (typed.sample(12, typed.ranges()).unwrap(), AnalyticSurface::Quartic.sample(12, AnalyticSurface::Quartic.ranges()).unwrap());
+    let (a, b) = (
+        typed.sample(12, typed.ranges()).unwrap(),
+        AnalyticSurface::Quartic.sample(12, AnalyticSurface::Quartic.ranges()).unwrap(),
+    );
     for i in 0..12 {
         assert_near!(a.segment(i).a, b.segment(i).a, EXACT);
         assert_near!(a.segment(i).b, b.segment(i).b, EXACT);
@@ -84,9 +95,42 @@ fn example_5_congruence_as_formulas() {
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn hostile_formulas_never_panic() {
     let mut texts: Vec<String> = [
-        "1e308*1e308", "-u^-u^", "u^^2", "((((u))))", ")(", "sin()", "atan2(,)", "atan2(u,)", "u,u", "2..3", "1e", "1e+", ".e1",
-        "u = 3", "u; u", "\"u\"", "u == u", "u && u", "!u", "u % 2", "u // c", "u /* c */", "0x1F", "true", "NaN", "inf",
-        "ü", "𝑢", "u\u{0}", "sin(u", "sin u)", "--------u", "+-+-u", "2^3^4", "e^e^e", "atan2(atan2(u,u),atan2(u,u))",
+        "1e308*1e308",
+        "-u^-u^",
+        "u^^2",
+        "((((u))))",
+        ")(",
+        "sin()",
+        "atan2(,)",
+        "atan2(u,)",
+        "u,u",
+        "2..3",
+        "1e",
+        "1e+",
+        ".e1",
+        "u = 3",
+        "u; u",
+        "\"u\"",
+        "u == u",
+        "u && u",
+        "!u",
+        "u % 2",
+        "u // c",
+        "u /* c */",
+        "0x1F",
+        "true",
+        "NaN",
+        "inf",
+        "ü",
+        "𝑢",
+        "u\u{0}",
+        "sin(u",
+        "sin u)",
+        "--------u",
+        "+-+-u",
+        "2^3^4",
+        "e^e^e",
+        "atan2(atan2(u,u),atan2(u,u))",
     ]
     .map(String::from)
     .to_vec();
@@ -105,7 +149,9 @@ fn hostile_formulas_never_panic() {
             Ok(f) => {
                 let _ = f.value(&[0.5]);
             }
-            Err(e) => assert!(!e.to_string().is_empty() && ["parse-error", "too-large"].contains(&e.code()), "{t}: {e}"),
+            Err(e) => {
+                assert!(!e.to_string().is_empty() && ["parse-error", "too-large"].contains(&e.code()), "{t}: {e}")
+            }
         }
     }
     assert_eq!(Formula::parse("f", &texts[texts.len() - 9], &["u"]).unwrap_err().code(), "too-large");

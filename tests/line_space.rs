@@ -28,7 +28,11 @@ fn slide(s: &RuledSurface) -> RuledSurface {
             .map(|(i, g)| {
                 let d = g.b - g.a;
                 let (a, b) = (g.a + (0.37 * i as f64 - 1.1) * d, g.b + (0.5 + 0.13 * i as f64) * d);
-                if i > 0 && i % 3 == 0 { Segment::new(b, a) } else { Segment::new(a, b) }
+                if i > 0 && i % 3 == 0 {
+                    Segment::new(b, a)
+                } else {
+                    Segment::new(a, b)
+                }
             })
             .collect(),
     )
@@ -43,7 +47,10 @@ fn assert_same(a: &[DVec3], b: &[DVec3], tol: f64) {
 }
 
 fn motion() -> DAffine3 {
-    DAffine3::from_rotation_translation(DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 0.5).normalize(), 2.1), DVec3::new(3.0, -7.0, 11.0))
+    DAffine3::from_rotation_translation(
+        DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 0.5).normalize(), 2.1),
+        DVec3::new(3.0, -7.0, 11.0),
+    )
 }
 
 #[cfg_attr(not(target_family = "wasm"), test)]
@@ -62,8 +69,14 @@ fn sliding_endpoints_changes_no_output() {
 fn commutes_with_rigid_motions() {
     let m = motion();
     let s = hyperboloid(10);
-    let moved_first = subdivide_lines(&s.map_points(|p| m.transform_point3(p)).unwrap(), FOUR_POINT, false, 2, Some(1.0)).unwrap();
-    let moved_after: Vec<DVec3> = subdivide_lines(&s, FOUR_POINT, false, 2, Some(1.0)).unwrap().points().iter().map(|&p| m.transform_point3(p)).collect();
+    let moved_first =
+        subdivide_lines(&s.map_points(|p| m.transform_point3(p)).unwrap(), FOUR_POINT, false, 2, Some(1.0)).unwrap();
+    let moved_after: Vec<DVec3> = subdivide_lines(&s, FOUR_POINT, false, 2, Some(1.0))
+        .unwrap()
+        .points()
+        .iter()
+        .map(|&p| m.transform_point3(p))
+        .collect();
     assert_same(moved_first.points(), &moved_after, 1e-11);
 }
 
@@ -105,7 +118,12 @@ fn butterfly_on_lines_is_endpoint_free_and_equivariant() {
     let c = AnalyticCongruence::Sphere.grid(5, 5).unwrap();
     let slid = {
         let (p, q) = (c.p(), c.q());
-        let (p2, q2): (Vec<DVec3>, Vec<DVec3>) = p.iter().zip(&q).enumerate().map(|(k, (a, b))| (*a + (0.2 * k as f64 - 1.0) * (*b - *a), *b + 0.3 * (*b - *a))).unzip();
+        let (p2, q2): (Vec<DVec3>, Vec<DVec3>) = p
+            .iter()
+            .zip(&q)
+            .enumerate()
+            .map(|(k, (a, b))| (*a + (0.2 * k as f64 - 1.0) * (*b - *a), *b + 0.3 * (*b - *a)))
+            .unzip();
         LineCongruence::from_points(5, 5, &p2, &q2).unwrap()
     };
     let a = butterfly_lines(&c, 1.0 / 16.0, 1, Some(1.0)).unwrap();
@@ -113,7 +131,13 @@ fn butterfly_on_lines_is_endpoint_free_and_equivariant() {
     assert_same(&a.p(), &b.p(), 1e-12);
     assert_same(&a.q(), &b.q(), 1e-12);
     let m = motion();
-    let moved = LineCongruence::from_points(5, 5, &c.p().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(), &c.q().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>()).unwrap();
+    let moved = LineCongruence::from_points(
+        5,
+        5,
+        &c.p().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(),
+        &c.q().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(),
+    )
+    .unwrap();
     let r = butterfly_lines(&moved, 1.0 / 16.0, 1, Some(1.0)).unwrap();
     assert_same(&r.p(), &a.p().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(), 1e-11);
     assert!(butterfly_lines(&c, 0.5, 1, None).is_err());

@@ -20,15 +20,14 @@ fn vec3() -> impl Strategy<Value = DVec3> {
 
 /// Random surfaces of 3–12 rulings whose consecutive directions are clearly not parallel.
 fn surface() -> impl Strategy<Value = RuledSurface> {
-    prop::collection::vec((vec3(), vec3()), 3..12)
-        .prop_filter_map("degenerate", |pairs| {
-            let segments: Vec<Segment> = pairs.iter().map(|&(a, d)| Segment::new(a, a + d)).collect();
-            let s = RuledSurface::new(segments).ok()?;
-            let lines: Vec<Line> = s.lines().collect();
-            let ok = lines.windows(2).all(|w| w[0].dir.cross(w[1].dir).length() > 0.05)
-                && s.segments().all(|g| g.length() > 0.1);
-            ok.then_some(s)
-        })
+    prop::collection::vec((vec3(), vec3()), 3..12).prop_filter_map("degenerate", |pairs| {
+        let segments: Vec<Segment> = pairs.iter().map(|&(a, d)| Segment::new(a, a + d)).collect();
+        let s = RuledSurface::new(segments).ok()?;
+        let lines: Vec<Line> = s.lines().collect();
+        let ok = lines.windows(2).all(|w| w[0].dir.cross(w[1].dir).length() > 0.05)
+            && s.segments().all(|g| g.length() > 0.1);
+        ok.then_some(s)
+    })
 }
 
 fn motion() -> impl Strategy<Value = DAffine3> {

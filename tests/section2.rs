@@ -105,8 +105,7 @@ fn cylinder_pairs_are_flagged_parallel() {
     for i in 0..11 {
         assert!(inv.parallel[i]);
         assert_eq!(inv.angle[i], 0.0);
-        let chord = (cyl.jet(0.0).a - cyl.jet(0.0).a).length()
-            + (s.segment(i + 1).a - s.segment(i).a).length();
+        let chord = (cyl.jet(0.0).a - cyl.jet(0.0).a).length() + (s.segment(i + 1).a - s.segment(i).a).length();
         assert_near!(inv.distance[i], chord, EXACT);
         assert!(inv.distribution[i].is_nan() && inv.footpoints[2 * i].is_nan());
     }

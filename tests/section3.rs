@@ -188,7 +188,8 @@ fn tangent_surface_measure_falls_at_second_order() {
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn skew_surface_measure_converges() {
     let hyp = AnalyticSurface::ALL[0].clone();
-    let m: Vec<f64> = [21, 41, 81, 161].iter().map(|&n| Development::of(&sample(&hyp, n, (0.0, 2.0))).non_developability()).collect();
+    let m: Vec<f64> =
+        [21, 41, 81, 161].iter().map(|&n| Development::of(&sample(&hyp, n, (0.0, 2.0))).non_developability()).collect();
     assert!(m[3] > 0.5, "a hyperboloid strip is far from developable: {}", m[3]);
     let order = ((m[1] - m[0]) / (m[2] - m[1])).abs().log2();
     let order2 = ((m[2] - m[1]) / (m[3] - m[2])).abs().log2();
@@ -232,15 +233,19 @@ fn helical_surface_conoidal_image_touches_a_cylinder() {
             let dev = Development::of(&sample(&surface, n, (0.0, 6.0)));
             let inv = dev.conoidal.invariants();
             // by screw symmetry every footpoint image lies on one circle about the axis
-            let q: Vec<DVec2> = (0..3).map(|i| {
-                let f = inv.footpoints[2 * (i + 5)];
-                dev.points[0] + project(&dev, f)
-            }).collect();
+            let q: Vec<DVec2> = (0..3)
+                .map(|i| {
+                    let f = inv.footpoints[2 * (i + 5)];
+                    dev.points[0] + project(&dev, f)
+                })
+                .collect();
             let c = circumcenter(q[0], q[1], q[2]);
-            let d: Vec<f64> = (0..n).map(|i| {
-                let (a, b) = (dev.points[2 * i], dev.points[2 * i + 1]);
-                (c - a).perp_dot((b - a).normalize()).abs()
-            }).collect();
+            let d: Vec<f64> = (0..n)
+                .map(|i| {
+                    let (a, b) = (dev.points[2 * i], dev.points[2 * i + 1]);
+                    (c - a).perp_dot((b - a).normalize()).abs()
+                })
+                .collect();
             let spread = d.iter().fold(0.0f64, |m, x| m.max((x - d[0]).abs()));
             assert!(spread < 1e-9, "not all rulings touch one circle: spread {spread:e}");
             d[0]
@@ -261,5 +266,8 @@ fn project(dev: &Development, p: DVec3) -> DVec2 {
 fn circumcenter(a: DVec2, b: DVec2, c: DVec2) -> DVec2 {
     let (b, c) = (b - a, c - a);
     let d = 2.0 * b.perp_dot(c);
-    a + DVec2::new(c.y * b.length_squared() - b.y * c.length_squared(), b.x * c.length_squared() - c.x * b.length_squared()) / d
+    a + DVec2::new(
+        c.y * b.length_squared() - b.y * c.length_squared(),
+        b.x * c.length_squared() - c.x * b.length_squared(),
+    ) / d
 }

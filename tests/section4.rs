@@ -62,7 +62,11 @@ fn literal_variational_equals_the_midpoint_rule() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn variational_beats_the_midpoint_rule_on_curved_surfaces() {
-    let cases = [(AnalyticSurface::Quartic, (-1.0, 1.0)), (AnalyticSurface::ALL[0].clone(), (0.0, 3.0)), (AnalyticSurface::ALL[3].clone(), (0.0, 6.0))];
+    let cases = [
+        (AnalyticSurface::Quartic, (-1.0, 1.0)),
+        (AnalyticSurface::ALL[0].clone(), (0.0, 3.0)),
+        (AnalyticSurface::ALL[3].clone(), (0.0, 6.0)),
+    ];
     for (surface, u) in cases {
         let midpoint = errors(&surface, u, Scheme::BSpline { degree: 1 });
         let coupled = errors(&surface, u, COUPLED);

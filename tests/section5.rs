@@ -98,7 +98,12 @@ fn rows_columns_and_limits() {
 fn coupled_solve_iterations_do_not_grow_with_the_grid() {
     let counts: Vec<usize> = [9, 17, 33]
         .iter()
-        .map(|&n| ruledlab::congruence::variational::coupled(&AnalyticCongruence::Example5.grid(n, n).unwrap(), 6).unwrap().1.iterations)
+        .map(|&n| {
+            ruledlab::congruence::variational::coupled(&AnalyticCongruence::Example5.grid(n, n).unwrap(), 6)
+                .unwrap()
+                .1
+                .iterations
+        })
         .collect();
     assert!(counts.iter().all(|&k| k > 0 && k <= 40), "{counts:?}");
     assert!(counts[2] <= counts[0] + 2, "iterations grow: {counts:?}");

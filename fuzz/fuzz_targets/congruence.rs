@@ -16,7 +16,11 @@ fuzz_target!(|data: &[u8]| {
     }
     let Ok(c) = LineCongruence::from_flat(rows, cols, &values[..6 * rows * cols]) else { return };
     let w = values[0];
-    for scheme in [CongruenceScheme::Butterfly { w }, CongruenceScheme::TwoStage { k: 3 + (shape as usize >> 4) }, CongruenceScheme::Coupled { k: 4 }] {
+    for scheme in [
+        CongruenceScheme::Butterfly { w },
+        CongruenceScheme::TwoStage { k: 3 + (shape as usize >> 4) },
+        CongruenceScheme::Coupled { k: 4 },
+    ] {
         let _ = subdivide(&c, scheme, 1);
     }
     let _ = butterfly_diagonal(&c, w);

@@ -16,7 +16,9 @@ fuzz_target!(|data: &[u8]| {
     if values.len() < 15 {
         return;
     }
-    let Ok(tool) = Tool::new(values[0], values[1], if values[2] > 0.0 { ToolEnd::Ball } else { ToolEnd::Flat }) else { return };
+    let Ok(tool) = Tool::new(values[0], values[1], if values[2] > 0.0 { ToolEnd::Ball } else { ToolEnd::Flat }) else {
+        return;
+    };
     let n = (values.len() - 3) / 6 * 6;
     let Ok(axes) = RuledSurface::from_flat(&values[3..3 + n.min(6 * 32)]) else { return };
     let path = ToolPath::from_surface(&axes, tool);

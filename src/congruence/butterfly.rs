@@ -100,7 +100,10 @@ pub fn refine_points(p: &[DVec3], rows: usize, cols: usize, w: f64) -> Vec<DVec3
 /// The paper's insertion of Fig. 13: only the diagonal points (16), (rows − 1) × (cols − 1).
 pub fn diagonal_points(p: &[DVec3], rows: usize, cols: usize, w: f64) -> Vec<DVec3> {
     let e = Extended::new(p, rows, cols);
-    (0..rows - 1).flat_map(|i| (0..cols - 1).map(move |j| (i, j))).map(|(i, j)| diagonal(&e, i as isize, j as isize, w)).collect()
+    (0..rows - 1)
+        .flat_map(|i| (0..cols - 1).map(move |j| (i, j)))
+        .map(|(i, j)| diagonal(&e, i as isize, j as isize, w))
+        .collect()
 }
 
 #[cfg(test)]

@@ -118,7 +118,10 @@ fn name_line(e: Error, cols: usize) -> Error {
 /// rows, cols ≥ 2 and rows · cols ≤ [`MAX_RULINGS`] (checked without overflow).
 pub fn check_shape(rows: usize, cols: usize) -> Result<()> {
     if rows < 2 || cols < 2 {
-        return Err(Error::parameter("rows, cols", format!("a congruence needs at least 2 × 2 lines, got {rows} × {cols}")));
+        return Err(Error::parameter(
+            "rows, cols",
+            format!("a congruence needs at least 2 × 2 lines, got {rows} × {cols}"),
+        ));
     }
     match rows.checked_mul(cols) {
         Some(n) if n <= MAX_RULINGS => Ok(()),
@@ -131,7 +134,12 @@ mod tests {
     use super::*;
 
     fn grid(rows: usize, cols: usize) -> Vec<f64> {
-        (0..rows * cols).flat_map(|k| { let (i, j) = ((k / cols) as f64, (k % cols) as f64); [i, j, 0.0, i, j, 1.0] }).collect()
+        (0..rows * cols)
+            .flat_map(|k| {
+                let (i, j) = ((k / cols) as f64, (k % cols) as f64);
+                [i, j, 0.0, i, j, 1.0]
+            })
+            .collect()
     }
 
     #[test]

@@ -45,7 +45,11 @@ pub fn subdivide(c: &LineCongruence, scheme: CongruenceScheme, steps: usize) -> 
     for _ in 0..steps {
         (rows, cols) = (2 * rows - 1, 2 * cols - 1);
         if rows.saturating_mul(cols) > MAX_RULINGS {
-            return Err(Error::TooMany { what: "lines after subdivision", got: rows.saturating_mul(cols), max: MAX_RULINGS });
+            return Err(Error::TooMany {
+                what: "lines after subdivision",
+                got: rows.saturating_mul(cols),
+                max: MAX_RULINGS,
+            });
         }
     }
     let mut out = c.clone();

@@ -51,7 +51,9 @@ pub fn two_stage(c: &LineCongruence, k: usize) -> Result<LineCongruence> {
             for j in (1..cc).step_by(2) {
                 let sum: DVec3 = [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)]
                     .iter()
-                    .map(|&(di, dj): &(isize, isize)| grid[(i as isize + di) as usize * cc + (j as isize + dj) as usize])
+                    .map(|&(di, dj): &(isize, isize)| {
+                        grid[(i as isize + di) as usize * cc + (j as isize + dj) as usize]
+                    })
                     .sum();
                 grid[i * cc + j] = sum / 8.0;
             }
@@ -94,7 +96,14 @@ impl Umbrella {
                 let (top, bottom, left, right) = (i == 0, i == r - 1, j == 0, j == c - 1);
                 u[k] = match (top || bottom, left || right) {
                     (false, false) => {
-                        let ring = x[k - c - 1] + x[k - c] + x[k - c + 1] + x[k - 1] + x[k + 1] + x[k + c - 1] + x[k + c] + x[k + c + 1];
+                        let ring = x[k - c - 1]
+                            + x[k - c]
+                            + x[k - c + 1]
+                            + x[k - 1]
+                            + x[k + 1]
+                            + x[k + c - 1]
+                            + x[k + c]
+                            + x[k + c + 1];
                         x[k] - ring / 8.0
                     }
                     (true, false) => x[k] - 0.5 * (x[k - 1] + x[k + 1]),
@@ -196,7 +205,8 @@ mod tests {
     use super::*;
 
     fn congruence(rows: usize, cols: usize, f: impl Fn(f64, f64) -> (DVec3, DVec3)) -> LineCongruence {
-        let (p, q): (Vec<DVec3>, Vec<DVec3>) = (0..rows * cols).map(|k| f((k / cols) as f64, (k % cols) as f64)).unzip();
+        let (p, q): (Vec<DVec3>, Vec<DVec3>) =
+            (0..rows * cols).map(|k| f((k / cols) as f64, (k % cols) as f64)).unzip();
         LineCongruence::from_points(rows, cols, &p, &q).unwrap()
     }
 
@@ -216,7 +226,11 @@ mod tests {
                 assert_eq!(r.line(2 * i, 2 * j), c.line(i, j));
             }
         }
-        let avg = [(0, 0), (0, 1), (0, 2), (1, 0), (1, 2), (2, 0), (2, 1), (2, 2)].iter().map(|&(i, j)| r.line(2 + i, 4 + j).a).sum::<DVec3>() / 8.0;
+        let avg = [(0, 0), (0, 1), (0, 2), (1, 0), (1, 2), (2, 0), (2, 1), (2, 2)]
+            .iter()
+            .map(|&(i, j)| r.line(2 + i, 4 + j).a)
+            .sum::<DVec3>()
+            / 8.0;
         assert!((r.line(3, 5).a - avg).length() < 1e-14);
     }
 

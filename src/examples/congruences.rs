@@ -128,7 +128,9 @@ impl FormulaCongruence {
         let [a, b, c] = self.spec.parameters;
         let vars = [Dual::u(u), Dual::v(v), Dual::constant(a), Dual::constant(b), Dual::constant(c)];
         let mut stack = Vec::new();
-        let mut eval = |f: &[Formula; 3]| [f[0].eval(&vars, &mut stack), f[1].eval(&vars, &mut stack), f[2].eval(&vars, &mut stack)];
+        let mut eval = |f: &[Formula; 3]| {
+            [f[0].eval(&vars, &mut stack), f[1].eval(&vars, &mut stack), f[2].eval(&vars, &mut stack)]
+        };
         let p = eval(&self.p);
         let d = eval(&self.e);
         CongruenceJet::of(p, d)
@@ -141,10 +143,20 @@ impl FormulaCongruence {
         for (field, value, slopes) in [("p", jet.p, [jet.p_u, jet.p_v]), ("e", jet.d, [jet.d_u, jet.d_v])] {
             for k in 0..3 {
                 if !value[k].is_finite() || value[k].abs() > MAX_COORD {
-                    return Err(Error::NotFiniteAt { what: format!("{field}[{k}]"), at: at(), value: value[k], derivative: false });
+                    return Err(Error::NotFiniteAt {
+                        what: format!("{field}[{k}]"),
+                        at: at(),
+                        value: value[k],
+                        derivative: false,
+                    });
                 }
                 if let Some(bad) = slopes.iter().map(|s| s[k]).find(|x| !x.is_finite()) {
-                    return Err(Error::NotFiniteAt { what: format!("{field}[{k}]"), at: at(), value: bad, derivative: true });
+                    return Err(Error::NotFiniteAt {
+                        what: format!("{field}[{k}]"),
+                        at: at(),
+                        value: bad,
+                        derivative: true,
+                    });
                 }
             }
         }
@@ -156,7 +168,10 @@ impl FormulaCongruence {
 }
 
 fn vanishing(u: f64, v: f64) -> Error {
-    Error::degenerate("e", format!("e(u, v) vanishes at (u, v) = ({}, {}), so the line there has no direction", short(u), short(v)))
+    Error::degenerate(
+        "e",
+        format!("e(u, v) vanishes at (u, v) = ({}, {}), so the line there has no direction", short(u), short(v)),
+    )
 }
 
 /// The congruences of the paper's examples, and congruences typed as formulas.
@@ -204,7 +219,10 @@ impl AnalyticCongruence {
     /// The congruence of that name.
     pub fn by_name(name: &str) -> Result<Self> {
         Self::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| {
-            Error::parameter("name", format!("unknown congruence \"{name}\"; known: sphere, hyperbolic-paraboloid, example5"))
+            Error::parameter(
+                "name",
+                format!("unknown congruence \"{name}\"; known: sphere, hyperbolic-paraboloid, example5"),
+            )
         })
     }
 

@@ -172,7 +172,11 @@ fn vanishing(u: f64) -> Error {
 pub(crate) fn short(x: f64) -> String {
     let s = format!("{x:.6}");
     let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" { "0".into() } else { s.into() }
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
+    }
 }
 
 #[cfg(test)]
@@ -197,7 +201,9 @@ mod tests {
     /// has exactly the built-in surface's jet, striction curve and distribution parameter.
     #[test]
     fn formulas_reproduce_the_built_in_hyperboloid() {
-        let typed = FormulaSurface::new(&spec(["a*cos(u)", "b*sin(u)", "0"], ["-a*sin(u)", "b*cos(u)", "c"], (0.0, 6.0))).unwrap();
+        let typed =
+            FormulaSurface::new(&spec(["a*cos(u)", "b*sin(u)", "0"], ["-a*sin(u)", "b*cos(u)", "c"], (0.0, 6.0)))
+                .unwrap();
         let built = AnalyticSurface::Hyperboloid { a: 1.0, b: 2.0, c: 3.0 };
         let typed = AnalyticSurface::Formula(std::sync::Arc::new(typed));
         for u in [0.1, 0.7, 2.0, 4.5] {
@@ -225,7 +231,10 @@ mod tests {
     fn singular_formulas_are_refused_with_the_place() {
         let e = FormulaSurface::new(&spec(["1/u", "0", "0"], ["0", "0", "1"], (-1.0, 1.0))).unwrap_err();
         assert_eq!(e.code(), "not-finite");
-        assert_eq!(e.to_string(), "a[0] is not finite at u = 0 (value inf: a division by zero, or a function outside its domain?)");
+        assert_eq!(
+            e.to_string(),
+            "a[0] is not finite at u = 0 (value inf: a division by zero, or a function outside its domain?)"
+        );
         let e = FormulaSurface::new(&spec(["u", "0", "0"], ["u", "u", "0"], (-1.0, 1.0))).unwrap_err();
         assert_eq!(e.code(), "degenerate");
         assert_eq!(e.to_string(), "e: e(u) vanishes at u = 0, so the ruling there has no direction");

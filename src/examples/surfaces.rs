@@ -12,11 +12,11 @@
 //! Several surfaces also have closed forms for s and δ, which the tests check the general
 //! formulas against.
 
+use super::formula_surface::{FormulaSpec, FormulaSurface};
 use crate::error::{Error, Result};
 use crate::line::{Line, Segment};
 use crate::ruled::RuledSurface;
 use crate::tolerance::MAX_SAMPLES;
-use super::formula_surface::{FormulaSpec, FormulaSurface};
 use glam::DVec3;
 use std::f64::consts::{FRAC_PI_4, TAU};
 use std::sync::Arc;
@@ -192,18 +192,12 @@ impl AnalyticSurface {
                 d: v(-a * s, b * c, h),
                 dd: v(-a * c, -b * s, 0.0),
             },
-            AnalyticSurface::Quartic => Jet {
-                a: v(1.0, u * u / 2.0, u),
-                da: v(0.0, u, 1.0),
-                d: v(u * u, u, -1.0),
-                dd: v(2.0 * u, 1.0, 0.0),
-            },
-            AnalyticSurface::Helicoid { pitch } => Jet {
-                a: v(0.0, 0.0, pitch * u),
-                da: v(0.0, 0.0, pitch),
-                d: v(c, s, 0.0),
-                dd: v(-s, c, 0.0),
-            },
+            AnalyticSurface::Quartic => {
+                Jet { a: v(1.0, u * u / 2.0, u), da: v(0.0, u, 1.0), d: v(u * u, u, -1.0), dd: v(2.0 * u, 1.0, 0.0) }
+            }
+            AnalyticSurface::Helicoid { pitch } => {
+                Jet { a: v(0.0, 0.0, pitch * u), da: v(0.0, 0.0, pitch), d: v(c, s, 0.0), dd: v(-s, c, 0.0) }
+            }
             AnalyticSurface::HelicalRuled { radius: r, pitch: p, slope } => {
                 let (sb, cb) = slope.sin_cos();
                 Jet {
@@ -219,24 +213,15 @@ impl AnalyticSurface {
                 d: v(c, s, 0.0),
                 dd: v(-s, c, 0.0),
             },
-            AnalyticSurface::HyperbolicParaboloid => Jet {
-                a: v(u, 0.0, 0.0),
-                da: v(1.0, 0.0, 0.0),
-                d: v(0.0, 1.0, u),
-                dd: v(0.0, 0.0, 1.0),
-            },
-            AnalyticSurface::Cone => Jet {
-                a: v(0.5, -0.2, 1.0),
-                da: DVec3::ZERO,
-                d: v(2.0 * c, s, 1.0),
-                dd: v(-2.0 * s, c, 0.0),
-            },
-            AnalyticSurface::Cylinder => Jet {
-                a: v(c, 0.7 * s, 0.0),
-                da: v(-s, 0.7 * c, 0.0),
-                d: DVec3::Z,
-                dd: DVec3::ZERO,
-            },
+            AnalyticSurface::HyperbolicParaboloid => {
+                Jet { a: v(u, 0.0, 0.0), da: v(1.0, 0.0, 0.0), d: v(0.0, 1.0, u), dd: v(0.0, 0.0, 1.0) }
+            }
+            AnalyticSurface::Cone => {
+                Jet { a: v(0.5, -0.2, 1.0), da: DVec3::ZERO, d: v(2.0 * c, s, 1.0), dd: v(-2.0 * s, c, 0.0) }
+            }
+            AnalyticSurface::Cylinder => {
+                Jet { a: v(c, 0.7 * s, 0.0), da: v(-s, 0.7 * c, 0.0), d: DVec3::Z, dd: DVec3::ZERO }
+            }
             AnalyticSurface::HelixTangent { radius: r, pitch: p } => Jet {
                 a: v(r * c, r * s, p * u),
                 da: v(-r * s, r * c, p),
@@ -293,7 +278,11 @@ impl AnalyticSurface {
         let h = (u1 - u0) / samples as f64;
         let best = (0..=samples).map(|i| u0 + i as f64 * h).fold((u0, f64::INFINITY), |(bu, bf), u| {
             let fu = f(u);
-            if fu < bf { (u, fu) } else { (bu, bf) }
+            if fu < bf {
+                (u, fu)
+            } else {
+                (bu, bf)
+            }
         });
         let (mut lo, mut hi) = (best.0 - h, best.0 + h);
         let g = 0.5 * (5f64.sqrt() - 1.0);

@@ -35,7 +35,13 @@ struct Open {
 pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
     let chars: Vec<char> = text.chars().collect();
     if chars.len() > MAX_FORMULA_CHARS {
-        return Err(Error::TextLimit { source: source.into(), what: "characters", got: chars.len(), max: MAX_FORMULA_CHARS, column: None });
+        return Err(Error::TextLimit {
+            source: source.into(),
+            what: "characters",
+            got: chars.len(),
+            max: MAX_FORMULA_CHARS,
+            column: None,
+        });
     }
     let fail = |column: usize, message: String| Error::parse(source, None, Some(column + 1), message);
     if chars.iter().all(|c| c.is_whitespace()) {
@@ -92,7 +98,12 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
                 }
                 // the "(" that follows opens the argument list
                 mark_filled(&mut open);
-                open.push(Open { column: next, two_arguments: FUNCTIONS2.contains(&name.as_str()), commas: 0, empty: true });
+                open.push(Open {
+                    column: next,
+                    two_arguments: FUNCTIONS2.contains(&name.as_str()),
+                    commas: 0,
+                    empty: true,
+                });
                 if open.len() > MAX_FORMULA_DEPTH {
                     return Err(depth_error(source, next));
                 }
@@ -110,7 +121,8 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
                 continue;
             }
             return Err(if call {
-                fail(start, format!("unknown function \"{name}\"")).with_hint(format!("known: {}, atan2", FUNCTIONS.join(", ")))
+                fail(start, format!("unknown function \"{name}\""))
+                    .with_hint(format!("known: {}, atan2", FUNCTIONS.join(", ")))
             } else {
                 fail(start, format!("unknown name \"{name}\"")).with_hint(format!("known: {}", known()))
             });
@@ -145,7 +157,9 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
             ',' => {
                 match open.last_mut() {
                     Some(top) if top.two_arguments && top.commas == 0 => top.commas = 1,
-                    _ => return Err(fail(i, "a comma is allowed only between the two arguments of atan2(y, x)".into())),
+                    _ => {
+                        return Err(fail(i, "a comma is allowed only between the two arguments of atan2(y, x)".into()))
+                    }
                 }
                 if expect_operand {
                     return Err(fail(i, "an operand is missing before \",\"".into()));
@@ -198,7 +212,13 @@ fn mark_filled(open: &mut [Open]) {
 }
 
 fn depth_error(source: &str, at: usize) -> Error {
-    Error::TextLimit { source: source.into(), what: "levels of nesting", got: MAX_FORMULA_DEPTH + 1, max: MAX_FORMULA_DEPTH, column: Some(at + 1) }
+    Error::TextLimit {
+        source: source.into(),
+        what: "levels of nesting",
+        got: MAX_FORMULA_DEPTH + 1,
+        max: MAX_FORMULA_DEPTH,
+        column: Some(at + 1),
+    }
 }
 
 /// The end of the number starting at `i`: digits, an optional fraction, an optional
@@ -251,7 +271,17 @@ mod tests {
 
     #[test]
     fn accepts_the_grammar() {
-        for ok in ["cos(u)", "2*sin(u)", "u^2", "-u^-2", "1.5e-3*u + .5", "atan2(sin(u), cos(u))", "a*b - e^(pi*u)", "((u))", " u "] {
+        for ok in [
+            "cos(u)",
+            "2*sin(u)",
+            "u^2",
+            "-u^-2",
+            "1.5e-3*u + .5",
+            "atan2(sin(u), cos(u))",
+            "a*b - e^(pi*u)",
+            "((u))",
+            " u ",
+        ] {
             assert!(check("x", ok, &["u", "a", "b"]).is_ok(), "{ok}");
         }
     }
@@ -269,11 +299,17 @@ mod tests {
         assert_eq!(message("u)"), "a[1]: \")\" without a matching \"(\" at column 2");
         assert_eq!(message("u +"), "a[1]: the formula ends where an operand is expected at column 4");
         assert_eq!(message("u**2"), "a[1]: \"*\" needs an operand on its left (write ^ for powers) at column 3");
-        assert_eq!(message("u // c"), "a[1]: \"/\" needs an operand on its left (comments are not part of formulas) at column 4");
+        assert_eq!(
+            message("u // c"),
+            "a[1]: \"/\" needs an operand on its left (comments are not part of formulas) at column 4"
+        );
         assert_eq!(message("2πu"), "a[1]: unexpected character \"π\" (write pi) at column 2");
         assert_eq!(message("u; u = 2"), "a[1]: unexpected character \";\" (formulas use numbers, names, + - * / ^, parentheses and commas) at column 2");
         assert_eq!(message("atan2(u)"), "a[1]: atan2 takes two arguments: atan2(y, x) at column 6");
-        assert_eq!(message("sin(u, u)"), "a[1]: a comma is allowed only between the two arguments of atan2(y, x) at column 6");
+        assert_eq!(
+            message("sin(u, u)"),
+            "a[1]: a comma is allowed only between the two arguments of atan2(y, x) at column 6"
+        );
         assert_eq!(message("()"), "a[1]: empty parentheses at column 1");
         assert!(message("\"s\"").contains("unexpected character"));
         assert!(message("true").contains("unknown name \"true\""));

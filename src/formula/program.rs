@@ -190,7 +190,8 @@ fn emit<'a>(source: &str, tree: &'a Node, variables: &[&str], ops: &mut Vec<Op>)
             Work::Visit(node) => node,
         };
         let children = node.children();
-        let unsupported = || Error::parse(source, None, None, format!("\"{}\" is not part of formulas", node.operator()));
+        let unsupported =
+            || Error::parse(source, None, None, format!("\"{}\" is not part of formulas", node.operator()));
         // operands are pushed last-first, so the first is visited (and emitted) first
         let mut then = |op: Op, operands: &[&'a Node]| {
             work.push(Work::Emit(op));
@@ -205,7 +206,9 @@ fn emit<'a>(source: &str, tree: &'a Node, variables: &[&str], ops: &mut Vec<Op>)
             (Operator::Exp, [x, y]) => {
                 // evalexpr reads a^b^c as (a^b)^c, mathematics as a^(b^c): ask for parentheses
                 if matches!(x.operator(), Operator::Exp) {
-                    return Err(Error::parse(source, None, None, "a^b^c is ambiguous").with_hint("write (a^b)^c or a^(b^c)"));
+                    return Err(
+                        Error::parse(source, None, None, "a^b^c is ambiguous").with_hint("write (a^b)^c or a^(b^c)")
+                    );
                 }
                 then(Op::Pow, &[x, y]);
             }

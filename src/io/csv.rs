@@ -58,7 +58,11 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
         }
         if fields.len() != 6 {
             let col = fields.get(6).map_or(raw.chars().count() + 1, |f| f.0);
-            return Err(fail(line, col, format!("expected 6 numbers (a.x a.y a.z b.x b.y b.z), found {}", fields.len())));
+            return Err(fail(
+                line,
+                col,
+                format!("expected 6 numbers (a.x a.y a.z b.x b.y b.z), found {}", fields.len()),
+            ));
         }
         if coords.len() / 6 >= MAX_RULINGS {
             return Err(Error::TooMany { what: "rulings in the CSV", got: coords.len() / 6 + 1, max: MAX_RULINGS });
@@ -105,9 +109,15 @@ mod tests {
     #[test]
     fn malformed_files_name_line_and_column() {
         let e = |t: &str| parse(t).unwrap_err().to_string();
-        assert_eq!(e("x,y,z,a,b,c\n0,0,0,1,0\n"), "csv: line 2, column 10: expected 6 numbers (a.x a.y a.z b.x b.y b.z), found 5");
+        assert_eq!(
+            e("x,y,z,a,b,c\n0,0,0,1,0\n"),
+            "csv: line 2, column 10: expected 6 numbers (a.x a.y a.z b.x b.y b.z), found 5"
+        );
         assert_eq!(e("0,0,0,1,0,0\n0,0,zero,1,0,0\n"), "csv: line 2, column 5: \"zero\" is not a number");
-        assert_eq!(e("0,0,0,1,0,0,7\n"), "csv: line 1, column 13: expected 6 numbers (a.x a.y a.z b.x b.y b.z), found 7");
+        assert_eq!(
+            e("0,0,0,1,0,0,7\n"),
+            "csv: line 1, column 13: expected 6 numbers (a.x a.y a.z b.x b.y b.z), found 7"
+        );
         assert_eq!(e("0,0,NaN,1,0,0\n"), "csv: line 1, column 5: NaN is not a finite number");
         assert!(e("\n# nothing\n").contains("no data lines"));
         assert!(e("just a header\n").contains("no data lines"));

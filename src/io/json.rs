@@ -130,7 +130,9 @@ impl<'a> Parser<'a> {
                 return Err(self.fail(start, "unexpected word"));
             }
             b'-' | b'0'..=b'9' => {
-                while self.at < self.bytes.len() && matches!(self.bytes[self.at], b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9') {
+                while self.at < self.bytes.len()
+                    && matches!(self.bytes[self.at], b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9')
+                {
                     self.at += 1;
                 }
                 let token = &self.text[start..self.at];
@@ -143,7 +145,11 @@ impl<'a> Parser<'a> {
                 }
                 self.numbers += 1;
                 if self.numbers > 6 * MAX_RULINGS {
-                    return Err(Error::TooMany { what: "numbers in the JSON", got: self.numbers, max: 6 * MAX_RULINGS });
+                    return Err(Error::TooMany {
+                        what: "numbers in the JSON",
+                        got: self.numbers,
+                        max: 6 * MAX_RULINGS,
+                    });
                 }
                 Value::Number(x)
             }
@@ -181,7 +187,9 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
             let dim = |k: &str| -> Result<Option<usize>> {
                 match find(k) {
                     None => Ok(None),
-                    Some((_, a, Value::Number(x))) if x.fract() == 0.0 && *x >= 2.0 && *x <= MAX_RULINGS as f64 => Ok(Some(*x as usize)),
+                    Some((_, a, Value::Number(x))) if x.fract() == 0.0 && *x >= 2.0 && *x <= MAX_RULINGS as f64 => {
+                        Ok(Some(*x as usize))
+                    }
                     Some((_, a, _)) => Err(p.fail(*a, format!("\"{k}\" must be an integer from 2 to {MAX_RULINGS}"))),
                 }
             };
@@ -218,7 +226,9 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
         }
     }
     if coords.len() % 6 != 0 {
-        return Err(p.fail(segments_at, format!("{} numbers are not a whole number of segments (6 each)", coords.len())));
+        return Err(
+            p.fail(segments_at, format!("{} numbers are not a whole number of segments (6 each)", coords.len()))
+        );
     }
     if let Some((r, c)) = grid {
         if r * c * 6 != coords.len() {
@@ -249,7 +259,10 @@ mod tests {
         assert_eq!(parse(&write(&flat, None)).unwrap().coords, flat);
         let g = parse(&write(&[flat, flat].concat(), Some((2, 2)))).unwrap();
         assert_eq!(g.grid, Some((2, 2)));
-        assert_eq!(parse("{\"note\": \"x\", \"segments\": [[1,2,3,4,5,6]], \"v\": [true, null]}").unwrap().coords.len(), 6);
+        assert_eq!(
+            parse("{\"note\": \"x\", \"segments\": [[1,2,3,4,5,6]], \"v\": [true, null]}").unwrap().coords.len(),
+            6
+        );
     }
 
     #[test]
@@ -257,9 +270,15 @@ mod tests {
         let e = |t: &str| parse(t).unwrap_err().to_string();
         assert_eq!(e("[[0,0,0,1,0,0],\n [0,0,0,1,0]]"), "json: line 2, column 2: a segment needs 6 numbers, found 5");
         assert_eq!(e("[0,0,0,1,0,\"x\"]"), "json: line 1, column 12: expected a number");
-        assert_eq!(e("{\"segments\": [1,2,3]}"), "json: line 1, column 14: 3 numbers are not a whole number of segments (6 each)");
+        assert_eq!(
+            e("{\"segments\": [1,2,3]}"),
+            "json: line 1, column 14: 3 numbers are not a whole number of segments (6 each)"
+        );
         assert_eq!(e("[1,2,3,4,5,6"), "json: line 1, column 13: expected , or ] in an array");
-        assert_eq!(e("{\"rows\": 2, \"segments\": []}"), "json: line 1, column 1: give both \"rows\" and \"cols\", or neither");
+        assert_eq!(
+            e("{\"rows\": 2, \"segments\": []}"),
+            "json: line 1, column 1: give both \"rows\" and \"cols\", or neither"
+        );
         assert!(e(&"[".repeat(100_000)).contains("nested deeper than 16 levels"));
         assert!(e("[1e999]").contains("not a finite number"));
         assert!(e("[1,2] x").contains("unexpected text after"));

@@ -78,18 +78,43 @@ fn tool_line(path: &ToolPath) -> String {
 pub fn gcode(path: &ToolPath, o: GcodeOptions) -> Result<String> {
     for (name, v) in [("feed", o.feed), ("scale", o.scale), ("clearance", o.clearance)] {
         if !(v.is_finite() && v > 0.0) {
-            return Err(Error::parameter(if name == "feed" { "feed" } else if name == "scale" { "scale" } else { "clearance" }, format!("must be a positive number, got {v}")));
+            return Err(Error::parameter(
+                if name == "feed" {
+                    "feed"
+                } else if name == "scale" {
+                    "scale"
+                } else {
+                    "clearance"
+                },
+                format!("must be a positive number, got {v}"),
+            ));
         }
     }
     let m = machine_coordinates(path, o.scale);
     let safe = m.iter().map(|p| p[2]).fold(f64::NEG_INFINITY, f64::max) + o.clearance;
     let mut g = String::new();
     let _ = writeln!(g, "(ruledlab tool path, {} poses)", m.len());
-    let _ = writeln!(g, "(machine: table-table 5-axis; C rotates the table about its Z axis, then A tilts it about machine X;");
-    let _ = writeln!(g, "( workpiece vector v appears as R_x(A) R_z(C) v; both rotation axes through the workpiece origin)");
-    let _ = writeln!(g, "(tool along machine +Z; X Y Z are the tool tip; A = atan2(sqrt(i^2+j^2), k) in [0, 180] deg,)");
-    let _ = writeln!(g, "( C = atan2(i, j) unwrapped within 180 deg of the previous pose, held where the axis is vertical)");
-    let _ = writeln!(g, "(units: mm, {} mm per model unit; feed {} mm/min; tool: {} model units)", o.scale, o.feed, tool_line(path));
+    let _ = writeln!(
+        g,
+        "(machine: table-table 5-axis; C rotates the table about its Z axis, then A tilts it about machine X;"
+    );
+    let _ = writeln!(
+        g,
+        "( workpiece vector v appears as R_x(A) R_z(C) v; both rotation axes through the workpiece origin)"
+    );
+    let _ =
+        writeln!(g, "(tool along machine +Z; X Y Z are the tool tip; A = atan2(sqrt(i^2+j^2), k) in [0, 180] deg,)");
+    let _ = writeln!(
+        g,
+        "( C = atan2(i, j) unwrapped within 180 deg of the previous pose, held where the axis is vertical)"
+    );
+    let _ = writeln!(
+        g,
+        "(units: mm, {} mm per model unit; feed {} mm/min; tool: {} model units)",
+        o.scale,
+        o.feed,
+        tool_line(path)
+    );
     let _ = writeln!(g, "G21 G90 G94");
     let first = m[0];
     let _ = writeln!(g, "G0 Z{safe:.6}");
@@ -112,10 +137,9 @@ pub fn parse_gcode(text: &str, scale: f64) -> Result<Vec<Pose>> {
             continue;
         }
         let word = |letter: char| -> Result<f64> {
-            code.split_whitespace()
-                .find_map(|w| w.strip_prefix(letter))
-                .and_then(|v| v.parse::<f64>().ok())
-                .ok_or_else(|| Error::parse("gcode", Some(number + 1), None, format!("no {letter} value in \"{code}\"")))
+            code.split_whitespace().find_map(|w| w.strip_prefix(letter)).and_then(|v| v.parse::<f64>().ok()).ok_or_else(
+                || Error::parse("gcode", Some(number + 1), None, format!("no {letter} value in \"{code}\"")),
+            )
         };
         let (x, y, z, a, c) = (word('X')?, word('Y')?, word('Z')?, word('A')?, word('C')?);
         let r = table_rotation(a.to_radians(), c.to_radians());
@@ -144,7 +168,8 @@ pub fn json(path: &ToolPath) -> String {
         ToolEnd::Ball => "ball",
         ToolEnd::Flat => "flat",
     };
-    let poses: Vec<String> = path.poses.iter().map(|p| format!("    {{ \"tip\": {}, \"axis\": {} }}", v(p.tip), v(p.axis))).collect();
+    let poses: Vec<String> =
+        path.poses.iter().map(|p| format!("    {{ \"tip\": {}, \"axis\": {} }}", v(p.tip), v(p.axis))).collect();
     format!(
         "{{\n  \"format\": \"ruledlab tool path\",\n  \"units\": \"model units; axis is a unit vector from the tip into the spindle\",\n  \"tool\": {{ \"end\": \"{end}\", \"radius\": {:?}, \"length\": {:?} }},\n  \"poses\": [\n{}\n  ]\n}}\n",
         path.tool.radius,

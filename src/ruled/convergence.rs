@@ -20,7 +20,6 @@ use crate::examples::AnalyticSurface;
 use crate::ruled::invariants::PairInvariants;
 use crate::tolerance::MAX_STUDY_LEVELS;
 
-
 /// Errors below this (relative to the surface's size, ~1) are rounding noise and carry no order.
 const NOISE_FLOOR: f64 = 1e-13;
 
@@ -90,8 +89,7 @@ pub fn study(surface: &AnalyticSurface, u: f64, h0: f64, levels: usize) -> Resul
     for &h in &steps {
         let (rm, r0, rp) = (surface.line(u - h), surface.line(u), surface.line(u + h));
         let (prev, next) = (PairInvariants::of(&rm, &r0), PairInvariants::of(&r0, &rp));
-        let (Some((_, f_back)), Some((f_fwd, f_next)), Some(n)) = (prev.feet, next.feet, next.normal)
-        else {
+        let (Some((_, f_back)), Some((f_fwd, f_next)), Some(n)) = (prev.feet, next.feet, next.normal) else {
             return Err(Error::degenerate("h0", format!("rulings at step {h} are parallel")));
         };
         let s_mid = surface.striction(u + h / 2.0).unwrap_or(s);
@@ -111,10 +109,8 @@ pub fn study(surface: &AnalyticSurface, u: f64, h0: f64, levels: usize) -> Resul
         .iter()
         .zip(errors)
         .map(|(&(name, expected_order), errors)| {
-            let orders = errors
-                .windows(2)
-                .map(|w| if w[1] > NOISE_FLOOR { (w[0] / w[1]).log2() } else { f64::NAN })
-                .collect();
+            let orders =
+                errors.windows(2).map(|w| if w[1] > NOISE_FLOOR { (w[0] / w[1]).log2() } else { f64::NAN }).collect();
             Series { name, expected_order, fitted_order: fit_order(&steps, &errors), errors, orders }
         })
         .collect();
@@ -123,20 +119,14 @@ pub fn study(surface: &AnalyticSurface, u: f64, h0: f64, levels: usize) -> Resul
 
 /// Least-squares slope of log(error) against log(H) over the errors above the noise floor.
 pub fn fit_order(steps: &[f64], errors: &[f64]) -> f64 {
-    let pts: Vec<(f64, f64)> = steps
-        .iter()
-        .zip(errors)
-        .filter(|(_, &e)| e > NOISE_FLOOR)
-        .map(|(&h, &e)| (h.ln(), e.ln()))
-        .collect();
+    let pts: Vec<(f64, f64)> =
+        steps.iter().zip(errors).filter(|(_, &e)| e > NOISE_FLOOR).map(|(&h, &e)| (h.ln(), e.ln())).collect();
     if pts.len() < 2 {
         return f64::NAN;
     }
     let n = pts.len() as f64;
     let (mx, my) = pts.iter().fold((0.0, 0.0), |(a, b), (x, y)| (a + x / n, b + y / n));
-    let (sxy, sxx) = pts
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (x, y)| (a + (x - mx) * (y - my), b + (x - mx) * (x - mx)));
+    let (sxy, sxx) = pts.iter().fold((0.0, 0.0), |(a, b), (x, y)| (a + (x - mx) * (y - my), b + (x - mx) * (x - mx)));
     sxy / sxx
 }
 

@@ -42,7 +42,8 @@ impl Development {
 
     /// max H_i − min H_i: how far the surface is from developable (0 when developable).
     pub fn non_developability(&self) -> f64 {
-        let (lo, hi) = self.heights.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| (lo.min(h), hi.max(h)));
+        let (lo, hi) =
+            self.heights.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| (lo.min(h), hi.max(h)));
         hi - lo
     }
 

@@ -27,11 +27,7 @@ impl RuledSurface {
     /// From flat coordinates, 6 numbers per ruling (a_i then b_i).
     pub fn from_flat(coords: &[f64]) -> Result<Self> {
         if coords.len() % FLAT_STRIDE != 0 {
-            return Err(Error::BadLength {
-                what: "segment coordinates",
-                len: coords.len(),
-                multiple: FLAT_STRIDE,
-            });
+            return Err(Error::BadLength { what: "segment coordinates", len: coords.len(), multiple: FLAT_STRIDE });
         }
         check_count(coords.len() / FLAT_STRIDE)?;
         check_coordinates(coords, FLAT_STRIDE)?;
@@ -202,14 +198,8 @@ mod tests {
 
     #[test]
     fn rejects_bad_input_with_the_reason() {
-        assert!(matches!(
-            RuledSurface::from_flat(&[0.0; 13]),
-            Err(Error::BadLength { len: 13, multiple: 6, .. })
-        ));
-        assert!(matches!(
-            RuledSurface::from_flat(&flat(1)),
-            Err(Error::TooFew { got: 1, min: 2, .. })
-        ));
+        assert!(matches!(RuledSurface::from_flat(&[0.0; 13]), Err(Error::BadLength { len: 13, multiple: 6, .. })));
+        assert!(matches!(RuledSurface::from_flat(&flat(1)), Err(Error::TooFew { got: 1, min: 2, .. })));
         let mut c = flat(3);
         c[10] = f64::NAN;
         assert!(matches!(RuledSurface::from_flat(&c), Err(Error::NonFinite { index: 10, .. })));

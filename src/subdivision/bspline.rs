@@ -44,7 +44,13 @@ mod tests {
     use crate::subdivision::chaikin::chaikin;
 
     fn poly() -> Vec<DVec3> {
-        vec![DVec3::ZERO, DVec3::new(1.0, 2.0, 0.5), DVec3::new(3.0, 2.5, 1.0), DVec3::new(4.0, 0.0, 2.0), DVec3::new(6.0, 1.0, 0.0)]
+        vec![
+            DVec3::ZERO,
+            DVec3::new(1.0, 2.0, 0.5),
+            DVec3::new(3.0, 2.5, 1.0),
+            DVec3::new(4.0, 0.0, 2.0),
+            DVec3::new(6.0, 1.0, 0.0),
+        ]
     }
 
     #[test]

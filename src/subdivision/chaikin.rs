@@ -34,7 +34,15 @@ mod tests {
     fn cuts_corners_at_a_quarter() {
         let p = [DVec3::ZERO, DVec3::new(4.0, 0.0, 0.0), DVec3::new(4.0, 4.0, 0.0)];
         let q = chaikin(&p, false);
-        assert_eq!(q, vec![DVec3::new(1.0, 0.0, 0.0), DVec3::new(3.0, 0.0, 0.0), DVec3::new(4.0, 1.0, 0.0), DVec3::new(4.0, 3.0, 0.0)]);
+        assert_eq!(
+            q,
+            vec![
+                DVec3::new(1.0, 0.0, 0.0),
+                DVec3::new(3.0, 0.0, 0.0),
+                DVec3::new(4.0, 1.0, 0.0),
+                DVec3::new(4.0, 3.0, 0.0)
+            ]
+        );
         assert_eq!(chaikin(&p, true).len(), 6);
     }
 

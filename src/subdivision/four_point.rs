@@ -77,7 +77,8 @@ mod tests {
 
     #[test]
     fn rule_eight_on_random_data() {
-        let p: Vec<DVec3> = (0..7).map(|i| DVec3::new((i as f64).sin(), (i * i) as f64 * 0.1, (3.0 * i as f64).cos())).collect();
+        let p: Vec<DVec3> =
+            (0..7).map(|i| DVec3::new((i as f64).sin(), (i * i) as f64 * 0.1, (3.0 * i as f64).cos())).collect();
         let w = 1.0 / 13.0;
         let q = four_point(&p, w, false);
         assert_eq!(q.len(), 13);

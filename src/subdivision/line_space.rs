@@ -43,7 +43,10 @@ impl DualLine {
     pub fn normalized(real: DVec3, dual: DVec3) -> Result<Self> {
         let n = real.length();
         if n.is_nan() || n <= 1e-9 {
-            return Err(Error::degenerate("lines", "a refined line has no direction: the weights cancel opposite lines"));
+            return Err(Error::degenerate(
+                "lines",
+                "a refined line has no direction: the weights cancel opposite lines",
+            ));
         }
         Ok(DualLine { real: real / n, dual: dual / n - real * (real.dot(dual) / (n * n * n)) })
     }
@@ -84,7 +87,13 @@ fn pairs(d: &[DualLine]) -> Vec<Pair> {
 /// `steps` steps of a linear curve scheme (Chaikin, B-spline, four-point) on the lines of
 /// `surface`; the refined lines are cut to segments of `length` (default: the mean input
 /// length) centred on their striction points.
-pub fn subdivide_lines(surface: &RuledSurface, scheme: Scheme, closed: bool, steps: usize, length: Option<f64>) -> Result<RuledSurface> {
+pub fn subdivide_lines(
+    surface: &RuledSurface,
+    scheme: Scheme,
+    closed: bool,
+    steps: usize,
+    length: Option<f64>,
+) -> Result<RuledSurface> {
     scheme.validate()?;
     check_steps(steps)?;
     if matches!(scheme, Scheme::Bezier | Scheme::Variational { .. }) {
@@ -94,10 +103,21 @@ pub fn subdivide_lines(surface: &RuledSurface, scheme: Scheme, closed: bool, ste
     let length = length.unwrap_or_else(|| surface.segments().map(|s| s.length()).sum::<f64>() / surface.len() as f64);
     let mut lines = oriented(surface.lines());
     for _ in 0..steps {
-        lines = polygon_step(&pairs(&lines), scheme, closed, 0).into_iter().map(|p| DualLine::normalized(p.0, p.1)).collect::<Result<_>>()?;
+        lines = polygon_step(&pairs(&lines), scheme, closed, 0)
+            .into_iter()
+            .map(|p| DualLine::normalized(p.0, p.1))
+            .collect::<Result<_>>()?;
     }
     // unit segments along the refined lines, then the re-cut symmetric to the striction points
-    let rough = RuledSurface::new(lines.iter().map(|d| { let l = d.line(); Segment::new(l.point, l.point + l.dir) }).collect())?;
+    let rough = RuledSurface::new(
+        lines
+            .iter()
+            .map(|d| {
+                let l = d.line();
+                Segment::new(l.point, l.point + l.dir)
+            })
+            .collect(),
+    )?;
     recut(&rough, Some(length))
 }
 
@@ -108,7 +128,11 @@ pub fn butterfly_lines(c: &LineCongruence, w: f64, steps: usize, length: Option<
     for _ in 0..steps {
         (rows, cols) = (2 * rows - 1, 2 * cols - 1);
         if rows.saturating_mul(cols) > crate::tolerance::MAX_RULINGS {
-            return Err(Error::TooMany { what: "lines after subdivision", got: rows.saturating_mul(cols), max: crate::tolerance::MAX_RULINGS });
+            return Err(Error::TooMany {
+                what: "lines after subdivision",
+                got: rows.saturating_mul(cols),
+                max: crate::tolerance::MAX_RULINGS,
+            });
         }
     }
     if !(w.is_finite() && (-0.25..=0.25).contains(&w)) {
@@ -124,7 +148,13 @@ pub fn butterfly_lines(c: &LineCongruence, w: f64, steps: usize, length: Option<
     for i in 0..r {
         for j in 0..cc {
             let mut d = DualLine::of(&c.line(i, j).line());
-            let prev = if j > 0 { Some(lines[i * cc + j - 1]) } else if i > 0 { Some(lines[(i - 1) * cc]) } else { None };
+            let prev = if j > 0 {
+                Some(lines[i * cc + j - 1])
+            } else if i > 0 {
+                Some(lines[(i - 1) * cc])
+            } else {
+                None
+            };
             if prev.is_some_and(|p| p.real.dot(d.real) < 0.0) {
                 d = DualLine { real: -d.real, dual: -d.dual };
             }

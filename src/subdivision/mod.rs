@@ -7,8 +7,8 @@
 //! Output sizes are computed and checked against [`MAX_RULINGS`] before anything is
 //! allocated.
 
-pub mod bezier;
 pub mod accuracy;
+pub mod bezier;
 pub mod bspline;
 pub mod chaikin;
 pub mod four_point;
@@ -130,7 +130,11 @@ impl Scheme {
     /// Points after `steps` steps, checked against [`MAX_RULINGS`] before any work.
     pub fn output_len_after(&self, n: usize, closed: bool, steps: usize) -> Result<usize> {
         if *self == Scheme::Bezier && n > MAX_BEZIER_POINTS {
-            return Err(Error::TooMany { what: "points of one Bézier control polygon (its degree + 1)", got: n, max: MAX_BEZIER_POINTS });
+            return Err(Error::TooMany {
+                what: "points of one Bézier control polygon (its degree + 1)",
+                got: n,
+                max: MAX_BEZIER_POINTS,
+            });
         }
         let mut len = n;
         for _ in 0..steps {

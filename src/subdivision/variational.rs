@@ -29,8 +29,8 @@
 //! data and costs accuracy; [`Variant::Averaged`] omits it.
 
 use crate::error::Result;
-use crate::line::Segment;
 use crate::linalg::SymmetricBanded;
+use crate::line::Segment;
 use crate::ruled::RuledSurface;
 use glam::DVec3;
 
@@ -158,8 +158,12 @@ mod tests {
             for k in 1..n {
                 let (l, c, rt) = (&cols[j - 1], &cols[j], &cols[j + 1]);
                 let centre = z(c, k, n);
-                let u1 = centre - (z(c, k - 1, n) + z(c, k + 1, n) + z(l, k, n) + z(l, k - 1, n) + z(rt, k + 1, n) + z(rt, k, n)) / 6.0;
-                let u2 = centre - (z(c, k - 1, n) + z(c, k + 1, n) + z(l, k, n) + z(l, k + 1, n) + z(rt, k - 1, n) + z(rt, k, n)) / 6.0;
+                let u1 = centre
+                    - (z(c, k - 1, n) + z(c, k + 1, n) + z(l, k, n) + z(l, k - 1, n) + z(rt, k + 1, n) + z(rt, k, n))
+                        / 6.0;
+                let u2 = centre
+                    - (z(c, k - 1, n) + z(c, k + 1, n) + z(l, k, n) + z(l, k + 1, n) + z(rt, k - 1, n) + z(rt, k, n))
+                        / 6.0;
                 f += u1.length_squared() + u2.length_squared();
             }
         }

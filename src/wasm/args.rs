@@ -107,7 +107,11 @@ impl Options {
     pub fn only_for(&self, key: &str, scheme: &str, chosen: Option<&str>) -> Result<(), JsValue> {
         if self.has(key) && chosen != Some(scheme) {
             let chosen = chosen.map(|c| format!(", not to \"{c}\"")).unwrap_or_default();
-            return Err(fail_option(self.func, key, format!("options.{key} applies to the \"{scheme}\" scheme only{chosen}")));
+            return Err(fail_option(
+                self.func,
+                key,
+                format!("options.{key} applies to the \"{scheme}\" scheme only{chosen}"),
+            ));
         }
         Ok(())
     }
@@ -136,13 +140,20 @@ pub fn read_options<T: serde::de::DeserializeOwned>(
     let value = if optional && (value.is_undefined() || value.is_null()) { Object::new().into() } else { value };
     let plain = |v: &JsValue| v.is_object() && !js_sys::Array::is_array(v) && !v.is_function();
     if !plain(&value) {
-        return Err(fail(func, format!("options must be an object {{ {} }}, got {}", known.join(", "), describe(&value))));
+        return Err(fail(
+            func,
+            format!("options must be an object {{ {} }}, got {}", known.join(", "), describe(&value)),
+        ));
     }
     let check_keys = |object: &JsValue, prefix: &str, known: &[&str]| -> Result<(), JsValue> {
         for key in Object::keys(object.unchecked_ref::<Object>()).iter() {
             let key = key.as_string().unwrap_or_default();
             if !known.contains(&key.as_str()) {
-                return Err(fail_option(func, &key, format!("unknown option \"{prefix}{key}\"; known options: {}", known.join(", "))));
+                return Err(fail_option(
+                    func,
+                    &key,
+                    format!("unknown option \"{prefix}{key}\"; known options: {}", known.join(", ")),
+                ));
             }
         }
         Ok(())

@@ -71,7 +71,9 @@ impl LineCongruence {
         let cols = integer(F, "cols", cols, 2, MAX_RULINGS)?;
         congruence::grid::check_shape(rows, cols).map_err(|e| fail(F, e))?;
         let coords = float64_array(F, "coords", &coords)?;
-        congruence::LineCongruence::from_flat(rows, cols, &coords).map(|inner| LineCongruence { inner }).map_err(|e| fail(F, e))
+        congruence::LineCongruence::from_flat(rows, cols, &coords)
+            .map(|inner| LineCongruence { inner })
+            .map_err(|e| fail(F, e))
     }
 
     /// Number of rows.
@@ -119,7 +121,14 @@ impl LineCongruence {
         const F: &str = "LineCongruence.subdivide";
         let o = Options::new(F, options, &["scheme", "w", "diagonalOnly", "K", "variant", "steps", "space", "length"])?;
         let scheme = o.string("scheme")?;
-        for (key, s) in [("w", "butterfly"), ("diagonalOnly", "butterfly"), ("K", "variational"), ("variant", "variational"), ("space", "butterfly"), ("length", "butterfly")] {
+        for (key, s) in [
+            ("w", "butterfly"),
+            ("diagonalOnly", "butterfly"),
+            ("K", "variational"),
+            ("variant", "variational"),
+            ("space", "butterfly"),
+            ("length", "butterfly"),
+        ] {
             o.only_for(key, s, scheme.as_deref())?;
         }
         let steps = o.integer("steps", 0, 12)?.unwrap_or(1);
@@ -133,17 +142,26 @@ impl LineCongruence {
                         }
                     }
                     Some("lines") => {
-                        return crate::subdivision::line_space::butterfly_lines(&self.inner, w, steps, o.number("length")?)
-                            .map(|inner| LineCongruence { inner })
-                            .map_err(|e| fail(F, e));
+                        return crate::subdivision::line_space::butterfly_lines(
+                            &self.inner,
+                            w,
+                            steps,
+                            o.number("length")?,
+                        )
+                        .map(|inner| LineCongruence { inner })
+                        .map_err(|e| fail(F, e));
                     }
-                    Some(other) => return Err(fail(F, format!("options.space must be \"points\" or \"lines\", got \"{other}\""))),
+                    Some(other) => {
+                        return Err(fail(F, format!("options.space must be \"points\" or \"lines\", got \"{other}\"")))
+                    }
                 }
                 if o.boolean("diagonalOnly")?.unwrap_or(false) {
                     if steps != 1 {
                         return Err(fail(F, "options.diagonalOnly gives the lines of one step: leave steps at 1"));
                     }
-                    return congruence::butterfly_diagonal(&self.inner, w).map(|inner| LineCongruence { inner }).map_err(|e| fail(F, e));
+                    return congruence::butterfly_diagonal(&self.inner, w)
+                        .map(|inner| LineCongruence { inner })
+                        .map_err(|e| fail(F, e));
                 }
                 CongruenceScheme::Butterfly { w }
             }
@@ -152,11 +170,15 @@ impl LineCongruence {
                 match o.string("variant")?.as_deref() {
                     None | Some("coupled") => CongruenceScheme::Coupled { k },
                     Some("two-stage") => CongruenceScheme::TwoStage { k },
-                    Some(v) => return Err(fail(F, format!("options.variant must be \"two-stage\" or \"coupled\", got {v:?}"))),
+                    Some(v) => {
+                        return Err(fail(F, format!("options.variant must be \"two-stage\" or \"coupled\", got {v:?}")))
+                    }
                 }
             }
             None => return Err(fail(F, "options.scheme is required: \"butterfly\" or \"variational\"")),
-            Some(other) => return Err(fail(F, format!("unknown scheme \"{other}\"; use \"butterfly\" or \"variational\""))),
+            Some(other) => {
+                return Err(fail(F, format!("unknown scheme \"{other}\"; use \"butterfly\" or \"variational\"")))
+            }
         };
         congruence::subdivide(&self.inner, scheme, steps).map(|inner| LineCongruence { inner }).map_err(|e| fail(F, e))
     }
@@ -178,7 +200,9 @@ impl AnalyticCongruence {
 #[wasm_bindgen]
 impl AnalyticCongruence {
     /// Every congruence: name, title, domain and the grid size of the paper's figure.
-    #[wasm_bindgen(unchecked_return_type = "Array<{name: string, title: string, uMin: number, uMax: number, vMin: number, vMax: number, rows: number, cols: number}>")]
+    #[wasm_bindgen(
+        unchecked_return_type = "Array<{name: string, title: string, uMin: number, uMax: number, vMin: number, vMax: number, rows: number, cols: number}>"
+    )]
     pub fn list() -> js_sys::Array {
         examples::AnalyticCongruence::ALL
             .iter()
@@ -200,11 +224,15 @@ impl AnalyticCongruence {
 
     /// The congruence named `name` ("sphere", "hyperbolic-paraboloid", "example5").
     #[wasm_bindgen(js_name = byName)]
-    pub fn by_name(#[wasm_bindgen(unchecked_param_type = "string")] name: JsValue) -> Result<AnalyticCongruence, JsValue> {
+    pub fn by_name(
+        #[wasm_bindgen(unchecked_param_type = "string")] name: JsValue,
+    ) -> Result<AnalyticCongruence, JsValue> {
         let Some(name) = name.as_string() else {
             return Err(fail("AnalyticCongruence.byName", format!("name must be a string, got {}", describe(&name))));
         };
-        examples::AnalyticCongruence::by_name(&name).map(|inner| AnalyticCongruence { inner }).map_err(|e| fail("AnalyticCongruence.byName", e))
+        examples::AnalyticCongruence::by_name(&name)
+            .map(|inner| AnalyticCongruence { inner })
+            .map_err(|e| fail("AnalyticCongruence.byName", e))
     }
 
     /// A rows × cols grid of its lines (default: the paper's grid size).

@@ -42,7 +42,9 @@ impl From<&str> for Problem {
 pub fn fail(func: &str, problem: impl Into<Problem>) -> JsValue {
     let (message, code, details) = match problem.into() {
         Problem::Core(e) => (e.to_string(), e.code(), e.details()),
-        Problem::Argument { option, message } => (message, "invalid-argument", Details { option, ..Details::default() }),
+        Problem::Argument { option, message } => {
+            (message, "invalid-argument", Details { option, ..Details::default() })
+        }
     };
     let error = js_sys::Error::new(&format!("{func}: {message}"));
     // Setting a property of a fresh Error cannot fail; were it to, the message still stands.

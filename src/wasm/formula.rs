@@ -144,9 +144,12 @@ impl AnalyticSurface {
     /// with a′ and e′ differentiated exactly. Throws with the formula and column of a syntax
     /// error, or the parameter where a value is not finite or e(u) vanishes.
     #[wasm_bindgen(js_name = fromFormulas)]
-    pub fn from_formulas(#[wasm_bindgen(unchecked_param_type = "SurfaceFormulas")] spec: JsValue) -> Result<AnalyticSurface, JsValue> {
+    pub fn from_formulas(
+        #[wasm_bindgen(unchecked_param_type = "SurfaceFormulas")] spec: JsValue,
+    ) -> Result<AnalyticSurface, JsValue> {
         const F: &str = "AnalyticSurface.fromFormulas";
-        let s: SurfaceFormulas = read_options(F, spec, &["a", "e", "u", "v", "closed", "parameters"], &[PARAMETER_KEYS], false)?;
+        let s: SurfaceFormulas =
+            read_options(F, spec, &["a", "e", "u", "v", "closed", "parameters"], &[PARAMETER_KEYS], false)?;
         let parameters = s.parameters.values();
         let spec = FormulaSpec {
             u: interval(F, "u", &s.u, &parameters)?,
@@ -167,9 +170,12 @@ impl AnalyticSurface {
 impl AnalyticCongruence {
     /// A congruence typed as formulas (`CongruenceFormulas`), with exact derivatives.
     #[wasm_bindgen(js_name = fromFormulas)]
-    pub fn from_formulas(#[wasm_bindgen(unchecked_param_type = "CongruenceFormulas")] spec: JsValue) -> Result<AnalyticCongruence, JsValue> {
+    pub fn from_formulas(
+        #[wasm_bindgen(unchecked_param_type = "CongruenceFormulas")] spec: JsValue,
+    ) -> Result<AnalyticCongruence, JsValue> {
         const F: &str = "AnalyticCongruence.fromFormulas";
-        let s: CongruenceFormulas = read_options(F, spec, &["p", "e", "u", "v", "parameters", "rows", "cols"], &[PARAMETER_KEYS], false)?;
+        let s: CongruenceFormulas =
+            read_options(F, spec, &["p", "e", "u", "v", "parameters", "rows", "cols"], &[PARAMETER_KEYS], false)?;
         let parameters = s.parameters.values();
         let size = |name: &str, x: Option<f64>| -> Result<usize, JsValue> {
             match x {

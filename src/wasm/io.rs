@@ -32,7 +32,11 @@ pub fn import_segments(
         return Err(fail(F, format!("text must be a string, got {}", describe(&text))));
     };
     let format = if format.is_undefined() || format.is_null() {
-        if text.trim_start().starts_with(['[', '{']) { "json".to_string() } else { "csv".to_string() }
+        if text.trim_start().starts_with(['[', '{']) {
+            "json".to_string()
+        } else {
+            "csv".to_string()
+        }
     } else {
         format.as_string().unwrap_or_default()
     };
@@ -63,7 +67,10 @@ fn export(func: &str, format: &JsValue, flat: &[f64], grid: Option<(usize, usize
 impl RuledSurface {
     /// The segments as text: "csv" (header `ax,ay,az,bx,by,bz`) or "json"
     /// (`{ "segments": [[…], …] }`), full precision.
-    pub fn export(&self, #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue) -> Result<String, JsValue> {
+    pub fn export(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue,
+    ) -> Result<String, JsValue> {
         export("RuledSurface.export", &format, self.core().flat(), None)
     }
 }
@@ -72,7 +79,10 @@ impl RuledSurface {
 impl LineCongruence {
     /// The lines as text: "json" (`{ "rows", "cols", "segments": [[…], …] }`) or "csv"
     /// (row-major, the grid shape is not kept).
-    pub fn export(&self, #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue) -> Result<String, JsValue> {
+    pub fn export(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue,
+    ) -> Result<String, JsValue> {
         export("LineCongruence.export", &format, self.core().flat(), Some((self.core().rows(), self.core().cols())))
     }
 }

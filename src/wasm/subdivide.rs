@@ -3,8 +3,8 @@
 
 use super::args::{fail, float64_array, Options};
 use super::surface::RuledSurface;
-use crate::subdivision::{self, Scheme, Variant, MAX_STEPS};
 use crate::ruled::surface::points_from_flat;
+use crate::subdivision::{self, Scheme, Variant, MAX_STEPS};
 use js_sys::Float64Array;
 use wasm_bindgen::prelude::*;
 
@@ -55,7 +55,11 @@ pub(crate) enum Space {
 
 /// Reads `options` into a scheme, `closed`, `steps` and the space the scheme acts in;
 /// `default_scheme` stands in when `options.scheme` is absent (otherwise it is required).
-pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<&str>) -> Result<(Scheme, bool, usize, Space), JsValue> {
+pub(crate) fn read(
+    func: &'static str,
+    options: JsValue,
+    default_scheme: Option<&str>,
+) -> Result<(Scheme, bool, usize, Space), JsValue> {
     let o = Options::new(func, options, &KNOWN)?;
     let space = match o.string("space")?.as_deref() {
         None | Some("points") => {
@@ -65,12 +69,18 @@ pub(crate) fn read(func: &'static str, options: JsValue, default_scheme: Option<
             Space::Points
         }
         Some("lines") => Space::Lines(o.number("length")?),
-        Some(other) => return Err(fail(func, format!("options.space must be \"points\" or \"lines\", got \"{other}\""))),
+        Some(other) => {
+            return Err(fail(func, format!("options.space must be \"points\" or \"lines\", got \"{other}\"")))
+        }
     };
     let Some(name) = o.string("scheme")?.or(default_scheme.map(String::from)) else {
-        return Err(fail(func, "options.scheme is required: \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""));
+        return Err(fail(
+            func,
+            "options.scheme is required: \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\"",
+        ));
     };
-    for (key, scheme) in [("w", "four-point"), ("n", "variational"), ("variant", "variational"), ("degree", "bspline")] {
+    for (key, scheme) in [("w", "four-point"), ("n", "variational"), ("variant", "variational"), ("degree", "bspline")]
+    {
         o.only_for(key, scheme, Some(&name))?;
     }
     let scheme = match name.as_str() {
@@ -115,7 +125,9 @@ impl RuledSurface {
         let (scheme, closed, steps, space) = read(F, options, None)?;
         match space {
             Space::Points => subdivision::subdivide_strip(self.core(), scheme, closed, steps),
-            Space::Lines(length) => subdivision::line_space::subdivide_lines(self.core(), scheme, closed, steps, length),
+            Space::Lines(length) => {
+                subdivision::line_space::subdivide_lines(self.core(), scheme, closed, steps, length)
+            }
         }
         .map(RuledSurface::from_core)
         .map_err(|e| fail(F, e))

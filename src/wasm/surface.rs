@@ -3,9 +3,9 @@
 use super::args::{describe, fail, float64_array, integer, ObjectBuilder, Options};
 use crate::examples;
 use crate::ruled::{self, convergence, Development, HingeChain, Invariants};
-use std::cell::OnceCell;
 use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
 use js_sys::{Float32Array, Float64Array, Uint8Array};
+use std::cell::OnceCell;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
@@ -101,9 +101,7 @@ impl RuledSurface {
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] coords: JsValue,
     ) -> Result<RuledSurface, JsValue> {
         let coords = float64_array("RuledSurface.fromSegments", "coords", &coords)?;
-        ruled::RuledSurface::from_flat(&coords)
-            .map(Self::from_core)
-            .map_err(|e| fail("RuledSurface.fromSegments", e))
+        ruled::RuledSurface::from_flat(&coords).map(Self::from_core).map_err(|e| fail("RuledSurface.fromSegments", e))
     }
 
     /// Number of rulings N.
@@ -145,7 +143,10 @@ impl RuledSurface {
     /// earlier `invariants()` call on a surface with as many rulings): no allocation, for
     /// animation loops and large models. Throws if an array is missing or has the wrong length.
     #[wasm_bindgen(js_name = invariantsInto)]
-    pub fn invariants_into(&self, #[wasm_bindgen(unchecked_param_type = "Invariants")] out: JsValue) -> Result<(), JsValue> {
+    pub fn invariants_into(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Invariants")] out: JsValue,
+    ) -> Result<(), JsValue> {
         const F: &str = "RuledSurface.invariantsInto";
         if !out.is_object() {
             return Err(fail(F, format!("out must be an Invariants object, got {}", describe(&out))));
@@ -156,7 +157,13 @@ impl RuledSurface {
             let v = js_sys::Reflect::get(&out, &key.into()).map_err(|_| fail(F, format!("out.{key} is missing")))?;
             let got = js_sys::Reflect::get(&v, &"length".into()).ok().and_then(|l| l.as_f64());
             if got != Some(len as f64) {
-                return Err(fail(F, format!("out.{key} must be a typed array of length {len} (this surface has {} rulings)", self.inner.len())));
+                return Err(fail(
+                    F,
+                    format!(
+                        "out.{key} must be a typed array of length {len} (this surface has {} rulings)",
+                        self.inner.len()
+                    ),
+                ));
             }
             Ok(v)
         };
@@ -306,17 +313,21 @@ impl AnalyticSurface {
     }
 
     /// Exact striction points s(u) for each u: 3 numbers per u (NaN on a cylindrical ruling).
-    pub fn striction(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsValue> {
+    pub fn striction(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue,
+    ) -> Result<Float64Array, JsValue> {
         let u = self.parameters("AnalyticSurface.striction", &u)?;
-        let out: Vec<f64> = u
-            .iter()
-            .flat_map(|&u| self.inner.striction(u).unwrap_or(glam::DVec3::NAN).to_array())
-            .collect();
+        let out: Vec<f64> =
+            u.iter().flat_map(|&u| self.inner.striction(u).unwrap_or(glam::DVec3::NAN).to_array()).collect();
         Ok(Float64Array::from(&out[..]))
     }
 
     /// Exact distribution parameters δ(u).
-    pub fn distribution(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsValue> {
+    pub fn distribution(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue,
+    ) -> Result<Float64Array, JsValue> {
         let u = self.parameters("AnalyticSurface.distribution", &u)?;
         let out: Vec<f64> = u.iter().map(|&u| self.inner.distribution(u)).collect();
         Ok(Float64Array::from(&out[..]))
@@ -324,12 +335,13 @@ impl AnalyticSurface {
 
     /// Exact central tangent directions e₃(u) (4): 3 numbers per u (NaN on a cylindrical ruling).
     #[wasm_bindgen(js_name = centralTangent)]
-    pub fn central_tangent(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue) -> Result<Float64Array, JsValue> {
+    pub fn central_tangent(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue,
+    ) -> Result<Float64Array, JsValue> {
         let u = self.parameters("AnalyticSurface.centralTangent", &u)?;
-        let out: Vec<f64> = u
-            .iter()
-            .flat_map(|&u| self.inner.central_tangent(u).unwrap_or(glam::DVec3::NAN).to_array())
-            .collect();
+        let out: Vec<f64> =
+            u.iter().flat_map(|&u| self.inner.central_tangent(u).unwrap_or(glam::DVec3::NAN).to_array()).collect();
         Ok(Float64Array::from(&out[..]))
     }
 
@@ -347,13 +359,14 @@ impl AnalyticSurface {
             return Err(fail(F, format!("need finite uMin < uMax, got {u_min} and {u_max}")));
         }
         if flat.len() % 3 != 0 || flat.len() / 3 > MAX_SAMPLES {
-            return Err(fail(F, format!("points: length {} must be a multiple of 3 and at most {}", flat.len(), 3 * MAX_SAMPLES)));
+            return Err(fail(
+                F,
+                format!("points: length {} must be a multiple of 3 and at most {}", flat.len(), 3 * MAX_SAMPLES),
+            ));
         }
         crate::ruled::surface::check_coordinates(&flat, 3).map_err(|e| fail(F, e))?;
-        let out: Vec<f64> = flat
-            .chunks_exact(3)
-            .map(|p| self.inner.distance_to(glam::DVec3::from_slice(p), u_min, u_max))
-            .collect();
+        let out: Vec<f64> =
+            flat.chunks_exact(3).map(|p| self.inner.distance_to(glam::DVec3::from_slice(p), u_min, u_max)).collect();
         Ok(Float64Array::from(&out[..]))
     }
 
@@ -367,8 +380,8 @@ impl AnalyticSurface {
         let o = Options::new(F, opts, &["u", "h0", "levels"])?;
         let levels = o.integer("levels", 2, MAX_STUDY_LEVELS)?.unwrap_or(8);
         let u = o.number("u")?.unwrap_or(0.7);
-        let study = convergence::study(&self.inner, u, o.number("h0")?.unwrap_or(0.2), levels)
-            .map_err(|e| fail(F, e))?;
+        let study =
+            convergence::study(&self.inner, u, o.number("h0")?.unwrap_or(0.2), levels).map_err(|e| fail(F, e))?;
         let series: js_sys::Array = study
             .series
             .iter()

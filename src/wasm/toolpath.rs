@@ -3,8 +3,8 @@
 use super::args::{fail, float64_array, ObjectBuilder, Options};
 use crate::error::Error;
 use crate::milling::{self, example, export, quality};
-use crate::ruled::RuledSurface;
 use crate::ruled::surface::points_from_flat;
+use crate::ruled::RuledSurface;
 use glam::DVec3;
 use js_sys::{Float32Array, Float64Array};
 use wasm_bindgen::prelude::*;
@@ -74,7 +74,9 @@ impl ToolPath {
         let coords = float64_array(F, "coords", &coords)?;
         let tool = read_tool(F, tool)?;
         let axes = RuledSurface::from_flat(&coords).map_err(|e| match e {
-            Error::ZeroLength { ruling } => fail(F, format!("tool axis {ruling} has zero length (tip and axis point coincide)")),
+            Error::ZeroLength { ruling } => {
+                fail(F, format!("tool axis {ruling} has zero length (tip and axis point coincide)"))
+            }
             other => fail(F, other),
         })?;
         Ok(ToolPath { inner: milling::ToolPath::from_surface(&axes, tool) })
@@ -170,7 +172,10 @@ impl ToolPath {
 
     /// Signed deviation of each target point (3 numbers each) from the surface the tool leaves
     /// (> 0: material left, < 0: gouge).
-    pub fn deviation(&self, #[wasm_bindgen(unchecked_param_type = "Float64Array")] targets: JsValue) -> Result<Float64Array, JsValue> {
+    pub fn deviation(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] targets: JsValue,
+    ) -> Result<Float64Array, JsValue> {
         const F: &str = "ToolPath.deviation";
         let t = points_from_flat(&float64_array(F, "targets", &targets)?).map_err(|e| fail(F, e))?;
         Ok(Float64Array::from(&quality::deviation(&self.inner, &t)[..]))
