@@ -80,7 +80,7 @@ fn bad_inputs_become_errors_with_messages() {
 fn invariants_object_has_every_array_with_the_documented_length() {
     let hyp = AnalyticSurface::by_name("hyperboloid".into()).unwrap();
     let s = hyp.sample(10.0, JsValue::UNDEFINED).unwrap();
-    let inv = s.invariants();
+    let inv = s.invariants(None).unwrap();
     let len = |k: &str| -> u32 {
         let v = Reflect::get(&inv, &k.into()).unwrap();
         if let Some(a) = v.dyn_ref::<Float64Array>() {

@@ -1,5 +1,6 @@
 //! Section 5 against exact congruences. Runs natively and in Chromium.
 
+use ruledlab::assert_near;
 use ruledlab::congruence::{butterfly_diagonal, subdivide, CongruenceScheme, LineCongruence};
 use ruledlab::examples::AnalyticCongruence;
 
@@ -15,6 +16,28 @@ fn keeps_old_lines(c: &LineCongruence, r: &LineCongruence) {
     for i in 0..c.rows() {
         for j in 0..c.cols() {
             assert_eq!(r.line(2 * i, 2 * j), c.line(i, j));
+        }
+    }
+}
+
+/// The paper's scheme read literally (ERRATA.md): edge lines by the literal strip energy are
+/// the midpoint rule, and the face line, the average of its 8 neighbours, is then the bilinear
+/// average of the 4 corners, exactly.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn the_papers_scheme_read_literally_is_bilinear_averaging() {
+    let c = AnalyticCongruence::Example5.grid(5, 4).unwrap();
+    let r = subdivide(&c, CongruenceScheme::Paper { k: 6 }, 1).unwrap();
+    keeps_old_lines(&c, &r);
+    for i in 0..r.rows() {
+        for j in 0..r.cols() {
+            let corners: Vec<(usize, usize)> =
+                [(i / 2, j / 2), ((i + 1) / 2, j / 2), (i / 2, (j + 1) / 2), ((i + 1) / 2, (j + 1) / 2)].to_vec();
+            let mean = |end: fn(&ruledlab::line::Segment) -> glam::DVec3| {
+                corners.iter().map(|&(a, b)| end(&c.line(a, b))).sum::<glam::DVec3>() / 4.0
+            };
+            assert_near!(r.line(i, j).a, mean(|s| s.a), 1e-13);
+            assert_near!(r.line(i, j).b, mean(|s| s.b), 1e-13);
         }
     }
 }

@@ -73,6 +73,16 @@ impl LineCongruence {
         Segment::new(self.points[k], self.points[k + 1])
     }
 
+    /// The lines (i, j) with i or j not a multiple of `stride`: after k interpolatory steps
+    /// (stride 2^k), the inserted lines, row-major.
+    pub fn inserted(&self, stride: usize) -> Vec<Segment> {
+        let stride = stride.max(1);
+        (0..self.rows * self.cols)
+            .filter(|k| (k / self.cols) % stride != 0 || (k % self.cols) % stride != 0)
+            .map(|k| self.line(k / self.cols, k % self.cols))
+            .collect()
+    }
+
     /// The endpoints on d₁ (row-major).
     pub fn p(&self) -> Vec<DVec3> {
         self.points.iter().step_by(2).copied().collect()

@@ -22,6 +22,12 @@ pub enum CongruenceScheme {
         /// K ≥ 3.
         k: usize,
     },
+    /// The paper's two-stage scheme read literally: midpoint edge lines, face lines the
+    /// average of their 8 neighbours (see [`variational`]).
+    Paper {
+        /// K ≥ 3 (the literal strip energy does not depend on it beyond K ≥ 3).
+        k: usize,
+    },
     /// The coupled variational scheme.
     Coupled {
         /// K ≥ 3 (used for the starting guess; the minimiser does not depend on it).
@@ -36,7 +42,9 @@ pub fn subdivide(c: &LineCongruence, scheme: CongruenceScheme, steps: usize) -> 
         CongruenceScheme::Butterfly { w } if !(w.is_finite() && (-0.25..=0.25).contains(&w)) => {
             return Err(Error::parameter("w", format!("must be a number in [−1/4, 1/4], got {w}")))
         }
-        CongruenceScheme::TwoStage { k } | CongruenceScheme::Coupled { k } if !(3..=1000).contains(&k) => {
+        CongruenceScheme::TwoStage { k } | CongruenceScheme::Paper { k } | CongruenceScheme::Coupled { k }
+            if !(3..=1000).contains(&k) =>
+        {
             return Err(Error::parameter("K", format!("must be an integer from 3 to 1000, got {k}")))
         }
         _ => {}
@@ -61,7 +69,8 @@ pub fn subdivide(c: &LineCongruence, scheme: CongruenceScheme, steps: usize) -> 
                 let q = butterfly::refine_points(&out.q(), r, cc, w);
                 LineCongruence::from_points(2 * r - 1, 2 * cc - 1, &p, &q)?
             }
-            CongruenceScheme::TwoStage { k } => variational::two_stage(&out, k)?,
+            CongruenceScheme::TwoStage { k } => variational::two_stage(&out, k, variational::EdgeScheme::Coupled)?,
+            CongruenceScheme::Paper { k } => variational::two_stage(&out, k, variational::EdgeScheme::Literal)?,
             CongruenceScheme::Coupled { k } => variational::coupled(&out, k)?.0,
         };
     }

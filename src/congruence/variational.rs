@@ -1,11 +1,14 @@
 //! Variational subdivision of line congruences (Section 5.2, Figs. 14–15).
 //!
-//! **Two-stage scheme** (as in the paper): every column j of lines is a discrete ruled
-//! surface; the strip scheme of Section 4 (coupled, n = K) inserts the lines T_{i,j}
+//! **Two-stage scheme** (the structure of the paper's scheme): every column j of lines is a
+//! discrete ruled surface; the strip scheme of Section 4 (n = K) inserts the lines T_{i,j}
 //! between R_{i,j} and R_{i+1,j}; every row likewise gives S_{i,j} between R_{i,j} and
 //! R_{i,j+1} (ERRATA.md 9: T for every row j). The face line R̄_{i,j} then minimises the
 //! 8-neighbour umbrella energy (20)–(21), whose neighbours are all known, so it is their
 //! average in every layer: P̄ = ⅛ Σ of the four corner and four edge points on d₁, Q̄ likewise.
+//! Read literally, the paper's edge lines come from the strip energy (13)–(15) with umbrellas
+//! at the new points only, which is the midpoint rule (ERRATA.md): [`EdgeScheme::Literal`],
+//! "paper" in the JS API. ruledlab's "two-stage" variant uses the coupled strip energy.
 //!
 //! **Coupled scheme**: umbrellas (20) at every vertex of the refined grid in every layer
 //! k = 0 … K (and, on the boundary, the strip's umbrella along the boundary line), old
@@ -24,8 +27,21 @@ use crate::error::{Error, Result};
 use crate::subdivision::{variational as strip, Variant};
 use glam::DVec3;
 
-/// The two-stage scheme of Section 5.2 (K parts per line, K ≥ 3).
-pub fn two_stage(c: &LineCongruence, k: usize) -> Result<LineCongruence> {
+/// How the edge lines T, S of the two-stage scheme are made.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EdgeScheme {
+    /// The paper's strip energy read literally: the midpoint rule.
+    Literal,
+    /// The coupled strip energy (umbrellas at every vertex).
+    Coupled,
+}
+
+/// The two-stage scheme of Section 5.2 (K parts per line, K ≥ 3), edge lines by `edges`.
+pub fn two_stage(c: &LineCongruence, k: usize, edges: EdgeScheme) -> Result<LineCongruence> {
+    let variant = match edges {
+        EdgeScheme::Literal => Variant::Literal,
+        EdgeScheme::Coupled => Variant::Coupled,
+    };
     let (rows, cols) = (c.rows(), c.cols());
     let (rr, cc) = (2 * rows - 1, 2 * cols - 1);
     let mut p = vec![DVec3::ZERO; rr * cc];
@@ -35,13 +51,13 @@ pub fn two_stage(c: &LineCongruence, k: usize) -> Result<LineCongruence> {
         q[i * cc + j] = s.b;
     };
     for j in 0..cols {
-        let refined = strip::refine(&c.column(j)?, k, Variant::Coupled)?;
+        let refined = strip::refine(&c.column(j)?, k, variant)?;
         for (i, s) in refined.segments().enumerate() {
             put(i, 2 * j, s);
         }
     }
     for i in 0..rows {
-        let refined = strip::refine(&c.row(i)?, k, Variant::Coupled)?;
+        let refined = strip::refine(&c.row(i)?, k, variant)?;
         for (j, s) in refined.segments().enumerate().filter(|(j, _)| j % 2 == 1) {
             put(2 * i, j, s);
         }
@@ -71,7 +87,7 @@ pub struct SolveReport {
 
 /// The coupled scheme (see the module docs); K only matters through K ≥ 1.
 pub fn coupled(c: &LineCongruence, k: usize) -> Result<(LineCongruence, SolveReport)> {
-    let start = two_stage(c, k.max(3))?;
+    let start = two_stage(c, k.max(3), EdgeScheme::Coupled)?;
     let (rr, cc) = (start.rows(), start.cols());
     let (mut p, mut q) = (start.p(), start.q());
     let ip = solve_grid(&mut p, rr, cc)?;
@@ -219,7 +235,7 @@ mod tests {
     #[test]
     fn two_stage_faces_average_their_neighbours() {
         let c = congruence(4, 5, wavy);
-        let r = two_stage(&c, 6).unwrap();
+        let r = two_stage(&c, 6, EdgeScheme::Coupled).unwrap();
         assert_eq!((r.rows(), r.cols()), (7, 9));
         for i in 0..4 {
             for j in 0..5 {

@@ -267,6 +267,11 @@ impl AnalyticCongruence {
 
     /// The rows × cols grid of lines p → p + d at equally spaced (u_i, v_j) of the domain.
     pub fn grid(&self, rows: usize, cols: usize) -> Result<LineCongruence> {
+        self.grid_reaching(rows, cols, 1.0)
+    }
+
+    /// As [`AnalyticCongruence::grid`], the segments p → p + reach·d.
+    pub fn grid_reaching(&self, rows: usize, cols: usize, reach: f64) -> Result<LineCongruence> {
         crate::congruence::grid::check_shape(rows, cols)?;
         let mut p = Vec::with_capacity(rows * cols);
         let mut q = Vec::with_capacity(rows * cols);
@@ -280,7 +285,7 @@ impl AnalyticCongruence {
                 _ => self.line(u, v),
             };
             p.push(a);
-            q.push(a + d);
+            q.push(a + reach * d);
         }
         LineCongruence::from_points(rows, cols, &p, &q)
     }

@@ -71,6 +71,9 @@ pub enum AnalyticSurface {
     Formula(Arc<FormulaSurface>),
 }
 
+/// β = −atan(r/p) for r = 1, p = 0.4: rulings orthogonal to the striction helix.
+pub const ORTHOGONAL_SLOPE: f64 = -1.190_289_949_682_531_7;
+
 /// a(u), a′(u), d(u), d′(u): what the exact invariants need.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Jet {
@@ -106,11 +109,14 @@ pub struct Ranges {
 
 impl AnalyticSurface {
     /// Every surface, with the parameters of the paper's examples.
-    pub const ALL: [AnalyticSurface; 9] = [
+    pub const ALL: [AnalyticSurface; 10] = [
         AnalyticSurface::Hyperboloid { a: 1.0, b: 2.0, c: 3.0 },
         AnalyticSurface::Quartic,
         AnalyticSurface::Helicoid { pitch: 0.5 },
         AnalyticSurface::HelicalRuled { radius: 1.0, pitch: 0.4, slope: FRAC_PI_4 },
+        // the helical surface of Fig. 5 with rulings orthogonal to its striction helix
+        // (e·ṡ = 0 for tan β = −r/p): the case in which the figure's caption holds
+        AnalyticSurface::HelicalRuled { radius: 1.0, pitch: 0.4, slope: ORTHOGONAL_SLOPE },
         AnalyticSurface::PlueckerConoid,
         AnalyticSurface::HyperbolicParaboloid,
         AnalyticSurface::Cone,
@@ -124,6 +130,7 @@ impl AnalyticSurface {
             AnalyticSurface::Hyperboloid { .. } => "hyperboloid",
             AnalyticSurface::Quartic => "quartic",
             AnalyticSurface::Helicoid { .. } => "helicoid",
+            AnalyticSurface::HelicalRuled { slope, .. } if *slope == ORTHOGONAL_SLOPE => "helical-orthogonal",
             AnalyticSurface::HelicalRuled { .. } => "helical",
             AnalyticSurface::PlueckerConoid => "pluecker-conoid",
             AnalyticSurface::HyperbolicParaboloid => "hyperbolic-paraboloid",
@@ -140,6 +147,9 @@ impl AnalyticSurface {
             AnalyticSurface::Hyperboloid { .. } => "Hyperboloid x² + y²/4 − z²/9 = 1 (Example 1)",
             AnalyticSurface::Quartic => "Quartic surface (1 + vu², u²/2 + uv, u − v) (Example 3)",
             AnalyticSurface::Helicoid { .. } => "Right helicoid (v cos u, v sin u, u/2)",
+            AnalyticSurface::HelicalRuled { slope, .. } if *slope == ORTHOGONAL_SLOPE => {
+                "Ruled helical surface, rulings orthogonal to the striction helix (Fig. 5)"
+            }
             AnalyticSurface::HelicalRuled { .. } => "Ruled helical surface (Fig. 5)",
             AnalyticSurface::PlueckerConoid => "Plücker's conoid z = sin 2u",
             AnalyticSurface::HyperbolicParaboloid => "Hyperbolic paraboloid z = xy",
@@ -306,9 +316,16 @@ impl AnalyticSurface {
         best.1.min(fc).min(fd)
     }
 
-    /// `count` rulings at equally spaced u in [u₀, u₁] (u₁ excluded when `closed`, so a
-    /// closed surface is not sampled twice at the seam), each the segment from a + v₀d to
-    /// a + v₁d.
+    /// The parameters u_i of [`AnalyticSurface::sample`]: `count` equally spaced values in
+    /// [u₀, u₁] (u₁ excluded when `closed`, so a closed surface is not sampled twice at the seam).
+    pub fn parameters(count: usize, r: Ranges) -> Vec<f64> {
+        let intervals = if r.closed { count } else { count.saturating_sub(1).max(1) };
+        let step = (r.u.1 - r.u.0) / intervals as f64;
+        (0..count).map(|i| r.u.0 + i as f64 * step).collect()
+    }
+
+    /// `count` rulings at the [`parameters`](AnalyticSurface::parameters), each the segment
+    /// from a + v₀d to a + v₁d.
     pub fn sample(&self, count: usize, r: Ranges) -> Result<RuledSurface> {
         if count > MAX_SAMPLES {
             return Err(Error::TooMany { what: "samples", got: count, max: MAX_SAMPLES });
@@ -321,11 +338,9 @@ impl AnalyticSurface {
         if r.v.0 == r.v.1 {
             return Err(Error::parameter("vMax", "must differ from vMin (segments of zero length)"));
         }
-        let intervals = if r.closed { count } else { count.saturating_sub(1).max(1) };
-        let step = (r.u.1 - r.u.0) / intervals as f64;
-        let segments = (0..count)
-            .map(|i| {
-                let u = r.u.0 + i as f64 * step;
+        let segments = Self::parameters(count, r)
+            .into_iter()
+            .map(|u| {
                 let j = match self {
                     AnalyticSurface::Formula(f) => f.checked_jet(u)?,
                     _ => self.jet(u),
@@ -414,6 +429,17 @@ mod tests {
         let d = hypar.distance_to(p, -1.0, 1.0);
         assert!(d <= 0.05 * normal.z + 1e-12 && d > 0.04, "{d}");
         assert!(hypar.distance_to(hypar.point(0.37, -0.8), 0.0, 1.0) < 1e-12);
+    }
+
+    #[test]
+    fn orthogonal_slope_is_minus_atan_r_over_p() {
+        assert_near!(ORTHOGONAL_SLOPE, -(1.0f64 / 0.4).atan(), 1e-16);
+        // e·ṡ = 0: the rulings cross the striction helix at right angles
+        let s = AnalyticSurface::by_name("helical-orthogonal").unwrap();
+        for u in US {
+            let j = s.jet(u);
+            assert_near!(j.d.normalize().dot(j.da), 0.0, 1e-15);
+        }
     }
 
     #[test]

@@ -7,12 +7,32 @@
 //! tip = C − r a. Units: millimetres scaled down (1 unit = 10 mm in the export examples).
 
 use crate::error::Result;
+use crate::mesh::Mesh;
 use crate::milling::{Pose, Tool, ToolEnd, ToolPath};
 use glam::DVec3;
 
+/// The part surface z = f(x, y) = 0.3 sin x cos 0.7y.
+pub fn part_height(x: f64, y: f64) -> f64 {
+    0.3 * x.sin() * (0.7 * y).cos()
+}
+
+/// The part surface over x ∈ [−0.4, 6.4], y ∈ [−2.2, 2.2] as an nx × ny grid mesh.
+pub fn part_mesh(nx: usize, ny: usize) -> Mesh {
+    let (nx, ny) = (nx.max(2), ny.max(2));
+    let positions = (0..nx * ny)
+        .map(|k| {
+            let (i, j) = (k / ny, k % ny);
+            let x = -0.4 + 6.8 * i as f64 / (nx - 1) as f64;
+            let y = -2.2 + 4.4 * j as f64 / (ny - 1) as f64;
+            DVec3::new(x, y, part_height(x, y))
+        })
+        .collect();
+    Mesh::grid(positions, nx, ny)
+}
+
 /// The exact path at parameter s: (profile point γ(s), ball centre, pose).
 pub fn exact(s: f64, radius: f64) -> (DVec3, DVec3, Pose) {
-    let f = |x: f64, y: f64| 0.3 * x.sin() * (0.7 * y).cos();
+    let f = part_height;
     let (x, y) = (s, 1.5 * (0.6 * s).sin());
     let gamma = DVec3::new(x, y, f(x, y));
     let (fx, fy) = (0.3 * x.cos() * (0.7 * y).cos(), -0.21 * x.sin() * (0.7 * y).sin());

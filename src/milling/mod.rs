@@ -13,6 +13,7 @@ pub mod quality;
 
 use crate::error::{Error, Result};
 use crate::line::Segment;
+use crate::mesh::Mesh;
 use crate::ruled::RuledSurface;
 use crate::subdivision::{subdivide_strip, Scheme};
 use glam::DVec3;
@@ -90,6 +91,21 @@ impl ToolPath {
     /// The tool's barycentre curve (Fig. 16): the centre of the cylinder, tip + (L/2)·axis.
     pub fn barycentres(&self) -> Vec<DVec3> {
         self.poses.iter().map(|p| p.tip + 0.5 * self.tool.length * p.axis).collect()
+    }
+
+    /// The envelope of the tool's cutting end (for a ball end, the tube of radius r about the
+    /// ball centres, whose lower half is the machined surface) as a mesh.
+    pub fn envelope_mesh(&self, sides: usize) -> Mesh {
+        Mesh::tube(&self.cutting_centres(), self.tool.radius, sides)
+    }
+
+    /// The tool body at pose `i` (Fig. 16): a cylinder of radius r from the tip along the
+    /// axis over the tool's length, its end a ball of radius r or a flat disk.
+    pub fn tool_mesh(&self, i: usize, sides: usize) -> Option<Mesh> {
+        let p = self.poses.get(i)?;
+        let (r, ball) = (self.tool.radius, self.tool.end == ToolEnd::Ball);
+        let from = if ball { p.tip + r * p.axis } else { p.tip };
+        Some(Mesh::capped_cylinder(from, p.tip + self.tool.length * p.axis, r, ball, sides))
     }
 
     /// The points whose offset by r is the machined surface: ball centres tip + r·axis for a

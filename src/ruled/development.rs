@@ -13,7 +13,49 @@
 //! model. It is 0 for a cone or a cylinder and O(H²) for a sampled tangent surface.
 
 use crate::ruled::{HingeChain, RuledSurface};
-use glam::DVec2;
+use glam::{DMat4, DVec2, DVec3, DVec4};
+
+/// The reference frame of the conoidal model and the development: origin a_0, x = e_0,
+/// z = n_{0,1}, y = z × x (Fig. 6); the reference plane is z = 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Frame {
+    /// a_0.
+    pub origin: DVec3,
+    /// e_0.
+    pub x: DVec3,
+    /// n_{0,1} × e_0.
+    pub y: DVec3,
+    /// n_{0,1}.
+    pub z: DVec3,
+}
+
+impl Frame {
+    /// The frame of `surface` (R_0 and R_1 must not be parallel for n_{0,1} to exist; for
+    /// parallel rulings the chain's fallback normal is used).
+    pub fn of(surface: &RuledSurface) -> Self {
+        let z = HingeChain::new(surface).first_normal();
+        let s0 = surface.segment(0);
+        let x = s0.line().dir;
+        Frame { origin: s0.a, x, y: z.cross(x), z }
+    }
+
+    /// The rigid motion taking world coordinates to frame coordinates ((p − o)·x, (p − o)·y,
+    /// (p − o)·z), as a 4 × 4 matrix (column-major when flattened, as WebGL wants it).
+    pub fn world_to_frame(&self) -> DMat4 {
+        let rotation = DMat4::from_cols(
+            DVec4::new(self.x.x, self.y.x, self.z.x, 0.0),
+            DVec4::new(self.x.y, self.y.y, self.z.y, 0.0),
+            DVec4::new(self.x.z, self.y.z, self.z.z, 0.0),
+            DVec4::W,
+        );
+        rotation * DMat4::from_translation(-self.origin)
+    }
+
+    /// The point of the reference plane with plane coordinates `p`.
+    pub fn plane_point(&self, p: DVec2) -> DVec3 {
+        self.origin + p.x * self.x + p.y * self.y
+    }
+}
 
 /// The approximate development and the conoidal model it was projected from.
 #[derive(Debug, Clone, PartialEq)]
@@ -47,6 +89,20 @@ impl Development {
         hi - lo
     }
 
+    /// The images of the striction polygon: the footpoints f_{i,i+1} of the conoidal model
+    /// projected onto the plane (both feet of a pair land on one point), N − 1 points where
+    /// the projected rulings meet; the polygon they envelop.
+    pub fn striction_image(&self) -> Vec<DVec2> {
+        let frame = Frame::of(&self.conoidal);
+        self.conoidal
+            .invariants()
+            .footpoints
+            .iter()
+            .step_by(2)
+            .map(|&f| DVec2::new((f - frame.origin).dot(frame.x), (f - frame.origin).dot(frame.y)))
+            .collect()
+    }
+
     /// The plane coordinates as a flat array: x, y of a'_i, then of b'_i, per ruling.
     pub fn flat(&self) -> &[f64] {
         bytemuck::cast_slice(&self.points)
@@ -69,6 +125,17 @@ mod tests {
         ])
         .unwrap();
         let dev = Development::of(&s);
+        // the frame maps a_0 to the origin and e_0 to the x-axis
+        let m = Frame::of(&s).world_to_frame();
+        assert_near!(m.transform_point3(s.segment(0).a), DVec3::ZERO, EXACT);
+        assert_near!(m.transform_point3(s.segment(0).b), DVec3::new(1.0, 0.0, 0.0), EXACT);
+        // the striction image: the projected rulings i and i + 1 meet at image point i
+        for (i, q) in dev.striction_image().iter().enumerate() {
+            for k in [i, i + 1] {
+                let (a, b) = (dev.points[2 * k], dev.points[2 * k + 1]);
+                assert_near!((b - a).perp_dot(*q - a) / (b - a).length(), 0.0, 1e-12);
+            }
+        }
         let h = s.invariants().distance;
         let mut sum = 0.0;
         for (i, height) in dev.heights.iter().enumerate() {

@@ -154,6 +154,23 @@ impl Invariants {
         inv
     }
 
+    /// The invariants of a *closed* discrete ruled surface, whose last ruling R_{N−1} is followed
+    /// by R_0 again (a sampled closed surface: the hyperboloid, a cone, Plücker's conoid): N
+    /// pairs (the last one is (R_{N−1}, R_0)) and N interior rulings, so `striction[i]` and
+    /// `distribution_mean[i]` belong to ruling i itself, and the striction polygon closes.
+    pub fn from_lines_closed(lines: &[Line]) -> Self {
+        let n = lines.len();
+        let mut inv = Self::from_lines(lines.iter().chain(lines.first()).copied().collect::<Vec<_>>().into_iter());
+        if n < 2 {
+            return inv;
+        }
+        // m_0 = (f_{0,N−1} + f_{0,1})/2: f_{0,N−1} is the foot on R_0 of the last pair.
+        let f_last = inv.footpoints[2 * n - 1];
+        inv.striction.insert(0, 0.5 * (f_last + inv.footpoints[0]));
+        inv.distribution_mean.insert(0, 0.5 * (inv.distribution[n - 1] + inv.distribution[0]));
+        inv
+    }
+
     /// A `DVec3` slice as its flat `f64` coordinates, without copying.
     pub fn flat(points: &[DVec3]) -> &[f64] {
         bytemuck::cast_slice(points)
@@ -169,6 +186,31 @@ mod tests {
 
     fn line(p: [f64; 3], d: [f64; 3]) -> Line {
         Line { point: DVec3::from(p), dir: DVec3::from(d).normalize() }
+    }
+
+    /// Closed: the rulings of a regulus of a hyperboloid of revolution, equally spaced around
+    /// it, all have their striction point on the gorge circle; the closed invariants give one
+    /// per ruling, and the same numbers as the open invariants of the wrapped sequence.
+    #[test]
+    fn closed_surfaces_get_a_striction_point_per_ruling() {
+        let n = 12;
+        let lines: Vec<Line> = (0..n)
+            .map(|i| {
+                let u = std::f64::consts::TAU * i as f64 / n as f64;
+                let (s, c) = u.sin_cos();
+                line([c, s, 0.0], [-s, c, 1.0])
+            })
+            .collect();
+        let closed = Invariants::from_lines_closed(&lines);
+        assert_eq!((closed.angle.len(), closed.striction.len(), closed.distribution_mean.len()), (n, n, n));
+        let wrapped: Vec<Line> = [lines[n - 1]].into_iter().chain(lines.iter().copied()).chain([lines[0]]).collect();
+        let open = Invariants::from_lines(wrapped.into_iter());
+        for i in 0..n {
+            assert_near!(closed.striction[i], open.striction[i], EXACT);
+            assert_near!(closed.distribution_mean[i], open.distribution_mean[i], EXACT);
+            // the gorge circle z = 0, radius 1, at the ruling's own point (by symmetry)
+            assert_near!(closed.striction[i], lines[i].point, 1e-12);
+        }
     }
 
     #[test]

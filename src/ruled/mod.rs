@@ -1,5 +1,6 @@
 //! Discrete ruled surfaces (Sections 2–4).
 
+pub mod accuracy;
 pub mod convergence;
 pub mod development;
 pub mod invariants;

@@ -117,6 +117,86 @@ impl RuledSurface {
         Invariants::from_lines(self.lines())
     }
 
+    /// The invariants of the surface read as closed: R_{N−1} is followed by R_0 again
+    /// ([`Invariants::from_lines_closed`]).
+    pub fn invariants_closed(&self) -> Invariants {
+        Invariants::from_lines_closed(&self.lines().collect::<Vec<_>>())
+    }
+
+    /// The unit directions e_i = (b_i − a_i)/|b_i − a_i|.
+    pub fn directions(&self) -> Vec<DVec3> {
+        self.lines().map(|l| l.dir).collect()
+    }
+
+    /// Mean length |b_i − a_i| of the segments.
+    pub fn mean_length(&self) -> f64 {
+        self.segments().map(|s| s.length()).sum::<f64>() / self.len() as f64
+    }
+
+    /// The same lines with other segments: a_i moved to a_i + s_i e_i and b_i to b_i + t_i e_i,
+    /// where `amounts` holds s_i, t_i per ruling (the rulings as lines do not change).
+    pub fn slide(&self, amounts: &[f64]) -> Result<Self> {
+        if amounts.len() != 2 * self.len() {
+            return Err(Error::parameter(
+                "amounts",
+                format!(
+                    "need 2 numbers per ruling ({} for {} rulings), got {}",
+                    2 * self.len(),
+                    self.len(),
+                    amounts.len()
+                ),
+            ));
+        }
+        check_coordinates(amounts, 2)
+            .map_err(|_| Error::parameter("amounts", "every amount must be a finite number"))?;
+        let points = self
+            .segments()
+            .zip(amounts.chunks_exact(2))
+            .flat_map(|(s, st)| {
+                let e = s.line().dir;
+                [s.a + st[0] * e, s.b + st[1] * e]
+            })
+            .collect();
+        Self::from_points(points)
+    }
+
+    /// Largest angle (radians, in [0, π/2]) between corresponding rulings of `self` and
+    /// `other` as unoriented lines; `other` must have as many rulings.
+    pub fn max_angle_to(&self, other: &RuledSurface) -> Result<f64> {
+        if other.len() != self.len() {
+            return Err(Error::parameter("other", format!("needs {} rulings, got {}", self.len(), other.len())));
+        }
+        Ok(self
+            .lines()
+            .zip(other.lines())
+            .map(|(a, b)| a.dir.cross(b.dir).length().atan2(a.dir.dot(b.dir).abs()))
+            .fold(0.0, f64::max))
+    }
+
+    /// The largest relative change of an edge length of the two boundary polygons (a_i) and
+    /// (b_i) between `self` and `other`: 0 (to rounding) for an isometric deformation.
+    pub fn max_edge_change(&self, other: &RuledSurface) -> Result<f64> {
+        if other.len() != self.len() {
+            return Err(Error::parameter("other", format!("needs {} rulings, got {}", self.len(), other.len())));
+        }
+        let (p, q) = (&self.points, &other.points);
+        let mut worst = 0.0f64;
+        for i in 0..p.len().saturating_sub(2) {
+            let before = (p[i + 2] - p[i]).length();
+            if before > 0.0 {
+                worst = worst.max(((q[i + 2] - q[i]).length() - before).abs() / before);
+            }
+        }
+        Ok(worst)
+    }
+
+    /// The rulings whose index is not a multiple of `stride`: after `k` steps of an
+    /// interpolatory scheme (stride 2^k), the inserted ones.
+    pub fn inserted(&self, stride: usize) -> Vec<Segment> {
+        let stride = stride.max(1);
+        self.segments().enumerate().filter(|(i, _)| i % stride != 0).map(|(_, s)| s).collect()
+    }
+
     /// The surface with `f` applied to every endpoint (re-validated: `f` could collapse
     /// a ruling).
     pub fn map_points(&self, f: impl Fn(DVec3) -> DVec3) -> Result<Self> {

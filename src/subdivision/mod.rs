@@ -14,6 +14,7 @@ pub mod chaikin;
 pub mod four_point;
 pub mod line_space;
 pub mod strip;
+pub mod triangulation;
 pub mod variational;
 
 use crate::error::{Error, Result};

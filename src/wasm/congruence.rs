@@ -1,6 +1,7 @@
 //! Line congruences for JavaScript (Section 5): `LineCongruence` and `AnalyticCongruence`.
 
 use super::args::{describe, fail, float64_array, integer, ObjectBuilder, Options};
+use super::live::Live;
 use super::surface::RuledSurface;
 use crate::congruence::{self, CongruenceScheme};
 use crate::examples;
@@ -21,11 +22,13 @@ export interface CongruenceSubdivideOptions {
   /** Variational: parts per line K, 3 … 1000 (default 6). */
   K?: number;
   /**
-   * Variational (default "coupled"): "two-stage" is the paper's scheme (edge lines by the strip
-   * scheme, face lines the average of their 8 neighbours); "coupled" minimises the umbrella
-   * energy of every layer over all new lines at once (one sparse SPD solve).
+   * Variational (default "coupled"): "paper" is the paper's scheme read literally (edge lines by
+   * the strip energy (13)–(15), which is the midpoint rule; face lines the average of their 8
+   * neighbours); "two-stage" the same with the coupled strip energy for the edge lines;
+   * "coupled" minimises the umbrella energy of every layer over all new lines at once (one
+   * sparse SPD solve).
    */
-  variant?: "two-stage" | "coupled";
+  variant?: "paper" | "two-stage" | "coupled";
   /** Steps, 0 … 12 (default 1); the result may hold at most 4 194 304 lines. */
   steps?: number;
   /**
@@ -46,6 +49,7 @@ export interface CongruenceErrors { distance: number; angle: number }
 #[wasm_bindgen]
 pub struct LineCongruence {
     inner: congruence::LineCongruence,
+    _live: Live,
 }
 
 impl LineCongruence {
@@ -72,7 +76,7 @@ impl LineCongruence {
         congruence::grid::check_shape(rows, cols).map_err(|e| fail(F, e))?;
         let coords = float64_array(F, "coords", &coords)?;
         congruence::LineCongruence::from_flat(rows, cols, &coords)
-            .map(|inner| LineCongruence { inner })
+            .map(|inner| LineCongruence { inner, _live: Live::new() })
             .map_err(|e| fail(F, e))
     }
 
@@ -148,7 +152,7 @@ impl LineCongruence {
                             steps,
                             o.number("length")?,
                         )
-                        .map(|inner| LineCongruence { inner })
+                        .map(|inner| LineCongruence { inner, _live: Live::new() })
                         .map_err(|e| fail(F, e));
                     }
                     Some(other) => {
@@ -160,7 +164,7 @@ impl LineCongruence {
                         return Err(fail(F, "options.diagonalOnly gives the lines of one step: leave steps at 1"));
                     }
                     return congruence::butterfly_diagonal(&self.inner, w)
-                        .map(|inner| LineCongruence { inner })
+                        .map(|inner| LineCongruence { inner, _live: Live::new() })
                         .map_err(|e| fail(F, e));
                 }
                 CongruenceScheme::Butterfly { w }
@@ -170,8 +174,12 @@ impl LineCongruence {
                 match o.string("variant")?.as_deref() {
                     None | Some("coupled") => CongruenceScheme::Coupled { k },
                     Some("two-stage") => CongruenceScheme::TwoStage { k },
+                    Some("paper") => CongruenceScheme::Paper { k },
                     Some(v) => {
-                        return Err(fail(F, format!("options.variant must be \"two-stage\" or \"coupled\", got {v:?}")))
+                        return Err(fail(
+                            F,
+                            format!("options.variant must be \"paper\", \"two-stage\" or \"coupled\", got {v:?}"),
+                        ))
                     }
                 }
             }
@@ -180,7 +188,9 @@ impl LineCongruence {
                 return Err(fail(F, format!("unknown scheme \"{other}\"; use \"butterfly\" or \"variational\"")))
             }
         };
-        congruence::subdivide(&self.inner, scheme, steps).map(|inner| LineCongruence { inner }).map_err(|e| fail(F, e))
+        congruence::subdivide(&self.inner, scheme, steps)
+            .map(|inner| LineCongruence { inner, _live: Live::new() })
+            .map_err(|e| fail(F, e))
     }
 }
 
@@ -188,12 +198,13 @@ impl LineCongruence {
 #[wasm_bindgen]
 pub struct AnalyticCongruence {
     inner: examples::AnalyticCongruence,
+    _live: Live,
 }
 
 impl AnalyticCongruence {
     /// Wraps a core congruence.
     pub(crate) fn from_core(inner: examples::AnalyticCongruence) -> Self {
-        AnalyticCongruence { inner }
+        AnalyticCongruence { inner, _live: Live::new() }
     }
 }
 
@@ -231,17 +242,26 @@ impl AnalyticCongruence {
             return Err(fail("AnalyticCongruence.byName", format!("name must be a string, got {}", describe(&name))));
         };
         examples::AnalyticCongruence::by_name(&name)
-            .map(|inner| AnalyticCongruence { inner })
+            .map(|inner| AnalyticCongruence { inner, _live: Live::new() })
             .map_err(|e| fail("AnalyticCongruence.byName", e))
     }
 
-    /// A rows × cols grid of its lines (default: the paper's grid size).
-    pub fn grid(&self, rows: Option<f64>, cols: Option<f64>) -> Result<LineCongruence, JsValue> {
+    /// A rows × cols grid of its lines (default: the paper's grid size), each the segment
+    /// from p to p + reach·d (`reach` default 1: the paper gives no length, ERRATA.md 9;
+    /// shorter segments are the same lines, and every scheme refines them to the same lines).
+    pub fn grid(&self, rows: Option<f64>, cols: Option<f64>, reach: Option<f64>) -> Result<LineCongruence, JsValue> {
         const F: &str = "AnalyticCongruence.grid";
         let (_, _, r0, c0) = self.inner.domain();
         let rows = integer(F, "rows", rows.unwrap_or(r0 as f64), 2, MAX_RULINGS)?;
         let cols = integer(F, "cols", cols.unwrap_or(c0 as f64), 2, MAX_RULINGS)?;
-        self.inner.grid(rows, cols).map(|inner| LineCongruence { inner }).map_err(|e| fail(F, e))
+        let reach = reach.unwrap_or(1.0);
+        if !(reach.is_finite() && reach > 0.0 && reach <= 1e6) {
+            return Err(fail(F, format!("reach must be a positive number, got {reach}")));
+        }
+        self.inner
+            .grid_reaching(rows, cols, reach)
+            .map(|inner| LineCongruence { inner, _live: Live::new() })
+            .map_err(|e| fail(F, e))
     }
 
     /// Errors of `refined` (refined from one of its grids) against the exact lines at the

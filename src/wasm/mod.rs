@@ -6,16 +6,19 @@
 //! the boundary and the module stays usable after an error.
 
 mod args;
+mod buffers;
 mod congruence;
 mod error;
 mod formula;
 mod io;
+mod live;
 mod subdivide;
 mod surface;
 mod toolpath;
 
 pub use congruence::{AnalyticCongruence, LineCongruence};
 pub use io::import_segments;
+pub use live::live_objects;
 pub use subdivide::subdivide_polygon;
 pub use surface::{AnalyticSurface, RuledSurface};
 pub use toolpath::ToolPath;

@@ -1,6 +1,7 @@
 //! `RuledSurface` and `AnalyticSurface` for JavaScript (Section 2).
 
-use super::args::{describe, fail, float64_array, integer, ObjectBuilder, Options};
+use super::args::{describe, fail, float64_array, integer, read_options, ObjectBuilder, Options};
+use super::live::Live;
 use crate::examples;
 use crate::ruled::{self, convergence, Development, HingeChain, Invariants};
 use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
@@ -35,6 +36,23 @@ export interface Invariants {
    * that use the pair are NaN.
    */
   parallel: Uint8Array;
+}
+
+/** Options of `invariants()`: `closed` reads R_{N−1} as followed by R_0 (a closed surface). */
+export interface InvariantsOptions { closed?: boolean }
+
+/** Largest errors of a sampled analytic surface's discrete invariants at its rulings. */
+export interface SamplingErrors {
+  rulings: number;
+  parallelPairs: number;
+  /** max |f_{i,i+1} − s(u_i)| (first order, Proposition 1). */
+  footpoint: number;
+  /** max |m_i − s(u_i)| (second order, Proposition 2). */
+  midpoint: number;
+  /** max |(f_{i,i+1} + f_{i+1,i})/2 − s(u_i + H/2)| (Example 1's polygon, second order). */
+  perpendicularMidpoint: number;
+  /** max |δ̄_i − δ(u_i)| (second order). */
+  distributionMean: number;
 }
 
 /** One analytic surface as listed by `AnalyticSurface.list()`. */
@@ -72,12 +90,24 @@ pub struct RuledSurface {
     inner: ruled::RuledSurface,
     /// Built on first use by the isometries, so repeated `bend(t)` calls stay cheap.
     chain: OnceCell<HingeChain>,
+    _live: Live,
+}
+
+#[derive(serde::Deserialize, Default)]
+struct InvariantsOptions {
+    #[serde(default)]
+    closed: bool,
 }
 
 impl RuledSurface {
+    fn compute_invariants(&self, func: &str, options: JsValue) -> Result<Invariants, JsValue> {
+        let o: InvariantsOptions = read_options(func, options, &["closed"], &[], true)?;
+        Ok(if o.closed { self.inner.invariants_closed() } else { self.inner.invariants() })
+    }
+
     /// Wraps a core surface.
     pub fn from_core(inner: ruled::RuledSurface) -> Self {
-        RuledSurface { inner, chain: OnceCell::new() }
+        RuledSurface { inner, chain: OnceCell::new(), _live: Live::new() }
     }
 
     fn chain(&self) -> &HingeChain {
@@ -121,12 +151,17 @@ impl RuledSurface {
         Float32Array::from(&self.inner.flat_f32()[..])
     }
 
-    /// All discrete invariants of Section 2 as typed arrays.
+    /// All discrete invariants of Section 2 as typed arrays. With `{ closed: true }` the
+    /// surface is read as closed (R_{N−1} followed by R_0): N pairs, and N striction points,
+    /// one per ruling, so the striction polygon closes.
     #[wasm_bindgen(unchecked_return_type = "Invariants")]
-    pub fn invariants(&self) -> JsValue {
-        let inv = self.inner.invariants();
+    pub fn invariants(
+        &self,
+        #[wasm_bindgen(unchecked_optional_param_type = "InvariantsOptions")] options: Option<js_sys::Object>,
+    ) -> Result<JsValue, JsValue> {
+        let inv = self.compute_invariants("RuledSurface.invariants", options.map(JsValue::from).unwrap_or_default())?;
         let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
-        ObjectBuilder::new()
+        Ok(ObjectBuilder::new()
             .f64s("angle", &inv.angle)
             .f64s("distance", &inv.distance)
             .f64s("distribution", &inv.distribution)
@@ -136,22 +171,25 @@ impl RuledSurface {
             .f64s("distributionMean", &inv.distribution_mean)
             .f64s("perpendicularMidpoints", Invariants::flat(&inv.perpendicular_midpoints))
             .set("parallel", Uint8Array::from(&parallel[..]))
-            .build()
+            .build())
     }
 
     /// As `invariants()`, but written into the arrays of `out` (an object returned by an
-    /// earlier `invariants()` call on a surface with as many rulings): no allocation, for
-    /// animation loops and large models. Throws if an array is missing or has the wrong length.
+    /// earlier `invariants()` call on a surface with as many rulings, and the same `closed`):
+    /// no allocation, for animation loops and large models. Throws if an array is missing or
+    /// has the wrong length.
     #[wasm_bindgen(js_name = invariantsInto)]
     pub fn invariants_into(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Invariants")] out: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "InvariantsOptions")] options: Option<js_sys::Object>,
     ) -> Result<(), JsValue> {
+        let options = options.map(JsValue::from).unwrap_or_default();
         const F: &str = "RuledSurface.invariantsInto";
         if !out.is_object() {
             return Err(fail(F, format!("out must be an Invariants object, got {}", describe(&out))));
         }
-        let inv = self.inner.invariants();
+        let inv = self.compute_invariants(F, options)?;
         let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
         let target = |key: &str, len: usize| -> Result<JsValue, JsValue> {
             let v = js_sys::Reflect::get(&out, &key.into()).map_err(|_| fail(F, format!("out.{key} is missing")))?;
@@ -189,6 +227,42 @@ impl RuledSurface {
             Err(_) => return Err(fail(F, "out.parallel must be a Uint8Array")),
         }
         Ok(())
+    }
+
+    /// The unit directions e_i = (b_i − a_i)/|b_i − a_i|, 3 numbers per ruling.
+    pub fn directions(&self) -> Float64Array {
+        Float64Array::from(Invariants::flat(&self.inner.directions()))
+    }
+
+    /// Mean length |b_i − a_i| of the segments.
+    #[wasm_bindgen(js_name = meanLength)]
+    pub fn mean_length(&self) -> f64 {
+        self.inner.mean_length()
+    }
+
+    /// The same lines with other segments: a_i moved by `amounts[2i]` and b_i by
+    /// `amounts[2i + 1]` along e_i (the lines themselves do not change).
+    pub fn slide(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array")] amounts: JsValue,
+    ) -> Result<RuledSurface, JsValue> {
+        const F: &str = "RuledSurface.slide";
+        let amounts = float64_array(F, "amounts", &amounts)?;
+        self.inner.slide(&amounts).map(Self::from_core).map_err(|e| fail(F, e))
+    }
+
+    /// The largest relative change of an edge length of the boundary polygons (a_i), (b_i)
+    /// from this surface to `other` (0 to rounding for an isometric deformation).
+    #[wasm_bindgen(js_name = maxEdgeChange)]
+    pub fn max_edge_change(&self, other: &RuledSurface) -> Result<f64, JsValue> {
+        self.inner.max_edge_change(&other.inner).map_err(|e| fail("RuledSurface.maxEdgeChange", e))
+    }
+
+    /// Largest angle (radians) between corresponding rulings of this surface and `other`, as
+    /// unoriented lines.
+    #[wasm_bindgen(js_name = maxAngleTo)]
+    pub fn max_angle_to(&self, other: &RuledSurface) -> Result<f64, JsValue> {
+        self.inner.max_angle_to(&other.inner).map_err(|e| fail("RuledSurface.maxAngleTo", e))
     }
 
     /// The hinge angles τ_i of the discrete Minding isometries (Section 3): the signed angle
@@ -240,12 +314,13 @@ impl RuledSurface {
 #[wasm_bindgen]
 pub struct AnalyticSurface {
     inner: examples::AnalyticSurface,
+    _live: Live,
 }
 
 impl AnalyticSurface {
     /// Wraps a core surface.
     pub(crate) fn from_core(inner: examples::AnalyticSurface) -> Self {
-        AnalyticSurface { inner }
+        AnalyticSurface { inner, _live: Live::new() }
     }
 }
 
@@ -278,7 +353,7 @@ impl AnalyticSurface {
             return Err(fail("AnalyticSurface.byName", format!("name must be a string, got {}", describe(&name))));
         };
         examples::AnalyticSurface::by_name(&name)
-            .map(|inner| AnalyticSurface { inner })
+            .map(|inner| AnalyticSurface { inner, _live: Live::new() })
             .map_err(|e| fail("AnalyticSurface.byName", e))
     }
 
@@ -302,14 +377,55 @@ impl AnalyticSurface {
     ) -> Result<RuledSurface, JsValue> {
         const F: &str = "AnalyticSurface.sample";
         let count = integer(F, "count", count, 2, MAX_SAMPLES)?;
-        let o = Options::new(F, opts, &["uMin", "uMax", "vMin", "vMax", "closed"])?;
-        let d = self.inner.ranges();
-        let r = examples::Ranges {
-            u: (o.number("uMin")?.unwrap_or(d.u.0), o.number("uMax")?.unwrap_or(d.u.1)),
-            v: (o.number("vMin")?.unwrap_or(d.v.0), o.number("vMax")?.unwrap_or(d.v.1)),
-            closed: o.boolean("closed")?.unwrap_or(d.closed),
-        };
+        let r = self.ranges(F, opts)?;
         self.inner.sample(count, r).map(RuledSurface::from_core).map_err(|e| fail(F, e))
+    }
+
+    /// The parameters u_i at which `sample(count, options)` takes its rulings.
+    pub fn parameters(
+        &self,
+        count: f64,
+        #[wasm_bindgen(unchecked_param_type = "SampleOptions | undefined")] opts: JsValue,
+    ) -> Result<Float64Array, JsValue> {
+        const F: &str = "AnalyticSurface.parameters";
+        let count = integer(F, "count", count, 2, MAX_SAMPLES)?;
+        let r = self.ranges(F, opts)?;
+        Ok(Float64Array::from(&examples::AnalyticSurface::parameters(count, r)[..]))
+    }
+
+    /// How far the discrete invariants of `count` sampled rulings are from the exact ones at
+    /// those rulings (closed surfaces read as closed).
+    #[wasm_bindgen(js_name = samplingErrors, unchecked_return_type = "SamplingErrors")]
+    pub fn sampling_errors(
+        &self,
+        count: f64,
+        #[wasm_bindgen(unchecked_param_type = "SampleOptions | undefined")] opts: JsValue,
+    ) -> Result<JsValue, JsValue> {
+        const F: &str = "AnalyticSurface.samplingErrors";
+        let count = integer(F, "count", count, 3, MAX_SAMPLES)?;
+        let r = self.ranges(F, opts)?;
+        let e = crate::ruled::accuracy::sampling_errors(&self.inner, count, r).map_err(|e| fail(F, e))?;
+        serde_wasm_bindgen::to_value(&e).map_err(|e| fail(F, e.to_string()))
+    }
+
+    /// Largest distance from this surface of the rulings of `refined` whose index is not a
+    /// multiple of `stride` (the inserted ones), sampled at 9 points each; `refined` was
+    /// refined from a sampling of the parameter interval [uMin, uMax].
+    #[wasm_bindgen(js_name = insertedDistance)]
+    pub fn inserted_distance(
+        &self,
+        refined: &RuledSurface,
+        stride: f64,
+        u_min: f64,
+        u_max: f64,
+    ) -> Result<f64, JsValue> {
+        const F: &str = "AnalyticSurface.insertedDistance";
+        let stride = integer(F, "stride", stride, 2, 1 << 24)?;
+        if !(u_min.is_finite() && u_max.is_finite() && u_min < u_max) {
+            return Err(fail(F, format!("need finite uMin < uMax, got {u_min} and {u_max}")));
+        }
+        let which = (0..refined.inner.len()).filter(|i| i % stride != 0);
+        Ok(crate::subdivision::accuracy::max_distance(&self.inner, &refined.inner, u_min, u_max, which))
     }
 
     /// Exact striction points s(u) for each u: 3 numbers per u (NaN on a cylindrical ruling).
@@ -317,7 +433,7 @@ impl AnalyticSurface {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue,
     ) -> Result<Float64Array, JsValue> {
-        let u = self.parameters("AnalyticSurface.striction", &u)?;
+        let u = self.u_values("AnalyticSurface.striction", &u)?;
         let out: Vec<f64> =
             u.iter().flat_map(|&u| self.inner.striction(u).unwrap_or(glam::DVec3::NAN).to_array()).collect();
         Ok(Float64Array::from(&out[..]))
@@ -328,7 +444,7 @@ impl AnalyticSurface {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue,
     ) -> Result<Float64Array, JsValue> {
-        let u = self.parameters("AnalyticSurface.distribution", &u)?;
+        let u = self.u_values("AnalyticSurface.distribution", &u)?;
         let out: Vec<f64> = u.iter().map(|&u| self.inner.distribution(u)).collect();
         Ok(Float64Array::from(&out[..]))
     }
@@ -339,7 +455,7 @@ impl AnalyticSurface {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue,
     ) -> Result<Float64Array, JsValue> {
-        let u = self.parameters("AnalyticSurface.centralTangent", &u)?;
+        let u = self.u_values("AnalyticSurface.centralTangent", &u)?;
         let out: Vec<f64> =
             u.iter().flat_map(|&u| self.inner.central_tangent(u).unwrap_or(glam::DVec3::NAN).to_array()).collect();
         Ok(Float64Array::from(&out[..]))
@@ -410,7 +526,18 @@ fn numbers(values: &[f64]) -> js_sys::Array {
 }
 
 impl AnalyticSurface {
-    fn parameters(&self, func: &str, u: &JsValue) -> Result<Vec<f64>, JsValue> {
+    /// Sampling ranges from `SampleOptions`, defaults from the surface.
+    fn ranges(&self, func: &'static str, opts: JsValue) -> Result<examples::Ranges, JsValue> {
+        let o = Options::new(func, opts, &["uMin", "uMax", "vMin", "vMax", "closed"])?;
+        let d = self.inner.ranges();
+        Ok(examples::Ranges {
+            u: (o.number("uMin")?.unwrap_or(d.u.0), o.number("uMax")?.unwrap_or(d.u.1)),
+            v: (o.number("vMin")?.unwrap_or(d.v.0), o.number("vMax")?.unwrap_or(d.v.1)),
+            closed: o.boolean("closed")?.unwrap_or(d.closed),
+        })
+    }
+
+    fn u_values(&self, func: &str, u: &JsValue) -> Result<Vec<f64>, JsValue> {
         let u = float64_array(func, "u", u)?;
         if u.len() > MAX_SAMPLES {
             return Err(fail(func, crate::Error::TooMany { what: "parameters", got: u.len(), max: MAX_SAMPLES }));

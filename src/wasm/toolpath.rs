@@ -1,6 +1,7 @@
 //! Tool paths for JavaScript (Example 6, Figs. 16–18): `ToolPath`.
 
 use super::args::{fail, float64_array, ObjectBuilder, Options};
+use super::live::Live;
 use crate::error::Error;
 use crate::milling::{self, example, export, quality};
 use crate::ruled::surface::points_from_flat;
@@ -39,6 +40,14 @@ export interface PathQuality {
 #[wasm_bindgen]
 pub struct ToolPath {
     inner: milling::ToolPath,
+    _live: Live,
+}
+
+impl ToolPath {
+    /// The core path.
+    pub fn core(&self) -> &milling::ToolPath {
+        &self.inner
+    }
 }
 
 fn read_tool(func: &'static str, tool: JsValue) -> Result<milling::Tool, JsValue> {
@@ -79,13 +88,15 @@ impl ToolPath {
             }
             other => fail(F, other),
         })?;
-        Ok(ToolPath { inner: milling::ToolPath::from_surface(&axes, tool) })
+        Ok(ToolPath { inner: milling::ToolPath::from_surface(&axes, tool), _live: Live::new() })
     }
 
     /// The built-in path of Figs. 16–18 with `count` given poses (default 7).
     pub fn example(count: Option<f64>) -> Result<ToolPath, JsValue> {
         let count = super::args::integer("ToolPath.example", "count", count.unwrap_or(7.0), 2, 1000)?;
-        example::example(count).map(|inner| ToolPath { inner }).map_err(|e| fail("ToolPath.example", e))
+        example::example(count)
+            .map(|inner| ToolPath { inner, _live: Live::new() })
+            .map_err(|e| fail("ToolPath.example", e))
     }
 
     /// The example's target profile γ, `count` points (3 numbers each).
@@ -115,7 +126,7 @@ impl ToolPath {
         if closed {
             return Err(fail(F, "a tool path is open: options.closed must be false"));
         }
-        self.inner.refine(scheme, steps).map(|inner| ToolPath { inner }).map_err(|e| fail(F, e))
+        self.inner.refine(scheme, steps).map(|inner| ToolPath { inner, _live: Live::new() }).map_err(|e| fail(F, e))
     }
 
     /// Tool tips, 3 numbers per pose.
@@ -128,6 +139,20 @@ impl ToolPath {
     pub fn axes(&self) -> Float64Array {
         let a: Vec<DVec3> = self.inner.poses.iter().map(|p| p.axis).collect();
         flat(&a)
+    }
+
+    /// Axis segments tip → tip + L·axis, 6 numbers per pose.
+    pub fn segments(&self) -> Float64Array {
+        let v: Vec<f64> = self
+            .inner
+            .poses
+            .iter()
+            .flat_map(|p| {
+                let b = p.tip + self.inner.tool.length * p.axis;
+                [p.tip.x, p.tip.y, p.tip.z, b.x, b.y, b.z]
+            })
+            .collect();
+        Float64Array::from(&v[..])
     }
 
     /// Axis segments tip → tip + L·axis (6 numbers per pose) as 32-bit floats for WebGL.

@@ -1,0 +1,87 @@
+//! How far the discrete invariants of a sampled analytic surface are from the exact ones, at
+//! the sampled rulings themselves (the readouts of the striction scene, Figs. 2–3):
+//!
+//! - `footpoint`: max |f_{i,i+1} − s(u_i)| (Proposition 1, first order (3));
+//! - `midpoint`: max |m_i − s(u_i)|, m_i = (f_{i,i−1} + f_{i,i+1})/2 (Proposition 2, (7));
+//! - `perpendicular_midpoint`: max |(f_{i,i+1} + f_{i+1,i})/2 − s(u_i + H/2)| (Example 1's
+//!   polygon, Fig. 3; ERRATA.md 6);
+//! - `distribution_mean`: max |(δ_{i−1,i} + δ_{i,i+1})/2 − δ(u_i)| (7).
+//!
+//! Open samplings use the interior rulings; closed ones (R_{N−1} followed by R_0) every ruling.
+
+use crate::error::Result;
+use crate::examples::{AnalyticSurface, Ranges};
+use glam::DVec3;
+
+/// The largest errors of a sampling (see the module documentation); NaN where a surface has
+/// no striction point (a cylinder) or a pair of rulings is parallel.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
+pub struct SamplingErrors {
+    /// Rulings sampled.
+    pub rulings: usize,
+    /// Pairs flagged parallel.
+    pub parallel_pairs: usize,
+    /// max |f_{i,i+1} − s(u_i)|.
+    pub footpoint: f64,
+    /// max |m_i − s(u_i)|.
+    pub midpoint: f64,
+    /// max |(f_{i,i+1} + f_{i+1,i})/2 − s(u_i + H/2)|.
+    pub perpendicular_midpoint: f64,
+    /// max |δ̄_i − δ(u_i)|.
+    pub distribution_mean: f64,
+}
+
+/// Errors of `count` rulings of `surface` sampled over `ranges`.
+pub fn sampling_errors(surface: &AnalyticSurface, count: usize, ranges: Ranges) -> Result<SamplingErrors> {
+    let sampled = surface.sample(count, ranges)?;
+    let u = AnalyticSurface::parameters(count, ranges);
+    let h = if count > 1 { u[1] - u[0] } else { 0.0 };
+    let inv = if ranges.closed { sampled.invariants_closed() } else { sampled.invariants() };
+    // the rulings that have a striction point, and the index of their m_i
+    let rulings: Vec<(usize, usize)> =
+        if ranges.closed { (0..count).map(|i| (i, i)).collect() } else { (1..count - 1).map(|i| (i, i - 1)).collect() };
+    let nan = DVec3::splat(f64::NAN);
+    let exact = |u: f64| surface.striction(u).unwrap_or(nan);
+    let max = |values: &mut dyn Iterator<Item = f64>| {
+        values.fold(0.0, |m: f64, x| if x.is_nan() || m.is_nan() { f64::NAN } else { m.max(x) })
+    };
+    Ok(SamplingErrors {
+        rulings: count,
+        parallel_pairs: inv.parallel.iter().filter(|&&p| p).count(),
+        footpoint: max(&mut rulings.iter().map(|&(i, _)| (inv.footpoints[2 * i] - exact(u[i])).length())),
+        midpoint: max(&mut rulings.iter().map(|&(i, m)| (inv.striction[m] - exact(u[i])).length())),
+        perpendicular_midpoint: max(&mut (0..inv.perpendicular_midpoints.len())
+            .map(|i| (inv.perpendicular_midpoints[i] - exact(u[i] + h / 2.0)).length())),
+        distribution_mean: max(&mut rulings
+            .iter()
+            .map(|&(i, m)| (inv.distribution_mean[m] - surface.distribution(u[i])).abs())),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// On the hyperboloid of Example 1 the midpoint errors fall 4× when N doubles (second
+    /// order), the footpoint errors 2× (first order), and closing the surface changes nothing
+    /// in the interior.
+    #[test]
+    fn orders_of_the_sampled_polygons() {
+        let hyp = AnalyticSurface::ALL[0].clone();
+        let r = hyp.ranges();
+        let (a, b) = (sampling_errors(&hyp, 64, r).unwrap(), sampling_errors(&hyp, 128, r).unwrap());
+        assert!(((a.midpoint / b.midpoint).log2() - 2.0).abs() < 0.1, "{a:?} {b:?}");
+        assert!(((a.perpendicular_midpoint / b.perpendicular_midpoint).log2() - 2.0).abs() < 0.1, "{a:?} {b:?}");
+        assert!(((a.footpoint / b.footpoint).log2() - 1.0).abs() < 0.1, "{a:?} {b:?}");
+        assert!(((a.distribution_mean / b.distribution_mean).log2() - 2.0).abs() < 0.15, "{a:?} {b:?}");
+        assert_eq!(a.parallel_pairs, 0);
+        // the cylinder has no striction point: NaN, not a number that looks right
+        let cyl = AnalyticSurface::Cylinder;
+        assert!(sampling_errors(&cyl, 12, cyl.ranges()).unwrap().midpoint.is_nan());
+        // the helicoid's footpoints are exact
+        let hel = AnalyticSurface::Helicoid { pitch: 0.5 };
+        assert!(sampling_errors(&hel, 20, hel.ranges()).unwrap().footpoint < 1e-12);
+    }
+}
