@@ -1,5 +1,6 @@
 // An orbit camera around a target, z up: drag to orbit, right/shift-drag or two fingers to
-// pan, wheel or pinch to zoom; keyboard: arrows orbit, shift+arrows pan, +/- zoom, F fits.
+// pan, wheel or pinch to zoom; keyboard (while the view has focus): arrows orbit,
+// shift+arrows pan, +/- zoom, F fits.
 import { add, lookAt, multiply, perspective, scale, sub, cross, normalize, length } from './math.js';
 
 export class OrbitCamera {
@@ -9,6 +10,8 @@ export class OrbitCamera {
     this.yaw = 0.9;
     this.pitch = 0.35;
     this.fovY = (35 * Math.PI) / 180;
+    /** @type {{target: number[], distance: number, yaw: number, pitch: number} | null} */
+    this.home = null;
   }
 
   get eye() {
@@ -18,18 +21,24 @@ export class OrbitCamera {
   }
 
   /** View-projection matrix for a viewport of this aspect ratio. */
-  viewProj(aspect) {
+  viewProj(/** @type {number} */ aspect) {
     const near = this.distance / 100;
     const far = this.distance * 100;
     return multiply(perspective(this.fovY, aspect, near, far), lookAt(this.eye, this.target, [0, 0, 1]));
   }
 
-  /** Frames a bounding box {min, max}. */
-  fit({ min, max }) {
-    if (!min.every(Number.isFinite)) return;
+  /**
+   * Frames a bounding box {min, max} in a viewport of `aspect` (width/height): the box's
+   * bounding sphere fits both the height and the width, so a portrait phone shows it whole.
+   * @param {{min: number[], max: number[]}} box
+   * @param {number} [aspect]
+   */
+  fit({ min, max }, aspect = 1) {
+    if (!min.every(Number.isFinite) || !max.every(Number.isFinite)) return;
     this.target = scale(add(min, max), 0.5);
     const radius = Math.max(length(sub(max, min)) / 2, 1e-6);
-    this.distance = (radius / Math.sin(this.fovY / 2)) * 1.05;
+    const half = Math.min(this.fovY / 2, Math.atan(Math.tan(this.fovY / 2) * Math.max(aspect, 1e-3)));
+    this.distance = (radius / Math.sin(half)) * 1.04;
     this.home = { target: this.target, distance: this.distance, yaw: this.yaw, pitch: this.pitch };
   }
 
@@ -38,13 +47,23 @@ export class OrbitCamera {
     if (this.home) Object.assign(this, this.home);
   }
 
-  orbit(dYaw, dPitch) {
+  /** The camera as six numbers: yaw, pitch, distance, target x, y, z. */
+  toArray() {
+    return [this.yaw, this.pitch, this.distance, ...this.target];
+  }
+
+  /** Sets the camera from `toArray()`'s numbers. */
+  fromArray(/** @type {number[]} */ [yaw, pitch, distance, ...target]) {
+    Object.assign(this, { yaw, pitch: Math.max(-1.55, Math.min(1.55, pitch)), distance: Math.max(distance, 1e-9), target });
+  }
+
+  orbit(/** @type {number} */ dYaw, /** @type {number} */ dPitch) {
     this.yaw += dYaw;
     this.pitch = Math.max(-1.55, Math.min(1.55, this.pitch + dPitch));
   }
 
   /** Pans by a fraction of the view height. */
-  pan(dx, dy) {
+  pan(/** @type {number} */ dx, /** @type {number} */ dy) {
     const eye = this.eye;
     const forward = normalize(sub(this.target, eye));
     const right = normalize(cross(forward, [0, 0, 1]));
@@ -53,31 +72,36 @@ export class OrbitCamera {
     this.target = add(this.target, add(scale(right, -dx * s), scale(up, dy * s)));
   }
 
-  zoom(factor) {
+  zoom(/** @type {number} */ factor) {
     this.distance = Math.max(1e-6, this.distance * factor);
   }
 
   /**
-   * Connects mouse, touch and keyboard input on `element`; calls `changed()` after each move.
+   * Connects mouse, touch and keyboard input on `element`; calls `changed(ended)` after each
+   * move (`ended`: the gesture is over, e.g. to announce the result once).
    * @param {HTMLElement} element
+   * @param {(ended: boolean) => void} changed
    */
   attach(element, changed) {
+    /** @type {Map<number, {x: number, y: number}>} */
     const pointers = new Map();
+    /** @type {{mid: {x: number, y: number}, span: number} | null} */
     let last = null;
     element.addEventListener('pointerdown', (e) => {
-      element.setPointerCapture(e.pointerId);
+      element.setPointerCapture?.(e.pointerId);
       pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
       last = null;
     });
-    const end = (e) => {
-      pointers.delete(e.pointerId);
+    const end = (/** @type {PointerEvent} */ e) => {
+      const was = pointers.delete(e.pointerId);
       last = null;
+      if (was && pointers.size === 0) changed(true);
     };
     element.addEventListener('pointerup', end);
     element.addEventListener('pointercancel', end);
     element.addEventListener('pointermove', (e) => {
-      if (!pointers.has(e.pointerId)) return;
       const prev = pointers.get(e.pointerId);
+      if (!prev) return;
       pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
       const h = element.clientHeight || 1;
       if (pointers.size === 1) {
@@ -95,20 +119,24 @@ export class OrbitCamera {
         }
         last = { mid, span };
       }
-      changed();
+      changed(false);
     });
     element.addEventListener('contextmenu', (e) => e.preventDefault());
+    let wheelEnd = 0;
     element.addEventListener(
       'wheel',
       (e) => {
         e.preventDefault();
         this.zoom(Math.exp(Math.sign(e.deltaY) * Math.min(Math.abs(e.deltaY), 100) * 0.002));
-        changed();
+        changed(false);
+        clearTimeout(wheelEnd);
+        wheelEnd = window.setTimeout(() => changed(true), 300);
       },
       { passive: false },
     );
     element.addEventListener('keydown', (e) => {
       const step = 0.08;
+      /** @type {Record<string, () => void>} */
       const actions = {
         ArrowLeft: () => (e.shiftKey ? this.pan(-step, 0) : this.orbit(step, 0)),
         ArrowRight: () => (e.shiftKey ? this.pan(step, 0) : this.orbit(-step, 0)),
@@ -120,10 +148,10 @@ export class OrbitCamera {
         f: () => this.reset(),
         F: () => this.reset(),
       };
-      if (actions[e.key]) {
+      if (actions[e.key] && !e.ctrlKey && !e.metaKey && !e.altKey) {
         e.preventDefault();
         actions[e.key]();
-        changed();
+        changed(true);
       }
     });
   }

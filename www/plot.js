@@ -1,48 +1,136 @@
-// A small log-log plot in SVG (no dependencies): series of (x, y) with decade ticks and
-// reference slopes, for convergence orders.
+// A log-log plot built with the DOM as self-contained SVG 1.1 (its own fonts, colours, grid,
+// dashed reference slopes and legend as presentation attributes: no page CSS needed), so the
+// same element is shown on the page and saved as a file. Series differ in colour, marker and
+// dash, not in colour alone.
 
-const COLORS = ['#d6292b', '#1f5fae', '#e08a1e', '#168a52', '#6b4fa8', '#444'];
+import { parseRich } from './ui/richtext.js';
+
+const SVG = 'http://www.w3.org/2000/svg';
+const SERIES = [
+  { color: '#d55e00', marker: 'circle', dash: '' },
+  { color: '#0072b2', marker: 'square', dash: '6 3' },
+  { color: '#e69f00', marker: 'triangle', dash: '2 2' },
+  { color: '#1f2430', marker: 'diamond', dash: '8 3 2 3' },
+  { color: '#56b4e9', marker: 'circle', dash: '1 2' },
+];
 
 /**
- * @param {{x: number[], series: {name: string, y: number[]}[], slopes?: number[], width?: number, height?: number, xLabel?: string, yLabel?: string}} spec
- * @returns {string} SVG markup
+ * @typedef {object} PlotSpec
+ * @property {number[]} x
+ * @property {Array<{name: string, y: number[]}>} series
+ * @property {number[]} [slopes]     reference slopes drawn dashed
+ * @property {string} xLabel
+ * @property {string} yLabel
+ * @property {string} title          for the accessible name and the file
+ * @property {(order: number) => string} slopeLabel
+ * @property {(exponent: number) => string} [tick]   default "10^e"
+ * @property {number} [width]
+ * @property {number} [height]
  */
-export function logLogPlot({ x, series, slopes = [], width = 340, height = 250, xLabel = 'H', yLabel = 'error' }) {
-  const pad = { l: 46, r: 10, t: 10, b: 36 };
-  const finite = (v) => Number.isFinite(v) && v > 0;
+
+/**
+ * @param {Document} doc
+ * @param {PlotSpec} spec
+ * @returns {SVGSVGElement}
+ */
+export function logLogPlot(doc, { x, series, slopes = [], xLabel, yLabel, title, slopeLabel, width = 360, height = 270 }) {
+  const el = (/** @type {string} */ tag, /** @type {Record<string, string | number>} */ attrs = {}, /** @type {string} */ text = '') => {
+    const e = doc.createElementNS(SVG, tag);
+    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
+    if (text) e.textContent = text;
+    return e;
+  };
+  const svg = /** @type {SVGSVGElement} */ (el('svg', { xmlns: SVG, version: '1.1', viewBox: `0 0 ${width} ${height}`, width, height, 'font-family': 'Helvetica, Arial, sans-serif', 'font-size': 11, role: 'img' }));
+  svg.setAttribute('aria-label', title);
+  svg.classList.add('rl-plot');
+  svg.append(el('title', {}, title), el('rect', { x: 0, y: 0, width, height, fill: '#fbfaf7' }));
+  const pad = { l: 48, r: 12, t: 12, b: 38 };
+  const finite = (/** @type {number} */ v) => Number.isFinite(v) && v > 0;
   const ys = series.flatMap((s) => s.y.filter(finite));
   const xs = x.filter(finite);
-  if (!ys.length || !xs.length) return '<svg></svg>';
-  const [x0, x1] = [Math.floor(Math.log10(Math.min(...xs))), Math.ceil(Math.log10(Math.max(...xs)))];
-  const [y0, y1] = [Math.floor(Math.log10(Math.min(...ys))), Math.ceil(Math.log10(Math.max(...ys)))];
-  const px = (v) => pad.l + ((Math.log10(v) - x0) / Math.max(x1 - x0, 1)) * (width - pad.l - pad.r);
-  const py = (v) => height - pad.b - ((Math.log10(v) - y0) / Math.max(y1 - y0, 1)) * (height - pad.t - pad.b);
-  const parts = [];
+  if (!ys.length || !xs.length) return svg;
+  const x0 = Math.floor(Math.log10(Math.min(...xs))), x1 = Math.ceil(Math.log10(Math.max(...xs)));
+  const y0 = Math.floor(Math.log10(Math.min(...ys))), y1 = Math.ceil(Math.log10(Math.max(...ys)));
+  const px = (/** @type {number} */ v) => pad.l + ((Math.log10(v) - x0) / Math.max(x1 - x0, 1)) * (width - pad.l - pad.r);
+  const py = (/** @type {number} */ v) => height - pad.b - ((Math.log10(v) - y0) / Math.max(y1 - y0, 1)) * (height - pad.t - pad.b);
+  const tick = (/** @type {number} */ e) => {
+    const t = el('text', {});
+    t.append(doc.createTextNode('10'), el('tspan', { dy: -5, 'font-size': 8 }, String(e).replace('-', '−')));
+    return t;
+  };
+  const grid = el('g', { stroke: '#dedbd2', 'stroke-width': 1 });
+  const labels = el('g', { fill: '#333' });
   for (let e = x0; e <= x1; e++) {
-    parts.push(`<line x1="${px(10 ** e)}" x2="${px(10 ** e)}" y1="${pad.t}" y2="${height - pad.b}" class="grid"/>`);
-    parts.push(`<text x="${px(10 ** e)}" y="${height - pad.b + 14}" text-anchor="middle">10<tspan dy="-5" font-size="8">${e}</tspan></text>`);
+    grid.append(el('line', { x1: px(10 ** e), x2: px(10 ** e), y1: pad.t, y2: height - pad.b }));
+    const t = tick(e);
+    t.setAttribute('x', String(px(10 ** e)));
+    t.setAttribute('y', String(height - pad.b + 15));
+    t.setAttribute('text-anchor', 'middle');
+    labels.append(t);
   }
-  for (let e = y0; e <= y1; e += Math.max(1, Math.ceil((y1 - y0) / 6))) {
-    parts.push(`<line x1="${pad.l}" x2="${width - pad.r}" y1="${py(10 ** e)}" y2="${py(10 ** e)}" class="grid"/>`);
-    parts.push(`<text x="${pad.l - 4}" y="${py(10 ** e) + 4}" text-anchor="end">10<tspan dy="-5" font-size="8">${e}</tspan></text>`);
+  const every = Math.max(1, Math.ceil((y1 - y0) / 6));
+  for (let e = y0; e <= y1; e += every) {
+    grid.append(el('line', { x1: pad.l, x2: width - pad.r, y1: py(10 ** e), y2: py(10 ** e) }));
+    const t = tick(e);
+    t.setAttribute('x', String(pad.l - 4));
+    t.setAttribute('y', String(py(10 ** e) + 4));
+    t.setAttribute('text-anchor', 'end');
+    labels.append(t);
   }
+  svg.append(grid, labels);
   // reference slopes through the first point of the first series
   const anchor = series[0].y.findIndex(finite);
-  for (const [k, p] of slopes.entries()) {
-    if (anchor < 0) break;
+  slopes.forEach((p, k) => {
+    if (anchor < 0) return;
     const xa = x[anchor], ya = series[0].y[anchor] * 2;
-    const xb = Math.min(...xs), yb = ya * (xb / xa) ** p;
-    parts.push(`<line x1="${px(xa)}" y1="${py(ya)}" x2="${px(xb)}" y2="${py(Math.max(yb, 10 ** y0))}" class="slope"/>`);
-    parts.push(`<text x="${px(xb) + 4}" y="${py(Math.max(yb, 10 ** y0)) - 4 - 10 * k}" class="slope-label">slope ${p}</text>`);
-  }
-  series.forEach((s, k) => {
-    const pts = x.map((xv, i) => [xv, s.y[i]]).filter(([, yv]) => finite(yv));
-    const color = COLORS[k % COLORS.length];
-    parts.push(`<polyline fill="none" stroke="${color}" stroke-width="2" points="${pts.map(([a, b]) => `${px(a)},${py(b)}`).join(' ')}"/>`);
-    for (const [a, b] of pts) parts.push(`<circle cx="${px(a)}" cy="${py(b)}" r="2.5" fill="${color}"/>`);
-    parts.push(`<text x="${pad.l + 8}" y="${pad.t + 12 + 13 * k}" fill="${color}">${s.name}</text>`);
+    const xb = Math.min(...xs), yb = Math.max(ya * (xb / xa) ** p, 10 ** y0);
+    svg.append(el('line', { x1: px(xa), y1: py(ya), x2: px(xb), y2: py(yb), stroke: '#777', 'stroke-dasharray': '4 3', 'stroke-width': 1 }));
+    svg.append(el('text', { x: px(xb) + 4, y: py(yb) - 4 - 11 * k, fill: '#555', 'font-size': 10 }, slopeLabel(p)));
   });
-  parts.push(`<text x="${(width + pad.l) / 2}" y="${height - 4}" text-anchor="middle">${xLabel}</text>`);
-  parts.push(`<text x="12" y="${(height - pad.b) / 2}" transform="rotate(-90 12 ${(height - pad.b) / 2})" text-anchor="middle">${yLabel}</text>`);
-  return `<svg class="plot" viewBox="0 0 ${width} ${height}" width="100%" role="img" aria-label="log-log plot of ${yLabel} against ${xLabel}">${parts.join('')}</svg>`;
+  series.forEach((s, k) => {
+    const look = SERIES[k % SERIES.length];
+    const pts = x.map((xv, i) => [xv, s.y[i]]).filter(([, yv]) => finite(yv));
+    const g = el('g', { stroke: look.color, fill: look.color });
+    g.append(el('polyline', { fill: 'none', 'stroke-width': 2, 'stroke-dasharray': look.dash || 'none', points: pts.map(([a, b]) => `${px(a).toFixed(2)},${py(b).toFixed(2)}`).join(' ') }));
+    for (const [a, b] of pts) g.append(marker(el, look.marker, px(a), py(b), 3));
+    svg.append(g);
+    const ly = pad.t + 12 + 14 * k;
+    const key = el('g', {});
+    key.append(el('line', { x1: pad.l + 8, x2: pad.l + 26, y1: ly - 4, y2: ly - 4, stroke: look.color, 'stroke-width': 2, 'stroke-dasharray': look.dash || 'none' }));
+    const m = marker(el, look.marker, pad.l + 17, ly - 4, 3);
+    m.setAttribute('fill', look.color);
+    key.append(m, richSvgText(el, doc, s.name, { x: pad.l + 31, y: ly, fill: '#222' }));
+    svg.append(key);
+  });
+  svg.append(el('text', { x: (width + pad.l) / 2, y: height - 6, 'text-anchor': 'middle', fill: '#222' }, xLabel));
+  svg.append(el('text', { x: 12, y: (height - pad.b) / 2, transform: `rotate(-90 12 ${(height - pad.b) / 2})`, 'text-anchor': 'middle', fill: '#222' }, yLabel));
+  return svg;
+}
+
+/**
+ * An SVG <text> of a label with R_{i,i+1}-style subscripts as lowered, smaller <tspan>s.
+ * @param {(tag: string, attrs?: Record<string, string | number>, text?: string) => Element} el
+ * @param {Document} doc
+ * @param {string} label
+ * @param {Record<string, string | number>} attrs
+ */
+export function richSvgText(el, doc, label, attrs) {
+  const text = el('text', attrs);
+  let shift = 0;
+  for (const part of parseRich(label)) {
+    const dy = part.kind === 'sub' ? 3 : part.kind === 'sup' ? -4 : 0;
+    const span = el('tspan', { dy: dy - shift, ...(part.kind === 'text' ? {} : { 'font-size': '75%' }) });
+    span.append(doc.createTextNode(part.text));
+    text.append(span);
+    shift = dy;
+  }
+  return text;
+}
+
+/** A marker shape centred at (x, y). */
+function marker(/** @type {(tag: string, attrs?: Record<string, string | number>) => Element} */ el, /** @type {string} */ kind, /** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ r) {
+  if (kind === 'square') return el('rect', { x: x - r, y: y - r, width: 2 * r, height: 2 * r });
+  if (kind === 'triangle') return el('polygon', { points: `${x},${y - r * 1.2} ${x - r * 1.1},${y + r * 0.8} ${x + r * 1.1},${y + r * 0.8}` });
+  if (kind === 'diamond') return el('polygon', { points: `${x},${y - r * 1.3} ${x + r * 1.1},${y} ${x},${y + r * 1.3} ${x - r * 1.1},${y}` });
+  return el('circle', { cx: x, cy: y, r });
 }

@@ -1,125 +1,163 @@
-// <ruled-view>: one ruledlab scene as a custom element, for embedding in any page.
+// <ruled-view>: one ruledlab scene as a custom element, for any web page.
 //
-//   <script type="module" src="…/www/ruled-view.js"></script>
-//   <ruled-view scene="isometry" params="surface=helical&t=0.5" style="height: 400px"></ruled-view>
+//   <script type="module" src="…/www/view.js"></script>     (or: import 'ruledlab/view')
+//   <ruled-view scene="isometry" params="surface=helical&t=0.5" controls lang="de"></ruled-view>
 //
-// Attributes (also properties): `scene` (a scene id: striction, notation, convergence, isometry,
-// curves, strip, congruence, milling, lines, large, data) and `params` (the scene's parameters as
-// a query string; omitted ones take their defaults). The property `data` ({ segments:
-// Float64Array, rows?, cols? }, e.g. from importSegments) shows your own rulings or congruence
-// (it selects the "data" scene). Several instances may share a page; each has
-// its own WebGL context and camera. Events: `scene-change` (detail: { scene, params }) after
-// every rebuild, `view-change` (detail: { yaw, pitch, distance, target }) when the camera moves.
-import init from '../pkg/ruledlab.js';
-import { Viewer } from './viewer.js';
+// Attributes (also properties): `scene` (a scene id), `params` (its parameters as a query
+// string; omitted ones take their defaults), `controls` (show the sliders, menus, checkboxes and
+// the readout, beside or below the view as the element's width allows), `text` (the
+// explanation too), `autoplay` (play the first playable parameter, unless the reader prefers
+// reduced motion), `lang` ("en" or "de"; default: the page's language, then the browser's). The
+// property `data` ({ segments: Float64Array, rows?, cols? }) shows your own rulings or
+// congruence. Events: `scene-change` (detail: { scene, params }), `view-change` (detail: the
+// camera), `error` (detail: { message, code }). Disconnecting the element releases its WebGL
+// context and every wasm object it made.
+import { Stage } from './stage.js';
 import { SCENES } from './scenes/index.js';
-import { COLORS, css } from './theme.js';
+import { readParams, defaults } from './scene.js';
+import { adoptStyles } from './ui/css.js';
 
-let ready = null;
-/** Loads the wasm module once for every element on the page. */
-function loadWasm() {
-  ready ??= init({ module_or_path: new URL('../pkg/ruledlab_bg.wasm', import.meta.url) });
-  return ready;
-}
+const HOST_CSS = `:host { display: block; position: relative; height: 480px; min-height: 240px; overflow: auto; contain: content; }
+:host([hidden]) { display: none; }
+.rl-host { width: 100%; height: 100%; }
+.rl-host > .rl-stage.rl-narrow { height: auto; }`;
 
-const STYLE = `
-:host { display: block; position: relative; min-height: 240px; background: #fbfaf7; font: 13px system-ui, sans-serif; color: #1d2435; }
-canvas { width: 100%; height: 100%; display: block; outline: none; touch-action: none; position: absolute; inset: 0; }
-.legend { position: absolute; left: .5rem; top: .4rem; margin: 0; padding: .3rem .5rem; list-style: none; background: rgb(255 255 255 / .85); border-radius: 5px; font-size: 12px; }
-.legend li { display: flex; align-items: center; gap: .4rem; }
-.legend span.swatch { width: 1.2rem; height: .25rem; border-radius: 2px; }
-.error { position: absolute; inset: auto .5rem .5rem .5rem; background: #fff0f0; color: #8a1111; padding: .4rem; border-radius: 5px; }
-.labels { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
-.label { position: absolute; left: 0; top: 0; font: italic 14px serif; margin: -9px 0 0 6px; }
-`;
+let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
 
 export class RuledView extends HTMLElement {
-  static observedAttributes = ['scene', 'params'];
+  static observedAttributes = ['scene', 'params', 'controls', 'text', 'autoplay', 'lang'];
 
   constructor() {
     super();
     const root = this.attachShadow({ mode: 'open' });
-    root.innerHTML = `<style>${STYLE}</style><canvas tabindex="0" aria-label="3D view"></canvas><ul class="legend"></ul><p class="error" hidden></p>`;
-    this.canvas = root.querySelector('canvas');
-    this.viewer = null;
+    adoptStyles(root);
+    hostSheet ??= new CSSStyleSheet();
+    if (!hostSheet.cssRules.length) hostSheet.replaceSync(HOST_CSS);
+    root.adoptedStyleSheets = [...root.adoptedStyleSheets, hostSheet];
+    this.container = Object.assign(document.createElement('div'), { className: 'rl-host' });
+    root.append(this.container);
+    /** @type {Stage | null} */
+    this.stage = null;
+    /** @type {import('./scene.js').ImportedData | null} */
+    this._data = null;
+    this.opening = Promise.resolve();
   }
 
   get scene() {
     return this.getAttribute('scene') ?? SCENES[0].id;
   }
   set scene(id) {
-    this.setAttribute('scene', id);
+    this.setAttribute('scene', String(id));
   }
-  /** Your own segments: { segments: Float64Array (6 per line), rows?, cols? }. */
-  get data() {
-    return this._data ?? null;
-  }
-  set data(value) {
-    this._data = value;
-    if (this.scene !== 'data') this.scene = 'data';
-    else if (this.viewer) this.rebuild(true);
-  }
-
   get params() {
     return this.getAttribute('params') ?? '';
   }
   set params(query) {
-    this.setAttribute('params', query);
+    this.setAttribute('params', String(query));
+  }
+  get controls() {
+    return this.hasAttribute('controls');
+  }
+  set controls(on) {
+    this.toggleAttribute('controls', !!on);
+  }
+  get text() {
+    return this.hasAttribute('text');
+  }
+  set text(on) {
+    this.toggleAttribute('text', !!on);
+  }
+  get autoplay() {
+    return this.hasAttribute('autoplay');
+  }
+  set autoplay(on) {
+    this.toggleAttribute('autoplay', !!on);
+  }
+  get lang() {
+    return this.getAttribute('lang') ?? '';
+  }
+  set lang(code) {
+    this.setAttribute('lang', String(code));
+  }
+  /** Your own segments: { segments: Float64Array (6 per line), rows?, cols? }; selects the "data" scene. */
+  get data() {
+    return this._data;
+  }
+  set data(value) {
+    this._data = value;
+    if (this.scene !== 'data') this.scene = 'data';
+    else this.open();
   }
 
-  async connectedCallback() {
-    await loadWasm();
-    if (!this.viewer) {
-      this.viewer = new Viewer(this.canvas);
-      this.viewer.onCameraChange = () => {
-        const { yaw, pitch, distance, target } = this.viewer.camera;
-        this.dispatchEvent(new CustomEvent('view-change', { detail: { yaw, pitch, distance, target } }));
-      };
-      this.viewer.onFrame = (n) => (this.dataset.frames = String(n));
-    }
-    this.rebuild(true);
+  /** The Stage showing the scene (null while disconnected). */
+  get view() {
+    return this.stage;
   }
 
+  connectedCallback() {
+    if (this.stage) return;
+    const lang = this.getAttribute('lang') || this.closest('[lang]')?.getAttribute('lang') || null;
+    this.stage = new Stage(this.container, {
+      controls: this.controls,
+      text: this.text,
+      lang,
+      onChange: ({ reason }) => {
+        if (reason === 'camera' && this.stage) {
+          const { yaw, pitch, distance, target } = this.stage.viewer.camera;
+          this.dispatchEvent(new CustomEvent('view-change', { detail: { yaw, pitch, distance, target: [...target] } }));
+        }
+      },
+      onBuilt: () => {
+        if (!this.stage?.scene) return;
+        this.dataset.ready = '1';
+        this.dispatchEvent(new CustomEvent('scene-change', { detail: { scene: this.stage.scene.id, params: { ...this.stage.params } } }));
+      },
+      onError: (e) => {
+        const error = /** @type {any} */ (e);
+        this.dispatchEvent(new CustomEvent('error', { detail: { message: String(error?.message ?? error), code: error?.code ?? null } }));
+      },
+    });
+    this.stage.viewer.onFrame = (n) => (this.dataset.frames = String(n));
+    this.open();
+  }
+
+  disconnectedCallback() {
+    this.stage?.dispose();
+    this.stage = null;
+    delete this.dataset.ready;
+    delete this.dataset.frames;
+  }
+
+  /** @param {string} name @param {string | null} before @param {string | null} after */
   attributeChangedCallback(name, before, after) {
-    if (this.viewer && before !== after) this.rebuild(name === 'scene');
+    if (!this.stage || before === after) return;
+    if (name === 'scene' || name === 'params') this.open();
+    else if (name === 'controls' || name === 'text') this.stage.setPanel(this.controls, this.text);
+    else if (name === 'lang') this.stage.setLanguage(after);
+    else if (name === 'autoplay' && after !== null) this.open();
   }
 
-  /** Recomputes the scene from the attributes; an unknown scene or bad parameter is shown, not thrown. */
-  rebuild(fit) {
-    const error = this.shadowRoot.querySelector('.error');
-    try {
-      const scene = SCENES.find((s) => s.id === this.scene);
-      if (!scene) throw new Error(`unknown scene "${this.scene}"; known: ${SCENES.map((s) => s.id).join(', ')}`);
-      const q = new URLSearchParams(this.params);
-      const params = {};
-      for (const p of scene.params) {
-        const raw = q.get(p.key);
-        params[p.key] = raw === null ? p.value : p.type === 'checkbox' ? raw === '1' || raw === 'true' : p.type === 'range' ? Math.min(p.max, Math.max(p.min, Number(raw))) : raw;
-      }
-      const built = scene.id === 'data' && this._data ? scene.create(params, this._data) : scene.create(params);
-      this.viewer.setScene(built, { fit });
-      built.later?.(() => {}).then((done) => this.viewer.setScene(done)).catch(() => {});
-      this.shadowRoot.querySelector('.legend').replaceChildren(
-        ...scene.legend
-          .filter(([, , when]) => !when || (typeof when === 'function' ? when(params) : params[when]))
-          .map(([color, html]) => {
-            const li = document.createElement('li');
-            const sw = document.createElement('span');
-            sw.className = 'swatch';
-            sw.style.background = css(COLORS[color]);
-            const label = document.createElement('span');
-            label.innerHTML = html;
-            li.append(sw, label);
-            return li;
-          }),
-      );
-      error.hidden = true;
-      this.dispatchEvent(new CustomEvent('scene-change', { detail: { scene: scene.id, params } }));
-    } catch (e) {
-      error.hidden = false;
-      error.textContent = String(e.message ?? e);
+  /** Shows the scene of the attributes; an unknown scene or bad parameter is shown in the element and fires `error`. */
+  open() {
+    const stage = this.stage;
+    if (!stage) return this.opening;
+    const scene = SCENES.find((s) => s.id === this.scene);
+    if (!scene) {
+      const error = Object.assign(new Error(`unknown scene "${this.scene}"; known: ${SCENES.map((s) => s.id).join(', ')}`), { code: 'invalid-argument' });
+      stage.fail(error);
+      return this.opening;
     }
+    const { params, notes } = readParams(scene, new URLSearchParams(this.params));
+    this.opening = stage
+      .open(scene, { ...defaults(scene), ...params }, { data: this._data, notes, autoplay: this.autoplay })
+      .catch(() => {});
+    return this.opening;
+  }
+
+  /** The scene's defaults and its fitted view. */
+  reset() {
+    this.stage?.reset();
   }
 }
 
-customElements.define('ruled-view', RuledView);
+if (!customElements.get('ruled-view')) customElements.define('ruled-view', RuledView);

@@ -1,22 +1,106 @@
-// Colours shared by every scene (RGBA, 0–1), and their CSS for the legend.
-export const COLORS = {
-  ruling: [0.13, 0.18, 0.33, 1],
-  normal: [0.09, 0.55, 0.33, 1],
-  foot: [0.05, 0.3, 0.18, 1],
-  striction: [0.84, 0.16, 0.17, 1],
-  exact: [0.98, 0.72, 0.16, 0.9],
-  ghost: [0.45, 0.48, 0.55, 0.35],
-  inserted: [0.85, 0.35, 0.2, 0.6],
-  insertedAxis: [0.42, 0.58, 0.85, 1],
-  endpointScheme: [0.9, 0.45, 0.15, 1],
-  lineScheme: [0.15, 0.38, 0.75, 1],
-  sphereLight: [0.82, 0.84, 0.88, 1],
-  sphereDark: [0.3, 0.32, 0.38, 1],
-  mesh: [0.35, 0.4, 0.5, 0.45],
-  strip: { front: [0.45, 0.64, 0.9, 0.55], back: [0.98, 0.76, 0.5, 0.55] },
+// The styles every scene draws with, by meaning (a ruling, the striction polygon, an exact
+// curve …), in colour and in black and white. Colours come from the Okabe–Ito palette
+// (safe for the three common colour-vision deficiencies) plus ink and a dark maroon chosen
+// for contrast; every pair that a scene shows together stays ≥ 15 CIEDE2000 apart under
+// simulated deuteranopia, protanopia and tritanopia (tests/page/a11y.test.mjs). Where two
+// things must be told apart a second cue is given as well: dashes, points, width.
+
+/**
+ * @typedef {object} LineStyle
+ * @property {'line'} kind
+ * @property {string} color     CSS hex colour
+ * @property {number} width     CSS pixels
+ * @property {number} [alpha]   opacity, default 1
+ * @property {number[]} [dash]  on/off lengths in CSS pixels
+ * @property {{gray: number, width: number, dash?: number[]}} bw   black-and-white rendition
+ *
+ * @typedef {object} PointStyle
+ * @property {'point'} kind
+ * @property {string} color
+ * @property {number} size      diameter in CSS pixels
+ * @property {{gray: number, size: number, hollow?: boolean}} bw
+ *
+ * @typedef {object} AreaStyle
+ * @property {'area'} kind
+ * @property {string} color     front side
+ * @property {string} back      back side
+ * @property {number} alpha
+ * @property {{gray: number, back: number}} bw
+ *
+ * @typedef {LineStyle | PointStyle | AreaStyle} Style
+ */
+
+export const PALETTE = {
+  ink: '#1f2430',
+  blue: '#0072b2',
+  sky: '#56b4e9',
+  vermillion: '#d55e00',
+  orange: '#e69f00',
+  yellow: '#f0e442',
+  maroon: '#771100',
+  grey: '#8a8f99',
+  lightGrey: '#b8bcc4',
+  paper: '#fbfaf7',
 };
 
-export function css(rgba) {
-  const [r, g, b] = rgba.map((x) => Math.round(x * 255));
-  return `rgb(${r} ${g} ${b})`;
+const line = (color, width, bw, extra = {}) => ({ kind: 'line', color, width, bw, ...extra });
+const point = (color, size, bw) => ({ kind: 'point', color, size, bw });
+const area = (color, back, alpha, bw) => ({ kind: 'area', color, back, alpha, bw });
+
+/** @type {Record<string, Style>} */
+export const STYLES = {
+  ruling: line(PALETTE.ink, 1.6, { gray: 0, width: 0.6 }),
+  rulingBold: line(PALETTE.ink, 2.6, { gray: 0, width: 1.2 }),
+  given: line(PALETTE.ink, 2.2, { gray: 0, width: 1.0 }),
+  givenPoint: point(PALETTE.ink, 8, { gray: 0, size: 3 }),
+  givenThin: line(PALETTE.ink, 1.1, { gray: 0, width: 0.5 }),
+  normal: line(PALETTE.blue, 2.4, { gray: 0, width: 0.6, dash: [3, 2] }),
+  foot: point(PALETTE.blue, 6, { gray: 0, size: 2.5, hollow: true }),
+  striction: line(PALETTE.vermillion, 3.4, { gray: 0, width: 1.6 }),
+  strictionPoint: point(PALETTE.vermillion, 8, { gray: 0, size: 3.5 }),
+  perpendicularMidpoints: line(PALETTE.maroon, 2.4, { gray: 0.35, width: 1.0, dash: [5, 2, 1, 2] }, { dash: [9, 5] }),
+  perpendicularMidpoint: point(PALETTE.maroon, 6, { gray: 0.35, size: 2.5, hollow: true }),
+  exact: line(PALETTE.sky, 6, { gray: 0.6, width: 2.4 }, { alpha: 0.85 }),
+  exactPoint: point(PALETTE.sky, 11, { gray: 0.6, size: 4 }),
+  tangent: line(PALETTE.maroon, 2.4, { gray: 0.35, width: 0.8, dash: [4, 2] }, { dash: [8, 5] }),
+  ghost: line(PALETTE.grey, 1.2, { gray: 0.55, width: 0.4, dash: [2, 2] }, { alpha: 0.6 }),
+  helper: line(PALETTE.grey, 1.8, { gray: 0.45, width: 0.6, dash: [3, 2] }, { dash: [7, 5] }),
+  level: line(PALETTE.grey, 1.2, { gray: 0.6, width: 0.5 }, { alpha: 0.7 }),
+  inserted: line(PALETTE.vermillion, 2.6, { gray: 0, width: 1.4 }),
+  insertedFine: line(PALETTE.vermillion, 1.2, { gray: 0.2, width: 0.5 }, { alpha: 0.85 }),
+  insertedPoint: point(PALETTE.vermillion, 5, { gray: 0, size: 2 }),
+  insertedAxis: line(PALETTE.blue, 1.6, { gray: 0.4, width: 0.5 }),
+  result: line(PALETTE.vermillion, 3, { gray: 0, width: 1.4 }),
+  resultPoint: point(PALETTE.vermillion, 6, { gray: 0, size: 2.5 }),
+  pointA: point(PALETTE.sky, 13, { gray: 0.75, size: 4 }),
+  pointB: point(PALETTE.blue, 13, { gray: 0.25, size: 4 }),
+  triangulation: line(PALETTE.grey, 0.9, { gray: 0.55, width: 0.3 }, { alpha: 0.8 }),
+  barycentre: line(PALETTE.vermillion, 2.4, { gray: 0, width: 1.0, dash: [4, 2] }),
+  barycentrePoint: point(PALETTE.vermillion, 4, { gray: 0, size: 1.5 }),
+  endpointScheme: line(PALETTE.orange, 1.3, { gray: 0.5, width: 0.4, dash: [3, 2] }, { alpha: 0.9 }),
+  lineScheme: line(PALETTE.blue, 1.7, { gray: 0, width: 0.6 }),
+  axisLine: line(PALETTE.maroon, 2.2, { gray: 0.3, width: 0.8, dash: [6, 2, 1, 2] }, { dash: [10, 4, 2, 4] }),
+  strip: area('#a9c9e8', '#f3d3a6', 0.55, { gray: 0.88, back: 0.8 }),
+  stripOpaque: area('#a9c9e8', '#f3d3a6', 1, { gray: 0.88, back: 0.8 }),
+  surfaceFaint: area('#b3c2d1', '#e0d5c1', 0.28, { gray: 0.93, back: 0.9 }),
+  director1: area(PALETTE.sky, PALETTE.sky, 0.45, { gray: 0.85, back: 0.8 }),
+  director2: area(PALETTE.yellow, PALETTE.yellow, 0.4, { gray: 0.92, back: 0.9 }),
+  envelope: area(PALETTE.yellow, PALETTE.yellow, 0.35, { gray: 0.9, back: 0.85 }),
+  part: area(PALETTE.lightGrey, PALETTE.lightGrey, 0.55, { gray: 0.85, back: 0.8 }),
+  tool: area('#9aa3ad', '#9aa3ad', 0.9, { gray: 0.7, back: 0.6 }),
+  endpointStrip: area(PALETTE.orange, PALETTE.orange, 0.3, { gray: 0.9, back: 0.85 }),
+  lineStrip: area(PALETTE.sky, PALETTE.sky, 0.35, { gray: 0.8, back: 0.75 }),
+  focal1: area(PALETTE.orange, PALETTE.orange, 0.6, { gray: 0.85, back: 0.75 }),
+  focal2: area(PALETTE.sky, PALETTE.sky, 0.6, { gray: 0.7, back: 0.6 }),
+  torsal: line(PALETTE.ink, 1.4, { gray: 0, width: 0.5 }),
+};
+
+/** "#rrggbb" → [r, g, b] in 0–1. */
+export function rgb(hex) {
+  return [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16) / 255);
+}
+
+/** RGBA (0–1) of a style's main colour, alpha included. */
+export function rgba(style) {
+  return [...rgb(style.color), style.kind === 'area' ? style.alpha : style.alpha ?? 1];
 }

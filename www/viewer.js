@@ -1,74 +1,155 @@
-// The WebGL2 viewer: owns the canvas and context, sizes it for the device pixel ratio,
-// renders on demand, and rebuilds a scene's GPU objects after a context loss.
+// The WebGL2 viewer: owns a canvas and its context, sizes it for the device pixel ratio,
+// turns a scene's layers (f32 buffers from the core, and styles of theme.js) into GPU
+// batches, renders on demand, places the 3D-anchored labels, rebuilds after a context loss,
+// and releases the context when disposed.
 import { OrbitCamera } from './camera.js';
 import { forgetPrograms } from './gl/program.js';
+import { LineBatch, polylineSegments } from './gl/lines.js';
+import { PointBatch } from './gl/points.js';
+import { TriangleMesh } from './gl/mesh.js';
+import { STYLES, rgb, rgba, PALETTE } from './theme.js';
+import { appendRich } from './ui/richtext.js';
 
 /**
- * A scene supplies GPU layers and its bounds:
- *   { bounds: {min, max}, build(gl): Array<{draw(gl, frame), dispose(gl), transparent?: boolean}> }
+ * What a layer draws with in one frame.
+ * @typedef {object} Frame
+ * @property {Float32Array} viewProj
+ * @property {number[]} eye
+ * @property {number} width   device pixels
+ * @property {number} height
+ * @property {number} dpr
  */
+
+/**
+ * @typedef {{draw(gl: WebGL2RenderingContext, frame: Frame): void, dispose(gl: WebGL2RenderingContext): void, transparent?: boolean}} Batch
+ */
+
+/**
+ * The GPU batch of one layer.
+ * @param {WebGL2RenderingContext} gl
+ * @param {import('./scene.js').Layer} layer
+ * @returns {Batch}
+ */
+export function batch(gl, layer) {
+  const style = STYLES[layer.style];
+  if (!style) throw new Error(`unknown style "${layer.style}"`);
+  const transform = layer.transform ?? undefined;
+  if (layer.kind === 'mesh') {
+    if (style.kind !== 'area') throw new Error(`style "${layer.style}" is not for meshes`);
+    const front = [...rgb(style.color), style.alpha];
+    const back = [...rgb(style.back), style.alpha];
+    return new TriangleMesh(gl, layer.positions, /** @type {Uint32Array} */ (layer.indices), { front, back }, transform);
+  }
+  if (layer.kind === 'points') {
+    if (style.kind !== 'point') throw new Error(`style "${layer.style}" is not for points`);
+    return new PointBatch(gl, layer.positions, { color: rgba(style), size: style.size }, transform);
+  }
+  if (style.kind !== 'line') throw new Error(`style "${layer.style}" is not for lines`);
+  const segments = layer.kind === 'polyline' ? polylineSegments(layer.positions, layer.closed) : layer.positions;
+  return new LineBatch(gl, segments, { color: rgba(style), width: style.width, dash: style.dash }, transform);
+}
+
+/** How much two boxes overlap (0 none, 1 for boxes sharing about a label's area). */
+function overlap(/** @type {{x: number, y: number, w: number, h: number}} */ a, /** @type {{x: number, y: number, w: number, h: number}} */ b) {
+  const ox = Math.min(a.x + a.w, b.x + b.w) - Math.max(a.x, b.x);
+  const oy = Math.min(a.y + a.h, b.y + b.h) - Math.max(a.y, b.y);
+  return ox > 0 && oy > 0 ? (ox * oy) / Math.max(1, Math.min(a.w * a.h, b.w * b.h)) : 0;
+}
+
+/** The share of a screen segment p0 p1 that runs through a box (sampled at 12 points). */
+function crossing(/** @type {{x: number, y: number, w: number, h: number}} */ box, /** @type {{x: number, y: number}} */ p0, /** @type {{x: number, y: number}} */ p1) {
+  let inside = 0;
+  for (let k = 0; k <= 12; k++) {
+    const x = p0.x + ((p1.x - p0.x) * k) / 12, y = p0.y + ((p1.y - p0.y) * k) / 12;
+    if (x > box.x - 2 && x < box.x + box.w + 2 && y > box.y - 2 && y < box.y + box.h + 2) inside++;
+  }
+  return inside / 13;
+}
+
 export class Viewer {
   /**
    * @param {HTMLCanvasElement} canvas
-   * @param {{background?: number[]}} [options]
+   * @param {HTMLElement} labelLayer  where the labels go (over the canvas)
    */
-  constructor(canvas, { background = [0.984, 0.98, 0.969, 1] } = {}) {
+  constructor(canvas, labelLayer) {
     this.canvas = canvas;
-    this.background = background;
+    this.labelLayer = labelLayer;
+    this.background = [...rgb(PALETTE.paper), 1];
     this.camera = new OrbitCamera();
-    this.layers = [];
-    this.scene = null;
+    /** @type {Batch[]} */
+    this.batches = [];
+    /** @type {import('./scene.js').Built | null} */
+    this.built = null;
     this.frames = 0;
     this.pending = false;
+    this.lost = false;
+    this.disposed = false;
+    /** @type {((frames: number) => void) | null} */
     this.onFrame = null;
-    // HTML labels anchored to 3D points (scene.labels: [{ at: [x, y, z], html }])
-    this.labelLayer = document.createElement('div');
-    this.labelLayer.className = 'labels';
-    canvas.after(this.labelLayer);
+    /** @type {((ended: boolean) => void) | null} */
+    this.onCameraChange = null;
     const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: false });
-    if (!gl) throw new Error('This page needs WebGL2, which this browser does not provide.');
+    if (!gl) throw Object.assign(new Error('This page needs WebGL2, which this browser does not provide.'), { code: 'no-webgl2' });
     this.gl = gl;
-    canvas.addEventListener('webglcontextlost', (e) => {
+    this.onLost = (/** @type {Event} */ e) => {
       e.preventDefault();
       this.lost = true;
-      this.layers = [];
-    });
-    canvas.addEventListener('webglcontextrestored', () => {
+      this.batches = [];
+    };
+    this.onRestored = () => {
       this.lost = false;
       forgetPrograms(gl);
       this.rebuild();
-    });
-    this.onCameraChange = null;
-    this.camera.attach(canvas, () => {
+    };
+    canvas.addEventListener('webglcontextlost', this.onLost);
+    canvas.addEventListener('webglcontextrestored', this.onRestored);
+    this.camera.attach(canvas, (ended) => {
       this.requestRender();
-      this.onCameraChange?.();
+      this.onCameraChange?.(ended);
     });
-    new ResizeObserver(() => this.requestRender()).observe(canvas);
+    this.resize = new ResizeObserver(() => this.requestRender());
+    this.resize.observe(canvas);
   }
 
-  /** Shows `scene`; `fit` reframes the camera on its bounds. */
-  setScene(scene, { fit = false } = {}) {
-    this.scene = scene;
-    if (fit) {
-      // a scene may suggest the direction it is best seen from
-      if (scene.camera) Object.assign(this.camera, scene.camera);
-      this.camera.fit(scene.bounds);
-    }
+  /** Width / height of the view. */
+  get aspect() {
+    return (this.canvas.clientWidth || 1) / (this.canvas.clientHeight || 1);
+  }
+
+  /**
+   * Shows `built`; `fit` reframes the camera on its bounds (from the scene's suggested direction).
+   * @param {import('./scene.js').Built} built
+   * @param {{fit?: boolean}} [options]
+   */
+  show(built, { fit = false } = {}) {
+    this.built = built;
+    if (fit) this.fit();
     this.rebuild();
   }
 
+  /** Frames the current scene from its suggested direction. */
+  fit() {
+    if (!this.built) return;
+    if (this.built.camera) Object.assign(this.camera, this.built.camera);
+    this.camera.fit(this.built.bounds, this.aspect);
+    this.requestRender();
+  }
+
   rebuild() {
-    this.labelLayer.replaceChildren(
-      ...(this.scene?.labels ?? []).map(({ html }) => Object.assign(document.createElement('span'), { className: 'label', innerHTML: html })),
-    );
     const gl = this.gl;
-    this.layers.forEach((l) => l.dispose(gl));
-    this.layers = this.scene && !this.lost ? this.scene.build(gl) : [];
+    this.labelLayer.replaceChildren(
+      ...(this.built?.labels ?? []).map(({ text }) => appendRich(Object.assign(document.createElement('span'), { className: 'rl-label' }), text)),
+    );
+    this.batches.forEach((b) => b.dispose(gl));
+    this.batches = [];
+    if (this.built && !this.lost && !this.disposed) {
+      for (const layer of this.built.layers) this.batches.push(batch(gl, layer));
+    }
     this.requestRender();
   }
 
   requestRender() {
-    if (this.pending) return;
+    if (this.pending || this.disposed) return;
     this.pending = true;
     requestAnimationFrame(() => {
       this.pending = false;
@@ -76,26 +157,32 @@ export class Viewer {
     });
   }
 
-  render() {
-    const { gl, canvas } = this;
-    if (this.lost || gl.isContextLost()) return;
+  /** The frame's matrices and sizes for the current canvas size. */
+  frame() {
+    const { canvas } = this;
     const dpr = window.devicePixelRatio || 1;
     const width = Math.max(1, Math.round(canvas.clientWidth * dpr));
     const height = Math.max(1, Math.round(canvas.clientHeight * dpr));
-    if (canvas.width !== width || canvas.height !== height) {
-      canvas.width = width;
-      canvas.height = height;
+    return { viewProj: this.camera.viewProj(width / height), eye: this.camera.eye, width, height, dpr };
+  }
+
+  render() {
+    const { gl, canvas } = this;
+    if (this.lost || this.disposed || gl.isContextLost()) return;
+    const frame = this.frame();
+    if (canvas.width !== frame.width || canvas.height !== frame.height) {
+      canvas.width = frame.width;
+      canvas.height = frame.height;
     }
-    gl.viewport(0, 0, width, height);
-    gl.clearColor(...this.background);
+    gl.viewport(0, 0, frame.width, frame.height);
+    gl.clearColor(this.background[0], this.background[1], this.background[2], 1);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     gl.enable(gl.DEPTH_TEST);
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
-    const frame = { viewProj: this.camera.viewProj(width / height), eye: this.camera.eye, width, height, dpr };
     for (const transparent of [false, true]) {
       gl.depthMask(!transparent);
-      for (const layer of this.layers) if (!!layer.transparent === transparent) layer.draw(gl, frame);
+      for (const b of this.batches) if (!!b.transparent === transparent) b.draw(gl, frame);
     }
     gl.depthMask(true);
     this.placeLabels(frame.viewProj);
@@ -103,19 +190,69 @@ export class Viewer {
     this.onFrame?.(this.frames);
   }
 
-  /** Moves each label to the screen position of its anchor (hidden behind the camera). */
-  placeLabels(viewProj) {
-    const labels = this.scene?.labels ?? [];
+  /**
+   * Moves each label next to the screen position of its anchor (hidden behind the camera).
+   * A small collision pass picks, per label, the side of its anchor where it overlaps no label
+   * placed before it and no line the scene wants kept clear (`built.keepClear`).
+   */
+  placeLabels(/** @type {Float32Array} */ m) {
+    const labels = this.built?.labels ?? [];
     const { clientWidth: w, clientHeight: h } = this.canvas;
+    const project = (/** @type {ArrayLike<number>} */ p, /** @type {number} */ o = 0) => {
+      const [x, y, z] = [p[o], p[o + 1], p[o + 2]];
+      const cw = m[3] * x + m[7] * y + m[11] * z + m[15];
+      return {
+        x: (((m[0] * x + m[4] * y + m[8] * z + m[12]) / cw + 1) / 2) * w,
+        y: ((1 - (m[1] * x + m[5] * y + m[9] * z + m[13]) / cw) / 2) * h,
+        visible: cw > 0,
+      };
+    };
+    const clear = [];
+    const keep = this.built?.keepClear;
+    for (let i = 0; keep && i + 5 < keep.length; i += 6) clear.push([project(keep, i), project(keep, i + 3)]);
+    /** @type {Array<{x: number, y: number, w: number, h: number}>} */
+    const placed = [];
     labels.forEach(({ at }, k) => {
-      const el = this.labelLayer.children[k];
+      const el = /** @type {HTMLElement | undefined} */ (this.labelLayer.children[k]);
       if (!el) return;
-      const [x, y, z] = at;
-      const cx = viewProj[0] * x + viewProj[4] * y + viewProj[8] * z + viewProj[12];
-      const cy = viewProj[1] * x + viewProj[5] * y + viewProj[9] * z + viewProj[13];
-      const cw = viewProj[3] * x + viewProj[7] * y + viewProj[11] * z + viewProj[15];
-      el.hidden = cw <= 0;
-      el.style.transform = `translate(${((cx / cw + 1) / 2) * w}px, ${((1 - cy / cw) / 2) * h}px)`;
+      const a = project(at);
+      el.hidden = !a.visible;
+      if (!a.visible) return;
+      const bw = el.offsetWidth, bh = el.offsetHeight;
+      // candidate places: right above first, then around the anchor at growing distances
+      const sides = [[7, -bh - 2], [7, 3], [-bw - 7, -bh - 2], [-bw - 7, 3]];
+      for (const d of [14, 26, 42]) {
+        for (let k = 0; k < 12; k++) {
+          const angle = (Math.PI * 2 * k) / 12;
+          sides.push([Math.cos(angle) * (d + bw / 2) - bw / 2, -Math.sin(angle) * (d + bh / 2) - bh / 2]);
+        }
+      }
+      let best = sides[0], bestCost = Infinity;
+      sides.forEach(([dx, dy], rank) => {
+        const box = { x: a.x + dx, y: a.y + dy, w: bw, h: bh };
+        let cost = rank * 0.05;
+        for (const q of placed) cost += 40 * overlap(box, q);
+        for (const [p0, p1] of clear) cost += 30 * crossing(box, p0, p1);
+        if (box.x < 0 || box.y < 0 || box.x + bw > w || box.y + bh > h) cost += 20;
+        if (cost < bestCost) [best, bestCost] = [[dx, dy], cost];
+      });
+      const box = { x: a.x + best[0], y: a.y + best[1], w: bw, h: bh };
+      placed.push(box);
+      el.style.transform = `translate(${box.x}px, ${box.y}px)`;
     });
+  }
+
+  /** Frees every GPU object and gives the context back to the browser. */
+  dispose() {
+    if (this.disposed) return;
+    const gl = this.gl;
+    this.batches.forEach((b) => b.dispose(gl));
+    this.batches = [];
+    forgetPrograms(gl);
+    this.resize.disconnect();
+    this.canvas.removeEventListener('webglcontextlost', this.onLost);
+    this.canvas.removeEventListener('webglcontextrestored', this.onRestored);
+    this.disposed = true;
+    gl.getExtension('WEBGL_lose_context')?.loseContext();
   }
 }

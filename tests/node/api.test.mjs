@@ -59,7 +59,7 @@ test('wasm computes the same invariants as the native build (1e-12)', () => {
 
 test('analytic surfaces: list, exact values, sampling and the convergence study', () => {
   const list = AnalyticSurface.list();
-  assert.deepEqual(list.map((s) => s.name), ['hyperboloid', 'quartic', 'helicoid', 'helical', 'pluecker-conoid', 'hyperbolic-paraboloid', 'cone', 'cylinder', 'helix-tangent']);
+  assert.deepEqual(list.map((s) => s.name), ['hyperboloid', 'quartic', 'helicoid', 'helical', 'helical-orthogonal', 'pluecker-conoid', 'hyperbolic-paraboloid', 'cone', 'cylinder', 'helix-tangent']);
   const helicoid = AnalyticSurface.byName('helicoid');
   assert.equal(helicoid.name, 'helicoid');
   const s = helicoid.sample(20, { uMin: 0, uMax: 2 });
@@ -128,7 +128,7 @@ test('using a freed object throws an Error instead of trapping', () => {
 test('the TypeScript declarations type the results', () => {
   const dts = readFileSync(new URL('../../pkg/ruledlab.d.ts', import.meta.url), 'utf8');
   assert.match(dts, /export interface Invariants \{/);
-  assert.match(dts, /invariants\(\): Invariants;/);
+  assert.match(dts, /invariants\(options\?: InvariantsOptions( \| null)?\): Invariants;/);
   assert.match(dts, /static fromSegments\(coords: Float64Array\): RuledSurface;/);
   assert.match(dts, /convergence\(opts\?: ConvergenceOptions \| undefined\): ConvergenceStudy;|convergence\(opts: ConvergenceOptions \| undefined\): ConvergenceStudy;/);
   // the public API (before wasm-bindgen's internal InitOutput table) has no `any` type

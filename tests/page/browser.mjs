@@ -9,13 +9,17 @@ import { decodePng } from './png.mjs';
 
 export const ARTIFACTS = new URL('../../test-artifacts/', import.meta.url).pathname;
 
-/** A fresh headless Chromium (fresh profile, no network chatter). */
-export async function launch() {
+/**
+ * A fresh headless Chromium (fresh profile, no network chatter); `options` may set another
+ * viewport, or a phone: { viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true }.
+ */
+export async function launch(options = {}) {
   const userDataDir = mkdtempSync(join(tmpdir(), 'ruledlab-chromium-'));
   return chromium.launchPersistentContext(userDataDir, {
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
     headless: true,
     viewport: { width: 1200, height: 800 },
+    ...options,
     args: [
       '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
       '--disable-background-networking', '--disable-component-update', '--disable-sync',
@@ -41,10 +45,30 @@ export function watch(page) {
 export async function shoot(page, name) {
   mkdirSync(ARTIFACTS, { recursive: true });
   writeFileSync(join(ARTIFACTS, `${name}.png`), await page.screenshot());
-  await page.evaluate(() => document.querySelectorAll('.view > :not(canvas)').forEach((e) => (e.style.visibility = 'hidden')));
-  const png = await page.locator('#view').screenshot();
-  await page.evaluate(() => document.querySelectorAll('.view > :not(canvas)').forEach((e) => (e.style.visibility = '')));
+  await page.evaluate(() => document.querySelectorAll('.rl-view > :not(canvas)').forEach((e) => e.classList.add('rl-test-hidden')));
+  await page.evaluate(() => document.querySelectorAll('.rl-test-hidden').forEach((e) => (e.style.visibility = 'hidden')));
+  const png = await page.locator('.rl-view canvas').first().screenshot();
+  await page.evaluate(() => document.querySelectorAll('.rl-test-hidden').forEach((e) => (e.style.visibility = '', e.classList.remove('rl-test-hidden'))));
   return decodePng(png);
+}
+
+/** Waits until the page's stage has shown its final picture (worker results included). */
+export async function ready(page, timeout = 30000) {
+  await page.waitForFunction(() => document.querySelector('.rl-stage')?.dataset.ready === '1', null, { timeout });
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+}
+
+/** The control of parameter `key` in the page's panel. */
+export function control(page, key) {
+  return page.locator(`.rl-controls [name="${key}"]`);
+}
+
+/** Sets a slider (or text field) of the page to `value` and waits for the new picture. */
+export async function setControl(page, key, value) {
+  const frames = await page.evaluate(() => Number(document.body.dataset.frames ?? 0));
+  await control(page, key).fill(String(value));
+  await control(page, key).dispatchEvent('change');
+  await framesAfter(page, frames);
 }
 
 /** How many animation frames the page runs in `ms` milliseconds (0–1 when its main thread is blocked). */
@@ -91,6 +115,7 @@ export function pageSession({ headers = {} } = {}) {
     const requests = [];
     page.on('request', (r) => requests.push(r.url()));
     await page.goto(session.url + path);
+    if (wait) await ready(page);
     const frames = wait ? await framesAfter(page, 0) : 0;
     return { page, problems, requests, frames };
   };

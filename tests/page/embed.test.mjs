@@ -1,11 +1,10 @@
-// The three ways of embedding ruledlab (examples/): a plain module, two <ruled-view>
-// elements on one page, and the page in an iframe with #embed.
+// The ways of embedding ruledlab (examples/): a plain module, <ruled-view> elements with and
+// without controls, and the page in an iframe with #embed&controls.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { pageSession } from './browser.mjs';
-import { decodePng, countDifferent, countChanged } from './png.mjs';
 import { mkdirSync, writeFileSync } from 'node:fs';
-import { ARTIFACTS } from './browser.mjs';
+import { pageSession, ARTIFACTS } from './browser.mjs';
+import { decodePng, countDifferent, countChanged } from './png.mjs';
 
 const BACKGROUND = [251, 250, 247];
 const session = pageSession();
@@ -17,6 +16,10 @@ async function grab(locator, name) {
   return decodePng(png);
 }
 
+/** Waits until every <ruled-view> of the page has drawn its scene. */
+const allDrawn = (page) =>
+  page.waitForFunction(() => [...document.querySelectorAll('ruled-view')].every((v) => v.dataset.ready === '1' && Number(v.dataset.frames) > 0), null, { timeout: 20000 });
+
 test('examples/plain-module.html computes with the package directly', async () => {
   const { page, problems } = await session.open('examples/plain-module.html', { wait: false });
   await page.waitForFunction(() => document.body.dataset.ready === '1');
@@ -26,49 +29,77 @@ test('examples/plain-module.html computes with the package directly', async () =
   await page.close();
 });
 
-test('two <ruled-view> elements on one page draw independently and announce changes', async () => {
+test('<ruled-view> elements draw independently; `controls` shows the scene’s controls, which work', async () => {
   const { page, problems } = await session.open('examples/web-component.html', { wait: false });
-  await page.waitForFunction(() => [...document.querySelectorAll('ruled-view')].every((v) => Number(v.dataset.frames) > 0));
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  await allDrawn(page);
   const [left, right] = [await grab(page.locator('#left'), 'component-left'), await grab(page.locator('#right'), 'component-right')];
   for (const image of [left, right]) assert.ok(countDifferent(image, BACKGROUND) > 0.02 * image.width * image.height);
-  assert.ok(countChanged(left, right) > 1000, 'the two views show different things');
-  // changing an attribute rebuilds that element only, and says so
-  const detail = await page.evaluate(
-    () => new Promise((resolve) => {
-      const v = document.getElementById('left');
-      v.addEventListener('scene-change', (e) => resolve(e.detail), { once: true });
-      v.params = 'surface=quartic&t=0.5';
-    }),
-  );
-  assert.equal(detail.scene, 'isometry');
-  assert.equal(detail.params.surface, 'quartic');
-  assert.equal(detail.params.t, 0.5);
-  // data as a property: the element shows those rulings
-  const frames = await page.evaluate(() => Number(document.getElementById('right').dataset.frames));
-  await page.evaluate(() => {
-    document.getElementById('right').data = { segments: new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, -1, 0, 2]) };
+  // the left one has its controls, the right one none
+  const sliders = (id) => page.locator(`#${id}`).evaluate((v) => [...v.shadowRoot.querySelectorAll('.rl-controls input')].filter((e) => e.checkVisibility()).length);
+  assert.ok((await sliders('left')) >= 3, 'the element with `controls` shows its sliders');
+  assert.equal(await sliders('right'), 0);
+  // a slider inside the element changes its picture and fires scene-change
+  const detail = page.evaluate(() => new Promise((resolve) => document.getElementById('left').addEventListener('scene-change', (e) => resolve(e.detail), { once: true })));
+  await page.locator('#left').evaluate((v) => {
+    const t = v.shadowRoot.querySelector('.rl-controls [name="t"]');
+    t.value = '0.8';
+    t.dispatchEvent(new Event('input', { bubbles: true }));
+    t.dispatchEvent(new Event('change', { bubbles: true }));
   });
-  await page.waitForFunction((n) => Number(document.getElementById('right').dataset.frames) > n, frames);
+  assert.equal((await detail).params.t, 0.8);
+  await page.waitForTimeout(200);
+  assert.ok(countChanged(left, await grab(page.locator('#left'), 'component-left-moved')) > 1000);
+  // an attribute change rebuilds that element only
+  const changed = page.evaluate(() => new Promise((resolve) => document.getElementById('right').addEventListener('scene-change', (e) => resolve(e.detail), { once: true })));
+  await page.evaluate(() => (document.getElementById('right').params = 'surface=quartic&t=0.5'));
+  const got = await changed;
+  assert.equal(got.scene, 'isometry');
+  assert.equal(got.params.surface, 'quartic');
+  assert.equal(got.params.t, 0.5);
+  // data as a property shows those rulings
+  await page.evaluate(() => (document.getElementById('right').data = { segments: new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, -1, 0, 2]) }));
+  await page.waitForFunction(() => document.getElementById('right').view?.scene?.id === 'data');
   assert.equal(await page.locator('#right').getAttribute('scene'), 'data');
-  const shown = await grab(page.locator('#right'), 'component-data');
-  assert.ok(countDifferent(shown, BACKGROUND) > 0.01 * shown.width * shown.height);
-  // an unknown scene is shown as an error inside the element, not thrown
+  // an unknown scene is shown inside the element and fires `error`, nothing is thrown
+  const error = page.evaluate(() => new Promise((resolve) => document.getElementById('right').addEventListener('error', (e) => resolve(e.detail), { once: true })));
   await page.evaluate(() => (document.getElementById('right').scene = 'nope'));
-  assert.match(await page.locator('#right').evaluate((v) => v.shadowRoot.querySelector('.error').textContent), /unknown scene "nope"/);
+  assert.match((await error).message, /unknown scene "nope"/);
+  assert.match(await page.locator('#right').evaluate((v) => v.shadowRoot.querySelector('.rl-error').textContent), /unknown scene "nope"/);
   assert.deepEqual(problems, []);
   await page.close();
 });
 
-test('the page embedded in an iframe with #embed shows the view alone', async () => {
+test('a removed <ruled-view> gives back its WebGL context and every wasm object it made', async () => {
+  const { page, problems } = await session.open('examples/web-component.html', { wait: false });
+  await allDrawn(page);
+  const live = () => page.evaluate(async () => (await import('../pkg/ruledlab.js')).liveObjects());
+  const before = await live();
+  const result = await page.evaluate(async () => {
+    const v = document.createElement('ruled-view');
+    v.setAttribute('scene', 'milling');
+    v.setAttribute('controls', '');
+    document.body.append(v);
+    await new Promise((resolve) => v.addEventListener('scene-change', resolve, { once: true }));
+    const canvas = v.shadowRoot.querySelector('canvas');
+    const gl = canvas.getContext('webgl2');
+    v.remove();
+    await new Promise((r) => setTimeout(r, 50));
+    return { lost: gl.isContextLost(), children: v.shadowRoot.querySelector('.rl-host').children.length };
+  });
+  assert.equal(result.lost, true, 'the WebGL context was not released');
+  assert.equal(result.children, 0);
+  assert.equal(await live(), before, 'wasm objects were left behind');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the page in an iframe with #embed&controls shows the view with its controls, without the page around it', async () => {
   const { page, problems } = await session.open('examples/iframe.html', { wait: false });
   const frame = page.frameLocator('#frame');
-  await frame.locator('body').evaluate((b) => new Promise((resolve) => {
-    const check = () => (Number(b.dataset.frames) > 0 ? resolve() : setTimeout(check, 50));
-    check();
-  }));
-  assert.equal(await frame.locator('header').isHidden(), true);
-  assert.equal(await frame.locator('.panel').isHidden(), true);
+  await frame.locator('.rl-stage[data-ready="1"]').waitFor({ timeout: 20000 });
+  assert.equal(await frame.locator('.page-header').isHidden(), true);
+  assert.equal(await frame.locator('.rl-controls').isVisible(), true);
+  assert.equal(await frame.locator('.rl-text').isHidden(), true, 'the explanation only with &text');
   const image = await grab(page.locator('#frame'), 'iframe-embed');
   assert.ok(countDifferent(image, BACKGROUND) > 0.02 * image.width * image.height);
   assert.deepEqual(problems, []);

@@ -1,12 +1,14 @@
-// The page in headless Chromium: loads cleanly, draws, and its controls change the picture.
+// The page in headless Chromium: loads cleanly, draws, its controls change the picture, every
+// scene and every choice of each of its menus works, links restore every control, history
+// follows scene changes, and the tools around the view (reset, play, share) do their job.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { pageSession, shoot, framesAfter, animationFrames } from './browser.mjs';
+import { pageSession, shoot, framesAfter, ready, control, setControl, launch } from './browser.mjs';
 import { countDifferent, countChanged } from './png.mjs';
 
 const BACKGROUND = [251, 250, 247];
 const session = pageSession();
-const open = (hash) => session.open(hash);
+const open = (hash = '') => session.open(hash);
 
 test('the page loads without errors or failed requests, favicon included, and draws', async () => {
   const { page, problems } = await open();
@@ -14,9 +16,10 @@ test('the page loads without errors or failed requests, favicon included, and dr
   const drawn = countDifferent(image, BACKGROUND);
   assert.ok(drawn > 0.05 * image.width * image.height, `only ${drawn} pixels differ from the background`);
   assert.match(await page.title(), /ruledlab/);
-  assert.match(page.url(), /#scene=striction&surface=hyperboloid&n=36&.*view=/);
-  const readout = await page.locator('#readout').innerText();
-  assert.match(readout, /max \|mᵢ − s\(uᵢ\)\|/);
+  assert.match(page.url(), /#scene=striction&surface=hyperboloid&n=36&.*cam=/);
+  assert.match(await page.locator('.rl-readout').innerText(), /max \|mi − s\(ui\)\|/);
+  assert.match(await page.locator('.rl-caption').innerText(), /Hyperboloid.*36 rulings/);
+  assert.equal(await page.locator('#boot').count(), 0, 'the loading message is gone');
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -24,7 +27,7 @@ test('the page loads without errors or failed requests, favicon included, and dr
 test('dragging orbits the camera and changes the picture', async () => {
   const { page, problems, frames } = await open();
   const before = await shoot(page, 'drag-before');
-  const box = await page.locator('#view').boundingBox();
+  const box = await page.locator('.rl-view canvas').boundingBox();
   await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
   await page.mouse.down();
   await page.mouse.move(box.x + box.width / 2 + 150, box.y + box.height / 2 + 40, { steps: 5 });
@@ -36,66 +39,36 @@ test('dragging orbits the camera and changes the picture', async () => {
   await page.close();
 });
 
-test('the rulings slider changes the picture and the URL, and the URL restores it', async () => {
-  const { page, problems, frames } = await open();
-  const before = await shoot(page, 'slider-before');
-  await page.locator('#param-n').fill('12');
-  await framesAfter(page, frames);
-  const afterSlide = await shoot(page, 'slider-after');
-  assert.ok(countChanged(before, afterSlide) > 2000, 'the picture did not change');
-  assert.match(page.url(), /n=12/);
-  const restored = await open(new URL(page.url()).hash);
-  assert.equal(await restored.page.locator('#param-n').inputValue(), '12');
-  const again = await shoot(restored.page, 'slider-restored');
-  assert.ok(countChanged(afterSlide, again) < 0.01 * again.width * again.height, 'reload did not restore the view');
-  assert.deepEqual(problems, []);
-  assert.deepEqual(restored.problems, []);
-  await page.close();
-  await restored.page.close();
-});
-
 test('every scene, and every choice of each of its menus, draws without errors', async () => {
   const first = await open();
   const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
   await first.page.close();
-  assert.ok(scenes.length >= 8);
-  const problems = [...first.problems];
+  assert.ok(scenes.length >= 13);
+  const problems = [];
   for (const id of scenes) {
-    // a fresh page per scene: navigating an open page would abort its pending requests
     const { page, problems: pageProblems } = await open(`#scene=${id}`);
     const start = await shoot(page, `${id}-default`);
     assert.ok(countDifferent(start, BACKGROUND) > 0.005 * start.width * start.height, `${id} drew nothing`);
-    // its first slider changes the picture
+    // its first enabled slider changes the picture
     const slider = await page.evaluate(() => {
-      const r = document.querySelector('#controls input[type=range]');
-      if (!r) return null;
-      const value = Number(r.value) === Number(r.min) ? r.max : r.min;
-      return { id: r.id, value, initial: r.value };
+      const r = [...document.querySelectorAll('.rl-controls input[type=range]')].find((x) => !x.disabled);
+      return r ? { key: r.name, value: Number(r.value) === Number(r.min) ? r.max : r.min } : null;
     });
     if (slider) {
-      const move = async (value) => {
-        const frames = await page.evaluate(() => Number(document.body.dataset.frames));
-        await page.locator(`#${slider.id}`).fill(String(value));
-        await framesAfter(page, frames);
-      };
-      await move(slider.value);
-      const moved = await shoot(page, `${id}-${slider.id.replace('param-', '')}-${slider.value}`);
-      assert.ok(countChanged(start, moved) > 500, `${id}: moving ${slider.id} did not change the picture`);
-      await move(slider.initial);
+      await setControl(page, slider.key, slider.value);
+      const moved = await shoot(page, `${id}-slider`);
+      assert.ok(countChanged(start, moved) > 300, `${id}: moving ${slider.key} did not change the picture`);
     }
-    const menus = await page.evaluate(() =>
-      [...document.querySelectorAll('#controls select')].map((s) => ({ id: s.id, values: [...s.options].map((o) => o.value) })),
-    );
-    for (const menu of menus) {
-      for (const value of menu.values) {
+    // every choice of every menu draws
+    const menus = await page.evaluate(() => [...document.querySelectorAll('.rl-controls select')].map((s) => ({ key: s.name, values: [...s.options].map((o) => o.value) })));
+    for (const { key, values } of menus) {
+      for (const value of [...values.slice(1), values[0]]) {
+        if ((await control(page, key).inputValue()) === value || (await control(page, key).isDisabled())) continue;
         const frames = await page.evaluate(() => Number(document.body.dataset.frames));
-        await page.selectOption(`#${menu.id}`, value);
-        await framesAfter(page, frames);
-        const image = await shoot(page, `${id}-${menu.id.replace('param-', '')}-${value}`);
-        const drawn = countDifferent(image, BACKGROUND);
-        assert.ok(drawn > 0.005 * image.width * image.height, `${id} ${menu.id}=${value} drew only ${drawn} pixels`);
-        const error = await page.locator('#error');
-        assert.equal(await error.isHidden(), true, `${id} ${menu.id}=${value}: ${await error.innerText()}`);
+        await control(page, key).selectOption(value);
+        await framesAfter(page, frames).catch(async () => assert.fail(`${id}: ${key}=${value} drew no new frame; error: ${await page.locator('.rl-error').innerText()}`));
+        await ready(page, 60000);
+        assert.equal(await page.locator('.rl-error').isHidden(), true, `${id}: ${key}=${value} shows an error: ${await page.locator('.rl-error').innerText()}`);
       }
     }
     problems.push(...pageProblems);
@@ -104,137 +77,197 @@ test('every scene, and every choice of each of its menus, draws without errors',
   assert.deepEqual(problems, []);
 });
 
-test('isometry scene: the bending slider bends, the readout shows an isometry, animation runs', async () => {
-  const { page, problems, frames } = await open('#scene=isometry&t=0');
-  const flat = await shoot(page, 'isometry-t0');
-  await page.locator('#param-t').fill('1');
-  const f1 = await framesAfter(page, frames);
-  const bent = await shoot(page, 'isometry-t1');
-  assert.ok(countChanged(flat, bent) > 2000, 'bending did not change the picture');
-  const readout = await page.locator('#readout').innerText();
-  const error = Number(readout.match(/max relative change of polygon edge lengths\s+([-+.\de]+)/)[1]);
-  assert.ok(error < 1e-12, `edge lengths changed by ${error}`);
-  await page.locator('#param-play').check();
-  const before = await page.locator('#param-t').inputValue();
-  await page.waitForFunction((v) => document.getElementById('param-t').value !== v, before, { timeout: 5000 });
-  await page.locator('#param-play').uncheck();
-  await framesAfter(page, f1);
+test('a link restores every control of every scene, the camera and the language', async () => {
+  const first = await open();
+  const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
+  await first.page.close();
+  for (const id of scenes) {
+    const { page, problems } = await open(`#scene=${id}`);
+    // a non-default value for every enabled control (sliders away from their default,
+    // checkboxes flipped, menus at another choice)
+    const changed = await page.evaluate(() => {
+      const out = {};
+      for (const el of document.querySelectorAll('.rl-controls [name]')) {
+        if (el.disabled || el.type === 'text') continue;
+        if (el.type === 'range') {
+          const [min, max, step] = [Number(el.min), Number(el.max), Number(el.step)];
+          const v = Number(el.value) === max ? min : Math.min(max, Number(el.value) + step);
+          out[el.name] = String(Number(v.toFixed(6)));
+        } else if (el.type === 'checkbox') out[el.name] = el.checked ? '0' : '1';
+        else if (el.tagName === 'SELECT' && el.name !== 'preset') out[el.name] = [...el.options].map((o) => o.value).find((v) => v !== el.value);
+      }
+      return out;
+    });
+    const hash = new URLSearchParams({ scene: id, ...changed, cam: '0.5,0.3,7,0.1,0.2,0.3', lang: 'en' });
+    const restored = await open(`#${hash}`);
+    const values = await restored.page.evaluate((keys) => Object.fromEntries(keys.map((k) => {
+      const el = document.querySelector(`.rl-controls [name="${k}"]`);
+      return [k, el.type === 'checkbox' ? (el.checked ? '1' : '0') : String(el.value)];
+    })), Object.keys(changed));
+    for (const [k, v] of Object.entries(changed)) assert.equal(Number.isNaN(Number(v)) ? values[k] : Number(values[k]), Number.isNaN(Number(v)) ? v : Number(v), `${id}: ${k} was not restored`);
+    const camera = await restored.page.evaluate(() => window.ruledlab.stage.viewer.camera.toArray());
+    assert.deepEqual(camera.map((x) => Number(x.toFixed(6))), [0.5, 0.3, 7, 0.1, 0.2, 0.3], `${id}: the camera was not restored`);
+    // and the page writes back the same state
+    const written = new URLSearchParams(new URL(restored.page.url()).hash.slice(1));
+    for (const [k, v] of Object.entries(changed)) assert.equal(Number.isNaN(Number(v)) ? written.get(k) : Number(written.get(k)), Number.isNaN(Number(v)) ? v : Number(v), `${id}: ${k} not in the written link`);
+    assert.deepEqual([...problems, ...restored.problems], []);
+    await page.close();
+    await restored.page.close();
+  }
+});
+
+test('the scene’s own parameter "view" and the camera no longer collide (isometry, three panels)', async () => {
+  const { page, problems } = await open('#scene=isometry&layout=panels&cam=1,0.5,9,0,0,0');
+  assert.equal(await control(page, 'layout').inputValue(), 'panels');
+  assert.equal(await control(page, 't').isDisabled(), true, 'bending t does nothing in the three-panel view');
+  assert.match(await page.locator('.rl-row[data-key="t"] .rl-reason').innerText(), /three-panel view/);
+  await page.reload();
+  await ready(page);
+  assert.equal(await control(page, 'layout').inputValue(), 'panels');
   assert.deepEqual(problems, []);
   await page.close();
 });
 
-test('the viewer survives a WebGL context loss and draws again after the restore', async () => {
-  const { page, problems, frames } = await open('#scene=strip');
-  const before = await shoot(page, 'context-before');
-  await page.evaluate(() => {
-    window.loseContext = document.getElementById('view').getContext('webgl2').getExtension('WEBGL_lose_context');
-    window.loseContext.loseContext();
-  });
-  await page.waitForFunction(() => document.getElementById('view').getContext('webgl2').isContextLost());
-  await page.evaluate(() => window.loseContext.restoreContext());
-  await framesAfter(page, frames);
-  const after = await shoot(page, 'context-after');
-  assert.ok(countDifferent(after, BACKGROUND) > 0.02 * after.width * after.height, 'nothing drawn after the restore');
-  assert.ok(countChanged(before, after) < 0.01 * after.width * after.height, 'the restored picture differs');
-  // and the page still reacts
-  const f = await page.evaluate(() => Number(document.body.dataset.frames));
-  await page.locator('#param-n').fill('5');
-  await framesAfter(page, f);
-  assert.deepEqual(problems.filter((p) => !/CONTEXT_LOST/.test(p)), []);
-  await page.close();
-});
-
-test('milling scene: the G-code download is G-code for the path shown', async () => {
-  const { page, problems } = await open('#scene=milling&steps=2');
-  const [download] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code' }).click()]);
-  assert.equal(download.suggestedFilename(), 'toolpath.nc');
-  const chunks = [];
-  for await (const chunk of await download.createReadStream()) chunks.push(chunk);
-  const text = Buffer.concat(chunks).toString('utf8');
-  assert.match(text, /^\(ruledlab tool path, 25 poses\)/);
-  assert.equal(text.split('\n').filter((l) => l.startsWith('G1 ')).length, 25);
+test('a scene change is a history entry; parameter moves are not; Back returns to the previous scene', async () => {
+  const { page, problems } = await open('#scene=striction');
+  const length = await page.evaluate(() => history.length);
+  await setControl(page, 'n', 20);
+  assert.equal(await page.evaluate(() => history.length), length, 'a parameter move added a history entry');
+  await page.locator('#scene').selectOption('curves');
+  await ready(page);
+  assert.equal(await page.evaluate(() => history.length), length + 1);
+  await page.goBack();
+  await page.waitForFunction(() => window.ruledlab.stage.scene?.id === 'striction');
+  await ready(page);
+  assert.equal(await control(page, 'n').inputValue(), '20', 'Back restores the previous scene with its parameters');
   assert.deepEqual(problems, []);
   await page.close();
 });
 
-test('large models: a 10⁴-ruling slider update, and 640 000 rulings refined in a worker while the page stays responsive', async () => {
-  const { page, problems, frames } = await open('#scene=large&n=10000&steps=0');
-  await page.locator('#param-n').fill('9900');
-  await framesAfter(page, frames);
-  const updateMs = Number(await page.evaluate(() => document.body.dataset.updateMs));
-  console.log(`# 10 000 → 9 900 rulings: recompute and rebuild took ${updateMs} ms on the main thread`);
-  await page.locator('#param-n').fill('10000');
-  await page.locator('#param-steps').fill('6');
-  await page.waitForFunction(() => document.body.dataset.busy === '1');
-  assert.equal(await page.locator('#progress').isVisible(), true, 'no progress shown');
-  // the main thread keeps running animation frames while the worker computes
-  const ticks = await animationFrames(page);
-  // a blocked main thread would give 0 or 1; on 2 cores shared by the worker and software
-  // rendering, about 10 are seen here
-  console.log(`# ${ticks} animation frames in 500 ms while the worker computes`);
-  assert.ok(ticks >= 4, `only ${ticks} animation frames in 500 ms while computing: the page is blocked`);
-  await page.waitForFunction(() => !document.body.dataset.busy, null, { timeout: 120000 });
-  assert.match(await page.locator('#readout').innerText(), /639937/);
-  assert.equal(await page.locator('#progress').isHidden(), true);
-  const image = await shoot(page, 'large-640k');
-  assert.ok(countDifferent(image, BACKGROUND) > 0.02 * image.width * image.height, 'the refined model is not drawn');
+test('Reset restores the defaults; bad link values fall back to their defaults with a visible note', async () => {
+  const { page, problems } = await open('#scene=striction&n=oops&surface=torus&normals=maybe&polygon=0');
+  assert.equal(await control(page, 'n').inputValue(), '36');
+  assert.equal(await control(page, 'surface').inputValue(), 'hyperboloid');
+  const note = await page.locator('.rl-note').innerText();
+  assert.match(note, /“n” is not a number/);
+  assert.match(note, /“surface” is not one of the choices/);
+  assert.equal(await control(page, 'polygon').isChecked(), false);
+  await page.locator('.rl-reset').click();
+  await ready(page);
+  assert.equal(await control(page, 'polygon').isChecked(), true);
   assert.deepEqual(problems, []);
   await page.close();
 });
 
-test('import: malformed files are reported with line and column; a valid file is shown and exported back', async () => {
-  const { page, problems } = await open();
+test('play moves a parameter until paused; a single step moves it once', async () => {
+  const { page, problems } = await open('#scene=isometry&t=0');
+  await page.locator('.rl-row[data-key="t"] .rl-play').click();
+  await page.waitForFunction(() => Number(document.querySelector('.rl-controls [name="t"]').value) > 0.1, null, { timeout: 10000 });
+  assert.equal(await page.locator('.rl-row[data-key="t"] .rl-play').getAttribute('aria-pressed'), 'true');
+  await page.locator('.rl-row[data-key="t"] .rl-play').click();
+  const paused = await page.evaluate(() => window.ruledlab.stage.params.t);
+  await page.waitForTimeout(300);
+  assert.equal(await page.evaluate(() => window.ruledlab.stage.params.t), paused, 'pause stops the parameter');
+  assert.match(page.url(), new RegExp(`t=${paused}&`));
+  await page.locator('.rl-player button').click();
+  assert.ok(Math.abs((await page.evaluate(() => window.ruledlab.stage.params.t)) - paused) > 0.04, 'a single step moves t by a twentieth of its range');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('autoplay plays, unless the reader prefers reduced motion', async () => {
+  const moving = await open('#scene=lines&slide=0&autoplay');
+  await moving.page.waitForFunction(() => Number(document.querySelector('.rl-controls [name="slide"]').value) > 0.05, null, { timeout: 10000 });
+  await moving.page.close();
+  const context = session.browser;
+  const page = await context.newPage();
+  await page.emulateMedia({ reducedMotion: 'reduce' });
+  await page.goto(`${session.url}#scene=lines&slide=0&autoplay`);
+  await ready(page);
+  await page.waitForTimeout(600);
+  assert.equal(Number(await control(page, 'slide').inputValue()), 0, 'autoplay ignored the reduced-motion preference');
+  await page.close();
+});
+
+test('the share dialog offers the link, an iframe and a <ruled-view> snippet of this view', async () => {
+  const { page, problems } = await open('#scene=curves&w=0.0625&steps=3');
+  await page.locator('#share').click();
+  const link = await page.locator('#share-link').inputValue();
+  assert.match(link, /#scene=curves&.*w=0\.0625.*&cam=/);
+  const iframe = await page.locator('#share-iframe').inputValue();
+  assert.match(iframe, /^<iframe src="[^"]*#embed&amp;controls&amp;scene=curves/);
+  const element = await page.locator('#share-element').inputValue();
+  assert.match(element, /<ruled-view scene="curves" params="[^"]*w=0\.0625[^"]*" lang="en" controls/);
+  assert.match(element, /src="[^"]*\/www\/view\.js"/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('your surface by formulas: live, in the link, and errors beside the field with their column', async () => {
+  const { page, problems } = await open('#scene=formula');
+  const before = await shoot(page, 'formula-before');
+  await setControl(page, 'ez', '2*c');
+  const after = await shoot(page, 'formula-after');
+  assert.ok(countChanged(before, after) > 1000, 'a new formula did not change the picture');
+  await page.waitForFunction(() => /ez=2\*c|ez=2%2Ac/.test(location.hash));
+  await control(page, 'ay').fill('sni(u)');
+  await control(page, 'ay').dispatchEvent('change');
+  const row = page.locator('.rl-row[data-key="ay"]');
+  await page.waitForFunction(() => document.querySelector('.rl-row[data-key="ay"] .rl-fielderror')?.hidden === false);
+  assert.match(await row.locator('.rl-fielderror').innerText(), /a\[1\]: unknown function "sni" at column 1/);
+  assert.equal(await control(page, 'ay').getAttribute('aria-invalid'), 'true');
+  // the link with the formula restores it
+  const reloaded = await open(`#scene=formula&ez=${encodeURIComponent('2*c')}&tool=convergence`);
+  assert.equal(await control(reloaded.page, 'ez').inputValue(), '2*c');
+  assert.match(await reloaded.page.locator('.rl-readout').innerText(), /order of the midpoint/);
+  assert.deepEqual([...problems, ...reloaded.problems].filter((p) => !/sni/.test(p)), []);
+  await page.close();
+  await reloaded.page.close();
+});
+
+test('imports: errors beside the field, old data kept; small imports survive a reload in the link', async () => {
+  const { page, problems } = await open('#scene=data');
   await page.locator('.io summary').click();
-  await page.locator('#import-text').fill('ax,ay,az,bx,by,bz\n0,0,0,1,0,0\n0,0,1,0,1\n');
+  await page.locator('#import-text').fill('0,0,0,1,0,0\n0,0,1,0,1,x');
   await page.locator('#import-button').click();
-  assert.match(await page.locator('#error').innerText(), /line 3, column 10: expected 6 numbers/);
-  const csv = '0,0,0,1,0,0\n0,0,0.5,0.6,0.8,0.5\n0,0,1,0,1,1\n0,0,1.5,-0.6,0.8,1.5\n';
-  await page.locator('#import-text').fill(csv);
+  assert.match(await page.locator('#import-error').innerText(), /csv: line 2, column 11: "x" is not a number\. The data shown is the previous import/);
+  await page.locator('#import-text').fill('0,0,0,1,0,0\n0,0,1,0,1,1\n0,0,2,-1,0,2\n0,0,3,0,-1,3');
   await page.locator('#import-button').click();
-  await page.waitForFunction(() => location.hash.includes('scene=data'));
-  assert.equal(await page.locator('#error').isHidden(), true);
-  assert.match(await page.locator('#readout').innerText(), /rulings N\s+4/);
-  const save = async (kind) => {
-    const [d] = await Promise.all([page.waitForEvent('download'), page.locator(`[data-export="${kind}"]`).click()]);
-    const chunks = [];
-    for await (const c of await d.createReadStream()) chunks.push(c);
-    return { name: d.suggestedFilename(), body: Buffer.concat(chunks) };
-  };
-  // CSV round trip: the same numbers come back
-  const back = await save('csv');
-  const numbers = (t) => t.trim().split('\n').filter((l) => /^[-\d]/.test(l)).flatMap((l) => l.split(',').map(Number));
-  assert.deepEqual(numbers(back.body.toString()), numbers(csv));
-  const objFile = (await save('obj')).body.toString();
-  assert.equal(objFile.split('\n').filter((l) => l.startsWith('v ')).length, 8);
-  assert.equal(objFile.split('\n').filter((l) => l.startsWith('l ')).length, 4);
-  assert.equal(objFile.split('\n').filter((l) => l.startsWith('f ')).length, 3);
-  const inv = JSON.parse((await save('invariants')).body.toString());
-  assert.equal(inv.angle.length, 3);
-  const invCsv = (await save('invariants-csv')).body.toString().trim().split('\n');
-  assert.equal(invCsv.length, 4);
-  assert.equal(Number(invCsv[1].split(',')[1]), inv.angle[0]);
-  const image = (await save('png')).body;
-  assert.equal(image.subarray(1, 4).toString(), 'PNG');
+  await page.waitForFunction(() => /data=/.test(location.hash));
+  assert.equal(await page.locator('#import-error').isHidden(), true);
+  await page.reload();
+  await ready(page);
+  assert.match(await page.locator('.rl-readout').innerText(), /rulings N\s+4/);
   assert.deepEqual(problems, []);
   await page.close();
 });
 
-test('SVG exports: the convergence plot and the development of Fig. 6', async () => {
-  const { page, problems } = await open('#scene=convergence');
-  await page.locator('.io summary').click();
-  const [plot] = await Promise.all([page.waitForEvent('download'), page.locator('[data-export="svg"]').click()]);
-  const read = async (d) => {
-    const chunks = [];
-    for await (const c of await d.createReadStream()) chunks.push(c);
-    return Buffer.concat(chunks).toString();
-  };
-  assert.match(await read(plot), /^<svg xmlns="http:\/\/www.w3.org\/2000\/svg"[^>]*>.*polyline/s);
-  const second = await open('#scene=isometry&view=panels&surface=cone');
-  const [dev] = await Promise.all([second.page.waitForEvent('download'), second.page.getByRole('button', { name: 'Download development (SVG)' }).click()]);
-  const svg = await read(dev);
-  assert.match(svg, /<title>Approximate development/);
-  assert.ok((svg.match(/<line /g) ?? []).length === 24, 'one line per ruling of the cone');
-  assert.deepEqual([...problems, ...second.problems], []);
-  await page.close();
-  await second.page.close();
+test('phone size: the panel goes below the view, Fit frames the width, touch targets are large enough', async () => {
+  const phone = await launch({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true });
+  const page = await phone.newPage();
+  await page.goto(`${session.url}#scene=striction`);
+  await ready(page);
+  assert.equal(await page.locator('.rl-stage').evaluate((e) => e.classList.contains('rl-narrow')), true);
+  const small = await page.evaluate(() =>
+    [...document.querySelectorAll('.rl-stage button, .rl-stage input, .rl-stage select')]
+      .filter((e) => e.offsetParent)
+      .map((e) => ({ what: e.name || e.className || e.textContent, ...e.getBoundingClientRect().toJSON() }))
+      .filter((r) => r.width < 24 || r.height < 24),
+  );
+  assert.deepEqual(small, [], 'controls smaller than 24 × 24 CSS px');
+  assert.match(await page.locator('.rl-hint').textContent(), /finger/, 'the hint speaks of touch, not of the mouse');
+  // Fit frames the width too: the surface's extent across stays inside the view
+  const image = await shoot(page, 'phone-striction');
+  let left = image.width, right = 0;
+  for (let y = 2; y < image.height - 2; y++) {
+    for (let x = 0; x < image.width; x++) {
+      const k = (y * image.width + x) * image.channels;
+      if (Math.abs(image.data[k] - 251) + Math.abs(image.data[k + 1] - 250) + Math.abs(image.data[k + 2] - 247) > 30) {
+        left = Math.min(left, x);
+        right = Math.max(right, x);
+      }
+    }
+  }
+  assert.ok(left > 2 && right < image.width - 3, `the surface is cut at the sides: drawn from x = ${left} to ${right} of ${image.width}`);
+  await phone.close();
 });

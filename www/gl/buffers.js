@@ -1,5 +1,8 @@
 // Buffers and vertex arrays.
 
+/** The 4 × 4 identity, column-major. */
+export const IDENTITY = Object.freeze([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]);
+
 /**
  * Uploads typed-array data into a new buffer.
  * @param {WebGL2RenderingContext} gl
@@ -16,6 +19,10 @@ export function createBuffer(gl, data, target = gl.ARRAY_BUFFER) {
 /**
  * Binds a float attribute of `size` components to `buffer` (bound VAO assumed).
  * @param {WebGL2RenderingContext} gl
+ * @param {number} location
+ * @param {WebGLBuffer | null} buffer
+ * @param {number} size
+ * @param {{stride?: number, offset?: number, divisor?: number}} [layout]
  */
 export function floatAttribute(gl, location, buffer, size, { stride = 0, offset = 0, divisor = 0 } = {}) {
   if (location < 0) return;
@@ -23,9 +30,4 @@ export function floatAttribute(gl, location, buffer, size, { stride = 0, offset 
   gl.enableVertexAttribArray(location);
   gl.vertexAttribPointer(location, size, gl.FLOAT, false, stride, offset);
   gl.vertexAttribDivisor(location, divisor);
-}
-
-/** Float64 (or any) numbers as a Float32Array, without copying when already f32. */
-export function f32(data) {
-  return data instanceof Float32Array ? data : new Float32Array(data);
 }

@@ -1,18 +1,19 @@
-// Shaded triangle meshes: a discrete ruled surface as a strip (the quads a_i b_i b_{i+1}
-// a_{i+1}; the vertex buffer is the segment array itself, a_i at vertex 2i, b_i at 2i + 1)
-// and a grid of points as a surface (a director surface of a congruence). Facet normals come
-// from screen-space derivatives, so the facets of a discrete model show honestly; front and
-// back faces get different colours.
+// Shaded triangle meshes with a front and a back colour: ruled strips (the quads
+// a_i b_i b_{i+1} a_{i+1}, whose vertex buffer is the segment array itself: a_i at vertex 2i,
+// b_i at 2i + 1), grids (director surfaces), and the core's meshes. Facet normals come from
+// screen-space derivatives, so the facets of a discrete model show honestly.
 import { cachedProgram } from './program.js';
-import { createBuffer, floatAttribute } from './buffers.js';
+import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
 layout(location = 0) in vec3 position;
 uniform mat4 viewProj;
+uniform mat4 model;
 out vec3 world;
 void main() {
-  world = position;
-  gl_Position = viewProj * vec4(position, 1.0);
+  vec4 p = model * vec4(position, 1.0);
+  world = p.xyz;
+  gl_Position = viewProj * p;
 }`;
 
 const FS = `#version 300 es
@@ -30,11 +31,11 @@ void main() {
   float diffuse = max(dot(n, l), 0.0);
   float spec = pow(max(dot(n, normalize(l + v)), 0.0), 40.0);
   vec4 base = gl_FrontFacing ? front : back;
-  outColor = vec4(base.rgb * (0.35 + 0.65 * diffuse) + 0.25 * spec, base.a);
+  outColor = vec4(base.rgb * (0.45 + 0.55 * diffuse) + 0.2 * spec, base.a);
 }`;
 
 /** Triangle indices of the strip between consecutive rulings (closed: wraps around). */
-export function stripIndices(rulings, closed = false) {
+export function stripIndices(/** @type {number} */ rulings, closed = false) {
   const quads = closed ? rulings : rulings - 1;
   const idx = new Uint32Array(6 * Math.max(quads, 0));
   for (let i = 0; i < quads; i++) {
@@ -46,8 +47,8 @@ export function stripIndices(rulings, closed = false) {
 }
 
 /** Triangle indices of a rows × cols grid of points (row-major), two triangles per quad. */
-export function gridIndices(rows, cols) {
-  const idx = new Uint32Array(6 * (rows - 1) * (cols - 1));
+export function gridIndices(/** @type {number} */ rows, /** @type {number} */ cols) {
+  const idx = new Uint32Array(6 * Math.max(rows - 1, 0) * Math.max(cols - 1, 0));
   let m = 0;
   for (let i = 0; i + 1 < rows; i++) {
     for (let j = 0; j + 1 < cols; j++) {
@@ -66,12 +67,14 @@ export class TriangleMesh {
    * @param {Float32Array} positions 3 floats per vertex
    * @param {Uint32Array} indices 3 per triangle
    * @param {{front: number[], back: number[]}} style
+   * @param {ArrayLike<number>} [transform]
    */
-  constructor(gl, positions, indices, style) {
+  constructor(gl, positions, indices, style, transform = IDENTITY) {
     this.style = style;
     this.transparent = style.front[3] < 1;
     this.count = indices.length;
-    this.program = cachedProgram(gl, 'strip', VS, FS, ['viewProj', 'eye', 'front', 'back']);
+    this.model = new Float32Array(transform);
+    this.program = cachedProgram(gl, 'mesh', VS, FS, ['viewProj', 'model', 'eye', 'front', 'back']);
     this.vao = gl.createVertexArray();
     gl.bindVertexArray(this.vao);
     this.vbo = createBuffer(gl, positions);
@@ -80,11 +83,13 @@ export class TriangleMesh {
     gl.bindVertexArray(null);
   }
 
+  /** @param {WebGL2RenderingContext} gl @param {import('../viewer.js').Frame} frame */
   draw(gl, frame) {
     if (this.count === 0) return;
     const { program, u } = this.program;
     gl.useProgram(program);
     gl.uniformMatrix4fv(u.viewProj, false, frame.viewProj);
+    gl.uniformMatrix4fv(u.model, false, this.model);
     gl.uniform3fv(u.eye, frame.eye);
     gl.uniform4fv(u.front, this.style.front);
     gl.uniform4fv(u.back, this.style.back);
@@ -93,14 +98,10 @@ export class TriangleMesh {
     gl.bindVertexArray(null);
   }
 
+  /** @param {WebGL2RenderingContext} gl */
   dispose(gl) {
     gl.deleteBuffer(this.vbo);
     gl.deleteBuffer(this.ibo);
     gl.deleteVertexArray(this.vao);
   }
-}
-
-/** A ruled strip from its segments (6 floats per ruling). */
-export function stripMesh(gl, segments, style) {
-  return new TriangleMesh(gl, segments, stripIndices(segments.length / 6, style.closed), style);
 }

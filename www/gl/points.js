@@ -1,13 +1,14 @@
-// Points as round, lightly shaded sprites. Input: Float32Array, 3 floats per point.
+// Points as round, lightly shaded sprites (3 floats per point; NaN points are left out).
 import { cachedProgram } from './program.js';
-import { createBuffer, floatAttribute } from './buffers.js';
+import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
 layout(location = 0) in vec3 position;
 uniform mat4 viewProj;
+uniform mat4 model;
 uniform float size;
 void main() {
-  gl_Position = viewProj * vec4(position, 1.0);
+  gl_Position = viewProj * model * vec4(position, 1.0);
   gl_Position.z -= 4e-4 * gl_Position.w;
   gl_PointSize = size;
 }`;
@@ -25,29 +26,47 @@ void main() {
   outColor = vec4(color.rgb * shade, color.a * edge);
 }`;
 
+/** Points (3 floats each) without those holding NaN; the same array when all are finite. */
+export function finitePoints(/** @type {Float32Array} */ data) {
+  let all = true;
+  for (let i = 0; i < data.length && all; i++) all = Number.isFinite(data[i]);
+  if (all) return data;
+  const out = new Float32Array(data.length);
+  let k = 0;
+  for (let i = 0; i + 2 < data.length; i += 3) {
+    if (Number.isFinite(data[i]) && Number.isFinite(data[i + 1]) && Number.isFinite(data[i + 2])) out.set(data.subarray(i, i + 3), (k++) * 3);
+  }
+  return out.subarray(0, 3 * k);
+}
+
 /** A batch of sprites with one colour and size. */
 export class PointBatch {
   /**
    * @param {WebGL2RenderingContext} gl
    * @param {Float32Array} points 3 floats per point
    * @param {{color: number[], size: number}} style size in CSS pixels
+   * @param {ArrayLike<number>} [transform]
    */
-  constructor(gl, points, style) {
-    this.count = points.length / 3;
+  constructor(gl, points, style, transform = IDENTITY) {
+    const data = finitePoints(points);
+    this.count = data.length / 3;
     this.style = style;
-    this.program = cachedProgram(gl, 'points', VS, FS, ['viewProj', 'size', 'color']);
+    this.model = new Float32Array(transform);
+    this.program = cachedProgram(gl, 'points', VS, FS, ['viewProj', 'model', 'size', 'color']);
     this.vao = gl.createVertexArray();
     gl.bindVertexArray(this.vao);
-    this.buffer = createBuffer(gl, points);
+    this.buffer = createBuffer(gl, data);
     floatAttribute(gl, 0, this.buffer, 3);
     gl.bindVertexArray(null);
   }
 
+  /** @param {WebGL2RenderingContext} gl @param {import('../viewer.js').Frame} frame */
   draw(gl, frame) {
     if (this.count === 0) return;
     const { program, u } = this.program;
     gl.useProgram(program);
     gl.uniformMatrix4fv(u.viewProj, false, frame.viewProj);
+    gl.uniformMatrix4fv(u.model, false, this.model);
     gl.uniform1f(u.size, this.style.size * frame.dpr);
     gl.uniform4fv(u.color, this.style.color);
     gl.bindVertexArray(this.vao);
@@ -55,6 +74,7 @@ export class PointBatch {
     gl.bindVertexArray(null);
   }
 
+  /** @param {WebGL2RenderingContext} gl */
   dispose(gl) {
     gl.deleteBuffer(this.buffer);
     gl.deleteVertexArray(this.vao);

@@ -1,60 +1,71 @@
-// Large models: thousands of rulings refined in a Web Worker with progress shown, the page
-// staying responsive; small jobs are computed at once on the main thread.
+// Large models: a helicoid of up to 10 000 rulings refined by up to seven four-point steps
+// (up to 1 280 000 rulings) in a Web Worker with progress and cancel, the page answering
+// meanwhile. Above what the view draws smoothly, a level of detail is drawn (every k-th
+// ruling), and the readout says so.
 import { AnalyticSurface } from '../../pkg/ruledlab.js';
-import { LineBatch } from '../gl/lines.js';
-import { stripMesh } from '../gl/mesh.js';
-import { bounds } from '../math.js';
-import { refineInWorker } from '../compute.js';
-import { COLORS } from '../theme.js';
+import { defineScene, scoped, bounds } from '../scene.js';
+import { stripIndices } from '../gl/mesh.js';
 
 /** Output sizes above this go to the worker. */
 const WORKER_THRESHOLD = 50_000;
+/** Most rulings drawn as a strip (a level of detail above it). */
+const DRAW_LIMIT = 100_000;
 
-export const scene = {
+/**
+ * @param {Float32Array} segments
+ * @param {number} rulings   of the model (drawn: segments.length / 6)
+ * @param {boolean} drawRulings
+ * @param {import('../scene.js').Context} ctx
+ * @returns {import('../scene.js').Built}
+ */
+function picture(segments, rulings, drawRulings, { t }) {
+  const drawn = segments.length / 6;
+  /** @type {import('../scene.js').Layer[]} */
+  const layers = [{ kind: 'mesh', style: 'stripOpaque', positions: segments, indices: stripIndices(drawn) }];
+  if (drawRulings) layers.push({ kind: 'segments', style: 'ruling', positions: segments });
+  return {
+    bounds: bounds(segments),
+    camera: { yaw: -1.0, pitch: 0.3 },
+    layers,
+    readouts: [
+      { label: 'large.readout.rulings', value: rulings },
+      { label: 'large.readout.drawn', value: drawn },
+    ],
+    note: drawn < rulings ? t('large.note.lod', { every: Math.ceil(rulings / drawn), drawn }) : undefined,
+    description: t('large.describe', { rulings, drawn }),
+  };
+}
+
+export const scene = defineScene({
   id: 'large',
-  title: 'Large models in a Web Worker',
+  title: 'large.title',
+  text: 'large.text',
   params: [
-    { key: 'n', label: 'Rulings N', type: 'range', min: 100, max: 10000, step: 100, value: 10000 },
-    { key: 'steps', label: 'Four-point steps', type: 'range', min: 0, max: 7, step: 1, value: 0 },
-    { key: 'rulings', label: 'Draw every ruling', type: 'checkbox', value: false },
+    { key: 'n', label: 'param.rulings', type: 'range', min: 100, max: 10000, step: 100, value: 2000 },
+    { key: 'steps', label: 'large.param.steps', type: 'range', min: 0, max: 7, step: 1, value: 0 },
+    { key: 'rulings', label: 'large.param.rulings', type: 'checkbox', value: false },
   ],
-  text: `
-<h2>Large models</h2>
-<p>A helicoid of up to 10 000 rulings, refined by up to seven steps of the four-point scheme: up to
-1 280 000 rulings (the library's limit is 4 194 304 per surface, refused with a clear message above). Small jobs are computed at once; anything larger runs in a Web Worker with its
-own copy of the WebAssembly module, so the page keeps drawing and answering while a progress bar
-fills. The geometry crosses between threads as one typed array, never as per-ruling objects.</p>`,
-
-  create(p) {
-    const helicoid = AnalyticSurface.byName('helicoid');
-    const coarse = helicoid.sample(p.n, { uMin: 0, uMax: 12, closed: false });
-    helicoid.free();
-    const input = coarse.segments();
-    const expected = (p.n - 1) * 2 ** p.steps + 1;
-    const scene = (segments, rulings) => ({
-      bounds: bounds(segments),
-      camera: { yaw: -1.0, pitch: 0.3 },
-      readout: { rulings },
-      readoutLabels: { rulings: 'rulings drawn' },
-      build(gl) {
-        const layers = [stripMesh(gl, segments, { front: [0.45, 0.64, 0.9, 1], back: [0.98, 0.76, 0.5, 1] })];
-        if (p.rulings) layers.push(new LineBatch(gl, segments, { color: COLORS.ruling, width: 0.6 }));
-        return layers;
-      },
+  legend: [
+    { style: 'stripOpaque', label: 'large.legend.strip' },
+    { style: 'ruling', label: 'legend.rulings', when: (p) => !!p.rulings },
+  ],
+  create(p, ctx) {
+    return scoped((own) => {
+      const n = Number(p.n), steps = Number(p.steps);
+      const helicoid = own(AnalyticSurface.byName('helicoid'));
+      const coarse = own(helicoid.sample(n, { uMin: 0, uMax: 12, closed: false }));
+      const expected = (n - 1) * 2 ** steps + 1;
+      if (expected <= WORKER_THRESHOLD || !ctx.refine) {
+        const refined = steps ? own(coarse.subdivide({ scheme: 'four-point', steps })) : coarse;
+        const every = Math.max(1, Math.ceil(refined.length / DRAW_LIMIT));
+        return picture(every > 1 ? refined.everyF32(every) : refined.segmentsF32(), refined.length, !!p.rulings, ctx);
+      }
+      const first = picture(coarse.segmentsF32(), n, !!p.rulings, ctx);
+      const input = coarse.segments();
+      const refine = ctx.refine;
+      first.later = (onProgress) =>
+        refine(input, { scheme: 'four-point', steps }, onProgress, DRAW_LIMIT).then(({ segments, rulings }) => picture(segments, rulings, !!p.rulings, ctx));
+      return first;
     });
-    if (expected <= WORKER_THRESHOLD) {
-      const refined = p.steps ? coarse.subdivide({ scheme: 'four-point', steps: p.steps }) : coarse;
-      const result = scene(refined.segmentsF32(), refined.length);
-      if (refined !== coarse) refined.free();
-      coarse.free();
-      return result;
-    }
-    const first = scene(coarse.segmentsF32(), p.n);
-    coarse.free();
-    first.later = (onProgress) =>
-      refineInWorker(input, { scheme: 'four-point', steps: p.steps }, onProgress).then(({ segments, rulings }) => scene(segments, rulings));
-    return first;
   },
-
-  legend: [['ruling', 'helicoid strip (rulings on request)']],
-};
+});

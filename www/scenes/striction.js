@@ -1,94 +1,103 @@
-// Section 2, Figs. 1–3: a discrete ruled surface with its common perpendiculars and the
-// striction polygon of footpoint midpoints, against the exact striction curve.
-import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
-import { LineBatch } from '../gl/lines.js';
-import { PointBatch } from '../gl/points.js';
-import { stripMesh } from '../gl/mesh.js';
-import { bounds } from '../math.js';
-import { dropNonFinite, maxDistance, parameters, polylineSegments, wrapClosed } from '../geometry.js';
-import { COLORS } from '../theme.js';
-import { text } from './striction-text.js';
+// Section 2, Figs. 2–3 (Example 1): a discrete ruled surface with its common perpendiculars,
+// the striction polygon m_i of Proposition 2 and, switchable, Fig. 3's polygon of the
+// midpoints of the common perpendiculars, against the exact striction curve.
+import { AnalyticSurface } from '../../pkg/ruledlab.js';
+import { defineScene, scoped, bounds, f32 } from '../scene.js';
+import { stripIndices } from '../gl/mesh.js';
+import { surfaceOptions, rangesOf } from './common.js';
 
-export const scene = {
+/**
+ * The striction figure of an analytic surface sampled with `ranges` ({uMin, uMax, vMin, vMax,
+ * closed}): shared with "Your surface".
+ * @param {<O extends {free(): void}>(o: O) => O} own
+ * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
+ * @param {{uMin: number, uMax: number, vMin?: number, vMax?: number, closed: boolean}} ranges
+ * @param {{n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean}} p
+ * @param {import('../scene.js').Context} ctx
+ * @param {string} name   the surface's name, for the description
+ * @returns {import('../scene.js').Built}
+ */
+export function strictionFigure(own, analytic, ranges, p, ctx, name) {
+  const { t } = ctx;
+  const closed = ranges.closed;
+  const surface = own(analytic.sample(p.n, ranges));
+  const segments = surface.segmentsF32();
+  const inv = surface.invariants({ closed });
+  const errors = analytic.samplingErrors(p.n, ranges);
+  const exact = analytic.striction(analytic.parameters(closed ? 400 : 401, ranges));
+  /** @type {import('../scene.js').Layer[]} */
+  const layers = [{ kind: 'segments', style: 'ruling', positions: segments }];
+  if (p.normals) {
+    layers.push({ kind: 'segments', style: 'normal', positions: f32(inv.footpoints) });
+    layers.push({ kind: 'points', style: 'foot', positions: f32(inv.footpoints) });
+  }
+  if (p.exact) layers.push({ kind: 'polyline', style: 'exact', positions: f32(exact), closed });
+  if (p.midpoints) {
+    layers.push({ kind: 'polyline', style: 'perpendicularMidpoints', positions: f32(inv.perpendicularMidpoints), closed });
+    layers.push({ kind: 'points', style: 'perpendicularMidpoint', positions: f32(inv.perpendicularMidpoints) });
+  }
+  if (p.polygon) {
+    layers.push({ kind: 'polyline', style: 'striction', positions: f32(inv.striction), closed });
+    layers.push({ kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) });
+  }
+  if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: segments, indices: stripIndices(p.n, closed) });
+  const middle = inv.distributionMean.length ? inv.distributionMean[Math.floor(inv.distributionMean.length / 2)] : NaN;
+  const shown = [
+    p.normals && t('striction.describe.normals'),
+    p.polygon && t('striction.describe.polygon'),
+    p.midpoints && t('striction.describe.midpoints'),
+    p.exact && t('striction.describe.exact'),
+  ].filter(Boolean);
+  return {
+    bounds: bounds(segments),
+    camera: { yaw: -0.9, pitch: 0.45 },
+    layers,
+    readouts: [
+      { label: 'readout.rulings', value: p.n },
+      { label: 'readout.parallelPairs', value: errors.parallelPairs },
+      { label: 'readout.midpointError', value: errors.midpoint, exactZero: true },
+      { label: 'readout.footpointError', value: errors.footpoint, exactZero: true },
+      { label: 'readout.perpendicularMidpointError', value: errors.perpendicularMidpoint, exactZero: true },
+      { label: 'readout.meanDelta', value: middle },
+    ],
+    description: t('striction.describe', {
+      surface: t(`surface.${name}`),
+      n: p.n,
+      closed: t(closed ? 'describe.closed' : 'describe.open'),
+      shown: shown.length ? shown.join(', ') : t('describe.nothingElse'),
+      midpoint: errors.midpoint,
+      footpoint: errors.footpoint,
+    }),
+    data: { segments: surface.segments() },
+  };
+}
+
+export const scene = defineScene({
   id: 'striction',
-  title: 'Striction polygon (Figs. 1–3)',
-  text,
+  title: 'striction.title',
+  text: 'striction.text',
+  paper: true,
   params: [
-    {
-      key: 'surface', label: 'Surface', type: 'select', value: 'hyperboloid',
-      options: () => AnalyticSurface.list().map((s) => [s.name, s.title]),
-    },
-    { key: 'n', label: 'Rulings N', type: 'range', min: 6, max: 160, step: 1, value: 36 },
-    { key: 'strip', label: 'Surface strip', type: 'checkbox', value: true },
-    { key: 'normals', label: 'Common perpendiculars Nᵢ,ᵢ₊₁', type: 'checkbox', value: true },
-    { key: 'polygon', label: 'Striction polygon mᵢ', type: 'checkbox', value: true },
-    { key: 'exact', label: 'Exact striction curve s(u)', type: 'checkbox', value: false },
+    { key: 'surface', label: 'param.surface', type: 'select', value: 'hyperboloid', options: surfaceOptions() },
+    { key: 'n', label: 'param.rulings', type: 'range', min: 6, max: 160, step: 1, value: 36, play: true },
+    { key: 'strip', label: 'param.strip', type: 'checkbox', value: true },
+    { key: 'normals', label: 'striction.param.normals', type: 'checkbox', value: true },
+    { key: 'polygon', label: 'striction.param.polygon', type: 'checkbox', value: true },
+    { key: 'midpoints', label: 'striction.param.midpoints', type: 'checkbox', value: false },
+    { key: 'exact', label: 'striction.param.exact', type: 'checkbox', value: false },
   ],
-
-  /** Computes the scene for `params`; returns its layers, bounds and a live readout. */
-  create(p) {
-    const analytic = AnalyticSurface.byName(p.surface);
-    const info = AnalyticSurface.list().find((s) => s.name === p.surface);
-    const surface = analytic.sample(p.n);
-    const segments = surface.segments();
-    const segmentsF32 = surface.segmentsF32();
-    // Closed surfaces: wrap so every ruling is interior and the polygon closes.
-    const model = info.closed ? RuledSurface.fromSegments(wrapClosed(segments)) : surface;
-    const inv = model.invariants();
-    if (model !== surface) model.free();
-
-    const feet = inv.footpoints.subarray(info.closed ? 6 : 0);
-    const u = parameters(p.n, info.uMin, info.uMax, info.closed);
-    const interior = info.closed ? u : u.subarray(1, p.n - 1);
-    const exactAtRulings = analytic.striction(interior);
-    const exactCurve = analytic.striction(parameters(400, info.uMin, info.uMax, info.closed));
-    // f_{i,i+1} of each interior ruling: pair i of the (wrapped) model.
-    const firstPair = info.closed ? 0 : 1;
-    const forwardFeet = new Float64Array(interior.length * 3);
-    for (let k = 0; k < interior.length; k++) {
-      const at = 6 * (k + firstPair);
-      forwardFeet.set(feet.subarray(at, at + 3), 3 * k);
-    }
-    const readout = {
-      rulings: p.n,
-      parallelPairs: inv.parallel.reduce((a, b) => a + b, 0),
-      midpointError: maxDistance(inv.striction, exactAtRulings),
-      footpointError: maxDistance(forwardFeet, exactAtRulings),
-      meanDelta: inv.distributionMean.length ? inv.distributionMean[Math.floor(inv.distributionMean.length / 2)] : NaN,
-    };
-    surface.free();
-    analytic.free();
-
-    const polygon = polylineSegments(inv.striction, info.closed);
-    const normals = dropNonFinite(info.closed ? inv.footpoints.subarray(6) : inv.footpoints, 6);
-    const exact = polylineSegments(exactCurve, info.closed);
-    return {
-      bounds: bounds(segments),
-      readout,
-      data: { segments },
-      build(gl) {
-        const layers = [new LineBatch(gl, segmentsF32, { color: COLORS.ruling, width: 1.6 })];
-        if (p.normals) {
-          layers.push(new LineBatch(gl, normals, { color: COLORS.normal, width: 2.6 }));
-          layers.push(new PointBatch(gl, dropNonFinite(normals, 3), { color: COLORS.foot, size: 5 }));
-        }
-        if (p.exact) layers.push(new LineBatch(gl, exact, { color: COLORS.exact, width: 5 }));
-        if (p.polygon) {
-          layers.push(new LineBatch(gl, polygon, { color: COLORS.striction, width: 3.2 }));
-          layers.push(new PointBatch(gl, dropNonFinite(inv.striction, 3), { color: COLORS.striction, size: 7 }));
-        }
-        if (p.strip) {
-          layers.push(stripMesh(gl, segmentsF32, { ...COLORS.strip, closed: info.closed }));
-        }
-        return layers;
-      },
-    };
-  },
-
   legend: [
-    ['ruling', 'rulings R<sub>i</sub>'],
-    ['normal', 'common perpendiculars N<sub>i,i+1</sub>, footpoints', 'normals'],
-    ['striction', 'striction polygon m<sub>i</sub>', 'polygon'],
-    ['exact', 'exact striction curve s(u)', 'exact'],
+    { style: 'ruling', label: 'legend.rulings' },
+    { style: 'normal', label: 'legend.normals', when: (p) => !!p.normals },
+    { style: 'striction', label: 'legend.striction', when: (p) => !!p.polygon },
+    { style: 'perpendicularMidpoints', label: 'legend.perpendicularMidpoints', when: (p) => !!p.midpoints },
+    { style: 'exact', label: 'legend.exactStriction', when: (p) => !!p.exact },
   ],
-};
+  create(p, ctx) {
+    return scoped((own) => {
+      const name = String(p.surface);
+      const analytic = own(AnalyticSurface.byName(name));
+      return strictionFigure(own, analytic, rangesOf(name), /** @type {any} */ (p), ctx, name);
+    });
+  },
+});

@@ -1,0 +1,81 @@
+// Builds the one-file versions into dist/ (after scripts/build.sh has built pkg/):
+//   dist/ruledlab.html      the whole page in one file: JS, CSS and the wasm (base64), no
+//                           other request; works from file:// and uploaded to a course system
+//   dist/ruledlab-embed.js  one classic script defining <ruled-view>, the wasm inlined
+// The page's Content-Security-Policy allows exactly its inline script and style by hash,
+// 'wasm-unsafe-eval' for the module, data:/blob: images and blob: workers.
+import { build } from 'esbuild';
+import { createHash } from 'node:crypto';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+import { BODY, STATE_ID, stateJson } from '../www/export/onefile.js';
+
+const ROOT = fileURLToPath(new URL('..', import.meta.url));
+const path = (p) => `${ROOT}${p}`;
+
+const wasm = readFileSync(path('pkg/ruledlab_bg.wasm')).toString('base64');
+// a classic worker: module workers from blob: URLs do not start in file:// pages
+const worker = await bundle('www/worker.js', 'iife', null, 'self.location.href');
+const inline = {
+  name: 'ruledlab-inline',
+  setup(b) {
+    b.onResolve({ filter: /^ruledlab:inline$/ }, () => ({ path: 'inline', namespace: 'ruledlab' }));
+    b.onLoad({ filter: /.*/, namespace: 'ruledlab' }, () => ({ contents: `export const WASM = ${JSON.stringify(wasm)};\nexport const WORKER = ${JSON.stringify(worker)};`, loader: 'js' }));
+  },
+};
+
+/** One bundled, minified script (text). */
+async function bundle(entry, format, plugin, base = 'document.baseURI') {
+  const out = await build({
+    entryPoints: [path(entry)],
+    bundle: true,
+    format,
+    minify: true,
+    write: false,
+    target: 'es2022',
+    legalComments: 'none',
+    logLevel: 'error',
+    plugins: plugin ? [plugin] : [],
+    // core.js and pkg/ruledlab.js look for files next to themselves only when not configured
+    ...(format === 'iife' ? { define: { 'import.meta.url': base } } : {}),
+  });
+  return out.outputFiles[0].text;
+}
+
+const sha = (text) => `'sha256-${createHash('sha256').update(text, 'utf8').digest('base64')}'`;
+const page = (await bundle('scripts/onefile/page.js', 'esm', inline)).replaceAll('</script', '<\\/script');
+const css = readFileSync(path('www/style.css'), 'utf8');
+const icon = `data:image/svg+xml,${encodeURIComponent(readFileSync(path('www/favicon.svg'), 'utf8'))}`;
+const csp = [
+  "default-src 'none'",
+  `script-src ${sha(page)} 'wasm-unsafe-eval'`,
+  `style-src ${sha(css)}`,
+  'img-src data: blob:',
+  'worker-src blob:',
+  "connect-src 'none'",
+  "object-src 'none'",
+  "base-uri 'none'",
+  "form-action 'none'",
+].join('; ');
+const html = `<!doctype html>
+<html lang="en" data-build="onefile">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<meta http-equiv="Content-Security-Policy" content="${csp}">
+<title>ruledlab · discrete ruled surfaces and line congruences</title>
+<link rel="icon" href="${icon}">
+<style>${css}</style>
+<script type="application/json" id="${STATE_ID}">${stateJson('')}</script>
+<script type="module">${page}</script>
+</head>
+<body>${BODY}</body>
+</html>
+`;
+mkdirSync(path('dist'), { recursive: true });
+writeFileSync(path('dist/ruledlab.html'), html);
+const embed = await bundle('scripts/onefile/embed.js', 'iife', inline);
+writeFileSync(path('dist/ruledlab-embed.js'), embed);
+const kib = (n) => `${(n / 1024).toFixed(0)} KiB`;
+console.log(`build: dist/ruledlab.html ${kib(html.length)}, ${kib(gzipSync(html).length)} gzipped; dist/ruledlab-embed.js ${kib(embed.length)}, ${kib(gzipSync(embed).length)} gzipped`);

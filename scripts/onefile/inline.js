@@ -1,0 +1,23 @@
+// The inlined wasm (base64) and worker (source text), from the build's virtual module.
+import { WASM, WORKER } from 'ruledlab:inline';
+
+/** The wasm module's bytes. */
+export function wasmBytes() {
+  const text = atob(WASM);
+  const bytes = new Uint8Array(text.length);
+  for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
+  return bytes;
+}
+
+/**
+ * Makes workers from the inlined worker source: a classic worker from a blob: URL (allowed by
+ * worker-src blob:), since module workers from blob: URLs do not start in file:// pages.
+ */
+export function workerFactory() {
+  /** @type {string | null} */
+  let url = null;
+  return () => {
+    url ??= URL.createObjectURL(new Blob([WORKER], { type: 'text/javascript' }));
+    return new Worker(url);
+  };
+}

@@ -1,0 +1,104 @@
+// The package as a web developer gets it: `npm pack`, installed into a fresh app outside the
+// repo, served as static files, <ruled-view scene="striction" controls> from 'ruledlab/view'
+// draws with its controls; and a Vite app built from the tarball runs.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readdirSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { build } from 'vite';
+import { startServer } from '../../scripts/serve.mjs';
+import { launch, watch, ARTIFACTS } from './browser.mjs';
+import { decodePng, countDifferent } from './png.mjs';
+
+const REPO = fileURLToPath(new URL('../..', import.meta.url));
+const BACKGROUND = [251, 250, 247];
+let browser, tarball;
+
+before(async () => {
+  browser = await launch();
+  const dir = mkdtempSync(join(tmpdir(), 'ruledlab-pack-'));
+  const out = JSON.parse(execFileSync('npm', ['pack', '--json', '--pack-destination', dir], { cwd: REPO, encoding: 'utf8' }));
+  tarball = join(dir, out[0].filename);
+  const files = out[0].files.map((f) => f.path);
+  for (const need of ['www/view.js', 'www/view.d.ts', 'www/ruled-view.js', 'www/worker.js', 'pkg/ruledlab_bg.wasm', 'dist/ruledlab.html', 'dist/ruledlab-embed.js']) {
+    assert.ok(files.includes(need), `the package lacks ${need}`);
+  }
+  assert.ok(!files.some((f) => f.startsWith('src/') || f.startsWith('tests/') || f.startsWith('target/')), 'the package ships sources or tests');
+});
+after(async () => browser?.close());
+
+/** A fresh app directory with the tarball installed (no network: the package has no dependencies). */
+function app() {
+  const dir = mkdtempSync(join(tmpdir(), 'ruledlab-app-'));
+  writeFileSync(join(dir, 'package.json'), JSON.stringify({ name: 'app', private: true, type: 'module' }));
+  execFileSync('npm', ['install', '--no-audit', '--no-fund', '--offline', tarball], { cwd: dir, stdio: 'ignore' });
+  return dir;
+}
+
+async function check(url, name) {
+  const page = await browser.newPage();
+  const problems = watch(page);
+  const requests = [];
+  page.on('request', (r) => requests.push(r.url()));
+  await page.goto(url);
+  await page.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, { timeout: 30000 });
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  const png = await page.locator('ruled-view').screenshot({ path: join(ARTIFACTS, `${name}.png`) });
+  const image = decodePng(png);
+  assert.ok(countDifferent(image, BACKGROUND) > 0.02 * image.width * image.height, 'nothing drawn');
+  const controls = await page.locator('ruled-view').evaluate((v) => v.shadowRoot.querySelectorAll('.rl-controls input, .rl-controls select').length);
+  assert.ok(controls >= 5, `only ${controls} controls`);
+  assert.deepEqual(problems, []);
+  return { page, requests };
+}
+
+test('npm pack → installed in a fresh app → <ruled-view controls> from ruledlab/view draws', async () => {
+  const dir = app();
+  writeFileSync(
+    join(dir, 'index.html'),
+    `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>app</title>
+<script type="importmap">{ "imports": { "ruledlab/view": "./node_modules/ruledlab/www/view.js" } }</script>
+<script type="module">import 'ruledlab/view';</script>
+<style>ruled-view { height: 520px; }</style></head>
+<body><ruled-view scene="striction" controls></ruled-view></body></html>`,
+  );
+  const { server, url } = await startServer({ root: dir });
+  try {
+    const { page, requests } = await check(url, 'pack-static');
+    assert.deepEqual(requests.filter((u) => !u.startsWith(url) && !u.startsWith('data:') && !u.startsWith('blob:')), [], 'read from outside the app');
+    await page.close();
+  } finally {
+    server.close();
+  }
+});
+
+test('a Vite app built from the tarball: the core by name and the viewer from ruledlab/view', async () => {
+  const dir = app();
+  writeFileSync(join(dir, 'index.html'), '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>vite app</title><style>ruled-view { height: 520px; }</style></head><body><ruled-view scene="striction" controls></ruled-view><script type="module" src="./main.js"></script></body></html>');
+  writeFileSync(
+    join(dir, 'main.js'),
+    `import init, { AnalyticSurface } from 'ruledlab';
+import 'ruledlab/view';
+await init();
+const helicoid = AnalyticSurface.byName('helicoid');
+try {
+  const s = helicoid.sample(40);
+  try { document.body.dataset.delta = String(s.invariants().distribution[0]); } finally { s.free(); }
+} finally { helicoid.free(); }
+`,
+  );
+  await build({ root: dir, logLevel: 'silent', build: { outDir: join(dir, 'dist'), target: 'es2022' } });
+  const assets = readdirSync(join(dir, 'dist', 'assets'));
+  assert.ok(assets.some((f) => f.endsWith('.wasm')), `no wasm in ${assets}`);
+  const { server, url } = await startServer({ root: join(dir, 'dist') });
+  try {
+    const { page } = await check(url, 'pack-vite');
+    assert.ok(Math.abs(Number(await page.evaluate(() => document.body.dataset.delta)) - 0.5) < 1e-12);
+    await page.close();
+  } finally {
+    server.close();
+  }
+});

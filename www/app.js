@@ -1,0 +1,305 @@
+// The page: a Stage (the view with its controls) plus the page's own chrome: the scene picker,
+// the language switch, sharing (link, iframe and <ruled-view> snippets, the view as one HTML
+// file), import and export. The state lives in the URL hash: a scene change adds a history
+// entry, parameter and camera moves replace it, so Back returns to the previous scene.
+import { importSegments, liveObjects } from '../pkg/ruledlab.js';
+import { start, memoryBytes } from './core.js';
+import { Stage, download } from './stage.js';
+import { SCENES } from './scenes/index.js';
+import { readState, writeState, linkable } from './state.js';
+import { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
+import { adoptStyles } from './ui/css.js';
+import { appendRich } from './ui/richtext.js';
+import { obj, segmentsText, invariantsJson, invariantsCsv } from './export/files.js';
+import { png } from './export/png.js';
+import { oneFileWithState, storedHash } from './export/onefile.js';
+
+/** Session storage key of an import too large for the link. */
+const STORED = 'ruledlab.data';
+
+/** The page's language names, in their own language. */
+const NATIVE = { en: 'English', de: 'Deutsch' };
+
+/**
+ * The page (see the module documentation).
+ * @param {{oneFile?: boolean}} [options]  oneFile: this page is the one-file build
+ */
+export async function startPage({ oneFile = false } = {}) {
+  const doc = document;
+  adoptStyles(doc);
+  await start();
+  let state = readState(location.hash || (oneFile ? `#${storedHash()}` : ''), SCENES);
+  let lang = pickLanguage(state.lang);
+  let i18n = translator(lang);
+  const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) => Object.assign(doc.createElement(tag), props);
+
+  // chrome
+  const header = el('header', { className: 'page-header' });
+  const title = el('h1', { textContent: 'ruledlab' });
+  const subtitle = el('p', { className: 'subtitle' });
+  const pickerLabel = el('label', { className: 'picker' });
+  const picker = el('select', { id: 'scene' });
+  pickerLabel.append(el('span'), picker);
+  const langLabel = el('label', { className: 'picker' });
+  const langPicker = el('select', { id: 'lang' });
+  for (const code of LANGUAGE_CODES) langPicker.add(new Option(NATIVE[/** @type {keyof typeof NATIVE} */ (code)] ?? code, code));
+  langLabel.append(el('span'), langPicker);
+  const shareButton = el('button', { type: 'button', id: 'share' });
+  header.append(title, subtitle, pickerLabel, langLabel, shareButton);
+  const main = el('main', { id: 'main' });
+  doc.body.replaceChildren(header, main);
+
+  // import and export, in the stage's panel
+  const io = el('details', { className: 'io' });
+  const ioSummary = el('summary');
+  const pasteLabel = el('label', { htmlFor: 'import-text' });
+  const paste = el('textarea', { id: 'import-text', rows: 4, spellcheck: false });
+  paste.placeholder = '0,0,0,1,0,0\n0,0,1,0,1,1\n0,0,2,-1,0,2';
+  const ioRow = el('div', { className: 'io-row' });
+  const upload = el('input', { type: 'file', id: 'import-file', accept: '.csv,.json,.txt,text/csv,application/json' });
+  const showButton = el('button', { type: 'button', id: 'import-button' });
+  ioRow.append(upload, showButton);
+  const importError = el('p', { className: 'io-error', id: 'import-error', hidden: true });
+  importError.setAttribute('role', 'alert');
+  const storedNote = el('p', { className: 'io-note', hidden: true });
+  const exportsLabel = el('p', { className: 'io-label' });
+  const exports = el('div', { className: 'io-row', id: 'exports' });
+  /** @type {Record<string, HTMLButtonElement>} */
+  const exportButtons = {};
+  for (const kind of ['png', 'obj', 'csv', 'json', 'invariants', 'invariantsCsv', 'plot']) {
+    exportButtons[kind] = el('button', { type: 'button' });
+    exportButtons[kind].dataset.export = kind;
+    exports.append(exportButtons[kind]);
+  }
+  io.append(ioSummary, pasteLabel, paste, ioRow, importError, storedNote, exportsLabel, exports);
+
+  // share dialog
+  const share = /** @type {HTMLDialogElement} */ (el('dialog', { className: 'share', id: 'share-dialog' }));
+
+  const stage = new Stage(main, {
+    lang,
+    onChange: ({ reason, ended }) => saveHash(reason === 'scene' ? 'push' : 'replace', ended),
+    onBuilt: (built) => updateExports(built),
+  });
+  stage.panel.insertBefore(io, stage.text);
+  doc.body.append(share);
+
+  /** Texts of the chrome in the current language. */
+  const localize = () => {
+    const { t } = i18n;
+    doc.documentElement.lang = lang;
+    doc.title = `ruledlab · ${t(stage.scene?.title ?? 'app.subtitle').replace(/[_^]\{?([^}]*)\}?/g, '$1')}`;
+    subtitle.textContent = t('app.subtitle');
+    pickerLabel.firstChild.textContent = `${t('app.scene')} `;
+    langLabel.firstChild.textContent = `${t('app.language')} `;
+    langPicker.value = lang;
+    picker.replaceChildren(...SCENES.map((s) => new Option(t(s.title).replace(/[_^]\{?([^}]*)\}?/g, '$1'), s.id)));
+    if (stage.scene) picker.value = stage.scene.id;
+    shareButton.textContent = t('app.share');
+    ioSummary.textContent = t('io.summary');
+    pasteLabel.textContent = t('io.paste');
+    upload.setAttribute('aria-label', t('io.upload'));
+    showButton.textContent = t('io.show');
+    exportsLabel.textContent = t('io.exports');
+    const names = { png: 'export.png', obj: 'export.obj', csv: 'export.csv', json: 'export.json', invariants: 'export.invariants', invariantsCsv: 'export.invariantsCsv', plot: 'export.plot' };
+    for (const [kind, b] of Object.entries(exportButtons)) b.textContent = t(names[/** @type {keyof typeof names} */ (kind)]);
+    storedNote.textContent = t('io.stored');
+  };
+
+  // the URL: a scene change is a new history entry, everything else replaces the current one
+  let hashTimer = 0;
+  /** @param {'push' | 'replace'} mode @param {boolean} [now] */
+  const saveHash = (mode, now = true) => {
+    clearTimeout(hashTimer);
+    const write = () => {
+      if (!stage.scene) return;
+      const hash = `#${writeState({ ...state, scene: stage.scene, params: stage.params, camera: stage.viewer.camera.toArray(), lang: state.lang, data: stage.data })}`;
+      if (hash === location.hash) return;
+      if (mode === 'push') history.pushState(null, '', hash);
+      else history.replaceState(null, '', hash);
+    };
+    if (now || mode === 'push') write();
+    else hashTimer = window.setTimeout(write, 200);
+  };
+
+  /** Opens the state of the current hash (on load, Back/Forward, or an edited link). */
+  const openHash = async () => {
+    state = readState(location.hash || (oneFile ? `#${storedHash()}` : ''), SCENES);
+    if (state.lang && pickLanguage(state.lang) !== lang) setLanguage(pickLanguage(state.lang), false);
+    doc.body.classList.toggle('embed', state.embed);
+    stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
+    const stored = sessionStorage.getItem(STORED);
+    const data = state.data ?? (stored ? parseStored(stored) : null);
+    await stage.open(state.scene, state.params, { camera: state.camera, data, notes: state.notes, autoplay: state.autoplay });
+    picker.value = state.scene.id;
+    localize();
+  };
+
+  /** @param {string} code @param {boolean} [write] */
+  const setLanguage = (code, write = true) => {
+    lang = code;
+    i18n = translator(lang);
+    state.lang = code;
+    stage.setLanguage(code);
+    localize();
+    buildShare();
+    if (write) saveHash('replace');
+  };
+
+  picker.addEventListener('change', () => {
+    const scene = SCENES.find((s) => s.id === picker.value);
+    if (!scene) return;
+    stage.open(scene, {}, {}).then(() => {
+      saveHash('push');
+      localize();
+    });
+  });
+  langPicker.addEventListener('change', () => setLanguage(langPicker.value));
+  window.addEventListener('popstate', () => openHash());
+  window.addEventListener('hashchange', () => openHash());
+
+  // import: pasted text or an uploaded file, shown in the "data" scene
+  const showImport = (/** @type {string} */ text) => {
+    let got;
+    try {
+      got = importSegments(text);
+    } catch (e) {
+      importError.hidden = false;
+      importError.textContent = `${String(/** @type {any} */ (e)?.message ?? e).replace(/\.?$/, '.')} ${i18n.t('io.stale')}`;
+      paste.setAttribute('aria-invalid', 'true');
+      paste.setAttribute('aria-describedby', importError.id);
+      return;
+    }
+    importError.hidden = true;
+    paste.removeAttribute('aria-invalid');
+    paste.removeAttribute('aria-describedby');
+    const data = { segments: got.segments, rows: got.rows, cols: got.cols };
+    if (linkable(data)) sessionStorage.removeItem(STORED);
+    else sessionStorage.setItem(STORED, JSON.stringify({ segments: Array.from(data.segments), rows: data.rows, cols: data.cols }));
+    storedNote.hidden = linkable(data);
+    const scene = /** @type {import('./scene.js').Scene} */ (SCENES.find((s) => s.id === 'data'));
+    stage.open(scene, {}, { data }).then(() => {
+      picker.value = 'data';
+      saveHash('push');
+    });
+  };
+  showButton.addEventListener('click', () => showImport(paste.value));
+  upload.addEventListener('change', async () => {
+    const file = upload.files?.[0];
+    if (file) showImport(await file.text());
+  });
+
+  // exports of what is shown
+  /** @param {import('./scene.js').Built} built */
+  const updateExports = (built) => {
+    const data = built.data;
+    for (const k of ['obj', 'csv', 'json']) exportButtons[k].disabled = !data;
+    for (const k of ['invariants', 'invariantsCsv']) exportButtons[k].disabled = !data || !!data.grid;
+    exportButtons.plot.disabled = !built.figure;
+  };
+  exports.addEventListener('click', async (e) => {
+    const kind = /** @type {HTMLElement} */ (e.target).dataset?.export;
+    const built = stage.session.built;
+    if (!kind || !built || !stage.scene) return;
+    const name = stage.scene.id;
+    try {
+      const data = built.data;
+      if (kind === 'png') download(`${name}.png`, await png(stage.viewer));
+      else if (kind === 'plot' && built.figure) download(`${name}-plot.svg`, new XMLSerializer().serializeToString(built.figure()), 'image/svg+xml');
+      else if (data && kind === 'obj') download(`${name}.obj`, obj(data.segments, { faces: !data.grid, name }), 'model/obj');
+      else if (data && (kind === 'csv' || kind === 'json')) download(`${name}.${kind}`, segmentsText(data.segments, kind, data.grid), kind === 'csv' ? 'text/csv' : 'application/json');
+      else if (data && kind === 'invariants') download(`${name}-invariants.json`, invariantsJson(data.segments), 'application/json');
+      else if (data && kind === 'invariantsCsv') download(`${name}-invariants.csv`, invariantsCsv(data.segments), 'text/csv');
+    } catch (err) {
+      stage.fail(err);
+    }
+  });
+
+  // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file
+  const buildShare = () => {
+    const { t } = i18n;
+    const field = (/** @type {string} */ label, /** @type {string} */ id, /** @type {() => string} */ value) => {
+      const wrap = el('div', { className: 'share-row' });
+      const l = el('label', { htmlFor: id, textContent: label });
+      const area = el('textarea', { id, rows: 2, readOnly: true, spellcheck: false });
+      const copy = el('button', { type: 'button', textContent: t('share.copy') });
+      const done = el('span', { className: 'share-done' });
+      done.setAttribute('aria-live', 'polite');
+      copy.addEventListener('click', async () => {
+        area.select();
+        try {
+          await navigator.clipboard.writeText(area.value);
+        } catch {
+          doc.execCommand?.('copy');
+        }
+        done.textContent = t('share.copied');
+      });
+      wrap.append(l, area, copy, done);
+      return { wrap, refresh: () => ((area.value = value()), (done.textContent = '')) };
+    };
+    const base = () => location.href.split('#')[0];
+    const hash = () => writeState({ ...state, scene: /** @type {any} */ (stage.scene), params: stage.params, camera: stage.viewer.camera.toArray(), lang, data: stage.data });
+    const fields = [
+      field(t('share.link'), 'share-link', () => `${base()}#${hash()}`),
+      field(t('share.iframe'), 'share-iframe', () => iframeSnippet(base(), hash(), t(stage.scene?.title ?? ''))),
+      field(t('share.element'), 'share-element', () => elementSnippet(/** @type {any} */ (stage.scene), stage.params, lang, oneFile ? 'ruledlab-embed.js' : new URL('./view.js', import.meta.url).href)),
+    ];
+    const onefile = el('button', { type: 'button', id: 'share-onefile', textContent: t('app.onefile') });
+    const onefileNote = el('p', { className: 'share-note', hidden: true });
+    onefile.addEventListener('click', async () => {
+      try {
+        const html = await oneFileWithState(oneFile, hash());
+        download(`ruledlab-${stage.scene?.id ?? 'view'}.html`, html, 'text/html');
+      } catch {
+        onefileNote.hidden = false;
+        onefileNote.textContent = t('app.onefileMissing');
+      }
+    });
+    const close = el('button', { type: 'button', textContent: t('share.close') });
+    close.addEventListener('click', () => share.close());
+    share.setAttribute('aria-label', t('share.title'));
+    share.replaceChildren(el('h2', { textContent: t('share.title') }), el('p', { textContent: t('share.intro') }), ...fields.map((f) => f.wrap), onefile, onefileNote, close);
+    share.dataset.ready = '1';
+    return fields;
+  };
+  let shareFields = buildShare();
+  shareButton.addEventListener('click', () => {
+    shareFields = buildShare();
+    shareFields.forEach((f) => f.refresh());
+    share.showModal();
+  });
+
+  stage.viewer.onFrame = (n) => (doc.body.dataset.frames = String(n));
+  localize();
+  await openHash();
+  saveHash('replace');
+  doc.getElementById('boot')?.remove();
+  doc.documentElement.dataset.started = '1';
+  // for the page tests and the curious
+  Object.assign(window, { ruledlab: { stage, scenes: SCENES, wasm: { live: liveObjects, memory: memoryBytes }, get state() { return state; } } });
+}
+
+/** Imported data kept in session storage. */
+function parseStored(/** @type {string} */ text) {
+  try {
+    const { segments, rows, cols } = JSON.parse(text);
+    return { segments: new Float64Array(segments), rows, cols };
+  } catch {
+    return null;
+  }
+}
+
+/** An <iframe> of this page in embed mode, with controls. */
+export function iframeSnippet(/** @type {string} */ base, /** @type {string} */ hash, /** @type {string} */ title) {
+  const src = `${base}#embed&controls&${hash.replace(/^embed&?|(^|&)controls(&|$)/g, '')}`;
+  const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
+  return `<iframe src="${attr(src)}" title="${attr(title.replace(/[_^]\{?([^}]*)\}?/g, '$1'))}" width="900" height="560" style="border: 0" allow="fullscreen"></iframe>`;
+}
+
+/** A <ruled-view> element showing this scene with these parameters. */
+export function elementSnippet(/** @type {import('./scene.js').Scene} */ scene, /** @type {import('./scene.js').Params} */ params, /** @type {string} */ lang, /** @type {string} */ script) {
+  const q = new URLSearchParams();
+  for (const p of scene.params) if (params[p.key] !== p.value) q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : String(params[p.key]));
+  const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
+  return `<script type="module" src="${attr(script)}"></script>\n<ruled-view scene="${attr(scene.id)}" params="${attr(q.toString())}" lang="${attr(lang)}" controls style="height: 560px"></ruled-view>`;
+}

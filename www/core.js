@@ -1,0 +1,47 @@
+// Starts the WebAssembly core once per page, for the page, every <ruled-view> and the worker.
+// By default the module is fetched from ../pkg/ruledlab_bg.wasm relative to this file, so an
+// installed package needs no configuration; `configure({ wasm })` takes a URL, a Response,
+// bytes or a compiled WebAssembly.Module instead (the one-file build passes its inlined bytes).
+import init from '../pkg/ruledlab.js';
+
+/** @typedef {string | URL | Response | BufferSource | WebAssembly.Module} WasmSource */
+
+/** @type {WasmSource | null} */
+let source = null;
+/** @type {Promise<unknown> | null} */
+let ready = null;
+/** @type {{memory: WebAssembly.Memory} | null} */
+let instance = null;
+/** @type {(() => Worker) | null} */
+let workerFactory = null;
+
+/**
+ * Where the wasm comes from, and how workers are made; call before the first view starts.
+ * @param {{wasm?: WasmSource, worker?: () => Worker}} options
+ */
+export function configure({ wasm, worker } = {}) {
+  if (ready && wasm !== undefined) throw new Error('ruledlab: configure({ wasm }) must come before the first view starts');
+  if (wasm !== undefined) source = wasm;
+  if (worker !== undefined) workerFactory = worker;
+}
+
+/** The wasm source in use (for the worker, which starts its own instance). */
+export function wasmSource() {
+  return source ?? new URL('../pkg/ruledlab_bg.wasm', import.meta.url).href;
+}
+
+/** Starts the core (once); resolves when its exports can be called. */
+export function start() {
+  ready ??= init({ module_or_path: /** @type {any} */ (wasmSource()) }).then((exports) => (instance = /** @type {any} */ (exports)));
+  return ready;
+}
+
+/** Bytes of wasm memory in use (it grows, never shrinks: a leak shows as growth); 0 before start. */
+export function memoryBytes() {
+  return instance?.memory.buffer.byteLength ?? 0;
+}
+
+/** A new worker for heavy computations (www/worker.js unless configured otherwise). */
+export function newWorker() {
+  return workerFactory ? workerFactory() : new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+}

@@ -1,0 +1,46 @@
+// The view as one HTML file, for a course page: the one-file build (dist/ruledlab.html) with
+// the current state written into its state block, which the file reads when it is opened
+// without a hash (from disk). The state block is JSON, never executed, so the file's
+// Content-Security-Policy hash of its script stays valid.
+
+/** The body of the one-file build before its script runs. */
+export const BODY = '<p id="boot" class="boot">Loading ruledlab …</p>';
+
+/** The id of the state block. */
+export const STATE_ID = 'ruledlab-state';
+
+/** The state block's JSON for a hash, with "<" escaped so it cannot end the block. */
+export function stateJson(/** @type {string} */ hash) {
+  return JSON.stringify({ hash }).replace(/</g, '\\u003c');
+}
+
+/** `html` (the one-file build) with its state block set to `hash`. */
+export function withState(/** @type {string} */ html, /** @type {string} */ hash) {
+  const block = new RegExp(`(<script type="application/json" id="${STATE_ID}">)[\\s\\S]*?(</script>)`);
+  if (!block.test(html)) throw new Error('not the one-file build: no state block');
+  return html.replace(block, (_, open, close) => `${open}${stateJson(hash)}${close}`);
+}
+
+/** The hash stored in the page's state block, if any. */
+export function storedHash() {
+  const text = document.getElementById(STATE_ID)?.textContent ?? '';
+  try {
+    const { hash } = JSON.parse(text || '{}');
+    return typeof hash === 'string' ? hash : '';
+  } catch {
+    return '';
+  }
+}
+
+/**
+ * The one-file build showing `hash`: this document itself when it is the one-file build,
+ * otherwise dist/ruledlab.html fetched from the server (throws when it is not there).
+ * @param {boolean} oneFile
+ * @param {string} hash
+ */
+export async function oneFileWithState(oneFile, hash) {
+  if (oneFile) return withState(`<!doctype html>\n<html lang="en">\n<head>${document.head.innerHTML}</head>\n<body>${BODY}</body>\n</html>\n`, hash);
+  const response = await fetch(new URL('../../dist/ruledlab.html', import.meta.url));
+  if (!response.ok) throw new Error(`dist/ruledlab.html: HTTP ${response.status}`);
+  return withState(await response.text(), hash);
+}

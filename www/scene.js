@@ -1,0 +1,251 @@
+// The scene contract: what a scene declares and what its create() returns. The page
+// (app.js), the <ruled-view> element and the one-file build read only these fields; nothing
+// of parsing, legends, wasm start-up or hash handling exists twice.
+
+/**
+ * A parameter of a scene: one control, one key in the link.
+ * @typedef {object} Param
+ * @property {string} key           its key in the URL hash and in `params`; unique in the scene
+ *                                  and never one of RESERVED_KEYS
+ * @property {'range' | 'select' | 'checkbox' | 'text'} type
+ * @property {string} label         i18n key of its label
+ * @property {number | string | boolean} value   the default
+ * @property {number} [min]          range: least value
+ * @property {number} [max]          range: greatest value
+ * @property {number} [step]         range: slider step
+ * @property {boolean} [exact]       range: a field beside the slider takes exact values ("1/13")
+ * @property {boolean} [play]        range: can be played (animated) by the player
+ * @property {() => Array<[string, string]>} [options]  select: [value, i18n key of its title]
+ * @property {number} [maxLength]    text: longest value (default 1000)
+ * @property {boolean} [refit]       select: whether a change reframes the camera (default true)
+ * @property {(value: number | string | boolean, params: Params) => Params} [sets]
+ *   other parameters a choice sets as well (a preset fills the formula fields)
+ * @property {(params: Params) => string | null} [unless]
+ *   the i18n key of the reason why the control does nothing for these `params` (it is then
+ *   disabled, the reason shown), or null when it matters
+ *
+ * @typedef {Record<string, number | string | boolean>} Params
+ *
+ * A legend entry: a style of theme.js and what it shows.
+ * @typedef {object} LegendEntry
+ * @property {string} style          key of STYLES
+ * @property {string} label          i18n key; the text may use R_{i,i+1}-style subscripts
+ * @property {(params: Params) => boolean} [when]   shown only when true
+ *
+ * What a scene is.
+ * @typedef {object} Scene
+ * @property {string} id             its name in links and in <ruled-view scene="…">
+ * @property {string} title          i18n key
+ * @property {string} text           i18n key of its explanation (markup from the project's own files)
+ * @property {Param[]} params
+ * @property {LegendEntry[]} legend
+ * @property {boolean} [paper]       whether the scene reproduces a figure of the paper
+ * @property {(params: Params, context: Context) => Built} create
+ * @property {(option: string) => string | null} [fieldOf]
+ *   the key of the parameter an error's `details.option` concerns (e.g. a formula "a[1]"), so
+ *   the page can mark that field
+ *
+ * What create() is given besides the parameters.
+ * @typedef {object} Context
+ * @property {(key: string, vars?: Record<string, string | number>) => string} t
+ * @property {(x: number | string | boolean | null | undefined) => string} format
+ * @property {ImportedData} [data]   your own segments (the "data" scene)
+ * @property {(segments: Float64Array, options: object, onProgress: (f: number) => void, draw?: number) => Promise<{segments: Float32Array, rulings: number, drawn: number}>} [refine]
+ *   refinement in a Web Worker, for large models (at most `draw` rulings come back: every k-th)
+ *
+ * Your own segments.
+ * @typedef {object} ImportedData
+ * @property {Float64Array} segments 6 numbers per line
+ * @property {number} [rows]
+ * @property {number} [cols]
+ *
+ * Something to draw: f32 buffers from the core, and a style of theme.js.
+ * @typedef {object} Layer
+ * @property {'segments' | 'polyline' | 'points' | 'mesh'} kind
+ *   segments: 6 floats per segment; polyline: 3 per point, consecutive points joined (NaN
+ *   points break it); points: 3 per point; mesh: 3 per vertex with `indices`
+ * @property {string} style          key of STYLES
+ * @property {Float32Array} positions
+ * @property {Uint32Array} [indices] mesh: 3 per triangle
+ * @property {boolean} [closed]      polyline: join the last point to the first
+ * @property {Float32Array | Float64Array} [transform]   4 × 4 model matrix, column-major
+ *
+ * A label anchored to a 3D point (plain text; `_{…}` marks a subscript).
+ * @typedef {object} Label
+ * @property {number[]} at
+ * @property {string} text
+ *
+ * One number of the readout.
+ * @typedef {object} Readout
+ * @property {string} label          i18n key (or text)
+ * @property {number | string} value
+ * @property {boolean} [exactZero]   say "exact" when the value is 0 (to rounding)
+ *
+ * What create() returns: everything drawn, said and exported for these parameters.
+ * @typedef {object} Built
+ * @property {{min: number[], max: number[]}} bounds
+ * @property {{yaw?: number, pitch?: number}} [camera]   the direction the scene is best seen from
+ * @property {Layer[]} layers
+ * @property {Label[]} [labels]
+ * @property {Float32Array} [keepClear]   segments (6 floats each) labels must not cover
+ * @property {Readout[]} [readouts]
+ * @property {string} description    what is shown, in words (for screen readers and the figure caption)
+ * @property {() => SVGElement} [figure]   a plot beside the view (built with the DOM)
+ * @property {Download[]} [downloads]
+ * @property {{segments: Float64Array, grid?: {rows: number, cols: number}}} [data]   for export
+ * @property {string} [note]          a remark shown under the readout (e.g. the level of detail)
+ * @property {(onProgress: (fraction: number) => void) => Promise<Built>} [later]   heavy work finishing in a worker
+ *
+ * @typedef {object} Download
+ * @property {string} label          i18n key
+ * @property {string} filename
+ * @property {string | (() => string)} content
+ * @property {string} type
+ */
+
+/** Hash keys the page itself uses: no scene parameter may take them. */
+export const RESERVED_KEYS = Object.freeze(['scene', 'cam', 'embed', 'controls', 'text', 'lang', 'autoplay', 'data', 'note', 'view']);
+
+/** Longest text parameter (a formula), in characters. */
+export const MAX_TEXT_PARAM = 1000;
+
+/**
+ * Checks a scene against the contract (keys unique, none reserved, defaults valid); throws at
+ * start-up so that a broken scene never reaches a user.
+ * @param {Scene} scene
+ * @returns {Scene}
+ */
+export function defineScene(scene) {
+  const seen = new Set();
+  for (const p of scene.params) {
+    if (RESERVED_KEYS.includes(p.key)) throw new Error(`scene ${scene.id}: parameter key "${p.key}" is reserved for the page`);
+    if (seen.has(p.key)) throw new Error(`scene ${scene.id}: parameter key "${p.key}" appears twice`);
+    seen.add(p.key);
+    // (a select's choices may come from the core, which is not started yet: the tests check those)
+    if (p.type !== 'select' && readValue(p, serialize(p, p.value)).note) throw new Error(`scene ${scene.id}: the default of "${p.key}" is not valid`);
+  }
+  return scene;
+}
+
+/** The string a parameter value takes in a link. */
+export function serialize(/** @type {Param} */ p, /** @type {number | string | boolean} */ value) {
+  if (p.type === 'checkbox') return value ? '1' : '0';
+  return String(value);
+}
+
+/**
+ * Reads a number written as a decimal or a fraction ("0.0769", "1/13", "-1/16").
+ * @param {string} text
+ * @returns {number} NaN when it is neither
+ */
+export function parseNumber(text) {
+  const t = String(text).trim().replace('−', '-').replace(',', '.');
+  const fraction = /^([+-]?\d+(?:\.\d*)?)\s*\/\s*(\d+(?:\.\d*)?)$/.exec(t);
+  if (fraction) return Number(fraction[1]) / Number(fraction[2]);
+  return /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(t) ? Number(t) : NaN;
+}
+
+/**
+ * One parameter's value from its link text: the value, or the default with a note saying why.
+ * @param {Param} p
+ * @param {string | null} raw
+ * @returns {{value: number | string | boolean, note?: string}}
+ */
+export function readValue(p, raw) {
+  if (raw === null) return { value: p.value };
+  if (p.type === 'checkbox') {
+    if (['1', 'true'].includes(raw)) return { value: true };
+    if (['0', 'false'].includes(raw)) return { value: false };
+    return { value: p.value, note: 'note.notOnOff' };
+  }
+  if (p.type === 'range') {
+    const x = parseNumber(raw);
+    if (!Number.isFinite(x)) return { value: p.value, note: 'note.notNumber' };
+    const min = /** @type {number} */ (p.min), max = /** @type {number} */ (p.max);
+    if (x < min || x > max) return { value: Math.min(max, Math.max(min, x)), note: 'note.clamped' };
+    return { value: x };
+  }
+  if (p.type === 'select') {
+    const values = (p.options?.() ?? []).map(([v]) => v);
+    return values.includes(raw) ? { value: raw } : { value: p.value, note: 'note.unknownChoice' };
+  }
+  const limit = p.maxLength ?? MAX_TEXT_PARAM;
+  return raw.length <= limit ? { value: raw } : { value: p.value, note: 'note.tooLong' };
+}
+
+/**
+ * Every parameter of `scene` from a query (missing ones take their defaults); values that
+ * cannot be used fall back to their defaults, each with a note for the page to show.
+ * @param {Scene} scene
+ * @param {URLSearchParams} query
+ * @returns {{params: Params, notes: Array<{key: string, note: string}>}}
+ */
+export function readParams(scene, query) {
+  /** @type {Params} */
+  const params = {};
+  const notes = [];
+  for (const p of scene.params) {
+    const { value, note } = readValue(p, query.get(p.key));
+    params[p.key] = value;
+    if (note) notes.push({ key: p.key, note });
+  }
+  return { params, notes };
+}
+
+/** The defaults of every parameter. */
+export function defaults(/** @type {Scene} */ scene) {
+  return Object.fromEntries(scene.params.map((p) => [p.key, p.value]));
+}
+
+/**
+ * The reason (i18n key) why `p` does nothing for `params`, or null.
+ * @param {Param} p
+ * @param {Params} params
+ */
+export function irrelevance(p, params) {
+  return p.unless?.(params) ?? null;
+}
+
+/**
+ * Runs `body` with an `own` function that registers wasm objects, and frees every one of them
+ * afterwards, whether `body` returns or throws. Scenes create their wasm objects through it.
+ * @template T
+ * @param {(own: <O extends {free(): void}>(object: O) => O) => T} body
+ * @returns {T}
+ */
+export function scoped(body) {
+  /** @type {Array<{free(): void}>} */
+  const owned = [];
+  try {
+    return body((object) => {
+      owned.push(object);
+      return object;
+    });
+  } finally {
+    for (const o of owned.reverse()) o.free();
+  }
+}
+
+/**
+ * Bounding box {min, max} of flat xyz arrays (NaN skipped).
+ * @param {...ArrayLike<number>} arrays
+ */
+export function bounds(...arrays) {
+  const min = [Infinity, Infinity, Infinity];
+  const max = [-Infinity, -Infinity, -Infinity];
+  for (const data of arrays) {
+    for (let i = 0; i + 2 < data.length; i += 3) {
+      for (let k = 0; k < 3; k++) {
+        const v = data[i + k];
+        if (v < min[k]) min[k] = v;
+        if (v > max[k]) max[k] = v;
+      }
+    }
+  }
+  return { min, max };
+}
+
+/** A Float32Array copy of any numbers (no copy when already f32). */
+export function f32(/** @type {ArrayLike<number>} */ data) {
+  return data instanceof Float32Array ? data : new Float32Array(data);
+}

@@ -1,0 +1,34 @@
+// What several scenes share: the analytic surfaces as menu choices, and small helpers.
+import { AnalyticSurface, AnalyticCongruence } from '../../pkg/ruledlab.js';
+
+/** @type {Array<{name: string, title: string, uMin: number, uMax: number, vMin: number, vMax: number, closed: boolean}> | null} */
+let surfaces = null;
+
+/** The built-in analytic surfaces (read from the core once, after it has started). */
+export function surfaceList() {
+  surfaces ??= AnalyticSurface.list();
+  return surfaces;
+}
+
+/** The built-in surface named `name` (its default ranges). */
+export function surfaceInfo(/** @type {string} */ name) {
+  const info = surfaceList().find((s) => s.name === name);
+  if (!info) throw new Error(`unknown surface "${name}"`);
+  return info;
+}
+
+/** Menu choices of the surfaces `names` (default: all): [value, i18n key]. */
+export function surfaceOptions(/** @type {string[] | null} */ names = null) {
+  return () => (names ?? surfaceList().map((s) => s.name)).map((n) => /** @type {[string, string]} */ ([n, `surface.${n}`]));
+}
+
+/** Menu choices of the built-in congruences. */
+export function congruenceOptions() {
+  return AnalyticCongruence.list().map((c) => /** @type {[string, string]} */ ([c.name, `congruence.${c.name}`]));
+}
+
+/** Sampling options of a surface: its defaults, overridden by `ranges`. */
+export function rangesOf(/** @type {string} */ name, /** @type {object} */ ranges = {}) {
+  const { uMin, uMax, vMin, vMax, closed } = surfaceInfo(name);
+  return { uMin, uMax, vMin, vMax, closed, ...ranges };
+}

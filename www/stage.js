@@ -1,0 +1,445 @@
+// A scene on screen with everything around it: the 3D view (labels, legend, toolbar with
+// Fit / Reset / Fullscreen / shortcuts, progress, errors), and beside or below it — as the
+// width allows — the controls with the player, the readout, the description, downloads and
+// the explanation. The page (app.js) and <ruled-view> are both a Stage plus their own chrome;
+// a Stage is told its state and reports every change, it never touches the URL itself.
+import { start } from './core.js';
+import { Viewer } from './viewer.js';
+import { SceneSession } from './session.js';
+import { defaults } from './scene.js';
+import { translator, pickLanguage } from './i18n/index.js';
+import { buildControls } from './ui/controls.js';
+import { showLegend } from './ui/legend.js';
+import { showReadout, readoutSentence } from './ui/readout.js';
+import { Player } from './ui/player.js';
+import { appendRich } from './ui/richtext.js';
+import { refineInWorker } from './compute.js';
+
+/** Below this width (CSS px) the panel goes under the view. */
+const NARROW = 720;
+
+/** Least time between two announcements of the readout (ms). */
+const ANNOUNCE_EVERY = 1000;
+
+/**
+ * @typedef {object} StageOptions
+ * @property {boolean} [controls]   show the controls (and the readout)
+ * @property {boolean} [text]       show the explanation
+ * @property {string | null} [lang]
+ * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset', ended: boolean}) => void} [onChange]
+ * @property {(error: unknown) => void} [onError]
+ * @property {(built: import('./scene.js').Built) => void} [onBuilt]
+ */
+
+let serial = 0;
+
+export class Stage {
+  /**
+   * @param {HTMLElement} host   the element the stage fills (or a container in a shadow root)
+   * @param {StageOptions} [options]
+   */
+  constructor(host, options = {}) {
+    this.host = host;
+    this.options = options;
+    this.i18n = translator(pickLanguage(options.lang));
+    const id = `rl-stage-${++serial}`;
+    const doc = host.ownerDocument;
+    const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) => Object.assign(doc.createElement(tag), props);
+
+    this.root = el('div', { className: 'rl-stage' });
+    this.view = el('div', { className: 'rl-view' });
+    this.canvas = el('canvas', { tabIndex: 0 });
+    this.canvas.setAttribute('role', 'img');
+    this.labels = el('div', { className: 'rl-labels' });
+    this.labels.setAttribute('aria-hidden', 'true');
+    this.legend = el('ul', { className: 'rl-legend' });
+    this.toolbar = el('div', { className: 'rl-toolbar' });
+    this.progress = el('div', { className: 'rl-progress', hidden: true });
+    this.progressBar = el('progress', { max: 1, value: 0 });
+    this.cancel = el('button', { type: 'button' });
+    this.progress.append(this.progressBar, this.cancel);
+    this.error = el('p', { className: 'rl-error', hidden: true });
+    this.error.setAttribute('role', 'alert');
+    this.noteBox = el('p', { className: 'rl-note', hidden: true });
+    this.hint = el('p', { className: 'rl-hint' });
+    this.description = el('p', { className: 'rl-sr-only', id: `${id}-description` });
+    this.canvas.setAttribute('aria-describedby', this.description.id);
+    this.status = el('p', { className: 'rl-sr-only' });
+    this.status.setAttribute('aria-live', 'polite');
+    this.view.append(this.canvas, this.labels, this.legend, this.toolbar, this.progress, this.noteBox, this.error, this.hint, this.description, this.status);
+
+    this.buttons = {
+      fit: el('button', { type: 'button', className: 'rl-fit' }),
+      reset: el('button', { type: 'button', className: 'rl-reset' }),
+      fullscreen: el('button', { type: 'button', className: 'rl-fullscreen' }),
+      help: el('button', { type: 'button', className: 'rl-help' }),
+    };
+    this.toolbar.append(...Object.values(this.buttons));
+
+    this.panel = el('div', { className: 'rl-panel' });
+    this.heading = el('h2');
+    this.form = /** @type {HTMLFormElement} */ (el('form', { className: 'rl-controls' }));
+    this.player = el('div', { className: 'rl-player', hidden: true });
+    this.readout = el('dl', { className: 'rl-readout' });
+    this.note = el('p', { className: 'rl-readout-note', hidden: true });
+    this.caption = el('p', { className: 'rl-caption' });
+    this.figure = el('figure', { className: 'rl-figure' });
+    this.downloads = el('div', { className: 'rl-downloads' });
+    this.text = el('article', { className: 'rl-text' });
+    this.panel.append(this.heading, this.form, this.player, this.readout, this.note, this.caption, this.figure, this.downloads, this.text);
+    this.root.append(this.view, this.panel);
+    this.shortcuts = /** @type {HTMLDialogElement} */ (el('dialog', { className: 'rl-shortcuts' }));
+    this.root.append(this.shortcuts);
+    host.append(this.root);
+
+    this.viewer = new Viewer(this.canvas, this.labels);
+    this.session = new SceneSession(this.viewer, {
+      onBuilt: (built, final) => this.shown(built, final),
+      onError: (e) => this.fail(e),
+      onProgress: (f) => {
+        this.progress.hidden = f === null;
+        if (f !== null) this.progressBar.value = f;
+      },
+    });
+    this.playerControl = new Player((key, value) => this.setParam(key, Number(value.toFixed(Player.stepped(this.param(key)) ? 0 : 4)), false));
+    /** @type {import('./scene.js').Scene | null} */
+    this.scene = null;
+    /** @type {import('./scene.js').Params} */
+    this.params = {};
+    /** @type {import('./scene.js').ImportedData | null} */
+    this.data = null;
+    /** @type {ReturnType<typeof buildControls> | null} */
+    this.controls = null;
+    this.lastAnnounced = 0;
+    this.announceTimer = 0;
+
+    this.viewer.onCameraChange = (ended) => {
+      this.options.onChange?.({ reason: 'camera', ended });
+      if (ended) this.announce();
+    };
+    this.buttons.fit.addEventListener('click', () => {
+      this.viewer.fit();
+      this.options.onChange?.({ reason: 'camera', ended: true });
+    });
+    this.buttons.reset.addEventListener('click', () => this.reset());
+    this.buttons.fullscreen.addEventListener('click', () => this.toggleFullscreen());
+    this.buttons.help.addEventListener('click', () => this.showShortcuts());
+    this.cancel.addEventListener('click', () => {
+      this.session.dispose();
+      this.progress.hidden = true;
+    });
+    this.root.addEventListener('keydown', (e) => this.key(e));
+    this.resize = new ResizeObserver(() => this.layout());
+    this.resize.observe(this.root);
+    this.setPanel(options.controls ?? true, options.text ?? true);
+    this.localize();
+  }
+
+  /** The Param of the current scene named `key`. */
+  param(/** @type {string} */ key) {
+    return /** @type {import('./scene.js').Param} */ (this.scene?.params.find((p) => p.key === key));
+  }
+
+  /** Shows or hides the controls and the explanation. */
+  setPanel(/** @type {boolean} */ controls, /** @type {boolean} */ text) {
+    this.showControls = controls;
+    this.showText = text;
+    this.root.classList.toggle('rl-no-controls', !controls);
+    this.text.hidden = !text;
+    this.heading.hidden = !controls && !text;
+    this.panel.hidden = !controls && !text;
+    this.layout();
+  }
+
+  /** Panel beside the view when wide, below it when narrow. */
+  layout() {
+    const width = this.root.getBoundingClientRect().width || this.host.getBoundingClientRect().width;
+    this.root.classList.toggle('rl-narrow', width > 0 && width < NARROW);
+    this.viewer.requestRender();
+  }
+
+  /** The texts that depend on the language but not on the scene. */
+  localize() {
+    const { t } = this.i18n;
+    this.canvas.setAttribute('aria-label', t('view.label'));
+    this.buttons.fit.textContent = t('view.fit');
+    this.buttons.fit.title = t('view.fitTitle');
+    this.buttons.reset.textContent = t('view.reset');
+    this.buttons.reset.title = t('view.resetTitle');
+    this.buttons.fullscreen.textContent = t('view.fullscreen');
+    this.buttons.help.textContent = '?';
+    this.buttons.help.setAttribute('aria-label', t('view.shortcuts'));
+    this.buttons.help.title = t('view.shortcuts');
+    this.cancel.textContent = t('view.cancel');
+    this.legend.setAttribute('aria-label', t('view.legend'));
+    this.form.setAttribute('aria-label', t('panel.controls'));
+    this.readout.setAttribute('aria-label', t('panel.readout'));
+    const coarse = typeof matchMedia === 'function' && matchMedia('(pointer: coarse)').matches;
+    this.hint.textContent = t(coarse ? 'view.hintTouch' : 'view.hintMouse');
+    this.buildShortcuts();
+  }
+
+  /** The language (a code of i18n/index.js, or null for the browser's). */
+  setLanguage(/** @type {string | null} */ lang) {
+    this.i18n = translator(pickLanguage(lang));
+    this.localize();
+    if (this.scene) this.enter(this.scene, this.params, { camera: this.viewer.camera.toArray(), fit: false });
+  }
+
+  /**
+   * Opens a scene with `params` (missing ones take their defaults).
+   * @param {import('./scene.js').Scene} scene
+   * @param {import('./scene.js').Params} params
+   * @param {{camera?: number[] | null, fit?: boolean, data?: import('./scene.js').ImportedData | null, notes?: Array<{key: string, note: string}>, autoplay?: boolean}} [options]
+   */
+  async open(scene, params, options = {}) {
+    try {
+      await start();
+    } catch (e) {
+      this.fail(e);
+      throw e;
+    }
+    if (options.data !== undefined) this.data = options.data;
+    this.enter(scene, { ...defaults(scene), ...params }, { camera: options.camera ?? null, fit: true });
+    this.showNotes(options.notes ?? []);
+    if (options.autoplay && !Player.reducedMotion()) {
+      const playable = scene.params.find((p) => p.play && !p.unless?.(this.params));
+      if (playable) this.togglePlay(playable.key);
+    }
+  }
+
+  /**
+   * @param {import('./scene.js').Scene} scene
+   * @param {import('./scene.js').Params} params
+   * @param {{camera?: number[] | null, fit?: boolean}} options
+   */
+  enter(scene, params, { camera = null, fit = true }) {
+    const { t } = this.i18n;
+    if (this.scene !== scene) this.stopPlaying();
+    this.scene = scene;
+    this.params = { ...params };
+    this.heading.textContent = '';
+    appendRich(this.heading, t(scene.title));
+    // the explanation is markup from the project's own language files (never user text)
+    this.text.innerHTML = t(scene.text);
+    this.controls = buildControls(this.form, scene, this.params, this.i18n, {
+      onChange: (key, value, ended) => this.setParam(key, value, ended),
+      onPlay: (key) => this.togglePlay(key),
+    });
+    this.buildPlayer();
+    this.compute({ fit: fit && !camera });
+    if (camera) {
+      this.viewer.camera.fromArray(camera);
+      this.viewer.requestRender();
+    }
+  }
+
+  /** Sets one parameter and recomputes. */
+  setParam(/** @type {string} */ key, /** @type {number | string | boolean} */ value, ended = true) {
+    if (!this.scene || this.params[key] === value) {
+      if (ended) {
+        this.options.onChange?.({ reason: 'param', ended: true });
+        this.announce();
+      }
+      return;
+    }
+    const p = this.param(key);
+    this.params = { ...this.params, [key]: value, ...(p?.sets?.(value, this.params) ?? {}) };
+    this.controls?.update(this.params);
+    this.compute({ fit: p?.type === 'select' && p.refit !== false });
+    this.options.onChange?.({ reason: 'param', ended });
+    if (ended) this.announce();
+  }
+
+  /** Recomputes the scene for the current parameters. */
+  compute({ fit = false } = {}) {
+    if (!this.scene) return;
+    const context = { t: this.i18n.t, format: this.i18n.format, data: this.data ?? undefined, refine: refineInWorker };
+    const built = this.session.show(this.scene, this.params, context, { fit });
+    this.root.classList.toggle('rl-stale', !built);
+    if (built) this.error.hidden = true;
+  }
+
+  /** After a computation: legend, readout, description, downloads, figure. */
+  shown(/** @type {import('./scene.js').Built} */ built, /** @type {boolean} */ final) {
+    if (!this.scene) return;
+    const { t } = this.i18n;
+    showLegend(this.legend, this.scene, this.params, t);
+    showReadout(this.readout, built.readouts ?? [], this.i18n);
+    this.note.hidden = !built.note;
+    this.note.textContent = built.note ?? '';
+    this.description.replaceChildren();
+    appendRich(this.description, built.description);
+    this.caption.replaceChildren();
+    appendRich(this.caption, built.description);
+    this.figure.replaceChildren(...(built.figure ? [built.figure()] : []));
+    this.downloads.replaceChildren(
+      ...(built.downloads ?? []).map((d) => {
+        const b = Object.assign(this.root.ownerDocument.createElement('button'), { type: 'button', textContent: t(d.label) });
+        b.addEventListener('click', () => download(d.filename, typeof d.content === 'function' ? d.content() : d.content, d.type));
+        return b;
+      }),
+    );
+    for (const key of this.scene.params.map((p) => p.key)) this.controls?.invalid(key, null);
+    this.root.dataset.scene = this.scene.id;
+    if (final) this.root.dataset.ready = '1';
+    else delete this.root.dataset.ready;
+    this.options.onBuilt?.(built);
+  }
+
+  /** Shows an error in the view (and next to the control it concerns); the last picture stays. */
+  fail(/** @type {unknown} */ e) {
+    const error = /** @type {any} */ (e);
+    const message = String(error?.message ?? error);
+    this.error.hidden = false;
+    this.error.textContent = message;
+    const key = this.scene && error?.details?.option ? this.scene.fieldOf?.(error.details.option) : null;
+    if (key) this.controls?.invalid(key, message);
+    this.options.onError?.(e);
+  }
+
+  /** Notes about link values that were not used. */
+  showNotes(/** @type {Array<{key: string, note: string}>} */ notes) {
+    const { t } = this.i18n;
+    this.noteBox.hidden = notes.length === 0;
+    this.noteBox.textContent = notes.map(({ key, note }) => t(note, { key })).join(' ');
+  }
+
+  /** Announces the readout to screen readers: only when an interaction ends, at most once a second. */
+  announce() {
+    const now = performance.now();
+    clearTimeout(this.announceTimer);
+    const say = () => {
+      this.lastAnnounced = performance.now();
+      const built = this.session.built;
+      if (built) this.status.textContent = readoutSentence(built.readouts ?? [], this.i18n);
+    };
+    const wait = this.lastAnnounced + ANNOUNCE_EVERY - now;
+    if (wait <= 0) say();
+    else this.announceTimer = window.setTimeout(say, wait);
+  }
+
+  /** The player row: speed and single step, shown when the scene has a playable parameter. */
+  buildPlayer() {
+    const { t } = this.i18n;
+    const doc = this.root.ownerDocument;
+    const playable = this.scene?.params.filter((p) => p.play) ?? [];
+    this.player.hidden = playable.length === 0;
+    this.player.replaceChildren();
+    if (!playable.length) return;
+    const speedLabel = Object.assign(doc.createElement('label'), { textContent: t('player.speed') });
+    const speed = doc.createElement('select');
+    for (const s of [0.25, 0.5, 1, 2, 4]) speed.add(new Option(`${this.i18n.lang === 'de' ? String(s).replace('.', ',') : s}×`, String(s)));
+    speed.value = String(this.playerControl.speed);
+    speed.addEventListener('change', () => (this.playerControl.speed = Number(speed.value)));
+    speedLabel.append(' ', speed);
+    const step = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('player.step') });
+    step.addEventListener('click', () => {
+      const key = this.playerControl.param?.key ?? playable.find((p) => !p.unless?.(this.params))?.key;
+      if (!key) return;
+      this.stopPlaying();
+      this.playerControl.step(this.param(key), Number(this.params[key]));
+      this.announce();
+    });
+    this.player.append(speedLabel, step);
+  }
+
+  /** Plays or pauses parameter `key`. */
+  togglePlay(/** @type {string} */ key) {
+    const p = this.param(key);
+    if (!p) return;
+    if (this.playerControl.playing && this.playerControl.param?.key === key) {
+      this.stopPlaying();
+      this.announce();
+      return;
+    }
+    this.playerControl.play(p, Number(this.params[key]));
+    this.controls?.playing(key);
+  }
+
+  stopPlaying() {
+    if (this.playerControl.playing) this.options.onChange?.({ reason: 'param', ended: true });
+    this.playerControl.stop();
+    this.controls?.playing(null);
+  }
+
+  /** The scene's defaults and its fitted camera. */
+  reset() {
+    if (!this.scene) return;
+    this.stopPlaying();
+    this.enter(this.scene, defaults(this.scene), { fit: true });
+    this.options.onChange?.({ reason: 'reset', ended: true });
+    this.announce();
+  }
+
+  /** Fullscreen for the whole stage (view and panel), or back. */
+  toggleFullscreen() {
+    const doc = this.root.ownerDocument;
+    if (doc.fullscreenElement) doc.exitFullscreen?.();
+    else this.root.requestFullscreen?.().catch(() => {});
+  }
+
+  /** Keys of the stage: ? shortcuts, R reset, Space play/pause, . single step (the view's own keys are the camera's). */
+  key(/** @type {KeyboardEvent} */ e) {
+    const target = /** @type {HTMLElement} */ (e.target);
+    const typing = target.matches?.('input[type=text], textarea, select');
+    if (typing || e.ctrlKey || e.metaKey || e.altKey) return;
+    if (e.key === '?') {
+      e.preventDefault();
+      this.showShortcuts();
+    } else if (target === this.canvas && (e.key === 'r' || e.key === 'R')) {
+      e.preventDefault();
+      this.reset();
+    } else if (target === this.canvas && e.key === ' ') {
+      e.preventDefault();
+      const key = this.playerControl.param?.key ?? this.scene?.params.find((p) => p.play && !p.unless?.(this.params))?.key;
+      if (key) this.togglePlay(key);
+    } else if (target === this.canvas && e.key === '.') {
+      e.preventDefault();
+      /** @type {HTMLButtonElement | null} */ (this.player.querySelector('button'))?.click();
+    }
+  }
+
+  buildShortcuts() {
+    const { t } = this.i18n;
+    const doc = this.root.ownerDocument;
+    const table = doc.createElement('table');
+    const keys = [
+      ['←  →  ↑  ↓', 'keys.orbit'], ['Shift + ←  →  ↑  ↓', 'keys.pan'], ['+  −', 'keys.zoom'], ['F', 'keys.fit'],
+      ['R', 'keys.reset'], ['Space', 'keys.play'], ['.', 'keys.step'], ['Tab', 'keys.tab'], ['?', 'keys.help'], ['Esc', 'keys.close'],
+    ];
+    for (const [k, what] of keys) {
+      const row = table.insertRow();
+      row.insertCell().append(Object.assign(doc.createElement('kbd'), { textContent: k }));
+      row.insertCell().textContent = t(what);
+    }
+    const close = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('keys.closeButton') });
+    close.addEventListener('click', () => this.shortcuts.close());
+    const title = Object.assign(doc.createElement('h2'), { textContent: t('keys.title') });
+    const intro = Object.assign(doc.createElement('p'), { textContent: t('keys.intro') });
+    this.shortcuts.setAttribute('aria-label', t('keys.title'));
+    this.shortcuts.replaceChildren(title, intro, table, close);
+  }
+
+  showShortcuts() {
+    if (!this.shortcuts.open) this.shortcuts.showModal?.();
+  }
+
+  /** Releases the GL context, the worker's pending work and every listener. */
+  dispose() {
+    this.stopPlaying();
+    clearTimeout(this.announceTimer);
+    this.session.dispose();
+    this.viewer.dispose();
+    this.resize.disconnect();
+    this.root.remove();
+  }
+}
+
+/** Downloads `content` (a string or a Blob) as `filename`. */
+export function download(/** @type {string} */ filename, /** @type {string | Blob} */ content, type = 'text/plain') {
+  const blob = content instanceof Blob ? content : new Blob([content], { type });
+  const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(blob), download: filename });
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}

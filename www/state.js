@@ -1,0 +1,115 @@
+// The state of a view in the URL hash, and back:
+//   #scene=striction&surface=hyperboloid&n=36&cam=yaw,pitch,distance,x,y,z&lang=de
+// The page's own keys (RESERVED_KEYS of scene.js) never collide with a scene's parameters.
+// A hash longer than MAX_HASH characters is not read at all (the page says so); a value that
+// cannot be used falls back to its default with a note, never an exception.
+import { readParams, serialize } from './scene.js';
+
+/** Longest hash read, in characters (imported data of up to 200 rulings fits at full precision). */
+export const MAX_HASH = 65536;
+
+/** Most rulings (or lines) of imported data kept in the link; larger imports go to session storage. */
+export const MAX_LINK_RULINGS = 200;
+
+/**
+ * @typedef {object} ViewState
+ * @property {import('./scene.js').Scene} scene
+ * @property {import('./scene.js').Params} params
+ * @property {number[] | null} camera    yaw, pitch, distance, target x, y, z
+ * @property {string | null} lang
+ * @property {boolean} embed             the view alone (for an iframe)
+ * @property {boolean} controls          with #embed: show the controls too
+ * @property {boolean} text              with #embed: show the explanation too
+ * @property {boolean} autoplay          start playing
+ * @property {import('./scene.js').ImportedData | null} data
+ * @property {Array<{key: string, note: string}>} notes   values that were not used, and why
+ */
+
+/**
+ * Reads a hash (with or without "#") against the list of scenes.
+ * @param {string} hash
+ * @param {import('./scene.js').Scene[]} scenes
+ * @returns {ViewState}
+ */
+export function readState(hash, scenes) {
+  const notes = [];
+  let text = String(hash ?? '').replace(/^#/, '');
+  if (text.length > MAX_HASH) {
+    notes.push({ key: 'link', note: 'note.linkTooLong' });
+    text = '';
+  }
+  const q = new URLSearchParams(text);
+  const wanted = q.get('scene');
+  let scene = scenes.find((s) => s.id === wanted);
+  if (!scene) {
+    if (wanted !== null) notes.push({ key: 'scene', note: 'note.unknownScene' });
+    scene = scenes[0];
+  }
+  const read = readParams(scene, q);
+  notes.push(...read.notes);
+  const camera = (q.get('cam') ?? '').split(',').map(Number);
+  const cameraOk = camera.length === 6 && camera.every(Number.isFinite) && camera[2] > 0;
+  if (q.has('cam') && !cameraOk) notes.push({ key: 'cam', note: 'note.badCamera' });
+  const data = q.has('data') ? readData(q.get('data') ?? '') : null;
+  if (q.has('data') && !data) notes.push({ key: 'data', note: 'note.badData' });
+  const lang = q.get('lang');
+  return {
+    scene,
+    params: read.params,
+    camera: cameraOk ? camera : null,
+    lang: lang && /^[a-z]{2}(-[A-Za-z]{2})?$/.test(lang) ? lang : null,
+    embed: q.has('embed'),
+    controls: q.has('controls'),
+    text: q.has('text'),
+    autoplay: q.has('autoplay'),
+    data,
+    notes,
+  };
+}
+
+/**
+ * The hash of a state (without "#").
+ * @param {Omit<ViewState, 'notes'>} state
+ */
+export function writeState(state) {
+  const q = new URLSearchParams();
+  if (state.embed) q.set('embed', '');
+  if (state.embed && state.controls) q.set('controls', '');
+  if (state.embed && state.text) q.set('text', '');
+  q.set('scene', state.scene.id);
+  for (const p of state.scene.params) q.set(p.key, serialize(p, state.params[p.key]));
+  if (state.camera) q.set('cam', state.camera.map((x) => Number(x.toPrecision(6))).join(','));
+  if (state.lang) q.set('lang', state.lang);
+  if (state.data && linkable(state.data)) q.set('data', writeData(state.data));
+  return q.toString().replace(/=(&|$)/g, '$1');
+}
+
+/** Whether imported data is small enough for a link. */
+export function linkable(/** @type {import('./scene.js').ImportedData} */ data) {
+  return data.segments.length / 6 <= MAX_LINK_RULINGS;
+}
+
+/** "rows x cols:" (for a congruence) then the numbers, comma-separated, at full precision. */
+export function writeData(/** @type {import('./scene.js').ImportedData} */ data) {
+  const shape = data.rows && data.cols ? `${data.rows}x${data.cols}:` : '';
+  return shape + Array.from(data.segments, (x) => String(x)).join(',');
+}
+
+/**
+ * Reads `writeData`'s text; null when it is not that.
+ * @param {string} text
+ * @returns {import('./scene.js').ImportedData | null}
+ */
+export function readData(text) {
+  const m = /^(?:(\d{1,4})x(\d{1,4}):)?([-+0-9.eE,]*)$/.exec(text);
+  if (!m) return null;
+  const numbers = m[3].split(',').map(Number);
+  if (numbers.length % 6 !== 0 || numbers.length / 6 > MAX_LINK_RULINGS || !numbers.every(Number.isFinite)) return null;
+  const segments = new Float64Array(numbers);
+  if (m[1]) {
+    const [rows, cols] = [Number(m[1]), Number(m[2])];
+    if (rows * cols * 6 !== numbers.length) return null;
+    return { segments, rows, cols };
+  }
+  return { segments };
+}

@@ -1,0 +1,98 @@
+// The styles of a view with its controls, shared by the page (adopted into the document) and
+// every <ruled-view> (adopted into its shadow root): one stylesheet, no inline style attributes,
+// so a strict Content-Security-Policy needs no 'unsafe-inline'.
+
+export const CSS = `
+.rl-stage { --ink: #1d2435; --muted: #535c70; --paper: #fbfaf7; --panel: #ffffff; --line: #e1ded5; --focus: #0b5cad;
+  display: flex; width: 100%; height: 100%; min-height: 0; color: var(--ink); background: var(--paper);
+  font: 15px/1.45 system-ui, -apple-system, "Segoe UI", sans-serif; }
+.rl-stage *, .rl-stage *::before, .rl-stage *::after { box-sizing: border-box; }
+.rl-stage [hidden] { display: none !important; }
+.rl-no-controls .rl-controls, .rl-no-controls .rl-player, .rl-no-controls .rl-readout, .rl-no-controls .rl-readout-note, .rl-no-controls .rl-caption, .rl-no-controls .rl-downloads, .rl-no-controls .rl-figure { display: none !important; }
+.rl-stage.rl-narrow { flex-direction: column; }
+.rl-view { position: relative; flex: 1 1 auto; min-width: 0; min-height: 240px; overflow: hidden; background: var(--paper); }
+.rl-stage.rl-narrow .rl-view { flex: 0 0 auto; height: min(62vh, 34rem); }
+.rl-view canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; touch-action: none; outline: none; }
+.rl-view canvas:focus-visible { outline: 3px solid var(--focus); outline-offset: -3px; }
+.rl-view:has(canvas:focus-visible)::after { content: ""; position: absolute; inset: 0; border: 3px solid var(--focus); pointer-events: none; }
+.rl-labels { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
+.rl-label { position: absolute; left: 0; top: 0; font: italic 15px/1 "Times New Roman", "STIX Two Text", serif; color: var(--ink);
+  background: rgb(251 250 247 / .8); padding: 1px 3px; border-radius: 3px; white-space: nowrap; }
+.rl-label sub, .rl-legend sub, .rl-controls sub, .rl-readout sub { font-size: 72%; }
+.rl-legend { position: absolute; left: .6rem; top: .5rem; margin: 0; padding: .35rem .6rem; list-style: none; max-width: calc(100% - 9rem);
+  background: rgb(255 255 255 / .88); border-radius: 6px; font-size: .8rem; line-height: 1.35; }
+.rl-legend li { display: flex; align-items: center; gap: .45rem; }
+.rl-swatch { flex: none; }
+.rl-toolbar { position: absolute; right: .5rem; top: .5rem; display: flex; gap: .3rem; flex-wrap: wrap; justify-content: flex-end; }
+.rl-stage button, .rl-stage select, .rl-stage input[type=text] { font: inherit; font-size: .85rem; color: var(--ink); }
+.rl-stage select { min-height: 28px; }
+.rl-stage button { min-height: 28px; min-width: 28px; padding: .2rem .6rem; border: 1px solid #c9c5ba; border-radius: 6px;
+  background: rgb(255 255 255 / .92); cursor: pointer; }
+.rl-stage button:hover { border-color: var(--focus); }
+.rl-stage button:disabled { opacity: .45; cursor: default; }
+.rl-stage :focus-visible { outline: 3px solid var(--focus); outline-offset: 2px; }
+.rl-progress { position: absolute; left: 50%; top: .6rem; transform: translateX(-50%); display: flex; gap: .4rem; align-items: center;
+  background: rgb(255 255 255 / .92); padding: .2rem .5rem; border-radius: 6px; font-size: .8rem; }
+.rl-progress progress { width: 10rem; height: .6rem; }
+.rl-error { position: absolute; inset: auto .6rem 2.2rem .6rem; margin: 0; background: #fff0ee; color: #7d1710; padding: .5rem .7rem;
+  border: 1px solid #e6b2aa; border-radius: 6px; font-size: .88rem; white-space: pre-wrap; }
+.rl-note { position: absolute; inset: auto .6rem 5.5rem .6rem; margin: 0; background: #fff8e6; color: #5a4000; padding: .4rem .7rem;
+  border: 1px solid #ead79b; border-radius: 6px; font-size: .82rem; }
+.rl-hint { position: absolute; left: .6rem; bottom: .35rem; margin: 0; color: var(--muted); font-size: .75rem; background: rgb(251 250 247 / .8); border-radius: 4px; padding: 0 .25rem; }
+.rl-stale canvas { opacity: .55; }
+.rl-sr-only { position: absolute !important; width: 1px; height: 1px; padding: 0; margin: -1px; overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }
+.rl-panel { flex: 0 0 24rem; max-width: 46%; overflow-y: auto; background: var(--panel); border-left: 1px solid var(--line); padding: .8rem 1rem 1.2rem; }
+.rl-stage.rl-narrow .rl-panel { flex: 1 0 auto; max-width: none; border-left: 0; border-top: 1px solid var(--line); overflow: visible; }
+.rl-panel h2 { font-size: 1.05rem; margin: .2rem 0 .6rem; }
+.rl-controls { display: grid; grid-template-columns: minmax(6rem, 38%) minmax(0, 1fr); gap: .35rem .7rem; align-items: center; font-size: .9rem; }
+.rl-row { display: contents; }
+.rl-row > label { padding: .15rem 0; }
+.rl-cell { display: flex; align-items: center; gap: .4rem; flex-wrap: wrap; min-width: 0; }
+.rl-line { display: flex; align-items: center; gap: .3rem .4rem; flex: 1 1 100%; min-width: 0; flex-wrap: wrap; }
+.rl-cell select { flex: 1; min-width: 0; min-height: 28px; }
+.rl-cell input[type=range] { flex: 1 1 5rem; min-width: 4rem; height: 24px; margin: 0; }
+.rl-cell input[type=checkbox] { width: 24px; height: 24px; margin: 0; }
+.rl-cell output { font-variant-numeric: tabular-nums; color: var(--muted); min-width: 3.2rem; text-align: right; font-size: .85rem; }
+.rl-exact { width: 4.6rem; min-height: 28px; padding: 0 .3rem; border: 1px solid #c9c5ba; border-radius: 5px; }
+.rl-formula { flex: 1; min-width: 0; min-height: 30px; padding: .15rem .4rem; font-family: ui-monospace, "SFMono-Regular", Menlo, monospace !important;
+  border: 1px solid #c9c5ba; border-radius: 5px; }
+.rl-formula[aria-invalid=true], .rl-exact[aria-invalid=true] { border-color: #b3261e; background: #fff4f2; }
+.rl-reason { flex-basis: 100%; color: var(--muted); font-size: .78rem; }
+.rl-fielderror { flex-basis: 100%; color: #8c1d14; font-size: .8rem; }
+.rl-disabled > label { color: #8c93a3; }
+.rl-play { padding: 0 .45rem !important; }
+.rl-player { display: flex; gap: .5rem; align-items: center; flex-wrap: wrap; margin: .6rem 0 0; font-size: .85rem; }
+.rl-player[hidden] { display: none; }
+.rl-readout { display: grid; grid-template-columns: 1fr auto; gap: .15rem .8rem; margin: .8rem 0; padding: .5rem .7rem; background: var(--paper);
+  border-radius: 6px; font-size: .86rem; }
+.rl-readout dt { color: var(--muted); }
+.rl-readout dd { margin: 0; font-variant-numeric: tabular-nums; text-align: right; }
+.rl-caption, .rl-readout-note { font-size: .85rem; color: var(--muted); margin: .4rem 0 .8rem; }
+.rl-downloads { display: flex; gap: .4rem; flex-wrap: wrap; margin: 0 0 .8rem; }
+.rl-downloads:empty { display: none; }
+.rl-figure { margin: 0 0 .8rem; }
+.rl-figure:empty { display: none; }
+.rl-text { font-size: .92rem; line-height: 1.55; }
+.rl-text h2 { font-size: 1.05rem; margin: .6rem 0 .4rem; }
+.rl-text math[display=block] { margin: .5rem 0; overflow-x: auto; }
+.rl-text .rl-beyond { border-left: 3px solid #0072b2; background: #f1f6fb; padding: .3rem .6rem; margin: .6rem 0; }
+.rl-text .rl-paper-data { border-left: 3px solid #8a8f99; background: #f6f5f1; padding: .3rem .6rem; margin: .6rem 0; }
+.rl-plot { font: 11px system-ui, sans-serif; background: var(--paper); border-radius: 6px; width: 100%; height: auto; }
+.rl-shortcuts { max-width: 30rem; border: 1px solid var(--line); border-radius: 8px; padding: 1rem 1.2rem; color: var(--ink); }
+.rl-shortcuts::backdrop { background: rgb(0 0 0 / .25); }
+.rl-shortcuts table { border-collapse: collapse; font-size: .9rem; }
+.rl-shortcuts td { padding: .2rem .6rem .2rem 0; vertical-align: top; }
+.rl-shortcuts kbd { font: .85rem ui-monospace, monospace; border: 1px solid #c9c5ba; border-bottom-width: 2px; border-radius: 4px; padding: 0 .3rem; background: #fff; }
+@media (max-width: 640px) { .rl-legend { font-size: .74rem; max-width: calc(100% - 1.2rem); top: auto; bottom: 1.8rem; } .rl-hint { display: none; } }
+@media print { .rl-toolbar, .rl-hint, .rl-progress { display: none; } .rl-panel { overflow: visible; } }
+`;
+
+/** The stylesheet, built once (constructable stylesheets are shared between shadow roots). */
+let sheet = /** @type {CSSStyleSheet | null} */ (null);
+
+/** Adds the view's stylesheet to a document or shadow root. */
+export function adoptStyles(/** @type {Document | ShadowRoot} */ root) {
+  sheet ??= new CSSStyleSheet();
+  if (!sheet.cssRules.length) sheet.replaceSync(CSS);
+  if (!root.adoptedStyleSheets.includes(sheet)) root.adoptedStyleSheets = [...root.adoptedStyleSheets, sheet];
+}
