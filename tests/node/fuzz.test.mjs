@@ -68,7 +68,44 @@ function text() {
   return s.join('');
 }
 
+/** A formula: a valid one, a damaged one, or hostile text (nesting, numbers, names, unicode, other syntaxes). */
+function formula() {
+  const valid = pick(['cos(u)', 'a*sin(u)', 'u^2/2', 'atan2(v, u)', 'exp(-u*u)', 'sqrt(1 + u^2)', '1', 'sin(2*u + 1.5*v)/2']);
+  const hostile = pick(['('.repeat(70) + 'u' + ')'.repeat(70), 'u+'.repeat(600) + 'u', '-'.repeat(9) + 'u', '1e308*1e308', '1/0', 'sni(u)', 'π*u', '2u', 'u;u', '"x"', '<img src=x>', 'u == 1', '9'.repeat(500), 'atan2(u)', '', ' ', 'log(-u)', '\u0000', '💥']);
+  const chars = '0123456789.,+-*/^() uvabcepisncotqrlx\u00e9π';
+  if (random() < 0.3) return hostile;
+  if (random() < 0.3) return Array.from({ length: Math.floor(random() * 30) }, () => pick([...chars])).join('');
+  const s = [...valid];
+  for (let k = Math.floor(random() * 3); k > 0; k--) s.splice(Math.floor(random() * (s.length + 1)), pick([0, 1]), pick([...chars]));
+  return s.join('');
+}
+
+const CODES = ['invalid-argument', 'not-finite', 'out-of-range', 'too-large', 'too-small', 'parse-error', 'degenerate', 'not-converged', 'singular'];
+
 const CALLS = [
+  (f) => AnalyticSurface.fromFormulas(pick([value(), { a: [formula(), formula(), formula()], e: [formula(), formula(), formula()], u: [pick([0, -1, formula()]), pick([1, 2, formula()])], ...pick([{}, { v: [formula(), 1] }, { closed: pick([true, 1]) }, { parameters: { a: pick(NUMBERS) } }, options()]) }])),
+  (f) => AnalyticCongruence.fromFormulas(pick([value(), { p: [formula(), formula(), formula()], e: [formula(), formula(), formula()], u: [-1, 1], v: [pick([-1, formula()]), 1], rows: pick([undefined, ...SMALL]), cols: pick([undefined, ...SMALL]) }])),
+  (f) => f.surface.invariants(pick([undefined, { closed: pick([true, false, value()]) }, value()])),
+  (f) => f.surface.slide(value()),
+  (f) => f.surface.maxAngleTo(pick([f.surface, f.surface.conoidal()])),
+  (f) => f.surface.maxEdgeChange(f.surface.bend(0.5)),
+  (f) => f.surface.insertedF32(pick([...SMALL, value()])),
+  (f) => f.surface.endsF32(pick([...SMALL, value()]), pick(SMALL)),
+  (f) => f.surface.everyF32(pick([...SMALL, value()])),
+  (f) => f.surface.triangulationF32(pick([...SMALL, value()]), pick([1, 2, ...SMALL])),
+  (f) => f.surface.divisionPoint(pick(SMALL), pick(SMALL), pick(SMALL)),
+  (f) => [f.surface.referenceFrame(), f.surface.developmentInSpace(), f.surface.developmentStriction(), f.surface.developmentStrictionInSpace(), f.surface.directions(), f.surface.meanLength()],
+  (f) => f.hyp.parameters(pick([...SMALL, value()]), pick([undefined, options()])),
+  (f) => f.hyp.samplingErrors(pick([...SMALL, value()]), pick([undefined, options()])),
+  (f) => f.hyp.insertedDistance(f.surface, pick(SMALL), pick(NUMBERS), pick(NUMBERS)),
+  (f) => f.congruence.insertedF32(pick([...SMALL, value()])),
+  (f) => f.congruence.directorF32(pick([...SMALL, value()])),
+  (f) => f.congruence.insertedDirectorF32(pick(SMALL), pick(SMALL)),
+  (f) => f.analyticCongruence.grid(pick([undefined, ...SMALL]), pick([undefined, ...SMALL]), pick([undefined, ...NUMBERS])),
+  (f) => ToolPath.examplePart(pick([...SMALL, value()]), pick(SMALL)),
+  (f) => f.path.envelopeMesh(pick([...SMALL, value()])),
+  (f) => f.path.toolMesh(pick(SMALL), pick(SMALL)),
+  (f) => f.path.insertedF32(pick([...SMALL, value()])),
   (f) => importSegments(text()),
   (f) => importSegments(text(), pick(['csv', 'json', undefined, value()])),
   (f) => f.surface.export(pick(['csv', 'json', value()])),
@@ -120,11 +157,12 @@ test("100 000 random and adversarial calls: only Errors, never a trap; the modul
     const call = pick(CALLS);
     try {
       const result = call(fx);
-      result?.free?.();
+      for (const r of Array.isArray(result) ? result : [result]) r?.free?.();
     } catch (e) {
       assert.ok(!(e instanceof WebAssembly.RuntimeError), `wasm trap in call ${CALLS.indexOf(call)}: ${e.stack}`);
       assert.ok(e instanceof Error, `not an Error: ${e}`);
       assert.ok(e.message.length > 10, `unclear message: ${e.message}`);
+      assert.ok(CODES.includes(e.code) || e instanceof TypeError, `no documented code on: ${e.message} (${e.code})`);
       errors++;
       // the module keeps working after every error
       assert.equal(probe.invariants().angle[0], probeAngle);
