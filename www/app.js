@@ -12,6 +12,8 @@ import { adoptStyles } from './ui/css.js';
 import { appendRich } from './ui/richtext.js';
 import { obj, segmentsText, invariantsJson, invariantsCsv } from './export/files.js';
 import { png } from './export/png.js';
+import { exportSvg } from './export/svg.js';
+import { exportTikz } from './export/tikz.js';
 import { oneFileWithState, storedHash } from './export/onefile.js';
 
 /** Session storage key of an import too large for the link. */
@@ -34,6 +36,11 @@ export async function startPage({ oneFile = false } = {}) {
   const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) => Object.assign(doc.createElement(tag), props);
 
   // chrome
+  const skip = el('a', { className: 'skip', href: '#main' });
+  skip.addEventListener('click', (e) => {
+    e.preventDefault();
+    /** @type {HTMLElement | null} */ (doc.querySelector('.rl-controls [name]'))?.focus();
+  });
   const header = el('header', { className: 'page-header' });
   const title = el('h1', { textContent: 'ruledlab' });
   const subtitle = el('p', { className: 'subtitle' });
@@ -47,7 +54,7 @@ export async function startPage({ oneFile = false } = {}) {
   const shareButton = el('button', { type: 'button', id: 'share' });
   header.append(title, subtitle, pickerLabel, langLabel, shareButton);
   const main = el('main', { id: 'main' });
-  doc.body.replaceChildren(header, main);
+  doc.body.replaceChildren(skip, header, main);
 
   // import and export, in the stage's panel
   const io = el('details', { className: 'io' });
@@ -66,7 +73,7 @@ export async function startPage({ oneFile = false } = {}) {
   const exports = el('div', { className: 'io-row', id: 'exports' });
   /** @type {Record<string, HTMLButtonElement>} */
   const exportButtons = {};
-  for (const kind of ['png', 'obj', 'csv', 'json', 'invariants', 'invariantsCsv', 'plot']) {
+  for (const kind of ['svg', 'svgBw', 'tikz', 'png', 'png2', 'png4', 'obj', 'csv', 'json', 'invariants', 'invariantsCsv', 'plot']) {
     exportButtons[kind] = el('button', { type: 'button' });
     exportButtons[kind].dataset.export = kind;
     exports.append(exportButtons[kind]);
@@ -90,6 +97,7 @@ export async function startPage({ oneFile = false } = {}) {
     doc.documentElement.lang = lang;
     doc.title = `ruledlab · ${t(stage.scene?.title ?? 'app.subtitle').replace(/[_^]\{?([^}]*)\}?/g, '$1')}`;
     subtitle.textContent = t('app.subtitle');
+    skip.textContent = t('app.skip');
     pickerLabel.firstChild.textContent = `${t('app.scene')} `;
     langLabel.firstChild.textContent = `${t('app.language')} `;
     langPicker.value = lang;
@@ -101,7 +109,7 @@ export async function startPage({ oneFile = false } = {}) {
     upload.setAttribute('aria-label', t('io.upload'));
     showButton.textContent = t('io.show');
     exportsLabel.textContent = t('io.exports');
-    const names = { png: 'export.png', obj: 'export.obj', csv: 'export.csv', json: 'export.json', invariants: 'export.invariants', invariantsCsv: 'export.invariantsCsv', plot: 'export.plot' };
+    const names = { svg: 'export.svg', svgBw: 'export.svgBw', tikz: 'export.tikz', png: 'export.png', png2: 'export.png2', png4: 'export.png4', obj: 'export.obj', csv: 'export.csv', json: 'export.json', invariants: 'export.invariants', invariantsCsv: 'export.invariantsCsv', plot: 'export.plot' };
     for (const [kind, b] of Object.entries(exportButtons)) b.textContent = t(names[/** @type {keyof typeof names} */ (kind)]);
     storedNote.textContent = t('io.stored');
   };
@@ -204,7 +212,9 @@ export async function startPage({ oneFile = false } = {}) {
     const name = stage.scene.id;
     try {
       const data = built.data;
-      if (kind === 'png') download(`${name}.png`, await png(stage.viewer));
+      if (kind === 'png' || kind === 'png2' || kind === 'png4') download(`${name}${kind === 'png' ? '' : `-${kind.slice(3)}x`}.png`, await png(stage, { scale: kind === 'png' ? 1 : Number(kind.slice(3)) }));
+      else if (kind === 'svg' || kind === 'svgBw') download(`${name}${kind === 'svgBw' ? '-bw' : ''}.svg`, exportSvg(stage, { bw: kind === 'svgBw' }), 'image/svg+xml');
+      else if (kind === 'tikz') download(`${name}.tikz`, exportTikz(stage), 'text/x-tex');
       else if (kind === 'plot' && built.figure) download(`${name}-plot.svg`, new XMLSerializer().serializeToString(built.figure()), 'image/svg+xml');
       else if (data && kind === 'obj') download(`${name}.obj`, obj(data.segments, { faces: !data.grid, name }), 'model/obj');
       else if (data && (kind === 'csv' || kind === 'json')) download(`${name}.${kind}`, segmentsText(data.segments, kind, data.grid), kind === 'csv' ? 'text/csv' : 'application/json');
@@ -277,6 +287,15 @@ export async function startPage({ oneFile = false } = {}) {
   doc.documentElement.dataset.started = '1';
   // for the page tests and the curious
   Object.assign(window, { ruledlab: { stage, scenes: SCENES, wasm: { live: liveObjects, memory: memoryBytes }, get state() { return state; } } });
+}
+
+/** Says, in the reader's language, that the page could not start (and why); rethrows. */
+export function showStartFailure(/** @type {unknown} */ e) {
+  const box = document.getElementById('boot') ?? document.body.appendChild(document.createElement('p'));
+  box.className = 'boot boot-problem';
+  box.setAttribute('role', 'alert');
+  box.textContent = translator(pickLanguage(new URLSearchParams(location.hash.slice(1)).get('lang'))).t('boot.failed', { message: String(/** @type {any} */ (e)?.message ?? e) });
+  throw e;
 }
 
 /** Imported data kept in session storage. */

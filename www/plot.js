@@ -42,7 +42,6 @@ export function logLogPlot(doc, { x, series, slopes = [], xLabel, yLabel, title,
   };
   const svg = /** @type {SVGSVGElement} */ (el('svg', { xmlns: SVG, version: '1.1', viewBox: `0 0 ${width} ${height}`, width, height, 'font-family': 'Helvetica, Arial, sans-serif', 'font-size': 11, role: 'img' }));
   svg.setAttribute('aria-label', title);
-  svg.classList.add('rl-plot');
   svg.append(el('title', {}, title), el('rect', { x: 0, y: 0, width, height, fill: '#fbfaf7' }));
   const pad = { l: 48, r: 12, t: 12, b: 38 };
   const finite = (/** @type {number} */ v) => Number.isFinite(v) && v > 0;

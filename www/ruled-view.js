@@ -16,11 +16,14 @@ import { Stage } from './stage.js';
 import { SCENES } from './scenes/index.js';
 import { readParams, defaults } from './scene.js';
 import { adoptStyles } from './ui/css.js';
+import { exportSvg } from './export/svg.js';
+import { exportTikz } from './export/tikz.js';
+import { png } from './export/png.js';
 
 const HOST_CSS = `:host { display: block; position: relative; height: 480px; min-height: 240px; overflow: auto; contain: content; }
 :host([hidden]) { display: none; }
 .rl-host { width: 100%; height: 100%; }
-.rl-host > .rl-stage.rl-narrow { height: auto; }`;
+.rl-host > .rl-stage.rl-narrow:not(.rl-no-panel) { height: auto; }`;
 
 let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
 
@@ -157,6 +160,28 @@ export class RuledView extends HTMLElement {
   /** The scene's defaults and its fitted view. */
   reset() {
     this.stage?.reset();
+  }
+
+  /**
+   * The current view as a self-contained SVG 1.1 figure (labels as text), in colour or black
+   * and white: `{ bw?, legend? = true, title? = false, labels? = true }`.
+   * @param {import('./export/svg.js').FigureOptions} [options]
+   */
+  exportSVG(options) {
+    if (!this.stage) throw Object.assign(new Error('ruled-view: not connected'), { code: 'invalid-argument' });
+    return exportSvg(this.stage, options);
+  }
+
+  /** The current view as a TikZ picture for LaTeX (same options as exportSVG, and `width` in cm). */
+  exportTikZ(/** @type {import('./export/svg.js').FigureOptions & {width?: number}} */ options) {
+    if (!this.stage) throw Object.assign(new Error('ruled-view: not connected'), { code: 'invalid-argument' });
+    return exportTikz(this.stage, options);
+  }
+
+  /** The current view as a PNG at `scale` (1, 2 or 4) × its size, labels and legend drawn in. */
+  exportPNG(/** @type {{scale?: number, legend?: boolean}} */ options) {
+    if (!this.stage) return Promise.reject(Object.assign(new Error('ruled-view: not connected'), { code: 'invalid-argument' }));
+    return png(this.stage, options);
   }
 }
 

@@ -148,6 +148,7 @@ export class Stage {
     this.text.hidden = !text;
     this.heading.hidden = !controls && !text;
     this.panel.hidden = !controls && !text;
+    this.root.classList.toggle('rl-no-panel', !controls && !text);
     this.layout();
   }
 

@@ -87,7 +87,7 @@ export const STYLES = {
   director2: area(PALETTE.yellow, PALETTE.yellow, 0.4, { gray: 0.92, back: 0.9 }),
   envelope: area(PALETTE.yellow, PALETTE.yellow, 0.35, { gray: 0.9, back: 0.85 }),
   part: area(PALETTE.lightGrey, PALETTE.lightGrey, 0.55, { gray: 0.85, back: 0.8 }),
-  tool: area('#9aa3ad', '#9aa3ad', 0.9, { gray: 0.7, back: 0.6 }),
+  tool: area('#6e6e6e', '#6e6e6e', 0.9, { gray: 0.55, back: 0.45 }),
   endpointStrip: area(PALETTE.orange, PALETTE.orange, 0.3, { gray: 0.9, back: 0.85 }),
   lineStrip: area(PALETTE.sky, PALETTE.sky, 0.35, { gray: 0.8, back: 0.75 }),
   focal1: area(PALETTE.orange, PALETTE.orange, 0.6, { gray: 0.85, back: 0.75 }),

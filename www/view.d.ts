@@ -214,6 +214,18 @@ export class Stage {
   dispose(): void;
 }
 
+/** Options of the figure exports. */
+export interface FigureOptions {
+  /** Black and white, like the paper's figures (default: colour). */
+  bw?: boolean;
+  /** Draw the legend (default true). */
+  legend?: boolean;
+  /** Draw the scene's title above (default false). */
+  title?: boolean;
+  /** Draw the labels (default true). */
+  labels?: boolean;
+}
+
 export interface SceneChangeDetail {
   scene: string;
   params: Params;
@@ -241,6 +253,12 @@ export class RuledView extends HTMLElement {
   data: ImportedData | null;
   readonly view: Stage | null;
   reset(): void;
+  /** The current view as a self-contained SVG 1.1 figure. */
+  exportSVG(options?: FigureOptions): string;
+  /** The current view as a TikZ picture (`width` in cm, default 12). */
+  exportTikZ(options?: FigureOptions & { width?: number }): string;
+  /** The current view as a PNG at 1×, 2× or 4× its size, labels and legend drawn in. */
+  exportPNG(options?: { scale?: number; legend?: boolean }): Promise<Blob>;
   addEventListener<K extends keyof RuledViewEventMap>(type: K, listener: (this: RuledView, ev: RuledViewEventMap[K]) => unknown, options?: boolean | AddEventListenerOptions): void;
   addEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | AddEventListenerOptions): void;
 }

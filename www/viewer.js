@@ -157,19 +157,20 @@ export class Viewer {
     });
   }
 
-  /** The frame's matrices and sizes for the current canvas size. */
-  frame() {
+  /** The frame's matrices and sizes for the current canvas size (`scale`: pixels per CSS pixel). */
+  frame(scale = window.devicePixelRatio || 1) {
     const { canvas } = this;
-    const dpr = window.devicePixelRatio || 1;
+    const dpr = scale;
     const width = Math.max(1, Math.round(canvas.clientWidth * dpr));
     const height = Math.max(1, Math.round(canvas.clientHeight * dpr));
     return { viewProj: this.camera.viewProj(width / height), eye: this.camera.eye, width, height, dpr };
   }
 
-  render() {
+  /** Draws now; `scale` renders at that many pixels per CSS pixel (figure export). */
+  render({ scale = window.devicePixelRatio || 1 } = {}) {
     const { gl, canvas } = this;
     if (this.lost || this.disposed || gl.isContextLost()) return;
-    const frame = this.frame();
+    const frame = this.frame(scale);
     if (canvas.width !== frame.width || canvas.height !== frame.height) {
       canvas.width = frame.width;
       canvas.height = frame.height;

@@ -2,11 +2,6 @@
 // supplies both through the virtual module "ruledlab:inline"), so the file needs no other
 // request and works from disk and inside course systems.
 import './configure.js';
-import { startPage } from '../../www/app.js';
+import { startPage, showStartFailure } from '../../www/app.js';
 
-startPage({ oneFile: true }).catch((e) => {
-  const box = document.getElementById('boot') ?? document.body.appendChild(document.createElement('p'));
-  box.className = 'boot boot-problem';
-  box.textContent = `ruledlab could not start: ${String(e?.message ?? e)}`;
-  throw e;
-});
+startPage({ oneFile: true }).catch(showStartFailure);

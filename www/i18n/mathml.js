@@ -13,9 +13,9 @@ export const sub = (/** @type {string} */ base, /** @type {string} */ index) => 
 /** Inline math. */
 export const m = (/** @type {string} */ inner) => `<math>${inner}</math>`;
 
-/** Display math with an equation number. */
+/** Display math with an equation number (focusable, since a long one scrolls sideways on a phone). */
 export const display = (/** @type {string} */ inner, /** @type {string} */ number = '') =>
-  `<math display="block">${inner}${number ? `<mspace width="1em"/><mtext>(${number})</mtext>` : ''}</math>`;
+  `<math display="block" tabindex="0">${inner}${number ? `<mspace width="1em"/><mtext>(${number})</mtext>` : ''}</math>`;
 
 /** A fraction. */
 export const frac = (/** @type {string} */ a, /** @type {string} */ b) => `<mfrac>${a}${b}</mfrac>`;

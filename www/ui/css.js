@@ -11,7 +11,7 @@ export const CSS = `
 .rl-no-controls .rl-controls, .rl-no-controls .rl-player, .rl-no-controls .rl-readout, .rl-no-controls .rl-readout-note, .rl-no-controls .rl-caption, .rl-no-controls .rl-downloads, .rl-no-controls .rl-figure { display: none !important; }
 .rl-stage.rl-narrow { flex-direction: column; }
 .rl-view { position: relative; flex: 1 1 auto; min-width: 0; min-height: 240px; overflow: hidden; background: var(--paper); }
-.rl-stage.rl-narrow .rl-view { flex: 0 0 auto; height: min(62vh, 34rem); }
+.rl-stage.rl-narrow:not(.rl-no-panel) .rl-view { flex: 0 0 auto; height: min(62vh, 34rem); }
 .rl-view canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; touch-action: none; outline: none; }
 .rl-view canvas:focus-visible { outline: 3px solid var(--focus); outline-offset: -3px; }
 .rl-view:has(canvas:focus-visible)::after { content: ""; position: absolute; inset: 0; border: 3px solid var(--focus); pointer-events: none; }
@@ -77,7 +77,7 @@ export const CSS = `
 .rl-text math[display=block] { margin: .5rem 0; overflow-x: auto; }
 .rl-text .rl-beyond { border-left: 3px solid #0072b2; background: #f1f6fb; padding: .3rem .6rem; margin: .6rem 0; }
 .rl-text .rl-paper-data { border-left: 3px solid #8a8f99; background: #f6f5f1; padding: .3rem .6rem; margin: .6rem 0; }
-.rl-plot { font: 11px system-ui, sans-serif; background: var(--paper); border-radius: 6px; width: 100%; height: auto; }
+.rl-figure > svg { background: var(--paper); border-radius: 6px; width: 100%; height: auto; }
 .rl-shortcuts { max-width: 30rem; border: 1px solid var(--line); border-radius: 8px; padding: 1rem 1.2rem; color: var(--ink); }
 .rl-shortcuts::backdrop { background: rgb(0 0 0 / .25); }
 .rl-shortcuts table { border-collapse: collapse; font-size: .9rem; }

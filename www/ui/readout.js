@@ -1,6 +1,6 @@
 // The readout: the numbers a scene measures, as a definition list, formatted for the language
 // ("exact" where an error is 0 to rounding).
-import { appendRich } from './richtext.js';
+import { appendRich, plainRich } from './richtext.js';
 
 /**
  * @param {HTMLElement} list   a <dl>
@@ -23,7 +23,7 @@ export function readoutSentence(/** @type {import('../scene.js').Readout[]} */ r
   return readouts
     .map(({ label, value, exactZero }) => {
       const shown = exactZero && typeof value === 'number' && Math.abs(value) < 1e-13 ? t('readout.exact') : typeof value === 'number' ? format(value) : t(String(value));
-      return `${t(label).replace(/[_^]\{?([^}]*)\}?/g, ' $1')}: ${shown}`;
+      return `${plainRich(t(label))}: ${shown}`;
     })
     .join('; ');
 }

@@ -1,0 +1,54 @@
+// The README's pictures, made by the page itself: a screenshot of the page and black-and-white
+// figures exported with <ruled-view>.exportSVG({ bw: true }) — the same code a lecturer uses.
+// Run after a build: `node scripts/figures.mjs` (writes docs/).
+import { chromium } from 'playwright-core';
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { startServer } from './serve.mjs';
+
+const DOCS = new URL('../docs/', import.meta.url).pathname;
+
+/** scene, params, camera [yaw, pitch, distance, tx, ty, tz] or null for the scene's own, file name */
+const FIGURES = [
+  ['notation', '', null, 'figure-1-notation-bw.svg'],
+  ['curves', 'w=1/13&steps=4', [-1.5707963, 1.45, 18, 4, 0.15, 0], 'figure-8-dlg-bw.svg'],
+  ['striction', '', null, 'figure-2-striction-bw.svg'],
+];
+
+const { server, url } = await startServer();
+const context = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'ruledlab-figures-')), {
+  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
+  headless: true,
+  viewport: { width: 1200, height: 800 },
+  args: ['--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking'],
+});
+try {
+  const page = await context.newPage();
+  await page.goto(url + '#scene=striction');
+  await page.waitForFunction(() => document.querySelector('.rl-stage')?.dataset.ready === '1');
+  await page.waitForTimeout(300);
+  writeFileSync(join(DOCS, 'screenshot-striction.png'), await page.screenshot());
+  console.log('docs/screenshot-striction.png');
+
+  await page.goto(url + 'examples/web-component.html');
+  for (const [scene, params, camera, file] of FIGURES) {
+    const svg = await page.evaluate(async ([s, q, cam]) => {
+      document.body.replaceChildren();
+      const v = /** @type {any} */ (document.createElement('ruled-view'));
+      Object.assign(v.style, { width: '640px', height: '420px', display: 'block' });
+      v.setAttribute('scene', s);
+      v.setAttribute('params', q);
+      document.body.append(v);
+      await new Promise((r) => v.addEventListener('scene-change', r, { once: true }));
+      if (cam) v.view.viewer.camera.fromArray(cam);
+      v.view.viewer.render();
+      return v.exportSVG({ bw: true, legend: true });
+    }, [scene, params, camera]);
+    writeFileSync(join(DOCS, file), svg);
+    console.log(`docs/${file}`);
+  }
+} finally {
+  await context.close();
+  server.close();
+}

@@ -1,0 +1,136 @@
+// Accessible in fact: colours that stay apart for colour-blind readers (simulated), axe-core at
+// zero WCAG 2.1 A/AA violations on every scene and embed, everything by keyboard with a visible
+// focus, a description of every scene linked to the view, and readouts announced only when an
+// interaction ends, at most once a second.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { pageSession, ready, shoot, framesAfter, control } from './browser.mjs';
+import { difference, parseColour } from './colour.mjs';
+import { countChanged } from './png.mjs';
+
+const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+const session = pageSession();
+const DEFICIENCIES = [null, 'deuteranopia', 'protanopia', 'tritanopia'];
+
+/** Turns on every checkbox of the panel (every legend entry visible). */
+const allOn = (page) =>
+  page.evaluate(() => {
+    for (const box of document.querySelectorAll('.rl-controls input[type=checkbox]')) if (!box.checked && !box.disabled) box.click();
+  });
+
+test('every pair of legend colours shown together stays ≥ 15 ΔE00 apart under each colour-vision deficiency', async () => {
+  const first = await session.open();
+  const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
+  await first.page.close();
+  const report = [];
+  for (const id of scenes) {
+    const { page } = await session.open(`#scene=${id}`);
+    await allOn(page);
+    await ready(page);
+    const legend = await page.evaluate(() => [...document.querySelectorAll('.rl-legend li')].map((li) => ({ name: li.textContent, color: li.querySelector('svg').dataset.color })));
+    let worst = Infinity;
+    for (let i = 0; i < legend.length; i++) {
+      for (let j = i + 1; j < legend.length; j++) {
+        const [a, b] = [legend[i], legend[j]];
+        for (const d of DEFICIENCIES) {
+          const e = difference(parseColour(a.color), parseColour(b.color), d);
+          worst = Math.min(worst, e);
+          assert.ok(e >= 15, `${id}: "${a.name}" and "${b.name}" are only ${e.toFixed(1)} apart under ${d ?? 'normal vision'}`);
+        }
+      }
+    }
+    report.push(`${id} ${worst.toFixed(1)}`);
+    await page.close();
+  }
+  console.log(`# smallest ΔE00 per scene: ${report.join(', ')}`);
+});
+
+test('axe-core finds no WCAG 2.1 A/AA violation on any scene, in either language, nor on the embeds', async () => {
+  const first = await session.open();
+  const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
+  await first.page.close();
+  const run = async (page, what) => {
+    await page.evaluate(AXE);
+    const result = await page.evaluate(() => window.axe.run(document, { runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'] } }));
+    const violations = result.violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+    assert.deepEqual(violations, [], `${what}`);
+  };
+  for (const id of scenes) {
+    for (const lang of ['en', 'de']) {
+      const { page } = await session.open(`#scene=${id}&lang=${lang}`);
+      await page.locator('.io summary').click();
+      await run(page, `${id} (${lang})`);
+      await page.close();
+    }
+  }
+  for (const path of ['examples/web-component.html', 'examples/iframe.html', 'index.html#embed&controls&text&scene=strip']) {
+    const { page } = await session.open(path, { wait: false });
+    await page.waitForTimeout(2500);
+    await run(page, path);
+    await page.close();
+  }
+});
+
+test('by keyboard: Tab reaches the view, which shows its focus; arrows turn it; ? lists the keys; controls work', async () => {
+  const { page, problems, frames } = await session.open('#scene=isometry');
+  const before = await shoot(page, 'keyboard-before');
+  await page.locator('.rl-view canvas').focus();
+  assert.equal(await page.evaluate(() => document.activeElement.tagName), 'CANVAS');
+  assert.equal(await page.evaluate(() => document.querySelector('.rl-view canvas').matches(':focus-visible')), true);
+  // the focus ring is drawn over the picture, in the focus colour
+  const ring = await page.evaluate(() => getComputedStyle(document.querySelector('.rl-view canvas')).outlineStyle);
+  assert.equal(ring, 'solid');
+  await page.keyboard.press('ArrowLeft');
+  await page.keyboard.press('ArrowLeft');
+  await framesAfter(page, frames);
+  const turned = await shoot(page, 'keyboard-after');
+  assert.ok(countChanged(before, turned) > 1000, 'the arrow keys did not turn the view');
+  await page.keyboard.press('?');
+  assert.equal(await page.locator('.rl-shortcuts').isVisible(), true);
+  assert.match(await page.locator('.rl-shortcuts').innerText(), /turn the view/);
+  await page.keyboard.press('Escape');
+  assert.equal(await page.locator('.rl-shortcuts').isVisible(), false);
+  // Tab onward reaches the controls; arrow keys move a slider
+  await control(page, 'n').focus();
+  const n = Number(await control(page, 'n').inputValue());
+  await page.keyboard.press('ArrowRight');
+  await page.waitForFunction((v) => window.ruledlab.stage.params.n === v + 1, n);
+  // keys of the view act only while it has focus: F on a slider does not refit
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('every scene describes itself to screen readers; readouts are announced once an interaction ends, never per frame', async () => {
+  const { page, problems } = await session.open('#scene=striction');
+  const described = await page.evaluate(() => {
+    const canvas = document.querySelector('.rl-view canvas');
+    return document.getElementById(canvas.getAttribute('aria-describedby'))?.textContent ?? '';
+  });
+  assert.match(described, /Hyperboloid.*36 rulings.*striction polygon is/);
+  // announcements: count changes of the live region while a parameter plays for 2 s
+  await page.evaluate(() => {
+    window.__announced = 0;
+    new MutationObserver(() => window.__announced++).observe(document.querySelector('.rl-stage [aria-live]'), { childList: true, characterData: true, subtree: true });
+  });
+  await page.locator('.rl-row[data-key="n"] .rl-play').click();
+  await page.waitForTimeout(2000);
+  assert.equal(await page.evaluate(() => window.__announced), 0, 'the readout was announced while playing');
+  await page.locator('.rl-row[data-key="n"] .rl-play').click();
+  await page.waitForTimeout(1200);
+  assert.equal(await page.evaluate(() => window.__announced), 1, 'pausing announces the readout once');
+  const said = await page.evaluate(() => document.querySelector('.rl-stage [aria-live]').textContent);
+  assert.match(said, /rulings N: \d+; .*max \|m i − s\(u i\)\|/);
+  // ten slider moves in quick succession: at most two announcements (one now, one a second later)
+  for (let k = 0; k < 10; k++) await control(page, 'n').evaluate((el, v) => {
+    el.value = String(v);
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+    el.dispatchEvent(new Event('change', { bubbles: true }));
+  }, 20 + k);
+  await page.waitForTimeout(1500);
+  const count = await page.evaluate(() => window.__announced);
+  assert.ok(count >= 2 && count <= 3, `${count - 1} announcements for ten quick moves`);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -1,0 +1,243 @@
+// Deutsche Erläuterungen der Szenen: Markup (HTML mit MathML) aus den eigenen Dateien des Projekts.
+import { sub, m, mr, display, frac, row } from './mathml.js';
+
+const fii1 = sub('f', 'i , i + 1');
+const fiim = sub('f', 'i , i − 1');
+const Ri = sub('R', 'i');
+
+export default {
+  'striction.text': `
+<h2>Differenzengeometrie einer Regelfläche</h2>
+<p>Eine diskrete Regelfläche ist eine Folge von Geraden ${m(Ri)}. Zwei aufeinanderfolgende
+Erzeugende schließen den Winkel ${m(sub('φ', 'i , i + 1'))} ein und haben genau ein gemeinsames Lot
+${m(sub('N', 'i , i + 1'))}. Es trifft ${m(Ri)} im Fußpunkt ${m(fii1)}; die beiden Fußpunkte eines
+Paares haben den Abstand ${m(sub('h', 'i , i + 1'))}. Der <em>diskrete Drall</em> ist</p>
+${display(`${sub('δ', 'i , i + 1')}<mo>=</mo>${frac(sub('h', 'i , i + 1'), sub('φ', 'i , i + 1'))}`, '1')}
+<p>Jede Erzeugende trägt zwei Fußpunkte, ${m(fiim)} und ${m(fii1)}. Beide streben gegen den
+<em>Kehlpunkt</em> ${mr('s ( u )')}, wenn die Erzeugenden zusammenrücken, aber nur von erster Ordnung
+(Satz 1). Ihr Mittelpunkt</p>
+${display(`${sub('m', 'i')}<mo>=</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>(</mo>${fiim}<mo>+</mo>${fii1}<mo>)</mo>`, '7')}
+<p>konvergiert von zweiter Ordnung (Satz 2): Die Fehler erster Ordnung der beiden Fußpunkte sind
+gleich groß und entgegengesetzt. Das <em>Kehlpolygon</em> verbindet diese Mittelpunkte.</p>
+<p><strong>Zwei Polygone, nicht eines.</strong> Abb. 3 der Arbeit zeigt ein anderes Polygon: die
+Mittelpunkte ${m(`<mo>(</mo>${fii1}<mo>+</mo>${sub('f', 'i + 1 , i')}<mo>)</mo><mo>/</mo><mn>2</mn>`)} der
+gemeinsamen Lote (zuschaltbar). Es nähert die Kehllinie beim Parameter <em>zwischen</em> zwei
+Erzeugenden an, ${mr('u + H / 2')}, ebenfalls von zweiter Ordnung; das Kehlpolygon
+${m(sub('m', 'i'))} nähert sie an den Erzeugenden selbst an. Die Anzeige misst beide.</p>
+<p><strong>Probieren Sie es aus.</strong> Verdoppeln Sie die Zahl der Erzeugenden und beobachten Sie
+die Anzeige: Der Fehler der Fußpunkte halbiert sich, die Fehler beider Polygone fallen auf ein
+Viertel. Beim Hyperboloid aus Beispiel 1 ist die Kehllinie nicht die Kehlellipse; beim Kegel
+treffen sich alle gemeinsamen Lote in der Spitze; beim Zylinder sind aufeinanderfolgende Erzeugende
+parallel, das gemeinsame Lot ist nicht eindeutig, und ruledlab sagt das (kein Wert, das Paar als
+parallel gezählt), statt zu raten.</p>
+<p class="rl-paper-data">Daten: Das Hyperboloid x² + y²/4 − z²/9 = 1 aus Beispiel 1 stammt aus der
+Arbeit; die Zahl der Erzeugenden (36) und die Länge der Strecken wählt ruledlab.</p>`,
+
+  'notation.text': `
+<h2>Abb. 1: die Bezeichnungen</h2>
+<p>Drei aufeinanderfolgende Erzeugende ${m(sub('R', 'i − 1'))}, ${m(Ri)}, ${m(sub('R', 'i + 1'))} des
+Hyperboloids aus Beispiel 1. Jedes Paar hat genau ein gemeinsames Lot ${m(sub('N', 'i , i + 1'))}; es
+trifft ${m(Ri)} im Fußpunkt ${m(fii1)} und ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))},
+im Abstand ${m(sub('h', 'i , i + 1'))}. Die gestrichelte Gerade durch ${m(fii1)} ist parallel zu
+${m(sub('R', 'i + 1'))}: Sie schließt mit ${m(Ri)} den Winkel ${m(sub('φ', 'i , i + 1'))} ein. Jede
+Erzeugende trägt zwei Fußpunkte, einen von jedem Nachbarn; ihr Mittelpunkt ${m(sub('m', 'i'))} ist der
+diskrete Kehlpunkt. Verkleinern Sie den Abstand und sehen Sie, wie die beiden Fußpunkte auf ihn
+zurücken.</p>`,
+
+  'convergence.text': `
+<h2>Wie schnell die diskreten Invarianten konvergieren</h2>
+<p>Nehmen Sie die Erzeugenden ${mr('R ( u − H )')}, ${mr('R ( u )')}, ${mr('R ( u + H )')} einer
+analytischen Fläche und verkleinern Sie H. Satz 1: Der Fußpunkt ${m(fii1)} strebt gegen den Kehlpunkt
+${mr('s ( u )')} und ${m(`${sub('δ', 'i , i + 1')}<mo>=</mo>${row('h / φ')}`)} gegen den Drall, beide
+mit Fehlern proportional zu H (Steigung 1 im Diagramm), und das gemeinsame Lot strebt gegen die
+<em>Zentraltangente</em> durch ${mr('s ( u )')}:</p>
+${display(`${mr('s ( u ) +')}<mo>[</mo>${sub('e', '3')}${mr('( u )')}<mo>]</mo><mo>=</mo><munder><mo>lim</mo>${row('h → 0')}</munder>${sub('N', 'i , i + 1')}`, '4')}
+<p>(die gestrichelte Gerade in der Ansicht). Satz 2: Der Mittelpunkt der beiden Fußpunkte auf
+${mr('R ( u )')} und das Mittel der beiden δ sind viel besser: Ihre Fehler erster Ordnung heben sich
+auf, übrig bleiben Fehler proportional zu ${m('<msup><mi>H</mi><mn>2</mn></msup>')} (Steigung 2). Das
+Diagramm ist vom Kern gemessen, nicht aus den Formeln gezeichnet.</p>
+<p>Versuchen Sie die Schraubregelfläche: Dort liegen die beiden Fußpunkte genau symmetrisch zu
+${mr('s ( u )')}, der Mittelpunkt ist exakt (die Anzeige sagt „exakt“), und δ ist von zweiter Ordnung,
+weil das diskrete δ eine gerade Funktion von H ist. Beim Plückerschen Konoid liegen die Fußpunkte
+genau auf der Achse.</p>`,
+
+  'isometry.text': `
+<h2>Eine Regelfläche verbiegen, ohne sie zu dehnen</h2>
+<p>Fassen Sie zwei aufeinanderfolgende Erzeugende ${m(Ri)}, ${m(sub('R', 'i + 1'))} samt ihrem
+gemeinsamen Lot zu einem starren Körper zusammen, und lassen Sie jede Erzeugende als <em>Gelenk</em>
+zwischen den beiden Körpern wirken, zu denen sie gehört. Drehungen um die Gelenke bewegen die
+Erzeugenden, aber kein Polygon ${m(`${sub('p', 'i')}<mo>∈</mo>${Ri}`)} ändert die Länge einer Kante:
+Diese kinematische Kette ist das diskrete Modell der <em>Mindingschen Isometrien</em>, die Erzeugende
+auf Erzeugende abbilden. Die Anzeige zeigt die größte relative Längenänderung einer Kante: Rundung,
+sonst nichts.</p>
+<p><strong>Beispiel 2.</strong> Halten Sie ${m(sub('R', '0'))} und ${m(sub('R', '1'))} fest und drehen
+Sie jeden folgenden Körper um sein Gelenk, bis sein gemeinsames Lot dieselbe Richtung hat wie das
+erste, ${m(sub('n', '0 , 1'))}. Dann steht jede Erzeugende normal zu dieser Richtung: Die Fläche ist
+<em>konoidal</em> geworden (alle Erzeugenden parallel zu einer Ebene). Schieben Sie <em>t</em> von 0
+bis 1 (oder drücken Sie Abspielen), um die Verbiegung zu sehen; das Bild ist so gedreht, dass
+${m(sub('n', '0 , 1'))} nach oben zeigt, und die konoidalen Erzeugenden werden waagrecht, gestapelt in
+den Höhen ${m(`${sub('H', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${sub('h', 'k , k + 1')}`)}.</p>
+<p><strong>Näherungsabwicklung (Abb. 6).</strong> Projizieren Sie das konoidale Modell normal auf eine
+Ebene parallel zu seinen Erzeugenden. Jede Erzeugende behält ihre Länge, und die beiden Fußpunkte
+jedes Paares fallen in einen Punkt; das Bild des Kehlpolygons ist also das Polygon, das die
+projizierten Erzeugenden einhüllen, so wie die Gratlinie in der Abwicklung einer Torse die
+Einhüllende ist. Die Spanne der Höhen,
+${m(`<mo>max</mo>${sub('H', 'i')}<mo>−</mo><mo>min</mo>${sub('H', 'i')}`)}, misst, wie weit die Fläche
+von einer Torse entfernt ist: 0 beim Kegel, winzig (und mit ${m('<msup><mi>H</mi><mn>2</mn></msup>')}
+fallend) bei der Tangentenfläche, deutlich positiv beim Hyperboloidstreifen.</p>
+<p class="rl-beyond"><strong>Über die Arbeit hinaus: wann die Bildunterschrift von Abb. 5 stimmt.</strong>
+Die Arbeit zeigt das konoidale Bild einer Schraubregelfläche als Wendelfläche, deren Erzeugende die
+Achse senkrecht treffen. Hier gemessen gilt das nur, wenn die Kehllinie die Erzeugenden rechtwinklig
+kreuzt. Im Allgemeinen berühren die konoidalen Erzeugenden einen Zylinder um die Achse mit dem Radius
+${m(frac(row('e · ṡ'), row('| e′ |')))}: 1,4 für die Fläche mit Erzeugenden unter 45° (Radius 1,
+Ganghöhe 0,4). Wählen Sie „Erzeugende normal zur Kehlschraublinie“ (β = −atan(r/p)), dann ist der Radius
+0: Die Wendelfläche der Bildunterschrift erscheint.</p>
+<p class="rl-paper-data">Die Arbeit gibt für Abb. 4–6 keine Daten an; ruledlab verwendet die
+Quartik aus Beispiel 3, eine Schraubregelfläche (Radius 1, Ganghöhe 0,4) und einen Streifen des
+Hyperboloids aus Beispiel 1.</p>`,
+
+  'curves.text': `
+<h2>Unterteilung von Polygonen</h2>
+<p><strong>Der Algorithmus von Chaikin</strong> (Abb. 7) ersetzt jede Kante durch die Punkte bei ¼ und
+¾ ihrer Länge. Die Polygone konvergieren gegen den quadratischen B-Spline mit den ursprünglichen
+Punkten als Kontrollpunkten; er berührt jede innere Kante in ihrem Mittelpunkt. Die Algorithmen von
+de Casteljau und de Boor arbeiten ebenso, für Bézier- und B-Spline-Kurven beliebigen Grades.</p>
+<p><strong>Das Vierpunktschema</strong> von Dyn, Levin und Gregory (Abb. 8) behält jeden Punkt und
+fügt auf jeder Kante einen neuen ein:</p>
+${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>+</mo><mi>w</mi><mo>)</mo><mo>(</mo>${sub('p', 'i')}<mo>+</mo>${sub('p', 'i + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i − 1')}<mo>+</mo>${sub('p', 'i + 2')}<mo>)</mo>`, '8')}
+<p>Die Grenzkurve interpoliert die Daten und ist C¹ für ${mr('0 < w')} &lt; ⅛; Abb. 8 der Arbeit
+verwendet w = 1/13 (im Feld neben dem Regler exakt eintippen), und w = 1/16 reproduziert kubische
+Polynome. Bei w = 0 ist die Grenzkurve das Polygon selbst; über ⅛ hinaus bekommt die Kurve Knicke. Bei
+einem offenen Polygon verwenden die Endkanten Geisterpunkte, extrapoliert aus den letzten vier
+Punkten.</p>
+<p class="rl-paper-data">Die Arbeit gibt für Abb. 7–8 kein Kontrollpolygon an; ruledlab verwendet einen
+Stern aus acht Punkten.</p>`,
+
+  'strip.text': `
+<h2>Variationelle Unterteilung eines Regelflächenstreifens (Beispiel 3)</h2>
+<p>Die beiden Randkurven getrennt zu verfeinern übergeht die Fläche dazwischen. Das variationelle
+Schema fügt zwischen je zwei Erzeugenden eine Erzeugende ${m(`${sub('A', 'i')}${sub('B', 'i')}`)} ein,
+teilt alle Strecken in <em>n</em> Teile,</p>
+${display(`${sub('z', 'i , k')}<mo>=</mo>${frac(row('n − k'), '<mi>n</mi>')}${sub('a', 'i')}<mo>+</mo>${frac('<mi>k</mi>', '<mi>n</mi>')}${sub('b', 'i')}`, '9')}
+<p>und trianguliert den verfeinerten Streifen auf die beiden Arten von Abb. 9. In einem Knoten mit
+sechs Nachbarn ist der <em>Umbrella-Vektor</em> (13) der Knoten minus dem Mittel seiner Nachbarn, eine
+diskrete mittlere Krümmung; die neuen Endpunkte minimieren</p>
+${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(</mo><msubsup><mi>U</mi>${row('i , k')}<mn>2</mn></msubsup><mo>+</mo><msubsup><mover><mi>U</mi><mo>~</mo></mover>${row('i , k')}<mn>2</mn></msubsup><mo>)</mo>`, '15')}
+<p>eine quadratische Funktion, also ein lineares Gleichungssystem.</p>
+<p class="rl-beyond"><strong>Was ruledlab ergänzt.</strong> Wörtlich gelesen, mit Umbrella-Vektoren nur
+in den neuen Punkten, ist das Minimum genau die Mittelpunktsregel (wählen Sie „wörtlich“: Die Anzeige
+gleicht der Mittelpunktsregel). Die <em>gekoppelte</em> Energie von ruledlab nimmt Umbrella-Vektoren in
+jedem inneren Knoten, auch in den alten, sodass die neuen Erzeugenden gekoppelt sind und der Fläche
+viel besser folgen. Die <em>gemittelte</em> Variante mittelt die Umbrella-Vektoren der beiden
+Triangulierungen vor dem Quadrieren: Die Energie (15) enthält einen Verdrillungsterm aus den
+gescherten Nachbarn der beiden Triangulierungen, den das Mitteln aufhebt; das macht das Innere des
+Streifens noch genauer. Auf dieser Fläche ist das Vierpunktschema an der schlechtesten Erzeugenden am
+besten: Seine Randkurven sind quadratisch, was w = 1/16 exakt reproduziert. Die Anzeige misst den
+Abstand der eingefügten Erzeugenden von der exakten Fläche.</p>
+<p class="rl-paper-data">Daten aus der Arbeit: 12 Erzeugende der quartischen Fläche
+(1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1], n = 12.</p>`,
+
+  'congruence.text': `
+<h2>Eine Geradenkongruenz verfeinern</h2>
+<p>Eine <em>Geradenkongruenz</em> ist eine zweiparametrige Schar von Geraden, etwa die Lagen der
+Achse eines Fräswerkzeugs über einer Fläche. Ihr diskretes Modell ist ein Gitter von Geraden
+${m(sub('R', 'i , j'))}, jede gegeben durch ihre Punkte ${m(sub('p', 'i , j'))} und ${m(sub('q', 'i , j'))}
+auf zwei Leitflächen ${m(sub('d', '1'))} und ${m(sub('d', '2'))} (Abb. 11). Die Kongruenz zu verfeinern
+heißt, beide Punktgitter zu verfeinern.</p>
+<p><strong>Butterfly-Schema (Abb. 12).</strong> Triangulieren Sie das Gitter durch die Diagonalen und
+fügen Sie auf jeder Diagonale ein</p>
+${display(`${sub('p̄', 'i , j')}<mo>=</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>(</mo>${sub('p', 'i , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 1')}<mo>)</mo><mo>+</mo><mn>2</mn><mi>w</mi><mo>(</mo>${sub('p', 'i + 1 , j')}<mo>+</mo>${sub('p', 'i , j + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i , j − 1')}<mo>+</mo>${sub('p', 'i − 1 , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 2')}<mo>+</mo>${sub('p', 'i + 2 , j + 1')}<mo>)</mo>`, '16')}
+<p>Die Arbeit fügt nur diese Geraden auf den Diagonalen ein (Abb. 13, „nur Diagonalen“).</p>
+<p><strong>Variationelle Unterteilung (Abschnitt 5.2, Abb. 15).</strong> Jede Zeile und Spalte von
+Geraden ist eine Regelfläche: Das Streifenschema fügt die Geraden T und S auf den Kanten ein, und
+jede Masche erhält die Gerade, deren Umbrella-Vektor (20) über ihre acht Nachbarn in jeder Schicht
+verschwindet: deren Mittel. Wörtlich gelesen (Umbrella-Vektoren nur in den neuen Punkten) liefert das
+Streifenschema die Mittelpunktsregel, das Schema der Arbeit („Arbeit“) ist also bilineare Mittelung
+der vier Ecken (ERRATA.md).</p>
+<p class="rl-beyond"><strong>Über die Arbeit hinaus.</strong> „Butterfly, alle Kanten“ wendet die
+Schablone von (16) auch auf die beiden anderen Kantenrichtungen an, sodass ein Schritt das Gitter
+verdoppelt. „Zweistufig“ bildet die Kantengeraden mit der gekoppelten Streifenenergie von ruledlab;
+„gekoppelt“ lässt alle neuen Geraden gemeinsam in einem dünn besetzten System zur Ruhe kommen.
+Gemessen an den exakten Kongruenzen (Anzeige) ist das Butterfly-Schema bei diesen Beispielen am
+genauesten.</p>
+<p class="rl-paper-data">Daten: Beispiel 5 stammt aus der Arbeit (d₁ = (u, v, ½ sin(2u + 1,5v)),
+Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6). Für die beiden Kongruenzen
+aus Beispiel 4 gibt die Arbeit keine Formeln an; Kugel und hyperbolisches Paraboloid wählt ruledlab,
+ebenso die Länge der Strecken (0,35 des Richtungsvektors).</p>`,
+
+  'milling.text': `
+<h2>Beispiel 6: eine glatte Bahn für ein Fräswerkzeug</h2>
+<p>Einige Lagen eines Kugelfräsers sind entlang eines zu fräsenden Profils gegeben. Jede ist eine
+Strecke von der Werkzeugspitze entlang der Werkzeugachse; die Lagen bilden also eine diskrete
+Regelfläche, und deren Verfeinerung verfeinert die Bewegung. Nach einem Schritt (Abb. 16) folgt die
+Bahn dem Profil schon viel besser; zwei und drei Schritte (Abb. 17, 18) lassen die Orientierung sich
+glatt ändern. Die gestrichelte Kurve verbindet die Schwerpunkte des Werkzeugs; der durchscheinende
+Schlauch ist die Hüllfläche der Kugel, deren untere Hälfte die gefräste Fläche ist. Das Werkzeug
+selbst ist in einer Lage gezeichnet (Position verschieben oder abspielen).</p>
+<p>Die Anzeige misst, was im CAM zählt: wie weit die gefräste Fläche das Sollprofil verfehlt (positiv
+bleibt Material stehen, negativ wird zu viel abgetragen), die größte Änderung der
+Werkzeugorientierung zwischen zwei Lagen und ihre zweite Differenz (wie gleichmäßig sich die
+Orientierung dreht). Vergleichen Sie die Schemata an der Anzeige: Auf dieser Bahn lässt das
+variationelle Schema die kleinste Abweichung vom Profil; welches Schema den kleinsten
+Orientierungsschritt hat, hängt von der Zahl der Schritte ab. Die Schaltflächen exportieren die Bahn
+als JSON, CSV oder G-Code für eine Tisch-Tisch-Maschine mit A- und C-Achse (Konventionen im Dateikopf).</p>
+<p class="rl-paper-data">Die Arbeit gibt für Beispiel 6 keine Daten an; das Profil auf der
+Werkstückfläche z = 0,3 sin x cos 0,7y, die sieben Lagen und das Werkzeug (Radius 0,25, Länge 1,5)
+stammen von ruledlab.</p>`,
+
+  'formula.text': `
+<h2>Ihre eigene Regelfläche</h2>
+<p>Tippen Sie die Leitkurve ${mr('a ( u )')} und die Richtung der Erzeugenden ${mr('e ( u )')} ein: Die
+Fläche ist ${m(`${row('x ( u , v )')}<mo>=</mo>${row('a ( u ) + v e ( u )')}`)}. Formeln verwenden Zahlen
+(mit Dezimalpunkt), <code>u</code>, die Parameter <code>a</code>, <code>b</code>, <code>c</code>
+(Regler), <code>pi</code>, <code>e</code>, die Operatoren <code>+ - * / ^</code> und die Funktionen
+sin cos tan asin acos atan atan2 sinh cosh tanh exp ln log sqrt abs (log ist der natürliche
+Logarithmus). Ein Fehler wird neben seinem Feld angezeigt, mit seiner Spalte.</p>
+<p>Der Kern leitet die Formeln exakt ab (automatische Differentiation, ohne Schrittweite); die
+<em>exakte</em> Kehllinie ${mr('s ( u )')}, der Drall und die Zentraltangente sind also so genau wie
+bei den eingebauten Flächen, und jedes Werkzeug der Abschnitte 2–4 arbeitet auf Ihrer Fläche: das
+Kehlpolygon, die Konvergenzordnungen, die Verbiegung, die Näherungsabwicklung und die Unterteilung.
+Die Formeln sind Teil des Links: Teilen Sie ihn als Übungsaufgabe.</p>`,
+
+  'formulaCongruence.text': `
+<h2>Ihre eigene Geradenkongruenz</h2>
+<p>Tippen Sie einen Punkt ${mr('p ( u , v )')} der Leitfläche ${m(sub('d', '1'))} und die Richtung
+${mr('e ( u , v )')} der Geraden ein: Die Kongruenz enthält die Geraden ${mr('p ( u , v ) + t e ( u , v )')}.
+Das Gitter der Geraden (Zeilen entlang u, Spalten entlang v) wird mit den Schemata aus Abschnitt 5
+verfeinert. Die Vorlagen enthalten die Normalen eines Ellipsoids (eine Normalenkongruenz) und die
+Geraden, die zwei windschiefe Geraden treffen.</p>`,
+
+  'lines.text': `
+<h2>Die Geraden verfeinern, nicht ihre Endpunkte</h2>
+<p>Jedes Schema aus Abschnitt 4 arbeitet mit zwei gewählten Punkten je Erzeugender. Verschieben Sie
+diese Punkte entlang ihrer Erzeugenden (Regler): Die Geraden ändern sich nicht, aber die vom
+Vierpunktschema auf den Endpunkten verfeinerte Fläche (gestrichelt) schon: Sie hängt von einer Wahl
+ab, die nicht zur Geometrie gehört.</p>
+<p class="rl-beyond"><strong>Über die Arbeit hinaus.</strong> ruledlab kann auch die Geraden selbst
+verfeinern. Eine orientierte Gerade mit Richtung e durch p ist der duale Einheitsvektor
+${mr('e + ε ( p × e )')}. Die Vierpunktregel (8) wird auf diese Vektoren angewandt und jedes Ergebnis auf
+die duale Einheitskugel zurückgeführt: eine neue Gerade. Die verfeinerten Geraden hängen dann nur von
+den gegebenen Geraden ab, und die Konstruktion ist mit Bewegungen vertauschbar; sie ist wie das
+Endpunktschema von vierter Ordnung. Die Anzeige zeigt, wie weit sich die neuen Erzeugenden jedes
+Schemas durch das Verschieben gedreht haben.</p>`,
+
+  'large.text': `
+<h2>Große Modelle</h2>
+<p>Eine Wendelfläche mit bis zu 10 000 Erzeugenden, verfeinert durch bis zu sieben Schritte des
+Vierpunktschemas: bis zu 1 280 000 Erzeugende (die Grenze der Bibliothek liegt bei 4 194 304 je
+Fläche; darüber wird mit einer klaren Meldung abgelehnt). Kleine Aufgaben werden sofort berechnet;
+alles Größere läuft in einem Web Worker mit einer eigenen Kopie des WebAssembly-Moduls, sodass die
+Seite weiter zeichnet und antwortet, während sich der Fortschrittsbalken füllt (Abbrechen beendet
+es). Über 100 000 Erzeugenden zeichnet die Ansicht jede k-te Erzeugende, eine Detailstufe, und sagt
+das unter der Anzeige.</p>`,
+
+  'data.text': `
+<h2>Ihre eigenen Erzeugenden</h2>
+<p>Fügen Sie eine CSV-Datei mit sechs Zahlen je Zeile ein oder laden Sie sie hoch (a.x a.y a.z b.x b.y
+b.z; eine Kopfzeile ist erlaubt), oder JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, oder
+<code>{"rows": r, "cols": c, "segments": […]}</code> für eine Kongruenz. Eine fehlerhafte Datei wird mit
+Zeile und Spalte des Fehlers abgelehnt, und die bisher gezeigten Daten bleiben. Eine Regelfläche wird
+mit ihrem Kehlpolygon und den gemeinsamen Loten gezeigt; die Export-Schaltflächen speichern sie wieder
+oder ihre Invarianten. Kleine Importe (bis 200 Erzeugende) stehen im Link, größere im
+Sitzungsspeicher dieses Browser-Tabs.</p>`,
+};
