@@ -42,6 +42,9 @@ pub const FORMULA_ZERO_DIRECTION: f64 = 1e-12;
 /// Largest number of samples asked of an analytic surface in one call.
 pub const MAX_SAMPLES: usize = MAX_RULINGS;
 
+/// Most vertices of a mesh handed in for shading: the two endpoints of the most rulings.
+pub const MAX_MESH_VERTICES: usize = 2 * MAX_RULINGS;
+
 /// `|a − b| ≤ tol · max(1, |a|, |b|)`: relative for large numbers, absolute near zero.
 pub fn near(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol * 1f64.max(a.abs()).max(b.abs())

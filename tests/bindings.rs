@@ -40,8 +40,9 @@ const GOOD: [f64; 12] = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 
 #[wasm_bindgen_test]
 fn bad_inputs_become_errors_with_messages() {
     let cases: Vec<(JsValue, &str)> = vec![
-        (JsValue::from_str("1,2,3"), "must be a Float64Array, got a string"),
-        (Array::of1(&1.0.into()).into(), "must be a Float64Array, got a Array"),
+        (JsValue::from_str("1,2,3"), "must be a Float64Array, Float32Array or array of numbers, got a string"),
+        (Array::of1(&1.0.into()).into(), "length 1 is not a multiple of 6"),
+        (Array::of1(&"1".into()).into(), "coords[0] must be a number, got a string"),
         (JsValue::UNDEFINED, "got undefined"),
         (f64s(&GOOD[..11]), "length 11 is not a multiple of 6"),
         (f64s(&GOOD[..6]), "rulings: got 1, need at least 2"),

@@ -32,7 +32,8 @@ fn the_papers_scheme_read_literally_is_bilinear_averaging() {
     for i in 0..r.rows() {
         for j in 0..r.cols() {
             let corners: Vec<(usize, usize)> =
-                [(i / 2, j / 2), ((i + 1) / 2, j / 2), (i / 2, (j + 1) / 2), ((i + 1) / 2, (j + 1) / 2)].to_vec();
+                [(i / 2, j / 2), (i.div_ceil(2), j / 2), (i / 2, j.div_ceil(2)), (i.div_ceil(2), j.div_ceil(2))]
+                    .to_vec();
             let mean = |end: fn(&ruledlab::line::Segment) -> glam::DVec3| {
                 corners.iter().map(|&(a, b)| end(&c.line(a, b))).sum::<glam::DVec3>() / 4.0
             };

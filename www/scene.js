@@ -67,6 +67,9 @@
  * @property {string} style          key of STYLES
  * @property {Float32Array} positions
  * @property {Uint32Array} [indices] mesh: 3 per triangle
+ * @property {Float32Array} [normals] mesh: 3 per vertex (the core's meshNormalsF32); shaded
+ *   smoothly by them instead of facet by facet — for facets smaller than a pixel, which
+ *   facet shading turns into moiré
  * @property {boolean} [closed]      polyline: join the last point to the first
  * @property {Float32Array | Float64Array} [transform]   4 × 4 model matrix, column-major
  *

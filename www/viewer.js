@@ -38,7 +38,7 @@ export function batch(gl, layer) {
     if (style.kind !== 'area') throw new Error(`style "${layer.style}" is not for meshes`);
     const front = [...rgb(style.color), style.alpha];
     const back = [...rgb(style.back), style.alpha];
-    return new TriangleMesh(gl, layer.positions, /** @type {Uint32Array} */ (layer.indices), { front, back }, transform);
+    return new TriangleMesh(gl, layer.positions, /** @type {Uint32Array} */ (layer.indices), { front, back }, transform, layer.normals);
   }
   if (layer.kind === 'points') {
     if (style.kind !== 'point') throw new Error(`style "${layer.style}" is not for points`);

@@ -195,7 +195,7 @@ fn emit<'a>(source: &str, tree: &'a Node, variables: &[&str], ops: &mut Vec<Op>)
         // operands are pushed last-first, so the first is visited (and emitted) first
         let mut then = |op: Op, operands: &[&'a Node]| {
             work.push(Work::Emit(op));
-            work.extend(operands.iter().rev().map(|n| Work::Visit(*n)));
+            work.extend(operands.iter().rev().map(|n| Work::Visit(n)));
         };
         match (node.operator(), children) {
             (Operator::RootNode, [only]) => work.push(Work::Visit(only)),

@@ -1,17 +1,51 @@
 //! Checking what JavaScript passed in, and building what goes back.
 
-use js_sys::{Float64Array, Object, Reflect};
+use js_sys::{Array, Float32Array, Float64Array, Object, Reflect, Uint32Array};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
 pub use super::error::{fail, fail_option};
 
-/// The contents of a `Float64Array`, or an error naming what was passed instead.
-pub fn float64_array(func: &str, name: &str, value: &JsValue) -> Result<Vec<f64>, JsValue> {
-    match value.dyn_ref::<Float64Array>() {
-        Some(a) => Ok(a.to_vec()),
-        None => Err(fail(func, format!("{name} must be a Float64Array, got {}", describe(value)))),
+/// Numbers (coordinates, parameters, amounts) given as a `Float64Array`, a `Float32Array` or
+/// an array of numbers: the f32 buffers the core hands out can come back as they are.
+pub fn numbers(func: &str, name: &str, value: &JsValue) -> Result<Vec<f64>, JsValue> {
+    if let Some(a) = value.dyn_ref::<Float64Array>() {
+        return Ok(a.to_vec());
     }
+    if let Some(a) = value.dyn_ref::<Float32Array>() {
+        return Ok(a.to_vec().into_iter().map(f64::from).collect());
+    }
+    if let Some(a) = value.dyn_ref::<Array>() {
+        return a
+            .iter()
+            .enumerate()
+            .map(|(k, x)| {
+                x.as_f64().ok_or_else(|| fail(func, format!("{name}[{k}] must be a number, got {}", describe(&x))))
+            })
+            .collect();
+    }
+    Err(fail(func, format!("{name} must be a Float64Array, Float32Array or array of numbers, got {}", describe(value))))
+}
+
+/// Vertex indices given as a `Uint32Array` or an array of non-negative integers.
+pub fn indices(func: &str, name: &str, value: &JsValue) -> Result<Vec<u32>, JsValue> {
+    if let Some(a) = value.dyn_ref::<Uint32Array>() {
+        return Ok(a.to_vec());
+    }
+    if let Some(a) = value.dyn_ref::<Array>() {
+        return a
+            .iter()
+            .enumerate()
+            .map(|(k, x)| match x.as_f64() {
+                Some(i) if i >= 0.0 && i <= u32::MAX as f64 && i.fract() == 0.0 => Ok(i as u32),
+                _ => Err(fail(
+                    func,
+                    format!("{name}[{k}] must be an integer from 0 to {}, got {}", u32::MAX, describe(&x)),
+                )),
+            })
+            .collect();
+    }
+    Err(fail(func, format!("{name} must be a Uint32Array or array of integers, got {}", describe(value))))
 }
 
 /// A non-negative integer given as a JS number.
@@ -179,14 +213,18 @@ pub fn describe(value: &JsValue) -> String {
     if value.is_null() {
         return "null".into();
     }
-    if let Some(name) = value
+    if Array::is_array(value) {
+        return "an array".into();
+    }
+    let name = value
         .dyn_ref::<Object>()
         .and_then(|o| Reflect::get(&o.constructor(), &"name".into()).ok())
         .and_then(|n| n.as_string())
-    {
-        return format!("a {name}");
-    }
-    format!("a {}", value.js_typeof().as_string().unwrap_or_default())
+        .map(|n| if n == "Object" { "object".to_string() } else { n })
+        .unwrap_or_else(|| value.js_typeof().as_string().unwrap_or_default());
+    // "an array", "an object", but "a Uint8Array" (said "you-int")
+    let article = if name.starts_with(['a', 'e', 'i', 'o', 'u', 'A', 'E', 'I', 'O']) { "an" } else { "a" };
+    format!("{article} {name}")
 }
 
 /// A plain object under construction.

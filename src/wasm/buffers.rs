@@ -3,7 +3,7 @@
 //! refined strip, director surfaces, the reference frame of the conoidal model, meshes of the
 //! milling example. The page uploads them as they are.
 
-use super::args::{fail, integer, ObjectBuilder};
+use super::args::{self, fail, integer, ObjectBuilder};
 use super::congruence::LineCongruence;
 use super::surface::RuledSurface;
 use super::toolpath::ToolPath;
@@ -40,6 +40,21 @@ pub fn mesh_buffers(mesh: &Mesh) -> JsValue {
         .set("positions", points_f32(&mesh.positions))
         .set("indices", Uint32Array::from(&mesh.indices[..]))
         .build()
+}
+
+/// Vertex normals of an indexed triangle mesh (3 floats per vertex, 3 indices per triangle), as
+/// f32: the area-weighted average of the facet normals around each vertex, oriented by the
+/// winding ([`Mesh::vertex_normals`]). For shading models whose facets are smaller than a pixel.
+#[wasm_bindgen(js_name = meshNormalsF32)]
+pub fn mesh_normals_f32(
+    #[wasm_bindgen(unchecked_param_type = "Float32Array | Float64Array | number[]")] positions: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Uint32Array | number[]")] indices: JsValue,
+) -> Result<Float32Array, JsValue> {
+    const FUNC: &str = "meshNormalsF32";
+    let coords = args::numbers(FUNC, "positions", &positions)?;
+    let indices = args::indices(FUNC, "indices", &indices)?;
+    let mesh = Mesh::from_flat(&coords, &indices).map_err(|e| fail(FUNC, e))?;
+    Ok(points_f32(&mesh.vertex_normals()))
 }
 
 #[wasm_bindgen]

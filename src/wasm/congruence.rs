@@ -1,6 +1,6 @@
 //! Line congruences for JavaScript (Section 5): `LineCongruence` and `AnalyticCongruence`.
 
-use super::args::{describe, fail, float64_array, integer, ObjectBuilder, Options};
+use super::args::{describe, fail, integer, numbers, ObjectBuilder, Options};
 use super::live::Live;
 use super::surface::RuledSurface;
 use crate::congruence::{self, CongruenceScheme};
@@ -68,13 +68,13 @@ impl LineCongruence {
     pub fn from_grid(
         rows: f64,
         cols: f64,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] coords: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] coords: JsValue,
     ) -> Result<LineCongruence, JsValue> {
         const F: &str = "LineCongruence.fromGrid";
         let rows = integer(F, "rows", rows, 2, MAX_RULINGS)?;
         let cols = integer(F, "cols", cols, 2, MAX_RULINGS)?;
         congruence::grid::check_shape(rows, cols).map_err(|e| fail(F, e))?;
-        let coords = float64_array(F, "coords", &coords)?;
+        let coords = numbers(F, "coords", &coords)?;
         congruence::LineCongruence::from_flat(rows, cols, &coords)
             .map(|inner| LineCongruence { inner, _live: Live::new() })
             .map_err(|e| fail(F, e))

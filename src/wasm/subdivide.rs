@@ -1,7 +1,7 @@
 //! Subdivision for JavaScript (Section 4): `surface.subdivide(options)`, `surface.recut()`
 //! and `subdividePolygon(points, options)`.
 
-use super::args::{fail, float64_array, Options};
+use super::args::{fail, numbers, Options};
 use super::surface::RuledSurface;
 use crate::ruled::surface::points_from_flat;
 use crate::subdivision::{self, Scheme, Variant, MAX_STEPS};
@@ -144,11 +144,11 @@ impl RuledSurface {
 /// "variational" is for ruled strips only).
 #[wasm_bindgen(js_name = subdividePolygon)]
 pub fn subdivide_polygon(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array")] points: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
     #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
 ) -> Result<Float64Array, JsValue> {
     const F: &str = "subdividePolygon";
-    let flat = float64_array(F, "points", &points)?;
+    let flat = numbers(F, "points", &points)?;
     let points = points_from_flat(&flat).map_err(|e| fail(F, e))?;
     let (scheme, closed, steps, space) = read(F, options, None)?;
     if matches!(space, Space::Lines(_)) {

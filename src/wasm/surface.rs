@@ -1,6 +1,6 @@
 //! `RuledSurface` and `AnalyticSurface` for JavaScript (Section 2).
 
-use super::args::{describe, fail, float64_array, integer, read_options, ObjectBuilder, Options};
+use super::args::{describe, fail, integer, numbers, read_options, ObjectBuilder, Options};
 use super::live::Live;
 use crate::examples;
 use crate::ruled::{self, convergence, Development, HingeChain, Invariants};
@@ -128,9 +128,9 @@ impl RuledSurface {
     /// above 1e150 in magnitude, or a ruling has zero length.
     #[wasm_bindgen(js_name = fromSegments)]
     pub fn from_segments(
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] coords: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] coords: JsValue,
     ) -> Result<RuledSurface, JsValue> {
-        let coords = float64_array("RuledSurface.fromSegments", "coords", &coords)?;
+        let coords = numbers("RuledSurface.fromSegments", "coords", &coords)?;
         ruled::RuledSurface::from_flat(&coords).map(Self::from_core).map_err(|e| fail("RuledSurface.fromSegments", e))
     }
 
@@ -244,10 +244,10 @@ impl RuledSurface {
     /// `amounts[2i + 1]` along e_i (the lines themselves do not change).
     pub fn slide(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] amounts: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] amounts: JsValue,
     ) -> Result<RuledSurface, JsValue> {
         const F: &str = "RuledSurface.slide";
-        let amounts = float64_array(F, "amounts", &amounts)?;
+        let amounts = numbers(F, "amounts", &amounts)?;
         self.inner.slide(&amounts).map(Self::from_core).map_err(|e| fail(F, e))
     }
 
@@ -276,10 +276,10 @@ impl RuledSurface {
     /// values); R_0 and R_1 stay put. An isometry: every polygon p_i ∈ R_i keeps its length.
     pub fn hinge(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] angles: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] angles: JsValue,
     ) -> Result<RuledSurface, JsValue> {
         const F: &str = "RuledSurface.hinge";
-        let angles = float64_array(F, "angles", &angles)?;
+        let angles = numbers(F, "angles", &angles)?;
         self.chain().deform(&angles).map(Self::from_core).map_err(|e| fail(F, e))
     }
 
@@ -431,7 +431,7 @@ impl AnalyticSurface {
     /// Exact striction points s(u) for each u: 3 numbers per u (NaN on a cylindrical ruling).
     pub fn striction(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] u: JsValue,
     ) -> Result<Float64Array, JsValue> {
         let u = self.u_values("AnalyticSurface.striction", &u)?;
         let out: Vec<f64> =
@@ -442,7 +442,7 @@ impl AnalyticSurface {
     /// Exact distribution parameters δ(u).
     pub fn distribution(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] u: JsValue,
     ) -> Result<Float64Array, JsValue> {
         let u = self.u_values("AnalyticSurface.distribution", &u)?;
         let out: Vec<f64> = u.iter().map(|&u| self.inner.distribution(u)).collect();
@@ -453,7 +453,7 @@ impl AnalyticSurface {
     #[wasm_bindgen(js_name = centralTangent)]
     pub fn central_tangent(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] u: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] u: JsValue,
     ) -> Result<Float64Array, JsValue> {
         let u = self.u_values("AnalyticSurface.centralTangent", &u)?;
         let out: Vec<f64> =
@@ -465,12 +465,12 @@ impl AnalyticSurface {
     /// whole lines, searching the rulings with u in [uMin, uMax].
     pub fn distances(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] points: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
         u_min: f64,
         u_max: f64,
     ) -> Result<Float64Array, JsValue> {
         const F: &str = "AnalyticSurface.distances";
-        let flat = float64_array(F, "points", &points)?;
+        let flat = numbers(F, "points", &points)?;
         if !(u_min.is_finite() && u_max.is_finite() && u_min < u_max) {
             return Err(fail(F, format!("need finite uMin < uMax, got {u_min} and {u_max}")));
         }
@@ -505,8 +505,8 @@ impl AnalyticSurface {
                 ObjectBuilder::new()
                     .set("name", s.name)
                     .set("expectedOrder", s.expected_order)
-                    .set("errors", numbers(&s.errors))
-                    .set("orders", numbers(&s.orders))
+                    .set("errors", js_numbers(&s.errors))
+                    .set("orders", js_numbers(&s.orders))
                     .set("fittedOrder", s.fitted_order)
                     .build()
             })
@@ -514,14 +514,14 @@ impl AnalyticSurface {
         Ok(ObjectBuilder::new()
             .set("surface", study.surface)
             .set("u", study.u)
-            .set("steps", numbers(&study.steps))
+            .set("steps", js_numbers(&study.steps))
             .set("series", series)
             .build())
     }
 }
 
 /// A plain JS array of numbers (the study's small series read best as ordinary arrays).
-fn numbers(values: &[f64]) -> js_sys::Array {
+fn js_numbers(values: &[f64]) -> js_sys::Array {
     values.iter().map(|&x| JsValue::from_f64(x)).collect()
 }
 
@@ -538,7 +538,7 @@ impl AnalyticSurface {
     }
 
     fn u_values(&self, func: &str, u: &JsValue) -> Result<Vec<f64>, JsValue> {
-        let u = float64_array(func, "u", u)?;
+        let u = numbers(func, "u", u)?;
         if u.len() > MAX_SAMPLES {
             return Err(fail(func, crate::Error::TooMany { what: "parameters", got: u.len(), max: MAX_SAMPLES }));
         }

@@ -1,6 +1,6 @@
 //! Tool paths for JavaScript (Example 6, Figs. 16–18): `ToolPath`.
 
-use super::args::{fail, float64_array, ObjectBuilder, Options};
+use super::args::{fail, numbers, ObjectBuilder, Options};
 use super::live::Live;
 use crate::error::Error;
 use crate::milling::{self, example, export, quality};
@@ -76,11 +76,11 @@ impl ToolPath {
     /// fewer than 2 poses or a bad tool (radius or length ≤ 0).
     #[wasm_bindgen(js_name = fromSegments)]
     pub fn from_segments(
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] coords: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] coords: JsValue,
         #[wasm_bindgen(unchecked_param_type = "ToolOptions")] tool: JsValue,
     ) -> Result<ToolPath, JsValue> {
         const F: &str = "ToolPath.fromSegments";
-        let coords = float64_array(F, "coords", &coords)?;
+        let coords = numbers(F, "coords", &coords)?;
         let tool = read_tool(F, tool)?;
         let axes = RuledSurface::from_flat(&coords).map_err(|e| match e {
             Error::ZeroLength { ruling } => {
@@ -199,10 +199,10 @@ impl ToolPath {
     /// (> 0: material left, < 0: gouge).
     pub fn deviation(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array")] targets: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] targets: JsValue,
     ) -> Result<Float64Array, JsValue> {
         const F: &str = "ToolPath.deviation";
-        let t = points_from_flat(&float64_array(F, "targets", &targets)?).map_err(|e| fail(F, e))?;
+        let t = points_from_flat(&numbers(F, "targets", &targets)?).map_err(|e| fail(F, e))?;
         Ok(Float64Array::from(&quality::deviation(&self.inner, &t)[..]))
     }
 

@@ -18,6 +18,26 @@ test('fromSegments, length, segments and segmentsF32 round-trip', () => {
   s.free();
 });
 
+test('coordinates come as Float64Array, Float32Array or a plain array of numbers', () => {
+  for (const input of [[...GOOD], new Float32Array(GOOD)]) {
+    const s = RuledSurface.fromSegments(input);
+    try {
+      assert.deepEqual(s.segments(), GOOD);
+    } finally {
+      s.free();
+    }
+  }
+  // the f32 buffers the core hands out go back in as they are (f32 → f64 is exact)
+  const a = RuledSurface.fromSegments(new Float64Array([0, 0, 0, 1, 0, 0, 0.1, 0, 1, 0.1, 1, 1, 0, 0, 2, 1, 1, 2.3]));
+  const b = RuledSurface.fromSegments(a.segmentsF32());
+  try {
+    assert.deepEqual(b.segments(), Float64Array.from(a.segmentsF32()));
+  } finally {
+    a.free();
+    b.free();
+  }
+});
+
 test('invariants: typed arrays of the documented lengths and the right values', () => {
   // rulings along x, then along y one unit higher: φ = π/2, h = 1, footpoints on the z-axis
   const s = RuledSurface.fromSegments(GOOD);
@@ -80,11 +100,12 @@ test('analytic surfaces: list, exact values, sampling and the convergence study'
 
 test('every bad input throws an Error that says what is wrong, and the module keeps working', () => {
   const cases = [
-    [() => RuledSurface.fromSegments([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0]), /must be a Float64Array, got a Array/],
-    [() => RuledSurface.fromSegments('0,0,0'), /must be a Float64Array, got a string/],
+    [() => RuledSurface.fromSegments([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, {}]), /coords\[11\] must be a number, got an object/],
+    [() => RuledSurface.fromSegments('0,0,0'), /must be a Float64Array, Float32Array or array of numbers, got a string/],
+    [() => RuledSurface.fromSegments(new Uint8Array(12)), /got a Uint8Array/],
     [() => RuledSurface.fromSegments(), /got undefined/],
     [() => RuledSurface.fromSegments(null), /got null/],
-    [() => RuledSurface.fromSegments(new Float32Array(12)), /must be a Float64Array, got a Float32Array/],
+    [() => RuledSurface.fromSegments(new Float32Array(12)), /ruling 0 has zero length/],
     [() => RuledSurface.fromSegments(new Float64Array(13)), /length 13 is not a multiple of 6/],
     [() => RuledSurface.fromSegments(new Float64Array(6)), /rulings: got 1, need at least 2/],
     [() => RuledSurface.fromSegments(new Float64Array(0)), /rulings: got 0, need at least 2/],
@@ -102,8 +123,8 @@ test('every bad input throws an Error that says what is wrong, and the module ke
     [() => AnalyticSurface.byName('cone').sample(5, { vMin: 1, vMax: 1 }), /vMax: must differ from vMin/],
     [() => AnalyticSurface.byName('cone').sample(5, { uMin: NaN }), /options.uMin must be a finite number, got NaN/],
     [() => AnalyticSurface.byName('cone').sample(5, { steps: 3 }), /unknown option "steps"/],
-    [() => AnalyticSurface.byName('cone').sample(5, [1, 2]), /options must be an object, got a Array/],
-    [() => AnalyticSurface.byName('cone').striction([0.5]), /u must be a Float64Array/],
+    [() => AnalyticSurface.byName('cone').sample(5, [1, 2]), /options must be an object, got an array/],
+    [() => AnalyticSurface.byName('cone').striction([0.5, 'a']), /u\[1\] must be a number, got a string/],
     [() => AnalyticSurface.byName('cone').distribution(new Float64Array([Infinity])), /every u must be finite/],
     [() => AnalyticSurface.byName('cylinder').convergence(), /no striction point/],
     [() => AnalyticSurface.byName('cone').convergence({ levels: 99 }), /options.levels must be an integer from 2 to 20, got 99/],
@@ -129,7 +150,7 @@ test('the TypeScript declarations type the results', () => {
   const dts = readFileSync(new URL('../../pkg/ruledlab.d.ts', import.meta.url), 'utf8');
   assert.match(dts, /export interface Invariants \{/);
   assert.match(dts, /invariants\(options\?: InvariantsOptions( \| null)?\): Invariants;/);
-  assert.match(dts, /static fromSegments\(coords: Float64Array\): RuledSurface;/);
+  assert.match(dts, /static fromSegments\(coords: Float64Array \| Float32Array \| number\[\]\): RuledSurface;/);
   assert.match(dts, /convergence\(opts\?: ConvergenceOptions \| undefined\): ConvergenceStudy;|convergence\(opts: ConvergenceOptions \| undefined\): ConvergenceStudy;/);
   // the public API (before wasm-bindgen's internal InitOutput table) has no `any` type
   const api = dts.slice(0, dts.indexOf('export type InitInput'));

@@ -72,7 +72,7 @@ test('bad arguments throw clear Errors and leave the surface usable', () => {
     [() => s.bend('half'), /got NaN/],
     [() => s.bend(Infinity), /got inf/],
     [() => s.hinge(new Float64Array(3)), /need one angle per interior ruling: 4 for 6 rulings, got 3/],
-    [() => s.hinge([0, 0, 0, 0]), /angles must be a Float64Array, got a Array/],
+    [() => s.hinge(['0', 0, 0, 0]), /angles\[0\] must be a number, got a string/],
     [() => s.hinge(new Float64Array([0, NaN, 0, 0])), /angle 1 is NaN, must be finite/],
   ];
   for (const [call, message] of cases) {

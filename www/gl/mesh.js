@@ -1,18 +1,22 @@
 // Shaded triangle meshes with a front and a back colour: ruled strips (the quads
 // a_i b_i b_{i+1} a_{i+1}, whose vertex buffer is the segment array itself: a_i at vertex 2i,
 // b_i at 2i + 1), grids (director surfaces), and the core's meshes. Facet normals come from
-// screen-space derivatives, so the facets of a discrete model show honestly.
+// screen-space derivatives, so the facets of a discrete model show honestly; a mesh whose
+// facets are smaller than a pixel brings vertex normals from the core instead (no moiré).
 import { cachedProgram } from './program.js';
 import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
 layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
 uniform mat4 viewProj;
 uniform mat4 model;
 out vec3 world;
+out vec3 smoothNormal;
 void main() {
   vec4 p = model * vec4(position, 1.0);
   world = p.xyz;
+  smoothNormal = mat3(model) * normal;
   gl_Position = viewProj * p;
 }`;
 
@@ -21,10 +25,12 @@ precision highp float;
 uniform vec3 eye;
 uniform vec4 front;
 uniform vec4 back;
+uniform bool smoothShading;
 in vec3 world;
+in vec3 smoothNormal;
 out vec4 outColor;
 void main() {
-  vec3 n = normalize(cross(dFdx(world), dFdy(world)));
+  vec3 n = smoothShading && dot(smoothNormal, smoothNormal) > 0.0 ? normalize(smoothNormal) : normalize(cross(dFdx(world), dFdy(world)));
   vec3 v = normalize(eye - world);
   if (dot(n, v) < 0.0) n = -n;
   vec3 l = normalize(v + vec3(0.3, 0.2, 0.6));
@@ -68,17 +74,21 @@ export class TriangleMesh {
    * @param {Uint32Array} indices 3 per triangle
    * @param {{front: number[], back: number[]}} style
    * @param {ArrayLike<number>} [transform]
+   * @param {Float32Array} [normals] 3 floats per vertex: smooth shading
    */
-  constructor(gl, positions, indices, style, transform = IDENTITY) {
+  constructor(gl, positions, indices, style, transform = IDENTITY, normals = undefined) {
     this.style = style;
     this.transparent = style.front[3] < 1;
     this.count = indices.length;
     this.model = new Float32Array(transform);
-    this.program = cachedProgram(gl, 'mesh', VS, FS, ['viewProj', 'model', 'eye', 'front', 'back']);
+    this.program = cachedProgram(gl, 'mesh', VS, FS, ['viewProj', 'model', 'eye', 'front', 'back', 'smoothShading']);
+    this.smooth = !!normals;
     this.vao = gl.createVertexArray();
     gl.bindVertexArray(this.vao);
     this.vbo = createBuffer(gl, positions);
     floatAttribute(gl, 0, this.vbo, 3);
+    this.nbo = normals ? createBuffer(gl, normals) : null;
+    if (this.nbo) floatAttribute(gl, 1, this.nbo, 3);
     this.ibo = createBuffer(gl, indices, gl.ELEMENT_ARRAY_BUFFER);
     gl.bindVertexArray(null);
   }
@@ -93,6 +103,7 @@ export class TriangleMesh {
     gl.uniform3fv(u.eye, frame.eye);
     gl.uniform4fv(u.front, this.style.front);
     gl.uniform4fv(u.back, this.style.back);
+    gl.uniform1i(u.smoothShading, this.smooth ? 1 : 0);
     gl.bindVertexArray(this.vao);
     gl.drawElements(gl.TRIANGLES, this.count, gl.UNSIGNED_INT, 0);
     gl.bindVertexArray(null);
@@ -101,6 +112,7 @@ export class TriangleMesh {
   /** @param {WebGL2RenderingContext} gl */
   dispose(gl) {
     gl.deleteBuffer(this.vbo);
+    if (this.nbo) gl.deleteBuffer(this.nbo);
     gl.deleteBuffer(this.ibo);
     gl.deleteVertexArray(this.vao);
   }

@@ -330,11 +330,13 @@ export default {
 
   'large.title': 'Große Modelle in einem Web Worker',
   'large.param.steps': 'Schritte des Vierpunktschemas',
-  'large.param.rulings': 'Jede Erzeugende zeichnen',
+  'large.param.rulings': 'Erzeugende als Linien',
   'large.legend.strip': 'Streifen der Wendelfläche',
   'large.readout.rulings': 'Erzeugende des Modells',
-  'large.readout.drawn': 'gezeichnete Erzeugende',
-  'large.note.lod': 'Detailstufe: Jede {every}. Erzeugende wird gezeichnet ({drawn} davon).',
+  'large.readout.drawn': 'Erzeugende im gezeichneten Streifen',
+  'large.readout.lines': 'als Linien gezeichnete Erzeugende',
+  'large.note.lod': 'Detailstufe: Der Streifen wird durch jede {every}. Erzeugende gezeichnet ({drawn} davon).',
+  'large.note.lines': 'Jede {every}. Erzeugende wird als Linie gezeichnet, damit die Linien auf dem Bildschirm getrennt bleiben.',
   'large.describe': 'Eine Wendelfläche mit {rulings} Erzeugenden, davon {drawn} gezeichnet.',
 
   'data.title': 'Ihre Daten (CSV oder JSON importieren)',

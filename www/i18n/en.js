@@ -346,11 +346,13 @@ export default {
   // large models
   'large.title': 'Large models in a Web Worker',
   'large.param.steps': 'Four-point steps',
-  'large.param.rulings': 'Draw every ruling',
+  'large.param.rulings': 'Rulings as lines',
   'large.legend.strip': 'helicoid strip',
   'large.readout.rulings': 'rulings of the model',
-  'large.readout.drawn': 'rulings drawn',
-  'large.note.lod': 'Level of detail: every {every}th ruling is drawn ({drawn} of them).',
+  'large.readout.drawn': 'rulings in the drawn strip',
+  'large.readout.lines': 'rulings drawn as lines',
+  'large.note.lod': 'Level of detail: the strip is drawn through one ruling in {every} ({drawn} of them).',
+  'large.note.lines': 'One ruling in {every} is drawn as a line, so that the lines stay apart on screen.',
   'large.describe': 'A helicoid of {rulings} rulings, {drawn} of them drawn.',
 
   // your data

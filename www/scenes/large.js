@@ -2,7 +2,7 @@
 // (up to 1 280 000 rulings) in a Web Worker with progress and cancel, the page answering
 // meanwhile. Above what the view draws smoothly, a level of detail is drawn (every k-th
 // ruling), and the readout says so.
-import { AnalyticSurface } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, RuledSurface, meshNormalsF32 } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds } from '../scene.js';
 import { stripIndices } from '../gl/mesh.js';
 
@@ -10,6 +10,8 @@ import { stripIndices } from '../gl/mesh.js';
 const WORKER_THRESHOLD = 50_000;
 /** Most rulings drawn as a strip (a level of detail above it). */
 const DRAW_LIMIT = 100_000;
+/** Most rulings drawn as lines: a few pixels apart in a full view; more would merge into a moiré. */
+const LINE_LIMIT = 160;
 
 /**
  * @param {Float32Array} segments
@@ -20,9 +22,18 @@ const DRAW_LIMIT = 100_000;
  */
 function picture(segments, rulings, drawRulings, { t }) {
   const drawn = segments.length / 6;
+  const indices = stripIndices(drawn);
+  // thousands of rulings put several facets in a pixel: shaded by vertex normals, not by facet
   /** @type {import('../scene.js').Layer[]} */
-  const layers = [{ kind: 'mesh', style: 'stripOpaque', positions: segments, indices: stripIndices(drawn) }];
-  if (drawRulings) layers.push({ kind: 'segments', style: 'ruling', positions: segments });
+  const layers = [{ kind: 'mesh', style: 'stripOpaque', positions: segments, indices, normals: meshNormalsF32(segments, indices) }];
+  const every = Math.ceil(drawn / LINE_LIMIT);
+  let lines = 0;
+  if (drawRulings) {
+    const shown = scoped((own) => (every > 1 ? own(RuledSurface.fromSegments(segments)).everyF32(every) : segments));
+    lines = shown.length / 6;
+    layers.push({ kind: 'segments', style: 'ruling', positions: shown });
+  }
+  const notes = [drawn < rulings ? t('large.note.lod', { every: Math.ceil(rulings / drawn), drawn }) : '', drawRulings && lines < rulings ? t('large.note.lines', { every: Math.round((rulings - 1) / Math.max(lines - 1, 1)) }) : ''];
   return {
     bounds: bounds(segments),
     camera: { yaw: -1.0, pitch: 0.3 },
@@ -30,8 +41,9 @@ function picture(segments, rulings, drawRulings, { t }) {
     readouts: [
       { label: 'large.readout.rulings', value: rulings },
       { label: 'large.readout.drawn', value: drawn },
+      ...(drawRulings ? [{ label: 'large.readout.lines', value: lines }] : []),
     ],
-    note: drawn < rulings ? t('large.note.lod', { every: Math.ceil(rulings / drawn), drawn }) : undefined,
+    note: notes.filter(Boolean).join(' ') || undefined,
     description: t('large.describe', { rulings, drawn }),
   };
 }
