@@ -14,6 +14,7 @@ if [ pkg/ruledlab_bg.wasm -nt "$raw" ] && [ pkg/ruledlab.js -nt "$raw" ]; then
 fi
 wasm-bindgen --target web --weak-refs --out-dir pkg --out-name ruledlab \
   --remove-name-section --remove-producers-section "$raw"
+node scripts/glue.mjs pkg/ruledlab.js
 node_modules/.bin/wasm-opt -O3 pkg/ruledlab_bg.wasm -o pkg/ruledlab_bg.wasm
 size=$(stat -c %s pkg/ruledlab_bg.wasm)
 gz=$(gzip -9 -c pkg/ruledlab_bg.wasm | wc -c)

@@ -80,7 +80,7 @@ fn bad_inputs_become_errors_with_messages() {
 #[wasm_bindgen_test]
 fn invariants_object_has_every_array_with_the_documented_length() {
     let hyp = AnalyticSurface::by_name("hyperboloid".into()).unwrap();
-    let s = hyp.sample(10.0, JsValue::UNDEFINED).unwrap();
+    let s = hyp.sample(10.0.into(), JsValue::UNDEFINED).unwrap();
     let inv = s.invariants(None).unwrap();
     let len = |k: &str| -> u32 {
         let v = Reflect::get(&inv, &k.into()).unwrap();
@@ -117,16 +117,23 @@ fn analytic_surface_arguments_are_checked() {
         (-3.0, "got -3"),
         (1e12, "got 1000000000000"),
     ] {
-        let m = message(hyp.sample(count, JsValue::UNDEFINED));
+        let m = message(hyp.sample(count.into(), JsValue::UNDEFINED));
         assert!(m.contains(expected), "{m}");
     }
     let opts = js_sys::Object::new();
     Reflect::set(&opts, &"vMin".into(), &"low".into()).unwrap();
-    assert_fails(hyp.sample(5.0, opts.into()), "options.vMin must be a finite number, got a string");
+    assert_fails(hyp.sample(5.0.into(), opts.into()), "options.vMin: expected a number, got the string \"low\"");
     let opts = js_sys::Object::new();
     Reflect::set(&opts, &"colour".into(), &1.into()).unwrap();
-    assert_fails(hyp.sample(5.0, opts.into()), "unknown option \"colour\"; known options: uMin");
-    assert_fails(hyp.sample(5.0, JsValue::from(7)), "options must be an object, got a number");
+    assert_fails(hyp.sample(5.0.into(), opts.into()), "unknown option \"colour\"; known options: uMin");
+    assert_fails(
+        hyp.sample(5.0.into(), JsValue::from(7)),
+        "options must be an object { uMin, uMax, vMin, vMax, closed }, got a number",
+    );
+    assert_fails(
+        hyp.sample("5".into(), JsValue::UNDEFINED),
+        "count must be an integer from 2 to 4194304, got a string",
+    );
     assert_fails(hyp.striction(f64s(&[0.1, f64::NAN])), "every u must be finite");
     assert!(message(
         hyp.convergence(JsValue::NULL)
@@ -134,5 +141,5 @@ fn analytic_surface_arguments_are_checked() {
     )
     .contains("no striction point"));
     // still usable after all of that
-    assert_eq!(hyp.sample(5.0, JsValue::UNDEFINED).unwrap().length(), 5);
+    assert_eq!(hyp.sample(5.0.into(), JsValue::UNDEFINED).unwrap().length(), 5);
 }

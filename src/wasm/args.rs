@@ -1,6 +1,14 @@
-//! Checking what JavaScript passed in, and building what goes back.
+//! Checking what JavaScript passed in, and writing what goes back.
+//!
+//! Options objects are read by serde-wasm-bindgen into `#[derive(Deserialize)]` structs
+//! ([`options`], [`required`]); structured results are written by it from `#[derive(Serialize)]`
+//! structs ([`to_js`]), typed arrays travelling as themselves (`serde_wasm_bindgen::preserve`).
+//! Numbers, coordinates and indices passed as arguments are taken as `JsValue`s and checked
+//! here, so that a wrong type (a string, a BigInt) is an `Error` with a `code` like any other.
 
 use js_sys::{Array, Float32Array, Float64Array, Object, Reflect, Uint32Array};
+use serde::de::{self, DeserializeOwned, Visitor};
+use serde::Serialize;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
@@ -48,135 +56,111 @@ pub fn indices(func: &str, name: &str, value: &JsValue) -> Result<Vec<u32>, JsVa
     Err(fail(func, format!("{name} must be a Uint32Array or array of integers, got {}", describe(value))))
 }
 
-/// A non-negative integer given as a JS number.
-pub fn integer(func: &str, name: &str, x: f64, min: usize, max: usize) -> Result<usize, JsValue> {
-    if x.is_finite() && x.fract() == 0.0 && x >= min as f64 && x <= max as f64 {
-        Ok(x as usize)
-    } else {
-        Err(fail(func, format!("{name} must be an integer from {min} to {max}, got {x}")))
+/// What a JS value is for a number message: the number itself, or "a string", "a bigint" ….
+fn number_or_kind(value: &JsValue) -> String {
+    match value.as_f64() {
+        Some(x) => format!("{x}"),
+        None => describe(value),
     }
 }
 
-/// An options object read key by key, so that every message names the option at fault.
-/// `undefined` or `null` stand for `{}`; keys outside `known` are rejected (typos would
-/// otherwise be silently ignored).
-pub struct Options {
-    func: &'static str,
-    object: Option<Object>,
-}
-
-impl Options {
-    /// Checks that `value` is a plain object with only `known` keys.
-    pub fn new(func: &'static str, value: JsValue, known: &[&str]) -> Result<Self, JsValue> {
-        if value.is_undefined() || value.is_null() {
-            return Ok(Options { func, object: None });
-        }
-        if !value.is_object() || js_sys::Array::is_array(&value) || value.is_function() {
-            return Err(fail(func, format!("options must be an object, got {}", describe(&value))));
-        }
-        let object: Object = value.unchecked_into();
-        for key in Object::keys(&object).iter() {
-            let key = key.as_string().unwrap_or_default();
-            if !known.contains(&key.as_str()) {
-                return Err(fail_option(
-                    func,
-                    &key,
-                    format!("unknown option \"{key}\"; known options: {}", known.join(", ")),
-                ));
-            }
-        }
-        Ok(Options { func, object: Some(object) })
-    }
-
-    fn get(&self, key: &str) -> Option<JsValue> {
-        let v = Reflect::get(self.object.as_ref()?, &JsValue::from_str(key)).ok()?;
-        (!v.is_undefined()).then_some(v)
-    }
-
-    fn wrong(&self, key: &str, expected: &str, v: &JsValue) -> JsValue {
-        let got = match v.as_f64() {
-            Some(x) => format!("{x}"),
-            None => describe(v),
-        };
-        fail_option(self.func, key, format!("options.{key} must be {expected}, got {got}"))
-    }
-
-    /// A finite number, if given.
-    pub fn number(&self, key: &str) -> Result<Option<f64>, JsValue> {
-        match self.get(key) {
-            None => Ok(None),
-            Some(v) => match v.as_f64() {
-                Some(x) if x.is_finite() => Ok(Some(x)),
-                _ => Err(self.wrong(key, "a finite number", &v)),
-            },
-        }
-    }
-
-    /// An integer in [min, max], if given.
-    pub fn integer(&self, key: &str, min: usize, max: usize) -> Result<Option<usize>, JsValue> {
-        match self.get(key) {
-            None => Ok(None),
-            Some(v) => match v.as_f64() {
-                Some(x) if x.fract() == 0.0 && x >= min as f64 && x <= max as f64 => Ok(Some(x as usize)),
-                _ => Err(self.wrong(key, &format!("an integer from {min} to {max}"), &v)),
-            },
-        }
-    }
-
-    /// A string, if given.
-    pub fn string(&self, key: &str) -> Result<Option<String>, JsValue> {
-        match self.get(key) {
-            None => Ok(None),
-            Some(v) => v.as_string().map(Some).ok_or_else(|| self.wrong(key, "a string", &v)),
-        }
-    }
-
-    /// Whether `key` was given (not undefined).
-    pub fn has(&self, key: &str) -> bool {
-        self.get(key).is_some()
-    }
-
-    /// Rejects `key` when given for a scheme other than `scheme` (a likely mistake that would
-    /// otherwise be silently ignored).
-    pub fn only_for(&self, key: &str, scheme: &str, chosen: Option<&str>) -> Result<(), JsValue> {
-        if self.has(key) && chosen != Some(scheme) {
-            let chosen = chosen.map(|c| format!(", not to \"{c}\"")).unwrap_or_default();
-            return Err(fail_option(
-                self.func,
-                key,
-                format!("options.{key} applies to the \"{scheme}\" scheme only{chosen}"),
-            ));
-        }
-        Ok(())
-    }
-
-    /// A boolean, if given.
-    pub fn boolean(&self, key: &str) -> Result<Option<bool>, JsValue> {
-        match self.get(key) {
-            None => Ok(None),
-            Some(v) => v.as_bool().map(Some).ok_or_else(|| self.wrong(key, "true or false", &v)),
-        }
+/// A finite number passed as an argument.
+pub fn number(func: &str, name: &str, value: &JsValue) -> Result<f64, JsValue> {
+    match value.as_f64() {
+        Some(x) if x.is_finite() => Ok(x),
+        _ => Err(fail(func, format!("{name} must be a finite number, got {}", number_or_kind(value)))),
     }
 }
 
-/// Reads an options object with serde-wasm-bindgen into `T`, after checking that it is a
-/// plain object (`undefined`/`null` read as `{}` when `optional`) whose keys are all in
-/// `known`, and that every nested object named in `nested` has only its known keys.
-/// (serde-wasm-bindgen reads struct fields by name, so it never sees unknown keys: a typo
-/// would otherwise be silently ignored.) serde's messages name the field and what it expects.
-pub fn read_options<T: serde::de::DeserializeOwned>(
+/// An integer in [min, max] passed as an argument.
+pub fn integer(func: &str, name: &str, value: &JsValue, min: usize, max: usize) -> Result<usize, JsValue> {
+    match value.as_f64() {
+        Some(x) if x.fract() == 0.0 && x >= min as f64 && x <= max as f64 => Ok(x as usize),
+        _ => Err(fail(func, format!("{name} must be an integer from {min} to {max}, got {}", number_or_kind(value)))),
+    }
+}
+
+/// As [`integer`], `default` when the argument is left out (`undefined`).
+pub fn optional_integer(
     func: &str,
+    name: &str,
+    value: &JsValue,
+    min: usize,
+    max: usize,
+    default: usize,
+) -> Result<usize, JsValue> {
+    if value.is_undefined() {
+        Ok(default)
+    } else {
+        integer(func, name, value, min, max)
+    }
+}
+
+/// An integer option in [min, max], if given (read by serde as a number, checked here so the
+/// message names the range).
+pub fn integer_option(
+    func: &str,
+    name: &str,
+    value: Option<f64>,
+    min: usize,
+    max: usize,
+) -> Result<Option<usize>, JsValue> {
+    match value {
+        None => Ok(None),
+        Some(x) if x.fract() == 0.0 && x >= min as f64 && x <= max as f64 => Ok(Some(x as usize)),
+        Some(x) => {
+            Err(fail_option(func, name, format!("options.{name} must be an integer from {min} to {max}, got {x}")))
+        }
+    }
+}
+
+/// A finite number option, if given.
+pub fn finite_option(func: &str, name: &str, value: Option<f64>) -> Result<Option<f64>, JsValue> {
+    match value {
+        Some(x) if !x.is_finite() => {
+            Err(fail_option(func, name, format!("options.{name} must be a finite number, got {x}")))
+        }
+        other => Ok(other),
+    }
+}
+
+/// Refuses option `name` (given as `present`) unless the chosen scheme is `scheme`: an option
+/// of another scheme is a likely mistake that would otherwise be silently ignored.
+pub fn only_for(func: &str, name: &str, present: bool, scheme: &str, chosen: Option<&str>) -> Result<(), JsValue> {
+    if present && chosen != Some(scheme) {
+        let chosen = chosen.map(|c| format!(", not to \"{c}\"")).unwrap_or_default();
+        return Err(fail_option(func, name, format!("options.{name} applies to the \"{scheme}\" scheme only{chosen}")));
+    }
+    Ok(())
+}
+
+/// An options object that may be left out (`undefined` or `null` read as `{}`), read by
+/// serde-wasm-bindgen into `T`; see [`required`].
+pub fn options<T: DeserializeOwned + Default>(func: &str, value: JsValue) -> Result<T, JsValue> {
+    if value.is_undefined() || value.is_null() {
+        return Ok(T::default());
+    }
+    required(func, "options", value, &[])
+}
+
+/// An object argument (`what`: its name in messages) read by serde-wasm-bindgen into `T`,
+/// after checking that it is a plain object whose keys are all fields of `T`, and that every
+/// nested object named in `nested` has only the fields of its type. serde-wasm-bindgen reads a
+/// struct field by field, so it never sees an unknown key: a typo ("step" for "steps") would
+/// otherwise be silently ignored. Wrong types are reported with the option's path
+/// (`options.levels: expected a number, got a string`).
+pub fn required<T: DeserializeOwned>(
+    func: &str,
+    what: &str,
     value: JsValue,
-    known: &[&str],
-    nested: &[(&str, &[&str])],
-    optional: bool,
+    nested: &[(&str, &'static [&'static str])],
 ) -> Result<T, JsValue> {
-    let value = if optional && (value.is_undefined() || value.is_null()) { Object::new().into() } else { value };
-    let plain = |v: &JsValue| v.is_object() && !js_sys::Array::is_array(v) && !v.is_function();
+    let known = fields::<T>();
+    let plain = |v: &JsValue| v.is_object() && !Array::is_array(v) && !v.is_function();
     if !plain(&value) {
         return Err(fail(
             func,
-            format!("options must be an object {{ {} }}, got {}", known.join(", "), describe(&value)),
+            format!("{what} must be an object {{ {} }}, got {}", known.join(", "), describe(&value)),
         ));
     }
     let check_keys = |object: &JsValue, prefix: &str, known: &[&str]| -> Result<(), JsValue> {
@@ -185,7 +169,7 @@ pub fn read_options<T: serde::de::DeserializeOwned>(
             if !known.contains(&key.as_str()) {
                 return Err(fail_option(
                     func,
-                    &key,
+                    &format!("{prefix}{key}"),
                     format!("unknown option \"{prefix}{key}\"; known options: {}", known.join(", ")),
                 ));
             }
@@ -199,13 +183,107 @@ pub fn read_options<T: serde::de::DeserializeOwned>(
             check_keys(&inner, &format!("{name}."), keys)?;
         }
     }
-    serde_wasm_bindgen::from_value(value).map_err(|e| {
-        let text = e.to_string();
-        fail(func, text.strip_prefix("Error: ").unwrap_or(&text).to_string())
+    serde_path_to_error::deserialize(serde_wasm_bindgen::Deserializer::from(value)).map_err(|e| {
+        let path = e.path().to_string();
+        let message = plain_words(&e.into_inner().to_string());
+        if path == "." {
+            fail(func, format!("{what}: {message}"))
+        } else {
+            fail_option(func, &path, format!("{what}.{path}: {message}"))
+        }
     })
 }
 
-/// What a JS value is, for messages: "a string", "an Array", "undefined", ….
+/// serde's messages in the words of the README: "expected a number, got the string \"x\"",
+/// not "invalid type: string `x`, expected f64".
+fn plain_words(message: &str) -> String {
+    let message = message.strip_prefix("Error: ").unwrap_or(message);
+    let words = |text: &str| -> String {
+        let mut out = text.to_string();
+        for (code, words) in [
+            ("f64", "a number"),
+            ("a boolean", "true or false"),
+            ("floating point", "the number"),
+            ("unknown variant", "unknown value"),
+            ("`", "\""),
+        ] {
+            out = out.replace(code, words);
+        }
+        out
+    };
+    // serde's `Unexpected` as words: floating point `4.0` → the number 4, string "x" → the string "x"
+    let unexpected = |got: &str| -> String {
+        let value = |prefix: &str| got.strip_prefix(prefix).map(|v| v.trim_matches(['`', '"']).to_string());
+        if let Some(v) = value("floating point ").or_else(|| value("integer ")) {
+            format!("the number {}", v.strip_suffix(".0").unwrap_or(&v))
+        } else if let Some(v) = value("string ") {
+            format!("the string \"{v}\"")
+        } else if let Some(v) = value("boolean ") {
+            v
+        } else {
+            match got {
+                "sequence" => "an array".into(),
+                "map" => "an object".into(),
+                "unit value" => "null".into(),
+                other => words(other),
+            }
+        }
+    };
+    match message.strip_prefix("invalid type: ").and_then(|rest| rest.split_once(", expected ")) {
+        Some((got, expected)) => format!("expected {}, got {}", words(expected), unexpected(got)),
+        None => words(message),
+    }
+}
+
+/// A result written by serde-wasm-bindgen: structs become plain objects, `None` is left out
+/// (`undefined`), fields marked `#[serde(with = "serde_wasm_bindgen::preserve")]` stay typed
+/// arrays.
+pub fn to_js<T: Serialize>(func: &str, value: &T) -> Result<JsValue, JsValue> {
+    value.serialize(&serde_wasm_bindgen::Serializer::new()).map_err(|e| fail(func, e.to_string()))
+}
+
+/// The field names of a `#[derive(Deserialize)]` struct, as serde passes them to
+/// `deserialize_struct` (renames applied): the keys an options object may have.
+pub fn fields<T: DeserializeOwned>() -> &'static [&'static str] {
+    struct Recorder<'a>(&'a mut &'static [&'static str]);
+    #[derive(Debug)]
+    struct Stop;
+    impl std::fmt::Display for Stop {
+        fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("fields recorded")
+        }
+    }
+    impl std::error::Error for Stop {}
+    impl de::Error for Stop {
+        fn custom<M: std::fmt::Display>(_: M) -> Self {
+            Stop
+        }
+    }
+    impl<'de> de::Deserializer<'de> for Recorder<'_> {
+        type Error = Stop;
+        fn deserialize_any<V: Visitor<'de>>(self, _: V) -> Result<V::Value, Stop> {
+            Err(Stop)
+        }
+        fn deserialize_struct<V: Visitor<'de>>(
+            self,
+            _: &'static str,
+            fields: &'static [&'static str],
+            _: V,
+        ) -> Result<V::Value, Stop> {
+            *self.0 = fields;
+            Err(Stop)
+        }
+        serde::forward_to_deserialize_any! {
+            bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf option unit
+            unit_struct newtype_struct seq tuple tuple_struct map enum identifier ignored_any
+        }
+    }
+    let mut fields: &'static [&'static str] = &[];
+    let _ = T::deserialize(Recorder(&mut fields));
+    fields
+}
+
+/// What a JS value is, for messages: "a string", "an array", "a Float32Array", "undefined", ….
 pub fn describe(value: &JsValue) -> String {
     if value.is_undefined() {
         return "undefined".into();
@@ -225,31 +303,4 @@ pub fn describe(value: &JsValue) -> String {
     // "an array", "an object", but "a Uint8Array" (said "you-int")
     let article = if name.starts_with(['a', 'e', 'i', 'o', 'u', 'A', 'E', 'I', 'O']) { "an" } else { "a" };
     format!("{article} {name}")
-}
-
-/// A plain object under construction.
-pub struct ObjectBuilder(Object);
-
-impl ObjectBuilder {
-    /// An empty `{}`.
-    pub fn new() -> Self {
-        ObjectBuilder(Object::new())
-    }
-
-    /// Sets `key` (setting a property of a fresh plain object cannot fail; if it ever
-    /// did, the key would simply be missing, which the JS tests would catch).
-    pub fn set(self, key: &str, value: impl Into<JsValue>) -> Self {
-        let _ = Reflect::set(&self.0, &JsValue::from_str(key), &value.into());
-        self
-    }
-
-    /// Sets `key` to a `Float64Array` copy of `values`.
-    pub fn f64s(self, key: &str, values: &[f64]) -> Self {
-        self.set(key, Float64Array::from(values))
-    }
-
-    /// The finished object.
-    pub fn build(self) -> JsValue {
-        self.0.into()
-    }
 }

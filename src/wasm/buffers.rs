@@ -3,7 +3,7 @@
 //! refined strip, director surfaces, the reference frame of the conoidal model, meshes of the
 //! milling example. The page uploads them as they are.
 
-use super::args::{self, fail, integer, ObjectBuilder};
+use super::args::{self, fail, integer, to_js};
 use super::congruence::LineCongruence;
 use super::surface::RuledSurface;
 use super::toolpath::ToolPath;
@@ -34,12 +34,18 @@ pub fn points_f32(points: &[DVec3]) -> Float32Array {
     Float32Array::from(&out[..])
 }
 
+/// A mesh for WebGL, as JS sees it (`MeshBuffers`).
+#[derive(serde::Serialize)]
+struct MeshJs {
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    positions: Float32Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    indices: Uint32Array,
+}
+
 /// A mesh as `{ positions, indices }`.
-pub fn mesh_buffers(mesh: &Mesh) -> JsValue {
-    ObjectBuilder::new()
-        .set("positions", points_f32(&mesh.positions))
-        .set("indices", Uint32Array::from(&mesh.indices[..]))
-        .build()
+pub fn mesh_buffers(func: &str, mesh: &Mesh) -> Result<JsValue, JsValue> {
+    to_js(func, &MeshJs { positions: points_f32(&mesh.positions), indices: Uint32Array::from(&mesh.indices[..]) })
 }
 
 /// Vertex normals of an indexed triangle mesh (3 floats per vertex, 3 indices per triangle), as
@@ -62,16 +68,22 @@ impl RuledSurface {
     /// The rulings whose index is not a multiple of `stride` (after k interpolatory steps,
     /// stride 2^k: the inserted ones), as f32 segments.
     #[wasm_bindgen(js_name = insertedF32)]
-    pub fn inserted_f32(&self, stride: f64) -> Result<Float32Array, JsValue> {
-        let stride = integer("RuledSurface.insertedF32", "stride", stride, 1, 1 << 24)?;
+    pub fn inserted_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        let stride = integer("RuledSurface.insertedF32", "stride", &stride, 1, 1 << 24)?;
         Ok(segments_f32(&self.core().inserted(stride)))
     }
 
     /// Every k-th ruling (indices 0, k, 2k, …, and the last), as f32 segments: a level of
     /// detail for drawing surfaces with more rulings than a view can show.
     #[wasm_bindgen(js_name = everyF32)]
-    pub fn every_f32(&self, k: f64) -> Result<Float32Array, JsValue> {
-        let k = integer("RuledSurface.everyF32", "k", k, 1, 1 << 24)?;
+    pub fn every_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] k: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        let k = integer("RuledSurface.everyF32", "k", &k, 1, 1 << 24)?;
         let n = self.length();
         let rulings: Vec<Segment> =
             (0..n).filter(|i| i % k == 0 || *i == n - 1).map(|i| self.core().segment(i)).collect();
@@ -81,10 +93,14 @@ impl RuledSurface {
     /// The endpoints a_i (`which` = 1) or b_i (2) of the rulings whose index is not a multiple
     /// of `stride` (stride 1: of every ruling), as f32 points.
     #[wasm_bindgen(js_name = endsF32)]
-    pub fn ends_f32(&self, which: f64, stride: f64) -> Result<Float32Array, JsValue> {
+    pub fn ends_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] which: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
+    ) -> Result<Float32Array, JsValue> {
         const F: &str = "RuledSurface.endsF32";
-        let which = integer(F, "which", which, 1, 2)?;
-        let stride = integer(F, "stride", stride, 1, 1 << 24)?;
+        let which = integer(F, "which", &which, 1, 2)?;
+        let stride = integer(F, "stride", &stride, 1, 1 << 24)?;
         let rulings: Vec<Segment> =
             if stride == 1 { self.core().segments().collect() } else { self.core().inserted(stride) };
         let points: Vec<DVec3> = rulings.iter().map(|s| if which == 1 { s.a } else { s.b }).collect();
@@ -93,21 +109,30 @@ impl RuledSurface {
 
     /// z_{i,k} = ((n − k)/n) a_i + (k/n) b_i (9): the point k/n of the way along ruling i.
     #[wasm_bindgen(js_name = divisionPoint)]
-    pub fn division_point(&self, i: f64, k: f64, n: f64) -> Result<Float64Array, JsValue> {
+    pub fn division_point(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] i: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] k: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] n: JsValue,
+    ) -> Result<Float64Array, JsValue> {
         const F: &str = "RuledSurface.divisionPoint";
-        let i = integer(F, "i", i, 0, self.length() - 1)?;
-        let n = integer(F, "n", n, 1, 1 << 24)?;
-        let k = integer(F, "k", k, 0, n)?;
+        let i = integer(F, "i", &i, 0, self.length() - 1)?;
+        let n = integer(F, "n", &n, 1, 1 << 24)?;
+        let k = integer(F, "k", &k, 0, n)?;
         Ok(Float64Array::from(&triangulation::division_point(self.core(), i, k, n).to_array()[..]))
     }
 
     /// The edges of the first (`which` = 1, neighbours (11)) or second (2, (12)) triangulation
     /// of Fig. 9 with every segment divided into `n` parts, as f32 segments.
     #[wasm_bindgen(js_name = triangulationF32)]
-    pub fn triangulation_f32(&self, n: f64, which: f64) -> Result<Float32Array, JsValue> {
+    pub fn triangulation_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] n: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] which: JsValue,
+    ) -> Result<Float32Array, JsValue> {
         const F: &str = "RuledSurface.triangulationF32";
-        let n = integer(F, "n", n, 1, 1000)?;
-        let which = match integer(F, "which", which, 1, 2)? {
+        let n = integer(F, "n", &n, 1, 1000)?;
+        let which = match integer(F, "which", &which, 1, 2)? {
             1 => Triangulation::First,
             _ => Triangulation::Second,
         };
@@ -170,25 +195,35 @@ impl LineCongruence {
     /// The lines (i, j) with i or j not a multiple of `stride` (after k steps, 2^k: the
     /// inserted lines), as f32 segments.
     #[wasm_bindgen(js_name = insertedF32)]
-    pub fn inserted_f32(&self, stride: f64) -> Result<Float32Array, JsValue> {
-        let stride = integer("LineCongruence.insertedF32", "stride", stride, 1, 1 << 24)?;
+    pub fn inserted_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        let stride = integer("LineCongruence.insertedF32", "stride", &stride, 1, 1 << 24)?;
         Ok(segments_f32(&self.core().inserted(stride)))
     }
 
     /// The points of the director surface d₁ (`which` = 1, the p) or d₂ (2, the q), f32,
     /// 3 per line, row-major: draw them as a rows × cols grid.
     #[wasm_bindgen(js_name = directorF32)]
-    pub fn director_f32(&self, which: f64) -> Result<Float32Array, JsValue> {
-        let which = integer("LineCongruence.directorF32", "which", which, 1, 2)?;
+    pub fn director_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] which: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        let which = integer("LineCongruence.directorF32", "which", &which, 1, 2)?;
         Ok(points_f32(&if which == 1 { self.core().p() } else { self.core().q() }))
     }
 
     /// The points of d₁ (`which` = 1) or d₂ of the lines that `insertedF32(stride)` returns.
     #[wasm_bindgen(js_name = insertedDirectorF32)]
-    pub fn inserted_director_f32(&self, stride: f64, which: f64) -> Result<Float32Array, JsValue> {
+    pub fn inserted_director_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] which: JsValue,
+    ) -> Result<Float32Array, JsValue> {
         const F: &str = "LineCongruence.insertedDirectorF32";
-        let stride = integer(F, "stride", stride, 1, 1 << 24)?;
-        let which = integer(F, "which", which, 1, 2)?;
+        let stride = integer(F, "stride", &stride, 1, 1 << 24)?;
+        let which = integer(F, "which", &which, 1, 2)?;
         let points: Vec<DVec3> =
             self.core().inserted(stride).iter().map(|s| if which == 1 { s.a } else { s.b }).collect();
         Ok(points_f32(&points))
@@ -199,18 +234,24 @@ impl LineCongruence {
 impl ToolPath {
     /// The part surface of the built-in example, z = 0.3 sin x cos 0.7y, as an nx × ny grid mesh.
     #[wasm_bindgen(js_name = examplePart, unchecked_return_type = "MeshBuffers")]
-    pub fn example_part(nx: f64, ny: f64) -> Result<JsValue, JsValue> {
+    pub fn example_part(
+        #[wasm_bindgen(unchecked_param_type = "number")] nx: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] ny: JsValue,
+    ) -> Result<JsValue, JsValue> {
         const F: &str = "ToolPath.examplePart";
-        let (nx, ny) = (integer(F, "nx", nx, 2, 1000)?, integer(F, "ny", ny, 2, 1000)?);
-        Ok(mesh_buffers(&example::part_mesh(nx, ny)))
+        let (nx, ny) = (integer(F, "nx", &nx, 2, 1000)?, integer(F, "ny", &ny, 2, 1000)?);
+        mesh_buffers(F, &example::part_mesh(nx, ny))
     }
 
     /// The axes (tip → tip + L·axis) of the poses whose index is not a multiple of `stride`
     /// (after k steps, 2^k: the inserted poses), as f32 segments.
     #[wasm_bindgen(js_name = insertedF32)]
-    pub fn inserted_f32(&self, stride: f64) -> Result<Float32Array, JsValue> {
+    pub fn inserted_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
+    ) -> Result<Float32Array, JsValue> {
         const F: &str = "ToolPath.insertedF32";
-        let stride = integer(F, "stride", stride, 1, 1 << 24)?;
+        let stride = integer(F, "stride", &stride, 1, 1 << 24)?;
         let axes = self.core().axis_surface().map_err(|e| fail(F, e))?;
         Ok(segments_f32(&axes.inserted(stride)))
     }
@@ -218,17 +259,28 @@ impl ToolPath {
     /// The envelope of the tool's cutting end along the path (a tube of the tool radius about
     /// the ball centres; its lower half is the machined surface), `sides` vertices per ring.
     #[wasm_bindgen(js_name = envelopeMesh, unchecked_return_type = "MeshBuffers")]
-    pub fn envelope_mesh(&self, sides: f64) -> Result<JsValue, JsValue> {
-        let sides = integer("ToolPath.envelopeMesh", "sides", sides, 3, 256)?;
-        Ok(mesh_buffers(&self.core().envelope_mesh(sides)))
+    pub fn envelope_mesh(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] sides: JsValue,
+    ) -> Result<JsValue, JsValue> {
+        const F: &str = "ToolPath.envelopeMesh";
+        let sides = integer(F, "sides", &sides, 3, 256)?;
+        mesh_buffers(F, &self.core().envelope_mesh(sides))
     }
 
     /// The tool body at pose `index` (Fig. 16): a cylinder with its ball or flat end.
     #[wasm_bindgen(js_name = toolMesh, unchecked_return_type = "MeshBuffers")]
-    pub fn tool_mesh(&self, index: f64, sides: f64) -> Result<JsValue, JsValue> {
+    pub fn tool_mesh(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] index: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] sides: JsValue,
+    ) -> Result<JsValue, JsValue> {
         const F: &str = "ToolPath.toolMesh";
-        let index = integer(F, "index", index, 0, self.length().saturating_sub(1))?;
-        let sides = integer(F, "sides", sides, 3, 256)?;
-        Ok(self.core().tool_mesh(index, sides).map(|m| mesh_buffers(&m)).unwrap_or(JsValue::UNDEFINED))
+        let index = integer(F, "index", &index, 0, self.length().saturating_sub(1))?;
+        let sides = integer(F, "sides", &sides, 3, 256)?;
+        match self.core().tool_mesh(index, sides) {
+            Some(m) => mesh_buffers(F, &m),
+            None => Ok(JsValue::UNDEFINED),
+        }
     }
 }

@@ -1,12 +1,13 @@
 //! Line congruences for JavaScript (Section 5): `LineCongruence` and `AnalyticCongruence`.
 
-use super::args::{describe, fail, integer, numbers, ObjectBuilder, Options};
+use super::args::{self, describe, fail, finite_option, integer, integer_option, numbers, only_for, to_js};
 use super::live::Live;
 use super::surface::RuledSurface;
 use crate::congruence::{self, CongruenceScheme};
 use crate::examples;
 use crate::tolerance::MAX_RULINGS;
 use js_sys::{Float32Array, Float64Array};
+use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -41,9 +42,66 @@ export interface CongruenceSubdivideOptions {
   length?: number;
 }
 
+/** One congruence as listed by `AnalyticCongruence.list()`: its domain and the grid size of the paper's figure. */
+export interface AnalyticCongruenceInfo {
+  name: string; title: string;
+  uMin: number; uMax: number; vMin: number; vMax: number; rows: number; cols: number;
+}
+
 /** Errors of a refined congruence against the exact one, over its new lines. */
 export interface CongruenceErrors { distance: number; angle: number }
 "#;
+
+/// `CongruenceSubdivideOptions`, read by serde.
+#[derive(Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+struct SubdivideOptions {
+    scheme: Option<SchemeName>,
+    w: Option<f64>,
+    diagonal_only: Option<bool>,
+    #[serde(rename = "K")]
+    k: Option<f64>,
+    variant: Option<VariantName>,
+    steps: Option<f64>,
+    space: Option<super::subdivide::SpaceName>,
+    length: Option<f64>,
+}
+
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case", expecting = "\"butterfly\" or \"variational\"")]
+enum SchemeName {
+    Butterfly,
+    Variational,
+}
+
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case", expecting = "one of \"paper\", \"two-stage\", \"coupled\"")]
+enum VariantName {
+    Paper,
+    TwoStage,
+    Coupled,
+}
+
+/// One entry of `AnalyticCongruence.list()`.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct CongruenceInfo {
+    name: &'static str,
+    title: &'static str,
+    u_min: f64,
+    u_max: f64,
+    v_min: f64,
+    v_max: f64,
+    rows: usize,
+    cols: usize,
+}
+
+/// `CongruenceErrors`.
+#[derive(Serialize)]
+struct ErrorsJs {
+    distance: f64,
+    angle: f64,
+}
 
 /// A discrete line congruence: a rows × cols grid of lines p_{i,j} → q_{i,j}, row-major.
 #[wasm_bindgen]
@@ -66,13 +124,13 @@ impl LineCongruence {
     /// non-finite numbers or zero-length lines.
     #[wasm_bindgen(js_name = fromGrid)]
     pub fn from_grid(
-        rows: f64,
-        cols: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] rows: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] cols: JsValue,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] coords: JsValue,
     ) -> Result<LineCongruence, JsValue> {
         const F: &str = "LineCongruence.fromGrid";
-        let rows = integer(F, "rows", rows, 2, MAX_RULINGS)?;
-        let cols = integer(F, "cols", cols, 2, MAX_RULINGS)?;
+        let rows = integer(F, "rows", &rows, 2, MAX_RULINGS)?;
+        let cols = integer(F, "cols", &cols, 2, MAX_RULINGS)?;
         congruence::grid::check_shape(rows, cols).map_err(|e| fail(F, e))?;
         let coords = numbers(F, "coords", &coords)?;
         congruence::LineCongruence::from_flat(rows, cols, &coords)
@@ -105,14 +163,14 @@ impl LineCongruence {
     }
 
     /// Row i as a discrete ruled surface (Section 2's invariants apply).
-    pub fn row(&self, i: f64) -> Result<RuledSurface, JsValue> {
-        let i = integer("LineCongruence.row", "i", i, 0, self.inner.rows() - 1)?;
+    pub fn row(&self, #[wasm_bindgen(unchecked_param_type = "number")] i: JsValue) -> Result<RuledSurface, JsValue> {
+        let i = integer("LineCongruence.row", "i", &i, 0, self.inner.rows() - 1)?;
         self.inner.row(i).map(RuledSurface::from_core).map_err(|e| fail("LineCongruence.row", e))
     }
 
     /// Column j as a discrete ruled surface.
-    pub fn column(&self, j: f64) -> Result<RuledSurface, JsValue> {
-        let j = integer("LineCongruence.column", "j", j, 0, self.inner.cols() - 1)?;
+    pub fn column(&self, #[wasm_bindgen(unchecked_param_type = "number")] j: JsValue) -> Result<RuledSurface, JsValue> {
+        let j = integer("LineCongruence.column", "j", &j, 0, self.inner.cols() - 1)?;
         self.inner.column(j).map(RuledSurface::from_core).map_err(|e| fail("LineCongruence.column", e))
     }
 
@@ -123,45 +181,49 @@ impl LineCongruence {
         #[wasm_bindgen(unchecked_param_type = "CongruenceSubdivideOptions")] options: JsValue,
     ) -> Result<LineCongruence, JsValue> {
         const F: &str = "LineCongruence.subdivide";
-        let o = Options::new(F, options, &["scheme", "w", "diagonalOnly", "K", "variant", "steps", "space", "length"])?;
-        let scheme = o.string("scheme")?;
-        for (key, s) in [
-            ("w", "butterfly"),
-            ("diagonalOnly", "butterfly"),
-            ("K", "variational"),
-            ("variant", "variational"),
-            ("space", "butterfly"),
-            ("length", "butterfly"),
+        let o: SubdivideOptions = args::options(F, options)?;
+        let chosen = o.scheme.map(|s| match s {
+            SchemeName::Butterfly => "butterfly",
+            SchemeName::Variational => "variational",
+        });
+        for (key, present, s) in [
+            ("w", o.w.is_some(), "butterfly"),
+            ("diagonalOnly", o.diagonal_only.is_some(), "butterfly"),
+            ("K", o.k.is_some(), "variational"),
+            ("variant", o.variant.is_some(), "variational"),
+            ("space", o.space.is_some(), "butterfly"),
+            ("length", o.length.is_some(), "butterfly"),
         ] {
-            o.only_for(key, s, scheme.as_deref())?;
+            only_for(F, key, present, s, chosen)?;
         }
-        let steps = o.integer("steps", 0, 12)?.unwrap_or(1);
-        let scheme = match scheme.as_deref() {
-            Some("butterfly") => {
-                let w = o.number("w")?.unwrap_or(1.0 / 16.0);
-                match o.string("space")?.as_deref() {
-                    None | Some("points") => {
-                        if o.has("length") {
-                            return Err(fail(F, "options.length applies to space \"lines\" only"));
+        let steps = integer_option(F, "steps", o.steps, 0, 12)?.unwrap_or(1);
+        let scheme = match o.scheme {
+            Some(SchemeName::Butterfly) => {
+                let w = finite_option(F, "w", o.w)?.unwrap_or(1.0 / 16.0);
+                let length = finite_option(F, "length", o.length)?;
+                match o.space {
+                    None | Some(super::subdivide::SpaceName::Points) => {
+                        if length.is_some() {
+                            return Err(args::fail_option(
+                                F,
+                                "length",
+                                "options.length applies to space \"lines\" only",
+                            ));
                         }
                     }
-                    Some("lines") => {
-                        return crate::subdivision::line_space::butterfly_lines(
-                            &self.inner,
-                            w,
-                            steps,
-                            o.number("length")?,
-                        )
-                        .map(|inner| LineCongruence { inner, _live: Live::new() })
-                        .map_err(|e| fail(F, e));
-                    }
-                    Some(other) => {
-                        return Err(fail(F, format!("options.space must be \"points\" or \"lines\", got \"{other}\"")))
+                    Some(super::subdivide::SpaceName::Lines) => {
+                        return crate::subdivision::line_space::butterfly_lines(&self.inner, w, steps, length)
+                            .map(|inner| LineCongruence { inner, _live: Live::new() })
+                            .map_err(|e| fail(F, e));
                     }
                 }
-                if o.boolean("diagonalOnly")?.unwrap_or(false) {
+                if o.diagonal_only.unwrap_or(false) {
                     if steps != 1 {
-                        return Err(fail(F, "options.diagonalOnly gives the lines of one step: leave steps at 1"));
+                        return Err(args::fail_option(
+                            F,
+                            "diagonalOnly",
+                            "options.diagonalOnly gives the lines of one step: leave steps at 1",
+                        ));
                     }
                     return congruence::butterfly_diagonal(&self.inner, w)
                         .map(|inner| LineCongruence { inner, _live: Live::new() })
@@ -169,23 +231,20 @@ impl LineCongruence {
                 }
                 CongruenceScheme::Butterfly { w }
             }
-            Some("variational") => {
-                let k = o.integer("K", 3, 1000)?.unwrap_or(6);
-                match o.string("variant")?.as_deref() {
-                    None | Some("coupled") => CongruenceScheme::Coupled { k },
-                    Some("two-stage") => CongruenceScheme::TwoStage { k },
-                    Some("paper") => CongruenceScheme::Paper { k },
-                    Some(v) => {
-                        return Err(fail(
-                            F,
-                            format!("options.variant must be \"paper\", \"two-stage\" or \"coupled\", got {v:?}"),
-                        ))
-                    }
+            Some(SchemeName::Variational) => {
+                let k = integer_option(F, "K", o.k, 3, 1000)?.unwrap_or(6);
+                match o.variant.unwrap_or(VariantName::Coupled) {
+                    VariantName::Coupled => CongruenceScheme::Coupled { k },
+                    VariantName::TwoStage => CongruenceScheme::TwoStage { k },
+                    VariantName::Paper => CongruenceScheme::Paper { k },
                 }
             }
-            None => return Err(fail(F, "options.scheme is required: \"butterfly\" or \"variational\"")),
-            Some(other) => {
-                return Err(fail(F, format!("unknown scheme \"{other}\"; use \"butterfly\" or \"variational\"")))
+            None => {
+                return Err(args::fail_option(
+                    F,
+                    "scheme",
+                    "options.scheme is required: \"butterfly\" or \"variational\"",
+                ))
             }
         };
         congruence::subdivide(&self.inner, scheme, steps)
@@ -211,26 +270,16 @@ impl AnalyticCongruence {
 #[wasm_bindgen]
 impl AnalyticCongruence {
     /// Every congruence: name, title, domain and the grid size of the paper's figure.
-    #[wasm_bindgen(
-        unchecked_return_type = "Array<{name: string, title: string, uMin: number, uMax: number, vMin: number, vMax: number, rows: number, cols: number}>"
-    )]
-    pub fn list() -> js_sys::Array {
-        examples::AnalyticCongruence::ALL
+    #[wasm_bindgen(unchecked_return_type = "AnalyticCongruenceInfo[]")]
+    pub fn list() -> Result<JsValue, JsValue> {
+        let list: Vec<CongruenceInfo> = examples::AnalyticCongruence::ALL
             .iter()
             .map(|c| {
-                let ((u0, u1), (v0, v1), rows, cols) = c.domain();
-                ObjectBuilder::new()
-                    .set("name", c.name())
-                    .set("title", c.title())
-                    .set("uMin", u0)
-                    .set("uMax", u1)
-                    .set("vMin", v0)
-                    .set("vMax", v1)
-                    .set("rows", rows as u32)
-                    .set("cols", cols as u32)
-                    .build()
+                let ((u_min, u_max), (v_min, v_max), rows, cols) = c.domain();
+                CongruenceInfo { name: c.name(), title: c.title(), u_min, u_max, v_min, v_max, rows, cols }
             })
-            .collect()
+            .collect();
+        to_js("AnalyticCongruence.list", &list)
     }
 
     /// The congruence named `name` ("sphere", "hyperbolic-paraboloid", "example5").
@@ -249,14 +298,19 @@ impl AnalyticCongruence {
     /// A rows × cols grid of its lines (default: the paper's grid size), each the segment
     /// from p to p + reach·d (`reach` default 1: the paper gives no length, ERRATA.md 9;
     /// shorter segments are the same lines, and every scheme refines them to the same lines).
-    pub fn grid(&self, rows: Option<f64>, cols: Option<f64>, reach: Option<f64>) -> Result<LineCongruence, JsValue> {
+    pub fn grid(
+        &self,
+        #[wasm_bindgen(unchecked_optional_param_type = "number")] rows: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "number")] cols: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "number")] reach: JsValue,
+    ) -> Result<LineCongruence, JsValue> {
         const F: &str = "AnalyticCongruence.grid";
         let (_, _, r0, c0) = self.inner.domain();
-        let rows = integer(F, "rows", rows.unwrap_or(r0 as f64), 2, MAX_RULINGS)?;
-        let cols = integer(F, "cols", cols.unwrap_or(c0 as f64), 2, MAX_RULINGS)?;
-        let reach = reach.unwrap_or(1.0);
-        if !(reach.is_finite() && reach > 0.0 && reach <= 1e6) {
-            return Err(fail(F, format!("reach must be a positive number, got {reach}")));
+        let rows = args::optional_integer(F, "rows", &rows, 2, MAX_RULINGS, r0)?;
+        let cols = args::optional_integer(F, "cols", &cols, 2, MAX_RULINGS, c0)?;
+        let reach = if reach.is_undefined() { 1.0 } else { args::number(F, "reach", &reach)? };
+        if !(reach > 0.0 && reach <= 1e6) {
+            return Err(fail(F, format!("reach must be a number in (0, 1e6], got {reach}")));
         }
         self.inner
             .grid_reaching(rows, cols, reach)
@@ -268,8 +322,8 @@ impl AnalyticCongruence {
     /// same parameters, over the new lines: the largest distance of the d₁ points and the
     /// largest angle of the directions (radians).
     #[wasm_bindgen(unchecked_return_type = "CongruenceErrors")]
-    pub fn errors(&self, refined: &LineCongruence) -> JsValue {
+    pub fn errors(&self, refined: &LineCongruence) -> Result<JsValue, JsValue> {
         let (distance, angle) = self.inner.errors(&refined.inner);
-        ObjectBuilder::new().set("distance", distance).set("angle", angle).build()
+        to_js("AnalyticCongruence.errors", &ErrorsJs { distance, angle })
     }
 }

@@ -2,7 +2,7 @@
 //! congruences typed as formulas (see [`crate::formula`]). The options object is read by
 //! serde-wasm-bindgen, unknown keys refused.
 
-use super::args::read_options;
+use super::args::required;
 use super::congruence::AnalyticCongruence;
 use super::error::{fail, fail_option};
 use super::surface::AnalyticSurface;
@@ -148,8 +148,7 @@ impl AnalyticSurface {
         #[wasm_bindgen(unchecked_param_type = "SurfaceFormulas")] spec: JsValue,
     ) -> Result<AnalyticSurface, JsValue> {
         const F: &str = "AnalyticSurface.fromFormulas";
-        let s: SurfaceFormulas =
-            read_options(F, spec, &["a", "e", "u", "v", "closed", "parameters"], &[PARAMETER_KEYS], false)?;
+        let s: SurfaceFormulas = required(F, "spec", spec, &[PARAMETER_KEYS])?;
         let parameters = s.parameters.values();
         let spec = FormulaSpec {
             u: interval(F, "u", &s.u, &parameters)?,
@@ -174,8 +173,7 @@ impl AnalyticCongruence {
         #[wasm_bindgen(unchecked_param_type = "CongruenceFormulas")] spec: JsValue,
     ) -> Result<AnalyticCongruence, JsValue> {
         const F: &str = "AnalyticCongruence.fromFormulas";
-        let s: CongruenceFormulas =
-            read_options(F, spec, &["p", "e", "u", "v", "parameters", "rows", "cols"], &[PARAMETER_KEYS], false)?;
+        let s: CongruenceFormulas = required(F, "spec", spec, &[PARAMETER_KEYS])?;
         let parameters = s.parameters.values();
         let size = |name: &str, x: Option<f64>| -> Result<usize, JsValue> {
             match x {

@@ -1,9 +1,11 @@
 //! Import and export of segments as text (CSV, JSON) for JavaScript.
 
-use super::args::{describe, fail, ObjectBuilder};
+use super::args::{describe, fail, to_js};
 use super::congruence::LineCongruence;
 use super::surface::RuledSurface;
 use crate::io;
+use js_sys::Float64Array;
+use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -11,6 +13,17 @@ const TS_TYPES: &str = r#"
 /** Segments read by `importSegments`: 6 numbers per line, and a grid shape when the file gives one. */
 export interface ImportedSegments { segments: Float64Array; rows?: number; cols?: number }
 "#;
+
+/// `ImportedSegments`, written by serde.
+#[derive(Serialize)]
+struct ImportedJs {
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    segments: Float64Array,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    rows: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    cols: Option<usize>,
+}
 
 /// The host's `parseFloat` (correctly rounded), for tokens the core has checked to be decimal
 /// numbers: keeps Rust's float-parsing tables out of the wasm file.
@@ -25,7 +38,7 @@ fn js_number(token: &str) -> f64 {
 #[wasm_bindgen(js_name = importSegments, unchecked_return_type = "ImportedSegments")]
 pub fn import_segments(
     #[wasm_bindgen(unchecked_param_type = "string")] text: JsValue,
-    #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\" | undefined")] format: JsValue,
+    #[wasm_bindgen(unchecked_optional_param_type = "\"csv\" | \"json\"")] format: JsValue,
 ) -> Result<JsValue, JsValue> {
     const F: &str = "importSegments";
     let Some(text) = text.as_string() else {
@@ -46,11 +59,8 @@ pub fn import_segments(
         other => return Err(fail(F, format!("format must be \"csv\" or \"json\", got \"{other}\""))),
     }
     .map_err(|e| fail(F, e))?;
-    let mut out = ObjectBuilder::new().f64s("segments", &imported.coords);
-    if let Some((r, c)) = imported.grid {
-        out = out.set("rows", r as u32).set("cols", c as u32);
-    }
-    Ok(out.build())
+    let (rows, cols) = imported.grid.map_or((None, None), |(r, c)| (Some(r), Some(c)));
+    to_js(F, &ImportedJs { segments: Float64Array::from(&imported.coords[..]), rows, cols })
 }
 
 /// CSV or JSON text of flat segments (full precision, so `importSegments` reads back the same

@@ -1,11 +1,12 @@
 //! Subdivision for JavaScript (Section 4): `surface.subdivide(options)`, `surface.recut()`
 //! and `subdividePolygon(points, options)`.
 
-use super::args::{fail, numbers, Options};
+use super::args::{self, fail, fail_option, finite_option, integer_option, numbers, only_for};
 use super::surface::RuledSurface;
 use crate::ruled::surface::points_from_flat;
 use crate::subdivision::{self, Scheme, Variant, MAX_STEPS};
 use js_sys::Float64Array;
+use serde::Deserialize;
 use wasm_bindgen::prelude::*;
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -45,7 +46,60 @@ export interface SubdivideOptions {
 }
 "#;
 
-const KNOWN: [&str; 9] = ["scheme", "steps", "w", "n", "variant", "degree", "closed", "space", "length"];
+/// `SubdivideOptions`, read by serde.
+#[derive(Deserialize, Default)]
+struct SubdivideOptions {
+    scheme: Option<SchemeName>,
+    steps: Option<f64>,
+    w: Option<f64>,
+    n: Option<f64>,
+    variant: Option<VariantName>,
+    degree: Option<f64>,
+    closed: Option<bool>,
+    space: Option<SpaceName>,
+    length: Option<f64>,
+}
+
+#[derive(Deserialize, Clone, Copy, PartialEq)]
+#[serde(
+    rename_all = "kebab-case",
+    expecting = "one of \"chaikin\", \"bspline\", \"bezier\", \"four-point\", \"variational\""
+)]
+enum SchemeName {
+    Chaikin,
+    Bspline,
+    Bezier,
+    FourPoint,
+    Variational,
+}
+
+impl SchemeName {
+    fn name(self) -> &'static str {
+        match self {
+            SchemeName::Chaikin => "chaikin",
+            SchemeName::Bspline => "bspline",
+            SchemeName::Bezier => "bezier",
+            SchemeName::FourPoint => "four-point",
+            SchemeName::Variational => "variational",
+        }
+    }
+}
+
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case", expecting = "one of \"coupled\", \"literal\", \"averaged\"")]
+enum VariantName {
+    Coupled,
+    Literal,
+    Averaged,
+}
+
+/// `space` of the strip and congruence options.
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case", expecting = "\"points\" or \"lines\"")]
+pub(crate) enum SpaceName {
+    Points,
+    Lines,
+}
 
 /// Where a strip scheme acts: on the endpoints, or on the lines (with the output length).
 pub(crate) enum Space {
@@ -54,62 +108,58 @@ pub(crate) enum Space {
 }
 
 /// Reads `options` into a scheme, `closed`, `steps` and the space the scheme acts in;
-/// `default_scheme` stands in when `options.scheme` is absent (otherwise it is required).
+/// `default_scheme` stands in when `options.scheme` is absent (otherwise it is required), and
+/// then the options object may be left out.
 pub(crate) fn read(
     func: &'static str,
     options: JsValue,
     default_scheme: Option<&str>,
 ) -> Result<(Scheme, bool, usize, Space), JsValue> {
-    let o = Options::new(func, options, &KNOWN)?;
-    let space = match o.string("space")?.as_deref() {
-        None | Some("points") => {
-            if o.has("length") {
-                return Err(fail(func, "options.length applies to space \"lines\" only"));
+    let o: SubdivideOptions = args::options(func, options)?;
+    let length = finite_option(func, "length", o.length)?;
+    let space = match o.space {
+        None | Some(SpaceName::Points) => {
+            if length.is_some() {
+                return Err(fail_option(func, "length", "options.length applies to space \"lines\" only"));
             }
             Space::Points
         }
-        Some("lines") => Space::Lines(o.number("length")?),
-        Some(other) => {
-            return Err(fail(func, format!("options.space must be \"points\" or \"lines\", got \"{other}\"")))
-        }
+        Some(SpaceName::Lines) => Space::Lines(length),
     };
-    let Some(name) = o.string("scheme")?.or(default_scheme.map(String::from)) else {
-        return Err(fail(
+    let Some(name) = o.scheme.map(SchemeName::name).or(default_scheme) else {
+        return Err(fail_option(
             func,
+            "scheme",
             "options.scheme is required: \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\"",
         ));
     };
-    for (key, scheme) in [("w", "four-point"), ("n", "variational"), ("variant", "variational"), ("degree", "bspline")]
-    {
-        o.only_for(key, scheme, Some(&name))?;
+    for (key, present, scheme) in [
+        ("w", o.w.is_some(), "four-point"),
+        ("n", o.n.is_some(), "variational"),
+        ("variant", o.variant.is_some(), "variational"),
+        ("degree", o.degree.is_some(), "bspline"),
+    ] {
+        only_for(func, key, present, scheme, Some(name))?;
     }
-    let scheme = match name.as_str() {
+    let scheme = match name {
         "chaikin" => Scheme::Chaikin,
-        "bspline" => Scheme::BSpline { degree: o.integer("degree", 1, subdivision::bspline::MAX_DEGREE)?.unwrap_or(3) },
+        "bspline" => Scheme::BSpline {
+            degree: integer_option(func, "degree", o.degree, 1, subdivision::bspline::MAX_DEGREE)?.unwrap_or(3),
+        },
         "bezier" => Scheme::Bezier,
-        "four-point" => Scheme::FourPoint { w: o.number("w")?.unwrap_or(1.0 / 16.0) },
-        "variational" => Scheme::Variational {
-            n: o.integer("n", 3, 1000)?.unwrap_or(12),
-            variant: match o.string("variant")?.as_deref() {
-                None | Some("coupled") => Variant::Coupled,
-                Some("literal") => Variant::Literal,
-                Some("averaged") => Variant::Averaged,
-                Some(other) => {
-                    return Err(fail(func, format!("options.variant must be \"coupled\", \"literal\" or \"averaged\", got \"{other}\"")))
-                }
+        "four-point" => Scheme::FourPoint { w: finite_option(func, "w", o.w)?.unwrap_or(1.0 / 16.0) },
+        _ => Scheme::Variational {
+            n: integer_option(func, "n", o.n, 3, 1000)?.unwrap_or(12),
+            variant: match o.variant.unwrap_or(VariantName::Coupled) {
+                VariantName::Coupled => Variant::Coupled,
+                VariantName::Literal => Variant::Literal,
+                VariantName::Averaged => Variant::Averaged,
             },
         },
-        other => {
-            return Err(fail(
-                func,
-                format!("unknown scheme \"{other}\"; use \"chaikin\", \"bspline\", \"bezier\", \"four-point\" or \"variational\""),
-            ))
-        }
     };
     scheme.validate().map_err(|e| fail(func, e))?;
-    let steps = o.integer("steps", 0, MAX_STEPS)?.unwrap_or(1);
-    let closed = o.boolean("closed")?.unwrap_or(false);
-    Ok((scheme, closed, steps, space))
+    let steps = integer_option(func, "steps", o.steps, 0, MAX_STEPS)?.unwrap_or(1);
+    Ok((scheme, o.closed.unwrap_or(false), steps, space))
 }
 
 #[wasm_bindgen]
@@ -135,8 +185,13 @@ impl RuledSurface {
 
     /// The rulings re-cut to segments of one length (default: the mean length), centred on
     /// the striction points: for data given as lines, before subdividing.
-    pub fn recut(&self, length: Option<f64>) -> Result<RuledSurface, JsValue> {
-        subdivision::recut(self.core(), length).map(RuledSurface::from_core).map_err(|e| fail("RuledSurface.recut", e))
+    pub fn recut(
+        &self,
+        #[wasm_bindgen(unchecked_optional_param_type = "number")] length: JsValue,
+    ) -> Result<RuledSurface, JsValue> {
+        const F: &str = "RuledSurface.recut";
+        let length = if length.is_undefined() { None } else { Some(args::number(F, "length", &length)?) };
+        subdivision::recut(self.core(), length).map(RuledSurface::from_core).map_err(|e| fail(F, e))
     }
 }
 

@@ -1,11 +1,12 @@
 //! `RuledSurface` and `AnalyticSurface` for JavaScript (Section 2).
 
-use super::args::{describe, fail, integer, numbers, read_options, ObjectBuilder, Options};
+use super::args::{self, describe, fail, finite_option, integer, integer_option, numbers, options, to_js};
 use super::live::Live;
 use crate::examples;
 use crate::ruled::{self, convergence, Development, HingeChain, Invariants};
 use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
 use js_sys::{Float32Array, Float64Array, Uint8Array};
+use serde::{Deserialize, Serialize};
 use std::cell::OnceCell;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -93,15 +94,71 @@ pub struct RuledSurface {
     _live: Live,
 }
 
-#[derive(serde::Deserialize, Default)]
+#[derive(Deserialize, Default)]
 struct InvariantsOptions {
     #[serde(default)]
     closed: bool,
 }
 
+/// `Invariants` as JS sees it: typed arrays, written as themselves.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct InvariantsJs {
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    angle: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    distance: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    distribution: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    footpoints: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    central_normal: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    striction: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    distribution_mean: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    perpendicular_midpoints: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    parallel: Uint8Array,
+}
+
+/// Sampling options; omitted fields take the surface's defaults.
+#[derive(Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+struct SampleOptions {
+    u_min: Option<f64>,
+    u_max: Option<f64>,
+    v_min: Option<f64>,
+    v_max: Option<f64>,
+    closed: Option<bool>,
+}
+
+/// Options of the convergence study.
+#[derive(Deserialize, Default)]
+struct ConvergenceOptions {
+    u: Option<f64>,
+    h0: Option<f64>,
+    levels: Option<f64>,
+}
+
+/// One entry of `AnalyticSurface.list()`.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct SurfaceInfo {
+    name: &'static str,
+    title: &'static str,
+    u_min: f64,
+    u_max: f64,
+    v_min: f64,
+    v_max: f64,
+    closed: bool,
+}
+
 impl RuledSurface {
     fn compute_invariants(&self, func: &str, options: JsValue) -> Result<Invariants, JsValue> {
-        let o: InvariantsOptions = read_options(func, options, &["closed"], &[], true)?;
+        let o: InvariantsOptions = args::options(func, options)?;
         Ok(if o.closed { self.inner.invariants_closed() } else { self.inner.invariants() })
     }
 
@@ -159,19 +216,23 @@ impl RuledSurface {
         &self,
         #[wasm_bindgen(unchecked_optional_param_type = "InvariantsOptions")] options: Option<js_sys::Object>,
     ) -> Result<JsValue, JsValue> {
-        let inv = self.compute_invariants("RuledSurface.invariants", options.map(JsValue::from).unwrap_or_default())?;
+        const F: &str = "RuledSurface.invariants";
+        let inv = self.compute_invariants(F, options.map(JsValue::from).unwrap_or_default())?;
         let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
-        Ok(ObjectBuilder::new()
-            .f64s("angle", &inv.angle)
-            .f64s("distance", &inv.distance)
-            .f64s("distribution", &inv.distribution)
-            .f64s("footpoints", Invariants::flat(&inv.footpoints))
-            .f64s("centralNormal", Invariants::flat(&inv.central_normal))
-            .f64s("striction", Invariants::flat(&inv.striction))
-            .f64s("distributionMean", &inv.distribution_mean)
-            .f64s("perpendicularMidpoints", Invariants::flat(&inv.perpendicular_midpoints))
-            .set("parallel", Uint8Array::from(&parallel[..]))
-            .build())
+        to_js(
+            F,
+            &InvariantsJs {
+                angle: Float64Array::from(&inv.angle[..]),
+                distance: Float64Array::from(&inv.distance[..]),
+                distribution: Float64Array::from(&inv.distribution[..]),
+                footpoints: Float64Array::from(Invariants::flat(&inv.footpoints)),
+                central_normal: Float64Array::from(Invariants::flat(&inv.central_normal)),
+                striction: Float64Array::from(Invariants::flat(&inv.striction)),
+                distribution_mean: Float64Array::from(&inv.distribution_mean[..]),
+                perpendicular_midpoints: Float64Array::from(Invariants::flat(&inv.perpendicular_midpoints)),
+                parallel: Uint8Array::from(&parallel[..]),
+            },
+        )
     }
 
     /// As `invariants()`, but written into the arrays of `out` (an object returned by an
@@ -291,8 +352,10 @@ impl RuledSurface {
 
     /// The bending from this surface (t = 0) to its conoidal model (t = 1), hinge angles
     /// scaled by t. Throws unless 0 ≤ t ≤ 1.
-    pub fn bend(&self, t: f64) -> Result<RuledSurface, JsValue> {
-        self.chain().bend(t).map(Self::from_core).map_err(|e| fail("RuledSurface.bend", e))
+    pub fn bend(&self, #[wasm_bindgen(unchecked_param_type = "number")] t: JsValue) -> Result<RuledSurface, JsValue> {
+        const F: &str = "RuledSurface.bend";
+        let t = args::number(F, "t", &t)?;
+        self.chain().bend(t).map(Self::from_core).map_err(|e| fail(F, e))
     }
 
     /// The approximate development (Fig. 6): the conoidal model projected onto the plane of
@@ -328,22 +391,23 @@ impl AnalyticSurface {
 impl AnalyticSurface {
     /// Every analytic surface: name, title and default ranges.
     #[wasm_bindgen(unchecked_return_type = "AnalyticSurfaceInfo[]")]
-    pub fn list() -> js_sys::Array {
-        examples::AnalyticSurface::ALL
+    pub fn list() -> Result<JsValue, JsValue> {
+        let list: Vec<SurfaceInfo> = examples::AnalyticSurface::ALL
             .iter()
             .map(|s| {
                 let r = s.ranges();
-                ObjectBuilder::new()
-                    .set("name", s.name())
-                    .set("title", s.title())
-                    .set("uMin", r.u.0)
-                    .set("uMax", r.u.1)
-                    .set("vMin", r.v.0)
-                    .set("vMax", r.v.1)
-                    .set("closed", r.closed)
-                    .build()
+                SurfaceInfo {
+                    name: s.name(),
+                    title: s.title(),
+                    u_min: r.u.0,
+                    u_max: r.u.1,
+                    v_min: r.v.0,
+                    v_max: r.v.1,
+                    closed: r.closed,
+                }
             })
-            .collect()
+            .collect();
+        to_js("AnalyticSurface.list", &list)
     }
 
     /// The surface named `name` (see `list()`); throws for an unknown name.
@@ -372,11 +436,11 @@ impl AnalyticSurface {
     /// `count` rulings at equally spaced u (see `SampleOptions`; defaults from `list()`).
     pub fn sample(
         &self,
-        count: f64,
-        #[wasm_bindgen(unchecked_param_type = "SampleOptions | undefined")] opts: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] count: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "SampleOptions")] opts: JsValue,
     ) -> Result<RuledSurface, JsValue> {
         const F: &str = "AnalyticSurface.sample";
-        let count = integer(F, "count", count, 2, MAX_SAMPLES)?;
+        let count = integer(F, "count", &count, 2, MAX_SAMPLES)?;
         let r = self.ranges(F, opts)?;
         self.inner.sample(count, r).map(RuledSurface::from_core).map_err(|e| fail(F, e))
     }
@@ -384,11 +448,11 @@ impl AnalyticSurface {
     /// The parameters u_i at which `sample(count, options)` takes its rulings.
     pub fn parameters(
         &self,
-        count: f64,
-        #[wasm_bindgen(unchecked_param_type = "SampleOptions | undefined")] opts: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] count: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "SampleOptions")] opts: JsValue,
     ) -> Result<Float64Array, JsValue> {
         const F: &str = "AnalyticSurface.parameters";
-        let count = integer(F, "count", count, 2, MAX_SAMPLES)?;
+        let count = integer(F, "count", &count, 2, MAX_SAMPLES)?;
         let r = self.ranges(F, opts)?;
         Ok(Float64Array::from(&examples::AnalyticSurface::parameters(count, r)[..]))
     }
@@ -398,14 +462,14 @@ impl AnalyticSurface {
     #[wasm_bindgen(js_name = samplingErrors, unchecked_return_type = "SamplingErrors")]
     pub fn sampling_errors(
         &self,
-        count: f64,
-        #[wasm_bindgen(unchecked_param_type = "SampleOptions | undefined")] opts: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] count: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "SampleOptions")] opts: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "AnalyticSurface.samplingErrors";
-        let count = integer(F, "count", count, 3, MAX_SAMPLES)?;
+        let count = integer(F, "count", &count, 3, MAX_SAMPLES)?;
         let r = self.ranges(F, opts)?;
         let e = crate::ruled::accuracy::sampling_errors(&self.inner, count, r).map_err(|e| fail(F, e))?;
-        serde_wasm_bindgen::to_value(&e).map_err(|e| fail(F, e.to_string()))
+        to_js(F, &e)
     }
 
     /// Largest distance from this surface of the rulings of `refined` whose index is not a
@@ -415,15 +479,13 @@ impl AnalyticSurface {
     pub fn inserted_distance(
         &self,
         refined: &RuledSurface,
-        stride: f64,
-        u_min: f64,
-        u_max: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] u_min: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] u_max: JsValue,
     ) -> Result<f64, JsValue> {
         const F: &str = "AnalyticSurface.insertedDistance";
-        let stride = integer(F, "stride", stride, 2, 1 << 24)?;
-        if !(u_min.is_finite() && u_max.is_finite() && u_min < u_max) {
-            return Err(fail(F, format!("need finite uMin < uMax, got {u_min} and {u_max}")));
-        }
+        let stride = integer(F, "stride", &stride, 2, 1 << 24)?;
+        let (u_min, u_max) = interval(F, &u_min, &u_max)?;
         let which = (0..refined.inner.len()).filter(|i| i % stride != 0);
         Ok(crate::subdivision::accuracy::max_distance(&self.inner, &refined.inner, u_min, u_max, which))
     }
@@ -466,14 +528,12 @@ impl AnalyticSurface {
     pub fn distances(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
-        u_min: f64,
-        u_max: f64,
+        #[wasm_bindgen(unchecked_param_type = "number")] u_min: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] u_max: JsValue,
     ) -> Result<Float64Array, JsValue> {
         const F: &str = "AnalyticSurface.distances";
         let flat = numbers(F, "points", &points)?;
-        if !(u_min.is_finite() && u_max.is_finite() && u_min < u_max) {
-            return Err(fail(F, format!("need finite uMin < uMax, got {u_min} and {u_max}")));
-        }
+        let (u_min, u_max) = interval(F, &u_min, &u_max)?;
         if flat.len() % 3 != 0 || flat.len() / 3 > MAX_SAMPLES {
             return Err(fail(
                 F,
@@ -490,50 +550,39 @@ impl AnalyticSurface {
     #[wasm_bindgen(unchecked_return_type = "ConvergenceStudy")]
     pub fn convergence(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "ConvergenceOptions | undefined")] opts: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "ConvergenceOptions")] opts: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "AnalyticSurface.convergence";
-        let o = Options::new(F, opts, &["u", "h0", "levels"])?;
-        let levels = o.integer("levels", 2, MAX_STUDY_LEVELS)?.unwrap_or(8);
-        let u = o.number("u")?.unwrap_or(0.7);
-        let study =
-            convergence::study(&self.inner, u, o.number("h0")?.unwrap_or(0.2), levels).map_err(|e| fail(F, e))?;
-        let series: js_sys::Array = study
-            .series
-            .iter()
-            .map(|s| {
-                ObjectBuilder::new()
-                    .set("name", s.name)
-                    .set("expectedOrder", s.expected_order)
-                    .set("errors", js_numbers(&s.errors))
-                    .set("orders", js_numbers(&s.orders))
-                    .set("fittedOrder", s.fitted_order)
-                    .build()
-            })
-            .collect();
-        Ok(ObjectBuilder::new()
-            .set("surface", study.surface)
-            .set("u", study.u)
-            .set("steps", js_numbers(&study.steps))
-            .set("series", series)
-            .build())
+        let o: ConvergenceOptions = options(F, opts)?;
+        let levels = integer_option(F, "levels", o.levels, 2, MAX_STUDY_LEVELS)?.unwrap_or(8);
+        let u = finite_option(F, "u", o.u)?.unwrap_or(0.7);
+        let h0 = finite_option(F, "h0", o.h0)?.unwrap_or(0.2);
+        let study = convergence::study(&self.inner, u, h0, levels).map_err(|e| fail(F, e))?;
+        to_js(F, &study)
     }
 }
 
-/// A plain JS array of numbers (the study's small series read best as ordinary arrays).
-fn js_numbers(values: &[f64]) -> js_sys::Array {
-    values.iter().map(|&x| JsValue::from_f64(x)).collect()
+/// The parameter interval [uMin, uMax] of the distance searches: finite, uMin < uMax.
+fn interval(func: &str, u_min: &JsValue, u_max: &JsValue) -> Result<(f64, f64), JsValue> {
+    let (a, b) = (args::number(func, "uMin", u_min)?, args::number(func, "uMax", u_max)?);
+    if a < b {
+        Ok((a, b))
+    } else {
+        Err(fail(func, format!("need uMin < uMax, got {a} and {b}")))
+    }
 }
 
 impl AnalyticSurface {
     /// Sampling ranges from `SampleOptions`, defaults from the surface.
     fn ranges(&self, func: &'static str, opts: JsValue) -> Result<examples::Ranges, JsValue> {
-        let o = Options::new(func, opts, &["uMin", "uMax", "vMin", "vMax", "closed"])?;
+        let o: SampleOptions = options(func, opts)?;
         let d = self.inner.ranges();
+        let bound =
+            |name: &str, x: Option<f64>, default: f64| finite_option(func, name, x).map(|x| x.unwrap_or(default));
         Ok(examples::Ranges {
-            u: (o.number("uMin")?.unwrap_or(d.u.0), o.number("uMax")?.unwrap_or(d.u.1)),
-            v: (o.number("vMin")?.unwrap_or(d.v.0), o.number("vMax")?.unwrap_or(d.v.1)),
-            closed: o.boolean("closed")?.unwrap_or(d.closed),
+            u: (bound("uMin", o.u_min, d.u.0)?, bound("uMax", o.u_max, d.u.1)?),
+            v: (bound("vMin", o.v_min, d.v.0)?, bound("vMax", o.v_max, d.v.1)?),
+            closed: o.closed.unwrap_or(d.closed),
         })
     }
 

@@ -1,6 +1,6 @@
 //! Tool paths for JavaScript (Example 6, Figs. 16–18): `ToolPath`.
 
-use super::args::{fail, numbers, ObjectBuilder, Options};
+use super::args::{self, fail, fail_option, finite_option, numbers, to_js};
 use super::live::Live;
 use crate::error::Error;
 use crate::milling::{self, example, export, quality};
@@ -8,6 +8,7 @@ use crate::ruled::surface::points_from_flat;
 use crate::ruled::RuledSurface;
 use glam::DVec3;
 use js_sys::{Float32Array, Float64Array};
+use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -50,17 +51,53 @@ impl ToolPath {
     }
 }
 
+/// `ToolOptions`, read by serde.
+#[derive(Deserialize)]
+struct ToolOptions {
+    radius: Option<f64>,
+    length: Option<f64>,
+    end: Option<EndName>,
+}
+
+#[derive(Deserialize, Clone, Copy)]
+#[serde(rename_all = "kebab-case", expecting = "\"ball\" or \"flat\"")]
+enum EndName {
+    Ball,
+    Flat,
+}
+
+/// `ExportOptions`, read by serde.
+#[derive(Deserialize, Default)]
+struct ExportOptions {
+    feed: Option<f64>,
+    scale: Option<f64>,
+    clearance: Option<f64>,
+}
+
+/// `PathQuality`, written by serde.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct QualityJs {
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    angle_step: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    second_difference: Float64Array,
+    max_angle_step: f64,
+    max_second_difference: f64,
+}
+
 fn read_tool(func: &'static str, tool: JsValue) -> Result<milling::Tool, JsValue> {
     if tool.is_undefined() || tool.is_null() {
         return Err(fail(func, "tool is required: { radius, length, end? }"));
     }
-    let o = Options::new(func, tool, &["radius", "length", "end"])?;
-    let radius = o.number("radius")?.ok_or_else(|| fail(func, "options.radius (the tool radius) is required"))?;
-    let length = o.number("length")?.ok_or_else(|| fail(func, "options.length (the tool length) is required"))?;
-    let end = match o.string("end")?.as_deref() {
-        None | Some("ball") => milling::ToolEnd::Ball,
-        Some("flat") => milling::ToolEnd::Flat,
-        Some(other) => return Err(fail(func, format!("options.end must be \"ball\" or \"flat\", got \"{other}\""))),
+    let o: ToolOptions = args::required(func, "tool", tool, &[])?;
+    let radius = finite_option(func, "radius", o.radius)?
+        .ok_or_else(|| fail_option(func, "radius", "tool.radius (the tool radius) is required"))?;
+    let length = finite_option(func, "length", o.length)?
+        .ok_or_else(|| fail_option(func, "length", "tool.length (the tool length) is required"))?;
+    let end = match o.end.unwrap_or(EndName::Ball) {
+        EndName::Ball => milling::ToolEnd::Ball,
+        EndName::Flat => milling::ToolEnd::Flat,
     };
     milling::Tool::new(radius, length, end).map_err(|e| fail(func, e))
 }
@@ -92,8 +129,10 @@ impl ToolPath {
     }
 
     /// The built-in path of Figs. 16–18 with `count` given poses (default 7).
-    pub fn example(count: Option<f64>) -> Result<ToolPath, JsValue> {
-        let count = super::args::integer("ToolPath.example", "count", count.unwrap_or(7.0), 2, 1000)?;
+    pub fn example(
+        #[wasm_bindgen(unchecked_optional_param_type = "number")] count: JsValue,
+    ) -> Result<ToolPath, JsValue> {
+        let count = args::optional_integer("ToolPath.example", "count", &count, 2, 1000, 7)?;
         example::example(count)
             .map(|inner| ToolPath { inner, _live: Live::new() })
             .map_err(|e| fail("ToolPath.example", e))
@@ -101,8 +140,10 @@ impl ToolPath {
 
     /// The example's target profile γ, `count` points (3 numbers each).
     #[wasm_bindgen(js_name = exampleProfile)]
-    pub fn example_profile(count: f64) -> Result<Float64Array, JsValue> {
-        let count = super::args::integer("ToolPath.exampleProfile", "count", count, 2, 1_000_000)?;
+    pub fn example_profile(
+        #[wasm_bindgen(unchecked_param_type = "number")] count: JsValue,
+    ) -> Result<Float64Array, JsValue> {
+        let count = super::args::integer("ToolPath.exampleProfile", "count", &count, 2, 1_000_000)?;
         Ok(flat(&example::profile(count)))
     }
 
@@ -116,7 +157,7 @@ impl ToolPath {
     /// `RuledSurface.subdivide`; scheme defaults to "variational").
     pub fn refine(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "Partial<SubdivideOptions> | undefined")] options: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "Partial<SubdivideOptions>")] options: JsValue,
     ) -> Result<ToolPath, JsValue> {
         const F: &str = "ToolPath.refine";
         let (scheme, closed, steps, space) = super::subdivide::read(F, options, Some("variational"))?;
@@ -185,14 +226,17 @@ impl ToolPath {
 
     /// Orientation smoothness: axis angle per step and its second difference.
     #[wasm_bindgen(unchecked_return_type = "PathQuality")]
-    pub fn quality(&self) -> JsValue {
+    pub fn quality(&self) -> Result<JsValue, JsValue> {
         let q = quality::Quality::of(&self.inner);
-        ObjectBuilder::new()
-            .f64s("angleStep", &q.angle_step)
-            .f64s("secondDifference", &q.second_difference)
-            .set("maxAngleStep", q.max_angle_step())
-            .set("maxSecondDifference", q.max_second_difference())
-            .build()
+        to_js(
+            "ToolPath.quality",
+            &QualityJs {
+                angle_step: Float64Array::from(&q.angle_step[..]),
+                second_difference: Float64Array::from(&q.second_difference[..]),
+                max_angle_step: q.max_angle_step(),
+                max_second_difference: q.max_second_difference(),
+            },
+        )
     }
 
     /// Signed deviation of each target point (3 numbers each) from the surface the tool leaves
@@ -211,12 +255,12 @@ impl ToolPath {
     pub fn export(
         &self,
         #[wasm_bindgen(unchecked_param_type = "\"json\" | \"csv\" | \"gcode\"")] format: JsValue,
-        #[wasm_bindgen(unchecked_param_type = "ExportOptions | undefined")] options: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "ExportOptions")] options: JsValue,
     ) -> Result<String, JsValue> {
         const F: &str = "ToolPath.export";
         let format = format.as_string().unwrap_or_default();
-        let o = Options::new(F, options, &["feed", "scale", "clearance"])?;
-        if format != "gcode" && ["feed", "scale", "clearance"].iter().any(|k| o.has(k)) {
+        let o: ExportOptions = args::options(F, options)?;
+        if format != "gcode" && (o.feed.is_some() || o.scale.is_some() || o.clearance.is_some()) {
             return Err(fail(F, "feed, scale and clearance apply to the \"gcode\" format only"));
         }
         match format.as_str() {
@@ -225,9 +269,9 @@ impl ToolPath {
             "gcode" => {
                 let d = export::GcodeOptions::default();
                 let g = export::GcodeOptions {
-                    feed: o.number("feed")?.unwrap_or(d.feed),
-                    scale: o.number("scale")?.unwrap_or(d.scale),
-                    clearance: o.number("clearance")?.unwrap_or(d.clearance),
+                    feed: finite_option(F, "feed", o.feed)?.unwrap_or(d.feed),
+                    scale: finite_option(F, "scale", o.scale)?.unwrap_or(d.scale),
+                    clearance: finite_option(F, "clearance", o.clearance)?.unwrap_or(d.clearance),
                 };
                 export::gcode(&self.inner, g).map_err(|e| fail(F, e))
             }

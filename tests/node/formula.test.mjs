@@ -85,8 +85,8 @@ test('bad formulas throw errors with codes, columns and clear messages', () => {
     [{ ...base, colour: 'red' }, 'invalid-argument', 'unknown option "colour"; known options: a, e, u, v, closed, parameters', { option: 'colour' }],
     [{ ...base, a: ['u', '0'] }, 'invalid-argument', 'invalid length 2, expected an array of length 3', {}],
     [{ ...base, u: [0, true] }, 'invalid-argument', 'expected a number or a formula such as "2*pi"', {}],
-    [{ ...base, parameters: { d: 1 } }, 'invalid-argument', 'unknown option "parameters.d"; known options: a, b, c', { option: 'd' }],
-    ['cos(u)', 'invalid-argument', 'options must be an object { a, e, u, v, closed, parameters }, got a string', {}],
+    [{ ...base, parameters: { d: 1 } }, 'invalid-argument', 'unknown option "parameters.d"; known options: a, b, c', { option: 'parameters.d' }],
+    ['cos(u)', 'invalid-argument', 'spec must be an object { a, e, u, v, closed, parameters }, got a string', {}],
   ];
   for (const [spec, code, message, details] of cases) {
     const e = thrown(() => AnalyticSurface.fromFormulas(spec));

@@ -65,8 +65,8 @@ test('bad options throw clear Errors and the surface stays usable', () => {
   const cases = [
     [{}, /options.scheme is required/],
     [undefined, /options.scheme is required/],
-    [{ scheme: 'loop' }, /unknown scheme "loop"/],
-    [{ scheme: 4 }, /options.scheme must be a string, got 4/],
+    [{ scheme: 'loop' }, /options.scheme: unknown value "loop", expected one of "chaikin", "bspline", "bezier", "four-point", "variational"/],
+    [{ scheme: 4 }, /options.scheme: expected one of "chaikin", "bspline", "bezier", "four-point", "variational", got the number 4/],
     [{ scheme: 'chaikin', w: 0.1 }, /options.w applies to the "four-point" scheme only, not to "chaikin"/],
     [{ scheme: 'four-point', w: 0.5 }, /w: must be a number in \[−1\/4, 1\/4\]/],
     [{ scheme: 'four-point', w: NaN }, /options.w must be a finite number, got NaN/],
@@ -74,12 +74,12 @@ test('bad options throw clear Errors and the surface stays usable', () => {
     [{ scheme: 'four-point', steps: 1.5 }, /got 1.5/],
     [{ scheme: 'four-point', steps: 22 }, /rulings after subdivision: .* exceeds the limit of 4194304/],
     [{ scheme: 'variational', n: 2 }, /options.n must be an integer from 3 to 1000, got 2/],
-    [{ scheme: 'variational', variant: 'fancy' }, /options.variant must be "coupled", "literal" or "averaged"/],
+    [{ scheme: 'variational', variant: 'fancy' }, /options.variant: unknown value "fancy", expected one of "coupled", "literal", "averaged"/],
     [{ scheme: 'variational', closed: true }, /refines open polygons and strips only/],
     [{ scheme: 'bezier', closed: true }, /open polygons and strips only/],
     [{ scheme: 'bspline', degree: 9 }, /options.degree must be an integer from 1 to 7, got 9/],
     [{ scheme: 'four-point', colour: 'red' }, /unknown option "colour"/],
-    [{ scheme: 'four-point', closed: 'yes' }, /options.closed must be true or false, got a string/],
+    [{ scheme: 'four-point', closed: 'yes' }, /options.closed: expected true or false, got the string "yes"/],
   ];
   for (const [options, message] of cases) {
     assert.throws(() => s.subdivide(options), (e) => e instanceof Error && message.test(e.message), String(message));
@@ -109,7 +109,7 @@ test('space "lines": the result does not depend on where the endpoints sit', () 
   assert.ok(c.some((x, i) => Math.abs(x - d[i]) > 1e-3));
   assert.throws(() => s.subdivide({ scheme: 'variational', space: 'lines' }), /line space supports "chaikin", "bspline" and "four-point"/);
   assert.throws(() => s.subdivide({ scheme: 'four-point', length: 2 }), /options.length applies to space "lines" only/);
-  assert.throws(() => s.subdivide({ scheme: 'four-point', space: 'plane' }), /options.space must be "points" or "lines"/);
+  assert.throws(() => s.subdivide({ scheme: 'four-point', space: 'plane' }), /options.space: unknown value "plane", expected "points" or "lines"/);
 });
 
 test('congruences: butterfly in line space', () => {

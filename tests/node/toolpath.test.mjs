@@ -67,9 +67,9 @@ test('bad input throws clear Errors', () => {
   const cases = [
     [() => ToolPath.fromSegments(seg, { radius: 0, length: 1 }), /the tool radius must be a positive number, got 0/],
     [() => ToolPath.fromSegments(seg, { radius: -2, length: 1 }), /got -2/],
-    [() => ToolPath.fromSegments(seg, { radius: 0.1 }), /options.length \(the tool length\) is required/],
+    [() => ToolPath.fromSegments(seg, { radius: 0.1 }), /tool.length \(the tool length\) is required/],
     [() => ToolPath.fromSegments(seg), /tool is required/],
-    [() => ToolPath.fromSegments(seg, { radius: 0.1, length: 1, end: 'bull' }), /options.end must be "ball" or "flat"/],
+    [() => ToolPath.fromSegments(seg, { radius: 0.1, length: 1, end: 'bull' }), /tool.end: unknown value "bull", expected "ball" or "flat"/],
     [() => ToolPath.fromSegments(new Float64Array([0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1]), { radius: 0.1, length: 1 }), /tool axis 0 has zero length/],
     [() => ToolPath.fromSegments(seg.map((x, i) => (i === 4 ? Infinity : x)), { radius: 0.1, length: 1 }), /is inf/],
     [() => ToolPath.example(1), /count must be an integer from 2/],

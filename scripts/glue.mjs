@@ -1,0 +1,63 @@
+// Gives the two errors that wasm-bindgen's generated glue throws by itself a `code`, like every
+// error of ruledlab's own (README, "Errors"): an argument of the wrong class
+// (`expected instance of RuledSurface`) becomes `invalid-argument`; calling a method of a freed
+// object ("null pointer passed to rust") becomes `freed` with a message that says what happened;
+// re-entrant use becomes `invalid-state`. Each edit must match the glue exactly once, so a
+// wasm-bindgen upgrade that changes the glue fails the build instead of silently losing codes.
+// Usage: node scripts/glue.mjs pkg/ruledlab.js
+import { readFileSync, writeFileSync } from 'node:fs';
+
+const file = process.argv[2] ?? 'pkg/ruledlab.js';
+let js = readFileSync(file, 'utf8');
+
+const HELPER = `
+/** ruledlab: errors of the generated glue, with a code (scripts/glue.mjs). */
+function ruledlabGlueError(message) {
+    if (message === 'null pointer passed to rust') {
+        return Object.assign(new Error('this object has been freed: free() was called on it, or a call took it over'), { code: 'freed' });
+    }
+    if (/recursive use|while it was borrowed/.test(message)) {
+        return Object.assign(new Error(message), { code: 'invalid-state' });
+    }
+    return Object.assign(new Error(message), { code: 'internal' });
+}
+
+/** "null", "an object", "a Float64Array", "a number": what was passed instead. */
+function ruledlabDescribe(value) {
+    if (value === null || value === undefined) return String(value);
+    if (Array.isArray(value)) return 'an array';
+    const name = typeof value === 'object' ? (value.constructor?.name === 'Object' ? 'object' : value.constructor?.name ?? 'object') : typeof value;
+    return (/^[aeioAEIO]/.test(name) ? 'an ' : 'a ') + name;
+}
+`;
+
+const EDITS = [
+  [
+    'throw new Error(`expected instance of ${klass.name}`);',
+    "throw Object.assign(new Error(`expected an instance of ${klass.name}, got ${ruledlabDescribe(instance)}`), { code: 'invalid-argument' });",
+  ],
+  [
+    /(__wbg___wbindgen_throw_[0-9a-f]+: function\(arg0, arg1\) \{\n\s*)throw new Error\(getStringFromWasm0\(arg0, arg1\)\);/,
+    '$1throw ruledlabGlueError(getStringFromWasm0(arg0, arg1));',
+  ],
+];
+
+if (js.includes('function ruledlabGlueError')) {
+  console.log(`glue: ${file} already has codes`);
+  process.exit(0);
+}
+for (const [from, to] of EDITS) {
+  const count = typeof from === 'string' ? js.split(from).length - 1 : (js.match(new RegExp(from, 'g')) ?? []).length;
+  if (count !== 1) {
+    console.error(`glue: expected exactly one match of ${from} in ${file}, found ${count}; has wasm-bindgen's glue changed?`);
+    process.exit(1);
+  }
+  js = js.replace(from, to);
+}
+js = js.replace(/\nfunction _assertClass\(/, `${HELPER}\nfunction _assertClass(`);
+if (!js.includes('function ruledlabGlueError')) {
+  console.error('glue: could not place the helper');
+  process.exit(1);
+}
+writeFileSync(file, js);
+console.log(`glue: ${file}: codes for wrong classes, freed objects and re-entrant use`);
