@@ -9,7 +9,10 @@ import { startServer } from './serve.mjs';
 
 const DOCS = new URL('../docs/', import.meta.url).pathname;
 
-/** scene, params, camera [yaw, pitch, distance, tx, ty, tz] or null for the scene's own, file name */
+/**
+ * scene, params, camera [yaw, pitch, distance, tx, ty, tz] or null for the scene's own, file name
+ * @type {[string, string, number[] | null, string][]}
+ */
 const FIGURES = [
   ['notation', '', null, 'figure-1-notation-bw.svg'],
   ['curves', 'w=1/13&steps=4', [-1.5707963, 1.45, 18, 4, 0.15, 0], 'figure-8-dlg-bw.svg'],
@@ -26,10 +29,17 @@ const context = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir()
 try {
   const page = await context.newPage();
   await page.goto(url + '#scene=striction');
-  await page.waitForFunction(() => document.querySelector('.rl-stage')?.dataset.ready === '1');
+  await page.waitForFunction(() => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1');
   await page.waitForTimeout(300);
   writeFileSync(join(DOCS, 'screenshot-striction.png'), await page.screenshot());
   console.log('docs/screenshot-striction.png');
+  for (const [hash, file] of [['#scene=formula', 'screenshot-formula.png'], ['#scene=focal&congruence=example5&reach=1', 'screenshot-focal.png']]) {
+    await page.goto(url + hash);
+    await page.waitForFunction(() => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1');
+    await page.waitForTimeout(300);
+    writeFileSync(join(DOCS, file), await page.screenshot());
+    console.log(`docs/${file}`);
+  }
 
   await page.goto(url + 'examples/web-component.html');
   for (const [scene, params, camera, file] of FIGURES) {

@@ -4,8 +4,10 @@
 // object ("null pointer passed to rust") becomes `freed` with a message that says what happened;
 // re-entrant use becomes `invalid-state`. Each edit must match the glue exactly once, so a
 // wasm-bindgen upgrade that changes the glue fails the build instead of silently losing codes.
+// The declarations get `/// <reference lib="esnext.disposable" />`: they declare
+// `[Symbol.dispose]()` (for `using`), which needs that lib whatever the user's tsconfig says.
 // Usage: node scripts/glue.mjs pkg/ruledlab.js
-import { readFileSync, writeFileSync } from 'node:fs';
+import { readFileSync, writeFileSync, existsSync } from 'node:fs';
 
 const file = process.argv[2] ?? 'pkg/ruledlab.js';
 let js = readFileSync(file, 'utf8');
@@ -31,6 +33,7 @@ function ruledlabDescribe(value) {
 }
 `;
 
+/** @type {[string | RegExp, string][]} */
 const EDITS = [
   [
     'throw new Error(`expected instance of ${klass.name}`);',
@@ -42,6 +45,13 @@ const EDITS = [
   ],
 ];
 
+const dtsFile = file.replace(/\.js$/, '.d.ts');
+const REFERENCE = '/// <reference lib="esnext.disposable" />\n';
+if (existsSync(dtsFile)) {
+  const dts = readFileSync(dtsFile, 'utf8');
+  if (!dts.startsWith(REFERENCE)) writeFileSync(dtsFile, REFERENCE + dts);
+}
+
 if (js.includes('function ruledlabGlueError')) {
   console.log(`glue: ${file} already has codes`);
   process.exit(0);
@@ -52,7 +62,7 @@ for (const [from, to] of EDITS) {
     console.error(`glue: expected exactly one match of ${from} in ${file}, found ${count}; has wasm-bindgen's glue changed?`);
     process.exit(1);
   }
-  js = js.replace(from, to);
+  js = typeof from === 'string' ? js.replace(from, to) : js.replace(from, to);
 }
 js = js.replace(/\nfunction _assertClass\(/, `${HELPER}\nfunction _assertClass(`);
 if (!js.includes('function ruledlabGlueError')) {

@@ -12,11 +12,13 @@ import { fileURLToPath } from 'node:url';
 import { BODY, STATE_ID, stateJson } from '../www/export/onefile.js';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
+/** @param {string} p */
 const path = (p) => `${ROOT}${p}`;
 
 const wasm = readFileSync(path('pkg/ruledlab_bg.wasm')).toString('base64');
 // a classic worker: module workers from blob: URLs do not start in file:// pages
 const worker = await bundle('www/worker.js', 'iife', null, 'self.location.href');
+/** @type {import('esbuild').Plugin} */
 const inline = {
   name: 'ruledlab-inline',
   setup(b) {
@@ -25,7 +27,11 @@ const inline = {
   },
 };
 
-/** One bundled, minified script (text). */
+/**
+ * One bundled, minified script (text).
+ * @param {string} entry @param {import('esbuild').Format} format
+ * @param {import('esbuild').Plugin | null} plugin @param {string} [base]
+ */
 async function bundle(entry, format, plugin, base = 'document.baseURI') {
   const out = await build({
     entryPoints: [path(entry)],
@@ -43,6 +49,7 @@ async function bundle(entry, format, plugin, base = 'document.baseURI') {
   return out.outputFiles[0].text;
 }
 
+/** @param {string} text */
 const sha = (text) => `'sha256-${createHash('sha256').update(text, 'utf8').digest('base64')}'`;
 const page = (await bundle('scripts/onefile/page.js', 'esm', inline)).replaceAll('</script', '<\\/script');
 const css = readFileSync(path('www/style.css'), 'utf8');
@@ -77,5 +84,6 @@ mkdirSync(path('dist'), { recursive: true });
 writeFileSync(path('dist/ruledlab.html'), html);
 const embed = await bundle('scripts/onefile/embed.js', 'iife', inline);
 writeFileSync(path('dist/ruledlab-embed.js'), embed);
+/** @param {number} n */
 const kib = (n) => `${(n / 1024).toFixed(0)} KiB`;
 console.log(`build: dist/ruledlab.html ${kib(html.length)}, ${kib(gzipSync(html).length)} gzipped; dist/ruledlab-embed.js ${kib(embed.length)}, ${kib(gzipSync(embed).length)} gzipped`);

@@ -32,7 +32,7 @@ export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers
   const server = createServer((req, res) => {
     let path;
     try {
-      path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+      path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
     } catch {
       res.writeHead(400).end('bad request');
       return;
@@ -55,7 +55,7 @@ export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers
       return;
     }
     res.writeHead(200, {
-      'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
+      'content-type': TYPES[/** @type {keyof typeof TYPES} */ (extname(file))] ?? 'application/octet-stream',
       'content-length': stat.size,
       'cache-control': 'no-cache',
       ...headers,
@@ -65,7 +65,7 @@ export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers
   return new Promise((resolvePromise, reject) => {
     server.once('error', reject);
     server.listen(port, host, () => {
-      const { port: actual } = server.address();
+      const { port: actual } = /** @type {import('node:net').AddressInfo} */ (server.address());
       resolvePromise({ server, url: `http://${host === '127.0.0.1' ? 'localhost' : host}:${actual}/` });
     });
   });
@@ -79,7 +79,7 @@ if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.ur
       console.log(`\nruledlab is running at ${url}\n(Ctrl-C to stop)`);
       break;
     } catch (e) {
-      if (e.code !== 'EADDRINUSE') throw e;
+      if (/** @type {NodeJS.ErrnoException} */ (e).code !== 'EADDRINUSE') throw e;
     }
   }
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what ruledlab needs to build (and, with --browser, to test), skipping whatever
 # is already there: the wasm32 target, wasm-bindgen-cli at exactly Cargo.lock's version,
-# the npm packages, and with --browser Debian's chromium and chromium-driver.
+# the npm packages, and with --browser Debian's chromium and chromium-driver, firefox-esr with
+# xvfb, geckodriver and cargo-fuzz.
 # Only package registries are used; nothing downloads a binary or a browser of its own.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -41,5 +42,17 @@ if [ "${1:-}" = "--browser" ]; then
     sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq chromium chromium-driver >/dev/null
+  fi
+  # The second engine: Debian's Firefox ESR, headed under Xvfb (headless Firefox has no WebGL2
+  # here), driven through geckodriver built from crates.io.
+  if ! command -v firefox-esr >/dev/null || ! command -v xvfb-run >/dev/null || ! command -v xauth >/dev/null; then
+    say "installing Debian's firefox-esr, xvfb and xauth"
+    sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq firefox-esr xvfb xauth >/dev/null
+  fi
+  if ! command -v geckodriver >/dev/null; then
+    say "installing geckodriver 0.37 from crates.io (about two minutes once)"
+    cargo install geckodriver --version 0.37.0 --locked
   fi
 fi

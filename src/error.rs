@@ -71,7 +71,7 @@ pub enum Error {
     },
     /// Text that could not be read: CSV, JSON, a formula, G-code.
     Parse {
-        /// What was being read, e.g. "csv", "json", "a[1]" (a formula field).
+        /// What was being read, e.g. "csv", "json", `"a[1]"` (a formula field).
         source: String,
         /// 1-based line, where the text has lines.
         line: Option<usize>,
@@ -106,7 +106,7 @@ pub enum Error {
     },
     /// A formula whose value (or derivative) is not finite at a parameter of its range.
     NotFiniteAt {
-        /// The formula, e.g. "a[1]".
+        /// The formula, e.g. `"a[1]"`.
         what: String,
         /// Where, e.g. "u = 0.5".
         at: String,

@@ -29,6 +29,7 @@ pub mod formula;
 pub mod io;
 pub mod linalg;
 pub mod line;
+pub mod linear_complex;
 pub mod mesh;
 pub mod milling;
 pub mod ruled;

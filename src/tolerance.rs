@@ -45,6 +45,24 @@ pub const MAX_SAMPLES: usize = MAX_RULINGS;
 /// Most vertices of a mesh handed in for shading: the two endpoints of the most rulings.
 pub const MAX_MESH_VERTICES: usize = 2 * MAX_RULINGS;
 
+/// Focal geometry: a line is parabolic (one double focal point) when the discriminant of (F3)
+/// is within this fraction of b² + 4|ac|: exact data only; a grid of a parabolic congruence
+/// shows both other kinds, with nearly equal focal points.
+pub const FOCAL_PARABOLIC: f64 = 1e-10;
+
+/// Focal geometry: a displacement across the line shorter than this fraction of the line's
+/// derivatives counts as zero (every direction torsal there, as for a bundle of lines).
+pub const FOCAL_TORSAL_ZERO: f64 = 1e-10;
+
+/// Linear complexes: default tolerance of the root-mean-square residual, in the fit's frame
+/// (centred at the lines' midpoints, lengths divided by their spread), under which a complex
+/// counts as holding the lines.
+pub const COMPLEX_TOLERANCE: f64 = 1e-9;
+
+/// Linear complexes: the Klein form restricted to a three-dimensional null space is called
+/// degenerate (lines of a bundle or a field, not a regulus) when |det| is below this.
+pub const COMPLEX_REGULUS_DET: f64 = 1e-6;
+
 /// `|a − b| ≤ tol · max(1, |a|, |b|)`: relative for large numbers, absolute near zero.
 pub fn near(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol * 1f64.max(a.abs()).max(b.abs())

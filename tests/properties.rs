@@ -221,5 +221,60 @@ mod schemes {
                 same(&a.q().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(), &b.q());
             }
         }
+
+        #[test]
+        fn focal_geometry_moves_with_rigid_motions(grid in prop::collection::vec(vec3(), 16), m in motion()) {
+            use ruledlab::congruence::focal::focal_grid;
+            let p: Vec<DVec3> = (0..16).map(|k| DVec3::new((k / 4) as f64, (k % 4) as f64, 0.0) + 0.2 * grid[k]).collect();
+            let q: Vec<DVec3> = p.iter().zip(&grid).map(|(a, g)| *a + DVec3::new(0.3 * g.x, 0.3 * g.y, 1.0 + 0.1 * g.z)).collect();
+            let moved = |x: &[DVec3]| x.iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>();
+            let (a, b) = (focal_grid(4, 4, &p, &q), focal_grid(4, 4, &moved(&p), &moved(&q)));
+            // swapping p and q, too, keeps the focal points
+            let r = focal_grid(4, 4, &q, &p);
+            for ((f, g), h) in a.iter().zip(&b).zip(&r) {
+                let close = f.parameters[1] - f.parameters[0] < 1e-6 * f.parameters[1].abs().max(1.0);
+                if f.kind != g.kind && close {
+                    continue; // nearly parabolic: rounding may decide the kind
+                }
+                prop_assert_eq!(f.kind, g.kind);
+                prop_assert_eq!(f.middle.is_finite(), g.middle.is_finite());
+                if f.middle.is_finite() && f.middle.length() < 1e6 {
+                    assert_near!(m.transform_point3(f.middle), g.middle, 1e-7);
+                    assert_near!(f.middle, h.middle, 1e-7);
+                }
+                if f.kind == ruledlab::congruence::FocalKind::Hyperbolic && f.parameters.iter().all(|t| t.abs() < 1e4) && !close {
+                    for k in 0..2 {
+                        assert_near!(m.transform_point3(f.points[k]), g.points[k], 1e-7);
+                        assert_near!(f.parameters[k], g.parameters[k], 1e-7);
+                        assert_near!(f.torsal[k], g.torsal[k], 1e-6);
+                        assert_near!(f.points[k], h.points[1 - k], 1e-7);
+                    }
+                    assert_near!(f.normality, g.normality, 1e-7);
+                }
+            }
+        }
+
+        #[test]
+        fn linear_complexes_move_with_rigid_motions(lines in prop::collection::vec((vec3(), vec3()), 3..20), m in motion()) {
+            use ruledlab::linear_complex::fit;
+            let segments: Vec<Segment> = lines.iter().filter(|(_, d)| d.length() > 0.1).map(|&(a, d)| Segment::new(a, a + d)).collect();
+            prop_assume!(segments.len() >= 3);
+            let moved: Vec<Segment> = segments.iter().map(|s| Segment::new(m.transform_point3(s.a), m.transform_point3(s.b))).collect();
+            let (f, g) = (fit(&segments, None), fit(&moved, None));
+            prop_assert_eq!(f.nullity, g.nullity);
+            prop_assert_eq!(f.kind, g.kind);
+            assert_near!(f.residual, g.residual, 1e-9);
+            for k in 0..6 {
+                assert_near!(f.spectrum[k], g.spectrum[k], 1e-9);
+            }
+            // a unique best complex: its axis moves along, its pitch stays
+            if f.spectrum[1] - f.spectrum[0] > 1e-3 && f.pitch.is_finite() && f.pitch.abs() < 1e3 && f.axis_point.length() < 1e3 {
+                assert_near!(f.pitch, g.pitch, 1e-7);
+                let dir = m.transform_vector3(f.axis_direction);
+                assert_near!(dir.cross(g.axis_direction), DVec3::ZERO, 1e-7);
+                let on_axis = m.transform_point3(f.axis_point) - g.axis_point;
+                assert_near!(on_axis.cross(g.axis_direction), DVec3::ZERO, 1e-6);
+            }
+        }
     }
 }

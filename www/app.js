@@ -74,7 +74,7 @@ export async function startPage({ oneFile = false } = {}) {
   /** @type {Record<string, HTMLButtonElement>} */
   const exportButtons = {};
   for (const kind of ['svg', 'svgBw', 'tikz', 'png', 'png2', 'png4', 'obj', 'csv', 'json', 'invariants', 'invariantsCsv', 'plot']) {
-    exportButtons[kind] = el('button', { type: 'button' });
+    exportButtons[kind] = /** @type {HTMLButtonElement} */ (el('button', { type: 'button' }));
     exportButtons[kind].dataset.export = kind;
     exports.append(exportButtons[kind]);
   }
@@ -98,8 +98,8 @@ export async function startPage({ oneFile = false } = {}) {
     doc.title = `ruledlab · ${t(stage.scene?.title ?? 'app.subtitle').replace(/[_^]\{?([^}]*)\}?/g, '$1')}`;
     subtitle.textContent = t('app.subtitle');
     skip.textContent = t('app.skip');
-    pickerLabel.firstChild.textContent = `${t('app.scene')} `;
-    langLabel.firstChild.textContent = `${t('app.language')} `;
+    /** @type {Text} */ (pickerLabel.firstChild).textContent = `${t('app.scene')} `;
+    /** @type {Text} */ (langLabel.firstChild).textContent = `${t('app.language')} `;
     langPicker.value = lang;
     picker.replaceChildren(...SCENES.map((s) => new Option(t(s.title).replace(/[_^]\{?([^}]*)\}?/g, '$1'), s.id)));
     if (stage.scene) picker.value = stage.scene.id;

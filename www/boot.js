@@ -2,7 +2,7 @@
 // when the page's modules cannot load, instead of leaving a blank page. The page's module
 // removes the message when it starts.
 (function () {
-  var box = document.getElementById('boot');
+  const box = document.getElementById('boot');
   if (!box) return;
   var de = /^de\b/i.test(navigator.language || '');
   var text = {

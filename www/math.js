@@ -1,11 +1,21 @@
 // Small column-major 4×4 matrix and vector helpers (Float32Array, WebGL's layout).
 
+/** @typedef {ArrayLike<number>} Vec3  three numbers */
+/** @typedef {ArrayLike<number>} Mat4  sixteen numbers, column-major */
+
+/**
+ * @param {number} fovY vertical field of view, radians
+ * @param {number} aspect width / height
+ * @param {number} near
+ * @param {number} far
+ */
 export function perspective(fovY, aspect, near, far) {
   const f = 1 / Math.tan(fovY / 2);
   const nf = 1 / (near - far);
   return new Float32Array([f / aspect, 0, 0, 0, 0, f, 0, 0, 0, 0, (far + near) * nf, -1, 0, 0, 2 * far * near * nf, 0]);
 }
 
+/** @param {Vec3} eye @param {Vec3} target @param {Vec3} up */
 export function lookAt(eye, target, up) {
   const z = normalize(sub(eye, target));
   const x = normalize(cross(up, z));
@@ -16,6 +26,7 @@ export function lookAt(eye, target, up) {
   ]);
 }
 
+/** a · b @param {Mat4} a @param {Mat4} b */
 export function multiply(a, b) {
   const out = new Float32Array(16);
   for (let c = 0; c < 4; c++) {
@@ -28,15 +39,18 @@ export function multiply(a, b) {
   return out;
 }
 
-export const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
-export const add = (a, b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
-export const scale = (a, s) => [a[0] * s, a[1] * s, a[2] * s];
-export const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-export const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-export const length = (a) => Math.hypot(a[0], a[1], a[2]);
-export const normalize = (a) => scale(a, 1 / (length(a) || 1));
+export const sub = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+export const add = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
+export const scale = (/** @type {Vec3} */ a, /** @type {number} */ s) => [a[0] * s, a[1] * s, a[2] * s];
+export const dot = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+export const cross = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+export const length = (/** @type {Vec3} */ a) => Math.hypot(a[0], a[1], a[2]);
+export const normalize = (/** @type {Vec3} */ a) => scale(a, 1 / (length(a) || 1));
 
-/** Bounding box {min, max} of flat xyz data (NaN entries skipped). */
+/**
+ * Bounding box {min, max} of flat xyz data (NaN entries skipped).
+ * @param {...ArrayLike<number>} arrays
+ */
 export function bounds(...arrays) {
   const min = [Infinity, Infinity, Infinity];
   const max = [-Infinity, -Infinity, -Infinity];

@@ -48,7 +48,7 @@ export class Stage {
 
     this.root = el('div', { className: 'rl-stage' });
     this.view = el('div', { className: 'rl-view' });
-    this.canvas = el('canvas', { tabIndex: 0 });
+    this.canvas = /** @type {HTMLCanvasElement} */ (el('canvas', { tabIndex: 0 }));
     this.canvas.setAttribute('role', 'img');
     this.labels = el('div', { className: 'rl-labels' });
     this.labels.setAttribute('aria-hidden', 'true');

@@ -43,9 +43,12 @@ export const PALETTE = {
   paper: '#fbfaf7',
 };
 
-const line = (color, width, bw, extra = {}) => ({ kind: 'line', color, width, bw, ...extra });
-const point = (color, size, bw) => ({ kind: 'point', color, size, bw });
-const area = (color, back, alpha, bw) => ({ kind: 'area', color, back, alpha, bw });
+/** @returns {LineStyle} */
+const line = (/** @type {string} */ color, /** @type {number} */ width, /** @type {LineStyle['bw']} */ bw, /** @type {{alpha?: number, dash?: number[]}} */ extra = {}) => ({ kind: 'line', color, width, bw, ...extra });
+/** @returns {PointStyle} */
+const point = (/** @type {string} */ color, /** @type {number} */ size, /** @type {PointStyle['bw']} */ bw) => ({ kind: 'point', color, size, bw });
+/** @returns {AreaStyle} */
+const area = (/** @type {string} */ color, /** @type {string} */ back, /** @type {number} */ alpha, /** @type {AreaStyle['bw']} */ bw) => ({ kind: 'area', color, back, alpha, bw });
 
 /** @type {Record<string, Style>} */
 export const STYLES = {
@@ -90,17 +93,28 @@ export const STYLES = {
   tool: area('#6e6e6e', '#6e6e6e', 0.9, { gray: 0.55, back: 0.45 }),
   endpointStrip: area(PALETTE.orange, PALETTE.orange, 0.3, { gray: 0.9, back: 0.85 }),
   lineStrip: area(PALETTE.sky, PALETTE.sky, 0.35, { gray: 0.8, back: 0.75 }),
-  focal1: area(PALETTE.orange, PALETTE.orange, 0.6, { gray: 0.85, back: 0.75 }),
-  focal2: area(PALETTE.sky, PALETTE.sky, 0.6, { gray: 0.7, back: 0.6 }),
-  torsal: line(PALETTE.ink, 1.4, { gray: 0, width: 0.5 }),
+  focal1: area(PALETTE.blue, PALETTE.blue, 0.5, { gray: 0.7, back: 0.6 }),
+  focal2: area(PALETTE.grey, PALETTE.grey, 0.55, { gray: 0.88, back: 0.8 }),
+  torsal: line(PALETTE.maroon, 2.6, { gray: 0, width: 1.2 }),
+  focalHyperbolic: line(PALETTE.ink, 1.2, { gray: 0.3, width: 0.4 }, { alpha: 0.8 }),
+  focalElliptic: line(PALETTE.orange, 1.8, { gray: 0.4, width: 0.7, dash: [3, 2] }, { dash: [6, 4] }),
+  focalParabolic: line(PALETTE.vermillion, 1.8, { gray: 0.2, width: 0.7, dash: [1, 2] }, { dash: [2, 4] }),
 };
 
-/** "#rrggbb" → [r, g, b] in 0–1. */
+/**
+ * "#rrggbb" → [r, g, b] in 0–1.
+ * @param {string} hex
+ * @returns {number[]}
+ */
 export function rgb(hex) {
   return [1, 3, 5].map((k) => parseInt(hex.slice(k, k + 2), 16) / 255);
 }
 
-/** RGBA (0–1) of a style's main colour, alpha included. */
+/**
+ * RGBA (0–1) of a style's main colour, alpha included.
+ * @param {Style} style
+ * @returns {number[]}
+ */
 export function rgba(style) {
-  return [...rgb(style.color), style.kind === 'area' ? style.alpha : style.alpha ?? 1];
+  return [...rgb(style.color), style.kind === 'point' ? 1 : style.alpha ?? 1];
 }

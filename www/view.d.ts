@@ -61,6 +61,8 @@ export interface Layer {
   style: string;
   positions: Float32Array;
   indices?: Uint32Array;
+  /** mesh: 3 per vertex (the core's meshNormalsF32 or focalSheetF32); shaded smoothly. */
+  normals?: Float32Array;
   closed?: boolean;
   transform?: Float32Array | Float64Array;
 }

@@ -208,6 +208,7 @@ export class Viewer {
         visible: cw > 0,
       };
     };
+    /** @type {Array<Array<{x: number, y: number, visible: boolean}>>} */
     const clear = [];
     const keep = this.built?.keepClear;
     for (let i = 0; keep && i + 5 < keep.length; i += 6) clear.push([project(keep, i), project(keep, i + 3)]);

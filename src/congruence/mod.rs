@@ -1,9 +1,11 @@
 //! Discrete line congruences and their refinement (Section 5).
 
 pub mod butterfly;
+pub mod focal;
 pub mod grid;
 pub mod variational;
 
+pub use focal::{Focal, FocalKind};
 pub use grid::LineCongruence;
 
 use crate::error::{Error, Result};

@@ -33,7 +33,7 @@ pub struct Formula {
 }
 
 impl Formula {
-    /// Parses `text`, called `source` in messages (e.g. "a[1]"), over `variables` (their
+    /// Parses `text`, called `source` in messages (e.g. `"a[1]"`), over `variables` (their
     /// order is the order of values given to [`Formula::eval`]).
     pub fn parse(source: &str, text: &str, variables: &[&str]) -> Result<Self> {
         check::check(source, text, variables)?;

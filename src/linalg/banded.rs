@@ -5,7 +5,7 @@
 
 use crate::error::{Error, Result};
 
-/// A symmetric n × n matrix with A[i][j] = 0 for |i − j| > p, lower band stored by rows.
+/// A symmetric n × n matrix with `A[i][j] = 0` for |i − j| > p, lower band stored by rows.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SymmetricBanded {
     n: usize,
@@ -30,7 +30,7 @@ impl SymmetricBanded {
         i * (self.p + 1) + self.p - (i - j)
     }
 
-    /// A[i][j] += v (and A[j][i], by symmetry). Panics outside the band (a bug in assembly).
+    /// `A[i][j] += v` (and `A[j][i]`, by symmetry). Panics outside the band (a bug in assembly).
     pub fn add(&mut self, i: usize, j: usize, v: f64) {
         let (i, j) = if i >= j { (i, j) } else { (j, i) };
         assert!(i - j <= self.p, "entry ({i}, {j}) outside half-bandwidth {}", self.p);
@@ -38,7 +38,7 @@ impl SymmetricBanded {
         self.band[k] += v;
     }
 
-    /// A[i][j].
+    /// `A[i][j]`.
     pub fn get(&self, i: usize, j: usize) -> f64 {
         let (i, j) = if i >= j { (i, j) } else { (j, i) };
         if i - j > self.p {

@@ -34,7 +34,7 @@ pub struct Series {
     pub expected_order: f64,
     /// Error at each step H.
     pub errors: Vec<f64>,
-    /// log₂(errors[k]/errors[k+1]), one fewer than the errors.
+    /// `log₂(errors[k]/errors[k+1])`, one fewer than the errors.
     pub orders: Vec<f64>,
     /// Least-squares slope of log error against log H.
     pub fitted_order: f64,

@@ -265,6 +265,11 @@ impl AnalyticCongruence {
     pub(crate) fn from_core(inner: examples::AnalyticCongruence) -> Self {
         AnalyticCongruence { inner, _live: Live::new() }
     }
+
+    /// The core congruence.
+    pub fn core(&self) -> &examples::AnalyticCongruence {
+        &self.inner
+    }
 }
 
 #[wasm_bindgen]

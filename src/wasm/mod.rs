@@ -9,6 +9,7 @@ mod args;
 mod buffers;
 mod congruence;
 mod error;
+mod focal;
 mod formula;
 mod io;
 mod live;
@@ -17,6 +18,7 @@ mod surface;
 mod toolpath;
 
 pub use congruence::{AnalyticCongruence, LineCongruence};
+pub use focal::linear_complex_of;
 pub use io::import_segments;
 pub use live::live_objects;
 pub use subdivide::subdivide_polygon;

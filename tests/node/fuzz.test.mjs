@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab from './load.mjs';
 
-const { RuledSurface, AnalyticSurface, LineCongruence, AnalyticCongruence, ToolPath, subdividePolygon, importSegments, meshNormalsF32 } = ruledlab;
+const { RuledSurface, AnalyticSurface, LineCongruence, AnalyticCongruence, ToolPath, subdividePolygon, importSegments, meshNormalsF32, linearComplex } = ruledlab;
 
 let seed = Number(process.env.FUZZ_SEED ?? 12345);
 const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
@@ -149,6 +149,13 @@ const CALLS = [
   (f) => meshNormalsF32(pick([value(), f.surface.segmentsF32()]), pick([value(), new Uint32Array([0, 1, 2]), [0, 1, 9]])),
   (f) => f.surface.recut(value()),
   (f) => f.hyp.sample(value(), pick([value(), options()])),
+  (f) => f.congruence.focal(),
+  (f) => f.congruence.focalSheetF32(pick([1, 2, ...SMALL, value()])),
+  (f) => f.congruence.torsalStrokesF32(pick([undefined, ...NUMBERS, value()])),
+  (f) => f.congruence.linearComplex(pick([undefined, value(), options(), { tolerance: pick(NUMBERS) }])),
+  (f) => f.surface.linearComplex(pick([undefined, value(), options(), { tolerance: pick(NUMBERS) }])),
+  (f) => linearComplex(pick([value(), f.surface.segments(), [0, 0, 0, 1, 0, 0]]), pick([undefined, value(), options()])),
+  (f) => f.analyticCongruence.focal(pick([undefined, ...SMALL, value()]), pick([undefined, ...SMALL, value()])),
 ];
 
 test("100 000 random and adversarial calls: only Errors, never a trap; the module keeps working", () => {

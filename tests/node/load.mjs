@@ -6,7 +6,10 @@ ruledlab.initSync({ module: readFileSync(new URL('../../pkg/ruledlab_bg.wasm', i
 
 export default ruledlab;
 
-/** `n` rulings of a named analytic surface (default ranges), the surface object freed. */
+/**
+ * `n` rulings of a named analytic surface (default ranges), the surface object freed.
+ * @param {string} name @param {number} n @param {Parameters<ruledlab.AnalyticSurface['sample']>[1]} [options]
+ */
 export function sampled(name, n, options) {
   const analytic = ruledlab.AnalyticSurface.byName(name);
   const surface = analytic.sample(n, options);

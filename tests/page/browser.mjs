@@ -7,6 +7,9 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { decodePng } from './png.mjs';
 
+/** @typedef {import('playwright-core').Page} Page */
+/** @typedef {import('playwright-core').BrowserContext} BrowserContext */
+
 export const ARTIFACTS = new URL('../../test-artifacts/', import.meta.url).pathname;
 
 /**
@@ -27,8 +30,12 @@ export async function launch(options = {}) {
   });
 }
 
-/** Records console errors, page errors, failed requests and HTTP errors of `page`. */
+/**
+ * Records console errors, page errors, failed requests and HTTP errors of `page`.
+ * @param {Page} page
+ */
 export function watch(page) {
+  /** @type {string[]} */
   const problems = [];
   page.on('console', (m) => m.type() === 'error' && problems.push(`console error: ${m.text()}`));
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
@@ -42,36 +49,57 @@ export function watch(page) {
  * hidden for it, so a canvas that drew nothing really looks empty. The whole page, overlays
  * and text included, is saved as `<name>.png` for people to look at.
  */
+/**
+ * @param {Page} page
+ * @param {string} name
+ */
 export async function shoot(page, name) {
   mkdirSync(ARTIFACTS, { recursive: true });
   writeFileSync(join(ARTIFACTS, `${name}.png`), await page.screenshot());
   await page.evaluate(() => document.querySelectorAll('.rl-view > :not(canvas)').forEach((e) => e.classList.add('rl-test-hidden')));
-  await page.evaluate(() => document.querySelectorAll('.rl-test-hidden').forEach((e) => (e.style.visibility = 'hidden')));
+  await page.evaluate(() => document.querySelectorAll('.rl-test-hidden').forEach((e) => (/** @type {HTMLElement} */ (e).style.visibility = 'hidden')));
   const png = await page.locator('.rl-view canvas').first().screenshot();
-  await page.evaluate(() => document.querySelectorAll('.rl-test-hidden').forEach((e) => (e.style.visibility = '', e.classList.remove('rl-test-hidden'))));
+  await page.evaluate(() => document.querySelectorAll('.rl-test-hidden').forEach((e) => (/** @type {HTMLElement} */ (e).style.visibility = '', e.classList.remove('rl-test-hidden'))));
   return decodePng(png);
 }
 
-/** Waits until the page's stage has shown its final picture (worker results included). */
+/**
+ * Waits until the page's stage has shown its final picture (worker results included).
+ * @param {Page} page
+ */
 export async function ready(page, timeout = 30000) {
-  await page.waitForFunction(() => document.querySelector('.rl-stage')?.dataset.ready === '1', null, { timeout });
+  await page.waitForFunction(() => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1', null, { timeout });
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 }
 
-/** The control of parameter `key` in the page's panel. */
+/**
+ * The control of parameter `key` in the page's panel.
+ * @param {Page} page
+ * @param {string} key
+ */
 export function control(page, key) {
   return page.locator(`.rl-controls [name="${key}"]`);
 }
 
-/** Sets a slider (or text field) of the page to `value` and waits for the new picture. */
+/**
+ * Sets a slider (or text field) of the page to `value` and waits for the new picture.
+ * @param {Page} page
+ * @param {string} key
+ * @param {string | number | boolean} value   a boolean ticks a checkbox; a select takes its option
+ */
 export async function setControl(page, key, value) {
   const frames = await page.evaluate(() => Number(document.body.dataset.frames ?? 0));
-  await control(page, key).fill(String(value));
-  await control(page, key).dispatchEvent('change');
+  const input = control(page, key);
+  const tag = await input.evaluate((e) => e.tagName);
+  if (typeof value === 'boolean') await input.setChecked(value);
+  else if (tag === 'SELECT') await input.selectOption(String(value));
+  else await input.fill(String(value));
+  await input.dispatchEvent('change');
   await framesAfter(page, frames);
 }
 
 /** How many animation frames the page runs in `ms` milliseconds (0–1 when its main thread is blocked). */
+/** @param {Page} page */
 export function animationFrames(page, ms = 500) {
   return page.evaluate(
     (span) => new Promise((resolve) => {
@@ -84,7 +112,10 @@ export function animationFrames(page, ms = 500) {
   );
 }
 
-/** Waits until the viewer has drawn more than `after` frames. */
+/**
+ * Waits until the viewer has drawn more than `after` frames.
+ * @param {Page} page
+ */
 export async function framesAfter(page, after = 0) {
   await page.waitForFunction((n) => Number(document.body.dataset.frames ?? 0) > n, after, { timeout: 15000 });
   // one more animation frame so the compositor has the new picture
@@ -99,7 +130,12 @@ export async function framesAfter(page, after = 0) {
  * `wait: false`.
  */
 export function pageSession({ headers = {} } = {}) {
-  const session = { url: null, browser: null };
+  /**
+   * @type {{url: string, browser: BrowserContext | null,
+   *   open: (path?: string, options?: {wait?: boolean}) => Promise<{page: Page, problems: string[], requests: string[], frames: number}>}}
+   */
+  const session = { url: '', browser: null, open: async () => { throw new Error('the session has not started'); } };
+  /** @type {import('node:http').Server | undefined} */
   let server;
   before(async () => {
     ({ server, url: session.url } = await startServer({ headers }));
@@ -110,8 +146,10 @@ export function pageSession({ headers = {} } = {}) {
     server?.close();
   });
   session.open = async (path = '', { wait = true } = {}) => {
+    if (!session.browser) throw new Error('the session has not started');
     const page = await session.browser.newPage();
     const problems = watch(page);
+    /** @type {string[]} */
     const requests = [];
     page.on('request', (r) => requests.push(r.url()));
     await page.goto(session.url + path);

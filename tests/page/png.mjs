@@ -2,12 +2,14 @@
 // tests can look at real pixels without extra dependencies.
 import { inflateSync } from 'node:zlib';
 
-/** @returns {{width: number, height: number, channels: number, data: Uint8Array}} */
+/** @typedef {{width: number, height: number, channels: number, data: Uint8Array}} Image */
+
+/** @param {Buffer} buffer @returns {Image} */
 export function decodePng(buffer) {
   const sig = '89504e470d0a1a0a';
   if (buffer.subarray(0, 8).toString('hex') !== sig) throw new Error('not a PNG');
   let pos = 8;
-  let width, height, channels;
+  let width = 0, height = 0, channels = 0;
   const idat = [];
   while (pos < buffer.length) {
     const len = buffer.readUInt32BE(pos);
@@ -42,13 +44,17 @@ export function decodePng(buffer) {
   return { width, height, channels, data };
 }
 
+/** @param {number} a @param {number} b @param {number} c */
 function paeth(a, b, c) {
   const p = a + b - c;
   const pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
   return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
 }
 
-/** Number of pixels whose colour differs from `rgb` by more than `tolerance` in any channel. */
+/**
+ * Number of pixels whose colour differs from `rgb` by more than `tolerance` in any channel.
+ * @param {Image} image @param {ArrayLike<number>} rgb @param {number} [tolerance]
+ */
 export function countDifferent(image, rgb, tolerance = 12) {
   const { data, channels } = image;
   let n = 0;
@@ -58,7 +64,10 @@ export function countDifferent(image, rgb, tolerance = 12) {
   return n;
 }
 
-/** Number of pixels that differ between two images of the same size. */
+/**
+ * Number of pixels that differ between two images of the same size.
+ * @param {Image} a @param {Image} b @param {number} [tolerance]
+ */
 export function countChanged(a, b, tolerance = 12) {
   if (a.width !== b.width || a.height !== b.height) return a.width * a.height;
   let n = 0;

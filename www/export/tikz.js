@@ -36,7 +36,7 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, wi
     const look = /** @type {any} */ (paint(p.style, bw));
     if (p.kind === 'segment') {
       const opts = [colour(look.color), `line width=${n(look.width * 0.75)}pt`];
-      if (look.dash) opts.push(`dash pattern=${look.dash.map((d, k) => `${k % 2 ? 'off' : 'on'} ${n(d * 0.75)}pt`).join(' ')}`);
+      if (look.dash) opts.push(`dash pattern=${look.dash.map((/** @type {number} */ d, /** @type {number} */ k) => `${k % 2 ? 'off' : 'on'} ${n(d * 0.75)}pt`).join(' ')}`);
       if (look.opacity < 1) opts.push(`draw opacity=${n(look.opacity)}`);
       body.push(`\\draw[${opts.join(', ')}] ${at(p.points[0], p.points[1])} -- ${at(p.points[2], p.points[3])};`);
     } else if (p.kind === 'dot') {
@@ -56,7 +56,7 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, wi
       const y = 14 + 18 * k;
       const look = /** @type {any} */ (paint(entry.style, bw));
       if ('width' in look) {
-        const dash = look.dash ? `, dash pattern=${look.dash.map((d, i) => `${i % 2 ? 'off' : 'on'} ${n(d * 0.75)}pt`).join(' ')}` : '';
+        const dash = look.dash ? `, dash pattern=${look.dash.map((/** @type {number} */ d, /** @type {number} */ i) => `${i % 2 ? 'off' : 'on'} ${n(d * 0.75)}pt`).join(' ')}` : '';
         body.push(`\\draw[${colour(look.color)}, line width=${n(Math.min(Math.max(look.width, 1.2), 5) * 0.75)}pt${dash}] ${at(18, y)} -- ${at(46, y)};`);
       } else if ('radius' in look) {
         body.push(`\\fill[${colour(look.color)}] ${at(32, y)} circle (${n(Math.min(look.radius, 5) * 0.75)}pt);`);

@@ -9,7 +9,7 @@
  * @returns {WebGLProgram}
  */
 export function createProgram(gl, vertexSource, fragmentSource) {
-  const program = gl.createProgram();
+  const program = /** @type {WebGLProgram} */ (gl.createProgram());
   gl.attachShader(program, compileShader(gl, gl.VERTEX_SHADER, vertexSource));
   gl.attachShader(program, compileShader(gl, gl.FRAGMENT_SHADER, fragmentSource));
   gl.linkProgram(program);
@@ -25,7 +25,8 @@ export function createProgram(gl, vertexSource, fragmentSource) {
  * @param {string} source
  */
 export function compileShader(gl, type, source) {
-  const shader = gl.createShader(type);
+  // null only when the context is lost; then every call below is a no-op (WebGL's rule)
+  const shader = /** @type {WebGLShader} */ (gl.createShader(type));
   gl.shaderSource(shader, source);
   gl.compileShader(shader);
   if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS) && !gl.isContextLost()) {
@@ -36,7 +37,10 @@ export function compileShader(gl, type, source) {
   return shader;
 }
 
-/** The source with line numbers, the lines named in an "ERROR: 0:LINE:" log marked. */
+/**
+ * The source with line numbers, the lines named in an "ERROR: 0:LINE:" log marked.
+ * @param {string} source
+ */
 export function numberedLines(source, log = '') {
   const bad = new Set([...log.matchAll(/ERROR: \d+:(\d+)/g)].map((m) => Number(m[1])));
   return source
@@ -45,30 +49,45 @@ export function numberedLines(source, log = '') {
     .join('\n');
 }
 
-/** Uniform locations of a program by name. */
+/**
+ * Uniform locations of a program by name.
+ * @param {WebGL2RenderingContext} gl
+ * @param {WebGLProgram} program
+ * @param {string[]} names
+ * @returns {Record<string, WebGLUniformLocation | null>}
+ */
 export function uniforms(gl, program, names) {
   return Object.fromEntries(names.map((n) => [n, gl.getUniformLocation(program, n)]));
 }
 
+/** @type {WeakMap<WebGL2RenderingContext, Map<string, {program: WebGLProgram, u: Record<string, WebGLUniformLocation | null>}>>} */
 const cache = new WeakMap();
 
 /**
  * A program compiled once per context and shared by every batch that draws with it.
  * @param {WebGL2RenderingContext} gl
  * @param {string} key a name for the shader pair
- * @returns {{program: WebGLProgram, u: Object<string, WebGLUniformLocation>}}
+ * @param {string} vertexSource
+ * @param {string} fragmentSource
+ * @param {string[]} uniformNames
+ * @returns {{program: WebGLProgram, u: Record<string, WebGLUniformLocation | null>}}
  */
 export function cachedProgram(gl, key, vertexSource, fragmentSource, uniformNames) {
   let programs = cache.get(gl);
   if (!programs) cache.set(gl, (programs = new Map()));
-  if (!programs.has(key)) {
+  let entry = programs.get(key);
+  if (!entry) {
     const program = createProgram(gl, vertexSource, fragmentSource);
-    programs.set(key, { program, u: uniforms(gl, program, uniformNames) });
+    entry = { program, u: uniforms(gl, program, uniformNames) };
+    programs.set(key, entry);
   }
-  return programs.get(key);
+  return entry;
 }
 
-/** Forgets every cached program of `gl`: after a context loss all GL objects are invalid. */
+/**
+ * Forgets every cached program of `gl`: after a context loss all GL objects are invalid.
+ * @param {WebGL2RenderingContext} gl
+ */
 export function forgetPrograms(gl) {
   cache.delete(gl);
 }

@@ -199,6 +199,36 @@ bei den eingebauten Flächen, und jedes Werkzeug der Abschnitte 2–4 arbeitet a
 Kehlpolygon, die Konvergenzordnungen, die Verbiegung, die Näherungsabwicklung und die Unterteilung.
 Die Formeln sind Teil des Links: Teilen Sie ihn als Übungsaufgabe.</p>`,
 
+  'focal.text': `
+<h2>Brennflächen einer Geradenkongruenz</h2>
+<p class="rl-beyond"><strong>Über das Paper hinaus.</strong> Das Paper verfeinert Kongruenzen
+(Abschnitt 5), berechnet aber nicht ihre Geometrie. Längs einer Geraden ${mr('p + t e')} der
+Kongruenz ${mr('p ( u , v ) + t e ( u , v )')}, mit ${m('<mi>e</mi>')} der Länge 1, kommen die
+Nachbargeraden ihr in den <em>Brennpunkten</em> am nächsten: den Nullstellen von</p>
+${display(`<mo>det</mo><mo>(</mo>${sub('p', 'u')}<mo>+</mo><mi>t</mi>${sub('e', 'u')}<mo>,</mo>${sub('p', 'v')}<mo>+</mo><mi>t</mi>${sub('e', 'v')}<mo>,</mo><mi>e</mi><mo>)</mo><mo>=</mo><mn>0</mn>`, 'F1')}
+<p>Zwei reelle Nullstellen machen die Gerade <em>hyperbolisch</em> (durchgezogen), keine
+<em>elliptisch</em> (gestrichelt), eine doppelte <em>parabolisch</em>. Bewegt sich die Gerade,
+überstreichen ihre Brennpunkte die beiden <em>Brennflächen</em> (schattiert, wo reell). Längs einer
+<em>Torsalrichtung</em> ${mr('( du : dv )')} bilden die Geraden einen abwickelbaren Streifen durch
+einen Brennpunkt,</p>
+${display(`<mo>det</mo><mo>(</mo>${sub('p', 'u')}<mi>du</mi><mo>+</mo>${sub('p', 'v')}<mi>dv</mi><mo>,</mo><mi>e</mi><mo>,</mo>${sub('e', 'u')}<mi>du</mi><mo>+</mo>${sub('e', 'v')}<mi>dv</mi><mo>)</mo><mo>=</mo><mn>0</mn>`, 'F2')}
+<p>(Striche auf der Leitfläche ${m(sub('d', '1'))}). Die <em>Normalität</em> ist |cos| des Winkels
+der beiden Brennebenen: 0 für die Normalen einer Fläche, deren Brennpunkte die
+Hauptkrümmungsmittelpunkte sind — probieren Sie das Ellipsoid. Ein Feld von Werkzeugachsen beim
+5-Achs-Fräsen ist eine Kongruenz: wo ihre Geraden elliptisch werden oder eine Brennfläche dem
+Werkstück nahe kommt, schneiden sich die Achsen beinahe.</p>
+<p>ruledlab berechnet all das allein aus den Geraden: aus ihren Plücker-Koordinaten, über das Gitter
+differenziert (zentral im Inneren, über drei Geraden am Rand). Das Ergebnis hängt nicht davon ab,
+wo die Punkte p und q auf ihren Geraden liegen, bewegt sich exakt mit Bewegungen mit und
+konvergiert von zweiter Ordnung, auch am Rand (README, „Focal geometry“). Die Anzeige passt
+außerdem den <em>linearen Komplex</em>
+${m(`<mi>c</mi><mo>·</mo><mi>m</mi><mo>+</mo><mover><mi>c</mi><mo>‾</mo></mover><mo>·</mo><mi>d</mi><mo>=</mo><mn>0</mn>`)}
+an, der die Geraden am besten enthält: die Treffgeraden zweier windschiefer Geraden liegen in
+zweien (eine lineare Kongruenz).</p>
+<p class="rl-paper-data">Daten: die Kongruenz von Beispiel 5 stammt aus dem Paper; die beiden
+Kongruenzen von Beispiel 4 (das Paper nennt für sie keine Daten), das Ellipsoid (Halbachsen 1,6,
+1,2, 0,8), die zwei windschiefen Geraden und die elliptische Kongruenz wählt ruledlab.</p>`,
+
   'formulaCongruence.text': `
 <h2>Ihre eigene Geradenkongruenz</h2>
 <p>Tippen Sie einen Punkt ${mr('p ( u , v )')} der Leitfläche ${m(sub('d', '1'))} und die Richtung

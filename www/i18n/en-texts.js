@@ -191,6 +191,32 @@ exact as for the built-in surfaces, and every tool of Sections 2–4 works on yo
 striction polygon, the convergence orders, bending, the approximate development and subdivision.
 The formulas are part of the link: share it as an exercise.</p>`,
 
+  'focal.text': `
+<h2>Focal surfaces of a line congruence</h2>
+<p class="rl-beyond"><strong>Beyond the paper.</strong> The paper refines congruences (Section 5)
+but does not compute their geometry. Along a line ${mr('p + t e')} of a congruence
+${mr('p ( u , v ) + t e ( u , v )')}, with ${m('<mi>e</mi>')} of unit length, the neighbouring lines
+come closest to meeting it at the <em>focal points</em>: the roots of</p>
+${display(`<mo>det</mo><mo>(</mo>${sub('p', 'u')}<mo>+</mo><mi>t</mi>${sub('e', 'u')}<mo>,</mo>${sub('p', 'v')}<mo>+</mo><mi>t</mi>${sub('e', 'v')}<mo>,</mo><mi>e</mi><mo>)</mo><mo>=</mo><mn>0</mn>`, 'F1')}
+<p>Two real roots make the line <em>hyperbolic</em> (solid), none <em>elliptic</em> (dashed), a double
+one <em>parabolic</em>. As the line moves, its two focal points sweep the two <em>focal surfaces</em>
+(shaded where real). Along a <em>torsal direction</em> ${mr('( du : dv )')} the lines form a
+developable strip through one focal point,</p>
+${display(`<mo>det</mo><mo>(</mo>${sub('p', 'u')}<mi>du</mi><mo>+</mo>${sub('p', 'v')}<mi>dv</mi><mo>,</mo><mi>e</mi><mo>,</mo>${sub('e', 'u')}<mi>du</mi><mo>+</mo>${sub('e', 'v')}<mi>dv</mi><mo>)</mo><mo>=</mo><mn>0</mn>`, 'F2')}
+<p>(strokes on the director surface ${m(sub('d', '1'))}). The <em>normality</em> is |cos| of the angle
+between the two focal planes: 0 for the normals of a surface, whose focal points are the centres
+of principal curvature — try the ellipsoid. A 5-axis tool-axis field is a congruence: where its
+lines turn elliptic or a focal surface comes close to the part, the axes nearly meet.</p>
+<p>ruledlab computes all of this from the lines alone: their Plücker coordinates, differenced
+over the grid (central inside, over three lines at the edge). The result does not depend on where
+the points p and q sit on their lines, moves exactly with rigid motions, and converges at second
+order, at the boundary too (README, "Focal geometry"). The readout also fits the
+<em>linear complex</em> ${m(`<mi>c</mi><mo>·</mo><mi>m</mi><mo>+</mo><mover><mi>c</mi><mo>‾</mo></mover><mo>·</mo><mi>d</mi><mo>=</mo><mn>0</mn>`)}
+that holds the lines best: the lines meeting two skew lines lie in two (a linear congruence).</p>
+<p class="rl-paper-data">Data: Example 5's congruence is the paper's; Example 4's two congruences
+(the paper gives no data for them), the ellipsoid (semi-axes 1.6, 1.2, 0.8), the two skew lines
+and the elliptic congruence are ruledlab's choices.</p>`,
+
   'formulaCongruence.text': `
 <h2>Your own line congruence</h2>
 <p>Type a point ${mr('p ( u , v )')} of the director surface ${m(sub('d', '1'))} and the line

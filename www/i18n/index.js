@@ -17,7 +17,7 @@ export const LANGUAGE_CODES = Object.keys(LANGUAGES);
  * @returns {string}
  */
 export function pickLanguage(wanted) {
-  const offered = (code) => {
+  const offered = (/** @type {string | null | undefined} */ code) => {
     const base = String(code ?? '').toLowerCase().split('-')[0];
     return LANGUAGE_CODES.includes(base) ? base : null;
   };
@@ -63,19 +63,19 @@ export function translator(lang) {
   };
   /** @param {string} key @param {Record<string, string | number>} [vars] */
   const t = (key, vars) => {
-    const text = table[key] ?? en[key] ?? key;
+    const text = table[key] ?? /** @type {Record<string, string>} */ (en)[key] ?? key;
     if (!vars) return text;
     // {n:rule:rules}: the number and the word in the singular or the plural
     return text
       .replace(/\{(\w+):([^:}]*):([^}]*)\}/g, (m, name, one, many) => (name in vars ? `${format(vars[name])} ${vars[name] === 1 ? one : many}` : m))
       .replace(/\{(\w+)\}/g, (m, name) => (name in vars ? (typeof vars[name] === 'number' ? format(vars[name]) : String(vars[name])) : m));
   };
-  return { lang, t, format, has: (key) => key in table };
+  return { lang, t, format, has: (/** @type {string} */ key) => key in table };
 }
 
 const SUPERSCRIPT = { '-': '⁻', 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹' };
 
-/** 12 → "¹²", −3 → "⁻³". */
+/** 12 → "¹²", −3 → "⁻³". @param {number} n */
 export function superscript(n) {
   return String(n).replace(/./g, (c) => SUPERSCRIPT[/** @type {keyof typeof SUPERSCRIPT} */ (c)] ?? c);
 }

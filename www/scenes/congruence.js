@@ -7,6 +7,7 @@ import { gridIndices } from '../gl/mesh.js';
 import { congruenceOptions } from './common.js';
 
 /** The schemes: menu value → subdivide options. */
+/** @type {Record<string, (steps: number) => import('../../pkg/ruledlab.js').CongruenceSubdivideOptions>} */
 const SCHEMES = {
   paper: (/** @type {number} */ steps) => ({ scheme: 'variational', variant: 'paper', K: 6, steps }),
   'two-stage': (/** @type {number} */ steps) => ({ scheme: 'variational', variant: 'two-stage', K: 6, steps }),

@@ -25,7 +25,9 @@ export const scene = defineScene({
   ],
   create(p, { t }) {
     const steps = Number(p.steps), closed = !!p.closed;
-    const options = (/** @type {number} */ k) => ({ scheme: p.scheme, steps: k, closed, ...(p.scheme === 'four-point' ? { w: Number(p.w) } : p.scheme === 'bspline' ? { degree: 3 } : {}) });
+    const scheme = /** @type {import('../../pkg/ruledlab.js').SubdivideOptions['scheme']} */ (p.scheme);
+    /** @returns {import('../../pkg/ruledlab.js').SubdivideOptions} */
+    const options = (/** @type {number} */ k) => ({ scheme, steps: k, closed, ...(scheme === 'four-point' ? { w: Number(p.w) } : scheme === 'bspline' ? { degree: 3 } : {}) });
     const levels = [];
     for (let k = p.levels ? 1 : steps; k <= steps; k++) if (k > 0) levels.push(subdividePolygon(POLYGON, options(k)));
     const final = levels.at(-1) ?? POLYGON;

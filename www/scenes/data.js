@@ -3,7 +3,10 @@ import { LineCongruence, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { stripIndices, gridIndices } from '../gl/mesh.js';
 
-/** What the scene shows before anything is imported: five rulings of a small twisted strip. */
+/**
+ * What the scene shows before anything is imported: five rulings of a small twisted strip.
+ * @type {import('../scene.js').ImportedData}
+ */
 export const EXAMPLE = { segments: new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 0.5, 0.7, 0.7, 0.5, 0, 0, 1, 0, 1, 1, 0, 0, 1.5, -0.7, 0.7, 1.5, 0, 0, 2, -1, 0, 2]) };
 
 export const scene = defineScene({

@@ -3,16 +3,18 @@
 import { AnalyticCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
 import { congruenceFigure, SCHEME_PARAMS, LEGEND } from './congruence.js';
+import { focalFigure } from './focal.js';
 
 /** Congruences as formulas: p, e, u and v ranges, grid, a, b, c. */
 export const PRESETS = {
   example5: { p: ['u', 'v', 'sin(2*u + 1.5*v)/2'], e: ['u', 'v', 'sin(u) + 1.3*cos(v)'], u: ['-1.1', '1.1'], v: ['-1.1', '1.1'], grid: [8, 7], abc: [1, 1, 1] },
   sphere: { p: ['cos(v)*cos(u)', 'cos(v)*sin(u)', 'sin(v)'], e: ['cos(v)*cos(u) + 0.3*sin(2*v)', 'cos(v)*sin(u) + 0.3*cos(3*u)', 'sin(v) + 0.3*u*v'], u: ['-0.8', '0.8'], v: ['-0.6', '0.6'], grid: [6, 6], abc: [1, 1, 1] },
   'hyperbolic-paraboloid': { p: ['u', 'v', 'u*v'], e: ['-v + 0.3*cos(2*v)', '-u + 0.3*sin(u)', '1'], u: ['-1', '1'], v: ['-1', '1'], grid: [6, 6], abc: [1, 1, 1] },
-  'ellipsoid-normals': { p: ['a*cos(v)*cos(u)', 'b*cos(v)*sin(u)', 'c*sin(v)'], e: ['cos(v)*cos(u)/a', 'cos(v)*sin(u)/b', 'sin(v)/c'], u: ['-1', '1'], v: ['-0.7', '0.7'], grid: [8, 8], abc: [1.6, 1.2, 0.8] },
+  'ellipsoid-normals': { p: ['a*cos(v)*cos(u)', 'b*cos(v)*sin(u)', 'c*sin(v)'], e: ['-cos(v)*cos(u)/a', '-cos(v)*sin(u)/b', '-sin(v)/c'], u: ['-1', '1'], v: ['-0.7', '0.7'], grid: [8, 8], abc: [1.6, 1.2, 0.8] },
   'two-lines': { p: ['u', '0', '-1'], e: ['v - u', 'a*v', '2'], u: ['-1', '1'], v: ['-1', '1'], grid: [7, 7], abc: [1, 1, 1] },
 };
 
+/** @returns {import('../scene.js').Params} */
 function presetParams(/** @type {string} */ name) {
   const c = PRESETS[/** @type {keyof typeof PRESETS} */ (name)];
   if (!c) return {};
@@ -39,8 +41,14 @@ export const scene = defineScene({
     { key: 'b', label: 'formula.param.b', type: 'range', min: -3, max: 3, step: 0.01, value: 1, exact: true, play: true },
     { key: 'c', label: 'formula.param.c', type: 'range', min: -3, max: 3, step: 0.01, value: 1, exact: true, play: true },
     ...SCHEME_PARAMS,
+    { key: 'focal', label: 'formulaCongruence.param.focal', type: 'checkbox', value: false },
   ],
-  legend: LEGEND,
+  legend: [
+    ...LEGEND,
+    { style: 'focal1', label: 'focal.legend.focal1', when: (p) => !!p.focal },
+    { style: 'focal2', label: 'focal.legend.focal2', when: (p) => !!p.focal },
+    { style: 'torsal', label: 'focal.legend.torsal', when: (p) => !!p.focal },
+  ],
   fieldOf: (option) => FIELDS[option] ?? null,
   create(p, ctx) {
     return scoped((own) => {
@@ -55,7 +63,15 @@ export const scene = defineScene({
           parameters: { a: Number(p.a), b: Number(p.b), c: Number(p.c) },
         }),
       );
-      return congruenceFigure(own, analytic, /** @type {any} */ (p), ctx, 'formula');
+      const built = congruenceFigure(own, analytic, /** @type {any} */ (p), ctx, 'formula');
+      if (p.focal) {
+        // beyond the paper: the focal sheets and torsal directions of the given grid (scene "Focal surfaces")
+        const focal = focalFigure(own, own(analytic.grid()), { sheets: true, torsal: true }, ctx);
+        built.layers.push(...focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'));
+        built.readouts?.push(...focal.readouts);
+        built.description = `${built.description} ${focal.sentence}`;
+      }
+      return built;
     });
   },
 });

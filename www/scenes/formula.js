@@ -24,6 +24,7 @@ export const PRESETS = {
 };
 
 /** The parameters a preset sets. */
+/** @returns {import('../scene.js').Params} */
 function presetParams(/** @type {string} */ name) {
   const p = PRESETS[/** @type {keyof typeof PRESETS} */ (name)];
   if (!p) return {};
@@ -56,7 +57,9 @@ const formula = (/** @type {string} */ key, /** @type {string} */ value) => ({ k
  */
 export function subdivisionFigure(own, analytic, ranges, p, { t }) {
   const surface = own(analytic.sample(p.n, { ...ranges, closed: false }));
-  const options = p.scheme === 'variational' ? { scheme: 'variational', steps: p.steps } : p.scheme === 'lines' ? { scheme: 'four-point', space: 'lines', steps: p.steps } : { scheme: p.scheme, steps: p.steps };
+  const steps = Number(p.steps);
+  /** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */
+  const options = p.scheme === 'lines' ? { scheme: 'four-point', space: 'lines', steps } : { scheme: /** @type {import('../../pkg/ruledlab.js').SubdivideOptions['scheme']} */ (p.scheme), steps };
   const refined = own(surface.subdivide(options));
   const stride = 2 ** p.steps;
   const distance = analytic.insertedDistance(refined, stride, ranges.uMin, ranges.uMax);

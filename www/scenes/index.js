@@ -9,9 +9,10 @@ import { scene as congruence } from './congruence.js';
 import { scene as milling } from './milling.js';
 import { scene as formula } from './formula.js';
 import { scene as formulaCongruence } from './formula-congruence.js';
+import { scene as focal } from './focal.js';
 import { scene as lines } from './lines.js';
 import { scene as large } from './large.js';
 import { scene as data } from './data.js';
 
 /** @type {import('../scene.js').Scene[]} */
-export const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling, formula, formulaCongruence, lines, large, data];
+export const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling, formula, formulaCongruence, focal, lines, large, data];

@@ -32,6 +32,7 @@ export const scene = defineScene({
       const base = own(analytic.sample(9, { ...RANGES[name], closed: false }));
       const length = base.meanLength();
       const slid = own(base.slide(pattern(9, Number(p.slide), length)));
+      /** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */
       const options = { scheme: 'four-point', steps: Number(p.steps) };
       const ends = own(slid.subdivide(options));
       const lines = own(slid.subdivide({ ...options, space: 'lines', length }));

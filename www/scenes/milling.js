@@ -4,6 +4,7 @@
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 
+/** @type {Record<string, Partial<import('../../pkg/ruledlab.js').SubdivideOptions>>} */
 const SCHEMES = {
   variational: { scheme: 'variational', variant: 'coupled' },
   averaged: { scheme: 'variational', variant: 'averaged' },

@@ -34,7 +34,8 @@ export const scene = defineScene({
       const n = Number(p.n);
       const quartic = own(AnalyticSurface.byName('quartic'));
       const surface = own(quartic.sample(12, U));
-      const options = p.scheme === 'four-point' ? { scheme: 'four-point' } : { scheme: 'variational', n, variant: p.scheme };
+      /** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */
+      const options = p.scheme === 'four-point' ? { scheme: 'four-point' } : { scheme: 'variational', n, variant: /** @type {'coupled' | 'literal' | 'averaged'} */ (p.scheme) };
       const refined = own(surface.subdivide(options));
       const distance = quartic.insertedDistance(refined, 2, U.uMin, U.uMax);
       const old = surface.segmentsF32();

@@ -1,0 +1,320 @@
+//! Focal geometry of congruences and linear complexes (beyond the paper) against exact
+//! answers: lines meeting two skew lines, the normals of an ellipsoid, an elliptic linear
+//! congruence, Examples 4 and 5 with their measured orders; a helical surface's screw axis, a
+//! hyperboloid's regulus, lines drawn from a given complex. Runs natively and in Chromium.
+
+use glam::{DVec2, DVec3};
+use ruledlab::assert_near;
+use ruledlab::congruence::focal::{focal_analytic, focal_grid};
+use ruledlab::congruence::{Focal, FocalKind, LineCongruence};
+use ruledlab::examples::{AnalyticCongruence, CongruenceSpec};
+use ruledlab::linear_complex::{fit, ComplexKind};
+use ruledlab::tolerance::test::ORDER;
+use ruledlab::{AnalyticSurface, Segment};
+
+#[cfg(target_family = "wasm")]
+use wasm_bindgen_test::wasm_bindgen_test;
+#[cfg(target_family = "wasm")]
+wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
+
+fn formula(p: [&str; 3], e: [&str; 3], u: (f64, f64), v: (f64, f64)) -> AnalyticCongruence {
+    AnalyticCongruence::from_formulas(&CongruenceSpec {
+        p: p.map(String::from),
+        e: e.map(String::from),
+        u,
+        v,
+        parameters: [0.0; 3],
+        grid: (5, 5),
+    })
+    .unwrap()
+}
+
+fn focal_of(c: &LineCongruence) -> Vec<Focal> {
+    focal_grid(c.rows(), c.cols(), &c.p(), &c.q())
+}
+
+/// The lines from (u, 0, −1) on one line to (0, v, 1) on a skew one: the focal points are the
+/// two endpoints, and the Plücker coordinates are bilinear in (u, v), so the discrete focal
+/// points are exact on every grid, at the boundary too.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn lines_meeting_two_skew_lines_have_their_focal_points_on_them() {
+    let c = formula(["u", "0", "-1"], ["-u", "v", "2"], (-1.0, 1.5), (-0.5, 2.0));
+    for (rows, cols) in [(2, 2), (3, 4), (9, 7)] {
+        let grid = c.grid(rows, cols).unwrap();
+        for (k, f) in focal_of(&grid).iter().enumerate() {
+            let s = grid.line(k / cols, k % cols);
+            assert_eq!(f.kind, FocalKind::Hyperbolic);
+            assert_near!(f.points[0], s.a, 1e-12);
+            assert_near!(f.points[1], s.b, 1e-12);
+            assert_near!(f.parameters[0], 0.0, 1e-12);
+            assert_near!(f.parameters[1], s.length(), 1e-12);
+            assert_near!(f.middle, 0.5 * (s.a + s.b), 1e-12);
+            // torsal: along u the lines sweep through the fixed point (0, v, 1) (the focal
+            // point t₂), along v through (u, 0, −1) (t₁)
+            assert_near!(f.torsal[0], DVec2::new(0.0, 1.0), 1e-12);
+            assert_near!(f.torsal[1], DVec2::new(1.0, 0.0), 1e-12);
+        }
+        for (f, g) in focal_of(&grid).iter().zip(focal_analytic(&c, rows, cols)) {
+            assert_near!(f.points[0], g.points[0], 1e-12);
+            assert_near!(f.points[1], g.points[1], 1e-12);
+            assert_near!(f.normality, g.normality, 1e-12);
+        }
+    }
+}
+
+const A: f64 = 3.0;
+const B: f64 = 2.0;
+const C: f64 = 1.0;
+
+fn ellipsoid() -> AnalyticCongruence {
+    formula(
+        ["3*cos(u)*cos(v)", "2*sin(u)*cos(v)", "sin(v)"],
+        ["cos(u)*cos(v)/3", "sin(u)*cos(v)/2", "sin(v)"],
+        (0.2, 1.3),
+        (-0.4, 0.7),
+    )
+}
+
+/// The principal radii 1/κ of the ellipsoid x²/A² + y²/B² + z²/C² = 1 at x, from
+/// K = 1/(A²B²C² h⁴) and |H| = (A² + B² + C² − |x|²)/(2A²B²C² h³), h² = Σ xᵢ²/aᵢ⁴.
+fn principal_radii(x: DVec3) -> [f64; 2] {
+    let h = (x.x * x.x / A.powi(4) + x.y * x.y / B.powi(4) + x.z * x.z / C.powi(4)).sqrt();
+    let abc = A * A * B * B * C * C;
+    let k = 1.0 / (abc * h.powi(4));
+    let hm = (A * A + B * B + C * C - x.length_squared()) / (2.0 * abc * h.powi(3));
+    let root = (hm * hm - k).max(0.0).sqrt();
+    [1.0 / (hm + root), 1.0 / (hm - root)]
+}
+
+/// The normals of an ellipsoid: focal points at the centres of principal curvature, inside
+/// (t = −1/κ along the outer normal), normality 0, and torsal directions along the lines of
+/// curvature (Rodrigues: the normal turns along them by κ times the step, dN = −κ dx).
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn normals_of_an_ellipsoid_focus_at_the_centres_of_curvature() {
+    let c = ellipsoid();
+    let (rows, cols) = (9, 9);
+    let ((u0, u1), (v0, v1), _, _) = c.domain();
+    let (hu, hv) = ((u1 - u0) / (rows - 1) as f64, (v1 - v0) / (cols - 1) as f64);
+    for (k, f) in focal_analytic(&c, rows, cols).iter().enumerate() {
+        let (u, v) = c.parameters(k / cols, k % cols, rows, cols);
+        let jet = c.jet(u, v);
+        let radii = principal_radii(jet.p);
+        assert_eq!(f.kind, FocalKind::Hyperbolic);
+        assert_near!(f.parameters[0], -radii[1], 1e-10);
+        assert_near!(f.parameters[1], -radii[0], 1e-10);
+        assert!(f.normality < 1e-10, "normality {}", f.normality);
+        let n = jet.d.normalize();
+        for (t, w) in f.parameters.iter().zip(f.torsal) {
+            let dx = (jet.p_u * hu * w.x + jet.p_v * hv * w.y).reject_from(n);
+            let dn = (jet.d_u * hu * w.x + jet.d_v * hv * w.y).reject_from(n) / jet.d.length();
+            // x + t·n is stationary across the line along a torsal direction: dx + t·dN = 0
+            assert_near!(dx + *t * dn, DVec3::ZERO, 1e-10 * dx.length().max(1.0));
+        }
+    }
+}
+
+/// Max over lines common to every level of |discrete − exact| for one quantity, on grids of
+/// 2^k·(n − 1) + 1 lines per side; returns the errors per level.
+fn errors(
+    c: &AnalyticCongruence,
+    base: (usize, usize),
+    levels: usize,
+    keep: impl Fn(usize, usize, usize, usize) -> bool,
+    value: impl Fn(&Focal) -> Vec<f64>,
+) -> Vec<f64> {
+    (0..levels)
+        .map(|l| {
+            let (rows, cols) = ((base.0 - 1) * (1 << l) + 1, (base.1 - 1) * (1 << l) + 1);
+            let exact = focal_analytic(c, rows, cols);
+            let discrete = focal_of(&c.grid(rows, cols).unwrap());
+            let step = 1 << l;
+            let mut worst = 0.0f64;
+            for i in (0..rows).step_by(step) {
+                for j in (0..cols).step_by(step) {
+                    if !keep(i / step, j / step, base.0, base.1) {
+                        continue;
+                    }
+                    let k = i * cols + j;
+                    for (a, b) in value(&discrete[k]).iter().zip(value(&exact[k])) {
+                        worst = worst.max((a - b).abs());
+                    }
+                }
+            }
+            worst
+        })
+        .collect()
+}
+
+fn order(errs: &[f64]) -> f64 {
+    let n = errs.len();
+    (errs[n - 2] / errs[n - 1]).log2()
+}
+
+fn interior(i: usize, j: usize, rows: usize, cols: usize) -> bool {
+    i > 0 && j > 0 && i + 1 < rows && j + 1 < cols
+}
+
+fn boundary(i: usize, j: usize, rows: usize, cols: usize) -> bool {
+    !interior(i, j, rows, cols)
+}
+
+fn focal_parameters(f: &Focal) -> Vec<f64> {
+    f.parameters.to_vec()
+}
+
+fn torsal_and_middle(f: &Focal) -> Vec<f64> {
+    // directions up to sign are fixed by du > 0; the middle point and the normality too
+    vec![f.torsal[0].x, f.torsal[0].y, f.torsal[1].x, f.torsal[1].y, f.middle.x, f.middle.y, f.middle.z, f.normality]
+}
+
+/// Second order in the interior and at the boundary, for the focal parameters, the torsal
+/// directions, the middle points and the normality — on the ellipsoid's normals and on the
+/// paper's Examples 4 (both congruences of Fig. 13) and 5 (Fig. 15), on lines that are
+/// hyperbolic and keep their focal points within reach (|t| < 20).
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn discrete_focal_geometry_converges_with_second_order() {
+    let cases = [
+        (ellipsoid(), (5, 5)),
+        (AnalyticCongruence::Sphere, (5, 5)),
+        (AnalyticCongruence::HyperbolicParaboloid, (5, 5)),
+        (AnalyticCongruence::Example5, (8, 7)),
+    ];
+    for (c, base) in cases {
+        let exact = focal_analytic(&c, base.0, base.1);
+        let good = |i: usize, j: usize, _: usize, cols: usize| {
+            let f = &exact[i * cols + j];
+            f.kind == FocalKind::Hyperbolic && f.parameters.iter().all(|t| t.abs() < 20.0)
+        };
+        assert!(exact.iter().filter(|f| f.kind == FocalKind::Hyperbolic).count() > 0, "{}", c.name());
+        for (region, name) in [(interior as fn(usize, usize, usize, usize) -> bool, "interior"), (boundary, "boundary")]
+        {
+            let keep = |i: usize, j: usize, r: usize, cc: usize| region(i, j, r, cc) && good(i, j, r, cc);
+            for (what, value) in [
+                ("parameters", focal_parameters as fn(&Focal) -> Vec<f64>),
+                ("torsal, middle, normality", torsal_and_middle),
+            ] {
+                let e = errors(&c, base, 5, keep, value);
+                let p = order(&e);
+                println!(
+                    "order {} {name} {what}: {p:.2} (errors {:.1e} → {:.1e})",
+                    c.name(),
+                    e[e.len() - 2],
+                    e[e.len() - 1]
+                );
+                assert!(p > 2.0 - 2.0 * ORDER, "{} {name} {what}: order {p:.2}, errors {e:?}", c.name());
+            }
+        }
+    }
+}
+
+/// Lines x = (u, v, 0) + t·(−kv, ku, 1): no real focal point anywhere (kind 0, NaN), a real
+/// middle point, in the discrete and the exact version.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn an_elliptic_congruence_has_no_real_focal_points() {
+    let c = formula(["u", "v", "0"], ["-0.7*v", "0.7*u", "1"], (-1.0, 1.0), (-1.0, 1.0));
+    let discrete = focal_of(&c.grid(6, 7).unwrap());
+    for f in discrete.iter().chain(&focal_analytic(&c, 6, 7)) {
+        assert_eq!(f.kind, FocalKind::Elliptic);
+        assert!(f.parameters.iter().chain(&[f.normality]).all(|x| x.is_nan()));
+        assert!(f.points.iter().all(|x| x.is_nan()) && f.torsal.iter().all(|x| x.is_nan()));
+        assert!(f.middle.is_finite());
+    }
+}
+
+/// Swapping p and q of every line keeps the focal points exactly (up to rounding).
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn reversed_lines_keep_their_focal_points() {
+    let c = AnalyticCongruence::Example5.grid(8, 7).unwrap();
+    let reversed = LineCongruence::from_points(8, 7, &c.q(), &c.p()).unwrap();
+    for (f, g) in focal_of(&c).iter().zip(focal_of(&reversed)) {
+        assert_eq!(f.kind, g.kind);
+        if f.kind == FocalKind::Hyperbolic {
+            // t runs the other way from the other end: the points are the same, in swapped order
+            let (a, b) = if (f.points[0] - g.points[0]).length() < (f.points[0] - g.points[1]).length() {
+                (g.points[0], g.points[1])
+            } else {
+                (g.points[1], g.points[0])
+            };
+            assert_near!(f.points[0], a, 1e-9);
+            assert_near!(f.points[1], b, 1e-9);
+            assert_near!(f.normality, g.normality, 1e-9);
+        }
+        assert_near!(f.middle, g.middle, 1e-9);
+    }
+}
+
+fn rulings(s: &AnalyticSurface, n: usize) -> Vec<Segment> {
+    s.sample(n, s.ranges()).unwrap().segments().collect()
+}
+
+/// The rulings of a helical surface lie in one linear complex whose axis is the screw axis
+/// (here z); those of the right helicoid meet the axis at right angles (a linear congruence);
+/// a hyperboloid's are a regulus.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn linear_complexes_of_helical_surfaces_and_a_hyperboloid() {
+    let helical = AnalyticSurface::HelicalRuled { radius: 1.5, pitch: 0.4, slope: 0.6 };
+    let f = fit(&rulings(&helical, 40), None);
+    assert_eq!((f.nullity, f.kind), (1, ComplexKind::Complex));
+    assert_near!(f.axis_direction.cross(DVec3::Z), DVec3::ZERO, 1e-10);
+    assert_near!(f.axis_point, DVec3::ZERO, 1e-10);
+    assert!(f.residual < 1e-12);
+    let helicoid = AnalyticSurface::Helicoid { pitch: 0.5 };
+    let f = fit(&rulings(&helicoid, 40), None);
+    assert_eq!((f.nullity, f.kind), (2, ComplexKind::Congruence));
+    let hyperboloid = AnalyticSurface::Hyperboloid { a: 1.0, b: 2.0, c: 3.0 };
+    let f = fit(&rulings(&hyperboloid, 40), None);
+    assert_eq!((f.nullity, f.kind), (3, ComplexKind::Regulus));
+    // Example 3's quartic: a = (1, u²/2, u), d = (u², u, −1), m = a × d has m_x = −3u²/2, so
+    // m_x + (3/2) d_x = 0: a complex with the x-axis as axis and pitch 3/2
+    let f = fit(&rulings(&AnalyticSurface::Quartic, 40), None);
+    assert_eq!((f.nullity, f.kind), (1, ComplexKind::Complex));
+    assert_near!(f.axis_direction.cross(DVec3::X), DVec3::ZERO, 1e-10);
+    assert_near!(f.pitch, 1.5, 1e-10);
+    assert_near!(f.axis_point, DVec3::ZERO, 1e-10);
+    // seven lines in general position
+    let general: Vec<Segment> = (0..7)
+        .map(|k| {
+            let t = k as f64;
+            Segment::new(DVec3::new(t.sin(), (2.0 * t).cos(), t * 0.3), DVec3::new((3.0 * t).cos(), t.cos() + 2.0, -t))
+        })
+        .collect();
+    assert_eq!(fit(&general, None).kind, ComplexKind::General);
+}
+
+/// Lines drawn from a given complex give it back to 1e-10.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn lines_of_a_given_complex_give_it_back() {
+    let (axis, point, pitch) = (DVec3::new(1.0, 2.0, -0.5).normalize(), DVec3::new(0.3, -1.0, 2.0), 0.7);
+    // c = axis, c̄ = pitch·c + point × c  (axis point (c × c̄) is then the foot of `point`)
+    let cbar = pitch * axis + point.cross(axis);
+    let mut seed = 7u64;
+    let mut rand = || {
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    let lines: Vec<Segment> = (0..50)
+        .map(|_| {
+            let x = DVec3::new(rand(), rand(), rand()) * 4.0;
+            // lines through x in the complex are orthogonal to c̄ + c × x (the null plane)
+            let normal = cbar + axis.cross(x);
+            let d = DVec3::new(rand(), rand(), rand()).reject_from(normal).normalize();
+            Segment::new(x, x + (1.0 + rand().abs()) * d)
+        })
+        .collect();
+    let f = fit(&lines, None);
+    assert_eq!((f.nullity, f.kind), (1, ComplexKind::Complex));
+    let sign = f.axis_direction.dot(axis).signum();
+    let got = DVec3::from_slice(&f.plucker[..3]) * sign;
+    let got_bar = DVec3::from_slice(&f.plucker[3..]) * sign;
+    assert_near!(got, axis, 1e-10);
+    assert_near!(got_bar, cbar, 1e-10);
+    assert_near!(f.pitch, pitch, 1e-10);
+    assert_near!(f.axis_point, point.reject_from(axis), 1e-10);
+}
