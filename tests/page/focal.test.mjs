@@ -30,3 +30,16 @@ test('focal surfaces: kinds, sheets and strokes drawn, readouts as the core comp
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('the linear complex in the striction scene: a helical surface has one, with its axis drawn on request; the hyperboloid is a regulus', async () => {
+  const { page, problems } = await session.open('#scene=striction&surface=helical');
+  assert.match(await page.locator('.rl-readout').innerText(), /linear complex\s+one linear complex/);
+  const before = await shoot(page, 'striction-no-axis');
+  await setControl(page, 'axis', true);
+  const after = await shoot(page, 'striction-axis');
+  assert.ok(countChanged(before, after) > 200, 'the axis is drawn');
+  await setControl(page, 'surface', 'hyperboloid');
+  assert.match(await page.locator('.rl-readout').innerText(), /linear complex\s+a regulus/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

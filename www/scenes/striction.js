@@ -12,7 +12,7 @@ import { surfaceOptions, rangesOf } from './common.js';
  * @param {<O extends {free(): void}>(o: O) => O} own
  * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
  * @param {{uMin: number, uMax: number, vMin?: number, vMax?: number, closed: boolean}} ranges
- * @param {{n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean}} p
+ * @param {{n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis?: boolean}} p
  * @param {import('../scene.js').Context} ctx
  * @param {string} name   the surface's name, for the description
  * @returns {import('../scene.js').Built}
@@ -41,6 +41,18 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name) {
     layers.push({ kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) });
   }
   if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: segments, indices: stripIndices(p.n, closed) });
+  // beyond the paper: the linear complex that fits the rulings (README, "Focal geometry")
+  const complex = surface.linearComplex({ tolerance: 1e-6 });
+  const box = bounds(segments);
+  if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisPoint[0])) {
+    // the axis as a segment through its point nearest the centre of the view, two box diagonals long
+    const centre = box.min.map((lo, k) => (lo + box.max[k]) / 2);
+    const d = complex.axisDirection;
+    const along = (centre[0] - complex.axisPoint[0]) * d[0] + (centre[1] - complex.axisPoint[1]) * d[1] + (centre[2] - complex.axisPoint[2]) * d[2];
+    const half = Math.hypot(...box.max.map((hi, k) => hi - box.min[k]));
+    const at = (/** @type {number} */ s) => [0, 1, 2].map((k) => complex.axisPoint[k] + (along + s) * d[k]);
+    layers.push({ kind: 'segments', style: 'complexAxis', positions: new Float32Array([...at(-half), ...at(half)]) });
+  }
   const middle = inv.distributionMean.length ? inv.distributionMean[Math.floor(inv.distributionMean.length / 2)] : NaN;
   const shown = [
     p.normals && t('striction.describe.normals'),
@@ -49,7 +61,7 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name) {
     p.exact && t('striction.describe.exact'),
   ].filter(Boolean);
   return {
-    bounds: bounds(segments),
+    bounds: box,
     camera: { yaw: -0.9, pitch: 0.45 },
     layers,
     readouts: [
@@ -59,6 +71,8 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name) {
       { label: 'readout.footpointError', value: errors.footpoint, exactZero: true },
       { label: 'readout.perpendicularMidpointError', value: errors.perpendicularMidpoint, exactZero: true },
       { label: 'readout.meanDelta', value: middle },
+      { label: 'focal.readout.complex', value: t(`complex.kind.${complex.kind}`) },
+      ...(complex.kind === 'complex' ? [{ label: 'focal.readout.pitch', value: Math.abs(complex.pitch) < 1e-12 ? 0 : complex.pitch, exactZero: true }] : []),
     ],
     description: t('striction.describe', {
       surface: t(`surface.${name}`),
@@ -85,6 +99,7 @@ export const scene = defineScene({
     { key: 'polygon', label: 'striction.param.polygon', type: 'checkbox', value: true },
     { key: 'midpoints', label: 'striction.param.midpoints', type: 'checkbox', value: false },
     { key: 'exact', label: 'striction.param.exact', type: 'checkbox', value: false },
+    { key: 'axis', label: 'striction.param.axis', type: 'checkbox', value: false },
   ],
   legend: [
     { style: 'ruling', label: 'legend.rulings' },
@@ -92,6 +107,7 @@ export const scene = defineScene({
     { style: 'striction', label: 'legend.striction', when: (p) => !!p.polygon },
     { style: 'perpendicularMidpoints', label: 'legend.perpendicularMidpoints', when: (p) => !!p.midpoints },
     { style: 'exact', label: 'legend.exactStriction', when: (p) => !!p.exact },
+    { style: 'complexAxis', label: 'legend.complexAxis', when: (p) => !!p.axis },
   ],
   create(p, ctx) {
     return scoped((own) => {
