@@ -43,3 +43,18 @@ test('the linear complex in the striction scene: a helical surface has one, with
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('your data: an imported grid of lines gets its focal geometry in the data scene', async () => {
+  const { page, problems } = await session.open('#scene=data');
+  await page.locator('.io summary').click();
+  // lines from (u, 0, −1) to (0, v, 1) on a 4 × 5 grid: focal points exactly the two ends
+  const segments = [];
+  for (let i = 0; i < 4; i++) for (let j = 0; j < 5; j++) segments.push([i - 1.5, 0, -1, 0, j * 0.5 - 1, 1]);
+  await page.locator('#import-text').fill(JSON.stringify({ rows: 4, cols: 5, segments }));
+  await page.locator('#import-button').click();
+  await page.waitForFunction(() => /4 × 5/.test(document.querySelector('.rl-readout')?.textContent ?? ''));
+  await setControl(page, 'focal', true);
+  assert.match(await page.locator('.rl-readout').innerText(), /hyperbolic lines\s+20 \/ 20[\s\S]*a linear congruence/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -1,5 +1,6 @@
 // Your data: rulings (or a congruence) pasted or uploaded as CSV or JSON, with its invariants.
 import { LineCongruence, RuledSurface } from '../../pkg/ruledlab.js';
+import { focalFigure } from './focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { stripIndices, gridIndices } from '../gl/mesh.js';
 
@@ -16,13 +17,20 @@ export const scene = defineScene({
   params: [
     { key: 'strip', label: 'param.strip', type: 'checkbox', value: true },
     { key: 'closed', label: 'data.param.closed', type: 'checkbox', value: false },
+    { key: 'focal', label: 'formulaCongruence.param.focal', type: 'checkbox', value: false },
   ],
   legend: [
     { style: 'ruling', label: 'data.legend.rulings' },
-    { style: 'normal', label: 'legend.normals' },
-    { style: 'striction', label: 'legend.striction' },
+    // the focal checkbox acts on a grid of lines only, and the surface entries on surfaces only:
+    // one legend at a time (their colours are shared: normals and focal sheet 1 are both blue)
+    { style: 'normal', label: 'legend.normals', when: (p) => !p.focal },
+    { style: 'striction', label: 'legend.striction', when: (p) => !p.focal },
+    { style: 'focal1', label: 'focal.legend.focal1', when: (p) => !!p.focal },
+    { style: 'focal2', label: 'focal.legend.focal2', when: (p) => !!p.focal },
+    { style: 'torsal', label: 'focal.legend.torsal', when: (p) => !!p.focal },
   ],
-  create(p, { t, data }) {
+  create(p, ctx) {
+    const { t, data } = ctx;
     const { segments, rows, cols } = data ?? EXAMPLE;
     return scoped((own) => {
       if (rows && cols) {
@@ -31,11 +39,21 @@ export const scene = defineScene({
         /** @type {import('../scene.js').Layer[]} */
         const layers = [{ kind: 'segments', style: 'ruling', positions: seg }];
         if (p.strip) layers.push({ kind: 'mesh', style: 'director1', positions: c.directorF32(1), indices: gridIndices(rows, cols) });
+        /** @type {import('../scene.js').Readout[]} */
+        const readouts = [{ label: 'data.readout.lines', value: `${rows} × ${cols}` }];
+        let description = t('data.describeCongruence', { rows, cols });
+        if (p.focal) {
+          // beyond the paper: the focal geometry of your grid of lines (scene "Focal surfaces")
+          const focal = focalFigure(own, c, { sheets: true, torsal: true }, ctx);
+          layers.push(...focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'));
+          readouts.push(...focal.readouts);
+          description = `${description} ${focal.sentence}`;
+        }
         return {
           bounds: bounds(seg),
           layers,
-          readouts: [{ label: 'data.readout.lines', value: `${rows} × ${cols}` }],
-          description: t('data.describeCongruence', { rows, cols }),
+          readouts,
+          description,
           data: { segments, grid: { rows, cols } },
         };
       }
