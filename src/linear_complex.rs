@@ -64,6 +64,9 @@ pub struct LinearComplex {
     pub axis_point: DVec3,
     /// c (c̄ when c = 0), unit.
     pub axis_direction: DVec3,
+    /// A piece of the axis to draw: centred at the foot of the segments' centroid T, four times
+    /// their spread ℓ long; NaN when c = 0.
+    pub axis_segment: [DVec3; 2],
     /// Root mean square of c·m + c̄·d over the lines (unit d), in the world's lengths when
     /// c ≠ 0, dimensionless when c = 0.
     pub residual: f64,
@@ -145,11 +148,14 @@ pub fn fit(segments: &[Segment], tolerance: Option<f64>) -> LinearComplex {
         .sqrt();
     let (pitch, axis_point, axis_direction) =
         if c == DVec3::ZERO { (f64::INFINITY, DVec3::splat(f64::NAN), cbar) } else { (c.dot(cbar), c.cross(cbar), c) };
+    let foot = axis_point + (centre - axis_point).dot(axis_direction) * axis_direction;
+    let axis_segment = [foot - 2.0 * scale * axis_direction, foot + 2.0 * scale * axis_direction];
     LinearComplex {
         plucker: [c.x, c.y, c.z, cbar.x, cbar.y, cbar.z],
         pitch,
         axis_point,
         axis_direction,
+        axis_segment,
         residual,
         spectrum,
         nullity,

@@ -54,6 +54,13 @@ pub const FOCAL_PARABOLIC: f64 = 1e-10;
 /// derivatives counts as zero (every direction torsal there, as for a bundle of lines).
 pub const FOCAL_TORSAL_ZERO: f64 = 1e-10;
 
+/// Focal geometry: |du| below which a torsal direction's sign is fixed by dv > 0 instead of du > 0.
+pub const FOCAL_TORSAL_SIGN: f64 = 1e-9;
+
+/// Focal geometry: focal sheets are drawn within this many diagonals of the lines' bounding box
+/// from its centre.
+pub const FOCAL_SHEET_REACH: f64 = 3.0;
+
 /// Linear complexes: default tolerance of the root-mean-square residual, in the fit's frame
 /// (centred at the lines' midpoints, lengths divided by their spread), under which a complex
 /// counts as holding the lines.

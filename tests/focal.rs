@@ -115,6 +115,22 @@ fn normals_of_an_ellipsoid_focus_at_the_centres_of_curvature() {
     }
 }
 
+/// The torsal strokes on the ellipsoid run along its lines of curvature, so the two strokes at a
+/// point are orthogonal — up to the grid's second-order error, which falls by 4 per halving.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn torsal_strokes_on_the_ellipsoid_are_orthogonal() {
+    let worst = |n: usize| {
+        let grid = ellipsoid().grid(n, n).unwrap();
+        let strokes = ruledlab::congruence::focal::torsal_strokes(n, n, &grid.p(), &focal_of(&grid), 0.35);
+        assert_eq!(strokes.len(), 2 * n * n, "two real torsal directions per line");
+        strokes.chunks(2).map(|w| w[0].vector().normalize().dot(w[1].vector().normalize()).abs()).fold(0.0, f64::max)
+    };
+    let (coarse, fine) = (worst(9), worst(17));
+    assert!(fine < 0.02, "|cos| between the strokes: {fine}");
+    assert!(coarse / fine > 3.5, "not second order: {coarse} → {fine}");
+}
+
 /// Max over lines common to every level of |discrete − exact| for one quantity, on grids of
 /// 2^k·(n − 1) + 1 lines per side; returns the errors per level.
 fn errors(
@@ -225,6 +241,52 @@ fn an_elliptic_congruence_has_no_real_focal_points() {
     }
 }
 
+/// Lines x = (u, 0, 0) + t·(v, 1, u): through each point of the x-axis a pencil of lines, so
+/// every line has one double focal point, at t = 0 on the axis; det(p_u + t·d_u, p_v + t·d_v, d)
+/// = t². Its Plücker coordinates are quadratic in (u, v), so grid differences are exact: the
+/// discrete congruence is parabolic too, with the pencil's direction (0, 1) as torsal direction.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn a_parabolic_congruence_has_one_double_focal_point() {
+    let c = formula(["u", "0", "0"], ["v", "1", "u"], (-1.0, 1.0), (-1.0, 1.0));
+    let grid = c.grid(5, 6).unwrap();
+    for (k, (f, g)) in focal_of(&grid).iter().zip(focal_analytic(&c, 5, 6)).enumerate() {
+        for f in [f, &g] {
+            assert_eq!(f.kind, FocalKind::Parabolic, "line {k}");
+            assert_near!(f.parameters[0], 0.0, 1e-12);
+            assert_near!(f.parameters[1], 0.0, 1e-12);
+            assert_near!(f.points[0], grid.line(k / 6, k % 6).a, 1e-12);
+            assert_near!(f.torsal[0], DVec2::new(0.0, 1.0), 1e-12);
+            assert_eq!(f.normality, 1.0);
+        }
+    }
+}
+
+/// The normals of a cylinder of radius 2: one focal point on the axis (t = −2), the other at
+/// infinity (a = 0 in (F3): t = ±∞, point NaN); the focal planes are orthogonal. The sheet at
+/// infinity has no triangle to draw, the one on the axis all of them.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn normals_of_a_cylinder_have_a_focal_point_at_infinity() {
+    let c = formula(["2*cos(u)", "2*sin(u)", "v"], ["cos(u)", "sin(u)", "0"], (0.0, 2.0), (-1.0, 1.0));
+    let grid = c.grid(17, 5).unwrap();
+    let discrete = focal_of(&grid);
+    let exact = focal_analytic(&c, 17, 5);
+    // the discrete axis point is second-order accurate (h = 1/8 here), the exact one to rounding
+    let cases = discrete.iter().map(|f| (f, 2e-2)).chain(exact.iter().map(|f| (f, 1e-12)));
+    for (f, tolerance) in cases {
+        assert_eq!(f.kind, FocalKind::Hyperbolic);
+        let (finite, infinite) = if f.parameters[0].is_finite() { (0, 1) } else { (1, 0) };
+        assert!(f.parameters[infinite].is_infinite(), "{:?}", f.parameters);
+        assert!(f.points[infinite].is_nan());
+        assert_near!(f.parameters[finite], -2.0, tolerance);
+        assert!(f.normality < 1e-12, "normality {}", f.normality);
+    }
+    let sheets = [0, 1].map(|s| ruledlab::congruence::focal::focal_sheet(&grid, &discrete, s).indices.len());
+    assert_eq!(sheets.iter().filter(|&&n| n == 0).count(), 1, "{sheets:?}");
+    assert_eq!(sheets.iter().max(), Some(&(6 * 16 * 4)));
+}
+
 /// Swapping p and q of every line keeps the focal points exactly (up to rounding).
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
@@ -264,6 +326,12 @@ fn linear_complexes_of_helical_surfaces_and_a_hyperboloid() {
     assert_near!(f.axis_direction.cross(DVec3::Z), DVec3::ZERO, 1e-10);
     assert_near!(f.axis_point, DVec3::ZERO, 1e-10);
     assert!(f.residual < 1e-12);
+    // the piece of axis to draw lies on the z-axis, centred at the rulings' mean height
+    let mean_z = rulings(&helical, 40).iter().map(|s| 0.5 * (s.a.z + s.b.z)).sum::<f64>() / 40.0;
+    for end in f.axis_segment {
+        assert_near!(DVec3::new(end.x, end.y, 0.0), DVec3::ZERO, 1e-10);
+    }
+    assert_near!(0.5 * (f.axis_segment[0].z + f.axis_segment[1].z), mean_z, 1e-10);
     let helicoid = AnalyticSurface::Helicoid { pitch: 0.5 };
     let f = fit(&rulings(&helicoid, 40), None);
     assert_eq!((f.nullity, f.kind), (2, ComplexKind::Congruence));
@@ -285,6 +353,26 @@ fn linear_complexes_of_helical_surfaces_and_a_hyperboloid() {
         })
         .collect();
     assert_eq!(fit(&general, None).kind, ComplexKind::General);
+}
+
+/// The tolerance decides the nullity: rulings of a helical surface moved by up to 1e-7 lie in
+/// no complex at the default 1e-9, in one at 1e-5.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn the_tolerance_decides_what_holds_the_lines() {
+    let helical = AnalyticSurface::HelicalRuled { radius: 1.5, pitch: 0.4, slope: 0.6 };
+    let noisy: Vec<Segment> = rulings(&helical, 40)
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            let wobble = 1e-7 * DVec3::new((k as f64 * 1.3).sin(), (k as f64 * 2.1).cos(), (k as f64 * 0.7).sin());
+            Segment::new(s.a + wobble, s.b - wobble)
+        })
+        .collect();
+    assert_eq!(fit(&noisy, None).kind, ComplexKind::General);
+    let loose = fit(&noisy, Some(1e-5));
+    assert_eq!((loose.nullity, loose.kind), (1, ComplexKind::Complex));
+    assert_near!(loose.axis_direction.cross(DVec3::Z), DVec3::ZERO, 1e-5);
 }
 
 /// Lines drawn from a given complex give it back to 1e-10.

@@ -19,19 +19,19 @@ self.onmessage = async ({ data }) => {
   let surface = null;
   try {
     await ready;
-    let current = (surface = RuledSurface.fromSegments(segments));
+    surface = RuledSurface.fromSegments(segments);
     const steps = options.steps ?? 1;
     const total = 2 ** steps - 1; // step k costs about 2^k
     for (let k = 0; k < steps; k++) {
       /** @type {RuledSurface} */
-      const next = current.subdivide({ ...options, steps: 1 });
-      current.free();
-      current = surface = next;
+      const next = surface.subdivide({ ...options, steps: 1 });
+      surface.free();
+      surface = next;
       self.postMessage({ id, progress: (2 ** (k + 1) - 1) / total });
     }
-    const rulings = current.length;
+    const rulings = surface.length;
     const every = Math.max(1, Math.ceil(rulings / draw));
-    const out = every > 1 ? current.everyF32(every) : current.segmentsF32();
+    const out = every > 1 ? surface.everyF32(every) : surface.segmentsF32();
     self.postMessage({ id, segments: out, rulings, drawn: out.length / 6 }, { transfer: [out.buffer] });
   } catch (e) {
     const error = /** @type {any} */ (e);

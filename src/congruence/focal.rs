@@ -33,10 +33,11 @@
 //! **Analytic**: the same (F3) with the exact derivatives of a [`CongruenceJet`], scaled to grid
 //! steps, so it compares point by point with the discrete values.
 
+use crate::congruence::LineCongruence;
 use crate::examples::{AnalyticCongruence, CongruenceJet};
 use crate::line::Segment;
 use crate::mesh::Mesh;
-use crate::tolerance::{FOCAL_PARABOLIC, FOCAL_TORSAL_ZERO};
+use crate::tolerance::{FOCAL_PARABOLIC, FOCAL_SHEET_REACH, FOCAL_TORSAL_SIGN, FOCAL_TORSAL_ZERO};
 use glam::{DVec2, DVec3};
 
 /// Kind of a line of a congruence by its focal points.
@@ -124,15 +125,24 @@ impl LineJet {
         let q = -0.5 * (b + b.signum() * root);
         let (mut t1, mut t2) = if parabolic { (-b / (2.0 * a), -b / (2.0 * a)) } else { (q / a, c / q) };
         if a == 0.0 && parabolic {
-            (t1, t2) = (f64::NAN, f64::NAN); // a = b = 0 (and c = 0): no quadratic at all
+            // a = b = 0: (F3) is the constant c; no focal point to report (both at infinity
+            // when c ≠ 0, every point when c = 0)
+            (t1, t2) = (f64::NAN, f64::NAN);
         }
         if t1 > t2 {
             std::mem::swap(&mut t1, &mut t2);
         }
         let point = |t: f64| if t.is_finite() { self.p + t * e } else { nan3 };
-        // the torsal direction of tᵢ annihilates x_u⊥ du + x_v⊥ dv; at t = ±∞ that is f
-        let displacement = |t: f64| if t.is_finite() { [h[0] + t * f[0], h[1] + t * f[1]] } else { f };
-        let torsal = |t: f64| kernel(displacement(t), len_scale(&h, &f));
+        // the torsal direction of tᵢ annihilates x_u⊥ du + x_v⊥ dv = (h + tᵢ f)(du, dv); at
+        // t = ±∞ that is f. A displacement is zero when it is small against its two terms.
+        let largest = |x: &[DVec3; 2]| x[0].length().max(x[1].length());
+        let torsal = |t: f64| {
+            if t.is_finite() {
+                kernel([h[0] + t * f[0], h[1] + t * f[1]], largest(&h) + t.abs() * largest(&f))
+            } else {
+                kernel(f, largest(&f))
+            }
+        };
         let (w1, w2) = (torsal(t1), torsal(t2));
         // focal plane i ∋ ê and f(dirᵢ) (h(dirᵢ) if tᵢ = ±∞); |cos| of the planes' angle
         let plane = |t: f64, w: DVec2| {
@@ -158,23 +168,15 @@ impl LineJet {
     }
 }
 
-/// A length that makes |h| and |f|·length comparable (for the zero test of a displacement).
-fn len_scale(h: &[DVec3; 2], f: &[DVec3; 2]) -> f64 {
-    h[0].length().max(h[1].length()) + f[0].length().max(f[1].length())
-}
-
-/// |du| below which the sign of a torsal direction is fixed by dv > 0.
-const TORSAL_SIGN: f64 = 1e-9;
-
 /// The unit (du, dv), sign fixed by du > 0 (dv > 0 when du ≈ 0), with x_u du + x_v dv = 0 for x_u ∥ x_v;
-/// NaN when both vanish (every direction is torsal).
+/// NaN when both vanish against `scale` (every direction is torsal).
 fn kernel(x: [DVec3; 2], scale: f64) -> DVec2 {
     let w = if x[0].length_squared() >= x[1].length_squared() { x[0] } else { x[1] };
     if w.length() <= FOCAL_TORSAL_ZERO * scale {
         return DVec2::splat(f64::NAN);
     }
     let dir = DVec2::new(x[1].dot(w), -x[0].dot(w)).normalize();
-    if dir.x < -TORSAL_SIGN || (dir.x.abs() <= TORSAL_SIGN && dir.y < 0.0) {
+    if dir.x < -FOCAL_TORSAL_SIGN || (dir.x.abs() <= FOCAL_TORSAL_SIGN && dir.y < 0.0) {
         -dir
     } else {
         dir
@@ -201,14 +203,14 @@ where
 /// The focal geometry of every line of a grid (row-major), from the Plücker coordinates of its
 /// lines differenced as the module documentation says.
 pub fn focal_grid(rows: usize, cols: usize, p: &[DVec3], q: &[DVec3]) -> Vec<Focal> {
-    let plucker = |k: usize| Plucker { d: q[k] - p[k], m: p[k].cross(q[k]) };
+    let plucker: Vec<Plucker> = p.iter().zip(q).map(|(&p, &q)| Plucker { d: q - p, m: p.cross(q) }).collect();
     let mut out = Vec::with_capacity(rows * cols);
     for i in 0..rows {
         for j in 0..cols {
-            let du = difference(|r| plucker(r * cols + j), i, rows);
-            let dv = difference(|c| plucker(i * cols + c), j, cols);
+            let du = difference(|r| plucker[r * cols + j], i, rows);
+            let dv = difference(|c| plucker[i * cols + c], j, cols);
             let k = i * cols + j;
-            let jet = LineJet { p: p[k], d: q[k] - p[k], d_uv: [du.d, dv.d], m_uv: [du.m, dv.m] };
+            let jet = LineJet { p: p[k], d: plucker[k].d, d_uv: [du.d, dv.d], m_uv: [du.m, dv.m] };
             out.push(jet.focal());
         }
     }
@@ -230,17 +232,21 @@ pub fn focal_analytic(c: &AnalyticCongruence, rows: usize, cols: usize) -> Vec<F
     out
 }
 
-/// Focal sheet `sheet` (0: the points of t₁, 1: of t₂) of a rows × cols grid as a triangle
-/// mesh: the quads whose four focal points are real and within `reach` of `centre` (a focal
-/// surface runs off to infinity where a = 0 in (F3); the page keeps what it can show). Vertices
-/// of no kept quad sit at `centre`.
-pub fn focal_sheet(rows: usize, cols: usize, focal: &[Focal], sheet: usize, centre: DVec3, reach: f64) -> Mesh {
+/// Focal sheet `sheet` (0: the points of t₁, 1: of t₂) of a congruence as a triangle mesh: the
+/// grid's quads whose four focal points are real and within [`FOCAL_SHEET_REACH`] diagonals of
+/// the lines' bounding box from its centre (a focal surface runs off to infinity where a = 0 in
+/// (F3); a view shows what lies near the lines). Vertices of no kept quad sit at the centre.
+pub fn focal_sheet(c: &LineCongruence, focal: &[Focal], sheet: usize) -> Mesh {
+    let ends = c.p().into_iter().chain(c.q());
+    let (lo, hi) = ends.fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
+    let (centre, reach) = (0.5 * (lo + hi), FOCAL_SHEET_REACH * (hi - lo).length());
     let ok = |x: DVec3| x.is_finite() && (x - centre).length() <= reach;
     let positions: Vec<DVec3> =
         focal.iter().map(|f| if ok(f.points[sheet]) { f.points[sheet] } else { centre }).collect();
+    let (rows, cols) = (c.rows(), c.cols());
     let mut indices = Vec::new();
-    for i in 0..rows.saturating_sub(1) {
-        for j in 0..cols.saturating_sub(1) {
+    for i in 0..rows - 1 {
+        for j in 0..cols - 1 {
             let a = i * cols + j;
             let quad = [a, a + 1, a + cols, a + cols + 1];
             if quad.iter().all(|&k| ok(focal[k].points[sheet])) {

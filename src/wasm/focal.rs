@@ -11,7 +11,6 @@ use crate::line::Segment;
 use crate::linear_complex::{self, LinearComplex};
 use crate::ruled::RuledSurface as CoreSurface;
 use crate::tolerance::MAX_RULINGS;
-use glam::DVec3;
 use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
@@ -57,6 +56,8 @@ export interface LinearComplexFit {
   axisPoint: Float64Array;
   /** c (c̄ when c = 0), unit. */
   axisDirection: Float64Array;
+  /** 6 numbers: a piece of the axis to draw, centred at the foot of the lines' centroid, 4 spreads long (NaN when c = 0). */
+  axisSegment: Float64Array;
   /** Root mean square of c·m + c̄·d over the lines. */
   residual: number;
   /** The residual (in the fit's frame) of each of six orthogonal complexes, ascending. */
@@ -91,22 +92,19 @@ struct FocalJs {
 }
 
 fn focal_js(func: &str, rows: usize, cols: usize, all: &[Focal]) -> Result<JsValue, JsValue> {
-    let f64s = |f: &dyn Fn(&Focal) -> Vec<f64>| {
-        let v: Vec<f64> = all.iter().flat_map(f).collect();
-        Float64Array::from(&v[..])
-    };
+    let f64s = |values: Vec<f64>| Float64Array::from(&values[..]);
     let kind: Vec<u8> = all.iter().map(|f| f.kind as u8).collect();
     to_js(
         func,
         &FocalJs {
             rows,
             cols,
-            points: f64s(&|f| f.points.iter().flat_map(|p| p.to_array()).collect()),
-            parameters: f64s(&|f| f.parameters.to_vec()),
+            points: f64s(all.iter().flat_map(|f| f.points).flat_map(|p| p.to_array()).collect()),
+            parameters: f64s(all.iter().flat_map(|f| f.parameters).collect()),
             kind: Uint8Array::from(&kind[..]),
-            torsal: f64s(&|f| f.torsal.iter().flat_map(|w| w.to_array()).collect()),
-            middle: f64s(&|f| f.middle.to_array().to_vec()),
-            normality: f64s(&|f| vec![f.normality]),
+            torsal: f64s(all.iter().flat_map(|f| f.torsal).flat_map(|w| w.to_array()).collect()),
+            middle: f64s(all.iter().flat_map(|f| f.middle.to_array()).collect()),
+            normality: f64s(all.iter().map(|f| f.normality).collect()),
         },
     )
 }
@@ -129,6 +127,8 @@ struct ComplexJs {
     axis_point: Float64Array,
     #[serde(with = "serde_wasm_bindgen::preserve")]
     axis_direction: Float64Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    axis_segment: Float64Array,
     residual: f64,
     #[serde(with = "serde_wasm_bindgen::preserve")]
     spectrum: Float64Array,
@@ -154,6 +154,9 @@ fn complex_js(func: &str, segments: &[Segment], options: JsValue) -> Result<JsVa
             pitch: f.pitch,
             axis_point: Float64Array::from(&f.axis_point.to_array()[..]),
             axis_direction: Float64Array::from(&f.axis_direction.to_array()[..]),
+            axis_segment: Float64Array::from(
+                &[f.axis_segment[0].to_array(), f.axis_segment[1].to_array()].concat()[..],
+            ),
             residual: f.residual,
             spectrum: Float64Array::from(&f.spectrum[..]),
             nullity: f.nullity,
@@ -187,14 +190,6 @@ impl RuledSurface {
     }
 }
 
-/// The centre of the bounding box of `points` and three times its diagonal: how far a focal
-/// sheet is drawn.
-fn frame(points: &[DVec3]) -> (DVec3, f64) {
-    let lo = points.iter().fold(DVec3::splat(f64::INFINITY), |a, &p| a.min(p));
-    let hi = points.iter().fold(DVec3::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
-    (0.5 * (lo + hi), 3.0 * (hi - lo).length().max(1e-9))
-}
-
 /// `FocalSheetBuffers`.
 #[derive(Serialize)]
 struct SheetJs {
@@ -218,7 +213,7 @@ impl LineCongruence {
     }
 
     /// Focal sheet 1 (of t1) or 2 (of t2) as a mesh with vertex normals: the grid's quads whose
-    /// four focal points are real and within three bounding-box diagonals of the lines.
+    /// four focal points are real and within three bounding-box diagonals of the lines' centre.
     #[wasm_bindgen(js_name = focalSheetF32, unchecked_return_type = "FocalSheetBuffers")]
     pub fn focal_sheet_f32(
         &self,
@@ -228,9 +223,7 @@ impl LineCongruence {
         let sheet = args::integer(F, "sheet", &sheet, 1, 2)?;
         let c = self.core();
         let all = focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q());
-        let points: Vec<DVec3> = c.p().into_iter().chain(c.q()).collect();
-        let (centre, reach) = frame(&points);
-        let mesh = focal::focal_sheet(c.rows(), c.cols(), &all, sheet - 1, centre, reach);
+        let mesh = focal::focal_sheet(c, &all, sheet - 1);
         let normals = mesh.vertex_normals();
         to_js(
             F,

@@ -102,6 +102,8 @@ test('linearComplex: a helical surface gives its screw axis, a hyperboloid a reg
       assert.ok(f.plucker instanceof Float64Array && f.plucker.length === 6);
       assert.ok(Math.hypot(f.axisDirection[0], f.axisDirection[1]) < 1e-9, `axis ${f.axisDirection}`);
       assert.ok(Math.hypot(...f.axisPoint) < 1e-9);
+      assert.ok(f.axisSegment instanceof Float64Array && f.axisSegment.length === 6);
+      assert.ok(Math.hypot(f.axisSegment[0], f.axisSegment[1], f.axisSegment[3], f.axisSegment[4]) < 1e-9, 'the piece of axis lies on the z-axis');
       assert.ok(f.residual < 1e-12);
       const free = linearComplex(s.segments());
       assert.equal(free.kind, 'complex');

@@ -43,15 +43,8 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name) {
   if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: segments, indices: stripIndices(p.n, closed) });
   // beyond the paper: the linear complex that fits the rulings (README, "Focal geometry")
   const complex = surface.linearComplex({ tolerance: 1e-6 });
-  const box = bounds(segments);
-  if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisPoint[0])) {
-    // the axis as a segment through its point nearest the centre of the view, two box diagonals long
-    const centre = box.min.map((lo, k) => (lo + box.max[k]) / 2);
-    const d = complex.axisDirection;
-    const along = (centre[0] - complex.axisPoint[0]) * d[0] + (centre[1] - complex.axisPoint[1]) * d[1] + (centre[2] - complex.axisPoint[2]) * d[2];
-    const half = Math.hypot(...box.max.map((hi, k) => hi - box.min[k]));
-    const at = (/** @type {number} */ s) => [0, 1, 2].map((k) => complex.axisPoint[k] + (along + s) * d[k]);
-    layers.push({ kind: 'segments', style: 'complexAxis', positions: new Float32Array([...at(-half), ...at(half)]) });
+  if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisSegment[0])) {
+    layers.push({ kind: 'segments', style: 'complexAxis', positions: f32(complex.axisSegment) });
   }
   const middle = inv.distributionMean.length ? inv.distributionMean[Math.floor(inv.distributionMean.length / 2)] : NaN;
   const shown = [
@@ -61,7 +54,7 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name) {
     p.exact && t('striction.describe.exact'),
   ].filter(Boolean);
   return {
-    bounds: box,
+    bounds: bounds(segments),
     camera: { yaw: -0.9, pitch: 0.45 },
     layers,
     readouts: [
