@@ -87,6 +87,7 @@ export function focalFigure(own, grid, p, { t }) {
     }
   }
   if (p.torsal) layers.push({ kind: 'segments', style: 'torsal', positions: grid.torsalStrokesF32() });
+  // looser than the default 1e-9: imported data carry the digits a file printed
   const complex = grid.linearComplex({ tolerance: 1e-6 });
   const normality = real.length ? Math.max(...real) : NaN;
   /** @type {import('../scene.js').Readout[]} */

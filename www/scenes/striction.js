@@ -42,6 +42,7 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name) {
   }
   if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: segments, indices: stripIndices(p.n, closed) });
   // beyond the paper: the linear complex that fits the rulings (README, "Focal geometry")
+  // looser than the default 1e-9: your data and formulas carry the digits a file or a slider gave
   const complex = surface.linearComplex({ tolerance: 1e-6 });
   if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisSegment[0])) {
     layers.push({ kind: 'segments', style: 'complexAxis', positions: f32(complex.axisSegment) });
