@@ -6,6 +6,7 @@ import { importSegments, liveObjects } from '../pkg/ruledlab.js';
 import { start, memoryBytes } from './core.js';
 import { Stage, download } from './stage.js';
 import { SCENES } from './scenes/index.js';
+import { PRESETS, findPreset } from './paper.js';
 import { readState, writeState, linkable } from './state.js';
 import { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
 import { adoptStyles } from './ui/css.js';
@@ -47,12 +48,15 @@ export async function startPage({ oneFile = false } = {}) {
   const pickerLabel = el('label', { className: 'picker' });
   const picker = el('select', { id: 'scene' });
   pickerLabel.append(el('span'), picker);
+  const paperLabel = el('label', { className: 'picker' });
+  const paperPicker = el('select', { id: 'paper' });
+  paperLabel.append(el('span'), paperPicker);
   const langLabel = el('label', { className: 'picker' });
   const langPicker = el('select', { id: 'lang' });
   for (const code of LANGUAGE_CODES) langPicker.add(new Option(NATIVE[/** @type {keyof typeof NATIVE} */ (code)] ?? code, code));
   langLabel.append(el('span'), langPicker);
   const shareButton = el('button', { type: 'button', id: 'share' });
-  header.append(title, subtitle, pickerLabel, langLabel, shareButton);
+  header.append(title, subtitle, pickerLabel, paperLabel, langLabel, shareButton);
   const main = el('main', { id: 'main' });
   doc.body.replaceChildren(skip, header, main);
 
@@ -103,6 +107,9 @@ export async function startPage({ oneFile = false } = {}) {
     langPicker.value = lang;
     picker.replaceChildren(...SCENES.map((s) => new Option(t(s.title).replace(/[_^]\{?([^}]*)\}?/g, '$1'), s.id)));
     if (stage.scene) picker.value = stage.scene.id;
+    /** @type {Text} */ (paperLabel.firstChild).textContent = `${t('app.figures')} `;
+    paperPicker.replaceChildren(new Option(t('paper.none'), ''), ...PRESETS.map((p) => new Option(t(p.label).replace(/[_^]\{?([^}]*)\}?/g, '$1'), p.id)));
+    paperPicker.value = stage.paper?.id ?? '';
     shareButton.textContent = t('app.share');
     ioSummary.textContent = t('io.summary');
     pasteLabel.textContent = t('io.paste');
@@ -121,7 +128,7 @@ export async function startPage({ oneFile = false } = {}) {
     clearTimeout(hashTimer);
     const write = () => {
       if (!stage.scene) return;
-      const hash = `#${writeState({ ...state, scene: stage.scene, params: stage.params, camera: stage.viewer.camera.toArray(), lang: state.lang, data: stage.data })}`;
+      const hash = `#${writeState({ ...state, scene: stage.scene, params: stage.params, camera: stage.viewer.camera.toArray(), lang: state.lang, data: stage.data, paper: stage.paper?.id ?? null })}`;
       if (hash === location.hash) return;
       if (mode === 'push') history.pushState(null, '', hash);
       else history.replaceState(null, '', hash);
@@ -138,7 +145,7 @@ export async function startPage({ oneFile = false } = {}) {
     stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
     const stored = sessionStorage.getItem(STORED);
     const data = state.data ?? (stored ? parseStored(stored) : null);
-    await stage.open(state.scene, state.params, { camera: state.camera, data, notes: state.notes, autoplay: state.autoplay });
+    await stage.open(state.scene, state.params, { camera: state.camera, data, notes: state.notes, autoplay: state.autoplay, paper: findPreset(state.paper) ?? null });
     picker.value = state.scene.id;
     localize();
   };
@@ -158,6 +165,15 @@ export async function startPage({ oneFile = false } = {}) {
     const scene = SCENES.find((s) => s.id === picker.value);
     if (!scene) return;
     stage.open(scene, {}, {}).then(() => {
+      saveHash('push');
+      localize();
+    });
+  });
+  paperPicker.addEventListener('change', () => {
+    const preset = findPreset(paperPicker.value);
+    const scene = SCENES.find((s) => s.id === (preset?.scene ?? stage.scene?.id));
+    if (!scene) return;
+    stage.open(scene, preset ? preset.params : stage.params, { paper: preset ?? null }).then(() => {
       saveHash('push');
       localize();
     });
@@ -248,11 +264,11 @@ export async function startPage({ oneFile = false } = {}) {
       return { wrap, refresh: () => ((area.value = value()), (done.textContent = '')) };
     };
     const base = () => location.href.split('#')[0];
-    const hash = () => writeState({ ...state, scene: /** @type {any} */ (stage.scene), params: stage.params, camera: stage.viewer.camera.toArray(), lang, data: stage.data });
+    const hash = () => writeState({ ...state, scene: /** @type {any} */ (stage.scene), params: stage.params, camera: stage.viewer.camera.toArray(), lang, data: stage.data, paper: stage.paper?.id ?? null });
     const fields = [
       field(t('share.link'), 'share-link', () => `${base()}#${hash()}`),
       field(t('share.iframe'), 'share-iframe', () => iframeSnippet(base(), hash(), t(stage.scene?.title ?? ''))),
-      field(t('share.element'), 'share-element', () => elementSnippet(/** @type {any} */ (stage.scene), stage.params, lang, oneFile ? 'ruledlab-embed.js' : new URL('./view.js', import.meta.url).href)),
+      field(t('share.element'), 'share-element', () => elementSnippet(/** @type {any} */ (stage.scene), stage.params, lang, oneFile ? 'ruledlab-embed.js' : new URL('./view.js', import.meta.url).href, stage.paper)),
     ];
     const onefile = el('button', { type: 'button', id: 'share-onefile', textContent: t('app.onefile') });
     const onefileNote = el('p', { className: 'share-note', hidden: true });
@@ -315,10 +331,21 @@ export function iframeSnippet(/** @type {string} */ base, /** @type {string} */ 
   return `<iframe src="${attr(src)}" title="${attr(title.replace(/[_^]\{?([^}]*)\}?/g, '$1'))}" width="900" height="560" style="border: 0" allow="fullscreen"></iframe>`;
 }
 
-/** A <ruled-view> element showing this scene with these parameters. */
-export function elementSnippet(/** @type {import('./scene.js').Scene} */ scene, /** @type {import('./scene.js').Params} */ params, /** @type {string} */ lang, /** @type {string} */ script) {
+/**
+ * A <ruled-view> element showing this scene with these parameters (and the figure of the paper
+ * shown, if any: then only the values that differ from the figure's are listed).
+ * @param {import('./scene.js').Scene} scene
+ * @param {import('./scene.js').Params} params
+ * @param {string} lang
+ * @param {string} script
+ * @param {import('./paper.js').PaperPreset | null} [paper]
+ */
+export function elementSnippet(scene, params, lang, script, paper = null) {
+  /** @type {import('./scene.js').Params} */
+  const base = { ...Object.fromEntries(scene.params.map((p) => [p.key, p.value])), ...(paper?.params ?? {}) };
   const q = new URLSearchParams();
-  for (const p of scene.params) if (params[p.key] !== p.value) q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : String(params[p.key]));
+  for (const p of scene.params) if (params[p.key] !== base[p.key]) q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : String(params[p.key]));
+  const figure = paper ? ` paper="${paper.id}"` : '';
   const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
-  return `<script type="module" src="${attr(script)}"></script>\n<ruled-view scene="${attr(scene.id)}" params="${attr(q.toString())}" lang="${attr(lang)}" controls style="height: 560px"></ruled-view>`;
+  return `<script type="module" src="${attr(script)}"></script>\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}" lang="${attr(lang)}" controls style="height: 560px"></ruled-view>`;
 }

@@ -126,8 +126,8 @@ export function richSvgText(el, doc, label, attrs) {
   return text;
 }
 
-/** A marker shape centred at (x, y). */
-function marker(/** @type {(tag: string, attrs?: Record<string, string | number>) => Element} */ el, /** @type {string} */ kind, /** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ r) {
+/** A marker shape centred at (x, y) (shared with the stencil picture). */
+export function marker(/** @type {(tag: string, attrs?: Record<string, string | number>) => Element} */ el, /** @type {string} */ kind, /** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ r) {
   if (kind === 'square') return el('rect', { x: x - r, y: y - r, width: 2 * r, height: 2 * r });
   if (kind === 'triangle') return el('polygon', { points: `${x},${y - r * 1.2} ${x - r * 1.1},${y + r * 0.8} ${x + r * 1.1},${y + r * 0.8}` });
   if (kind === 'diamond') return el('polygon', { points: `${x},${y - r * 1.3} ${x + r * 1.1},${y} ${x},${y + r * 1.3} ${x - r * 1.1},${y}` });

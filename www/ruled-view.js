@@ -4,7 +4,9 @@
 //   <ruled-view scene="isometry" params="surface=helical&t=0.5" controls lang="de"></ruled-view>
 //
 // Attributes (also properties): `scene` (a scene id), `params` (its parameters as a query
-// string; omitted ones take their defaults), `controls` (show the sliders, menus, checkboxes and
+// string; omitted ones take their defaults), `paper` (a figure or example of the paper, e.g.
+// "fig15" or "ex3": its scene with the paper's settings and the card saying what the paper shows
+// and where ruledlab differs; `params` still override), `controls` (show the sliders, menus, checkboxes and
 // the readout, beside or below the view as the element's width allows), `text` (the
 // explanation too), `autoplay` (play the first playable parameter, unless the reader prefers
 // reduced motion), `lang` ("en" or "de"; default: the page's language, then the browser's). The
@@ -15,6 +17,7 @@
 import { Stage } from './stage.js';
 import { SCENES } from './scenes/index.js';
 import { readParams, defaults } from './scene.js';
+import { PRESETS, findPreset, withPreset } from './paper.js';
 import { adoptStyles } from './ui/css.js';
 import { exportSvg } from './export/svg.js';
 import { exportTikz } from './export/tikz.js';
@@ -28,7 +31,7 @@ const HOST_CSS = `:host { display: block; position: relative; height: 480px; min
 let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
 
 export class RuledView extends HTMLElement {
-  static observedAttributes = ['scene', 'params', 'controls', 'text', 'autoplay', 'lang'];
+  static observedAttributes = ['scene', 'paper', 'params', 'controls', 'text', 'autoplay', 'lang'];
 
   constructor() {
     super();
@@ -47,10 +50,17 @@ export class RuledView extends HTMLElement {
   }
 
   get scene() {
-    return this.getAttribute('scene') ?? SCENES[0].id;
+    return this.getAttribute('scene') ?? findPreset(this.paper)?.scene ?? SCENES[0].id;
   }
   set scene(id) {
     this.setAttribute('scene', String(id));
+  }
+  /** The figure or example of the paper shown (an id of PRESETS in paper.js), or "". */
+  get paper() {
+    return this.getAttribute('paper') ?? '';
+  }
+  set paper(id) {
+    this.setAttribute('paper', String(id));
   }
   get params() {
     return this.getAttribute('params') ?? '';
@@ -134,7 +144,7 @@ export class RuledView extends HTMLElement {
   /** @param {string} name @param {string | null} before @param {string | null} after */
   attributeChangedCallback(name, before, after) {
     if (!this.stage || before === after) return;
-    if (name === 'scene' || name === 'params') this.open();
+    if (name === 'scene' || name === 'params' || name === 'paper') this.open();
     else if (name === 'controls' || name === 'text') this.stage.setPanel(this.controls, this.text);
     else if (name === 'lang') this.stage.setLanguage(after);
     else if (name === 'autoplay' && after !== null) this.open();
@@ -150,9 +160,17 @@ export class RuledView extends HTMLElement {
       stage.fail(error);
       return this.opening;
     }
-    const { params, notes } = readParams(scene, new URLSearchParams(this.params));
+    const preset = findPreset(this.paper);
+    if (this.paper && !preset) {
+      const error = Object.assign(new Error(`unknown figure of the paper "${this.paper}"; known: ${PRESETS.map((p) => p.id).join(', ')}`), { code: 'invalid-argument' });
+      stage.fail(error);
+      return this.opening;
+    }
+    const paper = preset && preset.scene === scene.id ? preset : null;
+    const query = new URLSearchParams(this.params);
+    const { params, notes } = readParams(scene, paper ? withPreset(paper, scene, query) : query);
     this.opening = stage
-      .open(scene, { ...defaults(scene), ...params }, { data: this._data, notes, autoplay: this.autoplay })
+      .open(scene, { ...defaults(scene), ...params }, { data: this._data, notes, autoplay: this.autoplay, paper })
       .catch(() => {});
     return this.opening;
   }

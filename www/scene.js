@@ -97,7 +97,15 @@
  * @property {Download[]} [downloads]
  * @property {{segments: Float64Array, grid?: {rows: number, cols: number}}} [data]   for export
  * @property {string} [note]          a remark shown under the readout (e.g. the level of detail)
+ * @property {Claim[]} [claims]      the comparative sentences that apply to these parameters,
+ *   each checked against the numbers of the readout (tests/node/claims.test.mjs sweeps the
+ *   range each claim states and requires it to hold)
  * @property {(onProgress: (fraction: number) => void) => Promise<Built>} [later]   heavy work finishing in a worker
+ *
+ * A comparative sentence of the page, checked against the numbers shown beside it.
+ * @typedef {object} Claim
+ * @property {string} text           i18n key of the sentence (it states the range it covers)
+ * @property {boolean} holds         whether the readout's numbers bear it out here
  *
  * @typedef {object} Download
  * @property {string} label          i18n key
@@ -107,7 +115,7 @@
  */
 
 /** Hash keys the page itself uses: no scene parameter may take them. */
-export const RESERVED_KEYS = Object.freeze(['scene', 'cam', 'embed', 'controls', 'text', 'lang', 'autoplay', 'data', 'note', 'view']);
+export const RESERVED_KEYS = Object.freeze(['scene', 'cam', 'embed', 'controls', 'text', 'lang', 'autoplay', 'data', 'note', 'view', 'paper']);
 
 /** Longest text parameter (a formula), in characters. */
 export const MAX_TEXT_PARAM = 1000;

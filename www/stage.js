@@ -10,10 +10,11 @@ import { defaults } from './scene.js';
 import { translator, pickLanguage } from './i18n/index.js';
 import { buildControls } from './ui/controls.js';
 import { showLegend } from './ui/legend.js';
-import { showReadout, readoutSentence } from './ui/readout.js';
+import { showReadout, showClaims, readoutSentence } from './ui/readout.js';
 import { Player } from './ui/player.js';
 import { appendRich } from './ui/richtext.js';
 import { refineInWorker } from './compute.js';
+import { atPreset } from './paper.js';
 
 /** Below this width (CSS px) the panel goes under the view. */
 const NARROW = 720;
@@ -78,15 +79,18 @@ export class Stage {
 
     this.panel = el('div', { className: 'rl-panel' });
     this.heading = el('h2');
+    this.paperCard = el('section', { className: 'rl-paper', hidden: true });
+    this.paperCard.id = `${id}-paper`;
     this.form = /** @type {HTMLFormElement} */ (el('form', { className: 'rl-controls' }));
     this.player = el('div', { className: 'rl-player', hidden: true });
     this.readout = el('dl', { className: 'rl-readout' });
     this.note = el('p', { className: 'rl-readout-note', hidden: true });
+    this.claims = el('ul', { className: 'rl-claims', hidden: true });
     this.caption = el('p', { className: 'rl-caption' });
     this.figure = el('figure', { className: 'rl-figure' });
     this.downloads = el('div', { className: 'rl-downloads' });
     this.text = el('article', { className: 'rl-text' });
-    this.panel.append(this.heading, this.form, this.player, this.readout, this.note, this.caption, this.figure, this.downloads, this.text);
+    this.panel.append(this.heading, this.paperCard, this.form, this.player, this.readout, this.claims, this.note, this.caption, this.figure, this.downloads, this.text);
     this.root.append(this.view, this.panel);
     this.shortcuts = /** @type {HTMLDialogElement} */ (el('dialog', { className: 'rl-shortcuts' }));
     this.root.append(this.shortcuts);
@@ -108,6 +112,8 @@ export class Stage {
     this.params = {};
     /** @type {import('./scene.js').ImportedData | null} */
     this.data = null;
+    /** @type {import('./paper.js').PaperPreset | null} the figure of the paper shown, if any */
+    this.paper = null;
     /** @type {ReturnType<typeof buildControls> | null} */
     this.controls = null;
     this.lastAnnounced = 0;
@@ -191,7 +197,7 @@ export class Stage {
    * Opens a scene with `params` (missing ones take their defaults).
    * @param {import('./scene.js').Scene} scene
    * @param {import('./scene.js').Params} params
-   * @param {{camera?: number[] | null, fit?: boolean, data?: import('./scene.js').ImportedData | null, notes?: Array<{key: string, note: string}>, autoplay?: boolean}} [options]
+   * @param {{camera?: number[] | null, fit?: boolean, data?: import('./scene.js').ImportedData | null, notes?: Array<{key: string, note: string}>, autoplay?: boolean, paper?: import('./paper.js').PaperPreset | null}} [options]
    */
   async open(scene, params, options = {}) {
     try {
@@ -201,6 +207,7 @@ export class Stage {
       throw e;
     }
     if (options.data !== undefined) this.data = options.data;
+    this.paper = options.paper && options.paper.scene === scene.id ? options.paper : null;
     this.enter(scene, { ...defaults(scene), ...params }, { camera: options.camera ?? null, fit: true });
     this.showNotes(options.notes ?? []);
     if (options.autoplay && !Player.reducedMotion()) {
@@ -228,6 +235,7 @@ export class Stage {
       onPlay: (key) => this.togglePlay(key),
     });
     this.buildPlayer();
+    this.showPaper();
     this.compute({ fit: fit && !camera });
     if (camera) {
       this.viewer.camera.fromArray(camera);
@@ -247,6 +255,7 @@ export class Stage {
     const p = this.param(key);
     this.params = { ...this.params, [key]: value, ...(p?.sets?.(value, this.params) ?? {}) };
     this.controls?.update(this.params);
+    this.showPaper();
     this.compute({ fit: p?.type === 'select' && p.refit !== false });
     this.options.onChange?.({ reason: 'param', ended });
     if (ended) this.announce();
@@ -261,12 +270,55 @@ export class Stage {
     if (built) this.error.hidden = true;
   }
 
+  /**
+   * The card of the paper's figure shown (if any): its caption, what ruledlab shows and whose
+   * data it is, where ruledlab goes beyond the paper, and — once a control has moved — the way
+   * back to the figure's own settings.
+   */
+  showPaper() {
+    const card = this.paperCard;
+    const preset = this.paper;
+    card.hidden = !preset || !this.scene;
+    if (!preset || !this.scene) return card.replaceChildren();
+    const { t } = this.i18n;
+    const doc = this.root.ownerDocument;
+    const el = (/** @type {string} */ tag, /** @type {string} */ className, /** @type {string} */ text) => appendRich(Object.assign(doc.createElement(tag), { className }), text);
+    const heading = el('h3', 'rl-paper-title', t('paper.heading', { figure: t(preset.label) }));
+    heading.id = `${card.id}-title`;
+    card.setAttribute('aria-labelledby', heading.id);
+    const caption = el('blockquote', 'rl-paper-caption', t(preset.caption));
+    const note = el('p', 'rl-paper-note', t(preset.note));
+    const data = el('p', `rl-paper-data rl-data-${preset.data}`, t(`paper.data.${preset.data}`));
+    card.replaceChildren(heading, caption, note, data);
+    if (preset.beyond) {
+      const beyond = doc.createElement('p');
+      beyond.className = 'rl-beyond';
+      beyond.append(Object.assign(doc.createElement('strong'), { textContent: `${t('paper.beyondTitle')} ` }));
+      appendRich(beyond, t(preset.beyond));
+      card.append(beyond);
+    }
+    if (!atPreset(preset, this.scene, this.params)) {
+      const changed = el('p', 'rl-paper-changed', `${t('paper.changed')} `);
+      const back = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('paper.back', { figure: t(preset.label) }) });
+      back.addEventListener('click', () => {
+        if (!this.scene) return;
+        this.stopPlaying();
+        this.enter(this.scene, { ...defaults(this.scene), ...preset.params }, { fit: true });
+        this.options.onChange?.({ reason: 'param', ended: true });
+        this.announce();
+      });
+      changed.append(back);
+      card.append(changed);
+    }
+  }
+
   /** After a computation: legend, readout, description, downloads, figure. */
   shown(/** @type {import('./scene.js').Built} */ built, /** @type {boolean} */ final) {
     if (!this.scene) return;
     const { t } = this.i18n;
     showLegend(this.legend, this.scene, this.params, t);
     showReadout(this.readout, built.readouts ?? [], this.i18n);
+    showClaims(this.claims, built.claims ?? [], t);
     this.note.hidden = !built.note;
     this.note.textContent = built.note ?? '';
     this.description.replaceChildren();

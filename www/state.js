@@ -4,6 +4,7 @@
 // A hash longer than MAX_HASH characters is not read at all (the page says so); a value that
 // cannot be used falls back to its default with a note, never an exception.
 import { readParams, serialize } from './scene.js';
+import { findPreset, withPreset } from './paper.js';
 
 /** Longest hash read, in characters (imported data of up to 200 rulings fits at full precision). */
 export const MAX_HASH = 65536;
@@ -23,6 +24,7 @@ export const MAX_LINK_RULINGS = 200;
  * @property {boolean} autoplay          start playing
  * @property {import('./scene.js').ImportedData | null} data
  * @property {Array<{key: string, note: string}>} notes   values that were not used, and why
+ * @property {string | null} [paper]    the figure or example of the paper shown (paper.js), if any
  */
 
 /**
@@ -38,13 +40,18 @@ export function readState(hash, scenes) {
     notes.push({ key: 'link', note: 'note.linkTooLong' });
     text = '';
   }
-  const q = new URLSearchParams(text);
-  const wanted = q.get('scene');
+  let q = new URLSearchParams(text);
+  const preset = findPreset(q.get('paper'));
+  if (q.has('paper') && !preset) notes.push({ key: 'paper', note: 'note.unknownFigure' });
+  const wanted = q.get('scene') ?? preset?.scene ?? null;
   let scene = scenes.find((s) => s.id === wanted);
   if (!scene) {
     if (wanted !== null) notes.push({ key: 'scene', note: 'note.unknownScene' });
     scene = scenes[0];
   }
+  // a figure of the paper: its values where the link gives none (a link naming another scene wins)
+  const paper = preset && preset.scene === scene.id ? preset : null;
+  if (paper) q = withPreset(paper, scene, q);
   const read = readParams(scene, q);
   notes.push(...read.notes);
   const camera = (q.get('cam') ?? '').split(',').map(Number);
@@ -64,6 +71,7 @@ export function readState(hash, scenes) {
     autoplay: q.has('autoplay'),
     data,
     notes,
+    paper: paper?.id ?? null,
   };
 }
 
@@ -76,6 +84,7 @@ export function writeState(state) {
   if (state.embed) q.set('embed', '');
   if (state.embed && state.controls) q.set('controls', '');
   if (state.embed && state.text) q.set('text', '');
+  if (state.paper) q.set('paper', state.paper);
   q.set('scene', state.scene.id);
   for (const p of state.scene.params) q.set(p.key, serialize(p, state.params[p.key]));
   if (state.camera) q.set('cam', state.camera.map((x) => Number(x.toPrecision(6))).join(','));

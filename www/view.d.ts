@@ -98,8 +98,36 @@ export interface Built {
   downloads?: Download[];
   data?: { segments: Float64Array; grid?: { rows: number; cols: number } };
   note?: string;
+  /** The comparative sentences that apply here, each checked against the readout's numbers. */
+  claims?: Claim[];
   later?: (onProgress: (fraction: number) => void) => Promise<Built>;
 }
+
+/** A comparative sentence of the page (i18n key), and whether the readout bears it out here. */
+export interface Claim {
+  text: string;
+  holds: boolean;
+}
+
+/** A figure or example of the paper as a preset of a scene (www/paper.js). */
+export interface PaperPreset {
+  /** fig1 … fig18, ex1 … ex6 (fig5-orthogonal, fig13-right: a figure's second case). */
+  id: string;
+  /** i18n key of its name ("Fig. 3: discrete central curve"). */
+  label: string;
+  scene: string;
+  params: Params;
+  /** i18n key of the paper's caption. */
+  caption: string;
+  /** i18n key: what ruledlab shows, and whose data. */
+  note: string;
+  /** i18n key: where ruledlab goes beyond or corrects the paper. */
+  beyond?: string;
+  data: "paper" | "partly" | "none";
+}
+/** Every figure (1–18) and example (1–6) of the paper. */
+export const PRESETS: PaperPreset[];
+export function findPreset(id: string | null | undefined): PaperPreset | undefined;
 
 /** A scene: what it declares, and create(). */
 export interface Scene {
@@ -140,6 +168,8 @@ export interface ViewState {
   autoplay: boolean;
   data: ImportedData | null;
   notes: Array<{ key: string; note: string }>;
+  /** The figure or example of the paper shown (a PRESETS id), if any. */
+  paper?: string | null;
 }
 export function readState(hash: string, scenes: Scene[]): ViewState;
 export function writeState(state: Omit<ViewState, "notes">): string;
@@ -203,10 +233,12 @@ export class Stage {
   scene: Scene | null;
   params: Params;
   data: ImportedData | null;
+  /** The figure of the paper shown, if any. */
+  paper: PaperPreset | null;
   open(
     scene: Scene,
     params: Params,
-    options?: { camera?: number[] | null; fit?: boolean; data?: ImportedData | null; notes?: Array<{ key: string; note: string }>; autoplay?: boolean },
+    options?: { camera?: number[] | null; fit?: boolean; data?: ImportedData | null; notes?: Array<{ key: string; note: string }>; autoplay?: boolean; paper?: PaperPreset | null },
   ): Promise<void>;
   setParam(key: string, value: ParamValue, ended?: boolean): void;
   setPanel(controls: boolean, text: boolean): void;
@@ -243,10 +275,12 @@ export interface RuledViewErrorDetail {
   code: string | null;
 }
 
-/** <ruled-view>: a scene as a custom element (attributes scene, params, controls, text, autoplay, lang). */
+/** <ruled-view>: a scene as a custom element (attributes scene, paper, params, controls, text, autoplay, lang). */
 export class RuledView extends HTMLElement {
   static readonly observedAttributes: string[];
   scene: string;
+  /** A figure or example of the paper (a PRESETS id such as "fig15"), or "". */
+  paper: string;
   params: string;
   controls: boolean;
   text: boolean;

@@ -6,6 +6,7 @@ export { RuledView } from './ruled-view.js';
 export { Stage } from './stage.js';
 export { Viewer } from './viewer.js';
 export { SCENES } from './scenes/index.js';
+export { PRESETS, findPreset } from './paper.js';
 export { configure, start } from './core.js';
 export { readState, writeState } from './state.js';
 export { defineScene, scoped, bounds, readParams, defaults, RESERVED_KEYS } from './scene.js';

@@ -109,6 +109,35 @@ impl Development {
     }
 }
 
+/// The signed radius of curvature of the envelope of the developed rulings at each interior
+/// ruling (beyond the paper: when Fig. 5's caption holds),
+///
+/// ρ_i = (f_{i,i+1} − f_{i,i−1})·e_i / ((φ_{i−1,i} + φ_{i,i+1})/2),
+///
+/// the step between the two footpoints on R_i over the turn of the rulings there. The
+/// isometry keeps both, and in the development the step is the chord of the envelope between
+/// two consecutive contact points while the projected rulings turn by φ, so ρ_i is its radius of
+/// curvature. By (6) with ERRATA.md 3, f_{i,i±1} = s ± (H/2)(e·ṡ) e + O(H²) and φ = H|ė| + O(H²),
+/// so ρ_i → (e·ṡ)/|ė| at second order (the O(H²) terms of the two footpoints are symmetric).
+/// For the ruled helical surface of Fig. 5 (radius r, pitch p, rulings at slope β) that is
+/// r + p tan β: the conoidal rulings touch a cylinder of that radius about the axis, and meet
+/// the axis, as the caption says, only when tan β = −r/p (e·ṡ = 0). N − 2 values; NaN where a
+/// neighbouring pair is parallel.
+pub fn envelope_radii(surface: &RuledSurface) -> Vec<f64> {
+    let inv = surface.invariants();
+    let n = surface.len();
+    (1..n.saturating_sub(1))
+        .map(|i| {
+            if inv.parallel[i - 1] || inv.parallel[i] {
+                return f64::NAN;
+            }
+            let e = surface.segment(i).line().dir;
+            let step = (inv.footpoints[2 * i] - inv.footpoints[2 * i - 1]).dot(e);
+            step / (0.5 * (inv.angle[i - 1] + inv.angle[i]))
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -148,5 +177,54 @@ mod tests {
         assert_near!(dev.points[1], DVec2::new(1.0, 0.0), EXACT);
         let e1 = (dev.points[3] - dev.points[2]).normalize();
         assert_near!(e1.y.atan2(e1.x), s.invariants().angle[0], EXACT);
+    }
+
+    /// ρ at the middle ruling of the helical surface sampled with `n` rulings over [0, 9].
+    fn middle_radius(slope: f64, n: usize) -> f64 {
+        let helical = crate::examples::AnalyticSurface::HelicalRuled { radius: 1.0, pitch: 0.4, slope };
+        let ranges = crate::examples::Ranges { u: (0.0, 9.0), v: (-1.0, 1.0), closed: false };
+        let radii = envelope_radii(&helical.sample(n, ranges).unwrap());
+        radii[radii.len() / 2]
+    }
+
+    #[test]
+    fn envelope_radius_of_the_helical_surfaces_is_r_plus_p_tan_beta_at_second_order() {
+        use crate::examples::surfaces::ORTHOGONAL_SLOPE;
+        for (slope, exact) in
+            [(std::f64::consts::FRAC_PI_4, 1.4), (ORTHOGONAL_SLOPE, 0.0), (0.3, 1.0 + 0.4 * 0.3f64.tan())]
+        {
+            let errors: Vec<f64> = [13, 25, 49, 97].iter().map(|&n| (middle_radius(slope, n) - exact).abs()).collect();
+            for w in errors.windows(2) {
+                let order = (w[0] / w[1]).log2();
+                assert!((1.8..2.3).contains(&order), "slope {slope}: errors {errors:?}");
+            }
+            assert!(errors[3] < 2e-3, "slope {slope}: errors {errors:?}");
+        }
+    }
+
+    #[test]
+    fn envelope_radii_move_with_rigid_motions_and_flip_with_the_orientation() {
+        let s = RuledSurface::from_flat(&[
+            0.0, 0.0, 0.0, 1.0, 0.0, 0.0, //
+            0.0, 0.1, 1.0, 0.0, 1.0, 1.0, //
+            0.3, 0.0, 2.5, 1.0, 1.0, 2.0, //
+            0.0, 0.4, 3.0, 0.0, -1.0, 3.7,
+        ])
+        .unwrap();
+        let radii = envelope_radii(&s);
+        assert_eq!(radii.len(), 2);
+        let motion = DMat4::from_rotation_translation(
+            glam::DQuat::from_axis_angle(DVec3::new(1.0, 2.0, -0.5).normalize(), 0.9),
+            DVec3::new(3.0, -1.0, 2.0),
+        );
+        let flat: Vec<f64> = s.points().iter().flat_map(|&p| motion.transform_point3(p).to_array()).collect();
+        for (a, b) in radii.iter().zip(envelope_radii(&RuledSurface::from_flat(&flat).unwrap())) {
+            assert_near!(*a, b, 1e-12);
+        }
+        // the same lines in the opposite order: the step and the radius change sign
+        let reversed: Vec<f64> =
+            s.points().chunks(2).rev().flat_map(|p| [p[0].to_array(), p[1].to_array()]).flatten().collect();
+        let back = envelope_radii(&RuledSurface::from_flat(&reversed).unwrap());
+        assert_near!(radii[0], -back[1], 1e-12);
     }
 }

@@ -7,7 +7,7 @@ pub mod invariants;
 pub mod isometry;
 pub mod surface;
 
-pub use development::Development;
+pub use development::{envelope_radii, Development};
 pub use invariants::{Invariants, PairInvariants};
 pub use isometry::HingeChain;
 pub use surface::RuledSurface;

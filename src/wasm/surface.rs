@@ -370,6 +370,15 @@ impl RuledSurface {
     pub fn non_developability(&self) -> f64 {
         Development::of(&self.inner).non_developability()
     }
+
+    /// The signed radius of curvature ρ_i of the envelope of the developed rulings at each
+    /// interior ruling, (f_{i,i+1} − f_{i,i−1})·e_i over the mean angle there: N − 2 values
+    /// (NaN beside a parallel pair). For a ruled helical surface it tends to the radius of the
+    /// cylinder its conoidal rulings touch, r + p tan β; 0 when Fig. 5's caption holds.
+    #[wasm_bindgen(js_name = envelopeRadii)]
+    pub fn envelope_radii(&self) -> Float64Array {
+        Float64Array::from(ruled::envelope_radii(&self.inner).as_slice())
+    }
 }
 
 /// An analytic ruled surface x(u, v) = a(u) + v d(u) with exact striction curve and

@@ -120,6 +120,7 @@ const CALLS = [
   (f) => f.surface.conoidal(),
   (f) => f.surface.development(),
   (f) => f.surface.nonDevelopability(),
+  (f) => f.surface.envelopeRadii(),
   (f) => f.surface.subdivide(value()),
   (f) => f.surface.subdivide(options()),
   (f) => f.surface.subdivide({ scheme: pick(STRINGS), steps: pick(SMALL), ...options() }),

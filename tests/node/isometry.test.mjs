@@ -63,6 +63,22 @@ test('development: 4 numbers per ruling, R_0 on the x-axis, a cone has measure 0
   assert.ok(cone.nonDevelopability() < 1e-12, `cone measure ${cone.nonDevelopability()}`);
 });
 
+test('envelopeRadii: N − 2 radii; Fig. 5: r + p tan β = 1.4 for rulings at 45°, → 0 (as H²) for rulings orthogonal to the striction helix', () => {
+  const middle = (name, n) => {
+    const a = AnalyticSurface.byName(name);
+    const s = a.sample(n, { uMin: 0, uMax: 9, closed: false });
+    const radii = s.envelopeRadii();
+    assert.equal(radii.length, n - 2);
+    const r = radii[Math.floor(radii.length / 2)];
+    s.free();
+    a.free();
+    return r;
+  };
+  assert.ok(Math.abs(middle('helical', 97) - 1.4) < 1e-3, `${middle('helical', 97)}`);
+  const [coarse, fine] = [middle('helical-orthogonal', 25), middle('helical-orthogonal', 49)];
+  assert.ok(Math.abs(fine) < 1e-2 && Math.abs(coarse / fine) > 3.5, `${coarse} ${fine}`);
+});
+
 test('bad arguments throw clear Errors and leave the surface usable', () => {
   const s = quartic(6);
   const cases = [

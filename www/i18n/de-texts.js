@@ -26,7 +26,8 @@ Erzeugenden an, ${mr('u + H / 2')}, ebenfalls von zweiter Ordnung; das Kehlpolyg
 ${m(sub('m', 'i'))} nähert sie an den Erzeugenden selbst an. Die Anzeige misst beide.</p>
 <p><strong>Probieren Sie es aus.</strong> Verdoppeln Sie die Zahl der Erzeugenden und beobachten Sie
 die Anzeige: Der Fehler der Fußpunkte halbiert sich, die Fehler beider Polygone fallen auf ein
-Viertel. Beim Hyperboloid aus Beispiel 1 ist die Kehllinie nicht die Kehlellipse; beim Kegel
+Viertel (auf dem Hyperboloid und der Quartik ab etwa 20 Erzeugenden; die Anzeige misst die Ordnungen
+von N zu 2N Erzeugenden). Beim Hyperboloid aus Beispiel 1 ist die Kehllinie nicht die Kehlellipse; beim Kegel
 treffen sich alle gemeinsamen Lote in der Spitze; beim Zylinder sind aufeinanderfolgende Erzeugende
 parallel, das gemeinsame Lot ist nicht eindeutig, und ruledlab sagt das (kein Wert, das Paar als
 parallel gezählt), statt zu raten.</p>
@@ -90,8 +91,11 @@ Die Arbeit zeigt das konoidale Bild einer Schraubregelfläche als Wendelfläche,
 Achse senkrecht treffen. Hier gemessen gilt das nur, wenn die Kehllinie die Erzeugenden rechtwinklig
 kreuzt. Im Allgemeinen berühren die konoidalen Erzeugenden einen Zylinder um die Achse mit dem Radius
 ${m(frac(row('e · ṡ'), row('| e′ |')))}: 1,4 für die Fläche mit Erzeugenden unter 45° (Radius 1,
-Ganghöhe 0,4). Wählen Sie „Erzeugende normal zur Kehlschraublinie“ (β = −atan(r/p)), dann ist der Radius
-0: Die Wendelfläche der Bildunterschrift erscheint.</p>
+Ganghöhe 0,4). Die Anzeige misst ihn diskret: ρ, der Abstand der beiden Fußpunkte auf einer
+Erzeugenden geteilt durch den Winkel, um den sich die Erzeugenden dort drehen, ist der Krümmungsradius
+der Hüllkurve der abgewickelten Erzeugenden und strebt mit zweiter Ordnung gegen
+${m(frac(row('e · ṡ'), row('| e′ |')))}. Wählen Sie „Erzeugende normal zur Kehlschraublinie“
+(β = −atan(r/p)), dann strebt ρ gegen 0: Im Grenzwert erscheint die Wendelfläche der Bildunterschrift.</p>
 <p class="rl-paper-data">Die Arbeit gibt für Abb. 4–6 keine Daten an; ruledlab verwendet die
 Quartik aus Beispiel 3, eine Schraubregelfläche (Radius 1, Ganghöhe 0,4) und einen Streifen des
 Hyperboloids aus Beispiel 1.</p>`,
@@ -128,14 +132,14 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 in den neuen Punkten, ist das Minimum genau die Mittelpunktsregel (wählen Sie „wörtlich“: Die Anzeige
 gleicht der Mittelpunktsregel). Die <em>gekoppelte</em> Energie von ruledlab nimmt Umbrella-Vektoren in
 jedem inneren Knoten, auch in den alten, sodass die neuen Erzeugenden gekoppelt sind und der Fläche
-viel besser folgen. Die <em>gemittelte</em> Variante mittelt die Umbrella-Vektoren der beiden
+ab n = 6 enger folgen. Die <em>gemittelte</em> Variante mittelt die Umbrella-Vektoren der beiden
 Triangulierungen vor dem Quadrieren: Die Energie (15) enthält einen Verdrillungsterm aus den
-gescherten Nachbarn der beiden Triangulierungen, den das Mitteln aufhebt; das macht das Innere des
-Streifens noch genauer. Auf dieser Fläche ist das Vierpunktschema an der schlechtesten Erzeugenden am
-besten: Seine Randkurven sind quadratisch, was w = 1/16 exakt reproduziert. Die Anzeige misst den
-Abstand der eingefügten Erzeugenden von der exakten Fläche.</p>
+gescherten Nachbarn der beiden Triangulierungen, den das Mitteln aufhebt. Auf dieser Fläche ist das
+Vierpunktschema an der schlechtesten Erzeugenden am besten: Seine Randkurven sind quadratisch, was
+w = 1/16 exakt reproduziert. Die Anzeige misst den Abstand der eingefügten Erzeugenden von der
+exakten Fläche, für jedes Schema bei diesem n; die Aussagen darunter werden an diesen Zahlen geprüft.</p>
 <p class="rl-paper-data">Daten aus der Arbeit: 12 Erzeugende der quartischen Fläche
-(1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1], n = 12.</p>`,
+(1 + vu², u²/2 + uv, u − v), n = 12; das Intervall u ∈ [−1, 1] wählt ruledlab (die Arbeit nennt keines).</p>`,
 
   'congruence.text': `
 <h2>Eine Geradenkongruenz verfeinern</h2>
@@ -158,8 +162,8 @@ der vier Ecken (ERRATA.md).</p>
 Schablone von (16) auch auf die beiden anderen Kantenrichtungen an, sodass ein Schritt das Gitter
 verdoppelt. „Zweistufig“ bildet die Kantengeraden mit der gekoppelten Streifenenergie von ruledlab;
 „gekoppelt“ lässt alle neuen Geraden gemeinsam in einem dünn besetzten System zur Ruhe kommen.
-Gemessen an den exakten Kongruenzen (Anzeige) ist das Butterfly-Schema bei diesen Beispielen am
-genauesten.</p>
+Gemessen an den exakten Kongruenzen nach einem Schritt (Anzeige: jedes Schema) ist das
+Butterfly-Schema bei diesen Beispielen am genauesten.</p>
 <p class="rl-paper-data">Daten: Beispiel 5 stammt aus der Arbeit (d₁ = (u, v, ½ sin(2u + 1,5v)),
 Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6). Für die beiden Kongruenzen
 aus Beispiel 4 gibt die Arbeit keine Formeln an; Kugel und hyperbolisches Paraboloid wählt ruledlab,
@@ -170,15 +174,16 @@ ebenso die Länge der Strecken (0,35 des Richtungsvektors).</p>`,
 <p>Einige Lagen eines Kugelfräsers sind entlang eines zu fräsenden Profils gegeben. Jede ist eine
 Strecke von der Werkzeugspitze entlang der Werkzeugachse; die Lagen bilden also eine diskrete
 Regelfläche, und deren Verfeinerung verfeinert die Bewegung. Nach einem Schritt (Abb. 16) folgt die
-Bahn dem Profil schon viel besser; zwei und drei Schritte (Abb. 17, 18) lassen die Orientierung sich
+Bahn dem Profil schon enger; zwei und drei Schritte (Abb. 17, 18) lassen die Orientierung sich
 glatt ändern. Die gestrichelte Kurve verbindet die Schwerpunkte des Werkzeugs; der durchscheinende
 Schlauch ist die Hüllfläche der Kugel, deren untere Hälfte die gefräste Fläche ist. Das Werkzeug
 selbst ist in einer Lage gezeichnet (Position verschieben oder abspielen).</p>
 <p>Die Anzeige misst, was im CAM zählt: wie weit die gefräste Fläche das Sollprofil verfehlt (positiv
 bleibt Material stehen, negativ wird zu viel abgetragen), die größte Änderung der
 Werkzeugorientierung zwischen zwei Lagen und ihre zweite Differenz (wie gleichmäßig sich die
-Orientierung dreht). Vergleichen Sie die Schemata an der Anzeige: Auf dieser Bahn lässt das
-variationelle Schema die kleinste Abweichung vom Profil; welches Schema den kleinsten
+Orientierung dreht). Vergleichen Sie die Schemata an der Anzeige: Ab sieben Lagen lassen die
+variationellen Schemata die kleinste Abweichung vom Profil (bei weniger kann das Vierpunktschema
+näher liegen); welches Schema den kleinsten
 Orientierungsschritt hat, hängt von der Zahl der Schritte ab. Die Schaltflächen exportieren die Bahn
 als JSON, CSV oder G-Code für eine Tisch-Tisch-Maschine mit A- und C-Achse (Konventionen im Dateikopf).</p>
 <p class="rl-paper-data">Die Arbeit gibt für Beispiel 6 keine Daten an; das Profil auf der

@@ -25,7 +25,8 @@ the common perpendiculars (switch it on). It approximates the striction curve at
 <em>between</em> two rulings, ${mr('u + H / 2')}, also at second order; the striction polygon
 ${m(sub('m', 'i'))} approximates it at the rulings themselves. The readout measures both.</p>
 <p><strong>Try it.</strong> Double the number of rulings and watch the readout: the footpoint error
-halves, the errors of both polygons drop to a quarter. On the hyperboloid of Example 1 the
+halves, the errors of both polygons drop to a quarter (on the hyperboloid and the quartic from
+about 20 rulings on; the readout measures the orders from N to 2N rulings). On the hyperboloid of Example 1 the
 striction curve is not the waist ellipse; on the cone all common perpendiculars meet in the apex;
 on the cylinder consecutive rulings are parallel, the common perpendicular is not unique, and
 ruledlab says so (no value, the pair counted as parallel) rather than guess.</p>
@@ -88,8 +89,11 @@ the conoidal image of a ruled helical surface as a helicoid whose rulings meet t
 orthogonally. Measured here, that holds only when the striction curve crosses the rulings at a
 right angle. In general the conoidal rulings touch a cylinder about the axis of radius
 ${m(frac(row('e · ṡ'), row('| e′ |')))}: 1.4 for the surface with rulings at 45° (radius 1, pitch
-0.4). Choose "rulings orthogonal to the striction helix" (β = −atan(r/p)) and the radius is 0:
-the caption's helicoid appears.</p>
+0.4). The readout measures it discretely: ρ, the step between the two footpoints on a ruling over
+the angle the rulings turn there, is the radius of curvature of the envelope of the developed
+rulings, and tends to ${m(frac(row('e · ṡ'), row('| e′ |')))} at second order. Choose "rulings
+orthogonal to the striction helix" (β = −atan(r/p)) and ρ tends to 0: the caption's helicoid
+appears in the limit.</p>
 <p class="rl-paper-data">The paper gives no data for Figs. 4–6; ruledlab uses Example 3's quartic,
 a ruled helical surface (radius 1, pitch 0.4) and a strip of Example 1's hyperboloid.</p>`,
 
@@ -124,14 +128,15 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 <p class="rl-beyond"><strong>What ruledlab adds.</strong> Read literally, with umbrellas at the new
 points only, the minimiser is just the midpoint rule (choose "literal": the readout equals the
 midpoint rule's). ruledlab's <em>coupled</em> energy puts umbrellas at every interior vertex, old
-ones included, so the new rulings couple and follow the surface far better. The <em>averaged</em>
+ones included, so the new rulings couple and, from n = 6 on, follow the surface more closely. The <em>averaged</em>
 variant averages the two triangulations' umbrellas before squaring: the energy (15) contains a
-twist term from the sheared neighbours of the two triangulations, and averaging cancels it, which
-makes the interior of the strip more accurate still. On this surface the four-point scheme is best
-of all at the worst ruling: its boundary curves are quadratic, which w = 1/16 reproduces
-exactly. The readout measures the distance of the inserted rulings from the exact surface.</p>
+twist term from the sheared neighbours of the two triangulations, and averaging cancels it. On
+this surface the four-point scheme is best of all at the worst ruling: its boundary curves are
+quadratic, which w = 1/16 reproduces exactly. The readout measures the distance of the inserted
+rulings from the exact surface, for every scheme at this n; the claims under it are checked
+against those numbers.</p>
 <p class="rl-paper-data">Data: the paper's: 12 rulings of the quartic surface
-(1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1], n = 12.</p>`,
+(1 + vu², u²/2 + uv, u − v), n = 12; the interval u ∈ [−1, 1] is ruledlab's (the paper gives none).</p>`,
 
   'congruence.text': `
 <h2>Refining a congruence of lines</h2>
@@ -152,8 +157,8 @@ paper's scheme ("paper") is bilinear averaging of the four corners (ERRATA.md).<
 <p class="rl-beyond"><strong>Beyond the paper.</strong> "Butterfly, all edges" applies (16)'s stencil
 to the other two edge directions too, so one step doubles the grid. "Two-stage" makes the edge lines
 with ruledlab's coupled strip energy; "coupled" lets all new lines settle together in one sparse
-solve. Measured against the exact congruences (readout), the butterfly scheme is the most accurate
-on these examples.</p>
+solve. Measured against the exact congruences at one step (readout: every scheme), the butterfly
+scheme is the most accurate on these examples.</p>
 <p class="rl-paper-data">Data: Example 5 is the paper's (d₁ = (u, v, ½ sin(2u + 1.5v)), directions
 (u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6). The paper gives no formulas for
 Example 4's two congruences; ruledlab's sphere and hyperbolic paraboloid are its own choice, and the
@@ -163,15 +168,15 @@ segment length (0.35 of the direction vector) too.</p>`,
 <h2>Example 6: a smooth path for a milling tool</h2>
 <p>A few positions of a ball-end tool are given along a profile to be milled. Each is a segment
 from the tool tip along the tool axis, so the positions form a discrete ruled surface, and refining
-that surface refines the motion. After one step (Fig. 16) the path already follows the profile far
-better; two and three steps (Figs. 17, 18) make the orientation change smoothly. The dashed curve
+that surface refines the motion. After one step (Fig. 16) the path already follows the profile
+more closely; two and three steps (Figs. 17, 18) make the orientation change smoothly. The dashed curve
 joins the tool's barycentres; the translucent tube is the envelope of the ball, whose lower half is
 the machined surface. The tool itself is drawn at one pose (slide or play its position).</p>
 <p>The readout measures what a CAM engineer cares about: how far the machined surface misses the
 target profile (positive leaves material, negative gouges), the largest change of tool orientation
 between two poses, and its second difference (how evenly the orientation turns). Compare the schemes
-with the readout: on this path the variational scheme leaves the smallest deviation from the
-profile; which scheme has the smallest orientation step depends on the number of steps. The buttons
+with the readout: with seven poses or more the variational schemes leave the smallest deviation from
+the profile (fewer, and four-point can be closer); which scheme has the smallest orientation step depends on the number of steps. The buttons
 export the path as JSON, CSV, or G-code for a table-table A–C machine (conventions in the file
 header).</p>
 <p class="rl-paper-data">The paper gives no data for Example 6; the profile on the part surface

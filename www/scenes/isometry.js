@@ -37,6 +37,30 @@ function boundsThrough(/** @type {ArrayLike<number>} */ m, /** @type {ArrayLike<
   return { min, max };
 }
 
+/** ρ (the core's envelopeRadii) at the middle interior ruling. */
+function middleRadius(/** @type {import('../../pkg/ruledlab.js').RuledSurface} */ surface) {
+  const radii = surface.envelopeRadii();
+  return radii.length ? radii[Math.floor(radii.length / 2)] : NaN;
+}
+
+/** Radius r + p tan β of the cylinder touched by the conoidal rulings of the helical surface at 45° (r = 1, p = 0.4). */
+const HELICAL_RADIUS = 1.4;
+
+/**
+ * Fig. 5's claims, checked against ρ: at 45° the conoidal rulings touch a cylinder of radius
+ * 1.4 (the caption fails); orthogonal to the striction helix ρ → 0 at second order (it holds).
+ * @param {string} name @param {number} n @param {number} radius @param {{radius: number, n: number} | null} finer
+ * @returns {import('../scene.js').Claim[]}
+ */
+function claimsOf(name, n, radius, finer) {
+  if (name === 'helical' && n >= 6) return [{ text: 'isometry.claim.helical', holds: Math.abs(radius - HELICAL_RADIUS) < 0.1 }];
+  if (name === 'helical-orthogonal' && finer) {
+    const ratio = Math.abs(radius / finer.radius);
+    return [{ text: 'isometry.claim.orthogonal', holds: Math.abs(finer.radius) < Math.abs(radius) && ratio > 3 && ratio < 5 }];
+  }
+  return [];
+}
+
 /**
  * The isometry figure of a sampled surface: shared with "Your surface".
  * @param {<O extends {free(): void}>(o: O) => O} own
@@ -44,9 +68,10 @@ function boundsThrough(/** @type {ArrayLike<number>} */ m, /** @type {ArrayLike<
  * @param {{layout: string, t: number, ghost: boolean, n: number}} p
  * @param {import('../scene.js').Context} ctx
  * @param {string} name
+ * @param {{radius: number, n: number} | null} [finer]   ρ of the same surface with about twice the rulings
  * @returns {import('../scene.js').Built}
  */
-export function isometryFigure(own, surface, p, { t }, name) {
+export function isometryFigure(own, surface, p, { t }, name, finer = null) {
   const frame = f32(surface.referenceFrame());
   const input = surface.segmentsF32();
   const bent = own(surface.bend(p.layout === 'panels' ? 1 : p.t));
@@ -84,6 +109,7 @@ export function isometryFigure(own, surface, p, { t }, name) {
   const defect = surface.maxEdgeChange(bent);
   const development = surface.development();
   const image = surface.developmentStriction();
+  const radius = middleRadius(surface);
   return {
     bounds: box,
     camera: p.layout === 'panels' ? { yaw: -Math.PI / 2, pitch: 0.8 } : { yaw: -1.2, pitch: 0.45 },
@@ -92,7 +118,10 @@ export function isometryFigure(own, surface, p, { t }, name) {
       { label: 'readout.rulings', value: n },
       { label: 'isometry.readout.nonDevelopability', value: nonDevelopability, exactZero: true },
       { label: 'isometry.readout.isometry', value: defect },
+      { label: 'isometry.readout.radius', value: radius },
+      ...(finer ? [{ label: 'isometry.readout.radiusFiner', value: finer.radius }] : []),
     ],
+    claims: claimsOf(name, n, radius, finer),
     description: t(p.layout === 'panels' ? 'isometry.describePanels' : 'isometry.describe', {
       surface: t(`surface.${name}`),
       n,
@@ -128,8 +157,12 @@ export const scene = defineScene({
     return scoped((own) => {
       const name = String(p.surface);
       const analytic = own(AnalyticSurface.byName(name));
-      const surface = own(analytic.sample(Number(p.n), rangesOf(name, RANGES[/** @type {keyof typeof RANGES} */ (name)] ?? {})));
-      return isometryFigure(own, surface, /** @type {any} */ (p), ctx, name);
+      const ranges = rangesOf(name, RANGES[/** @type {keyof typeof RANGES} */ (name)] ?? {});
+      const n = Number(p.n);
+      const surface = own(analytic.sample(n, ranges));
+      // Fig. 5: ρ with twice the spacing halved, to show its order where the caption holds
+      const finer = name === 'helical-orthogonal' ? { n: 2 * n - 1, radius: middleRadius(own(analytic.sample(2 * n - 1, ranges))) } : null;
+      return isometryFigure(own, surface, /** @type {any} */ (p), ctx, name, finer);
     });
   },
 });

@@ -12,6 +12,11 @@ const SCHEMES = {
   linear: { scheme: 'bspline', degree: 1 },
 };
 
+/** Largest |deviation| of the machined surface from the target profile. */
+function maxDeviation(/** @type {import('../../pkg/ruledlab.js').ToolPath} */ path, /** @type {Float64Array} */ profile) {
+  return path.deviation(profile).reduce((m, d) => Math.max(m, Math.abs(d)), 0);
+}
+
 export const scene = defineScene({
   id: 'milling',
   title: 'milling.title',
@@ -43,8 +48,13 @@ export const scene = defineScene({
       const given = path.segmentsF32();
       const all = refined.segmentsF32();
       const profile = ToolPath.exampleProfile(400);
-      const deviation = refined.deviation(profile).reduce((m, d) => Math.max(m, Math.abs(d)), 0);
+      const deviation = maxDeviation(refined, profile);
       const quality = refined.quality();
+      // every scheme's deviation at these steps, for the comparison the text makes (and its claim)
+      /** @type {Record<string, number>} */
+      const compare = {};
+      for (const [k, o] of Object.entries(SCHEMES)) compare[k] = maxDeviation(own(path.refine({ ...o, steps })), profile);
+      const given0 = maxDeviation(path, profile);
       const centres = refined.barycentres();
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
@@ -76,6 +86,12 @@ export const scene = defineScene({
           { label: 'milling.readout.deviation', value: deviation },
           { label: 'milling.readout.angleStep', value: quality.maxAngleStep },
           { label: 'milling.readout.secondDifference', value: quality.maxSecondDifference },
+          { label: 'milling.readout.compare.given', value: given0 },
+          ...(steps > 0 ? Object.entries(compare).map(([k, v]) => ({ label: `milling.readout.compare.${k}`, value: v })) : []),
+        ],
+        claims: [
+          ...(steps > 0 ? [{ text: 'milling.claim.refined', holds: Math.max(compare.variational, compare.averaged, compare['four-point']) < given0 }] : []),
+          ...(steps > 0 && Number(p.poses) >= 7 ? [{ text: 'milling.claim.variational', holds: Math.max(compare.variational, compare.averaged) < Math.min(compare['four-point'], compare.linear) }] : []),
         ],
         description: t('milling.describe', { poses: Number(p.poses), steps, scheme: t(`milling.scheme.${p.scheme}`), total: refined.length, deviation }),
         downloads: [

@@ -15,9 +15,11 @@ import { surfaceOptions, rangesOf } from './common.js';
  * @param {{n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis?: boolean}} p
  * @param {import('../scene.js').Context} ctx
  * @param {string} name   the surface's name, for the description
+ * @param {boolean} [orders]   also measure the orders from N to 2N rulings (the built-in surfaces,
+ *   about which the text makes its claim)
  * @returns {import('../scene.js').Built}
  */
-export function strictionFigure(own, analytic, ranges, p, ctx, name) {
+export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = false) {
   const { t } = ctx;
   const closed = ranges.closed;
   const surface = own(analytic.sample(p.n, ranges));
@@ -47,6 +49,20 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name) {
   if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisSegment[0])) {
     layers.push({ kind: 'segments', style: 'complexAxis', positions: f32(complex.axisSegment) });
   }
+  /** @type {import('../scene.js').Readout[]} */
+  const measured = [];
+  /** @type {import('../scene.js').Claim[]} */
+  const claims = [];
+  if (orders) {
+    const finer = analytic.samplingErrors(2 * p.n, ranges);
+    const order = (/** @type {'footpoint' | 'midpoint' | 'perpendicularMidpoint'} */ k) => Math.log2(errors[k] / finer[k]);
+    const o = { footpoint: order('footpoint'), midpoint: order('midpoint'), perpendicular: order('perpendicularMidpoint') };
+    for (const [k, v] of Object.entries(o)) measured.push({ label: `striction.readout.order.${k}`, value: Number.isFinite(v) ? v : 'readout.none' });
+    if (ORDER_SURFACES.includes(name) && p.n >= 20) {
+      const near = (/** @type {number} */ x, /** @type {number} */ target) => Math.abs(x - target) <= 0.25;
+      claims.push({ text: 'striction.claim.orders', holds: near(o.footpoint, 1) && near(o.midpoint, 2) && near(o.perpendicular, 2) });
+    }
+  }
   const middle = inv.distributionMean.length ? inv.distributionMean[Math.floor(inv.distributionMean.length / 2)] : NaN;
   const shown = [
     p.normals && t('striction.describe.normals'),
@@ -67,7 +83,9 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name) {
       { label: 'readout.meanDelta', value: middle },
       { label: 'focal.readout.complex', value: t(`complex.kind.${complex.kind}`) },
       ...(complex.kind === 'complex' ? [{ label: 'focal.readout.pitch', value: Math.abs(complex.pitch) < 1e-12 ? 0 : complex.pitch, exactZero: true }] : []),
+      ...measured,
     ],
+    claims,
     description: t('striction.describe', {
       surface: t(`surface.${name}`),
       n: p.n,
@@ -79,6 +97,9 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name) {
     data: { segments: surface.segments() },
   };
 }
+
+/** The surfaces on which the text claims the orders 1, 2, 2 (the others are exact or degenerate). */
+const ORDER_SURFACES = ['hyperboloid', 'quartic'];
 
 export const scene = defineScene({
   id: 'striction',
@@ -107,7 +128,7 @@ export const scene = defineScene({
     return scoped((own) => {
       const name = String(p.surface);
       const analytic = own(AnalyticSurface.byName(name));
-      return strictionFigure(own, analytic, rangesOf(name), /** @type {any} */ (p), ctx, name);
+      return strictionFigure(own, analytic, rangesOf(name), /** @type {any} */ (p), ctx, name, true);
     });
   },
 });

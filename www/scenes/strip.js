@@ -38,6 +38,16 @@ export const scene = defineScene({
       const options = p.scheme === 'four-point' ? { scheme: 'four-point' } : { scheme: 'variational', n, variant: /** @type {'coupled' | 'literal' | 'averaged'} */ (p.scheme) };
       const refined = own(surface.subdivide(options));
       const distance = quartic.insertedDistance(refined, 2, U.uMin, U.uMax);
+      // every scheme at this n, for the comparisons the text makes (and their claims)
+      const error = (/** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */ o) => quartic.insertedDistance(own(surface.subdivide(o)), 2, U.uMin, U.uMax);
+      const compare = {
+        midpoint: error({ scheme: 'bspline', degree: 1 }),
+        literal: error({ scheme: 'variational', n, variant: 'literal' }),
+        coupled: error({ scheme: 'variational', n, variant: 'coupled' }),
+        averaged: error({ scheme: 'variational', n, variant: 'averaged' }),
+        fourPoint: error({ scheme: 'four-point' }),
+      };
+      const others = Math.min(compare.literal, compare.coupled, compare.averaged);
       const old = surface.segmentsF32();
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
@@ -74,6 +84,12 @@ export const scene = defineScene({
         readouts: [
           { label: 'readout.rulings', value: refined.length },
           { label: 'strip.readout.distance', value: distance, exactZero: true },
+          ...Object.entries(compare).map(([k, v]) => ({ label: `strip.readout.compare.${k}`, value: v, exactZero: true })),
+        ],
+        claims: [
+          { text: 'strip.claim.literal', holds: Math.abs(compare.literal - compare.midpoint) <= 1e-12 },
+          ...(n >= 6 ? [{ text: 'strip.claim.coupled', holds: compare.coupled < compare.midpoint }] : []),
+          { text: 'strip.claim.fourPoint', holds: compare.fourPoint < 1e-12 && compare.fourPoint <= others },
         ],
         description: t('strip.describe', { scheme: t(`strip.scheme.${p.scheme === 'four-point' ? 'fourPoint' : p.scheme}`), n, distance }),
         data: { segments: refined.segments() },

@@ -8,7 +8,7 @@ export const CSS = `
   font: 15px/1.45 system-ui, -apple-system, "Segoe UI", sans-serif; }
 .rl-stage *, .rl-stage *::before, .rl-stage *::after { box-sizing: border-box; }
 .rl-stage [hidden] { display: none !important; }
-.rl-no-controls .rl-controls, .rl-no-controls .rl-player, .rl-no-controls .rl-readout, .rl-no-controls .rl-readout-note, .rl-no-controls .rl-caption, .rl-no-controls .rl-downloads, .rl-no-controls .rl-figure { display: none !important; }
+.rl-no-controls .rl-controls, .rl-no-controls .rl-player, .rl-no-controls .rl-readout, .rl-no-controls .rl-claims, .rl-no-controls .rl-readout-note, .rl-no-controls .rl-caption, .rl-no-controls .rl-downloads, .rl-no-controls .rl-figure { display: none !important; }
 .rl-stage.rl-narrow { flex-direction: column; }
 .rl-view { position: relative; flex: 1 1 auto; min-width: 0; min-height: 240px; overflow: hidden; background: var(--paper); }
 .rl-stage.rl-narrow:not(.rl-no-panel) .rl-view { flex: 0 0 auto; height: min(62vh, 34rem); }
@@ -67,6 +67,21 @@ export const CSS = `
   border-radius: 6px; font-size: .86rem; }
 .rl-readout dt { color: var(--muted); }
 .rl-readout dd { margin: 0; font-variant-numeric: tabular-nums; text-align: right; }
+.rl-paper { margin: .2rem 0 .9rem; padding: .55rem .75rem; border: 1px solid #d8d3c4; border-radius: 6px; background: #fffdf7; font-size: .86rem; line-height: 1.45; }
+.rl-paper[hidden] { display: none; }
+.rl-paper h3 { font-size: .95rem; margin: 0 0 .35rem; }
+.rl-paper blockquote { margin: 0 0 .45rem; padding-left: .6rem; border-left: 3px solid #8a8f99; font-style: italic; }
+.rl-paper p { margin: .35rem 0; }
+.rl-paper .rl-paper-data { color: var(--muted); }
+.rl-paper .rl-beyond { border-left: 3px solid #0072b2; background: #f1f6fb; padding: .3rem .6rem; }
+.rl-paper .rl-paper-changed { display: flex; gap: .5rem; align-items: center; flex-wrap: wrap; }
+.rl-paper button { font: inherit; font-size: .84rem; min-height: 32px; }
+.rl-claims { list-style: none; margin: -.4rem 0 .8rem; padding: 0; font-size: .84rem; }
+.rl-claims[hidden] { display: none; }
+.rl-claims li { display: flex; gap: .4rem; margin: .2rem 0; }
+.rl-claims .rl-mark { flex: none; width: 1.1em; font-weight: 700; }
+.rl-claims .rl-holds .rl-mark { color: #1a6b3c; }
+.rl-claims .rl-fails { color: #8c1d14; }
 .rl-caption, .rl-readout-note { font-size: .85rem; color: var(--muted); margin: .4rem 0 .8rem; }
 .rl-downloads { display: flex; gap: .4rem; flex-wrap: wrap; margin: 0 0 .8rem; }
 .rl-downloads:empty { display: none; }

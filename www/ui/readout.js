@@ -27,3 +27,29 @@ export function readoutSentence(/** @type {import('../scene.js').Readout[]} */ r
     })
     .join('; ');
 }
+
+/**
+ * The comparative sentences of the scene, each marked with whether the readout bears it out
+ * at these settings (✓ holds here, ✗ not at these settings).
+ * @param {HTMLElement} list   a <ul>
+ * @param {import('../scene.js').Claim[]} claims
+ * @param {(key: string) => string} t
+ */
+export function showClaims(list, claims, t) {
+  const doc = list.ownerDocument;
+  list.replaceChildren(
+    ...claims.map(({ text, holds }) => {
+      const li = doc.createElement('li');
+      li.className = holds ? 'rl-holds' : 'rl-fails';
+      li.dataset.claim = text;
+      const mark = Object.assign(doc.createElement('span'), { className: 'rl-mark', textContent: holds ? '✓' : '✗' });
+      mark.setAttribute('aria-hidden', 'true');
+      const status = Object.assign(doc.createElement('span'), { className: 'rl-sr-only', textContent: `${t(holds ? 'claim.holds' : 'claim.fails')}: ` });
+      li.append(mark, status);
+      appendRich(li, t(text));
+      return li;
+    }),
+  );
+  list.hidden = claims.length === 0;
+  if (claims.length) list.setAttribute('aria-label', t('claim.title'));
+}

@@ -1,0 +1,95 @@
+// The paper's figures and examples as presets, in the browser: each, chosen from the "Figures of
+// the paper" menu, draws, shows the paper's caption with ruledlab's notes, has no failing claim,
+// and its link restores every control; moving a control marks the change and "Back to …"
+// returns; the card speaks German; <ruled-view paper="…"> shows a figure too.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { pageSession, setControl, shoot, ready, framesAfter } from './browser.mjs';
+import { countDifferent } from './png.mjs';
+import { PRESETS } from '../../www/paper.js';
+
+const BACKGROUND = [251, 250, 247];
+const session = pageSession();
+
+/** Every control's value, by name. */
+/** @param {import('playwright-core').Page} page */
+const controls = (page) =>
+  page.evaluate(() => Object.fromEntries([...document.querySelectorAll('.rl-controls [name]')].map((e) => {
+    const input = /** @type {HTMLInputElement} */ (e);
+    return [input.name, input.type === 'checkbox' ? input.checked : input.value];
+  })));
+
+/** Waits for the picture of a new state. @param {import('playwright-core').Page} page @param {() => Promise<unknown>} act */
+async function after(page, act) {
+  const frames = await page.evaluate(() => Number(document.body.dataset.frames ?? 0));
+  await act();
+  await ready(page);
+  await framesAfter(page, frames);
+}
+
+test('every figure and example from the menu: drawn, captioned, its claims hold, its link restores every control', async () => {
+  const { page, problems } = await session.open('#scene=striction');
+  for (const preset of PRESETS) {
+    await after(page, () => page.locator('#paper').selectOption(preset.id));
+    const card = page.locator('.rl-paper');
+    assert.ok(await card.isVisible(), `${preset.id}: the card is shown`);
+    assert.match(await card.locator('h3').innerText(), /Fig\.|Example/);
+    assert.equal(await card.locator('.rl-paper-changed').count(), 0, `${preset.id} opens at its own settings`);
+    assert.equal(await page.locator('.rl-stage').getAttribute('data-scene'), preset.scene);
+    assert.equal(await page.locator('.rl-claims .rl-fails').count(), 0, `${preset.id}: a claim fails: ${await page.locator('.rl-claims').innerText()}`);
+    const image = await shoot(page, `paper-${preset.id}`);
+    assert.ok(countDifferent(image, BACKGROUND) > 0.005 * image.width * image.height, `${preset.id} drew nothing`);
+    const hash = await page.evaluate(() => location.hash);
+    assert.match(hash, new RegExp(`paper=${preset.id}(&|$)`));
+    const values = await controls(page);
+    // elsewhere, then back by the link
+    await after(page, () => page.evaluate(() => (location.hash = '#scene=curves')));
+    await after(page, () => page.evaluate((h) => (location.hash = h), hash));
+    assert.deepEqual(await controls(page), values, `${preset.id}: the link restores every control`);
+    assert.equal(await page.locator('#paper').inputValue(), preset.id);
+  }
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('a moved control is marked as a change from the figure, and "Back to Fig. 3" returns to it', async () => {
+  const { page, problems } = await session.open('#paper=fig3');
+  assert.match(await page.locator('.rl-paper h3').innerText(), /Fig\. 3/);
+  await setControl(page, 'n', 72);
+  assert.ok(await page.locator('.rl-paper-changed').isVisible());
+  await page.waitForFunction(() => /paper=fig3/.test(location.hash) && /n=72/.test(location.hash));
+  await after(page, () => page.locator('.rl-paper-changed button').click());
+  assert.equal(await page.locator('.rl-controls [name="n"]').inputValue(), '36');
+  assert.equal(await page.locator('.rl-paper-changed').count(), 0);
+  // choosing a scene leaves the figure
+  await after(page, () => page.locator('#scene').selectOption('curves'));
+  assert.ok(await page.locator('.rl-paper').isHidden());
+  assert.equal(await page.locator('#paper').inputValue(), '');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the card in German, and <ruled-view paper="fig15">', async () => {
+  const { page, problems } = await session.open('#paper=fig5-orthogonal&lang=de');
+  const card = await page.locator('.rl-paper').innerText();
+  assert.match(card, /Aus der Arbeit: Abb\. 5/);
+  assert.match(card, /Über die Arbeit hinaus/);
+  assert.match(await page.locator('.rl-claims').innerText(), /Bildunterschrift/);
+  await page.evaluate(async () => {
+    await import('./www/view.js');
+    const view = document.createElement('ruled-view');
+    view.setAttribute('paper', 'fig15');
+    view.setAttribute('controls', '');
+    view.setAttribute('lang', 'en');
+    document.body.append(view);
+  });
+  await page.waitForFunction(() => {
+    const v = /** @type {HTMLElement | null} */ (document.querySelector('ruled-view'));
+    return v?.dataset.ready === '1' && Number(v.dataset.frames) > 0;
+  });
+  const inner = await page.evaluate(() => document.querySelector('ruled-view')?.shadowRoot?.querySelector('.rl-paper')?.textContent ?? '');
+  assert.match(inner, /Fig\. 15/);
+  assert.match(inner, /K = 6/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
