@@ -17,6 +17,25 @@ fn invariants(c: &mut Criterion) {
     group.finish();
 }
 
+/// Into arrays that are reused, as the wasm API's `invariantsInPlace` does (no fresh memory).
+fn invariants_into(c: &mut Criterion) {
+    let mut group = c.benchmark_group("invariants_into");
+    group.sample_size(10);
+    for &n in sizes(&[1_000usize, 10_000, 100_000, 1_000_000]) {
+        let hyp = AnalyticSurface::ALL[0].clone();
+        let surface = hyp.sample(n, hyp.ranges()).expect("valid sample");
+        let mut out = surface.invariants();
+        group.throughput(Throughput::Elements(n as u64));
+        group.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter(|| {
+                surface.invariants_into(&mut out, false);
+                black_box(out.angle.len())
+            })
+        });
+    }
+    group.finish();
+}
+
 fn from_flat(c: &mut Criterion) {
     let mut group = c.benchmark_group("validate");
     group.sample_size(10);
@@ -40,5 +59,5 @@ fn sizes<T>(all: &[T]) -> &[T] {
     }
 }
 
-criterion_group!(benches, invariants, from_flat);
+criterion_group!(benches, invariants, invariants_into, from_flat);
 criterion_main!(benches);

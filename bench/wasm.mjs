@@ -1,16 +1,26 @@
-// Times Section 2's invariants through the built wasm package for 10³ … 10⁶ rulings:
-// `node bench/wasm.mjs` (after `npm run build`). Prints a table (median of several runs)
-// and writes bench/results/wasm.json.
+// Times the library through the built wasm package in Node (after `npm run build`), each large
+// operation beside its memory limit measured in the same process, and against a plain-JS
+// implementation written as carefully as the Rust (bench/plainjs.mjs, results checked to agree).
+//
+// The limit of an operation: the time to write its output bytes into memory that is already
+// mapped plus read its input once (a copy of the input into the output, then a fill of the
+// rest: memcpy and memset speed), and for reference the same into fresh memory, which on a VM
+// costs page faults. An operation at 1× its limit could not be faster without writing less.
+//
+// `node bench/wasm.mjs` prints the tables, writes bench/results/wasm.json, and rewrites the
+// README's table between <!-- bench:begin --> and <!-- bench:end -->.
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { cpus } from 'node:os';
+import { cpus, totalmem } from 'node:os';
 import { performance } from 'node:perf_hooks';
 import * as ruledlab from '../pkg/ruledlab.js';
 import * as plain from './plainjs.mjs';
 
 ruledlab.initSync({ module: readFileSync(new URL('../pkg/ruledlab_bg.wasm', import.meta.url)) });
-const { AnalyticSurface, RuledSurface, AnalyticCongruence } = ruledlab;
+const { AnalyticSurface, AnalyticCongruence, InvariantsBuffer } = ruledlab;
 
-function median(f, runs) {
+/** Median time of `runs` calls of f (ms), after one warm-up call. */
+function median(/** @type {() => unknown} */ f, runs = 7) {
+  f();
   const times = [];
   for (let i = 0; i < runs; i++) {
     const t0 = performance.now();
@@ -21,109 +31,160 @@ function median(f, runs) {
   return times[Math.floor(runs / 2)];
 }
 
-const rows = [];
-const hyp = AnalyticSurface.byName('hyperboloid');
-for (const n of [1e3, 1e4, 1e5, 1e6]) {
-  const runs = n >= 1e6 ? 7 : 15;
-  const surface = hyp.sample(n);
-  const flat = surface.segments();
-  const invariants = median(() => surface.invariants(), runs);
-  const reuse = surface.invariants();
-  const invariantsInto = median(() => surface.invariantsInto(reuse), runs);
-  const fromSegments = median(() => RuledSurface.fromSegments(flat).free(), runs);
-  rows.push({ rulings: n, invariantsMs: invariants, invariantsIntoMs: invariantsInto, fromSegmentsMs: fromSegments, nsPerRuling: (invariants * 1e6) / n });
-  surface.free();
-}
-const subdivision = [];
-for (const [name, options] of [
-  ['chaikin', { scheme: 'chaikin' }],
-  ['bspline3', { scheme: 'bspline', degree: 3 }],
-  ['four-point', { scheme: 'four-point' }],
-  ['variational', { scheme: 'variational' }],
-]) {
-  const row = { scheme: name };
-  for (const n of [1e3, 1e4, 1e5, 1e6]) {
-    const surface = hyp.sample(n, { uMin: 0, uMax: 100, closed: false });
-    row[n] = median(() => surface.subdivide(options).free(), n >= 1e6 ? 5 : 11);
-    surface.free();
-  }
-  subdivision.push(row);
-}
-const congruence = [];
-const ex = AnalyticCongruence.byName('example5');
-for (const [scheme, sizes, options] of [
-  ['butterfly', [100, 300, 1000], { scheme: 'butterfly' }],
-  ['coupled', [33, 65, 129, 257], { scheme: 'variational' }],
-]) {
-  for (const n of sizes) {
-    const grid = ex.grid(n, n);
-    congruence.push({ scheme, grid: `${n}²`, lines: n * n, ms: median(() => grid.subdivide(options).free(), n >= 257 ? 3 : 5) });
-    grid.free();
-  }
-}
-// wasm against a straightforward plain-JS implementation (bench/plainjs.mjs), same inputs,
-// results checked to agree
-const versusJs = [];
-for (const n of [1e3, 1e4, 1e5, 1e6]) {
-  const surface = hyp.sample(n, { uMin: 0, uMax: 100, closed: false });
-  const flat = surface.segments();
-  const runs = n >= 1e6 ? 5 : 11;
-  const js = plain.invariants(flat);
-  const wasmInv = surface.invariants();
-  const agree = js.distance.every((h, i) => Math.abs(h - wasmInv.distance[i]) <= 1e-9 * Math.max(1, Math.abs(h)));
-  const jsFour = plain.fourPoint(flat);
-  versusJs.push({
-    rulings: n,
-    'invariants wasm ms': median(() => surface.invariants(), runs),
-    'invariants JS ms': median(() => plain.invariants(flat), runs),
-    'four-point wasm ms': median(() => surface.subdivide({ scheme: 'four-point' }).free(), runs),
-    'four-point JS ms': median(() => plain.fourPoint(flat), runs),
-    agree: agree && jsFour.length === 6 * (2 * n - 1),
-  });
-  surface.free();
+/** Bytes of the invariants of n rulings (open): 19 doubles and 1 byte per pair, about. */
+const invariantBytes = (/** @type {number} */ n) => 8 * (3 * (n - 1) + 6 * (n - 1) + 3 * (n - 1) + 3 * (n - 2) + (n - 2) + 3 * (n - 1)) + (n - 1);
+
+/**
+ * The memory limit of an operation reading `inBytes` and writing `outBytes`: into mapped
+ * memory, and into fresh memory (ms, median).
+ */
+function limit(/** @type {number} */ inBytes, /** @type {number} */ outBytes, runs = 7) {
+  const input = new Float64Array(Math.floor(inBytes / 8)).fill(1.25);
+  const mapped = new Float64Array(Math.ceil(Math.max(inBytes, outBytes) / 8)).fill(0);
+  const rest = Math.max(0, Math.ceil((outBytes - inBytes) / 8));
+  const write = (/** @type {Float64Array} */ out) => {
+    out.set(input);
+    out.fill(0.5, input.length, input.length + rest);
+  };
+  return {
+    mapped: median(() => write(mapped), runs),
+    fresh: median(() => write(new Float64Array(mapped.length)), runs),
+  };
 }
 
-// wasm against native: criterion's medians, when `cargo bench` has run
-const nativeMs = (group, id) => {
+const N = 1e6;
+const hyp = AnalyticSurface.byName('hyperboloid');
+const surface = hyp.sample(N, { uMin: 0, uMax: 100, closed: false });
+const flat = surface.segments();
+const inBytes = flat.byteLength;
+
+// ---- the same numbers, checked
+const check = (/** @type {string} */ what, /** @type {ArrayLike<number>} */ a, /** @type {ArrayLike<number>} */ b, tol = 1e-9) => {
+  if (a.length !== b.length) throw new Error(`${what}: lengths ${a.length} and ${b.length}`);
+  for (let i = 0; i < a.length; i++) {
+    const x = a[i], y = b[i];
+    if (!(Math.abs(x - y) <= tol * Math.max(1, Math.abs(y))) && !(Number.isNaN(x) && Number.isNaN(y))) throw new Error(`${what}[${i}]: ${x} vs ${y}`);
+  }
+};
+{
+  const w = surface.invariants();
+  const j = plain.invariants(flat);
+  for (const k of Object.keys(j)) check(`invariants.${k}`, /** @type {any} */ (j)[k], /** @type {any} */ (w)[k]);
+  const four = surface.subdivide({ scheme: 'four-point' });
+  check('four-point', plain.fourPoint(flat), four.segments(), 0);
+  four.free();
+}
+
+// ---- operations at 10⁶ rulings, each beside its limit
+const rows = [];
+/** @param {string} op @param {number} ms @param {number} outBytes @param {'mapped' | 'fresh'} kind @param {number | null} js */
+const row = (op, ms, outBytes, kind, js = null) => {
+  const l = limit(inBytes, outBytes);
+  rows.push({ op, ms, limitMs: l[kind], freshLimitMs: l.fresh, kind, ofLimit: ms / l[kind], jsMs: js, versusJs: js === null ? null : js / ms, outMB: outBytes / 1e6 });
+};
+
+const outInv = invariantBytes(N);
+const reuse = surface.invariants();
+const buffer = new InvariantsBuffer();
+const jsOut = plain.invariantsArrays(N);
+const jsInto = median(() => plain.invariantsInto(flat, jsOut), 5);
+row('invariants() — fresh arrays', median(() => surface.invariants(), 5), outInv, 'fresh', median(() => plain.invariants(flat), 5));
+row('invariantsInto(reused arrays)', median(() => surface.invariantsInto(reuse), 5), outInv, 'mapped', jsInto);
+row('invariantsInPlace(buffer) — zero-copy views', median(() => {
+  surface.invariantsInPlace(buffer);
+  return buffer.striction.length;
+}, 5), outInv, 'mapped', jsInto);
+
+const jsFourOut = new Float64Array(6 * (2 * N - 1));
+for (const [name, options, js] of /** @type {const} */ ([
+  ['four-point step', { scheme: 'four-point' }, () => plain.fourPoint(flat, jsFourOut)],
+  ['Chaikin step', { scheme: 'chaikin' }, null],
+  ['cubic B-spline step', { scheme: 'bspline', degree: 3 }, null],
+])) {
+  const probe = surface.subdivide(options);
+  const outBytes = 48 * probe.length;
+  probe.free();
+  row(name, median(() => surface.subdivide(options).free(), 5), outBytes, 'mapped', js ? median(js, 5) : null);
+}
+
+// ---- small calls: 10³ rulings, against native (criterion's medians, when `cargo bench` ran)
+const nativeMs = (/** @type {string} */ group, /** @type {number} */ id) => {
   try {
-    const e = JSON.parse(readFileSync(new URL(`../target/criterion/${group}/${id}/new/estimates.json`, import.meta.url)));
+    const e = JSON.parse(readFileSync(new URL(`../target/criterion/${group}/${id}/new/estimates.json`, import.meta.url), 'utf8'));
     return e.median.point_estimate / 1e6;
   } catch {
     return NaN;
   }
 };
-const versusNative = [1e3, 1e4, 1e5, 1e6].map((n) => {
-  const wasm = rows.find((r) => r.rulings === n).invariantsMs;
-  const four = subdivision.find((r) => r.scheme === 'four-point')[n];
-  return {
+const small = [];
+for (const n of [1e3, 1e4]) {
+  const s = hyp.sample(n, { uMin: 0, uMax: 100, closed: false });
+  const f = s.segments();
+  const r = s.invariants();
+  const b = new InvariantsBuffer();
+  const j = plain.invariantsArrays(n);
+  small.push({
     rulings: n,
-    'invariants native/wasm': nativeMs('invariants', n) / wasm,
-    'four-point native/wasm': nativeMs('subdivide_four-point', n) / four,
-  };
-});
+    'invariants()': median(() => s.invariants(), 201),
+    'invariantsInto': median(() => s.invariantsInto(r), 201),
+    'invariantsInPlace': median(() => s.invariantsInPlace(b), 201),
+    'native (fresh)': nativeMs('invariants', n),
+    'native (into)': nativeMs('invariants_into', n),
+    'plain JS (into)': median(() => plain.invariantsInto(f, j), 201),
+  });
+  b.free();
+  s.free();
+}
 
-const fit = (rows) => {
-  const xs = rows.map((r) => Math.log(r.lines)), ys = rows.map((r) => Math.log(r.ms));
-  const mx = xs.reduce((a, b) => a + b) / xs.length, my = ys.reduce((a, b) => a + b) / ys.length;
-  return xs.reduce((s, x, i) => s + (x - mx) * (ys[i] - my), 0) / xs.reduce((s, x) => s + (x - mx) ** 2, 0);
-};
-const exponent = fit(congruence.filter((r) => r.scheme === 'coupled'));
-console.log(`wasm (Node ${process.version}, ${cpus()[0].model}, ${cpus().length} cores)`);
-console.table(rows.map((r) => ({
-  rulings: r.rulings,
-  'invariants ms': r.invariantsMs.toFixed(2),
-  'invariantsInto ms': r.invariantsIntoMs.toFixed(2),
-  'fromSegments ms': r.fromSegmentsMs.toFixed(2),
-  'ns/ruling': r.nsPerRuling.toFixed(1),
-})));
-console.log('one subdivision step of a strip, ms (median)');
-console.table(subdivision.map((r) => Object.fromEntries(Object.entries(r).map(([k, v]) => [k, typeof v === 'number' ? v.toFixed(2) : v]))));
-console.log('wasm against plain JS (bench/plainjs.mjs), ms (median)');
-console.table(versusJs.map((r) => Object.fromEntries(Object.entries(r).map(([k, v]) => [k, typeof v === 'number' && !Number.isInteger(v) ? v.toFixed(2) : v]))));
-console.log('speed of wasm relative to native (native time / wasm time; 1 = equal, from target/criterion)');
-console.table(versusNative.map((r) => Object.fromEntries(Object.entries(r).map(([k, v]) => [k, k === 'rulings' ? v : v.toFixed(2)]))));
-console.log('one congruence step, ms (median)');
-console.table(congruence.map((r) => ({ ...r, ms: r.ms.toFixed(1) })));
-console.log(`coupled variational: time ∝ lines^${exponent.toFixed(2)}`);
+// ---- congruences
+const congruence = [];
+const ex = AnalyticCongruence.byName('example5');
+for (const [scheme, n, options] of /** @type {const} */ ([
+  ['butterfly', 1000, { scheme: 'butterfly' }],
+  ['coupled variational', 257, { scheme: 'variational' }],
+])) {
+  const grid = ex.grid(n, n);
+  congruence.push({ scheme, grid: `${n}²`, ms: median(() => grid.subdivide(options).free(), 3) });
+  grid.free();
+}
+
+const machine = `${cpus()[0].model.trim()}, ${cpus().length} cores, ${Math.round(totalmem() / 2 ** 30)} GiB, Node ${process.version}`;
+const date = new Date().toISOString().slice(0, 10);
+const f = (/** @type {number | null} */ x, digits = 1) => (x === null || !Number.isFinite(x) ? '—' : x.toFixed(digits));
+console.log(`wasm at 10⁶ rulings (${machine}), ms, median`);
+console.table(rows.map((r) => ({ op: r.op, ms: f(r.ms), [`limit ms`]: `${f(r.limitMs)} (${r.kind})`, '× limit': f(r.ofLimit, 2), 'plain JS ms': f(r.jsMs), 'JS / wasm': f(r.versusJs, 2) })));
+console.log('small calls, ms, median');
+console.table(small.map((r) => Object.fromEntries(Object.entries(r).map(([k, v]) => [k, k === 'rulings' ? v : f(v, 4)]))));
+console.log('congruences, ms, median');
+console.table(congruence.map((r) => ({ ...r, ms: f(r.ms) })));
+
 mkdirSync(new URL('./results/', import.meta.url), { recursive: true });
-writeFileSync(new URL('./results/wasm.json', import.meta.url), JSON.stringify({ node: process.version, cpu: cpus()[0].model, rows, subdivision, congruence, coupledExponent: exponent, versusJs, versusNative }, null, 2));
+writeFileSync(new URL('./results/wasm.json', import.meta.url), JSON.stringify({ date, machine, rows, small, congruence }, null, 2));
+
+// ---- the README's table
+const table = [
+  '<!-- bench:begin -->',
+  `<!-- written by bench/wasm.mjs (npm run bench) on ${date}: ${machine} -->`,
+  '',
+  `Measured ${date} on ${machine}; one process, median of 5–7 runs. "Limit" is the time to write the`,
+  'operation\'s output into already-mapped memory plus read its input once (into fresh memory for',
+  '`invariants()`, which must allocate its result arrays).',
+  '',
+  '| 10⁶ rulings | wasm ms | output MB | limit ms | × limit | careful plain JS ms | JS / wasm |',
+  '|---|---:|---:|---:|---:|---:|---:|',
+  ...rows.map((r) => `| ${r.op} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} (${r.kind}) | ${f(r.ofLimit, 2)} | ${f(r.jsMs)} | ${f(r.versusJs, 2)} |`),
+  '',
+  '| small calls, ms | `invariants()` | `invariantsInto` | `invariantsInPlace` | native (fresh) | native (into) | plain JS (into) |',
+  '|---|---:|---:|---:|---:|---:|---:|',
+  ...small.map((r) => `| ${r.rulings} rulings | ${f(r['invariants()'], 3)} | ${f(r.invariantsInto, 3)} | ${f(r.invariantsInPlace, 3)} | ${f(r['native (fresh)'], 3)} | ${f(r['native (into)'], 3)} | ${f(r['plain JS (into)'], 3)} |`),
+  '',
+  `Congruences (Example 5): ${congruence.map((r) => `${r.scheme} on ${r.grid} lines ${f(r.ms)} ms`).join('; ')}.`,
+  '<!-- bench:end -->',
+].join('\n');
+const readmeUrl = new URL('../README.md', import.meta.url);
+const readme = readFileSync(readmeUrl, 'utf8');
+const [start, end] = [readme.indexOf('<!-- bench:begin -->'), readme.indexOf('<!-- bench:end -->')];
+if (start >= 0 && end > start) {
+  writeFileSync(readmeUrl, readme.slice(0, start) + table + readme.slice(end + '<!-- bench:end -->'.length));
+  console.log('README.md: benchmark table rewritten');
+}

@@ -116,21 +116,35 @@ impl Invariants {
 
     /// As [`Invariants::of`], streaming: no intermediate array of lines is allocated, which
     /// matters at 10⁶ rulings, where first-touch of fresh memory dominates the run time.
-    pub fn from_lines(mut lines: impl ExactSizeIterator<Item = Line>) -> Self {
+    pub fn from_lines(lines: impl ExactSizeIterator<Item = Line>) -> Self {
+        let mut inv = Invariants {
+            angle: Vec::new(),
+            distance: Vec::new(),
+            distribution: Vec::new(),
+            footpoints: Vec::new(),
+            central_normal: Vec::new(),
+            parallel: Vec::new(),
+            striction: Vec::new(),
+            distribution_mean: Vec::new(),
+            perpendicular_midpoints: Vec::new(),
+        };
+        inv.compute_from(lines);
+        inv
+    }
+
+    /// As [`Invariants::from_lines`], into these arrays: their memory is reused (nothing is
+    /// allocated once they are large enough), which is what a zero-copy caller needs — the
+    /// results stay where they were, at the same addresses, call after call.
+    pub fn compute_from(&mut self, mut lines: impl ExactSizeIterator<Item = Line>) {
         let pairs = lines.len().saturating_sub(1);
         let interior = lines.len().saturating_sub(2);
-        let mut inv = Invariants {
-            angle: Vec::with_capacity(pairs),
-            distance: Vec::with_capacity(pairs),
-            distribution: Vec::with_capacity(pairs),
-            footpoints: Vec::with_capacity(2 * pairs),
-            central_normal: Vec::with_capacity(pairs),
-            parallel: Vec::with_capacity(pairs),
-            striction: Vec::with_capacity(interior),
-            distribution_mean: Vec::with_capacity(interior),
-            perpendicular_midpoints: Vec::with_capacity(pairs),
-        };
-        let Some(mut prev) = lines.next() else { return inv };
+        let inv = self;
+        macro_rules! reset {
+            ($($v:ident: $n:expr),*) => {$( inv.$v.clear(); inv.$v.reserve($n); )*};
+        }
+        reset!(angle: pairs, distance: pairs, distribution: pairs, footpoints: 2 * pairs, central_normal: pairs,
+            parallel: pairs, striction: interior, distribution_mean: interior, perpendicular_midpoints: pairs);
+        let Some(mut prev) = lines.next() else { return };
         for (i, line) in lines.enumerate() {
             let p = PairInvariants::of(&prev, &line);
             prev = line;
@@ -151,7 +165,6 @@ impl Invariants {
             inv.parallel.push(p.is_parallel());
             inv.perpendicular_midpoints.push(0.5 * (f0 + f1));
         }
-        inv
     }
 
     /// The invariants of a *closed* discrete ruled surface, whose last ruling R_{N−1} is followed
@@ -159,16 +172,23 @@ impl Invariants {
     /// pairs (the last one is (R_{N−1}, R_0)) and N interior rulings, so `striction[i]` and
     /// `distribution_mean[i]` belong to ruling i itself, and the striction polygon closes.
     pub fn from_lines_closed(lines: &[Line]) -> Self {
+        let mut inv = Self::from_lines(std::iter::empty());
+        inv.compute_from_closed(lines);
+        inv
+    }
+
+    /// As [`Invariants::from_lines_closed`], into these arrays (see [`Invariants::compute_from`]).
+    pub fn compute_from_closed(&mut self, lines: &[Line]) {
         let n = lines.len();
-        let mut inv = Self::from_lines(lines.iter().chain(lines.first()).copied().collect::<Vec<_>>().into_iter());
+        self.compute_from(lines.iter().chain(lines.first()).copied().collect::<Vec<_>>().into_iter());
+        let inv = self;
         if n < 2 {
-            return inv;
+            return;
         }
         // m_0 = (f_{0,N−1} + f_{0,1})/2: f_{0,N−1} is the foot on R_0 of the last pair.
         let f_last = inv.footpoints[2 * n - 1];
         inv.striction.insert(0, 0.5 * (f_last + inv.footpoints[0]));
         inv.distribution_mean.insert(0, 0.5 * (inv.distribution[n - 1] + inv.distribution[0]));
-        inv
     }
 
     /// A `DVec3` slice as its flat `f64` coordinates, without copying.
@@ -211,6 +231,26 @@ mod tests {
             // the gorge circle z = 0, radius 1, at the ruling's own point (by symmetry)
             assert_near!(closed.striction[i], lines[i].point, 1e-12);
         }
+    }
+
+    /// The in-place path gives the same numbers as a fresh computation, and once its arrays
+    /// are large enough it keeps them where they are (the zero-copy views rely on that).
+    #[test]
+    fn computing_into_reuses_the_arrays() {
+        let lines = |n: usize, twist: f64| -> Vec<Line> {
+            (0..n)
+                .map(|i| line([i as f64 * 0.1, 0.0, 0.0], [0.0, (twist * i as f64).cos(), (twist * i as f64).sin()]))
+                .collect()
+        };
+        let mut inv = Invariants::from_lines(lines(50, 0.2).into_iter());
+        let (angle, feet) = (inv.angle.as_ptr(), inv.footpoints.as_ptr());
+        for (n, twist) in [(50, 0.3), (20, 0.1), (50, 0.25)] {
+            inv.compute_from(lines(n, twist).into_iter());
+            assert_eq!(inv, Invariants::from_lines(lines(n, twist).into_iter()));
+            assert_eq!((inv.angle.as_ptr(), inv.footpoints.as_ptr()), (angle, feet));
+        }
+        inv.compute_from_closed(&lines(12, 0.4));
+        assert_eq!(inv, Invariants::from_lines_closed(&lines(12, 0.4)));
     }
 
     #[test]

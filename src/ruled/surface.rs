@@ -123,6 +123,16 @@ impl RuledSurface {
         Invariants::from_lines_closed(&self.lines().collect::<Vec<_>>())
     }
 
+    /// The invariants (closed or open) written into `out`, reusing its memory: the zero-copy
+    /// path of the wasm API keeps `out` in wasm memory and hands out views of its arrays.
+    pub fn invariants_into(&self, out: &mut Invariants, closed: bool) {
+        if closed {
+            out.compute_from_closed(&self.lines().collect::<Vec<_>>());
+        } else {
+            out.compute_from(self.lines());
+        }
+    }
+
     /// The unit directions e_i = (b_i − a_i)/|b_i − a_i|.
     pub fn directions(&self) -> Vec<DVec3> {
         self.lines().map(|l| l.dir).collect()

@@ -165,6 +165,44 @@ test('the TypeScript declarations type the results', () => {
   assert.doesNotMatch(api, /[:<,|(]\s*any\b|\bany\[\]/);
 });
 
+test('invariantsInPlace: views of wasm memory with the numbers of invariants(), reused in place, detached (never wrong) once memory grows', () => {
+  const a = ruledlab.AnalyticSurface.byName('quartic');
+  const s1 = a.sample(40);
+  const s2 = a.sample(40, { vMin: -2, vMax: 0.5 });
+  const buffer = new ruledlab.InvariantsBuffer();
+  try {
+    assert.equal(buffer.angle.length, 0);
+    s1.invariantsInPlace(buffer);
+    const fresh = s1.invariants();
+    for (const [k, v] of Object.entries(fresh)) assert.deepEqual(buffer[k], v, k);
+    const first = buffer.footpoints;
+    // the next computation of the same size writes to the same place
+    s2.invariantsInPlace(buffer);
+    assert.equal(buffer.footpoints.byteOffset, first.byteOffset);
+    assert.deepEqual(first, s2.invariants().footpoints, 'an old view shows the new numbers');
+    // closed surfaces too
+    const ring = a.sample(12, { uMin: 0, uMax: 2 * Math.PI, closed: true });
+    ring.invariantsInPlace(buffer, { closed: true });
+    assert.deepEqual(buffer.striction, ring.invariants({ closed: true }).striction);
+    ring.free();
+    // memory growth detaches every view: it then reads as empty, never as other numbers
+    const view = buffer.striction;
+    assert.ok(view.length > 0);
+    const rulings = Math.ceil(view.buffer.byteLength / 48) + 1000;
+    const big = a.sample(Math.min(rulings, 4_000_000));
+    assert.equal(view.length, 0, 'detached by the growth');
+    assert.equal(buffer.striction.length, 3 * 12, 'a fresh view reads the numbers again');
+    big.free();
+    assert.throws(() => s1.invariantsInPlace(buffer, { open: true }), /invariantsInPlace: unknown option "open"; known options: closed/);
+    assert.throws(() => s1.invariantsInPlace(/** @type {any} */ ({})), (e) => e.code === 'invalid-argument');
+  } finally {
+    buffer.free();
+    s1.free();
+    s2.free();
+    a.free();
+  }
+});
+
 test('invariantsInto refills the arrays of an earlier result without allocating new ones', () => {
   const a = ruledlab.AnalyticSurface.byName('quartic');
   const s1 = a.sample(40);

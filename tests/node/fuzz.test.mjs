@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab from './load.mjs';
 
-const { RuledSurface, AnalyticSurface, LineCongruence, AnalyticCongruence, ToolPath, subdividePolygon, importSegments, meshNormalsF32, linearComplex } = ruledlab;
+const { RuledSurface, AnalyticSurface, InvariantsBuffer, LineCongruence, AnalyticCongruence, ToolPath, subdividePolygon, importSegments, meshNormalsF32, linearComplex } = ruledlab;
 
 let seed = Number(process.env.FUZZ_SEED ?? 12345);
 const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
@@ -114,6 +114,16 @@ const CALLS = [
   (f) => RuledSurface.fromSegments(value()),
   (f) => f.surface.invariants(),
   (f) => f.surface.invariantsInto(pick([value(), f.surface.invariants(), {}])),
+  (f) => {
+    const buffer = new InvariantsBuffer();
+    try {
+      f.surface.invariantsInPlace(buffer, pick([undefined, value(), options()]));
+      return buffer.striction.length;
+    } finally {
+      buffer.free();
+    }
+  },
+  (f) => f.surface.invariantsInPlace(value()),
   (f) => f.surface.hinge(value()),
   (f) => f.surface.hinge(new Float64Array(Math.max(f.surface.length - 2, 0)).map(() => pick(NUMBERS))),
   (f) => f.surface.bend(pick([...NUMBERS, value()])),
