@@ -56,9 +56,11 @@ impl RuledSurface {
     }
 
     fn checked_lengths(points: Vec<DVec3>) -> Result<Self> {
+        // |b − a| ≤ rel · max(|a|, |b|), compared squared: no square roots in this pass
+        let rel2 = ZERO_LENGTH_REL * ZERO_LENGTH_REL;
         for (i, ab) in points.chunks_exact(2).enumerate() {
-            let len = (ab[1] - ab[0]).length();
-            if len <= ZERO_LENGTH_REL * ab[0].length().max(ab[1].length()) {
+            let len2 = (ab[1] - ab[0]).length_squared();
+            if len2 <= rel2 * ab[0].length_squared().max(ab[1].length_squared()) {
                 return Err(Error::ZeroLength { ruling: i });
             }
         }

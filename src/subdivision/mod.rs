@@ -28,7 +28,10 @@ impl<T: Copy + Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>> Affine 
 
 /// Two points refined with the same weights: both endpoints of a ruling (a strip is a polygon
 /// of pairs), or the real and dual parts of a line.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// Laid out as two `DVec3`s, so a surface's endpoints a_0, b_0, a_1, … *are* a slice of pairs
+/// and a refined polygon of pairs becomes the endpoints of the new surface without a copy.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct Pair(pub DVec3, pub DVec3);
 
 impl Add for Pair {

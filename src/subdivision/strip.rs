@@ -26,12 +26,16 @@ pub fn subdivide_strip(surface: &RuledSurface, scheme: Scheme, closed: bool, ste
         return Ok(s);
     }
     let bezier_degree = surface.len() - 1;
-    // the strip as one polygon of endpoint pairs: no separate boundary copies
-    let mut pairs: Vec<Pair> = surface.points().chunks_exact(2).map(|ab| Pair(ab[0], ab[1])).collect();
-    for _ in 0..steps {
+    if steps == 0 {
+        return Ok(surface.clone());
+    }
+    // the strip as one polygon of endpoint pairs, read in place (the endpoints are laid out as
+    // pairs) and handed to the new surface without a copy
+    let mut pairs = polygon_step(bytemuck::cast_slice::<DVec3, Pair>(surface.points()), scheme, closed, bezier_degree);
+    for _ in 1..steps {
         pairs = polygon_step(&pairs, scheme, closed, bezier_degree);
     }
-    RuledSurface::from_points(pairs.into_iter().flat_map(|p| [p.0, p.1]).collect())
+    RuledSurface::from_points(bytemuck::allocation::cast_vec(pairs))
 }
 
 /// The segments re-cut to length `length` (default: the mean segment length), centred on the
