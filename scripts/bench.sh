@@ -7,3 +7,4 @@ bash scripts/setup.sh
 bash scripts/build.sh
 cargo bench --bench invariants --bench subdivision --bench congruence
 node bench/wasm.mjs
+node bench/page.mjs

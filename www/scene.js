@@ -72,6 +72,9 @@
  *   facet shading turns into moiré
  * @property {boolean} [closed]      polyline: join the last point to the first
  * @property {Float32Array | Float64Array} [transform]   4 × 4 model matrix, column-major
+ * @property {Layer} [moving]       a lighter stand-in drawn while the camera moves (a level of
+ *   detail for layers too heavy to redraw at display rate); the layer itself is drawn again
+ *   once the camera rests
  *
  * A label anchored to a 3D point (plain text; `_{…}` marks a subscript).
  * @typedef {object} Label

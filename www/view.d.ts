@@ -65,6 +65,8 @@ export interface Layer {
   normals?: Float32Array;
   closed?: boolean;
   transform?: Float32Array | Float64Array;
+  /** A lighter stand-in drawn while the camera moves (level of detail); the layer once it rests. */
+  moving?: Layer;
 }
 
 export interface Label {

@@ -66,6 +66,9 @@ function crossing(/** @type {{x: number, y: number, w: number, h: number}} */ bo
   return inside / 13;
 }
 
+/** How long the camera must rest before the layers with a stand-in are drawn in full (ms). */
+const REST = 180;
+
 export class Viewer {
   /**
    * @param {HTMLCanvasElement} canvas
@@ -78,6 +81,14 @@ export class Viewer {
     this.camera = new OrbitCamera();
     /** @type {Batch[]} */
     this.batches = [];
+    /** @type {Array<Batch | null>} the stand-ins of the layers that have one (Layer.moving) */
+    this.light = [];
+    /** Whether the camera is moving: the stand-ins are drawn. */
+    this.moving = false;
+    /** Time between the last two frames drawn in a row (ms): a rest must be longer. */
+    this.frameGap = 0;
+    this.lastFrameAt = 0;
+    this.restTimer = 0;
     /** @type {import('./scene.js').Built | null} */
     this.built = null;
     this.frames = 0;
@@ -95,6 +106,7 @@ export class Viewer {
       e.preventDefault();
       this.lost = true;
       this.batches = [];
+      this.light = [];
     };
     this.onRestored = () => {
       this.lost = false;
@@ -104,6 +116,7 @@ export class Viewer {
     canvas.addEventListener('webglcontextlost', this.onLost);
     canvas.addEventListener('webglcontextrestored', this.onRestored);
     this.camera.attach(canvas, (ended) => {
+      this.moved();
       this.requestRender();
       this.onCameraChange?.(ended);
     });
@@ -141,11 +154,30 @@ export class Viewer {
       ...(this.built?.labels ?? []).map(({ text }) => appendRich(Object.assign(document.createElement('span'), { className: 'rl-label' }), text)),
     );
     this.batches.forEach((b) => b.dispose(gl));
+    this.light.forEach((b) => b?.dispose(gl));
     this.batches = [];
+    this.light = [];
     if (this.built && !this.lost && !this.disposed) {
-      for (const layer of this.built.layers) this.batches.push(batch(gl, layer));
+      for (const layer of this.built.layers) {
+        this.batches.push(batch(gl, layer));
+        this.light.push(layer.moving ? batch(gl, layer.moving) : null);
+      }
     }
     this.requestRender();
+  }
+
+  /**
+   * The camera moved: draw the stand-ins until it has rested for REST ms (or two frame times,
+   * when frames are slower than that), then everything.
+   */
+  moved() {
+    if (!this.light.some(Boolean)) return;
+    this.moving = true;
+    clearTimeout(this.restTimer);
+    this.restTimer = window.setTimeout(() => {
+      this.moving = false;
+      this.requestRender();
+    }, Math.max(REST, 2 * this.frameGap));
   }
 
   requestRender() {
@@ -166,8 +198,11 @@ export class Viewer {
     return { viewProj: this.camera.viewProj(width / height), eye: this.camera.eye, width, height, dpr };
   }
 
-  /** Draws now; `scale` renders at that many pixels per CSS pixel (figure export). */
-  render({ scale = window.devicePixelRatio || 1 } = {}) {
+  /**
+   * Draws now; `scale` renders at that many pixels per CSS pixel, `full` every layer in full
+   * detail even while the camera moves (both for figure export).
+   */
+  render({ scale = window.devicePixelRatio || 1, full = false } = {}) {
     const { gl, canvas } = this;
     if (this.lost || this.disposed || gl.isContextLost()) return;
     const frame = this.frame(scale);
@@ -183,9 +218,17 @@ export class Viewer {
     gl.depthFunc(gl.LEQUAL);
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+    const moving = !full && this.moving;
+    // the time between frames drawn in a row (a rest must be longer than that)
+    const now = performance.now();
+    if (now - this.lastFrameAt < 2000) this.frameGap = now - this.lastFrameAt;
+    this.lastFrameAt = now;
     for (const transparent of [false, true]) {
       gl.depthMask(!transparent);
-      for (const b of this.batches) if (!!b.transparent === transparent) b.draw(gl, frame);
+      this.batches.forEach((full, i) => {
+        const b = (moving && this.light[i]) || full;
+        if (!!b.transparent === transparent) b.draw(gl, frame);
+      });
     }
     gl.depthMask(true);
     this.placeLabels(frame.viewProj);
@@ -251,7 +294,10 @@ export class Viewer {
     if (this.disposed) return;
     const gl = this.gl;
     this.batches.forEach((b) => b.dispose(gl));
+    this.light.forEach((b) => b?.dispose(gl));
+    clearTimeout(this.restTimer);
     this.batches = [];
+    this.light = [];
     forgetPrograms(gl);
     this.resize.disconnect();
     this.canvas.removeEventListener('webglcontextlost', this.onLost);

@@ -14,7 +14,7 @@ export async function png(stage, { scale = 1, legend = true } = {}) {
   const out = document.createElement('canvas');
   [out.width, out.height] = [Math.round(w * scale), Math.round(h * scale)];
   const ctx = /** @type {CanvasRenderingContext2D} */ (out.getContext('2d'));
-  viewer.render({ scale });
+  viewer.render({ scale, full: true });
   ctx.drawImage(canvas, 0, 0, out.width, out.height);
   viewer.render();
   ctx.scale(scale, scale);

@@ -10,8 +10,28 @@ import { stripIndices } from '../gl/mesh.js';
 const WORKER_THRESHOLD = 50_000;
 /** Most rulings drawn as a strip (a level of detail above it). */
 const DRAW_LIMIT = 100_000;
+/**
+ * Most rulings in the strip drawn while the camera moves (a lighter stand-in, Layer.moving):
+ * enough for a moving picture, light enough for software WebGL (bench/page.mjs); the full
+ * strip returns as soon as the camera rests.
+ */
+const MOVING_LIMIT = 2_000;
 /** Most rulings drawn as lines: a few pixels apart in a full view; more would merge into a moiré. */
 const LINE_LIMIT = 160;
+
+/**
+ * The strip with every k-th ruling of `segments`, at most MOVING_LIMIT, to draw while the
+ * camera moves; undefined when the strip is light enough already.
+ * @param {Float32Array} segments
+ * @returns {import('../scene.js').Layer | undefined}
+ */
+function movingStrip(segments) {
+  const every = Math.ceil(segments.length / 6 / MOVING_LIMIT);
+  if (every <= 1) return undefined;
+  const coarse = scoped((own) => own(RuledSurface.fromSegments(segments)).everyF32(every));
+  const indices = stripIndices(coarse.length / 6);
+  return { kind: 'mesh', style: 'stripOpaque', positions: coarse, indices, normals: meshNormalsF32(coarse, indices) };
+}
 
 /**
  * @param {Float32Array} segments
@@ -25,7 +45,7 @@ function picture(segments, rulings, drawRulings, { t }) {
   const indices = stripIndices(drawn);
   // thousands of rulings put several facets in a pixel: shaded by vertex normals, not by facet
   /** @type {import('../scene.js').Layer[]} */
-  const layers = [{ kind: 'mesh', style: 'stripOpaque', positions: segments, indices, normals: meshNormalsF32(segments, indices) }];
+  const layers = [{ kind: 'mesh', style: 'stripOpaque', positions: segments, indices, normals: meshNormalsF32(segments, indices), moving: movingStrip(segments) }];
   const every = Math.ceil(drawn / LINE_LIMIT);
   let lines = 0;
   if (drawRulings) {
