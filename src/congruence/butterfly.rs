@@ -25,22 +25,26 @@
 //! So cubic data are reproduced up to the boundary.
 
 use crate::subdivision::four_point::ghost;
+use crate::subdivision::Affine;
+#[cfg(test)]
 use glam::DVec3;
 
 /// The grid with a ring of ghost points: (rows + 2) × (cols + 2), p_{i,j} at (i + 1, j + 1).
-struct Extended {
+/// Generic over what is refined: points, or the pairs (p, q) of a congruence's lines, so both
+/// director grids are refined in one pass.
+struct Extended<T> {
     cols: usize,
-    data: Vec<DVec3>,
+    data: Vec<T>,
 }
 
-impl Extended {
-    fn new(p: &[DVec3], rows: usize, cols: usize) -> Self {
+impl<T: Affine> Extended<T> {
+    fn new(p: &[T], rows: usize, cols: usize) -> Self {
         let (er, ec) = (rows + 2, cols + 2);
-        let mut data = vec![DVec3::ZERO; er * ec];
+        let mut data = vec![p[0]; er * ec];
         for i in 0..rows {
             data[(i + 1) * ec + 1..(i + 1) * ec + 1 + cols].copy_from_slice(&p[i * cols..(i + 1) * cols]);
         }
-        let take = |f: &dyn Fn(usize) -> DVec3, n: usize| (0..n.min(4)).map(f).collect::<Vec<_>>();
+        let take = |f: &dyn Fn(usize) -> T, n: usize| (0..n.min(4)).map(f).collect::<Vec<_>>();
         for j in 1..=cols {
             data[j] = ghost(&take(&|k| data[(k + 1) * ec + j], rows));
             data[(rows + 1) * ec + j] = ghost(&take(&|k| data[(rows - k) * ec + j], rows));
@@ -53,32 +57,32 @@ impl Extended {
     }
 
     /// p_{i,j} for −1 ≤ i ≤ rows, −1 ≤ j ≤ cols.
-    fn at(&self, i: isize, j: isize) -> DVec3 {
+    fn at(&self, i: isize, j: isize) -> T {
         self.data[(i + 1) as usize * self.cols + (j + 1) as usize]
     }
 }
 
 /// Rule (16) on the diagonal edge (i, j)–(i + 1, j + 1).
-fn diagonal(e: &Extended, i: isize, j: isize, w: f64) -> DVec3 {
-    0.5 * (e.at(i, j) + e.at(i + 1, j + 1)) + 2.0 * w * (e.at(i + 1, j) + e.at(i, j + 1))
-        - w * (e.at(i, j - 1) + e.at(i - 1, j) + e.at(i + 1, j + 2) + e.at(i + 2, j + 1))
+fn diagonal<T: Affine>(e: &Extended<T>, i: isize, j: isize, w: f64) -> T {
+    (e.at(i, j) + e.at(i + 1, j + 1)) * 0.5 + (e.at(i + 1, j) + e.at(i, j + 1)) * (2.0 * w)
+        - (e.at(i, j - 1) + e.at(i - 1, j) + e.at(i + 1, j + 2) + e.at(i + 2, j + 1)) * w
 }
 
-fn u_edge(e: &Extended, i: isize, j: isize, w: f64) -> DVec3 {
-    0.5 * (e.at(i, j) + e.at(i + 1, j)) + 2.0 * w * (e.at(i + 1, j + 1) + e.at(i, j - 1))
-        - w * (e.at(i, j + 1) + e.at(i + 2, j + 1) + e.at(i - 1, j - 1) + e.at(i + 1, j - 1))
+fn u_edge<T: Affine>(e: &Extended<T>, i: isize, j: isize, w: f64) -> T {
+    (e.at(i, j) + e.at(i + 1, j)) * 0.5 + (e.at(i + 1, j + 1) + e.at(i, j - 1)) * (2.0 * w)
+        - (e.at(i, j + 1) + e.at(i + 2, j + 1) + e.at(i - 1, j - 1) + e.at(i + 1, j - 1)) * w
 }
 
-fn v_edge(e: &Extended, i: isize, j: isize, w: f64) -> DVec3 {
-    0.5 * (e.at(i, j) + e.at(i, j + 1)) + 2.0 * w * (e.at(i + 1, j + 1) + e.at(i - 1, j))
-        - w * (e.at(i + 1, j) + e.at(i + 1, j + 2) + e.at(i - 1, j - 1) + e.at(i - 1, j + 1))
+fn v_edge<T: Affine>(e: &Extended<T>, i: isize, j: isize, w: f64) -> T {
+    (e.at(i, j) + e.at(i, j + 1)) * 0.5 + (e.at(i + 1, j + 1) + e.at(i - 1, j)) * (2.0 * w)
+        - (e.at(i + 1, j) + e.at(i + 1, j + 2) + e.at(i - 1, j - 1) + e.at(i - 1, j + 1)) * w
 }
 
 /// One butterfly step on a rows × cols point grid: (2 rows − 1) × (2 cols − 1) points.
-pub fn refine_points(p: &[DVec3], rows: usize, cols: usize, w: f64) -> Vec<DVec3> {
+pub fn refine_points<T: Affine>(p: &[T], rows: usize, cols: usize, w: f64) -> Vec<T> {
     let e = Extended::new(p, rows, cols);
     let (rr, cc) = (2 * rows - 1, 2 * cols - 1);
-    let mut out = vec![DVec3::ZERO; rr * cc];
+    let mut out = vec![p[0]; rr * cc];
     for i in 0..rows {
         for j in 0..cols {
             let (ii, jj) = (i as isize, j as isize);
@@ -98,7 +102,7 @@ pub fn refine_points(p: &[DVec3], rows: usize, cols: usize, w: f64) -> Vec<DVec3
 }
 
 /// The paper's insertion of Fig. 13: only the diagonal points (16), (rows − 1) × (cols − 1).
-pub fn diagonal_points(p: &[DVec3], rows: usize, cols: usize, w: f64) -> Vec<DVec3> {
+pub fn diagonal_points<T: Affine>(p: &[T], rows: usize, cols: usize, w: f64) -> Vec<T> {
     let e = Extended::new(p, rows, cols);
     (0..rows - 1)
         .flat_map(|i| (0..cols - 1).map(move |j| (i, j)))

@@ -45,9 +45,27 @@ impl LineCongruence {
         Self::checked(rows, cols, points)
     }
 
+    /// From endpoints p_{i,j}, q_{i,j} interleaved (p then q per line, row-major), validated;
+    /// the vector becomes the congruence's storage without a copy.
+    pub fn from_interleaved(rows: usize, cols: usize, points: Vec<DVec3>) -> Result<Self> {
+        check_shape(rows, cols)?;
+        if points.len() != 2 * rows * cols {
+            return Err(Error::parameter("points", "need one p and one q per line"));
+        }
+        check_coordinates(bytemuck::cast_slice(&points), 6)?;
+        Self::checked(rows, cols, points)
+    }
+
+    /// p then q for each line, row-major (a view).
+    pub fn points(&self) -> &[DVec3] {
+        &self.points
+    }
+
     fn checked(rows: usize, cols: usize, points: Vec<DVec3>) -> Result<Self> {
+        // |q − p| ≤ rel · max(|p|, |q|), compared squared: no square roots in this pass
+        let rel2 = ZERO_LENGTH_REL * ZERO_LENGTH_REL;
         for (k, pq) in points.chunks_exact(2).enumerate() {
-            if (pq[1] - pq[0]).length() <= ZERO_LENGTH_REL * pq[0].length().max(pq[1].length()) {
+            if (pq[1] - pq[0]).length_squared() <= rel2 * pq[0].length_squared().max(pq[1].length_squared()) {
                 return Err(Error::degenerate(
                     "coords",
                     format!("line ({}, {}) has zero length (p = q), so it has no direction", k / cols, k % cols),

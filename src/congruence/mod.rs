@@ -9,6 +9,7 @@ pub use focal::{Focal, FocalKind};
 pub use grid::LineCongruence;
 
 use crate::error::{Error, Result};
+use crate::subdivision::Pair;
 use crate::tolerance::MAX_RULINGS;
 
 /// How to refine a congruence.
@@ -66,10 +67,12 @@ pub fn subdivide(c: &LineCongruence, scheme: CongruenceScheme, steps: usize) -> 
     for _ in 0..steps {
         out = match scheme {
             CongruenceScheme::Butterfly { w } => {
+                // both director grids at once: the lines' (p, q) pairs, read in place and handed
+                // to the new congruence without a copy
                 let (r, cc) = (out.rows(), out.cols());
-                let p = butterfly::refine_points(&out.p(), r, cc, w);
-                let q = butterfly::refine_points(&out.q(), r, cc, w);
-                LineCongruence::from_points(2 * r - 1, 2 * cc - 1, &p, &q)?
+                let pairs: &[Pair] = bytemuck::cast_slice(out.points());
+                let refined = butterfly::refine_points(pairs, r, cc, w);
+                LineCongruence::from_interleaved(2 * r - 1, 2 * cc - 1, bytemuck::allocation::cast_vec(refined))?
             }
             CongruenceScheme::TwoStage { k } => variational::two_stage(&out, k, variational::EdgeScheme::Coupled)?,
             CongruenceScheme::Paper { k } => variational::two_stage(&out, k, variational::EdgeScheme::Literal)?,
