@@ -103,69 +103,107 @@ struct Umbrella {
 }
 
 impl Umbrella {
-    /// u = L x.
+    /// u = L x: interior rows as slices (three rows at a time), then the boundary lines.
     fn apply(&self, x: &[DVec3], u: &mut [DVec3]) {
         let (r, c) = (self.rows, self.cols);
-        for i in 0..r {
-            for j in 0..c {
-                let k = i * c + j;
-                let (top, bottom, left, right) = (i == 0, i == r - 1, j == 0, j == c - 1);
-                u[k] = match (top || bottom, left || right) {
-                    (false, false) => {
-                        let ring = x[k - c - 1]
-                            + x[k - c]
-                            + x[k - c + 1]
-                            + x[k - 1]
-                            + x[k + 1]
-                            + x[k + c - 1]
-                            + x[k + c]
-                            + x[k + c + 1];
-                        x[k] - ring / 8.0
-                    }
-                    (true, false) => x[k] - 0.5 * (x[k - 1] + x[k + 1]),
-                    (false, true) => x[k] - 0.5 * (x[k - c] + x[k + c]),
-                    (true, true) => DVec3::ZERO,
-                };
+        for i in 1..r - 1 {
+            let (prev, cur, next) = (&x[(i - 1) * c..i * c], &x[i * c..(i + 1) * c], &x[(i + 1) * c..(i + 2) * c]);
+            let out = &mut u[i * c..(i + 1) * c];
+            for j in 1..c - 1 {
+                let ring =
+                    prev[j - 1] + prev[j] + prev[j + 1] + cur[j - 1] + cur[j + 1] + next[j - 1] + next[j] + next[j + 1];
+                out[j] = cur[j] - ring * 0.125;
             }
+            out[0] = cur[0] - 0.5 * (prev[0] + next[0]);
+            out[c - 1] = cur[c - 1] - 0.5 * (prev[c - 1] + next[c - 1]);
+        }
+        for i in [0, r - 1] {
+            let row = &x[i * c..(i + 1) * c];
+            let out = &mut u[i * c..(i + 1) * c];
+            for j in 1..c - 1 {
+                out[j] = row[j] - 0.5 * (row[j - 1] + row[j + 1]);
+            }
+            out[0] = DVec3::ZERO;
+            out[c - 1] = DVec3::ZERO;
         }
     }
 
-    /// y = Lᵀ u.
+    /// y = Lᵀ u. Away from the boundary (two nodes in) the stencil is symmetric, so Lᵀ is
+    /// gathered like L; the band along the boundary is scattered from its sources.
     fn apply_transpose(&self, u: &[DVec3], y: &mut [DVec3]) {
         let (r, c) = (self.rows, self.cols);
-        y.iter_mut().for_each(|v| *v = DVec3::ZERO);
-        for i in 0..r {
-            for j in 0..c {
-                let k = i * c + j;
-                let (top, bottom, left, right) = (i == 0, i == r - 1, j == 0, j == c - 1);
-                let w = u[k];
-                match (top || bottom, left || right) {
-                    (false, false) => {
-                        y[k] += w;
-                        for n in [k - c - 1, k - c, k - c + 1, k - 1, k + 1, k + c - 1, k + c, k + c + 1] {
-                            y[n] -= w / 8.0;
-                        }
+        if r < 5 || c < 5 {
+            return self.scatter_transpose(u, y, |_, _| true, 0);
+        }
+        for i in 2..r - 2 {
+            let (prev, cur, next) = (&u[(i - 1) * c..i * c], &u[i * c..(i + 1) * c], &u[(i + 1) * c..(i + 2) * c]);
+            let out = &mut y[i * c..(i + 1) * c];
+            for j in 2..c - 2 {
+                let ring =
+                    prev[j - 1] + prev[j] + prev[j + 1] + cur[j - 1] + cur[j + 1] + next[j - 1] + next[j] + next[j + 1];
+                out[j] = cur[j] - ring * 0.125;
+            }
+        }
+        let band = |i: usize, j: usize| i < 2 || i >= r - 2 || j < 2 || j >= c - 2;
+        self.scatter_transpose(u, y, band, 2);
+    }
+
+    /// y = Lᵀ u at the nodes where `target(i, j)` holds (the others are left alone), by
+    /// scattering each node's row of L. `depth`: the targets are the nodes within `depth`
+    /// of the boundary (0: every node), so only sources within depth + 1 are visited.
+    fn scatter_transpose(&self, u: &[DVec3], y: &mut [DVec3], target: impl Fn(usize, usize) -> bool, depth: usize) {
+        let (r, c) = (self.rows, self.cols);
+        // the nodes within `reach` of the boundary, row by row (every node when reach is 0)
+        let ring = |reach: usize| {
+            (0..r).flat_map(move |i| {
+                let full = reach == 0 || i < reach || i + reach >= r;
+                let cols: Vec<usize> = if full { (0..c).collect() } else { (0..reach).chain(c - reach..c).collect() };
+                cols.into_iter().map(move |j| (i, j))
+            })
+        };
+        for (i, j) in ring(depth) {
+            if target(i, j) {
+                y[i * c + j] = DVec3::ZERO;
+            }
+        }
+        let mut add = |i: usize, j: usize, v: DVec3| {
+            if target(i, j) {
+                y[i * c + j] += v;
+            }
+        };
+        for (i, j) in ring(if depth == 0 { 0 } else { depth + 1 }) {
+            let w = u[i * c + j];
+            let (edge_i, edge_j) = (i == 0 || i == r - 1, j == 0 || j == c - 1);
+            match (edge_i, edge_j) {
+                (false, false) => {
+                    add(i, j, w);
+                    for (a, b) in [
+                        (i - 1, j - 1),
+                        (i - 1, j),
+                        (i - 1, j + 1),
+                        (i, j - 1),
+                        (i, j + 1),
+                        (i + 1, j - 1),
+                        (i + 1, j),
+                        (i + 1, j + 1),
+                    ] {
+                        add(a, b, -0.125 * w);
                     }
-                    (true, false) => {
-                        y[k] += w;
-                        y[k - 1] -= 0.5 * w;
-                        y[k + 1] -= 0.5 * w;
-                    }
-                    (false, true) => {
-                        y[k] += w;
-                        y[k - c] -= 0.5 * w;
-                        y[k + c] -= 0.5 * w;
-                    }
-                    (true, true) => {}
                 }
+                (true, false) => {
+                    add(i, j, w);
+                    add(i, j - 1, -0.5 * w);
+                    add(i, j + 1, -0.5 * w);
+                }
+                (false, true) => {
+                    add(i, j, w);
+                    add(i - 1, j, -0.5 * w);
+                    add(i + 1, j, -0.5 * w);
+                }
+                (true, true) => {}
             }
         }
     }
-}
-
-/// Whether refined node k is new (not an old line at even, even).
-fn is_new(k: usize, cols: usize) -> bool {
-    (k / cols) % 2 == 1 || (k % cols) % 2 == 1
 }
 
 /// Minimises |L x|² over the new nodes of `x` in place (old nodes fixed), by conjugate
@@ -179,9 +217,10 @@ fn solve_grid(x: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
     let normal = |v: &[DVec3], u: &mut Vec<DVec3>, out: &mut Vec<DVec3>| {
         op.apply(v, u);
         op.apply_transpose(u, out);
-        for (k, o) in out.iter_mut().enumerate() {
-            if !is_new(k, cols) {
-                *o = DVec3::ZERO;
+        // the old lines (even, even) are fixed: no division per node to find them
+        for i in (0..rows).step_by(2) {
+            for j in (0..cols).step_by(2) {
+                out[i * cols + j] = DVec3::ZERO;
             }
         }
     };
@@ -202,14 +241,16 @@ fn solve_grid(x: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
         normal(&p, &mut u, &mut ap);
         let pap = dot(&p, &ap);
         let alpha = DVec3::select(pap.cmpgt(DVec3::ZERO), rr / pap, DVec3::ZERO);
-        for k in 0..n {
-            x[k] += alpha * p[k];
-            r[k] -= alpha * ap[k];
+        // one pass: the update and the new residual norm
+        let mut rr_new = DVec3::ZERO;
+        for ((xk, rk), (pk, apk)) in x.iter_mut().zip(r.iter_mut()).zip(p.iter().zip(&ap)) {
+            *xk += alpha * *pk;
+            *rk -= alpha * *apk;
+            rr_new += *rk * *rk;
         }
-        let rr_new = dot(&r, &r);
         let beta = DVec3::select(rr.cmpgt(DVec3::ZERO), rr_new / rr, DVec3::ZERO);
-        for k in 0..n {
-            p[k] = r[k] + beta * p[k];
+        for (pk, rk) in p.iter_mut().zip(&r) {
+            *pk = *rk + beta * *pk;
         }
         rr = rr_new;
     }
@@ -219,6 +260,54 @@ fn solve_grid(x: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The fast operator and its transpose against their definition: (Lᵀu)·x = u·(Lx) for
+    /// random x, u, and L computed node by node from (20), on small and large grids.
+    #[test]
+    fn umbrella_and_its_transpose_are_adjoint_and_match_the_definition() {
+        let mut seed = 7u64;
+        let mut rnd = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
+        };
+        for (r, c) in [(3, 3), (3, 7), (4, 5), (5, 5), (6, 9), (11, 8)] {
+            let op = Umbrella { rows: r, cols: c };
+            let n = r * c;
+            let x: Vec<DVec3> = (0..n).map(|_| DVec3::new(rnd(), rnd(), rnd())).collect();
+            let v: Vec<DVec3> = (0..n).map(|_| DVec3::new(rnd(), rnd(), rnd())).collect();
+            let (mut lx, mut ltv) = (vec![DVec3::ZERO; n], vec![DVec3::splat(9.0); n]);
+            op.apply(&x, &mut lx);
+            op.apply_transpose(&v, &mut ltv);
+            // L x from (20) node by node
+            for i in 0..r {
+                for j in 0..c {
+                    let at = |a: isize, b: isize| x[(i as isize + a) as usize * c + (j as isize + b) as usize];
+                    let want = match (i == 0 || i == r - 1, j == 0 || j == c - 1) {
+                        (false, false) => {
+                            let ring: DVec3 = [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)]
+                                .iter()
+                                .map(|&(a, b)| at(a, b))
+                                .sum();
+                            at(0, 0) - ring / 8.0
+                        }
+                        (true, false) => at(0, 0) - 0.5 * (at(0, -1) + at(0, 1)),
+                        (false, true) => at(0, 0) - 0.5 * (at(-1, 0) + at(1, 0)),
+                        (true, true) => DVec3::ZERO,
+                    };
+                    assert!((lx[i * c + j] - want).length() < 1e-14, "{r}×{c} L at ({i}, {j})");
+                }
+            }
+            // the gathered interior and scattered band equal Lᵀ scattered everywhere
+            let mut reference = vec![DVec3::ZERO; n];
+            op.scatter_transpose(&v, &mut reference, |_, _| true, 0);
+            for k in 0..n {
+                assert!((ltv[k] - reference[k]).length() < 1e-14, "{r}×{c} Lᵀ at node {k}");
+            }
+            let dot = |a: &[DVec3], b: &[DVec3]| a.iter().zip(b).map(|(p, q)| p.dot(*q)).sum::<f64>();
+            let (left, right) = (dot(&ltv, &x), dot(&v, &lx));
+            assert!((left - right).abs() < 1e-12 * (1.0 + right.abs()), "{r}×{c}: {left} vs {right}");
+        }
+    }
 
     fn congruence(rows: usize, cols: usize, f: impl Fn(f64, f64) -> (DVec3, DVec3)) -> LineCongruence {
         let (p, q): (Vec<DVec3>, Vec<DVec3>) =
