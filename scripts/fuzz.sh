@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Short runs of every fuzz target (cargo fuzz, libFuzzer): scripts/fuzz.sh [seconds per target].
 # cargo-fuzz needs unstable rustc flags: RUSTC_BOOTSTRAP=1 lets the stable toolchain accept them;
-# no sanitizer is needed (the crate forbids unsafe code: the bugs to find are panics). The seed
+# no sanitizer is needed (the core has no unsafe code; the one allowed place is the wasm
+# bindings' views of wasm memory, which the fuzzed native core does not build): the bugs to find
+# are panics. The seed
 # corpora live in fuzz/seeds/; what a run discovers goes to a temporary directory.
 set -euo pipefail
 cd "$(dirname "$0")/../fuzz"

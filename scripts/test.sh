@@ -58,4 +58,4 @@ step "page: Firefox ESR under Xvfb"
 LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1280x1024x24" node tests/firefox/smoke.mjs
 
 step "fuzz: short runs of every cargo-fuzz target"
-bash scripts/fuzz.sh 5
+bash scripts/fuzz.sh 3
