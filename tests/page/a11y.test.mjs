@@ -138,15 +138,20 @@ test('every scene describes itself to screen readers; readouts are announced onc
   assert.equal(await page.evaluate(() => window.__announced), 1, 'pausing announces the readout once');
   const said = await page.evaluate(() => document.querySelector('.rl-stage [aria-live]').textContent);
   assert.match(said, /rulings N: \d+; .*max \|m i − s\(u i\)\|/);
-  // ten slider moves in quick succession: at most two announcements (one now, one a second later)
-  for (let k = 0; k < 10; k++) await control(page, 'n').evaluate((el, v) => {
-    el.value = String(v);
-    el.dispatchEvent(new Event('input', { bubbles: true }));
-    el.dispatchEvent(new Event('change', { bubbles: true }));
-  }, 20 + k);
+  // ten slider moves in quick succession (in one task of the page, so that a loaded machine
+  // cannot spread them out): at most one announcement now and one per second after
+  const spent = await control(page, 'n').evaluate((el) => {
+    const t0 = performance.now();
+    for (let k = 0; k < 10; k++) {
+      /** @type {HTMLInputElement} */ (el).value = String(20 + k);
+      el.dispatchEvent(new Event('input', { bubbles: true }));
+      el.dispatchEvent(new Event('change', { bubbles: true }));
+    }
+    return performance.now() - t0;
+  });
   await page.waitForTimeout(1500);
   const count = await page.evaluate(() => window.__announced);
-  assert.ok(count >= 2 && count <= 3, `${count - 1} announcements for ten quick moves`);
+  assert.ok(count >= 2 && count - 1 <= 2 + Math.floor(spent / 1000), `${count - 1} announcements for ten quick moves in ${spent.toFixed(0)} ms`);
   assert.deepEqual(problems, []);
   await page.close();
 });
