@@ -173,11 +173,18 @@ export class Viewer {
   moved() {
     if (!this.light.some(Boolean)) return;
     this.moving = true;
-    clearTimeout(this.restTimer);
-    this.restTimer = window.setTimeout(() => {
+    const movedAt = this.frames;
+    const rest = () => {
+      // the move has not been drawn yet (a slow frame): rest only after it has
+      if (this.frames === movedAt) {
+        this.restTimer = window.setTimeout(rest, REST);
+        return;
+      }
       this.moving = false;
       this.requestRender();
-    }, Math.max(REST, 2 * this.frameGap));
+    };
+    clearTimeout(this.restTimer);
+    this.restTimer = window.setTimeout(rest, Math.max(REST, 2 * this.frameGap));
   }
 
   requestRender() {
@@ -219,6 +226,8 @@ export class Viewer {
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
     const moving = !full && this.moving;
+    // what this frame shows, for tests and curious readers: the stand-ins or everything
+    this.canvas.dataset.detail = moving && this.light.some(Boolean) ? 'stand-in' : 'full';
     // the time between frames drawn in a row (a rest must be longer than that)
     const now = performance.now();
     if (now - this.lastFrameAt < 2000) this.frameGap = now - this.lastFrameAt;

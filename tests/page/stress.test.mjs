@@ -68,3 +68,24 @@ test('the 1 280 000-ruling link keeps the page answering, finishes, and draws a 
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('while the camera moves a heavy strip is drawn from its lighter stand-in, in full once it rests', async () => {
+  const { page, problems } = await open('#scene=large&n=10000');
+  const canvas = page.locator('.rl-view canvas');
+  assert.equal(await canvas.getAttribute('data-detail'), 'full');
+  await canvas.focus();
+  const frames = await page.evaluate(() => Number(document.body.dataset.frames));
+  await page.keyboard.press('ArrowLeft');
+  await framesAfter(page, frames);
+  assert.equal(await canvas.getAttribute('data-detail'), 'stand-in', 'the frame right after the move uses the stand-in');
+  await page.waitForFunction(() => document.querySelector('.rl-view canvas')?.getAttribute('data-detail') === 'full', null, { timeout: 5000 });
+  // a light scene never switches
+  await page.evaluate(() => (location.hash = '#scene=large&n=1000'));
+  await page.waitForFunction(() => /1,000|1 000|1000/.test(document.querySelector('.rl-readout')?.textContent ?? ''));
+  const f2 = await page.evaluate(() => Number(document.body.dataset.frames));
+  await page.keyboard.press('ArrowLeft');
+  await framesAfter(page, f2);
+  assert.equal(await canvas.getAttribute('data-detail'), 'full');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
