@@ -5,12 +5,17 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use ruledlab::examples::AnalyticSurface;
 use std::hint::black_box;
 
+/// n rulings of Example 1's hyperboloid.
+fn hyperboloid(n: usize) -> ruledlab::ruled::RuledSurface {
+    let hyp = AnalyticSurface::ALL[0].clone();
+    hyp.sample(n, hyp.ranges()).expect("valid sample")
+}
+
 fn invariants(c: &mut Criterion) {
     let mut group = c.benchmark_group("invariants");
     group.sample_size(10);
     for &n in sizes(&[1_000usize, 10_000, 100_000, 1_000_000]) {
-        let hyp = AnalyticSurface::ALL[0].clone();
-        let surface = hyp.sample(n, hyp.ranges()).expect("valid sample");
+        let surface = hyperboloid(n);
         group.throughput(Throughput::Elements(n as u64));
         group.bench_with_input(BenchmarkId::from_parameter(n), &surface, |b, s| b.iter(|| black_box(s.invariants())));
     }
@@ -22,8 +27,7 @@ fn invariants_into(c: &mut Criterion) {
     let mut group = c.benchmark_group("invariants_into");
     group.sample_size(10);
     for &n in sizes(&[1_000usize, 10_000, 100_000, 1_000_000]) {
-        let hyp = AnalyticSurface::ALL[0].clone();
-        let surface = hyp.sample(n, hyp.ranges()).expect("valid sample");
+        let surface = hyperboloid(n);
         let mut out = surface.invariants();
         group.throughput(Throughput::Elements(n as u64));
         group.bench_function(BenchmarkId::from_parameter(n), |b| {
@@ -39,9 +43,8 @@ fn invariants_into(c: &mut Criterion) {
 fn from_flat(c: &mut Criterion) {
     let mut group = c.benchmark_group("validate");
     group.sample_size(10);
-    let hyp = AnalyticSurface::ALL[0].clone();
     let n = *sizes(&[1_000usize, 1_000_000]).last().expect("a size");
-    let flat = hyp.sample(n, hyp.ranges()).expect("valid sample").flat().to_vec();
+    let flat = hyperboloid(n).flat().to_vec();
     group.throughput(Throughput::Elements(n as u64));
     group.bench_function(format!("from_flat/{n}"), |b| {
         b.iter(|| black_box(ruledlab::RuledSurface::from_flat(&flat).expect("valid")))

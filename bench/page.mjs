@@ -3,10 +3,10 @@
 // the camera moves, in full once it rests) and a small figure, in headless Chromium with software WebGL
 // (SwiftShader) on this machine: judge the ratio, not the absolute numbers. A GPU draws the
 // same instanced layers far faster. `node bench/page.mjs` (after npm run build).
-import { readFileSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { chromium } from 'playwright-core';
 import { startServer } from '../scripts/serve.mjs';
+import { rewriteBlock } from '../scripts/readme-block.mjs';
 
 const CASES = [
   ['figure (striction, 36 rulings)', '#scene=striction'],
@@ -57,7 +57,6 @@ console.table(results.map((r) => ({ ...r, 'vs 10³': (Number(r['ms per frame']) 
 // the README's table
 const date = new Date().toISOString().slice(0, 10);
 const block = [
-  '<!-- bench-page:begin -->',
   `<!-- written by bench/page.mjs (npm run bench) on ${date} -->`,
   '',
   `Orbiting in the page (headless Chromium, software WebGL on ${cpus().length} cores, ${date}; judge the ratios):`,
@@ -65,12 +64,5 @@ const block = [
   '| model | ms per frame | vs 10³ rulings |',
   '|---|---:|---:|',
   ...results.map((r) => `| ${r.case} | ${r['ms per frame']} | ${(Number(r['ms per frame']) / base).toFixed(2)} |`),
-  '<!-- bench-page:end -->',
 ].join('\n');
-const readmeUrl = new URL('../README.md', import.meta.url);
-const readme = readFileSync(readmeUrl, 'utf8');
-const [start, end] = [readme.indexOf('<!-- bench-page:begin -->'), readme.indexOf('<!-- bench-page:end -->')];
-if (start >= 0 && end > start) {
-  writeFileSync(readmeUrl, readme.slice(0, start) + block + readme.slice(end + '<!-- bench-page:end -->'.length));
-  console.log('README.md: page benchmark rewritten');
-}
+if (rewriteBlock('bench-page', block)) console.log('README.md: page benchmark rewritten');

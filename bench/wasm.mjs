@@ -14,6 +14,7 @@ import { cpus, totalmem } from 'node:os';
 import { performance } from 'node:perf_hooks';
 import * as ruledlab from '../pkg/ruledlab.js';
 import * as plain from './plainjs.mjs';
+import { rewriteBlock } from '../scripts/readme-block.mjs';
 
 ruledlab.initSync({ module: readFileSync(new URL('../pkg/ruledlab_bg.wasm', import.meta.url)) });
 const { AnalyticSurface, AnalyticCongruence, InvariantsBuffer } = ruledlab;
@@ -148,8 +149,7 @@ for (const [scheme, n, options] of /** @type {const} */ ([
   const [inB, outB] = [48 * n * n, 48 * probe.rows * probe.cols];
   probe.free();
   const ms = median(() => grid.subdivide(options).free(), 3);
-  const input = new Float64Array(inB / 8).fill(1.25), out = new Float64Array(Math.max(inB, outB) / 8);
-  const lim = median(() => (out.set(input), out.fill(0.5, input.length)), 5);
+  const lim = limit(inB, outB).mapped;
   congruence.push({ scheme, grid: `${n}²`, ms, limitMs: lim, ofLimit: ms / lim, outMB: outB / 1e6 });
   grid.free();
 }
@@ -169,7 +169,6 @@ writeFileSync(new URL('./results/wasm.json', import.meta.url), JSON.stringify({ 
 
 // ---- the README's table
 const table = [
-  '<!-- bench:begin -->',
   `<!-- written by bench/wasm.mjs (npm run bench) on ${date}: ${machine} -->`,
   '',
   `Measured ${date} on ${machine}; one process, median of 5–7 runs. "Limit" is the time to write the`,
@@ -187,12 +186,5 @@ const table = [
   '| congruences (Example 5) | wasm ms | output MB | limit ms (mapped) | × limit |',
   '|---|---:|---:|---:|---:|',
   ...congruence.map((r) => `| ${r.scheme}, one step on ${r.grid} lines | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} |`),
-  '<!-- bench:end -->',
 ].join('\n');
-const readmeUrl = new URL('../README.md', import.meta.url);
-const readme = readFileSync(readmeUrl, 'utf8');
-const [start, end] = [readme.indexOf('<!-- bench:begin -->'), readme.indexOf('<!-- bench:end -->')];
-if (start >= 0 && end > start) {
-  writeFileSync(readmeUrl, readme.slice(0, start) + table + readme.slice(end + '<!-- bench:end -->'.length));
-  console.log('README.md: benchmark table rewritten');
-}
+if (rewriteBlock('bench', table)) console.log('README.md: benchmark table rewritten');

@@ -7,6 +7,7 @@ import { start, memoryBytes } from './core.js';
 import { Stage, download } from './stage.js';
 import { SCENES } from './scenes/index.js';
 import { PRESETS, findPreset } from './paper.js';
+import { defaults } from './scene.js';
 import { readState, writeState, linkable } from './state.js';
 import { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
 import { adoptStyles } from './ui/css.js';
@@ -342,7 +343,7 @@ export function iframeSnippet(/** @type {string} */ base, /** @type {string} */ 
  */
 export function elementSnippet(scene, params, lang, script, paper = null) {
   /** @type {import('./scene.js').Params} */
-  const base = { ...Object.fromEntries(scene.params.map((p) => [p.key, p.value])), ...(paper?.params ?? {}) };
+  const base = { ...defaults(scene), ...(paper?.params ?? {}) };
   const q = new URLSearchParams();
   for (const p of scene.params) if (params[p.key] !== base[p.key]) q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : String(params[p.key]));
   const figure = paper ? ` paper="${paper.id}"` : '';

@@ -4,6 +4,7 @@
 // Shared by the page (the "Paper" menu and `#paper=fig3` links), <ruled-view paper="fig3">, the
 // one-file build and the README's table (scripts/paper-table.mjs); tests/node/claims.test.mjs
 // computes every preset, tests/page/paper.test.mjs opens each.
+import { defaults } from './scene.js';
 
 /**
  * One figure or example of the paper.
@@ -78,6 +79,6 @@ export function withPreset(preset, scene, query) {
  * @param {import('./scene.js').Params} params
  */
 export function atPreset(preset, scene, params) {
-  const full = { ...Object.fromEntries(scene.params.map((p) => [p.key, p.value])), ...preset.params };
+  const full = { ...defaults(scene), ...preset.params };
   return scene.params.every((p) => p.unless?.(params) || full[p.key] === params[p.key]);
 }

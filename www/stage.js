@@ -306,6 +306,8 @@ export class Stage {
         this.enter(this.scene, { ...defaults(this.scene), ...preset.params }, { fit: true });
         this.options.onChange?.({ reason: 'param', ended: true });
         this.announce();
+        // the button is gone with the change: keep the keyboard in the controls
+        /** @type {HTMLElement | null} */ (this.form.querySelector('[name]'))?.focus();
       });
       changed.append(back);
       card.append(changed);

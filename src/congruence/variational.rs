@@ -103,17 +103,28 @@ struct Umbrella {
 }
 
 impl Umbrella {
-    /// u = L x: interior rows as slices (three rows at a time), then the boundary lines.
-    fn apply(&self, x: &[DVec3], u: &mut [DVec3]) {
+    /// out = x − (mean of the 8 neighbours) (20) at the nodes at least `margin` ≥ 1 nodes from
+    /// the boundary, three rows of slices at a time; the other nodes are left alone.
+    fn ring(&self, x: &[DVec3], out: &mut [DVec3], margin: usize) {
         let (r, c) = (self.rows, self.cols);
-        for i in 1..r - 1 {
+        for i in margin..r - margin {
             let (prev, cur, next) = (&x[(i - 1) * c..i * c], &x[i * c..(i + 1) * c], &x[(i + 1) * c..(i + 2) * c]);
-            let out = &mut u[i * c..(i + 1) * c];
-            for j in 1..c - 1 {
+            let out = &mut out[i * c..(i + 1) * c];
+            for j in margin..c - margin {
                 let ring =
                     prev[j - 1] + prev[j] + prev[j + 1] + cur[j - 1] + cur[j + 1] + next[j - 1] + next[j] + next[j + 1];
                 out[j] = cur[j] - ring * 0.125;
             }
+        }
+    }
+
+    /// u = L x: the interior by `ring`, then the boundary lines.
+    fn apply(&self, x: &[DVec3], u: &mut [DVec3]) {
+        let (r, c) = (self.rows, self.cols);
+        self.ring(x, u, 1);
+        for i in 1..r - 1 {
+            let (prev, cur, next) = (&x[(i - 1) * c..i * c], &x[i * c..(i + 1) * c], &x[(i + 1) * c..(i + 2) * c]);
+            let out = &mut u[i * c..(i + 1) * c];
             out[0] = cur[0] - 0.5 * (prev[0] + next[0]);
             out[c - 1] = cur[c - 1] - 0.5 * (prev[c - 1] + next[c - 1]);
         }
@@ -135,15 +146,7 @@ impl Umbrella {
         if r < 5 || c < 5 {
             return self.scatter_transpose(u, y, |_, _| true, 0);
         }
-        for i in 2..r - 2 {
-            let (prev, cur, next) = (&u[(i - 1) * c..i * c], &u[i * c..(i + 1) * c], &u[(i + 1) * c..(i + 2) * c]);
-            let out = &mut y[i * c..(i + 1) * c];
-            for j in 2..c - 2 {
-                let ring =
-                    prev[j - 1] + prev[j] + prev[j + 1] + cur[j - 1] + cur[j + 1] + next[j - 1] + next[j] + next[j + 1];
-                out[j] = cur[j] - ring * 0.125;
-            }
-        }
+        self.ring(u, y, 2);
         let band = |i: usize, j: usize| i < 2 || i >= r - 2 || j < 2 || j >= c - 2;
         self.scatter_transpose(u, y, band, 2);
     }

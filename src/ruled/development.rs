@@ -144,15 +144,20 @@ mod tests {
     use crate::assert_near;
     use crate::tolerance::test::EXACT;
 
-    #[test]
-    fn heights_are_running_sums_of_h() {
-        let s = RuledSurface::from_flat(&[
+    /// Four skew rulings in general position.
+    fn four_skew_rulings() -> RuledSurface {
+        RuledSurface::from_flat(&[
             0.0, 0.0, 0.0, 1.0, 0.0, 0.0, //
-            0.0, 0.0, 1.0, 0.0, 1.0, 1.0, //
+            0.0, 0.1, 1.0, 0.0, 1.0, 1.0, //
             0.3, 0.0, 2.5, 1.0, 1.0, 2.0, //
             0.0, 0.4, 3.0, 0.0, -1.0, 3.7,
         ])
-        .unwrap();
+        .unwrap()
+    }
+
+    #[test]
+    fn heights_are_running_sums_of_h() {
+        let s = four_skew_rulings();
         let dev = Development::of(&s);
         // the frame maps a_0 to the origin and e_0 to the x-axis
         let m = Frame::of(&s).world_to_frame();
@@ -204,13 +209,7 @@ mod tests {
 
     #[test]
     fn envelope_radii_move_with_rigid_motions_and_flip_with_the_orientation() {
-        let s = RuledSurface::from_flat(&[
-            0.0, 0.0, 0.0, 1.0, 0.0, 0.0, //
-            0.0, 0.1, 1.0, 0.0, 1.0, 1.0, //
-            0.3, 0.0, 2.5, 1.0, 1.0, 2.0, //
-            0.0, 0.4, 3.0, 0.0, -1.0, 3.7,
-        ])
-        .unwrap();
+        let s = four_skew_rulings();
         let radii = envelope_radii(&s);
         assert_eq!(radii.len(), 2);
         let motion = DMat4::from_rotation_translation(

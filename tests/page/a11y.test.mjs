@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
-import { pageSession, ready, shoot, framesAfter, control } from './browser.mjs';
+import { pageSession, ready, shoot, framesAfter, control, showScene } from './browser.mjs';
 import { difference, parseColour } from './colour.mjs';
 import { countChanged } from './png.mjs';
 
@@ -19,19 +19,6 @@ const allOn = (page) =>
   page.evaluate(() => {
     for (const box of document.querySelectorAll('.rl-controls input[type=checkbox]')) if (!box.checked && !box.disabled) box.click();
   });
-
-/**
- * Opens `hash` in the page and waits until scene `id` has shown its final picture.
- * @param {import('playwright-core').Page} page @param {string} hash @param {string} id
- */
-async function showScene(page, hash, id) {
-  await page.evaluate((h) => (location.hash = h), hash);
-  await page.waitForFunction((want) => {
-    const stage = /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'));
-    return stage?.dataset.scene === want && stage.dataset.ready === '1';
-  }, id, { timeout: 30000 });
-  await ready(page);
-}
 
 test('every pair of legend colours shown together stays ≥ 15 ΔE00 apart under each colour-vision deficiency', async () => {
   const first = await session.open();

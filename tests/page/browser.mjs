@@ -113,6 +113,23 @@ export function animationFrames(page, ms = 500) {
 }
 
 /**
+ * Follows the link `hash` in the open page and waits until scene `id` has shown its final
+ * picture and drawn it (a walk through the scenes in one page, as a reader following links).
+ * @param {Page} page
+ * @param {string} hash
+ * @param {string} id
+ */
+export async function showScene(page, hash, id) {
+  await page.evaluate((h) => (location.hash = h), hash);
+  await page.waitForFunction((want) => {
+    const stage = /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'));
+    return stage?.dataset.scene === want && stage.dataset.ready === '1';
+  }, id, { timeout: 60000 });
+  await ready(page, 60000);
+  await framesAfter(page, 0);
+}
+
+/**
  * Waits until the viewer has drawn more than `after` frames.
  * @param {Page} page
  */

@@ -3,7 +3,7 @@
 // follows scene changes, and the tools around the view (reset, play, share) do their job.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { pageSession, shoot, framesAfter, ready, control, setControl, launch } from './browser.mjs';
+import { pageSession, shoot, framesAfter, ready, control, setControl, launch, showScene } from './browser.mjs';
 import { countDifferent, countChanged } from './png.mjs';
 
 const BACKGROUND = [251, 250, 247];
@@ -45,13 +45,7 @@ test('every scene, and every choice of each of its menus, draws without errors',
   const scenes = await page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
   assert.ok(scenes.length >= 13);
   for (const id of scenes) {
-    await page.evaluate((h) => (location.hash = h), `#scene=${id}`);
-    await page.waitForFunction((want) => {
-      const stage = /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'));
-      return stage?.dataset.scene === want && stage.dataset.ready === '1';
-    }, id, { timeout: 60000 });
-    await ready(page, 60000);
-    await framesAfter(page, 0);
+    await showScene(page, `#scene=${id}`, id);
     const start = await shoot(page, `${id}-default`);
     assert.ok(countDifferent(start, BACKGROUND) > 0.005 * start.width * start.height, `${id} drew nothing`);
     // its first enabled slider changes the picture

@@ -41,6 +41,13 @@ test('every figure and example from the menu: drawn, captioned, its claims hold,
     assert.equal(await page.locator('.rl-claims .rl-fails').count(), 0, `${preset.id}: a claim fails: ${await page.locator('.rl-claims').innerText()}`);
     const image = decodePng(await page.locator('.rl-view canvas').screenshot());
     assert.ok(countDifferent(image, BACKGROUND) > 0.005 * image.width * image.height, `${preset.id} drew nothing`);
+    // what only some figures show: the stencil of (16) beside the view, Fig. 14's notation in it
+    const figure = await page.locator('.rl-figure svg title').allTextContents();
+    const stencil = preset.params.scheme === 'diagonal' || preset.params.scheme === 'butterfly';
+    assert.deepEqual(figure, stencil ? ['Fig. 12: the butterfly stencil of (16)'] : figure.filter((t) => !/stencil/.test(t)), `${preset.id}: the stencil`);
+    if (stencil) assert.match((await page.locator('.rl-figure svg').textContent()) ?? '', /\(16\)[\s\S]*1\/8/);
+    const labels = await page.locator('.rl-label').allTextContents();
+    if (preset.id === 'fig14') assert.deepEqual([...labels].sort(), ['P i,j', 'R i,j', 'R̄ i,j', 'S i,j', 'T i,j', 'p i+1,j', 'p i+1,j+1', 'p i,j', 'p i,j+1', 'r i,j', 's i,j'].map((t) => t.replace(' ', '')).sort(), 'Fig. 14 names one cell');
     const hash = await page.evaluate(() => location.hash);
     assert.match(hash, new RegExp(`paper=${preset.id}(&|$)`));
     links.push({ id: preset.id, hash, values: await controls(page) });
@@ -62,8 +69,14 @@ test('a moved control is marked as a change from the figure, and "Back to Fig. 3
   await setControl(page, 'n', 72);
   assert.ok(await page.locator('.rl-paper-changed').isVisible());
   await page.waitForFunction(() => /paper=fig3/.test(location.hash) && /n=72/.test(location.hash));
+  // the share dialog's element names the figure and only what differs from it
+  await page.locator('#share').click();
+  const element = await page.locator('#share-element').inputValue();
+  assert.match(element, /<ruled-view scene="striction" paper="fig3" params="n=72" /);
+  await page.keyboard.press('Escape');
   await after(page, () => page.locator('.rl-paper-changed button').click());
   assert.equal(await page.locator('.rl-controls [name="n"]').inputValue(), '36');
+  assert.ok(await page.evaluate(() => document.activeElement?.closest('.rl-controls') !== null), 'the keyboard stays in the controls');
   assert.equal(await page.locator('.rl-paper-changed').count(), 0);
   // choosing a scene leaves the figure
   await after(page, () => page.locator('#scene').selectOption('curves'));
