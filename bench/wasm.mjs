@@ -76,39 +76,7 @@ const check = (/** @type {string} */ what, /** @type {ArrayLike<number>} */ a, /
   four.free();
 }
 
-// ---- operations at 10⁶ rulings, each beside its limit
-const rows = [];
-/** @param {string} op @param {number} ms @param {number} outBytes @param {'mapped' | 'fresh'} kind @param {number | null} js */
-const row = (op, ms, outBytes, kind, js = null) => {
-  const l = limit(inBytes, outBytes);
-  rows.push({ op, ms, limitMs: l[kind], freshLimitMs: l.fresh, kind, ofLimit: ms / l[kind], jsMs: js, versusJs: js === null ? null : js / ms, outMB: outBytes / 1e6 });
-};
-
-const outInv = invariantBytes(N);
-const reuse = surface.invariants();
-const buffer = new InvariantsBuffer();
-const jsOut = plain.invariantsArrays(N);
-const jsInto = median(() => plain.invariantsInto(flat, jsOut), 5);
-row('invariants() — fresh arrays', median(() => surface.invariants(), 5), outInv, 'fresh', median(() => plain.invariants(flat), 5));
-row('invariantsInto(reused arrays)', median(() => surface.invariantsInto(reuse), 5), outInv, 'mapped', jsInto);
-row('invariantsInPlace(buffer) — zero-copy views', median(() => {
-  surface.invariantsInPlace(buffer);
-  return buffer.striction.length;
-}, 5), outInv, 'mapped', jsInto);
-
-const jsFourOut = new Float64Array(6 * (2 * N - 1));
-for (const [name, options, js] of /** @type {const} */ ([
-  ['four-point step', { scheme: 'four-point' }, () => plain.fourPoint(flat, jsFourOut)],
-  ['Chaikin step', { scheme: 'chaikin' }, null],
-  ['cubic B-spline step', { scheme: 'bspline', degree: 3 }, null],
-])) {
-  const probe = surface.subdivide(options);
-  const outBytes = 48 * probe.length;
-  probe.free();
-  row(name, median(() => surface.subdivide(options).free(), 5), outBytes, 'mapped', js ? median(js, 5) : null);
-}
-
-// ---- small calls: 10³ rulings, against native (criterion's medians, when `cargo bench` ran)
+// criterion's median of the same operation natively (when `cargo bench` ran before: npm run bench)
 const nativeMs = (/** @type {string} */ group, /** @type {number} */ id) => {
   try {
     const e = JSON.parse(readFileSync(new URL(`../target/criterion/${group}/${id}/new/estimates.json`, import.meta.url), 'utf8'));
@@ -117,6 +85,41 @@ const nativeMs = (/** @type {string} */ group, /** @type {number} */ id) => {
     return NaN;
   }
 };
+
+// ---- operations at 10⁶ rulings, each beside its limit
+const rows = [];
+/** @param {string} op @param {number} ms @param {number} outBytes @param {'mapped' | 'fresh'} kind @param {number | null} js @param {number} native */
+const row = (op, ms, outBytes, kind, js = null, native = NaN) => {
+  const l = limit(inBytes, outBytes);
+  rows.push({ op, ms, limitMs: l[kind], freshLimitMs: l.fresh, kind, ofLimit: ms / l[kind], jsMs: js, versusJs: js === null ? null : js / ms, outMB: outBytes / 1e6, nativeMs: native, nativeOfLimit: native / l[kind] });
+};
+
+const outInv = invariantBytes(N);
+const reuse = surface.invariants();
+const buffer = new InvariantsBuffer();
+const jsOut = plain.invariantsArrays(N);
+const jsInto = median(() => plain.invariantsInto(flat, jsOut), 5);
+// (no native number here: natively the result's memory is reused, see scripts/bench.sh)
+row('invariants() — fresh arrays', median(() => surface.invariants(), 5), outInv, 'fresh', median(() => plain.invariants(flat), 5));
+row('invariantsInto(reused arrays)', median(() => surface.invariantsInto(reuse), 5), outInv, 'mapped', jsInto, nativeMs('invariants_into', N));
+row('invariantsInPlace(buffer) — zero-copy views', median(() => {
+  surface.invariantsInPlace(buffer);
+  return buffer.striction.length;
+}, 5), outInv, 'mapped', jsInto, nativeMs('invariants_into', N));
+
+const jsFourOut = new Float64Array(6 * (2 * N - 1));
+for (const [name, options, js, group] of /** @type {const} */ ([
+  ['four-point step', { scheme: 'four-point' }, () => plain.fourPoint(flat, jsFourOut), 'subdivide_four-point'],
+  ['Chaikin step', { scheme: 'chaikin' }, null, 'subdivide_chaikin'],
+  ['cubic B-spline step', { scheme: 'bspline', degree: 3 }, null, 'subdivide_bspline3'],
+])) {
+  const probe = surface.subdivide(options);
+  const outBytes = 48 * probe.length;
+  probe.free();
+  row(name, median(() => surface.subdivide(options).free(), 5), outBytes, 'mapped', js ? median(js, 5) : null, nativeMs(group, N));
+}
+
+// ---- small calls: 10³ rulings, against native
 const small = [];
 for (const n of [1e3, 1e4]) {
   const s = hyp.sample(n, { uMin: 0, uMax: 100, closed: false });
@@ -140,9 +143,9 @@ for (const n of [1e3, 1e4]) {
 // ---- congruences
 const congruence = [];
 const ex = AnalyticCongruence.byName('example5');
-for (const [scheme, n, options] of /** @type {const} */ ([
-  ['butterfly', 1000, { scheme: 'butterfly' }],
-  ['coupled variational', 257, { scheme: 'variational' }],
+for (const [scheme, n, options, group] of /** @type {const} */ ([
+  ['butterfly', 1000, { scheme: 'butterfly' }, 'butterfly'],
+  ['coupled variational', 257, { scheme: 'variational' }, 'coupled'],
 ])) {
   const grid = ex.grid(n, n);
   const probe = grid.subdivide(options);
@@ -150,7 +153,8 @@ for (const [scheme, n, options] of /** @type {const} */ ([
   probe.free();
   const ms = median(() => grid.subdivide(options).free(), 3);
   const lim = limit(inB, outB).mapped;
-  congruence.push({ scheme, grid: `${n}²`, ms, limitMs: lim, ofLimit: ms / lim, outMB: outB / 1e6 });
+  const native = nativeMs(group, n);
+  congruence.push({ scheme, grid: `${n}²`, ms, limitMs: lim, ofLimit: ms / lim, outMB: outB / 1e6, nativeMs: native, nativeOfLimit: native / lim });
   grid.free();
 }
 
@@ -173,18 +177,20 @@ const table = [
   '',
   `Measured ${date} on ${machine}; one process, median of 5–7 runs. "Limit" is the time to write the`,
   'operation\'s output into already-mapped memory plus read its input once (into fresh memory for',
-  '`invariants()`, which must allocate its result arrays).',
+  '`invariants()`, which must allocate its result arrays). "Native" is criterion\'s median of the same',
+  'operation in native code on the same machine (`cargo bench`, run just before, freed memory kept',
+  'for reuse as wasm keeps it).',
   '',
-  '| 10⁶ rulings | wasm ms | output MB | limit ms | × limit | careful plain JS ms | JS / wasm |',
-  '|---|---:|---:|---:|---:|---:|---:|',
-  ...rows.map((r) => `| ${r.op} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} (${r.kind}) | ${f(r.ofLimit, 2)} | ${f(r.jsMs)} | ${f(r.versusJs, 2)} |`),
+  '| 10⁶ rulings | wasm ms | output MB | limit ms | × limit | native ms | native × limit | careful plain JS ms | JS / wasm |',
+  '|---|---:|---:|---:|---:|---:|---:|---:|---:|',
+  ...rows.map((r) => `| ${r.op} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} (${r.kind}) | ${f(r.ofLimit, 2)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 2)} | ${f(r.jsMs)} | ${f(r.versusJs, 2)} |`),
   '',
   '| small calls, ms | `invariants()` | `invariantsInto` | `invariantsInPlace` | native (fresh) | native (into) | plain JS (into) |',
   '|---|---:|---:|---:|---:|---:|---:|',
   ...small.map((r) => `| ${r.rulings} rulings | ${f(r['invariants()'], 3)} | ${f(r.invariantsInto, 3)} | ${f(r.invariantsInPlace, 3)} | ${f(r['native (fresh)'], 3)} | ${f(r['native (into)'], 3)} | ${f(r['plain JS (into)'], 3)} |`),
   '',
-  '| congruences (Example 5) | wasm ms | output MB | limit ms (mapped) | × limit |',
-  '|---|---:|---:|---:|---:|',
-  ...congruence.map((r) => `| ${r.scheme}, one step on ${r.grid} lines | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} |`),
+  '| congruences (Example 5) | wasm ms | output MB | limit ms (mapped) | × limit | native ms | native × limit |',
+  '|---|---:|---:|---:|---:|---:|---:|',
+  ...congruence.map((r) => `| ${r.scheme}, one step on ${r.grid} lines | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 1)} |`),
 ].join('\n');
 if (rewriteBlock('bench', table)) console.log('README.md: benchmark table rewritten');

@@ -5,6 +5,10 @@ cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 bash scripts/setup.sh
 bash scripts/build.sh
-cargo bench --bench invariants --bench subdivision --bench congruence
+# glibc maps every allocation above 32 MB afresh (and unmaps it on free), so each native call
+# would pay page faults that wasm, reusing its linear memory, does not: keep freed memory in the
+# heap so native and wasm compare like with like
+GLIBC_TUNABLES=glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967295 \
+  cargo bench --bench invariants --bench subdivision --bench congruence
 node bench/wasm.mjs
 node bench/page.mjs

@@ -209,8 +209,8 @@ impl AnalyticCongruence {
     /// Human title.
     pub fn title(&self) -> &'static str {
         match self {
-            Self::Sphere => "Lines on a sphere (Example 4, Fig. 13 left)",
-            Self::HyperbolicParaboloid => "Lines on a hyperbolic paraboloid (Example 4, Fig. 13 right)",
+            Self::Sphere => "Lines on a sphere (ruledlab's, for Example 4, Fig. 13 left)",
+            Self::HyperbolicParaboloid => "Lines on a hyperbolic paraboloid (ruledlab's, for Example 4, Fig. 13 right)",
             Self::Example5 => "Example 5: d₁ = (u, v, ½ sin(2u + 1.5v)) (Fig. 15)",
             Self::Formula(_) => "Your congruence p(u, v) + t·e(u, v)",
         }

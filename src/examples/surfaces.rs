@@ -148,9 +148,12 @@ impl AnalyticSurface {
             AnalyticSurface::Quartic => "Quartic surface (1 + vu², u²/2 + uv, u − v) (Example 3)",
             AnalyticSurface::Helicoid { .. } => "Right helicoid (v cos u, v sin u, u/2)",
             AnalyticSurface::HelicalRuled { slope, .. } if *slope == ORTHOGONAL_SLOPE => {
-                "Ruled helical surface, rulings orthogonal to the striction helix (Fig. 5)"
+                "Ruled helical surface, rulings orthogonal to the striction helix (ruledlab's, for Fig. 5)"
             }
-            AnalyticSurface::HelicalRuled { .. } => "Ruled helical surface (Fig. 5)",
+            AnalyticSurface::HelicalRuled { slope, .. } if *slope == FRAC_PI_4 => {
+                "Ruled helical surface, rulings at 45° (ruledlab's, for Fig. 5)"
+            }
+            AnalyticSurface::HelicalRuled { .. } => "Ruled helical surface (ruledlab's, for Fig. 5)",
             AnalyticSurface::PlueckerConoid => "Plücker's conoid z = sin 2u",
             AnalyticSurface::HyperbolicParaboloid => "Hyperbolic paraboloid z = xy",
             AnalyticSurface::Cone => "Elliptic cone",
