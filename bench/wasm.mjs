@@ -142,19 +142,23 @@ for (const n of [1e3, 1e4]) {
 
 // ---- congruences
 const congruence = [];
-const ex = AnalyticCongruence.byName('example5');
-for (const [scheme, n, options, group] of /** @type {const} */ ([
-  ['butterfly', 1000, { scheme: 'butterfly' }, 'butterfly'],
-  ['coupled variational', 257, { scheme: 'variational' }, 'coupled'],
+for (const [scheme, n, options, group, name] of /** @type {const} */ ([
+  ['butterfly', 1000, { scheme: 'butterfly' }, 'butterfly', 'example5'],
+  ['coupled variational', 257, { scheme: 'variational' }, 'coupled', 'example5'],
+  // Example 5's x and y are affine in (u, v): the start gets them right and only z is solved;
+  // on the sphere every coordinate is curved
+  ['coupled variational', 257, { scheme: 'variational' }, 'coupled', 'sphere'],
 ])) {
+  const ex = AnalyticCongruence.byName(name);
   const grid = ex.grid(n, n);
   const probe = grid.subdivide(options);
   const [inB, outB] = [48 * n * n, 48 * probe.rows * probe.cols];
   probe.free();
-  const ms = median(() => grid.subdivide(options).free(), 3);
+  const ms = median(() => grid.subdivide(options).free(), 5);
   const lim = limit(inB, outB).mapped;
-  const native = nativeMs(group, n);
-  congruence.push({ scheme, grid: `${n}²`, ms, limitMs: lim, ofLimit: ms / lim, outMB: outB / 1e6, nativeMs: native, nativeOfLimit: native / lim });
+  ex.free();
+  const native = name === 'example5' ? nativeMs(group, n) : NaN;
+  congruence.push({ scheme, congruence: name === 'example5' ? 'Example 5' : 'lines on a sphere (Fig. 13 left)', grid: `${n}²`, ms, limitMs: lim, ofLimit: ms / lim, outMB: outB / 1e6, nativeMs: native, nativeOfLimit: native / lim });
   grid.free();
 }
 
@@ -189,8 +193,8 @@ const table = [
   '|---|---:|---:|---:|---:|---:|---:|',
   ...small.map((r) => `| ${r.rulings} rulings | ${f(r['invariants()'], 3)} | ${f(r.invariantsInto, 3)} | ${f(r.invariantsInPlace, 3)} | ${f(r['native (fresh)'], 3)} | ${f(r['native (into)'], 3)} | ${f(r['plain JS (into)'], 3)} |`),
   '',
-  '| congruences (Example 5) | wasm ms | output MB | limit ms (mapped) | × limit | native ms | native × limit |',
+  '| congruences | wasm ms | output MB | limit ms (mapped) | × limit | native ms | native × limit |',
   '|---|---:|---:|---:|---:|---:|---:|',
-  ...congruence.map((r) => `| ${r.scheme}, one step on ${r.grid} lines | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 1)} |`),
+  ...congruence.map((r) => `| ${r.scheme}, one step on ${r.grid} lines of ${r.congruence} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 1)} |`),
 ].join('\n');
 if (rewriteBlock('bench', table)) console.log('README.md: benchmark table rewritten');

@@ -70,6 +70,15 @@ pub const COMPLEX_TOLERANCE: f64 = 1e-9;
 /// degenerate (lines of a bundle or a field, not a regulus) when |det| is below this.
 pub const COMPLEX_REGULUS_DET: f64 = 1e-6;
 
+/// Conjugate gradients of the coupled congruence scheme stop when ‖r‖ ≤ this · (largest
+/// coordinate) · √(nodes), or at this fraction of the first residual: a few hundred roundings
+/// above what the arithmetic can resolve.
+pub const SOLVE_TOLERANCE: f64 = 1e-13;
+
+/// Most conjugate-gradient iterations of the coupled congruence scheme (its systems converge
+/// in a bounded number, about 20; this only catches a broken one).
+pub const SOLVE_MAX_ITERATIONS: usize = 2000;
+
 /// `|a − b| ≤ tol · max(1, |a|, |b|)`: relative for large numbers, absolute near zero.
 pub fn near(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol * 1f64.max(a.abs()).max(b.abs())

@@ -25,7 +25,9 @@
 use crate::congruence::LineCongruence;
 use crate::error::{Error, Result};
 use crate::subdivision::{variational as strip, Variant};
+use crate::tolerance::{SOLVE_MAX_ITERATIONS, SOLVE_TOLERANCE};
 use glam::DVec3;
+use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
 /// How the edge lines T, S of the two-stage scheme are made.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -92,9 +94,98 @@ pub fn coupled(c: &LineCongruence, _k: usize) -> Result<(LineCongruence, SolveRe
     let start = super::subdivide(c, super::CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1)?;
     let (rr, cc) = (start.rows(), start.cols());
     let (mut p, mut q) = (start.p(), start.q());
-    let ip = solve_grid(&mut p, rr, cc)?;
-    let iq = solve_grid(&mut q, rr, cc)?;
-    Ok((LineCongruence::from_points(rr, cc, &p, &q)?, SolveReport { iterations: ip.max(iq) }))
+    let mut iterations = 0;
+    for grid in [&mut p, &mut q] {
+        iterations = iterations.max(solve_coordinates(grid, rr, cc)?);
+    }
+    Ok((LineCongruence::from_points(rr, cc, &p, &q)?, SolveReport { iterations }))
+}
+
+/// Solves the coupled system of one director grid. The three coordinates are independent
+/// systems with the same operator: they are solved in lockstep, except that a coordinate the
+/// start already gets right (an affine one, which the butterfly rule reproduces) is left out,
+/// and the others are then solved one by one. Returns the most iterations taken.
+fn solve_coordinates(grid: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
+    let op = Umbrella { rows, cols };
+    let n = grid.len();
+    // converged: ‖r‖ ≤ SOLVE_TOLERANCE · (largest coordinate) · √n, against the size of the data
+    let scale = grid.iter().fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+    let floor = (SOLVE_TOLERANCE * scale.max(f64::MIN_POSITIVE)).powi(2) * n as f64;
+    // the residual r = −L_newᵀ L x of the start, all three coordinates at once
+    let (mut u, mut r) = (vec![DVec3::ZERO; n], vec![DVec3::ZERO; n]);
+    op.normal(grid, &mut u, &mut r);
+    r.iter_mut().for_each(|v| *v = -*v);
+    let rr = r.iter().fold(DVec3::ZERO, |s, v| s + *v * *v);
+    let open: Vec<usize> = (0..3).filter(|&axis| rr[axis] > floor).collect();
+    if open.len() == 3 {
+        return conjugate_gradients(&op, grid, r, floor);
+    }
+    let mut most = 0;
+    for axis in open {
+        let mut x: Vec<f64> = grid.iter().map(|p| p[axis]).collect();
+        let r: Vec<f64> = r.iter().map(|v| v[axis]).collect();
+        most = most.max(conjugate_gradients(&op, &mut x, r, floor)?);
+        grid.iter_mut().zip(&x).for_each(|(p, s)| p[axis] = *s);
+    }
+    Ok(most)
+}
+
+/// One coordinate (`f64`) or three in lockstep (`DVec3`, lane by lane): what the operator and
+/// conjugate gradients need of them.
+trait Lanes:
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Mul<f64, Output = Self>
+    + AddAssign
+    + SubAssign
+    + Neg<Output = Self>
+{
+    const ZERO: Self;
+    fn splat(v: f64) -> Self;
+    /// Lane by lane: a / b where b > 0, else 0.
+    fn ratio(a: Self, b: Self) -> Self;
+    /// Lane by lane max.
+    fn lanes_max(self, other: Self) -> Self;
+    /// Every lane ≤ its bound.
+    fn all_le(self, bound: Self) -> bool;
+}
+
+impl Lanes for f64 {
+    const ZERO: Self = 0.0;
+    fn splat(v: f64) -> Self {
+        v
+    }
+    fn ratio(a: Self, b: Self) -> Self {
+        if b > 0.0 {
+            a / b
+        } else {
+            0.0
+        }
+    }
+    fn lanes_max(self, other: Self) -> Self {
+        self.max(other)
+    }
+    fn all_le(self, bound: Self) -> bool {
+        self <= bound
+    }
+}
+
+impl Lanes for DVec3 {
+    const ZERO: Self = DVec3::ZERO;
+    fn splat(v: f64) -> Self {
+        DVec3::splat(v)
+    }
+    fn ratio(a: Self, b: Self) -> Self {
+        DVec3::select(b.cmpgt(DVec3::ZERO), a / b, DVec3::ZERO)
+    }
+    fn lanes_max(self, other: Self) -> Self {
+        self.max(other)
+    }
+    fn all_le(self, bound: Self) -> bool {
+        self.cmple(bound).all()
+    }
 }
 
 /// The umbrella operator L of the refined grid: the 8-neighbour umbrella (20) at interior
@@ -107,7 +198,7 @@ struct Umbrella {
 impl Umbrella {
     /// out = x − (mean of the 8 neighbours) (20) at the nodes at least `margin` ≥ 1 nodes from
     /// the boundary, three rows of slices at a time; the other nodes are left alone.
-    fn ring(&self, x: &[DVec3], out: &mut [DVec3], margin: usize) {
+    fn ring<T: Lanes>(&self, x: &[T], out: &mut [T], margin: usize) {
         let (r, c) = (self.rows, self.cols);
         for i in margin..r - margin {
             let (prev, cur, next) = (&x[(i - 1) * c..i * c], &x[i * c..(i + 1) * c], &x[(i + 1) * c..(i + 2) * c]);
@@ -121,29 +212,29 @@ impl Umbrella {
     }
 
     /// u = L x: the interior by `ring`, then the boundary lines.
-    fn apply(&self, x: &[DVec3], u: &mut [DVec3]) {
+    fn apply<T: Lanes>(&self, x: &[T], u: &mut [T]) {
         let (r, c) = (self.rows, self.cols);
         self.ring(x, u, 1);
         for i in 1..r - 1 {
             let (prev, cur, next) = (&x[(i - 1) * c..i * c], &x[i * c..(i + 1) * c], &x[(i + 1) * c..(i + 2) * c]);
             let out = &mut u[i * c..(i + 1) * c];
-            out[0] = cur[0] - 0.5 * (prev[0] + next[0]);
-            out[c - 1] = cur[c - 1] - 0.5 * (prev[c - 1] + next[c - 1]);
+            out[0] = cur[0] - (prev[0] + next[0]) * 0.5;
+            out[c - 1] = cur[c - 1] - (prev[c - 1] + next[c - 1]) * 0.5;
         }
         for i in [0, r - 1] {
             let row = &x[i * c..(i + 1) * c];
             let out = &mut u[i * c..(i + 1) * c];
             for j in 1..c - 1 {
-                out[j] = row[j] - 0.5 * (row[j - 1] + row[j + 1]);
+                out[j] = row[j] - (row[j - 1] + row[j + 1]) * 0.5;
             }
-            out[0] = DVec3::ZERO;
-            out[c - 1] = DVec3::ZERO;
+            out[0] = T::ZERO;
+            out[c - 1] = T::ZERO;
         }
     }
 
     /// y = Lᵀ u. Away from the boundary (two nodes in) the stencil is symmetric, so Lᵀ is
     /// gathered like L; the band along the boundary is scattered from its sources.
-    fn apply_transpose(&self, u: &[DVec3], y: &mut [DVec3]) {
+    fn apply_transpose<T: Lanes>(&self, u: &[T], y: &mut [T]) {
         let (r, c) = (self.rows, self.cols);
         if r < 5 || c < 5 {
             return self.scatter_transpose(u, y, |_, _| true, 0);
@@ -156,7 +247,7 @@ impl Umbrella {
     /// y = Lᵀ u at the nodes where `target(i, j)` holds (the others are left alone), by
     /// scattering each node's row of L. `depth`: the targets are the nodes within `depth`
     /// of the boundary (0: every node), so only sources within depth + 1 are visited.
-    fn scatter_transpose(&self, u: &[DVec3], y: &mut [DVec3], target: impl Fn(usize, usize) -> bool, depth: usize) {
+    fn scatter_transpose<T: Lanes>(&self, u: &[T], y: &mut [T], target: impl Fn(usize, usize) -> bool, depth: usize) {
         let (r, c) = (self.rows, self.cols);
         // the nodes within `reach` of the boundary, row by row (every node when reach is 0)
         let ring = |reach: usize| {
@@ -168,10 +259,10 @@ impl Umbrella {
         };
         for (i, j) in ring(depth) {
             if target(i, j) {
-                y[i * c + j] = DVec3::ZERO;
+                y[i * c + j] = T::ZERO;
             }
         }
-        let mut add = |i: usize, j: usize, v: DVec3| {
+        let mut add = |i: usize, j: usize, v: T| {
             if target(i, j) {
                 y[i * c + j] += v;
             }
@@ -192,74 +283,66 @@ impl Umbrella {
                         (i + 1, j),
                         (i + 1, j + 1),
                     ] {
-                        add(a, b, -0.125 * w);
+                        add(a, b, w * -0.125);
                     }
                 }
                 (true, false) => {
                     add(i, j, w);
-                    add(i, j - 1, -0.5 * w);
-                    add(i, j + 1, -0.5 * w);
+                    add(i, j - 1, w * -0.5);
+                    add(i, j + 1, w * -0.5);
                 }
                 (false, true) => {
                     add(i, j, w);
-                    add(i - 1, j, -0.5 * w);
-                    add(i + 1, j, -0.5 * w);
+                    add(i - 1, j, w * -0.5);
+                    add(i + 1, j, w * -0.5);
                 }
                 (true, true) => {}
             }
         }
     }
-}
 
-/// Minimises |L x|² over the new nodes of `x` in place (old nodes fixed), by conjugate
-/// gradients on L_newᵀ L, three coordinates at once. Returns the iteration count.
-fn solve_grid(x: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
-    const TOL: f64 = 1e-13;
-    const MAX_ITERATIONS: usize = 2000;
-    let op = Umbrella { rows, cols };
-    let n = x.len();
-    let (mut u, mut ap) = (vec![DVec3::ZERO; n], vec![DVec3::ZERO; n]);
-    let normal = |v: &[DVec3], u: &mut Vec<DVec3>, out: &mut Vec<DVec3>| {
-        op.apply(v, u);
-        op.apply_transpose(u, out);
-        // the old lines (even, even) are fixed: no division per node to find them
-        for i in (0..rows).step_by(2) {
-            for j in (0..cols).step_by(2) {
-                out[i * cols + j] = DVec3::ZERO;
+    /// out = L_newᵀ L v, zero at the old nodes (even row and column), which are fixed.
+    fn normal<T: Lanes>(&self, v: &[T], u: &mut [T], out: &mut [T]) {
+        self.apply(v, u);
+        self.apply_transpose(u, out);
+        for i in (0..self.rows).step_by(2) {
+            for j in (0..self.cols).step_by(2) {
+                out[i * self.cols + j] = T::ZERO;
             }
         }
-    };
-    let dot = |a: &[DVec3], b: &[DVec3]| a.iter().zip(b).fold(DVec3::ZERO, |s, (x, y)| s + *x * *y);
-    // residual r = −L_newᵀ L x
-    let mut r = vec![DVec3::ZERO; n];
-    normal(x, &mut u, &mut r);
-    r.iter_mut().for_each(|v| *v = -*v);
-    let scale = x.iter().fold(0.0f64, |m, p| m.max(p.abs().max_element())).max(f64::MIN_POSITIVE);
-    let floor = DVec3::splat((TOL * scale).powi(2) * n as f64);
+    }
+}
+
+/// Minimises |L x|² over the new nodes of `x` in place (old nodes fixed) by conjugate
+/// gradients on L_newᵀ L, from the residual `r` of the start, until ‖r‖² ≤ `floor` or
+/// 10⁻²⁶ of its first value, lane by lane. Returns the iteration count.
+fn conjugate_gradients<T: Lanes>(op: &Umbrella, x: &mut [T], mut r: Vec<T>, floor: f64) -> Result<usize> {
+    let n = x.len();
+    let dot = |a: &[T], b: &[T]| a.iter().zip(b).fold(T::ZERO, |s, (x, y)| s + *x * *y);
+    let (mut u, mut ap) = (vec![T::ZERO; n], vec![T::ZERO; n]);
     let mut rr = dot(&r, &r);
-    let target = (rr * TOL * TOL).max(floor);
+    let target = (rr * (SOLVE_TOLERANCE * SOLVE_TOLERANCE)).lanes_max(T::splat(floor));
     let mut p = r.clone();
-    for iteration in 0..MAX_ITERATIONS {
-        if rr.cmple(target).all() {
+    for iteration in 0..SOLVE_MAX_ITERATIONS {
+        if rr.all_le(target) {
             return Ok(iteration);
         }
-        normal(&p, &mut u, &mut ap);
-        let pap = dot(&p, &ap);
-        let alpha = DVec3::select(pap.cmpgt(DVec3::ZERO), rr / pap, DVec3::ZERO);
+        op.normal(&p, &mut u, &mut ap);
+        let alpha = T::ratio(rr, dot(&p, &ap));
         // one pass: the update and the new residual norm
-        let mut rr_new = DVec3::ZERO;
+        let mut rr_new = T::ZERO;
         for ((xk, rk), (pk, apk)) in x.iter_mut().zip(r.iter_mut()).zip(p.iter().zip(&ap)) {
             *xk += alpha * *pk;
             *rk -= alpha * *apk;
             rr_new += *rk * *rk;
         }
-        let beta = DVec3::select(rr.cmpgt(DVec3::ZERO), rr_new / rr, DVec3::ZERO);
+        let beta = T::ratio(rr_new, rr);
         for (pk, rk) in p.iter_mut().zip(&r) {
             *pk = *rk + beta * *pk;
         }
         rr = rr_new;
     }
-    Err(Error::NotConverged { what: "system", iterations: MAX_ITERATIONS })
+    Err(Error::NotConverged { what: "system", iterations: SOLVE_MAX_ITERATIONS })
 }
 
 #[cfg(test)]
@@ -278,9 +361,9 @@ mod tests {
         for (r, c) in [(3, 3), (3, 7), (4, 5), (5, 5), (6, 9), (11, 8)] {
             let op = Umbrella { rows: r, cols: c };
             let n = r * c;
-            let x: Vec<DVec3> = (0..n).map(|_| DVec3::new(rnd(), rnd(), rnd())).collect();
-            let v: Vec<DVec3> = (0..n).map(|_| DVec3::new(rnd(), rnd(), rnd())).collect();
-            let (mut lx, mut ltv) = (vec![DVec3::ZERO; n], vec![DVec3::splat(9.0); n]);
+            let x: Vec<f64> = (0..n).map(|_| rnd()).collect();
+            let v: Vec<f64> = (0..n).map(|_| rnd()).collect();
+            let (mut lx, mut ltv) = (vec![0.0; n], vec![9.0; n]);
             op.apply(&x, &mut lx);
             op.apply_transpose(&v, &mut ltv);
             // L x from (20) node by node
@@ -289,7 +372,7 @@ mod tests {
                     let at = |a: isize, b: isize| x[(i as isize + a) as usize * c + (j as isize + b) as usize];
                     let want = match (i == 0 || i == r - 1, j == 0 || j == c - 1) {
                         (false, false) => {
-                            let ring: DVec3 = [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)]
+                            let ring: f64 = [(-1, -1), (-1, 0), (-1, 1), (0, -1), (0, 1), (1, -1), (1, 0), (1, 1)]
                                 .iter()
                                 .map(|&(a, b)| at(a, b))
                                 .sum();
@@ -297,18 +380,18 @@ mod tests {
                         }
                         (true, false) => at(0, 0) - 0.5 * (at(0, -1) + at(0, 1)),
                         (false, true) => at(0, 0) - 0.5 * (at(-1, 0) + at(1, 0)),
-                        (true, true) => DVec3::ZERO,
+                        (true, true) => 0.0,
                     };
-                    assert!((lx[i * c + j] - want).length() < 1e-14, "{r}×{c} L at ({i}, {j})");
+                    assert!((lx[i * c + j] - want).abs() < 1e-14, "{r}×{c} L at ({i}, {j})");
                 }
             }
             // the gathered interior and scattered band equal Lᵀ scattered everywhere
-            let mut reference = vec![DVec3::ZERO; n];
+            let mut reference = vec![0.0; n];
             op.scatter_transpose(&v, &mut reference, |_, _| true, 0);
             for k in 0..n {
-                assert!((ltv[k] - reference[k]).length() < 1e-14, "{r}×{c} Lᵀ at node {k}");
+                assert!((ltv[k] - reference[k]).abs() < 1e-14, "{r}×{c} Lᵀ at node {k}");
             }
-            let dot = |a: &[DVec3], b: &[DVec3]| a.iter().zip(b).map(|(p, q)| p.dot(*q)).sum::<f64>();
+            let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(p, q)| p * q).sum::<f64>();
             let (left, right) = (dot(&ltv, &x), dot(&v, &lx));
             assert!((left - right).abs() < 1e-12 * (1.0 + right.abs()), "{r}×{c}: {left} vs {right}");
         }
@@ -358,9 +441,12 @@ mod tests {
             for k in 0..=6 {
                 let t = k as f64 / 6.0;
                 let layer: Vec<DVec3> = g.p().iter().zip(g.q()).map(|(p, q)| (1.0 - t) * *p + t * q).collect();
-                let mut u = vec![DVec3::ZERO; layer.len()];
-                op.apply(&layer, &mut u);
-                total += u.iter().map(|v| v.length_squared()).sum::<f64>();
+                for axis in 0..3 {
+                    let coordinate: Vec<f64> = layer.iter().map(|v| v[axis]).collect();
+                    let mut u = vec![0.0; layer.len()];
+                    op.apply(&coordinate, &mut u);
+                    total += u.iter().map(|v| v * v).sum::<f64>();
+                }
             }
             total
         };
@@ -389,13 +475,40 @@ mod tests {
         let start = two_stage(&c, 6, EdgeScheme::Coupled).unwrap();
         let (rr, cc) = (start.rows(), start.cols());
         let (mut p, mut q) = (start.p(), start.q());
-        solve_grid(&mut p, rr, cc).unwrap();
-        solve_grid(&mut q, rr, cc).unwrap();
+        solve_coordinates(&mut p, rr, cc).unwrap();
+        solve_coordinates(&mut q, rr, cc).unwrap();
         let moved = fast.p().iter().zip(&start.p()).map(|(a, b)| (*a - *b).length()).fold(0.0, f64::max);
         assert!(moved > 1e-4, "the two starts differ ({moved})");
         for (k, (a, b)) in fast.p().iter().zip(&p).chain(fast.q().iter().zip(&q)).enumerate() {
             assert!((*a - *b).length() < 1e-11, "node {k}: {a} vs {b}");
         }
+    }
+
+    /// The lockstep solve (all three coordinates as `DVec3` lanes) and the solve coordinate by
+    /// coordinate reach the same lines; a coordinate the butterfly start reproduces (here x and
+    /// y, affine in the grid) is left exactly as it is.
+    #[test]
+    fn lockstep_and_coordinatewise_solves_agree() {
+        let c = congruence(9, 11, wavy);
+        let start =
+            crate::congruence::subdivide(&c, crate::congruence::CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1)
+                .unwrap();
+        let (rows, cols) = (start.rows(), start.cols());
+        let op = Umbrella { rows, cols };
+        let grid = start.p();
+        let n = grid.len();
+        let mut lockstep = grid.clone();
+        let (mut u, mut r) = (vec![DVec3::ZERO; n], vec![DVec3::ZERO; n]);
+        op.normal(&lockstep, &mut u, &mut r);
+        r.iter_mut().for_each(|v| *v = -*v);
+        assert!(conjugate_gradients(&op, &mut lockstep, r, 0.0).unwrap() > 0);
+        let mut each = grid.clone();
+        solve_coordinates(&mut each, rows, cols).unwrap();
+        for k in 0..n {
+            assert!((lockstep[k] - each[k]).length() < 1e-11, "node {k}: {} vs {}", lockstep[k], each[k]);
+            assert_eq!((each[k].x, each[k].y), (grid[k].x, grid[k].y), "node {k}: affine coordinates kept");
+        }
+        assert!(each.iter().zip(&grid).any(|(a, b)| (a.z - b.z).abs() > 1e-6), "z was solved");
     }
 
     /// Affine data stay affine; old lines are kept bit for bit.
