@@ -158,7 +158,7 @@ for (const [scheme, n, options, group, name] of /** @type {const} */ ([
   const lim = limit(inB, outB).mapped;
   ex.free();
   const native = name === 'example5' ? nativeMs(group, n) : NaN;
-  congruence.push({ scheme, congruence: name === 'example5' ? 'Example 5' : 'lines on a sphere (Fig. 13 left)', grid: `${n}²`, ms, limitMs: lim, ofLimit: ms / lim, outMB: outB / 1e6, nativeMs: native, nativeOfLimit: native / lim });
+  congruence.push({ scheme, congruence: name === 'example5' ? 'lines of Example 5' : 'lines on a sphere (Fig. 13 left)', grid: `${n}²`, ms, limitMs: lim, ofLimit: ms / lim, outMB: outB / 1e6, nativeMs: native, nativeOfLimit: native / lim });
   grid.free();
 }
 
@@ -195,6 +195,6 @@ const table = [
   '',
   '| congruences | wasm ms | output MB | limit ms (mapped) | × limit | native ms | native × limit |',
   '|---|---:|---:|---:|---:|---:|---:|',
-  ...congruence.map((r) => `| ${r.scheme}, one step on ${r.grid} lines of ${r.congruence} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 1)} |`),
+  ...congruence.map((r) => `| ${r.scheme}, one step on ${r.grid} ${r.congruence} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 1)} |`),
 ].join('\n');
 if (rewriteBlock('bench', table)) console.log('README.md: benchmark table rewritten');
