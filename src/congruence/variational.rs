@@ -254,9 +254,10 @@ impl Umbrella {
         // the nodes within `reach` of the boundary, row by row (every node when reach is 0)
         let ring = |reach: usize| {
             (0..r).flat_map(move |i| {
-                let full = reach == 0 || i < reach || i + reach >= r;
-                let cols: Vec<usize> = if full { (0..c).collect() } else { (0..reach).chain(c - reach..c).collect() };
-                cols.into_iter().map(move |j| (i, j))
+                // a whole row, or its first and last `reach` columns
+                let whole = reach == 0 || i < reach || i + reach >= r;
+                let (left, right) = if whole { (c, c) } else { (reach, c - reach) };
+                (0..left).chain(right..c).map(move |j| (i, j))
             })
         };
         for (i, j) in ring(depth) {
