@@ -33,7 +33,7 @@ pub enum CongruenceScheme {
     },
     /// The coupled variational scheme.
     Coupled {
-        /// K ≥ 3 (used for the starting guess; the minimiser does not depend on it).
+        /// K ≥ 3, the layers of the energy (20)–(21); the minimiser does not depend on it.
         k: usize,
     },
 }

@@ -114,14 +114,11 @@ fn solve_coordinates(grid: &mut [DVec3], rows: usize, cols: usize) -> Result<usi
     // converged: ‖r‖ ≤ SOLVE_TOLERANCE · (largest coordinate) · √n, against the size of the data
     let scale = grid.iter().fold(0.0f64, |m, p| m.max(p.abs().max_element()));
     let floor = (SOLVE_TOLERANCE * scale.max(f64::MIN_POSITIVE)).powi(2) * n as f64;
-    let (mut x, mut u, mut r) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let mut x = vec![0.0; n];
     let mut most = 0;
     for axis in 0..3 {
         x.iter_mut().zip(grid.iter()).for_each(|(s, p)| *s = p[axis]);
-        // the residual r = −L_newᵀ L x of the start
-        op.normal(&x, &mut u, &mut r);
-        r.iter_mut().for_each(|v| *v = -*v);
-        most = most.max(conjugate_gradients(&op, &mut x, &mut r, floor)?);
+        most = most.max(conjugate_gradients(&op, &mut x, floor)?);
         grid.iter_mut().zip(&x).for_each(|(p, s)| p[axis] = *s);
     }
     Ok(most)
@@ -254,13 +251,16 @@ impl Umbrella {
 }
 
 /// Minimises |L x|² over the new nodes of `x` in place (old nodes fixed) by conjugate
-/// gradients on L_newᵀ L, from the residual `r` of the start, until ‖r‖² ≤ `floor` or
-/// 10⁻²⁶ of its first value. Returns the iteration count.
-fn conjugate_gradients(op: &Umbrella, x: &mut [f64], r: &mut [f64], floor: f64) -> Result<usize> {
+/// gradients on L_newᵀ L, started from `x`, until ‖r‖² ≤ `floor` or 10⁻²⁶ of its first
+/// value. Returns the iteration count (0 when the start has converged already).
+fn conjugate_gradients(op: &Umbrella, x: &mut [f64], floor: f64) -> Result<usize> {
     let n = x.len();
     let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
-    let (mut u, mut ap) = (vec![0.0; n], vec![0.0; n]);
-    let mut rr = dot(r, r);
+    let (mut u, mut ap, mut r) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    // the residual r = −L_newᵀ L x of the start
+    op.normal(x, &mut u, &mut r);
+    r.iter_mut().for_each(|v| *v = -*v);
+    let mut rr = dot(&r, &r);
     let target = (rr * (SOLVE_TOLERANCE * SOLVE_TOLERANCE)).max(floor);
     let mut p = r.to_vec();
     for iteration in 0..SOLVE_MAX_ITERATIONS {
@@ -441,10 +441,7 @@ mod tests {
         let iterations: Vec<usize> = (0..3)
             .map(|axis| {
                 let mut x: Vec<f64> = grid.iter().map(|p| p[axis]).collect();
-                let (mut u, mut r) = (vec![0.0; n], vec![0.0; n]);
-                op.normal(&x, &mut u, &mut r);
-                r.iter_mut().for_each(|v| *v = -*v);
-                conjugate_gradients(&op, &mut x, &mut r, floor).unwrap()
+                conjugate_gradients(&op, &mut x, floor).unwrap()
             })
             .collect();
         assert_eq!(&iterations[..2], &[0, 0], "x and y need no iteration");

@@ -317,6 +317,16 @@ mod tests {
     use super::*;
     use crate::assert_near;
 
+    /// The paper gives no formulas for Example 4: its two congruences are ruledlab's, and
+    /// their titles say so; Example 5 is the paper's.
+    #[test]
+    fn titles_say_whose_data_it_is() {
+        for c in [AnalyticCongruence::Sphere, AnalyticCongruence::HyperbolicParaboloid] {
+            assert!(c.title().contains("ruledlab's, for Example 4, Fig. 13"), "{}", c.title());
+        }
+        assert!(!AnalyticCongruence::Example5.title().contains("ruledlab's"));
+    }
+
     /// The dual evaluation's derivatives agree with central differences of the values.
     #[test]
     fn jets_are_consistent_derivatives() {

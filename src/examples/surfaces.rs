@@ -363,6 +363,20 @@ mod tests {
 
     const US: [f64; 5] = [-0.9, -0.3, 0.2, 0.7, 1.3];
 
+    /// The helical surfaces are ruledlab's (the paper gives no data for Fig. 5), and each title
+    /// names the slope it has.
+    #[test]
+    fn helical_titles_say_whose_they_are_and_their_slope() {
+        for s in AnalyticSurface::ALL.iter().filter(|s| matches!(s, AnalyticSurface::HelicalRuled { .. })) {
+            let AnalyticSurface::HelicalRuled { slope, .. } = s else { unreachable!() };
+            assert!(s.title().contains("ruledlab's, for Fig. 5"), "{}", s.title());
+            assert_eq!(s.title().contains("45°"), *slope == FRAC_PI_4, "{}", s.title());
+            assert_eq!(s.title().contains("orthogonal"), *slope == ORTHOGONAL_SLOPE, "{}", s.title());
+        }
+        let other = AnalyticSurface::HelicalRuled { radius: 1.0, pitch: 0.4, slope: 0.3 };
+        assert!(!other.title().contains("45°") && !other.title().contains("orthogonal"), "{}", other.title());
+    }
+
     /// Central differences of a(u) and d(u) agree with the hand-written derivatives.
     #[test]
     fn jets_are_consistent_derivatives() {
