@@ -1,7 +1,9 @@
 // Builds the one-file versions into dist/ (after scripts/build.sh has built pkg/):
-//   dist/ruledlab.html      the whole page in one file: JS, CSS and the wasm (base64), no
-//                           other request; works from file:// and uploaded to a course system
-//   dist/ruledlab-embed.js  one classic script defining <ruled-view>, the wasm inlined
+//   dist/ruledlab-embed.js  one classic script defining <ruled-view>, the wasm and the worker
+//                           inlined (scripts/onefile/entry.js)
+//   dist/ruledlab.html      the whole page in one file: the same script inline, the CSS, a
+//                           state block; no other request; works from file:// and uploaded to
+//                           a course system
 // The page's Content-Security-Policy allows exactly its inline script and style by hash,
 // 'wasm-unsafe-eval' for the module, data:/blob: images and blob: workers.
 import { build } from 'esbuild';
@@ -51,7 +53,8 @@ async function bundle(entry, format, plugin, base = 'document.baseURI') {
 
 /** @param {string} text */
 const sha = (text) => `'sha256-${createHash('sha256').update(text, 'utf8').digest('base64')}'`;
-const page = (await bundle('scripts/onefile/page.js', 'esm', inline)).replaceAll('</script', '<\\/script');
+const embed = await bundle('scripts/onefile/entry.js', 'iife', inline);
+const page = embed.replaceAll('</script', '<\\/script');
 const css = readFileSync(path('www/style.css'), 'utf8');
 const icon = `data:image/svg+xml,${encodeURIComponent(readFileSync(path('www/favicon.svg'), 'utf8'))}`;
 const csp = [
@@ -75,15 +78,16 @@ const html = `<!doctype html>
 <link rel="icon" href="${icon}">
 <style>${css}</style>
 <script type="application/json" id="${STATE_ID}">${stateJson('')}</script>
-<script type="module">${page}</script>
+<script>${page}</script>
 </head>
 <body>${BODY}</body>
 </html>
 `;
 mkdirSync(path('dist'), { recursive: true });
 writeFileSync(path('dist/ruledlab.html'), html);
-const embed = await bundle('scripts/onefile/embed.js', 'iife', inline);
 writeFileSync(path('dist/ruledlab-embed.js'), embed);
+// what the build made, for the served page's Share dialog (is the embed script here?)
+writeFileSync(path('dist/manifest.json'), `${JSON.stringify({ embed: 'ruledlab-embed.js', page: 'ruledlab.html' }, null, 2)}\n`);
 /** @param {number} n */
 const kib = (n) => `${(n / 1024).toFixed(0)} KiB`;
 console.log(`build: dist/ruledlab.html ${kib(html.length)}, ${kib(gzipSync(html).length)} gzipped; dist/ruledlab-embed.js ${kib(embed.length)}, ${kib(gzipSync(embed).length)} gzipped`);

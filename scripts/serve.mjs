@@ -26,7 +26,10 @@ const TYPES = {
 
 /**
  * Serves `root` on `host:port` (port 0: any free port), adding `headers` to every response
- * (e.g. a Content-Security-Policy). Resolves to { server, url }.
+ * (e.g. a Content-Security-Policy). Every file may be loaded by pages of other origins, as
+ * from a static CDN (`Access-Control-Allow-Origin: *`): a sandboxed iframe of a course system
+ * has an opaque origin and loads the page's modules and wasm cross-origin, and a Share snippet
+ * on another site loads the viewer. Resolves to { server, url }.
  */
 export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers = {} } = {}) {
   const server = createServer((req, res) => {
@@ -58,9 +61,11 @@ export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers
       'content-type': TYPES[/** @type {keyof typeof TYPES} */ (extname(file))] ?? 'application/octet-stream',
       'content-length': stat.size,
       'cache-control': 'no-cache',
+      'access-control-allow-origin': '*',
       ...headers,
     });
-    createReadStream(file).pipe(res);
+    if (req.method === 'HEAD') res.end();
+    else createReadStream(file).pipe(res);
   });
   return new Promise((resolvePromise, reject) => {
     server.once('error', reject);

@@ -16,7 +16,9 @@ import { obj, segmentsText, invariantsJson, invariantsCsv } from './export/files
 import { png } from './export/png.js';
 import { exportSvg } from './export/svg.js';
 import { exportTikz } from './export/tikz.js';
-import { oneFileWithState, storedHash } from './export/onefile.js';
+import { storedHash } from './export/onefile.js';
+import { shareDialog } from './share.js';
+import { stored, store, writeHistory } from './platform.js';
 
 /** Session storage key of an import too large for the link. */
 const STORED = 'ruledlab.data';
@@ -26,9 +28,10 @@ const NATIVE = { en: 'English', de: 'Deutsch' };
 
 /**
  * The page (see the module documentation).
- * @param {{oneFile?: boolean}} [options]  oneFile: this page is the one-file build
+ * @param {{oneFile?: boolean, embedScript?: () => string}} [options]  oneFile: this page is the
+ *   one-file build; embedScript: its own script, which is also its embed script
  */
-export async function startPage({ oneFile = false } = {}) {
+export async function startPage({ oneFile = false, embedScript } = {}) {
   const doc = document;
   adoptStyles(doc);
   await start();
@@ -119,20 +122,22 @@ export async function startPage({ oneFile = false } = {}) {
     exportsLabel.textContent = t('io.exports');
     const names = { svg: 'export.svg', svgBw: 'export.svgBw', tikz: 'export.tikz', png: 'export.png', png2: 'export.png2', png4: 'export.png4', obj: 'export.obj', csv: 'export.csv', json: 'export.json', invariants: 'export.invariants', invariantsCsv: 'export.invariantsCsv', plot: 'export.plot' };
     for (const [kind, b] of Object.entries(exportButtons)) b.textContent = t(names[/** @type {keyof typeof names} */ (kind)]);
-    storedNote.textContent = t('io.stored');
   };
 
-  // the URL: a scene change is a new history entry, everything else replaces the current one
+  // the URL: a scene change is a new history entry, everything else replaces the current one;
+  // where the document cannot write its address (srcdoc, about:blank, some sandboxes) the
+  // state lives in `kept` only
   let hashTimer = 0;
+  let kept = '';
+  const currentHash = () => location.hash || kept || (oneFile ? `#${storedHash()}` : '');
   /** @param {'push' | 'replace'} mode @param {boolean} [now] */
   const saveHash = (mode, now = true) => {
     clearTimeout(hashTimer);
     const write = () => {
       if (!stage.scene) return;
       const hash = `#${writeState({ ...state, scene: stage.scene, params: stage.params, camera: stage.viewer.camera.toArray(), lang: state.lang, data: stage.data, paper: stage.paper?.id ?? null })}`;
-      if (hash === location.hash) return;
-      if (mode === 'push') history.pushState(null, '', hash);
-      else history.replaceState(null, '', hash);
+      if (hash === (location.hash || kept)) return;
+      if (!writeHistory(mode, hash)) kept = hash;
     };
     if (now || mode === 'push') write();
     else hashTimer = window.setTimeout(write, 200);
@@ -140,12 +145,12 @@ export async function startPage({ oneFile = false } = {}) {
 
   /** Opens the state of the current hash (on load, Back/Forward, or an edited link). */
   const openHash = async () => {
-    state = readState(location.hash || (oneFile ? `#${storedHash()}` : ''), SCENES);
+    state = readState(currentHash(), SCENES);
     if (state.lang && pickLanguage(state.lang) !== lang) setLanguage(pickLanguage(state.lang), false);
     doc.body.classList.toggle('embed', state.embed);
     stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
-    const stored = sessionStorage.getItem(STORED);
-    const data = state.data ?? (stored ? parseStored(stored) : null);
+    const text = stored(STORED);
+    const data = state.data ?? (text ? parseStored(text) : null);
     await stage.open(state.scene, state.params, { camera: state.camera, data, notes: state.notes, autoplay: state.autoplay, paper: findPreset(state.paper) ?? null });
     picker.value = state.scene.id;
     localize();
@@ -158,7 +163,7 @@ export async function startPage({ oneFile = false } = {}) {
     state.lang = code;
     stage.setLanguage(code);
     localize();
-    buildShare();
+    if (share.open) sharing.open();
     if (write) saveHash('replace');
   };
 
@@ -199,9 +204,10 @@ export async function startPage({ oneFile = false } = {}) {
     paste.removeAttribute('aria-invalid');
     paste.removeAttribute('aria-describedby');
     const data = { segments: got.segments, rows: got.rows, cols: got.cols };
-    if (linkable(data)) sessionStorage.removeItem(STORED);
-    else sessionStorage.setItem(STORED, JSON.stringify({ segments: Array.from(data.segments), rows: data.rows, cols: data.cols }));
+    // too large for the link: kept in the tab's session storage, where there is one
+    const keptThere = store(STORED, linkable(data) ? null : JSON.stringify({ segments: Array.from(data.segments), rows: data.rows, cols: data.cols }));
     storedNote.hidden = linkable(data);
+    storedNote.textContent = i18n.t(keptThere ? 'io.stored' : 'io.notStored');
     const scene = /** @type {import('./scene.js').Scene} */ (SCENES.find((s) => s.id === 'data'));
     stage.open(scene, {}, { data }).then(() => {
       picker.value = 'data';
@@ -243,58 +249,9 @@ export async function startPage({ oneFile = false } = {}) {
   });
 
   // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file
-  const buildShare = () => {
-    const { t } = i18n;
-    const field = (/** @type {string} */ label, /** @type {string} */ id, /** @type {() => string} */ value) => {
-      const wrap = el('div', { className: 'share-row' });
-      const l = el('label', { htmlFor: id, textContent: label });
-      const area = el('textarea', { id, rows: 2, readOnly: true, spellcheck: false });
-      const copy = el('button', { type: 'button', textContent: t('share.copy') });
-      const done = el('span', { className: 'share-done' });
-      done.setAttribute('aria-live', 'polite');
-      copy.addEventListener('click', async () => {
-        area.select();
-        try {
-          await navigator.clipboard.writeText(area.value);
-        } catch {
-          doc.execCommand?.('copy');
-        }
-        done.textContent = t('share.copied');
-      });
-      wrap.append(l, area, copy, done);
-      return { wrap, refresh: () => ((area.value = value()), (done.textContent = '')) };
-    };
-    const base = () => location.href.split('#')[0];
-    const hash = () => writeState({ ...state, scene: /** @type {any} */ (stage.scene), params: stage.params, camera: stage.viewer.camera.toArray(), lang, data: stage.data, paper: stage.paper?.id ?? null });
-    const fields = [
-      field(t('share.link'), 'share-link', () => `${base()}#${hash()}`),
-      field(t('share.iframe'), 'share-iframe', () => iframeSnippet(base(), hash(), t(stage.scene?.title ?? ''))),
-      field(t('share.element'), 'share-element', () => elementSnippet(/** @type {any} */ (stage.scene), stage.params, lang, oneFile ? 'ruledlab-embed.js' : new URL('./view.js', import.meta.url).href, stage.paper)),
-    ];
-    const onefile = el('button', { type: 'button', id: 'share-onefile', textContent: t('app.onefile') });
-    const onefileNote = el('p', { className: 'share-note', hidden: true });
-    onefile.addEventListener('click', async () => {
-      try {
-        const html = await oneFileWithState(oneFile, hash());
-        download(`ruledlab-${stage.scene?.id ?? 'view'}.html`, html, 'text/html');
-      } catch {
-        onefileNote.hidden = false;
-        onefileNote.textContent = t('app.onefileMissing');
-      }
-    });
-    const close = el('button', { type: 'button', textContent: t('share.close') });
-    close.addEventListener('click', () => share.close());
-    share.setAttribute('aria-label', t('share.title'));
-    share.replaceChildren(el('h2', { textContent: t('share.title') }), el('p', { textContent: t('share.intro') }), ...fields.map((f) => f.wrap), onefile, onefileNote, close);
-    share.dataset.ready = '1';
-    return fields;
-  };
-  let shareFields = buildShare();
-  shareButton.addEventListener('click', () => {
-    shareFields = buildShare();
-    shareFields.forEach((f) => f.refresh());
-    share.showModal();
-  });
+  const viewState = () => ({ ...state, scene: /** @type {import('./scene.js').Scene} */ (stage.scene), params: stage.params, camera: stage.viewer.camera.toArray(), lang, data: stage.data, paper: stage.paper?.id ?? null });
+  const sharing = shareDialog(share, { stage, i18n: () => i18n, state: viewState, oneFile, embedScript });
+  shareButton.addEventListener('click', () => sharing.open());
 
   stage.viewer.onFrame = (n) => (doc.body.dataset.frames = String(n));
   localize();
@@ -323,30 +280,4 @@ function parseStored(/** @type {string} */ text) {
   } catch {
     return null;
   }
-}
-
-/** An <iframe> of this page in embed mode, with controls. */
-export function iframeSnippet(/** @type {string} */ base, /** @type {string} */ hash, /** @type {string} */ title) {
-  const src = `${base}#embed&controls&${hash.replace(/^embed&?|(^|&)controls(&|$)/g, '')}`;
-  const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
-  return `<iframe src="${attr(src)}" title="${attr(title.replace(/[_^]\{?([^}]*)\}?/g, '$1'))}" width="900" height="560" style="border: 0" allow="fullscreen"></iframe>`;
-}
-
-/**
- * A <ruled-view> element showing this scene with these parameters (and the figure of the paper
- * shown, if any: then only the values that differ from the figure's are listed).
- * @param {import('./scene.js').Scene} scene
- * @param {import('./scene.js').Params} params
- * @param {string} lang
- * @param {string} script
- * @param {import('./paper.js').PaperPreset | null} [paper]
- */
-export function elementSnippet(scene, params, lang, script, paper = null) {
-  /** @type {import('./scene.js').Params} */
-  const base = { ...defaults(scene), ...(paper?.params ?? {}) };
-  const q = new URLSearchParams();
-  for (const p of scene.params) if (params[p.key] !== base[p.key]) q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : String(params[p.key]));
-  const figure = paper ? ` paper="${paper.id}"` : '';
-  const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
-  return `<script type="module" src="${attr(script)}"></script>\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}" lang="${attr(lang)}" controls style="height: 560px"></ruled-view>`;
 }

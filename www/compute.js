@@ -1,43 +1,83 @@
 // Runs refinements in a Web Worker (www/worker.js, with its own wasm instance), one job at a
-// time; a newer job supersedes an older one, whose result is dropped.
+// time; a newer job supersedes an older one, whose result is dropped. Where no worker can
+// start — a sandboxed frame, a page whose Content-Security-Policy forbids the worker's script —
+// the same job (refine.js) runs on the main thread, yielding between steps.
 import { newWorker, wasmSource } from './core.js';
+import { refineSteps } from './refine.js';
 
 /** @type {Worker | null} */
 let worker = null;
+/** Whether workers cannot start here (then every job runs on the main thread). */
+let noWorker = false;
 let nextId = 0;
-/** @type {Map<number, {resolve: (v: any) => void, reject: (e: any) => void, onProgress: (f: number) => void}>} */
+/**
+ * @typedef {{resolve: (v: any) => void, reject: (e: any) => void, onProgress: (f: number) => void, job: {segments: Float64Array, options: import('../pkg/ruledlab.js').SubdivideOptions, draw: number}}} Job
+ */
+/** @type {Map<number, Job>} */
 const jobs = new Map();
 
+/** The error of a job that a newer one replaced. */
+const superseded = () => Object.assign(new Error('superseded'), { superseded: true });
+
+/** The worker, started on first use; null where none can start. */
+function theWorker() {
+  if (worker || noWorker) return worker;
+  try {
+    worker = newWorker();
+  } catch {
+    noWorker = true;
+    return null;
+  }
+  worker.postMessage({ init: wasmSource() });
+  worker.onmessage = ({ data }) => {
+    const job = jobs.get(data.id);
+    if (!job) return;
+    if ('progress' in data) job.onProgress(data.progress);
+    else {
+      jobs.delete(data.id);
+      if (data.error) job.reject(Object.assign(new Error(data.error), { code: data.code, details: data.details }));
+      else job.resolve(data);
+    }
+  };
+  // the script did not load (blocked by a policy, or no such file): the jobs run here instead
+  worker.onerror = (e) => {
+    e.preventDefault();
+    worker?.terminate();
+    worker = null;
+    noWorker = true;
+    for (const [id, job] of jobs) here(id, job);
+  };
+  return worker;
+}
+
+/** Runs `job` on the main thread, a step per task, unless a newer job replaces it. */
+function here(/** @type {number} */ id, /** @type {Job} */ job) {
+  const pause = () => new Promise((resolve, reject) => setTimeout(() => (jobs.has(id) ? resolve(undefined) : reject(superseded())), 0));
+  pause()
+    .then(() => refineSteps(job.job, job.onProgress, pause))
+    .then((done) => jobs.get(id) === job && (jobs.delete(id), job.resolve(done)), (e) => jobs.get(id) === job && (jobs.delete(id), job.reject(e)));
+}
+
 /**
- * Refines `segments` with `options` in the worker.
+ * Refines `segments` with `options` in the worker (or here, where there is none).
  * @param {Float64Array} segments 6 numbers per ruling
- * @param {object} options RuledSurface.subdivide options, `steps` included
+ * @param {import('../pkg/ruledlab.js').SubdivideOptions} options RuledSurface.subdivide options, `steps` included
  * @param {(fraction: number) => void} [onProgress]
  * @param {number} [draw]  most rulings to send back (every k-th above it)
  * @returns {Promise<{segments: Float32Array, rulings: number, drawn: number}>}
  */
 export function refineInWorker(segments, options, onProgress = () => {}, draw = Infinity) {
-  if (!worker) {
-    worker = newWorker();
-    worker.postMessage({ init: wasmSource() });
-    worker.onmessage = ({ data }) => {
-      const job = jobs.get(data.id);
-      if (!job) return;
-      if ('progress' in data) job.onProgress(data.progress);
-      else {
-        jobs.delete(data.id);
-        if (data.error) job.reject(Object.assign(new Error(data.error), { code: data.code }));
-        else job.resolve(data);
-      }
-    };
-  }
   const id = ++nextId;
   for (const [old, job] of jobs) {
     jobs.delete(old);
-    job.reject(Object.assign(new Error('superseded'), { superseded: true }));
+    job.reject(superseded());
   }
   return new Promise((resolve, reject) => {
-    jobs.set(id, { resolve, reject, onProgress });
-    /** @type {Worker} */ (worker).postMessage({ id, segments, options, draw });
+    /** @type {Job} */
+    const job = { resolve, reject, onProgress, job: { segments, options, draw } };
+    jobs.set(id, job);
+    const w = theWorker();
+    if (w) w.postMessage({ id, segments, options, draw });
+    else here(id, job);
   });
 }

@@ -41,7 +41,17 @@ export function memoryBytes() {
   return instance?.memory.buffer.byteLength ?? 0;
 }
 
-/** A new worker for heavy computations (www/worker.js unless configured otherwise). */
+/**
+ * A new worker for heavy computations (www/worker.js unless configured otherwise). A worker's
+ * script must come from the document's own origin: where the module was loaded from another
+ * one (a CDN, the site of a Share snippet) or the document is sandboxed (an opaque origin), a
+ * module worker made from a blob: URL of this origin imports worker.js (whose server allows
+ * that, as a static CDN does). Throws where no worker can be made; compute.js then works here.
+ */
 export function newWorker() {
-  return workerFactory ? workerFactory() : new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+  if (workerFactory) return workerFactory();
+  const url = new URL('./worker.js', import.meta.url);
+  if (url.origin === globalThis.origin) return new Worker(url, { type: 'module' });
+  const shim = URL.createObjectURL(new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' }));
+  return new Worker(shim, { type: 'module' });
 }

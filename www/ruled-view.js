@@ -9,14 +9,20 @@
 // and where ruledlab differs; `params` still override), `controls` (show the sliders, menus, checkboxes and
 // the readout, beside or below the view as the element's width allows), `text` (the
 // explanation too), `autoplay` (play the first playable parameter, unless the reader prefers
-// reduced motion), `lang` ("en" or "de"; default: the page's language, then the browser's). The
+// reduced motion), `lang` ("en" or "de"; default: the page's language, then the browser's),
+// `camera` (yaw, pitch, distance, target x, y, z: the page's `cam` link value). The
 // property `data` ({ segments: Float64Array, rows?, cols? }) shows your own rulings or
 // congruence. Events: `scene-change` (detail: { scene, params }), `view-change` (detail: the
-// camera), `error` (detail: { message, code }). Disconnecting the element releases its WebGL
-// context and every wasm object it made.
+// camera, during a move), `camera-change` (detail: { camera, yaw, pitch, distance, target },
+// once a move ends; `camera` is the attribute's value), `error` (detail: { message, code },
+// the message in the element's language, also shown in the element). The element starts the
+// wasm core before it reads anything that needs it, so it works as the first ruledlab code on
+// a page. Disconnecting the element releases its WebGL context and every wasm object it made.
 import { Stage } from './stage.js';
 import { SCENES } from './scenes/index.js';
 import { readParams, defaults } from './scene.js';
+import { readCamera, writeCamera } from './state.js';
+import { start } from './core.js';
 import { PRESETS, findPreset, withPreset } from './paper.js';
 import { adoptStyles } from './ui/css.js';
 import { exportSvg } from './export/svg.js';
@@ -31,7 +37,7 @@ const HOST_CSS = `:host { display: block; position: relative; height: 480px; min
 let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
 
 export class RuledView extends HTMLElement {
-  static observedAttributes = ['scene', 'paper', 'params', 'controls', 'text', 'autoplay', 'lang'];
+  static observedAttributes = ['scene', 'paper', 'params', 'controls', 'text', 'autoplay', 'lang', 'camera'];
 
   constructor() {
     super();
@@ -47,6 +53,8 @@ export class RuledView extends HTMLElement {
     /** @type {import('./scene.js').ImportedData | null} */
     this._data = null;
     this.opening = Promise.resolve();
+    /** Counts open() calls: a later one supersedes an earlier one still starting the core. */
+    this.openings = 0;
   }
 
   get scene() {
@@ -92,6 +100,13 @@ export class RuledView extends HTMLElement {
   set lang(code) {
     this.setAttribute('lang', String(code));
   }
+  /** The camera as the attribute writes it ("yaw,pitch,distance,x,y,z"); the current one once shown. */
+  get camera() {
+    return this.stage?.scene ? writeCamera(this.stage.viewer.camera.toArray()) : this.getAttribute('camera') ?? '';
+  }
+  set camera(value) {
+    this.setAttribute('camera', String(value));
+  }
   /** Your own segments: { segments: Float64Array (6 per line), rows?, cols? }; selects the "data" scene. */
   get data() {
     return this._data;
@@ -114,10 +129,12 @@ export class RuledView extends HTMLElement {
       controls: this.controls,
       text: this.text,
       lang,
-      onChange: ({ reason }) => {
+      onChange: ({ reason, ended }) => {
         if (reason === 'camera' && this.stage) {
           const { yaw, pitch, distance, target } = this.stage.viewer.camera;
-          this.dispatchEvent(new CustomEvent('view-change', { detail: { yaw, pitch, distance, target: [...target] } }));
+          const view = { yaw, pitch, distance, target: [...target] };
+          this.dispatchEvent(new CustomEvent('view-change', { detail: view }));
+          if (ended) this.dispatchEvent(new CustomEvent('camera-change', { detail: { camera: writeCamera(this.stage.viewer.camera.toArray()), ...view } }));
         }
       },
       onBuilt: () => {
@@ -148,29 +165,48 @@ export class RuledView extends HTMLElement {
     else if (name === 'controls' || name === 'text') this.stage.setPanel(this.controls, this.text);
     else if (name === 'lang') this.stage.setLanguage(after);
     else if (name === 'autoplay' && after !== null) this.open();
+    else if (name === 'camera') {
+      const camera = readCamera(after ?? '');
+      if (camera && this.stage.scene) {
+        this.stage.viewer.camera.fromArray(camera);
+        this.stage.viewer.requestRender();
+      }
+    }
   }
 
-  /** Shows the scene of the attributes; an unknown scene or bad parameter is shown in the element and fires `error`. */
+  /**
+   * Shows the scene of the attributes, once the core has started (reading a figure's
+   * parameters needs it); an unknown scene or figure, or a core that cannot start, is shown in
+   * the element in its language and fires `error`.
+   */
   open() {
     const stage = this.stage;
     if (!stage) return this.opening;
-    const scene = SCENES.find((s) => s.id === this.scene);
-    if (!scene) {
-      const error = Object.assign(new Error(`unknown scene "${this.scene}"; known: ${SCENES.map((s) => s.id).join(', ')}`), { code: 'invalid-argument' });
-      stage.fail(error);
-      return this.opening;
-    }
-    const preset = findPreset(this.paper);
-    if (this.paper && !preset) {
-      const error = Object.assign(new Error(`unknown figure of the paper "${this.paper}"; known: ${PRESETS.map((p) => p.id).join(', ')}`), { code: 'invalid-argument' });
-      stage.fail(error);
-      return this.opening;
-    }
-    const paper = preset && preset.scene === scene.id ? preset : null;
-    const query = new URLSearchParams(this.params);
-    const { params, notes } = readParams(scene, paper ? withPreset(paper, scene, query) : query);
-    this.opening = stage
-      .open(scene, { ...defaults(scene), ...params }, { data: this._data, notes, autoplay: this.autoplay, paper })
+    const mine = ++this.openings;
+    this.opening = start()
+      .then(
+        () => {
+          if (mine !== this.openings || this.stage !== stage) return;
+          const { t } = stage.i18n;
+          const scene = SCENES.find((s) => s.id === this.scene);
+          if (!scene) {
+            stage.fail(Object.assign(new Error(t('element.unknownScene', { scene: this.scene, known: SCENES.map((s) => s.id).join(', ') })), { code: 'invalid-argument', details: { option: 'scene' } }));
+            return;
+          }
+          const preset = findPreset(this.paper);
+          if (this.paper && !preset) {
+            stage.fail(Object.assign(new Error(t('element.unknownPaper', { paper: this.paper, known: PRESETS.map((p) => p.id).join(', ') })), { code: 'invalid-argument', details: { option: 'paper' } }));
+            return;
+          }
+          const paper = preset && preset.scene === scene.id ? preset : null;
+          const query = new URLSearchParams(this.params);
+          const { params, notes } = readParams(scene, paper ? withPreset(paper, scene, query) : query);
+          const camera = readCamera(this.getAttribute('camera') ?? '');
+          if (this.hasAttribute('camera') && !camera) notes.push({ key: 'camera', note: 'element.badCamera' });
+          return stage.open(scene, { ...defaults(scene), ...params }, { data: this._data, notes, autoplay: this.autoplay, paper, camera });
+        },
+        (e) => stage.fail(e),
+      )
       .catch(() => {});
     return this.opening;
   }

@@ -50,7 +50,7 @@
  * @property {(key: string, vars?: Record<string, string | number>) => string} t
  * @property {(x: number | string | boolean | null | undefined) => string} format
  * @property {ImportedData} [data]   your own segments (the "data" scene)
- * @property {(segments: Float64Array, options: object, onProgress: (f: number) => void, draw?: number) => Promise<{segments: Float32Array, rulings: number, drawn: number}>} [refine]
+ * @property {(segments: Float64Array, options: import('../pkg/ruledlab.js').SubdivideOptions, onProgress: (f: number) => void, draw?: number) => Promise<{segments: Float32Array, rulings: number, drawn: number}>} [refine]
  *   refinement in a Web Worker, for large models (at most `draw` rulings come back: every k-th)
  *
  * Your own segments.

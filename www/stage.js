@@ -15,6 +15,7 @@ import { Player } from './ui/player.js';
 import { appendRich } from './ui/richtext.js';
 import { refineInWorker } from './compute.js';
 import { atPreset } from './paper.js';
+import { canFullscreen } from './platform.js';
 
 /** Below this width (CSS px) the panel goes under the view. */
 const NARROW = 720;
@@ -174,6 +175,8 @@ export class Stage {
     this.buttons.reset.textContent = t('view.reset');
     this.buttons.reset.title = t('view.resetTitle');
     this.buttons.fullscreen.textContent = t('view.fullscreen');
+    // a frame without allow="fullscreen" cannot: no button that does nothing
+    this.buttons.fullscreen.hidden = !canFullscreen(this.root.ownerDocument);
     this.buttons.help.textContent = '?';
     this.buttons.help.setAttribute('aria-label', t('view.shortcuts'));
     this.buttons.help.title = t('view.shortcuts');

@@ -54,16 +54,15 @@ export function readState(hash, scenes) {
   if (paper) q = withPreset(paper, scene, q);
   const read = readParams(scene, q);
   notes.push(...read.notes);
-  const camera = (q.get('cam') ?? '').split(',').map(Number);
-  const cameraOk = camera.length === 6 && camera.every(Number.isFinite) && camera[2] > 0;
-  if (q.has('cam') && !cameraOk) notes.push({ key: 'cam', note: 'note.badCamera' });
+  const camera = readCamera(q.get('cam') ?? '');
+  if (q.has('cam') && !camera) notes.push({ key: 'cam', note: 'note.badCamera' });
   const data = q.has('data') ? readData(q.get('data') ?? '') : null;
   if (q.has('data') && !data) notes.push({ key: 'data', note: 'note.badData' });
   const lang = q.get('lang');
   return {
     scene,
     params: read.params,
-    camera: cameraOk ? camera : null,
+    camera,
     lang: lang && /^[a-z]{2}(-[A-Za-z]{2})?$/.test(lang) ? lang : null,
     embed: q.has('embed'),
     controls: q.has('controls'),
@@ -87,10 +86,26 @@ export function writeState(state) {
   if (state.paper) q.set('paper', state.paper);
   q.set('scene', state.scene.id);
   for (const p of state.scene.params) q.set(p.key, serialize(p, state.params[p.key]));
-  if (state.camera) q.set('cam', state.camera.map((x) => Number(x.toPrecision(6))).join(','));
+  if (state.camera) q.set('cam', writeCamera(state.camera));
   if (state.lang) q.set('lang', state.lang);
   if (state.data && linkable(state.data)) q.set('data', writeData(state.data));
   return q.toString().replace(/=(&|$)/g, '$1');
+}
+
+/**
+ * A camera from its link text "yaw,pitch,distance,x,y,z" (the `cam` value, <ruled-view camera>),
+ * or null when it is not that.
+ * @param {string} text
+ * @returns {number[] | null}
+ */
+export function readCamera(text) {
+  const camera = String(text).split(',').map((x) => (x.trim() === '' ? NaN : Number(x)));
+  return camera.length === 6 && camera.every(Number.isFinite) && camera[2] > 0 ? camera : null;
+}
+
+/** The link text of a camera (six numbers, six significant digits). */
+export function writeCamera(/** @type {number[]} */ camera) {
+  return camera.map((x) => Number(x.toPrecision(6))).join(',');
 }
 
 /** Whether imported data is small enough for a link. */

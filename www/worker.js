@@ -2,9 +2,10 @@
 // First message: { init: wasm source } (a URL, or the bytes in the one-file build).
 // Then { id, segments: Float64Array, options, draw } (RuledSurface.subdivide options, steps
 // included; `draw`: most rulings to send back). Messages out: { id, progress } after each
-// step (by work done, later steps being larger), then { id, segments: Float32Array, rulings,
-// drawn } (transferred; every k-th ruling when there are more than `draw`), or { id, error, code }.
-import init, { RuledSurface } from '../pkg/ruledlab.js';
+// step, then { id, segments: Float32Array, rulings, drawn } (transferred; see refine.js), or
+// { id, error, code, details }.
+import init from '../pkg/ruledlab.js';
+import { refineSteps } from './refine.js';
 
 /** @type {Promise<unknown> | null} */
 let ready = null;
@@ -14,29 +15,13 @@ self.onmessage = async ({ data }) => {
     ready = init({ module_or_path: data.init });
     return;
   }
-  const { id, segments, options, draw = Infinity } = data;
-  /** @type {RuledSurface | null} */
-  let surface = null;
+  const { id } = data;
   try {
     await ready;
-    surface = RuledSurface.fromSegments(segments);
-    const steps = options.steps ?? 1;
-    const total = 2 ** steps - 1; // step k costs about 2^k
-    for (let k = 0; k < steps; k++) {
-      /** @type {RuledSurface} */
-      const next = surface.subdivide({ ...options, steps: 1 });
-      surface.free();
-      surface = next;
-      self.postMessage({ id, progress: (2 ** (k + 1) - 1) / total });
-    }
-    const rulings = surface.length;
-    const every = Math.max(1, Math.ceil(rulings / draw));
-    const out = every > 1 ? surface.everyF32(every) : surface.segmentsF32();
-    self.postMessage({ id, segments: out, rulings, drawn: out.length / 6 }, { transfer: [out.buffer] });
+    const done = await refineSteps(data, (progress) => self.postMessage({ id, progress }));
+    self.postMessage({ id, ...done }, { transfer: [done.segments.buffer] });
   } catch (e) {
     const error = /** @type {any} */ (e);
-    self.postMessage({ id, error: String(error?.message ?? error), code: error?.code });
-  } finally {
-    surface?.free();
+    self.postMessage({ id, error: String(error?.message ?? error), code: error?.code, details: error?.details });
   }
 };

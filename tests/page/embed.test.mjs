@@ -63,8 +63,8 @@ test('<ruled-view> elements draw independently; `controls` shows the scene’s c
   // an unknown scene is shown inside the element and fires `error`, nothing is thrown
   const error = page.evaluate(() => new Promise((resolve) => document.getElementById('right').addEventListener('error', (e) => resolve(e.detail), { once: true })));
   await page.evaluate(() => (document.getElementById('right').scene = 'nope'));
-  assert.match((await error).message, /unknown scene "nope"/);
-  assert.match(await page.locator('#right').evaluate((v) => v.shadowRoot.querySelector('.rl-error').textContent), /unknown scene "nope"/);
+  assert.match((await error).message, /There is no scene “nope”/);
+  assert.match(await page.locator('#right').evaluate((v) => v.shadowRoot.querySelector('.rl-error').textContent), /There is no scene “nope”/);
   assert.deepEqual(problems, []);
   await page.close();
 });

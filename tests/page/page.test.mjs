@@ -195,8 +195,8 @@ test('the share dialog offers the link, an iframe and a <ruled-view> snippet of 
   const iframe = await page.locator('#share-iframe').inputValue();
   assert.match(iframe, /^<iframe src="[^"]*#embed&amp;controls&amp;scene=curves/);
   const element = await page.locator('#share-element').inputValue();
-  assert.match(element, /<ruled-view scene="curves" params="[^"]*w=0\.0625[^"]*" lang="en" controls/);
-  assert.match(element, /src="[^"]*\/www\/view\.js"/);
+  assert.match(element, /<ruled-view scene="curves" params="[^"]*w=0\.0625[^"]*" camera="[-\d.,e]+" lang="en" controls/);
+  assert.match(element, /<script defer src="http[^"]*\/dist\/ruledlab-embed\.js"><\/script>/);
   assert.deepEqual(problems, []);
   await page.close();
 });

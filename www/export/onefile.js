@@ -21,6 +21,11 @@ export function withState(/** @type {string} */ html, /** @type {string} */ hash
   return html.replace(block, (_, open, close) => `${open}${stateJson(hash)}${close}`);
 }
 
+/** Whether `doc` is the one-file page (dist/ruledlab.html or a view downloaded from it). */
+export function isOneFilePage(/** @type {Document} */ doc) {
+  return doc.documentElement.dataset.build === 'onefile' && doc.getElementById(STATE_ID) !== null;
+}
+
 /** The hash stored in the page's state block, if any. */
 export function storedHash() {
   const text = document.getElementById(STATE_ID)?.textContent ?? '';
@@ -39,7 +44,7 @@ export function storedHash() {
  * @param {string} hash
  */
 export async function oneFileWithState(oneFile, hash) {
-  if (oneFile) return withState(`<!doctype html>\n<html lang="en">\n<head>${document.head.innerHTML}</head>\n<body>${BODY}</body>\n</html>\n`, hash);
+  if (oneFile) return withState(`<!doctype html>\n<html lang="en" data-build="onefile">\n<head>${document.head.innerHTML}</head>\n<body>${BODY}</body>\n</html>\n`, hash);
   const response = await fetch(new URL('../../dist/ruledlab.html', import.meta.url));
   if (!response.ok) throw new Error(`dist/ruledlab.html: HTTP ${response.status}`);
   return withState(await response.text(), hash);

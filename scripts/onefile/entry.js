@@ -1,0 +1,18 @@
+// The one script of the one-file build, with the wasm and the worker inlined (the build supplies
+// both through the virtual module "ruledlab:inline"). It is dist/ruledlab-embed.js, which
+// defines <ruled-view> on any page, and the inline script of dist/ruledlab.html, which also
+// starts the page there (the file's state block marks it). One script for both, so the one-file
+// page can hand out the exact embed script it runs (Share → "Download ruledlab-embed.js").
+import './configure.js';
+import '../../www/view.js';
+import { startPage, showStartFailure } from '../../www/app.js';
+import { isOneFilePage } from '../../www/export/onefile.js';
+
+// the text of this script when it is inline (the one-file page), read while it runs
+const source = document.currentScript?.textContent ?? '';
+
+if (isOneFilePage(document)) {
+  const go = () => startPage({ oneFile: true, embedScript: () => source }).catch(showStartFailure);
+  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', go, { once: true });
+  else go();
+}

@@ -1,0 +1,191 @@
+// The Share dialog: what the page hands out, and only what works from where the page is.
+//   served page (an http(s) address):   a link, an <iframe> and a <ruled-view> snippet whose
+//                                       script is the one-file embed script of this site (a
+//                                       classic script: it loads from any other origin), and
+//                                       the view as one HTML file
+//   the one-file page with an address:  the same, the element snippet with the exact script
+//                                       to upload beside it ("Download ruledlab-embed.js")
+//   no address (file://, srcdoc, about:blank): no link or iframe (nobody else could open
+//                                       them), a sentence saying so, the one-file download and
+//                                       the element snippet with its script to upload
+// Every snippet carries the scene, its parameters, the figure of the paper, the language and
+// the camera; the tests paste each into a page on another origin and require it to draw.
+import { defaults } from './scene.js';
+import { writeState } from './state.js';
+import { download } from './stage.js';
+import { oneFileWithState } from './export/onefile.js';
+import { place } from './platform.js';
+
+/** What `npm run build` made beside the served page (dist/manifest.json names the embed script). */
+const MANIFEST = new URL('../dist/manifest.json', import.meta.url).href;
+
+/** The file name the embed script is handed out under. */
+export const EMBED_FILE = 'ruledlab-embed.js';
+
+/**
+ * @typedef {object} ShareContext
+ * @property {import('./stage.js').Stage} stage
+ * @property {() => import('./i18n/index.js').Translator} i18n
+ * @property {() => Omit<import('./state.js').ViewState, 'notes'>} state   the view as the link writes it
+ * @property {boolean} oneFile       this page is the one-file build
+ * @property {(() => string) | undefined} embedScript   the one-file build's own script (its embed script)
+ */
+
+/**
+ * The Share dialog of the page.
+ * @param {HTMLDialogElement} dialog
+ * @param {ShareContext} context
+ * @returns {{open: () => Promise<void>}}
+ */
+export function shareDialog(dialog, context) {
+  const doc = dialog.ownerDocument;
+  const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) => Object.assign(doc.createElement(tag), props);
+  /** The URL of this site's one-file embed script, or null (checked once, when the dialog first opens). */
+  let embedServed = /** @type {Promise<string | null> | null} */ (null);
+
+  const open = async () => {
+    const { stage, oneFile } = context;
+    const { t } = context.i18n();
+    const where = place();
+    const state = context.state();
+    const hash = writeState(state);
+    const base = location.href.split('#')[0];
+    const title = t(stage.scene?.title ?? '');
+    // the script of the element snippet, and what to say about it
+    /** @type {{src: string, module?: boolean}} */
+    let script = { src: EMBED_FILE };
+    let scriptNote = t('share.elementUpload', { file: EMBED_FILE });
+    if (!oneFile && where.address) {
+      embedServed ??= fetch(MANIFEST)
+        .then((r) => (r.ok ? r.json() : null))
+        .then((m) => (typeof m?.embed === 'string' ? new URL(m.embed, MANIFEST).href : null), () => null);
+      const embed = await embedServed;
+      if (embed) {
+        script = { src: embed };
+        scriptNote = t('share.elementServed');
+      } else {
+        script = { src: new URL('./view.js', import.meta.url).href, module: true };
+        scriptNote = t('share.elementModule');
+      }
+    }
+    /** @type {HTMLElement[]} */
+    const rows = [];
+    if (where.address) {
+      rows.push(field('share.link', 'share-link', `${base}#${hash}`));
+      rows.push(field('share.iframe', 'share-iframe', iframeSnippet(base, hash, title)));
+    } else {
+      rows.push(el('p', { className: 'share-nowhere', id: 'share-nowhere', textContent: t(where.file ? 'share.fromFile' : 'share.noAddress') }));
+    }
+    const element = field('share.element', 'share-element', elementSnippet(/** @type {import('./scene.js').Scene} */ (stage.scene), stage.params, state.lang ?? context.i18n().lang, script, stage.paper, state.camera), scriptNote);
+    rows.push(element);
+    if (script.src === EMBED_FILE) {
+      const embed = el('button', { type: 'button', id: 'share-embed', textContent: t('share.embedDownload', { file: EMBED_FILE }) });
+      const embedNote = el('p', { className: 'share-note', hidden: true });
+      embed.addEventListener('click', () => {
+        const text = context.embedScript?.();
+        if (text) download(EMBED_FILE, text, 'text/javascript');
+        else {
+          embedNote.hidden = false;
+          embedNote.textContent = t('share.embedMissing', { file: EMBED_FILE });
+        }
+      });
+      element.append(embed, embedNote);
+    }
+    const onefile = el('button', { type: 'button', id: 'share-onefile', textContent: t('app.onefile') });
+    const onefileNote = el('p', { className: 'share-note', hidden: true });
+    onefile.addEventListener('click', async () => {
+      try {
+        download(`ruledlab-${stage.scene?.id ?? 'view'}.html`, await oneFileWithState(oneFile, hash), 'text/html');
+      } catch {
+        onefileNote.hidden = false;
+        onefileNote.textContent = t('app.onefileMissing');
+      }
+    });
+    const onefileRow = el('div', { className: 'share-onefile' });
+    onefileRow.append(onefile, el('p', { className: 'share-note', textContent: t('share.onefileNote') }), onefileNote);
+    const close = el('button', { type: 'button', className: 'share-close', textContent: t('share.close') });
+    close.addEventListener('click', () => dialog.close());
+    dialog.setAttribute('aria-label', t('share.title'));
+    dialog.replaceChildren(
+      el('h2', { textContent: t('share.title') }),
+      el('p', { textContent: t('share.intro') }),
+      ...rows,
+      onefileRow,
+      // a framed page cannot tell whether the page around it allows downloads: say what to do if not
+      ...(where.framed ? [el('p', { className: 'share-note', id: 'share-framed', textContent: t('share.framed') })] : []),
+      close,
+    );
+    dialog.dataset.ready = '1';
+    if (!dialog.open) dialog.showModal();
+  };
+
+  /**
+   * A labelled read-only field with a Copy button (and a note under it).
+   * @param {string} label  i18n key
+   * @param {string} id
+   * @param {string} value
+   * @param {string} [note]
+   */
+  const field = (label, id, value, note) => {
+    const { t } = context.i18n();
+    const wrap = el('div', { className: 'share-row' });
+    const area = el('textarea', { id, rows: 3, readOnly: true, spellcheck: false, value });
+    const copy = el('button', { type: 'button', textContent: t('share.copy') });
+    copy.setAttribute('aria-label', t('share.copyWhat', { what: t(label) }));
+    const done = el('span', { className: 'share-done' });
+    done.setAttribute('aria-live', 'polite');
+    copy.addEventListener('click', async () => {
+      area.select();
+      let copied = false;
+      try {
+        await navigator.clipboard.writeText(area.value);
+        copied = true;
+      } catch {
+        copied = doc.execCommand?.('copy') ?? false;
+      }
+      // a sandboxed frame may refuse both: the text stays selected for Ctrl+C
+      done.textContent = t(copied ? 'share.copied' : 'share.selectCopy');
+    });
+    wrap.append(el('label', { htmlFor: id, textContent: t(label) }), area, copy, done);
+    if (note) wrap.append(el('p', { className: 'share-note', textContent: note }));
+    return wrap;
+  };
+
+  return { open };
+}
+
+/** Text for an HTML attribute value in double quotes. */
+const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
+
+/** A scene title without its subscript marks ("R_{i}" → "Ri"). */
+const plainTitle = (/** @type {string} */ s) => s.replace(/[_^]\{?([^}]*)\}?/g, '$1');
+
+/** An <iframe> of this page in embed mode, with controls. */
+export function iframeSnippet(/** @type {string} */ base, /** @type {string} */ hash, /** @type {string} */ title) {
+  const src = `${base}#embed&controls&${hash.replace(/^embed&?|(^|&)controls(&|$)/g, '')}`;
+  return `<iframe src="${attr(src)}" title="${attr(plainTitle(title))}" width="900" height="560" style="border: 0; max-width: 100%" allow="fullscreen" loading="lazy"></iframe>`;
+}
+
+/**
+ * A <ruled-view> element showing this scene with these parameters, language and camera (and
+ * the figure of the paper shown, if any: then only the values that differ from the figure's
+ * are listed), after the script that defines the element.
+ * @param {import('./scene.js').Scene} scene
+ * @param {import('./scene.js').Params} params
+ * @param {string} lang
+ * @param {{src: string, module?: boolean}} script   the script that defines <ruled-view>: the
+ *   one-file embed script (a classic script, loads from anywhere) or the module `ruledlab/view`
+ * @param {import('./paper.js').PaperPreset | null} [paper]
+ * @param {number[] | null} [camera]   yaw, pitch, distance, target x, y, z
+ */
+export function elementSnippet(scene, params, lang, script, paper = null, camera = null) {
+  /** @type {import('./scene.js').Params} */
+  const base = { ...defaults(scene), ...(paper?.params ?? {}) };
+  const q = new URLSearchParams();
+  for (const p of scene.params) if (params[p.key] !== base[p.key]) q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : String(params[p.key]));
+  const figure = paper ? ` paper="${attr(paper.id)}"` : '';
+  const view = camera ? ` camera="${attr(camera.map((x) => Number(x.toPrecision(6))).join(','))}"` : '';
+  // deferred: the course page is not held up while the script loads; the element upgrades then
+  const tag = script.module ? `<script type="module" src="${attr(script.src)}"></script>` : `<script defer src="${attr(script.src)}"></script>`;
+  return `${tag}\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}"${view} lang="${attr(lang)}" controls style="display: block; height: 560px; max-width: 100%"></ruled-view>`;
+}
