@@ -93,6 +93,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
 
   const stage = new Stage(main, {
     lang,
+    page: true,
     onChange: ({ reason, ended }) => saveHash(reason === 'scene' ? 'push' : 'replace', ended),
     onBuilt: (built) => updateExports(built),
   });

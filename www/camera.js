@@ -42,6 +42,12 @@ export class OrbitCamera {
     this.home = { target: this.target, distance: this.distance, yaw: this.yaw, pitch: this.pitch };
   }
 
+  /** Whether the camera is where the last fit put it. */
+  atHome() {
+    const h = this.home;
+    return !!h && h.distance === this.distance && h.yaw === this.yaw && h.pitch === this.pitch && h.target.every((x, i) => x === this.target[i]);
+  }
+
   /** Restores the last fitted view. */
   reset() {
     if (this.home) Object.assign(this, this.home);

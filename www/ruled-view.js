@@ -29,10 +29,12 @@ import { exportSvg } from './export/svg.js';
 import { exportTikz } from './export/tikz.js';
 import { png } from './export/png.js';
 
-const HOST_CSS = `:host { display: block; position: relative; height: 480px; min-height: 240px; overflow: auto; contain: content; }
+// the element is a box of its own size: the view and its controls stay inside it at every width
+// (beside each other when there is room, the panel under the view and scrolling inside the box
+// otherwise: ui/css.js)
+const HOST_CSS = `:host { display: block; position: relative; height: 480px; min-height: 240px; overflow: hidden; contain: content; }
 :host([hidden]) { display: none; }
-.rl-host { width: 100%; height: 100%; }
-.rl-host > .rl-stage.rl-narrow:not(.rl-no-panel) { height: auto; }`;
+.rl-host { width: 100%; height: 100%; }`;
 
 let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
 
@@ -169,6 +171,7 @@ export class RuledView extends HTMLElement {
       const camera = readCamera(after ?? '');
       if (camera && this.stage.scene) {
         this.stage.viewer.camera.fromArray(camera);
+        this.stage.viewer.fitted = false;
         this.stage.viewer.requestRender();
       }
     }

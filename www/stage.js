@@ -17,8 +17,13 @@ import { refineInWorker } from './compute.js';
 import { atPreset } from './paper.js';
 import { canFullscreen } from './platform.js';
 
-/** Below this width (CSS px) the panel goes under the view. */
-const NARROW = 720;
+/** Below this width (CSS px) the panel goes under the view (and, for a box taller than wide, below PORTRAIT). */
+const NARROW = 640;
+const PORTRAIT = 1000;
+/** Below this width the controls' labels go above them. */
+const TINY = 360;
+/** Below this width of the view, the mouse hint is left out (the toolbar needs the room). */
+const SMALL_VIEW = 560;
 
 /** Least time between two announcements of the readout (ms). */
 const ANNOUNCE_EVERY = 1000;
@@ -28,6 +33,7 @@ const ANNOUNCE_EVERY = 1000;
  * @property {boolean} [controls]   show the controls (and the readout)
  * @property {boolean} [text]       show the explanation
  * @property {string | null} [lang]
+ * @property {boolean} [page]       the stage is the page's (the page scrolls; a narrow view stays at the top of the screen)
  * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset', ended: boolean}) => void} [onChange]
  * @property {(error: unknown) => void} [onError]
  * @property {(built: import('./scene.js').Built) => void} [onBuilt]
@@ -48,7 +54,7 @@ export class Stage {
     const doc = host.ownerDocument;
     const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) => Object.assign(doc.createElement(tag), props);
 
-    this.root = el('div', { className: 'rl-stage' });
+    this.root = el('div', { className: options.page ? 'rl-stage rl-page' : 'rl-stage' });
     this.view = el('div', { className: 'rl-view' });
     this.canvas = /** @type {HTMLCanvasElement} */ (el('canvas', { tabIndex: 0 }));
     this.canvas.setAttribute('role', 'img');
@@ -115,6 +121,8 @@ export class Stage {
     this.data = null;
     /** @type {import('./paper.js').PaperPreset | null} the figure of the paper shown, if any */
     this.paper = null;
+    /** @type {boolean | undefined} whether the reader opened (or closed) the figure's card */
+    this.paperOpen = undefined;
     /** @type {ReturnType<typeof buildControls> | null} */
     this.controls = null;
     this.lastAnnounced = 0;
@@ -159,10 +167,21 @@ export class Stage {
     this.layout();
   }
 
-  /** Panel beside the view when wide, below it when narrow. */
+  /**
+   * Panel beside the view when there is room, under it otherwise (narrow: under NARROW px, or a
+   * box taller than wide under PORTRAIT px); the labels above the controls when tiny. The box is
+   * the element's, or for the page the screen.
+   */
   layout() {
-    const width = this.root.getBoundingClientRect().width || this.host.getBoundingClientRect().width;
-    this.root.classList.toggle('rl-narrow', width > 0 && width < NARROW);
+    const box = this.root.getBoundingClientRect();
+    const width = box.width || this.host.getBoundingClientRect().width;
+    const height = this.options.page ? window.innerHeight : box.height || this.host.getBoundingClientRect().height;
+    const narrow = width > 0 && (width < NARROW || (height > width && width < PORTRAIT));
+    this.root.classList.toggle('rl-narrow', narrow);
+    this.root.classList.toggle('rl-tiny', width > 0 && width < TINY);
+    // the hint under the view only where it fits beside the toolbar on one line
+    this.root.classList.toggle('rl-view-small', this.view.getBoundingClientRect().width < SMALL_VIEW);
+    this.controls?.fit();
     this.viewer.requestRender();
   }
 
@@ -184,8 +203,7 @@ export class Stage {
     this.legend.setAttribute('aria-label', t('view.legend'));
     this.form.setAttribute('aria-label', t('panel.controls'));
     this.readout.setAttribute('aria-label', t('panel.readout'));
-    const coarse = typeof matchMedia === 'function' && matchMedia('(pointer: coarse)').matches;
-    this.hint.textContent = t(coarse ? 'view.hintTouch' : 'view.hintMouse');
+    this.hint.textContent = t(touchScreen() ? 'view.hintTouch' : 'view.hintMouse');
     this.buildShortcuts();
   }
 
@@ -237,11 +255,13 @@ export class Stage {
       onChange: (key, value, ended) => this.setParam(key, value, ended),
       onPlay: (key) => this.togglePlay(key),
     });
+    this.controls.fit();
     this.buildPlayer();
     this.showPaper();
     this.compute({ fit: fit && !camera });
     if (camera) {
       this.viewer.camera.fromArray(camera);
+      this.viewer.fitted = false;
       this.viewer.requestRender();
     }
   }
@@ -292,13 +312,22 @@ export class Stage {
     const caption = el('blockquote', 'rl-paper-caption', t(preset.caption));
     const note = el('p', 'rl-paper-note', t(preset.note));
     const data = el('p', `rl-paper-data rl-data-${preset.data}`, t(`paper.data.${preset.data}`));
-    card.replaceChildren(heading, caption, note, data);
+    // the heading opens and closes the rest: open beside the view, closed over the controls of a
+    // narrow box (one line instead of a screenful before the first slider), as the reader left it
+    const more = /** @type {HTMLDetailsElement} */ (doc.createElement('details'));
+    more.className = 'rl-paper-more';
+    more.open = this.paperOpen ?? !this.root.classList.contains('rl-narrow');
+    more.addEventListener('toggle', () => (this.paperOpen = more.open));
+    const summary = doc.createElement('summary');
+    summary.append(heading);
+    more.append(summary, caption, note, data);
+    card.replaceChildren(more);
     if (preset.beyond) {
       const beyond = doc.createElement('p');
       beyond.className = 'rl-beyond';
       beyond.append(Object.assign(doc.createElement('strong'), { textContent: `${t('paper.beyondTitle')} ` }));
       appendRich(beyond, t(preset.beyond));
-      card.append(beyond);
+      more.append(beyond);
     }
     if (!atPreset(preset, this.scene, this.params)) {
       const changed = el('p', 'rl-paper-changed', `${t('paper.changed')} `);
@@ -458,25 +487,35 @@ export class Stage {
     }
   }
 
+  /** The list of gestures (first, on a touch screen) and keys that "?" shows. */
   buildShortcuts() {
     const { t } = this.i18n;
     const doc = this.root.ownerDocument;
-    const table = doc.createElement('table');
-    const keys = [
+    /** @param {Array<[string, string]>} rows @param {boolean} [keyCaps] */
+    const table = (rows, keyCaps = true) => {
+      const tab = doc.createElement('table');
+      for (const [k, what] of rows) {
+        const row = tab.insertRow();
+        row.insertCell().append(Object.assign(doc.createElement(keyCaps ? 'kbd' : 'strong'), { textContent: t(k) }));
+        row.insertCell().textContent = t(what);
+      }
+      return tab;
+    };
+    const keys = table([
       ['←  →  ↑  ↓', 'keys.orbit'], ['Shift + ←  →  ↑  ↓', 'keys.pan'], ['+  −', 'keys.zoom'], ['F', 'keys.fit'],
       ['R', 'keys.reset'], ['Space', 'keys.play'], ['.', 'keys.step'], ['Tab', 'keys.tab'], ['?', 'keys.help'], ['Esc', 'keys.close'],
-    ];
-    for (const [k, what] of keys) {
-      const row = table.insertRow();
-      row.insertCell().append(Object.assign(doc.createElement('kbd'), { textContent: k }));
-      row.insertCell().textContent = t(what);
-    }
+    ]);
+    const touch = table([['touch.one', 'touch.oneWhat'], ['touch.two', 'touch.twoWhat'], ['touch.pinch', 'touch.pinchWhat'], ['touch.fit', 'touch.fitWhat']], false);
+    touch.className = 'rl-gestures';
     const close = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('keys.closeButton') });
     close.addEventListener('click', () => this.shortcuts.close());
-    const title = Object.assign(doc.createElement('h2'), { textContent: t('keys.title') });
+    const heading = (/** @type {string} */ key) => Object.assign(doc.createElement('h2'), { textContent: t(key) });
     const intro = Object.assign(doc.createElement('p'), { textContent: t('keys.intro') });
-    this.shortcuts.setAttribute('aria-label', t('keys.title'));
-    this.shortcuts.replaceChildren(title, intro, table, close);
+    const gestures = [heading('touch.title'), touch];
+    const keyboard = [heading('keys.title'), intro, keys];
+    this.shortcuts.setAttribute('aria-label', t(touchScreen() ? 'touch.dialog' : 'keys.title'));
+    // on a touch screen the gestures come first; the keys stay for a keyboard attached to it
+    this.shortcuts.replaceChildren(...(touchScreen() ? [...gestures, ...keyboard] : [...keyboard, ...gestures]), close);
   }
 
   showShortcuts() {
@@ -492,6 +531,11 @@ export class Stage {
     this.resize.disconnect();
     this.root.remove();
   }
+}
+
+/** Whether the main pointer is a finger (a phone or tablet). */
+export function touchScreen() {
+  return typeof matchMedia === 'function' && matchMedia('(pointer: coarse)').matches;
 }
 
 /** Downloads `content` (a string or a Blob) as `filename`. */

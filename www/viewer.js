@@ -116,11 +116,17 @@ export class Viewer {
     canvas.addEventListener('webglcontextlost', this.onLost);
     canvas.addEventListener('webglcontextrestored', this.onRestored);
     this.camera.attach(canvas, (ended) => {
+      this.fitted = this.camera.atHome();
       this.moved();
       this.requestRender();
       this.onCameraChange?.(ended);
     });
-    this.resize = new ResizeObserver(() => this.requestRender());
+    /** Whether the camera is as fit() framed it: a new size of the view frames it again then. */
+    this.fitted = false;
+    this.resize = new ResizeObserver(() => {
+      if (this.fitted) this.fit();
+      this.requestRender();
+    });
     this.resize.observe(canvas);
   }
 
@@ -145,6 +151,7 @@ export class Viewer {
     if (!this.built) return;
     if (this.built.camera) Object.assign(this.camera, this.built.camera);
     this.camera.fit(this.built.bounds, this.aspect);
+    this.fitted = true;
     this.requestRender();
   }
 

@@ -29,6 +29,8 @@ export function buildControls(form, scene, params, i18n, hooks) {
   form.replaceChildren();
   form.noValidate = true;
   form.addEventListener('submit', (e) => e.preventDefault());
+  /** @type {Array<{row: HTMLElement, slider: HTMLInputElement, minus: HTMLButtonElement, plus: HTMLButtonElement, exact: HTMLInputElement, output: HTMLOutputElement, param: import('../scene.js').Param}>} the sliders */
+  const fine = [];
   /** @type {Map<string, {row: HTMLElement, input: HTMLInputElement | HTMLSelectElement, set: (v: any) => void, reason: HTMLElement, problem: HTMLElement, play?: HTMLButtonElement, param: import('../scene.js').Param}>} */
   const rows = new Map();
   for (const p of scene.params) {
@@ -82,32 +84,41 @@ export function buildControls(form, scene, params, i18n, hooks) {
       const slider = Object.assign(doc.createElement('input'), { type: 'range', min: String(p.min), max: String(p.max), step: String(p.step ?? 'any') });
       const output = Object.assign(doc.createElement('output'), { htmlFor: id });
       output.setAttribute('aria-hidden', 'true');
-      /** @type {HTMLInputElement | null} */
-      let exact = null;
-      if (p.exact) {
-        exact = Object.assign(doc.createElement('input'), { type: 'text', inputMode: 'decimal', className: 'rl-exact', spellcheck: false });
-        exact.setAttribute('aria-label', t('control.exactValue', { name: t(p.label) }));
-        exact.title = t('control.exactHint');
-        exact.addEventListener('change', () => {
-          const x = parseNumber(/** @type {HTMLInputElement} */ (exact).value);
-          const inRange = Number.isFinite(x) && x >= /** @type {number} */ (p.min) && x <= /** @type {number} */ (p.max);
-          /** @type {HTMLInputElement} */ (exact).setAttribute('aria-invalid', String(!inRange));
-          if (inRange) hooks.onChange(p.key, x, true);
+      // a field for the exact value: always where the paper uses exact values ("1/13"), and for
+      // any slider with more values than pixels (fit()), beside its − / + steps
+      const exact = Object.assign(doc.createElement('input'), { type: 'text', inputMode: 'decimal', className: 'rl-exact', spellcheck: false, autocomplete: 'off' });
+      exact.setAttribute('aria-label', t('control.exactValue', { name: t(p.label) }));
+      exact.title = t(p.exact ? 'control.exactHint' : 'control.numberHint');
+      exact.hidden = !p.exact;
+      exact.addEventListener('change', () => {
+        const x = parseNumber(exact.value);
+        const inRange = Number.isFinite(x) && x >= /** @type {number} */ (p.min) && x <= /** @type {number} */ (p.max);
+        exact.setAttribute('aria-invalid', String(!inRange));
+        if (inRange) hooks.onChange(p.key, p.exact ? x : snap(p, x), true);
+      });
+      const stepper = (/** @type {-1 | 1} */ sign) => {
+        const b = Object.assign(doc.createElement('button'), { type: 'button', className: 'rl-step', textContent: sign < 0 ? '−' : '+', hidden: true });
+        b.setAttribute('aria-label', t(sign < 0 ? 'control.decrease' : 'control.increase', { name: t(p.label) }));
+        b.addEventListener('click', () => {
+          const next = snap(p, Number(slider.value) + sign * (p.step ?? ((/** @type {number} */ (p.max) - /** @type {number} */ (p.min)) / 100)));
+          if (next !== Number(slider.value)) hooks.onChange(p.key, next, true);
         });
-      }
+        return b;
+      };
+      const [minus, plus] = [stepper(-1), stepper(1)];
       set = (v) => {
         slider.value = String(v);
         output.value = format(Number(v));
         slider.setAttribute('aria-valuetext', format(Number(v)));
-        if (exact && doc.activeElement !== exact) exact.value = fraction(Number(v));
+        if (doc.activeElement !== exact) exact.value = p.exact ? fraction(Number(v)) : plain(Number(v), i18n.lang);
       };
       slider.addEventListener('input', () => hooks.onChange(p.key, Number(slider.value), false));
       slider.addEventListener('change', () => hooks.onChange(p.key, Number(slider.value), true));
       input = slider;
       const line = Object.assign(doc.createElement('span'), { className: 'rl-line' });
-      line.append(slider, output);
-      if (exact) line.append(exact);
+      line.append(minus, slider, plus, output, exact);
       cell.append(line);
+      fine.push({ row, slider, minus, plus, exact, output, param: p });
       if (p.play) {
         play = Object.assign(doc.createElement('button'), { type: 'button', className: 'rl-play' });
         play.setAttribute('aria-pressed', 'false');
@@ -163,8 +174,39 @@ export function buildControls(form, scene, params, i18n, hooks) {
     else r.input.removeAttribute('aria-describedby');
   };
 
+  /**
+   * Gives every slider with more values than it has pixels its − / + steps and a number field
+   * (a pixel of such a slider skips values; the steps reach each one). Once shown they stay, so
+   * the slider they narrow does not flip them back.
+   */
+  const fit = () => {
+    for (const f of fine) {
+      const p = f.param;
+      const values = p.step ? Math.round((/** @type {number} */ (p.max) - /** @type {number} */ (p.min)) / p.step) + 1 : Infinity;
+      const width = f.slider.getBoundingClientRect().width;
+      if (width > 0 && values > width && f.minus.hidden) {
+        f.minus.hidden = f.plus.hidden = f.exact.hidden = false;
+        f.output.hidden = true;
+        f.row.classList.add('rl-fine');
+      }
+    }
+  };
+
   update(params);
-  return { update, playing, invalid, rows };
+  return { update, playing, invalid, rows, fit };
+}
+
+/** A number as one types it: no grouping, a decimal comma in German. */
+function plain(/** @type {number} */ x, /** @type {string} */ lang) {
+  const text = String(Number(x.toPrecision(12)));
+  return lang === 'de' ? text.replace('.', ',') : text;
+}
+
+/** `x` on the slider's grid of steps, within its range. */
+function snap(/** @type {import('../scene.js').Param} */ p, /** @type {number} */ x) {
+  const min = /** @type {number} */ (p.min), max = /** @type {number} */ (p.max);
+  const on = p.step ? min + Math.round((x - min) / p.step) * p.step : x;
+  return Number(Math.min(max, Math.max(min, on)).toPrecision(12));
 }
 
 /** A number as a short fraction when it is one (1/13, −1/16), else as a decimal. */

@@ -9,21 +9,33 @@ export const CSS = `
 .rl-stage *, .rl-stage *::before, .rl-stage *::after { box-sizing: border-box; }
 .rl-stage [hidden] { display: none !important; }
 .rl-no-controls .rl-controls, .rl-no-controls .rl-player, .rl-no-controls .rl-readout, .rl-no-controls .rl-claims, .rl-no-controls .rl-readout-note, .rl-no-controls .rl-caption, .rl-no-controls .rl-downloads, .rl-no-controls .rl-figure { display: none !important; }
-.rl-stage.rl-narrow { flex-direction: column; }
 .rl-view { position: relative; flex: 1 1 auto; min-width: 0; min-height: 240px; overflow: hidden; background: var(--paper); }
-.rl-stage.rl-narrow:not(.rl-no-panel) .rl-view { flex: 0 0 auto; height: min(62vh, 34rem); }
+/* narrow (stage.js layout()): the view over its panel, the view keeping 58 % of the box; the
+   panel scrolls inside the box, so every control is reachable within it */
+.rl-stage.rl-narrow { flex-direction: column; }
+.rl-stage.rl-narrow:not(.rl-no-panel) > .rl-view { flex: 0 0 58%; min-height: 160px; }
+.rl-stage.rl-narrow > .rl-panel { flex: 1 1 0; min-height: 0; max-width: none; overflow-y: auto; border-left: 0; border-top: 1px solid var(--line); }
+/* the page on a phone: the page itself scrolls and the view stays at the top of the screen */
+.rl-stage.rl-page.rl-narrow { display: block; height: auto; }
+.rl-stage.rl-page.rl-narrow:not(.rl-no-panel) > .rl-view { position: sticky; top: 0; z-index: 3; height: max(240px, 58svh); border-bottom: 1px solid var(--line); }
+.rl-stage.rl-page.rl-narrow > .rl-panel { overflow: visible; border-top: 0; }
+.rl-stage.rl-narrow .rl-hint { display: none; }
+.rl-stage.rl-narrow .rl-legend { top: .35rem; left: .35rem; max-width: calc(100% - .7rem); max-height: 38%; padding: .2rem .45rem; }
+.rl-stage.rl-narrow .rl-legend li { display: inline-flex; margin-right: .7rem; }
+.rl-stage.rl-narrow .rl-toolbar { right: .35rem; bottom: .35rem; }
 .rl-view canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; touch-action: none; outline: none; }
 .rl-view canvas:focus-visible { outline: 3px solid var(--focus); outline-offset: -3px; }
 .rl-view:has(canvas:focus-visible)::after { content: ""; position: absolute; inset: 0; border: 3px solid var(--focus); pointer-events: none; }
 .rl-labels { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
 .rl-label { position: absolute; left: 0; top: 0; font: italic 15px/1 "Times New Roman", "STIX Two Text", serif; color: var(--ink);
   background: rgb(251 250 247 / .8); padding: 1px 3px; border-radius: 3px; white-space: nowrap; }
-.rl-label sub, .rl-legend sub, .rl-controls sub, .rl-readout sub { font-size: 72%; }
-.rl-legend { position: absolute; left: .6rem; top: .5rem; margin: 0; padding: .35rem .6rem; list-style: none; max-width: calc(100% - 9rem);
-  background: rgb(255 255 255 / .88); border-radius: 6px; font-size: .8rem; line-height: 1.35; }
+.rl-stage sub, .rl-stage sup { font-size: max(12px, .72em); line-height: 1; }
+.rl-stage math :is(msub, msup, msubsup, munder, mover, munderover, mfrac) > :not(:first-child) { font-size: max(12px, .71em); }
+.rl-legend { position: absolute; left: .6rem; top: .5rem; margin: 0; padding: .35rem .6rem; list-style: none; max-width: calc(100% - 1.2rem); max-height: 45%; overflow-y: auto;
+  background: rgb(255 255 255 / .88); border-radius: 6px; font-size: max(12px, .8rem); line-height: 1.35; }
 .rl-legend li { display: flex; align-items: center; gap: .45rem; }
 .rl-swatch { flex: none; }
-.rl-toolbar { position: absolute; right: .5rem; top: .5rem; display: flex; gap: .3rem; flex-wrap: wrap; justify-content: flex-end; }
+.rl-toolbar { position: absolute; right: .5rem; bottom: .5rem; display: flex; gap: .3rem; flex-wrap: wrap; justify-content: flex-end; max-width: calc(100% - 1rem); }
 .rl-stage button, .rl-stage select, .rl-stage input[type=text] { font: inherit; font-size: .85rem; color: var(--ink); }
 .rl-stage select { min-height: 28px; }
 .rl-stage button { min-height: 28px; min-width: 28px; padding: .2rem .6rem; border: 1px solid #c9c5ba; border-radius: 6px;
@@ -34,18 +46,23 @@ export const CSS = `
 .rl-progress { position: absolute; left: 50%; top: .6rem; transform: translateX(-50%); display: flex; gap: .4rem; align-items: center;
   background: rgb(255 255 255 / .92); padding: .2rem .5rem; border-radius: 6px; font-size: .8rem; }
 .rl-progress progress { width: 10rem; height: .6rem; }
-.rl-error { position: absolute; inset: auto .6rem 2.2rem .6rem; margin: 0; background: #fff0ee; color: #7d1710; padding: .5rem .7rem;
+.rl-error { position: absolute; inset: auto .6rem 3.4rem .6rem; margin: 0; background: #fff0ee; color: #7d1710; padding: .5rem .7rem;
   border: 1px solid #e6b2aa; border-radius: 6px; font-size: .88rem; white-space: pre-wrap; }
-.rl-note { position: absolute; inset: auto .6rem 5.5rem .6rem; margin: 0; background: #fff8e6; color: #5a4000; padding: .4rem .7rem;
+.rl-note { position: absolute; inset: auto .6rem 6.6rem .6rem; margin: 0; background: #fff8e6; color: #5a4000; padding: .4rem .7rem;
   border: 1px solid #ead79b; border-radius: 6px; font-size: .82rem; }
-.rl-hint { position: absolute; left: .6rem; bottom: .35rem; margin: 0; color: var(--muted); font-size: .75rem; background: rgb(251 250 247 / .8); border-radius: 4px; padding: 0 .25rem; }
+.rl-hint { position: absolute; left: .6rem; bottom: .35rem; max-width: calc(100% - 19rem); margin: 0; color: var(--muted); font-size: .75rem; background: rgb(251 250 247 / .8); border-radius: 4px; padding: 0 .25rem; }
 .rl-stale canvas { opacity: .55; }
 .rl-sr-only { position: absolute !important; width: 1px; height: 1px; padding: 0; margin: -1px; overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }
-.rl-panel { flex: 0 0 24rem; max-width: 46%; overflow-y: auto; background: var(--panel); border-left: 1px solid var(--line); padding: .8rem 1rem 1.2rem; }
-.rl-stage.rl-narrow .rl-panel { flex: 1 0 auto; max-width: none; border-left: 0; border-top: 1px solid var(--line); overflow: visible; }
+.rl-panel { flex: 0 0 22rem; max-width: 46%; overflow-y: auto; background: var(--panel); border-left: 1px solid var(--line); padding: .8rem 1rem 1.2rem; }
 .rl-panel h2 { font-size: 1.05rem; margin: .2rem 0 .6rem; }
 .rl-controls { display: grid; grid-template-columns: minmax(6rem, 38%) minmax(0, 1fr); gap: .35rem .7rem; align-items: center; font-size: .9rem; }
 .rl-row { display: contents; }
+.rl-tiny .rl-controls { grid-template-columns: minmax(0, 1fr); gap: .15rem; }
+.rl-tiny .rl-row > label { padding-top: .45rem; }
+.rl-tiny .rl-row.rl-checkbox { display: flex; flex-direction: row-reverse; justify-content: flex-end; align-items: center; gap: .5rem; }
+.rl-tiny .rl-row.rl-checkbox > label { padding-top: 0; }
+.rl-tiny .rl-row.rl-checkbox > .rl-cell { flex: none; }
+.rl-view-small .rl-hint { display: none; }
 .rl-row > label { padding: .15rem 0; }
 .rl-cell { display: flex; align-items: center; gap: .4rem; flex-wrap: wrap; min-width: 0; }
 .rl-line { display: flex; align-items: center; gap: .3rem .4rem; flex: 1 1 100%; min-width: 0; flex-wrap: wrap; }
@@ -69,7 +86,9 @@ export const CSS = `
 .rl-readout dd { margin: 0; font-variant-numeric: tabular-nums; text-align: right; }
 .rl-paper { margin: .2rem 0 .9rem; padding: .55rem .75rem; border: 1px solid #d8d3c4; border-radius: 6px; background: #fffdf7; font-size: .86rem; line-height: 1.45; }
 .rl-paper[hidden] { display: none; }
-.rl-paper h3 { font-size: .95rem; margin: 0 0 .35rem; }
+.rl-paper h3 { display: inline; font-size: .95rem; margin: 0; }
+.rl-paper summary { cursor: pointer; padding: .1rem 0 .35rem; }
+.rl-paper details:not([open]) > summary { padding-bottom: .1rem; }
 .rl-paper blockquote { margin: 0 0 .45rem; padding-left: .6rem; border-left: 3px solid #8a8f99; font-style: italic; }
 .rl-paper p { margin: .35rem 0; }
 .rl-paper .rl-paper-data { color: var(--muted); }
@@ -98,7 +117,17 @@ export const CSS = `
 .rl-shortcuts table { border-collapse: collapse; font-size: .9rem; }
 .rl-shortcuts td { padding: .2rem .6rem .2rem 0; vertical-align: top; }
 .rl-shortcuts kbd { font: .85rem ui-monospace, monospace; border: 1px solid #c9c5ba; border-bottom-width: 2px; border-radius: 4px; padding: 0 .3rem; background: #fff; }
-@media (max-width: 640px) { .rl-legend { font-size: .74rem; max-width: calc(100% - 1.2rem); top: auto; bottom: 1.8rem; } .rl-hint { display: none; } }
+/* slider steppers (controls.js): − / + and a number field where the range has more values than the slider pixels */
+.rl-step { min-width: 28px; padding: 0 !important; font-weight: 600; }
+.rl-fine .rl-exact { display: inline-block; }
+/* fingers: every target at least 44 × 44 CSS px (WCAG 2.5.5); otherwise at least 24 × 24 (2.5.8) */
+@media (pointer: coarse) {
+  .rl-stage button, .rl-stage select, .rl-stage input[type=text], .rl-stage summary { min-height: 44px; min-width: 44px; }
+  .rl-stage input[type=checkbox] { width: 44px; height: 44px; }
+  .rl-stage input[type=range] { height: 44px; }
+  .rl-exact { min-height: 44px; }
+  .rl-controls { gap: .45rem .7rem; }
+}
 @media print { .rl-toolbar, .rl-hint, .rl-progress { display: none; } .rl-panel { overflow: visible; } }
 `;
 
