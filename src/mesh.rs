@@ -129,7 +129,7 @@ impl Mesh {
         if let Some((k, &i)) = indices.iter().enumerate().find(|(_, &i)| i as usize >= n) {
             return Err(Error::InvalidParameter {
                 name: "indices",
-                message: format!("index {i} at position {k} names no vertex (there are {n})"),
+                message: format!("index {i} at position {k} names no vertex (there are {n})").into(),
             });
         }
         Ok(Mesh { positions: coords.chunks_exact(3).map(DVec3::from_slice).collect(), indices: indices.to_vec() })

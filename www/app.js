@@ -12,6 +12,8 @@ import { readState, writeState, linkable } from './state.js';
 import { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
 import { adoptStyles } from './ui/css.js';
 import { appendRich } from './ui/richtext.js';
+import { describeError } from './ui/errors.js';
+import { showFailure } from './ui/failure.js';
 import { obj, segmentsText, invariantsJson, invariantsCsv } from './export/files.js';
 import { png } from './export/png.js';
 import { exportSvg } from './export/svg.js';
@@ -196,7 +198,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       got = importSegments(text);
     } catch (e) {
       importError.hidden = false;
-      importError.textContent = `${String(/** @type {any} */ (e)?.message ?? e).replace(/\.?$/, '.')} ${i18n.t('io.stale')}`;
+      importError.textContent = `${describeError(e, i18n)} ${i18n.t('io.stale')}`;
       paste.setAttribute('aria-invalid', 'true');
       paste.setAttribute('aria-describedby', importError.id);
       return;
@@ -267,9 +269,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
 /** Says, in the reader's language, that the page could not start (and why); rethrows. */
 export function showStartFailure(/** @type {unknown} */ e) {
   const box = document.getElementById('boot') ?? document.body.appendChild(document.createElement('p'));
-  box.className = 'boot boot-problem';
-  box.setAttribute('role', 'alert');
-  box.textContent = translator(pickLanguage(new URLSearchParams(location.hash.slice(1)).get('lang'))).t('boot.failed', { message: String(/** @type {any} */ (e)?.message ?? e) });
+  const i18n = translator(pickLanguage(new URLSearchParams(location.hash.slice(1)).get('lang')));
+  showFailure(box, e, i18n);
   throw e;
 }
 

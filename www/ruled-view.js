@@ -23,6 +23,9 @@ import { SCENES } from './scenes/index.js';
 import { readParams, defaults } from './scene.js';
 import { readCamera, writeCamera } from './state.js';
 import { start } from './core.js';
+import { translator, pickLanguage } from './i18n/index.js';
+import { startFailure } from './ui/errors.js';
+import { showFailure } from './ui/failure.js';
 import { PRESETS, findPreset, withPreset } from './paper.js';
 import { adoptStyles } from './ui/css.js';
 import { exportSvg } from './export/svg.js';
@@ -34,6 +37,7 @@ import { png } from './export/png.js';
 // otherwise: ui/css.js)
 const HOST_CSS = `:host { display: block; position: relative; height: 480px; min-height: 240px; overflow: hidden; contain: content; }
 :host([hidden]) { display: none; }
+.rl-failed { margin: 1rem; padding: .8rem 1rem; color: #5a1a12; background: #fff3ef; border: 1px solid #e6b2aa; border-radius: 8px; font: 15px/1.45 system-ui, sans-serif; }
 .rl-host { width: 100%; height: 100%; }`;
 
 let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
@@ -127,6 +131,20 @@ export class RuledView extends HTMLElement {
   connectedCallback() {
     if (this.stage) return;
     const lang = this.getAttribute('lang') || this.closest('[lang]')?.getAttribute('lang') || null;
+    try {
+      this.start(lang);
+    } catch (e) {
+      // no view at all (no WebGL2 here): say so inside the element, never a blank box
+      const box = Object.assign(document.createElement('p'), { className: 'rl-failed' });
+      this.container.replaceChildren(box);
+      const i18n = translator(pickLanguage(lang));
+      showFailure(box, e, i18n);
+      this.dispatchEvent(new CustomEvent('error', { detail: { message: startFailure(e, i18n).text, code: /** @type {any} */ (e)?.code ?? null, details: null } }));
+    }
+  }
+
+  /** Makes the Stage of this element. */
+  start(/** @type {string | null} */ lang) {
     this.stage = new Stage(this.container, {
       controls: this.controls,
       text: this.text,
@@ -144,9 +162,9 @@ export class RuledView extends HTMLElement {
         this.dataset.ready = '1';
         this.dispatchEvent(new CustomEvent('scene-change', { detail: { scene: this.stage.scene.id, params: { ...this.stage.params } } }));
       },
-      onError: (e) => {
+      onError: (e, message) => {
         const error = /** @type {any} */ (e);
-        this.dispatchEvent(new CustomEvent('error', { detail: { message: String(error?.message ?? error), code: error?.code ?? null } }));
+        this.dispatchEvent(new CustomEvent('error', { detail: { message, code: error?.code ?? null, details: error?.details ?? null } }));
       },
     });
     this.stage.viewer.onFrame = (n) => (this.dataset.frames = String(n));
@@ -193,12 +211,12 @@ export class RuledView extends HTMLElement {
           const { t } = stage.i18n;
           const scene = SCENES.find((s) => s.id === this.scene);
           if (!scene) {
-            stage.fail(Object.assign(new Error(t('element.unknownScene', { scene: this.scene, known: SCENES.map((s) => s.id).join(', ') })), { code: 'invalid-argument', details: { option: 'scene' } }));
+            stage.fail(Object.assign(new Error(t('element.unknownScene', { scene: this.scene, known: SCENES.map((s) => s.id).join(', ') })), { code: 'invalid-argument', details: { option: 'scene' }, localized: true }));
             return;
           }
           const preset = findPreset(this.paper);
           if (this.paper && !preset) {
-            stage.fail(Object.assign(new Error(t('element.unknownPaper', { paper: this.paper, known: PRESETS.map((p) => p.id).join(', ') })), { code: 'invalid-argument', details: { option: 'paper' } }));
+            stage.fail(Object.assign(new Error(t('element.unknownPaper', { paper: this.paper, known: PRESETS.map((p) => p.id).join(', ') })), { code: 'invalid-argument', details: { option: 'paper' }, localized: true }));
             return;
           }
           const paper = preset && preset.scene === scene.id ? preset : null;
@@ -208,7 +226,10 @@ export class RuledView extends HTMLElement {
           if (this.hasAttribute('camera') && !camera) notes.push({ key: 'camera', note: 'element.badCamera' });
           return stage.open(scene, { ...defaults(scene), ...params }, { data: this._data, notes, autoplay: this.autoplay, paper, camera });
         },
-        (e) => stage.fail(e),
+        (e) => {
+          // the core did not start: why, in the element's language
+          stage.fail(Object.assign(new Error(startFailure(e, stage.i18n).text), { code: /** @type {any} */ (e)?.code, localized: true }));
+        },
       )
       .catch(() => {});
     return this.opening;

@@ -49,6 +49,7 @@
  * @typedef {object} Context
  * @property {(key: string, vars?: Record<string, string | number>) => string} t
  * @property {(x: number | string | boolean | null | undefined) => string} format
+ * @property {string} [lang]         the view's language ("en", "de"): formulas take decimal commas in German
  * @property {ImportedData} [data]   your own segments (the "data" scene)
  * @property {(segments: Float64Array, options: import('../pkg/ruledlab.js').SubdivideOptions, onProgress: (f: number) => void, draw?: number) => Promise<{segments: Float32Array, rulings: number, drawn: number}>} [refine]
  *   refinement in a Web Worker, for large models (at most `draw` rulings come back: every k-th)

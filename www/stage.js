@@ -11,8 +11,9 @@ import { translator, pickLanguage } from './i18n/index.js';
 import { buildControls } from './ui/controls.js';
 import { showLegend } from './ui/legend.js';
 import { showReadout, showClaims, readoutSentence } from './ui/readout.js';
+import { describeError } from './ui/errors.js';
 import { Player } from './ui/player.js';
-import { appendRich } from './ui/richtext.js';
+import { appendRich, plainRich } from './ui/richtext.js';
 import { refineInWorker } from './compute.js';
 import { atPreset } from './paper.js';
 import { canFullscreen } from './platform.js';
@@ -35,7 +36,7 @@ const ANNOUNCE_EVERY = 1000;
  * @property {string | null} [lang]
  * @property {boolean} [page]       the stage is the page's (the page scrolls; a narrow view stays at the top of the screen)
  * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset', ended: boolean}) => void} [onChange]
- * @property {(error: unknown) => void} [onError]
+ * @property {(error: unknown, message: string) => void} [onError]   with the sentence shown
  * @property {(built: import('./scene.js').Built) => void} [onBuilt]
  */
 
@@ -287,7 +288,7 @@ export class Stage {
   /** Recomputes the scene for the current parameters. */
   compute({ fit = false } = {}) {
     if (!this.scene) return;
-    const context = { t: this.i18n.t, format: this.i18n.format, data: this.data ?? undefined, refine: refineInWorker };
+    const context = { t: this.i18n.t, format: this.i18n.format, lang: this.i18n.lang, data: this.data ?? undefined, refine: refineInWorker };
     const built = this.session.show(this.scene, this.params, context, { fit });
     this.root.classList.toggle('rl-stale', !built);
     if (built) this.error.hidden = true;
@@ -374,15 +375,31 @@ export class Stage {
     this.options.onBuilt?.(built);
   }
 
-  /** Shows an error in the view (and next to the control it concerns); the last picture stays. */
+  /**
+   * Shows an error in the view (and next to the control it concerns), in the view's language;
+   * the last picture stays. Returns the sentence shown.
+   */
   fail(/** @type {unknown} */ e) {
     const error = /** @type {any} */ (e);
-    const message = String(error?.message ?? error);
+    const option = error?.details?.option;
+    const key = this.scene && option ? this.scene.fieldOf?.(option) : null;
+    // named as the page names it: the option's own name ("the interval of u"), else the field's
+    const { t, has } = this.i18n;
+    const name = option && has(`error.option.${option}`) ? t(`error.option.${option}`) : key ? this.fieldName(key) : undefined;
+    const message = describeError(e, this.i18n, name);
     this.error.hidden = false;
     this.error.textContent = message;
-    const key = this.scene && error?.details?.option ? this.scene.fieldOf?.(error.details.option) : null;
     if (key) this.controls?.invalid(key, message);
-    this.options.onError?.(e);
+    this.options.onError?.(e, message);
+    return message;
+  }
+
+  /** The name of the field of parameter `key` in messages ("the z component of e(u)"), or its label. */
+  fieldName(/** @type {string} */ key) {
+    const p = this.param(key);
+    if (!p) return key;
+    const { t, has } = this.i18n;
+    return has(`${p.label}.field`) ? t(`${p.label}.field`) : plainRich(t(p.label));
   }
 
   /** Notes about link values that were not used. */

@@ -68,7 +68,7 @@ impl LineCongruence {
             if (pq[1] - pq[0]).length_squared() <= rel2 * pq[0].length_squared().max(pq[1].length_squared()) {
                 return Err(Error::degenerate(
                     "coords",
-                    format!("line ({}, {}) has zero length (p = q), so it has no direction", k / cols, k % cols),
+                    crate::msg!("line-zero-length", row = k / cols, col = k % cols),
                 ));
             }
         }

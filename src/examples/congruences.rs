@@ -14,7 +14,7 @@
 //! exact partial derivatives p_u, p_v, d_u, d_v ([`CongruenceJet`]), which the focal geometry
 //! of a congruence needs.
 
-use super::formula_surface::{check_interval, check_parameters, parse_vector, short};
+use super::formula_surface::{check_interval, check_parameters, parse_vector, six};
 use crate::congruence::LineCongruence;
 use crate::error::{Error, Result};
 use crate::formula::dual::Dual;
@@ -93,7 +93,7 @@ impl FormulaCongruence {
         check_parameters(&spec.parameters)?;
         for (name, n) in [("rows", spec.grid.0), ("cols", spec.grid.1)] {
             if !(2..=1000).contains(&n) {
-                return Err(Error::parameter(name, format!("must be an integer from 2 to 1000, got {n}")));
+                return Err(Error::parameter(name, crate::msg!("grid-size", min = 2usize, max = 1000usize, value = n)));
             }
         }
         let c = FormulaCongruence {
@@ -139,13 +139,13 @@ impl FormulaCongruence {
     /// [`FormulaCongruence::jet`], refused where a value or derivative is not finite or e = 0.
     pub fn checked_jet(&self, u: f64, v: f64) -> Result<CongruenceJet> {
         let jet = self.jet(u, v);
-        let at = || format!("(u, v) = ({}, {})", short(u), short(v));
         for (field, value, slopes) in [("p", jet.p, [jet.p_u, jet.p_v]), ("e", jet.d, [jet.d_u, jet.d_v])] {
             for k in 0..3 {
                 if !value[k].is_finite() || value[k].abs() > MAX_COORD {
                     return Err(Error::NotFiniteAt {
                         what: format!("{field}[{k}]"),
-                        at: at(),
+                        u: six(u),
+                        v: Some(six(v)),
                         value: value[k],
                         derivative: false,
                     });
@@ -153,7 +153,8 @@ impl FormulaCongruence {
                 if let Some(bad) = slopes.iter().map(|s| s[k]).find(|x| !x.is_finite()) {
                     return Err(Error::NotFiniteAt {
                         what: format!("{field}[{k}]"),
-                        at: at(),
+                        u: six(u),
+                        v: Some(six(v)),
                         value: bad,
                         derivative: true,
                     });
@@ -168,10 +169,7 @@ impl FormulaCongruence {
 }
 
 fn vanishing(u: f64, v: f64) -> Error {
-    Error::degenerate(
-        "e",
-        format!("e(u, v) vanishes at (u, v) = ({}, {}), so the line there has no direction", short(u), short(v)),
-    )
+    Error::degenerate("e", crate::msg!("direction-vanishes-uv", u = six(u), v = six(v)))
 }
 
 /// The congruences of the paper's examples, and congruences typed as formulas.

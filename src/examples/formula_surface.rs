@@ -10,7 +10,7 @@
 //! naming the formula and the parameter, never drawn as NaN.
 
 use super::surfaces::{Jet, Ranges};
-use crate::error::{Error, Result};
+use crate::error::{Error, Message, Result};
 use crate::formula::dual::Dual;
 use crate::formula::{Formula, PARAMETERS};
 use crate::tolerance::{FORMULA_PROBES, FORMULA_ZERO_DIRECTION, MAX_COORD};
@@ -45,11 +45,11 @@ pub struct FormulaSurface {
 /// Checks a parameter interval: finite ends, `lo < hi` (or `lo ≠ hi` when `distinct` suffices).
 pub(crate) fn check_interval(name: &'static str, (lo, hi): (f64, f64), distinct: bool) -> Result<()> {
     if !(lo.is_finite() && hi.is_finite()) || lo.abs() > MAX_COORD || hi.abs() > MAX_COORD {
-        return Err(Error::parameter(name, format!("needs two finite numbers, got [{lo}, {hi}]")));
+        return Err(Error::parameter(name, crate::msg!("interval-not-finite", lo = lo, hi = hi)));
     }
     if (distinct && lo == hi) || (!distinct && lo >= hi) {
-        let need = if distinct { "different numbers" } else { "min < max" };
-        return Err(Error::parameter(name, format!("needs {need}, got [{lo}, {hi}]")));
+        let reason = if distinct { "interval-equal" } else { "interval-order" };
+        return Err(Error::parameter(name, Message::new(reason).with("lo", lo).with("hi", hi)));
     }
     Ok(())
 }
@@ -58,7 +58,7 @@ pub(crate) fn check_interval(name: &'static str, (lo, hi): (f64, f64), distinct:
 pub(crate) fn check_parameters(values: &[f64; 3]) -> Result<()> {
     for (name, &x) in PARAMETERS.iter().zip(values) {
         if !x.is_finite() || x.abs() > MAX_COORD {
-            return Err(Error::parameter("parameters", format!("{name} must be a finite number, got {x}")));
+            return Err(Error::parameter("parameters", crate::msg!("parameter-not-finite", name = *name, value = x)));
         }
     }
     Ok(())
@@ -142,7 +142,8 @@ impl FormulaSurface {
                 if !value[k].is_finite() || value[k].abs() > MAX_COORD {
                     return Err(Error::NotFiniteAt {
                         what: format!("{field}[{k}]"),
-                        at: format!("u = {}", short(u)),
+                        u: six(u),
+                        v: None,
                         value: value[k],
                         derivative: false,
                     });
@@ -150,7 +151,8 @@ impl FormulaSurface {
                 if !slope[k].is_finite() {
                     return Err(Error::NotFiniteAt {
                         what: format!("{field}[{k}]"),
-                        at: format!("u = {}", short(u)),
+                        u: six(u),
+                        v: None,
                         value: slope[k],
                         derivative: true,
                     });
@@ -165,7 +167,12 @@ impl FormulaSurface {
 }
 
 fn vanishing(u: f64) -> Error {
-    Error::degenerate("e", format!("e(u) vanishes at u = {}, so the ruling there has no direction", short(u)))
+    Error::degenerate("e", crate::msg!("direction-vanishes-u", u = six(u)))
+}
+
+/// A parameter value for messages, rounded to 6 significant digits (as [`short`] writes it).
+pub(crate) fn six(x: f64) -> f64 {
+    short(x).parse().unwrap_or(x)
 }
 
 /// A parameter value for messages: 6 significant digits.

@@ -7,7 +7,8 @@
 //! passes this check is exactly the grammar of [`crate::formula`], so the tree it builds holds
 //! nothing else, and the checker's messages are the ones a student sees.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Message, Result};
+use crate::msg;
 use crate::tolerance::{MAX_FORMULA_CHARS, MAX_FORMULA_DEPTH};
 
 /// Functions of one argument.
@@ -43,9 +44,9 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
             column: None,
         });
     }
-    let fail = |column: usize, message: String| Error::parse(source, None, Some(column + 1), message);
+    let fail = |column: usize, message: Message| Error::parse(source, None, Some(column + 1), message);
     if chars.iter().all(|c| c.is_whitespace()) {
-        return Err(Error::parse(source, None, None, "is empty; write a formula such as cos(u)"));
+        return Err(Error::parse(source, None, None, msg!("formula-empty")));
     }
     let known = || {
         let mut names: Vec<&str> = variables.to_vec();
@@ -66,11 +67,11 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
             let start = i;
             i = number_end(&chars, i);
             if !expect_operand {
-                return Err(fail(start, "missing operator before this number (write * for products)".into()));
+                return Err(fail(start, msg!("operator-before-number")));
             }
             if let Some(&next) = chars.get(i).filter(|n| n.is_ascii_alphabetic() || **n == '_') {
                 let number: String = chars[start..i].iter().collect();
-                return Err(fail(start, format!("write {number}*{next}…, not {number}{next}… (products need *)")));
+                return Err(fail(start, msg!("number-before-name", number = number, next = next)));
             }
             expect_operand = false;
             signs = 0;
@@ -84,7 +85,7 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
             }
             let name: String = chars[start..i].iter().collect();
             if !expect_operand {
-                return Err(fail(start, format!("missing operator before \"{name}\" (write * for products)")));
+                return Err(fail(start, msg!("operator-before-name", name = name)));
             }
             let mut next = i;
             while next < chars.len() && chars[next].is_whitespace() {
@@ -94,7 +95,7 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
             let is_function = FUNCTIONS.contains(&name.as_str()) || FUNCTIONS2.contains(&name.as_str());
             if is_function {
                 if !call {
-                    return Err(fail(start, format!("{name} needs its argument in parentheses: {name}(…)")));
+                    return Err(fail(start, msg!("function-needs-parentheses", name = name)));
                 }
                 // the "(" that follows opens the argument list
                 mark_filled(&mut open);
@@ -114,24 +115,24 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
             }
             if variables.contains(&name.as_str()) || CONSTANTS.contains(&name.as_str()) {
                 if call {
-                    return Err(fail(start, format!("\"{name}\" is not a function; write {name}*(…) for a product")));
+                    return Err(fail(start, msg!("not-a-function", name = name)));
                 }
                 expect_operand = false;
                 mark_filled(&mut open);
                 continue;
             }
             return Err(if call {
-                fail(start, format!("unknown function \"{name}\""))
-                    .with_hint(format!("known: {}, atan2", FUNCTIONS.join(", ")))
+                fail(start, msg!("unknown-function", name = name))
+                    .with_hint(msg!("known-names", names = format!("{}, atan2", FUNCTIONS.join(", "))))
             } else {
-                fail(start, format!("unknown name \"{name}\"")).with_hint(format!("known: {}", known()))
+                fail(start, msg!("unknown-name", name = name)).with_hint(msg!("known-names", names = known()))
             });
         }
         match c {
             '(' => {
                 signs = 0;
                 if !expect_operand {
-                    return Err(fail(i, "missing operator before \"(\" (write * for products)".into()));
+                    return Err(fail(i, msg!("operator-before-parenthesis")));
                 }
                 mark_filled(&mut open);
                 open.push(Open { column: i, two_arguments: false, commas: 0, empty: true });
@@ -141,28 +142,26 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
             }
             ')' => {
                 let Some(top) = open.pop() else {
-                    return Err(fail(i, "\")\" without a matching \"(\"".into()));
+                    return Err(fail(i, msg!("unmatched-close")));
                 };
                 if top.empty {
-                    return Err(fail(top.column, "empty parentheses".into()));
+                    return Err(fail(top.column, msg!("empty-parentheses")));
                 }
                 if expect_operand {
-                    return Err(fail(i, "an operand is missing before \")\"".into()));
+                    return Err(fail(i, msg!("operand-before", sign = ')')));
                 }
                 if top.two_arguments && top.commas != 1 {
-                    return Err(fail(top.column, "atan2 takes two arguments: atan2(y, x)".into()));
+                    return Err(fail(top.column, msg!("atan2-arguments")));
                 }
                 expect_operand = false;
             }
             ',' => {
                 match open.last_mut() {
                     Some(top) if top.two_arguments && top.commas == 0 => top.commas = 1,
-                    _ => {
-                        return Err(fail(i, "a comma is allowed only between the two arguments of atan2(y, x)".into()))
-                    }
+                    _ => return Err(fail(i, msg!("comma-outside-atan2"))),
                 }
                 if expect_operand {
-                    return Err(fail(i, "an operand is missing before \",\"".into()));
+                    return Err(fail(i, msg!("operand-before", sign = ',')));
                 }
                 expect_operand = true;
             }
@@ -172,7 +171,7 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
                 if expect_operand {
                     signs += 1;
                     if signs > MAX_SIGNS {
-                        return Err(fail(i, format!("more than {MAX_SIGNS} signs in a row")));
+                        return Err(fail(i, msg!("too-many-signs", max = MAX_SIGNS)));
                     }
                 } else {
                     signs = 0;
@@ -182,12 +181,12 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
             '*' | '/' | '^' => {
                 signs = 0;
                 if expect_operand {
-                    let hint = match (chars.get(i.wrapping_sub(1)), c) {
-                        (Some('*'), '*') => " (write ^ for powers)",
-                        (Some('/'), '/' | '*') => " (comments are not part of formulas)",
-                        _ => "",
+                    let reason = match (chars.get(i.wrapping_sub(1)), c) {
+                        (Some('*'), '*') => "operand-left-power",
+                        (Some('/'), '/' | '*') => "operand-left-comment",
+                        _ => "operand-left",
                     };
-                    return Err(fail(i, format!("\"{c}\" needs an operand on its left{hint}")));
+                    return Err(fail(i, Message::new(reason).with("sign", c)));
                 }
                 expect_operand = true;
             }
@@ -196,12 +195,80 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
         i += 1;
     }
     if let Some(top) = open.last() {
-        return Err(fail(top.column, "\"(\" is never closed".into()));
+        return Err(fail(top.column, msg!("never-closed")));
     }
     if expect_operand {
-        return Err(fail(chars.len(), "the formula ends where an operand is expected".into()));
+        return Err(fail(chars.len(), msg!("ends-expecting-operand")));
     }
     Ok(())
+}
+
+/// A formula written with decimal commas, as German readers write numbers, in the grammar's
+/// spelling: a comma between two digits becomes a point ("0,5*u" → "0.5*u", columns
+/// unchanged) unless it stands in the argument list of atan2, where it could as well separate
+/// the two arguments ("atan2(1,5)"): that one is refused with the two ways to write it. Other
+/// commas stay (the argument separator of atan2 is ", ").
+pub fn decimal_commas(source: &str, text: &str) -> Result<String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = chars.clone();
+    // per open parenthesis: whether it holds the arguments of a function of two arguments
+    let mut open: Vec<bool> = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let c = chars[i];
+        if c.is_ascii_alphabetic() || c == '_' {
+            let start = i;
+            while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
+                i += 1;
+            }
+            let name: String = chars[start..i].iter().collect();
+            let mut next = i;
+            while next < chars.len() && chars[next].is_whitespace() {
+                next += 1;
+            }
+            if chars.get(next) == Some(&'(') {
+                open.push(FUNCTIONS2.contains(&name.as_str()));
+                i = next + 1;
+            }
+            continue;
+        }
+        match c {
+            '(' => open.push(false),
+            ')' => {
+                open.pop();
+            }
+            ',' if i > 0 && chars[i - 1].is_ascii_digit() && chars.get(i + 1).is_some_and(char::is_ascii_digit) => {
+                if open.last() == Some(&true) {
+                    let number = |k: usize| chars[k].is_ascii_digit() || chars[k] == '.';
+                    let mut a = i;
+                    while a > 0 && number(a - 1) {
+                        a -= 1;
+                    }
+                    let mut b = i + 1;
+                    while b < chars.len() && number(b) {
+                        b += 1;
+                    }
+                    let (left, right): (String, String) =
+                        (chars[a..i].iter().collect(), chars[i + 1..b].iter().collect());
+                    return Err(Error::parse(
+                        source,
+                        None,
+                        Some(i + 1),
+                        msg!(
+                            "ambiguous-comma",
+                            text = format!("{left},{right}"),
+                            point = format!("{left}.{right}"),
+                            spaced = format!("{left}, {right}")
+                        ),
+                    ));
+                }
+                out[i] = '.';
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    Ok(out.into_iter().collect())
 }
 
 /// Marks the innermost parenthesis as holding something.
@@ -247,18 +314,20 @@ fn number_end(chars: &[char], mut i: usize) -> usize {
 }
 
 /// A message for a character outside the grammar, with the ASCII spelling of common lookalikes.
-fn unexpected(c: char) -> String {
+fn unexpected(c: char) -> Message {
     let hint = match c {
-        'π' => "write pi",
-        '²' => "write ^2",
-        '³' => "write ^3",
-        '×' | '·' | '⋅' => "write * for products",
-        '−' | '–' => "write - (the ASCII minus)",
-        '÷' | ':' => "write / for quotients",
-        '[' | ']' | '{' | '}' => "use round parentheses",
-        _ => "formulas use numbers, names, + - * / ^, parentheses and commas",
+        'π' => "hint-pi",
+        '²' => "hint-square",
+        '³' => "hint-cube",
+        '×' | '·' | '⋅' => "hint-times",
+        '−' | '–' => "hint-minus",
+        '÷' | ':' => "hint-divide",
+        '[' | ']' | '{' | '}' => "hint-brackets",
+        _ => "hint-grammar",
     };
-    format!("unexpected character \"{c}\" ({hint})")
+    // the hint is part of the sentence: its English here, its reason for other languages
+    let text = Message::new(hint).english();
+    msg!("unexpected-character", char = c, hint = text, hintReason = hint)
 }
 
 #[cfg(test)]
@@ -267,6 +336,25 @@ mod tests {
 
     fn message(text: &str) -> String {
         check("a[1]", text, &["u", "a", "b"]).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn decimal_commas_are_points_outside_the_arguments_of_atan2() {
+        let d = |t: &str| decimal_commas("e[0]", t);
+        assert_eq!(d("0,5*u").unwrap(), "0.5*u");
+        assert_eq!(d("sin(1,25*u) - 3,0").unwrap(), "sin(1.25*u) - 3.0");
+        assert_eq!(d("atan2(sin(0,5*u), 1)").unwrap(), "atan2(sin(0.5*u), 1)");
+        assert_eq!(d("atan2(u, 1)").unwrap(), "atan2(u, 1)");
+        // a comma that is no decimal comma stays (and the checker speaks of it)
+        assert_eq!(d("u,").unwrap(), "u,");
+        let e = d("atan2(1,5)").unwrap_err();
+        assert_eq!(e.code(), "parse-error");
+        assert_eq!(e.details().column, Some(8));
+        assert_eq!(
+            e.to_string(),
+            "e[0]: \"1,5\" could be two arguments or a decimal comma: write 1.5 for the number, or \"1, 5\" (a space after the comma) for two arguments at column 8"
+        );
+        assert!(d("atan2(0,5 , 2)").is_err());
     }
 
     #[test]

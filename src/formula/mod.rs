@@ -38,7 +38,7 @@ impl Formula {
     pub fn parse(source: &str, text: &str, variables: &[&str]) -> Result<Self> {
         check::check(source, text, variables)?;
         let tree = evalexpr::build_operator_tree::<evalexpr::DefaultNumericTypes>(text)
-            .map_err(|e| Error::parse(source, None, None, format!("cannot be read ({e})")))?;
+            .map_err(|e| Error::parse(source, None, None, crate::msg!("unreadable", detail = e.to_string())))?;
         let program = Program::compile(source, &tree, variables)?;
         Ok(Formula { text: text.to_string(), program })
     }

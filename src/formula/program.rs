@@ -191,7 +191,7 @@ fn emit<'a>(source: &str, tree: &'a Node, variables: &[&str], ops: &mut Vec<Op>)
         };
         let children = node.children();
         let unsupported =
-            || Error::parse(source, None, None, format!("\"{}\" is not part of formulas", node.operator()));
+            || Error::parse(source, None, None, crate::msg!("not-in-formulas", operator = node.operator().to_string()));
         // operands are pushed last-first, so the first is visited (and emitted) first
         let mut then = |op: Op, operands: &[&'a Node]| {
             work.push(Work::Emit(op));
@@ -206,9 +206,8 @@ fn emit<'a>(source: &str, tree: &'a Node, variables: &[&str], ops: &mut Vec<Op>)
             (Operator::Exp, [x, y]) => {
                 // evalexpr reads a^b^c as (a^b)^c, mathematics as a^(b^c): ask for parentheses
                 if matches!(x.operator(), Operator::Exp) {
-                    return Err(
-                        Error::parse(source, None, None, "a^b^c is ambiguous").with_hint("write (a^b)^c or a^(b^c)")
-                    );
+                    return Err(Error::parse(source, None, None, crate::msg!("ambiguous-power"))
+                        .with_hint(crate::msg!("power-parentheses")));
                 }
                 then(Op::Pow, &[x, y]);
             }
@@ -235,7 +234,7 @@ fn emit<'a>(source: &str, tree: &'a Node, variables: &[&str], ops: &mut Vec<Op>)
                     inner = &inner.children()[0];
                 }
                 let (Operator::Tuple, [y, x]) = (inner.operator(), inner.children()) else {
-                    return Err(Error::parse(source, None, None, "atan2 takes two arguments: atan2(y, x)"));
+                    return Err(Error::parse(source, None, None, crate::msg!("atan2-arguments")));
                 };
                 then(Op::Atan2, &[y, x]);
             }

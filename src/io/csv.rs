@@ -4,11 +4,12 @@
 //! and lines starting with `#` are ignored.
 
 use super::{classify, rust_number, Imported, NumberParser, Token, MAX_TEXT};
-use crate::error::{Error, Result};
+use crate::error::{Error, Message, Result};
+use crate::msg;
 use crate::tolerance::MAX_RULINGS;
 
-fn fail(line: usize, column: usize, message: impl std::fmt::Display) -> Error {
-    Error::parse("csv", Some(line), Some(column), message.to_string())
+fn fail(line: usize, column: usize, message: Message) -> Error {
+    Error::parse("csv", Some(line), Some(column), message)
 }
 
 /// Parses CSV text into flat coordinates.
@@ -51,18 +52,14 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
         header_allowed = false;
         for (&(col, f), kind) in fields.iter().zip(&kinds) {
             match kind {
-                Token::Invalid => return Err(fail(line, col, format!("\"{f}\" is not a number"))),
-                Token::NonFinite => return Err(fail(line, col, format!("{f} is not a finite number"))),
+                Token::Invalid => return Err(fail(line, col, msg!("not-a-number", text = f))),
+                Token::NonFinite => return Err(fail(line, col, msg!("not-finite-number", text = f))),
                 Token::Number => {}
             }
         }
         if fields.len() != 6 {
             let col = fields.get(6).map_or(raw.chars().count() + 1, |f| f.0);
-            return Err(fail(
-                line,
-                col,
-                format!("expected 6 numbers (a.x a.y a.z b.x b.y b.z), found {}", fields.len()),
-            ));
+            return Err(fail(line, col, msg!("csv-six-numbers", found = fields.len())));
         }
         if coords.len() / 6 >= MAX_RULINGS {
             return Err(Error::TooMany { what: "rulings in the CSV", got: coords.len() / 6 + 1, max: MAX_RULINGS });
@@ -70,13 +67,13 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
         for &(col, f) in &fields {
             let x = number(f);
             if !x.is_finite() {
-                return Err(fail(line, col, format!("{f} is not a finite number")));
+                return Err(fail(line, col, msg!("not-finite-number", text = f)));
             }
             coords.push(x);
         }
     }
     if coords.is_empty() {
-        return Err(Error::parse("csv", None, None, "no data lines (6 numbers each) found"));
+        return Err(Error::parse("csv", None, None, msg!("csv-no-data")));
     }
     Ok(Imported { coords, grid: None })
 }

@@ -9,7 +9,8 @@
 //! exhaust the stack) reports the line and column of any problem.
 
 use super::{classify, position, rust_number, Imported, NumberParser, Token, MAX_TEXT};
-use crate::error::{Error, Result};
+use crate::error::{Error, Message, Result};
+use crate::msg;
 use crate::tolerance::MAX_RULINGS;
 
 const MAX_DEPTH: usize = 16;
@@ -33,9 +34,9 @@ struct Parser<'a> {
 }
 
 impl<'a> Parser<'a> {
-    fn fail(&self, at: usize, message: impl std::fmt::Display) -> Error {
+    fn fail(&self, at: usize, message: Message) -> Error {
         let (line, column) = position(self.text, at);
-        Error::parse("json", Some(line), Some(column), message.to_string())
+        Error::parse("json", Some(line), Some(column), message)
     }
 
     fn skip_space(&mut self) {
@@ -48,9 +49,9 @@ impl<'a> Parser<'a> {
         self.skip_space();
         let start = self.at;
         if depth > MAX_DEPTH {
-            return Err(self.fail(start, format!("nested deeper than {MAX_DEPTH} levels")));
+            return Err(self.fail(start, msg!("json-too-deep", max = MAX_DEPTH)));
         }
-        let Some(&c) = self.bytes.get(self.at) else { return Err(self.fail(start, "unexpected end of the text")) };
+        let Some(&c) = self.bytes.get(self.at) else { return Err(self.fail(start, msg!("json-end"))) };
         let v = match c {
             b'[' => {
                 self.at += 1;
@@ -68,7 +69,7 @@ impl<'a> Parser<'a> {
                                 self.at += 1;
                                 break;
                             }
-                            _ => return Err(self.fail(self.at, "expected , or ] in an array")),
+                            _ => return Err(self.fail(self.at, msg!("json-array-separator"))),
                         }
                     }
                 }
@@ -85,11 +86,11 @@ impl<'a> Parser<'a> {
                         self.skip_space();
                         let key_at = self.at;
                         let Value::String(key) = self.value(depth + 1)?.1 else {
-                            return Err(self.fail(key_at, "expected a string key"));
+                            return Err(self.fail(key_at, msg!("json-string-key")));
                         };
                         self.skip_space();
                         if self.bytes.get(self.at) != Some(&b':') {
-                            return Err(self.fail(self.at, "expected : after a key"));
+                            return Err(self.fail(self.at, msg!("json-colon")));
                         }
                         self.at += 1;
                         let (at, v) = self.value(depth + 1)?;
@@ -101,7 +102,7 @@ impl<'a> Parser<'a> {
                                 self.at += 1;
                                 break;
                             }
-                            _ => return Err(self.fail(self.at, "expected , or } in an object")),
+                            _ => return Err(self.fail(self.at, msg!("json-object-separator"))),
                         }
                     }
                 }
@@ -114,7 +115,7 @@ impl<'a> Parser<'a> {
                     self.at += if self.bytes[self.at] == b'\\' { 2 } else { 1 };
                 }
                 if self.at >= self.bytes.len() {
-                    return Err(self.fail(start, "unterminated string"));
+                    return Err(self.fail(start, msg!("json-unterminated")));
                 }
                 let s = self.text.get(begin..self.at).unwrap_or("").to_string();
                 self.at += 1;
@@ -127,7 +128,7 @@ impl<'a> Parser<'a> {
                         return Ok((start, if word == "null" { Value::Null } else { Value::Bool }));
                     }
                 }
-                return Err(self.fail(start, "unexpected word"));
+                return Err(self.fail(start, msg!("json-word")));
             }
             b'-' | b'0'..=b'9' => {
                 while self.at < self.bytes.len()
@@ -137,11 +138,11 @@ impl<'a> Parser<'a> {
                 }
                 let token = &self.text[start..self.at];
                 if classify(token) != Token::Number {
-                    return Err(self.fail(start, format!("\"{token}\" is not a number")));
+                    return Err(self.fail(start, msg!("not-a-number", text = token)));
                 }
                 let x = (self.number)(token);
                 if !x.is_finite() {
-                    return Err(self.fail(start, format!("{token} is not a finite number")));
+                    return Err(self.fail(start, msg!("not-finite-number", text = token)));
                 }
                 self.numbers += 1;
                 if self.numbers > 6 * MAX_RULINGS {
@@ -155,7 +156,7 @@ impl<'a> Parser<'a> {
             }
             _ => {
                 let c = self.text[start..].chars().next().unwrap_or(' ');
-                return Err(self.fail(start, format!("unexpected character '{c}'")));
+                return Err(self.fail(start, msg!("json-character", char = c)));
             }
         };
         Ok((start, v))
@@ -176,13 +177,13 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
     let (at, root) = p.value(0)?;
     p.skip_space();
     if p.at < text.len() {
-        return Err(p.fail(p.at, "unexpected text after the JSON value"));
+        return Err(p.fail(p.at, msg!("json-trailing")));
     }
     let (segments_at, segments, grid) = match root {
         Value::Object(fields) => {
             let find = |k: &str| fields.iter().find(|f| f.0 == k);
             let Some((_, s_at, s)) = find("segments") else {
-                return Err(p.fail(at, "an object needs a \"segments\" array"));
+                return Err(p.fail(at, msg!("json-segments-missing")));
             };
             let dim = |k: &str| -> Result<Option<usize>> {
                 match find(k) {
@@ -190,20 +191,20 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
                     Some((_, a, Value::Number(x))) if x.fract() == 0.0 && *x >= 2.0 && *x <= MAX_RULINGS as f64 => {
                         Ok(Some(*x as usize))
                     }
-                    Some((_, a, _)) => Err(p.fail(*a, format!("\"{k}\" must be an integer from 2 to {MAX_RULINGS}"))),
+                    Some((_, a, _)) => Err(p.fail(*a, msg!("json-grid-integer", key = k, max = MAX_RULINGS))),
                 }
             };
             let grid = match (dim("rows")?, dim("cols")?) {
                 (Some(r), Some(c)) => Some((r, c)),
                 (None, None) => None,
-                _ => return Err(p.fail(at, "give both \"rows\" and \"cols\", or neither")),
+                _ => return Err(p.fail(at, msg!("json-rows-and-cols"))),
             };
             (*s_at, s.clone(), grid)
         }
         other => (at, other, None),
     };
     let Value::Array(items) = segments else {
-        return Err(p.fail(segments_at, "segments must be an array"));
+        return Err(p.fail(segments_at, msg!("json-segments-array")));
     };
     let mut coords = Vec::with_capacity(items.len().min(6 * MAX_RULINGS));
     let nested = matches!(items.first(), Some((_, Value::Array(_))));
@@ -212,27 +213,25 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
             (false, Value::Number(x)) => coords.push(*x),
             (true, Value::Array(row)) => {
                 if row.len() != 6 {
-                    return Err(p.fail(*item_at, format!("a segment needs 6 numbers, found {}", row.len())));
+                    return Err(p.fail(*item_at, msg!("json-segment-six", found = row.len())));
                 }
                 for (a, v) in row {
                     match v {
                         Value::Number(x) => coords.push(*x),
-                        _ => return Err(p.fail(*a, "expected a number")),
+                        _ => return Err(p.fail(*a, msg!("json-number"))),
                     }
                 }
             }
-            (true, _) => return Err(p.fail(*item_at, "expected [ax, ay, az, bx, by, bz]")),
-            (false, _) => return Err(p.fail(*item_at, "expected a number")),
+            (true, _) => return Err(p.fail(*item_at, msg!("json-segment"))),
+            (false, _) => return Err(p.fail(*item_at, msg!("json-number"))),
         }
     }
     if coords.len() % 6 != 0 {
-        return Err(
-            p.fail(segments_at, format!("{} numbers are not a whole number of segments (6 each)", coords.len()))
-        );
+        return Err(p.fail(segments_at, msg!("json-whole-segments", count = coords.len())));
     }
     if let Some((r, c)) = grid {
         if r * c * 6 != coords.len() {
-            return Err(p.fail(at, format!("a {r} × {c} grid needs {} segments, found {}", r * c, coords.len() / 6)));
+            return Err(p.fail(at, msg!("json-grid-count", rows = r, cols = c, need = r * c, found = coords.len() / 6)));
         }
     }
     Ok(Imported { coords, grid })

@@ -90,7 +90,7 @@ pub fn study(surface: &AnalyticSurface, u: f64, h0: f64, levels: usize) -> Resul
         let (rm, r0, rp) = (surface.line(u - h), surface.line(u), surface.line(u + h));
         let (prev, next) = (PairInvariants::of(&rm, &r0), PairInvariants::of(&r0, &rp));
         let (Some((_, f_back)), Some((f_fwd, f_next)), Some(n)) = (prev.feet, next.feet, next.normal) else {
-            return Err(Error::degenerate("h0", format!("rulings at step {h} are parallel")));
+            return Err(Error::degenerate("h0", crate::msg!("parallel-at-step", h = h)));
         };
         let s_mid = surface.striction(u + h / 2.0).unwrap_or(s);
         let values = [

@@ -43,10 +43,7 @@ impl DualLine {
     pub fn normalized(real: DVec3, dual: DVec3) -> Result<Self> {
         let n = real.length();
         if n.is_nan() || n <= 1e-9 {
-            return Err(Error::degenerate(
-                "lines",
-                "a refined line has no direction: the weights cancel opposite lines",
-            ));
+            return Err(Error::degenerate("lines", crate::msg!("lines-cancel")));
         }
         Ok(DualLine { real: real / n, dual: dual / n - real * (real.dot(dual) / (n * n * n)) })
     }

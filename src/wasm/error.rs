@@ -1,8 +1,10 @@
 //! Errors thrown to JavaScript: a real `Error` whose `message` names the function and the
 //! problem, with a stable `code` (see [`crate::Error::code`]) and, where it helps, `details`
-//! (`{ option, index, line, column, limit }`), so a page can tell "too large" from "malformed".
+//! (`{ option, index, line, column, limit, reason, args, hint }`), so a page can tell "too
+//! large" from "malformed" and say what is wrong in its own language (`reason` is a key of
+//! [`crate::error::CATALOGUE`], `args` its values).
 
-use crate::error::{Details, Error};
+use crate::error::{Arg, Args, Details, Error};
 use js_sys::Reflect;
 use wasm_bindgen::JsValue;
 
@@ -43,7 +45,14 @@ pub fn fail(func: &str, problem: impl Into<Problem>) -> JsValue {
     let (message, code, details) = match problem.into() {
         Problem::Core(e) => (e.to_string(), e.code(), e.details()),
         Problem::Argument { option, message } => {
-            (message, "invalid-argument", Details { option, ..Details::default() })
+            // the argument checks speak to programmers: their reason is plain text
+            let details = Details {
+                option,
+                reason: Some(crate::error::TEXT),
+                args: Some(Args(vec![("text", Arg::Text(message.clone()))])),
+                ..Details::default()
+            };
+            (message, "invalid-argument", details)
         }
     };
     let error = js_sys::Error::new(&format!("{func}: {message}"));

@@ -7,7 +7,7 @@ use super::congruence::AnalyticCongruence;
 use super::error::{fail, fail_option};
 use super::surface::AnalyticSurface;
 use crate::examples::{self, CongruenceSpec, FormulaSpec};
-use crate::formula::{Formula, PARAMETERS};
+use crate::formula::{check, Formula, PARAMETERS};
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;
 use wasm_bindgen::prelude::*;
@@ -38,6 +38,12 @@ export interface SurfaceFormulas {
   /** Whether u wraps around, as on a closed surface (default false). */
   closed?: boolean;
   parameters?: FormulaParameters;
+  /**
+   * Whether the formulas write numbers with a decimal comma ("0,5*u", as in German; default
+   * false): a comma between two digits is then a decimal point, except in the arguments of
+   * atan2, where "atan2(1,5)" is refused as ambiguous (write 1.5, or "1, 5" for two arguments).
+   */
+  decimalComma?: boolean;
 }
 
 /** A line congruence p(u, v) + t·e(u, v) typed as formulas in u, v (and a, b, c). */
@@ -51,6 +57,8 @@ export interface CongruenceFormulas {
   rows?: number;
   /** Columns along v (default 8), 2 … 1000. */
   cols?: number;
+  /** As in `SurfaceFormulas`. */
+  decimalComma?: boolean;
 }
 "#;
 
@@ -108,6 +116,8 @@ struct SurfaceFormulas {
     closed: bool,
     #[serde(default)]
     parameters: Parameters,
+    #[serde(default, rename = "decimalComma")]
+    decimal_comma: bool,
 }
 
 #[derive(Deserialize)]
@@ -120,17 +130,39 @@ struct CongruenceFormulas {
     parameters: Parameters,
     rows: Option<f64>,
     cols: Option<f64>,
+    #[serde(default, rename = "decimalComma")]
+    decimal_comma: bool,
+}
+
+/// The three formulas of a field called `name`, with decimal commas read as points if asked.
+fn texts(func: &str, name: &str, texts: [String; 3], comma: bool) -> Result<[String; 3], JsValue> {
+    if !comma {
+        return Ok(texts);
+    }
+    let [x, y, z] = texts;
+    let point = |k: usize, t: String| check::decimal_commas(&format!("{name}[{k}]"), &t).map_err(|e| fail(func, e));
+    Ok([point(0, x)?, point(1, y)?, point(2, z)?])
 }
 
 const PARAMETER_KEYS: (&str, &[&str]) = ("parameters", &PARAMETERS);
 
-/// An interval from two bounds (formulas evaluated with the parameters' values).
-fn interval(func: &str, name: &str, bounds: &[Bound; 2], parameters: &[f64; 3]) -> Result<(f64, f64), JsValue> {
+/// An interval from two bounds (formulas evaluated with the parameters' values; decimal
+/// commas read as points if `comma`).
+fn interval(
+    func: &str,
+    name: &str,
+    bounds: &[Bound; 2],
+    parameters: &[f64; 3],
+    comma: bool,
+) -> Result<(f64, f64), JsValue> {
     let value = |k: usize| -> Result<f64, JsValue> {
         match &bounds[k] {
             Bound::Number(x) => Ok(*x),
             Bound::Text(t) => {
-                let f = Formula::parse(&format!("{name}[{k}]"), t, &PARAMETERS).map_err(|e| fail(func, e))?;
+                let source = format!("{name}[{k}]");
+                let text =
+                    if comma { check::decimal_commas(&source, t).map_err(|e| fail(func, e))? } else { t.clone() };
+                let f = Formula::parse(&source, &text, &PARAMETERS).map_err(|e| fail(func, e))?;
                 Ok(f.value(parameters))
             }
         }
@@ -150,14 +182,15 @@ impl AnalyticSurface {
         const F: &str = "AnalyticSurface.fromFormulas";
         let s: SurfaceFormulas = required(F, "spec", spec, &[PARAMETER_KEYS])?;
         let parameters = s.parameters.values();
+        let comma = s.decimal_comma;
         let spec = FormulaSpec {
-            u: interval(F, "u", &s.u, &parameters)?,
+            u: interval(F, "u", &s.u, &parameters, comma)?,
             v: match &s.v {
-                Some(v) => interval(F, "v", v, &parameters)?,
+                Some(v) => interval(F, "v", v, &parameters, comma)?,
                 None => (-1.0, 1.0),
             },
-            a: s.a,
-            e: s.e,
+            a: texts(F, "a", s.a, comma)?,
+            e: texts(F, "e", s.e, comma)?,
             closed: s.closed,
             parameters,
         };
@@ -182,12 +215,13 @@ impl AnalyticCongruence {
                 Some(x) => Err(fail_option(F, name, format!("{name} must be an integer from 2 to 1000, got {x}"))),
             }
         };
+        let comma = s.decimal_comma;
         let spec = CongruenceSpec {
-            u: interval(F, "u", &s.u, &parameters)?,
-            v: interval(F, "v", &s.v, &parameters)?,
+            u: interval(F, "u", &s.u, &parameters, comma)?,
+            v: interval(F, "v", &s.v, &parameters, comma)?,
             grid: (size("rows", s.rows)?, size("cols", s.cols)?),
-            p: s.p,
-            e: s.e,
+            p: texts(F, "p", s.p, comma)?,
+            e: texts(F, "e", s.e, comma)?,
             parameters,
         };
         examples::AnalyticCongruence::from_formulas(&spec).map(AnalyticCongruence::from_core).map_err(|e| fail(F, e))

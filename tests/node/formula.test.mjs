@@ -86,7 +86,7 @@ test('bad formulas throw errors with codes, columns and clear messages', () => {
     [{ ...base, a: ['u', '0'] }, 'invalid-argument', 'invalid length 2, expected an array of length 3', {}],
     [{ ...base, u: [0, true] }, 'invalid-argument', 'expected a number or a formula such as "2*pi"', {}],
     [{ ...base, parameters: { d: 1 } }, 'invalid-argument', 'unknown option "parameters.d"; known options: a, b, c', { option: 'parameters.d' }],
-    ['cos(u)', 'invalid-argument', 'spec must be an object { a, e, u, v, closed, parameters }, got a string', {}],
+    ['cos(u)', 'invalid-argument', 'spec must be an object { a, e, u, v, closed, parameters, decimalComma }, got a string', {}],
   ];
   for (const [spec, code, message, details] of cases) {
     const e = thrown(() => AnalyticSurface.fromFormulas(spec));

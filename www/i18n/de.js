@@ -1,9 +1,11 @@
 // Jeder deutsche Text der Seite und von <ruled-view>, nach Schlüssel (Fachbegriffe der
 // Liniengeometrie nach ../shared/paper/GLOSSARY-de.md). Erläuterungen der Szenen: de-texts.js.
 import texts from './de-texts.js';
+import errors from './de-errors.js';
 
 export default {
   ...texts,
+  ...errors,
   'app.title': 'ruledlab',
   'app.subtitle': 'Diskrete Modelle von Regelflächen und Geradenkongruenzen, nach Odehnal & Pottmann',
   'app.scene': 'Szene',
@@ -55,7 +57,11 @@ export default {
   'element.unknownScene': 'Eine Szene „{scene}“ gibt es nicht. Die Szenen sind: {known}.',
   'element.unknownPaper': 'Eine Abbildung oder ein Beispiel der Arbeit namens „{paper}“ gibt es nicht. Es gibt: {known}.',
   'element.badCamera': 'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',
-  'boot.failed': 'ruledlab konnte nicht starten: {message}',
+  'boot.noWebgl2': 'ruledlab konnte nicht starten: Dieser Browser (oder dieses Gerät) bietet kein WebGL2, das die 3D-Ansicht braucht. Aktuelle Versionen von Firefox, Chrome, Edge und Safari bieten es; ein Browser mit abgeschalteter Hardwarebeschleunigung unter Umständen nicht.',
+  'boot.noWasm': 'ruledlab konnte nicht starten: Dieser Browser kann sein WebAssembly nicht ausführen (nötig ist WebAssembly mit SIMD: Chrome 91, Firefox 89, Safari 16.4 oder neuer).',
+  'boot.load': 'ruledlab konnte nicht starten: Eine seiner Dateien wurde nicht geladen. Laden Sie die Seite neu; wird sie in einer anderen Seite gezeigt, blockiert diese sie vielleicht.',
+  'boot.technical': 'Was der Browser meldete',
+  'boot.failed': 'ruledlab konnte nicht starten.',
 
   'view.label': '3D-Ansicht der Szene. Ziehen oder Pfeiltasten drehen sie, Umschalt+Ziehen oder Umschalt+Pfeiltasten verschieben sie, Mausrad oder + und − zoomen, F passt ein, ? zeigt alle Tasten.',
   'view.fit': 'Einpassen',

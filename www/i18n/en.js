@@ -1,9 +1,11 @@
 // Every English text of the page and of <ruled-view>, by key. Labels may use R_{i,i+1}-style
 // subscripts (ui/richtext.js). Scene explanations (markup) are in en-texts.js.
 import texts from './en-texts.js';
+import errors from './en-errors.js';
 
 export default {
   ...texts,
+  ...errors,
   // the page
   'app.title': 'ruledlab',
   'app.subtitle': 'Discrete models of ruled surfaces and line congruences, after Odehnal & Pottmann',
@@ -56,7 +58,11 @@ export default {
   'element.unknownScene': 'There is no scene “{scene}”. The scenes are: {known}.',
   'element.unknownPaper': 'There is no figure or example of the paper called “{paper}”. They are: {known}.',
   'element.badCamera': 'The camera attribute could not be read (six numbers: yaw, pitch, distance, x, y, z); the view is fitted to the scene.',
-  'boot.failed': 'ruledlab could not start: {message}',
+  'boot.noWebgl2': 'ruledlab could not start: this browser (or this device) does not provide WebGL2, which the 3D view needs. Current Firefox, Chrome, Edge and Safari provide it; a browser with hardware acceleration turned off may not.',
+  'boot.noWasm': 'ruledlab could not start: this browser cannot run its WebAssembly (it needs WebAssembly with SIMD: Chrome 91, Firefox 89, Safari 16.4 or later).',
+  'boot.load': 'ruledlab could not start: one of its files did not load. Reload the page; if it is shown inside another page, that page may block it.',
+  'boot.technical': 'What the browser said',
+  'boot.failed': 'ruledlab could not start.',
 
   // the view
   'view.label': '3D view of the scene. Drag or use the arrow keys to turn it, shift+drag or shift+arrows to move it, wheel or + and − to zoom, F to fit, ? for all keys.',

@@ -61,6 +61,8 @@ export const scene = defineScene({
           rows: Number(p.rows),
           cols: Number(p.cols),
           parameters: { a: Number(p.a), b: Number(p.b), c: Number(p.c) },
+          // German readers write 0,5: a comma between digits is a decimal comma (not in atan2's arguments)
+          decimalComma: ctx.lang === 'de',
         }),
       );
       const built = congruenceFigure(own, analytic, /** @type {any} */ (p), ctx, 'formula');

@@ -131,6 +131,8 @@ export const scene = defineScene({
           v: [String(p.vmin), String(p.vmax)],
           closed: !!p.closed,
           parameters: { a: Number(p.a), b: Number(p.b), c: Number(p.c) },
+          // German readers write 0,5: a comma between digits is a decimal comma (not in atan2's arguments)
+          decimalComma: ctx.lang === 'de',
         }),
       );
       const [uMin, uMax] = [...analytic.parameters(2, { closed: false })];

@@ -3,9 +3,14 @@
 //!
 //! The bindings layer turns these into JavaScript `Error`s with the same message, a stable
 //! [`Error::code`] a program can branch on, and [`Error::details`] (the option, index, line,
-//! column or limit at fault). The messages are written for the person calling from JS.
+//! column or limit at fault, and the message's reason and arguments, [`message`]). The English
+//! messages are written for the person calling from JS; a page in another language builds
+//! its sentence from the reason.
 
 use std::fmt;
+
+mod message;
+pub use message::{number, placeholders, template, Arg, Message, CATALOGUE, TEXT};
 
 /// Why an input was rejected or a computation could not be carried out.
 #[derive(Debug, Clone, PartialEq)]
@@ -67,7 +72,7 @@ pub enum Error {
         /// The parameter's name as the caller spells it.
         name: &'static str,
         /// What is wrong and what is expected.
-        message: String,
+        message: Message,
     },
     /// Text that could not be read: CSV, JSON, a formula, G-code.
     Parse {
@@ -78,9 +83,10 @@ pub enum Error {
         /// 1-based column (in characters) of the problem.
         column: Option<usize>,
         /// What is wrong.
-        message: String,
-        /// What to do about it, said after the position.
-        hint: Option<String>,
+        message: Message,
+        /// What to do about it, said after the position (boxed: most errors have none, and
+        /// every `Result` of the core carries the largest variant's size).
+        hint: Option<Box<Message>>,
     },
     /// A text longer or more deeply nested than the documented limit (checked before parsing).
     TextLimit {
@@ -102,14 +108,16 @@ pub enum Error {
         /// What is degenerate, e.g. "e(u)", "lines".
         what: String,
         /// What happened and where.
-        message: String,
+        message: Message,
     },
     /// A formula whose value (or derivative) is not finite at a parameter of its range.
     NotFiniteAt {
         /// The formula, e.g. `"a[1]"`.
         what: String,
-        /// Where, e.g. "u = 0.5".
-        at: String,
+        /// The parameter u where it happens (6 significant digits).
+        u: f64,
+        /// And v, for a congruence p(u, v) + t·e(u, v).
+        v: Option<f64>,
         /// The value found.
         value: f64,
         /// Whether it is the derivative (the value itself being finite).
@@ -182,11 +190,50 @@ pub struct Details {
     /// The limit that was exceeded (or not reached).
     #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
     pub limit: Option<f64>,
+    /// What is wrong, as a stable key of [`CATALOGUE`] (for a page that says it in its language).
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    pub reason: Option<&'static str>,
+    /// The values the reason's text names (numbers stay numbers).
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    pub args: Option<Args>,
+    /// What to do about it: `{ reason, args }`, said after the position.
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    pub hint: Option<Hint>,
+}
+
+/// A message's arguments, written to JS as an object `{ name: value }`.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Args(pub Vec<(&'static str, Arg)>);
+
+/// A hint for JS: `{ reason, args }`.
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
+pub struct Hint {
+    /// The hint's reason.
+    pub reason: &'static str,
+    /// Its arguments.
+    pub args: Args,
+}
+
+#[cfg(any(feature = "serde", target_family = "wasm"))]
+impl serde::Serialize for Args {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
+        // a struct, so that JS gets a plain object (serde-wasm-bindgen writes maps as Map)
+        use serde::ser::SerializeStruct;
+        let mut object = serializer.serialize_struct("Args", self.0.len())?;
+        for (name, value) in &self.0 {
+            match value {
+                Arg::Text(s) => object.serialize_field(name, s)?,
+                Arg::Number(x) => object.serialize_field(name, x)?,
+            }
+        }
+        object.end()
+    }
 }
 
 impl Error {
     /// Shorthand for [`Error::InvalidParameter`].
-    pub fn parameter(name: &'static str, message: impl Into<String>) -> Self {
+    pub fn parameter(name: &'static str, message: impl Into<Message>) -> Self {
         Error::InvalidParameter { name, message: message.into() }
     }
 
@@ -195,24 +242,67 @@ impl Error {
         source: impl Into<String>,
         line: Option<usize>,
         column: Option<usize>,
-        message: impl Into<String>,
+        message: impl Into<Message>,
     ) -> Self {
         Error::Parse { source: source.into(), line, column, message: message.into(), hint: None }
     }
 
     /// The same error with `hint` (what to do) added after its position; other kinds unchanged.
-    pub fn with_hint(self, text: impl Into<String>) -> Self {
+    pub fn with_hint(self, text: impl Into<Message>) -> Self {
         match self {
             Error::Parse { source, line, column, message, .. } => {
-                Error::Parse { source, line, column, message, hint: Some(text.into()) }
+                Error::Parse { source, line, column, message, hint: Some(Box::new(text.into())) }
             }
             other => other,
         }
     }
 
     /// Shorthand for [`Error::Degenerate`].
-    pub fn degenerate(what: impl Into<String>, message: impl Into<String>) -> Self {
+    pub fn degenerate(what: impl Into<String>, message: impl Into<Message>) -> Self {
         Error::Degenerate { what: what.into(), message: message.into() }
+    }
+
+    /// What is wrong, as a reason with its arguments (the English of [`fmt::Display`] is made
+    /// from it, after the field and the position).
+    pub fn message(&self) -> Message {
+        match self {
+            Error::BadLength { what, len, multiple } => {
+                crate::msg!("bad-length", what = *what, len = *len, multiple = *multiple)
+            }
+            Error::TooFew { what, got, min } => crate::msg!("too-few", what = *what, got = *got, min = *min),
+            Error::TooMany { what, got, max } => crate::msg!("too-many", what = *what, got = *got, max = *max),
+            Error::NonFinite { index, value, record } => {
+                coordinate(record_reason("not-finite", *record), *index, *record).with("value", *value)
+            }
+            Error::OutOfRange { index, value, max, record } => {
+                coordinate(record_reason("out-of-range", *record), *index, *record)
+                    .with("value", *value)
+                    .with("max", *max)
+            }
+            Error::ZeroLength { ruling } => crate::msg!("zero-length", ruling = *ruling),
+            Error::InvalidParameter { message, .. }
+            | Error::Parse { message, .. }
+            | Error::Degenerate { message, .. } => message.clone(),
+            Error::TextLimit { what, got, max, .. } => {
+                crate::msg!("text-too-long", what = *what, got = *got, max = *max)
+            }
+            Error::NotFiniteAt { u, v, value, derivative, .. } => {
+                let reason = match (derivative, v) {
+                    (false, None) => "not-finite-at-u",
+                    (false, Some(_)) => "not-finite-at-uv",
+                    (true, None) => "derivative-not-finite-at-u",
+                    (true, Some(_)) => "derivative-not-finite-at-uv",
+                };
+                let m = Message::new(reason).with("u", *u);
+                let m = match v {
+                    Some(v) => m.with("v", *v),
+                    None => m,
+                };
+                m.with("value", *value)
+            }
+            Error::NotConverged { iterations, .. } => crate::msg!("not-converged", iterations = *iterations),
+            Error::Singular { pivot, value, .. } => crate::msg!("singular", pivot = *pivot, value = *value),
+        }
     }
 
     /// The stable code of this kind of error, for programs to branch on:
@@ -270,91 +360,77 @@ impl Error {
             Error::NotConverged { iterations, .. } => d.limit = Some(*iterations as f64),
             Error::Singular { pivot, .. } => d.index = Some(*pivot),
         }
+        let message = self.message();
+        d.reason = Some(message.reason);
+        d.args = Some(Args(message.args));
+        if let Error::Parse { hint: Some(h), .. } = self {
+            d.hint = Some(Hint { reason: h.reason, args: Args(h.args.clone()) });
+        }
         d
     }
 }
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let text = self.message().english();
         match self {
-            Error::BadLength { what, len, multiple } => write!(
-                f,
-                "{what}: length {len} is not a multiple of {multiple} ({multiple} numbers per item)"
-            ),
-            Error::TooFew { what, got, min } => {
-                write!(f, "{what}: got {got}, need at least {min}")
-            }
-            Error::TooMany { what, got, max } => {
-                write!(f, "{what}: {got} exceeds the limit of {max}")
-            }
-            Error::NonFinite { index, value, record } => write!(
-                f,
-                "coordinate {index} {} is {value}; all coordinates must be finite numbers",
-                coordinate_name(*index, *record)
-            ),
-            Error::OutOfRange { index, value, max, record } => write!(
-                f,
-                "coordinate {index} {} is {value:e}; magnitudes above {max:e} are not accepted",
-                coordinate_name(*index, *record)
-            ),
-            Error::ZeroLength { ruling } => write!(
-                f,
-                "ruling {ruling} has zero length (its two endpoints coincide), so it has no direction"
-            ),
-            Error::InvalidParameter { name, message } => write!(f, "{name}: {message}"),
-            Error::Parse { source, line, column, message, hint } => {
+            Error::InvalidParameter { name, .. } => write!(f, "{name}: {text}"),
+            Error::Parse { source, line, column, hint, .. } => {
                 write!(f, "{source}: ")?;
                 match (line, column) {
-                    (Some(l), Some(c)) => write!(f, "line {l}, column {c}: {message}")?,
-                    (Some(l), None) => write!(f, "line {l}: {message}")?,
-                    (None, Some(c)) => write!(f, "{message} at column {c}")?,
-                    (None, None) => write!(f, "{message}")?,
+                    (Some(l), Some(c)) => write!(f, "line {l}, column {c}: {text}")?,
+                    (Some(l), None) => write!(f, "line {l}: {text}")?,
+                    (None, Some(c)) => write!(f, "{text} at column {c}")?,
+                    (None, None) => write!(f, "{text}")?,
                 }
                 match hint {
-                    Some(h) => write!(f, "; {h}"),
+                    Some(h) => write!(f, "; {}", h.english()),
                     None => Ok(()),
                 }
             }
-            Error::TextLimit { source, what, got, max, column } => {
-                write!(f, "{source}: {got} {what} exceed the limit of {max}")?;
+            Error::TextLimit { source, column, .. } => {
+                write!(f, "{source}: {text}")?;
                 match column {
                     Some(c) => write!(f, " (first at column {c})"),
                     None => Ok(()),
                 }
             }
-            Error::Degenerate { what, message } => write!(f, "{what}: {message}"),
-            Error::NotFiniteAt { what, at, value, derivative: false } => write!(
-                f,
-                "{what} is not finite at {at} (value {value}: a division by zero, or a function outside its domain?)"
-            ),
-            Error::NotFiniteAt { what, at, value, derivative: true } => write!(
-                f,
-                "{what}: the derivative is not finite at {at} (it is {value}), so the exact invariants do not exist there"
-            ),
-            Error::NotConverged { what, iterations } => {
-                write!(f, "{what}: conjugate gradients did not converge in {iterations} iterations")
-            }
-            Error::Singular { what, pivot, value } => {
-                write!(f, "{what}: matrix is not positive definite (pivot {pivot} is {value:e})")
-            }
+            Error::Degenerate { what, .. } => write!(f, "{what}: {text}"),
+            Error::NotFiniteAt { what, derivative: false, .. } => write!(f, "{what} is {text}"),
+            Error::NotFiniteAt { what, derivative: true, .. } => write!(f, "{what}: {text}"),
+            Error::NotConverged { what, .. } | Error::Singular { what, .. } => write!(f, "{what}: {text}"),
+            _ => write!(f, "{text}"),
         }
     }
 }
 
 impl std::error::Error for Error {}
 
-/// "(ruling 2, b.y)" for index 16 of a flat array of segments, "(point 5, y)" for index 16
-/// of points, "(line (0, 2), q.y)" for index 16 of a grid of 4 columns.
-fn coordinate_name(index: usize, record: Record) -> String {
+/// The reason for a coordinate of a record kind: "not-finite-segment", "out-of-range-line", …
+fn record_reason(kind: &'static str, record: Record) -> &'static str {
+    match (kind, record) {
+        ("not-finite", Record::Segment) => "not-finite-segment",
+        ("not-finite", Record::Point) => "not-finite-point",
+        ("not-finite", Record::GridLine { .. }) => "not-finite-line",
+        (_, Record::Segment) => "out-of-range-segment",
+        (_, Record::Point) => "out-of-range-point",
+        (_, Record::GridLine { .. }) => "out-of-range-line",
+    }
+}
+
+/// The arguments naming number `index` of a flat array: ruling 2, b.y for index 16 of
+/// segments; point 5, y of points; line (0, 2), q.y of a grid of 4 columns.
+fn coordinate(reason: &'static str, index: usize, record: Record) -> Message {
     const SEGMENT: [&str; 6] = ["a.x", "a.y", "a.z", "b.x", "b.y", "b.z"];
     const LINE: [&str; 6] = ["p.x", "p.y", "p.z", "q.x", "q.y", "q.z"];
     const POINT: [&str; 3] = ["x", "y", "z"];
+    let m = Message::new(reason).with("index", index);
     match record {
-        Record::Segment => format!("(ruling {}, {})", index / 6, SEGMENT[index % 6]),
-        Record::Point => format!("(point {}, {})", index / 3, POINT[index % 3]),
+        Record::Segment => m.with("item", index / 6).with("coordinate", SEGMENT[index % 6]),
+        Record::Point => m.with("item", index / 3).with("coordinate", POINT[index % 3]),
         Record::GridLine { cols } => {
             let line = index / 6;
-            format!("(line ({}, {}), {})", line / cols.max(1), line % cols.max(1), LINE[index % 6])
+            m.with("row", line / cols.max(1)).with("col", line % cols.max(1)).with("coordinate", LINE[index % 6])
         }
     }
 }
@@ -399,7 +475,7 @@ mod tests {
             (Error::degenerate("e(u)", "vanishes"), "degenerate"),
             (Error::NotConverged { what: "system", iterations: 10 }, "not-converged"),
             (
-                Error::NotFiniteAt { what: "a[0]".into(), at: "u = 0".into(), value: f64::INFINITY, derivative: false },
+                Error::NotFiniteAt { what: "a[0]".into(), u: 0.0, v: None, value: f64::INFINITY, derivative: false },
                 "not-finite",
             ),
             (Error::Singular { what: "system", pivot: 3, value: -1.0 }, "singular"),
