@@ -3,7 +3,7 @@
 //!
 //! The bindings layer turns these into JavaScript `Error`s with the same message, a stable
 //! [`Error::code`] a program can branch on, and [`Error::details`] (the option, index, line,
-//! column or limit at fault, and the message's reason and arguments, [`message`]). The English
+//! column or limit at fault, and the message's reason and arguments, [`Message`]). The English
 //! messages are written for the person calling from JS; a page in another language builds
 //! its sentence from the reason.
 
