@@ -56,11 +56,13 @@ const sha = (text) => `'sha256-${createHash('sha256').update(text, 'utf8').diges
 const embed = await bundle('scripts/onefile/entry.js', 'iife', inline);
 const page = embed.replaceAll('</script', '<\\/script');
 const css = readFileSync(path('www/style.css'), 'utf8');
+// scripts off (an iframe sandbox without allow-scripts): the <noscript> sentence, no endless "Loading"
+const noscript = readFileSync(path('www/noscript.css'), 'utf8');
 const icon = `data:image/svg+xml,${encodeURIComponent(readFileSync(path('www/favicon.svg'), 'utf8'))}`;
 const csp = [
   "default-src 'none'",
   `script-src ${sha(page)} 'wasm-unsafe-eval'`,
-  `style-src ${sha(css)}`,
+  `style-src ${sha(css)} ${sha(noscript)}`,
   'img-src data: blob:',
   'worker-src blob:',
   "connect-src 'none'",
@@ -77,6 +79,7 @@ const html = `<!doctype html>
 <title>ruledlab · discrete ruled surfaces and line congruences</title>
 <link rel="icon" href="${icon}">
 <style>${css}</style>
+<noscript><style>${noscript}</style></noscript>
 <script type="application/json" id="${STATE_ID}">${stateJson('')}</script>
 <script>${page}</script>
 </head>

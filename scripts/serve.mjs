@@ -26,12 +26,13 @@ const TYPES = {
 
 /**
  * Serves `root` on `host:port` (port 0: any free port), adding `headers` to every response
- * (e.g. a Content-Security-Policy). Every file may be loaded by pages of other origins, as
+ * (e.g. a Content-Security-Policy), and `headersFor(path)` to the response of that path. Every
+ * file may be loaded by pages of other origins, as
  * from a static CDN (`Access-Control-Allow-Origin: *`): a sandboxed iframe of a course system
  * has an opaque origin and loads the page's modules and wasm cross-origin, and a Share snippet
  * on another site loads the viewer. Resolves to { server, url }.
  */
-export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers = {} } = {}) {
+export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers = {}, headersFor = (/** @type {string} */ _path) => /** @type {Record<string, string>} */ ({}) } = {}) {
   const server = createServer((req, res) => {
     let path;
     try {
@@ -63,6 +64,7 @@ export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers
       'cache-control': 'no-cache',
       'access-control-allow-origin': '*',
       ...headers,
+      ...headersFor(path),
     });
     if (req.method === 'HEAD') res.end();
     else createReadStream(file).pipe(res);

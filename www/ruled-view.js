@@ -189,7 +189,6 @@ export class RuledView extends HTMLElement {
       const camera = readCamera(after ?? '');
       if (camera && this.stage.scene) {
         this.stage.viewer.camera.fromArray(camera);
-        this.stage.viewer.fitted = false;
         this.stage.viewer.requestRender();
       }
     }

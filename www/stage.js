@@ -262,7 +262,6 @@ export class Stage {
     this.compute({ fit: fit && !camera });
     if (camera) {
       this.viewer.camera.fromArray(camera);
-      this.viewer.fitted = false;
       this.viewer.requestRender();
     }
   }
@@ -370,6 +369,7 @@ export class Stage {
     );
     for (const key of this.scene.params.map((p) => p.key)) this.controls?.invalid(key, null);
     this.root.dataset.scene = this.scene.id;
+    this.root.dataset.paper = this.paper?.id ?? '';
     if (final) this.root.dataset.ready = '1';
     else delete this.root.dataset.ready;
     this.options.onBuilt?.(built);

@@ -116,15 +116,13 @@ export class Viewer {
     canvas.addEventListener('webglcontextlost', this.onLost);
     canvas.addEventListener('webglcontextrestored', this.onRestored);
     this.camera.attach(canvas, (ended) => {
-      this.fitted = this.camera.atHome();
       this.moved();
       this.requestRender();
       this.onCameraChange?.(ended);
     });
-    /** Whether the camera is as fit() framed it: a new size of the view frames it again then. */
-    this.fitted = false;
+    // a view resized while its camera is where fit() put it is framed again (a moved camera stays)
     this.resize = new ResizeObserver(() => {
-      if (this.fitted) this.fit();
+      if (this.camera.atHome()) this.fit();
       this.requestRender();
     });
     this.resize.observe(canvas);
@@ -151,7 +149,6 @@ export class Viewer {
     if (!this.built) return;
     if (this.built.camera) Object.assign(this.camera, this.built.camera);
     this.camera.fit(this.built.bounds, this.aspect);
-    this.fitted = true;
     this.requestRender();
   }
 

@@ -238,6 +238,7 @@ pub const CATALOGUE: &[(&str, &str)] = &[
     ("line-zero-length", "line ({row}, {col}) has zero length (p = q), so it has no direction"),
     ("lines-cancel", "a refined line has no direction: the weights cancel opposite lines"),
     ("parallel-at-step", "rulings at step {h} are parallel"),
+    ("no-striction-point", "{name} has no striction point at u = {u} (cylindrical ruling)"),
     // CSV and JSON (src/io)
     ("not-a-number", "\"{text}\" is not a number"),
     ("not-finite-number", "{text} is not a finite number"),

@@ -70,10 +70,7 @@ pub fn study(surface: &AnalyticSurface, u: f64, h0: f64, levels: usize) -> Resul
         ));
     }
     let (Some(s), Some(e3)) = (surface.striction(u), surface.central_tangent(u)) else {
-        return Err(Error::parameter(
-            "surface",
-            format!("{} has no striction point at u = {u} (cylindrical ruling)", surface.name()),
-        ));
+        return Err(Error::parameter("surface", crate::msg!("no-striction-point", name = surface.name(), u = u)));
     };
     let delta = surface.distribution(u);
     let steps: Vec<f64> = (0..levels).map(|k| h0 / f64::powi(2.0, k as i32)).collect();

@@ -7,10 +7,19 @@
 import { Builder, By, until } from 'selenium-webdriver';
 import firefox from 'selenium-webdriver/firefox.js';
 import LogInspector from 'selenium-webdriver/bidi/logInspector.js';
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { startServer } from '../../scripts/serve.mjs';
 import { decodePng, countDifferent } from '../page/png.mjs';
 
 const { server, url } = await startServer();
+// a course page of another site: a sandboxed iframe and a <ruled-view controls> in a 280-px column
+const siteDir = mkdtempSync(join(tmpdir(), 'ruledlab-firefox-site-'));
+const site = await startServer({ root: siteDir });
+const host = (/** @type {string} */ body) => `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>course</title><script defer src="${url}dist/ruledlab-embed.js"></script></head><body style="margin: 10px">${body}</body></html>`;
+writeFileSync(join(siteDir, 'sandbox.html'), host(`<iframe id="f" sandbox="allow-scripts" src="${url}index.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="800" height="520"></iframe>`));
+writeFileSync(join(siteDir, 'column.html'), host('<div style="width: 280px"><ruled-view id="v" paper="fig2" controls style="display: block; height: 560px"></ruled-view></div>'));
 const options = new firefox.Options().enableBidi().windowSize({ width: 1100, height: 800 });
 options.setBinary(process.env.FIREFOX ?? '/usr/bin/firefox-esr');
 options.setPreference('webgl.force-enabled', true);
@@ -56,12 +65,57 @@ try {
     if (!ok) failed++;
     console.log(`${ok ? 'ok' : 'not ok'} - Firefox: ${scene} draws (${(100 * drawn).toFixed(1)} % of the view)${problems.slice(before).map((p) => `\n  ${p}`).join('')}`);
   }
+  // the sandboxed iframe (an opaque origin: no storage, no history) draws with its controls
+  {
+    const before = problems.length;
+    await driver.get(`${site.url}sandbox.html`);
+    await driver.switchTo().frame(await driver.findElement(By.id('f')));
+    await driver.wait(until.elementLocated(By.css('.rl-stage[data-ready="1"]')), 60000);
+    await driver.sleep(300);
+    const controls = (await driver.findElements(By.css('.rl-controls [name]'))).length;
+    const image = decodePng(Buffer.from(await (await driver.findElement(By.css('.rl-view canvas'))).takeScreenshot(), 'base64'));
+    await driver.switchTo().defaultContent();
+    const drawn = countDifferent(image, background, 24) / (image.width * image.height);
+    const ok = drawn > 0.005 && controls >= 5 && problems.length === before;
+    if (!ok) failed++;
+    console.log(`${ok ? 'ok' : 'not ok'} - Firefox: a sandboxed iframe (allow-scripts) draws (${(100 * drawn).toFixed(1)} %) with ${controls} controls${problems.slice(before).map((p) => `\n  ${p}`).join('')}`);
+  }
+  // <ruled-view controls> in a 280-px column: the panel scrolls inside the element's box under the view
+  {
+    const before = problems.length;
+    await driver.get(`${site.url}column.html`);
+    await driver.wait(async () => (await driver.executeScript('return document.getElementById("v")?.dataset.ready')) === '1', 60000);
+    const view = await driver.findElement(By.id('v'));
+    const geometry = () =>
+      /** @type {Promise<{element: DOMRect, view: DOMRect, panel: DOMRect, scrolled: number, last: DOMRect}>} */ (
+        driver.executeScript(`const v = document.getElementById('v'), r = v.shadowRoot, c = [...r.querySelectorAll('.rl-controls [name]')];
+          return { element: v.getBoundingClientRect().toJSON(), view: r.querySelector('.rl-view').getBoundingClientRect().toJSON(), panel: r.querySelector('.rl-panel').getBoundingClientRect().toJSON(), scrolled: r.querySelector('.rl-panel').scrollTop, last: c[c.length - 1].getBoundingClientRect().toJSON() };`)
+      );
+    const g0 = await geometry();
+    // the wheel over the panel, a notch at a time, until its last control is in sight inside the box
+    const panel = await driver.executeScript('return document.getElementById("v").shadowRoot.querySelector(".rl-panel")');
+    let g1 = g0;
+    let inside = false;
+    for (let k = 0; k < 40 && !inside; k++) {
+      await driver.actions().scroll(0, 0, 0, 80, /** @type {any} */ (panel)).perform();
+      await driver.sleep(60);
+      g1 = await geometry();
+      inside = g1.last.bottom <= Math.min(g1.element.bottom, g1.panel.bottom) + 1 && g1.last.top >= g1.panel.top - 1;
+    }
+    const share = g0.view.height / g0.element.height;
+    const image = decodePng(Buffer.from(await view.takeScreenshot(), 'base64'));
+    const drawn = countDifferent(image, background, 24) / (image.width * image.height);
+    const ok = g1.scrolled > 0 && inside && share >= 0.55 && drawn > 0.005 && problems.length === before;
+    if (!ok) failed++;
+    console.log(`${ok ? 'ok' : 'not ok'} - Firefox: <ruled-view controls> in a 280-px column: the view keeps ${(100 * share).toFixed(0)} %, the panel scrolls by the wheel to its last control inside the box (${inside})${problems.slice(before).map((p) => `\n  ${p}`).join('')}`);
+  }
 } finally {
   await driver.quit();
   server.close();
+  site.server.close();
 }
 if (failed || problems.length) {
   console.error(`Firefox smoke test: ${failed} scene(s) failed; ${problems.length} problem(s)`);
   process.exit(1);
 }
-console.log('Firefox smoke test: every scene draws, no console error, no failed request');
+console.log('Firefox smoke test: every scene draws, in a sandboxed iframe and a 280-px column too; no console error, no failed request');

@@ -55,7 +55,7 @@ test('an error through the package carries its reason and values; the page says 
   const cases = [
     [() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', '3*'], u: [0, 1] }), 'ends-expecting-operand', {}, 'e[2]: Die Formel endet, wo ein Operand erwartet wird (Spalte 3).'],
     [() => AnalyticSurface.fromFormulas({ a: ['u', 'sni(u)', '0'], e: ['0', '1', 'u'], u: [0, 1] }), 'unknown-function', { name: 'sni' }, 'a[1]: Eine Funktion „sni“ gibt es nicht (Spalte 1); bekannt sind:'],
-    [() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: [2.5, 1] }), 'interval-order', { lo: 2.5, hi: 1 }, 'Bereich von u: Der Anfang muss kleiner als das Ende sein, erhalten [2,5, 1].'],
+    [() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: [2.5, 1] }), 'interval-order', { lo: 2.5, hi: 1 }, 'Bereich von u: Der Anfang muss kleiner als das Ende sein, erhalten [2,5; 1].'],
     [() => importSegments('0,0,0,1,0\n'), 'csv-six-numbers', { found: 5 }, 'CSV: Eine Zeile braucht 6 Zahlen (a.x a.y a.z b.x b.y b.z), diese hat 5 (Zeile 1, Spalte 10).'],
     [() => RuledSurface.fromSegments(new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, NaN, 1])), 'not-finite-segment', { item: 1, coordinate: 'b.y' }, 'Koordinate b.y der Erzeugenden 1 ist NaN; jede Koordinate muss eine endliche Zahl sein.'],
   ];

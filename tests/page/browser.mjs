@@ -142,7 +142,8 @@ export async function framesAfter(page, after = 0) {
 
 /**
  * A server (with extra response `headers`) and a browser for one test file, started before and
- * closed after its tests. `session.open(path)` opens a fresh page at `url + path`, watching it
+ * closed after its tests. `session.open(path)` opens a fresh page at `url + path` (or at `path`
+ * when it is a whole URL), watching it
  * for problems and recording its requests, and waits for the first drawn frame unless
  * `wait: false`.
  */
@@ -169,7 +170,7 @@ export function pageSession({ headers = {} } = {}) {
     /** @type {string[]} */
     const requests = [];
     page.on('request', (r) => requests.push(r.url()));
-    await page.goto(session.url + path);
+    await page.goto(/^[a-z]+:/.test(path) ? path : session.url + path);
     if (wait) await ready(page);
     const frames = wait ? await framesAfter(page, 0) : 0;
     return { page, problems, requests, frames };

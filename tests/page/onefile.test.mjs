@@ -9,7 +9,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { gzipSync } from 'node:zlib';
-import { launch, watch, shoot, ready, pageSession } from './browser.mjs';
+import { launch, watch, shoot, ready, pageSession, showScene } from './browser.mjs';
 import { countDifferent } from './png.mjs';
 
 const REPO = fileURLToPath(new URL('../..', import.meta.url));
@@ -35,19 +35,18 @@ const foreign = (requests, file) => requests.filter((u) => !u.startsWith('data:'
 test('dist/ruledlab.html from disk: every scene draws, nothing is requested but the file itself', async () => {
   const html = readFileSync(join(REPO, 'dist/ruledlab.html'));
   console.log(`# dist/ruledlab.html: ${(html.length / 1024).toFixed(0)} KiB, ${(gzipSync(html).length / 1024).toFixed(0)} KiB gzipped`);
-  const first = await openFile(ONEFILE);
-  await ready(first.page);
-  const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
-  await first.page.close();
+  // one page from disk, walking every scene by its link
+  const { page, problems, requests } = await openFile(ONEFILE);
+  await ready(page);
+  const scenes = await page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
   for (const id of scenes) {
-    const { page, problems, requests } = await openFile(`${ONEFILE}#scene=${id}`);
-    await ready(page, 60000);
+    await showScene(page, `#scene=${id}`, id);
     const image = await shoot(page, `onefile-${id}`);
     assert.ok(countDifferent(image, BACKGROUND) > 0.005 * image.width * image.height, `${id} drew nothing`);
-    assert.deepEqual(problems, [], id);
-    assert.deepEqual(foreign(requests, ONEFILE), [], id);
-    await page.close();
   }
+  assert.deepEqual(problems, []);
+  assert.deepEqual(foreign(requests, ONEFILE), []);
+  await page.close();
 });
 
 test('the one-file build refines a large model in its inlined worker', async () => {

@@ -12,6 +12,7 @@ import { build } from 'vite';
 import { startServer } from '../../scripts/serve.mjs';
 import { launch, watch, ARTIFACTS } from './browser.mjs';
 import { decodePng, countDifferent } from './png.mjs';
+import { everyElementCold } from './cold.mjs';
 
 const REPO = fileURLToPath(new URL('../..', import.meta.url));
 const BACKGROUND = [251, 250, 247];
@@ -98,6 +99,30 @@ try {
     const { page } = await check(url, 'pack-vite');
     assert.ok(Math.abs(Number(await page.evaluate(() => document.body.dataset.delta)) - 0.5) < 1e-12);
     await page.close();
+  } finally {
+    server.close();
+  }
+});
+
+test('every figure and scene in <ruled-view>, cold, from the installed tarball (ruledlab/view)', async () => {
+  const dir = app();
+  const { server, url } = await startServer({ root: dir });
+  let n = 0;
+  try {
+    await everyElementCold(
+      browser,
+      (elements) => {
+        const name = `cold-${++n}.html`;
+        writeFileSync(
+          join(dir, name),
+          `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>cold</title>
+<script type="importmap">{ "imports": { "ruledlab/view": "./node_modules/ruledlab/www/view.js" } }</script>
+<script type="module">import 'ruledlab/view';</script></head><body>${elements}</body></html>`,
+        );
+        return url + name;
+      },
+      (u) => u.startsWith(url) || u.startsWith('data:') || u.startsWith('blob:'),
+    );
   } finally {
     server.close();
   }

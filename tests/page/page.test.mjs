@@ -76,11 +76,12 @@ test('every scene, and every choice of each of its menus, draws without errors',
 });
 
 test('a link restores every control of every scene, the camera and the language', async () => {
-  const first = await open();
-  const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
-  await first.page.close();
+  // each scene's controls read in one page walking the scenes by their links; each link then
+  // opened in a fresh page, as a reader opens it
+  const { page, problems } = await open();
+  const scenes = await page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
   for (const id of scenes) {
-    const { page, problems } = await open(`#scene=${id}`);
+    await showScene(page, `#scene=${id}`, id);
     // a non-default value for every enabled control (sliders away from their default,
     // checkboxes flipped, menus at another choice)
     const changed = await page.evaluate(() => {
@@ -109,9 +110,9 @@ test('a link restores every control of every scene, the camera and the language'
     const written = new URLSearchParams(new URL(restored.page.url()).hash.slice(1));
     for (const [k, v] of Object.entries(changed)) assert.equal(Number.isNaN(Number(v)) ? written.get(k) : Number(written.get(k)), Number.isNaN(Number(v)) ? v : Number(v), `${id}: ${k} not in the written link`);
     assert.deepEqual([...problems, ...restored.problems], []);
-    await page.close();
     await restored.page.close();
   }
+  await page.close();
 });
 
 test('the scene’s own parameter "view" and the camera no longer collide (isometry, three panels)', async () => {
@@ -212,7 +213,7 @@ test('your surface by formulas: live, in the link, and errors beside the field w
   await control(page, 'ay').dispatchEvent('change');
   const row = page.locator('.rl-row[data-key="ay"]');
   await page.waitForFunction(() => document.querySelector('.rl-row[data-key="ay"] .rl-fielderror')?.hidden === false);
-  assert.match(await row.locator('.rl-fielderror').innerText(), /a\[1\]: unknown function "sni" at column 1/);
+  assert.match(await row.locator('.rl-fielderror').innerText(), /^the y component of a\(u\): there is no function “sni” \(column 1\); known: sin, cos/);
   assert.equal(await control(page, 'ay').getAttribute('aria-invalid'), 'true');
   // the link with the formula restores it
   const reloaded = await open(`#scene=formula&ez=${encodeURIComponent('2*c')}&tool=convergence`);
@@ -228,7 +229,7 @@ test('imports: errors beside the field, old data kept; small imports survive a r
   await page.locator('.io summary').click();
   await page.locator('#import-text').fill('0,0,0,1,0,0\n0,0,1,0,1,x');
   await page.locator('#import-button').click();
-  assert.match(await page.locator('#import-error').innerText(), /csv: line 2, column 11: "x" is not a number\. The data shown is the previous import/);
+  assert.match(await page.locator('#import-error').innerText(), /^CSV: “x” is not a number \(line 2, column 11\)\. The data shown is the previous import/);
   await page.locator('#import-text').fill('0,0,0,1,0,0\n0,0,1,0,1,1\n0,0,2,-1,0,2\n0,0,3,0,-1,3');
   await page.locator('#import-button').click();
   await page.waitForFunction(() => /data=/.test(location.hash));

@@ -1,7 +1,7 @@
 // The page under stress and under a strict Content-Security-Policy sent as a header.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { pageSession, shoot, framesAfter, animationFrames, ready, control } from './browser.mjs';
+import { pageSession, shoot, framesAfter, animationFrames, ready, control, showScene } from './browser.mjs';
 import { countDifferent } from './png.mjs';
 
 const BACKGROUND = [251, 250, 247];
@@ -11,20 +11,17 @@ const open = (hash) => session.open(hash);
 
 test('every scene works under a strict CSP (no inline script or style) and requests nothing but its own files', async () => {
   const origin = new URL(session.url).origin;
-  const first = await open();
-  const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
-  await first.page.close();
-  const all = [...first.requests];
-  const problems = [...first.problems];
+  // one page under the policy, walking every scene by its link
+  const { page, problems, requests } = await open();
+  const scenes = await page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
   for (const id of scenes) {
-    const { page, problems: p, requests } = await open(`#scene=${id}`);
+    await showScene(page, `#scene=${id}`, id);
     const image = await shoot(page, `csp-${id}`);
     assert.ok(countDifferent(image, BACKGROUND) > 0.005 * image.width * image.height, `${id} drew nothing under the CSP`);
-    all.push(...requests);
-    problems.push(...p);
-    await page.close();
   }
+  await page.close();
   assert.deepEqual(problems, []);
+  const all = requests;
   const foreign = all.filter((u) => !u.startsWith(origin) && !u.startsWith('blob:') && !u.startsWith('data:'));
   assert.deepEqual(foreign, [], 'requests outside the page’s own files');
 });

@@ -63,6 +63,7 @@ export default {
   'error.option.coords': 'the lines',
   'error.option.lines': 'the lines',
   'error.option.h0': 'the convergence study',
+  'error.option.surface': '',
   'error.option.rows': 'rows',
   'error.option.cols': 'columns',
   // the reasons
@@ -129,6 +130,7 @@ export default {
   'error.line-zero-length': 'line ({row}, {col}) has zero length (p = q), so it has no direction',
   'error.lines-cancel': 'a refined line has no direction: the weights cancel opposite lines',
   'error.parallel-at-step': 'the rulings at step {h} are parallel',
+  'error.no-striction-point': 'the surface has no striction point at u = {u}: the ruling there is cylindrical (its neighbours are parallel to it)',
   'error.not-a-number': '“{text}” is not a number',
   'error.not-finite-number': '{text} is not a finite number',
   'error.csv-six-numbers': 'a line needs 6 numbers (a.x a.y a.z b.x b.y b.z), this one has {found}',

@@ -53,7 +53,7 @@ export const CSS = `
 .rl-hint { position: absolute; left: .6rem; bottom: .35rem; max-width: calc(100% - 19rem); margin: 0; color: var(--muted); font-size: .75rem; background: rgb(251 250 247 / .8); border-radius: 4px; padding: 0 .25rem; }
 .rl-stale canvas { opacity: .55; }
 .rl-sr-only { position: absolute !important; width: 1px; height: 1px; padding: 0; margin: -1px; overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }
-.rl-panel { flex: 0 0 22rem; max-width: 46%; overflow-y: auto; background: var(--panel); border-left: 1px solid var(--line); padding: .8rem 1rem 1.2rem; }
+.rl-panel { flex: 0 0 24rem; max-width: 46%; overflow-y: auto; background: var(--panel); border-left: 1px solid var(--line); padding: .8rem 1rem 1.2rem; }
 .rl-panel h2 { font-size: 1.05rem; margin: .2rem 0 .6rem; }
 .rl-controls { display: grid; grid-template-columns: minmax(6rem, 38%) minmax(0, 1fr); gap: .35rem .7rem; align-items: center; font-size: .9rem; }
 .rl-row { display: contents; }

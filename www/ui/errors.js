@@ -70,14 +70,15 @@ function values(args, { t, has, lang }) {
 export function number(/** @type {number} */ x, /** @type {string} */ lang) {
   if (Number.isNaN(x)) return 'NaN';
   if (!Number.isFinite(x)) return x > 0 ? '∞' : '−∞';
+  if (Number.isInteger(x) && Math.abs(x) < 1e15) return String(x).replace('-', '−');
   const a = Math.abs(x);
   const text = a !== 0 && (a >= 1e15 || a < 1e-4) ? x.toExponential(3).replace(/\.?0+e/, 'e') : String(Number(x.toPrecision(6)));
   return (lang === 'de' ? text.replace('.', ',') : text).replace('-', '−');
 }
 
-/** The sentence with its first letter a capital. */
+/** The sentence with its first letter a capital, when it starts with a word ("ruling 3 …"), not a symbol ("e(u) …"). */
 function upper(/** @type {string} */ s) {
-  return s.charAt(0).toUpperCase() + s.slice(1);
+  return /^\p{Ll}+[\s,]/u.test(s) ? s.charAt(0).toUpperCase() + s.slice(1) : s;
 }
 
 /**
