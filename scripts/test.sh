@@ -2,15 +2,16 @@
 # Every test of ruledlab, after installing whatever is missing:
 #   1. lint: rustfmt, clippy -D warnings (native and wasm32), rustdoc -D warnings
 #   2. native Rust: unit, property and integration tests, doctests, benches in test mode
-#   3. wasm: the same integration tests and the bindings tests in headless Chromium and in
+#   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc
+#      types, and every README snippet verbatim against the package's declarations; the docs
+#   then three lanes side by side:
+#   4. wasm: the same integration tests and the bindings tests in headless Chromium and in
 #      headless Firefox ESR (geckodriver)
-#   4. types: tsc --strict over www/, the scripts and tests with JSDoc types, and every README
-#      snippet verbatim against the package's declarations
-#   5. Node: the built package's JS API
-#   6. the page in headless Chromium (playwright-core driving Debian's chromium), and a smoke
-#      test of every scene in Firefox ESR, headed under Xvfb (headless Firefox has no WebGL2 here)
-#   7. short runs of the cargo-fuzz targets (fuzz/)
-# Exits non-zero on the first failure.
+#   5. Node: the built package's JS API; the page in headless Chromium (playwright-core driving
+#      Debian's chromium)
+#   6. short runs of the cargo-fuzz targets (fuzz/); a smoke test of every scene in Firefox ESR,
+#      headed under Xvfb (headless Firefox has no WebGL2 here)
+# Exits non-zero on the first failing step, or after the lanes when one of them failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -33,11 +34,6 @@ step "native: cargo test"
 cargo test --all-targets
 cargo test --doc
 
-step "wasm: wasm-bindgen-test in headless Chromium and headless Firefox ESR"
-WASM_TESTS=(--test section2 --test section3 --test section4 --test section5 --test milling --test line_space --test formula --test focal --test bindings)
-CHROMEDRIVER="$(command -v chromedriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
-GECKODRIVER="$(command -v geckodriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
-
 step "build: pkg/"
 bash scripts/build.sh
 
@@ -47,15 +43,37 @@ npx tsc -p tsconfig.tests.json
 node tests/types/readme.mjs
 bash scripts/docs.sh
 
-step "node: the package's API"
-node --expose-gc --test tests/node/*.test.mjs
-
-step "page: headless Chromium"
-# two files at a time: most of a page test is waiting for frames (191 s → 139 s here)
-node --test --test-concurrency=2 tests/page/*.test.mjs
-
-step "page: Firefox ESR under Xvfb"
-LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1280x1024x24" node tests/firefox/smoke.mjs
-
-step "fuzz: short runs of every cargo-fuzz target"
-bash scripts/fuzz.sh 3
+# The rest runs as three lanes side by side (the machine has idle cores while browsers wait for
+# frames): each lane's log is printed when it ends, and the run fails if any lane fails.
+step "three lanes: [wasm tests in Chromium, Firefox] [Node, page tests] [fuzz, Firefox smoke]"
+LOGS=$(mktemp -d)
+lane() {
+  local name=$1; shift
+  ( set -e; t0=$SECONDS; "$@"; echo "lane $name: done in $((SECONDS - t0)) s" ) > "$LOGS/$name.log" 2>&1
+}
+wasm_lane() {
+  WASM_TESTS=(--test section2 --test section3 --test section4 --test section5 --test milling --test line_space --test formula --test focal --test bindings)
+  CHROMEDRIVER="$(command -v chromedriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
+  GECKODRIVER="$(command -v geckodriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
+}
+page_lane() {
+  node --expose-gc --test tests/node/*.test.mjs
+  # two files at a time: most of a page test is waiting for frames
+  node --test --test-concurrency=2 tests/page/*.test.mjs
+}
+other_lane() {
+  bash scripts/fuzz.sh 3
+  LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1280x1024x24" node tests/firefox/smoke.mjs
+}
+lane wasm wasm_lane & WASM=$!
+lane page page_lane & PAGE=$!
+lane other other_lane & OTHER=$!
+failed=0
+for pair in "wasm:$WASM" "page:$PAGE" "other:$OTHER"; do
+  name=${pair%%:*}
+  if wait "${pair#*:}"; then status=ok; else status=FAILED; failed=1; fi
+  printf '\n\033[1m== lane %s: %s\033[0m (at %d s)\n' "$name" "$status" $((SECONDS - START))
+  cat "$LOGS/$name.log"
+done
+rm -rf "$LOGS"
+exit $failed
