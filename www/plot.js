@@ -4,6 +4,10 @@
 // dash, not in colour alone.
 
 import { parseRich } from './ui/richtext.js';
+import { superscript } from './i18n/index.js';
+
+/** The least size of any text in a figure, subscripts included, in user units (= CSS px at 1:1). */
+export const SMALLEST_TEXT = 12.5;
 
 const SVG = 'http://www.w3.org/2000/svg';
 const SERIES = [
@@ -33,17 +37,17 @@ const SERIES = [
  * @param {PlotSpec} spec
  * @returns {SVGSVGElement}
  */
-export function logLogPlot(doc, { x, series, slopes = [], xLabel, yLabel, title, slopeLabel, width = 360, height = 270 }) {
+export function logLogPlot(doc, { x, series, slopes = [], xLabel, yLabel, title, slopeLabel, width = 340, height = 280 }) {
   const el = (/** @type {string} */ tag, /** @type {Record<string, string | number>} */ attrs = {}, /** @type {string} */ text = '') => {
     const e = doc.createElementNS(SVG, tag);
     for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
     if (text) e.textContent = text;
     return e;
   };
-  const svg = /** @type {SVGSVGElement} */ (el('svg', { xmlns: SVG, version: '1.1', viewBox: `0 0 ${width} ${height}`, width, height, 'font-family': 'Helvetica, Arial, sans-serif', 'font-size': 11, role: 'img' }));
+  const svg = /** @type {SVGSVGElement} */ (el('svg', { xmlns: SVG, version: '1.1', viewBox: `0 0 ${width} ${height}`, width, height, 'font-family': 'Helvetica, Arial, sans-serif', 'font-size': 13.5, role: 'img' }));
   svg.setAttribute('aria-label', title);
   svg.append(el('title', {}, title), el('rect', { x: 0, y: 0, width, height, fill: '#fbfaf7' }));
-  const pad = { l: 48, r: 12, t: 12, b: 38 };
+  const pad = { l: 52, r: 12, t: 12, b: 42 };
   const finite = (/** @type {number} */ v) => Number.isFinite(v) && v > 0;
   const ys = series.flatMap((s) => s.y.filter(finite));
   const xs = x.filter(finite);
@@ -52,18 +56,15 @@ export function logLogPlot(doc, { x, series, slopes = [], xLabel, yLabel, title,
   const y0 = Math.floor(Math.log10(Math.min(...ys))), y1 = Math.ceil(Math.log10(Math.max(...ys)));
   const px = (/** @type {number} */ v) => pad.l + ((Math.log10(v) - x0) / Math.max(x1 - x0, 1)) * (width - pad.l - pad.r);
   const py = (/** @type {number} */ v) => height - pad.b - ((Math.log10(v) - y0) / Math.max(y1 - y0, 1)) * (height - pad.t - pad.b);
-  const tick = (/** @type {number} */ e) => {
-    const t = el('text', {});
-    t.append(doc.createTextNode('10'), el('tspan', { dy: -5, 'font-size': 8 }, String(e).replace('-', '−')));
-    return t;
-  };
+  // 10⁻³ in one text with superscript digits: no text smaller than the rest
+  const tick = (/** @type {number} */ e) => el('text', { 'font-size': SMALLEST_TEXT }, `10${superscript(e)}`);
   const grid = el('g', { stroke: '#dedbd2', 'stroke-width': 1 });
   const labels = el('g', { fill: '#333' });
   for (let e = x0; e <= x1; e++) {
     grid.append(el('line', { x1: px(10 ** e), x2: px(10 ** e), y1: pad.t, y2: height - pad.b }));
     const t = tick(e);
     t.setAttribute('x', String(px(10 ** e)));
-    t.setAttribute('y', String(height - pad.b + 15));
+    t.setAttribute('y', String(height - pad.b + 17));
     t.setAttribute('text-anchor', 'middle');
     labels.append(t);
   }
@@ -84,7 +85,7 @@ export function logLogPlot(doc, { x, series, slopes = [], xLabel, yLabel, title,
     const xa = x[anchor], ya = series[0].y[anchor] * 2;
     const xb = Math.min(...xs), yb = Math.max(ya * (xb / xa) ** p, 10 ** y0);
     svg.append(el('line', { x1: px(xa), y1: py(ya), x2: px(xb), y2: py(yb), stroke: '#777', 'stroke-dasharray': '4 3', 'stroke-width': 1 }));
-    svg.append(el('text', { x: px(xb) + 4, y: py(yb) - 4 - 11 * k, fill: '#555', 'font-size': 10 }, slopeLabel(p)));
+    svg.append(el('text', { x: px(xb) + 4, y: py(yb) - 4 - 14 * k, fill: '#555', 'font-size': SMALLEST_TEXT }, slopeLabel(p)));
   });
   series.forEach((s, k) => {
     const look = SERIES[k % SERIES.length];
@@ -93,7 +94,7 @@ export function logLogPlot(doc, { x, series, slopes = [], xLabel, yLabel, title,
     g.append(el('polyline', { fill: 'none', 'stroke-width': 2, 'stroke-dasharray': look.dash || 'none', points: pts.map(([a, b]) => `${px(a).toFixed(2)},${py(b).toFixed(2)}`).join(' ') }));
     for (const [a, b] of pts) g.append(marker(el, look.marker, px(a), py(b), 3));
     svg.append(g);
-    const ly = pad.t + 12 + 14 * k;
+    const ly = pad.t + 14 + 17 * k;
     const key = el('g', {});
     key.append(el('line', { x1: pad.l + 8, x2: pad.l + 26, y1: ly - 4, y2: ly - 4, stroke: look.color, 'stroke-width': 2, 'stroke-dasharray': look.dash || 'none' }));
     const m = marker(el, look.marker, pad.l + 17, ly - 4, 3);
@@ -118,7 +119,7 @@ export function richSvgText(el, doc, label, attrs) {
   let shift = 0;
   for (const part of parseRich(label)) {
     const dy = part.kind === 'sub' ? 3 : part.kind === 'sup' ? -4 : 0;
-    const span = el('tspan', { dy: dy - shift, ...(part.kind === 'text' ? {} : { 'font-size': '75%' }) });
+    const span = el('tspan', { dy: dy - shift, ...(part.kind === 'text' ? {} : { 'font-size': SMALLEST_TEXT }) });
     span.append(doc.createTextNode(part.text));
     text.append(span);
     shift = dy;

@@ -3,7 +3,7 @@
 // points with their weights, and formula (16) written out in full. Self-contained SVG 1.1 built
 // with the DOM (like the convergence plot), so it is shown beside the view and saved as a file.
 // Weights differ by marker shape and label as well as colour.
-import { richSvgText, marker } from './plot.js';
+import { richSvgText, marker, SMALLEST_TEXT } from './plot.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
 
@@ -46,13 +46,13 @@ export function butterflyStencil(doc, { title, weights }) {
     if (text) e.textContent = text;
     return e;
   };
-  const width = 360, height = 330;
-  const svg = /** @type {SVGSVGElement} */ (el('svg', { xmlns: SVG, version: '1.1', viewBox: `0 0 ${width} ${height}`, width, height, 'font-family': 'Helvetica, Arial, sans-serif', 'font-size': 11, role: 'img' }));
+  const width = 340, height = 372;
+  const svg = /** @type {SVGSVGElement} */ (el('svg', { xmlns: SVG, version: '1.1', viewBox: `0 0 ${width} ${height}`, width, height, 'font-family': 'Helvetica, Arial, sans-serif', 'font-size': 13.5, role: 'img' }));
   svg.setAttribute('aria-label', title);
   svg.append(el('title', {}, title), el('rect', { x: 0, y: 0, width, height, fill: '#fbfaf7' }));
   // grid indices i (right) and j (up) from −1 to 2 around p_{i,j}
-  const step = 62;
-  const px = (/** @type {number} */ di) => 70 + (di + 1) * step;
+  const step = 60;
+  const px = (/** @type {number} */ di) => 56 + (di + 1) * step;
   const py = (/** @type {number} */ dj) => 215 - (dj + 1) * step;
   const range = [-1, 0, 1, 2];
   const lines = el('g', { stroke: '#b9b5aa', 'stroke-width': 1 });
@@ -74,7 +74,7 @@ export function butterflyStencil(doc, { title, weights }) {
     m.setAttribute('stroke', '#1d2435');
     svg.append(m);
     svg.append(el('text', { x: x + 9, y: y - 7, 'font-weight': 700, fill: '#1d2435' }, look.text));
-    svg.append(richSvgText(el, doc, `p_{${index(at[0], at[1])}}`, { x: x + 9, y: y + 13, fill: '#535c70', 'font-size': 10 }));
+    svg.append(richSvgText(el, doc, `p_{${index(at[0], at[1])}}`, { x: x + 8, y: y + 15, fill: '#535c70', 'font-size': SMALLEST_TEXT }));
   }
   // the new point on the diagonal
   const [mx, my] = [(px(0) + px(1)) / 2, (py(0) + py(1)) / 2];
@@ -82,9 +82,10 @@ export function butterflyStencil(doc, { title, weights }) {
   svg.append(richSvgText(el, doc, 'p̄_{i,j}', { x: mx - 42, y: my - 6, fill: '#d55e00', 'font-weight': 700 }));
   // formula (16) in full, and the weights for this w
   const f = 268;
-  svg.append(richSvgText(el, doc, 'p̄_{i,j} = ½ (p_{i,j} + p_{i+1,j+1}) + 2w (p_{i+1,j} + p_{i,j+1})', { x: 12, y: f, 'font-size': 10.5 }));
-  svg.append(richSvgText(el, doc, '− w (p_{i,j−1} + p_{i−1,j} + p_{i+1,j+2} + p_{i+2,j+1})', { x: 40, y: f + 17, 'font-size': 10.5 }));
-  svg.append(el('text', { x: width - 12, y: f + 17, 'font-size': 10.5, 'text-anchor': 'end' }, '(16)'));
-  svg.append(el('text', { x: 12, y: f + 40, fill: '#535c70', 'font-size': 10.5 }, weights));
+  svg.append(richSvgText(el, doc, 'p̄_{i,j} = ½ (p_{i,j} + p_{i+1,j+1})', { x: 12, y: f }));
+  svg.append(richSvgText(el, doc, '+ 2w (p_{i+1,j} + p_{i,j+1})', { x: 40, y: f + 20 }));
+  svg.append(richSvgText(el, doc, '− w (p_{i,j−1} + p_{i−1,j} + p_{i+1,j+2} + p_{i+2,j+1})', { x: 40, y: f + 40, 'font-size': 13 }));
+  svg.append(el('text', { x: width - 12, y: f, 'text-anchor': 'end' }, '(16)'));
+  svg.append(el('text', { x: 12, y: f + 66, fill: '#535c70', 'font-size': SMALLEST_TEXT }, weights));
   return svg;
 }

@@ -6,7 +6,7 @@
 // slider with more values than pixels has − / + steps, and "?" lists the touch gestures first.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { pageSession, launch, watch, ready, shoot } from './browser.mjs';
+import { pageSession, launch, watch, ready, shoot, showScene } from './browser.mjs';
 import { otherOrigin, hostPage, drawnShare } from './places.mjs';
 import { decodePng, countChanged } from './png.mjs';
 
@@ -127,4 +127,52 @@ test('the page on a phone: 44-px targets, no text under 12 px, steps for a dense
   } finally {
     await phone.close();
   }
+});
+
+test('with a mouse, on every scene of the page and in the element: every target at least 24 × 24 CSS px, no text under 12 px', async () => {
+  const { page, problems } = await session.open('');
+  const scenes = await page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
+  /** Targets under 24 px and texts under 12 px in `root` (and the shadow roots in it). */
+  const audit = () =>
+    page.evaluate(() => {
+      const out = [];
+      const walk = (root) => {
+        for (const e of root.querySelectorAll('button, input, select, summary, textarea, a[href]')) {
+          if (!e.checkVisibility() || e.closest('.rl-sr-only')) continue;
+          const r = e.getBoundingClientRect();
+          if (r.width < 24 - 0.5 || r.height < 24 - 0.5) out.push(`target ${Math.round(r.width)}×${Math.round(r.height)}: ${e.getAttribute('name') || e.className || e.textContent?.trim().slice(0, 30)}`);
+        }
+        const walker = document.createTreeWalker(root, NodeFilter.SHOW_TEXT);
+        for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+          const e = n.parentElement;
+          if (!e || !n.textContent?.trim() || !e.checkVisibility() || e.closest('.rl-sr-only, option')) continue;
+          // in an SVG figure, its user units times the figure's scale on screen
+          const svg = e.closest('svg');
+          const scale = svg?.viewBox?.baseVal?.width ? svg.getBoundingClientRect().width / svg.viewBox.baseVal.width : 1;
+          const size = parseFloat(getComputedStyle(e).fontSize) * scale;
+          if (size < 12 - 0.01) out.push(`text ${size.toFixed(1)} px: ${n.textContent.trim().slice(0, 30)}`);
+        }
+        for (const host of root.querySelectorAll('*')) if (host.shadowRoot) walk(host.shadowRoot);
+      };
+      walk(document);
+      return out;
+    });
+  for (const id of scenes) {
+    await showScene(page, `#scene=${id}`, id);
+    await page.evaluate(() => document.querySelectorAll('details').forEach((d) => (d.open = true)));
+    assert.deepEqual(await audit(), [], id);
+  }
+  // and <ruled-view controls> beside the page's own view
+  await page.evaluate(async () => {
+    await import('/www/view.js');
+    const v = Object.assign(document.createElement('ruled-view'), { id: 'mouse' });
+    v.setAttribute('paper', 'fig15');
+    v.setAttribute('controls', '');
+    v.style.cssText = 'display: block; width: 420px; height: 560px';
+    document.body.append(v);
+  });
+  await page.waitForFunction(() => document.getElementById('mouse').dataset.ready === '1');
+  assert.deepEqual(await audit(), [], 'with a <ruled-view>');
+  assert.deepEqual(problems, []);
+  await page.close();
 });

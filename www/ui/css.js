@@ -30,7 +30,7 @@ export const CSS = `
 .rl-label { position: absolute; left: 0; top: 0; font: italic 15px/1 "Times New Roman", "STIX Two Text", serif; color: var(--ink);
   background: rgb(251 250 247 / .8); padding: 1px 3px; border-radius: 3px; white-space: nowrap; }
 .rl-stage sub, .rl-stage sup { font-size: max(12px, .72em); line-height: 1; }
-.rl-stage math :is(msub, msup, msubsup, munder, mover, munderover, mfrac) > :not(:first-child) { font-size: max(12px, .71em); }
+.rl-stage math :is(msub, msup, msubsup, munder, mover, munderover) > :not(:first-child), .rl-stage math mfrac > * { font-size: max(12px, .71em); }
 .rl-legend { position: absolute; left: .6rem; top: .5rem; margin: 0; padding: .35rem .6rem; list-style: none; max-width: calc(100% - 1.2rem); max-height: 45%; overflow-y: auto;
   background: rgb(255 255 255 / .88); border-radius: 6px; font-size: max(12px, .8rem); line-height: 1.35; }
 .rl-legend li { display: flex; align-items: center; gap: .45rem; }
@@ -111,7 +111,9 @@ export const CSS = `
 .rl-text math[display=block] { margin: .5rem 0; overflow-x: auto; }
 .rl-text .rl-beyond { border-left: 3px solid #0072b2; background: #f1f6fb; padding: .3rem .6rem; margin: .6rem 0; }
 .rl-text .rl-paper-data { border-left: 3px solid #8a8f99; background: #f6f5f1; padding: .3rem .6rem; margin: .6rem 0; }
-.rl-figure > svg { background: var(--paper); border-radius: 6px; width: 100%; height: auto; }
+/* a figure never shrinks below its own size (its smallest text stays 12.5 px): a narrow panel scrolls it sideways */
+.rl-figure { overflow-x: auto; }
+.rl-figure > svg { background: var(--paper); border-radius: 6px; width: 100%; min-width: 340px; height: auto; }
 .rl-shortcuts { max-width: 30rem; border: 1px solid var(--line); border-radius: 8px; padding: 1rem 1.2rem; color: var(--ink); }
 .rl-shortcuts::backdrop { background: rgb(0 0 0 / .25); }
 .rl-shortcuts table { border-collapse: collapse; font-size: .9rem; }
