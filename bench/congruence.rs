@@ -2,8 +2,8 @@
 //! the coupled variational solve on growing grids (native). `cargo bench --bench congruence`
 #![allow(missing_docs)]
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use ruledlab::congruence::{subdivide, CongruenceScheme};
-use ruledlab::examples::AnalyticCongruence;
+use ruledlab::{subdivide_congruence as subdivide, CongruenceScheme};
+use ruledlab::{AnalyticCongruence, SmoothCongruence};
 use std::hint::black_box;
 
 fn congruence(c: &mut Criterion) {

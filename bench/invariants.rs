@@ -2,11 +2,11 @@
 //! Criterion benchmark of Section 2's invariants for 10³ … 10⁶ rulings (native).
 //! `cargo bench --bench invariants`; the wasm counterpart is `bench/wasm.mjs`.
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use ruledlab::examples::AnalyticSurface;
+use ruledlab::{AnalyticSurface, SmoothRuled};
 use std::hint::black_box;
 
 /// n rulings of Example 1's hyperboloid.
-fn hyperboloid(n: usize) -> ruledlab::ruled::RuledSurface {
+fn hyperboloid(n: usize) -> ruledlab::RuledSurface {
     let hyp = AnalyticSurface::ALL[0].clone();
     hyp.sample(n, hyp.ranges()).expect("valid sample")
 }

@@ -2,8 +2,8 @@
 //! scheme (native). `cargo bench --bench subdivision`; the wasm counterpart is `bench/wasm.mjs`.
 #![allow(missing_docs)]
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use ruledlab::examples::{AnalyticSurface, Ranges};
-use ruledlab::subdivision::{subdivide_strip, Scheme, Variant};
+use ruledlab::{subdivide_strip, Scheme, Variant};
+use ruledlab::{AnalyticSurface, Ranges, SmoothRuled};
 use std::hint::black_box;
 
 fn schemes(c: &mut Criterion) {

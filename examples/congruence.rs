@@ -1,8 +1,8 @@
 //! Section 5 compared: error of the inserted lines against the exact congruence after one
 //! step, for bilinear averaging, butterfly, two-stage and coupled variational subdivision.
 //! `cargo run --release --example congruence`
-use ruledlab::congruence::{subdivide, CongruenceScheme, LineCongruence};
-use ruledlab::examples::AnalyticCongruence;
+use ruledlab::{subdivide_congruence as subdivide, CongruenceScheme, LineCongruence};
+use ruledlab::{AnalyticCongruence, SmoothCongruence};
 
 /// Bilinear averaging: edge lines the average of their two ends, face lines of four corners.
 fn bilinear(c: &LineCongruence) -> LineCongruence {

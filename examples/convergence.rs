@@ -1,7 +1,7 @@
 //! Prints the convergence study of Propositions 1 and 2 for every analytic surface:
 //! `cargo run --example convergence [u] [h0] [levels]`.
-use ruledlab::examples::AnalyticSurface;
-use ruledlab::ruled::convergence::study;
+use ruledlab::convergence_study as study;
+use ruledlab::AnalyticSurface;
 
 fn main() {
     let args: Vec<f64> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();

@@ -1,7 +1,7 @@
 //! Prints, as JSON, the invariants of Example 3's quartic surface sampled with 50 rulings,
 //! computed natively. The Node tests compare the wasm build's numbers against it.
-use ruledlab::examples::AnalyticSurface;
 use ruledlab::Invariants;
+use ruledlab::{AnalyticSurface, SmoothRuled};
 
 fn main() {
     let q = AnalyticSurface::Quartic;

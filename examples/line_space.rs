@@ -2,10 +2,10 @@
 //! ruling at the parameter midpoint (angle, and distance of the exact striction point from the
 //! inserted line), for N = 12, 24, 48 rulings, with the observed order.
 //! `cargo run --release --example line_space`
-use ruledlab::examples::{AnalyticSurface, Ranges};
-use ruledlab::subdivision::line_space::subdivide_lines;
-use ruledlab::subdivision::{subdivide_strip, Scheme};
+use ruledlab::subdivide_lines;
 use ruledlab::RuledSurface;
+use ruledlab::{subdivide_strip, Scheme};
+use ruledlab::{AnalyticSurface, Ranges, SmoothRuled};
 
 fn errors(surface: &AnalyticSurface, n: usize, u: (f64, f64), refined: &RuledSurface) -> (f64, f64) {
     let h = (u.1 - u.0) / (n - 1) as f64;

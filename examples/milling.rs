@@ -1,16 +1,13 @@
 //! Example 6: the tool path of Figs. 16–18 refined by each scheme; deviation of the machined
 //! surface from the target profile and smoothness of the orientation.
 //! `cargo run --release --example milling`
-use ruledlab::milling::{
-    example,
-    quality::{deviation, Quality},
-};
-use ruledlab::subdivision::{Scheme, Variant};
+use ruledlab::{deviation, example_profile, example_tool_path, Quality};
+use ruledlab::{Scheme, Variant};
 
 fn main() {
-    let path = example::example(7).expect("example");
-    let target = example::profile(2000);
-    let worst = |p: &ruledlab::milling::ToolPath| deviation(p, &target).iter().fold(0.0f64, |m, d| m.max(d.abs()));
+    let path = example_tool_path(7).expect("example");
+    let target = example_profile(2000);
+    let worst = |p: &ruledlab::ToolPath| deviation(p, &target).iter().fold(0.0f64, |m, d| m.max(d.abs()));
     println!("7 given poses: max |deviation| {:.2e}", worst(&path));
     let schemes = [
         ("linear (midpoints)", Scheme::BSpline { degree: 1 }),

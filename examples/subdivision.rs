@@ -1,8 +1,8 @@
 //! The comparison of Section 4's schemes: distance of refined rulings from the exact surface
 //! for Example 3 (12 rulings of the quartic surface, n = 12) and two other surfaces.
 //! `cargo run --release --example subdivision`
-use ruledlab::examples::{AnalyticSurface, Ranges};
-use ruledlab::subdivision::{accuracy::max_distance, subdivide_strip, Scheme, Variant};
+use ruledlab::{max_distance, subdivide_strip, Scheme, Variant};
+use ruledlab::{AnalyticSurface, Ranges, SmoothRuled};
 
 fn main() {
     let cases = [

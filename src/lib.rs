@@ -7,39 +7,112 @@
 //! a_i → b_i ([`RuledSurface`]). From it ruledlab computes the discrete counterparts of the
 //! differential invariants (Section 2: angles, signed distances, common perpendiculars and
 //! their footpoints, the distribution parameter, the striction polygon), with the
-//! convergence orders of Propositions 1 and 2 measured in [`ruled::convergence`].
+//! convergence orders of Propositions 1 and 2 measured by [`convergence_study`].
 //!
 //! The core is pure Rust on `f64` and glam's `DVec3`; it knows nothing of JavaScript. The
 //! WebAssembly bindings live in `wasm` (compiled for wasm32 only) and take and return
 //! flat typed arrays. Conventions and corrections to the paper: `ERRATA.md` of the paper
 //! notes, summarised in each module's documentation.
 //!
+//! The crate's modules are private; this page is the public surface, grouped below by the
+//! paper's sections. How the modules depend on each other (a tree: shared vocabulary at the
+//! bottom, the catalogue of analytic surfaces at the top, which no algorithm imports) is in
+//! `ARCHITECTURE.md` and checked by `tests/architecture.rs`.
+//!
 //! ```
-//! use ruledlab::{AnalyticSurface, RuledSurface};
+//! use ruledlab::{AnalyticSurface, RuledSurface, SmoothRuled};
 //! let hyperboloid = AnalyticSurface::by_name("hyperboloid").unwrap();
 //! let surface: RuledSurface = hyperboloid.sample(64, hyperboloid.ranges()).unwrap();
 //! let inv = surface.invariants();
 //! assert_eq!(inv.striction.len(), 62);
 //! ```
 
-pub mod congruence;
-pub mod error;
-pub mod examples;
-pub mod formula;
-pub mod io;
-pub mod linalg;
-pub mod line;
-pub mod linear_complex;
-pub mod mesh;
-pub mod milling;
-pub mod ruled;
-pub mod subdivision;
+mod base;
+mod catalogue;
+mod congruence;
+mod error;
+mod formula;
+mod io;
+mod linalg;
+mod line;
+mod linear_complex;
+mod mesh;
+mod milling;
+mod ruled;
+mod subdivision;
 pub mod tolerance;
 
 #[cfg(target_family = "wasm")]
 pub mod wasm;
 
-pub use error::{Error, Result};
-pub use examples::AnalyticSurface;
+// errors and messages
+pub use error::{
+    number as message_number, template as message_template, Arg, Details, Error, Message, Record, Result,
+    CATALOGUE as MESSAGES, TEXT as TEXT_REASON,
+};
+
+// shared vocabulary: lines, jets, parameter ranges
+pub use base::{check_coordinates, parameters as sample_parameters, CongruenceJet, Jet, Ranges};
 pub use line::{Line, Segment};
-pub use ruled::{Invariants, RuledSurface};
+pub use mesh::Mesh;
+
+// Section 2: discrete ruled surfaces, their invariants, convergence and accuracy
+pub use ruled::accuracy::{sampling_errors, SamplingErrors};
+pub use ruled::convergence::{
+    fit_order, study as convergence_study, Series as ConvergenceSeries, Study as ConvergenceStudy,
+};
+pub use ruled::surface::points_from_flat;
+pub use ruled::{Invariants, PairInvariants, RuledSurface, SmoothRuled};
+
+// Section 3: isometries and the development
+pub use ruled::development::Frame;
+pub use ruled::{envelope_radii, Development, HingeChain};
+
+// Section 4: subdivision
+pub use subdivision::accuracy::max_distance;
+pub use subdivision::bezier::de_casteljau;
+pub use subdivision::bspline::bspline;
+pub use subdivision::chaikin::chaikin;
+pub use subdivision::four_point::four_point;
+pub use subdivision::line_space::{subdivide_lines, DualLine};
+pub use subdivision::triangulation::{division_point, edges as triangulation_edges, Triangulation};
+pub use subdivision::variational::refine as refine_variational;
+pub use subdivision::{recut, subdivide_polygon, subdivide_strip, Affine, Pair, Scheme, Variant};
+
+// Section 5: line congruences, and their focal geometry (beyond the paper)
+pub use congruence::focal::{focal_analytic, focal_grid, focal_sheet, torsal_strokes};
+pub use congruence::line_space::butterfly_lines;
+pub use congruence::variational::{coupled as coupled_congruence, two_stage, EdgeScheme, SolveReport};
+pub use congruence::{
+    butterfly_diagonal, subdivide as subdivide_congruence, CongruenceScheme, Focal, FocalKind, LineCongruence,
+    SmoothCongruence,
+};
+
+// linear complexes (beyond the paper)
+pub use linear_complex::{fit as fit_linear_complex, ComplexKind, LinearComplex};
+
+// Example 6: tool paths for 5-axis milling
+pub use milling::example::{
+    exact as example_pose, example as example_tool_path, part_height, part_mesh, profile as example_profile,
+    RANGE as EXAMPLE_RANGE,
+};
+pub use milling::export::{
+    csv as tool_path_csv, gcode, inverse_kinematics, json as tool_path_json, machine_coordinates, parse_gcode,
+    table_rotation, GcodeOptions,
+};
+pub use milling::quality::{deviation, Quality};
+pub use milling::{Pose, Tool, ToolEnd, ToolPath};
+
+// reading and writing segments
+pub use io::csv::{parse as read_csv, write as write_csv};
+pub use io::json::{parse as read_json, write as write_json};
+pub use io::Imported;
+
+// formulas, and the catalogue of analytic surfaces and congruences
+pub use catalogue::{
+    AnalyticCongruence, AnalyticSurface, CongruenceSpec, FormulaCongruence, FormulaSpec, FormulaSurface,
+    ORTHOGONAL_SLOPE,
+};
+pub use formula::check::{decimal_commas, CONSTANTS as FORMULA_CONSTANTS, FUNCTIONS as FORMULA_FUNCTIONS};
+pub use formula::dual::Dual;
+pub use formula::{Formula, PARAMETERS};

@@ -1,8 +1,8 @@
 //! Triangle meshes the core builds for drawing: positions and indices, ready for a GPU
 //! buffer (the page draws them as they are and never derives geometry itself).
 
+use crate::base::check_coordinates;
 use crate::error::{Error, Result};
-use crate::ruled::surface::check_coordinates;
 use crate::tolerance::MAX_MESH_VERTICES;
 use glam::DVec3;
 

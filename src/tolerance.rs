@@ -42,6 +42,13 @@ pub const FORMULA_ZERO_DIRECTION: f64 = 1e-12;
 /// Largest number of samples asked of an analytic surface in one call.
 pub const MAX_SAMPLES: usize = MAX_RULINGS;
 
+/// Distance of a point from a smooth surface: rulings scanned before the golden-section search.
+pub const DISTANCE_SCAN: usize = 64;
+
+/// Distance of a point from a smooth surface: golden-section steps around the best scanned ruling
+/// (each shrinks the bracket by 0.618: 80 reach the rounding of u).
+pub const DISTANCE_REFINE_STEPS: usize = 80;
+
 /// Most vertices of a mesh handed in for shading: the two endpoints of the most rulings.
 pub const MAX_MESH_VERTICES: usize = 2 * MAX_RULINGS;
 

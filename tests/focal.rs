@@ -5,12 +5,12 @@
 
 use glam::{DVec2, DVec3};
 use ruledlab::assert_near;
-use ruledlab::congruence::focal::{focal_analytic, focal_grid};
-use ruledlab::congruence::{Focal, FocalKind, LineCongruence};
-use ruledlab::examples::{AnalyticCongruence, CongruenceSpec};
-use ruledlab::linear_complex::{fit, ComplexKind};
 use ruledlab::tolerance::test::ORDER;
+use ruledlab::{fit_linear_complex as fit, ComplexKind};
+use ruledlab::{focal_analytic, focal_grid, SmoothCongruence, SmoothRuled};
+use ruledlab::{AnalyticCongruence, CongruenceSpec};
 use ruledlab::{AnalyticSurface, Segment};
+use ruledlab::{Focal, FocalKind, LineCongruence};
 
 #[cfg(target_family = "wasm")]
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -122,7 +122,7 @@ fn normals_of_an_ellipsoid_focus_at_the_centres_of_curvature() {
 fn torsal_strokes_on_the_ellipsoid_are_orthogonal() {
     let worst = |n: usize| {
         let grid = ellipsoid().grid(n, n).unwrap();
-        let strokes = ruledlab::congruence::focal::torsal_strokes(n, n, &grid.p(), &focal_of(&grid), 0.35);
+        let strokes = ruledlab::torsal_strokes(n, n, &grid.p(), &focal_of(&grid), 0.35);
         assert_eq!(strokes.len(), 2 * n * n, "two real torsal directions per line");
         strokes.chunks(2).map(|w| w[0].vector().normalize().dot(w[1].vector().normalize()).abs()).fold(0.0, f64::max)
     };
@@ -282,7 +282,7 @@ fn normals_of_a_cylinder_have_a_focal_point_at_infinity() {
         assert_near!(f.parameters[finite], -2.0, tolerance);
         assert!(f.normality < 1e-12, "normality {}", f.normality);
     }
-    let sheets = [0, 1].map(|s| ruledlab::congruence::focal::focal_sheet(&grid, &discrete, s).indices.len());
+    let sheets = [0, 1].map(|s| ruledlab::focal_sheet(&grid, &discrete, s).indices.len());
     assert_eq!(sheets.iter().filter(|&&n| n == 0).count(), 1, "{sheets:?}");
     assert_eq!(sheets.iter().max(), Some(&(6 * 16 * 4)));
 }

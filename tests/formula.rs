@@ -3,10 +3,10 @@
 //! its place, never a panic. Runs natively and in headless Chromium.
 
 use ruledlab::assert_near;
-use ruledlab::examples::{AnalyticCongruence, AnalyticSurface, CongruenceSpec, FormulaSpec};
-use ruledlab::formula::Formula;
-use ruledlab::ruled::convergence;
+use ruledlab::convergence_study;
 use ruledlab::tolerance::test::{EXACT, ORDER};
+use ruledlab::Formula;
+use ruledlab::{AnalyticCongruence, AnalyticSurface, CongruenceSpec, FormulaSpec, SmoothRuled};
 
 #[cfg(target_family = "wasm")]
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -45,7 +45,7 @@ fn helical_surface_as_formulas() {
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn convergence_orders_on_a_typed_surface() {
     let s = surface(["u", "u^2/2", "sin(u)"], ["1", "cosh(u)", "a*u - u^3/3"], (-1.0, 1.0));
-    let study = convergence::study(&s, 0.3, 0.1, 7).unwrap();
+    let study = convergence_study(&s, 0.3, 0.1, 7).unwrap();
     let order = |name: &str| study.series.iter().find(|x| x.name == name).unwrap().fitted_order;
     assert_near!(order("footpoint"), 1.0, ORDER);
     assert_near!(order("midpoint"), 2.0, ORDER);

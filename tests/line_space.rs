@@ -2,10 +2,10 @@
 //! motions; it converges at fourth order like the endpoint scheme. Native and in Chromium.
 
 use glam::{DAffine3, DQuat, DVec3};
-use ruledlab::congruence::LineCongruence;
-use ruledlab::examples::{AnalyticCongruence, AnalyticSurface, Ranges};
-use ruledlab::subdivision::line_space::{butterfly_lines, subdivide_lines};
-use ruledlab::subdivision::Scheme;
+use ruledlab::LineCongruence;
+use ruledlab::Scheme;
+use ruledlab::{butterfly_lines, subdivide_lines};
+use ruledlab::{AnalyticCongruence, AnalyticSurface, Ranges, SmoothCongruence, SmoothRuled};
 use ruledlab::{RuledSurface, Segment};
 
 #[cfg(target_family = "wasm")]

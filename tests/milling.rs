@@ -2,10 +2,10 @@
 //! and in Chromium.
 
 use glam::DVec3;
-use ruledlab::milling::export::{gcode, machine_coordinates, parse_gcode, GcodeOptions};
-use ruledlab::milling::quality::{deviation, Quality};
-use ruledlab::milling::{example, Pose, Tool, ToolEnd, ToolPath};
-use ruledlab::subdivision::{Scheme, Variant};
+use ruledlab::{deviation, Quality};
+use ruledlab::{example_profile, example_tool_path, Pose, Tool, ToolEnd, ToolPath};
+use ruledlab::{gcode, machine_coordinates, parse_gcode, GcodeOptions};
+use ruledlab::{Scheme, Variant};
 
 #[cfg(target_family = "wasm")]
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -19,7 +19,7 @@ const VARIATIONAL: Scheme = Scheme::Variational { n: 12, variant: Variant::Coupl
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn refined_path_interpolates_the_given_poses() {
-    let path = example::example(7).unwrap();
+    let path = example_tool_path(7).unwrap();
     let r = path.refine(VARIATIONAL, 2).unwrap();
     assert_eq!(r.poses.len(), 25);
     for (i, p) in path.poses.iter().enumerate() {
@@ -37,8 +37,8 @@ fn refined_path_interpolates_the_given_poses() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn refinement_improves_the_profile_and_the_orientation() {
-    let path = example::example(7).unwrap();
-    let target = example::profile(600);
+    let path = example_tool_path(7).unwrap();
+    let target = example_profile(600);
     let worst = |p: &ToolPath| deviation(p, &target).iter().fold(0.0f64, |m, d| m.max(d.abs()));
     let coarse = worst(&path);
     let linear = path.refine(Scheme::BSpline { degree: 1 }, 3).unwrap();
@@ -56,7 +56,7 @@ fn refinement_improves_the_profile_and_the_orientation() {
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn gcode_round_trip() {
-    let path = example::example(7).unwrap().refine(VARIATIONAL, 2).unwrap();
+    let path = example_tool_path(7).unwrap().refine(VARIATIONAL, 2).unwrap();
     let o = GcodeOptions { feed: 800.0, scale: 10.0, clearance: 5.0 };
     let text = gcode(&path, o).unwrap();
     assert!(text.starts_with("(ruledlab tool path, 25 poses)"));
@@ -107,7 +107,7 @@ fn rejects_bad_tools_and_options() {
     assert!(Tool::new(-1.0, 1.0, ToolEnd::Ball).is_err());
     assert!(Tool::new(f64::NAN, 1.0, ToolEnd::Ball).is_err());
     assert!(Tool::new(0.1, f64::INFINITY, ToolEnd::Ball).is_err());
-    let path = example::example(3).unwrap();
+    let path = example_tool_path(3).unwrap();
     assert!(gcode(&path, GcodeOptions { feed: 0.0, ..Default::default() }).is_err());
     assert!(gcode(&path, GcodeOptions { scale: f64::NAN, ..Default::default() }).is_err());
 }

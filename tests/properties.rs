@@ -8,8 +8,8 @@
 use glam::{DAffine3, DQuat, DVec3};
 use proptest::prelude::*;
 use ruledlab::assert_near;
-use ruledlab::ruled::Invariants;
 use ruledlab::tolerance::test::EXACT;
+use ruledlab::Invariants;
 use ruledlab::{Line, RuledSurface, Segment};
 
 const TOL: f64 = 1e-9; // random surfaces include badly conditioned (nearly parallel) pairs
@@ -143,9 +143,9 @@ fn footpoints_minimise_the_distance() {
 mod schemes {
     //! Every subdivision scheme and every isometry commutes with rigid motions.
     use super::*;
-    use ruledlab::congruence::{subdivide as refine_congruence, CongruenceScheme, LineCongruence};
-    use ruledlab::ruled::{Development, HingeChain};
-    use ruledlab::subdivision::{subdivide_strip, Scheme, Variant};
+    use ruledlab::{subdivide_congruence as refine_congruence, CongruenceScheme, LineCongruence};
+    use ruledlab::{subdivide_strip, Scheme, Variant};
+    use ruledlab::{Development, HingeChain};
 
     fn same(a: &[DVec3], b: &[DVec3]) {
         assert_eq!(a.len(), b.len());
@@ -224,7 +224,7 @@ mod schemes {
 
         #[test]
         fn focal_geometry_moves_with_rigid_motions(grid in prop::collection::vec(vec3(), 16), m in motion()) {
-            use ruledlab::congruence::focal::focal_grid;
+            use ruledlab::focal_grid;
             let p: Vec<DVec3> = (0..16).map(|k| DVec3::new((k / 4) as f64, (k % 4) as f64, 0.0) + 0.2 * grid[k]).collect();
             let q: Vec<DVec3> = p.iter().zip(&grid).map(|(a, g)| *a + DVec3::new(0.3 * g.x, 0.3 * g.y, 1.0 + 0.1 * g.z)).collect();
             let moved = |x: &[DVec3]| x.iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>();
@@ -242,7 +242,7 @@ mod schemes {
                     assert_near!(m.transform_point3(f.middle), g.middle, 1e-7);
                     assert_near!(f.middle, h.middle, 1e-7);
                 }
-                if f.kind == ruledlab::congruence::FocalKind::Hyperbolic && f.parameters.iter().all(|t| t.abs() < 1e4) && !close {
+                if f.kind == ruledlab::FocalKind::Hyperbolic && f.parameters.iter().all(|t| t.abs() < 1e4) && !close {
                     for k in 0..2 {
                         assert_near!(m.transform_point3(f.points[k]), g.points[k], 1e-7);
                         assert_near!(f.parameters[k], g.parameters[k], 1e-7);
@@ -256,7 +256,7 @@ mod schemes {
 
         #[test]
         fn linear_complexes_move_with_rigid_motions(lines in prop::collection::vec((vec3(), vec3()), 3..20), m in motion()) {
-            use ruledlab::linear_complex::fit;
+            use ruledlab::fit_linear_complex as fit;
             let segments: Vec<Segment> = lines.iter().filter(|(_, d)| d.length() > 0.1).map(|&(a, d)| Segment::new(a, a + d)).collect();
             prop_assume!(segments.len() >= 3);
             let moved: Vec<Segment> = segments.iter().map(|s| Segment::new(m.transform_point3(s.a), m.transform_point3(s.b))).collect();

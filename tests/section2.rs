@@ -4,10 +4,10 @@
 
 use glam::DVec3;
 use ruledlab::assert_near;
-use ruledlab::examples::{AnalyticSurface, Ranges};
-use ruledlab::ruled::convergence;
+use ruledlab::convergence_study;
 use ruledlab::tolerance::test::{EXACT, ORDER};
 use ruledlab::RuledSurface;
+use ruledlab::{AnalyticSurface, Ranges, SmoothRuled};
 
 #[cfg(target_family = "wasm")]
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -141,7 +141,7 @@ fn measured_orders_match_propositions_1_and_2() {
         (AnalyticSurface::Quartic, -0.8),
     ];
     for (surface, u) in cases {
-        let study = convergence::study(&surface, u, 0.1, 7).unwrap();
+        let study = convergence_study(&surface, u, 0.1, 7).unwrap();
         for series in &study.series {
             // the last ratios are deep in the asymptotic regime
             let last = series.orders[series.orders.len() - 1];

@@ -5,9 +5,9 @@
 
 use glam::{DVec2, DVec3};
 use ruledlab::assert_near;
-use ruledlab::examples::{AnalyticSurface, Ranges};
-use ruledlab::ruled::{Development, HingeChain};
 use ruledlab::tolerance::test::{EXACT, ORDER};
+use ruledlab::{AnalyticSurface, Ranges, SmoothRuled};
+use ruledlab::{Development, HingeChain};
 use ruledlab::{RuledSurface, Segment};
 
 #[cfg(target_family = "wasm")]

@@ -1,8 +1,8 @@
 //! Section 4 against exact answers and measured accuracy. Runs natively and in Chromium.
 
-use ruledlab::examples::{AnalyticSurface, Ranges};
-use ruledlab::subdivision::{accuracy::max_distance, recut, subdivide_polygon, subdivide_strip, Scheme, Variant};
 use ruledlab::RuledSurface;
+use ruledlab::{max_distance, recut, subdivide_polygon, subdivide_strip, Scheme, Variant};
+use ruledlab::{AnalyticSurface, Ranges, SmoothRuled};
 
 #[cfg(target_family = "wasm")]
 use wasm_bindgen_test::wasm_bindgen_test;

@@ -1,8 +1,10 @@
 //! Section 5 against exact congruences. Runs natively and in Chromium.
 
 use ruledlab::assert_near;
-use ruledlab::congruence::{butterfly_diagonal, subdivide, CongruenceScheme, LineCongruence};
-use ruledlab::examples::AnalyticCongruence;
+use ruledlab::AnalyticCongruence;
+use ruledlab::{
+    butterfly_diagonal, subdivide_congruence as subdivide, CongruenceScheme, LineCongruence, SmoothCongruence,
+};
 
 #[cfg(target_family = "wasm")]
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -34,7 +36,7 @@ fn the_papers_scheme_read_literally_is_bilinear_averaging() {
             let corners: Vec<(usize, usize)> =
                 [(i / 2, j / 2), (i.div_ceil(2), j / 2), (i / 2, j.div_ceil(2)), (i.div_ceil(2), j.div_ceil(2))]
                     .to_vec();
-            let mean = |end: fn(&ruledlab::line::Segment) -> glam::DVec3| {
+            let mean = |end: fn(&ruledlab::Segment) -> glam::DVec3| {
                 corners.iter().map(|&(a, b)| end(&c.line(a, b))).sum::<glam::DVec3>() / 4.0
             };
             assert_near!(r.line(i, j).a, mean(|s| s.a), 1e-13);
@@ -123,10 +125,7 @@ fn coupled_solve_iterations_do_not_grow_with_the_grid() {
     let counts: Vec<usize> = [9, 17, 33]
         .iter()
         .map(|&n| {
-            ruledlab::congruence::variational::coupled(&AnalyticCongruence::Example5.grid(n, n).unwrap(), 6)
-                .unwrap()
-                .1
-                .iterations
+            ruledlab::coupled_congruence(&AnalyticCongruence::Example5.grid(n, n).unwrap(), 6).unwrap().1.iterations
         })
         .collect();
     assert!(counts.iter().all(|&k| k > 0 && k <= 40), "{counts:?}");

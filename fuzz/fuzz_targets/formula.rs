@@ -4,9 +4,9 @@
 //! wasm's 1 MiB, so a stack that would overflow in the browser overflows here first.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use ruledlab::examples::{AnalyticCongruence, AnalyticSurface, CongruenceSpec, FormulaSpec};
-use ruledlab::formula::dual::Dual;
-use ruledlab::formula::Formula;
+use ruledlab::{AnalyticCongruence, AnalyticSurface, CongruenceSpec, FormulaSpec, SmoothCongruence, SmoothRuled};
+use ruledlab::Dual;
+use ruledlab::Formula;
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data).into_owned();
@@ -35,7 +35,7 @@ fn run(text: &str) {
     if let Ok(s) = AnalyticSurface::from_formulas(&surface) {
         let _ = s.sample(7, s.ranges());
         let _ = s.striction(0.25);
-        let _ = ruledlab::ruled::convergence::study(&s, 0.1, 0.2, 4);
+        let _ = ruledlab::convergence_study(&s, 0.1, 0.2, 4);
     }
     let congruence = CongruenceSpec { p, e: d, u: (-1.0, 1.0), v: (-1.0, 1.0), parameters: [1.0; 3], grid: (4, 3) };
     if let Ok(c) = AnalyticCongruence::from_formulas(&congruence) {

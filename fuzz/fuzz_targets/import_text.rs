@@ -4,6 +4,6 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
-    let _ = ruledlab::io::csv::parse(&text);
-    let _ = ruledlab::io::json::parse(&text);
+    let _ = ruledlab::read_csv(&text);
+    let _ = ruledlab::read_json(&text);
 });

@@ -1,8 +1,8 @@
 //! RuledSurface construction, invariants, isometries and every strip scheme on fuzzed data.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use ruledlab::ruled::{Development, HingeChain};
-use ruledlab::subdivision::{line_space, recut, subdivide_polygon, subdivide_strip, Scheme, Variant};
+use ruledlab::{Development, HingeChain};
+use ruledlab::{recut, subdivide_lines, subdivide_polygon, subdivide_strip, Scheme, Variant};
 use ruledlab::RuledSurface;
 
 #[path = "common.rs"]
@@ -32,6 +32,6 @@ fuzz_target!(|data: &[u8]| {
     let steps = (choice as usize / 64) % 3;
     let closed = choice & 0x80 != 0;
     let _ = subdivide_strip(&s, scheme, closed, steps);
-    let _ = line_space::subdivide_lines(&s, scheme, closed, steps, None);
+    let _ = subdivide_lines(&s, scheme, closed, steps, None);
     let _ = subdivide_polygon(s.points(), scheme, closed, steps);
 });

@@ -2,10 +2,10 @@
 //! read back.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use ruledlab::milling::export::{csv, gcode, json, parse_gcode, GcodeOptions};
-use ruledlab::milling::quality::{deviation, Quality};
-use ruledlab::milling::{Tool, ToolEnd, ToolPath};
-use ruledlab::subdivision::Scheme;
+use ruledlab::{gcode, parse_gcode, tool_path_csv as csv, tool_path_json as json, GcodeOptions};
+use ruledlab::{deviation, Quality};
+use ruledlab::{Tool, ToolEnd, ToolPath};
+use ruledlab::Scheme;
 use ruledlab::RuledSurface;
 
 #[path = "common.rs"]

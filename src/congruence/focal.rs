@@ -33,8 +33,9 @@
 //! **Analytic**: the same (F3) with the exact derivatives of a [`CongruenceJet`], scaled to grid
 //! steps, so it compares point by point with the discrete values.
 
+use crate::base::CongruenceJet;
 use crate::congruence::LineCongruence;
-use crate::examples::{AnalyticCongruence, CongruenceJet};
+use crate::congruence::SmoothCongruence;
 use crate::line::Segment;
 use crate::mesh::Mesh;
 use crate::tolerance::{FOCAL_PARABOLIC, FOCAL_SHEET_REACH, FOCAL_TORSAL_SIGN, FOCAL_TORSAL_ZERO};
@@ -219,7 +220,7 @@ pub fn focal_grid(rows: usize, cols: usize, p: &[DVec3], q: &[DVec3]) -> Vec<Foc
 
 /// The exact focal geometry of an analytic congruence at the lines of its rows × cols grid,
 /// derivatives in grid steps (comparable with [`focal_grid`] of the same grid).
-pub fn focal_analytic(c: &AnalyticCongruence, rows: usize, cols: usize) -> Vec<Focal> {
+pub fn focal_analytic(c: &(impl SmoothCongruence + ?Sized), rows: usize, cols: usize) -> Vec<Focal> {
     let ((u0, u1), (v0, v1), _, _) = c.domain();
     let (hu, hv) = ((u1 - u0) / (rows - 1) as f64, (v1 - v0) / (cols - 1) as f64);
     let mut out = Vec::with_capacity(rows * cols);
@@ -308,6 +309,10 @@ impl std::ops::Mul<f64> for Plucker {
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[allow(unused_imports)]
+    use crate::congruence::SmoothCongruence;
+    #[allow(unused_imports)]
+    use crate::ruled::SmoothRuled;
 
     /// Lines x = (u, v, 0) + t·(−kv, ku, 1): an elliptic linear congruence.
     #[test]

@@ -3,9 +3,9 @@
 //! by row. Every row and every column is a discrete ruled surface, so Section 2's
 //! invariants apply to them.
 
+use crate::base::check_coordinates;
 use crate::error::{Error, Record, Result};
 use crate::line::Segment;
-use crate::ruled::surface::check_coordinates;
 use crate::ruled::RuledSurface;
 use crate::tolerance::{MAX_RULINGS, ZERO_LENGTH_REL};
 use glam::DVec3;

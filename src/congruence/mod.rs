@@ -3,10 +3,13 @@
 pub mod butterfly;
 pub mod focal;
 pub mod grid;
+pub mod line_space;
+pub mod smooth;
 pub mod variational;
 
 pub use focal::{Focal, FocalKind};
 pub use grid::LineCongruence;
+pub use smooth::SmoothCongruence;
 
 use crate::error::{Error, Result};
 use crate::subdivision::Pair;

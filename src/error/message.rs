@@ -265,25 +265,25 @@ pub const CATALOGUE: &[(&str, &str)] = &[
     ("json-grid-count", "a {rows} × {cols} grid needs {need} segments, found {found}"),
 ];
 
-/// The argument names of a template, in order (each once).
-pub fn placeholders(template: &str) -> Vec<&str> {
-    let mut names = Vec::new();
-    let mut rest = template;
-    while let Some(open) = rest.find('{') {
-        let after = &rest[open + 1..];
-        let Some(close) = after.find('}') else { break };
-        let name = &after[..close];
-        if !name.is_empty() && !names.contains(&name) {
-            names.push(name);
-        }
-        rest = &after[close + 1..];
-    }
-    names
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The argument names of a template, in order (each once).
+    fn placeholders(template: &str) -> Vec<&str> {
+        let mut names = Vec::new();
+        let mut rest = template;
+        while let Some(open) = rest.find('{') {
+            let after = &rest[open + 1..];
+            let Some(close) = after.find('}') else { break };
+            let name = &after[..close];
+            if !name.is_empty() && !names.contains(&name) {
+                names.push(name);
+            }
+            rest = &after[close + 1..];
+        }
+        names
+    }
 
     #[test]
     fn a_message_fills_its_template() {

@@ -10,7 +10,7 @@
 use std::fmt;
 
 mod message;
-pub use message::{number, placeholders, template, Arg, Message, CATALOGUE, TEXT};
+pub use message::{number, template, Arg, Message, CATALOGUE, TEXT};
 
 /// Why an input was rejected or a computation could not be carried out.
 #[derive(Debug, Clone, PartialEq)]

@@ -164,11 +164,6 @@ impl Program {
         }
         stack.pop().unwrap_or_default()
     }
-
-    /// Whether the program reads variable `k`.
-    pub fn uses(&self, k: usize) -> bool {
-        self.ops.contains(&Op::Var(k))
-    }
 }
 
 /// What is left to do while walking the tree: visit a node, or emit an operation after its

@@ -20,11 +20,6 @@ impl SymmetricBanded {
         SymmetricBanded { n, p, band: vec![0.0; n * (p + 1)] }
     }
 
-    /// Size n.
-    pub fn size(&self) -> usize {
-        self.n
-    }
-
     fn at(&self, i: usize, j: usize) -> usize {
         debug_assert!(j <= i && i - j <= self.p, "({i}, {j}) outside the band {}", self.p);
         i * (self.p + 1) + self.p - (i - j)
@@ -36,16 +31,6 @@ impl SymmetricBanded {
         assert!(i - j <= self.p, "entry ({i}, {j}) outside half-bandwidth {}", self.p);
         let k = self.at(i, j);
         self.band[k] += v;
-    }
-
-    /// `A[i][j]`.
-    pub fn get(&self, i: usize, j: usize) -> f64 {
-        let (i, j) = if i >= j { (i, j) } else { (j, i) };
-        if i - j > self.p {
-            0.0
-        } else {
-            self.band[self.at(i, j)]
-        }
     }
 
     /// Factors in place into L (Cholesky). Fails if the matrix is not positive definite.

@@ -4,4 +4,4 @@
 
 pub mod banded;
 
-pub use banded::{CholeskyBanded, SymmetricBanded};
+pub use banded::SymmetricBanded;

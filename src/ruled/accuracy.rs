@@ -9,8 +9,9 @@
 //!
 //! Open samplings use the interior rulings; closed ones (R_{N−1} followed by R_0) every ruling.
 
+use crate::base::{parameters, Ranges};
 use crate::error::Result;
-use crate::examples::{AnalyticSurface, Ranges};
+use crate::ruled::SmoothRuled;
 use glam::DVec3;
 
 /// The largest errors of a sampling (see the module documentation); NaN where a surface has
@@ -34,9 +35,9 @@ pub struct SamplingErrors {
 }
 
 /// Errors of `count` rulings of `surface` sampled over `ranges`.
-pub fn sampling_errors(surface: &AnalyticSurface, count: usize, ranges: Ranges) -> Result<SamplingErrors> {
+pub fn sampling_errors(surface: &(impl SmoothRuled + ?Sized), count: usize, ranges: Ranges) -> Result<SamplingErrors> {
     let sampled = surface.sample(count, ranges)?;
-    let u = AnalyticSurface::parameters(count, ranges);
+    let u = parameters(count, ranges);
     let h = if count > 1 { u[1] - u[0] } else { 0.0 };
     let inv = if ranges.closed { sampled.invariants_closed() } else { sampled.invariants() };
     // the rulings that have a striction point, and the index of their m_i
@@ -63,6 +64,11 @@ pub fn sampling_errors(surface: &AnalyticSurface, count: usize, ranges: Ranges) 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::catalogue::AnalyticSurface;
+    #[allow(unused_imports)]
+    use crate::congruence::SmoothCongruence;
+    #[allow(unused_imports)]
+    use crate::ruled::SmoothRuled;
 
     /// On the hyperboloid of Example 1 the midpoint errors fall 4× when N doubles (second
     /// order), the footpoint errors 2× (first order), and closing the surface changes nothing

@@ -16,8 +16,8 @@
 //! of log(error) against log(H). Errors at the rounding floor carry no order (NaN).
 
 use crate::error::{Error, Result};
-use crate::examples::AnalyticSurface;
 use crate::ruled::invariants::PairInvariants;
+use crate::ruled::SmoothRuled;
 use crate::tolerance::MAX_STUDY_LEVELS;
 
 /// Errors below this (relative to the surface's size, ~1) are rounding noise and carry no order.
@@ -46,7 +46,7 @@ pub struct Series {
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
 pub struct Study {
     /// Surface name.
-    pub surface: &'static str,
+    pub surface: String,
     /// The parameter u studied.
     pub u: f64,
     /// The steps H₀, H₀/2, ….
@@ -56,7 +56,7 @@ pub struct Study {
 }
 
 /// Runs the study at `u` with steps `h0 · 2^{−k}`, k = 0 … levels − 1.
-pub fn study(surface: &AnalyticSurface, u: f64, h0: f64, levels: usize) -> Result<Study> {
+pub fn study(surface: &(impl SmoothRuled + ?Sized), u: f64, h0: f64, levels: usize) -> Result<Study> {
     if !u.is_finite() {
         return Err(Error::parameter("u", format!("must be a finite number, got {u}")));
     }
@@ -111,7 +111,7 @@ pub fn study(surface: &AnalyticSurface, u: f64, h0: f64, levels: usize) -> Resul
             Series { name, expected_order, fitted_order: fit_order(&steps, &errors), errors, orders }
         })
         .collect();
-    Ok(Study { surface: surface.name(), u, steps, series })
+    Ok(Study { surface: surface.name().to_string(), u, steps, series })
 }
 
 /// Least-squares slope of log(error) against log(H) over the errors above the noise floor.
@@ -131,6 +131,11 @@ pub fn fit_order(steps: &[f64], errors: &[f64]) -> f64 {
 mod tests {
     use super::*;
     use crate::assert_near;
+    use crate::catalogue::AnalyticSurface;
+    #[allow(unused_imports)]
+    use crate::congruence::SmoothCongruence;
+    #[allow(unused_imports)]
+    use crate::ruled::SmoothRuled;
     use crate::tolerance::test::EXACT;
 
     #[test]

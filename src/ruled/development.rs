@@ -142,6 +142,10 @@ pub fn envelope_radii(surface: &RuledSurface) -> Vec<f64> {
 mod tests {
     use super::*;
     use crate::assert_near;
+    #[allow(unused_imports)]
+    use crate::congruence::SmoothCongruence;
+    #[allow(unused_imports)]
+    use crate::ruled::SmoothRuled;
     use crate::tolerance::test::EXACT;
 
     /// Four skew rulings in general position.
@@ -186,15 +190,15 @@ mod tests {
 
     /// ρ at the middle ruling of the helical surface sampled with `n` rulings over [0, 9].
     fn middle_radius(slope: f64, n: usize) -> f64 {
-        let helical = crate::examples::AnalyticSurface::HelicalRuled { radius: 1.0, pitch: 0.4, slope };
-        let ranges = crate::examples::Ranges { u: (0.0, 9.0), v: (-1.0, 1.0), closed: false };
+        let helical = crate::catalogue::AnalyticSurface::HelicalRuled { radius: 1.0, pitch: 0.4, slope };
+        let ranges = crate::base::Ranges { u: (0.0, 9.0), v: (-1.0, 1.0), closed: false };
         let radii = envelope_radii(&helical.sample(n, ranges).unwrap());
         radii[radii.len() / 2]
     }
 
     #[test]
     fn envelope_radius_of_the_helical_surfaces_is_r_plus_p_tan_beta_at_second_order() {
-        use crate::examples::surfaces::ORTHOGONAL_SLOPE;
+        use crate::catalogue::ORTHOGONAL_SLOPE;
         for (slope, exact) in
             [(std::f64::consts::FRAC_PI_4, 1.4), (ORTHOGONAL_SLOPE, 0.0), (0.3, 1.0 + 0.4 * 0.3f64.tan())]
         {

@@ -5,9 +5,11 @@ pub mod convergence;
 pub mod development;
 pub mod invariants;
 pub mod isometry;
+pub mod smooth;
 pub mod surface;
 
 pub use development::{envelope_radii, Development};
 pub use invariants::{Invariants, PairInvariants};
 pub use isometry::HingeChain;
+pub use smooth::SmoothRuled;
 pub use surface::RuledSurface;

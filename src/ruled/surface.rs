@@ -2,10 +2,11 @@
 //! (Section 2). Every constructor checks its input, so the algorithms that take a
 //! `RuledSurface` never meet NaN, infinities or zero-length rulings.
 
-use crate::error::{Error, Record, Result};
+use crate::base::check_coordinates;
+use crate::error::{Error, Result};
 use crate::line::{Line, Segment};
 use crate::ruled::invariants::Invariants;
-use crate::tolerance::{MAX_COORD, MAX_RULINGS, ZERO_LENGTH_REL};
+use crate::tolerance::{MAX_RULINGS, ZERO_LENGTH_REL};
 use glam::DVec3;
 
 /// A discrete ruled surface: N ≥ 2 segments a_i → b_i, each finite and of nonzero length.
@@ -229,22 +230,8 @@ pub fn check_count(n: usize) -> Result<()> {
     Ok(())
 }
 
-/// Every coordinate finite and at most [`MAX_COORD`] in magnitude (`stride` numbers per
-/// record, for the messages).
-pub fn check_coordinates(coords: &[f64], stride: usize) -> Result<()> {
-    for (index, &value) in coords.iter().enumerate() {
-        if !value.is_finite() {
-            return Err(Error::NonFinite { index, value, record: Record::of_stride(stride) });
-        }
-        if value.abs() > MAX_COORD {
-            return Err(Error::OutOfRange { index, value, max: MAX_COORD, record: Record::of_stride(stride) });
-        }
-    }
-    Ok(())
-}
-
 /// A polygon from flat coordinates, 3 per point: at least 2 and at most [`MAX_RULINGS`]
-/// points, every coordinate finite and at most [`MAX_COORD`] in magnitude.
+/// points, every coordinate finite and at most [`crate::tolerance::MAX_COORD`] in magnitude.
 pub fn points_from_flat(coords: &[f64]) -> Result<Vec<DVec3>> {
     if coords.len() % 3 != 0 {
         return Err(Error::BadLength { what: "point coordinates", len: coords.len(), multiple: 3 });

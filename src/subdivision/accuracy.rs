@@ -1,14 +1,14 @@
 //! How far refined rulings are from the exact surface they were sampled from: the measure
 //! behind the comparison of schemes in Section 4 (README, `cargo run --example subdivision`).
 
-use crate::examples::AnalyticSurface;
 use crate::ruled::RuledSurface;
+use crate::ruled::SmoothRuled;
 
 /// Largest distance from `surface` of the points a + t(b − a), t = 0, ⅛, …, 1, of the
 /// rulings `which` of `refined`, which was refined from a sampling of `surface` over the
 /// parameter interval `[u0, u1]`.
 pub fn max_distance(
-    surface: &AnalyticSurface,
+    surface: &(impl SmoothRuled + ?Sized),
     refined: &RuledSurface,
     u0: f64,
     u1: f64,

@@ -71,7 +71,11 @@ pub fn recut(surface: &RuledSurface, length: Option<f64>) -> Result<RuledSurface
 mod tests {
     use super::*;
     use crate::assert_near;
-    use crate::examples::AnalyticSurface;
+    use crate::catalogue::AnalyticSurface;
+    #[allow(unused_imports)]
+    use crate::congruence::SmoothCongruence;
+    #[allow(unused_imports)]
+    use crate::ruled::SmoothRuled;
     use crate::tolerance::test::EXACT;
 
     #[test]

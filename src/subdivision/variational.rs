@@ -133,7 +133,11 @@ pub fn refine(surface: &RuledSurface, n: usize, variant: Variant) -> Result<Rule
 mod tests {
     use super::*;
     use crate::assert_near;
-    use crate::examples::AnalyticSurface;
+    use crate::catalogue::AnalyticSurface;
+    #[allow(unused_imports)]
+    use crate::congruence::SmoothCongruence;
+    #[allow(unused_imports)]
+    use crate::ruled::SmoothRuled;
     use crate::tolerance::test::EXACT;
 
     fn quartic() -> RuledSurface {

@@ -3,8 +3,9 @@
 use super::args::{self, describe, fail, finite_option, integer, integer_option, numbers, only_for, to_js};
 use super::live::Live;
 use super::surface::RuledSurface;
+use crate::catalogue as examples;
+use crate::congruence::SmoothCongruence;
 use crate::congruence::{self, CongruenceScheme};
-use crate::examples;
 use crate::tolerance::MAX_RULINGS;
 use js_sys::{Float32Array, Float64Array};
 use serde::{Deserialize, Serialize};
@@ -212,7 +213,7 @@ impl LineCongruence {
                         }
                     }
                     Some(super::subdivide::SpaceName::Lines) => {
-                        return crate::subdivision::line_space::butterfly_lines(&self.inner, w, steps, length)
+                        return crate::congruence::line_space::butterfly_lines(&self.inner, w, steps, length)
                             .map(|inner| LineCongruence { inner, _live: Live::new() })
                             .map_err(|e| fail(F, e));
                     }

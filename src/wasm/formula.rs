@@ -6,7 +6,7 @@ use super::args::required;
 use super::congruence::AnalyticCongruence;
 use super::error::{fail, fail_option};
 use super::surface::AnalyticSurface;
-use crate::examples::{self, CongruenceSpec, FormulaSpec};
+use crate::catalogue::{self as examples, CongruenceSpec, FormulaSpec};
 use crate::formula::{check, Formula, PARAMETERS};
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;

@@ -2,7 +2,8 @@
 
 use super::args::{self, describe, fail, finite_option, integer, integer_option, numbers, options, to_js};
 use super::live::Live;
-use crate::examples;
+use crate::catalogue as examples;
+use crate::ruled::SmoothRuled;
 use crate::ruled::{self, convergence, Development, HingeChain, Invariants};
 use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
 use js_sys::{Float32Array, Float64Array, Uint8Array};
@@ -575,7 +576,7 @@ impl AnalyticSurface {
         const F: &str = "AnalyticSurface.parameters";
         let count = integer(F, "count", &count, 2, MAX_SAMPLES)?;
         let r = self.ranges(F, opts)?;
-        Ok(Float64Array::from(&examples::AnalyticSurface::parameters(count, r)[..]))
+        Ok(Float64Array::from(&crate::base::parameters(count, r)[..]))
     }
 
     /// How far the discrete invariants of `count` sampled rulings are from the exact ones at
@@ -661,7 +662,7 @@ impl AnalyticSurface {
                 format!("points: length {} must be a multiple of 3 and at most {}", flat.len(), 3 * MAX_SAMPLES),
             ));
         }
-        crate::ruled::surface::check_coordinates(&flat, 3).map_err(|e| fail(F, e))?;
+        crate::base::check_coordinates(&flat, 3).map_err(|e| fail(F, e))?;
         let out: Vec<f64> =
             flat.chunks_exact(3).map(|p| self.inner.distance_to(glam::DVec3::from_slice(p), u_min, u_max)).collect();
         Ok(Float64Array::from(&out[..]))
@@ -695,12 +696,12 @@ fn interval(func: &str, u_min: &JsValue, u_max: &JsValue) -> Result<(f64, f64), 
 
 impl AnalyticSurface {
     /// Sampling ranges from `SampleOptions`, defaults from the surface.
-    fn ranges(&self, func: &'static str, opts: JsValue) -> Result<examples::Ranges, JsValue> {
+    fn ranges(&self, func: &'static str, opts: JsValue) -> Result<crate::base::Ranges, JsValue> {
         let o: SampleOptions = options(func, opts)?;
         let d = self.inner.ranges();
         let bound =
             |name: &str, x: Option<f64>, default: f64| finite_option(func, name, x).map(|x| x.unwrap_or(default));
-        Ok(examples::Ranges {
+        Ok(crate::base::Ranges {
             u: (bound("uMin", o.u_min, d.u.0)?, bound("uMax", o.u_max, d.u.1)?),
             v: (bound("vMin", o.v_min, d.v.0)?, bound("vMax", o.v_max, d.v.1)?),
             closed: o.closed.unwrap_or(d.closed),

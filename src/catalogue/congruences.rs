@@ -14,8 +14,9 @@
 //! exact partial derivatives p_u, p_v, d_u, d_v ([`CongruenceJet`]), which the focal geometry
 //! of a congruence needs.
 
-use super::formula_surface::{check_interval, check_parameters, parse_vector, six};
-use crate::congruence::LineCongruence;
+use super::formula_surface::{check_parameters, parse_vector, six};
+use crate::base::{check_interval, CongruenceJet};
+use crate::congruence::SmoothCongruence;
 use crate::error::{Error, Result};
 use crate::formula::dual::Dual;
 use crate::formula::{Formula, PARAMETERS};
@@ -23,35 +24,12 @@ use crate::tolerance::{FORMULA_ZERO_DIRECTION, MAX_COORD};
 use glam::DVec3;
 use std::sync::Arc;
 
-/// p, d and their first partial derivatives at one (u, v).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CongruenceJet {
-    /// p(u, v) on the director surface d₁.
-    pub p: DVec3,
-    /// ∂p/∂u.
-    pub p_u: DVec3,
-    /// ∂p/∂v.
-    pub p_v: DVec3,
-    /// Line direction d(u, v) (not necessarily unit).
-    pub d: DVec3,
-    /// ∂d/∂u.
-    pub d_u: DVec3,
-    /// ∂d/∂v.
-    pub d_v: DVec3,
-}
-
-impl CongruenceJet {
-    fn of(p: [Dual; 3], d: [Dual; 3]) -> Self {
-        let re = |x: [Dual; 3]| DVec3::new(x[0].re, x[1].re, x[2].re);
-        let du = |x: [Dual; 3]| DVec3::new(x[0].du, x[1].du, x[2].du);
-        let dv = |x: [Dual; 3]| DVec3::new(x[0].dv, x[1].dv, x[2].dv);
-        CongruenceJet { p: re(p), p_u: du(p), p_v: dv(p), d: re(d), d_u: du(d), d_v: dv(d) }
-    }
-
-    /// Whether every value and derivative is finite.
-    pub fn is_finite(&self) -> bool {
-        [self.p, self.p_u, self.p_v, self.d, self.d_u, self.d_v].iter().all(|x| x.is_finite())
-    }
+/// The jet of p and d evaluated on dual numbers (values and both partial derivatives).
+fn jet_of(p: [Dual; 3], d: [Dual; 3]) -> CongruenceJet {
+    let re = |x: [Dual; 3]| DVec3::new(x[0].re, x[1].re, x[2].re);
+    let du = |x: [Dual; 3]| DVec3::new(x[0].du, x[1].du, x[2].du);
+    let dv = |x: [Dual; 3]| DVec3::new(x[0].dv, x[1].dv, x[2].dv);
+    CongruenceJet { p: re(p), p_u: du(p), p_v: dv(p), d: re(d), d_u: du(d), d_v: dv(d) }
 }
 
 /// What a formula congruence is made from.
@@ -133,7 +111,7 @@ impl FormulaCongruence {
         };
         let p = eval(&self.p);
         let d = eval(&self.e);
-        CongruenceJet::of(p, d)
+        jet_of(p, d)
     }
 
     /// [`FormulaCongruence::jet`], refused where a value or derivative is not finite or e = 0.
@@ -248,65 +226,28 @@ impl AnalyticCongruence {
             Self::Example5 => ([u, v, 0.5 * (2.0 * u + 1.5 * v).sin()], [u, v, u.sin() + 1.3 * v.cos()]),
             Self::Formula(c) => return c.jet(u.re, v.re),
         };
-        CongruenceJet::of(p, d)
+        jet_of(p, d)
+    }
+}
+
+impl SmoothCongruence for AnalyticCongruence {
+    fn name(&self) -> &str {
+        AnalyticCongruence::name(self)
     }
 
-    /// p(u, v) on d₁ and the line direction d(u, v).
-    pub fn line(&self, u: f64, v: f64) -> (DVec3, DVec3) {
-        let j = self.jet(u, v);
-        (j.p, j.d)
+    fn jet(&self, u: f64, v: f64) -> CongruenceJet {
+        AnalyticCongruence::jet(self, u, v)
     }
 
-    /// The (u, v) of line (i, j) of a rows × cols grid over the domain.
-    pub fn parameters(&self, i: usize, j: usize, rows: usize, cols: usize) -> (f64, f64) {
-        let ((u0, u1), (v0, v1), _, _) = self.domain();
-        (u0 + (u1 - u0) * i as f64 / (rows - 1) as f64, v0 + (v1 - v0) * j as f64 / (cols - 1) as f64)
-    }
-
-    /// The rows × cols grid of lines p → p + d at equally spaced (u_i, v_j) of the domain.
-    pub fn grid(&self, rows: usize, cols: usize) -> Result<LineCongruence> {
-        self.grid_reaching(rows, cols, 1.0)
-    }
-
-    /// As [`AnalyticCongruence::grid`], the segments p → p + reach·d.
-    pub fn grid_reaching(&self, rows: usize, cols: usize, reach: f64) -> Result<LineCongruence> {
-        crate::congruence::grid::check_shape(rows, cols)?;
-        let mut p = Vec::with_capacity(rows * cols);
-        let mut q = Vec::with_capacity(rows * cols);
-        for k in 0..rows * cols {
-            let (u, v) = self.parameters(k / cols, k % cols, rows, cols);
-            let (a, d) = match self {
-                Self::Formula(c) => {
-                    let j = c.checked_jet(u, v)?;
-                    (j.p, j.d)
-                }
-                _ => self.line(u, v),
-            };
-            p.push(a);
-            q.push(a + reach * d);
+    fn checked_jet(&self, u: f64, v: f64) -> Result<CongruenceJet> {
+        match self {
+            Self::Formula(c) => c.checked_jet(u, v),
+            _ => Ok(AnalyticCongruence::jet(self, u, v)),
         }
-        LineCongruence::from_points(rows, cols, &p, &q)
     }
 
-    /// Errors of a refined grid (from [`AnalyticCongruence::grid`]) against the exact lines at
-    /// the same parameters, over its new lines: (largest distance |P − p|, largest angle
-    /// between P → Q and d, in radians).
-    pub fn errors(&self, refined: &LineCongruence) -> (f64, f64) {
-        let (rows, cols) = (refined.rows(), refined.cols());
-        let mut worst = (0.0f64, 0.0f64);
-        for i in 0..rows {
-            for j in 0..cols {
-                if i % 2 == 0 && j % 2 == 0 {
-                    continue;
-                }
-                let (u, v) = self.parameters(i, j, rows, cols);
-                let (p, d) = self.line(u, v);
-                let s = refined.line(i, j);
-                worst.0 = worst.0.max((s.a - p).length());
-                worst.1 = worst.1.max(s.vector().angle_between(d));
-            }
-        }
-        worst
+    fn domain(&self) -> ((f64, f64), (f64, f64), usize, usize) {
+        AnalyticCongruence::domain(self)
     }
 }
 
@@ -314,6 +255,10 @@ impl AnalyticCongruence {
 mod tests {
     use super::*;
     use crate::assert_near;
+    #[allow(unused_imports)]
+    use crate::congruence::SmoothCongruence;
+    #[allow(unused_imports)]
+    use crate::ruled::SmoothRuled;
 
     /// The paper gives no formulas for Example 4: its two congruences are ruledlab's, and
     /// their titles say so; Example 5 is the paper's.

@@ -9,8 +9,8 @@
 //! vanish there, so a division by zero or a degenerate direction is refused with a message
 //! naming the formula and the parameter, never drawn as NaN.
 
-use super::surfaces::{Jet, Ranges};
-use crate::error::{Error, Message, Result};
+use crate::base::{check_interval, Jet, Ranges};
+use crate::error::{Error, Result};
 use crate::formula::dual::Dual;
 use crate::formula::{Formula, PARAMETERS};
 use crate::tolerance::{FORMULA_PROBES, FORMULA_ZERO_DIRECTION, MAX_COORD};
@@ -40,18 +40,6 @@ pub struct FormulaSurface {
     e: [Formula; 3],
     ranges: Ranges,
     parameters: [f64; 3],
-}
-
-/// Checks a parameter interval: finite ends, `lo < hi` (or `lo ≠ hi` when `distinct` suffices).
-pub(crate) fn check_interval(name: &'static str, (lo, hi): (f64, f64), distinct: bool) -> Result<()> {
-    if !(lo.is_finite() && hi.is_finite()) || lo.abs() > MAX_COORD || hi.abs() > MAX_COORD {
-        return Err(Error::parameter(name, crate::msg!("interval-not-finite", lo = lo, hi = hi)));
-    }
-    if (distinct && lo == hi) || (!distinct && lo >= hi) {
-        let reason = if distinct { "interval-equal" } else { "interval-order" };
-        return Err(Error::parameter(name, Message::new(reason).with("lo", lo).with("hi", hi)));
-    }
-    Ok(())
 }
 
 /// Checks the named parameters' values.
@@ -190,7 +178,11 @@ pub(crate) fn short(x: f64) -> String {
 mod tests {
     use super::*;
     use crate::assert_near;
-    use crate::examples::AnalyticSurface;
+    use crate::catalogue::AnalyticSurface;
+    #[allow(unused_imports)]
+    use crate::congruence::SmoothCongruence;
+    #[allow(unused_imports)]
+    use crate::ruled::SmoothRuled;
     use crate::tolerance::test::EXACT;
 
     fn spec(a: [&str; 3], e: [&str; 3], u: (f64, f64)) -> FormulaSpec {

@@ -1,22 +1,13 @@
-//! Analytic ruled surfaces x(u, v) = a(u) + v d(u) with their exact striction curve,
-//! distribution parameter and central tangent (Section 2), to test the discrete invariants
-//! against and to draw the paper's figures from.
-//!
-//! For any parametrisation, with e = d/|d| and e′ = (d′ − (d′·e)e)/|d| (ERRATA.md):
-//!
-//! - striction point s(u) = a − ((a′·e′)/(e′·e′)) e,
-//! - distribution parameter δ(u) = det(a′, e, e′)/(e′·e′),
-//! - central tangent direction e₃ = e × e′/|e × e′|.
-//!
-//! A cylindrical ruling (e′ = 0) has no striction point and δ = 0 (it is torsal).
-//! Several surfaces also have closed forms for s and δ, which the tests check the general
-//! formulas against.
+//! Analytic ruled surfaces x(u, v) = a(u) + v d(u) (Section 2) in closed form, to test the
+//! discrete invariants against and to draw the paper's figures from; their exact striction
+//! curve, distribution parameter and central tangent come from their jets
+//! ([`crate::ruled::SmoothRuled`]). Several surfaces also have closed forms for s and δ, which
+//! the tests check the general formulas against.
 
 use super::formula_surface::{FormulaSpec, FormulaSurface};
+use crate::base::{Jet, Ranges};
 use crate::error::{Error, Result};
-use crate::line::{Line, Segment};
-use crate::ruled::RuledSurface;
-use crate::tolerance::MAX_SAMPLES;
+use crate::ruled::SmoothRuled;
 use glam::DVec3;
 use std::f64::consts::{FRAC_PI_4, TAU};
 use std::sync::Arc;
@@ -73,39 +64,6 @@ pub enum AnalyticSurface {
 
 /// β = −atan(r/p) for r = 1, p = 0.4: rulings orthogonal to the striction helix.
 pub const ORTHOGONAL_SLOPE: f64 = -1.190_289_949_682_531_7;
-
-/// a(u), a′(u), d(u), d′(u): what the exact invariants need.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Jet {
-    /// Directrix point a(u).
-    pub a: DVec3,
-    /// a′(u).
-    pub da: DVec3,
-    /// Ruling vector d(u) (not necessarily unit).
-    pub d: DVec3,
-    /// d′(u).
-    pub dd: DVec3,
-}
-
-impl Jet {
-    /// Unit ruling direction e and its derivative e′.
-    pub fn frame(&self) -> (DVec3, DVec3) {
-        let len = self.d.length();
-        let e = self.d / len;
-        (e, (self.dd - self.dd.dot(e) * e) / len)
-    }
-}
-
-/// Default sampling ranges of a surface, for figures and examples.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Ranges {
-    /// Parameter interval of the rulings.
-    pub u: (f64, f64),
-    /// Interval of v: the segments run from a + v₀d to a + v₁d.
-    pub v: (f64, f64),
-    /// Whether u wraps around (the surface is closed in u).
-    pub closed: bool,
-}
 
 impl AnalyticSurface {
     /// Every surface, with the parameters of the paper's examples.
@@ -243,115 +201,22 @@ impl AnalyticSurface {
             },
         }
     }
+}
 
-    /// The surface point x(u, v) = a(u) + v d(u).
-    pub fn point(&self, u: f64, v: f64) -> DVec3 {
-        let j = self.jet(u);
-        j.a + v * j.d
+impl SmoothRuled for AnalyticSurface {
+    fn name(&self) -> &str {
+        AnalyticSurface::name(self)
     }
 
-    /// The ruling R(u) as an oriented line (direction e = d/|d|).
-    pub fn line(&self, u: f64) -> Line {
-        let j = self.jet(u);
-        Line { point: j.a, dir: j.d.normalize() }
+    fn jet(&self, u: f64) -> Jet {
+        AnalyticSurface::jet(self, u)
     }
 
-    /// Exact striction point s(u) = a − ((a′·e′)/(e′·e′)) e; `None` on a cylindrical ruling.
-    pub fn striction(&self, u: f64) -> Option<DVec3> {
-        let j = self.jet(u);
-        let (e, de) = j.frame();
-        let de2 = de.length_squared();
-        (de2 > 0.0).then(|| j.a - (j.da.dot(de) / de2) * e)
-    }
-
-    /// Exact distribution parameter δ(u) = det(a′, e, e′)/(e′·e′); 0 on a cylindrical ruling.
-    pub fn distribution(&self, u: f64) -> f64 {
-        let j = self.jet(u);
-        let (e, de) = j.frame();
-        let de2 = de.length_squared();
-        if de2 > 0.0 {
-            j.da.dot(e.cross(de)) / de2
-        } else {
-            0.0
+    fn checked_jet(&self, u: f64) -> Result<Jet> {
+        match self {
+            AnalyticSurface::Formula(f) => f.checked_jet(u),
+            _ => Ok(AnalyticSurface::jet(self, u)),
         }
-    }
-
-    /// Exact central tangent direction e₃ = e × e′/|e × e′| (4); `None` on a cylindrical ruling.
-    pub fn central_tangent(&self, u: f64) -> Option<DVec3> {
-        let (e, de) = self.jet(u).frame();
-        e.cross(de).try_normalize()
-    }
-
-    /// Distance of `p` from the surface (rulings extended to whole lines), searching the
-    /// rulings with u in `[u0, u1]`: a scan of 64 rulings, then golden-section refinement of
-    /// the point-to-line distance around the best one.
-    pub fn distance_to(&self, p: DVec3, u0: f64, u1: f64) -> f64 {
-        let f = |u: f64| self.line(u).distance_to(p);
-        let samples = 64;
-        let h = (u1 - u0) / samples as f64;
-        let best = (0..=samples).map(|i| u0 + i as f64 * h).fold((u0, f64::INFINITY), |(bu, bf), u| {
-            let fu = f(u);
-            if fu < bf {
-                (u, fu)
-            } else {
-                (bu, bf)
-            }
-        });
-        let (mut lo, mut hi) = (best.0 - h, best.0 + h);
-        let g = 0.5 * (5f64.sqrt() - 1.0);
-        let (mut c, mut d) = (hi - g * (hi - lo), lo + g * (hi - lo));
-        let (mut fc, mut fd) = (f(c), f(d));
-        for _ in 0..80 {
-            if fc < fd {
-                hi = d;
-                d = c;
-                fd = fc;
-                c = hi - g * (hi - lo);
-                fc = f(c);
-            } else {
-                lo = c;
-                c = d;
-                fc = fd;
-                d = lo + g * (hi - lo);
-                fd = f(d);
-            }
-        }
-        best.1.min(fc).min(fd)
-    }
-
-    /// The parameters u_i of [`AnalyticSurface::sample`]: `count` equally spaced values in
-    /// [u₀, u₁] (u₁ excluded when `closed`, so a closed surface is not sampled twice at the seam).
-    pub fn parameters(count: usize, r: Ranges) -> Vec<f64> {
-        let intervals = if r.closed { count } else { count.saturating_sub(1).max(1) };
-        let step = (r.u.1 - r.u.0) / intervals as f64;
-        (0..count).map(|i| r.u.0 + i as f64 * step).collect()
-    }
-
-    /// `count` rulings at the [`parameters`](AnalyticSurface::parameters), each the segment
-    /// from a + v₀d to a + v₁d.
-    pub fn sample(&self, count: usize, r: Ranges) -> Result<RuledSurface> {
-        if count > MAX_SAMPLES {
-            return Err(Error::TooMany { what: "samples", got: count, max: MAX_SAMPLES });
-        }
-        for (name, x) in [("uMin", r.u.0), ("uMax", r.u.1), ("vMin", r.v.0), ("vMax", r.v.1)] {
-            if !x.is_finite() {
-                return Err(Error::parameter(name, format!("must be a finite number, got {x}")));
-            }
-        }
-        if r.v.0 == r.v.1 {
-            return Err(Error::parameter("vMax", "must differ from vMin (segments of zero length)"));
-        }
-        let segments = Self::parameters(count, r)
-            .into_iter()
-            .map(|u| {
-                let j = match self {
-                    AnalyticSurface::Formula(f) => f.checked_jet(u)?,
-                    _ => self.jet(u),
-                };
-                Ok(Segment::new(j.a + r.v.0 * j.d, j.a + r.v.1 * j.d))
-            })
-            .collect::<Result<Vec<Segment>>>()?;
-        RuledSurface::new(segments)
     }
 }
 
