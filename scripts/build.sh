@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the package into pkg/ (release wasm with LTO, wasm-bindgen --target web, wasm-opt;
-# skipped when pkg/ is newer than the compiled wasm) and the one-file builds into dist/.
+# skipped when pkg/ is newer than the compiled wasm; pkg/catalogue.js, the catalogue's formula
+# texts for the page) and the one-file builds into dist/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -9,6 +10,7 @@ raw=target/wasm32-unknown-unknown/release/ruledlab.wasm
 cargo build --release --target wasm32-unknown-unknown --lib --quiet
 if [ pkg/ruledlab_bg.wasm -nt "$raw" ] && [ pkg/ruledlab.js -nt "$raw" ]; then
   echo "build: pkg/ is up to date"
+  [ pkg/catalogue.js -nt pkg/ruledlab_bg.wasm ] || node scripts/catalogue.mjs
   node scripts/onefile.mjs
   exit 0
 fi
@@ -19,4 +21,5 @@ node_modules/.bin/wasm-opt -O3 pkg/ruledlab_bg.wasm -o pkg/ruledlab_bg.wasm
 size=$(stat -c %s pkg/ruledlab_bg.wasm)
 gz=$(gzip -9 -c pkg/ruledlab_bg.wasm | wc -c)
 echo "build: pkg/ruledlab_bg.wasm $((size / 1024)) KiB, $((gz / 1024)) KiB gzipped"
+node scripts/catalogue.mjs
 node scripts/onefile.mjs

@@ -110,8 +110,8 @@ pub use io::Imported;
 
 // formulas, and the catalogue of analytic surfaces and congruences
 pub use catalogue::{
-    AnalyticCongruence, AnalyticSurface, CongruenceSpec, FormulaCongruence, FormulaSpec, FormulaSurface,
-    ORTHOGONAL_SLOPE,
+    AnalyticCongruence, AnalyticSurface, CongruenceSpec, CongruenceTexts, FormulaCongruence, FormulaSpec,
+    FormulaSurface, SurfaceTexts, CONGRUENCE_FORMULAS, ORTHOGONAL_SLOPE, SURFACE_FORMULAS,
 };
 pub use formula::check::{decimal_commas, CONSTANTS as FORMULA_CONSTANTS, FUNCTIONS as FORMULA_FUNCTIONS};
 pub use formula::dual::Dual;

@@ -32,19 +32,6 @@
  * @property {string} label          i18n key; the text may use R_{i,i+1}-style subscripts
  * @property {(params: Params) => boolean} [when]   shown only when true
  *
- * What a scene is.
- * @typedef {object} Scene
- * @property {string} id             its name in links and in <ruled-view scene="…">
- * @property {string} title          i18n key
- * @property {string} text           i18n key of its explanation (markup from the project's own files)
- * @property {Param[]} params
- * @property {LegendEntry[]} legend
- * @property {boolean} [paper]       whether the scene reproduces a figure of the paper
- * @property {(params: Params, context: Context) => Built} create
- * @property {(option: string) => string | null} [fieldOf]
- *   the key of the parameter an error's `details.option` concerns (e.g. a formula "a[1]"), so
- *   the page can mark that field
- *
  * What create() is given besides the parameters.
  * @typedef {object} Context
  * @property {(key: string, vars?: Record<string, string | number>) => string} t
@@ -118,6 +105,25 @@
  * @property {string} type
  */
 
+/**
+ * What a scene is. `P` types its parameters (each scene writes its own, as the values its
+ * controls give: a range a number, a checkbox a boolean, a menu or a field a string).
+ * @template {Params} [P=Params]
+ * @typedef {object} Scene
+ * @property {string} id             its name in links and in <ruled-view scene="…">
+ * @property {string} title          i18n key
+ * @property {string} text           i18n key of its explanation (markup from the project's own files)
+ * @property {Param[]} params
+ * @property {LegendEntry[]} legend
+ * @property {boolean} [paper]       whether the scene reproduces a figure of the paper
+ * @property {{make(params: P, context: Context): Built}['make']} create
+ *   what is drawn, said and exported for these parameters (a method: a scene of typed
+ *   parameters is a scene of Params)
+ * @property {(option: string) => string | null} [fieldOf]
+ *   the key of the parameter an error's `details.option` concerns (e.g. a formula "a[1]"), so
+ *   the page can mark that field
+ */
+
 /** Hash keys the page itself uses: no scene parameter may take them. */
 export const RESERVED_KEYS = Object.freeze(['scene', 'cam', 'embed', 'controls', 'text', 'lang', 'autoplay', 'data', 'note', 'view', 'paper']);
 
@@ -127,8 +133,9 @@ export const MAX_TEXT_PARAM = 1000;
 /**
  * Checks a scene against the contract (keys unique, none reserved, defaults valid); throws at
  * start-up so that a broken scene never reaches a user.
- * @param {Scene} scene
- * @returns {Scene}
+ * @template {Params} P
+ * @param {Scene<P>} scene
+ * @returns {Scene<P>}
  */
 export function defineScene(scene) {
   const seen = new Set();

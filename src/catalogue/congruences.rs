@@ -192,14 +192,19 @@ impl AnalyticCongruence {
         }
     }
 
-    /// The congruence of that name.
+    /// The congruence of that name, or an entry of the catalogue that exists only as formulas
+    /// ([`super::texts::CONGRUENCES`], e.g. "ellipsoid-normals").
     pub fn by_name(name: &str) -> Result<Self> {
-        Self::ALL.into_iter().find(|c| c.name() == name).ok_or_else(|| {
-            Error::parameter(
-                "name",
-                format!("unknown congruence \"{name}\"; known: sphere, hyperbolic-paraboloid, example5"),
-            )
-        })
+        if let Some(c) = Self::ALL.into_iter().find(|c| c.name() == name) {
+            return Ok(c);
+        }
+        match super::texts::congruence(name) {
+            Some(texts) => Self::from_formulas(&texts.spec()?),
+            None => {
+                let names: Vec<&str> = super::texts::CONGRUENCES.iter().map(|t| t.name).collect();
+                Err(Error::parameter("name", format!("unknown congruence \"{name}\"; known: {}", names.join(", "))))
+            }
+        }
     }
 
     /// The parameter square of the paper's figure and its grid size.

@@ -8,7 +8,9 @@
 pub mod congruences;
 pub mod formula_surface;
 pub mod surfaces;
+pub mod texts;
 
 pub use congruences::{AnalyticCongruence, CongruenceSpec, FormulaCongruence};
 pub use formula_surface::{FormulaSpec, FormulaSurface};
 pub use surfaces::{AnalyticSurface, ORTHOGONAL_SLOPE};
+pub use texts::{CongruenceTexts, SurfaceTexts, CONGRUENCES as CONGRUENCE_FORMULAS, SURFACES as SURFACE_FORMULAS};

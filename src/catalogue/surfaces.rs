@@ -126,12 +126,19 @@ impl AnalyticSurface {
         FormulaSurface::new(spec).map(|f| AnalyticSurface::Formula(Arc::new(f)))
     }
 
-    /// The surface of that [`name`](AnalyticSurface::name).
+    /// The surface of that [`name`](AnalyticSurface::name), or an entry of the catalogue that
+    /// exists only as formulas ([`super::texts::SURFACES`], e.g. "moebius").
     pub fn by_name(name: &str) -> Result<Self> {
-        Self::ALL.into_iter().find(|s| s.name() == name).ok_or_else(|| {
-            let names: Vec<&str> = Self::ALL.iter().map(|s| s.name()).collect();
-            Error::parameter("name", format!("unknown surface \"{name}\"; known: {}", names.join(", ")))
-        })
+        if let Some(s) = Self::ALL.into_iter().find(|s| s.name() == name) {
+            return Ok(s);
+        }
+        match super::texts::surface(name) {
+            Some(texts) => Self::from_formulas(&texts.spec()?),
+            None => {
+                let names: Vec<&str> = super::texts::SURFACES.iter().map(|t| t.name).collect();
+                Err(Error::parameter("name", format!("unknown surface \"{name}\"; known: {}", names.join(", "))))
+            }
+        }
     }
 
     /// Default sampling ranges.

@@ -2,14 +2,14 @@
 //! congruences typed as formulas (see [`crate::formula`]). The options object is read by
 //! serde-wasm-bindgen, unknown keys refused.
 
-use super::args::required;
+use super::args::{required, to_js};
 use super::congruence::AnalyticCongruence;
 use super::error::{fail, fail_option};
 use super::surface::AnalyticSurface;
 use crate::catalogue::{self as examples, CongruenceSpec, FormulaSpec};
 use crate::formula::{check, Formula, PARAMETERS};
 use serde::de::{self, Deserializer, Visitor};
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -59,6 +59,26 @@ export interface CongruenceFormulas {
   cols?: number;
   /** As in `SurfaceFormulas`. */
   decimalComma?: boolean;
+}
+
+/** A surface of the catalogue as formulas (`AnalyticSurface.formulaPresets()`): `fromFormulas` of it is that surface. */
+export interface SurfacePreset {
+  name: string;
+  a: [string, string, string]; e: [string, string, string];
+  u: [string, string]; v: [string, string];
+  closed: boolean;
+  parameters: { a: number; b: number; c: number };
+}
+
+/** A congruence of the catalogue as formulas (`AnalyticCongruence.formulaPresets()`). */
+export interface CongruencePreset {
+  name: string;
+  p: [string, string, string]; e: [string, string, string];
+  u: [string, string]; v: [string, string];
+  rows: number; cols: number;
+  parameters: { a: number; b: number; c: number };
+  /** Segment length along e that passes the focal points (the focal scene's lines). */
+  reach: number;
 }
 "#;
 
@@ -170,8 +190,67 @@ fn interval(
     Ok((value(0)?, value(1)?))
 }
 
+/// The values of a, b, c as an object.
+#[derive(Serialize)]
+struct Values {
+    a: f64,
+    b: f64,
+    c: f64,
+}
+
+impl From<[f64; 3]> for Values {
+    fn from([a, b, c]: [f64; 3]) -> Self {
+        Values { a, b, c }
+    }
+}
+
+/// `SurfacePreset`, written by serde.
+#[derive(Serialize)]
+struct SurfacePreset {
+    name: &'static str,
+    a: [&'static str; 3],
+    e: [&'static str; 3],
+    u: [&'static str; 2],
+    v: [&'static str; 2],
+    closed: bool,
+    parameters: Values,
+}
+
+/// `CongruencePreset`, written by serde.
+#[derive(Serialize)]
+struct CongruencePreset {
+    name: &'static str,
+    p: [&'static str; 3],
+    e: [&'static str; 3],
+    u: [&'static str; 2],
+    v: [&'static str; 2],
+    rows: usize,
+    cols: usize,
+    parameters: Values,
+    reach: f64,
+}
+
 #[wasm_bindgen]
 impl AnalyticSurface {
+    /// Every surface of the catalogue as formulas, in menu order: the presets of "Your
+    /// surface". `fromFormulas` of a preset is the surface of its name (tested to 1e-12).
+    #[wasm_bindgen(js_name = formulaPresets, unchecked_return_type = "SurfacePreset[]")]
+    pub fn formula_presets() -> Result<JsValue, JsValue> {
+        let list: Vec<SurfacePreset> = examples::SURFACE_FORMULAS
+            .iter()
+            .map(|t| SurfacePreset {
+                name: t.name,
+                a: t.a,
+                e: t.e,
+                u: t.u,
+                v: t.v,
+                closed: t.closed,
+                parameters: t.parameters.into(),
+            })
+            .collect();
+        to_js("AnalyticSurface.formulaPresets", &list)
+    }
+
     /// A surface typed as formulas (`SurfaceFormulas`): everything the built-in surfaces do,
     /// with a′ and e′ differentiated exactly. Throws with the formula and column of a syntax
     /// error, or the parameter where a value is not finite or e(u) vanishes.
@@ -200,6 +279,27 @@ impl AnalyticSurface {
 
 #[wasm_bindgen]
 impl AnalyticCongruence {
+    /// Every congruence of the catalogue as formulas, in menu order: the presets of "Your
+    /// congruence" and the focal scene's congruences.
+    #[wasm_bindgen(js_name = formulaPresets, unchecked_return_type = "CongruencePreset[]")]
+    pub fn formula_presets() -> Result<JsValue, JsValue> {
+        let list: Vec<CongruencePreset> = examples::CONGRUENCE_FORMULAS
+            .iter()
+            .map(|t| CongruencePreset {
+                name: t.name,
+                p: t.p,
+                e: t.e,
+                u: t.u,
+                v: t.v,
+                rows: t.grid.0,
+                cols: t.grid.1,
+                parameters: t.parameters.into(),
+                reach: t.reach,
+            })
+            .collect();
+        to_js("AnalyticCongruence.formulaPresets", &list)
+    }
+
     /// A congruence typed as formulas (`CongruenceFormulas`), with exact derivatives.
     #[wasm_bindgen(js_name = fromFormulas)]
     pub fn from_formulas(

@@ -111,3 +111,32 @@ test('congruence formulas name their errors too', () => {
   assert.equal(e.code, 'parse-error');
   assert.match(e.message, /p\[1\]: unknown name "w" at column 1; known: u, v, a, b, c, pi, e/);
 });
+
+test('the page’s formula presets are the core’s catalogue: each typed preset is its surface or congruence to 1e-12', async () => {
+  const { SURFACE_PRESETS, CONGRUENCE_PRESETS } = await import('../../pkg/catalogue.js');
+  assert.deepEqual(SURFACE_PRESETS, AnalyticSurface.formulaPresets(), 'pkg/catalogue.js is stale');
+  assert.deepEqual(CONGRUENCE_PRESETS, AnalyticCongruence.formulaPresets(), 'pkg/catalogue.js is stale');
+  const u = new Float64Array([0.1, 0.4, 0.9]);
+  for (const preset of SURFACE_PRESETS) {
+    const { name, ...formulas } = preset;
+    using([AnalyticSurface.fromFormulas(formulas), AnalyticSurface.byName(name)], (typed, named) => {
+      using([typed.sample(24), named.sample(24)], (a, b) => {
+        const [x, y] = [a.segments(), b.segments()];
+        x.forEach((v, i) => assert.ok(near(v, y[i]), `${name}: segment coordinate ${i}: ${v} vs ${y[i]}`));
+      });
+      const [s, t] = [typed.distribution(u), named.distribution(u)];
+      s.forEach((v, i) => assert.ok(near(v, t[i]), `${name}: δ`));
+    });
+  }
+  for (const preset of CONGRUENCE_PRESETS) {
+    const { name, reach, ...formulas } = preset;
+    assert.ok(reach > 0);
+    using([AnalyticCongruence.fromFormulas(formulas), AnalyticCongruence.byName(name)], (typed, named) => {
+      using([typed.grid(), named.grid()], (a, b) => {
+        const [x, y] = [a.segments(), b.segments()];
+        assert.equal(x.length, y.length);
+        x.forEach((v, i) => assert.ok(near(v, y[i]), `${name}: coordinate ${i}`));
+      });
+    });
+  }
+});

@@ -1,6 +1,6 @@
 // Your data: rulings (or a congruence) pasted or uploaded as CSV or JSON, with its invariants.
 import { LineCongruence, RuledSurface } from '../../pkg/ruledlab.js';
-import { focalFigure } from './focal.js';
+import { focalFigure } from '../figures/focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { stripIndices, gridIndices } from '../gl/mesh.js';
 

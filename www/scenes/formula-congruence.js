@@ -2,23 +2,16 @@
 // Section 5 like the paper's examples.
 import { AnalyticCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { congruenceFigure, SCHEME_PARAMS, LEGEND } from './congruence.js';
-import { focalFigure } from './focal.js';
+import { congruenceFigure, SCHEME_PARAMS, LEGEND } from '../figures/congruence.js';
+import { focalFigure } from '../figures/focal.js';
+import { CONGRUENCE_PRESETS, congruencePreset } from '../catalogue.js';
 
-/** Congruences as formulas: p, e, u and v ranges, grid, a, b, c. */
-export const PRESETS = {
-  example5: { p: ['u', 'v', 'sin(2*u + 1.5*v)/2'], e: ['u', 'v', 'sin(u) + 1.3*cos(v)'], u: ['-1.1', '1.1'], v: ['-1.1', '1.1'], grid: [8, 7], abc: [1, 1, 1] },
-  sphere: { p: ['cos(v)*cos(u)', 'cos(v)*sin(u)', 'sin(v)'], e: ['cos(v)*cos(u) + 0.3*sin(2*v)', 'cos(v)*sin(u) + 0.3*cos(3*u)', 'sin(v) + 0.3*u*v'], u: ['-0.8', '0.8'], v: ['-0.6', '0.6'], grid: [6, 6], abc: [1, 1, 1] },
-  'hyperbolic-paraboloid': { p: ['u', 'v', 'u*v'], e: ['-v + 0.3*cos(2*v)', '-u + 0.3*sin(u)', '1'], u: ['-1', '1'], v: ['-1', '1'], grid: [6, 6], abc: [1, 1, 1] },
-  'ellipsoid-normals': { p: ['a*cos(v)*cos(u)', 'b*cos(v)*sin(u)', 'c*sin(v)'], e: ['-cos(v)*cos(u)/a', '-cos(v)*sin(u)/b', '-sin(v)/c'], u: ['-1', '1'], v: ['-0.7', '0.7'], grid: [8, 8], abc: [1.6, 1.2, 0.8] },
-  'two-lines': { p: ['u', '0', '-1'], e: ['v - u', 'a*v', '2'], u: ['-1', '1'], v: ['-1', '1'], grid: [7, 7], abc: [1, 1, 1] },
-};
-
+/** The formula fields a catalogue congruence fills in (its texts from the core), its grid and a, b, c. */
 /** @returns {import('../scene.js').Params} */
 function presetParams(/** @type {string} */ name) {
-  const c = PRESETS[/** @type {keyof typeof PRESETS} */ (name)];
+  const c = congruencePreset(name);
   if (!c) return {};
-  return { px: c.p[0], py: c.p[1], pz: c.p[2], ex: c.e[0], ey: c.e[1], ez: c.e[2], umin: c.u[0], umax: c.u[1], vmin: c.v[0], vmax: c.v[1], rows: c.grid[0], cols: c.grid[1], a: c.abc[0], b: c.abc[1], c: c.abc[2] };
+  return { px: c.p[0], py: c.p[1], pz: c.p[2], ex: c.e[0], ey: c.e[1], ez: c.e[2], umin: c.u[0], umax: c.u[1], vmin: c.v[0], vmax: c.v[1], rows: c.rows, cols: c.cols, a: c.parameters.a, b: c.parameters.b, c: c.parameters.c };
 }
 
 const START = presetParams('example5');
@@ -27,12 +20,14 @@ const formula = (/** @type {string} */ key) => ({ key, label: `formulaCongruence
 /** @type {Record<string, string>} */
 const FIELDS = { 'p[0]': 'px', 'p[1]': 'py', 'p[2]': 'pz', 'e[0]': 'ex', 'e[1]': 'ey', 'e[2]': 'ez', 'u[0]': 'umin', 'u[1]': 'umax', 'v[0]': 'vmin', 'v[1]': 'vmax', u: 'umin', v: 'vmin', e: 'ex', rows: 'rows', cols: 'cols' };
 
+/** @typedef {{preset: string, px: string, py: string, pz: string, ex: string, ey: string, ez: string, umin: string, umax: string, vmin: string, vmax: string, rows: number, cols: number, a: number, b: number, c: number, scheme: string, steps: number, director: boolean, second: boolean, focal: boolean}} FormulaCongruenceParams */
+
 export const scene = defineScene({
   id: 'formula-congruence',
   title: 'formulaCongruence.title',
   text: 'formulaCongruence.text',
   params: [
-    { key: 'preset', label: 'formula.param.preset', type: 'select', value: 'example5', options: () => Object.keys(PRESETS).map((k) => [k, `congruence.${k}`]), sets: (v) => presetParams(String(v)) },
+    { key: 'preset', label: 'formula.param.preset', type: 'select', value: 'example5', options: () => CONGRUENCE_PRESETS.map((k) => [k.name, `congruence.${k.name}`]), sets: (v) => presetParams(String(v)) },
     formula('px'), formula('py'), formula('pz'), formula('ex'), formula('ey'), formula('ez'),
     formula('umin'), formula('umax'), formula('vmin'), formula('vmax'),
     { key: 'rows', label: 'formulaCongruence.param.rows', type: 'range', min: 2, max: 30, step: 1, value: 8 },
@@ -50,6 +45,7 @@ export const scene = defineScene({
     { style: 'torsal', label: 'focal.legend.torsal', when: (p) => !!p.focal },
   ],
   fieldOf: (option) => FIELDS[option] ?? null,
+  /** @param {FormulaCongruenceParams} p */
   create(p, ctx) {
     return scoped((own) => {
       const analytic = own(
@@ -65,7 +61,7 @@ export const scene = defineScene({
           decimalComma: ctx.lang === 'de',
         }),
       );
-      const built = congruenceFigure(own, analytic, /** @type {any} */ (p), ctx, 'formula');
+      const built = congruenceFigure(own, analytic, p, ctx, 'formula');
       if (p.focal) {
         // beyond the paper: the focal sheets and torsal directions of the given grid (scene "Focal surfaces")
         const focal = focalFigure(own, own(analytic.grid()), { sheets: true, torsal: true }, ctx);

@@ -3,34 +3,21 @@
 // bending, the approximate development, and subdivision. The core parses the formulas and
 // differentiates them exactly; the formulas live in the link, so a lecturer can link an exercise.
 import { AnalyticSurface } from '../../pkg/ruledlab.js';
-import { defineScene, scoped, bounds } from '../scene.js';
-import { stripIndices } from '../gl/mesh.js';
-import { strictionFigure } from './striction.js';
-import { convergenceFigure } from './convergence.js';
-import { isometryFigure } from './isometry.js';
+import { defineScene, scoped } from '../scene.js';
+import { strictionFigure } from '../figures/striction.js';
+import { convergenceFigure } from '../figures/convergence.js';
+import { isometryFigure } from '../figures/isometry.js';
+import { subdivisionFigure } from '../figures/subdivision.js';
+import { SURFACE_PRESETS, surfacePreset } from '../catalogue.js';
 
-/** The built-in surfaces (and a few more) as formulas: a(u), e(u), u range, v range, closed, a, b, c. */
-export const PRESETS = {
-  hyperboloid: { a: ['a*cos(u)', 'b*sin(u)', '0'], e: ['-a*sin(u)', 'b*cos(u)', 'c'], u: ['0', '2*pi'], v: ['-1', '1'], closed: true, abc: [1, 2, 3] },
-  quartic: { a: ['1', 'u^2/2', 'u'], e: ['u^2', 'u', '-1'], u: ['-1', '1'], v: ['-1', '1'], closed: false, abc: [1, 1, 1] },
-  helicoid: { a: ['0', '0', 'a*u'], e: ['cos(u)', 'sin(u)', '0'], u: ['0', '4*pi'], v: ['-1', '1'], closed: false, abc: [0.5, 1, 1] },
-  helical: { a: ['cos(u)', 'sin(u)', 'a*u'], e: ['-cos(b)*sin(u)', 'cos(b)*cos(u)', 'sin(b)'], u: ['0', '9'], v: ['-0.8', '0.8'], closed: false, abc: [0.4, 0.79, 1] },
-  'helical-orthogonal': { a: ['cos(u)', 'sin(u)', 'a*u'], e: ['-cos(b)*sin(u)', 'cos(b)*cos(u)', 'sin(b)'], u: ['0', '9'], v: ['-0.8', '0.8'], closed: false, abc: [0.4, -1.19, 1] },
-  'pluecker-conoid': { a: ['0', '0', 'sin(2*u)'], e: ['cos(u)', 'sin(u)', '0'], u: ['0', '2*pi'], v: ['-1', '1'], closed: true, abc: [1, 1, 1] },
-  'hyperbolic-paraboloid': { a: ['u', '0', '0'], e: ['0', '1', 'u'], u: ['-1', '1'], v: ['-1', '1'], closed: false, abc: [1, 1, 1] },
-  cone: { a: ['0.5', '-0.2', '1'], e: ['2*cos(u)', 'sin(u)', '1'], u: ['0', '2*pi'], v: ['0.2', '1.2'], closed: true, abc: [1, 1, 1] },
-  'helix-tangent': { a: ['cos(u)', 'sin(u)', 'a*u'], e: ['-sin(u)', 'cos(u)', 'a'], u: ['0', '2*pi'], v: ['0.1', '1.2'], closed: false, abc: [0.3, 1, 1] },
-  moebius: { a: ['cos(u)', 'sin(u)', '0'], e: ['cos(u/2)*cos(u)', 'cos(u/2)*sin(u)', 'sin(u/2)'], u: ['0', '2*pi'], v: ['-0.35', '0.35'], closed: false, abc: [1, 1, 1] },
-};
-
-/** The parameters a preset sets. */
+/** The formula fields a catalogue surface fills in (its texts from the core) and its a, b, c. */
 /** @returns {import('../scene.js').Params} */
 function presetParams(/** @type {string} */ name) {
-  const p = PRESETS[/** @type {keyof typeof PRESETS} */ (name)];
+  const p = surfacePreset(name);
   if (!p) return {};
   return {
     ax: p.a[0], ay: p.a[1], az: p.a[2], ex: p.e[0], ey: p.e[1], ez: p.e[2],
-    umin: p.u[0], umax: p.u[1], vmin: p.v[0], vmax: p.v[1], closed: p.closed, a: p.abc[0], b: p.abc[1], c: p.abc[2],
+    umin: p.u[0], umax: p.u[1], vmin: p.v[0], vmax: p.v[1], closed: p.closed, a: p.parameters.a, b: p.parameters.b, c: p.parameters.c,
   };
 }
 
@@ -45,48 +32,14 @@ const FIELDS = { 'a[0]': 'ax', 'a[1]': 'ay', 'a[2]': 'az', 'e[0]': 'ex', 'e[1]':
 /** A text parameter holding a formula. */
 const formula = (/** @type {string} */ key, /** @type {string} */ value) => ({ key, label: `formula.param.${key}`, type: /** @type {const} */ ('text'), value });
 
-/**
- * The subdivision figure of a sampled surface: old rulings, inserted rulings, and how far the
- * inserted ones are from the exact surface.
- * @param {<O extends {free(): void}>(o: O) => O} own
- * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
- * @param {{uMin: number, uMax: number, closed: boolean}} ranges
- * @param {{n: number, scheme: string, steps: number}} p
- * @param {import('../scene.js').Context} ctx
- * @returns {import('../scene.js').Built}
- */
-export function subdivisionFigure(own, analytic, ranges, p, { t }) {
-  const surface = own(analytic.sample(p.n, { ...ranges, closed: false }));
-  const steps = Number(p.steps);
-  /** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */
-  const options = p.scheme === 'lines' ? { scheme: 'four-point', space: 'lines', steps } : { scheme: /** @type {import('../../pkg/ruledlab.js').SubdivideOptions['scheme']} */ (p.scheme), steps };
-  const refined = own(surface.subdivide(options));
-  const stride = 2 ** p.steps;
-  const distance = analytic.insertedDistance(refined, stride, ranges.uMin, ranges.uMax);
-  const seg = refined.segmentsF32();
-  return {
-    bounds: bounds(seg),
-    camera: { yaw: -1.2, pitch: 0.45 },
-    layers: [
-      { kind: 'segments', style: 'given', positions: surface.segmentsF32() },
-      { kind: 'segments', style: refined.length > 400 ? 'insertedFine' : 'inserted', positions: refined.insertedF32(stride) },
-      { kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(refined.length) },
-    ],
-    readouts: [
-      { label: 'readout.rulings', value: refined.length },
-      { label: 'strip.readout.distance', value: distance, exactZero: true },
-    ],
-    description: t('formula.describeSubdivision', { n: p.n, steps: p.steps, total: refined.length, distance }),
-    data: { segments: refined.segments() },
-  };
-}
+/** @typedef {{preset: string, ax: string, ay: string, az: string, ex: string, ey: string, ez: string, umin: string, umax: string, vmin: string, vmax: string, closed: boolean, a: number, b: number, c: number, tool: string, n: number, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis: boolean, strip: boolean, u: number, h0: number, levels: number, t: number, scheme: string, steps: number}} FormulaParams */
 
 export const scene = defineScene({
   id: 'formula',
   title: 'formula.title',
   text: 'formula.text',
   params: [
-    { key: 'preset', label: 'formula.param.preset', type: 'select', value: 'hyperboloid', options: () => Object.keys(PRESETS).map((k) => [k, `surface.${k}`]), sets: (v) => presetParams(String(v)) },
+    { key: 'preset', label: 'formula.param.preset', type: 'select', value: 'hyperboloid', options: () => SURFACE_PRESETS.map((k) => [k.name, `surface.${k.name}`]), sets: (v) => presetParams(String(v)) },
     formula('ax', String(HYPERBOLOID.ax)), formula('ay', String(HYPERBOLOID.ay)), formula('az', String(HYPERBOLOID.az)),
     formula('ex', String(HYPERBOLOID.ex)), formula('ey', String(HYPERBOLOID.ey)), formula('ez', String(HYPERBOLOID.ez)),
     formula('umin', '0'), formula('umax', '2*pi'), formula('vmin', '-1'), formula('vmax', '1'),
@@ -121,6 +74,7 @@ export const scene = defineScene({
     { style: 'inserted', label: 'formula.legend.inserted', when: (p) => p.tool === 'subdivision' },
   ],
   fieldOf: (option) => FIELDS[option] ?? null,
+  /** @param {FormulaParams} p */
   create(p, ctx) {
     return scoped((own) => {
       const analytic = own(
@@ -144,7 +98,7 @@ export const scene = defineScene({
         const surface = own(analytic.sample(n, { closed: false }));
         return isometryFigure(own, surface, { layout: p.tool === 'bending' ? 'bend' : 'panels', t: Number(p.t), ghost: true, n }, ctx, 'formula');
       }
-      return strictionFigure(own, analytic, ranges, /** @type {any} */ ({ ...p, n }), ctx, 'formula');
+      return strictionFigure(own, analytic, ranges, p, ctx, 'formula');
     });
   },
 });

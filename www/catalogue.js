@@ -1,5 +1,11 @@
-// What several scenes share: the analytic surfaces as menu choices, and small helpers.
-import { AnalyticSurface, AnalyticCongruence } from '../../pkg/ruledlab.js';
+// The core's catalogue for the page (src/catalogue/): the analytic surfaces and congruences as
+// menu choices with their default ranges (read from the core once it has started), and every
+// entry as formula texts (pkg/catalogue.js, written from the core at build time), which are the
+// presets of the formula scenes and the focal scene's congruences — one source of truth.
+import { AnalyticSurface, AnalyticCongruence } from '../pkg/ruledlab.js';
+import { SURFACE_PRESETS, CONGRUENCE_PRESETS } from '../pkg/catalogue.js';
+
+export { SURFACE_PRESETS, CONGRUENCE_PRESETS };
 
 /** @type {Array<{name: string, title: string, uMin: number, uMax: number, vMin: number, vMax: number, closed: boolean}> | null} */
 let surfaces = null;
@@ -31,4 +37,14 @@ export function congruenceOptions() {
 export function rangesOf(/** @type {string} */ name, /** @type {object} */ ranges = {}) {
   const { uMin, uMax, vMin, vMax, closed } = surfaceInfo(name);
   return { uMin, uMax, vMin, vMax, closed, ...ranges };
+}
+
+/** The catalogue's surface `name` as formulas, or undefined. */
+export function surfacePreset(/** @type {string} */ name) {
+  return SURFACE_PRESETS.find((p) => p.name === name);
+}
+
+/** The catalogue's congruence `name` as formulas, or undefined. */
+export function congruencePreset(/** @type {string} */ name) {
+  return CONGRUENCE_PRESETS.find((p) => p.name === name);
 }

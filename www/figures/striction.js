@@ -1,0 +1,101 @@
+// The striction figure (Section 2, Figs. 2–3, Example 1): a sampled analytic surface with its
+// common perpendiculars, the striction polygon m_i of Proposition 2, Fig. 3's polygon of the
+// perpendiculars' midpoints, the exact striction curve, the measured orders and the linear
+// complex. Drawn by the striction scene and "Your surface".
+import { bounds, f32 } from '../scene.js';
+import { stripIndices } from '../gl/mesh.js';
+
+/**
+ * The striction figure of an analytic surface sampled with `ranges` ({uMin, uMax, vMin, vMax,
+ * closed}): shared with "Your surface".
+ * @param {<O extends {free(): void}>(o: O) => O} own
+ * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
+ * @param {{uMin: number, uMax: number, vMin?: number, vMax?: number, closed: boolean}} ranges
+ * @param {{n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis?: boolean}} p
+ * @param {import('../scene.js').Context} ctx
+ * @param {string} name   the surface's name, for the description
+ * @param {boolean} [orders]   also measure the orders from N to 2N rulings (the built-in surfaces,
+ *   about which the text makes its claim)
+ * @returns {import('../scene.js').Built}
+ */
+export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = false) {
+  const { t } = ctx;
+  const closed = ranges.closed;
+  const surface = own(analytic.sample(p.n, ranges));
+  const segments = surface.segmentsF32();
+  const inv = surface.invariants({ closed });
+  const errors = analytic.samplingErrors(p.n, ranges);
+  const exact = analytic.striction(analytic.parameters(closed ? 400 : 401, ranges));
+  /** @type {import('../scene.js').Layer[]} */
+  const layers = [{ kind: 'segments', style: 'ruling', positions: segments }];
+  if (p.normals) {
+    layers.push({ kind: 'segments', style: 'normal', positions: f32(inv.footpoints) });
+    layers.push({ kind: 'points', style: 'foot', positions: f32(inv.footpoints) });
+  }
+  if (p.exact) layers.push({ kind: 'polyline', style: 'exact', positions: f32(exact), closed });
+  if (p.midpoints) {
+    layers.push({ kind: 'polyline', style: 'perpendicularMidpoints', positions: f32(inv.perpendicularMidpoints), closed });
+    layers.push({ kind: 'points', style: 'perpendicularMidpoint', positions: f32(inv.perpendicularMidpoints) });
+  }
+  if (p.polygon) {
+    layers.push({ kind: 'polyline', style: 'striction', positions: f32(inv.striction), closed });
+    layers.push({ kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) });
+  }
+  if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: segments, indices: stripIndices(p.n, closed) });
+  // beyond the paper: the linear complex that fits the rulings (README, "Focal geometry")
+  // looser than the default 1e-9: your data and formulas carry the digits a file or a slider gave
+  const complex = surface.linearComplex({ tolerance: 1e-6 });
+  if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisSegment[0])) {
+    layers.push({ kind: 'segments', style: 'complexAxis', positions: f32(complex.axisSegment) });
+  }
+  /** @type {import('../scene.js').Readout[]} */
+  const measured = [];
+  /** @type {import('../scene.js').Claim[]} */
+  const claims = [];
+  if (orders) {
+    const finer = analytic.samplingErrors(2 * p.n, ranges);
+    const order = (/** @type {'footpoint' | 'midpoint' | 'perpendicularMidpoint'} */ k) => Math.log2(errors[k] / finer[k]);
+    const o = { footpoint: order('footpoint'), midpoint: order('midpoint'), perpendicular: order('perpendicularMidpoint') };
+    for (const [k, v] of Object.entries(o)) measured.push({ label: `striction.readout.order.${k}`, value: Number.isFinite(v) ? v : 'readout.none' });
+    if (ORDER_SURFACES.includes(name) && p.n >= 20) {
+      const near = (/** @type {number} */ x, /** @type {number} */ target) => Math.abs(x - target) <= 0.25;
+      claims.push({ text: 'striction.claim.orders', holds: near(o.footpoint, 1) && near(o.midpoint, 2) && near(o.perpendicular, 2) });
+    }
+  }
+  const middle = inv.distributionMean.length ? inv.distributionMean[Math.floor(inv.distributionMean.length / 2)] : NaN;
+  const shown = [
+    p.normals && t('striction.describe.normals'),
+    p.polygon && t('striction.describe.polygon'),
+    p.midpoints && t('striction.describe.midpoints'),
+    p.exact && t('striction.describe.exact'),
+  ].filter(Boolean);
+  return {
+    bounds: bounds(segments),
+    camera: { yaw: -0.9, pitch: 0.45 },
+    layers,
+    readouts: [
+      { label: 'readout.rulings', value: p.n },
+      { label: 'readout.parallelPairs', value: errors.parallelPairs },
+      { label: 'readout.midpointError', value: errors.midpoint, exactZero: true },
+      { label: 'readout.footpointError', value: errors.footpoint, exactZero: true },
+      { label: 'readout.perpendicularMidpointError', value: errors.perpendicularMidpoint, exactZero: true },
+      { label: 'readout.meanDelta', value: middle },
+      { label: 'focal.readout.complex', value: t(`complex.kind.${complex.kind}`) },
+      ...(complex.kind === 'complex' ? [{ label: 'focal.readout.pitch', value: Math.abs(complex.pitch) < 1e-12 ? 0 : complex.pitch, exactZero: true }] : []),
+      ...measured,
+    ],
+    claims,
+    description: t('striction.describe', {
+      surface: t(`surface.${name}`),
+      n: p.n,
+      closed: t(closed ? 'describe.closed' : 'describe.open'),
+      shown: shown.length ? shown.join(', ') : t('describe.nothingElse'),
+      midpoint: errors.midpoint,
+      footpoint: errors.footpoint,
+    }),
+    data: { segments: surface.segments() },
+  };
+}
+
+/** The surfaces on which the text claims the orders 1, 2, 2 (the others are exact or degenerate). */
+const ORDER_SURFACES = ['hyperboloid', 'quartic'];
