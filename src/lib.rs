@@ -54,10 +54,10 @@ pub use error::{
 // shared vocabulary: lines, jets, parameter ranges
 pub use base::{check_coordinates, parameters as sample_parameters, CongruenceJet, Jet, Ranges};
 pub use line::{Line, Segment};
-pub use mesh::Mesh;
+pub use mesh::{grid_indices, strip_indices, Mesh};
 
 // Section 2: discrete ruled surfaces, their invariants, convergence and accuracy
-pub use ruled::accuracy::{sampling_errors, SamplingErrors};
+pub use ruled::accuracy::{sampling_errors, sampling_orders, SamplingErrors, SamplingOrders};
 pub use ruled::convergence::{
     fit_order, study as convergence_study, Series as ConvergenceSeries, Study as ConvergenceStudy,
 };

@@ -15,18 +15,38 @@ pub struct Mesh {
     pub indices: Vec<u32>,
 }
 
-impl Mesh {
-    /// A rows × cols grid of `positions` (row-major), two triangles per quad.
-    pub fn grid(positions: Vec<DVec3>, rows: usize, cols: usize) -> Self {
-        let mut indices = Vec::with_capacity(6 * rows.saturating_sub(1) * cols.saturating_sub(1));
-        for i in 0..rows.saturating_sub(1) {
-            for j in 0..cols.saturating_sub(1) {
-                let a = (i * cols + j) as u32;
-                let (b, c) = (a + 1, a + cols as u32);
-                indices.extend([a, c, c + 1, a, c + 1, b]);
-            }
+/// Triangle indices of a rows × cols grid of vertices (row-major), two triangles per quad:
+/// (a, c, d) and (a, d, b) for the quad a = (i, j), b = (i, j + 1), c = (i + 1, j), d = (i + 1, j + 1).
+pub fn grid_indices(rows: usize, cols: usize) -> Vec<u32> {
+    let mut indices = Vec::with_capacity(6 * rows.saturating_sub(1) * cols.saturating_sub(1));
+    for i in 0..rows.saturating_sub(1) {
+        for j in 0..cols.saturating_sub(1) {
+            let a = (i * cols + j) as u32;
+            let (b, c) = (a + 1, a + cols as u32);
+            indices.extend([a, c, c + 1, a, c + 1, b]);
         }
-        Mesh { positions, indices }
+    }
+    indices
+}
+
+/// Triangle indices of a ruled strip whose vertex buffer is its segments (a_i at vertex 2i,
+/// b_i at 2i + 1): the quads a_i b_i b_{i+1} a_{i+1} as (a_i, b_i, b_{i+1}) and
+/// (a_i, b_{i+1}, a_{i+1}); `closed` adds the quad from the last ruling back to the first.
+pub fn strip_indices(rulings: usize, closed: bool) -> Vec<u32> {
+    let quads = if closed { rulings } else { rulings.saturating_sub(1) };
+    let mut indices = Vec::with_capacity(6 * quads);
+    for i in 0..quads {
+        let (a0, b0) = (2 * i as u32, 2 * i as u32 + 1);
+        let a1 = (2 * (i + 1) % (2 * rulings)) as u32;
+        indices.extend([a0, b0, a1 + 1, a0, a1 + 1, a1]);
+    }
+    indices
+}
+
+impl Mesh {
+    /// A rows × cols grid of `positions` (row-major), two triangles per quad ([`grid_indices`]).
+    pub fn grid(positions: Vec<DVec3>, rows: usize, cols: usize) -> Self {
+        Mesh { positions, indices: grid_indices(rows, cols) }
     }
 
     /// A tube of `radius` about the polyline `points`, `sides` vertices per ring. The rings
@@ -212,6 +232,15 @@ mod tests {
         let mut nan = square;
         nan[4] = f64::NAN;
         assert_eq!(Mesh::from_flat(&nan, &[0, 1, 2]).unwrap_err().code(), "not-finite");
+    }
+
+    #[test]
+    fn strip_and_grid_indices() {
+        assert_eq!(strip_indices(3, false), [0, 1, 3, 0, 3, 2, 2, 3, 5, 2, 5, 4]);
+        assert_eq!(strip_indices(2, true), [0, 1, 3, 0, 3, 2, 2, 3, 1, 2, 1, 0]);
+        assert!(strip_indices(1, false).is_empty());
+        assert_eq!(grid_indices(2, 3), [0, 3, 4, 0, 4, 1, 1, 4, 5, 1, 5, 2]);
+        assert!(grid_indices(1, 5).is_empty());
     }
 
     #[test]

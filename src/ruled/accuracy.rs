@@ -61,6 +61,39 @@ pub fn sampling_errors(surface: &(impl SmoothRuled + ?Sized), count: usize, rang
     })
 }
 
+/// Orders measured from a sampling of `count` rulings and one with the spacing halved
+/// (2·count − 1 rulings on an open range, 2·count on a closed one): log₂ of the ratio of
+/// [`SamplingErrors`]; NaN where an error is NaN or zero.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
+pub struct SamplingOrders {
+    /// Rulings of the finer sampling.
+    pub finer: usize,
+    /// Order of max |f_{i,i+1} − s(u_i)| (1 by Proposition 1).
+    pub footpoint: f64,
+    /// Order of max |m_i − s(u_i)| (2 by Proposition 2).
+    pub midpoint: f64,
+    /// Order of the perpendicular midpoints (2, ERRATA.md 6).
+    pub perpendicular_midpoint: f64,
+    /// Order of max |δ̄_i − δ(u_i)| (2 by (7)).
+    pub distribution_mean: f64,
+}
+
+/// The orders of the sampling errors of `surface` at `count` rulings (see [`SamplingOrders`]).
+pub fn sampling_orders(surface: &(impl SmoothRuled + ?Sized), count: usize, ranges: Ranges) -> Result<SamplingOrders> {
+    let finer = if ranges.closed { 2 * count } else { 2 * count - 1 };
+    let (coarse, fine) = (sampling_errors(surface, count, ranges)?, sampling_errors(surface, finer, ranges)?);
+    let order = |a: f64, b: f64| if a > 0.0 && b > 0.0 { (a / b).log2() } else { f64::NAN };
+    Ok(SamplingOrders {
+        finer,
+        footpoint: order(coarse.footpoint, fine.footpoint),
+        midpoint: order(coarse.midpoint, fine.midpoint),
+        perpendicular_midpoint: order(coarse.perpendicular_midpoint, fine.perpendicular_midpoint),
+        distribution_mean: order(coarse.distribution_mean, fine.distribution_mean),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -69,6 +102,27 @@ mod tests {
     use crate::congruence::SmoothCongruence;
     #[allow(unused_imports)]
     use crate::ruled::SmoothRuled;
+
+    /// Propositions 1 and 2 on Example 1's hyperboloid, halving the spacing exactly: orders 1,
+    /// 2, 2, 2 (open and closed samplings).
+    #[test]
+    fn measured_orders_are_the_propositions() {
+        for (s, n, slack) in [(AnalyticSurface::ALL[0].clone(), 40, 0.1), (AnalyticSurface::Quartic, 40, 0.25)] {
+            let r = s.ranges();
+            let o = sampling_orders(&s, n, r).unwrap();
+            assert_eq!(o.finer, if r.closed { 2 * n } else { 2 * n - 1 });
+            for (got, want) in
+                [(o.footpoint, 1.0), (o.midpoint, 2.0), (o.perpendicular_midpoint, 2.0), (o.distribution_mean, 2.0)]
+            {
+                assert!((got - want).abs() < slack, "{}: {o:?}", s.name());
+            }
+        }
+        // a cylinder has no striction point: NaN, never a made-up order
+        assert!(sampling_orders(&AnalyticSurface::Cylinder, 20, AnalyticSurface::Cylinder.ranges())
+            .unwrap()
+            .midpoint
+            .is_nan());
+    }
 
     /// On the hyperboloid of Example 1 the midpoint errors fall 4× when N doubles (second
     /// order), the footpoint errors 2× (first order), and closing the surface changes nothing

@@ -96,6 +96,14 @@ pub fn optional_integer(
     }
 }
 
+/// A boolean passed as an argument, `default` when left out (`undefined`).
+pub fn optional_bool(func: &str, name: &str, value: &JsValue, default: bool) -> Result<bool, JsValue> {
+    if value.is_undefined() {
+        return Ok(default);
+    }
+    value.as_bool().ok_or_else(|| fail(func, format!("{name} must be true or false, got {}", describe(value))))
+}
+
 /// An integer option in [min, max], if given (read by serde as a number, checked here so the
 /// message names the range).
 pub fn integer_option(

@@ -91,7 +91,7 @@ struct FocalJs {
     normality: Float64Array,
 }
 
-fn focal_js(func: &str, rows: usize, cols: usize, all: &[Focal]) -> Result<JsValue, JsValue> {
+pub(super) fn focal_js(func: &str, rows: usize, cols: usize, all: &[Focal]) -> Result<JsValue, JsValue> {
     let f64s = |values: Vec<f64>| Float64Array::from(&values[..]);
     let kind: Vec<u8> = all.iter().map(|f| f.kind as u8).collect();
     to_js(

@@ -8,6 +8,7 @@
 mod args;
 mod buffers;
 mod congruence;
+mod congruence_focal;
 mod error;
 mod focal;
 mod formula;

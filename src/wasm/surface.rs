@@ -58,6 +58,9 @@ export interface SamplingErrors {
 }
 
 /** One analytic surface as listed by `AnalyticSurface.list()`. */
+/** Orders measured from a sampling and one with the spacing halved (`samplingOrders`): NaN where an error vanishes. */
+export interface SamplingOrders { finer: number; footpoint: number; midpoint: number; perpendicularMidpoint: number; distributionMean: number }
+
 export interface AnalyticSurfaceInfo {
   name: string; title: string;
   uMin: number; uMax: number; vMin: number; vMax: number; closed: boolean;
@@ -592,6 +595,21 @@ impl AnalyticSurface {
         let r = self.ranges(F, opts)?;
         let e = crate::ruled::accuracy::sampling_errors(&self.inner, count, r).map_err(|e| fail(F, e))?;
         to_js(F, &e)
+    }
+
+    /// Orders measured from `count` rulings and the spacing halved (`SamplingOrders`): log₂ of
+    /// the ratio of the two samplings' errors (Propositions 1 and 2: 1, 2, 2, 2).
+    #[wasm_bindgen(js_name = samplingOrders, unchecked_return_type = "SamplingOrders")]
+    pub fn sampling_orders(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] count: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "SampleOptions")] opts: JsValue,
+    ) -> Result<JsValue, JsValue> {
+        const F: &str = "AnalyticSurface.samplingOrders";
+        let count = integer(F, "count", &count, 3, MAX_SAMPLES / 2)?;
+        let r = self.ranges(F, opts)?;
+        let o = crate::ruled::accuracy::sampling_orders(&self.inner, count, r).map_err(|e| fail(F, e))?;
+        to_js(F, &o)
     }
 
     /// Largest distance from this surface of the rulings of `refined` whose index is not a

@@ -3,8 +3,8 @@
 // shaded, every scheme compared at one step, the butterfly stencil, and Fig. 14's notation on
 // one cell; with the scheme controls and the legend the congruence scene and "Your
 // congruence" share.
+import { gridIndices } from '../../pkg/ruledlab.js';
 import { bounds } from '../scene.js';
-import { gridIndices } from '../gl/mesh.js';
 import { butterflyStencil } from '../stencil.js';
 
 /** The schemes: menu value → subdivide options. */

@@ -3,56 +3,39 @@
 // normality and the linear complex. Drawn by the focal scene, "Your congruence" and "Your data".
 
 /**
- * Segments of the lines whose kind is `kind`.
- * @param {Float32Array} segments   6 per line
- * @param {Uint8Array} kinds
- * @param {number} kind
- */
-function linesOfKind(segments, kinds, kind) {
-  const out = new Float32Array(6 * kinds.reduce((n, k) => n + (k === kind ? 1 : 0), 0));
-  let at = 0;
-  kinds.forEach((k, i) => {
-    if (k !== kind) return;
-    out.set(segments.subarray(6 * i, 6 * i + 6), at);
-    at += 6;
-  });
-  return out;
-}
-
-/**
  * The focal figure of a grid of lines: shared with "Your congruence".
  * @param {<O extends {free(): void}>(o: O) => O} own
  * @param {import('../../pkg/ruledlab.js').LineCongruence} grid
  * @param {{sheets: boolean, torsal: boolean}} p
  * @param {import('../scene.js').Context} ctx
- * @returns {{layers: import('../scene.js').Layer[], readouts: import('../scene.js').Readout[], sentence: string, positions: Float32Array[]}}
+ * @returns {{layers: import('../scene.js').Layer[], readouts: import('../scene.js').Readout[], sentence: string, positions: ArrayLike<number>[]}}
  */
 export function focalFigure(own, grid, p, { t }) {
-  const focal = grid.focal();
+  // computed once by the core; every layer below is drawn from that one computation
+  const geometry = own(grid.focalGeometry());
+  const focal = geometry.result();
   const n = focal.kind.length;
-  const count = [0, 1, 2].map((k) => focal.kind.reduce((s, x) => s + (x === k ? 1 : 0), 0));
+  const [elliptic, hyperbolic, parabolic] = geometry.counts();
+  const count = [elliptic, hyperbolic, parabolic];
   const real = Array.from(focal.normality).filter(Number.isFinite);
-  const segments = grid.segmentsF32();
   /** @type {import('../scene.js').Layer[]} */
   const layers = [
-    { kind: 'segments', style: 'focalHyperbolic', positions: linesOfKind(segments, focal.kind, 1) },
-    { kind: 'segments', style: 'focalElliptic', positions: linesOfKind(segments, focal.kind, 0) },
-    { kind: 'segments', style: 'focalParabolic', positions: linesOfKind(segments, focal.kind, 2) },
+    { kind: 'segments', style: 'focalHyperbolic', positions: geometry.linesOfKindF32(1) },
+    { kind: 'segments', style: 'focalElliptic', positions: geometry.linesOfKindF32(0) },
+    { kind: 'segments', style: 'focalParabolic', positions: geometry.linesOfKindF32(2) },
   ];
-  /** @type {Float32Array[]} */
-  const positions = [segments];
+  /** what the view frames: the lines, and each drawn sheet's box */
+  /** @type {ArrayLike<number>[]} */
+  const positions = [grid.segmentsF32()];
   if (p.sheets) {
     for (const sheet of /** @type {const} */ ([1, 2])) {
-      const mesh = grid.focalSheetF32(sheet);
+      const mesh = geometry.sheetF32(sheet);
       if (mesh.indices.length === 0) continue;
       layers.push({ kind: 'mesh', style: `focal${sheet}`, positions: mesh.positions, indices: mesh.indices, normals: mesh.normals });
-      // frame only what is drawn: vertices of kept triangles
-      const used = new Float32Array(3 * mesh.indices.length);
-      mesh.indices.forEach((v, k) => used.set(mesh.positions.subarray(3 * v, 3 * v + 3), 3 * k));
-      positions.push(used);
+      positions.push([...mesh.min, ...mesh.max]);
     }
   }
-  if (p.torsal) layers.push({ kind: 'segments', style: 'torsal', positions: grid.torsalStrokesF32() });
+  if (p.torsal) layers.push({ kind: 'segments', style: 'torsal', positions: geometry.strokesF32() });
   // looser than the default 1e-9: imported data carry the digits a file printed
   const complex = grid.linearComplex({ tolerance: 1e-6 });
   const normality = real.length ? Math.max(...real) : NaN;

@@ -1,8 +1,8 @@
 // The isometry figure (Section 3, Figs. 4–6): the hinge chain bent towards its conoidal model,
 // or the three panels of Fig. 6 (surface, conoidal model, development), in the frame of the
 // conoidal model, with ρ and Fig. 5's claims. Drawn by the isometry scene and "Your surface".
+import { stripIndices } from '../../pkg/ruledlab.js';
 import { f32 } from '../scene.js';
-import { stripIndices } from '../gl/mesh.js';
 import { multiply } from '../math.js';
 import { developmentSvg } from '../export/files.js';
 

@@ -2,8 +2,8 @@
 // common perpendiculars, the striction polygon m_i of Proposition 2, Fig. 3's polygon of the
 // perpendiculars' midpoints, the exact striction curve, the measured orders and the linear
 // complex. Drawn by the striction scene and "Your surface".
+import { stripIndices } from '../../pkg/ruledlab.js';
 import { bounds, f32 } from '../scene.js';
-import { stripIndices } from '../gl/mesh.js';
 
 /**
  * The striction figure of an analytic surface sampled with `ranges` ({uMin, uMax, vMin, vMax,
@@ -14,7 +14,7 @@ import { stripIndices } from '../gl/mesh.js';
  * @param {{n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis?: boolean}} p
  * @param {import('../scene.js').Context} ctx
  * @param {string} name   the surface's name, for the description
- * @param {boolean} [orders]   also measure the orders from N to 2N rulings (the built-in surfaces,
+ * @param {boolean} [orders]   also measure the orders, halving the spacing (the built-in surfaces,
  *   about which the text makes its claim)
  * @returns {import('../scene.js').Built}
  */
@@ -53,9 +53,9 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = fa
   /** @type {import('../scene.js').Claim[]} */
   const claims = [];
   if (orders) {
-    const finer = analytic.samplingErrors(2 * p.n, ranges);
-    const order = (/** @type {'footpoint' | 'midpoint' | 'perpendicularMidpoint'} */ k) => Math.log2(errors[k] / finer[k]);
-    const o = { footpoint: order('footpoint'), midpoint: order('midpoint'), perpendicular: order('perpendicularMidpoint') };
+    // measured by the core: the errors at N rulings against the spacing halved
+    const orders = analytic.samplingOrders(p.n, ranges);
+    const o = { footpoint: orders.footpoint, midpoint: orders.midpoint, perpendicular: orders.perpendicularMidpoint };
     for (const [k, v] of Object.entries(o)) measured.push({ label: `striction.readout.order.${k}`, value: Number.isFinite(v) ? v : 'readout.none' });
     if (ORDER_SURFACES.includes(name) && p.n >= 20) {
       const near = (/** @type {number} */ x, /** @type {number} */ target) => Math.abs(x - target) <= 0.25;

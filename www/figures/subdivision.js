@@ -1,8 +1,8 @@
 // The subdivision figure (Section 4): a sampling of a surface refined by a strip scheme, the
 // old rulings and the inserted ones, and how far the inserted ones are from the exact surface.
 // Drawn by "Your surface".
+import { stripIndices } from '../../pkg/ruledlab.js';
 import { bounds } from '../scene.js';
-import { stripIndices } from '../gl/mesh.js';
 
 /**
  * The subdivision figure of a sampled surface: old rulings, inserted rulings, and how far the

@@ -40,32 +40,6 @@ void main() {
   outColor = vec4(base.rgb * (0.45 + 0.55 * diffuse) + 0.2 * spec, base.a);
 }`;
 
-/** Triangle indices of the strip between consecutive rulings (closed: wraps around). */
-export function stripIndices(/** @type {number} */ rulings, closed = false) {
-  const quads = closed ? rulings : rulings - 1;
-  const idx = new Uint32Array(6 * Math.max(quads, 0));
-  for (let i = 0; i < quads; i++) {
-    const a0 = 2 * i, b0 = a0 + 1;
-    const a1 = (2 * (i + 1)) % (2 * rulings), b1 = a1 + 1;
-    idx.set([a0, b0, b1, a0, b1, a1], 6 * i);
-  }
-  return idx;
-}
-
-/** Triangle indices of a rows × cols grid of points (row-major), two triangles per quad. */
-export function gridIndices(/** @type {number} */ rows, /** @type {number} */ cols) {
-  const idx = new Uint32Array(6 * Math.max(rows - 1, 0) * Math.max(cols - 1, 0));
-  let m = 0;
-  for (let i = 0; i + 1 < rows; i++) {
-    for (let j = 0; j + 1 < cols; j++) {
-      const a = i * cols + j, b = a + 1, c = a + cols, d = c + 1;
-      idx.set([a, c, d, a, d, b], m);
-      m += 6;
-    }
-  }
-  return idx;
-}
-
 /** An indexed triangle mesh with one front and one back colour. */
 export class TriangleMesh {
   /**

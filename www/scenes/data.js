@@ -1,8 +1,7 @@
 // Your data: rulings (or a congruence) pasted or uploaded as CSV or JSON, with its invariants.
-import { LineCongruence, RuledSurface } from '../../pkg/ruledlab.js';
+import { LineCongruence, RuledSurface, stripIndices, gridIndices } from '../../pkg/ruledlab.js';
 import { focalFigure } from '../figures/focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
-import { stripIndices, gridIndices } from '../gl/mesh.js';
 
 /**
  * What the scene shows before anything is imported: five rulings of a small twisted strip.

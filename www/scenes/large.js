@@ -2,9 +2,8 @@
 // (up to 1 280 000 rulings) in a Web Worker with progress and cancel, the page answering
 // meanwhile. Above what the view draws smoothly, a level of detail is drawn (every k-th
 // ruling), and the readout says so.
-import { AnalyticSurface, RuledSurface, meshNormalsF32 } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, RuledSurface, meshNormalsF32, stripIndices } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds } from '../scene.js';
-import { stripIndices } from '../gl/mesh.js';
 
 /** Output sizes above this go to the worker. */
 const WORKER_THRESHOLD = 50_000;

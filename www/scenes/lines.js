@@ -1,8 +1,7 @@
 // Beyond the paper: subdivision in the space of lines. Sliding the given endpoints along their
 // lines moves the endpoint scheme's surface, but not the line-space scheme's.
-import { AnalyticSurface } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, stripIndices } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds } from '../scene.js';
-import { stripIndices } from '../gl/mesh.js';
 
 const RANGES = { hyperboloid: { uMin: 0, uMax: 3 }, helical: { uMin: 0, uMax: 6 }, quartic: { uMin: -1, uMax: 1 } };
 

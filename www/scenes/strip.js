@@ -2,9 +2,8 @@
 // 12 rulings of the quartic surface, one ruling inserted per pair, n = 12, one of the two
 // triangulations of Fig. 9 with its notation, spheres at the inserted endpoints A_i (light)
 // and B_i (dark).
-import { AnalyticSurface } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, stripIndices } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
-import { stripIndices } from '../gl/mesh.js';
 
 const U = { uMin: -1, uMax: 1, closed: false };
 /** The old ruling whose neighbourhood carries the labels of Fig. 9. */
