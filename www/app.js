@@ -198,7 +198,9 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       got = importSegments(text);
     } catch (e) {
       importError.hidden = false;
-      importError.textContent = `${describeError(e, i18n)} ${i18n.t('io.stale')}`;
+      // what stays on screen: the previous import, the example data, or the scene as it was
+      const onScreen = stage.scene?.id !== 'data' ? '' : stage.data ? i18n.t('io.stale') : i18n.t('io.staleExample');
+      importError.textContent = onScreen ? `${describeError(e, i18n)} ${onScreen}` : describeError(e, i18n);
       paste.setAttribute('aria-invalid', 'true');
       paste.setAttribute('aria-describedby', importError.id);
       return;

@@ -33,12 +33,16 @@ export class OrbitCamera {
    * @param {{min: number[], max: number[]}} box
    * @param {number} [aspect]
    */
-  fit({ min, max }, aspect = 1) {
+  fit({ min, max }, aspect = 1, { top = 0, bottom = 0 } = {}) {
     if (!min.every(Number.isFinite) || !max.every(Number.isFinite)) return;
     this.target = scale(add(min, max), 0.5);
     const radius = Math.max(length(sub(max, min)) / 2, 1e-6);
-    const half = Math.min(this.fovY / 2, Math.atan(Math.tan(this.fovY / 2) * Math.max(aspect, 1e-3)));
+    // `top` and `bottom` (fractions of the height) are covered by the legend and the toolbar:
+    // the sphere fits the band between them, and its centre moves to the band's centre
+    const band = Math.max(0.3, 1 - top - bottom);
+    const half = Math.min(Math.atan(Math.tan(this.fovY / 2) * band), Math.atan(Math.tan(this.fovY / 2) * Math.max(aspect, 1e-3)));
     this.distance = (radius / Math.sin(half)) * 1.04;
+    if (band < 1) this.pan(0, (top - bottom) / 2);
     this.home = { target: this.target, distance: this.distance, yaw: this.yaw, pitch: this.pitch };
   }
 

@@ -119,9 +119,10 @@
  * @property {{make(params: P, context: Context): Built}['make']} create
  *   what is drawn, said and exported for these parameters (a method: a scene of typed
  *   parameters is a scene of Params)
- * @property {(option: string) => string | null} [fieldOf]
- *   the key of the parameter an error's `details.option` concerns (e.g. a formula "a[1]"), so
- *   the page can mark that field
+ * @property {(option: string) => string | string[] | null} [fieldOf]
+ *   the key of the parameter an error's `details.option` concerns (e.g. a formula "a[1]"), or
+ *   the keys it may concern (an interval "u": its two ends; the one the reader changed last is
+ *   marked), so the page can mark that field
  */
 
 /** Hash keys the page itself uses: no scene parameter may take them. */

@@ -50,7 +50,8 @@ export function shareDialog(dialog, context) {
     const state = context.state();
     const hash = writeState(state);
     const base = location.href.split('#')[0];
-    const title = t(stage.scene?.title ?? '');
+    // a figure's snippets are named after the figure, others after the scene
+    const title = stage.paper ? t(stage.paper.label) : t(stage.scene?.title ?? '');
     // the script of the element snippet, and what to say about it
     /** @type {{src: string, module?: boolean}} */
     let script = { src: EMBED_FILE };
@@ -95,7 +96,7 @@ export function shareDialog(dialog, context) {
     const onefileNote = el('p', { className: 'share-note', hidden: true });
     onefile.addEventListener('click', async () => {
       try {
-        download(`ruledlab-${stage.scene?.id ?? 'view'}.html`, await oneFileWithState(oneFile, hash), 'text/html');
+        download(`ruledlab-${stage.paper?.id ?? stage.scene?.id ?? 'view'}.html`, await oneFileWithState(oneFile, hash), 'text/html');
       } catch {
         onefileNote.hidden = false;
         onefileNote.textContent = t('app.onefileMissing');

@@ -75,7 +75,10 @@ export class Stage {
     this.canvas.setAttribute('aria-describedby', this.description.id);
     this.status = el('p', { className: 'rl-sr-only' });
     this.status.setAttribute('aria-live', 'polite');
-    this.view.append(this.canvas, this.labels, this.legend, this.toolbar, this.progress, this.noteBox, this.error, this.hint, this.description, this.status);
+    // the hint and the toolbar share the bottom edge: the hint takes what room the buttons leave
+    this.bar = el('div', { className: 'rl-bar' });
+    this.bar.append(this.hint, this.toolbar);
+    this.view.append(this.canvas, this.labels, this.legend, this.bar, this.progress, this.noteBox, this.error, this.description, this.status);
 
     this.buttons = {
       fit: el('button', { type: 'button', className: 'rl-fit' }),
@@ -105,6 +108,16 @@ export class Stage {
     host.append(this.root);
 
     this.viewer = new Viewer(this.canvas, this.labels);
+    // in a narrow box the legend spans the top of the view and the buttons its bottom: the
+    // figure is framed between them
+    this.viewer.insets = () => {
+      if (!this.root.classList.contains('rl-narrow')) return { top: 0, bottom: 0 };
+      const view = this.view.getBoundingClientRect();
+      if (!view.height) return { top: 0, bottom: 0 };
+      const legend = this.legend.hidden ? null : this.legend.getBoundingClientRect();
+      const bar = this.toolbar.getBoundingClientRect();
+      return { top: legend ? Math.max(0, legend.bottom - view.top) / view.height : 0, bottom: Math.max(0, view.bottom - bar.top) / view.height };
+    };
     this.session = new SceneSession(this.viewer, {
       onBuilt: (built, final) => this.shown(built, final),
       onError: (e) => this.fail(e),
@@ -127,6 +140,8 @@ export class Stage {
     /** @type {ReturnType<typeof buildControls> | null} */
     this.controls = null;
     this.lastAnnounced = 0;
+    /** @type {string | null} the parameter the reader changed last (an error names its field) */
+    this.lastChanged = null;
     this.announceTimer = 0;
 
     this.viewer.onCameraChange = (ended) => {
@@ -212,7 +227,11 @@ export class Stage {
   setLanguage(/** @type {string | null} */ lang) {
     this.i18n = translator(pickLanguage(lang));
     this.localize();
-    if (this.scene) this.enter(this.scene, this.params, { camera: this.viewer.camera.toArray(), fit: false });
+    if (this.scene) {
+      this.enter(this.scene, this.params, { camera: this.viewer.camera.toArray(), fit: false });
+      // (a computation that fails keeps the last picture: its legend speaks the new language too)
+      showLegend(this.legend, this.scene, this.params, this.i18n.t);
+    }
   }
 
   /**
@@ -276,6 +295,7 @@ export class Stage {
       return;
     }
     const p = this.param(key);
+    this.lastChanged = key;
     this.params = { ...this.params, [key]: value, ...(p?.sets?.(value, this.params) ?? {}) };
     this.controls?.update(this.params);
     this.showPaper();
@@ -351,6 +371,8 @@ export class Stage {
     if (!this.scene) return;
     const { t } = this.i18n;
     showLegend(this.legend, this.scene, this.params, t);
+    // the legend may cover another share of a narrow view now: a fitted view is framed anew
+    if (this.root.classList.contains('rl-narrow') && this.viewer.camera.atHome()) this.viewer.fit();
     showReadout(this.readout, built.readouts ?? [], this.i18n);
     showClaims(this.claims, built.claims ?? [], t);
     this.note.hidden = !built.note;
@@ -382,13 +404,16 @@ export class Stage {
   fail(/** @type {unknown} */ e) {
     const error = /** @type {any} */ (e);
     const option = error?.details?.option;
-    const key = this.scene && option ? this.scene.fieldOf?.(option) : null;
+    // the field it concerns: of the scene's candidates, the one the reader changed last
+    const candidates = [this.scene && option ? this.scene.fieldOf?.(option) : null].flat().filter((k) => typeof k === 'string');
+    const key = candidates.includes(this.lastChanged ?? '') ? this.lastChanged : candidates[0] ?? null;
     // named as the page names it: the option's own name ("the interval of u"), else the field's
     const { t, has } = this.i18n;
     const name = option && has(`error.option.${option}`) ? t(`error.option.${option}`) : key ? this.fieldName(key) : undefined;
     const message = describeError(e, this.i18n, name);
     this.error.hidden = false;
-    this.error.textContent = message;
+    // beside its field the whole sentence; over the view (small on a phone) where to look
+    this.error.textContent = key && this.showControls ? t('error.seeField', { field: this.fieldName(key) }) : message;
     if (key) this.controls?.invalid(key, message);
     this.options.onError?.(e, message);
     return message;

@@ -91,6 +91,8 @@ export class Viewer {
     this.restTimer = 0;
     /** @type {import('./scene.js').Built | null} */
     this.built = null;
+    /** @type {(() => {top: number, bottom: number}) | null} shares of the height that overlays cover, for fit() */
+    this.insets = null;
     this.frames = 0;
     this.pending = false;
     this.lost = false;
@@ -148,7 +150,7 @@ export class Viewer {
   fit() {
     if (!this.built) return;
     if (this.built.camera) Object.assign(this.camera, this.built.camera);
-    this.camera.fit(this.built.bounds, this.aspect);
+    this.camera.fit(this.built.bounds, this.aspect, this.insets?.() ?? {});
     this.requestRender();
   }
 

@@ -206,9 +206,10 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
 /// A formula written with decimal commas, as German readers write numbers, in the grammar's
 /// spelling: a comma between two digits becomes a point ("0,5*u" → "0.5*u", columns
 /// unchanged) unless it stands in the argument list of atan2, where it could as well separate
-/// the two arguments ("atan2(1,5)"): that one is refused with the two ways to write it. Other
-/// commas stay (the argument separator of atan2 is ", ").
-pub fn decimal_commas(source: &str, text: &str) -> Result<String> {
+/// the two arguments ("atan2(1,5)"): `strict` refuses that one with the two ways to write it
+/// (a German reader's formulas), otherwise it stays a separator (an English reader's, whose
+/// decimal commas outside atan2 cannot mean anything else). Other commas stay.
+pub fn decimal_commas(source: &str, text: &str, strict: bool) -> Result<String> {
     let chars: Vec<char> = text.chars().collect();
     let mut out = chars.clone();
     // per open parenthesis: whether it holds the arguments of a function of two arguments
@@ -238,6 +239,10 @@ pub fn decimal_commas(source: &str, text: &str) -> Result<String> {
                 open.pop();
             }
             ',' if i > 0 && chars[i - 1].is_ascii_digit() && chars.get(i + 1).is_some_and(char::is_ascii_digit) => {
+                if open.last() == Some(&true) && !strict {
+                    i += 1;
+                    continue;
+                }
                 if open.last() == Some(&true) {
                     let number = |k: usize| chars[k].is_ascii_digit() || chars[k] == '.';
                     let mut a = i;
@@ -323,6 +328,7 @@ fn unexpected(c: char) -> Message {
         '−' | '–' => "hint-minus",
         '÷' | ':' => "hint-divide",
         '[' | ']' | '{' | '}' => "hint-brackets",
+        ';' => "hint-semicolon",
         _ => "hint-grammar",
     };
     // the hint is part of the sentence: its English here, its reason for other languages
@@ -340,7 +346,7 @@ mod tests {
 
     #[test]
     fn decimal_commas_are_points_outside_the_arguments_of_atan2() {
-        let d = |t: &str| decimal_commas("e[0]", t);
+        let d = |t: &str| decimal_commas("e[0]", t, true);
         assert_eq!(d("0,5*u").unwrap(), "0.5*u");
         assert_eq!(d("sin(1,25*u) - 3,0").unwrap(), "sin(1.25*u) - 3.0");
         assert_eq!(d("atan2(sin(0,5*u), 1)").unwrap(), "atan2(sin(0.5*u), 1)");
@@ -355,6 +361,8 @@ mod tests {
             "e[0]: \"1,5\" could be two arguments or a decimal comma: write 1.5 for the number, or \"1, 5\" (a space after the comma) for two arguments at column 8"
         );
         assert!(d("atan2(0,5 , 2)").is_err());
+        // read without strictness (an English reader): the comma in atan2's arguments separates
+        assert_eq!(decimal_commas("e[0]", "atan2(1,5) + 0,5", false).unwrap(), "atan2(1,5) + 0.5");
     }
 
     #[test]
@@ -392,7 +400,8 @@ mod tests {
             "a[1]: \"/\" needs an operand on its left (comments are not part of formulas) at column 4"
         );
         assert_eq!(message("2πu"), "a[1]: unexpected character \"π\" (write pi) at column 2");
-        assert_eq!(message("u; u = 2"), "a[1]: unexpected character \";\" (formulas use numbers, names, + - * / ^, parentheses and commas) at column 2");
+        assert_eq!(message("u; u = 2"), "a[1]: unexpected character \";\" (separate the two arguments of atan2 with a comma: atan2(y, x)) at column 2");
+        assert_eq!(message("u#"), "a[1]: unexpected character \"#\" (formulas use numbers, names, + - * / ^, parentheses and commas) at column 2");
         assert_eq!(message("atan2(u)"), "a[1]: atan2 takes two arguments: atan2(y, x) at column 6");
         assert_eq!(
             message("sin(u, u)"),

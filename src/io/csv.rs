@@ -23,6 +23,8 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
         return Err(Error::TooMany { what: "bytes of CSV", got: text.len(), max: MAX_TEXT });
     }
     let mut coords = Vec::new();
+    // the 1-based line of each record, for the messages of check_records
+    let mut lines: Vec<usize> = Vec::new();
     let mut header_allowed = true;
     for (index, raw) in text.lines().enumerate() {
         let line = index + 1;
@@ -30,27 +32,32 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
         if trimmed.is_empty() || trimmed.starts_with('#') {
             continue;
         }
-        // fields with their 1-based columns
-        let mut fields: Vec<(usize, &str)> = Vec::with_capacity(6);
+        // fields with their 1-based columns; a line separated by semicolons writes numbers with
+        // decimal commas (German spreadsheets: "1,5;0;0;…")
+        let decimal_comma = raw.contains(';');
+        let mut fields: Vec<(usize, std::borrow::Cow<str>)> = Vec::with_capacity(6);
         let mut start = None;
-        for (i, c) in raw.char_indices().chain(std::iter::once((raw.len(), ','))) {
-            let separator = matches!(c, ',' | ';' | '\t' | ' ');
+        for (i, c) in raw.char_indices().chain(std::iter::once((raw.len(), ' '))) {
+            let separator = matches!(c, ';' | '\t' | ' ') || (c == ',' && !decimal_comma);
             match (separator, start) {
                 (false, None) => start = Some(i),
                 (true, Some(s)) => {
-                    fields.push((raw[..s].chars().count() + 1, &raw[s..i]));
+                    let field = &raw[s..i];
+                    let field = if decimal_comma { field.replace(',', ".").into() } else { field.into() };
+                    fields.push((raw[..s].chars().count() + 1, field));
                     start = None;
                 }
                 _ => {}
             }
         }
-        let kinds: Vec<Token> = fields.iter().map(|&(_, f)| classify(f)).collect();
+        let kinds: Vec<Token> = fields.iter().map(|(_, f)| classify(f)).collect();
         if header_allowed && kinds.contains(&Token::Invalid) {
             header_allowed = false;
             continue; // a header
         }
         header_allowed = false;
-        for (&(col, f), kind) in fields.iter().zip(&kinds) {
+        for ((col, f), kind) in fields.iter().zip(&kinds) {
+            let (col, f) = (*col, f.as_ref());
             match kind {
                 Token::Invalid => return Err(fail(line, col, msg!("not-a-number", text = f))),
                 Token::NonFinite => return Err(fail(line, col, msg!("not-finite-number", text = f))),
@@ -64,7 +71,9 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
         if coords.len() / 6 >= MAX_RULINGS {
             return Err(Error::TooMany { what: "rulings in the CSV", got: coords.len() / 6 + 1, max: MAX_RULINGS });
         }
-        for &(col, f) in &fields {
+        lines.push(line);
+        for (col, f) in &fields {
+            let (col, f) = (*col, f.as_ref());
             let x = number(f);
             if !x.is_finite() {
                 return Err(fail(line, col, msg!("not-finite-number", text = f)));
@@ -75,6 +84,7 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
     if coords.is_empty() {
         return Err(Error::parse("csv", None, None, msg!("csv-no-data")));
     }
+    super::check_records("csv", &coords, |k| (lines.get(k).copied(), None))?;
     Ok(Imported { coords, grid: None })
 }
 
@@ -99,8 +109,24 @@ mod tests {
         let r = parse(text).unwrap();
         assert_eq!(r.coords, vec![0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]);
         assert_eq!(parse(&write(&r.coords)).unwrap(), r);
-        let odd = [0.1, -2.5e-300, 1.0 / 3.0, 7.0, 1e17, -0.0];
+        let odd = [0.1, -2.5e-300, 1.0 / 3.0, 7.0, 1e17, -0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
         assert_eq!(parse(&write(&odd)).unwrap().coords, odd);
+    }
+
+    /// A German spreadsheet: semicolons between the fields, decimal commas in the numbers.
+    #[test]
+    fn semicolon_lines_take_decimal_commas() {
+        let r = parse("ax;ay;az;bx;by;bz\n1,5;0;0;0;1;0\n0; 0; 1,25; -0,5; 1; 1\n").unwrap();
+        assert_eq!(r.coords, vec![1.5, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.25, -0.5, 1.0, 1.0]);
+    }
+
+    /// One record, or a record of zero length, is refused where it is, with its line.
+    #[test]
+    fn records_are_checked_where_they_are() {
+        let e = parse("0,0,0,1,0,0\n").unwrap_err();
+        assert_eq!(e.details().reason, Some("import-too-few"));
+        let e = parse("# header\n0,0,0,1,0,0\n\n2,2,2,2,2,2\n").unwrap_err();
+        assert_eq!((e.details().reason, e.details().line), (Some("import-zero-length"), Some(4)));
     }
 
     #[test]

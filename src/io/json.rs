@@ -207,8 +207,13 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
         return Err(p.fail(segments_at, msg!("json-segments-array")));
     };
     let mut coords = Vec::with_capacity(items.len().min(6 * MAX_RULINGS));
+    // where each record starts, for the messages of check_records
+    let mut starts: Vec<usize> = Vec::new();
     let nested = matches!(items.first(), Some((_, Value::Array(_))));
     for (item_at, item) in &items {
+        if nested || coords.len() % 6 == 0 {
+            starts.push(*item_at);
+        }
         match (nested, item) {
             (false, Value::Number(x)) => coords.push(*x),
             (true, Value::Array(row)) => {
@@ -234,6 +239,13 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
             return Err(p.fail(at, msg!("json-grid-count", rows = r, cols = c, need = r * c, found = coords.len() / 6)));
         }
     }
+    super::check_records("json", &coords, |k| match starts.get(k) {
+        Some(&a) => {
+            let (line, column) = position(text, a);
+            (Some(line), Some(column))
+        }
+        None => (None, None),
+    })?;
     Ok(Imported { coords, grid })
 }
 
@@ -259,9 +271,23 @@ mod tests {
         let g = parse(&write(&[flat, flat].concat(), Some((2, 2)))).unwrap();
         assert_eq!(g.grid, Some((2, 2)));
         assert_eq!(
-            parse("{\"note\": \"x\", \"segments\": [[1,2,3,4,5,6]], \"v\": [true, null]}").unwrap().coords.len(),
-            6
+            parse("{\"note\": \"x\", \"segments\": [[1,2,3,4,5,6], [0,0,0,1,1,1]], \"v\": [true, null]}")
+                .unwrap()
+                .coords
+                .len(),
+            12
         );
+    }
+
+    #[test]
+    fn zero_length_records_are_named_by_their_place() {
+        let e = parse("[[0,0,0,1,0,0],\n [3,3,3,3,3,3]]").unwrap_err();
+        assert_eq!(
+            (e.details().reason, e.details().line, e.details().column),
+            (Some("import-zero-length"), Some(2), Some(2))
+        );
+        let e = parse("[0,0,0,1,0,0, 5,5,5,5,5,5]").unwrap_err();
+        assert_eq!((e.details().line, e.details().column), (Some(1), Some(15)));
     }
 
     #[test]

@@ -5,6 +5,10 @@
 pub mod csv;
 pub mod json;
 
+use crate::error::{Error, Result};
+use crate::tolerance::ZERO_LENGTH_REL;
+use glam::DVec3;
+
 /// Largest text accepted by the importers (64 MiB, about a million rulings of CSV).
 pub const MAX_TEXT: usize = 64 << 20;
 
@@ -64,6 +68,26 @@ pub fn classify(token: &str) -> Token {
     } else {
         Token::Invalid
     }
+}
+
+/// The checks an imported file passes besides its syntax, each said where it fails: at least
+/// two records (lines of six numbers), and no record whose endpoints coincide (the rule of
+/// [`crate::tolerance::ZERO_LENGTH_REL`]: it would have no direction). `at(k)` is the line and
+/// column where record k starts.
+pub fn check_records(source: &str, coords: &[f64], at: impl Fn(usize) -> (Option<usize>, Option<usize>)) -> Result<()> {
+    let n = coords.len() / 6;
+    if n < 2 {
+        return Err(Error::parse(source, None, None, crate::msg!("import-too-few", found = n)));
+    }
+    let rel2 = ZERO_LENGTH_REL * ZERO_LENGTH_REL;
+    for (k, r) in coords.chunks_exact(6).enumerate() {
+        let (a, b) = (DVec3::new(r[0], r[1], r[2]), DVec3::new(r[3], r[4], r[5]));
+        if (b - a).length_squared() <= rel2 * a.length_squared().max(b.length_squared()) {
+            let (line, column) = at(k);
+            return Err(Error::parse(source, line, column, crate::msg!("import-zero-length", record = k)));
+        }
+    }
+    Ok(())
 }
 
 /// 1-based line and column of byte offset `at` in `text`.

@@ -39,11 +39,13 @@ export interface SurfaceFormulas {
   closed?: boolean;
   parameters?: FormulaParameters;
   /**
-   * Whether the formulas write numbers with a decimal comma ("0,5*u", as in German; default
-   * false): a comma between two digits is then a decimal point, except in the arguments of
-   * atan2, where "atan2(1,5)" is refused as ambiguous (write 1.5, or "1, 5" for two arguments).
+   * Whether numbers may be written with a decimal comma ("0,5*u"; default false). true (a
+   * German reader): a comma between two digits is a decimal point, except in the arguments of
+   * atan2, where "atan2(1,5)" is refused as ambiguous (write 1.5, or "1, 5" for two arguments);
+   * "unambiguous" (an English reader of a German link): the same outside atan2, a separator
+   * inside it.
    */
-  decimalComma?: boolean;
+  decimalComma?: boolean | "unambiguous";
 }
 
 /** A line congruence p(u, v) + t·e(u, v) typed as formulas in u, v (and a, b, c). */
@@ -58,7 +60,7 @@ export interface CongruenceFormulas {
   /** Columns along v (default 8), 2 … 1000. */
   cols?: number;
   /** As in `SurfaceFormulas`. */
-  decimalComma?: boolean;
+  decimalComma?: boolean | "unambiguous";
 }
 
 /** A surface of the catalogue as formulas (`AnalyticSurface.formulaPresets()`): `fromFormulas` of it is that surface. */
@@ -137,7 +139,7 @@ struct SurfaceFormulas {
     #[serde(default)]
     parameters: Parameters,
     #[serde(default, rename = "decimalComma")]
-    decimal_comma: bool,
+    decimal_comma: Comma,
 }
 
 #[derive(Deserialize)]
@@ -151,17 +153,59 @@ struct CongruenceFormulas {
     rows: Option<f64>,
     cols: Option<f64>,
     #[serde(default, rename = "decimalComma")]
-    decimal_comma: bool,
+    decimal_comma: Comma,
 }
 
-/// The three formulas of a field called `name`, with decimal commas read as points if asked.
-fn texts(func: &str, name: &str, texts: [String; 3], comma: bool) -> Result<[String; 3], JsValue> {
-    if !comma {
-        return Ok(texts);
+/// How decimal commas are read (`decimalComma`: false, true or "unambiguous").
+#[derive(Default, Clone, Copy)]
+enum Comma {
+    /// Commas only separate the arguments of atan2.
+    #[default]
+    Off,
+    /// Decimal commas outside atan2's arguments; inside, a comma separates.
+    Unambiguous,
+    /// Decimal commas; one between digits inside atan2's arguments is refused as ambiguous.
+    Strict,
+}
+
+impl<'de> Deserialize<'de> for Comma {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Expect;
+        impl Visitor<'_> for Expect {
+            type Value = Comma;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("true, false or \"unambiguous\"")
+            }
+            fn visit_bool<E: de::Error>(self, b: bool) -> Result<Comma, E> {
+                Ok(if b { Comma::Strict } else { Comma::Off })
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> Result<Comma, E> {
+                match s {
+                    "unambiguous" => Ok(Comma::Unambiguous),
+                    _ => Err(E::invalid_value(de::Unexpected::Str(s), &self)),
+                }
+            }
+        }
+        d.deserialize_any(Expect)
     }
+}
+
+impl Comma {
+    /// `text` (the formula called `source`) in the grammar's spelling.
+    fn read(self, func: &str, source: &str, text: &str) -> Result<String, JsValue> {
+        match self {
+            Comma::Off => Ok(text.to_string()),
+            Comma::Unambiguous => check::decimal_commas(source, text, false).map_err(|e| fail(func, e)),
+            Comma::Strict => check::decimal_commas(source, text, true).map_err(|e| fail(func, e)),
+        }
+    }
+}
+
+/// The three formulas of a field called `name`, with decimal commas read as asked.
+fn texts(func: &str, name: &str, texts: [String; 3], comma: Comma) -> Result<[String; 3], JsValue> {
     let [x, y, z] = texts;
-    let point = |k: usize, t: String| check::decimal_commas(&format!("{name}[{k}]"), &t).map_err(|e| fail(func, e));
-    Ok([point(0, x)?, point(1, y)?, point(2, z)?])
+    let read = |k: usize, t: String| comma.read(func, &format!("{name}[{k}]"), &t);
+    Ok([read(0, x)?, read(1, y)?, read(2, z)?])
 }
 
 const PARAMETER_KEYS: (&str, &[&str]) = ("parameters", &PARAMETERS);
@@ -173,15 +217,14 @@ fn interval(
     name: &str,
     bounds: &[Bound; 2],
     parameters: &[f64; 3],
-    comma: bool,
+    comma: Comma,
 ) -> Result<(f64, f64), JsValue> {
     let value = |k: usize| -> Result<f64, JsValue> {
         match &bounds[k] {
             Bound::Number(x) => Ok(*x),
             Bound::Text(t) => {
                 let source = format!("{name}[{k}]");
-                let text =
-                    if comma { check::decimal_commas(&source, t).map_err(|e| fail(func, e))? } else { t.clone() };
+                let text = comma.read(func, &source, t)?;
                 let f = Formula::parse(&source, &text, &PARAMETERS).map_err(|e| fail(func, e))?;
                 Ok(f.value(parameters))
             }

@@ -43,7 +43,7 @@ test('every reason of the core has a text in every language, with values the cor
   }
   // and no text for a reason the core does not have
   const known = new Set(reasons.map(([r]) => `error.${r}`));
-  const page = /^error\.(field|at\w+|hintJoin|code\.|what\.|option\.)/;
+  const page = /^error\.(field|seeField|at\w+|hintJoin|code\.|what\.|option\.)/;
   for (const [lang, table] of Object.entries(LANGUAGES)) {
     for (const key of Object.keys(table)) if (key.startsWith('error.') && !page.test(key)) assert.ok(known.has(key), `${lang}: ${key} is no reason of the core`);
   }
@@ -55,7 +55,7 @@ test('an error through the package carries its reason and values; the page says 
   const cases = [
     [() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', '3*'], u: [0, 1] }), 'ends-expecting-operand', {}, 'e[2]: Die Formel endet, wo ein Operand erwartet wird (Spalte 3).'],
     [() => AnalyticSurface.fromFormulas({ a: ['u', 'sni(u)', '0'], e: ['0', '1', 'u'], u: [0, 1] }), 'unknown-function', { name: 'sni' }, 'a[1]: Eine Funktion „sni“ gibt es nicht (Spalte 1); bekannt sind:'],
-    [() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: [2.5, 1] }), 'interval-order', { lo: 2.5, hi: 1 }, 'Bereich von u: Der Anfang muss kleiner als das Ende sein, erhalten [2,5; 1].'],
+    [() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: [2.5, 1] }), 'interval-order', { lo: 2.5, hi: 1 }, 'Bereich von u: Der Anfang muss kleiner als das Ende sein; angegeben ist [2,5; 1].'],
     [() => importSegments('0,0,0,1,0\n'), 'csv-six-numbers', { found: 5 }, 'CSV: Eine Zeile braucht 6 Zahlen (a.x a.y a.z b.x b.y b.z), diese hat 5 (Zeile 1, Spalte 10).'],
     [() => RuledSurface.fromSegments(new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, NaN, 1])), 'not-finite-segment', { item: 1, coordinate: 'b.y' }, 'Koordinate b.y der Erzeugenden 1 ist NaN; jede Koordinate muss eine endliche Zahl sein.'],
   ];
@@ -86,6 +86,16 @@ test('German formulas take decimal commas; atan2(1,5) is refused with the two wa
     s.free();
   }
   assert.throws(() => AnalyticSurface.fromFormulas({ a: ['0,5*u', '0', '0'], e: ['0', '1', 'u'], u: [0, 1] }), (e) => e.details.reason === 'comma-outside-atan2');
+  // an English reader of a German link: 0,5 is still a number, atan2(1,5) has two arguments
+  const english = AnalyticSurface.fromFormulas({ a: ['0,5*u', 'atan2(1,5)', '0'], e: ['0', '1', 'u'], u: ['0', '1,5'], decimalComma: 'unambiguous' });
+  try {
+    const x = english.sample(2).segments();
+    assert.equal(x[6], 0.75);
+    assert.equal(x[1], Math.atan2(1, 5) - 1, "a.y − e.y at v = −1");
+  } finally {
+    english.free();
+  }
+  assert.throws(() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: [0, 1], decimalComma: 'sometimes' }), (e) => e.code === 'invalid-argument');
   try {
     AnalyticSurface.fromFormulas({ a: ['atan2(1,5)', '0', '0'], e: ['0', '1', 'u'], u: [0, 1], decimalComma: true });
     assert.fail('accepted');

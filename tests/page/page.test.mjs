@@ -213,7 +213,7 @@ test('your surface by formulas: live, in the link, and errors beside the field w
   await control(page, 'ay').dispatchEvent('change');
   const row = page.locator('.rl-row[data-key="ay"]');
   await page.waitForFunction(() => document.querySelector('.rl-row[data-key="ay"] .rl-fielderror')?.hidden === false);
-  assert.match(await row.locator('.rl-fielderror').innerText(), /^the y component of a\(u\): there is no function “sni” \(column 1\); known: sin, cos/);
+  assert.match(await row.locator('.rl-fielderror').innerText(), /^The y component of a\(u\): there is no function “sni” \(column 1\); known: sin, cos/);
   assert.equal(await control(page, 'ay').getAttribute('aria-invalid'), 'true');
   // the link with the formula restores it
   const reloaded = await open(`#scene=formula&ez=${encodeURIComponent('2*c')}&tool=convergence`);
@@ -229,7 +229,7 @@ test('imports: errors beside the field, old data kept; small imports survive a r
   await page.locator('.io summary').click();
   await page.locator('#import-text').fill('0,0,0,1,0,0\n0,0,1,0,1,x');
   await page.locator('#import-button').click();
-  assert.match(await page.locator('#import-error').innerText(), /^CSV: “x” is not a number \(line 2, column 11\)\. The data shown is the previous import/);
+  assert.match(await page.locator('#import-error').innerText(), /^CSV: “x” is not a number \(line 2, column 11\)\. The example data stays on screen/);
   await page.locator('#import-text').fill('0,0,0,1,0,0\n0,0,1,0,1,1\n0,0,2,-1,0,2\n0,0,3,0,-1,3');
   await page.locator('#import-button').click();
   await page.waitForFunction(() => /data=/.test(location.hash));

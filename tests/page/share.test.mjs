@@ -84,7 +84,7 @@ test('from a downloaded file: no address offered, and the element with its scrip
   assert.equal(got.iframe, null, 'a file:// iframe offered');
   assert.match(got.nowhere, /opened from a file/);
   assert.match(got.element, /^<script defer src="ruledlab-embed\.js"><\/script>\n<ruled-view scene="curves" paper="fig8" params="" camera="[^"]+" lang="en"/);
-  assert.match(await page.locator('#share-dialog').innerText(), /Upload ruledlab-embed\.js \(download it here\) next to your page/);
+  assert.match(await page.locator('#share-dialog').innerText(), /Upload ruledlab-embed\.js \(the button below downloads it\) next to your page/);
   // the script it hands out, and the snippet as handed out, side by side in a folder
   const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#share-embed').click()]);
   const site2 = mkdtempSync(join(tmpdir(), 'ruledlab-lecture-'));

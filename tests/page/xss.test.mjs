@@ -132,7 +132,7 @@ test('pasted CSV/JSON and typed formulas carrying payloads stay text', async () 
   await p.waitForTimeout(600);
   assert.equal(await p.evaluate(() => window.__pwned), 0);
   assert.deepEqual(await injected(p), []);
-  assert.match(await p.locator('.rl-row[data-key="ax"] .rl-fielderror').innerText(), /^the x component of a\(u\):/);
+  assert.match(await p.locator('.rl-row[data-key="ax"] .rl-fielderror').innerText(), /^The x component of a\(u\):/);
   // the share dialog carries the payload as text too
   await p.locator('#share').click();
   assert.match(await p.locator('#share-element').inputValue(), /params="[^"]*ax=/);

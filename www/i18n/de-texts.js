@@ -206,7 +206,7 @@ Die Formeln sind Teil des Links: Teilen Sie ihn als Übungsaufgabe.</p>`,
 
   'focal.text': `
 <h2>Brennflächen einer Geradenkongruenz</h2>
-<p class="rl-beyond"><strong>Über das Paper hinaus.</strong> Das Paper verfeinert Kongruenzen
+<p class="rl-beyond"><strong>Über die Arbeit hinaus.</strong> Die Arbeit verfeinert Kongruenzen
 (Abschnitt 5), berechnet aber nicht ihre Geometrie. Längs einer Geraden ${mr('p + t e')} der
 Kongruenz ${mr('p ( u , v ) + t e ( u , v )')}, mit ${m('<mi>e</mi>')} der Länge 1, kommen die
 Nachbargeraden ihr in den <em>Brennpunkten</em> am nächsten: den Nullstellen von</p>
@@ -231,8 +231,8 @@ ${m(`<mi>c</mi><mo>·</mo><mi>m</mi><mo>+</mo><mover><mi>c</mi><mo>‾</mo></mov
 an, der die Geraden am besten enthält: die Treffgeraden zweier windschiefer Geraden liegen in
 zweien (eine lineare Kongruenz).</p>
 <p class="rl-paper-data">Daten: die Kongruenz von Beispiel 5 stammt aus dem Paper; die beiden
-Kongruenzen von Beispiel 4 (das Paper nennt für sie keine Daten), das Ellipsoid (Halbachsen 1,6,
-1,2, 0,8), die zwei windschiefen Geraden und die elliptische Kongruenz wählt ruledlab.</p>`,
+Kongruenzen von Beispiel 4 (die Arbeit nennt für sie keine Daten), das Ellipsoid (Halbachsen 1,6;
+1,2; 0,8), die zwei windschiefen Geraden und die elliptische Kongruenz wählt ruledlab.</p>`,
 
   'formulaCongruence.text': `
 <h2>Ihre eigene Geradenkongruenz</h2>
@@ -244,7 +244,7 @@ Geraden, die zwei windschiefe Geraden treffen.</p>`,
 
   'lines.text': `
 <h2>Die Geraden verfeinern, nicht ihre Endpunkte</h2>
-<p>Jedes Schema aus Abschnitt 4 arbeitet mit zwei gewählten Punkten je Erzeugender. Verschieben Sie
+<p>Jedes Schema aus Abschnitt 4 arbeitet mit zwei gewählten Punkten je Erzeugende. Verschieben Sie
 diese Punkte entlang ihrer Erzeugenden (Regler): Die Geraden ändern sich nicht, aber die vom
 Vierpunktschema auf den Endpunkten verfeinerte Fläche (gestrichelt) schon: Sie hängt von einer Wahl
 ab, die nicht zur Geometrie gehört.</p>

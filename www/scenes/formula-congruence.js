@@ -17,8 +17,8 @@ function presetParams(/** @type {string} */ name) {
 const START = presetParams('example5');
 const formula = (/** @type {string} */ key) => ({ key, label: `formulaCongruence.param.${key}`, type: /** @type {const} */ ('text'), value: String(START[/** @type {keyof typeof START} */ (key)]) });
 
-/** @type {Record<string, string>} */
-const FIELDS = { 'p[0]': 'px', 'p[1]': 'py', 'p[2]': 'pz', 'e[0]': 'ex', 'e[1]': 'ey', 'e[2]': 'ez', 'u[0]': 'umin', 'u[1]': 'umax', 'v[0]': 'vmin', 'v[1]': 'vmax', u: 'umin', v: 'vmin', e: 'ex', rows: 'rows', cols: 'cols' };
+/** @type {Record<string, string | string[]>} */
+const FIELDS = { 'p[0]': 'px', 'p[1]': 'py', 'p[2]': 'pz', 'e[0]': 'ex', 'e[1]': 'ey', 'e[2]': 'ez', 'u[0]': 'umin', 'u[1]': 'umax', 'v[0]': 'vmin', 'v[1]': 'vmax', u: ['umin', 'umax'], v: ['vmin', 'vmax'], e: ['ex', 'ey', 'ez'], rows: 'rows', cols: 'cols' };
 
 /** @typedef {{preset: string, px: string, py: string, pz: string, ex: string, ey: string, ez: string, umin: string, umax: string, vmin: string, vmax: string, rows: number, cols: number, a: number, b: number, c: number, scheme: string, steps: number, director: boolean, second: boolean, focal: boolean}} FormulaCongruenceParams */
 
@@ -57,8 +57,9 @@ export const scene = defineScene({
           rows: Number(p.rows),
           cols: Number(p.cols),
           parameters: { a: Number(p.a), b: Number(p.b), c: Number(p.c) },
-          // German readers write 0,5: a comma between digits is a decimal comma (not in atan2's arguments)
-          decimalComma: ctx.lang === 'de',
+          // 0,5 is a number in every language (a German link opened in English); only a German
+          // reader's atan2(1,5) is ambiguous (an English reader's has two arguments)
+          decimalComma: ctx.lang === 'de' ? true : 'unambiguous',
         }),
       );
       const built = congruenceFigure(own, analytic, p, ctx, 'formula');

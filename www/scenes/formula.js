@@ -26,8 +26,8 @@ const TOOLS = ['striction', 'convergence', 'bending', 'development', 'subdivisio
 /** @param {string[]} tools @returns {(p: import('../scene.js').Params) => string | null} */
 const onlyFor = (...tools) => (p) => (tools.includes(String(p.tool)) ? null : 'formula.reason.tool');
 
-/** @type {Record<string, string>} */
-const FIELDS = { 'a[0]': 'ax', 'a[1]': 'ay', 'a[2]': 'az', 'e[0]': 'ex', 'e[1]': 'ey', 'e[2]': 'ez', 'u[0]': 'umin', 'u[1]': 'umax', 'v[0]': 'vmin', 'v[1]': 'vmax', u: 'umin', v: 'vmin', e: 'ex', parameters: 'a' };
+/** @type {Record<string, string | string[]>} */
+const FIELDS = { 'a[0]': 'ax', 'a[1]': 'ay', 'a[2]': 'az', 'e[0]': 'ex', 'e[1]': 'ey', 'e[2]': 'ez', 'u[0]': 'umin', 'u[1]': 'umax', 'v[0]': 'vmin', 'v[1]': 'vmax', u: ['umin', 'umax'], v: ['vmin', 'vmax'], e: ['ex', 'ey', 'ez'], parameters: 'a' };
 
 /** A text parameter holding a formula. */
 const formula = (/** @type {string} */ key, /** @type {string} */ value) => ({ key, label: `formula.param.${key}`, type: /** @type {const} */ ('text'), value });
@@ -85,8 +85,9 @@ export const scene = defineScene({
           v: [String(p.vmin), String(p.vmax)],
           closed: !!p.closed,
           parameters: { a: Number(p.a), b: Number(p.b), c: Number(p.c) },
-          // German readers write 0,5: a comma between digits is a decimal comma (not in atan2's arguments)
-          decimalComma: ctx.lang === 'de',
+          // 0,5 is a number in every language (a German link opened in English); only a German
+          // reader's atan2(1,5) is ambiguous (an English reader's has two arguments)
+          decimalComma: ctx.lang === 'de' ? true : 'unambiguous',
         }),
       );
       const [uMin, uMax] = [...analytic.parameters(2, { closed: false })];

@@ -22,7 +22,7 @@ export const CSS = `
 .rl-stage.rl-narrow .rl-hint { display: none; }
 .rl-stage.rl-narrow .rl-legend { top: .35rem; left: .35rem; max-width: calc(100% - .7rem); max-height: 38%; padding: .2rem .45rem; }
 .rl-stage.rl-narrow .rl-legend li { display: inline-flex; margin-right: .7rem; }
-.rl-stage.rl-narrow .rl-toolbar { right: .35rem; bottom: .35rem; }
+.rl-stage.rl-narrow .rl-bar { left: .35rem; right: .35rem; bottom: .35rem; }
 .rl-view canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; touch-action: none; outline: none; }
 .rl-view canvas:focus-visible { outline: 3px solid var(--focus); outline-offset: -3px; }
 .rl-view:has(canvas:focus-visible)::after { content: ""; position: absolute; inset: 0; border: 3px solid var(--focus); pointer-events: none; }
@@ -35,7 +35,9 @@ export const CSS = `
   background: rgb(255 255 255 / .88); border-radius: 6px; font-size: max(12px, .8rem); line-height: 1.35; }
 .rl-legend li { display: flex; align-items: center; gap: .45rem; }
 .rl-swatch { flex: none; }
-.rl-toolbar { position: absolute; right: .5rem; bottom: .5rem; display: flex; gap: .3rem; flex-wrap: wrap; justify-content: flex-end; max-width: calc(100% - 1rem); }
+.rl-bar { position: absolute; left: .6rem; right: .5rem; bottom: .5rem; display: flex; align-items: flex-end; gap: .3rem .8rem; pointer-events: none; }
+.rl-bar > * { pointer-events: auto; }
+.rl-toolbar { display: flex; gap: .3rem; flex-wrap: wrap; justify-content: flex-end; margin-left: auto; }
 .rl-stage button, .rl-stage select, .rl-stage input[type=text] { font: inherit; font-size: .85rem; color: var(--ink); }
 .rl-stage select { min-height: 28px; }
 .rl-stage button { min-height: 28px; min-width: 28px; padding: .2rem .6rem; border: 1px solid #c9c5ba; border-radius: 6px;
@@ -50,7 +52,7 @@ export const CSS = `
   border: 1px solid #e6b2aa; border-radius: 6px; font-size: .88rem; white-space: pre-wrap; }
 .rl-note { position: absolute; inset: auto .6rem 6.6rem .6rem; margin: 0; background: #fff8e6; color: #5a4000; padding: .4rem .7rem;
   border: 1px solid #ead79b; border-radius: 6px; font-size: .82rem; }
-.rl-hint { position: absolute; left: .6rem; bottom: .35rem; max-width: calc(100% - 19rem); margin: 0; color: var(--muted); font-size: .75rem; background: rgb(251 250 247 / .8); border-radius: 4px; padding: 0 .25rem; }
+.rl-hint { flex: 0 1 auto; min-width: 0; margin: 0; pointer-events: none !important; color: var(--muted); font-size: .75rem; background: rgb(251 250 247 / .8); border-radius: 4px; padding: 0 .25rem; }
 .rl-stale canvas { opacity: .55; }
 .rl-sr-only { position: absolute !important; width: 1px; height: 1px; padding: 0; margin: -1px; overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }
 .rl-panel { flex: 0 0 24rem; max-width: 46%; overflow-y: auto; background: var(--panel); border-left: 1px solid var(--line); padding: .8rem 1rem 1.2rem; }
@@ -64,6 +66,8 @@ export const CSS = `
 .rl-tiny .rl-row.rl-checkbox > .rl-cell { flex: none; }
 .rl-view-small .rl-hint { display: none; }
 .rl-row > label { padding: .15rem 0; }
+/* a field with a message under it: its label stays beside the field, not beside the message */
+.rl-row:has(.rl-fielderror:not([hidden])) > label { align-self: start; padding-top: .4rem; }
 .rl-cell { display: flex; align-items: center; gap: .4rem; flex-wrap: wrap; min-width: 0; }
 .rl-line { display: flex; align-items: center; gap: .3rem .4rem; flex: 1 1 100%; min-width: 0; flex-wrap: wrap; }
 .rl-cell select { flex: 1; min-width: 0; min-height: 28px; }

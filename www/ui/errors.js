@@ -37,7 +37,7 @@ export function describeError(error, i18n, field) {
     : '';
   const hint = d.hint && has(`error.${d.hint.reason}`) ? t(`error.${d.hint.reason}`, values(d.hint.args, i18n)) : '';
   const sentence = `${text}${at ? ` ${at}` : ''}${hint ? t('error.hintJoin', { hint }) : ''}`;
-  return `${name ? t('error.field', { field: name, text: sentence }) : upper(sentence)}${/[.!?]$/.test(sentence) ? '' : '.'}`;
+  return `${upper(name ? t('error.field', { field: name, text: sentence }) : sentence)}${/[.!?]$/.test(sentence) ? '' : '.'}`;
 }
 
 /** The page's name of an option the core names ("csv", "u", "parameters"), or the option itself. */
