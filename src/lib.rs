@@ -92,20 +92,20 @@ pub use congruence::{
 pub use linear_complex::{fit as fit_linear_complex, ComplexKind, LinearComplex};
 
 // Example 6: tool paths for 5-axis milling
+pub use io::toolpath::{write_csv as tool_path_csv, write_json as tool_path_json};
 pub use milling::example::{
     exact as example_pose, example as example_tool_path, part_height, part_mesh, profile as example_profile,
     RANGE as EXAMPLE_RANGE,
 };
-pub use milling::export::{
-    csv as tool_path_csv, gcode, inverse_kinematics, json as tool_path_json, machine_coordinates, parse_gcode,
-    table_rotation, GcodeOptions,
-};
+pub use milling::export::{gcode, inverse_kinematics, machine_coordinates, parse_gcode, table_rotation, GcodeOptions};
 pub use milling::quality::{deviation, Quality};
 pub use milling::{Pose, Tool, ToolEnd, ToolPath};
 
 // reading and writing segments
 pub use io::csv::{parse as read_csv, write as write_csv};
+pub use io::invariants::{write_csv as invariants_csv, write_json as invariants_json};
 pub use io::json::{parse as read_json, write as write_json};
+pub use io::obj::write_obj;
 pub use io::Imported;
 
 // formulas, and the catalogue of analytic surfaces and congruences

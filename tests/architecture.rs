@@ -12,12 +12,12 @@ use std::path::Path;
 /// The layers, bottom first. A module may use modules of its own layer's predecessors only.
 const LAYERS: &[&[&str]] = &[
     &["error", "tolerance", "line"],
-    &["base", "formula", "linalg", "io", "linear_complex"],
+    &["base", "formula", "linalg", "linear_complex"],
     &["ruled", "mesh"],
     &["subdivision"],
     &["congruence"],
     &["milling"],
-    &["catalogue"],
+    &["catalogue", "io"],
 ];
 
 fn layer(module: &str) -> Option<usize> {

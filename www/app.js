@@ -14,7 +14,7 @@ import { adoptStyles } from './ui/css.js';
 import { appendRich } from './ui/richtext.js';
 import { describeError } from './ui/errors.js';
 import { showFailure } from './ui/failure.js';
-import { obj, segmentsText, invariantsJson, invariantsCsv } from './export/files.js';
+import { dataFile } from './export/files.js';
 import { png } from './export/png.js';
 import { exportSvg } from './export/svg.js';
 import { exportTikz } from './export/tikz.js';
@@ -26,6 +26,14 @@ import { stored, store, writeHistory } from './platform.js';
 const STORED = 'ruledlab.data';
 
 /** The page's language names, in their own language. */
+/** The data files of the export menu: file name suffix, the core's format, MIME type. */
+const DATA_FILES = /** @type {const} */ ({
+  obj: ['.obj', 'obj', 'model/obj'],
+  csv: ['.csv', 'csv', 'text/csv'],
+  json: ['.json', 'json', 'application/json'],
+  invariants: ['-invariants.json', 'invariants-json', 'application/json'],
+  invariantsCsv: ['-invariants.csv', 'invariants-csv', 'text/csv'],
+});
 const NATIVE = { en: 'English', de: 'Deutsch' };
 
 /**
@@ -244,10 +252,10 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       else if (kind === 'svg' || kind === 'svgBw') download(`${name}${kind === 'svgBw' ? '-bw' : ''}.svg`, exportSvg(stage, { bw: kind === 'svgBw' }), 'image/svg+xml');
       else if (kind === 'tikz') download(`${name}.tikz`, exportTikz(stage), 'text/x-tex');
       else if (kind === 'plot' && built.figure) download(`${name}-plot.svg`, new XMLSerializer().serializeToString(built.figure()), 'image/svg+xml');
-      else if (data && kind === 'obj') download(`${name}.obj`, obj(data.segments, { faces: !data.grid, name }), 'model/obj');
-      else if (data && (kind === 'csv' || kind === 'json')) download(`${name}.${kind}`, segmentsText(data.segments, kind, data.grid), kind === 'csv' ? 'text/csv' : 'application/json');
-      else if (data && kind === 'invariants') download(`${name}-invariants.json`, invariantsJson(data.segments), 'application/json');
-      else if (data && kind === 'invariantsCsv') download(`${name}-invariants.csv`, invariantsCsv(data.segments), 'text/csv');
+      else if (data && kind in DATA_FILES) {
+        const [suffix, format, type] = DATA_FILES[/** @type {keyof typeof DATA_FILES} */ (kind)];
+        download(`${name}${suffix}`, dataFile(data.segments, format, { grid: data.grid, name }), type);
+      }
     } catch (err) {
       stage.fail(err);
     }

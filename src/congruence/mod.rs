@@ -29,7 +29,7 @@ pub enum CongruenceScheme {
         k: usize,
     },
     /// The paper's two-stage scheme read literally: midpoint edge lines, face lines the
-    /// average of their 8 neighbours (see [`variational`]).
+    /// average of their 8 neighbours (`congruence/variational.rs`).
     Paper {
         /// K ≥ 3 (the literal strip energy does not depend on it beyond K ≥ 3).
         k: usize,

@@ -1,9 +1,14 @@
-//! Reading segments from text: CSV (6 numbers per line) and JSON. Malformed input is rejected
-//! with the line and column of the problem; sizes are checked before anything large is
-//! allocated ([`MAX_TEXT`], and the ruling limit).
+//! Data formats, the one home of every file ruledlab reads or writes as data (drawings are the
+//! page's: `www/export/`): segments as CSV (6 numbers per line) and JSON, read and written; OBJ
+//! of a strip; the invariants of Section 2 as CSV and JSON; a tool path as CSV and JSON.
+//! Malformed input is rejected with the line and column of the problem; sizes are checked
+//! before anything large is allocated ([`MAX_TEXT`], and the ruling limit).
 
 pub mod csv;
+pub mod invariants;
 pub mod json;
+pub mod obj;
+pub mod toolpath;
 
 use crate::error::{Error, Result};
 use crate::tolerance::ZERO_LENGTH_REL;

@@ -1,4 +1,5 @@
-//! Export of tool paths: JSON, CSV, and G-code for a table-table A–C five-axis machine.
+//! The G-code post of tool paths, for a table-table A–C five-axis machine (their CSV and JSON
+//! are written in `io/toolpath.rs`).
 //!
 //! **Machine model.** The tool stands still along the machine +Z axis; the table carries the
 //! workpiece and rotates it first by C about its own Z axis, then by A about the machine X
@@ -66,7 +67,7 @@ pub fn machine_coordinates(path: &ToolPath, scale: f64) -> Vec<[f64; 5]> {
         .collect()
 }
 
-fn tool_line(path: &ToolPath) -> String {
+pub(crate) fn tool_line(path: &ToolPath) -> String {
     let end = match path.tool.end {
         ToolEnd::Ball => "ball end",
         ToolEnd::Flat => "flat end",
@@ -147,35 +148,6 @@ pub fn parse_gcode(text: &str, scale: f64) -> Result<Vec<Pose>> {
         poses.push(Pose { tip: back * DVec3::new(x, y, z) / scale, axis: back * DVec3::Z });
     }
     Ok(poses)
-}
-
-/// CSV: a comment header with the conventions, then tip x, y, z and unit axis i, j, k per row.
-pub fn csv(path: &ToolPath) -> String {
-    let mut s = String::new();
-    let _ = writeln!(s, "# ruledlab tool path; model units; tool: {}", tool_line(path));
-    let _ = writeln!(s, "tip_x,tip_y,tip_z,axis_i,axis_j,axis_k");
-    for p in &path.poses {
-        let _ = writeln!(s, "{:?},{:?},{:?},{:?},{:?},{:?}", p.tip.x, p.tip.y, p.tip.z, p.axis.x, p.axis.y, p.axis.z);
-    }
-    s
-}
-
-/// JSON: { units, tool, poses: [{ tip: [x, y, z], axis: [i, j, k] }] } (shortest round-trip
-/// number format, so reading it back gives the same doubles).
-pub fn json(path: &ToolPath) -> String {
-    let v = |p: DVec3| format!("[{:?}, {:?}, {:?}]", p.x, p.y, p.z);
-    let end = match path.tool.end {
-        ToolEnd::Ball => "ball",
-        ToolEnd::Flat => "flat",
-    };
-    let poses: Vec<String> =
-        path.poses.iter().map(|p| format!("    {{ \"tip\": {}, \"axis\": {} }}", v(p.tip), v(p.axis))).collect();
-    format!(
-        "{{\n  \"format\": \"ruledlab tool path\",\n  \"units\": \"model units; axis is a unit vector from the tip into the spindle\",\n  \"tool\": {{ \"end\": \"{end}\", \"radius\": {:?}, \"length\": {:?} }},\n  \"poses\": [\n{}\n  ]\n}}\n",
-        path.tool.radius,
-        path.tool.length,
-        poses.join(",\n")
-    )
 }
 
 #[cfg(test)]

@@ -12,6 +12,9 @@ use wasm_bindgen::prelude::*;
 const TS_TYPES: &str = r#"
 /** Segments read by `importSegments`: 6 numbers per line, and a grid shape when the file gives one. */
 export interface ImportedSegments { segments: Float64Array; rows?: number; cols?: number }
+
+/** Options of `export`: the object's name in an OBJ file (default "ruledlab"). */
+export interface ExportOptions { name?: string }
 "#;
 
 /// `ImportedSegments`, written by serde.
@@ -63,36 +66,79 @@ pub fn import_segments(
     to_js(F, &ImportedJs { segments: Float64Array::from(&imported.coords[..]), rows, cols })
 }
 
-/// CSV or JSON text of flat segments (full precision, so `importSegments` reads back the same
-/// numbers).
-fn export(func: &str, format: &JsValue, flat: &[f64], grid: Option<(usize, usize)>) -> Result<String, JsValue> {
-    match format.as_string().as_deref() {
-        Some("csv") => Ok(io::csv::write(flat)),
-        Some("json") => Ok(io::json::write(flat, grid)),
-        _ => Err(fail(func, format!("format must be \"csv\" or \"json\", got {}", describe(format)))),
+/// `ExportOptions`, read by serde.
+#[derive(serde::Deserialize, Default)]
+struct ExportOptions {
+    name: Option<String>,
+}
+
+/// Segments as text in `format`; `surface`: the invariants of Section 2 too (not for a
+/// congruence's lines) and OBJ faces between consecutive rulings.
+fn export(
+    func: &str,
+    format: &JsValue,
+    options: JsValue,
+    flat: &[f64],
+    grid: Option<(usize, usize)>,
+    surface: Option<&crate::ruled::RuledSurface>,
+) -> Result<String, JsValue> {
+    let o: ExportOptions = super::args::options(func, options)?;
+    let name = o.name.as_deref().unwrap_or("ruledlab");
+    if name.chars().count() > 200 {
+        return Err(super::args::fail_option(func, "name", "options.name must be at most 200 characters"));
+    }
+    let known = if surface.is_some() {
+        "\"csv\", \"json\", \"obj\", \"invariants-csv\" or \"invariants-json\""
+    } else {
+        "\"csv\", \"json\" or \"obj\""
+    };
+    match (format.as_string().as_deref(), surface) {
+        (Some("csv"), _) => Ok(io::csv::write(flat)),
+        (Some("json"), _) => Ok(io::json::write(flat, grid)),
+        (Some("obj"), _) => Ok(io::obj::write_obj(flat, surface.is_some(), name)),
+        (Some("invariants-csv"), Some(s)) => Ok(io::invariants::write_csv(&s.invariants())),
+        (Some("invariants-json"), Some(s)) => Ok(io::invariants::write_json(&s.invariants())),
+        (got, _) => {
+            let got = got.map_or_else(|| describe(format), |g| format!("\"{g}\""));
+            Err(fail(func, format!("format must be {known}, got {got}")))
+        }
     }
 }
 
 #[wasm_bindgen]
 impl RuledSurface {
-    /// The segments as text: "csv" (header `ax,ay,az,bx,by,bz`) or "json"
-    /// (`{ "segments": [[…], …] }`), full precision.
+    /// The surface as data: "csv" (header `ax,ay,az,bx,by,bz`), "json" (`{ "segments": [[…],
+    /// …] }`), "obj" (vertices, ruling lines and the quads between them; `options.name`), or its
+    /// invariants (Section 2) as "invariants-csv" (a row per pair of rulings) or
+    /// "invariants-json" (the arrays of `invariants()`, NaN as null); full precision.
     pub fn export(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue,
+        #[wasm_bindgen(
+            unchecked_param_type = "\"csv\" | \"json\" | \"obj\" | \"invariants-csv\" | \"invariants-json\""
+        )]
+        format: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "ExportOptions")] options: JsValue,
     ) -> Result<String, JsValue> {
-        export("RuledSurface.export", &format, self.core().flat(), None)
+        export("RuledSurface.export", &format, options, self.core().flat(), None, Some(self.core()))
     }
 }
 
 #[wasm_bindgen]
 impl LineCongruence {
-    /// The lines as text: "json" (`{ "rows", "cols", "segments": [[…], …] }`) or "csv"
-    /// (row-major, the grid shape is not kept).
+    /// The lines as data: "json" (`{ "rows", "cols", "segments": [[…], …] }`), "csv" (row-major,
+    /// the grid shape is not kept) or "obj" (vertices and line elements).
     pub fn export(
         &self,
-        #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\"")] format: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\" | \"obj\"")] format: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "ExportOptions")] options: JsValue,
     ) -> Result<String, JsValue> {
-        export("LineCongruence.export", &format, self.core().flat(), Some((self.core().rows(), self.core().cols())))
+        export(
+            "LineCongruence.export",
+            &format,
+            options,
+            self.core().flat(),
+            Some((self.core().rows(), self.core().cols())),
+            None,
+        )
     }
 }

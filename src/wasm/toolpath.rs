@@ -264,8 +264,8 @@ impl ToolPath {
             return Err(fail(F, "feed, scale and clearance apply to the \"gcode\" format only"));
         }
         match format.as_str() {
-            "json" => Ok(export::json(&self.inner)),
-            "csv" => Ok(export::csv(&self.inner)),
+            "json" => Ok(crate::io::toolpath::write_json(&self.inner)),
+            "csv" => Ok(crate::io::toolpath::write_csv(&self.inner)),
             "gcode" => {
                 let d = export::GcodeOptions::default();
                 let g = export::GcodeOptions {

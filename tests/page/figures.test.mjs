@@ -95,6 +95,25 @@ test('PNG at 2× and 4× of the view, and the page’s export buttons download f
   const plot = await p.evaluate(() => new XMLSerializer().serializeToString(document.querySelector('.rl-figure svg')));
   assert.match(plot, /stroke-dasharray="4 3"/);
   assert.doesNotMatch(plot, /class="/);
+  // the data files, as a user saves them: a surface's, then a congruence's (no invariants)
+  const save = async (/** @type {string} */ kind) => {
+    const [download] = await Promise.all([p.waitForEvent('download'), p.locator(`[data-export="${kind}"]`).click()]);
+    return { name: download.suggestedFilename(), text: readFileSync(/** @type {string} */ (await download.path()), 'utf8') };
+  };
+  await p.evaluate(() => { location.hash = '#scene=striction'; });
+  await p.locator('[data-export="obj"]:not([disabled])').waitFor();
+  const obj = await save('obj');
+  assert.equal(obj.name, 'striction.obj');
+  assert.match(obj.text, /^o striction\n(v \S+ \S+ \S+\n)+(l \d+ \d+\n)+(f \d+ \d+ \d+ \d+\n)+$/m);
+  const inv = await save('invariants');
+  assert.equal(inv.name, 'striction-invariants.json');
+  assert.ok(JSON.parse(inv.text).distribution.length > 2);
+  assert.match((await save('invariantsCsv')).text, /^pair,angle,distance,distribution,/);
+  await p.evaluate(() => { location.hash = '#scene=congruence'; });
+  await p.locator('[data-export="invariants"][disabled]').waitFor();
+  const lines = await save('obj');
+  assert.doesNotMatch(lines.text, /^f /m);
+  assert.equal(JSON.parse((await save('json')).text).rows > 1, true);
   assert.deepEqual(problems, []);
   await p.close();
 });

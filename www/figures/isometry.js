@@ -4,7 +4,7 @@
 import { stripIndices } from '../../pkg/ruledlab.js';
 import { f32 } from '../scene.js';
 import { multiply } from '../math.js';
-import { developmentSvg } from '../export/files.js';
+import { developmentSvg } from '../export/development.js';
 
 /** A translation by (x, y, z), column-major. */
 const translation = (/** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ z) => new Float32Array([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, y, z, 1]);
