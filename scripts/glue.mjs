@@ -6,6 +6,9 @@
 // wasm-bindgen upgrade that changes the glue fails the build instead of silently losing codes.
 // The declarations get `/// <reference lib="esnext.disposable" />`: they declare
 // `[Symbol.dispose]()` (for `using`), which needs that lib whatever the user's tsconfig says.
+// The doc comments tsify derives from the Rust types come as Rust string literals (`\"ball\"`,
+// `\u{304}`): they are read back to the text written. A name declared twice (TypeScript would
+// merge two interfaces silently) fails the build.
 // Usage: node scripts/glue.mjs pkg/ruledlab.js
 import { readFileSync, writeFileSync, existsSync } from 'node:fs';
 
@@ -48,8 +51,17 @@ const EDITS = [
 const dtsFile = file.replace(/\.js$/, '.d.ts');
 const REFERENCE = '/// <reference lib="esnext.disposable" />\n';
 if (existsSync(dtsFile)) {
-  const dts = readFileSync(dtsFile, 'utf8');
-  if (!dts.startsWith(REFERENCE)) writeFileSync(dtsFile, REFERENCE + dts);
+  let dts = readFileSync(dtsFile, 'utf8');
+  // a comment line ` * …` of a derived declaration: Rust's escapes of a string literal
+  dts = dts.replace(/^(\s*\*.*)$/gm, (line) => line.replace(/\\u\{([0-9a-f]+)\}|\\(["'\\])/g, (_, hex, ch) => (hex ? String.fromCodePoint(parseInt(hex, 16)) : ch)));
+  const names = [...dts.matchAll(/^export (?:interface|type|class|enum) (\w+)/gm)].map((m) => m[1]);
+  const twice = names.filter((n, i) => names.indexOf(n) !== i);
+  if (twice.length) {
+    console.error(`glue: declared twice in ${dtsFile}: ${[...new Set(twice)].join(', ')}`);
+    process.exit(1);
+  }
+  if (!dts.startsWith(REFERENCE)) dts = REFERENCE + dts;
+  writeFileSync(dtsFile, dts);
 }
 
 if (js.includes('function ruledlabGlueError')) {

@@ -96,3 +96,42 @@ fn the_layers_name_each_module_once() {
         uses("use crate::ruled::RuledSurface;\n#[cfg(test)]\nmod tests {\n    use crate::catalogue::X;\n}").len() == 1
     );
 }
+
+/// The bindings (`src/wasm/`) split by concern, one file per area of the core, named after it
+/// (ARCHITECTURE.md, "The bindings"): a file that names no module of the core is a new concern
+/// without a home. Besides them only the helpers every binding shares.
+#[test]
+fn each_binding_file_names_an_area_of_the_core() {
+    const HELPERS: &[&str] = &["mod", "args", "error", "live", "buffers"];
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut core = Vec::new();
+    sources(&root, &root, &mut core);
+    let mut names: Vec<String> = LAYERS.iter().flat_map(|l| l.iter().map(|m| m.to_string())).collect();
+    fn files(dir: &Path, out: &mut Vec<String>) {
+        for entry in fs::read_dir(dir).expect("readable") {
+            let path = entry.expect("an entry").path();
+            if path.is_dir() && !path.ends_with("wasm") {
+                files(&path, out);
+            }
+            if let Some(stem) = path.file_stem() {
+                out.push(stem.to_string_lossy().into_owned());
+            }
+        }
+    }
+    files(&root, &mut names);
+    let mut homeless = Vec::new();
+    for entry in fs::read_dir(root.join("wasm")).expect("src/wasm is readable") {
+        let stem = entry.expect("an entry").path().file_stem().expect("a name").to_string_lossy().into_owned();
+        if !HELPERS.contains(&stem.as_str()) && !names.contains(&stem) {
+            homeless.push(stem);
+        }
+    }
+    assert!(homeless.is_empty(), "src/wasm/ files that name no area of the core: {homeless:?}");
+    // the core knows nothing of JavaScript: only the bindings name wasm-bindgen or js-sys
+    // (a TypeScript description of a result type, derived under wasm, is not JavaScript)
+    for (module, text) in &core {
+        for js in ["wasm_bindgen", "js_sys", "web_sys", "JsValue"] {
+            assert!(!text.contains(js), "the core module {module} names {js}");
+        }
+    }
+}

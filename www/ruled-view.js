@@ -42,6 +42,34 @@ const HOST_CSS = `:host { display: block; position: relative; height: 480px; min
 
 let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
 
+/**
+ * @typedef {object} SceneChangeDetail   `scene-change`: the scene shown and its parameters
+ * @property {string} scene
+ * @property {import('./scene.js').Params} params
+ *
+ * @typedef {object} ViewChangeDetail    `view-change`, during a camera move
+ * @property {number} yaw
+ * @property {number} pitch
+ * @property {number} distance
+ * @property {number[]} target
+ *
+ * @typedef {ViewChangeDetail & { camera: string }} CameraChangeDetail   `camera-change`, once a
+ *   move ends: `camera` is the value of the element's `camera` attribute for this view
+ *
+ * @typedef {object} RuledViewErrorDetail   `error`: the message in the element's language
+ * @property {string} message
+ * @property {string | null} code           the error's stable code (README, "Errors")
+ * @property {object | null} details        the core's details (reason, args, option, …)
+ *
+ * @typedef {object} RuledViewEvents       the events of <ruled-view> and their details
+ * @property {CustomEvent<SceneChangeDetail>} scene-change
+ * @property {CustomEvent<ViewChangeDetail>} view-change
+ * @property {CustomEvent<CameraChangeDetail>} camera-change
+ * @property {CustomEvent<RuledViewErrorDetail>} error
+ *
+ * @typedef {Omit<HTMLElementEventMap, 'error'> & RuledViewEvents} RuledViewEventMap
+ */
+
 export class RuledView extends HTMLElement {
   static observedAttributes = ['scene', 'paper', 'params', 'controls', 'text', 'autoplay', 'lang', 'camera'];
 
@@ -52,15 +80,43 @@ export class RuledView extends HTMLElement {
     hostSheet ??= new CSSStyleSheet();
     if (!hostSheet.cssRules.length) hostSheet.replaceSync(HOST_CSS);
     root.adoptedStyleSheets = [...root.adoptedStyleSheets, hostSheet];
+    /** @internal */
     this.container = Object.assign(document.createElement('div'), { className: 'rl-host' });
     root.append(this.container);
-    /** @type {Stage | null} */
+    /** @internal @type {Stage | null} */
     this.stage = null;
-    /** @type {import('./scene.js').ImportedData | null} */
+    /** @internal @type {import('./scene.js').ImportedData | null} */
     this._data = null;
+    /** @internal */
     this.opening = Promise.resolve();
-    /** Counts open() calls: a later one supersedes an earlier one still starting the core. */
+    /** @internal Counts open() calls: a later one supersedes an earlier one still starting the core. */
     this.openings = 0;
+  }
+
+  /**
+   * Listens to an event of the element, typed by its name (`scene-change`, `view-change`,
+   * `camera-change`, `error`: see RuledViewEventMap), or to any other event.
+   * @template {keyof RuledViewEventMap} K
+   * @overload
+   * @param {K} type
+   * @param {(this: RuledView, event: RuledViewEventMap[K]) => unknown} listener
+   * @param {boolean | AddEventListenerOptions} [options]
+   * @returns {void}
+   */
+  /**
+   * @overload
+   * @param {string} type
+   * @param {EventListenerOrEventListenerObject} listener
+   * @param {boolean | AddEventListenerOptions} [options]
+   * @returns {void}
+   */
+  /**
+   * @param {string} type
+   * @param {any} listener
+   * @param {boolean | AddEventListenerOptions} [options]
+   */
+  addEventListener(type, listener, options) {
+    super.addEventListener(type, listener, options);
   }
 
   get scene() {
@@ -128,6 +184,7 @@ export class RuledView extends HTMLElement {
     return this.stage;
   }
 
+  /** @internal */
   connectedCallback() {
     if (this.stage) return;
     const lang = this.getAttribute('lang') || this.closest('[lang]')?.getAttribute('lang') || null;
@@ -143,7 +200,7 @@ export class RuledView extends HTMLElement {
     }
   }
 
-  /** Makes the Stage of this element. */
+  /** @internal Makes the Stage of this element. */
   start(/** @type {string | null} */ lang) {
     this.stage = new Stage(this.container, {
       controls: this.controls,
@@ -171,6 +228,7 @@ export class RuledView extends HTMLElement {
     this.open();
   }
 
+  /** @internal */
   disconnectedCallback() {
     this.stage?.dispose();
     this.stage = null;
@@ -178,7 +236,7 @@ export class RuledView extends HTMLElement {
     delete this.dataset.frames;
   }
 
-  /** @param {string} name @param {string | null} before @param {string | null} after */
+  /** @internal @param {string} name @param {string | null} before @param {string | null} after */
   attributeChangedCallback(name, before, after) {
     if (!this.stage || before === after) return;
     if (name === 'scene' || name === 'params' || name === 'paper') this.open();
@@ -198,6 +256,7 @@ export class RuledView extends HTMLElement {
    * Shows the scene of the attributes, once the core has started (reading a figure's
    * parameters needs it); an unknown scene or figure, or a core that cannot start, is shown in
    * the element in its language and fires `error`.
+   * @internal
    */
   open() {
     const stage = this.stage;
@@ -250,13 +309,13 @@ export class RuledView extends HTMLElement {
   }
 
   /** The current view as a TikZ picture for LaTeX (same options as exportSVG, and `width` in cm). */
-  exportTikZ(/** @type {import('./export/svg.js').FigureOptions & {width?: number}} */ options) {
+  exportTikZ(/** @type {import('./export/svg.js').FigureOptions & {width?: number}} */ options = {}) {
     if (!this.stage) throw Object.assign(new Error('ruled-view: not connected'), { code: 'invalid-argument' });
     return exportTikz(this.stage, options);
   }
 
   /** The current view as a PNG at `scale` (1, 2 or 4) × its size, labels and legend drawn in. */
-  exportPNG(/** @type {{scale?: number, legend?: boolean}} */ options) {
+  exportPNG(/** @type {{scale?: number, legend?: boolean}} */ options = {}) {
     if (!this.stage) return Promise.reject(Object.assign(new Error('ruled-view: not connected'), { code: 'invalid-argument' }));
     return png(this.stage, options);
   }

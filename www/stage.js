@@ -48,38 +48,57 @@ export class Stage {
    * @param {StageOptions} [options]
    */
   constructor(host, options = {}) {
+    /** @internal */
     this.host = host;
+    /** @internal */
     this.options = options;
+    /** @internal */
     this.i18n = translator(pickLanguage(options.lang));
     const id = `rl-stage-${++serial}`;
     const doc = host.ownerDocument;
     const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) => Object.assign(doc.createElement(tag), props);
 
+    /** @internal */
     this.root = el('div', { className: options.page ? 'rl-stage rl-page' : 'rl-stage' });
+    /** @internal */
     this.view = el('div', { className: 'rl-view' });
+    /** @internal */
     this.canvas = /** @type {HTMLCanvasElement} */ (el('canvas', { tabIndex: 0 }));
     this.canvas.setAttribute('role', 'img');
+    /** @internal */
     this.labels = el('div', { className: 'rl-labels' });
     this.labels.setAttribute('aria-hidden', 'true');
+    /** @internal */
     this.legend = el('ul', { className: 'rl-legend' });
+    /** @internal */
     this.toolbar = el('div', { className: 'rl-toolbar' });
+    /** @internal */
     this.progress = el('div', { className: 'rl-progress', hidden: true });
+    /** @internal */
     this.progressBar = el('progress', { max: 1, value: 0 });
+    /** @internal */
     this.cancel = el('button', { type: 'button' });
     this.progress.append(this.progressBar, this.cancel);
+    /** @internal */
     this.error = el('p', { className: 'rl-error', hidden: true });
     this.error.setAttribute('role', 'alert');
+    /** @internal */
     this.noteBox = el('p', { className: 'rl-note', hidden: true });
+    /** @internal */
     this.hint = el('p', { className: 'rl-hint' });
+    /** @internal */
     this.description = el('p', { className: 'rl-sr-only', id: `${id}-description` });
     this.canvas.setAttribute('aria-describedby', this.description.id);
+    /** @internal */
     this.status = el('p', { className: 'rl-sr-only' });
     this.status.setAttribute('aria-live', 'polite');
     // the hint and the toolbar share the bottom edge: the hint takes what room the buttons leave
+    /** @internal */
     this.bar = el('div', { className: 'rl-bar' });
     this.bar.append(this.hint, this.toolbar);
     this.view.append(this.canvas, this.labels, this.legend, this.bar, this.progress, this.noteBox, this.error, this.description, this.status);
 
+    /** @internal */
     this.buttons = {
       fit: el('button', { type: 'button', className: 'rl-fit' }),
       reset: el('button', { type: 'button', className: 'rl-reset' }),
@@ -88,21 +107,34 @@ export class Stage {
     };
     this.toolbar.append(...Object.values(this.buttons));
 
+    /** @internal */
     this.panel = el('div', { className: 'rl-panel' });
+    /** @internal */
     this.heading = el('h2');
+    /** @internal */
     this.paperCard = el('section', { className: 'rl-paper', hidden: true });
     this.paperCard.id = `${id}-paper`;
+    /** @internal */
     this.form = /** @type {HTMLFormElement} */ (el('form', { className: 'rl-controls' }));
+    /** @internal */
     this.player = el('div', { className: 'rl-player', hidden: true });
+    /** @internal */
     this.readout = el('dl', { className: 'rl-readout' });
+    /** @internal */
     this.note = el('p', { className: 'rl-readout-note', hidden: true });
+    /** @internal */
     this.claims = el('ul', { className: 'rl-claims', hidden: true });
+    /** @internal */
     this.caption = el('p', { className: 'rl-caption' });
+    /** @internal */
     this.figure = el('figure', { className: 'rl-figure' });
+    /** @internal */
     this.downloads = el('div', { className: 'rl-downloads' });
+    /** @internal */
     this.text = el('article', { className: 'rl-text' });
     this.panel.append(this.heading, this.paperCard, this.form, this.player, this.readout, this.claims, this.note, this.caption, this.figure, this.downloads, this.text);
     this.root.append(this.view, this.panel);
+    /** @internal */
     this.shortcuts = /** @type {HTMLDialogElement} */ (el('dialog', { className: 'rl-shortcuts' }));
     this.root.append(this.shortcuts);
     host.append(this.root);
@@ -118,6 +150,7 @@ export class Stage {
       const bar = this.toolbar.getBoundingClientRect();
       return { top: legend ? Math.max(0, legend.bottom - view.top) / view.height : 0, bottom: Math.max(0, view.bottom - bar.top) / view.height };
     };
+    /** @internal */
     this.session = new SceneSession(this.viewer, {
       onBuilt: (built, final) => this.shown(built, final),
       onError: (e) => this.fail(e),
@@ -126,6 +159,7 @@ export class Stage {
         if (f !== null) this.progressBar.value = f;
       },
     });
+    /** @internal */
     this.playerControl = new Player((key, value) => this.setParam(key, Number(value.toFixed(Player.stepped(this.param(key)) ? 0 : 4)), false));
     /** @type {import('./scene.js').Scene | null} */
     this.scene = null;
@@ -135,13 +169,15 @@ export class Stage {
     this.data = null;
     /** @type {import('./paper.js').PaperPreset | null} the figure of the paper shown, if any */
     this.paper = null;
-    /** @type {boolean | undefined} whether the reader opened (or closed) the figure's card */
+    /** @internal @type {boolean | undefined} whether the reader opened (or closed) the figure's card */
     this.paperOpen = undefined;
-    /** @type {ReturnType<typeof buildControls> | null} */
+    /** @internal @type {ReturnType<typeof buildControls> | null} */
     this.controls = null;
+    /** @internal */
     this.lastAnnounced = 0;
-    /** @type {string | null} the parameter the reader changed last (an error names its field) */
+    /** @internal @type {string | null} the parameter the reader changed last (an error names its field) */
     this.lastChanged = null;
+    /** @internal */
     this.announceTimer = 0;
 
     this.viewer.onCameraChange = (ended) => {
@@ -160,20 +196,23 @@ export class Stage {
       this.progress.hidden = true;
     });
     this.root.addEventListener('keydown', (e) => this.key(e));
+    /** @internal */
     this.resize = new ResizeObserver(() => this.layout());
     this.resize.observe(this.root);
     this.setPanel(options.controls ?? true, options.text ?? true);
     this.localize();
   }
 
-  /** The Param of the current scene named `key`. */
+  /** @internal The Param of the current scene named `key`. */
   param(/** @type {string} */ key) {
     return /** @type {import('./scene.js').Param} */ (this.scene?.params.find((p) => p.key === key));
   }
 
   /** Shows or hides the controls and the explanation. */
   setPanel(/** @type {boolean} */ controls, /** @type {boolean} */ text) {
+    /** @internal */
     this.showControls = controls;
+    /** @internal */
     this.showText = text;
     this.root.classList.toggle('rl-no-controls', !controls);
     this.text.hidden = !text;
@@ -187,6 +226,7 @@ export class Stage {
    * Panel beside the view when there is room, under it otherwise (narrow: under NARROW px, or a
    * box taller than wide under PORTRAIT px); the labels above the controls when tiny. The box is
    * the element's, or for the page the screen.
+   * @internal
    */
   layout() {
     const box = this.root.getBoundingClientRect();
@@ -201,7 +241,7 @@ export class Stage {
     this.viewer.requestRender();
   }
 
-  /** The texts that depend on the language but not on the scene. */
+  /** @internal The texts that depend on the language but not on the scene. */
   localize() {
     const { t } = this.i18n;
     this.canvas.setAttribute('aria-label', t('view.label'));
@@ -261,6 +301,7 @@ export class Stage {
    * @param {import('./scene.js').Scene} scene
    * @param {import('./scene.js').Params} params
    * @param {{camera?: number[] | null, fit?: boolean}} options
+   * @internal
    */
   enter(scene, params, { camera = null, fit = true }) {
     const { t } = this.i18n;
@@ -304,7 +345,7 @@ export class Stage {
     if (ended) this.announce();
   }
 
-  /** Recomputes the scene for the current parameters. */
+  /** @internal Recomputes the scene for the current parameters. */
   compute({ fit = false } = {}) {
     if (!this.scene) return;
     const context = { t: this.i18n.t, format: this.i18n.format, lang: this.i18n.lang, data: this.data ?? undefined, refine: refineInWorker };
@@ -317,6 +358,7 @@ export class Stage {
    * The card of the paper's figure shown (if any): its caption, what ruledlab shows and whose
    * data it is, where ruledlab goes beyond the paper, and — once a control has moved — the way
    * back to the figure's own settings.
+   * @internal
    */
   showPaper() {
     const card = this.paperCard;
@@ -366,7 +408,7 @@ export class Stage {
     }
   }
 
-  /** After a computation: legend, readout, description, downloads, figure. */
+  /** @internal After a computation: legend, readout, description, downloads, figure. */
   shown(/** @type {import('./scene.js').Built} */ built, /** @type {boolean} */ final) {
     if (!this.scene) return;
     const { t } = this.i18n;
@@ -400,6 +442,7 @@ export class Stage {
   /**
    * Shows an error in the view (and next to the control it concerns), in the view's language;
    * the last picture stays. Returns the sentence shown.
+   * @internal
    */
   fail(/** @type {unknown} */ e) {
     const error = /** @type {any} */ (e);
@@ -419,7 +462,7 @@ export class Stage {
     return message;
   }
 
-  /** The name of the field of parameter `key` in messages ("the z component of e(u)"), or its label. */
+  /** @internal The name of the field of parameter `key` in messages ("the z component of e(u)"), or its label. */
   fieldName(/** @type {string} */ key) {
     const p = this.param(key);
     if (!p) return key;
@@ -427,14 +470,14 @@ export class Stage {
     return has(`${p.label}.field`) ? t(`${p.label}.field`) : plainRich(t(p.label));
   }
 
-  /** Notes about link values that were not used. */
+  /** @internal Notes about link values that were not used. */
   showNotes(/** @type {Array<{key: string, note: string}>} */ notes) {
     const { t } = this.i18n;
     this.noteBox.hidden = notes.length === 0;
     this.noteBox.textContent = notes.map(({ key, note }) => t(note, { key })).join(' ');
   }
 
-  /** Announces the readout to screen readers: only when an interaction ends, at most once a second. */
+  /** @internal Announces the readout to screen readers: only when an interaction ends, at most once a second. */
   announce() {
     const now = performance.now();
     clearTimeout(this.announceTimer);
@@ -448,7 +491,7 @@ export class Stage {
     else this.announceTimer = window.setTimeout(say, wait);
   }
 
-  /** The player row: speed and single step, shown when the scene has a playable parameter. */
+  /** @internal The player row: speed and single step, shown when the scene has a playable parameter. */
   buildPlayer() {
     const { t } = this.i18n;
     const doc = this.root.ownerDocument;
@@ -473,7 +516,7 @@ export class Stage {
     this.player.append(speedLabel, step);
   }
 
-  /** Plays or pauses parameter `key`. */
+  /** @internal Plays or pauses parameter `key`. */
   togglePlay(/** @type {string} */ key) {
     const p = this.param(key);
     if (!p) return;
@@ -486,6 +529,7 @@ export class Stage {
     this.controls?.playing(key);
   }
 
+  /** @internal */
   stopPlaying() {
     if (this.playerControl.playing) this.options.onChange?.({ reason: 'param', ended: true });
     this.playerControl.stop();
@@ -508,7 +552,7 @@ export class Stage {
     else this.root.requestFullscreen?.().catch(() => {});
   }
 
-  /** Keys of the stage: ? shortcuts, R reset, Space play/pause, . single step (the view's own keys are the camera's). */
+  /** @internal Keys of the stage: ? shortcuts, R reset, Space play/pause, . single step (the view's own keys are the camera's). */
   key(/** @type {KeyboardEvent} */ e) {
     const target = /** @type {HTMLElement} */ (e.target);
     const typing = target.matches?.('input[type=text], textarea, select');
@@ -529,7 +573,7 @@ export class Stage {
     }
   }
 
-  /** The list of gestures (first, on a touch screen) and keys that "?" shows. */
+  /** @internal The list of gestures (first, on a touch screen) and keys that "?" shows. */
   buildShortcuts() {
     const { t } = this.i18n;
     const doc = this.root.ownerDocument;
@@ -560,6 +604,7 @@ export class Stage {
     this.shortcuts.replaceChildren(...(touchScreen() ? [...gestures, ...keyboard] : [...keyboard, ...gestures]), close);
   }
 
+  /** @internal */
   showShortcuts() {
     if (!this.shortcuts.open) this.shortcuts.showModal?.();
   }

@@ -12,3 +12,37 @@ export { readState, writeState } from './state.js';
 export { defineScene, scoped, bounds, readParams, defaults, RESERVED_KEYS } from './scene.js';
 export { STYLES, PALETTE } from './theme.js';
 export { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
+
+// The types of the pieces above, for TypeScript users (pkg/view/www/view.d.ts is generated from
+// this JSDoc and the sources' own: scripts/view-types.mjs).
+/**
+ * @typedef {import('./core.js').WasmSource} WasmSource
+ * @typedef {import('./scene.js').Scene} Scene
+ * @typedef {import('./scene.js').Param} Param
+ * @typedef {import('./scene.js').Params} Params
+ * @typedef {import('./scene.js').Context} Context
+ * @typedef {import('./scene.js').Built} Built
+ * @typedef {import('./scene.js').Layer} Layer
+ * @typedef {import('./scene.js').Label} Label
+ * @typedef {import('./scene.js').LegendEntry} LegendEntry
+ * @typedef {import('./scene.js').Readout} Readout
+ * @typedef {import('./scene.js').Download} Download
+ * @typedef {import('./scene.js').Claim} Claim
+ * @typedef {import('./scene.js').ImportedData} ImportedData
+ * @typedef {import('./paper.js').PaperPreset} PaperPreset
+ * @typedef {import('./state.js').ViewState} ViewState
+ * @typedef {import('./theme.js').Style} Style
+ * @typedef {import('./theme.js').LineStyle} LineStyle
+ * @typedef {import('./theme.js').PointStyle} PointStyle
+ * @typedef {import('./theme.js').AreaStyle} AreaStyle
+ * @typedef {import('./i18n/index.js').Translator} Translator
+ * @typedef {import('./camera.js').OrbitCamera} OrbitCamera
+ * @typedef {import('./stage.js').StageOptions} StageOptions
+ * @typedef {import('./export/svg.js').FigureOptions} FigureOptions
+ * @typedef {import('./ruled-view.js').SceneChangeDetail} SceneChangeDetail
+ * @typedef {import('./ruled-view.js').ViewChangeDetail} ViewChangeDetail
+ * @typedef {import('./ruled-view.js').CameraChangeDetail} CameraChangeDetail
+ * @typedef {import('./ruled-view.js').RuledViewErrorDetail} RuledViewErrorDetail
+ * @typedef {import('./ruled-view.js').RuledViewEvents} RuledViewEvents
+ * @typedef {import('./ruled-view.js').RuledViewEventMap} RuledViewEventMap
+ */

@@ -76,26 +76,34 @@ export class Viewer {
    */
   constructor(canvas, labelLayer) {
     this.canvas = canvas;
+    /** @internal */
     this.labelLayer = labelLayer;
+    /** @internal */
     this.background = [...rgb(PALETTE.paper), 1];
     this.camera = new OrbitCamera();
-    /** @type {Batch[]} */
+    /** @internal @type {Batch[]} */
     this.batches = [];
-    /** @type {Array<Batch | null>} the stand-ins of the layers that have one (Layer.moving) */
+    /** @internal @type {Array<Batch | null>} the stand-ins of the layers that have one (Layer.moving) */
     this.light = [];
-    /** Whether the camera is moving: the stand-ins are drawn. */
+    /** @internal Whether the camera is moving: the stand-ins are drawn. */
     this.moving = false;
-    /** Time between the last two frames drawn in a row (ms): a rest must be longer. */
+    /** @internal Time between the last two frames drawn in a row (ms): a rest must be longer. */
     this.frameGap = 0;
+    /** @internal */
     this.lastFrameAt = 0;
+    /** @internal */
     this.restTimer = 0;
     /** @type {import('./scene.js').Built | null} */
     this.built = null;
-    /** @type {(() => {top: number, bottom: number}) | null} shares of the height that overlays cover, for fit() */
+    /** @internal @type {(() => {top: number, bottom: number}) | null} shares of the height that overlays cover, for fit() */
     this.insets = null;
+    /** @internal */
     this.frames = 0;
+    /** @internal */
     this.pending = false;
+    /** @internal */
     this.lost = false;
+    /** @internal */
     this.disposed = false;
     /** @type {((frames: number) => void) | null} */
     this.onFrame = null;
@@ -103,13 +111,16 @@ export class Viewer {
     this.onCameraChange = null;
     const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: false });
     if (!gl) throw Object.assign(new Error('This page needs WebGL2, which this browser does not provide.'), { code: 'no-webgl2' });
+    /** @internal */
     this.gl = gl;
+    /** @internal */
     this.onLost = (/** @type {Event} */ e) => {
       e.preventDefault();
       this.lost = true;
       this.batches = [];
       this.light = [];
     };
+    /** @internal */
     this.onRestored = () => {
       this.lost = false;
       forgetPrograms(gl);
@@ -123,6 +134,7 @@ export class Viewer {
       this.onCameraChange?.(ended);
     });
     // a view resized while its camera is where fit() put it is framed again (a moved camera stays)
+    /** @internal */
     this.resize = new ResizeObserver(() => {
       if (this.camera.atHome()) this.fit();
       this.requestRender();
@@ -130,7 +142,7 @@ export class Viewer {
     this.resize.observe(canvas);
   }
 
-  /** Width / height of the view. */
+  /** @internal Width / height of the view. */
   get aspect() {
     return (this.canvas.clientWidth || 1) / (this.canvas.clientHeight || 1);
   }
@@ -154,6 +166,7 @@ export class Viewer {
     this.requestRender();
   }
 
+  /** @internal */
   rebuild() {
     const gl = this.gl;
     this.labelLayer.replaceChildren(
@@ -175,6 +188,7 @@ export class Viewer {
   /**
    * The camera moved: draw the stand-ins until it has rested for REST ms (or two frame times,
    * when frames are slower than that), then everything.
+   * @internal
    */
   moved() {
     if (!this.light.some(Boolean)) return;
@@ -202,7 +216,7 @@ export class Viewer {
     });
   }
 
-  /** The frame's matrices and sizes for the current canvas size (`scale`: pixels per CSS pixel). */
+  /** @internal The frame's matrices and sizes for the current canvas size (`scale`: pixels per CSS pixel). */
   frame(scale = window.devicePixelRatio || 1) {
     const { canvas } = this;
     const dpr = scale;
@@ -255,6 +269,7 @@ export class Viewer {
    * Moves each label next to the screen position of its anchor (hidden behind the camera).
    * A small collision pass picks, per label, the side of its anchor where it overlaps no label
    * placed before it and no line the scene wants kept clear (`built.keepClear`).
+   * @internal
    */
   placeLabels(/** @type {Float32Array} */ m) {
     const labels = this.built?.labels ?? [];

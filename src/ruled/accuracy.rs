@@ -19,6 +19,7 @@ use glam::DVec3;
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
+#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
 pub struct SamplingErrors {
     /// Rulings sampled.
     pub rulings: usize,
@@ -67,6 +68,7 @@ pub fn sampling_errors(surface: &(impl SmoothRuled + ?Sized), count: usize, rang
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
+#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
 pub struct SamplingOrders {
     /// Rulings of the finer sampling.
     pub finer: usize,

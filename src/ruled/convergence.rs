@@ -27,8 +27,16 @@ const NOISE_FLOOR: f64 = 1e-13;
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
+#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+#[cfg_attr(target_family = "wasm", tsify(type_prefix = "Convergence"))]
 pub struct Series {
     /// Name of the quantity (see the module table).
+    #[cfg_attr(
+        target_family = "wasm",
+        tsify(
+            type = "\"footpoint\" | \"midpoint\" | \"distribution\" | \"distributionMean\" | \"centralNormal\" | \"perpendicularMidpoint\""
+        )
+    )]
     pub name: &'static str,
     /// The order Propositions 1 and 2 predict.
     pub expected_order: f64,
@@ -44,6 +52,8 @@ pub struct Series {
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
+#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+#[cfg_attr(target_family = "wasm", tsify(type_prefix = "Convergence"))]
 pub struct Study {
     /// Surface name.
     pub surface: String,

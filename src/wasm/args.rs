@@ -312,3 +312,13 @@ pub fn describe(value: &JsValue) -> String {
     let article = if name.starts_with(['a', 'e', 'i', 'o', 'u', 'A', 'E', 'I', 'O']) { "an" } else { "a" };
     format!("{article} {name}")
 }
+
+/// The parameter interval [uMin, uMax] of the distance searches: finite, uMin < uMax.
+pub fn interval(func: &str, u_min: &JsValue, u_max: &JsValue) -> Result<(f64, f64), JsValue> {
+    let (a, b) = (number(func, "uMin", u_min)?, number(func, "uMax", u_max)?);
+    if a < b {
+        Ok((a, b))
+    } else {
+        Err(fail(func, format!("need uMin < uMax, got {a} and {b}")))
+    }
+}

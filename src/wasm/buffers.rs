@@ -5,8 +5,8 @@
 
 use super::args::{self, fail, integer, to_js};
 use super::congruence::LineCongruence;
+use super::milling::ToolPath;
 use super::surface::RuledSurface;
-use super::toolpath::ToolPath;
 use crate::line::Segment;
 use crate::mesh::Mesh;
 use crate::milling::example;
@@ -15,12 +15,6 @@ use crate::subdivision::triangulation::{self, Triangulation};
 use glam::DVec3;
 use js_sys::{Float32Array, Float64Array, Uint32Array};
 use wasm_bindgen::prelude::*;
-
-#[wasm_bindgen(typescript_custom_section)]
-const TS_TYPES: &str = r#"
-/** An indexed triangle mesh for WebGL: 3 floats per vertex, 3 indices per triangle. */
-export interface MeshBuffers { positions: Float32Array; indices: Uint32Array }
-"#;
 
 /// Segments as f32, 6 per segment.
 pub fn segments_f32(segments: &[Segment]) -> Float32Array {
@@ -34,18 +28,20 @@ pub fn points_f32(points: &[DVec3]) -> Float32Array {
     Float32Array::from(&out[..])
 }
 
-/// A mesh for WebGL, as JS sees it (`MeshBuffers`).
-#[derive(serde::Serialize)]
-struct MeshJs {
+/// An indexed triangle mesh for WebGL: 3 floats per vertex, 3 indices per triangle.
+#[derive(serde::Serialize, tsify_next::Tsify)]
+struct MeshBuffers {
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float32Array")]
     positions: Float32Array,
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Uint32Array")]
     indices: Uint32Array,
 }
 
 /// A mesh as `{ positions, indices }`.
 pub fn mesh_buffers(func: &str, mesh: &Mesh) -> Result<JsValue, JsValue> {
-    to_js(func, &MeshJs { positions: points_f32(&mesh.positions), indices: Uint32Array::from(&mesh.indices[..]) })
+    to_js(func, &MeshBuffers { positions: points_f32(&mesh.positions), indices: Uint32Array::from(&mesh.indices[..]) })
 }
 
 /// Triangle indices of a ruled strip drawn from its segments (a_i at vertex 2i, b_i at 2i + 1):

@@ -2,92 +2,52 @@
 //! `LineCongruence.focal()`, `AnalyticCongruence.focal()`, the focal sheets and torsal strokes
 //! the page draws, and `linearComplex` of segments, surfaces and congruences.
 
-use super::args::{self, fail, finite_option, to_js};
+use super::args::{self, fail, to_js};
 use super::buffers::{points_f32, segments_f32};
-use super::congruence::{AnalyticCongruence, LineCongruence};
-use super::surface::RuledSurface;
-use crate::congruence::focal::{self, Focal};
-use crate::line::Segment;
-use crate::linear_complex::{self, LinearComplex};
-use crate::ruled::RuledSurface as CoreSurface;
+use super::catalogue::AnalyticCongruence;
+use super::congruence::LineCongruence;
+use super::live::Live;
+use crate::congruence::focal::{self, Focal, FocalKind};
+use crate::congruence::LineCongruence as CoreCongruence;
 use crate::tolerance::MAX_RULINGS;
 use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
+use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
-#[wasm_bindgen(typescript_custom_section)]
-const TS_TYPES: &str = r#"
-/**
- * The focal geometry of every line of a congruence (README, "Focal geometry"): a line runs
- * p → q, e = (q − p)/|q − p|, a point on it is p + t·e. Per line, row-major.
- */
-export interface FocalGeometry {
-  rows: number; cols: number;
-  /** 6 per line: the focal points F1 then F2 (NaN when not real or at infinity). */
-  points: Float64Array;
-  /** 2 per line: t1 ≤ t2 (±Infinity for a focal point at infinity, NaN when not real). */
-  parameters: Float64Array;
-  /** 1 per line: 0 elliptic (no real focal point), 1 hyperbolic (two), 2 parabolic (one double). */
-  kind: Uint8Array;
-  /** 4 per line: the unit torsal directions (du, dv) of F1 and of F2, in grid steps, du > 0 (NaN when not real). */
-  torsal: Float64Array;
-  /** 3 per line: the midpoint of the focal points (real for every kind; NaN if the quadratic degenerates). */
-  middle: Float64Array;
-  /** 1 per line: |cos| of the angle between the focal planes, 0 for a normal congruence (NaN when not real). */
-  normality: Float64Array;
-}
-
-/** Options of `linearComplex`. */
-export interface LinearComplexOptions {
-  /** Root-mean-square residual in the fit's frame (centred, lengths divided by the lines' spread) under which a complex holds the lines; default 1e-9. */
-  tolerance?: number;
-}
-
-/**
- * The linear complex c·m + c̄·d = 0 that fits the lines best (Plücker coordinates (d, m), d unit,
- * m = x × d), with how many independent complexes hold them.
- */
-export interface LinearComplexFit {
-  /** (c, c̄), |c| = 1 (|c̄| = 1 when c = 0: the lines orthogonal to c̄). */
-  plucker: Float64Array;
-  /** (c·c̄)/(c·c); Infinity when c = 0. */
-  pitch: number;
-  /** (c × c̄)/(c·c): the axis point nearest the origin (NaN when c = 0). */
-  axisPoint: Float64Array;
-  /** c (c̄ when c = 0), unit. */
-  axisDirection: Float64Array;
-  /** 6 numbers: a piece of the axis to draw, centred at the foot of the lines' centroid, 4 spreads long (NaN when c = 0). */
-  axisSegment: Float64Array;
-  /** Root mean square of c·m + c̄·d over the lines. */
-  residual: number;
-  /** The residual (in the fit's frame) of each of six orthogonal complexes, ascending. */
-  spectrum: Float64Array;
-  /** How many independent complexes hold the lines within the tolerance. */
-  nullity: number;
-  /** 0: "general", 1: "complex", 2: "congruence", 3: "regulus" (or "special": a bundle or field of lines), more: "special". */
-  kind: "general" | "complex" | "congruence" | "regulus" | "special";
-}
-
-/** A focal sheet for WebGL: positions, triangle indices and smooth vertex normals. */
-export interface FocalSheetBuffers { positions: Float32Array; indices: Uint32Array; normals: Float32Array }
-"#;
-
-/// `FocalGeometry`.
-#[derive(Serialize)]
-struct FocalJs {
+/// The focal geometry of every line of a congruence (README, "Focal geometry"): a line runs
+/// p → q, e = (q − p)/|q − p|, a point on it is p + t·e. Per line, row-major.
+#[derive(Serialize, Tsify)]
+struct FocalGeometry {
     rows: usize,
     cols: usize,
+    /// 6 per line: the focal points F1 then F2 (NaN when not real or at infinity).
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     points: Float64Array,
+    /// 2 per line: t1 ≤ t2 (±Infinity for a focal point at infinity, NaN when not real).
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     parameters: Float64Array,
+    /// 1 per line: 0 elliptic (no real focal point), 1 hyperbolic (two), 2 parabolic (one
+    /// double).
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Uint8Array")]
     kind: Uint8Array,
+    /// 4 per line: the unit torsal directions (du, dv) of F1 and of F2, in grid steps, du > 0
+    /// (NaN when not real).
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     torsal: Float64Array,
+    /// 3 per line: the midpoint of the focal points (real for every kind; NaN if the quadratic
+    /// degenerates).
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     middle: Float64Array,
+    /// 1 per line: |cos| of the angle between the focal planes, 0 for a normal congruence (NaN
+    /// when not real).
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     normality: Float64Array,
 }
 
@@ -96,7 +56,7 @@ pub(super) fn focal_js(func: &str, rows: usize, cols: usize, all: &[Focal]) -> R
     let kind: Vec<u8> = all.iter().map(|f| f.kind as u8).collect();
     to_js(
         func,
-        &FocalJs {
+        &FocalGeometry {
             rows,
             cols,
             points: f64s(all.iter().flat_map(|f| f.points).flat_map(|p| p.to_array()).collect()),
@@ -109,95 +69,17 @@ pub(super) fn focal_js(func: &str, rows: usize, cols: usize, all: &[Focal]) -> R
     )
 }
 
-/// `LinearComplexOptions`.
-#[derive(Deserialize, Default)]
-#[serde(rename_all = "camelCase")]
-struct ComplexOptions {
-    tolerance: Option<f64>,
-}
-
-/// `LinearComplexFit`.
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct ComplexJs {
+/// A focal sheet for WebGL: positions, triangle indices and smooth vertex normals.
+#[derive(Serialize, Tsify)]
+struct FocalSheetBuffers {
     #[serde(with = "serde_wasm_bindgen::preserve")]
-    plucker: Float64Array,
-    pitch: f64,
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    axis_point: Float64Array,
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    axis_direction: Float64Array,
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    axis_segment: Float64Array,
-    residual: f64,
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    spectrum: Float64Array,
-    nullity: usize,
-    kind: &'static str,
-}
-
-fn complex_js(func: &str, segments: &[Segment], options: JsValue) -> Result<JsValue, JsValue> {
-    let options: ComplexOptions = args::options(func, options)?;
-    let tolerance = finite_option(func, "tolerance", options.tolerance)?;
-    if let Some(t) = tolerance.filter(|t| !(*t > 0.0 && *t <= 1.0)) {
-        return Err(args::fail_option(
-            func,
-            "tolerance",
-            format!("options.tolerance must be a number in (0, 1], got {t}"),
-        ));
-    }
-    let f: LinearComplex = linear_complex::fit(segments, tolerance);
-    to_js(
-        func,
-        &ComplexJs {
-            plucker: Float64Array::from(&f.plucker[..]),
-            pitch: f.pitch,
-            axis_point: Float64Array::from(&f.axis_point.to_array()[..]),
-            axis_direction: Float64Array::from(&f.axis_direction.to_array()[..]),
-            axis_segment: Float64Array::from(
-                &[f.axis_segment[0].to_array(), f.axis_segment[1].to_array()].concat()[..],
-            ),
-            residual: f.residual,
-            spectrum: Float64Array::from(&f.spectrum[..]),
-            nullity: f.nullity,
-            kind: f.kind.name(),
-        },
-    )
-}
-
-/// The best-fitting linear complex of segments (6 numbers each: a then b; at least 2).
-#[wasm_bindgen(js_name = linearComplex, unchecked_return_type = "LinearComplexFit")]
-pub fn linear_complex_of(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] segments: JsValue,
-    #[wasm_bindgen(unchecked_optional_param_type = "LinearComplexOptions")] options: JsValue,
-) -> Result<JsValue, JsValue> {
-    const F: &str = "linearComplex";
-    let coords = args::numbers(F, "segments", &segments)?;
-    let surface = CoreSurface::from_flat(&coords).map_err(|e| fail(F, e))?;
-    complex_js(F, &surface.segments().collect::<Vec<_>>(), options)
-}
-
-#[wasm_bindgen]
-impl RuledSurface {
-    /// The linear complex that fits the rulings best (a helical surface: its screw axis; a
-    /// regulus: nullity 3).
-    #[wasm_bindgen(js_name = linearComplex, unchecked_return_type = "LinearComplexFit")]
-    pub fn linear_complex(
-        &self,
-        #[wasm_bindgen(unchecked_optional_param_type = "LinearComplexOptions")] options: JsValue,
-    ) -> Result<JsValue, JsValue> {
-        complex_js("RuledSurface.linearComplex", &self.core().segments().collect::<Vec<_>>(), options)
-    }
-}
-
-/// `FocalSheetBuffers`.
-#[derive(Serialize)]
-struct SheetJs {
-    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float32Array")]
     positions: Float32Array,
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Uint32Array")]
     indices: Uint32Array,
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float32Array")]
     normals: Float32Array,
 }
 
@@ -227,7 +109,7 @@ impl LineCongruence {
         let normals = mesh.vertex_normals();
         to_js(
             F,
-            &SheetJs {
+            &FocalSheetBuffers {
                 positions: points_f32(&mesh.positions),
                 indices: Uint32Array::from(&mesh.indices[..]),
                 normals: points_f32(&normals),
@@ -252,17 +134,6 @@ impl LineCongruence {
         let all = focal::focal_grid(c.rows(), c.cols(), &p, &c.q());
         Ok(segments_f32(&focal::torsal_strokes(c.rows(), c.cols(), &p, &all, scale)))
     }
-
-    /// The linear complex that fits the lines best.
-    #[wasm_bindgen(js_name = linearComplex, unchecked_return_type = "LinearComplexFit")]
-    pub fn linear_complex(
-        &self,
-        #[wasm_bindgen(unchecked_optional_param_type = "LinearComplexOptions")] options: JsValue,
-    ) -> Result<JsValue, JsValue> {
-        let c = self.core();
-        let segments: Vec<Segment> = (0..c.rows() * c.cols()).map(|k| c.line(k / c.cols(), k % c.cols())).collect();
-        complex_js("LineCongruence.linearComplex", &segments, options)
-    }
 }
 
 #[wasm_bindgen]
@@ -285,5 +156,127 @@ impl AnalyticCongruence {
             return Err(fail(F, crate::Error::TooMany { what: "lines", got, max: MAX_RULINGS }));
         }
         focal_js(F, rows, cols, &focal::focal_analytic(self.core(), rows, cols))
+    }
+}
+
+/// The focal geometry of a congruence's lines, computed once (free it when done).
+#[wasm_bindgen]
+pub struct CongruenceFocal {
+    grid: CoreCongruence,
+    focal: Vec<Focal>,
+    _live: Live,
+}
+
+/// A focal sheet for WebGL with the box of its drawn vertices.
+#[derive(Serialize, Tsify)]
+struct FocalSheetFigure {
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float32Array")]
+    positions: Float32Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Uint32Array")]
+    indices: Uint32Array,
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float32Array")]
+    normals: Float32Array,
+    /// The least x, y, z of the drawn vertices (NaN when nothing is drawn).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    min: Float64Array,
+    /// The greatest x, y, z of the drawn vertices (NaN when nothing is drawn).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    max: Float64Array,
+}
+
+#[wasm_bindgen]
+impl LineCongruence {
+    /// The focal geometry of every line, computed once, with the figures drawn from it
+    /// (`CongruenceFocal`): what `focal()`, `focalSheetF32` and `torsalStrokesF32` each compute
+    /// anew.
+    #[wasm_bindgen(js_name = focalGeometry)]
+    pub fn focal_geometry(&self) -> CongruenceFocal {
+        let c = self.core();
+        CongruenceFocal {
+            grid: c.clone(),
+            focal: focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()),
+            _live: Live::new(),
+        }
+    }
+}
+
+#[wasm_bindgen]
+impl CongruenceFocal {
+    /// Per line, row-major: focal points and parameters, kind, torsal directions, middle
+    /// points and normality (`FocalGeometry`, as `LineCongruence.focal()`).
+    #[wasm_bindgen(unchecked_return_type = "FocalGeometry")]
+    pub fn result(&self) -> Result<JsValue, JsValue> {
+        focal_js("CongruenceFocal.result", self.grid.rows(), self.grid.cols(), &self.focal)
+    }
+
+    /// How many lines are elliptic, hyperbolic and parabolic (in that order).
+    pub fn counts(&self) -> Vec<u32> {
+        let count = |k: FocalKind| self.focal.iter().filter(|f| f.kind == k).count() as u32;
+        vec![count(FocalKind::Elliptic), count(FocalKind::Hyperbolic), count(FocalKind::Parabolic)]
+    }
+
+    /// The lines of one kind (0 elliptic, 1 hyperbolic, 2 parabolic) as f32 segments p → q.
+    #[wasm_bindgen(js_name = linesOfKindF32)]
+    pub fn lines_of_kind_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "0 | 1 | 2")] kind: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        let kind = args::integer("CongruenceFocal.linesOfKindF32", "kind", &kind, 0, 2)?;
+        let cols = self.grid.cols();
+        let lines: Vec<_> = (0..self.focal.len())
+            .filter(|&k| self.focal[k].kind as usize == kind)
+            .map(|k| self.grid.line(k / cols, k % cols))
+            .collect();
+        Ok(segments_f32(&lines))
+    }
+
+    /// Focal sheet 1 (of t1) or 2 (of t2) as a mesh with vertex normals and the box of the
+    /// vertices its triangles use (what a view frames): the grid's quads whose four focal
+    /// points are real and near the lines.
+    #[wasm_bindgen(js_name = sheetF32, unchecked_return_type = "FocalSheetFigure")]
+    pub fn sheet_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "1 | 2")] sheet: JsValue,
+    ) -> Result<JsValue, JsValue> {
+        const F: &str = "CongruenceFocal.sheetF32";
+        let sheet = args::integer(F, "sheet", &sheet, 1, 2)?;
+        let mesh = focal::focal_sheet(&self.grid, &self.focal, sheet - 1);
+        let normals = mesh.vertex_normals();
+        let used = mesh.indices.iter().map(|&i| mesh.positions[i as usize]);
+        let (min, max) = used
+            .fold((glam::DVec3::splat(f64::INFINITY), glam::DVec3::splat(f64::NEG_INFINITY)), |(a, b), p| {
+                (a.min(p), b.max(p))
+            });
+        let finite = |v: glam::DVec3| if v.is_finite() { v } else { glam::DVec3::NAN };
+        to_js(
+            F,
+            &FocalSheetFigure {
+                positions: points_f32(&mesh.positions),
+                indices: Uint32Array::from(&mesh.indices[..]),
+                normals: points_f32(&normals),
+                min: Float64Array::from(&finite(min).to_array()[..]),
+                max: Float64Array::from(&finite(max).to_array()[..]),
+            },
+        )
+    }
+
+    /// Strokes on the director surface d₁ along the real torsal directions, p ± scale·(du·p_i
+    /// + dv·p_j) (`scale` default 0.35 of a grid step), as f32 segments.
+    #[wasm_bindgen(js_name = strokesF32)]
+    pub fn strokes_f32(
+        &self,
+        #[wasm_bindgen(unchecked_optional_param_type = "number")] scale: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        const F: &str = "CongruenceFocal.strokesF32";
+        let scale = if scale.is_undefined() { 0.35 } else { args::number(F, "scale", &scale)? };
+        if !(scale > 0.0 && scale <= 10.0) {
+            return Err(fail(F, format!("scale must be a number in (0, 10], got {scale}")));
+        }
+        Ok(segments_f32(&focal::torsal_strokes(self.grid.rows(), self.grid.cols(), &self.grid.p(), &self.focal, scale)))
     }
 }

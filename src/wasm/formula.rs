@@ -3,85 +3,23 @@
 //! serde-wasm-bindgen, unknown keys refused.
 
 use super::args::{required, to_js};
-use super::congruence::AnalyticCongruence;
+use super::catalogue::AnalyticCongruence;
+use super::catalogue::AnalyticSurface;
 use super::error::{fail, fail_option};
-use super::surface::AnalyticSurface;
 use crate::catalogue::{self as examples, CongruenceSpec, FormulaSpec};
 use crate::formula::{check, Formula, PARAMETERS};
 use serde::de::{self, Deserializer, Visitor};
 use serde::{Deserialize, Serialize};
+use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
 #[wasm_bindgen(typescript_custom_section)]
-const TS_TYPES: &str = r#"
+const TS_BOUND: &str = r#"
 /**
  * A number, or a formula of the named parameters a, b, c and the constants pi, e
  * (e.g. "2*pi"), for the ends of a parameter interval.
  */
 export type Bound = number | string;
-
-/** Values of the named parameters a, b, c a formula may use (each defaults to 1). */
-export interface FormulaParameters { a?: number; b?: number; c?: number }
-
-/**
- * A ruled surface x(u, v) = a(u) + v·e(u) typed as formulas in u (and a, b, c): e.g.
- * `{ a: ["cos(u)", "2*sin(u)", "0"], e: ["-sin(u)", "2*cos(u)", "3"], u: [0, "2*pi"], closed: true }`.
- * Functions: + − * / ^, sin cos tan asin acos atan atan2 sinh cosh tanh exp ln log sqrt abs;
- * constants pi, e. At most 1000 characters and 64 levels of parentheses per formula.
- */
-export interface SurfaceFormulas {
-  a: [string, string, string];
-  e: [string, string, string];
-  u: [Bound, Bound];
-  /** Segment ends along e (default [−1, 1]). */
-  v?: [Bound, Bound];
-  /** Whether u wraps around, as on a closed surface (default false). */
-  closed?: boolean;
-  parameters?: FormulaParameters;
-  /**
-   * Whether numbers may be written with a decimal comma ("0,5*u"; default false). true (a
-   * German reader): a comma between two digits is a decimal point, except in the arguments of
-   * atan2, where "atan2(1,5)" is refused as ambiguous (write 1.5, or "1, 5" for two arguments);
-   * "unambiguous" (an English reader of a German link): the same outside atan2, a separator
-   * inside it.
-   */
-  decimalComma?: boolean | "unambiguous";
-}
-
-/** A line congruence p(u, v) + t·e(u, v) typed as formulas in u, v (and a, b, c). */
-export interface CongruenceFormulas {
-  p: [string, string, string];
-  e: [string, string, string];
-  u: [Bound, Bound];
-  v: [Bound, Bound];
-  parameters?: FormulaParameters;
-  /** Default grid of `grid()`: rows along u (default 8), 2 … 1000. */
-  rows?: number;
-  /** Columns along v (default 8), 2 … 1000. */
-  cols?: number;
-  /** As in `SurfaceFormulas`. */
-  decimalComma?: boolean | "unambiguous";
-}
-
-/** A surface of the catalogue as formulas (`AnalyticSurface.formulaPresets()`): `fromFormulas` of it is that surface. */
-export interface SurfacePreset {
-  name: string;
-  a: [string, string, string]; e: [string, string, string];
-  u: [string, string]; v: [string, string];
-  closed: boolean;
-  parameters: { a: number; b: number; c: number };
-}
-
-/** A congruence of the catalogue as formulas (`AnalyticCongruence.formulaPresets()`). */
-export interface CongruencePreset {
-  name: string;
-  p: [string, string, string]; e: [string, string, string];
-  u: [string, string]; v: [string, string];
-  rows: number; cols: number;
-  parameters: { a: number; b: number; c: number };
-  /** Segment length along e that passes the focal points (the focal scene's lines). */
-  reach: number;
-}
 "#;
 
 /// An interval end: a number, or a formula in the parameters.
@@ -115,44 +53,72 @@ impl<'de> Deserialize<'de> for Bound {
     }
 }
 
-#[derive(Deserialize, Default)]
-struct Parameters {
+/// Values of the named parameters a, b, c a formula may use (each defaults to 1).
+#[derive(Deserialize, Default, Tsify)]
+#[serde(default)]
+struct FormulaParameters {
     a: Option<f64>,
     b: Option<f64>,
     c: Option<f64>,
 }
 
-impl Parameters {
+impl FormulaParameters {
     fn values(&self) -> [f64; 3] {
         [self.a.unwrap_or(1.0), self.b.unwrap_or(1.0), self.c.unwrap_or(1.0)]
     }
 }
 
-#[derive(Deserialize)]
+/// A ruled surface x(u, v) = a(u) + v·e(u) typed as formulas in u (and a, b, c): e.g.
+/// `{ a: ["cos(u)", "2*sin(u)", "0"], e: ["-sin(u)", "2*cos(u)", "3"], u: [0, "2*pi"], closed:
+/// true }`. Functions: + − * / ^, sin cos tan asin acos atan atan2 sinh cosh tanh exp ln log
+/// sqrt abs; constants pi, e. At most 1000 characters and 64 levels of parentheses per formula.
+#[derive(Deserialize, Tsify)]
 struct SurfaceFormulas {
     a: [String; 3],
     e: [String; 3],
+    #[tsify(type = "[Bound, Bound]")]
     u: [Bound; 2],
+    /// Segment ends along e (default [−1, 1]).
+    #[serde(default)]
+    #[tsify(optional, type = "[Bound, Bound]")]
     v: Option<[Bound; 2]>,
+    /// Whether u wraps around, as on a closed surface (default false).
     #[serde(default)]
     closed: bool,
     #[serde(default)]
-    parameters: Parameters,
+    parameters: FormulaParameters,
+    /// Whether numbers may be written with a decimal comma ("0,5*u"; default false). true (a
+    /// German reader): a comma between two digits is a decimal point, except in the arguments
+    /// of atan2, where "atan2(1,5)" is refused as ambiguous (write 1.5, or "1, 5" for two
+    /// arguments); "unambiguous" (an English reader of a German link): the same outside atan2,
+    /// a separator inside it.
     #[serde(default, rename = "decimalComma")]
+    #[tsify(type = "boolean | \"unambiguous\"")]
     decimal_comma: Comma,
 }
 
-#[derive(Deserialize)]
+/// A line congruence p(u, v) + t·e(u, v) typed as formulas in u, v (and a, b, c).
+#[derive(Deserialize, Tsify)]
 struct CongruenceFormulas {
     p: [String; 3],
     e: [String; 3],
+    #[tsify(type = "[Bound, Bound]")]
     u: [Bound; 2],
+    #[tsify(type = "[Bound, Bound]")]
     v: [Bound; 2],
     #[serde(default)]
-    parameters: Parameters,
+    parameters: FormulaParameters,
+    /// Default grid of `grid()`: rows along u (default 8), 2 … 1000.
+    #[serde(default)]
+    #[tsify(optional)]
     rows: Option<f64>,
+    /// Columns along v (default 8), 2 … 1000.
+    #[serde(default)]
+    #[tsify(optional)]
     cols: Option<f64>,
+    /// As in `SurfaceFormulas`.
     #[serde(default, rename = "decimalComma")]
+    #[tsify(type = "boolean | \"unambiguous\"")]
     decimal_comma: Comma,
 }
 
@@ -233,22 +199,23 @@ fn interval(
     Ok((value(0)?, value(1)?))
 }
 
-/// The values of a, b, c as an object.
-#[derive(Serialize)]
-struct Values {
+/// The values of the parameters a, b, c.
+#[derive(Serialize, Tsify)]
+struct ParameterValues {
     a: f64,
     b: f64,
     c: f64,
 }
 
-impl From<[f64; 3]> for Values {
+impl From<[f64; 3]> for ParameterValues {
     fn from([a, b, c]: [f64; 3]) -> Self {
-        Values { a, b, c }
+        ParameterValues { a, b, c }
     }
 }
 
-/// `SurfacePreset`, written by serde.
-#[derive(Serialize)]
+/// A surface of the catalogue as formulas (`AnalyticSurface.formulaPresets()`): `fromFormulas`
+/// of it is that surface.
+#[derive(Serialize, Tsify)]
 struct SurfacePreset {
     name: &'static str,
     a: [&'static str; 3],
@@ -256,11 +223,11 @@ struct SurfacePreset {
     u: [&'static str; 2],
     v: [&'static str; 2],
     closed: bool,
-    parameters: Values,
+    parameters: ParameterValues,
 }
 
-/// `CongruencePreset`, written by serde.
-#[derive(Serialize)]
+/// A congruence of the catalogue as formulas (`AnalyticCongruence.formulaPresets()`).
+#[derive(Serialize, Tsify)]
 struct CongruencePreset {
     name: &'static str,
     p: [&'static str; 3],
@@ -269,7 +236,8 @@ struct CongruencePreset {
     v: [&'static str; 2],
     rows: usize,
     cols: usize,
-    parameters: Values,
+    parameters: ParameterValues,
+    /// Segment length along e that passes the focal points (the focal scene's lines).
     reach: f64,
 }
 

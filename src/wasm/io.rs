@@ -6,21 +6,15 @@ use super::surface::RuledSurface;
 use crate::io;
 use js_sys::Float64Array;
 use serde::Serialize;
+use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
-#[wasm_bindgen(typescript_custom_section)]
-const TS_TYPES: &str = r#"
-/** Segments read by `importSegments`: 6 numbers per line, and a grid shape when the file gives one. */
-export interface ImportedSegments { segments: Float64Array; rows?: number; cols?: number }
-
-/** Options of `export`: the object's name in an OBJ file (default "ruledlab"). */
-export interface ExportOptions { name?: string }
-"#;
-
-/// `ImportedSegments`, written by serde.
-#[derive(Serialize)]
-struct ImportedJs {
+/// Segments read by `importSegments`: 6 numbers per line, and a grid shape when the file
+/// gives one.
+#[derive(Serialize, Tsify)]
+struct ImportedSegments {
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     segments: Float64Array,
     #[serde(skip_serializing_if = "Option::is_none")]
     rows: Option<usize>,
@@ -63,12 +57,14 @@ pub fn import_segments(
     }
     .map_err(|e| fail(F, e))?;
     let (rows, cols) = imported.grid.map_or((None, None), |(r, c)| (Some(r), Some(c)));
-    to_js(F, &ImportedJs { segments: Float64Array::from(&imported.coords[..]), rows, cols })
+    to_js(F, &ImportedSegments { segments: Float64Array::from(&imported.coords[..]), rows, cols })
 }
 
-/// `ExportOptions`, read by serde.
-#[derive(serde::Deserialize, Default)]
+/// Options of `RuledSurface.export` and `LineCongruence.export`.
+#[derive(serde::Deserialize, Default, Tsify)]
+#[serde(default)]
 struct ExportOptions {
+    /// The object's name in an OBJ file (default "ruledlab").
     name: Option<String>,
 }
 

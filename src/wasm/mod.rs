@@ -7,24 +7,26 @@
 
 mod args;
 mod buffers;
+mod catalogue;
 mod congruence;
-mod congruence_focal;
 mod error;
 mod focal;
 mod formula;
 mod io;
+mod linear_complex;
 mod live;
-mod subdivide;
+mod milling;
+mod subdivision;
 mod surface;
-mod toolpath;
 
-pub use congruence::{AnalyticCongruence, LineCongruence};
-pub use focal::linear_complex_of;
+pub use catalogue::{AnalyticCongruence, AnalyticSurface};
+pub use congruence::LineCongruence;
 pub use io::import_segments;
+pub use linear_complex::linear_complex_of;
 pub use live::live_objects;
-pub use subdivide::subdivide_polygon;
-pub use surface::{AnalyticSurface, RuledSurface};
-pub use toolpath::ToolPath;
+pub use milling::ToolPath;
+pub use subdivision::subdivide_polygon;
+pub use surface::RuledSurface;
 
 use wasm_bindgen::prelude::*;
 

@@ -1,93 +1,16 @@
 //! `RuledSurface` and `AnalyticSurface` for JavaScript (Section 2).
 
 use super::args::{self, describe, fail, finite_option, integer, integer_option, numbers, options, to_js};
+use super::catalogue::AnalyticSurface;
 use super::live::Live;
-use crate::catalogue as examples;
-use crate::ruled::SmoothRuled;
-use crate::ruled::{self, convergence, Development, HingeChain, Invariants};
+use crate::ruled::{self, convergence, Development, HingeChain};
 use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
 use js_sys::{Float32Array, Float64Array, Uint8Array};
 use serde::{Deserialize, Serialize};
 use std::cell::OnceCell;
+use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
-
-#[wasm_bindgen(typescript_custom_section)]
-const TS_TYPES: &str = r#"
-/** The discrete invariants of Section 2 for N rulings (N − 1 pairs, N − 2 interior rulings). */
-export interface Invariants {
-  /** φ_{i,i+1} ∈ [0, π], N − 1 values. */
-  angle: Float64Array;
-  /** Signed distance h_{i,i+1} = det(a_{i+1} − a_i, e_i, e_{i+1}) / |e_i × e_{i+1}|, N − 1 values. */
-  distance: Float64Array;
-  /** Discrete distribution parameter δ_{i,i+1} = h/φ (1), N − 1 values. */
-  distribution: Float64Array;
-  /** f_{i,i+1} then f_{i+1,i} (x, y, z each) per pair: 6(N − 1) numbers. */
-  footpoints: Float64Array;
-  /** n_{i,i+1} = (e_i × e_{i+1}) / |e_i × e_{i+1}|, 3(N − 1) numbers. */
-  centralNormal: Float64Array;
-  /** Striction polygon (f_{i,i−1} + f_{i,i+1})/2 for rulings 1 … N − 2: 3(N − 2) numbers (7). */
-  striction: Float64Array;
-  /** (δ_{i−1,i} + δ_{i,i+1})/2 for rulings 1 … N − 2 (7). */
-  distributionMean: Float64Array;
-  /** Example 1's polygon (f_{i,i+1} + f_{i+1,i})/2: 3(N − 1) numbers. */
-  perpendicularMidpoints: Float64Array;
-  /**
-   * 1 where rulings i, i+1 are parallel (|sin φ| < 1e-9): there `distance` is the unsigned
-   * distance, and distribution, footpoints, centralNormal and the striction quantities
-   * that use the pair are NaN.
-   */
-  parallel: Uint8Array;
-}
-
-/** Options of `invariants()`: `closed` reads R_{N−1} as followed by R_0 (a closed surface). */
-export interface InvariantsOptions { closed?: boolean }
-
-/** Largest errors of a sampled analytic surface's discrete invariants at its rulings. */
-export interface SamplingErrors {
-  rulings: number;
-  parallelPairs: number;
-  /** max |f_{i,i+1} − s(u_i)| (first order, Proposition 1). */
-  footpoint: number;
-  /** max |m_i − s(u_i)| (second order, Proposition 2). */
-  midpoint: number;
-  /** max |(f_{i,i+1} + f_{i+1,i})/2 − s(u_i + H/2)| (Example 1's polygon, second order). */
-  perpendicularMidpoint: number;
-  /** max |δ̄_i − δ(u_i)| (second order). */
-  distributionMean: number;
-}
-
-/** One analytic surface as listed by `AnalyticSurface.list()`. */
-/** Orders measured from a sampling and one with the spacing halved (`samplingOrders`): NaN where an error vanishes. */
-export interface SamplingOrders { finer: number; footpoint: number; midpoint: number; perpendicularMidpoint: number; distributionMean: number }
-
-export interface AnalyticSurfaceInfo {
-  name: string; title: string;
-  uMin: number; uMax: number; vMin: number; vMax: number; closed: boolean;
-}
-
-/** Sampling options; omitted fields take the surface's defaults. */
-export interface SampleOptions { uMin?: number; uMax?: number; vMin?: number; vMax?: number; closed?: boolean }
-
-/** Convergence study options (Propositions 1 and 2). */
-export interface ConvergenceOptions {
-  /** Parameter u to study (default 0.7). */
-  u?: number;
-  /** Largest step H₀ ∈ (0, 1] (default 0.2). */
-  h0?: number;
-  /** Number of steps H₀, H₀/2, … (2 … 20, default 8). */
-  levels?: number;
-}
-
-/** One quantity of a convergence study. */
-export interface ConvergenceSeries {
-  name: "footpoint" | "midpoint" | "distribution" | "distributionMean" | "centralNormal" | "perpendicularMidpoint";
-  expectedOrder: number; errors: number[]; orders: number[]; fittedOrder: number;
-}
-
-/** Result of `AnalyticSurface.convergence`. */
-export interface ConvergenceStudy { surface: string; u: number; steps: number[]; series: ConvergenceSeries[] }
-"#;
 
 /// Invariants kept in wasm memory, for the zero-copy path (`surface.invariantsInPlace(buffer)`).
 /// Its getters are typed-array *views* of wasm memory, made when read, with the layout of
@@ -97,7 +20,7 @@ export interface ConvergenceStudy { surface: string; u: number; steps: number[];
 /// you keep. The next `invariantsInPlace` into the same buffer overwrites the numbers in place.
 #[wasm_bindgen]
 pub struct InvariantsBuffer {
-    inner: Invariants,
+    inner: ruled::Invariants,
     _live: Live,
 }
 
@@ -112,7 +35,7 @@ impl InvariantsBuffer {
     /// An empty buffer; it grows to the largest surface computed into it.
     #[wasm_bindgen(constructor)]
     pub fn new() -> InvariantsBuffer {
-        InvariantsBuffer { inner: Invariants::default(), _live: Live::new() }
+        InvariantsBuffer { inner: ruled::Invariants::default(), _live: Live::new() }
     }
 
     /// φ_{i,i+1}: a view of wasm memory.
@@ -136,19 +59,19 @@ impl InvariantsBuffer {
     /// f_{i,i+1} then f_{i+1,i} per pair, 6 numbers: a view of wasm memory.
     #[wasm_bindgen(getter)]
     pub fn footpoints(&self) -> Float64Array {
-        view(Invariants::flat(&self.inner.footpoints))
+        view(ruled::Invariants::flat(&self.inner.footpoints))
     }
 
     /// n_{i,i+1}, 3 numbers per pair: a view of wasm memory.
     #[wasm_bindgen(getter, js_name = centralNormal)]
     pub fn central_normal(&self) -> Float64Array {
-        view(Invariants::flat(&self.inner.central_normal))
+        view(ruled::Invariants::flat(&self.inner.central_normal))
     }
 
     /// m_i (7), 3 numbers per interior ruling: a view of wasm memory.
     #[wasm_bindgen(getter)]
     pub fn striction(&self) -> Float64Array {
-        view(Invariants::flat(&self.inner.striction))
+        view(ruled::Invariants::flat(&self.inner.striction))
     }
 
     /// (δ_{i−1,i} + δ_{i,i+1})/2 (7): a view of wasm memory.
@@ -160,7 +83,7 @@ impl InvariantsBuffer {
     /// (f_{i,i+1} + f_{i+1,i})/2, 3 numbers per pair: a view of wasm memory.
     #[wasm_bindgen(getter, js_name = perpendicularMidpoints)]
     pub fn perpendicular_midpoints(&self) -> Float64Array {
-        view(Invariants::flat(&self.inner.perpendicular_midpoints))
+        view(ruled::Invariants::flat(&self.inner.perpendicular_midpoints))
     }
 
     /// 1 where pair (i, i+1) is parallel, else 0: a view of wasm memory.
@@ -194,70 +117,74 @@ pub struct RuledSurface {
     _live: Live,
 }
 
-#[derive(Deserialize, Default)]
+/// Options of `invariants()`.
+#[derive(Deserialize, Default, Tsify)]
+#[serde(default)]
 struct InvariantsOptions {
-    #[serde(default)]
+    /// Read R_{N−1} as followed by R_0 (a closed surface).
     closed: bool,
 }
 
-/// `Invariants` as JS sees it: typed arrays, written as themselves.
-#[derive(Serialize)]
+/// The discrete invariants of Section 2 for N rulings (N − 1 pairs, N − 2 interior rulings),
+/// as typed arrays (the core's [`ruled::Invariants`], flattened).
+#[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
-struct InvariantsJs {
+struct Invariants {
+    /// φ_{i,i+1} ∈ [0, π], N − 1 values.
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     angle: Float64Array,
+    /// Signed distance h_{i,i+1} = det(a_{i+1} − a_i, e_i, e_{i+1}) / |e_i × e_{i+1}|, N − 1
+    /// values.
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     distance: Float64Array,
+    /// Discrete distribution parameter δ_{i,i+1} = h/φ (1), N − 1 values.
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     distribution: Float64Array,
+    /// f_{i,i+1} then f_{i+1,i} (x, y, z each) per pair: 6(N − 1) numbers.
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     footpoints: Float64Array,
+    /// n_{i,i+1} = (e_i × e_{i+1}) / |e_i × e_{i+1}|, 3(N − 1) numbers.
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     central_normal: Float64Array,
+    /// Striction polygon (f_{i,i−1} + f_{i,i+1})/2 for rulings 1 … N − 2: 3(N − 2) numbers (7).
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     striction: Float64Array,
+    /// (δ_{i−1,i} + δ_{i,i+1})/2 for rulings 1 … N − 2 (7).
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     distribution_mean: Float64Array,
+    /// Example 1's polygon (f_{i,i+1} + f_{i+1,i})/2: 3(N − 1) numbers.
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     perpendicular_midpoints: Float64Array,
+    /// 1 where rulings i, i+1 are parallel (|sin φ| < 1e-9): there `distance` is the unsigned
+    /// distance, and distribution, footpoints, centralNormal and the striction quantities that
+    /// use the pair are NaN.
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Uint8Array")]
     parallel: Uint8Array,
 }
 
-/// Sampling options; omitted fields take the surface's defaults.
-#[derive(Deserialize, Default)]
-#[serde(rename_all = "camelCase")]
-struct SampleOptions {
-    u_min: Option<f64>,
-    u_max: Option<f64>,
-    v_min: Option<f64>,
-    v_max: Option<f64>,
-    closed: Option<bool>,
-}
-
-/// Options of the convergence study.
-#[derive(Deserialize, Default)]
+/// Options of `AnalyticSurface.convergence` (Propositions 1 and 2).
+#[derive(Deserialize, Default, Tsify)]
+#[serde(default)]
 struct ConvergenceOptions {
+    /// Parameter u to study (default 0.7).
     u: Option<f64>,
+    /// Largest step H₀ ∈ (0, 1] (default 0.2).
     h0: Option<f64>,
+    /// Number of steps H₀, H₀/2, … (2 … 20, default 8).
     levels: Option<f64>,
 }
 
-/// One entry of `AnalyticSurface.list()`.
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct SurfaceInfo {
-    name: &'static str,
-    title: &'static str,
-    u_min: f64,
-    u_max: f64,
-    v_min: f64,
-    v_max: f64,
-    closed: bool,
-}
-
 impl RuledSurface {
-    fn compute_invariants(&self, func: &str, options: JsValue) -> Result<Invariants, JsValue> {
+    fn compute_invariants(&self, func: &str, options: JsValue) -> Result<ruled::Invariants, JsValue> {
         let o: InvariantsOptions = args::options(func, options)?;
         Ok(if o.closed { self.inner.invariants_closed() } else { self.inner.invariants() })
     }
@@ -321,15 +248,15 @@ impl RuledSurface {
         let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
         to_js(
             F,
-            &InvariantsJs {
+            &Invariants {
                 angle: Float64Array::from(&inv.angle[..]),
                 distance: Float64Array::from(&inv.distance[..]),
                 distribution: Float64Array::from(&inv.distribution[..]),
-                footpoints: Float64Array::from(Invariants::flat(&inv.footpoints)),
-                central_normal: Float64Array::from(Invariants::flat(&inv.central_normal)),
-                striction: Float64Array::from(Invariants::flat(&inv.striction)),
+                footpoints: Float64Array::from(ruled::Invariants::flat(&inv.footpoints)),
+                central_normal: Float64Array::from(ruled::Invariants::flat(&inv.central_normal)),
+                striction: Float64Array::from(ruled::Invariants::flat(&inv.striction)),
                 distribution_mean: Float64Array::from(&inv.distribution_mean[..]),
-                perpendicular_midpoints: Float64Array::from(Invariants::flat(&inv.perpendicular_midpoints)),
+                perpendicular_midpoints: Float64Array::from(ruled::Invariants::flat(&inv.perpendicular_midpoints)),
                 parallel: Uint8Array::from(&parallel[..]),
             },
         )
@@ -378,11 +305,11 @@ impl RuledSurface {
         copy("angle", &inv.angle)?;
         copy("distance", &inv.distance)?;
         copy("distribution", &inv.distribution)?;
-        copy("footpoints", Invariants::flat(&inv.footpoints))?;
-        copy("centralNormal", Invariants::flat(&inv.central_normal))?;
-        copy("striction", Invariants::flat(&inv.striction))?;
+        copy("footpoints", ruled::Invariants::flat(&inv.footpoints))?;
+        copy("centralNormal", ruled::Invariants::flat(&inv.central_normal))?;
+        copy("striction", ruled::Invariants::flat(&inv.striction))?;
         copy("distributionMean", &inv.distribution_mean)?;
-        copy("perpendicularMidpoints", Invariants::flat(&inv.perpendicular_midpoints))?;
+        copy("perpendicularMidpoints", ruled::Invariants::flat(&inv.perpendicular_midpoints))?;
         match target("parallel", parallel.len())?.dyn_into::<Uint8Array>() {
             Ok(a) => a.copy_from(&parallel),
             Err(_) => return Err(fail(F, "out.parallel must be a Uint8Array")),
@@ -408,7 +335,7 @@ impl RuledSurface {
 
     /// The unit directions e_i = (b_i − a_i)/|b_i − a_i|, 3 numbers per ruling.
     pub fn directions(&self) -> Float64Array {
-        Float64Array::from(Invariants::flat(&self.inner.directions()))
+        Float64Array::from(ruled::Invariants::flat(&self.inner.directions()))
     }
 
     /// Mean length |b_i − a_i| of the segments.
@@ -497,91 +424,8 @@ impl RuledSurface {
     }
 }
 
-/// An analytic ruled surface x(u, v) = a(u) + v d(u) with exact striction curve and
-/// distribution parameter.
-#[wasm_bindgen]
-pub struct AnalyticSurface {
-    inner: examples::AnalyticSurface,
-    _live: Live,
-}
-
-impl AnalyticSurface {
-    /// Wraps a core surface.
-    pub(crate) fn from_core(inner: examples::AnalyticSurface) -> Self {
-        AnalyticSurface { inner, _live: Live::new() }
-    }
-}
-
 #[wasm_bindgen]
 impl AnalyticSurface {
-    /// Every analytic surface: name, title and default ranges.
-    #[wasm_bindgen(unchecked_return_type = "AnalyticSurfaceInfo[]")]
-    pub fn list() -> Result<JsValue, JsValue> {
-        let list: Vec<SurfaceInfo> = examples::AnalyticSurface::ALL
-            .iter()
-            .map(|s| {
-                let r = s.ranges();
-                SurfaceInfo {
-                    name: s.name(),
-                    title: s.title(),
-                    u_min: r.u.0,
-                    u_max: r.u.1,
-                    v_min: r.v.0,
-                    v_max: r.v.1,
-                    closed: r.closed,
-                }
-            })
-            .collect();
-        to_js("AnalyticSurface.list", &list)
-    }
-
-    /// The surface named `name` (see `list()`); throws for an unknown name.
-    #[wasm_bindgen(js_name = byName)]
-    pub fn by_name(#[wasm_bindgen(unchecked_param_type = "string")] name: JsValue) -> Result<AnalyticSurface, JsValue> {
-        let Some(name) = name.as_string() else {
-            return Err(fail("AnalyticSurface.byName", format!("name must be a string, got {}", describe(&name))));
-        };
-        examples::AnalyticSurface::by_name(&name)
-            .map(|inner| AnalyticSurface { inner, _live: Live::new() })
-            .map_err(|e| fail("AnalyticSurface.byName", e))
-    }
-
-    /// Machine name, e.g. "hyperboloid".
-    #[wasm_bindgen(getter)]
-    pub fn name(&self) -> String {
-        self.inner.name().into()
-    }
-
-    /// Human title.
-    #[wasm_bindgen(getter)]
-    pub fn title(&self) -> String {
-        self.inner.title().into()
-    }
-
-    /// `count` rulings at equally spaced u (see `SampleOptions`; defaults from `list()`).
-    pub fn sample(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] count: JsValue,
-        #[wasm_bindgen(unchecked_optional_param_type = "SampleOptions")] opts: JsValue,
-    ) -> Result<RuledSurface, JsValue> {
-        const F: &str = "AnalyticSurface.sample";
-        let count = integer(F, "count", &count, 2, MAX_SAMPLES)?;
-        let r = self.ranges(F, opts)?;
-        self.inner.sample(count, r).map(RuledSurface::from_core).map_err(|e| fail(F, e))
-    }
-
-    /// The parameters u_i at which `sample(count, options)` takes its rulings.
-    pub fn parameters(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] count: JsValue,
-        #[wasm_bindgen(unchecked_optional_param_type = "SampleOptions")] opts: JsValue,
-    ) -> Result<Float64Array, JsValue> {
-        const F: &str = "AnalyticSurface.parameters";
-        let count = integer(F, "count", &count, 2, MAX_SAMPLES)?;
-        let r = self.ranges(F, opts)?;
-        Ok(Float64Array::from(&crate::base::parameters(count, r)[..]))
-    }
-
     /// How far the discrete invariants of `count` sampled rulings are from the exact ones at
     /// those rulings (closed surfaces read as closed).
     #[wasm_bindgen(js_name = samplingErrors, unchecked_return_type = "SamplingErrors")]
@@ -593,7 +437,7 @@ impl AnalyticSurface {
         const F: &str = "AnalyticSurface.samplingErrors";
         let count = integer(F, "count", &count, 3, MAX_SAMPLES)?;
         let r = self.ranges(F, opts)?;
-        let e = crate::ruled::accuracy::sampling_errors(&self.inner, count, r).map_err(|e| fail(F, e))?;
+        let e = crate::ruled::accuracy::sampling_errors(self.core(), count, r).map_err(|e| fail(F, e))?;
         to_js(F, &e)
     }
 
@@ -608,82 +452,8 @@ impl AnalyticSurface {
         const F: &str = "AnalyticSurface.samplingOrders";
         let count = integer(F, "count", &count, 3, MAX_SAMPLES / 2)?;
         let r = self.ranges(F, opts)?;
-        let o = crate::ruled::accuracy::sampling_orders(&self.inner, count, r).map_err(|e| fail(F, e))?;
+        let o = crate::ruled::accuracy::sampling_orders(self.core(), count, r).map_err(|e| fail(F, e))?;
         to_js(F, &o)
-    }
-
-    /// Largest distance from this surface of the rulings of `refined` whose index is not a
-    /// multiple of `stride` (the inserted ones), sampled at 9 points each; `refined` was
-    /// refined from a sampling of the parameter interval [uMin, uMax].
-    #[wasm_bindgen(js_name = insertedDistance)]
-    pub fn inserted_distance(
-        &self,
-        refined: &RuledSurface,
-        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
-        #[wasm_bindgen(unchecked_param_type = "number")] u_min: JsValue,
-        #[wasm_bindgen(unchecked_param_type = "number")] u_max: JsValue,
-    ) -> Result<f64, JsValue> {
-        const F: &str = "AnalyticSurface.insertedDistance";
-        let stride = integer(F, "stride", &stride, 2, 1 << 24)?;
-        let (u_min, u_max) = interval(F, &u_min, &u_max)?;
-        let which = (0..refined.inner.len()).filter(|i| i % stride != 0);
-        Ok(crate::subdivision::accuracy::max_distance(&self.inner, &refined.inner, u_min, u_max, which))
-    }
-
-    /// Exact striction points s(u) for each u: 3 numbers per u (NaN on a cylindrical ruling).
-    pub fn striction(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] u: JsValue,
-    ) -> Result<Float64Array, JsValue> {
-        let u = self.u_values("AnalyticSurface.striction", &u)?;
-        let out: Vec<f64> =
-            u.iter().flat_map(|&u| self.inner.striction(u).unwrap_or(glam::DVec3::NAN).to_array()).collect();
-        Ok(Float64Array::from(&out[..]))
-    }
-
-    /// Exact distribution parameters δ(u).
-    pub fn distribution(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] u: JsValue,
-    ) -> Result<Float64Array, JsValue> {
-        let u = self.u_values("AnalyticSurface.distribution", &u)?;
-        let out: Vec<f64> = u.iter().map(|&u| self.inner.distribution(u)).collect();
-        Ok(Float64Array::from(&out[..]))
-    }
-
-    /// Exact central tangent directions e₃(u) (4): 3 numbers per u (NaN on a cylindrical ruling).
-    #[wasm_bindgen(js_name = centralTangent)]
-    pub fn central_tangent(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] u: JsValue,
-    ) -> Result<Float64Array, JsValue> {
-        let u = self.u_values("AnalyticSurface.centralTangent", &u)?;
-        let out: Vec<f64> =
-            u.iter().flat_map(|&u| self.inner.central_tangent(u).unwrap_or(glam::DVec3::NAN).to_array()).collect();
-        Ok(Float64Array::from(&out[..]))
-    }
-
-    /// Distance of each point (3 numbers per point) from the surface, its rulings extended to
-    /// whole lines, searching the rulings with u in [uMin, uMax].
-    pub fn distances(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
-        #[wasm_bindgen(unchecked_param_type = "number")] u_min: JsValue,
-        #[wasm_bindgen(unchecked_param_type = "number")] u_max: JsValue,
-    ) -> Result<Float64Array, JsValue> {
-        const F: &str = "AnalyticSurface.distances";
-        let flat = numbers(F, "points", &points)?;
-        let (u_min, u_max) = interval(F, &u_min, &u_max)?;
-        if flat.len() % 3 != 0 || flat.len() / 3 > MAX_SAMPLES {
-            return Err(fail(
-                F,
-                format!("points: length {} must be a multiple of 3 and at most {}", flat.len(), 3 * MAX_SAMPLES),
-            ));
-        }
-        crate::base::check_coordinates(&flat, 3).map_err(|e| fail(F, e))?;
-        let out: Vec<f64> =
-            flat.chunks_exact(3).map(|p| self.inner.distance_to(glam::DVec3::from_slice(p), u_min, u_max)).collect();
-        Ok(Float64Array::from(&out[..]))
     }
 
     /// Measured convergence orders of the discrete invariants (Propositions 1 and 2).
@@ -697,43 +467,7 @@ impl AnalyticSurface {
         let levels = integer_option(F, "levels", o.levels, 2, MAX_STUDY_LEVELS)?.unwrap_or(8);
         let u = finite_option(F, "u", o.u)?.unwrap_or(0.7);
         let h0 = finite_option(F, "h0", o.h0)?.unwrap_or(0.2);
-        let study = convergence::study(&self.inner, u, h0, levels).map_err(|e| fail(F, e))?;
+        let study = convergence::study(self.core(), u, h0, levels).map_err(|e| fail(F, e))?;
         to_js(F, &study)
-    }
-}
-
-/// The parameter interval [uMin, uMax] of the distance searches: finite, uMin < uMax.
-fn interval(func: &str, u_min: &JsValue, u_max: &JsValue) -> Result<(f64, f64), JsValue> {
-    let (a, b) = (args::number(func, "uMin", u_min)?, args::number(func, "uMax", u_max)?);
-    if a < b {
-        Ok((a, b))
-    } else {
-        Err(fail(func, format!("need uMin < uMax, got {a} and {b}")))
-    }
-}
-
-impl AnalyticSurface {
-    /// Sampling ranges from `SampleOptions`, defaults from the surface.
-    fn ranges(&self, func: &'static str, opts: JsValue) -> Result<crate::base::Ranges, JsValue> {
-        let o: SampleOptions = options(func, opts)?;
-        let d = self.inner.ranges();
-        let bound =
-            |name: &str, x: Option<f64>, default: f64| finite_option(func, name, x).map(|x| x.unwrap_or(default));
-        Ok(crate::base::Ranges {
-            u: (bound("uMin", o.u_min, d.u.0)?, bound("uMax", o.u_max, d.u.1)?),
-            v: (bound("vMin", o.v_min, d.v.0)?, bound("vMax", o.v_max, d.v.1)?),
-            closed: o.closed.unwrap_or(d.closed),
-        })
-    }
-
-    fn u_values(&self, func: &str, u: &JsValue) -> Result<Vec<f64>, JsValue> {
-        let u = numbers(func, "u", u)?;
-        if u.len() > MAX_SAMPLES {
-            return Err(fail(func, crate::Error::TooMany { what: "parameters", got: u.len(), max: MAX_SAMPLES }));
-        }
-        if let Some(x) = u.iter().find(|x| !x.is_finite()) {
-            return Err(fail(func, format!("every u must be finite, got {x}")));
-        }
-        Ok(u)
     }
 }

@@ -157,7 +157,7 @@ test('the TypeScript declarations type the results', () => {
     'sample(count: number, opts?: SampleOptions): RuledSurface;',
     'importSegments(text: string, format?: "csv" | "json"): ImportedSegments;',
     'refine(options?: Partial<SubdivideOptions>): ToolPath;',
-    'export(format: "json" | "csv" | "gcode", options?: ExportOptions): string;',
+    'export(format: "json" | "csv" | "gcode", options?: GcodeOptions): string;',
     'grid(rows?: number, cols?: number, reach?: number): LineCongruence;',
   ]) assert.ok(dts.includes(signature), signature);
   // the public API (before wasm-bindgen's internal InitOutput table) has no `any` type

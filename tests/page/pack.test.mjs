@@ -24,7 +24,7 @@ before(async () => {
   const out = JSON.parse(execFileSync('npm', ['pack', '--json', '--pack-destination', dir], { cwd: REPO, encoding: 'utf8' }));
   tarball = join(dir, out[0].filename);
   const files = out[0].files.map((f) => f.path);
-  for (const need of ['www/view.js', 'www/view.d.ts', 'www/ruled-view.js', 'www/worker.js', 'pkg/ruledlab_bg.wasm', 'dist/ruledlab.html', 'dist/ruledlab-embed.js']) {
+  for (const need of ['www/view.js', 'pkg/view/www/view.d.ts', 'pkg/ruledlab.d.ts', 'www/ruled-view.js', 'www/worker.js', 'pkg/ruledlab_bg.wasm', 'dist/ruledlab.html', 'dist/ruledlab-embed.js']) {
     assert.ok(files.includes(need), `the package lacks ${need}`);
   }
   assert.ok(!files.some((f) => f.startsWith('src/') || f.startsWith('tests/') || f.startsWith('target/')), 'the package ships sources or tests');
@@ -102,6 +102,38 @@ try {
   } finally {
     server.close();
   }
+});
+
+test('a TypeScript app typed by the installed tarball: tsc --strict resolves ruledlab and ruledlab/view by the package exports', () => {
+  const dir = app();
+  writeFileSync(
+    join(dir, 'main.ts'),
+    `import init, { AnalyticSurface, type Invariants, type SubdivideOptions } from 'ruledlab';
+import { Stage, SCENES, type Scene, type SceneChangeDetail, type CameraChangeDetail } from 'ruledlab/view';
+await init();
+const view = document.createElement('ruled-view');
+view.scene = 'striction';
+view.addEventListener('scene-change', (e) => { const d: SceneChangeDetail = e.detail; console.log(d.scene, d.params); });
+view.addEventListener('camera-change', (e) => { const d: CameraChangeDetail = e.detail; console.log(d.camera.split(',').length); });
+view.addEventListener('error', (e) => console.log(e.detail.code));
+const helicoid = AnalyticSurface.byName('helicoid');
+const options: SubdivideOptions = { scheme: 'four-point', steps: 2 };
+const s = helicoid.sample(12).subdivide(options);
+const inv: Invariants = s.invariants();
+const scene: Scene = SCENES[0];
+const stage = new Stage(document.body, { controls: true });
+await stage.open(scene, {});
+stage.viewer.fit();
+console.log(inv.distribution.length, view.exportSVG({ bw: true }).length);
+// what is not API stays out of the types
+// @ts-expect-error the Stage's DOM is internal
+stage.legend;
+// @ts-expect-error a wrong option is a type error
+s.subdivide({ scheme: 'cubic' });
+`,
+  );
+  writeFileSync(join(dir, 'tsconfig.json'), JSON.stringify({ compilerOptions: { strict: true, noEmit: true, skipLibCheck: false, target: 'es2022', module: 'esnext', moduleResolution: 'bundler', lib: ['es2022', 'dom', 'esnext.disposable'], types: [] }, files: ['main.ts'] }));
+  execFileSync(join(REPO, 'node_modules/.bin/tsc'), ['-p', join(dir, 'tsconfig.json')], { cwd: dir, stdio: 'inherit' });
 });
 
 test('every figure and scene in <ruled-view>, cold, from the installed tarball (ruledlab/view)', async () => {

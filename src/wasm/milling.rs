@@ -9,33 +9,8 @@ use crate::ruled::RuledSurface;
 use glam::DVec3;
 use js_sys::{Float32Array, Float64Array};
 use serde::{Deserialize, Serialize};
+use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
-
-#[wasm_bindgen(typescript_custom_section)]
-const TS_TYPES: &str = r#"
-/** A milling tool: a cylinder of `radius` and `length` (model units), flat or ball end (default "ball"). */
-export interface ToolOptions { radius: number; length: number; end?: "ball" | "flat" }
-
-/** Options of `ToolPath.export`: G-code only. */
-export interface ExportOptions {
-  /** Feed rate, mm/min (default 1000). */
-  feed?: number;
-  /** Millimetres per model unit (default 1). */
-  scale?: number;
-  /** Clearance above the highest point of the path for the safe moves, mm (default 5). */
-  clearance?: number;
-}
-
-/** Orientation smoothness of a tool path. */
-export interface PathQuality {
-  /** Angle between consecutive axes (radians). */
-  angleStep: Float64Array;
-  /** |a_{k−1} − 2a_k + a_{k+1}| per interior pose. */
-  secondDifference: Float64Array;
-  maxAngleStep: number;
-  maxSecondDifference: number;
-}
-"#;
 
 /// A 5-axis tool path: poses (tip, unit axis) and the tool following them.
 #[wasm_bindgen]
@@ -51,36 +26,52 @@ impl ToolPath {
     }
 }
 
-/// `ToolOptions`, read by serde.
-#[derive(Deserialize)]
+/// A milling tool: a cylinder of `radius` and `length` (model units), flat or ball end.
+#[derive(Deserialize, Tsify)]
 struct ToolOptions {
+    #[tsify(type = "number")]
     radius: Option<f64>,
+    #[tsify(type = "number")]
     length: Option<f64>,
-    end: Option<EndName>,
+    /// The cutting end (default "ball").
+    #[serde(default)]
+    #[tsify(optional)]
+    end: Option<ToolEndName>,
 }
 
-#[derive(Deserialize, Clone, Copy)]
+/// The end of a milling tool.
+#[derive(Deserialize, Clone, Copy, Tsify)]
 #[serde(rename_all = "kebab-case", expecting = "\"ball\" or \"flat\"")]
-enum EndName {
+enum ToolEndName {
+    /// A ball end: the tool cuts along a sphere of its radius.
     Ball,
+    /// A flat end: the tool cuts along the disk of its end.
     Flat,
 }
 
-/// `ExportOptions`, read by serde.
-#[derive(Deserialize, Default)]
-struct ExportOptions {
+/// Options of `ToolPath.export`: G-code only.
+#[derive(Deserialize, Default, Tsify)]
+#[serde(default)]
+struct GcodeOptions {
+    /// Feed rate, mm/min (default 1000).
     feed: Option<f64>,
+    /// Millimetres per model unit (default 1).
     scale: Option<f64>,
+    /// Clearance above the highest point of the path for the safe moves, mm (default 5).
     clearance: Option<f64>,
 }
 
-/// `PathQuality`, written by serde.
-#[derive(Serialize)]
+/// Orientation smoothness of a tool path.
+#[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
-struct QualityJs {
+struct PathQuality {
+    /// Angle between consecutive axes (radians).
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     angle_step: Float64Array,
+    /// |a_{k−1} − 2a_k + a_{k+1}| per interior pose.
     #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
     second_difference: Float64Array,
     max_angle_step: f64,
     max_second_difference: f64,
@@ -95,9 +86,9 @@ fn read_tool(func: &'static str, tool: JsValue) -> Result<milling::Tool, JsValue
         .ok_or_else(|| fail_option(func, "radius", "tool.radius (the tool radius) is required"))?;
     let length = finite_option(func, "length", o.length)?
         .ok_or_else(|| fail_option(func, "length", "tool.length (the tool length) is required"))?;
-    let end = match o.end.unwrap_or(EndName::Ball) {
-        EndName::Ball => milling::ToolEnd::Ball,
-        EndName::Flat => milling::ToolEnd::Flat,
+    let end = match o.end.unwrap_or(ToolEndName::Ball) {
+        ToolEndName::Ball => milling::ToolEnd::Ball,
+        ToolEndName::Flat => milling::ToolEnd::Flat,
     };
     milling::Tool::new(radius, length, end).map_err(|e| fail(func, e))
 }
@@ -160,8 +151,8 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_optional_param_type = "Partial<SubdivideOptions>")] options: JsValue,
     ) -> Result<ToolPath, JsValue> {
         const F: &str = "ToolPath.refine";
-        let (scheme, closed, steps, space) = super::subdivide::read(F, options, Some("variational"))?;
-        if !matches!(space, super::subdivide::Space::Points) {
+        let (scheme, closed, steps, space) = super::subdivision::read(F, options, Some("variational"))?;
+        if !matches!(space, super::subdivision::Space::Points) {
             return Err(fail(F, "options.space: a tool path is refined through its tips and axes (space \"points\")"));
         }
         if closed {
@@ -230,7 +221,7 @@ impl ToolPath {
         let q = quality::Quality::of(&self.inner);
         to_js(
             "ToolPath.quality",
-            &QualityJs {
+            &PathQuality {
                 angle_step: Float64Array::from(&q.angle_step[..]),
                 second_difference: Float64Array::from(&q.second_difference[..]),
                 max_angle_step: q.max_angle_step(),
@@ -251,15 +242,15 @@ impl ToolPath {
     }
 
     /// The path as text: "json" or "csv" (poses, full precision), or "gcode" for a table-table
-    /// A–C machine (see `ExportOptions`; conventions in the file's header).
+    /// A–C machine (see `GcodeOptions`; conventions in the file's header).
     pub fn export(
         &self,
         #[wasm_bindgen(unchecked_param_type = "\"json\" | \"csv\" | \"gcode\"")] format: JsValue,
-        #[wasm_bindgen(unchecked_optional_param_type = "ExportOptions")] options: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "GcodeOptions")] options: JsValue,
     ) -> Result<String, JsValue> {
         const F: &str = "ToolPath.export";
         let format = format.as_string().unwrap_or_default();
-        let o: ExportOptions = args::options(F, options)?;
+        let o: GcodeOptions = args::options(F, options)?;
         if format != "gcode" && (o.feed.is_some() || o.scale.is_some() || o.clearance.is_some()) {
             return Err(fail(F, "feed, scale and clearance apply to the \"gcode\" format only"));
         }

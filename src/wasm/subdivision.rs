@@ -1,103 +1,104 @@
 //! Subdivision for JavaScript (Section 4): `surface.subdivide(options)`, `surface.recut()`
 //! and `subdividePolygon(points, options)`.
 
-use super::args::{self, fail, fail_option, finite_option, integer_option, numbers, only_for};
+use super::args::{self, fail, fail_option, finite_option, integer, integer_option, interval, numbers, only_for};
+use super::catalogue::AnalyticSurface;
 use super::surface::RuledSurface;
 use crate::ruled::surface::points_from_flat;
 use crate::subdivision::{self, Scheme, Variant, MAX_STEPS};
 use js_sys::Float64Array;
 use serde::Deserialize;
+use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
-#[wasm_bindgen(typescript_custom_section)]
-const TS_TYPES: &str = r#"
-/** Options of `RuledSurface.subdivide` and `subdividePolygon` (Section 4). */
-export interface SubdivideOptions {
-  /**
-   * "chaikin" (corner cutting), "bspline" (uniform B-spline of `degree`), "bezier"
-   * (de Casteljau), "four-point" (Dyn–Levin–Gregory (8), interpolatory) or "variational"
-   * (ruled strips only, interpolatory).
-   */
-  scheme: "chaikin" | "bspline" | "bezier" | "four-point" | "variational";
-  /** Number of steps, 0 … 24 (default 1); the output may hold at most 4 194 304 rulings. */
-  steps?: number;
-  /** Four-point tension w ∈ [−1/4, 1/4] (default 1/16; C¹ for 0 < w < 1/8). */
-  w?: number;
-  /** Variational: each segment divided into n parts, 3 … 1000 (default 12). */
-  n?: number;
-  /**
-   * Variational energy (default "coupled"): umbrellas (13)/(14) at every interior vertex;
-   * "literal": at the new vertices only (equals the midpoint rule); "averaged": the averaged
-   * umbrella of the two triangulations, without the twist term (more accurate inside).
-   */
-  variant?: "coupled" | "literal" | "averaged";
-  /** B-spline degree 1 … 7 (default 3). */
-  degree?: number;
-  /** Closed polygon / strip (default false); not for "bezier" and "variational". */
-  closed?: boolean;
-  /**
-   * Strips only. "points" (default): the scheme acts on the endpoints a_i, b_i. "lines": it acts
-   * on the lines themselves (dual unit vectors), so the result depends only on the input lines
-   * and commutes with rigid motions; for "chaikin", "bspline", "four-point".
-   */
-  space?: "points" | "lines";
-  /** With space "lines": length of the output segments, cut symmetric to the striction points (default: mean input length). */
-  length?: number;
-}
-"#;
-
-/// `SubdivideOptions`, read by serde.
-#[derive(Deserialize, Default)]
+/// Options of `RuledSurface.subdivide` and `subdividePolygon` (Section 4).
+#[derive(Deserialize, Default, Tsify)]
 struct SubdivideOptions {
-    scheme: Option<SchemeName>,
+    /// "chaikin" (corner cutting), "bspline" (uniform B-spline of `degree`), "bezier" (de
+    /// Casteljau), "four-point" (Dyn–Levin–Gregory (8), interpolatory) or "variational" (ruled
+    /// strips only, interpolatory).
+    scheme: Option<SubdivisionScheme>,
+    /// Number of steps, 0 … 24 (default 1); the output may hold at most 4 194 304 rulings.
+    #[serde(default)]
     steps: Option<f64>,
+    /// Four-point tension w ∈ [−1/4, 1/4] (default 1/16; C¹ for 0 < w < 1/8).
+    #[serde(default)]
     w: Option<f64>,
+    /// Variational: each segment divided into n parts, 3 … 1000 (default 12).
+    #[serde(default)]
     n: Option<f64>,
-    variant: Option<VariantName>,
+    /// Variational energy (default "coupled"): umbrellas (13)/(14) at every interior vertex;
+    /// "literal": at the new vertices only (equals the midpoint rule); "averaged": the averaged
+    /// umbrella of the two triangulations, without the twist term (more accurate inside).
+    #[serde(default)]
+    variant: Option<SubdivisionVariant>,
+    /// B-spline degree 1 … 7 (default 3).
+    #[serde(default)]
     degree: Option<f64>,
+    /// Closed polygon / strip (default false); not for "bezier" and "variational".
+    #[serde(default)]
     closed: Option<bool>,
-    space: Option<SpaceName>,
+    /// Strips only. "points" (default): the scheme acts on the endpoints a_i, b_i. "lines": it
+    /// acts on the lines themselves (dual unit vectors), so the result depends only on the
+    /// input lines and commutes with rigid motions; for "chaikin", "bspline", "four-point".
+    #[serde(default)]
+    space: Option<SubdivisionSpace>,
+    /// With space "lines": length of the output segments, cut symmetric to the striction
+    /// points (default: mean input length).
+    #[serde(default)]
     length: Option<f64>,
 }
 
-#[derive(Deserialize, Clone, Copy, PartialEq)]
+/// The curve and strip schemes of Section 4.
+#[derive(Deserialize, Clone, Copy, PartialEq, Tsify)]
 #[serde(
     rename_all = "kebab-case",
     expecting = "one of \"chaikin\", \"bspline\", \"bezier\", \"four-point\", \"variational\""
 )]
-enum SchemeName {
+enum SubdivisionScheme {
+    /// Corner cutting.
     Chaikin,
+    /// The uniform B-spline of `degree`.
     Bspline,
+    /// De Casteljau.
     Bezier,
+    /// Dyn–Levin–Gregory (8), interpolatory.
     FourPoint,
+    /// The variational strip scheme (13)/(14), interpolatory.
     Variational,
 }
 
-impl SchemeName {
+impl SubdivisionScheme {
     fn name(self) -> &'static str {
         match self {
-            SchemeName::Chaikin => "chaikin",
-            SchemeName::Bspline => "bspline",
-            SchemeName::Bezier => "bezier",
-            SchemeName::FourPoint => "four-point",
-            SchemeName::Variational => "variational",
+            SubdivisionScheme::Chaikin => "chaikin",
+            SubdivisionScheme::Bspline => "bspline",
+            SubdivisionScheme::Bezier => "bezier",
+            SubdivisionScheme::FourPoint => "four-point",
+            SubdivisionScheme::Variational => "variational",
         }
     }
 }
 
-#[derive(Deserialize, Clone, Copy)]
+/// The energies of the variational strip scheme.
+#[derive(Deserialize, Clone, Copy, Tsify)]
 #[serde(rename_all = "kebab-case", expecting = "one of \"coupled\", \"literal\", \"averaged\"")]
-enum VariantName {
+enum SubdivisionVariant {
+    /// Umbrellas (13)/(14) at every interior vertex.
     Coupled,
+    /// At the new vertices only (the midpoint rule).
     Literal,
+    /// The averaged umbrella of the two triangulations.
     Averaged,
 }
 
-/// `space` of the strip and congruence options.
-#[derive(Deserialize, Clone, Copy)]
+/// Where a scheme acts (`space` of the strip and congruence options).
+#[derive(Deserialize, Clone, Copy, Tsify)]
 #[serde(rename_all = "kebab-case", expecting = "\"points\" or \"lines\"")]
-pub(crate) enum SpaceName {
+pub(crate) enum SubdivisionSpace {
+    /// On the endpoints.
     Points,
+    /// On the lines (dual unit vectors).
     Lines,
 }
 
@@ -118,15 +119,15 @@ pub(crate) fn read(
     let o: SubdivideOptions = args::options(func, options)?;
     let length = finite_option(func, "length", o.length)?;
     let space = match o.space {
-        None | Some(SpaceName::Points) => {
+        None | Some(SubdivisionSpace::Points) => {
             if length.is_some() {
                 return Err(fail_option(func, "length", "options.length applies to space \"lines\" only"));
             }
             Space::Points
         }
-        Some(SpaceName::Lines) => Space::Lines(length),
+        Some(SubdivisionSpace::Lines) => Space::Lines(length),
     };
-    let Some(name) = o.scheme.map(SchemeName::name).or(default_scheme) else {
+    let Some(name) = o.scheme.map(SubdivisionScheme::name).or(default_scheme) else {
         return Err(fail_option(
             func,
             "scheme",
@@ -150,10 +151,10 @@ pub(crate) fn read(
         "four-point" => Scheme::FourPoint { w: finite_option(func, "w", o.w)?.unwrap_or(1.0 / 16.0) },
         _ => Scheme::Variational {
             n: integer_option(func, "n", o.n, 3, 1000)?.unwrap_or(12),
-            variant: match o.variant.unwrap_or(VariantName::Coupled) {
-                VariantName::Coupled => Variant::Coupled,
-                VariantName::Literal => Variant::Literal,
-                VariantName::Averaged => Variant::Averaged,
+            variant: match o.variant.unwrap_or(SubdivisionVariant::Coupled) {
+                SubdivisionVariant::Coupled => Variant::Coupled,
+                SubdivisionVariant::Literal => Variant::Literal,
+                SubdivisionVariant::Averaged => Variant::Averaged,
             },
         },
     };
@@ -211,4 +212,25 @@ pub fn subdivide_polygon(
     }
     let out = subdivision::subdivide_polygon(&points, scheme, closed, steps).map_err(|e| fail(F, e))?;
     Ok(Float64Array::from(bytemuck::cast_slice::<_, f64>(&out)))
+}
+
+#[wasm_bindgen]
+impl AnalyticSurface {
+    /// Largest distance from this surface of the rulings of `refined` whose index is not a
+    /// multiple of `stride` (the inserted ones), sampled at 9 points each; `refined` was
+    /// refined from a sampling of the parameter interval [uMin, uMax].
+    #[wasm_bindgen(js_name = insertedDistance)]
+    pub fn inserted_distance(
+        &self,
+        refined: &RuledSurface,
+        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] u_min: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] u_max: JsValue,
+    ) -> Result<f64, JsValue> {
+        const F: &str = "AnalyticSurface.insertedDistance";
+        let stride = integer(F, "stride", &stride, 2, 1 << 24)?;
+        let (u_min, u_max) = interval(F, &u_min, &u_max)?;
+        let which = (0..refined.length()).filter(|i| i % stride != 0);
+        Ok(crate::subdivision::accuracy::max_distance(self.core(), refined.core(), u_min, u_max, which))
+    }
 }
