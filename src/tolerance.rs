@@ -39,6 +39,34 @@ pub const FORMULA_PROBES: usize = 257;
 /// A formula's ruling direction counts as vanishing where |e| ≤ this · max |e| over the probes.
 pub const FORMULA_ZERO_DIRECTION: f64 = 1e-12;
 
+/// Most signs in a row in a formula ("--u" is fine, "-----u" is refused).
+pub const MAX_FORMULA_SIGNS: usize = 4;
+
+/// Probes per parameter direction when a formula congruence is made (a 33 × 33 grid): every
+/// value and derivative finite, the direction nonzero.
+pub const CONGRUENCE_FORMULA_PROBES: usize = 33;
+
+/// Largest Bézier control polygon: de Casteljau costs O(degree) per output point, and
+/// Bernstein bases of higher degree are numerically meaningless anyway.
+pub const MAX_BEZIER_POINTS: usize = 1001;
+
+/// Largest number of subdivision steps accepted in one call (the size limit usually binds
+/// first).
+pub const MAX_SUBDIVISION_STEPS: usize = 24;
+
+/// Largest degree of the uniform B-spline scheme.
+pub const MAX_BSPLINE_DEGREE: usize = 7;
+
+/// Largest text accepted by the importers (64 MiB, about a million rulings of CSV).
+pub const MAX_IMPORT_TEXT: usize = 64 << 20;
+
+/// Deepest nesting of arrays and objects in an imported JSON file.
+pub const MAX_JSON_DEPTH: usize = 16;
+
+/// Convergence study: errors below this (relative to the surface's size, ~1) are rounding noise
+/// and carry no order.
+pub const CONVERGENCE_NOISE_FLOOR: f64 = 1e-13;
+
 /// Largest number of samples asked of an analytic surface in one call.
 pub const MAX_SAMPLES: usize = MAX_RULINGS;
 
@@ -48,6 +76,35 @@ pub const DISTANCE_SCAN: usize = 64;
 /// Distance of a point from a smooth surface: golden-section steps around the best scanned ruling
 /// (each shrinks the bracket by 0.618: 80 reach the rounding of u).
 pub const DISTANCE_REFINE_STEPS: usize = 80;
+
+/// Largest stride of the buffers of inserted rulings (2^k after k steps).
+pub const MAX_STRIDE: usize = 1 << 24;
+
+/// Most parts of a segment in the variational schemes (n of Section 4.2, K of Section 5.2) and
+/// in the drawn triangulations of Fig. 9.
+pub const MAX_PARTS: usize = 1000;
+
+/// Most rows or columns of a grid asked for by size: a formula congruence's default grid, the
+/// milling example's part mesh.
+pub const MAX_GRID_SIDE: usize = 1000;
+
+/// Most vertices per ring of a tool or envelope mesh.
+pub const MAX_MESH_SIDES: usize = 256;
+
+/// Longest segment of an analytic congruence's grid, in multiples of its direction vector.
+pub const MAX_REACH: f64 = 1e6;
+
+/// Longest torsal stroke, in grid steps.
+pub const MAX_STROKE_SCALE: f64 = 10.0;
+
+/// Longest object name in an OBJ file, in characters.
+pub const MAX_OBJECT_NAME: usize = 200;
+
+/// Most poses of the built-in milling example.
+pub const MAX_EXAMPLE_POSES: usize = 1000;
+
+/// Most steps of a congruence subdivision in one call (each quadruples the lines).
+pub const MAX_CONGRUENCE_STEPS: usize = 12;
 
 /// Most vertices of a mesh handed in for shading: the two endpoints of the most rulings.
 pub const MAX_MESH_VERTICES: usize = 2 * MAX_RULINGS;

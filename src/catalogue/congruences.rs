@@ -20,7 +20,7 @@ use crate::congruence::SmoothCongruence;
 use crate::error::{Error, Result};
 use crate::formula::dual::Dual;
 use crate::formula::{Formula, PARAMETERS};
-use crate::tolerance::{FORMULA_ZERO_DIRECTION, MAX_COORD};
+use crate::tolerance::{CONGRUENCE_FORMULA_PROBES, FORMULA_ZERO_DIRECTION, MAX_COORD};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -57,9 +57,6 @@ pub struct FormulaCongruence {
     spec: CongruenceSpec,
 }
 
-/// Probes per parameter direction when a formula congruence is made (a 33 × 33 grid).
-const PROBES: usize = 33;
-
 impl FormulaCongruence {
     /// The variables of a congruence's formulas, in evaluation order.
     pub const VARIABLES: [&'static str; 5] = ["u", "v", PARAMETERS[0], PARAMETERS[1], PARAMETERS[2]];
@@ -80,11 +77,11 @@ impl FormulaCongruence {
             spec: spec.clone(),
         };
         let mut largest = 0.0f64;
-        let mut probes = Vec::with_capacity(PROBES * PROBES);
-        for i in 0..PROBES {
-            for j in 0..PROBES {
-                let u = spec.u.0 + (spec.u.1 - spec.u.0) * i as f64 / (PROBES - 1) as f64;
-                let v = spec.v.0 + (spec.v.1 - spec.v.0) * j as f64 / (PROBES - 1) as f64;
+        let mut probes = Vec::with_capacity(CONGRUENCE_FORMULA_PROBES * CONGRUENCE_FORMULA_PROBES);
+        for i in 0..CONGRUENCE_FORMULA_PROBES {
+            for j in 0..CONGRUENCE_FORMULA_PROBES {
+                let u = spec.u.0 + (spec.u.1 - spec.u.0) * i as f64 / (CONGRUENCE_FORMULA_PROBES - 1) as f64;
+                let v = spec.v.0 + (spec.v.1 - spec.v.0) * j as f64 / (CONGRUENCE_FORMULA_PROBES - 1) as f64;
                 let jet = c.checked_jet(u, v)?;
                 largest = largest.max(jet.d.length());
                 probes.push((u, v, jet.d.length()));

@@ -9,7 +9,7 @@
 
 use crate::error::{Error, Message, Result};
 use crate::msg;
-use crate::tolerance::{MAX_FORMULA_CHARS, MAX_FORMULA_DEPTH};
+use crate::tolerance::{MAX_FORMULA_CHARS, MAX_FORMULA_DEPTH, MAX_FORMULA_SIGNS};
 
 /// Functions of one argument.
 pub const FUNCTIONS: [&str; 14] =
@@ -20,9 +20,6 @@ pub const FUNCTIONS2: [&str; 1] = ["atan2"];
 
 /// Named constants.
 pub const CONSTANTS: [&str; 2] = ["pi", "e"];
-
-/// Most signs in a row ("--u" is fine, "-----u" is refused).
-const MAX_SIGNS: usize = 4;
 
 /// One open parenthesis: where it is, and whether it holds the arguments of atan2.
 struct Open {
@@ -170,8 +167,8 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
                 // that the expression tree stays shallow (each sign is one level)
                 if expect_operand {
                     signs += 1;
-                    if signs > MAX_SIGNS {
-                        return Err(fail(i, msg!("too-many-signs", max = MAX_SIGNS)));
+                    if signs > MAX_FORMULA_SIGNS {
+                        return Err(fail(i, msg!("too-many-signs", max = MAX_FORMULA_SIGNS)));
                     }
                 } else {
                     signs = 0;

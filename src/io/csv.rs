@@ -3,10 +3,10 @@
 //! first non-comment line, if it holds anything that is not a number) is skipped; blank lines
 //! and lines starting with `#` are ignored.
 
-use super::{classify, rust_number, Imported, NumberParser, Token, MAX_TEXT};
+use super::{classify, rust_number, Imported, NumberParser, Token};
 use crate::error::{Error, Message, Result};
 use crate::msg;
-use crate::tolerance::MAX_RULINGS;
+use crate::tolerance::{MAX_IMPORT_TEXT, MAX_RULINGS};
 
 fn fail(line: usize, column: usize, message: Message) -> Error {
     Error::parse("csv", Some(line), Some(column), message)
@@ -19,8 +19,8 @@ pub fn parse(text: &str) -> Result<Imported> {
 
 /// As [`parse`], converting numbers with `number` (see [`NumberParser`]).
 pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
-    if text.len() > MAX_TEXT {
-        return Err(Error::TooMany { what: "bytes of CSV", got: text.len(), max: MAX_TEXT });
+    if text.len() > MAX_IMPORT_TEXT {
+        return Err(Error::TooMany { what: "bytes of CSV", got: text.len(), max: MAX_IMPORT_TEXT });
     }
     let mut coords = Vec::new();
     // the 1-based line of each record, for the messages of check_records

@@ -8,12 +8,10 @@
 //! A small recursive-descent parser (nesting limited to 16 levels, so hostile input cannot
 //! exhaust the stack) reports the line and column of any problem.
 
-use super::{classify, position, rust_number, Imported, NumberParser, Token, MAX_TEXT};
+use super::{classify, position, rust_number, Imported, NumberParser, Token};
 use crate::error::{Error, Message, Result};
 use crate::msg;
-use crate::tolerance::MAX_RULINGS;
-
-const MAX_DEPTH: usize = 16;
+use crate::tolerance::{MAX_IMPORT_TEXT, MAX_JSON_DEPTH, MAX_RULINGS};
 
 #[derive(Debug, Clone, PartialEq)]
 enum Value {
@@ -48,8 +46,8 @@ impl<'a> Parser<'a> {
     fn value(&mut self, depth: usize) -> Result<(usize, Value)> {
         self.skip_space();
         let start = self.at;
-        if depth > MAX_DEPTH {
-            return Err(self.fail(start, msg!("json-too-deep", max = MAX_DEPTH)));
+        if depth > MAX_JSON_DEPTH {
+            return Err(self.fail(start, msg!("json-too-deep", max = MAX_JSON_DEPTH)));
         }
         let Some(&c) = self.bytes.get(self.at) else { return Err(self.fail(start, msg!("json-end"))) };
         let v = match c {
@@ -170,8 +168,8 @@ pub fn parse(text: &str) -> Result<Imported> {
 
 /// As [`parse`], converting numbers with `number` (see [`NumberParser`]).
 pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Imported> {
-    if text.len() > MAX_TEXT {
-        return Err(Error::TooMany { what: "bytes of JSON", got: text.len(), max: MAX_TEXT });
+    if text.len() > MAX_IMPORT_TEXT {
+        return Err(Error::TooMany { what: "bytes of JSON", got: text.len(), max: MAX_IMPORT_TEXT });
     }
     let mut p = Parser { text, bytes: text.as_bytes(), at: 0, numbers: 0, number };
     let (at, root) = p.value(0)?;

@@ -2,7 +2,7 @@
 //! page's: `www/export/`): segments as CSV (6 numbers per line) and JSON, read and written; OBJ
 //! of a strip; the invariants of Section 2 as CSV and JSON; a tool path as CSV and JSON.
 //! Malformed input is rejected with the line and column of the problem; sizes are checked
-//! before anything large is allocated ([`MAX_TEXT`], and the ruling limit).
+//! before anything large is allocated ([`MAX_IMPORT_TEXT`](crate::tolerance::MAX_IMPORT_TEXT), and the ruling limit).
 
 pub mod csv;
 pub mod invariants;
@@ -13,9 +13,6 @@ pub mod toolpath;
 use crate::error::{Error, Result};
 use crate::tolerance::ZERO_LENGTH_REL;
 use glam::DVec3;
-
-/// Largest text accepted by the importers (64 MiB, about a million rulings of CSV).
-pub const MAX_TEXT: usize = 64 << 20;
 
 /// Imported data: flat coordinates (6 per line) and, for a congruence, its grid shape.
 #[derive(Debug, Clone, PartialEq)]

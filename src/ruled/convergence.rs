@@ -18,10 +18,7 @@
 use crate::error::{Error, Result};
 use crate::ruled::invariants::PairInvariants;
 use crate::ruled::SmoothRuled;
-use crate::tolerance::MAX_STUDY_LEVELS;
-
-/// Errors below this (relative to the surface's size, ~1) are rounding noise and carry no order.
-const NOISE_FLOOR: f64 = 1e-13;
+use crate::tolerance::{CONVERGENCE_NOISE_FLOOR, MAX_STUDY_LEVELS};
 
 /// One quantity's errors over the refinement levels.
 #[derive(Debug, Clone, PartialEq)]
@@ -116,8 +113,10 @@ pub fn study(surface: &(impl SmoothRuled + ?Sized), u: f64, h0: f64, levels: usi
         .iter()
         .zip(errors)
         .map(|(&(name, expected_order), errors)| {
-            let orders =
-                errors.windows(2).map(|w| if w[1] > NOISE_FLOOR { (w[0] / w[1]).log2() } else { f64::NAN }).collect();
+            let orders = errors
+                .windows(2)
+                .map(|w| if w[1] > CONVERGENCE_NOISE_FLOOR { (w[0] / w[1]).log2() } else { f64::NAN })
+                .collect();
             Series { name, expected_order, fitted_order: fit_order(&steps, &errors), errors, orders }
         })
         .collect();
@@ -126,8 +125,12 @@ pub fn study(surface: &(impl SmoothRuled + ?Sized), u: f64, h0: f64, levels: usi
 
 /// Least-squares slope of log(error) against log(H) over the errors above the noise floor.
 pub fn fit_order(steps: &[f64], errors: &[f64]) -> f64 {
-    let pts: Vec<(f64, f64)> =
-        steps.iter().zip(errors).filter(|(_, &e)| e > NOISE_FLOOR).map(|(&h, &e)| (h.ln(), e.ln())).collect();
+    let pts: Vec<(f64, f64)> = steps
+        .iter()
+        .zip(errors)
+        .filter(|(_, &e)| e > CONVERGENCE_NOISE_FLOOR)
+        .map(|(&h, &e)| (h.ln(), e.ln()))
+        .collect();
     if pts.len() < 2 {
         return f64::NAN;
     }

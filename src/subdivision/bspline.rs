@@ -11,9 +11,6 @@ use crate::subdivision::Affine;
 #[cfg(test)]
 use glam::DVec3;
 
-/// Largest supported degree.
-pub const MAX_DEGREE: usize = 7;
-
 /// One step of degree-`degree` uniform B-spline subdivision.
 pub fn bspline<T: Affine>(points: &[T], degree: usize, closed: bool) -> Vec<T> {
     let mut q: Vec<T> = points.iter().flat_map(|&p| [p, p]).collect();

@@ -18,7 +18,7 @@ pub mod triangulation;
 pub mod variational;
 
 use crate::error::{Error, Result};
-use crate::tolerance::MAX_RULINGS;
+use crate::tolerance::{MAX_BEZIER_POINTS, MAX_BSPLINE_DEGREE, MAX_RULINGS, MAX_SUBDIVISION_STEPS};
 use glam::DVec3;
 use std::ops::{Add, Mul, Sub};
 
@@ -88,9 +88,9 @@ impl Scheme {
     /// Checks the parameters.
     pub fn validate(&self) -> Result<()> {
         match *self {
-            Scheme::BSpline { degree } if !(1..=bspline::MAX_DEGREE).contains(&degree) => Err(Error::parameter(
+            Scheme::BSpline { degree } if !(1..=MAX_BSPLINE_DEGREE).contains(&degree) => Err(Error::parameter(
                 "degree",
-                format!("must be an integer from 1 to {}, got {degree}", bspline::MAX_DEGREE),
+                format!("must be an integer from 1 to {}, got {degree}", MAX_BSPLINE_DEGREE),
             )),
             Scheme::FourPoint { w } if !(w.is_finite() && (-0.25..=0.25).contains(&w)) => Err(Error::parameter(
                 "w",
@@ -151,13 +151,6 @@ impl Scheme {
     }
 }
 
-/// Largest Bézier control polygon: de Casteljau costs O(degree) per output point, and
-/// Bernstein bases of higher degree are numerically meaningless anyway.
-pub const MAX_BEZIER_POINTS: usize = 1001;
-
-/// Largest number of steps accepted in one call (the size limit usually binds first).
-pub const MAX_STEPS: usize = 24;
-
 /// `steps` steps of a curve scheme on a polygon (not [`Scheme::Variational`], which needs a
 /// strip: see [`subdivide_strip`]).
 pub fn subdivide_polygon(points: &[DVec3], scheme: Scheme, closed: bool, steps: usize) -> Result<Vec<DVec3>> {
@@ -177,8 +170,11 @@ pub fn subdivide_polygon(points: &[DVec3], scheme: Scheme, closed: bool, steps: 
 
 /// Checks the step count.
 pub fn check_steps(steps: usize) -> Result<()> {
-    if steps > MAX_STEPS {
-        return Err(Error::parameter("steps", format!("must be an integer from 0 to {MAX_STEPS}, got {steps}")));
+    if steps > MAX_SUBDIVISION_STEPS {
+        return Err(Error::parameter(
+            "steps",
+            format!("must be an integer from 0 to {MAX_SUBDIVISION_STEPS}, got {steps}"),
+        ));
     }
     Ok(())
 }

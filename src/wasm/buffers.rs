@@ -12,6 +12,7 @@ use crate::mesh::Mesh;
 use crate::milling::example;
 use crate::ruled::development::{Development, Frame};
 use crate::subdivision::triangulation::{self, Triangulation};
+use crate::tolerance::{MAX_GRID_SIDE, MAX_MESH_SIDES, MAX_PARTS, MAX_STRIDE};
 use glam::DVec3;
 use js_sys::{Float32Array, Float64Array, Uint32Array};
 use wasm_bindgen::prelude::*;
@@ -103,7 +104,7 @@ impl RuledSurface {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        let stride = integer("RuledSurface.insertedF32", "stride", &stride, 1, 1 << 24)?;
+        let stride = integer("RuledSurface.insertedF32", "stride", &stride, 1, MAX_STRIDE)?;
         Ok(segments_f32(&self.core().inserted(stride)))
     }
 
@@ -114,7 +115,7 @@ impl RuledSurface {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] k: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        let k = integer("RuledSurface.everyF32", "k", &k, 1, 1 << 24)?;
+        let k = integer("RuledSurface.everyF32", "k", &k, 1, MAX_STRIDE)?;
         let n = self.length();
         let rulings: Vec<Segment> =
             (0..n).filter(|i| i % k == 0 || *i == n - 1).map(|i| self.core().segment(i)).collect();
@@ -131,7 +132,7 @@ impl RuledSurface {
     ) -> Result<Float32Array, JsValue> {
         const F: &str = "RuledSurface.endsF32";
         let which = integer(F, "which", &which, 1, 2)?;
-        let stride = integer(F, "stride", &stride, 1, 1 << 24)?;
+        let stride = integer(F, "stride", &stride, 1, MAX_STRIDE)?;
         let rulings: Vec<Segment> =
             if stride == 1 { self.core().segments().collect() } else { self.core().inserted(stride) };
         let points: Vec<DVec3> = rulings.iter().map(|s| if which == 1 { s.a } else { s.b }).collect();
@@ -148,7 +149,7 @@ impl RuledSurface {
     ) -> Result<Float64Array, JsValue> {
         const F: &str = "RuledSurface.divisionPoint";
         let i = integer(F, "i", &i, 0, self.length() - 1)?;
-        let n = integer(F, "n", &n, 1, 1 << 24)?;
+        let n = integer(F, "n", &n, 1, MAX_STRIDE)?;
         let k = integer(F, "k", &k, 0, n)?;
         Ok(Float64Array::from(&triangulation::division_point(self.core(), i, k, n).to_array()[..]))
     }
@@ -162,7 +163,7 @@ impl RuledSurface {
         #[wasm_bindgen(unchecked_param_type = "number")] which: JsValue,
     ) -> Result<Float32Array, JsValue> {
         const F: &str = "RuledSurface.triangulationF32";
-        let n = integer(F, "n", &n, 1, 1000)?;
+        let n = integer(F, "n", &n, 1, MAX_PARTS)?;
         let which = match integer(F, "which", &which, 1, 2)? {
             1 => Triangulation::First,
             _ => Triangulation::Second,
@@ -230,7 +231,7 @@ impl LineCongruence {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        let stride = integer("LineCongruence.insertedF32", "stride", &stride, 1, 1 << 24)?;
+        let stride = integer("LineCongruence.insertedF32", "stride", &stride, 1, MAX_STRIDE)?;
         Ok(segments_f32(&self.core().inserted(stride)))
     }
 
@@ -253,7 +254,7 @@ impl LineCongruence {
         #[wasm_bindgen(unchecked_param_type = "number")] which: JsValue,
     ) -> Result<Float32Array, JsValue> {
         const F: &str = "LineCongruence.insertedDirectorF32";
-        let stride = integer(F, "stride", &stride, 1, 1 << 24)?;
+        let stride = integer(F, "stride", &stride, 1, MAX_STRIDE)?;
         let which = integer(F, "which", &which, 1, 2)?;
         let points: Vec<DVec3> =
             self.core().inserted(stride).iter().map(|s| if which == 1 { s.a } else { s.b }).collect();
@@ -270,7 +271,7 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_param_type = "number")] ny: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "ToolPath.examplePart";
-        let (nx, ny) = (integer(F, "nx", &nx, 2, 1000)?, integer(F, "ny", &ny, 2, 1000)?);
+        let (nx, ny) = (integer(F, "nx", &nx, 2, MAX_GRID_SIDE)?, integer(F, "ny", &ny, 2, MAX_GRID_SIDE)?);
         mesh_buffers(F, &example::part_mesh(nx, ny))
     }
 
@@ -282,7 +283,7 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
     ) -> Result<Float32Array, JsValue> {
         const F: &str = "ToolPath.insertedF32";
-        let stride = integer(F, "stride", &stride, 1, 1 << 24)?;
+        let stride = integer(F, "stride", &stride, 1, MAX_STRIDE)?;
         let axes = self.core().axis_surface().map_err(|e| fail(F, e))?;
         Ok(segments_f32(&axes.inserted(stride)))
     }
@@ -295,7 +296,7 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_param_type = "number")] sides: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "ToolPath.envelopeMesh";
-        let sides = integer(F, "sides", &sides, 3, 256)?;
+        let sides = integer(F, "sides", &sides, 3, MAX_MESH_SIDES)?;
         mesh_buffers(F, &self.core().envelope_mesh(sides))
     }
 
@@ -308,7 +309,7 @@ impl ToolPath {
     ) -> Result<JsValue, JsValue> {
         const F: &str = "ToolPath.toolMesh";
         let index = integer(F, "index", &index, 0, self.length().saturating_sub(1))?;
-        let sides = integer(F, "sides", &sides, 3, 256)?;
+        let sides = integer(F, "sides", &sides, 3, MAX_MESH_SIDES)?;
         match self.core().tool_mesh(index, sides) {
             Some(m) => mesh_buffers(F, &m),
             None => Ok(JsValue::UNDEFINED),

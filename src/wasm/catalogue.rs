@@ -9,7 +9,7 @@ use super::surface::RuledSurface;
 use crate::catalogue as examples;
 use crate::congruence::SmoothCongruence;
 use crate::ruled::SmoothRuled;
-use crate::tolerance::{MAX_RULINGS, MAX_SAMPLES};
+use crate::tolerance::{MAX_REACH, MAX_RULINGS, MAX_SAMPLES};
 use js_sys::Float64Array;
 use serde::{Deserialize, Serialize};
 use tsify_next::Tsify;
@@ -160,10 +160,7 @@ impl AnalyticSurface {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] u: JsValue,
     ) -> Result<Float64Array, JsValue> {
-        let u = self.u_values("AnalyticSurface.striction", &u)?;
-        let out: Vec<f64> =
-            u.iter().flat_map(|&u| self.inner.striction(u).unwrap_or(glam::DVec3::NAN).to_array()).collect();
-        Ok(Float64Array::from(&out[..]))
+        self.points_at("AnalyticSurface.striction", &u, |u| self.inner.striction(u))
     }
 
     /// Exact distribution parameters δ(u).
@@ -182,10 +179,7 @@ impl AnalyticSurface {
         &self,
         #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] u: JsValue,
     ) -> Result<Float64Array, JsValue> {
-        let u = self.u_values("AnalyticSurface.centralTangent", &u)?;
-        let out: Vec<f64> =
-            u.iter().flat_map(|&u| self.inner.central_tangent(u).unwrap_or(glam::DVec3::NAN).to_array()).collect();
-        Ok(Float64Array::from(&out[..]))
+        self.points_at("AnalyticSurface.centralTangent", &u, |u| self.inner.central_tangent(u))
     }
 
     /// Distance of each point (3 numbers per point) from the surface, its rulings extended to
@@ -224,6 +218,18 @@ impl AnalyticSurface {
             v: (bound("vMin", o.v_min, d.v.0)?, bound("vMax", o.v_max, d.v.1)?),
             closed: o.closed.unwrap_or(d.closed),
         })
+    }
+
+    /// `at(u)` for each u, 3 numbers each (NaN where it is `None`).
+    fn points_at(
+        &self,
+        func: &str,
+        u: &JsValue,
+        at: impl Fn(f64) -> Option<glam::DVec3>,
+    ) -> Result<Float64Array, JsValue> {
+        let out: Vec<f64> =
+            self.u_values(func, u)?.into_iter().flat_map(|u| at(u).unwrap_or(glam::DVec3::NAN).to_array()).collect();
+        Ok(Float64Array::from(&out[..]))
     }
 
     pub(super) fn u_values(&self, func: &str, u: &JsValue) -> Result<Vec<f64>, JsValue> {
@@ -299,8 +305,8 @@ impl AnalyticCongruence {
         let rows = args::optional_integer(F, "rows", &rows, 2, MAX_RULINGS, r0)?;
         let cols = args::optional_integer(F, "cols", &cols, 2, MAX_RULINGS, c0)?;
         let reach = if reach.is_undefined() { 1.0 } else { args::number(F, "reach", &reach)? };
-        if !(reach > 0.0 && reach <= 1e6) {
-            return Err(fail(F, format!("reach must be a number in (0, 1e6], got {reach}")));
+        if !(reach > 0.0 && reach <= MAX_REACH) {
+            return Err(fail(F, format!("reach must be a number in (0, {MAX_REACH:e}], got {reach}")));
         }
         self.inner.grid_reaching(rows, cols, reach).map(LineCongruence::from_core).map_err(|e| fail(F, e))
     }

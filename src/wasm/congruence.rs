@@ -5,7 +5,7 @@ use super::live::Live;
 use super::subdivision::SubdivisionSpace;
 use super::surface::RuledSurface;
 use crate::congruence::{self, CongruenceScheme};
-use crate::tolerance::MAX_RULINGS;
+use crate::tolerance::{MAX_CONGRUENCE_STEPS, MAX_PARTS, MAX_RULINGS};
 use js_sys::{Float32Array, Float64Array};
 use serde::Deserialize;
 use tsify_next::Tsify;
@@ -168,7 +168,7 @@ impl LineCongruence {
         ] {
             only_for(F, key, present, s, chosen)?;
         }
-        let steps = integer_option(F, "steps", o.steps, 0, 12)?.unwrap_or(1);
+        let steps = integer_option(F, "steps", o.steps, 0, MAX_CONGRUENCE_STEPS)?.unwrap_or(1);
         let scheme = match o.scheme {
             Some(CongruenceSchemeName::Butterfly) => {
                 let w = finite_option(F, "w", o.w)?.unwrap_or(1.0 / 16.0);
@@ -204,7 +204,7 @@ impl LineCongruence {
                 CongruenceScheme::Butterfly { w }
             }
             Some(CongruenceSchemeName::Variational) => {
-                let k = integer_option(F, "K", o.k, 3, 1000)?.unwrap_or(6);
+                let k = integer_option(F, "K", o.k, 3, MAX_PARTS)?.unwrap_or(6);
                 match o.variant.unwrap_or(CongruenceVariant::Coupled) {
                     CongruenceVariant::Coupled => CongruenceScheme::Coupled { k },
                     CongruenceVariant::TwoStage => CongruenceScheme::TwoStage { k },

@@ -9,7 +9,8 @@ use super::congruence::LineCongruence;
 use super::live::Live;
 use crate::congruence::focal::{self, Focal, FocalKind};
 use crate::congruence::LineCongruence as CoreCongruence;
-use crate::tolerance::MAX_RULINGS;
+use crate::tolerance::{MAX_RULINGS, MAX_STROKE_SCALE};
+use glam::DVec3;
 use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
 use serde::Serialize;
 use tsify_next::Tsify;
@@ -69,20 +70,6 @@ pub(super) fn focal_js(func: &str, rows: usize, cols: usize, all: &[Focal]) -> R
     )
 }
 
-/// A focal sheet for WebGL: positions, triangle indices and smooth vertex normals.
-#[derive(Serialize, Tsify)]
-struct FocalSheetBuffers {
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    #[tsify(type = "Float32Array")]
-    positions: Float32Array,
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    #[tsify(type = "Uint32Array")]
-    indices: Uint32Array,
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    #[tsify(type = "Float32Array")]
-    normals: Float32Array,
-}
-
 #[wasm_bindgen]
 impl LineCongruence {
     /// The focal geometry of every line: focal points and parameters, kind, torsal
@@ -94,27 +81,17 @@ impl LineCongruence {
         focal_js("LineCongruence.focal", c.rows(), c.cols(), &focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()))
     }
 
-    /// Focal sheet 1 (of t1) or 2 (of t2) as a mesh with vertex normals: the grid's quads whose
-    /// four focal points are real and within three bounding-box diagonals of the lines' centre.
-    #[wasm_bindgen(js_name = focalSheetF32, unchecked_return_type = "FocalSheetBuffers")]
+    /// Focal sheet 1 (of t1) or 2 (of t2) as a mesh with vertex normals and the box of its drawn
+    /// vertices (`FocalSheetFigure`, as `focalGeometry().sheetF32(sheet)`): the grid's quads
+    /// whose four focal points are real and within three bounding-box diagonals of the lines'
+    /// centre.
+    #[wasm_bindgen(js_name = focalSheetF32, unchecked_return_type = "FocalSheetFigure")]
     pub fn focal_sheet_f32(
         &self,
         #[wasm_bindgen(unchecked_param_type = "1 | 2")] sheet: JsValue,
     ) -> Result<JsValue, JsValue> {
-        const F: &str = "LineCongruence.focalSheetF32";
-        let sheet = args::integer(F, "sheet", &sheet, 1, 2)?;
         let c = self.core();
-        let all = focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q());
-        let mesh = focal::focal_sheet(c, &all, sheet - 1);
-        let normals = mesh.vertex_normals();
-        to_js(
-            F,
-            &FocalSheetBuffers {
-                positions: points_f32(&mesh.positions),
-                indices: Uint32Array::from(&mesh.indices[..]),
-                normals: points_f32(&normals),
-            },
-        )
+        sheet_figure("LineCongruence.focalSheetF32", c, &focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()), &sheet)
     }
 
     /// Strokes on the director surface d₁ along the real torsal directions, p ± scale·(du·p_i
@@ -124,15 +101,8 @@ impl LineCongruence {
         &self,
         #[wasm_bindgen(unchecked_optional_param_type = "number")] scale: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        const F: &str = "LineCongruence.torsalStrokesF32";
-        let scale = if scale.is_undefined() { 0.35 } else { args::number(F, "scale", &scale)? };
-        if !(scale > 0.0 && scale <= 10.0) {
-            return Err(fail(F, format!("scale must be a number in (0, 10], got {scale}")));
-        }
         let c = self.core();
-        let p = c.p();
-        let all = focal::focal_grid(c.rows(), c.cols(), &p, &c.q());
-        Ok(segments_f32(&focal::torsal_strokes(c.rows(), c.cols(), &p, &all, scale)))
+        strokes("LineCongruence.torsalStrokesF32", c, &focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()), &scale)
     }
 }
 
@@ -167,7 +137,8 @@ pub struct CongruenceFocal {
     _live: Live,
 }
 
-/// A focal sheet for WebGL with the box of its drawn vertices.
+/// A focal sheet for WebGL (positions, triangle indices, smooth vertex normals) with the box of
+/// its drawn vertices.
 #[derive(Serialize, Tsify)]
 struct FocalSheetFigure {
     #[serde(with = "serde_wasm_bindgen::preserve")]
@@ -243,26 +214,7 @@ impl CongruenceFocal {
         &self,
         #[wasm_bindgen(unchecked_param_type = "1 | 2")] sheet: JsValue,
     ) -> Result<JsValue, JsValue> {
-        const F: &str = "CongruenceFocal.sheetF32";
-        let sheet = args::integer(F, "sheet", &sheet, 1, 2)?;
-        let mesh = focal::focal_sheet(&self.grid, &self.focal, sheet - 1);
-        let normals = mesh.vertex_normals();
-        let used = mesh.indices.iter().map(|&i| mesh.positions[i as usize]);
-        let (min, max) = used
-            .fold((glam::DVec3::splat(f64::INFINITY), glam::DVec3::splat(f64::NEG_INFINITY)), |(a, b), p| {
-                (a.min(p), b.max(p))
-            });
-        let finite = |v: glam::DVec3| if v.is_finite() { v } else { glam::DVec3::NAN };
-        to_js(
-            F,
-            &FocalSheetFigure {
-                positions: points_f32(&mesh.positions),
-                indices: Uint32Array::from(&mesh.indices[..]),
-                normals: points_f32(&normals),
-                min: Float64Array::from(&finite(min).to_array()[..]),
-                max: Float64Array::from(&finite(max).to_array()[..]),
-            },
-        )
+        sheet_figure("CongruenceFocal.sheetF32", &self.grid, &self.focal, &sheet)
     }
 
     /// Strokes on the director surface d₁ along the real torsal directions, p ± scale·(du·p_i
@@ -272,11 +224,36 @@ impl CongruenceFocal {
         &self,
         #[wasm_bindgen(unchecked_optional_param_type = "number")] scale: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        const F: &str = "CongruenceFocal.strokesF32";
-        let scale = if scale.is_undefined() { 0.35 } else { args::number(F, "scale", &scale)? };
-        if !(scale > 0.0 && scale <= 10.0) {
-            return Err(fail(F, format!("scale must be a number in (0, 10], got {scale}")));
-        }
-        Ok(segments_f32(&focal::torsal_strokes(self.grid.rows(), self.grid.cols(), &self.grid.p(), &self.focal, scale)))
+        strokes("CongruenceFocal.strokesF32", &self.grid, &self.focal, &scale)
     }
+}
+
+/// Focal sheet `sheet` (1 or 2) of `grid` from its focal geometry `all`, with its box.
+fn sheet_figure(func: &str, grid: &CoreCongruence, all: &[Focal], sheet: &JsValue) -> Result<JsValue, JsValue> {
+    let sheet = args::integer(func, "sheet", sheet, 1, 2)?;
+    let mesh = focal::focal_sheet(grid, all, sheet - 1);
+    let normals = mesh.vertex_normals();
+    let used = mesh.indices.iter().map(|&i| mesh.positions[i as usize]);
+    let (min, max) =
+        used.fold((DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)), |(a, b), p| (a.min(p), b.max(p)));
+    let finite = |v: DVec3| if v.is_finite() { v } else { DVec3::NAN };
+    to_js(
+        func,
+        &FocalSheetFigure {
+            positions: points_f32(&mesh.positions),
+            indices: Uint32Array::from(&mesh.indices[..]),
+            normals: points_f32(&normals),
+            min: Float64Array::from(&finite(min).to_array()[..]),
+            max: Float64Array::from(&finite(max).to_array()[..]),
+        },
+    )
+}
+
+/// Torsal strokes of `grid` from its focal geometry `all`, `scale` (default 0.35) of a grid step.
+fn strokes(func: &str, grid: &CoreCongruence, all: &[Focal], scale: &JsValue) -> Result<Float32Array, JsValue> {
+    let scale = if scale.is_undefined() { 0.35 } else { args::number(func, "scale", scale)? };
+    if !(scale > 0.0 && scale <= MAX_STROKE_SCALE) {
+        return Err(fail(func, format!("scale must be a number in (0, {MAX_STROKE_SCALE}], got {scale}")));
+    }
+    Ok(segments_f32(&focal::torsal_strokes(grid.rows(), grid.cols(), &grid.p(), all, scale)))
 }

@@ -8,6 +8,7 @@ use super::catalogue::AnalyticSurface;
 use super::error::{fail, fail_option};
 use crate::catalogue::{self as examples, CongruenceSpec, FormulaSpec};
 use crate::formula::{check, Formula, PARAMETERS};
+use crate::tolerance::MAX_GRID_SIDE;
 use serde::de::{self, Deserializer, Visitor};
 use serde::{Deserialize, Serialize};
 use tsify_next::Tsify;
@@ -322,8 +323,10 @@ impl AnalyticCongruence {
         let size = |name: &str, x: Option<f64>| -> Result<usize, JsValue> {
             match x {
                 None => Ok(8),
-                Some(x) if x.fract() == 0.0 && (2.0..=1000.0).contains(&x) => Ok(x as usize),
-                Some(x) => Err(fail_option(F, name, format!("{name} must be an integer from 2 to 1000, got {x}"))),
+                Some(x) if x.fract() == 0.0 && (2.0..=MAX_GRID_SIDE as f64).contains(&x) => Ok(x as usize),
+                Some(x) => {
+                    Err(fail_option(F, name, format!("{name} must be an integer from 2 to {MAX_GRID_SIDE}, got {x}")))
+                }
             }
         };
         let comma = s.decimal_comma;

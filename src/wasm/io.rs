@@ -4,6 +4,7 @@ use super::args::{describe, fail, to_js};
 use super::congruence::LineCongruence;
 use super::surface::RuledSurface;
 use crate::io;
+use crate::tolerance::MAX_OBJECT_NAME;
 use js_sys::Float64Array;
 use serde::Serialize;
 use tsify_next::Tsify;
@@ -80,8 +81,12 @@ fn export(
 ) -> Result<String, JsValue> {
     let o: ExportOptions = super::args::options(func, options)?;
     let name = o.name.as_deref().unwrap_or("ruledlab");
-    if name.chars().count() > 200 {
-        return Err(super::args::fail_option(func, "name", "options.name must be at most 200 characters"));
+    if name.chars().count() > MAX_OBJECT_NAME {
+        return Err(super::args::fail_option(
+            func,
+            "name",
+            format!("options.name must be at most {MAX_OBJECT_NAME} characters"),
+        ));
     }
     let known = if surface.is_some() {
         "\"csv\", \"json\", \"obj\", \"invariants-csv\" or \"invariants-json\""

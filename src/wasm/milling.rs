@@ -6,6 +6,7 @@ use crate::error::Error;
 use crate::milling::{self, example, export, quality};
 use crate::ruled::surface::points_from_flat;
 use crate::ruled::RuledSurface;
+use crate::tolerance::{MAX_EXAMPLE_POSES, MAX_SAMPLES};
 use glam::DVec3;
 use js_sys::{Float32Array, Float64Array};
 use serde::{Deserialize, Serialize};
@@ -20,6 +21,12 @@ pub struct ToolPath {
 }
 
 impl ToolPath {
+    /// The axis segments tip → tip + L·axis, 6 numbers per pose.
+    fn axis_coords(&self) -> Vec<f64> {
+        let length = self.inner.tool.length;
+        self.inner.poses.iter().flat_map(|p| [p.tip, p.tip + length * p.axis]).flat_map(|q| q.to_array()).collect()
+    }
+
     /// The core path.
     pub fn core(&self) -> &milling::ToolPath {
         &self.inner
@@ -123,7 +130,7 @@ impl ToolPath {
     pub fn example(
         #[wasm_bindgen(unchecked_optional_param_type = "number")] count: JsValue,
     ) -> Result<ToolPath, JsValue> {
-        let count = args::optional_integer("ToolPath.example", "count", &count, 2, 1000, 7)?;
+        let count = args::optional_integer("ToolPath.example", "count", &count, 2, MAX_EXAMPLE_POSES, 7)?;
         example::example(count)
             .map(|inner| ToolPath { inner, _live: Live::new() })
             .map_err(|e| fail("ToolPath.example", e))
@@ -134,7 +141,7 @@ impl ToolPath {
     pub fn example_profile(
         #[wasm_bindgen(unchecked_param_type = "number")] count: JsValue,
     ) -> Result<Float64Array, JsValue> {
-        let count = super::args::integer("ToolPath.exampleProfile", "count", &count, 2, 1_000_000)?;
+        let count = super::args::integer("ToolPath.exampleProfile", "count", &count, 2, MAX_SAMPLES)?;
         Ok(flat(&example::profile(count)))
     }
 
@@ -175,31 +182,13 @@ impl ToolPath {
 
     /// Axis segments tip → tip + L·axis, 6 numbers per pose.
     pub fn segments(&self) -> Float64Array {
-        let v: Vec<f64> = self
-            .inner
-            .poses
-            .iter()
-            .flat_map(|p| {
-                let b = p.tip + self.inner.tool.length * p.axis;
-                [p.tip.x, p.tip.y, p.tip.z, b.x, b.y, b.z]
-            })
-            .collect();
-        Float64Array::from(&v[..])
+        Float64Array::from(&self.axis_coords()[..])
     }
 
     /// Axis segments tip → tip + L·axis (6 numbers per pose) as 32-bit floats for WebGL.
     #[wasm_bindgen(js_name = segmentsF32)]
     pub fn segments_f32(&self) -> Float32Array {
-        let v: Vec<f32> = self
-            .inner
-            .poses
-            .iter()
-            .flat_map(|p| {
-                let b = p.tip + self.inner.tool.length * p.axis;
-                [p.tip.x, p.tip.y, p.tip.z, b.x, b.y, b.z]
-            })
-            .map(|x| x as f32)
-            .collect();
+        let v: Vec<f32> = self.axis_coords().into_iter().map(|x| x as f32).collect();
         Float32Array::from(&v[..])
     }
 

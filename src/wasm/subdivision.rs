@@ -5,7 +5,8 @@ use super::args::{self, fail, fail_option, finite_option, integer, integer_optio
 use super::catalogue::AnalyticSurface;
 use super::surface::RuledSurface;
 use crate::ruled::surface::points_from_flat;
-use crate::subdivision::{self, Scheme, Variant, MAX_STEPS};
+use crate::subdivision::{self, Scheme, Variant};
+use crate::tolerance::{MAX_BSPLINE_DEGREE, MAX_PARTS, MAX_STRIDE, MAX_SUBDIVISION_STEPS};
 use js_sys::Float64Array;
 use serde::Deserialize;
 use tsify_next::Tsify;
@@ -144,13 +145,13 @@ pub(crate) fn read(
     }
     let scheme = match name {
         "chaikin" => Scheme::Chaikin,
-        "bspline" => Scheme::BSpline {
-            degree: integer_option(func, "degree", o.degree, 1, subdivision::bspline::MAX_DEGREE)?.unwrap_or(3),
-        },
+        "bspline" => {
+            Scheme::BSpline { degree: integer_option(func, "degree", o.degree, 1, MAX_BSPLINE_DEGREE)?.unwrap_or(3) }
+        }
         "bezier" => Scheme::Bezier,
         "four-point" => Scheme::FourPoint { w: finite_option(func, "w", o.w)?.unwrap_or(1.0 / 16.0) },
         _ => Scheme::Variational {
-            n: integer_option(func, "n", o.n, 3, 1000)?.unwrap_or(12),
+            n: integer_option(func, "n", o.n, 3, MAX_PARTS)?.unwrap_or(12),
             variant: match o.variant.unwrap_or(SubdivisionVariant::Coupled) {
                 SubdivisionVariant::Coupled => Variant::Coupled,
                 SubdivisionVariant::Literal => Variant::Literal,
@@ -159,7 +160,7 @@ pub(crate) fn read(
         },
     };
     scheme.validate().map_err(|e| fail(func, e))?;
-    let steps = integer_option(func, "steps", o.steps, 0, MAX_STEPS)?.unwrap_or(1);
+    let steps = integer_option(func, "steps", o.steps, 0, MAX_SUBDIVISION_STEPS)?.unwrap_or(1);
     Ok((scheme, o.closed.unwrap_or(false), steps, space))
 }
 
@@ -228,7 +229,7 @@ impl AnalyticSurface {
         #[wasm_bindgen(unchecked_param_type = "number")] u_max: JsValue,
     ) -> Result<f64, JsValue> {
         const F: &str = "AnalyticSurface.insertedDistance";
-        let stride = integer(F, "stride", &stride, 2, 1 << 24)?;
+        let stride = integer(F, "stride", &stride, 2, MAX_STRIDE)?;
         let (u_min, u_max) = interval(F, &u_min, &u_max)?;
         let which = (0..refined.length()).filter(|i| i % stride != 0);
         Ok(crate::subdivision::accuracy::max_distance(self.core(), refined.core(), u_min, u_max, which))
