@@ -1,7 +1,7 @@
 // A classic script (it runs where module scripts cannot, e.g. from file://): says what to do
 // when the page's modules cannot load, instead of leaving a blank page. The page's module
 // removes the message when it starts.
-(function () {
+(() => {
   const box = document.getElementById('boot');
   if (!box) return;
   var de = /^de\b/i.test(navigator.language || '');
@@ -18,7 +18,7 @@
     box.className = 'boot boot-problem';
     return;
   }
-  setTimeout(function () {
+  setTimeout(() => {
     if (document.getElementById('boot') && !document.documentElement.hasAttribute('data-started')) {
       box.textContent = text.slow;
       box.className = 'boot boot-problem';

@@ -2,6 +2,7 @@
 // pan, wheel or pinch to zoom; keyboard (while the view has focus): arrows orbit,
 // shift+arrows pan, +/- zoom, F fits.
 import { add, lookAt, multiply, perspective, scale, sub, cross, normalize, length } from './math.js';
+import { CAMERA_NEAREST, PITCH_LIMIT } from './limits.js';
 
 export class OrbitCamera {
   constructor() {
@@ -36,11 +37,14 @@ export class OrbitCamera {
   fit({ min, max }, aspect = 1, { top = 0, bottom = 0 } = {}) {
     if (!min.every(Number.isFinite) || !max.every(Number.isFinite)) return;
     this.target = scale(add(min, max), 0.5);
-    const radius = Math.max(length(sub(max, min)) / 2, 1e-6);
+    const radius = Math.max(length(sub(max, min)) / 2, CAMERA_NEAREST);
     // `top` and `bottom` (fractions of the height) are covered by the legend and the toolbar:
     // the sphere fits the band between them, and its centre moves to the band's centre
     const band = Math.max(0.3, 1 - top - bottom);
-    const half = Math.min(Math.atan(Math.tan(this.fovY / 2) * band), Math.atan(Math.tan(this.fovY / 2) * Math.max(aspect, 1e-3)));
+    const half = Math.min(
+      Math.atan(Math.tan(this.fovY / 2) * band),
+      Math.atan(Math.tan(this.fovY / 2) * Math.max(aspect, 1e-3)),
+    );
     this.distance = (radius / Math.sin(half)) * 1.04;
     if (band < 1) this.pan(0, (top - bottom) / 2);
     this.home = { target: this.target, distance: this.distance, yaw: this.yaw, pitch: this.pitch };
@@ -49,7 +53,13 @@ export class OrbitCamera {
   /** Whether the camera is where the last fit put it. */
   atHome() {
     const h = this.home;
-    return !!h && h.distance === this.distance && h.yaw === this.yaw && h.pitch === this.pitch && h.target.every((x, i) => x === this.target[i]);
+    return (
+      !!h &&
+      h.distance === this.distance &&
+      h.yaw === this.yaw &&
+      h.pitch === this.pitch &&
+      h.target.every((x, i) => x === this.target[i])
+    );
   }
 
   /** Restores the last fitted view. */
@@ -64,12 +74,17 @@ export class OrbitCamera {
 
   /** Sets the camera from `toArray()`'s numbers. */
   fromArray(/** @type {number[]} */ [yaw, pitch, distance, ...target]) {
-    Object.assign(this, { yaw, pitch: Math.max(-1.55, Math.min(1.55, pitch)), distance: Math.max(distance, 1e-9), target });
+    Object.assign(this, {
+      yaw,
+      pitch: Math.max(-PITCH_LIMIT, Math.min(PITCH_LIMIT, pitch)),
+      distance: Math.max(distance, CAMERA_NEAREST),
+      target,
+    });
   }
 
   orbit(/** @type {number} */ dYaw, /** @type {number} */ dPitch) {
     this.yaw += dYaw;
-    this.pitch = Math.max(-1.55, Math.min(1.55, this.pitch + dPitch));
+    this.pitch = Math.max(-PITCH_LIMIT, Math.min(PITCH_LIMIT, this.pitch + dPitch));
   }
 
   /** Pans by a fraction of the view height. */
@@ -83,7 +98,7 @@ export class OrbitCamera {
   }
 
   zoom(/** @type {number} */ factor) {
-    this.distance = Math.max(1e-6, this.distance * factor);
+    this.distance = Math.max(CAMERA_NEAREST, this.distance * factor);
   }
 
   /**

@@ -25,7 +25,8 @@ export function surfaceInfo(/** @type {string} */ name) {
 
 /** Menu choices of the surfaces `names` (default: all): [value, i18n key]. */
 export function surfaceOptions(/** @type {string[] | null} */ names = null) {
-  return () => (names ?? surfaceList().map((s) => s.name)).map((n) => /** @type {[string, string]} */ ([n, `surface.${n}`]));
+  return () =>
+    (names ?? surfaceList().map((s) => s.name)).map((n) => /** @type {[string, string]} */ ([n, `surface.${n}`]));
 }
 
 /** Menu choices of the built-in congruences. */
@@ -47,4 +48,24 @@ export function surfacePreset(/** @type {string} */ name) {
 /** The catalogue's congruence `name` as formulas, or undefined. */
 export function congruencePreset(/** @type {string} */ name) {
   return CONGRUENCE_PRESETS.find((p) => p.name === name);
+}
+
+/**
+ * The slider of the formula parameter `key` (a, b or c) of the formula scenes: −3 … 3, playable.
+ * @param {'a' | 'b' | 'c'} key
+ * @param {number} value
+ * @returns {import('./scene.js').Param}
+ */
+export function formulaParameter(key, value) {
+  return {
+    key,
+    label: `formula.param.${key}`,
+    type: 'range',
+    min: -3,
+    max: 3,
+    step: 0.01,
+    value,
+    exact: true,
+    play: true,
+  };
 }

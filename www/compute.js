@@ -52,10 +52,22 @@ function theWorker() {
 
 /** Runs `job` on the main thread, a step per task, unless a newer job replaces it. */
 function here(/** @type {number} */ id, /** @type {Job} */ job) {
-  const pause = () => new Promise((resolve, reject) => setTimeout(() => (jobs.has(id) ? resolve(undefined) : reject(superseded())), 0));
+  const pause = () =>
+    new Promise((resolve, reject) => setTimeout(() => (jobs.has(id) ? resolve(undefined) : reject(superseded())), 0));
   pause()
     .then(() => refineSteps(job.job, job.onProgress, pause))
-    .then((done) => jobs.get(id) === job && (jobs.delete(id), job.resolve(done)), (e) => jobs.get(id) === job && (jobs.delete(id), job.reject(e)));
+    .then(
+      (done) => {
+        if (jobs.get(id) !== job) return;
+        jobs.delete(id);
+        job.resolve(done);
+      },
+      (e) => {
+        if (jobs.get(id) !== job) return;
+        jobs.delete(id);
+        job.reject(e);
+      },
+    );
 }
 
 /**

@@ -20,7 +20,8 @@ let workerFactory = null;
  * @param {{wasm?: WasmSource, worker?: () => Worker}} options
  */
 export function configure({ wasm, worker } = {}) {
-  if (ready && wasm !== undefined) throw new Error('ruledlab: configure({ wasm }) must come before the first view starts');
+  if (ready && wasm !== undefined)
+    throw new Error('ruledlab: configure({ wasm }) must come before the first view starts');
   if (wasm !== undefined) source = wasm;
   if (worker !== undefined) workerFactory = worker;
 }
@@ -32,7 +33,9 @@ export function wasmSource() {
 
 /** Starts the core (once); resolves when its exports can be called. */
 export function start() {
-  ready ??= init({ module_or_path: /** @type {any} */ (wasmSource()) }).then((exports) => (instance = /** @type {any} */ (exports)));
+  ready ??= init({ module_or_path: /** @type {any} */ (wasmSource()) }).then(
+    (exports) => (instance = /** @type {any} */ (exports)),
+  );
   return ready;
 }
 

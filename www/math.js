@@ -21,8 +21,22 @@ export function lookAt(eye, target, up) {
   const x = normalize(cross(up, z));
   const y = cross(z, x);
   return new Float32Array([
-    x[0], y[0], z[0], 0, x[1], y[1], z[1], 0, x[2], y[2], z[2], 0,
-    -dot(x, eye), -dot(y, eye), -dot(z, eye), 1,
+    x[0],
+    y[0],
+    z[0],
+    0,
+    x[1],
+    y[1],
+    z[1],
+    0,
+    x[2],
+    y[2],
+    z[2],
+    0,
+    -dot(x, eye),
+    -dot(y, eye),
+    -dot(z, eye),
+    1,
   ]);
 }
 
@@ -43,7 +57,11 @@ export const sub = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => [a[0] - b[0
 export const add = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
 export const scale = (/** @type {Vec3} */ a, /** @type {number} */ s) => [a[0] * s, a[1] * s, a[2] * s];
 export const dot = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-export const cross = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+export const cross = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => [
+  a[1] * b[2] - a[2] * b[1],
+  a[2] * b[0] - a[0] * b[2],
+  a[0] * b[1] - a[1] * b[0],
+];
 export const length = (/** @type {Vec3} */ a) => Math.hypot(a[0], a[1], a[2]);
 export const normalize = (/** @type {Vec3} */ a) => scale(a, 1 / (length(a) || 1));
 

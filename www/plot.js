@@ -5,11 +5,11 @@
 
 import { parseRich } from './ui/richtext.js';
 import { superscript } from './i18n/index.js';
+import { svgMaker, svgFigure } from './svg-dom.js';
 
 /** The least size of any text in a figure, subscripts included, in user units (= CSS px at 1:1). */
 export const SMALLEST_TEXT = 12.5;
 
-const SVG = 'http://www.w3.org/2000/svg';
 const SERIES = [
   { color: '#d55e00', marker: 'circle', dash: '' },
   { color: '#0072b2', marker: 'square', dash: '6 3' },
@@ -37,25 +37,25 @@ const SERIES = [
  * @param {PlotSpec} spec
  * @returns {SVGSVGElement}
  */
-export function logLogPlot(doc, { x, series, slopes = [], xLabel, yLabel, title, slopeLabel, width = 340, height = 280 }) {
-  const el = (/** @type {string} */ tag, /** @type {Record<string, string | number>} */ attrs = {}, /** @type {string} */ text = '') => {
-    const e = doc.createElementNS(SVG, tag);
-    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
-    if (text) e.textContent = text;
-    return e;
-  };
-  const svg = /** @type {SVGSVGElement} */ (el('svg', { xmlns: SVG, version: '1.1', viewBox: `0 0 ${width} ${height}`, width, height, 'font-family': 'Helvetica, Arial, sans-serif', 'font-size': 13.5, role: 'img' }));
-  svg.setAttribute('aria-label', title);
-  svg.append(el('title', {}, title), el('rect', { x: 0, y: 0, width, height, fill: '#fbfaf7' }));
+export function logLogPlot(
+  doc,
+  { x, series, slopes = [], xLabel, yLabel, title, slopeLabel, width = 340, height = 280 },
+) {
+  const el = svgMaker(doc);
+  const svg = svgFigure(el, { width, height, title });
   const pad = { l: 52, r: 12, t: 12, b: 42 };
   const finite = (/** @type {number} */ v) => Number.isFinite(v) && v > 0;
   const ys = series.flatMap((s) => s.y.filter(finite));
   const xs = x.filter(finite);
   if (!ys.length || !xs.length) return svg;
-  const x0 = Math.floor(Math.log10(Math.min(...xs))), x1 = Math.ceil(Math.log10(Math.max(...xs)));
-  const y0 = Math.floor(Math.log10(Math.min(...ys))), y1 = Math.ceil(Math.log10(Math.max(...ys)));
-  const px = (/** @type {number} */ v) => pad.l + ((Math.log10(v) - x0) / Math.max(x1 - x0, 1)) * (width - pad.l - pad.r);
-  const py = (/** @type {number} */ v) => height - pad.b - ((Math.log10(v) - y0) / Math.max(y1 - y0, 1)) * (height - pad.t - pad.b);
+  const x0 = Math.floor(Math.log10(Math.min(...xs))),
+    x1 = Math.ceil(Math.log10(Math.max(...xs)));
+  const y0 = Math.floor(Math.log10(Math.min(...ys))),
+    y1 = Math.ceil(Math.log10(Math.max(...ys)));
+  const px = (/** @type {number} */ v) =>
+    pad.l + ((Math.log10(v) - x0) / Math.max(x1 - x0, 1)) * (width - pad.l - pad.r);
+  const py = (/** @type {number} */ v) =>
+    height - pad.b - ((Math.log10(v) - y0) / Math.max(y1 - y0, 1)) * (height - pad.t - pad.b);
   // 10⁻³ in one text with superscript digits: no text smaller than the rest
   const tick = (/** @type {number} */ e) => el('text', { 'font-size': SMALLEST_TEXT }, `10${superscript(e)}`);
   const grid = el('g', { stroke: '#dedbd2', 'stroke-width': 1 });
@@ -82,28 +82,71 @@ export function logLogPlot(doc, { x, series, slopes = [], xLabel, yLabel, title,
   const anchor = series[0].y.findIndex(finite);
   slopes.forEach((p, k) => {
     if (anchor < 0) return;
-    const xa = x[anchor], ya = series[0].y[anchor] * 2;
-    const xb = Math.min(...xs), yb = Math.max(ya * (xb / xa) ** p, 10 ** y0);
-    svg.append(el('line', { x1: px(xa), y1: py(ya), x2: px(xb), y2: py(yb), stroke: '#777', 'stroke-dasharray': '4 3', 'stroke-width': 1 }));
-    svg.append(el('text', { x: px(xb) + 4, y: py(yb) - 4 - 14 * k, fill: '#555', 'font-size': SMALLEST_TEXT }, slopeLabel(p)));
+    const xa = x[anchor],
+      ya = series[0].y[anchor] * 2;
+    const xb = Math.min(...xs),
+      yb = Math.max(ya * (xb / xa) ** p, 10 ** y0);
+    svg.append(
+      el('line', {
+        x1: px(xa),
+        y1: py(ya),
+        x2: px(xb),
+        y2: py(yb),
+        stroke: '#777',
+        'stroke-dasharray': '4 3',
+        'stroke-width': 1,
+      }),
+    );
+    svg.append(
+      el('text', { x: px(xb) + 4, y: py(yb) - 4 - 14 * k, fill: '#555', 'font-size': SMALLEST_TEXT }, slopeLabel(p)),
+    );
   });
   series.forEach((s, k) => {
     const look = SERIES[k % SERIES.length];
     const pts = x.map((xv, i) => [xv, s.y[i]]).filter(([, yv]) => finite(yv));
     const g = el('g', { stroke: look.color, fill: look.color });
-    g.append(el('polyline', { fill: 'none', 'stroke-width': 2, 'stroke-dasharray': look.dash || 'none', points: pts.map(([a, b]) => `${px(a).toFixed(2)},${py(b).toFixed(2)}`).join(' ') }));
+    g.append(
+      el('polyline', {
+        fill: 'none',
+        'stroke-width': 2,
+        'stroke-dasharray': look.dash || 'none',
+        points: pts.map(([a, b]) => `${px(a).toFixed(2)},${py(b).toFixed(2)}`).join(' '),
+      }),
+    );
     for (const [a, b] of pts) g.append(marker(el, look.marker, px(a), py(b), 3));
     svg.append(g);
     const ly = pad.t + 14 + 17 * k;
     const key = el('g', {});
-    key.append(el('line', { x1: pad.l + 8, x2: pad.l + 26, y1: ly - 4, y2: ly - 4, stroke: look.color, 'stroke-width': 2, 'stroke-dasharray': look.dash || 'none' }));
+    key.append(
+      el('line', {
+        x1: pad.l + 8,
+        x2: pad.l + 26,
+        y1: ly - 4,
+        y2: ly - 4,
+        stroke: look.color,
+        'stroke-width': 2,
+        'stroke-dasharray': look.dash || 'none',
+      }),
+    );
     const m = marker(el, look.marker, pad.l + 17, ly - 4, 3);
     m.setAttribute('fill', look.color);
     key.append(m, richSvgText(el, doc, s.name, { x: pad.l + 31, y: ly, fill: '#222' }));
     svg.append(key);
   });
   svg.append(el('text', { x: (width + pad.l) / 2, y: height - 6, 'text-anchor': 'middle', fill: '#222' }, xLabel));
-  svg.append(el('text', { x: 12, y: (height - pad.b) / 2, transform: `rotate(-90 12 ${(height - pad.b) / 2})`, 'text-anchor': 'middle', fill: '#222' }, yLabel));
+  svg.append(
+    el(
+      'text',
+      {
+        x: 12,
+        y: (height - pad.b) / 2,
+        transform: `rotate(-90 12 ${(height - pad.b) / 2})`,
+        'text-anchor': 'middle',
+        fill: '#222',
+      },
+      yLabel,
+    ),
+  );
   return svg;
 }
 
@@ -128,9 +171,17 @@ export function richSvgText(el, doc, label, attrs) {
 }
 
 /** A marker shape centred at (x, y) (shared with the stencil picture). */
-export function marker(/** @type {(tag: string, attrs?: Record<string, string | number>) => Element} */ el, /** @type {string} */ kind, /** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ r) {
+export function marker(
+  /** @type {(tag: string, attrs?: Record<string, string | number>) => Element} */ el,
+  /** @type {string} */ kind,
+  /** @type {number} */ x,
+  /** @type {number} */ y,
+  /** @type {number} */ r,
+) {
   if (kind === 'square') return el('rect', { x: x - r, y: y - r, width: 2 * r, height: 2 * r });
-  if (kind === 'triangle') return el('polygon', { points: `${x},${y - r * 1.2} ${x - r * 1.1},${y + r * 0.8} ${x + r * 1.1},${y + r * 0.8}` });
-  if (kind === 'diamond') return el('polygon', { points: `${x},${y - r * 1.3} ${x + r * 1.1},${y} ${x},${y + r * 1.3} ${x - r * 1.1},${y}` });
+  if (kind === 'triangle')
+    return el('polygon', { points: `${x},${y - r * 1.2} ${x - r * 1.1},${y + r * 0.8} ${x + r * 1.1},${y + r * 0.8}` });
+  if (kind === 'diamond')
+    return el('polygon', { points: `${x},${y - r * 1.3} ${x + r * 1.1},${y} ${x},${y + r * 1.3} ${x - r * 1.1},${y}` });
   return el('circle', { cx: x, cy: y, r });
 }

@@ -164,7 +164,7 @@ export class RuledView extends HTMLElement {
   }
   /** The camera as the attribute writes it ("yaw,pitch,distance,x,y,z"); the current one once shown. */
   get camera() {
-    return this.stage?.scene ? writeCamera(this.stage.viewer.camera.toArray()) : this.getAttribute('camera') ?? '';
+    return this.stage?.scene ? writeCamera(this.stage.viewer.camera.toArray()) : (this.getAttribute('camera') ?? '');
   }
   set camera(value) {
     this.setAttribute('camera', String(value));
@@ -196,7 +196,11 @@ export class RuledView extends HTMLElement {
       this.container.replaceChildren(box);
       const i18n = translator(pickLanguage(lang));
       showFailure(box, e, i18n);
-      this.dispatchEvent(new CustomEvent('error', { detail: { message: startFailure(e, i18n).text, code: /** @type {any} */ (e)?.code ?? null, details: null } }));
+      this.dispatchEvent(
+        new CustomEvent('error', {
+          detail: { message: startFailure(e, i18n).text, code: /** @type {any} */ (e)?.code ?? null, details: null },
+        }),
+      );
     }
   }
 
@@ -211,17 +215,26 @@ export class RuledView extends HTMLElement {
           const { yaw, pitch, distance, target } = this.stage.viewer.camera;
           const view = { yaw, pitch, distance, target: [...target] };
           this.dispatchEvent(new CustomEvent('view-change', { detail: view }));
-          if (ended) this.dispatchEvent(new CustomEvent('camera-change', { detail: { camera: writeCamera(this.stage.viewer.camera.toArray()), ...view } }));
+          if (ended)
+            this.dispatchEvent(
+              new CustomEvent('camera-change', {
+                detail: { camera: writeCamera(this.stage.viewer.camera.toArray()), ...view },
+              }),
+            );
         }
       },
       onBuilt: () => {
         if (!this.stage?.scene) return;
         this.dataset.ready = '1';
-        this.dispatchEvent(new CustomEvent('scene-change', { detail: { scene: this.stage.scene.id, params: { ...this.stage.params } } }));
+        this.dispatchEvent(
+          new CustomEvent('scene-change', { detail: { scene: this.stage.scene.id, params: { ...this.stage.params } } }),
+        );
       },
       onError: (e, message) => {
         const error = /** @type {any} */ (e);
-        this.dispatchEvent(new CustomEvent('error', { detail: { message, code: error?.code ?? null, details: error?.details ?? null } }));
+        this.dispatchEvent(
+          new CustomEvent('error', { detail: { message, code: error?.code ?? null, details: error?.details ?? null } }),
+        );
       },
     });
     this.stage.viewer.onFrame = (n) => (this.dataset.frames = String(n));
@@ -269,12 +282,22 @@ export class RuledView extends HTMLElement {
           const { t } = stage.i18n;
           const scene = SCENES.find((s) => s.id === this.scene);
           if (!scene) {
-            stage.fail(Object.assign(new Error(t('element.unknownScene', { scene: this.scene, known: SCENES.map((s) => s.id).join(', ') })), { code: 'invalid-argument', details: { option: 'scene' }, localized: true }));
+            stage.fail(
+              Object.assign(
+                new Error(t('element.unknownScene', { scene: this.scene, known: SCENES.map((s) => s.id).join(', ') })),
+                { code: 'invalid-argument', details: { option: 'scene' }, localized: true },
+              ),
+            );
             return;
           }
           const preset = findPreset(this.paper);
           if (this.paper && !preset) {
-            stage.fail(Object.assign(new Error(t('element.unknownPaper', { paper: this.paper, known: PRESETS.map((p) => p.id).join(', ') })), { code: 'invalid-argument', details: { option: 'paper' }, localized: true }));
+            stage.fail(
+              Object.assign(
+                new Error(t('element.unknownPaper', { paper: this.paper, known: PRESETS.map((p) => p.id).join(', ') })),
+                { code: 'invalid-argument', details: { option: 'paper' }, localized: true },
+              ),
+            );
             return;
           }
           const paper = preset && preset.scene === scene.id ? preset : null;
@@ -282,11 +305,20 @@ export class RuledView extends HTMLElement {
           const { params, notes } = readParams(scene, paper ? withPreset(paper, scene, query) : query);
           const camera = readCamera(this.getAttribute('camera') ?? '');
           if (this.hasAttribute('camera') && !camera) notes.push({ key: 'camera', note: 'element.badCamera' });
-          return stage.open(scene, { ...defaults(scene), ...params }, { data: this._data, notes, autoplay: this.autoplay, paper, camera });
+          return stage.open(
+            scene,
+            { ...defaults(scene), ...params },
+            { data: this._data, notes, autoplay: this.autoplay, paper, camera },
+          );
         },
         (e) => {
           // the core did not start: why, in the element's language
-          stage.fail(Object.assign(new Error(startFailure(e, stage.i18n).text), { code: /** @type {any} */ (e)?.code, localized: true }));
+          stage.fail(
+            Object.assign(new Error(startFailure(e, stage.i18n).text), {
+              code: /** @type {any} */ (e)?.code,
+              localized: true,
+            }),
+          );
         },
       )
       .catch(() => {});
@@ -316,7 +348,8 @@ export class RuledView extends HTMLElement {
 
   /** The current view as a PNG at `scale` (1, 2 or 4) × its size, labels and legend drawn in. */
   exportPNG(/** @type {{scale?: number, legend?: boolean}} */ options = {}) {
-    if (!this.stage) return Promise.reject(Object.assign(new Error('ruled-view: not connected'), { code: 'invalid-argument' }));
+    if (!this.stage)
+      return Promise.reject(Object.assign(new Error('ruled-view: not connected'), { code: 'invalid-argument' }));
     return png(this.stage, options);
   }
 }

@@ -126,7 +126,19 @@
  */
 
 /** Hash keys the page itself uses: no scene parameter may take them. */
-export const RESERVED_KEYS = Object.freeze(['scene', 'cam', 'embed', 'controls', 'text', 'lang', 'autoplay', 'data', 'note', 'view', 'paper']);
+export const RESERVED_KEYS = Object.freeze([
+  'scene',
+  'cam',
+  'embed',
+  'controls',
+  'text',
+  'lang',
+  'autoplay',
+  'data',
+  'note',
+  'view',
+  'paper',
+]);
 
 /** Longest text parameter (a formula), in characters. */
 export const MAX_TEXT_PARAM = 1000;
@@ -141,11 +153,13 @@ export const MAX_TEXT_PARAM = 1000;
 export function defineScene(scene) {
   const seen = new Set();
   for (const p of scene.params) {
-    if (RESERVED_KEYS.includes(p.key)) throw new Error(`scene ${scene.id}: parameter key "${p.key}" is reserved for the page`);
+    if (RESERVED_KEYS.includes(p.key))
+      throw new Error(`scene ${scene.id}: parameter key "${p.key}" is reserved for the page`);
     if (seen.has(p.key)) throw new Error(`scene ${scene.id}: parameter key "${p.key}" appears twice`);
     seen.add(p.key);
     // (a select's choices may come from the core, which is not started yet: the tests check those)
-    if (p.type !== 'select' && readValue(p, serialize(p, p.value)).note) throw new Error(`scene ${scene.id}: the default of "${p.key}" is not valid`);
+    if (p.type !== 'select' && readValue(p, serialize(p, p.value)).note)
+      throw new Error(`scene ${scene.id}: the default of "${p.key}" is not valid`);
   }
   return scene;
 }
@@ -184,7 +198,8 @@ export function readValue(p, raw) {
   if (p.type === 'range') {
     const x = parseNumber(raw);
     if (!Number.isFinite(x)) return { value: p.value, note: 'note.notNumber' };
-    const min = /** @type {number} */ (p.min), max = /** @type {number} */ (p.max);
+    const min = /** @type {number} */ (p.min),
+      max = /** @type {number} */ (p.max);
     if (x < min || x > max) return { value: Math.min(max, Math.max(min, x)), note: 'note.clamped' };
     return { value: x };
   }
@@ -249,24 +264,8 @@ export function scoped(body) {
   }
 }
 
-/**
- * Bounding box {min, max} of flat xyz arrays (NaN skipped).
- * @param {...ArrayLike<number>} arrays
- */
-export function bounds(...arrays) {
-  const min = [Infinity, Infinity, Infinity];
-  const max = [-Infinity, -Infinity, -Infinity];
-  for (const data of arrays) {
-    for (let i = 0; i + 2 < data.length; i += 3) {
-      for (let k = 0; k < 3; k++) {
-        const v = data[i + k];
-        if (v < min[k]) min[k] = v;
-        if (v > max[k]) max[k] = v;
-      }
-    }
-  }
-  return { min, max };
-}
+/** Bounding box {min, max} of flat xyz arrays (NaN skipped): math.js's, for scenes. */
+export { bounds } from './math.js';
 
 /** A Float32Array copy of any numbers (no copy when already f32). */
 export function f32(/** @type {ArrayLike<number>} */ data) {

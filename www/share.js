@@ -39,7 +39,8 @@ export const EMBED_FILE = 'ruledlab-embed.js';
  */
 export function shareDialog(dialog, context) {
   const doc = dialog.ownerDocument;
-  const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) => Object.assign(doc.createElement(tag), props);
+  const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
+    Object.assign(doc.createElement(tag), props);
   /** The URL of this site's one-file embed script, or null (checked once, when the dialog first opens). */
   let embedServed = /** @type {Promise<string | null> | null} */ (null);
 
@@ -59,7 +60,10 @@ export function shareDialog(dialog, context) {
     if (!oneFile && where.address) {
       embedServed ??= fetch(MANIFEST)
         .then((r) => (r.ok ? r.json() : null))
-        .then((m) => (typeof m?.embed === 'string' ? new URL(m.embed, MANIFEST).href : null), () => null);
+        .then(
+          (m) => (typeof m?.embed === 'string' ? new URL(m.embed, MANIFEST).href : null),
+          () => null,
+        );
       const embed = await embedServed;
       if (embed) {
         script = { src: embed };
@@ -75,12 +79,34 @@ export function shareDialog(dialog, context) {
       rows.push(field('share.link', 'share-link', `${base}#${hash}`));
       rows.push(field('share.iframe', 'share-iframe', iframeSnippet(base, hash, title)));
     } else {
-      rows.push(el('p', { className: 'share-nowhere', id: 'share-nowhere', textContent: t(where.file ? 'share.fromFile' : 'share.noAddress') }));
+      rows.push(
+        el('p', {
+          className: 'share-nowhere',
+          id: 'share-nowhere',
+          textContent: t(where.file ? 'share.fromFile' : 'share.noAddress'),
+        }),
+      );
     }
-    const element = field('share.element', 'share-element', elementSnippet(/** @type {import('./scene.js').Scene} */ (stage.scene), stage.params, state.lang ?? context.i18n().lang, script, stage.paper, state.camera), scriptNote);
+    const element = field(
+      'share.element',
+      'share-element',
+      elementSnippet(
+        /** @type {import('./scene.js').Scene} */ (stage.scene),
+        stage.params,
+        state.lang ?? context.i18n().lang,
+        script,
+        stage.paper,
+        state.camera,
+      ),
+      scriptNote,
+    );
     rows.push(element);
     if (script.src === EMBED_FILE) {
-      const embed = el('button', { type: 'button', id: 'share-embed', textContent: t('share.embedDownload', { file: EMBED_FILE }) });
+      const embed = el('button', {
+        type: 'button',
+        id: 'share-embed',
+        textContent: t('share.embedDownload', { file: EMBED_FILE }),
+      });
       const embedNote = el('p', { className: 'share-note', hidden: true });
       embed.addEventListener('click', () => {
         const text = context.embedScript?.();
@@ -96,7 +122,11 @@ export function shareDialog(dialog, context) {
     const onefileNote = el('p', { className: 'share-note', hidden: true });
     onefile.addEventListener('click', async () => {
       try {
-        download(`ruledlab-${stage.paper?.id ?? stage.scene?.id ?? 'view'}.html`, await oneFileWithState(oneFile, hash), 'text/html');
+        download(
+          `ruledlab-${stage.paper?.id ?? stage.scene?.id ?? 'view'}.html`,
+          await oneFileWithState(oneFile, hash),
+          'text/html',
+        );
       } catch {
         onefileNote.hidden = false;
         onefileNote.textContent = t('app.onefileMissing');
@@ -113,7 +143,9 @@ export function shareDialog(dialog, context) {
       ...rows,
       onefileRow,
       // a framed page cannot tell whether the page around it allows downloads: say what to do if not
-      ...(where.framed ? [el('p', { className: 'share-note', id: 'share-framed', textContent: t('share.framed') })] : []),
+      ...(where.framed
+        ? [el('p', { className: 'share-note', id: 'share-framed', textContent: t('share.framed') })]
+        : []),
       close,
     );
     dialog.dataset.ready = '1';
@@ -183,10 +215,14 @@ export function elementSnippet(scene, params, lang, script, paper = null, camera
   /** @type {import('./scene.js').Params} */
   const base = { ...defaults(scene), ...(paper?.params ?? {}) };
   const q = new URLSearchParams();
-  for (const p of scene.params) if (params[p.key] !== base[p.key]) q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : String(params[p.key]));
+  for (const p of scene.params)
+    if (params[p.key] !== base[p.key])
+      q.set(p.key, p.type === 'checkbox' ? (params[p.key] ? '1' : '0') : String(params[p.key]));
   const figure = paper ? ` paper="${attr(paper.id)}"` : '';
   const view = camera ? ` camera="${attr(camera.map((x) => Number(x.toPrecision(6))).join(','))}"` : '';
   // deferred: the course page is not held up while the script loads; the element upgrades then
-  const tag = script.module ? `<script type="module" src="${attr(script.src)}"></script>` : `<script defer src="${attr(script.src)}"></script>`;
+  const tag = script.module
+    ? `<script type="module" src="${attr(script.src)}"></script>`
+    : `<script defer src="${attr(script.src)}"></script>`;
   return `${tag}\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}"${view} lang="${attr(lang)}" controls style="display: block; height: 560px; max-width: 100%"></ruled-view>`;
 }

@@ -17,14 +17,7 @@ import { appendRich, plainRich } from './ui/richtext.js';
 import { refineInWorker } from './compute.js';
 import { atPreset } from './paper.js';
 import { canFullscreen } from './platform.js';
-
-/** Below this width (CSS px) the panel goes under the view (and, for a box taller than wide, below PORTRAIT). */
-const NARROW = 640;
-const PORTRAIT = 1000;
-/** Below this width the controls' labels go above them. */
-const TINY = 360;
-/** Below this width of the view, the mouse hint is left out (the toolbar needs the room). */
-const SMALL_VIEW = 560;
+import { NARROW, PORTRAIT, TINY, SMALL_VIEW } from './limits.js';
 
 /** Least time between two announcements of the readout (ms). */
 const ANNOUNCE_EVERY = 1000;
@@ -56,7 +49,8 @@ export class Stage {
     this.i18n = translator(pickLanguage(options.lang));
     const id = `rl-stage-${++serial}`;
     const doc = host.ownerDocument;
-    const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) => Object.assign(doc.createElement(tag), props);
+    const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
+      Object.assign(doc.createElement(tag), props);
 
     /** @internal */
     this.root = el('div', { className: options.page ? 'rl-stage rl-page' : 'rl-stage' });
@@ -96,7 +90,17 @@ export class Stage {
     /** @internal */
     this.bar = el('div', { className: 'rl-bar' });
     this.bar.append(this.hint, this.toolbar);
-    this.view.append(this.canvas, this.labels, this.legend, this.bar, this.progress, this.noteBox, this.error, this.description, this.status);
+    this.view.append(
+      this.canvas,
+      this.labels,
+      this.legend,
+      this.bar,
+      this.progress,
+      this.noteBox,
+      this.error,
+      this.description,
+      this.status,
+    );
 
     /** @internal */
     this.buttons = {
@@ -132,7 +136,19 @@ export class Stage {
     this.downloads = el('div', { className: 'rl-downloads' });
     /** @internal */
     this.text = el('article', { className: 'rl-text' });
-    this.panel.append(this.heading, this.paperCard, this.form, this.player, this.readout, this.claims, this.note, this.caption, this.figure, this.downloads, this.text);
+    this.panel.append(
+      this.heading,
+      this.paperCard,
+      this.form,
+      this.player,
+      this.readout,
+      this.claims,
+      this.note,
+      this.caption,
+      this.figure,
+      this.downloads,
+      this.text,
+    );
     this.root.append(this.view, this.panel);
     /** @internal */
     this.shortcuts = /** @type {HTMLDialogElement} */ (el('dialog', { className: 'rl-shortcuts' }));
@@ -148,7 +164,10 @@ export class Stage {
       if (!view.height) return { top: 0, bottom: 0 };
       const legend = this.legend.hidden ? null : this.legend.getBoundingClientRect();
       const bar = this.toolbar.getBoundingClientRect();
-      return { top: legend ? Math.max(0, legend.bottom - view.top) / view.height : 0, bottom: Math.max(0, view.bottom - bar.top) / view.height };
+      return {
+        top: legend ? Math.max(0, legend.bottom - view.top) / view.height : 0,
+        bottom: Math.max(0, view.bottom - bar.top) / view.height,
+      };
     };
     /** @internal */
     this.session = new SceneSession(this.viewer, {
@@ -160,7 +179,9 @@ export class Stage {
       },
     });
     /** @internal */
-    this.playerControl = new Player((key, value) => this.setParam(key, Number(value.toFixed(Player.stepped(this.param(key)) ? 0 : 4)), false));
+    this.playerControl = new Player((key, value) =>
+      this.setParam(key, Number(value.toFixed(Player.stepped(this.param(key)) ? 0 : 4)), false),
+    );
     /** @type {import('./scene.js').Scene | null} */
     this.scene = null;
     /** @type {import('./scene.js').Params} */
@@ -348,7 +369,13 @@ export class Stage {
   /** @internal Recomputes the scene for the current parameters. */
   compute({ fit = false } = {}) {
     if (!this.scene) return;
-    const context = { t: this.i18n.t, format: this.i18n.format, lang: this.i18n.lang, data: this.data ?? undefined, refine: refineInWorker };
+    const context = {
+      t: this.i18n.t,
+      format: this.i18n.format,
+      lang: this.i18n.lang,
+      data: this.data ?? undefined,
+      refine: refineInWorker,
+    };
     const built = this.session.show(this.scene, this.params, context, { fit });
     this.root.classList.toggle('rl-stale', !built);
     if (built) this.error.hidden = true;
@@ -367,7 +394,8 @@ export class Stage {
     if (!preset || !this.scene) return card.replaceChildren();
     const { t } = this.i18n;
     const doc = this.root.ownerDocument;
-    const el = (/** @type {string} */ tag, /** @type {string} */ className, /** @type {string} */ text) => appendRich(Object.assign(doc.createElement(tag), { className }), text);
+    const el = (/** @type {string} */ tag, /** @type {string} */ className, /** @type {string} */ text) =>
+      appendRich(Object.assign(doc.createElement(tag), { className }), text);
     const heading = el('h3', 'rl-paper-title', t('paper.heading', { figure: t(preset.label) }));
     heading.id = `${card.id}-title`;
     card.setAttribute('aria-labelledby', heading.id);
@@ -393,7 +421,10 @@ export class Stage {
     }
     if (!atPreset(preset, this.scene, this.params)) {
       const changed = el('p', 'rl-paper-changed', `${t('paper.changed')} `);
-      const back = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('paper.back', { figure: t(preset.label) }) });
+      const back = Object.assign(doc.createElement('button'), {
+        type: 'button',
+        textContent: t('paper.back', { figure: t(preset.label) }),
+      });
       back.addEventListener('click', () => {
         if (!this.scene) return;
         this.stopPlaying();
@@ -426,8 +457,13 @@ export class Stage {
     this.figure.replaceChildren(...(built.figure ? [built.figure()] : []));
     this.downloads.replaceChildren(
       ...(built.downloads ?? []).map((d) => {
-        const b = Object.assign(this.root.ownerDocument.createElement('button'), { type: 'button', textContent: t(d.label) });
-        b.addEventListener('click', () => download(d.filename, typeof d.content === 'function' ? d.content() : d.content, d.type));
+        const b = Object.assign(this.root.ownerDocument.createElement('button'), {
+          type: 'button',
+          textContent: t(d.label),
+        });
+        b.addEventListener('click', () =>
+          download(d.filename, typeof d.content === 'function' ? d.content() : d.content, d.type),
+        );
         return b;
       }),
     );
@@ -448,11 +484,14 @@ export class Stage {
     const error = /** @type {any} */ (e);
     const option = error?.details?.option;
     // the field it concerns: of the scene's candidates, the one the reader changed last
-    const candidates = [this.scene && option ? this.scene.fieldOf?.(option) : null].flat().filter((k) => typeof k === 'string');
-    const key = candidates.includes(this.lastChanged ?? '') ? this.lastChanged : candidates[0] ?? null;
+    const candidates = [this.scene && option ? this.scene.fieldOf?.(option) : null]
+      .flat()
+      .filter((k) => typeof k === 'string');
+    const key = candidates.includes(this.lastChanged ?? '') ? this.lastChanged : (candidates[0] ?? null);
     // named as the page names it: the option's own name ("the interval of u"), else the field's
     const { t, has } = this.i18n;
-    const name = option && has(`error.option.${option}`) ? t(`error.option.${option}`) : key ? this.fieldName(key) : undefined;
+    const name =
+      option && has(`error.option.${option}`) ? t(`error.option.${option}`) : key ? this.fieldName(key) : undefined;
     const message = describeError(e, this.i18n, name);
     this.error.hidden = false;
     // beside its field the whole sentence; over the view (small on a phone) where to look
@@ -501,7 +540,8 @@ export class Stage {
     if (!playable.length) return;
     const speedLabel = Object.assign(doc.createElement('label'), { textContent: t('player.speed') });
     const speed = doc.createElement('select');
-    for (const s of [0.25, 0.5, 1, 2, 4]) speed.add(new Option(`${this.i18n.lang === 'de' ? String(s).replace('.', ',') : s}×`, String(s)));
+    for (const s of [0.25, 0.5, 1, 2, 4])
+      speed.add(new Option(`${this.i18n.lang === 'de' ? String(s).replace('.', ',') : s}×`, String(s)));
     speed.value = String(this.playerControl.speed);
     speed.addEventListener('change', () => (this.playerControl.speed = Number(speed.value)));
     speedLabel.append(' ', speed);
@@ -565,7 +605,8 @@ export class Stage {
       this.reset();
     } else if (target === this.canvas && e.key === ' ') {
       e.preventDefault();
-      const key = this.playerControl.param?.key ?? this.scene?.params.find((p) => p.play && !p.unless?.(this.params))?.key;
+      const key =
+        this.playerControl.param?.key ?? this.scene?.params.find((p) => p.play && !p.unless?.(this.params))?.key;
       if (key) this.togglePlay(key);
     } else if (target === this.canvas && e.key === '.') {
       e.preventDefault();
@@ -588,10 +629,26 @@ export class Stage {
       return tab;
     };
     const keys = table([
-      ['←  →  ↑  ↓', 'keys.orbit'], ['Shift + ←  →  ↑  ↓', 'keys.pan'], ['+  −', 'keys.zoom'], ['F', 'keys.fit'],
-      ['R', 'keys.reset'], ['Space', 'keys.play'], ['.', 'keys.step'], ['Tab', 'keys.tab'], ['?', 'keys.help'], ['Esc', 'keys.close'],
+      ['←  →  ↑  ↓', 'keys.orbit'],
+      ['Shift + ←  →  ↑  ↓', 'keys.pan'],
+      ['+  −', 'keys.zoom'],
+      ['F', 'keys.fit'],
+      ['R', 'keys.reset'],
+      ['Space', 'keys.play'],
+      ['.', 'keys.step'],
+      ['Tab', 'keys.tab'],
+      ['?', 'keys.help'],
+      ['Esc', 'keys.close'],
     ]);
-    const touch = table([['touch.one', 'touch.oneWhat'], ['touch.two', 'touch.twoWhat'], ['touch.pinch', 'touch.pinchWhat'], ['touch.fit', 'touch.fitWhat']], false);
+    const touch = table(
+      [
+        ['touch.one', 'touch.oneWhat'],
+        ['touch.two', 'touch.twoWhat'],
+        ['touch.pinch', 'touch.pinchWhat'],
+        ['touch.fit', 'touch.fitWhat'],
+      ],
+      false,
+    );
     touch.className = 'rl-gestures';
     const close = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('keys.closeButton') });
     close.addEventListener('click', () => this.shortcuts.close());

@@ -99,7 +99,9 @@ export function writeState(state) {
  * @returns {number[] | null}
  */
 export function readCamera(text) {
-  const camera = String(text).split(',').map((x) => (x.trim() === '' ? NaN : Number(x)));
+  const camera = String(text)
+    .split(',')
+    .map((x) => (x.trim() === '' ? NaN : Number(x)));
   return camera.length === 6 && camera.every(Number.isFinite) && camera[2] > 0 ? camera : null;
 }
 

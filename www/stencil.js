@@ -4,8 +4,7 @@
 // with the DOM (like the convergence plot), so it is shown beside the view and saved as a file.
 // Weights differ by marker shape and label as well as colour.
 import { richSvgText, marker, SMALLEST_TEXT } from './plot.js';
-
-const SVG = 'http://www.w3.org/2000/svg';
+import { svgMaker, svgFigure } from './svg-dom.js';
 
 /** The stencil of (16): grid offsets (di, dj) from p_{i,j} and the weight of each. */
 export const BUTTERFLY_STENCIL = /** @type {const} */ ([
@@ -28,7 +27,8 @@ const LOOK = {
 
 /** The subscript of p at offset (di, dj) from (i, j): "i+1,j−1". */
 function index(/** @type {number} */ di, /** @type {number} */ dj) {
-  const part = (/** @type {string} */ name, /** @type {number} */ d) => (d === 0 ? name : `${name}${d > 0 ? '+' : '−'}${Math.abs(d)}`);
+  const part = (/** @type {string} */ name, /** @type {number} */ d) =>
+    d === 0 ? name : `${name}${d > 0 ? '+' : '−'}${Math.abs(d)}`;
   return `${part('i', di)},${part('j', dj)}`;
 }
 
@@ -40,16 +40,10 @@ function index(/** @type {number} */ di, /** @type {number} */ dj) {
  * @returns {SVGSVGElement}
  */
 export function butterflyStencil(doc, { title, weights }) {
-  const el = (/** @type {string} */ tag, /** @type {Record<string, string | number>} */ attrs = {}, /** @type {string} */ text = '') => {
-    const e = doc.createElementNS(SVG, tag);
-    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
-    if (text) e.textContent = text;
-    return e;
-  };
-  const width = 340, height = 372;
-  const svg = /** @type {SVGSVGElement} */ (el('svg', { xmlns: SVG, version: '1.1', viewBox: `0 0 ${width} ${height}`, width, height, 'font-family': 'Helvetica, Arial, sans-serif', 'font-size': 13.5, role: 'img' }));
-  svg.setAttribute('aria-label', title);
-  svg.append(el('title', {}, title), el('rect', { x: 0, y: 0, width, height, fill: '#fbfaf7' }));
+  const el = svgMaker(doc);
+  const width = 340,
+    height = 372;
+  const svg = svgFigure(el, { width, height, title });
   // grid indices i (right) and j (up) from −1 to 2 around p_{i,j}
   const step = 60;
   const px = (/** @type {number} */ di) => 56 + (di + 1) * step;
@@ -57,10 +51,16 @@ export function butterflyStencil(doc, { title, weights }) {
   const range = [-1, 0, 1, 2];
   const lines = el('g', { stroke: '#b9b5aa', 'stroke-width': 1 });
   for (const a of range) {
-    lines.append(el('line', { x1: px(-1), y1: py(a), x2: px(2), y2: py(a) }), el('line', { x1: px(a), y1: py(-1), x2: px(a), y2: py(2) }));
+    lines.append(
+      el('line', { x1: px(-1), y1: py(a), x2: px(2), y2: py(a) }),
+      el('line', { x1: px(a), y1: py(-1), x2: px(a), y2: py(2) }),
+    );
   }
   // the triangulation by the diagonals p_{i,j} p_{i+1,j+1}
-  for (const a of range) for (const b of range) if (a < 2 && b < 2) lines.append(el('line', { x1: px(a), y1: py(b), x2: px(a + 1), y2: py(b + 1), 'stroke-dasharray': '3 3' }));
+  for (const a of range)
+    for (const b of range)
+      if (a < 2 && b < 2)
+        lines.append(el('line', { x1: px(a), y1: py(b), x2: px(a + 1), y2: py(b + 1), 'stroke-dasharray': '3 3' }));
   svg.append(lines);
   svg.append(el('line', { x1: px(0), y1: py(0), x2: px(1), y2: py(1), stroke: '#1d2435', 'stroke-width': 3 }));
   const dots = el('g', { fill: '#8a8f99' });
@@ -74,7 +74,14 @@ export function butterflyStencil(doc, { title, weights }) {
     m.setAttribute('stroke', '#1d2435');
     svg.append(m);
     svg.append(el('text', { x: x + 9, y: y - 7, 'font-weight': 700, fill: '#1d2435' }, look.text));
-    svg.append(richSvgText(el, doc, `p_{${index(at[0], at[1])}}`, { x: x + 8, y: y + 15, fill: '#535c70', 'font-size': SMALLEST_TEXT }));
+    svg.append(
+      richSvgText(el, doc, `p_{${index(at[0], at[1])}}`, {
+        x: x + 8,
+        y: y + 15,
+        fill: '#535c70',
+        'font-size': SMALLEST_TEXT,
+      }),
+    );
   }
   // the new point on the diagonal
   const [mx, my] = [(px(0) + px(1)) / 2, (py(0) + py(1)) / 2];
@@ -84,7 +91,13 @@ export function butterflyStencil(doc, { title, weights }) {
   const f = 268;
   svg.append(richSvgText(el, doc, 'p̄_{i,j} = ½ (p_{i,j} + p_{i+1,j+1})', { x: 12, y: f }));
   svg.append(richSvgText(el, doc, '+ 2w (p_{i+1,j} + p_{i,j+1})', { x: 40, y: f + 20 }));
-  svg.append(richSvgText(el, doc, '− w (p_{i,j−1} + p_{i−1,j} + p_{i+1,j+2} + p_{i+2,j+1})', { x: 40, y: f + 40, 'font-size': 13 }));
+  svg.append(
+    richSvgText(el, doc, '− w (p_{i,j−1} + p_{i−1,j} + p_{i+1,j+2} + p_{i+2,j+1})', {
+      x: 40,
+      y: f + 40,
+      'font-size': 13,
+    }),
+  );
   svg.append(el('text', { x: width - 12, y: f, 'text-anchor': 'end' }, '(16)'));
   svg.append(el('text', { x: 12, y: f + 66, fill: '#535c70', 'font-size': SMALLEST_TEXT }, weights));
   return svg;

@@ -44,11 +44,26 @@ export const PALETTE = {
 };
 
 /** @returns {LineStyle} */
-const line = (/** @type {string} */ color, /** @type {number} */ width, /** @type {LineStyle['bw']} */ bw, /** @type {{alpha?: number, dash?: number[]}} */ extra = {}) => ({ kind: 'line', color, width, bw, ...extra });
+const line = (
+  /** @type {string} */ color,
+  /** @type {number} */ width,
+  /** @type {LineStyle['bw']} */ bw,
+  /** @type {{alpha?: number, dash?: number[]}} */ extra = {},
+) => ({ kind: 'line', color, width, bw, ...extra });
 /** @returns {PointStyle} */
-const point = (/** @type {string} */ color, /** @type {number} */ size, /** @type {PointStyle['bw']} */ bw) => ({ kind: 'point', color, size, bw });
+const point = (/** @type {string} */ color, /** @type {number} */ size, /** @type {PointStyle['bw']} */ bw) => ({
+  kind: 'point',
+  color,
+  size,
+  bw,
+});
 /** @returns {AreaStyle} */
-const area = (/** @type {string} */ color, /** @type {string} */ back, /** @type {number} */ alpha, /** @type {AreaStyle['bw']} */ bw) => ({ kind: 'area', color, back, alpha, bw });
+const area = (
+  /** @type {string} */ color,
+  /** @type {string} */ back,
+  /** @type {number} */ alpha,
+  /** @type {AreaStyle['bw']} */ bw,
+) => ({ kind: 'area', color, back, alpha, bw });
 
 /** @type {Record<string, Style>} */
 export const STYLES = {
@@ -118,5 +133,5 @@ export function rgb(hex) {
  * @returns {number[]}
  */
 export function rgba(style) {
-  return [...rgb(style.color), style.kind === 'point' ? 1 : style.alpha ?? 1];
+  return [...rgb(style.color), style.kind === 'point' ? 1 : (style.alpha ?? 1)];
 }

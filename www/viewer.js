@@ -38,7 +38,14 @@ export function batch(gl, layer) {
     if (style.kind !== 'area') throw new Error(`style "${layer.style}" is not for meshes`);
     const front = [...rgb(style.color), style.alpha];
     const back = [...rgb(style.back), style.alpha];
-    return new TriangleMesh(gl, layer.positions, /** @type {Uint32Array} */ (layer.indices), { front, back }, transform, layer.normals);
+    return new TriangleMesh(
+      gl,
+      layer.positions,
+      /** @type {Uint32Array} */ (layer.indices),
+      { front, back },
+      transform,
+      layer.normals,
+    );
   }
   if (layer.kind === 'points') {
     if (style.kind !== 'point') throw new Error(`style "${layer.style}" is not for points`);
@@ -50,17 +57,25 @@ export function batch(gl, layer) {
 }
 
 /** How much two boxes overlap (0 none, 1 for boxes sharing about a label's area). */
-function overlap(/** @type {{x: number, y: number, w: number, h: number}} */ a, /** @type {{x: number, y: number, w: number, h: number}} */ b) {
+function overlap(
+  /** @type {{x: number, y: number, w: number, h: number}} */ a,
+  /** @type {{x: number, y: number, w: number, h: number}} */ b,
+) {
   const ox = Math.min(a.x + a.w, b.x + b.w) - Math.max(a.x, b.x);
   const oy = Math.min(a.y + a.h, b.y + b.h) - Math.max(a.y, b.y);
   return ox > 0 && oy > 0 ? (ox * oy) / Math.max(1, Math.min(a.w * a.h, b.w * b.h)) : 0;
 }
 
 /** The share of a screen segment p0 p1 that runs through a box (sampled at 12 points). */
-function crossing(/** @type {{x: number, y: number, w: number, h: number}} */ box, /** @type {{x: number, y: number}} */ p0, /** @type {{x: number, y: number}} */ p1) {
+function crossing(
+  /** @type {{x: number, y: number, w: number, h: number}} */ box,
+  /** @type {{x: number, y: number}} */ p0,
+  /** @type {{x: number, y: number}} */ p1,
+) {
   let inside = 0;
   for (let k = 0; k <= 12; k++) {
-    const x = p0.x + ((p1.x - p0.x) * k) / 12, y = p0.y + ((p1.y - p0.y) * k) / 12;
+    const x = p0.x + ((p1.x - p0.x) * k) / 12,
+      y = p0.y + ((p1.y - p0.y) * k) / 12;
     if (x > box.x - 2 && x < box.x + box.w + 2 && y > box.y - 2 && y < box.y + box.h + 2) inside++;
   }
   return inside / 13;
@@ -110,7 +125,10 @@ export class Viewer {
     /** @type {((ended: boolean) => void) | null} */
     this.onCameraChange = null;
     const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: false });
-    if (!gl) throw Object.assign(new Error('This page needs WebGL2, which this browser does not provide.'), { code: 'no-webgl2' });
+    if (!gl)
+      throw Object.assign(new Error('This page needs WebGL2, which this browser does not provide.'), {
+        code: 'no-webgl2',
+      });
     /** @internal */
     this.gl = gl;
     /** @internal */
@@ -170,10 +188,16 @@ export class Viewer {
   rebuild() {
     const gl = this.gl;
     this.labelLayer.replaceChildren(
-      ...(this.built?.labels ?? []).map(({ text }) => appendRich(Object.assign(document.createElement('span'), { className: 'rl-label' }), text)),
+      ...(this.built?.labels ?? []).map(({ text }) =>
+        appendRich(Object.assign(document.createElement('span'), { className: 'rl-label' }), text),
+      ),
     );
-    this.batches.forEach((b) => b.dispose(gl));
-    this.light.forEach((b) => b?.dispose(gl));
+    this.batches.forEach((b) => {
+      b.dispose(gl);
+    });
+    this.light.forEach((b) => {
+      b?.dispose(gl);
+    });
     this.batches = [];
     this.light = [];
     if (this.built && !this.lost && !this.disposed) {
@@ -295,16 +319,23 @@ export class Viewer {
       const a = project(at);
       el.hidden = !a.visible;
       if (!a.visible) return;
-      const bw = el.offsetWidth, bh = el.offsetHeight;
+      const bw = el.offsetWidth,
+        bh = el.offsetHeight;
       // candidate places: right above first, then around the anchor at growing distances
-      const sides = [[7, -bh - 2], [7, 3], [-bw - 7, -bh - 2], [-bw - 7, 3]];
+      const sides = [
+        [7, -bh - 2],
+        [7, 3],
+        [-bw - 7, -bh - 2],
+        [-bw - 7, 3],
+      ];
       for (const d of [14, 26, 42]) {
         for (let k = 0; k < 12; k++) {
           const angle = (Math.PI * 2 * k) / 12;
           sides.push([Math.cos(angle) * (d + bw / 2) - bw / 2, -Math.sin(angle) * (d + bh / 2) - bh / 2]);
         }
       }
-      let best = sides[0], bestCost = Infinity;
+      let best = sides[0],
+        bestCost = Infinity;
       sides.forEach(([dx, dy], rank) => {
         const box = { x: a.x + dx, y: a.y + dy, w: bw, h: bh };
         let cost = rank * 0.05;
@@ -323,8 +354,12 @@ export class Viewer {
   dispose() {
     if (this.disposed) return;
     const gl = this.gl;
-    this.batches.forEach((b) => b.dispose(gl));
-    this.light.forEach((b) => b?.dispose(gl));
+    this.batches.forEach((b) => {
+      b.dispose(gl);
+    });
+    this.light.forEach((b) => {
+      b?.dispose(gl);
+    });
     clearTimeout(this.restTimer);
     this.batches = [];
     this.light = [];

@@ -1,7 +1,6 @@
 // The development of a ruled strip (Section 2, Fig. 2) as a standalone SVG file, built with
 // the DOM and serialised, never from strings.
-
-const SVG = 'http://www.w3.org/2000/svg';
+import { SVG, svgMaker } from '../svg-dom.js';
 
 /**
  * A development (x, y of a'_i then b'_i per ruling) and the image of the striction polygon
@@ -13,7 +12,8 @@ const SVG = 'http://www.w3.org/2000/svg';
 export function developmentSvg(points, striction, title) {
   const doc = document.implementation.createDocument(SVG, 'svg', null);
   const svg = doc.documentElement;
-  const xs = [], ys = [];
+  const xs = [],
+    ys = [];
   for (let i = 0; i + 1 < points.length; i += 2) {
     xs.push(points[i]);
     ys.push(points[i + 1]);
@@ -22,18 +22,19 @@ export function developmentSvg(points, striction, title) {
   const s = 560 / Math.max(x1 - x0, y1 - y0, 1e-9);
   const X = (/** @type {number} */ x) => ((x - x0) * s + 20).toFixed(2);
   const Y = (/** @type {number} */ y) => ((y1 - y) * s + 20).toFixed(2);
-  const w = ((x1 - x0) * s + 40).toFixed(0), h = ((y1 - y0) * s + 40).toFixed(0);
-  for (const [k, v] of Object.entries({ version: '1.1', width: w, height: h, viewBox: `0 0 ${w} ${h}` })) svg.setAttribute(k, v);
-  const el = (/** @type {string} */ tag, /** @type {Record<string, string>} */ attrs) => {
-    const e = doc.createElementNS(SVG, tag);
-    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
-    return e;
-  };
-  const titleEl = el('title', {});
-  titleEl.textContent = title;
+  const w = ((x1 - x0) * s + 40).toFixed(0),
+    h = ((y1 - y0) * s + 40).toFixed(0);
+  for (const [k, v] of Object.entries({ version: '1.1', width: w, height: h, viewBox: `0 0 ${w} ${h}` }))
+    svg.setAttribute(k, v);
+  const el = svgMaker(doc);
+  const titleEl = el('title', {}, title);
   const rulings = el('g', { stroke: '#1f2430', 'stroke-width': '1', fill: 'none' });
-  for (let i = 0; i + 3 < points.length; i += 4) rulings.append(el('line', { x1: X(points[i]), y1: Y(points[i + 1]), x2: X(points[i + 2]), y2: Y(points[i + 3]) }));
-  const poly = Array.from({ length: Math.floor(striction.length / 2) }, (_, k) => `${X(striction[2 * k])},${Y(striction[2 * k + 1])}`).join(' ');
+  for (let i = 0; i + 3 < points.length; i += 4)
+    rulings.append(el('line', { x1: X(points[i]), y1: Y(points[i + 1]), x2: X(points[i + 2]), y2: Y(points[i + 3]) }));
+  const poly = Array.from(
+    { length: Math.floor(striction.length / 2) },
+    (_, k) => `${X(striction[2 * k])},${Y(striction[2 * k + 1])}`,
+  ).join(' ');
   svg.append(titleEl, rulings, el('polyline', { fill: 'none', stroke: '#d55e00', 'stroke-width': '2', points: poly }));
-  return new XMLSerializer().serializeToString(doc) + '\n';
+  return `${new XMLSerializer().serializeToString(doc)}\n`;
 }

@@ -56,15 +56,27 @@ export function figureOf(stage) {
       const cx = m[0] * wx + m[4] * wy + m[8] * wz + m[12];
       const cy = m[1] * wx + m[5] * wy + m[9] * wz + m[13];
       const cz = m[2] * wx + m[6] * wy + m[10] * wz + m[14];
-      return { world: [wx, wy, wz], x: ((cx / cw + 1) / 2) * width, y: ((1 - cy / cw) / 2) * height, z: cz / cw, w: cw };
+      return {
+        world: [wx, wy, wz],
+        x: ((cx / cw + 1) / 2) * width,
+        y: ((1 - cy / cw) / 2) * height,
+        z: cz / cw,
+        w: cw,
+      };
     };
-    const ok = (/** @type {{x: number, y: number, w: number}} */ v) => v.w > 0 && Number.isFinite(v.x) && Number.isFinite(v.y);
+    const ok = (/** @type {{x: number, y: number, w: number}} */ v) =>
+      v.w > 0 && Number.isFinite(v.x) && Number.isFinite(v.y);
     if (layer.kind === 'segments' || layer.kind === 'polyline') {
       const segments = layer.kind === 'polyline' ? polylineSegments(layer.positions, layer.closed) : layer.positions;
       for (let k = 0; 6 * k + 5 < segments.length; k++) {
         const [a, b] = [vertex(segments, 2 * k), vertex(segments, 2 * k + 1)];
         if (!ok(a) || !ok(b)) continue;
-        primitives.push({ kind: 'segment', points: [a.x, a.y, b.x, b.y], depth: (a.z + b.z) / 2 - LINE_BIAS, style: layer.style });
+        primitives.push({
+          kind: 'segment',
+          points: [a.x, a.y, b.x, b.y],
+          depth: (a.z + b.z) / 2 - LINE_BIAS,
+          style: layer.style,
+        });
       }
     } else if (layer.kind === 'points') {
       for (let k = 0; 3 * k + 2 < layer.positions.length; k++) {
@@ -74,12 +86,23 @@ export function figureOf(stage) {
     } else if (layer.kind === 'mesh' && layer.indices && style.kind === 'area') {
       const idx = layer.indices;
       for (let t = 0; t + 2 < idx.length; t += 3) {
-        const [a, b, c] = [vertex(layer.positions, idx[t]), vertex(layer.positions, idx[t + 1]), vertex(layer.positions, idx[t + 2])];
+        const [a, b, c] = [
+          vertex(layer.positions, idx[t]),
+          vertex(layer.positions, idx[t + 1]),
+          vertex(layer.positions, idx[t + 2]),
+        ];
         if (!ok(a) || !ok(b) || !ok(c)) continue;
         // front faces wind counter-clockwise in normalised device coordinates (y up), as in WebGL
         const area = (b.x - a.x) * (a.y - c.y) - (a.y - b.y) * (c.x - a.x);
         const back = area < 0;
-        primitives.push({ kind: 'triangle', points: [a.x, a.y, b.x, b.y, c.x, c.y], depth: (a.z + b.z + c.z) / 3, style: layer.style, back, fill: [shade(a.world, b.world, c.world, eye)] });
+        primitives.push({
+          kind: 'triangle',
+          points: [a.x, a.y, b.x, b.y, c.x, c.y],
+          depth: (a.z + b.z + c.z) / 3,
+          style: layer.style,
+          back,
+          fill: [shade(a.world, b.world, c.world, eye)],
+        });
       }
     }
   }
@@ -91,12 +114,19 @@ export function figureOf(stage) {
       const match = /translate\(([-\d.e]+)px, ([-\d.e]+)px\)/.exec(el.style.transform);
       return { x: match ? Number(match[1]) : 0, y: match ? Number(match[2]) : 0, text };
     });
-  const legend = (stage.scene?.legend ?? []).filter((e) => !e.when || e.when(stage.params)).map((e) => ({ style: e.style, label: stage.i18n.t(e.label) }));
+  const legend = (stage.scene?.legend ?? [])
+    .filter((e) => !e.when || e.when(stage.params))
+    .map((e) => ({ style: e.style, label: stage.i18n.t(e.label) }));
   return { width, height, primitives, labels, legend, title: stage.scene ? stage.i18n.t(stage.scene.title) : '' };
 }
 
 /** The light the view's mesh shader uses, as one factor (0.45 … 1) for a flat triangle. */
-function shade(/** @type {number[]} */ a, /** @type {number[]} */ b, /** @type {number[]} */ c, /** @type {number[]} */ eye) {
+function shade(
+  /** @type {number[]} */ a,
+  /** @type {number[]} */ b,
+  /** @type {number[]} */ c,
+  /** @type {number[]} */ eye,
+) {
   const u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
   const v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
   let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
@@ -123,7 +153,12 @@ export function paint(key, bw) {
   const grey = (/** @type {number} */ g) => [g, g, g];
   if (style.kind === 'line') {
     return bw
-      ? { color: grey(style.bw.gray), width: Math.max(style.bw.width * 1.6, 0.5), dash: style.bw.dash ?? null, opacity: 1 }
+      ? {
+          color: grey(style.bw.gray),
+          width: Math.max(style.bw.width * 1.6, 0.5),
+          dash: style.bw.dash ?? null,
+          opacity: 1,
+        }
       : { color: rgb(style.color), width: style.width, dash: style.dash ?? null, opacity: style.alpha ?? 1 };
   }
   if (style.kind === 'point') {
@@ -138,7 +173,13 @@ export function paint(key, bw) {
 
 /** A colour (0–1) as "#rrggbb". */
 export function hex(/** @type {number[]} */ c) {
-  return `#${c.map((x) => Math.round(Math.min(1, Math.max(0, x)) * 255).toString(16).padStart(2, '0')).join('')}`;
+  return `#${c
+    .map((x) =>
+      Math.round(Math.min(1, Math.max(0, x)) * 255)
+        .toString(16)
+        .padStart(2, '0'),
+    )
+    .join('')}`;
 }
 
 /** The page background. */

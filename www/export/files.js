@@ -16,7 +16,8 @@ import { scoped } from '../scene.js';
 export function dataFile(segments, format, { grid, name } = {}) {
   return scoped((own) => {
     if (grid) {
-      if (format !== 'csv' && format !== 'json' && format !== 'obj') throw new Error(`a congruence has no ${format} file`);
+      if (format !== 'csv' && format !== 'json' && format !== 'obj')
+        throw new Error(`a congruence has no ${format} file`);
       return own(LineCongruence.fromGrid(grid.rows, grid.cols, segments)).export(format, { name });
     }
     return own(RuledSurface.fromSegments(segments)).export(format, { name });

@@ -4,8 +4,9 @@
 // Content-Security-Policy hash of its script stays valid.
 
 /** The body of the one-file build before its script runs. */
-export const BODY = '<p id="boot" class="boot">Loading ruledlab …</p>'
-  + '<noscript><p class="boot boot-problem" lang="en">ruledlab needs JavaScript, which is turned off here (a page that shows it in a frame may have turned it off: an iframe sandbox without allow-scripts). <span lang="de">ruledlab braucht JavaScript, das hier ausgeschaltet ist (eine Seite, die es in einem Rahmen zeigt, hat es vielleicht ausgeschaltet: ein iframe-sandbox ohne allow-scripts).</span></p></noscript>';
+export const BODY =
+  '<p id="boot" class="boot">Loading ruledlab …</p>' +
+  '<noscript><p class="boot boot-problem" lang="en">ruledlab needs JavaScript, which is turned off here (a page that shows it in a frame may have turned it off: an iframe sandbox without allow-scripts). <span lang="de">ruledlab braucht JavaScript, das hier ausgeschaltet ist (eine Seite, die es in einem Rahmen zeigt, hat es vielleicht ausgeschaltet: ein iframe-sandbox ohne allow-scripts).</span></p></noscript>';
 
 /** The id of the state block. */
 export const STATE_ID = 'ruledlab-state';
@@ -45,7 +46,11 @@ export function storedHash() {
  * @param {string} hash
  */
 export async function oneFileWithState(oneFile, hash) {
-  if (oneFile) return withState(`<!doctype html>\n<html lang="en" data-build="onefile">\n<head>${document.head.innerHTML}</head>\n<body>${BODY}</body>\n</html>\n`, hash);
+  if (oneFile)
+    return withState(
+      `<!doctype html>\n<html lang="en" data-build="onefile">\n<head>${document.head.innerHTML}</head>\n<body>${BODY}</body>\n</html>\n`,
+      hash,
+    );
   const response = await fetch(new URL('../../dist/ruledlab.html', import.meta.url));
   if (!response.ok) throw new Error(`dist/ruledlab.html: HTTP ${response.status}`);
   return withState(await response.text(), hash);

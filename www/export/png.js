@@ -53,11 +53,19 @@ export async function png(stage, { scale = 1, legend = true } = {}) {
       drawRich(ctx, stage.i18n.t(entry.label), 54, y + 4, '12px system-ui, sans-serif');
     });
   }
-  return new Promise((resolve, reject) => out.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the view could not be captured'))), 'image/png'));
+  return new Promise((resolve, reject) =>
+    out.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the view could not be captured'))), 'image/png'),
+  );
 }
 
 /** Text with R_{i,i+1}-style subscripts on a 2D canvas. */
-function drawRich(/** @type {CanvasRenderingContext2D} */ ctx, /** @type {string} */ text, /** @type {number} */ x, /** @type {number} */ y, /** @type {string} */ font) {
+function drawRich(
+  /** @type {CanvasRenderingContext2D} */ ctx,
+  /** @type {string} */ text,
+  /** @type {number} */ x,
+  /** @type {number} */ y,
+  /** @type {string} */ font,
+) {
   const size = Number(/(\d+)px/.exec(font)?.[1] ?? 12);
   for (const part of parseRich(text)) {
     ctx.font = part.kind === 'text' ? font : font.replace(`${size}px`, `${Math.round(size * 0.72)}px`);

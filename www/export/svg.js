@@ -4,8 +4,7 @@
 // thin and thick, dashed and solid lines instead of colours).
 import { figureOf, paint, hex, PAPER } from './figure.js';
 import { parseRich } from '../ui/richtext.js';
-
-const SVG = 'http://www.w3.org/2000/svg';
+import { SVG, svgMaker } from '../svg-dom.js';
 
 /**
  * @typedef {object} FigureOptions
@@ -25,45 +24,91 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
   const doc = document.implementation.createDocument(SVG, 'svg', null);
   const svg = doc.documentElement;
   const top = title ? 30 : 0;
-  const el = (/** @type {string} */ tag, /** @type {Record<string, string | number>} */ attrs = {}, /** @type {string} */ text = '') => {
-    const e = doc.createElementNS(SVG, tag);
-    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
-    if (text) e.textContent = text;
-    return e;
-  };
+  const el = svgMaker(doc);
   const f = (/** @type {number} */ x) => x.toFixed(2);
-  for (const [k, v] of Object.entries({ version: '1.1', width: f(fig.width), height: f(fig.height + top), viewBox: `0 0 ${f(fig.width)} ${f(fig.height + top)}`, 'font-family': 'Helvetica, Arial, sans-serif' })) svg.setAttribute(k, v);
-  svg.append(el('title', {}, fig.title), el('rect', { x: 0, y: 0, width: f(fig.width), height: f(fig.height + top), fill: bw ? '#ffffff' : hex(PAPER) }));
+  for (const [k, v] of Object.entries({
+    version: '1.1',
+    width: f(fig.width),
+    height: f(fig.height + top),
+    viewBox: `0 0 ${f(fig.width)} ${f(fig.height + top)}`,
+    'font-family': 'Helvetica, Arial, sans-serif',
+  }))
+    svg.setAttribute(k, v);
+  svg.append(
+    el('title', {}, fig.title),
+    el('rect', { x: 0, y: 0, width: f(fig.width), height: f(fig.height + top), fill: bw ? '#ffffff' : hex(PAPER) }),
+  );
   const ink = bw ? '#000000' : '#1d2435';
   const paper = bw ? '#ffffff' : hex(PAPER);
-  if (title) svg.append(el('text', { x: 10, y: 20, 'font-size': 15, 'font-weight': 'bold', fill: ink }, fig.title.replace(/[_^]\{?([^}\s]*)\}?/g, '$1')));
+  if (title)
+    svg.append(
+      el(
+        'text',
+        { x: 10, y: 20, 'font-size': 15, 'font-weight': 'bold', fill: ink },
+        fig.title.replace(/[_^]\{?([^}\s]*)\}?/g, '$1'),
+      ),
+    );
   const picture = el('g', { transform: `translate(0 ${top})`, 'stroke-linecap': 'round' });
   for (const p of fig.primitives) {
     const look = /** @type {any} */ (paint(p.style, bw));
     if (p.kind === 'segment') {
       const [x1, y1, x2, y2] = p.points;
-      const attrs = { x1: f(x1), y1: f(y1), x2: f(x2), y2: f(y2), stroke: hex(look.color), 'stroke-width': f(look.width) };
+      const attrs = {
+        x1: f(x1),
+        y1: f(y1),
+        x2: f(x2),
+        y2: f(y2),
+        stroke: hex(look.color),
+        'stroke-width': f(look.width),
+      };
       if (look.dash) Object.assign(attrs, { 'stroke-dasharray': look.dash.join(' ') });
       if (look.opacity < 1) Object.assign(attrs, { 'stroke-opacity': look.opacity });
       picture.append(el('line', attrs));
     } else if (p.kind === 'dot') {
-      const attrs = { cx: f(p.points[0]), cy: f(p.points[1]), r: f(look.radius), fill: look.hollow ? '#ffffff' : hex(look.color) };
+      const attrs = {
+        cx: f(p.points[0]),
+        cy: f(p.points[1]),
+        r: f(look.radius),
+        fill: look.hollow ? '#ffffff' : hex(look.color),
+      };
       if (look.hollow) Object.assign(attrs, { stroke: hex(look.color), 'stroke-width': 0.8 });
       picture.append(el('circle', attrs));
     } else {
       const base = p.back ? look.back : look.color;
-      const fill = hex(base.map((/** @type {number} */ c) => c * /** @type {number[]} */ (p.fill)[0] + (1 - /** @type {number[]} */ (p.fill)[0]) * 0.08));
-      const attrs = { points: [0, 2, 4].map((k) => `${f(p.points[k])},${f(p.points[k + 1])}`).join(' '), fill, stroke: fill, 'stroke-width': 0.4 };
+      const fill = hex(
+        base.map(
+          (/** @type {number} */ c) =>
+            c * /** @type {number[]} */ (p.fill)[0] + (1 - /** @type {number[]} */ (p.fill)[0]) * 0.08,
+        ),
+      );
+      const attrs = {
+        points: [0, 2, 4].map((k) => `${f(p.points[k])},${f(p.points[k + 1])}`).join(' '),
+        fill,
+        stroke: fill,
+        'stroke-width': 0.4,
+      };
       if (look.opacity < 1) Object.assign(attrs, { 'fill-opacity': look.opacity, 'stroke-opacity': look.opacity });
       picture.append(el('polygon', attrs));
     }
   }
   svg.append(picture);
   if (labels) {
-    const group = el('g', { transform: `translate(0 ${top})`, 'font-family': 'Times New Roman, Times, serif', 'font-style': 'italic', 'font-size': 15, fill: ink });
+    const group = el('g', {
+      transform: `translate(0 ${top})`,
+      'font-family': 'Times New Roman, Times, serif',
+      'font-style': 'italic',
+      'font-size': 15,
+      fill: ink,
+    });
     // a paper-coloured halo under every label keeps it legible where a line crosses it (SVG 1.1 has
     // no paint-order, so the halo is a stroked copy drawn first)
-    const halo = el('g', { stroke: paper, 'stroke-width': 3, 'stroke-linejoin': 'round', fill: paper, 'aria-hidden': 'true' });
+    const halo = el('g', {
+      stroke: paper,
+      'stroke-width': 3,
+      'stroke-linejoin': 'round',
+      fill: paper,
+      'aria-hidden': 'true',
+    });
     const text = el('g', {});
     for (const l of fig.labels) {
       halo.append(rich(el, doc, l.text, { x: f(l.x + 3), y: f(l.y + 13) }));
@@ -74,18 +119,45 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
   }
   if (legend && fig.legend.length) {
     const group = el('g', { transform: `translate(10 ${top + 10})`, 'font-size': 12, fill: ink });
-    group.append(el('rect', { x: 0, y: 0, width: 10 + 36 + 7 * Math.max(...fig.legend.map((e) => e.label.length)), height: 8 + 18 * fig.legend.length, fill: '#ffffff', 'fill-opacity': 0.88, rx: 5 }));
+    group.append(
+      el('rect', {
+        x: 0,
+        y: 0,
+        width: 10 + 36 + 7 * Math.max(...fig.legend.map((e) => e.label.length)),
+        height: 8 + 18 * fig.legend.length,
+        fill: '#ffffff',
+        'fill-opacity': 0.88,
+        rx: 5,
+      }),
+    );
     fig.legend.forEach((entry, k) => {
       const y = 14 + 18 * k;
       const look = /** @type {any} */ (paint(entry.style, bw));
       if ('width' in look) {
-        const attrs = { x1: 8, y1: y, x2: 36, y2: y, stroke: hex(look.color), 'stroke-width': f(Math.min(Math.max(look.width, 1.2), 5)) };
+        const attrs = {
+          x1: 8,
+          y1: y,
+          x2: 36,
+          y2: y,
+          stroke: hex(look.color),
+          'stroke-width': f(Math.min(Math.max(look.width, 1.2), 5)),
+        };
         if (look.dash) Object.assign(attrs, { 'stroke-dasharray': look.dash.join(' ') });
         group.append(el('line', attrs));
       } else if ('radius' in look) {
-        group.append(el('circle', { cx: 22, cy: y, r: f(Math.min(look.radius, 5)), fill: look.hollow ? '#ffffff' : hex(look.color), stroke: hex(look.color) }));
+        group.append(
+          el('circle', {
+            cx: 22,
+            cy: y,
+            r: f(Math.min(look.radius, 5)),
+            fill: look.hollow ? '#ffffff' : hex(look.color),
+            stroke: hex(look.color),
+          }),
+        );
       } else {
-        group.append(el('rect', { x: 12, y: y - 6, width: 20, height: 12, fill: hex(look.color), stroke: hex(look.color) }));
+        group.append(
+          el('rect', { x: 12, y: y - 6, width: 20, height: 12, fill: hex(look.color), stroke: hex(look.color) }),
+        );
       }
       group.append(rich(el, doc, entry.label, { x: 44, y: y + 4 }));
     });
@@ -95,7 +167,12 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
 }
 
 /** A <text> whose R_{i,i+1}-style subscripts are lowered, smaller <tspan>s. */
-function rich(/** @type {Function} */ el, /** @type {XMLDocument} */ doc, /** @type {string} */ text, /** @type {Record<string, string | number>} */ attrs) {
+function rich(
+  /** @type {Function} */ el,
+  /** @type {XMLDocument} */ doc,
+  /** @type {string} */ text,
+  /** @type {Record<string, string | number>} */ attrs,
+) {
   const node = el('text', attrs);
   let shift = 0;
   for (const part of parseRich(text)) {

@@ -6,6 +6,7 @@
 import { gridIndices } from '../../pkg/ruledlab.js';
 import { bounds } from '../scene.js';
 import { butterflyStencil } from '../stencil.js';
+import { ROUNDING } from '../limits.js';
 
 /** The schemes: menu value → subdivide options. */
 /** @type {Record<string, (steps: number) => import('../../pkg/ruledlab.js').CongruenceSubdivideOptions>} */
@@ -52,7 +53,12 @@ export function congruenceFigure(own, analytic, p, { t, format }, name, compare 
     { kind: 'segments', style: cell ? 'ghost' : fine ? 'givenThin' : 'given', positions: given },
     { kind: 'segments', style: cell ? 'ghost' : fine ? 'insertedFine' : 'inserted', positions: inserted },
   ];
-  if (!fine && !cell) layers.push({ kind: 'points', style: 'insertedPoint', positions: diagonal ? refined.directorF32(1) : refined.insertedDirectorF32(stride, 1) });
+  if (!fine && !cell)
+    layers.push({
+      kind: 'points',
+      style: 'insertedPoint',
+      positions: diagonal ? refined.directorF32(1) : refined.insertedDirectorF32(stride, 1),
+    });
   if (p.director) layers.push({ kind: 'mesh', style: 'director1', positions: dense.directorF32(1), indices });
   if (p.second) layers.push({ kind: 'mesh', style: 'director2', positions: dense.directorF32(2), indices });
   const lines = diagonal ? grid.rows * grid.cols + refined.rows * refined.cols : refined.rows * refined.cols;
@@ -64,7 +70,10 @@ export function congruenceFigure(own, analytic, p, { t, format }, name, compare 
   let errors = null;
   if (!diagonal && steps === 1) {
     errors = analytic.errors(refined);
-    readouts.push({ label: 'congruence.readout.distance', value: errors.distance, exactZero: true }, { label: 'congruence.readout.angle', value: errors.angle, exactZero: true });
+    readouts.push(
+      { label: 'congruence.readout.distance', value: errors.distance, exactZero: true },
+      { label: 'congruence.readout.angle', value: errors.angle, exactZero: true },
+    );
   }
   /** @type {import('../scene.js').Claim[]} */
   const claims = [];
@@ -72,12 +81,16 @@ export function congruenceFigure(own, analytic, p, { t, format }, name, compare 
     /** @type {Record<string, {distance: number, angle: number}>} */
     const all = {};
     for (const s of COMPARED) all[s] = analytic.errors(own(grid.subdivide(SCHEMES[s](1))));
-    for (const s of COMPARED) readouts.push({ label: `congruence.readout.compare.${s}`, value: `${format(all[s].distance)} / ${format(all[s].angle)}` });
+    for (const s of COMPARED)
+      readouts.push({
+        label: `congruence.readout.compare.${s}`,
+        value: `${format(all[s].distance)} / ${format(all[s].angle)}`,
+      });
     const rivals = COMPARED.filter((s) => s !== 'butterfly').map((s) => all[s]);
     const best = all.butterfly;
     claims.push({
       text: 'congruence.claim.butterfly',
-      holds: rivals.every((r) => best.angle < r.angle && best.distance <= r.distance + 1e-12),
+      holds: rivals.every((r) => best.angle < r.angle && best.distance <= r.distance + ROUNDING),
     });
   }
   if (cell) layers.push({ kind: 'segments', style: 'cell', positions: cell.lines });
@@ -89,7 +102,15 @@ export function congruenceFigure(own, analytic, p, { t, format }, name, compare 
     labels: cell?.labels ?? [],
     readouts,
     claims,
-    ...(p.scheme === 'butterfly' || diagonal ? { figure: () => butterflyStencil(document, { title: t('congruence.stencil.title'), weights: t('congruence.stencil.weights') }) } : {}),
+    ...(p.scheme === 'butterfly' || diagonal
+      ? {
+          figure: () =>
+            butterflyStencil(document, {
+              title: t('congruence.stencil.title'),
+              weights: t('congruence.stencil.weights'),
+            }),
+        }
+      : {}),
     description: t('congruence.describe', {
       congruence: t(`congruence.${name}`),
       rows: grid.rows,
@@ -105,11 +126,15 @@ export function congruenceFigure(own, analytic, p, { t, format }, name, compare 
 /** `box` scaled by `factor` about its centre. */
 function grown(/** @type {{min: number[], max: number[]}} */ box, /** @type {number} */ factor) {
   const c = box.min.map((m, k) => (m + box.max[k]) / 2);
-  return { min: c.map((x, k) => x - ((box.max[k] - box.min[k]) / 2) * factor), max: c.map((x, k) => x + ((box.max[k] - box.min[k]) / 2) * factor) };
+  return {
+    min: c.map((x, k) => x - ((box.max[k] - box.min[k]) / 2) * factor),
+    max: c.map((x, k) => x + ((box.max[k] - box.min[k]) / 2) * factor),
+  };
 }
 
 /** Whether Fig. 14's notation applies: one step of a variational scheme (T, S and R̄ exist). */
-export const fig14Applies = (/** @type {{scheme: string, steps: number}} */ p) => Number(p.steps) === 1 && ['paper', 'two-stage', 'coupled'].includes(p.scheme);
+export const fig14Applies = (/** @type {{scheme: string, steps: number}} */ p) =>
+  Number(p.steps) === 1 && ['paper', 'two-stage', 'coupled'].includes(p.scheme);
 
 /**
  * Fig. 14's notation on one cell (i, j) of the grid refined once: the given lines R at even
@@ -121,12 +146,18 @@ export const fig14Applies = (/** @type {{scheme: string, steps: number}} */ p) =
  * @returns {{labels: import('../scene.js').Label[], lines: Float32Array}}
  */
 function fig14Cell(refined) {
-  const d1 = refined.directorF32(1), d2 = refined.directorF32(2), all = refined.segmentsF32();
-  const i = Math.floor((refined.rows - 1) / 4), j = Math.floor((refined.cols - 1) / 4);
+  const d1 = refined.directorF32(1),
+    d2 = refined.directorF32(2),
+    all = refined.segmentsF32();
+  const i = Math.floor((refined.rows - 1) / 4),
+    j = Math.floor((refined.cols - 1) / 4);
   const k = (/** @type {number} */ r, /** @type {number} */ c) => r * refined.cols + c;
-  const at = (/** @type {Float32Array} */ d, /** @type {number} */ r, /** @type {number} */ c) => Array.from(d.subarray(3 * k(r, c), 3 * k(r, c) + 3));
+  const at = (/** @type {Float32Array} */ d, /** @type {number} */ r, /** @type {number} */ c) =>
+    Array.from(d.subarray(3 * k(r, c), 3 * k(r, c) + 3));
   const lines = new Float32Array(9 * 6);
-  for (let a = 0; a < 3; a++) for (let b = 0; b < 3; b++) lines.set(all.subarray(6 * k(2 * i + a, 2 * j + b), 6 * k(2 * i + a, 2 * j + b) + 6), 6 * (3 * a + b));
+  for (let a = 0; a < 3; a++)
+    for (let b = 0; b < 3; b++)
+      lines.set(all.subarray(6 * k(2 * i + a, 2 * j + b), 6 * k(2 * i + a, 2 * j + b) + 6), 6 * (3 * a + b));
   const labels = [
     { at: at(d1, 2 * i, 2 * j), text: 'p_{i,j}' },
     { at: at(d1, 2 * i + 2, 2 * j), text: 'p_{i+1,j}' },
@@ -145,15 +176,33 @@ function fig14Cell(refined) {
 
 /** The scheme parameters shared with "Your congruence". */
 export const SCHEME_PARAMS = /** @type {import('../scene.js').Param[]} */ ([
-  { key: 'scheme', label: 'param.scheme', type: 'select', value: 'paper', refit: false, options: () => Object.keys(SCHEMES).map((s) => [s, `congruence.scheme.${s}`]) },
-  { key: 'steps', label: 'param.steps', type: 'range', min: 1, max: 3, step: 1, value: 1, play: true, unless: (p) => (p.scheme === 'diagonal' ? 'congruence.reason.diagonal' : null) },
+  {
+    key: 'scheme',
+    label: 'param.scheme',
+    type: 'select',
+    value: 'paper',
+    refit: false,
+    options: () => Object.keys(SCHEMES).map((s) => [s, `congruence.scheme.${s}`]),
+  },
+  {
+    key: 'steps',
+    label: 'param.steps',
+    type: 'range',
+    min: 1,
+    max: 3,
+    step: 1,
+    value: 1,
+    play: true,
+    unless: (p) => (p.scheme === 'diagonal' ? 'congruence.reason.diagonal' : null),
+  },
   { key: 'director', label: 'congruence.param.director', type: 'checkbox', value: true },
   { key: 'second', label: 'congruence.param.second', type: 'checkbox', value: false },
 ]);
 
 /** The legend shared with "Your congruence". */
 /** Whether the parameters show Fig. 14's notation. */
-const cellShown = (/** @type {import('../scene.js').Params} */ p) => !!p.labels && fig14Applies({ scheme: String(p.scheme), steps: Number(p.steps) });
+const cellShown = (/** @type {import('../scene.js').Params} */ p) =>
+  !!p.labels && fig14Applies({ scheme: String(p.scheme), steps: Number(p.steps) });
 
 export const LEGEND = /** @type {import('../scene.js').LegendEntry[]} */ ([
   { style: 'given', label: 'congruence.legend.given', when: (p) => !cellShown(p) },

@@ -3,6 +3,7 @@
 // scene and "Your surface".
 import { bounds, f32 } from '../scene.js';
 import { logLogPlot } from '../plot.js';
+import { EXACT_ZERO } from '../limits.js';
 
 const SERIES = [
   ['footpoint', 'convergence.series.footpoint'],
@@ -11,9 +12,6 @@ const SERIES = [
   ['distributionMean', 'convergence.series.distributionMean'],
   ['centralNormal', 'convergence.series.centralNormal'],
 ];
-
-/** Errors at the rounding floor everywhere: the quantity is exact on this surface. */
-const EXACT = 1e-13;
 
 /**
  * The convergence figure of an analytic surface at parameter u: shared with "Your surface".
@@ -36,9 +34,11 @@ export function convergenceFigure(own, analytic, p, { t }) {
   const reach = Math.max(2 * H, 0.4);
   const tangent = new Float32Array([0, 1, 2, 0, 1, 2].map((c, k) => exact[c] + (k < 3 ? -reach : reach) * e3[c]));
   const curve = analytic.striction(Float64Array.from({ length: 61 }, (_, k) => p.u - H + (2 * H * k) / 60));
-  const pick = (/** @type {string} */ name) => /** @type {import('../../pkg/ruledlab.js').ConvergenceSeries} */ (study.series.find((s) => s.name === name));
-  const order = (/** @type {string} */ name) => (pick(name).errors.every((x) => x < EXACT) ? 'readout.exact' : pick(name).fittedOrder);
-  const shown = SERIES.slice(0, 4).filter(([name]) => pick(name).errors.some((x) => x >= EXACT));
+  const pick = (/** @type {string} */ name) =>
+    /** @type {import('../../pkg/ruledlab.js').ConvergenceSeries} */ (study.series.find((s) => s.name === name));
+  const order = (/** @type {string} */ name) =>
+    pick(name).errors.every((x) => x < EXACT_ZERO) ? 'readout.exact' : pick(name).fittedOrder;
+  const shown = SERIES.slice(0, 4).filter(([name]) => pick(name).errors.some((x) => x >= EXACT_ZERO));
   return {
     bounds: bounds(seg),
     camera: { yaw: -0.9, pitch: 0.35 },
@@ -54,7 +54,10 @@ export function convergenceFigure(own, analytic, p, { t }) {
     figure: () =>
       logLogPlot(document, {
         x: study.steps,
-        series: shown.map(([name, label]) => ({ name: t(label, { order: pick(name).fittedOrder }), y: pick(name).errors })),
+        series: shown.map(([name, label]) => ({
+          name: t(label, { order: pick(name).fittedOrder }),
+          y: pick(name).errors,
+        })),
         slopes: [1, 2],
         xLabel: t('convergence.plot.x'),
         yLabel: t('convergence.plot.y'),

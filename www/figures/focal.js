@@ -1,6 +1,7 @@
 // The focal figure (beyond the paper): a grid of lines by kind (hyperbolic, elliptic,
 // parabolic), its focal sheets where real, the torsal strokes, and the readouts of kinds,
 // normality and the linear complex. Drawn by the focal scene, "Your congruence" and "Your data".
+import { DATA_COMPLEX_TOLERANCE, ROUNDING } from '../limits.js';
 
 /**
  * The focal figure of a grid of lines: shared with "Your congruence".
@@ -31,13 +32,18 @@ export function focalFigure(own, grid, p, { t }) {
     for (const sheet of /** @type {const} */ ([1, 2])) {
       const mesh = geometry.sheetF32(sheet);
       if (mesh.indices.length === 0) continue;
-      layers.push({ kind: 'mesh', style: `focal${sheet}`, positions: mesh.positions, indices: mesh.indices, normals: mesh.normals });
+      layers.push({
+        kind: 'mesh',
+        style: `focal${sheet}`,
+        positions: mesh.positions,
+        indices: mesh.indices,
+        normals: mesh.normals,
+      });
       positions.push([...mesh.min, ...mesh.max]);
     }
   }
   if (p.torsal) layers.push({ kind: 'segments', style: 'torsal', positions: geometry.strokesF32() });
-  // looser than the default 1e-9: imported data carry the digits a file printed
-  const complex = grid.linearComplex({ tolerance: 1e-6 });
+  const complex = grid.linearComplex({ tolerance: DATA_COMPLEX_TOLERANCE });
   const normality = real.length ? Math.max(...real) : NaN;
   /** @type {import('../scene.js').Readout[]} */
   const readouts = [
@@ -48,7 +54,12 @@ export function focalFigure(own, grid, p, { t }) {
     { label: 'focal.readout.complex', value: t(`complex.kind.${complex.kind}`) },
   ];
   // a pitch at rounding level is 0: the lines all meet the axis (Example 5: the z-axis)
-  if (complex.kind === 'complex') readouts.push({ label: 'focal.readout.pitch', value: Math.abs(complex.pitch) < 1e-12 ? 0 : complex.pitch, exactZero: true });
+  if (complex.kind === 'complex')
+    readouts.push({
+      label: 'focal.readout.pitch',
+      value: Math.abs(complex.pitch) < ROUNDING ? 0 : complex.pitch,
+      exactZero: true,
+    });
   const sentence = t('focal.describe', {
     hyperbolic: count[1],
     elliptic: count[0],

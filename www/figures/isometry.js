@@ -7,11 +7,13 @@ import { multiply } from '../math.js';
 import { developmentSvg } from '../export/development.js';
 
 /** A translation by (x, y, z), column-major. */
-const translation = (/** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ z) => new Float32Array([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, y, z, 1]);
+const translation = (/** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ z) =>
+  new Float32Array([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, y, z, 1]);
 
 /** Bounding box of flat xyz data moved by the 4 × 4 matrix `m`. */
 function boundsThrough(/** @type {ArrayLike<number>} */ m, /** @type {ArrayLike<number>[]} */ ...arrays) {
-  const min = [Infinity, Infinity, Infinity], max = [-Infinity, -Infinity, -Infinity];
+  const min = [Infinity, Infinity, Infinity],
+    max = [-Infinity, -Infinity, -Infinity];
   for (const d of arrays) {
     for (let i = 0; i + 2 < d.length; i += 3) {
       for (let k = 0; k < 3; k++) {
@@ -40,10 +42,13 @@ const HELICAL_RADIUS = 1.4;
  * @returns {import('../scene.js').Claim[]}
  */
 function claimsOf(name, n, radius, finer) {
-  if (name === 'helical' && n >= 6) return [{ text: 'isometry.claim.helical', holds: Math.abs(radius - HELICAL_RADIUS) < 0.1 }];
+  if (name === 'helical' && n >= 6)
+    return [{ text: 'isometry.claim.helical', holds: Math.abs(radius - HELICAL_RADIUS) < 0.1 }];
   if (name === 'helical-orthogonal' && finer) {
     const ratio = Math.abs(radius / finer.radius);
-    return [{ text: 'isometry.claim.orthogonal', holds: Math.abs(finer.radius) < Math.abs(radius) && ratio > 3 && ratio < 5 }];
+    return [
+      { text: 'isometry.claim.orthogonal', holds: Math.abs(finer.radius) < Math.abs(radius) && ratio > 3 && ratio < 5 },
+    ];
   }
   return [];
 }
@@ -116,7 +121,12 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null) {
       height: nonDevelopability,
     }),
     downloads: [
-      { label: 'isometry.download.development', filename: `development-${name}.svg`, content: () => developmentSvg(development, image, t('isometry.download.title')), type: 'image/svg+xml' },
+      {
+        label: 'isometry.download.development',
+        filename: `development-${name}.svg`,
+        content: () => developmentSvg(development, image, t('isometry.download.title')),
+        type: 'image/svg+xml',
+      },
     ],
     data: { segments: bent.segments() },
   };

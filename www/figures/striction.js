@@ -4,6 +4,7 @@
 // complex. Drawn by the striction scene and "Your surface".
 import { stripIndices } from '../../pkg/ruledlab.js';
 import { bounds, f32 } from '../scene.js';
+import { DATA_COMPLEX_TOLERANCE, ROUNDING } from '../limits.js';
 
 /**
  * The striction figure of an analytic surface sampled with `ranges` ({uMin, uMax, vMin, vMax,
@@ -34,7 +35,12 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = fa
   }
   if (p.exact) layers.push({ kind: 'polyline', style: 'exact', positions: f32(exact), closed });
   if (p.midpoints) {
-    layers.push({ kind: 'polyline', style: 'perpendicularMidpoints', positions: f32(inv.perpendicularMidpoints), closed });
+    layers.push({
+      kind: 'polyline',
+      style: 'perpendicularMidpoints',
+      positions: f32(inv.perpendicularMidpoints),
+      closed,
+    });
     layers.push({ kind: 'points', style: 'perpendicularMidpoint', positions: f32(inv.perpendicularMidpoints) });
   }
   if (p.polygon) {
@@ -43,8 +49,7 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = fa
   }
   if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: segments, indices: stripIndices(p.n, closed) });
   // beyond the paper: the linear complex that fits the rulings (README, "Focal geometry")
-  // looser than the default 1e-9: your data and formulas carry the digits a file or a slider gave
-  const complex = surface.linearComplex({ tolerance: 1e-6 });
+  const complex = surface.linearComplex({ tolerance: DATA_COMPLEX_TOLERANCE });
   if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisSegment[0])) {
     layers.push({ kind: 'segments', style: 'complexAxis', positions: f32(complex.axisSegment) });
   }
@@ -56,10 +61,14 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = fa
     // measured by the core: the errors at N rulings against the spacing halved
     const orders = analytic.samplingOrders(p.n, ranges);
     const o = { footpoint: orders.footpoint, midpoint: orders.midpoint, perpendicular: orders.perpendicularMidpoint };
-    for (const [k, v] of Object.entries(o)) measured.push({ label: `striction.readout.order.${k}`, value: Number.isFinite(v) ? v : 'readout.none' });
+    for (const [k, v] of Object.entries(o))
+      measured.push({ label: `striction.readout.order.${k}`, value: Number.isFinite(v) ? v : 'readout.none' });
     if (ORDER_SURFACES.includes(name) && p.n >= 20) {
       const near = (/** @type {number} */ x, /** @type {number} */ target) => Math.abs(x - target) <= 0.25;
-      claims.push({ text: 'striction.claim.orders', holds: near(o.footpoint, 1) && near(o.midpoint, 2) && near(o.perpendicular, 2) });
+      claims.push({
+        text: 'striction.claim.orders',
+        holds: near(o.footpoint, 1) && near(o.midpoint, 2) && near(o.perpendicular, 2),
+      });
     }
   }
   const middle = inv.distributionMean.length ? inv.distributionMean[Math.floor(inv.distributionMean.length / 2)] : NaN;
@@ -81,7 +90,15 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = fa
       { label: 'readout.perpendicularMidpointError', value: errors.perpendicularMidpoint, exactZero: true },
       { label: 'readout.meanDelta', value: middle },
       { label: 'focal.readout.complex', value: t(`complex.kind.${complex.kind}`) },
-      ...(complex.kind === 'complex' ? [{ label: 'focal.readout.pitch', value: Math.abs(complex.pitch) < 1e-12 ? 0 : complex.pitch, exactZero: true }] : []),
+      ...(complex.kind === 'complex'
+        ? [
+            {
+              label: 'focal.readout.pitch',
+              value: Math.abs(complex.pitch) < ROUNDING ? 0 : complex.pitch,
+              exactZero: true,
+            },
+          ]
+        : []),
       ...measured,
     ],
     claims,

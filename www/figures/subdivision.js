@@ -18,7 +18,10 @@ export function subdivisionFigure(own, analytic, ranges, p, { t }) {
   const surface = own(analytic.sample(p.n, { ...ranges, closed: false }));
   const steps = Number(p.steps);
   /** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */
-  const options = p.scheme === 'lines' ? { scheme: 'four-point', space: 'lines', steps } : { scheme: /** @type {import('../../pkg/ruledlab.js').SubdivideOptions['scheme']} */ (p.scheme), steps };
+  const options =
+    p.scheme === 'lines'
+      ? { scheme: 'four-point', space: 'lines', steps }
+      : { scheme: /** @type {import('../../pkg/ruledlab.js').SubdivideOptions['scheme']} */ (p.scheme), steps };
   const refined = own(surface.subdivide(options));
   const stride = 2 ** p.steps;
   const distance = analytic.insertedDistance(refined, stride, ranges.uMin, ranges.uMax);
@@ -28,7 +31,11 @@ export function subdivisionFigure(own, analytic, ranges, p, { t }) {
     camera: { yaw: -1.2, pitch: 0.45 },
     layers: [
       { kind: 'segments', style: 'given', positions: surface.segmentsF32() },
-      { kind: 'segments', style: refined.length > 400 ? 'insertedFine' : 'inserted', positions: refined.insertedF32(stride) },
+      {
+        kind: 'segments',
+        style: refined.length > 400 ? 'insertedFine' : 'inserted',
+        positions: refined.insertedF32(stride),
+      },
       { kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(refined.length) },
     ],
     readouts: [

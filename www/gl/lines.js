@@ -1,7 +1,7 @@
 // Thick lines as instanced screen-space quads (gl.lineWidth is 1 in browsers), optionally
 // dashed, optionally moved by a model matrix. A batch takes the core's f32 segments (6 floats
 // per segment) or a polyline (3 per point); records holding NaN are left out when uploading.
-import { cachedProgram } from './program.js';
+import { cachedProgram, beginDraw } from './program.js';
 import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
@@ -62,7 +62,7 @@ export function finiteSegments(data) {
   for (let i = 0; i + 5 < data.length; i += 6) {
     let ok = true;
     for (let j = 0; j < 6; j++) ok &&= Number.isFinite(data[i + j]);
-    if (ok) out.set(data.subarray(i, i + 6), (k++) * 6);
+    if (ok) out.set(data.subarray(i, i + 6), k++ * 6);
   }
   return out.subarray(0, 6 * k);
 }
@@ -114,15 +114,14 @@ export class LineBatch {
   /** @param {WebGL2RenderingContext} gl @param {import('../viewer.js').Frame} frame */
   draw(gl, frame) {
     if (this.count === 0) return;
-    const { program, u } = this.program;
-    gl.useProgram(program);
-    gl.uniformMatrix4fv(u.viewProj, false, frame.viewProj);
-    gl.uniformMatrix4fv(u.model, false, this.model);
+    const u = beginDraw(gl, this.program, frame, this.model);
     gl.uniform2f(u.viewport, frame.width / 2, frame.height / 2);
     gl.uniform1f(u.width, (this.style.width * frame.dpr) / 2);
     gl.uniform4fv(u.color, this.style.color);
     const dash = [0, 0, 0, 0];
-    (this.style.dash ?? []).slice(0, 4).forEach((x, i) => (dash[i] = x * frame.dpr));
+    (this.style.dash ?? []).slice(0, 4).forEach((x, i) => {
+      dash[i] = x * frame.dpr;
+    });
     if (dash[2] === 0 && dash[3] === 0) [dash[2], dash[3]] = [dash[0], dash[1]];
     gl.uniform4fv(u.dash, dash);
     gl.bindVertexArray(this.vao);
@@ -132,7 +131,9 @@ export class LineBatch {
 
   /** @param {WebGL2RenderingContext} gl */
   dispose(gl) {
-    this.buffers.forEach((b) => gl.deleteBuffer(b));
+    this.buffers.forEach((b) => {
+      gl.deleteBuffer(b);
+    });
     gl.deleteVertexArray(this.vao);
   }
 }

@@ -3,7 +3,7 @@
 // b_i at 2i + 1), grids (director surfaces), and the core's meshes. Facet normals come from
 // screen-space derivatives, so the facets of a discrete model show honestly; a mesh whose
 // facets are smaller than a pixel brings vertex normals from the core instead (no moiré).
-import { cachedProgram } from './program.js';
+import { cachedProgram, beginDraw } from './program.js';
 import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
@@ -70,10 +70,7 @@ export class TriangleMesh {
   /** @param {WebGL2RenderingContext} gl @param {import('../viewer.js').Frame} frame */
   draw(gl, frame) {
     if (this.count === 0) return;
-    const { program, u } = this.program;
-    gl.useProgram(program);
-    gl.uniformMatrix4fv(u.viewProj, false, frame.viewProj);
-    gl.uniformMatrix4fv(u.model, false, this.model);
+    const u = beginDraw(gl, this.program, frame, this.model);
     gl.uniform3fv(u.eye, frame.eye);
     gl.uniform4fv(u.front, this.style.front);
     gl.uniform4fv(u.back, this.style.back);

@@ -1,5 +1,5 @@
 // Points as round, lightly shaded sprites (3 floats per point; NaN points are left out).
-import { cachedProgram } from './program.js';
+import { cachedProgram, beginDraw } from './program.js';
 import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
@@ -34,7 +34,8 @@ export function finitePoints(/** @type {Float32Array} */ data) {
   const out = new Float32Array(data.length);
   let k = 0;
   for (let i = 0; i + 2 < data.length; i += 3) {
-    if (Number.isFinite(data[i]) && Number.isFinite(data[i + 1]) && Number.isFinite(data[i + 2])) out.set(data.subarray(i, i + 3), (k++) * 3);
+    if (Number.isFinite(data[i]) && Number.isFinite(data[i + 1]) && Number.isFinite(data[i + 2]))
+      out.set(data.subarray(i, i + 3), k++ * 3);
   }
   return out.subarray(0, 3 * k);
 }
@@ -63,10 +64,7 @@ export class PointBatch {
   /** @param {WebGL2RenderingContext} gl @param {import('../viewer.js').Frame} frame */
   draw(gl, frame) {
     if (this.count === 0) return;
-    const { program, u } = this.program;
-    gl.useProgram(program);
-    gl.uniformMatrix4fv(u.viewProj, false, frame.viewProj);
-    gl.uniformMatrix4fv(u.model, false, this.model);
+    const u = beginDraw(gl, this.program, frame, this.model);
     gl.uniform1f(u.size, this.style.size * frame.dpr);
     gl.uniform4fv(u.color, this.style.color);
     gl.bindVertexArray(this.vao);

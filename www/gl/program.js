@@ -74,7 +74,10 @@ const cache = new WeakMap();
  */
 export function cachedProgram(gl, key, vertexSource, fragmentSource, uniformNames) {
   let programs = cache.get(gl);
-  if (!programs) cache.set(gl, (programs = new Map()));
+  if (!programs) {
+    programs = new Map();
+    cache.set(gl, programs);
+  }
   let entry = programs.get(key);
   if (!entry) {
     const program = createProgram(gl, vertexSource, fragmentSource);
@@ -90,4 +93,19 @@ export function cachedProgram(gl, key, vertexSource, fragmentSource, uniformName
  */
 export function forgetPrograms(gl) {
   cache.delete(gl);
+}
+
+/**
+ * Starts a draw with a cached program: binds it and sets the uniforms every batch has, the
+ * frame's view-projection and the batch's model matrix; returns the uniform locations.
+ * @param {WebGL2RenderingContext} gl
+ * @param {{ program: WebGLProgram, u: Record<string, WebGLUniformLocation | null> }} cached
+ * @param {import('../viewer.js').Frame} frame
+ * @param {Float32Array} model
+ */
+export function beginDraw(gl, { program, u }, frame, model) {
+  gl.useProgram(program);
+  gl.uniformMatrix4fv(u.viewProj, false, frame.viewProj);
+  gl.uniformMatrix4fv(u.model, false, model);
+  return u;
 }

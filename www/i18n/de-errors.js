@@ -5,11 +5,31 @@
 
 /** Feldnamen der Formelszenen in Meldungen: „z-Komponente von e(u)“, „Anfang von u“. */
 /** @type {Array<[string, Array<[string, string]>]>} */
-const FORMULA_FIELDS = [['formula', [['a', 'a(u)'], ['e', 'e(u)']]], ['formulaCongruence', [['p', 'p(u, v)'], ['e', 'e(u, v)']]]];
+const FORMULA_FIELDS = [
+  [
+    'formula',
+    [
+      ['a', 'a(u)'],
+      ['e', 'e(u)'],
+    ],
+  ],
+  [
+    'formulaCongruence',
+    [
+      ['p', 'p(u, v)'],
+      ['e', 'e(u, v)'],
+    ],
+  ],
+];
 const fields = Object.fromEntries(
   FORMULA_FIELDS.flatMap(([scene, vectors]) => [
-    ...vectors.flatMap(([v, name]) => ['x', 'y', 'z'].map((c) => [`${scene}.param.${v}${c}.field`, `${c}-Komponente von ${name}`])),
-    ...['u', 'v'].flatMap((x) => [[`${scene}.param.${x}min.field`, `Anfang von ${x}`], [`${scene}.param.${x}max.field`, `Ende von ${x}`]]),
+    ...vectors.flatMap(([v, name]) =>
+      ['x', 'y', 'z'].map((c) => [`${scene}.param.${v}${c}.field`, `${c}-Komponente von ${name}`]),
+    ),
+    ...['u', 'v'].flatMap((x) => [
+      [`${scene}.param.${x}min.field`, `Anfang von ${x}`],
+      [`${scene}.param.${x}max.field`, `Ende von ${x}`],
+    ]),
   ]),
 );
 
@@ -66,18 +86,29 @@ export default {
   'error.bad-length': '{what}: {len} Zahlen ergeben keine ganze Zahl von Einträgen zu je {multiple}',
   'error.too-few': '{what}: {got} angegeben, mindestens {min} nötig',
   'error.too-many': '{what}: {got} sind mehr als die Grenze von {max}',
-  'error.not-finite-segment': 'Koordinate {coordinate} der Erzeugenden {item} ist {value}; jede Koordinate muss eine endliche Zahl sein',
-  'error.not-finite-point': 'Koordinate {coordinate} des Punktes {item} ist {value}; jede Koordinate muss eine endliche Zahl sein',
-  'error.not-finite-line': 'Koordinate {coordinate} der Geraden ({row}, {col}) ist {value}; jede Koordinate muss eine endliche Zahl sein',
-  'error.out-of-range-segment': 'Koordinate {coordinate} der Erzeugenden {item} ist {value}; Beträge über {max} sind nicht zulässig',
-  'error.out-of-range-point': 'Koordinate {coordinate} des Punktes {item} ist {value}; Beträge über {max} sind nicht zulässig',
-  'error.out-of-range-line': 'Koordinate {coordinate} der Geraden ({row}, {col}) ist {value}; Beträge über {max} sind nicht zulässig',
-  'error.zero-length': 'Die Erzeugende {ruling} hat die Länge null (ihre Endpunkte fallen zusammen) und damit keine Richtung',
+  'error.not-finite-segment':
+    'Koordinate {coordinate} der Erzeugenden {item} ist {value}; jede Koordinate muss eine endliche Zahl sein',
+  'error.not-finite-point':
+    'Koordinate {coordinate} des Punktes {item} ist {value}; jede Koordinate muss eine endliche Zahl sein',
+  'error.not-finite-line':
+    'Koordinate {coordinate} der Geraden ({row}, {col}) ist {value}; jede Koordinate muss eine endliche Zahl sein',
+  'error.out-of-range-segment':
+    'Koordinate {coordinate} der Erzeugenden {item} ist {value}; Beträge über {max} sind nicht zulässig',
+  'error.out-of-range-point':
+    'Koordinate {coordinate} des Punktes {item} ist {value}; Beträge über {max} sind nicht zulässig',
+  'error.out-of-range-line':
+    'Koordinate {coordinate} der Geraden ({row}, {col}) ist {value}; Beträge über {max} sind nicht zulässig',
+  'error.zero-length':
+    'Die Erzeugende {ruling} hat die Länge null (ihre Endpunkte fallen zusammen) und damit keine Richtung',
   'error.text-too-long': '{got} {what} sind mehr als die Grenze von {max}',
-  'error.not-finite-at-u': 'Nicht endlich bei u = {u} (der Wert ist {value}, also keine Zahl oder unendlich: eine Division durch null oder eine Funktion außerhalb ihres Definitionsbereichs?)',
-  'error.not-finite-at-uv': 'Nicht endlich bei (u; v) = ({u}; {v}) (der Wert ist {value}, also keine Zahl oder unendlich: eine Division durch null oder eine Funktion außerhalb ihres Definitionsbereichs?)',
-  'error.derivative-not-finite-at-u': 'Die Ableitung ist bei u = {u} nicht endlich (sie ist {value}); die exakten Invarianten gibt es dort nicht',
-  'error.derivative-not-finite-at-uv': 'Die Ableitung ist bei (u; v) = ({u}; {v}) nicht endlich (sie ist {value}); die exakten Invarianten gibt es dort nicht',
+  'error.not-finite-at-u':
+    'Nicht endlich bei u = {u} (der Wert ist {value}, also keine Zahl oder unendlich: eine Division durch null oder eine Funktion außerhalb ihres Definitionsbereichs?)',
+  'error.not-finite-at-uv':
+    'Nicht endlich bei (u; v) = ({u}; {v}) (der Wert ist {value}, also keine Zahl oder unendlich: eine Division durch null oder eine Funktion außerhalb ihres Definitionsbereichs?)',
+  'error.derivative-not-finite-at-u':
+    'Die Ableitung ist bei u = {u} nicht endlich (sie ist {value}); die exakten Invarianten gibt es dort nicht',
+  'error.derivative-not-finite-at-uv':
+    'Die Ableitung ist bei (u; v) = ({u}; {v}) nicht endlich (sie ist {value}); die exakten Invarianten gibt es dort nicht',
   'error.not-converged': 'Das Lösungsverfahren ist in {iterations} Iterationen nicht konvergiert',
   'error.singular': 'Das System ist nicht positiv definit (Pivot {pivot} ist {value})',
   'error.formula-empty': 'Das Feld ist leer; schreiben Sie eine Formel wie cos(u)',
@@ -95,7 +126,8 @@ export default {
   'error.operand-before': 'Vor „{sign}“ fehlt ein Operand',
   'error.atan2-arguments': 'atan2 hat zwei Argumente: atan2(y, x)',
   'error.comma-outside-atan2': 'Ein Komma trennt nur die beiden Argumente von atan2(y, x)',
-  'error.ambiguous-comma': '„{text}“ kann zwei Argumente oder ein Dezimalkomma sein: Schreiben Sie {point} für die Zahl oder „{spaced}“ (mit Leerzeichen nach dem Komma) für zwei Argumente',
+  'error.ambiguous-comma':
+    '„{text}“ kann zwei Argumente oder ein Dezimalkomma sein: Schreiben Sie {point} für die Zahl oder „{spaced}“ (mit Leerzeichen nach dem Komma) für zwei Argumente',
   'error.too-many-signs': 'Mehr als {max} Vorzeichen hintereinander',
   'error.operand-left': '„{sign}“ braucht links einen Operanden',
   'error.operand-left-power': '„{sign}“ braucht links einen Operanden (Potenzen schreibt man mit ^)',
@@ -126,13 +158,16 @@ export default {
   'error.line-zero-length': 'Die Gerade ({row}, {col}) hat die Länge null (p = q) und damit keine Richtung',
   'error.lines-cancel': 'Eine verfeinerte Gerade hat keine Richtung: Die Gewichte heben entgegengesetzte Geraden auf',
   'error.parallel-at-step': 'Die Erzeugenden im Schritt {h} sind parallel',
-  'error.no-striction-point': 'Die Fläche hat bei u = {u} keinen Kehlpunkt: Die Erzeugende dort ist zylindrisch (ihre Nachbarn sind zu ihr parallel)',
+  'error.no-striction-point':
+    'Die Fläche hat bei u = {u} keinen Kehlpunkt: Die Erzeugende dort ist zylindrisch (ihre Nachbarn sind zu ihr parallel)',
   'error.not-a-number': '„{text}“ ist keine Zahl',
   'error.not-finite-number': '{text} ist keine endliche Zahl',
   'error.csv-six-numbers': 'Eine Zeile braucht 6 Zahlen (a.x a.y a.z b.x b.y b.z), diese hat {found}',
   'error.csv-no-data': 'Sie enthält keine Zeile mit 6 Zahlen',
-  'error.import-too-few': '{found:Zeile:Zeilen} mit 6 Zahlen: Nötig sind mindestens 2 (eine Regelfläche hat zwei Erzeugende oder mehr)',
-  'error.import-zero-length': 'Die beiden Endpunkte in dieser Zeile fallen zusammen: Eine Erzeugende braucht zwei verschiedene Punkte',
+  'error.import-too-few':
+    '{found:Zeile:Zeilen} mit 6 Zahlen: Nötig sind mindestens 2 (eine Regelfläche hat zwei Erzeugende oder mehr)',
+  'error.import-zero-length':
+    'Die beiden Endpunkte in dieser Zeile fallen zusammen: Eine Erzeugende braucht zwei verschiedene Punkte',
   'error.json-too-deep': 'Tiefer als {max} Ebenen verschachtelt',
   'error.json-end': 'Der Text endet zu früh',
   'error.json-array-separator': '„,“ oder „]“ in einem Array erwartet',

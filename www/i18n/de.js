@@ -13,19 +13,28 @@ export default {
   'app.figures': 'Abbildungen der Arbeit',
   'app.share': 'Teilen',
   'app.onefile': 'Diese Ansicht als eine HTML-Datei herunterladen',
-  'app.onefileMissing': 'Die Fassung in einer Datei liegt hier nicht vor: Führen Sie npm run build aus, oder verwenden Sie die heruntergeladene ruledlab.html.',
+  'app.onefileMissing':
+    'Die Fassung in einer Datei liegt hier nicht vor: Führen Sie npm run build aus, oder verwenden Sie die heruntergeladene ruledlab.html.',
   'app.skip': 'Zu den Bedienelementen springen',
   'share.title': 'Diese Ansicht teilen',
   'share.intro': 'Jedes Feld enthält die aktuelle Szene, ihre Parameter, die Sprache und die Kamera.',
-  'share.fromFile': 'Diese Seite wurde aus einer Datei geöffnet und hat keine Adresse, die andere öffnen könnten. Um diese Ansicht zu teilen, laden Sie sie als eine HTML-Datei herunter und laden diese in Ihren Kurs hoch, oder setzen Sie das Element unten in eine eigene Seite.',
-  'share.noAddress': 'Diese Ansicht wird in einer anderen Seite gezeigt und hat keine eigene Adresse, die andere öffnen könnten. Um sie zu teilen, laden Sie sie als eine HTML-Datei herunter, oder setzen Sie das Element unten in eine eigene Seite.',
-  'share.elementServed': 'Das Skript kommt von dieser Website und lädt auch auf Seiten jeder anderen Website; kopieren Sie es auf Ihren eigenen Server, falls diese Website verschwinden könnte.',
-  'share.elementModule': 'Diese Website hat keine Fassung in einer Datei (npm run build erzeugt sie), daher lädt das Element das Modul ruledlab/view: Auf anderen Websites geht das nur, wenn dieser Server ihnen das Laden seiner Skripte erlaubt (Access-Control-Allow-Origin).',
-  'share.elementUpload': 'Laden Sie {file} (die Schaltfläche darunter lädt sie herunter) neben Ihre Seite hoch. Liegt die Datei woanders, ändern Sie src="{file}" in ihre Adresse.',
+  'share.fromFile':
+    'Diese Seite wurde aus einer Datei geöffnet und hat keine Adresse, die andere öffnen könnten. Um diese Ansicht zu teilen, laden Sie sie als eine HTML-Datei herunter und laden diese in Ihren Kurs hoch, oder setzen Sie das Element unten in eine eigene Seite.',
+  'share.noAddress':
+    'Diese Ansicht wird in einer anderen Seite gezeigt und hat keine eigene Adresse, die andere öffnen könnten. Um sie zu teilen, laden Sie sie als eine HTML-Datei herunter, oder setzen Sie das Element unten in eine eigene Seite.',
+  'share.elementServed':
+    'Das Skript kommt von dieser Website und lädt auch auf Seiten jeder anderen Website; kopieren Sie es auf Ihren eigenen Server, falls diese Website verschwinden könnte.',
+  'share.elementModule':
+    'Diese Website hat keine Fassung in einer Datei (npm run build erzeugt sie), daher lädt das Element das Modul ruledlab/view: Auf anderen Websites geht das nur, wenn dieser Server ihnen das Laden seiner Skripte erlaubt (Access-Control-Allow-Origin).',
+  'share.elementUpload':
+    'Laden Sie {file} (die Schaltfläche darunter lädt sie herunter) neben Ihre Seite hoch. Liegt die Datei woanders, ändern Sie src="{file}" in ihre Adresse.',
   'share.embedDownload': '{file} herunterladen',
-  'share.embedMissing': 'Diese Kopie der Seite kann {file} nicht ausgeben; nehmen Sie die Datei aus dist/ des ruledlab-Pakets.',
-  'share.onefileNote': 'Die ganze Seite mit dieser Ansicht in einer Datei: Sie läuft direkt von der Festplatte und in einer Lernplattform hochgeladen.',
-  'share.framed': 'Wird nichts gespeichert, erlaubt die Seite um diese Ansicht keine Downloads: Öffnen Sie die Ansicht auf einer eigenen Seite.',
+  'share.embedMissing':
+    'Diese Kopie der Seite kann {file} nicht ausgeben; nehmen Sie die Datei aus dist/ des ruledlab-Pakets.',
+  'share.onefileNote':
+    'Die ganze Seite mit dieser Ansicht in einer Datei: Sie läuft direkt von der Festplatte und in einer Lernplattform hochgeladen.',
+  'share.framed':
+    'Wird nichts gespeichert, erlaubt die Seite um diese Ansicht keine Downloads: Öffnen Sie die Ansicht auf einer eigenen Seite.',
   'share.copyWhat': 'Kopieren: {what}',
   'share.selectCopy': 'Markiert: Drücken Sie Strg+C (⌘C) zum Kopieren.',
   'share.link': 'Link',
@@ -40,7 +49,8 @@ export default {
   'io.show': 'Anzeigen',
   'io.staleExample': 'Die Beispieldaten bleiben zu sehen.',
   'io.stale': 'Gezeigt werden weiterhin die zuvor importierten Daten: Dieser Text konnte nicht gelesen werden.',
-  'io.notStored': 'Dieser Import hat mehr als 200 Erzeugende: zu viele für den Link, und diese Seite hat hier keinen Speicher (sie wird in einem abgeschotteten Rahmen gezeigt), daher bleibt er nur, bis die Seite geschlossen wird.',
+  'io.notStored':
+    'Dieser Import hat mehr als 200 Erzeugende: zu viele für den Link, und diese Seite hat hier keinen Speicher (sie wird in einem abgeschotteten Rahmen gezeigt), daher bleibt er nur, bis die Seite geschlossen wird.',
   'io.stored': 'Dieser Import hat mehr als 200 Erzeugende: Er steht im Sitzungsspeicher dieses Tabs, nicht im Link.',
   'io.exports': 'Das Gezeigte speichern',
   'export.png': 'PNG',
@@ -56,15 +66,21 @@ export default {
   'export.invariantsCsv': 'Invarianten (CSV)',
   'export.plot': 'Diagramm (SVG)',
   'element.unknownScene': 'Eine Szene „{scene}“ gibt es nicht. Die Szenen sind: {known}.',
-  'element.unknownPaper': 'Eine Abbildung oder ein Beispiel der Arbeit namens „{paper}“ gibt es nicht. Es gibt: {known}.',
-  'element.badCamera': 'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',
-  'boot.noWebgl2': 'ruledlab konnte nicht starten: Dieser Browser (oder dieses Gerät) bietet kein WebGL2, das die 3D-Ansicht braucht. Aktuelle Versionen von Firefox, Chrome, Edge und Safari bieten es; ein Browser mit abgeschalteter Hardwarebeschleunigung unter Umständen nicht.',
-  'boot.noWasm': 'ruledlab konnte nicht starten: Dieser Browser kann sein WebAssembly nicht ausführen (nötig ist WebAssembly mit SIMD: Chrome 91, Firefox 89, Safari 16.4 oder neuer).',
-  'boot.load': 'ruledlab konnte nicht starten: Eine seiner Dateien wurde nicht geladen. Laden Sie die Seite neu; wird sie in einer anderen Seite gezeigt, blockiert diese sie vielleicht.',
+  'element.unknownPaper':
+    'Eine Abbildung oder ein Beispiel der Arbeit namens „{paper}“ gibt es nicht. Es gibt: {known}.',
+  'element.badCamera':
+    'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',
+  'boot.noWebgl2':
+    'ruledlab konnte nicht starten: Dieser Browser (oder dieses Gerät) bietet kein WebGL2, das die 3D-Ansicht braucht. Aktuelle Versionen von Firefox, Chrome, Edge und Safari bieten es; ein Browser mit abgeschalteter Hardwarebeschleunigung unter Umständen nicht.',
+  'boot.noWasm':
+    'ruledlab konnte nicht starten: Dieser Browser kann sein WebAssembly nicht ausführen (nötig ist WebAssembly mit SIMD: Chrome 91, Firefox 89, Safari 16.4 oder neuer).',
+  'boot.load':
+    'ruledlab konnte nicht starten: Eine seiner Dateien wurde nicht geladen. Laden Sie die Seite neu; wird sie in einer anderen Seite gezeigt, blockiert diese sie vielleicht.',
   'boot.technical': 'Was der Browser meldete',
   'boot.failed': 'ruledlab konnte nicht starten.',
 
-  'view.label': '3D-Ansicht der Szene. Ziehen oder Pfeiltasten drehen sie, Umschalt+Ziehen oder Umschalt+Pfeiltasten verschieben sie, Mausrad oder + und − zoomen, F passt ein, ? zeigt alle Tasten.',
+  'view.label':
+    '3D-Ansicht der Szene. Ziehen oder Pfeiltasten drehen sie, Umschalt+Ziehen oder Umschalt+Pfeiltasten verschieben sie, Mausrad oder + und − zoomen, F passt ein, ? zeigt alle Tasten.',
   'view.fit': 'Einpassen',
   'view.fitTitle': 'Die Ansicht an die Szene anpassen (F)',
   'view.reset': 'Zurücksetzen',
@@ -115,7 +131,8 @@ export default {
   'note.clamped': 'Der Wert von „{key}“ im Link liegt außerhalb des Bereichs; es gilt der nächste erlaubte Wert.',
   'note.unknownChoice': 'Der Wert von „{key}“ im Link ist keine der Auswahlmöglichkeiten; es gilt die Voreinstellung.',
   'note.tooLong': 'Der Wert von „{key}“ im Link ist zu lang; es gilt die Voreinstellung.',
-  'note.linkTooLong': 'Dieser Link ist länger als 64 KiB und wurde nicht gelesen; die Seite beginnt mit ihren Voreinstellungen.',
+  'note.linkTooLong':
+    'Dieser Link ist länger als 64 KiB und wurde nicht gelesen; die Seite beginnt mit ihren Voreinstellungen.',
   'note.unknownScene': 'Der Link nennt eine Szene, die es nicht gibt; die erste Szene wird gezeigt.',
   'note.badCamera': 'Die Kamera im Link konnte nicht gelesen werden; die Ansicht wird an die Szene angepasst.',
   'note.badData': 'Die Daten im Link konnten nicht gelesen werden; die Beispieldaten werden gezeigt.',
@@ -156,7 +173,8 @@ export default {
   'surface.moebius': 'Möbiusband',
   'surface.formula': 'Ihre Fläche',
   'congruence.sphere': 'Geraden auf einer Kugel (von ruledlab, zu Beispiel 4, Abb. 13 links)',
-  'congruence.hyperbolic-paraboloid': 'Geraden auf einem hyperbolischen Paraboloid (von ruledlab, zu Beispiel 4, Abb. 13 rechts)',
+  'congruence.hyperbolic-paraboloid':
+    'Geraden auf einem hyperbolischen Paraboloid (von ruledlab, zu Beispiel 4, Abb. 13 rechts)',
   'congruence.example5': 'Beispiel 5 (Abb. 15)',
   'congruence.ellipsoid-normals': 'Normalen eines Ellipsoids',
   'congruence.two-lines': 'Treffgeraden zweier windschiefer Geraden',
@@ -169,7 +187,8 @@ export default {
   'striction.param.midpoints': 'Lotmittelpunkte (Abb. 3)',
   'striction.param.axis': 'Achse des linearen Komplexes (über die Arbeit hinaus)',
   'striction.param.exact': 'Exakte Kehllinie s(u)',
-  'striction.describe': 'Fläche: {surface}, {closed}, {n} Erzeugende; gezeigt: {shown}. Das Kehlpolygon liegt an den Erzeugenden bis zu {midpoint} von der exakten Kehllinie entfernt; ein einzelner Fußpunkt bis zu {footpoint}.',
+  'striction.describe':
+    'Fläche: {surface}, {closed}, {n} Erzeugende; gezeigt: {shown}. Das Kehlpolygon liegt an den Erzeugenden bis zu {midpoint} von der exakten Kehllinie entfernt; ein einzelner Fußpunkt bis zu {footpoint}.',
   'striction.describe.normals': 'die gemeinsamen Lote mit ihren Fußpunkten',
   'striction.describe.polygon': 'das Kehlpolygon der Fußpunktmittelpunkte',
   'striction.describe.midpoints': 'das Polygon der Lotmittelpunkte',
@@ -183,7 +202,8 @@ export default {
   'notation.readout.angle': 'Winkel φ_{i,i+1} (rad)',
   'notation.readout.distance': 'vorzeichenbehafteter Abstand h_{i,i+1}',
   'notation.readout.delta': 'δ_{i,i+1} = h / φ',
-  'notation.describe': 'Drei aufeinanderfolgende Erzeugende des Hyperboloids aus Beispiel 1, im Parameter {spacing} voneinander entfernt, mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} ist {angle} rad, ihr Abstand {distance}.',
+  'notation.describe':
+    'Drei aufeinanderfolgende Erzeugende des Hyperboloids aus Beispiel 1, im Parameter {spacing} voneinander entfernt, mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} ist {angle} rad, ihr Abstand {distance}.',
 
   'convergence.title': 'Konvergenzordnungen (Sätze 1–2)',
   'convergence.param.u': 'Parameter u',
@@ -206,7 +226,8 @@ export default {
   'convergence.readout.delta': 'Ordnung von δ_{i,i+1}',
   'convergence.readout.deltaMean': 'Ordnung des gemittelten δ̄_i',
   'convergence.readout.normal': 'Ordnung von N_{i,i+1} → Zentraltangente',
-  'convergence.describe': 'Fehler der diskreten Invarianten bei u = {u}, für Schritte ab {h0} über {levels} Halbierungen: Der Fußpunkt konvergiert mit Ordnung {footpoint}, der Mittelpunkt der Fußpunkte mit Ordnung {midpoint}.',
+  'convergence.describe':
+    'Fehler der diskreten Invarianten bei u = {u}, für Schritte ab {h0} über {levels} Halbierungen: Der Fußpunkt konvergiert mit Ordnung {footpoint}, der Mittelpunkt der Fußpunkte mit Ordnung {midpoint}.',
 
   'isometry.title': 'Isometrische Verbiegung und Abwicklung (Abb. 4–6)',
   'isometry.param.layout': 'Ansicht',
@@ -220,8 +241,10 @@ export default {
   'isometry.legend.ghost': 'ursprüngliche Fläche (gestrichelt)',
   'isometry.readout.nonDevelopability': 'Nichtabwickelbarkeit (Höhe des konoidalen Modells)',
   'isometry.readout.isometry': 'max. relative Änderung einer Kantenlänge',
-  'isometry.describe': '{surface} als {n} Erzeugende, isometrisch verbogen bis t = {t} zum konoidalen Modell; das konoidale Modell ist {height} hoch.',
-  'isometry.describePanels': '{surface} als {n} Erzeugende (links), ihr konoidales Modell (Mitte) und ihre Näherungsabwicklung (rechts); das konoidale Modell ist {height} hoch.',
+  'isometry.describe':
+    '{surface} als {n} Erzeugende, isometrisch verbogen bis t = {t} zum konoidalen Modell; das konoidale Modell ist {height} hoch.',
+  'isometry.describePanels':
+    '{surface} als {n} Erzeugende (links), ihr konoidales Modell (Mitte) und ihre Näherungsabwicklung (rechts); das konoidale Modell ist {height} hoch.',
   'isometry.download.development': 'Abwicklung herunterladen (SVG)',
   'isometry.download.title': 'Näherungsabwicklung (ruledlab)',
 
@@ -260,7 +283,8 @@ export default {
   'strip.legend.b': 'B_i (dunkel, große Punkte)',
   'strip.legend.triangulation': 'Triangulierung des verfeinerten Streifens (dünn)',
   'strip.readout.distance': 'max. Abstand eingefügter Erzeugender von der Fläche',
-  'strip.describe': '12 Erzeugende der quartischen Fläche aus Beispiel 3 mit 11 eingefügten Erzeugenden, Schema: {scheme}, n = {n}; die eingefügten Erzeugenden liegen höchstens {distance} von der exakten Fläche entfernt.',
+  'strip.describe':
+    '12 Erzeugende der quartischen Fläche aus Beispiel 3 mit 11 eingefügten Erzeugenden, Schema: {scheme}, n = {n}; die eingefügten Erzeugenden liegen höchstens {distance} von der exakten Fläche entfernt.',
 
   'congruence.title': 'Geradenkongruenzen (Abb. 11–15, Beispiele 4–5)',
   'congruence.param.congruence': 'Kongruenz',
@@ -280,8 +304,10 @@ export default {
   'congruence.readout.lines': 'gezeigte Geraden',
   'congruence.readout.distance': 'max. Abstand neuer Punkte von den exakten Punkten auf d_1',
   'congruence.readout.angle': 'max. Winkel neuer Geraden zu den exakten (rad)',
-  'congruence.describe': '{congruence}: {rows} × {cols} gegebene Geraden, verfeinert mit dem Schema „{scheme}“, insgesamt {lines} Geraden. {error}',
-  'congruence.describe.error': 'Die neuen Geraden liegen in ihren Punkten auf d_1 höchstens {distance} von den exakten entfernt und weichen in der Richtung höchstens {angle} rad ab.',
+  'congruence.describe':
+    '{congruence}: {rows} × {cols} gegebene Geraden, verfeinert mit dem Schema „{scheme}“, insgesamt {lines} Geraden. {error}',
+  'congruence.describe.error':
+    'Die neuen Geraden liegen in ihren Punkten auf d_1 höchstens {distance} von den exakten entfernt und weichen in der Richtung höchstens {angle} rad ab.',
 
   'milling.title': 'Werkzeugbahn für 5-Achs-Fräsen (Beispiel 6, Abb. 16–18)',
   'milling.param.poses': 'Gegebene Lagen',
@@ -307,7 +333,8 @@ export default {
   'milling.readout.deviation': 'max. |Abweichung| vom Profil',
   'milling.readout.angleStep': 'max. Orientierungsschritt (rad)',
   'milling.readout.secondDifference': 'max. 2. Differenz der Achse',
-  'milling.describe': '{poses} gegebene Lagen eines Kugelfräsers, verfeinert mit {steps:Schritt:Schritten} „{scheme}“ zu {total} Lagen; die gefräste Fläche verfehlt das Sollprofil um höchstens {deviation}.',
+  'milling.describe':
+    '{poses} gegebene Lagen eines Kugelfräsers, verfeinert mit {steps:Schritt:Schritten} „{scheme}“ zu {total} Lagen; die gefräste Fläche verfehlt das Sollprofil um höchstens {deviation}.',
   'milling.download.json': 'JSON herunterladen',
   'milling.download.csv': 'CSV herunterladen',
   'milling.download.gcode': 'G-Code herunterladen',
@@ -341,7 +368,8 @@ export default {
   'formula.scheme.lines': 'Vierpunktschema im Geradenraum',
   'formula.legend.given': 'abgetastete Erzeugende',
   'formula.legend.inserted': 'eingefügte Erzeugende',
-  'formula.describeSubdivision': 'Ihre Fläche als {n} Erzeugende, verfeinert mit {steps:Schritt:Schritten} zu {total} Erzeugenden; die eingefügten liegen höchstens {distance} von der exakten Fläche entfernt.',
+  'formula.describeSubdivision':
+    'Ihre Fläche als {n} Erzeugende, verfeinert mit {steps:Schritt:Schritten} zu {total} Erzeugenden; die eingefügten liegen höchstens {distance} von der exakten Fläche entfernt.',
 
   'formulaCongruence.title': 'Ihre Kongruenz (Formeln)',
   'focal.title': 'Brennflächen (über die Arbeit hinaus)',
@@ -361,8 +389,10 @@ export default {
   'focal.readout.complex': 'linearer Komplex',
   'focal.readout.pitch': 'Parameter des Komplexes',
   'focal.none': 'keine reell',
-  'focal.describe': '{hyperbolic} von {lines} Geraden haben zwei reelle Brennpunkte, {elliptic} keinen, {parabolic} einen doppelten.{normality} Die Geraden passen zu: {complex}.',
-  'focal.describe.normality': ' Die Brennebenen schneiden sich unter |cos| bis {normality} (0 für die Normalen einer Fläche).',
+  'focal.describe':
+    '{hyperbolic} von {lines} Geraden haben zwei reelle Brennpunkte, {elliptic} keinen, {parabolic} einen doppelten.{normality} Die Geraden passen zu: {complex}.',
+  'focal.describe.normality':
+    ' Die Brennebenen schneiden sich unter |cos| bis {normality} (0 für die Normalen einer Fläche).',
   'complex.kind.general': 'kein linearer Komplex',
   'complex.kind.complex': 'ein linearer Komplex',
   'complex.kind.congruence': 'eine lineare Kongruenz',
@@ -389,7 +419,8 @@ export default {
   'lines.legend.lines': 'Vierpunktschema auf den Geraden',
   'lines.readout.endpoints': 'Endpunktschema: neue Erzeugende gedreht um (rad)',
   'lines.readout.lines': 'Geradenraumschema: gedreht um (rad)',
-  'lines.describe': 'Neun Erzeugende: {surface}, ihre Endpunkte entlang der Erzeugenden um {slide} des Musters verschoben; die neuen Erzeugenden des Endpunktschemas drehten sich um bis zu {endpointTurn} rad, die des Geradenraumschemas um {lineTurn}.',
+  'lines.describe':
+    'Neun Erzeugende: {surface}, ihre Endpunkte entlang der Erzeugenden um {slide} des Musters verschoben; die neuen Erzeugenden des Endpunktschemas drehten sich um bis zu {endpointTurn} rad, die des Geradenraumschemas um {lineTurn}.',
 
   'large.title': 'Große Modelle in einem Web Worker',
   'large.param.steps': 'Schritte des Vierpunktschemas',
@@ -399,43 +430,53 @@ export default {
   'large.readout.drawn': 'Erzeugende im gezeichneten Streifen',
   'large.readout.lines': 'als Linien gezeichnete Erzeugende',
   'large.note.lod': 'Detailstufe: Der Streifen wird durch jede {every}. Erzeugende gezeichnet ({drawn} davon).',
-  'large.note.lines': 'Jede {every}. Erzeugende wird als Linie gezeichnet, damit die Linien auf dem Bildschirm getrennt bleiben.',
+  'large.note.lines':
+    'Jede {every}. Erzeugende wird als Linie gezeichnet, damit die Linien auf dem Bildschirm getrennt bleiben.',
   'large.describe': 'Eine Wendelfläche mit {rulings} Erzeugenden, davon {drawn} gezeichnet.',
 
   'data.title': 'Ihre Daten (CSV oder JSON importieren)',
   'data.param.closed': 'Geschlossen (auf die letzte Erzeugende folgt die erste)',
   'data.legend.rulings': 'Ihre Erzeugenden',
   'data.readout.lines': 'Geraden (Kongruenz)',
-  'data.describe': 'Ihre Regelfläche aus {n} Erzeugenden ({parallel} parallele Paare) mit ihren gemeinsamen Loten und ihrem Kehlpolygon.',
+  'data.describe':
+    'Ihre Regelfläche aus {n} Erzeugenden ({parallel} parallele Paare) mit ihren gemeinsamen Loten und ihrem Kehlpolygon.',
   'data.describeCongruence': 'Ihre Geradenkongruenz aus {rows} × {cols} Geraden.',
   'claim.title': 'Aussagen des Textes, an der Anzeige geprüft',
   'claim.holds': 'trifft hier zu',
   'claim.fails': 'trifft bei diesen Einstellungen nicht zu',
   'isometry.readout.radius': 'ρ, Krümmungsradius der Hüllkurve der abgewickelten Erzeugenden (mittlere Erzeugende)',
   'isometry.readout.radiusFiner': 'ρ mit 2N − 1 Erzeugenden',
-  'isometry.claim.helical': 'Die Bildunterschrift von Abb. 5 trifft hier nicht zu: ab 6 Erzeugenden liegt ρ höchstens 0,1 neben r + p tan β = 1,4; die konoidalen Erzeugenden berühren einen Zylinder mit diesem Radius und verfehlen die Achse.',
-  'isometry.claim.orthogonal': 'Hier trifft die Bildunterschrift im Grenzwert zu: ρ geht mit zweiter Ordnung gegen 0 (bei doppelt so vielen Erzeugenden auf ein Drittel bis ein Fünftel).',
+  'isometry.claim.helical':
+    'Die Bildunterschrift von Abb. 5 trifft hier nicht zu: ab 6 Erzeugenden liegt ρ höchstens 0,1 neben r + p tan β = 1,4; die konoidalen Erzeugenden berühren einen Zylinder mit diesem Radius und verfehlen die Achse.',
+  'isometry.claim.orthogonal':
+    'Hier trifft die Bildunterschrift im Grenzwert zu: ρ geht mit zweiter Ordnung gegen 0 (bei doppelt so vielen Erzeugenden auf ein Drittel bis ein Fünftel).',
   'strip.readout.compare.midpoint': 'Mittelpunktsregel: max. Abstand',
   'strip.readout.compare.literal': 'wörtlich (15): max. Abstand',
   'strip.readout.compare.coupled': 'gekoppelt: max. Abstand',
   'strip.readout.compare.averaged': 'gemittelt: max. Abstand',
   'strip.readout.compare.fourPoint': 'Vierpunktschema: max. Abstand',
   'strip.claim.literal': 'Wörtlich gelesen ist (15) die Mittelpunktsregel: ihre Abstände sind für jedes n gleich.',
-  'strip.claim.coupled': 'Für n ≥ 6 kommt die gekoppelte Energie der Fläche näher als die Mittelpunktsregel (für n = 3, 4 nicht).',
-  'strip.claim.fourPoint': 'Das Vierpunktschema ist auf dieser Fläche exakt, an der schlechtesten Erzeugenden das beste: seine Randkurven sind quadratisch, und w = 1/16 reproduziert sie.',
+  'strip.claim.coupled':
+    'Für n ≥ 6 kommt die gekoppelte Energie der Fläche näher als die Mittelpunktsregel (für n = 3, 4 nicht).',
+  'strip.claim.fourPoint':
+    'Das Vierpunktschema ist auf dieser Fläche exakt, an der schlechtesten Erzeugenden das beste: seine Randkurven sind quadratisch, und w = 1/16 reproduziert sie.',
   'congruence.readout.compare.paper': 'Schema der Arbeit, 1 Schritt: Abstand / Winkel',
   'congruence.readout.compare.two-stage': 'zweistufig, 1 Schritt: Abstand / Winkel',
   'congruence.readout.compare.coupled': 'gekoppelt, 1 Schritt: Abstand / Winkel',
   'congruence.readout.compare.butterfly': 'Butterfly, 1 Schritt: Abstand / Winkel',
-  'congruence.claim.butterfly': 'Nach einem Schritt liegen die neuen Geraden des Butterfly-Schemas auf jeder eingebauten Kongruenz in der Richtung am genauesten und nicht weiter entfernt als die jedes variationellen Schemas.',
+  'congruence.claim.butterfly':
+    'Nach einem Schritt liegen die neuen Geraden des Butterfly-Schemas auf jeder eingebauten Kongruenz in der Richtung am genauesten und nicht weiter entfernt als die jedes variationellen Schemas.',
   'milling.readout.compare.given': 'nur gegebene Lagen: max. |Abweichung|',
   'milling.readout.compare.variational': 'variationell (gekoppelt): max. |Abweichung|',
   'milling.readout.compare.averaged': 'variationell (gemittelt): max. |Abweichung|',
   'milling.readout.compare.four-point': 'Vierpunktschema: max. |Abweichung|',
   'milling.readout.compare.linear': 'linear (Mittelpunkte): max. |Abweichung|',
-  'milling.claim.refined': 'Die glättenden Schemata (beide variationellen und das Vierpunktschema) fräsen näher am Profil als die gegebenen Lagen allein; die Mittelpunktsregel nicht unbedingt.',
-  'milling.claim.variational': 'Ab 7 gegebenen Lagen lassen beide variationellen Schemata bei jeder Schrittzahl eine kleinere Abweichung als das Vierpunktschema und die Mittelpunktsregel.',
-  'note.unknownFigure': 'Der Link nennt eine Abbildung der Arbeit, die ruledlab nicht kennt; die Szene wird ohne sie gezeigt.',
+  'milling.claim.refined':
+    'Die glättenden Schemata (beide variationellen und das Vierpunktschema) fräsen näher am Profil als die gegebenen Lagen allein; die Mittelpunktsregel nicht unbedingt.',
+  'milling.claim.variational':
+    'Ab 7 gegebenen Lagen lassen beide variationellen Schemata bei jeder Schrittzahl eine kleinere Abweichung als das Vierpunktschema und die Mittelpunktsregel.',
+  'note.unknownFigure':
+    'Der Link nennt eine Abbildung der Arbeit, die ruledlab nicht kennt; die Szene wird ohne sie gezeigt.',
   'paper.none': '— keine —',
   'paper.heading': 'Aus der Arbeit: {figure}',
   'paper.changed': 'Sie haben die Einstellungen der Abbildung geändert.',
@@ -471,60 +512,103 @@ export default {
   'paper.ex5': 'Beispiel 5: variationelle Kongruenz',
   'paper.ex6': 'Beispiel 6: Fräsen',
   'paper.fig1.caption': '„Diskretes Regelflächenmodell: Bezeichnungen.“ (übersetzt)',
-  'paper.fig1.note': 'Drei aufeinanderfolgende Erzeugende R_{i−1}, R_i, R_{i+1} mit den gemeinsamen Loten N_{i,i+1}, den Fußpunkten f_{i,i+1}, f_{i+1,i}, dem Winkel φ_{i,i+1} und dem Abstand h_{i,i+1}. Die Arbeit gibt keine Daten an; ruledlab verwendet drei Erzeugende des Hyperboloids aus Beispiel 1 (Abstand und Lage sind Schieberegler).',
-  'paper.fig2.caption': '„Diskretes Modell einer Regelfläche mit Kehllinie und der Folge der gemeinsamen Normalen der Erzeugenden.“ (übersetzt)',
-  'paper.fig2.note': 'Das Hyperboloid x² + y²/4 − z²/9 = 1 aus Beispiel 1 (aus der Arbeit) mit den gemeinsamen Loten und dem Kehlpolygon m_i aus Satz 2. Die Zahl der Erzeugenden (36) und die Länge der Strecken wählt ruledlab: Die Arbeit nennt beides nicht.',
+  'paper.fig1.note':
+    'Drei aufeinanderfolgende Erzeugende R_{i−1}, R_i, R_{i+1} mit den gemeinsamen Loten N_{i,i+1}, den Fußpunkten f_{i,i+1}, f_{i+1,i}, dem Winkel φ_{i,i+1} und dem Abstand h_{i,i+1}. Die Arbeit gibt keine Daten an; ruledlab verwendet drei Erzeugende des Hyperboloids aus Beispiel 1 (Abstand und Lage sind Schieberegler).',
+  'paper.fig2.caption':
+    '„Diskretes Modell einer Regelfläche mit Kehllinie und der Folge der gemeinsamen Normalen der Erzeugenden.“ (übersetzt)',
+  'paper.fig2.note':
+    'Das Hyperboloid x² + y²/4 − z²/9 = 1 aus Beispiel 1 (aus der Arbeit) mit den gemeinsamen Loten und dem Kehlpolygon m_i aus Satz 2. Die Zahl der Erzeugenden (36) und die Länge der Strecken wählt ruledlab: Die Arbeit nennt beides nicht.',
   'paper.fig3.caption': '„Diskretes Modell einer Regelfläche mit diskreter Zentralkurve.“ (übersetzt)',
-  'paper.fig3.note': 'Das Polygon, das Beispiel 1 beschreibt: die Mittelpunkte (f_{i,i+1} + f_{i+1,i})/2 der gemeinsamen Lote, auf dem Hyperboloid der Arbeit mit 36 Erzeugenden (Zahl von ruledlab).',
-  'paper.fig3.beyond': 'Das ist nicht das Kehlpolygon m_i aus Satz 2, das der Text als diskrete Kehllinie verwendet: Es nähert die Kehllinie zwischen zwei Erzeugenden, bei u + H/2, ebenfalls mit zweiter Ordnung (ERRATA.md 6). Schalten Sie das Kehlpolygon dazu, um beide zu sehen; die Anzeige misst jedes.',
-  'paper.fig4.caption': '„Diskretes Regelflächenmodell (links) und dazu isometrisches konoidales Modell (rechts).“ (übersetzt)',
-  'paper.fig4.note': 'Die Gelenkkette ganz in ihr konoidales Modell gedreht (t = 1), die Fläche selbst blass dahinter, in einer Ansicht statt nebeneinander (die Anordnung in drei Feldern ist Abb. 6). Die Arbeit gibt keine Daten an; ruledlab verwendet 24 Erzeugende der Quartik aus Beispiel 3.',
-  'paper.fig5.caption': '„Links: Schraubregelfläche. Rechts: isometrische konoidale Fläche. In diesem Fall ist das Ergebnis eine Schraubfläche, deren Erzeugende die Achse senkrecht schneiden.“ (übersetzt)',
-  'paper.fig5.note': 'Eine Schraubregelfläche, in ihr konoidales Modell verbogen. Die Arbeit gibt keine Daten an; ruledlab verwendet Radius 1, Ganghöhe 0,4 und Erzeugende unter 45°.',
-  'paper.fig5-orthogonal.note': 'Dieselbe Schraublinie mit Erzeugenden normal zur Kehlschraublinie (tan β = −r/p), der Fall, in dem die Bildunterschrift zutrifft: Die Anzeige ρ strebt gegen 0, die konoidalen Erzeugenden treffen im Grenzwert die Achse. Die Arbeit gibt keine Daten an; die Fläche wählt ruledlab.',
-  'paper.fig5.beyond': 'Die Bildunterschrift trifft nur zu, wenn die Erzeugenden die Kehllinie rechtwinklig kreuzen (e·ṡ = 0); das sagt die Arbeit nicht. Im Allgemeinen berühren die konoidalen Erzeugenden einen Zylinder um die Achse mit Radius ρ = (e·ṡ)/|e′|, für diese Flächen r + p tan β: 1,4 unter 45°, 0 im rechten Winkel. Die Anzeige misst ρ, die Aussagen darunter werden geprüft.',
-  'paper.fig6.caption': '„Genäherte Abwicklung einer windschiefen Regelfläche auf Grund der diskreten Darstellung: links das diskrete Modell einer windschiefen Regelfläche, in der Mitte das isometrische konoidale diskrete Modell, rechts die Projektion der diskreten konoidalen Fläche normal zu ihren Erzeugenden.“ (übersetzt)',
-  'paper.fig6.note': 'Die drei Felder von Abb. 6: ein Streifen des Hyperboloids aus Beispiel 1, sein konoidales Modell und die Abwicklung; die Anzeige nennt die Höhe des konoidalen Modells, das Maß der Nichtabwickelbarkeit. Die Arbeit gibt keine Daten an; den Streifen (24 Erzeugende, u von 0 bis 2,4) wählt ruledlab.',
+  'paper.fig3.note':
+    'Das Polygon, das Beispiel 1 beschreibt: die Mittelpunkte (f_{i,i+1} + f_{i+1,i})/2 der gemeinsamen Lote, auf dem Hyperboloid der Arbeit mit 36 Erzeugenden (Zahl von ruledlab).',
+  'paper.fig3.beyond':
+    'Das ist nicht das Kehlpolygon m_i aus Satz 2, das der Text als diskrete Kehllinie verwendet: Es nähert die Kehllinie zwischen zwei Erzeugenden, bei u + H/2, ebenfalls mit zweiter Ordnung (ERRATA.md 6). Schalten Sie das Kehlpolygon dazu, um beide zu sehen; die Anzeige misst jedes.',
+  'paper.fig4.caption':
+    '„Diskretes Regelflächenmodell (links) und dazu isometrisches konoidales Modell (rechts).“ (übersetzt)',
+  'paper.fig4.note':
+    'Die Gelenkkette ganz in ihr konoidales Modell gedreht (t = 1), die Fläche selbst blass dahinter, in einer Ansicht statt nebeneinander (die Anordnung in drei Feldern ist Abb. 6). Die Arbeit gibt keine Daten an; ruledlab verwendet 24 Erzeugende der Quartik aus Beispiel 3.',
+  'paper.fig5.caption':
+    '„Links: Schraubregelfläche. Rechts: isometrische konoidale Fläche. In diesem Fall ist das Ergebnis eine Schraubfläche, deren Erzeugende die Achse senkrecht schneiden.“ (übersetzt)',
+  'paper.fig5.note':
+    'Eine Schraubregelfläche, in ihr konoidales Modell verbogen. Die Arbeit gibt keine Daten an; ruledlab verwendet Radius 1, Ganghöhe 0,4 und Erzeugende unter 45°.',
+  'paper.fig5-orthogonal.note':
+    'Dieselbe Schraublinie mit Erzeugenden normal zur Kehlschraublinie (tan β = −r/p), der Fall, in dem die Bildunterschrift zutrifft: Die Anzeige ρ strebt gegen 0, die konoidalen Erzeugenden treffen im Grenzwert die Achse. Die Arbeit gibt keine Daten an; die Fläche wählt ruledlab.',
+  'paper.fig5.beyond':
+    'Die Bildunterschrift trifft nur zu, wenn die Erzeugenden die Kehllinie rechtwinklig kreuzen (e·ṡ = 0); das sagt die Arbeit nicht. Im Allgemeinen berühren die konoidalen Erzeugenden einen Zylinder um die Achse mit Radius ρ = (e·ṡ)/|e′|, für diese Flächen r + p tan β: 1,4 unter 45°, 0 im rechten Winkel. Die Anzeige misst ρ, die Aussagen darunter werden geprüft.',
+  'paper.fig6.caption':
+    '„Genäherte Abwicklung einer windschiefen Regelfläche auf Grund der diskreten Darstellung: links das diskrete Modell einer windschiefen Regelfläche, in der Mitte das isometrische konoidale diskrete Modell, rechts die Projektion der diskreten konoidalen Fläche normal zu ihren Erzeugenden.“ (übersetzt)',
+  'paper.fig6.note':
+    'Die drei Felder von Abb. 6: ein Streifen des Hyperboloids aus Beispiel 1, sein konoidales Modell und die Abwicklung; die Anzeige nennt die Höhe des konoidalen Modells, das Maß der Nichtabwickelbarkeit. Die Arbeit gibt keine Daten an; den Streifen (24 Erzeugende, u von 0 bis 2,4) wählt ruledlab.',
   'paper.fig7.caption': '„Algorithmus von Chaikin.“ (übersetzt)',
-  'paper.fig7.note': 'Vier Schritte des Algorithmus von Chaikin, jede Stufe gezeichnet. Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet einen Stern aus acht Punkten.',
+  'paper.fig7.note':
+    'Vier Schritte des Algorithmus von Chaikin, jede Stufe gezeichnet. Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet einen Stern aus acht Punkten.',
   'paper.fig8.caption': '„Interpolierende Unterteilung nach Dyn, Levin und Gregory (w = 1/13).“ (übersetzt)',
-  'paper.fig8.note': 'Vier Schritte von (8) mit dem w = 1/13 der Arbeit, exakt (tippen Sie einen Bruch in das Feld neben dem Schieberegler). Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet einen Stern aus acht Punkten.',
-  'paper.fig9.caption': '„Grundlegende Bezeichnungen für einen unterteilten Regelflächenstreifen, die beiden verschiedenen Triangulierungen.“ (übersetzt)',
-  'paper.fig9.note': 'Die Bezeichnungen a_i, b_i, A_i, B_i, z_{i,k}, Z_{i,k} am Streifen der Quartik aus Beispiel 3 mit der ersten Triangulierung (11); die zweite (12) im Menü (ruledlab zeichnet je eine). n = 6 statt der 12 aus Beispiel 3, damit man die Dreiecke lesen kann.',
-  'paper.fig10.caption': '„12 Erzeugende einer quartischen Regelfläche R, 11 Geraden eingefügt; hellgraue Kugeln um A_i, dunkelgraue Kugeln um B_i.“ (übersetzt)',
-  'paper.fig10.note': 'Beispiel 3 mit den Daten der Arbeit: 12 Erzeugende von (1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1] (das Intervall wählt ruledlab: Die Arbeit nennt keines), n = 12, ein Schritt der Energie (15) wörtlich gelesen; Kugeln um A_i (hell) und B_i (dunkel).',
-  'paper.strip.beyond': 'Wörtlich gelesen setzt (15) Umbrella-Vektoren nur in die neuen Punkte, und das Minimum ist genau die Mittelpunktsregel (ERRATA.md; unter der Anzeige geprüft). Die gekoppelte und die gemittelte Energie von ruledlab setzen sie in jeden Knoten; die Anzeige vergleicht jedes Schema bei diesem n: Gekoppelt schlägt die Mittelpunktsregel ab n = 6, und das Vierpunktschema ist auf dieser Fläche exakt.',
+  'paper.fig8.note':
+    'Vier Schritte von (8) mit dem w = 1/13 der Arbeit, exakt (tippen Sie einen Bruch in das Feld neben dem Schieberegler). Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet einen Stern aus acht Punkten.',
+  'paper.fig9.caption':
+    '„Grundlegende Bezeichnungen für einen unterteilten Regelflächenstreifen, die beiden verschiedenen Triangulierungen.“ (übersetzt)',
+  'paper.fig9.note':
+    'Die Bezeichnungen a_i, b_i, A_i, B_i, z_{i,k}, Z_{i,k} am Streifen der Quartik aus Beispiel 3 mit der ersten Triangulierung (11); die zweite (12) im Menü (ruledlab zeichnet je eine). n = 6 statt der 12 aus Beispiel 3, damit man die Dreiecke lesen kann.',
+  'paper.fig10.caption':
+    '„12 Erzeugende einer quartischen Regelfläche R, 11 Geraden eingefügt; hellgraue Kugeln um A_i, dunkelgraue Kugeln um B_i.“ (übersetzt)',
+  'paper.fig10.note':
+    'Beispiel 3 mit den Daten der Arbeit: 12 Erzeugende von (1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1] (das Intervall wählt ruledlab: Die Arbeit nennt keines), n = 12, ein Schritt der Energie (15) wörtlich gelesen; Kugeln um A_i (hell) und B_i (dunkel).',
+  'paper.strip.beyond':
+    'Wörtlich gelesen setzt (15) Umbrella-Vektoren nur in die neuen Punkte, und das Minimum ist genau die Mittelpunktsregel (ERRATA.md; unter der Anzeige geprüft). Die gekoppelte und die gemittelte Energie von ruledlab setzen sie in jeden Knoten; die Anzeige vergleicht jedes Schema bei diesem n: Gekoppelt schlägt die Mittelpunktsregel ab n = 6, und das Vierpunktschema ist auf dieser Fläche exakt.',
   'paper.fig11.caption': '„Durch zwei Leitflächen bestimmte Geradenkongruenz.“ (übersetzt)',
-  'paper.fig11.note': 'Die Geraden aus Beispiel 5 zwischen den Leitflächen d₁ und d₂, beide schattiert. Die Abbildung der Arbeit ist eine Skizze; ruledlab nimmt für d₂ die Punkte p + 0,35 d (die Arbeit nennt keine Länge der Strecken, ERRATA.md 9).',
+  'paper.fig11.note':
+    'Die Geraden aus Beispiel 5 zwischen den Leitflächen d₁ und d₂, beide schattiert. Die Abbildung der Arbeit ist eine Skizze; ruledlab nimmt für d₂ die Punkte p + 0,35 d (die Arbeit nennt keine Länge der Strecken, ERRATA.md 9).',
   'paper.fig12.caption': '„Das Butterfly-Schema.“ (übersetzt)',
-  'paper.fig12.note': 'Die Schablone von (16) ist neben der Ansicht mit allen Gewichten gezeichnet (w = 1/16); die Ansicht zeigt die Geraden, die sie auf den Diagonalen des Gitters aus Beispiel 5 einfügt (ein Schritt, wie in der Arbeit).',
-  'paper.fig13.caption': '„Links: Teil einer Kugel mit Geraden der Kongruenz (schwarz, dünn) und eingefügten Geraden (schwarz, dick). Rechts: Teil eines hyperbolischen Paraboloids, Geraden der Kongruenz (schwarz, dünn), eingefügte Geraden (schwarz, dick).“ (übersetzt)',
-  'paper.fig13.note': 'Abb. 13 links: Geraden nur auf den Diagonalen eingefügt, wie in der Arbeit. Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kugel von ruledlab trägt die Richtungen Normale + 0,3 (sin 2v, cos 3u, uv), eine verallgemeinerte Offsetfläche, keine Normalenkongruenz. Eingefügte Geraden sind farbig statt dick schwarz gezeichnet.',
-  'paper.fig13-right.note': 'Abb. 13 rechts: Geraden nur auf den Diagonalen eingefügt. Für Beispiel 4 gibt die Arbeit keine Formeln an; das hyperbolische Paraboloid z = xy von ruledlab trägt die Richtungen (−v, −u, 1) + 0,3 (cos 2v, sin u, 0).',
-  'paper.fig14.caption': '„Punktschema auf der Leitfläche d₁ (links), Teil der Kongruenz mit einigen Bezeichnungen (rechts).“ (übersetzt)',
-  'paper.fig14.note': 'Die Bezeichnungen aus Abschnitt 5.2 an einer Masche von Beispiel 5: die gegebenen Geraden R_{i,j} mit ihren Punkten p auf d₁ und q auf d₂, die Kantengeraden T_{i,j} (Punkte r, r′) und S_{i,j} (s, s′) und die Maschengerade R̄_{i,j} (Punkte P, Q). Die Indexbereiche folgen ERRATA.md 9.',
-  'paper.fig15.caption': '„Diskrete Geradenkongruenz (links), eingefügte Geraden (schwarz, dick) (rechts).“ (übersetzt)',
-  'paper.fig15.note': 'Beispiel 5 mit den Daten der Arbeit: d₁ = (u, v, ½ sin(2u + 1,5v)), Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6, einmal verfeinert mit dem wörtlich gelesenen variationellen Schema der Arbeit: Kantengeraden nach der Mittelpunktsregel, jede Maschengerade das Mittel ihrer acht Nachbarn (ERRATA.md).',
-  'paper.congruence.beyond': 'Wörtlich gelesen liefern die Energien (15) und (21) bloße Mittelwerte; ruledlab bietet außerdem „zweistufig“ (seine gekoppelte Streifenenergie auf den Kanten), „gekoppelt“ (alle neuen Geraden in einem dünn besetzten System) und das Butterfly-Schema auf allen Kanten. Die Anzeige vergleicht alle vier nach einem Schritt; auf jeder eingebauten Kongruenz ist das Butterfly-Schema am genauesten (unter der Anzeige geprüft).',
+  'paper.fig12.note':
+    'Die Schablone von (16) ist neben der Ansicht mit allen Gewichten gezeichnet (w = 1/16); die Ansicht zeigt die Geraden, die sie auf den Diagonalen des Gitters aus Beispiel 5 einfügt (ein Schritt, wie in der Arbeit).',
+  'paper.fig13.caption':
+    '„Links: Teil einer Kugel mit Geraden der Kongruenz (schwarz, dünn) und eingefügten Geraden (schwarz, dick). Rechts: Teil eines hyperbolischen Paraboloids, Geraden der Kongruenz (schwarz, dünn), eingefügte Geraden (schwarz, dick).“ (übersetzt)',
+  'paper.fig13.note':
+    'Abb. 13 links: Geraden nur auf den Diagonalen eingefügt, wie in der Arbeit. Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kugel von ruledlab trägt die Richtungen Normale + 0,3 (sin 2v, cos 3u, uv), eine verallgemeinerte Offsetfläche, keine Normalenkongruenz. Eingefügte Geraden sind farbig statt dick schwarz gezeichnet.',
+  'paper.fig13-right.note':
+    'Abb. 13 rechts: Geraden nur auf den Diagonalen eingefügt. Für Beispiel 4 gibt die Arbeit keine Formeln an; das hyperbolische Paraboloid z = xy von ruledlab trägt die Richtungen (−v, −u, 1) + 0,3 (cos 2v, sin u, 0).',
+  'paper.fig14.caption':
+    '„Punktschema auf der Leitfläche d₁ (links), Teil der Kongruenz mit einigen Bezeichnungen (rechts).“ (übersetzt)',
+  'paper.fig14.note':
+    'Die Bezeichnungen aus Abschnitt 5.2 an einer Masche von Beispiel 5: die gegebenen Geraden R_{i,j} mit ihren Punkten p auf d₁ und q auf d₂, die Kantengeraden T_{i,j} (Punkte r, r′) und S_{i,j} (s, s′) und die Maschengerade R̄_{i,j} (Punkte P, Q). Die Indexbereiche folgen ERRATA.md 9.',
+  'paper.fig15.caption':
+    '„Diskrete Geradenkongruenz (links), eingefügte Geraden (schwarz, dick) (rechts).“ (übersetzt)',
+  'paper.fig15.note':
+    'Beispiel 5 mit den Daten der Arbeit: d₁ = (u, v, ½ sin(2u + 1,5v)), Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6, einmal verfeinert mit dem wörtlich gelesenen variationellen Schema der Arbeit: Kantengeraden nach der Mittelpunktsregel, jede Maschengerade das Mittel ihrer acht Nachbarn (ERRATA.md).',
+  'paper.congruence.beyond':
+    'Wörtlich gelesen liefern die Energien (15) und (21) bloße Mittelwerte; ruledlab bietet außerdem „zweistufig“ (seine gekoppelte Streifenenergie auf den Kanten), „gekoppelt“ (alle neuen Geraden in einem dünn besetzten System) und das Butterfly-Schema auf allen Kanten. Die Anzeige vergleicht alle vier nach einem Schritt; auf jeder eingebauten Kongruenz ist das Butterfly-Schema am genauesten (unter der Anzeige geprüft).',
   'paper.fig16.caption': '„Erster Schritt der Verfeinerung.“ (übersetzt)',
-  'paper.fig16.note': 'Beispiel 6 nach einem Schritt: gegebene Werkzeugachsen dunkel, eingefügte hell, das Werkzeug als Zylinder mit Kugelende, die Schwerpunktkurve gestrichelt, die gefegte Kugel über dem Werkstück. Die Arbeit gibt keine Daten an; Profil, sieben Lagen und Werkzeug (Radius 0,25, Länge 1,5) stammen von ruledlab.',
+  'paper.fig16.note':
+    'Beispiel 6 nach einem Schritt: gegebene Werkzeugachsen dunkel, eingefügte hell, das Werkzeug als Zylinder mit Kugelende, die Schwerpunktkurve gestrichelt, die gefegte Kugel über dem Werkstück. Die Arbeit gibt keine Daten an; Profil, sieben Lagen und Werkzeug (Radius 0,25, Länge 1,5) stammen von ruledlab.',
   'paper.fig17.caption': '„Zweiter Schritt der Verfeinerung.“ (übersetzt)',
   'paper.fig17.note': 'Beispiel 6 nach zwei Schritten (Daten von ruledlab, wie in Abb. 16).',
   'paper.fig18.caption': '„Dritter Schritt der Verfeinerung.“ (übersetzt)',
   'paper.fig18.note': 'Beispiel 6 nach drei Schritten (Daten von ruledlab, wie in Abb. 16).',
-  'paper.milling.beyond': 'Die Arbeit verfeinert die Bahn „wie in Abschnitt 4 beschrieben“; wörtlich gelesen ist diese Energie die Mittelpunktsregel („linear“ im Menü). ruledlab verwendet stattdessen seine gekoppelte Energie; die Anzeige nennt die Abweichung jedes Schemas vom Profil, und die Aussagen darunter sagen, wo die variationellen Schemata am nächsten kommen.',
-  'paper.ex1.caption': 'Beispiel 1: ein diskretisierter Regulus des Hyperboloids x² + y²/4 − z²/9 = 1 mit seiner Kehllinie.',
-  'paper.ex1.note': 'Beide diskreten Kehlpolygone, m_i aus Satz 2 und die Lotmittelpunkte aus Abb. 3, gegen die exakte Kehllinie; die Anzeige misst jedes. Das Hyperboloid stammt aus der Arbeit, die 36 Erzeugenden von ruledlab.',
+  'paper.milling.beyond':
+    'Die Arbeit verfeinert die Bahn „wie in Abschnitt 4 beschrieben“; wörtlich gelesen ist diese Energie die Mittelpunktsregel („linear“ im Menü). ruledlab verwendet stattdessen seine gekoppelte Energie; die Anzeige nennt die Abweichung jedes Schemas vom Profil, und die Aussagen darunter sagen, wo die variationellen Schemata am nächsten kommen.',
+  'paper.ex1.caption':
+    'Beispiel 1: ein diskretisierter Regulus des Hyperboloids x² + y²/4 − z²/9 = 1 mit seiner Kehllinie.',
+  'paper.ex1.note':
+    'Beide diskreten Kehlpolygone, m_i aus Satz 2 und die Lotmittelpunkte aus Abb. 3, gegen die exakte Kehllinie; die Anzeige misst jedes. Das Hyperboloid stammt aus der Arbeit, die 36 Erzeugenden von ruledlab.',
   'paper.ex2.caption': 'Beispiel 2: Jede Regelfläche lässt sich isometrisch auf eine konoidale Regelfläche abbilden.',
-  'paper.ex2.note': 'Die Gelenkkette der Quartik aus Beispiel 3 auf halbem Weg (t = 0,5) zwischen der Fläche und ihrem konoidalen Modell; verschieben Sie t oder spielen Sie es ab. Die Anzeige der Kantenlängen zeigt, dass die Verbiegung bis auf Rundung isometrisch ist. Die Arbeit gibt keine Daten an.',
-  'paper.ex3.caption': 'Beispiel 3: N = 12 Erzeugende der quartischen Regelfläche (1 + vu², u²/2 + uv, u − v), n = 12, ein Schritt der variationellen Unterteilung.',
-  'paper.ex3.note': 'Beispiel 3 mit den Daten der Arbeit, der ersten Triangulierung und der exakten Fläche blass dahinter; die Anzeige misst den Abstand der eingefügten Erzeugenden von der Fläche für jedes Schema.',
-  'paper.ex4.caption': 'Beispiel 4: das Butterfly-Schema auf Kongruenzen mit zwei verschiedenen Leitflächen d₁; d₂, eine verallgemeinerte Offsetfläche, ist in der Arbeit nicht gezeichnet.',
-  'paper.ex4.note': 'Die Kugel aus Abb. 13 mit Geraden nur auf den Diagonalen, dazu d₂ schattiert (das die Arbeit nicht zeichnet). Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kongruenz wählt ruledlab.',
-  'paper.ex5.caption': 'Beispiel 5: d₁ = (u, v, ½ sin(2u + 1,5v)), Geraden parallel zu (u, v, sin u + 1,3 cos v), 8 × 7 Werte auf [−1,1; 1,1]², K = 6.',
-  'paper.ex5.note': 'Beispiel 5 mit den Daten der Arbeit, einmal mit dem wörtlich gelesenen Schema der Arbeit verfeinert, mit beiden Leitflächen (d₂ = p + 0,35 d: Die Arbeit nennt keine Länge der Strecken).',
-  'paper.ex6.caption': 'Beispiel 6: einige Lagen eines Fräswerkzeugs entlang eines Profils, durch die variationelle Unterteilung aus Abschnitt 4 zu einer glatten Bahn verfeinert.',
-  'paper.ex6.note': 'Zwei Schritte, das Werkzeug weiter entlang der Bahn. Die Arbeit gibt keine Daten an; Profil, Lagen und Werkzeug stammen von ruledlab.',
+  'paper.ex2.note':
+    'Die Gelenkkette der Quartik aus Beispiel 3 auf halbem Weg (t = 0,5) zwischen der Fläche und ihrem konoidalen Modell; verschieben Sie t oder spielen Sie es ab. Die Anzeige der Kantenlängen zeigt, dass die Verbiegung bis auf Rundung isometrisch ist. Die Arbeit gibt keine Daten an.',
+  'paper.ex3.caption':
+    'Beispiel 3: N = 12 Erzeugende der quartischen Regelfläche (1 + vu², u²/2 + uv, u − v), n = 12, ein Schritt der variationellen Unterteilung.',
+  'paper.ex3.note':
+    'Beispiel 3 mit den Daten der Arbeit, der ersten Triangulierung und der exakten Fläche blass dahinter; die Anzeige misst den Abstand der eingefügten Erzeugenden von der Fläche für jedes Schema.',
+  'paper.ex4.caption':
+    'Beispiel 4: das Butterfly-Schema auf Kongruenzen mit zwei verschiedenen Leitflächen d₁; d₂, eine verallgemeinerte Offsetfläche, ist in der Arbeit nicht gezeichnet.',
+  'paper.ex4.note':
+    'Die Kugel aus Abb. 13 mit Geraden nur auf den Diagonalen, dazu d₂ schattiert (das die Arbeit nicht zeichnet). Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kongruenz wählt ruledlab.',
+  'paper.ex5.caption':
+    'Beispiel 5: d₁ = (u, v, ½ sin(2u + 1,5v)), Geraden parallel zu (u, v, sin u + 1,3 cos v), 8 × 7 Werte auf [−1,1; 1,1]², K = 6.',
+  'paper.ex5.note':
+    'Beispiel 5 mit den Daten der Arbeit, einmal mit dem wörtlich gelesenen Schema der Arbeit verfeinert, mit beiden Leitflächen (d₂ = p + 0,35 d: Die Arbeit nennt keine Länge der Strecken).',
+  'paper.ex6.caption':
+    'Beispiel 6: einige Lagen eines Fräswerkzeugs entlang eines Profils, durch die variationelle Unterteilung aus Abschnitt 4 zu einer glatten Bahn verfeinert.',
+  'paper.ex6.note':
+    'Zwei Schritte, das Werkzeug weiter entlang der Bahn. Die Arbeit gibt keine Daten an; Profil, Lagen und Werkzeug stammen von ruledlab.',
   'congruence.param.labels': 'Bezeichnungen aus Abb. 14',
   'congruence.reason.labels': 'Die Bezeichnungen aus Abb. 14 gehören zu einem Schritt eines variationellen Schemas.',
   'congruence.stencil.title': 'Abb. 12: die Butterfly-Schablone von (16)',
@@ -535,5 +619,6 @@ export default {
   'striction.readout.order.footpoint': 'gemessene Ordnung N → 2N: Fußpunkt',
   'striction.readout.order.midpoint': 'gemessene Ordnung N → 2N: Kehlpolygon m_i',
   'striction.readout.order.perpendicular': 'gemessene Ordnung N → 2N: Polygon aus Abb. 3',
-  'striction.claim.orders': 'Auf dem Hyperboloid und der Quartik halbiert ab 20 Erzeugenden jede Verdopplung von N den Fehler der Fußpunkte und viertelt die Fehler beider Polygone: gemessene Ordnungen höchstens 0,25 neben 1, 2 und 2.',
+  'striction.claim.orders':
+    'Auf dem Hyperboloid und der Quartik halbiert ab 20 Erzeugenden jede Verdopplung von N den Fehler der Fußpunkte und viertelt die Fehler beider Polygone: gemessene Ordnungen höchstens 0,25 neben 1, 2 und 2.',
 };

@@ -6,11 +6,31 @@
 
 /** Field names of the formula scenes in messages: "the z component of e(u)", "the start of u". */
 /** @type {Array<[string, Array<[string, string]>]>} */
-const FORMULA_FIELDS = [['formula', [['a', 'a(u)'], ['e', 'e(u)']]], ['formulaCongruence', [['p', 'p(u, v)'], ['e', 'e(u, v)']]]];
+const FORMULA_FIELDS = [
+  [
+    'formula',
+    [
+      ['a', 'a(u)'],
+      ['e', 'e(u)'],
+    ],
+  ],
+  [
+    'formulaCongruence',
+    [
+      ['p', 'p(u, v)'],
+      ['e', 'e(u, v)'],
+    ],
+  ],
+];
 const fields = Object.fromEntries(
   FORMULA_FIELDS.flatMap(([scene, vectors]) => [
-    ...vectors.flatMap(([v, name]) => ['x', 'y', 'z'].map((c) => [`${scene}.param.${v}${c}.field`, `the ${c} component of ${name}`])),
-    ...['u', 'v'].flatMap((x) => [[`${scene}.param.${x}min.field`, `the start of ${x}`], [`${scene}.param.${x}max.field`, `the end of ${x}`]]),
+    ...vectors.flatMap(([v, name]) =>
+      ['x', 'y', 'z'].map((c) => [`${scene}.param.${v}${c}.field`, `the ${c} component of ${name}`]),
+    ),
+    ...['u', 'v'].flatMap((x) => [
+      [`${scene}.param.${x}min.field`, `the start of ${x}`],
+      [`${scene}.param.${x}max.field`, `the end of ${x}`],
+    ]),
   ]),
 );
 
@@ -72,18 +92,28 @@ export default {
   'error.bad-length': '{what}: {len} numbers are not a whole number of items of {multiple}',
   'error.too-few': '{what}: {got} given, at least {min} needed',
   'error.too-many': '{what}: {got} is more than the limit of {max}',
-  'error.not-finite-segment': 'coordinate {coordinate} of ruling {item} is {value}; every coordinate must be a finite number',
-  'error.not-finite-point': 'coordinate {coordinate} of point {item} is {value}; every coordinate must be a finite number',
-  'error.not-finite-line': 'coordinate {coordinate} of line ({row}, {col}) is {value}; every coordinate must be a finite number',
-  'error.out-of-range-segment': 'coordinate {coordinate} of ruling {item} is {value}; magnitudes above {max} are not accepted',
-  'error.out-of-range-point': 'coordinate {coordinate} of point {item} is {value}; magnitudes above {max} are not accepted',
-  'error.out-of-range-line': 'coordinate {coordinate} of line ({row}, {col}) is {value}; magnitudes above {max} are not accepted',
+  'error.not-finite-segment':
+    'coordinate {coordinate} of ruling {item} is {value}; every coordinate must be a finite number',
+  'error.not-finite-point':
+    'coordinate {coordinate} of point {item} is {value}; every coordinate must be a finite number',
+  'error.not-finite-line':
+    'coordinate {coordinate} of line ({row}, {col}) is {value}; every coordinate must be a finite number',
+  'error.out-of-range-segment':
+    'coordinate {coordinate} of ruling {item} is {value}; magnitudes above {max} are not accepted',
+  'error.out-of-range-point':
+    'coordinate {coordinate} of point {item} is {value}; magnitudes above {max} are not accepted',
+  'error.out-of-range-line':
+    'coordinate {coordinate} of line ({row}, {col}) is {value}; magnitudes above {max} are not accepted',
   'error.zero-length': 'ruling {ruling} has zero length (its two endpoints coincide), so it has no direction',
   'error.text-too-long': '{got} {what} are more than the limit of {max}',
-  'error.not-finite-at-u': 'not finite at u = {u} (the value is {value}: a division by zero, or a function outside its domain?)',
-  'error.not-finite-at-uv': 'not finite at (u, v) = ({u}, {v}) (the value is {value}: a division by zero, or a function outside its domain?)',
-  'error.derivative-not-finite-at-u': 'the derivative is not finite at u = {u} (it is {value}), so the exact invariants do not exist there',
-  'error.derivative-not-finite-at-uv': 'the derivative is not finite at (u, v) = ({u}, {v}) (it is {value}), so the exact invariants do not exist there',
+  'error.not-finite-at-u':
+    'not finite at u = {u} (the value is {value}: a division by zero, or a function outside its domain?)',
+  'error.not-finite-at-uv':
+    'not finite at (u, v) = ({u}, {v}) (the value is {value}: a division by zero, or a function outside its domain?)',
+  'error.derivative-not-finite-at-u':
+    'the derivative is not finite at u = {u} (it is {value}), so the exact invariants do not exist there',
+  'error.derivative-not-finite-at-uv':
+    'the derivative is not finite at (u, v) = ({u}, {v}) (it is {value}), so the exact invariants do not exist there',
   'error.not-converged': 'the solver did not converge in {iterations} iterations',
   'error.singular': 'the system is not positive definite (pivot {pivot} is {value})',
   'error.formula-empty': 'the field is empty; write a formula such as cos(u)',
@@ -101,7 +131,8 @@ export default {
   'error.operand-before': 'an operand is missing before “{sign}”',
   'error.atan2-arguments': 'atan2 takes two arguments: atan2(y, x)',
   'error.comma-outside-atan2': 'a comma separates only the two arguments of atan2(y, x)',
-  'error.ambiguous-comma': '“{text}” could be two arguments or a decimal comma: write {point} for the number, or “{spaced}” (a space after the comma) for two arguments',
+  'error.ambiguous-comma':
+    '“{text}” could be two arguments or a decimal comma: write {point} for the number, or “{spaced}” (a space after the comma) for two arguments',
   'error.too-many-signs': 'more than {max} signs in a row',
   'error.operand-left': '“{sign}” needs an operand on its left',
   'error.operand-left-power': '“{sign}” needs an operand on its left (write ^ for powers)',
@@ -132,12 +163,14 @@ export default {
   'error.line-zero-length': 'line ({row}, {col}) has zero length (p = q), so it has no direction',
   'error.lines-cancel': 'a refined line has no direction: the weights cancel opposite lines',
   'error.parallel-at-step': 'the rulings at step {h} are parallel',
-  'error.no-striction-point': 'the surface has no striction point at u = {u}: the ruling there is cylindrical (its neighbours are parallel to it)',
+  'error.no-striction-point':
+    'the surface has no striction point at u = {u}: the ruling there is cylindrical (its neighbours are parallel to it)',
   'error.not-a-number': '“{text}” is not a number',
   'error.not-finite-number': '{text} is not a finite number',
   'error.csv-six-numbers': 'a line needs 6 numbers (a.x a.y a.z b.x b.y b.z), this one has {found}',
   'error.csv-no-data': 'there is no line of 6 numbers in it',
-  'error.import-too-few': '{found:line:lines} of 6 numbers: at least 2 are needed (a ruled surface has two rulings or more)',
+  'error.import-too-few':
+    '{found:line:lines} of 6 numbers: at least 2 are needed (a ruled surface has two rulings or more)',
   'error.import-zero-length': 'the two endpoints of this line coincide: a ruling needs two different points',
   'error.json-too-deep': 'nested deeper than {max} levels',
   'error.json-end': 'the text ends too early',

@@ -18,15 +18,22 @@ export default {
   'app.skip': 'Skip to the controls',
   'share.title': 'Share this view',
   'share.intro': 'Each carries the current scene, its parameters, the language and the camera.',
-  'share.fromFile': 'This page was opened from a file, so it has no address that others could open. To share this view, download it as one HTML file and upload that to your course page, or put the element below into a page of your own.',
-  'share.noAddress': 'This view is shown inside another page and has no address of its own that others could open. To share it, download it as one HTML file, or put the element below into a page of your own.',
-  'share.elementServed': 'The script comes from this site and loads on pages of any other site; copy it to your own server if this one may go away.',
-  'share.elementModule': 'This site has no one-file build (npm run build makes it), so the snippet loads the module ruledlab/view: that works on other sites only if this server allows them to load its scripts (Access-Control-Allow-Origin).',
-  'share.elementUpload': 'Upload {file} (the button below downloads it) next to your page. If it sits elsewhere, change src="{file}" to its address.',
+  'share.fromFile':
+    'This page was opened from a file, so it has no address that others could open. To share this view, download it as one HTML file and upload that to your course page, or put the element below into a page of your own.',
+  'share.noAddress':
+    'This view is shown inside another page and has no address of its own that others could open. To share it, download it as one HTML file, or put the element below into a page of your own.',
+  'share.elementServed':
+    'The script comes from this site and loads on pages of any other site; copy it to your own server if this one may go away.',
+  'share.elementModule':
+    'This site has no one-file build (npm run build makes it), so the snippet loads the module ruledlab/view: that works on other sites only if this server allows them to load its scripts (Access-Control-Allow-Origin).',
+  'share.elementUpload':
+    'Upload {file} (the button below downloads it) next to your page. If it sits elsewhere, change src="{file}" to its address.',
   'share.embedDownload': 'Download {file}',
   'share.embedMissing': 'This copy of the page cannot hand out {file}; take it from dist/ of the ruledlab package.',
-  'share.onefileNote': 'The whole page with this view in one file: it works opened from disk and uploaded to a course system.',
-  'share.framed': 'If nothing is saved, the page around this view does not allow downloads: open the view on a page of its own.',
+  'share.onefileNote':
+    'The whole page with this view in one file: it works opened from disk and uploaded to a course system.',
+  'share.framed':
+    'If nothing is saved, the page around this view does not allow downloads: open the view on a page of its own.',
   'share.copyWhat': 'Copy: {what}',
   'share.selectCopy': 'Selected: press Ctrl+C (⌘C) to copy.',
   'share.link': 'Link',
@@ -41,7 +48,8 @@ export default {
   'io.show': 'Show',
   'io.staleExample': 'The example data stays on screen.',
   'io.stale': 'The data shown is the previous import: this text could not be read.',
-  'io.notStored': 'This import has more than 200 rulings: too many for the link, and this page has no storage here (it is shown in a sandboxed frame), so it lasts until the page is closed.',
+  'io.notStored':
+    'This import has more than 200 rulings: too many for the link, and this page has no storage here (it is shown in a sandboxed frame), so it lasts until the page is closed.',
   'io.stored': 'This import has more than 200 rulings: it is kept in this tab\u2019s session storage, not in the link.',
   'io.exports': 'Save what is shown',
   'export.png': 'PNG',
@@ -58,15 +66,20 @@ export default {
   'export.plot': 'Plot (SVG)',
   'element.unknownScene': 'There is no scene “{scene}”. The scenes are: {known}.',
   'element.unknownPaper': 'There is no figure or example of the paper called “{paper}”. They are: {known}.',
-  'element.badCamera': 'The camera attribute could not be read (six numbers: yaw, pitch, distance, x, y, z); the view is fitted to the scene.',
-  'boot.noWebgl2': 'ruledlab could not start: this browser (or this device) does not provide WebGL2, which the 3D view needs. Current Firefox, Chrome, Edge and Safari provide it; a browser with hardware acceleration turned off may not.',
-  'boot.noWasm': 'ruledlab could not start: this browser cannot run its WebAssembly (it needs WebAssembly with SIMD: Chrome 91, Firefox 89, Safari 16.4 or later).',
-  'boot.load': 'ruledlab could not start: one of its files did not load. Reload the page; if it is shown inside another page, that page may block it.',
+  'element.badCamera':
+    'The camera attribute could not be read (six numbers: yaw, pitch, distance, x, y, z); the view is fitted to the scene.',
+  'boot.noWebgl2':
+    'ruledlab could not start: this browser (or this device) does not provide WebGL2, which the 3D view needs. Current Firefox, Chrome, Edge and Safari provide it; a browser with hardware acceleration turned off may not.',
+  'boot.noWasm':
+    'ruledlab could not start: this browser cannot run its WebAssembly (it needs WebAssembly with SIMD: Chrome 91, Firefox 89, Safari 16.4 or later).',
+  'boot.load':
+    'ruledlab could not start: one of its files did not load. Reload the page; if it is shown inside another page, that page may block it.',
   'boot.technical': 'What the browser said',
   'boot.failed': 'ruledlab could not start.',
 
   // the view
-  'view.label': '3D view of the scene. Drag or use the arrow keys to turn it, shift+drag or shift+arrows to move it, wheel or + and − to zoom, F to fit, ? for all keys.',
+  'view.label':
+    '3D view of the scene. Drag or use the arrow keys to turn it, shift+drag or shift+arrows to move it, wheel or + and − to zoom, F to fit, ? for all keys.',
   'view.fit': 'Fit',
   'view.fitTitle': 'Fit the view to the scene (F)',
   'view.reset': 'Reset',
@@ -150,8 +163,9 @@ export default {
   'surface.hyperboloid': 'Hyperboloid x² + y²/4 − z²/9 = 1 (Example 1)',
   'surface.quartic': 'Quartic surface (1 + vu², u²/2 + uv, u − v) (Example 3)',
   'surface.helicoid': 'Right helicoid',
-  'surface.helical': 'Ruled helical surface, rulings at 45° (ruledlab\'s, for Fig. 5)',
-  'surface.helical-orthogonal': 'Ruled helical surface, rulings orthogonal to the striction helix (ruledlab\'s, for Fig. 5)',
+  'surface.helical': "Ruled helical surface, rulings at 45° (ruledlab's, for Fig. 5)",
+  'surface.helical-orthogonal':
+    "Ruled helical surface, rulings orthogonal to the striction helix (ruledlab's, for Fig. 5)",
   'surface.pluecker-conoid': 'Plücker\u2019s conoid',
   'surface.hyperbolic-paraboloid': 'Hyperbolic paraboloid z = xy',
   'surface.cone': 'Elliptic cone',
@@ -159,8 +173,8 @@ export default {
   'surface.helix-tangent': 'Tangent surface of a helix (developable)',
   'surface.moebius': 'Möbius band',
   'surface.formula': 'your surface',
-  'congruence.sphere': 'Lines on a sphere (ruledlab\'s, for Example 4, Fig. 13 left)',
-  'congruence.hyperbolic-paraboloid': 'Lines on a hyperbolic paraboloid (ruledlab\'s, for Example 4, Fig. 13 right)',
+  'congruence.sphere': "Lines on a sphere (ruledlab's, for Example 4, Fig. 13 left)",
+  'congruence.hyperbolic-paraboloid': "Lines on a hyperbolic paraboloid (ruledlab's, for Example 4, Fig. 13 right)",
   'congruence.example5': 'Example 5 (Fig. 15)',
   'congruence.ellipsoid-normals': 'Normals of an ellipsoid',
   'congruence.two-lines': 'Lines meeting two skew lines',
@@ -174,7 +188,8 @@ export default {
   'striction.param.midpoints': 'Perpendicular midpoints (Fig. 3)',
   'striction.param.axis': 'Axis of the linear complex (beyond the paper)',
   'striction.param.exact': 'Exact striction curve s(u)',
-  'striction.describe': 'Surface: {surface}, {closed}, {n} rulings; shown: {shown}. The striction polygon is {midpoint} from the exact striction curve at the rulings; a single footpoint is up to {footpoint} away.',
+  'striction.describe':
+    'Surface: {surface}, {closed}, {n} rulings; shown: {shown}. The striction polygon is {midpoint} from the exact striction curve at the rulings; a single footpoint is up to {footpoint} away.',
   'striction.describe.normals': 'the common perpendiculars with their footpoints',
   'striction.describe.polygon': 'the striction polygon of footpoint midpoints',
   'striction.describe.midpoints': 'the polygon of the perpendiculars\u2019 midpoints',
@@ -189,7 +204,8 @@ export default {
   'notation.readout.angle': 'angle φ_{i,i+1} (rad)',
   'notation.readout.distance': 'signed distance h_{i,i+1}',
   'notation.readout.delta': 'δ_{i,i+1} = h / φ',
-  'notation.describe': 'Three consecutive rulings of the hyperboloid of Example 1, {spacing} apart in the parameter, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their distance {distance}.',
+  'notation.describe':
+    'Three consecutive rulings of the hyperboloid of Example 1, {spacing} apart in the parameter, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their distance {distance}.',
 
   // Propositions 1–2
   'convergence.title': 'Convergence orders (Propositions 1–2)',
@@ -213,7 +229,8 @@ export default {
   'convergence.readout.delta': 'order of δ_{i,i+1}',
   'convergence.readout.deltaMean': 'order of the averaged δ̄_i',
   'convergence.readout.normal': 'order of N_{i,i+1} → central tangent',
-  'convergence.describe': 'Errors of the discrete invariants at u = {u}, for steps from {h0} over {levels} halvings: the footpoint converges with order {footpoint}, the midpoint of the footpoints with order {midpoint}.',
+  'convergence.describe':
+    'Errors of the discrete invariants at u = {u}, for steps from {h0} over {levels} halvings: the footpoint converges with order {footpoint}, the midpoint of the footpoints with order {midpoint}.',
 
   // Figs. 4–6
   'isometry.title': 'Isometric bending and development (Figs. 4–6)',
@@ -228,8 +245,10 @@ export default {
   'isometry.legend.ghost': 'original surface (dashed)',
   'isometry.readout.nonDevelopability': 'non-developability (height of the conoidal model)',
   'isometry.readout.isometry': 'max relative change of an edge length',
-  'isometry.describe': 'Surface: {surface}, {n} rulings, bent isometrically to t = {t} toward its conoidal model; the conoidal model is {height} high.',
-  'isometry.describePanels': 'Surface: {surface}, {n} rulings (left), its conoidal model (middle) and its approximate development (right); the conoidal model is {height} high.',
+  'isometry.describe':
+    'Surface: {surface}, {n} rulings, bent isometrically to t = {t} toward its conoidal model; the conoidal model is {height} high.',
+  'isometry.describePanels':
+    'Surface: {surface}, {n} rulings (left), its conoidal model (middle) and its approximate development (right); the conoidal model is {height} high.',
   'isometry.download.development': 'Download the development (SVG)',
   'isometry.download.title': 'Approximate development (ruledlab)',
 
@@ -270,7 +289,8 @@ export default {
   'strip.legend.b': 'B_i (dark, large points)',
   'strip.legend.triangulation': 'triangulation of the refined strip (thin)',
   'strip.readout.distance': 'max distance of inserted rulings from the surface',
-  'strip.describe': '12 rulings of the quartic surface of Example 3 with 11 rulings inserted by {scheme}, n = {n}; the inserted rulings are at most {distance} from the exact surface.',
+  'strip.describe':
+    '12 rulings of the quartic surface of Example 3 with 11 rulings inserted by {scheme}, n = {n}; the inserted rulings are at most {distance} from the exact surface.',
 
   // Figs. 11–15
   'congruence.title': 'Line congruences (Figs. 11–15, Examples 4–5)',
@@ -292,7 +312,8 @@ export default {
   'congruence.readout.distance': 'max distance of new points from the exact d_1 points',
   'congruence.readout.angle': 'max angle of new lines to the exact lines (rad)',
   'congruence.describe': '{congruence}: {rows} × {cols} given lines refined by {scheme}, {lines} lines in all. {error}',
-  'congruence.describe.error': 'The new lines are at most {distance} from the exact lines at their points on d_1, and at most {angle} rad off in direction.',
+  'congruence.describe.error':
+    'The new lines are at most {distance} from the exact lines at their points on d_1, and at most {angle} rad off in direction.',
 
   // Figs. 16–18
   'milling.title': '5-axis tool path (Example 6, Figs. 16–18)',
@@ -319,7 +340,8 @@ export default {
   'milling.readout.deviation': 'max |deviation| from the profile',
   'milling.readout.angleStep': 'max orientation step (rad)',
   'milling.readout.secondDifference': 'max 2nd difference of the axis',
-  'milling.describe': '{poses} given poses of a ball-end tool refined by {steps:step:steps} of {scheme} into {total} poses; the machined surface misses the target profile by at most {deviation}.',
+  'milling.describe':
+    '{poses} given poses of a ball-end tool refined by {steps:step:steps} of {scheme} into {total} poses; the machined surface misses the target profile by at most {deviation}.',
   'milling.download.json': 'Download JSON',
   'milling.download.csv': 'Download CSV',
   'milling.download.gcode': 'Download G-code',
@@ -354,7 +376,8 @@ export default {
   'formula.scheme.lines': 'Four-point in line space',
   'formula.legend.given': 'sampled rulings',
   'formula.legend.inserted': 'inserted rulings',
-  'formula.describeSubdivision': 'Your surface as {n} rulings, refined by {steps:step:steps} into {total} rulings; the inserted rulings are at most {distance} from the exact surface.',
+  'formula.describeSubdivision':
+    'Your surface as {n} rulings, refined by {steps:step:steps} into {total} rulings; the inserted rulings are at most {distance} from the exact surface.',
 
   // your congruence
   'formulaCongruence.title': 'Your congruence (formulas)',
@@ -375,7 +398,8 @@ export default {
   'focal.readout.complex': 'linear complex',
   'focal.readout.pitch': 'pitch of the complex',
   'focal.none': 'none real',
-  'focal.describe': '{hyperbolic} of {lines} lines have two real focal points, {elliptic} none, {parabolic} one double.{normality} The lines fit: {complex}.',
+  'focal.describe':
+    '{hyperbolic} of {lines} lines have two real focal points, {elliptic} none, {parabolic} one double.{normality} The lines fit: {complex}.',
   'focal.describe.normality': ' The focal planes meet at |cos| up to {normality} (0 for the normals of a surface).',
   'complex.kind.general': 'no linear complex',
   'complex.kind.complex': 'one linear complex',
@@ -404,7 +428,8 @@ export default {
   'lines.legend.lines': 'four-point on the lines',
   'lines.readout.endpoints': 'endpoint scheme: new rulings turned by (rad)',
   'lines.readout.lines': 'line-space scheme: turned by (rad)',
-  'lines.describe': 'Nine rulings of the {surface} with their endpoints slid along the rulings by {slide} of the pattern; the endpoint scheme\u2019s new rulings turned by up to {endpointTurn} rad, the line-space scheme\u2019s by {lineTurn}.',
+  'lines.describe':
+    'Nine rulings of the {surface} with their endpoints slid along the rulings by {slide} of the pattern; the endpoint scheme\u2019s new rulings turned by up to {endpointTurn} rad, the line-space scheme\u2019s by {lineTurn}.',
 
   // large models
   'large.title': 'Large models in a Web Worker',
@@ -423,36 +448,45 @@ export default {
   'data.param.closed': 'Closed (last ruling followed by the first)',
   'data.legend.rulings': 'your rulings',
   'data.readout.lines': 'lines (congruence)',
-  'data.describe': 'Your ruled surface of {n} rulings ({parallel} parallel pairs), with its common perpendiculars and striction polygon.',
+  'data.describe':
+    'Your ruled surface of {n} rulings ({parallel} parallel pairs), with its common perpendiculars and striction polygon.',
   'data.describeCongruence': 'Your line congruence of {rows} × {cols} lines.',
   'claim.title': 'Claims of the text, checked against the readout',
   'claim.holds': 'holds here',
   'claim.fails': 'does not hold at these settings',
   'isometry.readout.radius': 'ρ, radius of curvature of the developed rulings’ envelope (middle ruling)',
   'isometry.readout.radiusFiner': 'ρ with 2N − 1 rulings',
-  'isometry.claim.helical': 'Fig. 5’s caption fails here: with 6 rulings or more ρ is within 0.1 of r + p tan β = 1.4, so the conoidal rulings touch a cylinder of that radius and miss the axis.',
-  'isometry.claim.orthogonal': 'Here the caption holds in the limit: ρ tends to 0 at second order (with twice as many rulings it drops to between a third and a fifth).',
+  'isometry.claim.helical':
+    'Fig. 5’s caption fails here: with 6 rulings or more ρ is within 0.1 of r + p tan β = 1.4, so the conoidal rulings touch a cylinder of that radius and miss the axis.',
+  'isometry.claim.orthogonal':
+    'Here the caption holds in the limit: ρ tends to 0 at second order (with twice as many rulings it drops to between a third and a fifth).',
   'strip.readout.compare.midpoint': 'midpoint rule: max distance',
   'strip.readout.compare.literal': 'literal (15): max distance',
   'strip.readout.compare.coupled': 'coupled: max distance',
   'strip.readout.compare.averaged': 'averaged: max distance',
   'strip.readout.compare.fourPoint': 'four-point: max distance',
   'strip.claim.literal': 'Read literally, (15) is the midpoint rule: their distances are equal for every n.',
-  'strip.claim.coupled': 'For n ≥ 6 the coupled energy comes closer to the surface than the midpoint rule (for n = 3, 4 it does not).',
-  'strip.claim.fourPoint': 'The four-point scheme is exact on this surface, the best of all at the worst ruling: its boundary curves are quadratic, which w = 1/16 reproduces.',
+  'strip.claim.coupled':
+    'For n ≥ 6 the coupled energy comes closer to the surface than the midpoint rule (for n = 3, 4 it does not).',
+  'strip.claim.fourPoint':
+    'The four-point scheme is exact on this surface, the best of all at the worst ruling: its boundary curves are quadratic, which w = 1/16 reproduces.',
   'congruence.readout.compare.paper': 'paper’s scheme, 1 step: distance / angle',
   'congruence.readout.compare.two-stage': 'two-stage, 1 step: distance / angle',
   'congruence.readout.compare.coupled': 'coupled, 1 step: distance / angle',
   'congruence.readout.compare.butterfly': 'butterfly, 1 step: distance / angle',
-  'congruence.claim.butterfly': 'At one step, on each built-in congruence, the butterfly scheme’s new lines are the closest in direction and no farther away than any variational scheme’s.',
+  'congruence.claim.butterfly':
+    'At one step, on each built-in congruence, the butterfly scheme’s new lines are the closest in direction and no farther away than any variational scheme’s.',
   'milling.readout.compare.given': 'given poses only: max |deviation|',
   'milling.readout.compare.variational': 'variational (coupled): max |deviation|',
   'milling.readout.compare.averaged': 'variational (averaged): max |deviation|',
   'milling.readout.compare.four-point': 'four-point: max |deviation|',
   'milling.readout.compare.linear': 'linear (midpoints): max |deviation|',
-  'milling.claim.refined': 'The smoothing schemes (both variational ones and four-point) machine closer to the profile than the given poses alone; the midpoint rule need not.',
-  'milling.claim.variational': 'With 7 given poses or more, both variational schemes leave a smaller deviation than four-point and the midpoint rule, at every number of steps.',
-  'note.unknownFigure': 'The link names a figure of the paper that ruledlab does not know; the scene is shown without it.',
+  'milling.claim.refined':
+    'The smoothing schemes (both variational ones and four-point) machine closer to the profile than the given poses alone; the midpoint rule need not.',
+  'milling.claim.variational':
+    'With 7 given poses or more, both variational schemes leave a smaller deviation than four-point and the midpoint rule, at every number of steps.',
+  'note.unknownFigure':
+    'The link names a figure of the paper that ruledlab does not know; the scene is shown without it.',
   'paper.none': '— none —',
   'paper.heading': 'From the paper: {figure}',
   'paper.changed': 'You changed the figure’s settings.',
@@ -488,60 +522,100 @@ export default {
   'paper.ex5': 'Example 5: variational congruence',
   'paper.ex6': 'Example 6: milling',
   'paper.fig1.caption': '“Discrete ruled surface model: Notations.”',
-  'paper.fig1.note': 'Three consecutive rulings R_{i−1}, R_i, R_{i+1} with the common perpendiculars N_{i,i+1}, the footpoints f_{i,i+1}, f_{i+1,i}, the angle φ_{i,i+1} and the distance h_{i,i+1}. The paper gives no data; ruledlab uses three rulings of Example 1’s hyperboloid (their spacing and position are sliders).',
-  'paper.fig2.caption': '“Discrete model of a ruled surface with striction line and sequence of common normals of generators.”',
-  'paper.fig2.note': 'Example 1’s hyperboloid x² + y²/4 − z²/9 = 1 (the paper’s) with the common perpendiculars and the striction polygon m_i of Proposition 2. The number of rulings (36) and the segment length are ruledlab’s choice: the paper gives neither.',
+  'paper.fig1.note':
+    'Three consecutive rulings R_{i−1}, R_i, R_{i+1} with the common perpendiculars N_{i,i+1}, the footpoints f_{i,i+1}, f_{i+1,i}, the angle φ_{i,i+1} and the distance h_{i,i+1}. The paper gives no data; ruledlab uses three rulings of Example 1’s hyperboloid (their spacing and position are sliders).',
+  'paper.fig2.caption':
+    '“Discrete model of a ruled surface with striction line and sequence of common normals of generators.”',
+  'paper.fig2.note':
+    'Example 1’s hyperboloid x² + y²/4 − z²/9 = 1 (the paper’s) with the common perpendiculars and the striction polygon m_i of Proposition 2. The number of rulings (36) and the segment length are ruledlab’s choice: the paper gives neither.',
   'paper.fig3.caption': '“Discrete model of ruled surface with discrete central curve.”',
-  'paper.fig3.note': 'The polygon Example 1 describes: the midpoints (f_{i,i+1} + f_{i+1,i})/2 of the common perpendiculars, on the paper’s hyperboloid with 36 rulings (ruledlab’s number).',
-  'paper.fig3.beyond': 'This is not the striction polygon m_i of Proposition 2, which the text uses as the discrete striction curve: it approximates the striction curve between two rulings, at u + H/2, also at second order (ERRATA.md 6). Switch the striction polygon on to see both; the readout measures each.',
+  'paper.fig3.note':
+    'The polygon Example 1 describes: the midpoints (f_{i,i+1} + f_{i+1,i})/2 of the common perpendiculars, on the paper’s hyperboloid with 36 rulings (ruledlab’s number).',
+  'paper.fig3.beyond':
+    'This is not the striction polygon m_i of Proposition 2, which the text uses as the discrete striction curve: it approximates the striction curve between two rulings, at u + H/2, also at second order (ERRATA.md 6). Switch the striction polygon on to see both; the readout measures each.',
   'paper.fig4.caption': '“Discrete ruled surface model (left) and conoidal model isometric to the first one (right).”',
-  'paper.fig4.note': 'The hinge chain turned all the way into its conoidal model (t = 1), the surface itself as a faint ghost, drawn in one view rather than side by side (the three-panel layout is Fig. 6). The paper gives no data; ruledlab uses 24 rulings of Example 3’s quartic.',
-  'paper.fig5.caption': '“Left: Ruled helical surface. Right: Isometric conoidal surface. In this case the result is a helical surface whose generators intersect the axis orthogonally.”',
-  'paper.fig5.note': 'A ruled helical surface bent into its conoidal model. The paper gives no data; ruledlab uses radius 1, pitch 0.4 and rulings at 45°.',
-  'paper.fig5-orthogonal.note': 'The same helix with the rulings turned orthogonal to the striction helix (tan β = −r/p), the case in which the caption holds: the readout ρ tends to 0, the conoidal rulings meet the axis in the limit. The paper gives no data; the surface is ruledlab’s.',
-  'paper.fig5.beyond': 'The caption holds only when the rulings cross the striction curve at a right angle (e·ṡ = 0), which the paper does not say. In general the conoidal rulings touch a cylinder of radius ρ = (e·ṡ)/|e′| about the axis, r + p tan β for these surfaces: 1.4 at 45°, 0 orthogonally. The readout measures ρ and the claims under it are checked.',
-  'paper.fig6.caption': '“Approximate development of a skew ruled surface based on the discrete representation: Left: Discrete model of a skew ruled surface. In the middle: Isometric conoidal discrete model. Right: Projection of the discrete conoidal surface orthogonal to its generators.”',
-  'paper.fig6.note': 'The three panels of Fig. 6: a strip of Example 1’s hyperboloid, its conoidal model and the development; the readout gives the conoidal model’s height, the non-developability measure. The paper gives no data; the strip (24 rulings, u from 0 to 2.4) is ruledlab’s.',
+  'paper.fig4.note':
+    'The hinge chain turned all the way into its conoidal model (t = 1), the surface itself as a faint ghost, drawn in one view rather than side by side (the three-panel layout is Fig. 6). The paper gives no data; ruledlab uses 24 rulings of Example 3’s quartic.',
+  'paper.fig5.caption':
+    '“Left: Ruled helical surface. Right: Isometric conoidal surface. In this case the result is a helical surface whose generators intersect the axis orthogonally.”',
+  'paper.fig5.note':
+    'A ruled helical surface bent into its conoidal model. The paper gives no data; ruledlab uses radius 1, pitch 0.4 and rulings at 45°.',
+  'paper.fig5-orthogonal.note':
+    'The same helix with the rulings turned orthogonal to the striction helix (tan β = −r/p), the case in which the caption holds: the readout ρ tends to 0, the conoidal rulings meet the axis in the limit. The paper gives no data; the surface is ruledlab’s.',
+  'paper.fig5.beyond':
+    'The caption holds only when the rulings cross the striction curve at a right angle (e·ṡ = 0), which the paper does not say. In general the conoidal rulings touch a cylinder of radius ρ = (e·ṡ)/|e′| about the axis, r + p tan β for these surfaces: 1.4 at 45°, 0 orthogonally. The readout measures ρ and the claims under it are checked.',
+  'paper.fig6.caption':
+    '“Approximate development of a skew ruled surface based on the discrete representation: Left: Discrete model of a skew ruled surface. In the middle: Isometric conoidal discrete model. Right: Projection of the discrete conoidal surface orthogonal to its generators.”',
+  'paper.fig6.note':
+    'The three panels of Fig. 6: a strip of Example 1’s hyperboloid, its conoidal model and the development; the readout gives the conoidal model’s height, the non-developability measure. The paper gives no data; the strip (24 rulings, u from 0 to 2.4) is ruledlab’s.',
   'paper.fig7.caption': '“Chaikin’s algorithm.”',
-  'paper.fig7.note': 'Four steps of Chaikin’s algorithm, every level drawn. The paper gives no control polygon; ruledlab uses an eight-point star.',
+  'paper.fig7.note':
+    'Four steps of Chaikin’s algorithm, every level drawn. The paper gives no control polygon; ruledlab uses an eight-point star.',
   'paper.fig8.caption': '“Interpolatory subdivision according to Dyn, Levin and Gregory (w = 1/13).”',
-  'paper.fig8.note': 'Four steps of (8) with the paper’s w = 1/13, exactly (type a fraction in the field beside the slider). The paper gives no control polygon; ruledlab uses an eight-point star.',
+  'paper.fig8.note':
+    'Four steps of (8) with the paper’s w = 1/13, exactly (type a fraction in the field beside the slider). The paper gives no control polygon; ruledlab uses an eight-point star.',
   'paper.fig9.caption': '“Basic notations for a subdivided ruled surface strip, the two different triangulations.”',
-  'paper.fig9.note': 'The notation a_i, b_i, A_i, B_i, z_{i,k}, Z_{i,k} on Example 3’s quartic strip with the first triangulation (11); choose the second (12) in the menu (ruledlab draws one at a time). n = 6 rather than Example 3’s 12, so that the triangles can be read.',
-  'paper.fig10.caption': '“12 generators taken out of a quartic ruled surface R, 11 lines inserted; light gray spheres centered at A_i, dark gray spheres centered at B_i.”',
-  'paper.fig10.note': 'Example 3 with the paper’s data: 12 rulings of (1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1] (the interval is ruledlab’s: the paper gives none), n = 12, one step of the energy (15) read literally; spheres at A_i (light) and B_i (dark).',
-  'paper.strip.beyond': 'Read literally, (15) puts umbrella vectors at the new points only, and its minimiser is exactly the midpoint rule (ERRATA.md; checked under the readout). ruledlab’s coupled and averaged energies put them at every vertex; the readout compares every scheme at this n: coupled beats the midpoint rule from n = 6 on, and the four-point scheme is exact on this surface.',
+  'paper.fig9.note':
+    'The notation a_i, b_i, A_i, B_i, z_{i,k}, Z_{i,k} on Example 3’s quartic strip with the first triangulation (11); choose the second (12) in the menu (ruledlab draws one at a time). n = 6 rather than Example 3’s 12, so that the triangles can be read.',
+  'paper.fig10.caption':
+    '“12 generators taken out of a quartic ruled surface R, 11 lines inserted; light gray spheres centered at A_i, dark gray spheres centered at B_i.”',
+  'paper.fig10.note':
+    'Example 3 with the paper’s data: 12 rulings of (1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1] (the interval is ruledlab’s: the paper gives none), n = 12, one step of the energy (15) read literally; spheres at A_i (light) and B_i (dark).',
+  'paper.strip.beyond':
+    'Read literally, (15) puts umbrella vectors at the new points only, and its minimiser is exactly the midpoint rule (ERRATA.md; checked under the readout). ruledlab’s coupled and averaged energies put them at every vertex; the readout compares every scheme at this n: coupled beats the midpoint rule from n = 6 on, and the four-point scheme is exact on this surface.',
   'paper.fig11.caption': '“Congruence of lines determined by two directrices.”',
-  'paper.fig11.note': 'Example 5’s lines between the director surface d₁ and d₂, both shaded. The paper’s figure is a sketch; ruledlab takes d₂ as the points p + 0.35 d (the paper gives no segment length, ERRATA.md 9).',
+  'paper.fig11.note':
+    'Example 5’s lines between the director surface d₁ and d₂, both shaded. The paper’s figure is a sketch; ruledlab takes d₂ as the points p + 0.35 d (the paper gives no segment length, ERRATA.md 9).',
   'paper.fig12.caption': '“The butterfly-scheme.”',
-  'paper.fig12.note': 'The stencil of (16) is drawn beside the view with all its weights (w = 1/16); the view shows the lines it inserts on the diagonals of Example 5’s grid (one step, as in the paper).',
-  'paper.fig13.caption': '“Left: part of a sphere with lines of the congruence (black, thin), inserted lines (black, thick). Right: part of a hyperbolic paraboloid, lines of the congruence (black, thin), inserted lines (black, thick).”',
-  'paper.fig13.note': 'Fig. 13 left: lines inserted on the diagonals only, as the paper does. The paper gives no formulas for Example 4; ruledlab’s sphere carries the directions normal + 0.3 (sin 2v, cos 3u, uv), a generalised offset that is not a normal congruence. Inserted lines are drawn in colour rather than thick black.',
-  'paper.fig13-right.note': 'Fig. 13 right: lines inserted on the diagonals only. The paper gives no formulas for Example 4; ruledlab’s hyperbolic paraboloid z = xy carries the directions (−v, −u, 1) + 0.3 (cos 2v, sin u, 0).',
-  'paper.fig14.caption': '“Point scheme on directrix surface d₁ (left), part of the congruence with some notations (right).”',
-  'paper.fig14.note': 'The notation of Section 5.2 on one cell of Example 5: the given lines R_{i,j} with their points p on d₁ and q on d₂, the edge lines T_{i,j} (points r, r′) and S_{i,j} (s, s′), and the face line R̄_{i,j} (points P, Q). The index ranges follow ERRATA.md 9.',
+  'paper.fig12.note':
+    'The stencil of (16) is drawn beside the view with all its weights (w = 1/16); the view shows the lines it inserts on the diagonals of Example 5’s grid (one step, as in the paper).',
+  'paper.fig13.caption':
+    '“Left: part of a sphere with lines of the congruence (black, thin), inserted lines (black, thick). Right: part of a hyperbolic paraboloid, lines of the congruence (black, thin), inserted lines (black, thick).”',
+  'paper.fig13.note':
+    'Fig. 13 left: lines inserted on the diagonals only, as the paper does. The paper gives no formulas for Example 4; ruledlab’s sphere carries the directions normal + 0.3 (sin 2v, cos 3u, uv), a generalised offset that is not a normal congruence. Inserted lines are drawn in colour rather than thick black.',
+  'paper.fig13-right.note':
+    'Fig. 13 right: lines inserted on the diagonals only. The paper gives no formulas for Example 4; ruledlab’s hyperbolic paraboloid z = xy carries the directions (−v, −u, 1) + 0.3 (cos 2v, sin u, 0).',
+  'paper.fig14.caption':
+    '“Point scheme on directrix surface d₁ (left), part of the congruence with some notations (right).”',
+  'paper.fig14.note':
+    'The notation of Section 5.2 on one cell of Example 5: the given lines R_{i,j} with their points p on d₁ and q on d₂, the edge lines T_{i,j} (points r, r′) and S_{i,j} (s, s′), and the face line R̄_{i,j} (points P, Q). The index ranges follow ERRATA.md 9.',
   'paper.fig15.caption': '“Discrete congruence of lines (left), inserted lines (black thick) (right).”',
-  'paper.fig15.note': 'Example 5 with the paper’s data: d₁ = (u, v, ½ sin(2u + 1.5v)), directions (u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6, refined once by the paper’s variational scheme read literally: midpoint edge lines, each face line the average of its eight neighbours (ERRATA.md).',
-  'paper.congruence.beyond': 'Read literally, the energies (15) and (21) give plain averages; ruledlab also offers “two-stage” (its coupled strip energy on the edges), “coupled” (all new lines in one sparse solve) and the butterfly scheme on all edges. The readout compares all four at one step; on every built-in congruence the butterfly scheme is the most accurate (checked under the readout).',
+  'paper.fig15.note':
+    'Example 5 with the paper’s data: d₁ = (u, v, ½ sin(2u + 1.5v)), directions (u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6, refined once by the paper’s variational scheme read literally: midpoint edge lines, each face line the average of its eight neighbours (ERRATA.md).',
+  'paper.congruence.beyond':
+    'Read literally, the energies (15) and (21) give plain averages; ruledlab also offers “two-stage” (its coupled strip energy on the edges), “coupled” (all new lines in one sparse solve) and the butterfly scheme on all edges. The readout compares all four at one step; on every built-in congruence the butterfly scheme is the most accurate (checked under the readout).',
   'paper.fig16.caption': '“First step of the refinement.”',
-  'paper.fig16.note': 'Example 6 after one step: given tool axes dark, inserted ones light, the tool as a ball-end cylinder, the barycentre curve dashed, the swept ball over the part. The paper gives no data; the profile, the seven poses and the tool (radius 0.25, length 1.5) are ruledlab’s.',
+  'paper.fig16.note':
+    'Example 6 after one step: given tool axes dark, inserted ones light, the tool as a ball-end cylinder, the barycentre curve dashed, the swept ball over the part. The paper gives no data; the profile, the seven poses and the tool (radius 0.25, length 1.5) are ruledlab’s.',
   'paper.fig17.caption': '“Second step of the refinement.”',
   'paper.fig17.note': 'Example 6 after two steps (ruledlab’s data, as in Fig. 16).',
   'paper.fig18.caption': '“Third step of the refinement.”',
   'paper.fig18.note': 'Example 6 after three steps (ruledlab’s data, as in Fig. 16).',
-  'paper.milling.beyond': 'The paper refines the path “as described in section 4”; read literally that energy is the midpoint rule (“linear” in the menu). ruledlab uses its coupled energy instead; the readout gives every scheme’s deviation from the profile, and the claims under it say where the variational schemes come closest.',
-  'paper.ex1.caption': 'Example 1: a discretised regulus of the hyperboloid x² + y²/4 − z²/9 = 1 with its striction line.',
-  'paper.ex1.note': 'Both discrete striction polygons, m_i of Proposition 2 and the perpendicular midpoints of Fig. 3, against the exact striction curve; the readout measures each. The hyperboloid is the paper’s, the 36 rulings ruledlab’s.',
+  'paper.milling.beyond':
+    'The paper refines the path “as described in section 4”; read literally that energy is the midpoint rule (“linear” in the menu). ruledlab uses its coupled energy instead; the readout gives every scheme’s deviation from the profile, and the claims under it say where the variational schemes come closest.',
+  'paper.ex1.caption':
+    'Example 1: a discretised regulus of the hyperboloid x² + y²/4 − z²/9 = 1 with its striction line.',
+  'paper.ex1.note':
+    'Both discrete striction polygons, m_i of Proposition 2 and the perpendicular midpoints of Fig. 3, against the exact striction curve; the readout measures each. The hyperboloid is the paper’s, the 36 rulings ruledlab’s.',
   'paper.ex2.caption': 'Example 2: any ruled surface can be mapped isometrically onto a conoidal ruled surface.',
-  'paper.ex2.note': 'The hinge chain of Example 3’s quartic half-way (t = 0.5) between the surface and its conoidal model; slide t or press play. The edge-length readout shows that the bending is isometric to rounding. The paper gives no data.',
-  'paper.ex3.caption': 'Example 3: N = 12 generators of the quartic ruled surface (1 + vu², u²/2 + uv, u − v), n = 12, one step of the variational subdivision.',
-  'paper.ex3.note': 'Example 3 with the paper’s data, the first triangulation and the exact surface shown faintly; the readout measures the distance of the inserted rulings from the surface for every scheme.',
-  'paper.ex4.caption': 'Example 4: the butterfly scheme on congruences with two different director surfaces d₁; d₂, a generalised offset surface, is not plotted in the paper.',
-  'paper.ex4.note': 'The sphere of Fig. 13 with lines inserted on the diagonals only, and d₂ (which the paper does not plot) shaded too. The paper gives no formulas for Example 4; the congruence is ruledlab’s.',
-  'paper.ex5.caption': 'Example 5: d₁ = (u, v, ½ sin(2u + 1.5v)), lines parallel to (u, v, sin u + 1.3 cos v), 8 × 7 values on [−1.1, 1.1]², K = 6.',
-  'paper.ex5.note': 'Example 5 with the paper’s data, refined once by the paper’s scheme read literally, with both director surfaces (d₂ = p + 0.35 d: the paper gives no segment length).',
-  'paper.ex6.caption': 'Example 6: a few positions of a milling tool along a profile, refined into a smooth path by the variational subdivision of Section 4.',
-  'paper.ex6.note': 'Two steps, the tool further along the path. The paper gives no data; the profile, the poses and the tool are ruledlab’s.',
+  'paper.ex2.note':
+    'The hinge chain of Example 3’s quartic half-way (t = 0.5) between the surface and its conoidal model; slide t or press play. The edge-length readout shows that the bending is isometric to rounding. The paper gives no data.',
+  'paper.ex3.caption':
+    'Example 3: N = 12 generators of the quartic ruled surface (1 + vu², u²/2 + uv, u − v), n = 12, one step of the variational subdivision.',
+  'paper.ex3.note':
+    'Example 3 with the paper’s data, the first triangulation and the exact surface shown faintly; the readout measures the distance of the inserted rulings from the surface for every scheme.',
+  'paper.ex4.caption':
+    'Example 4: the butterfly scheme on congruences with two different director surfaces d₁; d₂, a generalised offset surface, is not plotted in the paper.',
+  'paper.ex4.note':
+    'The sphere of Fig. 13 with lines inserted on the diagonals only, and d₂ (which the paper does not plot) shaded too. The paper gives no formulas for Example 4; the congruence is ruledlab’s.',
+  'paper.ex5.caption':
+    'Example 5: d₁ = (u, v, ½ sin(2u + 1.5v)), lines parallel to (u, v, sin u + 1.3 cos v), 8 × 7 values on [−1.1, 1.1]², K = 6.',
+  'paper.ex5.note':
+    'Example 5 with the paper’s data, refined once by the paper’s scheme read literally, with both director surfaces (d₂ = p + 0.35 d: the paper gives no segment length).',
+  'paper.ex6.caption':
+    'Example 6: a few positions of a milling tool along a profile, refined into a smooth path by the variational subdivision of Section 4.',
+  'paper.ex6.note':
+    'Two steps, the tool further along the path. The paper gives no data; the profile, the poses and the tool are ruledlab’s.',
   'congruence.param.labels': 'Notation of Fig. 14',
   'congruence.reason.labels': 'The notation of Fig. 14 belongs to one step of a variational scheme.',
   'congruence.stencil.title': 'Fig. 12: the butterfly stencil of (16)',
@@ -552,5 +626,6 @@ export default {
   'striction.readout.order.footpoint': 'measured order N → 2N: footpoint',
   'striction.readout.order.midpoint': 'measured order N → 2N: striction polygon m_i',
   'striction.readout.order.perpendicular': 'measured order N → 2N: Fig. 3 polygon',
-  'striction.claim.orders': 'On the hyperboloid and the quartic, from 20 rulings on, doubling N halves the footpoint error and quarters the errors of both polygons: measured orders within 0.25 of 1, 2 and 2.',
+  'striction.claim.orders':
+    'On the hyperboloid and the quartic, from 20 rulings on, doubling N halves the footpoint error and quarters the errors of both polygons: measured orders within 0.25 of 1, 2 and 2.',
 };

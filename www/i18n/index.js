@@ -18,11 +18,13 @@ export const LANGUAGE_CODES = Object.keys(LANGUAGES);
  */
 export function pickLanguage(wanted) {
   const offered = (/** @type {string | null | undefined} */ code) => {
-    const base = String(code ?? '').toLowerCase().split('-')[0];
+    const base = String(code ?? '')
+      .toLowerCase()
+      .split('-')[0];
     return LANGUAGE_CODES.includes(base) ? base : null;
   };
   if (wanted && offered(wanted)) return /** @type {string} */ (offered(wanted));
-  const browser = typeof navigator === 'undefined' ? [] : navigator.languages ?? [navigator.language];
+  const browser = typeof navigator === 'undefined' ? [] : (navigator.languages ?? [navigator.language]);
   for (const code of browser) if (offered(code)) return /** @type {string} */ (offered(code));
   return 'en';
 }
@@ -67,8 +69,12 @@ export function translator(lang) {
     if (!vars) return text;
     // {n:rule:rules}: the number and the word in the singular or the plural
     return text
-      .replace(/\{(\w+):([^:}]*):([^}]*)\}/g, (m, name, one, many) => (name in vars ? `${format(vars[name])} ${vars[name] === 1 ? one : many}` : m))
-      .replace(/\{(\w+)\}/g, (m, name) => (name in vars ? (typeof vars[name] === 'number' ? format(vars[name]) : String(vars[name])) : m));
+      .replace(/\{(\w+):([^:}]*):([^}]*)\}/g, (m, name, one, many) =>
+        name in vars ? `${format(vars[name])} ${vars[name] === 1 ? one : many}` : m,
+      )
+      .replace(/\{(\w+)\}/g, (m, name) =>
+        name in vars ? (typeof vars[name] === 'number' ? format(vars[name]) : String(vars[name])) : m,
+      );
   };
   return { lang, t, format, has: (/** @type {string} */ key) => key in table };
 }

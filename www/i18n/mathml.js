@@ -2,13 +2,16 @@
 // the project's own fixed strings only (never text from a user or a link).
 
 /** <mi>…</mi> for each letter-like token, <mo> for operators, <mn> for digits. */
-const token = (/** @type {string} */ t) => (/^[0-9.]+$/.test(t) ? `<mn>${t}</mn>` : /^[+−=,()<>·×∈/|′→]$/.test(t) ? `<mo>${t}</mo>` : `<mi>${t}</mi>`);
+const token = (/** @type {string} */ t) =>
+  /^[0-9.]+$/.test(t) ? `<mn>${t}</mn>` : /^[+−=,()<>·×∈/|′→]$/.test(t) ? `<mo>${t}</mo>` : `<mi>${t}</mi>`;
 
 /** A row of tokens separated by spaces: "i , i + 1". */
-export const row = (/** @type {string} */ tokens) => `<mrow>${tokens.split(' ').filter(Boolean).map(token).join('')}</mrow>`;
+export const row = (/** @type {string} */ tokens) =>
+  `<mrow>${tokens.split(' ').filter(Boolean).map(token).join('')}</mrow>`;
 
 /** base with a subscript: sub('f', 'i , i + 1'). */
-export const sub = (/** @type {string} */ base, /** @type {string} */ index) => `<msub>${token(base)}${row(index)}</msub>`;
+export const sub = (/** @type {string} */ base, /** @type {string} */ index) =>
+  `<msub>${token(base)}${row(index)}</msub>`;
 
 /** Inline math. */
 export const m = (/** @type {string} */ inner) => `<math>${inner}</math>`;

@@ -14,9 +14,22 @@ export const scene = defineScene({
   text: 'congruence.text',
   paper: true,
   params: [
-    { key: 'congruence', label: 'congruence.param.congruence', type: 'select', value: 'example5', options: congruenceOptions },
+    {
+      key: 'congruence',
+      label: 'congruence.param.congruence',
+      type: 'select',
+      value: 'example5',
+      options: congruenceOptions,
+    },
     ...SCHEME_PARAMS,
-    { key: 'labels', label: 'congruence.param.labels', type: 'checkbox', value: false, unless: (p) => (fig14Applies({ scheme: String(p.scheme), steps: Number(p.steps) }) ? null : 'congruence.reason.labels') },
+    {
+      key: 'labels',
+      label: 'congruence.param.labels',
+      type: 'checkbox',
+      value: false,
+      unless: (p) =>
+        fig14Applies({ scheme: String(p.scheme), steps: Number(p.steps) }) ? null : 'congruence.reason.labels',
+    },
   ],
   legend: LEGEND,
   /** @param {CongruenceParams} p */

@@ -12,9 +12,31 @@ export const scene = defineScene({
   text: 'convergence.text',
   paper: true,
   params: [
-    { key: 'surface', label: 'param.surface', type: 'select', value: 'hyperboloid', options: surfaceOptions(['hyperboloid', 'quartic', 'helical', 'pluecker-conoid', 'hyperbolic-paraboloid', 'helix-tangent']) },
+    {
+      key: 'surface',
+      label: 'param.surface',
+      type: 'select',
+      value: 'hyperboloid',
+      options: surfaceOptions([
+        'hyperboloid',
+        'quartic',
+        'helical',
+        'pluecker-conoid',
+        'hyperbolic-paraboloid',
+        'helix-tangent',
+      ]),
+    },
     { key: 'u', label: 'convergence.param.u', type: 'range', min: -1, max: 3, step: 0.01, value: 0.7, play: true },
-    { key: 'h0', label: 'convergence.param.h0', type: 'range', min: 0.05, max: 0.8, step: 0.01, value: 0.4, play: true },
+    {
+      key: 'h0',
+      label: 'convergence.param.h0',
+      type: 'range',
+      min: 0.05,
+      max: 0.8,
+      step: 0.01,
+      value: 0.4,
+      play: true,
+    },
     { key: 'levels', label: 'convergence.param.levels', type: 'range', min: 3, max: 12, step: 1, value: 8 },
   ],
   legend: [

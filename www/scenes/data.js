@@ -7,7 +7,11 @@ import { defineScene, scoped, bounds, f32 } from '../scene.js';
  * What the scene shows before anything is imported: five rulings of a small twisted strip.
  * @type {import('../scene.js').ImportedData}
  */
-export const EXAMPLE = { segments: new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 0.5, 0.7, 0.7, 0.5, 0, 0, 1, 0, 1, 1, 0, 0, 1.5, -0.7, 0.7, 1.5, 0, 0, 2, -1, 0, 2]) };
+export const EXAMPLE = {
+  segments: new Float64Array([
+    0, 0, 0, 1, 0, 0, 0, 0, 0.5, 0.7, 0.7, 0.5, 0, 0, 1, 0, 1, 1, 0, 0, 1.5, -0.7, 0.7, 1.5, 0, 0, 2, -1, 0, 2,
+  ]),
+};
 
 export const scene = defineScene({
   id: 'data',
@@ -37,7 +41,13 @@ export const scene = defineScene({
         const seg = c.segmentsF32();
         /** @type {import('../scene.js').Layer[]} */
         const layers = [{ kind: 'segments', style: 'ruling', positions: seg }];
-        if (p.strip) layers.push({ kind: 'mesh', style: 'director1', positions: c.directorF32(1), indices: gridIndices(rows, cols) });
+        if (p.strip)
+          layers.push({
+            kind: 'mesh',
+            style: 'director1',
+            positions: c.directorF32(1),
+            indices: gridIndices(rows, cols),
+          });
         /** @type {import('../scene.js').Readout[]} */
         const readouts = [{ label: 'data.readout.lines', value: `${rows} × ${cols}` }];
         let description = t('data.describeCongruence', { rows, cols });
@@ -67,7 +77,8 @@ export const scene = defineScene({
         { kind: 'polyline', style: 'striction', positions: f32(inv.striction), closed },
         { kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) },
       ];
-      if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(s.length, closed) });
+      if (p.strip)
+        layers.push({ kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(s.length, closed) });
       const parallel = inv.parallel.reduce((a, b) => a + b, 0);
       return {
         bounds: bounds(seg),

@@ -4,21 +4,58 @@ import { AnalyticCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
 import { congruenceFigure, SCHEME_PARAMS, LEGEND } from '../figures/congruence.js';
 import { focalFigure } from '../figures/focal.js';
-import { CONGRUENCE_PRESETS, congruencePreset } from '../catalogue.js';
+import { CONGRUENCE_PRESETS, congruencePreset, formulaParameter } from '../catalogue.js';
 
 /** The formula fields a catalogue congruence fills in (its texts from the core), its grid and a, b, c. */
 /** @returns {import('../scene.js').Params} */
 function presetParams(/** @type {string} */ name) {
   const c = congruencePreset(name);
   if (!c) return {};
-  return { px: c.p[0], py: c.p[1], pz: c.p[2], ex: c.e[0], ey: c.e[1], ez: c.e[2], umin: c.u[0], umax: c.u[1], vmin: c.v[0], vmax: c.v[1], rows: c.rows, cols: c.cols, a: c.parameters.a, b: c.parameters.b, c: c.parameters.c };
+  return {
+    px: c.p[0],
+    py: c.p[1],
+    pz: c.p[2],
+    ex: c.e[0],
+    ey: c.e[1],
+    ez: c.e[2],
+    umin: c.u[0],
+    umax: c.u[1],
+    vmin: c.v[0],
+    vmax: c.v[1],
+    rows: c.rows,
+    cols: c.cols,
+    a: c.parameters.a,
+    b: c.parameters.b,
+    c: c.parameters.c,
+  };
 }
 
 const START = presetParams('example5');
-const formula = (/** @type {string} */ key) => ({ key, label: `formulaCongruence.param.${key}`, type: /** @type {const} */ ('text'), value: String(START[/** @type {keyof typeof START} */ (key)]) });
+const formula = (/** @type {string} */ key) => ({
+  key,
+  label: `formulaCongruence.param.${key}`,
+  type: /** @type {const} */ ('text'),
+  value: String(START[/** @type {keyof typeof START} */ (key)]),
+});
 
 /** @type {Record<string, string | string[]>} */
-const FIELDS = { 'p[0]': 'px', 'p[1]': 'py', 'p[2]': 'pz', 'e[0]': 'ex', 'e[1]': 'ey', 'e[2]': 'ez', 'u[0]': 'umin', 'u[1]': 'umax', 'v[0]': 'vmin', 'v[1]': 'vmax', u: ['umin', 'umax'], v: ['vmin', 'vmax'], e: ['ex', 'ey', 'ez'], rows: 'rows', cols: 'cols' };
+const FIELDS = {
+  'p[0]': 'px',
+  'p[1]': 'py',
+  'p[2]': 'pz',
+  'e[0]': 'ex',
+  'e[1]': 'ey',
+  'e[2]': 'ez',
+  'u[0]': 'umin',
+  'u[1]': 'umax',
+  'v[0]': 'vmin',
+  'v[1]': 'vmax',
+  u: ['umin', 'umax'],
+  v: ['vmin', 'vmax'],
+  e: ['ex', 'ey', 'ez'],
+  rows: 'rows',
+  cols: 'cols',
+};
 
 /** @typedef {{preset: string, px: string, py: string, pz: string, ex: string, ey: string, ez: string, umin: string, umax: string, vmin: string, vmax: string, rows: number, cols: number, a: number, b: number, c: number, scheme: string, steps: number, director: boolean, second: boolean, focal: boolean}} FormulaCongruenceParams */
 
@@ -27,14 +64,29 @@ export const scene = defineScene({
   title: 'formulaCongruence.title',
   text: 'formulaCongruence.text',
   params: [
-    { key: 'preset', label: 'formula.param.preset', type: 'select', value: 'example5', options: () => CONGRUENCE_PRESETS.map((k) => [k.name, `congruence.${k.name}`]), sets: (v) => presetParams(String(v)) },
-    formula('px'), formula('py'), formula('pz'), formula('ex'), formula('ey'), formula('ez'),
-    formula('umin'), formula('umax'), formula('vmin'), formula('vmax'),
+    {
+      key: 'preset',
+      label: 'formula.param.preset',
+      type: 'select',
+      value: 'example5',
+      options: () => CONGRUENCE_PRESETS.map((k) => [k.name, `congruence.${k.name}`]),
+      sets: (v) => presetParams(String(v)),
+    },
+    formula('px'),
+    formula('py'),
+    formula('pz'),
+    formula('ex'),
+    formula('ey'),
+    formula('ez'),
+    formula('umin'),
+    formula('umax'),
+    formula('vmin'),
+    formula('vmax'),
     { key: 'rows', label: 'formulaCongruence.param.rows', type: 'range', min: 2, max: 30, step: 1, value: 8 },
     { key: 'cols', label: 'formulaCongruence.param.cols', type: 'range', min: 2, max: 30, step: 1, value: 7 },
-    { key: 'a', label: 'formula.param.a', type: 'range', min: -3, max: 3, step: 0.01, value: 1, exact: true, play: true },
-    { key: 'b', label: 'formula.param.b', type: 'range', min: -3, max: 3, step: 0.01, value: 1, exact: true, play: true },
-    { key: 'c', label: 'formula.param.c', type: 'range', min: -3, max: 3, step: 0.01, value: 1, exact: true, play: true },
+    formulaParameter('a', 1),
+    formulaParameter('b', 1),
+    formulaParameter('c', 1),
     ...SCHEME_PARAMS,
     { key: 'focal', label: 'formulaCongruence.param.focal', type: 'checkbox', value: false },
   ],

@@ -8,7 +8,7 @@ import { strictionFigure } from '../figures/striction.js';
 import { convergenceFigure } from '../figures/convergence.js';
 import { isometryFigure } from '../figures/isometry.js';
 import { subdivisionFigure } from '../figures/subdivision.js';
-import { SURFACE_PRESETS, surfacePreset } from '../catalogue.js';
+import { SURFACE_PRESETS, surfacePreset, formulaParameter } from '../catalogue.js';
 
 /** The formula fields a catalogue surface fills in (its texts from the core) and its a, b, c. */
 /** @returns {import('../scene.js').Params} */
@@ -16,21 +16,56 @@ function presetParams(/** @type {string} */ name) {
   const p = surfacePreset(name);
   if (!p) return {};
   return {
-    ax: p.a[0], ay: p.a[1], az: p.a[2], ex: p.e[0], ey: p.e[1], ez: p.e[2],
-    umin: p.u[0], umax: p.u[1], vmin: p.v[0], vmax: p.v[1], closed: p.closed, a: p.parameters.a, b: p.parameters.b, c: p.parameters.c,
+    ax: p.a[0],
+    ay: p.a[1],
+    az: p.a[2],
+    ex: p.e[0],
+    ey: p.e[1],
+    ez: p.e[2],
+    umin: p.u[0],
+    umax: p.u[1],
+    vmin: p.v[0],
+    vmax: p.v[1],
+    closed: p.closed,
+    a: p.parameters.a,
+    b: p.parameters.b,
+    c: p.parameters.c,
   };
 }
 
 const HYPERBOLOID = presetParams('hyperboloid');
 const TOOLS = ['striction', 'convergence', 'bending', 'development', 'subdivision'];
 /** @param {string[]} tools @returns {(p: import('../scene.js').Params) => string | null} */
-const onlyFor = (...tools) => (p) => (tools.includes(String(p.tool)) ? null : 'formula.reason.tool');
+const onlyFor =
+  (...tools) =>
+  (p) =>
+    tools.includes(String(p.tool)) ? null : 'formula.reason.tool';
 
 /** @type {Record<string, string | string[]>} */
-const FIELDS = { 'a[0]': 'ax', 'a[1]': 'ay', 'a[2]': 'az', 'e[0]': 'ex', 'e[1]': 'ey', 'e[2]': 'ez', 'u[0]': 'umin', 'u[1]': 'umax', 'v[0]': 'vmin', 'v[1]': 'vmax', u: ['umin', 'umax'], v: ['vmin', 'vmax'], e: ['ex', 'ey', 'ez'], parameters: 'a' };
+const FIELDS = {
+  'a[0]': 'ax',
+  'a[1]': 'ay',
+  'a[2]': 'az',
+  'e[0]': 'ex',
+  'e[1]': 'ey',
+  'e[2]': 'ez',
+  'u[0]': 'umin',
+  'u[1]': 'umax',
+  'v[0]': 'vmin',
+  'v[1]': 'vmax',
+  u: ['umin', 'umax'],
+  v: ['vmin', 'vmax'],
+  e: ['ex', 'ey', 'ez'],
+  parameters: 'a',
+};
 
 /** A text parameter holding a formula. */
-const formula = (/** @type {string} */ key, /** @type {string} */ value) => ({ key, label: `formula.param.${key}`, type: /** @type {const} */ ('text'), value });
+const formula = (/** @type {string} */ key, /** @type {string} */ value) => ({
+  key,
+  label: `formula.param.${key}`,
+  type: /** @type {const} */ ('text'),
+  value,
+});
 
 /** @typedef {{preset: string, ax: string, ay: string, az: string, ex: string, ey: string, ez: string, umin: string, umax: string, vmin: string, vmax: string, closed: boolean, a: number, b: number, c: number, tool: string, n: number, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis: boolean, strip: boolean, u: number, h0: number, levels: number, t: number, scheme: string, steps: number}} FormulaParams */
 
@@ -39,35 +74,148 @@ export const scene = defineScene({
   title: 'formula.title',
   text: 'formula.text',
   params: [
-    { key: 'preset', label: 'formula.param.preset', type: 'select', value: 'hyperboloid', options: () => SURFACE_PRESETS.map((k) => [k.name, `surface.${k.name}`]), sets: (v) => presetParams(String(v)) },
-    formula('ax', String(HYPERBOLOID.ax)), formula('ay', String(HYPERBOLOID.ay)), formula('az', String(HYPERBOLOID.az)),
-    formula('ex', String(HYPERBOLOID.ex)), formula('ey', String(HYPERBOLOID.ey)), formula('ez', String(HYPERBOLOID.ez)),
-    formula('umin', '0'), formula('umax', '2*pi'), formula('vmin', '-1'), formula('vmax', '1'),
+    {
+      key: 'preset',
+      label: 'formula.param.preset',
+      type: 'select',
+      value: 'hyperboloid',
+      options: () => SURFACE_PRESETS.map((k) => [k.name, `surface.${k.name}`]),
+      sets: (v) => presetParams(String(v)),
+    },
+    formula('ax', String(HYPERBOLOID.ax)),
+    formula('ay', String(HYPERBOLOID.ay)),
+    formula('az', String(HYPERBOLOID.az)),
+    formula('ex', String(HYPERBOLOID.ex)),
+    formula('ey', String(HYPERBOLOID.ey)),
+    formula('ez', String(HYPERBOLOID.ez)),
+    formula('umin', '0'),
+    formula('umax', '2*pi'),
+    formula('vmin', '-1'),
+    formula('vmax', '1'),
     { key: 'closed', label: 'formula.param.closed', type: 'checkbox', value: true },
-    { key: 'a', label: 'formula.param.a', type: 'range', min: -3, max: 3, step: 0.01, value: 1, exact: true, play: true },
-    { key: 'b', label: 'formula.param.b', type: 'range', min: -3, max: 3, step: 0.01, value: 2, exact: true, play: true },
-    { key: 'c', label: 'formula.param.c', type: 'range', min: -3, max: 3, step: 0.01, value: 3, exact: true, play: true },
-    { key: 'tool', label: 'formula.param.tool', type: 'select', value: 'striction', options: () => TOOLS.map((k) => [k, `formula.tool.${k}`]) },
-    { key: 'n', label: 'param.rulings', type: 'range', min: 4, max: 160, step: 1, value: 36, play: true, unless: onlyFor('striction', 'bending', 'development', 'subdivision') },
+    formulaParameter('a', 1),
+    formulaParameter('b', 2),
+    formulaParameter('c', 3),
+    {
+      key: 'tool',
+      label: 'formula.param.tool',
+      type: 'select',
+      value: 'striction',
+      options: () => TOOLS.map((k) => [k, `formula.tool.${k}`]),
+    },
+    {
+      key: 'n',
+      label: 'param.rulings',
+      type: 'range',
+      min: 4,
+      max: 160,
+      step: 1,
+      value: 36,
+      play: true,
+      unless: onlyFor('striction', 'bending', 'development', 'subdivision'),
+    },
     { key: 'normals', label: 'striction.param.normals', type: 'checkbox', value: true, unless: onlyFor('striction') },
     { key: 'polygon', label: 'striction.param.polygon', type: 'checkbox', value: true, unless: onlyFor('striction') },
-    { key: 'midpoints', label: 'striction.param.midpoints', type: 'checkbox', value: false, unless: onlyFor('striction') },
+    {
+      key: 'midpoints',
+      label: 'striction.param.midpoints',
+      type: 'checkbox',
+      value: false,
+      unless: onlyFor('striction'),
+    },
     { key: 'exact', label: 'striction.param.exact', type: 'checkbox', value: true, unless: onlyFor('striction') },
     { key: 'axis', label: 'striction.param.axis', type: 'checkbox', value: false, unless: onlyFor('striction') },
     { key: 'strip', label: 'param.strip', type: 'checkbox', value: true, unless: onlyFor('striction') },
-    { key: 'u', label: 'convergence.param.u', type: 'range', min: -10, max: 10, step: 0.01, value: 0.7, play: true, unless: onlyFor('convergence') },
-    { key: 'h0', label: 'convergence.param.h0', type: 'range', min: 0.02, max: 0.8, step: 0.01, value: 0.3, unless: onlyFor('convergence') },
-    { key: 'levels', label: 'convergence.param.levels', type: 'range', min: 3, max: 12, step: 1, value: 8, unless: onlyFor('convergence') },
-    { key: 't', label: 'isometry.param.t', type: 'range', min: 0, max: 1, step: 0.01, value: 1, play: true, unless: onlyFor('bending') },
-    { key: 'scheme', label: 'param.scheme', type: 'select', value: 'four-point', refit: false, options: () => [['four-point', 'formula.scheme.fourPoint'], ['chaikin', 'formula.scheme.chaikin'], ['variational', 'formula.scheme.variational'], ['lines', 'formula.scheme.lines']], unless: onlyFor('subdivision') },
-    { key: 'steps', label: 'param.steps', type: 'range', min: 1, max: 4, step: 1, value: 1, play: true, unless: onlyFor('subdivision') },
+    {
+      key: 'u',
+      label: 'convergence.param.u',
+      type: 'range',
+      min: -10,
+      max: 10,
+      step: 0.01,
+      value: 0.7,
+      play: true,
+      unless: onlyFor('convergence'),
+    },
+    {
+      key: 'h0',
+      label: 'convergence.param.h0',
+      type: 'range',
+      min: 0.02,
+      max: 0.8,
+      step: 0.01,
+      value: 0.3,
+      unless: onlyFor('convergence'),
+    },
+    {
+      key: 'levels',
+      label: 'convergence.param.levels',
+      type: 'range',
+      min: 3,
+      max: 12,
+      step: 1,
+      value: 8,
+      unless: onlyFor('convergence'),
+    },
+    {
+      key: 't',
+      label: 'isometry.param.t',
+      type: 'range',
+      min: 0,
+      max: 1,
+      step: 0.01,
+      value: 1,
+      play: true,
+      unless: onlyFor('bending'),
+    },
+    {
+      key: 'scheme',
+      label: 'param.scheme',
+      type: 'select',
+      value: 'four-point',
+      refit: false,
+      options: () => [
+        ['four-point', 'formula.scheme.fourPoint'],
+        ['chaikin', 'formula.scheme.chaikin'],
+        ['variational', 'formula.scheme.variational'],
+        ['lines', 'formula.scheme.lines'],
+      ],
+      unless: onlyFor('subdivision'),
+    },
+    {
+      key: 'steps',
+      label: 'param.steps',
+      type: 'range',
+      min: 1,
+      max: 4,
+      step: 1,
+      value: 1,
+      play: true,
+      unless: onlyFor('subdivision'),
+    },
   ],
   legend: [
     { style: 'ruling', label: 'legend.rulings', when: (p) => p.tool !== 'subdivision' },
-    { style: 'normal', label: 'legend.normals', when: (p) => (p.tool === 'striction' && !!p.normals) || p.tool === 'convergence' || p.tool === 'bending' },
-    { style: 'striction', label: 'legend.striction', when: (p) => (p.tool === 'striction' && !!p.polygon) || p.tool === 'bending' || p.tool === 'development' },
-    { style: 'perpendicularMidpoints', label: 'legend.perpendicularMidpoints', when: (p) => p.tool === 'striction' && !!p.midpoints },
-    { style: 'exact', label: 'legend.exactStriction', when: (p) => (p.tool === 'striction' && !!p.exact) || p.tool === 'convergence' },
+    {
+      style: 'normal',
+      label: 'legend.normals',
+      when: (p) => (p.tool === 'striction' && !!p.normals) || p.tool === 'convergence' || p.tool === 'bending',
+    },
+    {
+      style: 'striction',
+      label: 'legend.striction',
+      when: (p) => (p.tool === 'striction' && !!p.polygon) || p.tool === 'bending' || p.tool === 'development',
+    },
+    {
+      style: 'perpendicularMidpoints',
+      label: 'legend.perpendicularMidpoints',
+      when: (p) => p.tool === 'striction' && !!p.midpoints,
+    },
+    {
+      style: 'exact',
+      label: 'legend.exactStriction',
+      when: (p) => (p.tool === 'striction' && !!p.exact) || p.tool === 'convergence',
+    },
     { style: 'complexAxis', label: 'legend.complexAxis', when: (p) => p.tool === 'striction' && !!p.axis },
     { style: 'tangent', label: 'convergence.legend.tangent', when: (p) => p.tool === 'convergence' },
     { style: 'given', label: 'formula.legend.given', when: (p) => p.tool === 'subdivision' },
@@ -93,11 +241,19 @@ export const scene = defineScene({
       const [uMin, uMax] = [...analytic.parameters(2, { closed: false })];
       const ranges = { uMin, uMax, closed: !!p.closed };
       const n = Number(p.n);
-      if (p.tool === 'convergence') return convergenceFigure(own, analytic, { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) }, ctx);
-      if (p.tool === 'subdivision') return subdivisionFigure(own, analytic, ranges, { n, scheme: String(p.scheme), steps: Number(p.steps) }, ctx);
+      if (p.tool === 'convergence')
+        return convergenceFigure(own, analytic, { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) }, ctx);
+      if (p.tool === 'subdivision')
+        return subdivisionFigure(own, analytic, ranges, { n, scheme: String(p.scheme), steps: Number(p.steps) }, ctx);
       if (p.tool === 'bending' || p.tool === 'development') {
         const surface = own(analytic.sample(n, { closed: false }));
-        return isometryFigure(own, surface, { layout: p.tool === 'bending' ? 'bend' : 'panels', t: Number(p.t), ghost: true, n }, ctx, 'formula');
+        return isometryFigure(
+          own,
+          surface,
+          { layout: p.tool === 'bending' ? 'bend' : 'panels', t: Number(p.t), ghost: true, n },
+          ctx,
+          'formula',
+        );
       }
       return strictionFigure(own, analytic, ranges, p, ctx, 'formula');
     });

@@ -15,4 +15,19 @@ import { scene as large } from './large.js';
 import { scene as data } from './data.js';
 
 /** @type {import('../scene.js').Scene[]} */
-export const SCENES = [striction, notation, convergence, isometry, curves, strip, congruence, milling, formula, formulaCongruence, focal, lines, large, data];
+export const SCENES = [
+  striction,
+  notation,
+  convergence,
+  isometry,
+  curves,
+  strip,
+  congruence,
+  milling,
+  formula,
+  formulaCongruence,
+  focal,
+  lines,
+  large,
+  data,
+];

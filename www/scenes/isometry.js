@@ -25,17 +25,61 @@ export const scene = defineScene({
   text: 'isometry.text',
   paper: true,
   params: [
-    { key: 'surface', label: 'param.surface', type: 'select', value: 'quartic', options: surfaceOptions(['quartic', 'helical', 'helical-orthogonal', 'hyperboloid', 'hyperbolic-paraboloid', 'pluecker-conoid', 'helix-tangent', 'cone']) },
-    { key: 'layout', label: 'isometry.param.layout', type: 'select', value: 'bend', options: () => [['bend', 'isometry.layout.bend'], ['panels', 'isometry.layout.panels']] },
+    {
+      key: 'surface',
+      label: 'param.surface',
+      type: 'select',
+      value: 'quartic',
+      options: surfaceOptions([
+        'quartic',
+        'helical',
+        'helical-orthogonal',
+        'hyperboloid',
+        'hyperbolic-paraboloid',
+        'pluecker-conoid',
+        'helix-tangent',
+        'cone',
+      ]),
+    },
+    {
+      key: 'layout',
+      label: 'isometry.param.layout',
+      type: 'select',
+      value: 'bend',
+      options: () => [
+        ['bend', 'isometry.layout.bend'],
+        ['panels', 'isometry.layout.panels'],
+      ],
+    },
     { key: 'n', label: 'param.rulings', type: 'range', min: 4, max: 120, step: 1, value: 24, play: true },
-    { key: 't', label: 'isometry.param.t', type: 'range', min: 0, max: 1, step: 0.01, value: 1, play: true, unless: (p) => (p.layout === 'panels' ? 'isometry.reason.panels' : null) },
-    { key: 'ghost', label: 'isometry.param.ghost', type: 'checkbox', value: true, unless: (p) => (p.layout === 'panels' ? 'isometry.reason.panels' : p.t === 0 ? 'isometry.reason.flat' : null) },
+    {
+      key: 't',
+      label: 'isometry.param.t',
+      type: 'range',
+      min: 0,
+      max: 1,
+      step: 0.01,
+      value: 1,
+      play: true,
+      unless: (p) => (p.layout === 'panels' ? 'isometry.reason.panels' : null),
+    },
+    {
+      key: 'ghost',
+      label: 'isometry.param.ghost',
+      type: 'checkbox',
+      value: true,
+      unless: (p) => (p.layout === 'panels' ? 'isometry.reason.panels' : p.t === 0 ? 'isometry.reason.flat' : null),
+    },
   ],
   legend: [
     { style: 'ruling', label: 'legend.rulings' },
     { style: 'striction', label: 'isometry.legend.striction' },
     { style: 'normal', label: 'legend.normals', when: (p) => p.layout === 'bend' },
-    { style: 'ghost', label: 'isometry.legend.ghost', when: (p) => p.layout === 'bend' && !!p.ghost && Number(p.t) > 0 },
+    {
+      style: 'ghost',
+      label: 'isometry.legend.ghost',
+      when: (p) => p.layout === 'bend' && !!p.ghost && Number(p.t) > 0,
+    },
   ],
   /** @param {IsometryParams} p */
   create(p, ctx) {
@@ -46,7 +90,10 @@ export const scene = defineScene({
       const n = Number(p.n);
       const surface = own(analytic.sample(n, ranges));
       // Fig. 5: ρ with twice the spacing halved, to show its order where the caption holds
-      const finer = name === 'helical-orthogonal' ? { n: 2 * n - 1, radius: middleRadius(own(analytic.sample(2 * n - 1, ranges))) } : null;
+      const finer =
+        name === 'helical-orthogonal'
+          ? { n: 2 * n - 1, radius: middleRadius(own(analytic.sample(2 * n - 1, ranges))) }
+          : null;
       return isometryFigure(own, surface, p, ctx, name, finer);
     });
   },

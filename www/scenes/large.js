@@ -4,19 +4,7 @@
 // ruling), and the readout says so.
 import { AnalyticSurface, RuledSurface, meshNormalsF32, stripIndices } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds } from '../scene.js';
-
-/** Output sizes above this go to the worker. */
-const WORKER_THRESHOLD = 50_000;
-/** Most rulings drawn as a strip (a level of detail above it). */
-const DRAW_LIMIT = 100_000;
-/**
- * Most rulings in the strip drawn while the camera moves (a lighter stand-in, Layer.moving):
- * enough for a moving picture, light enough for software WebGL (bench/page.mjs); the full
- * strip returns as soon as the camera rests.
- */
-const MOVING_LIMIT = 2_000;
-/** Most rulings drawn as lines: a few pixels apart in a full view; more would merge into a moiré. */
-const LINE_LIMIT = 160;
+import { WORKER_THRESHOLD, DRAW_LIMIT, MOVING_LIMIT, LINE_LIMIT } from '../limits.js';
 
 /**
  * The strip with every k-th ruling of `segments`, at most MOVING_LIMIT, to draw while the
@@ -44,7 +32,16 @@ function picture(segments, rulings, drawRulings, { t }) {
   const indices = stripIndices(drawn);
   // thousands of rulings put several facets in a pixel: shaded by vertex normals, not by facet
   /** @type {import('../scene.js').Layer[]} */
-  const layers = [{ kind: 'mesh', style: 'stripOpaque', positions: segments, indices, normals: meshNormalsF32(segments, indices), moving: movingStrip(segments) }];
+  const layers = [
+    {
+      kind: 'mesh',
+      style: 'stripOpaque',
+      positions: segments,
+      indices,
+      normals: meshNormalsF32(segments, indices),
+      moving: movingStrip(segments),
+    },
+  ];
   const every = Math.ceil(drawn / LINE_LIMIT);
   let lines = 0;
   if (drawRulings) {
@@ -52,7 +49,12 @@ function picture(segments, rulings, drawRulings, { t }) {
     lines = shown.length / 6;
     layers.push({ kind: 'segments', style: 'ruling', positions: shown });
   }
-  const notes = [drawn < rulings ? t('large.note.lod', { every: Math.ceil(rulings / drawn), drawn }) : '', drawRulings && lines < rulings ? t('large.note.lines', { every: Math.round((rulings - 1) / Math.max(lines - 1, 1)) }) : ''];
+  const notes = [
+    drawn < rulings ? t('large.note.lod', { every: Math.ceil(rulings / drawn), drawn }) : '',
+    drawRulings && lines < rulings
+      ? t('large.note.lines', { every: Math.round((rulings - 1) / Math.max(lines - 1, 1)) })
+      : '',
+  ];
   return {
     bounds: bounds(segments),
     camera: { yaw: -1.0, pitch: 0.3 },
@@ -82,7 +84,8 @@ export const scene = defineScene({
   ],
   create(p, ctx) {
     return scoped((own) => {
-      const n = Number(p.n), steps = Number(p.steps);
+      const n = Number(p.n),
+        steps = Number(p.steps);
       const helicoid = own(AnalyticSurface.byName('helicoid'));
       const coarse = own(helicoid.sample(n, { uMin: 0, uMax: 12, closed: false }));
       const expected = (n - 1) * 2 ** steps + 1;
@@ -95,7 +98,9 @@ export const scene = defineScene({
       const input = coarse.segments();
       const refine = ctx.refine;
       first.later = (onProgress) =>
-        refine(input, { scheme: 'four-point', steps }, onProgress, DRAW_LIMIT).then(({ segments, rulings }) => picture(segments, rulings, !!p.rulings, ctx));
+        refine(input, { scheme: 'four-point', steps }, onProgress, DRAW_LIMIT).then(({ segments, rulings }) =>
+          picture(segments, rulings, !!p.rulings, ctx),
+        );
       return first;
     });
   },

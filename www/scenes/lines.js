@@ -7,7 +7,10 @@ const RANGES = { hyperboloid: { uMin: 0, uMax: 3 }, helical: { uMin: 0, uMax: 6 
 
 /** How far each endpoint slides along its line: a fixed pattern, scaled by `amount` (units of segment length). */
 function pattern(/** @type {number} */ n, /** @type {number} */ amount, /** @type {number} */ length) {
-  return Float64Array.from({ length: 2 * n }, (_, k) => amount * 0.6 * length * (k % 2 ? Math.cos(1.7 * (k >> 1) + 0.4) : Math.sin(2.3 * (k >> 1) + 1)));
+  return Float64Array.from(
+    { length: 2 * n },
+    (_, k) => amount * 0.6 * length * (k % 2 ? Math.cos(1.7 * (k >> 1) + 0.4) : Math.sin(2.3 * (k >> 1) + 1)),
+  );
 }
 
 export const scene = defineScene({
@@ -15,7 +18,17 @@ export const scene = defineScene({
   title: 'lines.title',
   text: 'lines.text',
   params: [
-    { key: 'surface', label: 'param.surface', type: 'select', value: 'helical', options: () => [['helical', 'surface.helical'], ['hyperboloid', 'surface.hyperboloid'], ['quartic', 'surface.quartic']] },
+    {
+      key: 'surface',
+      label: 'param.surface',
+      type: 'select',
+      value: 'helical',
+      options: () => [
+        ['helical', 'surface.helical'],
+        ['hyperboloid', 'surface.hyperboloid'],
+        ['quartic', 'surface.quartic'],
+      ],
+    },
     { key: 'slide', label: 'lines.param.slide', type: 'range', min: 0, max: 1, step: 0.01, value: 0.6, play: true },
     { key: 'steps', label: 'param.steps', type: 'range', min: 1, max: 3, step: 1, value: 2, play: true },
   ],
@@ -55,7 +68,12 @@ export const scene = defineScene({
           { label: 'lines.readout.endpoints', value: endpointTurn, exactZero: true },
           { label: 'lines.readout.lines', value: lineTurn, exactZero: true },
         ],
-        description: t('lines.describe', { surface: t(`surface.${name}`), slide: Number(p.slide), endpointTurn, lineTurn }),
+        description: t('lines.describe', {
+          surface: t(`surface.${name}`),
+          slide: Number(p.slide),
+          endpointTurn,
+          lineTurn,
+        }),
         data: { segments: lines.segments() },
       };
     });

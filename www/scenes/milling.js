@@ -13,7 +13,10 @@ const SCHEMES = {
 };
 
 /** Largest |deviation| of the machined surface from the target profile. */
-function maxDeviation(/** @type {import('../../pkg/ruledlab.js').ToolPath} */ path, /** @type {Float64Array} */ profile) {
+function maxDeviation(
+  /** @type {import('../../pkg/ruledlab.js').ToolPath} */ path,
+  /** @type {Float64Array} */ profile,
+) {
   return path.deviation(profile).reduce((m, d) => Math.max(m, Math.abs(d)), 0);
 }
 
@@ -25,9 +28,27 @@ export const scene = defineScene({
   params: [
     { key: 'poses', label: 'milling.param.poses', type: 'range', min: 4, max: 12, step: 1, value: 7 },
     { key: 'steps', label: 'milling.param.steps', type: 'range', min: 0, max: 3, step: 1, value: 1, play: true },
-    { key: 'scheme', label: 'param.scheme', type: 'select', value: 'variational', refit: false, options: () => Object.keys(SCHEMES).map((s) => [s, `milling.scheme.${s}`]), unless: (p) => (Number(p.steps) === 0 ? 'milling.reason.steps' : null) },
+    {
+      key: 'scheme',
+      label: 'param.scheme',
+      type: 'select',
+      value: 'variational',
+      refit: false,
+      options: () => Object.keys(SCHEMES).map((s) => [s, `milling.scheme.${s}`]),
+      unless: (p) => (Number(p.steps) === 0 ? 'milling.reason.steps' : null),
+    },
     { key: 'tool', label: 'milling.param.tool', type: 'checkbox', value: true },
-    { key: 'at', label: 'milling.param.at', type: 'range', min: 0, max: 1, step: 0.01, value: 0.35, play: true, unless: (p) => (p.tool ? null : 'milling.reason.tool') },
+    {
+      key: 'at',
+      label: 'milling.param.at',
+      type: 'range',
+      min: 0,
+      max: 1,
+      step: 0.01,
+      value: 0.35,
+      play: true,
+      unless: (p) => (p.tool ? null : 'milling.reason.tool'),
+    },
     { key: 'envelope', label: 'milling.param.envelope', type: 'checkbox', value: true },
     { key: 'part', label: 'milling.param.part', type: 'checkbox', value: true },
   ],
@@ -53,7 +74,8 @@ export const scene = defineScene({
       // every scheme's deviation at these steps, for the comparison the text makes (and its claim)
       /** @type {Record<string, number>} */
       const compare = {};
-      for (const [k, o] of Object.entries(SCHEMES)) compare[k] = maxDeviation(own(path.refine({ ...o, steps })), profile);
+      for (const [k, o] of Object.entries(SCHEMES))
+        compare[k] = maxDeviation(own(path.refine({ ...o, steps })), profile);
       const given0 = maxDeviation(path, profile);
       const centres = refined.barycentres();
       /** @type {import('../scene.js').Layer[]} */
@@ -63,7 +85,8 @@ export const scene = defineScene({
         { kind: 'polyline', style: 'barycentre', positions: f32(centres) },
         { kind: 'points', style: 'barycentrePoint', positions: f32(centres) },
       ];
-      if (steps > 0) layers.push({ kind: 'segments', style: 'insertedAxis', positions: refined.insertedF32(2 ** steps) });
+      if (steps > 0)
+        layers.push({ kind: 'segments', style: 'insertedAxis', positions: refined.insertedF32(2 ** steps) });
       if (p.envelope) {
         const { positions, indices } = refined.envelopeMesh(14);
         layers.push({ kind: 'mesh', style: 'envelope', positions, indices });
@@ -76,7 +99,11 @@ export const scene = defineScene({
         const { positions, indices } = ToolPath.examplePart(60, 30);
         layers.push({ kind: 'mesh', style: 'part', positions, indices });
       }
-      const exports = { json: refined.export('json'), csv: refined.export('csv'), gcode: refined.export('gcode', { scale: 10, feed: 1200 }) };
+      const exports = {
+        json: refined.export('json'),
+        csv: refined.export('csv'),
+        gcode: refined.export('gcode', { scale: 10, feed: 1200 }),
+      };
       return {
         bounds: bounds(given, all, profile),
         camera: { yaw: -1.9, pitch: 0.55 },
@@ -87,15 +114,43 @@ export const scene = defineScene({
           { label: 'milling.readout.angleStep', value: quality.maxAngleStep },
           { label: 'milling.readout.secondDifference', value: quality.maxSecondDifference },
           { label: 'milling.readout.compare.given', value: given0 },
-          ...(steps > 0 ? Object.entries(compare).map(([k, v]) => ({ label: `milling.readout.compare.${k}`, value: v })) : []),
+          ...(steps > 0
+            ? Object.entries(compare).map(([k, v]) => ({ label: `milling.readout.compare.${k}`, value: v }))
+            : []),
         ],
         claims: [
-          ...(steps > 0 ? [{ text: 'milling.claim.refined', holds: Math.max(compare.variational, compare.averaged, compare['four-point']) < given0 }] : []),
-          ...(steps > 0 && Number(p.poses) >= 7 ? [{ text: 'milling.claim.variational', holds: Math.max(compare.variational, compare.averaged) < Math.min(compare['four-point'], compare.linear) }] : []),
+          ...(steps > 0
+            ? [
+                {
+                  text: 'milling.claim.refined',
+                  holds: Math.max(compare.variational, compare.averaged, compare['four-point']) < given0,
+                },
+              ]
+            : []),
+          ...(steps > 0 && Number(p.poses) >= 7
+            ? [
+                {
+                  text: 'milling.claim.variational',
+                  holds:
+                    Math.max(compare.variational, compare.averaged) < Math.min(compare['four-point'], compare.linear),
+                },
+              ]
+            : []),
         ],
-        description: t('milling.describe', { poses: Number(p.poses), steps, scheme: t(`milling.scheme.${p.scheme}`), total: refined.length, deviation }),
+        description: t('milling.describe', {
+          poses: Number(p.poses),
+          steps,
+          scheme: t(`milling.scheme.${p.scheme}`),
+          total: refined.length,
+          deviation,
+        }),
         downloads: [
-          { label: 'milling.download.json', filename: 'toolpath.json', content: exports.json, type: 'application/json' },
+          {
+            label: 'milling.download.json',
+            filename: 'toolpath.json',
+            content: exports.json,
+            type: 'application/json',
+          },
           { label: 'milling.download.csv', filename: 'toolpath.csv', content: exports.csv, type: 'text/csv' },
           { label: 'milling.download.gcode', filename: 'toolpath.nc', content: exports.gcode, type: 'text/plain' },
         ],

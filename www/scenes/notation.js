@@ -5,7 +5,8 @@ import { AnalyticSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 
 /** The point t of the way along segment i of flat segments `s`. */
-const along = (/** @type {Float64Array} */ s, /** @type {number} */ i, /** @type {number} */ t) => [0, 1, 2].map((c) => s[6 * i + c] + t * (s[6 * i + 3 + c] - s[6 * i + c]));
+const along = (/** @type {Float64Array} */ s, /** @type {number} */ i, /** @type {number} */ t) =>
+  [0, 1, 2].map((c) => s[6 * i + c] + t * (s[6 * i + 3 + c] - s[6 * i + c]));
 
 export const scene = defineScene({
   id: 'notation',
@@ -13,7 +14,16 @@ export const scene = defineScene({
   text: 'notation.text',
   paper: true,
   params: [
-    { key: 'spacing', label: 'notation.param.spacing', type: 'range', min: 0.15, max: 0.9, step: 0.01, value: 0.55, play: true },
+    {
+      key: 'spacing',
+      label: 'notation.param.spacing',
+      type: 'range',
+      min: 0.15,
+      max: 0.9,
+      step: 0.01,
+      value: 0.55,
+      play: true,
+    },
     { key: 'u', label: 'notation.param.u', type: 'range', min: 0, max: 6.28, step: 0.01, value: 0.7, play: true },
   ],
   legend: [
@@ -24,7 +34,8 @@ export const scene = defineScene({
   ],
   create(p, { t }) {
     return scoped((own) => {
-      const u = Number(p.u), spacing = Number(p.spacing);
+      const u = Number(p.u),
+        spacing = Number(p.spacing);
       const hyp = own(AnalyticSurface.byName('hyperboloid'));
       const sampled = own(hyp.sample(3, { uMin: u - spacing, uMax: u + spacing, closed: false }));
       // segments of one length centred on the striction points keep the picture on what matters

@@ -3,7 +3,8 @@
 // triangulations of Fig. 9 with its notation, spheres at the inserted endpoints A_i (light)
 // and B_i (dark).
 import { AnalyticSurface, stripIndices } from '../../pkg/ruledlab.js';
-import { defineScene, scoped, bounds, f32 } from '../scene.js';
+import { defineScene, scoped, bounds } from '../scene.js';
+import { ROUNDING } from '../limits.js';
 
 const U = { uMin: -1, uMax: 1, closed: false };
 /** The old ruling whose neighbourhood carries the labels of Fig. 9. */
@@ -15,9 +16,42 @@ export const scene = defineScene({
   text: 'strip.text',
   paper: true,
   params: [
-    { key: 'scheme', label: 'param.scheme', type: 'select', value: 'coupled', refit: false, options: () => [['literal', 'strip.scheme.literal'], ['coupled', 'strip.scheme.coupled'], ['averaged', 'strip.scheme.averaged'], ['four-point', 'strip.scheme.fourPoint']] },
-    { key: 'n', label: 'strip.param.n', type: 'range', min: 3, max: 24, step: 1, value: 12, play: true, unless: (p) => (p.scheme === 'four-point' ? 'strip.reason.n' : null) },
-    { key: 'triangulation', label: 'strip.param.triangulation', type: 'select', value: '1', refit: false, options: () => [['1', 'strip.triangulation.first'], ['2', 'strip.triangulation.second'], ['none', 'strip.triangulation.none']] },
+    {
+      key: 'scheme',
+      label: 'param.scheme',
+      type: 'select',
+      value: 'coupled',
+      refit: false,
+      options: () => [
+        ['literal', 'strip.scheme.literal'],
+        ['coupled', 'strip.scheme.coupled'],
+        ['averaged', 'strip.scheme.averaged'],
+        ['four-point', 'strip.scheme.fourPoint'],
+      ],
+    },
+    {
+      key: 'n',
+      label: 'strip.param.n',
+      type: 'range',
+      min: 3,
+      max: 24,
+      step: 1,
+      value: 12,
+      play: true,
+      unless: (p) => (p.scheme === 'four-point' ? 'strip.reason.n' : null),
+    },
+    {
+      key: 'triangulation',
+      label: 'strip.param.triangulation',
+      type: 'select',
+      value: '1',
+      refit: false,
+      options: () => [
+        ['1', 'strip.triangulation.first'],
+        ['2', 'strip.triangulation.second'],
+        ['none', 'strip.triangulation.none'],
+      ],
+    },
     { key: 'labels', label: 'strip.param.labels', type: 'checkbox', value: true },
     { key: 'exact', label: 'strip.param.exact', type: 'checkbox', value: true },
   ],
@@ -34,11 +68,15 @@ export const scene = defineScene({
       const quartic = own(AnalyticSurface.byName('quartic'));
       const surface = own(quartic.sample(12, U));
       /** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */
-      const options = p.scheme === 'four-point' ? { scheme: 'four-point' } : { scheme: 'variational', n, variant: /** @type {'coupled' | 'literal' | 'averaged'} */ (p.scheme) };
+      const options =
+        p.scheme === 'four-point'
+          ? { scheme: 'four-point' }
+          : { scheme: 'variational', n, variant: /** @type {'coupled' | 'literal' | 'averaged'} */ (p.scheme) };
       const refined = own(surface.subdivide(options));
       const distance = quartic.insertedDistance(refined, 2, U.uMin, U.uMax);
       // every scheme at this n, for the comparisons the text makes (and their claims)
-      const error = (/** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */ o) => quartic.insertedDistance(own(surface.subdivide(o)), 2, U.uMin, U.uMax);
+      const error = (/** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */ o) =>
+        quartic.insertedDistance(own(surface.subdivide(o)), 2, U.uMin, U.uMax);
       const compare = {
         midpoint: error({ scheme: 'bspline', degree: 1 }),
         literal: error({ scheme: 'variational', n, variant: 'literal' }),
@@ -55,7 +93,12 @@ export const scene = defineScene({
         { kind: 'points', style: 'pointA', positions: refined.endsF32(1, 2) },
         { kind: 'points', style: 'pointB', positions: refined.endsF32(2, 2) },
       ];
-      if (p.triangulation !== 'none') layers.push({ kind: 'segments', style: 'triangulation', positions: refined.triangulationF32(n, Number(p.triangulation)) });
+      if (p.triangulation !== 'none')
+        layers.push({
+          kind: 'segments',
+          style: 'triangulation',
+          positions: refined.triangulationF32(n, Number(p.triangulation)),
+        });
       if (p.exact) {
         const exact = own(quartic.sample(120, U));
         const seg = exact.segmentsF32();
@@ -83,14 +126,22 @@ export const scene = defineScene({
         readouts: [
           { label: 'readout.rulings', value: refined.length },
           { label: 'strip.readout.distance', value: distance, exactZero: true },
-          ...Object.entries(compare).map(([k, v]) => ({ label: `strip.readout.compare.${k}`, value: v, exactZero: true })),
+          ...Object.entries(compare).map(([k, v]) => ({
+            label: `strip.readout.compare.${k}`,
+            value: v,
+            exactZero: true,
+          })),
         ],
         claims: [
-          { text: 'strip.claim.literal', holds: Math.abs(compare.literal - compare.midpoint) <= 1e-12 },
+          { text: 'strip.claim.literal', holds: Math.abs(compare.literal - compare.midpoint) <= ROUNDING },
           ...(n >= 6 ? [{ text: 'strip.claim.coupled', holds: compare.coupled < compare.midpoint }] : []),
-          { text: 'strip.claim.fourPoint', holds: compare.fourPoint < 1e-12 && compare.fourPoint <= others },
+          { text: 'strip.claim.fourPoint', holds: compare.fourPoint < ROUNDING && compare.fourPoint <= others },
         ],
-        description: t('strip.describe', { scheme: t(`strip.scheme.${p.scheme === 'four-point' ? 'fourPoint' : p.scheme}`), n, distance }),
+        description: t('strip.describe', {
+          scheme: t(`strip.scheme.${p.scheme === 'four-point' ? 'fourPoint' : p.scheme}`),
+          n,
+          distance,
+        }),
         data: { segments: refined.segments() },
       };
     });

@@ -4,6 +4,7 @@
 // disabled and says why. Used by the page and by <ruled-view controls>.
 import { irrelevance, parseNumber } from '../scene.js';
 import { appendRich } from './richtext.js';
+import { ROUNDING } from '../limits.js';
 
 /**
  * @typedef {object} ControlHooks
@@ -41,8 +42,16 @@ export function buildControls(form, scene, params, i18n, hooks) {
     const label = appendRich(Object.assign(doc.createElement('label'), { htmlFor: id }), t(p.label));
     const cell = doc.createElement('div');
     cell.className = 'rl-cell';
-    const reason = Object.assign(doc.createElement('small'), { className: 'rl-reason', id: `${id}-reason`, hidden: true });
-    const problem = Object.assign(doc.createElement('small'), { className: 'rl-fielderror', id: `${id}-error`, hidden: true });
+    const reason = Object.assign(doc.createElement('small'), {
+      className: 'rl-reason',
+      id: `${id}-reason`,
+      hidden: true,
+    });
+    const problem = Object.assign(doc.createElement('small'), {
+      className: 'rl-fielderror',
+      id: `${id}-error`,
+      hidden: true,
+    });
     /** @type {HTMLInputElement | HTMLSelectElement} */
     let input;
     /** @type {(v: any) => void} */
@@ -63,7 +72,12 @@ export function buildControls(form, scene, params, i18n, hooks) {
       input = box;
       cell.append(box);
     } else if (p.type === 'text') {
-      const field = Object.assign(doc.createElement('input'), { type: 'text', spellcheck: false, autocomplete: 'off', maxLength: p.maxLength ?? 1000 });
+      const field = Object.assign(doc.createElement('input'), {
+        type: 'text',
+        spellcheck: false,
+        autocomplete: 'off',
+        maxLength: p.maxLength ?? 1000,
+      });
       field.setAttribute('autocapitalize', 'off');
       field.className = 'rl-formula';
       set = (v) => {
@@ -81,12 +95,23 @@ export function buildControls(form, scene, params, i18n, hooks) {
       input = field;
       cell.append(field);
     } else {
-      const slider = Object.assign(doc.createElement('input'), { type: 'range', min: String(p.min), max: String(p.max), step: String(p.step ?? 'any') });
+      const slider = Object.assign(doc.createElement('input'), {
+        type: 'range',
+        min: String(p.min),
+        max: String(p.max),
+        step: String(p.step ?? 'any'),
+      });
       const output = Object.assign(doc.createElement('output'), { htmlFor: id });
       output.setAttribute('aria-hidden', 'true');
       // a field for the exact value: always where the paper uses exact values ("1/13"), and for
       // any slider with more values than pixels (fit()), beside its − / + steps
-      const exact = Object.assign(doc.createElement('input'), { type: 'text', inputMode: 'decimal', className: 'rl-exact', spellcheck: false, autocomplete: 'off' });
+      const exact = Object.assign(doc.createElement('input'), {
+        type: 'text',
+        inputMode: 'decimal',
+        className: 'rl-exact',
+        spellcheck: false,
+        autocomplete: 'off',
+      });
       exact.setAttribute('aria-label', t('control.exactValue', { name: t(p.label) }));
       exact.title = t(p.exact ? 'control.exactHint' : 'control.numberHint');
       exact.hidden = !p.exact;
@@ -97,10 +122,15 @@ export function buildControls(form, scene, params, i18n, hooks) {
         if (inRange) hooks.onChange(p.key, p.exact ? x : snap(p, x), true);
       });
       const stepper = (/** @type {-1 | 1} */ sign) => {
-        const b = Object.assign(doc.createElement('button'), { type: 'button', className: 'rl-step', textContent: sign < 0 ? '−' : '+', hidden: true });
+        const b = Object.assign(doc.createElement('button'), {
+          type: 'button',
+          className: 'rl-step',
+          textContent: sign < 0 ? '−' : '+',
+          hidden: true,
+        });
         b.setAttribute('aria-label', t(sign < 0 ? 'control.decrease' : 'control.increase', { name: t(p.label) }));
         b.addEventListener('click', () => {
-          const next = snap(p, Number(slider.value) + sign * (p.step ?? ((/** @type {number} */ (p.max) - /** @type {number} */ (p.min)) / 100)));
+          const next = snap(p, Number(slider.value) + sign * (p.step ?? span(p) / 100));
           if (next !== Number(slider.value)) hooks.onChange(p.key, next, true);
         });
         return b;
@@ -182,7 +212,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
   const fit = () => {
     for (const f of fine) {
       const p = f.param;
-      const values = p.step ? Math.round((/** @type {number} */ (p.max) - /** @type {number} */ (p.min)) / p.step) + 1 : Infinity;
+      const values = p.step ? Math.round(span(p) / p.step) + 1 : Infinity;
       const width = f.slider.getBoundingClientRect().width;
       if (width > 0 && values > width && f.minus.hidden) {
         f.minus.hidden = f.plus.hidden = f.exact.hidden = false;
@@ -204,7 +234,8 @@ function plain(/** @type {number} */ x, /** @type {string} */ lang) {
 
 /** `x` on the slider's grid of steps, within its range. */
 function snap(/** @type {import('../scene.js').Param} */ p, /** @type {number} */ x) {
-  const min = /** @type {number} */ (p.min), max = /** @type {number} */ (p.max);
+  const min = /** @type {number} */ (p.min),
+    max = /** @type {number} */ (p.max);
   const on = p.step ? min + Math.round((x - min) / p.step) * p.step : x;
   return Number(Math.min(max, Math.max(min, on)).toPrecision(12));
 }
@@ -214,7 +245,12 @@ export function fraction(/** @type {number} */ x) {
   if (!Number.isFinite(x)) return '';
   for (let q = 1; q <= 64; q++) {
     const p = Math.round(x * q);
-    if (Math.abs(p / q - x) < 1e-12 * Math.max(1, Math.abs(x))) return q === 1 ? String(p) : `${p}/${q}`;
+    if (Math.abs(p / q - x) < ROUNDING * Math.max(1, Math.abs(x))) return q === 1 ? String(p) : `${p}/${q}`;
   }
   return String(Number(x.toPrecision(12)));
+}
+
+/** The length max − min of a range parameter's interval. */
+function span(/** @type {import('../scene.js').Param} */ p) {
+  return /** @type {number} */ (p.max) - /** @type {number} */ (p.min);
 }

@@ -28,13 +28,18 @@ export function describeError(error, i18n, field) {
   const reason = d.reason;
   const known = reason && reason !== 'text' && has(`error.${reason}`);
   // a reason the page has no text for (an argument check meant for programmers): what kind of problem it is
-  const text = known ? t(`error.${reason}`, values(d.args, i18n)) : t(has(`error.code.${e.code}`) ? `error.code.${e.code}` : 'error.code.unknown');
+  const text = known
+    ? t(`error.${reason}`, values(d.args, i18n))
+    : t(has(`error.code.${e.code}`) ? `error.code.${e.code}` : 'error.code.unknown');
   const name = field ?? (d.option ? optionName(d.option, i18n) : '');
   const at =
-    d.line && d.column ? t('error.atLineColumn', { line: d.line, column: d.column })
-    : d.line ? t('error.atLine', { line: d.line })
-    : d.column ? t('error.atColumn', { column: d.column })
-    : '';
+    d.line && d.column
+      ? t('error.atLineColumn', { line: d.line, column: d.column })
+      : d.line
+        ? t('error.atLine', { line: d.line })
+        : d.column
+          ? t('error.atColumn', { column: d.column })
+          : '';
   const hint = d.hint && has(`error.${d.hint.reason}`) ? t(`error.${d.hint.reason}`, values(d.hint.args, i18n)) : '';
   const sentence = `${text}${at ? ` ${at}` : ''}${hint ? t('error.hintJoin', { hint }) : ''}`;
   return `${upper(name ? t('error.field', { field: name, text: sentence }) : sentence)}${/[.!?]$/.test(sentence) ? '' : '.'}`;
@@ -57,12 +62,14 @@ function values(args, { t, has, lang }) {
   /** @type {Record<string, string>} */
   const out = {};
   for (const [key, value] of Object.entries(args ?? {})) {
-    if (key.endsWith('Reason')) out[key.slice(0, -'Reason'.length)] = has(`error.${value}`) ? t(`error.${value}`) : String(value);
+    if (key.endsWith('Reason'))
+      out[key.slice(0, -'Reason'.length)] = has(`error.${value}`) ? t(`error.${value}`) : String(value);
     else if (typeof value === 'number') out[key] = number(value, lang);
     else if (key === 'what') out[key] = has(`error.what.${value}`) ? t(`error.what.${value}`) : value;
     else out[key] = value;
   }
-  for (const [key, value] of Object.entries(args ?? {})) if (key.endsWith('Reason')) out[key.slice(0, -'Reason'.length)] ??= String(value);
+  for (const [key, value] of Object.entries(args ?? {}))
+    if (key.endsWith('Reason')) out[key.slice(0, -'Reason'.length)] ??= String(value);
   return out;
 }
 
@@ -72,7 +79,8 @@ export function number(/** @type {number} */ x, /** @type {string} */ lang) {
   if (!Number.isFinite(x)) return x > 0 ? '∞' : '−∞';
   if (Number.isInteger(x) && Math.abs(x) < 1e15) return String(x).replace('-', '−');
   const a = Math.abs(x);
-  const text = a !== 0 && (a >= 1e15 || a < 1e-4) ? x.toExponential(3).replace(/\.?0+e/, 'e') : String(Number(x.toPrecision(6)));
+  const text =
+    a !== 0 && (a >= 1e15 || a < 1e-4) ? x.toExponential(3).replace(/\.?0+e/, 'e') : String(Number(x.toPrecision(6)));
   return (lang === 'de' ? text.replace('.', ',') : text).replace('-', '−');
 }
 
@@ -93,9 +101,14 @@ export function startFailure(error, { t }) {
   const e = /** @type {any} */ (error);
   const technical = String(e?.message ?? e);
   const key =
-    e?.code === 'no-webgl2' ? 'boot.noWebgl2'
-    : typeof WebAssembly === 'undefined' || e instanceof WebAssembly.CompileError || e instanceof WebAssembly.LinkError ? 'boot.noWasm'
-    : /fetch|import|load|network|MIME/i.test(technical) ? 'boot.load'
-    : 'boot.failed';
+    e?.code === 'no-webgl2'
+      ? 'boot.noWebgl2'
+      : typeof WebAssembly === 'undefined' ||
+          e instanceof WebAssembly.CompileError ||
+          e instanceof WebAssembly.LinkError
+        ? 'boot.noWasm'
+        : /fetch|import|load|network|MIME/i.test(technical)
+          ? 'boot.load'
+          : 'boot.failed';
   return { text: t(key), technical };
 }

@@ -20,4 +20,3 @@ export function showFailure(box, e, i18n) {
   more.append(summary, code);
   box.replaceChildren(doc.createTextNode(`${text} `), more);
 }
-

@@ -30,11 +30,13 @@ export function swatch(doc, styleKey) {
     if (style.dash) shape.setAttribute('stroke-dasharray', style.dash.join(' '));
   } else if (style.kind === 'point') {
     shape = doc.createElementNS(SVG, 'circle');
-    for (const [k, v] of Object.entries({ cx: 14, cy: 6, r: Math.min(style.size / 2, 5.5) })) shape.setAttribute(k, String(v));
+    for (const [k, v] of Object.entries({ cx: 14, cy: 6, r: Math.min(style.size / 2, 5.5) }))
+      shape.setAttribute(k, String(v));
     shape.setAttribute('fill', style.color);
   } else {
     shape = doc.createElementNS(SVG, 'rect');
-    for (const [k, v] of Object.entries({ x: 4, y: 0.5, width: 20, height: 11, rx: 2 })) shape.setAttribute(k, String(v));
+    for (const [k, v] of Object.entries({ x: 4, y: 0.5, width: 20, height: 11, rx: 2 }))
+      shape.setAttribute(k, String(v));
     shape.setAttribute('fill', style.color);
     shape.setAttribute('fill-opacity', String(Math.max(style.alpha, 0.6)));
     shape.setAttribute('stroke', style.color);

@@ -1,6 +1,7 @@
 // Playing a parameter, like GeoGebra's animation button: a continuous parameter sweeps back
 // and forth between its ends, a stepped one counts up and starts over; speed and single steps
 // are offered. Respects prefers-reduced-motion (no autoplay; playing stays possible).
+import { ROUNDING } from '../limits.js';
 
 /** Seconds for one sweep across a continuous range at speed 1. */
 const SWEEP = 4;
@@ -62,10 +63,11 @@ export class Player {
   step(/** @type {import('../scene.js').Param} */ p, /** @type {number} */ value) {
     this.param = p;
     this.value = value;
-    const min = /** @type {number} */ (p.min), max = /** @type {number} */ (p.max);
+    const min = /** @type {number} */ (p.min),
+      max = /** @type {number} */ (p.max);
     const delta = Player.stepped(p) ? /** @type {number} */ (p.step) : (max - min) / 20;
     let next = value + delta;
-    if (next > max + 1e-12) next = min;
+    if (next > max + ROUNDING) next = min;
     this.value = Player.stepped(p) ? next : Number(next.toFixed(6));
     this.set(p.key, this.value);
   }
@@ -74,12 +76,14 @@ export class Player {
   advance(/** @type {number} */ dt) {
     const p = this.param;
     if (!p) return;
-    const min = /** @type {number} */ (p.min), max = /** @type {number} */ (p.max);
+    const min = /** @type {number} */ (p.min),
+      max = /** @type {number} */ (p.max);
     if (Player.stepped(p)) {
       this.accumulated += dt * this.speed;
       if (this.accumulated < STEP_TIME) return;
       this.accumulated = 0;
-      this.value = this.value + /** @type {number} */ (p.step) > max ? min : this.value + /** @type {number} */ (p.step);
+      this.value =
+        this.value + /** @type {number} */ (p.step) > max ? min : this.value + /** @type {number} */ (p.step);
     } else {
       let v = this.value + (this.direction * dt * this.speed * (max - min)) / SWEEP;
       if (v >= max) [v, this.direction] = [max, -1];

@@ -1,6 +1,7 @@
 // The readout: the numbers a scene measures, as a definition list, formatted for the language
 // ("exact" where an error is 0 to rounding).
 import { appendRich, plainRich } from './richtext.js';
+import { EXACT_ZERO } from '../limits.js';
 
 /**
  * @param {HTMLElement} list   a <dl>
@@ -11,18 +12,24 @@ export function showReadout(list, readouts, { t, format }) {
   const doc = list.ownerDocument;
   list.replaceChildren(
     ...readouts.flatMap(({ label, value, exactZero }) => {
-      const shown = exactZero && typeof value === 'number' && Math.abs(value) < 1e-13 ? t('readout.exact') : typeof value === 'number' ? format(value) : t(String(value));
-      return [appendRich(doc.createElement('dt'), t(label)), Object.assign(doc.createElement('dd'), { textContent: shown })];
+      const shown = valueText(value, exactZero, { t, format });
+      return [
+        appendRich(doc.createElement('dt'), t(label)),
+        Object.assign(doc.createElement('dd'), { textContent: shown }),
+      ];
     }),
   );
   list.hidden = readouts.length === 0;
 }
 
 /** The readout as one sentence for screen readers: "label: value; …". */
-export function readoutSentence(/** @type {import('../scene.js').Readout[]} */ readouts, /** @type {import('../i18n/index.js').Translator} */ { t, format }) {
+export function readoutSentence(
+  /** @type {import('../scene.js').Readout[]} */ readouts,
+  /** @type {import('../i18n/index.js').Translator} */ { t, format },
+) {
   return readouts
     .map(({ label, value, exactZero }) => {
-      const shown = exactZero && typeof value === 'number' && Math.abs(value) < 1e-13 ? t('readout.exact') : typeof value === 'number' ? format(value) : t(String(value));
+      const shown = valueText(value, exactZero, { t, format });
       return `${plainRich(t(label))}: ${shown}`;
     })
     .join('; ');
@@ -44,7 +51,10 @@ export function showClaims(list, claims, t) {
       li.dataset.claim = text;
       const mark = Object.assign(doc.createElement('span'), { className: 'rl-mark', textContent: holds ? '✓' : '✗' });
       mark.setAttribute('aria-hidden', 'true');
-      const status = Object.assign(doc.createElement('span'), { className: 'rl-sr-only', textContent: `${t(holds ? 'claim.holds' : 'claim.fails')}: ` });
+      const status = Object.assign(doc.createElement('span'), {
+        className: 'rl-sr-only',
+        textContent: `${t(holds ? 'claim.holds' : 'claim.fails')}: `,
+      });
       li.append(mark, status);
       appendRich(li, t(text));
       return li;
@@ -52,4 +62,16 @@ export function showClaims(list, claims, t) {
   );
   list.hidden = claims.length === 0;
   if (claims.length) list.setAttribute('aria-label', t('claim.title'));
+}
+
+/**
+ * A readout's value as shown: "exact" for an exact zero, a number in the language's format, or
+ * the translation of a key.
+ * @param {import('../scene.js').Readout['value']} value
+ * @param {boolean | undefined} exactZero
+ * @param {Pick<import('../i18n/index.js').Translator, 't' | 'format'>} i18n
+ */
+function valueText(value, exactZero, { t, format }) {
+  if (exactZero && typeof value === 'number' && Math.abs(value) < EXACT_ZERO) return t('readout.exact');
+  return typeof value === 'number' ? format(value) : t(String(value));
 }

@@ -13,7 +13,10 @@ export function parseRich(text) {
   let last = 0;
   for (const m of String(text).matchAll(re)) {
     if (m.index > last) parts.push({ text: text.slice(last, m.index), kind: /** @type {const} */ ('text') });
-    parts.push({ text: m[2] ?? m[3], kind: m[1] === '_' ? /** @type {const} */ ('sub') : /** @type {const} */ ('sup') });
+    parts.push({
+      text: m[2] ?? m[3],
+      kind: m[1] === '_' ? /** @type {const} */ ('sub') : /** @type {const} */ ('sup'),
+    });
     last = m.index + m[0].length;
   }
   if (last < text.length) parts.push({ text: text.slice(last), kind: /** @type {const} */ ('text') });
@@ -36,5 +39,9 @@ export function appendRich(parent, text) {
 
 /** The label read aloud: "R_{i,i+1}" → "R i,i+1". */
 export function plainRich(/** @type {string} */ text) {
-  return parseRich(text).map((p) => (p.kind === 'text' ? p.text : ` ${p.text}`)).join('').replace(/\s+/g, ' ').trim();
+  return parseRich(text)
+    .map((p) => (p.kind === 'text' ? p.text : ` ${p.text}`))
+    .join('')
+    .replace(/\s+/g, ' ')
+    .trim();
 }

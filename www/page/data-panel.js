@@ -1,0 +1,168 @@
+// The page's data panel, in the stage's panel: your own segments pasted or uploaded (read by the
+// core's importSegments, errors said at the paste box), and the menu of exports of what is
+// shown — drawings (SVG, TikZ, PNG, the plot) and data files (written by the core).
+import { importSegments } from '../../pkg/ruledlab.js';
+import { download } from '../stage.js';
+import { linkable } from '../state.js';
+import { describeError } from '../ui/errors.js';
+import { dataFile } from '../export/files.js';
+import { png } from '../export/png.js';
+import { exportSvg } from '../export/svg.js';
+import { exportTikz } from '../export/tikz.js';
+import { store } from '../platform.js';
+
+/** Session storage key of an import too large for the link. */
+export const STORED = 'ruledlab.data';
+
+/** The data files of the export menu: file name suffix, the core's format, MIME type. */
+const DATA_FILES = /** @type {const} */ ({
+  obj: ['.obj', 'obj', 'model/obj'],
+  csv: ['.csv', 'csv', 'text/csv'],
+  json: ['.json', 'json', 'application/json'],
+  invariants: ['-invariants.json', 'invariants-json', 'application/json'],
+  invariantsCsv: ['-invariants.csv', 'invariants-csv', 'text/csv'],
+});
+
+/** Every export button, in menu order, with the i18n key of its label. */
+const EXPORTS = /** @type {const} */ ([
+  ['svg', 'export.svg'],
+  ['svgBw', 'export.svgBw'],
+  ['tikz', 'export.tikz'],
+  ['png', 'export.png'],
+  ['png2', 'export.png2'],
+  ['png4', 'export.png4'],
+  ['obj', 'export.obj'],
+  ['csv', 'export.csv'],
+  ['json', 'export.json'],
+  ['invariants', 'export.invariants'],
+  ['invariantsCsv', 'export.invariantsCsv'],
+  ['plot', 'export.plot'],
+]);
+
+/** Imported data kept in session storage, or null. */
+export function parseStored(/** @type {string} */ text) {
+  try {
+    const { segments, rows, cols } = JSON.parse(text);
+    return { segments: new Float64Array(segments), rows, cols };
+  } catch {
+    return null;
+  }
+}
+
+/**
+ * The panel, put into the stage's panel before its explanation.
+ * @param {import('../stage.js').Stage} stage
+ * @param {{ i18n: () => import('../i18n/index.js').Translator, onData: (data: import('../scene.js').ImportedData) => void }} options
+ *   onData: the page shows imported data (in the "data" scene)
+ */
+export function dataPanel(stage, { i18n, onData }) {
+  const doc = stage.panel.ownerDocument;
+  const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
+    Object.assign(doc.createElement(tag), props);
+  const io = el('details', { className: 'io' });
+  const summary = el('summary');
+  const pasteLabel = el('label', { htmlFor: 'import-text' });
+  const paste = /** @type {HTMLTextAreaElement} */ (el('textarea', { id: 'import-text', rows: 4, spellcheck: false }));
+  paste.placeholder = '0,0,0,1,0,0\n0,0,1,0,1,1\n0,0,2,-1,0,2';
+  const row = el('div', { className: 'io-row' });
+  const upload = /** @type {HTMLInputElement} */ (
+    el('input', { type: 'file', id: 'import-file', accept: '.csv,.json,.txt,text/csv,application/json' })
+  );
+  const showButton = el('button', { type: 'button', id: 'import-button' });
+  row.append(upload, showButton);
+  const importError = el('p', { className: 'io-error', id: 'import-error', hidden: true });
+  importError.setAttribute('role', 'alert');
+  const storedNote = el('p', { className: 'io-note', hidden: true });
+  const exportsLabel = el('p', { className: 'io-label' });
+  const exports = el('div', { className: 'io-row', id: 'exports' });
+  /** @type {Record<string, HTMLButtonElement>} */
+  const buttons = {};
+  for (const [kind] of EXPORTS) {
+    buttons[kind] = /** @type {HTMLButtonElement} */ (el('button', { type: 'button' }));
+    buttons[kind].dataset.export = kind;
+    exports.append(buttons[kind]);
+  }
+  io.append(summary, pasteLabel, paste, row, importError, storedNote, exportsLabel, exports);
+  stage.panel.insertBefore(io, stage.text);
+
+  // import: pasted text or an uploaded file; an error is said at the paste box, and the scene
+  // stays as it is
+  const show = (/** @type {string} */ text) => {
+    let got;
+    try {
+      got = importSegments(text);
+    } catch (e) {
+      importError.hidden = false;
+      // what stays on screen: the previous import, the example data, or the scene as it was
+      const onScreen =
+        stage.scene?.id !== 'data' ? '' : stage.data ? i18n().t('io.stale') : i18n().t('io.staleExample');
+      importError.textContent = onScreen ? `${describeError(e, i18n())} ${onScreen}` : describeError(e, i18n());
+      paste.setAttribute('aria-invalid', 'true');
+      paste.setAttribute('aria-describedby', importError.id);
+      return;
+    }
+    importError.hidden = true;
+    paste.removeAttribute('aria-invalid');
+    paste.removeAttribute('aria-describedby');
+    const data = { segments: got.segments, rows: got.rows, cols: got.cols };
+    // too large for the link: kept in the tab's session storage, where there is one
+    const keptThere = store(
+      STORED,
+      linkable(data) ? null : JSON.stringify({ segments: Array.from(data.segments), rows: data.rows, cols: data.cols }),
+    );
+    storedNote.hidden = linkable(data);
+    storedNote.textContent = i18n().t(keptThere ? 'io.stored' : 'io.notStored');
+    onData(data);
+  };
+  showButton.addEventListener('click', () => show(paste.value));
+  upload.addEventListener('change', async () => {
+    const file = upload.files?.[0];
+    if (file) show(await file.text());
+  });
+
+  // exports of what is shown
+  exports.addEventListener('click', async (e) => {
+    const kind = /** @type {HTMLElement} */ (e.target).dataset?.export;
+    const built = stage.session.built;
+    if (!kind || !built || !stage.scene) return;
+    const name = stage.scene.id;
+    try {
+      const data = built.data;
+      if (kind === 'png' || kind === 'png2' || kind === 'png4') {
+        const scale = kind === 'png' ? 1 : Number(kind.slice(3));
+        download(`${name}${scale === 1 ? '' : `-${scale}x`}.png`, await png(stage, { scale }));
+      } else if (kind === 'svg' || kind === 'svgBw') {
+        const bw = kind === 'svgBw';
+        download(`${name}${bw ? '-bw' : ''}.svg`, exportSvg(stage, { bw }), 'image/svg+xml');
+      } else if (kind === 'tikz') download(`${name}.tikz`, exportTikz(stage), 'text/x-tex');
+      else if (kind === 'plot' && built.figure) {
+        download(`${name}-plot.svg`, new XMLSerializer().serializeToString(built.figure()), 'image/svg+xml');
+      } else if (data && kind in DATA_FILES) {
+        const [suffix, format, type] = DATA_FILES[/** @type {keyof typeof DATA_FILES} */ (kind)];
+        download(`${name}${suffix}`, dataFile(data.segments, format, { grid: data.grid, name }), type);
+      }
+    } catch (err) {
+      stage.fail(err);
+    }
+  });
+
+  return {
+    /** The texts in the current language. */
+    localize() {
+      const { t } = i18n();
+      summary.textContent = t('io.summary');
+      pasteLabel.textContent = t('io.paste');
+      upload.setAttribute('aria-label', t('io.upload'));
+      showButton.textContent = t('io.show');
+      exportsLabel.textContent = t('io.exports');
+      for (const [kind, key] of EXPORTS) buttons[kind].textContent = t(key);
+    },
+    /** The exports a computed scene has: data files where it has data, the plot where it draws one. */
+    update(/** @type {import('../scene.js').Built} */ built) {
+      const data = built.data;
+      for (const k of ['obj', 'csv', 'json']) buttons[k].disabled = !data;
+      for (const k of ['invariants', 'invariantsCsv']) buttons[k].disabled = !data || !!data.grid;
+      buttons.plot.disabled = !built.figure;
+    },
+  };
+}
