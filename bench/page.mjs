@@ -21,10 +21,17 @@ const results = [];
 try {
   for (const [name, hash] of CASES) {
     // a browser per case, so that no case pays for the memory of the one before
-    const browser = await chromium.launch({ executablePath: '/usr/bin/chromium', args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'] });
+    const browser = await chromium.launch({
+      executablePath: '/usr/bin/chromium',
+      args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+    });
     const page = await browser.newPage({ viewport: { width: 1200, height: 800 } });
     await page.goto(url + hash);
-    await page.waitForFunction(() => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1', null, { timeout: 120000 });
+    await page.waitForFunction(
+      () => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1',
+      null,
+      { timeout: 120000 },
+    );
     await page.locator('.rl-view canvas').focus();
     const ms = await page.evaluate(
       () =>
@@ -44,7 +51,11 @@ try {
         }),
     );
     const readout = await page.locator('.rl-readout').innerText();
-    results.push({ case: name, 'ms per frame': Number(ms).toFixed(1), readout: readout.replace(/\s+/g, ' ').slice(0, 80) });
+    results.push({
+      case: name,
+      'ms per frame': Number(ms).toFixed(1),
+      readout: readout.replace(/\s+/g, ' ').slice(0, 80),
+    });
     await browser.close();
   }
 } finally {

@@ -11,7 +11,8 @@ const PARALLEL_SIN = 1e-9;
  * @param {number} n
  */
 export function invariantsArrays(n) {
-  const pairs = n - 1, interior = n - 2;
+  const pairs = n - 1,
+    interior = n - 2;
   return {
     angle: new Float64Array(pairs),
     distance: new Float64Array(pairs),
@@ -33,28 +34,56 @@ export function invariantsArrays(n) {
  */
 export function invariantsInto(s, out) {
   const n = s.length / 6;
-  const { angle, distance, distribution, footpoints: f, centralNormal: nn, striction: m, distributionMean: dm, perpendicularMidpoints: pm, parallel } = out;
+  const {
+    angle,
+    distance,
+    distribution,
+    footpoints: f,
+    centralNormal: nn,
+    striction: m,
+    distributionMean: dm,
+    perpendicularMidpoints: pm,
+    parallel,
+  } = out;
   // the previous ruling: point and unit direction
-  let px = s[0], py = s[1], pz = s[2];
-  let ex = s[3] - px, ey = s[4] - py, ez = s[5] - pz;
+  let px = s[0],
+    py = s[1],
+    pz = s[2];
+  let ex = s[3] - px,
+    ey = s[4] - py,
+    ez = s[5] - pz;
   let len = Math.sqrt(ex * ex + ey * ey + ez * ez);
-  ex /= len; ey /= len; ez /= len;
+  ex /= len;
+  ey /= len;
+  ez /= len;
   let prevDelta = NaN;
   for (let i = 0; i + 1 < n; i++) {
     const k = 6 * (i + 1);
-    const qx = s[k], qy = s[k + 1], qz = s[k + 2];
-    let gx = s[k + 3] - qx, gy = s[k + 4] - qy, gz = s[k + 5] - qz;
+    const qx = s[k],
+      qy = s[k + 1],
+      qz = s[k + 2];
+    let gx = s[k + 3] - qx,
+      gy = s[k + 4] - qy,
+      gz = s[k + 5] - qz;
     len = Math.sqrt(gx * gx + gy * gy + gz * gz);
-    gx /= len; gy /= len; gz /= len;
-    const dx = qx - px, dy = qy - py, dz = qz - pz;
-    const cx = ey * gz - ez * gy, cy = ez * gx - ex * gz, cz = ex * gy - ey * gx;
+    gx /= len;
+    gy /= len;
+    gz /= len;
+    const dx = qx - px,
+      dy = qy - py,
+      dz = qz - pz;
+    const cx = ey * gz - ez * gy,
+      cy = ez * gx - ex * gz,
+      cz = ex * gy - ey * gx;
     const sin = Math.sqrt(cx * cx + cy * cy + cz * cz);
     const phi = Math.atan2(sin, ex * gx + ey * gy + ez * gz);
     angle[i] = phi;
     let delta, f0x, f0y, f0z, f1x, f1y, f1z;
     if (sin < PARALLEL_SIN) {
       const along = dx * ex + dy * ey + dz * ez;
-      const rx = dx - along * ex, ry = dy - along * ey, rz = dz - along * ez;
+      const rx = dx - along * ex,
+        ry = dy - along * ey,
+        rz = dz - along * ez;
       distance[i] = Math.sqrt(rx * rx + ry * ry + rz * rz);
       delta = NaN;
       f0x = f0y = f0z = f1x = f1y = f1z = NaN;
@@ -68,9 +97,15 @@ export function invariantsInto(s, out) {
       // t = (d × e1)·c / sin², s = (d × e0)·c / sin²
       const t = ((dy * gz - dz * gy) * cx + (dz * gx - dx * gz) * cy + (dx * gy - dy * gx) * cz) / sin2;
       const u = ((dy * ez - dz * ey) * cx + (dz * ex - dx * ez) * cy + (dx * ey - dy * ex) * cz) / sin2;
-      f0x = px + t * ex; f0y = py + t * ey; f0z = pz + t * ez;
-      f1x = qx + u * gx; f1y = qy + u * gy; f1z = qz + u * gz;
-      nn[3 * i] = cx / sin; nn[3 * i + 1] = cy / sin; nn[3 * i + 2] = cz / sin;
+      f0x = px + t * ex;
+      f0y = py + t * ey;
+      f0z = pz + t * ez;
+      f1x = qx + u * gx;
+      f1y = qy + u * gy;
+      f1z = qz + u * gz;
+      nn[3 * i] = cx / sin;
+      nn[3 * i + 1] = cy / sin;
+      nn[3 * i + 2] = cz / sin;
       parallel[i] = 0;
     }
     distribution[i] = delta;
@@ -81,11 +116,22 @@ export function invariantsInto(s, out) {
       m[3 * (i - 1) + 2] = 0.5 * (f[6 * i - 1] + f0z);
       dm[i - 1] = 0.5 * (prevDelta + delta);
     }
-    f[6 * i] = f0x; f[6 * i + 1] = f0y; f[6 * i + 2] = f0z;
-    f[6 * i + 3] = f1x; f[6 * i + 4] = f1y; f[6 * i + 5] = f1z;
-    pm[3 * i] = 0.5 * (f0x + f1x); pm[3 * i + 1] = 0.5 * (f0y + f1y); pm[3 * i + 2] = 0.5 * (f0z + f1z);
+    f[6 * i] = f0x;
+    f[6 * i + 1] = f0y;
+    f[6 * i + 2] = f0z;
+    f[6 * i + 3] = f1x;
+    f[6 * i + 4] = f1y;
+    f[6 * i + 5] = f1z;
+    pm[3 * i] = 0.5 * (f0x + f1x);
+    pm[3 * i + 1] = 0.5 * (f0y + f1y);
+    pm[3 * i + 2] = 0.5 * (f0z + f1z);
     prevDelta = delta;
-    px = qx; py = qy; pz = qz; ex = gx; ey = gy; ez = gz;
+    px = qx;
+    py = qy;
+    pz = qz;
+    ex = gx;
+    ey = gy;
+    ez = gz;
   }
   return out;
 }
@@ -104,7 +150,8 @@ export function invariants(s) {
  */
 export function fourPoint(s, out = new Float64Array(6 * (2 * (s.length / 6) - 1))) {
   const n = s.length / 6;
-  const w = 1 / 16, c = 0.5 + w;
+  const w = 1 / 16,
+    c = 0.5 + w;
   for (let k = 0; k < 6; k++) {
     // ghost points p_{−1} = 4p_0 − 6p_1 + 4p_2 − p_3 and its mirror at the end (n ≥ 4 here)
     const before = 4 * s[k] - 6 * s[6 + k] + 4 * s[12 + k] - s[18 + k];
@@ -116,7 +163,8 @@ export function fourPoint(s, out = new Float64Array(6 * (2 * (s.length / 6) - 1)
     out[12 * (n - 1) + k] = s[6 * (n - 1) + k];
   }
   for (let i = 1; i + 2 < n; i++) {
-    const a = 6 * (i - 1), o = 12 * i;
+    const a = 6 * (i - 1),
+      o = 12 * i;
     for (let k = 0; k < 6; k++) {
       out[o + k] = s[a + 6 + k];
       out[o + 6 + k] = c * (s[a + 6 + k] + s[a + 12 + k]) - w * (s[a + k] + s[a + 18 + k]);

@@ -33,7 +33,8 @@ function median(/** @type {() => unknown} */ f, runs = 7) {
 }
 
 /** Bytes of the invariants of n rulings (open): 19 doubles and 1 byte per pair, about. */
-const invariantBytes = (/** @type {number} */ n) => 8 * (3 * (n - 1) + 6 * (n - 1) + 3 * (n - 1) + 3 * (n - 2) + (n - 2) + 3 * (n - 1)) + (n - 1);
+const invariantBytes = (/** @type {number} */ n) =>
+  8 * (3 * (n - 1) + 6 * (n - 1) + 3 * (n - 1) + 3 * (n - 2) + (n - 2) + 3 * (n - 1)) + (n - 1);
 
 /**
  * The memory limit of an operation reading `inBytes` and writing `outBytes`: into mapped
@@ -60,11 +61,18 @@ const flat = surface.segments();
 const inBytes = flat.byteLength;
 
 // ---- the same numbers, checked
-const check = (/** @type {string} */ what, /** @type {ArrayLike<number>} */ a, /** @type {ArrayLike<number>} */ b, tol = 1e-9) => {
+const check = (
+  /** @type {string} */ what,
+  /** @type {ArrayLike<number>} */ a,
+  /** @type {ArrayLike<number>} */ b,
+  tol = 1e-9,
+) => {
   if (a.length !== b.length) throw new Error(`${what}: lengths ${a.length} and ${b.length}`);
   for (let i = 0; i < a.length; i++) {
-    const x = a[i], y = b[i];
-    if (!(Math.abs(x - y) <= tol * Math.max(1, Math.abs(y))) && !(Number.isNaN(x) && Number.isNaN(y))) throw new Error(`${what}[${i}]: ${x} vs ${y}`);
+    const x = a[i],
+      y = b[i];
+    if (!(Math.abs(x - y) <= tol * Math.max(1, Math.abs(y))) && !(Number.isNaN(x) && Number.isNaN(y)))
+      throw new Error(`${what}[${i}]: ${x} vs ${y}`);
   }
 };
 {
@@ -79,7 +87,9 @@ const check = (/** @type {string} */ what, /** @type {ArrayLike<number>} */ a, /
 // criterion's median of the same operation natively (when `cargo bench` ran before: npm run bench)
 const nativeMs = (/** @type {string} */ group, /** @type {number} */ id) => {
   try {
-    const e = JSON.parse(readFileSync(new URL(`../target/criterion/${group}/${id}/new/estimates.json`, import.meta.url), 'utf8'));
+    const e = JSON.parse(
+      readFileSync(new URL(`../target/criterion/${group}/${id}/new/estimates.json`, import.meta.url), 'utf8'),
+    );
     return e.median.point_estimate / 1e6;
   } catch {
     return NaN;
@@ -91,7 +101,19 @@ const rows = [];
 /** @param {string} op @param {number} ms @param {number} outBytes @param {'mapped' | 'fresh'} kind @param {number | null} js @param {number} native */
 const row = (op, ms, outBytes, kind, js = null, native = NaN) => {
   const l = limit(inBytes, outBytes);
-  rows.push({ op, ms, limitMs: l[kind], freshLimitMs: l.fresh, kind, ofLimit: ms / l[kind], jsMs: js, versusJs: js === null ? null : js / ms, outMB: outBytes / 1e6, nativeMs: native, nativeOfLimit: native / l[kind] });
+  rows.push({
+    op,
+    ms,
+    limitMs: l[kind],
+    freshLimitMs: l.fresh,
+    kind,
+    ofLimit: ms / l[kind],
+    jsMs: js,
+    versusJs: js === null ? null : js / ms,
+    outMB: outBytes / 1e6,
+    nativeMs: native,
+    nativeOfLimit: native / l[kind],
+  });
 };
 
 const outInv = invariantBytes(N);
@@ -100,12 +122,32 @@ const buffer = new InvariantsBuffer();
 const jsOut = plain.invariantsArrays(N);
 const jsInto = median(() => plain.invariantsInto(flat, jsOut), 5);
 // (no native number here: natively the result's memory is reused, see scripts/bench.sh)
-row('invariants() — fresh arrays', median(() => surface.invariants(), 5), outInv, 'fresh', median(() => plain.invariants(flat), 5));
-row('invariantsInto(reused arrays)', median(() => surface.invariantsInto(reuse), 5), outInv, 'mapped', jsInto, nativeMs('invariants_into', N));
-row('invariantsInPlace(buffer) — zero-copy views', median(() => {
-  surface.invariantsInPlace(buffer);
-  return buffer.striction.length;
-}, 5), outInv, 'mapped', jsInto, nativeMs('invariants_into', N));
+row(
+  'invariants() — fresh arrays',
+  median(() => surface.invariants(), 5),
+  outInv,
+  'fresh',
+  median(() => plain.invariants(flat), 5),
+);
+row(
+  'invariantsInto(reused arrays)',
+  median(() => surface.invariantsInto(reuse), 5),
+  outInv,
+  'mapped',
+  jsInto,
+  nativeMs('invariants_into', N),
+);
+row(
+  'invariantsInPlace(buffer) — zero-copy views',
+  median(() => {
+    surface.invariantsInPlace(buffer);
+    return buffer.striction.length;
+  }, 5),
+  outInv,
+  'mapped',
+  jsInto,
+  nativeMs('invariants_into', N),
+);
 
 const jsFourOut = new Float64Array(6 * (2 * N - 1));
 for (const [name, options, js, group] of /** @type {const} */ ([
@@ -116,7 +158,14 @@ for (const [name, options, js, group] of /** @type {const} */ ([
   const probe = surface.subdivide(options);
   const outBytes = 48 * probe.length;
   probe.free();
-  row(name, median(() => surface.subdivide(options).free(), 5), outBytes, 'mapped', js ? median(js, 5) : null, nativeMs(group, N));
+  row(
+    name,
+    median(() => surface.subdivide(options).free(), 5),
+    outBytes,
+    'mapped',
+    js ? median(js, 5) : null,
+    nativeMs(group, N),
+  );
 }
 
 // ---- small calls: 10³ rulings, against native
@@ -130,8 +179,8 @@ for (const n of [1e3, 1e4]) {
   small.push({
     rulings: n,
     'invariants()': median(() => s.invariants(), 201),
-    'invariantsInto': median(() => s.invariantsInto(r), 201),
-    'invariantsInPlace': median(() => s.invariantsInPlace(b), 201),
+    invariantsInto: median(() => s.invariantsInto(r), 201),
+    invariantsInPlace: median(() => s.invariantsInPlace(b), 201),
     'native (fresh)': nativeMs('invariants', n),
     'native (into)': nativeMs('invariants_into', n),
     'plain JS (into)': median(() => plain.invariantsInto(f, j), 201),
@@ -158,7 +207,17 @@ for (const [scheme, n, options, group, name] of /** @type {const} */ ([
   const lim = limit(inB, outB).mapped;
   ex.free();
   const native = name === 'example5' ? nativeMs(group, n) : NaN;
-  congruence.push({ scheme, congruence: name === 'example5' ? 'lines of Example 5' : 'lines on a sphere (Fig. 13 left)', grid: `${n}²`, ms, limitMs: lim, ofLimit: ms / lim, outMB: outB / 1e6, nativeMs: native, nativeOfLimit: native / lim });
+  congruence.push({
+    scheme,
+    congruence: name === 'example5' ? 'lines of Example 5' : 'lines on a sphere (Fig. 13 left)',
+    grid: `${n}²`,
+    ms,
+    limitMs: lim,
+    ofLimit: ms / lim,
+    outMB: outB / 1e6,
+    nativeMs: native,
+    nativeOfLimit: native / lim,
+  });
   grid.free();
 }
 
@@ -166,35 +225,66 @@ const machine = `${cpus()[0].model.trim()}, ${cpus().length} cores, ${Math.round
 const date = new Date().toISOString().slice(0, 10);
 const f = (/** @type {number | null} */ x, digits = 1) => (x === null || !Number.isFinite(x) ? '—' : x.toFixed(digits));
 console.log(`wasm at 10⁶ rulings (${machine}), ms, median`);
-console.table(rows.map((r) => ({ op: r.op, ms: f(r.ms), [`limit ms`]: `${f(r.limitMs)} (${r.kind})`, '× limit': f(r.ofLimit, 2), 'plain JS ms': f(r.jsMs), 'JS / wasm': f(r.versusJs, 2) })));
+console.table(
+  rows.map((r) => ({
+    op: r.op,
+    ms: f(r.ms),
+    'limit ms': `${f(r.limitMs)} (${r.kind})`,
+    '× limit': f(r.ofLimit, 2),
+    'plain JS ms': f(r.jsMs),
+    'JS / wasm': f(r.versusJs, 2),
+  })),
+);
 console.log('small calls, ms, median');
-console.table(small.map((r) => Object.fromEntries(Object.entries(r).map(([k, v]) => [k, k === 'rulings' ? v : f(v, 4)]))));
+console.table(
+  small.map((r) => Object.fromEntries(Object.entries(r).map(([k, v]) => [k, k === 'rulings' ? v : f(v, 4)]))),
+);
 console.log('congruences, ms, median');
-console.table(congruence.map((r) => ({ scheme: r.scheme, grid: r.grid, ms: f(r.ms), 'limit ms': f(r.limitMs), '× limit': f(r.ofLimit, 1) })));
+console.table(
+  congruence.map((r) => ({
+    scheme: r.scheme,
+    grid: r.grid,
+    ms: f(r.ms),
+    'limit ms': f(r.limitMs),
+    '× limit': f(r.ofLimit, 1),
+  })),
+);
 
 mkdirSync(new URL('./results/', import.meta.url), { recursive: true });
-writeFileSync(new URL('./results/wasm.json', import.meta.url), JSON.stringify({ date, machine, rows, small, congruence }, null, 2));
+writeFileSync(
+  new URL('./results/wasm.json', import.meta.url),
+  JSON.stringify({ date, machine, rows, small, congruence }, null, 2),
+);
 
 // ---- the README's table
 const table = [
   `<!-- written by bench/wasm.mjs (npm run bench) on ${date}: ${machine} -->`,
   '',
   `Measured ${date} on ${machine}; one process, median of 5–7 runs. "Limit" is the time to write the`,
-  'operation\'s output into already-mapped memory plus read its input once (into fresh memory for',
+  "operation's output into already-mapped memory plus read its input once (into fresh memory for",
   '`invariants()`, which must allocate its result arrays). "Native" is criterion\'s median of the same',
   'operation in native code on the same machine (`cargo bench`, run just before, freed memory kept',
   'for reuse as wasm keeps it).',
   '',
   '| 10⁶ rulings | wasm ms | output MB | limit ms | × limit | native ms | native × limit | careful plain JS ms | JS / wasm |',
   '|---|---:|---:|---:|---:|---:|---:|---:|---:|',
-  ...rows.map((r) => `| ${r.op} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} (${r.kind}) | ${f(r.ofLimit, 2)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 2)} | ${f(r.jsMs)} | ${f(r.versusJs, 2)} |`),
+  ...rows.map(
+    (r) =>
+      `| ${r.op} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} (${r.kind}) | ${f(r.ofLimit, 2)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 2)} | ${f(r.jsMs)} | ${f(r.versusJs, 2)} |`,
+  ),
   '',
   '| small calls, ms | `invariants()` | `invariantsInto` | `invariantsInPlace` | native (fresh) | native (into) | plain JS (into) |',
   '|---|---:|---:|---:|---:|---:|---:|',
-  ...small.map((r) => `| ${r.rulings} rulings | ${f(r['invariants()'], 3)} | ${f(r.invariantsInto, 3)} | ${f(r.invariantsInPlace, 3)} | ${f(r['native (fresh)'], 3)} | ${f(r['native (into)'], 3)} | ${f(r['plain JS (into)'], 3)} |`),
+  ...small.map(
+    (r) =>
+      `| ${r.rulings} rulings | ${f(r['invariants()'], 3)} | ${f(r.invariantsInto, 3)} | ${f(r.invariantsInPlace, 3)} | ${f(r['native (fresh)'], 3)} | ${f(r['native (into)'], 3)} | ${f(r['plain JS (into)'], 3)} |`,
+  ),
   '',
   '| congruences | wasm ms | output MB | limit ms (mapped) | × limit | native ms | native × limit |',
   '|---|---:|---:|---:|---:|---:|---:|',
-  ...congruence.map((r) => `| ${r.scheme}, one step on ${r.grid} ${r.congruence} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 1)} |`),
+  ...congruence.map(
+    (r) =>
+      `| ${r.scheme}, one step on ${r.grid} ${r.congruence} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 1)} |`,
+  ),
 ].join('\n');
 if (rewriteBlock('bench', table)) console.log('README.md: benchmark table rewritten');

@@ -28,33 +28,43 @@ const context = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir()
 });
 try {
   const page = await context.newPage();
-  await page.goto(url + '#scene=striction');
-  await page.waitForFunction(() => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1');
+  await page.goto(`${url}#scene=striction`);
+  await page.waitForFunction(
+    () => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1',
+  );
   await page.waitForTimeout(300);
   writeFileSync(join(DOCS, 'screenshot-striction.png'), await page.screenshot());
   console.log('docs/screenshot-striction.png');
-  for (const [hash, file] of [['#scene=formula', 'screenshot-formula.png'], ['#scene=focal&congruence=example5&reach=1', 'screenshot-focal.png']]) {
+  for (const [hash, file] of [
+    ['#scene=formula', 'screenshot-formula.png'],
+    ['#scene=focal&congruence=example5&reach=1', 'screenshot-focal.png'],
+  ]) {
     await page.goto(url + hash);
-    await page.waitForFunction(() => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1');
+    await page.waitForFunction(
+      () => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1',
+    );
     await page.waitForTimeout(300);
     writeFileSync(join(DOCS, file), await page.screenshot());
     console.log(`docs/${file}`);
   }
 
-  await page.goto(url + 'examples/web-component.html');
+  await page.goto(`${url}examples/web-component.html`);
   for (const [scene, params, camera, file] of FIGURES) {
-    const svg = await page.evaluate(async ([s, q, cam]) => {
-      document.body.replaceChildren();
-      const v = /** @type {any} */ (document.createElement('ruled-view'));
-      Object.assign(v.style, { width: '640px', height: '420px', display: 'block' });
-      v.setAttribute('scene', s);
-      v.setAttribute('params', q);
-      document.body.append(v);
-      await new Promise((r) => v.addEventListener('scene-change', r, { once: true }));
-      if (cam) v.view.viewer.camera.fromArray(cam);
-      v.view.viewer.render();
-      return v.exportSVG({ bw: true, legend: true });
-    }, [scene, params, camera]);
+    const svg = await page.evaluate(
+      async ([s, q, cam]) => {
+        document.body.replaceChildren();
+        const v = /** @type {any} */ (document.createElement('ruled-view'));
+        Object.assign(v.style, { width: '640px', height: '420px', display: 'block' });
+        v.setAttribute('scene', s);
+        v.setAttribute('params', q);
+        document.body.append(v);
+        await new Promise((r) => v.addEventListener('scene-change', r, { once: true }));
+        if (cam) v.view.viewer.camera.fromArray(cam);
+        v.view.viewer.render();
+        return v.exportSVG({ bw: true, legend: true });
+      },
+      [scene, params, camera],
+    );
     writeFileSync(join(DOCS, file), svg);
     console.log(`docs/${file}`);
   }

@@ -39,7 +39,9 @@ function ruledlabDescribe(value) {
 /** @type {[string | RegExp, string][]} */
 const EDITS = [
   [
+    // biome-ignore lint/suspicious/noTemplateCurlyInString: the generated glue's text, matched as written
     'throw new Error(`expected instance of ${klass.name}`);',
+    // biome-ignore lint/suspicious/noTemplateCurlyInString: the glue's text as it is to become
     "throw Object.assign(new Error(`expected an instance of ${klass.name}, got ${ruledlabDescribe(instance)}`), { code: 'invalid-argument' });",
   ],
   [
@@ -53,7 +55,11 @@ const REFERENCE = '/// <reference lib="esnext.disposable" />\n';
 if (existsSync(dtsFile)) {
   let dts = readFileSync(dtsFile, 'utf8');
   // a comment line ` * …` of a derived declaration: Rust's escapes of a string literal
-  dts = dts.replace(/^(\s*\*.*)$/gm, (line) => line.replace(/\\u\{([0-9a-f]+)\}|\\(["'\\])/g, (_, hex, ch) => (hex ? String.fromCodePoint(parseInt(hex, 16)) : ch)));
+  dts = dts.replace(/^(\s*\*.*)$/gm, (line) =>
+    line.replace(/\\u\{([0-9a-f]+)\}|\\(["'\\])/g, (_, hex, ch) =>
+      hex ? String.fromCodePoint(parseInt(hex, 16)) : ch,
+    ),
+  );
   const names = [...dts.matchAll(/^export (?:interface|type|class|enum) (\w+)/gm)].map((m) => m[1]);
   const twice = names.filter((n, i) => names.indexOf(n) !== i);
   if (twice.length) {
@@ -71,7 +77,9 @@ if (js.includes('function ruledlabGlueError')) {
 for (const [from, to] of EDITS) {
   const count = typeof from === 'string' ? js.split(from).length - 1 : (js.match(new RegExp(from, 'g')) ?? []).length;
   if (count !== 1) {
-    console.error(`glue: expected exactly one match of ${from} in ${file}, found ${count}; has wasm-bindgen's glue changed?`);
+    console.error(
+      `glue: expected exactly one match of ${from} in ${file}, found ${count}; has wasm-bindgen's glue changed?`,
+    );
     process.exit(1);
   }
   js = typeof from === 'string' ? js.replace(from, to) : js.replace(from, to);

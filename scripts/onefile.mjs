@@ -25,7 +25,10 @@ const inline = {
   name: 'ruledlab-inline',
   setup(b) {
     b.onResolve({ filter: /^ruledlab:inline$/ }, () => ({ path: 'inline', namespace: 'ruledlab' }));
-    b.onLoad({ filter: /.*/, namespace: 'ruledlab' }, () => ({ contents: `export const WASM = ${JSON.stringify(wasm)};\nexport const WORKER = ${JSON.stringify(worker)};`, loader: 'js' }));
+    b.onLoad({ filter: /.*/, namespace: 'ruledlab' }, () => ({
+      contents: `export const WASM = ${JSON.stringify(wasm)};\nexport const WORKER = ${JSON.stringify(worker)};`,
+      loader: 'js',
+    }));
   },
 };
 
@@ -90,7 +93,12 @@ mkdirSync(path('dist'), { recursive: true });
 writeFileSync(path('dist/ruledlab.html'), html);
 writeFileSync(path('dist/ruledlab-embed.js'), embed);
 // what the build made, for the served page's Share dialog (is the embed script here?)
-writeFileSync(path('dist/manifest.json'), `${JSON.stringify({ embed: 'ruledlab-embed.js', page: 'ruledlab.html' }, null, 2)}\n`);
+writeFileSync(
+  path('dist/manifest.json'),
+  `${JSON.stringify({ embed: 'ruledlab-embed.js', page: 'ruledlab.html' }, null, 2)}\n`,
+);
 /** @param {number} n */
 const kib = (n) => `${(n / 1024).toFixed(0)} KiB`;
-console.log(`build: dist/ruledlab.html ${kib(html.length)}, ${kib(gzipSync(html).length)} gzipped; dist/ruledlab-embed.js ${kib(embed.length)}, ${kib(gzipSync(embed).length)} gzipped`);
+console.log(
+  `build: dist/ruledlab.html ${kib(html.length)}, ${kib(gzipSync(html).length)} gzipped; dist/ruledlab-embed.js ${kib(embed.length)}, ${kib(gzipSync(embed).length)} gzipped`,
+);

@@ -22,13 +22,15 @@ export function paperTable() {
     'Every figure and example of the paper is a preset of a scene: choose it under "Figures of the',
     'paper" at the top of the page, or open `#paper=<id>` (e.g. `index.html#paper=fig15`; other',
     'parameters in the link override the preset\'s), or embed it with `<ruled-view paper="fig15">`.',
-    'The page shows the paper\'s caption, what ruledlab shows, whose data it is and, marked',
+    "The page shows the paper's caption, what ruledlab shows, whose data it is and, marked",
     '"Beyond the paper", where ruledlab differs and what that changes; comparative sentences are',
     'checked against the numbers in the readout (tests/node/claims.test.mjs).',
     '',
   ];
   for (const p of PRESETS) {
-    lines.push(`- **${md(p.label)}** — [\`#paper=${p.id}\`](index.html#paper=${p.id}), scene \`${p.scene}\`. *${md(p.caption)}*`);
+    lines.push(
+      `- **${md(p.label)}** — [\`#paper=${p.id}\`](index.html#paper=${p.id}), scene \`${p.scene}\`. *${md(p.caption)}*`,
+    );
     lines.push(`  ${md(p.note)}${p.beyond ? ` **Beyond the paper:** ${md(p.beyond)}` : ''}`);
   }
   return lines.join('\n');

@@ -32,7 +32,13 @@ const TYPES = {
  * has an opaque origin and loads the page's modules and wasm cross-origin, and a Share snippet
  * on another site loads the viewer. Resolves to { server, url }.
  */
-export function startServer({ root = ROOT, port = 0, host = '127.0.0.1', headers = {}, headersFor = (/** @type {string} */ _path) => /** @type {Record<string, string>} */ ({}) } = {}) {
+export function startServer({
+  root = ROOT,
+  port = 0,
+  host = '127.0.0.1',
+  headers = {},
+  headersFor = (/** @type {string} */ _path) => /** @type {Record<string, string>} */ ({}),
+} = {}) {
   const server = createServer((req, res) => {
     let path;
     try {

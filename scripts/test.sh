@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every test of ruledlab, after installing whatever is missing:
-#   1. lint: rustfmt, clippy -D warnings (native and wasm32), rustdoc -D warnings
+#   1. lint: rustfmt, clippy -D warnings (native and wasm32), rustdoc -D warnings; Biome (the
+#      JavaScript linter and formatter, biome.json) over www/, scripts, tests and benches
 #   2. native Rust: unit, property and integration tests, doctests, benches in test mode
 #   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc
 #      types, and every README snippet verbatim against the package's declarations; the docs
@@ -24,8 +25,9 @@ trap 'printf "\n== done in %d s\n" $((SECONDS - START))' EXIT
 step "setup"
 bash scripts/setup.sh --browser
 
-step "lint: rustfmt, clippy (native and wasm32), rustdoc"
+step "lint: rustfmt, clippy (native and wasm32), rustdoc, Biome"
 cargo fmt --check
+npx biome ci .
 cargo clippy --quiet --all-targets -- -D warnings
 cargo clippy --quiet --target wasm32-unknown-unknown --lib --tests -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps

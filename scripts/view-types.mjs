@@ -16,10 +16,28 @@ const ROOT = fileURLToPath(new URL('..', import.meta.url));
 const OUT = join(ROOT, 'pkg', 'view');
 rmSync(OUT, { recursive: true, force: true });
 const tsc = join(ROOT, 'node_modules/.bin/tsc');
-execFileSync(tsc, ['-p', join(ROOT, 'tsconfig.json'), '--noEmit', 'false', '--declaration', '--emitDeclarationOnly', '--rootDir', ROOT, '--outDir', OUT], { stdio: 'inherit' });
+execFileSync(
+  tsc,
+  [
+    '-p',
+    join(ROOT, 'tsconfig.json'),
+    '--noEmit',
+    'false',
+    '--declaration',
+    '--emitDeclarationOnly',
+    '--rootDir',
+    ROOT,
+    '--outDir',
+    OUT,
+  ],
+  { stdio: 'inherit' },
+);
 
 /** @param {string} dir @returns {string[]} */
-const walk = (dir) => readdirSync(dir).flatMap((name) => (statSync(join(dir, name)).isDirectory() ? walk(join(dir, name)) : [join(dir, name)]));
+const walk = (dir) =>
+  readdirSync(dir).flatMap((name) =>
+    statSync(join(dir, name)).isDirectory() ? walk(join(dir, name)) : [join(dir, name)],
+  );
 /**
  * The declarations without the members whose JSDoc says @internal (tsc's --stripInternal
  * ignores JavaScript sources): the comment and the declaration after it, to the `;` that ends
@@ -59,21 +77,31 @@ for (const file of walk(OUT)) {
   if (!file.endsWith('.d.ts')) continue;
   count++;
   // pkg/view/<path>.d.ts imports "…/pkg/ruledlab.js" as the source did from <path>: one level up
-  const text = stripInternal(readFileSync(file, 'utf8')).replace(/(["'])((?:\.\.\/)+)pkg\/ruledlab\.js\1/g, (_, q, up) => `${q}../${up}ruledlab.js${q}`);
+  const text = stripInternal(readFileSync(file, 'utf8')).replace(
+    /(["'])((?:\.\.\/)+)pkg\/ruledlab\.js\1/g,
+    (_, q, up) => `${q}../${up}ruledlab.js${q}`,
+  );
   writeFileSync(file, text);
 }
 const entry = join(OUT, 'www', 'view.d.ts');
-if (!statSync(entry, { throwIfNoEntry: false })) throw new Error(`view-types: ${relative(ROOT, entry)} was not generated`);
+if (!statSync(entry, { throwIfNoEntry: false }))
+  throw new Error(`view-types: ${relative(ROOT, entry)} was not generated`);
 // what JSDoc cannot say: importing ruledlab/view defines the element (document.createElement
 // and querySelector know its type)
 // and the typedefs of view.js that name a type of another module re-export that type itself,
 // so the reference shows it with its documentation
-const aliases = readFileSync(entry, 'utf8').replace(/^export type (\w+) = import\("([^"]+)"\)\.\1;$/gm, 'export type { $1 } from "$2";');
-writeFileSync(entry, `${aliases}
+const aliases = readFileSync(entry, 'utf8').replace(
+  /^export type (\w+) = import\("([^"]+)"\)\.\1;$/gm,
+  'export type { $1 } from "$2";',
+);
+writeFileSync(
+  entry,
+  `${aliases}
 declare global {
     interface HTMLElementTagNameMap {
         "ruled-view": import("./ruled-view.js").RuledView;
     }
 }
-`);
+`,
+);
 console.log(`view-types: ${count} declaration files in ${relative(ROOT, OUT)}/, entry ${relative(ROOT, entry)}`);

@@ -17,9 +17,20 @@ const { server, url } = await startServer();
 // a course page of another site: a sandboxed iframe and a <ruled-view controls> in a 280-px column
 const siteDir = mkdtempSync(join(tmpdir(), 'ruledlab-firefox-site-'));
 const site = await startServer({ root: siteDir });
-const host = (/** @type {string} */ body) => `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>course</title><script defer src="${url}dist/ruledlab-embed.js"></script></head><body style="margin: 10px">${body}</body></html>`;
-writeFileSync(join(siteDir, 'sandbox.html'), host(`<iframe id="f" sandbox="allow-scripts" src="${url}index.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="800" height="520"></iframe>`));
-writeFileSync(join(siteDir, 'column.html'), host('<div style="width: 280px"><ruled-view id="v" paper="fig2" controls style="display: block; height: 560px"></ruled-view></div>'));
+const host = (/** @type {string} */ body) =>
+  `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>course</title><script defer src="${url}dist/ruledlab-embed.js"></script></head><body style="margin: 10px">${body}</body></html>`;
+writeFileSync(
+  join(siteDir, 'sandbox.html'),
+  host(
+    `<iframe id="f" sandbox="allow-scripts" src="${url}index.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="800" height="520"></iframe>`,
+  ),
+);
+writeFileSync(
+  join(siteDir, 'column.html'),
+  host(
+    '<div style="width: 280px"><ruled-view id="v" paper="fig2" controls style="display: block; height: 560px"></ruled-view></div>',
+  ),
+);
 const options = new firefox.Options().enableBidi().windowSize({ width: 1100, height: 800 });
 options.setBinary(process.env.FIREFOX ?? '/usr/bin/firefox-esr');
 options.setPreference('webgl.force-enabled', true);
@@ -60,10 +71,17 @@ try {
         "return performance.getEntriesByType('resource').filter((e) => e.responseStatus >= 400).map((e) => e.name)",
       )
     );
-    failedRequests.forEach((r) => problems.push(`failed request: ${r}`));
+    failedRequests.forEach((r) => {
+      problems.push(`failed request: ${r}`);
+    });
     const ok = drawn > 0.005 && problems.length === before;
     if (!ok) failed++;
-    console.log(`${ok ? 'ok' : 'not ok'} - Firefox: ${scene} draws (${(100 * drawn).toFixed(1)} % of the view)${problems.slice(before).map((p) => `\n  ${p}`).join('')}`);
+    console.log(
+      `${ok ? 'ok' : 'not ok'} - Firefox: ${scene} draws (${(100 * drawn).toFixed(1)} % of the view)${problems
+        .slice(before)
+        .map((p) => `\n  ${p}`)
+        .join('')}`,
+    );
   }
   // the sandboxed iframe (an opaque origin: no storage, no history) draws with its controls
   {
@@ -73,18 +91,28 @@ try {
     await driver.wait(until.elementLocated(By.css('.rl-stage[data-ready="1"]')), 60000);
     await driver.sleep(300);
     const controls = (await driver.findElements(By.css('.rl-controls [name]'))).length;
-    const image = decodePng(Buffer.from(await (await driver.findElement(By.css('.rl-view canvas'))).takeScreenshot(), 'base64'));
+    const image = decodePng(
+      Buffer.from(await (await driver.findElement(By.css('.rl-view canvas'))).takeScreenshot(), 'base64'),
+    );
     await driver.switchTo().defaultContent();
     const drawn = countDifferent(image, background, 24) / (image.width * image.height);
     const ok = drawn > 0.005 && controls >= 5 && problems.length === before;
     if (!ok) failed++;
-    console.log(`${ok ? 'ok' : 'not ok'} - Firefox: a sandboxed iframe (allow-scripts) draws (${(100 * drawn).toFixed(1)} %) with ${controls} controls${problems.slice(before).map((p) => `\n  ${p}`).join('')}`);
+    console.log(
+      `${ok ? 'ok' : 'not ok'} - Firefox: a sandboxed iframe (allow-scripts) draws (${(100 * drawn).toFixed(1)} %) with ${controls} controls${problems
+        .slice(before)
+        .map((p) => `\n  ${p}`)
+        .join('')}`,
+    );
   }
   // <ruled-view controls> in a 280-px column: the panel scrolls inside the element's box under the view
   {
     const before = problems.length;
     await driver.get(`${site.url}column.html`);
-    await driver.wait(async () => (await driver.executeScript('return document.getElementById("v")?.dataset.ready')) === '1', 60000);
+    await driver.wait(
+      async () => (await driver.executeScript('return document.getElementById("v")?.dataset.ready')) === '1',
+      60000,
+    );
     const view = await driver.findElement(By.id('v'));
     const geometry = () =>
       /** @type {Promise<{element: DOMRect, view: DOMRect, panel: DOMRect, scrolled: number, last: DOMRect}>} */ (
@@ -93,11 +121,16 @@ try {
       );
     const g0 = await geometry();
     // the wheel over the panel, a notch at a time, until its last control is in sight inside the box
-    const panel = await driver.executeScript('return document.getElementById("v").shadowRoot.querySelector(".rl-panel")');
+    const panel = await driver.executeScript(
+      'return document.getElementById("v").shadowRoot.querySelector(".rl-panel")',
+    );
     let g1 = g0;
     let inside = false;
     for (let k = 0; k < 40 && !inside; k++) {
-      await driver.actions().scroll(0, 0, 0, 80, /** @type {any} */ (panel)).perform();
+      await driver
+        .actions()
+        .scroll(0, 0, 0, 80, /** @type {any} */ (panel))
+        .perform();
       await driver.sleep(60);
       g1 = await geometry();
       inside = g1.last.bottom <= Math.min(g1.element.bottom, g1.panel.bottom) + 1 && g1.last.top >= g1.panel.top - 1;
@@ -107,7 +140,12 @@ try {
     const drawn = countDifferent(image, background, 24) / (image.width * image.height);
     const ok = g1.scrolled > 0 && inside && share >= 0.55 && drawn > 0.005 && problems.length === before;
     if (!ok) failed++;
-    console.log(`${ok ? 'ok' : 'not ok'} - Firefox: <ruled-view controls> in a 280-px column: the view keeps ${(100 * share).toFixed(0)} %, the panel scrolls by the wheel to its last control inside the box (${inside})${problems.slice(before).map((p) => `\n  ${p}`).join('')}`);
+    console.log(
+      `${ok ? 'ok' : 'not ok'} - Firefox: <ruled-view controls> in a 280-px column: the view keeps ${(100 * share).toFixed(0)} %, the panel scrolls by the wheel to its last control inside the box (${inside})${problems
+        .slice(before)
+        .map((p) => `\n  ${p}`)
+        .join('')}`,
+    );
   }
 } finally {
   await driver.quit();
@@ -118,4 +156,6 @@ if (failed || problems.length) {
   console.error(`Firefox smoke test: ${failed} scene(s) failed; ${problems.length} problem(s)`);
   process.exit(1);
 }
-console.log('Firefox smoke test: every scene draws, in a sandboxed iframe and a 280-px column too; no console error, no failed request');
+console.log(
+  'Firefox smoke test: every scene draws, in a sandboxed iframe and a 280-px column too; no console error, no failed request',
+);

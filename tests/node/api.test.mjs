@@ -42,7 +42,17 @@ test('invariants: typed arrays of the documented lengths and the right values', 
   // rulings along x, then along y one unit higher: φ = π/2, h = 1, footpoints on the z-axis
   const s = RuledSurface.fromSegments(GOOD);
   const inv = s.invariants();
-  const lengths = { angle: 2, distance: 2, distribution: 2, footpoints: 12, centralNormal: 6, striction: 3, distributionMean: 1, perpendicularMidpoints: 6, parallel: 2 };
+  const lengths = {
+    angle: 2,
+    distance: 2,
+    distribution: 2,
+    footpoints: 12,
+    centralNormal: 6,
+    striction: 3,
+    distributionMean: 1,
+    perpendicularMidpoints: 6,
+    parallel: 2,
+  };
   for (const [k, n] of Object.entries(lengths)) {
     assert.equal(inv[k].length, n, k);
     assert.ok(k === 'parallel' ? inv[k] instanceof Uint8Array : inv[k] instanceof Float64Array, k);
@@ -50,7 +60,10 @@ test('invariants: typed arrays of the documented lengths and the right values', 
   assert.ok(near(inv.angle[0], Math.PI / 2));
   assert.ok(near(inv.distance[0], 1));
   assert.ok(near(inv.distribution[0], 2 / Math.PI));
-  assert.deepEqual([...inv.footpoints.subarray(0, 6)].map((x) => Math.round(x * 1e12) / 1e12), [0, 0, 0, 0, 0, 1]);
+  assert.deepEqual(
+    [...inv.footpoints.subarray(0, 6)].map((x) => Math.round(x * 1e12) / 1e12),
+    [0, 0, 0, 0, 0, 1],
+  );
   assert.deepEqual([...inv.parallel], [0, 0]);
   s.free();
 });
@@ -71,7 +84,9 @@ test('wasm computes the same invariants as the native build (1e-12)', () => {
   const inv = s.invariants();
   for (const [k, values] of Object.entries(native)) {
     assert.equal(inv[k].length, values.length, k);
-    values.forEach((v, i) => assert.ok(near(inv[k][i], v), `${k}[${i}]: wasm ${inv[k][i]} vs native ${v}`));
+    values.forEach((v, i) => {
+      assert.ok(near(inv[k][i], v), `${k}[${i}]: wasm ${inv[k][i]} vs native ${v}`);
+    });
   }
   s.free();
   q.free();
@@ -79,7 +94,21 @@ test('wasm computes the same invariants as the native build (1e-12)', () => {
 
 test('analytic surfaces: list, exact values, sampling and the convergence study', () => {
   const list = AnalyticSurface.list();
-  assert.deepEqual(list.map((s) => s.name), ['hyperboloid', 'quartic', 'helicoid', 'helical', 'helical-orthogonal', 'pluecker-conoid', 'hyperbolic-paraboloid', 'cone', 'cylinder', 'helix-tangent']);
+  assert.deepEqual(
+    list.map((s) => s.name),
+    [
+      'hyperboloid',
+      'quartic',
+      'helicoid',
+      'helical',
+      'helical-orthogonal',
+      'pluecker-conoid',
+      'hyperbolic-paraboloid',
+      'cone',
+      'cylinder',
+      'helix-tangent',
+    ],
+  );
   const helicoid = AnalyticSurface.byName('helicoid');
   assert.equal(helicoid.name, 'helicoid');
   const s = helicoid.sample(20, { uMin: 0, uMax: 2 });
@@ -88,7 +117,11 @@ test('analytic surfaces: list, exact values, sampling and the convergence study'
   const conoid = AnalyticSurface.byName('pluecker-conoid');
   const st = conoid.striction(new Float64Array([0.25]));
   assert.ok(near(st[2], Math.sin(0.5)) && st[0] === 0 && st[1] === 0);
-  assert.ok(AnalyticSurface.byName('cylinder').striction(new Float64Array([0.1])).every(Number.isNaN));
+  assert.ok(
+    AnalyticSurface.byName('cylinder')
+      .striction(new Float64Array([0.1]))
+      .every(Number.isNaN),
+  );
   const study = AnalyticSurface.byName('hyperboloid').convergence({ u: 0.7, h0: 0.1, levels: 7 });
   const order = (name) => study.series.find((x) => x.name === name).orders.at(-1);
   assert.ok(Math.abs(order('footpoint') - 1) < 0.1, `footpoint order ${order('footpoint')}`);
@@ -100,8 +133,14 @@ test('analytic surfaces: list, exact values, sampling and the convergence study'
 
 test('every bad input throws an Error that says what is wrong, and the module keeps working', () => {
   const cases = [
-    [() => RuledSurface.fromSegments([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, {}]), /coords\[11\] must be a number, got an object/],
-    [() => RuledSurface.fromSegments('0,0,0'), /must be a Float64Array, Float32Array or array of numbers, got a string/],
+    [
+      () => RuledSurface.fromSegments([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, {}]),
+      /coords\[11\] must be a number, got an object/,
+    ],
+    [
+      () => RuledSurface.fromSegments('0,0,0'),
+      /must be a Float64Array, Float32Array or array of numbers, got a string/,
+    ],
     [() => RuledSurface.fromSegments(new Uint8Array(12)), /got a Uint8Array/],
     [() => RuledSurface.fromSegments(), /got undefined/],
     [() => RuledSurface.fromSegments(null), /got null/],
@@ -110,11 +149,17 @@ test('every bad input throws an Error that says what is wrong, and the module ke
     [() => RuledSurface.fromSegments(new Float64Array(6)), /rulings: got 1, need at least 2/],
     [() => RuledSurface.fromSegments(new Float64Array(0)), /rulings: got 0, need at least 2/],
     [() => RuledSurface.fromSegments(GOOD.map((x, i) => (i === 7 ? NaN : x))), /coordinate 7 \(ruling 1, a.y\) is NaN/],
-    [() => RuledSurface.fromSegments(GOOD.map((x, i) => (i === 3 ? Infinity : x))), /coordinate 3 \(ruling 0, b.x\) is inf/],
+    [
+      () => RuledSurface.fromSegments(GOOD.map((x, i) => (i === 3 ? Infinity : x))),
+      /coordinate 3 \(ruling 0, b.x\) is inf/,
+    ],
     [() => RuledSurface.fromSegments(GOOD.map((x, i) => (i === 3 ? -Infinity : x))), /is -inf/],
     [() => RuledSurface.fromSegments(GOOD.map((x, i) => (i === 4 ? 1e300 : x))), /magnitudes above 1e150/],
     [() => RuledSurface.fromSegments(new Float64Array(12)), /ruling 0 has zero length/],
-    [() => RuledSurface.fromSegments(new Float64Array((1 << 22) * 6 + 6)), /rulings: 4194305 exceeds the limit of 4194304/],
+    [
+      () => RuledSurface.fromSegments(new Float64Array((1 << 22) * 6 + 6)),
+      /rulings: 4194305 exceeds the limit of 4194304/,
+    ],
     [() => AnalyticSurface.byName('torus'), /unknown surface "torus"; known: hyperboloid/],
     [() => AnalyticSurface.byName(7), /name must be a string, got a number/],
     [() => AnalyticSurface.byName('cone').sample(1), /count must be an integer from 2/],
@@ -123,11 +168,17 @@ test('every bad input throws an Error that says what is wrong, and the module ke
     [() => AnalyticSurface.byName('cone').sample(5, { vMin: 1, vMax: 1 }), /vMax: must differ from vMin/],
     [() => AnalyticSurface.byName('cone').sample(5, { uMin: NaN }), /options.uMin must be a finite number, got NaN/],
     [() => AnalyticSurface.byName('cone').sample(5, { steps: 3 }), /unknown option "steps"/],
-    [() => AnalyticSurface.byName('cone').sample(5, [1, 2]), /options must be an object \{ uMin, uMax, vMin, vMax, closed \}, got an array/],
+    [
+      () => AnalyticSurface.byName('cone').sample(5, [1, 2]),
+      /options must be an object \{ uMin, uMax, vMin, vMax, closed \}, got an array/,
+    ],
     [() => AnalyticSurface.byName('cone').striction([0.5, 'a']), /u\[1\] must be a number, got a string/],
     [() => AnalyticSurface.byName('cone').distribution(new Float64Array([Infinity])), /every u must be finite/],
     [() => AnalyticSurface.byName('cylinder').convergence(), /no striction point/],
-    [() => AnalyticSurface.byName('cone').convergence({ levels: 99 }), /options.levels must be an integer from 2 to 20, got 99/],
+    [
+      () => AnalyticSurface.byName('cone').convergence({ levels: 99 }),
+      /options.levels must be an integer from 2 to 20, got 99/,
+    ],
     [() => AnalyticSurface.byName('cone').convergence({ h0: 0 }), /h0: must be in \(0, 1\], got 0/],
   ];
   for (const [call, message] of cases) {
@@ -159,7 +210,8 @@ test('the TypeScript declarations type the results', () => {
     'refine(options?: Partial<SubdivideOptions>): ToolPath;',
     'export(format: "json" | "csv" | "gcode", options?: GcodeOptions): string;',
     'grid(rows?: number, cols?: number, reach?: number): LineCongruence;',
-  ]) assert.ok(dts.includes(signature), signature);
+  ])
+    assert.ok(dts.includes(signature), signature);
   // the public API (before wasm-bindgen's internal InitOutput table) has no `any` type
   const api = dts.slice(0, dts.indexOf('export type InitInput'));
   assert.doesNotMatch(api, /[:<,|(]\s*any\b|\bany\[\]/);
@@ -193,8 +245,14 @@ test('invariantsInPlace: views of wasm memory with the numbers of invariants(), 
     assert.equal(view.length, 0, 'detached by the growth');
     assert.equal(buffer.striction.length, 3 * 12, 'a fresh view reads the numbers again');
     big.free();
-    assert.throws(() => s1.invariantsInPlace(buffer, { open: true }), /invariantsInPlace: unknown option "open"; known options: closed/);
-    assert.throws(() => s1.invariantsInPlace(/** @type {any} */ ({})), (e) => e.code === 'invalid-argument');
+    assert.throws(
+      () => s1.invariantsInPlace(buffer, { open: true }),
+      /invariantsInPlace: unknown option "open"; known options: closed/,
+    );
+    assert.throws(
+      () => s1.invariantsInPlace(/** @type {any} */ ({})),
+      (e) => e.code === 'invalid-argument',
+    );
   } finally {
     buffer.free();
     s1.free();
@@ -212,9 +270,14 @@ test('invariantsInto refills the arrays of an earlier result without allocating 
   s2.invariantsInto(out);
   const fresh = s2.invariants();
   for (const [k, v] of Object.entries(fresh)) assert.deepEqual(out[k], v, k);
-  Object.values(out).forEach((v, i) => assert.equal(v, arrays[i], 'same array objects'));
+  Object.values(out).forEach((v, i) => {
+    assert.equal(v, arrays[i], 'same array objects');
+  });
   const small = a.sample(10);
-  assert.throws(() => small.invariantsInto(out), /out.angle must be a typed array of length 9 \(this surface has 10 rulings\)/);
+  assert.throws(
+    () => small.invariantsInto(out),
+    /out.angle must be a typed array of length 9 \(this surface has 10 rulings\)/,
+  );
   assert.throws(() => small.invariantsInto(null), /out must be an Invariants object, got null/);
   assert.throws(() => s2.invariantsInto({ ...out, angle: new Float32Array(39) }), /out.angle must be a Float64Array/);
 });

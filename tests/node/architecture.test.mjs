@@ -38,9 +38,15 @@ test('no scene imports another scene; figures and what is below them import no s
   const wrong = [];
   for (const [m, deps] of g) {
     for (const d of deps) {
-      if (m.startsWith('scenes/') && m !== 'scenes/index.js' && d.startsWith('scenes/')) wrong.push(`${m} imports ${d}`);
-      if (!m.startsWith('scenes/') && d.startsWith('scenes/') && d !== 'scenes/index.js') wrong.push(`${m} imports the scene ${d}`);
-      if ((m.startsWith('figures/') || m.startsWith('gl/') || m.startsWith('ui/') || m.startsWith('i18n/')) && d === 'scenes/index.js') wrong.push(`${m} imports the scene list`);
+      if (m.startsWith('scenes/') && m !== 'scenes/index.js' && d.startsWith('scenes/'))
+        wrong.push(`${m} imports ${d}`);
+      if (!m.startsWith('scenes/') && d.startsWith('scenes/') && d !== 'scenes/index.js')
+        wrong.push(`${m} imports the scene ${d}`);
+      if (
+        (m.startsWith('figures/') || m.startsWith('gl/') || m.startsWith('ui/') || m.startsWith('i18n/')) &&
+        d === 'scenes/index.js'
+      )
+        wrong.push(`${m} imports the scene list`);
     }
   }
   assert.deepEqual(wrong, []);

@@ -12,7 +12,8 @@ import { translator } from '../../www/i18n/index.js';
 
 const i18n = translator('en');
 const context = { t: i18n.t, format: i18n.format };
-const sceneOf = (/** @type {string} */ id) => /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === id));
+const sceneOf = (/** @type {string} */ id) =>
+  /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === id));
 const range = (/** @type {number} */ a, /** @type {number} */ b) => Array.from({ length: b - a + 1 }, (_, i) => a + i);
 
 /** Every combination of the listed values; the other parameters keep their defaults. */
@@ -33,14 +34,21 @@ function checkClaims(/** @type {string} */ id, /** @type {Record<string, any[]>}
     const built = scene.create({ ...defaults(scene), ...params }, context);
     for (const claim of built.claims ?? []) {
       seen.add(claim.text);
-      assert.ok(claim.holds, `${id} ${JSON.stringify(params)}: "${i18n.t(claim.text)}" does not hold (readout: ${JSON.stringify(built.readouts?.map((r) => [r.label, r.value]))})`);
+      assert.ok(
+        claim.holds,
+        `${id} ${JSON.stringify(params)}: "${i18n.t(claim.text)}" does not hold (readout: ${JSON.stringify(built.readouts?.map((r) => [r.label, r.value]))})`,
+      );
     }
   }
   return seen;
 }
 
 test('striction (Props. 1–2, Example 1): orders 1, 2, 2 on the hyperboloid and the quartic from 20 rulings on', () => {
-  const seen = checkClaims('striction', { surface: ['hyperboloid', 'quartic', 'helical', 'cone'], n: range(6, 160), strip: [false] });
+  const seen = checkClaims('striction', {
+    surface: ['hyperboloid', 'quartic', 'helical', 'cone'],
+    n: range(6, 160),
+    strip: [false],
+  });
   assert.deepEqual([...seen], ['striction.claim.orders']);
 });
 
@@ -50,19 +58,31 @@ test('strip (Example 3): the literal energy is the midpoint rule, coupled beats 
 });
 
 test('congruences (Examples 4–5): at one step the butterfly scheme is the most accurate on every built-in congruence', () => {
-  const congruence = sceneOf('congruence').params[0].options?.().map(([v]) => v) ?? [];
+  const congruence =
+    sceneOf('congruence')
+      .params[0].options?.()
+      .map(([v]) => v) ?? [];
   assert.ok(congruence.length >= 3);
   const seen = checkClaims('congruence', { congruence, scheme: ['paper', 'butterfly'], steps: [1, 2] });
   assert.deepEqual([...seen], ['congruence.claim.butterfly']);
 });
 
 test('milling (Example 6): refining helps; with 7 poses or more the variational schemes come closest to the profile', () => {
-  const seen = checkClaims('milling', { poses: range(4, 12), steps: [0, 1, 2, 3], tool: [false], envelope: [false], part: [false] });
+  const seen = checkClaims('milling', {
+    poses: range(4, 12),
+    steps: [0, 1, 2, 3],
+    tool: [false],
+    envelope: [false],
+    part: [false],
+  });
   assert.deepEqual([...seen].sort(), ['milling.claim.refined', 'milling.claim.variational']);
 });
 
 test('Fig. 5: the caption fails at 45° (ρ = r + p tan β = 1.4) and holds in the limit orthogonal to the striction helix (ρ → 0 as H²)', () => {
-  const seen = checkClaims('isometry', { surface: ['helical', 'helical-orthogonal'], n: [4, 5, 6, 8, 12, 16, 24, 36, 60, 90, 120] });
+  const seen = checkClaims('isometry', {
+    surface: ['helical', 'helical-orthogonal'],
+    n: [4, 5, 6, 8, 12, 16, 24, 36, 60, 90, 120],
+  });
   assert.deepEqual([...seen].sort(), ['isometry.claim.helical', 'isometry.claim.orthogonal']);
 });
 

@@ -33,7 +33,11 @@ test('butterfly and variational keep the old lines and double the grid; Example 
   assert.deepEqual([c.rows, c.cols], [8, 7]);
   const old = c.segments();
   const errors = {};
-  for (const [name, options] of [['butterfly', { scheme: 'butterfly' }], ['two-stage', { scheme: 'variational', variant: 'two-stage', K: 6 }], ['coupled', { scheme: 'variational' }]]) {
+  for (const [name, options] of [
+    ['butterfly', { scheme: 'butterfly' }],
+    ['two-stage', { scheme: 'variational', variant: 'two-stage', K: 6 }],
+    ['coupled', { scheme: 'variational' }],
+  ]) {
     const r = c.subdivide(options);
     assert.deepEqual([r.rows, r.cols], [15, 13]);
     const seg = r.segments();
@@ -44,7 +48,10 @@ test('butterfly and variational keep the old lines and double the grid; Example 
     }
     errors[name] = ex.errors(r);
   }
-  assert.ok(errors.butterfly.distance < errors.coupled.distance && errors.coupled.distance < errors['two-stage'].distance, JSON.stringify(errors));
+  assert.ok(
+    errors.butterfly.distance < errors.coupled.distance && errors.coupled.distance < errors['two-stage'].distance,
+    JSON.stringify(errors),
+  );
   const diag = c.subdivide({ scheme: 'butterfly', diagonalOnly: true });
   assert.deepEqual([diag.rows, diag.cols], [7, 6]);
 });
@@ -56,15 +63,35 @@ test('bad input throws clear Errors and the module keeps working', () => {
     [() => LineCongruence.fromGrid(1, 4, flatGrid(1, 4)), /rows must be an integer from 2/],
     [() => LineCongruence.fromGrid(2.5, 4, flatGrid(3, 4)), /got 2.5/],
     [() => LineCongruence.fromGrid(3, 4, [1, 2, 3]), /a 3 × 4 grid needs 72 numbers \(6 per line\), got 3/],
-    [() => LineCongruence.fromGrid(3, 4, 'x'), /coords must be a Float64Array, Float32Array or array of numbers, got a string/],
-    [() => LineCongruence.fromGrid(4096, 4096, new Float64Array(6)), /lines \(rows × cols\): 16777216 exceeds the limit/],
-    [() => LineCongruence.fromGrid(3, 4, flatGrid(3, 4).map((x, i) => (i === 9 ? NaN : x))), /coordinate 9 \(line \(0, 1\), q.x\) is NaN/],
-    [() => c.subdivide({ scheme: 'loop' }), /options.scheme: unknown value "loop", expected "butterfly" or "variational"/],
+    [
+      () => LineCongruence.fromGrid(3, 4, 'x'),
+      /coords must be a Float64Array, Float32Array or array of numbers, got a string/,
+    ],
+    [
+      () => LineCongruence.fromGrid(4096, 4096, new Float64Array(6)),
+      /lines \(rows × cols\): 16777216 exceeds the limit/,
+    ],
+    [
+      () =>
+        LineCongruence.fromGrid(
+          3,
+          4,
+          flatGrid(3, 4).map((x, i) => (i === 9 ? NaN : x)),
+        ),
+      /coordinate 9 \(line \(0, 1\), q.x\) is NaN/,
+    ],
+    [
+      () => c.subdivide({ scheme: 'loop' }),
+      /options.scheme: unknown value "loop", expected "butterfly" or "variational"/,
+    ],
     [() => c.subdivide({}), /options.scheme is required/],
     [() => c.subdivide({ scheme: 'butterfly', K: 6 }), /options.K applies to the "variational" scheme only/],
     [() => c.subdivide({ scheme: 'butterfly', w: 1 }), /w: must be a number in \[−1\/4, 1\/4\], got 1/],
     [() => c.subdivide({ scheme: 'variational', K: 2 }), /options.K must be an integer from 3 to 1000, got 2/],
-    [() => c.subdivide({ scheme: 'variational', variant: 'magic' }), /options.variant: unknown value "magic", expected one of "paper", "two-stage", "coupled"/],
+    [
+      () => c.subdivide({ scheme: 'variational', variant: 'magic' }),
+      /options.variant: unknown value "magic", expected one of "paper", "two-stage", "coupled"/,
+    ],
     [() => c.subdivide({ scheme: 'butterfly', steps: 12 }), /lines after subdivision: .* exceeds the limit/],
     [() => c.row(3), /LineCongruence.row: i must be an integer from 0 to 2, got 3/],
     [() => AnalyticCongruence.byName('torus'), /unknown congruence "torus"/],

@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab from './load.mjs';
 
-const { LineCongruence, AnalyticCongruence, AnalyticSurface, RuledSurface, linearComplex } = ruledlab;
+const { LineCongruence, AnalyticCongruence, AnalyticSurface, linearComplex } = ruledlab;
 
 /** Runs `body` with the objects, freeing them after. */
 function using(objects, body) {
@@ -66,8 +66,14 @@ test('Example 5: the discrete focal points approach the exact ones, second order
         for (let i = 0; i < rows; i += step) {
           for (let j = 0; j < cols; j += step) {
             const k = i * cols + j;
-            if (exact.kind[k] !== 1 || Math.abs(exact.parameters[2 * k]) > 20 || Math.abs(exact.parameters[2 * k + 1]) > 20) continue;
-            for (const t of [0, 1]) worst = Math.max(worst, Math.abs(f.parameters[2 * k + t] - exact.parameters[2 * k + t]));
+            if (
+              exact.kind[k] !== 1 ||
+              Math.abs(exact.parameters[2 * k]) > 20 ||
+              Math.abs(exact.parameters[2 * k + 1]) > 20
+            )
+              continue;
+            for (const t of [0, 1])
+              worst = Math.max(worst, Math.abs(f.parameters[2 * k + t] - exact.parameters[2 * k + t]));
           }
         }
         return worst;
@@ -87,8 +93,14 @@ test('focal sheets and torsal strokes are ready buffers', () => {
       assert.equal(sheet.normals.length, sheet.positions.length);
       const strokes = g.torsalStrokesF32();
       assert.ok(strokes instanceof Float32Array && strokes.length > 0 && strokes.length % 6 === 0);
-      assert.throws(() => g.focalSheetF32(3), (e) => e.code === 'out-of-range' || e.code === 'invalid-argument');
-      assert.throws(() => g.torsalStrokesF32(-1), (e) => e.code === 'invalid-argument');
+      assert.throws(
+        () => g.focalSheetF32(3),
+        (e) => e.code === 'out-of-range' || e.code === 'invalid-argument',
+      );
+      assert.throws(
+        () => g.torsalStrokesF32(-1),
+        (e) => e.code === 'invalid-argument',
+      );
     });
   });
 });
@@ -103,7 +115,10 @@ test('linearComplex: a helical surface gives its screw axis, a hyperboloid a reg
       assert.ok(Math.hypot(f.axisDirection[0], f.axisDirection[1]) < 1e-9, `axis ${f.axisDirection}`);
       assert.ok(Math.hypot(...f.axisPoint) < 1e-9);
       assert.ok(f.axisSegment instanceof Float64Array && f.axisSegment.length === 6);
-      assert.ok(Math.hypot(f.axisSegment[0], f.axisSegment[1], f.axisSegment[3], f.axisSegment[4]) < 1e-9, 'the piece of axis lies on the z-axis');
+      assert.ok(
+        Math.hypot(f.axisSegment[0], f.axisSegment[1], f.axisSegment[3], f.axisSegment[4]) < 1e-9,
+        'the piece of axis lies on the z-axis',
+      );
       assert.ok(f.residual < 1e-12);
       const free = linearComplex(s.segments());
       assert.equal(free.kind, 'complex');
@@ -118,7 +133,16 @@ test('linearComplex: a helical surface gives its screw axis, a hyperboloid a reg
     assert.equal(f.kind, 'congruence');
     assert.equal(f.nullity, 2);
   });
-  assert.throws(() => linearComplex([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1], { tolerance: -1 }), (e) => e.code === 'invalid-argument' && /tolerance/.test(e.message));
-  assert.throws(() => linearComplex([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1], { tol: 1 }), (e) => e.code === 'invalid-argument' && /tol/.test(e.message));
-  assert.throws(() => linearComplex('lines'), (e) => e.code === 'invalid-argument');
+  assert.throws(
+    () => linearComplex([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1], { tolerance: -1 }),
+    (e) => e.code === 'invalid-argument' && /tolerance/.test(e.message),
+  );
+  assert.throws(
+    () => linearComplex([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1], { tol: 1 }),
+    (e) => e.code === 'invalid-argument' && /tol/.test(e.message),
+  );
+  assert.throws(
+    () => linearComplex('lines'),
+    (e) => e.code === 'invalid-argument',
+  );
 });

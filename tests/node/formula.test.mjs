@@ -16,7 +16,13 @@ function using(objects, use) {
   }
 }
 
-const HYPERBOLOID = { a: ['a*cos(u)', 'b*sin(u)', '0'], e: ['-a*sin(u)', 'b*cos(u)', 'c'], u: [0, '2*pi'], closed: true, parameters: { a: 1, b: 2, c: 3 } };
+const HYPERBOLOID = {
+  a: ['a*cos(u)', 'b*sin(u)', '0'],
+  e: ['-a*sin(u)', 'b*cos(u)', 'c'],
+  u: [0, '2*pi'],
+  closed: true,
+  parameters: { a: 1, b: 2, c: 3 },
+};
 
 test('the hyperboloid of Example 1 typed as formulas equals the built-in one', () => {
   using([AnalyticSurface.fromFormulas(HYPERBOLOID), AnalyticSurface.byName('hyperboloid')], (typed, built) => {
@@ -24,11 +30,15 @@ test('the hyperboloid of Example 1 typed as formulas equals the built-in one', (
     const u = new Float64Array([0.1, 0.7, 2, 4.5]);
     for (const f of ['striction', 'distribution', 'centralTangent']) {
       const [a, b] = [typed[f](u), built[f](u)];
-      a.forEach((x, i) => assert.ok(near(x, b[i]), `${f}[${i}]: ${x} vs ${b[i]}`));
+      a.forEach((x, i) => {
+        assert.ok(near(x, b[i]), `${f}[${i}]: ${x} vs ${b[i]}`);
+      });
     }
     using([typed.sample(24), built.sample(24)], (s, t) => {
       const [a, b] = [s.segments(), t.segments()];
-      a.forEach((x, i) => assert.ok(near(x, b[i]), `segment ${i}`));
+      a.forEach((x, i) => {
+        assert.ok(near(x, b[i]), `segment ${i}`);
+      });
     });
     const study = typed.convergence({ u: 0.7, h0: 0.1, levels: 6 });
     const order = (name) => study.series.find((s) => s.name === name).fittedOrder;
@@ -37,22 +47,34 @@ test('the hyperboloid of Example 1 typed as formulas equals the built-in one', (
 });
 
 test('interval ends may be formulas of the parameters; v defaults to [-1, 1]', () => {
-  using([AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: ['-a', 'a*pi'], parameters: { a: 2 } })], (s) => {
-    using([s.sample(3)], (r) => {
-      const seg = r.segments();
-      assert.ok(near(seg[0], -2) && near(seg[1], -1) && near(seg[6 * 2], 2 * Math.PI) && near(seg[6 * 2 + 4], 1));
-    });
-  });
+  using(
+    [AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: ['-a', 'a*pi'], parameters: { a: 2 } })],
+    (s) => {
+      using([s.sample(3)], (r) => {
+        const seg = r.segments();
+        assert.ok(near(seg[0], -2) && near(seg[1], -1) && near(seg[6 * 2], 2 * Math.PI) && near(seg[6 * 2 + 4], 1));
+      });
+    },
+  );
 });
 
 test('Example 5 typed as formulas: the same grid and errors as the built-in congruence', () => {
-  const spec = { p: ['u', 'v', 'sin(2*u + 1.5*v)/2'], e: ['u', 'v', 'sin(u) + 1.3*cos(v)'], u: [-1.1, 1.1], v: [-1.1, 1.1], rows: 8, cols: 7 };
+  const spec = {
+    p: ['u', 'v', 'sin(2*u + 1.5*v)/2'],
+    e: ['u', 'v', 'sin(u) + 1.3*cos(v)'],
+    u: [-1.1, 1.1],
+    v: [-1.1, 1.1],
+    rows: 8,
+    cols: 7,
+  };
   using([AnalyticCongruence.fromFormulas(spec), AnalyticCongruence.byName('example5')], (typed, built) => {
     using([typed.grid(), built.grid()], (g, h) => {
       assert.equal(g.rows, 8);
       assert.equal(g.cols, 7);
       const [a, b] = [g.segments(), h.segments()];
-      a.forEach((x, i) => assert.ok(near(x, b[i]), `coordinate ${i}`));
+      a.forEach((x, i) => {
+        assert.ok(near(x, b[i]), `coordinate ${i}`);
+      });
       using([g.subdivide({ scheme: 'butterfly' })], (r) => {
         assert.deepEqual(typed.errors(r), built.errors(r));
       });
@@ -73,20 +95,55 @@ function thrown(f) {
 test('bad formulas throw errors with codes, columns and clear messages', () => {
   const base = { a: ['cos(u)', 'sin(u)', '0'], e: ['0', '0', '1'], u: [0, 1] };
   const cases = [
-    [{ ...base, a: ['cos(u)', 'sni(u)', '0'] }, 'parse-error', 'AnalyticSurface.fromFormulas: a[1]: unknown function "sni" at column 1', { option: 'a[1]', column: 1 }],
-    [{ ...base, a: ['cos(u)', '2*x', '0'] }, 'parse-error', 'a[1]: unknown name "x" at column 3; known: u, a, b, c, pi, e', { column: 3 }],
+    [
+      { ...base, a: ['cos(u)', 'sni(u)', '0'] },
+      'parse-error',
+      'AnalyticSurface.fromFormulas: a[1]: unknown function "sni" at column 1',
+      { option: 'a[1]', column: 1 },
+    ],
+    [
+      { ...base, a: ['cos(u)', '2*x', '0'] },
+      'parse-error',
+      'a[1]: unknown name "x" at column 3; known: u, a, b, c, pi, e',
+      { column: 3 },
+    ],
     [{ ...base, a: ['1/u', '0', '0'] }, 'not-finite', 'a[0] is not finite at u = 0', { option: 'a[0]' }],
     [{ ...base, e: ['u', 'u', '0'] }, 'degenerate', 'e: e(u) vanishes at u = 0', {}],
     [{ ...base, e: ['sqrt(u)', '1', '0'] }, 'not-finite', 'e[0]: the derivative is not finite at u = 0', {}],
-    [{ ...base, a: ['x'.repeat(1001), '0', '0'] }, 'too-large', 'a[0]: 1001 characters exceed the limit of 1000', { limit: 1000 }],
-    [{ ...base, a: ['('.repeat(65) + 'u' + ')'.repeat(65), '0', '0'] }, 'too-large', 'levels of nesting exceed the limit of 64', { column: 65 }],
+    [
+      { ...base, a: ['x'.repeat(1001), '0', '0'] },
+      'too-large',
+      'a[0]: 1001 characters exceed the limit of 1000',
+      { limit: 1000 },
+    ],
+    [
+      { ...base, a: [`${'('.repeat(65)}u${')'.repeat(65)}`, '0', '0'] },
+      'too-large',
+      'levels of nesting exceed the limit of 64',
+      { column: 65 },
+    ],
     [{ ...base, u: [1, 1] }, 'invalid-argument', 'u: needs min < max, got [1, 1]', { option: 'u' }],
     [{ ...base, u: [0, 'pi/0'] }, 'invalid-argument', 'u: needs two finite numbers', {}],
-    [{ ...base, colour: 'red' }, 'invalid-argument', 'unknown option "colour"; known options: a, e, u, v, closed, parameters', { option: 'colour' }],
+    [
+      { ...base, colour: 'red' },
+      'invalid-argument',
+      'unknown option "colour"; known options: a, e, u, v, closed, parameters',
+      { option: 'colour' },
+    ],
     [{ ...base, a: ['u', '0'] }, 'invalid-argument', 'invalid length 2, expected an array of length 3', {}],
     [{ ...base, u: [0, true] }, 'invalid-argument', 'expected a number or a formula such as "2*pi"', {}],
-    [{ ...base, parameters: { d: 1 } }, 'invalid-argument', 'unknown option "parameters.d"; known options: a, b, c', { option: 'parameters.d' }],
-    ['cos(u)', 'invalid-argument', 'spec must be an object { a, e, u, v, closed, parameters, decimalComma }, got a string', {}],
+    [
+      { ...base, parameters: { d: 1 } },
+      'invalid-argument',
+      'unknown option "parameters.d"; known options: a, b, c',
+      { option: 'parameters.d' },
+    ],
+    [
+      'cos(u)',
+      'invalid-argument',
+      'spec must be an object { a, e, u, v, closed, parameters, decimalComma }, got a string',
+      {},
+    ],
   ];
   for (const [spec, code, message, details] of cases) {
     const e = thrown(() => AnalyticSurface.fromFormulas(spec));
@@ -122,10 +179,14 @@ test('the page’s formula presets are the core’s catalogue: each typed preset
     using([AnalyticSurface.fromFormulas(formulas), AnalyticSurface.byName(name)], (typed, named) => {
       using([typed.sample(24), named.sample(24)], (a, b) => {
         const [x, y] = [a.segments(), b.segments()];
-        x.forEach((v, i) => assert.ok(near(v, y[i]), `${name}: segment coordinate ${i}: ${v} vs ${y[i]}`));
+        x.forEach((v, i) => {
+          assert.ok(near(v, y[i]), `${name}: segment coordinate ${i}: ${v} vs ${y[i]}`);
+        });
       });
       const [s, t] = [typed.distribution(u), named.distribution(u)];
-      s.forEach((v, i) => assert.ok(near(v, t[i]), `${name}: δ`));
+      s.forEach((v, i) => {
+        assert.ok(near(v, t[i]), `${name}: δ`);
+      });
     });
   }
   for (const preset of CONGRUENCE_PRESETS) {
@@ -135,7 +196,9 @@ test('the page’s formula presets are the core’s catalogue: each typed preset
       using([typed.grid(), named.grid()], (a, b) => {
         const [x, y] = [a.segments(), b.segments()];
         assert.equal(x.length, y.length);
-        x.forEach((v, i) => assert.ok(near(v, y[i]), `${name}: coordinate ${i}`));
+        x.forEach((v, i) => {
+          assert.ok(near(v, y[i]), `${name}: coordinate ${i}`);
+        });
       });
     });
   }

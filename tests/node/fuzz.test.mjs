@@ -4,23 +4,115 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab from './load.mjs';
 
-const { RuledSurface, AnalyticSurface, InvariantsBuffer, LineCongruence, AnalyticCongruence, ToolPath, subdividePolygon, importSegments, meshNormalsF32, linearComplex } = ruledlab;
+const {
+  RuledSurface,
+  AnalyticSurface,
+  InvariantsBuffer,
+  LineCongruence,
+  AnalyticCongruence,
+  ToolPath,
+  subdividePolygon,
+  importSegments,
+  meshNormalsF32,
+  linearComplex,
+} = ruledlab;
 
 let seed = Number(process.env.FUZZ_SEED ?? 12345);
-const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+const random = () => {
+  seed = (seed * 1103515245 + 12345) % 2147483648;
+  return seed / 2147483648;
+};
 const pick = (xs) => xs[Math.floor(random() * xs.length)];
 
-const NUMBERS = [0, -0, 1, -1, 0.5, 2, 3, 7, 12, 1e-300, 1e300, -1e300, NaN, Infinity, -Infinity, 2 ** 31, 2 ** 53, 1.5, -3.7, 1e9];
+const NUMBERS = [
+  0,
+  -0,
+  1,
+  -1,
+  0.5,
+  2,
+  3,
+  7,
+  12,
+  1e-300,
+  1e300,
+  -1e300,
+  NaN,
+  Infinity,
+  -Infinity,
+  2 ** 31,
+  2 ** 53,
+  1.5,
+  -3.7,
+  1e9,
+];
 const SMALL = [0, 1, 2, 3, 4, 6, 12, -1, 1.5, NaN, Infinity, 1e9, 25];
-const STRINGS = ['', 'four-point', 'chaikin', 'bspline', 'bezier', 'variational', 'butterfly', 'lines', 'points', 'coupled', 'literal', 'averaged', 'two-stage', 'json', 'csv', 'gcode', 'hyperboloid', 'sphere', 'example5', 'flat', 'ball', '💥'];
-const KEYS = ['scheme', 'steps', 'w', 'n', 'variant', 'degree', 'closed', 'space', 'length', 'K', 'diagonalOnly', 'u', 'h0', 'levels', 'uMin', 'uMax', 'vMin', 'vMax', 'radius', 'end', 'feed', 'scale', 'clearance', 'junk'];
+const STRINGS = [
+  '',
+  'four-point',
+  'chaikin',
+  'bspline',
+  'bezier',
+  'variational',
+  'butterfly',
+  'lines',
+  'points',
+  'coupled',
+  'literal',
+  'averaged',
+  'two-stage',
+  'json',
+  'csv',
+  'gcode',
+  'hyperboloid',
+  'sphere',
+  'example5',
+  'flat',
+  'ball',
+  '💥',
+];
+const KEYS = [
+  'scheme',
+  'steps',
+  'w',
+  'n',
+  'variant',
+  'degree',
+  'closed',
+  'space',
+  'length',
+  'K',
+  'diagonalOnly',
+  'u',
+  'h0',
+  'levels',
+  'uMin',
+  'uMax',
+  'vMin',
+  'vMax',
+  'radius',
+  'end',
+  'feed',
+  'scale',
+  'clearance',
+  'junk',
+];
 
 function typedArray() {
   const n = pick([0, 1, 3, 5, 6, 11, 12, 18, 24, 36, 60, 72]);
   const a = new Float64Array(n);
   const mode = pick(['nice', 'nice', 'nice', 'adversarial', 'zeros', 'repeat']);
   for (let i = 0; i < n; i++) {
-    a[i] = mode === 'nice' ? random() * 4 - 2 : mode === 'zeros' ? 0 : mode === 'repeat' ? (i % 6 < 3 ? 1 : 1) : pick(NUMBERS);
+    a[i] =
+      mode === 'nice'
+        ? random() * 4 - 2
+        : mode === 'zeros'
+          ? 0
+          : mode === 'repeat'
+            ? i % 6 < 3
+              ? 1
+              : 1
+            : pick(NUMBERS);
   }
   return a;
 }
@@ -30,13 +122,37 @@ function options() {
   const count = pick([0, 1, 2, 3, 4]);
   for (let i = 0; i < count; i++) {
     const k = pick(KEYS);
-    o[k] = pick([() => pick(SMALL), () => pick(STRINGS), () => pick([true, false]), () => random() * 0.3 - 0.1, () => null, () => [1, 2], () => ({})])();
+    o[k] = pick([
+      () => pick(SMALL),
+      () => pick(STRINGS),
+      () => pick([true, false]),
+      () => random() * 0.3 - 0.1,
+      () => null,
+      () => [1, 2],
+      () => ({}),
+    ])();
   }
   return o;
 }
 
 function value() {
-  return pick([() => pick(NUMBERS), () => pick(STRINGS), typedArray, typedArray, options, () => undefined, () => null, () => [1, 2, 3], () => new Float32Array(6), () => ({ length: 6 }), () => true, () => 10n, () => Symbol('x'), () => [1, '2', {}], () => new Uint8Array(12)])();
+  return pick([
+    () => pick(NUMBERS),
+    () => pick(STRINGS),
+    typedArray,
+    typedArray,
+    options,
+    () => undefined,
+    () => null,
+    () => [1, 2, 3],
+    () => new Float32Array(6),
+    () => ({ length: 6 }),
+    () => true,
+    () => 10n,
+    () => Symbol('x'),
+    () => [1, '2', {}],
+    () => new Uint8Array(12),
+  ])();
 }
 
 /** A valid object of each class to call methods on. */
@@ -53,7 +169,13 @@ function fixtures() {
 
 /** Text for the importers: random bytes, or a valid file with random damage. */
 function text() {
-  const valid = pick(['0,0,0,1,0,0\n0,0,1,0,1,1\n', 'ax,ay,az,bx,by,bz\n1,2,3,4,5,6\n', '[[0,0,0,1,0,0],[0,0,1,0,1,1]]', '{"rows": 2, "cols": 2, "segments": [[0,0,0,1,0,0],[0,0,1,0,1,1],[1,0,0,1,1,0],[1,0,1,1,1,1]]}', '[1,2,3,4,5,6]']);
+  const valid = pick([
+    '0,0,0,1,0,0\n0,0,1,0,1,1\n',
+    'ax,ay,az,bx,by,bz\n1,2,3,4,5,6\n',
+    '[[0,0,0,1,0,0],[0,0,1,0,1,1]]',
+    '{"rows": 2, "cols": 2, "segments": [[0,0,0,1,0,0],[0,0,1,0,1,1],[1,0,0,1,1,0],[1,0,1,1,1,1]]}',
+    '[1,2,3,4,5,6]',
+  ]);
   const chars = '0123456789.,;-+eE[]{}":# \n\tabcxyz\\\u00e9\u{1F4A5}';
   if (random() < 0.3) return Array.from({ length: Math.floor(random() * 60) }, () => pick([...chars])).join('');
   const s = [...valid];
@@ -70,22 +192,94 @@ function text() {
 
 /** A formula: a valid one, a damaged one, or hostile text (nesting, numbers, names, unicode, other syntaxes). */
 function formula() {
-  const valid = pick(['cos(u)', 'a*sin(u)', 'u^2/2', 'atan2(v, u)', 'exp(-u*u)', 'sqrt(1 + u^2)', '1', 'sin(2*u + 1.5*v)/2']);
-  const hostile = pick(['('.repeat(70) + 'u' + ')'.repeat(70), 'u+'.repeat(600) + 'u', '-'.repeat(9) + 'u', '1e308*1e308', '1/0', 'sni(u)', 'π*u', '2u', 'u;u', '"x"', '<img src=x>', 'u == 1', '9'.repeat(500), 'atan2(u)', '', ' ', 'log(-u)', '\u0000', '💥']);
+  const valid = pick([
+    'cos(u)',
+    'a*sin(u)',
+    'u^2/2',
+    'atan2(v, u)',
+    'exp(-u*u)',
+    'sqrt(1 + u^2)',
+    '1',
+    'sin(2*u + 1.5*v)/2',
+  ]);
+  const hostile = pick([
+    `${'('.repeat(70)}u${')'.repeat(70)}`,
+    `${'u+'.repeat(600)}u`,
+    `${'-'.repeat(9)}u`,
+    '1e308*1e308',
+    '1/0',
+    'sni(u)',
+    'π*u',
+    '2u',
+    'u;u',
+    '"x"',
+    '<img src=x>',
+    'u == 1',
+    '9'.repeat(500),
+    'atan2(u)',
+    '',
+    ' ',
+    'log(-u)',
+    '\u0000',
+    '💥',
+  ]);
   const chars = '0123456789.,+-*/^() uvabcepisncotqrlx\u00e9π';
   if (random() < 0.3) return hostile;
   if (random() < 0.3) return Array.from({ length: Math.floor(random() * 30) }, () => pick([...chars])).join('');
   const s = [...valid];
-  for (let k = Math.floor(random() * 3); k > 0; k--) s.splice(Math.floor(random() * (s.length + 1)), pick([0, 1]), pick([...chars]));
+  for (let k = Math.floor(random() * 3); k > 0; k--)
+    s.splice(Math.floor(random() * (s.length + 1)), pick([0, 1]), pick([...chars]));
   return s.join('');
 }
 
 // the README's table of error codes: every thrown Error has one of them
-const CODES = ['invalid-argument', 'not-finite', 'out-of-range', 'too-large', 'too-small', 'parse-error', 'degenerate', 'not-converged', 'singular', 'freed', 'invalid-state'];
+const CODES = [
+  'invalid-argument',
+  'not-finite',
+  'out-of-range',
+  'too-large',
+  'too-small',
+  'parse-error',
+  'degenerate',
+  'not-converged',
+  'singular',
+  'freed',
+  'invalid-state',
+];
 
 const CALLS = [
-  (f) => AnalyticSurface.fromFormulas(pick([value(), { a: [formula(), formula(), formula()], e: [formula(), formula(), formula()], u: [pick([0, -1, formula()]), pick([1, 2, formula()])], ...pick([{}, { v: [formula(), 1] }, { closed: pick([true, 1]) }, { parameters: { a: pick(NUMBERS) } }, options()]) }])),
-  (f) => AnalyticCongruence.fromFormulas(pick([value(), { p: [formula(), formula(), formula()], e: [formula(), formula(), formula()], u: [-1, 1], v: [pick([-1, formula()]), 1], rows: pick([undefined, ...SMALL]), cols: pick([undefined, ...SMALL]) }])),
+  (_f) =>
+    AnalyticSurface.fromFormulas(
+      pick([
+        value(),
+        {
+          a: [formula(), formula(), formula()],
+          e: [formula(), formula(), formula()],
+          u: [pick([0, -1, formula()]), pick([1, 2, formula()])],
+          ...pick([
+            {},
+            { v: [formula(), 1] },
+            { closed: pick([true, 1]) },
+            { parameters: { a: pick(NUMBERS) } },
+            options(),
+          ]),
+        },
+      ]),
+    ),
+  (_f) =>
+    AnalyticCongruence.fromFormulas(
+      pick([
+        value(),
+        {
+          p: [formula(), formula(), formula()],
+          e: [formula(), formula(), formula()],
+          u: [-1, 1],
+          v: [pick([-1, formula()]), 1],
+          rows: pick([undefined, ...SMALL]),
+          cols: pick([undefined, ...SMALL]),
+        },
+      ]),
+    ),
   (f) => f.surface.invariants(pick([undefined, { closed: pick([true, false, value()]) }, value()])),
   (f) => f.surface.slide(value()),
   (f) => f.surface.maxAngleTo(pick([f.surface, f.surface.conoidal(), value()])),
@@ -95,23 +289,31 @@ const CALLS = [
   (f) => f.surface.everyF32(pick([...SMALL, value()])),
   (f) => f.surface.triangulationF32(pick([...SMALL, value()]), pick([1, 2, ...SMALL])),
   (f) => f.surface.divisionPoint(pick(SMALL), pick(SMALL), pick(SMALL)),
-  (f) => [f.surface.referenceFrame(), f.surface.developmentInSpace(), f.surface.developmentStriction(), f.surface.developmentStrictionInSpace(), f.surface.directions(), f.surface.meanLength()],
+  (f) => [
+    f.surface.referenceFrame(),
+    f.surface.developmentInSpace(),
+    f.surface.developmentStriction(),
+    f.surface.developmentStrictionInSpace(),
+    f.surface.directions(),
+    f.surface.meanLength(),
+  ],
   (f) => f.hyp.parameters(pick([...SMALL, value()]), pick([undefined, options()])),
   (f) => f.hyp.samplingErrors(pick([...SMALL, value()]), pick([undefined, options()])),
   (f) => f.hyp.insertedDistance(f.surface, pick(SMALL), pick(NUMBERS), pick(NUMBERS)),
   (f) => f.congruence.insertedF32(pick([...SMALL, value()])),
   (f) => f.congruence.directorF32(pick([...SMALL, value()])),
   (f) => f.congruence.insertedDirectorF32(pick(SMALL), pick(SMALL)),
-  (f) => f.analyticCongruence.grid(pick([undefined, ...SMALL]), pick([undefined, ...SMALL]), pick([undefined, ...NUMBERS])),
-  (f) => ToolPath.examplePart(pick([...SMALL, value()]), pick(SMALL)),
+  (f) =>
+    f.analyticCongruence.grid(pick([undefined, ...SMALL]), pick([undefined, ...SMALL]), pick([undefined, ...NUMBERS])),
+  (_f) => ToolPath.examplePart(pick([...SMALL, value()]), pick(SMALL)),
   (f) => f.path.envelopeMesh(pick([...SMALL, value()])),
   (f) => f.path.toolMesh(pick(SMALL), pick(SMALL)),
   (f) => f.path.insertedF32(pick([...SMALL, value()])),
-  (f) => importSegments(text()),
-  (f) => importSegments(text(), pick(['csv', 'json', undefined, value()])),
+  (_f) => importSegments(text()),
+  (_f) => importSegments(text(), pick(['csv', 'json', undefined, value()])),
   (f) => f.surface.export(pick(['csv', 'json', value()])),
   (f) => f.congruence.export(pick(['csv', 'json', value()])),
-  (f) => RuledSurface.fromSegments(value()),
+  (_f) => RuledSurface.fromSegments(value()),
   (f) => f.surface.invariants(),
   (f) => f.surface.invariantsInto(pick([value(), f.surface.invariants(), {}])),
   (f) => {
@@ -135,29 +337,34 @@ const CALLS = [
   (f) => f.surface.subdivide(options()),
   (f) => f.surface.subdivide({ scheme: pick(STRINGS), steps: pick(SMALL), ...options() }),
   (f) => f.surface.recut(pick([undefined, ...NUMBERS])),
-  (f) => AnalyticSurface.byName(value()),
+  (_f) => AnalyticSurface.byName(value()),
   (f) => f.hyp.sample(pick([...SMALL, value()]), pick([value(), options()])),
   (f) => f.hyp.striction(value()),
   (f) => f.hyp.distribution(value()),
   (f) => f.hyp.centralTangent(value()),
   (f) => f.hyp.convergence(pick([value(), options()])),
   (f) => f.hyp.distances(value(), pick(NUMBERS), pick(NUMBERS)),
-  (f) => subdividePolygon(value(), pick([value(), options(), { scheme: pick(STRINGS), ...options() }])),
-  (f) => LineCongruence.fromGrid(pick(SMALL), pick(SMALL), value()),
+  (_f) => subdividePolygon(value(), pick([value(), options(), { scheme: pick(STRINGS), ...options() }])),
+  (_f) => LineCongruence.fromGrid(pick(SMALL), pick(SMALL), value()),
   (f) => f.congruence.subdivide(pick([value(), options(), { scheme: pick(STRINGS), ...options() }])),
   (f) => f.congruence.row(pick([...SMALL, value()])),
   (f) => f.congruence.column(pick([...SMALL, value()])),
-  (f) => AnalyticCongruence.byName(value()),
+  (_f) => AnalyticCongruence.byName(value()),
   (f) => f.analyticCongruence.grid(pick([undefined, ...SMALL]), pick([undefined, ...SMALL])),
   (f) => f.analyticCongruence.errors(pick([f.congruence, value()])),
-  (f) => ToolPath.fromSegments(value(), pick([value(), options(), { radius: pick(NUMBERS), length: pick(NUMBERS), end: pick(STRINGS) }])),
-  (f) => ToolPath.example(pick([undefined, ...SMALL])),
+  (_f) =>
+    ToolPath.fromSegments(
+      value(),
+      pick([value(), options(), { radius: pick(NUMBERS), length: pick(NUMBERS), end: pick(STRINGS) }]),
+    ),
+  (_f) => ToolPath.example(pick([undefined, ...SMALL])),
   (f) => f.path.refine(pick([value(), options()])),
   (f) => f.path.deviation(value()),
   (f) => f.path.export(pick([value(), ...STRINGS]), pick([value(), options()])),
-  (f) => ToolPath.exampleProfile(pick(SMALL)),
+  (_f) => ToolPath.exampleProfile(pick(SMALL)),
   (f) => f.path.quality(),
-  (f) => meshNormalsF32(pick([value(), f.surface.segmentsF32()]), pick([value(), new Uint32Array([0, 1, 2]), [0, 1, 9]])),
+  (f) =>
+    meshNormalsF32(pick([value(), f.surface.segmentsF32()]), pick([value(), new Uint32Array([0, 1, 2]), [0, 1, 9]])),
   (f) => f.surface.recut(value()),
   (f) => f.hyp.sample(value(), pick([value(), options()])),
   (f) => f.congruence.focal(),
@@ -165,11 +372,12 @@ const CALLS = [
   (f) => f.congruence.torsalStrokesF32(pick([undefined, ...NUMBERS, value()])),
   (f) => f.congruence.linearComplex(pick([undefined, value(), options(), { tolerance: pick(NUMBERS) }])),
   (f) => f.surface.linearComplex(pick([undefined, value(), options(), { tolerance: pick(NUMBERS) }])),
-  (f) => linearComplex(pick([value(), f.surface.segments(), [0, 0, 0, 1, 0, 0]]), pick([undefined, value(), options()])),
+  (f) =>
+    linearComplex(pick([value(), f.surface.segments(), [0, 0, 0, 1, 0, 0]]), pick([undefined, value(), options()])),
   (f) => f.analyticCongruence.focal(pick([undefined, ...SMALL, value()]), pick([undefined, ...SMALL, value()])),
 ];
 
-test("100 000 random and adversarial calls: only Errors, never a trap; the module keeps working", () => {
+test('100 000 random and adversarial calls: only Errors, never a trap; the module keeps working', () => {
   let fx = fixtures();
   let errors = 0;
   const probe = RuledSurface.fromSegments(new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1]));

@@ -31,14 +31,31 @@ test('malformed files are rejected with the line and column', () => {
     ['0,0,0,1,0,0\n1,2,three,4,5,6\n', /line 2, column 5: "three" is not a number/],
     ['[[0,0,0,1,0,0],\n [0,0,0,1,0]]', /json: line 2, column 2: a segment needs 6 numbers, found 5/],
     ['{"rows": 2, "cols": 3, "segments": [[0,0,0,1,0,0]]}', /a 2 × 3 grid needs 6 segments, found 1/],
-    ['[' + '['.repeat(5000), /nested deeper than 16 levels/],
+    [`[${'['.repeat(5000)}`, /nested deeper than 16 levels/],
   ];
-  for (const [text, message] of cases) assert.throws(() => importSegments(text), (e) => e instanceof Error && message.test(e.message), String(message));
+  for (const [text, message] of cases)
+    assert.throws(
+      () => importSegments(text),
+      (e) => e instanceof Error && message.test(e.message),
+      String(message),
+    );
   assert.throws(() => importSegments(42), /text must be a string, got a number/);
   assert.throws(() => importSegments('0,0,0,1,0,0', 'xml'), /format must be "csv" or "json"/);
-  assert.throws(() => AnalyticSurface.byName('cone').sample(3).export('xml'), /format must be "csv", "json", "obj", "invariants-csv" or "invariants-json", got "xml"/);
-  assert.throws(() => AnalyticCongruence.byName('example5').grid().export('invariants-json'), /format must be "csv", "json" or "obj"/);
-  assert.throws(() => AnalyticSurface.byName('cone').sample(3).export('obj', { name: 'x'.repeat(201) }), (e) => e.code === 'invalid-argument' && e.details.option === 'name');
+  assert.throws(
+    () => AnalyticSurface.byName('cone').sample(3).export('xml'),
+    /format must be "csv", "json", "obj", "invariants-csv" or "invariants-json", got "xml"/,
+  );
+  assert.throws(
+    () => AnalyticCongruence.byName('example5').grid().export('invariants-json'),
+    /format must be "csv", "json" or "obj"/,
+  );
+  assert.throws(
+    () =>
+      AnalyticSurface.byName('cone')
+        .sample(3)
+        .export('obj', { name: 'x'.repeat(201) }),
+    (e) => e.code === 'invalid-argument' && e.details.option === 'name',
+  );
 });
 
 test('OBJ: the endpoints as vertices at full precision, a line per ruling, a quad per strip', () => {
@@ -63,8 +80,21 @@ test('the invariants as JSON and CSV are the invariants() of the surface', () =>
   const s = AnalyticSurface.byName('hyperboloid').sample(12);
   const inv = s.invariants();
   const json = JSON.parse(s.export('invariants-json'));
-  for (const key of ['angle', 'distance', 'distribution', 'footpoints', 'centralNormal', 'striction', 'distributionMean', 'perpendicularMidpoints']) {
-    assert.deepEqual(json[key], Array.from(inv[key], (x) => (Number.isFinite(x) ? x : null)), key);
+  for (const key of [
+    'angle',
+    'distance',
+    'distribution',
+    'footpoints',
+    'centralNormal',
+    'striction',
+    'distributionMean',
+    'perpendicularMidpoints',
+  ]) {
+    assert.deepEqual(
+      json[key],
+      Array.from(inv[key], (x) => (Number.isFinite(x) ? x : null)),
+      key,
+    );
   }
   assert.deepEqual(json.parallel, Array.from(inv.parallel, Number));
   const rows = s.export('invariants-csv').trim().split('\n');

@@ -3,12 +3,14 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab, { sampled } from './load.mjs';
 
-const { RuledSurface, AnalyticSurface } = ruledlab;
+const { AnalyticSurface } = ruledlab;
 const near = (a, b, tol = 1e-12) => Math.abs(a - b) <= tol * Math.max(1, Math.abs(a), Math.abs(b));
 
 /** Edge lengths of the polygon a_i + t_i (b_i − a_i), computed here in JS. */
 function polygon(segments, t) {
-  const p = t.map((ti, i) => [0, 1, 2].map((k) => segments[6 * i + k] + ti * (segments[6 * i + 3 + k] - segments[6 * i + k])));
+  const p = t.map((ti, i) =>
+    [0, 1, 2].map((k) => segments[6 * i + k] + ti * (segments[6 * i + 3 + k] - segments[6 * i + k])),
+  );
   return p.slice(1).map((q, i) => Math.hypot(q[0] - p[i][0], q[1] - p[i][1], q[2] - p[i][2]));
 }
 
@@ -20,13 +22,19 @@ test('bend(0) is the input, bend(1) the conoidal model, and every bend is isomet
   const t = Array.from({ length: s.length }, (_, i) => Math.sin(7 * i) * 1.5);
   const lengths = polygon(input, t);
   const b0 = s.bend(0).segments();
-  input.forEach((x, i) => assert.ok(near(x, b0[i]), `bend(0)[${i}]`));
+  input.forEach((x, i) => {
+    assert.ok(near(x, b0[i]), `bend(0)[${i}]`);
+  });
   const conoidal = s.conoidal().segments();
   const b1 = s.bend(1).segments();
-  conoidal.forEach((x, i) => assert.ok(near(x, b1[i]), `bend(1)[${i}]`));
+  conoidal.forEach((x, i) => {
+    assert.ok(near(x, b1[i]), `bend(1)[${i}]`);
+  });
   for (const tb of [0.25, 0.5, 1]) {
     const bent = s.bend(tb);
-    polygon(bent.segments(), t).forEach((l, i) => assert.ok(near(l, lengths[i]), `t=${tb} edge ${i}: ${l} vs ${lengths[i]}`));
+    for (const [i, l] of polygon(bent.segments(), t).entries()) {
+      assert.ok(near(l, lengths[i]), `t=${tb} edge ${i}: ${l} vs ${lengths[i]}`);
+    }
     bent.free();
   }
 });
@@ -50,14 +58,19 @@ test('hinge(angles) turns the hinges; hingeAngles gives N − 2 values', () => {
   // turning every hinge by −τ is the conoidal model
   const c1 = s.hinge(tau.map((x) => -x)).segments();
   const c2 = s.conoidal().segments();
-  c1.forEach((x, i) => assert.ok(near(x, c2[i])));
+  c1.forEach((x, i) => {
+    assert.ok(near(x, c2[i]));
+  });
 });
 
 test('development: 4 numbers per ruling, R_0 on the x-axis, a cone has measure 0', () => {
   const s = quartic(20);
   const dev = s.development();
   assert.equal(dev.length, 80);
-  assert.deepEqual([dev[0], dev[1], dev[3]].map((x) => Math.round(x * 1e12)), [0, 0, 0]);
+  assert.deepEqual(
+    [dev[0], dev[1], dev[3]].map((x) => Math.round(x * 1e12)),
+    [0, 0, 0],
+  );
   assert.ok(s.nonDevelopability() > 0.01);
   const cone = AnalyticSurface.byName('cone').sample(24, { uMin: 0, uMax: 4, closed: false });
   assert.ok(cone.nonDevelopability() < 1e-12, `cone measure ${cone.nonDevelopability()}`);

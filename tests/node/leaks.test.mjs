@@ -33,7 +33,9 @@ test('10⁴ create/compute/free cycles keep wasm memory flat', () => {
   assert.equal(after, before);
 });
 
-test('objects never freed are reclaimed by the FinalizationRegistry; explicit free still works', { skip: typeof global.gc !== 'function' && 'needs --expose-gc' }, async () => {
+test('objects never freed are reclaimed by the FinalizationRegistry; explicit free still works', {
+  skip: typeof global.gc !== 'function' && 'needs --expose-gc',
+}, async () => {
   const hyp = AnalyticSurface.byName('hyperboloid');
   for (let i = 0; i < 100; i++) hyp.sample(5000).subdivide({ scheme: 'chaikin' });
   await settle();

@@ -18,8 +18,14 @@ const LANGUAGES = { en, de };
 /** The catalogue as the Rust source writes it: [reason, template] pairs. */
 function catalogue() {
   const source = readFileSync(new URL('../../src/error/message.rs', import.meta.url), 'utf8');
-  const body = source.slice(source.indexOf('pub const CATALOGUE'), source.indexOf('];', source.indexOf('pub const CATALOGUE')));
-  const pairs = [...body.matchAll(/\(\s*(TEXT|"[a-z0-9-]+")\s*,\s*"((?:[^"\\]|\\.)*)"\s*,?\s*\)/g)].map(([, r, t]) => [r === 'TEXT' ? 'text' : JSON.parse(r), JSON.parse(`"${t}"`)]);
+  const body = source.slice(
+    source.indexOf('pub const CATALOGUE'),
+    source.indexOf('];', source.indexOf('pub const CATALOGUE')),
+  );
+  const pairs = [...body.matchAll(/\(\s*(TEXT|"[a-z0-9-]+")\s*,\s*"((?:[^"\\]|\\.)*)"\s*,?\s*\)/g)].map(([, r, t]) => [
+    r === 'TEXT' ? 'text' : JSON.parse(r),
+    JSON.parse(`"${t}"`),
+  ]);
   return pairs;
 }
 
@@ -37,15 +43,25 @@ test('every reason of the core has a text in every language, with values the cor
     for (const [lang, table] of Object.entries(LANGUAGES)) {
       const text = table[`error.${reason}`];
       assert.ok(text, `${lang}: no text for reason "${reason}"`);
-      for (const name of placeholders(text)) assert.ok(given.has(name), `${lang}: "${reason}" uses {${name}}, which the core does not give (it gives ${[...given].join(', ') || 'nothing'})`);
+      for (const name of placeholders(text))
+        assert.ok(
+          given.has(name),
+          `${lang}: "${reason}" uses {${name}}, which the core does not give (it gives ${[...given].join(', ') || 'nothing'})`,
+        );
     }
-    assert.deepEqual(placeholders(en[`error.${reason}`]), placeholders(de[`error.${reason}`]), `"${reason}": English and German use different values`);
+    assert.deepEqual(
+      placeholders(en[`error.${reason}`]),
+      placeholders(de[`error.${reason}`]),
+      `"${reason}": English and German use different values`,
+    );
   }
   // and no text for a reason the core does not have
   const known = new Set(reasons.map(([r]) => `error.${r}`));
   const page = /^error\.(field|seeField|at\w+|hintJoin|code\.|what\.|option\.)/;
   for (const [lang, table] of Object.entries(LANGUAGES)) {
-    for (const key of Object.keys(table)) if (key.startsWith('error.') && !page.test(key)) assert.ok(known.has(key), `${lang}: ${key} is no reason of the core`);
+    for (const key of Object.keys(table))
+      if (key.startsWith('error.') && !page.test(key))
+        assert.ok(known.has(key), `${lang}: ${key} is no reason of the core`);
   }
 });
 
@@ -53,11 +69,36 @@ test('an error through the package carries its reason and values; the page says 
   const de = translator('de');
   const en = translator('en');
   const cases = [
-    [() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', '3*'], u: [0, 1] }), 'ends-expecting-operand', {}, 'e[2]: Die Formel endet, wo ein Operand erwartet wird (Spalte 3).'],
-    [() => AnalyticSurface.fromFormulas({ a: ['u', 'sni(u)', '0'], e: ['0', '1', 'u'], u: [0, 1] }), 'unknown-function', { name: 'sni' }, 'a[1]: Eine Funktion „sni“ gibt es nicht (Spalte 1); bekannt sind:'],
-    [() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: [2.5, 1] }), 'interval-order', { lo: 2.5, hi: 1 }, 'Bereich von u: Der Anfang muss kleiner als das Ende sein; angegeben ist [2,5; 1].'],
-    [() => importSegments('0,0,0,1,0\n'), 'csv-six-numbers', { found: 5 }, 'CSV: Eine Zeile braucht 6 Zahlen (a.x a.y a.z b.x b.y b.z), diese hat 5 (Zeile 1, Spalte 10).'],
-    [() => RuledSurface.fromSegments(new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, NaN, 1])), 'not-finite-segment', { item: 1, coordinate: 'b.y' }, 'Koordinate b.y der Erzeugenden 1 ist NaN; jede Koordinate muss eine endliche Zahl sein.'],
+    [
+      () => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', '3*'], u: [0, 1] }),
+      'ends-expecting-operand',
+      {},
+      'e[2]: Die Formel endet, wo ein Operand erwartet wird (Spalte 3).',
+    ],
+    [
+      () => AnalyticSurface.fromFormulas({ a: ['u', 'sni(u)', '0'], e: ['0', '1', 'u'], u: [0, 1] }),
+      'unknown-function',
+      { name: 'sni' },
+      'a[1]: Eine Funktion „sni“ gibt es nicht (Spalte 1); bekannt sind:',
+    ],
+    [
+      () => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: [2.5, 1] }),
+      'interval-order',
+      { lo: 2.5, hi: 1 },
+      'Bereich von u: Der Anfang muss kleiner als das Ende sein; angegeben ist [2,5; 1].',
+    ],
+    [
+      () => importSegments('0,0,0,1,0\n'),
+      'csv-six-numbers',
+      { found: 5 },
+      'CSV: Eine Zeile braucht 6 Zahlen (a.x a.y a.z b.x b.y b.z), diese hat 5 (Zeile 1, Spalte 10).',
+    ],
+    [
+      () => RuledSurface.fromSegments(new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, NaN, 1])),
+      'not-finite-segment',
+      { item: 1, coordinate: 'b.y' },
+      'Koordinate b.y der Erzeugenden 1 ist NaN; jede Koordinate muss eine endliche Zahl sein.',
+    ],
   ];
   for (const [call, reason, values, german] of cases) {
     let error;
@@ -77,7 +118,12 @@ test('an error through the package carries its reason and values; the page says 
 });
 
 test('German formulas take decimal commas; atan2(1,5) is refused with the two ways to write it', () => {
-  const s = AnalyticSurface.fromFormulas({ a: ['0,5*u', '0', '0'], e: ['0', '1', 'u'], u: ['0', '1,5'], decimalComma: true });
+  const s = AnalyticSurface.fromFormulas({
+    a: ['0,5*u', '0', '0'],
+    e: ['0', '1', 'u'],
+    u: ['0', '1,5'],
+    decimalComma: true,
+  });
   try {
     assert.deepEqual([...s.parameters(2, { closed: false })], [0, 1.5]);
     const x = s.sample(2).segments();
@@ -85,24 +131,39 @@ test('German formulas take decimal commas; atan2(1,5) is refused with the two wa
   } finally {
     s.free();
   }
-  assert.throws(() => AnalyticSurface.fromFormulas({ a: ['0,5*u', '0', '0'], e: ['0', '1', 'u'], u: [0, 1] }), (e) => e.details.reason === 'comma-outside-atan2');
+  assert.throws(
+    () => AnalyticSurface.fromFormulas({ a: ['0,5*u', '0', '0'], e: ['0', '1', 'u'], u: [0, 1] }),
+    (e) => e.details.reason === 'comma-outside-atan2',
+  );
   // an English reader of a German link: 0,5 is still a number, atan2(1,5) has two arguments
-  const english = AnalyticSurface.fromFormulas({ a: ['0,5*u', 'atan2(1,5)', '0'], e: ['0', '1', 'u'], u: ['0', '1,5'], decimalComma: 'unambiguous' });
+  const english = AnalyticSurface.fromFormulas({
+    a: ['0,5*u', 'atan2(1,5)', '0'],
+    e: ['0', '1', 'u'],
+    u: ['0', '1,5'],
+    decimalComma: 'unambiguous',
+  });
   try {
     const x = english.sample(2).segments();
     assert.equal(x[6], 0.75);
-    assert.equal(x[1], Math.atan2(1, 5) - 1, "a.y − e.y at v = −1");
+    assert.equal(x[1], Math.atan2(1, 5) - 1, 'a.y − e.y at v = −1');
   } finally {
     english.free();
   }
-  assert.throws(() => AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: [0, 1], decimalComma: 'sometimes' }), (e) => e.code === 'invalid-argument');
+  assert.throws(
+    () =>
+      AnalyticSurface.fromFormulas({ a: ['u', '0', '0'], e: ['0', '1', 'u'], u: [0, 1], decimalComma: 'sometimes' }),
+    (e) => e.code === 'invalid-argument',
+  );
   try {
     AnalyticSurface.fromFormulas({ a: ['atan2(1,5)', '0', '0'], e: ['0', '1', 'u'], u: [0, 1], decimalComma: true });
     assert.fail('accepted');
   } catch (e) {
     assert.equal(e.details.reason, 'ambiguous-comma');
     assert.equal(e.details.column, 8);
-    assert.equal(describeError(e, translator('de'), 'x-Komponente von a(u)'), 'x-Komponente von a(u): „1,5“ kann zwei Argumente oder ein Dezimalkomma sein: Schreiben Sie 1.5 für die Zahl oder „1, 5“ (mit Leerzeichen nach dem Komma) für zwei Argumente (Spalte 8).');
+    assert.equal(
+      describeError(e, translator('de'), 'x-Komponente von a(u)'),
+      'x-Komponente von a(u): „1,5“ kann zwei Argumente oder ein Dezimalkomma sein: Schreiben Sie 1.5 für die Zahl oder „1, 5“ (mit Leerzeichen nach dem Komma) für zwei Argumente (Spalte 8).',
+    );
   }
 });
 

@@ -33,7 +33,9 @@ test('each preset names a scene, its keys and valid values, and texts in every l
     }
     for (const lang of LANGUAGE_CODES) {
       const { has } = translator(lang);
-      for (const key of [preset.label, preset.caption, preset.note, preset.beyond, `paper.data.${preset.data}`].filter(Boolean)) {
+      for (const key of [preset.label, preset.caption, preset.note, preset.beyond, `paper.data.${preset.data}`].filter(
+        Boolean,
+      )) {
         assert.ok(has(/** @type {string} */ (key)), `${lang}: ${key}`);
       }
     }
@@ -64,10 +66,13 @@ test('#paper=… opens the figure; a link written from it restores it; link valu
   assert.equal(other.paper, null);
   const unknown = readState('#paper=fig99', SCENES);
   assert.equal(unknown.paper, null);
-  assert.deepEqual(unknown.notes.map((n) => n.note), ['note.unknownFigure']);
+  assert.deepEqual(
+    unknown.notes.map((n) => n.note),
+    ['note.unknownFigure'],
+  );
 });
 
-test('a parameter that does nothing at the figure\'s settings does not count as a change', () => {
+test("a parameter that does nothing at the figure's settings does not count as a change", () => {
   const fig12 = /** @type {import('../../www/paper.js').PaperPreset} */ (findPreset('fig12'));
   const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === 'congruence'));
   // steps is disabled for the diagonal scheme
@@ -76,5 +81,7 @@ test('a parameter that does nothing at the figure\'s settings does not count as 
 });
 
 test('the README section "ruledlab and the paper" is generated from the presets and current', () => {
-  execFileSync(process.execPath, [new URL('../../scripts/paper-table.mjs', import.meta.url).pathname, '--check'], { stdio: 'pipe' });
+  execFileSync(process.execPath, [new URL('../../scripts/paper-table.mjs', import.meta.url).pathname, '--check'], {
+    stdio: 'pipe',
+  });
 });

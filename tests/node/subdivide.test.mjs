@@ -10,7 +10,12 @@ const quartic = (n = 12) => sampled('quartic', n);
 test('interpolatory schemes: 2N − 1 rulings per step, old rulings bit for bit at even indices', () => {
   const s = quartic();
   const old = s.segments();
-  for (const options of [{ scheme: 'four-point' }, { scheme: 'four-point', w: 1 / 13, steps: 2 }, { scheme: 'variational' }, { scheme: 'variational', n: 5, variant: 'averaged' }]) {
+  for (const options of [
+    { scheme: 'four-point' },
+    { scheme: 'four-point', w: 1 / 13, steps: 2 },
+    { scheme: 'variational' },
+    { scheme: 'variational', n: 5, variant: 'averaged' },
+  ]) {
     const r = s.subdivide(options);
     const steps = options.steps ?? 1;
     assert.equal(r.length, (12 - 1) * 2 ** steps + 1, JSON.stringify(options));
@@ -34,7 +39,9 @@ test('literal variational equals the midpoint rule', () => {
   const s = quartic();
   const a = s.subdivide({ scheme: 'variational', variant: 'literal' }).segments();
   const b = s.subdivide({ scheme: 'bspline', degree: 1 }).segments();
-  a.forEach((x, i) => assert.ok(Math.abs(x - b[i]) < 1e-12));
+  a.forEach((x, i) => {
+    assert.ok(Math.abs(x - b[i]) < 1e-12);
+  });
 });
 
 test('recut gives segments of one length centred on the striction points', () => {
@@ -43,9 +50,14 @@ test('recut gives segments of one length centred on the striction points', () =>
   const seg = r.segments();
   const m = h.invariants().striction;
   for (let i = 1; i < 19; i++) {
-    const len = Math.hypot(seg[6 * i + 3] - seg[6 * i], seg[6 * i + 4] - seg[6 * i + 1], seg[6 * i + 5] - seg[6 * i + 2]);
+    const len = Math.hypot(
+      seg[6 * i + 3] - seg[6 * i],
+      seg[6 * i + 4] - seg[6 * i + 1],
+      seg[6 * i + 5] - seg[6 * i + 2],
+    );
     assert.ok(Math.abs(len - 0.5) < 1e-12);
-    for (let k = 0; k < 3; k++) assert.ok(Math.abs((seg[6 * i + k] + seg[6 * i + 3 + k]) / 2 - m[3 * (i - 1) + k]) < 1e-12);
+    for (let k = 0; k < 3; k++)
+      assert.ok(Math.abs((seg[6 * i + k] + seg[6 * i + 3 + k]) / 2 - m[3 * (i - 1) + k]) < 1e-12);
   }
   assert.throws(() => h.recut(-1), /RuledSurface.recut: length: must be a positive finite number, got -1/);
 });
@@ -55,8 +67,14 @@ test('subdividePolygon: Chaikin and four-point on a polygon', () => {
   assert.deepEqual([...subdividePolygon(p, { scheme: 'chaikin' })], [1, 0, 0, 3, 0, 0, 4, 1, 0, 4, 3, 0]);
   const q = subdividePolygon(p, { scheme: 'four-point', closed: true });
   assert.equal(q.length, 18);
-  assert.throws(() => subdividePolygon(new Float64Array([0, 0, NaN, 1, 1, 1]), { scheme: 'chaikin' }), /coordinate 2 \(point 0, z\) is NaN/);
-  assert.throws(() => subdividePolygon(new Float64Array(7), { scheme: 'chaikin' }), /point coordinates: length 7 is not a multiple of 3/);
+  assert.throws(
+    () => subdividePolygon(new Float64Array([0, 0, NaN, 1, 1, 1]), { scheme: 'chaikin' }),
+    /coordinate 2 \(point 0, z\) is NaN/,
+  );
+  assert.throws(
+    () => subdividePolygon(new Float64Array(7), { scheme: 'chaikin' }),
+    /point coordinates: length 7 is not a multiple of 3/,
+  );
   assert.throws(() => subdividePolygon(p, { scheme: 'variational' }), /refines ruled strips, not polygons/);
 });
 
@@ -65,8 +83,14 @@ test('bad options throw clear Errors and the surface stays usable', () => {
   const cases = [
     [{}, /options.scheme is required/],
     [undefined, /options.scheme is required/],
-    [{ scheme: 'loop' }, /options.scheme: unknown value "loop", expected one of "chaikin", "bspline", "bezier", "four-point", "variational"/],
-    [{ scheme: 4 }, /options.scheme: expected one of "chaikin", "bspline", "bezier", "four-point", "variational", got the number 4/],
+    [
+      { scheme: 'loop' },
+      /options.scheme: unknown value "loop", expected one of "chaikin", "bspline", "bezier", "four-point", "variational"/,
+    ],
+    [
+      { scheme: 4 },
+      /options.scheme: expected one of "chaikin", "bspline", "bezier", "four-point", "variational", got the number 4/,
+    ],
     [{ scheme: 'chaikin', w: 0.1 }, /options.w applies to the "four-point" scheme only, not to "chaikin"/],
     [{ scheme: 'four-point', w: 0.5 }, /w: must be a number in \[−1\/4, 1\/4\]/],
     [{ scheme: 'four-point', w: NaN }, /options.w must be a finite number, got NaN/],
@@ -74,7 +98,10 @@ test('bad options throw clear Errors and the surface stays usable', () => {
     [{ scheme: 'four-point', steps: 1.5 }, /got 1.5/],
     [{ scheme: 'four-point', steps: 22 }, /rulings after subdivision: .* exceeds the limit of 4194304/],
     [{ scheme: 'variational', n: 2 }, /options.n must be an integer from 3 to 1000, got 2/],
-    [{ scheme: 'variational', variant: 'fancy' }, /options.variant: unknown value "fancy", expected one of "coupled", "literal", "averaged"/],
+    [
+      { scheme: 'variational', variant: 'fancy' },
+      /options.variant: unknown value "fancy", expected one of "coupled", "literal", "averaged"/,
+    ],
     [{ scheme: 'variational', closed: true }, /refines open polygons and strips only/],
     [{ scheme: 'bezier', closed: true }, /open polygons and strips only/],
     [{ scheme: 'bspline', degree: 9 }, /options.degree must be an integer from 1 to 7, got 9/],
@@ -82,7 +109,11 @@ test('bad options throw clear Errors and the surface stays usable', () => {
     [{ scheme: 'four-point', closed: 'yes' }, /options.closed: expected true or false, got the string "yes"/],
   ];
   for (const [options, message] of cases) {
-    assert.throws(() => s.subdivide(options), (e) => e instanceof Error && message.test(e.message), String(message));
+    assert.throws(
+      () => s.subdivide(options),
+      (e) => e instanceof Error && message.test(e.message),
+      String(message),
+    );
   }
   assert.equal(s.subdivide({ scheme: 'four-point' }).length, 11);
 });
@@ -102,14 +133,22 @@ test('space "lines": the result does not depend on where the endpoints sit', () 
   const a = s.subdivide({ scheme: 'four-point', space: 'lines', length: 1, steps: 2 }).segments();
   const b = moved.subdivide({ scheme: 'four-point', space: 'lines', length: 1, steps: 2 }).segments();
   assert.equal(a.length, 6 * 33);
-  a.forEach((x, i) => assert.ok(Math.abs(x - b[i]) < 1e-12, `${i}: ${x} vs ${b[i]}`));
+  a.forEach((x, i) => {
+    assert.ok(Math.abs(x - b[i]) < 1e-12, `${i}: ${x} vs ${b[i]}`);
+  });
   // while the endpoint scheme does move
   const c = s.subdivide({ scheme: 'four-point', steps: 2 }).segments();
   const d = moved.subdivide({ scheme: 'four-point', steps: 2 }).segments();
   assert.ok(c.some((x, i) => Math.abs(x - d[i]) > 1e-3));
-  assert.throws(() => s.subdivide({ scheme: 'variational', space: 'lines' }), /line space supports "chaikin", "bspline" and "four-point"/);
+  assert.throws(
+    () => s.subdivide({ scheme: 'variational', space: 'lines' }),
+    /line space supports "chaikin", "bspline" and "four-point"/,
+  );
   assert.throws(() => s.subdivide({ scheme: 'four-point', length: 2 }), /options.length applies to space "lines" only/);
-  assert.throws(() => s.subdivide({ scheme: 'four-point', space: 'plane' }), /options.space: unknown value "plane", expected "points" or "lines"/);
+  assert.throws(
+    () => s.subdivide({ scheme: 'four-point', space: 'plane' }),
+    /options.space: unknown value "plane", expected "points" or "lines"/,
+  );
 });
 
 test('congruences: butterfly in line space', () => {
@@ -117,6 +156,14 @@ test('congruences: butterfly in line space', () => {
   const r = c.subdivide({ scheme: 'butterfly', space: 'lines', length: 0.5 });
   assert.deepEqual([r.rows, r.cols], [9, 9]);
   const seg = r.segments();
-  for (let k = 0; k < 81; k++) assert.ok(Math.abs(Math.hypot(seg[6 * k + 3] - seg[6 * k], seg[6 * k + 4] - seg[6 * k + 1], seg[6 * k + 5] - seg[6 * k + 2]) - 0.5) < 1e-12);
-  assert.throws(() => c.subdivide({ scheme: 'variational', space: 'lines' }), /options.space applies to the "butterfly" scheme only/);
+  for (let k = 0; k < 81; k++)
+    assert.ok(
+      Math.abs(
+        Math.hypot(seg[6 * k + 3] - seg[6 * k], seg[6 * k + 4] - seg[6 * k + 1], seg[6 * k + 5] - seg[6 * k + 2]) - 0.5,
+      ) < 1e-12,
+    );
+  assert.throws(
+    () => c.subdivide({ scheme: 'variational', space: 'lines' }),
+    /options.space applies to the "butterfly" scheme only/,
+  );
 });

@@ -47,7 +47,12 @@ test('G-code round trip through an independent JS inverse of the A–C kinematic
   const [tips, axes] = [path.tips(), path.axes()];
   const rad = Math.PI / 180;
   moves.forEach((line, i) => {
-    const v = Object.fromEntries(line.split(' ').slice(1).map((w) => [w[0], Number(w.slice(1))]));
+    const v = Object.fromEntries(
+      line
+        .split(' ')
+        .slice(1)
+        .map((w) => [w[0], Number(w.slice(1))]),
+    );
     assert.equal(v.F, 900);
     const [A, C] = [v.A * rad, v.C * rad];
     // R = Rx(A) Rz(C); invert: Rz(−C) Rx(−A)
@@ -69,9 +74,22 @@ test('bad input throws clear Errors', () => {
     [() => ToolPath.fromSegments(seg, { radius: -2, length: 1 }), /got -2/],
     [() => ToolPath.fromSegments(seg, { radius: 0.1 }), /tool.length \(the tool length\) is required/],
     [() => ToolPath.fromSegments(seg), /tool is required/],
-    [() => ToolPath.fromSegments(seg, { radius: 0.1, length: 1, end: 'bull' }), /tool.end: unknown value "bull", expected "ball" or "flat"/],
-    [() => ToolPath.fromSegments(new Float64Array([0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1]), { radius: 0.1, length: 1 }), /tool axis 0 has zero length/],
-    [() => ToolPath.fromSegments(seg.map((x, i) => (i === 4 ? Infinity : x)), { radius: 0.1, length: 1 }), /is inf/],
+    [
+      () => ToolPath.fromSegments(seg, { radius: 0.1, length: 1, end: 'bull' }),
+      /tool.end: unknown value "bull", expected "ball" or "flat"/,
+    ],
+    [
+      () => ToolPath.fromSegments(new Float64Array([0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1]), { radius: 0.1, length: 1 }),
+      /tool axis 0 has zero length/,
+    ],
+    [
+      () =>
+        ToolPath.fromSegments(
+          seg.map((x, i) => (i === 4 ? Infinity : x)),
+          { radius: 0.1, length: 1 },
+        ),
+      /is inf/,
+    ],
     [() => ToolPath.example(1), /count must be an integer from 2/],
     [() => ToolPath.example().refine({ scheme: 'bezier', closed: true }), /must be false|open/],
     [() => ToolPath.example().export('step'), /format must be "json", "csv" or "gcode"/],

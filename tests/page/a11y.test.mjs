@@ -17,7 +17,8 @@ const DEFICIENCIES = [null, 'deuteranopia', 'protanopia', 'tritanopia'];
 /** Turns on every checkbox of the panel (every legend entry visible). */
 const allOn = (page) =>
   page.evaluate(() => {
-    for (const box of document.querySelectorAll('.rl-controls input[type=checkbox]')) if (!box.checked && !box.disabled) box.click();
+    for (const box of document.querySelectorAll('.rl-controls input[type=checkbox]'))
+      if (!box.checked && !box.disabled) box.click();
   });
 
 test('every pair of legend colours shown together stays ≥ 15 ΔE00 apart under each colour-vision deficiency', async () => {
@@ -30,7 +31,12 @@ test('every pair of legend colours shown together stays ≥ 15 ΔE00 apart under
     await showScene(page, `#scene=${id}`, id);
     await allOn(page);
     await ready(page);
-    const legend = await page.evaluate(() => [...document.querySelectorAll('.rl-legend li')].map((li) => ({ name: li.textContent, color: li.querySelector('svg').dataset.color })));
+    const legend = await page.evaluate(() =>
+      [...document.querySelectorAll('.rl-legend li')].map((li) => ({
+        name: li.textContent,
+        color: li.querySelector('svg').dataset.color,
+      })),
+    );
     let worst = Infinity;
     for (let i = 0; i < legend.length; i++) {
       for (let j = i + 1; j < legend.length; j++) {
@@ -38,7 +44,10 @@ test('every pair of legend colours shown together stays ≥ 15 ΔE00 apart under
         for (const d of DEFICIENCIES) {
           const e = difference(parseColour(a.color), parseColour(b.color), d);
           worst = Math.min(worst, e);
-          assert.ok(e >= 15, `${id}: "${a.name}" and "${b.name}" are only ${e.toFixed(1)} apart under ${d ?? 'normal vision'}`);
+          assert.ok(
+            e >= 15,
+            `${id}: "${a.name}" and "${b.name}" are only ${e.toFixed(1)} apart under ${d ?? 'normal vision'}`,
+          );
         }
       }
     }
@@ -54,7 +63,9 @@ test('axe-core finds no WCAG 2.1 A/AA violation on any scene, in either language
   await first.page.close();
   const run = async (page, what) => {
     await page.evaluate(AXE);
-    const result = await page.evaluate(() => window.axe.run(document, { runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'] } }));
+    const result = await page.evaluate(() =>
+      window.axe.run(document, { runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'] } }),
+    );
     const violations = result.violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
     assert.deepEqual(violations, [], `${what}`);
   };
@@ -68,7 +79,11 @@ test('axe-core finds no WCAG 2.1 A/AA violation on any scene, in either language
     }
     await page.close();
   }
-  for (const path of ['examples/web-component.html', 'examples/iframe.html', 'index.html#embed&controls&text&scene=strip']) {
+  for (const path of [
+    'examples/web-component.html',
+    'examples/iframe.html',
+    'index.html#embed&controls&text&scene=strip',
+  ]) {
     const { page } = await session.open(path, { wait: false });
     await page.waitForTimeout(2500);
     await run(page, path);
@@ -115,7 +130,11 @@ test('every scene describes itself to screen readers; readouts are announced onc
   // announcements: count changes of the live region while a parameter plays for 2 s
   await page.evaluate(() => {
     window.__announced = 0;
-    new MutationObserver(() => window.__announced++).observe(document.querySelector('.rl-stage [aria-live]'), { childList: true, characterData: true, subtree: true });
+    new MutationObserver(() => window.__announced++).observe(document.querySelector('.rl-stage [aria-live]'), {
+      childList: true,
+      characterData: true,
+      subtree: true,
+    });
   });
   await page.locator('.rl-row[data-key="n"] .rl-play').click();
   await page.waitForTimeout(2000);
@@ -138,7 +157,10 @@ test('every scene describes itself to screen readers; readouts are announced onc
   });
   await page.waitForTimeout(1500);
   const count = await page.evaluate(() => window.__announced);
-  assert.ok(count >= 2 && count - 1 <= 2 + Math.floor(spent / 1000), `${count - 1} announcements for ten quick moves in ${spent.toFixed(0)} ms`);
+  assert.ok(
+    count >= 2 && count - 1 <= 2 + Math.floor(spent / 1000),
+    `${count - 1} announcements for ten quick moves in ${spent.toFixed(0)} ms`,
+  );
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -24,8 +24,13 @@ export async function launch(options = {}) {
     viewport: { width: 1200, height: 800 },
     ...options,
     args: [
-      '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-      '--disable-background-networking', '--disable-component-update', '--disable-sync',
+      '--no-sandbox',
+      '--disable-gpu',
+      '--disable-quic',
+      '--no-first-run',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
     ],
   });
 }
@@ -56,10 +61,24 @@ export function watch(page) {
 export async function shoot(page, name) {
   mkdirSync(ARTIFACTS, { recursive: true });
   writeFileSync(join(ARTIFACTS, `${name}.png`), await page.screenshot());
-  await page.evaluate(() => document.querySelectorAll('.rl-view > :not(canvas)').forEach((e) => e.classList.add('rl-test-hidden')));
-  await page.evaluate(() => document.querySelectorAll('.rl-test-hidden').forEach((e) => (/** @type {HTMLElement} */ (e).style.visibility = 'hidden')));
+  await page.evaluate(() =>
+    document.querySelectorAll('.rl-view > :not(canvas)').forEach((e) => {
+      e.classList.add('rl-test-hidden');
+    }),
+  );
+  await page.evaluate(() => {
+    for (const e of document.querySelectorAll('.rl-test-hidden')) {
+      const box = /** @type {HTMLElement} */ (e);
+      box.style.visibility = 'hidden';
+    }
+  });
   const png = await page.locator('.rl-view canvas').first().screenshot();
-  await page.evaluate(() => document.querySelectorAll('.rl-test-hidden').forEach((e) => (/** @type {HTMLElement} */ (e).style.visibility = '', e.classList.remove('rl-test-hidden'))));
+  await page.evaluate(() => {
+    for (const e of document.querySelectorAll('.rl-test-hidden')) {
+      /** @type {HTMLElement} */ (e).style.visibility = '';
+      e.classList.remove('rl-test-hidden');
+    }
+  });
   return decodePng(png);
 }
 
@@ -68,7 +87,11 @@ export async function shoot(page, name) {
  * @param {Page} page
  */
 export async function ready(page, timeout = 30000) {
-  await page.waitForFunction(() => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1', null, { timeout });
+  await page.waitForFunction(
+    () => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1',
+    null,
+    { timeout },
+  );
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 }
 
@@ -102,12 +125,17 @@ export async function setControl(page, key, value) {
 /** @param {Page} page */
 export function animationFrames(page, ms = 500) {
   return page.evaluate(
-    (span) => new Promise((resolve) => {
-      let n = 0;
-      const t0 = performance.now();
-      const tick = () => (performance.now() - t0 < span ? (n++, requestAnimationFrame(tick)) : resolve(n));
-      requestAnimationFrame(tick);
-    }),
+    (span) =>
+      new Promise((resolve) => {
+        let n = 0;
+        const t0 = performance.now();
+        const tick = () => {
+          if (performance.now() - t0 >= span) return resolve(n);
+          n++;
+          requestAnimationFrame(tick);
+        };
+        requestAnimationFrame(tick);
+      }),
     ms,
   );
 }
@@ -121,10 +149,14 @@ export function animationFrames(page, ms = 500) {
  */
 export async function showScene(page, hash, id) {
   await page.evaluate((h) => (location.hash = h), hash);
-  await page.waitForFunction((want) => {
-    const stage = /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'));
-    return stage?.dataset.scene === want && stage.dataset.ready === '1';
-  }, id, { timeout: 60000 });
+  await page.waitForFunction(
+    (want) => {
+      const stage = /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'));
+      return stage?.dataset.scene === want && stage.dataset.ready === '1';
+    },
+    id,
+    { timeout: 60000 },
+  );
   await ready(page, 60000);
   await framesAfter(page, 0);
 }
@@ -152,7 +184,13 @@ export function pageSession({ headers = {} } = {}) {
    * @type {{url: string, browser: BrowserContext | null,
    *   open: (path?: string, options?: {wait?: boolean}) => Promise<{page: Page, problems: string[], requests: string[], frames: number}>}}
    */
-  const session = { url: '', browser: null, open: async () => { throw new Error('the session has not started'); } };
+  const session = {
+    url: '',
+    browser: null,
+    open: async () => {
+      throw new Error('the session has not started');
+    },
+  };
   /** @type {import('node:http').Server | undefined} */
   let server;
   before(async () => {

@@ -21,30 +21,46 @@ export async function everyElementCold(browser, write, ours = () => true) {
   const BATCH = 13;
   for (let start = 0; start < ELEMENTS.length; start += BATCH) {
     const batch = ELEMENTS.slice(start, start + BATCH);
-    const html = batch.map((attrs, k) => `<ruled-view id="v${k}" ${attrs} style="display: inline-block; width: 300px; height: 230px"></ruled-view>`).join('\n');
+    const html = batch
+      .map(
+        (attrs, k) =>
+          `<ruled-view id="v${k}" ${attrs} style="display: inline-block; width: 300px; height: 230px"></ruled-view>`,
+      )
+      .join('\n');
     const page = await browser.newPage({ viewport: { width: 1300, height: 1200 } });
     const problems = watch(page);
     /** @type {string[]} */
     const requests = [];
     page.on('request', (r) => requests.push(r.url()));
     await page.goto(write(html));
-    await page.waitForFunction(
-      (n) => {
-        const views = [...document.querySelectorAll('ruled-view')];
-        return views.length === n && views.every((v) => v.dataset.ready === '1' && Number(v.dataset.frames) > 0);
-      },
-      batch.length,
-      { timeout: 90000 },
-    ).catch(async () => {
-      const states = await page.evaluate(() => [...document.querySelectorAll('ruled-view')].map((v) => `${v.getAttribute('paper') ?? v.getAttribute('scene')}: ready=${v.dataset.ready} ${v.shadowRoot?.querySelector('.rl-error:not([hidden])')?.textContent ?? ''}`));
-      assert.fail(`not every element drew: ${states.join('; ')}; ${problems.join('; ')}`);
-    });
+    await page
+      .waitForFunction(
+        (n) => {
+          const views = [...document.querySelectorAll('ruled-view')];
+          return views.length === n && views.every((v) => v.dataset.ready === '1' && Number(v.dataset.frames) > 0);
+        },
+        batch.length,
+        { timeout: 90000 },
+      )
+      .catch(async () => {
+        const states = await page.evaluate(() =>
+          [...document.querySelectorAll('ruled-view')].map(
+            (v) =>
+              `${v.getAttribute('paper') ?? v.getAttribute('scene')}: ready=${v.dataset.ready} ${v.shadowRoot?.querySelector('.rl-error:not([hidden])')?.textContent ?? ''}`,
+          ),
+        );
+        assert.fail(`not every element drew: ${states.join('; ')}; ${problems.join('; ')}`);
+      });
     for (let k = 0; k < batch.length; k++) {
       const image = decodePng(await page.locator(`#v${k}`).screenshot());
       assert.ok(countDifferent(image, BACKGROUND) > 0.01 * image.width * image.height, `${batch[k]} drew nothing`);
     }
     assert.deepEqual(problems, [], batch.join(' '));
-    assert.deepEqual(requests.filter((u) => !ours(u)), [], 'requests outside ruledlab’s files');
+    assert.deepEqual(
+      requests.filter((u) => !ours(u)),
+      [],
+      'requests outside ruledlab’s files',
+    );
     await page.close();
   }
 }

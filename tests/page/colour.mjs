@@ -38,7 +38,9 @@ const clamp = (x) => Math.min(1, Math.max(0, x));
 export function simulate(rgb, deficiency) {
   if (!deficiency) return rgb;
   const lin = rgb.map(toLinear);
-  const [r, g, b] = MACHADO[deficiency].map((row) => toSrgb(clamp(row[0] * lin[0] + row[1] * lin[1] + row[2] * lin[2])));
+  const [r, g, b] = MACHADO[deficiency].map((row) =>
+    toSrgb(clamp(row[0] * lin[0] + row[1] * lin[1] + row[2] * lin[2])),
+  );
   return [r, g, b];
 }
 
@@ -49,33 +51,48 @@ export function lab(rgb) {
   const y = 0.2126729 * r + 0.7151522 * g + 0.072175 * b;
   const z = (0.0193339 * r + 0.119192 * g + 0.9503041 * b) / 1.08883;
   /** @param {number} t */
-  const f = (t) => (t > 216 / 24389 ? Math.cbrt(t) : (24389 / 27 * t + 16) / 116);
+  const f = (t) => (t > 216 / 24389 ? Math.cbrt(t) : ((24389 / 27) * t + 16) / 116);
   return [116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))];
 }
 
 /** CIEDE2000 colour difference of two CIELAB colours. @param {Rgb} lab1 @param {Rgb} lab2 */
 export function deltaE2000([L1, a1, b1], [L2, a2, b2]) {
   const rad = Math.PI / 180;
-  const C1 = Math.hypot(a1, b1), C2 = Math.hypot(a2, b2);
+  const C1 = Math.hypot(a1, b1),
+    C2 = Math.hypot(a2, b2);
   const Cm = (C1 + C2) / 2;
   const G = 0.5 * (1 - Math.sqrt(Cm ** 7 / (Cm ** 7 + 25 ** 7)));
-  const a1p = (1 + G) * a1, a2p = (1 + G) * a2;
-  const C1p = Math.hypot(a1p, b1), C2p = Math.hypot(a2p, b2);
+  const a1p = (1 + G) * a1,
+    a2p = (1 + G) * a2;
+  const C1p = Math.hypot(a1p, b1),
+    C2p = Math.hypot(a2p, b2);
   /** @param {number} a @param {number} b */
   const h = (a, b) => (a === 0 && b === 0 ? 0 : (Math.atan2(b, a) / rad + 360) % 360);
-  const h1p = h(a1p, b1), h2p = h(a2p, b2);
-  const dLp = L2 - L1, dCp = C2p - C1p;
+  const h1p = h(a1p, b1),
+    h2p = h(a2p, b2);
+  const dLp = L2 - L1,
+    dCp = C2p - C1p;
   let dhp = 0;
-  if (C1p * C2p !== 0) dhp = Math.abs(h2p - h1p) <= 180 ? h2p - h1p : h2p - h1p > 180 ? h2p - h1p - 360 : h2p - h1p + 360;
+  if (C1p * C2p !== 0)
+    dhp = Math.abs(h2p - h1p) <= 180 ? h2p - h1p : h2p - h1p > 180 ? h2p - h1p - 360 : h2p - h1p + 360;
   const dHp = 2 * Math.sqrt(C1p * C2p) * Math.sin((dhp / 2) * rad);
-  const Lmp = (L1 + L2) / 2, Cmp = (C1p + C2p) / 2;
+  const Lmp = (L1 + L2) / 2,
+    Cmp = (C1p + C2p) / 2;
   let hmp = h1p + h2p;
-  if (C1p * C2p !== 0) hmp = Math.abs(h1p - h2p) <= 180 ? (h1p + h2p) / 2 : h1p + h2p < 360 ? (h1p + h2p + 360) / 2 : (h1p + h2p - 360) / 2;
-  const T = 1 - 0.17 * Math.cos((hmp - 30) * rad) + 0.24 * Math.cos(2 * hmp * rad) + 0.32 * Math.cos((3 * hmp + 6) * rad) - 0.2 * Math.cos((4 * hmp - 63) * rad);
+  if (C1p * C2p !== 0)
+    hmp =
+      Math.abs(h1p - h2p) <= 180 ? (h1p + h2p) / 2 : h1p + h2p < 360 ? (h1p + h2p + 360) / 2 : (h1p + h2p - 360) / 2;
+  const T =
+    1 -
+    0.17 * Math.cos((hmp - 30) * rad) +
+    0.24 * Math.cos(2 * hmp * rad) +
+    0.32 * Math.cos((3 * hmp + 6) * rad) -
+    0.2 * Math.cos((4 * hmp - 63) * rad);
   const dTheta = 30 * Math.exp(-(((hmp - 275) / 25) ** 2));
   const Rc = 2 * Math.sqrt(Cmp ** 7 / (Cmp ** 7 + 25 ** 7));
   const Sl = 1 + (0.015 * (Lmp - 50) ** 2) / Math.sqrt(20 + (Lmp - 50) ** 2);
-  const Sc = 1 + 0.045 * Cmp, Sh = 1 + 0.015 * Cmp * T;
+  const Sc = 1 + 0.045 * Cmp,
+    Sh = 1 + 0.015 * Cmp * T;
   const Rt = -Math.sin(2 * dTheta * rad) * Rc;
   return Math.sqrt((dLp / Sl) ** 2 + (dCp / Sc) ** 2 + (dHp / Sh) ** 2 + Rt * (dCp / Sc) * (dHp / Sh));
 }

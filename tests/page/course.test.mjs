@@ -28,7 +28,11 @@ const site = otherOrigin();
 const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;');
 
 /** The one-file build with its state block showing `hash`, as "Download this view" writes it. */
-const oneFileAt = (/** @type {string} */ hash) => ONEFILE.replace(/(<script type="application\/json" id="ruledlab-state">)[^<]*(<\/script>)/, `$1${JSON.stringify({ hash })}$2`);
+const oneFileAt = (/** @type {string} */ hash) =>
+  ONEFILE.replace(
+    /(<script type="application\/json" id="ruledlab-state">)[^<]*(<\/script>)/,
+    `$1${JSON.stringify({ hash })}$2`,
+  );
 
 /**
  * The variants: a name, the parent page's body (given ruledlab's origin), the parent's
@@ -37,11 +41,36 @@ const oneFileAt = (/** @type {string} */ hash) => ONEFILE.replace(/(<script type
  * @type {Array<{name: string, body: (a: string) => string, parent?: Record<string, string>, oneFile: boolean, hint?: string}>}
  */
 const VARIANTS = [
-  { name: 'sandbox allow-scripts, the page', oneFile: false, body: (a) => `<iframe sandbox="allow-scripts" src="${a}index.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560"></iframe>` },
-  { name: 'sandbox allow-scripts, the one-file build', oneFile: true, body: (a) => `<iframe sandbox="allow-scripts" src="${a}dist/ruledlab.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560"></iframe>` },
-  { name: 'sandbox allow-scripts allow-same-origin, the page', oneFile: false, body: (a) => `<iframe sandbox="allow-scripts allow-same-origin" src="${a}index.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560" allow="fullscreen"></iframe>` },
-  { name: 'srcdoc, sandbox allow-scripts', oneFile: true, body: () => `<iframe sandbox="allow-scripts" srcdoc="${attr(oneFileAt('embed&controls&paper=fig2'))}" title="ruledlab" width="900" height="560"></iframe>` },
-  { name: 'srcdoc, sandbox allow-scripts allow-same-origin', oneFile: true, body: () => `<iframe sandbox="allow-scripts allow-same-origin" srcdoc="${attr(oneFileAt('embed&controls&paper=fig2'))}" title="ruledlab" width="900" height="560"></iframe>` },
+  {
+    name: 'sandbox allow-scripts, the page',
+    oneFile: false,
+    body: (a) =>
+      `<iframe sandbox="allow-scripts" src="${a}index.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560"></iframe>`,
+  },
+  {
+    name: 'sandbox allow-scripts, the one-file build',
+    oneFile: true,
+    body: (a) =>
+      `<iframe sandbox="allow-scripts" src="${a}dist/ruledlab.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560"></iframe>`,
+  },
+  {
+    name: 'sandbox allow-scripts allow-same-origin, the page',
+    oneFile: false,
+    body: (a) =>
+      `<iframe sandbox="allow-scripts allow-same-origin" src="${a}index.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560" allow="fullscreen"></iframe>`,
+  },
+  {
+    name: 'srcdoc, sandbox allow-scripts',
+    oneFile: true,
+    body: () =>
+      `<iframe sandbox="allow-scripts" srcdoc="${attr(oneFileAt('embed&controls&paper=fig2'))}" title="ruledlab" width="900" height="560"></iframe>`,
+  },
+  {
+    name: 'srcdoc, sandbox allow-scripts allow-same-origin',
+    oneFile: true,
+    body: () =>
+      `<iframe sandbox="allow-scripts allow-same-origin" srcdoc="${attr(oneFileAt('embed&controls&paper=fig2'))}" title="ruledlab" width="900" height="560"></iframe>`,
+  },
   {
     name: 'about:blank written by its parent (H5P)',
     oneFile: true,
@@ -49,12 +78,21 @@ const VARIANTS = [
 <script type="application/json" id="content">${JSON.stringify(oneFileAt('embed&controls&paper=fig2')).replace(/</g, '\\u003c')}</script>
 <script>const d = document.getElementById('h5p').contentDocument; d.open(); d.write(JSON.parse(document.getElementById('content').textContent)); d.close();</script>`,
   },
-  { name: 'another site, no sandbox, LTI allow list (Moodle File resource, Canvas)', oneFile: true, body: (a) => `<iframe src="${a}dist/ruledlab.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560" allowfullscreen allow="geolocation *; microphone *; camera *; midi *; encrypted-media *; autoplay *; clipboard-write *; display-capture *"></iframe>` },
+  {
+    name: 'another site, no sandbox, LTI allow list (Moodle File resource, Canvas)',
+    oneFile: true,
+    body: (a) =>
+      `<iframe src="${a}dist/ruledlab.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560" allowfullscreen allow="geolocation *; microphone *; camera *; midi *; encrypted-media *; autoplay *; clipboard-write *; display-capture *"></iframe>`,
+  },
   {
     name: "the parent's own Content-Security-Policy (Canvas)",
     oneFile: false,
-    parent: { 'content-security-policy': "default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; frame-src 'self' blob: http://localhost:*" },
-    body: (a) => `<iframe src="${a}index.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560"></iframe>`,
+    parent: {
+      'content-security-policy':
+        "default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data:; frame-src 'self' blob: http://localhost:*",
+    },
+    body: (a) =>
+      `<iframe src="${a}index.html#embed&amp;controls&amp;paper=fig2" title="ruledlab" width="900" height="560"></iframe>`,
   },
 ];
 
@@ -73,7 +111,14 @@ for (const v of VARIANTS) {
     await page.waitForTimeout(400);
     const after = await page.locator('iframe').screenshot();
     assert.ok(countChanged(decodePng(before), decodePng(after)) > 500, 'a control did not change the picture');
-    const foreign = requests.filter((u) => !u.startsWith('data:') && !u.startsWith('blob:') && !u.startsWith('about:') && u.split('#')[0] !== url && (v.oneFile ? u.split('#')[0] !== `${session.url}dist/ruledlab.html` : !u.startsWith(session.url)));
+    const foreign = requests.filter(
+      (u) =>
+        !u.startsWith('data:') &&
+        !u.startsWith('blob:') &&
+        !u.startsWith('about:') &&
+        u.split('#')[0] !== url &&
+        (v.oneFile ? u.split('#')[0] !== `${session.url}dist/ruledlab.html` : !u.startsWith(session.url)),
+    );
     assert.deepEqual(foreign, [], 'requests outside ruledlab’s files');
     assert.deepEqual(problems, []);
     await page.close();
@@ -82,20 +127,34 @@ for (const v of VARIANTS) {
 
 test('in a course system: Canvas’s files domain policy (no blob: workers) — a large model refines on the main thread', async () => {
   // the one-file page served with Canvas's policy for user files: inline scripts and eval, no blob:
-  const policy = "default-src 'self'; script-src 'self' 'unsafe-eval' 'unsafe-inline'; frame-src 'self' blob:; img-src 'self' data: blob:; style-src 'self' 'unsafe-inline'";
-  const file = site.write('canvas-file.html', oneFileAt('embed&controls&scene=large&n=10000&steps=3'), { 'content-security-policy': policy });
-  const url = site.write('canvas-course.html', hostPage(`<iframe src="${file}" title="ruledlab" width="900" height="560"></iframe>`));
+  const policy =
+    "default-src 'self'; script-src 'self' 'unsafe-eval' 'unsafe-inline'; frame-src 'self' blob:; img-src 'self' data: blob:; style-src 'self' 'unsafe-inline'";
+  const file = site.write('canvas-file.html', oneFileAt('embed&controls&scene=large&n=10000&steps=3'), {
+    'content-security-policy': policy,
+  });
+  const url = site.write(
+    'canvas-course.html',
+    hostPage(`<iframe src="${file}" title="ruledlab" width="900" height="560"></iframe>`),
+  );
   const { page, problems } = await session.open(url, { wait: false });
   const frame = page.frameLocator('iframe');
   await frame.locator('.rl-stage[data-ready="1"]').waitFor({ timeout: 120000 });
   assert.match(await frame.locator('.rl-readout').innerText(), /79[\s,.]?993/);
   // the browser reports the refused worker itself; nothing else may go wrong
-  assert.deepEqual(problems.filter((p) => !/worker|blob:/i.test(p)), []);
+  assert.deepEqual(
+    problems.filter((p) => !/worker|blob:/i.test(p)),
+    [],
+  );
   await page.close();
 });
 
 test('in a course system: sandbox="" (no scripts) shows a sentence, not a blank frame', async () => {
-  const url = site.write('no-scripts.html', hostPage(`<iframe sandbox="" src="${session.url}dist/ruledlab.html" title="ruledlab" width="900" height="300"></iframe><iframe sandbox="" src="${session.url}index.html" title="ruledlab page" width="900" height="300"></iframe>`));
+  const url = site.write(
+    'no-scripts.html',
+    hostPage(
+      `<iframe sandbox="" src="${session.url}dist/ruledlab.html" title="ruledlab" width="900" height="300"></iframe><iframe sandbox="" src="${session.url}index.html" title="ruledlab page" width="900" height="300"></iframe>`,
+    ),
+  );
   const { page, problems } = await session.open(url, { wait: false });
   for (const k of [0, 1]) {
     const text = await page.frameLocator('iframe').nth(k).locator('body').innerText();
@@ -103,12 +162,20 @@ test('in a course system: sandbox="" (no scripts) shows a sentence, not a blank 
     assert.doesNotMatch(text, /Loading/, `frame ${k}: a "Loading" that never ends`);
   }
   // the browser says it blocked the scripts; nothing else
-  assert.deepEqual(problems.filter((p) => !/Blocked script execution in .* sandboxed/.test(p)), []);
+  assert.deepEqual(
+    problems.filter((p) => !/Blocked script execution in .* sandboxed/.test(p)),
+    [],
+  );
   await page.close();
 });
 
 test('in a sandboxed frame the page does without storage and history, and says so only where it matters', async () => {
-  const url = site.write('sandboxed-page.html', hostPage(`<iframe sandbox="allow-scripts" src="${session.url}index.html#scene=curves" title="ruledlab" width="1000" height="700"></iframe>`));
+  const url = site.write(
+    'sandboxed-page.html',
+    hostPage(
+      `<iframe sandbox="allow-scripts" src="${session.url}index.html#scene=curves" title="ruledlab" width="1000" height="700"></iframe>`,
+    ),
+  );
   const { page, problems } = await session.open(url, { wait: false });
   const frame = page.frameLocator('iframe');
   await frame.locator('.rl-stage[data-ready="1"]').waitFor({ timeout: 60000 });

@@ -18,7 +18,14 @@ async function grab(locator, name) {
 
 /** Waits until every <ruled-view> of the page has drawn its scene. */
 const allDrawn = (page) =>
-  page.waitForFunction(() => [...document.querySelectorAll('ruled-view')].every((v) => v.dataset.ready === '1' && Number(v.dataset.frames) > 0), null, { timeout: 20000 });
+  page.waitForFunction(
+    () =>
+      [...document.querySelectorAll('ruled-view')].every(
+        (v) => v.dataset.ready === '1' && Number(v.dataset.frames) > 0,
+      ),
+    null,
+    { timeout: 20000 },
+  );
 
 test('examples/plain-module.html computes with the package directly', async () => {
   const { page, problems } = await session.open('examples/plain-module.html', { wait: false });
@@ -32,14 +39,27 @@ test('examples/plain-module.html computes with the package directly', async () =
 test('<ruled-view> elements draw independently; `controls` shows the scene’s controls, which work', async () => {
   const { page, problems } = await session.open('examples/web-component.html', { wait: false });
   await allDrawn(page);
-  const [left, right] = [await grab(page.locator('#left'), 'component-left'), await grab(page.locator('#right'), 'component-right')];
+  const [left, right] = [
+    await grab(page.locator('#left'), 'component-left'),
+    await grab(page.locator('#right'), 'component-right'),
+  ];
   for (const image of [left, right]) assert.ok(countDifferent(image, BACKGROUND) > 0.02 * image.width * image.height);
   // the left one has its controls, the right one none
-  const sliders = (id) => page.locator(`#${id}`).evaluate((v) => [...v.shadowRoot.querySelectorAll('.rl-controls input')].filter((e) => e.checkVisibility()).length);
+  const sliders = (id) =>
+    page
+      .locator(`#${id}`)
+      .evaluate(
+        (v) => [...v.shadowRoot.querySelectorAll('.rl-controls input')].filter((e) => e.checkVisibility()).length,
+      );
   assert.ok((await sliders('left')) >= 3, 'the element with `controls` shows its sliders');
   assert.equal(await sliders('right'), 0);
   // a slider inside the element changes its picture and fires scene-change
-  const detail = page.evaluate(() => new Promise((resolve) => document.getElementById('left').addEventListener('scene-change', (e) => resolve(e.detail), { once: true })));
+  const detail = page.evaluate(
+    () =>
+      new Promise((resolve) =>
+        document.getElementById('left').addEventListener('scene-change', (e) => resolve(e.detail), { once: true }),
+      ),
+  );
   await page.locator('#left').evaluate((v) => {
     const t = v.shadowRoot.querySelector('.rl-controls [name="t"]');
     t.value = '0.8';
@@ -50,21 +70,39 @@ test('<ruled-view> elements draw independently; `controls` shows the scene’s c
   await page.waitForTimeout(200);
   assert.ok(countChanged(left, await grab(page.locator('#left'), 'component-left-moved')) > 1000);
   // an attribute change rebuilds that element only
-  const changed = page.evaluate(() => new Promise((resolve) => document.getElementById('right').addEventListener('scene-change', (e) => resolve(e.detail), { once: true })));
+  const changed = page.evaluate(
+    () =>
+      new Promise((resolve) =>
+        document.getElementById('right').addEventListener('scene-change', (e) => resolve(e.detail), { once: true }),
+      ),
+  );
   await page.evaluate(() => (document.getElementById('right').params = 'surface=quartic&t=0.5'));
   const got = await changed;
   assert.equal(got.scene, 'isometry');
   assert.equal(got.params.surface, 'quartic');
   assert.equal(got.params.t, 0.5);
   // data as a property shows those rulings
-  await page.evaluate(() => (document.getElementById('right').data = { segments: new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, -1, 0, 2]) }));
+  await page.evaluate(
+    () =>
+      (document.getElementById('right').data = {
+        segments: new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, -1, 0, 2]),
+      }),
+  );
   await page.waitForFunction(() => document.getElementById('right').view?.scene?.id === 'data');
   assert.equal(await page.locator('#right').getAttribute('scene'), 'data');
   // an unknown scene is shown inside the element and fires `error`, nothing is thrown
-  const error = page.evaluate(() => new Promise((resolve) => document.getElementById('right').addEventListener('error', (e) => resolve(e.detail), { once: true })));
+  const error = page.evaluate(
+    () =>
+      new Promise((resolve) =>
+        document.getElementById('right').addEventListener('error', (e) => resolve(e.detail), { once: true }),
+      ),
+  );
   await page.evaluate(() => (document.getElementById('right').scene = 'nope'));
   assert.match((await error).message, /There is no scene “nope”/);
-  assert.match(await page.locator('#right').evaluate((v) => v.shadowRoot.querySelector('.rl-error').textContent), /There is no scene “nope”/);
+  assert.match(
+    await page.locator('#right').evaluate((v) => v.shadowRoot.querySelector('.rl-error').textContent),
+    /There is no scene “nope”/,
+  );
   assert.deepEqual(problems, []);
   await page.close();
 });

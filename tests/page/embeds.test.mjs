@@ -12,32 +12,63 @@ import { everyElementCold, ELEMENTS } from './cold.mjs';
 
 const session = pageSession();
 const site = otherOrigin();
-const ours = (/** @type {string} */ u) => u.startsWith(session.url) || u.startsWith(site.url) || u.startsWith('data:') || u.startsWith('blob:');
+const ours = (/** @type {string} */ u) =>
+  u.startsWith(session.url) || u.startsWith(site.url) || u.startsWith('data:') || u.startsWith('blob:');
 
 test('every figure and scene in <ruled-view>, cold, from the one-file embed script on another site', async () => {
   let n = 0;
-  await everyElementCold(session.browser, (elements) => site.write(`embed-${++n}.html`, hostPage(elements, `<script defer src="${session.url}dist/ruledlab-embed.js"></script>`)), ours);
+  await everyElementCold(
+    session.browser,
+    (elements) =>
+      site.write(
+        `embed-${++n}.html`,
+        hostPage(elements, `<script defer src="${session.url}dist/ruledlab-embed.js"></script>`),
+      ),
+    ours,
+  );
 });
 
 test('every figure and scene in <ruled-view>, cold, from the module ruledlab/view on another site', async () => {
   let n = 0;
-  await everyElementCold(session.browser, (elements) => site.write(`module-${++n}.html`, hostPage(elements, `<script type="module" src="${session.url}www/view.js"></script>`)), ours);
+  await everyElementCold(
+    session.browser,
+    (elements) =>
+      site.write(
+        `module-${++n}.html`,
+        hostPage(elements, `<script type="module" src="${session.url}www/view.js"></script>`),
+      ),
+    ours,
+  );
 });
 
 test('every figure and scene in a sandboxed iframe (allow-scripts), one after another', async () => {
-  const url = site.write('walk.html', hostPage(`<iframe id="f" sandbox="allow-scripts" src="${session.url}index.html#embed&amp;controls&amp;paper=fig1" title="ruledlab" width="800" height="500"></iframe>`));
+  const url = site.write(
+    'walk.html',
+    hostPage(
+      `<iframe id="f" sandbox="allow-scripts" src="${session.url}index.html#embed&amp;controls&amp;paper=fig1" title="ruledlab" width="800" height="500"></iframe>`,
+    ),
+  );
   const { page, problems, requests } = await session.open(url, { wait: false });
   const frame = page.frameLocator('#f');
   for (const attrs of ELEMENTS) {
     const [, key, id] = /^(\w+)="([^"]+)"$/.exec(attrs) ?? [];
     const hash = `embed&controls&${key === 'paper' ? 'paper' : 'scene'}=${id}`;
-    await page.evaluate(([u, h]) => (/** @type {HTMLIFrameElement} */ (document.getElementById('f')).src = `${u}index.html#${h}`), [session.url, hash]);
+    await page.evaluate(
+      ([u, h]) => {
+        const frame = /** @type {HTMLIFrameElement} */ (document.getElementById('f'));
+        frame.src = `${u}index.html#${h}`;
+      },
+      [session.url, hash],
+    );
     await frame.locator(`.rl-stage[data-ready="1"][data-${key}="${id}"]`).waitFor({ timeout: 60000 });
   }
   await page.waitForTimeout(300);
   assert.ok(drawnShare(await page.locator('#f').screenshot()) > 0.01);
   assert.deepEqual(problems, []);
-  assert.deepEqual(requests.filter((u) => !ours(u)), []);
+  assert.deepEqual(
+    requests.filter((u) => !ours(u)),
+    [],
+  );
   await page.close();
 });
 
@@ -52,20 +83,42 @@ test('what fails shows inside the element, in its language, and fires `error`; n
     ),
   );
   const { page, problems } = await session.open(url, { wait: false });
-  await page.waitForFunction(() => window.errors.length >= 2 && document.getElementById('camera').dataset.ready === '1', null, { timeout: 30000 });
-  const shown = await page.evaluate(() => Object.fromEntries([...document.querySelectorAll('ruled-view')].map((v) => [v.id, [...v.shadowRoot.querySelectorAll('.rl-error:not([hidden]), .rl-note:not([hidden])')].map((e) => e.textContent).join(' ')])));
+  await page.waitForFunction(
+    () => window.errors.length >= 2 && document.getElementById('camera').dataset.ready === '1',
+    null,
+    { timeout: 30000 },
+  );
+  const shown = await page.evaluate(() =>
+    Object.fromEntries(
+      [...document.querySelectorAll('ruled-view')].map((v) => [
+        v.id,
+        [...v.shadowRoot.querySelectorAll('.rl-error:not([hidden]), .rl-note:not([hidden])')]
+          .map((e) => e.textContent)
+          .join(' '),
+      ]),
+    ),
+  );
   assert.match(shown.scene, /^Eine Szene „nope“ gibt es nicht/);
   assert.match(shown.paper, /^There is no figure or example of the paper called “fig99”/);
   assert.match(shown.camera, /Das Attribut camera ist nicht lesbar/);
   const errors = await page.evaluate(() => window.errors);
-  assert.deepEqual(errors.map(([id, , code]) => [id, code]).sort(), [['paper', 'invalid-argument'], ['scene', 'invalid-argument']]);
+  assert.deepEqual(errors.map(([id, , code]) => [id, code]).sort(), [
+    ['paper', 'invalid-argument'],
+    ['scene', 'invalid-argument'],
+  ]);
   assert.match(errors.find(([id]) => id === 'scene')[1], /^Eine Szene/);
   assert.deepEqual(problems, []);
   await page.close();
 });
 
 test('without WebGL2 the element says why, inside its box, in its language, and fires `error`', async () => {
-  const url = site.write('no-webgl.html', hostPage(`<ruled-view id="v" scene="curves" lang="de" style="display: block; height: 200px"></ruled-view>`, `<script>HTMLCanvasElement.prototype.getContext = function () { return null; }; window.errors = []; addEventListener('error', (e) => e.target?.tagName === 'RULED-VIEW' && errors.push(e.detail.message), true);</script><script defer src="${session.url}dist/ruledlab-embed.js"></script>`));
+  const url = site.write(
+    'no-webgl.html',
+    hostPage(
+      `<ruled-view id="v" scene="curves" lang="de" style="display: block; height: 200px"></ruled-view>`,
+      `<script>HTMLCanvasElement.prototype.getContext = function () { return null; }; window.errors = []; addEventListener('error', (e) => e.target?.tagName === 'RULED-VIEW' && errors.push(e.detail.message), true);</script><script defer src="${session.url}dist/ruledlab-embed.js"></script>`,
+    ),
+  );
   const { page, problems } = await session.open(url, { wait: false });
   await page.waitForFunction(() => window.errors.length === 1, null, { timeout: 30000 });
   const text = await page.locator('#v').evaluate((v) => v.shadowRoot.textContent);
@@ -76,11 +129,22 @@ test('without WebGL2 the element says why, inside its box, in its language, and 
 });
 
 test('the camera attribute sets the view; camera-change hands out the value that restores it', async () => {
-  const url = site.write('camera.html', hostPage(`<ruled-view id="v" scene="striction" camera="1.2,0.3,14,0,0,0.5" style="display: block; width: 600px; height: 400px"></ruled-view>`, `<script defer src="${session.url}dist/ruledlab-embed.js"></script>`));
+  const url = site.write(
+    'camera.html',
+    hostPage(
+      `<ruled-view id="v" scene="striction" camera="1.2,0.3,14,0,0,0.5" style="display: block; width: 600px; height: 400px"></ruled-view>`,
+      `<script defer src="${session.url}dist/ruledlab-embed.js"></script>`,
+    ),
+  );
   const { page, problems } = await session.open(url, { wait: false });
   await page.waitForFunction(() => document.getElementById('v').dataset.ready === '1');
   assert.equal(await page.locator('#v').evaluate((v) => v.camera), '1.2,0.3,14,0,0,0.5');
-  const changed = page.evaluate(() => new Promise((resolve) => document.getElementById('v').addEventListener('camera-change', (e) => resolve(e.detail), { once: true })));
+  const changed = page.evaluate(
+    () =>
+      new Promise((resolve) =>
+        document.getElementById('v').addEventListener('camera-change', (e) => resolve(e.detail), { once: true }),
+      ),
+  );
   const box = await page.locator('#v').boundingBox();
   await page.mouse.move(box.x + 300, box.y + 200);
   await page.mouse.down();

@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
-import { pageSession, ready } from './browser.mjs';
+import { pageSession } from './browser.mjs';
 import { decodePng } from './png.mjs';
 
 const session = pageSession();
@@ -13,18 +13,21 @@ const EXPECTED = new URL('./expected/curves-fig8.tikz', import.meta.url);
 /** A page with one <ruled-view> of fixed size showing `scene` with `params` and a fixed camera. */
 async function element(scene, params, camera) {
   const { page, problems } = await session.open('examples/web-component.html', { wait: false });
-  await page.evaluate(async ([s, q, cam]) => {
-    document.body.replaceChildren();
-    const v = document.createElement('ruled-view');
-    v.id = 'figure';
-    Object.assign(v.style, { width: '640px', height: '420px', display: 'block' });
-    v.setAttribute('scene', s);
-    v.setAttribute('params', q);
-    document.body.append(v);
-    await new Promise((r) => v.addEventListener('scene-change', r, { once: true }));
-    v.view.viewer.camera.fromArray(cam);
-    v.view.viewer.render();
-  }, [scene, params, camera]);
+  await page.evaluate(
+    async ([s, q, cam]) => {
+      document.body.replaceChildren();
+      const v = document.createElement('ruled-view');
+      v.id = 'figure';
+      Object.assign(v.style, { width: '640px', height: '420px', display: 'block' });
+      v.setAttribute('scene', s);
+      v.setAttribute('params', q);
+      document.body.append(v);
+      await new Promise((r) => v.addEventListener('scene-change', r, { once: true }));
+      v.view.viewer.camera.fromArray(cam);
+      v.view.viewer.render();
+    },
+    [scene, params, camera],
+  );
   return { page, problems };
 }
 
@@ -47,7 +50,10 @@ test('SVG: parses, holds the segments of the view, labels as <text> with subscri
   assert.equal(counts.root, 'http://www.w3.org/2000/svg');
   // 3 rulings, 2 common perpendiculars, 1 parallel through f_{i,i+1}; 3 legend lines
   assert.equal(counts.lines, 6 + 3);
-  assert.deepEqual(counts.texts.sort(), ['Ri', 'Ri+1', 'Ri−1', 'fi+1,i', 'fi,i+1', 'fi,i−1', 'mi', 'Ni,i+1, hi,i+1', 'φi,i+1'].sort());
+  assert.deepEqual(
+    counts.texts.sort(),
+    ['Ri', 'Ri+1', 'Ri−1', 'fi+1,i', 'fi,i+1', 'fi,i−1', 'mi', 'Ni,i+1, hi,i+1', 'φi,i+1'].sort(),
+  );
   assert.ok(counts.subscripts >= 9);
   assert.equal(counts.halos, counts.texts.length, 'every label has a halo drawn under it');
   assert.equal(counts.styles, 0, 'self-contained: no stylesheet, link or image');
@@ -61,7 +67,11 @@ test('SVG: parses, holds the segments of the view, labels as <text> with subscri
 });
 
 test('TikZ of a known view equals the checked-in file; labels come out as math', async () => {
-  const { page, problems } = await element('curves', 'w=0.07692307692307693&steps=2', [-1.5707963, 1.45, 18, 4, 0.15, 0]);
+  const { page, problems } = await element(
+    'curves',
+    'w=0.07692307692307693&steps=2',
+    [-1.5707963, 1.45, 18, 4, 0.15, 0],
+  );
   const tikz = await page.evaluate(() => document.getElementById('figure').exportTikZ({ bw: true }));
   if (process.env.UPDATE_EXPECTED || !existsSync(EXPECTED)) writeFileSync(EXPECTED, tikz);
   assert.equal(tikz, readFileSync(EXPECTED, 'utf8'));
@@ -80,14 +90,25 @@ test('TikZ of a known view equals the checked-in file; labels come out as math',
 test('PNG at 2× and 4× of the view, and the page’s export buttons download figures', async () => {
   const { page, problems } = await element('striction', '', [-0.9, 0.45, 15, 0, 0, 0]);
   for (const scale of [2, 4]) {
-    const bytes = await page.evaluate(async (s) => [...new Uint8Array(await (await document.getElementById('figure').exportPNG({ scale: s })).arrayBuffer())], scale);
+    const bytes = await page.evaluate(
+      async (s) => [
+        ...new Uint8Array(await (await document.getElementById('figure').exportPNG({ scale: s })).arrayBuffer()),
+      ],
+      scale,
+    );
     const image = decodePng(Buffer.from(bytes));
     assert.deepEqual([image.width, image.height], [640 * scale, 420 * scale]);
   }
   await page.close();
   const { page: p } = await session.open('#scene=convergence');
   await p.locator('.io summary').click();
-  for (const [kind, name] of [['svg', /convergence\.svg$/], ['svgBw', /convergence-bw\.svg$/], ['tikz', /convergence\.tikz$/], ['png2', /convergence-2x\.png$/], ['plot', /convergence-plot\.svg$/]]) {
+  for (const [kind, name] of [
+    ['svg', /convergence\.svg$/],
+    ['svgBw', /convergence-bw\.svg$/],
+    ['tikz', /convergence\.tikz$/],
+    ['png2', /convergence-2x\.png$/],
+    ['plot', /convergence-plot\.svg$/],
+  ]) {
     const [download] = await Promise.all([p.waitForEvent('download'), p.locator(`[data-export="${kind}"]`).click()]);
     assert.match(download.suggestedFilename(), name);
   }
@@ -98,9 +119,14 @@ test('PNG at 2× and 4× of the view, and the page’s export buttons download f
   // the data files, as a user saves them: a surface's, then a congruence's (no invariants)
   const save = async (/** @type {string} */ kind) => {
     const [download] = await Promise.all([p.waitForEvent('download'), p.locator(`[data-export="${kind}"]`).click()]);
-    return { name: download.suggestedFilename(), text: readFileSync(/** @type {string} */ (await download.path()), 'utf8') };
+    return {
+      name: download.suggestedFilename(),
+      text: readFileSync(/** @type {string} */ (await download.path()), 'utf8'),
+    };
   };
-  await p.evaluate(() => { location.hash = '#scene=striction'; });
+  await p.evaluate(() => {
+    location.hash = '#scene=striction';
+  });
   await p.locator('[data-export="obj"]:not([disabled])').waitFor();
   const obj = await save('obj');
   assert.equal(obj.name, 'striction.obj');
@@ -109,7 +135,9 @@ test('PNG at 2× and 4× of the view, and the page’s export buttons download f
   assert.equal(inv.name, 'striction-invariants.json');
   assert.ok(JSON.parse(inv.text).distribution.length > 2);
   assert.match((await save('invariantsCsv')).text, /^pair,angle,distance,distribution,/);
-  await p.evaluate(() => { location.hash = '#scene=congruence'; });
+  await p.evaluate(() => {
+    location.hash = '#scene=congruence';
+  });
   await p.locator('[data-export="invariants"][disabled]').waitFor();
   const lines = await save('obj');
   assert.doesNotMatch(lines.text, /^f /m);

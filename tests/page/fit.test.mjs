@@ -21,21 +21,47 @@ const boxes = (page, name) =>
     const control = root.querySelector(`.rl-controls [name="${key}"]`);
     const c = r(control);
     const hit = c ? root.elementFromPoint(c.x + c.width / 2, c.y + c.height / 2) : null;
-    return { element: r(v), view: r(root.querySelector('.rl-view')), panel: r(root.querySelector('.rl-panel')), control: c, hit: hit === control };
+    return {
+      element: r(v),
+      view: r(root.querySelector('.rl-view')),
+      panel: r(root.querySelector('.rl-panel')),
+      control: c,
+      hit: hit === control,
+    };
   }, name);
 
 /** The control's box lies inside the element's box and inside the panel's visible part. */
 const inside = (b) =>
-  b.control && b.control.y >= Math.max(b.element.y, b.panel.y) - 0.5 && b.control.y + b.control.height <= Math.min(b.element.y + b.element.height, b.panel.y + b.panel.height) + 0.5 && b.control.x >= b.element.x - 0.5 && b.control.x + b.control.width <= b.element.x + b.element.width + 0.5;
+  b.control &&
+  b.control.y >= Math.max(b.element.y, b.panel.y) - 0.5 &&
+  b.control.y + b.control.height <= Math.min(b.element.y + b.element.height, b.panel.y + b.panel.height) + 0.5 &&
+  b.control.x >= b.element.x - 0.5 &&
+  b.control.x + b.control.width <= b.element.x + b.element.width + 0.5;
 
 for (const width of [280, 390, 700, 1280]) {
   test(`<ruled-view controls> in a ${width}-px column, 560 px high: every control reached inside the element moves the picture; the view keeps ≥ 55 %`, async () => {
-    const url = site.write(`column-${width}.html`, hostPage(`<div style="width: ${width}px"><script defer src="${session.url}dist/ruledlab-embed.js"></script>\n<ruled-view paper="fig2" params="" lang="en" controls style="display: block; height: 560px; max-width: 100%"></ruled-view></div>`));
+    const url = site.write(
+      `column-${width}.html`,
+      hostPage(
+        `<div style="width: ${width}px"><script defer src="${session.url}dist/ruledlab-embed.js"></script>\n<ruled-view paper="fig2" params="" lang="en" controls style="display: block; height: 560px; max-width: 100%"></ruled-view></div>`,
+      ),
+    );
     const { page, problems } = await session.open(url, { wait: false });
-    await page.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, { timeout: 30000 });
-    const keys = await page.locator('ruled-view').evaluate((v) => [...v.shadowRoot.querySelectorAll('.rl-controls [name]')].filter((e) => !e.disabled).map((e) => e.getAttribute('name')));
+    await page.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, {
+      timeout: 30000,
+    });
+    const keys = await page
+      .locator('ruled-view')
+      .evaluate((v) =>
+        [...v.shadowRoot.querySelectorAll('.rl-controls [name]')]
+          .filter((e) => !e.disabled)
+          .map((e) => e.getAttribute('name')),
+      );
     assert.ok(keys.length >= 8, `only ${keys.length} controls`);
-    const view = () => page.locator('ruled-view').evaluate((v) => v.shadowRoot.querySelector('.rl-view canvas').getBoundingClientRect().toJSON());
+    const view = () =>
+      page
+        .locator('ruled-view')
+        .evaluate((v) => v.shadowRoot.querySelector('.rl-view canvas').getBoundingClientRect().toJSON());
     const picture = async () => decodePng(await page.screenshot({ clip: await view() }));
     for (const key of keys) {
       // scroll as a reader does: the wheel over the panel, until the control is in sight
@@ -49,11 +75,16 @@ for (const width of [280, 390, 700, 1280]) {
       }
       assert.ok(inside(b), `${width} px: "${key}" cannot be reached inside the element`);
       assert.ok(b.hit, `${width} px: "${key}" is covered where a reader would touch it`);
-      assert.ok(b.view.height >= 0.55 * b.element.height - 0.5, `${width} px: the view keeps only ${((100 * b.view.height) / b.element.height).toFixed(0)} % of the height`);
+      assert.ok(
+        b.view.height >= 0.55 * b.element.height - 0.5,
+        `${width} px: the view keeps only ${((100 * b.view.height) / b.element.height).toFixed(0)} % of the height`,
+      );
       const before = await picture();
       const { control } = b;
       const [x, y] = [control.x + control.width / 2, control.y + control.height / 2];
-      const type = await page.locator('ruled-view').evaluate((v, k) => v.shadowRoot.querySelector(`.rl-controls [name="${k}"]`).type, key);
+      const type = await page
+        .locator('ruled-view')
+        .evaluate((v, k) => v.shadowRoot.querySelector(`.rl-controls [name="${k}"]`).type, key);
       if (type === 'checkbox') await page.mouse.click(x, y);
       else if (type === 'range') {
         await page.mouse.click(x, y);
@@ -82,7 +113,10 @@ test('the page on a phone: 44-px targets, no text under 12 px, steps for a dense
     const small = await page.evaluate(() =>
       [...document.querySelectorAll('button, input, select, summary, textarea, a[href]')]
         .filter((e) => e.checkVisibility())
-        .map((e) => ({ what: e.getAttribute('name') || e.className || e.textContent?.trim() || e.tagName, ...e.getBoundingClientRect().toJSON() }))
+        .map((e) => ({
+          what: e.getAttribute('name') || e.className || e.textContent?.trim() || e.tagName,
+          ...e.getBoundingClientRect().toJSON(),
+        }))
         .filter((r) => r.width < 44 - 0.5 || r.height < 44 - 0.5),
     );
     assert.deepEqual(small, [], 'targets smaller than 44 × 44 CSS px on a touch screen');
@@ -106,16 +140,23 @@ test('the page on a phone: 44-px targets, no text under 12 px, steps for a dense
     const before = await shoot(page, 'phone-fig2-before');
     await row.locator('.rl-step').last().scrollIntoViewIfNeeded();
     await row.locator('.rl-step').last().tap();
-    await page.waitForFunction(() => /** @type {HTMLInputElement} */ (document.querySelector('.rl-controls [name="n"]')).value === '37');
+    await page.waitForFunction(
+      () => /** @type {HTMLInputElement} */ (document.querySelector('.rl-controls [name="n"]')).value === '37',
+    );
     await ready(page);
     const seen = await page.evaluate(() => {
       const v = /** @type {HTMLElement} */ (document.querySelector('.rl-view')).getBoundingClientRect();
-      const plus = /** @type {HTMLElement} */ ([...document.querySelectorAll('.rl-row[data-key="n"] .rl-step')].at(-1)).getBoundingClientRect();
+      const plus = /** @type {HTMLElement} */ (
+        [...document.querySelectorAll('.rl-row[data-key="n"] .rl-step')].at(-1)
+      ).getBoundingClientRect();
       const visible = Math.min(v.bottom, innerHeight) - Math.max(v.top, 0);
       const top = document.elementFromPoint(plus.x + plus.width / 2, plus.y + plus.height / 2);
       return { share: visible / innerHeight, reachable: !!top?.closest('.rl-step') };
     });
-    assert.ok(seen.share >= 0.55, `the view keeps only ${(100 * seen.share).toFixed(0)} % of the screen while N is used`);
+    assert.ok(
+      seen.share >= 0.55,
+      `the view keeps only ${(100 * seen.share).toFixed(0)} % of the screen while N is used`,
+    );
     assert.ok(seen.reachable, 'the view covers the + button');
     const after = await shoot(page, 'phone-fig2-after');
     assert.ok(countChanged(before, after) > 500, '+ did not change the picture');
@@ -140,7 +181,10 @@ test('with a mouse, on every scene of the page and in the element: every target 
         for (const e of root.querySelectorAll('button, input, select, summary, textarea, a[href]')) {
           if (!e.checkVisibility() || e.closest('.rl-sr-only')) continue;
           const r = e.getBoundingClientRect();
-          if (r.width < 24 - 0.5 || r.height < 24 - 0.5) out.push(`target ${Math.round(r.width)}×${Math.round(r.height)}: ${e.getAttribute('name') || e.className || e.textContent?.trim().slice(0, 30)}`);
+          if (r.width < 24 - 0.5 || r.height < 24 - 0.5)
+            out.push(
+              `target ${Math.round(r.width)}×${Math.round(r.height)}: ${e.getAttribute('name') || e.className || e.textContent?.trim().slice(0, 30)}`,
+            );
         }
         const walker = document.createTreeWalker(root, NodeFilter.SHOW_TEXT);
         for (let n = walker.nextNode(); n; n = walker.nextNode()) {
@@ -148,7 +192,9 @@ test('with a mouse, on every scene of the page and in the element: every target 
           if (!e || !n.textContent?.trim() || !e.checkVisibility() || e.closest('.rl-sr-only, option')) continue;
           // in an SVG figure, its user units times the figure's scale on screen
           const svg = e.closest('svg');
-          const scale = svg?.viewBox?.baseVal?.width ? svg.getBoundingClientRect().width / svg.viewBox.baseVal.width : 1;
+          const scale = svg?.viewBox?.baseVal?.width
+            ? svg.getBoundingClientRect().width / svg.viewBox.baseVal.width
+            : 1;
           const size = parseFloat(getComputedStyle(e).fontSize) * scale;
           if (size < 12 - 0.01) out.push(`text ${size.toFixed(1)} px: ${n.textContent.trim().slice(0, 30)}`);
         }
@@ -159,7 +205,11 @@ test('with a mouse, on every scene of the page and in the element: every target 
     });
   for (const id of scenes) {
     await showScene(page, `#scene=${id}`, id);
-    await page.evaluate(() => document.querySelectorAll('details').forEach((d) => (d.open = true)));
+    await page.evaluate(() =>
+      document.querySelectorAll('details').forEach((d) => {
+        d.open = true;
+      }),
+    );
     assert.deepEqual(await audit(), [], id);
   }
   // and <ruled-view controls> beside the page's own view

@@ -23,7 +23,10 @@ test('focal surfaces: kinds, sheets and strokes drawn, readouts as the core comp
   const noStrokes = await shoot(page, 'focal-no-strokes');
   assert.ok(countChanged(noSheets, noStrokes) > 0.002 * base.width * base.height, 'the torsal strokes are drawn');
   await setControl(page, 'congruence', 'elliptic');
-  assert.match(await readout(), /hyperbolic lines\s+0 \/ 196[\s\S]*elliptic lines\s+196 \/ 196[\s\S]*normality \|cos\|\s+none real[\s\S]*a linear congruence/);
+  assert.match(
+    await readout(),
+    /hyperbolic lines\s+0 \/ 196[\s\S]*elliptic lines\s+196 \/ 196[\s\S]*normality \|cos\|\s+none real[\s\S]*a linear congruence/,
+  );
   await setControl(page, 'congruence', 'example5');
   assert.match(await readout(), /one linear complex[\s\S]*pitch of the complex\s+exact/);
   assert.match(await page.locator('.rl-sr-only[id$=description]').first().textContent(), /Example 5/);

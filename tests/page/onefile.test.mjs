@@ -30,11 +30,14 @@ async function openFile(url) {
   return { page, problems, requests };
 }
 
-const foreign = (requests, file) => requests.filter((u) => !u.startsWith('data:') && !u.startsWith('blob:') && u.split('#')[0] !== file);
+const foreign = (requests, file) =>
+  requests.filter((u) => !u.startsWith('data:') && !u.startsWith('blob:') && u.split('#')[0] !== file);
 
 test('dist/ruledlab.html from disk: every scene draws, nothing is requested but the file itself', async () => {
   const html = readFileSync(join(REPO, 'dist/ruledlab.html'));
-  console.log(`# dist/ruledlab.html: ${(html.length / 1024).toFixed(0)} KiB, ${(gzipSync(html).length / 1024).toFixed(0)} KiB gzipped`);
+  console.log(
+    `# dist/ruledlab.html: ${(html.length / 1024).toFixed(0)} KiB, ${(gzipSync(html).length / 1024).toFixed(0)} KiB gzipped`,
+  );
   // one page from disk, walking every scene by its link
   const { page, problems, requests } = await openFile(ONEFILE);
   await ready(page);
@@ -53,7 +56,10 @@ test('the one-file build refines a large model in its inlined worker', async () 
   const { page, problems, requests } = await openFile(`${ONEFILE}#scene=large&n=10000&steps=3`);
   await ready(page, 120000);
   assert.match(await page.locator('.rl-readout').innerText(), /79[\s,.]?993/);
-  assert.ok(requests.some((u) => u.startsWith('blob:')), 'the worker came from a blob: URL');
+  assert.ok(
+    requests.some((u) => u.startsWith('blob:')),
+    'the worker came from a blob: URL',
+  );
   assert.deepEqual(problems, []);
   assert.deepEqual(foreign(requests, `${ONEFILE}#scene=large&n=10000&steps=3`.split('#')[0]), []);
   await page.close();
@@ -75,7 +81,10 @@ test('dist/ruledlab-embed.js: one classic script defines <ruled-view>, from disk
   assert.ok(countDifferent(image, BACKGROUND) > 0.01 * image.width * image.height);
   assert.ok(await page.locator('#v').evaluate((v) => v.shadowRoot.querySelectorAll('.rl-controls input').length > 2));
   assert.deepEqual(problems, []);
-  assert.deepEqual(requests.filter((u) => u.startsWith('http')), []);
+  assert.deepEqual(
+    requests.filter((u) => u.startsWith('http')),
+    [],
+  );
   await page.close();
 });
 
@@ -89,11 +98,20 @@ test('the page downloads the current view as one HTML file, which opens with tha
   const opened = await openFile(pathToFileURL(path).href);
   await ready(opened.page);
   assert.equal(await opened.page.evaluate(() => window.ruledlab.stage.scene.id), 'curves');
-  assert.deepEqual(await opened.page.evaluate(() => ({ ...window.ruledlab.stage.params })), { scheme: 'four-point', steps: 2, w: 0.0625, closed: true, levels: true });
+  assert.deepEqual(await opened.page.evaluate(() => ({ ...window.ruledlab.stage.params })), {
+    scheme: 'four-point',
+    steps: 2,
+    w: 0.0625,
+    closed: true,
+    levels: true,
+  });
   assert.deepEqual([...problems, ...opened.problems], []);
   // downloaded again from the one-file build itself, the view survives a second round
   await opened.page.locator('#share').click();
-  const [again] = await Promise.all([opened.page.waitForEvent('download'), opened.page.locator('#share-onefile').click()]);
+  const [again] = await Promise.all([
+    opened.page.waitForEvent('download'),
+    opened.page.locator('#share-onefile').click(),
+  ]);
   const path2 = join(mkdtempSync(join(tmpdir(), 'ruledlab-view-')), 'view.html');
   await again.saveAs(path2);
   await opened.page.close();

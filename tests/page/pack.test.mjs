@@ -21,13 +21,27 @@ let browser, tarball;
 before(async () => {
   browser = await launch();
   const dir = mkdtempSync(join(tmpdir(), 'ruledlab-pack-'));
-  const out = JSON.parse(execFileSync('npm', ['pack', '--json', '--pack-destination', dir], { cwd: REPO, encoding: 'utf8' }));
+  const out = JSON.parse(
+    execFileSync('npm', ['pack', '--json', '--pack-destination', dir], { cwd: REPO, encoding: 'utf8' }),
+  );
   tarball = join(dir, out[0].filename);
   const files = out[0].files.map((f) => f.path);
-  for (const need of ['www/view.js', 'pkg/view/www/view.d.ts', 'pkg/ruledlab.d.ts', 'www/ruled-view.js', 'www/worker.js', 'pkg/ruledlab_bg.wasm', 'dist/ruledlab.html', 'dist/ruledlab-embed.js']) {
+  for (const need of [
+    'www/view.js',
+    'pkg/view/www/view.d.ts',
+    'pkg/ruledlab.d.ts',
+    'www/ruled-view.js',
+    'www/worker.js',
+    'pkg/ruledlab_bg.wasm',
+    'dist/ruledlab.html',
+    'dist/ruledlab-embed.js',
+  ]) {
     assert.ok(files.includes(need), `the package lacks ${need}`);
   }
-  assert.ok(!files.some((f) => f.startsWith('src/') || f.startsWith('tests/') || f.startsWith('target/')), 'the package ships sources or tests');
+  assert.ok(
+    !files.some((f) => f.startsWith('src/') || f.startsWith('tests/') || f.startsWith('target/')),
+    'the package ships sources or tests',
+  );
 });
 after(async () => browser?.close());
 
@@ -45,12 +59,16 @@ async function check(url, name) {
   const requests = [];
   page.on('request', (r) => requests.push(r.url()));
   await page.goto(url);
-  await page.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, { timeout: 30000 });
+  await page.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, {
+    timeout: 30000,
+  });
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   const png = await page.locator('ruled-view').screenshot({ path: join(ARTIFACTS, `${name}.png`) });
   const image = decodePng(png);
   assert.ok(countDifferent(image, BACKGROUND) > 0.02 * image.width * image.height, 'nothing drawn');
-  const controls = await page.locator('ruled-view').evaluate((v) => v.shadowRoot.querySelectorAll('.rl-controls input, .rl-controls select').length);
+  const controls = await page
+    .locator('ruled-view')
+    .evaluate((v) => v.shadowRoot.querySelectorAll('.rl-controls input, .rl-controls select').length);
   assert.ok(controls >= 5, `only ${controls} controls`);
   assert.deepEqual(problems, []);
   return { page, requests };
@@ -69,7 +87,11 @@ test('npm pack → installed in a fresh app → <ruled-view controls> from ruled
   const { server, url } = await startServer({ root: dir });
   try {
     const { page, requests } = await check(url, 'pack-static');
-    assert.deepEqual(requests.filter((u) => !u.startsWith(url) && !u.startsWith('data:') && !u.startsWith('blob:')), [], 'read from outside the app');
+    assert.deepEqual(
+      requests.filter((u) => !u.startsWith(url) && !u.startsWith('data:') && !u.startsWith('blob:')),
+      [],
+      'read from outside the app',
+    );
     await page.close();
   } finally {
     server.close();
@@ -78,7 +100,10 @@ test('npm pack → installed in a fresh app → <ruled-view controls> from ruled
 
 test('a Vite app built from the tarball: the core by name and the viewer from ruledlab/view', async () => {
   const dir = app();
-  writeFileSync(join(dir, 'index.html'), '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>vite app</title><style>ruled-view { height: 520px; }</style></head><body><ruled-view scene="striction" controls></ruled-view><script type="module" src="./main.js"></script></body></html>');
+  writeFileSync(
+    join(dir, 'index.html'),
+    '<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>vite app</title><style>ruled-view { height: 520px; }</style></head><body><ruled-view scene="striction" controls></ruled-view><script type="module" src="./main.js"></script></body></html>',
+  );
   writeFileSync(
     join(dir, 'main.js'),
     `import init, { AnalyticSurface } from 'ruledlab';
@@ -93,7 +118,10 @@ try {
   );
   await build({ root: dir, logLevel: 'silent', build: { outDir: join(dir, 'dist'), target: 'es2022' } });
   const assets = readdirSync(join(dir, 'dist', 'assets'));
-  assert.ok(assets.some((f) => f.endsWith('.wasm')), `no wasm in ${assets}`);
+  assert.ok(
+    assets.some((f) => f.endsWith('.wasm')),
+    `no wasm in ${assets}`,
+  );
   const { server, url } = await startServer({ root: join(dir, 'dist') });
   try {
     const { page } = await check(url, 'pack-vite');
@@ -132,7 +160,22 @@ stage.legend;
 s.subdivide({ scheme: 'cubic' });
 `,
   );
-  writeFileSync(join(dir, 'tsconfig.json'), JSON.stringify({ compilerOptions: { strict: true, noEmit: true, skipLibCheck: false, target: 'es2022', module: 'esnext', moduleResolution: 'bundler', lib: ['es2022', 'dom', 'esnext.disposable'], types: [] }, files: ['main.ts'] }));
+  writeFileSync(
+    join(dir, 'tsconfig.json'),
+    JSON.stringify({
+      compilerOptions: {
+        strict: true,
+        noEmit: true,
+        skipLibCheck: false,
+        target: 'es2022',
+        module: 'esnext',
+        moduleResolution: 'bundler',
+        lib: ['es2022', 'dom', 'esnext.disposable'],
+        types: [],
+      },
+      files: ['main.ts'],
+    }),
+  );
   execFileSync(join(REPO, 'node_modules/.bin/tsc'), ['-p', join(dir, 'tsconfig.json')], { cwd: dir, stdio: 'inherit' });
 });
 

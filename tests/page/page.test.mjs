@@ -59,15 +59,28 @@ test('every scene, and every choice of each of its menus, draws without errors',
       assert.ok(countChanged(start, moved) > 300, `${id}: moving ${slider.key} did not change the picture`);
     }
     // every choice of every menu draws
-    const menus = await page.evaluate(() => [...document.querySelectorAll('.rl-controls select')].map((s) => ({ key: s.name, values: [...s.options].map((o) => o.value) })));
+    const menus = await page.evaluate(() =>
+      [...document.querySelectorAll('.rl-controls select')].map((s) => ({
+        key: s.name,
+        values: [...s.options].map((o) => o.value),
+      })),
+    );
     for (const { key, values } of menus) {
       for (const value of [...values.slice(1), values[0]]) {
         if ((await control(page, key).inputValue()) === value || (await control(page, key).isDisabled())) continue;
         const frames = await page.evaluate(() => Number(document.body.dataset.frames));
         await control(page, key).selectOption(value);
-        await framesAfter(page, frames).catch(async () => assert.fail(`${id}: ${key}=${value} drew no new frame; error: ${await page.locator('.rl-error').innerText()}`));
+        await framesAfter(page, frames).catch(async () =>
+          assert.fail(
+            `${id}: ${key}=${value} drew no new frame; error: ${await page.locator('.rl-error').innerText()}`,
+          ),
+        );
         await ready(page, 60000);
-        assert.equal(await page.locator('.rl-error').isHidden(), true, `${id}: ${key}=${value} shows an error: ${await page.locator('.rl-error').innerText()}`);
+        assert.equal(
+          await page.locator('.rl-error').isHidden(),
+          true,
+          `${id}: ${key}=${value} shows an error: ${await page.locator('.rl-error').innerText()}`,
+        );
       }
     }
   }
@@ -93,22 +106,43 @@ test('a link restores every control of every scene, the camera and the language'
           const v = Number(el.value) === max ? min : Math.min(max, Number(el.value) + step);
           out[el.name] = String(Number(v.toFixed(6)));
         } else if (el.type === 'checkbox') out[el.name] = el.checked ? '0' : '1';
-        else if (el.tagName === 'SELECT' && el.name !== 'preset') out[el.name] = [...el.options].map((o) => o.value).find((v) => v !== el.value);
+        else if (el.tagName === 'SELECT' && el.name !== 'preset')
+          out[el.name] = [...el.options].map((o) => o.value).find((v) => v !== el.value);
       }
       return out;
     });
     const hash = new URLSearchParams({ scene: id, ...changed, cam: '0.5,0.3,7,0.1,0.2,0.3', lang: 'en' });
     const restored = await open(`#${hash}`);
-    const values = await restored.page.evaluate((keys) => Object.fromEntries(keys.map((k) => {
-      const el = document.querySelector(`.rl-controls [name="${k}"]`);
-      return [k, el.type === 'checkbox' ? (el.checked ? '1' : '0') : String(el.value)];
-    })), Object.keys(changed));
-    for (const [k, v] of Object.entries(changed)) assert.equal(Number.isNaN(Number(v)) ? values[k] : Number(values[k]), Number.isNaN(Number(v)) ? v : Number(v), `${id}: ${k} was not restored`);
+    const values = await restored.page.evaluate(
+      (keys) =>
+        Object.fromEntries(
+          keys.map((k) => {
+            const el = document.querySelector(`.rl-controls [name="${k}"]`);
+            return [k, el.type === 'checkbox' ? (el.checked ? '1' : '0') : String(el.value)];
+          }),
+        ),
+      Object.keys(changed),
+    );
+    for (const [k, v] of Object.entries(changed))
+      assert.equal(
+        Number.isNaN(Number(v)) ? values[k] : Number(values[k]),
+        Number.isNaN(Number(v)) ? v : Number(v),
+        `${id}: ${k} was not restored`,
+      );
     const camera = await restored.page.evaluate(() => window.ruledlab.stage.viewer.camera.toArray());
-    assert.deepEqual(camera.map((x) => Number(x.toFixed(6))), [0.5, 0.3, 7, 0.1, 0.2, 0.3], `${id}: the camera was not restored`);
+    assert.deepEqual(
+      camera.map((x) => Number(x.toFixed(6))),
+      [0.5, 0.3, 7, 0.1, 0.2, 0.3],
+      `${id}: the camera was not restored`,
+    );
     // and the page writes back the same state
     const written = new URLSearchParams(new URL(restored.page.url()).hash.slice(1));
-    for (const [k, v] of Object.entries(changed)) assert.equal(Number.isNaN(Number(v)) ? written.get(k) : Number(written.get(k)), Number.isNaN(Number(v)) ? v : Number(v), `${id}: ${k} not in the written link`);
+    for (const [k, v] of Object.entries(changed))
+      assert.equal(
+        Number.isNaN(Number(v)) ? written.get(k) : Number(written.get(k)),
+        Number.isNaN(Number(v)) ? v : Number(v),
+        `${id}: ${k} not in the written link`,
+      );
     assert.deepEqual([...problems, ...restored.problems], []);
     await restored.page.close();
   }
@@ -161,7 +195,9 @@ test('Reset restores the defaults; bad link values fall back to their defaults w
 test('play moves a parameter until paused; a single step moves it once', async () => {
   const { page, problems } = await open('#scene=isometry&t=0');
   await page.locator('.rl-row[data-key="t"] .rl-play').click();
-  await page.waitForFunction(() => Number(document.querySelector('.rl-controls [name="t"]').value) > 0.1, null, { timeout: 10000 });
+  await page.waitForFunction(() => Number(document.querySelector('.rl-controls [name="t"]').value) > 0.1, null, {
+    timeout: 10000,
+  });
   assert.equal(await page.locator('.rl-row[data-key="t"] .rl-play').getAttribute('aria-pressed'), 'true');
   await page.locator('.rl-row[data-key="t"] .rl-play').click();
   const paused = await page.evaluate(() => window.ruledlab.stage.params.t);
@@ -169,14 +205,21 @@ test('play moves a parameter until paused; a single step moves it once', async (
   assert.equal(await page.evaluate(() => window.ruledlab.stage.params.t), paused, 'pause stops the parameter');
   assert.match(page.url(), new RegExp(`t=${paused}&`));
   await page.locator('.rl-player button').click();
-  assert.ok(Math.abs((await page.evaluate(() => window.ruledlab.stage.params.t)) - paused) > 0.04, 'a single step moves t by a twentieth of its range');
+  assert.ok(
+    Math.abs((await page.evaluate(() => window.ruledlab.stage.params.t)) - paused) > 0.04,
+    'a single step moves t by a twentieth of its range',
+  );
   assert.deepEqual(problems, []);
   await page.close();
 });
 
 test('autoplay plays, unless the reader prefers reduced motion', async () => {
   const moving = await open('#scene=lines&slide=0&autoplay');
-  await moving.page.waitForFunction(() => Number(document.querySelector('.rl-controls [name="slide"]').value) > 0.05, null, { timeout: 10000 });
+  await moving.page.waitForFunction(
+    () => Number(document.querySelector('.rl-controls [name="slide"]').value) > 0.05,
+    null,
+    { timeout: 10000 },
+  );
   await moving.page.close();
   const context = session.browser;
   const page = await context.newPage();
@@ -196,7 +239,10 @@ test('the share dialog offers the link, an iframe and a <ruled-view> snippet of 
   const iframe = await page.locator('#share-iframe').inputValue();
   assert.match(iframe, /^<iframe src="[^"]*#embed&amp;controls&amp;scene=curves/);
   const element = await page.locator('#share-element').inputValue();
-  assert.match(element, /<ruled-view scene="curves" params="[^"]*w=0\.0625[^"]*" camera="[-\d.,e]+" lang="en" controls/);
+  assert.match(
+    element,
+    /<ruled-view scene="curves" params="[^"]*w=0\.0625[^"]*" camera="[-\d.,e]+" lang="en" controls/,
+  );
   assert.match(element, /<script defer src="http[^"]*\/dist\/ruledlab-embed\.js"><\/script>/);
   assert.deepEqual(problems, []);
   await page.close();
@@ -213,13 +259,19 @@ test('your surface by formulas: live, in the link, and errors beside the field w
   await control(page, 'ay').dispatchEvent('change');
   const row = page.locator('.rl-row[data-key="ay"]');
   await page.waitForFunction(() => document.querySelector('.rl-row[data-key="ay"] .rl-fielderror')?.hidden === false);
-  assert.match(await row.locator('.rl-fielderror').innerText(), /^The y component of a\(u\): there is no function “sni” \(column 1\); known: sin, cos/);
+  assert.match(
+    await row.locator('.rl-fielderror').innerText(),
+    /^The y component of a\(u\): there is no function “sni” \(column 1\); known: sin, cos/,
+  );
   assert.equal(await control(page, 'ay').getAttribute('aria-invalid'), 'true');
   // the link with the formula restores it
   const reloaded = await open(`#scene=formula&ez=${encodeURIComponent('2*c')}&tool=convergence`);
   assert.equal(await control(reloaded.page, 'ez').inputValue(), '2*c');
   assert.match(await reloaded.page.locator('.rl-readout').innerText(), /order of the midpoint/);
-  assert.deepEqual([...problems, ...reloaded.problems].filter((p) => !/sni/.test(p)), []);
+  assert.deepEqual(
+    [...problems, ...reloaded.problems].filter((p) => !/sni/.test(p)),
+    [],
+  );
   await page.close();
   await reloaded.page.close();
 });
@@ -229,7 +281,10 @@ test('imports: errors beside the field, old data kept; small imports survive a r
   await page.locator('.io summary').click();
   await page.locator('#import-text').fill('0,0,0,1,0,0\n0,0,1,0,1,x');
   await page.locator('#import-button').click();
-  assert.match(await page.locator('#import-error').innerText(), /^CSV: “x” is not a number \(line 2, column 11\)\. The example data stays on screen/);
+  assert.match(
+    await page.locator('#import-error').innerText(),
+    /^CSV: “x” is not a number \(line 2, column 11\)\. The example data stays on screen/,
+  );
   await page.locator('#import-text').fill('0,0,0,1,0,0\n0,0,1,0,1,1\n0,0,2,-1,0,2\n0,0,3,0,-1,3');
   await page.locator('#import-button').click();
   await page.waitForFunction(() => /data=/.test(location.hash));
@@ -257,7 +312,8 @@ test('phone size: the panel goes below the view, Fit frames the width, touch tar
   assert.match(await page.locator('.rl-hint').textContent(), /finger/, 'the hint speaks of touch, not of the mouse');
   // Fit frames the width too: the surface's extent across stays inside the view
   const image = await shoot(page, 'phone-striction');
-  let left = image.width, right = 0;
+  let left = image.width,
+    right = 0;
   for (let y = 2; y < image.height - 2; y++) {
     for (let x = 0; x < image.width; x++) {
       const k = (y * image.width + x) * image.channels;
@@ -267,6 +323,9 @@ test('phone size: the panel goes below the view, Fit frames the width, touch tar
       }
     }
   }
-  assert.ok(left > 2 && right < image.width - 3, `the surface is cut at the sides: drawn from x = ${left} to ${right} of ${image.width}`);
+  assert.ok(
+    left > 2 && right < image.width - 3,
+    `the surface is cut at the sides: drawn from x = ${left} to ${right} of ${image.width}`,
+  );
   await phone.close();
 });

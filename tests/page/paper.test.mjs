@@ -14,10 +14,14 @@ const session = pageSession();
 /** Every control's value, by name. */
 /** @param {import('playwright-core').Page} page */
 const controls = (page) =>
-  page.evaluate(() => Object.fromEntries([...document.querySelectorAll('.rl-controls [name]')].map((e) => {
-    const input = /** @type {HTMLInputElement} */ (e);
-    return [input.name, input.type === 'checkbox' ? input.checked : input.value];
-  })));
+  page.evaluate(() =>
+    Object.fromEntries(
+      [...document.querySelectorAll('.rl-controls [name]')].map((e) => {
+        const input = /** @type {HTMLInputElement} */ (e);
+        return [input.name, input.type === 'checkbox' ? input.checked : input.value];
+      }),
+    ),
+  );
 
 /** Waits for the picture of a new state. @param {import('playwright-core').Page} page @param {() => Promise<unknown>} act */
 async function after(page, act) {
@@ -38,16 +42,31 @@ test('every figure and example from the menu: drawn, captioned, its claims hold,
     assert.match(await card.locator('h3').innerText(), /Fig\.|Example/);
     assert.equal(await card.locator('.rl-paper-changed').count(), 0, `${preset.id} opens at its own settings`);
     assert.equal(await page.locator('.rl-stage').getAttribute('data-scene'), preset.scene);
-    assert.equal(await page.locator('.rl-claims .rl-fails').count(), 0, `${preset.id}: a claim fails: ${await page.locator('.rl-claims').innerText()}`);
+    assert.equal(
+      await page.locator('.rl-claims .rl-fails').count(),
+      0,
+      `${preset.id}: a claim fails: ${await page.locator('.rl-claims').innerText()}`,
+    );
     const image = decodePng(await page.locator('.rl-view canvas').screenshot());
     assert.ok(countDifferent(image, BACKGROUND) > 0.005 * image.width * image.height, `${preset.id} drew nothing`);
     // what only some figures show: the stencil of (16) beside the view, Fig. 14's notation in it
     const figure = await page.locator('.rl-figure svg title').allTextContents();
     const stencil = preset.params.scheme === 'diagonal' || preset.params.scheme === 'butterfly';
-    assert.deepEqual(figure, stencil ? ['Fig. 12: the butterfly stencil of (16)'] : figure.filter((t) => !/stencil/.test(t)), `${preset.id}: the stencil`);
+    assert.deepEqual(
+      figure,
+      stencil ? ['Fig. 12: the butterfly stencil of (16)'] : figure.filter((t) => !/stencil/.test(t)),
+      `${preset.id}: the stencil`,
+    );
     if (stencil) assert.match((await page.locator('.rl-figure svg').textContent()) ?? '', /\(16\)[\s\S]*1\/8/);
     const labels = await page.locator('.rl-label').allTextContents();
-    if (preset.id === 'fig14') assert.deepEqual([...labels].sort(), ['P i,j', 'R i,j', 'R̄ i,j', 'S i,j', 'T i,j', 'p i+1,j', 'p i+1,j+1', 'p i,j', 'p i,j+1', 'r i,j', 's i,j'].map((t) => t.replace(' ', '')).sort(), 'Fig. 14 names one cell');
+    if (preset.id === 'fig14')
+      assert.deepEqual(
+        [...labels].sort(),
+        ['P i,j', 'R i,j', 'R̄ i,j', 'S i,j', 'T i,j', 'p i+1,j', 'p i+1,j+1', 'p i,j', 'p i,j+1', 'r i,j', 's i,j']
+          .map((t) => t.replace(' ', ''))
+          .sort(),
+        'Fig. 14 names one cell',
+      );
     const hash = await page.evaluate(() => location.hash);
     assert.match(hash, new RegExp(`paper=${preset.id}(&|$)`));
     links.push({ id: preset.id, hash, values: await controls(page) });
@@ -76,7 +95,10 @@ test('a moved control is marked as a change from the figure, and "Back to Fig. 3
   await page.keyboard.press('Escape');
   await after(page, () => page.locator('.rl-paper-changed button').click());
   assert.equal(await page.locator('.rl-controls [name="n"]').inputValue(), '36');
-  assert.ok(await page.evaluate(() => document.activeElement?.closest('.rl-controls') !== null), 'the keyboard stays in the controls');
+  assert.ok(
+    await page.evaluate(() => document.activeElement?.closest('.rl-controls') !== null),
+    'the keyboard stays in the controls',
+  );
   assert.equal(await page.locator('.rl-paper-changed').count(), 0);
   // choosing a scene leaves the figure
   await after(page, () => page.locator('#scene').selectOption('curves'));
@@ -104,7 +126,9 @@ test('the card in German, and <ruled-view paper="fig15">', async () => {
     const v = /** @type {HTMLElement | null} */ (document.querySelector('ruled-view'));
     return v?.dataset.ready === '1' && Number(v.dataset.frames) > 0;
   });
-  const inner = await page.evaluate(() => document.querySelector('ruled-view')?.shadowRoot?.querySelector('.rl-paper')?.textContent ?? '');
+  const inner = await page.evaluate(
+    () => document.querySelector('ruled-view')?.shadowRoot?.querySelector('.rl-paper')?.textContent ?? '',
+  );
   assert.match(inner, /Fig\. 15/);
   assert.match(inner, /K = 6/);
   assert.deepEqual(problems, []);

@@ -9,7 +9,9 @@ export function decodePng(buffer) {
   const sig = '89504e470d0a1a0a';
   if (buffer.subarray(0, 8).toString('hex') !== sig) throw new Error('not a PNG');
   let pos = 8;
-  let width = 0, height = 0, channels = 0;
+  let width = 0,
+    height = 0,
+    channels = 0;
   const idat = [];
   while (pos < buffer.length) {
     const len = buffer.readUInt32BE(pos);
@@ -47,7 +49,9 @@ export function decodePng(buffer) {
 /** @param {number} a @param {number} b @param {number} c */
 function paeth(a, b, c) {
   const p = a + b - c;
-  const pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
+  const pa = Math.abs(p - a),
+    pb = Math.abs(p - b),
+    pc = Math.abs(p - c);
   return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
 }
 
@@ -59,7 +63,12 @@ export function countDifferent(image, rgb, tolerance = 12) {
   const { data, channels } = image;
   let n = 0;
   for (let i = 0; i < data.length; i += channels) {
-    if (Math.abs(data[i] - rgb[0]) > tolerance || Math.abs(data[i + 1] - rgb[1]) > tolerance || Math.abs(data[i + 2] - rgb[2]) > tolerance) n++;
+    if (
+      Math.abs(data[i] - rgb[0]) > tolerance ||
+      Math.abs(data[i + 1] - rgb[1]) > tolerance ||
+      Math.abs(data[i + 2] - rgb[2]) > tolerance
+    )
+      n++;
   }
   return n;
 }

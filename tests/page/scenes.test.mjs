@@ -28,7 +28,10 @@ test('every slider of every scene moved 100 times: live wasm objects and wasm me
           if (p.unless?.(stage.params)) continue;
           for (let k = 0; k < 100; k++) {
             const span = p.max - p.min;
-            const value = p.step >= 1 ? p.min + ((k * 7) % (Math.floor(span / p.step) + 1)) * p.step : p.min + (((k * 37) % 100) / 100) * span;
+            const value =
+              p.step >= 1
+                ? p.min + ((k * 7) % (Math.floor(span / p.step) + 1)) * p.step
+                : p.min + (((k * 37) % 100) / 100) * span;
             stage.setParam(p.key, value, k === 99);
           }
         }
@@ -37,12 +40,24 @@ test('every slider of every scene moved 100 times: live wasm objects and wasm me
       pass();
       const memory10 = wasm.memory();
       pass();
-      return { base, live: wasm.live(), memory10, memory: wasm.memory(), error: document.querySelector('.rl-error').hidden ? '' : document.querySelector('.rl-error').textContent };
+      return {
+        base,
+        live: wasm.live(),
+        memory10,
+        memory: wasm.memory(),
+        error: document.querySelector('.rl-error').hidden ? '' : document.querySelector('.rl-error').textContent,
+      };
     }, id);
-    report.push(`${id}: live objects ${result.base} → ${result.live}; wasm memory after one pass ${result.memory10}, after two ${result.memory}`);
+    report.push(
+      `${id}: live objects ${result.base} → ${result.live}; wasm memory after one pass ${result.memory10}, after two ${result.memory}`,
+    );
     assert.equal(result.error, '', `${id}: ${result.error}`);
     assert.equal(result.live, result.base, `${id}: ${result.live - result.base} wasm objects left alive`);
-    assert.equal(result.memory, result.memory10, `${id}: wasm memory grew from ${result.memory10} to ${result.memory} bytes in a second pass`);
+    assert.equal(
+      result.memory,
+      result.memory10,
+      `${id}: wasm memory grew from ${result.memory10} to ${result.memory} bytes in a second pass`,
+    );
   }
   console.log(report.map((r) => `# ${r}`).join('\n'));
   await page.close();
@@ -52,7 +67,11 @@ test('Fig. 1: no label overlaps another or covers the common perpendicular, at a
   const { page, problems } = await session.open('#scene=notation');
   for (const spacing of [0.15, 0.3, 0.55, 0.9]) {
     await setControl(page, 'spacing', spacing);
-    const boxes = await page.evaluate(() => [...document.querySelectorAll('.rl-label')].filter((e) => !e.hidden).map((e) => ({ text: e.textContent, ...e.getBoundingClientRect().toJSON() })));
+    const boxes = await page.evaluate(() =>
+      [...document.querySelectorAll('.rl-label')]
+        .filter((e) => !e.hidden)
+        .map((e) => ({ text: e.textContent, ...e.getBoundingClientRect().toJSON() })),
+    );
     // the perpendicular N_{i,i+1} (f_{i,i+1} to f_{i+1,i}) runs clear of every label along its middle
     const covered = await page.evaluate(() => {
       const { viewer } = window.ruledlab.stage;
@@ -62,10 +81,15 @@ test('Fig. 1: no label overlaps another or covers the common perpendicular, at a
       const project = (o) => {
         const [x, y, z] = [k[o], k[o + 1], k[o + 2]];
         const w = m[3] * x + m[7] * y + m[11] * z + m[15];
-        return [rect.left + (((m[0] * x + m[4] * y + m[8] * z + m[12]) / w + 1) / 2) * rect.width, rect.top + ((1 - (m[1] * x + m[5] * y + m[9] * z + m[13]) / w) / 2) * rect.height];
+        return [
+          rect.left + (((m[0] * x + m[4] * y + m[8] * z + m[12]) / w + 1) / 2) * rect.width,
+          rect.top + ((1 - (m[1] * x + m[5] * y + m[9] * z + m[13]) / w) / 2) * rect.height,
+        ];
       };
       const [p, q] = [project(0), project(3)];
-      const labels = [...document.querySelectorAll('.rl-label')].filter((e) => !e.hidden).map((e) => [e.textContent, e.getBoundingClientRect()]);
+      const labels = [...document.querySelectorAll('.rl-label')]
+        .filter((e) => !e.hidden)
+        .map((e) => [e.textContent, e.getBoundingClientRect()]);
       const hits = [];
       for (let t = 0.25; t <= 0.75; t += 0.05) {
         const [x, y] = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
@@ -77,12 +101,18 @@ test('Fig. 1: no label overlaps another or covers the common perpendicular, at a
     for (let i = 0; i < boxes.length; i++) {
       for (let j = i + 1; j < boxes.length; j++) {
         const [a, b] = [boxes[i], boxes[j]];
-        const overlap = Math.min(a.right, b.right) - Math.max(a.left, b.left) > 1 && Math.min(a.bottom, b.bottom) - Math.max(a.top, b.top) > 1;
+        const overlap =
+          Math.min(a.right, b.right) - Math.max(a.left, b.left) > 1 &&
+          Math.min(a.bottom, b.bottom) - Math.max(a.top, b.top) > 1;
         assert.ok(!overlap, `spacing ${spacing}: "${a.text}" overlaps "${b.text}"`);
       }
     }
   }
-  assert.equal(await page.locator('.rl-legend li[data-style="helper"] line').getAttribute('stroke-dasharray') !== null, true, 'the line the text calls dashed is dashed');
+  assert.equal(
+    (await page.locator('.rl-legend li[data-style="helper"] line').getAttribute('stroke-dasharray')) !== null,
+    true,
+    'the line the text calls dashed is dashed',
+  );
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -102,7 +132,10 @@ test('controls that do nothing are disabled and say why', async () => {
   const { page, problems } = await session.open('#scene=curves&scheme=chaikin');
   assert.equal(await control(page, 'w').isDisabled(), true);
   assert.match(await page.locator('.rl-row[data-key="w"] .rl-reason').innerText(), /four-point scheme only/);
-  assert.equal(await control(page, 'w').getAttribute('aria-describedby'), await page.locator('.rl-row[data-key="w"] .rl-reason').getAttribute('id'));
+  assert.equal(
+    await control(page, 'w').getAttribute('aria-describedby'),
+    await page.locator('.rl-row[data-key="w"] .rl-reason').getAttribute('id'),
+  );
   await control(page, 'scheme').selectOption('four-point');
   await ready(page);
   assert.equal(await control(page, 'w').isDisabled(), false);
@@ -128,10 +161,12 @@ function jumpiness(/** @type {{width: number, height: number, channels: number, 
     return 0.299 * data[k] + 0.587 * data[k + 1] + 0.114 * data[k + 2];
   };
   const background = grey(2, height - 2);
-  let pairs = 0, jumps = 0;
+  let pairs = 0,
+    jumps = 0;
   for (let y = 0; y < height; y++) {
     for (let x = 0; x + 1 < width; x++) {
-      const a = grey(x, y), b = grey(x + 1, y);
+      const a = grey(x, y),
+        b = grey(x + 1, y);
       if (Math.abs(a - background) < 4 || Math.abs(b - background) < 4) continue;
       pairs++;
       if (Math.abs(a - b) > 48) jumps++;
@@ -144,10 +179,19 @@ test('large models: no moiré on the strip, and ruling lines thinned so they sta
   const { page, problems } = await session.open('#scene=large&n=10000');
   const strip = await shoot(page, 'large-strip');
   const stripJumps = jumpiness(strip);
-  assert.ok(stripJumps < 0.02, `strip of 10 000 rulings: ${(100 * stripJumps).toFixed(2)} % of neighbouring pixels jump`);
+  assert.ok(
+    stripJumps < 0.02,
+    `strip of 10 000 rulings: ${(100 * stripJumps).toFixed(2)} % of neighbouring pixels jump`,
+  );
   await page.locator('.rl-controls [name="rulings"]').check();
   await ready(page);
-  const lines = Number(await page.locator('.rl-readout dd').nth(2).textContent().then((t) => t.replace(/\D/g, '')));
+  const lines = Number(
+    await page
+      .locator('.rl-readout dd')
+      .nth(2)
+      .textContent()
+      .then((t) => t.replace(/\D/g, '')),
+  );
   assert.ok(lines > 50 && lines <= 161, `${lines} ruling lines drawn`);
   assert.match(await page.locator('.rl-readout-note').textContent(), /One ruling in \d+ is drawn as a line/);
   assert.deepEqual(problems, []);

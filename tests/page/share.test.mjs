@@ -20,14 +20,20 @@ let files;
 before(async () => (files = await launch({ acceptDownloads: true })));
 after(() => files?.close());
 
-const near = (/** @type {number[]} */ a, /** @type {number[]} */ b) => a.length === b.length && a.every((x, i) => Math.abs(x - b[i]) <= 1e-4 * Math.max(1, Math.abs(x)));
+const near = (/** @type {number[]} */ a, /** @type {number[]} */ b) =>
+  a.length === b.length && a.every((x, i) => Math.abs(x - b[i]) <= 1e-4 * Math.max(1, Math.abs(x)));
 
 /** Opens the dialog and reads its fields (null where a field is not offered). */
 async function dialog(page) {
   await page.locator('#share').click();
   await page.locator('#share-dialog[data-ready="1"] #share-element').waitFor();
   const value = async (id) => ((await page.locator(`#${id}`).count()) ? page.locator(`#${id}`).inputValue() : null);
-  return { link: await value('share-link'), iframe: await value('share-iframe'), element: await value('share-element'), nowhere: (await page.locator('#share-nowhere').count()) ? await page.locator('#share-nowhere').innerText() : null };
+  return {
+    link: await value('share-link'),
+    iframe: await value('share-iframe'),
+    element: await value('share-element'),
+    nowhere: (await page.locator('#share-nowhere').count()) ? await page.locator('#share-nowhere').innerText() : null,
+  };
 }
 
 test('from the served page: the link, the iframe and the element each show this view on another site', async () => {
@@ -39,16 +45,25 @@ test('from the served page: the link, the iframe and the element each show this 
   await page.mouse.move(box.x + box.width / 2 + 70, box.y + box.height / 2 + 25, { steps: 4 });
   await page.mouse.up();
   await page.waitForTimeout(300);
-  const want = await page.evaluate(() => ({ camera: window.ruledlab.stage.viewer.camera.toArray(), params: { ...window.ruledlab.stage.params } }));
+  const want = await page.evaluate(() => ({
+    camera: window.ruledlab.stage.viewer.camera.toArray(),
+    params: { ...window.ruledlab.stage.params },
+  }));
   const got = await dialog(page);
   assert.equal(got.nowhere, null);
-  assert.match(got.element, /^<script defer src="http:\/\/[^"]+\/dist\/ruledlab-embed\.js"><\/script>\n<ruled-view scene="curves" params="[^"]*" camera="[^"]+" lang="de" controls/);
+  assert.match(
+    got.element,
+    /^<script defer src="http:\/\/[^"]+\/dist\/ruledlab-embed\.js"><\/script>\n<ruled-view scene="curves" params="[^"]*" camera="[^"]+" lang="de" controls/,
+  );
   await page.close();
 
   // the link
   const linked = await session.open(got.link.replace(session.url, ''));
   assert.deepEqual(await linked.page.evaluate(() => ({ ...window.ruledlab.stage.params })), want.params);
-  assert.ok(near(await linked.page.evaluate(() => window.ruledlab.stage.viewer.camera.toArray()), want.camera), 'the link lost the camera');
+  assert.ok(
+    near(await linked.page.evaluate(() => window.ruledlab.stage.viewer.camera.toArray()), want.camera),
+    'the link lost the camera',
+  );
   assert.equal(await linked.page.evaluate(() => document.documentElement.lang), 'de');
   await linked.page.close();
 
@@ -57,9 +72,16 @@ test('from the served page: the link, the iframe and the element each show this 
   const pasted = await session.open(url, { wait: false });
   const frame = pasted.page.frameLocator('iframe');
   await frame.locator('.rl-stage[data-ready="1"]').waitFor({ timeout: 60000 });
-  await pasted.page.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, { timeout: 60000 });
+  await pasted.page.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, {
+    timeout: 60000,
+  });
   await pasted.page.waitForTimeout(300);
-  const element = await pasted.page.locator('ruled-view').evaluate((v) => ({ params: { ...v.view.params }, camera: v.view.viewer.camera.toArray(), lang: v.view.i18n.lang, controls: v.shadowRoot.querySelectorAll('.rl-controls [name]').length }));
+  const element = await pasted.page.locator('ruled-view').evaluate((v) => ({
+    params: { ...v.view.params },
+    camera: v.view.viewer.camera.toArray(),
+    lang: v.view.i18n.lang,
+    controls: v.shadowRoot.querySelectorAll('.rl-controls [name]').length,
+  }));
   assert.deepEqual(element.params, want.params);
   assert.ok(near(element.camera, want.camera), `the element lost the camera: ${element.camera} vs ${want.camera}`);
   assert.equal(element.lang, 'de');
@@ -67,7 +89,9 @@ test('from the served page: the link, the iframe and the element each show this 
   assert.ok(drawnShare(await pasted.page.locator('ruled-view').screenshot()) > 0.01, 'the element drew nothing');
   assert.ok(drawnShare(await pasted.page.locator('iframe').screenshot()) > 0.01, 'the iframe drew nothing');
   assert.deepEqual([...problems, ...linked.problems, ...pasted.problems], []);
-  const foreign = pasted.requests.filter((u) => !u.startsWith(session.url) && u.split('#')[0] !== url && !u.startsWith('data:') && !u.startsWith('blob:'));
+  const foreign = pasted.requests.filter(
+    (u) => !u.startsWith(session.url) && u.split('#')[0] !== url && !u.startsWith('data:') && !u.startsWith('blob:'),
+  );
   assert.deepEqual(foreign, []);
   await pasted.page.close();
 });
@@ -83,8 +107,14 @@ test('from a downloaded file: no address offered, and the element with its scrip
   assert.equal(got.link, null, 'a file:// link offered as if anyone could open it');
   assert.equal(got.iframe, null, 'a file:// iframe offered');
   assert.match(got.nowhere, /opened from a file/);
-  assert.match(got.element, /^<script defer src="ruledlab-embed\.js"><\/script>\n<ruled-view scene="curves" paper="fig8" params="" camera="[^"]+" lang="en"/);
-  assert.match(await page.locator('#share-dialog').innerText(), /Upload ruledlab-embed\.js \(the button below downloads it\) next to your page/);
+  assert.match(
+    got.element,
+    /^<script defer src="ruledlab-embed\.js"><\/script>\n<ruled-view scene="curves" paper="fig8" params="" camera="[^"]+" lang="en"/,
+  );
+  assert.match(
+    await page.locator('#share-dialog').innerText(),
+    /Upload ruledlab-embed\.js \(the button below downloads it\) next to your page/,
+  );
   // the script it hands out, and the snippet as handed out, side by side in a folder
   const [download] = await Promise.all([page.waitForEvent('download'), page.locator('#share-embed').click()]);
   const site2 = mkdtempSync(join(tmpdir(), 'ruledlab-lecture-'));
@@ -97,11 +127,16 @@ test('from a downloaded file: no address offered, and the element with its scrip
   const requests = [];
   lecture.on('request', (r) => requests.push(r.url()));
   await lecture.goto(pathToFileURL(join(site2, 'lecture.html')).href);
-  await lecture.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, { timeout: 60000 });
+  await lecture.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, {
+    timeout: 60000,
+  });
   await lecture.waitForTimeout(300);
   assert.ok(drawnShare(await lecture.locator('ruled-view').screenshot()) > 0.01);
   assert.equal(await lecture.locator('ruled-view').evaluate((v) => v.view.paper?.id), 'fig8');
-  assert.deepEqual(requests.filter((u) => !u.startsWith('file:') && !u.startsWith('data:') && !u.startsWith('blob:')), []);
+  assert.deepEqual(
+    requests.filter((u) => !u.startsWith('file:') && !u.startsWith('data:') && !u.startsWith('blob:')),
+    [],
+  );
   assert.deepEqual([...problems, ...seen], []);
   await lecture.close();
 });

@@ -5,7 +5,8 @@ import { pageSession, shoot, framesAfter, animationFrames, ready, control, showS
 import { countDifferent } from './png.mjs';
 
 const BACKGROUND = [251, 250, 247];
-const CSP = "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self' blob:; style-src 'self'; img-src 'self' blob: data:; object-src 'none'; base-uri 'none'; frame-ancestors 'self'";
+const CSP =
+  "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; worker-src 'self' blob:; style-src 'self'; img-src 'self' blob: data:; object-src 'none'; base-uri 'none'; frame-ancestors 'self'";
 const session = pageSession({ headers: { 'content-security-policy': CSP } });
 const open = (hash) => session.open(hash);
 
@@ -17,7 +18,10 @@ test('every scene works under a strict CSP (no inline script or style) and reque
   for (const id of scenes) {
     await showScene(page, `#scene=${id}`, id);
     const image = await shoot(page, `csp-${id}`);
-    assert.ok(countDifferent(image, BACKGROUND) > 0.005 * image.width * image.height, `${id} drew nothing under the CSP`);
+    assert.ok(
+      countDifferent(image, BACKGROUND) > 0.005 * image.width * image.height,
+      `${id} drew nothing under the CSP`,
+    );
   }
   await page.close();
   assert.deepEqual(problems, []);
@@ -28,7 +32,8 @@ test('every scene works under a strict CSP (no inline script or style) and reque
 
 test('a storm of resizes and rapid slider input leave the page consistent and error-free', async () => {
   const { page, problems } = await open('#scene=striction');
-  for (let k = 0; k < 40; k++) await page.setViewportSize({ width: 500 + ((k * 97) % 900), height: 400 + ((k * 53) % 500) });
+  for (let k = 0; k < 40; k++)
+    await page.setViewportSize({ width: 500 + ((k * 97) % 900), height: 400 + ((k * 53) % 500) });
   await page.setViewportSize({ width: 1200, height: 800 });
   for (let k = 0; k < 60; k++) await control(page, 'n').fill(String(6 + ((k * 37) % 150)), { timeout: 2000 });
   const f = await page.evaluate(() => Number(document.body.dataset.frames));
@@ -37,7 +42,12 @@ test('a storm of resizes and rapid slider input leave the page consistent and er
   await framesAfter(page, f);
   const size = await page.evaluate(() => {
     const c = document.querySelector('.rl-view canvas');
-    return { w: c.width, h: c.height, cw: Math.round(c.clientWidth * devicePixelRatio), ch: Math.round(c.clientHeight * devicePixelRatio) };
+    return {
+      w: c.width,
+      h: c.height,
+      cw: Math.round(c.clientWidth * devicePixelRatio),
+      ch: Math.round(c.clientHeight * devicePixelRatio),
+    };
   });
   assert.deepEqual([size.w, size.h], [size.cw, size.ch], 'the canvas follows its size');
   assert.match(await page.locator('.rl-readout').innerText(), /\b77\b/);
@@ -56,7 +66,10 @@ test('the 1 280 000-ruling link keeps the page answering, finishes, and draws a 
   await ready(page, 240000);
   const readout = await page.locator('.rl-readout').innerText();
   assert.match(readout, /1[\s,.]?279[\s,.]?873/);
-  assert.match(await page.locator('.rl-readout-note').innerText(), /Level of detail: the strip is drawn through one ruling in 13 /);
+  assert.match(
+    await page.locator('.rl-readout-note').innerText(),
+    /Level of detail: the strip is drawn through one ruling in 13 /,
+  );
   // still answering after it is drawn: orbiting keeps producing frames
   const after = await animationFrames(page);
   assert.ok(after >= 4, `the page is slow after drawing: ${after} frames in 500 ms`);
@@ -74,8 +87,16 @@ test('while the camera moves a heavy strip is drawn from its lighter stand-in, i
   const frames = await page.evaluate(() => Number(document.body.dataset.frames));
   await page.keyboard.press('ArrowLeft');
   await framesAfter(page, frames);
-  assert.equal(await canvas.getAttribute('data-detail'), 'stand-in', 'the frame right after the move uses the stand-in');
-  await page.waitForFunction(() => document.querySelector('.rl-view canvas')?.getAttribute('data-detail') === 'full', null, { timeout: 5000 });
+  assert.equal(
+    await canvas.getAttribute('data-detail'),
+    'stand-in',
+    'the frame right after the move uses the stand-in',
+  );
+  await page.waitForFunction(
+    () => document.querySelector('.rl-view canvas')?.getAttribute('data-detail') === 'full',
+    null,
+    { timeout: 5000 },
+  );
   // a light scene never switches
   await page.evaluate(() => (location.hash = '#scene=large&n=1000'));
   await page.waitForFunction(() => /1,000|1 000|1000/.test(document.querySelector('.rl-readout')?.textContent ?? ''));

@@ -10,7 +10,7 @@ const session = pageSession();
 
 const PAYLOADS = [
   '"><img src=x onerror="window.__pwned=1">',
-  "<svg onload=window.__pwned=1></svg>",
+  '<svg onload=window.__pwned=1></svg>',
   'javascript:window.__pwned=1',
   '<math><mtext><table><mglyph><style><img src=x onerror=window.__pwned=1>',
   '</script><script>window.__pwned=1</script>',
@@ -41,8 +41,15 @@ function injected(p) {
     const found = [];
     const scan = (root) => {
       for (const el of root.querySelectorAll('*')) {
-        const handlers = [...el.attributes].filter((a) => /^on/i.test(a.name) || /javascript:/i.test(a.value) && /^(href|src|action|formaction)$/i.test(a.name));
-        if (handlers.length || el.matches('img[src="x"], iframe[srcdoc], script:not([src]):not([type="application/json"]), mglyph')) found.push(el.outerHTML.slice(0, 80));
+        const handlers = [...el.attributes].filter(
+          (a) =>
+            /^on/i.test(a.name) || (/javascript:/i.test(a.value) && /^(href|src|action|formaction)$/i.test(a.name)),
+        );
+        if (
+          handlers.length ||
+          el.matches('img[src="x"], iframe[srcdoc], script:not([src]):not([type="application/json"]), mglyph')
+        )
+          found.push(el.outerHTML.slice(0, 80));
         if (el.shadowRoot) scan(el.shadowRoot);
       }
     };
@@ -65,7 +72,9 @@ test('links whose every value is a payload: nothing runs, nothing is injected, e
   const p = await page();
   await p.goto(session.url);
   await ready(p);
-  const scenes = await p.evaluate(() => window.ruledlab.scenes.map((s) => ({ id: s.id, keys: s.params.map((q) => q.key) })));
+  const scenes = await p.evaluate(() =>
+    window.ruledlab.scenes.map((s) => ({ id: s.id, keys: s.params.map((q) => q.key) })),
+  );
   for (const [k, payload] of PAYLOADS.entries()) {
     for (const { id, keys } of scenes) {
       const q = new URLSearchParams({ scene: id, lang: payload, cam: payload, data: payload });
@@ -108,8 +117,15 @@ test('<ruled-view> with payload attributes and properties shows errors as text',
   await p.waitForTimeout(1500);
   assert.equal(await p.evaluate(() => window.__pwned), 0);
   assert.deepEqual(await injected(p), []);
-  const errors = await p.evaluate(() => [...document.querySelectorAll('ruled-view')].map((v) => v.shadowRoot.querySelector('.rl-error')?.textContent ?? '').filter(Boolean));
-  assert.ok(errors.some((e) => e.includes('<img src=x')), 'the payload is shown as text in the error');
+  const errors = await p.evaluate(() =>
+    [...document.querySelectorAll('ruled-view')]
+      .map((v) => v.shadowRoot.querySelector('.rl-error')?.textContent ?? '')
+      .filter(Boolean),
+  );
+  assert.ok(
+    errors.some((e) => e.includes('<img src=x')),
+    'the payload is shown as text in the error',
+  );
   await p.close();
 });
 
@@ -119,7 +135,12 @@ test('pasted CSV/JSON and typed formulas carrying payloads stay text', async () 
   await ready(p);
   await p.locator('.io summary').click();
   for (const payload of PAYLOADS) {
-    for (const text of [payload, `0,0,0,1,0,0\n${payload}`, `[[0,0,0,1,0,0], "${payload.replace(/"/g, '\\"')}"]`, `{"rows": 1, "${payload.replace(/"/g, '')}": 2}`]) {
+    for (const text of [
+      payload,
+      `0,0,0,1,0,0\n${payload}`,
+      `[[0,0,0,1,0,0], "${payload.replace(/"/g, '\\"')}"]`,
+      `{"rows": 1, "${payload.replace(/"/g, '')}": 2}`,
+    ]) {
       await p.locator('#import-text').fill(text);
       await p.locator('#import-button').click();
       assert.equal(await p.locator('#import-error').isVisible(), true);
