@@ -4,7 +4,9 @@
 (() => {
   const box = document.getElementById('boot');
   if (!box) return;
-  var de = /^de\b/i.test(navigator.language || '');
+  // the page's language: the link's (#lang=de), else the browser's
+  var wanted = /(?:^#|&)lang=([a-zA-Z-]+)/.exec(location.hash);
+  var de = /^de\b/i.test(wanted ? wanted[1] : navigator.language || '');
   var text = {
     file: de
       ? 'Diese Seite besteht aus einzelnen Dateien, die ein Browser nicht von der Festplatte lädt. Starten Sie „npm start“ im Ordner von ruledlab und öffnen Sie die angezeigte Adresse, oder öffnen Sie dist/ruledlab.html, die Fassung in einer Datei, die auch von der Festplatte und in Lernplattformen läuft.'
@@ -19,7 +21,9 @@
     return;
   }
   setTimeout(() => {
-    if (document.getElementById('boot') && !document.documentElement.hasAttribute('data-started')) {
+    // (a start that failed has said why already, in the page's language: that stays)
+    var root = document.documentElement;
+    if (document.getElementById('boot') && !root.hasAttribute('data-started') && !root.hasAttribute('data-failed')) {
       box.textContent = text.slow;
       box.className = 'boot boot-problem';
     }

@@ -95,7 +95,10 @@ for (const width of [280, 390, 700, 1280]) {
         await page.keyboard.press('Enter');
       }
       await page.waitForTimeout(350);
-      assert.ok(countChanged(before, await picture()) > 200, `${width} px: "${key}" did not change the picture`);
+      // the renderer is deterministic (an unchanged picture changes no pixel); the smallest real
+      // change here is Fig. 2's exact striction curve at 280 px, mostly under the polygon that
+      // approximates it (44 pixels), its legend entry being in the panel under the view
+      assert.ok(countChanged(before, await picture()) > 30, `${width} px: "${key}" did not change the picture`);
     }
     assert.ok(drawnShare(await page.locator('ruled-view').screenshot()) > 0.02);
     assert.deepEqual(problems, []);

@@ -3,7 +3,7 @@
 // (Spalte 3).“); ui/errors.js setzt sie aus details.reason und details.args zusammen.
 // tests/node/messages.test.mjs verlangt für jeden Grund einen Text mit denselben Platzhaltern.
 
-/** Feldnamen der Formelszenen in Meldungen: „z-Komponente von e(u)“, „Anfang von u“. */
+/** Feldnamen der Formelszenen in Meldungen: „z-Komponente von e(u)“, das Feld „u von“. */
 /** @type {Array<[string, Array<[string, string]>]>} */
 const FORMULA_FIELDS = [
   [
@@ -27,8 +27,9 @@ const fields = Object.fromEntries(
       ['x', 'y', 'z'].map((c) => [`${scene}.param.${v}${c}.field`, `${c}-Komponente von ${name}`]),
     ),
     ...['u', 'v'].flatMap((x) => [
-      [`${scene}.param.${x}min.field`, `Anfang von ${x}`],
-      [`${scene}.param.${x}max.field`, `Ende von ${x}`],
+      // named as the page labels the fields
+      [`${scene}.param.${x}min.field`, `das Feld „${x} von“`],
+      [`${scene}.param.${x}max.field`, `das Feld „${x} bis“`],
     ]),
   ]),
 );

@@ -28,8 +28,9 @@ const fields = Object.fromEntries(
       ['x', 'y', 'z'].map((c) => [`${scene}.param.${v}${c}.field`, `the ${c} component of ${name}`]),
     ),
     ...['u', 'v'].flatMap((x) => [
-      [`${scene}.param.${x}min.field`, `the start of ${x}`],
-      [`${scene}.param.${x}max.field`, `the end of ${x}`],
+      // named as the page labels the fields
+      [`${scene}.param.${x}min.field`, `the field “${x} from”`],
+      [`${scene}.param.${x}max.field`, `the field “${x} to”`],
     ]),
   ]),
 );

@@ -103,12 +103,15 @@ export function startFailure(error, { t }) {
   const key =
     e?.code === 'no-webgl2'
       ? 'boot.noWebgl2'
-      : typeof WebAssembly === 'undefined' ||
-          e instanceof WebAssembly.CompileError ||
-          e instanceof WebAssembly.LinkError
-        ? 'boot.noWasm'
-        : /fetch|import|load|network|MIME/i.test(technical)
-          ? 'boot.load'
-          : 'boot.failed';
+      : // a page whose Content-Security-Policy forbids compiling WebAssembly (not the browser's fault)
+        /Content.Security.Policy|wasm-unsafe-eval|unsafe-eval/i.test(technical)
+        ? 'boot.cspWasm'
+        : typeof WebAssembly === 'undefined' ||
+            e instanceof WebAssembly.CompileError ||
+            e instanceof WebAssembly.LinkError
+          ? 'boot.noWasm'
+          : /fetch|import|load|network|MIME/i.test(technical)
+            ? 'boot.load'
+            : 'boot.failed';
   return { text: t(key), technical };
 }
