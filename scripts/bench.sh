@@ -12,3 +12,4 @@ GLIBC_TUNABLES=glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967295 \
   cargo bench --bench invariants --bench subdivision --bench congruence
 node bench/wasm.mjs
 node bench/page.mjs
+node bench/drag.mjs

@@ -48,6 +48,33 @@ try {
     console.log(`docs/${file}`);
   }
 
+  // editing: a ruling of the hyperboloid twisted by its end, the striction polygon following,
+  // every handle shown (E), the moved one selected
+  await page.goto(`${url}#scene=striction&n=24&normals=0`);
+  await page.waitForFunction(
+    () => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1',
+  );
+  const grab = await page.evaluate(() => {
+    const stage = /** @type {any} */ (window).ruledlab.stage;
+    const r = stage.viewer.canvas.getBoundingClientRect();
+    const m = stage.viewer.camera.viewProj(r.width / r.height);
+    // ruling 16's end a, in front
+    const [x, y, z] = stage.editor.handles()[32].world;
+    const w = m[3] * x + m[7] * y + m[11] * z + m[15];
+    return {
+      x: r.left + (((m[0] * x + m[4] * y + m[8] * z + m[12]) / w + 1) / 2) * r.width,
+      y: r.top + ((1 - (m[1] * x + m[5] * y + m[9] * z + m[13]) / w) / 2) * r.height,
+    };
+  });
+  await page.mouse.move(grab.x, grab.y);
+  await page.mouse.down();
+  await page.mouse.move(grab.x + 90, grab.y + 40, { steps: 8 });
+  await page.mouse.up();
+  await page.keyboard.press('e');
+  await page.waitForTimeout(300);
+  writeFileSync(join(DOCS, 'screenshot-edit.png'), await page.screenshot());
+  console.log('docs/screenshot-edit.png');
+
   await page.goto(`${url}examples/web-component.html`);
   for (const [scene, params, camera, file] of FIGURES) {
     const svg = await page.evaluate(

@@ -17,6 +17,7 @@ import { stored } from './platform.js';
 import { pageChrome, plainTitle } from './page/chrome.js';
 import { dataPanel, parseStored, STORED } from './page/data-panel.js';
 import { pageAddress } from './page/address.js';
+import { keepInput, keptInput } from './page/stored-input.js';
 
 /**
  * The page (see the module documentation).
@@ -44,14 +45,25 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       camera: stage.viewer.camera.toArray(),
       lang: state.lang,
       data: stage.data,
+      input: stage.input,
       paper: stage.paper?.id ?? null,
     };
   const address = pageAddress({ oneFile, state: shown });
   const stage = new Stage(chrome.main, {
     lang,
     page: true,
-    onChange: ({ reason, ended }) => address.save(reason === 'scene' ? 'push' : 'replace', ended),
+    editable: !state.embed || !!state.edit,
+    onChange: ({ reason, ended }) => {
+      // an edit too large for the link stays in the tab (and the page says so)
+      if (ended && stage.scene && (reason === 'input' || reason === 'reset')) {
+        stage.inputNote = keepInput(stage.scene.id, stage.input);
+        stage.showEditing();
+      }
+      address.save(reason === 'scene' ? 'push' : 'replace', ended);
+    },
     onBuilt: (built) => data.update(built),
+    onEditAsData: (imported) =>
+      go(/** @type {import('./scene.js').Scene} */ (SCENES.find((s) => s.id === 'data')), {}, { data: imported }),
   });
   doc.body.append(share);
 
@@ -85,13 +97,18 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     if (state.lang && pickLanguage(state.lang) !== lang) setLanguage(pickLanguage(state.lang), false);
     doc.body.classList.toggle('embed', state.embed);
     stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
+    stage.setEditable(!state.embed || !!state.edit);
     const text = stored(STORED);
+    // an edit: the link's, or one too large for it that this tab kept
+    const input = state.input ?? keptInput(state.scene.id);
     await stage.open(state.scene, state.params, {
       camera: state.camera,
       data: state.data ?? (text ? parseStored(text) : null),
       notes: state.notes,
       autoplay: state.autoplay,
       paper: findPreset(state.paper) ?? null,
+      input,
+      inputNote: input && !state.input ? keepInput(state.scene.id, input) : '',
     });
     localize();
   };
@@ -154,6 +171,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
 /** Says, in the reader's language, that the page could not start (and why); rethrows. */
 export function showStartFailure(/** @type {unknown} */ e) {
   const box = document.getElementById('boot') ?? document.body.appendChild(document.createElement('p'));
+  // boot.js's later "does not start" must not replace the reason said here
+  document.documentElement.dataset.failed = '1';
   const i18n = translator(pickLanguage(new URLSearchParams(location.hash.slice(1)).get('lang')));
   showFailure(box, e, i18n);
   throw e;

@@ -40,3 +40,17 @@ export const PORTRAIT = 1000;
 export const TINY = 360;
 /** Below this width of the view, the mouse hint is left out (the toolbar needs the room). */
 export const SMALL_VIEW = 560;
+
+/** Most handles of an edited input kept in the link; a larger edit goes to session storage. */
+export const MAX_LINK_HANDLES = 200;
+/** A handle is grabbed within this distance of the pointer (CSS px), on fine and on coarse pointers. */
+export const HANDLE_REACH = 10;
+export const HANDLE_REACH_COARSE = 22;
+/** Handles stay in the box of the scene's bounds scaled by this about its centre. */
+export const EDIT_BOX = 10;
+/** One arrow key moves a handle by this share of the scene's size (Shift: a tenth of it). */
+export const KEY_STEP = 0.02;
+/** A finger held this long on a handle without moving shows its coordinates (ms). */
+export const LONG_PRESS = 500;
+/** A pointer that moves less than this (CSS px) has not started a drag yet (a press, a long press). */
+export const DRAG_SLOP = 3;

@@ -10,9 +10,15 @@
 // the readout, beside or below the view as the element's width allows), `text` (the
 // explanation too), `autoplay` (play the first playable parameter, unless the reader prefers
 // reduced motion), `lang` ("en" or "de"; default: the page's language, then the browser's),
-// `camera` (yaw, pitch, distance, target x, y, z: the page's `cam` link value). The
-// property `data` ({ segments: Float64Array, rows?, cols? }) shows your own rulings or
-// congruence. Events: `scene-change` (detail: { scene, params }), `view-change` (detail: the
+// `camera` (yaw, pitch, distance, target x, y, z: the page's `cam` link value), `editable` (the
+// reader may drag the scene's handles: rulings' endpoints, grid points, tool poses, control
+// points), `input` (an edit of those handles: the page's `input` link value). The property
+// `data` is the scene's input, `{ set: Float64Array, … }` per handle set (a copy; setting it
+// replaces the input); set to `{ segments: Float64Array, rows?, cols? }` it shows your own
+// rulings or congruence in the "data" scene. `height` sizes the element (pixels or a CSS length,
+// without an inline style a strict Content-Security-Policy would refuse). `handles()` lists every handle with its position
+// in the element. Events: `input` during a drag and `change` at its end (detail: { scene, data,
+// readouts }), `scene-change` (detail: { scene, params }), `view-change` (detail: the
 // camera, during a move), `camera-change` (detail: { camera, yaw, pitch, distance, target },
 // once a move ends; `camera` is the attribute's value), `error` (detail: { message, code },
 // the message in the element's language, also shown in the element). The element starts the
@@ -22,6 +28,9 @@ import { Stage } from './stage.js';
 import { SCENES } from './scenes/index.js';
 import { readParams, defaults } from './scene.js';
 import { readCamera, writeCamera } from './state.js';
+import { decodeInput, encodeInput, fitsSets, linkableInput } from './edit/input.js';
+import { toScreen } from './edit/geometry.js';
+import { plainRich } from './ui/richtext.js';
 import { start } from './core.js';
 import { translator, pickLanguage } from './i18n/index.js';
 import { startFailure } from './ui/errors.js';
@@ -35,7 +44,7 @@ import { png } from './export/png.js';
 // the element is a box of its own size: the view and its controls stay inside it at every width
 // (beside each other when there is room, the panel under the view and scrolling inside the box
 // otherwise: ui/css.js)
-const HOST_CSS = `:host { display: block; position: relative; height: 480px; min-height: 240px; overflow: hidden; contain: content; }
+const HOST_CSS = `:host { display: block; position: relative; max-width: 100%; height: 480px; min-height: 240px; overflow: hidden; contain: content; }
 :host([hidden]) { display: none; }
 .rl-failed { margin: 1rem; padding: .8rem 1rem; color: #5a1a12; background: #fff3ef; border: 1px solid #e6b2aa; border-radius: 8px; font: 15px/1.45 system-ui, sans-serif; }
 .rl-host { width: 100%; height: 100%; }`;
@@ -61,17 +70,46 @@ let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
  * @property {string | null} code           the error's stable code (README, "Errors")
  * @property {object | null} details        the core's details (reason, args, option, …)
  *
+ * @typedef {object} EditDetail   `input` (during a drag) and `change` (at its end): what the reader made
+ * @property {string} scene
+ * @property {import('./scene.js').Input} data       the scene's input, per handle set (copies)
+ * @property {Array<{key: string, label: string, value: number | string}>} readouts   the numbers
+ *   shown: the label's i18n key, its text, and the value (a number, or a word)
+ *
+ * @typedef {object} HandleInfo   one handle of `handles()`
+ * @property {string} set         the handle set's key ("rulings", "lines", "poses", "points")
+ * @property {number} index       the handle's index in its set (pairs: 2k and 2k + 1 are line k's ends)
+ * @property {string} name        its name, as the element says it ("ruling 5, end b")
+ * @property {number[]} point     where it is, in the scene's coordinates
+ * @property {number} x           where it is drawn, in CSS px from the element's left
+ * @property {number} y           … and top
+ * @property {boolean} visible    in front of the camera
+ *
  * @typedef {object} RuledViewEvents       the events of <ruled-view> and their details
+ * @property {CustomEvent<EditDetail>} input
+ * @property {CustomEvent<EditDetail>} change
  * @property {CustomEvent<SceneChangeDetail>} scene-change
  * @property {CustomEvent<ViewChangeDetail>} view-change
  * @property {CustomEvent<CameraChangeDetail>} camera-change
  * @property {CustomEvent<RuledViewErrorDetail>} error
  *
- * @typedef {Omit<HTMLElementEventMap, 'error'> & RuledViewEvents} RuledViewEventMap
+ * @typedef {Omit<HTMLElementEventMap, 'error' | 'input' | 'change'> & RuledViewEvents} RuledViewEventMap
  */
 
 export class RuledView extends HTMLElement {
-  static observedAttributes = ['scene', 'paper', 'params', 'controls', 'text', 'autoplay', 'lang', 'camera'];
+  static observedAttributes = [
+    'scene',
+    'paper',
+    'params',
+    'controls',
+    'text',
+    'autoplay',
+    'lang',
+    'camera',
+    'editable',
+    'input',
+    'height',
+  ];
 
   constructor() {
     super();
@@ -83,6 +121,8 @@ export class RuledView extends HTMLElement {
     /** @internal */
     this.container = Object.assign(document.createElement('div'), { className: 'rl-host' });
     root.append(this.container);
+    // the controls' own input and change events stay inside: the element's are the reader's edits
+    for (const type of ['input', 'change']) this.container.addEventListener(type, (e) => e.stopPropagation());
     /** @internal @type {Stage | null} */
     this.stage = null;
     /** @internal @type {import('./scene.js').ImportedData | null} */
@@ -169,14 +209,106 @@ export class RuledView extends HTMLElement {
   set camera(value) {
     this.setAttribute('camera', String(value));
   }
-  /** Your own segments: { segments: Float64Array (6 per line), rows?, cols? }; selects the "data" scene. */
-  get data() {
-    return this._data;
+  /**
+   * The element's height: a number of CSS pixels ("560") or a CSS length ("70vh"); set through
+   * the CSS object model, which a Content-Security-Policy without 'unsafe-inline' allows (a
+   * `style` attribute it refuses).
+   */
+  get height() {
+    return this.getAttribute('height') ?? '';
   }
+  set height(value) {
+    this.setAttribute('height', String(value));
+  }
+
+  /** @internal Applies the `height` attribute. */
+  sized() {
+    const h = (this.getAttribute('height') ?? '').trim();
+    if (!h) return;
+    const px = /^\d+(\.\d+)?$/.test(h) ? `${h}px` : h;
+    if (CSS.supports('height', px)) this.style.height = px;
+  }
+
+  /** Whether the reader may drag the scene's handles. */
+  get editable() {
+    return this.hasAttribute('editable');
+  }
+  set editable(on) {
+    this.toggleAttribute('editable', !!on);
+  }
+  /** The edit of the scene's input as the attribute writes it (the link's `input` value); the current one once shown. */
+  get input() {
+    const input = this.stage?.input;
+    return input && linkableInput(input) ? encodeInput(input) : (this.getAttribute('input') ?? '');
+  }
+  set input(value) {
+    this.setAttribute('input', String(value));
+  }
+
+  /**
+   * The scene's input, `{ set: Float64Array, … }` per handle set (a copy; null while nothing is
+   * shown or the scene has no handles). Setting it replaces the input (one step of undo; the
+   * sets and their lengths must be the scene's); setting `{ segments, rows?, cols? }` shows your
+   * own rulings or congruence in the "data" scene.
+   * @returns {import('./scene.js').Input | null}
+   */
+  get data() {
+    return this.stage?.currentInput() ?? null;
+  }
+  /** @param {import('./scene.js').Input | import('./scene.js').ImportedData | null} value */
   set data(value) {
-    this._data = value;
-    if (this.scene !== 'data') this.scene = 'data';
-    else this.open();
+    if (value && 'segments' in value && value.segments instanceof Float64Array) {
+      this._data = /** @type {import('./scene.js').ImportedData} */ (value);
+      if (this.scene !== 'data') this.scene = 'data';
+      else this.open();
+      return;
+    }
+    const stage = this.stage;
+    const sets = stage?.session.built?.input?.sets;
+    const input = /** @type {import('./scene.js').Input | null} */ (value);
+    if (!stage || !sets?.length)
+      throw Object.assign(new Error('ruled-view: this scene has no input to set (or it is not shown yet)'), {
+        code: 'invalid-argument',
+      });
+    if (!input || !fitsSets(input, sets) || !Object.values(input).every((v) => v.every(Number.isFinite)))
+      throw Object.assign(
+        new Error(
+          `ruled-view: data must have the scene's sets, each a Float64Array of finite numbers as long as now: ${sets
+            .map((s) => `${s.key} (${s.points.length})`)
+            .join(', ')}`,
+        ),
+        { code: 'invalid-argument' },
+      );
+    stage.editor.replace(input);
+  }
+
+  /**
+   * Every handle of the scene's input: its set, index, name, point and where it is drawn in the
+   * element (CSS px).
+   * @returns {HandleInfo[]}
+   */
+  handles() {
+    const stage = this.stage;
+    if (!stage) return [];
+    const editor = stage.editor;
+    const canvas = stage.viewer.canvas;
+    const host = this.getBoundingClientRect();
+    const view = canvas.getBoundingClientRect();
+    const w = canvas.clientWidth || 1,
+      h = canvas.clientHeight || 1;
+    const m = stage.viewer.camera.viewProj(w / h);
+    return editor.handles().map((handle) => {
+      const s = toScreen(m, handle.world, w, h);
+      return {
+        set: handle.key,
+        index: handle.index,
+        name: editor.nameOf(handle),
+        point: handle.point,
+        x: view.left - host.left + s.x,
+        y: view.top - host.top + s.y,
+        visible: s.visible,
+      };
+    });
   }
 
   /** The Stage showing the scene (null while disconnected). */
@@ -186,6 +318,7 @@ export class RuledView extends HTMLElement {
 
   /** @internal */
   connectedCallback() {
+    this.sized();
     if (this.stage) return;
     const lang = this.getAttribute('lang') || this.closest('[lang]')?.getAttribute('lang') || null;
     try {
@@ -210,7 +343,22 @@ export class RuledView extends HTMLElement {
       controls: this.controls,
       text: this.text,
       lang,
+      editable: this.editable,
+      onEditAsData: (data) => {
+        this.data = data;
+      },
       onChange: ({ reason, ended }) => {
+        if (reason === 'input' && this.stage?.scene) {
+          const stage = this.stage;
+          const scene = this.stage.scene;
+          const readouts = (stage.session.built?.readouts ?? []).map(({ label, value }) => ({
+            key: label,
+            label: plainRich(stage.i18n.t(label)),
+            value: typeof value === 'number' ? value : stage.i18n.t(String(value)),
+          }));
+          const detail = { scene: scene.id, data: stage.currentInput() ?? {}, readouts };
+          this.dispatchEvent(new CustomEvent(ended ? 'change' : 'input', { detail }));
+        }
         if (reason === 'camera' && this.stage) {
           const { yaw, pitch, distance, target } = this.stage.viewer.camera;
           const view = { yaw, pitch, distance, target: [...target] };
@@ -251,10 +399,16 @@ export class RuledView extends HTMLElement {
 
   /** @internal @param {string} name @param {string | null} before @param {string | null} after */
   attributeChangedCallback(name, before, after) {
+    if (name === 'height') return this.sized();
     if (!this.stage || before === after) return;
     if (name === 'scene' || name === 'params' || name === 'paper') this.open();
     else if (name === 'controls' || name === 'text') this.stage.setPanel(this.controls, this.text);
-    else if (name === 'lang') this.stage.setLanguage(after);
+    else if (name === 'editable') this.stage.setEditable(this.editable);
+    else if (name === 'input') {
+      // an edit of its own (the property read back) is already shown
+      const now = this.stage.input;
+      if (!(now && after === encodeInput(now))) this.open();
+    } else if (name === 'lang') this.stage.setLanguage(after);
     else if (name === 'autoplay' && after !== null) this.open();
     else if (name === 'camera') {
       const camera = readCamera(after ?? '');
@@ -302,13 +456,18 @@ export class RuledView extends HTMLElement {
           }
           const paper = preset && preset.scene === scene.id ? preset : null;
           const query = new URLSearchParams(this.params);
-          const { params, notes } = readParams(scene, paper ? withPreset(paper, scene, query) : query);
+          const read = readParams(scene, paper ? withPreset(paper, scene, query) : query);
+          const { params } = read;
+          // the values came from the element's params attribute, not from a link: said so
+          const notes = read.notes.map((n) => ({ ...n, note: n.note.replace(/^note\./, 'element.note.') }));
           const camera = readCamera(this.getAttribute('camera') ?? '');
           if (this.hasAttribute('camera') && !camera) notes.push({ key: 'camera', note: 'element.badCamera' });
+          const input = this.hasAttribute('input') ? decodeInput(this.getAttribute('input') ?? '') : null;
+          if (this.hasAttribute('input') && !input) notes.push({ key: 'input', note: 'element.note.badInput' });
           return stage.open(
             scene,
             { ...defaults(scene), ...params },
-            { data: this._data, notes, autoplay: this.autoplay, paper, camera },
+            { data: this._data, notes, autoplay: this.autoplay, paper, camera, input },
           );
         },
         (e) => {

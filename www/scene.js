@@ -40,6 +40,35 @@
  * @property {ImportedData} [data]   your own segments (the "data" scene)
  * @property {(segments: Float64Array, options: import('../pkg/ruledlab.js').SubdivideOptions, onProgress: (f: number) => void, draw?: number) => Promise<{segments: Float32Array, rulings: number, drawn: number}>} [refine]
  *   refinement in a Web Worker, for large models (at most `draw` rulings come back: every k-th)
+ * @property {Input} [input]        the reader's edit of the scene's input (its handles dragged):
+ *   the scene computes on it instead of its built-in input, with every tool it has
+ *
+ * The editable input of a scene: one Float64Array per handle set, by the set's key.
+ * @typedef {Record<string, Float64Array>} Input
+ *
+ * A set of handles: part of a scene's input that the reader can grab and move (by pointer,
+ * finger or keyboard). The points are the core's input, copied; a moved handle goes back to the
+ * core as the scene's `context.input`.
+ * @typedef {object} HandleSet
+ * @property {string} key            its name in `Input`, in the link and in <ruled-view>'s `data`
+ *   ("rulings", "points", "lines", "poses")
+ * @property {Float64Array} points   3 numbers per handle
+ * @property {'pairs' | 'points'} shape   pairs: handles 2k and 2k + 1 are the two ends of line k
+ *   (a ruling, a line of a congruence, a tool axis), along which Shift moves a handle
+ * @property {string} name           i18n key naming one handle; its variables: {i} (the line or
+ *   point, from 0 as in the core's messages), {end} (the end's name), {row}, {col} (a grid)
+ * @property {[string, string]} [ends]   i18n keys of the two ends' names (pairs)
+ * @property {number} [cols]         lines of a grid: line k is (k / cols, k % cols)
+ * @property {boolean} [carry]       pairs: moving a line's first handle moves its second one with it
+ *   (a tool's tip carries the tool; its axis end alone turns it)
+ * @property {Float32Array | Float64Array} [transform]   4 × 4 model matrix, column-major: where
+ *   the handles are drawn (the layer's transform); a rigid motion
+ *
+ * What a scene offers to edit, beside what it built.
+ * @typedef {object} Editable
+ * @property {HandleSet[]} sets
+ * @property {string} from           what the built-in input is, in words ("the hyperboloid of
+ *   Example 1, 36 rulings"): the page says "edited from: …"
  *
  * Your own segments.
  * @typedef {object} ImportedData
@@ -92,6 +121,10 @@
  *   each checked against the numbers of the readout (tests/node/claims.test.mjs sweeps the
  *   range each claim states and requires it to hold)
  * @property {(onProgress: (fraction: number) => void) => Promise<Built>} [later]   heavy work finishing in a worker
+ * @property {Editable} [input]     the handles of the scene's input (its edited input when
+ *   `context.input` was given): a scene with handles can be edited by dragging them
+ * @property {string[]} [problems]  what the input's geometry leaves undefined, in words ("rulings
+ *   4 and 5 are parallel: δ undefined there"), shown under the readout
  *
  * A comparative sentence of the page, checked against the numbers shown beside it.
  * @typedef {object} Claim
@@ -119,6 +152,10 @@
  * @property {{make(params: P, context: Context): Built}['make']} create
  *   what is drawn, said and exported for these parameters (a method: a scene of typed
  *   parameters is a scene of Params)
+ * @property {boolean} [editAsData] the scene has no handles, but its sample can become your data
+ *   ("Edit as data": the formula scenes)
+ * @property {string[]} [fixed]     the parameters an edit of the input replaces (the surface and
+ *   the number of its rulings, say): disabled while the input is edited, with the reason
  * @property {(option: string) => string | string[] | null} [fieldOf]
  *   the key of the parameter an error's `details.option` concerns (e.g. a formula "a[1]"), or
  *   the keys it may concern (an interval "u": its two ends; the one the reader changed last is
@@ -138,6 +175,8 @@ export const RESERVED_KEYS = Object.freeze([
   'note',
   'view',
   'paper',
+  'input',
+  'edit',
 ]);
 
 /** Longest text parameter (a formula), in characters. */

@@ -8,10 +8,13 @@
 //   no address (file://, srcdoc, about:blank): no link or iframe (nobody else could open
 //                                       them), a sentence saying so, the one-file download and
 //                                       the element snippet with its script to upload
-// Every snippet carries the scene, its parameters, the figure of the paper, the language and
-// the camera; the tests paste each into a page on another origin and require it to draw.
+// Every snippet carries the scene, its parameters, the figure of the paper, the language, the
+// camera and the reader's edit of the input (up to MAX_LINK_HANDLES handles), and lets readers
+// move the handles of a scene that has them; the tests paste each into a page on another origin
+// and require it to draw.
 import { defaults } from './scene.js';
 import { writeState } from './state.js';
+import { encodeInput, linkableInput } from './edit/input.js';
 import { download } from './stage.js';
 import { oneFileWithState } from './export/onefile.js';
 import { place } from './platform.js';
@@ -75,9 +78,11 @@ export function shareDialog(dialog, context) {
     }
     /** @type {HTMLElement[]} */
     const rows = [];
+    const editable = stage.editor.active;
+    const input = stage.input && linkableInput(stage.input) ? stage.input : null;
     if (where.address) {
       rows.push(field('share.link', 'share-link', `${base}#${hash}`));
-      rows.push(field('share.iframe', 'share-iframe', iframeSnippet(base, hash, title)));
+      rows.push(field('share.iframe', 'share-iframe', iframeSnippet(base, hash, title, editable)));
     } else {
       rows.push(
         el('p', {
@@ -97,10 +102,14 @@ export function shareDialog(dialog, context) {
         script,
         stage.paper,
         state.camera,
+        { editable, input },
       ),
       scriptNote,
     );
     rows.push(element);
+    // an edit too large for a link is in none of the snippets: say so
+    if (stage.input && !input)
+      rows.push(el('p', { className: 'share-note', id: 'share-edit-large', textContent: t('share.editTooLarge') }));
     if (script.src === EMBED_FILE) {
       const embed = el('button', {
         type: 'button',
@@ -124,7 +133,7 @@ export function shareDialog(dialog, context) {
       try {
         download(
           `ruledlab-${stage.paper?.id ?? stage.scene?.id ?? 'view'}.html`,
-          await oneFileWithState(oneFile, hash),
+          await oneFileWithState(oneFile, writeState(state, { wholeInput: true })),
           'text/html',
         );
       } catch {
@@ -171,6 +180,11 @@ export function shareDialog(dialog, context) {
       area.select();
       let copied = false;
       try {
+        // a frame whose page does not allow clipboard-write: straight to the old way (the
+        // Clipboard API would log a policy violation there)
+        const policy = /** @type {any} */ (doc).permissionsPolicy ?? /** @type {any} */ (doc).featurePolicy;
+        if (policy?.allowsFeature?.('clipboard-write') === false || !navigator.clipboard)
+          throw new Error('no clipboard');
         await navigator.clipboard.writeText(area.value);
         copied = true;
       } catch {
@@ -193,16 +207,27 @@ const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g,
 /** A scene title without its subscript marks ("R_{i}" → "Ri"). */
 const plainTitle = (/** @type {string} */ s) => s.replace(/[_^]\{?([^}]*)\}?/g, '$1');
 
-/** An <iframe> of this page in embed mode, with controls. */
-export function iframeSnippet(/** @type {string} */ base, /** @type {string} */ hash, /** @type {string} */ title) {
-  const src = `${base}#embed&controls&${hash.replace(/^embed&?|(^|&)controls(&|$)/g, '')}`;
-  return `<iframe src="${attr(src)}" title="${attr(plainTitle(title))}" width="900" height="560" style="border: 0; max-width: 100%" allow="fullscreen" loading="lazy"></iframe>`;
+/**
+ * An <iframe> of this page in embed mode, with controls (and `edit`: its handles can be dragged).
+ * Sized by attributes, not a style attribute: a course page's Content-Security-Policy
+ * (style-src 'self') refuses inline styles.
+ */
+export function iframeSnippet(
+  /** @type {string} */ base,
+  /** @type {string} */ hash,
+  /** @type {string} */ title,
+  editable = false,
+) {
+  const rest = hash.replace(/^embed&?|(^|&)(controls|edit)(?=&|$)/g, '').replace(/^&/, '');
+  const src = `${base}#embed&controls&${editable ? 'edit&' : ''}${rest}`;
+  return `<iframe src="${attr(src)}" title="${attr(plainTitle(title))}" width="100%" height="560" frameborder="0" allow="fullscreen" loading="lazy"></iframe>`;
 }
 
 /**
  * A <ruled-view> element showing this scene with these parameters, language and camera (and
  * the figure of the paper shown, if any: then only the values that differ from the figure's
- * are listed), after the script that defines the element.
+ * are listed), after the script that defines the element; its height an attribute (no inline
+ * style, which a strict Content-Security-Policy refuses).
  * @param {import('./scene.js').Scene} scene
  * @param {import('./scene.js').Params} params
  * @param {string} lang
@@ -210,8 +235,10 @@ export function iframeSnippet(/** @type {string} */ base, /** @type {string} */ 
  *   one-file embed script (a classic script, loads from anywhere) or the module `ruledlab/view`
  * @param {import('./paper.js').PaperPreset | null} [paper]
  * @param {number[] | null} [camera]   yaw, pitch, distance, target x, y, z
+ * @param {{editable?: boolean, input?: import('./scene.js').Input | null}} [edit]   whether readers
+ *   may drag the handles, and the edit of the input to show
  */
-export function elementSnippet(scene, params, lang, script, paper = null, camera = null) {
+export function elementSnippet(scene, params, lang, script, paper = null, camera = null, edit = {}) {
   /** @type {import('./scene.js').Params} */
   const base = { ...defaults(scene), ...(paper?.params ?? {}) };
   const q = new URLSearchParams();
@@ -224,5 +251,7 @@ export function elementSnippet(scene, params, lang, script, paper = null, camera
   const tag = script.module
     ? `<script type="module" src="${attr(script.src)}"></script>`
     : `<script defer src="${attr(script.src)}"></script>`;
-  return `${tag}\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}"${view} lang="${attr(lang)}" controls style="display: block; height: 560px; max-width: 100%"></ruled-view>`;
+  const input = edit.input ? ` input="${attr(encodeInput(edit.input))}"` : '';
+  const editable = edit.editable ? ' editable' : '';
+  return `${tag}\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}"${view}${input} lang="${attr(lang)}" controls${editable} height="560"></ruled-view>`;
 }

@@ -18,6 +18,8 @@ import { refineInWorker } from './compute.js';
 import { atPreset } from './paper.js';
 import { canFullscreen } from './platform.js';
 import { NARROW, PORTRAIT, TINY, SMALL_VIEW } from './limits.js';
+import { Editor } from './edit/editor.js';
+import { copyInput, fitsSets, inputOf } from './edit/input.js';
 
 /** Least time between two announcements of the readout (ms). */
 const ANNOUNCE_EVERY = 1000;
@@ -28,7 +30,10 @@ const ANNOUNCE_EVERY = 1000;
  * @property {boolean} [text]       show the explanation
  * @property {string | null} [lang]
  * @property {boolean} [page]       the stage is the page's (the page scrolls; a narrow view stays at the top of the screen)
- * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset', ended: boolean}) => void} [onChange]
+ * @property {boolean} [editable]   the reader may drag the scene's handles (the page; <ruled-view editable>)
+ * @property {(data: import('./scene.js').ImportedData) => void} [onEditAsData]   "Edit as data" of a
+ *   scene without handles: show its sample as your data (the "data" scene)
+ * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input', ended: boolean}) => void} [onChange]
  * @property {(error: unknown, message: string) => void} [onError]   with the sentence shown
  * @property {(built: import('./scene.js').Built) => void} [onBuilt]
  */
@@ -89,7 +94,25 @@ export class Stage {
     // the hint and the toolbar share the bottom edge: the hint takes what room the buttons leave
     /** @internal */
     this.bar = el('div', { className: 'rl-bar' });
-    this.bar.append(this.hint, this.toolbar);
+    // while editing (in the hint's place): how a drag moves a handle (for those without Shift and Alt), and Done
+    /** @internal */
+    this.editBar = el('div', { className: 'rl-editbar', hidden: true });
+    /** @internal @type {Record<import('./edit/geometry.js').MoveMode, HTMLButtonElement>} */
+    this.modes = {
+      view: /** @type {HTMLButtonElement} */ (el('button', { type: 'button' })),
+      line: /** @type {HTMLButtonElement} */ (el('button', { type: 'button' })),
+      vertical: /** @type {HTMLButtonElement} */ (el('button', { type: 'button' })),
+    };
+    /** @internal */
+    this.modeLabel = el('span', { className: 'rl-editbar-label' });
+    /** @internal */
+    this.done = el('button', { type: 'button', className: 'rl-done' });
+    /** @internal */
+    this.modeGroup = el('div', { className: 'rl-modes' });
+    this.modeGroup.setAttribute('role', 'group');
+    this.modeGroup.append(this.modeLabel, ...Object.values(this.modes));
+    this.editBar.append(this.modeGroup, this.done);
+    this.bar.append(this.hint, this.editBar, this.toolbar);
     this.view.append(
       this.canvas,
       this.labels,
@@ -104,6 +127,9 @@ export class Stage {
 
     /** @internal */
     this.buttons = {
+      edit: el('button', { type: 'button', className: 'rl-edit', hidden: true }),
+      undo: el('button', { type: 'button', className: 'rl-undo', hidden: true }),
+      redo: el('button', { type: 'button', className: 'rl-redo', hidden: true }),
       fit: el('button', { type: 'button', className: 'rl-fit' }),
       reset: el('button', { type: 'button', className: 'rl-reset' }),
       fullscreen: el('button', { type: 'button', className: 'rl-fullscreen' }),
@@ -128,6 +154,12 @@ export class Stage {
     this.note = el('p', { className: 'rl-readout-note', hidden: true });
     /** @internal */
     this.claims = el('ul', { className: 'rl-claims', hidden: true });
+    /** @internal what the edited input leaves undefined ("rulings 4 and 5 are parallel: δ undefined") */
+    this.problems = el('ul', { className: 'rl-problems', hidden: true });
+    /** @internal "edited from: …", with the way back to the built-in input */
+    this.edited = el('div', { className: 'rl-edited', hidden: true });
+    /** @internal "Edit as data": a scene without handles hands its sample to "Your data" */
+    this.asData = el('button', { type: 'button', className: 'rl-as-data', hidden: true });
     /** @internal */
     this.caption = el('p', { className: 'rl-caption' });
     /** @internal */
@@ -139,9 +171,12 @@ export class Stage {
     this.panel.append(
       this.heading,
       this.paperCard,
+      this.edited,
       this.form,
+      this.asData,
       this.player,
       this.readout,
+      this.problems,
       this.claims,
       this.note,
       this.caption,
@@ -162,7 +197,8 @@ export class Stage {
       if (!this.root.classList.contains('rl-narrow')) return { top: 0, bottom: 0 };
       const view = this.view.getBoundingClientRect();
       if (!view.height) return { top: 0, bottom: 0 };
-      const legend = this.legend.hidden ? null : this.legend.getBoundingClientRect();
+      const legend =
+        this.legend.hidden || !this.view.contains(this.legend) ? null : this.legend.getBoundingClientRect();
       const bar = this.toolbar.getBoundingClientRect();
       return {
         top: legend ? Math.max(0, legend.bottom - view.top) / view.height : 0,
@@ -200,6 +236,20 @@ export class Stage {
     this.lastChanged = null;
     /** @internal */
     this.announceTimer = 0;
+    /** @type {import('./scene.js').Input | null} the reader's edit of the scene's input (null: the built-in input) */
+    this.input = null;
+    /** the i18n key of a note about the edit (too large for the link), or '' */
+    this.inputNote = '';
+    /** @internal The handles of the scene's input: grabbed by pointer, finger and keyboard. */
+    this.editor = new Editor(this.view, this.viewer, {
+      i18n: () => this.i18n,
+      current: () => this.input,
+      apply: (input, ended, said) => this.setInput(input, ended, said),
+      say: (text) => this.say(text),
+      changed: () => this.showEditing(),
+    });
+    this.editor.enabled = !!options.editable;
+    this.viewer.overlays.push((m) => this.editor.place(m));
 
     this.viewer.onCameraChange = (ended) => {
       this.options.onChange?.({ reason: 'camera', ended });
@@ -212,11 +262,31 @@ export class Stage {
     this.buttons.reset.addEventListener('click', () => this.reset());
     this.buttons.fullscreen.addEventListener('click', () => this.toggleFullscreen());
     this.buttons.help.addEventListener('click', () => this.showShortcuts());
+    this.buttons.edit.addEventListener('click', () => {
+      this.editor.setEditing(!this.editor.editing);
+      if (this.editor.editing) this.canvas.focus();
+    });
+    this.buttons.undo.addEventListener('click', () => this.editor.undo());
+    this.buttons.redo.addEventListener('click', () => this.editor.redo());
+    this.done.addEventListener('click', () => this.editor.setEditing(false));
+    for (const [mode, button] of Object.entries(this.modes))
+      button.addEventListener('click', () =>
+        this.editor.setMode(/** @type {import('./edit/geometry.js').MoveMode} */ (mode)),
+      );
+    this.asData.addEventListener('click', () => {
+      const data = this.session.built?.data;
+      if (data) this.options.onEditAsData?.({ segments: data.segments, ...(data.grid ?? {}) });
+    });
     this.cancel.addEventListener('click', () => {
       this.session.dispose();
       this.progress.hidden = true;
     });
     this.root.addEventListener('keydown', (e) => this.key(e));
+    // the page's stage also takes the keys pressed with nothing focused (undo after a drag elsewhere)
+    if (options.page)
+      doc.addEventListener('keydown', (e) => {
+        if (e.target === doc.body) this.key(e);
+      });
     /** @internal */
     this.resize = new ResizeObserver(() => this.layout());
     this.resize.observe(this.root);
@@ -255,6 +325,12 @@ export class Stage {
     const height = this.options.page ? window.innerHeight : box.height || this.host.getBoundingClientRect().height;
     const narrow = width > 0 && (width < NARROW || (height > width && width < PORTRAIT));
     this.root.classList.toggle('rl-narrow', narrow);
+    // in a narrow box with a panel the legend leads the panel, right under the view: the view
+    // keeps its whole height for the figure
+    const legendInPanel = narrow && !this.panel.hidden && !!this.showControls;
+    if (legendInPanel && this.legend.parentElement !== this.panel) this.panel.prepend(this.legend);
+    if (!legendInPanel && this.legend.parentElement !== this.view) this.view.insertBefore(this.legend, this.bar);
+    this.legend.classList.toggle('rl-legend-panel', legendInPanel);
     this.root.classList.toggle('rl-tiny', width > 0 && width < TINY);
     // the hint under the view only where it fits beside the toolbar on one line
     this.root.classList.toggle('rl-view-small', this.view.getBoundingClientRect().width < SMALL_VIEW);
@@ -266,11 +342,25 @@ export class Stage {
   localize() {
     const { t } = this.i18n;
     this.canvas.setAttribute('aria-label', t('view.label'));
-    this.buttons.fit.textContent = t('view.fit');
+    // a word, and a sign that stands in for it where the box is narrow (the name stays the word)
+    const label = (/** @type {HTMLElement} */ button, /** @type {string} */ sign, /** @type {string} */ word) => {
+      const icon = Object.assign(this.root.ownerDocument.createElement('span'), {
+        className: 'rl-btn-sign',
+        textContent: sign,
+      });
+      icon.setAttribute('aria-hidden', 'true');
+      const text = Object.assign(this.root.ownerDocument.createElement('span'), {
+        className: 'rl-btn-word',
+        textContent: word,
+      });
+      button.replaceChildren(icon, text);
+      button.setAttribute('aria-label', word);
+    };
+    label(this.buttons.fit, '⌂', t('view.fit'));
     this.buttons.fit.title = t('view.fitTitle');
-    this.buttons.reset.textContent = t('view.reset');
+    label(this.buttons.reset, '↺', t('view.reset'));
     this.buttons.reset.title = t('view.resetTitle');
-    this.buttons.fullscreen.textContent = t('view.fullscreen');
+    label(this.buttons.fullscreen, '⤢', t('view.fullscreen'));
     // a frame without allow="fullscreen" cannot: no button that does nothing
     this.buttons.fullscreen.hidden = !canFullscreen(this.root.ownerDocument);
     this.buttons.help.textContent = '?';
@@ -281,7 +371,97 @@ export class Stage {
     this.form.setAttribute('aria-label', t('panel.controls'));
     this.readout.setAttribute('aria-label', t('panel.readout'));
     this.hint.textContent = t(touchScreen() ? 'view.hintTouch' : 'view.hintMouse');
+    label(this.buttons.edit, '✎', t('edit.button'));
+    this.buttons.edit.title = t('edit.buttonTitle');
+    this.buttons.undo.textContent = '↶';
+    this.buttons.undo.setAttribute('aria-label', t('edit.undo'));
+    this.buttons.undo.title = t('edit.undoTitle');
+    this.buttons.redo.textContent = '↷';
+    this.buttons.redo.setAttribute('aria-label', t('edit.redo'));
+    this.buttons.redo.title = t('edit.redoTitle');
+    this.modeLabel.textContent = t('edit.moveLabel');
+    this.modeGroup.setAttribute('aria-label', t('edit.moveLabel'));
+    for (const [mode, button] of Object.entries(this.modes)) {
+      button.textContent = t(`edit.mode.${mode}`);
+      button.title = t(`edit.mode.${mode}Title`);
+    }
+    this.done.textContent = t('edit.done');
+    this.asData.textContent = t('edit.asData');
     this.buildShortcuts();
+    this.showEditing();
+  }
+
+  /** Whether the reader may drag the scene's handles. */
+  setEditable(/** @type {boolean} */ on) {
+    this.editor.enabled = on;
+    if (!on) this.editor.setEditing(false);
+    this.showEditing();
+    this.viewer.requestRender();
+  }
+
+  /**
+   * Computes the scene on an edited input (null: the built-in one) — a handle was moved, a step
+   * undone, the input replaced; `ended`: the step is over (the link is written, `change` fired).
+   * @param {import('./scene.js').Input | null} input
+   * @param {boolean} ended
+   * @param {string} [said]   what the step did, said before the readout once it has ended
+   */
+  setInput(input, ended, said = '') {
+    if (!this.scene) return;
+    this.input = input ? copyInput(input) : null;
+    this.compute();
+    this.controls?.update(this.params);
+    this.showEditing();
+    this.options.onChange?.({ reason: 'input', ended });
+    if (ended) this.announce(said);
+  }
+
+  /** The current input of the scene's handles (the edit, or the built-in input), copied; null without handles. */
+  currentInput() {
+    const sets = this.session.built?.input?.sets;
+    if (this.input) return copyInput(this.input);
+    return sets?.length ? inputOf(sets) : null;
+  }
+
+  /** @internal Says `text` to screen readers (the live region). */
+  say(/** @type {string} */ text) {
+    this.status.textContent = text;
+  }
+
+  /** @internal The edit's buttons, its bar and its note, as the editor and the input stand. */
+  showEditing() {
+    const { t } = this.i18n;
+    const editor = this.editor;
+    if (!editor) return;
+    const active = editor.active;
+    this.buttons.edit.hidden = !active;
+    this.buttons.edit.setAttribute('aria-pressed', String(editor.editing));
+    this.buttons.undo.hidden = this.buttons.redo.hidden = !active || (!editor.canUndo && !editor.canRedo);
+    this.buttons.undo.disabled = !editor.canUndo;
+    this.buttons.redo.disabled = !editor.canRedo;
+    this.editBar.hidden = !editor.editing;
+    for (const [mode, button] of Object.entries(this.modes))
+      button.setAttribute('aria-pressed', String(editor.mode === mode));
+    this.modes.line.hidden = !editor.sets.some((set) => set.shape === 'pairs');
+    const doc = this.root.ownerDocument;
+    this.edited.hidden = !this.input;
+    if (this.input) {
+      const text = doc.createElement('p');
+      appendRich(text, t('edit.from', { from: editor.from }));
+      const back = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('edit.restore') });
+      back.addEventListener('click', () => this.editor.restore());
+      const parts = [text, back];
+      if (this.inputNote)
+        parts.push(
+          Object.assign(doc.createElement('p'), { className: 'rl-edited-note', textContent: t(this.inputNote) }),
+        );
+      this.edited.replaceChildren(...parts);
+    }
+    this.root.classList.toggle('rl-has-handles', active);
+    const touch = touchScreen();
+    this.hint.textContent = t(
+      touch ? (active ? 'view.hintTouchEdit' : 'view.hintTouch') : active ? 'view.hintEdit' : 'view.hintMouse',
+    );
   }
 
   /** The language (a code of i18n/index.js, or null for the browser's). */
@@ -289,7 +469,12 @@ export class Stage {
     this.i18n = translator(pickLanguage(lang));
     this.localize();
     if (this.scene) {
-      this.enter(this.scene, this.params, { camera: this.viewer.camera.toArray(), fit: false });
+      this.enter(this.scene, this.params, {
+        camera: this.viewer.camera.toArray(),
+        fit: false,
+        input: this.input,
+        history: true,
+      });
       // (a computation that fails keeps the last picture: its legend speaks the new language too)
       showLegend(this.legend, this.scene, this.params, this.i18n.t);
     }
@@ -299,7 +484,7 @@ export class Stage {
    * Opens a scene with `params` (missing ones take their defaults).
    * @param {import('./scene.js').Scene} scene
    * @param {import('./scene.js').Params} params
-   * @param {{camera?: number[] | null, fit?: boolean, data?: import('./scene.js').ImportedData | null, notes?: Array<{key: string, note: string}>, autoplay?: boolean, paper?: import('./paper.js').PaperPreset | null}} [options]
+   * @param {{camera?: number[] | null, fit?: boolean, data?: import('./scene.js').ImportedData | null, notes?: Array<{key: string, note: string}>, autoplay?: boolean, paper?: import('./paper.js').PaperPreset | null, input?: import('./scene.js').Input | null, inputNote?: string}} [options]
    */
   async open(scene, params, options = {}) {
     try {
@@ -310,8 +495,19 @@ export class Stage {
     }
     if (options.data !== undefined) this.data = options.data;
     this.paper = options.paper && options.paper.scene === scene.id ? options.paper : null;
-    this.enter(scene, { ...defaults(scene), ...params }, { camera: options.camera ?? null, fit: true });
-    this.showNotes(options.notes ?? []);
+    const notes = [...(options.notes ?? [])];
+    this.inputNote = options.inputNote ?? '';
+    const fits = this.enter(
+      scene,
+      { ...defaults(scene), ...params },
+      {
+        camera: options.camera ?? null,
+        fit: true,
+        input: options.input ?? null,
+      },
+    );
+    if (!fits) notes.push({ key: 'input', note: 'note.badInput' });
+    this.showNotes(notes);
     if (options.autoplay && !Player.reducedMotion()) {
       const playable = scene.params.find((p) => p.play && !p.unless?.(this.params));
       if (playable) this.togglePlay(playable.key);
@@ -321,12 +517,17 @@ export class Stage {
   /**
    * @param {import('./scene.js').Scene} scene
    * @param {import('./scene.js').Params} params
-   * @param {{camera?: number[] | null, fit?: boolean}} options
+   * @param {{camera?: number[] | null, fit?: boolean, input?: import('./scene.js').Input | null, history?: boolean}} options
+   *   input: an edit to show (kept only where it fits the scene's handles); history: keep the
+   *   edit's undo steps (a change of language)
+   * @returns {boolean} whether the input given (if any) fits
    * @internal
    */
-  enter(scene, params, { camera = null, fit = true }) {
+  enter(scene, params, { camera = null, fit = true, input = null, history = false }) {
     const { t } = this.i18n;
     if (this.scene !== scene) this.stopPlaying();
+    this.input = null;
+    if (!history) this.editor.cancel();
     this.scene = scene;
     this.params = { ...params };
     this.heading.textContent = '';
@@ -336,15 +537,28 @@ export class Stage {
     this.controls = buildControls(this.form, scene, this.params, this.i18n, {
       onChange: (key, value, ended) => this.setParam(key, value, ended),
       onPlay: (key) => this.togglePlay(key),
+      fixed: (p) => (this.input && this.scene?.fixed?.includes(p.key) ? 'edit.reason.fixed' : null),
     });
     this.controls.fit();
     this.buildPlayer();
     this.showPaper();
-    this.compute({ fit: fit && !camera });
+    // the built-in input first: its handles set the box they stay in and say what was edited
+    const built = this.compute({ fit: fit && !camera });
+    const editable = built?.input;
+    if (history) this.editor.show(editable);
+    else this.editor.enter(editable);
+    const fits = !input || (!!editable && fitsSets(input, editable.sets));
+    if (input && fits) {
+      this.input = copyInput(input);
+      this.compute();
+      this.controls.update(this.params);
+    }
+    this.showEditing();
     if (camera) {
       this.viewer.camera.fromArray(camera);
       this.viewer.requestRender();
     }
+    return fits;
   }
 
   /** Sets one parameter and recomputes. */
@@ -366,19 +580,21 @@ export class Stage {
     if (ended) this.announce();
   }
 
-  /** @internal Recomputes the scene for the current parameters. */
+  /** @internal Recomputes the scene for the current parameters (and input); returns what it built, or null. */
   compute({ fit = false } = {}) {
-    if (!this.scene) return;
+    if (!this.scene) return null;
     const context = {
       t: this.i18n.t,
       format: this.i18n.format,
       lang: this.i18n.lang,
       data: this.data ?? undefined,
       refine: refineInWorker,
+      input: this.input ?? undefined,
     };
     const built = this.session.show(this.scene, this.params, context, { fit });
     this.root.classList.toggle('rl-stale', !built);
     if (built) this.error.hidden = true;
+    return built;
   }
 
   /**
@@ -444,8 +660,21 @@ export class Stage {
     if (!this.scene) return;
     const { t } = this.i18n;
     showLegend(this.legend, this.scene, this.params, t);
-    // the legend may cover another share of a narrow view now: a fitted view is framed anew
-    if (this.root.classList.contains('rl-narrow') && this.viewer.camera.atHome()) this.viewer.fit();
+    // the legend may cover another share of a narrow view now: a fitted view is framed anew (not
+    // while the reader moves the geometry: the view holds still under the pointer)
+    if (this.root.classList.contains('rl-narrow') && this.viewer.camera.atHome() && !this.input) this.viewer.fit();
+    // the handles where the core has them (an edit comes back in the core's own form: a tool
+    // axis keeps the tool's length); the edit itself stays as the reader made it, bit for bit
+    this.editor.show(built.input);
+    this.problems.replaceChildren(
+      ...(built.problems ?? []).map((text) => {
+        const li = this.root.ownerDocument.createElement('li');
+        appendRich(li, text);
+        return li;
+      }),
+    );
+    this.problems.hidden = !built.problems?.length;
+    this.asData.hidden = !(this.scene.editAsData && built.data && this.options.onEditAsData && this.editor.enabled);
     showReadout(this.readout, built.readouts ?? [], this.i18n);
     showClaims(this.claims, built.claims ?? [], t);
     this.note.hidden = !built.note;
@@ -496,7 +725,17 @@ export class Stage {
     this.error.hidden = false;
     // beside its field the whole sentence; over the view (small on a phone) where to look
     this.error.textContent = key && this.showControls ? t('error.seeField', { field: this.fieldName(key) }) : message;
+    // the field the reader just changed keeps no old message when the error is now elsewhere (it
+    // was fixed, or the core has not come to it: it says so again once the other is fixed)
+    if (this.lastChanged && this.lastChanged !== key) this.controls?.invalid(this.lastChanged, null);
     if (key) this.controls?.invalid(key, message);
+    // an edit the core cannot compute on: said under the readout too (the drag can go on, undo back)
+    if (this.input) {
+      this.problems.replaceChildren(
+        Object.assign(this.root.ownerDocument.createElement('li'), { textContent: message }),
+      );
+      this.problems.hidden = false;
+    }
     this.options.onError?.(e, message);
     return message;
   }
@@ -512,18 +751,30 @@ export class Stage {
   /** @internal Notes about link values that were not used. */
   showNotes(/** @type {Array<{key: string, note: string}>} */ notes) {
     const { t } = this.i18n;
+    const doc = this.root.ownerDocument;
     this.noteBox.hidden = notes.length === 0;
-    this.noteBox.textContent = notes.map(({ key, note }) => t(note, { key })).join(' ');
+    // read once, then out of the figure's way
+    const close = Object.assign(doc.createElement('button'), {
+      type: 'button',
+      className: 'rl-note-close',
+      textContent: '×',
+    });
+    close.setAttribute('aria-label', t('view.closeNote'));
+    close.addEventListener('click', () => (this.noteBox.hidden = true));
+    const text = doc.createElement('span');
+    text.textContent = notes.map(({ key, note }) => t(note, { key })).join(' ');
+    this.noteBox.replaceChildren(text, close);
   }
 
   /** @internal Announces the readout to screen readers: only when an interaction ends, at most once a second. */
-  announce() {
+  announce(/** @type {string} */ prefix = '') {
     const now = performance.now();
     clearTimeout(this.announceTimer);
     const say = () => {
       this.lastAnnounced = performance.now();
       const built = this.session.built;
-      if (built) this.status.textContent = readoutSentence(built.readouts ?? [], this.i18n);
+      const sentence = built ? readoutSentence(built.readouts ?? [], this.i18n) : '';
+      if (built || prefix) this.status.textContent = [prefix, sentence].filter(Boolean).join('. ');
     };
     const wait = this.lastAnnounced + ANNOUNCE_EVERY - now;
     if (wait <= 0) say();
@@ -596,8 +847,22 @@ export class Stage {
   key(/** @type {KeyboardEvent} */ e) {
     const target = /** @type {HTMLElement} */ (e.target);
     const typing = target.matches?.('input[type=text], textarea, select');
-    if (typing || e.ctrlKey || e.metaKey || e.altKey) return;
-    if (e.key === '?') {
+    if (typing) return;
+    // undo and redo of the edit, wherever the keyboard is in the stage
+    if ((e.ctrlKey || e.metaKey) && !e.altKey && this.editor.active) {
+      const k = e.key.toLowerCase();
+      if (k === 'z' || k === 'y') {
+        e.preventDefault();
+        if (k === 'y' || e.shiftKey) this.editor.redo();
+        else this.editor.undo();
+      }
+      return;
+    }
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
+    if (target === this.canvas && (e.key === 'e' || e.key === 'E') && this.editor.active) {
+      e.preventDefault();
+      this.editor.setEditing(!this.editor.editing);
+    } else if (e.key === '?') {
       e.preventDefault();
       this.showShortcuts();
     } else if (target === this.canvas && (e.key === 'r' || e.key === 'R')) {
@@ -640,12 +905,29 @@ export class Stage {
       ['?', 'keys.help'],
       ['Esc', 'keys.close'],
     ]);
+    const editing = table([
+      ['E', 'keys.edit'],
+      ['Tab  Shift+Tab  [  ]', 'keys.editStep'],
+      ['←  →  ↑  ↓', 'keys.editMove'],
+      ['PageUp  PageDown', 'keys.editDepth'],
+      ['Shift', 'keys.editFine'],
+      ['Enter', 'keys.editEnd'],
+      ['Esc', 'keys.editCancel'],
+      ['Ctrl+Z', 'keys.undo'],
+      ['Ctrl+Shift+Z  Ctrl+Y', 'keys.redo'],
+    ]);
     const touch = table(
       [
         ['touch.one', 'touch.oneWhat'],
         ['touch.two', 'touch.twoWhat'],
         ['touch.pinch', 'touch.pinchWhat'],
         ['touch.fit', 'touch.fitWhat'],
+        ...(this.editor?.active
+          ? /** @type {Array<[string, string]>} */ ([
+              ['touch.handle', 'touch.handleWhat'],
+              ['touch.hold', 'touch.holdWhat'],
+            ])
+          : []),
       ],
       false,
     );
@@ -656,20 +938,27 @@ export class Stage {
     const intro = Object.assign(doc.createElement('p'), { textContent: t('keys.intro') });
     const gestures = [heading('touch.title'), touch];
     const keyboard = [heading('keys.title'), intro, keys];
+    if (this.editor?.active) keyboard.push(heading('keys.editTitle'), editing);
     this.shortcuts.setAttribute('aria-label', t(touchScreen() ? 'touch.dialog' : 'keys.title'));
     // on a touch screen the gestures come first; the keys stay for a keyboard attached to it
-    this.shortcuts.replaceChildren(...(touchScreen() ? [...gestures, ...keyboard] : [...keyboard, ...gestures]), close);
+    // Close first: the dialog opens at its top with the keyboard on Close (a phone shows the gestures, not the end of the list)
+    close.className = 'rl-shortcuts-close';
+    this.shortcuts.replaceChildren(close, ...(touchScreen() ? [...gestures, ...keyboard] : [...keyboard, ...gestures]));
   }
 
   /** @internal */
   showShortcuts() {
-    if (!this.shortcuts.open) this.shortcuts.showModal?.();
+    if (this.shortcuts.open) return;
+    this.buildShortcuts();
+    this.shortcuts.showModal?.();
+    this.shortcuts.scrollTop = 0;
   }
 
   /** Releases the GL context, the worker's pending work and every listener. */
   dispose() {
     this.stopPlaying();
     clearTimeout(this.announceTimer);
+    this.editor.dispose();
     this.session.dispose();
     this.viewer.dispose();
     this.resize.disconnect();

@@ -5,6 +5,7 @@
 // cannot be used falls back to its default with a note, never an exception.
 import { readParams, serialize } from './scene.js';
 import { findPreset, withPreset } from './paper.js';
+import { decodeInput, encodeInput, linkableInput } from './edit/input.js';
 
 /** Longest hash read, in characters (imported data of up to 200 rulings fits at full precision). */
 export const MAX_HASH = 65536;
@@ -23,6 +24,9 @@ export const MAX_LINK_RULINGS = 200;
  * @property {boolean} text              with #embed: show the explanation too
  * @property {boolean} autoplay          start playing
  * @property {import('./scene.js').ImportedData | null} data
+ * @property {import('./scene.js').Input | null} [input]   the reader's edit of the scene's input
+ *   (its handles moved), bit for bit; up to MAX_LINK_HANDLES handles
+ * @property {boolean} [edit]           with #embed: the reader may drag the handles
  * @property {Array<{key: string, note: string}>} notes   values that were not used, and why
  * @property {string | null} [paper]    the figure or example of the paper shown (paper.js), if any
  */
@@ -58,6 +62,8 @@ export function readState(hash, scenes) {
   if (q.has('cam') && !camera) notes.push({ key: 'cam', note: 'note.badCamera' });
   const data = q.has('data') ? readData(q.get('data') ?? '') : null;
   if (q.has('data') && !data) notes.push({ key: 'data', note: 'note.badData' });
+  const input = q.has('input') ? decodeInput(q.get('input') ?? '') : null;
+  if (q.has('input') && !input) notes.push({ key: 'input', note: 'note.badInput' });
   const lang = q.get('lang');
   return {
     scene,
@@ -69,26 +75,31 @@ export function readState(hash, scenes) {
     text: q.has('text'),
     autoplay: q.has('autoplay'),
     data,
+    input,
+    edit: q.has('edit'),
     notes,
     paper: paper?.id ?? null,
   };
 }
 
 /**
- * The hash of a state (without "#").
+ * The hash of a state (without "#"); `wholeInput`: the edit even beyond MAX_LINK_HANDLES (the
+ * one-file page keeps its own hash, whose length no address bar limits).
  * @param {Omit<ViewState, 'notes'>} state
  */
-export function writeState(state) {
+export function writeState(state, { wholeInput = false } = {}) {
   const q = new URLSearchParams();
   if (state.embed) q.set('embed', '');
   if (state.embed && state.controls) q.set('controls', '');
   if (state.embed && state.text) q.set('text', '');
+  if (state.embed && state.edit) q.set('edit', '');
   if (state.paper) q.set('paper', state.paper);
   q.set('scene', state.scene.id);
   for (const p of state.scene.params) q.set(p.key, serialize(p, state.params[p.key]));
   if (state.camera) q.set('cam', writeCamera(state.camera));
   if (state.lang) q.set('lang', state.lang);
   if (state.data && linkable(state.data)) q.set('data', writeData(state.data));
+  if (state.input && (wholeInput || linkableInput(state.input))) q.set('input', encodeInput(state.input));
   return q.toString().replace(/=(&|$)/g, '$1');
 }
 

@@ -29,6 +29,9 @@ export { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
  * @typedef {import('./scene.js').Download} Download
  * @typedef {import('./scene.js').Claim} Claim
  * @typedef {import('./scene.js').ImportedData} ImportedData
+ * @typedef {import('./scene.js').Input} Input
+ * @typedef {import('./scene.js').HandleSet} HandleSet
+ * @typedef {import('./scene.js').Editable} Editable
  * @typedef {import('./paper.js').PaperPreset} PaperPreset
  * @typedef {import('./state.js').ViewState} ViewState
  * @typedef {import('./theme.js').Style} Style
@@ -43,6 +46,8 @@ export { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
  * @typedef {import('./ruled-view.js').ViewChangeDetail} ViewChangeDetail
  * @typedef {import('./ruled-view.js').CameraChangeDetail} CameraChangeDetail
  * @typedef {import('./ruled-view.js').RuledViewErrorDetail} RuledViewErrorDetail
+ * @typedef {import('./ruled-view.js').EditDetail} EditDetail
+ * @typedef {import('./ruled-view.js').HandleInfo} HandleInfo
  * @typedef {import('./ruled-view.js').RuledViewEvents} RuledViewEvents
  * @typedef {import('./ruled-view.js').RuledViewEventMap} RuledViewEventMap
  */

@@ -124,6 +124,8 @@ export class Viewer {
     this.onFrame = null;
     /** @type {((ended: boolean) => void) | null} */
     this.onCameraChange = null;
+    /** @internal @type {Array<(viewProj: Float32Array) => void>} what is placed over the view after each frame (the handles) */
+    this.overlays = [];
     const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: false });
     if (!gl)
       throw Object.assign(new Error('This page needs WebGL2, which this browser does not provide.'), {
@@ -285,6 +287,7 @@ export class Viewer {
     }
     gl.depthMask(true);
     this.placeLabels(frame.viewProj);
+    for (const overlay of this.overlays) overlay(frame.viewProj);
     this.frames++;
     this.onFrame?.(this.frames);
   }

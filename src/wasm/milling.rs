@@ -46,8 +46,19 @@ struct ToolOptions {
     end: Option<ToolEndName>,
 }
 
+/// A path's tool as `ToolPath.tool` gives it (and `ToolPath.fromSegments` takes it back).
+#[derive(Serialize, Tsify)]
+struct ToolSpec {
+    /// Radius, model units.
+    radius: f64,
+    /// Length along the axis, model units (a pose's axis segment is this long).
+    length: f64,
+    /// The cutting end.
+    end: ToolEndName,
+}
+
 /// The end of a milling tool.
-#[derive(Deserialize, Clone, Copy, Tsify)]
+#[derive(Deserialize, Serialize, Clone, Copy, Tsify)]
 #[serde(rename_all = "kebab-case", expecting = "\"ball\" or \"flat\"")]
 enum ToolEndName {
     /// A ball end: the tool cuts along a sphere of its radius.
@@ -149,6 +160,18 @@ impl ToolPath {
     #[wasm_bindgen(getter)]
     pub fn length(&self) -> usize {
         self.inner.poses.len()
+    }
+
+    /// The tool: `{ radius, length, end }`, as `ToolPath.fromSegments` takes it (the same tool
+    /// along other poses).
+    #[wasm_bindgen(getter, unchecked_return_type = "ToolSpec")]
+    pub fn tool(&self) -> Result<JsValue, JsValue> {
+        let t = self.inner.tool;
+        let end = match t.end {
+            milling::ToolEnd::Ball => ToolEndName::Ball,
+            milling::ToolEnd::Flat => ToolEndName::Flat,
+        };
+        to_js("ToolPath.tool", &ToolSpec { radius: t.radius, length: t.length, end })
     }
 
     /// The refined path: `steps` steps of a strip scheme on the axis surface (options as for

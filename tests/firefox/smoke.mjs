@@ -27,9 +27,7 @@ writeFileSync(
 );
 writeFileSync(
   join(siteDir, 'column.html'),
-  host(
-    '<div style="width: 280px"><ruled-view id="v" paper="fig2" controls style="display: block; height: 560px"></ruled-view></div>',
-  ),
+  host('<div style="width: 280px"><ruled-view id="v" paper="fig2" controls height="560"></ruled-view></div>'),
 );
 const options = new firefox.Options().enableBidi().windowSize({ width: 1100, height: 800 });
 options.setBinary(process.env.FIREFOX ?? '/usr/bin/firefox-esr');
@@ -78,6 +76,55 @@ try {
     if (!ok) failed++;
     console.log(
       `${ok ? 'ok' : 'not ok'} - Firefox: ${scene} draws (${(100 * drawn).toFixed(1)} % of the view)${problems
+        .slice(before)
+        .map((p) => `\n  ${p}`)
+        .join('')}`,
+    );
+  }
+  // a drag of a ruling's endpoint (the pointer, as WebDriver moves it): exactly that handle moves,
+  // the edit lands in the link, and undo brings the built-in input back
+  {
+    const before = problems.length;
+    await driver.get(`${url}#scene=striction&n=10`);
+    await driver.navigate().refresh();
+    await driver.wait(until.elementLocated(By.css('.rl-stage[data-ready="1"]')), 60000);
+    await driver.sleep(300);
+    const canvas = await driver.findElement(By.css('.rl-view canvas'));
+    // a handle well inside the view, far from the others (CSS px from the canvas's centre)
+    const pick = /** @type {{k: number, dx: number, dy: number, points: number[]}} */ (
+      await driver.executeScript(`const s = window.ruledlab.stage, c = s.viewer.canvas, w = c.clientWidth, h = c.clientHeight;
+        const m = s.viewer.camera.viewProj(w / h);
+        const at = s.editor.handles().map((g) => { const [x, y, z] = g.world, q = m[3] * x + m[7] * y + m[11] * z + m[15];
+          return { x: ((m[0] * x + m[4] * y + m[8] * z + m[12]) / q + 1) / 2 * w, y: (1 - (m[1] * x + m[5] * y + m[9] * z + m[13]) / q) / 2 * h }; });
+        const free = at.map((p, k) => ({ ...p, k })).filter((p) => p.x > 60 && p.x < w - 60 && p.y > 90 && p.y < h - 90 && at.every((o, j) => j === p.k || Math.hypot(o.x - p.x, o.y - p.y) > 24));
+        const p = free.sort((a, b) => Math.hypot(a.x - w / 2, a.y - h / 2) - Math.hypot(b.x - w / 2, b.y - h / 2))[0];
+        if (!p) return { k: -1, dx: 0, dy: 0, points: [], at: at.map((q) => [Math.round(q.x), Math.round(q.y)]), w, h };
+        return { k: p.k, dx: Math.round(p.x - w / 2), dy: Math.round(p.y - h / 2), points: Array.from(s.currentInput().rulings) };`)
+    );
+    if (pick.k < 0) throw new Error(`no handle stands free in Firefox's view: ${JSON.stringify(pick)}`);
+    await driver
+      .actions()
+      .move({ origin: canvas, x: pick.dx, y: pick.dy })
+      .press()
+      .move({ origin: canvas, x: pick.dx + 20, y: pick.dy - 15, duration: 150 })
+      .move({ origin: canvas, x: pick.dx + 40, y: pick.dy - 30, duration: 150 })
+      .release()
+      .perform();
+    await driver.sleep(300);
+    const after = /** @type {{points: number[], link: boolean}} */ (
+      await driver.executeScript(
+        'return { points: Array.from(window.ruledlab.stage.currentInput().rulings), link: /[#&]input=rulings\\./.test(location.hash) }',
+      )
+    );
+    const moved = [];
+    for (let i = 0; 3 * i < pick.points.length; i++)
+      if ([0, 1, 2].some((c) => pick.points[3 * i + c] !== after.points[3 * i + c])) moved.push(i);
+    await driver.executeScript('window.ruledlab.stage.editor.undo()');
+    const undone = /** @type {boolean} */ (await driver.executeScript('return window.ruledlab.stage.input === null'));
+    const ok = moved.length === 1 && moved[0] === pick.k && after.link && undone && problems.length === before;
+    if (!ok) failed++;
+    console.log(
+      `${ok ? 'ok' : 'not ok'} - Firefox: a drag moves exactly the handle taken (${moved.join(', ')} for ${pick.k}), the edit is in the link (${after.link}), undo restores (${undone})${problems
         .slice(before)
         .map((p) => `\n  ${p}`)
         .join('')}`,
@@ -157,5 +204,5 @@ if (failed || problems.length) {
   process.exit(1);
 }
 console.log(
-  'Firefox smoke test: every scene draws, in a sandboxed iframe and a 280-px column too; no console error, no failed request',
+  'Firefox smoke test: every scene draws, a drag edits the geometry, a sandboxed iframe and a 280-px column draw too; no console error, no failed request',
 );

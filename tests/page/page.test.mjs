@@ -237,11 +237,12 @@ test('the share dialog offers the link, an iframe and a <ruled-view> snippet of 
   const link = await page.locator('#share-link').inputValue();
   assert.match(link, /#scene=curves&.*w=0\.0625.*&cam=/);
   const iframe = await page.locator('#share-iframe').inputValue();
-  assert.match(iframe, /^<iframe src="[^"]*#embed&amp;controls&amp;scene=curves/);
+  // the control points are handles: readers of the iframe may drag them (#embed&edit)
+  assert.match(iframe, /^<iframe src="[^"]*#embed&amp;controls&amp;edit&amp;scene=curves/);
   const element = await page.locator('#share-element').inputValue();
   assert.match(
     element,
-    /<ruled-view scene="curves" params="[^"]*w=0\.0625[^"]*" camera="[-\d.,e]+" lang="en" controls/,
+    /<ruled-view scene="curves" params="[^"]*w=0\.0625[^"]*" camera="[-\d.,e]+" lang="en" controls editable/,
   );
   assert.match(element, /<script defer src="http[^"]*\/dist\/ruledlab-embed\.js"><\/script>/);
   assert.deepEqual(problems, []);

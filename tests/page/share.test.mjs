@@ -94,6 +94,29 @@ test('from the served page: the link, the iframe and the element each show this 
   );
   assert.deepEqual(foreign, []);
   await pasted.page.close();
+
+  // the same two snippets in a course page with a strict Content-Security-Policy of its own (no
+  // inline styles): sized by their attributes, no violation logged
+  const origin = new URL(session.url).origin;
+  const csp = `default-src 'self'; script-src 'self' ${origin} 'wasm-unsafe-eval'; style-src 'self'; frame-src ${origin}; img-src 'self' data: blob:; worker-src blob:; connect-src ${origin}`;
+  const strictUrl = site.write(
+    'strict.html',
+    `<!doctype html><html lang="en"><head><meta charset="utf-8"><meta http-equiv="Content-Security-Policy" content="${csp}"><link rel="icon" href="data:,"><title>course page</title></head><body><div id="column">${got.iframe}\n${got.element}</div></body></html>`,
+  );
+  const strict = await session.open(strictUrl, { wait: false });
+  await strict.page.waitForFunction(() => document.querySelector('ruled-view')?.dataset.ready === '1', null, {
+    timeout: 60000,
+  });
+  await strict.page.frameLocator('iframe').locator('.rl-stage[data-ready="1"]').waitFor({ timeout: 60000 });
+  const sizes = await strict.page.evaluate(() => ({
+    element: document.querySelector('ruled-view')?.getBoundingClientRect().height,
+    iframe: document.querySelector('iframe')?.getBoundingClientRect().width,
+    column: document.getElementById('column')?.getBoundingClientRect().width,
+  }));
+  assert.equal(sizes.element, 560, 'the element keeps the snippet’s height');
+  assert.equal(sizes.iframe, sizes.column, 'the iframe fills its column');
+  assert.deepEqual(strict.problems, []);
+  await strict.page.close();
 });
 
 test('from a downloaded file: no address offered, and the element with its script works from disk', async () => {

@@ -25,9 +25,21 @@ const COMPARED = /** @type {Array<keyof typeof SCHEMES>} */ (['paper', 'two-stag
 const REACH = 0.35;
 
 /**
- * The congruence figure of an analytic congruence: shared with "Your congruence".
+ * The grid of lines of an analytic congruence the figure refines (its default grid, segments
+ * REACH of the direction long).
  * @param {<O extends {free(): void}>(o: O) => O} own
  * @param {import('../../pkg/ruledlab.js').AnalyticCongruence} analytic
+ */
+export function givenGrid(own, analytic) {
+  return own(analytic.grid(undefined, undefined, REACH));
+}
+
+/**
+ * The congruence figure of a grid of lines — the given grid of an analytic congruence, compared
+ * with it, or (`analytic` null) the reader's edit of it: shared with "Your congruence".
+ * @param {<O extends {free(): void}>(o: O) => O} own
+ * @param {import('../../pkg/ruledlab.js').LineCongruence} grid   the given lines (givenGrid, or an edit)
+ * @param {import('../../pkg/ruledlab.js').AnalyticCongruence | null} analytic   the congruence they sample; null for an edit
  * @param {{scheme: string, steps: number, director: boolean, second: boolean, labels?: boolean}} p
  * @param {import('../scene.js').Context} ctx
  * @param {string} name   for the description
@@ -35,8 +47,7 @@ const REACH = 0.35;
  *   built-in congruences, about which the text makes its comparisons)
  * @returns {import('../scene.js').Built}
  */
-export function congruenceFigure(own, analytic, p, { t, format }, name, compare = false) {
-  const grid = own(analytic.grid(undefined, undefined, REACH));
+export function congruenceFigure(own, grid, analytic, p, { t, format }, name, compare = false) {
   const diagonal = p.scheme === 'diagonal';
   const steps = diagonal ? 1 : p.steps;
   const refined = own(grid.subdivide(SCHEMES[/** @type {keyof typeof SCHEMES} */ (p.scheme)](steps)));
@@ -68,7 +79,7 @@ export function congruenceFigure(own, analytic, p, { t, format }, name, compare 
     { label: 'congruence.readout.lines', value: lines },
   ];
   let errors = null;
-  if (!diagonal && steps === 1) {
+  if (analytic && !diagonal && steps === 1) {
     errors = analytic.errors(refined);
     readouts.push(
       { label: 'congruence.readout.distance', value: errors.distance, exactZero: true },
@@ -77,7 +88,7 @@ export function congruenceFigure(own, analytic, p, { t, format }, name, compare 
   }
   /** @type {import('../scene.js').Claim[]} */
   const claims = [];
-  if (compare) {
+  if (compare && analytic) {
     /** @type {Record<string, {distance: number, angle: number}>} */
     const all = {};
     for (const s of COMPARED) all[s] = analytic.errors(own(grid.subdivide(SCHEMES[s](1))));
@@ -111,7 +122,7 @@ export function congruenceFigure(own, analytic, p, { t, format }, name, compare 
             }),
         }
       : {}),
-    description: t('congruence.describe', {
+    description: t(analytic ? 'congruence.describe' : 'congruence.describeEdited', {
       congruence: t(`congruence.${name}`),
       rows: grid.rows,
       cols: grid.cols,

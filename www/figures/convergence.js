@@ -14,6 +14,19 @@ const SERIES = [
 ];
 
 /**
+ * The three rulings at u − h₀, u, u + h₀ that the figure draws: short segments around their
+ * striction points.
+ * @param {<O extends {free(): void}>(o: O) => O} own
+ * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
+ * @param {{u: number, h0: number}} p
+ */
+export function convergenceSample(own, analytic, p) {
+  const H = Math.min(p.h0, 1);
+  const sampled = own(analytic.sample(3, { uMin: p.u - H, uMax: p.u + H, closed: false }));
+  return own(sampled.recut(Math.max(4 * H, 0.6)));
+}
+
+/**
  * The convergence figure of an analytic surface at parameter u: shared with "Your surface".
  * @param {<O extends {free(): void}>(o: O) => O} own
  * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
@@ -24,8 +37,7 @@ const SERIES = [
 export function convergenceFigure(own, analytic, p, { t }) {
   const H = Math.min(p.h0, 1);
   const study = analytic.convergence({ u: p.u, h0: H, levels: p.levels });
-  const sampled = own(analytic.sample(3, { uMin: p.u - H, uMax: p.u + H, closed: false }));
-  const sample = own(sampled.recut(Math.max(4 * H, 0.6))); // short segments around the striction points
+  const sample = convergenceSample(own, analytic, p);
   const seg = sample.segmentsF32();
   const inv = sample.invariants();
   const at = new Float64Array([p.u]);

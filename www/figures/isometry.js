@@ -5,6 +5,7 @@ import { stripIndices } from '../../pkg/ruledlab.js';
 import { f32 } from '../scene.js';
 import { multiply } from '../math.js';
 import { developmentSvg } from '../export/development.js';
+import { parallelProblems, rulingSet } from '../edit/sets.js';
 
 /** A translation by (x, y, z), column-major. */
 const translation = (/** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ z) =>
@@ -61,9 +62,11 @@ function claimsOf(name, n, radius, finer) {
  * @param {import('../scene.js').Context} ctx
  * @param {string} name
  * @param {{radius: number, n: number} | null} [finer]   ρ of the same surface with about twice the rulings
+ * @param {string | null} [from]   what the surface is, for its handles (the isometry scene): its
+ *   rulings' endpoints, drawn where the input surface is (the ghost, or the first panel)
  * @returns {import('../scene.js').Built}
  */
-export function isometryFigure(own, surface, p, { t }, name, finer = null) {
+export function isometryFigure(own, surface, p, { t }, name, finer = null, from = null) {
   const frame = f32(surface.referenceFrame());
   const input = surface.segmentsF32();
   const bent = own(surface.bend(p.layout === 'panels' ? 1 : p.t));
@@ -80,11 +83,14 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null) {
     layers.push({ kind: 'mesh', style: 'strip', positions: seg, indices: strip, transform: m });
   };
   let box;
+  /** @type {Float32Array} where the input surface is drawn */
+  let inputAt = frame;
   if (p.layout === 'panels') {
     const local = boundsThrough(frame, input);
     const width = (local.max[0] - local.min[0]) * 1.25 + 1e-9;
     const left = multiply(translation(-width, 0, 0), frame);
     const right = multiply(translation(width, 0, local.min[2]), frame);
+    inputAt = left;
     panel(input, f32(surface.invariants().striction), left);
     panel(bentSeg, f32(bent.invariants().striction), frame);
     panel(f32(surface.developmentInSpace()), f32(surface.developmentStrictionInSpace()), right);
@@ -129,5 +135,7 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null) {
       },
     ],
     data: { segments: bent.segments() },
+    problems: parallelProblems(surface.invariants().parallel, n, t),
+    ...(from ? { input: { sets: [rulingSet(surface.segments(), inputAt)], from } } : {}),
   };
 }

@@ -1,16 +1,19 @@
 // The striction figure (Section 2, Figs. 2–3, Example 1): a sampled analytic surface with its
 // common perpendiculars, the striction polygon m_i of Proposition 2, Fig. 3's polygon of the
 // perpendiculars' midpoints, the exact striction curve, the measured orders and the linear
-// complex. Drawn by the striction scene and "Your surface".
+// complex. Drawn by the striction scene and "Your surface"; on the reader's edit of the rulings
+// (no exact surface then: no errors, no exact curve, no orders).
 import { stripIndices } from '../../pkg/ruledlab.js';
 import { bounds, f32 } from '../scene.js';
 import { DATA_COMPLEX_TOLERANCE, ROUNDING } from '../limits.js';
+import { parallelProblems } from '../edit/sets.js';
 
 /**
- * The striction figure of an analytic surface sampled with `ranges` ({uMin, uMax, vMin, vMax,
- * closed}): shared with "Your surface".
- * @param {<O extends {free(): void}>(o: O) => O} own
- * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
+ * The striction figure of a discrete ruled surface: a sample of an analytic surface with
+ * `ranges` ({uMin, uMax, vMin, vMax, closed}), compared with it, or — `analytic` null — the
+ * reader's edit of such a sample. Shared with "Your surface".
+ * @param {import('../../pkg/ruledlab.js').RuledSurface} surface   the rulings drawn (and edited)
+ * @param {import('../../pkg/ruledlab.js').AnalyticSurface | null} analytic   the surface they sample; null for an edit
  * @param {{uMin: number, uMax: number, vMin?: number, vMax?: number, closed: boolean}} ranges
  * @param {{n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis?: boolean}} p
  * @param {import('../scene.js').Context} ctx
@@ -19,21 +22,21 @@ import { DATA_COMPLEX_TOLERANCE, ROUNDING } from '../limits.js';
  *   about which the text makes its claim)
  * @returns {import('../scene.js').Built}
  */
-export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = false) {
+export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders = false) {
   const { t } = ctx;
   const closed = ranges.closed;
-  const surface = own(analytic.sample(p.n, ranges));
+  const n = surface.length;
   const segments = surface.segmentsF32();
   const inv = surface.invariants({ closed });
-  const errors = analytic.samplingErrors(p.n, ranges);
-  const exact = analytic.striction(analytic.parameters(closed ? 400 : 401, ranges));
+  const errors = analytic?.samplingErrors(p.n, ranges) ?? null;
+  const exact = analytic?.striction(analytic.parameters(closed ? 400 : 401, ranges)) ?? null;
   /** @type {import('../scene.js').Layer[]} */
   const layers = [{ kind: 'segments', style: 'ruling', positions: segments }];
   if (p.normals) {
     layers.push({ kind: 'segments', style: 'normal', positions: f32(inv.footpoints) });
     layers.push({ kind: 'points', style: 'foot', positions: f32(inv.footpoints) });
   }
-  if (p.exact) layers.push({ kind: 'polyline', style: 'exact', positions: f32(exact), closed });
+  if (p.exact && exact) layers.push({ kind: 'polyline', style: 'exact', positions: f32(exact), closed });
   if (p.midpoints) {
     layers.push({
       kind: 'polyline',
@@ -47,7 +50,7 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = fa
     layers.push({ kind: 'polyline', style: 'striction', positions: f32(inv.striction), closed });
     layers.push({ kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) });
   }
-  if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: segments, indices: stripIndices(p.n, closed) });
+  if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: segments, indices: stripIndices(n, closed) });
   // beyond the paper: the linear complex that fits the rulings (README, "Focal geometry")
   const complex = surface.linearComplex({ tolerance: DATA_COMPLEX_TOLERANCE });
   if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisSegment[0])) {
@@ -57,7 +60,7 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = fa
   const measured = [];
   /** @type {import('../scene.js').Claim[]} */
   const claims = [];
-  if (orders) {
+  if (orders && analytic) {
     // measured by the core: the errors at N rulings against the spacing halved
     const orders = analytic.samplingOrders(p.n, ranges);
     const o = { footpoint: orders.footpoint, midpoint: orders.midpoint, perpendicular: orders.perpendicularMidpoint };
@@ -76,18 +79,28 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = fa
     p.normals && t('striction.describe.normals'),
     p.polygon && t('striction.describe.polygon'),
     p.midpoints && t('striction.describe.midpoints'),
-    p.exact && t('striction.describe.exact'),
+    p.exact && exact && t('striction.describe.exact'),
   ].filter(Boolean);
+  const parallelPairs = inv.parallel.reduce((a, b) => a + b, 0);
+  const surfaceName = t(`surface.${name}`);
   return {
     bounds: bounds(segments),
     camera: { yaw: -0.9, pitch: 0.45 },
     layers,
     readouts: [
-      { label: 'readout.rulings', value: p.n },
-      { label: 'readout.parallelPairs', value: errors.parallelPairs },
-      { label: 'readout.midpointError', value: errors.midpoint, exactZero: true },
-      { label: 'readout.footpointError', value: errors.footpoint, exactZero: true },
-      { label: 'readout.perpendicularMidpointError', value: errors.perpendicularMidpoint, exactZero: true },
+      { label: 'readout.rulings', value: n },
+      { label: 'readout.parallelPairs', value: errors?.parallelPairs ?? parallelPairs },
+      ...(errors
+        ? [
+            { label: 'readout.midpointError', value: errors.midpoint, exactZero: true },
+            { label: 'readout.footpointError', value: errors.footpoint, exactZero: true },
+            {
+              label: 'readout.perpendicularMidpointError',
+              value: errors.perpendicularMidpoint,
+              exactZero: true,
+            },
+          ]
+        : []),
       { label: 'readout.meanDelta', value: middle },
       { label: 'focal.readout.complex', value: t(`complex.kind.${complex.kind}`) },
       ...(complex.kind === 'complex'
@@ -102,14 +115,21 @@ export function strictionFigure(own, analytic, ranges, p, ctx, name, orders = fa
       ...measured,
     ],
     claims,
-    description: t('striction.describe', {
-      surface: t(`surface.${name}`),
-      n: p.n,
-      closed: t(closed ? 'describe.closed' : 'describe.open'),
-      shown: shown.length ? shown.join(', ') : t('describe.nothingElse'),
-      midpoint: errors.midpoint,
-      footpoint: errors.footpoint,
-    }),
+    problems: parallelProblems(inv.parallel, n, t),
+    description: errors
+      ? t('striction.describe', {
+          surface: surfaceName,
+          n,
+          closed: t(closed ? 'describe.closed' : 'describe.open'),
+          shown: shown.length ? shown.join(', ') : t('describe.nothingElse'),
+          midpoint: errors.midpoint,
+          footpoint: errors.footpoint,
+        })
+      : t('striction.describeEdited', {
+          surface: surfaceName,
+          n,
+          shown: shown.length ? shown.join(', ') : t('describe.nothingElse'),
+        }),
     data: { segments: surface.segments() },
   };
 }

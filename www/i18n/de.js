@@ -2,10 +2,12 @@
 // Liniengeometrie nach ../shared/paper/GLOSSARY-de.md). Erläuterungen der Szenen: de-texts.js.
 import texts from './de-texts.js';
 import errors from './de-errors.js';
+import edit from './de-edit.js';
 
 export default {
   ...texts,
   ...errors,
+  ...edit,
   'app.title': 'ruledlab',
   'app.subtitle': 'Diskrete Modelle von Regelflächen und Geradenkongruenzen, nach Odehnal & Pottmann',
   'app.scene': 'Szene',
@@ -68,10 +70,21 @@ export default {
   'element.unknownScene': 'Eine Szene „{scene}“ gibt es nicht. Die Szenen sind: {known}.',
   'element.unknownPaper':
     'Eine Abbildung oder ein Beispiel der Arbeit namens „{paper}“ gibt es nicht. Es gibt: {known}.',
+  'element.note.notOnOff':
+    'Der Wert von „{key}“ im Attribut params ist weder ein noch aus; es gilt die Voreinstellung.',
+  'element.note.notNumber': 'Der Wert von „{key}“ im Attribut params ist keine Zahl; es gilt die Voreinstellung.',
+  'element.note.clamped':
+    'Der Wert von „{key}“ im Attribut params liegt außerhalb des Bereichs; es gilt der nächste erlaubte Wert.',
+  'element.note.unknownChoice':
+    'Der Wert von „{key}“ im Attribut params ist keine der Auswahlmöglichkeiten; es gilt die Voreinstellung.',
+  'element.note.tooLong': 'Der Wert von „{key}“ im Attribut params ist zu lang; es gilt die Voreinstellung.',
+  'element.note.badInput': 'Das Attribut input passt nicht zu dieser Szene; die eingebaute Eingabe wird gezeigt.',
   'element.badCamera':
     'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',
   'boot.noWebgl2':
     'ruledlab konnte nicht starten: Dieser Browser (oder dieses Gerät) bietet kein WebGL2, das die 3D-Ansicht braucht. Aktuelle Versionen von Firefox, Chrome, Edge und Safari bieten es; ein Browser mit abgeschalteter Hardwarebeschleunigung unter Umständen nicht.',
+  'boot.cspWasm':
+    "ruledlab konnte nicht starten: Die Seite, in der es steht, verbietet WebAssembly. Ihre Content-Security-Policy braucht 'wasm-unsafe-eval' in script-src (README, „In a course system“).",
   'boot.noWasm':
     'ruledlab konnte nicht starten: Dieser Browser kann sein WebAssembly nicht ausführen (nötig ist WebAssembly mit SIMD: Chrome 91, Firefox 89, Safari 16.4 oder neuer).',
   'boot.load':
@@ -88,11 +101,15 @@ export default {
   'view.fullscreen': 'Vollbild',
   'view.shortcuts': 'Tastenkürzel (?)',
   'view.cancel': 'Abbrechen',
+  'view.closeNote': 'Diesen Hinweis schließen',
   'view.legend': 'Legende',
   'view.hintMouse': 'Ziehen: drehen · Umschalt/Rechts-Ziehen: verschieben · Mausrad: zoomen · F: einpassen · ?: Tasten',
   'view.hintTouch': 'ein Finger: drehen · zwei Finger: verschieben und zoomen',
   'panel.controls': 'Parameter der Szene',
   'panel.readout': 'Messwerte',
+  'control.outOfRange': 'Außerhalb des Bereichs des Schiebereglers, von {min} bis {max}.',
+  'control.notNumber': 'Keine Zahl: Geben Sie eine ein, etwa 0,5.',
+  'control.notFraction': 'Keine Zahl: Geben Sie eine ein, etwa 0,5, oder einen Bruch wie 1/13.',
   'control.exactValue': 'Exakter Wert von {name}',
   'control.exactHint': 'Zahl oder Bruch eintippen, z. B. 1/13',
   'control.numberHint': 'Eine Zahl eingeben',

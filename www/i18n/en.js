@@ -2,10 +2,12 @@
 // subscripts (ui/richtext.js). Scene explanations (markup) are in en-texts.js.
 import texts from './en-texts.js';
 import errors from './en-errors.js';
+import edit from './en-edit.js';
 
 export default {
   ...texts,
   ...errors,
+  ...edit,
   // the page
   'app.title': 'ruledlab',
   'app.subtitle': 'Discrete models of ruled surfaces and line congruences, after Odehnal & Pottmann',
@@ -66,10 +68,20 @@ export default {
   'export.plot': 'Plot (SVG)',
   'element.unknownScene': 'There is no scene “{scene}”. The scenes are: {known}.',
   'element.unknownPaper': 'There is no figure or example of the paper called “{paper}”. They are: {known}.',
+  'element.note.notOnOff': 'The value of “{key}” in the params attribute is not on or off; its default is used.',
+  'element.note.notNumber': 'The value of “{key}” in the params attribute is not a number; its default is used.',
+  'element.note.clamped':
+    'The value of “{key}” in the params attribute is out of range; the nearest allowed value is used.',
+  'element.note.unknownChoice':
+    'The value of “{key}” in the params attribute is not one of the choices; its default is used.',
+  'element.note.tooLong': 'The value of “{key}” in the params attribute is too long; its default is used.',
+  'element.note.badInput': 'The input attribute does not fit this scene; the built-in input is shown.',
   'element.badCamera':
     'The camera attribute could not be read (six numbers: yaw, pitch, distance, x, y, z); the view is fitted to the scene.',
   'boot.noWebgl2':
     'ruledlab could not start: this browser (or this device) does not provide WebGL2, which the 3D view needs. Current Firefox, Chrome, Edge and Safari provide it; a browser with hardware acceleration turned off may not.',
+  'boot.cspWasm':
+    "ruledlab could not start: the page it is in forbids WebAssembly. Its Content-Security-Policy needs 'wasm-unsafe-eval' in script-src (README, “In a course system”).",
   'boot.noWasm':
     'ruledlab could not start: this browser cannot run its WebAssembly (it needs WebAssembly with SIMD: Chrome 91, Firefox 89, Safari 16.4 or later).',
   'boot.load':
@@ -87,11 +99,15 @@ export default {
   'view.fullscreen': 'Full screen',
   'view.shortcuts': 'Keyboard shortcuts (?)',
   'view.cancel': 'Cancel',
+  'view.closeNote': 'Close this note',
   'view.legend': 'Legend',
   'view.hintMouse': 'drag: turn · shift/right-drag: move · wheel: zoom · F: fit · ?: keys',
   'view.hintTouch': 'one finger: turn · two fingers: move and zoom',
   'panel.controls': 'Parameters of the scene',
   'panel.readout': 'Measured values',
+  'control.outOfRange': 'Outside the slider’s range, from {min} to {max}.',
+  'control.notNumber': 'Not a number: type one such as 0.5.',
+  'control.notFraction': 'Not a number: type one such as 0.5 or a fraction such as 1/13.',
   'control.exactValue': 'Exact value of {name}',
   'control.exactHint': 'Type a number or a fraction, e.g. 1/13',
   'control.numberHint': 'Type a number',

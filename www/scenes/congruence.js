@@ -1,9 +1,10 @@
 // Section 5, Figs. 11–15: line congruences between two director surfaces, refined by the
 // butterfly scheme (16) or variationally (Section 5.2); given lines thin, inserted lines in
 // colour, the director surface d₁ shaded (and d₂ on request).
-import { AnalyticCongruence } from '../../pkg/ruledlab.js';
+import { AnalyticCongruence, LineCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { congruenceFigure, fig14Applies, SCHEME_PARAMS, LEGEND } from '../figures/congruence.js';
+import { congruenceFigure, fig14Applies, givenGrid, SCHEME_PARAMS, LEGEND } from '../figures/congruence.js';
+import { lineSet } from '../edit/sets.js';
 import { congruenceOptions } from '../catalogue.js';
 
 /** @typedef {{congruence: string, scheme: string, steps: number, director: boolean, second: boolean, labels: boolean}} CongruenceParams */
@@ -13,6 +14,8 @@ export const scene = defineScene({
   title: 'congruence.title',
   text: 'congruence.text',
   paper: true,
+  // an edit of the given lines replaces the congruence they sample
+  fixed: ['congruence'],
   params: [
     {
       key: 'congruence',
@@ -37,7 +40,17 @@ export const scene = defineScene({
     return scoped((own) => {
       const name = String(p.congruence);
       const analytic = own(AnalyticCongruence.byName(name));
-      return congruenceFigure(own, analytic, p, ctx, name, true);
+      const given = givenGrid(own, analytic);
+      const edited = ctx.input?.lines;
+      const grid = edited ? own(LineCongruence.fromGrid(given.rows, given.cols, edited)) : given;
+      const built = congruenceFigure(own, grid, edited ? null : analytic, p, ctx, name, true);
+      // the handles: p and q of every given line
+      const from = ctx.t('edit.from.congruence', {
+        congruence: ctx.t(`congruence.${name}`),
+        rows: given.rows,
+        cols: given.cols,
+      });
+      return { ...built, input: { sets: [lineSet(grid.segments(), grid.cols)], from } };
     });
   },
 });

@@ -1,16 +1,49 @@
 // Propositions 1 and 2: the footpoints converge to the striction point at first order, their
 // midpoint at second order; likewise δ and its average; and the common perpendicular tends to
 // the central tangent (4). Measured live by the core, plotted log-log.
-import { AnalyticSurface } from '../../pkg/ruledlab.js';
-import { defineScene, scoped } from '../scene.js';
-import { convergenceFigure } from '../figures/convergence.js';
+import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
+import { defineScene, scoped, bounds, f32 } from '../scene.js';
+import { convergenceFigure, convergenceSample } from '../figures/convergence.js';
 import { surfaceOptions } from '../catalogue.js';
+import { parallelProblems, rulingSet } from '../edit/sets.js';
+
+/**
+ * The reader's edit of the three rulings: their common perpendiculars, footpoints and striction
+ * point, and δ. The orders need the exact surface, which an edit does not have.
+ * @param {import('../../pkg/ruledlab.js').RuledSurface} sample
+ * @param {import('../scene.js').Context} ctx
+ * @returns {import('../scene.js').Built}
+ */
+function editedSample(sample, { t }) {
+  const seg = sample.segmentsF32();
+  const inv = sample.invariants();
+  return {
+    bounds: bounds(seg),
+    camera: { yaw: -0.9, pitch: 0.35 },
+    layers: [
+      { kind: 'segments', style: 'rulingBold', positions: seg },
+      { kind: 'segments', style: 'normal', positions: f32(inv.footpoints) },
+      { kind: 'points', style: 'foot', positions: f32(inv.footpoints) },
+      { kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) },
+    ],
+    readouts: [
+      { label: 'convergence.readout.delta01', value: inv.distribution[0] },
+      { label: 'convergence.readout.delta12', value: inv.distribution[1] },
+      { label: 'convergence.readout.deltaMeanEdited', value: inv.distributionMean[0] },
+    ],
+    note: t('convergence.editedNote'),
+    problems: parallelProblems(inv.parallel, 3, t),
+    description: t('convergence.describeEdited', { delta: inv.distributionMean[0] }),
+  };
+}
 
 export const scene = defineScene({
   id: 'convergence',
   title: 'convergence.title',
   text: 'convergence.text',
   paper: true,
+  // an edit of the three rulings replaces the surface they sample
+  fixed: ['surface', 'u', 'h0', 'levels'],
   params: [
     {
       key: 'surface',
@@ -48,8 +81,15 @@ export const scene = defineScene({
   ],
   create(p, ctx) {
     return scoped((own) => {
-      const analytic = own(AnalyticSurface.byName(String(p.surface)));
-      return convergenceFigure(own, analytic, { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) }, ctx);
+      const name = String(p.surface);
+      const analytic = own(AnalyticSurface.byName(name));
+      const q = { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) };
+      const edited = ctx.input?.rulings;
+      const sample = edited ? own(RuledSurface.fromSegments(edited)) : convergenceSample(own, analytic, q);
+      const built = edited ? editedSample(sample, ctx) : convergenceFigure(own, analytic, q, ctx);
+      // the handles: the endpoints of the three rulings
+      const from = ctx.t('edit.from.convergence', { surface: ctx.t(`surface.${name}`), u: q.u });
+      return { ...built, input: { sets: [rulingSet(sample.segments())], from } };
     });
   },
 });

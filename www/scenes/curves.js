@@ -2,6 +2,7 @@
 // step by step, with the tension w on a slider or typed exactly (Fig. 8 uses w = 1/13).
 import { subdividePolygon } from '../../pkg/ruledlab.js';
 import { defineScene, bounds, f32 } from '../scene.js';
+import { pointSet } from '../edit/sets.js';
 
 /** The control polygon: a lopsided star in the plane z = 0 (the project's choice; the paper gives no data). */
 const POLYGON = new Float64Array([
@@ -53,9 +54,11 @@ export const scene = defineScene({
     { style: 'level', label: 'curves.legend.levels', when: (p) => !!p.levels && Number(p.steps) > 1 },
     { style: 'result', label: 'curves.legend.refined', when: (p) => Number(p.steps) > 0 },
   ],
-  create(p, { t }) {
+  create(p, { t, input }) {
     const steps = Number(p.steps),
       closed = !!p.closed;
+    // the control polygon: the project's, or the reader's edit of it
+    const polygon = input?.points ?? POLYGON;
     const scheme = /** @type {import('../../pkg/ruledlab.js').SubdivideOptions['scheme']} */ (p.scheme);
     /** @returns {import('../../pkg/ruledlab.js').SubdivideOptions} */
     const options = (/** @type {number} */ k) => ({
@@ -65,12 +68,12 @@ export const scene = defineScene({
       ...(scheme === 'four-point' ? { w: Number(p.w) } : scheme === 'bspline' ? { degree: 3 } : {}),
     });
     const levels = [];
-    for (let k = p.levels ? 1 : steps; k <= steps; k++) if (k > 0) levels.push(subdividePolygon(POLYGON, options(k)));
-    const final = levels.at(-1) ?? POLYGON;
+    for (let k = p.levels ? 1 : steps; k <= steps; k++) if (k > 0) levels.push(subdividePolygon(polygon, options(k)));
+    const final = levels.at(-1) ?? polygon;
     /** @type {import('../scene.js').Layer[]} */
     const layers = [
-      { kind: 'polyline', style: 'given', positions: f32(POLYGON), closed },
-      { kind: 'points', style: 'givenPoint', positions: f32(POLYGON) },
+      { kind: 'polyline', style: 'given', positions: f32(polygon), closed },
+      { kind: 'points', style: 'givenPoint', positions: f32(polygon) },
     ];
     for (const level of levels.slice(0, -1))
       layers.push({ kind: 'polyline', style: 'level', positions: f32(level), closed });
@@ -79,7 +82,7 @@ export const scene = defineScene({
       if (steps <= 3) layers.push({ kind: 'points', style: 'resultPoint', positions: f32(final) });
     }
     return {
-      bounds: bounds(POLYGON, final),
+      bounds: bounds(polygon, final),
       camera: { yaw: -Math.PI / 2, pitch: 1.45 },
       layers,
       readouts: [
@@ -97,6 +100,8 @@ export const scene = defineScene({
         steps,
         points: final.length / 3,
       }),
+      // the handles: the control points
+      input: { sets: [pointSet(Float64Array.from(polygon))], from: t('edit.from.curves') },
     };
   },
 });

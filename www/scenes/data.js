@@ -2,6 +2,7 @@
 import { LineCongruence, RuledSurface, stripIndices, gridIndices } from '../../pkg/ruledlab.js';
 import { focalFigure } from '../figures/focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
+import { lineSet, parallelProblems, rulingSet } from '../edit/sets.js';
 
 /**
  * What the scene shows before anything is imported: five rulings of a small twisted strip.
@@ -33,8 +34,11 @@ export const scene = defineScene({
     { style: 'torsal', label: 'focal.legend.torsal', when: (p) => !!p.focal },
   ],
   create(p, ctx) {
-    const { t, data } = ctx;
-    const { segments, rows, cols } = data ?? EXAMPLE;
+    const { t, data, input } = ctx;
+    const { rows, cols } = data ?? EXAMPLE;
+    // your segments as imported, or as you moved them since
+    const segments = input?.lines ?? input?.rulings ?? (data ?? EXAMPLE).segments;
+    const from = t(data ? 'edit.from.data' : 'edit.from.example');
     return scoped((own) => {
       if (rows && cols) {
         const c = own(LineCongruence.fromGrid(rows, cols, segments));
@@ -64,6 +68,7 @@ export const scene = defineScene({
           readouts,
           description,
           data: { segments, grid: { rows, cols } },
+          input: { sets: [lineSet(c.segments(), cols)], from },
         };
       }
       const closed = !!p.closed;
@@ -88,7 +93,9 @@ export const scene = defineScene({
           { label: 'readout.parallelPairs', value: parallel },
         ],
         description: t('data.describe', { n: s.length, parallel }),
+        problems: parallelProblems(inv.parallel, s.length, t),
         data: { segments },
+        input: { sets: [rulingSet(s.segments())], from },
       };
     });
   },

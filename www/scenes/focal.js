@@ -2,10 +2,11 @@
 // torsal directions as short strokes on the director surface, its lines by kind (hyperbolic,
 // elliptic, parabolic), the normality and the best-fitting linear complex. Everything comes
 // from the core (LineCongruence.focal, focalSheetF32, torsalStrokesF32, linearComplex).
-import { AnalyticCongruence } from '../../pkg/ruledlab.js';
+import { AnalyticCongruence, LineCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds } from '../scene.js';
 import { focalFigure } from '../figures/focal.js';
 import { CONGRUENCE_PRESETS, congruencePreset } from '../catalogue.js';
+import { lineSet } from '../edit/sets.js';
 
 /** @typedef {{congruence: string, reach: number, n: number, sheets: boolean, torsal: boolean}} FocalParams */
 
@@ -13,6 +14,8 @@ export const scene = defineScene({
   id: 'focal',
   title: 'focal.title',
   text: 'focal.text',
+  // an edit of the lines replaces the congruence, its grid and the lines' length
+  fixed: ['congruence', 'reach', 'n'],
   params: [
     {
       key: 'congruence',
@@ -41,15 +44,22 @@ export const scene = defineScene({
       const name = String(p.congruence);
       const analytic = own(AnalyticCongruence.byName(name));
       const n = Number(p.n);
-      const grid = own(analytic.grid(n, n, Number(p.reach)));
+      const edited = ctx.input?.lines;
+      const grid = own(edited ? LineCongruence.fromGrid(n, n, edited) : analytic.grid(n, n, Number(p.reach)));
       const figure = focalFigure(own, grid, p, ctx);
+      const congruence = ctx.t(`congruence.${name}`);
       return {
         bounds: bounds(...figure.positions),
         camera: { yaw: -2.1, pitch: 0.55 },
         layers: figure.layers,
         readouts: figure.readouts,
-        description: `${ctx.t(`congruence.${name}`)}: ${figure.sentence}`,
+        description: `${edited ? ctx.t('edit.edited', { what: congruence }) : congruence}: ${figure.sentence}`,
         data: { segments: grid.segments(), grid: { rows: grid.rows, cols: grid.cols } },
+        // the handles: p and q of every line of the grid
+        input: {
+          sets: [lineSet(grid.segments(), grid.cols)],
+          from: ctx.t('edit.from.congruence', { congruence, rows: n, cols: n }),
+        },
       };
     });
   },

@@ -2,7 +2,7 @@
 // Section 5 like the paper's examples.
 import { AnalyticCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { congruenceFigure, SCHEME_PARAMS, LEGEND } from '../figures/congruence.js';
+import { congruenceFigure, givenGrid, SCHEME_PARAMS, LEGEND } from '../figures/congruence.js';
 import { focalFigure } from '../figures/focal.js';
 import { CONGRUENCE_PRESETS, congruencePreset, formulaParameter } from '../catalogue.js';
 
@@ -63,6 +63,7 @@ export const scene = defineScene({
   id: 'formula-congruence',
   title: 'formulaCongruence.title',
   text: 'formulaCongruence.text',
+  editAsData: true,
   params: [
     {
       key: 'preset',
@@ -114,7 +115,7 @@ export const scene = defineScene({
           decimalComma: ctx.lang === 'de' ? true : 'unambiguous',
         }),
       );
-      const built = congruenceFigure(own, analytic, p, ctx, 'formula');
+      const built = congruenceFigure(own, givenGrid(own, analytic), analytic, p, ctx, 'formula');
       if (p.focal) {
         // beyond the paper: the focal sheets and torsal directions of the given grid (scene "Focal surfaces")
         const focal = focalFigure(own, own(analytic.grid()), { sheets: true, torsal: true }, ctx);

@@ -73,6 +73,7 @@ export const scene = defineScene({
   id: 'formula',
   title: 'formula.title',
   text: 'formula.text',
+  editAsData: true,
   params: [
     {
       key: 'preset',
@@ -255,7 +256,7 @@ export const scene = defineScene({
           'formula',
         );
       }
-      return strictionFigure(own, analytic, ranges, p, ctx, 'formula');
+      return strictionFigure(own(analytic.sample(p.n, ranges)), analytic, ranges, p, ctx, 'formula');
     });
   },
 });

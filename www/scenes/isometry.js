@@ -2,7 +2,7 @@
 // surface (t = 0) to its isometric conoidal model (t = 1); "three panels" shows Fig. 6:
 // surface, conoidal model and approximate development side by side. Everything is drawn in
 // the reference frame of the conoidal model (x = e_0, z = n_{0,1}), which the core supplies.
-import { AnalyticSurface } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
 import { isometryFigure, middleRadius } from '../figures/isometry.js';
 import { surfaceOptions, rangesOf } from '../catalogue.js';
@@ -24,6 +24,8 @@ export const scene = defineScene({
   title: 'isometry.title',
   text: 'isometry.text',
   paper: true,
+  // an edit of the rulings replaces the sampled surface
+  fixed: ['surface', 'n'],
   params: [
     {
       key: 'surface',
@@ -88,13 +90,18 @@ export const scene = defineScene({
       const analytic = own(AnalyticSurface.byName(name));
       const ranges = rangesOf(name, RANGES[/** @type {keyof typeof RANGES} */ (name)] ?? {});
       const n = Number(p.n);
-      const surface = own(analytic.sample(n, ranges));
+      const edited = ctx.input?.rulings;
+      const surface = own(edited ? RuledSurface.fromSegments(edited) : analytic.sample(n, ranges));
       // Fig. 5: ρ with twice the spacing halved, to show its order where the caption holds
       const finer =
-        name === 'helical-orthogonal'
+        name === 'helical-orthogonal' && !edited
           ? { n: 2 * n - 1, radius: middleRadius(own(analytic.sample(2 * n - 1, ranges))) }
           : null;
-      return isometryFigure(own, surface, p, ctx, name, finer);
+      const from = ctx.t('edit.from.surface', { surface: ctx.t(`surface.${name}`), n });
+      const built = isometryFigure(own, surface, p, ctx, name, finer, from);
+      // the captions' claims are about the built-in surfaces
+      if (!edited) return built;
+      return { ...built, claims: [], description: ctx.t('edit.describe', { description: built.description }) };
     });
   },
 });

@@ -1,7 +1,8 @@
 // Beyond the paper: subdivision in the space of lines. Sliding the given endpoints along their
 // lines moves the endpoint scheme's surface, but not the line-space scheme's.
-import { AnalyticSurface, stripIndices } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, RuledSurface, stripIndices } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds } from '../scene.js';
+import { rulingSet } from '../edit/sets.js';
 
 const RANGES = { hyperboloid: { uMin: 0, uMax: 3 }, helical: { uMin: 0, uMax: 6 }, quartic: { uMin: -1, uMax: 1 } };
 
@@ -17,6 +18,9 @@ export const scene = defineScene({
   id: 'lines',
   title: 'lines.title',
   text: 'lines.text',
+  // an edit of the given rulings replaces the slid ones (the surface stays: both schemes are
+  // compared with what they make of its own rulings)
+  fixed: ['surface', 'slide'],
   params: [
     {
       key: 'surface',
@@ -37,13 +41,15 @@ export const scene = defineScene({
     { style: 'endpointScheme', label: 'lines.legend.endpoints' },
     { style: 'lineScheme', label: 'lines.legend.lines' },
   ],
-  create(p, { t }) {
+  create(p, { t, input }) {
     return scoped((own) => {
       const name = /** @type {keyof typeof RANGES} */ (String(p.surface));
       const analytic = own(AnalyticSurface.byName(name));
       const base = own(analytic.sample(9, { ...RANGES[name], closed: false }));
       const length = base.meanLength();
-      const slid = own(base.slide(pattern(9, Number(p.slide), length)));
+      // the given rulings: the endpoints slid by the pattern, or as the reader moved them
+      const edited = input?.rulings;
+      const slid = own(edited ? RuledSurface.fromSegments(edited) : base.slide(pattern(9, Number(p.slide), length)));
       /** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */
       const options = { scheme: 'four-point', steps: Number(p.steps) };
       const ends = own(slid.subdivide(options));
@@ -68,13 +74,15 @@ export const scene = defineScene({
           { label: 'lines.readout.endpoints', value: endpointTurn, exactZero: true },
           { label: 'lines.readout.lines', value: lineTurn, exactZero: true },
         ],
-        description: t('lines.describe', {
+        description: t(edited ? 'lines.describeEdited' : 'lines.describe', {
           surface: t(`surface.${name}`),
           slide: Number(p.slide),
           endpointTurn,
           lineTurn,
         }),
         data: { segments: lines.segments() },
+        // the handles: the given rulings' endpoints (Shift slides one along its ruling)
+        input: { sets: [rulingSet(slid.segments())], from: t('edit.from.lines', { surface: t(`surface.${name}`) }) },
       };
     });
   },

@@ -3,6 +3,7 @@
 // machined surface. The part, the envelope and the tool are meshes built by the core.
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
+import { poseSet } from '../edit/sets.js';
 
 /** @type {Record<string, Partial<import('../../pkg/ruledlab.js').SubdivideOptions>>} */
 const SCHEMES = {
@@ -25,6 +26,8 @@ export const scene = defineScene({
   title: 'milling.title',
   text: 'milling.text',
   paper: true,
+  // an edit of the poses replaces the example's
+  fixed: ['poses'],
   params: [
     { key: 'poses', label: 'milling.param.poses', type: 'range', min: 4, max: 12, step: 1, value: 7 },
     { key: 'steps', label: 'milling.param.steps', type: 'range', min: 0, max: 3, step: 1, value: 1, play: true },
@@ -61,12 +64,17 @@ export const scene = defineScene({
     { style: 'tool', label: 'milling.legend.tool', when: (p) => !!p.tool },
     { style: 'part', label: 'milling.legend.part', when: (p) => !!p.part },
   ],
-  create(p, { t }) {
+  create(p, { t, input }) {
     return scoped((own) => {
       const steps = Number(p.steps);
-      const path = own(ToolPath.example(Number(p.poses)));
+      const example = own(ToolPath.example(Number(p.poses)));
+      // the given poses: the example's, or the reader's edit of them (the same tool)
+      const edited = input?.poses;
+      const path = edited ? own(ToolPath.fromSegments(edited, example.tool)) : example;
       const refined = own(path.refine({ ...SCHEMES[/** @type {keyof typeof SCHEMES} */ (p.scheme)], steps }));
-      const given = path.segmentsF32();
+      // the given axes as the poses were given: an edited axis end stays where the reader put it
+      // (the tool keeps its length along that direction)
+      const given = edited ? f32(edited) : path.segmentsF32();
       const all = refined.segmentsF32();
       const profile = ToolPath.exampleProfile(400);
       const deviation = maxDeviation(refined, profile);
@@ -118,32 +126,38 @@ export const scene = defineScene({
             ? Object.entries(compare).map(([k, v]) => ({ label: `milling.readout.compare.${k}`, value: v }))
             : []),
         ],
-        claims: [
-          ...(steps > 0
-            ? [
-                {
-                  text: 'milling.claim.refined',
-                  holds: Math.max(compare.variational, compare.averaged, compare['four-point']) < given0,
-                },
-              ]
-            : []),
-          ...(steps > 0 && Number(p.poses) >= 7
-            ? [
-                {
-                  text: 'milling.claim.variational',
-                  holds:
-                    Math.max(compare.variational, compare.averaged) < Math.min(compare['four-point'], compare.linear),
-                },
-              ]
-            : []),
-        ],
-        description: t('milling.describe', {
+        claims: edited
+          ? []
+          : [
+              ...(steps > 0
+                ? [
+                    {
+                      text: 'milling.claim.refined',
+                      holds: Math.max(compare.variational, compare.averaged, compare['four-point']) < given0,
+                    },
+                  ]
+                : []),
+              ...(steps > 0 && Number(p.poses) >= 7
+                ? [
+                    {
+                      text: 'milling.claim.variational',
+                      holds:
+                        Math.max(compare.variational, compare.averaged) <
+                        Math.min(compare['four-point'], compare.linear),
+                    },
+                  ]
+                : []),
+            ],
+        description: t(edited ? 'milling.describeEdited' : 'milling.describe', {
           poses: Number(p.poses),
           steps,
           scheme: t(`milling.scheme.${p.scheme}`),
           total: refined.length,
           deviation,
         }),
+        // the handles: every given pose's tip and a point on its axis (the end of the tool, until
+        // the reader moves it)
+        input: { sets: [poseSet(edited ?? path.segments())], from: t('edit.from.poses', { poses: Number(p.poses) }) },
         downloads: [
           {
             label: 'milling.download.json',

@@ -1,8 +1,9 @@
 // Section 2, Fig. 1: the notation of a discrete ruled surface on three consecutive rulings of
 // the hyperboloid of Example 1: angle, common perpendicular, footpoints, distance, and the
 // midpoint m_i of the two footpoints on R_i.
-import { AnalyticSurface } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
+import { parallelProblems, rulingSet } from '../edit/sets.js';
 
 /** The point t of the way along segment i of flat segments `s`. */
 const along = (/** @type {Float64Array} */ s, /** @type {number} */ i, /** @type {number} */ t) =>
@@ -13,6 +14,8 @@ export const scene = defineScene({
   title: 'notation.title',
   text: 'notation.text',
   paper: true,
+  // an edit of the three rulings replaces where they are sampled
+  fixed: ['spacing', 'u'],
   params: [
     {
       key: 'spacing',
@@ -32,14 +35,17 @@ export const scene = defineScene({
     { style: 'helper', label: 'notation.legend.parallel' },
     { style: 'strictionPoint', label: 'notation.legend.midpoint' },
   ],
-  create(p, { t }) {
+  create(p, ctx) {
+    const { t } = ctx;
     return scoped((own) => {
       const u = Number(p.u),
         spacing = Number(p.spacing);
       const hyp = own(AnalyticSurface.byName('hyperboloid'));
       const sampled = own(hyp.sample(3, { uMin: u - spacing, uMax: u + spacing, closed: false }));
       // segments of one length centred on the striction points keep the picture on what matters
-      const s = own(sampled.recut(1.6));
+      // (the reader's edit of them, if any)
+      const edited = ctx.input?.rulings;
+      const s = own(edited ? RuledSurface.fromSegments(edited) : sampled.recut(1.6));
       const seg = s.segments();
       const inv = s.invariants();
       const e = s.directions();
@@ -78,7 +84,14 @@ export const scene = defineScene({
           { label: 'notation.readout.distance', value: inv.distance[1] },
           { label: 'notation.readout.delta', value: inv.distribution[1] },
         ],
-        description: t('notation.describe', { angle: inv.angle[1], distance: inv.distance[1], spacing }),
+        problems: parallelProblems(inv.parallel, 3, t),
+        description: t(edited ? 'notation.describeEdited' : 'notation.describe', {
+          angle: inv.angle[1],
+          distance: inv.distance[1],
+          spacing,
+        }),
+        // the handles: the endpoints of the three rulings
+        input: { sets: [rulingSet(seg)], from: t('edit.from.notation', { u, spacing }) },
       };
     });
   },

@@ -1,10 +1,11 @@
 // Section 2, Figs. 2–3 (Example 1): a discrete ruled surface with its common perpendiculars,
 // the striction polygon m_i of Proposition 2 and, switchable, Fig. 3's polygon of the
 // midpoints of the common perpendiculars, against the exact striction curve.
-import { AnalyticSurface } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
 import { strictionFigure } from '../figures/striction.js';
 import { surfaceOptions, rangesOf } from '../catalogue.js';
+import { rulingSet } from '../edit/sets.js';
 
 /** @typedef {{surface: string, n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis: boolean}} StrictionParams */
 
@@ -13,6 +14,8 @@ export const scene = defineScene({
   title: 'striction.title',
   text: 'striction.text',
   paper: true,
+  // an edit of the rulings replaces the sampled surface (and its exact striction curve)
+  fixed: ['surface', 'n', 'exact'],
   params: [
     { key: 'surface', label: 'param.surface', type: 'select', value: 'hyperboloid', options: surfaceOptions() },
     { key: 'n', label: 'param.rulings', type: 'range', min: 6, max: 160, step: 1, value: 36, play: true },
@@ -36,7 +39,13 @@ export const scene = defineScene({
     return scoped((own) => {
       const name = String(p.surface);
       const analytic = own(AnalyticSurface.byName(name));
-      return strictionFigure(own, analytic, rangesOf(name), p, ctx, name, true);
+      const ranges = rangesOf(name);
+      const edited = ctx.input?.rulings;
+      const surface = own(edited ? RuledSurface.fromSegments(edited) : analytic.sample(p.n, ranges));
+      const built = strictionFigure(surface, edited ? null : analytic, ranges, p, ctx, name, true);
+      // the handles: every ruling's endpoints a_i, b_i
+      const from = ctx.t('edit.from.surface', { surface: ctx.t(`surface.${name}`), n: p.n });
+      return { ...built, input: { sets: [rulingSet(surface.segments())], from } };
     });
   },
 });

@@ -2,19 +2,37 @@
 // 12 rulings of the quartic surface, one ruling inserted per pair, n = 12, one of the two
 // triangulations of Fig. 9 with its notation, spheres at the inserted endpoints A_i (light)
 // and B_i (dark).
-import { AnalyticSurface, stripIndices } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, RuledSurface, stripIndices } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds } from '../scene.js';
 import { ROUNDING } from '../limits.js';
+import { rulingSet } from '../edit/sets.js';
 
 const U = { uMin: -1, uMax: 1, closed: false };
 /** The old ruling whose neighbourhood carries the labels of Fig. 9. */
 const LABELLED = 5;
+
+/**
+ * The comparisons the text makes, checked against every scheme's distance from the quartic.
+ * @param {{midpoint: number, literal: number, coupled: number, averaged: number, fourPoint: number}} compare
+ * @param {number} n
+ * @returns {import('../scene.js').Claim[]}
+ */
+function claimsOf(compare, n) {
+  const others = Math.min(compare.literal, compare.coupled, compare.averaged);
+  return [
+    { text: 'strip.claim.literal', holds: Math.abs(compare.literal - compare.midpoint) <= ROUNDING },
+    ...(n >= 6 ? [{ text: 'strip.claim.coupled', holds: compare.coupled < compare.midpoint }] : []),
+    { text: 'strip.claim.fourPoint', holds: compare.fourPoint < ROUNDING && compare.fourPoint <= others },
+  ];
+}
 
 export const scene = defineScene({
   id: 'strip',
   title: 'strip.title',
   text: 'strip.text',
   paper: true,
+  // an edit of the given rulings replaces the quartic surface (and its faint exact surface)
+  fixed: ['exact'],
   params: [
     {
       key: 'scheme',
@@ -62,29 +80,34 @@ export const scene = defineScene({
     { style: 'pointB', label: 'strip.legend.b' },
     { style: 'triangulation', label: 'strip.legend.triangulation', when: (p) => p.triangulation !== 'none' },
   ],
-  create(p, { t }) {
+  create(p, { t, input }) {
     return scoped((own) => {
       const n = Number(p.n);
       const quartic = own(AnalyticSurface.byName('quartic'));
-      const surface = own(quartic.sample(12, U));
+      // the given rulings (both boundary polygons a_i, b_i): the quartic's, or the reader's edit
+      const edited = input?.rulings;
+      const surface = own(edited ? RuledSurface.fromSegments(edited) : quartic.sample(12, U));
       /** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */
       const options =
         p.scheme === 'four-point'
           ? { scheme: 'four-point' }
           : { scheme: 'variational', n, variant: /** @type {'coupled' | 'literal' | 'averaged'} */ (p.scheme) };
       const refined = own(surface.subdivide(options));
-      const distance = quartic.insertedDistance(refined, 2, U.uMin, U.uMax);
-      // every scheme at this n, for the comparisons the text makes (and their claims)
+      // how far the inserted rulings are from the quartic: only for its own rulings (an edit has
+      // no exact surface)
       const error = (/** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */ o) =>
         quartic.insertedDistance(own(surface.subdivide(o)), 2, U.uMin, U.uMax);
-      const compare = {
-        midpoint: error({ scheme: 'bspline', degree: 1 }),
-        literal: error({ scheme: 'variational', n, variant: 'literal' }),
-        coupled: error({ scheme: 'variational', n, variant: 'coupled' }),
-        averaged: error({ scheme: 'variational', n, variant: 'averaged' }),
-        fourPoint: error({ scheme: 'four-point' }),
-      };
-      const others = Math.min(compare.literal, compare.coupled, compare.averaged);
+      const distance = edited ? NaN : quartic.insertedDistance(refined, 2, U.uMin, U.uMax);
+      // every scheme at this n, for the comparisons the text makes (and their claims)
+      const compare = edited
+        ? null
+        : {
+            midpoint: error({ scheme: 'bspline', degree: 1 }),
+            literal: error({ scheme: 'variational', n, variant: 'literal' }),
+            coupled: error({ scheme: 'variational', n, variant: 'coupled' }),
+            averaged: error({ scheme: 'variational', n, variant: 'averaged' }),
+            fourPoint: error({ scheme: 'four-point' }),
+          };
       const old = surface.segmentsF32();
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
@@ -99,7 +122,7 @@ export const scene = defineScene({
           style: 'triangulation',
           positions: refined.triangulationF32(n, Number(p.triangulation)),
         });
-      if (p.exact) {
+      if (p.exact && !edited) {
         const exact = own(quartic.sample(120, U));
         const seg = exact.segmentsF32();
         layers.push({ kind: 'mesh', style: 'surfaceFaint', positions: seg, indices: stripIndices(120) });
@@ -125,24 +148,26 @@ export const scene = defineScene({
         labels,
         readouts: [
           { label: 'readout.rulings', value: refined.length },
-          { label: 'strip.readout.distance', value: distance, exactZero: true },
-          ...Object.entries(compare).map(([k, v]) => ({
-            label: `strip.readout.compare.${k}`,
-            value: v,
-            exactZero: true,
-          })),
+          ...(compare
+            ? [
+                { label: 'strip.readout.distance', value: distance, exactZero: true },
+                ...Object.entries(compare).map(([k, v]) => ({
+                  label: `strip.readout.compare.${k}`,
+                  value: v,
+                  exactZero: true,
+                })),
+              ]
+            : []),
         ],
-        claims: [
-          { text: 'strip.claim.literal', holds: Math.abs(compare.literal - compare.midpoint) <= ROUNDING },
-          ...(n >= 6 ? [{ text: 'strip.claim.coupled', holds: compare.coupled < compare.midpoint }] : []),
-          { text: 'strip.claim.fourPoint', holds: compare.fourPoint < ROUNDING && compare.fourPoint <= others },
-        ],
-        description: t('strip.describe', {
+        claims: compare ? claimsOf(compare, n) : [],
+        description: t(edited ? 'strip.describeEdited' : 'strip.describe', {
           scheme: t(`strip.scheme.${p.scheme === 'four-point' ? 'fourPoint' : p.scheme}`),
           n,
           distance,
         }),
         data: { segments: refined.segments() },
+        // the handles: the points of both boundary polygons (the given rulings' ends a_i, b_i)
+        input: { sets: [rulingSet(surface.segments())], from: t('edit.from.strip') },
       };
     });
   },

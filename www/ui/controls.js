@@ -11,6 +11,9 @@ import { ROUNDING } from '../limits.js';
  * @property {(key: string, value: number | string | boolean, ended: boolean) => void} onChange
  *   a value changed (`ended`: the interaction is over, e.g. the slider was released)
  * @property {(key: string) => void} onPlay   the play button of a parameter was pressed
+ * @property {(param: import('../scene.js').Param) => string | null} [fixed]
+ *   the i18n key of the reason why a control is held where it is (an edit of the input replaces
+ *   it), or null
  */
 
 let serial = 0;
@@ -119,6 +122,23 @@ export function buildControls(form, scene, params, i18n, hooks) {
         const x = parseNumber(exact.value);
         const inRange = Number.isFinite(x) && x >= /** @type {number} */ (p.min) && x <= /** @type {number} */ (p.max);
         exact.setAttribute('aria-invalid', String(!inRange));
+        // said under the field, where a finger user sees it (a title only shows on hover)
+        problem.hidden = inRange;
+        problem.textContent = inRange
+          ? ''
+          : t(
+              Number.isFinite(x)
+                ? 'control.outOfRange'
+                : exact.title === t('control.exactHint')
+                  ? 'control.notFraction'
+                  : 'control.notNumber',
+              {
+                min: /** @type {number} */ (p.min),
+                max: /** @type {number} */ (p.max),
+              },
+            );
+        if (inRange) exact.removeAttribute('aria-describedby');
+        else exact.setAttribute('aria-describedby', problem.id);
         if (inRange) hooks.onChange(p.key, p.exact ? x : snap(p, x), true);
       });
       const stepper = (/** @type {-1 | 1} */ sign) => {
@@ -170,7 +190,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
   const update = (/** @type {import('../scene.js').Params} */ values) => {
     for (const [key, r] of rows) {
       r.set(values[key]);
-      const why = irrelevance(r.param, values);
+      const why = hooks.fixed?.(r.param) ?? irrelevance(r.param, values);
       r.input.disabled = !!why;
       if (r.play) r.play.disabled = !!why;
       r.row.classList.toggle('rl-disabled', !!why);

@@ -19,7 +19,10 @@ export const CSS = `
 .rl-stage.rl-page.rl-narrow { display: block; height: auto; }
 .rl-stage.rl-page.rl-narrow:not(.rl-no-panel) > .rl-view { position: sticky; top: 0; z-index: 3; height: max(240px, 58svh); border-bottom: 1px solid var(--line); }
 .rl-stage.rl-page.rl-narrow > .rl-panel { overflow: visible; border-top: 0; }
-.rl-stage.rl-narrow .rl-hint { display: none; }
+.rl-stage.rl-narrow .rl-note { display: flex; gap: .5rem; align-items: flex-start; }
+.rl-note > span { flex: 1; }
+.rl-stage .rl-note-close { flex: none; min-height: 24px; min-width: 24px; padding: 0 .35rem; line-height: 1; }
+.rl-hint { display: none; }
 .rl-stage.rl-narrow .rl-legend { top: .35rem; left: .35rem; max-width: calc(100% - .7rem); max-height: 38%; padding: .2rem .45rem; }
 .rl-stage.rl-narrow .rl-legend li { display: inline-flex; margin-right: .7rem; }
 .rl-stage.rl-narrow .rl-bar { left: .35rem; right: .35rem; bottom: .35rem; }
@@ -33,10 +36,16 @@ export const CSS = `
 .rl-stage math :is(msub, msup, msubsup, munder, mover, munderover) > :not(:first-child), .rl-stage math mfrac > * { font-size: max(12px, .71em); }
 .rl-legend { position: absolute; left: .6rem; top: .5rem; margin: 0; padding: .35rem .6rem; list-style: none; max-width: calc(100% - 1.2rem); max-height: 45%; overflow-y: auto;
   background: rgb(255 255 255 / .88); border-radius: 6px; font-size: max(12px, .8rem); line-height: 1.35; }
+.rl-stage .rl-legend.rl-legend-panel { position: static; max-width: none; max-height: none; overflow: visible; margin: 0 0 .7rem; padding: .3rem .5rem;
+  background: var(--paper); border: 1px solid var(--line); }
 .rl-legend li { display: flex; align-items: center; gap: .45rem; }
 .rl-swatch { flex: none; }
 .rl-bar { position: absolute; left: .6rem; right: .5rem; bottom: .5rem; display: flex; align-items: flex-end; gap: .3rem .8rem; pointer-events: none; }
 .rl-bar > * { pointer-events: auto; }
+/* toolbar buttons: their word, or in a narrow box their sign (the accessible name stays the word) */
+.rl-btn-sign { display: none; }
+.rl-narrow .rl-toolbar .rl-btn-sign { display: inline; font-size: 1.05rem; line-height: 1; }
+.rl-narrow .rl-toolbar .rl-btn-word { display: none; }
 .rl-toolbar { display: flex; gap: .3rem; flex-wrap: wrap; justify-content: flex-end; margin-left: auto; }
 .rl-stage button, .rl-stage select, .rl-stage input[type=text] { font: inherit; font-size: .85rem; color: var(--ink); }
 .rl-stage select { min-height: 28px; }
@@ -71,7 +80,7 @@ export const CSS = `
 .rl-cell { display: flex; align-items: center; gap: .4rem; flex-wrap: wrap; min-width: 0; }
 .rl-line { display: flex; align-items: center; gap: .3rem .4rem; flex: 1 1 100%; min-width: 0; flex-wrap: wrap; }
 .rl-cell select { flex: 1; min-width: 0; min-height: 28px; }
-.rl-cell input[type=range] { flex: 1 1 5rem; min-width: 4rem; height: 24px; margin: 0; }
+.rl-cell input[type=range] { flex: 1 1 5rem; min-width: 4rem; height: 24px; margin: 0; touch-action: pan-y; }
 .rl-cell input[type=checkbox] { width: 24px; height: 24px; margin: 0; }
 .rl-cell output { font-variant-numeric: tabular-nums; color: var(--muted); min-width: 3.2rem; text-align: right; font-size: .85rem; }
 .rl-exact { width: 4.6rem; min-height: 28px; padding: 0 .3rem; border: 1px solid #c9c5ba; border-radius: 5px; }
@@ -119,10 +128,40 @@ export const CSS = `
 .rl-figure { overflow-x: auto; }
 .rl-figure > svg { background: var(--paper); border-radius: 6px; width: 100%; min-width: 340px; height: auto; }
 .rl-shortcuts { max-width: 30rem; border: 1px solid var(--line); border-radius: 8px; padding: 1rem 1.2rem; color: var(--ink); }
+.rl-shortcuts-close { float: right; margin: 0 0 .4rem .8rem; }
 .rl-shortcuts::backdrop { background: rgb(0 0 0 / .25); }
 .rl-shortcuts table { border-collapse: collapse; font-size: .9rem; }
 .rl-shortcuts td { padding: .2rem .6rem .2rem 0; vertical-align: top; }
 .rl-shortcuts kbd { font: .85rem ui-monospace, monospace; border: 1px solid #c9c5ba; border-bottom-width: 2px; border-radius: 4px; padding: 0 .3rem; background: #fff; }
+/* editing (edit/editor.js): handles are rings over the view (the one under the pointer bigger and
+   orange, the selected one vermillion and thick), the coordinates beside the handle moved, the
+   move modes over the toolbar, the edit's note in the panel */
+.rl-handles { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
+.rl-handle { position: absolute; left: -7px; top: -7px; width: 14px; height: 14px; border-radius: 50%;
+  background: rgb(255 255 255 / .55); border: 2px solid #1f2430; box-shadow: 0 0 0 1.5px rgb(255 255 255 / .9); }
+.rl-handle.rl-hover { left: -10px; top: -10px; width: 20px; height: 20px; border: 3px solid #e69f00; background: rgb(255 255 255 / .35); }
+.rl-handle.rl-selected { left: -11px; top: -11px; width: 22px; height: 22px; border: 4px solid #d55e00; background: rgb(255 255 255 / .25); }
+.rl-handle-tip { position: absolute; left: 0; top: 0; padding: .15rem .45rem; border-radius: 5px; background: rgb(31 36 48 / .9);
+  color: #fff; font-size: .8rem; font-variant-numeric: tabular-nums; white-space: nowrap; }
+.rl-view canvas.rl-grab { cursor: grab; }
+.rl-view canvas.rl-grab:active { cursor: grabbing; }
+.rl-editbar { flex: 1 1 auto; min-width: 0; display: flex; flex-wrap: wrap; gap: .3rem; align-items: center; }
+.rl-editing .rl-hint { display: none; }
+/* in a narrow box: the move modes on a row of their own over the toolbar, without their label */
+.rl-narrow .rl-bar { flex-wrap: wrap; }
+.rl-narrow .rl-editbar { flex-basis: 100%; }
+.rl-narrow .rl-editbar-label { display: none; }
+.rl-modes { display: flex; flex-wrap: wrap; gap: .25rem; align-items: center; background: rgb(255 255 255 / .92); border-radius: 6px; padding: .15rem .3rem; }
+.rl-editbar-label { font-size: .8rem; color: var(--muted); padding: 0 .2rem; }
+.rl-stage button[aria-pressed=true] { background: #1f2430; color: #fff; border-color: #1f2430; }
+.rl-edited { margin: .2rem 0 .8rem; padding: .45rem .7rem; border: 1px solid #e6c47a; border-left: 4px solid #e69f00; border-radius: 6px;
+  background: #fffaf0; font-size: .86rem; }
+.rl-edited p { margin: .1rem 0 .35rem; }
+.rl-edited .rl-edited-note { color: var(--muted); }
+.rl-problems { margin: -.3rem 0 .8rem; padding: .35rem .7rem .35rem 1.6rem; font-size: .84rem; color: #7d1710; background: #fff4f2;
+  border-radius: 6px; }
+.rl-problems[hidden] { display: none; }
+.rl-as-data { margin: .6rem 0 0; }
 /* slider steppers (controls.js): − / + and a number field where the range has more values than the slider pixels */
 .rl-step { min-width: 28px; padding: 0 !important; font-weight: 600; }
 .rl-fine .rl-exact { display: inline-block; }

@@ -1,0 +1,250 @@
+// Editing the geometry, without a browser: the edit's link text round-trips bit for bit and
+// refuses what is not one; the camera geometry of a drag (a handle projected to the screen and
+// the ray back through that pixel, the plane, the line, the box) against exact answers; and every
+// scene with handles computes on its own input handed back as an edit, giving the same handles
+// and the same picture's geometry.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import './load.mjs';
+import { SCENES } from '../../www/scenes/index.js';
+import { defaults } from '../../www/scene.js';
+import { translator } from '../../www/i18n/index.js';
+import {
+  decodeInput,
+  encodeInput,
+  fitsSets,
+  handleCount,
+  inputOf,
+  linkableInput,
+  sameInput,
+} from '../../www/edit/input.js';
+import {
+  clampTo,
+  dragTo,
+  editBox,
+  invertRigid,
+  nearest,
+  onLine,
+  onPlane,
+  pointerRay,
+  toScreen,
+  transformPoint,
+} from '../../www/edit/geometry.js';
+import { OrbitCamera } from '../../www/camera.js';
+import { coordinates } from '../../www/edit/editor.js';
+
+const i18n = translator('en');
+const context = { t: i18n.t, format: i18n.format, lang: 'en' };
+const close = (/** @type {number[]} */ a, /** @type {number[]} */ b, eps = 1e-9) =>
+  a.length === b.length && a.every((x, i) => Math.abs(x - b[i]) <= eps * Math.max(1, Math.abs(b[i])));
+
+test('an edit in a link: every double bit for bit (−0, subnormals, the largest), sets by key', () => {
+  const input = {
+    rulings: new Float64Array([0, -0, 1, -1.5, 5e-324, -Number.MAX_VALUE, 0.1, 1 / 3, Math.PI]),
+    poses: new Float64Array([2 ** -1074, 123456789.125, -7]),
+  };
+  const text = encodeInput(input);
+  assert.match(text, /^rulings\.[A-Za-z0-9_-]+~poses\.[A-Za-z0-9_-]+$/);
+  const back = decodeInput(text);
+  assert.ok(back && sameInput(back, input));
+  assert.ok(Object.is(back.rulings[1], -0), '−0 stays −0');
+  // URLSearchParams leaves base64url as it is (the hash is written through it)
+  const q = new URLSearchParams({ input: text });
+  assert.equal(new URLSearchParams(q.toString()).get('input'), text);
+  assert.equal(handleCount(input), 4);
+  assert.equal(linkableInput(input), true);
+  assert.equal(linkableInput({ rulings: new Float64Array(3 * 201) }), false);
+});
+
+test('an edit in a link: what is not one is refused (null), never half read', () => {
+  const good = encodeInput({ rulings: new Float64Array([1, 2, 3]) });
+  for (const bad of [
+    '',
+    'rulings',
+    'rulings.',
+    `Rulings.${good.split('.')[1]}`,
+    `rulings.${good.split('.')[1]}~rulings.${good.split('.')[1]}`,
+    `rulings.${good.split('.')[1].slice(0, -3)}`, // not whole points
+    'rulings.****',
+    encodeInput({ rulings: new Float64Array([Number.NaN, 0, 0]) }),
+    encodeInput({ rulings: new Float64Array([Infinity, 0, 0]) }),
+    `rulings.${good.split('.')[1]}~<img>.AAAA`,
+  ])
+    assert.equal(decodeInput(bad), null, bad);
+});
+
+test('an edit fits handle sets when its keys and lengths are theirs', () => {
+  const sets = [{ key: 'rulings', points: new Float64Array(12), shape: 'pairs', name: 'handle.ruling' }];
+  assert.equal(fitsSets({ rulings: new Float64Array(12) }, sets), true);
+  assert.equal(fitsSets({ rulings: new Float64Array(6) }, sets), false);
+  assert.equal(fitsSets({ rulings: new Float64Array(12), points: new Float64Array(3) }, sets), false);
+  assert.equal(fitsSets({ lines: new Float64Array(12) }, sets), false);
+  assert.ok(sameInput(inputOf(sets), { rulings: new Float64Array(12) }));
+  assert.equal(sameInput({ a: new Float64Array([0]) }, { a: new Float64Array([-0]) }), false, 'bit for bit');
+});
+
+test('the pointer’s ray goes through the handle it was projected from (any camera, any view)', () => {
+  const camera = new OrbitCamera();
+  const points = [
+    [0, 0, 0],
+    [1.5, -2, 0.7],
+    [-3, 4, -1],
+  ];
+  for (const [yaw, pitch, distance, w, h] of [
+    [0.9, 0.35, 10, 800, 600],
+    [-2.1, 1.2, 3.5, 390, 490],
+    [3, -0.8, 25, 1280, 320],
+  ]) {
+    Object.assign(camera, { yaw, pitch, distance, target: [0.3, -0.2, 0.1] });
+    const m = camera.viewProj(w / h);
+    for (const p of points) {
+      const s = toScreen(m, p, w, h);
+      assert.ok(s.visible);
+      const ray = pointerRay(camera, s.x, s.y, w, h);
+      // the point lies on the ray: its distance from the ray is rounding
+      const d = p.map((x, k) => x - ray.origin[k]);
+      const along = d[0] * ray.dir[0] + d[1] * ray.dir[1] + d[2] * ray.dir[2];
+      const off = Math.hypot(...d.map((x, k) => x - along * ray.dir[k]));
+      // the view-projection is single precision, as WebGL takes it: the pixel is good to ~1e-7
+      assert.ok(off < 1e-6 * distance, `off the ray by ${off}`);
+    }
+  }
+});
+
+test('a drag in the view plane keeps the handle’s depth; along a line and vertically it stays on that line', () => {
+  const ray = { origin: [0, -10, 0], dir: [0, 1, 0] };
+  // the plane y = 2 (normal along the view): the ray meets it at (0, 2, 0)
+  assert.deepEqual(onPlane(ray, [5, 2, 7], [0, 1, 0]), [0, 2, 0]);
+  assert.equal(onPlane(ray, [0, 2, 0], [1, 0, 0]), null, 'a ray in the plane gives no point');
+  assert.equal(onPlane({ origin: [0, 10, 0], dir: [0, 1, 0] }, [0, 2, 0], [0, 1, 0]), null, 'behind the eye');
+  // the line through (3, 0, 0) along z: nearest the ray (the y-axis) at (3, 0, 0)
+  assert.ok(close(/** @type {number[]} */ (onLine(ray, [3, 0, 5], [0, 0, 2])), [3, 0, 0]));
+  // a skew line through (1, 0, 0) along (1, 0, 1): (1 + t, 0, t) is nearest the y-axis at t = −½
+  assert.ok(close(/** @type {number[]} */ (onLine(ray, [1, 0, 0], [1, 0, 1])), [0.5, 0, -0.5]));
+  assert.equal(onLine(ray, [0, 0, 0], [0, 3, 0]), null, 'a line along the ray gives no point');
+  // the three modes
+  const start = [1, 2, 3];
+  assert.deepEqual(dragTo('view', ray, start, [0, 1, 0], null), [0, 2, 0]);
+  assert.ok(close(/** @type {number[]} */ (dragTo('vertical', ray, start, [0, 1, 0], null)), [1, 2, 0]));
+  assert.ok(close(/** @type {number[]} */ (dragTo('line', ray, start, [0, 1, 0], [1, 0, 0])), [0, 2, 3]));
+});
+
+test('the box of an edit is the scene’s bounds scaled about their centre, a cube where the scene is flat', () => {
+  const box = editBox({ min: [0, 0, 0], max: [2, 4, 0] }, 10);
+  assert.deepEqual(box, { min: [-19, -18, -20], max: [21, 22, 20] });
+  assert.deepEqual(clampTo([100, -100, 5], box), [21, -18, 5]);
+  assert.equal(
+    nearest(
+      [
+        { x: 0, y: 0, visible: true },
+        { x: 5, y: 0, visible: true },
+        { x: 3, y: 0, visible: false },
+      ],
+      4,
+      0,
+      10,
+    ),
+    1,
+  );
+  assert.equal(nearest([{ x: 0, y: 0, visible: true }], 40, 0, 10), -1);
+});
+
+test('a rigid motion and its inverse give back every point', () => {
+  const c = Math.cos(0.7),
+    s = Math.sin(0.7);
+  // rotation about (1, 1, 1)/√3 composed with a translation, column-major
+  const u = 1 / Math.sqrt(3);
+  const R = [
+    [c + u * u * (1 - c), u * u * (1 - c) - u * s, u * u * (1 - c) + u * s],
+    [u * u * (1 - c) + u * s, c + u * u * (1 - c), u * u * (1 - c) - u * s],
+    [u * u * (1 - c) - u * s, u * u * (1 - c) + u * s, c + u * u * (1 - c)],
+  ];
+  const m = new Float64Array([
+    R[0][0],
+    R[1][0],
+    R[2][0],
+    0,
+    R[0][1],
+    R[1][1],
+    R[2][1],
+    0,
+    R[0][2],
+    R[1][2],
+    R[2][2],
+    0,
+    3,
+    -2,
+    5,
+    1,
+  ]);
+  const inverse = invertRigid(m);
+  for (const p of [
+    [0, 0, 0],
+    [1, 2, 3],
+    [-4, 0.5, 9],
+  ])
+    assert.ok(close(transformPoint(inverse, transformPoint(m, p)), p, 1e-14));
+});
+
+test('coordinates are said as the language writes them', () => {
+  assert.equal(coordinates([1.2, -0.4, 3], 'en'), '1.20, −0.40, 3.00');
+  assert.equal(coordinates([1.2, -0.4, 3], 'de'), '1,20; −0,40; 3,00');
+  assert.equal(coordinates([-0.001, 12345.678, 0], 'en'), '0.00, 12345.68, 0.00');
+});
+
+test('every scene with handles: its input handed back as an edit gives the same handles and the same geometry', () => {
+  const withHandles = [];
+  for (const scene of SCENES) {
+    if (scene.id === 'large') continue;
+    const params = defaults(scene);
+    const built = scene.create(params, context);
+    if (!built.input) continue;
+    withHandles.push(scene.id);
+    const input = inputOf(built.input.sets);
+    assert.ok(built.input.from.length > 5, `${scene.id}: says what the built-in input is`);
+    const edited = scene.create(params, { ...context, input });
+    assert.ok(edited.input && sameInput(inputOf(edited.input.sets), input), `${scene.id}: the same handles`);
+    // the picture's geometry: the first layer (the rulings, lines, poses or polygon) unchanged
+    assert.deepEqual(Array.from(edited.layers[0].positions), Array.from(built.layers[0].positions), scene.id);
+    // a parameter an edit holds is one of the scene's
+    for (const key of scene.fixed ?? [])
+      assert.ok(
+        scene.params.some((p) => p.key === key),
+        `${scene.id}: ${key}`,
+      );
+  }
+  assert.deepEqual(withHandles.sort(), [
+    'congruence',
+    'convergence',
+    'curves',
+    'data',
+    'focal',
+    'isometry',
+    'lines',
+    'milling',
+    'notation',
+    'striction',
+    'strip',
+  ]);
+});
+
+test('an edited striction scene measures on the edit: its readouts are those of the core’s surface of those rulings', async () => {
+  const { RuledSurface } = await import('./load.mjs').then((m) => m.default);
+  const scene = SCENES.find((s) => s.id === 'striction');
+  const params = { ...defaults(scene), n: 12 };
+  const input = inputOf(scene.create(params, context).input.sets);
+  input.rulings[3 * 5 + 2] += 0.7; // lift ruling 2's end b
+  const built = scene.create(params, { ...context, input });
+  const surface = RuledSurface.fromSegments(input.rulings);
+  try {
+    const inv = surface.invariants({ closed: true });
+    const mean = inv.distributionMean[Math.floor(inv.distributionMean.length / 2)];
+    const read = Object.fromEntries(built.readouts.map((r) => [r.label, r.value]));
+    assert.equal(read['readout.rulings'], 12);
+    assert.equal(read['readout.meanDelta'], mean);
+    assert.equal(read['readout.midpointError'], undefined, 'no error against an exact surface the edit does not have');
+    assert.deepEqual(Array.from(built.layers[0].positions), Array.from(surface.segmentsF32()));
+  } finally {
+    surface.free();
+  }
+});
