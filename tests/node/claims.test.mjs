@@ -52,6 +52,17 @@ test('striction (Props. 1–2, Example 1): orders 1, 2, 2 on the hyperboloid and
   assert.deepEqual([...seen], ['striction.claim.orders']);
 });
 
+test('curves (Figs. 7–8): on the zigzag the four-point angle falls from 8 to 12 steps up to w = 0.17 closed, 0.126 open; from 0.171, 0.127 to 0.2 a turn above 1 rad remains', () => {
+  // every w of the slider from its step 0.001 to its end 0.2 (w ≤ 0 states nothing)
+  const seen = checkClaims('curves', {
+    scheme: ['four-point'],
+    closed: [true, false],
+    w: range(1, 200).map((k) => k / 1000),
+    steps: [4],
+  });
+  assert.deepEqual([...seen].sort(), ['curves.claim.falls', 'curves.claim.sharp']);
+});
+
 test('strip (Example 3): the literal energy is the midpoint rule, coupled beats it for n ≥ 6, four-point is exact', () => {
   const seen = checkClaims('strip', { scheme: ['literal', 'coupled', 'averaged', 'four-point'], n: range(3, 24) });
   assert.deepEqual([...seen].sort(), ['strip.claim.coupled', 'strip.claim.fourPoint', 'strip.claim.literal']);

@@ -109,13 +109,23 @@ de Casteljau und de Boor arbeiten ebenso, für Bézier- und B-Spline-Kurven beli
 <p><strong>Das Vierpunktschema</strong> von Dyn, Levin und Gregory (Abb. 8) behält jeden Punkt und
 fügt auf jeder Kante einen neuen ein:</p>
 ${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>+</mo><mi>w</mi><mo>)</mo><mo>(</mo>${sub('p', 'i')}<mo>+</mo>${sub('p', 'i + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i − 1')}<mo>+</mo>${sub('p', 'i + 2')}<mo>)</mo>`, '8')}
-<p>Die Grenzkurve interpoliert die Daten und ist C¹ für ${mr('0 < w')} &lt; ⅛; Abb. 8 der Arbeit
-verwendet w = 1/13 (im Feld neben dem Regler exakt eintippen), und w = 1/16 reproduziert kubische
-Polynome. Bei w = 0 ist die Grenzkurve das Polygon selbst; über ⅛ hinaus bekommt die Kurve Knicke. Bei
-einem offenen Polygon verwenden die Endkanten Geisterpunkte, extrapoliert aus den letzten vier
-Punkten.</p>
-<p class="rl-paper-data">Die Arbeit gibt für Abb. 7–8 kein Kontrollpolygon an; ruledlab verwendet einen
-Stern aus acht Punkten.</p>`,
+<p>Die Grenzkurve interpoliert die Daten. Abb. 8 der Arbeit verwendet w = 1/13 (im Feld neben dem
+Regler exakt eintippen), und w = 1/16 reproduziert kubische Polynome; bei w = 0 ist die Grenzkurve das
+Polygon selbst. Die Arbeit nennt die Grenzkurve C¹ für 0 &lt; w &lt; ⅛: Das ist die hinreichende
+Bedingung, die Dyn, Levin und Gregory 1987 bewiesen haben, nicht die Stelle, an der Knicke entstehen.
+Dyn, Gregory und Levin (1991) beweisen C¹ für 0 &lt; w &lt; (√5 − 1)/8 ≈ 0,155, und ihr Kriterium reicht,
+über mehr Schritte angewandt, noch weiter (mindestens bis w = 0,18).</p>
+<p><strong>Sehen, wie die Kurve glatt wird.</strong> Anzeige und Diagramm nennen den größten
+Außenwinkel des verfeinerten Polygons, den größten Winkel zwischen einer Kante und der nächsten, nach
+jedem Schritt bis 12, also über die gezeichneten hinaus. Wo er gegen 0 fällt, strecken sich die
+Polygone. Auf diesem Polygon, geschlossen, fällt er von 8 auf 12 Schritte noch für jedes w bis 0,17;
+ab w = 0,171 knickt das Polygon nach 12 Schritten noch irgendwo um mehr als 1 rad ab: Eine C¹-Grenzkurve
+kann dann noch fern sein oder eine Spitze haben, wo ihre Ableitung verschwindet. Bei einem offenen
+Polygon verwenden die Endkanten Geisterpunkte, extrapoliert aus den letzten vier Punkten, eine
+Endregel von ruledlab (die Arbeit nennt keine); sie versagt zuerst: Dort fällt der Winkel nur bis
+w = 0,126, während sich das geschlossene Polygon, das keine Enden hat, darüber hinaus noch streckt.</p>
+<p class="rl-paper-data">Die Arbeit gibt für Abb. 7–8 kein Kontrollpolygon an; ruledlab verwendet acht
+Punkte in einem offenen Zickzack (das Kontrollkästchen schließt ihn).</p>`,
 
   'strip.text': `
 <h2>Variationelle Unterteilung eines Regelflächenstreifens (Beispiel 3)</h2>

@@ -262,7 +262,17 @@ export default {
   'curves.legend.refined': 'verfeinertes Polygon',
   'curves.readout.points': 'Punkte',
   'curves.readout.w': 'Spannungsparameter w',
-  'curves.describe': '{scheme}, {steps:Schritt:Schritte} auf einem Polygon aus acht Punkten: {points} Punkte.',
+  'curves.readout.turning': 'größter Außenwinkel des gezeichneten Polygons (rad)',
+  'curves.readout.turningLate': 'größter Außenwinkel nach 8 → 12 Schritten (rad)',
+  'curves.plot.x': 'Schritte',
+  'curves.plot.y': 'größter Außenwinkel (rad)',
+  'curves.plot.title': 'Größter Außenwinkel des verfeinerten Polygons nach jedem Schritt (logarithmisch)',
+  'curves.claim.falls':
+    'Auf diesem Polygon ist der größte Außenwinkel nach 12 Schritten kleiner als nach 8, für jedes w mit 0 < w ≤ 0,17 (geschlossen) bzw. 0 < w ≤ 0,126 (offen).',
+  'curves.claim.sharp':
+    'Ab w = 0,171 (geschlossen) bzw. w = 0,127 (offen) bis 0,2 knickt das Polygon nach 12 Schritten noch irgendwo um mehr als 1 rad (57°) ab.',
+  'curves.describe':
+    '{scheme}, {steps:Schritt:Schritte} auf einem Polygon aus acht Punkten: {points} Punkte; der größte Außenwinkel beträgt {angle} rad ({late} rad nach {last} Schritten).',
 
   'strip.title': 'Variationelle Streifenunterteilung (Abb. 9–10, Beispiel 3)',
   'strip.scheme.literal': 'Variationell, wörtlich (13)–(15): die Mittelpunktsregel',
@@ -541,10 +551,10 @@ export default {
     'Die drei Felder von Abb. 6: ein Streifen des Hyperboloids aus Beispiel 1, sein konoidales Modell und die Abwicklung; die Anzeige nennt die Höhe des konoidalen Modells, das Maß der Nichtabwickelbarkeit. Die Arbeit gibt keine Daten an; den Streifen (24 Erzeugende, u von 0 bis 2,4) wählt ruledlab.',
   'paper.fig7.caption': '„Algorithmus von Chaikin.“ (übersetzt)',
   'paper.fig7.note':
-    'Vier Schritte des Algorithmus von Chaikin, jede Stufe gezeichnet. Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet einen Stern aus acht Punkten.',
+    'Vier Schritte des Algorithmus von Chaikin, jede Stufe gezeichnet. Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet acht Punkte in einem offenen Zickzack.',
   'paper.fig8.caption': '„Interpolierende Unterteilung nach Dyn, Levin und Gregory (w = 1/13).“ (übersetzt)',
   'paper.fig8.note':
-    'Vier Schritte von (8) mit dem w = 1/13 der Arbeit, exakt (tippen Sie einen Bruch in das Feld neben dem Schieberegler). Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet einen Stern aus acht Punkten.',
+    'Vier Schritte von (8) mit dem w = 1/13 der Arbeit, exakt (tippen Sie einen Bruch in das Feld neben dem Schieberegler). Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet acht Punkte in einem offenen Zickzack.',
   'paper.fig9.caption':
     '„Grundlegende Bezeichnungen für einen unterteilten Regelflächenstreifen, die beiden verschiedenen Triangulierungen.“ (übersetzt)',
   'paper.fig9.note':

@@ -267,7 +267,17 @@ export default {
   'curves.legend.refined': 'refined polygon',
   'curves.readout.points': 'points',
   'curves.readout.w': 'tension w',
-  'curves.describe': '{scheme}, {steps:step:steps} on an eight-point polygon: {points} points.',
+  'curves.readout.turning': 'largest turning angle of the polygon drawn (rad)',
+  'curves.readout.turningLate': 'largest turning angle after 8 → 12 steps (rad)',
+  'curves.plot.x': 'steps',
+  'curves.plot.y': 'largest turning angle (rad)',
+  'curves.plot.title': 'Largest turning angle of the refined polygon after each step (logarithmic)',
+  'curves.claim.falls':
+    'On this polygon the largest turning angle is smaller after 12 steps than after 8 for every w with 0 < w ≤ 0.17 (closed) or 0 < w ≤ 0.126 (open).',
+  'curves.claim.sharp':
+    'From w = 0.171 (closed) or w = 0.127 (open) up to 0.2 the polygon still turns by more than 1 rad (57°) somewhere after 12 steps.',
+  'curves.describe':
+    '{scheme}, {steps:step:steps} on an eight-point polygon: {points} points; the largest turning angle is {angle} rad ({late} rad after {last} steps).',
 
   // Figs. 9–10
   'strip.title': 'Variational strip subdivision (Figs. 9–10, Example 3)',
@@ -550,10 +560,10 @@ export default {
     'The three panels of Fig. 6: a strip of Example 1’s hyperboloid, its conoidal model and the development; the readout gives the conoidal model’s height, the non-developability measure. The paper gives no data; the strip (24 rulings, u from 0 to 2.4) is ruledlab’s.',
   'paper.fig7.caption': '“Chaikin’s algorithm.”',
   'paper.fig7.note':
-    'Four steps of Chaikin’s algorithm, every level drawn. The paper gives no control polygon; ruledlab uses an eight-point star.',
+    'Four steps of Chaikin’s algorithm, every level drawn. The paper gives no control polygon; ruledlab uses eight points in an open zigzag.',
   'paper.fig8.caption': '“Interpolatory subdivision according to Dyn, Levin and Gregory (w = 1/13).”',
   'paper.fig8.note':
-    'Four steps of (8) with the paper’s w = 1/13, exactly (type a fraction in the field beside the slider). The paper gives no control polygon; ruledlab uses an eight-point star.',
+    'Four steps of (8) with the paper’s w = 1/13, exactly (type a fraction in the field beside the slider). The paper gives no control polygon; ruledlab uses eight points in an open zigzag.',
   'paper.fig9.caption': '“Basic notations for a subdivided ruled surface strip, the two different triangulations.”',
   'paper.fig9.note':
     'The notation a_i, b_i, A_i, B_i, z_{i,k}, Z_{i,k} on Example 3’s quartic strip with the first triangulation (11); choose the second (12) in the menu (ruledlab draws one at a time). n = 6 rather than Example 3’s 12, so that the triangles can be read.',
