@@ -79,10 +79,14 @@ bis 1 (oder drücken Sie Abspielen), um die Verbiegung zu sehen; das Bild ist so
 ${m(sub('n', '0 , 1'))} nach oben zeigt, und die konoidalen Erzeugenden werden waagrecht, gestapelt in
 den Höhen ${m(`${sub('H', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${sub('h', 'k , k + 1')}`)}.</p>
 <p><strong>Näherungsabwicklung (Abb. 6).</strong> Projizieren Sie das konoidale Modell normal auf eine
-Ebene parallel zu seinen Erzeugenden. Jede Erzeugende behält ihre Länge, und die beiden Fußpunkte
-jedes Paares fallen in einen Punkt; das Bild des Kehlpolygons ist also das Polygon, das die
-projizierten Erzeugenden einhüllen, so wie die Gratlinie in der Abwicklung einer Torse die
-Einhüllende ist. Die Spanne der Höhen,
+Ebene parallel zu seinen Erzeugenden. Jede Erzeugende behält ihre Länge. Die gemeinsamen Lote des
+konoidalen Modells sind alle parallel, die beiden Fußpunkte jedes Paares fallen also in einen Punkt,
+den Schnittpunkt der beiden projizierten Erzeugenden: Diese Punkte bilden das Polygon, das die
+projizierten Erzeugenden einhüllen (gestrichelt; das Bild des Polygons der Lotmittelpunkte aus
+Abb. 3), so wie die Gratlinie in der Abwicklung einer Torse die Einhüllende ist. Das Bild des
+Kehlpolygons ist diesem Polygon eingeschrieben: ${m(sub('m', 'i'))} liegt in der Mitte zwischen den
+beiden Fußpunkten auf ${m(Ri)}, sein Bild also im Mittelpunkt der Kante, die auf dieser Erzeugenden
+liegt. Die Spanne der Höhen,
 ${m(`<mo>max</mo>${sub('H', 'i')}<mo>−</mo><mo>min</mo>${sub('H', 'i')}`)}, misst, wie weit die Fläche
 von einer Torse entfernt ist: 0 beim Kegel, winzig (und mit ${m('<msup><mi>H</mi><mn>2</mn></msup>')}
 fallend) bei der Tangentenfläche, deutlich positiv beim Hyperboloidstreifen.</p>

@@ -238,6 +238,8 @@ export default {
   'isometry.reason.panels': 'Die Ansicht mit drei Feldern zeigt immer t = 1.',
   'isometry.reason.flat': 'Bei t = 0 ist die Fläche die ursprüngliche.',
   'isometry.legend.striction': 'Kehlpolygon (in der Abwicklung: sein Bild)',
+  'isometry.legend.envelope':
+    'in der Abwicklung: das von den Erzeugenden eingehüllte Polygon, Bild des Polygons aus Abb. 3 (gestrichelt)',
   'isometry.legend.ghost': 'ursprüngliche Fläche (gestrichelt)',
   'isometry.readout.nonDevelopability': 'Nichtabwickelbarkeit (Höhe des konoidalen Modells)',
   'isometry.readout.isometry': 'max. relative Änderung einer Kantenlänge',
@@ -548,7 +550,7 @@ export default {
   'paper.fig6.caption':
     '„Genäherte Abwicklung einer windschiefen Regelfläche auf Grund der diskreten Darstellung: links das diskrete Modell einer windschiefen Regelfläche, in der Mitte das isometrische konoidale diskrete Modell, rechts die Projektion der diskreten konoidalen Fläche normal zu ihren Erzeugenden.“ (übersetzt)',
   'paper.fig6.note':
-    'Die drei Felder von Abb. 6: ein Streifen des Hyperboloids aus Beispiel 1, sein konoidales Modell und die Abwicklung; die Anzeige nennt die Höhe des konoidalen Modells, das Maß der Nichtabwickelbarkeit. Die Arbeit gibt keine Daten an; den Streifen (24 Erzeugende, u von 0 bis 2,4) wählt ruledlab.',
+    'Die drei Felder von Abb. 6: ein Streifen des Hyperboloids aus Beispiel 1, sein konoidales Modell und die Abwicklung, in der das Bild des Kehlpolygons dem von den abgewickelten Erzeugenden eingehüllten Polygon (gestrichelt) eingeschrieben ist; die Anzeige nennt die Höhe des konoidalen Modells, das Maß der Nichtabwickelbarkeit. Die Arbeit gibt keine Daten an; den Streifen (24 Erzeugende, u von 0 bis 2,4) wählt ruledlab.',
   'paper.fig7.caption': '„Algorithmus von Chaikin.“ (übersetzt)',
   'paper.fig7.note':
     'Vier Schritte des Algorithmus von Chaikin, jede Stufe gezeichnet. Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet acht Punkte in einem offenen Zickzack.',

@@ -76,10 +76,13 @@ to watch the bending; the picture is turned so that ${m(sub('n', '0 , 1'))} poin
 conoidal rulings become horizontal, stacked at heights
 ${m(`${sub('H', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${sub('h', 'k , k + 1')}`)}.</p>
 <p><strong>Approximate development (Fig. 6).</strong> Project the conoidal model orthogonally onto a
-plane parallel to its rulings. Each ruling keeps its length, and the two footpoints of every pair
-fall onto one point, so the image of the striction polygon is the polygon the projected rulings
-envelop, just as the regression curve is the envelope in the development of a developable
-surface. The spread of the heights,
+plane parallel to its rulings. Each ruling keeps its length. The common perpendiculars of the
+conoidal model all point the same way, so the two footpoints of every pair fall onto one point,
+where the two projected rulings meet: these points form the polygon the projected rulings envelop
+(dashed; the image of Fig. 3's polygon of perpendicular midpoints), just as the regression curve is
+the envelope in the development of a developable surface. The image of the striction polygon is
+inscribed in it: ${m(sub('m', 'i'))} lies midway between the two footpoints on ${m(Ri)}, so its image
+is the midpoint of the envelope polygon's edge on that ruling. The spread of the heights,
 ${m(`<mo>max</mo>${sub('H', 'i')}<mo>−</mo><mo>min</mo>${sub('H', 'i')}`)}, measures how far the
 surface is from developable: 0 for the cone, tiny (shrinking like
 ${m('<msup><mi>H</mi><mn>2</mn></msup>')} as rulings are added) for the tangent surface, clearly

@@ -242,6 +242,8 @@ export default {
   'isometry.reason.panels': 'The three-panel view always shows t = 1.',
   'isometry.reason.flat': 'At t = 0 the surface is the original.',
   'isometry.legend.striction': 'striction polygon (in the development: its image)',
+  'isometry.legend.envelope':
+    'in the development: the polygon the rulings envelop, image of the Fig. 3 polygon (dashed)',
   'isometry.legend.ghost': 'original surface (dashed)',
   'isometry.readout.nonDevelopability': 'non-developability (height of the conoidal model)',
   'isometry.readout.isometry': 'max relative change of an edge length',
@@ -557,7 +559,7 @@ export default {
   'paper.fig6.caption':
     '“Approximate development of a skew ruled surface based on the discrete representation: Left: Discrete model of a skew ruled surface. In the middle: Isometric conoidal discrete model. Right: Projection of the discrete conoidal surface orthogonal to its generators.”',
   'paper.fig6.note':
-    'The three panels of Fig. 6: a strip of Example 1’s hyperboloid, its conoidal model and the development; the readout gives the conoidal model’s height, the non-developability measure. The paper gives no data; the strip (24 rulings, u from 0 to 2.4) is ruledlab’s.',
+    'The three panels of Fig. 6: a strip of Example 1’s hyperboloid, its conoidal model and the development, where the image of the striction polygon is inscribed in the polygon the developed rulings envelop (dashed); the readout gives the conoidal model’s height, the non-developability measure. The paper gives no data; the strip (24 rulings, u from 0 to 2.4) is ruledlab’s.',
   'paper.fig7.caption': '“Chaikin’s algorithm.”',
   'paper.fig7.note':
     'Four steps of Chaikin’s algorithm, every level drawn. The paper gives no control polygon; ruledlab uses eight points in an open zigzag.',
