@@ -9,6 +9,7 @@ import { SCENES } from '../../www/scenes/index.js';
 import { PRESETS } from '../../www/paper.js';
 import { defaults } from '../../www/scene.js';
 import { translator } from '../../www/i18n/index.js';
+import { STYLES } from '../../www/theme.js';
 
 const i18n = translator('en');
 const context = { t: i18n.t, format: i18n.format };
@@ -104,4 +105,21 @@ test('every paper preset computes, and its claims hold', () => {
     assert.ok(built.layers.length > 0, preset.id);
     for (const claim of built.claims ?? []) assert.ok(claim.holds, `${preset.id}: ${claim.text}`);
   }
+});
+
+test('every legend entry that says “dashed” or “dash-dot” is drawn dashed, in colour as in black and white', () => {
+  let checked = 0;
+  for (const scene of SCENES) {
+    for (const entry of scene.legend) {
+      const label = i18n.t(entry.label);
+      if (!/dash/.test(label)) continue;
+      const style = STYLES[entry.style];
+      assert.ok(
+        style.kind === 'line' && style.dash && style.bw.dash,
+        `${scene.id}: "${label}" (${entry.style}) is solid`,
+      );
+      checked++;
+    }
+  }
+  assert.ok(checked >= 8, `only ${checked} dashed legend entries`);
 });

@@ -295,6 +295,8 @@ const CALLS = [
     f.surface.developmentInSpace(),
     f.surface.developmentStriction(),
     f.surface.developmentStrictionInSpace(),
+    f.surface.developmentEnvelope(),
+    f.surface.developmentEnvelopeInSpace(),
     f.surface.directions(),
     f.surface.meanLength(),
   ],
