@@ -153,7 +153,8 @@ Vierpunktschema an der schlechtesten Erzeugenden am besten: Seine Randkurven sin
 w = 1/16 exakt reproduziert. Die Anzeige misst den Abstand der eingefügten Erzeugenden von der
 exakten Fläche, für jedes Schema bei diesem n; die Aussagen darunter werden an diesen Zahlen geprüft.</p>
 <p class="rl-paper-data">Daten aus der Arbeit: 12 Erzeugende der quartischen Fläche
-(1 + vu², u²/2 + uv, u − v), n = 12; das Intervall u ∈ [−1, 1] wählt ruledlab (die Arbeit nennt keines).</p>`,
+(1 + vu², u²/2 + uv, u − v), n = 12; die Intervalle u ∈ [−1, 1] und v ∈ [−1, 1] (die Enden der
+Erzeugenden) wählt ruledlab (die Arbeit nennt keines von beiden).</p>`,
 
   'congruence.text': `
 <h2>Eine Geradenkongruenz verfeinern</h2>
@@ -165,7 +166,9 @@ heißt, beide Punktgitter zu verfeinern.</p>
 <p><strong>Butterfly-Schema (Abb. 12).</strong> Triangulieren Sie das Gitter durch die Diagonalen und
 fügen Sie auf jeder Diagonale ein</p>
 ${display(`${sub('p̄', 'i , j')}<mo>=</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>(</mo>${sub('p', 'i , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 1')}<mo>)</mo><mo>+</mo><mn>2</mn><mi>w</mi><mo>(</mo>${sub('p', 'i + 1 , j')}<mo>+</mo>${sub('p', 'i , j + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i , j − 1')}<mo>+</mo>${sub('p', 'i − 1 , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 2')}<mo>+</mo>${sub('p', 'i + 2 , j + 1')}<mo>)</mo>`, '16')}
-<p>Die Arbeit fügt nur diese Geraden auf den Diagonalen ein (Abb. 13, „nur Diagonalen“).</p>
+<p>Die Arbeit fügt nur diese Geraden auf den Diagonalen ein (Abb. 13, „nur Diagonalen“) und nennt
+keinen Wert des Spannungsparameters w; ruledlab verwendet w = 1/16, was kubische Polynome
+reproduziert.</p>
 <p><strong>Variationelle Unterteilung (Abschnitt 5.2, Abb. 15).</strong> Jede Zeile und Spalte von
 Geraden ist eine Regelfläche: Das Streifenschema fügt die Geraden T und S auf den Kanten ein, und
 jede Masche erhält die Gerade, deren Umbrella-Vektor (20) über ihre acht Nachbarn in jeder Schicht
@@ -176,10 +179,12 @@ der vier Ecken (ERRATA.md).</p>
 Schablone von (16) auch auf die beiden anderen Kantenrichtungen an, sodass ein Schritt das Gitter
 verdoppelt. „Zweistufig“ bildet die Kantengeraden mit der gekoppelten Streifenenergie von ruledlab;
 „gekoppelt“ lässt alle neuen Geraden gemeinsam in einem dünn besetzten System zur Ruhe kommen.
-Gemessen an den exakten Kongruenzen nach einem Schritt (Anzeige: jedes Schema) ist das
-Butterfly-Schema bei diesen Beispielen am genauesten.</p>
+Die Anzeige misst das gezeigte Schema an der exakten Kongruenz und zum Vergleich die vier Schemata
+des Menüs, die das ganze Gitter verfeinern, nach einem Schritt: Das Butterfly-Schema auf allen Kanten
+ist bei diesen Beispielen am genauesten.</p>
 <p class="rl-paper-data">Daten: Beispiel 5 stammt aus der Arbeit (d₁ = (u, v, ½ sin(2u + 1,5v)),
-Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6). Für die beiden Kongruenzen
+Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6; wörtlich gelesen liefert das
+Schema für jedes K dieselben Geraden, K wirkt sich also nicht auf das Ergebnis aus). Für die beiden Kongruenzen
 aus Beispiel 4 gibt die Arbeit keine Formeln an; Kugel und hyperbolisches Paraboloid wählt ruledlab,
 ebenso die Länge der Strecken (0,35 des Richtungsvektors).</p>`,
 

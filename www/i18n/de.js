@@ -472,12 +472,12 @@ export default {
     'Für n ≥ 6 kommt die gekoppelte Energie der Fläche näher als die Mittelpunktsregel (für n = 3, 4 nicht).',
   'strip.claim.fourPoint':
     'Das Vierpunktschema ist auf dieser Fläche exakt, an der schlechtesten Erzeugenden das beste: seine Randkurven sind quadratisch, und w = 1/16 reproduziert sie.',
-  'congruence.readout.compare.paper': 'Schema der Arbeit, 1 Schritt: Abstand / Winkel',
-  'congruence.readout.compare.two-stage': 'zweistufig, 1 Schritt: Abstand / Winkel',
-  'congruence.readout.compare.coupled': 'gekoppelt, 1 Schritt: Abstand / Winkel',
-  'congruence.readout.compare.butterfly': 'Butterfly, 1 Schritt: Abstand / Winkel',
+  'congruence.readout.compare.paper': 'zum Vergleich, Schema der Arbeit nach 1 Schritt: Abstand / Winkel',
+  'congruence.readout.compare.two-stage': 'zum Vergleich, zweistufig nach 1 Schritt: Abstand / Winkel',
+  'congruence.readout.compare.coupled': 'zum Vergleich, gekoppelt nach 1 Schritt: Abstand / Winkel',
+  'congruence.readout.compare.butterfly': 'zum Vergleich, Butterfly auf allen Kanten nach 1 Schritt: Abstand / Winkel',
   'congruence.claim.butterfly':
-    'Nach einem Schritt liegen die neuen Geraden des Butterfly-Schemas auf jeder eingebauten Kongruenz in der Richtung am genauesten und nicht weiter entfernt als die jedes variationellen Schemas.',
+    'Nach einem Schritt liegen die neuen Geraden des Butterfly-Schemas auf allen Kanten auf jeder eingebauten Kongruenz in der Richtung am genauesten und nicht weiter entfernt als die jedes variationellen Schemas.',
   'milling.readout.compare.given': 'nur gegebene Lagen: max. |Abweichung|',
   'milling.readout.compare.variational': 'variationell (gekoppelt): max. |Abweichung|',
   'milling.readout.compare.averaged': 'variationell (gemittelt): max. |Abweichung|',
@@ -564,7 +564,7 @@ export default {
   'paper.fig10.caption':
     '„12 Erzeugende einer quartischen Regelfläche R, 11 Geraden eingefügt; hellgraue Kugeln um A_i, dunkelgraue Kugeln um B_i.“ (übersetzt)',
   'paper.fig10.note':
-    'Beispiel 3 mit den Daten der Arbeit: 12 Erzeugende von (1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1] (das Intervall wählt ruledlab: Die Arbeit nennt keines), n = 12, ein Schritt der Energie (15) wörtlich gelesen; Kugeln um A_i (hell) und B_i (dunkel).',
+    'Beispiel 3 mit den Daten der Arbeit: 12 Erzeugende von (1 + vu², u²/2 + uv, u − v), n = 12, ein Schritt der Energie (15) wörtlich gelesen; Kugeln um A_i (hell) und B_i (dunkel). Die Intervalle u ∈ [−1, 1] und v ∈ [−1, 1] (die Enden der Erzeugenden) wählt ruledlab: Die Arbeit nennt keines von beiden.',
   'paper.strip.beyond':
     'Wörtlich gelesen setzt (15) Umbrella-Vektoren nur in die neuen Punkte, und das Minimum ist genau die Mittelpunktsregel (ERRATA.md; unter der Anzeige geprüft). Die gekoppelte und die gemittelte Energie von ruledlab setzen sie in jeden Knoten; die Anzeige vergleicht jedes Schema bei diesem n: Gekoppelt schlägt die Mittelpunktsregel ab n = 6, und das Vierpunktschema ist auf dieser Fläche exakt.',
   'paper.fig11.caption': '„Durch zwei Leitflächen bestimmte Geradenkongruenz.“ (übersetzt)',
@@ -572,13 +572,13 @@ export default {
     'Die Geraden aus Beispiel 5 zwischen den Leitflächen d₁ und d₂, beide schattiert. Die Abbildung der Arbeit ist eine Skizze; ruledlab nimmt für d₂ die Punkte p + 0,35 d (die Arbeit nennt keine Länge der Strecken, ERRATA.md 9).',
   'paper.fig12.caption': '„Das Butterfly-Schema.“ (übersetzt)',
   'paper.fig12.note':
-    'Die Schablone von (16) ist neben der Ansicht mit allen Gewichten gezeichnet (w = 1/16); die Ansicht zeigt die Geraden, die sie auf den Diagonalen des Gitters aus Beispiel 5 einfügt (ein Schritt, wie in der Arbeit).',
+    'Die Schablone von (16) ist neben der Ansicht mit allen Gewichten gezeichnet; die Ansicht zeigt die Geraden, die sie auf den Diagonalen des Gitters aus Beispiel 5 einfügt (ein Schritt, wie in der Arbeit). Den Spannungsparameter w = 1/16 wählt ruledlab (er reproduziert kubische Polynome): Die Arbeit nennt keinen Wert.',
   'paper.fig13.caption':
     '„Links: Teil einer Kugel mit Geraden der Kongruenz (schwarz, dünn) und eingefügten Geraden (schwarz, dick). Rechts: Teil eines hyperbolischen Paraboloids, Geraden der Kongruenz (schwarz, dünn), eingefügte Geraden (schwarz, dick).“ (übersetzt)',
   'paper.fig13.note':
-    'Abb. 13 links: Geraden nur auf den Diagonalen eingefügt, wie in der Arbeit. Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kugel von ruledlab trägt die Richtungen Normale + 0,3 (sin 2v, cos 3u, uv), eine verallgemeinerte Offsetfläche, keine Normalenkongruenz. Eingefügte Geraden sind farbig statt dick schwarz gezeichnet.',
+    'Abb. 13 links: Geraden nur auf den Diagonalen eingefügt, wie in der Arbeit, mit w = 1/16 in (16) (Wahl von ruledlab: Die Arbeit nennt keinen Wert). Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kugel von ruledlab trägt die Richtungen Normale + 0,3 (sin 2v, cos 3u, uv), eine verallgemeinerte Offsetfläche, keine Normalenkongruenz. Eingefügte Geraden sind farbig statt dick schwarz gezeichnet. Die Anzeige misst diese Diagonalgeraden; die Zeilen „zum Vergleich“ gehören zu anderen Schemata (die Butterfly-Zeile fügt auf allen Kanten ein).',
   'paper.fig13-right.note':
-    'Abb. 13 rechts: Geraden nur auf den Diagonalen eingefügt. Für Beispiel 4 gibt die Arbeit keine Formeln an; das hyperbolische Paraboloid z = xy von ruledlab trägt die Richtungen (−v, −u, 1) + 0,3 (cos 2v, sin u, 0).',
+    'Abb. 13 rechts: Geraden nur auf den Diagonalen eingefügt, mit w = 1/16 in (16) (Wahl von ruledlab: Die Arbeit nennt keinen Wert). Für Beispiel 4 gibt die Arbeit keine Formeln an; das hyperbolische Paraboloid z = xy von ruledlab trägt die Richtungen (−v, −u, 1) + 0,3 (cos 2v, sin u, 0). Die Anzeige misst diese Diagonalgeraden; die Zeilen „zum Vergleich“ gehören zu anderen Schemata (die Butterfly-Zeile fügt auf allen Kanten ein).',
   'paper.fig14.caption':
     '„Punktschema auf der Leitfläche d₁ (links), Teil der Kongruenz mit einigen Bezeichnungen (rechts).“ (übersetzt)',
   'paper.fig14.note':
@@ -586,9 +586,9 @@ export default {
   'paper.fig15.caption':
     '„Diskrete Geradenkongruenz (links), eingefügte Geraden (schwarz, dick) (rechts).“ (übersetzt)',
   'paper.fig15.note':
-    'Beispiel 5 mit den Daten der Arbeit: d₁ = (u, v, ½ sin(2u + 1,5v)), Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6, einmal verfeinert mit dem wörtlich gelesenen variationellen Schema der Arbeit: Kantengeraden nach der Mittelpunktsregel, jede Maschengerade das Mittel ihrer acht Nachbarn (ERRATA.md).',
+    'Beispiel 5 mit den Daten der Arbeit: d₁ = (u, v, ½ sin(2u + 1,5v)), Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6, einmal verfeinert mit dem wörtlich gelesenen variationellen Schema der Arbeit: Kantengeraden nach der Mittelpunktsregel, jede Maschengerade das Mittel ihrer acht Nachbarn (ERRATA.md). So gelesen wirkt sich K nicht auf das Ergebnis aus: Jedes K liefert dieselben Geraden.',
   'paper.congruence.beyond':
-    'Wörtlich gelesen liefern die Energien (15) und (21) bloße Mittelwerte; ruledlab bietet außerdem „zweistufig“ (seine gekoppelte Streifenenergie auf den Kanten), „gekoppelt“ (alle neuen Geraden in einem dünn besetzten System) und das Butterfly-Schema auf allen Kanten. Die Anzeige vergleicht alle vier nach einem Schritt; auf jeder eingebauten Kongruenz ist das Butterfly-Schema am genauesten (unter der Anzeige geprüft).',
+    'Wörtlich gelesen liefern die Energien (15) und (21) bloße Mittelwerte; ruledlab bietet außerdem „zweistufig“ (seine gekoppelte Streifenenergie auf den Kanten), „gekoppelt“ (alle neuen Geraden in einem dünn besetzten System) und das Butterfly-Schema auf allen Kanten. Die Anzeige misst das gezeigte Schema und zum Vergleich alle vier nach einem Schritt; auf jeder eingebauten Kongruenz ist das Butterfly-Schema auf allen Kanten am genauesten (unter der Anzeige geprüft).',
   'paper.fig16.caption': '„Erster Schritt der Verfeinerung.“ (übersetzt)',
   'paper.fig16.note':
     'Beispiel 6 nach einem Schritt: gegebene Werkzeugachsen dunkel, eingefügte hell, das Werkzeug als Zylinder mit Kugelende, die Schwerpunktkurve gestrichelt, die gefegte Kugel über dem Werkstück. Die Arbeit gibt keine Daten an; Profil, sieben Lagen und Werkzeug (Radius 0,25, Länge 1,5) stammen von ruledlab.',
@@ -608,15 +608,15 @@ export default {
   'paper.ex3.caption':
     'Beispiel 3: N = 12 Erzeugende der quartischen Regelfläche (1 + vu², u²/2 + uv, u − v), n = 12, ein Schritt der variationellen Unterteilung.',
   'paper.ex3.note':
-    'Beispiel 3 mit den Daten der Arbeit, der ersten Triangulierung und der exakten Fläche blass dahinter; die Anzeige misst den Abstand der eingefügten Erzeugenden von der Fläche für jedes Schema.',
+    'Beispiel 3 mit den Daten der Arbeit, der ersten Triangulierung und der exakten Fläche blass dahinter; die Anzeige misst den Abstand der eingefügten Erzeugenden von der Fläche für jedes Schema. Die Intervalle u ∈ [−1, 1] und v ∈ [−1, 1] (die Enden der Erzeugenden) wählt ruledlab: Die Arbeit nennt keines von beiden.',
   'paper.ex4.caption':
     'Beispiel 4: das Butterfly-Schema auf Kongruenzen mit zwei verschiedenen Leitflächen d₁; d₂, eine verallgemeinerte Offsetfläche, ist in der Arbeit nicht gezeichnet.',
   'paper.ex4.note':
-    'Die Kugel aus Abb. 13 mit Geraden nur auf den Diagonalen, dazu d₂ schattiert (das die Arbeit nicht zeichnet). Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kongruenz wählt ruledlab.',
+    'Die Kugel aus Abb. 13 mit Geraden nur auf den Diagonalen (w = 1/16, Wahl von ruledlab: Die Arbeit nennt keinen Wert), dazu d₂ schattiert (das die Arbeit nicht zeichnet). Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kongruenz wählt ruledlab. Die Anzeige misst die gezeigten Diagonalgeraden; die Zeilen „zum Vergleich“ gehören zu anderen Schemata (die Butterfly-Zeile fügt auf allen Kanten ein).',
   'paper.ex5.caption':
     'Beispiel 5: d₁ = (u, v, ½ sin(2u + 1,5v)), Geraden parallel zu (u, v, sin u + 1,3 cos v), 8 × 7 Werte auf [−1,1; 1,1]², K = 6.',
   'paper.ex5.note':
-    'Beispiel 5 mit den Daten der Arbeit, einmal mit dem wörtlich gelesenen Schema der Arbeit verfeinert, mit beiden Leitflächen (d₂ = p + 0,35 d: Die Arbeit nennt keine Länge der Strecken).',
+    'Beispiel 5 mit den Daten der Arbeit, einmal mit dem wörtlich gelesenen Schema der Arbeit verfeinert, mit beiden Leitflächen (d₂ = p + 0,35 d: Die Arbeit nennt keine Länge der Strecken). Wörtlich gelesen wirkt sich K = 6 nicht auf das Ergebnis aus: Jedes K liefert dieselben Geraden (ebenso beim gekoppelten Schema von ruledlab; nur „zweistufig“ hängt von K ab).',
   'paper.ex6.caption':
     'Beispiel 6: einige Lagen eines Fräswerkzeugs entlang eines Profils, durch die variationelle Unterteilung aus Abschnitt 4 zu einer glatten Bahn verfeinert.',
   'paper.ex6.note':

@@ -149,7 +149,8 @@ quadratic, which w = 1/16 reproduces exactly. The readout measures the distance 
 rulings from the exact surface, for every scheme at this n; the claims under it are checked
 against those numbers.</p>
 <p class="rl-paper-data">Data: the paper's: 12 rulings of the quartic surface
-(1 + vu², u²/2 + uv, u − v), n = 12; the interval u ∈ [−1, 1] is ruledlab's (the paper gives none).</p>`,
+(1 + vu², u²/2 + uv, u − v), n = 12; the intervals u ∈ [−1, 1] and v ∈ [−1, 1] (the rulings' ends) are
+ruledlab's (the paper gives neither).</p>`,
 
   'congruence.text': `
 <h2>Refining a congruence of lines</h2>
@@ -161,7 +162,8 @@ point grids.</p>
 <p><strong>Butterfly scheme (Fig. 12).</strong> Triangulate the grid by the diagonals and insert on
 each diagonal</p>
 ${display(`${sub('p̄', 'i , j')}<mo>=</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>(</mo>${sub('p', 'i , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 1')}<mo>)</mo><mo>+</mo><mn>2</mn><mi>w</mi><mo>(</mo>${sub('p', 'i + 1 , j')}<mo>+</mo>${sub('p', 'i , j + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i , j − 1')}<mo>+</mo>${sub('p', 'i − 1 , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 2')}<mo>+</mo>${sub('p', 'i + 2 , j + 1')}<mo>)</mo>`, '16')}
-<p>The paper inserts only these diagonal lines (Fig. 13, "diagonals only").</p>
+<p>The paper inserts only these diagonal lines (Fig. 13, "diagonals only") and gives no value of the
+tension w; ruledlab uses w = 1/16, which reproduces cubic polynomials.</p>
 <p><strong>Variational subdivision (Section 5.2, Fig. 15).</strong> Each row and column of lines is
 a ruled surface: the strip scheme inserts the lines T and S on the edges, and each face gets the
 line whose umbrella vector (20) over its eight neighbours vanishes in every layer: their average.
@@ -170,10 +172,12 @@ paper's scheme ("paper") is bilinear averaging of the four corners (ERRATA.md).<
 <p class="rl-beyond"><strong>Beyond the paper.</strong> "Butterfly, all edges" applies (16)'s stencil
 to the other two edge directions too, so one step doubles the grid. "Two-stage" makes the edge lines
 with ruledlab's coupled strip energy; "coupled" lets all new lines settle together in one sparse
-solve. Measured against the exact congruences at one step (readout: every scheme), the butterfly
-scheme is the most accurate on these examples.</p>
+solve. The readout measures the scheme shown against the exact congruence and, for comparison, the
+four schemes of the menu that refine the whole grid, at one step: the butterfly scheme on all edges is
+the most accurate on these examples.</p>
 <p class="rl-paper-data">Data: Example 5 is the paper's (d₁ = (u, v, ½ sin(2u + 1.5v)), directions
-(u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6). The paper gives no formulas for
+(u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6; read literally, the scheme gives the
+same lines for every K, so K has no effect on the result). The paper gives no formulas for
 Example 4's two congruences; ruledlab's sphere and hyperbolic paraboloid are its own choice, and the
 segment length (0.35 of the direction vector) too.</p>`,
 

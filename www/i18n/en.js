@@ -482,12 +482,12 @@ export default {
     'For n ≥ 6 the coupled energy comes closer to the surface than the midpoint rule (for n = 3, 4 it does not).',
   'strip.claim.fourPoint':
     'The four-point scheme is exact on this surface, the best of all at the worst ruling: its boundary curves are quadratic, which w = 1/16 reproduces.',
-  'congruence.readout.compare.paper': 'paper’s scheme, 1 step: distance / angle',
-  'congruence.readout.compare.two-stage': 'two-stage, 1 step: distance / angle',
-  'congruence.readout.compare.coupled': 'coupled, 1 step: distance / angle',
-  'congruence.readout.compare.butterfly': 'butterfly, 1 step: distance / angle',
+  'congruence.readout.compare.paper': 'for comparison, the paper’s scheme at 1 step: distance / angle',
+  'congruence.readout.compare.two-stage': 'for comparison, two-stage at 1 step: distance / angle',
+  'congruence.readout.compare.coupled': 'for comparison, coupled at 1 step: distance / angle',
+  'congruence.readout.compare.butterfly': 'for comparison, butterfly on all edges at 1 step: distance / angle',
   'congruence.claim.butterfly':
-    'At one step, on each built-in congruence, the butterfly scheme’s new lines are the closest in direction and no farther away than any variational scheme’s.',
+    'At one step, on each built-in congruence, the new lines of the butterfly scheme on all edges are the closest in direction and no farther away than any variational scheme’s.',
   'milling.readout.compare.given': 'given poses only: max |deviation|',
   'milling.readout.compare.variational': 'variational (coupled): max |deviation|',
   'milling.readout.compare.averaged': 'variational (averaged): max |deviation|',
@@ -572,7 +572,7 @@ export default {
   'paper.fig10.caption':
     '“12 generators taken out of a quartic ruled surface R, 11 lines inserted; light gray spheres centered at A_i, dark gray spheres centered at B_i.”',
   'paper.fig10.note':
-    'Example 3 with the paper’s data: 12 rulings of (1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1] (the interval is ruledlab’s: the paper gives none), n = 12, one step of the energy (15) read literally; spheres at A_i (light) and B_i (dark).',
+    'Example 3 with the paper’s data: 12 rulings of (1 + vu², u²/2 + uv, u − v), n = 12, one step of the energy (15) read literally; spheres at A_i (light) and B_i (dark). The intervals u ∈ [−1, 1] and v ∈ [−1, 1] (the rulings’ ends) are ruledlab’s: the paper gives neither.',
   'paper.strip.beyond':
     'Read literally, (15) puts umbrella vectors at the new points only, and its minimiser is exactly the midpoint rule (ERRATA.md; checked under the readout). ruledlab’s coupled and averaged energies put them at every vertex; the readout compares every scheme at this n: coupled beats the midpoint rule from n = 6 on, and the four-point scheme is exact on this surface.',
   'paper.fig11.caption': '“Congruence of lines determined by two directrices.”',
@@ -580,22 +580,22 @@ export default {
     'Example 5’s lines between the director surface d₁ and d₂, both shaded. The paper’s figure is a sketch; ruledlab takes d₂ as the points p + 0.35 d (the paper gives no segment length, ERRATA.md 9).',
   'paper.fig12.caption': '“The butterfly-scheme.”',
   'paper.fig12.note':
-    'The stencil of (16) is drawn beside the view with all its weights (w = 1/16); the view shows the lines it inserts on the diagonals of Example 5’s grid (one step, as in the paper).',
+    'The stencil of (16) is drawn beside the view with all its weights; the view shows the lines it inserts on the diagonals of Example 5’s grid (one step, as in the paper). The tension w = 1/16 is ruledlab’s choice (it reproduces cubic polynomials): the paper gives no value.',
   'paper.fig13.caption':
     '“Left: part of a sphere with lines of the congruence (black, thin), inserted lines (black, thick). Right: part of a hyperbolic paraboloid, lines of the congruence (black, thin), inserted lines (black, thick).”',
   'paper.fig13.note':
-    'Fig. 13 left: lines inserted on the diagonals only, as the paper does. The paper gives no formulas for Example 4; ruledlab’s sphere carries the directions normal + 0.3 (sin 2v, cos 3u, uv), a generalised offset that is not a normal congruence. Inserted lines are drawn in colour rather than thick black.',
+    'Fig. 13 left: lines inserted on the diagonals only, as the paper does, with w = 1/16 in (16) (ruledlab’s choice: the paper gives no value). The paper gives no formulas for Example 4; ruledlab’s sphere carries the directions normal + 0.3 (sin 2v, cos 3u, uv), a generalised offset that is not a normal congruence. Inserted lines are drawn in colour rather than thick black. The readout measures these diagonal lines; the rows “for comparison” are other schemes (the butterfly row inserts on all edges).',
   'paper.fig13-right.note':
-    'Fig. 13 right: lines inserted on the diagonals only. The paper gives no formulas for Example 4; ruledlab’s hyperbolic paraboloid z = xy carries the directions (−v, −u, 1) + 0.3 (cos 2v, sin u, 0).',
+    'Fig. 13 right: lines inserted on the diagonals only, with w = 1/16 in (16) (ruledlab’s choice: the paper gives no value). The paper gives no formulas for Example 4; ruledlab’s hyperbolic paraboloid z = xy carries the directions (−v, −u, 1) + 0.3 (cos 2v, sin u, 0). The readout measures these diagonal lines; the rows “for comparison” are other schemes (the butterfly row inserts on all edges).',
   'paper.fig14.caption':
     '“Point scheme on directrix surface d₁ (left), part of the congruence with some notations (right).”',
   'paper.fig14.note':
     'The notation of Section 5.2 on one cell of Example 5: the given lines R_{i,j} with their points p on d₁ and q on d₂, the edge lines T_{i,j} (points r, r′) and S_{i,j} (s, s′), and the face line R̄_{i,j} (points P, Q). The index ranges follow ERRATA.md 9.',
   'paper.fig15.caption': '“Discrete congruence of lines (left), inserted lines (black thick) (right).”',
   'paper.fig15.note':
-    'Example 5 with the paper’s data: d₁ = (u, v, ½ sin(2u + 1.5v)), directions (u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6, refined once by the paper’s variational scheme read literally: midpoint edge lines, each face line the average of its eight neighbours (ERRATA.md).',
+    'Example 5 with the paper’s data: d₁ = (u, v, ½ sin(2u + 1.5v)), directions (u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6, refined once by the paper’s variational scheme read literally: midpoint edge lines, each face line the average of its eight neighbours (ERRATA.md). Read so, K has no effect on the result: every K gives the same lines.',
   'paper.congruence.beyond':
-    'Read literally, the energies (15) and (21) give plain averages; ruledlab also offers “two-stage” (its coupled strip energy on the edges), “coupled” (all new lines in one sparse solve) and the butterfly scheme on all edges. The readout compares all four at one step; on every built-in congruence the butterfly scheme is the most accurate (checked under the readout).',
+    'Read literally, the energies (15) and (21) give plain averages; ruledlab also offers “two-stage” (its coupled strip energy on the edges), “coupled” (all new lines in one sparse solve) and the butterfly scheme on all edges. The readout measures the scheme shown and, for comparison, all four at one step; on every built-in congruence the butterfly scheme on all edges is the most accurate (checked under the readout).',
   'paper.fig16.caption': '“First step of the refinement.”',
   'paper.fig16.note':
     'Example 6 after one step: given tool axes dark, inserted ones light, the tool as a ball-end cylinder, the barycentre curve dashed, the swept ball over the part. The paper gives no data; the profile, the seven poses and the tool (radius 0.25, length 1.5) are ruledlab’s.',
@@ -615,15 +615,15 @@ export default {
   'paper.ex3.caption':
     'Example 3: N = 12 generators of the quartic ruled surface (1 + vu², u²/2 + uv, u − v), n = 12, one step of the variational subdivision.',
   'paper.ex3.note':
-    'Example 3 with the paper’s data, the first triangulation and the exact surface shown faintly; the readout measures the distance of the inserted rulings from the surface for every scheme.',
+    'Example 3 with the paper’s data, the first triangulation and the exact surface shown faintly; the readout measures the distance of the inserted rulings from the surface for every scheme. The intervals u ∈ [−1, 1] and v ∈ [−1, 1] (the rulings’ ends) are ruledlab’s: the paper gives neither.',
   'paper.ex4.caption':
     'Example 4: the butterfly scheme on congruences with two different director surfaces d₁; d₂, a generalised offset surface, is not plotted in the paper.',
   'paper.ex4.note':
-    'The sphere of Fig. 13 with lines inserted on the diagonals only, and d₂ (which the paper does not plot) shaded too. The paper gives no formulas for Example 4; the congruence is ruledlab’s.',
+    'The sphere of Fig. 13 with lines inserted on the diagonals only (w = 1/16, ruledlab’s choice: the paper gives no value), and d₂ (which the paper does not plot) shaded too. The paper gives no formulas for Example 4; the congruence is ruledlab’s. The readout measures the diagonal lines shown; the rows “for comparison” are other schemes (the butterfly row inserts on all edges).',
   'paper.ex5.caption':
     'Example 5: d₁ = (u, v, ½ sin(2u + 1.5v)), lines parallel to (u, v, sin u + 1.3 cos v), 8 × 7 values on [−1.1, 1.1]², K = 6.',
   'paper.ex5.note':
-    'Example 5 with the paper’s data, refined once by the paper’s scheme read literally, with both director surfaces (d₂ = p + 0.35 d: the paper gives no segment length).',
+    'Example 5 with the paper’s data, refined once by the paper’s scheme read literally, with both director surfaces (d₂ = p + 0.35 d: the paper gives no segment length). Read literally, K = 6 has no effect on the result: every K gives the same lines (so does ruledlab’s coupled scheme; only two-stage depends on K).',
   'paper.ex6.caption':
     'Example 6: a few positions of a milling tool along a profile, refined into a smooth path by the variational subdivision of Section 4.',
   'paper.ex6.note':
