@@ -356,6 +356,7 @@ const CALLS = [
   (_f) => AnalyticCongruence.byName(value()),
   (f) => f.analyticCongruence.grid(pick([undefined, ...SMALL]), pick([undefined, ...SMALL])),
   (f) => f.analyticCongruence.errors(pick([f.congruence, value()])),
+  (f) => f.analyticCongruence.diagonalErrors(pick([f.congruence, value()])),
   (_f) =>
     ToolPath.fromSegments(
       value(),

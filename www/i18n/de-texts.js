@@ -38,8 +38,9 @@ Arbeit; die Zahl der Erzeugenden (36) und die Länge der Strecken wählt ruledla
 <h2>Abb. 1: die Bezeichnungen</h2>
 <p>Drei aufeinanderfolgende Erzeugende ${m(sub('R', 'i − 1'))}, ${m(Ri)}, ${m(sub('R', 'i + 1'))} des
 Hyperboloids aus Beispiel 1. Jedes Paar hat genau ein gemeinsames Lot ${m(sub('N', 'i , i + 1'))}; es
-trifft ${m(Ri)} im Fußpunkt ${m(fii1)} und ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))},
-im Abstand ${m(sub('h', 'i , i + 1'))}. Die gestrichelte Gerade durch ${m(fii1)} ist parallel zu
+trifft ${m(Ri)} im Fußpunkt ${m(fii1)} und ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))}.
+Seine Länge ist der Abstand der beiden Erzeugenden; mit Vorzeichen (je nachdem, wie sich die beiden
+Erzeugenden umwinden) ist sie der vorzeichenbehaftete Abstand ${m(sub('h', 'i , i + 1'))} der Anzeige. Die gestrichelte Gerade durch ${m(fii1)} ist parallel zu
 ${m(sub('R', 'i + 1'))}: Sie schließt mit ${m(Ri)} den Winkel ${m(sub('φ', 'i , i + 1'))} ein. Jede
 Erzeugende trägt zwei Fußpunkte, einen von jedem Nachbarn; ihr Mittelpunkt ${m(sub('m', 'i'))} ist der
 diskrete Kehlpunkt. Verkleinern Sie den Abstand und sehen Sie, wie die beiden Fußpunkte auf ihn
@@ -95,13 +96,13 @@ Die Arbeit zeigt das konoidale Bild einer Schraubregelfläche als Wendelfläche,
 Achse senkrecht treffen. Hier gemessen gilt das nur, wenn die Kehllinie die Erzeugenden rechtwinklig
 kreuzt. Im Allgemeinen berühren die konoidalen Erzeugenden einen Zylinder um die Achse mit dem Radius
 ${m(frac(row('e · ṡ'), row('| e′ |')))}: 1,4 für die Fläche mit Erzeugenden unter 45° (Radius 1,
-Ganghöhe 0,4). Die Anzeige misst ihn diskret: ρ, der Abstand der beiden Fußpunkte auf einer
+Schraubparameter 0,4, also Höhe 0,4 je Radiant: z = 0,4 u). Die Anzeige misst ihn diskret: ρ, der Abstand der beiden Fußpunkte auf einer
 Erzeugenden geteilt durch den Winkel, um den sich die Erzeugenden dort drehen, ist der Krümmungsradius
 der Hüllkurve der abgewickelten Erzeugenden und strebt mit zweiter Ordnung gegen
 ${m(frac(row('e · ṡ'), row('| e′ |')))}. Wählen Sie „Erzeugende normal zur Kehlschraublinie“
 (β = −atan(r/p)), dann strebt ρ gegen 0: Im Grenzwert erscheint die Wendelfläche der Bildunterschrift.</p>
 <p class="rl-paper-data">Die Arbeit gibt für Abb. 4–6 keine Daten an; ruledlab verwendet die
-Quartik aus Beispiel 3, eine Schraubregelfläche (Radius 1, Ganghöhe 0,4) und einen Streifen des
+Quartik aus Beispiel 3, eine Schraubregelfläche (Radius 1, Schraubparameter 0,4 je Radiant, also Ganghöhe 2π · 0,4 ≈ 2,51) und einen Streifen des
 Hyperboloids aus Beispiel 1.</p>`,
 
   'curves.text': `
@@ -146,7 +147,8 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 in den neuen Punkten, ist das Minimum genau die Mittelpunktsregel (wählen Sie „wörtlich“: Die Anzeige
 gleicht der Mittelpunktsregel). Die <em>gekoppelte</em> Energie von ruledlab nimmt Umbrella-Vektoren in
 jedem inneren Knoten, auch in den alten, sodass die neuen Erzeugenden gekoppelt sind und der Fläche
-ab n = 6 enger folgen. Die <em>gemittelte</em> Variante mittelt die Umbrella-Vektoren der beiden
+für jedes n von 5 bis 24 (den Bereich des Reglers) enger folgen als die Mittelpunktsregel (für n = 3, 4
+nicht). Die <em>gemittelte</em> Variante mittelt die Umbrella-Vektoren der beiden
 Triangulierungen vor dem Quadrieren: Die Energie (15) enthält einen Verdrillungsterm aus den
 gescherten Nachbarn der beiden Triangulierungen, den das Mitteln aufhebt. Auf dieser Fläche ist das
 Vierpunktschema an der schlechtesten Erzeugenden am besten: Seine Randkurven sind quadratisch, was

@@ -203,7 +203,7 @@ export default {
   'notation.readout.distance': 'vorzeichenbehafteter Abstand h_{i,i+1}',
   'notation.readout.delta': 'δ_{i,i+1} = h / φ',
   'notation.describe':
-    'Drei aufeinanderfolgende Erzeugende des Hyperboloids aus Beispiel 1, im Parameter {spacing} voneinander entfernt, mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} ist {angle} rad, ihr Abstand {distance}.',
+    'Drei aufeinanderfolgende Erzeugende des Hyperboloids aus Beispiel 1, im Parameter {spacing} voneinander entfernt, mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} ist {angle} rad, ihr vorzeichenbehafteter Abstand h_{i,i+1} beträgt {distance} (sein Betrag ist der Abstand der beiden Geraden).',
 
   'convergence.title': 'Konvergenzordnungen (Sätze 1–2)',
   'convergence.param.u': 'Parameter u',
@@ -469,7 +469,7 @@ export default {
   'strip.readout.compare.fourPoint': 'Vierpunktschema: max. Abstand',
   'strip.claim.literal': 'Wörtlich gelesen ist (15) die Mittelpunktsregel: ihre Abstände sind für jedes n gleich.',
   'strip.claim.coupled':
-    'Für n ≥ 6 kommt die gekoppelte Energie der Fläche näher als die Mittelpunktsregel (für n = 3, 4 nicht).',
+    'Für jedes n von 5 bis 24 (den Bereich des Reglers) kommt die gekoppelte Energie der Fläche näher als die Mittelpunktsregel; für n = 3, 4 nicht.',
   'strip.claim.fourPoint':
     'Das Vierpunktschema ist auf dieser Fläche exakt, an der schlechtesten Erzeugenden das beste: seine Randkurven sind quadratisch, und w = 1/16 reproduziert sie.',
   'congruence.readout.compare.paper': 'zum Vergleich, Schema der Arbeit nach 1 Schritt: Abstand / Winkel',
@@ -525,7 +525,7 @@ export default {
   'paper.ex6': 'Beispiel 6: Fräsen',
   'paper.fig1.caption': '„Diskretes Regelflächenmodell: Bezeichnungen.“ (übersetzt)',
   'paper.fig1.note':
-    'Drei aufeinanderfolgende Erzeugende R_{i−1}, R_i, R_{i+1} mit den gemeinsamen Loten N_{i,i+1}, den Fußpunkten f_{i,i+1}, f_{i+1,i}, dem Winkel φ_{i,i+1} und dem Abstand h_{i,i+1}. Die Arbeit gibt keine Daten an; ruledlab verwendet drei Erzeugende des Hyperboloids aus Beispiel 1 (Abstand und Lage sind Schieberegler).',
+    'Drei aufeinanderfolgende Erzeugende R_{i−1}, R_i, R_{i+1} mit den gemeinsamen Loten N_{i,i+1}, den Fußpunkten f_{i,i+1}, f_{i+1,i}, dem Winkel φ_{i,i+1} und dem vorzeichenbehafteten Abstand h_{i,i+1} (sein Betrag ist der Abstand der beiden Erzeugenden, sein Vorzeichen sagt, wie sie sich umwinden). Die Arbeit gibt keine Daten an; ruledlab verwendet drei Erzeugende des Hyperboloids aus Beispiel 1 (Abstand und Lage sind Schieberegler).',
   'paper.fig2.caption':
     '„Diskretes Modell einer Regelfläche mit Kehllinie und der Folge der gemeinsamen Normalen der Erzeugenden.“ (übersetzt)',
   'paper.fig2.note':
@@ -542,7 +542,7 @@ export default {
   'paper.fig5.caption':
     '„Links: Schraubregelfläche. Rechts: isometrische konoidale Fläche. In diesem Fall ist das Ergebnis eine Schraubfläche, deren Erzeugende die Achse senkrecht schneiden.“ (übersetzt)',
   'paper.fig5.note':
-    'Eine Schraubregelfläche, in ihr konoidales Modell verbogen. Die Arbeit gibt keine Daten an; ruledlab verwendet Radius 1, Ganghöhe 0,4 und Erzeugende unter 45°.',
+    'Eine Schraubregelfläche, in ihr konoidales Modell verbogen. Die Arbeit gibt keine Daten an; ruledlab verwendet Radius 1, Schraubparameter 0,4 (Höhe je Radiant: z = 0,4 u, also Ganghöhe 2π · 0,4 ≈ 2,51) und Erzeugende unter 45°.',
   'paper.fig5-orthogonal.note':
     'Dieselbe Schraublinie mit Erzeugenden normal zur Kehlschraublinie (tan β = −r/p), der Fall, in dem die Bildunterschrift zutrifft: Die Anzeige ρ strebt gegen 0, die konoidalen Erzeugenden treffen im Grenzwert die Achse. Die Arbeit gibt keine Daten an; die Fläche wählt ruledlab.',
   'paper.fig5.beyond':
@@ -566,7 +566,7 @@ export default {
   'paper.fig10.note':
     'Beispiel 3 mit den Daten der Arbeit: 12 Erzeugende von (1 + vu², u²/2 + uv, u − v), n = 12, ein Schritt der Energie (15) wörtlich gelesen; Kugeln um A_i (hell) und B_i (dunkel). Die Intervalle u ∈ [−1, 1] und v ∈ [−1, 1] (die Enden der Erzeugenden) wählt ruledlab: Die Arbeit nennt keines von beiden.',
   'paper.strip.beyond':
-    'Wörtlich gelesen setzt (15) Umbrella-Vektoren nur in die neuen Punkte, und das Minimum ist genau die Mittelpunktsregel (ERRATA.md; unter der Anzeige geprüft). Die gekoppelte und die gemittelte Energie von ruledlab setzen sie in jeden Knoten; die Anzeige vergleicht jedes Schema bei diesem n: Gekoppelt schlägt die Mittelpunktsregel ab n = 6, und das Vierpunktschema ist auf dieser Fläche exakt.',
+    'Wörtlich gelesen setzt (15) Umbrella-Vektoren nur in die neuen Punkte, und das Minimum ist genau die Mittelpunktsregel (ERRATA.md; unter der Anzeige geprüft). Die gekoppelte und die gemittelte Energie von ruledlab setzen sie in jeden Knoten; die Anzeige vergleicht jedes Schema bei diesem n: Gekoppelt schlägt die Mittelpunktsregel für jedes n von 5 bis 24 (nicht für n = 3, 4), und das Vierpunktschema ist auf dieser Fläche exakt.',
   'paper.fig11.caption': '„Durch zwei Leitflächen bestimmte Geradenkongruenz.“ (übersetzt)',
   'paper.fig11.note':
     'Die Geraden aus Beispiel 5 zwischen den Leitflächen d₁ und d₂, beide schattiert. Die Abbildung der Arbeit ist eine Skizze; ruledlab nimmt für d₂ die Punkte p + 0,35 d (die Arbeit nennt keine Länge der Strecken, ERRATA.md 9).',

@@ -37,8 +37,9 @@ number of rulings (36) and the segment length are ruledlab's choice.</p>`,
 <h2>Fig. 1: the notation</h2>
 <p>Three consecutive rulings ${m(sub('R', 'i − 1'))}, ${m(Ri)}, ${m(sub('R', 'i + 1'))} of the
 hyperboloid of Example 1. Each pair has exactly one common perpendicular ${m(sub('N', 'i , i + 1'))};
-it meets ${m(Ri)} in the footpoint ${m(fii1)} and ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))},
-at distance ${m(sub('h', 'i , i + 1'))}. The dashed line through ${m(fii1)} is parallel to
+it meets ${m(Ri)} in the footpoint ${m(fii1)} and ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))}.
+Its length is the distance of the two rulings; with a sign (how the two rulings wind about each other)
+it is the signed distance ${m(sub('h', 'i , i + 1'))} of the readout. The dashed line through ${m(fii1)} is parallel to
 ${m(sub('R', 'i + 1'))}: it encloses the angle ${m(sub('φ', 'i , i + 1'))} with ${m(Ri)}. Every ruling
 carries two footpoints, one from each neighbour; their midpoint ${m(sub('m', 'i'))} is the discrete
 striction point. Shrink the spacing and watch the two footpoints close in on it.</p>`,
@@ -92,13 +93,13 @@ the conoidal image of a ruled helical surface as a helicoid whose rulings meet t
 orthogonally. Measured here, that holds only when the striction curve crosses the rulings at a
 right angle. In general the conoidal rulings touch a cylinder about the axis of radius
 ${m(frac(row('e · ṡ'), row('| e′ |')))}: 1.4 for the surface with rulings at 45° (radius 1, pitch
-0.4). The readout measures it discretely: ρ, the step between the two footpoints on a ruling over
+0.4 per radian: z = 0.4 u). The readout measures it discretely: ρ, the step between the two footpoints on a ruling over
 the angle the rulings turn there, is the radius of curvature of the envelope of the developed
 rulings, and tends to ${m(frac(row('e · ṡ'), row('| e′ |')))} at second order. Choose "rulings
 orthogonal to the striction helix" (β = −atan(r/p)) and ρ tends to 0: the caption's helicoid
 appears in the limit.</p>
 <p class="rl-paper-data">The paper gives no data for Figs. 4–6; ruledlab uses Example 3's quartic,
-a ruled helical surface (radius 1, pitch 0.4) and a strip of Example 1's hyperboloid.</p>`,
+a ruled helical surface (radius 1, pitch 0.4 per radian, so 2π · 0.4 ≈ 2.51 per turn) and a strip of Example 1's hyperboloid.</p>`,
 
   'curves.text': `
 <h2>Subdivision of polygons</h2>
@@ -141,7 +142,8 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 <p class="rl-beyond"><strong>What ruledlab adds.</strong> Read literally, with umbrellas at the new
 points only, the minimiser is just the midpoint rule (choose "literal": the readout equals the
 midpoint rule's). ruledlab's <em>coupled</em> energy puts umbrellas at every interior vertex, old
-ones included, so the new rulings couple and, from n = 6 on, follow the surface more closely. The <em>averaged</em>
+ones included, so the new rulings couple and, for every n from 5 to 24 (the slider's range), follow
+the surface more closely than the midpoint rule (for n = 3, 4 they do not). The <em>averaged</em>
 variant averages the two triangulations' umbrellas before squaring: the energy (15) contains a
 twist term from the sheared neighbours of the two triangulations, and averaging cancels it. On
 this surface the four-point scheme is best of all at the worst ruling: its boundary curves are

@@ -205,7 +205,7 @@ export default {
   'notation.readout.distance': 'signed distance h_{i,i+1}',
   'notation.readout.delta': 'δ_{i,i+1} = h / φ',
   'notation.describe':
-    'Three consecutive rulings of the hyperboloid of Example 1, {spacing} apart in the parameter, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their distance {distance}.',
+    'Three consecutive rulings of the hyperboloid of Example 1, {spacing} apart in the parameter, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their signed distance h_{i,i+1} is {distance} (its absolute value is the distance of the two lines).',
 
   // Propositions 1–2
   'convergence.title': 'Convergence orders (Propositions 1–2)',
@@ -479,7 +479,7 @@ export default {
   'strip.readout.compare.fourPoint': 'four-point: max distance',
   'strip.claim.literal': 'Read literally, (15) is the midpoint rule: their distances are equal for every n.',
   'strip.claim.coupled':
-    'For n ≥ 6 the coupled energy comes closer to the surface than the midpoint rule (for n = 3, 4 it does not).',
+    'For every n from 5 to 24 (the slider’s range) the coupled energy comes closer to the surface than the midpoint rule; for n = 3, 4 it does not.',
   'strip.claim.fourPoint':
     'The four-point scheme is exact on this surface, the best of all at the worst ruling: its boundary curves are quadratic, which w = 1/16 reproduces.',
   'congruence.readout.compare.paper': 'for comparison, the paper’s scheme at 1 step: distance / angle',
@@ -535,7 +535,7 @@ export default {
   'paper.ex6': 'Example 6: milling',
   'paper.fig1.caption': '“Discrete ruled surface model: Notations.”',
   'paper.fig1.note':
-    'Three consecutive rulings R_{i−1}, R_i, R_{i+1} with the common perpendiculars N_{i,i+1}, the footpoints f_{i,i+1}, f_{i+1,i}, the angle φ_{i,i+1} and the distance h_{i,i+1}. The paper gives no data; ruledlab uses three rulings of Example 1’s hyperboloid (their spacing and position are sliders).',
+    'Three consecutive rulings R_{i−1}, R_i, R_{i+1} with the common perpendiculars N_{i,i+1}, the footpoints f_{i,i+1}, f_{i+1,i}, the angle φ_{i,i+1} and the signed distance h_{i,i+1} (its absolute value is the distance of the two rulings, its sign says how they wind). The paper gives no data; ruledlab uses three rulings of Example 1’s hyperboloid (their spacing and position are sliders).',
   'paper.fig2.caption':
     '“Discrete model of a ruled surface with striction line and sequence of common normals of generators.”',
   'paper.fig2.note':
@@ -551,7 +551,7 @@ export default {
   'paper.fig5.caption':
     '“Left: Ruled helical surface. Right: Isometric conoidal surface. In this case the result is a helical surface whose generators intersect the axis orthogonally.”',
   'paper.fig5.note':
-    'A ruled helical surface bent into its conoidal model. The paper gives no data; ruledlab uses radius 1, pitch 0.4 and rulings at 45°.',
+    'A ruled helical surface bent into its conoidal model. The paper gives no data; ruledlab uses radius 1, pitch 0.4 per radian (z = 0.4 u, so 2π · 0.4 ≈ 2.51 per turn) and rulings at 45°.',
   'paper.fig5-orthogonal.note':
     'The same helix with the rulings turned orthogonal to the striction helix (tan β = −r/p), the case in which the caption holds: the readout ρ tends to 0, the conoidal rulings meet the axis in the limit. The paper gives no data; the surface is ruledlab’s.',
   'paper.fig5.beyond':
@@ -574,7 +574,7 @@ export default {
   'paper.fig10.note':
     'Example 3 with the paper’s data: 12 rulings of (1 + vu², u²/2 + uv, u − v), n = 12, one step of the energy (15) read literally; spheres at A_i (light) and B_i (dark). The intervals u ∈ [−1, 1] and v ∈ [−1, 1] (the rulings’ ends) are ruledlab’s: the paper gives neither.',
   'paper.strip.beyond':
-    'Read literally, (15) puts umbrella vectors at the new points only, and its minimiser is exactly the midpoint rule (ERRATA.md; checked under the readout). ruledlab’s coupled and averaged energies put them at every vertex; the readout compares every scheme at this n: coupled beats the midpoint rule from n = 6 on, and the four-point scheme is exact on this surface.',
+    'Read literally, (15) puts umbrella vectors at the new points only, and its minimiser is exactly the midpoint rule (ERRATA.md; checked under the readout). ruledlab’s coupled and averaged energies put them at every vertex; the readout compares every scheme at this n: coupled beats the midpoint rule for every n from 5 to 24 (not for n = 3, 4), and the four-point scheme is exact on this surface.',
   'paper.fig11.caption': '“Congruence of lines determined by two directrices.”',
   'paper.fig11.note':
     'Example 5’s lines between the director surface d₁ and d₂, both shaded. The paper’s figure is a sketch; ruledlab takes d₂ as the points p + 0.35 d (the paper gives no segment length, ERRATA.md 9).',
