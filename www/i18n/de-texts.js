@@ -11,7 +11,8 @@ export default {
 <p>Eine diskrete Regelfläche ist eine Folge von Geraden ${m(Ri)}. Zwei aufeinanderfolgende
 Erzeugende schließen den Winkel ${m(sub('φ', 'i , i + 1'))} ein und haben genau ein gemeinsames Lot
 ${m(sub('N', 'i , i + 1'))}. Es trifft ${m(Ri)} im Fußpunkt ${m(fii1)}; die beiden Fußpunkte eines
-Paares haben den Abstand ${m(sub('h', 'i , i + 1'))}. Der <em>diskrete Drall</em> ist</p>
+Paares haben den Abstand ${m(`<mo>|</mo>${sub('h', 'i , i + 1')}<mo>|</mo>`)}: ${m(sub('h', 'i , i + 1'))} ist ihr vorzeichenbehafteter Abstand,
+dessen Vorzeichen sagt, wie sich die beiden Erzeugenden umwinden. Der <em>diskrete Drall</em> ist</p>
 ${display(`${sub('δ', 'i , i + 1')}<mo>=</mo>${frac(sub('h', 'i , i + 1'), sub('φ', 'i , i + 1'))}`, '1')}
 <p>Jede Erzeugende trägt zwei Fußpunkte, ${m(fiim)} und ${m(fii1)}. Beide streben gegen den
 <em>Kehlpunkt</em> ${mr('s ( u )')}, wenn die Erzeugenden zusammenrücken, aber nur von erster Ordnung

@@ -11,7 +11,8 @@ export default {
 <p>A discrete ruled surface is a sequence of lines ${m(Ri)}. Two consecutive rulings enclose the
 angle ${m(sub('φ', 'i , i + 1'))} and have one common perpendicular ${m(sub('N', 'i , i + 1'))}. It
 meets ${m(Ri)} at the footpoint ${m(fii1)}, and the two footpoints of a pair are
-${m(sub('h', 'i , i + 1'))} apart. The <em>discrete distribution parameter</em> is</p>
+${m(`<mo>|</mo>${sub('h', 'i , i + 1')}<mo>|</mo>`)} apart: ${m(sub('h', 'i , i + 1'))} is their signed distance, its sign telling how the two
+rulings wind. The <em>discrete distribution parameter</em> is</p>
 ${display(`${sub('δ', 'i , i + 1')}<mo>=</mo>${frac(sub('h', 'i , i + 1'), sub('φ', 'i , i + 1'))}`, '1')}
 <p>Each ruling carries two footpoints, ${m(fiim)} and ${m(fii1)}. Both tend to the <em>striction
 point</em> ${mr('s ( u )')} as the rulings get closer, but only at first order (Proposition 1).
