@@ -20,7 +20,7 @@ export const DATA_COMPLEX_TOLERANCE = 1e-6;
  * up to this many (more than are drawn: smoothness shows over many steps) …
  */
 export const TURNING_STEPS = 12;
-/** … and the readout and the claims compare it with its value this many steps in. */
+/** … and the readout and the claims compare it with its value this many steps in (the texts say 8 and 12). */
 export const TURNING_FROM = 8;
 
 /** The nearest the camera comes to its target, and the least radius a fitted view frames. */

@@ -7,12 +7,14 @@
 //! of a closed polygon, at the interior vertices of an open one) and of each of its
 //! refinements by a curve scheme.
 //!
-//! Refined polygons of a scheme with a C¹ limit turn less and less: their largest turning
-//! angle falls towards 0 from step to step. Where it stops falling, the limit curve has a
-//! corner or a cusp. For the four-point scheme (8) this shows where smoothness is lost as
-//! the tension w grows: the paper's 0 < w < ⅛ (Dyn, Levin and Gregory 1987) is a sufficient
-//! condition, not the place where kinks appear. A measurement over finitely many steps is
-//! evidence, not a proof: near the limit of smoothness the angle falls very slowly.
+//! Where the limit is a regular C¹ curve (a continuous derivative that does not vanish), the
+//! refined polygons turn less and less: their largest turning angle falls towards 0 from step
+//! to step. Where it stops falling, the limit has a corner, or a cusp where its derivative
+//! vanishes (a C¹ parametrisation may have one), or the polygons approach a smooth limit only
+//! slowly. For the four-point scheme (8) this shows where the polygons stop straightening out
+//! as the tension w grows: the paper's 0 < w < ⅛ (Dyn, Levin and Gregory 1987) is a sufficient
+//! condition for C¹, not the place where kinks appear. A measurement over finitely many steps
+//! is evidence, not a proof.
 //!
 //! Edges of zero length (|p_{i+1} − p_i| ≤ [`ZERO_LENGTH_REL`] · max(|p_i|, |p_{i+1}|)) have
 //! no direction and are skipped: the angle is taken between the neighbouring edges.

@@ -219,8 +219,9 @@ pub fn subdivide_polygon(
 /// The largest turning angle (radians, 0 … π: the largest angle between an edge and the
 /// next) of a polygon (3 numbers per point) and of each of its refinements by a curve scheme
 /// (see `SubdivideOptions`; "variational" is for ruled strips only): `steps + 1` numbers, the
-/// first for the polygon itself. Polygons of a scheme with a C¹ limit turn less and less from
-/// step to step; where the angle stops falling the curve has a corner or a cusp.
+/// first for the polygon itself. Where the limit is a regular C¹ curve the polygons turn less
+/// and less from step to step; where the angle stops falling the limit has a corner or a cusp,
+/// or is approached slowly.
 #[wasm_bindgen(js_name = turningAngles)]
 pub fn turning_angles(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
