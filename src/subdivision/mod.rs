@@ -75,7 +75,7 @@ pub enum Scheme {
     Bezier,
     /// The four-point scheme (8) with tension w.
     FourPoint {
-        /// Tension w (the limit is C¹ at least for 0 < w < (√5 − 1)/8; see [`four_point`]).
+        /// Tension w (the limit is C¹ at least for 0 < w < (√5 − 1)/8, Dyn, Gregory and Levin 1991).
         w: f64,
     },
     /// Variational interpolatory subdivision of a ruled strip (strips only).
