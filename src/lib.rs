@@ -76,6 +76,7 @@ pub use subdivision::chaikin::chaikin;
 pub use subdivision::four_point::four_point;
 pub use subdivision::line_space::{subdivide_lines, DualLine};
 pub use subdivision::triangulation::{division_point, edges as triangulation_edges, Triangulation};
+pub use subdivision::turning::{largest_turning_angle, turning_angles};
 pub use subdivision::variational::refine as refine_variational;
 pub use subdivision::{recut, subdivide_polygon, subdivide_strip, Affine, Pair, Scheme, Variant};
 

@@ -176,3 +176,40 @@ fn polygon_sizes() {
     }
     assert!(subdivide_polygon(&p, COUPLED, false, 1).is_err());
 }
+
+/// The control polygon of the curves scene (www/scenes/curves.js): eight points in a zigzag.
+const ZIGZAG: [f64; 24] = [
+    0.0, 0.0, 0.0, 2.0, 3.0, 0.0, 4.0, 0.5, 0.0, 6.5, 3.5, 0.0, 8.0, -0.5, 0.0, 5.5, -3.0, 0.0, 3.0, -1.5, 0.0, 1.0,
+    -3.2, 0.0,
+];
+
+/// Where the four-point scheme's polygons stop straightening out (the curves scene's readout,
+/// its text and claims): the largest turning angle after 8 and 12 steps. On the closed zigzag
+/// it still falls at w = 0.14 and 0.15, beyond the paper's ⅛, and up to 0.17; from 0.171 the
+/// polygon still turns by more than 1 rad after 12 steps. Open, ruledlab's end rule (cubic
+/// ghost points) gives out first: the angle falls up to w = 0.126 and not from 0.127.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn four_point_turning_angles_on_the_zigzag() {
+    let p = ruledlab::points_from_flat(&ZIGZAG).unwrap();
+    let at = |w: f64, closed: bool| {
+        let a = ruledlab::turning_angles(&p, Scheme::FourPoint { w }, closed, 12).unwrap();
+        (a[8], a[12])
+    };
+    for (w, closed, late) in [
+        (1.0 / 13.0, true, (0.0554, 0.0058)),
+        (0.14, true, (0.3934, 0.1883)),
+        (0.15, true, (0.5568, 0.3174)),
+        (0.17, true, (1.0406, 0.9962)),
+        (0.171, true, (1.1421, 1.1555)),
+        (0.2, true, (2.3762, 3.1005)),
+        (0.126, false, (1.7422, 1.2213)),
+        (0.127, false, (2.0878, 2.2778)),
+    ] {
+        let (a8, a12) = at(w, closed);
+        assert!((a8 - late.0).abs() < 1e-4 && (a12 - late.1).abs() < 1e-4, "w = {w}, closed {closed}: {a8} → {a12}");
+    }
+    // w = 0: the polygon itself, its largest turn (2.088 rad) at every step
+    let flat = ruledlab::turning_angles(&p, Scheme::FourPoint { w: 0.0 }, true, 12).unwrap();
+    assert!(flat.iter().all(|a| (a - flat[0]).abs() < 1e-12) && (flat[0] - 2.0881).abs() < 1e-4);
+}

@@ -94,6 +94,41 @@ fn diagonal_insertion_of_fig_13() {
     }
 }
 
+/// The accuracy of Fig. 13's diagonal insertion, measured at the cell centres: the errors of
+/// the full butterfly step over its odd-odd lines (the same lines), and never more than the
+/// full step's errors over all its new lines; no distance where the scheme reproduces the
+/// points (bilinear in (u, v)).
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn errors_of_the_diagonal_insertion() {
+    for c in [AnalyticCongruence::Sphere, AnalyticCongruence::HyperbolicParaboloid, AnalyticCongruence::Example5] {
+        let ((u0, u1), (v0, v1), r, cc) = c.domain();
+        let grid = c.grid(r, cc).unwrap();
+        let diagonal = c.diagonal_errors(&butterfly_diagonal(&grid, 1.0 / 16.0).unwrap());
+        let full = subdivide(&grid, BUTTERFLY, 1).unwrap();
+        let mut odd = (0.0f64, 0.0f64);
+        for i in (1..full.rows()).step_by(2) {
+            for j in (1..full.cols()).step_by(2) {
+                let u = u0 + (u1 - u0) * i as f64 / (full.rows() - 1) as f64;
+                let v = v0 + (v1 - v0) * j as f64 / (full.cols() - 1) as f64;
+                let (p, d) = c.line(u, v);
+                let s = full.line(i, j);
+                odd = (odd.0.max((s.a - p).length()), odd.1.max(s.vector().angle_between(d)));
+            }
+        }
+        assert_near!(diagonal.0, odd.0, 1e-15);
+        assert_near!(diagonal.1, odd.1, 1e-15);
+        let all = c.errors(&full);
+        assert!(diagonal.0 <= all.0 && diagonal.1 <= all.1, "{c:?}: {diagonal:?} vs {all:?}");
+    }
+    // exact where the scheme reproduces the data: the hyperbolic paraboloid's points (u, v, uv)
+    // are bilinear, so the inserted points lie on it
+    let h = AnalyticCongruence::HyperbolicParaboloid;
+    let ((_, _), (_, _), r, cc) = h.domain();
+    let (distance, angle) = h.diagonal_errors(&butterfly_diagonal(&h.grid(r, cc).unwrap(), 1.0 / 16.0).unwrap());
+    assert!(distance < 1e-15 && angle > 1e-4, "{distance} {angle}");
+}
+
 /// Repeated butterfly steps on the sphere converge to the exact lines at third order or
 /// better in the distance of the new points (cubic precision).
 #[cfg_attr(not(target_family = "wasm"), test)]

@@ -15,6 +15,14 @@ export const ROUNDING = 1e-12;
  */
 export const DATA_COMPLEX_TOLERANCE = 1e-6;
 
+/**
+ * Curve subdivision: the largest turning angle of the refined polygon is measured after each step
+ * up to this many (more than are drawn: smoothness shows over many steps) …
+ */
+export const TURNING_STEPS = 12;
+/** … and the readout and the claims compare it with its value this many steps in (the texts say 8 and 12). */
+export const TURNING_FROM = 8;
+
 /** The nearest the camera comes to its target, and the least radius a fitted view frames. */
 export const CAMERA_NEAREST = 1e-6;
 /** The steepest the camera looks down or up (radians, just short of the pole, where yaw is lost). */

@@ -1,4 +1,4 @@
-// A log-log plot built with the DOM as self-contained SVG 1.1 (its own fonts, colours, grid,
+// A log-log plot (or, with linearX, x linear and y logarithmic) built with the DOM as self-contained SVG 1.1 (its own fonts, colours, grid,
 // dashed reference slopes and legend as presentation attributes: no page CSS needed), so the
 // same element is shown on the page and saved as a file. Series differ in colour, marker and
 // dash, not in colour alone.
@@ -21,13 +21,15 @@ const SERIES = [
 /**
  * @typedef {object} PlotSpec
  * @property {number[]} x
- * @property {Array<{name: string, y: number[]}>} series
+ * @property {Array<{name: string, y: number[]}>} series   a series named '' gets no key
  * @property {number[]} [slopes]     reference slopes drawn dashed
  * @property {string} xLabel
  * @property {string} yLabel
  * @property {string} title          for the accessible name and the file
  * @property {(order: number) => string} slopeLabel
  * @property {(exponent: number) => string} [tick]   default "10^e"
+ * @property {boolean} [linearX]   x on a linear scale with a tick at every integer (steps), y
+ *                                 still logarithmic; no reference slopes
  * @property {number} [width]
  * @property {number} [height]
  */
@@ -39,21 +41,22 @@ const SERIES = [
  */
 export function logLogPlot(
   doc,
-  { x, series, slopes = [], xLabel, yLabel, title, slopeLabel, width = 340, height = 280 },
+  { x, series, slopes = [], xLabel, yLabel, title, slopeLabel, linearX = false, width = 340, height = 280 },
 ) {
   const el = svgMaker(doc);
   const svg = svgFigure(el, { width, height, title });
   const pad = { l: 52, r: 12, t: 12, b: 42 };
   const finite = (/** @type {number} */ v) => Number.isFinite(v) && v > 0;
   const ys = series.flatMap((s) => s.y.filter(finite));
-  const xs = x.filter(finite);
+  const xs = x.filter(linearX ? Number.isFinite : finite);
   if (!ys.length || !xs.length) return svg;
-  const x0 = Math.floor(Math.log10(Math.min(...xs))),
-    x1 = Math.ceil(Math.log10(Math.max(...xs)));
+  const x0 = linearX ? Math.min(...xs) : Math.floor(Math.log10(Math.min(...xs))),
+    x1 = linearX ? Math.max(...xs) : Math.ceil(Math.log10(Math.max(...xs)));
+  /** Where x lies along the axis, 0 … 1 of [x0, x1] (decades unless linearX). */
+  const along = (/** @type {number} */ v) => ((linearX ? v : Math.log10(v)) - x0) / Math.max(x1 - x0, 1);
   const y0 = Math.floor(Math.log10(Math.min(...ys))),
     y1 = Math.ceil(Math.log10(Math.max(...ys)));
-  const px = (/** @type {number} */ v) =>
-    pad.l + ((Math.log10(v) - x0) / Math.max(x1 - x0, 1)) * (width - pad.l - pad.r);
+  const px = (/** @type {number} */ v) => pad.l + along(v) * (width - pad.l - pad.r);
   const py = (/** @type {number} */ v) =>
     height - pad.b - ((Math.log10(v) - y0) / Math.max(y1 - y0, 1)) * (height - pad.t - pad.b);
   // 10⁻³ in one text with superscript digits: no text smaller than the rest
@@ -61,9 +64,10 @@ export function logLogPlot(
   const grid = el('g', { stroke: '#dedbd2', 'stroke-width': 1 });
   const labels = el('g', { fill: '#333' });
   for (let e = x0; e <= x1; e++) {
-    grid.append(el('line', { x1: px(10 ** e), x2: px(10 ** e), y1: pad.t, y2: height - pad.b }));
-    const t = tick(e);
-    t.setAttribute('x', String(px(10 ** e)));
+    const at = linearX ? e : 10 ** e;
+    grid.append(el('line', { x1: px(at), x2: px(at), y1: pad.t, y2: height - pad.b }));
+    const t = linearX ? el('text', { 'font-size': SMALLEST_TEXT }, String(e)) : tick(e);
+    t.setAttribute('x', String(px(at)));
     t.setAttribute('y', String(height - pad.b + 17));
     t.setAttribute('text-anchor', 'middle');
     labels.append(t);
@@ -81,7 +85,7 @@ export function logLogPlot(
   // reference slopes through the first point of the first series
   const anchor = series[0].y.findIndex(finite);
   slopes.forEach((p, k) => {
-    if (anchor < 0) return;
+    if (anchor < 0 || linearX) return;
     const xa = x[anchor],
       ya = series[0].y[anchor] * 2;
     const xb = Math.min(...xs),
@@ -103,7 +107,7 @@ export function logLogPlot(
   });
   series.forEach((s, k) => {
     const look = SERIES[k % SERIES.length];
-    const pts = x.map((xv, i) => [xv, s.y[i]]).filter(([, yv]) => finite(yv));
+    const pts = x.map((xv, i) => [xv, s.y[i]]).filter(([xv, yv]) => finite(yv) && xs.includes(xv));
     const g = el('g', { stroke: look.color, fill: look.color });
     g.append(
       el('polyline', {
@@ -115,6 +119,7 @@ export function logLogPlot(
     );
     for (const [a, b] of pts) g.append(marker(el, look.marker, px(a), py(b), 3));
     svg.append(g);
+    if (!s.name) return; // a lone series named by the axis needs no key
     const ly = pad.t + 14 + 17 * k;
     const key = el('g', {});
     key.append(

@@ -37,7 +37,7 @@ pub enum AnalyticSurface {
     HelicalRuled {
         /// Radius r of the helix the rulings leave from.
         radius: f64,
-        /// Pitch p.
+        /// Pitch p, the height per radian (z = pu; 2πp per turn).
         pitch: f64,
         /// Slope β of the rulings against the xy-plane.
         slope: f64,

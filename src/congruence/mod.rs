@@ -31,7 +31,8 @@ pub enum CongruenceScheme {
     /// The paper's two-stage scheme read literally: midpoint edge lines, face lines the
     /// average of their 8 neighbours (`congruence/variational.rs`).
     Paper {
-        /// K ≥ 3 (the literal strip energy does not depend on it beyond K ≥ 3).
+        /// K ≥ 3; the result does not depend on it (the literal strip energy is the midpoint
+        /// rule for every K, and the face lines are averages).
         k: usize,
     },
     /// The coupled variational scheme.

@@ -76,4 +76,24 @@ pub trait SmoothCongruence {
         }
         worst
     }
+
+    /// Errors of the paper's diagonal insertion (Fig. 13, [`crate::congruence::butterfly_diagonal`]:
+    /// (rows − 1) × (cols − 1) lines from a rows × cols grid of [`SmoothCongruence::grid`])
+    /// against the exact lines at the centres of the grid's cells, (u_{i+½}, v_{j+½}): (largest
+    /// distance |P − p|, largest angle between P → Q and d, in radians). These are the lines the
+    /// butterfly step on all edges inserts at its odd-odd places, so its errors over those lines.
+    fn diagonal_errors(&self, diagonal: &LineCongruence) -> (f64, f64) {
+        let (rows, cols) = (2 * diagonal.rows() + 1, 2 * diagonal.cols() + 1);
+        let mut worst = (0.0f64, 0.0f64);
+        for i in 0..diagonal.rows() {
+            for j in 0..diagonal.cols() {
+                let (u, v) = self.parameters(2 * i + 1, 2 * j + 1, rows, cols);
+                let (p, d) = self.line(u, v);
+                let s = diagonal.line(i, j);
+                worst.0 = worst.0.max((s.a - p).length());
+                worst.1 = worst.1.max(s.vector().angle_between(d));
+            }
+        }
+        worst
+    }
 }

@@ -4,9 +4,13 @@
 //! First compute the isometric conoidal model (Example 2), then project it orthogonally
 //! onto a plane parallel to its rulings: the plane through a_0 spanned by e_0 and e_1,
 //! with 2D coordinates x along e_0 and y along n_{0,1} × e_0 (so e_1 makes the angle
-//! +φ_{0,1} with the x-axis). The map is isometric on every ruling; the two footpoints of a
-//! pair land on one point, which lies on both projected rulings, so the striction polygon
-//! becomes the polygon that the projected rulings envelop.
+//! +φ_{0,1} with the x-axis). The map is isometric on every ruling. The common perpendiculars
+//! of the conoidal model are all parallel to n_{0,1}, so the two footpoints of a pair land on
+//! one point, where the two projected rulings meet: these N − 1 points, the images of the
+//! perpendiculars' midpoints (Fig. 3's polygon), form the polygon the projected rulings
+//! envelop. The striction polygon m_i = (f_{i,i−1} + f_{i,i+1})/2 is *inscribed* in it: both
+//! footpoints of ruling i project to consecutive corners of the envelope polygon on the
+//! projected ruling i, so the image of m_i is the midpoint of that edge.
 //!
 //! The conoidal rulings lie at heights H_i = Σ_{k<i} h_{k,k+1} along n_{0,1} (ERRATA.md 7);
 //! the *non-developability measure* is max H_i − min H_i, the "height" of the conoidal
@@ -55,6 +59,11 @@ impl Frame {
     pub fn plane_point(&self, p: DVec2) -> DVec3 {
         self.origin + p.x * self.x + p.y * self.y
     }
+
+    /// The plane coordinates of the orthogonal projection of `p` onto the reference plane.
+    pub fn plane_coordinates(&self, p: DVec3) -> DVec2 {
+        DVec2::new((p - self.origin).dot(self.x), (p - self.origin).dot(self.y))
+    }
 }
 
 /// The approximate development and the conoidal model it was projected from.
@@ -89,18 +98,20 @@ impl Development {
         hi - lo
     }
 
-    /// The images of the striction polygon: the footpoints f_{i,i+1} of the conoidal model
-    /// projected onto the plane (both feet of a pair land on one point), N − 1 points where
-    /// the projected rulings meet; the polygon they envelop.
+    /// The polygon the developed rulings envelop: the N − 1 points where consecutive developed
+    /// rulings meet, each the image of both footpoints f_{i,i+1}, f_{i+1,i} of a pair of the
+    /// conoidal model (so of Fig. 3's perpendicular midpoint too).
+    pub fn envelope_polygon(&self) -> Vec<DVec2> {
+        let frame = Frame::of(&self.conoidal);
+        self.conoidal.invariants().footpoints.iter().step_by(2).map(|&f| frame.plane_coordinates(f)).collect()
+    }
+
+    /// The image of the striction polygon m_i (N − 2 points, one per interior ruling): inscribed
+    /// in [`Development::envelope_polygon`], each point the midpoint of the edge that lies on
+    /// the developed ruling i. NaN beside a parallel pair, as m_i.
     pub fn striction_image(&self) -> Vec<DVec2> {
         let frame = Frame::of(&self.conoidal);
-        self.conoidal
-            .invariants()
-            .footpoints
-            .iter()
-            .step_by(2)
-            .map(|&f| DVec2::new((f - frame.origin).dot(frame.x), (f - frame.origin).dot(frame.y)))
-            .collect()
+        self.conoidal.invariants().striction.iter().map(|&m| frame.plane_coordinates(m)).collect()
     }
 
     /// The plane coordinates as a flat array: x, y of a'_i, then of b'_i, per ruling.
@@ -167,12 +178,22 @@ mod tests {
         let m = Frame::of(&s).world_to_frame();
         assert_near!(m.transform_point3(s.segment(0).a), DVec3::ZERO, EXACT);
         assert_near!(m.transform_point3(s.segment(0).b), DVec3::new(1.0, 0.0, 0.0), EXACT);
-        // the striction image: the projected rulings i and i + 1 meet at image point i
-        for (i, q) in dev.striction_image().iter().enumerate() {
+        // the envelope polygon: the projected rulings i and i + 1 meet at its corner i
+        let envelope = dev.envelope_polygon();
+        assert_eq!(envelope.len(), 3);
+        for (i, q) in envelope.iter().enumerate() {
             for k in [i, i + 1] {
                 let (a, b) = (dev.points[2 * k], dev.points[2 * k + 1]);
                 assert_near!((b - a).perp_dot(*q - a) / (b - a).length(), 0.0, 1e-12);
             }
+        }
+        // the image of the striction polygon m_i is inscribed in it: the midpoint of its edge
+        // on the projected ruling i, not a corner
+        let image = dev.striction_image();
+        assert_eq!(image.len(), 2);
+        for (j, m) in image.iter().enumerate() {
+            assert_near!(*m, (envelope[j] + envelope[j + 1]) / 2.0, 1e-12);
+            assert!((*m - envelope[j]).length() > 1e-3 && (*m - envelope[j + 1]).length() > 1e-3);
         }
         let h = s.invariants().distance;
         let mut sum = 0.0;
@@ -186,6 +207,28 @@ mod tests {
         assert_near!(dev.points[1], DVec2::new(1.0, 0.0), EXACT);
         let e1 = (dev.points[3] - dev.points[2]).normalize();
         assert_near!(e1.y.atan2(e1.x), s.invariants().angle[0], EXACT);
+    }
+
+    /// Fig. 6's strip of Example 1's hyperboloid (24 rulings, u from 0 to 2.4): the image of
+    /// the striction polygon lies on the developed rulings, at the midpoints of the envelope
+    /// polygon's edges, and keeps the distances along each ruling.
+    #[test]
+    fn the_striction_image_is_inscribed_in_the_envelope_polygon() {
+        let hyperboloid = crate::catalogue::AnalyticSurface::by_name("hyperboloid").unwrap();
+        let ranges = crate::base::Ranges { u: (0.0, 2.4), v: (-1.0, 1.0), closed: false };
+        let s = hyperboloid.sample(24, ranges).unwrap();
+        let dev = Development::of(&s);
+        let (envelope, image) = (dev.envelope_polygon(), dev.striction_image());
+        assert_eq!((envelope.len(), image.len()), (23, 22));
+        let inv = s.invariants();
+        for (j, m) in image.iter().enumerate() {
+            let i = j + 1; // the interior ruling
+            assert_near!(*m, (envelope[i - 1] + envelope[i]) / 2.0, 1e-12);
+            let (a, b) = (dev.points[2 * i], dev.points[2 * i + 1]);
+            assert_near!((b - a).perp_dot(*m - a) / (b - a).length(), 0.0, 1e-12);
+            // isometric on the ruling: m_i is as far from a_i in the plane as on the surface
+            assert_near!((*m - a).length(), (inv.striction[j] - s.segment(i).a).length(), 1e-12);
+        }
     }
 
     /// ρ at the middle ruling of the helical surface sampled with `n` rulings over [0, 9].

@@ -3,7 +3,14 @@
 //! p_{i+½} = (½ + w)(p_i + p_{i+1}) − w(p_{i−1} + p_{i+2})        (8)
 //!
 //! The old points are kept, so N points → 2N − 1 (open) or 2N (closed), old ones at even
-//! indices. The limit is C¹ for 0 < w < ⅛; w = 1/16 reproduces cubic polynomials.
+//! indices. w = 1/16 reproduces cubic polynomials.
+//!
+//! **Smoothness.** The paper quotes 0 < w < ⅛, the sufficient condition for a C¹ limit of
+//! Dyn, Levin and Gregory (1987); it is not where smoothness ends. Dyn, Gregory and Levin
+//! (1991) prove C¹ for 0 < w < (√5 − 1)/8 ≈ 0.155, and it holds further still (two steps of
+//! the scheme of divided differences contract below (√5 − 1)/8, more steps further: eight at
+//! w = 0.18). For w = 0 the limit is the polygon itself. [`crate::subdivision::turning`]
+//! measures the largest turning angle of the refined polygons step by step.
 //!
 //! **End rule for open polygons.** The first and last edges lack p_{−1} and p_{N}; they are
 //! replaced by ghost points extrapolating the cubic through the four end points
@@ -103,5 +110,52 @@ mod tests {
         // and the end formula is the cubic interpolant at the first midpoint
         let expected = (5.0 * p[0] + 15.0 * p[1] - 5.0 * p[2] + p[3]) / 16.0;
         assert!((q[1] - expected).length() < 1e-14);
+    }
+    /// The smoothness bounds quoted in the module documentation, by the test of Dyn, Gregory
+    /// and Levin: the limit is C¹ when the scheme of divided differences, with symbol
+    /// 2a(z)/(1 + z), converges, that is when its own difference scheme, c(z) = 2a(z)/(1 + z)²,
+    /// contracts in some number L of steps: max over the residues r mod 2^L of the sums of
+    /// |coefficients| of c(z)c(z²)…c(z^{2^{L−1}}) with index ≡ r is below 1.
+    #[test]
+    fn divided_differences_contract_beyond_one_eighth() {
+        fn multiply(a: &[f64], b: &[f64]) -> Vec<f64> {
+            let mut r = vec![0.0; a.len() + b.len() - 1];
+            for (i, x) in a.iter().enumerate() {
+                for (j, y) in b.iter().enumerate() {
+                    r[i + j] += x * y;
+                }
+            }
+            r
+        }
+        /// a(z)/(1 + z), exactly when a(−1) = 0.
+        fn divide(a: &[f64]) -> Vec<f64> {
+            let mut q = vec![0.0; a.len() - 1];
+            let mut rest = a.to_vec();
+            for i in (1..a.len()).rev() {
+                q[i - 1] = rest[i];
+                rest[i - 1] -= rest[i];
+            }
+            assert!(rest[0].abs() < 1e-15);
+            q
+        }
+        let norm = |w: f64, steps: u32| -> f64 {
+            // the mask of (8), z⁻³ … z³
+            let a = [-w, 0.0, 0.5 + w, 1.0, 0.5 + w, 0.0, -w];
+            let c: Vec<f64> = divide(&divide(&a)).iter().map(|x| 2.0 * x).collect();
+            let mut product = vec![1.0];
+            for l in 0..steps {
+                let mut spread = vec![0.0; (c.len() - 1) * (1 << l) + 1];
+                for (i, x) in c.iter().enumerate() {
+                    spread[i << l] = *x;
+                }
+                product = multiply(&product, &spread);
+            }
+            let m = 1usize << steps;
+            (0..m).map(|r| product.iter().skip(r).step_by(m).map(|x| x.abs()).sum::<f64>()).fold(0.0, f64::max)
+        };
+        let bound = (5f64.sqrt() - 1.0) / 8.0;
+        assert!(norm(1.0 / 8.0, 2) < 1.0);
+        assert!(norm(bound - 1e-4, 2) < 1.0 && norm(bound + 1e-4, 2) > 1.0);
+        assert!(norm(0.18, 7) > 1.0 && norm(0.18, 8) < 0.98);
     }
 }

@@ -4,6 +4,8 @@
 //! (Lane–Riesenfeld), [`bezier`] (de Casteljau) and the interpolatory [`four_point`] scheme.
 //! A ruled strip is refined by applying a curve scheme to both boundary polygons a_i and
 //! b_i ([`strip`]), or by the variational interpolatory scheme of [`variational`].
+//! [`turning`] measures how smooth the refined polygons become (their largest turning angle
+//! after each step).
 //! Output sizes are computed and checked against [`MAX_RULINGS`] before anything is
 //! allocated.
 
@@ -15,6 +17,7 @@ pub mod four_point;
 pub mod line_space;
 pub mod strip;
 pub mod triangulation;
+pub mod turning;
 pub mod variational;
 
 use crate::error::{Error, Result};
@@ -72,7 +75,7 @@ pub enum Scheme {
     Bezier,
     /// The four-point scheme (8) with tension w.
     FourPoint {
-        /// Tension w (C¹ for 0 < w < ⅛).
+        /// Tension w (the limit is C¹ at least for 0 < w < (√5 − 1)/8, Dyn, Gregory and Levin 1991).
         w: f64,
     },
     /// Variational interpolatory subdivision of a ruled strip (strips only).
@@ -92,10 +95,9 @@ impl Scheme {
                 "degree",
                 format!("must be an integer from 1 to {}, got {degree}", MAX_BSPLINE_DEGREE),
             )),
-            Scheme::FourPoint { w } if !(w.is_finite() && (-0.25..=0.25).contains(&w)) => Err(Error::parameter(
-                "w",
-                format!("must be a number in [−1/4, 1/4] (C¹ limits need 0 < w < 1/8), got {w}"),
-            )),
+            Scheme::FourPoint { w } if !(w.is_finite() && (-0.25..=0.25).contains(&w)) => {
+                Err(Error::parameter("w", format!("must be a number in [−1/4, 1/4], got {w}")))
+            }
             Scheme::Variational { n, .. } if !(3..=1000).contains(&n) => Err(Error::parameter(
                 "n",
                 format!("must be an integer from 3 to 1000 (n = 2 leaves the energy singular), got {n}"),

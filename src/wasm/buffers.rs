@@ -201,8 +201,10 @@ impl RuledSurface {
         Float64Array::from(&out[..])
     }
 
-    /// The image of the striction polygon in the development: the N − 1 points where
-    /// consecutive developed rulings meet, x, y in the reference plane.
+    /// The image of the striction polygon m_i in the development: N − 2 points (one per
+    /// interior ruling), x, y in the reference plane. It is inscribed in the polygon the
+    /// developed rulings envelop (`developmentEnvelope`): each point the midpoint of the edge on
+    /// its ruling.
     #[wasm_bindgen(js_name = developmentStriction)]
     pub fn development_striction(&self) -> Float64Array {
         let image = Development::of(self.core()).striction_image();
@@ -215,6 +217,27 @@ impl RuledSurface {
         let frame = Frame::of(self.core());
         let out: Vec<f64> = Development::of(self.core())
             .striction_image()
+            .into_iter()
+            .flat_map(|p| frame.plane_point(p).to_array())
+            .collect();
+        Float64Array::from(&out[..])
+    }
+
+    /// The polygon the developed rulings envelop: the N − 1 points where consecutive developed
+    /// rulings meet, each the image of both footpoints of a pair (and of Fig. 3's
+    /// perpendicular midpoint), x, y in the reference plane.
+    #[wasm_bindgen(js_name = developmentEnvelope)]
+    pub fn development_envelope(&self) -> Float64Array {
+        let corners = Development::of(self.core()).envelope_polygon();
+        Float64Array::from(bytemuck::cast_slice::<_, f64>(&corners))
+    }
+
+    /// [`RuledSurface::development_envelope`] in space (3 numbers per point, world coordinates).
+    #[wasm_bindgen(js_name = developmentEnvelopeInSpace)]
+    pub fn development_envelope_in_space(&self) -> Float64Array {
+        let frame = Frame::of(self.core());
+        let out: Vec<f64> = Development::of(self.core())
+            .envelope_polygon()
             .into_iter()
             .flat_map(|p| frame.plane_point(p).to_array())
             .collect();

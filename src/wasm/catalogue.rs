@@ -319,4 +319,14 @@ impl AnalyticCongruence {
         let (distance, angle) = self.inner.errors(refined.core());
         to_js("AnalyticCongruence.errors", &CongruenceErrors { distance, angle })
     }
+
+    /// Errors of the paper's diagonal insertion (`subdivide({ scheme: 'butterfly', diagonalOnly:
+    /// true })` of one of its grids: the (rows − 1) × (cols − 1) lines on the diagonals, Fig. 13)
+    /// against the exact lines at the grid cells' centres: the largest distance of the d₁
+    /// points and the largest angle of the directions (radians).
+    #[wasm_bindgen(js_name = diagonalErrors, unchecked_return_type = "CongruenceErrors")]
+    pub fn diagonal_errors(&self, diagonal: &LineCongruence) -> Result<JsValue, JsValue> {
+        let (distance, angle) = self.inner.diagonal_errors(diagonal.core());
+        to_js("AnalyticCongruence.diagonalErrors", &CongruenceErrors { distance, angle })
+    }
 }

@@ -24,7 +24,8 @@ struct CongruenceSubdivideOptions {
     /// of them (Fig. 13).
     #[serde(default)]
     diagonal_only: Option<bool>,
-    /// Variational: parts per line K, 3 … 1000 (default 6).
+    /// Variational: parts per line K, 3 … 1000 (default 6); only "two-stage" depends on it
+    /// ("paper" and "coupled" give the same lines for every K).
     #[serde(default, rename = "K")]
     k: Option<f64>,
     /// Variational (default "coupled"): "paper" is the paper's scheme read literally (edge

@@ -1,5 +1,5 @@
-//! Subdivision for JavaScript (Section 4): `surface.subdivide(options)`, `surface.recut()`
-//! and `subdividePolygon(points, options)`.
+//! Subdivision for JavaScript (Section 4): `surface.subdivide(options)`, `surface.recut()`,
+//! `subdividePolygon(points, options)` and `turningAngles(points, options)`.
 
 use super::args::{self, fail, fail_option, finite_option, integer, integer_option, interval, numbers, only_for};
 use super::catalogue::AnalyticSurface;
@@ -12,7 +12,7 @@ use serde::Deserialize;
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
-/// Options of `RuledSurface.subdivide` and `subdividePolygon` (Section 4).
+/// Options of `RuledSurface.subdivide`, `subdividePolygon` and `turningAngles` (Section 4).
 #[derive(Deserialize, Default, Tsify)]
 struct SubdivideOptions {
     /// "chaikin" (corner cutting), "bspline" (uniform B-spline of `degree`), "bezier" (de
@@ -22,7 +22,8 @@ struct SubdivideOptions {
     /// Number of steps, 0 … 24 (default 1); the output may hold at most 4 194 304 rulings.
     #[serde(default)]
     steps: Option<f64>,
-    /// Four-point tension w ∈ [−1/4, 1/4] (default 1/16; C¹ for 0 < w < 1/8).
+    /// Four-point tension w ∈ [−1/4, 1/4] (default 1/16; the limit is C¹ at least for
+    /// 0 < w < (√5 − 1)/8 ≈ 0.155, more than the paper's 0 < w < 1/8).
     #[serde(default)]
     w: Option<f64>,
     /// Variational: each segment divided into n parts, 3 … 1000 (default 12).
@@ -213,6 +214,28 @@ pub fn subdivide_polygon(
     }
     let out = subdivision::subdivide_polygon(&points, scheme, closed, steps).map_err(|e| fail(F, e))?;
     Ok(Float64Array::from(bytemuck::cast_slice::<_, f64>(&out)))
+}
+
+/// The largest turning angle (radians, 0 … π: the largest angle between an edge and the
+/// next) of a polygon (3 numbers per point) and of each of its refinements by a curve scheme
+/// (see `SubdivideOptions`; "variational" is for ruled strips only): `steps + 1` numbers, the
+/// first for the polygon itself. Where the limit is a regular C¹ curve the polygons turn less
+/// and less from step to step; where the angle stops falling the limit has a corner or a cusp,
+/// or is approached slowly.
+#[wasm_bindgen(js_name = turningAngles)]
+pub fn turning_angles(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
+) -> Result<Float64Array, JsValue> {
+    const F: &str = "turningAngles";
+    let flat = numbers(F, "points", &points)?;
+    let points = points_from_flat(&flat).map_err(|e| fail(F, e))?;
+    let (scheme, closed, steps, space) = read(F, options, None)?;
+    if matches!(space, Space::Lines(_)) {
+        return Err(fail(F, "options.space \"lines\" refines ruled surfaces, not polygons"));
+    }
+    let out = subdivision::turning::turning_angles(&points, scheme, closed, steps).map_err(|e| fail(F, e))?;
+    Ok(Float64Array::from(&out[..]))
 }
 
 #[wasm_bindgen]

@@ -4,11 +4,13 @@
 // a claim that never appears in the sweep fails too, so none can silently drop out.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import './load.mjs';
+import ruledlab from './load.mjs';
 import { SCENES } from '../../www/scenes/index.js';
 import { PRESETS } from '../../www/paper.js';
 import { defaults } from '../../www/scene.js';
 import { translator } from '../../www/i18n/index.js';
+import { STYLES } from '../../www/theme.js';
+import { ROUNDING } from '../../www/limits.js';
 
 const i18n = translator('en');
 const context = { t: i18n.t, format: i18n.format };
@@ -52,7 +54,18 @@ test('striction (Props. 1–2, Example 1): orders 1, 2, 2 on the hyperboloid and
   assert.deepEqual([...seen], ['striction.claim.orders']);
 });
 
-test('strip (Example 3): the literal energy is the midpoint rule, coupled beats it for n ≥ 6, four-point is exact', () => {
+test('curves (Figs. 7–8): on the zigzag the four-point angle falls from 8 to 12 steps up to w = 0.17 closed, 0.126 open; from 0.171, 0.127 to 0.2 a turn above 1 rad remains', () => {
+  // every w of the slider from its step 0.001 to its end 0.2 (w ≤ 0 states nothing)
+  const seen = checkClaims('curves', {
+    scheme: ['four-point'],
+    closed: [true, false],
+    w: range(1, 200).map((k) => k / 1000),
+    steps: [4],
+  });
+  assert.deepEqual([...seen].sort(), ['curves.claim.falls', 'curves.claim.sharp']);
+});
+
+test('strip (Example 3): the literal energy is the midpoint rule, coupled beats it for 5 ≤ n ≤ 24 and not for n = 3, 4, four-point is exact', () => {
   const seen = checkClaims('strip', { scheme: ['literal', 'coupled', 'averaged', 'four-point'], n: range(3, 24) });
   assert.deepEqual([...seen].sort(), ['strip.claim.coupled', 'strip.claim.fourPoint', 'strip.claim.literal']);
 });
@@ -65,6 +78,40 @@ test('congruences (Examples 4–5): at one step the butterfly scheme is the most
   assert.ok(congruence.length >= 3);
   const seen = checkClaims('congruence', { congruence, scheme: ['paper', 'butterfly'], steps: [1, 2] });
   assert.deepEqual([...seen], ['congruence.claim.butterfly']);
+});
+
+test('Example 5: read literally (and coupled), K has no effect — every K from 3 to 1000 gives the same lines; two-stage depends on K', () => {
+  const { AnalyticCongruence } = ruledlab;
+  const congruence =
+    sceneOf('congruence')
+      .params[0].options?.()
+      .map(([v]) => v) ?? [];
+  const Ks = [...range(3, 24), 50, 100, 500, 1000];
+  for (const name of congruence) {
+    const analytic = AnalyticCongruence.byName(name);
+    const grid = analytic.grid(undefined, undefined, 0.35);
+    const lines = (/** @type {'paper' | 'coupled' | 'two-stage'} */ variant, /** @type {number} */ K) => {
+      const refined = grid.subdivide({ scheme: 'variational', variant, K });
+      const segments = refined.segments();
+      refined.free();
+      return segments;
+    };
+    for (const variant of /** @type {const} */ (['paper', 'coupled'])) {
+      const at6 = lines(variant, 6);
+      for (const K of Ks) {
+        const other = lines(variant, K);
+        const worst = other.reduce((m, x, i) => Math.max(m, Math.abs(x - at6[i])), 0);
+        assert.ok(worst <= ROUNDING, `${name}, ${variant}: K = ${K} moves a line by ${worst}`);
+      }
+    }
+    const [a, b] = [lines('two-stage', 3), lines('two-stage', 12)];
+    assert.ok(
+      a.some((x, i) => Math.abs(x - b[i]) > 1e-4),
+      `${name}: two-stage does not depend on K`,
+    );
+    grid.free();
+    analytic.free();
+  }
 });
 
 test('milling (Example 6): refining helps; with 7 poses or more the variational schemes come closest to the profile', () => {
@@ -93,4 +140,21 @@ test('every paper preset computes, and its claims hold', () => {
     assert.ok(built.layers.length > 0, preset.id);
     for (const claim of built.claims ?? []) assert.ok(claim.holds, `${preset.id}: ${claim.text}`);
   }
+});
+
+test('every legend entry that says “dashed” or “dash-dot” is drawn dashed, in colour as in black and white', () => {
+  let checked = 0;
+  for (const scene of SCENES) {
+    for (const entry of scene.legend) {
+      const label = i18n.t(entry.label);
+      if (!/dash/.test(label)) continue;
+      const style = STYLES[entry.style];
+      assert.ok(
+        style.kind === 'line' && style.dash && style.bw.dash,
+        `${scene.id}: "${label}" (${entry.style}) is solid`,
+      );
+      checked++;
+    }
+  }
+  assert.ok(checked >= 8, `only ${checked} dashed legend entries`);
 });

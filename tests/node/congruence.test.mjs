@@ -102,3 +102,25 @@ test('bad input throws clear Errors and the module keeps working', () => {
   }
   assert.equal(c.subdivide({ scheme: 'butterfly' }).rows, 5);
 });
+
+test('diagonalErrors: the accuracy of Fig. 13’s diagonal lines, measured at the cells’ centres', () => {
+  for (const name of ['sphere', 'hyperbolic-paraboloid', 'example5']) {
+    const analytic = AnalyticCongruence.byName(name);
+    const grid = analytic.grid();
+    const diagonal = grid.subdivide({ scheme: 'butterfly', diagonalOnly: true });
+    const full = grid.subdivide({ scheme: 'butterfly' });
+    const [d, b] = [analytic.diagonalErrors(diagonal), analytic.errors(full)];
+    // the diagonal lines are some of the full step's new lines: never farther off
+    assert.ok(d.distance <= b.distance && d.angle <= b.angle, `${name}: ${JSON.stringify([d, b])}`);
+    assert.ok(d.angle > 0);
+    // measured as if they were a refined grid, they would be compared with the wrong lines
+    assert.notDeepEqual(analytic.errors(diagonal), d);
+    for (const o of [diagonal, full, grid, analytic]) o.free();
+  }
+  // the hyperbolic paraboloid's points (u, v, uv) are bilinear: the inserted points lie on it
+  const h = AnalyticCongruence.byName('hyperbolic-paraboloid');
+  const g = h.grid();
+  const diagonal = g.subdivide({ scheme: 'butterfly', diagonalOnly: true });
+  assert.ok(h.diagonalErrors(diagonal).distance < 1e-15);
+  for (const o of [diagonal, g, h]) o.free();
+});

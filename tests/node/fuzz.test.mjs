@@ -12,6 +12,7 @@ const {
   AnalyticCongruence,
   ToolPath,
   subdividePolygon,
+  turningAngles,
   importSegments,
   meshNormalsF32,
   linearComplex,
@@ -294,6 +295,8 @@ const CALLS = [
     f.surface.developmentInSpace(),
     f.surface.developmentStriction(),
     f.surface.developmentStrictionInSpace(),
+    f.surface.developmentEnvelope(),
+    f.surface.developmentEnvelopeInSpace(),
     f.surface.directions(),
     f.surface.meanLength(),
   ],
@@ -345,6 +348,7 @@ const CALLS = [
   (f) => f.hyp.convergence(pick([value(), options()])),
   (f) => f.hyp.distances(value(), pick(NUMBERS), pick(NUMBERS)),
   (_f) => subdividePolygon(value(), pick([value(), options(), { scheme: pick(STRINGS), ...options() }])),
+  (_f) => turningAngles(value(), pick([value(), options(), { scheme: pick(STRINGS), ...options() }])),
   (_f) => LineCongruence.fromGrid(pick(SMALL), pick(SMALL), value()),
   (f) => f.congruence.subdivide(pick([value(), options(), { scheme: pick(STRINGS), ...options() }])),
   (f) => f.congruence.row(pick([...SMALL, value()])),
@@ -352,6 +356,7 @@ const CALLS = [
   (_f) => AnalyticCongruence.byName(value()),
   (f) => f.analyticCongruence.grid(pick([undefined, ...SMALL]), pick([undefined, ...SMALL])),
   (f) => f.analyticCongruence.errors(pick([f.congruence, value()])),
+  (f) => f.analyticCongruence.diagonalErrors(pick([f.congruence, value()])),
   (_f) =>
     ToolPath.fromSegments(
       value(),

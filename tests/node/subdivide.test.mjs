@@ -1,9 +1,9 @@
-// Section 4 through the package: subdivide, recut, subdividePolygon, and their errors.
+// Section 4 through the package: subdivide, recut, subdividePolygon, turningAngles, and their errors.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab, { sampled } from './load.mjs';
 
-const { AnalyticSurface, subdividePolygon } = ruledlab;
+const { AnalyticSurface, subdividePolygon, turningAngles } = ruledlab;
 
 const quartic = (n = 12) => sampled('quartic', n);
 
@@ -166,4 +166,47 @@ test('congruences: butterfly in line space', () => {
     () => c.subdivide({ scheme: 'variational', space: 'lines' }),
     /options.space applies to the "butterfly" scheme only/,
   );
+});
+
+/** The curves scene's control polygon (www/scenes/curves.js): eight points in a zigzag. */
+const ZIGZAG = new Float64Array([
+  0, 0, 0, 2, 3, 0, 4, 0.5, 0, 6.5, 3.5, 0, 8, -0.5, 0, 5.5, -3, 0, 3, -1.5, 0, 1, -3.2, 0,
+]);
+
+test('turningAngles: the four-point polygons still straighten out beyond w = 1/8 (issue 33)', () => {
+  const late = (/** @type {number} */ w, /** @type {boolean} */ closed) => {
+    const a = turningAngles(ZIGZAG, { scheme: 'four-point', w, steps: 12, closed });
+    assert.equal(a.length, 13);
+    return [a[8], a[12]].map((x) => Math.round(x * 1000) / 1000);
+  };
+  // closed: still falling at 0.14 and 0.15, beyond the paper's 1/8, and at 0.17; sharp at 0.171
+  assert.deepEqual(late(0.14, true), [0.393, 0.188]);
+  assert.deepEqual(late(0.15, true), [0.557, 0.317]);
+  assert.deepEqual(late(0.17, true), [1.041, 0.996]);
+  assert.deepEqual(late(0.171, true), [1.142, 1.156]);
+  // near π (the polygon turns back) at the slider's end
+  assert.ok(late(0.2, true)[1] > 3.1);
+  // open, the end rule gives out between 0.126 and 0.127
+  assert.deepEqual(late(0.126, false), [1.742, 1.221]);
+  assert.deepEqual(late(0.127, false), [2.088, 2.278]);
+  // the exact answer on the square (±1, 0), (0, ±1): π/2, then acos(8/17) after a step with w = 1/16
+  const square = [1, 0, 0, 0, 1, 0, -1, 0, 0, 0, -1, 0];
+  const [a0, a1] = turningAngles(square, { scheme: 'four-point', closed: true });
+  assert.ok(Math.abs(a0 - Math.PI / 2) < 1e-12 && Math.abs(a1 - Math.acos(8 / 17)) < 1e-12);
+  // Chaikin's limit is C¹: its angle falls at every step
+  const chaikin = turningAngles(ZIGZAG, { scheme: 'chaikin', steps: 8 });
+  for (let k = 1; k < chaikin.length; k++) assert.ok(chaikin[k] < chaikin[k - 1]);
+});
+
+test('turningAngles: its errors carry codes', () => {
+  const code = (/** @type {() => unknown} */ f, /** @type {string} */ expected, /** @type {RegExp} */ message) =>
+    assert.throws(f, (/** @type {any} */ e) => e.code === expected && message.test(e.message));
+  code(() => turningAngles(ZIGZAG, { scheme: 'variational' }), 'invalid-argument', /^turningAngles: .*not polygons/);
+  code(() => turningAngles(ZIGZAG, { scheme: 'four-point', w: 0.3 }), 'invalid-argument', /\[−1\/4, 1\/4\]/);
+  code(() => turningAngles(ZIGZAG, { scheme: 'four-point', steps: 25 }), 'invalid-argument', /steps/);
+  code(() => turningAngles(ZIGZAG, { scheme: 'four-point', steps: 20 }), 'too-large', /rulings after subdivision/);
+  code(() => turningAngles([0, 0, 0], { scheme: 'chaikin' }), 'too-small', /points/);
+  code(() => turningAngles([0, 0, NaN, 1, 1, 1], { scheme: 'chaikin' }), 'not-finite', /NaN/);
+  code(() => turningAngles(ZIGZAG, { scheme: 'chaikin', space: 'lines' }), 'invalid-argument', /not polygons/);
+  code(() => turningAngles(ZIGZAG, undefined), 'invalid-argument', /scheme/);
 });

@@ -3,13 +3,15 @@
 import { SVG, svgMaker } from '../svg-dom.js';
 
 /**
- * A development (x, y of a'_i then b'_i per ruling) and the image of the striction polygon
- * (x, y per point) as a standalone SVG file.
+ * A development (x, y of a'_i then b'_i per ruling), the image of the striction polygon and the
+ * polygon the developed rulings envelop (x, y per point) as a standalone SVG file: the rulings
+ * thin, the envelope polygon dashed, the striction polygon's image (inscribed in it) thick.
  * @param {ArrayLike<number>} points
  * @param {ArrayLike<number>} striction
+ * @param {ArrayLike<number>} envelope
  * @param {string} title
  */
-export function developmentSvg(points, striction, title) {
+export function developmentSvg(points, striction, envelope, title) {
   const doc = document.implementation.createDocument(SVG, 'svg', null);
   const svg = doc.documentElement;
   const xs = [],
@@ -31,10 +33,19 @@ export function developmentSvg(points, striction, title) {
   const rulings = el('g', { stroke: '#1f2430', 'stroke-width': '1', fill: 'none' });
   for (let i = 0; i + 3 < points.length; i += 4)
     rulings.append(el('line', { x1: X(points[i]), y1: Y(points[i + 1]), x2: X(points[i + 2]), y2: Y(points[i + 3]) }));
-  const poly = Array.from(
-    { length: Math.floor(striction.length / 2) },
-    (_, k) => `${X(striction[2 * k])},${Y(striction[2 * k + 1])}`,
-  ).join(' ');
-  svg.append(titleEl, rulings, el('polyline', { fill: 'none', stroke: '#d55e00', 'stroke-width': '2', points: poly }));
+  const polyline = (/** @type {ArrayLike<number>} */ p) =>
+    Array.from({ length: Math.floor(p.length / 2) }, (_, k) => `${X(p[2 * k])},${Y(p[2 * k + 1])}`).join(' ');
+  svg.append(
+    titleEl,
+    rulings,
+    el('polyline', {
+      fill: 'none',
+      stroke: '#771100',
+      'stroke-width': '1.2',
+      'stroke-dasharray': '6 3',
+      points: polyline(envelope),
+    }),
+    el('polyline', { fill: 'none', stroke: '#d55e00', 'stroke-width': '2', points: polyline(striction) }),
+  );
   return `${new XMLSerializer().serializeToString(doc)}\n`;
 }

@@ -18,7 +18,7 @@ const SCHEMES = {
   diagonal: () => ({ scheme: 'butterfly', diagonalOnly: true }),
 };
 
-/** The schemes compared at one step, in the readout. */
+/** The schemes compared at one step, in the readout ("for comparison", beside the scheme shown). */
 const COMPARED = /** @type {Array<keyof typeof SCHEMES>} */ (['paper', 'two-stage', 'coupled', 'butterfly']);
 
 /** Segment length as a share of the direction d: short enough to read the grid. */
@@ -78,9 +78,10 @@ export function congruenceFigure(own, grid, analytic, p, { t, format }, name, co
     { label: 'congruence.readout.grid', value: `${grid.rows} × ${grid.cols}` },
     { label: 'congruence.readout.lines', value: lines },
   ];
+  // the scheme shown, measured at one step (the diagonal lines at the cells' centres)
   let errors = null;
-  if (analytic && !diagonal && steps === 1) {
-    errors = analytic.errors(refined);
+  if (analytic && (diagonal || steps === 1)) {
+    errors = diagonal ? analytic.diagonalErrors(refined) : analytic.errors(refined);
     readouts.push(
       { label: 'congruence.readout.distance', value: errors.distance, exactZero: true },
       { label: 'congruence.readout.angle', value: errors.angle, exactZero: true },

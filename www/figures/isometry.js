@@ -1,6 +1,7 @@
 // The isometry figure (Section 3, Figs. 4–6): the hinge chain bent towards its conoidal model,
-// or the three panels of Fig. 6 (surface, conoidal model, development), in the frame of the
-// conoidal model, with ρ and Fig. 5's claims. Drawn by the isometry scene and "Your surface".
+// or the three panels of Fig. 6 (surface, conoidal model, development: there the image of the
+// striction polygon, inscribed in the polygon the developed rulings envelop), in the frame of
+// the conoidal model, with ρ and Fig. 5's claims. Drawn by the isometry scene and "Your surface".
 import { stripIndices } from '../../pkg/ruledlab.js';
 import { f32 } from '../scene.js';
 import { multiply } from '../math.js';
@@ -94,6 +95,9 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null, from 
     panel(input, f32(surface.invariants().striction), left);
     panel(bentSeg, f32(bent.invariants().striction), frame);
     panel(f32(surface.developmentInSpace()), f32(surface.developmentStrictionInSpace()), right);
+    // the polygon the developed rulings envelop; the striction polygon's image is inscribed in it
+    const envelope = f32(surface.developmentEnvelopeInSpace());
+    layers.push({ kind: 'polyline', style: 'perpendicularMidpoints', positions: envelope, transform: right });
     box = boundsThrough(frame, input);
     box.min[0] -= width;
     box.max[0] += width;
@@ -107,6 +111,7 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null, from 
   const defect = surface.maxEdgeChange(bent);
   const development = surface.development();
   const image = surface.developmentStriction();
+  const envelope = surface.developmentEnvelope();
   const radius = middleRadius(surface);
   return {
     bounds: box,
@@ -130,7 +135,7 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null, from 
       {
         label: 'isometry.download.development',
         filename: `development-${name}.svg`,
-        content: () => developmentSvg(development, image, t('isometry.download.title')),
+        content: () => developmentSvg(development, image, envelope, t('isometry.download.title')),
         type: 'image/svg+xml',
       },
     ],

@@ -11,7 +11,8 @@ export default {
 <p>Eine diskrete Regelfläche ist eine Folge von Geraden ${m(Ri)}. Zwei aufeinanderfolgende
 Erzeugende schließen den Winkel ${m(sub('φ', 'i , i + 1'))} ein und haben genau ein gemeinsames Lot
 ${m(sub('N', 'i , i + 1'))}. Es trifft ${m(Ri)} im Fußpunkt ${m(fii1)}; die beiden Fußpunkte eines
-Paares haben den Abstand ${m(sub('h', 'i , i + 1'))}. Der <em>diskrete Drall</em> ist</p>
+Paares haben den Abstand ${m(`<mo>|</mo>${sub('h', 'i , i + 1')}<mo>|</mo>`)}: ${m(sub('h', 'i , i + 1'))} ist ihr vorzeichenbehafteter Abstand,
+dessen Vorzeichen sagt, wie sich die beiden Erzeugenden umwinden. Der <em>diskrete Drall</em> ist</p>
 ${display(`${sub('δ', 'i , i + 1')}<mo>=</mo>${frac(sub('h', 'i , i + 1'), sub('φ', 'i , i + 1'))}`, '1')}
 <p>Jede Erzeugende trägt zwei Fußpunkte, ${m(fiim)} und ${m(fii1)}. Beide streben gegen den
 <em>Kehlpunkt</em> ${mr('s ( u )')}, wenn die Erzeugenden zusammenrücken, aber nur von erster Ordnung
@@ -38,8 +39,9 @@ Arbeit; die Zahl der Erzeugenden (36) und die Länge der Strecken wählt ruledla
 <h2>Abb. 1: die Bezeichnungen</h2>
 <p>Drei aufeinanderfolgende Erzeugende ${m(sub('R', 'i − 1'))}, ${m(Ri)}, ${m(sub('R', 'i + 1'))} des
 Hyperboloids aus Beispiel 1. Jedes Paar hat genau ein gemeinsames Lot ${m(sub('N', 'i , i + 1'))}; es
-trifft ${m(Ri)} im Fußpunkt ${m(fii1)} und ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))},
-im Abstand ${m(sub('h', 'i , i + 1'))}. Die gestrichelte Gerade durch ${m(fii1)} ist parallel zu
+trifft ${m(Ri)} im Fußpunkt ${m(fii1)} und ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))}.
+Seine Länge ist der Abstand der beiden Erzeugenden; mit Vorzeichen (je nachdem, wie sich die beiden
+Erzeugenden umwinden) ist sie der vorzeichenbehaftete Abstand ${m(sub('h', 'i , i + 1'))} der Anzeige. Die gestrichelte Gerade durch ${m(fii1)} ist parallel zu
 ${m(sub('R', 'i + 1'))}: Sie schließt mit ${m(Ri)} den Winkel ${m(sub('φ', 'i , i + 1'))} ein. Jede
 Erzeugende trägt zwei Fußpunkte, einen von jedem Nachbarn; ihr Mittelpunkt ${m(sub('m', 'i'))} ist der
 diskrete Kehlpunkt. Verkleinern Sie den Abstand und sehen Sie, wie die beiden Fußpunkte auf ihn
@@ -79,10 +81,14 @@ bis 1 (oder drücken Sie Abspielen), um die Verbiegung zu sehen; das Bild ist so
 ${m(sub('n', '0 , 1'))} nach oben zeigt, und die konoidalen Erzeugenden werden waagrecht, gestapelt in
 den Höhen ${m(`${sub('H', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${sub('h', 'k , k + 1')}`)}.</p>
 <p><strong>Näherungsabwicklung (Abb. 6).</strong> Projizieren Sie das konoidale Modell normal auf eine
-Ebene parallel zu seinen Erzeugenden. Jede Erzeugende behält ihre Länge, und die beiden Fußpunkte
-jedes Paares fallen in einen Punkt; das Bild des Kehlpolygons ist also das Polygon, das die
-projizierten Erzeugenden einhüllen, so wie die Gratlinie in der Abwicklung einer Torse die
-Einhüllende ist. Die Spanne der Höhen,
+Ebene parallel zu seinen Erzeugenden. Jede Erzeugende behält ihre Länge. Die gemeinsamen Lote des
+konoidalen Modells sind alle parallel, die beiden Fußpunkte jedes Paares fallen also in einen Punkt,
+den Schnittpunkt der beiden projizierten Erzeugenden: Diese Punkte bilden das Polygon, das die
+projizierten Erzeugenden einhüllen (gestrichelt; das Bild des Polygons der Lotmittelpunkte aus
+Abb. 3), so wie die Gratlinie in der Abwicklung einer Torse die Einhüllende ist. Das Bild des
+Kehlpolygons ist diesem Polygon eingeschrieben: ${m(sub('m', 'i'))} liegt in der Mitte zwischen den
+beiden Fußpunkten auf ${m(Ri)}, sein Bild also im Mittelpunkt der Kante, die auf dieser Erzeugenden
+liegt. Die Spanne der Höhen,
 ${m(`<mo>max</mo>${sub('H', 'i')}<mo>−</mo><mo>min</mo>${sub('H', 'i')}`)}, misst, wie weit die Fläche
 von einer Torse entfernt ist: 0 beim Kegel, winzig (und mit ${m('<msup><mi>H</mi><mn>2</mn></msup>')}
 fallend) bei der Tangentenfläche, deutlich positiv beim Hyperboloidstreifen.</p>
@@ -91,13 +97,13 @@ Die Arbeit zeigt das konoidale Bild einer Schraubregelfläche als Wendelfläche,
 Achse senkrecht treffen. Hier gemessen gilt das nur, wenn die Kehllinie die Erzeugenden rechtwinklig
 kreuzt. Im Allgemeinen berühren die konoidalen Erzeugenden einen Zylinder um die Achse mit dem Radius
 ${m(frac(row('e · ṡ'), row('| e′ |')))}: 1,4 für die Fläche mit Erzeugenden unter 45° (Radius 1,
-Ganghöhe 0,4). Die Anzeige misst ihn diskret: ρ, der Abstand der beiden Fußpunkte auf einer
+Schraubparameter 0,4, also Höhe 0,4 je Radiant: z = 0,4 u). Die Anzeige misst ihn diskret: ρ, der Abstand der beiden Fußpunkte auf einer
 Erzeugenden geteilt durch den Winkel, um den sich die Erzeugenden dort drehen, ist der Krümmungsradius
 der Hüllkurve der abgewickelten Erzeugenden und strebt mit zweiter Ordnung gegen
 ${m(frac(row('e · ṡ'), row('| e′ |')))}. Wählen Sie „Erzeugende normal zur Kehlschraublinie“
 (β = −atan(r/p)), dann strebt ρ gegen 0: Im Grenzwert erscheint die Wendelfläche der Bildunterschrift.</p>
 <p class="rl-paper-data">Die Arbeit gibt für Abb. 4–6 keine Daten an; ruledlab verwendet die
-Quartik aus Beispiel 3, eine Schraubregelfläche (Radius 1, Ganghöhe 0,4) und einen Streifen des
+Quartik aus Beispiel 3, eine Schraubregelfläche (Radius 1, Schraubparameter 0,4 je Radiant, also Ganghöhe 2π · 0,4 ≈ 2,51) und einen Streifen des
 Hyperboloids aus Beispiel 1.</p>`,
 
   'curves.text': `
@@ -109,13 +115,23 @@ de Casteljau und de Boor arbeiten ebenso, für Bézier- und B-Spline-Kurven beli
 <p><strong>Das Vierpunktschema</strong> von Dyn, Levin und Gregory (Abb. 8) behält jeden Punkt und
 fügt auf jeder Kante einen neuen ein:</p>
 ${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>+</mo><mi>w</mi><mo>)</mo><mo>(</mo>${sub('p', 'i')}<mo>+</mo>${sub('p', 'i + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i − 1')}<mo>+</mo>${sub('p', 'i + 2')}<mo>)</mo>`, '8')}
-<p>Die Grenzkurve interpoliert die Daten und ist C¹ für ${mr('0 < w')} &lt; ⅛; Abb. 8 der Arbeit
-verwendet w = 1/13 (im Feld neben dem Regler exakt eintippen), und w = 1/16 reproduziert kubische
-Polynome. Bei w = 0 ist die Grenzkurve das Polygon selbst; über ⅛ hinaus bekommt die Kurve Knicke. Bei
-einem offenen Polygon verwenden die Endkanten Geisterpunkte, extrapoliert aus den letzten vier
-Punkten.</p>
-<p class="rl-paper-data">Die Arbeit gibt für Abb. 7–8 kein Kontrollpolygon an; ruledlab verwendet einen
-Stern aus acht Punkten.</p>`,
+<p>Die Grenzkurve interpoliert die Daten. Abb. 8 der Arbeit verwendet w = 1/13 (im Feld neben dem
+Regler exakt eintippen), und w = 1/16 reproduziert kubische Polynome; bei w = 0 ist die Grenzkurve das
+Polygon selbst. Die Arbeit nennt die Grenzkurve C¹ für 0 &lt; w &lt; ⅛: Das ist die hinreichende
+Bedingung, die Dyn, Levin und Gregory 1987 bewiesen haben, nicht die Stelle, an der Knicke entstehen.
+Dyn, Gregory und Levin (1991) beweisen C¹ für 0 &lt; w &lt; (√5 − 1)/8 ≈ 0,155, und ihr Kriterium reicht,
+über mehr Schritte angewandt, noch weiter (mindestens bis w = 0,18).</p>
+<p><strong>Sehen, wie die Kurve glatt wird.</strong> Anzeige und Diagramm nennen den größten
+Außenwinkel des verfeinerten Polygons, den größten Winkel zwischen einer Kante und der nächsten, nach
+jedem Schritt bis 12, also über die gezeichneten hinaus. Wo er gegen 0 fällt, strecken sich die
+Polygone. Auf diesem Polygon, geschlossen, fällt er von 8 auf 12 Schritte noch für jedes w bis 0,17;
+ab w = 0,171 knickt das Polygon nach 12 Schritten noch irgendwo um mehr als 1 rad ab: Eine C¹-Grenzkurve
+kann dann noch fern sein oder eine Spitze haben, wo ihre Ableitung verschwindet. Bei einem offenen
+Polygon verwenden die Endkanten Geisterpunkte, extrapoliert aus den letzten vier Punkten, eine
+Endregel von ruledlab (die Arbeit nennt keine); sie versagt zuerst: Dort fällt der Winkel nur bis
+w = 0,126, während sich das geschlossene Polygon, das keine Enden hat, darüber hinaus noch streckt.</p>
+<p class="rl-paper-data">Die Arbeit gibt für Abb. 7–8 kein Kontrollpolygon an; ruledlab verwendet acht
+Punkte in einem offenen Zickzack (das Kontrollkästchen schließt ihn).</p>`,
 
   'strip.text': `
 <h2>Variationelle Unterteilung eines Regelflächenstreifens (Beispiel 3)</h2>
@@ -132,14 +148,16 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 in den neuen Punkten, ist das Minimum genau die Mittelpunktsregel (wählen Sie „wörtlich“: Die Anzeige
 gleicht der Mittelpunktsregel). Die <em>gekoppelte</em> Energie von ruledlab nimmt Umbrella-Vektoren in
 jedem inneren Knoten, auch in den alten, sodass die neuen Erzeugenden gekoppelt sind und der Fläche
-ab n = 6 enger folgen. Die <em>gemittelte</em> Variante mittelt die Umbrella-Vektoren der beiden
+für jedes n von 5 bis 24 (den Bereich des Reglers) enger folgen als die Mittelpunktsregel (für n = 3, 4
+nicht). Die <em>gemittelte</em> Variante mittelt die Umbrella-Vektoren der beiden
 Triangulierungen vor dem Quadrieren: Die Energie (15) enthält einen Verdrillungsterm aus den
 gescherten Nachbarn der beiden Triangulierungen, den das Mitteln aufhebt. Auf dieser Fläche ist das
 Vierpunktschema an der schlechtesten Erzeugenden am besten: Seine Randkurven sind quadratisch, was
 w = 1/16 exakt reproduziert. Die Anzeige misst den Abstand der eingefügten Erzeugenden von der
 exakten Fläche, für jedes Schema bei diesem n; die Aussagen darunter werden an diesen Zahlen geprüft.</p>
 <p class="rl-paper-data">Daten aus der Arbeit: 12 Erzeugende der quartischen Fläche
-(1 + vu², u²/2 + uv, u − v), n = 12; das Intervall u ∈ [−1, 1] wählt ruledlab (die Arbeit nennt keines).</p>`,
+(1 + vu², u²/2 + uv, u − v), n = 12; die Intervalle u ∈ [−1, 1] und v ∈ [−1, 1] (die Enden der
+Erzeugenden) wählt ruledlab (die Arbeit nennt keines von beiden).</p>`,
 
   'congruence.text': `
 <h2>Eine Geradenkongruenz verfeinern</h2>
@@ -151,7 +169,9 @@ heißt, beide Punktgitter zu verfeinern.</p>
 <p><strong>Butterfly-Schema (Abb. 12).</strong> Triangulieren Sie das Gitter durch die Diagonalen und
 fügen Sie auf jeder Diagonale ein</p>
 ${display(`${sub('p̄', 'i , j')}<mo>=</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>(</mo>${sub('p', 'i , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 1')}<mo>)</mo><mo>+</mo><mn>2</mn><mi>w</mi><mo>(</mo>${sub('p', 'i + 1 , j')}<mo>+</mo>${sub('p', 'i , j + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i , j − 1')}<mo>+</mo>${sub('p', 'i − 1 , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 2')}<mo>+</mo>${sub('p', 'i + 2 , j + 1')}<mo>)</mo>`, '16')}
-<p>Die Arbeit fügt nur diese Geraden auf den Diagonalen ein (Abb. 13, „nur Diagonalen“).</p>
+<p>Die Arbeit fügt nur diese Geraden auf den Diagonalen ein (Abb. 13, „nur Diagonalen“) und nennt
+keinen Wert des Spannungsparameters w; ruledlab verwendet w = 1/16, was kubische Polynome
+reproduziert.</p>
 <p><strong>Variationelle Unterteilung (Abschnitt 5.2, Abb. 15).</strong> Jede Zeile und Spalte von
 Geraden ist eine Regelfläche: Das Streifenschema fügt die Geraden T und S auf den Kanten ein, und
 jede Masche erhält die Gerade, deren Umbrella-Vektor (20) über ihre acht Nachbarn in jeder Schicht
@@ -162,10 +182,12 @@ der vier Ecken (ERRATA.md).</p>
 Schablone von (16) auch auf die beiden anderen Kantenrichtungen an, sodass ein Schritt das Gitter
 verdoppelt. „Zweistufig“ bildet die Kantengeraden mit der gekoppelten Streifenenergie von ruledlab;
 „gekoppelt“ lässt alle neuen Geraden gemeinsam in einem dünn besetzten System zur Ruhe kommen.
-Gemessen an den exakten Kongruenzen nach einem Schritt (Anzeige: jedes Schema) ist das
-Butterfly-Schema bei diesen Beispielen am genauesten.</p>
+Die Anzeige misst das gezeigte Schema an der exakten Kongruenz und zum Vergleich die vier Schemata
+des Menüs, die das ganze Gitter verfeinern, nach einem Schritt: Das Butterfly-Schema auf allen Kanten
+ist bei diesen Beispielen am genauesten.</p>
 <p class="rl-paper-data">Daten: Beispiel 5 stammt aus der Arbeit (d₁ = (u, v, ½ sin(2u + 1,5v)),
-Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6). Für die beiden Kongruenzen
+Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6; wörtlich gelesen liefert das
+Schema für jedes K dieselben Geraden, K wirkt sich also nicht auf das Ergebnis aus). Für die beiden Kongruenzen
 aus Beispiel 4 gibt die Arbeit keine Formeln an; Kugel und hyperbolisches Paraboloid wählt ruledlab,
 ebenso die Länge der Strecken (0,35 des Richtungsvektors).</p>`,
 

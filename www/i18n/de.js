@@ -220,7 +220,7 @@ export default {
   'notation.readout.distance': 'vorzeichenbehafteter Abstand h_{i,i+1}',
   'notation.readout.delta': 'δ_{i,i+1} = h / φ',
   'notation.describe':
-    'Drei aufeinanderfolgende Erzeugende des Hyperboloids aus Beispiel 1, im Parameter {spacing} voneinander entfernt, mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} ist {angle} rad, ihr Abstand {distance}.',
+    'Drei aufeinanderfolgende Erzeugende des Hyperboloids aus Beispiel 1, im Parameter {spacing} voneinander entfernt, mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} ist {angle} rad, ihr vorzeichenbehafteter Abstand h_{i,i+1} beträgt {distance} (sein Betrag ist der Abstand der beiden Geraden).',
 
   'convergence.title': 'Konvergenzordnungen (Sätze 1–2)',
   'convergence.param.u': 'Parameter u',
@@ -255,6 +255,8 @@ export default {
   'isometry.reason.panels': 'Die Ansicht mit drei Feldern zeigt immer t = 1.',
   'isometry.reason.flat': 'Bei t = 0 ist die Fläche die ursprüngliche.',
   'isometry.legend.striction': 'Kehlpolygon (in der Abwicklung: sein Bild)',
+  'isometry.legend.envelope':
+    'in der Abwicklung: das von den Erzeugenden eingehüllte Polygon, Bild des Polygons aus Abb. 3 (gestrichelt)',
   'isometry.legend.ghost': 'ursprüngliche Fläche (gestrichelt)',
   'isometry.readout.nonDevelopability': 'Nichtabwickelbarkeit (Höhe des konoidalen Modells)',
   'isometry.readout.isometry': 'max. relative Änderung einer Kantenlänge',
@@ -279,7 +281,17 @@ export default {
   'curves.legend.refined': 'verfeinertes Polygon',
   'curves.readout.points': 'Punkte',
   'curves.readout.w': 'Spannungsparameter w',
-  'curves.describe': '{scheme}, {steps:Schritt:Schritte} auf einem Polygon aus acht Punkten: {points} Punkte.',
+  'curves.readout.turning': 'größter Außenwinkel des gezeichneten Polygons (rad)',
+  'curves.readout.turningLate': 'größter Außenwinkel nach 8 → 12 Schritten (rad)',
+  'curves.plot.x': 'Schritte',
+  'curves.plot.y': 'größter Außenwinkel (rad)',
+  'curves.plot.title': 'Größter Außenwinkel des verfeinerten Polygons nach jedem Schritt (logarithmisch)',
+  'curves.claim.falls':
+    'Auf diesem Polygon ist der größte Außenwinkel nach 12 Schritten kleiner als nach 8, für jedes w mit 0 < w ≤ 0,17 (geschlossen) bzw. 0 < w ≤ 0,126 (offen).',
+  'curves.claim.sharp':
+    'Ab w = 0,171 (geschlossen) bzw. w = 0,127 (offen) bis 0,2 knickt das Polygon nach 12 Schritten noch irgendwo um mehr als 1 rad (57°) ab.',
+  'curves.describe':
+    '{scheme}, {steps:Schritt:Schritte} auf einem Polygon aus acht Punkten: {points} Punkte; der größte Außenwinkel beträgt {angle} rad ({late} rad nach {last} Schritten).',
 
   'strip.title': 'Variationelle Streifenunterteilung (Abb. 9–10, Beispiel 3)',
   'strip.scheme.literal': 'Variationell, wörtlich (13)–(15): die Mittelpunktsregel',
@@ -474,15 +486,15 @@ export default {
   'strip.readout.compare.fourPoint': 'Vierpunktschema: max. Abstand',
   'strip.claim.literal': 'Wörtlich gelesen ist (15) die Mittelpunktsregel: ihre Abstände sind für jedes n gleich.',
   'strip.claim.coupled':
-    'Für n ≥ 6 kommt die gekoppelte Energie der Fläche näher als die Mittelpunktsregel (für n = 3, 4 nicht).',
+    'Für jedes n von 5 bis 24 (den Bereich des Reglers) kommt die gekoppelte Energie der Fläche näher als die Mittelpunktsregel; für n = 3, 4 nicht.',
   'strip.claim.fourPoint':
     'Das Vierpunktschema ist auf dieser Fläche exakt, an der schlechtesten Erzeugenden das beste: seine Randkurven sind quadratisch, und w = 1/16 reproduziert sie.',
-  'congruence.readout.compare.paper': 'Schema der Arbeit, 1 Schritt: Abstand / Winkel',
-  'congruence.readout.compare.two-stage': 'zweistufig, 1 Schritt: Abstand / Winkel',
-  'congruence.readout.compare.coupled': 'gekoppelt, 1 Schritt: Abstand / Winkel',
-  'congruence.readout.compare.butterfly': 'Butterfly, 1 Schritt: Abstand / Winkel',
+  'congruence.readout.compare.paper': 'zum Vergleich, Schema der Arbeit nach 1 Schritt: Abstand / Winkel',
+  'congruence.readout.compare.two-stage': 'zum Vergleich, zweistufig nach 1 Schritt: Abstand / Winkel',
+  'congruence.readout.compare.coupled': 'zum Vergleich, gekoppelt nach 1 Schritt: Abstand / Winkel',
+  'congruence.readout.compare.butterfly': 'zum Vergleich, Butterfly auf allen Kanten nach 1 Schritt: Abstand / Winkel',
   'congruence.claim.butterfly':
-    'Nach einem Schritt liegen die neuen Geraden des Butterfly-Schemas auf jeder eingebauten Kongruenz in der Richtung am genauesten und nicht weiter entfernt als die jedes variationellen Schemas.',
+    'Nach einem Schritt liegen die neuen Geraden des Butterfly-Schemas auf allen Kanten auf jeder eingebauten Kongruenz in der Richtung am genauesten und nicht weiter entfernt als die jedes variationellen Schemas.',
   'milling.readout.compare.given': 'nur gegebene Lagen: max. |Abweichung|',
   'milling.readout.compare.variational': 'variationell (gekoppelt): max. |Abweichung|',
   'milling.readout.compare.averaged': 'variationell (gemittelt): max. |Abweichung|',
@@ -530,7 +542,7 @@ export default {
   'paper.ex6': 'Beispiel 6: Fräsen',
   'paper.fig1.caption': '„Diskretes Regelflächenmodell: Bezeichnungen.“ (übersetzt)',
   'paper.fig1.note':
-    'Drei aufeinanderfolgende Erzeugende R_{i−1}, R_i, R_{i+1} mit den gemeinsamen Loten N_{i,i+1}, den Fußpunkten f_{i,i+1}, f_{i+1,i}, dem Winkel φ_{i,i+1} und dem Abstand h_{i,i+1}. Die Arbeit gibt keine Daten an; ruledlab verwendet drei Erzeugende des Hyperboloids aus Beispiel 1 (Abstand und Lage sind Schieberegler).',
+    'Drei aufeinanderfolgende Erzeugende R_{i−1}, R_i, R_{i+1} mit den gemeinsamen Loten N_{i,i+1}, den Fußpunkten f_{i,i+1}, f_{i+1,i}, dem Winkel φ_{i,i+1} und dem vorzeichenbehafteten Abstand h_{i,i+1} (sein Betrag ist der Abstand der beiden Erzeugenden, sein Vorzeichen sagt, wie sie sich umwinden). Die Arbeit gibt keine Daten an; ruledlab verwendet drei Erzeugende des Hyperboloids aus Beispiel 1 (Abstand und Lage sind Schieberegler).',
   'paper.fig2.caption':
     '„Diskretes Modell einer Regelfläche mit Kehllinie und der Folge der gemeinsamen Normalen der Erzeugenden.“ (übersetzt)',
   'paper.fig2.note':
@@ -547,7 +559,7 @@ export default {
   'paper.fig5.caption':
     '„Links: Schraubregelfläche. Rechts: isometrische konoidale Fläche. In diesem Fall ist das Ergebnis eine Schraubfläche, deren Erzeugende die Achse senkrecht schneiden.“ (übersetzt)',
   'paper.fig5.note':
-    'Eine Schraubregelfläche, in ihr konoidales Modell verbogen. Die Arbeit gibt keine Daten an; ruledlab verwendet Radius 1, Ganghöhe 0,4 und Erzeugende unter 45°.',
+    'Eine Schraubregelfläche, in ihr konoidales Modell verbogen. Die Arbeit gibt keine Daten an; ruledlab verwendet Radius 1, Schraubparameter 0,4 (Höhe je Radiant: z = 0,4 u, also Ganghöhe 2π · 0,4 ≈ 2,51) und Erzeugende unter 45°.',
   'paper.fig5-orthogonal.note':
     'Dieselbe Schraublinie mit Erzeugenden normal zur Kehlschraublinie (tan β = −r/p), der Fall, in dem die Bildunterschrift zutrifft: Die Anzeige ρ strebt gegen 0, die konoidalen Erzeugenden treffen im Grenzwert die Achse. Die Arbeit gibt keine Daten an; die Fläche wählt ruledlab.',
   'paper.fig5.beyond':
@@ -555,13 +567,13 @@ export default {
   'paper.fig6.caption':
     '„Genäherte Abwicklung einer windschiefen Regelfläche auf Grund der diskreten Darstellung: links das diskrete Modell einer windschiefen Regelfläche, in der Mitte das isometrische konoidale diskrete Modell, rechts die Projektion der diskreten konoidalen Fläche normal zu ihren Erzeugenden.“ (übersetzt)',
   'paper.fig6.note':
-    'Die drei Felder von Abb. 6: ein Streifen des Hyperboloids aus Beispiel 1, sein konoidales Modell und die Abwicklung; die Anzeige nennt die Höhe des konoidalen Modells, das Maß der Nichtabwickelbarkeit. Die Arbeit gibt keine Daten an; den Streifen (24 Erzeugende, u von 0 bis 2,4) wählt ruledlab.',
+    'Die drei Felder von Abb. 6: ein Streifen des Hyperboloids aus Beispiel 1, sein konoidales Modell und die Abwicklung, in der das Bild des Kehlpolygons dem von den abgewickelten Erzeugenden eingehüllten Polygon (gestrichelt) eingeschrieben ist; die Anzeige nennt die Höhe des konoidalen Modells, das Maß der Nichtabwickelbarkeit. Die Arbeit gibt keine Daten an; den Streifen (24 Erzeugende, u von 0 bis 2,4) wählt ruledlab.',
   'paper.fig7.caption': '„Algorithmus von Chaikin.“ (übersetzt)',
   'paper.fig7.note':
-    'Vier Schritte des Algorithmus von Chaikin, jede Stufe gezeichnet. Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet einen Stern aus acht Punkten.',
+    'Vier Schritte des Algorithmus von Chaikin, jede Stufe gezeichnet. Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet acht Punkte in einem offenen Zickzack.',
   'paper.fig8.caption': '„Interpolierende Unterteilung nach Dyn, Levin und Gregory (w = 1/13).“ (übersetzt)',
   'paper.fig8.note':
-    'Vier Schritte von (8) mit dem w = 1/13 der Arbeit, exakt (tippen Sie einen Bruch in das Feld neben dem Schieberegler). Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet einen Stern aus acht Punkten.',
+    'Vier Schritte von (8) mit dem w = 1/13 der Arbeit, exakt (tippen Sie einen Bruch in das Feld neben dem Schieberegler). Die Arbeit gibt kein Kontrollpolygon an; ruledlab verwendet acht Punkte in einem offenen Zickzack.',
   'paper.fig9.caption':
     '„Grundlegende Bezeichnungen für einen unterteilten Regelflächenstreifen, die beiden verschiedenen Triangulierungen.“ (übersetzt)',
   'paper.fig9.note':
@@ -569,21 +581,21 @@ export default {
   'paper.fig10.caption':
     '„12 Erzeugende einer quartischen Regelfläche R, 11 Geraden eingefügt; hellgraue Kugeln um A_i, dunkelgraue Kugeln um B_i.“ (übersetzt)',
   'paper.fig10.note':
-    'Beispiel 3 mit den Daten der Arbeit: 12 Erzeugende von (1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1] (das Intervall wählt ruledlab: Die Arbeit nennt keines), n = 12, ein Schritt der Energie (15) wörtlich gelesen; Kugeln um A_i (hell) und B_i (dunkel).',
+    'Beispiel 3 mit den Daten der Arbeit: 12 Erzeugende von (1 + vu², u²/2 + uv, u − v), n = 12, ein Schritt der Energie (15) wörtlich gelesen; Kugeln um A_i (hell) und B_i (dunkel). Die Intervalle u ∈ [−1, 1] und v ∈ [−1, 1] (die Enden der Erzeugenden) wählt ruledlab: Die Arbeit nennt keines von beiden.',
   'paper.strip.beyond':
-    'Wörtlich gelesen setzt (15) Umbrella-Vektoren nur in die neuen Punkte, und das Minimum ist genau die Mittelpunktsregel (ERRATA.md; unter der Anzeige geprüft). Die gekoppelte und die gemittelte Energie von ruledlab setzen sie in jeden Knoten; die Anzeige vergleicht jedes Schema bei diesem n: Gekoppelt schlägt die Mittelpunktsregel ab n = 6, und das Vierpunktschema ist auf dieser Fläche exakt.',
+    'Wörtlich gelesen setzt (15) Umbrella-Vektoren nur in die neuen Punkte, und das Minimum ist genau die Mittelpunktsregel (ERRATA.md; unter der Anzeige geprüft). Die gekoppelte und die gemittelte Energie von ruledlab setzen sie in jeden Knoten; die Anzeige vergleicht jedes Schema bei diesem n: Gekoppelt schlägt die Mittelpunktsregel für jedes n von 5 bis 24 (nicht für n = 3, 4), und das Vierpunktschema ist auf dieser Fläche exakt.',
   'paper.fig11.caption': '„Durch zwei Leitflächen bestimmte Geradenkongruenz.“ (übersetzt)',
   'paper.fig11.note':
     'Die Geraden aus Beispiel 5 zwischen den Leitflächen d₁ und d₂, beide schattiert. Die Abbildung der Arbeit ist eine Skizze; ruledlab nimmt für d₂ die Punkte p + 0,35 d (die Arbeit nennt keine Länge der Strecken, ERRATA.md 9).',
   'paper.fig12.caption': '„Das Butterfly-Schema.“ (übersetzt)',
   'paper.fig12.note':
-    'Die Schablone von (16) ist neben der Ansicht mit allen Gewichten gezeichnet (w = 1/16); die Ansicht zeigt die Geraden, die sie auf den Diagonalen des Gitters aus Beispiel 5 einfügt (ein Schritt, wie in der Arbeit).',
+    'Die Schablone von (16) ist neben der Ansicht mit allen Gewichten gezeichnet; die Ansicht zeigt die Geraden, die sie auf den Diagonalen des Gitters aus Beispiel 5 einfügt (ein Schritt, wie in der Arbeit). Den Spannungsparameter w = 1/16 wählt ruledlab (er reproduziert kubische Polynome): Die Arbeit nennt keinen Wert.',
   'paper.fig13.caption':
     '„Links: Teil einer Kugel mit Geraden der Kongruenz (schwarz, dünn) und eingefügten Geraden (schwarz, dick). Rechts: Teil eines hyperbolischen Paraboloids, Geraden der Kongruenz (schwarz, dünn), eingefügte Geraden (schwarz, dick).“ (übersetzt)',
   'paper.fig13.note':
-    'Abb. 13 links: Geraden nur auf den Diagonalen eingefügt, wie in der Arbeit. Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kugel von ruledlab trägt die Richtungen Normale + 0,3 (sin 2v, cos 3u, uv), eine verallgemeinerte Offsetfläche, keine Normalenkongruenz. Eingefügte Geraden sind farbig statt dick schwarz gezeichnet.',
+    'Abb. 13 links: Geraden nur auf den Diagonalen eingefügt, wie in der Arbeit, mit w = 1/16 in (16) (Wahl von ruledlab: Die Arbeit nennt keinen Wert). Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kugel von ruledlab trägt die Richtungen Normale + 0,3 (sin 2v, cos 3u, uv), eine verallgemeinerte Offsetfläche, keine Normalenkongruenz. Eingefügte Geraden sind farbig statt dick schwarz gezeichnet. Die Anzeige misst diese Diagonalgeraden; die Zeilen „zum Vergleich“ gehören zu anderen Schemata (die Butterfly-Zeile fügt auf allen Kanten ein).',
   'paper.fig13-right.note':
-    'Abb. 13 rechts: Geraden nur auf den Diagonalen eingefügt. Für Beispiel 4 gibt die Arbeit keine Formeln an; das hyperbolische Paraboloid z = xy von ruledlab trägt die Richtungen (−v, −u, 1) + 0,3 (cos 2v, sin u, 0).',
+    'Abb. 13 rechts: Geraden nur auf den Diagonalen eingefügt, mit w = 1/16 in (16) (Wahl von ruledlab: Die Arbeit nennt keinen Wert). Für Beispiel 4 gibt die Arbeit keine Formeln an; das hyperbolische Paraboloid z = xy von ruledlab trägt die Richtungen (−v, −u, 1) + 0,3 (cos 2v, sin u, 0). Die Anzeige misst diese Diagonalgeraden; die Zeilen „zum Vergleich“ gehören zu anderen Schemata (die Butterfly-Zeile fügt auf allen Kanten ein).',
   'paper.fig14.caption':
     '„Punktschema auf der Leitfläche d₁ (links), Teil der Kongruenz mit einigen Bezeichnungen (rechts).“ (übersetzt)',
   'paper.fig14.note':
@@ -591,9 +603,9 @@ export default {
   'paper.fig15.caption':
     '„Diskrete Geradenkongruenz (links), eingefügte Geraden (schwarz, dick) (rechts).“ (übersetzt)',
   'paper.fig15.note':
-    'Beispiel 5 mit den Daten der Arbeit: d₁ = (u, v, ½ sin(2u + 1,5v)), Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6, einmal verfeinert mit dem wörtlich gelesenen variationellen Schema der Arbeit: Kantengeraden nach der Mittelpunktsregel, jede Maschengerade das Mittel ihrer acht Nachbarn (ERRATA.md).',
+    'Beispiel 5 mit den Daten der Arbeit: d₁ = (u, v, ½ sin(2u + 1,5v)), Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6, einmal verfeinert mit dem wörtlich gelesenen variationellen Schema der Arbeit: Kantengeraden nach der Mittelpunktsregel, jede Maschengerade das Mittel ihrer acht Nachbarn (ERRATA.md). So gelesen wirkt sich K nicht auf das Ergebnis aus: Jedes K liefert dieselben Geraden.',
   'paper.congruence.beyond':
-    'Wörtlich gelesen liefern die Energien (15) und (21) bloße Mittelwerte; ruledlab bietet außerdem „zweistufig“ (seine gekoppelte Streifenenergie auf den Kanten), „gekoppelt“ (alle neuen Geraden in einem dünn besetzten System) und das Butterfly-Schema auf allen Kanten. Die Anzeige vergleicht alle vier nach einem Schritt; auf jeder eingebauten Kongruenz ist das Butterfly-Schema am genauesten (unter der Anzeige geprüft).',
+    'Wörtlich gelesen liefern die Energien (15) und (21) bloße Mittelwerte; ruledlab bietet außerdem „zweistufig“ (seine gekoppelte Streifenenergie auf den Kanten), „gekoppelt“ (alle neuen Geraden in einem dünn besetzten System) und das Butterfly-Schema auf allen Kanten. Die Anzeige misst das gezeigte Schema und zum Vergleich alle vier nach einem Schritt; auf jeder eingebauten Kongruenz ist das Butterfly-Schema auf allen Kanten am genauesten (unter der Anzeige geprüft).',
   'paper.fig16.caption': '„Erster Schritt der Verfeinerung.“ (übersetzt)',
   'paper.fig16.note':
     'Beispiel 6 nach einem Schritt: gegebene Werkzeugachsen dunkel, eingefügte hell, das Werkzeug als Zylinder mit Kugelende, die Schwerpunktkurve gestrichelt, die gefegte Kugel über dem Werkstück. Die Arbeit gibt keine Daten an; Profil, sieben Lagen und Werkzeug (Radius 0,25, Länge 1,5) stammen von ruledlab.',
@@ -613,15 +625,15 @@ export default {
   'paper.ex3.caption':
     'Beispiel 3: N = 12 Erzeugende der quartischen Regelfläche (1 + vu², u²/2 + uv, u − v), n = 12, ein Schritt der variationellen Unterteilung.',
   'paper.ex3.note':
-    'Beispiel 3 mit den Daten der Arbeit, der ersten Triangulierung und der exakten Fläche blass dahinter; die Anzeige misst den Abstand der eingefügten Erzeugenden von der Fläche für jedes Schema.',
+    'Beispiel 3 mit den Daten der Arbeit, der ersten Triangulierung und der exakten Fläche blass dahinter; die Anzeige misst den Abstand der eingefügten Erzeugenden von der Fläche für jedes Schema. Die Intervalle u ∈ [−1, 1] und v ∈ [−1, 1] (die Enden der Erzeugenden) wählt ruledlab: Die Arbeit nennt keines von beiden.',
   'paper.ex4.caption':
     'Beispiel 4: das Butterfly-Schema auf Kongruenzen mit zwei verschiedenen Leitflächen d₁; d₂, eine verallgemeinerte Offsetfläche, ist in der Arbeit nicht gezeichnet.',
   'paper.ex4.note':
-    'Die Kugel aus Abb. 13 mit Geraden nur auf den Diagonalen, dazu d₂ schattiert (das die Arbeit nicht zeichnet). Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kongruenz wählt ruledlab.',
+    'Die Kugel aus Abb. 13 mit Geraden nur auf den Diagonalen (w = 1/16, Wahl von ruledlab: Die Arbeit nennt keinen Wert), dazu d₂ schattiert (das die Arbeit nicht zeichnet). Für Beispiel 4 gibt die Arbeit keine Formeln an; die Kongruenz wählt ruledlab. Die Anzeige misst die gezeigten Diagonalgeraden; die Zeilen „zum Vergleich“ gehören zu anderen Schemata (die Butterfly-Zeile fügt auf allen Kanten ein).',
   'paper.ex5.caption':
     'Beispiel 5: d₁ = (u, v, ½ sin(2u + 1,5v)), Geraden parallel zu (u, v, sin u + 1,3 cos v), 8 × 7 Werte auf [−1,1; 1,1]², K = 6.',
   'paper.ex5.note':
-    'Beispiel 5 mit den Daten der Arbeit, einmal mit dem wörtlich gelesenen Schema der Arbeit verfeinert, mit beiden Leitflächen (d₂ = p + 0,35 d: Die Arbeit nennt keine Länge der Strecken).',
+    'Beispiel 5 mit den Daten der Arbeit, einmal mit dem wörtlich gelesenen Schema der Arbeit verfeinert, mit beiden Leitflächen (d₂ = p + 0,35 d: Die Arbeit nennt keine Länge der Strecken). Wörtlich gelesen wirkt sich K = 6 nicht auf das Ergebnis aus: Jedes K liefert dieselben Geraden (ebenso beim gekoppelten Schema von ruledlab; nur „zweistufig“ hängt von K ab).',
   'paper.ex6.caption':
     'Beispiel 6: einige Lagen eines Fräswerkzeugs entlang eines Profils, durch die variationelle Unterteilung aus Abschnitt 4 zu einer glatten Bahn verfeinert.',
   'paper.ex6.note':

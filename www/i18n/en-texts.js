@@ -11,7 +11,8 @@ export default {
 <p>A discrete ruled surface is a sequence of lines ${m(Ri)}. Two consecutive rulings enclose the
 angle ${m(sub('φ', 'i , i + 1'))} and have one common perpendicular ${m(sub('N', 'i , i + 1'))}. It
 meets ${m(Ri)} at the footpoint ${m(fii1)}, and the two footpoints of a pair are
-${m(sub('h', 'i , i + 1'))} apart. The <em>discrete distribution parameter</em> is</p>
+${m(`<mo>|</mo>${sub('h', 'i , i + 1')}<mo>|</mo>`)} apart: ${m(sub('h', 'i , i + 1'))} is their signed distance, its sign telling how the two
+rulings wind. The <em>discrete distribution parameter</em> is</p>
 ${display(`${sub('δ', 'i , i + 1')}<mo>=</mo>${frac(sub('h', 'i , i + 1'), sub('φ', 'i , i + 1'))}`, '1')}
 <p>Each ruling carries two footpoints, ${m(fiim)} and ${m(fii1)}. Both tend to the <em>striction
 point</em> ${mr('s ( u )')} as the rulings get closer, but only at first order (Proposition 1).
@@ -37,8 +38,9 @@ number of rulings (36) and the segment length are ruledlab's choice.</p>`,
 <h2>Fig. 1: the notation</h2>
 <p>Three consecutive rulings ${m(sub('R', 'i − 1'))}, ${m(Ri)}, ${m(sub('R', 'i + 1'))} of the
 hyperboloid of Example 1. Each pair has exactly one common perpendicular ${m(sub('N', 'i , i + 1'))};
-it meets ${m(Ri)} in the footpoint ${m(fii1)} and ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))},
-at distance ${m(sub('h', 'i , i + 1'))}. The dashed line through ${m(fii1)} is parallel to
+it meets ${m(Ri)} in the footpoint ${m(fii1)} and ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))}.
+Its length is the distance of the two rulings; with a sign (how the two rulings wind about each other)
+it is the signed distance ${m(sub('h', 'i , i + 1'))} of the readout. The dashed line through ${m(fii1)} is parallel to
 ${m(sub('R', 'i + 1'))}: it encloses the angle ${m(sub('φ', 'i , i + 1'))} with ${m(Ri)}. Every ruling
 carries two footpoints, one from each neighbour; their midpoint ${m(sub('m', 'i'))} is the discrete
 striction point. Shrink the spacing and watch the two footpoints close in on it.</p>`,
@@ -76,10 +78,13 @@ to watch the bending; the picture is turned so that ${m(sub('n', '0 , 1'))} poin
 conoidal rulings become horizontal, stacked at heights
 ${m(`${sub('H', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${sub('h', 'k , k + 1')}`)}.</p>
 <p><strong>Approximate development (Fig. 6).</strong> Project the conoidal model orthogonally onto a
-plane parallel to its rulings. Each ruling keeps its length, and the two footpoints of every pair
-fall onto one point, so the image of the striction polygon is the polygon the projected rulings
-envelop, just as the regression curve is the envelope in the development of a developable
-surface. The spread of the heights,
+plane parallel to its rulings. Each ruling keeps its length. The common perpendiculars of the
+conoidal model all point the same way, so the two footpoints of every pair fall onto one point,
+where the two projected rulings meet: these points form the polygon the projected rulings envelop
+(dashed; the image of Fig. 3's polygon of perpendicular midpoints), just as the regression curve is
+the envelope in the development of a developable surface. The image of the striction polygon is
+inscribed in it: ${m(sub('m', 'i'))} lies midway between the two footpoints on ${m(Ri)}, so its image
+is the midpoint of the envelope polygon's edge on that ruling. The spread of the heights,
 ${m(`<mo>max</mo>${sub('H', 'i')}<mo>−</mo><mo>min</mo>${sub('H', 'i')}`)}, measures how far the
 surface is from developable: 0 for the cone, tiny (shrinking like
 ${m('<msup><mi>H</mi><mn>2</mn></msup>')} as rulings are added) for the tangent surface, clearly
@@ -89,13 +94,13 @@ the conoidal image of a ruled helical surface as a helicoid whose rulings meet t
 orthogonally. Measured here, that holds only when the striction curve crosses the rulings at a
 right angle. In general the conoidal rulings touch a cylinder about the axis of radius
 ${m(frac(row('e · ṡ'), row('| e′ |')))}: 1.4 for the surface with rulings at 45° (radius 1, pitch
-0.4). The readout measures it discretely: ρ, the step between the two footpoints on a ruling over
+0.4 per radian: z = 0.4 u). The readout measures it discretely: ρ, the step between the two footpoints on a ruling over
 the angle the rulings turn there, is the radius of curvature of the envelope of the developed
 rulings, and tends to ${m(frac(row('e · ṡ'), row('| e′ |')))} at second order. Choose "rulings
 orthogonal to the striction helix" (β = −atan(r/p)) and ρ tends to 0: the caption's helicoid
 appears in the limit.</p>
 <p class="rl-paper-data">The paper gives no data for Figs. 4–6; ruledlab uses Example 3's quartic,
-a ruled helical surface (radius 1, pitch 0.4) and a strip of Example 1's hyperboloid.</p>`,
+a ruled helical surface (radius 1, pitch 0.4 per radian, so 2π · 0.4 ≈ 2.51 per turn) and a strip of Example 1's hyperboloid.</p>`,
 
   'curves.text': `
 <h2>Subdivision of polygons</h2>
@@ -106,13 +111,23 @@ work the same way, for Bézier and B-spline curves of any degree.</p>
 <p><strong>The four-point scheme</strong> of Dyn, Levin and Gregory (Fig. 8) keeps every point and
 inserts a new one on each edge:</p>
 ${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>+</mo><mi>w</mi><mo>)</mo><mo>(</mo>${sub('p', 'i')}<mo>+</mo>${sub('p', 'i + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i − 1')}<mo>+</mo>${sub('p', 'i + 2')}<mo>)</mo>`, '8')}
-<p>The limit interpolates the data and is C¹ for ${mr('0 < w')} &lt; ⅛; the paper's Fig. 8 uses
-w = 1/13 (type it exactly in the field beside the slider), and w = 1/16 reproduces cubic
-polynomials. Slide w to 0 and the limit is the polygon itself; push it past ⅛ and watch the curve
-grow kinks. On an open polygon the end edges use ghost points extrapolated from the last four
-points.</p>
-<p class="rl-paper-data">The paper gives no control polygon for Figs. 7–8; ruledlab uses an eight-point
-star.</p>`,
+<p>The limit interpolates the data. The paper's Fig. 8 uses w = 1/13 (type it exactly in the field
+beside the slider), and w = 1/16 reproduces cubic polynomials; slide w to 0 and the limit is the
+polygon itself. The paper calls the limit C¹ for 0 &lt; w &lt; ⅛: that is the sufficient condition
+Dyn, Levin and Gregory proved in 1987, not the place where kinks appear. Dyn, Gregory and Levin
+(1991) prove C¹ for 0 &lt; w &lt; (√5 − 1)/8 ≈ 0.155, and their test, run over more steps, reaches
+further (to w = 0.18 at least).</p>
+<p><strong>Watch smoothness set in.</strong> The readout and the plot give the largest turning angle
+of the refined polygon, the largest angle between an edge and the next, after each step up to 12,
+more than are drawn. Where it falls towards 0 the polygons straighten out. On this polygon, closed,
+it still falls from 8 to 12 steps for every w up to 0.17; from w = 0.171 on, the polygon still turns
+by more than 1 rad somewhere after 12 steps: a C¹ limit may still be far off, or have a cusp where
+its derivative vanishes. On an open polygon the end edges use ghost points extrapolated from the
+last four points, ruledlab's end rule (the paper gives none), and it gives out first: there the
+angle falls only up to w = 0.126, while the closed polygon, which has no ends, still straightens
+out beyond.</p>
+<p class="rl-paper-data">The paper gives no control polygon for Figs. 7–8; ruledlab uses eight points
+in an open zigzag (the checkbox closes it).</p>`,
 
   'strip.text': `
 <h2>Variational subdivision of a ruled strip (Example 3)</h2>
@@ -128,7 +143,8 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 <p class="rl-beyond"><strong>What ruledlab adds.</strong> Read literally, with umbrellas at the new
 points only, the minimiser is just the midpoint rule (choose "literal": the readout equals the
 midpoint rule's). ruledlab's <em>coupled</em> energy puts umbrellas at every interior vertex, old
-ones included, so the new rulings couple and, from n = 6 on, follow the surface more closely. The <em>averaged</em>
+ones included, so the new rulings couple and, for every n from 5 to 24 (the slider's range), follow
+the surface more closely than the midpoint rule (for n = 3, 4 they do not). The <em>averaged</em>
 variant averages the two triangulations' umbrellas before squaring: the energy (15) contains a
 twist term from the sheared neighbours of the two triangulations, and averaging cancels it. On
 this surface the four-point scheme is best of all at the worst ruling: its boundary curves are
@@ -136,7 +152,8 @@ quadratic, which w = 1/16 reproduces exactly. The readout measures the distance 
 rulings from the exact surface, for every scheme at this n; the claims under it are checked
 against those numbers.</p>
 <p class="rl-paper-data">Data: the paper's: 12 rulings of the quartic surface
-(1 + vu², u²/2 + uv, u − v), n = 12; the interval u ∈ [−1, 1] is ruledlab's (the paper gives none).</p>`,
+(1 + vu², u²/2 + uv, u − v), n = 12; the intervals u ∈ [−1, 1] and v ∈ [−1, 1] (the rulings' ends) are
+ruledlab's (the paper gives neither).</p>`,
 
   'congruence.text': `
 <h2>Refining a congruence of lines</h2>
@@ -148,7 +165,8 @@ point grids.</p>
 <p><strong>Butterfly scheme (Fig. 12).</strong> Triangulate the grid by the diagonals and insert on
 each diagonal</p>
 ${display(`${sub('p̄', 'i , j')}<mo>=</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>(</mo>${sub('p', 'i , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 1')}<mo>)</mo><mo>+</mo><mn>2</mn><mi>w</mi><mo>(</mo>${sub('p', 'i + 1 , j')}<mo>+</mo>${sub('p', 'i , j + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i , j − 1')}<mo>+</mo>${sub('p', 'i − 1 , j')}<mo>+</mo>${sub('p', 'i + 1 , j + 2')}<mo>+</mo>${sub('p', 'i + 2 , j + 1')}<mo>)</mo>`, '16')}
-<p>The paper inserts only these diagonal lines (Fig. 13, "diagonals only").</p>
+<p>The paper inserts only these diagonal lines (Fig. 13, "diagonals only") and gives no value of the
+tension w; ruledlab uses w = 1/16, which reproduces cubic polynomials.</p>
 <p><strong>Variational subdivision (Section 5.2, Fig. 15).</strong> Each row and column of lines is
 a ruled surface: the strip scheme inserts the lines T and S on the edges, and each face gets the
 line whose umbrella vector (20) over its eight neighbours vanishes in every layer: their average.
@@ -157,10 +175,12 @@ paper's scheme ("paper") is bilinear averaging of the four corners (ERRATA.md).<
 <p class="rl-beyond"><strong>Beyond the paper.</strong> "Butterfly, all edges" applies (16)'s stencil
 to the other two edge directions too, so one step doubles the grid. "Two-stage" makes the edge lines
 with ruledlab's coupled strip energy; "coupled" lets all new lines settle together in one sparse
-solve. Measured against the exact congruences at one step (readout: every scheme), the butterfly
-scheme is the most accurate on these examples.</p>
+solve. The readout measures the scheme shown against the exact congruence and, for comparison, the
+four schemes of the menu that refine the whole grid, at one step: the butterfly scheme on all edges is
+the most accurate on these examples.</p>
 <p class="rl-paper-data">Data: Example 5 is the paper's (d₁ = (u, v, ½ sin(2u + 1.5v)), directions
-(u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6). The paper gives no formulas for
+(u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6; read literally, the scheme gives the
+same lines for every K, so K has no effect on the result). The paper gives no formulas for
 Example 4's two congruences; ruledlab's sphere and hyperbolic paraboloid are its own choice, and the
 segment length (0.35 of the direction vector) too.</p>`,
 

@@ -221,7 +221,7 @@ export default {
   'notation.readout.distance': 'signed distance h_{i,i+1}',
   'notation.readout.delta': 'δ_{i,i+1} = h / φ',
   'notation.describe':
-    'Three consecutive rulings of the hyperboloid of Example 1, {spacing} apart in the parameter, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their distance {distance}.',
+    'Three consecutive rulings of the hyperboloid of Example 1, {spacing} apart in the parameter, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their signed distance h_{i,i+1} is {distance} (its absolute value is the distance of the two lines).',
 
   // Propositions 1–2
   'convergence.title': 'Convergence orders (Propositions 1–2)',
@@ -258,6 +258,8 @@ export default {
   'isometry.reason.panels': 'The three-panel view always shows t = 1.',
   'isometry.reason.flat': 'At t = 0 the surface is the original.',
   'isometry.legend.striction': 'striction polygon (in the development: its image)',
+  'isometry.legend.envelope':
+    'in the development: the polygon the rulings envelop, image of the Fig. 3 polygon (dashed)',
   'isometry.legend.ghost': 'original surface (dashed)',
   'isometry.readout.nonDevelopability': 'non-developability (height of the conoidal model)',
   'isometry.readout.isometry': 'max relative change of an edge length',
@@ -283,7 +285,17 @@ export default {
   'curves.legend.refined': 'refined polygon',
   'curves.readout.points': 'points',
   'curves.readout.w': 'tension w',
-  'curves.describe': '{scheme}, {steps:step:steps} on an eight-point polygon: {points} points.',
+  'curves.readout.turning': 'largest turning angle of the polygon drawn (rad)',
+  'curves.readout.turningLate': 'largest turning angle after 8 → 12 steps (rad)',
+  'curves.plot.x': 'steps',
+  'curves.plot.y': 'largest turning angle (rad)',
+  'curves.plot.title': 'Largest turning angle of the refined polygon after each step (logarithmic)',
+  'curves.claim.falls':
+    'On this polygon the largest turning angle is smaller after 12 steps than after 8 for every w with 0 < w ≤ 0.17 (closed) or 0 < w ≤ 0.126 (open).',
+  'curves.claim.sharp':
+    'From w = 0.171 (closed) or w = 0.127 (open) up to 0.2 the polygon still turns by more than 1 rad (57°) somewhere after 12 steps.',
+  'curves.describe':
+    '{scheme}, {steps:step:steps} on an eight-point polygon: {points} points; the largest turning angle is {angle} rad ({late} rad after {last} steps).',
 
   // Figs. 9–10
   'strip.title': 'Variational strip subdivision (Figs. 9–10, Example 3)',
@@ -483,15 +495,15 @@ export default {
   'strip.readout.compare.fourPoint': 'four-point: max distance',
   'strip.claim.literal': 'Read literally, (15) is the midpoint rule: their distances are equal for every n.',
   'strip.claim.coupled':
-    'For n ≥ 6 the coupled energy comes closer to the surface than the midpoint rule (for n = 3, 4 it does not).',
+    'For every n from 5 to 24 (the slider’s range) the coupled energy comes closer to the surface than the midpoint rule; for n = 3, 4 it does not.',
   'strip.claim.fourPoint':
     'The four-point scheme is exact on this surface, the best of all at the worst ruling: its boundary curves are quadratic, which w = 1/16 reproduces.',
-  'congruence.readout.compare.paper': 'paper’s scheme, 1 step: distance / angle',
-  'congruence.readout.compare.two-stage': 'two-stage, 1 step: distance / angle',
-  'congruence.readout.compare.coupled': 'coupled, 1 step: distance / angle',
-  'congruence.readout.compare.butterfly': 'butterfly, 1 step: distance / angle',
+  'congruence.readout.compare.paper': 'for comparison, the paper’s scheme at 1 step: distance / angle',
+  'congruence.readout.compare.two-stage': 'for comparison, two-stage at 1 step: distance / angle',
+  'congruence.readout.compare.coupled': 'for comparison, coupled at 1 step: distance / angle',
+  'congruence.readout.compare.butterfly': 'for comparison, butterfly on all edges at 1 step: distance / angle',
   'congruence.claim.butterfly':
-    'At one step, on each built-in congruence, the butterfly scheme’s new lines are the closest in direction and no farther away than any variational scheme’s.',
+    'At one step, on each built-in congruence, the new lines of the butterfly scheme on all edges are the closest in direction and no farther away than any variational scheme’s.',
   'milling.readout.compare.given': 'given poses only: max |deviation|',
   'milling.readout.compare.variational': 'variational (coupled): max |deviation|',
   'milling.readout.compare.averaged': 'variational (averaged): max |deviation|',
@@ -539,7 +551,7 @@ export default {
   'paper.ex6': 'Example 6: milling',
   'paper.fig1.caption': '“Discrete ruled surface model: Notations.”',
   'paper.fig1.note':
-    'Three consecutive rulings R_{i−1}, R_i, R_{i+1} with the common perpendiculars N_{i,i+1}, the footpoints f_{i,i+1}, f_{i+1,i}, the angle φ_{i,i+1} and the distance h_{i,i+1}. The paper gives no data; ruledlab uses three rulings of Example 1’s hyperboloid (their spacing and position are sliders).',
+    'Three consecutive rulings R_{i−1}, R_i, R_{i+1} with the common perpendiculars N_{i,i+1}, the footpoints f_{i,i+1}, f_{i+1,i}, the angle φ_{i,i+1} and the signed distance h_{i,i+1} (its absolute value is the distance of the two rulings, its sign says how they wind). The paper gives no data; ruledlab uses three rulings of Example 1’s hyperboloid (their spacing and position are sliders).',
   'paper.fig2.caption':
     '“Discrete model of a ruled surface with striction line and sequence of common normals of generators.”',
   'paper.fig2.note':
@@ -555,7 +567,7 @@ export default {
   'paper.fig5.caption':
     '“Left: Ruled helical surface. Right: Isometric conoidal surface. In this case the result is a helical surface whose generators intersect the axis orthogonally.”',
   'paper.fig5.note':
-    'A ruled helical surface bent into its conoidal model. The paper gives no data; ruledlab uses radius 1, pitch 0.4 and rulings at 45°.',
+    'A ruled helical surface bent into its conoidal model. The paper gives no data; ruledlab uses radius 1, pitch 0.4 per radian (z = 0.4 u, so 2π · 0.4 ≈ 2.51 per turn) and rulings at 45°.',
   'paper.fig5-orthogonal.note':
     'The same helix with the rulings turned orthogonal to the striction helix (tan β = −r/p), the case in which the caption holds: the readout ρ tends to 0, the conoidal rulings meet the axis in the limit. The paper gives no data; the surface is ruledlab’s.',
   'paper.fig5.beyond':
@@ -563,43 +575,43 @@ export default {
   'paper.fig6.caption':
     '“Approximate development of a skew ruled surface based on the discrete representation: Left: Discrete model of a skew ruled surface. In the middle: Isometric conoidal discrete model. Right: Projection of the discrete conoidal surface orthogonal to its generators.”',
   'paper.fig6.note':
-    'The three panels of Fig. 6: a strip of Example 1’s hyperboloid, its conoidal model and the development; the readout gives the conoidal model’s height, the non-developability measure. The paper gives no data; the strip (24 rulings, u from 0 to 2.4) is ruledlab’s.',
+    'The three panels of Fig. 6: a strip of Example 1’s hyperboloid, its conoidal model and the development, where the image of the striction polygon is inscribed in the polygon the developed rulings envelop (dashed); the readout gives the conoidal model’s height, the non-developability measure. The paper gives no data; the strip (24 rulings, u from 0 to 2.4) is ruledlab’s.',
   'paper.fig7.caption': '“Chaikin’s algorithm.”',
   'paper.fig7.note':
-    'Four steps of Chaikin’s algorithm, every level drawn. The paper gives no control polygon; ruledlab uses an eight-point star.',
+    'Four steps of Chaikin’s algorithm, every level drawn. The paper gives no control polygon; ruledlab uses eight points in an open zigzag.',
   'paper.fig8.caption': '“Interpolatory subdivision according to Dyn, Levin and Gregory (w = 1/13).”',
   'paper.fig8.note':
-    'Four steps of (8) with the paper’s w = 1/13, exactly (type a fraction in the field beside the slider). The paper gives no control polygon; ruledlab uses an eight-point star.',
+    'Four steps of (8) with the paper’s w = 1/13, exactly (type a fraction in the field beside the slider). The paper gives no control polygon; ruledlab uses eight points in an open zigzag.',
   'paper.fig9.caption': '“Basic notations for a subdivided ruled surface strip, the two different triangulations.”',
   'paper.fig9.note':
     'The notation a_i, b_i, A_i, B_i, z_{i,k}, Z_{i,k} on Example 3’s quartic strip with the first triangulation (11); choose the second (12) in the menu (ruledlab draws one at a time). n = 6 rather than Example 3’s 12, so that the triangles can be read.',
   'paper.fig10.caption':
     '“12 generators taken out of a quartic ruled surface R, 11 lines inserted; light gray spheres centered at A_i, dark gray spheres centered at B_i.”',
   'paper.fig10.note':
-    'Example 3 with the paper’s data: 12 rulings of (1 + vu², u²/2 + uv, u − v), u ∈ [−1, 1] (the interval is ruledlab’s: the paper gives none), n = 12, one step of the energy (15) read literally; spheres at A_i (light) and B_i (dark).',
+    'Example 3 with the paper’s data: 12 rulings of (1 + vu², u²/2 + uv, u − v), n = 12, one step of the energy (15) read literally; spheres at A_i (light) and B_i (dark). The intervals u ∈ [−1, 1] and v ∈ [−1, 1] (the rulings’ ends) are ruledlab’s: the paper gives neither.',
   'paper.strip.beyond':
-    'Read literally, (15) puts umbrella vectors at the new points only, and its minimiser is exactly the midpoint rule (ERRATA.md; checked under the readout). ruledlab’s coupled and averaged energies put them at every vertex; the readout compares every scheme at this n: coupled beats the midpoint rule from n = 6 on, and the four-point scheme is exact on this surface.',
+    'Read literally, (15) puts umbrella vectors at the new points only, and its minimiser is exactly the midpoint rule (ERRATA.md; checked under the readout). ruledlab’s coupled and averaged energies put them at every vertex; the readout compares every scheme at this n: coupled beats the midpoint rule for every n from 5 to 24 (not for n = 3, 4), and the four-point scheme is exact on this surface.',
   'paper.fig11.caption': '“Congruence of lines determined by two directrices.”',
   'paper.fig11.note':
     'Example 5’s lines between the director surface d₁ and d₂, both shaded. The paper’s figure is a sketch; ruledlab takes d₂ as the points p + 0.35 d (the paper gives no segment length, ERRATA.md 9).',
   'paper.fig12.caption': '“The butterfly-scheme.”',
   'paper.fig12.note':
-    'The stencil of (16) is drawn beside the view with all its weights (w = 1/16); the view shows the lines it inserts on the diagonals of Example 5’s grid (one step, as in the paper).',
+    'The stencil of (16) is drawn beside the view with all its weights; the view shows the lines it inserts on the diagonals of Example 5’s grid (one step, as in the paper). The tension w = 1/16 is ruledlab’s choice (it reproduces cubic polynomials): the paper gives no value.',
   'paper.fig13.caption':
     '“Left: part of a sphere with lines of the congruence (black, thin), inserted lines (black, thick). Right: part of a hyperbolic paraboloid, lines of the congruence (black, thin), inserted lines (black, thick).”',
   'paper.fig13.note':
-    'Fig. 13 left: lines inserted on the diagonals only, as the paper does. The paper gives no formulas for Example 4; ruledlab’s sphere carries the directions normal + 0.3 (sin 2v, cos 3u, uv), a generalised offset that is not a normal congruence. Inserted lines are drawn in colour rather than thick black.',
+    'Fig. 13 left: lines inserted on the diagonals only, as the paper does, with w = 1/16 in (16) (ruledlab’s choice: the paper gives no value). The paper gives no formulas for Example 4; ruledlab’s sphere carries the directions normal + 0.3 (sin 2v, cos 3u, uv), a generalised offset that is not a normal congruence. Inserted lines are drawn in colour rather than thick black. The readout measures these diagonal lines; the rows “for comparison” are other schemes (the butterfly row inserts on all edges).',
   'paper.fig13-right.note':
-    'Fig. 13 right: lines inserted on the diagonals only. The paper gives no formulas for Example 4; ruledlab’s hyperbolic paraboloid z = xy carries the directions (−v, −u, 1) + 0.3 (cos 2v, sin u, 0).',
+    'Fig. 13 right: lines inserted on the diagonals only, with w = 1/16 in (16) (ruledlab’s choice: the paper gives no value). The paper gives no formulas for Example 4; ruledlab’s hyperbolic paraboloid z = xy carries the directions (−v, −u, 1) + 0.3 (cos 2v, sin u, 0). The readout measures these diagonal lines; the rows “for comparison” are other schemes (the butterfly row inserts on all edges).',
   'paper.fig14.caption':
     '“Point scheme on directrix surface d₁ (left), part of the congruence with some notations (right).”',
   'paper.fig14.note':
     'The notation of Section 5.2 on one cell of Example 5: the given lines R_{i,j} with their points p on d₁ and q on d₂, the edge lines T_{i,j} (points r, r′) and S_{i,j} (s, s′), and the face line R̄_{i,j} (points P, Q). The index ranges follow ERRATA.md 9.',
   'paper.fig15.caption': '“Discrete congruence of lines (left), inserted lines (black thick) (right).”',
   'paper.fig15.note':
-    'Example 5 with the paper’s data: d₁ = (u, v, ½ sin(2u + 1.5v)), directions (u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6, refined once by the paper’s variational scheme read literally: midpoint edge lines, each face line the average of its eight neighbours (ERRATA.md).',
+    'Example 5 with the paper’s data: d₁ = (u, v, ½ sin(2u + 1.5v)), directions (u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6, refined once by the paper’s variational scheme read literally: midpoint edge lines, each face line the average of its eight neighbours (ERRATA.md). Read so, K has no effect on the result: every K gives the same lines.',
   'paper.congruence.beyond':
-    'Read literally, the energies (15) and (21) give plain averages; ruledlab also offers “two-stage” (its coupled strip energy on the edges), “coupled” (all new lines in one sparse solve) and the butterfly scheme on all edges. The readout compares all four at one step; on every built-in congruence the butterfly scheme is the most accurate (checked under the readout).',
+    'Read literally, the energies (15) and (21) give plain averages; ruledlab also offers “two-stage” (its coupled strip energy on the edges), “coupled” (all new lines in one sparse solve) and the butterfly scheme on all edges. The readout measures the scheme shown and, for comparison, all four at one step; on every built-in congruence the butterfly scheme on all edges is the most accurate (checked under the readout).',
   'paper.fig16.caption': '“First step of the refinement.”',
   'paper.fig16.note':
     'Example 6 after one step: given tool axes dark, inserted ones light, the tool as a ball-end cylinder, the barycentre curve dashed, the swept ball over the part. The paper gives no data; the profile, the seven poses and the tool (radius 0.25, length 1.5) are ruledlab’s.',
@@ -619,15 +631,15 @@ export default {
   'paper.ex3.caption':
     'Example 3: N = 12 generators of the quartic ruled surface (1 + vu², u²/2 + uv, u − v), n = 12, one step of the variational subdivision.',
   'paper.ex3.note':
-    'Example 3 with the paper’s data, the first triangulation and the exact surface shown faintly; the readout measures the distance of the inserted rulings from the surface for every scheme.',
+    'Example 3 with the paper’s data, the first triangulation and the exact surface shown faintly; the readout measures the distance of the inserted rulings from the surface for every scheme. The intervals u ∈ [−1, 1] and v ∈ [−1, 1] (the rulings’ ends) are ruledlab’s: the paper gives neither.',
   'paper.ex4.caption':
     'Example 4: the butterfly scheme on congruences with two different director surfaces d₁; d₂, a generalised offset surface, is not plotted in the paper.',
   'paper.ex4.note':
-    'The sphere of Fig. 13 with lines inserted on the diagonals only, and d₂ (which the paper does not plot) shaded too. The paper gives no formulas for Example 4; the congruence is ruledlab’s.',
+    'The sphere of Fig. 13 with lines inserted on the diagonals only (w = 1/16, ruledlab’s choice: the paper gives no value), and d₂ (which the paper does not plot) shaded too. The paper gives no formulas for Example 4; the congruence is ruledlab’s. The readout measures the diagonal lines shown; the rows “for comparison” are other schemes (the butterfly row inserts on all edges).',
   'paper.ex5.caption':
     'Example 5: d₁ = (u, v, ½ sin(2u + 1.5v)), lines parallel to (u, v, sin u + 1.3 cos v), 8 × 7 values on [−1.1, 1.1]², K = 6.',
   'paper.ex5.note':
-    'Example 5 with the paper’s data, refined once by the paper’s scheme read literally, with both director surfaces (d₂ = p + 0.35 d: the paper gives no segment length).',
+    'Example 5 with the paper’s data, refined once by the paper’s scheme read literally, with both director surfaces (d₂ = p + 0.35 d: the paper gives no segment length). Read literally, K = 6 has no effect on the result: every K gives the same lines (so does ruledlab’s coupled scheme; only two-stage depends on K).',
   'paper.ex6.caption':
     'Example 6: a few positions of a milling tool along a profile, refined into a smooth path by the variational subdivision of Section 4.',
   'paper.ex6.note':

@@ -212,6 +212,7 @@ export const scene = defineScene({
       label: 'legend.perpendicularMidpoints',
       when: (p) => p.tool === 'striction' && !!p.midpoints,
     },
+    { style: 'perpendicularMidpoints', label: 'isometry.legend.envelope', when: (p) => p.tool === 'development' },
     {
       style: 'exact',
       label: 'legend.exactStriction',

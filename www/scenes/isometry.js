@@ -76,6 +76,7 @@ export const scene = defineScene({
   legend: [
     { style: 'ruling', label: 'legend.rulings' },
     { style: 'striction', label: 'isometry.legend.striction' },
+    { style: 'perpendicularMidpoints', label: 'isometry.legend.envelope', when: (p) => p.layout === 'panels' },
     { style: 'normal', label: 'legend.normals', when: (p) => p.layout === 'bend' },
     {
       style: 'ghost',

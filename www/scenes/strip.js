@@ -8,6 +8,8 @@ import { ROUNDING } from '../limits.js';
 import { rulingSet } from '../edit/sets.js';
 
 const U = { uMin: -1, uMax: 1, closed: false };
+/** The least n at which the coupled energy beats the midpoint rule (strip.claim.coupled, measured). */
+const COUPLED_FROM = 5;
 /** The old ruling whose neighbourhood carries the labels of Fig. 9. */
 const LABELLED = 5;
 
@@ -19,9 +21,11 @@ const LABELLED = 5;
  */
 function claimsOf(compare, n) {
   const others = Math.min(compare.literal, compare.coupled, compare.averaged);
+  const coupledBeats = compare.coupled < compare.midpoint;
   return [
     { text: 'strip.claim.literal', holds: Math.abs(compare.literal - compare.midpoint) <= ROUNDING },
-    ...(n >= 6 ? [{ text: 'strip.claim.coupled', holds: compare.coupled < compare.midpoint }] : []),
+    // coupled beats the midpoint rule from n = 5 on, and not for n = 3, 4: one sentence, checked at every n
+    { text: 'strip.claim.coupled', holds: n >= COUPLED_FROM ? coupledBeats : !coupledBeats },
     { text: 'strip.claim.fourPoint', holds: compare.fourPoint < ROUNDING && compare.fourPoint <= others },
   ];
 }
