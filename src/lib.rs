@@ -35,6 +35,7 @@ mod formula;
 mod io;
 mod linalg;
 mod line;
+mod line_fit;
 mod linear_complex;
 mod mesh;
 mod milling;
@@ -54,6 +55,7 @@ pub use error::{
 // shared vocabulary: lines, jets, parameter ranges
 pub use base::{check_coordinates, parameters as sample_parameters, CongruenceJet, Jet, Ranges};
 pub use line::{Line, Segment};
+pub use line_fit::{fit_line, LineFit};
 pub use mesh::{grid_indices, strip_indices, Mesh};
 
 // Section 2: discrete ruled surfaces, their invariants, convergence and accuracy

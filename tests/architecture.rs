@@ -12,7 +12,7 @@ use std::path::Path;
 /// The layers, bottom first. A module may use modules of its own layer's predecessors only.
 const LAYERS: &[&[&str]] = &[
     &["error", "tolerance", "line"],
-    &["base", "formula", "linalg", "linear_complex"],
+    &["base", "formula", "linalg", "linear_complex", "line_fit"],
     &["ruled", "mesh"],
     &["subdivision"],
     &["congruence"],

@@ -8,7 +8,7 @@ use super::catalogue::AnalyticSurface;
 use super::error::{fail, fail_option};
 use crate::catalogue::{self as examples, CongruenceSpec, FormulaSpec};
 use crate::formula::{check, Formula, PARAMETERS};
-use crate::tolerance::MAX_GRID_SIDE;
+use crate::tolerance::{MAX_GRID_SIDE, MAX_SAMPLES};
 use serde::de::{self, Deserializer, Visitor};
 use serde::{Deserialize, Serialize};
 use tsify_next::Tsify;
@@ -287,6 +287,77 @@ impl AnalyticSurface {
         };
         examples::AnalyticSurface::from_formulas(&spec).map(AnalyticSurface::from_core).map_err(|e| fail(F, e))
     }
+}
+
+/// Formulas of one variable to evaluate (`evaluateFormulas`): a reader's answer, such as the
+/// striction curve s(u) typed as three formulas, or δ(u) as one.
+#[derive(Deserialize, Tsify)]
+struct FormulaValues {
+    /// One to three formulas in the variable and a, b, c, e.g. `["u", "0", "0"]`.
+    formulas: Vec<String>,
+    /// The variable: "u" (default), "v" or "t".
+    #[serde(default)]
+    #[tsify(optional, type = "\"u\" | \"v\" | \"t\"")]
+    variable: Option<String>,
+    /// What the field is called in messages (default "f"): an error names "f[1]", the second
+    /// formula.
+    #[serde(default)]
+    #[tsify(optional)]
+    name: Option<String>,
+    #[serde(default)]
+    parameters: FormulaParameters,
+    /// As in `SurfaceFormulas`.
+    #[serde(default, rename = "decimalComma")]
+    #[tsify(type = "boolean | \"unambiguous\"")]
+    decimal_comma: Comma,
+}
+
+/// The values of one to three formulas of one variable at each of `at` (the variable's values):
+/// `formulas.length` numbers per value, NaN where a formula is undefined there (sqrt(−1)). Throws
+/// with the formula and column of a mistake, as `fromFormulas` does.
+#[wasm_bindgen(js_name = evaluateFormulas)]
+pub fn evaluate_formulas(
+    #[wasm_bindgen(unchecked_param_type = "FormulaValues")] options: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] at: JsValue,
+) -> Result<js_sys::Float64Array, JsValue> {
+    const F: &str = "evaluateFormulas";
+    let o: FormulaValues = required(F, "options", options, &[PARAMETER_KEYS])?;
+    if o.formulas.is_empty() || o.formulas.len() > 3 {
+        return Err(fail_option(F, "formulas", format!("one to three formulas, got {}", o.formulas.len())));
+    }
+    let variable = o.variable.unwrap_or_else(|| "u".to_string());
+    if !["u", "v", "t"].contains(&variable.as_str()) {
+        return Err(fail_option(F, "variable", format!("\"u\", \"v\" or \"t\", got \"{variable}\"")));
+    }
+    let name = o.name.unwrap_or_else(|| "f".to_string());
+    if name.len() > 32 || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return Err(fail_option(F, "name", "a name of at most 32 letters, digits or _"));
+    }
+    let at = super::args::numbers(F, "at", &at)?;
+    if at.len() > MAX_SAMPLES {
+        return Err(fail_option(F, "at", format!("at most {MAX_SAMPLES} values, got {}", at.len())));
+    }
+    let parameters = o.parameters.values();
+    if let Some(k) = parameters.iter().position(|x| !x.is_finite()) {
+        return Err(fail_option(F, &format!("parameters.{}", PARAMETERS[k]), "must be a finite number"));
+    }
+    let variables = [variable.as_str(), PARAMETERS[0], PARAMETERS[1], PARAMETERS[2]];
+    let formulas = o
+        .formulas
+        .iter()
+        .enumerate()
+        .map(|(k, text)| {
+            let source = format!("{name}[{k}]");
+            let text = o.decimal_comma.read(F, &source, text)?;
+            Formula::parse(&source, &text, &variables).map_err(|e| fail(F, e))
+        })
+        .collect::<Result<Vec<_>, JsValue>>()?;
+    let mut out = Vec::with_capacity(at.len() * formulas.len());
+    for &x in &at {
+        let vars = [x, parameters[0], parameters[1], parameters[2]];
+        out.extend(formulas.iter().map(|f| f.value(&vars)));
+    }
+    Ok(js_sys::Float64Array::from(&out[..]))
 }
 
 #[wasm_bindgen]

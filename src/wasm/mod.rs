@@ -13,6 +13,7 @@ mod error;
 mod focal;
 mod formula;
 mod io;
+mod line_fit;
 mod linear_complex;
 mod live;
 mod milling;
