@@ -97,7 +97,12 @@ pub use milling::example::{
     exact as example_pose, example as example_tool_path, part_height, part_mesh, profile as example_profile,
     RANGE as EXAMPLE_RANGE,
 };
-pub use milling::export::{gcode, inverse_kinematics, machine_coordinates, parse_gcode, table_rotation, GcodeOptions};
+pub use milling::kinematics::{
+    at_pole, forward as forward_kinematics, inverse as inverse_kinematics, orientations, tool_axis, Joints,
+};
+pub use milling::linearise::{BlockDeviation, Interpolation, Linearisation};
+pub use milling::machine::{AxisName, Carrier, Machine, RotaryAxis, PRESETS as MACHINE_PRESETS};
+pub use milling::post::{program as gcode, Coolant, Dialect, Mode, PostOptions, Program};
 pub use milling::quality::{deviation, Quality};
 pub use milling::{Pose, Tool, ToolEnd, ToolPath};
 

@@ -1,9 +1,9 @@
 //! A tool path of Example 6 as data: CSV (tip x, y, z and unit axis i, j, k per row, after a
 //! comment header with the conventions) and JSON (`{ units, tool, poses: [{ tip, axis }] }`),
 //! numbers in the shortest form that reads back to the same doubles. The G-code post is the
-//! machine's own format (`crate::milling::export`).
+//! machine's own format (`crate::milling::post`).
 
-use crate::milling::export::tool_line;
+use crate::milling::tool_line;
 use crate::milling::{ToolEnd, ToolPath};
 use glam::DVec3;
 use std::fmt::Write;

@@ -8,7 +8,10 @@
 //! envelope of the moving ball, a tube of radius r about the centre curve.
 
 pub mod example;
-pub mod export;
+pub mod kinematics;
+pub mod linearise;
+pub mod machine;
+pub mod post;
 pub mod quality;
 
 use crate::error::{Error, Result};
@@ -117,4 +120,13 @@ impl ToolPath {
         };
         self.poses.iter().map(|p| p.tip + r * p.axis).collect()
     }
+}
+
+/// "ball end, radius r, length L" (model units), for file headers.
+pub(crate) fn tool_line(path: &ToolPath) -> String {
+    let end = match path.tool.end {
+        ToolEnd::Ball => "ball end",
+        ToolEnd::Flat => "flat end",
+    };
+    format!("{end}, radius {}, length {}", path.tool.radius, path.tool.length)
 }
