@@ -41,11 +41,13 @@
  * @property {(segments: Float64Array, options: import('../pkg/ruledlab.js').SubdivideOptions, onProgress: (f: number) => void, draw?: number) => Promise<{segments: Float32Array, rulings: number, drawn: number}>} [refine]
  *   refinement in a Web Worker, for large models (at most `draw` rulings come back: every k-th)
  *
- * Your own segments.
+ * Your own segments, or your tool poses (the milling scene).
  * @typedef {object} ImportedData
- * @property {Float64Array} segments 6 numbers per line
+ * @property {Float64Array} segments 6 numbers per line (tool poses: tip, then tip + unit axis)
  * @property {number} [rows]
  * @property {number} [cols]
+ * @property {boolean} [poses]   tool poses, not segments
+ * @property {{ radius: number, length: number, end: 'ball' | 'flat' }} [tool]   the tool their file names
  *
  * Something to draw: f32 buffers from the core, and a style of theme.js.
  * @typedef {object} Layer

@@ -196,6 +196,10 @@ struct ImportedPoses {
     #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float64Array")]
     axes: Float64Array,
+    /// The axis segments tip → tip + axis, 6 numbers per pose (`ToolPath.fromSegments` reads them).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    segments: Float64Array,
     /// The tool, where the file names one (ruledlab's own files).
     #[serde(skip_serializing_if = "Option::is_none")]
     #[tsify(optional)]
@@ -227,6 +231,28 @@ fn read_post_options(func: &'static str, options: JsValue) -> Result<post::PostO
     } else if let Some(name) = o.machine.as_string() {
         preset(func, &name)?
     } else {
+        // arrays where arrays belong (serde-wasm-bindgen would say "Reflect.get called on non-object")
+        let array = |v: &JsValue, key: &str, path: &str| -> Result<(), JsValue> {
+            let inner = js_sys::Reflect::get(v, &JsValue::from_str(key)).unwrap_or(JsValue::UNDEFINED);
+            if inner.is_undefined() || js_sys::Array::is_array(&inner) {
+                Ok(())
+            } else {
+                Err(fail_option(func, path, format!("{path} must be an array, got {}", args::describe(&inner))))
+            }
+        };
+        if o.machine.is_object() {
+            for key in ["rotary", "travel", "partZero"] {
+                array(&o.machine, key, &format!("machine.{key}"))?;
+            }
+            let rotary = js_sys::Reflect::get(&o.machine, &JsValue::from_str("rotary")).unwrap_or(JsValue::UNDEFINED);
+            if js_sys::Array::is_array(&rotary) {
+                for (k, axis) in js_sys::Array::from(&rotary).iter().enumerate() {
+                    if axis.is_object() {
+                        array(&axis, "pivot", &format!("machine.rotary[{k}].pivot"))?;
+                    }
+                }
+            }
+        }
         args::required(func, "machine", o.machine.clone(), &[])?
     };
     let integer = |name: &'static str, v: Option<f64>, default: u32| -> Result<u32, JsValue> {
@@ -565,7 +591,8 @@ pub fn import_tool_poses(
             milling::ToolEnd::Flat => "flat",
         },
     });
-    to_js(F, &ImportedPoses { tips: flat(&p.tips), axes: flat(&p.axes), tool })
+    let segments: Vec<DVec3> = p.tips.iter().zip(&p.axes).flat_map(|(&t, &a)| [t, t + a]).collect();
+    to_js(F, &ImportedPoses { tips: flat(&p.tips), axes: flat(&p.axes), segments: flat(&segments), tool })
 }
 
 /// What an imported text holds: "poses" (tool poses: JSON with poses or tips, CSV from

@@ -3,6 +3,7 @@
 // machined surface. The part, the envelope and the tool are meshes built by the core.
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
+import { POST_PARAMS, givenPath, postOf, programFile, deviationFigure } from '../figures/toolpath.js';
 
 /** @type {Record<string, Partial<import('../../pkg/ruledlab.js').SubdivideOptions>>} */
 const SCHEMES = {
@@ -51,6 +52,7 @@ export const scene = defineScene({
     },
     { key: 'envelope', label: 'milling.param.envelope', type: 'checkbox', value: true },
     { key: 'part', label: 'milling.param.part', type: 'checkbox', value: true },
+    ...POST_PARAMS,
   ],
   legend: [
     { style: 'exact', label: 'milling.legend.profile' },
@@ -61,26 +63,30 @@ export const scene = defineScene({
     { style: 'tool', label: 'milling.legend.tool', when: (p) => !!p.tool },
     { style: 'part', label: 'milling.legend.part', when: (p) => !!p.part },
   ],
-  create(p, { t }) {
+  create(p, { t, data }) {
     return scoped((own) => {
       const steps = Number(p.steps);
-      const path = own(ToolPath.example(Number(p.poses)));
+      // your imported tool poses, or the example of Figs. 16–18 (its profile and part with it)
+      const { path, imported } = givenPath(own, data, Number(p.poses));
       const refined = own(path.refine({ ...SCHEMES[/** @type {keyof typeof SCHEMES} */ (p.scheme)], steps }));
       const given = path.segmentsF32();
       const all = refined.segmentsF32();
-      const profile = ToolPath.exampleProfile(400);
-      const deviation = maxDeviation(refined, profile);
+      const profile = imported ? null : ToolPath.exampleProfile(400);
+      const deviation = profile ? maxDeviation(refined, profile) : Number.NaN;
       const quality = refined.quality();
       // every scheme's deviation at these steps, for the comparison the text makes (and its claim)
       /** @type {Record<string, number>} */
       const compare = {};
-      for (const [k, o] of Object.entries(SCHEMES))
-        compare[k] = maxDeviation(own(path.refine({ ...o, steps })), profile);
-      const given0 = maxDeviation(path, profile);
+      if (profile)
+        for (const [k, o] of Object.entries(SCHEMES))
+          compare[k] = maxDeviation(own(path.refine({ ...o, steps })), profile);
+      const given0 = profile ? maxDeviation(path, profile) : Number.NaN;
       const centres = refined.barycentres();
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
-        { kind: 'polyline', style: 'exact', positions: f32(profile) },
+        ...(profile
+          ? [/** @type {import('../scene.js').Layer} */ ({ kind: 'polyline', style: 'exact', positions: f32(profile) })]
+          : []),
         { kind: 'segments', style: 'given', positions: given },
         { kind: 'polyline', style: 'barycentre', positions: f32(centres) },
         { kind: 'points', style: 'barycentrePoint', positions: f32(centres) },
@@ -95,31 +101,44 @@ export const scene = defineScene({
         const { positions, indices } = refined.toolMesh(Math.round(Number(p.at) * (refined.length - 1)), 20);
         layers.push({ kind: 'mesh', style: 'tool', positions, indices });
       }
-      if (p.part) {
+      if (p.part && !imported) {
         const { positions, indices } = ToolPath.examplePart(60, 30);
         layers.push({ kind: 'mesh', style: 'part', positions, indices });
       }
+      // the G-code post for the machine, dialect and mode chosen
+      const { result: post, error: postError } = postOf(refined, p);
       const exports = {
         json: refined.export('json'),
         csv: refined.export('csv'),
-        gcode: refined.export('gcode', { scale: 10, feed: 1200 }),
       };
       return {
-        bounds: bounds(given, all, profile),
+        bounds: profile ? bounds(given, all, profile) : bounds(given, all),
         camera: { yaw: -1.9, pitch: 0.55 },
         layers,
         readouts: [
           { label: 'milling.readout.poses', value: refined.length },
-          { label: 'milling.readout.deviation', value: deviation },
+          ...(profile ? [{ label: 'milling.readout.deviation', value: deviation }] : []),
           { label: 'milling.readout.angleStep', value: quality.maxAngleStep },
           { label: 'milling.readout.secondDifference', value: quality.maxSecondDifference },
-          { label: 'milling.readout.compare.given', value: given0 },
-          ...(steps > 0
+          ...(profile ? [{ label: 'milling.readout.compare.given', value: given0 }] : []),
+          ...(steps > 0 && profile
             ? Object.entries(compare).map(([k, v]) => ({ label: `milling.readout.compare.${k}`, value: v }))
             : []),
+          ...(post
+            ? [
+                { label: 'milling.readout.inserted', value: post.inserted },
+                { label: 'milling.readout.linearTip', value: post.before.tip },
+                { label: 'milling.readout.linearAxis', value: post.before.axis },
+              ]
+            : [
+                {
+                  label: 'milling.readout.post',
+                  value: postError instanceof Error ? postError.message : String(postError),
+                },
+              ]),
         ],
         claims: [
-          ...(steps > 0
+          ...(steps > 0 && profile
             ? [
                 {
                   text: 'milling.claim.refined',
@@ -127,7 +146,7 @@ export const scene = defineScene({
                 },
               ]
             : []),
-          ...(steps > 0 && Number(p.poses) >= 7
+          ...(steps > 0 && profile && Number(p.poses) >= 7
             ? [
                 {
                   text: 'milling.claim.variational',
@@ -137,12 +156,25 @@ export const scene = defineScene({
               ]
             : []),
         ],
-        description: t('milling.describe', {
-          poses: Number(p.poses),
-          steps,
-          scheme: t(`milling.scheme.${p.scheme}`),
-          total: refined.length,
-          deviation,
+        description: imported
+          ? t('milling.describeImported', {
+              poses: path.length,
+              steps,
+              scheme: t(`milling.scheme.${p.scheme}`),
+              total: refined.length,
+            })
+          : t('milling.describe', {
+              poses: Number(p.poses),
+              steps,
+              scheme: t(`milling.scheme.${p.scheme}`),
+              total: refined.length,
+              deviation,
+            }),
+        figure: deviationFigure({
+          perPose: profile ? refined.deviationPerPose(profile) : null,
+          stride: 2 ** steps,
+          post,
+          t,
         }),
         downloads: [
           {
@@ -152,7 +184,16 @@ export const scene = defineScene({
             type: 'application/json',
           },
           { label: 'milling.download.csv', filename: 'toolpath.csv', content: exports.csv, type: 'text/csv' },
-          { label: 'milling.download.gcode', filename: 'toolpath.nc', content: exports.gcode, type: 'text/plain' },
+          ...(post
+            ? [
+                {
+                  label: 'milling.download.gcode',
+                  filename: programFile(String(p.dialect)),
+                  content: post.text,
+                  type: 'text/plain',
+                },
+              ]
+            : []),
         ],
         data: { segments: refined.segments() },
       };
