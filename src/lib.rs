@@ -93,7 +93,8 @@ pub use linear_complex::{fit as fit_linear_complex, ComplexKind, LinearComplex};
 
 // Example 6: tool paths for 5-axis milling
 pub use io::toolpath::{
-    looks_like_poses, read_poses as read_tool_poses, write_csv as tool_path_csv, write_json as tool_path_json, ImportedPoses,
+    looks_like_poses, read_poses as read_tool_poses, write_csv as tool_path_csv, write_json as tool_path_json,
+    ImportedPoses,
 };
 pub use milling::example::{
     exact as example_pose, example as example_tool_path, part_height, part_mesh, profile as example_profile,

@@ -8,7 +8,8 @@ use ruledlab::{example_tool_path, gcode, Dialect, Machine, Mode, PostOptions, Pr
 use ruledlab::{Scheme, Variant, MACHINE_PRESETS};
 
 fn programs(dialect: Dialect) -> Vec<(String, Mode, Program)> {
-    let path = example_tool_path(7).unwrap().refine(Scheme::Variational { n: 12, variant: Variant::Coupled }, 2).unwrap();
+    let path =
+        example_tool_path(7).unwrap().refine(Scheme::Variational { n: 12, variant: Variant::Coupled }, 2).unwrap();
     MACHINE_PRESETS
         .iter()
         .flat_map(|name| [Mode::Tcp, Mode::Machine].map(|mode| (name.to_string(), mode)))
@@ -25,7 +26,10 @@ fn programs(dialect: Dialect) -> Vec<(String, Mode, Program)> {
 fn signed(word: &str) -> bool {
     let Some(rest) = word.strip_prefix(['+', '-']) else { return false };
     let (int, frac) = rest.split_once('.').unwrap_or((rest, ""));
-    !int.is_empty() && int.bytes().all(|b| b.is_ascii_digit()) && frac.len() == 4 && frac.bytes().all(|b| b.is_ascii_digit())
+    !int.is_empty()
+        && int.bytes().all(|b| b.is_ascii_digit())
+        && frac.len() == 4
+        && frac.bytes().all(|b| b.is_ascii_digit())
 }
 
 #[test]

@@ -43,7 +43,7 @@
  *
  * Your own segments, or your tool poses (the milling scene).
  * @typedef {object} ImportedData
- * @property {Float64Array} segments 6 numbers per line (tool poses: tip, then tip + unit axis)
+ * @property {Float64Array} segments 6 numbers per line (tool poses: the tip, then the unit axis)
  * @property {number} [rows]
  * @property {number} [cols]
  * @property {boolean} [poses]   tool poses, not segments

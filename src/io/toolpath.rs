@@ -126,7 +126,8 @@ fn read_json(text: &str, number: NumberParser<'_>) -> Result<Read> {
         let (l, c) = at(a);
         Error::parse("json", l, c, m)
     };
-    let field = |fields: &[(String, usize, Value)], k: &str| fields.iter().find(|f| f.0 == k).map(|f| (f.1, f.2.clone()));
+    let field =
+        |fields: &[(String, usize, Value)], k: &str| fields.iter().find(|f| f.0 == k).map(|f| (f.1, f.2.clone()));
     let (poses_at, poses, tool) = match root {
         Value::Object(fields) => {
             let Some((p_at, p)) = field(&fields, "poses") else {
@@ -204,7 +205,10 @@ mod tests {
     #[test]
     fn bad_poses_are_said_where_they_are() {
         let e = read_poses("tip_x,tip_y,tip_z,axis_i,axis_j,axis_k\n0,0,0,0,0,1\n1,0,0,0,0,0\n", false, &rust_number);
-        assert_eq!(e.unwrap_err().to_string(), "csv: line 3: pose 1 has a zero axis (i = j = k = 0), so it has no direction");
+        assert_eq!(
+            e.unwrap_err().to_string(),
+            "csv: line 3: pose 1 has a zero axis (i = j = k = 0), so it has no direction"
+        );
         let e = read_poses("{\"poses\": [{\"tip\": [0, 0, 0]}]}", true, &rust_number).unwrap_err();
         assert!(e.to_string().starts_with("json: line 1, column 12: expected a pose"), "{e}");
         let e = read_poses("[{\"tip\": [0, 0, 0], \"axis\": [0, 0, 1]}]", true, &rust_number).unwrap_err();

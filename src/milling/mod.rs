@@ -85,9 +85,13 @@ impl ToolPath {
         RuledSurface::new(self.poses.iter().map(|p| Segment::new(p.tip, p.tip + self.tool.length * p.axis)).collect())
     }
 
-    /// The path refined by `steps` steps of a strip scheme applied to the axis surface.
+    /// The path refined by `steps` steps of a strip scheme applied to the axis surface (no step:
+    /// the poses as they are, bit for bit).
     pub fn refine(&self, scheme: Scheme, steps: usize) -> Result<ToolPath> {
         let refined = subdivide_strip(&self.axis_surface()?, scheme, false, steps)?;
+        if steps == 0 {
+            return Ok(self.clone());
+        }
         Ok(ToolPath::from_surface(&refined, self.tool))
     }
 

@@ -72,7 +72,10 @@ struct GcodeOptions {
     mode: Option<ModeName>,
     /// A preset's name (default "table-table-ac") or a machine description (`Machine`).
     #[serde(with = "serde_wasm_bindgen::preserve")]
-    #[tsify(type = "\"table-table-ac\" | \"table-table-bc\" | \"head-table-bc\" | \"head-head-ac\" | Machine", optional)]
+    #[tsify(
+        type = "\"table-table-ac\" | \"table-table-bc\" | \"head-table-bc\" | \"head-head-ac\" | Machine",
+        optional
+    )]
     machine: JsValue,
     /// Feed at the tool tip, mm/min (default 1000); blocks that turn a rotary axis get inverse
     /// time (G93) so that the tip keeps it.
@@ -196,10 +199,10 @@ struct ImportedPoses {
     #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float64Array")]
     axes: Float64Array,
-    /// The axis segments tip → tip + axis, 6 numbers per pose (`ToolPath.fromSegments` reads them).
+    /// Tip and unit axis, 6 numbers per pose (what `ToolPath.fromPoses` reads).
     #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float64Array")]
-    segments: Float64Array,
+    poses: Float64Array,
     /// The tool, where the file names one (ruledlab's own files).
     #[serde(skip_serializing_if = "Option::is_none")]
     #[tsify(optional)]
@@ -510,41 +513,45 @@ impl ToolPath {
     /// "table-table-ac", "table-table-bc", "head-table-bc" or "head-head-ac".
     #[wasm_bindgen(unchecked_return_type = "Machine")]
     pub fn machine(
-        #[wasm_bindgen(unchecked_param_type = "\"table-table-ac\" | \"table-table-bc\" | \"head-table-bc\" | \"head-head-ac\"")] name: JsValue,
+        #[wasm_bindgen(
+            unchecked_param_type = "\"table-table-ac\" | \"table-table-bc\" | \"head-table-bc\" | \"head-head-ac\""
+        )]
+        name: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "ToolPath.machine";
         let name = name.as_string().ok_or_else(|| fail(F, "name must be a string: a preset's name"))?;
         to_js(F, &preset(F, &name)?)
     }
 
-    /// A path from tips and axes (3 numbers per pose each; an axis need not be a unit vector)
-    /// and a tool. Throws for different lengths, zero axes, non-finite numbers, fewer than 2 poses.
+    /// A path from 6 numbers per pose: the tip x, y, z and the axis i, j, k (pointing into the
+    /// spindle; it need not be a unit vector, a unit one is kept bit for bit), and a tool. Throws
+    /// for zero axes, non-finite numbers or fewer than 2 poses.
     #[wasm_bindgen(js_name = fromPoses)]
     pub fn from_poses(
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] tips: JsValue,
-        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] axes: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] poses: JsValue,
         #[wasm_bindgen(unchecked_param_type = "ToolOptions")] tool: JsValue,
     ) -> Result<ToolPath, JsValue> {
         const F: &str = "ToolPath.fromPoses";
-        let tips = points_from_flat(&numbers(F, "tips", &tips)?).map_err(|e| fail(F, e))?;
-        let axes = points_from_flat(&numbers(F, "axes", &axes)?).map_err(|e| fail(F, e))?;
+        let rows = numbers(F, "poses", &poses)?;
         let tool = read_tool(F, tool)?;
-        if tips.len() != axes.len() {
-            return Err(fail(F, format!("tips and axes must have as many poses, got {} and {}", tips.len(), axes.len())));
+        if rows.len() % 6 != 0 {
+            return Err(fail(F, Error::BadLength { what: "poses", len: rows.len(), multiple: 6 }));
         }
-        if tips.len() < 2 {
-            return Err(fail(F, Error::TooFew { what: "poses", got: tips.len(), min: 2 }));
+        let points = points_from_flat(&rows).map_err(|e| fail(F, e))?;
+        if points.len() < 4 {
+            return Err(fail(F, Error::TooFew { what: "poses", got: points.len() / 2, min: 2 }));
         }
-        let mut poses = Vec::with_capacity(tips.len());
-        for (k, (t, a)) in tips.iter().zip(&axes).enumerate() {
+        let mut out = Vec::with_capacity(points.len() / 2);
+        for (k, pair) in points.chunks_exact(2).enumerate() {
+            let (t, a) = (pair[0], pair[1]);
             let n = a.length();
             if !(n > 0.0 && (a / n).is_finite()) {
                 return Err(fail(F, format!("tool axis {k} has zero length")));
             }
-            let axis = if (a.length_squared() - 1.0).abs() < 1e-15 { *a } else { *a / n };
-            poses.push(milling::Pose { tip: *t, axis });
+            let axis = if (a.length_squared() - 1.0).abs() < 1e-15 { a } else { a / n };
+            out.push(milling::Pose { tip: t, axis });
         }
-        Ok(ToolPath { inner: milling::ToolPath { poses, tool }, _live: Live::new() })
+        Ok(ToolPath { inner: milling::ToolPath { poses: out, tool }, _live: Live::new() })
     }
 
     /// Per pose: the distance of its cutting centre from the target polyline (3 numbers per
@@ -591,8 +598,8 @@ pub fn import_tool_poses(
             milling::ToolEnd::Flat => "flat",
         },
     });
-    let segments: Vec<DVec3> = p.tips.iter().zip(&p.axes).flat_map(|(&t, &a)| [t, t + a]).collect();
-    to_js(F, &ImportedPoses { tips: flat(&p.tips), axes: flat(&p.axes), segments: flat(&segments), tool })
+    let poses: Vec<DVec3> = p.tips.iter().zip(&p.axes).flat_map(|(&t, &a)| [t, a]).collect();
+    to_js(F, &ImportedPoses { tips: flat(&p.tips), axes: flat(&p.axes), poses: flat(&poses), tool })
 }
 
 /// What an imported text holds: "poses" (tool poses: JSON with poses or tips, CSV from

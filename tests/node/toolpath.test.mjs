@@ -97,7 +97,7 @@ test('tool poses: imported from CSV and JSON, ruledlab exports round trip with t
     assert.deepEqual([...got.tips], [...path.tips()]);
     assert.deepEqual([...got.axes], [...path.axes()]);
     assert.deepEqual(got.tool, { radius: 0.25, length: 1.5, end: 'ball' });
-    const back = ToolPath.fromPoses(got.tips, got.axes, got.tool ?? { radius: 1, length: 1 });
+    const back = ToolPath.fromPoses(got.poses, got.tool ?? { radius: 1, length: 1 });
     assert.equal(back.export(format), text);
   }
   assert.equal(detectImport('0,0,0,1,0,0\n0,0,1,0,1,1'), 'segments');

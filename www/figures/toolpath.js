@@ -53,15 +53,14 @@ export const POST_PARAMS = [
 ];
 
 /**
- * The given path: your imported tool poses (6 numbers per pose: tip, tip + axis) or the example.
+ * The given path: your imported tool poses (6 numbers per pose: tip, axis) or the example.
  * @param {(o: any) => any} own  the scene's scope (frees the object)
  * @param {import('../scene.js').ImportedData | undefined} data
  * @param {number} poses  the example's number of given poses
  * @returns {{ path: import('../../pkg/ruledlab.js').ToolPath, imported: boolean }}
  */
 export function givenPath(own, data, poses) {
-  if (data?.poses)
-    return { path: own(ToolPath.fromSegments(data.segments, data.tool ?? IMPORTED_TOOL)), imported: true };
+  if (data?.poses) return { path: own(ToolPath.fromPoses(data.segments, data.tool ?? IMPORTED_TOOL)), imported: true };
   return { path: own(ToolPath.example(poses)), imported: false };
 }
 

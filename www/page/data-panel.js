@@ -101,11 +101,9 @@ export function dataPanel(stage, { i18n, onData }) {
     try {
       const poses = kind.value === 'poses' || (kind.value === 'auto' && detectImport(text) === 'poses');
       if (poses) {
-        // tool poses as the segments tip → tip + axis (the tool path's own form), with their tool
+        // tool poses: tip and axis, 6 numbers each, with their tool
         const got = importToolPoses(text);
-        data = got.tool
-          ? { segments: got.segments, poses: true, tool: got.tool }
-          : { segments: got.segments, poses: true };
+        data = got.tool ? { segments: got.poses, poses: true, tool: got.tool } : { segments: got.poses, poses: true };
       } else {
         const got = importSegments(text);
         data = { segments: got.segments, rows: got.rows, cols: got.cols };

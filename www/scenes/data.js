@@ -34,7 +34,8 @@ export const scene = defineScene({
   ],
   create(p, ctx) {
     const { t, data } = ctx;
-    const { segments, rows, cols } = data ?? EXAMPLE;
+    // tool poses are the milling scene's
+    const { segments, rows, cols } = data && !data.poses ? data : EXAMPLE;
     return scoped((own) => {
       if (rows && cols) {
         const c = own(LineCongruence.fromGrid(rows, cols, segments));
