@@ -28,7 +28,7 @@ fn rs274() -> Option<String> {
 }
 
 /// The numbers of `NAME(…)` in a line of rs274's canonical output.
-fn call<'a>(line: &'a str, name: &str) -> Option<Vec<f64>> {
+fn call(line: &str, name: &str) -> Option<Vec<f64>> {
     let rest = line.split_once(&format!("{name}("))?.1;
     let inner = rest.strip_suffix(')')?;
     Some(inner.split(',').map(|x| x.trim().parse().unwrap_or(f64::NAN)).collect())

@@ -53,7 +53,7 @@ fn heidenhain_klartext() {
                 ";" => assert!(!block[1..].contains([';', '(', ')'])),
                 "BLK" => assert!(block.starts_with("BLK FORM 0.1 Z X") || block.starts_with("BLK FORM 0.2 X")),
                 "CYCL" => assert_eq!(block, "CYCL DEF 247 DATUM SETTING ~"),
-                "TOOL" => assert_eq!(block, "TOOL CALL 1 Z S10000.0000"),
+                "TOOL" => assert_eq!(block, "TOOL CALL 1 Z S10000"),
                 "FUNCTION" => tcpm.push(block.to_string()),
                 "L" => {
                     // L, coordinates with signs, R0, a feed or FMAX, then M functions

@@ -11,7 +11,7 @@
 //! programs: they follow the TNC 640 user's manual for Klartext programming, checked by a test
 //! of their syntax only.
 
-use super::{clean, number, Context, Coolant, Mode, Op, Rate, Target};
+use super::{clean, number, speed, Context, Coolant, Mode, Op, Rate, Target};
 use std::fmt::Write;
 
 fn axes(t: &Target, c: &Context) -> String {
@@ -64,7 +64,7 @@ pub fn write(ops: &[Op], c: &Context) -> String {
                 let _ = writeln!(g, "  Q339=+{k} ;DATUM NUMBER");
             }
             Op::ToolChange { tool, spindle } => {
-                block(&mut g, &format!("TOOL CALL {tool} Z S{}", number(*spindle, false)));
+                block(&mut g, &format!("TOOL CALL {tool} Z S{}", speed(*spindle)));
                 pending.push("M3");
             }
             Op::RetractTop(z) => {

@@ -5,7 +5,7 @@
 //! its F, as G93 requires) and `G94` otherwise, `M30` at the end. Tool-centre-point mode writes
 //! the same words (LinuxCNC has no `G43.4`; the TCP is the configured kinematics').
 
-use super::{clean, number, Context, Coolant, Op, Rate, Target};
+use super::{clean, number, speed, Context, Coolant, Op, Rate, Target};
 use std::fmt::Write;
 
 fn axes(t: &Target, c: &Context) -> String {
@@ -32,11 +32,11 @@ pub fn write(ops: &[Op], c: &Context) -> String {
         match op {
             Op::Comment(text) => line(&mut g, &format!("({})", clean(text))),
             Op::Start => line(&mut g, "G21 G90 G94 G17 G40 G49 G80"),
-            Op::WorkOffset(k) => line(&mut g, &["G54", "G55", "G56", "G57", "G58", "G59"][(*k as usize - 1).min(5)]),
+            Op::WorkOffset(k) => line(&mut g, ["G54", "G55", "G56", "G57", "G58", "G59"][(*k as usize - 1).min(5)]),
             Op::ToolChange { tool, spindle } => {
                 line(&mut g, &format!("T{tool} M6"));
                 line(&mut g, &format!("G43 H{tool}"));
-                line(&mut g, &format!("S{} M3", number(*spindle, false)));
+                line(&mut g, &format!("S{} M3", speed(*spindle)));
             }
             Op::RetractTop(z) => line(&mut g, &format!("G53 G0 Z{}", number(*z, false))),
             Op::Rotate(r) => line(

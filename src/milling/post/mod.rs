@@ -233,6 +233,15 @@ pub fn number(x: f64, plus: bool) -> String {
     }
 }
 
+/// A spindle speed: a whole number as one ("10000"), else with the program's decimals.
+pub fn speed(x: f64) -> String {
+    if x.fract() == 0.0 {
+        format!("{x}")
+    } else {
+        number(x, false)
+    }
+}
+
 /// A comment's text made safe for every dialect: printable ASCII without parentheses or `;`.
 pub fn clean(text: &str) -> String {
     text.chars()
@@ -428,12 +437,19 @@ fn header(path: &ToolPath, o: &PostOptions, l: &Linearisation, n: usize, safe: f
         }
     };
     let mm = |x: f64| number(x, false);
+    let feed = match (o.dialect, o.mode) {
+        (Dialect::Heidenhain, Mode::Tcp) => "F at the tip with FUNCTION TCPM F TCP".to_string(),
+        (Dialect::Heidenhain, Mode::Machine) => {
+            "rotary moves get the F of X Y Z that keeps the feed at the tip".to_string()
+        }
+        _ => "inverse time G93 on rotary moves".to_string(),
+    };
     [
         format!("ruledlab tool path: {n} poses, {} of the path and {} inserted", n - l.inserted, l.inserted),
         format!("machine {}", o.machine.describe()),
         mode.to_string(),
         format!(
-            "units mm, {} mm per model unit, feed {} mm/min at the tip, inverse time on rotary moves, approach {} mm/min",
+            "units mm, {} mm per model unit, feed {} mm/min at the tip, {feed}, approach {} mm/min",
             o.scale, o.feed, approach
         ),
         format!("tool {}: {end}, radius {} mm, length {} mm", o.tool, mm(path.tool.radius * o.scale), mm(path.tool.length * o.scale)),

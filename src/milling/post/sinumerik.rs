@@ -8,7 +8,7 @@
 //! Siemens' programming manual (fundamentals and job planning), checked by a test of their
 //! syntax only.
 
-use super::{clean, number, Context, Coolant, Mode, Op, Rate, Target};
+use super::{clean, number, speed, Context, Coolant, Mode, Op, Rate, Target};
 use crate::tolerance::GCODE_VECTOR_DECIMALS;
 use std::fmt::Write;
 
@@ -55,7 +55,7 @@ pub fn write(ops: &[Op], c: &Context) -> String {
             Op::WorkOffset(k) => block(&mut g, ["G54", "G55", "G56", "G57", "G505", "G506"][(*k as usize - 1).min(5)]),
             Op::ToolChange { tool, spindle } => {
                 block(&mut g, &format!("T{tool} D1 M6"));
-                block(&mut g, &format!("S{} M3", number(*spindle, false)));
+                block(&mut g, &format!("S{} M3", speed(*spindle)));
             }
             Op::RetractTop(z) => block(&mut g, &format!("G0 SUPA Z{}", number(*z, false))),
             Op::Rotate(r) => block(
