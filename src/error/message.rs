@@ -271,7 +271,7 @@ pub const CATALOGUE: &[(&str, &str)] = &[
     ("import-too-few-poses", "{found} pose(s): at least 2 are needed (a tool path has two poses or more)"),
     ("json-poses-missing", "an object needs a \"poses\" array"),
     ("json-poses-array", "poses must be an array"),
-    ("json-pose", "expected a pose { \"tip\": [x, y, z], \"axis\": [i, j, k] }"),
+    ("json-pose", "expected a pose: an object with \"tip\": [x, y, z] and \"axis\": [i, j, k]"),
     // the G-code post (src/milling)
     ("pose-orientation", "pose {pose}: no setting of the rotary axes of {machine} gives this tool axis"),
     ("pose-unreachable", "pose {pose} cannot be reached: {axis} would be {value}, outside its limits {min} to {max}"),

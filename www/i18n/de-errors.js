@@ -191,7 +191,7 @@ export default {
   'error.import-too-few-poses': '{found} Lage(n): mindestens 2 sind nötig (eine Werkzeugbahn hat zwei Lagen oder mehr)',
   'error.json-poses-missing': 'Ein Objekt braucht ein Feld „poses“',
   'error.json-poses-array': '„poses“ muss ein Array sein',
-  'error.json-pose': 'Eine Lage { "tip": [x, y, z], "axis": [i, j, k] } erwartet',
+  'error.json-pose': 'Eine Lage erwartet: ein Objekt mit "tip": [x, y, z] und "axis": [i, j, k]',
   'error.pose-orientation': 'Lage {pose}: Keine Stellung der Drehachsen von {machine} ergibt diese Werkzeugachse',
   'error.pose-unreachable':
     'Lage {pose} ist nicht erreichbar: {axis} wäre {value}, außerhalb der Grenzen {min} bis {max}',

@@ -195,7 +195,7 @@ export default {
   'error.import-too-few-poses': '{found} pose(s): at least 2 are needed (a tool path has two poses or more)',
   'error.json-poses-missing': 'an object needs a "poses" array',
   'error.json-poses-array': 'poses must be an array',
-  'error.json-pose': 'expected a pose { "tip": [x, y, z], "axis": [i, j, k] }',
+  'error.json-pose': 'expected a pose: an object with "tip": [x, y, z] and "axis": [i, j, k]',
   'error.pose-orientation': 'pose {pose}: no setting of the rotary axes of {machine} gives this tool axis',
   'error.pose-unreachable': 'pose {pose} cannot be reached: {axis} would be {value}, outside its limits {min} to {max}',
   'error.linearisation-tolerance':
