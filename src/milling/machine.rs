@@ -130,7 +130,10 @@ impl RotaryAxis {
     }
 }
 
-/// A five-axis machine: see the module documentation.
+/// A five-axis machine for the G-code post: its two rotary axes (`rotary`, the first of the
+/// chain from the base first), the travel of X, Y, Z and where the part's zero sits on the table.
+/// Lengths in mm, angles in degrees; at zero the part frame is the machine frame moved by
+/// `partZero`, and the tool points along +Z (README, "For CAM").
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase", deny_unknown_fields))]
