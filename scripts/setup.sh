@@ -2,7 +2,9 @@
 # Installs what ruledlab needs to build (and, with --browser, to test), skipping whatever
 # is already there: the wasm32 target, wasm-bindgen-cli at exactly Cargo.lock's version,
 # the npm packages, and with --browser Debian's chromium and chromium-driver, firefox-esr with
-# xvfb, geckodriver and cargo-fuzz.
+# xvfb, geckodriver, cargo-fuzz and LinuxCNC's G-code interpreter rs274 (Debian's
+# linuxcnc-uspace without its recommends: just under a minute and ~85 packages, Tcl/Tk and Python
+# among them; with the recommends it would pull a realtime kernel).
 # Only package registries are used; nothing downloads a binary or a browser of its own.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -50,6 +52,13 @@ if [ "${1:-}" = "--browser" ]; then
     sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq firefox-esr xvfb xauth >/dev/null
+  fi
+  # LinuxCNC's own interpreter reads the LinuxCNC programs of the G-code post (tests/controller.rs)
+  if ! command -v rs274 >/dev/null; then
+    say "installing Debian's linuxcnc-uspace for rs274, LinuxCNC's G-code interpreter (just under a minute once)"
+    sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends linuxcnc-uspace >/dev/null
   fi
   if ! command -v geckodriver >/dev/null; then
     say "installing geckodriver 0.37 from crates.io (about two minutes once)"

@@ -32,8 +32,8 @@ cargo clippy --quiet --all-targets -- -D warnings
 cargo clippy --quiet --target wasm32-unknown-unknown --lib --tests -- -D warnings
 RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps
 
-step "native: cargo test"
-cargo test --all-targets
+step "native: cargo test (with LinuxCNC's rs274 reading the G-code: tests/controller.rs)"
+RULEDLAB_REQUIRE_RS274=1 cargo test --all-targets
 cargo test --doc
 
 step "build: pkg/"

@@ -95,13 +95,21 @@ pub use congruence::{
 pub use linear_complex::{fit as fit_linear_complex, ComplexKind, LinearComplex};
 
 // Example 6: tool paths for 5-axis milling
-pub use io::toolpath::{write_csv as tool_path_csv, write_json as tool_path_json};
+pub use io::toolpath::{
+    looks_like_poses, read_poses as read_tool_poses, write_csv as tool_path_csv, write_json as tool_path_json,
+    ImportedPoses,
+};
 pub use milling::example::{
     exact as example_pose, example as example_tool_path, part_height, part_mesh, profile as example_profile,
     RANGE as EXAMPLE_RANGE,
 };
-pub use milling::export::{gcode, inverse_kinematics, machine_coordinates, parse_gcode, table_rotation, GcodeOptions};
-pub use milling::quality::{deviation, Quality};
+pub use milling::kinematics::{
+    at_pole, forward as forward_kinematics, inverse as inverse_kinematics, orientations, tool_axis, Joints,
+};
+pub use milling::linearise::{BlockDeviation, Interpolation, Linearisation};
+pub use milling::machine::{AxisName, Carrier, Machine, RotaryAxis, PRESETS as MACHINE_PRESETS};
+pub use milling::post::{program as gcode, Coolant, Dialect, Mode, PostOptions, Program};
+pub use milling::quality::{deviation, deviation_per_pose, Quality};
 pub use milling::{Pose, Tool, ToolEnd, ToolPath};
 
 // reading and writing segments

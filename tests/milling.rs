@@ -4,7 +4,7 @@
 use glam::DVec3;
 use ruledlab::{deviation, Quality};
 use ruledlab::{example_profile, example_tool_path, Pose, Tool, ToolEnd, ToolPath};
-use ruledlab::{gcode, machine_coordinates, parse_gcode, GcodeOptions};
+use ruledlab::{forward_kinematics, gcode, inverse_kinematics, Machine, PostOptions};
 use ruledlab::{Scheme, Variant};
 
 #[cfg(target_family = "wasm")]
@@ -51,34 +51,34 @@ fn refinement_improves_the_profile_and_the_orientation() {
     assert!(qf.max_angle_step() < 0.05);
 }
 
-/// G-code round trip: parsing the G1 moves and inverting the kinematics gives back every pose
-/// (6 decimals in mm and degrees: tips within 2e-6, axes within 1e-7).
+/// The post's program: its poses are the refined path's (scaled to mm) with inserted ones, its
+/// axis values give them back through the forward kinematics, the safe moves stay above the cut.
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
-fn gcode_round_trip() {
+fn gcode_program_gives_back_the_path() {
     let path = example_tool_path(7).unwrap().refine(VARIATIONAL, 2).unwrap();
-    let o = GcodeOptions { feed: 800.0, scale: 10.0, clearance: 5.0 };
-    let text = gcode(&path, o).unwrap();
-    assert!(text.starts_with("(ruledlab tool path, 25 poses)"));
+    let o = PostOptions { feed: 800.0, scale: 10.0, ..Default::default() };
+    let program = gcode(&path, &o).unwrap();
+    let text = &program.text;
+    assert!(text.starts_with("(ruledlab tool path: "), "{text}");
     assert!(text.contains("G21 G90 G94") && text.trim_end().ends_with("M30"));
-    let back = parse_gcode(&text, o.scale).unwrap();
-    assert_eq!(back.len(), path.poses.len());
-    for (p, q) in path.poses.iter().zip(&back) {
-        assert!((p.tip - q.tip).length() < 2e-6, "{} vs {}", p.tip, q.tip);
-        assert!((p.axis - q.axis).length() < 1e-7);
+    assert!(text.contains("T1 M6\nG43 H1\nS10000 M3") && text.contains("G93 G1"));
+    let length = 10.0 * path.tool.length;
+    for (p, j) in program.poses.iter().zip(&program.joints) {
+        let q = forward_kinematics(&o.machine, j, length);
+        assert!((p.tip - q.tip).length() < 1e-9 && (p.axis - q.axis).length() < 1e-12);
     }
-    // the safe moves are above every cutting move
-    let z: Vec<f64> = machine_coordinates(&path, o.scale).iter().map(|m| m[2]).collect();
-    let safe: f64 = text.lines().find(|l| l.starts_with("G0 Z")).unwrap()[4..].parse().unwrap();
-    assert!(z.iter().all(|&v| v + 4.99 < safe));
+    assert_eq!(program.poses.len(), path.poses.len() + program.linearisation.inserted);
+    // the first rapid after the retract is at the safe height, on the first pose's tool axis
+    let safe = program.poses.iter().map(|p| p.tip.z).fold(f64::NEG_INFINITY, f64::max) + 30.0;
+    assert!(text.contains(&format!("(safe height {safe:.4} mm above the part zero")), "{safe}");
 }
 
-/// A path whose axis turns twice around the vertical keeps C continuous (unwrapped) and
-/// survives the round trip; a vertical axis (the pole) holds C.
+/// A path whose axis turns twice around the vertical keeps C continuous (unwrapped); a vertical
+/// axis (the pole) holds C.
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn angle_wrap_and_pole() {
-    let tool = Tool::new(0.2, 2.0, ToolEnd::Flat).unwrap();
     let mut poses: Vec<Pose> = (0..=60)
         .map(|k| {
             let t = k as f64 / 60.0 * 4.0 * std::f64::consts::PI;
@@ -86,17 +86,14 @@ fn angle_wrap_and_pole() {
         })
         .collect();
     poses.push(Pose { tip: DVec3::new(1.0, 0.0, 1.5), axis: DVec3::Z });
-    let path = ToolPath { poses, tool };
-    let m = machine_coordinates(&path, 1.0);
-    for w in m.windows(2) {
-        assert!((w[1][4] - w[0][4]).abs() < 15.0, "C jumps {} → {}", w[0][4], w[1][4]);
+    let m = Machine::preset("table-table-ac").unwrap();
+    let j = inverse_kinematics(&m, &poses, 20.0).unwrap();
+    for w in j.windows(2) {
+        assert!((w[1].rotary[1] - w[0].rotary[1]).abs() < 15.0, "C jumps {:?} → {:?}", w[0], w[1]);
     }
-    assert_eq!(m[61][4], m[60][4], "C held at the pole");
-    assert_eq!(m[61][3], 0.0);
-    let back = parse_gcode(&gcode(&path, GcodeOptions::default()).unwrap(), 1.0).unwrap();
-    for (p, q) in path.poses.iter().zip(&back) {
-        assert!((p.tip - q.tip).length() < 2e-6 && (p.axis - q.axis).length() < 1e-7);
-    }
+    assert!((j[60].rotary[1] - j[0].rotary[1]).abs() > 700.0, "two turns of C");
+    assert_eq!(j[61].rotary[1], j[60].rotary[1], "C held at the pole");
+    assert!(j[61].rotary[0].abs() < 1e-12);
 }
 
 /// Bad tools and options are rejected.
@@ -108,6 +105,16 @@ fn rejects_bad_tools_and_options() {
     assert!(Tool::new(f64::NAN, 1.0, ToolEnd::Ball).is_err());
     assert!(Tool::new(0.1, f64::INFINITY, ToolEnd::Ball).is_err());
     let path = example_tool_path(3).unwrap();
-    assert!(gcode(&path, GcodeOptions { feed: 0.0, ..Default::default() }).is_err());
-    assert!(gcode(&path, GcodeOptions { scale: f64::NAN, ..Default::default() }).is_err());
+    let bad = |o: PostOptions| gcode(&path, &o).unwrap_err().to_string();
+    assert_eq!(
+        bad(PostOptions { feed: 0.0, ..Default::default() }),
+        "feed: must be a positive number of at most 1e7, got 0"
+    );
+    assert!(bad(PostOptions { scale: f64::NAN, ..Default::default() }).starts_with("scale: must be a positive"));
+    assert!(bad(PostOptions { tolerance: 1e-6, ..Default::default() }).starts_with("tolerance: must be at least"));
+    assert!(bad(PostOptions { work_offset: 7, ..Default::default() }).starts_with("workOffset: must be an integer"));
+    assert!(
+        bad(PostOptions { safe_height: Some(-5.0), ..Default::default() }).starts_with("safeHeight: must be at least")
+    );
+    assert!(bad(PostOptions { name: "a b".into(), ..Default::default() }).starts_with("name: must be 1 to 24"));
 }

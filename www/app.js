@@ -79,8 +79,13 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     });
   const data = dataPanel(stage, {
     i18n: () => i18n,
+    // tool poses go to the milling scene, segments to "Your data"
     onData: (imported) =>
-      go(/** @type {import('./scene.js').Scene} */ (SCENES.find((s) => s.id === 'data')), {}, { data: imported }),
+      go(
+        /** @type {import('./scene.js').Scene} */ (SCENES.find((s) => s.id === (imported.poses ? 'milling' : 'data'))),
+        {},
+        { data: imported },
+      ),
   });
 
   /** Texts of the page in the current language. */

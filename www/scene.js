@@ -70,11 +70,13 @@
  * @property {string} from           what the built-in input is, in words ("the hyperboloid of
  *   Example 1, 36 rulings"): the page says "edited from: …"
  *
- * Your own segments.
+ * Your own segments, or your tool poses (the milling scene).
  * @typedef {object} ImportedData
- * @property {Float64Array} segments 6 numbers per line
+ * @property {Float64Array} segments 6 numbers per line (tool poses: the tip, then the unit axis)
  * @property {number} [rows]
  * @property {number} [cols]
+ * @property {boolean} [poses]   tool poses, not segments
+ * @property {{ radius: number, length: number, end: 'ball' | 'flat' }} [tool]   the tool their file names
  *
  * Something to draw: f32 buffers from the core, and a style of theme.js.
  * @typedef {object} Layer

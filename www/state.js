@@ -126,9 +126,13 @@ export function linkable(/** @type {import('./scene.js').ImportedData} */ data) 
   return data.segments.length / 6 <= MAX_LINK_RULINGS;
 }
 
-/** "rows x cols:" (for a congruence) then the numbers, comma-separated, at full precision. */
+/**
+ * "rows x cols:" (for a congruence) or "p:" (tool poses; "p radius~length~b|f:" with their
+ * tool) then the numbers, comma-separated, at full precision.
+ */
 export function writeData(/** @type {import('./scene.js').ImportedData} */ data) {
-  const shape = data.rows && data.cols ? `${data.rows}x${data.cols}:` : '';
+  const tool = data.tool ? `${data.tool.radius}~${data.tool.length}~${data.tool.end === 'flat' ? 'f' : 'b'}` : '';
+  const shape = data.poses ? `p${tool}:` : data.rows && data.cols ? `${data.rows}x${data.cols}:` : '';
   return shape + Array.from(data.segments, (x) => String(x)).join(',');
 }
 
@@ -138,11 +142,18 @@ export function writeData(/** @type {import('./scene.js').ImportedData} */ data)
  * @returns {import('./scene.js').ImportedData | null}
  */
 export function readData(text) {
-  const m = /^(?:(\d{1,4})x(\d{1,4}):)?([-+0-9.eE,]*)$/.exec(text);
-  if (!m) return null;
+  const poses = /^p(?:([0-9.eE+]+)~([0-9.eE+]+)~([bf]))?:(.*)$/.exec(text);
+  const m = /^(?:(\d{1,4})x(\d{1,4}):)?([-+0-9.eE,]*)$/.exec(poses ? poses[4] : text);
+  if (!m || (poses && m[1])) return null;
   const numbers = m[3].split(',').map(Number);
   if (numbers.length % 6 !== 0 || numbers.length / 6 > MAX_LINK_RULINGS || !numbers.every(Number.isFinite)) return null;
   const segments = new Float64Array(numbers);
+  if (poses) {
+    const [radius, length] = [Number(poses[1]), Number(poses[2])];
+    const tool =
+      poses[1] && radius > 0 && length > 0 ? { radius, length, end: poses[3] === 'f' ? 'flat' : 'ball' } : null;
+    return tool ? { segments, poses: true, tool: /** @type {any} */ (tool) } : { segments, poses: true };
+  }
   if (m[1]) {
     const [rows, cols] = [Number(m[1]), Number(m[2])];
     if (rows * cols * 6 !== numbers.length) return null;

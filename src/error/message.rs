@@ -266,6 +266,20 @@ pub const CATALOGUE: &[(&str, &str)] = &[
     ("json-segment", "expected [ax, ay, az, bx, by, bz]"),
     ("json-whole-segments", "{count} numbers are not a whole number of segments (6 each)"),
     ("json-grid-count", "a {rows} × {cols} grid needs {need} segments, found {found}"),
+    // tool poses (src/io/toolpath.rs)
+    ("import-zero-axis", "pose {record} has a zero axis (i = j = k = 0), so it has no direction"),
+    ("import-too-few-poses", "{found} pose(s): at least 2 are needed (a tool path has two poses or more)"),
+    ("json-poses-missing", "an object needs a \"poses\" array"),
+    ("json-poses-array", "poses must be an array"),
+    ("json-pose", "expected a pose: an object with \"tip\": [x, y, z] and \"axis\": [i, j, k]"),
+    // the G-code post (src/milling)
+    ("pose-orientation", "pose {pose}: no setting of the rotary axes of {machine} gives this tool axis"),
+    ("pose-unreachable", "pose {pose} cannot be reached: {axis} would be {value}, outside its limits {min} to {max}"),
+    (
+        "linearisation-tolerance",
+        "between poses {pose} and {next} the controller's linear interpolation still strays {deviation} mm from the path after {rounds} rounds of inserted poses (tolerance {tolerance} mm): the rotary axes turn over or pass the pole there",
+    ),
+    ("retract-horizontal", "pose {pose}: the tool axis is too close to horizontal to retract along it to the safe height"),
 ];
 
 #[cfg(test)]

@@ -130,6 +130,14 @@ pub enum Error {
         /// Iterations spent.
         iterations: usize,
     },
+    /// A tool pose a machine cannot serve: beyond an axis limit, or a path the controller's
+    /// linear interpolation cannot follow within the tolerance (the G-code post).
+    Unreachable {
+        /// The pose (0-based, in the path given to the post).
+        pose: usize,
+        /// What is out of reach, and by how much.
+        message: Message,
+    },
     /// A linear system that should be symmetric positive definite but is not (numerically).
     Singular {
         /// Which system.
@@ -282,7 +290,8 @@ impl Error {
             Error::ZeroLength { ruling } => crate::msg!("zero-length", ruling = *ruling),
             Error::InvalidParameter { message, .. }
             | Error::Parse { message, .. }
-            | Error::Degenerate { message, .. } => message.clone(),
+            | Error::Degenerate { message, .. }
+            | Error::Unreachable { message, .. } => message.clone(),
             Error::TextLimit { what, got, max, .. } => {
                 crate::msg!("text-too-long", what = *what, got = *got, max = *max)
             }
@@ -318,6 +327,7 @@ impl Error {
     /// | `degenerate` | geometry without the quantity asked for (zero-length ruling, e(u) = 0, …) |
     /// | `not-converged` | an iterative solver missed its tolerance |
     /// | `singular` | a system that should be positive definite is not |
+    /// | `unreachable` | a tool pose beyond a machine's limits, or a path its interpolation cannot follow |
     pub fn code(&self) -> &'static str {
         match self {
             Error::BadLength { .. } | Error::InvalidParameter { .. } => "invalid-argument",
@@ -329,6 +339,7 @@ impl Error {
             Error::Parse { .. } => "parse-error",
             Error::NotConverged { .. } => "not-converged",
             Error::Singular { .. } => "singular",
+            Error::Unreachable { .. } => "unreachable",
         }
     }
 
@@ -359,6 +370,7 @@ impl Error {
             Error::Degenerate { what, .. } | Error::NotFiniteAt { what, .. } => d.option = Some(what.clone()),
             Error::NotConverged { iterations, .. } => d.limit = Some(*iterations as f64),
             Error::Singular { pivot, .. } => d.index = Some(*pivot),
+            Error::Unreachable { pose, .. } => d.index = Some(*pose),
         }
         let message = self.message();
         d.reason = Some(message.reason);

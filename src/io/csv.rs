@@ -19,6 +19,14 @@ pub fn parse(text: &str) -> Result<Imported> {
 
 /// As [`parse`], converting numbers with `number` (see [`NumberParser`]).
 pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
+    let (coords, lines) = rows_with(text, number)?;
+    super::check_records("csv", &coords, |k| (lines.get(k).copied(), None))?;
+    Ok(Imported { coords, grid: None })
+}
+
+/// The rows of six numbers (flat) and the 1-based line of each, checked for syntax only (the
+/// tool poses of `io/toolpath.rs` read the same rows as tip and axis).
+pub fn rows_with(text: &str, number: NumberParser<'_>) -> Result<(Vec<f64>, Vec<usize>)> {
     if text.len() > MAX_IMPORT_TEXT {
         return Err(Error::TooMany { what: "bytes of CSV", got: text.len(), max: MAX_IMPORT_TEXT });
     }
@@ -84,8 +92,7 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
     if coords.is_empty() {
         return Err(Error::parse("csv", None, None, msg!("csv-no-data")));
     }
-    super::check_records("csv", &coords, |k| (lines.get(k).copied(), None))?;
-    Ok(Imported { coords, grid: None })
+    Ok((coords, lines))
 }
 
 /// Writes flat coordinates as CSV with a header (shortest round-trip number format).

@@ -13,8 +13,9 @@ use crate::error::{Error, Message, Result};
 use crate::msg;
 use crate::tolerance::{MAX_IMPORT_TEXT, MAX_JSON_DEPTH, MAX_RULINGS};
 
+/// A parsed JSON value; arrays and objects keep the byte offset of each item.
 #[derive(Debug, Clone, PartialEq)]
-enum Value {
+pub(crate) enum Value {
     Null,
     Bool,
     Number(f64),
@@ -159,6 +160,21 @@ impl<'a> Parser<'a> {
         };
         Ok((start, v))
     }
+}
+
+/// Parses JSON text into a [`Value`] (the tool poses of `io/toolpath.rs`), with the size and
+/// nesting limits of [`parse`].
+pub(crate) fn value_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<(usize, Value)> {
+    if text.len() > MAX_IMPORT_TEXT {
+        return Err(Error::TooMany { what: "bytes of JSON", got: text.len(), max: MAX_IMPORT_TEXT });
+    }
+    let mut p = Parser { text, bytes: text.as_bytes(), at: 0, numbers: 0, number };
+    let root = p.value(0)?;
+    p.skip_space();
+    if p.at < text.len() {
+        return Err(p.fail(p.at, msg!("json-trailing")));
+    }
+    Ok(root)
 }
 
 /// Parses JSON text into flat coordinates (and a grid shape if given).

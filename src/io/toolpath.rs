@@ -1,10 +1,14 @@
 //! A tool path of Example 6 as data: CSV (tip x, y, z and unit axis i, j, k per row, after a
 //! comment header with the conventions) and JSON (`{ units, tool, poses: [{ tip, axis }] }`),
 //! numbers in the shortest form that reads back to the same doubles. The G-code post is the
-//! machine's own format (`crate::milling::export`).
+//! machine's own format (`crate::milling::post`). Tool poses are read back from both, and from
+//! CSV or JSON of tips and axes written elsewhere ([`read_poses`]).
 
-use crate::milling::export::tool_line;
-use crate::milling::{ToolEnd, ToolPath};
+use crate::error::{Error, Result};
+use crate::io::json::{self, Value};
+use crate::io::{position, NumberParser};
+use crate::milling::tool_line;
+use crate::milling::{Tool, ToolEnd, ToolPath};
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -35,4 +39,179 @@ pub fn write_json(path: &ToolPath) -> String {
         path.tool.length,
         poses.join(",\n")
     )
+}
+
+/// Tool poses read from a file: tips, unit axes, and the tool when the file names one.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImportedPoses {
+    /// Tool tips.
+    pub tips: Vec<DVec3>,
+    /// Unit tool axes (normalised as read).
+    pub axes: Vec<DVec3>,
+    /// The tool of ruledlab's own files (CSV header, JSON `tool`).
+    pub tool: Option<Tool>,
+}
+
+/// Whether a text looks like tool poses rather than segments: JSON with `"poses"` or `"tip"`;
+/// CSV from ruledlab's tool-path export (`# ruledlab tool path`) or whose header names a tip or
+/// an axis (`tip_x,…,axis_k`).
+pub fn looks_like_poses(text: &str) -> bool {
+    let t = text.trim_start();
+    if t.starts_with(['[', '{']) {
+        return t.contains("\"poses\"") || t.contains("\"tip\"");
+    }
+    for line in t.lines().map(str::trim).filter(|l| !l.is_empty()) {
+        if line.starts_with("# ruledlab tool path") {
+            return true;
+        }
+        if line.starts_with('#') {
+            continue;
+        }
+        let l = line.to_ascii_lowercase();
+        return l.contains("tip") || l.contains("axis");
+    }
+    false
+}
+
+fn tool_from_header(text: &str) -> Option<Tool> {
+    let line = text.lines().find(|l| l.trim_start().starts_with("# ruledlab tool path"))?;
+    let after = line.split("tool:").nth(1)?;
+    let end = if after.contains("flat end") { ToolEnd::Flat } else { ToolEnd::Ball };
+    let value = |key: &str| -> Option<f64> { after.split(key).nth(1)?.split(',').next()?.trim().parse().ok() };
+    Tool::new(value("radius")?, value("length")?, end).ok()
+}
+
+fn pose_axis(source: &str, k: usize, axis: DVec3, at: (Option<usize>, Option<usize>)) -> Result<DVec3> {
+    if axis.length_squared() > 0.0 && axis.is_finite() && axis.normalize().is_finite() {
+        // a unit vector as written (ruledlab's own files) is kept bit for bit
+        Ok(if (axis.length_squared() - 1.0).abs() < 1e-15 { axis } else { axis.normalize() })
+    } else {
+        Err(Error::parse(source, at.0, at.1, crate::msg!("import-zero-axis", record = k)))
+    }
+}
+
+/// Reads tool poses from CSV (tip x, y, z and axis i, j, k per row; the axis need not be a
+/// unit vector; an optional header; `#` comments, ruledlab's own naming the tool) or JSON
+/// (`{ "poses": [{ "tip": [x, y, z], "axis": [i, j, k] }, …], "tool"?: { "end", "radius",
+/// "length" } }` or the array of poses alone). At least two poses; no zero axis.
+pub fn read_poses(text: &str, json: bool, number: NumberParser<'_>) -> Result<ImportedPoses> {
+    let (tips, axes, tool) = if json { read_json(text, number)? } else { read_csv(text, number)? };
+    if tips.len() < 2 {
+        let source = if json { "json" } else { "csv" };
+        return Err(Error::parse(source, None, None, crate::msg!("import-too-few-poses", found = tips.len())));
+    }
+    Ok(ImportedPoses { tips, axes, tool })
+}
+
+type Read = (Vec<DVec3>, Vec<DVec3>, Option<Tool>);
+
+fn read_csv(text: &str, number: NumberParser<'_>) -> Result<Read> {
+    let (coords, lines) = crate::io::csv::rows_with(text, number)?;
+    let mut tips = Vec::with_capacity(coords.len() / 6);
+    let mut axes = Vec::with_capacity(coords.len() / 6);
+    for (k, r) in coords.chunks_exact(6).enumerate() {
+        tips.push(DVec3::new(r[0], r[1], r[2]));
+        axes.push(pose_axis("csv", k, DVec3::new(r[3], r[4], r[5]), (lines.get(k).copied(), None))?);
+    }
+    Ok((tips, axes, tool_from_header(text)))
+}
+
+fn read_json(text: &str, number: NumberParser<'_>) -> Result<Read> {
+    let (root_at, root) = json::value_with(text, number)?;
+    let at = |a: usize| {
+        let (l, c) = position(text, a);
+        (Some(l), Some(c))
+    };
+    let fail = |a: usize, m: crate::error::Message| {
+        let (l, c) = at(a);
+        Error::parse("json", l, c, m)
+    };
+    let field =
+        |fields: &[(String, usize, Value)], k: &str| fields.iter().find(|f| f.0 == k).map(|f| (f.1, f.2.clone()));
+    let (poses_at, poses, tool) = match root {
+        Value::Object(fields) => {
+            let Some((p_at, p)) = field(&fields, "poses") else {
+                return Err(fail(root_at, crate::msg!("json-poses-missing")));
+            };
+            let tool = match field(&fields, "tool") {
+                Some((_, Value::Object(t))) => {
+                    let num = |k: &str| match field(&t, k) {
+                        Some((_, Value::Number(x))) => Some(x),
+                        _ => None,
+                    };
+                    let end = match field(&t, "end") {
+                        Some((_, Value::String(s))) if s == "flat" => ToolEnd::Flat,
+                        _ => ToolEnd::Ball,
+                    };
+                    num("radius").zip(num("length")).and_then(|(r, l)| Tool::new(r, l, end).ok())
+                }
+                _ => None,
+            };
+            (p_at, p, tool)
+        }
+        other => (root_at, other, None),
+    };
+    let Value::Array(items) = poses else {
+        return Err(fail(poses_at, crate::msg!("json-poses-array")));
+    };
+    let (mut tips, mut axes) = (Vec::with_capacity(items.len()), Vec::with_capacity(items.len()));
+    let vector = |v: Option<(usize, Value)>, a: usize| -> Result<DVec3> {
+        match v {
+            Some((_, Value::Array(xs))) if xs.len() == 3 => {
+                let mut out = [0.0; 3];
+                for (k, (xa, x)) in xs.iter().enumerate() {
+                    match x {
+                        Value::Number(x) => out[k] = *x,
+                        _ => return Err(fail(*xa, crate::msg!("json-number"))),
+                    }
+                }
+                Ok(DVec3::from(out))
+            }
+            _ => Err(fail(a, crate::msg!("json-pose"))),
+        }
+    };
+    for (k, (item_at, item)) in items.iter().enumerate() {
+        let Value::Object(fields) = item else {
+            return Err(fail(*item_at, crate::msg!("json-pose")));
+        };
+        tips.push(vector(field(fields, "tip"), *item_at)?);
+        axes.push(pose_axis("json", k, vector(field(fields, "axis"), *item_at)?, at(*item_at))?);
+    }
+    Ok((tips, axes, tool))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::rust_number;
+    use crate::milling::example::example;
+
+    #[test]
+    fn csv_and_json_round_trip_with_the_tool() {
+        let path = example(5).unwrap();
+        for (text, json) in [(write_csv(&path), false), (write_json(&path), true)] {
+            assert!(looks_like_poses(&text));
+            let back = read_poses(&text, json, &rust_number).unwrap();
+            assert_eq!(back.tool, Some(path.tool));
+            for (k, p) in path.poses.iter().enumerate() {
+                assert_eq!(back.tips[k], p.tip);
+                assert_eq!(back.axes[k], p.axis);
+            }
+        }
+        assert!(!looks_like_poses("0,0,0,1,0,0\n0,0,1,0,1,1\n"));
+        assert!(!looks_like_poses("{ \"segments\": [] }"));
+    }
+
+    #[test]
+    fn bad_poses_are_said_where_they_are() {
+        let e = read_poses("tip_x,tip_y,tip_z,axis_i,axis_j,axis_k\n0,0,0,0,0,1\n1,0,0,0,0,0\n", false, &rust_number);
+        assert_eq!(
+            e.unwrap_err().to_string(),
+            "csv: line 3: pose 1 has a zero axis (i = j = k = 0), so it has no direction"
+        );
+        let e = read_poses("{\"poses\": [{\"tip\": [0, 0, 0]}]}", true, &rust_number).unwrap_err();
+        assert!(e.to_string().starts_with("json: line 1, column 12: expected a pose"), "{e}");
+        let e = read_poses("[{\"tip\": [0, 0, 0], \"axis\": [0, 0, 1]}]", true, &rust_number).unwrap_err();
+        assert!(e.to_string().contains("at least 2"), "{e}");
+    }
 }

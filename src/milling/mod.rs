@@ -8,7 +8,10 @@
 //! envelope of the moving ball, a tube of radius r about the centre curve.
 
 pub mod example;
-pub mod export;
+pub mod kinematics;
+pub mod linearise;
+pub mod machine;
+pub mod post;
 pub mod quality;
 
 use crate::error::{Error, Result};
@@ -82,9 +85,13 @@ impl ToolPath {
         RuledSurface::new(self.poses.iter().map(|p| Segment::new(p.tip, p.tip + self.tool.length * p.axis)).collect())
     }
 
-    /// The path refined by `steps` steps of a strip scheme applied to the axis surface.
+    /// The path refined by `steps` steps of a strip scheme applied to the axis surface (no step:
+    /// the poses as they are, bit for bit).
     pub fn refine(&self, scheme: Scheme, steps: usize) -> Result<ToolPath> {
         let refined = subdivide_strip(&self.axis_surface()?, scheme, false, steps)?;
+        if steps == 0 {
+            return Ok(self.clone());
+        }
         Ok(ToolPath::from_surface(&refined, self.tool))
     }
 
@@ -117,4 +124,13 @@ impl ToolPath {
         };
         self.poses.iter().map(|p| p.tip + r * p.axis).collect()
     }
+}
+
+/// "ball end, radius r, length L" (model units), for file headers.
+pub(crate) fn tool_line(path: &ToolPath) -> String {
+    let end = match path.tool.end {
+        ToolEnd::Ball => "ball end",
+        ToolEnd::Flat => "flat end",
+    };
+    format!("{end}, radius {}, length {}", path.tool.radius, path.tool.length)
 }

@@ -49,6 +49,19 @@ pub fn deviation(path: &ToolPath, targets: &[DVec3]) -> Vec<f64> {
         .collect()
 }
 
+/// Per pose of the path: the distance of its cutting centre from the target polyline minus r
+/// (for a ball end, how far the ball stands off the target curve at that pose: > 0 material
+/// left, < 0 a gouge; 0 where the ball touches it) — the deviation along the path.
+pub fn deviation_per_pose(path: &ToolPath, targets: &[DVec3]) -> Vec<f64> {
+    path.cutting_centres()
+        .iter()
+        .map(|&c| {
+            let d = targets.windows(2).map(|w| distance_to_segment(c, w[0], w[1])).fold(f64::INFINITY, f64::min);
+            d - path.tool.radius
+        })
+        .collect()
+}
+
 fn distance_to_segment(q: DVec3, a: DVec3, b: DVec3) -> f64 {
     let ab = b - a;
     let t = if ab.length_squared() > 0.0 { ((q - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0) } else { 0.0 };

@@ -3,7 +3,7 @@
 use super::args::{self, fail, fail_option, finite_option, numbers, to_js};
 use super::live::Live;
 use crate::error::Error;
-use crate::milling::{self, example, export, quality};
+use crate::milling::{self, example, machine, post, quality};
 use crate::ruled::surface::points_from_flat;
 use crate::ruled::RuledSurface;
 use crate::tolerance::{MAX_EXAMPLE_POSES, MAX_SAMPLES};
@@ -67,16 +67,242 @@ enum ToolEndName {
     Flat,
 }
 
-/// Options of `ToolPath.export`: G-code only.
+/// Options of `ToolPath.export("gcode", …)` and `ToolPath.post`: the controller, the machine,
+/// the feeds and the safe moves (README, "For CAM"). Every option is optional.
 #[derive(Deserialize, Default, Tsify)]
-#[serde(default)]
+#[serde(default, rename_all = "camelCase")]
 struct GcodeOptions {
-    /// Feed rate, mm/min (default 1000).
+    /// The controller's language: "linuxcnc" (default; rs274ngc), "heidenhain" (TNC Klartext)
+    /// or "sinumerik" (Siemens 840D).
+    #[tsify(optional)]
+    dialect: Option<DialectName>,
+    /// "machine" (default): X Y Z are machine coordinates computed with the machine's pivots and
+    /// offsets (work offset 0); "tcp": tool-centre point, the controller does the kinematics
+    /// (FUNCTION TCPM, TRAORI, a TCP kinematics on LinuxCNC), X Y Z the tip in part coordinates.
+    #[tsify(optional)]
+    mode: Option<ModeName>,
+    /// A preset's name (default "table-table-ac") or a machine description (`Machine`).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(
+        type = "\"table-table-ac\" | \"table-table-bc\" | \"head-table-bc\" | \"head-head-ac\" | Machine",
+        optional
+    )]
+    machine: JsValue,
+    /// Feed at the tool tip, mm/min (default 1000); blocks that turn a rotary axis get inverse
+    /// time (G93) so that the tip keeps it.
+    #[tsify(optional)]
     feed: Option<f64>,
+    /// Feed of the approach and retract along the tool axis, mm/min (default feed / 4).
+    #[tsify(optional)]
+    approach_feed: Option<f64>,
     /// Millimetres per model unit (default 1).
+    #[tsify(optional)]
     scale: Option<f64>,
-    /// Clearance above the highest point of the path for the safe moves, mm (default 5).
+    /// Tool number, 1–99999 (default 1): T…, its length offset (G43 H…, D1, TOOL CALL).
+    #[tsify(optional)]
+    tool: Option<f64>,
+    /// Spindle speed, 1/min (default 10000).
+    #[tsify(optional)]
+    spindle: Option<f64>,
+    /// "flood" (default, M8), "mist" (M7) or "off".
+    #[tsify(optional)]
+    coolant: Option<CoolantName>,
+    /// Work offset 1–6: G54–G59 (Sinumerik G54–G57, G505, G506; Heidenhain datum 1–6; default 1).
+    #[tsify(optional)]
+    work_offset: Option<f64>,
+    /// Part height (mm above the part's zero) of the points on the first and last tool axes where
+    /// the safe moves turn (default 25 mm above the highest tip plus the clearance).
+    #[tsify(optional)]
+    safe_height: Option<f64>,
+    /// Distance along the tool axis covered at the approach feed, mm (default 5).
+    #[tsify(optional)]
     clearance: Option<f64>,
+    /// Largest deviation of the controller's linear interpolation from the path, mm (default
+    /// 0.01): blocks beyond it are halved.
+    #[tsify(optional)]
+    tolerance: Option<f64>,
+    /// Program name (Heidenhain, Sinumerik): letters, digits, _ (default "RULEDLAB").
+    #[tsify(optional)]
+    name: Option<String>,
+}
+
+/// The controller's language.
+#[derive(Deserialize, Clone, Copy, Tsify)]
+#[serde(rename_all = "kebab-case", expecting = "\"linuxcnc\", \"heidenhain\" or \"sinumerik\"")]
+enum DialectName {
+    /// LinuxCNC (rs274ngc).
+    Linuxcnc,
+    /// Heidenhain TNC plain text.
+    Heidenhain,
+    /// Siemens Sinumerik 840D.
+    Sinumerik,
+}
+
+/// Who does the kinematics.
+#[derive(Deserialize, Clone, Copy, Tsify)]
+#[serde(rename_all = "kebab-case", expecting = "\"tcp\" or \"machine\"")]
+enum ModeName {
+    /// The controller (tool-centre point).
+    Tcp,
+    /// ruledlab (machine coordinates).
+    Machine,
+}
+
+/// The coolant of the cut.
+#[derive(Deserialize, Clone, Copy, Tsify)]
+#[serde(rename_all = "kebab-case", expecting = "\"flood\", \"mist\" or \"off\"")]
+enum CoolantName {
+    /// M8.
+    Flood,
+    /// M7.
+    Mist,
+    /// None.
+    Off,
+}
+
+/// The deviations of one kind, mm.
+#[derive(Serialize, Tsify)]
+struct Deviation {
+    /// Of the tool tip from the chord between two poses.
+    tip: f64,
+    /// Of the tool axis from the great-circle arc, times the tool length.
+    axis: f64,
+}
+
+/// A G-code program with what the post did: `ToolPath.post`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+struct PostResult {
+    /// The program.
+    text: String,
+    /// Poses of the cut: the path's and the inserted ones.
+    poses: usize,
+    /// Poses the linearisation inserted.
+    inserted: usize,
+    /// The tolerance, mm.
+    tolerance: f64,
+    /// The largest deviations before inserting poses.
+    before: Deviation,
+    /// The largest deviations of the program.
+    after: Deviation,
+    /// Per block of the program: the tip's deviation, mm.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    block_tip: Float64Array,
+    /// Per block: the axis's deviation times the tool length, mm.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    block_axis: Float64Array,
+    /// Per pose of the program: where it lies on the path (k + s between poses k and k + 1).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    origin: Float64Array,
+}
+
+/// Tool poses read by `importToolPoses`.
+#[derive(Serialize, Tsify)]
+struct ImportedPoses {
+    /// Tips, 3 numbers per pose.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    tips: Float64Array,
+    /// Unit axes, 3 numbers per pose.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    axes: Float64Array,
+    /// Tip and unit axis, 6 numbers per pose (what `ToolPath.fromPoses` reads).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    poses: Float64Array,
+    /// The tool, where the file names one (ruledlab's own files).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    tool: Option<ToolOut>,
+}
+
+/// A tool as a file names it.
+#[derive(Serialize, Tsify)]
+struct ToolOut {
+    radius: f64,
+    length: f64,
+    /// "ball" or "flat".
+    #[tsify(type = "\"ball\" | \"flat\"")]
+    end: &'static str,
+}
+
+fn preset(func: &str, name: &str) -> Result<machine::Machine, JsValue> {
+    machine::Machine::preset(name).ok_or_else(|| {
+        let known: Vec<String> = machine::PRESETS.iter().map(|p| format!("\"{p}\"")).collect();
+        fail_option(func, "machine", format!("machine: unknown preset \"{name}\", expected {}", known.join(", ")))
+    })
+}
+
+fn read_post_options(func: &'static str, options: JsValue) -> Result<post::PostOptions, JsValue> {
+    let o: GcodeOptions = args::options(func, options)?;
+    let d = post::PostOptions::default();
+    let machine = if o.machine.is_undefined() || o.machine.is_null() {
+        d.machine.clone()
+    } else if let Some(name) = o.machine.as_string() {
+        preset(func, &name)?
+    } else {
+        // arrays where arrays belong (serde-wasm-bindgen would say "Reflect.get called on non-object")
+        let array = |v: &JsValue, key: &str, path: &str| -> Result<(), JsValue> {
+            let inner = js_sys::Reflect::get(v, &JsValue::from_str(key)).unwrap_or(JsValue::UNDEFINED);
+            if inner.is_undefined() || js_sys::Array::is_array(&inner) {
+                Ok(())
+            } else {
+                Err(fail_option(func, path, format!("{path} must be an array, got {}", args::describe(&inner))))
+            }
+        };
+        if o.machine.is_object() {
+            for key in ["rotary", "travel", "partZero"] {
+                array(&o.machine, key, &format!("machine.{key}"))?;
+            }
+            let rotary = js_sys::Reflect::get(&o.machine, &JsValue::from_str("rotary")).unwrap_or(JsValue::UNDEFINED);
+            if js_sys::Array::is_array(&rotary) {
+                for (k, axis) in js_sys::Array::from(&rotary).iter().enumerate() {
+                    if axis.is_object() {
+                        array(&axis, "pivot", &format!("machine.rotary[{k}].pivot"))?;
+                    }
+                }
+            }
+        }
+        args::required(func, "machine", o.machine.clone(), &[])?
+    };
+    let integer = |name: &'static str, v: Option<f64>, default: u32| -> Result<u32, JsValue> {
+        match finite_option(func, name, v)? {
+            None => Ok(default),
+            Some(x) if x.fract() == 0.0 && (0.0..=1e9).contains(&x) => Ok(x as u32),
+            Some(x) => Err(fail_option(func, name, format!("{name}: must be an integer, got {x}"))),
+        }
+    };
+    Ok(post::PostOptions {
+        dialect: match o.dialect {
+            None | Some(DialectName::Linuxcnc) => post::Dialect::LinuxCnc,
+            Some(DialectName::Heidenhain) => post::Dialect::Heidenhain,
+            Some(DialectName::Sinumerik) => post::Dialect::Sinumerik,
+        },
+        mode: match o.mode {
+            None | Some(ModeName::Machine) => post::Mode::Machine,
+            Some(ModeName::Tcp) => post::Mode::Tcp,
+        },
+        machine,
+        feed: finite_option(func, "feed", o.feed)?.unwrap_or(d.feed),
+        approach_feed: finite_option(func, "approachFeed", o.approach_feed)?,
+        scale: finite_option(func, "scale", o.scale)?.unwrap_or(d.scale),
+        tool: integer("tool", o.tool, d.tool)?,
+        spindle: finite_option(func, "spindle", o.spindle)?.unwrap_or(d.spindle),
+        coolant: match o.coolant {
+            None | Some(CoolantName::Flood) => post::Coolant::Flood,
+            Some(CoolantName::Mist) => post::Coolant::Mist,
+            Some(CoolantName::Off) => post::Coolant::Off,
+        },
+        work_offset: integer("workOffset", o.work_offset, d.work_offset)?,
+        safe_height: finite_option(func, "safeHeight", o.safe_height)?,
+        clearance: finite_option(func, "clearance", o.clearance)?.unwrap_or(d.clearance),
+        tolerance: finite_option(func, "tolerance", o.tolerance)?.unwrap_or(d.tolerance),
+        name: o.name.unwrap_or(d.name),
+    })
 }
 
 /// Orientation smoothness of a tool path.
@@ -253,8 +479,9 @@ impl ToolPath {
         Ok(Float64Array::from(&quality::deviation(&self.inner, &t)[..]))
     }
 
-    /// The path as text: "json" or "csv" (poses, full precision), or "gcode" for a table-table
-    /// A–C machine (see `GcodeOptions`; conventions in the file's header).
+    /// The path as text: "json" or "csv" (poses, full precision), or "gcode": a program for a
+    /// five-axis controller (see `GcodeOptions`; what it assumes in the file's header and the
+    /// README's "For CAM").
     pub fn export(
         &self,
         #[wasm_bindgen(unchecked_param_type = "\"json\" | \"csv\" | \"gcode\"")] format: JsValue,
@@ -262,23 +489,148 @@ impl ToolPath {
     ) -> Result<String, JsValue> {
         const F: &str = "ToolPath.export";
         let format = format.as_string().unwrap_or_default();
-        let o: GcodeOptions = args::options(F, options)?;
-        if format != "gcode" && (o.feed.is_some() || o.scale.is_some() || o.clearance.is_some()) {
-            return Err(fail(F, "feed, scale and clearance apply to the \"gcode\" format only"));
-        }
         match format.as_str() {
+            "json" | "csv" if !(options.is_undefined() || options.is_null()) => {
+                Err(fail(F, "the options (feed, scale, machine, …) apply to the \"gcode\" format only"))
+            }
             "json" => Ok(crate::io::toolpath::write_json(&self.inner)),
             "csv" => Ok(crate::io::toolpath::write_csv(&self.inner)),
             "gcode" => {
-                let d = export::GcodeOptions::default();
-                let g = export::GcodeOptions {
-                    feed: finite_option(F, "feed", o.feed)?.unwrap_or(d.feed),
-                    scale: finite_option(F, "scale", o.scale)?.unwrap_or(d.scale),
-                    clearance: finite_option(F, "clearance", o.clearance)?.unwrap_or(d.clearance),
-                };
-                export::gcode(&self.inner, g).map_err(|e| fail(F, e))
+                let o = read_post_options(F, options)?;
+                post::program(&self.inner, &o).map(|p| p.text).map_err(|e| fail(F, e))
             }
             _ => Err(fail(F, format!("format must be \"json\", \"csv\" or \"gcode\", got \"{format}\""))),
         }
     }
+
+    /// The G-code program (as `export("gcode", options)`) with what the post did: the poses it
+    /// inserted and the deviation of every block from the path (the linearisation check).
+    #[wasm_bindgen(unchecked_return_type = "PostResult")]
+    pub fn post(
+        &self,
+        #[wasm_bindgen(unchecked_optional_param_type = "GcodeOptions")] options: JsValue,
+    ) -> Result<JsValue, JsValue> {
+        const F: &str = "ToolPath.post";
+        let o = read_post_options(F, options)?;
+        let p = post::program(&self.inner, &o).map_err(|e| fail(F, e))?;
+        let l = &p.linearisation;
+        let tip: Vec<f64> = l.blocks.iter().map(|b| b.tip).collect();
+        let axis: Vec<f64> = l.blocks.iter().map(|b| b.axis).collect();
+        to_js(
+            F,
+            &PostResult {
+                text: p.text,
+                poses: p.poses.len(),
+                inserted: l.inserted,
+                tolerance: l.tolerance,
+                before: Deviation { tip: l.before.tip, axis: l.before.axis },
+                after: Deviation { tip: l.after.tip, axis: l.after.axis },
+                block_tip: Float64Array::from(&tip[..]),
+                block_axis: Float64Array::from(&axis[..]),
+                origin: Float64Array::from(&p.origin[..]),
+            },
+        )
+    }
+
+    /// A preset machine's description (`Machine`, the JSON a custom machine is written in):
+    /// "table-table-ac", "table-table-bc", "head-table-bc" or "head-head-ac".
+    #[wasm_bindgen(unchecked_return_type = "Machine")]
+    pub fn machine(
+        #[wasm_bindgen(
+            unchecked_param_type = "\"table-table-ac\" | \"table-table-bc\" | \"head-table-bc\" | \"head-head-ac\""
+        )]
+        name: JsValue,
+    ) -> Result<JsValue, JsValue> {
+        const F: &str = "ToolPath.machine";
+        let name = name.as_string().ok_or_else(|| fail(F, "name must be a string: a preset's name"))?;
+        to_js(F, &preset(F, &name)?)
+    }
+
+    /// A path from 6 numbers per pose: the tip x, y, z and the axis i, j, k (pointing into the
+    /// spindle; it need not be a unit vector, a unit one is kept bit for bit), and a tool. Throws
+    /// for zero axes, non-finite numbers or fewer than 2 poses.
+    #[wasm_bindgen(js_name = fromPoses)]
+    pub fn from_poses(
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] poses: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "ToolOptions")] tool: JsValue,
+    ) -> Result<ToolPath, JsValue> {
+        const F: &str = "ToolPath.fromPoses";
+        let rows = numbers(F, "poses", &poses)?;
+        let tool = read_tool(F, tool)?;
+        if rows.len() % 6 != 0 {
+            return Err(fail(F, Error::BadLength { what: "poses", len: rows.len(), multiple: 6 }));
+        }
+        let points = points_from_flat(&rows).map_err(|e| fail(F, e))?;
+        if points.len() < 4 {
+            return Err(fail(F, Error::TooFew { what: "poses", got: points.len() / 2, min: 2 }));
+        }
+        let mut out = Vec::with_capacity(points.len() / 2);
+        for (k, pair) in points.chunks_exact(2).enumerate() {
+            let (t, a) = (pair[0], pair[1]);
+            let n = a.length();
+            if !(n > 0.0 && (a / n).is_finite()) {
+                return Err(fail(F, format!("tool axis {k} has zero length")));
+            }
+            let axis = if (a.length_squared() - 1.0).abs() < 1e-15 { a } else { a / n };
+            out.push(milling::Pose { tip: t, axis });
+        }
+        Ok(ToolPath { inner: milling::ToolPath { poses: out, tool }, _live: Live::new() })
+    }
+
+    /// Per pose: the distance of its cutting centre from the target polyline (3 numbers per
+    /// point) minus the tool radius (> 0 material left, < 0 a gouge): the deviation along the path.
+    #[wasm_bindgen(js_name = deviationPerPose)]
+    pub fn deviation_per_pose(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] targets: JsValue,
+    ) -> Result<Float64Array, JsValue> {
+        const F: &str = "ToolPath.deviationPerPose";
+        let t = points_from_flat(&numbers(F, "targets", &targets)?).map_err(|e| fail(F, e))?;
+        if t.len() < 2 {
+            return Err(fail(F, Error::TooFew { what: "target points", got: t.len(), min: 2 }));
+        }
+        Ok(Float64Array::from(&quality::deviation_per_pose(&self.inner, &t)[..]))
+    }
+}
+
+/// Reads tool poses from CSV (tip x, y, z, axis i, j, k per row) or JSON (`{ poses: [{ tip,
+/// axis }], tool? }`), ruledlab's own tool-path files included (with their tool). `format`
+/// defaults to JSON when the text starts with `[` or `{`, else CSV.
+#[wasm_bindgen(js_name = importToolPoses, unchecked_return_type = "ImportedPoses")]
+pub fn import_tool_poses(
+    #[wasm_bindgen(unchecked_param_type = "string")] text: JsValue,
+    #[wasm_bindgen(unchecked_optional_param_type = "\"csv\" | \"json\"")] format: JsValue,
+) -> Result<JsValue, JsValue> {
+    const F: &str = "importToolPoses";
+    let Some(text) = text.as_string() else {
+        return Err(fail(F, format!("text must be a string, got {}", args::describe(&text))));
+    };
+    let json = match format.as_string().as_deref() {
+        None if format.is_undefined() || format.is_null() => text.trim_start().starts_with(['[', '{']),
+        Some("json") => true,
+        Some("csv") => false,
+        _ => return Err(fail(F, format!("format must be \"csv\" or \"json\", got {}", args::describe(&format)))),
+    };
+    let number = |t: &str| js_sys::parse_float(t);
+    let p = crate::io::toolpath::read_poses(&text, json, &number).map_err(|e| fail(F, e))?;
+    let tool = p.tool.map(|t| ToolOut {
+        radius: t.radius,
+        length: t.length,
+        end: match t.end {
+            milling::ToolEnd::Ball => "ball",
+            milling::ToolEnd::Flat => "flat",
+        },
+    });
+    let poses: Vec<DVec3> = p.tips.iter().zip(&p.axes).flat_map(|(&t, &a)| [t, a]).collect();
+    to_js(F, &ImportedPoses { tips: flat(&p.tips), axes: flat(&p.axes), poses: flat(&poses), tool })
+}
+
+/// What an imported text holds: "poses" (tool poses: JSON with poses or tips, CSV from
+/// ruledlab's tool-path export or with a tip/axis header) or "segments".
+#[wasm_bindgen(js_name = detectImport, unchecked_return_type = "\"poses\" | \"segments\"")]
+pub fn detect_import(#[wasm_bindgen(unchecked_param_type = "string")] text: JsValue) -> Result<String, JsValue> {
+    let Some(text) = text.as_string() else {
+        return Err(fail("detectImport", format!("text must be a string, got {}", args::describe(&text))));
+    };
+    Ok(if crate::io::toolpath::looks_like_poses(&text) { "poses" } else { "segments" }.to_string())
 }

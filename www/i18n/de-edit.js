@@ -101,4 +101,7 @@ export default {
     'Ihre Bearbeitung der neun gegebenen Erzeugenden von {surface}; gegenüber den Erzeugenden, die die Verfahren aus der unverschobenen Fläche machen, drehten sich die neuen Erzeugenden des Endpunktverfahrens um bis zu {endpointTurn} rad, die des Geradenraum-Verfahrens um {lineTurn}.',
   'milling.describeEdited':
     'Ihre Bearbeitung der {poses} gegebenen Lagen eines Kugelfräsers, verfeinert mit {steps:Schritt:Schritten} „{scheme}“ zu {total} Lagen; die gefräste Fläche verfehlt das Sollprofil um höchstens {deviation}.',
+  'edit.from.importedPoses': 'Ihre {poses} importierten Werkzeuglagen',
+  'milling.describeImportedEdited':
+    'Ihre Bearbeitung von {poses} importierten Werkzeuglagen, verfeinert mit {steps:Schritt:Schritten} „{scheme}“ zu {total} Lagen.',
 };

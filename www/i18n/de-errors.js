@@ -188,4 +188,16 @@ export default {
   'error.json-segment': '[ax, ay, az, bx, by, bz] erwartet',
   'error.json-whole-segments': '{count} Zahlen ergeben keine ganze Zahl von Strecken (je 6)',
   'error.json-grid-count': 'Ein Gitter von {rows} × {cols} braucht {need} Strecken, es sind {found}',
+  'error.import-zero-axis': 'Lage {record} hat die Achse null (i = j = k = 0) und damit keine Richtung',
+  'error.import-too-few-poses': '{found} Lage(n): mindestens 2 sind nötig (eine Werkzeugbahn hat zwei Lagen oder mehr)',
+  'error.json-poses-missing': 'Ein Objekt braucht ein Feld „poses“',
+  'error.json-poses-array': '„poses“ muss ein Array sein',
+  'error.json-pose': 'Eine Lage erwartet: ein Objekt mit "tip": [x, y, z] und "axis": [i, j, k]',
+  'error.pose-orientation': 'Lage {pose}: Keine Stellung der Drehachsen von {machine} ergibt diese Werkzeugachse',
+  'error.pose-unreachable':
+    'Lage {pose} ist nicht erreichbar: {axis} wäre {value}, außerhalb der Grenzen {min} bis {max}',
+  'error.linearisation-tolerance':
+    'Zwischen den Lagen {pose} und {next} weicht die lineare Interpolation nach {rounds} Runden eingefügter Lagen noch {deviation} mm von der Bahn ab (Toleranz {tolerance} mm): Dort schlagen die Drehachsen um oder gehen durch den Pol',
+  'error.retract-horizontal':
+    'Lage {pose}: Die Werkzeugachse liegt zu flach, um entlang ihr auf die sichere Höhe zurückzuziehen',
 };

@@ -206,8 +206,17 @@ Werkzeugorientierung zwischen zwei Lagen und ihre zweite Differenz (wie gleichm�
 Orientierung dreht). Vergleichen Sie die Schemata an der Anzeige: Ab sieben Lagen lassen die
 variationellen Schemata die kleinste Abweichung vom Profil (bei weniger kann das Vierpunktschema
 näher liegen); welches Schema den kleinsten
-Orientierungsschritt hat, hängt von der Zahl der Schritte ab. Die Schaltflächen exportieren die Bahn
-als JSON, CSV oder G-Code für eine Tisch-Tisch-Maschine mit A- und C-Achse (Konventionen im Dateikopf).</p>
+Orientierungsschritt hat, hängt von der Zahl der Schritte ab. Das Diagramm zeigt die Abweichung
+entlang der Bahn: je Lage, wie weit die Kugel vom Profil absteht; je Satz des G-Codes, wie weit die
+lineare Interpolation der Steuerung von der Bahn abweicht (Spitze, und Achse mal Werkzeuglänge, in
+mm bei 1 Einheit = 10 mm).</p>
+<p>Die Schaltflächen exportieren die Bahn als JSON, CSV oder G-Code für die gewählte Maschine,
+Steuerung (LinuxCNC, Heidenhain, Sinumerik) und Kinematik: Maschinenkoordinaten, von ruledlab
+berechnet, oder die Werkzeugspitze (TCP), die die Steuerung umrechnet. Der Postprozessor fügt Lagen
+ein, bis die Interpolation innerhalb von 0,01 mm bleibt, und das Programm beginnt und endet mit
+sicheren Bewegungen entlang der Werkzeugachse (README, „For CAM“). Eigene Werkzeuglagen — eine CSV
+mit Spitze x, y, z und Achse i, j, k je Zeile, JSON oder die hier exportierten Dateien — werden im
+Datenbereich eingefügt oder hochgeladen („Werkzeuglagen“) und öffnen sich in dieser Szene.</p>
 <p class="rl-paper-data">Die Arbeit gibt für Beispiel 6 keine Daten an; das Profil auf der
 Werkstückfläche z = 0,3 sin x cos 0,7y, die sieben Lagen und das Werkzeug (Radius 0,25, Länge 1,5)
 stammen von ruledlab.</p>`,

@@ -99,4 +99,7 @@ export default {
     'Your edit of the nine given rulings of the {surface}; against the schemes\u2019 rulings of the unslid surface, the endpoint scheme\u2019s new rulings turned by up to {endpointTurn} rad, the line-space scheme\u2019s by {lineTurn}.',
   'milling.describeEdited':
     'Your edit of the {poses} given poses of a ball-end tool, refined by {steps:step:steps} of {scheme} into {total} poses; the machined surface misses the target profile by at most {deviation}.',
+  'edit.from.importedPoses': 'your {poses} imported tool poses',
+  'milling.describeImportedEdited':
+    'Your edit of {poses} imported tool poses, refined by {steps:step:steps} of {scheme} into {total} poses.',
 };

@@ -192,4 +192,15 @@ export default {
   'error.json-segment': '[ax, ay, az, bx, by, bz] expected',
   'error.json-whole-segments': '{count} numbers are not a whole number of segments (6 each)',
   'error.json-grid-count': 'a {rows} × {cols} grid needs {need} segments, there are {found}',
+  'error.import-zero-axis': 'pose {record} has a zero axis (i = j = k = 0), so it has no direction',
+  'error.import-too-few-poses': '{found} pose(s): at least 2 are needed (a tool path has two poses or more)',
+  'error.json-poses-missing': 'an object needs a "poses" array',
+  'error.json-poses-array': 'poses must be an array',
+  'error.json-pose': 'expected a pose: an object with "tip": [x, y, z] and "axis": [i, j, k]',
+  'error.pose-orientation': 'pose {pose}: no setting of the rotary axes of {machine} gives this tool axis',
+  'error.pose-unreachable': 'pose {pose} cannot be reached: {axis} would be {value}, outside its limits {min} to {max}',
+  'error.linearisation-tolerance':
+    'between poses {pose} and {next} the linear interpolation still strays {deviation} mm from the path after {rounds} rounds of inserted poses (tolerance {tolerance} mm): the rotary axes turn over or pass the pole there',
+  'error.retract-horizontal':
+    'pose {pose}: the tool axis is too close to horizontal to retract along it to the safe height',
 };

@@ -196,9 +196,16 @@ the machined surface. The tool itself is drawn at one pose (slide or play its po
 target profile (positive leaves material, negative gouges), the largest change of tool orientation
 between two poses, and its second difference (how evenly the orientation turns). Compare the schemes
 with the readout: with seven poses or more the variational schemes leave the smallest deviation from
-the profile (fewer, and four-point can be closer); which scheme has the smallest orientation step depends on the number of steps. The buttons
-export the path as JSON, CSV, or G-code for a table-table A–C machine (conventions in the file
-header).</p>
+the profile (fewer, and four-point can be closer); which scheme has the smallest orientation step depends on the number of steps. The plot
+shows the deviation along the path: per pose, how far the ball stands off the profile; per block of
+the G-code, how far the controller's linear interpolation strays from the path (tip, and axis times
+the tool length, in mm at 1 unit = 10 mm).</p>
+<p>The buttons export the path as JSON, CSV, or G-code for the machine, controller (LinuxCNC,
+Heidenhain, Sinumerik) and kinematics chosen: machine coordinates computed by ruledlab, or the
+tool-centre point left to the controller. The post inserts poses until the interpolation stays within
+0.01 mm, and the program starts and ends with safe moves along the tool axis (README, "For CAM").
+Your own tool poses — a CSV of tip x, y, z and axis i, j, k per row, JSON, or the files exported
+here — are pasted or uploaded in the data panel ("tool poses") and open in this scene.</p>
 <p class="rl-paper-data">The paper gives no data for Example 6; the profile on the part surface
 z = 0.3 sin x cos 0.7y, the seven poses and the tool (radius 0.25, length 1.5) are ruledlab's.</p>`,
 

@@ -1,7 +1,7 @@
 // The page's data panel, in the stage's panel: your own segments pasted or uploaded (read by the
 // core's importSegments, errors said at the paste box), and the menu of exports of what is
 // shown — drawings (SVG, TikZ, PNG, the plot) and data files (written by the core).
-import { importSegments } from '../../pkg/ruledlab.js';
+import { importSegments, importToolPoses, detectImport } from '../../pkg/ruledlab.js';
 import { download } from '../stage.js';
 import { linkable } from '../state.js';
 import { describeError } from '../ui/errors.js';
@@ -42,8 +42,10 @@ const EXPORTS = /** @type {const} */ ([
 /** Imported data kept in session storage, or null. */
 export function parseStored(/** @type {string} */ text) {
   try {
-    const { segments, rows, cols } = JSON.parse(text);
-    return { segments: new Float64Array(segments), rows, cols };
+    const { segments, rows, cols, poses, tool } = JSON.parse(text);
+    return poses
+      ? { segments: new Float64Array(segments), poses: true, tool }
+      : { segments: new Float64Array(segments), rows, cols };
   } catch {
     return null;
   }
@@ -64,6 +66,12 @@ export function dataPanel(stage, { i18n, onData }) {
   const pasteLabel = el('label', { htmlFor: 'import-text' });
   const paste = /** @type {HTMLTextAreaElement} */ (el('textarea', { id: 'import-text', rows: 4, spellcheck: false }));
   paste.placeholder = '0,0,0,1,0,0\n0,0,1,0,1,1\n0,0,2,-1,0,2';
+  // what the text holds: recognised, or chosen (tool poses: tip and axis per row)
+  const kindLabel = el('label', { htmlFor: 'import-kind' });
+  const kind = /** @type {HTMLSelectElement} */ (el('select', { id: 'import-kind' }));
+  for (const k of ['auto', 'segments', 'poses']) kind.append(el('option', { value: k }));
+  const kindRow = el('div', { className: 'io-row' });
+  kindRow.append(kindLabel, kind);
   const row = el('div', { className: 'io-row' });
   const upload = /** @type {HTMLInputElement} */ (
     el('input', { type: 'file', id: 'import-file', accept: '.csv,.json,.txt,text/csv,application/json' })
@@ -82,20 +90,33 @@ export function dataPanel(stage, { i18n, onData }) {
     buttons[kind].dataset.export = kind;
     exports.append(buttons[kind]);
   }
-  io.append(summary, pasteLabel, paste, row, importError, storedNote, exportsLabel, exports);
+  io.append(summary, pasteLabel, paste, kindRow, row, importError, storedNote, exportsLabel, exports);
   stage.panel.insertBefore(io, stage.text);
 
   // import: pasted text or an uploaded file; an error is said at the paste box, and the scene
   // stays as it is
   const show = (/** @type {string} */ text) => {
-    let got;
+    /** @type {import('../scene.js').ImportedData} */
+    let data;
     try {
-      got = importSegments(text);
+      const poses = kind.value === 'poses' || (kind.value === 'auto' && detectImport(text) === 'poses');
+      if (poses) {
+        // tool poses: tip and axis, 6 numbers each, with their tool
+        const got = importToolPoses(text);
+        data = got.tool ? { segments: got.poses, poses: true, tool: got.tool } : { segments: got.poses, poses: true };
+      } else {
+        const got = importSegments(text);
+        data = { segments: got.segments, rows: got.rows, cols: got.cols };
+      }
     } catch (e) {
       importError.hidden = false;
       // what stays on screen: the previous import, the example data, or the scene as it was
       const onScreen =
-        stage.scene?.id !== 'data' ? '' : stage.data ? i18n().t('io.stale') : i18n().t('io.staleExample');
+        stage.scene?.id !== 'data' && stage.scene?.id !== 'milling'
+          ? ''
+          : stage.data
+            ? i18n().t('io.stale')
+            : i18n().t('io.staleExample');
       importError.textContent = onScreen ? `${describeError(e, i18n())} ${onScreen}` : describeError(e, i18n());
       paste.setAttribute('aria-invalid', 'true');
       paste.setAttribute('aria-describedby', importError.id);
@@ -104,11 +125,10 @@ export function dataPanel(stage, { i18n, onData }) {
     importError.hidden = true;
     paste.removeAttribute('aria-invalid');
     paste.removeAttribute('aria-describedby');
-    const data = { segments: got.segments, rows: got.rows, cols: got.cols };
     // too large for the link: kept in the tab's session storage, where there is one
     const keptThere = store(
       STORED,
-      linkable(data) ? null : JSON.stringify({ segments: Array.from(data.segments), rows: data.rows, cols: data.cols }),
+      linkable(data) ? null : JSON.stringify({ ...data, segments: Array.from(data.segments) }),
     );
     storedNote.hidden = linkable(data);
     storedNote.textContent = i18n().t(keptThere ? 'io.stored' : 'io.notStored');
@@ -154,6 +174,8 @@ export function dataPanel(stage, { i18n, onData }) {
       pasteLabel.textContent = t('io.paste');
       upload.setAttribute('aria-label', t('io.upload'));
       showButton.textContent = t('io.show');
+      kindLabel.textContent = t('io.kind');
+      for (const option of kind.options) option.textContent = t(`io.kind.${option.value}`);
       exportsLabel.textContent = t('io.exports');
       for (const [kind, key] of EXPORTS) buttons[kind].textContent = t(key);
     },

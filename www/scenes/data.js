@@ -35,10 +35,12 @@ export const scene = defineScene({
   ],
   create(p, ctx) {
     const { t, data, input } = ctx;
-    const { rows, cols } = data ?? EXAMPLE;
+    // tool poses are the milling scene's
+    const imported = data && !data.poses ? data : null;
+    const { rows, cols } = imported ?? EXAMPLE;
     // your segments as imported, or as you moved them since
-    const segments = input?.lines ?? input?.rulings ?? (data ?? EXAMPLE).segments;
-    const from = t(data ? 'edit.from.data' : 'edit.from.example');
+    const segments = input?.lines ?? input?.rulings ?? (imported ?? EXAMPLE).segments;
+    const from = t(imported ? 'edit.from.data' : 'edit.from.example');
     return scoped((own) => {
       if (rows && cols) {
         const c = own(LineCongruence.fromGrid(rows, cols, segments));

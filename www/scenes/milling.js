@@ -3,6 +3,7 @@
 // machined surface. The part, the envelope and the tool are meshes built by the core.
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
+import { POST_PARAMS, givenPath, postOf, programFile, deviationFigure } from '../figures/toolpath.js';
 import { poseSet } from '../edit/sets.js';
 
 /** @type {Record<string, Partial<import('../../pkg/ruledlab.js').SubdivideOptions>>} */
@@ -54,6 +55,7 @@ export const scene = defineScene({
     },
     { key: 'envelope', label: 'milling.param.envelope', type: 'checkbox', value: true },
     { key: 'part', label: 'milling.param.part', type: 'checkbox', value: true },
+    ...POST_PARAMS,
   ],
   legend: [
     { style: 'exact', label: 'milling.legend.profile' },
@@ -64,31 +66,35 @@ export const scene = defineScene({
     { style: 'tool', label: 'milling.legend.tool', when: (p) => !!p.tool },
     { style: 'part', label: 'milling.legend.part', when: (p) => !!p.part },
   ],
-  create(p, { t, input }) {
+  create(p, { t, data, input }) {
     return scoped((own) => {
       const steps = Number(p.steps);
-      const example = own(ToolPath.example(Number(p.poses)));
-      // the given poses: the example's, or the reader's edit of them (the same tool)
+      // your imported tool poses, or the example of Figs. 16–18 (its profile and part with it)
+      const { path: base, imported } = givenPath(own, data, Number(p.poses));
+      // the given poses as the reader moved them (the same tool)
       const edited = input?.poses;
-      const path = edited ? own(ToolPath.fromSegments(edited, example.tool)) : example;
+      const path = edited ? own(ToolPath.fromSegments(edited, base.tool)) : base;
       const refined = own(path.refine({ ...SCHEMES[/** @type {keyof typeof SCHEMES} */ (p.scheme)], steps }));
-      // the given axes as the poses were given: an edited axis end stays where the reader put it
-      // (the tool keeps its length along that direction)
+      // the given axes as the poses were given: an edited axis point stays where the reader put
+      // it (the tool keeps its length along that direction)
       const given = edited ? f32(edited) : path.segmentsF32();
       const all = refined.segmentsF32();
-      const profile = ToolPath.exampleProfile(400);
-      const deviation = maxDeviation(refined, profile);
+      const profile = imported ? null : ToolPath.exampleProfile(400);
+      const deviation = profile ? maxDeviation(refined, profile) : Number.NaN;
       const quality = refined.quality();
       // every scheme's deviation at these steps, for the comparison the text makes (and its claim)
       /** @type {Record<string, number>} */
       const compare = {};
-      for (const [k, o] of Object.entries(SCHEMES))
-        compare[k] = maxDeviation(own(path.refine({ ...o, steps })), profile);
-      const given0 = maxDeviation(path, profile);
+      if (profile)
+        for (const [k, o] of Object.entries(SCHEMES))
+          compare[k] = maxDeviation(own(path.refine({ ...o, steps })), profile);
+      const given0 = profile ? maxDeviation(path, profile) : Number.NaN;
       const centres = refined.barycentres();
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
-        { kind: 'polyline', style: 'exact', positions: f32(profile) },
+        ...(profile
+          ? [/** @type {import('../scene.js').Layer} */ ({ kind: 'polyline', style: 'exact', positions: f32(profile) })]
+          : []),
         { kind: 'segments', style: 'given', positions: given },
         { kind: 'polyline', style: 'barycentre', positions: f32(centres) },
         { kind: 'points', style: 'barycentrePoint', positions: f32(centres) },
@@ -103,33 +109,47 @@ export const scene = defineScene({
         const { positions, indices } = refined.toolMesh(Math.round(Number(p.at) * (refined.length - 1)), 20);
         layers.push({ kind: 'mesh', style: 'tool', positions, indices });
       }
-      if (p.part) {
+      if (p.part && !imported) {
         const { positions, indices } = ToolPath.examplePart(60, 30);
         layers.push({ kind: 'mesh', style: 'part', positions, indices });
       }
+      // the G-code post for the machine, dialect and mode chosen
+      const { result: post, error: postError } = postOf(refined, p);
       const exports = {
         json: refined.export('json'),
         csv: refined.export('csv'),
-        gcode: refined.export('gcode', { scale: 10, feed: 1200 }),
       };
       return {
-        bounds: bounds(given, all, profile),
+        bounds: profile ? bounds(given, all, profile) : bounds(given, all),
         camera: { yaw: -1.9, pitch: 0.55 },
         layers,
         readouts: [
           { label: 'milling.readout.poses', value: refined.length },
-          { label: 'milling.readout.deviation', value: deviation },
+          ...(profile ? [{ label: 'milling.readout.deviation', value: deviation }] : []),
           { label: 'milling.readout.angleStep', value: quality.maxAngleStep },
           { label: 'milling.readout.secondDifference', value: quality.maxSecondDifference },
-          { label: 'milling.readout.compare.given', value: given0 },
-          ...(steps > 0
+          ...(profile ? [{ label: 'milling.readout.compare.given', value: given0 }] : []),
+          ...(steps > 0 && profile
             ? Object.entries(compare).map(([k, v]) => ({ label: `milling.readout.compare.${k}`, value: v }))
             : []),
+          ...(post
+            ? [
+                { label: 'milling.readout.inserted', value: post.inserted },
+                { label: 'milling.readout.linearTip', value: post.before.tip },
+                { label: 'milling.readout.linearAxis', value: post.before.axis },
+              ]
+            : [
+                {
+                  label: 'milling.readout.post',
+                  value: postError instanceof Error ? postError.message : String(postError),
+                },
+              ]),
         ],
+        // the claims are about the example's own poses, not an edit of them
         claims: edited
           ? []
           : [
-              ...(steps > 0
+              ...(steps > 0 && profile
                 ? [
                     {
                       text: 'milling.claim.refined',
@@ -137,7 +157,7 @@ export const scene = defineScene({
                     },
                   ]
                 : []),
-              ...(steps > 0 && Number(p.poses) >= 7
+              ...(steps > 0 && profile && Number(p.poses) >= 7
                 ? [
                     {
                       text: 'milling.claim.variational',
@@ -148,16 +168,34 @@ export const scene = defineScene({
                   ]
                 : []),
             ],
-        description: t(edited ? 'milling.describeEdited' : 'milling.describe', {
-          poses: Number(p.poses),
-          steps,
-          scheme: t(`milling.scheme.${p.scheme}`),
-          total: refined.length,
-          deviation,
+        description: imported
+          ? t(edited ? 'milling.describeImportedEdited' : 'milling.describeImported', {
+              poses: path.length,
+              steps,
+              scheme: t(`milling.scheme.${p.scheme}`),
+              total: refined.length,
+            })
+          : t(edited ? 'milling.describeEdited' : 'milling.describe', {
+              poses: Number(p.poses),
+              steps,
+              scheme: t(`milling.scheme.${p.scheme}`),
+              total: refined.length,
+              deviation,
+            }),
+        figure: deviationFigure({
+          perPose: profile ? refined.deviationPerPose(profile) : null,
+          stride: 2 ** steps,
+          post,
+          t,
         }),
-        // the handles: every given pose's tip and a point on its axis (the end of the tool, until
-        // the reader moves it)
-        input: { sets: [poseSet(edited ?? path.segments())], from: t('edit.from.poses', { poses: Number(p.poses) }) },
+        // the handles: every given pose's tip (it carries the tool) and a point on its axis (it
+        // turns the tool about the tip)
+        input: {
+          sets: [poseSet(edited ?? path.segments())],
+          from: imported
+            ? t('edit.from.importedPoses', { poses: path.length })
+            : t('edit.from.poses', { poses: Number(p.poses) }),
+        },
         downloads: [
           {
             label: 'milling.download.json',
@@ -166,7 +204,16 @@ export const scene = defineScene({
             type: 'application/json',
           },
           { label: 'milling.download.csv', filename: 'toolpath.csv', content: exports.csv, type: 'text/csv' },
-          { label: 'milling.download.gcode', filename: 'toolpath.nc', content: exports.gcode, type: 'text/plain' },
+          ...(post
+            ? [
+                {
+                  label: 'milling.download.gcode',
+                  filename: programFile(String(p.dialect)),
+                  content: post.text,
+                  type: 'text/plain',
+                },
+              ]
+            : []),
         ],
         data: { segments: refined.segments() },
       };

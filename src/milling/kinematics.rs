@@ -1,0 +1,419 @@
+//! Forward and inverse kinematics of a five-axis [`Machine`] (frames and conventions in
+//! `machine.rs`): from the controller's axis values to the tool pose in the part frame and back.
+//!
+//! **Forward.** Write T_k(x) = c_k + R(u_k, θ_k)(x − c_k) for a rotary axis k at geometric angle
+//! θ_k about the line through c_k along u_k. With the head axes H = H₁∘H₂ (pivots measured from
+//! the spindle nose, moved by the tool length L: c′ = c + L·Z) and the table axes T = T₁∘T₂ (the
+//! first of the chain outermost), the tool tip and axis in the machine frame are
+//!   tip_M = (X, Y, Z) + H(0),   axis_M = R_H Z,
+//! and in the part frame (`partZero` = z₀)
+//!   tip = T⁻¹(tip_M) − z₀,   axis = R_Tᵀ axis_M.
+//!
+//! **Inverse, the orientation.** A part-frame axis a needs R_T a = R_H Z. Each machine type
+//! turns this into R(u, φ) p = R(w, ψ) q with u ⊥ w (the two axes are distinct letters):
+//! table–table R(u₂, θ₂) a = R(u₁, −θ₁) Z; head–table R(u_t, θ_t) a = R(u_h, θ_h) Z;
+//! head–head R(u₁, −θ₁) a = R(u₂, θ₂) Z. The common vector is
+//!   c = α u + β w ± γ (u × w),  α = u·p,  β = w·q,  γ = √(1 − α² − β²),
+//! and φ (ψ) is the angle about u (w) from the part of p (q) normal to u (w) to that of c:
+//! **two solutions per pose** (±γ), one where γ = 0. Where p ∥ u (|p × u| < 1e-9) φ is
+//! undetermined: **the pole** (on the presets: the tool axis along the C axis). There the free
+//! angle takes the values it has at the nearest poses off the pole (before and after; 0 when the
+//! whole path is on the pole), and the choice below picks among them.
+//!
+//! **Choice and unwrapping.** Each solution gives controller values v = zero + direction·θ and,
+//! for a limited axis, every v + 360°·n within its limits; a continuous axis (no limits) is
+//! unwrapped to the value nearest the previous pose. Over the whole path a dynamic programme picks
+//! the candidates that keep every axis within its limits and **move least** (the sum of
+//! |Δv| over both axes and all blocks, the first pose measured from 0). A pose without a
+//! candidate within limits, or whose machine position leaves the travel of X, Y or Z, is an
+//! [`Error::Unreachable`] naming the pose and the axis.
+
+use crate::error::{Error, Result};
+use crate::milling::machine::{turn, Machine};
+use crate::milling::Pose;
+use crate::tolerance::{MAX_AXIS_TURNS, POLE_SIN};
+use glam::{DMat3, DVec3};
+
+/// The axis values of one pose: machine X, Y, Z (mm) and the controller values of `rotary[0]`
+/// and `rotary[1]` (degrees).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Joints {
+    /// X, Y, Z.
+    pub xyz: DVec3,
+    /// The rotary axes, in the machine's order.
+    pub rotary: [f64; 2],
+}
+
+fn head_pivot(m: &Machine, k: usize, tool_length: f64) -> DVec3 {
+    DVec3::from(m.rotary[k].pivot) + tool_length * DVec3::Z
+}
+
+/// H(0): where the tool tip is, relative to (X, Y, Z), with the head axes at `rotary`.
+pub fn head_offset(m: &Machine, rotary: [f64; 2], tool_length: f64) -> DVec3 {
+    let mut x = DVec3::ZERO;
+    for &k in m.head_axes().iter().rev() {
+        x = turn(&m.rotary[k], rotary[k], x, head_pivot(m, k, tool_length));
+    }
+    x
+}
+
+/// R_H: the head's rotation.
+pub fn head_rotation(m: &Machine, rotary: [f64; 2]) -> DMat3 {
+    m.head_axes().iter().fold(DMat3::IDENTITY, |r, &k| r * m.rotary[k].rotation(rotary[k]))
+}
+
+/// R_T: the table's rotation (a part-frame vector v appears as R_T v in the machine).
+pub fn table_rotation(m: &Machine, rotary: [f64; 2]) -> DMat3 {
+    m.table_axes().iter().fold(DMat3::IDENTITY, |r, &k| r * m.rotary[k].rotation(rotary[k]))
+}
+
+/// T(x): a point of the table (machine frame at zero) where the table axes put it.
+fn table_map(m: &Machine, rotary: [f64; 2], x: DVec3) -> DVec3 {
+    m.table_axes().iter().rev().fold(x, |x, &k| turn(&m.rotary[k], rotary[k], x, DVec3::from(m.rotary[k].pivot)))
+}
+
+/// T⁻¹(y).
+fn table_unmap(m: &Machine, rotary: [f64; 2], y: DVec3) -> DVec3 {
+    m.table_axes().iter().fold(y, |y, &k| {
+        let c = DVec3::from(m.rotary[k].pivot);
+        c + m.rotary[k].rotation(rotary[k]).transpose() * (y - c)
+    })
+}
+
+/// The tool axis in the part frame for the rotary values: R_Tᵀ R_H Z.
+pub fn tool_axis(m: &Machine, rotary: [f64; 2]) -> DVec3 {
+    table_rotation(m, rotary).transpose() * (head_rotation(m, rotary) * DVec3::Z)
+}
+
+/// Forward kinematics: the pose (part frame, mm) of the axis values `j` for a tool of length
+/// `tool_length` (mm).
+pub fn forward(m: &Machine, j: &Joints, tool_length: f64) -> Pose {
+    let tip_m = j.xyz + head_offset(m, j.rotary, tool_length);
+    Pose { tip: table_unmap(m, j.rotary, tip_m) - DVec3::from(m.part_zero), axis: tool_axis(m, j.rotary) }
+}
+
+/// The machine position X, Y, Z that puts the tip at `tip` (part frame, mm) with the rotary axes
+/// at `rotary`: T(tip + z₀) − H(0).
+pub fn machine_position(m: &Machine, tip: DVec3, rotary: [f64; 2], tool_length: f64) -> DVec3 {
+    table_map(m, rotary, tip + DVec3::from(m.part_zero)) - head_offset(m, rotary, tool_length)
+}
+
+/// A solution of the orientation: the geometric angles (radians) of `rotary[0]`, `rotary[1]`;
+/// `None` for the angle the pole leaves free.
+pub type Orientation = [Option<f64>; 2];
+
+/// The angle about unit `u` from the part of `from` normal to u to that of `to`; `None` when
+/// `from` lies along u.
+fn angle_about(u: DVec3, from: DVec3, to: DVec3) -> Option<f64> {
+    let f = from - from.dot(u) * u;
+    let t = to - to.dot(u) * u;
+    if from.cross(u).length() < POLE_SIN {
+        return None;
+    }
+    Some(u.dot(f.cross(t)).atan2(f.dot(t)))
+}
+
+/// Both solutions (one where they coincide) of the orientation for the part-frame unit axis `a`;
+/// empty when no setting of the two axes gives it.
+pub fn orientations(m: &Machine, a: DVec3) -> Vec<Orientation> {
+    let (table, head) = (m.table_axes(), m.head_axes());
+    let dir = |k: usize| m.rotary[k].name.direction();
+    // (u, index of φ, sign of φ, p), (w, index of ψ, sign of ψ, q)
+    let ((u, iu, su, p), (w, iw, sw, q)) = match (table.as_slice(), head.as_slice()) {
+        ([o, i], []) => ((dir(*i), *i, 1.0, a), (dir(*o), *o, -1.0, DVec3::Z)),
+        ([t], [h]) => ((dir(*t), *t, 1.0, a), (dir(*h), *h, 1.0, DVec3::Z)),
+        (_, [o, i]) => ((dir(*o), *o, -1.0, a), (dir(*i), *i, 1.0, DVec3::Z)),
+        _ => return Vec::new(),
+    };
+    let (alpha, beta) = (u.dot(p), w.dot(q));
+    let g2 = 1.0 - alpha * alpha - beta * beta;
+    if g2 < -1e-12 {
+        return Vec::new();
+    }
+    let gamma = g2.max(0.0).sqrt();
+    let n = u.cross(w);
+    let signs: &[f64] = if gamma < 1e-12 { &[1.0] } else { &[1.0, -1.0] };
+    signs
+        .iter()
+        .map(|&s| {
+            let c = alpha * u + beta * w + s * gamma * n;
+            let mut o: Orientation = [None, None];
+            o[iu] = angle_about(u, p, c).map(|phi| su * phi);
+            o[iw] = angle_about(w, q, c).map(|psi| sw * psi);
+            o
+        })
+        .collect()
+}
+
+/// A candidate value of one axis: fixed (a limited axis, unwrapped within its limits) or
+/// known modulo 360° (a continuous axis, unwrapped later towards its neighbour).
+#[derive(Debug, Clone, Copy)]
+enum Value {
+    Fixed(f64),
+    Turn(f64),
+}
+
+fn wrap(d: f64) -> f64 {
+    d - 360.0 * (d / 360.0).round()
+}
+
+fn step(a: Value, b: Value) -> f64 {
+    match (a, b) {
+        (Value::Fixed(x), Value::Fixed(y)) => (y - x).abs(),
+        (Value::Fixed(x) | Value::Turn(x), Value::Fixed(y) | Value::Turn(y)) => wrap(y - x).abs(),
+    }
+}
+
+fn from_zero(v: Value) -> f64 {
+    match v {
+        Value::Fixed(x) => x.abs(),
+        Value::Turn(x) => wrap(x).abs(),
+    }
+}
+
+/// The unwrapped values of geometric angle `theta` on axis `k`: within the limits, or one value
+/// modulo 360° for a continuous axis.
+fn values(m: &Machine, k: usize, theta: f64) -> Vec<Value> {
+    let r = &m.rotary[k];
+    let v = r.value(theta);
+    if r.min.is_none() && r.max.is_none() {
+        return vec![Value::Turn(wrap(v))];
+    }
+    let lo = r.min.unwrap_or(v - 360.0 * MAX_AXIS_TURNS as f64);
+    let first = v + 360.0 * ((lo - v) / 360.0).ceil();
+    (0..MAX_AXIS_TURNS).map(|n| first + 360.0 * n as f64).filter(|&x| r.allows(x)).map(Value::Fixed).collect()
+}
+
+/// The nearest value to the limits an unreachable angle had, for the message: (axis, value).
+fn nearest_violation(m: &Machine, solutions: &[[f64; 2]]) -> (usize, f64) {
+    let mut best = (0, f64::NAN, f64::INFINITY);
+    for s in solutions {
+        for k in 0..2 {
+            let r = &m.rotary[k];
+            if !values(m, k, s[k]).is_empty() {
+                continue;
+            }
+            let v = r.value(s[k]);
+            let v = v - 360.0 * (v / 360.0).round();
+            let miss = r.min.map_or(0.0, |lo| (lo - v).max(0.0)) + r.max.map_or(0.0, |hi| (v - hi).max(0.0));
+            if miss < best.2 {
+                best = (k, v, miss);
+            }
+        }
+    }
+    (best.0, best.1)
+}
+
+fn limit(x: Option<f64>, default: f64) -> f64 {
+    x.unwrap_or(default)
+}
+
+/// Inverse kinematics of a path (part frame, mm; unit axes) for a tool of length `tool_length`
+/// (mm): the axis values of every pose, chosen within the limits to move least (see the module
+/// documentation).
+pub fn inverse(m: &Machine, poses: &[Pose], tool_length: f64) -> Result<Vec<Joints>> {
+    let raw: Vec<Vec<Orientation>> = poses.iter().map(|p| orientations(m, p.axis)).collect();
+    let determined = |o: &Orientation| o[0].is_some() && o[1].is_some();
+    // the pole: the free angle takes its values from the nearest poses off the pole
+    let mut concrete: Vec<Vec<[f64; 2]>> = Vec::with_capacity(poses.len());
+    for (i, sols) in raw.iter().enumerate() {
+        if sols.is_empty() {
+            return Err(Error::Unreachable {
+                pose: i,
+                message: crate::msg!("pose-orientation", pose = i, machine = m.name.as_str()),
+            });
+        }
+        let mut out = Vec::new();
+        for s in sols {
+            if determined(s) {
+                out.push([s[0].unwrap_or(0.0), s[1].unwrap_or(0.0)]);
+                continue;
+            }
+            let free = if s[0].is_none() { 0 } else { 1 };
+            let before = raw[..i].iter().rev().find(|o| o.iter().all(determined));
+            let after = raw[i + 1..].iter().find(|o| o.iter().all(determined));
+            let mut fills: Vec<f64> =
+                before.into_iter().chain(after).flatten().filter_map(|o| o[free]).collect::<Vec<_>>();
+            if fills.is_empty() {
+                fills.push(m.rotary[free].angle(0.0));
+            }
+            for f in fills {
+                let mut c = [s[0].unwrap_or(0.0), s[1].unwrap_or(0.0)];
+                c[free] = f;
+                out.push(c);
+            }
+        }
+        concrete.push(out);
+    }
+    // the candidates within limits
+    let mut candidates: Vec<Vec<[Value; 2]>> = Vec::with_capacity(poses.len());
+    for (i, sols) in concrete.iter().enumerate() {
+        let mut c = Vec::new();
+        for s in sols {
+            for v0 in values(m, 0, s[0]) {
+                for v1 in values(m, 1, s[1]) {
+                    c.push([v0, v1]);
+                }
+            }
+        }
+        if c.is_empty() {
+            let (k, value) = nearest_violation(m, sols);
+            let r = &m.rotary[k];
+            return Err(Error::Unreachable {
+                pose: i,
+                message: crate::msg!(
+                    "pose-unreachable",
+                    pose = i,
+                    axis = r.name.letter(),
+                    value = value,
+                    min = limit(r.min, f64::NEG_INFINITY),
+                    max = limit(r.max, f64::INFINITY)
+                ),
+            });
+        }
+        candidates.push(c);
+    }
+    // the dynamic programme: least total motion
+    let mut cost: Vec<f64> = candidates[0].iter().map(|c| from_zero(c[0]) + from_zero(c[1])).collect();
+    let mut back: Vec<Vec<usize>> = vec![vec![0; candidates[0].len()]];
+    for i in 1..candidates.len() {
+        let (prev, cur) = (&candidates[i - 1], &candidates[i]);
+        let mut next = Vec::with_capacity(cur.len());
+        let mut from = Vec::with_capacity(cur.len());
+        for c in cur {
+            let (mut best, mut arg) = (f64::INFINITY, 0);
+            for (j, p) in prev.iter().enumerate() {
+                let total = cost[j] + step(p[0], c[0]) + step(p[1], c[1]);
+                if total < best - 1e-9 {
+                    (best, arg) = (total, j);
+                }
+            }
+            next.push(best);
+            from.push(arg);
+        }
+        cost = next;
+        back.push(from);
+    }
+    let mut k = (0..cost.len()).fold(0, |b, j| if cost[j] < cost[b] - 1e-9 { j } else { b });
+    let mut chosen = vec![[Value::Fixed(0.0); 2]; poses.len()];
+    for i in (0..poses.len()).rev() {
+        chosen[i] = candidates[i][k];
+        k = back[i][k];
+    }
+    // unwrap the continuous axes towards the previous pose, then place X, Y, Z
+    let mut previous = [0.0, 0.0];
+    let mut joints = Vec::with_capacity(poses.len());
+    for (i, (c, p)) in chosen.iter().zip(poses).enumerate() {
+        let mut rotary = [0.0; 2];
+        for a in 0..2 {
+            rotary[a] = match c[a] {
+                Value::Fixed(v) => v,
+                Value::Turn(v) => v + 360.0 * ((previous[a] - v) / 360.0).round(),
+            };
+        }
+        previous = rotary;
+        let xyz = machine_position(m, p.tip, rotary, tool_length);
+        check_travel(m, i, xyz)?;
+        joints.push(Joints { xyz, rotary });
+    }
+    Ok(joints)
+}
+
+/// An error naming the pose and the linear axis when `xyz` leaves the machine's travel.
+pub fn check_travel(m: &Machine, pose: usize, xyz: DVec3) -> Result<()> {
+    for (k, [lo, hi]) in m.travel.iter().enumerate() {
+        let v = xyz[k];
+        if !(*lo - 1e-9..=*hi + 1e-9).contains(&v) {
+            return Err(Error::Unreachable {
+                pose,
+                message: crate::msg!(
+                    "pose-unreachable",
+                    pose = pose,
+                    axis = ["X", "Y", "Z"][k],
+                    value = v,
+                    min = *lo,
+                    max = *hi
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Whether the part-frame axis `a` is at the pole of `m` (an angle left free).
+pub fn at_pole(m: &Machine, a: DVec3) -> bool {
+    orientations(m, a).iter().any(|o| o[0].is_none() || o[1].is_none())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::milling::machine::PRESETS;
+
+    fn pose(tip: [f64; 3], axis: [f64; 3]) -> Pose {
+        Pose { tip: DVec3::from(tip), axis: DVec3::from(axis).normalize() }
+    }
+
+    #[test]
+    fn both_solutions_give_the_axis() {
+        for name in PRESETS {
+            let m = Machine::preset(name).unwrap();
+            for a in [[0.3, -0.5, 0.8], [-0.6, 0.2, 0.5], [0.0, 0.4, 0.9]] {
+                let a = DVec3::from(a).normalize();
+                let sols = orientations(&m, a);
+                assert_eq!(sols.len(), 2, "{name}");
+                for s in sols {
+                    let v = [m.rotary[0].value(s[0].unwrap()), m.rotary[1].value(s[1].unwrap())];
+                    assert!((tool_axis(&m, v) - a).length() < 1e-12, "{name}: {a}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn inverse_then_forward_is_the_identity() {
+        for name in PRESETS {
+            let m = Machine::preset(name).unwrap();
+            let poses = [pose([1.0, 2.0, 3.0], [0.2, 0.1, 1.0]), pose([4.0, -2.0, 1.0], [-0.3, 0.4, 0.9])];
+            let j = inverse(&m, &poses, 40.0).unwrap();
+            for (p, j) in poses.iter().zip(&j) {
+                let q = forward(&m, j, 40.0);
+                assert!((q.tip - p.tip).length() < 1e-9 && (q.axis - p.axis).length() < 1e-12, "{name}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_old_table_table_convention_holds() {
+        // A = atan2(√(i² + j²), k), C = atan2(i, j) for the trunnion without offsets
+        let mut m = Machine::preset("table-table-ac").unwrap();
+        m.rotary[0].pivot = [0.0; 3];
+        m.part_zero = [0.0; 3];
+        let a = DVec3::new(0.3, -0.5, 0.8).normalize();
+        let j = inverse(&m, &[Pose { tip: DVec3::new(1.0, 2.0, 3.0), axis: a }], 10.0).unwrap()[0];
+        assert!((j.rotary[0] - a.x.hypot(a.y).atan2(a.z).to_degrees()).abs() < 1e-9);
+        assert!((j.rotary[1] - a.x.atan2(a.y).to_degrees()).abs() < 1e-9);
+        let r = DMat3::from_rotation_x(j.rotary[0].to_radians()) * DMat3::from_rotation_z(j.rotary[1].to_radians());
+        assert!((j.xyz - r * DVec3::new(1.0, 2.0, 3.0)).length() < 1e-12);
+    }
+
+    #[test]
+    fn the_pole_takes_the_neighbours_angle() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        let poses = [pose([0.0; 3], [0.5, 0.5, 0.7]), pose([1.0, 0.0, 0.0], [0.0, 0.0, 1.0])];
+        let j = inverse(&m, &poses, 10.0).unwrap();
+        assert_eq!(j[1].rotary[1], j[0].rotary[1]);
+        assert!(j[1].rotary[0].abs() < 1e-12);
+        assert!(at_pole(&m, DVec3::Z) && !at_pole(&m, DVec3::X));
+    }
+
+    #[test]
+    fn a_pose_beyond_the_limits_is_named() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        // the axis pointing down into the part: A would be 180°
+        let poses = [pose([0.0; 3], [0.0, 0.3, 1.0]), pose([0.0; 3], [0.0, 0.1, -1.0])];
+        let e = inverse(&m, &poses, 10.0).unwrap_err();
+        assert_eq!(e.code(), "unreachable");
+        assert!(e.to_string().starts_with("pose 1 cannot be reached"), "{e}");
+    }
+}

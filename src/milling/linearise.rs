@@ -1,0 +1,277 @@
+//! The linearisation check of the G-code post: between two blocks a controller moves its axes
+//! linearly, so the tool strays from the path; this measures by how much and inserts poses
+//! until it is within a tolerance.
+//!
+//! **The path between two poses** P_k, P_{k+1} of the refined path is the strip of its discrete
+//! ruled surface: the tip on the chord tip_k → tip_{k+1}, the axis on the great-circle arc
+//! axis_k → axis_{k+1}.
+//!
+//! **What the controller does** between the blocks, at s ∈ [0, 1]:
+//! - machine coordinates: every axis linear, (X, Y, Z, v₁, v₂)(s) = (1 − s)·J_k + s·J_{k+1};
+//!   the pose is the forward kinematics of that;
+//! - tool-centre point with rotary angles (LinuxCNC, Heidenhain): the tip linear in the part
+//!   frame, the angles linear, the axis from the angles;
+//! - tool-centre point with vectors (Sinumerik `A3= B3= C3=` under `ORIVECT`): the tip linear,
+//!   the axis on the great circle: the path itself.
+//!
+//! **The deviation** of a block is the largest, over LINEARISATION_SAMPLES values of s, of the
+//! tip's distance from the chord and of the axis's angle from the arc times the tool length L
+//! (the distance at the far end of a tool of that length), both in mm. A block above the
+//! tolerance is halved (the new pose: the chord's midpoint and the arc's midpoint), the
+//! kinematics solved again, up to MAX_LINEARISATION_ROUNDS rounds; a block still above it then
+//! is an error naming its poses (the axes turn over or pass the pole there).
+
+use crate::error::{Arg, Error, Result};
+use crate::milling::kinematics::{forward, inverse, tool_axis, Joints};
+use crate::milling::machine::Machine;
+use crate::milling::Pose;
+use crate::tolerance::{LINEARISATION_SAMPLES, MAX_LINEARISATION_ROUNDS, MAX_POST_POSES};
+use glam::DVec3;
+
+/// How the controller interpolates between two blocks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Interpolation {
+    /// Every machine axis linear (machine coordinates).
+    Machine,
+    /// Tool-centre point, the tip and the rotary angles linear.
+    TcpAngles,
+    /// Tool-centre point, the tip linear and the axis vector on a great circle.
+    TcpVector,
+}
+
+/// The deviation of one block, mm.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BlockDeviation {
+    /// Largest distance of the interpolated tip from the chord.
+    pub tip: f64,
+    /// Largest angle of the interpolated axis from the arc times the tool length.
+    pub axis: f64,
+}
+
+impl BlockDeviation {
+    /// The larger of the two.
+    pub fn max(&self) -> f64 {
+        self.tip.max(self.axis)
+    }
+}
+
+/// What the check found and did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Linearisation {
+    /// The tolerance, mm.
+    pub tolerance: f64,
+    /// Largest deviations of the path as given (before inserting poses).
+    pub before: BlockDeviation,
+    /// Largest deviations of the program written.
+    pub after: BlockDeviation,
+    /// Poses inserted.
+    pub inserted: usize,
+    /// Rounds of halving.
+    pub rounds: usize,
+    /// The deviation of each block of the program written.
+    pub blocks: Vec<BlockDeviation>,
+}
+
+/// The poses with their axis values after the check: the path's poses and the inserted ones,
+/// `origin[i]` the position of pose i along the given path (k + s between poses k and k + 1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Linearised {
+    /// The poses (part frame, mm).
+    pub poses: Vec<Pose>,
+    /// Their axis values.
+    pub joints: Vec<Joints>,
+    /// Where each pose lies on the given path.
+    pub origin: Vec<f64>,
+    /// The report.
+    pub report: Linearisation,
+}
+
+fn angle(a: DVec3, b: DVec3) -> f64 {
+    a.cross(b).length().atan2(a.dot(b))
+}
+
+/// The angle of unit `v` from the great-circle arc a → b.
+fn angle_from_arc(v: DVec3, a: DVec3, b: DVec3) -> f64 {
+    let n = a.cross(b);
+    if n.length() < 1e-12 {
+        return angle(v, a);
+    }
+    let n = n.normalize();
+    let off = v.dot(n);
+    let inside = v - off * n;
+    let ends = angle(v, a).min(angle(v, b));
+    if inside.length() < 1e-12 {
+        return ends;
+    }
+    let inside = inside.normalize();
+    if (angle(a, inside) + angle(inside, b) - angle(a, b)).abs() < 1e-9 {
+        off.abs().min(1.0).asin()
+    } else {
+        ends
+    }
+}
+
+fn distance_from_chord(q: DVec3, a: DVec3, b: DVec3) -> f64 {
+    let ab = b - a;
+    let t = if ab.length_squared() > 0.0 { ((q - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
+    (q - (a + t * ab)).length()
+}
+
+/// The midpoint of a block on the path: the chord's and the arc's.
+pub fn midpoint(a: &Pose, b: &Pose) -> Pose {
+    let axis = a.axis + b.axis;
+    let axis = if axis.length() > 1e-12 { axis.normalize() } else { a.axis };
+    Pose { tip: 0.5 * (a.tip + b.tip), axis }
+}
+
+/// The deviation of the block between poses a and b with axis values ja, jb.
+pub fn block_deviation(
+    m: &Machine,
+    (a, b): (&Pose, &Pose),
+    (ja, jb): (&Joints, &Joints),
+    how: Interpolation,
+    tool_length: f64,
+) -> BlockDeviation {
+    let mut d = BlockDeviation::default();
+    for k in 1..LINEARISATION_SAMPLES {
+        let s = k as f64 / LINEARISATION_SAMPLES as f64;
+        let rotary =
+            [ja.rotary[0] + s * (jb.rotary[0] - ja.rotary[0]), ja.rotary[1] + s * (jb.rotary[1] - ja.rotary[1])];
+        let (tip, axis) = match how {
+            Interpolation::Machine => {
+                let p = forward(m, &Joints { xyz: ja.xyz.lerp(jb.xyz, s), rotary }, tool_length);
+                (p.tip, p.axis)
+            }
+            Interpolation::TcpAngles => (a.tip.lerp(b.tip, s), tool_axis(m, rotary)),
+            Interpolation::TcpVector => (a.tip.lerp(b.tip, s), a.axis),
+        };
+        d.tip = d.tip.max(distance_from_chord(tip, a.tip, b.tip));
+        if how != Interpolation::TcpVector {
+            d.axis = d.axis.max(angle_from_arc(axis, a.axis, b.axis) * tool_length);
+        }
+    }
+    d
+}
+
+fn largest(blocks: &[BlockDeviation]) -> BlockDeviation {
+    blocks
+        .iter()
+        .fold(BlockDeviation::default(), |m, b| BlockDeviation { tip: m.tip.max(b.tip), axis: m.axis.max(b.axis) })
+}
+
+/// An error of pose `i` of the current list named by its pose of the given path.
+fn renamed(e: Error, origin: &[f64]) -> Error {
+    match e {
+        Error::Unreachable { pose, mut message } => {
+            let given = origin.get(pose).map_or(pose, |o| o.floor() as usize);
+            for (name, value) in &mut message.args {
+                if *name == "pose" {
+                    *value = Arg::Number(given as f64);
+                }
+            }
+            Error::Unreachable { pose: given, message }
+        }
+        other => other,
+    }
+}
+
+/// Solves the kinematics of `poses` (part frame, mm) and halves the blocks whose interpolation
+/// strays beyond `tolerance` (mm) until none does.
+pub fn linearise(
+    m: &Machine,
+    poses: &[Pose],
+    tool_length: f64,
+    how: Interpolation,
+    tolerance: f64,
+) -> Result<Linearised> {
+    let mut poses = poses.to_vec();
+    let mut origin: Vec<f64> = (0..poses.len()).map(|i| i as f64).collect();
+    let mut before = None;
+    let mut round = 0;
+    loop {
+        let joints = inverse(m, &poses, tool_length).map_err(|e| renamed(e, &origin))?;
+        let blocks: Vec<BlockDeviation> = (0..poses.len().saturating_sub(1))
+            .map(|i| block_deviation(m, (&poses[i], &poses[i + 1]), (&joints[i], &joints[i + 1]), how, tool_length))
+            .collect();
+        let before = *before.get_or_insert(largest(&blocks));
+        let bad: Vec<usize> = (0..blocks.len()).filter(|&i| blocks[i].max() > tolerance).collect();
+        if bad.is_empty() {
+            let inserted = poses.len() - origin.iter().filter(|o| o.fract() == 0.0).count();
+            let after = largest(&blocks);
+            return Ok(Linearised {
+                poses,
+                joints,
+                origin,
+                report: Linearisation { tolerance, before, after, inserted, rounds: round, blocks },
+            });
+        }
+        if round == MAX_LINEARISATION_ROUNDS {
+            let worst = bad.iter().copied().fold(bad[0], |w, i| if blocks[i].max() > blocks[w].max() { i } else { w });
+            let pose = origin[worst].floor() as usize;
+            return Err(Error::Unreachable {
+                pose,
+                message: crate::msg!(
+                    "linearisation-tolerance",
+                    pose = pose,
+                    next = pose + 1,
+                    deviation = blocks[worst].max(),
+                    rounds = round,
+                    tolerance = tolerance
+                ),
+            });
+        }
+        if poses.len() + bad.len() > MAX_POST_POSES {
+            return Err(Error::TooMany {
+                what: "poses of the program",
+                got: poses.len() + bad.len(),
+                max: MAX_POST_POSES,
+            });
+        }
+        let (mut p, mut o) = (Vec::with_capacity(poses.len() + bad.len()), Vec::with_capacity(poses.len() + bad.len()));
+        let mut next_bad = bad.iter().peekable();
+        for i in 0..poses.len() {
+            p.push(poses[i]);
+            o.push(origin[i]);
+            if next_bad.peek() == Some(&&i) {
+                next_bad.next();
+                p.push(midpoint(&poses[i], &poses[i + 1]));
+                o.push(0.5 * (origin[i] + origin[i + 1]));
+            }
+        }
+        (poses, origin) = (p, o);
+        round += 1;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_arc_and_a_chord_measure_distances() {
+        let (a, b) = (DVec3::X, DVec3::Y);
+        assert!(angle_from_arc(DVec3::new(1.0, 1.0, 0.0).normalize(), a, b) < 1e-12);
+        assert!(
+            (angle_from_arc(DVec3::new(1.0, 1.0, 1.0).normalize(), a, b) - (1.0f64 / 3.0).sqrt().asin()).abs() < 1e-12
+        );
+        assert!((angle_from_arc(-DVec3::X, a, b) - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+        assert!((distance_from_chord(DVec3::new(0.5, 1.0, 0.0), DVec3::ZERO, DVec3::X) - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn halving_brings_every_block_within_the_tolerance() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        let poses = [
+            Pose { tip: DVec3::new(0.0, 0.0, 0.0), axis: DVec3::new(0.0, 0.3, 1.0).normalize() },
+            Pose { tip: DVec3::new(30.0, 0.0, 0.0), axis: DVec3::new(0.5, -0.3, 1.0).normalize() },
+        ];
+        let l = linearise(&m, &poses, 50.0, Interpolation::Machine, 0.01).unwrap();
+        assert!(l.report.before.max() > 0.01 && l.report.after.max() <= 0.01, "{:?}", l.report);
+        assert_eq!(l.poses.len(), 2 + l.report.inserted);
+        assert_eq!(l.report.blocks.len(), l.poses.len() - 1);
+        assert_eq!((l.poses[0], *l.poses.last().unwrap()), (poses[0], poses[1]));
+        // tool-centre point with vectors follows the path itself
+        let v = linearise(&m, &poses, 50.0, Interpolation::TcpVector, 0.01).unwrap();
+        assert_eq!(v.report.inserted, 0);
+    }
+}

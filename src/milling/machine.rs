@@ -1,0 +1,320 @@
+//! A five-axis machine as the G-code post sees it (Example 6's tool paths on a real machine):
+//! two rotary axes, each on the table or on the head, their limits, where they turn, the travel
+//! of the linear axes, and where the part's zero sits on the table.
+//!
+//! **Frames.** The machine frame has the axes X, Y, Z of the linear slides; lengths in mm,
+//! angles in degrees. With every rotary axis at its zero the part frame is the machine frame
+//! moved by `partZero` (axes parallel), and the tool points along +Z from its tip into the
+//! spindle. The tool tip then sits at the machine position (X, Y, Z) the program gives (the
+//! controller's tool-length offset puts the controlled point at the tip).
+//!
+//! **A rotary axis** A, B or C turns about a line parallel to machine X, Y or Z through its
+//! `pivot`. A controller value v turns by the geometric angle θ = direction · (v − zero) about
+//! that line, counter-clockwise seen from its positive end: x ↦ c + R(u, θ)(x − c), u the unit
+//! vector of X, Y or Z and c the pivot. A table axis turns the part; its pivot is a point in the
+//! machine frame (rotary axes at zero). A head axis turns the tool; its pivot is measured from the
+//! spindle nose (the gauge line) with the head at zero, so the tip of a tool of length L sits at
+//! −L·Z from the nose and the distance pivot–tip grows with the tool.
+//!
+//! **Order.** `rotary[0]` is the first axis of the chain from the machine's base: when both
+//! axes are on the same side, the first carries the second (a trunnion's tilt axis carries the
+//! rotary table; a fork head's C carries its A).
+//!
+//! **Presets** (values in the README's table): `table-table-ac` (a trunnion: A tilts the table
+//! about X, C turns it about Z), `table-table-bc` (B tilts about Y, C on it), `head-table-bc`
+//! (the head swivels B about Y, the table turns C), `head-head-ac` (a fork head: C about Z carries
+//! A about X).
+
+use crate::error::{Error, Result};
+use crate::tolerance::MAX_MACHINE_VALUE;
+use glam::{DMat3, DVec3};
+
+/// The name of a rotary axis: A turns about a line parallel to X, B to Y, C to Z.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+pub enum AxisName {
+    /// About X.
+    A,
+    /// About Y.
+    B,
+    /// About Z.
+    C,
+}
+
+impl AxisName {
+    /// The unit vector of the machine axis it turns about.
+    pub fn direction(self) -> DVec3 {
+        match self {
+            AxisName::A => DVec3::X,
+            AxisName::B => DVec3::Y,
+            AxisName::C => DVec3::Z,
+        }
+    }
+
+    /// "A", "B" or "C".
+    pub fn letter(self) -> &'static str {
+        match self {
+            AxisName::A => "A",
+            AxisName::B => "B",
+            AxisName::C => "C",
+        }
+    }
+}
+
+/// What a rotary axis turns: the part (table) or the tool (head).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "kebab-case"))]
+#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+pub enum Carrier {
+    /// The axis turns the table and the part on it.
+    Table,
+    /// The axis turns the spindle head and the tool in it.
+    Head,
+}
+
+/// One rotary axis of a machine.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase", deny_unknown_fields))]
+#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+pub struct RotaryAxis {
+    /// "A" (about a line parallel to X), "B" (Y) or "C" (Z); also the word of the G-code.
+    pub name: AxisName,
+    /// "table" (turns the part) or "head" (turns the tool).
+    pub on: Carrier,
+    /// +1: a growing value turns counter-clockwise seen from the positive end of the axis; −1:
+    /// clockwise (default +1).
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default = "plus_one"))]
+    pub direction: f64,
+    /// The controller value (degrees) at which the axis stands at its zero position (default 0).
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default))]
+    pub zero: f64,
+    /// The smallest controller value (degrees); absent or null: no limit (a continuous axis).
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default))]
+    pub min: Option<f64>,
+    /// The largest controller value (degrees); absent or null: no limit.
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default))]
+    pub max: Option<f64>,
+    /// A point on the axis of rotation, mm: in the machine frame for a table axis, from the
+    /// spindle nose for a head axis (all axes at zero; default [0, 0, 0]).
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default))]
+    pub pivot: [f64; 3],
+}
+
+#[cfg(any(feature = "serde", target_family = "wasm"))]
+fn plus_one() -> f64 {
+    1.0
+}
+
+impl RotaryAxis {
+    /// The geometric angle (radians) of controller value `v` (degrees): direction · (v − zero).
+    pub fn angle(&self, v: f64) -> f64 {
+        (self.direction * (v - self.zero)).to_radians()
+    }
+
+    /// The controller value (degrees) of geometric angle `theta` (radians), before unwrapping.
+    pub fn value(&self, theta: f64) -> f64 {
+        self.zero + self.direction * theta.to_degrees()
+    }
+
+    /// The rotation R(u, θ) of controller value `v`.
+    pub fn rotation(&self, v: f64) -> DMat3 {
+        DMat3::from_axis_angle(self.name.direction(), self.angle(v))
+    }
+
+    /// Whether `v` is within the limits.
+    pub fn allows(&self, v: f64) -> bool {
+        self.min.is_none_or(|m| v >= m - 1e-9) && self.max.is_none_or(|m| v <= m + 1e-9)
+    }
+}
+
+/// A five-axis machine for the G-code post: its two rotary axes (`rotary`, the first of the
+/// chain from the base first), the travel of X, Y, Z and where the part's zero sits on the table.
+/// Lengths in mm, angles in degrees; at zero the part frame is the machine frame moved by
+/// `partZero`, and the tool points along +Z (README, "For CAM").
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase", deny_unknown_fields))]
+#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+pub struct Machine {
+    /// A name for the program's header (default "custom").
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default = "custom"))]
+    pub name: String,
+    /// The two rotary axes, the first of the chain from the machine's base first (when both are
+    /// on the same side, the first carries the second).
+    pub rotary: [RotaryAxis; 2],
+    /// Travel of X, Y and Z, [[min, max] × 3] in mm (machine frame, tool tip with the rotary axes
+    /// at zero).
+    pub travel: [[f64; 2]; 3],
+    /// Where the part's zero sits, in the machine frame with the rotary axes at zero, mm.
+    pub part_zero: [f64; 3],
+}
+
+#[cfg(any(feature = "serde", target_family = "wasm"))]
+fn custom() -> String {
+    "custom".to_string()
+}
+
+/// The names of the presets, in the order of [`Machine::preset`].
+pub const PRESETS: [&str; 4] = ["table-table-ac", "table-table-bc", "head-table-bc", "head-head-ac"];
+
+fn axis(name: AxisName, on: Carrier, limits: (Option<f64>, Option<f64>), pivot: [f64; 3]) -> RotaryAxis {
+    RotaryAxis { name, on, direction: 1.0, zero: 0.0, min: limits.0, max: limits.1, pivot }
+}
+
+impl Machine {
+    /// A preset by name (see [`PRESETS`]), or `None`.
+    pub fn preset(name: &str) -> Option<Machine> {
+        use AxisName::{A, B, C};
+        use Carrier::{Head, Table};
+        let free = (None, None);
+        let (rotary, travel) = match name {
+            // a trunnion: the tilt axis 80 mm below the table top, the rotary table on it
+            "table-table-ac" => (
+                [axis(A, Table, (Some(-30.0), Some(120.0)), [0.0, 0.0, -80.0]), axis(C, Table, free, [0.0; 3])],
+                [[-500.0, 500.0], [-400.0, 400.0], [-400.0, 400.0]],
+            ),
+            "table-table-bc" => (
+                [axis(B, Table, (Some(-110.0), Some(110.0)), [0.0, 0.0, -80.0]), axis(C, Table, free, [0.0; 3])],
+                [[-500.0, 500.0], [-400.0, 400.0], [-400.0, 400.0]],
+            ),
+            // a swivel head, its B axis 150 mm above the spindle nose; a rotary table
+            "head-table-bc" => (
+                [axis(B, Head, (Some(-95.0), Some(95.0)), [0.0, 0.0, 150.0]), axis(C, Table, free, [0.0; 3])],
+                [[-800.0, 800.0], [-600.0, 600.0], [-500.0, 600.0]],
+            ),
+            // a fork head: C (two turns of cable) carries A, whose axis is 120 mm above the nose
+            "head-head-ac" => (
+                [
+                    axis(C, Head, (Some(-360.0), Some(360.0)), [0.0; 3]),
+                    axis(A, Head, (Some(-110.0), Some(110.0)), [0.0, 0.0, 120.0]),
+                ],
+                [[-1500.0, 1500.0], [-1000.0, 1000.0], [-600.0, 800.0]],
+            ),
+            _ => return None,
+        };
+        Some(Machine { name: name.to_string(), rotary, travel, part_zero: [10.0, -5.0, 25.0] })
+    }
+
+    /// Checks the description: distinct axes, direction ±1, finite numbers below 1e7, min < max.
+    pub fn validate(&self) -> Result<()> {
+        let bad = |what: String| Err(Error::parameter("machine", what));
+        let [r0, r1] = &self.rotary;
+        if r0.name == r1.name {
+            return bad(format!("the two rotary axes must differ, both are {}", r0.name.letter()));
+        }
+        let finite = |x: f64| x.is_finite() && x.abs() <= MAX_MACHINE_VALUE;
+        for r in &self.rotary {
+            let n = r.name.letter();
+            if r.direction != 1.0 && r.direction != -1.0 {
+                return bad(format!("rotary axis {n}: direction must be 1 or -1, got {}", r.direction));
+            }
+            if !finite(r.zero) || !r.pivot.iter().all(|&x| finite(x)) {
+                return bad(format!("rotary axis {n}: zero and pivot must be finite numbers of at most 1e7"));
+            }
+            if !r.min.is_none_or(finite) || !r.max.is_none_or(finite) {
+                return bad(format!("rotary axis {n}: limits must be finite numbers of at most 1e7, or null"));
+            }
+            if let (Some(lo), Some(hi)) = (r.min, r.max) {
+                if lo >= hi {
+                    return bad(format!("rotary axis {n}: min must be below max, got [{lo}, {hi}]"));
+                }
+            }
+        }
+        for (k, [lo, hi]) in self.travel.iter().enumerate() {
+            let n = ["X", "Y", "Z"][k];
+            if !finite(*lo) || !finite(*hi) || lo >= hi {
+                return bad(format!("travel of {n} must be [min, max] with finite min < max, got [{lo}, {hi}]"));
+            }
+        }
+        if !self.part_zero.iter().all(|&x| finite(x)) {
+            return bad("partZero must be three finite numbers of at most 1e7".to_string());
+        }
+        Ok(())
+    }
+
+    /// The rotary axes on the table, the first of the chain first.
+    pub fn table_axes(&self) -> Vec<usize> {
+        (0..2).filter(|&k| self.rotary[k].on == Carrier::Table).collect()
+    }
+
+    /// The rotary axes on the head, the first of the chain first.
+    pub fn head_axes(&self) -> Vec<usize> {
+        (0..2).filter(|&k| self.rotary[k].on == Carrier::Head).collect()
+    }
+
+    /// A short description for a program's header: "table-table-ac: A on the table about X
+    /// (-30 to 120), C on the table about Z (continuous)".
+    pub fn describe(&self) -> String {
+        let one = |r: &RotaryAxis| {
+            let on = match r.on {
+                Carrier::Table => "table",
+                Carrier::Head => "head",
+            };
+            let about = ["X", "Y", "Z"][r.name as usize];
+            let limits = match (r.min, r.max) {
+                (None, None) => "continuous".to_string(),
+                (lo, hi) => format!(
+                    "{} to {}",
+                    lo.map_or("-inf".to_string(), |v| format!("{v}")),
+                    hi.map_or("inf".to_string(), |v| format!("{v}"))
+                ),
+            };
+            format!("{} on the {on} about {about} ({limits} deg)", r.name.letter())
+        };
+        format!("{}: {}, {}", self.name, one(&self.rotary[0]), one(&self.rotary[1]))
+    }
+}
+
+/// x ↦ c + R(x − c) for the rotary axis `r` at controller value `v`.
+pub(crate) fn turn(r: &RotaryAxis, v: f64, x: DVec3, pivot: DVec3) -> DVec3 {
+    pivot + r.rotation(v) * (x - pivot)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn presets_are_valid_and_named() {
+        for name in PRESETS {
+            let m = Machine::preset(name).unwrap();
+            m.validate().unwrap();
+            assert_eq!(m.name, name);
+        }
+        assert!(Machine::preset("table-table-xy").is_none());
+    }
+
+    #[test]
+    fn validation_names_what_is_wrong() {
+        let mut m = Machine::preset("table-table-ac").unwrap();
+        m.rotary[1].name = AxisName::A;
+        assert!(m.validate().unwrap_err().to_string().contains("must differ"));
+        let mut m = Machine::preset("table-table-ac").unwrap();
+        m.rotary[0].direction = 2.0;
+        assert!(m.validate().unwrap_err().to_string().contains("direction must be 1 or -1"));
+        let mut m = Machine::preset("table-table-ac").unwrap();
+        m.travel[2] = [5.0, -5.0];
+        assert!(m.validate().unwrap_err().to_string().contains("travel of Z"));
+        let mut m = Machine::preset("table-table-ac").unwrap();
+        m.rotary[0].min = Some(f64::NAN);
+        assert!(m.validate().is_err());
+    }
+
+    #[test]
+    fn a_value_and_its_angle_agree() {
+        let r = RotaryAxis {
+            name: AxisName::B,
+            on: Carrier::Head,
+            direction: -1.0,
+            zero: 90.0,
+            min: None,
+            max: None,
+            pivot: [0.0; 3],
+        };
+        assert!((r.value(r.angle(37.0)) - 37.0).abs() < 1e-12);
+        assert!((r.angle(90.0)).abs() < 1e-15);
+    }
+}
