@@ -62,3 +62,6 @@ export const KEY_STEP = 0.02;
 export const LONG_PRESS = 500;
 /** A pointer that moves less than this (CSS px) has not started a drag yet (a press, a long press). */
 export const DRAG_SLOP = 3;
+
+/** Points of an exact striction curve whose straightness is measured (an exercise's "straight line"). */
+export const STRAIGHTNESS_SAMPLES = 201;

@@ -125,6 +125,8 @@
  * @property {(onProgress: (fraction: number) => void) => Promise<Built>} [later]   heavy work finishing in a worker
  * @property {Editable} [input]     the handles of the scene's input (its edited input when
  *   `context.input` was given): a scene with handles can be edited by dragging them
+ * @property {Record<string, number>} [measures]   named values for exercises' conditions (beside
+ *   the numeric readouts, which conditions name by their keys), e.g. "striction.minAbsDelta"
  * @property {string[]} [problems]  what the input's geometry leaves undefined, in words ("rulings
  *   4 and 5 are parallel: δ undefined there"), shown under the readout
  *
@@ -156,6 +158,10 @@
  *   parameters is a scene of Params)
  * @property {boolean} [editAsData] the scene has no handles, but its sample can become your data
  *   ("Edit as data": the formula scenes)
+ * @property {{exact(params: P, context: Context, kind: 'striction' | 'distribution', samples: number): {u: Float64Array, values: Float64Array} | null}['exact']} [exact]
+ *   the exact striction curve s(u) (3 numbers per u) or distribution parameter δ(u) of the
+ *   scene's analytic surface at `samples` parameters over its range: what a typed answer is
+ *   compared with in an exercise
  * @property {string[]} [fixed]     the parameters an edit of the input replaces (the surface and
  *   the number of its rulings, say): disabled while the input is edited, with the reason
  * @property {(option: string) => string | string[] | null} [fieldOf]
@@ -269,6 +275,21 @@ export function readParams(scene, query) {
     if (note) notes.push({ key: p.key, note });
   }
   return { params, notes };
+}
+
+/**
+ * The scene's defaults with `chosen` parameters and what those choices set besides (Param.sets:
+ * a preset fills the formula fields), as choosing them in the controls does; values chosen
+ * explicitly win over what a choice sets.
+ * @param {Scene} scene
+ * @param {Params} chosen
+ * @returns {Params}
+ */
+export function withChoices(scene, chosen) {
+  let out = { ...defaults(scene), ...chosen };
+  for (const p of scene.params)
+    if (p.sets && p.key in chosen) out = { ...out, ...p.sets(chosen[p.key], out), ...chosen };
+  return out;
 }
 
 /** The defaults of every parameter. */

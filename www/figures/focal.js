@@ -9,7 +9,7 @@ import { DATA_COMPLEX_TOLERANCE, ROUNDING } from '../limits.js';
  * @param {import('../../pkg/ruledlab.js').LineCongruence} grid
  * @param {{sheets: boolean, torsal: boolean}} p
  * @param {import('../scene.js').Context} ctx
- * @returns {{layers: import('../scene.js').Layer[], readouts: import('../scene.js').Readout[], sentence: string, positions: ArrayLike<number>[]}}
+ * @returns {{layers: import('../scene.js').Layer[], readouts: import('../scene.js').Readout[], sentence: string, positions: ArrayLike<number>[], measures: Record<string, number>}}
  */
 export function focalFigure(own, grid, p, { t }) {
   // computed once by the core; every layer below is drawn from that one computation
@@ -68,5 +68,10 @@ export function focalFigure(own, grid, p, { t }) {
     normality: real.length ? t('focal.describe.normality', { normality }) : '',
     complex: t(`complex.kind.${complex.kind}`),
   });
-  return { layers, readouts, sentence, positions };
+  /** the shares of the lines by kind, for exercises ("no real focal points": every line elliptic) */
+  const measures = {
+    'focal.ellipticShare': n ? count[0] / n : Number.NaN,
+    'focal.hyperbolicShare': n ? count[1] / n : Number.NaN,
+  };
+  return { layers, readouts, sentence, positions, measures };
 }

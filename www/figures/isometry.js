@@ -113,6 +113,11 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null, from 
   const image = surface.developmentStriction();
   const envelope = surface.developmentEnvelope();
   const radius = middleRadius(surface);
+  // δ of the middle pair of rulings, on the surface and on what it is bent to: a Minding
+  // isometry keeps it (Section 3)
+  const middle = Math.max(0, Math.floor((n - 1) / 2) - 1);
+  const delta = surface.invariants().distribution[middle];
+  const deltaBent = bent.invariants().distribution[middle];
   return {
     bounds: box,
     camera: p.layout === 'panels' ? { yaw: -Math.PI / 2, pitch: 0.8 } : { yaw: -1.2, pitch: 0.45 },
@@ -122,9 +127,11 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null, from 
       { label: 'isometry.readout.nonDevelopability', value: nonDevelopability, exactZero: true },
       { label: 'isometry.readout.isometry', value: defect },
       { label: 'isometry.readout.radius', value: radius },
+      { label: 'isometry.readout.delta', value: delta },
       ...(finer ? [{ label: 'isometry.readout.radiusFiner', value: finer.radius }] : []),
     ],
     claims: claimsOf(name, n, radius, finer),
+    measures: { 'isometry.deltaMiddle': delta, 'isometry.deltaBentMiddle': deltaBent },
     description: t(p.layout === 'panels' ? 'isometry.describePanels' : 'isometry.describe', {
       surface: t(`surface.${name}`),
       n,

@@ -82,6 +82,8 @@ export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders 
     p.exact && exact && t('striction.describe.exact'),
   ].filter(Boolean);
   const parallelPairs = inv.parallel.reduce((a, b) => a + b, 0);
+  // the smallest |δ| of a pair of rulings: 0 where two rulings meet (a torsal pair)
+  const deltas = Array.from(inv.distribution, Math.abs).filter(Number.isFinite);
   const surfaceName = t(`surface.${name}`);
   return {
     bounds: bounds(segments),
@@ -115,6 +117,7 @@ export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders 
       ...measured,
     ],
     claims,
+    measures: { 'striction.minAbsDelta': deltas.length ? Math.min(...deltas) : Number.NaN },
     problems: parallelProblems(inv.parallel, n, t),
     description: errors
       ? t('striction.describe', {
@@ -136,3 +139,17 @@ export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders 
 
 /** The surfaces on which the text claims the orders 1, 2, 2 (the others are exact or degenerate). */
 const ORDER_SURFACES = ['hyperboloid', 'quartic'];
+
+/**
+ * The exact striction curve s(u) (3 numbers per u) or distribution parameter δ(u) of an analytic
+ * surface at `samples` parameters over its range (Scene.exact: what a typed answer is compared
+ * with).
+ * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
+ * @param {{uMin: number, uMax: number, closed: boolean}} ranges
+ * @param {'striction' | 'distribution'} kind
+ * @param {number} samples
+ */
+export function exactCurve(analytic, ranges, kind, samples) {
+  const u = analytic.parameters(samples, { ...ranges, closed: false });
+  return { u, values: kind === 'striction' ? analytic.striction(u) : analytic.distribution(u) };
+}

@@ -87,7 +87,7 @@ export default {
   'notation.describeEdited':
     'Ihre Bearbeitung dreier aufeinanderfolgender Erzeugender mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} beträgt {angle} rad, ihr Abstand {distance}.',
   'convergence.describeEdited':
-    'Ihre Bearbeitung der drei Erzeugenden mit ihren gemeinsamen Loten, Fußpunkten und dem Kehlpunkt; der gemittelte Verteilungsparameter an der mittleren Erzeugenden ist {delta}.',
+    'Ihre Bearbeitung der drei Erzeugenden mit ihren gemeinsamen Loten, Fußpunkten und dem Kehlpunkt; der gemittelte Drall an der mittleren Erzeugenden ist {delta}.',
   'convergence.editedNote':
     'Die Ordnungen werden an der exakten Fläche gemessen, die Ihre Bearbeitung nicht hat: „Zurück zur eingebauten Eingabe“ misst sie wieder.',
   'convergence.readout.delta01': 'δ_{0,1}',

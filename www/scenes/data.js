@@ -56,18 +56,22 @@ export const scene = defineScene({
           });
         /** @type {import('../scene.js').Readout[]} */
         const readouts = [{ label: 'data.readout.lines', value: `${rows} × ${cols}` }];
+        /** @type {Record<string, number>} */
+        const measures = {};
         let description = t('data.describeCongruence', { rows, cols });
         if (p.focal) {
           // beyond the paper: the focal geometry of your grid of lines (scene "Focal surfaces")
           const focal = focalFigure(own, c, { sheets: true, torsal: true }, ctx);
           layers.push(...focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'));
           readouts.push(...focal.readouts);
+          Object.assign(measures, focal.measures);
           description = `${description} ${focal.sentence}`;
         }
         return {
           bounds: bounds(seg),
           layers,
           readouts,
+          measures,
           description,
           data: { segments, grid: { rows, cols } },
           input: { sets: [lineSet(c.segments(), cols)], from },

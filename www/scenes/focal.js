@@ -53,6 +53,7 @@ export const scene = defineScene({
         camera: { yaw: -2.1, pitch: 0.55 },
         layers: figure.layers,
         readouts: figure.readouts,
+        measures: figure.measures,
         description: `${edited ? ctx.t('edit.edited', { what: congruence }) : congruence}: ${figure.sentence}`,
         data: { segments: grid.segments(), grid: { rows: grid.rows, cols: grid.cols } },
         // the handles: p and q of every line of the grid

@@ -121,6 +121,7 @@ export const scene = defineScene({
         const focal = focalFigure(own, own(analytic.grid()), { sheets: true, torsal: true }, ctx);
         built.layers.push(...focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'));
         built.readouts?.push(...focal.readouts);
+        built.measures = { ...built.measures, ...focal.measures };
         built.description = `${built.description} ${focal.sentence}`;
       }
       return built;

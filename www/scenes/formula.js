@@ -2,12 +2,13 @@
 // it: the striction polygon against the exact striction curve, the convergence orders,
 // bending, the approximate development, and subdivision. The core parses the formulas and
 // differentiates them exactly; the formulas live in the link, so a lecturer can link an exercise.
-import { AnalyticSurface } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, fitLine } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { strictionFigure } from '../figures/striction.js';
+import { strictionFigure, exactCurve } from '../figures/striction.js';
 import { convergenceFigure } from '../figures/convergence.js';
 import { isometryFigure } from '../figures/isometry.js';
 import { subdivisionFigure } from '../figures/subdivision.js';
+import { STRAIGHTNESS_SAMPLES } from '../limits.js';
 import { SURFACE_PRESETS, surfacePreset, formulaParameter } from '../catalogue.js';
 
 /** The formula fields a catalogue surface fills in (its texts from the core) and its a, b, c. */
@@ -68,6 +69,34 @@ const formula = (/** @type {string} */ key, /** @type {string} */ value) => ({
 });
 
 /** @typedef {{preset: string, ax: string, ay: string, az: string, ex: string, ey: string, ez: string, umin: string, umax: string, vmin: string, vmax: string, closed: boolean, a: number, b: number, c: number, tool: string, n: number, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis: boolean, strip: boolean, u: number, h0: number, levels: number, t: number, scheme: string, steps: number}} FormulaParams */
+
+/**
+ * The surface of the formula fields (the caller owns it).
+ * @param {import('../scene.js').Params} p
+ * @param {import('../scene.js').Context} ctx
+ */
+function analyticOf(p, ctx) {
+  return AnalyticSurface.fromFormulas({
+    a: [String(p.ax), String(p.ay), String(p.az)],
+    e: [String(p.ex), String(p.ey), String(p.ez)],
+    u: [String(p.umin), String(p.umax)],
+    v: [String(p.vmin), String(p.vmax)],
+    closed: !!p.closed,
+    parameters: { a: Number(p.a), b: Number(p.b), c: Number(p.c) },
+    // 0,5 is a number in every language (a German link opened in English); only a German
+    // reader's atan2(1,5) is ambiguous (an English reader's has two arguments)
+    decimalComma: ctx.lang === 'de' ? true : 'unambiguous',
+  });
+}
+
+/** The u-range of the surface of the formula fields (the fields' own ends, evaluated by the core). */
+function rangesOf(
+  /** @type {import('../../pkg/ruledlab.js').AnalyticSurface} */ analytic,
+  /** @type {import('../scene.js').Params} */ p,
+) {
+  const [uMin, uMax] = [...analytic.parameters(2, { closed: false })];
+  return { uMin, uMax, closed: !!p.closed };
+}
 
 export const scene = defineScene({
   id: 'formula',
@@ -225,23 +254,17 @@ export const scene = defineScene({
   ],
   fieldOf: (option) => FIELDS[option] ?? null,
   /** @param {FormulaParams} p */
+  exact(p, ctx, kind, samples) {
+    return scoped((own) => {
+      const analytic = own(analyticOf(p, ctx));
+      return exactCurve(analytic, rangesOf(analytic, p), kind, samples);
+    });
+  },
+  /** @param {FormulaParams} p */
   create(p, ctx) {
     return scoped((own) => {
-      const analytic = own(
-        AnalyticSurface.fromFormulas({
-          a: [String(p.ax), String(p.ay), String(p.az)],
-          e: [String(p.ex), String(p.ey), String(p.ez)],
-          u: [String(p.umin), String(p.umax)],
-          v: [String(p.vmin), String(p.vmax)],
-          closed: !!p.closed,
-          parameters: { a: Number(p.a), b: Number(p.b), c: Number(p.c) },
-          // 0,5 is a number in every language (a German link opened in English); only a German
-          // reader's atan2(1,5) is ambiguous (an English reader's has two arguments)
-          decimalComma: ctx.lang === 'de' ? true : 'unambiguous',
-        }),
-      );
-      const [uMin, uMax] = [...analytic.parameters(2, { closed: false })];
-      const ranges = { uMin, uMax, closed: !!p.closed };
+      const analytic = own(analyticOf(p, ctx));
+      const ranges = rangesOf(analytic, p);
       const n = Number(p.n);
       if (p.tool === 'convergence')
         return convergenceFigure(own, analytic, { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) }, ctx);
@@ -257,7 +280,13 @@ export const scene = defineScene({
           'formula',
         );
       }
-      return strictionFigure(own(analytic.sample(p.n, ranges)), analytic, ranges, p, ctx, 'formula');
+      const built = strictionFigure(own(analytic.sample(p.n, ranges)), analytic, ranges, p, ctx, 'formula');
+      // how far the exact striction curve is from a straight line (an exercise asks for one that is)
+      let straightness = Number.NaN;
+      try {
+        straightness = fitLine(exactCurve(analytic, ranges, 'striction', STRAIGHTNESS_SAMPLES).values).deviation;
+      } catch {}
+      return { ...built, measures: { ...built.measures, 'formula.strictionStraightness': straightness } };
     });
   },
 });

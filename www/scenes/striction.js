@@ -3,7 +3,7 @@
 // midpoints of the common perpendiculars, against the exact striction curve.
 import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { strictionFigure } from '../figures/striction.js';
+import { strictionFigure, exactCurve } from '../figures/striction.js';
 import { surfaceOptions, rangesOf } from '../catalogue.js';
 import { rulingSet } from '../edit/sets.js';
 
@@ -34,6 +34,13 @@ export const scene = defineScene({
     { style: 'exact', label: 'legend.exactStriction', when: (p) => !!p.exact },
     { style: 'complexAxis', label: 'legend.complexAxis', when: (p) => !!p.axis },
   ],
+  /** @param {StrictionParams} p */
+  exact(p, _ctx, kind, samples) {
+    return scoped((own) => {
+      const name = String(p.surface);
+      return exactCurve(own(AnalyticSurface.byName(name)), rangesOf(name), kind, samples);
+    });
+  },
   /** @param {StrictionParams} p */
   create(p, ctx) {
     return scoped((own) => {

@@ -1,0 +1,243 @@
+// Exercises (issue 28): the format read and refused as documented, every built-in exercise fits
+// its scene, is not solved at its start and is solved by its solution state — checked by the same
+// code the page checks with, on what the core computes.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import './load.mjs';
+import { SCENES } from '../../www/scenes/index.js';
+import { defaults, withChoices } from '../../www/scene.js';
+import { translator } from '../../www/i18n/index.js';
+import { decodeInput } from '../../www/edit/input.js';
+import { readTask, writeTask, taskFromLink, taskLink, TaskError } from '../../www/task/format.js';
+import { checkGoal, fitTask, answerNumber, measuresOf } from '../../www/task/check.js';
+import { builtInTasks, builtInTask } from '../../www/task/builtin.js';
+
+const i18n = translator('en');
+const context = { t: i18n.t, format: i18n.format, lang: 'en' };
+const sceneOf = (/** @type {string} */ id) => /** @type {any} */ (SCENES.find((s) => s.id === id));
+
+/** The scene of a task at parameters and an edit (the task's start merged in). */
+const computeFor = (/** @type {any} */ task) => (/** @type {any} */ params, /** @type {any} */ input) => {
+  const scene = sceneOf(task.scene);
+  return scene.create(withChoices(scene, { ...task.params, ...params }), { ...context, ...(input ? { input } : {}) });
+};
+
+/** The outcome of checking a task in a state (parameters, edit, answers). */
+function check(/** @type {any} */ task, /** @type {any} */ state) {
+  const scene = sceneOf(task.scene);
+  const params = withChoices(scene, { ...task.params, ...(state.params ?? {}) });
+  const inputText = state.input ?? null;
+  const input = inputText ? decodeInput(inputText) : null;
+  const built = scene.create(params, { ...context, ...(input ? { input } : {}) });
+  /** @type {Record<string, string | string[]>} */
+  const answers = {};
+  for (const [k, v] of Object.entries(state.answers ?? {})) answers[k] = Array.isArray(v) ? v : String(v);
+  return checkGoal(task, built, answers, { scene, params, context });
+}
+
+test('the built-in set: at least 12 exercises along the paper, English and German, every one fitting its scene', () => {
+  const tasks = builtInTasks();
+  assert.ok(tasks.length >= 12, `${tasks.length} exercises`);
+  assert.equal(new Set(tasks.map((t) => t.id)).size, tasks.length, 'ids differ');
+  for (const task of tasks) {
+    assert.ok(task.title.de && task.prompt.de, `${task.id}: German title and prompt`);
+    for (const h of task.hints) assert.ok(h.de, `${task.id}: every hint in German`);
+    for (const a of task.answers) assert.ok(a.label.de, `${task.id}: answer labels in German`);
+    assert.ok(task.solution, `${task.id}: has a solution`);
+    fitTask(task, SCENES, computeFor(task));
+  }
+  // scenes along the paper: Sections 2 (striction), 3 (isometry), 4 (curves, strip, lines), 5 (congruence, focal), 6 (milling)
+  const scenes = new Set(tasks.map((t) => t.scene));
+  for (const s of [
+    'striction',
+    'isometry',
+    'curves',
+    'strip',
+    'congruence',
+    'milling',
+    'formula',
+    'formula-congruence',
+    'lines',
+  ])
+    assert.ok(scenes.has(s), `an exercise in ${s}`);
+});
+
+for (const task of builtInTasks()) {
+  test(`built-in "${task.id}": not solved at its start, solved by its solution`, () => {
+    const start = check(task, { input: task.input });
+    assert.equal(
+      start.solved,
+      false,
+      `${task.id} is solved at its start: ${JSON.stringify(start.outcomes.map((o) => [o.value, o.target]))}`,
+    );
+    const solution = /** @type {any} */ (task.solution);
+    const done = check(task, {
+      params: solution.params,
+      input: solution.input ?? (solution.params || solution.answers ? task.input : null),
+      answers: solution.answers,
+    });
+    for (const o of done.outcomes)
+      assert.ok(
+        o.holds,
+        `${task.id}: a condition fails in the solution: value ${o.value}, target ${o.target}, ${o.error ?? ''}`,
+      );
+    assert.equal(done.solved, true);
+  });
+}
+
+test('answers: a wrong number misses by how much, a formula is evaluated by the core and compared point by point', () => {
+  const chaikin = /** @type {any} */ (builtInTask('chaikin-count'));
+  const wrong = check(chaikin, { answers: { count: '48' } });
+  assert.equal(wrong.solved, false);
+  assert.equal(wrong.outcomes[0].value, 48);
+  assert.equal(wrong.outcomes[0].target, 50);
+  assert.equal(wrong.outcomes[0].miss, 1.5, '|48 − 50| − 0.5');
+  const none = check(chaikin, { answers: {} });
+  assert.equal(none.solved, false);
+  assert.equal(/** @type {any} */ (none.outcomes[0].error)?.details?.reason, 'task.check.noAnswer');
+  // the hyperbolic paraboloid's striction curve: (u, 0, 0); a wrong one misses by its largest distance
+  const hypar = /** @type {any} */ (builtInTask('hypar-striction'));
+  const off = check(hypar, { answers: { s: ['u', '0', '0.1*u'] } });
+  assert.equal(off.solved, false);
+  // the u range of the preset is [−1, 1]: 0.1·u is farthest at |u| = 1
+  assert.ok(Math.abs(off.outcomes[0].value - 0.1) < 1e-12, `max distance ${off.outcomes[0].value}`);
+  assert.equal(Math.abs(/** @type {number} */ (off.outcomes[0].at)), 1);
+  // a formula the core refuses: its message, with the field's name and column
+  const broken = check(hypar, { answers: { s: ['u', '0', '2*'] } });
+  assert.equal(broken.solved, false);
+  const error = /** @type {any} */ (broken.outcomes[0].error);
+  assert.equal(error?.code, 'parse-error');
+  assert.match(error.message, /s\[2\]/);
+  // German decimal commas in a typed formula
+  const delta = /** @type {any} */ (builtInTask('hypar-distribution'));
+  const de = { ...context, lang: 'de' };
+  const scene = sceneOf('formula');
+  const params = withChoices(scene, delta.params);
+  const built = scene.create(params, de);
+  assert.equal(checkGoal(delta, built, { delta: '1 + 1,0*u^2' }, { scene, params, context: de }).solved, true);
+  assert.equal(answerNumber('−0,5'), -0.5);
+  assert.equal(answerNumber('1/3'), 1 / 3);
+  assert.ok(Number.isNaN(answerNumber('one half')));
+});
+
+test('a condition comparing two values of the scene, and every condition on a value that is not a number fails', () => {
+  const strip = /** @type {any} */ (builtInTask('coupled-strip'));
+  const at3 = check(strip, { params: { n: 3 } });
+  const values = measuresOf(computeFor(strip)({ n: 3 }, null));
+  assert.equal(at3.outcomes[0].value, values['strip.readout.compare.coupled']);
+  assert.equal(at3.outcomes[0].target, values['strip.readout.compare.midpoint']);
+  assert.ok(at3.outcomes[0].miss > 0);
+  const task = readTask({
+    ruledlab: 'exercise',
+    version: 1,
+    id: 'x',
+    title: { en: 'x' },
+    prompt: { en: 'x' },
+    scene: 'striction',
+    goal: [{ value: 'readout.nothing', below: 1 }],
+  });
+  const built = computeFor(task)({}, null);
+  const scene = sceneOf('striction');
+  const r = checkGoal(task, built, {}, { scene, params: { ...defaults(scene) }, context });
+  assert.equal(r.solved, false, 'an absent value is NaN, never below anything');
+});
+
+test('the format: round trip through JSON and a link; malformed and hostile exercises refused with a reason', () => {
+  for (const task of builtInTasks()) assert.deepEqual(readTask(writeTask(task)), task, task.id);
+  const custom = readTask({ ...JSON.parse(writeTask(/** @type {any} */ (builtInTask('torsal-pair')))), id: 'my-own' });
+  const link = taskLink(custom, (id) => !!builtInTask(id));
+  assert.match(link, /^j\.[A-Za-z0-9_-]+$/);
+  assert.deepEqual(taskFromLink(link, builtInTask), custom);
+  assert.equal(
+    taskLink(/** @type {any} */ (builtInTask('torsal-pair')), (id) => !!builtInTask(id)),
+    'torsal-pair',
+  );
+  const base = {
+    ruledlab: 'exercise',
+    version: 1,
+    id: 'x',
+    title: { en: 'T' },
+    prompt: { en: 'P' },
+    scene: 'striction',
+    goal: [{ value: 'readout.midpointError', below: 1 }],
+  };
+  /** @type {Array<[any, string]>} */
+  const bad = [
+    ['{', 'task.error.notJson'],
+    ['x'.repeat(40000), 'task.error.tooLong'],
+    [{ ...base, ruledlab: 'other' }, 'task.error.notExercise'],
+    [{ ...base, version: 2 }, 'task.error.notExercise'],
+    [{ ...base, extra: 1 }, 'task.error.unknownKey'],
+    [{ ...base, id: 'Has Spaces' }, 'task.error.id'],
+    [{ ...base, title: 'T' }, 'task.error.type'],
+    [{ ...base, title: { en: 'T', fr: 'T' } }, 'task.error.unknownKey'],
+    [{ ...base, prompt: { en: 'x'.repeat(3000) } }, 'task.error.text'],
+    [{ ...base, params: { n: 1e300 } }, 'task.error.number'],
+    [{ ...base, params: { n: Number.NaN } }, 'task.error.number'],
+    [{ ...base, goal: [] }, 'task.error.missing'],
+    [{ ...base, goal: [{ value: 'a', below: 1, above: 2 }] }, 'task.error.condition'],
+    [{ ...base, goal: [{ value: 'a', near: 1 }] }, 'task.error.condition'],
+    [{ ...base, goal: [{ answer: 'nope', below: 1 }] }, 'task.error.condition'],
+    [{ ...base, goal: [{ value: 'a', below: '<script>' }] }, 'task.error.number'],
+    [{ ...base, hints: [{ en: 'a' }, { en: 'b' }, { en: 'c' }, { en: 'd' }] }, 'task.error.count'],
+    [{ ...base, answers: [{ id: 's', kind: 'essay', label: { en: 's' } }] }, 'task.error.type'],
+    [{ ...base, goal: [{ value: 'readout.midpointError', below: { value: 'x', evil: 1 } }] }, 'task.error.unknownKey'],
+  ];
+  for (const [x, reason] of bad) {
+    assert.throws(
+      () => readTask(x),
+      (e) => e instanceof TaskError && e.code === 'invalid-task' && /** @type {any} */ (e).details.reason === reason,
+      `${JSON.stringify(x).slice(0, 80)} → ${reason}`,
+    );
+  }
+  // texts are kept as text (the page shows them with textContent), control characters dropped
+  const t = readTask({ ...base, title: { en: '<img src=x onerror=alert(1)>\u0007' } });
+  assert.equal(t.title.en, '<img src=x onerror=alert(1)>');
+});
+
+test('an exercise that does not fit its scene is refused: unknown scene, parameter, value, edit', () => {
+  const base = {
+    ruledlab: 'exercise',
+    version: 1,
+    id: 'x',
+    title: { en: 'T' },
+    prompt: { en: 'P' },
+    scene: 'striction',
+    goal: [{ value: 'readout.midpointError', below: 1 }],
+  };
+  /** @type {Array<[any, string]>} */
+  const bad = [
+    [{ ...base, scene: 'nowhere' }, 'task.error.unknownScene'],
+    [{ ...base, params: { nope: 1 } }, 'task.error.unknownParam'],
+    [{ ...base, params: { n: 10000 } }, 'task.error.badParam'],
+    [{ ...base, change: ['nope'] }, 'task.error.unknownParam'],
+    [{ ...base, goal: [{ value: 'readout.nothing', below: 1 }] }, 'task.error.unknownValue'],
+    [{ ...base, hide: ['readout.nothing'] }, 'task.error.unknownValue'],
+    [{ ...base, input: 'rulings.AAAA' }, 'task.error.badInput'],
+    [
+      { ...base, scene: 'curves', change: ['handles'], input: 'rulings.AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA' },
+      'task.error.badInput',
+    ],
+    [
+      { ...base, scene: 'large', change: ['handles'], goal: [{ value: 'readout.rulings', below: 1 }] },
+      'task.error.noHandles',
+    ],
+    [
+      {
+        ...base,
+        scene: 'curves',
+        answers: [{ id: 's', kind: 'curve', label: { en: 's' } }],
+        goal: [{ answer: 's', matches: 'striction', within: 1 }],
+      },
+      'task.error.noExact',
+    ],
+  ];
+  for (const [x, reason] of bad) {
+    const task = readTask(x);
+    assert.throws(
+      () => fitTask(task, SCENES, computeFor(task)),
+      (e) => e instanceof TaskError && /** @type {any} */ (e).details.reason === reason,
+      `${JSON.stringify(x).slice(0, 100)} → ${reason}`,
+    );
+  }
+});

@@ -1,0 +1,420 @@
+// The built-in exercises: a set along the paper, in English and German, each tested to be
+// solvable (its solution state passes the check) and not solved at its start
+// (tests/node/task.test.mjs). Their data (a start edit, a solution edit) are the page's own, made
+// once from the scenes' input and written here; their mathematics is the paper's (Sections 2–5)
+// and the core's.
+import { readTask } from './format.js';
+import { congruencePreset, surfacePreset } from '../catalogue.js';
+
+/** The formula fields of a catalogue surface (for a solution typed as formulas). */
+function surfaceFields(/** @type {string} */ name) {
+  const p = /** @type {NonNullable<ReturnType<typeof surfacePreset>>} */ (surfacePreset(name));
+  return { ax: p.a[0], ay: p.a[1], az: p.a[2], ex: p.e[0], ey: p.e[1], ez: p.e[2], umin: p.u[0], umax: p.u[1] };
+}
+
+/** The formula fields of a catalogue congruence. */
+function congruenceFields(/** @type {string} */ name) {
+  const c = /** @type {NonNullable<ReturnType<typeof congruencePreset>>} */ (congruencePreset(name));
+  return {
+    px: c.p[0],
+    py: c.p[1],
+    pz: c.p[2],
+    ex: c.e[0],
+    ey: c.e[1],
+    ez: c.e[2],
+    umin: c.u[0],
+    umax: c.u[1],
+    vmin: c.v[0],
+    vmax: c.v[1],
+  };
+}
+
+/** Edits made once from the scenes' own input (a ruling of the cone lifted, a tool pose lifted, …). */
+const TORSAL_SOLUTION =
+  'rulings.AAAAAAAA8D8AAAAAAAAAwAAAAAAAAAjAAAAAAAAA8D8AAAAAAAAAQAAAAAAAAAhAzDt_Zp6g9j8AAAAAAACwvAAAAAAAAAjAAAAAAAAAoDzMO39mnqAGQAAAAAAAAAhAAAAAAAAA8D__________PwAAAAAAAAjAyzt_Zp6g5r_MO39mnqD2PwAAAAAAAAAAAAAAAAAAoDzMO39mnqAGQAAAAAAAAAjAzDt_Zp6g9r8AAAAAAACwPAAAAAAAAAhA________778BAAAAAAAAQAAAAAAAAAjAAQAAAAAA8L__________vwAAAAAAAAhAzTt_Zp6g9r8AAAAAAADAPAAAAAAAAAjAAAAAAAAAsLzNO39mnqAGwAAAAAAAAAhAAQAAAAAA8L_-________vwAAAAAAAAjA_v______7z8BAAAAAAAAwAAAAAAAAAhAAAAAAAAAuLzMO39mnqAGwAAAAAAAAAjAzDt_Zp6g9j8AAAAAAADIvAAAAAAAAAhA';
+const CONE_START =
+  'rulings.zczMzMzM7D-amZmZmZnJvzMzMzMzM_M_MzMzMzMzB0CamZmZmZnJv5qZmZmZmQFACbBiQEiO7D8Q4lrwiZ_EvzMzMzMzM_M_DQiUYGzVBkCIznp3EQuhP5qZmZmZmQFAzA3-TR3V6z-7rg6jL6y_vzMzMzMzM_M_shT99Ku_BUDo-WmLuH3QP5qZmZmZmQFA5WWfwFyo6j_qqQLFC9i2vzMzMzMzM_M_1xjvIIv8A0AhAXxY7rvdP5qZmZmZmQFAng9qdoAT6T9g_z52zDGuvzMzMzMzM_M_bBefsUCdAUA8YKhTU63kP5qZmZmZmQFAq_VeRvsl5z_s9NFi1nShvzMzMzMzM_M_AOEc0_Fx_T8mRPGaL3TpP5qZmZmZmQFAjzrmF6Ly5D9gvZnBjtaPvzMzMzMzM_M_rq-yR-bX9j9Altmd4gPtP5qZmZmZmQFAjClJ7vOO4j8gVHNPyodwvzMzMzMzM_M_R_m2lbdZ7z8OmEaEojnvP5qZmZmZmQFA_R0P7UcS4D8AAPY17BvKvjMzMzMzM_M_7LNajq9t4D8Qrx3W2P_vP5qZmZmZmQFAUATgsNIp2z_A1IH-xYFtvzMzMzMzM_M_EM8AKoHXpz8E9Qhc9U7vP5qZmZmZmQFAnyIUilRe1j8AcINIVRiOvzMzMzMzM_M_RDCHwwTK2b-ArTMBuC3tP83MzMzMzARApDUPCuzw0T_EOeZJ2NKgvzMzMzMzM_M_FF_S4Tst6r9Wqknk7rDpP5qZmZmZmQFAzuaujbEZzD88XjkLjWOtvzMzMzMzM_M_5dK81brs8r-qfMobq_rkP5qZmZmZmQFAkvXloDmwxT-6zGXBul62vzMzMzMzM_M_0YdTx9S797_pTOfd53HeP5qZmZmZmQFA6FSA0xLkwD-qVrdiTiW_vzMzMzMzM_M_UsBf4fFU-78B_uxrCkjRP5qZmZmZmQFAgOqKcjTIuz8IJZz541fEvzMzMzMzM_M_EOgLVeyU_b9Qh1yZoMKnP5qZmZmZmQFAQPKHVzubuT_bFvEvelDJvzMzMzMzM_M_KAUtv8ll_r8hiaYf3eLHv5qZmZmZmQFAxBZ7EntWuz_dxwGx2kvOvzMzMzMzM_M_dtcR2ZG__b-WVwUTkOPav5qZmZmZmQFAygYB54R0wD_EA_yLrYzRvzMzMzMzM_M_6Dq_Upyo-79MC_SjCKbkv5qZmZmZmQFAaPwwLTwOxT9ej4uQCMXTvzMzMzMzM_M_skIb3lI1-L8YrqKxGU_rv5qZmZmZmQFASKQC9XJLyz-yg2h5TrnVvzMzMzMzM_M_ygQ-yGmH87-KxRy29ZXwv5qZmZmZmQFA8PIsgpt30T-fQVFoaFbXvzMzMzMzM_M_Lid5eS2Z679t4nmcnAHzv5qZmZmZmQFAAq5M03PX1T9tIm0Gk4zYvzMzMzMzM_M_7uszDEnz3L-js6OJ3NL0v5qZmZmZmQFAuPOHVYea2j80gBx_-E_ZvzMzMzMzM_M_gGwStP80eL9MwKq-9Pf1v5qZmZmZmQFA';
+const MILLING_START =
+  'poses.uA9c_utesL9NF1zj5purv-BBcOA4j3K_Y0LTWNZ8vL-QjhlOcEHRP9LE2JeuWfc_3fssFErS7T8rJLqSlJLpP_JfhzVgDcw_ju2L-ZpD8j_cBBkY5bbzPyImGKEhPfo_zttNRXXE_j91nR0aO__1P6B_272DeMY_-ALJ7cfnA0AP1hiPu_n7P1nPP66KOPg_H75ZA3BgB0B68Qsrz6P3P4u0Hv4nRNY_cy-9epnzDEBz_SthY6L2Pw2gva2ty_o_817TDop5D0B4wlKHP-jwP7elsBiQZsK_9r7X-A0xEkA4sVnynZLkP_s26eZWk_I_ILBxILa_E0Ba5caWqwjRP7pHCJnTitG_MKgr9azAFEDYOQR-aui6vxa0DJK3hPI_V88zShq8F0DQIh8pgpvjv0pd8F3uL7S_hz1hlpHUF0BCqPVD0S_svx_B04xGWfY_';
+const LINES_SOLUTION =
+  'rulings.AAAAAAAA8D9i4iIB8onMv2LiIgHyicy_AAAAAAAA8D_Hy1h0QhvuP8XLWHRCG-4_bUx-5sST8j_6IG3mpUDMP3KkFG2kHdW_Nriq-sse3z9kHV5ANj7uP37LzmRAH-U_IhnN8fCG7D9r_d6Hrw7uPzjZgDaWhMy_DpK3shAKxr_8UOewTDzwP9hQ92Qx_uo_bHrv6akl4L8rHP9vRxfsPyypVZy4t-c_QNREibav9L_n1FI0i-bOP2jE6vezEfw_liKHMoTW67-PX3wrknfvP0ZSCklHWtY_Cq4PmTat8b90W1oFJUHlv1_WiHiSGwBAh3kCzpWM8r-Ny0yL0NC1vwilQGieCO0_f9V8K8Zb5r8NQw9UXOPnv779H6dDafs_xiU-bbnL3L_HYU4Ie6HtvwbzBOnF4vg_nryR30UpyD-7CgKR4ATxvwMR5bV_qwFA55NnXC1b1L8CrJhlaKn1v5nXwLvcIvI_ZLBWrhhe9T9wcZUw_43Xvy9eRQMLeAhAafTfw4WS6z_SoE4gxcbjv-ishhz8YABAX3yk8AMk8j9_QHX7Nk3UP7hVswXIKwhA';
+
+const RAW = [
+  {
+    id: 'striction-accuracy',
+    title: { en: 'How many rulings for 10⁻³?', de: 'Wie viele Erzeugende für 10⁻³?' },
+    prompt: {
+      en: 'The striction polygon m_i converges to the exact striction curve with order 2 (Proposition 2): doubling the number of rulings N divides its error by about 4. Choose N so that the polygon is within 10⁻³ of the exact curve at every ruling of the quartic surface. The readout shows the error and the measured order.',
+      de: 'Das Kehlpolygon m_i konvergiert mit der Ordnung 2 gegen die exakte Kehllinie (Satz 2): Eine Verdopplung der Zahl N der Erzeugenden teilt seinen Fehler etwa durch 4. Wählen Sie N so, dass das Polygon an jeder Erzeugenden der Quartik höchstens 10⁻³ von der exakten Kehllinie entfernt ist. Die Messwerte zeigen den Fehler und die gemessene Ordnung.',
+    },
+    scene: 'striction',
+    params: { surface: 'quartic', n: 12, exact: true, normals: false },
+    change: ['n'],
+    goal: [{ value: 'readout.midpointError', below: 1e-3 }],
+    hints: [
+      {
+        en: 'At N = 12 the error is about 0.017: it has to shrink about 17-fold.',
+        de: 'Bei N = 12 ist der Fehler etwa 0,017: Er muss etwa auf ein Siebzehntel schrumpfen.',
+      },
+      {
+        en: 'With order 2 the error falls with N²: N must grow by about √17 ≈ 4.1.',
+        de: 'Bei Ordnung 2 fällt der Fehler mit N²: N muss um etwa √17 ≈ 4,1 wachsen.',
+      },
+    ],
+    solution: { params: { n: 50 } },
+  },
+  {
+    id: 'torsal-pair',
+    title: { en: 'Make a pair of rulings torsal', de: 'Ein torsales Paar von Erzeugenden' },
+    prompt: {
+      en: 'Two consecutive rulings are a torsal pair when they meet (or are parallel): their distance h and the distribution parameter δ = h/φ are then 0. Drag an end of one ruling until it meets its neighbour: the smallest |δ| of a pair below 0.01.',
+      de: 'Zwei aufeinanderfolgende Erzeugende bilden ein torsales Paar, wenn sie sich schneiden (oder parallel sind): Ihr Abstand h und der Drall δ = h/φ sind dann 0. Ziehen Sie ein Ende einer Erzeugenden, bis sie ihre Nachbarin schneidet: das kleinste |δ| eines Paares unter 0,01.',
+    },
+    scene: 'striction',
+    params: { surface: 'hyperboloid', n: 8, normals: true },
+    change: ['handles'],
+    goal: [{ value: 'striction.minAbsDelta', below: 0.01 }],
+    hints: [
+      {
+        en: 'Turn the view until you look straight along the neighbouring ruling: it shrinks to a point on the screen.',
+        de: 'Drehen Sie die Ansicht, bis Sie genau längs der Nachbarin blicken: Sie schrumpft auf dem Bildschirm zu einem Punkt.',
+      },
+      {
+        en: 'Now drag the end onto that point: the ruling then passes through the neighbour, so the two meet.',
+        de: 'Ziehen Sie nun das Ende auf diesen Punkt: Die Erzeugende geht dann durch die Nachbarin, die beiden schneiden sich.',
+      },
+    ],
+    solution: { input: TORSAL_SOLUTION },
+  },
+  {
+    id: 'minding-delta',
+    title: { en: 'What bending keeps', de: 'Was das Verbiegen erhält' },
+    prompt: {
+      en: 'The readout shows δ of the middle pair of rulings of this surface. Bent to its conoidal model (t = 1), what will δ of that pair be? Type your prediction.',
+      de: 'Die Messwerte zeigen δ des mittleren Paares von Erzeugenden dieser Fläche. Welchen Wert hat δ dieses Paares, wenn die Fläche zu ihrem konoidalen Modell verbogen ist (t = 1)? Geben Sie Ihre Vorhersage ein.',
+    },
+    scene: 'isometry',
+    params: { surface: 'quartic', layout: 'bend', n: 24, t: 0 },
+    change: [],
+    answers: [{ id: 'delta', kind: 'number', label: { en: 'δ after bending', de: 'δ nach dem Verbiegen' } }],
+    goal: [{ answer: 'delta', near: { value: 'isometry.deltaBentMiddle' }, within: 2e-4 }],
+    hints: [
+      {
+        en: 'A discrete Minding isometry (Section 3) turns each ruling about the common perpendicular of the pair: what does it keep of the pair?',
+        de: 'Eine diskrete Minding-Isometrie (Abschnitt 3) dreht jede Erzeugende um das gemeinsame Lot des Paares: Was bleibt von dem Paar erhalten?',
+      },
+      {
+        en: 'It keeps the angle φ and the distance h of consecutive rulings, so δ = h/φ stays what it is.',
+        de: 'Sie erhält den Winkel φ und den Abstand h aufeinanderfolgender Erzeugender, also bleibt δ = h/φ, wie es ist.',
+      },
+    ],
+    solution: { answers: { delta: -0.02035 } },
+  },
+  {
+    id: 'developable-cone',
+    title: { en: 'Make the cone developable again', de: 'Den Kegel wieder abwickelbar machen' },
+    prompt: {
+      en: 'A cone is developable: all its rulings pass through one point, every δ is 0 and its conoidal model is flat. One ruling has been moved away. Move it back so that the surface is developable again: its conoidal model less than 0.005 high.',
+      de: 'Ein Kegel ist abwickelbar: Alle seine Erzeugenden gehen durch einen Punkt, jedes δ ist 0 und sein konoidales Modell ist flach. Eine Erzeugende wurde verschoben. Bewegen Sie sie zurück, so dass die Fläche wieder abwickelbar ist: ihr konoidales Modell weniger als 0,005 hoch.',
+    },
+    scene: 'isometry',
+    params: { surface: 'cone', layout: 'bend', n: 24, t: 0 },
+    input: CONE_START,
+    change: ['handles'],
+    goal: [{ value: 'isometry.readout.nonDevelopability', below: 0.005 }],
+    hints: [
+      {
+        en: 'The rulings of a cone meet in its vertex: find the one that misses it.',
+        de: 'Die Erzeugenden eines Kegels treffen sich in seiner Spitze: Finden Sie die, die sie verfehlt.',
+      },
+      {
+        en: 'Ruling 10 was lifted by 0.4 at its end b: move that end straight down (Alt while dragging).',
+        de: 'Erzeugende 10 wurde an ihrem Ende b um 0,4 angehoben: Bewegen Sie dieses Ende senkrecht nach unten (beim Ziehen Alt halten).',
+      },
+    ],
+    solution: {},
+  },
+  {
+    id: 'chaikin-count',
+    title: { en: 'Count Chaikin’s points', de: 'Chaikins Punkte zählen' },
+    prompt: {
+      en: 'Chaikin’s corner cutting replaces each edge of an open polygon by two points, at ¼ and ¾ of it. Starting from these 8 control points, how many points does the polygon have after 3 steps?',
+      de: 'Chaikins Eckenabschneiden ersetzt jede Kante eines offenen Polygons durch zwei Punkte bei ¼ und ¾ ihrer Länge. Wie viele Punkte hat das Polygon nach 3 Schritten, ausgehend von diesen 8 Kontrollpunkten?',
+    },
+    scene: 'curves',
+    params: { scheme: 'chaikin', steps: 3, closed: false, levels: true },
+    change: [],
+    hide: ['curves.readout.points'],
+    answers: [{ id: 'count', kind: 'number', label: { en: 'points after 3 steps', de: 'Punkte nach 3 Schritten' } }],
+    goal: [{ answer: 'count', near: { value: 'curves.readout.points' }, within: 0.5 }],
+    hints: [
+      { en: 'An open polygon of n points has n − 1 edges.', de: 'Ein offenes Polygon mit n Punkten hat n − 1 Kanten.' },
+      { en: 'After one step: 2 · (8 − 1) = 14 points.', de: 'Nach einem Schritt: 2 · (8 − 1) = 14 Punkte.' },
+    ],
+    solution: { answers: { count: 50 } },
+  },
+  {
+    id: 'coupled-strip',
+    title: { en: 'When coupling pays', de: 'Wann sich die Kopplung lohnt' },
+    prompt: {
+      en: 'The coupled energy of Example 3 can insert rulings closer to the quartic surface than the midpoint rule — but not for every n, the number of parts of each segment. Choose n so that the coupled scheme’s inserted rulings are closer to the exact surface than the midpoint rule’s.',
+      de: 'Die gekoppelte Energie aus Beispiel 3 kann Erzeugende näher an der Quartik einfügen als die Mittelpunktregel – aber nicht für jedes n, die Zahl der Teile jeder Strecke. Wählen Sie n so, dass die vom gekoppelten Verfahren eingefügten Erzeugenden näher an der exakten Fläche liegen als die der Mittelpunktregel.',
+    },
+    scene: 'strip',
+    params: { scheme: 'coupled', n: 3, exact: true },
+    change: ['n'],
+    goal: [{ value: 'strip.readout.compare.coupled', below: { value: 'strip.readout.compare.midpoint' } }],
+    hints: [
+      {
+        en: 'The readout lists every scheme’s distance from the quartic at this n.',
+        de: 'Die Messwerte nennen bei diesem n den Abstand jedes Verfahrens von der Quartik.',
+      },
+      { en: 'Try n = 3, 4, 5, … in turn.', de: 'Versuchen Sie n = 3, 4, 5, … der Reihe nach.' },
+    ],
+    solution: { params: { n: 6 } },
+  },
+  {
+    id: 'congruence-scheme',
+    title: { en: 'The closest scheme in one step', de: 'Das genaueste Verfahren in einem Schritt' },
+    prompt: {
+      en: 'Refine the congruence of Example 5 once. Choose the scheme whose inserted lines make an angle of less than 10⁻³ rad with the exact congruence’s lines.',
+      de: 'Verfeinern Sie die Kongruenz aus Beispiel 5 einmal. Wählen Sie das Verfahren, dessen eingefügte Geraden mit den Geraden der exakten Kongruenz einen Winkel unter 10⁻³ rad einschließen.',
+    },
+    scene: 'congruence',
+    params: { congruence: 'example5', scheme: 'paper', steps: 1 },
+    change: ['scheme'],
+    hide: [
+      'congruence.readout.compare.paper',
+      'congruence.readout.compare.two-stage',
+      'congruence.readout.compare.coupled',
+      'congruence.readout.compare.butterfly',
+    ],
+    goal: [{ value: 'congruence.readout.angle', below: 1e-3 }],
+    hints: [
+      {
+        en: 'The variational schemes minimise an energy of the new lines; the butterfly scheme (16) averages the neighbouring lines with fixed weights.',
+        de: 'Die Variationsverfahren minimieren eine Energie der neuen Geraden; das Butterfly-Verfahren (16) mittelt die benachbarten Geraden mit festen Gewichten.',
+      },
+      {
+        en: 'Try each scheme and watch the angle in the readout.',
+        de: 'Probieren Sie jedes Verfahren und beobachten Sie den Winkel in den Messwerten.',
+      },
+    ],
+    solution: { params: { scheme: 'butterfly' } },
+  },
+  {
+    id: 'tool-back',
+    title: { en: 'Put the tool back on the part', de: 'Das Werkzeug zurück auf das Werkstück' },
+    prompt: {
+      en: 'One tool pose has been lifted off the part: the machined surface misses the target profile by far. Move it back so that the refined tool path misses the profile by less than 0.02.',
+      de: 'Eine Werkzeuglage wurde vom Werkstück abgehoben: Die gefräste Fläche verfehlt das Sollprofil weit. Bewegen Sie sie zurück, so dass die verfeinerte Werkzeugbahn das Sollprofil um weniger als 0,02 verfehlt.',
+    },
+    scene: 'milling',
+    params: { poses: 7, steps: 1, scheme: 'variational', tool: true, envelope: true, part: true },
+    input: MILLING_START,
+    change: ['handles'],
+    goal: [{ value: 'milling.readout.deviation', below: 0.02 }],
+    hints: [
+      {
+        en: 'The target profile is drawn wide and light: the tool’s ball should roll along it.',
+        de: 'Das Sollprofil ist breit und hell gezeichnet: Die Kugel des Werkzeugs soll darauf abrollen.',
+      },
+      {
+        en: 'Pose 3 was lifted by 0.3: drag its tip straight down (Alt while dragging) — the tool comes with it.',
+        de: 'Lage 3 wurde um 0,3 angehoben: Ziehen Sie ihre Spitze senkrecht nach unten (beim Ziehen Alt halten) – das Werkzeug kommt mit.',
+      },
+    ],
+    solution: {},
+  },
+  {
+    id: 'hypar-striction',
+    title: {
+      en: 'The striction curve of the hyperbolic paraboloid',
+      de: 'Die Kehllinie des hyperbolischen Paraboloids',
+    },
+    prompt: {
+      en: 'The hyperbolic paraboloid z = xy is the ruled surface a(u) + v·e(u) with a(u) = (u, 0, 0) and e(u) = (0, 1, u). Compute its striction curve s(u) and type it.',
+      de: 'Das hyperbolische Paraboloid z = xy ist die Regelfläche a(u) + v·e(u) mit a(u) = (u, 0, 0) und e(u) = (0, 1, u). Berechnen Sie seine Kehllinie s(u) und geben Sie sie ein.',
+    },
+    scene: 'formula',
+    params: { preset: 'hyperbolic-paraboloid', tool: 'striction', exact: false },
+    change: [],
+    hide: ['exact'],
+    answers: [{ id: 's', kind: 'curve', label: { en: 's(u)', de: 's(u)' } }],
+    goal: [{ answer: 's', matches: 'striction', within: 1e-6 }],
+    hints: [
+      {
+        en: 'The striction point of the ruling at u is a(u) − (a′·ê′)/(ê′·ê′) · ê(u), with ê = e/|e| the unit direction.',
+        de: 'Der Kehlpunkt der Erzeugenden bei u ist a(u) − (a′·ê′)/(ê′·ê′) · ê(u), mit der Einheitsrichtung ê = e/|e|.',
+      },
+      {
+        en: 'Here a′ = (1, 0, 0), and ê′ has no x-component.',
+        de: 'Hier ist a′ = (1, 0, 0), und ê′ hat keine x-Komponente.',
+      },
+    ],
+    solution: { answers: { s: ['u', '0', '0'] } },
+  },
+  {
+    id: 'hyperboloid-striction',
+    title: { en: 'The striction curve of the hyperboloid', de: 'Die Kehllinie des Hyperboloids' },
+    prompt: {
+      en: 'The hyperboloid of Example 1 is a(u) + v·e(u) with a(u) = (cos u, 2 sin u, 0) and e(u) = (−sin u, 2 cos u, 3). Compute its striction curve s(u) and type it (you may write a, b, c for 1, 2, 3).',
+      de: 'Das Hyperboloid aus Beispiel 1 ist a(u) + v·e(u) mit a(u) = (cos u, 2 sin u, 0) und e(u) = (−sin u, 2 cos u, 3). Berechnen Sie seine Kehllinie s(u) und geben Sie sie ein (für 1, 2, 3 dürfen Sie a, b, c schreiben).',
+    },
+    scene: 'formula',
+    params: { preset: 'hyperboloid', tool: 'striction', exact: false },
+    change: [],
+    hide: ['exact'],
+    answers: [{ id: 's', kind: 'curve', label: { en: 's(u)', de: 's(u)' } }],
+    goal: [{ answer: 's', matches: 'striction', within: 1e-6 }],
+    hints: [
+      {
+        en: 'For any direction e(u), the striction point is a + λ e with λ = −((a′·e′)(e·e) − (a′·e)(e·e′)) / ((e′·e′)(e·e) − (e·e′)²).',
+        de: 'Für jede Richtung e(u) ist der Kehlpunkt a + λ e mit λ = −((a′·e′)(e·e) − (a′·e)(e·e′)) / ((e′·e′)(e·e) − (e·e′)²).',
+      },
+      {
+        en: 'Here a′·e′ = e·e′ = −3 sin u cos u, a′·e = 1 + 3 cos²u, e·e = 10 + 3 cos²u and e′·e′ = 1 + 3 sin²u.',
+        de: 'Hier ist a′·e′ = e·e′ = −3 sin u cos u, a′·e = 1 + 3 cos²u, e·e = 10 + 3 cos²u und e′·e′ = 1 + 3 sin²u.',
+      },
+      {
+        en: 'It comes to λ = 27 sin u cos u / (13 + 27 sin²u).',
+        de: 'Es ergibt sich λ = 27 sin u cos u / (13 + 27 sin²u).',
+      },
+    ],
+    solution: {
+      answers: {
+        s: [
+          'cos(u) - sin(u)*27*sin(u)*cos(u)/(13+27*sin(u)^2)',
+          '2*sin(u) + 2*cos(u)*27*sin(u)*cos(u)/(13+27*sin(u)^2)',
+          '3*27*sin(u)*cos(u)/(13+27*sin(u)^2)',
+        ],
+      },
+    },
+  },
+  {
+    id: 'hypar-distribution',
+    title: {
+      en: 'The distribution parameter of the hyperbolic paraboloid',
+      de: 'Der Drall des hyperbolischen Paraboloids',
+    },
+    prompt: {
+      en: 'For the hyperbolic paraboloid a(u) = (u, 0, 0), e(u) = (0, 1, u), compute the distribution parameter δ(u) and type it.',
+      de: 'Berechnen Sie für das hyperbolische Paraboloid a(u) = (u, 0, 0), e(u) = (0, 1, u) den Drall δ(u) und geben Sie ihn ein.',
+    },
+    scene: 'formula',
+    params: { preset: 'hyperbolic-paraboloid', tool: 'striction' },
+    change: [],
+    hide: ['readout.meanDelta'],
+    answers: [{ id: 'delta', kind: 'function', label: { en: 'δ(u)', de: 'δ(u)' } }],
+    goal: [{ answer: 'delta', matches: 'distribution', within: 1e-6 }],
+    hints: [
+      {
+        en: 'For any direction e(u): δ = det(a′, e, e′) · (e·e) / |e × e′|².',
+        de: 'Für jede Richtung e(u) gilt δ = det(a′, e, e′) · (e·e) / |e × e′|².',
+      },
+      {
+        en: 'Here det(a′, e, e′) = 1 and e × e′ = (1, 0, 0).',
+        de: 'Hier ist det(a′, e, e′) = 1 und e × e′ = (1, 0, 0).',
+      },
+    ],
+    solution: { answers: { delta: '1 + u^2' } },
+  },
+  {
+    id: 'straight-striction',
+    title: { en: 'A straight striction curve', de: 'Eine gerade Kehllinie' },
+    prompt: {
+      en: 'Type a ruled surface a(u) + v·e(u) whose striction curve is a straight line: the check measures how far the exact striction curve strays from its best-fitting line (below 10⁻⁹).',
+      de: 'Geben Sie eine Regelfläche a(u) + v·e(u) ein, deren Kehllinie eine Gerade ist: Die Prüfung misst, wie weit die exakte Kehllinie von ihrer bestangepassten Geraden abweicht (unter 10⁻⁹).',
+    },
+    scene: 'formula',
+    params: { preset: 'hyperboloid', tool: 'striction', exact: true },
+    change: ['ax', 'ay', 'az', 'ex', 'ey', 'ez', 'umin', 'umax', 'a', 'b', 'c'],
+    goal: [{ value: 'formula.strictionStraightness', below: 1e-9 }],
+    hints: [
+      {
+        en: 'On a helicoid every ruling meets the axis at a right angle.',
+        de: 'Bei einer Wendelfläche trifft jede Erzeugende die Achse rechtwinklig.',
+      },
+      {
+        en: 'Try a(u) = (0, 0, u) and e(u) = (cos u, sin u, 0).',
+        de: 'Versuchen Sie a(u) = (0, 0, u) und e(u) = (cos u, sin u, 0).',
+      },
+    ],
+    solution: 'HELICOID',
+  },
+  {
+    id: 'elliptic-congruence',
+    title: { en: 'A congruence without real focal points', de: 'Eine Kongruenz ohne reelle Brennpunkte' },
+    prompt: {
+      en: 'A line of a congruence is hyperbolic when it carries two real focal points, elliptic when it carries none. Type a congruence p(u, v) + t·e(u, v) all of whose lines are elliptic.',
+      de: 'Eine Gerade einer Kongruenz ist hyperbolisch, wenn sie zwei reelle Brennpunkte trägt, elliptisch, wenn sie keinen trägt. Geben Sie eine Kongruenz p(u, v) + t·e(u, v) ein, deren Geraden alle elliptisch sind.',
+    },
+    scene: 'formula-congruence',
+    params: { preset: 'example5', focal: true },
+    change: ['px', 'py', 'pz', 'ex', 'ey', 'ez', 'umin', 'umax', 'vmin', 'vmax', 'a', 'b', 'c'],
+    hide: ['focal'],
+    goal: [{ value: 'focal.ellipticShare', near: 1, within: 1e-9 }],
+    hints: [
+      {
+        en: 'The focal points of a line are where it meets its infinitely near neighbours; they are real exactly when its two torsal directions are real.',
+        de: 'Die Brennpunkte einer Geraden sind ihre Schnittpunkte mit den unendlich benachbarten Geraden; sie sind genau dann reell, wenn ihre beiden Torsalrichtungen reell sind.',
+      },
+      {
+        en: 'Try the lines through the points (u, v, 0) with directions (−v, u, 1).',
+        de: 'Versuchen Sie die Geraden durch die Punkte (u, v, 0) mit den Richtungen (−v, u, 1).',
+      },
+    ],
+    solution: 'ELLIPTIC',
+  },
+  {
+    id: 'line-space-slide',
+    title: { en: 'Slide without turning', de: 'Verschieben ohne Drehen' },
+    prompt: {
+      en: 'The line-space scheme refines the lines; the endpoint scheme refines their endpoints. Slide given endpoints along their own rulings (drag with Shift): make the endpoint scheme’s new rulings turn by more than 0.05 rad while the line-space scheme’s stay put (less than 10⁻⁹ rad).',
+      de: 'Das Geradenraumschema verfeinert die Geraden, das Endpunktschema ihre Endpunkte. Verschieben Sie gegebene Endpunkte längs ihrer eigenen Erzeugenden (mit Umschalt ziehen): Die neuen Erzeugenden des Endpunktschemas sollen sich um mehr als 0,05 rad drehen, die des Geradenraumschemas an ihrem Platz bleiben (weniger als 10⁻⁹ rad).',
+    },
+    scene: 'lines',
+    params: { surface: 'helical', slide: 0, steps: 2 },
+    change: ['handles'],
+    goal: [
+      { value: 'lines.readout.endpoints', above: 0.05 },
+      { value: 'lines.readout.lines', below: 1e-9 },
+    ],
+    hints: [
+      {
+        en: 'Hold Shift while you drag: the end then moves along its own ruling, whatever the view.',
+        de: 'Halten Sie beim Ziehen Umschalt: Das Ende bewegt sich dann längs seiner eigenen Erzeugenden, wie auch immer die Ansicht ist.',
+      },
+      {
+        en: 'A ruling whose ends only slide along it is the same line: the line-space scheme cannot tell the difference.',
+        de: 'Eine Erzeugende, deren Enden nur längs ihr gleiten, bleibt dieselbe Gerade: Das Geradenraumschema merkt keinen Unterschied.',
+      },
+    ],
+    solution: { input: LINES_SOLUTION },
+  },
+];
+
+/** An exercise of the list, its solution typed as a catalogue entry's formulas where it says so. */
+function complete(/** @type {any} */ raw) {
+  const solution =
+    raw.solution === 'HELICOID'
+      ? { params: surfaceFields('helicoid') }
+      : raw.solution === 'ELLIPTIC'
+        ? { params: congruenceFields('elliptic') }
+        : raw.solution;
+  return readTask({ ruledlab: 'exercise', version: 1, ...raw, solution });
+}
+
+/** @type {import('./format.js').Task[] | null} */
+let tasks = null;
+
+/** The built-in exercises, in the order of the paper (made once, when first asked for). */
+export function builtInTasks() {
+  tasks ??= RAW.map(complete);
+  return tasks;
+}
+
+/** A built-in exercise by its id, or null. */
+export function builtInTask(/** @type {string} */ id) {
+  return builtInTasks().find((t) => t.id === id) ?? null;
+}

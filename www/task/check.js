@@ -1,0 +1,205 @@
+// Checking an exercise (task/format.js) against what the core computed: each condition of the
+// goal, whether it holds, the value it is about and by how much it misses; and whether an
+// exercise fits its scene at all (its parameters, the values its conditions name). The values
+// are the scene's numeric readouts, by their keys, and its measures (Built.measures); a typed
+// s(u) or δ(u) is evaluated by the core (evaluateFormulas) and compared with the exact curve the
+// scene's analytic surface gives (Scene.exact).
+import { evaluateFormulas } from '../../pkg/ruledlab.js';
+import { readValue, serialize } from '../scene.js';
+import { decodeInput, fitsSets } from '../edit/input.js';
+import { SAMPLES, TaskError } from './format.js';
+
+/**
+ * @typedef {import('./format.js').Task} Task
+ * @typedef {import('./format.js').Condition} Condition
+ *
+ * What the reader typed: a number's text, a formula, or three formulas.
+ * @typedef {Record<string, string | string[]>} Answers
+ *
+ * The outcome of one condition.
+ * @typedef {object} Outcome
+ * @property {Condition} condition
+ * @property {boolean} holds
+ * @property {number} value    the value it is about (for "matches": the largest distance found); NaN when there is none
+ * @property {number} target   what it is compared with
+ * @property {number} miss     by how much it misses (0 when it holds)
+ * @property {unknown} [error] why there is no value (an answer not given, a formula the core refused)
+ * @property {number} [at]     "matches": where the typed formula is farthest from the exact one (u)
+ */
+
+/** The values conditions may name: every numeric readout by its key, and the scene's measures. */
+export function measuresOf(/** @type {import('../scene.js').Built | null} */ built) {
+  /** @type {Record<string, number>} */
+  const values = {};
+  for (const r of built?.readouts ?? []) if (typeof r.value === 'number') values[r.label] = r.value;
+  Object.assign(values, built?.measures ?? {});
+  return values;
+}
+
+/** A number as a reader types it ("0,5" in German, "1/3", "−2"), NaN when it is not one. */
+export function answerNumber(/** @type {string} */ text) {
+  const t = String(text).trim().replace('−', '-').replace(',', '.');
+  const fraction = /^([+-]?\d+(?:\.\d*)?)\s*\/\s*(\d+(?:\.\d*)?)$/.exec(t);
+  if (fraction) return Number(fraction[1]) / Number(fraction[2]);
+  return /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(t) ? Number(t) : Number.NaN;
+}
+
+/**
+ * Checks the goal of `task` on what the scene built (and the reader's answers).
+ * @param {Task} task
+ * @param {import('../scene.js').Built} built
+ * @param {Answers} answers
+ * @param {{scene: import('../scene.js').Scene, params: import('../scene.js').Params, context: import('../scene.js').Context}} state
+ * @returns {{outcomes: Outcome[], solved: boolean}}
+ */
+export function checkGoal(task, built, answers, state) {
+  const values = measuresOf(built);
+  const of = (/** @type {number | {value: string}} */ b) =>
+    typeof b === 'number' ? b : (values[b.value] ?? Number.NaN);
+  const outcomes = task.goal.map((condition) => {
+    /** @type {Outcome} */
+    const outcome = { condition, holds: false, value: Number.NaN, target: Number.NaN, miss: Number.NaN };
+    try {
+      if (condition.matches) return matches(outcome, answers, state);
+      if (condition.value) outcome.value = values[condition.value] ?? Number.NaN;
+      else {
+        const typed = answers[/** @type {string} */ (condition.answer)];
+        outcome.value = typeof typed === 'string' ? answerNumber(typed) : Number.NaN;
+        if (typed === undefined || typed === '') outcome.error = new TaskError('task.check.noAnswer');
+      }
+      const x = outcome.value;
+      if (condition.below !== undefined) {
+        outcome.target = of(condition.below);
+        outcome.holds = x < outcome.target;
+        outcome.miss = outcome.holds ? 0 : x - outcome.target;
+      } else if (condition.above !== undefined) {
+        outcome.target = of(condition.above);
+        outcome.holds = x > outcome.target;
+        outcome.miss = outcome.holds ? 0 : outcome.target - x;
+      } else if (condition.near !== undefined) {
+        outcome.target = of(condition.near);
+        const off = Math.abs(x - outcome.target);
+        const within = /** @type {number} */ (condition.within);
+        outcome.holds = off <= within;
+        outcome.miss = outcome.holds ? 0 : off - within;
+      }
+    } catch (e) {
+      outcome.error = e;
+    }
+    // a value that is not a number (NaN: undefined here) never satisfies a condition
+    if (!Number.isFinite(outcome.value) || !Number.isFinite(outcome.target)) outcome.holds = false;
+    return outcome;
+  });
+  return { outcomes, solved: outcomes.every((o) => o.holds) };
+}
+
+/** A typed s(u) or δ(u) against the exact one, at the scene's parameters: the largest distance. */
+function matches(
+  /** @type {Outcome} */ outcome,
+  /** @type {Answers} */ answers,
+  /** @type {{scene: import('../scene.js').Scene, params: import('../scene.js').Params, context: import('../scene.js').Context}} */ state,
+) {
+  const c = outcome.condition;
+  const id = /** @type {string} */ (c.answer);
+  const typed = answers[id];
+  const texts = Array.isArray(typed) ? typed : typeof typed === 'string' ? [typed] : [];
+  outcome.target = /** @type {number} */ (c.within);
+  if (!texts.length || texts.some((x) => !String(x).trim())) {
+    outcome.error = new TaskError('task.check.noAnswer');
+    return outcome;
+  }
+  const exact = state.scene.exact?.(
+    state.params,
+    state.context,
+    /** @type {'striction' | 'distribution'} */ (c.matches),
+    c.samples ?? SAMPLES,
+  );
+  if (!exact) throw new TaskError('task.error.noExact', { scene: state.scene.id });
+  const width = c.matches === 'striction' ? 3 : 1;
+  const p = state.params;
+  const typedValues = evaluateFormulas(
+    {
+      formulas: texts.map(String),
+      name: id,
+      parameters: { a: Number(p.a ?? 1), b: Number(p.b ?? 1), c: Number(p.c ?? 1) },
+      decimalComma: state.context.lang === 'de' ? true : 'unambiguous',
+    },
+    exact.u,
+  );
+  let worst = 0;
+  let at = Number.NaN;
+  for (let k = 0; k < exact.u.length; k++) {
+    let d2 = 0;
+    for (let i = 0; i < width; i++) {
+      const d = typedValues[width * k + i] - exact.values[width * k + i];
+      d2 += d * d;
+    }
+    // (a point where the exact curve is undefined, a cylindrical ruling, is not compared)
+    if (exact.values.subarray(width * k, width * k + width).some(Number.isNaN)) continue;
+    const d = Math.sqrt(d2);
+    if (!(d <= worst)) [worst, at] = [Number.isNaN(d) ? Number.POSITIVE_INFINITY : d, exact.u[k]];
+  }
+  outcome.value = worst;
+  outcome.at = at;
+  outcome.holds = worst <= outcome.target;
+  outcome.miss = outcome.holds ? 0 : worst - outcome.target;
+  return outcome;
+}
+
+/**
+ * Whether an exercise fits its scene: its parameters are the scene's and valid, what it lets
+ * change or hides exists, its edit fits the scene's handles, and every value its conditions name
+ * is one the scene computes (at the start or in the solution). Throws a TaskError.
+ * @param {Task} task
+ * @param {import('../scene.js').Scene[]} scenes
+ * @param {(params: import('../scene.js').Params, input: import('../scene.js').Input | null) => import('../scene.js').Built} compute
+ *   the scene computed at these parameters (and edit)
+ */
+export function fitTask(task, scenes, compute) {
+  const scene = scenes.find((s) => s.id === task.scene);
+  if (!scene) throw new TaskError('task.error.unknownScene', { scene: task.scene });
+  const keys = scene.params.map((p) => p.key);
+  const known = (/** @type {Record<string, unknown>} */ params, /** @type {string} */ where) => {
+    for (const [k, v] of Object.entries(params)) {
+      const p = scene.params.find((q) => q.key === k);
+      if (!p) throw new TaskError('task.error.unknownParam', { key: k, where, scene: scene.id });
+      const read = readValue(p, serialize(p, /** @type {number | string | boolean} */ (v)));
+      if (read.note && p.type !== 'select') throw new TaskError('task.error.badParam', { key: k, where });
+    }
+  };
+  known(task.params, 'params');
+  if (task.solution?.params) known(task.solution.params, 'solution.params');
+  for (const c of task.change)
+    if (c !== 'handles' && !keys.includes(c))
+      throw new TaskError('task.error.unknownParam', { key: c, where: 'change', scene: scene.id });
+  const decode = (/** @type {string | null | undefined} */ text, /** @type {string} */ where) => {
+    if (!text) return null;
+    const input = decodeInput(text);
+    if (!input) throw new TaskError('task.error.badInput', { where });
+    return input;
+  };
+  const startInput = decode(task.input, 'input');
+  const start = compute(task.params, null);
+  if (startInput && !(start.input && fitsSets(startInput, start.input.sets)))
+    throw new TaskError('task.error.badInput', { where: 'input' });
+  if (task.change.includes('handles') && !start.input) throw new TaskError('task.error.noHandles', { scene: scene.id });
+  const built = [compute(task.params, startInput)];
+  if (task.solution) {
+    const solutionInput = decode(task.solution.input, 'solution.input');
+    built.push(compute({ ...task.params, ...(task.solution.params ?? {}) }, solutionInput));
+  }
+  const values = new Set(built.flatMap((b) => Object.keys(measuresOf(b))));
+  // (a readout that is not a number, "0.01 / 0.02", can be hidden though no condition names it)
+  const shown = new Set(built.flatMap((b) => (b.readouts ?? []).map((r) => r.label)));
+  for (const h of task.hide)
+    if (!keys.includes(h) && !values.has(h) && !shown.has(h))
+      throw new TaskError('task.error.unknownValue', { value: h, where: 'hide' });
+  task.goal.forEach((c, i) => {
+    const named = [c.value, ...[c.below, c.above, c.near].map((b) => (typeof b === 'object' ? b.value : undefined))];
+    for (const v of named)
+      if (v !== undefined && !values.has(v))
+        throw new TaskError('task.error.unknownValue', { value: v, where: `goal[${i}]` });
+    if (c.matches && !scene.exact) throw new TaskError('task.error.noExact', { scene: scene.id });
+  });
+  return scene;
+}

@@ -1,0 +1,397 @@
+// The exercise format (README, "Exercises"): a small JSON document a lecturer writes (or the
+// page writes for her: task/author.js) and the page checks. Read here into a Task, or refused
+// with a clear message: unknown keys, wrong types, numbers that are not finite or absurdly large,
+// texts too long, conditions of the wrong shape. Whether the values a condition names exist in
+// its scene is checked against the scene (task/check.js). Texts are only ever shown as text.
+//
+// {
+//   "ruledlab": "exercise", "version": 1, "id": "torsal-ruling",
+//   "title": { "en": "…", "de": "…" }, "prompt": { "en": "…", "de": "…" },
+//   "scene": "striction", "params": { "n": 8 }, "input": "rulings.…", "camera": "…",
+//   "change": ["handles", "n"], "hide": ["exact", "readout.midpointError"],
+//   "answers": [{ "id": "s", "kind": "curve", "label": { "en": "s(u)" } }],
+//   "goal": [{ "value": "striction.minAbsDelta", "below": 0.01 },
+//            { "answer": "s", "matches": "striction", "within": 1e-6 }],
+//   "hints": [{ "en": "…" }], "solution": { "params": {…}, "input": "…", "answers": { "s": ["u", "0", "0"] } }
+// }
+
+/** Longest exercise read (characters of JSON). */
+export const MAX_TASK = 32768;
+/** Longest title, prompt or hint, in characters. */
+const MAX_TITLE = 200;
+const MAX_TEXT = 2000;
+/** Largest magnitude of a number in an exercise. */
+const MAX_NUMBER = 1e12;
+/** Most answers, conditions and hints. */
+const MAX_ANSWERS = 3;
+const MAX_GOAL = 6;
+const MAX_HINTS = 3;
+/** Points at which a typed curve is compared with the exact one, by default and at most. */
+export const SAMPLES = 50;
+const MAX_SAMPLES = 1000;
+
+/**
+ * Words in the languages of the page (English required).
+ * @typedef {{en: string, de?: string}} Words
+ *
+ * An answer field: a number, one formula in u (a function such as δ(u)), or three (a curve
+ * such as s(u)).
+ * @typedef {object} Answer
+ * @property {string} id
+ * @property {'number' | 'function' | 'curve'} kind
+ * @property {Words} label
+ *
+ * A condition of the goal, on a value the scene computes (a readout's key or a measure's name)
+ * or on an answer.
+ * @typedef {object} Condition
+ * @property {string} [value]     the value it is about
+ * @property {string} [answer]    or the answer it is about
+ * @property {number | {value: string}} [below]   holds when the value is below this (a number, or another value)
+ * @property {number | {value: string}} [above]
+ * @property {number | {value: string}} [near]    holds within `within` of this
+ * @property {number} [within]
+ * @property {'striction' | 'distribution'} [matches]   a typed curve or function against the exact one
+ * @property {number} [samples]   at how many points (default 50)
+ *
+ * @typedef {object} TaskState
+ * @property {Record<string, number | string | boolean>} [params]
+ * @property {string} [input]     an edit, as the link writes it (edit/input.js)
+ * @property {Record<string, number | string | string[]>} [answers]
+ *
+ * An exercise.
+ * @typedef {object} Task
+ * @property {string} id
+ * @property {Words} title
+ * @property {Words} prompt
+ * @property {string} scene
+ * @property {Record<string, number | string | boolean>} params
+ * @property {string | null} input
+ * @property {string | null} camera
+ * @property {string[]} change    parameter keys the reader may change, and "handles"
+ * @property {string[]} hide      parameter keys (kept, not shown) and readout keys (not shown)
+ * @property {Answer[]} answers
+ * @property {Condition[]} goal
+ * @property {Words[]} hints
+ * @property {TaskState | null} solution
+ */
+
+const KEYS = [
+  'ruledlab',
+  'version',
+  'id',
+  'title',
+  'prompt',
+  'scene',
+  'params',
+  'input',
+  'camera',
+  'change',
+  'hide',
+  'answers',
+  'goal',
+  'hints',
+  'solution',
+];
+
+/** An exercise that cannot be read: its message says where and why (in English; `details` for the page's language). */
+export class TaskError extends Error {
+  /** @param {string} reason  i18n key (task.error.*) @param {Record<string, string | number>} args */
+  constructor(reason, args = {}) {
+    super(englishOf(reason, args));
+    this.name = 'TaskError';
+    this.code = 'invalid-task';
+    this.details = { reason, args };
+  }
+}
+
+/** The English sentences of the reasons (the page says them in its language from `details`). */
+const ENGLISH = /** @type {Record<string, string>} */ ({
+  'task.error.notJson': 'The exercise is not JSON: {detail}.',
+  'task.error.tooLong': 'The exercise is longer than {max} characters.',
+  'task.error.notExercise': 'This is not a ruledlab exercise (its "ruledlab" must be "exercise", its "version" 1).',
+  'task.error.unknownKey': 'The exercise has a key it does not know: "{key}" (in {where}).',
+  'task.error.missing': 'The exercise lacks "{key}".',
+  'task.error.type': '"{key}" must be {what}.',
+  'task.error.text': '"{key}" must be a text of at most {max} characters.',
+  'task.error.number': '"{key}" must be a finite number of magnitude at most 1e12.',
+  'task.error.count': '"{key}" may have at most {max} entries.',
+  'task.error.condition': 'Condition {index} of the goal: {problem}',
+  'task.error.id': '"id" must be 1 to 64 lowercase letters, digits and dashes.',
+  'task.error.unknownBuiltIn': 'There is no built-in exercise "{id}".',
+  'task.error.unknownScene': 'The exercise names a scene that does not exist: "{scene}".',
+  'task.error.unknownParam': 'The scene "{scene}" has no parameter "{key}" (in {where}).',
+  'task.error.badParam': 'The value of "{key}" (in {where}) is not one the scene takes.',
+  'task.error.badInput': 'The edited input in "{where}" does not fit the scene.',
+  'task.error.noHandles': 'The scene "{scene}" has no points to move, so "handles" cannot be changed.',
+  'task.error.unknownValue': 'The scene computes no value "{value}" (named in {where}).',
+  'task.error.noExact': 'The scene "{scene}" has no exact curve to compare a typed formula with.',
+  'task.check.noAnswer': 'No answer yet.',
+});
+
+function englishOf(/** @type {string} */ reason, /** @type {Record<string, string | number>} */ args) {
+  return (ENGLISH[reason] ?? reason).replace(/\{(\w+)\}/g, (m, k) => (k in args ? String(args[k]) : m));
+}
+
+const isObject = (/** @type {unknown} */ x) => typeof x === 'object' && x !== null && !Array.isArray(x);
+
+/** A text without control characters (a text is shown as text: nothing in it is markup). */
+function text(/** @type {unknown} */ x, /** @type {string} */ key, max = MAX_TEXT) {
+  if (typeof x !== 'string' || x.length > max) throw new TaskError('task.error.text', { key, max });
+  // biome-ignore lint/suspicious/noControlCharactersInRegex: the control characters are what is removed
+  return x.replace(/[\u0000-\u0008\u000b-\u001f\u007f]/g, '').trim();
+}
+
+/** Words: { en, de? }. */
+function words(/** @type {unknown} */ x, /** @type {string} */ key, max = MAX_TEXT) {
+  if (!isObject(x)) throw new TaskError('task.error.type', { key, what: 'an object { "en": …, "de": … }' });
+  const o = /** @type {Record<string, unknown>} */ (x);
+  for (const k of Object.keys(o))
+    if (k !== 'en' && k !== 'de') throw new TaskError('task.error.unknownKey', { key: k, where: key });
+  if (!('en' in o)) throw new TaskError('task.error.missing', { key: `${key}.en` });
+  /** @type {Words} */
+  const out = { en: text(o.en, `${key}.en`, max) };
+  if ('de' in o) out.de = text(o.de, `${key}.de`, max);
+  return out;
+}
+
+/** A finite number of sensible size. */
+function number(/** @type {unknown} */ x, /** @type {string} */ key) {
+  if (typeof x !== 'number' || !Number.isFinite(x) || Math.abs(x) > MAX_NUMBER)
+    throw new TaskError('task.error.number', { key });
+  return x;
+}
+
+/** A list of at most `max` entries. */
+function list(/** @type {unknown} */ x, /** @type {string} */ key, /** @type {number} */ max) {
+  if (!Array.isArray(x)) throw new TaskError('task.error.type', { key, what: 'a list' });
+  if (x.length > max) throw new TaskError('task.error.count', { key, max });
+  return x;
+}
+
+/** A name: a parameter key, a readout key, a measure's name, an answer's id. */
+function name(/** @type {unknown} */ x, /** @type {string} */ key) {
+  if (typeof x !== 'string' || !/^[A-Za-z][A-Za-z0-9_.-]{0,79}$/.test(x))
+    throw new TaskError('task.error.type', { key, what: 'a name of letters, digits, dots and dashes' });
+  return x;
+}
+
+/** The parameter values of a state: numbers, texts (a formula) and switches. */
+function params(/** @type {unknown} */ x, /** @type {string} */ key) {
+  if (!isObject(x)) throw new TaskError('task.error.type', { key, what: 'an object of parameter values' });
+  /** @type {Record<string, number | string | boolean>} */
+  const out = {};
+  const entries = Object.entries(/** @type {Record<string, unknown>} */ (x));
+  if (entries.length > 64) throw new TaskError('task.error.count', { key, max: 64 });
+  for (const [k, v] of entries) {
+    name(k, `${key}`);
+    if (typeof v === 'number') out[k] = number(v, `${key}.${k}`);
+    else if (typeof v === 'boolean') out[k] = v;
+    else out[k] = text(v, `${key}.${k}`, 1000);
+  }
+  return out;
+}
+
+/** A number condition's bound: a number or { value }. */
+function bound(/** @type {unknown} */ x, /** @type {string} */ key) {
+  if (isObject(x)) {
+    const o = /** @type {Record<string, unknown>} */ (x);
+    for (const k of Object.keys(o))
+      if (k !== 'value') throw new TaskError('task.error.unknownKey', { key: k, where: key });
+    return { value: name(o.value, `${key}.value`) };
+  }
+  return number(x, key);
+}
+
+/** One condition of the goal. */
+function condition(/** @type {unknown} */ x, /** @type {number} */ index, /** @type {Answer[]} */ answers) {
+  const fail = (/** @type {string} */ problem) => new TaskError('task.error.condition', { index: index + 1, problem });
+  if (!isObject(x)) throw fail('it must be an object');
+  const o = /** @type {Record<string, unknown>} */ (x);
+  const allowed = ['value', 'answer', 'below', 'above', 'near', 'within', 'matches', 'samples'];
+  for (const k of Object.keys(o)) if (!allowed.includes(k)) throw fail(`unknown key "${k}"`);
+  if ('value' in o === 'answer' in o) throw fail('it names either a "value" or an "answer"');
+  /** @type {Condition} */
+  const c = {};
+  if ('value' in o) c.value = name(o.value, `goal[${index}].value`);
+  if ('answer' in o) {
+    c.answer = name(o.answer, `goal[${index}].answer`);
+    if (!answers.some((a) => a.id === c.answer)) throw fail(`there is no answer "${c.answer}"`);
+  }
+  const tests = ['below', 'above', 'near', 'matches'].filter((k) => k in o);
+  if (tests.length !== 1) throw fail('it has exactly one of "below", "above", "near" or "matches"');
+  if ('below' in o) c.below = bound(o.below, `goal[${index}].below`);
+  if ('above' in o) c.above = bound(o.above, `goal[${index}].above`);
+  if ('near' in o) {
+    c.near = bound(o.near, `goal[${index}].near`);
+    if (!('within' in o)) throw fail('"near" needs "within"');
+  }
+  if ('within' in o) {
+    c.within = number(o.within, `goal[${index}].within`);
+    if (c.within < 0) throw fail('"within" must not be negative');
+  }
+  if ('matches' in o) {
+    if (o.matches !== 'striction' && o.matches !== 'distribution')
+      throw fail('"matches" is "striction" (a curve s(u)) or "distribution" (a function δ(u))');
+    c.matches = o.matches;
+    const answer = answers.find((a) => a.id === c.answer);
+    if (!answer || answer.kind !== (c.matches === 'striction' ? 'curve' : 'function'))
+      throw fail(
+        `"matches": "${c.matches}" is a condition on an answer of kind "${c.matches === 'striction' ? 'curve' : 'function'}"`,
+      );
+    if (!('within' in o)) throw fail('"matches" needs "within"');
+    if ('samples' in o) {
+      const n = number(o.samples, `goal[${index}].samples`);
+      if (!Number.isInteger(n) || n < 2 || n > MAX_SAMPLES)
+        throw fail(`"samples" is a whole number from 2 to ${MAX_SAMPLES}`);
+      c.samples = n;
+    }
+  } else if ('samples' in o) throw fail('"samples" goes with "matches"');
+  if (c.answer && !c.matches && answers.find((a) => a.id === c.answer)?.kind !== 'number')
+    throw fail('a formula answer is checked with "matches"');
+  if (c.value && c.matches) throw fail('"matches" is about an answer');
+  return c;
+}
+
+/** The answers of a solution: numbers, or formulas (one text, or three). */
+function solutionAnswers(/** @type {unknown} */ x, /** @type {Answer[]} */ answers) {
+  if (!isObject(x)) throw new TaskError('task.error.type', { key: 'solution.answers', what: 'an object' });
+  /** @type {Record<string, number | string | string[]>} */
+  const out = {};
+  for (const [k, v] of Object.entries(/** @type {Record<string, unknown>} */ (x))) {
+    const answer = answers.find((a) => a.id === k);
+    if (!answer) throw new TaskError('task.error.unknownKey', { key: k, where: 'solution.answers' });
+    const key = `solution.answers.${k}`;
+    if (answer.kind === 'number') out[k] = number(v, key);
+    else if (answer.kind === 'function') out[k] = text(v, key, 1000);
+    else out[k] = list(v, key, 3).map((t, i) => text(t, `${key}[${i}]`, 1000));
+  }
+  return out;
+}
+
+/**
+ * Reads an exercise: a JSON text or the parsed object. Throws a TaskError (code
+ * "invalid-task") saying what is wrong.
+ * @param {unknown} source
+ * @returns {Task}
+ */
+export function readTask(source) {
+  let x = source;
+  if (typeof source === 'string') {
+    if (source.length > MAX_TASK) throw new TaskError('task.error.tooLong', { max: MAX_TASK });
+    try {
+      x = JSON.parse(source);
+    } catch (e) {
+      throw new TaskError('task.error.notJson', { detail: String(/** @type {Error} */ (e).message).slice(0, 120) });
+    }
+  }
+  if (!isObject(x)) throw new TaskError('task.error.notExercise');
+  const o = /** @type {Record<string, unknown>} */ (x);
+  if (o.ruledlab !== 'exercise' || o.version !== 1) throw new TaskError('task.error.notExercise');
+  for (const k of Object.keys(o))
+    if (!KEYS.includes(k)) throw new TaskError('task.error.unknownKey', { key: k, where: 'the exercise' });
+  for (const k of ['id', 'title', 'prompt', 'scene', 'goal'])
+    if (!(k in o)) throw new TaskError('task.error.missing', { key: k });
+  if (typeof o.id !== 'string' || !/^[a-z0-9][a-z0-9-]{0,63}$/.test(o.id)) throw new TaskError('task.error.id');
+  const answers = list(o.answers ?? [], 'answers', MAX_ANSWERS).map((a, i) => {
+    const key = `answers[${i}]`;
+    if (!isObject(a)) throw new TaskError('task.error.type', { key, what: 'an object { id, kind, label }' });
+    const r = /** @type {Record<string, unknown>} */ (a);
+    for (const k of Object.keys(r))
+      if (!['id', 'kind', 'label'].includes(k)) throw new TaskError('task.error.unknownKey', { key: k, where: key });
+    if (r.kind !== 'number' && r.kind !== 'function' && r.kind !== 'curve')
+      throw new TaskError('task.error.type', { key: `${key}.kind`, what: '"number", "function" or "curve"' });
+    return /** @type {Answer} */ ({
+      id: name(r.id, `${key}.id`),
+      kind: r.kind,
+      label: words(r.label, `${key}.label`, MAX_TITLE),
+    });
+  });
+  if (new Set(answers.map((a) => a.id)).size !== answers.length)
+    throw new TaskError('task.error.type', { key: 'answers', what: 'answers with different ids' });
+  const goal = list(o.goal, 'goal', MAX_GOAL).map((c, i) => condition(c, i, answers));
+  if (!goal.length) throw new TaskError('task.error.missing', { key: 'goal[0]' });
+  const names = (/** @type {unknown} */ v, /** @type {string} */ key) =>
+    list(v ?? [], key, 64).map((n, i) => name(n, `${key}[${i}]`));
+  let solution = null;
+  if (o.solution !== undefined) {
+    if (!isObject(o.solution)) throw new TaskError('task.error.type', { key: 'solution', what: 'an object' });
+    const s = /** @type {Record<string, unknown>} */ (o.solution);
+    for (const k of Object.keys(s))
+      if (!['params', 'input', 'answers'].includes(k))
+        throw new TaskError('task.error.unknownKey', { key: k, where: 'solution' });
+    solution = {
+      ...(s.params !== undefined ? { params: params(s.params, 'solution.params') } : {}),
+      ...(s.input !== undefined ? { input: text(s.input, 'solution.input', 65536) } : {}),
+      ...(s.answers !== undefined ? { answers: solutionAnswers(s.answers, answers) } : {}),
+    };
+  }
+  return {
+    id: o.id,
+    title: words(o.title, 'title', MAX_TITLE),
+    prompt: words(o.prompt, 'prompt'),
+    scene: name(o.scene, 'scene'),
+    params: o.params === undefined ? {} : params(o.params, 'params'),
+    input: o.input === undefined ? null : text(o.input, 'input', 65536),
+    camera: o.camera === undefined ? null : text(o.camera, 'camera', 200),
+    change: names(o.change, 'change'),
+    hide: names(o.hide, 'hide'),
+    answers,
+    goal,
+    hints: list(o.hints ?? [], 'hints', MAX_HINTS).map((h, i) => words(h, `hints[${i}]`)),
+    solution,
+  };
+}
+
+/** The exercise as JSON (what readTask reads back to the same Task). */
+export function writeTask(/** @type {Task} */ task) {
+  const { input, camera, solution, ...rest } = task;
+  return JSON.stringify({
+    ruledlab: 'exercise',
+    version: 1,
+    ...rest,
+    ...(input ? { input } : {}),
+    ...(camera ? { camera } : {}),
+    ...(solution ? { solution } : {}),
+  });
+}
+
+/** Words in `lang`, else English. */
+export function say(/** @type {Words} */ w, /** @type {string} */ lang) {
+  return (lang === 'de' ? w.de : undefined) ?? w.en;
+}
+
+// —— in a link: a built-in exercise by its id, another as "j." and its JSON in base64url ——
+
+/** The link value of an exercise: a built-in one's id, else its JSON, encoded. */
+export function taskLink(/** @type {Task} */ task, /** @type {(id: string) => boolean} */ builtIn) {
+  if (builtIn(task.id)) return task.id;
+  const bytes = new TextEncoder().encode(writeTask(task));
+  let binary = '';
+  for (const b of bytes) binary += String.fromCharCode(b);
+  return `j.${btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '')}`;
+}
+
+/**
+ * The exercise of a link value, read and checked (a built-in id, or "j." and base64url JSON);
+ * throws a TaskError.
+ * @param {string} value
+ * @param {(id: string) => Task | null} builtIn
+ */
+export function taskFromLink(value, builtIn) {
+  if (!value.startsWith('j.')) {
+    const task = builtIn(value);
+    if (!task) throw new TaskError('task.error.unknownBuiltIn', { id: value.slice(0, 64) });
+    return task;
+  }
+  const b64 = value.slice(2).replace(/-/g, '+').replace(/_/g, '/');
+  if (!/^[A-Za-z0-9+/]*$/.test(b64) || b64.length > (MAX_TASK * 4) / 3 + 4)
+    throw new TaskError('task.error.notJson', { detail: 'the link does not hold one' });
+  let json = '';
+  try {
+    const binary = atob(b64 + '='.repeat((4 - (b64.length % 4)) % 4));
+    json = new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
+  } catch {
+    throw new TaskError('task.error.notJson', { detail: 'the link does not hold one' });
+  }
+  return readTask(json);
+}
