@@ -2,7 +2,8 @@
 # Installs what ruledlab needs to build (and, with --browser, to test), skipping whatever
 # is already there: the wasm32 target, wasm-bindgen-cli at exactly Cargo.lock's version,
 # the npm packages, and with --browser Debian's chromium and chromium-driver, firefox-esr with
-# xvfb, geckodriver and cargo-fuzz.
+# xvfb, geckodriver and cargo-fuzz, and the programs the figure exports are checked with: LaTeX
+# (pdflatex and lualatex with TikZ), poppler's pdftoppm and librsvg's rsvg-convert.
 # Only package registries are used; nothing downloads a binary or a browser of its own.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -50,6 +51,17 @@ if [ "${1:-}" = "--browser" ]; then
     sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq firefox-esr xvfb xauth >/dev/null
+  fi
+  # The readers of the figure exports (tests/page/print.test.mjs): pdflatex and lualatex with
+  # TikZ, pdftoppm to look at a PDF's pages, rsvg-convert to turn the SVG into PDF. Without
+  # recommends: about 80 packages, 2 minutes once (measured 2026-12).
+  if ! command -v pdflatex >/dev/null || ! command -v lualatex >/dev/null || ! command -v pdftoppm >/dev/null \
+    || ! command -v rsvg-convert >/dev/null || ! kpsewhich tikz.sty >/dev/null 2>&1; then
+    say "installing Debian's LaTeX (texlive-latex-base, -pictures, -luatex, -latex-recommended), poppler-utils, librsvg2-bin"
+    sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=900 \
+      texlive-latex-base texlive-pictures texlive-luatex texlive-latex-recommended poppler-utils librsvg2-bin >/dev/null
   fi
   if ! command -v geckodriver >/dev/null; then
     say "installing geckodriver 0.37 from crates.io (about two minutes once)"

@@ -41,6 +41,7 @@ mod milling;
 mod ruled;
 mod subdivision;
 pub mod tolerance;
+mod visibility;
 
 #[cfg(target_family = "wasm")]
 pub mod wasm;
@@ -55,6 +56,9 @@ pub use error::{
 pub use base::{check_coordinates, parameters as sample_parameters, CongruenceJet, Jet, Ranges};
 pub use line::{Line, Segment};
 pub use mesh::{grid_indices, strip_indices, Mesh};
+
+// figures: hidden lines of vector drawings
+pub use visibility::{hidden_lines, transformed, HiddenLineOptions, LineKind, Run, View};
 
 // Section 2: discrete ruled surfaces, their invariants, convergence and accuracy
 pub use ruled::accuracy::{sampling_errors, sampling_orders, SamplingErrors, SamplingOrders};
