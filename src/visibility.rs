@@ -396,28 +396,42 @@ fn occluder(view: &View, [p0, p1, p2]: [DVec3; 3], tau: f64) -> Option<Occluder>
 /// triangle's own tolerance: a twisted quad of a ruled strip bends by its twist, a flat mesh by
 /// nothing.
 fn bend(positions: &[DVec3], indices: &[u32]) -> Vec<f64> {
-    use std::collections::HashMap;
     let triangles = indices.len() / 3;
     let corner = |t: usize, k: usize| positions.get(indices[3 * t + k] as usize).copied();
-    let mut edges: HashMap<(u32, u32), Vec<(usize, u32)>> = HashMap::with_capacity(3 * triangles);
-    for t in 0..triangles {
+    // every edge (i < j) filed under i, with its triangle and the opposite corner: the triangles
+    // sharing an edge are in the same bucket (a counting sort, no comparisons)
+    // (a triangle naming no point is no one's neighbour)
+    let vertices = positions.len();
+    let valid = |t: usize| (0..3).all(|k| (indices[3 * t + k] as usize) < vertices);
+    let mut starts = vec![0usize; vertices + 1];
+    for t in (0..triangles).filter(|&t| valid(t)) {
         for k in 0..3 {
             let (i, j) = (indices[3 * t + k], indices[3 * t + (k + 1) % 3]);
-            edges.entry((i.min(j), i.max(j))).or_default().push((t, indices[3 * t + (k + 2) % 3]));
+            starts[i.min(j) as usize + 1] += 1;
+        }
+    }
+    for v in 0..vertices {
+        starts[v + 1] += starts[v];
+    }
+    let mut fill = starts.clone();
+    let mut edges = vec![(0u32, 0usize, 0u32); starts[vertices]];
+    for t in (0..triangles).filter(|&t| valid(t)) {
+        for k in 0..3 {
+            let (i, j) = (indices[3 * t + k], indices[3 * t + (k + 1) % 3]);
+            edges[fill[i.min(j) as usize]] = (i.max(j), t, indices[3 * t + (k + 2) % 3]);
+            fill[i.min(j) as usize] += 1;
         }
     }
     let mut out = vec![0.0f64; triangles];
-    for sharing in edges.values().filter(|s| s.len() > 1) {
-        for &(t, _) in sharing {
+    for v in 0..vertices {
+        let bucket = &edges[starts[v]..starts[v + 1]];
+        for &(j, t, _) in bucket {
             let (Some(a), Some(b), Some(c)) = (corner(t, 0), corner(t, 1), corner(t, 2)) else { continue };
             let n = (b - a).cross(c - a).normalize_or_zero();
-            for &(u, opposite) in sharing {
-                if u != t {
-                    if let Some(q) = positions.get(opposite as usize) {
-                        let d = n.dot(*q - a).abs();
-                        if d.is_finite() {
-                            out[t] = out[t].max(d);
-                        }
+            for &(_, _, opposite) in bucket.iter().filter(|e| e.0 == j && e.1 != t) {
+                if let Some(d) = positions.get(opposite as usize).map(|q| n.dot(*q - a).abs()) {
+                    if d.is_finite() {
+                        out[t] = out[t].max(d);
                     }
                 }
             }
@@ -524,7 +538,14 @@ fn hidden_parts(scene: &Scene, seg: &Clipped, stamp: &mut [u32], id: u32) -> Vec
             parts.push(part);
         }
     });
-    parts.sort_by(|x, y| x.0.total_cmp(&y.0));
+    // by their starts (an insertion sort: a segment crosses few triangles)
+    for k in 1..parts.len() {
+        let mut j = k;
+        while j > 0 && parts[j - 1].0 > parts[j].0 {
+            parts.swap(j - 1, j);
+            j -= 1;
+        }
+    }
     let mut merged: Vec<(f64, f64)> = Vec::with_capacity(parts.len());
     for (lo, hi) in parts {
         match merged.last_mut() {
@@ -925,6 +946,10 @@ mod tests {
         let broken = [DVec3::ZERO, DVec3::X, DVec3::NAN, DVec3::Y, DVec3::ONE];
         let runs = hidden_lines(&view, &[], &[(LineKind::Polyline { closed: true }, &broken)], exact()).unwrap();
         assert_eq!(runs[0].len(), 2);
+        // a triangle naming no point hides nothing (and breaks nothing)
+        let wild = [0, 1, u32::MAX, 0, 2, 3];
+        let runs = hidden_lines(&view, &[(&p, &wild)], &[(LineKind::Points, &dots)], exact()).unwrap();
+        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true, true]);
         let bad = HiddenLineOptions { tolerance: f64::NAN, ..Default::default() };
         assert_eq!(hidden_lines(&view, &[], &[], bad).unwrap_err().code(), "invalid-argument");
         assert!(View::new(&[0.0; 16], 10.0, 10.0).is_err());

@@ -40,3 +40,12 @@ export const PORTRAIT = 1000;
 export const TINY = 360;
 /** Below this width of the view, the mouse hint is left out (the toolbar needs the room). */
 export const SMALL_VIEW = 560;
+
+/**
+ * Most triangles of one mesh drawn in a figure (SVG, TikZ): a larger mesh is drawn by its lighter
+ * stand-in (Layer.moving) where it has one — facets far below a printed line's width add bytes,
+ * not detail.
+ */
+export const FIGURE_TRIANGLES = 20_000;
+/** Distance of hatch lines on a surface in a black-and-white figure (CSS pixels). */
+export const HATCH_SPACING = 4;
