@@ -163,6 +163,10 @@ pub const HIDDEN_LINE_MIN_PIECE: f64 = 1.0;
 /// Hidden lines: most cells per side of the screen grid the triangles are binned in.
 pub const MAX_HIDDEN_LINE_GRID: usize = 1024;
 
+/// Hidden lines: most grid cells a triangle is binned in on average; a view of huge triangles
+/// (seen from close by) gets a coarser grid instead of a quadratic number of entries.
+pub const HIDDEN_LINE_GRID_ENTRIES: usize = 16;
+
 /// Hidden lines: most triangles and most line points in one call (checked before binning).
 pub const MAX_HIDDEN_LINE_ITEMS: usize = 1 << 22;
 

@@ -38,7 +38,8 @@
 
 use crate::error::{Error, Result};
 use crate::tolerance::{
-    HIDDEN_LINE_BEND, HIDDEN_LINE_MIN_PIECE, HIDDEN_LINE_TOLERANCE, MAX_HIDDEN_LINE_GRID, MAX_HIDDEN_LINE_ITEMS,
+    HIDDEN_LINE_BEND, HIDDEN_LINE_GRID_ENTRIES, HIDDEN_LINE_MIN_PIECE, HIDDEN_LINE_TOLERANCE, MAX_HIDDEN_LINE_GRID,
+    MAX_HIDDEN_LINE_ITEMS,
 };
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
@@ -274,17 +275,33 @@ impl Scene {
             }
         }
         // the grid: the viewport with a margin of one viewport around it (images beyond are
-        // clamped into the border cells, queries likewise), about one triangle per cell
+        // clamped into the border cells, queries likewise), about one triangle per cell — coarser
+        // while the triangles would fill more than HIDDEN_LINE_GRID_ENTRIES cells each on
+        // average (huge triangles, seen from close by)
         let n = occluders.len().max(1) as f64;
         let (w, h) = (view.width, view.height);
-        let side = (n.sqrt().ceil() as usize).clamp(1, MAX_HIDDEN_LINE_GRID);
         let aspect = (w / h).clamp(0.1, 10.0);
-        let cols = ((side as f64 * aspect.sqrt()).round() as usize).clamp(1, MAX_HIDDEN_LINE_GRID);
-        let rows = ((side as f64 / aspect.sqrt()).round() as usize).clamp(1, MAX_HIDDEN_LINE_GRID);
-        let origin = DVec2::new(-w, -h);
-        let cell = DVec2::new(3.0 * w / cols as f64, 3.0 * h / rows as f64);
-        let mut scene =
-            Scene { occluders, origin, cell, cols, rows, starts: vec![0; cols * rows + 1], items: Vec::new() };
+        let mut side = (n.sqrt().ceil() as usize).clamp(1, MAX_HIDDEN_LINE_GRID);
+        let mut scene = loop {
+            let cols = ((side as f64 * aspect.sqrt()).round() as usize).clamp(1, MAX_HIDDEN_LINE_GRID);
+            let rows = ((side as f64 / aspect.sqrt()).round() as usize).clamp(1, MAX_HIDDEN_LINE_GRID);
+            let origin = DVec2::new(-w, -h);
+            let cell = DVec2::new(3.0 * w / cols as f64, 3.0 * h / rows as f64);
+            let scene =
+                Scene { occluders: Vec::new(), origin, cell, cols, rows, starts: Vec::new(), items: Vec::new() };
+            let entries: usize = occluders
+                .iter()
+                .map(|o| {
+                    let ((c0, r0), (c1, r1)) = (scene.cell_of(o.min), scene.cell_of(o.max));
+                    (c1 - c0 + 1) * (r1 - r0 + 1)
+                })
+                .sum();
+            if side == 1 || entries <= HIDDEN_LINE_GRID_ENTRIES * occluders.len() + 4096 {
+                break Scene { occluders, starts: vec![0; cols * rows + 1], ..scene };
+            }
+            side /= 2;
+        };
+        let (cols, rows) = (scene.cols, scene.rows);
         let mut counts = vec![0u32; cols * rows];
         for o in &scene.occluders {
             let (c0, r0) = scene.cell_of(o.min);
@@ -946,6 +963,16 @@ mod tests {
         let broken = [DVec3::ZERO, DVec3::X, DVec3::NAN, DVec3::Y, DVec3::ONE];
         let runs = hidden_lines(&view, &[], &[(LineKind::Polyline { closed: true }, &broken)], exact()).unwrap();
         assert_eq!(runs[0].len(), 2);
+        // 20 000 triangles each filling the view: binned coarsely, answered quickly
+        let huge: Vec<DVec3> = (0..20_000)
+            .flat_map(|k| {
+                let z = -0.5 - k as f64 * 1e-4;
+                [DVec3::new(-50.0, -50.0, z), DVec3::new(50.0, -50.0, z), DVec3::new(0.0, 50.0, z)]
+            })
+            .collect();
+        let idx: Vec<u32> = (0..60_000).collect();
+        let runs = hidden_lines(&view, &[(&huge, &idx)], &[(LineKind::Points, &dots)], exact()).unwrap();
+        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, false, true]);
         // a triangle naming no point hides nothing (and breaks nothing)
         let wild = [0, 1, u32::MAX, 0, 2, 3];
         let runs = hidden_lines(&view, &[(&p, &wild)], &[(LineKind::Points, &dots)], exact()).unwrap();

@@ -2,11 +2,11 @@
 //! read back.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use ruledlab::{gcode, parse_gcode, tool_path_csv as csv, tool_path_json as json, GcodeOptions};
-use ruledlab::{deviation, Quality};
-use ruledlab::{Tool, ToolEnd, ToolPath};
-use ruledlab::Scheme;
 use ruledlab::RuledSurface;
+use ruledlab::Scheme;
+use ruledlab::{deviation, Quality};
+use ruledlab::{gcode, parse_gcode, tool_path_csv as csv, tool_path_json as json, GcodeOptions};
+use ruledlab::{Tool, ToolEnd, ToolPath};
 
 #[path = "common.rs"]
 mod common;

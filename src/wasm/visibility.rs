@@ -159,7 +159,11 @@ fn points(what: &str, positions: &JsValue, transform: &JsValue) -> Result<Vec<DV
     } else {
         let m = args::numbers(F, "transform", transform)?;
         if m.len() != 16 || m.iter().any(|x| !x.is_finite()) {
-            return Err(fail_option(F, "transform", "transform must be 16 finite numbers (a column-major 4 × 4 matrix)"));
+            return Err(fail_option(
+                F,
+                "transform",
+                "transform must be 16 finite numbers (a column-major 4 × 4 matrix)",
+            ));
         }
         Some(DMat4::from_cols_slice(&m))
     };
@@ -204,7 +208,10 @@ pub fn hidden_lines(
                 return Err(fail_option(
                     F,
                     "kind",
-                    format!("kind must be \"segments\", \"polyline\" or \"points\", got {}", describe(&field(&set, "kind"))),
+                    format!(
+                        "kind must be \"segments\", \"polyline\" or \"points\", got {}",
+                        describe(&field(&set, "kind"))
+                    ),
                 ))
             }
         };
