@@ -27,6 +27,9 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
   const doc = document.implementation.createDocument(SVG, 'svg', null);
   const svg = doc.documentElement;
   const top = title ? 30 : 0;
+  // the legend goes under the picture, where it covers nothing
+  const below = legend && fig.legend.length ? 10 + 18 * fig.legend.length : 0;
+  const total = fig.height + top + below;
   const el = svgMaker(doc);
   const f = (/** @type {number} */ x) => x.toFixed(2);
   const pts = (/** @type {number[]} */ p) => {
@@ -37,15 +40,15 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
   for (const [k, v] of Object.entries({
     version: '1.1',
     width: f(fig.width),
-    height: f(fig.height + top),
-    viewBox: `0 0 ${f(fig.width)} ${f(fig.height + top)}`,
+    height: f(total),
+    viewBox: `0 0 ${f(fig.width)} ${f(total)}`,
     'font-family': 'Helvetica, Arial, sans-serif',
   }))
     svg.setAttribute(k, v);
   const paper = bw ? '#ffffff' : hex(PAPER);
   svg.append(
     el('title', {}, fig.title),
-    el('rect', { x: 0, y: 0, width: f(fig.width), height: f(fig.height + top), fill: paper }),
+    el('rect', { x: 0, y: 0, width: f(fig.width), height: f(total), fill: paper }),
   );
   const ink = bw ? '#000000' : '#1d2435';
   if (title)
@@ -88,30 +91,19 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
       const style = /** @type {any} */ (paint(set.style, bw));
       const runs = set.runs.filter((r) => !r.visible);
       if (!runs.length) return;
-      if (set.kind === 'points') {
-        const look = hiddenLook({ ...style, width: 1, dash: null, halo: false }, bw);
-        const g = el('g', {
-          class: `dots set-${k} ${set.style} hidden`,
-          fill: 'none',
-          stroke: hex(look.color),
-          'stroke-width': 0.5,
-        });
-        for (const r of runs)
-          g.append(el('circle', { cx: f(r.points[0]), cy: f(r.points[1]), r: f(Math.max(1, style.radius * 0.6)) }));
-        behind.append(g);
-      } else {
-        const look = hiddenLook(style, bw);
-        const g = el('g', {
-          class: `lines set-${k} ${set.style} hidden`,
-          fill: 'none',
-          stroke: hex(look.color),
-          'stroke-width': f(look.width),
-          'stroke-dasharray': look.dash.join(' '),
-          ...(look.opacity < 1 ? { 'stroke-opacity': look.opacity } : {}),
-        });
-        for (const r of runs) g.append(el('polyline', { points: pts(r.points) }));
-        behind.append(g);
-      }
+      // (a hidden dot is left out: a point behind a surface says nothing its lines do not)
+      if (set.kind === 'points') return;
+      const look = hiddenLook(style, bw);
+      const g = el('g', {
+        class: `lines set-${k} ${set.style} hidden`,
+        fill: 'none',
+        stroke: hex(look.color),
+        'stroke-width': f(look.width),
+        'stroke-dasharray': look.dash.join(' '),
+        ...(look.opacity < 1 ? { 'stroke-opacity': look.opacity } : {}),
+      });
+      for (const r of runs) g.append(el('polyline', { points: pts(r.points) }));
+      behind.append(g);
     });
     picture.append(behind);
   }
@@ -187,35 +179,21 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
     group.append(halo, text);
     svg.append(group);
   }
-  if (legend && fig.legend.length) svg.append(legendGroup(el, doc, fig.legend, bw, top, ink));
+  if (below) svg.append(legendGroup(el, doc, fig.legend, bw, top + fig.height, ink));
   return `<?xml version="1.0" encoding="UTF-8"?>\n${new XMLSerializer().serializeToString(doc)}\n`;
 }
 
-/** The legend: a sample of each style (at its true width) and its text, on a white box. */
+/** The legend from `y` down: a sample of each style (at its true width) and its text. */
 function legendGroup(
   /** @type {Function} */ el,
   /** @type {XMLDocument} */ doc,
   /** @type {Array<{style: string, label: string}>} */ entries,
   /** @type {boolean} */ bw,
-  /** @type {number} */ top,
+  /** @type {number} */ y0,
   /** @type {string} */ ink,
 ) {
   const f = (/** @type {number} */ x) => x.toFixed(2);
-  const group = el('g', { class: 'legend', transform: `translate(10 ${top + 10})`, 'font-size': 12, fill: ink });
-  // 12 px Helvetica: about 0.56 em per character, subscripts smaller
-  const textWidth = (/** @type {string} */ s) =>
-    parseRich(s).reduce((w, p) => w + p.text.length * (p.kind === 'text' ? 6.7 : 4.9), 0);
-  group.append(
-    el('rect', {
-      x: 0,
-      y: 0,
-      width: f(50 + Math.max(...entries.map((e) => textWidth(e.label)))),
-      height: 8 + 18 * entries.length,
-      fill: '#ffffff',
-      'fill-opacity': 0.88,
-      rx: 5,
-    }),
-  );
+  const group = el('g', { class: 'legend', transform: `translate(10 ${y0})`, 'font-size': 12, fill: ink });
   entries.forEach((entry, k) => {
     const y = 14 + 18 * k;
     const look = /** @type {any} */ (paint(entry.style, bw));

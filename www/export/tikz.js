@@ -286,17 +286,11 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
       const runs = set.runs.filter((r) => !r.visible);
       if (!runs.length) continue;
       const style = /** @type {any} */ (paint(set.style, bw));
-      if (set.kind === 'points') {
-        const look = hiddenLook({ ...style, width: 1, dash: null, halo: false }, bw);
-        for (const r of runs)
-          body.push(
-            `\\draw[${colour(look.color)}, line width=0.4pt] ${at(r.points[0], r.points[1])} circle (${pt(Math.max(1, style.radius * 0.6))});`,
-          );
-      } else {
-        const look = hiddenLook(style, bw);
-        const opts = `${colour(look.color)}, line width=${pt(look.width)}${dash(look.dash)}${look.opacity < 1 ? `, draw opacity=${n(look.opacity)}` : ''}`;
-        body.push(`\\draw[${opts}] ${runs.map((r) => path(r.points)).join(' ')};`);
-      }
+      // (a hidden dot is left out: a point behind a surface says nothing its lines do not)
+      if (set.kind === 'points') continue;
+      const look = hiddenLook(style, bw);
+      const opts = `${colour(look.color)}, line width=${pt(look.width)}${dash(look.dash)}${look.opacity < 1 ? `, draw opacity=${n(look.opacity)}` : ''}`;
+      body.push(`\\draw[${opts}] ${runs.map((r) => path(r.points)).join(' ')};`);
     }
 
   // what is seen, in the scene's order
