@@ -113,6 +113,7 @@ test('PNG at 2× and 4× of the view, and the page’s export buttons download f
     ['svg', /convergence\.svg$/],
     ['svgBw', /convergence-bw\.svg$/],
     ['tikz', /convergence\.tikz$/],
+    ['tikzBw', /convergence-bw\.tikz$/],
     ['png2', /convergence-2x\.png$/],
     ['plot', /convergence-plot\.svg$/],
   ]) {
