@@ -1,8 +1,10 @@
 // The README's pictures, made by the page itself: a screenshot of the page and black-and-white
-// figures exported with <ruled-view>.exportSVG({ bw: true }) — the same code a lecturer uses.
-// Run after a build: `node scripts/figures.mjs` (writes docs/).
+// figures exported with <ruled-view>.exportSVG({ bw: true }) — the same code a lecturer uses —
+// and Fig. 2's TikZ export typeset by pdflatex (where it is installed: npm test's setup puts it
+// there), turned into a PNG by pdftoppm. Run after a build: `node scripts/figures.mjs` (writes docs/).
 import { chromium } from 'playwright-core';
-import { mkdtempSync, writeFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { startServer } from './serve.mjs';
@@ -10,14 +12,46 @@ import { startServer } from './serve.mjs';
 const DOCS = new URL('../docs/', import.meta.url).pathname;
 
 /**
- * scene, params, camera [yaw, pitch, distance, tx, ty, tz] or null for the scene's own, file name
- * @type {[string, string, number[] | null, string][]}
+ * the element's attributes (a scene and its params, or a figure of the paper), camera [yaw, pitch,
+ * distance, tx, ty, tz] or null for the scene's own, file name
+ * @type {[Record<string, string>, number[] | null, string][]}
  */
 const FIGURES = [
-  ['notation', '', null, 'figure-1-notation-bw.svg'],
-  ['curves', 'w=1/13&steps=4', [-1.5707963, 1.45, 18, 4, 0.15, 0], 'figure-8-dlg-bw.svg'],
-  ['striction', '', null, 'figure-2-striction-bw.svg'],
+  [{ scene: 'notation' }, null, 'figure-1-notation-bw.svg'],
+  [{ scene: 'curves', params: 'w=1/13&steps=4' }, [-1.5707963, 1.45, 18, 4, 0.15, 0], 'figure-8-dlg-bw.svg'],
+  [{ paper: 'fig2' }, null, 'figure-2-striction-bw.svg'],
+  [{ paper: 'fig13' }, null, 'figure-13-sphere-bw.svg'],
 ];
+
+/** Typesets a TikZ picture with pdflatex and saves its page as a PNG (skipped without pdflatex). */
+function typeset(/** @type {string} */ tikz, /** @type {string} */ file) {
+  const dir = mkdtempSync(join(tmpdir(), 'ruledlab-tikz-'));
+  const tex = [
+    '\\documentclass{article}',
+    '\\usepackage{tikz}',
+    '\\pagestyle{empty}',
+    '\\begin{document}',
+    tikz,
+    '\\end{document}',
+  ];
+  writeFileSync(join(dir, 'figure.tex'), tex.join('\n'));
+  try {
+    execFileSync('pdflatex', ['-interaction=nonstopmode', '-halt-on-error', 'figure.tex'], {
+      cwd: dir,
+      stdio: 'ignore',
+    });
+    // the picture's box on the page: crop the PDF page to what is drawn (A4, the picture at the top left)
+    execFileSync(
+      'pdftoppm',
+      ['-r', '110', '-png', '-singlefile', '-x', '180', '-y', '165', '-W', '500', '-H', '400', 'figure.pdf', 'figure'],
+      { cwd: dir },
+    );
+    writeFileSync(join(DOCS, file), readFileSync(join(dir, 'figure.png')));
+    console.log(`docs/${file}`);
+  } catch (e) {
+    console.log(`docs/${file} not made: ${/** @type {Error} */ (e).message.split('\n')[0]}`);
+  }
+}
 
 const { server, url } = await startServer();
 const context = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'ruledlab-figures-')), {
@@ -76,24 +110,24 @@ try {
   console.log('docs/screenshot-edit.png');
 
   await page.goto(`${url}examples/web-component.html`);
-  for (const [scene, params, camera, file] of FIGURES) {
-    const svg = await page.evaluate(
-      async ([s, q, cam]) => {
+  for (const [attributes, camera, file] of FIGURES) {
+    const { svg, tikz } = await page.evaluate(
+      async ([attrs, cam]) => {
         document.body.replaceChildren();
         const v = /** @type {any} */ (document.createElement('ruled-view'));
         Object.assign(v.style, { width: '640px', height: '420px', display: 'block' });
-        v.setAttribute('scene', s);
-        v.setAttribute('params', q);
+        for (const [k, value] of Object.entries(attrs)) v.setAttribute(k, value);
         document.body.append(v);
         await new Promise((r) => v.addEventListener('scene-change', r, { once: true }));
         if (cam) v.view.viewer.camera.fromArray(cam);
         v.view.viewer.render();
-        return v.exportSVG({ bw: true, legend: true });
+        return { svg: v.exportSVG({ bw: true, legend: true }), tikz: v.exportTikZ({ bw: true }) };
       },
-      [scene, params, camera],
+      /** @type {const} */ ([attributes, camera]),
     );
     writeFileSync(join(DOCS, file), svg);
     console.log(`docs/${file}`);
+    if (attributes.paper === 'fig2') typeset(tikz, 'figure-2-striction-bw-pdflatex.png');
   }
 } finally {
   await context.close();

@@ -10,7 +10,7 @@ cd "$(dirname "$0")/../fuzz"
 export PATH="$HOME/.cargo/bin:$PATH"
 seconds=${1:-5}
 command -v cargo-fuzz >/dev/null || cargo install cargo-fuzz --version 0.13.2
-for target in import_text surface congruence toolpath formula; do
+for target in import_text surface congruence toolpath formula visibility; do
   corpus=$(mktemp -d)
   if ! RUSTC_BOOTSTRAP=1 cargo fuzz run -s none "$target" "$corpus" "seeds/$target" -- \
       -max_total_time="$seconds" -print_final_stats=0 > "$corpus.log" 2>&1; then

@@ -2,9 +2,10 @@
 # Installs what ruledlab needs to build (and, with --browser, to test), skipping whatever
 # is already there: the wasm32 target, wasm-bindgen-cli at exactly Cargo.lock's version,
 # the npm packages, and with --browser Debian's chromium and chromium-driver, firefox-esr with
-# xvfb, geckodriver, cargo-fuzz and LinuxCNC's G-code interpreter rs274 (Debian's
-# linuxcnc-uspace without its recommends: just under a minute and ~85 packages, Tcl/Tk and Python
-# among them; with the recommends it would pull a realtime kernel).
+# xvfb, geckodriver, cargo-fuzz, LinuxCNC's G-code interpreter rs274 (Debian's linuxcnc-uspace
+# without its recommends: just under a minute and ~85 packages, Tcl/Tk and Python among them; with
+# the recommends it would pull a realtime kernel), and the programs the figure exports are checked
+# with: LaTeX (pdflatex and lualatex with TikZ), poppler's pdftoppm and librsvg's rsvg-convert.
 # Only package registries are used; nothing downloads a binary or a browser of its own.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,6 +60,17 @@ if [ "${1:-}" = "--browser" ]; then
     sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends linuxcnc-uspace >/dev/null
+  fi
+  # The readers of the figure exports (tests/page/print.test.mjs): pdflatex and lualatex with
+  # TikZ, pdftoppm to look at a PDF's pages, rsvg-convert to turn the SVG into PDF. Without
+  # recommends: 24 packages, 49 s once (measured 2026-12-02, apt-get update included).
+  if ! command -v pdflatex >/dev/null || ! command -v lualatex >/dev/null || ! command -v pdftoppm >/dev/null \
+    || ! command -v rsvg-convert >/dev/null || ! kpsewhich tikz.sty >/dev/null 2>&1; then
+    say "installing Debian's LaTeX (texlive-latex-base, -pictures, -luatex, -latex-recommended), poppler-utils, librsvg2-bin"
+    sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=900 \
+      texlive-latex-base texlive-pictures texlive-luatex texlive-latex-recommended poppler-utils librsvg2-bin >/dev/null
   fi
   if ! command -v geckodriver >/dev/null; then
     say "installing geckodriver 0.37 from crates.io (about two minutes once)"

@@ -42,6 +42,7 @@ mod milling;
 mod ruled;
 mod subdivision;
 pub mod tolerance;
+mod visibility;
 
 #[cfg(target_family = "wasm")]
 pub mod wasm;
@@ -57,6 +58,9 @@ pub use base::{check_coordinates, parameters as sample_parameters, CongruenceJet
 pub use line::{Line, Segment};
 pub use line_fit::{fit_line, LineFit};
 pub use mesh::{grid_indices, strip_indices, Mesh};
+
+// figures: hidden lines of vector drawings
+pub use visibility::{hidden_lines, transformed, HiddenLineOptions, LineKind, Run, View};
 
 // Section 2: discrete ruled surfaces, their invariants, convergence and accuracy
 pub use ruled::accuracy::{sampling_errors, sampling_orders, SamplingErrors, SamplingOrders};

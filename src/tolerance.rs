@@ -178,6 +178,33 @@ pub const MAX_AXIS_TURNS: usize = 8;
 /// The largest coordinate (mm, degrees, feed) a machine description or post option accepts.
 pub const MAX_MACHINE_VALUE: f64 = 1e7;
 
+/// Hidden lines: a line within this distance of a triangle's plane is never hidden by it, as a
+/// fraction of the diagonal of the triangles' bounding box (rounding of f32 buffers, lines on a
+/// flat mesh); see also [`HIDDEN_LINE_BEND`].
+pub const HIDDEN_LINE_TOLERANCE: f64 = 1e-3;
+
+/// Hidden lines: a line within this fraction of a triangle's bend (how far the triangles
+/// sharing its edges leave its plane) is not hidden by it, so that lines lying on a surface are
+/// not hidden by the surface they lie on. Measured on the hyperboloid strip of Fig. 2 with 12,
+/// 24, 36 and 72 rulings: the striction polygon, the common perpendiculars and the exact
+/// striction curve lie within 0.30–0.32 bends of the triangles they cross (0.078 for a bend of
+/// 0.44 at 36 rulings); half a bend leaves a margin of 1.6.
+pub const HIDDEN_LINE_BEND: f64 = 0.5;
+
+/// Hidden lines: a run of one visibility shorter than this many pixels between runs of the other
+/// is a sliver where a line grazes an edge, and goes to its neighbours.
+pub const HIDDEN_LINE_MIN_PIECE: f64 = 1.0;
+
+/// Hidden lines: most cells per side of the screen grid the triangles are binned in.
+pub const MAX_HIDDEN_LINE_GRID: usize = 1024;
+
+/// Hidden lines: most grid cells a triangle is binned in on average; a view of huge triangles
+/// (seen from close by) gets a coarser grid instead of a quadratic number of entries.
+pub const HIDDEN_LINE_GRID_ENTRIES: usize = 16;
+
+/// Hidden lines: most triangles and most line points in one call (checked before binning).
+pub const MAX_HIDDEN_LINE_ITEMS: usize = 1 << 22;
+
 /// `|a − b| ≤ tol · max(1, |a|, |b|)`: relative for large numbers, absolute near zero.
 pub fn near(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol * 1f64.max(a.abs()).max(b.abs())

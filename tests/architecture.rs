@@ -13,7 +13,7 @@ use std::path::Path;
 const LAYERS: &[&[&str]] = &[
     &["error", "tolerance", "line"],
     &["base", "formula", "linalg", "linear_complex", "line_fit"],
-    &["ruled", "mesh"],
+    &["ruled", "mesh", "visibility"],
     &["subdivision"],
     &["congruence"],
     &["milling"],

@@ -65,3 +65,12 @@ export const DRAG_SLOP = 3;
 
 /** Points of an exact striction curve whose straightness is measured (an exercise's "straight line"). */
 export const STRAIGHTNESS_SAMPLES = 201;
+
+/**
+ * Most triangles of one mesh drawn in a figure (SVG, TikZ): a larger mesh is drawn by its lighter
+ * stand-in (Layer.moving) where it has one — facets far below a printed line's width add bytes,
+ * not detail.
+ */
+export const FIGURE_TRIANGLES = 20_000;
+/** Distance of hatch lines on a surface in a black-and-white figure (CSS pixels). */
+export const HATCH_SPACING = 4;

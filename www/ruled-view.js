@@ -491,7 +491,8 @@ export class RuledView extends HTMLElement {
 
   /**
    * The current view as a self-contained SVG 1.1 figure (labels as text), in colour or black
-   * and white: `{ bw?, legend? = true, title? = false, labels? = true }`.
+   * and white, the parts of lines a surface hides thin and dashed or left out:
+   * `{ bw?, legend? = true, title? = false, labels? = true, hidden? = 'dashed' | 'omit' }`.
    * @param {import('./export/svg.js').FigureOptions} [options]
    */
   exportSVG(options) {

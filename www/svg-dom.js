@@ -2,6 +2,7 @@
 // the figures, the plot and the exports share, and the frame of a small standalone figure.
 
 export const SVG = 'http://www.w3.org/2000/svg';
+const XML = 'http://www.w3.org/XML/1998/namespace';
 
 /**
  * A function making SVG elements of `doc`: `make(tag, attributes, text)`.
@@ -14,7 +15,9 @@ export function svgMaker(doc) {
     /** @type {string} */ text = '',
   ) => {
     const e = doc.createElementNS(SVG, tag);
-    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
+    for (const [k, v] of Object.entries(attrs))
+      if (k.startsWith('xml:')) e.setAttributeNS(XML, k, String(v));
+      else e.setAttribute(k, String(v));
     if (text) e.textContent = text;
     return e;
   };

@@ -4,6 +4,10 @@
 // for contrast; every pair that a scene shows together stays ≥ 15 CIEDE2000 apart under
 // simulated deuteranopia, protanopia and tritanopia (tests/page/a11y.test.mjs). Where two
 // things must be told apart a second cue is given as well: dashes, points, width.
+// In black and white (the exports' `bw`) every pair a scene shows together differs by its dash
+// pattern, a width ratio of at least 2 or a grey level ΔL* ≥ 25 (points: hollow or filled, size,
+// grey; surfaces: hatching or grey) — tests/node/print.test.mjs checks every combination of
+// every scene's switches.
 
 /**
  * @typedef {object} LineStyle
@@ -13,6 +17,8 @@
  * @property {number} [alpha]   opacity, default 1
  * @property {number[]} [dash]  on/off lengths in CSS pixels
  * @property {{gray: number, width: number, dash?: number[]}} bw   black-and-white rendition
+ * @property {boolean} [halo]   drawn over surfaces with a paper-coloured halo in the exports (an
+ *                              exact curve on shading)
  *
  * @typedef {object} PointStyle
  * @property {'point'} kind
@@ -25,7 +31,12 @@
  * @property {string} color     front side
  * @property {string} back      back side
  * @property {number} alpha
- * @property {{gray: number, back: number}} bw
+ * @property {{gray: number, back: number, hatch?: Hatch}} bw   black and white: light greys, and
+ *   a hatching where two surfaces shown together must be told apart
+ * @property {boolean} [occludes]   whether it hides the lines behind it in the exports (default
+ *   true; a faint ghost does not)
+ *
+ * @typedef {'ne' | 'nw' | 'h' | 'cross'} Hatch   lines rising to the right, falling, level, both diagonals
  *
  * @typedef {LineStyle | PointStyle | AreaStyle} Style
  */
@@ -48,7 +59,7 @@ const line = (
   /** @type {string} */ color,
   /** @type {number} */ width,
   /** @type {LineStyle['bw']} */ bw,
-  /** @type {{alpha?: number, dash?: number[]}} */ extra = {},
+  /** @type {{alpha?: number, dash?: number[], halo?: boolean}} */ extra = {},
 ) => ({ kind: 'line', color, width, bw, ...extra });
 /** @returns {PointStyle} */
 const point = (/** @type {string} */ color, /** @type {number} */ size, /** @type {PointStyle['bw']} */ bw) => ({
@@ -63,13 +74,14 @@ const area = (
   /** @type {string} */ back,
   /** @type {number} */ alpha,
   /** @type {AreaStyle['bw']} */ bw,
-) => ({ kind: 'area', color, back, alpha, bw });
+  /** @type {{occludes?: boolean}} */ extra = {},
+) => ({ kind: 'area', color, back, alpha, bw, ...extra });
 
 /** @type {Record<string, Style>} */
 export const STYLES = {
   ruling: line(PALETTE.ink, 1.6, { gray: 0, width: 0.6 }),
   rulingBold: line(PALETTE.ink, 2.6, { gray: 0, width: 1.2 }),
-  given: line(PALETTE.ink, 2.2, { gray: 0, width: 1.0 }),
+  given: line(PALETTE.ink, 2.2, { gray: 0, width: 0.6 }),
   givenPoint: point(PALETTE.ink, 8, { gray: 0, size: 3 }),
   givenThin: line(PALETTE.ink, 1.1, { gray: 0, width: 0.5 }),
   normal: line(PALETTE.blue, 2.4, { gray: 0, width: 0.6, dash: [3, 2] }),
@@ -78,7 +90,7 @@ export const STYLES = {
   strictionPoint: point(PALETTE.vermillion, 8, { gray: 0, size: 3.5 }),
   perpendicularMidpoints: line(PALETTE.maroon, 2.4, { gray: 0.35, width: 1.0, dash: [5, 2, 1, 2] }, { dash: [9, 5] }),
   perpendicularMidpoint: point(PALETTE.maroon, 6, { gray: 0.35, size: 2.5, hollow: true }),
-  exact: line(PALETTE.sky, 6, { gray: 0.6, width: 2.4 }, { alpha: 0.85 }),
+  exact: line(PALETTE.sky, 6, { gray: 0.6, width: 2.4 }, { alpha: 0.85, halo: true }),
   exactPoint: point(PALETTE.sky, 11, { gray: 0.6, size: 4 }),
   tangent: line(PALETTE.maroon, 2.4, { gray: 0.35, width: 0.8, dash: [4, 2] }, { dash: [8, 5] }),
   ghost: line(PALETTE.grey, 1.2, { gray: 0.55, width: 0.4, dash: [2, 2] }, { alpha: 0.6, dash: [4, 3] }),
@@ -96,21 +108,21 @@ export const STYLES = {
   barycentre: line(PALETTE.vermillion, 2.4, { gray: 0, width: 1.0, dash: [4, 2] }, { dash: [7, 4] }),
   barycentrePoint: point(PALETTE.vermillion, 4, { gray: 0, size: 1.5 }),
   endpointScheme: line(PALETTE.orange, 1.3, { gray: 0.5, width: 0.4, dash: [3, 2] }, { alpha: 0.9, dash: [6, 4] }),
-  lineScheme: line(PALETTE.blue, 1.7, { gray: 0, width: 0.6 }),
+  lineScheme: line(PALETTE.blue, 1.7, { gray: 0, width: 1.4 }),
   axisLine: line(PALETTE.maroon, 2.2, { gray: 0.3, width: 0.8, dash: [6, 2, 1, 2] }, { dash: [10, 4, 2, 4] }),
-  strip: area('#a9c9e8', '#f3d3a6', 0.55, { gray: 0.88, back: 0.8 }),
-  stripOpaque: area('#a9c9e8', '#f3d3a6', 1, { gray: 0.88, back: 0.8 }),
-  surfaceFaint: area('#b3c2d1', '#e0d5c1', 0.28, { gray: 0.93, back: 0.9 }),
-  director1: area(PALETTE.sky, PALETTE.sky, 0.45, { gray: 0.85, back: 0.8 }),
-  director2: area(PALETTE.yellow, PALETTE.yellow, 0.4, { gray: 0.92, back: 0.9 }),
-  envelope: area(PALETTE.yellow, PALETTE.yellow, 0.35, { gray: 0.9, back: 0.85 }),
-  part: area(PALETTE.lightGrey, PALETTE.lightGrey, 0.55, { gray: 0.85, back: 0.8 }),
-  tool: area('#6e6e6e', '#6e6e6e', 0.9, { gray: 0.55, back: 0.45 }),
-  endpointStrip: area(PALETTE.orange, PALETTE.orange, 0.3, { gray: 0.9, back: 0.85 }),
-  lineStrip: area(PALETTE.sky, PALETTE.sky, 0.35, { gray: 0.8, back: 0.75 }),
-  focal1: area(PALETTE.blue, PALETTE.blue, 0.5, { gray: 0.7, back: 0.6 }),
-  focal2: area(PALETTE.grey, PALETTE.grey, 0.55, { gray: 0.88, back: 0.8 }),
-  torsal: line(PALETTE.maroon, 2.6, { gray: 0, width: 1.2 }),
+  strip: area('#a9c9e8', '#f3d3a6', 0.55, { gray: 0.93, back: 0.86 }),
+  stripOpaque: area('#a9c9e8', '#f3d3a6', 1, { gray: 0.93, back: 0.86 }),
+  surfaceFaint: area('#b3c2d1', '#e0d5c1', 0.28, { gray: 0.96, back: 0.94 }, { occludes: false }),
+  director1: area(PALETTE.sky, PALETTE.sky, 0.45, { gray: 0.9, back: 0.86 }),
+  director2: area(PALETTE.yellow, PALETTE.yellow, 0.4, { gray: 0.95, back: 0.92, hatch: 'ne' }),
+  envelope: area(PALETTE.yellow, PALETTE.yellow, 0.35, { gray: 0.93, back: 0.9, hatch: 'ne' }, { occludes: false }),
+  part: area(PALETTE.lightGrey, PALETTE.lightGrey, 0.55, { gray: 0.9, back: 0.86 }),
+  tool: area('#6e6e6e', '#6e6e6e', 0.9, { gray: 0.62, back: 0.55 }),
+  endpointStrip: area(PALETTE.orange, PALETTE.orange, 0.3, { gray: 0.94, back: 0.9, hatch: 'nw' }),
+  lineStrip: area(PALETTE.sky, PALETTE.sky, 0.35, { gray: 0.9, back: 0.86 }),
+  focal1: area(PALETTE.blue, PALETTE.blue, 0.5, { gray: 0.86, back: 0.8, hatch: 'nw' }),
+  focal2: area(PALETTE.grey, PALETTE.grey, 0.55, { gray: 0.92, back: 0.88, hatch: 'h' }),
+  torsal: line(PALETTE.maroon, 2.6, { gray: 0.4, width: 1.3 }),
   cell: line(PALETTE.blue, 3.6, { gray: 0, width: 1.8 }),
   complexAxis: line(PALETTE.grey, 2.4, { gray: 0.4, width: 0.9, dash: [8, 2, 1, 2] }, { dash: [12, 4, 2, 4] }),
   focalHyperbolic: line(PALETTE.ink, 1.2, { gray: 0.3, width: 0.4 }, { alpha: 0.8 }),

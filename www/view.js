@@ -38,6 +38,7 @@ export { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
  * @typedef {import('./theme.js').LineStyle} LineStyle
  * @typedef {import('./theme.js').PointStyle} PointStyle
  * @typedef {import('./theme.js').AreaStyle} AreaStyle
+ * @typedef {import('./theme.js').Hatch} Hatch
  * @typedef {import('./i18n/index.js').Translator} Translator
  * @typedef {import('./camera.js').OrbitCamera} OrbitCamera
  * @typedef {import('./stage.js').StageOptions} StageOptions

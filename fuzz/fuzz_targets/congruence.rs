@@ -1,8 +1,8 @@
 //! LineCongruence construction and every congruence scheme on fuzzed grids.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use ruledlab::{butterfly_diagonal, subdivide_congruence as subdivide, CongruenceScheme, LineCongruence};
 use ruledlab::butterfly_lines;
+use ruledlab::{butterfly_diagonal, subdivide_congruence as subdivide, CongruenceScheme, LineCongruence};
 
 #[path = "common.rs"]
 mod common;

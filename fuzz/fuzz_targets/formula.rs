@@ -4,9 +4,9 @@
 //! wasm's 1 MiB, so a stack that would overflow in the browser overflows here first.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use ruledlab::{AnalyticCongruence, AnalyticSurface, CongruenceSpec, FormulaSpec, SmoothCongruence, SmoothRuled};
 use ruledlab::Dual;
 use ruledlab::Formula;
+use ruledlab::{AnalyticCongruence, AnalyticSurface, CongruenceSpec, FormulaSpec, SmoothCongruence, SmoothRuled};
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data).into_owned();
@@ -29,7 +29,8 @@ fn run(text: &str) {
     }
     // its lines as the fields of a surface and of a congruence
     let mut parts = text.split('\n').map(str::to_string).chain(std::iter::repeat("u".to_string()));
-    let mut three = || [parts.next().unwrap_or_default(), parts.next().unwrap_or_default(), parts.next().unwrap_or_default()];
+    let mut three =
+        || [parts.next().unwrap_or_default(), parts.next().unwrap_or_default(), parts.next().unwrap_or_default()];
     let (a, e, p, d) = (three(), three(), three(), three());
     let surface = FormulaSpec { a, e, u: (-1.0, 1.0), v: (-1.0, 1.0), closed: false, parameters: [1.0, 2.0, 3.0] };
     if let Ok(s) = AnalyticSurface::from_formulas(&surface) {

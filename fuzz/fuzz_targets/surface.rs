@@ -1,9 +1,9 @@
 //! RuledSurface construction, invariants, isometries and every strip scheme on fuzzed data.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use ruledlab::{Development, HingeChain};
-use ruledlab::{recut, subdivide_lines, subdivide_polygon, subdivide_strip, Scheme, Variant};
 use ruledlab::RuledSurface;
+use ruledlab::{recut, subdivide_lines, subdivide_polygon, subdivide_strip, Scheme, Variant};
+use ruledlab::{Development, HingeChain};
 
 #[path = "common.rs"]
 mod common;

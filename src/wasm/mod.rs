@@ -19,6 +19,7 @@ mod live;
 mod milling;
 mod subdivision;
 mod surface;
+mod visibility;
 
 pub use catalogue::{AnalyticCongruence, AnalyticSurface};
 pub use congruence::LineCongruence;
@@ -28,6 +29,7 @@ pub use live::live_objects;
 pub use milling::ToolPath;
 pub use subdivision::subdivide_polygon;
 pub use surface::RuledSurface;
+pub use visibility::hidden_lines;
 
 use wasm_bindgen::prelude::*;
 

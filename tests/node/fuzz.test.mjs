@@ -16,6 +16,7 @@ const {
   importSegments,
   meshNormalsF32,
   linearComplex,
+  hiddenLines,
 } = ruledlab;
 
 let seed = Number(process.env.FUZZ_SEED ?? 12345);
@@ -380,6 +381,45 @@ const CALLS = [
   (f) =>
     linearComplex(pick([value(), f.surface.segments(), [0, 0, 0, 1, 0, 0]]), pick([undefined, value(), options()])),
   (f) => f.analyticCongruence.focal(pick([undefined, ...SMALL, value()]), pick([undefined, ...SMALL, value()])),
+  (f) =>
+    hiddenLines(
+      pick([
+        value(),
+        options(),
+        {
+          viewProj: pick([
+            value(),
+            [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -0.1, -1, 0, 0, 5, 8],
+            new Array(16).fill(0).map(() => pick(NUMBERS)),
+          ]),
+          width: pick([640, ...NUMBERS]),
+          height: pick([420, ...NUMBERS]),
+          meshes: pick([
+            value(),
+            [],
+            [
+              {
+                positions: pick([value(), f.surface.segmentsF32()]),
+                indices: pick([value(), new Uint32Array([0, 1, 2, 1, 2, 3]), [0, 1, 9], [2 ** 32 - 1, 0, 1]]),
+                ...(random() < 0.3 ? { transform: value() } : {}),
+              },
+            ],
+          ]),
+          lines: pick([
+            value(),
+            [],
+            [
+              {
+                kind: pick(['segments', 'polyline', 'points', ...STRINGS]),
+                positions: pick([value(), f.surface.segmentsF32()]),
+                ...(random() < 0.3 ? { closed: pick([true, value()]) } : {}),
+              },
+            ],
+          ]),
+        },
+      ]),
+      pick([undefined, value(), options(), { tolerance: pick(NUMBERS), minPiece: pick(NUMBERS) }]),
+    ),
 ];
 
 test('100 000 random and adversarial calls: only Errors, never a trap; the module keeps working', () => {

@@ -39,7 +39,8 @@ test('SVG: parses, holds the segments of the view, labels as <text> with subscri
     return {
       error: doc.querySelector('parsererror')?.textContent ?? '',
       root: doc.documentElement.namespaceURI,
-      lines: doc.querySelectorAll('line').length,
+      lines: doc.querySelectorAll('g.visible > g.lines > polyline').length,
+      legend: doc.querySelectorAll('g.legend > line').length,
       texts: [...doc.querySelectorAll('g[font-style="italic"] > g:not([stroke]) > text')].map((t) => t.textContent),
       halos: doc.querySelectorAll('g[font-style="italic"] > g[stroke] > text').length,
       subscripts: doc.querySelectorAll('g[font-style="italic"] > g:not([stroke]) > text tspan[font-size]').length,
@@ -48,8 +49,10 @@ test('SVG: parses, holds the segments of the view, labels as <text> with subscri
   }, svg);
   assert.equal(counts.error, '');
   assert.equal(counts.root, 'http://www.w3.org/2000/svg');
-  // 3 rulings, 2 common perpendiculars, 1 parallel through f_{i,i+1}; 3 legend lines
-  assert.equal(counts.lines, 6 + 3);
+  // 3 rulings, 2 common perpendiculars, 1 parallel through f_{i,i+1} (no surface hides them);
+  // 3 legend lines
+  assert.equal(counts.lines, 6);
+  assert.equal(counts.legend, 3);
   assert.deepEqual(
     counts.texts.sort(),
     ['Ri', 'Ri+1', 'Ri−1', 'fi+1,i', 'fi,i+1', 'fi,i−1', 'mi', 'Ni,i+1, hi,i+1', 'φi,i+1'].sort(),
@@ -75,13 +78,17 @@ test('TikZ of a known view equals the checked-in file; labels come out as math',
   const tikz = await page.evaluate(() => document.getElementById('figure').exportTikZ({ bw: true }));
   if (process.env.UPDATE_EXPECTED || !existsSync(EXPECTED)) writeFileSync(EXPECTED, tikz);
   assert.equal(tikz, readFileSync(EXPECTED, 'utf8'));
-  assert.match(tikz, /^% Curve subdivision \(Figs\. 7–8\)/);
+  assert.match(tikz, /^% Curve subdivision \(Figs\. 7-8\): exported by ruledlab/);
+  assert.match(tikz, /^[\x20-\x7e\n]*$/, 'pure ASCII');
   assert.match(tikz, /\\begin\{tikzpicture\}[\s\S]*\\draw\[[\s\S]*\\end\{tikzpicture\}/);
   await page.evaluate(() => (document.getElementById('figure').scene = 'notation'));
   await page.waitForFunction(() => document.getElementById('figure').view.scene.id === 'notation');
   await page.waitForTimeout(300);
   const notation = await page.evaluate(() => document.getElementById('figure').exportTikZ());
   assert.match(notation, /\{\$R_\{i\+1\}\$\}/);
+  // the legend: symbols as math, one entry hanging from the one above
+  assert.match(notation, /\{common perpendiculars \$N_\{i,i\+1\}\$ and footpoints\}/);
+  assert.match(notation, /\(rl-legend-1\) at \(rl-legend-0\.south west\)/);
   assert.match(notation, /\{\$\\varphi_\{i,i\+1\}\$\}/);
   assert.deepEqual(problems, []);
   await page.close();
@@ -106,6 +113,7 @@ test('PNG at 2× and 4× of the view, and the page’s export buttons download f
     ['svg', /convergence\.svg$/],
     ['svgBw', /convergence-bw\.svg$/],
     ['tikz', /convergence\.tikz$/],
+    ['tikzBw', /convergence-bw\.tikz$/],
     ['png2', /convergence-2x\.png$/],
     ['plot', /convergence-plot\.svg$/],
   ]) {

@@ -1,33 +1,41 @@
-// A figure of the current view for lecture notes: the same layers the WebGL view draws,
-// projected with the same camera into flat primitives (segments, dots, shaded triangles),
-// ordered back to front, with the labels where the view placed them and the legend. The SVG,
-// TikZ and PNG exports all start from here, so a figure on paper is the figure on screen.
+// A figure of the current view for lecture notes, drawn like the paper's line drawings: the
+// same layers the WebGL view draws, projected with the same camera. Surfaces become flat, light
+// facets (back to front among themselves); every line, polygon, curve and dot is split by the
+// core where a surface hides it (`hiddenLines`, src/visibility.rs), so visible pieces are drawn
+// over all surfaces and hidden ones thin and dashed, or left out. The SVG and TikZ exports both
+// start from here, so a figure on paper is the figure on screen.
+import { hiddenLines } from '../../pkg/ruledlab.js';
 import { STYLES, rgb, PALETTE } from '../theme.js';
-import { polylineSegments } from '../gl/lines.js';
+import { FIGURE_TRIANGLES, HATCH_SPACING } from '../limits.js';
 
 /**
- * @typedef {object} Primitive
- * @property {'segment' | 'dot' | 'triangle'} kind
- * @property {number[]} points     x, y pairs in CSS pixels (y down)
+ * @typedef {object} Facet   a triangle of a surface, in CSS pixels (y down)
+ * @property {number[]} points     x, y of its three corners
  * @property {number} depth        larger is farther
+ * @property {string} style        key of STYLES (an area)
+ * @property {boolean} back        its back side faces the viewer
+ * @property {number} light        the view's light on it, 0 (grazing) … 1 (facing)
+ *
+ * @typedef {object} Run   a piece of a line of one visibility
+ * @property {number[]} points     x, y pairs in CSS pixels; one pair for a dot
+ * @property {boolean} visible
+ *
+ * @typedef {object} LineSet   the lines (or dots) of one layer, split where surfaces hide them
+ * @property {'segments' | 'polyline' | 'points'} kind
  * @property {string} style        key of STYLES
- * @property {number[]} [fill]     triangle: shaded colour (0–1) or grey level
- * @property {boolean} [back]      triangle: its back side faces the viewer
- */
-
-/**
+ * @property {Run[]} runs
+ *
  * @typedef {object} Figure
  * @property {number} width
  * @property {number} height
- * @property {Primitive[]} primitives   back to front
+ * @property {Facet[]} facets       back to front
+ * @property {LineSet[]} lines      in the scene's order (later ones on top)
  * @property {Array<{x: number, y: number, text: string}>} labels   top-left corner of each label box
  * @property {Array<{style: string, label: string}>} legend
  * @property {string} title
  */
 
-/** Lines and dots are drawn just in front of the surfaces they lie on, as in the view. */
-const LINE_BIAS = 2e-4;
-const DOT_BIAS = 4e-4;
+const IDENTITY = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
 
 /**
  * The figure of a stage's current view.
@@ -41,72 +49,46 @@ export function figureOf(stage) {
   const height = Math.max(1, viewer.canvas.clientHeight);
   const m = viewer.camera.viewProj(width / height);
   const eye = viewer.camera.eye;
-  /** @type {Primitive[]} */
-  const primitives = [];
+  /** @type {Facet[]} */
+  const facets = [];
+  /** @type {Array<{positions: Float32Array, indices: Uint32Array, transform?: Float32Array | Float64Array}>} */
+  const meshes = [];
+  /** @type {Array<{kind: 'segments' | 'polyline' | 'points', positions: Float32Array, closed?: boolean, transform?: Float32Array | Float64Array}>} */
+  const lines = [];
+  /** @type {string[]} */
+  const lineStyles = [];
   for (const layer of built?.layers ?? []) {
     const style = STYLES[layer.style];
-    const model = layer.transform ?? [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
-    /** World and screen position of vertex k of `data` (3 floats each). */
-    const vertex = (/** @type {ArrayLike<number>} */ data, /** @type {number} */ k) => {
-      const [x, y, z] = [data[3 * k], data[3 * k + 1], data[3 * k + 2]];
-      const wx = model[0] * x + model[4] * y + model[8] * z + model[12];
-      const wy = model[1] * x + model[5] * y + model[9] * z + model[13];
-      const wz = model[2] * x + model[6] * y + model[10] * z + model[14];
-      const cw = m[3] * wx + m[7] * wy + m[11] * wz + m[15];
-      const cx = m[0] * wx + m[4] * wy + m[8] * wz + m[12];
-      const cy = m[1] * wx + m[5] * wy + m[9] * wz + m[13];
-      const cz = m[2] * wx + m[6] * wy + m[10] * wz + m[14];
-      return {
-        world: [wx, wy, wz],
-        x: ((cx / cw + 1) / 2) * width,
-        y: ((1 - cy / cw) / 2) * height,
-        z: cz / cw,
-        w: cw,
-      };
-    };
-    const ok = (/** @type {{x: number, y: number, w: number}} */ v) =>
-      v.w > 0 && Number.isFinite(v.x) && Number.isFinite(v.y);
-    if (layer.kind === 'segments' || layer.kind === 'polyline') {
-      const segments = layer.kind === 'polyline' ? polylineSegments(layer.positions, layer.closed) : layer.positions;
-      for (let k = 0; 6 * k + 5 < segments.length; k++) {
-        const [a, b] = [vertex(segments, 2 * k), vertex(segments, 2 * k + 1)];
-        if (!ok(a) || !ok(b)) continue;
-        primitives.push({
-          kind: 'segment',
-          points: [a.x, a.y, b.x, b.y],
-          depth: (a.z + b.z) / 2 - LINE_BIAS,
-          style: layer.style,
-        });
-      }
-    } else if (layer.kind === 'points') {
-      for (let k = 0; 3 * k + 2 < layer.positions.length; k++) {
-        const p = vertex(layer.positions, k);
-        if (ok(p)) primitives.push({ kind: 'dot', points: [p.x, p.y], depth: p.z - DOT_BIAS, style: layer.style });
-      }
-    } else if (layer.kind === 'mesh' && layer.indices && style.kind === 'area') {
-      const idx = layer.indices;
-      for (let t = 0; t + 2 < idx.length; t += 3) {
-        const [a, b, c] = [
-          vertex(layer.positions, idx[t]),
-          vertex(layer.positions, idx[t + 1]),
-          vertex(layer.positions, idx[t + 2]),
-        ];
-        if (!ok(a) || !ok(b) || !ok(c)) continue;
-        // front faces wind counter-clockwise in normalised device coordinates (y up), as in WebGL
-        const area = (b.x - a.x) * (a.y - c.y) - (a.y - b.y) * (c.x - a.x);
-        const back = area < 0;
-        primitives.push({
-          kind: 'triangle',
-          points: [a.x, a.y, b.x, b.y, c.x, c.y],
-          depth: (a.z + b.z + c.z) / 3,
-          style: layer.style,
-          back,
-          fill: [shade(a.world, b.world, c.world, eye)],
-        });
-      }
+    if (layer.kind === 'mesh') {
+      // a mesh of more triangles than a figure needs is drawn by its lighter stand-in
+      const mesh = (layer.indices?.length ?? 0) / 3 > FIGURE_TRIANGLES && layer.moving ? layer.moving : layer;
+      if (!mesh.indices || style.kind !== 'area') continue;
+      facets.push(...facetsOf(mesh, layer.style, m, width, height, eye));
+      if (style.occludes !== false)
+        meshes.push({ positions: mesh.positions, indices: mesh.indices, transform: mesh.transform });
+    } else {
+      lines.push({
+        kind: layer.kind,
+        positions: layer.positions,
+        ...(layer.closed ? { closed: true } : {}),
+        ...(layer.transform ? { transform: layer.transform } : {}),
+      });
+      lineStyles.push(layer.style);
     }
   }
-  primitives.sort((p, q) => q.depth - p.depth);
+  facets.sort((p, q) => q.depth - p.depth);
+  // the core splits every line where a surface hides it
+  const split = hiddenLines({ viewProj: m, width, height, meshes, lines });
+  /** @type {LineSet[]} */
+  const sets = split.lines.map((set, k) => {
+    /** @type {Run[]} */
+    const runs = [];
+    for (let r = 0; r < set.visible.length; r++) {
+      const [start, count] = [set.runs[2 * r], set.runs[2 * r + 1]];
+      runs.push({ points: Array.from(set.points.subarray(2 * start, 2 * (start + count))), visible: !!set.visible[r] });
+    }
+    return { kind: lines[k].kind, style: lineStyles[k], runs };
+  });
   const labels = [...viewer.labelLayer.children]
     .map((el, k) => ({ el: /** @type {HTMLElement} */ (el), text: built?.labels?.[k]?.text ?? '' }))
     .filter(({ el }) => !el.hidden)
@@ -117,11 +99,69 @@ export function figureOf(stage) {
   const legend = (stage.scene?.legend ?? [])
     .filter((e) => !e.when || e.when(stage.params))
     .map((e) => ({ style: e.style, label: stage.i18n.t(e.label) }));
-  return { width, height, primitives, labels, legend, title: stage.scene ? stage.i18n.t(stage.scene.title) : '' };
+  return {
+    width,
+    height,
+    facets,
+    lines: sets,
+    labels,
+    legend,
+    title: stage.scene ? stage.i18n.t(stage.scene.title) : '',
+  };
 }
 
-/** The light the view's mesh shader uses, as one factor (0.45 … 1) for a flat triangle. */
-function shade(
+/**
+ * The facets of a mesh layer in pixels, for the camera `m` (a drawing of what the view shows:
+ * positions projected, each facet lit as the view's shader lights it).
+ * @param {{positions: Float32Array, indices?: Uint32Array, transform?: Float32Array | Float64Array}} layer
+ * @param {string} style
+ * @param {ArrayLike<number>} m
+ * @param {number} width
+ * @param {number} height
+ * @param {number[]} eye
+ * @returns {Facet[]}
+ */
+function facetsOf(layer, style, m, width, height, eye) {
+  const model = layer.transform ?? IDENTITY;
+  const data = layer.positions;
+  const vertex = (/** @type {number} */ k) => {
+    const [x, y, z] = [data[3 * k], data[3 * k + 1], data[3 * k + 2]];
+    const wx = model[0] * x + model[4] * y + model[8] * z + model[12];
+    const wy = model[1] * x + model[5] * y + model[9] * z + model[13];
+    const wz = model[2] * x + model[6] * y + model[10] * z + model[14];
+    const cw = m[3] * wx + m[7] * wy + m[11] * wz + m[15];
+    const cx = m[0] * wx + m[4] * wy + m[8] * wz + m[12];
+    const cy = m[1] * wx + m[5] * wy + m[9] * wz + m[13];
+    const cz = m[2] * wx + m[6] * wy + m[10] * wz + m[14];
+    return {
+      world: [wx, wy, wz],
+      x: ((cx / cw + 1) / 2) * width,
+      y: ((1 - cy / cw) / 2) * height,
+      z: cz / cw,
+      ok: cw > 0 && cz >= -cw && Number.isFinite(cx / cw) && Number.isFinite(cy / cw),
+    };
+  };
+  const idx = /** @type {Uint32Array} */ (layer.indices);
+  /** @type {Facet[]} */
+  const out = [];
+  for (let t = 0; t + 2 < idx.length; t += 3) {
+    const [a, b, c] = [vertex(idx[t]), vertex(idx[t + 1]), vertex(idx[t + 2])];
+    if (!a.ok || !b.ok || !c.ok) continue;
+    // front faces wind counter-clockwise in normalised device coordinates (y up), as in WebGL
+    const area = (b.x - a.x) * (a.y - c.y) - (a.y - b.y) * (c.x - a.x);
+    out.push({
+      points: [a.x, a.y, b.x, b.y, c.x, c.y],
+      depth: (a.z + b.z + c.z) / 3,
+      style,
+      back: area < 0,
+      light: light(a.world, b.world, c.world, eye),
+    });
+  }
+  return out;
+}
+
+/** The view's light on a flat triangle, 0 (grazing) … 1 (facing the light). */
+function light(
   /** @type {number[]} */ a,
   /** @type {number[]} */ b,
   /** @type {number[]} */ c,
@@ -139,14 +179,36 @@ function shade(
   n = norm(n);
   view = norm(view);
   if (n[0] * view[0] + n[1] * view[1] + n[2] * view[2] < 0) n = n.map((x) => -x);
-  const light = norm([view[0] + 0.3, view[1] + 0.2, view[2] + 0.6]);
-  return 0.45 + 0.55 * Math.max(0, n[0] * light[0] + n[1] * light[1] + n[2] * light[2]);
+  const lamp = norm([view[0] + 0.3, view[1] + 0.2, view[2] + 0.6]);
+  return Math.max(0, n[0] * lamp[0] + n[1] * lamp[1] + n[2] * lamp[2]);
 }
 
 /**
- * How a primitive of `style` is painted: colour or grey, width, dash, opacity.
+ * @typedef {object} LineLook
+ * @property {number[]} color    0–1
+ * @property {number} width      CSS pixels
+ * @property {number[] | null} dash
+ * @property {number} opacity
+ * @property {boolean} halo
+ *
+ * @typedef {object} PointLook
+ * @property {number[]} color
+ * @property {number} radius
+ * @property {boolean} hollow
+ * @property {number} opacity
+ *
+ * @typedef {object} AreaLook
+ * @property {number[]} color    front side
+ * @property {number[]} back     back side
+ * @property {number} opacity
+ * @property {import('../theme.js').Hatch | null} hatch
+ */
+
+/**
+ * How things of `style` are painted: colour or grey, width, dash, opacity.
  * @param {string} key
  * @param {boolean} bw
+ * @returns {LineLook | PointLook | AreaLook}
  */
 export function paint(key, bw) {
   const style = STYLES[key];
@@ -158,8 +220,15 @@ export function paint(key, bw) {
           width: Math.max(style.bw.width * 1.6, 0.5),
           dash: style.bw.dash ?? null,
           opacity: 1,
+          halo: !!style.halo,
         }
-      : { color: rgb(style.color), width: style.width, dash: style.dash ?? null, opacity: style.alpha ?? 1 };
+      : {
+          color: rgb(style.color),
+          width: style.width,
+          dash: style.dash ?? null,
+          opacity: style.alpha ?? 1,
+          halo: !!style.halo,
+        };
   }
   if (style.kind === 'point') {
     return bw
@@ -167,9 +236,79 @@ export function paint(key, bw) {
       : { color: rgb(style.color), radius: style.size / 2, hollow: false, opacity: 1 };
   }
   return bw
-    ? { color: grey(style.bw.gray), back: grey(style.bw.back), opacity: 1 }
-    : { color: rgb(style.color), back: rgb(style.back), opacity: style.alpha };
+    ? { color: grey(style.bw.gray), back: grey(style.bw.back), opacity: 1, hatch: style.bw.hatch ?? null }
+    : { color: rgb(style.color), back: rgb(style.back), opacity: style.alpha, hatch: null };
 }
+
+/** How hidden pieces of lines and hidden dots are drawn: thin, finely dashed, grey. */
+export function hiddenLook(/** @type {LineLook} */ look, /** @type {boolean} */ bw) {
+  return {
+    color: bw ? [0.55, 0.55, 0.55] : look.color,
+    width: Math.max(0.4, Math.min(0.8, look.width * 0.4)),
+    dash: [2, 2],
+    opacity: bw ? 1 : 0.55,
+  };
+}
+
+/**
+ * The colour of a facet: light flat shading (never dark, so lines stay legible over it), the
+ * back side in its own colour.
+ * @param {AreaLook} look
+ * @param {Facet} facet
+ * @param {boolean} bw
+ */
+export function facetColour(look, facet, bw) {
+  const base = facet.back ? look.back : look.color;
+  // black and white: the style's grey, up to 0.1 darker where the light grazes; colour: the
+  // style's colour from 75 % to 100 % of its brightness
+  return bw
+    ? base.map((c) => c - 0.1 * (1 - facet.light))
+    : base.map((c) => c * (0.75 + 0.25 * facet.light) + 0.05 * (1 - facet.light));
+}
+
+/**
+ * The hatch lines of a facet (x1, y1, x2, y2 each, pixels), on a lattice fixed to the page so
+ * that neighbouring facets continue each other's lines.
+ * @param {number[]} points   the facet's corners
+ * @param {import('../theme.js').Hatch} hatch
+ * @returns {number[][]}
+ */
+export function hatchLines(points, hatch) {
+  const angles = { ne: [Math.PI / 4], nw: [-Math.PI / 4], h: [0], cross: [Math.PI / 4, -Math.PI / 4] }[hatch];
+  const out = [];
+  for (const angle of angles) {
+    // lines n·x = k·spacing, n the normal of the direction (cos, −sin) (y down: "ne" rises)
+    const n = [Math.sin(angle), Math.cos(angle)];
+    const d = [0, 2, 4].map((k) => n[0] * points[k] + n[1] * points[k + 1]);
+    for (let k = Math.ceil(Math.min(...d) / HATCH_SPACING); k * HATCH_SPACING <= Math.max(...d); k++) {
+      const level = k * HATCH_SPACING;
+      const cut = [];
+      for (let e = 0; e < 3; e++) {
+        const [i, j] = [e, (e + 1) % 3];
+        if ((d[i] - level) * (d[j] - level) > 0 || d[i] === d[j]) continue;
+        const t = (level - d[i]) / (d[j] - d[i]);
+        cut.push([
+          points[2 * i] + t * (points[2 * j] - points[2 * i]),
+          points[2 * i + 1] + t * (points[2 * j + 1] - points[2 * i + 1]),
+        ]);
+      }
+      // the two cuts farthest apart (a line through a corner cuts two edges there)
+      let best = [0, 0];
+      for (let i = 0; i < cut.length; i++)
+        for (let j = i + 1; j < cut.length; j++)
+          if (
+            Math.hypot(cut[j][0] - cut[i][0], cut[j][1] - cut[i][1]) >
+            Math.hypot(cut[best[1]][0] - cut[best[0]][0], cut[best[1]][1] - cut[best[0]][1])
+          )
+            best = [i, j];
+      if (cut.length >= 2) out.push([...cut[best[0]], ...cut[best[1]]]);
+    }
+  }
+  return out.filter((l) => Math.hypot(l[2] - l[0], l[3] - l[1]) > 0.05);
+}
+
+/** The grey level of hatch lines, and their width in pixels. */
+export const HATCH = { grey: 0.45, width: 0.35 };
 
 /** A colour (0–1) as "#rrggbb". */
 export function hex(/** @type {number[]} */ c) {

@@ -59,6 +59,7 @@ export default {
   'export.svg': 'Abbildung (SVG)',
   'export.svgBw': 'Abbildung (SVG, schwarz-weiß)',
   'export.tikz': 'Abbildung (TikZ)',
+  'export.tikzBw': 'Abbildung (TikZ, schwarz-weiß)',
   'export.png2': 'PNG 2×',
   'export.png4': 'PNG 4×',
   'export.obj': 'OBJ',

@@ -58,6 +58,7 @@ export default {
   'export.svg': 'Figure (SVG)',
   'export.svgBw': 'Figure (SVG, black and white)',
   'export.tikz': 'Figure (TikZ)',
+  'export.tikzBw': 'Figure (TikZ, black and white)',
   'export.png2': 'PNG 2×',
   'export.png4': 'PNG 4×',
   'export.obj': 'OBJ',

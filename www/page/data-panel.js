@@ -28,6 +28,7 @@ const EXPORTS = /** @type {const} */ ([
   ['svg', 'export.svg'],
   ['svgBw', 'export.svgBw'],
   ['tikz', 'export.tikz'],
+  ['tikzBw', 'export.tikzBw'],
   ['png', 'export.png'],
   ['png2', 'export.png2'],
   ['png4', 'export.png4'],
@@ -154,8 +155,10 @@ export function dataPanel(stage, { i18n, onData }) {
       } else if (kind === 'svg' || kind === 'svgBw') {
         const bw = kind === 'svgBw';
         download(`${name}${bw ? '-bw' : ''}.svg`, exportSvg(stage, { bw }), 'image/svg+xml');
-      } else if (kind === 'tikz') download(`${name}.tikz`, exportTikz(stage), 'text/x-tex');
-      else if (kind === 'plot' && built.figure) {
+      } else if (kind === 'tikz' || kind === 'tikzBw') {
+        const bw = kind === 'tikzBw';
+        download(`${name}${bw ? '-bw' : ''}.tikz`, exportTikz(stage, { bw }), 'text/x-tex');
+      } else if (kind === 'plot' && built.figure) {
         download(`${name}-plot.svg`, new XMLSerializer().serializeToString(built.figure()), 'image/svg+xml');
       } else if (data && kind in DATA_FILES) {
         const [suffix, format, type] = DATA_FILES[/** @type {keyof typeof DATA_FILES} */ (kind)];

@@ -1,0 +1,986 @@
+//! Hidden lines: which parts of a figure's lines the triangles of its surfaces hide from the
+//! camera, computed rather than sorted — Appel's question ("A. Appel, The notion of quantitative
+//! invisibility and the machine rendering of solids", 1967) answered segment by segment against
+//! every triangle, for vector figures (SVG, TikZ) that print like the paper's line drawings.
+//!
+//! The camera is a 4 × 4 view-projection matrix M (column-major, as WebGL takes it; perspective
+//! or orthographic, clip z from −w at the near plane to w at the far one) and a viewport of
+//! `width` × `height` pixels, y down: x ↦ ((c_x/c_w + 1)/2 · width, (1 − c_y/c_w)/2 · height) for
+//! c = M·(x, 1). The eye is the homogeneous point M⁻¹·(0, 0, 1, 0) (a direction for an
+//! orthographic camera). A point P of a line is **hidden** by a triangle T when
+//!
+//! 1. its image lies in T's image (edges included), and
+//! 2. P lies behind T's plane as seen from the eye by more than T's tolerance τ_T:
+//!    σ_T (n̂_T·P − d_T) < −τ_T, with n̂_T·x = d_T the plane and σ_T = ±1 the side of the eye.
+//!
+//! With τ_T > 0 a line lying *on* a surface — a ruling of a strip (an edge of its own
+//! triangles), the striction polygon or an exact curve of the smooth surface, near its
+//! triangulation — is not hidden by that surface, while a surface farther than τ_T in front of
+//! a line hides it. τ_T is the larger of a global τ ([`HIDDEN_LINE_TOLERANCE`] times the
+//! diagonal of the triangles' bounding box unless given) and [`HIDDEN_LINE_BEND`] times how far
+//! the neighbours of T (triangles sharing an edge) bend away from T's plane: a coarse strip of
+//! twisted quads carries lines that lie far off its triangles, a flat square none.
+//!
+//! Along a segment A → B (clipped to the near plane) both conditions are intervals of the
+//! screen parameter s of its image a + s(b − a): the edge functions of T's image are linear in
+//! s, and the plane distance is linear in the segment's parameter t, a monotone projective
+//! function of s, t = s·w_A / ((1 − s)·w_B + s·w_A) (w the clip w). So each triangle hides one
+//! closed interval of s, found exactly; the visible pieces are the complement of the union.
+//! An edge shared by two triangles is evaluated from the same ordered pair of corners in both,
+//! so a line crossing a mesh leaves no gap between the intervals of neighbouring triangles.
+//!
+//! The triangles' images are binned in a screen grid of about one triangle per cell; a segment
+//! visits only the cells its image crosses, and a triangle lying wholly behind the segment is
+//! skipped. Finally, along each polyline (or segment) the runs of one visibility are joined,
+//! and a run shorter than `min_piece` pixels between runs of the other kind — a sliver where a
+//! line grazes an edge, never a feature of a printed figure — is given to its neighbours
+//! ([`HIDDEN_LINE_MIN_PIECE`] pixels unless given).
+
+use crate::error::{Error, Result};
+use crate::tolerance::{
+    HIDDEN_LINE_BEND, HIDDEN_LINE_GRID_ENTRIES, HIDDEN_LINE_MIN_PIECE, HIDDEN_LINE_TOLERANCE, MAX_HIDDEN_LINE_GRID,
+    MAX_HIDDEN_LINE_ITEMS,
+};
+use glam::{DMat4, DVec2, DVec3, DVec4};
+
+/// A camera: the view-projection matrix and the viewport in pixels.
+#[derive(Debug, Clone, Copy)]
+pub struct View {
+    matrix: DMat4,
+    width: f64,
+    height: f64,
+    /// M⁻¹·(0, 0, 1, 0): the eye, homogeneous (w < 0 for a perspective camera, 0 for an
+    /// orthographic one, whose xyz then points away from the viewer).
+    eye: DVec4,
+}
+
+/// The image of a point: pixel coordinates (y down), its clip w, and the clip z + w (≥ 0 in
+/// front of the near plane).
+#[derive(Debug, Clone, Copy)]
+struct Image {
+    screen: DVec2,
+    w: f64,
+}
+
+impl View {
+    /// A view from a column-major 4 × 4 view-projection matrix (16 numbers) and a viewport of
+    /// `width` × `height` pixels. Refused: a matrix that is not finite or not invertible, a
+    /// viewport that is not positive and finite.
+    pub fn new(matrix: &[f64], width: f64, height: f64) -> Result<Self> {
+        if matrix.len() != 16 {
+            return Err(Error::InvalidParameter {
+                name: "viewProj",
+                message: format!("needs 16 numbers (a column-major 4 × 4 matrix), got {}", matrix.len()).into(),
+            });
+        }
+        if let Some((k, &x)) = matrix.iter().enumerate().find(|(_, x)| !x.is_finite()) {
+            return Err(Error::InvalidParameter {
+                name: "viewProj",
+                message: format!("entry {k} is not finite ({x})").into(),
+            });
+        }
+        for (name, x) in [("width", width), ("height", height)] {
+            if !(x.is_finite() && x > 0.0 && x <= 1e6) {
+                return Err(Error::InvalidParameter {
+                    name: if name == "width" { "width" } else { "height" },
+                    message: format!("{name} must be a number of pixels in (0, 1e6], got {x}").into(),
+                });
+            }
+        }
+        let m = DMat4::from_cols_slice(matrix);
+        let det = m.determinant();
+        if !(det.is_finite() && det != 0.0) {
+            return Err(Error::InvalidParameter {
+                name: "viewProj",
+                message: "the matrix is not invertible".to_string().into(),
+            });
+        }
+        let eye = m.inverse() * DVec4::Z;
+        if !eye.is_finite() {
+            return Err(Error::InvalidParameter {
+                name: "viewProj",
+                message: "the matrix is not invertible".to_string().into(),
+            });
+        }
+        Ok(View { matrix: m, width, height, eye })
+    }
+
+    /// The page's camera (`www/camera.js`): perspective with vertical field of view `fov_y`
+    /// (radians) from `eye` towards `target`, z up (y up when looking along z), the near and far
+    /// planes at 1/100 and 100 times the distance, on a `width` × `height` viewport.
+    pub fn looking(eye: DVec3, target: DVec3, fov_y: f64, width: f64, height: f64) -> Result<Self> {
+        let distance = eye.distance(target);
+        if !(distance > 0.0 && distance.is_finite() && fov_y > 0.0 && fov_y < std::f64::consts::PI) {
+            return Err(Error::InvalidParameter {
+                name: "eye",
+                message: format!("need an eye apart from the target and a field of view in (0, π), got {fov_y}").into(),
+            });
+        }
+        let (near, far) = (distance / 100.0, distance * 100.0);
+        let f = 1.0 / (fov_y / 2.0).tan();
+        let aspect = width / height;
+        let projection = DMat4::from_cols_array(&[
+            f / aspect,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            f,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            (far + near) / (near - far),
+            -1.0,
+            0.0,
+            0.0,
+            2.0 * far * near / (near - far),
+            0.0,
+        ]);
+        let z = (eye - target) / distance;
+        let up = if z.cross(DVec3::Z).length() < 1e-9 { DVec3::Y } else { DVec3::Z };
+        let x = up.cross(z).normalize();
+        let y = z.cross(x);
+        let look = DMat4::from_cols(
+            DVec4::new(x.x, y.x, z.x, 0.0),
+            DVec4::new(x.y, y.y, z.y, 0.0),
+            DVec4::new(x.z, y.z, z.z, 0.0),
+            DVec4::new(-x.dot(eye), -y.dot(eye), -z.dot(eye), 1.0),
+        );
+        View::new(&(projection * look).to_cols_array(), width, height)
+    }
+
+    fn clip(&self, p: DVec3) -> DVec4 {
+        self.matrix * p.extend(1.0)
+    }
+
+    fn image_of_clip(&self, c: DVec4) -> Image {
+        Image {
+            screen: DVec2::new((c.x / c.w + 1.0) / 2.0 * self.width, (1.0 - c.y / c.w) / 2.0 * self.height),
+            w: c.w,
+        }
+    }
+
+    /// The pixel position of a point in front of the near plane (None behind it).
+    pub fn project(&self, p: DVec3) -> Option<DVec2> {
+        let c = self.clip(p);
+        (c.z + c.w >= 0.0 && c.w > 0.0).then(|| self.image_of_clip(c).screen)
+    }
+
+    /// σ·(n·x − d) for the eye x: positive when the eye is on the side n points to.
+    fn eye_side(&self, n: DVec3, d: f64) -> f64 {
+        -(n.dot(self.eye.truncate()) - self.eye.w * d)
+    }
+}
+
+/// How the points of a set of lines are joined.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineKind {
+    /// Two points per segment.
+    Segments,
+    /// Consecutive points joined; a non-finite point breaks the polyline; `closed` joins the
+    /// last point to the first.
+    Polyline {
+        /// Whether the last point is joined to the first.
+        closed: bool,
+    },
+    /// Separate points (dots).
+    Points,
+}
+
+/// A run of one visibility along a line: its image as pixel positions (one for a dot).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Run {
+    /// Pixel positions (x right, y down) of the run's polyline: at least two, or one for a dot.
+    pub points: Vec<DVec2>,
+    /// Whether this run is seen (or hidden by a surface).
+    pub visible: bool,
+}
+
+/// Tolerances of [`hidden_lines`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HiddenLineOptions {
+    /// Lines within this distance of a triangle's plane are not hidden by it, as a fraction of
+    /// the diagonal of the triangles' bounding box.
+    pub tolerance: f64,
+    /// Runs shorter than this (pixels) between runs of the other kind are given to their
+    /// neighbours.
+    pub min_piece: f64,
+}
+
+impl Default for HiddenLineOptions {
+    fn default() -> Self {
+        HiddenLineOptions { tolerance: HIDDEN_LINE_TOLERANCE, min_piece: HIDDEN_LINE_MIN_PIECE }
+    }
+}
+
+/// A triangle ready for the tests: its image's edge functions, its plane, its depth range.
+#[derive(Debug, Clone, Copy)]
+struct Occluder {
+    /// The three corners' images (in the orientation of the triangle's image: counter-clockwise
+    /// in pixel coordinates, y down, once made so).
+    corners: [DVec2; 3],
+    /// Unit normal and offset of the plane, oriented so that the eye is on the positive side.
+    normal: DVec3,
+    offset: f64,
+    /// Smallest clip w of the corners (a segment nearer than this everywhere is in front).
+    near_w: f64,
+    /// The triangle's own tolerance: the global τ, or how far the triangles across its edges
+    /// bend away from its plane, whichever is larger (see [`bend`]).
+    tau: f64,
+    min: DVec2,
+    max: DVec2,
+}
+
+impl Occluder {
+    /// e(x) ≥ 0 inside, for edge k (from corner k to corner k + 1), evaluated from the corners
+    /// in a fixed order (the lexicographically smaller first) so that a neighbouring triangle
+    /// sharing the edge gets the same number with the opposite sign.
+    fn edge(&self, k: usize, x: DVec2) -> f64 {
+        let (p, q) = (self.corners[k], self.corners[(k + 1) % 3]);
+        if (p.x, p.y) <= (q.x, q.y) {
+            (q - p).perp_dot(x - p)
+        } else {
+            -(p - q).perp_dot(x - q)
+        }
+    }
+}
+
+/// The triangles and their screen grid.
+struct Scene {
+    occluders: Vec<Occluder>,
+    origin: DVec2,
+    cell: DVec2,
+    cols: usize,
+    rows: usize,
+    /// CSR layout: the triangles of cell c are `items[starts[c]..starts[c + 1]]`.
+    starts: Vec<u32>,
+    items: Vec<u32>,
+}
+
+impl Scene {
+    fn new(view: &View, meshes: &[(&[DVec3], &[u32])], tau: f64) -> Self {
+        let mut occluders = Vec::new();
+        for (positions, indices) in meshes {
+            let bends = bend(positions, indices);
+            for (t, bent) in indices.chunks_exact(3).zip(bends) {
+                let Some(corners) = t.iter().map(|&i| positions.get(i as usize).copied()).collect::<Option<Vec<_>>>()
+                else {
+                    continue;
+                };
+                if let Some(o) = occluder(view, [corners[0], corners[1], corners[2]], tau.max(HIDDEN_LINE_BEND * bent))
+                {
+                    occluders.push(o);
+                }
+            }
+        }
+        // the grid: the viewport with a margin of one viewport around it (images beyond are
+        // clamped into the border cells, queries likewise), about one triangle per cell — coarser
+        // while the triangles would fill more than HIDDEN_LINE_GRID_ENTRIES cells each on
+        // average (huge triangles, seen from close by)
+        let n = occluders.len().max(1) as f64;
+        let (w, h) = (view.width, view.height);
+        let aspect = (w / h).clamp(0.1, 10.0);
+        let mut side = (n.sqrt().ceil() as usize).clamp(1, MAX_HIDDEN_LINE_GRID);
+        let mut scene = loop {
+            let cols = ((side as f64 * aspect.sqrt()).round() as usize).clamp(1, MAX_HIDDEN_LINE_GRID);
+            let rows = ((side as f64 / aspect.sqrt()).round() as usize).clamp(1, MAX_HIDDEN_LINE_GRID);
+            let origin = DVec2::new(-w, -h);
+            let cell = DVec2::new(3.0 * w / cols as f64, 3.0 * h / rows as f64);
+            let scene =
+                Scene { occluders: Vec::new(), origin, cell, cols, rows, starts: Vec::new(), items: Vec::new() };
+            let entries: usize = occluders
+                .iter()
+                .map(|o| {
+                    let ((c0, r0), (c1, r1)) = (scene.cell_of(o.min), scene.cell_of(o.max));
+                    (c1 - c0 + 1) * (r1 - r0 + 1)
+                })
+                .sum();
+            if side == 1 || entries <= HIDDEN_LINE_GRID_ENTRIES * occluders.len() + 4096 {
+                break Scene { occluders, starts: vec![0; cols * rows + 1], ..scene };
+            }
+            side /= 2;
+        };
+        let (cols, rows) = (scene.cols, scene.rows);
+        let mut counts = vec![0u32; cols * rows];
+        for o in &scene.occluders {
+            let (c0, r0) = scene.cell_of(o.min);
+            let (c1, r1) = scene.cell_of(o.max);
+            for r in r0..=r1 {
+                for c in c0..=c1 {
+                    counts[r * cols + c] += 1;
+                }
+            }
+        }
+        for c in 0..cols * rows {
+            scene.starts[c + 1] = scene.starts[c] + counts[c];
+        }
+        let mut fill: Vec<u32> = scene.starts[..cols * rows].to_vec();
+        scene.items = vec![0; scene.starts[cols * rows] as usize];
+        for (k, o) in scene.occluders.iter().enumerate() {
+            let (c0, r0) = scene.cell_of(o.min);
+            let (c1, r1) = scene.cell_of(o.max);
+            for r in r0..=r1 {
+                for c in c0..=c1 {
+                    let slot = &mut fill[r * cols + c];
+                    scene.items[*slot as usize] = k as u32;
+                    *slot += 1;
+                }
+            }
+        }
+        scene
+    }
+
+    fn cell_of(&self, p: DVec2) -> (usize, usize) {
+        let f = (p - self.origin) / self.cell;
+        let clamp = |x: f64, n: usize| if x.is_nan() { 0 } else { (x.floor().max(0.0) as usize).min(n - 1) };
+        (clamp(f.x, self.cols), clamp(f.y, self.rows))
+    }
+
+    /// Calls `visit` with every triangle binned in a cell the image segment a → b crosses
+    /// (each cell once; a triangle in several cells may come more than once).
+    fn cells_along(&self, a: DVec2, b: DVec2, mut visit: impl FnMut(u32)) {
+        let (ca, _) = self.cell_of(a);
+        let (cb, _) = self.cell_of(b);
+        let (c0, c1) = (ca.min(cb), ca.max(cb));
+        for c in c0..=c1 {
+            // the part of the segment over column c (the border columns reach to infinity)
+            let left = if c == 0 { f64::NEG_INFINITY } else { self.origin.x + c as f64 * self.cell.x };
+            let right = if c + 1 == self.cols { f64::INFINITY } else { self.origin.x + (c + 1) as f64 * self.cell.x };
+            let (y0, y1) = if (b.x - a.x).abs() <= f64::EPSILON * (a.x.abs() + b.x.abs()).max(1.0) {
+                (a.y.min(b.y), a.y.max(b.y))
+            } else {
+                let at = |x: f64| {
+                    let s = ((x - a.x) / (b.x - a.x)).clamp(0.0, 1.0);
+                    a.y + s * (b.y - a.y)
+                };
+                let (ya, yb) = (at(left.max(a.x.min(b.x))), at(right.min(a.x.max(b.x))));
+                (ya.min(yb), ya.max(yb))
+            };
+            let (_, r0) = self.cell_of(DVec2::new(a.x, y0));
+            let (_, r1) = self.cell_of(DVec2::new(a.x, y1));
+            for r in r0..=r1 {
+                let cell = r * self.cols + c;
+                for &k in &self.items[self.starts[cell] as usize..self.starts[cell + 1] as usize] {
+                    visit(k);
+                }
+            }
+        }
+    }
+}
+
+/// A triangle as an occluder; None when a corner is behind the eye or not finite, or its image
+/// has no area (seen edge-on, it hides nothing).
+fn occluder(view: &View, [p0, p1, p2]: [DVec3; 3], tau: f64) -> Option<Occluder> {
+    if !(p0.is_finite() && p1.is_finite() && p2.is_finite()) {
+        return None;
+    }
+    let clips = [view.clip(p0), view.clip(p1), view.clip(p2)];
+    if clips.iter().any(|c| c.w <= 0.0 || !c.is_finite()) {
+        return None;
+    }
+    let mut corners = clips.map(|c| view.image_of_clip(c).screen);
+    let area = (corners[1] - corners[0]).perp_dot(corners[2] - corners[0]);
+    let scale = (corners[1] - corners[0]).length_squared().max((corners[2] - corners[0]).length_squared());
+    if area.is_nan() || area.abs() <= 1e-12 * scale {
+        return None;
+    }
+    if area < 0.0 {
+        corners.swap(1, 2);
+    }
+    let n = (p1 - p0).cross(p2 - p0).normalize_or_zero();
+    if n == DVec3::ZERO {
+        return None;
+    }
+    let d = n.dot(p0);
+    let side = view.eye_side(n, d);
+    let (normal, offset) = if side >= 0.0 { (n, d) } else { (-n, -d) };
+    Some(Occluder {
+        corners,
+        normal,
+        offset,
+        near_w: clips.iter().map(|c| c.w).fold(f64::INFINITY, f64::min),
+        tau,
+        min: corners[0].min(corners[1]).min(corners[2]),
+        max: corners[0].max(corners[1]).max(corners[2]),
+    })
+}
+
+/// How far each triangle's neighbours bend away from its plane: the largest distance from the
+/// plane of a corner opposite one of its edges in a triangle sharing that edge (by indices).
+/// A line drawn on the smooth surface the mesh samples — an exact curve, a polygon between
+/// rulings — lies off the triangles by a fraction of this, which is therefore part of the
+/// triangle's own tolerance: a twisted quad of a ruled strip bends by its twist, a flat mesh by
+/// nothing.
+fn bend(positions: &[DVec3], indices: &[u32]) -> Vec<f64> {
+    let triangles = indices.len() / 3;
+    let corner = |t: usize, k: usize| positions.get(indices[3 * t + k] as usize).copied();
+    // every edge (i < j) filed under i, with its triangle and the opposite corner: the triangles
+    // sharing an edge are in the same bucket (a counting sort, no comparisons)
+    // (a triangle naming no point is no one's neighbour)
+    let vertices = positions.len();
+    let valid = |t: usize| (0..3).all(|k| (indices[3 * t + k] as usize) < vertices);
+    let mut starts = vec![0usize; vertices + 1];
+    for t in (0..triangles).filter(|&t| valid(t)) {
+        for k in 0..3 {
+            let (i, j) = (indices[3 * t + k], indices[3 * t + (k + 1) % 3]);
+            starts[i.min(j) as usize + 1] += 1;
+        }
+    }
+    for v in 0..vertices {
+        starts[v + 1] += starts[v];
+    }
+    let mut fill = starts.clone();
+    let mut edges = vec![(0u32, 0usize, 0u32); starts[vertices]];
+    for t in (0..triangles).filter(|&t| valid(t)) {
+        for k in 0..3 {
+            let (i, j) = (indices[3 * t + k], indices[3 * t + (k + 1) % 3]);
+            edges[fill[i.min(j) as usize]] = (i.max(j), t, indices[3 * t + (k + 2) % 3]);
+            fill[i.min(j) as usize] += 1;
+        }
+    }
+    let mut out = vec![0.0f64; triangles];
+    for v in 0..vertices {
+        let bucket = &edges[starts[v]..starts[v + 1]];
+        for &(j, t, _) in bucket {
+            let (Some(a), Some(b), Some(c)) = (corner(t, 0), corner(t, 1), corner(t, 2)) else { continue };
+            let n = (b - a).cross(c - a).normalize_or_zero();
+            for &(_, _, opposite) in bucket.iter().filter(|e| e.0 == j && e.1 != t) {
+                if let Some(d) = positions.get(opposite as usize).map(|q| n.dot(*q - a).abs()) {
+                    if d.is_finite() {
+                        out[t] = out[t].max(d);
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The interval of [0, 1] where a + s(b − a) ≥ 0 (closed), None when empty.
+fn nonnegative(a: f64, b: f64) -> Option<(f64, f64)> {
+    match (a >= 0.0, b >= 0.0) {
+        (true, true) => Some((0.0, 1.0)),
+        (false, false) => None,
+        (true, false) => Some((0.0, a / (a - b))),
+        (false, true) => Some((a / (a - b), 1.0)),
+    }
+}
+
+fn meet(x: Option<(f64, f64)>, y: Option<(f64, f64)>) -> Option<(f64, f64)> {
+    let ((a0, a1), (b0, b1)) = (x?, y?);
+    let (lo, hi) = (a0.max(b0), a1.min(b1));
+    (lo <= hi).then_some((lo, hi))
+}
+
+/// A segment ready for the tests: its world endpoints (clipped to the near plane), their images.
+struct Clipped {
+    a: DVec3,
+    b: DVec3,
+    ia: Image,
+    ib: Image,
+}
+
+/// The segment p → q clipped to the near plane (z + w ≥ 0) and to w > 0; None when nothing is left.
+fn clip_segment(view: &View, p: DVec3, q: DVec3) -> Option<Clipped> {
+    if !(p.is_finite() && q.is_finite()) {
+        return None;
+    }
+    let (cp, cq) = (view.clip(p), view.clip(q));
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    // near plane, and a small positive w (a guard for degenerate matrices)
+    for (fp, fq) in [(cp.z + cp.w, cq.z + cq.w), (cp.w, cq.w)] {
+        match nonnegative(fp, fq) {
+            None => return None,
+            Some((lo, hi)) => {
+                t0 = t0.max(lo);
+                t1 = t1.min(hi);
+            }
+        }
+    }
+    if t0 > t1 {
+        return None;
+    }
+    // the ends as they are where nothing is clipped, so that consecutive segments of a polyline
+    // meet in exactly the same image point
+    let (a, ca) = if t0 == 0.0 { (p, cp) } else { (p.lerp(q, t0), cp.lerp(cq, t0)) };
+    let (b, cb) = if t1 == 1.0 { (q, cq) } else { (p.lerp(q, t1), cp.lerp(cq, t1)) };
+    if !(ca.w > 0.0 && cb.w > 0.0) {
+        return None;
+    }
+    Some(Clipped { a, b, ia: view.image_of_clip(ca), ib: view.image_of_clip(cb) })
+}
+
+/// Whether the world point p (image `image`) is hidden by occluder o.
+fn hides_point(o: &Occluder, p: DVec3, image: DVec2) -> bool {
+    (0..3).all(|k| o.edge(k, image) >= 0.0) && o.normal.dot(p) - o.offset < -o.tau
+}
+
+/// The hidden interval (in the image parameter s) of a clipped segment behind occluder o.
+fn hidden_interval(o: &Occluder, seg: &Clipped) -> Option<(f64, f64)> {
+    let (a, b) = (seg.ia.screen, seg.ib.screen);
+    let mut inside = Some((0.0, 1.0));
+    for k in 0..3 {
+        inside = meet(inside, nonnegative(o.edge(k, a), o.edge(k, b)));
+    }
+    let (s0, s1) = inside?;
+    // behind by more than τ: −(n·P(t) − d) − τ > 0, linear in t
+    let g = |p: DVec3| -(o.normal.dot(p) - o.offset) - o.tau;
+    let (ga, gb) = (g(seg.a), g(seg.b));
+    let behind_t = match (ga > 0.0, gb > 0.0) {
+        (true, true) => (0.0, 1.0),
+        (false, false) => return None,
+        (true, false) => (0.0, ga / (ga - gb)),
+        (false, true) => (ga / (ga - gb), 1.0),
+    };
+    let (wa, wb) = (seg.ia.w, seg.ib.w);
+    let to_s = |t: f64| t * wb / ((1.0 - t) * wa + t * wb);
+    meet(Some((s0, s1)), Some((to_s(behind_t.0), to_s(behind_t.1))))
+}
+
+/// The hidden parts of one clipped segment, as sorted disjoint intervals of s.
+fn hidden_parts(scene: &Scene, seg: &Clipped, stamp: &mut [u32], id: u32) -> Vec<(f64, f64)> {
+    let far_w = seg.ia.w.max(seg.ib.w);
+    let mut parts = Vec::new();
+    scene.cells_along(seg.ia.screen, seg.ib.screen, |k| {
+        if stamp[k as usize] == id {
+            return;
+        }
+        stamp[k as usize] = id;
+        let o = &scene.occluders[k as usize];
+        if o.near_w > far_w {
+            return; // wholly behind the segment
+        }
+        if let Some(part) = hidden_interval(o, seg) {
+            parts.push(part);
+        }
+    });
+    // by their starts (an insertion sort: a segment crosses few triangles)
+    for k in 1..parts.len() {
+        let mut j = k;
+        while j > 0 && parts[j - 1].0 > parts[j].0 {
+            parts.swap(j - 1, j);
+            j -= 1;
+        }
+    }
+    let mut merged: Vec<(f64, f64)> = Vec::with_capacity(parts.len());
+    for (lo, hi) in parts {
+        match merged.last_mut() {
+            // intervals that touch (to rounding) are one: no sliver between neighbouring triangles
+            Some(last) if lo <= last.1 + 1e-12 => last.1 = last.1.max(hi),
+            _ => merged.push((lo, hi)),
+        }
+    }
+    merged
+}
+
+/// A chain of pieces along one polyline or segment, before runs are formed.
+struct Chain {
+    /// (image point, visible) per piece: the pieces are the polylines between consecutive
+    /// breakpoints; `visible[k]` is the visibility of the piece from point k to k + 1.
+    points: Vec<DVec2>,
+    visible: Vec<bool>,
+}
+
+impl Chain {
+    fn new() -> Self {
+        Chain { points: Vec::new(), visible: Vec::new() }
+    }
+
+    /// Appends a segment's pieces (`parts`: its hidden intervals of s); the segment starts where
+    /// the chain ends, or the chain is empty.
+    fn push_segment(&mut self, a: DVec2, b: DVec2, parts: &[(f64, f64)]) {
+        let at = |s: f64| a + (b - a) * s;
+        if self.points.is_empty() {
+            self.points.push(a);
+        }
+        let mut s = 0.0;
+        for &(lo, hi) in parts {
+            if lo > s {
+                self.points.push(at(lo));
+                self.visible.push(true);
+            }
+            self.points.push(at(hi));
+            self.visible.push(false);
+            s = hi;
+        }
+        if s < 1.0 {
+            self.points.push(b);
+            self.visible.push(true);
+        }
+    }
+
+    /// The runs of one visibility, slivers shorter than `min` pixels given to their neighbours.
+    fn runs(self, min: f64) -> Vec<Run> {
+        // pieces → runs (start index, end index, visible, length)
+        let mut runs: Vec<(usize, usize, bool, f64)> = Vec::new();
+        for (k, &v) in self.visible.iter().enumerate() {
+            let len = self.points[k].distance(self.points[k + 1]);
+            match runs.last_mut() {
+                Some(r) if r.2 == v => {
+                    r.1 = k + 1;
+                    r.3 += len;
+                }
+                _ => runs.push((k, k + 1, v, len)),
+            }
+        }
+        // give the shortest sliver to its neighbours until none is left (or one run remains)
+        while runs.len() > 1 {
+            let Some((k, _)) =
+                runs.iter().enumerate().filter(|(_, r)| r.3 < min).min_by(|x, y| x.1 .3.total_cmp(&y.1 .3))
+            else {
+                break;
+            };
+            let v = !runs[k].2;
+            runs[k].2 = v;
+            // join with neighbours of the same visibility
+            if k + 1 < runs.len() && runs[k + 1].2 == v {
+                let next = runs.remove(k + 1);
+                runs[k].1 = next.1;
+                runs[k].3 += next.3;
+            }
+            if k > 0 && runs[k - 1].2 == v {
+                let this = runs.remove(k);
+                runs[k - 1].1 = this.1;
+                runs[k - 1].3 += this.3;
+            }
+        }
+        runs.into_iter()
+            .map(|(start, end, visible, _)| Run { points: drop_repeats(&self.points[start..=end]), visible })
+            .collect()
+    }
+}
+
+/// Consecutive equal points removed (a piece boundary at a vertex repeats it); at least two kept.
+fn drop_repeats(points: &[DVec2]) -> Vec<DVec2> {
+    let mut out: Vec<DVec2> = Vec::with_capacity(points.len());
+    for &p in points {
+        if out.last() != Some(&p) {
+            out.push(p);
+        }
+    }
+    if out.len() == 1 {
+        out.push(out[0]);
+    }
+    out
+}
+
+/// The visible and hidden runs of every set of lines, as images in pixels: for each entry of
+/// `lines` (its kind and world points), the runs of its polylines or segments in order, a dot per
+/// point (`Points`). Occluders are the triangles of `meshes` (world points and three indices per
+/// triangle; an index naming no point, a corner behind the eye or an image without area leaves
+/// the triangle out). Lines and parts of lines behind the near plane are left out.
+pub fn hidden_lines(
+    view: &View,
+    meshes: &[(&[DVec3], &[u32])],
+    lines: &[(LineKind, &[DVec3])],
+    options: HiddenLineOptions,
+) -> Result<Vec<Vec<Run>>> {
+    for (name, x, ok) in [
+        ("tolerance", options.tolerance, options.tolerance >= 0.0 && options.tolerance <= 1.0),
+        ("minPiece", options.min_piece, options.min_piece >= 0.0 && options.min_piece <= 1e3),
+    ] {
+        if !(x.is_finite() && ok) {
+            return Err(Error::InvalidParameter {
+                name: if name == "tolerance" { "tolerance" } else { "minPiece" },
+                message: format!(
+                    "{name} must be a number in {}, got {x}",
+                    if name == "tolerance" { "[0, 1]" } else { "[0, 1000]" }
+                )
+                .into(),
+            });
+        }
+    }
+    let triangles: usize = meshes.iter().map(|(_, idx)| idx.len() / 3).sum();
+    let points: usize = lines.iter().map(|(_, p)| p.len()).sum();
+    for (what, got) in [("triangles", triangles), ("line points", points)] {
+        if got > MAX_HIDDEN_LINE_ITEMS {
+            return Err(Error::TooMany { what, got, max: MAX_HIDDEN_LINE_ITEMS });
+        }
+    }
+    // τ from the triangles' bounding box
+    let (lo, hi) = meshes
+        .iter()
+        .flat_map(|(p, idx)| idx.iter().filter_map(|&i| p.get(i as usize)))
+        .filter(|p| p.is_finite())
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| (lo.min(p), hi.max(p)));
+    let tau = if lo.x <= hi.x { options.tolerance * (hi - lo).length() } else { 0.0 };
+    let scene = Scene::new(view, meshes, tau);
+    let mut stamp = vec![u32::MAX; scene.occluders.len()];
+    let mut next_id = 0u32;
+    let mut id = || {
+        next_id = next_id.wrapping_add(1);
+        if next_id == u32::MAX {
+            next_id = 0;
+        }
+        next_id
+    };
+    let mut out = Vec::with_capacity(lines.len());
+    for &(kind, points) in lines {
+        let mut runs = Vec::new();
+        match kind {
+            LineKind::Points => {
+                for &p in points {
+                    let Some(image) = view.project(p) else { continue };
+                    let mut hidden = false;
+                    scene.cells_along(image, image, |k| {
+                        hidden = hidden || hides_point(&scene.occluders[k as usize], p, image);
+                    });
+                    runs.push(Run { points: vec![image], visible: !hidden });
+                }
+            }
+            LineKind::Segments => {
+                for pair in points.chunks_exact(2) {
+                    if let Some(seg) = clip_segment(view, pair[0], pair[1]) {
+                        let parts = hidden_parts(&scene, &seg, &mut stamp, id());
+                        let mut chain = Chain::new();
+                        chain.push_segment(seg.ia.screen, seg.ib.screen, &parts);
+                        runs.extend(chain.runs(options.min_piece));
+                    }
+                }
+            }
+            LineKind::Polyline { closed } => {
+                // pieces of consecutive finite points; `closed` joins the last to the first when
+                // no point is missing
+                let all_finite = points.iter().all(|p| p.is_finite());
+                let mut edges: Vec<(DVec3, DVec3)> = points.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>();
+                if closed && all_finite && points.len() > 2 {
+                    edges.push((points[points.len() - 1], points[0]));
+                }
+                let mut chain = Chain::new();
+                for (p, q) in edges {
+                    let seg = clip_segment(view, p, q);
+                    let joins = seg.as_ref().is_some_and(|s| chain.points.last() == Some(&s.ia.screen));
+                    if !joins && !chain.visible.is_empty() {
+                        runs.extend(std::mem::replace(&mut chain, Chain::new()).runs(options.min_piece));
+                    }
+                    if let Some(seg) = seg {
+                        let parts = hidden_parts(&scene, &seg, &mut stamp, id());
+                        chain.push_segment(seg.ia.screen, seg.ib.screen, &parts);
+                    }
+                }
+                if !chain.visible.is_empty() {
+                    runs.extend(chain.runs(options.min_piece));
+                }
+            }
+        }
+        out.push(runs);
+    }
+    Ok(out)
+}
+
+/// Points transformed by a 4 × 4 model matrix (column-major), or as they are.
+pub fn transformed(points: &[DVec3], model: Option<&DMat4>) -> Vec<DVec3> {
+    match model {
+        None => points.to_vec(),
+        Some(m) => points.iter().map(|&p| m.transform_point3(p)).collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The page's camera: perspective (35°) looking from `eye` at `target`, z up unless looking
+    /// along z, on a 640 × 420 viewport.
+    fn camera(eye: DVec3, target: DVec3) -> View {
+        View::looking(eye, target, 35f64.to_radians(), 640.0, 420.0).unwrap()
+    }
+
+    /// The square [−1, 1]² in the plane z = 0, as two triangles.
+    fn square() -> (Vec<DVec3>, Vec<u32>) {
+        let p = vec![
+            DVec3::new(-1.0, -1.0, 0.0),
+            DVec3::new(1.0, -1.0, 0.0),
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(-1.0, 1.0, 0.0),
+        ];
+        (p, vec![0, 1, 2, 0, 2, 3])
+    }
+
+    fn exact() -> HiddenLineOptions {
+        HiddenLineOptions { min_piece: 0.0, ..Default::default() }
+    }
+
+    #[test]
+    fn a_line_behind_a_square_is_hidden_exactly_over_its_shadow() {
+        // seen from (0, 0, 10), the square's shadow on the plane z = −1 is [−1.1, 1.1]²
+        let view = camera(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO);
+        let (p, idx) = square();
+        let line = [DVec3::new(-5.0, 0.3, -1.0), DVec3::new(5.0, 0.3, -1.0)];
+        let runs = hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Segments, &line)], exact()).unwrap();
+        let runs = &runs[0];
+        assert_eq!(runs.iter().map(|r| r.visible).collect::<Vec<_>>(), [true, false, true]);
+        let shadow = |x: f64| view.project(DVec3::new(x, 0.3, -1.0)).unwrap();
+        crate::assert_near!(runs[1].points[0], shadow(-1.1), 1e-9);
+        crate::assert_near!(runs[1].points[1], shadow(1.1), 1e-9);
+        crate::assert_near!(runs[0].points[0], shadow(-5.0), 1e-9);
+        crate::assert_near!(runs[2].points[1], shadow(5.0), 1e-9);
+        // in front of the square, or beside its shadow: seen whole
+        let front = [DVec3::new(-5.0, 0.3, 1.0), DVec3::new(5.0, 0.3, 1.0)];
+        let beside = [DVec3::new(-5.0, 1.2, -1.0), DVec3::new(5.0, 1.2, -1.0)];
+        let runs =
+            hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Segments, &front), (LineKind::Segments, &beside)], exact())
+                .unwrap();
+        assert!(runs.iter().all(|r| r.len() == 1 && r[0].visible));
+        // a line piercing the square: hidden from the crossing on, exactly
+        let through = [DVec3::new(0.5, 0.0, 1.0), DVec3::new(0.5, 0.0, -1.0)];
+        let slanted = [DVec3::new(-0.5, 0.0, 1.0), DVec3::new(0.5, 0.0, -1.0)];
+        let runs = hidden_lines(
+            &view,
+            &[(&p, &idx)],
+            &[(LineKind::Segments, &through), (LineKind::Segments, &slanted)],
+            exact(),
+        )
+        .unwrap();
+        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [true, false]);
+        assert_eq!(runs[1].iter().map(|r| r.visible).collect::<Vec<_>>(), [true, false]);
+        let tau = HIDDEN_LINE_TOLERANCE * 8f64.sqrt();
+        // hidden from where it is τ below the plane: z = −τ, x = τ/2 on the slanted line
+        crate::assert_near!(runs[1][1].points[0], view.project(DVec3::new(tau / 2.0, 0.0, -tau)).unwrap(), 1e-9);
+    }
+
+    #[test]
+    fn the_same_in_an_orthographic_view() {
+        // x/3, y/2 onto [−1, 1]², looking down −z from z = 10 (near 0.1, far 100)
+        let m = DMat4::from_cols_array(&[
+            1.0 / 3.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.5,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            -2.0 / 99.9,
+            0.0,
+            0.0,
+            0.0,
+            (20.0 - 100.1) / 99.9,
+            1.0,
+        ]);
+        let view = View::new(&m.to_cols_array(), 600.0, 400.0).unwrap();
+        let (p, idx) = square();
+        let line = [DVec3::new(-2.0, 0.0, -1.0), DVec3::new(2.0, 0.0, -1.0)];
+        let runs = hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Segments, &line)], exact()).unwrap();
+        assert_eq!(runs[0].len(), 3);
+        crate::assert_near!(runs[0][1].points[0], DVec2::new(200.0, 200.0), 1e-9);
+        crate::assert_near!(runs[0][1].points[1], DVec2::new(400.0, 200.0), 1e-9);
+    }
+
+    #[test]
+    fn lines_on_a_surface_stay_visible_and_a_grid_leaves_no_sliver() {
+        let view = camera(DVec3::new(3.0, -4.0, 6.0), DVec3::ZERO);
+        // a 10 × 10 grid of squares on [−1, 1]², slightly bent (z = 0.05 x²)
+        let n = 11;
+        let p: Vec<DVec3> = (0..n * n)
+            .map(|k| {
+                let (x, y) = (-1.0 + 0.2 * (k % n) as f64, -1.0 + 0.2 * (k / n) as f64);
+                DVec3::new(x, y, 0.05 * x * x)
+            })
+            .collect();
+        let idx = crate::grid_indices(n, n);
+        // its edges, a diagonal through its vertices, a curve on the smooth surface between them
+        let edge: Vec<DVec3> = (0..n).map(|i| p[5 * n + i]).collect();
+        let diagonal: Vec<DVec3> = (0..n).map(|i| p[i * n + i]).collect();
+        let curve: Vec<DVec3> = (0..=200)
+            .map(|k| {
+                let x = -1.0 + 0.01 * k as f64;
+                DVec3::new(x, 0.37, 0.05 * x * x)
+            })
+            .collect();
+        let lines = [
+            (LineKind::Polyline { closed: false }, &edge[..]),
+            (LineKind::Polyline { closed: false }, &diagonal[..]),
+            (LineKind::Polyline { closed: false }, &curve[..]),
+        ];
+        let runs = hidden_lines(&view, &[(&p, &idx)], &lines, exact()).unwrap();
+        for r in &runs {
+            assert_eq!(r.len(), 1);
+            assert!(r[0].visible);
+        }
+        // the same lines pushed below the grid by 0.05 (> τ = 0.014): hidden whole, in one run each
+        // (the diagonal passes exactly through vertices of the grid's image: no gap between triangles)
+        // (their inner parts: an end below the grid's border peeks out beside it in perspective)
+        let below = |v: &[DVec3]| {
+            let k = v.len() / 10;
+            v[k..v.len() - k].iter().map(|q| *q - DVec3::new(0.0, 0.0, 0.05)).collect::<Vec<_>>()
+        };
+        let (e, d, c) = (below(&edge), below(&diagonal), below(&curve));
+        let lines = [
+            (LineKind::Polyline { closed: false }, &e[..]),
+            (LineKind::Polyline { closed: false }, &d[..]),
+            (LineKind::Polyline { closed: false }, &c[..]),
+        ];
+        let runs = hidden_lines(&view, &[(&p, &idx)], &lines, exact()).unwrap();
+        for r in &runs {
+            assert!(r.iter().all(|run| !run.visible), "{r:?}");
+        }
+        assert_eq!(runs[1].len(), 1, "one run along the diagonal: {:?}", runs[1]);
+    }
+
+    #[test]
+    fn dots_slivers_and_the_near_plane() {
+        let view = camera(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO);
+        let (p, idx) = square();
+        let dots = [DVec3::new(0.0, 0.0, -1.0), DVec3::new(3.0, 0.0, -1.0), DVec3::new(0.0, 0.0, 1.0)];
+        let runs = hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Points, &dots)], exact()).unwrap();
+        assert_eq!(
+            runs[0].iter().map(|r| (r.points.len(), r.visible)).collect::<Vec<_>>(),
+            [(1, false), (1, true), (1, true)]
+        );
+        // a line whose hidden part is a fraction of a pixel: the sliver goes to its neighbours
+        let tiny = [
+            DVec3::new(1.0995, -3.0, -1.0),
+            DVec3::new(1.0995, -1.1, -1.0),
+            DVec3::new(1.2, -1.0, -1.0),
+            DVec3::new(2.0, -1.0, -1.0),
+        ];
+        let sliver =
+            hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Polyline { closed: false }, &tiny)], exact()).unwrap();
+        assert!(sliver[0].len() > 1, "the exact answer has a hidden sliver");
+        let clean = hidden_lines(
+            &view,
+            &[(&p, &idx)],
+            &[(LineKind::Polyline { closed: false }, &tiny)],
+            HiddenLineOptions::default(),
+        )
+        .unwrap();
+        assert_eq!(clean[0].len(), 1);
+        assert!(clean[0][0].visible);
+        let drawn = &clean[0][0].points;
+        assert_eq!(
+            (drawn[0], drawn[drawn.len() - 1]),
+            (view.project(tiny[0]).unwrap(), view.project(tiny[3]).unwrap())
+        );
+        // behind the eye: cut at the near plane (0.1 in front of the eye), the rest drawn
+        let long = [DVec3::new(0.5, 0.5, 20.0), DVec3::new(0.5, 0.5, 5.0)];
+        let runs = hidden_lines(&view, &[], &[(LineKind::Segments, &long)], exact()).unwrap();
+        assert_eq!(runs[0].len(), 1);
+        // a NaN point breaks a polyline in two; bad options and views are refused
+        let broken = [DVec3::ZERO, DVec3::X, DVec3::NAN, DVec3::Y, DVec3::ONE];
+        let runs = hidden_lines(&view, &[], &[(LineKind::Polyline { closed: true }, &broken)], exact()).unwrap();
+        assert_eq!(runs[0].len(), 2);
+        // 20 000 triangles each filling the view: binned coarsely, answered quickly
+        let huge: Vec<DVec3> = (0..20_000)
+            .flat_map(|k| {
+                let z = -0.5 - k as f64 * 1e-4;
+                [DVec3::new(-50.0, -50.0, z), DVec3::new(50.0, -50.0, z), DVec3::new(0.0, 50.0, z)]
+            })
+            .collect();
+        let idx: Vec<u32> = (0..60_000).collect();
+        let runs = hidden_lines(&view, &[(&huge, &idx)], &[(LineKind::Points, &dots)], exact()).unwrap();
+        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, false, true]);
+        // a triangle naming no point hides nothing (and breaks nothing)
+        let wild = [0, 1, u32::MAX, 0, 2, 3];
+        let runs = hidden_lines(&view, &[(&p, &wild)], &[(LineKind::Points, &dots)], exact()).unwrap();
+        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true, true]);
+        let bad = HiddenLineOptions { tolerance: f64::NAN, ..Default::default() };
+        assert_eq!(hidden_lines(&view, &[], &[], bad).unwrap_err().code(), "invalid-argument");
+        assert!(View::new(&[0.0; 16], 10.0, 10.0).is_err());
+        assert!(View::new(&[1.0; 15], 10.0, 10.0).is_err());
+        assert!(View::new(&DMat4::IDENTITY.to_cols_array(), 0.0, 10.0).is_err());
+    }
+}
