@@ -18,6 +18,16 @@ import { pageChrome, plainTitle } from './page/chrome.js';
 import { dataPanel, parseStored, STORED } from './page/data-panel.js';
 import { pageAddress } from './page/address.js';
 import { keepInput, keptInput } from './page/stored-input.js';
+import { readParams, withChoices as withChoicesOf } from './scene.js';
+import { builtInTask } from './task/builtin.js';
+import { taskFromLink, taskLink } from './task/format.js';
+import { fitTask } from './task/check.js';
+import { markSolved } from './task/progress.js';
+import { postToParent } from './task/message.js';
+import { taskErrorText } from './task/words.js';
+import { encodeInput } from './edit/input.js';
+import { Author } from './task/author.js';
+import { say } from './task/format.js';
 
 /**
  * The page (see the module documentation).
@@ -47,6 +57,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       data: stage.data,
       input: stage.input,
       paper: stage.paper?.id ?? null,
+      task: stage.task ? taskLink(stage.task, (id) => builtInTask(id) !== null) : null,
     };
   const address = pageAddress({ oneFile, state: shown });
   const stage = new Stage(chrome.main, {
@@ -64,6 +75,25 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     onBuilt: (built) => data.update(built),
     onEditAsData: (imported) =>
       go(/** @type {import('./scene.js').Scene} */ (SCENES.find((s) => s.id === 'data')), {}, { data: imported }),
+    onTask: (type, report) => {
+      // solved exercises are marked in the menu (where the browser keeps anything)
+      if (type === 'solved') {
+        markSolved(report.task);
+        localize();
+      }
+      const input = stage.input;
+      postToParent(type, report, {
+        scene: stage.scene?.id ?? '',
+        params: { ...stage.params },
+        input: input ? encodeInput(input) : null,
+      });
+    },
+    onLeaveTask: () => {
+      stage.openTask(null).then(() => {
+        address.save('push');
+        localize();
+      });
+    },
   });
   doc.body.append(share);
 
@@ -92,7 +122,11 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   const localize = () => {
     doc.documentElement.lang = lang;
     doc.title = `ruledlab · ${plainTitle(i18n.t(stage.scene?.title ?? 'app.subtitle'))}`;
-    chrome.localize(i18n, lang, { scene: stage.scene?.id ?? null, paper: stage.paper?.id ?? null });
+    chrome.localize(i18n, lang, {
+      scene: stage.scene?.id ?? null,
+      paper: stage.paper?.id ?? null,
+      task: stage.task?.id ?? null,
+    });
     data.localize();
   };
 
@@ -103,6 +137,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     doc.body.classList.toggle('embed', state.embed);
     stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
     stage.setEditable(!state.embed || !!state.edit);
+    // an exercise: its scene and start, with the reader's progress from the link
+    if (state.task && (await openTask(state.task))) return localize();
     const text = stored(STORED);
     // an edit: the link's, or one too large for it that this tab kept
     const input = state.input ?? keptInput(state.scene.id);
@@ -116,6 +152,39 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       inputNote: input && !state.input ? keepInput(state.scene.id, input) : '',
     });
     localize();
+  };
+
+  /**
+   * Opens the exercise of a link value (a built-in id, or "j." and its JSON) with the reader's
+   * progress from the address; false (and a note) when it cannot be read or does not fit.
+   * @param {string} value
+   * @param {boolean} [fresh]   from its start, whatever the address holds (the menu, "Try it")
+   */
+  const openTask = async (value, fresh = false) => {
+    try {
+      const task = taskFromLink(value, builtInTask);
+      const scene = fitTask(task, SCENES, (params, input) => {
+        const s = /** @type {import('./scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
+        return s.create(withChoicesOf(s, { ...task.params, ...params }), {
+          t: i18n.t,
+          format: i18n.format,
+          lang,
+          ...(input ? { input } : {}),
+        });
+      });
+      const q = new URLSearchParams(fresh ? '' : address.current().replace(/^#/, ''));
+      const read = readParams(scene, q).params;
+      const params = Object.fromEntries(Object.entries(read).filter(([k]) => q.has(k)));
+      await stage.openTask(
+        task,
+        scene,
+        fresh ? {} : { params, input: state.input, camera: state.camera, notes: state.notes },
+      );
+      return true;
+    } catch (e) {
+      state.notes.push({ key: 'task', note: 'note.badTask', vars: { reason: taskErrorText(e, i18n) } });
+      return false;
+    }
   };
 
   /** @param {string} code @param {boolean} [write] */
@@ -139,6 +208,14 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     if (scene) go(scene, preset ? preset.params : stage.params, { paper: preset ?? null });
   });
   chrome.langPicker.addEventListener('change', () => setLanguage(chrome.langPicker.value));
+  chrome.taskPicker.addEventListener('change', () => {
+    const id = chrome.taskPicker.value;
+    if (!id) return stage.task && stage.openTask(null).then(() => address.save('push'));
+    openTask(id, true).then((opened) => {
+      if (opened) address.save('push');
+      localize();
+    });
+  });
   window.addEventListener('popstate', () => openAddress());
   window.addEventListener('hashchange', () => openAddress());
 
@@ -149,6 +226,27 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     state: () => ({ .../** @type {NonNullable<ReturnType<typeof shown>>} */ (shown()), lang }),
     oneFile,
     embedScript,
+    author: () => author.show(),
+  });
+  // "Make an exercise" from the view on screen (Share → Make an exercise)
+  const author = new Author(stage.authorBox, {
+    i18n: () => i18n,
+    stage: () => stage,
+    snippets: (task) =>
+      sharing.taskSnippets(
+        taskLink(task, (id) => builtInTask(id) !== null),
+        say(task.title, lang),
+      ),
+    tryIt: (task) => {
+      author.close();
+      openTask(
+        taskLink(task, (id) => builtInTask(id) !== null),
+        true,
+      ).then((opened) => {
+        if (opened) address.save('push');
+        localize();
+      });
+    },
   });
   chrome.shareButton.addEventListener('click', () => sharing.open());
 

@@ -31,8 +31,8 @@ export const SAMPLES = 50;
 const MAX_SAMPLES = 1000;
 
 /**
- * Words in the languages of the page (English required).
- * @typedef {{en: string, de?: string}} Words
+ * Words in the languages of the page (at least one; a reader of the other sees the one there is).
+ * @typedef {{en?: string, de?: string}} Words
  *
  * An answer field: a number, one formula in u (a function such as δ(u)), or three (a curve
  * such as s(u)).
@@ -147,9 +147,10 @@ function words(/** @type {unknown} */ x, /** @type {string} */ key, max = MAX_TE
   const o = /** @type {Record<string, unknown>} */ (x);
   for (const k of Object.keys(o))
     if (k !== 'en' && k !== 'de') throw new TaskError('task.error.unknownKey', { key: k, where: key });
-  if (!('en' in o)) throw new TaskError('task.error.missing', { key: `${key}.en` });
+  if (!('en' in o) && !('de' in o)) throw new TaskError('task.error.missing', { key: `${key}.en` });
   /** @type {Words} */
-  const out = { en: text(o.en, `${key}.en`, max) };
+  const out = {};
+  if ('en' in o) out.en = text(o.en, `${key}.en`, max);
   if ('de' in o) out.de = text(o.de, `${key}.de`, max);
   return out;
 }
@@ -355,9 +356,9 @@ export function writeTask(/** @type {Task} */ task) {
   });
 }
 
-/** Words in `lang`, else English. */
+/** Words in `lang`, else in the language there is. */
 export function say(/** @type {Words} */ w, /** @type {string} */ lang) {
-  return (lang === 'de' ? w.de : undefined) ?? w.en;
+  return (lang === 'de' ? (w.de ?? w.en) : (w.en ?? w.de)) ?? '';
 }
 
 // —— in a link: a built-in exercise by its id, another as "j." and its JSON in base64url ——
