@@ -27,7 +27,7 @@ import { postToParent } from './task/message.js';
 import { taskErrorText } from './task/words.js';
 import { encodeInput } from './edit/input.js';
 import { Author } from './task/author.js';
-import { say } from './task/format.js';
+import { readTask, say } from './task/format.js';
 
 /**
  * The page (see the module documentation).
@@ -109,6 +109,17 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     });
   const data = dataPanel(stage, {
     i18n: () => i18n,
+    // an exercise file, pasted or uploaded: opened as the exercise (its reason when it cannot be)
+    onTask: async (json) => {
+      try {
+        await openTaskOf(readTask(json), true);
+        address.save('push');
+        localize();
+        return null;
+      } catch (e) {
+        return taskErrorText(e, i18n);
+      }
+    },
     // tool poses go to the milling scene, segments to "Your data"
     onData: (imported) =>
       go(
@@ -162,29 +173,37 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
    */
   const openTask = async (value, fresh = false) => {
     try {
-      const task = taskFromLink(value, builtInTask);
-      const scene = fitTask(task, SCENES, (params, input) => {
-        const s = /** @type {import('./scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
-        return s.create(withChoicesOf(s, { ...task.params, ...params }), {
-          t: i18n.t,
-          format: i18n.format,
-          lang,
-          ...(input ? { input } : {}),
-        });
-      });
-      const q = new URLSearchParams(fresh ? '' : address.current().replace(/^#/, ''));
-      const read = readParams(scene, q).params;
-      const params = Object.fromEntries(Object.entries(read).filter(([k]) => q.has(k)));
-      await stage.openTask(
-        task,
-        scene,
-        fresh ? {} : { params, input: state.input, camera: state.camera, notes: state.notes },
-      );
+      await openTaskOf(taskFromLink(value, builtInTask), fresh);
       return true;
     } catch (e) {
       state.notes.push({ key: 'task', note: 'note.badTask', vars: { reason: taskErrorText(e, i18n) } });
       return false;
     }
+  };
+
+  /**
+   * Opens an exercise (throws a TaskError where it does not fit its scene).
+   * @param {import('./task/format.js').Task} task
+   * @param {boolean} fresh
+   */
+  const openTaskOf = async (task, fresh) => {
+    const scene = fitTask(task, SCENES, (params, input) => {
+      const s = /** @type {import('./scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
+      return s.create(withChoicesOf(s, { ...task.params, ...params }), {
+        t: i18n.t,
+        format: i18n.format,
+        lang,
+        ...(input ? { input } : {}),
+      });
+    });
+    const q = new URLSearchParams(fresh ? '' : address.current().replace(/^#/, ''));
+    const read = readParams(scene, q).params;
+    const params = Object.fromEntries(Object.entries(read).filter(([k]) => q.has(k)));
+    await stage.openTask(
+      task,
+      scene,
+      fresh ? {} : { params, input: state.input, camera: state.camera, notes: state.notes },
+    );
   };
 
   /** @param {string} code @param {boolean} [write] */

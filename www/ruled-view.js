@@ -94,11 +94,9 @@ let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
  * @property {number} y           … and top
  * @property {boolean} visible    in front of the camera
  *
- * @typedef {import('./task/panel.js').TaskReport} TaskReport   `task-check` and `task-solved`: how an exercise stands
- *
  * @typedef {object} RuledViewEvents       the events of <ruled-view> and their details
- * @property {CustomEvent<TaskReport>} task-check
- * @property {CustomEvent<TaskReport>} task-solved
+ * @property {CustomEvent<import('./task/panel.js').TaskReport>} task-check   how an exercise stands after a check
+ * @property {CustomEvent<import('./task/panel.js').TaskReport>} task-solved   … the first time it is solved
  * @property {CustomEvent<EditDetail>} input
  * @property {CustomEvent<EditDetail>} change
  * @property {CustomEvent<SceneChangeDetail>} scene-change

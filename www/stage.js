@@ -338,7 +338,7 @@ export class Stage {
     /** @internal */
     this.showText = text;
     this.root.classList.toggle('rl-no-controls', !controls);
-    this.text.hidden = !text;
+    this.text.hidden = !text || !!this.task?.hide.includes('text');
     this.heading.hidden = !controls && !text;
     this.panel.hidden = !controls && !text;
     this.root.classList.toggle('rl-no-panel', !controls && !text);
@@ -635,6 +635,8 @@ export class Stage {
     appendRich(this.heading, t(scene.title));
     // the explanation is markup from the project's own language files (never user text)
     this.text.innerHTML = t(scene.text);
+    // (an exercise may hide it where it would say the answer)
+    this.text.hidden = !this.showText || !!this.task?.hide.includes('text');
     this.controls = buildControls(this.form, scene, this.params, this.i18n, {
       onChange: (key, value, ended) => this.setParam(key, value, ended),
       onPlay: (key) => this.togglePlay(key),
@@ -794,7 +796,7 @@ export class Stage {
     const hidden = this.task?.hide ?? [];
     const readouts = (built.readouts ?? []).filter((r) => !hidden.includes(r.label));
     showReadout(this.readout, readouts, this.i18n);
-    showClaims(this.claims, built.claims ?? [], t);
+    showClaims(this.claims, hidden.includes('claims') ? [] : (built.claims ?? []), t);
     this.note.hidden = !built.note;
     this.note.textContent = built.note ?? '';
     const description = this.task && hidden.length ? say(this.task.title, this.i18n.lang) : built.description;

@@ -24,18 +24,21 @@ test('doing an exercise: only what it lets change is enabled, Check says how eac
   );
   assert.deepEqual([...new Set(enabled)], ['n'], 'only n may change');
   assert.equal(await page.locator('.rl-task-solution').isDisabled(), true, 'no solution before a first check');
+  // the sentences that would say the answer are hidden: the claims under the readout, the explanation
+  assert.equal(await page.locator('.rl-claims').isHidden(), true);
+  assert.equal(await page.locator('.rl-text').isHidden(), true);
   await page.click('.rl-task-check');
-  assert.match(await verdict(page), /^Not solved yet: 0 of 1 conditions hold\./);
-  const [line] = await results(page);
-  assert.match(
-    line,
-    /✗.*coupled: max distance below midpoint rule: max distance — now 3\.47·10⁻²: misses by 2\.54·10⁻²/s,
-  );
-  // a hint, then n = 6 solves it
+  assert.match(await verdict(page), /^Not solved yet: 0 of 1 condition met\./);
+  assert.match((await results(page))[0], /✗.*your answer “the smallest n”.*no answer yet/s);
+  // a hint; the reader tries n = 6 (the readout compares the schemes there), then answers
   await page.click('.rl-task-hint');
   assert.equal(await page.locator('.rl-task-hints li').count(), 1);
   await page.locator('.rl-controls [name="n"]').fill('6');
   await page.locator('.rl-controls [name="n"]').dispatchEvent('change');
+  await page.locator('input[name="task-n"]').fill('4');
+  await page.click('.rl-task-check');
+  assert.match((await results(page))[0], /not right yet/);
+  await page.locator('input[name="task-n"]').fill('5');
   await page.click('.rl-task-check');
   assert.match(await verdict(page), /^✓ Solved: every condition holds\./);
   // the link keeps the reader's n; the menu marks the exercise solved, after a reload too
@@ -50,6 +53,7 @@ test('doing an exercise: only what it lets change is enabled, Check says how eac
   await page.click('.rl-task-leave');
   assert.equal(await page.locator('.rl-task').isHidden(), true);
   assert.equal(await page.locator('.rl-controls [name="scheme"]').isDisabled(), false);
+  assert.equal(await page.locator('.rl-text').isVisible(), true, 'the explanation is back');
   assert.doesNotMatch(await page.evaluate(() => location.hash), /task=/);
   assert.deepEqual(problems, []);
   await page.close();
@@ -128,10 +132,11 @@ addEventListener('message', (e) => { if (e.data && e.data.source === 'ruledlab')
     timeout: 60000,
   });
   await page.locator('ruled-view').evaluate((v) => {
-    const input = /** @type {HTMLInputElement} */ (v.shadowRoot?.querySelector('input[name="task-count"]'));
+    const root = /** @type {ShadowRoot} */ (v.shadowRoot);
+    const input = /** @type {HTMLInputElement} */ (root.querySelector('input[name="task-count"]'));
     input.value = '50';
     input.dispatchEvent(new Event('input', { bubbles: true }));
-    /** @type {HTMLButtonElement} */ (v.shadowRoot?.querySelector('.rl-task-check')).click();
+    /** @type {HTMLButtonElement} */ (root.querySelector('.rl-task-check')).click();
   });
   const events = await page.evaluate(() => window.events);
   assert.deepEqual(
@@ -227,4 +232,78 @@ test('writing an exercise: Share → Make an exercise, a condition from the valu
   assert.match(await verdict(reader.page), /^✓ Solved/);
   assert.deepEqual([...problems, ...reader.problems], []);
   await reader.page.close();
+});
+
+test('an exercise file pasted or uploaded in the import box opens as the exercise; a bad one is said there', async () => {
+  const { page, problems } = await session.open('index.html#scene=curves');
+  await page.locator('.io summary').click();
+  const exercise = {
+    ruledlab: 'exercise',
+    version: 1,
+    id: 'from-a-file',
+    title: { en: 'From a file' },
+    prompt: { en: 'Choose four steps.' },
+    scene: 'curves',
+    params: { steps: 1 },
+    change: ['steps'],
+    goal: [{ value: 'curves.readout.points', above: 100 }],
+  };
+  await page.locator('#import-text').fill(JSON.stringify(exercise));
+  await page.locator('#import-button').click();
+  await page.waitForFunction(() => window.ruledlab.stage.task?.id === 'from-a-file');
+  assert.match(await page.locator('.rl-task h3').innerText(), /From a file/);
+  // (the import box stays open under the exercise)
+  await page
+    .locator('#import-text')
+    .fill(JSON.stringify({ ...exercise, goal: [{ value: 'curves.nothing', above: 1 }] }));
+  await page.locator('#import-button').click();
+  await page.waitForFunction(() => !document.querySelector('#import-error')?.hidden);
+  assert.match(await page.locator('#import-error').innerText(), /computes no value "curves\.nothing"/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('writing an exercise with the keyboard alone: every field of the panel is reached by Tab and works', async () => {
+  const { page, problems } = await session.open('index.html#scene=strip&n=3');
+  // Share, then Make an exercise, by keyboard
+  await page.locator('#share').focus();
+  await page.keyboard.press('Enter');
+  await page.locator('#share-exercise').focus();
+  await page.keyboard.press('Enter');
+  // the title field has the keyboard; type, Tab to the prompt, type
+  await page.keyboard.type('Beat the midpoint rule');
+  await page.keyboard.press('Tab');
+  await page.keyboard.type('Choose n.');
+  // Tab to the control of n and let the reader change it (the select takes arrow keys)
+  let at = '';
+  for (let k = 0; k < 20 && at !== 'author-n'; k++) {
+    await page.keyboard.press('Tab');
+    at = await page.evaluate(() => document.activeElement?.getAttribute('name') ?? '');
+  }
+  assert.equal(at, 'author-n');
+  await page.keyboard.press('ArrowDown');
+  assert.equal(await page.locator('[name="author-n"]').inputValue(), 'change');
+  // on to "Add a condition", then the bound field: type and leave it
+  for (let k = 0; k < 30; k++) {
+    await page.keyboard.press('Tab');
+    if ((await page.evaluate(() => document.activeElement?.textContent)) === 'Add a condition') break;
+  }
+  await page.keyboard.press('Enter');
+  assert.equal(await page.locator('[name="author-value-0"]').count(), 1);
+  await page.locator('[name="author-value-0"]').focus();
+  await page.selectOption('[name="author-value-0"]', 'strip.readout.compare.coupled');
+  await page.locator('[name="author-bound-0"]').focus();
+  await page.keyboard.press('Control+a');
+  await page.keyboard.type('0.008');
+  await page.keyboard.press('Tab');
+  // Make the exercise by keyboard: its snippets appear
+  await page.getByRole('button', { name: 'Make the exercise' }).focus();
+  await page.keyboard.press('Enter');
+  await page.waitForSelector('#author-link');
+  const json = JSON.parse(await page.locator('#author-json').inputValue());
+  assert.equal(json.title.en, 'Beat the midpoint rule');
+  assert.deepEqual(json.change, ['n']);
+  assert.deepEqual(json.goal, [{ value: 'strip.readout.compare.coupled', below: 0.008 }]);
+  assert.deepEqual(problems, []);
+  await page.close();
 });

@@ -214,11 +214,17 @@ export class Author {
     const readouts = (built?.readouts ?? []).map((r) => r.label);
     const hide = el('fieldset', { className: 'rl-author-hide' });
     hide.append(el('legend', { textContent: t('author.hide') }));
-    for (const key of readouts) {
+    // the readouts, and the sentences that may say an answer: the claims under the readout, the explanation
+    const hideable = [
+      ...readouts.map((key) => [key, valueName(key, i18n)]),
+      ...(built?.claims?.length ? [['claims', t('author.hide.claims')]] : []),
+      ['text', t('author.hide.text')],
+    ];
+    for (const [key, label] of hideable) {
       const box = el('input', { type: 'checkbox', checked: this.hidden.has(key), name: `author-hide-${key}` });
       box.addEventListener('change', () => (box.checked ? this.hidden.add(key) : this.hidden.delete(key)));
       const row = el('label', { className: 'rl-author-check' });
-      row.append(box, ` ${valueName(key, i18n)}`);
+      row.append(box, ` ${label}`);
       hide.append(row);
     }
 

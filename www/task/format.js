@@ -28,6 +28,9 @@ const MAX_GOAL = 6;
 const MAX_HINTS = 3;
 /** Points at which a typed curve is compared with the exact one, by default and at most. */
 export const SAMPLES = 50;
+
+/** What `hide` may name besides parameters and readouts: the claims under the readout, the explanation. */
+export const HIDE_WORDS = ['claims', 'text'];
 const MAX_SAMPLES = 1000;
 
 /**
@@ -68,7 +71,9 @@ const MAX_SAMPLES = 1000;
  * @property {string | null} input
  * @property {string | null} camera
  * @property {string[]} change    parameter keys the reader may change, and "handles"
- * @property {string[]} hide      parameter keys (kept, not shown) and readout keys (not shown)
+ * @property {string[]} hide      parameter keys (kept, not shown), readout keys (not shown), and the
+ *   words "claims" (the sentences under the readout) and "text" (the scene's explanation), where they
+ *   would say the answer
  * @property {Answer[]} answers
  * @property {Condition[]} goal
  * @property {Words[]} hints

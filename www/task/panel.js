@@ -8,7 +8,6 @@ import { describeCondition, outcomeText } from './words.js';
 
 /**
  * @typedef {import('./format.js').Task} Task
- * @typedef {import('./check.js').Answers} Answers
  *
  * What the panel needs of its stage.
  * @typedef {object} TaskHooks
@@ -30,7 +29,7 @@ import { describeCondition, outcomeText } from './words.js';
  * @property {number} of          how many there are
  * @property {Array<{holds: boolean, value: number | null, target: number | null}>} conditions
  *   (an answer condition's value and target are null: they would give the answer away)
- * @property {Answers} answers
+ * @property {import('./check.js').Answers} answers
  */
 
 let serial = 0;
@@ -45,7 +44,7 @@ export class TaskPanel {
     this.hooks = hooks;
     /** @type {Task | null} */
     this.task = null;
-    /** @type {Answers} */
+    /** @type {import('./check.js').Answers} */
     this.answers = {};
     this.hints = 0;
     this.checked = false;
