@@ -153,6 +153,9 @@ export const CSS = `
 .rl-narrow .rl-editbar-label { display: none; }
 .rl-modes { display: flex; flex-wrap: wrap; gap: .25rem; align-items: center; background: rgb(255 255 255 / .92); border-radius: 6px; padding: .15rem .3rem; }
 .rl-editbar-label { font-size: .8rem; color: var(--muted); padding: 0 .2rem; }
+/* where the bar beside the toolbar is too short for the label, the buttons and Done on one row, the label goes (the group keeps it as its name) */
+.rl-editbar { container-type: inline-size; }
+@container (max-width: 36rem) { .rl-editbar-label { display: none; } }
 .rl-stage button[aria-pressed=true] { background: #1f2430; color: #fff; border-color: #1f2430; }
 .rl-edited { margin: .2rem 0 .8rem; padding: .45rem .7rem; border: 1px solid #e6c47a; border-left: 4px solid #e69f00; border-radius: 6px;
   background: #fffaf0; font-size: .86rem; }
