@@ -509,16 +509,18 @@ export class RuledView extends HTMLElement {
                   ...(edit ? { input: edit } : {}),
                 });
               });
-              return stage.openTask(task, taskScene, { camera, notes });
+              return stage.openTask(task, taskScene, { camera, notes }).then(() => this.refused(notes));
             } catch (e) {
               notes.push({ key: 'task', note: 'element.note.badTask', vars: { reason: taskErrorText(e, stage.i18n) } });
             }
           }
-          return stage.open(
-            scene,
-            { ...defaults(scene), ...params },
-            { data: this._data, notes, autoplay: this.autoplay, paper, camera, input },
-          );
+          return stage
+            .open(
+              scene,
+              { ...defaults(scene), ...params },
+              { data: this._data, notes, autoplay: this.autoplay, paper, camera, input },
+            )
+            .then(() => this.refused(notes));
         },
         (e) => {
           // the core did not start: why, in the element's language
@@ -532,6 +534,28 @@ export class RuledView extends HTMLElement {
       )
       .catch(() => {});
     return this.opening;
+  }
+
+  /**
+   * @internal An attribute the element could not take (a value of `params`, `input`, `camera`,
+   * `task`): shown as a note in the box, and an `error` event each, so that the page around can
+   * tell — the scene is shown without it. `details.option` names the attribute.
+   */
+  refused(/** @type {Array<{key: string, note: string, vars?: Record<string, string>}>} */ notes) {
+    const t = this.stage?.i18n.t;
+    if (!t) return;
+    for (const n of notes) {
+      const option = ['camera', 'input', 'task'].includes(n.key) ? n.key : 'params';
+      this.dispatchEvent(
+        new CustomEvent('error', {
+          detail: {
+            message: t(n.note, n.vars),
+            code: 'invalid-argument',
+            details: { option, reason: n.note, ...(option === 'params' ? { param: n.key } : {}) },
+          },
+        }),
+      );
+    }
   }
 
   /** The scene's defaults and its fitted view. */

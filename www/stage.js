@@ -150,7 +150,10 @@ export class Stage {
     this.paperCard = el('section', { className: 'rl-paper', hidden: true });
     this.paperCard.id = `${id}-paper`;
     /** @internal */
-    this.form = /** @type {HTMLFormElement} */ (el('form', { className: 'rl-controls' }));
+    // a group, not a form: Enter in a field of a form in a sandboxed frame without allow-forms is a
+    // blocked submission the console reports (course systems frame the page that way)
+    this.form = el('div', { className: 'rl-controls' });
+    this.form.setAttribute('role', 'group');
     /** @internal */
     this.player = el('div', { className: 'rl-player', hidden: true });
     /** @internal */
@@ -413,8 +416,9 @@ export class Stage {
     this.buttons.redo.title = t('edit.redoTitle');
     this.modeLabel.textContent = t('edit.moveLabel');
     this.modeGroup.setAttribute('aria-label', t('edit.moveLabel'));
+    const MODE_SIGNS = { view: '⊙', line: '⤡', vertical: '↕' };
     for (const [mode, button] of Object.entries(this.modes)) {
-      button.textContent = t(`edit.mode.${mode}`);
+      label(button, MODE_SIGNS[/** @type {keyof typeof MODE_SIGNS} */ (mode)], t(`edit.mode.${mode}`));
       button.title = t(`edit.mode.${mode}Title`);
     }
     this.done.textContent = t('edit.done');
@@ -610,8 +614,8 @@ export class Stage {
     if (!fits) notes.push({ key: 'input', note: 'note.badInput' });
     this.showNotes(notes);
     if (options.autoplay && !Player.reducedMotion()) {
-      const playable = scene.params.find((p) => p.play && !p.unless?.(this.params));
-      if (playable) this.togglePlay(playable.key);
+      const key = this.playableKey();
+      if (key) this.togglePlay(key);
     }
   }
 
@@ -640,12 +644,7 @@ export class Stage {
     this.controls = buildControls(this.form, scene, this.params, this.i18n, {
       onChange: (key, value, ended) => this.setParam(key, value, ended),
       onPlay: (key) => this.togglePlay(key),
-      fixed: (p) =>
-        this.task && !this.task.change.includes(p.key)
-          ? 'task.reason.locked'
-          : this.input && !this.task && this.scene?.fixed?.includes(p.key)
-            ? 'edit.reason.fixed'
-            : null,
+      fixed: (p) => this.heldReason(p.key),
     });
     // an exercise's hidden parameters (an answer-revealing layer) are not shown at all
     for (const key of this.task?.hide ?? []) {
@@ -674,8 +673,28 @@ export class Stage {
     return fits;
   }
 
-  /** Sets one parameter and recomputes. */
+  /**
+   * Why parameter `key` is held where it is (an i18n key), or null: an exercise holds what it
+   * does not let change, an edit of the input holds what would replace it. A held parameter
+   * changes by no route — slider, − / +, its field, play, single step, setParam.
+   */
+  heldReason(/** @type {string} */ key) {
+    if (this.task && !this.task.change.includes(key)) return 'task.reason.locked';
+    if (this.input && !this.task && this.scene?.fixed?.includes(key)) return 'edit.reason.fixed';
+    return null;
+  }
+
+  /** @internal The parameter Space plays and "." steps: the one playing, or the first that may move now. */
+  playableKey() {
+    return (
+      this.playerControl.param?.key ??
+      this.scene?.params.find((p) => p.play && !p.unless?.(this.params) && !this.heldReason(p.key))?.key
+    );
+  }
+
+  /** Sets one parameter and recomputes (not one that is held: heldReason). */
   setParam(/** @type {string} */ key, /** @type {number | string | boolean} */ value, ended = true) {
+    if (this.heldReason(key)) return;
     if (!this.scene || this.params[key] === value) {
       if (ended) {
         this.options.onChange?.({ reason: 'param', ended: true });
@@ -912,7 +931,8 @@ export class Stage {
   buildPlayer() {
     const { t } = this.i18n;
     const doc = this.root.ownerDocument;
-    const playable = this.scene?.params.filter((p) => p.play) ?? [];
+    // (not a parameter an exercise holds)
+    const playable = this.scene?.params.filter((p) => p.play && this.heldReason(p.key) !== 'task.reason.locked') ?? [];
     this.player.hidden = playable.length === 0;
     this.player.replaceChildren();
     if (!playable.length) return;
@@ -925,7 +945,7 @@ export class Stage {
     speedLabel.append(' ', speed);
     const step = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('player.step') });
     step.addEventListener('click', () => {
-      const key = this.playerControl.param?.key ?? playable.find((p) => !p.unless?.(this.params))?.key;
+      const key = this.playableKey();
       if (!key) return;
       this.stopPlaying();
       this.playerControl.step(this.param(key), Number(this.params[key]));
@@ -937,7 +957,7 @@ export class Stage {
   /** @internal Plays or pauses parameter `key`. */
   togglePlay(/** @type {string} */ key) {
     const p = this.param(key);
-    if (!p) return;
+    if (!p || this.heldReason(key)) return;
     if (this.playerControl.playing && this.playerControl.param?.key === key) {
       this.stopPlaying();
       this.announce();
@@ -954,7 +974,7 @@ export class Stage {
     this.controls?.playing(null);
   }
 
-  /** The scene's defaults and its fitted camera (in an exercise: its start). */
+  /** The scene's defaults and its fitted camera (in an exercise: its start; with an edit: the built-in input, undoably). */
   reset() {
     if (!this.scene) return;
     if (this.task) {
@@ -962,6 +982,13 @@ export class Stage {
       return this.startTask();
     }
     this.stopPlaying();
+    // an edit is taken back first, as one step of undo (↶ brings it back); pressed again, Reset
+    // resets the controls
+    if (this.input && this.editor.enabled) {
+      this.editor.restore();
+      this.viewer.fit();
+      return;
+    }
     this.enter(this.scene, defaults(this.scene), { fit: true });
     this.options.onChange?.({ reason: 'reset', ended: true });
     this.announce();
@@ -1001,8 +1028,7 @@ export class Stage {
       this.reset();
     } else if (target === this.canvas && e.key === ' ') {
       e.preventDefault();
-      const key =
-        this.playerControl.param?.key ?? this.scene?.params.find((p) => p.play && !p.unless?.(this.params))?.key;
+      const key = this.playableKey();
       if (key) this.togglePlay(key);
     } else if (target === this.canvas && e.key === '.') {
       e.preventDefault();
@@ -1019,7 +1045,9 @@ export class Stage {
       const tab = doc.createElement('table');
       for (const [k, what] of rows) {
         const row = tab.insertRow();
-        row.insertCell().append(Object.assign(doc.createElement(keyCaps ? 'kbd' : 'strong'), { textContent: t(k) }));
+        // keys by the names on the reader's keyboard (German: Strg, Umschalt, Leertaste, Bild↑)
+        const name = keyCaps ? k.replace(/\b(Shift|Ctrl|Space|PageUp|PageDown|Enter)\b/g, (m) => t(`key.${m}`)) : t(k);
+        row.insertCell().append(Object.assign(doc.createElement(keyCaps ? 'kbd' : 'strong'), { textContent: name }));
         row.insertCell().textContent = t(what);
       }
       return tab;

@@ -10,6 +10,7 @@ import { translator } from '../../www/i18n/index.js';
 import { decodeInput } from '../../www/edit/input.js';
 import { readTask, writeTask, taskFromLink, taskLink, TaskError } from '../../www/task/format.js';
 import { checkGoal, fitTask, answerNumber, measuresOf } from '../../www/task/check.js';
+import { outcomeText } from '../../www/task/words.js';
 import { builtInTasks, builtInTask } from '../../www/task/builtin.js';
 
 const i18n = translator('en');
@@ -91,7 +92,12 @@ test('answers: a wrong number misses by how much, a formula is evaluated by the 
   assert.equal(wrong.solved, false);
   assert.equal(wrong.outcomes[0].value, 48);
   assert.equal(wrong.outcomes[0].target, 50);
-  assert.equal(wrong.outcomes[0].miss, 1.5, '|48 − 50| − 0.5');
+  assert.ok(Math.abs(wrong.outcomes[0].miss - 1.999) < 1e-12, '|48 − 50| − 0.001');
+  // a count is a whole number; a word is not a number at all (said so, not "not right")
+  assert.equal(check(chaikin, { answers: { count: '49.6' } }).solved, false);
+  const word = check(chaikin, { answers: { count: 'fünfzig' } });
+  assert.equal(/** @type {any} */ (word.outcomes[0].error)?.details?.reason, 'task.check.notNumber');
+  assert.match(outcomeText(word.outcomes[0], translator('de'), chaikin), /keine Zahl/);
   const none = check(chaikin, { answers: {} });
   assert.equal(none.solved, false);
   assert.equal(/** @type {any} */ (none.outcomes[0].error)?.details?.reason, 'task.check.noAnswer');
@@ -108,6 +114,11 @@ test('answers: a wrong number misses by how much, a formula is evaluated by the 
   const error = /** @type {any} */ (broken.outcomes[0].error);
   assert.equal(error?.code, 'parse-error');
   assert.match(error.message, /s\[2\]/);
+  // … said with the field as the panel labels it, not the core's s[2]
+  assert.match(outcomeText(broken.outcomes[0], i18n, hypar), /^s\(u\), z: /);
+  const deltaTask = /** @type {any} */ (builtInTask('hypar-distribution'));
+  const badDelta = check(deltaTask, { answers: { delta: '1 +' } });
+  assert.match(outcomeText(badDelta.outcomes[0], translator('de'), deltaTask), /^δ\(u\): /);
   // German decimal commas in a typed formula
   const delta = /** @type {any} */ (builtInTask('hypar-distribution'));
   const de = { ...context, lang: 'de' };

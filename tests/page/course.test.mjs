@@ -111,6 +111,13 @@ for (const v of VARIANTS) {
     await page.waitForTimeout(400);
     const after = await page.locator('iframe').screenshot();
     assert.ok(countChanged(decodePng(before), decodePng(after)) > 500, 'a control did not change the picture');
+    // a number typed and Enter: applied, and no blocked form submission (sandbox without allow-forms)
+    const field = frame.locator('.rl-row[data-key="n"] .rl-exact');
+    await field.fill('40');
+    await field.press('Enter');
+    await frame
+      .locator('.rl-row[data-key="n"] output', { hasText: /^40$/ })
+      .waitFor({ state: 'attached', timeout: 10000 });
     const foreign = requests.filter(
       (u) =>
         !u.startsWith('data:') &&

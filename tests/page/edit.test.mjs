@@ -300,6 +300,30 @@ test('a reload of the link restores the edit bit for bit, the held parameters st
   assert.equal(await page.locator('.rl-controls [name="n"]').isDisabled(), false);
   await page.keyboard.press('Control+z');
   assert.equal(await inputText(page), link);
+  // held means held by every route: the − / + steps and the number field too, and setParam
+  const held = await page.evaluate(() => {
+    const row = /** @type {HTMLElement} */ (document.querySelector('.rl-row[data-key="n"]'));
+    window.ruledlab.stage.setParam('n', 20);
+    return {
+      controls: [...row.querySelectorAll('button, input')].map((e) => /** @type {HTMLInputElement} */ (e).disabled),
+      n: window.ruledlab.stage.params.n,
+    };
+  });
+  assert.deepEqual(held, { controls: held.controls.map(() => true), n: 12 });
+  // Reset takes the edit back as one step of undo, then (pressed again) resets the controls
+  await page.locator('.rl-reset').click();
+  assert.equal(await inputText(page), '');
+  assert.equal(await page.evaluate(() => window.ruledlab.stage.params.n), 12, 'the first Reset keeps the controls');
+  await page.keyboard.press('Control+z');
+  assert.equal(await inputText(page), link, 'undo brings the edit back after Reset');
+  assert.deepEqual(await inputNow(page), before);
+  await page.locator('.rl-reset').click();
+  await page.locator('.rl-reset').click();
+  assert.notEqual(
+    await page.evaluate(() => window.ruledlab.stage.params.n),
+    12,
+    'the second Reset resets the controls',
+  );
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -78,13 +78,16 @@ test('what fails shows inside the element, in its language, and fires `error`; n
     hostPage(
       `<ruled-view id="scene" scene="nope" lang="de" style="display: block; height: 200px"></ruled-view>
 <ruled-view id="paper" paper="fig99" lang="en" style="display: block; height: 200px"></ruled-view>
-<ruled-view id="camera" scene="curves" camera="1,2" lang="de" style="display: block; height: 200px"></ruled-view>`,
-      `<script>window.errors = []; addEventListener('error', (e) => e.target?.tagName === 'RULED-VIEW' && errors.push([e.target.id, e.detail.message, e.detail.code]), true);</script><script defer src="${session.url}dist/ruledlab-embed.js"></script>`,
+<ruled-view id="camera" scene="curves" camera="1,2" lang="de" style="display: block; height: 200px"></ruled-view>
+<ruled-view id="task" task="nope" lang="de" style="display: block; height: 200px"></ruled-view>
+<ruled-view id="params" scene="striction" params="n=lots" style="display: block; height: 200px"></ruled-view>
+<ruled-view id="input" scene="curves" input="points.garbage" style="display: block; height: 200px"></ruled-view>`,
+      `<script>window.errors = []; addEventListener('error', (e) => e.target?.tagName === 'RULED-VIEW' && errors.push([e.target.id, e.detail.message, e.detail.code, e.detail.details?.option ?? null]), true);</script><script defer src="${session.url}dist/ruledlab-embed.js"></script>`,
     ),
   );
   const { page, problems } = await session.open(url, { wait: false });
   await page.waitForFunction(
-    () => window.errors.length >= 2 && document.getElementById('camera').dataset.ready === '1',
+    () => window.errors.length >= 6 && document.getElementById('input').dataset.ready === '1',
     null,
     { timeout: 30000 },
   );
@@ -102,10 +105,16 @@ test('what fails shows inside the element, in its language, and fires `error`; n
   assert.match(shown.paper, /^There is no figure or example of the paper called “fig99”/);
   assert.match(shown.camera, /Das Attribut camera ist nicht lesbar/);
   const errors = await page.evaluate(() => window.errors);
-  assert.deepEqual(errors.map(([id, , code]) => [id, code]).sort(), [
-    ['paper', 'invalid-argument'],
-    ['scene', 'invalid-argument'],
+  // an attribute refused (the scene shown without it) fires `error` too, so the page around can tell
+  assert.deepEqual(errors.map(([id, , code, option]) => [id, code, option]).sort(), [
+    ['camera', 'invalid-argument', 'camera'],
+    ['input', 'invalid-argument', 'input'],
+    ['paper', 'invalid-argument', 'paper'],
+    ['params', 'invalid-argument', 'params'],
+    ['scene', 'invalid-argument', 'scene'],
+    ['task', 'invalid-argument', 'task'],
   ]);
+  assert.match(errors.find(([id]) => id === 'task')[1], /Das Attribut task ließ sich nicht lesen/);
   assert.match(errors.find(([id]) => id === 'scene')[1], /^Eine Szene/);
   assert.deepEqual(problems, []);
   await page.close();

@@ -167,7 +167,42 @@ test('the page on a phone: 44-px targets, no text under 12 px, steps for a dense
     await page.locator('.rl-help').tap();
     assert.match(await page.locator('.rl-shortcuts h2').first().innerText(), /Touch/);
     assert.match(await page.locator('.rl-shortcuts').innerText(), /pinch/);
-    assert.deepEqual(problems, []);
+    // editing on a phone: the toolbar becomes one row of signs (the move modes, ✎, ↶ ↷), low over the figure
+    const edit = await phone.newPage();
+    const editProblems = watch(edit);
+    await edit.goto(`${session.url}#scene=milling`);
+    await ready(edit);
+    await edit.locator('.rl-edit').tap();
+    await edit.locator('.rl-modes').waitFor();
+    const bar = await edit.evaluate(() =>
+      [...document.querySelectorAll('.rl-bar button')]
+        .filter((b) => b.checkVisibility())
+        .map((b) => ({ name: b.getAttribute('aria-label') ?? b.textContent, ...b.getBoundingClientRect().toJSON() })),
+    );
+    assert.ok(bar.length >= 4, `the edit toolbar: ${bar.map((b) => b.name).join(', ')}`);
+    assert.ok(
+      Math.max(...bar.map((b) => b.top + b.height / 2)) - Math.min(...bar.map((b) => b.top + b.height / 2)) < 4,
+      `the edit toolbar on one row: ${JSON.stringify(bar.map((b) => [b.name, Math.round(b.left), Math.round(b.top), Math.round(b.width)]))}`,
+    );
+    assert.deepEqual(
+      bar.filter((b) => b.width < 43.5 || b.height < 43.5).map((b) => b.name),
+      [],
+      'edit toolbar targets under 44 px',
+    );
+    await edit.close();
+    // an exercise on a phone: Check brings its verdict into sight
+    const task = await phone.newPage();
+    const taskProblems = watch(task);
+    await task.goto(`${session.url}#task=torsal-pair`);
+    await ready(task);
+    await task.locator('.rl-task-check').tap();
+    const verdict = await task.evaluate(() => {
+      const r = /** @type {HTMLElement} */ (document.querySelector('.rl-task-verdict')).getBoundingClientRect();
+      return { top: r.top, bottom: r.bottom, height: innerHeight };
+    });
+    assert.ok(verdict.top >= 0 && verdict.bottom <= verdict.height, `the verdict at ${JSON.stringify(verdict)}`);
+    await task.close();
+    assert.deepEqual([...problems, ...editProblems, ...taskProblems], []);
   } finally {
     await phone.close();
   }

@@ -27,6 +27,12 @@ test('doing an exercise: only what it lets change is enabled, Check says how eac
   // the sentences that would say the answer are hidden: the claims under the readout, the explanation
   assert.equal(await page.locator('.rl-claims').isHidden(), true);
   assert.equal(await page.locator('.rl-text').isHidden(), true);
+  // and the data files, which would hold the numbers (the pictures stay)
+  const held = () =>
+    page.evaluate(() =>
+      ['csv', 'invariantsCsv', 'svg'].map((k) => document.querySelector(`[data-export="${k}"]`)?.hidden),
+    );
+  assert.deepEqual(await held(), [true, true, false]);
   await page.click('.rl-task-check');
   assert.match(await verdict(page), /^Not solved yet: 0 of 1 condition met\./);
   assert.match((await results(page))[0], /✗.*your answer “the smallest n”.*no answer yet/s);
@@ -54,6 +60,7 @@ test('doing an exercise: only what it lets change is enabled, Check says how eac
   assert.equal(await page.locator('.rl-task').isHidden(), true);
   assert.equal(await page.locator('.rl-controls [name="scheme"]').isDisabled(), false);
   assert.equal(await page.locator('.rl-text').isVisible(), true, 'the explanation is back');
+  assert.deepEqual(await held(), [false, false, false], 'the data files are back');
   assert.doesNotMatch(await page.evaluate(() => location.hash), /task=/);
   assert.deepEqual(problems, []);
   await page.close();
@@ -69,6 +76,13 @@ test('with the keyboard alone: Tab to the answer, type, Enter checks; a hint and
     at = await page.evaluate(() => document.activeElement?.getAttribute('name') ?? '');
   }
   assert.equal(at, 'task-count', 'the answer field is reached by Tab');
+  // the held number of steps does not move by the view's keys either (. steps, Space plays)
+  await page.locator('.rl-view canvas').focus();
+  await page.keyboard.press('.');
+  await page.keyboard.press(' ');
+  await page.waitForTimeout(300);
+  assert.equal(await page.evaluate(() => window.ruledlab.stage.params.steps), 3);
+  await page.locator('input[name="task-count"]').focus();
   await page.keyboard.type('48');
   await page.keyboard.press('Enter');
   assert.match(await verdict(page), /^Not solved yet/);
@@ -191,9 +205,12 @@ test('a hostile or broken exercise link: texts stay text, a broken one is said i
     /Die Aufgabe im Link ließ sich nicht lesen \(ihr fehlt „id“\)/,
   );
   await broken.page.close();
+  const garbage = await session.open('index.html#task=j.garbage!&lang=de');
+  assert.match(await garbage.page.locator('.rl-note').innerText(), /der Link enthält keine Aufgabe/);
+  await garbage.page.close();
   const unknown = await session.open('index.html#task=no-such-exercise');
   assert.match(await unknown.page.locator('.rl-note').innerText(), /no built-in exercise "no-such-exercise"/);
-  assert.deepEqual([...problems, ...broken.problems, ...unknown.problems], []);
+  assert.deepEqual([...problems, ...broken.problems, ...garbage.problems, ...unknown.problems], []);
   await unknown.page.close();
 });
 
@@ -290,14 +307,34 @@ test('writing an exercise with the keyboard alone: every field of the panel is r
   }
   await page.keyboard.press('Enter');
   assert.equal(await page.locator('[name="author-value-0"]').count(), 1);
-  await page.locator('[name="author-value-0"]').focus();
-  await page.selectOption('[name="author-value-0"]', 'strip.readout.compare.coupled');
-  await page.locator('[name="author-bound-0"]').focus();
+  const focused = () => page.evaluate(() => document.activeElement?.getAttribute('name') ?? '');
+  assert.equal(await focused(), 'author-value-0', 'the new condition’s value has the keyboard');
+  // arrows through the values: each one rebuilds the panel, and the keyboard stays on the menu
+  for (let k = 0; k < 30; k++) {
+    if ((await page.locator('[name="author-value-0"]').inputValue()) === 'strip.readout.compare.coupled') break;
+    await page.keyboard.press('ArrowDown');
+    assert.equal(await focused(), 'author-value-0', 'ArrowDown kept the keyboard on the menu');
+  }
+  assert.equal(await page.locator('[name="author-value-0"]').inputValue(), 'strip.readout.compare.coupled');
+  // Tab to the test, Tab to the bound: type it and Tab on — to the next control, not to nowhere
+  await page.keyboard.press('Tab');
+  assert.equal(await focused(), 'author-test-0');
+  await page.keyboard.press('Tab');
+  assert.equal(await focused(), 'author-bound-0');
   await page.keyboard.press('Control+a');
   await page.keyboard.type('0.008');
   await page.keyboard.press('Tab');
+  await page.waitForTimeout(100);
+  assert.equal(await focused(), 'author-remove-0', 'Tab from the bound reached the next control');
+  // the solution recorded by Enter: the keyboard stays on its button
+  for (let k = 0; k < 20 && (await focused()) !== 'author-record-solution'; k++) await page.keyboard.press('Tab');
+  await page.keyboard.press('Enter');
+  assert.equal(await focused(), 'author-record-solution');
   // Make the exercise by keyboard: its snippets appear
-  await page.getByRole('button', { name: 'Make the exercise' }).focus();
+  for (let k = 0; k < 5; k++) {
+    await page.keyboard.press('Tab');
+    if ((await page.evaluate(() => document.activeElement?.textContent)) === 'Make the exercise') break;
+  }
   await page.keyboard.press('Enter');
   await page.waitForSelector('#author-link');
   const json = JSON.parse(await page.locator('#author-json').inputValue());

@@ -18,6 +18,8 @@ export default {
   'task.solved': 'Gelöst: Alle Bedingungen sind erfüllt.',
   'task.notSolved': 'Noch nicht gelöst: {passed} von {of:Bedingung:Bedingungen} erfüllt.',
   'task.holds': 'erfüllt',
+  'io.heldInTask':
+    'Die Datendateien (OBJ, CSV, JSON, Invarianten) lassen sich speichern, sobald Sie die Aufgabe verlassen: Sie enthielten die Antwort.',
   'task.held': 'Die Aufgabe hält die Bedienelemente fest, die Sie nicht ändern sollen.',
   'task.heldAll': 'Die Bedienelemente der Szene sind festgehalten: Die Antwort gehört in das Feld oben.',
   'task.notYet': 'noch nicht',
@@ -63,6 +65,7 @@ export default {
   'isometry.readout.delta': 'δ des mittleren Paares von Erzeugenden',
 
   'task.error.notJson': 'die Aufgabe ist kein JSON: {detail}',
+  'task.error.badLink': 'der Link enthält keine Aufgabe (sein Text nach „task=j.“ stammt nicht von ruledlab)',
   'task.error.tooLong': 'die Aufgabe ist länger als {max} Zeichen',
   'task.error.notExercise':
     'dies ist keine Aufgabe von ruledlab (ihr „ruledlab“ muss „exercise“ sein, ihre „version“ 1)',
@@ -83,6 +86,7 @@ export default {
   'task.error.unknownValue': 'die Szene berechnet keinen Wert „{value}“ (genannt in {where})',
   'task.error.noExact':
     'die Szene „{scene}“ hat keine exakte Kurve, mit der eine eingegebene Formel verglichen werden könnte',
+  'task.check.notNumber': 'das ist keine Zahl: Geben Sie Ziffern ein, z. B. 50, 0,25 oder 1/3',
   'task.check.noAnswer': 'noch keine Antwort',
 
   'author.open': 'Aus dieser Ansicht eine Aufgabe machen',

@@ -225,7 +225,8 @@ stammen von ruledlab.</p>`,
 <h2>Ihre eigene Regelfläche</h2>
 <p>Tippen Sie die Leitkurve ${mr('a ( u )')} und die Richtung der Erzeugenden ${mr('e ( u )')} ein: Die
 Fläche ist ${m(`${row('x ( u , v )')}<mo>=</mo>${row('a ( u ) + v e ( u )')}`)}. Formeln verwenden Zahlen
-(mit Dezimalpunkt), <code>u</code>, die Parameter <code>a</code>, <code>b</code>, <code>c</code>
+(mit Dezimalkomma oder -punkt: <code>0,5</code> oder <code>0.5</code>; in <code>atan2(y, x)</code> trennt das Komma
+die Argumente), <code>u</code>, die Parameter <code>a</code>, <code>b</code>, <code>c</code>
 (Regler), <code>pi</code>, <code>e</code>, die Operatoren <code>+ - * / ^</code> und die Funktionen
 sin cos tan asin acos atan atan2 sinh cosh tanh exp ln log sqrt abs (log ist der natürliche
 Logarithmus). Ein Fehler wird neben seinem Feld angezeigt, mit seiner Spalte.</p>

@@ -17,6 +17,8 @@ export default {
   'task.solved': 'Solved: every condition holds.',
   'task.notSolved': 'Not solved yet: {passed} of {of:condition:conditions} met.',
   'task.holds': 'holds',
+  'io.heldInTask':
+    'The data files (OBJ, CSV, JSON, invariants) can be saved once you leave the exercise: they would hold the answer.',
   'task.held': 'The exercise holds the controls it does not ask you to change.',
   'task.heldAll': 'The scene’s controls are held: the answer goes in the field above.',
   'task.notYet': 'not yet',
@@ -62,6 +64,7 @@ export default {
   'isometry.readout.delta': 'δ of the middle pair of rulings',
 
   'task.error.notJson': 'the exercise is not JSON: {detail}',
+  'task.error.badLink': 'the link does not hold an exercise (its text after "task=j." is not one written by ruledlab)',
   'task.error.tooLong': 'the exercise is longer than {max} characters',
   'task.error.notExercise': 'this is not a ruledlab exercise (its "ruledlab" must be "exercise", its "version" 1)',
   'task.error.unknownKey': 'it has a key it does not know: "{key}" (in {where})',
@@ -81,6 +84,7 @@ export default {
   'task.error.unknownValue': 'the scene computes no value "{value}" (named in {where})',
   'task.error.noExact': 'the scene "{scene}" has no exact curve to compare a typed formula with',
   'task.check.noAnswer': 'no answer yet',
+  'task.check.notNumber': 'that is not a number: type digits, e.g. 50, 0.25 or 1/3',
 
   'author.open': 'Make an exercise from this view',
   'author.heading': 'Make an exercise',

@@ -23,6 +23,9 @@ const DATA_FILES = /** @type {const} */ ({
   invariantsCsv: ['-invariants.csv', 'invariants-csv', 'text/csv'],
 });
 
+/** The exports that are numbers rather than pictures: held while an exercise is open. */
+const DATA_KINDS = /** @type {const} */ (['obj', 'csv', 'json', 'invariants', 'invariantsCsv']);
+
 /** Every export button, in menu order, with the i18n key of its label. */
 const EXPORTS = /** @type {const} */ ([
   ['svg', 'export.svg'],
@@ -92,7 +95,9 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
     buttons[kind].dataset.export = kind;
     exports.append(buttons[kind]);
   }
-  io.append(summary, pasteLabel, paste, kindRow, row, importError, storedNote, exportsLabel, exports);
+  // in an exercise the data files wait (a table of δ or of the footpoints would be the answer)
+  const heldNote = el('p', { className: 'io-note', hidden: true });
+  io.append(summary, pasteLabel, paste, kindRow, row, importError, storedNote, exportsLabel, exports, heldNote);
   stage.panel.insertBefore(io, stage.text);
 
   // import: pasted text or an uploaded file; an error is said at the paste box, and the scene
@@ -196,6 +201,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
       for (const option of kind.options) option.textContent = t(`io.kind.${option.value}`);
       exportsLabel.textContent = t('io.exports');
       for (const [kind, key] of EXPORTS) buttons[kind].textContent = t(key);
+      heldNote.textContent = t('io.heldInTask');
     },
     /** The exports a computed scene has: data files where it has data, the plot where it draws one. */
     update(/** @type {import('../scene.js').Built} */ built) {
@@ -203,6 +209,9 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
       for (const k of ['obj', 'csv', 'json']) buttons[k].disabled = !data;
       for (const k of ['invariants', 'invariantsCsv']) buttons[k].disabled = !data || !!data.grid;
       buttons.plot.disabled = !built.figure;
+      const inTask = !!stage.task;
+      for (const k of DATA_KINDS) buttons[k].hidden = inTask;
+      heldNote.hidden = !inTask;
     },
   };
 }

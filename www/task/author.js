@@ -166,8 +166,25 @@ export class Author {
     }
   }
 
-  /** Builds the panel in the current language. */
+  /**
+   * Builds the panel in the current language, the keyboard staying on the control it was on
+   * (a change rebuilds the panel: ArrowDown in a menu, a bound typed, a state recorded).
+   */
   render() {
+    const root = /** @type {Document | ShadowRoot} */ (this.box.getRootNode());
+    const active = /** @type {HTMLElement | null} */ (root.activeElement);
+    const name = active && this.box.contains(active) ? active.getAttribute('name') : null;
+    const scroll = this.box.scrollTop;
+    this.build();
+    if (!name) return;
+    const find = (/** @type {string} */ n) =>
+      /** @type {HTMLElement | null} */ (this.box.querySelector(`[name="${n}"]`));
+    (find(name) ?? (name.startsWith('author-remove-') ? find('author-add') : null))?.focus({ preventScroll: true });
+    this.box.scrollTop = scroll;
+  }
+
+  /** @internal */
+  build() {
     if (!this.open) return;
     const stage = this.hooks.stage();
     const scene = stage.scene;
@@ -186,9 +203,9 @@ export class Author {
     const heading = el('h3', { textContent: t('author.heading'), id: 'rl-author-title' });
     this.box.setAttribute('aria-labelledby', heading.id);
     const intro = el('p', { className: 'rl-author-intro', textContent: t('author.intro') });
-    const title = el('input', { type: 'text', value: this.title, maxLength: 200 });
+    const title = el('input', { type: 'text', value: this.title, maxLength: 200, name: 'author-title' });
     title.addEventListener('input', () => (this.title = title.value));
-    const prompt = el('textarea', { rows: 4, value: this.prompt, maxLength: 2000 });
+    const prompt = el('textarea', { rows: 4, value: this.prompt, maxLength: 2000, name: 'author-prompt' });
     prompt.addEventListener('input', () => (this.prompt = prompt.value));
 
     // what the reader may change, and what is hidden
@@ -262,9 +279,10 @@ export class Author {
       });
       const bound = el('input', { type: 'text', inputMode: 'decimal', value: r.bound, name: `author-bound-${k}` });
       bound.setAttribute('aria-label', t('author.bound'));
+      // (a field's change fires as Tab leaves it: the panel is rebuilt after the focus has moved on)
       bound.addEventListener('change', () => {
         r.bound = bound.value;
-        this.render();
+        setTimeout(() => this.render());
       });
       row.append(value, test, bound);
       if (r.test === 'near') {
@@ -272,11 +290,11 @@ export class Author {
         within.setAttribute('aria-label', t('author.within'));
         within.addEventListener('change', () => {
           r.within = within.value;
-          this.render();
+          setTimeout(() => this.render());
         });
         row.append(el('span', { textContent: t('author.withinLabel') }), within);
       }
-      const remove = el('button', { type: 'button', textContent: '×' });
+      const remove = el('button', { type: 'button', textContent: '×', name: `author-remove-${k}` });
       remove.setAttribute('aria-label', t('author.remove', { index: k + 1 }));
       remove.addEventListener('click', () => {
         this.rows.splice(k, 1);
@@ -293,7 +311,12 @@ export class Author {
       }
       goal.append(row);
     });
-    const add = el('button', { type: 'button', textContent: t('author.add'), disabled: !Object.keys(values).length });
+    const add = el('button', {
+      type: 'button',
+      textContent: t('author.add'),
+      name: 'author-add',
+      disabled: !Object.keys(values).length,
+    });
     add.addEventListener('click', () => {
       const key = Object.keys(values)[0];
       this.rows.push({ value: key, test: 'below', bound: statedNumber(values[key], 'en'), within: '0.001' });
@@ -307,19 +330,27 @@ export class Author {
     const hints = el('fieldset', { className: 'rl-author-hints' });
     hints.append(el('legend', { textContent: t('author.hints') }));
     this.hints.forEach((h, k) => {
-      const area = el('textarea', { rows: 2, value: h, maxLength: 2000 });
+      const area = el('textarea', { rows: 2, value: h, maxLength: 2000, name: `author-hint-${k}` });
       area.addEventListener('input', () => (this.hints[k] = area.value));
       hints.append(field(t('author.hint', { index: k + 1 }), area));
     });
 
     // start and solution, recorded from the view
     const states = el('div', { className: 'rl-author-states' });
-    const recordStart = el('button', { type: 'button', textContent: t('author.recordStart') });
+    const recordStart = el('button', {
+      type: 'button',
+      textContent: t('author.recordStart'),
+      name: 'author-record-start',
+    });
     recordStart.addEventListener('click', () => {
       this.start = this.snapshot();
       this.render();
     });
-    const recordSolution = el('button', { type: 'button', textContent: t('author.recordSolution') });
+    const recordSolution = el('button', {
+      type: 'button',
+      textContent: t('author.recordSolution'),
+      name: 'author-record-solution',
+    });
     recordSolution.addEventListener('click', () => {
       this.solution = this.snapshot();
       this.render();

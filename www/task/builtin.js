@@ -146,7 +146,8 @@ const RAW = [
     change: [],
     hide: ['curves.readout.points'],
     answers: [{ id: 'count', kind: 'number', label: { en: 'points after 3 steps', de: 'Punkte nach 3 Schritten' } }],
-    goal: [{ answer: 'count', near: { value: 'curves.readout.points' }, within: 0.5 }],
+    // (a count: 49.6 is not one)
+    goal: [{ answer: 'count', near: { value: 'curves.readout.points' }, within: 0.001 }],
     hints: [
       { en: 'An open polygon of n points has n − 1 edges.', de: 'Ein offenes Polygon mit n Punkten hat n − 1 Kanten.' },
       { en: 'After one step: 2 · (8 − 1) = 14 points.', de: 'Nach einem Schritt: 2 · (8 − 1) = 14 Punkte.' },
@@ -334,6 +335,8 @@ const RAW = [
     scene: 'formula',
     params: { preset: 'hyperboloid', tool: 'striction', exact: true },
     change: ['ax', 'ay', 'az', 'ex', 'ey', 'ez', 'umin', 'umax', 'a', 'b', 'c'],
+    // (the menu of surfaces to start from names one whose striction curve is straight)
+    hide: ['preset'],
     goal: [{ value: 'formula.strictionStraightness', below: 1e-9 }],
     hints: [
       {
@@ -357,7 +360,7 @@ const RAW = [
     scene: 'formula-congruence',
     params: { preset: 'example5', focal: true },
     change: ['px', 'py', 'pz', 'ex', 'ey', 'ez', 'umin', 'umax', 'vmin', 'vmax', 'a', 'b', 'c'],
-    hide: ['focal'],
+    hide: ['focal', 'preset'],
     goal: [{ value: 'focal.ellipticShare', near: 1, within: 1e-9 }],
     hints: [
       {

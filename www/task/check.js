@@ -65,7 +65,8 @@ export function checkGoal(task, built, answers, state) {
       else {
         const typed = answers[/** @type {string} */ (condition.answer)];
         outcome.value = typeof typed === 'string' ? answerNumber(typed) : Number.NaN;
-        if (typed === undefined || typed === '') outcome.error = new TaskError('task.check.noAnswer');
+        if (typed === undefined || String(typed).trim() === '') outcome.error = new TaskError('task.check.noAnswer');
+        else if (Number.isNaN(outcome.value)) outcome.error = new TaskError('task.check.notNumber');
       }
       const x = outcome.value;
       if (condition.below !== undefined) {

@@ -390,14 +390,13 @@ export function taskFromLink(value, builtIn) {
     return task;
   }
   const b64 = value.slice(2).replace(/-/g, '+').replace(/_/g, '/');
-  if (!/^[A-Za-z0-9+/]*$/.test(b64) || b64.length > (MAX_TASK * 4) / 3 + 4)
-    throw new TaskError('task.error.notJson', { detail: 'the link does not hold one' });
+  if (!/^[A-Za-z0-9+/]*$/.test(b64) || b64.length > (MAX_TASK * 4) / 3 + 4) throw new TaskError('task.error.badLink');
   let json = '';
   try {
     const binary = atob(b64 + '='.repeat((4 - (b64.length % 4)) % 4));
     json = new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
   } catch {
-    throw new TaskError('task.error.notJson', { detail: 'the link does not hold one' });
+    throw new TaskError('task.error.badLink');
   }
   return readTask(json);
 }

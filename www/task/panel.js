@@ -233,7 +233,7 @@ export class TaskPanel {
           textContent: `${t(o.holds ? 'task.holds' : 'task.notYet')}: `,
         });
         const words = Object.assign(doc.createElement('span'), {
-          textContent: `${describeCondition(o.condition, task, i18n)} — ${outcomeText(o, i18n)}`,
+          textContent: `${describeCondition(o.condition, task, i18n)} — ${outcomeText(o, i18n, task)}`,
         });
         li.append(mark, status, words);
         return li;
@@ -259,6 +259,8 @@ export class TaskPanel {
       answers: structuredClone(this.answers),
     };
     if (announce) {
+      // where the panel runs below the screen (a phone), the verdict is brought into sight
+      verdict.scrollIntoView({ block: 'nearest' });
       this.hooks.report('check', report);
       if (solved && !this.solved) this.hooks.report('solved', report);
     }

@@ -66,14 +66,31 @@ export function describeCondition(
   });
 }
 
+/**
+ * The field a typed answer's error is in, as the panel labels it: "δ(u)", or "s(u), z" for the
+ * third formula of a curve (the core names them "delta[0]", "s[2]").
+ */
+function answerField(/** @type {Outcome} */ o, /** @type {Task | undefined} */ task, /** @type {Translator} */ i18n) {
+  const answer = task?.answers.find((a) => a.id === o.condition.answer);
+  if (!answer) return undefined;
+  const label = say(answer.label, i18n.lang);
+  const k = Number(/\[(\d)\]$/.exec(String(/** @type {any} */ (o.error)?.details?.option ?? ''))?.[1]);
+  return answer.kind === 'curve' && k >= 0 && k < 3 ? `${label}, ${'xyz'[k]}` : label;
+}
+
 /** How a condition stands, in words (after its description). */
-export function outcomeText(/** @type {Outcome} */ o, /** @type {Translator} */ i18n) {
+export function outcomeText(
+  /** @type {Outcome} */ o,
+  /** @type {Translator} */ i18n,
+  /** @type {Task | undefined} */ task = undefined,
+) {
   const { t, format } = i18n;
   const error = /** @type {any} */ (o.error);
   if (error) {
     const reason = error.details?.reason;
     if (reason === 'task.check.noAnswer') return t('task.out.noAnswer');
-    return t('task.out.error', { message: taskErrorText(error, i18n) });
+    const field = reason?.startsWith?.('task.') ? undefined : answerField(o, task, i18n);
+    return t('task.out.error', { message: taskErrorText(error, i18n, field) });
   }
   const c = o.condition;
   if (c.answer && !c.matches) return t(o.holds ? 'task.out.right' : 'task.out.notRight');
@@ -94,11 +111,12 @@ export function outcomeText(/** @type {Outcome} */ o, /** @type {Translator} */ 
  * says them.
  * @param {unknown} error
  * @param {Translator} i18n
+ * @param {string} [field]   the field it is in, as the reader sees it (a typed answer's label)
  */
-export function taskErrorText(error, i18n) {
+export function taskErrorText(error, i18n, field) {
   const e = /** @type {any} */ (error);
   const reason = e?.details?.reason;
   if (typeof reason === 'string' && reason.startsWith('task.') && i18n.has(reason))
     return i18n.t(reason, e.details.args ?? {});
-  return describeError(error, i18n);
+  return describeError(error, i18n, field);
 }

@@ -20,7 +20,7 @@ let serial = 0;
 
 /**
  * Builds the controls of `scene` into `form`.
- * @param {HTMLFormElement} form
+ * @param {HTMLElement} form   the group the rows go in
  * @param {import('../scene.js').Scene} scene
  * @param {import('../scene.js').Params} params  current values (read, never changed here)
  * @param {import('../i18n/index.js').Translator} i18n
@@ -31,11 +31,9 @@ export function buildControls(form, scene, params, i18n, hooks) {
   const doc = form.ownerDocument;
   const prefix = `rl${++serial}`;
   form.replaceChildren();
-  form.noValidate = true;
-  form.addEventListener('submit', (e) => e.preventDefault());
   /** @type {Array<{row: HTMLElement, slider: HTMLInputElement, minus: HTMLButtonElement, plus: HTMLButtonElement, exact: HTMLInputElement, output: HTMLOutputElement, param: import('../scene.js').Param}>} the sliders */
   const fine = [];
-  /** @type {Map<string, {row: HTMLElement, input: HTMLInputElement | HTMLSelectElement, set: (v: any) => void, reason: HTMLElement, problem: HTMLElement, play?: HTMLButtonElement, param: import('../scene.js').Param}>} */
+  /** @type {Map<string, {row: HTMLElement, input: HTMLInputElement | HTMLSelectElement, set: (v: any) => void, reason: HTMLElement, problem: HTMLElement, play?: HTMLButtonElement, also: Array<HTMLInputElement | HTMLButtonElement>, param: import('../scene.js').Param}>} */
   const rows = new Map();
   for (const p of scene.params) {
     const id = `${prefix}-${p.key}`;
@@ -61,6 +59,8 @@ export function buildControls(form, scene, params, i18n, hooks) {
     let set;
     /** @type {HTMLButtonElement | undefined} */
     let play;
+    /** @type {Array<HTMLInputElement | HTMLButtonElement>} a slider's − / + and its field: held with it */
+    const also = [];
     if (p.type === 'select') {
       const select = doc.createElement('select');
       for (const [value, title] of p.options?.() ?? []) select.add(new Option(t(title), value));
@@ -156,6 +156,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
         return b;
       };
       const [minus, plus] = [stepper(-1), stepper(1)];
+      also.push(minus, plus, exact);
       set = (v) => {
         slider.value = String(v);
         output.value = format(Number(v));
@@ -183,7 +184,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
     cell.append(reason, problem);
     row.append(label, cell);
     form.append(row);
-    rows.set(p.key, { row, input, set, reason, problem, play, param: p });
+    rows.set(p.key, { row, input, set, reason, problem, play, also, param: p });
   }
 
   /** Shows `params`: values, and which controls are disabled and why. */
@@ -192,6 +193,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
       r.set(values[key]);
       const why = hooks.fixed?.(r.param) ?? irrelevance(r.param, values);
       r.input.disabled = !!why;
+      for (const c of r.also) c.disabled = !!why;
       if (r.play) r.play.disabled = !!why;
       r.row.classList.toggle('rl-disabled', !!why);
       // (an exercise says once, in its panel, that it holds the controls it does not ask about)

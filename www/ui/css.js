@@ -40,12 +40,12 @@ export const CSS = `
   background: var(--paper); border: 1px solid var(--line); }
 .rl-legend li { display: flex; align-items: center; gap: .45rem; }
 .rl-swatch { flex: none; }
-.rl-bar { position: absolute; left: .6rem; right: .5rem; bottom: .5rem; display: flex; align-items: flex-end; gap: .3rem .8rem; pointer-events: none; }
+.rl-bar { position: absolute; z-index: 1; left: .6rem; right: .5rem; bottom: .5rem; display: flex; align-items: flex-end; gap: .3rem .8rem; pointer-events: none; }
 .rl-bar > * { pointer-events: auto; }
 /* toolbar buttons: their word, or in a narrow box their sign (the accessible name stays the word) */
 .rl-btn-sign { display: none; }
-.rl-narrow .rl-toolbar .rl-btn-sign { display: inline; font-size: 1.05rem; line-height: 1; }
-.rl-narrow .rl-toolbar .rl-btn-word { display: none; }
+.rl-narrow :is(.rl-toolbar, .rl-modes) .rl-btn-sign { display: inline; font-size: 1.05rem; line-height: 1; }
+.rl-narrow :is(.rl-toolbar, .rl-modes) .rl-btn-word { display: none; }
 .rl-toolbar { display: flex; gap: .3rem; flex-wrap: wrap; justify-content: flex-end; margin-left: auto; }
 .rl-stage button, .rl-stage select, .rl-stage input[type=text] { font: inherit; font-size: .85rem; color: var(--ink); }
 .rl-stage select { min-height: 28px; }
@@ -147,15 +147,20 @@ export const CSS = `
 .rl-view canvas.rl-grab:active { cursor: grabbing; }
 .rl-editbar { flex: 1 1 auto; min-width: 0; display: flex; flex-wrap: wrap; gap: .3rem; align-items: center; }
 .rl-editing .rl-hint { display: none; }
-/* in a narrow box: the move modes on a row of their own over the toolbar, without their label */
-.rl-narrow .rl-bar { flex-wrap: wrap; }
-.rl-narrow .rl-editbar { flex-basis: 100%; }
+/* in a narrow box, while editing, the toolbar is the edit toolbar, one row of signs: the move modes,
+   then ✎ (pressed: press again to stop), ↶ ↷ — Fit, Reset, full screen, ? and Done wait until editing ends */
 .rl-narrow .rl-editbar-label { display: none; }
+.rl-narrow .rl-view.rl-editing .rl-toolbar > :is(.rl-fit, .rl-reset, .rl-fullscreen, .rl-help) { display: none; }
+.rl-narrow .rl-view.rl-editing .rl-done { display: none; }
+.rl-narrow .rl-editbar { flex: 0 1 auto; container-type: normal; }
 .rl-modes { display: flex; flex-wrap: wrap; gap: .25rem; align-items: center; background: rgb(255 255 255 / .92); border-radius: 6px; padding: .15rem .3rem; }
 .rl-editbar-label { font-size: .8rem; color: var(--muted); padding: 0 .2rem; }
 /* where the bar beside the toolbar is too short for the label, the buttons and Done on one row, the label goes (the group keeps it as its name) */
 .rl-editbar { container-type: inline-size; }
 @container (max-width: 36rem) { .rl-editbar-label { display: none; } }
+/* (Done repeats the pressed Edit button beside it: it goes first when the row is short) */
+@container (max-width: 30rem) { .rl-done { display: none; } }
+@container (max-width: 26rem) { .rl-modes .rl-btn-sign { display: inline; } .rl-modes .rl-btn-word { display: none; } }
 .rl-stage button[aria-pressed=true] { background: #1f2430; color: #fff; border-color: #1f2430; }
 .rl-edited { margin: .2rem 0 .8rem; padding: .45rem .7rem; border: 1px solid #e6c47a; border-left: 4px solid #e69f00; border-radius: 6px;
   background: #fffaf0; font-size: .86rem; }
@@ -202,6 +207,7 @@ export const CSS = `
 .rl-author-field input, .rl-author-field textarea, .rl-author-field select, .rl-author-row input, .rl-author-row select {
   font: inherit; min-height: 28px; border: 1px solid #c9c5ba; border-radius: 5px; padding: .1rem .35rem; max-width: 100%; }
 .rl-author-check { display: flex; gap: .35rem; align-items: center; margin: .2rem 0; }
+.rl-author-check input { flex: none; }
 .rl-author-row { display: flex; flex-wrap: wrap; gap: .3rem; align-items: center; margin: .35rem 0; }
 .rl-author-row select { flex: 1 1 12rem; min-width: 0; }
 .rl-author-row input { width: 6rem; }
