@@ -3,6 +3,7 @@
 // installed package needs no configuration; `configure({ wasm })` takes a URL, a Response,
 // bytes or a compiled WebAssembly.Module instead (the one-file build passes its inlined bytes).
 import init from '../pkg/ruledlab.js';
+import { mark } from './timing.js';
 
 /** @typedef {string | URL | Response | BufferSource | WebAssembly.Module} WasmSource */
 
@@ -33,9 +34,11 @@ export function wasmSource() {
 
 /** Starts the core (once); resolves when its exports can be called. */
 export function start() {
-  ready ??= init({ module_or_path: /** @type {any} */ (wasmSource()) }).then(
-    (exports) => (instance = /** @type {any} */ (exports)),
-  );
+  ready ??= init({ module_or_path: /** @type {any} */ (wasmSource()) }).then((exports) => {
+    mark('ruledlab:wasm-compiled');
+    instance = /** @type {any} */ (exports);
+    return exports;
+  });
   return ready;
 }
 

@@ -9,6 +9,7 @@ import { PointBatch } from './gl/points.js';
 import { TriangleMesh } from './gl/mesh.js';
 import { STYLES, rgb, rgba, PALETTE } from './theme.js';
 import { appendRich } from './ui/richtext.js';
+import { mark, measured } from './timing.js';
 
 /**
  * What a layer draws with in one frame.
@@ -80,6 +81,9 @@ function crossing(
   }
   return inside / 13;
 }
+
+/** Whether a frame with a scene in it has been drawn on this page (ruledlab:first-frame). */
+let firstFrame = false;
 
 /** How long the camera must rest before the layers with a stand-in are drawn in full (ms). */
 const REST = 180;
@@ -202,11 +206,14 @@ export class Viewer {
     });
     this.batches = [];
     this.light = [];
-    if (this.built && !this.lost && !this.disposed) {
-      for (const layer of this.built.layers) {
-        this.batches.push(batch(gl, layer));
-        this.light.push(layer.moving ? batch(gl, layer.moving) : null);
-      }
+    const built = this.built;
+    if (built && !this.lost && !this.disposed) {
+      measured('ruledlab:upload', () => {
+        for (const layer of built.layers) {
+          this.batches.push(batch(gl, layer));
+          this.light.push(layer.moving ? batch(gl, layer.moving) : null);
+        }
+      });
     }
     this.requestRender();
   }
@@ -278,17 +285,23 @@ export class Viewer {
     const now = performance.now();
     if (now - this.lastFrameAt < 2000) this.frameGap = now - this.lastFrameAt;
     this.lastFrameAt = now;
-    for (const transparent of [false, true]) {
-      gl.depthMask(!transparent);
-      this.batches.forEach((full, i) => {
-        const b = (moving && this.light[i]) || full;
-        if (!!b.transparent === transparent) b.draw(gl, frame);
-      });
-    }
+    measured('ruledlab:draw', () => {
+      for (const transparent of [false, true]) {
+        gl.depthMask(!transparent);
+        this.batches.forEach((full, i) => {
+          const b = (moving && this.light[i]) || full;
+          if (!!b.transparent === transparent) b.draw(gl, frame);
+        });
+      }
+    });
     gl.depthMask(true);
     this.placeLabels(frame.viewProj);
     for (const overlay of this.overlays) overlay(frame.viewProj);
     this.frames++;
+    if (!firstFrame && this.batches.length) {
+      firstFrame = true;
+      mark('ruledlab:first-frame');
+    }
     this.onFrame?.(this.frames);
   }
 
