@@ -117,9 +117,13 @@ const common = {
   plugins: [siteUrls],
 };
 
+/** The files a build wrote in memory (write: false). */
+const outputs = (/** @type {import('esbuild').BuildResult} */ result) =>
+  /** @type {import('esbuild').OutputFile[]} */ (result.outputFiles);
+
 const worker = await build({ ...common, entryPoints: [join(ROOT, 'www/worker.js')], outfile: join(ASSETS, 'w.js') });
-const workerFile = `assets/worker-${hash(worker.outputFiles[0].contents)}.js`;
-put(workerFile, worker.outputFiles[0].contents);
+const workerFile = `assets/worker-${hash(outputs(worker)[0].contents)}.js`;
+put(workerFile, outputs(worker)[0].contents);
 urls.set(join(ROOT, 'www/worker.js'), `./${basename(workerFile)}`);
 
 const page = await build({
@@ -130,26 +134,26 @@ const page = await build({
   entryNames: '[name]-[hash]',
   chunkNames: '[name]-[hash]',
 });
-for (const file of page.outputFiles) put(relative(OUT, file.path), file.contents);
+for (const file of outputs(page)) put(relative(OUT, file.path), file.contents);
 const meta = /** @type {import('esbuild').Metafile} */ (page.metafile);
-const outputs = Object.fromEntries(Object.entries(meta.outputs).map(([p, o]) => [relative(OUT, resolve(ROOT, p)), o]));
-const entry = /** @type {string} */ (Object.keys(outputs).find((p) => outputs[p].entryPoint));
+const chunks = Object.fromEntries(Object.entries(meta.outputs).map(([p, o]) => [relative(OUT, resolve(ROOT, p)), o]));
+const entry = /** @type {string} */ (Object.keys(chunks).find((p) => chunks[p].entryPoint));
 /** The files a chunk imports statically, itself included (what loads with it). */
 const closure = (/** @type {string} */ start) => {
   const seen = new Set([start]);
   for (const file of seen)
-    for (const i of outputs[file].imports)
+    for (const i of chunks[file].imports)
       if (i.kind === 'import-statement' && !i.external) seen.add(relative(OUT, resolve(ROOT, i.path)));
   return [...seen];
 };
 const initial = closure(entry);
 /** The output chunk holding the source module `source`. */
 const chunkOf = (/** @type {string} */ source) =>
-  Object.keys(outputs).find((p) => Object.keys(outputs[p].inputs).includes(source));
+  Object.keys(chunks).find((p) => Object.keys(chunks[p].inputs).includes(source));
 
 const boot = await build({ ...common, entryPoints: [join(ROOT, 'www/boot.js')], format: 'iife', outfile: 'b.js' });
-const bootFile = `assets/boot-${hash(boot.outputFiles[0].contents)}.js`;
-put(bootFile, boot.outputFiles[0].contents);
+const bootFile = `assets/boot-${hash(outputs(boot)[0].contents)}.js`;
+put(bootFile, outputs(boot)[0].contents);
 
 // the page: the repository's index.html with every reference to a file of www/ made hashed,
 // and the chunks the entry imports announced at once (modulepreload: fetched in parallel
@@ -166,10 +170,12 @@ for (const [from, to] of Object.entries(references)) {
   if (!html.includes(`"${from}"`)) throw new Error(`index.html does not name ${from}`);
   html = html.replaceAll(`"${from}"`, `"${to}"`);
 }
-const preloads = initial
-  .filter((p) => p !== entry)
-  .map((p) => `  <link rel="modulepreload" href="${p}">\n`)
-  .join('');
+// and the core (fetched by the entry's first statement otherwise: one round trip later, after
+// the chunks; `crossorigin`: the same request as the fetch of wasm-bindgen's loader, so it is used)
+const preloads = [
+  `  <link rel="preload" href="${wasm}" as="fetch" type="application/wasm" crossorigin>\n`,
+  ...initial.filter((p) => p !== entry).map((p) => `  <link rel="modulepreload" href="${p}">\n`),
+].join('');
 if (preloads) html = html.replace(/(\n\s*<script type="module")/, `\n${preloads.trimEnd()}$1`);
 if (/\bwww\//.test(html)) throw new Error('dist/web/index.html still names a file of www/');
 put('index.html', html);

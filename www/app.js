@@ -4,15 +4,15 @@
 // the previous scene) and the Share dialog (share.js). This module puts them together.
 import { liveObjects } from '../pkg/ruledlab.js';
 import { start, memoryBytes } from './core.js';
+import { afterPaint, nextTask } from './tasks.js';
 import { Stage } from './stage.js';
 import { SCENES } from './scenes/index.js';
 import { findPreset } from './paper.js';
 import { readState } from './state.js';
-import { translator, pickLanguage } from './i18n/index.js';
+import { translator, pickLanguage, loadLanguage } from './i18n/translate.js';
 import { adoptStyles } from './ui/css.js';
 import { showFailure } from './ui/failure.js';
 import { storedHash } from './export/onefile.js';
-import { shareDialog } from './share.js';
 import { stored } from './platform.js';
 import { pageChrome, plainTitle } from './page/chrome.js';
 import { dataPanel, parseStored, STORED } from './page/data-panel.js';
@@ -27,11 +27,20 @@ import { keepInput, keptInput } from './page/stored-input.js';
 export async function startPage({ oneFile = false, embedScript } = {}) {
   const doc = document;
   adoptStyles(doc);
-  await start();
-  let state = readState(location.hash || (oneFile ? `#${storedHash()}` : ''), SCENES);
-  let lang = pickLanguage(state.lang);
+  // the core downloads and compiles while the page around the view is built, each part in a
+  // task of its own (tasks.js); the link is read once the core is there (its values are checked
+  // against the core's catalogue)
+  const core = start();
+  core.catch(() => {});
+  const link = new URLSearchParams((location.hash || (oneFile ? `#${storedHash()}` : '')).replace(/^#/, ''));
+  /** @type {import('./state.js').ViewState} */
+  let state;
+  let lang = pickLanguage(link.get('lang'));
+  await Promise.all([loadLanguage(lang), nextTask()]);
   let i18n = translator(lang);
 
+  // "Loading …" (boot.js) goes over the view while the core loads, and says why if it cannot start
+  const boot = doc.getElementById('boot');
   const chrome = pageChrome(doc);
   const share = /** @type {HTMLDialogElement} */ (
     Object.assign(doc.createElement('dialog'), { className: 'share', id: 'share-dialog' })
@@ -52,7 +61,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   const stage = new Stage(chrome.main, {
     lang,
     page: true,
-    editable: !state.embed || !!state.edit,
+    editable: !link.has('embed') || link.has('edit'),
     onChange: ({ reason, ended }) => {
       // an edit too large for the link stays in the tab (and the page says so)
       if (ended && stage.scene && (reason === 'input' || reason === 'reset')) {
@@ -99,7 +108,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   /** Opens the state of the current address (on load, Back/Forward, or an edited link). */
   const openAddress = async () => {
     state = readState(address.current(), SCENES);
-    if (state.lang && pickLanguage(state.lang) !== lang) setLanguage(pickLanguage(state.lang), false);
+    if (state.lang && pickLanguage(state.lang) !== lang) await setLanguage(pickLanguage(state.lang), false);
     doc.body.classList.toggle('embed', state.embed);
     stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
     stage.setEditable(!state.embed || !!state.edit);
@@ -119,13 +128,14 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   };
 
   /** @param {string} code @param {boolean} [write] */
-  const setLanguage = (code, write = true) => {
+  const setLanguage = async (code, write = true) => {
+    await loadLanguage(code);
     lang = code;
     i18n = translator(lang);
     state.lang = code;
     stage.setLanguage(code);
     localize();
-    if (share.open) sharing.open();
+    if (share.open) openShare();
     if (write) address.save('replace');
   };
 
@@ -142,20 +152,36 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   window.addEventListener('popstate', () => openAddress());
   window.addEventListener('hashchange', () => openAddress());
 
-  // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file
-  const sharing = shareDialog(share, {
-    stage,
-    i18n: () => i18n,
-    state: () => ({ .../** @type {NonNullable<ReturnType<typeof shown>>} */ (shown()), lang }),
-    oneFile,
-    embedScript,
-  });
-  chrome.shareButton.addEventListener('click', () => sharing.open());
+  // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file (share.js,
+  // loaded when the dialog first opens)
+  /** @type {Promise<{open: () => Promise<void>}> | null} */
+  let sharing = null;
+  const openShare = () => {
+    sharing ??= import('./share.js').then(({ shareDialog }) =>
+      shareDialog(share, {
+        stage,
+        i18n: () => i18n,
+        state: () => ({ .../** @type {NonNullable<ReturnType<typeof shown>>} */ (shown()), lang }),
+        oneFile,
+        embedScript,
+      }),
+    );
+    return sharing.then((dialog) => dialog.open());
+  };
+  chrome.shareButton.addEventListener('click', () => openShare());
 
   stage.viewer.onFrame = (n) => {
     doc.body.dataset.frames = String(n);
   };
   localize();
+  if (boot) stage.view.append(boot);
+  // the linked scene's heading and explanation while the core loads (a view in a frame, which
+  // may show no text, waits for the link to be read)
+  if (!link.has('embed'))
+    stage.preview(
+      SCENES.find((s) => s.id === (link.get('scene') ?? findPreset(link.get('paper'))?.scene)) ?? SCENES[0],
+    );
+  await Promise.all([core, afterPaint()]);
   await openAddress();
   address.save('replace');
   doc.getElementById('boot')?.remove();

@@ -1,7 +1,8 @@
 // User Timing of the page: marks and measures named "ruledlab:…" in the performance timeline,
 // so the browser's performance panel and the page benchmark (bench/lighthouse.mjs) show where
 // the time goes. The page sets ruledlab:wasm-compiled (core.js: the module compiled and
-// instantiated), ruledlab:first-frame (viewer.js: the first frame of a scene drawn), and the
+// instantiated), ruledlab:first-frame (viewer.js: the first frame of a scene drawn) and
+// ruledlab:first-frame-presented (the next animation frame: the GPU's part of it done), and the
 // measures ruledlab:compute (a scene's create(): the core and the buffers it returns),
 // ruledlab:upload (buffers to the GPU, shaders compiled) and ruledlab:draw (a frame's draw
 // calls); the core's own operations are measured by the bindings (ruledlab:core:…,
