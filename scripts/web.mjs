@@ -189,7 +189,8 @@ let compressed = 0;
 for (const path of written) {
   if (BINARY.has(extname(path))) continue;
   const file = join(OUT, path);
-  if (existsSync(`${file}.gz`) && existsSync(`${file}.br`)) continue;
+  if (existsSync(`${file}.gz`) && existsSync(`${file}.br`) && statSync(file).mtimeMs <= statSync(`${file}.br`).mtimeMs)
+    continue;
   const bytes = readFileSync(file);
   const gz = gzipSync(bytes, { level: 9 });
   const br = brotliCompressSync(bytes, {
@@ -199,8 +200,9 @@ for (const path of written) {
       [constants.BROTLI_PARAM_SIZE_HINT]: bytes.length,
     },
   });
-  writeFileSync(`${file}.gz`, gz);
-  writeFileSync(`${file}.br`, br);
+  // (a file too small to gain goes as it is)
+  if (gz.length < bytes.length) writeFileSync(`${file}.gz`, gz);
+  if (br.length < bytes.length) writeFileSync(`${file}.br`, br);
   compressed++;
 }
 // what older builds left
