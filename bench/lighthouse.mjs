@@ -1,16 +1,17 @@
 // Lighthouse on the served production page (dist/web/, `npm run build`) and on the one-file build
-// (dist/ruledlab.html, served the same way), mobile and desktop profiles, three scenes; the scores,
-// LCP, TBT, transfer size and requests of each run and the page's own User Timing marks: when the
-// wasm was compiled, when the first frame was drawn, and the time spent in the core, in uploading
-// the buffers to WebGL and in drawing before it. Lighthouse is installed on demand (pinned,
-// into target/lighthouse/: not a dependency of the package, not needed by `npm test`). Rewrites
-// the README's block "bench-lighthouse".
+// (dist/ruledlab.html, served the same way), mobile and desktop profiles, three scenes: the scores,
+// LCP, TBT, transfer size and requests of each, and the page's own User Timing marks (www/timing.js,
+// src/wasm/timing.rs): when the wasm was compiled, when the first frame was drawn and presented,
+// the time in the core, in the scenes' create() and in uploading before it, and the tasks before
+// and of the first frame — so a goal missed because this machine draws WebGL in software shows as
+// such. Lighthouse is installed on demand (pinned, into target/lighthouse/: not a dependency of
+// the package, not needed by `npm test`). Rewrites the README's block "bench-lighthouse".
 //
 //   node bench/lighthouse.mjs [--root DIR] [--page PATH] [--onefile PATH] [--runs N] [--json FILE] [--no-readme]
 //
 // --root: the directory served (default dist/web); --page: the page's path in it (default: the
 // directory's index.html); --onefile: the one-file build's path in it (default dist/ruledlab.html);
-// --runs: runs per case, the median kept (by performance score); --json: all results as JSON.
+// --runs: runs per case (default 3), the median kept (by performance score); --json: every result.
 import { execFile, execFileSync } from 'node:child_process';
 import { promisify } from 'node:util';
 import { cpus, tmpdir } from 'node:os';
@@ -34,7 +35,7 @@ const { values: args } = parseArgs({
     root: { type: 'string', default: join(REPO, 'dist/web') },
     page: { type: 'string', default: '' },
     onefile: { type: 'string', default: 'dist/ruledlab.html' },
-    runs: { type: 'string', default: '1' },
+    runs: { type: 'string', default: '3' },
     json: { type: 'string' },
     'no-readme': { type: 'boolean', default: false },
   },
@@ -68,12 +69,15 @@ function lighthouseBin() {
  * @property {number} tbt            ms (simulated)
  * @property {number} bytes          transferred
  * @property {number} requests
+ * @property {number} slowdown       the profile's CPU slowdown (4 on the phone, 1 on the desktop)
  * @property {number | null} wasm    ms from navigation to the mark ruledlab:wasm-compiled (observed)
- * @property {number | null} frame   ms to ruledlab:first-frame (observed)
+ * @property {number | null} frame   ms to ruledlab:first-frame: the first frame's draw calls made (observed)
+ * @property {number | null} presented  ms to ruledlab:first-frame-presented: the next frame begun (observed)
  * @property {number} core           ms in the core's measures (ruledlab:core:…) before the first frame
- * @property {number} upload         ms in ruledlab:upload before the first frame
- * @property {number} draw           ms in ruledlab:draw up to the first frame
- * @property {number} longest        ms, the longest main-thread task before the first frame (observed)
+ * @property {number} compute        ms in ruledlab:compute (the scenes' create(): core and buffers) before it
+ * @property {number} upload         ms in ruledlab:upload (buffers and shaders to the GPU) before it
+ * @property {number} frameTask      ms, the main-thread task that drew the first frame (observed)
+ * @property {number} longest        ms, the longest main-thread task before that one (observed)
  */
 
 /**
@@ -118,7 +122,7 @@ async function runOnce(bin, url, profile) {
 }
 
 /**
- * What the table shows of a report.
+ * What the tables show of a report.
  * @param {any} report @returns {Omit<Result, 'build' | 'profile' | 'scene'>}
  */
 export function summarize(report) {
@@ -126,8 +130,9 @@ export function summarize(report) {
   const c = report.categories;
   /** @type {Array<{name: string, timingType: string, startTime: number, duration?: number}>} */
   const timings = a['user-timings']?.details?.items ?? [];
-  const mark = (/** @type {string} */ name) => timings.find((t) => t.name === name && t.timingType === 'Mark');
-  const frame = mark('ruledlab:first-frame')?.startTime ?? null;
+  const mark = (/** @type {string} */ name) =>
+    timings.find((t) => t.name === name && t.timingType === 'Mark')?.startTime ?? null;
+  const frame = mark('ruledlab:first-frame');
   const before = (/** @type {string} */ prefix) =>
     timings
       .filter((t) => t.timingType === 'Measure' && t.name.startsWith(prefix))
@@ -135,8 +140,9 @@ export function summarize(report) {
       .reduce((sum, t) => sum + (t.duration ?? 0), 0);
   /** @type {Array<{startTime: number, duration: number}>} */
   const tasks = a['main-thread-tasks']?.details?.items ?? [];
+  const drawing = tasks.find((t) => frame !== null && t.startTime <= frame && frame <= t.startTime + t.duration);
   const longest = tasks
-    .filter((t) => frame === null || t.startTime <= frame)
+    .filter((t) => t !== drawing && (drawing === undefined || t.startTime < drawing.startTime))
     .reduce((most, t) => Math.max(most, t.duration), 0);
   return {
     performance: c.performance.score,
@@ -146,11 +152,14 @@ export function summarize(report) {
     tbt: a['total-blocking-time'].numericValue,
     bytes: a['total-byte-weight'].numericValue,
     requests: a['network-requests'].details.items.length,
-    wasm: mark('ruledlab:wasm-compiled')?.startTime ?? null,
+    slowdown: report.configSettings.throttling.cpuSlowdownMultiplier,
+    wasm: mark('ruledlab:wasm-compiled'),
     frame,
+    presented: mark('ruledlab:first-frame-presented'),
     core: before('ruledlab:core:'),
+    compute: before('ruledlab:compute'),
     upload: before('ruledlab:upload'),
-    draw: before('ruledlab:draw'),
+    frameTask: drawing?.duration ?? 0,
     longest,
   };
 }
@@ -178,7 +187,7 @@ try {
         const r = median(runs);
         results.push(r);
         console.log(
-          `${build} ${profile} ${scene}: performance ${r.performance}, LCP ${r.lcp.toFixed(0)} ms, TBT ${r.tbt.toFixed(0)} ms, ${(r.bytes / 1024).toFixed(0)} KiB in ${r.requests} requests; wasm ${r.wasm?.toFixed(0)} ms, first frame ${r.frame?.toFixed(0)} ms (core ${r.core.toFixed(0)}, upload ${r.upload.toFixed(0)}, draw ${r.draw.toFixed(0)}); a11y ${r.accessibility}, best practices ${r.bestPractices}`,
+          `${build} ${profile} ${scene}: performance ${r.performance}, LCP ${r.lcp.toFixed(0)} ms, TBT ${r.tbt.toFixed(0)} ms, ${(r.bytes / 1024).toFixed(0)} KiB in ${r.requests} requests; wasm ${r.wasm?.toFixed(0)} ms, first frame ${r.frame?.toFixed(0)} ms, presented ${r.presented?.toFixed(0)} ms, its task ${r.frameTask.toFixed(0)} ms; a11y ${r.accessibility}, best practices ${r.bestPractices}`,
         );
       }
     }
@@ -188,7 +197,8 @@ try {
 }
 if (args.json) writeFileSync(args.json, `${JSON.stringify(results, null, 2)}\n`);
 
-const ms = (/** @type {number | null} */ x) => (x === null ? '—' : `${(x / 1000).toFixed(2)} s`);
+const seconds = (/** @type {number} */ x) => `${(x / 1000).toFixed(2)} s`;
+const ms = (/** @type {number | null} */ x) => (x === null ? '—' : `${x.toFixed(0)} ms`);
 const date = new Date().toISOString().slice(0, 10);
 const mobile = results.filter((r) => r.profile === 'mobile');
 /** "met" or "not met", with the cases that miss. @param {(r: Result) => boolean} ok @param {Result[]} of */
@@ -198,23 +208,35 @@ const status = (ok, of) => {
     ? `met in all ${of.length}`
     : `not met in ${missed.length} of ${of.length} (${missed.map((r) => `${r.build} ${r.profile} ${r.scene}`).join(', ')})`;
 };
+/** The blocking time (in the simulation) of the task that drew the first frame: its excess over 50 ms. */
+const frameBlocking = (/** @type {Result} */ r) => Math.max(0, r.slowdown * r.frameTask - 50);
+const name = (/** @type {Result} */ r) => `${r.build} | ${r.profile} | ${r.scene}`;
 const block = [
   `<!-- written by bench/lighthouse.mjs (npm run bench) on ${date} -->`,
   '',
-  `Lighthouse ${LIGHTHOUSE} (simulated throttling: the mobile profile is a mid-range phone on slow 4G, 4× CPU slowdown) on this machine (${cpus().length} cores, headless Chromium, software WebGL), ${date}. LCP and TBT are Lighthouse's simulation; the marks are what the page measured itself in the same unthrottled load (ms from navigation): the wasm compiled and instantiated, the first frame drawn, and before it the time in the core (\`ruledlab:core:…\`, set by the bindings), in uploading buffers and compiling shaders (\`ruledlab:upload\`) and in drawing (\`ruledlab:draw\`), and the longest main-thread task before it.`,
+  `Lighthouse ${LIGHTHOUSE} on the served production page and the one-file build, ${date}, this machine (${cpus().length} cores, headless Chromium, software WebGL). Lighthouse simulates the mobile profile (a mid-range phone: 4× CPU slowdown, slow 4G of 1.6 Mbit/s with 150 ms round trips) from one unthrottled load; LCP and TBT are its simulation.`,
   '',
-  '| build | profile | scene | performance | LCP | TBT | transferred | requests | wasm compiled | first frame | core | upload | draw | longest task | accessibility | best practices |',
-  '|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
+  '| build | profile | scene | performance | LCP | TBT | transferred | requests | accessibility | best practices |',
+  '|---|---|---|---:|---:|---:|---:|---:|---:|---:|',
   ...results.map(
     (r) =>
-      `| ${r.build} | ${r.profile} | ${r.scene} | ${r.performance.toFixed(2)} | ${ms(r.lcp)} | ${r.tbt.toFixed(0)} ms | ${(r.bytes / 1024).toFixed(0)} KiB | ${r.requests} | ${r.wasm === null ? '—' : `${r.wasm.toFixed(0)} ms`} | ${r.frame === null ? '—' : `${r.frame.toFixed(0)} ms`} | ${r.core.toFixed(0)} ms | ${r.upload.toFixed(0)} ms | ${r.draw.toFixed(0)} ms | ${r.longest.toFixed(0)} ms | ${r.accessibility.toFixed(2)} | ${r.bestPractices.toFixed(2)} |`,
+      `| ${name(r)} | ${r.performance.toFixed(2)} | ${seconds(r.lcp)} | ${r.tbt.toFixed(0)} ms | ${(r.bytes / 1024).toFixed(0)} KiB | ${r.requests} | ${r.accessibility.toFixed(2)} | ${r.bestPractices.toFixed(2)} |`,
+  ),
+  '',
+  "The page's own marks in the same loads (unthrottled, ms from navigation): the wasm compiled and instantiated; the first frame's draw calls made; the next frame begun (the GPU's part done: here SwiftShader draws, and the frame is read back for the software compositor); before the first frame the time in the core (`ruledlab:core:…`, set by the bindings), in the scenes' `create()` (core and buffers) and in uploading buffers; the main-thread task that drew the first frame, and the longest task before it. In the simulation every task is as many times longer as the CPU is slower: the last column is the blocking time the first frame's task alone adds to TBT.",
+  '',
+  '| build | profile | scene | wasm compiled | first frame | presented | core | create() | upload | first frame task | longest task before it | its TBT share |',
+  '|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
+  ...results.map(
+    (r) =>
+      `| ${name(r)} | ${ms(r.wasm)} | ${ms(r.frame)} | ${ms(r.presented)} | ${ms(r.core)} | ${ms(r.compute)} | ${ms(r.upload)} | ${ms(r.frameTask)} | ${ms(r.longest)} | ${ms(frameBlocking(r))} |`,
   ),
   '',
   '| goal | where it stands |',
   '|---|---|',
   `| mobile performance ≥ ${GOALS.performance} | ${status((r) => r.performance >= GOALS.performance, mobile)} |`,
   `| mobile LCP ≤ ${GOALS.lcp / 1000} s | ${status((r) => r.lcp <= GOALS.lcp, mobile)} |`,
-  `| mobile TBT ≤ ${GOALS.tbt} ms | ${status((r) => r.tbt <= GOALS.tbt, mobile)} |`,
+  `| mobile TBT ≤ ${GOALS.tbt} ms | ${status((r) => r.tbt <= GOALS.tbt, mobile)}; without the first frame's task: ${status((r) => r.tbt - frameBlocking(r) <= GOALS.tbt, mobile)} |`,
   `| accessibility 1.0 | ${status((r) => r.accessibility >= GOALS.accessibility, results)} |`,
   `| best practices 1.0 | ${status((r) => r.bestPractices >= GOALS.bestPractices, results)} |`,
 ].join('\n');
