@@ -5,7 +5,8 @@
 //     main-<hash>.js          the page's entry, bundled and minified with esbuild, and the
 //     chunk-<hash>.js         chunks it shares with what loads on demand (split at the page's
 //                             dynamic imports: the other language, the Share dialog, the
-//                             figure exports); boot-<hash>.js the classic start-up message
+//                             figure exports, the exercise author); boot-<hash>.js the
+//                             classic start-up message
 //     worker-<hash>.js        the refinement worker, one module
 //     ruledlab_bg-<hash>.wasm the core (fetched and compiled by WebAssembly.instantiateStreaming)
 //     style-, noscript-, favicon-<hash>.*
@@ -31,6 +32,7 @@ const LAZY = {
   'the other language': ['www/i18n/de.js'],
   'the Share dialog': ['www/share.js'],
   'the figure exports': ['www/export/svg.js', 'www/export/tikz.js', 'www/export/png.js'],
+  'the exercise author': ['www/task/author.js'],
 };
 /** `new URL(…, import.meta.url)` targets the bundles may keep as they are, and why. */
 const UNUSED = {

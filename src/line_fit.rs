@@ -7,7 +7,10 @@
 //! (nalgebra's `SymmetricEigen`); it minimises Σ dist(p_k, line)². The **deviation** reported is
 //! the largest distance of a point from that line,
 //!   max_k |(p_k − c) − ((p_k − c)·d) d|,                                              (F1)
-//! zero exactly when the points are collinear, and invariant under rigid motions.
+//! zero exactly when the points are collinear, and invariant under rigid motions. The **extent**
+//! is the length of the points' shadow on the line,
+//!   max_k (p_k − c)·d − min_k (p_k − c)·d,                                         (F2)
+//! so that deviation / extent says how straight the points are whatever their scale.
 
 use crate::error::{Error, Result};
 use glam::DVec3;
@@ -22,6 +25,8 @@ pub struct LineFit {
     pub direction: DVec3,
     /// The largest distance of a point from the line (F1).
     pub deviation: f64,
+    /// The length of the points' shadow on the line (F2).
+    pub extent: f64,
 }
 
 /// The least-squares line of `points` (at least two, all finite, not all equal).
@@ -46,14 +51,15 @@ pub fn fit_line(points: &[DVec3]) -> Result<LineFit> {
     let k = eigen.eigenvalues.imax();
     let e = eigen.eigenvectors.column(k);
     let direction = DVec3::new(e[0], e[1], e[2]).normalize();
-    let deviation = points
-        .iter()
-        .map(|p| {
-            let q = *p - c;
-            (q - q.dot(direction) * direction).length()
-        })
-        .fold(0.0, f64::max);
-    Ok(LineFit { point: c, direction, deviation })
+    let (mut deviation, mut low, mut high) = (0.0_f64, f64::INFINITY, f64::NEG_INFINITY);
+    for p in points {
+        let q = *p - c;
+        let along = q.dot(direction);
+        deviation = deviation.max((q - along * direction).length());
+        low = low.min(along);
+        high = high.max(along);
+    }
+    Ok(LineFit { point: c, direction, deviation, extent: high - low })
 }
 
 #[cfg(test)]
@@ -70,6 +76,8 @@ mod tests {
         let fit = fit_line(&points).unwrap();
         assert!(fit.deviation < 1e-13, "deviation {}", fit.deviation);
         assert_near!(fit.direction.dot(d).abs(), 1.0, 1e-14);
+        // the shadow runs from the first point to the last: 49 steps of 0.37 (F2)
+        assert_near!(fit.extent, 49.0 * 0.37, 1e-12);
         // the centroid is the mean of the parameters' points
         let mean = points.iter().copied().sum::<DVec3>() / 50.0;
         assert!((fit.point - mean).length() < 1e-14);
@@ -87,6 +95,7 @@ mod tests {
         let fit = fit_line(&points).unwrap();
         assert_near!(fit.direction.x.abs(), 1.0, 1e-15);
         assert_near!(fit.deviation, 1.0, 1e-15);
+        assert_near!(fit.extent, 4.0, 1e-15);
         assert!(fit.point.length() < 1e-15);
     }
 
@@ -108,7 +117,19 @@ mod tests {
         let moved: Vec<DVec3> = points.iter().map(|p| q * *p + DVec3::new(-3.0, 4.0, 7.0)).collect();
         let other = fit_line(&moved).unwrap();
         assert_near!(other.deviation, fit.deviation, 1e-12);
+        assert_near!(other.extent, fit.extent, 1e-12);
         assert_near!(other.direction.dot(q * fit.direction).abs(), 1.0, 1e-12);
+    }
+
+    #[test]
+    fn deviation_over_extent_does_not_depend_on_scale() {
+        let points: Vec<DVec3> = (0..30).map(|k| DVec3::new(k as f64, (k as f64 * 0.3).cos(), 0.0)).collect();
+        let fit = fit_line(&points).unwrap();
+        for scale in [1e-9, 1e-3, 1e4] {
+            let scaled: Vec<DVec3> = points.iter().map(|p| *p * scale).collect();
+            let other = fit_line(&scaled).unwrap();
+            assert_near!(other.deviation / other.extent, fit.deviation / fit.extent, 1e-12);
+        }
     }
 
     #[test]

@@ -18,6 +18,15 @@ import { pageChrome, plainTitle } from './page/chrome.js';
 import { dataPanel, parseStored, STORED } from './page/data-panel.js';
 import { pageAddress } from './page/address.js';
 import { keepInput, keptInput } from './page/stored-input.js';
+import { readParams, withChoices as withChoicesOf } from './scene.js';
+import { builtInTask } from './task/builtin.js';
+import { taskFromLink, taskLink } from './task/format.js';
+import { fitTask } from './task/check.js';
+import { markSolved } from './task/progress.js';
+import { postToParent } from './task/message.js';
+import { taskErrorText } from './task/words.js';
+import { encodeInput } from './edit/input.js';
+import { readTask, say } from './task/format.js';
 
 /**
  * The page (see the module documentation).
@@ -56,6 +65,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       data: stage.data,
       input: stage.input,
       paper: stage.paper?.id ?? null,
+      task: stage.task ? taskLink(stage.task, (id) => builtInTask(id) !== null) : null,
     };
   const address = pageAddress({ oneFile, state: shown });
   const stage = new Stage(chrome.main, {
@@ -73,6 +83,25 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     onBuilt: (built) => data.update(built),
     onEditAsData: (imported) =>
       go(/** @type {import('./scene.js').Scene} */ (SCENES.find((s) => s.id === 'data')), {}, { data: imported }),
+    onTask: (type, report) => {
+      // solved exercises are marked in the menu (where the browser keeps anything)
+      if (type === 'solved') {
+        markSolved(report.task);
+        localize();
+      }
+      const input = stage.input;
+      postToParent(type, report, {
+        scene: stage.scene?.id ?? '',
+        params: { ...stage.params },
+        input: input ? encodeInput(input) : null,
+      });
+    },
+    onLeaveTask: () => {
+      stage.openTask(null).then(() => {
+        address.save('push');
+        localize();
+      });
+    },
   });
   doc.body.append(share);
 
@@ -88,6 +117,17 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     });
   const data = dataPanel(stage, {
     i18n: () => i18n,
+    // an exercise file, pasted or uploaded: opened as the exercise (its reason when it cannot be)
+    onTask: async (json) => {
+      try {
+        await openTaskOf(readTask(json), true);
+        address.save('push');
+        localize();
+        return null;
+      } catch (e) {
+        return taskErrorText(e, i18n);
+      }
+    },
     // tool poses go to the milling scene, segments to "Your data"
     onData: (imported) =>
       go(
@@ -101,7 +141,11 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   const localize = () => {
     doc.documentElement.lang = lang;
     doc.title = `ruledlab · ${plainTitle(i18n.t(stage.scene?.title ?? 'app.subtitle'))}`;
-    chrome.localize(i18n, lang, { scene: stage.scene?.id ?? null, paper: stage.paper?.id ?? null });
+    chrome.localize(i18n, lang, {
+      scene: stage.scene?.id ?? null,
+      paper: stage.paper?.id ?? null,
+      task: stage.task?.id ?? null,
+    });
     data.localize();
   };
 
@@ -112,6 +156,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     doc.body.classList.toggle('embed', state.embed);
     stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
     stage.setEditable(!state.embed || !!state.edit);
+    // an exercise: its scene and start, with the reader's progress from the link
+    if (state.task && (await openTask(state.task))) return localize();
     const text = stored(STORED);
     // an edit: the link's, or one too large for it that this tab kept
     const input = state.input ?? keptInput(state.scene.id);
@@ -125,6 +171,47 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       inputNote: input && !state.input ? keepInput(state.scene.id, input) : '',
     });
     localize();
+  };
+
+  /**
+   * Opens the exercise of a link value (a built-in id, or "j." and its JSON) with the reader's
+   * progress from the address; false (and a note) when it cannot be read or does not fit.
+   * @param {string} value
+   * @param {boolean} [fresh]   from its start, whatever the address holds (the menu, "Try it")
+   */
+  const openTask = async (value, fresh = false) => {
+    try {
+      await openTaskOf(taskFromLink(value, builtInTask), fresh);
+      return true;
+    } catch (e) {
+      state.notes.push({ key: 'task', note: 'note.badTask', vars: { reason: taskErrorText(e, i18n) } });
+      return false;
+    }
+  };
+
+  /**
+   * Opens an exercise (throws a TaskError where it does not fit its scene).
+   * @param {import('./task/format.js').Task} task
+   * @param {boolean} fresh
+   */
+  const openTaskOf = async (task, fresh) => {
+    const scene = fitTask(task, SCENES, (params, input) => {
+      const s = /** @type {import('./scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
+      return s.create(withChoicesOf(s, { ...task.params, ...params }), {
+        t: i18n.t,
+        format: i18n.format,
+        lang,
+        ...(input ? { input } : {}),
+      });
+    });
+    const q = new URLSearchParams(fresh ? '' : address.current().replace(/^#/, ''));
+    const read = readParams(scene, q).params;
+    const params = Object.fromEntries(Object.entries(read).filter(([k]) => q.has(k)));
+    await stage.openTask(
+      task,
+      scene,
+      fresh ? {} : { params, input: state.input, camera: state.camera, notes: state.notes },
+    );
   };
 
   /** @param {string} code @param {boolean} [write] */
@@ -149,14 +236,23 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     if (scene) go(scene, preset ? preset.params : stage.params, { paper: preset ?? null });
   });
   chrome.langPicker.addEventListener('change', () => setLanguage(chrome.langPicker.value));
+  chrome.taskPicker.addEventListener('change', () => {
+    const id = chrome.taskPicker.value;
+    if (!id) return stage.task && stage.openTask(null).then(() => address.save('push'));
+    openTask(id, true).then((opened) => {
+      if (opened) address.save('push');
+      localize();
+    });
+  });
   window.addEventListener('popstate', () => openAddress());
   window.addEventListener('hashchange', () => openAddress());
 
-  // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file (share.js,
-  // loaded when the dialog first opens)
-  /** @type {Promise<{open: () => Promise<void>}> | null} */
+  // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file, and "Make an
+  // exercise" from the view on screen (Share → Make an exercise) — share.js and task/author.js,
+  // loaded when first opened
+  /** @type {Promise<ReturnType<import('./share.js').shareDialog>> | null} */
   let sharing = null;
-  const openShare = () => {
+  const shareModule = () => {
     sharing ??= import('./share.js').then(({ shareDialog }) =>
       shareDialog(share, {
         stage,
@@ -164,9 +260,40 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
         state: () => ({ .../** @type {NonNullable<ReturnType<typeof shown>>} */ (shown()), lang }),
         oneFile,
         embedScript,
+        author: () => authoring().then((author) => author.show()),
       }),
     );
-    return sharing.then((dialog) => dialog.open());
+    return sharing;
+  };
+  const openShare = () => shareModule().then((dialog) => dialog.open());
+  /** @type {Promise<import('./task/author.js').Author> | null} */
+  let author = null;
+  const authoring = () => {
+    author ??= import('./task/author.js').then(
+      ({ Author }) =>
+        new Author(stage.authorBox, {
+          i18n: () => i18n,
+          stage: () => stage,
+          snippets: (task) =>
+            shareModule().then((dialog) =>
+              dialog.taskSnippets(
+                taskLink(task, (id) => builtInTask(id) !== null),
+                say(task.title, lang),
+              ),
+            ),
+          tryIt: (task) => {
+            authoring().then((made) => made.close());
+            openTask(
+              taskLink(task, (id) => builtInTask(id) !== null),
+              true,
+            ).then((opened) => {
+              if (opened) address.save('push');
+              localize();
+            });
+          },
+        }),
+    );
+    return author;
   };
   chrome.shareButton.addEventListener('click', () => openShare());
 
@@ -176,8 +303,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   localize();
   if (boot) stage.view.append(boot);
   // the linked scene's heading and explanation while the core loads (a view in a frame, which
-  // may show no text, waits for the link to be read)
-  if (!link.has('embed'))
+  // may show no text, and an exercise, which may hide some, wait for the link to be read)
+  if (!link.has('embed') && !link.has('task'))
     stage.preview(
       SCENES.find((s) => s.id === (link.get('scene') ?? findPreset(link.get('paper'))?.scene)) ?? SCENES[0],
     );

@@ -65,6 +65,11 @@ export const DRAG_SLOP = 3;
 
 /** Points of an exact striction curve whose straightness is measured (an exercise's "straight line"). */
 export const STRAIGHTNESS_SAMPLES = 201;
+/**
+ * A striction curve shorter than this share of its surface's size is too short to call straight
+ * or not (a tiny range of u would make any curve "straight"): its straightness is undefined.
+ */
+export const STRAIGHTNESS_MIN_EXTENT = 1e-3;
 
 /**
  * Most triangles of one mesh drawn in a figure (SVG, TikZ): a larger mesh is drawn by its lighter

@@ -100,3 +100,41 @@ export function writeHistory(mode, hash) {
 export function canFullscreen(/** @type {Document} */ doc = document) {
   return doc.fullscreenEnabled === true && typeof doc.documentElement.requestFullscreen === 'function';
 }
+
+/**
+ * The browser's lasting storage (kept between visits), or null where there is none: a sandboxed
+ * frame throws on the mere access, a browser with storage off on use.
+ * @returns {Storage | null}
+ */
+function lasting() {
+  try {
+    const s = globalThis.localStorage;
+    const probe = 'ruledlab.probe';
+    s.setItem(probe, '1');
+    s.removeItem(probe);
+    return s;
+  } catch {
+    return null;
+  }
+}
+
+/** A text kept between visits, or null (also where there is no storage). */
+export function kept(/** @type {string} */ key) {
+  try {
+    return lasting()?.getItem(key) ?? null;
+  } catch {
+    return null;
+  }
+}
+
+/** Keeps `value` under `key` between visits; false where there is no storage or it is full. */
+export function keep(/** @type {string} */ key, /** @type {string} */ value) {
+  const s = lasting();
+  if (!s) return false;
+  try {
+    s.setItem(key, value);
+    return true;
+  } catch {
+    return false;
+  }
+}

@@ -17,7 +17,9 @@
 // replaces the input); set to `{ segments: Float64Array, rows?, cols? }` it shows your own
 // rulings or congruence in the "data" scene. `height` sizes the element (pixels or a CSS length,
 // without an inline style a strict Content-Security-Policy would refuse). `handles()` lists every handle with its position
-// in the element. Events: `input` during a drag and `change` at its end (detail: { scene, data,
+// in the element. `task` shows an exercise (a built-in one's id, or the page's "j." link value;
+// README, "Exercises"): `task-check` and `task-solved` report how it stands (also posted to the
+// parent window of a frame). Events: `input` during a drag and `change` at its end (detail: { scene, data,
 // readouts }), `scene-change` (detail: { scene, params }), `view-change` (detail: the
 // camera, during a move), `camera-change` (detail: { camera, yaw, pitch, distance, target },
 // once a move ends; `camera` is the attribute's value), `error` (detail: { message, code },
@@ -31,6 +33,13 @@ import { readCamera, writeCamera } from './state.js';
 import { decodeInput, encodeInput, fitsSets, linkableInput } from './edit/input.js';
 import { toScreen } from './edit/geometry.js';
 import { plainRich } from './ui/richtext.js';
+import { builtInTask } from './task/builtin.js';
+import { taskFromLink } from './task/format.js';
+import { fitTask } from './task/check.js';
+import { postToParent } from './task/message.js';
+import { taskErrorText } from './task/words.js';
+import { encodeInput as encodeEdit } from './edit/input.js';
+import { withChoices } from './scene.js';
 import { start } from './core.js';
 import { translator, pickLanguage } from './i18n/index.js';
 import { startFailure } from './ui/errors.js';
@@ -86,6 +95,8 @@ let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
  * @property {boolean} visible    in front of the camera
  *
  * @typedef {object} RuledViewEvents       the events of <ruled-view> and their details
+ * @property {CustomEvent<import('./task/panel.js').TaskReport>} task-check   how an exercise stands after a check
+ * @property {CustomEvent<import('./task/panel.js').TaskReport>} task-solved   … the first time it is solved
  * @property {CustomEvent<EditDetail>} input
  * @property {CustomEvent<EditDetail>} change
  * @property {CustomEvent<SceneChangeDetail>} scene-change
@@ -109,6 +120,7 @@ export class RuledView extends HTMLElement {
     'editable',
     'input',
     'height',
+    'task',
   ];
 
   constructor() {
@@ -229,6 +241,14 @@ export class RuledView extends HTMLElement {
     if (CSS.supports('height', px)) this.style.height = px;
   }
 
+  /** The exercise shown: a built-in one's id, or the page's link value ("j." and its JSON). */
+  get task() {
+    return this.getAttribute('task') ?? '';
+  }
+  set task(value) {
+    this.setAttribute('task', String(value));
+  }
+
   /** Whether the reader may drag the scene's handles. */
   get editable() {
     return this.hasAttribute('editable');
@@ -347,6 +367,16 @@ export class RuledView extends HTMLElement {
       onEditAsData: (data) => {
         this.data = data;
       },
+      onTask: (type, report) => {
+        this.dispatchEvent(new CustomEvent(`task-${type}`, { detail: report }));
+        const stage = this.stage;
+        const input = stage?.input;
+        postToParent(type, report, {
+          scene: stage?.scene?.id ?? '',
+          params: { ...(stage?.params ?? {}) },
+          input: input ? encodeEdit(input) : null,
+        });
+      },
       onChange: ({ reason, ended }) => {
         if (reason === 'input' && this.stage?.scene) {
           const stage = this.stage;
@@ -401,7 +431,7 @@ export class RuledView extends HTMLElement {
   attributeChangedCallback(name, before, after) {
     if (name === 'height') return this.sized();
     if (!this.stage || before === after) return;
-    if (name === 'scene' || name === 'params' || name === 'paper') this.open();
+    if (name === 'scene' || name === 'params' || name === 'paper' || name === 'task') this.open();
     else if (name === 'controls' || name === 'text') this.stage.setPanel(this.controls, this.text);
     else if (name === 'editable') this.stage.setEditable(this.editable);
     else if (name === 'input') {
@@ -459,11 +489,31 @@ export class RuledView extends HTMLElement {
           const read = readParams(scene, paper ? withPreset(paper, scene, query) : query);
           const { params } = read;
           // the values came from the element's params attribute, not from a link: said so
+          /** @type {Array<{key: string, note: string, vars?: Record<string, string>}>} */
           const notes = read.notes.map((n) => ({ ...n, note: n.note.replace(/^note\./, 'element.note.') }));
           const camera = readCamera(this.getAttribute('camera') ?? '');
           if (this.hasAttribute('camera') && !camera) notes.push({ key: 'camera', note: 'element.badCamera' });
           const input = this.hasAttribute('input') ? decodeInput(this.getAttribute('input') ?? '') : null;
           if (this.hasAttribute('input') && !input) notes.push({ key: 'input', note: 'element.note.badInput' });
+          // an exercise: its scene and start (the element's scene and params are its own then)
+          const taskValue = this.getAttribute('task');
+          if (taskValue) {
+            try {
+              const task = taskFromLink(taskValue, builtInTask);
+              const taskScene = fitTask(task, SCENES, (params, edit) => {
+                const s = /** @type {import('./scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
+                return s.create(withChoices(s, { ...task.params, ...params }), {
+                  t: stage.i18n.t,
+                  format: stage.i18n.format,
+                  lang: stage.i18n.lang,
+                  ...(edit ? { input: edit } : {}),
+                });
+              });
+              return stage.openTask(task, taskScene, { camera, notes });
+            } catch (e) {
+              notes.push({ key: 'task', note: 'element.note.badTask', vars: { reason: taskErrorText(e, stage.i18n) } });
+            }
+          }
           return stage.open(
             scene,
             { ...defaults(scene), ...params },

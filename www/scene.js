@@ -185,6 +185,7 @@ export const RESERVED_KEYS = Object.freeze([
   'paper',
   'input',
   'edit',
+  'task',
 ]);
 
 /** Longest text parameter (a formula), in characters. */

@@ -32,13 +32,14 @@ export const EMBED_FILE = 'ruledlab-embed.js';
  * @property {() => Omit<import('./state.js').ViewState, 'notes'>} state   the view as the link writes it
  * @property {boolean} oneFile       this page is the one-file build
  * @property {(() => string) | undefined} embedScript   the one-file build's own script (its embed script)
+ * @property {() => void} [author]   opens "Make an exercise" on this view (the page)
  */
 
 /**
  * The Share dialog of the page.
  * @param {HTMLDialogElement} dialog
  * @param {ShareContext} context
- * @returns {{open: () => Promise<void>}}
+ * @returns {{open: () => Promise<void>, taskSnippets: (value: string, title: string) => Promise<{link: string | null, iframe: string | null, element: string}>}}
  */
 export function shareDialog(dialog, context) {
   const doc = dialog.ownerDocument;
@@ -47,20 +48,13 @@ export function shareDialog(dialog, context) {
   /** The URL of this site's one-file embed script, or null (checked once, when the dialog first opens). */
   let embedServed = /** @type {Promise<string | null> | null} */ (null);
 
-  const open = async () => {
-    const { stage, oneFile } = context;
+  /** The script of the element snippet from where the page is, and what to say about it. */
+  const scriptOf = async () => {
     const { t } = context.i18n();
-    const where = place();
-    const state = context.state();
-    const hash = writeState(state);
-    const base = location.href.split('#')[0];
-    // a figure's snippets are named after the figure, others after the scene
-    const title = stage.paper ? t(stage.paper.label) : t(stage.scene?.title ?? '');
-    // the script of the element snippet, and what to say about it
     /** @type {{src: string, module?: boolean}} */
     let script = { src: EMBED_FILE };
     let scriptNote = t('share.elementUpload', { file: EMBED_FILE });
-    if (!oneFile && where.address) {
+    if (!context.oneFile && place().address) {
       embedServed ??= fetch(MANIFEST)
         .then((r) => (r.ok ? r.json() : null))
         .then(
@@ -76,6 +70,38 @@ export function shareDialog(dialog, context) {
         scriptNote = t('share.elementModule');
       }
     }
+    return { script, scriptNote };
+  };
+
+  /**
+   * The snippets of an exercise (a link value, task/format.js): a link and an iframe where the
+   * page has an address, and the element.
+   * @param {string} value
+   * @param {string} title
+   */
+  const taskSnippets = async (value, title) => {
+    const lang = context.state().lang ?? context.i18n().lang;
+    const hash = new URLSearchParams({ task: value, lang }).toString();
+    const base = location.href.split('#')[0];
+    const { script } = await scriptOf();
+    const address = place().address;
+    return {
+      link: address ? `${base}#${hash}` : null,
+      iframe: address ? iframeSnippet(base, hash, title, true) : null,
+      element: taskElementSnippet(value, lang, script),
+    };
+  };
+
+  const open = async () => {
+    const { stage, oneFile } = context;
+    const { t } = context.i18n();
+    const where = place();
+    const state = context.state();
+    const hash = writeState(state);
+    const base = location.href.split('#')[0];
+    // a figure's snippets are named after the figure, others after the scene
+    const title = stage.paper ? t(stage.paper.label) : t(stage.scene?.title ?? '');
+    const { script, scriptNote } = await scriptOf();
     /** @type {HTMLElement[]} */
     const rows = [];
     const editable = stage.editor.active;
@@ -145,12 +171,24 @@ export function shareDialog(dialog, context) {
     onefileRow.append(onefile, el('p', { className: 'share-note', textContent: t('share.onefileNote') }), onefileNote);
     const close = el('button', { type: 'button', className: 'share-close', textContent: t('share.close') });
     close.addEventListener('click', () => dialog.close());
+    // an exercise made from this view (task/author.js), where the page offers it
+    const exercise = el('button', {
+      type: 'button',
+      id: 'share-exercise',
+      textContent: t('author.open'),
+      hidden: !context.author,
+    });
+    exercise.addEventListener('click', () => {
+      dialog.close();
+      context.author?.();
+    });
     dialog.setAttribute('aria-label', t('share.title'));
     dialog.replaceChildren(
       el('h2', { textContent: t('share.title') }),
       el('p', { textContent: t('share.intro') }),
       ...rows,
       onefileRow,
+      exercise,
       // a framed page cannot tell whether the page around it allows downloads: say what to do if not
       ...(where.framed
         ? [el('p', { className: 'share-note', id: 'share-framed', textContent: t('share.framed') })]
@@ -198,7 +236,19 @@ export function shareDialog(dialog, context) {
     return wrap;
   };
 
-  return { open };
+  return { open, taskSnippets };
+}
+
+/** A <ruled-view> showing an exercise (its link value), after the script that defines the element. */
+export function taskElementSnippet(
+  /** @type {string} */ value,
+  /** @type {string} */ lang,
+  /** @type {{src: string, module?: boolean}} */ script,
+) {
+  const tag = script.module
+    ? `<script type="module" src="${attr(script.src)}"></script>`
+    : `<script defer src="${attr(script.src)}"></script>`;
+  return `${tag}\n<ruled-view task="${attr(value)}" lang="${attr(lang)}" controls height="640"></ruled-view>`;
 }
 
 /** Text for an HTML attribute value in double quotes. */

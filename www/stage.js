@@ -6,7 +6,7 @@
 import { start } from './core.js';
 import { Viewer } from './viewer.js';
 import { SceneSession } from './session.js';
-import { defaults } from './scene.js';
+import { defaults, withChoices } from './scene.js';
 import { translator, pickLanguage } from './i18n/translate.js';
 import { buildControls } from './ui/controls.js';
 import { showLegend } from './ui/legend.js';
@@ -19,7 +19,9 @@ import { atPreset } from './paper.js';
 import { canFullscreen } from './platform.js';
 import { NARROW, PORTRAIT, TINY, SMALL_VIEW } from './limits.js';
 import { Editor } from './edit/editor.js';
-import { copyInput, fitsSets, inputOf } from './edit/input.js';
+import { copyInput, decodeInput, fitsSets, inputOf } from './edit/input.js';
+import { TaskPanel } from './task/panel.js';
+import { say } from './task/format.js';
 
 /** Least time between two announcements of the readout (ms). */
 const ANNOUNCE_EVERY = 1000;
@@ -34,6 +36,9 @@ const ANNOUNCE_EVERY = 1000;
  * @property {(data: import('./scene.js').ImportedData) => void} [onEditAsData]   "Edit as data" of a
  *   scene without handles: show its sample as your data (the "data" scene)
  * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input', ended: boolean}) => void} [onChange]
+ * @property {(type: 'check' | 'solved', report: import('./task/panel.js').TaskReport) => void} [onTask]
+ *   an exercise was checked, or solved
+ * @property {() => void} [onLeaveTask]   the reader leaves the exercise (the page; an element has no Leave)
  * @property {(error: unknown, message: string) => void} [onError]   with the sentence shown
  * @property {(built: import('./scene.js').Built) => void} [onBuilt]
  */
@@ -156,6 +161,10 @@ export class Stage {
     this.claims = el('ul', { className: 'rl-claims', hidden: true });
     /** @internal what the edited input leaves undefined ("rulings 4 and 5 are parallel: δ undefined") */
     this.problems = el('ul', { className: 'rl-problems', hidden: true });
+    /** @internal the exercise: prompt, answers, Check, hints (task/panel.js) */
+    this.taskBox = el('section', { className: 'rl-task', hidden: true });
+    /** the place of the page's "Make an exercise" panel (task/author.js) */
+    this.authorBox = el('section', { className: 'rl-author', hidden: true });
     /** @internal "edited from: …", with the way back to the built-in input */
     this.edited = el('div', { className: 'rl-edited', hidden: true });
     /** @internal "Edit as data": a scene without handles hands its sample to "Your data" */
@@ -170,6 +179,8 @@ export class Stage {
     this.text = el('article', { className: 'rl-text' });
     this.panel.append(
       this.heading,
+      this.authorBox,
+      this.taskBox,
       this.paperCard,
       this.edited,
       this.form,
@@ -240,10 +251,31 @@ export class Stage {
     this.input = null;
     /** the i18n key of a note about the edit (too large for the link), or '' */
     this.inputNote = '';
+    /** @type {import('./task/format.js').Task | null} the exercise being done, if any */
+    this.task = null;
+    /** @internal @type {import('./scene.js').Input | null} the exercise's start edit */
+    this.taskInput = null;
+    /** @internal */
+    this.taskPanel = new TaskPanel(this.taskBox, {
+      i18n: () => this.i18n,
+      state: () => {
+        const built = this.session.built;
+        if (!built || !this.scene || this.root.classList.contains('rl-stale')) return null;
+        return { scene: this.scene, params: this.params, context: this.context(), built };
+      },
+      startOver: () => this.startTask(),
+      showSolution: () => this.solveTask(),
+      leave: options.onLeaveTask ? () => options.onLeaveTask?.() : null,
+      report: (type, report) => {
+        if (type === 'solved') this.say(this.i18n.t('task.solved'));
+        this.options.onTask?.(type, report);
+      },
+    });
     /** @internal The handles of the scene's input: grabbed by pointer, finger and keyboard. */
     this.editor = new Editor(this.view, this.viewer, {
       i18n: () => this.i18n,
       current: () => this.input,
+      base: () => (this.task ? this.taskInput : null),
       apply: (input, ended, said) => this.setInput(input, ended, said),
       say: (text) => this.say(text),
       changed: () => this.showEditing(),
@@ -306,7 +338,7 @@ export class Stage {
     /** @internal */
     this.showText = text;
     this.root.classList.toggle('rl-no-controls', !controls);
-    this.text.hidden = !text;
+    this.text.hidden = !text || !!this.task?.hide.includes('text');
     this.heading.hidden = !controls && !text;
     this.panel.hidden = !controls && !text;
     this.root.classList.toggle('rl-no-panel', !controls && !text);
@@ -419,6 +451,66 @@ export class Stage {
     if (ended) this.announce(said);
   }
 
+  /**
+   * Opens an exercise (task/format.js) in `scene`: its start state, what it lets change (the
+   * rest held), what it hides; `state` restores a reader's progress (parameters the exercise lets
+   * change, an edit where handles may move). null leaves the exercise (the scene stays).
+   * @param {import('./task/format.js').Task | null} task
+   * @param {import('./scene.js').Scene | null} [scene]
+   * @param {{params?: import('./scene.js').Params, input?: import('./scene.js').Input | null, camera?: number[] | null, notes?: Array<{key: string, note: string, vars?: Record<string, string>}>}} [state]
+   */
+  async openTask(task, scene = null, state = {}) {
+    if (!task || !scene) {
+      this.task = null;
+      this.taskInput = null;
+      this.taskPanel.show(null);
+      this.editor.enabled = !!this.options.editable;
+      if (this.scene)
+        this.enter(this.scene, this.params, { camera: this.viewer.camera.toArray(), fit: false, input: this.input });
+      return;
+    }
+    this.task = task;
+    this.paper = null;
+    this.taskInput = task.input ? decodeInput(task.input) : null;
+    this.editor.enabled = task.change.includes('handles');
+    const kept = Object.fromEntries(Object.entries(state.params ?? {}).filter(([k]) => task.change.includes(k)));
+    const input = task.change.includes('handles') && state.input ? state.input : this.taskInput;
+    await this.open(
+      scene,
+      { ...withChoices(scene, task.params), ...kept },
+      {
+        camera: state.camera ?? null,
+        input,
+        notes: state.notes ?? [],
+        task: true,
+      },
+    );
+    this.taskPanel.show(task);
+    this.showEditing();
+  }
+
+  /** Back to the exercise's start (its parameters and edit). */
+  startTask() {
+    const task = this.task;
+    if (!task || !this.scene) return;
+    this.enter(this.scene, withChoices(this.scene, task.params), { fit: true, input: this.taskInput });
+    this.options.onChange?.({ reason: 'reset', ended: true });
+  }
+
+  /** The exercise's solution state (its parameters and edit) on screen. */
+  solveTask() {
+    const task = this.task;
+    if (!task?.solution || !this.scene) return;
+    const solution = task.solution;
+    const input = solution.input ? decodeInput(solution.input) : this.taskInput;
+    this.enter(this.scene, withChoices(this.scene, { ...task.params, ...(solution.params ?? {}) }), {
+      camera: this.viewer.camera.toArray(),
+      fit: false,
+      input,
+    });
+    this.options.onChange?.({ reason: 'param', ended: true });
+  }
+
   /** The current input of the scene's handles (the edit, or the built-in input), copied; null without handles. */
   currentInput() {
     const sets = this.session.built?.input?.sets;
@@ -447,8 +539,9 @@ export class Stage {
       button.setAttribute('aria-pressed', String(editor.mode === mode));
     this.modes.line.hidden = !editor.sets.some((set) => set.shape === 'pairs');
     const doc = this.root.ownerDocument;
-    this.edited.hidden = !this.input;
-    if (this.input) {
+    // (in an exercise its own Start over takes the note's place)
+    this.edited.hidden = !this.input || !!this.task;
+    if (this.input && !this.task) {
       const text = doc.createElement('p');
       appendRich(text, t('edit.from', { from: editor.from }));
       const back = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('edit.restore') });
@@ -480,6 +573,7 @@ export class Stage {
       });
       // (a computation that fails keeps the last picture: its legend speaks the new language too)
       showLegend(this.legend, this.scene, this.params, this.i18n.t);
+      this.taskPanel.render();
     }
   }
 
@@ -487,9 +581,16 @@ export class Stage {
    * Opens a scene with `params` (missing ones take their defaults).
    * @param {import('./scene.js').Scene} scene
    * @param {import('./scene.js').Params} params
-   * @param {{camera?: number[] | null, fit?: boolean, data?: import('./scene.js').ImportedData | null, notes?: Array<{key: string, note: string}>, autoplay?: boolean, paper?: import('./paper.js').PaperPreset | null, input?: import('./scene.js').Input | null, inputNote?: string}} [options]
+   * @param {{camera?: number[] | null, fit?: boolean, data?: import('./scene.js').ImportedData | null, notes?: Array<{key: string, note: string, vars?: Record<string, string>}>, autoplay?: boolean, paper?: import('./paper.js').PaperPreset | null, input?: import('./scene.js').Input | null, inputNote?: string, task?: boolean}} [options]
+   *   task: the exercise shown stays (openTask); otherwise opening a scene leaves it
    */
   async open(scene, params, options = {}) {
+    if (this.task && !options.task) {
+      this.task = null;
+      this.taskInput = null;
+      this.taskPanel.show(null);
+      this.editor.enabled = !!this.options.editable;
+    }
     try {
       await start();
     } catch (e) {
@@ -550,11 +651,23 @@ export class Stage {
     appendRich(this.heading, t(scene.title));
     // the explanation is markup from the project's own language files (never user text)
     this.text.innerHTML = t(scene.text);
+    // (an exercise may hide it where it would say the answer)
+    this.text.hidden = !this.showText || !!this.task?.hide.includes('text');
     this.controls = buildControls(this.form, scene, this.params, this.i18n, {
       onChange: (key, value, ended) => this.setParam(key, value, ended),
       onPlay: (key) => this.togglePlay(key),
-      fixed: (p) => (this.input && this.scene?.fixed?.includes(p.key) ? 'edit.reason.fixed' : null),
+      fixed: (p) =>
+        this.task && !this.task.change.includes(p.key)
+          ? 'task.reason.locked'
+          : this.input && !this.task && this.scene?.fixed?.includes(p.key)
+            ? 'edit.reason.fixed'
+            : null,
     });
+    // an exercise's hidden parameters (an answer-revealing layer) are not shown at all
+    for (const key of this.task?.hide ?? []) {
+      const row = this.controls.rows.get(key)?.row;
+      if (row) row.hidden = true;
+    }
     this.controls.fit();
     this.buildPlayer();
     this.showPaper();
@@ -596,10 +709,9 @@ export class Stage {
     if (ended) this.announce();
   }
 
-  /** @internal Recomputes the scene for the current parameters (and input); returns what it built, or null. */
-  compute({ fit = false } = {}) {
-    if (!this.scene) return null;
-    const context = {
+  /** @internal What a scene's create() is given besides its parameters, now. */
+  context() {
+    return {
       t: this.i18n.t,
       format: this.i18n.format,
       lang: this.i18n.lang,
@@ -607,7 +719,12 @@ export class Stage {
       refine: refineInWorker,
       input: this.input ?? undefined,
     };
-    const built = this.session.show(this.scene, this.params, context, { fit });
+  }
+
+  /** @internal Recomputes the scene for the current parameters (and input); returns what it built, or null. */
+  compute({ fit = false } = {}) {
+    if (!this.scene) return null;
+    const built = this.session.show(this.scene, this.params, this.context(), { fit });
     this.root.classList.toggle('rl-stale', !built);
     if (built) this.error.hidden = true;
     return built;
@@ -621,7 +738,7 @@ export class Stage {
    */
   showPaper() {
     const card = this.paperCard;
-    const preset = this.paper;
+    const preset = this.task ? null : this.paper;
     card.hidden = !preset || !this.scene;
     if (!preset || !this.scene) return card.replaceChildren();
     const { t } = this.i18n;
@@ -691,14 +808,18 @@ export class Stage {
     );
     this.problems.hidden = !built.problems?.length;
     this.asData.hidden = !(this.scene.editAsData && built.data && this.options.onEditAsData && this.editor.enabled);
-    showReadout(this.readout, built.readouts ?? [], this.i18n);
-    showClaims(this.claims, built.claims ?? [], t);
+    // an exercise hides what would give its answer away (the readout and the sentences that say it)
+    const hidden = this.task?.hide ?? [];
+    const readouts = (built.readouts ?? []).filter((r) => !hidden.includes(r.label));
+    showReadout(this.readout, readouts, this.i18n);
+    showClaims(this.claims, hidden.includes('claims') ? [] : (built.claims ?? []), t);
     this.note.hidden = !built.note;
     this.note.textContent = built.note ?? '';
+    const description = this.task && hidden.length ? say(this.task.title, this.i18n.lang) : built.description;
     this.description.replaceChildren();
-    appendRich(this.description, built.description);
+    appendRich(this.description, description);
     this.caption.replaceChildren();
-    appendRich(this.caption, built.description);
+    appendRich(this.caption, description);
     this.figure.replaceChildren(...(built.figure ? [built.figure()] : []));
     this.downloads.replaceChildren(
       ...(built.downloads ?? []).map((d) => {
@@ -765,7 +886,7 @@ export class Stage {
   }
 
   /** @internal Notes about link values that were not used. */
-  showNotes(/** @type {Array<{key: string, note: string}>} */ notes) {
+  showNotes(/** @type {Array<{key: string, note: string, vars?: Record<string, string>}>} */ notes) {
     const { t } = this.i18n;
     const doc = this.root.ownerDocument;
     this.noteBox.hidden = notes.length === 0;
@@ -778,7 +899,7 @@ export class Stage {
     close.setAttribute('aria-label', t('view.closeNote'));
     close.addEventListener('click', () => (this.noteBox.hidden = true));
     const text = doc.createElement('span');
-    text.textContent = notes.map(({ key, note }) => t(note, { key })).join(' ');
+    text.textContent = notes.map(({ key, note, vars }) => t(note, { key, ...vars })).join(' ');
     this.noteBox.replaceChildren(text, close);
   }
 
@@ -789,7 +910,13 @@ export class Stage {
     const say = () => {
       this.lastAnnounced = performance.now();
       const built = this.session.built;
-      const sentence = built ? readoutSentence(built.readouts ?? [], this.i18n) : '';
+      const hidden = this.task?.hide ?? [];
+      const sentence = built
+        ? readoutSentence(
+            (built.readouts ?? []).filter((r) => !hidden.includes(r.label)),
+            this.i18n,
+          )
+        : '';
       if (built || prefix) this.status.textContent = [prefix, sentence].filter(Boolean).join('. ');
     };
     const wait = this.lastAnnounced + ANNOUNCE_EVERY - now;
@@ -843,9 +970,13 @@ export class Stage {
     this.controls?.playing(null);
   }
 
-  /** The scene's defaults and its fitted camera. */
+  /** The scene's defaults and its fitted camera (in an exercise: its start). */
   reset() {
     if (!this.scene) return;
+    if (this.task) {
+      this.taskPanel.show(this.task);
+      return this.startTask();
+    }
     this.stopPlaying();
     this.enter(this.scene, defaults(this.scene), { fit: true });
     this.options.onChange?.({ reason: 'reset', ended: true });

@@ -27,7 +27,8 @@ export const MAX_LINK_RULINGS = 200;
  * @property {import('./scene.js').Input | null} [input]   the reader's edit of the scene's input
  *   (its handles moved), bit for bit; up to MAX_LINK_HANDLES handles
  * @property {boolean} [edit]           with #embed: the reader may drag the handles
- * @property {Array<{key: string, note: string}>} notes   values that were not used, and why
+ * @property {string | null} [task]     an exercise: a built-in one's id, or "j." and its JSON (task/format.js)
+ * @property {Array<{key: string, note: string, vars?: Record<string, string>}>} notes   values that were not used, and why
  * @property {string | null} [paper]    the figure or example of the paper shown (paper.js), if any
  */
 
@@ -77,6 +78,7 @@ export function readState(hash, scenes) {
     data,
     input,
     edit: q.has('edit'),
+    task: q.get('task'),
     notes,
     paper: paper?.id ?? null,
   };
@@ -93,6 +95,7 @@ export function writeState(state, { wholeInput = false } = {}) {
   if (state.embed && state.controls) q.set('controls', '');
   if (state.embed && state.text) q.set('text', '');
   if (state.embed && state.edit) q.set('edit', '');
+  if (state.task) q.set('task', state.task);
   if (state.paper) q.set('paper', state.paper);
   q.set('scene', state.scene.id);
   for (const p of state.scene.params) q.set(p.key, serialize(p, state.params[p.key]));

@@ -12,6 +12,8 @@ export { readState, writeState } from './state.js';
 export { defineScene, scoped, bounds, readParams, defaults, RESERVED_KEYS } from './scene.js';
 export { STYLES, PALETTE } from './theme.js';
 export { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
+export { readTask, writeTask, TaskError } from './task/format.js';
+export { builtInTasks, builtInTask } from './task/builtin.js';
 
 // The types of the pieces above, for TypeScript users (pkg/view/www/view.d.ts is generated from
 // this JSDoc and the sources' own: scripts/view-types.mjs).
@@ -51,4 +53,11 @@ export { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
  * @typedef {import('./ruled-view.js').HandleInfo} HandleInfo
  * @typedef {import('./ruled-view.js').RuledViewEvents} RuledViewEvents
  * @typedef {import('./ruled-view.js').RuledViewEventMap} RuledViewEventMap
+ * @typedef {import('./task/format.js').Task} Task
+ * @typedef {import('./task/panel.js').TaskReport} TaskReport
+ * @typedef {import('./task/check.js').Answers} Answers
+ * @typedef {import('./task/format.js').Answer} Answer
+ * @typedef {import('./task/format.js').Condition} Condition
+ * @typedef {import('./task/format.js').Words} Words
+ * @typedef {import('./task/format.js').TaskState} TaskState
  */

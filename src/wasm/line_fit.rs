@@ -21,6 +21,8 @@ struct LineFit {
     direction: Float64Array,
     /// The largest distance of a point from the line: 0 exactly when the points are collinear.
     deviation: f64,
+    /// The length of the points' shadow on the line: deviation / extent is scale-free.
+    extent: f64,
 }
 
 /// The line that fits `points` (3 numbers each, at least two, not all equal) best in the least
@@ -39,6 +41,7 @@ pub fn fit_line(
             point: Float64Array::from(&fit.point.to_array()[..]),
             direction: Float64Array::from(&fit.direction.to_array()[..]),
             deviation: fit.deviation,
+            extent: fit.extent,
         },
     )
 }

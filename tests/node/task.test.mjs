@@ -121,12 +121,28 @@ test('answers: a wrong number misses by how much, a formula is evaluated by the 
 });
 
 test('a condition comparing two values of the scene, and every condition on a value that is not a number fails', () => {
-  const strip = /** @type {any} */ (builtInTask('coupled-strip'));
+  // coupling pays from n = 5 on (the built-in "coupled-strip" asks for that smallest n)
+  const strip = readTask({
+    ruledlab: 'exercise',
+    version: 1,
+    id: 'coupling',
+    title: { en: 'x' },
+    prompt: { en: 'x' },
+    scene: 'strip',
+    params: { scheme: 'coupled', n: 3, exact: true },
+    change: ['n'],
+    goal: [{ value: 'strip.readout.compare.coupled', below: { value: 'strip.readout.compare.midpoint' } }],
+  });
   const at3 = check(strip, { params: { n: 3 } });
   const values = measuresOf(computeFor(strip)({ n: 3 }, null));
   assert.equal(at3.outcomes[0].value, values['strip.readout.compare.coupled']);
   assert.equal(at3.outcomes[0].target, values['strip.readout.compare.midpoint']);
   assert.ok(at3.outcomes[0].miss > 0);
+  assert.equal(check(strip, { params: { n: 4 } }).solved, false);
+  assert.equal(check(strip, { params: { n: 5 } }).solved, true);
+  const smallest = /** @type {any} */ (builtInTask('coupled-strip'));
+  assert.equal(smallest.goal[0].near, 5, 'the built-in exercise’s answer is the n found here');
+  assert.equal(check(smallest, { answers: { n: '4' } }).solved, false);
   const task = readTask({
     ruledlab: 'exercise',
     version: 1,
@@ -193,6 +209,42 @@ test('the format: round trip through JSON and a link; malformed and hostile exer
   // texts are kept as text (the page shows them with textContent), control characters dropped
   const t = readTask({ ...base, title: { en: '<img src=x onerror=alert(1)>\u0007' } });
   assert.equal(t.title.en, '<img src=x onerror=alert(1)>');
+});
+
+test('a straight striction curve cannot be had by shrinking: the measure is a share of the curve’s length, and a curve too short is not judged', () => {
+  const task = /** @type {any} */ (builtInTask('straight-striction'));
+  const value = (/** @type {any} */ params) => check(task, { params }).outcomes[0].value;
+  // a tiny range of u (the curve nearly a point) and the whole hyperboloid scaled down both fail
+  assert.ok(Number.isNaN(value({ umin: '0', umax: '0.00001' })), 'a curve 10⁻⁵ long is not judged');
+  const tiny = { ax: '1e-10*cos(u)', ay: '2e-10*sin(u)', ex: '-1e-10*sin(u)', ey: '2e-10*cos(u)', ez: '3e-10' };
+  const start = value({});
+  assert.ok(start > 0.1, `the hyperboloid's ellipse: ${start}`);
+  assert.ok(Math.abs(value(tiny) - start) < 1e-6 * start, 'scale-free');
+  // a short arc of the ellipse is nearly straight, but not to 10⁻⁹ of its length
+  assert.ok(value({ umin: '0', umax: '0.01' }) > 1e-5);
+  // the helicoid's axis, at another pitch; at a pitch so small that the axis is a dot beside the
+  // rulings (10⁻⁶ · 4π against a surface 2 wide) it is not judged
+  assert.equal(check(task, { params: { ...task.solution.params, az: '0.1*u' } }).solved, true);
+  assert.ok(Number.isNaN(value({ ...task.solution.params, az: '1e-6*u' })));
+});
+
+test('hide may name the claims and the explanation besides parameters and readouts', () => {
+  const base = {
+    ruledlab: 'exercise',
+    version: 1,
+    id: 'x',
+    title: { en: 'T' },
+    prompt: { en: 'P' },
+    scene: 'strip',
+    goal: [{ value: 'strip.readout.compare.coupled', below: 1 }],
+  };
+  const ok = readTask({ ...base, hide: ['claims', 'text', 'n'] });
+  fitTask(ok, SCENES, computeFor(ok));
+  const bad = readTask({ ...base, hide: ['explanation'] });
+  assert.throws(
+    () => fitTask(bad, SCENES, computeFor(bad)),
+    (e) => e instanceof TaskError && /** @type {any} */ (e).details.reason === 'task.error.unknownValue',
+  );
 });
 
 test('an exercise that does not fit its scene is refused: unknown scene, parameter, value, edit', () => {

@@ -30,6 +30,8 @@ const KEY_RUN = 1000;
  * @typedef {object} EditorHooks
  * @property {() => import('../i18n/index.js').Translator} i18n
  * @property {() => import('../scene.js').Input | null} current   the edited input, null for the built-in one
+ * @property {() => import('../scene.js').Input | null} [base]   what "back" restores (an exercise's start
+ *   edit; default the built-in input)
  * @property {(input: import('../scene.js').Input | null, ended: boolean, said?: string) => void} apply
  *   computes on it; `said`: what the step did, in words, to say before the readout
  * @property {(text: string) => void} say   for screen readers (polite)
@@ -212,14 +214,15 @@ export class Editor {
     this.hooks.changed();
   }
 
-  /** Back to the built-in input, as one step of undo. */
+  /** Back to the built-in input (or an exercise's start), as one step of undo. */
   restore() {
     this.cancelDrag(false);
     this.endKeyRun();
     const now = this.hooks.current();
-    if (!now) return;
+    const base = this.hooks.base?.() ?? null;
+    if (sameInput(now, base)) return;
     this.record(now);
-    this.hooks.apply(null, true, this.hooks.i18n().t('edit.restored'));
+    this.hooks.apply(base && copyInput(base), true, this.hooks.i18n().t('edit.restored'));
   }
 
   /** Replaces the input (<ruled-view>'s `data`), as one step of undo. */

@@ -114,8 +114,8 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null, from 
   const envelope = surface.developmentEnvelope();
   const radius = middleRadius(surface);
   // δ of the middle pair of rulings, on the surface and on what it is bent to: a Minding
-  // isometry keeps it (Section 3)
-  const middle = Math.max(0, Math.floor((n - 1) / 2) - 1);
+  // isometry keeps it (Section 3); of n − 1 pairs the middle one (for 24 rulings, R₁₁R₁₂)
+  const middle = Math.max(0, Math.floor((n - 2) / 2));
   const delta = surface.invariants().distribution[middle];
   const deltaBent = bent.invariants().distribution[middle];
   return {

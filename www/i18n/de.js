@@ -3,11 +3,13 @@
 import texts from './de-texts.js';
 import errors from './de-errors.js';
 import edit from './de-edit.js';
+import task from './de-task.js';
 
 export default {
   ...texts,
   ...errors,
   ...edit,
+  ...task,
   'app.title': 'ruledlab',
   'app.subtitle': 'Diskrete Modelle von Regelflächen und Geradenkongruenzen, nach Odehnal & Pottmann',
   'app.scene': 'Szene',

@@ -3,11 +3,13 @@
 import texts from './en-texts.js';
 import errors from './en-errors.js';
 import edit from './en-edit.js';
+import task from './en-task.js';
 
 export default {
   ...texts,
   ...errors,
   ...edit,
+  ...task,
   // the page
   'app.title': 'ruledlab',
   'app.subtitle': 'Discrete models of ruled surfaces and line congruences, after Odehnal & Pottmann',

@@ -3,6 +3,9 @@
 import { SCENES } from '../scenes/index.js';
 import { PRESETS } from '../paper.js';
 import { LANGUAGE_CODES } from '../i18n/translate.js';
+import { builtInTasks } from '../task/builtin.js';
+import { solvedTasks } from '../task/progress.js';
+import { say } from '../task/format.js';
 
 /** The page's language names, in their own language. */
 const NATIVE = { en: 'English', de: 'Deutsch' };
@@ -31,6 +34,9 @@ export function pageChrome(doc) {
   const paperLabel = el('label', { className: 'picker' });
   const paperPicker = /** @type {HTMLSelectElement} */ (el('select', { id: 'paper' }));
   paperLabel.append(el('span'), paperPicker);
+  const taskLabel = el('label', { className: 'picker' });
+  const taskPicker = /** @type {HTMLSelectElement} */ (el('select', { id: 'task' }));
+  taskLabel.append(el('span'), taskPicker);
   const langLabel = el('label', { className: 'picker' });
   const langPicker = /** @type {HTMLSelectElement} */ (el('select', { id: 'lang' }));
   for (const code of LANGUAGE_CODES) {
@@ -38,7 +44,7 @@ export function pageChrome(doc) {
   }
   langLabel.append(el('span'), langPicker);
   const shareButton = el('button', { type: 'button', id: 'share' });
-  header.append(title, subtitle, pickerLabel, paperLabel, langLabel, shareButton);
+  header.append(title, subtitle, pickerLabel, paperLabel, taskLabel, langLabel, shareButton);
   const main = el('main', { id: 'main' });
   doc.body.replaceChildren(skip, header, main);
 
@@ -50,13 +56,14 @@ export function pageChrome(doc) {
     main,
     picker,
     paperPicker,
+    taskPicker,
     langPicker,
     shareButton,
     /**
      * The texts in the current language, the pickers showing what is on screen.
      * @param {import('../i18n/index.js').Translator} i18n
      * @param {string} lang
-     * @param {{ scene: string | null, paper: string | null }} shown
+     * @param {{ scene: string | null, paper: string | null, task?: string | null }} shown
      */
     localize({ t }, lang, shown) {
       subtitle.textContent = t('app.subtitle');
@@ -72,6 +79,16 @@ export function pageChrome(doc) {
         ...PRESETS.map((p) => new Option(plainTitle(t(p.label)), p.id)),
       );
       paperPicker.value = shown.paper ?? '';
+      label(taskLabel, t('app.exercises'));
+      // the built-in exercises, the solved ones marked (in words for screen readers as well)
+      const solved = solvedTasks();
+      taskPicker.replaceChildren(
+        new Option(t('task.none'), ''),
+        ...builtInTasks().map(
+          (task) => new Option(`${solved.has(task.id) ? '✓ ' : ''}${say(task.title, lang)}`, task.id),
+        ),
+      );
+      taskPicker.value = shown.task && builtInTasks().some((x) => x.id === shown.task) ? shown.task : '';
       shareButton.textContent = t('app.share');
     },
   };

@@ -52,10 +52,11 @@ export function parseStored(/** @type {string} */ text) {
 /**
  * The panel, put into the stage's panel before its explanation.
  * @param {import('../stage.js').Stage} stage
- * @param {{ i18n: () => import('../i18n/index.js').Translator, onData: (data: import('../scene.js').ImportedData) => void }} options
- *   onData: the page shows imported data (in the "data" scene)
+ * @param {{ i18n: () => import('../i18n/index.js').Translator, onData: (data: import('../scene.js').ImportedData) => void, onTask?: (json: string) => Promise<string | null> }} options
+ *   onData: the page shows imported data (in the "data" scene); onTask: it opens an exercise file
+ *   (the promise says why it could not, or null)
  */
-export function dataPanel(stage, { i18n, onData }) {
+export function dataPanel(stage, { i18n, onData, onTask }) {
   const doc = stage.panel.ownerDocument;
   const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
     Object.assign(doc.createElement(tag), props);
@@ -72,7 +73,7 @@ export function dataPanel(stage, { i18n, onData }) {
   kindRow.append(kindLabel, kind);
   const row = el('div', { className: 'io-row' });
   const upload = /** @type {HTMLInputElement} */ (
-    el('input', { type: 'file', id: 'import-file', accept: '.csv,.json,.txt,text/csv,application/json' })
+    el('input', { type: 'file', id: 'import-file', accept: '.csv,.json,.txt,.exercise,text/csv,application/json' })
   );
   const showButton = el('button', { type: 'button', id: 'import-button' });
   row.append(upload, showButton);
@@ -94,6 +95,20 @@ export function dataPanel(stage, { i18n, onData }) {
   // import: pasted text or an uploaded file; an error is said at the paste box, and the scene
   // stays as it is
   const show = (/** @type {string} */ text) => {
+    // an exercise file (README, "Exercises") opens as the exercise it is
+    if (onTask && /^\s*\{[\s\S]*"ruledlab"\s*:\s*"exercise"/.test(text)) {
+      importError.hidden = true;
+      paste.removeAttribute('aria-invalid');
+      paste.removeAttribute('aria-describedby');
+      onTask(text).then((problem) => {
+        if (!problem) return;
+        importError.hidden = false;
+        importError.textContent = problem;
+        paste.setAttribute('aria-invalid', 'true');
+        paste.setAttribute('aria-describedby', importError.id);
+      });
+      return;
+    }
     /** @type {import('../scene.js').ImportedData} */
     let data;
     try {

@@ -8,7 +8,7 @@ import { strictionFigure, exactCurve } from '../figures/striction.js';
 import { convergenceFigure } from '../figures/convergence.js';
 import { isometryFigure } from '../figures/isometry.js';
 import { subdivisionFigure } from '../figures/subdivision.js';
-import { STRAIGHTNESS_SAMPLES } from '../limits.js';
+import { STRAIGHTNESS_MIN_EXTENT, STRAIGHTNESS_SAMPLES } from '../limits.js';
 import { SURFACE_PRESETS, surfacePreset, formulaParameter } from '../catalogue.js';
 
 /** The formula fields a catalogue surface fills in (its texts from the core) and its a, b, c. */
@@ -281,10 +281,13 @@ export const scene = defineScene({
         );
       }
       const built = strictionFigure(own(analytic.sample(p.n, ranges)), analytic, ranges, p, ctx, 'formula');
-      // how far the exact striction curve is from a straight line (an exercise asks for one that is)
+      // how far the exact striction curve is from a straight line, as a share of its length (an
+      // exercise asks for one that is straight; scale-free, so shrinking the surface does not pass)
       let straightness = Number.NaN;
       try {
-        straightness = fitLine(exactCurve(analytic, ranges, 'striction', STRAIGHTNESS_SAMPLES).values).deviation;
+        const fit = fitLine(exactCurve(analytic, ranges, 'striction', STRAIGHTNESS_SAMPLES).values);
+        const size = Math.hypot(...built.bounds.max.map((m, k) => m - built.bounds.min[k]));
+        if (fit.extent >= STRAIGHTNESS_MIN_EXTENT * size) straightness = fit.deviation / fit.extent;
       } catch {}
       return { ...built, measures: { ...built.measures, 'formula.strictionStraightness': straightness } };
     });

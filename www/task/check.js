@@ -7,7 +7,7 @@
 import { evaluateFormulas } from '../../pkg/ruledlab.js';
 import { readValue, serialize } from '../scene.js';
 import { decodeInput, fitsSets } from '../edit/input.js';
-import { SAMPLES, TaskError } from './format.js';
+import { HIDE_WORDS, SAMPLES, TaskError } from './format.js';
 
 /**
  * @typedef {import('./format.js').Task} Task
@@ -192,7 +192,7 @@ export function fitTask(task, scenes, compute) {
   // (a readout that is not a number, "0.01 / 0.02", can be hidden though no condition names it)
   const shown = new Set(built.flatMap((b) => (b.readouts ?? []).map((r) => r.label)));
   for (const h of task.hide)
-    if (!keys.includes(h) && !values.has(h) && !shown.has(h))
+    if (!keys.includes(h) && !values.has(h) && !shown.has(h) && !HIDE_WORDS.includes(h))
       throw new TaskError('task.error.unknownValue', { value: h, where: 'hide' });
   task.goal.forEach((c, i) => {
     const named = [c.value, ...[c.below, c.above, c.near].map((b) => (typeof b === 'object' ? b.value : undefined))];

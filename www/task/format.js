@@ -28,11 +28,14 @@ const MAX_GOAL = 6;
 const MAX_HINTS = 3;
 /** Points at which a typed curve is compared with the exact one, by default and at most. */
 export const SAMPLES = 50;
+
+/** What `hide` may name besides parameters and readouts: the claims under the readout, the explanation. */
+export const HIDE_WORDS = ['claims', 'text'];
 const MAX_SAMPLES = 1000;
 
 /**
- * Words in the languages of the page (English required).
- * @typedef {{en: string, de?: string}} Words
+ * Words in the languages of the page (at least one; a reader of the other sees the one there is).
+ * @typedef {{en?: string, de?: string}} Words
  *
  * An answer field: a number, one formula in u (a function such as δ(u)), or three (a curve
  * such as s(u)).
@@ -68,7 +71,9 @@ const MAX_SAMPLES = 1000;
  * @property {string | null} input
  * @property {string | null} camera
  * @property {string[]} change    parameter keys the reader may change, and "handles"
- * @property {string[]} hide      parameter keys (kept, not shown) and readout keys (not shown)
+ * @property {string[]} hide      parameter keys (kept, not shown), readout keys (not shown), and the
+ *   words "claims" (the sentences under the readout) and "text" (the scene's explanation), where they
+ *   would say the answer
  * @property {Answer[]} answers
  * @property {Condition[]} goal
  * @property {Words[]} hints
@@ -147,9 +152,10 @@ function words(/** @type {unknown} */ x, /** @type {string} */ key, max = MAX_TE
   const o = /** @type {Record<string, unknown>} */ (x);
   for (const k of Object.keys(o))
     if (k !== 'en' && k !== 'de') throw new TaskError('task.error.unknownKey', { key: k, where: key });
-  if (!('en' in o)) throw new TaskError('task.error.missing', { key: `${key}.en` });
+  if (!('en' in o) && !('de' in o)) throw new TaskError('task.error.missing', { key: `${key}.en` });
   /** @type {Words} */
-  const out = { en: text(o.en, `${key}.en`, max) };
+  const out = {};
+  if ('en' in o) out.en = text(o.en, `${key}.en`, max);
   if ('de' in o) out.de = text(o.de, `${key}.de`, max);
   return out;
 }
@@ -355,9 +361,9 @@ export function writeTask(/** @type {Task} */ task) {
   });
 }
 
-/** Words in `lang`, else English. */
+/** Words in `lang`, else in the language there is. */
 export function say(/** @type {Words} */ w, /** @type {string} */ lang) {
-  return (lang === 'de' ? w.de : undefined) ?? w.en;
+  return (lang === 'de' ? (w.de ?? w.en) : (w.en ?? w.de)) ?? '';
 }
 
 // —— in a link: a built-in exercise by its id, another as "j." and its JSON in base64url ——

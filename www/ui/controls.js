@@ -194,9 +194,11 @@ export function buildControls(form, scene, params, i18n, hooks) {
       r.input.disabled = !!why;
       if (r.play) r.play.disabled = !!why;
       r.row.classList.toggle('rl-disabled', !!why);
-      r.reason.hidden = !why;
-      r.reason.textContent = why ? t(why) : '';
-      if (why) r.input.setAttribute('aria-describedby', r.reason.id);
+      // (an exercise says once, in its panel, that it holds the controls it does not ask about)
+      const said = !!why && why !== 'task.reason.locked';
+      r.reason.hidden = !said;
+      r.reason.textContent = said ? t(/** @type {string} */ (why)) : '';
+      if (said) r.input.setAttribute('aria-describedby', r.reason.id);
       else r.input.removeAttribute('aria-describedby');
     }
   };

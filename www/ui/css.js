@@ -164,12 +164,60 @@ export const CSS = `
   border-radius: 6px; }
 .rl-problems[hidden] { display: none; }
 .rl-as-data { margin: .6rem 0 0; }
+/* an exercise (task/panel.js): its prompt, the answer fields, Check, hints, how each condition stands */
+.rl-task { margin: .2rem 0 .9rem; padding: .6rem .8rem; border: 1px solid #b9c7dd; border-left: 4px solid #0072b2; border-radius: 6px;
+  background: #f4f8fc; font-size: .9rem; }
+.rl-task[hidden] { display: none; }
+.rl-task h3 { font-size: 1rem; margin: 0 0 .35rem; }
+.rl-task-kind { color: var(--muted); font-weight: 600; }
+.rl-task-prompt { margin: 0 0 .6rem; line-height: 1.5; white-space: pre-wrap; }
+.rl-task-answers { display: grid; gap: .35rem; margin: 0 0 .6rem; }
+.rl-task-curve { border: 0; padding: 0; margin: 0; display: grid; gap: .3rem; }
+.rl-task-curve legend { font-weight: 600; padding: 0; margin-bottom: .2rem; }
+.rl-task-field { display: flex; gap: .5rem; align-items: center; flex-wrap: wrap; }
+.rl-task-field > span { min-width: 4.5rem; }
+.rl-task-field input { flex: 1 1 10rem; min-width: 0; min-height: 30px; padding: .15rem .4rem; border: 1px solid #c9c5ba; border-radius: 5px;
+  font: inherit; font-family: ui-monospace, "SFMono-Regular", Menlo, monospace; }
+.rl-task-buttons { display: flex; gap: .4rem; flex-wrap: wrap; margin: 0 0 .5rem; }
+.rl-task-check { font-weight: 600; }
+.rl-task-hints { margin: .2rem 0 .5rem; padding-left: 1.3rem; }
+.rl-task-hints li { margin: .2rem 0; }
+.rl-task-results { list-style: none; margin: .3rem 0; padding: 0; }
+.rl-task-results li { display: flex; gap: .4rem; margin: .25rem 0; }
+.rl-task-results .rl-mark { flex: none; width: 1.1em; font-weight: 700; }
+.rl-task-results .rl-holds .rl-mark { color: #1a6b3c; }
+.rl-task-results .rl-fails { color: #8c1d14; }
+.rl-task-verdict { margin: .4rem 0 0; font-weight: 600; }
+.rl-task-held { margin: .5rem 0 0; color: var(--muted); font-size: .82rem; }
+.rl-task-verdict.rl-task-solved { color: #14532d; background: #e8f5ec; border: 1px solid #9fd3b0; border-radius: 5px; padding: .3rem .5rem; }
+/* "Make an exercise" (task/author.js) */
+.rl-author { margin: .2rem 0 .9rem; padding: .6rem .8rem; border: 1px solid #d8c9a6; border-left: 4px solid #e69f00; border-radius: 6px;
+  background: #fffbf2; font-size: .88rem; }
+.rl-author[hidden] { display: none; }
+.rl-author h3 { font-size: 1rem; margin: 0 0 .35rem; }
+.rl-author fieldset { border: 1px solid var(--line); border-radius: 6px; margin: .5rem 0; padding: .3rem .6rem .5rem; min-width: 0; }
+.rl-author legend { font-weight: 600; padding: 0 .2rem; }
+.rl-author-field { display: grid; gap: .2rem; margin: .35rem 0; }
+.rl-author-field input, .rl-author-field textarea, .rl-author-field select, .rl-author-row input, .rl-author-row select {
+  font: inherit; min-height: 28px; border: 1px solid #c9c5ba; border-radius: 5px; padding: .1rem .35rem; max-width: 100%; }
+.rl-author-check { display: flex; gap: .35rem; align-items: center; margin: .2rem 0; }
+.rl-author-row { display: flex; flex-wrap: wrap; gap: .3rem; align-items: center; margin: .35rem 0; }
+.rl-author-row select { flex: 1 1 12rem; min-width: 0; }
+.rl-author-row input { width: 6rem; }
+.rl-author-status { flex-basis: 100%; margin: 0; color: var(--muted); font-size: .82rem; }
+.rl-author-states p { margin: .4rem 0 .2rem; }
+.rl-author-out { display: flex; flex-wrap: wrap; gap: .4rem; margin-top: .6rem; }
+.rl-author-result { flex-basis: 100%; }
+.rl-author-snippet { display: grid; gap: .2rem; margin: .4rem 0; }
+.rl-author-snippet textarea { width: 100%; font: 12px ui-monospace, monospace; }
+.rl-author-problem { color: #8c1d14; margin: .3rem 0; }
 /* slider steppers (controls.js): − / + and a number field where the range has more values than the slider pixels */
 .rl-step { min-width: 28px; padding: 0 !important; font-weight: 600; }
 .rl-fine .rl-exact { display: inline-block; }
 /* fingers: every target at least 44 × 44 CSS px (WCAG 2.5.5); otherwise at least 24 × 24 (2.5.8) */
 @media (pointer: coarse) {
   .rl-stage button, .rl-stage select, .rl-stage input[type=text], .rl-stage summary { min-height: 44px; min-width: 44px; }
+  .rl-task-field input { min-height: 44px; }
   .rl-stage input[type=checkbox] { width: 44px; height: 44px; }
   .rl-stage input[type=range] { height: 44px; }
   .rl-exact { min-height: 44px; }

@@ -1,0 +1,415 @@
+// Writing an exercise without writing JSON: from the view on screen (Share → "Make an exercise"),
+// a panel in the stage lets the lecturer pick what the reader may change and what is hidden,
+// build the goal from the values the scene computes (each with its value now), type the title,
+// the prompt and up to three hints, record the start and the solution from the view as she sets
+// it, and take the link, iframe and element snippets. Each condition shows whether it holds at
+// the start and in the solution, so an exercise that is solved at its start or unsolvable shows.
+import { readTask, writeTask } from './format.js';
+import { checkGoal, measuresOf } from './check.js';
+import { describeCondition, statedNumber, valueName } from './words.js';
+import { encodeInput, decodeInput } from '../edit/input.js';
+
+/**
+ * @typedef {import('./format.js').Task} Task
+ *
+ * What the author panel needs of the page.
+ * @typedef {object} AuthorHooks
+ * @property {() => import('../i18n/index.js').Translator} i18n
+ * @property {() => import('../stage.js').Stage} stage
+ * @property {(task: Task) => Promise<{link: string | null, iframe: string | null, element: string}>} snippets
+ *   the Share dialog's snippets of an exercise (no link or iframe where the page has no address)
+ * @property {(task: Task) => void} tryIt   opens the exercise as a reader sees it
+ */
+
+/**
+ * @typedef {object} Row   one condition being written
+ * @property {string} value
+ * @property {'below' | 'above' | 'near'} test
+ * @property {string} bound
+ * @property {string} within
+ */
+
+/** Author panel states: what is recorded, per scene. */
+export class Author {
+  /**
+   * @param {HTMLElement} box   its place in the stage's panel
+   * @param {AuthorHooks} hooks
+   */
+  constructor(box, hooks) {
+    this.box = box;
+    this.hooks = hooks;
+    this.open = false;
+    /** @type {{params: import('../scene.js').Params, input: string | null} | null} */
+    this.start = null;
+    /** @type {{params: import('../scene.js').Params, input: string | null} | null} */
+    this.solution = null;
+    /** @type {Record<string, 'fixed' | 'change' | 'hide'>} */
+    this.params = {};
+    this.handles = false;
+    /** @type {Set<string>} readouts hidden */
+    this.hidden = new Set();
+    /** @type {Row[]} */
+    this.rows = [];
+    this.title = '';
+    this.prompt = '';
+    this.hints = ['', '', ''];
+    /** @type {string} the scene the panel was opened on */
+    this.scene = '';
+  }
+
+  /** Opens the panel on the view as it is (the start recorded from it). */
+  show() {
+    const stage = this.hooks.stage();
+    if (!stage.scene) return;
+    if (!this.open || this.scene !== stage.scene.id) {
+      this.scene = stage.scene.id;
+      this.params = Object.fromEntries(stage.scene.params.map((p) => [p.key, 'fixed']));
+      this.handles = false;
+      this.hidden = new Set();
+      this.rows = [];
+      this.solution = null;
+      this.title = '';
+      this.prompt = '';
+      this.hints = ['', '', ''];
+    }
+    this.open = true;
+    this.start = this.snapshot();
+    this.render();
+    /** @type {HTMLElement | null} */ (this.box.querySelector('input, textarea'))?.focus();
+  }
+
+  /** Closes the panel. */
+  close() {
+    this.open = false;
+    this.box.hidden = true;
+    this.box.replaceChildren();
+  }
+
+  /** @internal The view's state: its parameters and edit. */
+  snapshot() {
+    const stage = this.hooks.stage();
+    return { params: { ...stage.params }, input: stage.input ? encodeInput(stage.input) : null };
+  }
+
+  /** The exercise as written so far (may throw a TaskError: what is missing). */
+  task() {
+    const stage = this.hooks.stage();
+    const scene = /** @type {import('../scene.js').Scene} */ (stage.scene);
+    const lang = this.hooks.i18n().lang === 'de' ? 'de' : 'en';
+    const words = (/** @type {string} */ text) => ({ [lang]: text });
+    const start = /** @type {NonNullable<Author['start']>} */ (this.start);
+    // the start's parameters (all: what the reader may not change is held at these values)
+    const params = Object.fromEntries(scene.params.map((p) => [p.key, start.params[p.key]]));
+    const solutionParams = this.solution
+      ? Object.fromEntries(
+          scene.params
+            .filter((p) => this.solution?.params[p.key] !== start.params[p.key])
+            .map((p) => [p.key, this.solution?.params[p.key]]),
+        )
+      : null;
+    const id = `${
+      this.title
+        .toLowerCase()
+        .replace(/[^a-z0-9]+/g, '-')
+        .replace(/^-|-$/g, '')
+        .slice(0, 40) || 'exercise'
+    }-${hash(JSON.stringify([params, start.input, this.rows]))}`;
+    return readTask({
+      ruledlab: 'exercise',
+      version: 1,
+      id,
+      title: words(this.title.trim()),
+      prompt: words(this.prompt.trim()),
+      scene: scene.id,
+      params,
+      ...(start.input ? { input: start.input } : {}),
+      change: [
+        ...Object.entries(this.params)
+          .filter(([, v]) => v === 'change')
+          .map(([k]) => k),
+        ...(this.handles ? ['handles'] : []),
+      ],
+      hide: [
+        ...Object.entries(this.params)
+          .filter(([, v]) => v === 'hide')
+          .map(([k]) => k),
+        ...this.hidden,
+      ],
+      goal: this.rows.map((r) => ({
+        value: r.value,
+        [r.test]: number(r.bound),
+        ...(r.test === 'near' ? { within: number(r.within) } : {}),
+      })),
+      hints: this.hints.filter((h) => h.trim()).map((h) => words(h.trim())),
+      ...(this.solution
+        ? {
+            solution: {
+              ...(solutionParams && Object.keys(solutionParams).length ? { params: solutionParams } : {}),
+              ...(this.solution.input !== start.input && this.solution.input ? { input: this.solution.input } : {}),
+            },
+          }
+        : {}),
+    });
+  }
+
+  /** @internal Whether `task` holds in a recorded state (computed by the scene). */
+  holdsIn(/** @type {Task} */ task, /** @type {{params: import('../scene.js').Params, input: string | null}} */ state) {
+    const stage = this.hooks.stage();
+    const scene = /** @type {import('../scene.js').Scene} */ (stage.scene);
+    const input = state.input ? decodeInput(state.input) : null;
+    const context = { ...stage.context(), input: input ?? undefined };
+    try {
+      const built = scene.create(state.params, context);
+      return checkGoal(task, built, {}, { scene, params: state.params, context }).outcomes.map((o) => o.holds);
+    } catch {
+      return task.goal.map(() => false);
+    }
+  }
+
+  /** Builds the panel in the current language. */
+  render() {
+    if (!this.open) return;
+    const stage = this.hooks.stage();
+    const scene = stage.scene;
+    if (!scene) return;
+    const i18n = this.hooks.i18n();
+    const { t } = i18n;
+    const doc = this.box.ownerDocument;
+    const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
+      Object.assign(doc.createElement(tag), props);
+    const field = (/** @type {string} */ label, /** @type {HTMLElement} */ input) => {
+      const row = el('label', { className: 'rl-author-field' });
+      row.append(el('span', { textContent: label }), input);
+      return row;
+    };
+    this.box.hidden = false;
+    const heading = el('h3', { textContent: t('author.heading'), id: 'rl-author-title' });
+    this.box.setAttribute('aria-labelledby', heading.id);
+    const intro = el('p', { className: 'rl-author-intro', textContent: t('author.intro') });
+    const title = el('input', { type: 'text', value: this.title, maxLength: 200 });
+    title.addEventListener('input', () => (this.title = title.value));
+    const prompt = el('textarea', { rows: 4, value: this.prompt, maxLength: 2000 });
+    prompt.addEventListener('input', () => (this.prompt = prompt.value));
+
+    // what the reader may change, and what is hidden
+    const controls = el('fieldset', { className: 'rl-author-params' });
+    controls.append(el('legend', { textContent: t('author.params') }));
+    for (const p of scene.params) {
+      const select = /** @type {HTMLSelectElement} */ (el('select', { name: `author-${p.key}` }));
+      for (const v of ['fixed', 'change', 'hide']) select.add(new Option(t(`author.param.${v}`), v));
+      select.value = this.params[p.key] ?? 'fixed';
+      select.addEventListener('change', () => {
+        this.params[p.key] = /** @type {'fixed' | 'change' | 'hide'} */ (select.value);
+      });
+      controls.append(field(valueName(p.label, i18n), select));
+    }
+    if (stage.editor.sets.length) {
+      const handles = el('input', { type: 'checkbox', checked: this.handles, name: 'author-handles' });
+      handles.addEventListener('change', () => (this.handles = handles.checked));
+      const row = el('label', { className: 'rl-author-check' });
+      row.append(handles, ` ${t('author.handles')}`);
+      controls.append(row);
+    }
+    const built = stage.session.built;
+    const readouts = (built?.readouts ?? []).map((r) => r.label);
+    const hide = el('fieldset', { className: 'rl-author-hide' });
+    hide.append(el('legend', { textContent: t('author.hide') }));
+    // the readouts, and the sentences that may say an answer: the claims under the readout, the explanation
+    const hideable = [
+      ...readouts.map((key) => [key, valueName(key, i18n)]),
+      ...(built?.claims?.length ? [['claims', t('author.hide.claims')]] : []),
+      ['text', t('author.hide.text')],
+    ];
+    for (const [key, label] of hideable) {
+      const box = el('input', { type: 'checkbox', checked: this.hidden.has(key), name: `author-hide-${key}` });
+      box.addEventListener('change', () => (box.checked ? this.hidden.add(key) : this.hidden.delete(key)));
+      const row = el('label', { className: 'rl-author-check' });
+      row.append(box, ` ${label}`);
+      hide.append(row);
+    }
+
+    // the goal: conditions on the values the scene computes, each with its value now
+    const values = measuresOf(built);
+    const goal = el('fieldset', { className: 'rl-author-goal' });
+    goal.append(el('legend', { textContent: t('author.goal') }));
+    let task = /** @type {Task | null} */ (null);
+    let problem = '';
+    try {
+      task = this.rows.length ? this.task() : null;
+    } catch (e) {
+      problem = String(/** @type {any} */ (e).message);
+    }
+    const atStart = task && this.start ? this.holdsIn(task, this.start) : [];
+    const atSolution = task && this.solution ? this.holdsIn(task, this.solution) : [];
+    this.rows.forEach((r, k) => {
+      const row = el('div', { className: 'rl-author-row' });
+      const value = /** @type {HTMLSelectElement} */ (el('select', { name: `author-value-${k}` }));
+      value.setAttribute('aria-label', t('author.value'));
+      for (const key of Object.keys(values))
+        value.add(new Option(`${valueName(key, i18n)} (${t('author.now', { value: i18n.format(values[key]) })})`, key));
+      value.value = r.value;
+      value.addEventListener('change', () => {
+        r.value = value.value;
+        this.render();
+      });
+      const test = /** @type {HTMLSelectElement} */ (el('select', { name: `author-test-${k}` }));
+      test.setAttribute('aria-label', t('author.test'));
+      for (const v of ['below', 'above', 'near']) test.add(new Option(t(`author.test.${v}`), v));
+      test.value = r.test;
+      test.addEventListener('change', () => {
+        r.test = /** @type {Row['test']} */ (test.value);
+        this.render();
+      });
+      const bound = el('input', { type: 'text', inputMode: 'decimal', value: r.bound, name: `author-bound-${k}` });
+      bound.setAttribute('aria-label', t('author.bound'));
+      bound.addEventListener('change', () => {
+        r.bound = bound.value;
+        this.render();
+      });
+      row.append(value, test, bound);
+      if (r.test === 'near') {
+        const within = el('input', { type: 'text', inputMode: 'decimal', value: r.within, name: `author-within-${k}` });
+        within.setAttribute('aria-label', t('author.within'));
+        within.addEventListener('change', () => {
+          r.within = within.value;
+          this.render();
+        });
+        row.append(el('span', { textContent: t('author.withinLabel') }), within);
+      }
+      const remove = el('button', { type: 'button', textContent: '×' });
+      remove.setAttribute('aria-label', t('author.remove', { index: k + 1 }));
+      remove.addEventListener('click', () => {
+        this.rows.splice(k, 1);
+        this.render();
+      });
+      row.append(remove);
+      if (task) {
+        const c = task.goal[k];
+        const status = el('p', { className: 'rl-author-status' });
+        status.textContent = `${describeCondition(c, task, i18n)}: ${t(atStart[k] ? 'author.holdsAtStart' : 'author.failsAtStart')}${
+          this.solution ? `; ${t(atSolution[k] ? 'author.holdsInSolution' : 'author.failsInSolution')}` : ''
+        }`;
+        row.append(status);
+      }
+      goal.append(row);
+    });
+    const add = el('button', { type: 'button', textContent: t('author.add'), disabled: !Object.keys(values).length });
+    add.addEventListener('click', () => {
+      const key = Object.keys(values)[0];
+      this.rows.push({ value: key, test: 'below', bound: statedNumber(values[key], 'en'), within: '0.001' });
+      this.render();
+      /** @type {HTMLElement | null} */ (
+        this.box.querySelector(`[name="author-value-${this.rows.length - 1}"]`)
+      )?.focus();
+    });
+    goal.append(add);
+
+    const hints = el('fieldset', { className: 'rl-author-hints' });
+    hints.append(el('legend', { textContent: t('author.hints') }));
+    this.hints.forEach((h, k) => {
+      const area = el('textarea', { rows: 2, value: h, maxLength: 2000 });
+      area.addEventListener('input', () => (this.hints[k] = area.value));
+      hints.append(field(t('author.hint', { index: k + 1 }), area));
+    });
+
+    // start and solution, recorded from the view
+    const states = el('div', { className: 'rl-author-states' });
+    const recordStart = el('button', { type: 'button', textContent: t('author.recordStart') });
+    recordStart.addEventListener('click', () => {
+      this.start = this.snapshot();
+      this.render();
+    });
+    const recordSolution = el('button', { type: 'button', textContent: t('author.recordSolution') });
+    recordSolution.addEventListener('click', () => {
+      this.solution = this.snapshot();
+      this.render();
+    });
+    states.append(
+      el('p', { textContent: t('author.startRecorded') }),
+      recordStart,
+      el('p', { textContent: t(this.solution ? 'author.solutionRecorded' : 'author.noSolution') }),
+      recordSolution,
+    );
+
+    // the result: the exercise's snippets, or what is missing
+    const out = el('div', { className: 'rl-author-out' });
+    const make = el('button', { type: 'button', className: 'rl-author-make', textContent: t('author.make') });
+    const result = el('div', { className: 'rl-author-result' });
+    make.addEventListener('click', () => {
+      // the texts as typed now (a field left without a change event)
+      this.title = title.value;
+      this.prompt = prompt.value;
+      result.replaceChildren();
+      let made;
+      try {
+        made = this.task();
+      } catch (e) {
+        const error = /** @type {any} */ (e);
+        const reason = error?.details?.reason;
+        result.append(
+          el('p', {
+            className: 'rl-author-problem',
+            role: 'alert',
+            textContent: reason && i18n.has(reason) ? upper(t(reason, error.details.args)) : String(error?.message),
+          }),
+        );
+        return;
+      }
+      this.hooks.snippets(made).then((snippets) => {
+        const lines = [];
+        if (snippets.link) lines.push(readonly(doc, t('share.link'), snippets.link, 'author-link'));
+        if (snippets.iframe) lines.push(readonly(doc, t('share.iframe'), snippets.iframe, 'author-iframe'));
+        lines.push(readonly(doc, t('share.element'), snippets.element, 'author-element'));
+        lines.push(readonly(doc, t('author.json'), writeTask(made), 'author-json'));
+        const tryIt = el('button', { type: 'button', textContent: t('author.try') });
+        tryIt.addEventListener('click', () => this.hooks.tryIt(made));
+        result.append(...lines, tryIt);
+        /** @type {HTMLElement | null} */ (result.querySelector('textarea'))?.focus();
+      });
+    });
+    const close = el('button', { type: 'button', textContent: t('author.close') });
+    close.addEventListener('click', () => this.close());
+    out.append(make, close, result);
+    if (problem && this.rows.length) out.append(el('p', { className: 'rl-author-problem', textContent: problem }));
+    this.box.replaceChildren(
+      heading,
+      intro,
+      field(t('author.title'), title),
+      field(t('author.prompt'), prompt),
+      controls,
+      hide,
+      goal,
+      hints,
+      states,
+      out,
+    );
+  }
+}
+
+/** A read-only text with its label, to copy from. */
+function readonly(
+  /** @type {Document} */ doc,
+  /** @type {string} */ label,
+  /** @type {string} */ value,
+  /** @type {string} */ id,
+) {
+  const row = Object.assign(doc.createElement('div'), { className: 'rl-author-snippet' });
+  const area = Object.assign(doc.createElement('textarea'), { id, value, readOnly: true, rows: 3, spellcheck: false });
+  row.append(Object.assign(doc.createElement('label'), { htmlFor: id, textContent: label }), area);
+  return row;
+}
+
+/** A number as typed ("0,5" too); NaN when it is none (the format refuses it then). */
+function number(/** @type {string} */ text) {
+  const x = Number(String(text).trim().replace('−', '-').replace(',', '.'));
+  return text.trim() === '' ? Number.NaN : x;
+}
+
+/** A short hash of a text, for an exercise's id. */
+function hash(/** @type {string} */ text) {
+  let h = 2166136261;
+  for (let i = 0; i < text.length; i++) h = Math.imul(h ^ text.charCodeAt(i), 16777619);
+  return (h >>> 0).toString(36);
+}
+
+const upper = (/** @type {string} */ s) => s.charAt(0).toUpperCase() + s.slice(1);

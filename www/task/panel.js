@@ -1,0 +1,268 @@
+// The exercise in the stage's panel: its title and prompt, the reader's answer fields, Check (each
+// condition: holds or not, by how much it misses, in words; solved said in words and by a mark,
+// not by colour alone), up to three hints revealed in turn, the solution on request after a first
+// check, Start over, and Leave. All of it is text: an exercise's texts are never markup.
+import { say } from './format.js';
+import { checkGoal } from './check.js';
+import { describeCondition, outcomeText } from './words.js';
+
+/**
+ * @typedef {import('./format.js').Task} Task
+ *
+ * What the panel needs of its stage.
+ * @typedef {object} TaskHooks
+ * @property {() => import('../i18n/index.js').Translator} i18n
+ * @property {() => {scene: import('../scene.js').Scene, params: import('../scene.js').Params, context: import('../scene.js').Context, built: import('../scene.js').Built} | null} state
+ *   what is shown now (null while the scene cannot be computed)
+ * @property {() => void} startOver      back to the exercise's start
+ * @property {() => void} showSolution   the solution's state (parameters, edit)
+ * @property {(() => void) | null} leave the page leaves the exercise (an element cannot)
+ * @property {(type: 'check' | 'solved', detail: TaskReport) => void} report
+ *
+ * What a check reports (the `task-check` and `task-solved` events, and a message to the page
+ * around a frame).
+ * @typedef {object} TaskReport
+ * @property {string} task        the exercise's id
+ * @property {string} title
+ * @property {boolean} solved
+ * @property {number} passed      how many conditions hold
+ * @property {number} of          how many there are
+ * @property {Array<{holds: boolean, value: number | null, target: number | null}>} conditions
+ *   (an answer condition's value and target are null: they would give the answer away)
+ * @property {import('./check.js').Answers} answers
+ */
+
+let serial = 0;
+
+export class TaskPanel {
+  /**
+   * @param {HTMLElement} box   the panel's place in the stage
+   * @param {TaskHooks} hooks
+   */
+  constructor(box, hooks) {
+    this.box = box;
+    this.hooks = hooks;
+    /** @type {Task | null} */
+    this.task = null;
+    /** @type {import('./check.js').Answers} */
+    this.answers = {};
+    this.hints = 0;
+    this.checked = false;
+    this.solved = false;
+    this.id = `rl-task-${++serial}`;
+  }
+
+  /** Shows an exercise (null: none), its answers empty, no hint shown. */
+  show(/** @type {Task | null} */ task) {
+    this.task = task;
+    this.answers = {};
+    this.hints = 0;
+    this.checked = false;
+    this.solved = false;
+    this.render();
+  }
+
+  /** Builds the panel in the current language (answers typed so far stay). */
+  render() {
+    const task = this.task;
+    this.box.hidden = !task;
+    if (!task) return this.box.replaceChildren();
+    const i18n = this.hooks.i18n();
+    const { t, lang } = i18n;
+    const doc = this.box.ownerDocument;
+    const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
+      Object.assign(doc.createElement(tag), props);
+    const heading = el('h3', { className: 'rl-task-title', id: `${this.id}-title` });
+    heading.append(
+      el('span', { className: 'rl-task-kind', textContent: `${t('task.heading')} ` }),
+      say(task.title, lang),
+    );
+    this.box.setAttribute('aria-labelledby', heading.id);
+    const prompt = el('p', { className: 'rl-task-prompt', textContent: say(task.prompt, lang) });
+    const held = el('p', { className: 'rl-task-held', textContent: t(this.asks(task) ? 'task.held' : 'task.heldAll') });
+    const answers = el('div', { className: 'rl-task-answers' });
+    for (const a of task.answers) {
+      const label = say(a.label, lang);
+      if (a.kind === 'curve') {
+        const group = el('fieldset', { className: 'rl-task-curve' });
+        group.append(el('legend', { textContent: label }));
+        const typed = /** @type {string[]} */ (Array.isArray(this.answers[a.id]) ? this.answers[a.id] : ['', '', '']);
+        ['x', 'y', 'z'].forEach((c, k) => {
+          const field = this.field(`${a.id}-${c}`, `${c}(u) =`, typed[k] ?? '', (v) => {
+            const now = /** @type {string[]} */ (Array.isArray(this.answers[a.id]) ? this.answers[a.id] : ['', '', '']);
+            now[k] = v;
+            this.answers[a.id] = now;
+          });
+          group.append(field);
+        });
+        answers.append(group);
+      } else {
+        answers.append(
+          this.field(
+            a.id,
+            a.kind === 'function' ? `${label} =` : label,
+            String(this.answers[a.id] ?? ''),
+            (v) => {
+              this.answers[a.id] = v;
+            },
+            a.kind === 'number',
+          ),
+        );
+      }
+    }
+    const buttons = el('div', { className: 'rl-task-buttons' });
+    const check = el('button', { type: 'button', className: 'rl-task-check', textContent: t('task.check') });
+    check.addEventListener('click', () => this.check());
+    const hint = el('button', {
+      type: 'button',
+      className: 'rl-task-hint',
+      textContent: t('task.hint', { shown: this.hints, count: task.hints.length }),
+      disabled: this.hints >= task.hints.length,
+      hidden: task.hints.length === 0,
+    });
+    hint.addEventListener('click', () => {
+      this.hints = Math.min(task.hints.length, this.hints + 1);
+      this.render();
+      /** @type {HTMLElement | null} */ (this.box.querySelector(`.rl-task-hints li:nth-child(${this.hints})`))?.focus();
+    });
+    const solution = el('button', {
+      type: 'button',
+      className: 'rl-task-solution',
+      textContent: t('task.solution'),
+      hidden: !task.solution,
+      disabled: !this.checked,
+      title: this.checked ? '' : t('task.solutionAfterCheck'),
+    });
+    solution.addEventListener('click', () => {
+      const answers = task.solution?.answers ?? {};
+      for (const [k, v] of Object.entries(answers)) this.answers[k] = Array.isArray(v) ? [...v] : String(v);
+      this.hooks.showSolution();
+      this.render();
+      this.check();
+    });
+    const again = el('button', { type: 'button', className: 'rl-task-again', textContent: t('task.startOver') });
+    again.addEventListener('click', () => {
+      this.show(task);
+      this.hooks.startOver();
+    });
+    buttons.append(check, hint, solution, again);
+    if (this.hooks.leave) {
+      const leave = el('button', { type: 'button', className: 'rl-task-leave', textContent: t('task.leave') });
+      leave.addEventListener('click', () => this.hooks.leave?.());
+      buttons.append(leave);
+    }
+    const hints = el('ol', { className: 'rl-task-hints', hidden: this.hints === 0 });
+    hints.setAttribute('aria-label', t('task.hints'));
+    task.hints.slice(0, this.hints).forEach((h) => {
+      hints.append(el('li', { textContent: say(h, lang), tabIndex: -1 }));
+    });
+    const results = el('ul', { className: 'rl-task-results', hidden: true });
+    results.setAttribute('aria-label', t('task.results'));
+    const verdict = el('p', { className: 'rl-task-verdict', hidden: true });
+    verdict.setAttribute('role', 'status');
+    this.box.replaceChildren(heading, prompt, answers, buttons, hints, results, verdict, held);
+    if (this.checked) this.check(false);
+  }
+
+  /** Whether the exercise lets the reader change anything in the scene. */
+  asks(/** @type {Task} */ task) {
+    return task.change.length > 0;
+  }
+
+  /**
+   * An answer field with its label.
+   * @param {string} key @param {string} label @param {string} value
+   * @param {(value: string) => void} onInput
+   * @param {boolean} [number]
+   */
+  field(key, label, value, onInput, number = false) {
+    const doc = this.box.ownerDocument;
+    const row = Object.assign(doc.createElement('label'), { className: 'rl-task-field' });
+    const input = Object.assign(doc.createElement('input'), {
+      type: 'text',
+      name: `task-${key}`,
+      value,
+      spellcheck: false,
+      autocomplete: 'off',
+      className: number ? 'rl-task-number' : 'rl-formula',
+    });
+    if (number) input.inputMode = 'decimal';
+    input.addEventListener('input', () => onInput(input.value));
+    // Enter in a field checks
+    input.addEventListener('keydown', (e) => {
+      if (e.key === 'Enter') {
+        e.preventDefault();
+        this.check();
+      }
+    });
+    row.append(Object.assign(doc.createElement('span'), { textContent: label }), input);
+    return row;
+  }
+
+  /** Checks the goal on what is shown: each condition in words, solved or not; reports it (`announce`: say it). */
+  check(announce = true) {
+    const task = this.task;
+    if (!task) return null;
+    const i18n = this.hooks.i18n();
+    const { t } = i18n;
+    const results = /** @type {HTMLElement} */ (this.box.querySelector('.rl-task-results'));
+    const verdict = /** @type {HTMLElement} */ (this.box.querySelector('.rl-task-verdict'));
+    const state = this.hooks.state();
+    const doc = this.box.ownerDocument;
+    this.checked = true;
+    /** @type {HTMLButtonElement | null} */ (this.box.querySelector('.rl-task-solution'))?.removeAttribute('disabled');
+    if (!state) {
+      results.hidden = true;
+      verdict.hidden = false;
+      verdict.className = 'rl-task-verdict';
+      verdict.textContent = t('task.noPicture');
+      return null;
+    }
+    const { outcomes, solved } = checkGoal(task, state.built, this.answers, state);
+    results.replaceChildren(
+      ...outcomes.map((o) => {
+        const li = doc.createElement('li');
+        li.className = o.holds ? 'rl-holds' : 'rl-fails';
+        const mark = Object.assign(doc.createElement('span'), {
+          className: 'rl-mark',
+          textContent: o.holds ? '✓' : '✗',
+        });
+        mark.setAttribute('aria-hidden', 'true');
+        const status = Object.assign(doc.createElement('span'), {
+          className: 'rl-sr-only',
+          textContent: `${t(o.holds ? 'task.holds' : 'task.notYet')}: `,
+        });
+        const words = Object.assign(doc.createElement('span'), {
+          textContent: `${describeCondition(o.condition, task, i18n)} — ${outcomeText(o, i18n)}`,
+        });
+        li.append(mark, status, words);
+        return li;
+      }),
+    );
+    results.hidden = false;
+    verdict.hidden = false;
+    verdict.className = solved ? 'rl-task-verdict rl-task-solved' : 'rl-task-verdict';
+    const passed = outcomes.filter((o) => o.holds).length;
+    verdict.textContent = solved ? `✓ ${t('task.solved')}` : t('task.notSolved', { passed, of: outcomes.length });
+    /** @type {TaskReport} */
+    const report = {
+      task: task.id,
+      title: task.title.en ?? task.title.de ?? task.id,
+      solved,
+      passed,
+      of: outcomes.length,
+      conditions: outcomes.map((o) => ({
+        holds: o.holds,
+        value: o.condition.answer && !o.condition.matches ? null : Number.isFinite(o.value) ? o.value : null,
+        target: o.condition.answer && !o.condition.matches ? null : Number.isFinite(o.target) ? o.target : null,
+      })),
+      answers: structuredClone(this.answers),
+    };
+    if (announce) {
+      this.hooks.report('check', report);
+      if (solved && !this.solved) this.hooks.report('solved', report);
+    }
+    this.solved = solved;
+    return report;
+  }
+}

@@ -1,0 +1,104 @@
+// An exercise's conditions and their outcomes in the reader's words: what a condition asks
+// ("the largest distance of the striction polygon from the exact curve below 0.001") and how it
+// stands ("now 0.0023: it misses by 0.0013"). An answer's own value is never said (that would
+// give it away): a typed curve says how far it is from the exact one and where.
+import { say } from './format.js';
+import { plainRich } from '../ui/richtext.js';
+import { describeError } from '../ui/errors.js';
+import { superscript } from '../i18n/translate.js';
+
+/**
+ * @typedef {import('./format.js').Task} Task
+ * @typedef {import('./format.js').Condition} Condition
+ * @typedef {import('./check.js').Outcome} Outcome
+ * @typedef {import('../i18n/index.js').Translator} Translator
+ */
+
+/** The name of a value a condition names: its readout's label, or the measure's own. */
+export function valueName(/** @type {string} */ key, /** @type {Translator} */ { t, has }) {
+  return plainRich(has(`measure.${key}`) ? t(`measure.${key}`) : t(key));
+}
+
+/**
+ * A number an exercise states (a bound, a tolerance) as its author wrote it: "0.01", "10⁻⁹",
+ * "2·10⁻⁴" (German "0,01"), not rounded to a readout's digits.
+ */
+export function statedNumber(/** @type {number} */ x, /** @type {string} */ lang) {
+  const a = Math.abs(x);
+  if (a === 0 || (a >= 1e-4 && a < 1e6))
+    return x.toLocaleString(lang, { maximumSignificantDigits: 6, useGrouping: false }).replace('-', '−');
+  const [m, e] = x.toExponential().split('e');
+  const mantissa = Number(m);
+  const power = `10${superscript(Number(e))}`;
+  if (Math.abs(mantissa) === 1) return `${mantissa < 0 ? '−' : ''}${power}`;
+  return `${mantissa.toLocaleString(lang, { maximumSignificantDigits: 6 }).replace('-', '−')}·${power}`;
+}
+
+/** The bound of a condition in words: a number, or another value's name. */
+function boundText(/** @type {number | {value: string}} */ b, /** @type {Translator} */ i18n) {
+  return typeof b === 'number' ? statedNumber(b, i18n.lang) : valueName(b.value, i18n);
+}
+
+/** What a condition asks, in words. */
+export function describeCondition(
+  /** @type {Condition} */ c,
+  /** @type {Task} */ task,
+  /** @type {Translator} */ i18n,
+) {
+  const { t } = i18n;
+  if (c.answer) {
+    const answer = task.answers.find((a) => a.id === c.answer);
+    const label = answer ? say(answer.label, i18n.lang) : c.answer;
+    if (c.matches)
+      return t(c.matches === 'striction' ? 'task.cond.matchesStriction' : 'task.cond.matchesDistribution', {
+        answer: label,
+        within: statedNumber(/** @type {number} */ (c.within), i18n.lang),
+      });
+    return t('task.cond.answer', { answer: label });
+  }
+  const name = valueName(/** @type {string} */ (c.value), i18n);
+  if (c.below !== undefined) return t('task.cond.below', { name, bound: boundText(c.below, i18n) });
+  if (c.above !== undefined) return t('task.cond.above', { name, bound: boundText(c.above, i18n) });
+  return t('task.cond.near', {
+    name,
+    bound: boundText(/** @type {number | {value: string}} */ (c.near), i18n),
+    within: statedNumber(/** @type {number} */ (c.within), i18n.lang),
+  });
+}
+
+/** How a condition stands, in words (after its description). */
+export function outcomeText(/** @type {Outcome} */ o, /** @type {Translator} */ i18n) {
+  const { t, format } = i18n;
+  const error = /** @type {any} */ (o.error);
+  if (error) {
+    const reason = error.details?.reason;
+    if (reason === 'task.check.noAnswer') return t('task.out.noAnswer');
+    return t('task.out.error', { message: taskErrorText(error, i18n) });
+  }
+  const c = o.condition;
+  if (c.answer && !c.matches) return t(o.holds ? 'task.out.right' : 'task.out.notRight');
+  if (!Number.isFinite(o.value)) return t('task.out.undefined');
+  if (c.matches) {
+    if (o.value === Number.POSITIVE_INFINITY) return t('task.out.curveUndefined', { at: format(o.at ?? Number.NaN) });
+    return t(o.holds ? 'task.out.curveHolds' : 'task.out.curveMisses', {
+      value: format(o.value),
+      at: format(o.at ?? Number.NaN),
+    });
+  }
+  return t(o.holds ? 'task.out.holds' : 'task.out.misses', { value: format(o.value), miss: format(o.miss) });
+}
+
+/**
+ * An exercise's error in the reader's words, to go inside a sentence: its own reasons
+ * (task.error.*) from the language's texts, the core's (a typed formula refused) as the page
+ * says them.
+ * @param {unknown} error
+ * @param {Translator} i18n
+ */
+export function taskErrorText(error, i18n) {
+  const e = /** @type {any} */ (error);
+  const reason = e?.details?.reason;
+  if (typeof reason === 'string' && reason.startsWith('task.') && i18n.has(reason))
+    return i18n.t(reason, e.details.args ?? {});
+  return describeError(error, i18n);
+}
