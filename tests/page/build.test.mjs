@@ -4,8 +4,8 @@
 // and is sent compressed as the browser accepts, with Vary and the right type; hashed names are
 // cached for a year, the rest revalidated; the first scene requests only the page, its entry
 // and the chunks the entry imports, the stylesheet, the icon and the wasm (once, compiled by
-// WebAssembly.instantiateStreaming) — not the other language, the Share dialog, the figure
-// exports or the worker, which load when first used; every scene draws from the bundle; and the
+// WebAssembly.instantiateStreaming) — not the other language, the Share dialog, the exercise
+// author, the figure exports or the worker, which load when first used; every scene draws from the bundle; and the
 // page works in a sandboxed frame of a course system. The other page tests use the unbundled
 // page (npm run dev): they test what the page does, and their failures point at www/'s lines.
 import { test, before, after } from 'node:test';
@@ -112,7 +112,7 @@ test('served as the browser accepts: brotli, else gzip, else as it is, with Vary
   assert.equal(entry.headers['cache-control'], 'public, max-age=31536000, immutable');
 });
 
-test('the first scene requests only what it draws; the other language, the Share dialog and the figure exports load when first used', async () => {
+test('the first scene requests only what it draws; the other language, the Share dialog, the exercise author and the figure exports load when first used', async () => {
   const page = await browser.newPage({ viewport: { width: 412, height: 823 }, isMobile: true, hasTouch: true });
   const problems = watch(page);
   page.on('console', (m) => /instantiateStreaming/.test(m.text()) && problems.push(`console: ${m.text()}`));
@@ -162,7 +162,10 @@ test('the first scene requests only what it draws; the other language, the Share
   await page.locator('#share').click();
   await page.locator('#share-dialog[open]').waitFor();
   assert.ok(loaded('the Share dialog').length > 0, 'the Share dialog opened without its module');
-  await page.keyboard.press('Escape');
+  assert.deepEqual(loaded('the exercise author'), []);
+  await page.locator('#share-exercise').click();
+  await page.locator('.rl-author-field input').first().waitFor();
+  assert.ok(loaded('the exercise author').length > 0, 'Make an exercise opened without its module');
   await page.locator('.io summary').click();
   const [download] = await Promise.all([page.waitForEvent('download'), page.locator('[data-export="svg"]').click()]);
   assert.match(readFileSync(/** @type {string} */ (await download.path()), 'utf8'), /<svg/);
