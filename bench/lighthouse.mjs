@@ -78,6 +78,8 @@ function lighthouseBin() {
  * @property {number} upload         ms in ruledlab:upload (buffers and shaders to the GPU) before it
  * @property {number} frameTask      ms, the main-thread task that drew the first frame (observed)
  * @property {number} longest        ms, the longest main-thread task before that one (observed)
+ * @property {boolean} frameLongest  whether the first frame's task is the load's longest (observed)
+ * @property {number} simulatedLongest  ms, the longest task in Lighthouse's simulation
  */
 
 /**
@@ -144,6 +146,8 @@ export function summarize(report) {
   const longest = tasks
     .filter((t) => t !== drawing && (drawing === undefined || t.startTime < drawing.startTime))
     .reduce((most, t) => Math.max(most, t.duration), 0);
+  /** @type {Array<{duration: number}>} */
+  const simulated = a['long-tasks']?.details?.items ?? [];
   return {
     performance: c.performance.score,
     accessibility: c.accessibility.score,
@@ -161,6 +165,8 @@ export function summarize(report) {
     upload: before('ruledlab:upload'),
     frameTask: drawing?.duration ?? 0,
     longest,
+    frameLongest: !!drawing && tasks.every((t) => t.duration <= drawing.duration),
+    simulatedLongest: simulated.reduce((most, t) => Math.max(most, t.duration), 0),
   };
 }
 
@@ -208,8 +214,12 @@ const status = (ok, of) => {
     ? `met in all ${of.length}`
     : `not met in ${missed.length} of ${of.length} (${missed.map((r) => `${r.build} ${r.profile} ${r.scene}`).join(', ')})`;
 };
-/** The blocking time (in the simulation) of the task that drew the first frame: its excess over 50 ms. */
-const frameBlocking = (/** @type {Result} */ r) => Math.max(0, r.slowdown * r.frameTask - 50);
+/**
+ * The blocking time the first frame's task adds to TBT: where it is the longest task of the
+ * load, the longest task of the simulation is that task scaled, and its excess over 50 ms counts;
+ * null where another task is longer (then it cannot be told apart).
+ */
+const frameBlocking = (/** @type {Result} */ r) => (r.frameLongest ? Math.max(0, r.simulatedLongest - 50) : null);
 const name = (/** @type {Result} */ r) => `${r.build} | ${r.profile} | ${r.scene}`;
 const block = [
   `<!-- written by bench/lighthouse.mjs (npm run bench) on ${date} -->`,
@@ -223,9 +233,9 @@ const block = [
       `| ${name(r)} | ${r.performance.toFixed(2)} | ${seconds(r.lcp)} | ${r.tbt.toFixed(0)} ms | ${(r.bytes / 1024).toFixed(0)} KiB | ${r.requests} | ${r.accessibility.toFixed(2)} | ${r.bestPractices.toFixed(2)} |`,
   ),
   '',
-  "The page's own marks in the same loads (unthrottled, ms from navigation): the wasm compiled and instantiated; the first frame's draw calls made; the next frame begun (the GPU's part done: here SwiftShader draws, and the frame is read back for the software compositor); before the first frame the time in the core (`ruledlab:core:…`, set by the bindings), in the scenes' `create()` (core and buffers) and in uploading buffers; the main-thread task that drew the first frame, and the longest task before it. In the simulation every task is as many times longer as the CPU is slower: the last column is the blocking time the first frame's task alone adds to TBT.",
+  "The page's own marks in the same loads (unthrottled, ms from navigation): the wasm compiled and instantiated; the first frame's draw calls made; the next frame begun (the GPU's part done: here SwiftShader draws, and the frame is read back for the software compositor); before the first frame the time in the core (`ruledlab:core:…`, set by the bindings), in the scenes' `create()` (core and buffers) and in uploading buffers; the main-thread task that drew the first frame, and the longest task before it. Where the first frame's task is the longest of the load, it is also the longest task of the simulation, scaled to the phone's CPU: the last column is that simulated task's blocking time (its excess over 50 ms), which it alone adds to TBT.",
   '',
-  '| build | profile | scene | wasm compiled | first frame | presented | core | create() | upload | first frame task | longest task before it | its TBT share |',
+  '| build | profile | scene | wasm compiled | first frame | presented | core | create() | upload | first frame task | longest task before it | its share of TBT (simulated) |',
   '|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
   ...results.map(
     (r) =>
@@ -236,7 +246,7 @@ const block = [
   '|---|---|',
   `| mobile performance ≥ ${GOALS.performance} | ${status((r) => r.performance >= GOALS.performance, mobile)} |`,
   `| mobile LCP ≤ ${GOALS.lcp / 1000} s | ${status((r) => r.lcp <= GOALS.lcp, mobile)} |`,
-  `| mobile TBT ≤ ${GOALS.tbt} ms | ${status((r) => r.tbt <= GOALS.tbt, mobile)}; without the first frame's task: ${status((r) => r.tbt - frameBlocking(r) <= GOALS.tbt, mobile)} |`,
+  `| mobile TBT ≤ ${GOALS.tbt} ms | ${status((r) => r.tbt <= GOALS.tbt, mobile)}; without the first frame's task: ${status((r) => frameBlocking(r) !== null && r.tbt - /** @type {number} */ (frameBlocking(r)) <= GOALS.tbt, mobile)} |`,
   `| accessibility 1.0 | ${status((r) => r.accessibility >= GOALS.accessibility, results)} |`,
   `| best practices 1.0 | ${status((r) => r.bestPractices >= GOALS.bestPractices, results)} |`,
 ].join('\n');
