@@ -57,17 +57,7 @@ export function pickLanguage(wanted) {
   return 'en';
 }
 
-/**
- * @typedef {object} Translator
- * @property {string} lang
- * @property {(key: string, vars?: Record<string, string | number>) => string} t
- *   the text of `key`, with `{name}` replaced by `vars.name` (numbers formatted); the English
- *   text when the language lacks the key, the key itself when English lacks it too
- * @property {(key: string) => boolean} has
- * @property {(x: number | string | boolean | null | undefined) => string} format
- *   a readout number: integers as they are, others with 3 decimals between 0.1 and 1000 and in
- *   scientific notation otherwise; "exact" for 0 where exactness is claimed by the caller
- */
+/** @typedef {import('./index.js').Translator} Translator */
 
 /**
  * The separators (grouping, decimal) of the languages offered: their numbers are written here,
