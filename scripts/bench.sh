@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Benchmarks: criterion natively, then the same kernels through the wasm package in Node.
+# Benchmarks: criterion natively, then the same kernels through the wasm package in Node, frame
+# times in the page, and Lighthouse on the production page and the one-file build (installed on
+# demand into target/lighthouse/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -13,3 +15,4 @@ GLIBC_TUNABLES=glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967295 \
 node bench/wasm.mjs
 node bench/page.mjs
 node bench/drag.mjs
+node bench/lighthouse.mjs

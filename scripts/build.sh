@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the package into pkg/ (release wasm with LTO, wasm-bindgen --target web, wasm-opt;
 # skipped when pkg/ is newer than the compiled wasm; pkg/catalogue.js, the catalogue's formula
-# texts for the page; pkg/view/, the declarations of ruledlab/view generated from www/'s JSDoc)
-# and the one-file builds into dist/.
+# texts for the page; pkg/view/, the declarations of ruledlab/view generated from www/'s JSDoc),
+# the one-file builds into dist/ and the production page into dist/web/ (bundled, minified,
+# split, hashed, precompressed: scripts/web.mjs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -14,6 +15,7 @@ if [ pkg/ruledlab_bg.wasm -nt "$raw" ] && [ pkg/ruledlab.js -nt "$raw" ]; then
   [ pkg/catalogue.js -nt pkg/ruledlab_bg.wasm ] || node scripts/catalogue.mjs
   node scripts/view-types.mjs
   node scripts/onefile.mjs
+  node scripts/web.mjs
   exit 0
 fi
 wasm-bindgen --target web --weak-refs --out-dir pkg --out-name ruledlab \
@@ -26,3 +28,4 @@ echo "build: pkg/ruledlab_bg.wasm $((size / 1024)) KiB, $((gz / 1024)) KiB gzipp
 node scripts/catalogue.mjs
 node scripts/view-types.mjs
 node scripts/onefile.mjs
+node scripts/web.mjs

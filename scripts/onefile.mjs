@@ -3,7 +3,10 @@
 //                           inlined (scripts/onefile/entry.js)
 //   dist/ruledlab.html      the whole page in one file: the same script inline, the CSS, a
 //                           state block; no other request; works from file:// and uploaded to
-//                           a course system
+//                           a course system. The script is a module at the end of the body:
+//                           the browser parses and paints the page's "Loading" before it runs it,
+//                           and the page shows the scene's heading and text before the core is
+//                           decoded and compiled
 // The page's Content-Security-Policy allows exactly its inline script and style by hash,
 // 'wasm-unsafe-eval' for the module, data:/blob: images and blob: workers.
 import { build } from 'esbuild';
@@ -11,7 +14,7 @@ import { createHash } from 'node:crypto';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { fileURLToPath } from 'node:url';
-import { BODY, STATE_ID, stateJson } from '../www/export/onefile.js';
+import { BODY, SCRIPT_ID, STATE_ID, stateJson } from '../www/export/onefile.js';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 /** @param {string} p */
@@ -84,9 +87,9 @@ const html = `<!doctype html>
 <style>${css}</style>
 <noscript><style>${noscript}</style></noscript>
 <script type="application/json" id="${STATE_ID}">${stateJson('')}</script>
-<script>${page}</script>
 </head>
-<body>${BODY}</body>
+<body>${BODY}
+<script type="module" id="${SCRIPT_ID}">${page}</script></body>
 </html>
 `;
 mkdirSync(path('dist'), { recursive: true });

@@ -102,7 +102,7 @@ fn the_layers_name_each_module_once() {
 /// without a home. Besides them only the helpers every binding shares.
 #[test]
 fn each_binding_file_names_an_area_of_the_core() {
-    const HELPERS: &[&str] = &["mod", "args", "error", "live", "buffers"];
+    const HELPERS: &[&str] = &["mod", "args", "error", "live", "buffers", "timing"];
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut core = Vec::new();
     sources(&root, &root, &mut core);

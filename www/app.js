@@ -4,15 +4,15 @@
 // the previous scene) and the Share dialog (share.js). This module puts them together.
 import { liveObjects } from '../pkg/ruledlab.js';
 import { start, memoryBytes } from './core.js';
+import { afterPaint, nextTask } from './tasks.js';
 import { Stage } from './stage.js';
 import { SCENES } from './scenes/index.js';
 import { findPreset } from './paper.js';
 import { readState } from './state.js';
-import { translator, pickLanguage } from './i18n/index.js';
+import { translator, pickLanguage, loadLanguage } from './i18n/translate.js';
 import { adoptStyles } from './ui/css.js';
 import { showFailure } from './ui/failure.js';
 import { storedHash } from './export/onefile.js';
-import { shareDialog } from './share.js';
 import { stored } from './platform.js';
 import { pageChrome, plainTitle } from './page/chrome.js';
 import { dataPanel, parseStored, STORED } from './page/data-panel.js';
@@ -26,7 +26,6 @@ import { markSolved } from './task/progress.js';
 import { postToParent } from './task/message.js';
 import { taskErrorText } from './task/words.js';
 import { encodeInput } from './edit/input.js';
-import { Author } from './task/author.js';
 import { readTask, say } from './task/format.js';
 
 /**
@@ -37,11 +36,20 @@ import { readTask, say } from './task/format.js';
 export async function startPage({ oneFile = false, embedScript } = {}) {
   const doc = document;
   adoptStyles(doc);
-  await start();
-  let state = readState(location.hash || (oneFile ? `#${storedHash()}` : ''), SCENES);
-  let lang = pickLanguage(state.lang);
+  // the core downloads and compiles while the page around the view is built, each part in a
+  // task of its own (tasks.js); the link is read once the core is there (its values are checked
+  // against the core's catalogue)
+  const core = start();
+  core.catch(() => {});
+  const link = new URLSearchParams((location.hash || (oneFile ? `#${storedHash()}` : '')).replace(/^#/, ''));
+  /** @type {import('./state.js').ViewState} */
+  let state;
+  let lang = pickLanguage(link.get('lang'));
+  await Promise.all([loadLanguage(lang), nextTask()]);
   let i18n = translator(lang);
 
+  // "Loading …" (boot.js) goes over the view while the core loads, and says why if it cannot start
+  const boot = doc.getElementById('boot');
   const chrome = pageChrome(doc);
   const share = /** @type {HTMLDialogElement} */ (
     Object.assign(doc.createElement('dialog'), { className: 'share', id: 'share-dialog' })
@@ -63,7 +71,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   const stage = new Stage(chrome.main, {
     lang,
     page: true,
-    editable: !state.embed || !!state.edit,
+    editable: !link.has('embed') || link.has('edit'),
     onChange: ({ reason, ended }) => {
       // an edit too large for the link stays in the tab (and the page says so)
       if (ended && stage.scene && (reason === 'input' || reason === 'reset')) {
@@ -144,7 +152,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   /** Opens the state of the current address (on load, Back/Forward, or an edited link). */
   const openAddress = async () => {
     state = readState(address.current(), SCENES);
-    if (state.lang && pickLanguage(state.lang) !== lang) setLanguage(pickLanguage(state.lang), false);
+    if (state.lang && pickLanguage(state.lang) !== lang) await setLanguage(pickLanguage(state.lang), false);
     doc.body.classList.toggle('embed', state.embed);
     stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
     stage.setEditable(!state.embed || !!state.edit);
@@ -207,13 +215,14 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   };
 
   /** @param {string} code @param {boolean} [write] */
-  const setLanguage = (code, write = true) => {
+  const setLanguage = async (code, write = true) => {
+    await loadLanguage(code);
     lang = code;
     i18n = translator(lang);
     state.lang = code;
     stage.setLanguage(code);
     localize();
-    if (share.open) sharing.open();
+    if (share.open) openShare();
     if (write) address.save('replace');
   };
 
@@ -238,41 +247,68 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   window.addEventListener('popstate', () => openAddress());
   window.addEventListener('hashchange', () => openAddress());
 
-  // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file
-  const sharing = shareDialog(share, {
-    stage,
-    i18n: () => i18n,
-    state: () => ({ .../** @type {NonNullable<ReturnType<typeof shown>>} */ (shown()), lang }),
-    oneFile,
-    embedScript,
-    author: () => author.show(),
-  });
-  // "Make an exercise" from the view on screen (Share → Make an exercise)
-  const author = new Author(stage.authorBox, {
-    i18n: () => i18n,
-    stage: () => stage,
-    snippets: (task) =>
-      sharing.taskSnippets(
-        taskLink(task, (id) => builtInTask(id) !== null),
-        say(task.title, lang),
-      ),
-    tryIt: (task) => {
-      author.close();
-      openTask(
-        taskLink(task, (id) => builtInTask(id) !== null),
-        true,
-      ).then((opened) => {
-        if (opened) address.save('push');
-        localize();
-      });
-    },
-  });
-  chrome.shareButton.addEventListener('click', () => sharing.open());
+  // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file, and "Make an
+  // exercise" from the view on screen (Share → Make an exercise) — share.js and task/author.js,
+  // loaded when first opened
+  /** @type {Promise<ReturnType<import('./share.js').shareDialog>> | null} */
+  let sharing = null;
+  const shareModule = () => {
+    sharing ??= import('./share.js').then(({ shareDialog }) =>
+      shareDialog(share, {
+        stage,
+        i18n: () => i18n,
+        state: () => ({ .../** @type {NonNullable<ReturnType<typeof shown>>} */ (shown()), lang }),
+        oneFile,
+        embedScript,
+        author: () => authoring().then((author) => author.show()),
+      }),
+    );
+    return sharing;
+  };
+  const openShare = () => shareModule().then((dialog) => dialog.open());
+  /** @type {Promise<import('./task/author.js').Author> | null} */
+  let author = null;
+  const authoring = () => {
+    author ??= import('./task/author.js').then(
+      ({ Author }) =>
+        new Author(stage.authorBox, {
+          i18n: () => i18n,
+          stage: () => stage,
+          snippets: (task) =>
+            shareModule().then((dialog) =>
+              dialog.taskSnippets(
+                taskLink(task, (id) => builtInTask(id) !== null),
+                say(task.title, lang),
+              ),
+            ),
+          tryIt: (task) => {
+            authoring().then((made) => made.close());
+            openTask(
+              taskLink(task, (id) => builtInTask(id) !== null),
+              true,
+            ).then((opened) => {
+              if (opened) address.save('push');
+              localize();
+            });
+          },
+        }),
+    );
+    return author;
+  };
+  chrome.shareButton.addEventListener('click', () => openShare());
 
   stage.viewer.onFrame = (n) => {
     doc.body.dataset.frames = String(n);
   };
   localize();
+  if (boot) stage.view.append(boot);
+  // the linked scene's heading and explanation while the core loads (a view in a frame, which
+  // may show no text, and an exercise, which may hide some, wait for the link to be read)
+  if (!link.has('embed') && !link.has('task'))
+    stage.preview(
+      SCENES.find((s) => s.id === (link.get('scene') ?? findPreset(link.get('paper'))?.scene)) ?? SCENES[0],
+    );
+  await Promise.all([core, afterPaint()]);
   await openAddress();
   address.save('replace');
   doc.getElementById('boot')?.remove();

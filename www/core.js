@@ -1,12 +1,14 @@
 // Starts the WebAssembly core once per page, for the page, every <ruled-view> and the worker.
 // By default the module is fetched from ../pkg/ruledlab_bg.wasm relative to this file, so an
 // installed package needs no configuration; `configure({ wasm })` takes a URL, a Response,
-// bytes or a compiled WebAssembly.Module instead (the one-file build passes its inlined bytes).
+// bytes or a compiled WebAssembly.Module instead, or a function returning one, called when the
+// core starts (the one-file build decodes its inlined bytes only then).
 import init from '../pkg/ruledlab.js';
+import { mark } from './timing.js';
 
 /** @typedef {string | URL | Response | BufferSource | WebAssembly.Module} WasmSource */
 
-/** @type {WasmSource | null} */
+/** @type {WasmSource | (() => WasmSource) | null} */
 let source = null;
 /** @type {Promise<unknown> | null} */
 let ready = null;
@@ -16,8 +18,9 @@ let instance = null;
 let workerFactory = null;
 
 /**
- * Where the wasm comes from, and how workers are made; call before the first view starts.
- * @param {{wasm?: WasmSource, worker?: () => Worker}} options
+ * Where the wasm comes from (or a function that says, called once when the core starts), and
+ * how workers are made; call before the first view starts.
+ * @param {{wasm?: WasmSource | (() => WasmSource), worker?: () => Worker}} options
  */
 export function configure({ wasm, worker } = {}) {
   if (ready && wasm !== undefined)
@@ -28,14 +31,17 @@ export function configure({ wasm, worker } = {}) {
 
 /** The wasm source in use (for the worker, which starts its own instance). */
 export function wasmSource() {
+  if (typeof source === 'function') source = source();
   return source ?? new URL('../pkg/ruledlab_bg.wasm', import.meta.url).href;
 }
 
 /** Starts the core (once); resolves when its exports can be called. */
 export function start() {
-  ready ??= init({ module_or_path: /** @type {any} */ (wasmSource()) }).then(
-    (exports) => (instance = /** @type {any} */ (exports)),
-  );
+  ready ??= init({ module_or_path: /** @type {any} */ (wasmSource()) }).then((exports) => {
+    mark('ruledlab:wasm-compiled');
+    instance = /** @type {any} */ (exports);
+    return exports;
+  });
   return ready;
 }
 

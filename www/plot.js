@@ -4,7 +4,7 @@
 // dash, not in colour alone.
 
 import { parseRich } from './ui/richtext.js';
-import { superscript } from './i18n/index.js';
+import { superscript } from './i18n/translate.js';
 import { svgMaker, svgFigure } from './svg-dom.js';
 
 /** The least size of any text in a figure, subscripts included, in user units (= CSS px at 1:1). */

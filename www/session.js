@@ -1,6 +1,7 @@
 // One scene on one viewer: computes it for a set of parameters (through the scene's create(),
 // which asks the core for ready buffers), shows it, swaps in the result of heavy work done in
 // a worker, and drops results that a newer computation has superseded.
+import { measured } from './timing.js';
 
 /**
  * @typedef {object} SessionHooks
@@ -34,7 +35,7 @@ export class SceneSession {
     const mine = ++this.generation;
     let built;
     try {
-      built = scene.create(params, context);
+      built = measured('ruledlab:compute', () => scene.create(params, context));
     } catch (e) {
       this.hooks.onProgress(null);
       this.hooks.onError(e);

@@ -7,7 +7,7 @@ import { start } from './core.js';
 import { Viewer } from './viewer.js';
 import { SceneSession } from './session.js';
 import { defaults, withChoices } from './scene.js';
-import { translator, pickLanguage } from './i18n/index.js';
+import { translator, pickLanguage } from './i18n/translate.js';
 import { buildControls } from './ui/controls.js';
 import { showLegend } from './ui/legend.js';
 import { showReadout, showClaims, readoutSentence } from './ui/readout.js';
@@ -355,6 +355,7 @@ export class Stage {
    * @internal
    */
   layout() {
+    const before = this.root.className;
     const box = this.root.getBoundingClientRect();
     const width = box.width || this.host.getBoundingClientRect().width;
     const height = this.options.page ? window.innerHeight : box.height || this.host.getBoundingClientRect().height;
@@ -370,7 +371,8 @@ export class Stage {
     // the hint under the view only where it fits beside the toolbar on one line
     this.root.classList.toggle('rl-view-small', this.view.getBoundingClientRect().width < SMALL_VIEW);
     this.controls?.fit();
-    this.viewer.requestRender();
+    // a new arrangement moves the view (a view resized alone is redrawn by the viewer itself)
+    if (this.root.className !== before) this.viewer.requestRender();
   }
 
   /** @internal The texts that depend on the language but not on the scene. */
@@ -423,7 +425,8 @@ export class Stage {
     }
     this.done.textContent = t('edit.done');
     this.asData.textContent = t('edit.asData');
-    this.buildShortcuts();
+    // the shortcuts' dialog is built when it opens (a closed panel costs the start nothing)
+    if (this.shortcuts.open) this.buildShortcuts();
     this.showEditing();
   }
 
@@ -617,6 +620,19 @@ export class Stage {
       const key = this.playableKey();
       if (key) this.togglePlay(key);
     }
+  }
+
+  /**
+   * Shows the heading and the explanation of `scene` before it can be opened (the core still
+   * loading): the reader reads while the figure is on its way. open() shows them again.
+   * @param {import('./scene.js').Scene} scene
+   */
+  preview(scene) {
+    const { t } = this.i18n;
+    this.heading.textContent = '';
+    appendRich(this.heading, t(scene.title));
+    // the explanation is markup from the project's own language files (never user text)
+    this.text.innerHTML = t(scene.text);
   }
 
   /**

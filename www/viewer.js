@@ -1,14 +1,17 @@
 // The WebGL2 viewer: owns a canvas and its context, sizes it for the device pixel ratio,
 // turns a scene's layers (f32 buffers from the core, and styles of theme.js) into GPU
 // batches, renders on demand, places the 3D-anchored labels, rebuilds after a context loss,
-// and releases the context when disposed.
+// and releases the context when disposed. Buffers go to the GPU in the animation frame that
+// draws them (the computation and the upload are separate tasks; two computations in one frame
+// upload once).
 import { OrbitCamera } from './camera.js';
 import { forgetPrograms } from './gl/program.js';
-import { LineBatch, polylineSegments } from './gl/lines.js';
-import { PointBatch } from './gl/points.js';
-import { TriangleMesh } from './gl/mesh.js';
+import { LineBatch, polylineSegments, prepare as prepareLines } from './gl/lines.js';
+import { PointBatch, prepare as preparePoints } from './gl/points.js';
+import { TriangleMesh, prepare as prepareMeshes } from './gl/mesh.js';
 import { STYLES, rgb, rgba, PALETTE } from './theme.js';
 import { appendRich } from './ui/richtext.js';
+import { mark, measured } from './timing.js';
 
 /**
  * What a layer draws with in one frame.
@@ -81,6 +84,9 @@ function crossing(
   return inside / 13;
 }
 
+/** Whether a frame with a scene in it has been drawn on this page (ruledlab:first-frame). */
+let firstFrame = false;
+
 /** How long the camera must rest before the layers with a stand-in are drawn in full (ms). */
 const REST = 180;
 
@@ -116,6 +122,8 @@ export class Viewer {
     this.frames = 0;
     /** @internal */
     this.pending = false;
+    /** @internal Whether `built` has changed since the batches were made (they are made at the next frame). */
+    this.stale = false;
     /** @internal */
     this.lost = false;
     /** @internal */
@@ -133,6 +141,8 @@ export class Viewer {
       });
     /** @internal */
     this.gl = gl;
+    // the shaders compile on the GPU while the core loads and the first scene computes
+    for (const prepare of [prepareLines, preparePoints, prepareMeshes]) prepare(gl);
     /** @internal */
     this.onLost = (/** @type {Event} */ e) => {
       e.preventDefault();
@@ -144,6 +154,7 @@ export class Viewer {
     this.onRestored = () => {
       this.lost = false;
       forgetPrograms(gl);
+      for (const prepare of [prepareLines, preparePoints, prepareMeshes]) prepare(gl);
       this.rebuild();
     };
     canvas.addEventListener('webglcontextlost', this.onLost);
@@ -175,7 +186,8 @@ export class Viewer {
   show(built, { fit = false } = {}) {
     this.built = built;
     if (fit) this.fit();
-    this.rebuild();
+    this.stale = true;
+    this.requestRender();
   }
 
   /** Frames the current scene from its suggested direction. */
@@ -186,8 +198,15 @@ export class Viewer {
     this.requestRender();
   }
 
-  /** @internal */
+  /** @internal Makes the batches (and the labels) of `built` now, and draws them at the next frame. */
   rebuild() {
+    this.upload();
+    this.requestRender();
+  }
+
+  /** @internal Makes the batches and the labels of `built`. */
+  upload() {
+    this.stale = false;
     const gl = this.gl;
     this.labelLayer.replaceChildren(
       ...(this.built?.labels ?? []).map(({ text }) =>
@@ -202,13 +221,15 @@ export class Viewer {
     });
     this.batches = [];
     this.light = [];
-    if (this.built && !this.lost && !this.disposed) {
-      for (const layer of this.built.layers) {
-        this.batches.push(batch(gl, layer));
-        this.light.push(layer.moving ? batch(gl, layer.moving) : null);
-      }
+    const built = this.built;
+    if (built && !this.lost && !this.disposed) {
+      measured('ruledlab:upload', () => {
+        for (const layer of built.layers) {
+          this.batches.push(batch(gl, layer));
+          this.light.push(layer.moving ? batch(gl, layer.moving) : null);
+        }
+      });
     }
-    this.requestRender();
   }
 
   /**
@@ -258,6 +279,7 @@ export class Viewer {
   render({ scale = window.devicePixelRatio || 1, full = false } = {}) {
     const { gl, canvas } = this;
     if (this.lost || this.disposed || gl.isContextLost()) return;
+    if (this.stale) this.upload();
     const frame = this.frame(scale);
     if (canvas.width !== frame.width || canvas.height !== frame.height) {
       canvas.width = frame.width;
@@ -278,17 +300,26 @@ export class Viewer {
     const now = performance.now();
     if (now - this.lastFrameAt < 2000) this.frameGap = now - this.lastFrameAt;
     this.lastFrameAt = now;
-    for (const transparent of [false, true]) {
-      gl.depthMask(!transparent);
-      this.batches.forEach((full, i) => {
-        const b = (moving && this.light[i]) || full;
-        if (!!b.transparent === transparent) b.draw(gl, frame);
-      });
-    }
+    measured('ruledlab:draw', () => {
+      for (const transparent of [false, true]) {
+        gl.depthMask(!transparent);
+        this.batches.forEach((full, i) => {
+          const b = (moving && this.light[i]) || full;
+          if (!!b.transparent === transparent) b.draw(gl, frame);
+        });
+      }
+    });
     gl.depthMask(true);
     this.placeLabels(frame.viewProj);
     for (const overlay of this.overlays) overlay(frame.viewProj);
     this.frames++;
+    if (!firstFrame && this.batches.length) {
+      firstFrame = true;
+      mark('ruledlab:first-frame');
+      // the next frame begins once this one has been handed on: the time between the two marks
+      // is the GPU's (and, where the page is composited in software, reading the frame back)
+      requestAnimationFrame(() => mark('ruledlab:first-frame-presented'));
+    }
     this.onFrame?.(this.frames);
   }
 

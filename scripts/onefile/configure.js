@@ -1,6 +1,7 @@
 // Side effect, imported first by both entries: the core takes the inlined wasm and worker,
-// before any view module starts it.
+// before any view module starts it; the wasm is decoded when the core starts (not while this
+// script runs: the page paints first) and compiled asynchronously by WebAssembly.instantiate.
 import { configure } from '../../www/core.js';
 import { wasmBytes, workerFactory } from './inline.js';
 
-configure({ wasm: wasmBytes(), worker: workerFactory() });
+configure({ wasm: wasmBytes, worker: workerFactory() });

@@ -6,10 +6,11 @@
 import './configure.js';
 import '../../www/view.js';
 import { startPage, showStartFailure } from '../../www/app.js';
-import { isOneFilePage } from '../../www/export/onefile.js';
+import { isOneFilePage, SCRIPT_ID } from '../../www/export/onefile.js';
 
-// the text of this script when it is inline (the one-file page), read while it runs
-const source = document.currentScript?.textContent ?? '';
+// the text of this script when it is inline (the one-file page, where it is a module at the end
+// of the body: currentScript is null there), read while it runs
+const source = (document.currentScript ?? document.getElementById(SCRIPT_ID))?.textContent ?? '';
 
 if (isOneFilePage(document)) {
   const go = () => startPage({ oneFile: true, embedScript: () => source }).catch(showStartFailure);

@@ -6,6 +6,7 @@ use super::args::{self, describe, fail, finite_option, integer, interval, number
 use super::congruence::LineCongruence;
 use super::live::Live;
 use super::surface::RuledSurface;
+use super::timing::Measure;
 use crate::catalogue as examples;
 use crate::congruence::SmoothCongruence;
 use crate::ruled::SmoothRuled;
@@ -138,6 +139,7 @@ impl AnalyticSurface {
         #[wasm_bindgen(unchecked_optional_param_type = "SampleOptions")] opts: JsValue,
     ) -> Result<RuledSurface, JsValue> {
         const F: &str = "AnalyticSurface.sample";
+        let _measure = Measure::start(F);
         let count = integer(F, "count", &count, 2, MAX_SAMPLES)?;
         let r = self.ranges(F, opts)?;
         self.inner.sample(count, r).map(RuledSurface::from_core).map_err(|e| fail(F, e))
@@ -301,6 +303,7 @@ impl AnalyticCongruence {
         #[wasm_bindgen(unchecked_optional_param_type = "number")] reach: JsValue,
     ) -> Result<LineCongruence, JsValue> {
         const F: &str = "AnalyticCongruence.grid";
+        let _measure = Measure::start(F);
         let (_, _, r0, c0) = self.inner.domain();
         let rows = args::optional_integer(F, "rows", &rows, 2, MAX_RULINGS, r0)?;
         let cols = args::optional_integer(F, "cols", &cols, 2, MAX_RULINGS, c0)?;
@@ -316,6 +319,7 @@ impl AnalyticCongruence {
     /// largest angle of the directions (radians).
     #[wasm_bindgen(unchecked_return_type = "CongruenceErrors")]
     pub fn errors(&self, refined: &LineCongruence) -> Result<JsValue, JsValue> {
+        let _measure = Measure::start("AnalyticCongruence.errors");
         let (distance, angle) = self.inner.errors(refined.core());
         to_js("AnalyticCongruence.errors", &CongruenceErrors { distance, angle })
     }
@@ -326,6 +330,7 @@ impl AnalyticCongruence {
     /// points and the largest angle of the directions (radians).
     #[wasm_bindgen(js_name = diagonalErrors, unchecked_return_type = "CongruenceErrors")]
     pub fn diagonal_errors(&self, diagonal: &LineCongruence) -> Result<JsValue, JsValue> {
+        let _measure = Measure::start("AnalyticCongruence.diagonalErrors");
         let (distance, angle) = self.inner.diagonal_errors(diagonal.core());
         to_js("AnalyticCongruence.diagonalErrors", &CongruenceErrors { distance, angle })
     }

@@ -4,6 +4,7 @@ use super::args::{self, fail, finite_option, integer, integer_option, numbers, o
 use super::live::Live;
 use super::subdivision::SubdivisionSpace;
 use super::surface::RuledSurface;
+use super::timing::Measure;
 use crate::congruence::{self, CongruenceScheme};
 use crate::tolerance::{MAX_CONGRUENCE_STEPS, MAX_PARTS, MAX_RULINGS};
 use js_sys::{Float32Array, Float64Array};
@@ -154,6 +155,7 @@ impl LineCongruence {
         #[wasm_bindgen(unchecked_param_type = "CongruenceSubdivideOptions")] options: JsValue,
     ) -> Result<LineCongruence, JsValue> {
         const F: &str = "LineCongruence.subdivide";
+        let _measure = Measure::start(F);
         let o: CongruenceSubdivideOptions = args::options(F, options)?;
         let chosen = o.scheme.map(|s| match s {
             CongruenceSchemeName::Butterfly => "butterfly",

@@ -7,6 +7,7 @@ use super::buffers::{points_f32, segments_f32};
 use super::catalogue::AnalyticCongruence;
 use super::congruence::LineCongruence;
 use super::live::Live;
+use super::timing::Measure;
 use crate::congruence::focal::{self, Focal, FocalKind};
 use crate::congruence::LineCongruence as CoreCongruence;
 use crate::tolerance::{MAX_RULINGS, MAX_STROKE_SCALE};
@@ -77,6 +78,7 @@ impl LineCongruence {
     /// coordinates differenced over the grid (second order, at the boundary too).
     #[wasm_bindgen(unchecked_return_type = "FocalGeometry")]
     pub fn focal(&self) -> Result<JsValue, JsValue> {
+        let _measure = Measure::start("LineCongruence.focal");
         let c = self.core();
         focal_js("LineCongruence.focal", c.rows(), c.cols(), &focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()))
     }
@@ -118,6 +120,7 @@ impl AnalyticCongruence {
         #[wasm_bindgen(unchecked_optional_param_type = "number")] cols: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "AnalyticCongruence.focal";
+        let _measure = Measure::start(F);
         let (_, _, r0, c0) = self.core().domain();
         let rows = args::optional_integer(F, "rows", &rows, 2, MAX_RULINGS, r0)?;
         let cols = args::optional_integer(F, "cols", &cols, 2, MAX_RULINGS, c0)?;
@@ -167,6 +170,7 @@ impl LineCongruence {
     /// anew.
     #[wasm_bindgen(js_name = focalGeometry)]
     pub fn focal_geometry(&self) -> CongruenceFocal {
+        let _measure = Measure::start("LineCongruence.focalGeometry");
         let c = self.core();
         CongruenceFocal {
             grid: c.clone(),

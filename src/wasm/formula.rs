@@ -6,6 +6,7 @@ use super::args::{required, to_js};
 use super::catalogue::AnalyticCongruence;
 use super::catalogue::AnalyticSurface;
 use super::error::{fail, fail_option};
+use super::timing::Measure;
 use crate::catalogue::{self as examples, CongruenceSpec, FormulaSpec};
 use crate::formula::{check, Formula, PARAMETERS};
 use crate::tolerance::{MAX_GRID_SIDE, MAX_SAMPLES};
@@ -271,6 +272,7 @@ impl AnalyticSurface {
         #[wasm_bindgen(unchecked_param_type = "SurfaceFormulas")] spec: JsValue,
     ) -> Result<AnalyticSurface, JsValue> {
         const F: &str = "AnalyticSurface.fromFormulas";
+        let _measure = Measure::start(F);
         let s: SurfaceFormulas = required(F, "spec", spec, &[PARAMETER_KEYS])?;
         let parameters = s.parameters.values();
         let comma = s.decimal_comma;
@@ -321,6 +323,7 @@ pub fn evaluate_formulas(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] at: JsValue,
 ) -> Result<js_sys::Float64Array, JsValue> {
     const F: &str = "evaluateFormulas";
+    let _measure = Measure::start(F);
     let o: FormulaValues = required(F, "options", options, &[PARAMETER_KEYS])?;
     if o.formulas.is_empty() || o.formulas.len() > 3 {
         return Err(fail_option(F, "formulas", format!("one to three formulas, got {}", o.formulas.len())));
@@ -389,6 +392,7 @@ impl AnalyticCongruence {
         #[wasm_bindgen(unchecked_param_type = "CongruenceFormulas")] spec: JsValue,
     ) -> Result<AnalyticCongruence, JsValue> {
         const F: &str = "AnalyticCongruence.fromFormulas";
+        let _measure = Measure::start(F);
         let s: CongruenceFormulas = required(F, "spec", spec, &[PARAMETER_KEYS])?;
         let parameters = s.parameters.values();
         let size = |name: &str, x: Option<f64>| -> Result<usize, JsValue> {

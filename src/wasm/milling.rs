@@ -2,6 +2,7 @@
 
 use super::args::{self, fail, fail_option, finite_option, numbers, to_js};
 use super::live::Live;
+use super::timing::Measure;
 use crate::error::Error;
 use crate::milling::{self, example, machine, post, quality};
 use crate::ruled::surface::points_from_flat;
@@ -407,6 +408,7 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_optional_param_type = "Partial<SubdivideOptions>")] options: JsValue,
     ) -> Result<ToolPath, JsValue> {
         const F: &str = "ToolPath.refine";
+        let _measure = Measure::start(F);
         let (scheme, closed, steps, space) = super::subdivision::read(F, options, Some("variational"))?;
         if !matches!(space, super::subdivision::Space::Points) {
             return Err(fail(F, "options.space: a tool path is refined through its tips and axes (space \"points\")"));
@@ -456,6 +458,7 @@ impl ToolPath {
     /// Orientation smoothness: axis angle per step and its second difference.
     #[wasm_bindgen(unchecked_return_type = "PathQuality")]
     pub fn quality(&self) -> Result<JsValue, JsValue> {
+        let _measure = Measure::start("ToolPath.quality");
         let q = quality::Quality::of(&self.inner);
         to_js(
             "ToolPath.quality",
@@ -475,6 +478,7 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] targets: JsValue,
     ) -> Result<Float64Array, JsValue> {
         const F: &str = "ToolPath.deviation";
+        let _measure = Measure::start(F);
         let t = points_from_flat(&numbers(F, "targets", &targets)?).map_err(|e| fail(F, e))?;
         Ok(Float64Array::from(&quality::deviation(&self.inner, &t)[..]))
     }
@@ -511,6 +515,7 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_optional_param_type = "GcodeOptions")] options: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "ToolPath.post";
+        let _measure = Measure::start(F);
         let o = read_post_options(F, options)?;
         let p = post::program(&self.inner, &o).map_err(|e| fail(F, e))?;
         let l = &p.linearisation;
@@ -555,6 +560,7 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_param_type = "ToolOptions")] tool: JsValue,
     ) -> Result<ToolPath, JsValue> {
         const F: &str = "ToolPath.fromPoses";
+        let _measure = Measure::start(F);
         let rows = numbers(F, "poses", &poses)?;
         let tool = read_tool(F, tool)?;
         if rows.len() % 6 != 0 {
@@ -602,6 +608,7 @@ pub fn import_tool_poses(
     #[wasm_bindgen(unchecked_optional_param_type = "\"csv\" | \"json\"")] format: JsValue,
 ) -> Result<JsValue, JsValue> {
     const F: &str = "importToolPoses";
+    let _measure = Measure::start(F);
     let Some(text) = text.as_string() else {
         return Err(fail(F, format!("text must be a string, got {}", args::describe(&text))));
     };

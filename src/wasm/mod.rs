@@ -19,6 +19,7 @@ mod live;
 mod milling;
 mod subdivision;
 mod surface;
+mod timing;
 mod visibility;
 
 pub use catalogue::{AnalyticCongruence, AnalyticSurface};

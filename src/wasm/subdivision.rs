@@ -4,6 +4,7 @@
 use super::args::{self, fail, fail_option, finite_option, integer, integer_option, interval, numbers, only_for};
 use super::catalogue::AnalyticSurface;
 use super::surface::RuledSurface;
+use super::timing::Measure;
 use crate::ruled::surface::points_from_flat;
 use crate::subdivision::{self, Scheme, Variant};
 use crate::tolerance::{MAX_BSPLINE_DEGREE, MAX_PARTS, MAX_STRIDE, MAX_SUBDIVISION_STEPS};
@@ -175,6 +176,7 @@ impl RuledSurface {
         #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
     ) -> Result<RuledSurface, JsValue> {
         const F: &str = "RuledSurface.subdivide";
+        let _measure = Measure::start(F);
         let (scheme, closed, steps, space) = read(F, options, None)?;
         match space {
             Space::Points => subdivision::subdivide_strip(self.core(), scheme, closed, steps),
@@ -206,6 +208,7 @@ pub fn subdivide_polygon(
     #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
 ) -> Result<Float64Array, JsValue> {
     const F: &str = "subdividePolygon";
+    let _measure = Measure::start(F);
     let flat = numbers(F, "points", &points)?;
     let points = points_from_flat(&flat).map_err(|e| fail(F, e))?;
     let (scheme, closed, steps, space) = read(F, options, None)?;

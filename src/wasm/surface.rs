@@ -3,6 +3,7 @@
 use super::args::{self, describe, fail, finite_option, integer, integer_option, numbers, options, to_js};
 use super::catalogue::AnalyticSurface;
 use super::live::Live;
+use super::timing::Measure;
 use crate::ruled::{self, convergence, Development, HingeChain};
 use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
 use js_sys::{Float32Array, Float64Array, Uint8Array};
@@ -244,6 +245,7 @@ impl RuledSurface {
         #[wasm_bindgen(unchecked_optional_param_type = "InvariantsOptions")] options: Option<js_sys::Object>,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "RuledSurface.invariants";
+        let _measure = Measure::start(F);
         let inv = self.compute_invariants(F, options.map(JsValue::from).unwrap_or_default())?;
         let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
         to_js(
@@ -404,6 +406,7 @@ impl RuledSurface {
     /// The approximate development (Fig. 6): the conoidal model projected onto the plane of
     /// its rulings; 4 numbers per ruling, x, y of a'_i then of b'_i.
     pub fn development(&self) -> Float64Array {
+        let _measure = Measure::start("RuledSurface.development");
         Float64Array::from(Development::of(&self.inner).flat())
     }
 
@@ -420,6 +423,7 @@ impl RuledSurface {
     /// cylinder its conoidal rulings touch, r + p tan β; 0 when Fig. 5's caption holds.
     #[wasm_bindgen(js_name = envelopeRadii)]
     pub fn envelope_radii(&self) -> Float64Array {
+        let _measure = Measure::start("RuledSurface.envelopeRadii");
         Float64Array::from(ruled::envelope_radii(&self.inner).as_slice())
     }
 }
@@ -435,6 +439,7 @@ impl AnalyticSurface {
         #[wasm_bindgen(unchecked_optional_param_type = "SampleOptions")] opts: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "AnalyticSurface.samplingErrors";
+        let _measure = Measure::start(F);
         let count = integer(F, "count", &count, 3, MAX_SAMPLES)?;
         let r = self.ranges(F, opts)?;
         let e = crate::ruled::accuracy::sampling_errors(self.core(), count, r).map_err(|e| fail(F, e))?;
@@ -450,6 +455,7 @@ impl AnalyticSurface {
         #[wasm_bindgen(unchecked_optional_param_type = "SampleOptions")] opts: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "AnalyticSurface.samplingOrders";
+        let _measure = Measure::start(F);
         let count = integer(F, "count", &count, 3, MAX_SAMPLES / 2)?;
         let r = self.ranges(F, opts)?;
         let o = crate::ruled::accuracy::sampling_orders(self.core(), count, r).map_err(|e| fail(F, e))?;
@@ -463,6 +469,7 @@ impl AnalyticSurface {
         #[wasm_bindgen(unchecked_optional_param_type = "ConvergenceOptions")] opts: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "AnalyticSurface.convergence";
+        let _measure = Measure::start(F);
         let o: ConvergenceOptions = options(F, opts)?;
         let levels = integer_option(F, "levels", o.levels, 2, MAX_STUDY_LEVELS)?.unwrap_or(8);
         let u = finite_option(F, "u", o.u)?.unwrap_or(0.7);

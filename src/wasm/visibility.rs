@@ -7,6 +7,7 @@
 //! option types below are declared for TypeScript only, and the checks name the same fields.
 
 use super::args::{self, describe, fail, fail_option, to_js};
+use super::timing::Measure;
 use crate::tolerance::MAX_HIDDEN_LINE_ITEMS;
 use crate::visibility::{self, HiddenLineOptions as CoreOptions, LineKind, View};
 use glam::{DMat4, DVec3};
@@ -179,6 +180,7 @@ pub fn hidden_lines(
     #[wasm_bindgen(unchecked_param_type = "HiddenLineFigure")] figure: JsValue,
     #[wasm_bindgen(unchecked_optional_param_type = "HiddenLineOptions")] options: JsValue,
 ) -> Result<JsValue, JsValue> {
+    let _measure = Measure::start(F);
     object("figure", &figure, &["viewProj", "width", "height", "meshes", "lines"])?;
     let matrix = args::numbers(F, "viewProj", &field(&figure, "viewProj"))?;
     let width = args::number(F, "width", &field(&figure, "width"))?;

@@ -176,3 +176,42 @@ test('argument checks meant for programmers are said by their kind, never in Eng
     assert.equal(describeError(e, translator('de')), 'Ein Wert ist hier nicht verwendbar.');
   }
 });
+
+test('numbers are written exactly as Intl.NumberFormat writes them in English and German, rounding ties as it does', () => {
+  const intl = (lang) => ({
+    decimal: new Intl.NumberFormat(lang, { minimumFractionDigits: 3, maximumFractionDigits: 3 }),
+    integer: new Intl.NumberFormat(lang, { maximumFractionDigits: 0, useGrouping: true }),
+  });
+  // a seeded walk over every magnitude the formats see, with decimal ties (…5 in the fourth place)
+  let seed = 12345;
+  const random = () => {
+    seed = (seed * 1103515245 + 12345) % 2 ** 31;
+    return seed / 2 ** 31;
+  };
+  for (const lang of ['en', 'de']) {
+    const { format } = translator(lang);
+    const ref = intl(lang);
+    const expect = (x) => (Number.isInteger(x) ? ref.integer.format(x) : ref.decimal.format(x)).replace('-', '−');
+    const values = [0, -0, 0.1, -0.1, 999.9995, -999.9996, 0.1005, 144.2945, 1e15 - 1, 1234567];
+    for (let k = 0; k < 20000; k++) {
+      const x = (random() - 0.5) * 2 * 10 ** Math.floor(random() * 16);
+      values.push(Math.round(x), x, (Math.round(random() * 2e6) / 2000) * (random() < 0.5 ? -1 : 1));
+    }
+    for (const x of values) {
+      const a = Math.abs(x);
+      if ((Number.isInteger(x) && a < 1e15) || (a >= 0.1 && a < 1000))
+        assert.equal(format(x), expect(x), `${lang} ${x}`);
+    }
+  }
+});
+
+test('the page loads a language other than English when it needs it (i18n/translate.js); i18n/index.js has every one', async () => {
+  const lazy = await import('../../www/i18n/translate.js');
+  const { LANGUAGE_CODES } = await import('../../www/i18n/index.js');
+  assert.deepEqual(lazy.LANGUAGE_CODES, LANGUAGE_CODES);
+  // (index.js, imported above, added German already; the loader's result is the same table)
+  assert.equal(await lazy.loadLanguage('de'), true);
+  assert.equal(lazy.translator('de').t('view.fit'), de['view.fit']);
+  assert.equal(await lazy.loadLanguage('xx'), false);
+  assert.equal(lazy.translator('xx').t('view.fit'), en['view.fit']);
+});

@@ -11,6 +11,12 @@ export const BODY =
 /** The id of the state block. */
 export const STATE_ID = 'ruledlab-state';
 
+/** The id of the page's script (at the end of its body: what is above it is painted first). */
+export const SCRIPT_ID = 'ruledlab-script';
+
+/** The one-file page's script element as it was written, taken while it runs (the page then replaces the body). */
+const SCRIPT = typeof document === 'undefined' ? '' : (document.getElementById(SCRIPT_ID)?.outerHTML ?? '');
+
 /** The state block's JSON for a hash, with "<" escaped so it cannot end the block. */
 export function stateJson(/** @type {string} */ hash) {
   return JSON.stringify({ hash }).replace(/</g, '\\u003c');
@@ -48,7 +54,7 @@ export function storedHash() {
 export async function oneFileWithState(oneFile, hash) {
   if (oneFile)
     return withState(
-      `<!doctype html>\n<html lang="en" data-build="onefile">\n<head>${document.head.innerHTML}</head>\n<body>${BODY}</body>\n</html>\n`,
+      `<!doctype html>\n<html lang="en" data-build="onefile">\n<head>${document.head.innerHTML}</head>\n<body>${BODY}\n${SCRIPT}</body>\n</html>\n`,
       hash,
     );
   const response = await fetch(new URL('../../dist/ruledlab.html', import.meta.url));

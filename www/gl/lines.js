@@ -1,7 +1,7 @@
 // Thick lines as instanced screen-space quads (gl.lineWidth is 1 in browsers), optionally
 // dashed, optionally moved by a model matrix. A batch takes the core's f32 segments (6 floats
 // per segment) or a polyline (3 per point); records holding NaN are left out when uploading.
-import { cachedProgram, beginDraw } from './program.js';
+import { cachedProgram, beginDraw, prepareProgram } from './program.js';
 import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
@@ -83,6 +83,11 @@ export function polylineSegments(points, closed = false) {
     out.set(points.subarray(3 * j, 3 * j + 3), 6 * i + 3);
   }
   return finiteSegments(out);
+}
+
+/** Starts compiling this kind's shaders (Viewer: before the first scene arrives). */
+export function prepare(/** @type {WebGL2RenderingContext} */ gl) {
+  prepareProgram(gl, 'lines', VS, FS);
 }
 
 /** A batch of thick segments with one style. */

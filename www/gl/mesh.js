@@ -3,7 +3,7 @@
 // b_i at 2i + 1), grids (director surfaces), and the core's meshes. Facet normals come from
 // screen-space derivatives, so the facets of a discrete model show honestly; a mesh whose
 // facets are smaller than a pixel brings vertex normals from the core instead (no moiré).
-import { cachedProgram, beginDraw } from './program.js';
+import { cachedProgram, beginDraw, prepareProgram } from './program.js';
 import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
@@ -39,6 +39,11 @@ void main() {
   vec4 base = gl_FrontFacing ? front : back;
   outColor = vec4(base.rgb * (0.45 + 0.55 * diffuse) + 0.2 * spec, base.a);
 }`;
+
+/** Starts compiling this kind's shaders (Viewer: before the first scene arrives). */
+export function prepare(/** @type {WebGL2RenderingContext} */ gl) {
+  prepareProgram(gl, 'mesh', VS, FS);
+}
 
 /** An indexed triangle mesh with one front and one back colour. */
 export class TriangleMesh {

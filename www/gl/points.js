@@ -1,5 +1,5 @@
 // Points as round, lightly shaded sprites (3 floats per point; NaN points are left out).
-import { cachedProgram, beginDraw } from './program.js';
+import { cachedProgram, beginDraw, prepareProgram } from './program.js';
 import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
@@ -38,6 +38,11 @@ export function finitePoints(/** @type {Float32Array} */ data) {
       out.set(data.subarray(i, i + 3), k++ * 3);
   }
   return out.subarray(0, 3 * k);
+}
+
+/** Starts compiling this kind's shaders (Viewer: before the first scene arrives). */
+export function prepare(/** @type {WebGL2RenderingContext} */ gl) {
+  prepareProgram(gl, 'points', VS, FS);
 }
 
 /** A batch of sprites with one colour and size. */

@@ -60,8 +60,50 @@ export function uniforms(gl, program, names) {
   return Object.fromEntries(names.map((n) => [n, gl.getUniformLocation(program, n)]));
 }
 
-/** @type {WeakMap<WebGL2RenderingContext, Map<string, {program: WebGLProgram, u: Record<string, WebGLUniformLocation | null>}>>} */
+/**
+ * A context's programs by key: checked (their uniforms looked up) once first used, or still
+ * compiling (prepareProgram).
+ * @typedef {{program: WebGLProgram, u: Record<string, WebGLUniformLocation | null>}} Cached
+ * @typedef {{compiling: {program: WebGLProgram, vertexSource: string, fragmentSource: string}}} Compiling
+ * @type {WeakMap<WebGL2RenderingContext, Map<string, Cached | Compiling>>}
+ */
 const cache = new WeakMap();
+
+/** The programs of `gl`. */
+function programsOf(/** @type {WebGL2RenderingContext} */ gl) {
+  let programs = cache.get(gl);
+  if (!programs) {
+    programs = new Map();
+    cache.set(gl, programs);
+  }
+  return programs;
+}
+
+/**
+ * Starts compiling and linking a program without waiting for the result: the GPU compiles
+ * while the page goes on (the core loading, the first scene computing), and the first
+ * cachedProgram of the key checks it, with the same error messages as createProgram.
+ * @param {WebGL2RenderingContext} gl
+ * @param {string} key
+ * @param {string} vertexSource
+ * @param {string} fragmentSource
+ */
+export function prepareProgram(gl, key, vertexSource, fragmentSource) {
+  const programs = programsOf(gl);
+  if (programs.has(key)) return;
+  const program = /** @type {WebGLProgram} */ (gl.createProgram());
+  for (const [type, source] of [
+    [gl.VERTEX_SHADER, vertexSource],
+    [gl.FRAGMENT_SHADER, fragmentSource],
+  ]) {
+    const shader = /** @type {WebGLShader} */ (gl.createShader(/** @type {number} */ (type)));
+    gl.shaderSource(shader, /** @type {string} */ (source));
+    gl.compileShader(shader);
+    gl.attachShader(program, shader);
+  }
+  gl.linkProgram(program);
+  programs.set(key, { compiling: { program, vertexSource, fragmentSource } });
+}
 
 /**
  * A program compiled once per context and shared by every batch that draws with it.
@@ -73,18 +115,18 @@ const cache = new WeakMap();
  * @returns {{program: WebGLProgram, u: Record<string, WebGLUniformLocation | null>}}
  */
 export function cachedProgram(gl, key, vertexSource, fragmentSource, uniformNames) {
-  let programs = cache.get(gl);
-  if (!programs) {
-    programs = new Map();
-    cache.set(gl, programs);
-  }
-  let entry = programs.get(key);
-  if (!entry) {
-    const program = createProgram(gl, vertexSource, fragmentSource);
-    entry = { program, u: uniforms(gl, program, uniformNames) };
-    programs.set(key, entry);
-  }
-  return entry;
+  const programs = programsOf(gl);
+  const entry = programs.get(key);
+  if (entry && 'program' in entry) return entry;
+  let program;
+  if (entry && !gl.getProgramParameter(entry.compiling.program, gl.LINK_STATUS) && !gl.isContextLost()) {
+    // compiled again, for createProgram's message (which shader failed, its lines)
+    createProgram(gl, entry.compiling.vertexSource, entry.compiling.fragmentSource);
+    throw new Error(`shader link failed: ${gl.getProgramInfoLog(entry.compiling.program)}`);
+  } else program = entry ? entry.compiling.program : createProgram(gl, vertexSource, fragmentSource);
+  const cached = { program, u: uniforms(gl, program, uniformNames) };
+  programs.set(key, cached);
+  return cached;
 }
 
 /**

@@ -2,7 +2,7 @@
 // pickers and the Share button, with their texts in the reader's language.
 import { SCENES } from '../scenes/index.js';
 import { PRESETS } from '../paper.js';
-import { LANGUAGE_CODES } from '../i18n/index.js';
+import { LANGUAGE_CODES } from '../i18n/translate.js';
 import { builtInTasks } from '../task/builtin.js';
 import { solvedTasks } from '../task/progress.js';
 import { say } from '../task/format.js';

@@ -6,9 +6,6 @@ import { download } from '../stage.js';
 import { linkable } from '../state.js';
 import { describeError } from '../ui/errors.js';
 import { dataFile } from '../export/files.js';
-import { png } from '../export/png.js';
-import { exportSvg } from '../export/svg.js';
-import { exportTikz } from '../export/tikz.js';
 import { store } from '../platform.js';
 
 /** Session storage key of an import too large for the link. */
@@ -171,12 +168,16 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
       const data = built.data;
       if (kind === 'png' || kind === 'png2' || kind === 'png4') {
         const scale = kind === 'png' ? 1 : Number(kind.slice(3));
+        // the figure exports are loaded when first asked for
+        const { png } = await import('../export/png.js');
         download(`${name}${scale === 1 ? '' : `-${scale}x`}.png`, await png(stage, { scale }));
       } else if (kind === 'svg' || kind === 'svgBw') {
         const bw = kind === 'svgBw';
+        const { exportSvg } = await import('../export/svg.js');
         download(`${name}${bw ? '-bw' : ''}.svg`, exportSvg(stage, { bw }), 'image/svg+xml');
       } else if (kind === 'tikz' || kind === 'tikzBw') {
         const bw = kind === 'tikzBw';
+        const { exportTikz } = await import('../export/tikz.js');
         download(`${name}${bw ? '-bw' : ''}.tikz`, exportTikz(stage, { bw }), 'text/x-tex');
       } else if (kind === 'plot' && built.figure) {
         download(`${name}-plot.svg`, new XMLSerializer().serializeToString(built.figure()), 'image/svg+xml');

@@ -5,7 +5,7 @@
 import { say } from './format.js';
 import { plainRich } from '../ui/richtext.js';
 import { describeError } from '../ui/errors.js';
-import { superscript } from '../i18n/index.js';
+import { superscript } from '../i18n/translate.js';
 
 /**
  * @typedef {import('./format.js').Task} Task

@@ -120,6 +120,8 @@ export const CSS = `
 .rl-figure { margin: 0 0 .8rem; }
 .rl-figure:empty { display: none; }
 .rl-text { font-size: .92rem; line-height: 1.55; }
+/* the explanation is laid out and painted when it comes near the screen (below the view on a phone: not before the first picture) */
+.rl-text { content-visibility: auto; contain-intrinsic-size: auto 40rem; }
 .rl-text h2 { font-size: 1.05rem; margin: .6rem 0 .4rem; }
 .rl-text math[display=block] { margin: .5rem 0; overflow-x: auto; }
 .rl-text .rl-beyond { border-left: 3px solid #0072b2; background: #f1f6fb; padding: .3rem .6rem; margin: .6rem 0; }

@@ -1,0 +1,240 @@
+// Builds the production page into dist/web/ (after scripts/build.sh has built pkg/ and
+// scripts/onefile.mjs the one-file builds), the site `npm start` serves:
+//   index.html              the page, its references rewritten to the hashed files
+//   assets/                 every file named by its content's hash (cached for a year):
+//     main-<hash>.js          the page's entry, bundled and minified with esbuild, and the
+//     chunk-<hash>.js         chunks it shares with what loads on demand (split at the page's
+//                             dynamic imports: the other language, the Share dialog, the
+//                             figure exports, the exercise author); boot-<hash>.js the
+//                             classic start-up message
+//     worker-<hash>.js        the refinement worker, one module
+//     ruledlab_bg-<hash>.wasm the core (fetched and compiled by WebAssembly.instantiateStreaming)
+//     style-, noscript-, favicon-<hash>.*
+//   dist/                   the one-file page, its embed script and manifest, at the paths the
+//                           page asks for them (the Share dialog), not hashed: they are handed out
+// and beside every file its gzip (.gz) and brotli (.br) compression, which scripts/serve.mjs
+// sends to browsers that accept it. What the first scene needs and what loads later is written
+// to dist/web-manifest.json (the build's test reads it). A file whose hashed name and
+// compressions are already there is not compressed again; files of older builds are removed.
+import { build } from 'esbuild';
+import { createHash } from 'node:crypto';
+import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { basename, dirname, extname, join, relative, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { brotliCompressSync, constants, gzipSync } from 'node:zlib';
+
+const ROOT = resolve(fileURLToPath(new URL('..', import.meta.url)));
+const OUT = join(ROOT, 'dist/web');
+const ASSETS = join(OUT, 'assets');
+/** The modules loaded on demand (by a dynamic import), by what they are: the test checks that
+ * the first scene requests none of them. */
+const LAZY = {
+  'the other language': ['www/i18n/de.js'],
+  'the Share dialog': ['www/share.js'],
+  'the figure exports': ['www/export/svg.js', 'www/export/tikz.js', 'www/export/png.js'],
+  'the exercise author': ['www/task/author.js'],
+};
+/** `new URL(…, import.meta.url)` targets the bundles may keep as they are, and why. */
+const UNUSED = {
+  // share.js's snippet script when no manifest is served; the site serves dist/manifest.json
+  'www/view.js': 'the site serves dist/manifest.json',
+};
+/** Files (of the site) not worth compressing. */
+const BINARY = new Set(['.png', '.jpg', '.ico', '.gz', '.br']);
+
+/** The first 8 hex digits of the SHA-256 of `bytes` (content hash of a file name). */
+const hash = (/** @type {Uint8Array | string} */ bytes) =>
+  createHash('sha256').update(bytes).digest('hex').slice(0, 8).toUpperCase();
+
+mkdirSync(ASSETS, { recursive: true });
+/** Paths (under dist/web/) this build wrote. */
+const written = new Set();
+
+/** Writes `bytes` to `path` under dist/web/ unless the same bytes are there. */
+function put(/** @type {string} */ path, /** @type {Uint8Array | string} */ bytes) {
+  const file = join(OUT, path);
+  mkdirSync(dirname(file), { recursive: true });
+  const data = typeof bytes === 'string' ? Buffer.from(bytes) : Buffer.from(bytes);
+  if (!existsSync(file) || !readFileSync(file).equals(data)) {
+    writeFileSync(file, data);
+    rmSync(`${file}.gz`, { force: true });
+    rmSync(`${file}.br`, { force: true });
+  }
+  written.add(path);
+}
+
+/** Copies a repository file into assets/ under its hashed name; returns the path under dist/web/. */
+function hashed(/** @type {string} */ source) {
+  const bytes = readFileSync(join(ROOT, source));
+  const ext = extname(source);
+  const path = `assets/${basename(source, ext)}-${hash(bytes)}${ext}`;
+  put(path, bytes);
+  return path;
+}
+
+// the core, then the worker (it names the core's file), then the page (it names both)
+const wasm = hashed('pkg/ruledlab_bg.wasm');
+/** Where each `new URL(…, import.meta.url)` target of the sources is in the site, from assets/. */
+const urls = new Map([
+  [join(ROOT, 'pkg/ruledlab_bg.wasm'), `./${basename(wasm)}`],
+  [join(ROOT, 'dist/manifest.json'), '../dist/manifest.json'],
+  [join(ROOT, 'dist/ruledlab.html'), '../dist/ruledlab.html'],
+]);
+
+/**
+ * Rewrites the `new URL('…', import.meta.url)` of every bundled source to where its target is
+ * in the site (every chunk is in assets/); a target the site does not have fails the build.
+ * @type {import('esbuild').Plugin}
+ */
+const siteUrls = {
+  name: 'ruledlab-site-urls',
+  setup(b) {
+    b.onLoad({ filter: /\.js$/ }, ({ path }) => {
+      const source = readFileSync(path, 'utf8');
+      const contents = source.replace(
+        /new URL\((['"])([^'"]+)\1,\s*import\.meta\.url\)/g,
+        (/** @type {string} */ whole, /** @type {string} */ quote, /** @type {string} */ target) => {
+          const absolute = resolve(dirname(path), target);
+          const mapped = urls.get(absolute);
+          if (mapped) return `new URL(${quote}${mapped}${quote}, import.meta.url)`;
+          if (relative(ROOT, absolute) in UNUSED) return whole;
+          throw new Error(`${relative(ROOT, path)}: new URL('${target}') is not in the site (scripts/web.mjs)`);
+        },
+      );
+      return { contents, loader: 'js' };
+    });
+  },
+};
+
+/** esbuild options every bundle of the site shares. @type {import('esbuild').BuildOptions} */
+const common = {
+  bundle: true,
+  format: 'esm',
+  minify: true,
+  target: 'es2022',
+  legalComments: 'none',
+  logLevel: 'error',
+  write: false,
+  metafile: true,
+  plugins: [siteUrls],
+};
+
+/** The files a build wrote in memory (write: false). */
+const outputs = (/** @type {import('esbuild').BuildResult} */ result) =>
+  /** @type {import('esbuild').OutputFile[]} */ (result.outputFiles);
+
+const worker = await build({ ...common, entryPoints: [join(ROOT, 'www/worker.js')], outfile: join(ASSETS, 'w.js') });
+const workerFile = `assets/worker-${hash(outputs(worker)[0].contents)}.js`;
+put(workerFile, outputs(worker)[0].contents);
+urls.set(join(ROOT, 'www/worker.js'), `./${basename(workerFile)}`);
+
+const page = await build({
+  ...common,
+  entryPoints: { main: join(ROOT, 'www/main.js') },
+  splitting: true,
+  outdir: ASSETS,
+  entryNames: '[name]-[hash]',
+  chunkNames: '[name]-[hash]',
+});
+for (const file of outputs(page)) put(relative(OUT, file.path), file.contents);
+const meta = /** @type {import('esbuild').Metafile} */ (page.metafile);
+const chunks = Object.fromEntries(Object.entries(meta.outputs).map(([p, o]) => [relative(OUT, resolve(ROOT, p)), o]));
+const entry = /** @type {string} */ (Object.keys(chunks).find((p) => chunks[p].entryPoint));
+/** The files a chunk imports statically, itself included (what loads with it). */
+const closure = (/** @type {string} */ start) => {
+  const seen = new Set([start]);
+  for (const file of seen)
+    for (const i of chunks[file].imports)
+      if (i.kind === 'import-statement' && !i.external) seen.add(relative(OUT, resolve(ROOT, i.path)));
+  return [...seen];
+};
+const initial = closure(entry);
+/** The output chunk holding the source module `source`. */
+const chunkOf = (/** @type {string} */ source) =>
+  Object.keys(chunks).find((p) => Object.keys(chunks[p].inputs).includes(source));
+
+const boot = await build({ ...common, entryPoints: [join(ROOT, 'www/boot.js')], format: 'iife', outfile: 'b.js' });
+const bootFile = `assets/boot-${hash(outputs(boot)[0].contents)}.js`;
+put(bootFile, outputs(boot)[0].contents);
+
+// the page: the repository's index.html with every reference to a file of www/ made hashed,
+// and the chunks the entry imports announced at once (modulepreload: fetched in parallel
+// instead of one import level after the other)
+const references = {
+  'www/style.css': hashed('www/style.css'),
+  'www/noscript.css': hashed('www/noscript.css'),
+  'www/favicon.svg': hashed('www/favicon.svg'),
+  'www/boot.js': bootFile,
+  'www/main.js': entry,
+};
+let html = readFileSync(join(ROOT, 'index.html'), 'utf8');
+for (const [from, to] of Object.entries(references)) {
+  if (!html.includes(`"${from}"`)) throw new Error(`index.html does not name ${from}`);
+  html = html.replaceAll(`"${from}"`, `"${to}"`);
+}
+// and the core (fetched by the entry's first statement otherwise: one round trip later, after
+// the chunks; `crossorigin`: the same request as the fetch of wasm-bindgen's loader, so it is used)
+const preloads = [
+  `  <link rel="preload" href="${wasm}" as="fetch" type="application/wasm" crossorigin>\n`,
+  ...initial.filter((p) => p !== entry).map((p) => `  <link rel="modulepreload" href="${p}">\n`),
+].join('');
+if (preloads) html = html.replace(/(\n\s*<script type="module")/, `\n${preloads.trimEnd()}$1`);
+if (/\bwww\//.test(html)) throw new Error('dist/web/index.html still names a file of www/');
+put('index.html', html);
+
+// the one-file builds, where the page looks for them
+for (const name of ['ruledlab.html', 'ruledlab-embed.js', 'manifest.json'])
+  put(`dist/${name}`, readFileSync(join(ROOT, 'dist', name)));
+
+// gzip and brotli beside every file that compresses
+let compressed = 0;
+for (const path of written) {
+  if (BINARY.has(extname(path))) continue;
+  const file = join(OUT, path);
+  if (existsSync(`${file}.gz`) && existsSync(`${file}.br`) && statSync(file).mtimeMs <= statSync(`${file}.br`).mtimeMs)
+    continue;
+  const bytes = readFileSync(file);
+  const gz = gzipSync(bytes, { level: 9 });
+  const br = brotliCompressSync(bytes, {
+    params: {
+      [constants.BROTLI_PARAM_QUALITY]: 11,
+      [constants.BROTLI_PARAM_LGWIN]: 24,
+      [constants.BROTLI_PARAM_SIZE_HINT]: bytes.length,
+    },
+  });
+  // (a file too small to gain goes as it is)
+  if (gz.length < bytes.length) writeFileSync(`${file}.gz`, gz);
+  if (br.length < bytes.length) writeFileSync(`${file}.br`, br);
+  compressed++;
+}
+// what older builds left
+for (const dir of [ASSETS, join(OUT, 'dist')])
+  for (const name of readdirSync(dir)) {
+    const path = relative(OUT, join(dir, name)).replace(/\.(gz|br)$/, '');
+    if (!written.has(path)) rmSync(join(dir, name), { force: true });
+  }
+
+/** Sizes of a file under dist/web/: raw and brotli. */
+const size = (/** @type {string} */ path) => ({
+  bytes: statSync(join(OUT, path)).size,
+  brotli: existsSync(join(OUT, `${path}.br`)) ? statSync(join(OUT, `${path}.br`)).size : null,
+});
+const manifest = {
+  entry,
+  initial,
+  wasm,
+  worker: workerFile,
+  lazy: Object.fromEntries(
+    Object.entries(LAZY).map(([what, sources]) => [
+      what,
+      [...new Set(sources.map((s) => chunkOf(s) ?? `(not bundled: ${s})`))],
+    ]),
+  ),
+  sizes: Object.fromEntries([...written].sort().map((p) => [p, size(p)])),
+};
+writeFileSync(join(ROOT, 'dist/web-manifest.json'), `${JSON.stringify(manifest, null, 2)}\n`);
+const kib = (/** @type {number} */ n) => `${(n / 1024).toFixed(0)} KiB`;
+const first = [...initial, wasm, references['www/style.css']].map(size);
+console.log(
+  `build: dist/web/ (${written.size} files, ${compressed} compressed now): the first scene loads ${kib(first.reduce((s, f) => s + f.bytes, 0))}, ${kib(first.reduce((s, f) => s + (f.brotli ?? f.bytes), 0))} with brotli (JavaScript ${kib(initial.map(size).reduce((s, f) => s + (f.brotli ?? f.bytes), 0))})`,
+);
