@@ -54,7 +54,7 @@ pub use error::{
 };
 
 // shared vocabulary: lines, jets, parameter ranges
-pub use base::{check_coordinates, parameters as sample_parameters, CongruenceJet, Jet, Ranges};
+pub use base::{atan2_x2, check_coordinates, parameters as sample_parameters, CongruenceJet, Jet, Ranges};
 pub use line::{Line, Segment};
 pub use line_fit::{fit_line, LineFit};
 pub use mesh::{grid_indices, strip_indices, Mesh};

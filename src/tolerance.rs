@@ -216,6 +216,15 @@ pub mod test {
     pub const EXACT: f64 = 1e-12;
     /// Slack allowed around a measured convergence order (1 or 2).
     pub const ORDER: f64 = 0.1;
+    /// The invariants kernel's φ against `f64::atan2`, in units in the last place, over the whole
+    /// upper half-plane (`tests/kernels.rs`). Measured: 1 against glibc's `atan2` (natively,
+    /// within about ½ ulp of the exact angle), 2 against fdlibm's (Rust's in wasm), where both
+    /// are off the exact angle by up to 1.4 ulp, in opposite directions.
+    pub const KERNEL_ANGLE_ULPS: u64 = 2;
+    /// The kernel's δ = h/φ against the scalar path's (h is the same bits, φ within
+    /// [`KERNEL_ANGLE_ULPS`], and the division rounds once more); (δ_{i−1,i} + δ_{i,i+1})/2
+    /// within as many ulp of the larger term.
+    pub const KERNEL_DELTA_ULPS: u64 = 3;
 }
 
 /// Asserts `|a − b| ≤ tol · max(1, |a|, |b|)` for numbers or `DVec3`s, with a useful message.
