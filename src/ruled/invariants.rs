@@ -24,7 +24,9 @@
 //! rulings (h = 0) are not degenerate.
 
 use crate::line::Line;
+use crate::ruled::kernel::{self, Rulings};
 use crate::tolerance::PARALLEL_SIN;
+use bytemuck::Zeroable;
 use glam::DVec3;
 
 /// The invariants of one pair of consecutive rulings.
@@ -191,9 +193,71 @@ impl Invariants {
         inv.distribution_mean.insert(0, 0.5 * (inv.distribution[n - 1] + inv.distribution[0]));
     }
 
+    /// The invariants of the rulings a_i → b_i given by their endpoints a_0, b_0, a_1, b_1, …
+    /// (N ≥ 2 segments of nonzero length, as a [`RuledSurface`](super::RuledSurface) holds them),
+    /// open or closed, by the f64x2 kernel (`ruled/kernel.rs`), into these arrays: their memory
+    /// is reused when they have the size already (as [`Invariants::compute_from`]). The numbers
+    /// are those of [`Invariants::from_lines`] of the segments' lines bit for bit, except φ
+    /// (within 1 ulp of `f64::atan2`) and δ, (δ_{i−1,i} + δ_{i,i+1})/2, which divide by it.
+    pub fn compute_from_points(&mut self, points: &[DVec3], closed: bool) {
+        let seq = Rulings::new(bytemuck::cast_slice(points), closed);
+        let (pairs, interior) = (seq.pairs(), seq.interior() + closed as usize);
+        let inv = self;
+        sized(&mut inv.angle, pairs);
+        sized(&mut inv.distance, pairs);
+        sized(&mut inv.distribution, pairs);
+        sized(&mut inv.footpoints, 2 * pairs);
+        sized(&mut inv.central_normal, pairs);
+        sized(&mut inv.parallel, pairs);
+        sized(&mut inv.striction, interior);
+        sized(&mut inv.distribution_mean, interior);
+        sized(&mut inv.perpendicular_midpoints, pairs);
+        // closed: R_0's striction quantities come first, from the last pair
+        let skip = closed as usize;
+        kernel::pairs(
+            &seq,
+            0,
+            pairs,
+            &mut kernel::Out {
+                angle: &mut inv.angle,
+                distance: &mut inv.distance,
+                distribution: &mut inv.distribution,
+                footpoints: bytemuck::cast_slice_mut(&mut inv.footpoints),
+                normal: bytemuck::cast_slice_mut(&mut inv.central_normal),
+                parallel: &mut inv.parallel,
+                striction: bytemuck::cast_slice_mut(&mut inv.striction[skip..]),
+                mean: &mut inv.distribution_mean[skip..],
+                midpoints: bytemuck::cast_slice_mut(&mut inv.perpendicular_midpoints),
+            },
+        );
+        if closed {
+            let (m, mean) = kernel::closing(
+                inv.footpoints[0].into(),
+                inv.footpoints[2 * pairs - 1].into(),
+                inv.distribution[0],
+                inv.distribution[pairs - 1],
+            );
+            inv.striction[0] = m.into();
+            inv.distribution_mean[0] = mean;
+        }
+    }
+
     /// A `DVec3` slice as its flat `f64` coordinates, without copying.
     pub fn flat(points: &[DVec3]) -> &[f64] {
         bytemuck::cast_slice(points)
+    }
+}
+
+/// `v` with `n` elements: as it is when it has them (the numbers are overwritten), else
+/// resized in its own memory when it is large enough, else fresh zeroed memory (which the
+/// system hands out without writing it).
+fn sized<T: Zeroable + Clone>(v: &mut Vec<T>, n: usize) {
+    if v.len() == n {
+    } else if v.capacity() >= n {
+        v.clear();
+        v.resize(n, T::zeroed());
+    } else {
+        *v = bytemuck::zeroed_vec(n);
     }
 }
 

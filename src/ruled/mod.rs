@@ -5,6 +5,7 @@ pub mod convergence;
 pub mod development;
 pub mod invariants;
 pub mod isometry;
+pub(crate) mod kernel;
 pub mod smooth;
 pub mod surface;
 
