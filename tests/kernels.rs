@@ -15,7 +15,8 @@
 use glam::DVec3;
 use ruledlab::tolerance::test::{KERNEL_ANGLE_ULPS, KERNEL_DELTA_ULPS};
 use ruledlab::tolerance::{MAX_COORD, PARALLEL_SIN};
-use ruledlab::{atan2_x2, Invariants, Line, RuledSurface};
+use ruledlab::{atan2_x2, bspline, chaikin, four_point, subdivide_strip, Invariants, Line, Pair, RuledSurface, Scheme};
+use ruledlab::{AnalyticSurface, SmoothRuled};
 
 #[cfg(target_family = "wasm")]
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -268,5 +269,151 @@ fn invariants_into_reused_arrays_are_those_of_a_fresh_call() {
         s.invariants_into(&mut out, closed);
         let fresh = if closed { s.invariants_closed() } else { s.invariants() };
         assert_eq!(format!("{out:?}"), format!("{fresh:?}"));
+    }
+}
+
+/// The generic step (`four_point`, `chaikin`, `bspline` on endpoint pairs, then the full
+/// validation): what `subdivide_strip` did before its kernels.
+fn generic(s: &RuledSurface, scheme: Scheme, closed: bool, steps: usize) -> Result<RuledSurface, ruledlab::Error> {
+    let mut p: Vec<Pair> = s.points().chunks_exact(2).map(|ab| Pair(ab[0], ab[1])).collect();
+    for _ in 0..steps {
+        p = match scheme {
+            Scheme::FourPoint { w } => four_point(&p, w, closed),
+            Scheme::Chaikin => chaikin(&p, closed),
+            Scheme::BSpline { degree } => bspline(&p, degree, closed),
+            _ => unreachable!(),
+        };
+    }
+    RuledSurface::from_points(p.iter().flat_map(|q| [q.0, q.1]).collect())
+}
+
+/// The kernel's step against the generic one: the same points bit for bit, or the same error
+/// (returned, so that a test can see which errors its strips met).
+fn check_step(what: &str, s: &RuledSurface, scheme: Scheme, closed: bool, steps: usize) -> Option<String> {
+    let want = generic(s, scheme, closed, steps);
+    let got = subdivide_strip(s, scheme, closed, steps);
+    match (got, want) {
+        (Ok(g), Ok(w)) => {
+            if let Some(i) = same3(g.points(), w.points()) {
+                panic!("{what}: {scheme:?}, closed {closed}, {steps} steps, N = {}: point {i}", s.len());
+            }
+            None
+        }
+        (Err(g), Err(w)) => {
+            let g = format!("{g:?}");
+            assert_eq!(g, format!("{w:?}"), "{what}: {scheme:?}");
+            Some(g.split([' ', '{', '(']).next().unwrap_or_default().to_string())
+        }
+        (g, w) => panic!("{what}: {scheme:?}, closed {closed}, {steps} steps: {g:?} vs {w:?}"),
+    }
+}
+
+fn schemes() -> Vec<Scheme> {
+    let mut all = vec![Scheme::Chaikin];
+    all.extend([1.0 / 16.0, 0.0, -0.1, 0.25, 1.0 / 13.0].map(|w| Scheme::FourPoint { w }));
+    all.extend((1..=7).map(|degree| Scheme::BSpline { degree }));
+    all
+}
+
+/// Random strips of 2 to 24 rulings (every end and tail of the kernels' loops), open and
+/// closed, one to three steps, at scales from 1e-100 to 1e100.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn strip_steps_match_the_generic_code_on_random_strips() {
+    let mut r = Random(13);
+    for scheme in schemes() {
+        for n in 2..=24 {
+            let scale = 10f64.powi(r.below(201) as i32 - 100);
+            let s = surface((0..2 * n).map(|_| r.vec(scale)).collect());
+            for closed in [false, true] {
+                for steps in 1..=3 {
+                    if scheme.output_len_after(n, closed, steps).is_ok() {
+                        check_step("random", &s, scheme, closed, steps);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Strips whose steps fail the validation, or nearly: refined coordinates beyond 1e150 (the
+/// four-point scheme overshoots, the B-splines stay inside), exactly at the limit, boundary
+/// polygons that cross so that a new ruling has length zero, or nearly zero; and sampled
+/// surfaces (rulings nearly parallel, segments far from the origin).
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn strip_steps_match_the_generic_code_on_adversarial_strips() {
+    let mut r = Random(17);
+    let zigzag = |n: usize, s: f64| -> Vec<DVec3> {
+        (0..n)
+            .flat_map(|i| [DVec3::new(i as f64, (i % 2) as f64, 0.0) * s, DVec3::new(i as f64, 0.0, 1.0) * s])
+            .collect()
+    };
+    let limit = |n: usize| -> Vec<DVec3> {
+        (0..n)
+            .flat_map(|i| {
+                let x = if i % 2 == 0 { MAX_COORD } else { -MAX_COORD };
+                [DVec3::new(x, 0.0, 0.0), DVec3::new(x, MAX_COORD, 0.0)]
+            })
+            .collect()
+    };
+    // a and b swap sides between rulings: the polygons cross, midway a = b
+    let crossing = |n: usize| -> Vec<DVec3> {
+        (0..n)
+            .flat_map(|i| {
+                let s = if i % 2 == 0 { 1.0 } else { -1.0 };
+                [DVec3::new(i as f64, s, 0.0), DVec3::new(i as f64, -s, 0.0)]
+            })
+            .collect()
+    };
+    let nearly_crossing = |n: usize| -> Vec<DVec3> {
+        (0..n)
+            .flat_map(|i| {
+                let s = if i % 2 == 0 { 1.0 } else { -1.0 + 1e-13 };
+                [DVec3::new(0.0, s, 0.0), DVec3::new(0.0, -s, 0.0)]
+            })
+            .collect()
+    };
+    let far = |n: usize, r: &mut Random| -> Vec<DVec3> {
+        (0..n)
+            .flat_map(|_| {
+                let p = DVec3::splat(1e140) + r.vec(1e130);
+                [p, p + r.vec(1e129)]
+            })
+            .collect()
+    };
+    let mut errors = std::collections::BTreeSet::new();
+    for n in [2, 3, 4, 5, 6, 7, 8, 9, 16, 17] {
+        let strips = [
+            ("zigzag", zigzag(n, 1.0)),
+            ("zigzag, tiny", zigzag(n, 1e-140)),
+            ("at the coordinate limit", limit(n)),
+            ("crossing", crossing(n)),
+            ("nearly crossing", nearly_crossing(n)),
+            ("far", far(n, &mut r)),
+        ];
+        for (what, points) in strips {
+            let Ok(s) = RuledSurface::from_points(points) else { continue };
+            for scheme in schemes() {
+                for closed in [false, true] {
+                    for steps in 1..=2 {
+                        if scheme.output_len_after(n, closed, steps).is_ok() {
+                            errors.extend(check_step(what, &s, scheme, closed, steps));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // the strips met every way a step can fail
+    let met: Vec<&str> = errors.iter().map(String::as_str).collect();
+    assert_eq!(met, ["OutOfRange", "TooFew", "ZeroLength"]);
+    // sampled surfaces of the catalogue, 1000 rulings
+    for name in ["hyperboloid", "helicoid", "quartic"] {
+        let a = AnalyticSurface::by_name(name).expect("in the catalogue");
+        let s = a.sample(1000, a.ranges()).expect("valid");
+        for scheme in schemes() {
+            check_step(name, &s, scheme, false, 1);
+        }
     }
 }
