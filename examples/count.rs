@@ -3,6 +3,8 @@
 //! ruling): `cargo run --release --example count -- <operation> <rulings> <repeats>`.
 //! Operations: invariants (the f64x2 kernel, into reused arrays), invariants-scalar (the
 //! scalar path, `Invariants::compute_from`), four-point, chaikin, bspline3 (one strip step).
+//! It prints the median time of one repeat (ms), for a quick look; criterion (`cargo bench`) is
+//! the measurement.
 use ruledlab::{subdivide_strip, AnalyticSurface, Invariants, Ranges, Scheme, SmoothRuled};
 use std::hint::black_box;
 
@@ -15,7 +17,9 @@ fn main() {
     let hyp = AnalyticSurface::by_name("hyperboloid").expect("in the catalogue");
     let s = hyp.sample(n, Ranges { u: (0.0, 100.0), v: (-1.0, 1.0), closed: false }).expect("valid");
     let mut out = Invariants::default();
+    let mut times = Vec::new();
     for _ in 0..reps {
+        let t0 = std::time::Instant::now();
         match op {
             "invariants" => s.invariants_into(&mut out, false),
             "invariants-scalar" => out.compute_from(s.lines()),
@@ -25,5 +29,10 @@ fn main() {
             _ => panic!("unknown operation {op}"),
         }
         black_box(&out);
+        times.push(t0.elapsed().as_secs_f64() * 1e3);
+    }
+    times.sort_by(f64::total_cmp);
+    if let Some(median) = times.get(times.len() / 2) {
+        eprintln!("{op}, {n} rulings: {median:.2} ms (median of {reps})");
     }
 }

@@ -68,7 +68,7 @@ pub use ruled::convergence::{
     fit_order, study as convergence_study, Series as ConvergenceSeries, Study as ConvergenceStudy,
 };
 pub use ruled::surface::points_from_flat;
-pub use ruled::{Invariants, PairInvariants, RuledSurface, SmoothRuled};
+pub use ruled::{Invariants, InvariantsBlock, PairInvariants, RuledSurface, SmoothRuled};
 
 // Section 3: isometries and the development
 pub use ruled::development::Frame;

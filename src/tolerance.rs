@@ -77,6 +77,11 @@ pub const DISTANCE_SCAN: usize = 64;
 /// (each shrinks the bracket by 0.618: 80 reach the rounding of u).
 pub const DISTANCE_REFINE_STEPS: usize = 80;
 
+/// Pairs of rulings whose invariants the wasm bindings compute at a time before copying them into
+/// JavaScript's arrays (`invariants()`, `invariantsInto`): about 600 KiB of results, which stay
+/// in the processor's cache between the kernel and the copy.
+pub const INVARIANTS_BLOCK: usize = 4096;
+
 /// Largest stride of the buffers of inserted rulings (2^k after k steps).
 pub const MAX_STRIDE: usize = 1 << 24;
 

@@ -417,3 +417,36 @@ fn strip_steps_match_the_generic_code_on_adversarial_strips() {
         }
     }
 }
+
+/// Block by block, as the wasm bindings fill JavaScript's arrays: the same numbers as the whole
+/// surface at once, for blocks of every size against both tails and the wrap.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn invariants_by_blocks_are_those_of_the_whole_surface() {
+    let mut r = Random(19);
+    for n in [2, 3, 4, 5, 9, 10, 33] {
+        let s = surface((0..2 * n).map(|_| r.vec(1.0)).collect());
+        for closed in [false, true] {
+            let whole = if closed { s.invariants_closed() } else { s.invariants() };
+            for block in [2, 3, 4, 5, 7, 64] {
+                let mut got = whole.clone();
+                let nan = DVec3::splat(f64::NAN);
+                got.angle.fill(f64::NAN);
+                got.footpoints.fill(nan);
+                got.striction.fill(nan);
+                got.distribution_mean.fill(f64::NAN);
+                got.perpendicular_midpoints.fill(nan);
+                Invariants::by_blocks(s.points(), closed, block, |b| {
+                    let (p, m, k) = (b.pairs_from, b.interior_from, b.inv.angle.len());
+                    got.angle[p..p + k].copy_from_slice(&b.inv.angle);
+                    got.footpoints[2 * p..2 * (p + k)].copy_from_slice(&b.inv.footpoints);
+                    got.perpendicular_midpoints[p..p + k].copy_from_slice(&b.inv.perpendicular_midpoints);
+                    let l = b.inv.striction.len();
+                    got.striction[m..m + l].copy_from_slice(&b.inv.striction);
+                    got.distribution_mean[m..m + l].copy_from_slice(&b.inv.distribution_mean);
+                });
+                assert_eq!(format!("{got:?}"), format!("{whole:?}"), "N = {n}, closed {closed}, blocks of {block}");
+            }
+        }
+    }
+}

@@ -70,28 +70,27 @@ pub fn atan2_upper(y: F64x2, x: F64x2) -> F64x2 {
     let lo16 = F64x2::splat(16.0) * lo;
     let first = lo16.lt(F64x2::splat(7.0) * hi);
     let second = lo16.lt(F64x2::splat(11.0) * hi);
-    let zero = F64x2::splat(0.0);
-    let cc = F64x2::select(first, zero, F64x2::select(second, F64x2::splat(0.5), F64x2::splat(1.0)));
+    let cc = F64x2::select(second, F64x2::splat(0.5), F64x2::splat(1.0)).zero(first);
     let t = (lo - cc * hi) / (hi + cc * lo);
     let z = t * t;
     let w = z * z;
     let s1 = z * (c(AT[0]) + w * (c(AT[2]) + w * (c(AT[4]) + w * (c(AT[6]) + w * (c(AT[8]) + w * c(AT[10]))))));
     let s2 = w * (c(AT[1]) + w * (c(AT[3]) + w * (c(AT[5]) + w * (c(AT[7]) + w * c(AT[9])))));
-    let h_hi = F64x2::select(first, zero, F64x2::select(second, c(ATAN_HALF.0), c(ATAN_ONE.0)));
-    let h_lo = F64x2::select(first, zero, F64x2::select(second, c(ATAN_HALF.1), c(ATAN_ONE.1)));
+    let h_hi = F64x2::select(second, c(ATAN_HALF.0), c(ATAN_ONE.0)).zero(first);
+    let h_lo = F64x2::select(second, c(ATAN_HALF.1), c(ATAN_ONE.1)).zero(first);
     // atan(t) ≈ t − t·p(t²), the part that is not a constant
     let small = t - t * (s1 + s2);
     // the octant: θ = B + σ(atan(c) + atan(t)), with B + σ atan(c) = C_hi + C_lo summed first,
     // exactly (Fast2Sum: |B_hi| ≥ π/2 > |atan(c)| unless B = 0, where the sum is exact anyway), so
     // that only the last addition rounds at the size of θ
     let negative = x.sign_bit();
-    let sign = F64x2::select(swap.xor(negative), F64x2::splat(-1.0), F64x2::splat(1.0));
-    let b_hi = F64x2::select(swap, c(PIO2.0), F64x2::select(negative, c(PI.0), zero));
-    let b_lo = F64x2::select(swap, c(PIO2.1), F64x2::select(negative, c(PI.1), zero));
-    let (sh_hi, sh_lo) = (sign * h_hi, sign * h_lo);
+    let minus = swap.xor(negative);
+    let b_hi = F64x2::select(swap, c(PIO2.0), c(PI.0).keep(negative));
+    let b_lo = F64x2::select(swap, c(PIO2.1), c(PI.1).keep(negative));
+    let (sh_hi, sh_lo) = (h_hi.negate(minus), h_lo.negate(minus));
     let c_hi = b_hi + sh_hi;
     let c_lo = (b_lo + sh_lo) + ((b_hi - c_hi) + sh_hi);
-    let theta = c_hi + (c_lo + sign * small);
+    let theta = c_hi + (c_lo + small.negate(minus));
     // (a NaN fails a comparison: in y through hi, in x through |x|)
     let large = F64x2::splat(LARGE);
     let inside = F64x2::splat(SMALL).le(hi).and(hi.le(large)).and(ax.le(large)).and(y.sign_bit().not());

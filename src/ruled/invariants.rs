@@ -110,6 +110,20 @@ pub struct Invariants {
 
 const NAN3: DVec3 = DVec3::splat(f64::NAN);
 
+/// One block of [`Invariants::by_blocks`].
+#[derive(Debug)]
+pub struct InvariantsBlock<'a> {
+    /// Where the block's pairs begin in the whole surface's pair arrays (`angle`, `distance`,
+    /// `distribution`, `central_normal`, `parallel`, `perpendicular_midpoints`; twice this in
+    /// `footpoints`).
+    pub pairs_from: usize,
+    /// Where the block's striction quantities begin in the whole surface's `striction` and
+    /// `distribution_mean`.
+    pub interior_from: usize,
+    /// The block's invariants (arrays of the block's size).
+    pub inv: &'a Invariants,
+}
+
 impl Invariants {
     /// Computes every invariant in one pass over the lines (O(N), one allocation per array).
     pub fn of(lines: &[Line]) -> Self {
@@ -201,7 +215,59 @@ impl Invariants {
     /// (within 1 ulp of `f64::atan2`) and δ, (δ_{i−1,i} + δ_{i,i+1})/2, which divide by it.
     pub fn compute_from_points(&mut self, points: &[DVec3], closed: bool) {
         let seq = Rulings::new(bytemuck::cast_slice(points), closed);
-        let (pairs, interior) = (seq.pairs(), seq.interior() + closed as usize);
+        let pairs = seq.pairs();
+        // closed: R_0's striction quantities come first, from the last pair
+        self.compute_range(&seq, 0, pairs, closed as usize);
+        if closed {
+            let inv = self;
+            let (m, mean) = kernel::closing(
+                inv.footpoints[0].into(),
+                inv.footpoints[2 * pairs - 1].into(),
+                inv.distribution[0],
+                inv.distribution[pairs - 1],
+            );
+            inv.striction[0] = m.into();
+            inv.distribution_mean[0] = mean;
+        }
+    }
+
+    /// As [`Invariants::compute_from_points`], a block of at most `block` pairs at a time
+    /// (`block` ≥ 2): `f` gets each block's invariants in arrays of the block's size, which a
+    /// caller copies where they belong (the wasm bindings straight into JavaScript's arrays, so
+    /// that the whole result never sits in wasm memory). A block computed alone gives the same
+    /// numbers as the whole surface at once.
+    pub fn by_blocks(points: &[DVec3], closed: bool, block: usize, mut f: impl FnMut(&InvariantsBlock<'_>)) {
+        let seq = Rulings::new(bytemuck::cast_slice(points), closed);
+        let pairs = seq.pairs();
+        let block = block.max(2);
+        let mut scratch = Invariants::default();
+        let (mut first, mut last) = ((DVec3::ZERO, 0.0), (DVec3::ZERO, 0.0));
+        let mut start = 0;
+        while start < pairs {
+            let end = (start + block).min(pairs);
+            scratch.compute_range(&seq, start, end, 0);
+            if start == 0 {
+                first = (scratch.footpoints[0], scratch.distribution[0]);
+            }
+            if end == pairs {
+                last = (scratch.footpoints[2 * (end - start) - 1], scratch.distribution[end - start - 1]);
+            }
+            f(&InvariantsBlock { pairs_from: start, interior_from: start.max(1) - 1 + closed as usize, inv: &scratch });
+            start = end;
+        }
+        if closed {
+            let (m, mean) = kernel::closing(first.0.into(), last.0.into(), first.1, last.1);
+            scratch.compute_range(&seq, pairs, pairs, 0);
+            scratch.striction.push(m.into());
+            scratch.distribution_mean.push(mean);
+            f(&InvariantsBlock { pairs_from: pairs, interior_from: 0, inv: &scratch });
+        }
+    }
+
+    /// The kernel on pairs start … end − 1 into these arrays, sized for them: the striction
+    /// quantities of rulings max(start, 1) … end − 1 after `skip` entries left for the caller.
+    fn compute_range(&mut self, seq: &Rulings<'_>, start: usize, end: usize, skip: usize) {
+        let (pairs, interior) = (end - start, end.saturating_sub(start.max(1)) + skip);
         let inv = self;
         sized(&mut inv.angle, pairs);
         sized(&mut inv.distance, pairs);
@@ -212,12 +278,10 @@ impl Invariants {
         sized(&mut inv.striction, interior);
         sized(&mut inv.distribution_mean, interior);
         sized(&mut inv.perpendicular_midpoints, pairs);
-        // closed: R_0's striction quantities come first, from the last pair
-        let skip = closed as usize;
         kernel::pairs(
-            &seq,
-            0,
-            pairs,
+            seq,
+            start,
+            end,
             &mut kernel::Out {
                 angle: &mut inv.angle,
                 distance: &mut inv.distance,
@@ -230,16 +294,6 @@ impl Invariants {
                 midpoints: bytemuck::cast_slice_mut(&mut inv.perpendicular_midpoints),
             },
         );
-        if closed {
-            let (m, mean) = kernel::closing(
-                inv.footpoints[0].into(),
-                inv.footpoints[2 * pairs - 1].into(),
-                inv.distribution[0],
-                inv.distribution[pairs - 1],
-            );
-            inv.striction[0] = m.into();
-            inv.distribution_mean[0] = mean;
-        }
     }
 
     /// A `DVec3` slice as its flat `f64` coordinates, without copying.

@@ -61,12 +61,6 @@ impl<'a> Rulings<'a> {
         }
     }
 
-    /// Interior rulings with a striction point computed by [`pairs`] (N − 2 open; closed, the
-    /// N − 1 rulings R_1 … R_{N−1}: R_0's needs the last pair, see [`closing`]).
-    pub fn interior(&self) -> usize {
-        self.pairs() - 1
-    }
-
     /// Ruling r (R_N is R_0; beyond it, the last ruling again: a lane nobody stores).
     fn ruling(&self, r: usize) -> [f64; 6] {
         let n = self.len();
@@ -206,43 +200,51 @@ fn step(prev: &Window, a: V3x2, e: V3x2) -> (Step, Window) {
     (out, Window { a, e, f1, delta })
 }
 
-/// Two consecutive numbers at `at`.
-#[inline(always)]
-fn put(dst: &mut [f64], at: usize, v: F64x2) {
-    dst[at..at + 2].copy_from_slice(&v.to_array());
+/// Where a whole step goes: pairs k, k + 1 and the striction quantities of rulings k, k + 1.
+struct Dst<'a> {
+    angle: &'a mut [f64],
+    distance: &'a mut [f64],
+    distribution: &'a mut [f64],
+    footpoints: &'a mut [f64],
+    normal: &'a mut [f64],
+    midpoints: &'a mut [f64],
+    parallel: &'a mut [bool],
+    striction: &'a mut [f64],
+    mean: &'a mut [f64],
 }
 
-/// Stores a whole step: pairs i, i + 1 and the striction quantities at j, j + 1.
+/// Two numbers into a chunk of two.
 #[inline(always)]
-fn store(out: &mut Out<'_>, i: usize, j: usize, s: &Step) {
-    put(out.angle, i, s.angle);
-    put(out.distance, i, s.distance);
-    put(out.distribution, i, s.delta);
+fn put(dst: &mut [f64], v: F64x2) {
+    let d: &mut [f64; 2] = dst.try_into().expect("a chunk of two");
+    *d = v.to_array();
+}
+
+/// Three vectors into a chunk of six.
+#[inline(always)]
+fn put3(dst: &mut [f64], v: [F64x2; 3]) {
+    let d: &mut [f64; 6] = dst.try_into().expect("a chunk of six");
+    for (q, v) in v.into_iter().enumerate() {
+        [d[2 * q], d[2 * q + 1]] = v.to_array();
+    }
+}
+
+/// Stores a whole step.
+#[inline(always)]
+fn store(d: Dst<'_>, s: &Step) {
+    put(d.angle, s.angle);
+    put(d.distance, s.distance);
+    put(d.distribution, s.delta);
     let (f0, f1) = (s.f0, s.f1);
-    let feet = [
-        F64x2::first_lanes(f0.x, f0.y),
-        F64x2::first_lanes(f0.z, f1.x),
-        F64x2::first_lanes(f1.y, f1.z),
-        F64x2::second_lanes(f0.x, f0.y),
-        F64x2::second_lanes(f0.z, f1.x),
-        F64x2::second_lanes(f1.y, f1.z),
-    ];
-    for (q, v) in feet.into_iter().enumerate() {
-        put(out.footpoints, 6 * i + 2 * q, v);
-    }
-    for (q, v) in s.normal.to_interleaved().into_iter().enumerate() {
-        put(out.normal, 3 * i + 2 * q, v);
-    }
-    for (q, v) in s.midpoint.to_interleaved().into_iter().enumerate() {
-        put(out.midpoints, 3 * i + 2 * q, v);
-    }
-    let [p0, p1] = s.parallel.to_array();
-    out.parallel[i] = p0;
-    out.parallel[i + 1] = p1;
-    for (q, v) in s.striction.to_interleaved().into_iter().enumerate() {
-        put(out.striction, 3 * j + 2 * q, v);
-    }
-    put(out.mean, j, s.mean);
+    let (first, second) = d.footpoints.split_at_mut(6);
+    put3(first, [F64x2::first_lanes(f0.x, f0.y), F64x2::first_lanes(f0.z, f1.x), F64x2::first_lanes(f1.y, f1.z)]);
+    put3(second, [F64x2::second_lanes(f0.x, f0.y), F64x2::second_lanes(f0.z, f1.x), F64x2::second_lanes(f1.y, f1.z)]);
+    put3(d.normal, s.normal.to_interleaved());
+    put3(d.midpoints, s.midpoint.to_interleaved());
+    let p: &mut [bool; 2] = d.parallel.try_into().expect("a chunk of two");
+    *p = s.parallel.to_array();
+    put3(d.striction, s.striction.to_interleaved());
+    put(d.mean, s.mean);
 }
 
 /// Stores one lane of a step: the pair at `i` and, if given, the striction quantities at `j`.
@@ -294,14 +296,35 @@ pub fn pairs(seq: &Rulings<'_>, start: usize, end: usize, out: &mut Out<'_>) {
         let (a, e) = load_pair(seq, k - 1, k);
         step(&Window { a, e, f1: a, delta: a.x }, a, e).1
     };
-    // whole steps straight from the coordinates: rulings k + 1, k + 2 are R_{k+1}, R_{k+2}
-    while k + 2 <= end && k + 2 < n {
-        let s: &[f64; 12] = seq.flat[6 * (k + 1)..6 * (k + 3)].try_into().expect("twelve numbers");
-        let (a, e) = rulings_x2(load12(s));
-        let (s, w) = step(&win, a, e);
-        store(out, k - start, k - first, &s);
-        win = w;
-        k += 2;
+    // whole steps straight from the coordinates: rulings k + 1, k + 2 are R_{k+1}, R_{k+2}; the
+    // output in chunks of exactly one step, so that no store needs a bounds check
+    let steps = (end.min(n - 1).saturating_sub(k)) / 2;
+    if steps > 0 {
+        let (i, j) = (k - start, k - first);
+        let input = seq.flat[6 * (k + 1)..6 * (k + 1 + 2 * steps)].chunks_exact(12);
+        fn chunks<T>(v: &mut [T], at: usize, size: usize, steps: usize) -> core::slice::ChunksExactMut<'_, T> {
+            v[at..at + size * steps].chunks_exact_mut(size)
+        }
+        let outputs = chunks(out.angle, i, 2, steps)
+            .zip(chunks(out.distance, i, 2, steps))
+            .zip(chunks(out.distribution, i, 2, steps))
+            .zip(chunks(out.footpoints, 6 * i, 12, steps))
+            .zip(chunks(out.normal, 3 * i, 6, steps))
+            .zip(chunks(out.midpoints, 3 * i, 6, steps))
+            .zip(chunks(out.parallel, i, 2, steps))
+            .zip(chunks(out.striction, 3 * j, 6, steps))
+            .zip(chunks(out.mean, j, 2, steps));
+        for (
+            s,
+            ((((((((angle, distance), distribution), footpoints), normal), midpoints), parallel), striction), mean),
+        ) in input.zip(outputs)
+        {
+            let (a, e) = rulings_x2(load12(s.try_into().expect("twelve numbers")));
+            let (s, w) = step(&win, a, e);
+            store(Dst { angle, distance, distribution, footpoints, normal, midpoints, parallel, striction, mean }, &s);
+            win = w;
+        }
+        k += 2 * steps;
     }
     // the last one or two pairs (the wrap of a closed surface among them)
     while k < end {

@@ -10,7 +10,7 @@ pub mod smooth;
 pub mod surface;
 
 pub use development::{envelope_radii, Development};
-pub use invariants::{Invariants, PairInvariants};
+pub use invariants::{Invariants, InvariantsBlock, PairInvariants};
 pub use isometry::HingeChain;
 pub use smooth::SmoothRuled;
 pub use surface::RuledSurface;

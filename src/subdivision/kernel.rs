@@ -135,13 +135,14 @@ pub fn four_point(p: &[Pair], w: f64, closed: bool, check: Check) -> (Vec<Pair>,
     if check != Check::Nothing {
         checks.two(R3::load(&first), R3::load(if kept { &p[0] } else { &first }));
     }
-    // the interior edges i = 1 … n − 3, two at a time: p_{i−1} … p_{i+3} in registers
-    let (mut a, mut b, mut c, mut d) = (R3::load(&p[0]), R3::load(&p[1]), R3::load(&p[2]), R3::load(&p[3]));
+    // the interior edges i = 1 … n − 3, two at a time: p_{i−1} … p_{i+3} loaded afresh each
+    // time (from the cache; carried in registers they would be spilled, there are not enough)
     let mut i = 1;
     while i + 2 < n - 1 {
-        let e = R3::load(&p[i + 3]);
+        let q: &[Pair; 5] = p[i - 1..i + 4].try_into().expect("five rulings");
+        let [a, b, c, d, e] = q.map(|r| R3::load(&r));
         let (q0, q1) = (vrule(a, b, c, d), vrule(b, c, d, e));
-        out.extend_from_slice(&[b.pair(), q0.pair(), c.pair(), q1.pair()]);
+        out.extend_from_slice(&[q[1], q0.pair(), q[2], q1.pair()]);
         match check {
             Check::Nothing => {}
             Check::New => checks.two(q0, q1),
@@ -150,14 +151,13 @@ pub fn four_point(p: &[Pair], w: f64, closed: bool, check: Check) -> (Vec<Pair>,
                 checks.two(b, c);
             }
         }
-        let f = R3::load(&p[(i + 4).min(n - 1)]);
-        (a, b, c, d) = (c, d, e, f);
         i += 2;
     }
     if i + 2 < n {
         // one interior edge left
+        let [a, b, c, d] = [p[i - 1], p[i], p[i + 1], p[i + 2]].map(|r| R3::load(&r));
         let q = vrule(a, b, c, d);
-        out.extend_from_slice(&[b.pair(), q.pair()]);
+        out.extend_from_slice(&[p[i], q.pair()]);
         if check != Check::Nothing {
             checks.two(q, if kept { b } else { q });
         }
