@@ -113,6 +113,7 @@ const row = (op, ms, outBytes, kind, js = null, native = NaN) => {
     outMB: outBytes / 1e6,
     nativeMs: native,
     nativeOfLimit: native / l[kind],
+    nativeOfWasm: native / ms,
   });
 };
 
@@ -176,6 +177,7 @@ for (const n of [1e3, 1e4]) {
   const r = s.invariants();
   const b = new InvariantsBuffer();
   const j = plain.invariantsArrays(n);
+  const four = new Float64Array(6 * (2 * n - 1));
   small.push({
     rulings: n,
     'invariants()': median(() => s.invariants(), 201),
@@ -184,6 +186,8 @@ for (const n of [1e3, 1e4]) {
     'native (fresh)': nativeMs('invariants', n),
     'native (into)': nativeMs('invariants_into', n),
     'plain JS (into)': median(() => plain.invariantsInto(f, j), 201),
+    'four-point': median(() => s.subdivide({ scheme: 'four-point' }).free(), 201),
+    'four-point plain JS': median(() => plain.fourPoint(f, four), 201),
   });
   b.free();
   s.free();
@@ -233,6 +237,7 @@ console.table(
     '× limit': f(r.ofLimit, 2),
     'plain JS ms': f(r.jsMs),
     'JS / wasm': f(r.versusJs, 2),
+    'native / wasm': f(r.nativeOfWasm, 2),
   })),
 );
 console.log('small calls, ms, median');
@@ -266,18 +271,18 @@ const table = [
   'operation in native code on the same machine (`cargo bench`, run just before, freed memory kept',
   'for reuse as wasm keeps it).',
   '',
-  '| 10⁶ rulings | wasm ms | output MB | limit ms | × limit | native ms | native × limit | careful plain JS ms | JS / wasm |',
-  '|---|---:|---:|---:|---:|---:|---:|---:|---:|',
+  '| 10⁶ rulings | wasm ms | output MB | limit ms | × limit | native ms | native × limit | native / wasm | careful plain JS ms | JS / wasm |',
+  '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
   ...rows.map(
     (r) =>
-      `| ${r.op} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} (${r.kind}) | ${f(r.ofLimit, 2)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 2)} | ${f(r.jsMs)} | ${f(r.versusJs, 2)} |`,
+      `| ${r.op} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} (${r.kind}) | ${f(r.ofLimit, 2)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 2)} | ${f(r.nativeOfWasm, 2)} | ${f(r.jsMs)} | ${f(r.versusJs, 2)} |`,
   ),
   '',
-  '| small calls, ms | `invariants()` | `invariantsInto` | `invariantsInPlace` | native (fresh) | native (into) | plain JS (into) |',
-  '|---|---:|---:|---:|---:|---:|---:|',
+  '| small calls, ms | `invariants()` | `invariantsInto` | `invariantsInPlace` | native (fresh) | native (into) | plain JS (into) | JS / `invariantsInPlace` | JS / `invariantsInto` | four-point step | plain JS | JS / wasm |',
+  '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
   ...small.map(
     (r) =>
-      `| ${r.rulings} rulings | ${f(r['invariants()'], 3)} | ${f(r.invariantsInto, 3)} | ${f(r.invariantsInPlace, 3)} | ${f(r['native (fresh)'], 3)} | ${f(r['native (into)'], 3)} | ${f(r['plain JS (into)'], 3)} |`,
+      `| ${r.rulings} rulings | ${f(r['invariants()'], 3)} | ${f(r.invariantsInto, 3)} | ${f(r.invariantsInPlace, 3)} | ${f(r['native (fresh)'], 3)} | ${f(r['native (into)'], 3)} | ${f(r['plain JS (into)'], 3)} | ${f(r['plain JS (into)'] / r.invariantsInPlace, 2)} | ${f(r['plain JS (into)'] / r.invariantsInto, 2)} | ${f(r['four-point'], 3)} | ${f(r['four-point plain JS'], 3)} | ${f(r['four-point plain JS'] / r['four-point'], 2)} |`,
   ),
   '',
   '| congruences | wasm ms | output MB | limit ms (mapped) | × limit | native ms | native × limit |',

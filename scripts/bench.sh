@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Benchmarks: criterion natively, then the same kernels through the wasm package in Node.
+# Benchmarks: criterion natively, then the same kernels through the wasm package in Node, their
+# instructions per ruling (valgrind), and frames of the page.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -11,5 +12,12 @@ bash scripts/build.sh
 GLIBC_TUNABLES=glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967295 \
   cargo bench --bench invariants --bench subdivision --bench congruence
 node bench/wasm.mjs
+# instructions per ruling (valgrind): the repeatable measure beside the times above
+if command -v valgrind >/dev/null; then
+  cargo build --release --example count --quiet
+  node bench/instructions.mjs
+else
+  echo "bench: valgrind not found; the instruction counts (bench/instructions.mjs) are skipped"
+fi
 node bench/page.mjs
 node bench/drag.mjs
