@@ -124,9 +124,9 @@ pub fn four_point(p: &[Pair], w: f64, closed: bool, check: Check) -> (Vec<Pair>,
     let rule = |a: Pair, b: Pair, c: Pair, d: Pair| (b + c) * (0.5 + w) - (a + d) * w;
     let (cw, ww) = (F64x2::splat(0.5 + w), F64x2::splat(w));
     let vrule = |a: R3, b: R3, c: R3, d: R3| b.add(c).mul(cw).sub(a.add(d).mul(ww));
-    let mut out = Vec::with_capacity(2 * n);
     let mut checks = Checks::new();
     let kept = check == Check::All;
+    let mut out: Vec<Pair> = Vec::with_capacity(2 * n);
     // the ends: edges 0 and n − 2 (and n − 1 closed) with their ghost or wrapped neighbours
     let (before, after) =
         if closed { (p[n - 1], p[0]) } else { (ghost(p), ghost(&[p[n - 1], p[n - 2], p[n - 3], p[n - 4]])) };
@@ -135,14 +135,16 @@ pub fn four_point(p: &[Pair], w: f64, closed: bool, check: Check) -> (Vec<Pair>,
     if check != Check::Nothing {
         checks.two(R3::load(&first), R3::load(if kept { &p[0] } else { &first }));
     }
-    // the interior edges i = 1 … n − 3, two at a time: p_{i−1} … p_{i+3} loaded afresh each
-    // time (from the cache; carried in registers they would be spilled, there are not enough)
-    let mut i = 1;
-    while i + 2 < n - 1 {
-        let q: &[Pair; 5] = p[i - 1..i + 4].try_into().expect("five rulings");
+    // the interior edges i = 1 … n − 3, two at a time from p_{i−1} … p_{i+3}, through an
+    // iterator of known length: the loop has no capacity check and no call (a call in the loop
+    // makes V8 keep the vectors on the stack), and no bounds check that could panic
+    let twos = (n - 3) / 2;
+    let at = |k: usize| p.get(k).copied().unwrap_or(p[0]);
+    out.extend((0..twos).flat_map(|j| {
+        let i = 1 + 2 * j;
+        let q: [Pair; 5] = core::array::from_fn(|k| at(i - 1 + k));
         let [a, b, c, d, e] = q.map(|r| R3::load(&r));
         let (q0, q1) = (vrule(a, b, c, d), vrule(b, c, d, e));
-        out.extend_from_slice(&[q[1], q0.pair(), q[2], q1.pair()]);
         match check {
             Check::Nothing => {}
             Check::New => checks.two(q0, q1),
@@ -151,8 +153,9 @@ pub fn four_point(p: &[Pair], w: f64, closed: bool, check: Check) -> (Vec<Pair>,
                 checks.two(b, c);
             }
         }
-        i += 2;
-    }
+        [q[1], q0.pair(), q[2], q1.pair()]
+    }));
+    let i = 1 + 2 * twos;
     if i + 2 < n {
         // one interior edge left
         let [a, b, c, d] = [p[i - 1], p[i], p[i + 1], p[i + 2]].map(|r| R3::load(&r));
