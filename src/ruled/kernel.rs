@@ -8,7 +8,8 @@
 //! [`PairInvariants::of`](super::PairInvariants::of) and ERRATA.md, with d = a_{k+1} − a_k and
 //! c = e_k × e_{k+1}:
 //!
-//! - φ = atan2(|c|, e_k·e_{k+1}) ∈ [0, π], by [`atan2_upper`] (no library call);
+//! - φ = atan2(|c|, e_k·e_{k+1}) ∈ [0, π], by [`atan2_fast`] (no library call; should a lane
+//!   ever fall outside its domain, the range is computed again with [`atan2_upper`]);
 //! - h = (d·c)/|c| and δ = h/φ (1); n = c/|c|;
 //! - f_{k,k+1} = a_k + t e_k, f_{k+1,k} = a_{k+1} + s e_{k+1} with t = ((d × e_{k+1})·c)/|c|²,
 //!   s = ((d × e_k)·c)/|c|² (3);
@@ -29,7 +30,7 @@
 //! block (the wasm bindings fill JavaScript's arrays that way without a copy of the whole
 //! result in wasm memory); the first step of a block recomputes the pair before it.
 
-use crate::base::angle::atan2_upper;
+use crate::base::angle::{atan2_fast, atan2_upper};
 use crate::base::lanes::{F64x2, Mask2, V3x2};
 use crate::tolerance::PARALLEL_SIN;
 
@@ -154,15 +155,23 @@ fn load_pair(seq: &Rulings<'_>, r: usize, r2: usize) -> (V3x2, V3x2) {
     rulings_x2(load12(&s))
 }
 
-/// Pairs k, k + 1 from the window before them and rulings k + 1, k + 2 (`a`, `e`).
+/// Pairs k, k + 1 from the window before them and rulings k + 1, k + 2 (`a`, `e`). `CAREFUL`:
+/// the angle with `f64::atan2`'s answer outside the fast path's domain; else the lanes outside it
+/// are marked in `missed` (and the caller computes again, carefully).
 #[inline(always)]
-fn step(prev: &Window, a: V3x2, e: V3x2) -> (Step, Window) {
+fn step<const CAREFUL: bool>(prev: &Window, a: V3x2, e: V3x2, missed: &mut Mask2) -> (Step, Window) {
     let a0 = V3x2::shift(prev.a, a);
     let e0 = V3x2::shift(prev.e, e);
     let d = a.sub(a0);
     let c = e0.cross(e);
     let sin = c.dot(c).sqrt();
-    let angle = atan2_upper(sin, e0.dot(e));
+    let angle = if CAREFUL {
+        atan2_upper(sin, e0.dot(e))
+    } else {
+        let (angle, inside) = atan2_fast(sin, e0.dot(e));
+        *missed = missed.or(inside.not());
+        angle
+    };
     let parallel = sin.lt(F64x2::splat(PARALLEL_SIN));
     let sin2 = sin * sin;
     let t = d.cross(e).dot(c) / sin2;
@@ -273,6 +282,16 @@ pub fn pairs(seq: &Rulings<'_>, start: usize, end: usize, out: &mut Out<'_>) {
     if start == end {
         return;
     }
+    // an angle outside the fast path's domain (never for unit directions): all again, carefully
+    if !run::<false>(seq, start, end, out) {
+        run::<true>(seq, start, end, out);
+    }
+}
+
+/// [`pairs`] with the angle's fast path alone (`CAREFUL` false; returns whether every lane was
+/// inside its domain) or with `f64::atan2` outside it.
+fn run<const CAREFUL: bool>(seq: &Rulings<'_>, start: usize, end: usize, out: &mut Out<'_>) -> bool {
+    let mut missed = F64x2::splat(0.0).lt(F64x2::splat(0.0));
     let first = start.max(1);
     let n = seq.len();
     let mut k = start;
@@ -284,7 +303,7 @@ pub fn pairs(seq: &Rulings<'_>, start: usize, end: usize, out: &mut Out<'_>) {
         let nan = F64x2::splat(f64::NAN);
         let before = Window { a: a0, e: e0, f1: V3x2::splat(nan), delta: nan };
         let (a, e) = load_pair(seq, 1, 2);
-        let (s, w) = step(&before, a, e);
+        let (s, w) = step::<CAREFUL>(&before, a, e, &mut missed);
         store_lane(out, 0, Some(0), None, &s);
         if end >= 2 {
             store_lane(out, 1, Some(1), Some(0), &s);
@@ -294,7 +313,7 @@ pub fn pairs(seq: &Rulings<'_>, start: usize, end: usize, out: &mut Out<'_>) {
     } else {
         // pair k − 1 in lane 1 (lane 0 is a repeat nobody reads)
         let (a, e) = load_pair(seq, k - 1, k);
-        step(&Window { a, e, f1: a, delta: a.x }, a, e).1
+        step::<CAREFUL>(&Window { a, e, f1: a, delta: a.x }, a, e, &mut missed).1
     };
     // whole steps straight from the coordinates: rulings k + 1, k + 2 are R_{k+1}, R_{k+2}; the
     // output in chunks of exactly one step, so that no store needs a bounds check
@@ -320,7 +339,7 @@ pub fn pairs(seq: &Rulings<'_>, start: usize, end: usize, out: &mut Out<'_>) {
         ) in input.zip(outputs)
         {
             let (a, e) = rulings_x2(load12(s.try_into().expect("twelve numbers")));
-            let (s, w) = step(&win, a, e);
+            let (s, w) = step::<CAREFUL>(&win, a, e, &mut missed);
             store(Dst { angle, distance, distribution, footpoints, normal, midpoints, parallel, striction, mean }, &s);
             win = w;
         }
@@ -329,7 +348,7 @@ pub fn pairs(seq: &Rulings<'_>, start: usize, end: usize, out: &mut Out<'_>) {
     // the last one or two pairs (the wrap of a closed surface among them)
     while k < end {
         let (a, e) = load_pair(seq, k + 1, k + 2);
-        let (s, w) = step(&win, a, e);
+        let (s, w) = step::<CAREFUL>(&win, a, e, &mut missed);
         store_lane(out, 0, Some(k - start), Some(k - first), &s);
         if k + 1 < end {
             store_lane(out, 1, Some(k + 1 - start), Some(k + 1 - first), &s);
@@ -337,6 +356,7 @@ pub fn pairs(seq: &Rulings<'_>, start: usize, end: usize, out: &mut Out<'_>) {
         win = w;
         k += 2;
     }
+    !missed.any()
 }
 
 /// Closed surfaces: R_0's striction point (f_{0,N−1} + f_{0,1})/2 and its mean distribution

@@ -331,7 +331,9 @@ impl RuledSurface {
             Ok(v)
         };
         let f64s = |key: &str, len: usize| -> Result<Float64Array, JsValue> {
-            target(key, len)?.dyn_into::<Float64Array>().map_err(|_| fail(F, format!("out.{key} must be a Float64Array")))
+            target(key, len)?
+                .dyn_into::<Float64Array>()
+                .map_err(|_| fail(F, format!("out.{key} must be a Float64Array")))
         };
         let out = Invariants {
             angle: f64s("angle", pairs)?,
