@@ -364,3 +364,47 @@ fn run<const CAREFUL: bool>(seq: &Rulings<'_>, start: usize, end: usize, out: &m
 pub fn closing(first_foot: [f64; 3], last_foot: [f64; 3], first_delta: f64, last_delta: f64) -> ([f64; 3], f64) {
     (core::array::from_fn(|q| 0.5 * (last_foot[q] + first_foot[q])), 0.5 * (last_delta + first_delta))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The careful run (never needed for unit directions, so no surface reaches it) computes the
+    /// same numbers as the fast one wherever the fast one is inside its domain.
+    #[test]
+    fn the_careful_run_agrees_with_the_fast_one() {
+        let flat: Vec<f64> = (0..6 * 11).map(|i| ((i * 7919) % 113) as f64 / 17.0 - 3.0).collect();
+        for closed in [false, true] {
+            let seq = Rulings::new(&flat, closed);
+            let (p, m) = (seq.pairs(), seq.pairs() - 1);
+            let mut runs = [(); 2].map(|_| (vec![0.0; 19 * p], vec![false; p]));
+            let mut inside = [false; 2];
+            for (r, (v, par)) in runs.iter_mut().enumerate() {
+                let (angle, rest) = v.split_at_mut(p);
+                let (distance, rest) = rest.split_at_mut(p);
+                let (distribution, rest) = rest.split_at_mut(p);
+                let (footpoints, rest) = rest.split_at_mut(6 * p);
+                let (normal, rest) = rest.split_at_mut(3 * p);
+                let (midpoints, rest) = rest.split_at_mut(3 * p);
+                let (striction, rest) = rest.split_at_mut(3 * m);
+                let mean = &mut rest[..m];
+                let mut out = Out {
+                    angle,
+                    distance,
+                    distribution,
+                    footpoints,
+                    normal,
+                    parallel: par,
+                    striction,
+                    mean,
+                    midpoints,
+                };
+                inside[r] = if r == 0 { run::<false>(&seq, 0, p, &mut out) } else { run::<true>(&seq, 0, p, &mut out) };
+            }
+            assert!(inside[0] && inside[1]);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&runs[0].0), bits(&runs[1].0));
+            assert_eq!(runs[0].1, runs[1].1);
+        }
+    }
+}
