@@ -1,8 +1,9 @@
 //! One operation of the benchmarks, repeated, for counting instructions with valgrind (the
 //! robust measure on a shared machine; `scripts/count.sh` runs it and prints instructions per
 //! ruling): `cargo run --release --example count -- <operation> <rulings> <repeats>`.
-//! Operations: invariants (the f64x2 kernel, into reused arrays), invariants-scalar (the
-//! scalar path, `Invariants::compute_from`), four-point, chaikin, bspline3 (one strip step).
+//! Operations: invariants (the f64x2 kernel, into reused arrays), invariants-fresh (into new
+//! arrays), invariants-scalar (the scalar path, `Invariants::compute_from`), four-point, chaikin,
+//! bspline3 (one strip step). bench/wasm.mjs runs it beside each wasm measurement.
 //! It prints the median time of one repeat (ms), for a quick look; criterion (`cargo bench`) is
 //! the measurement.
 use ruledlab::{subdivide_strip, AnalyticSurface, Invariants, Ranges, Scheme, SmoothRuled};
@@ -22,6 +23,7 @@ fn main() {
         let t0 = std::time::Instant::now();
         match op {
             "invariants" => s.invariants_into(&mut out, false),
+            "invariants-fresh" => drop(black_box(s.invariants())),
             "invariants-scalar" => out.compute_from(s.lines()),
             "four-point" => drop(black_box(subdivide_strip(&s, Scheme::FourPoint { w: 1.0 / 16.0 }, false, 1))),
             "chaikin" => drop(black_box(subdivide_strip(&s, Scheme::Chaikin, false, 1))),
@@ -33,6 +35,6 @@ fn main() {
     }
     times.sort_by(f64::total_cmp);
     if let Some(median) = times.get(times.len() / 2) {
-        eprintln!("{op}, {n} rulings: {median:.2} ms (median of {reps})");
+        eprintln!("{op}, {n} rulings: {median:.4} ms (median of {reps})");
     }
 }

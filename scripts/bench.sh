@@ -11,10 +11,11 @@ bash scripts/build.sh
 # heap so native and wasm compare like with like
 GLIBC_TUNABLES=glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967295 \
   cargo bench --bench invariants --bench subdivision --bench congruence
+# the native side of bench/wasm.mjs's table, measured beside each wasm operation
+cargo build --release --example count --quiet
 node bench/wasm.mjs
 # instructions per ruling (valgrind): the repeatable measure beside the times above
 if command -v valgrind >/dev/null; then
-  cargo build --release --example count --quiet
   node bench/instructions.mjs
 else
   echo "bench: valgrind not found; the instruction counts (bench/instructions.mjs) are skipped"

@@ -436,7 +436,8 @@ fn invariants_by_blocks_are_those_of_the_whole_surface() {
                 got.striction.fill(nan);
                 got.distribution_mean.fill(f64::NAN);
                 got.perpendicular_midpoints.fill(nan);
-                Invariants::by_blocks(s.points(), closed, block, |b| {
+                let mut scratch = Invariants::default();
+                Invariants::by_blocks(s.points(), closed, block, &mut scratch, |b| {
                     let (p, m, k) = (b.pairs_from, b.interior_from, b.inv.angle.len());
                     got.angle[p..p + k].copy_from_slice(&b.inv.angle);
                     got.footpoints[2 * p..2 * (p + k)].copy_from_slice(&b.inv.footpoints);

@@ -232,15 +232,21 @@ impl Invariants {
     }
 
     /// As [`Invariants::compute_from_points`], a block of at most `block` pairs at a time
-    /// (`block` ≥ 2): `f` gets each block's invariants in arrays of the block's size, which a
-    /// caller copies where they belong (the wasm bindings straight into JavaScript's arrays, so
-    /// that the whole result never sits in wasm memory). A block computed alone gives the same
-    /// numbers as the whole surface at once.
-    pub fn by_blocks(points: &[DVec3], closed: bool, block: usize, mut f: impl FnMut(&InvariantsBlock<'_>)) {
+    /// (`block` ≥ 2), computed into `scratch` (whose arrays are reused, as by
+    /// [`Invariants::compute_from`]): `f` gets each block's invariants in arrays of the block's
+    /// size, which a caller copies where they belong (the wasm bindings straight into
+    /// JavaScript's arrays, so that the whole result never sits in wasm memory). A block computed
+    /// alone gives the same numbers as the whole surface at once.
+    pub fn by_blocks(
+        points: &[DVec3],
+        closed: bool,
+        block: usize,
+        scratch: &mut Invariants,
+        mut f: impl FnMut(&InvariantsBlock<'_>),
+    ) {
         let seq = Rulings::new(bytemuck::cast_slice(points), closed);
         let pairs = seq.pairs();
         let block = block.max(2);
-        let mut scratch = Invariants::default();
         let (mut first, mut last) = ((DVec3::ZERO, 0.0), (DVec3::ZERO, 0.0));
         let mut start = 0;
         while start < pairs {
@@ -252,7 +258,7 @@ impl Invariants {
             if end == pairs {
                 last = (scratch.footpoints[2 * (end - start) - 1], scratch.distribution[end - start - 1]);
             }
-            f(&InvariantsBlock { pairs_from: start, interior_from: start.max(1) - 1 + closed as usize, inv: &scratch });
+            f(&InvariantsBlock { pairs_from: start, interior_from: start.max(1) - 1 + closed as usize, inv: scratch });
             start = end;
         }
         if closed {
@@ -260,7 +266,7 @@ impl Invariants {
             scratch.compute_range(&seq, pairs, pairs, 0);
             scratch.striction.push(m.into());
             scratch.distribution_mean.push(mean);
-            f(&InvariantsBlock { pairs_from: pairs, interior_from: 0, inv: &scratch });
+            f(&InvariantsBlock { pairs_from: pairs, interior_from: 0, inv: scratch });
         }
     }
 
@@ -302,13 +308,13 @@ impl Invariants {
     }
 }
 
-/// `v` with `n` elements: as it is when it has them (the numbers are overwritten), else
-/// resized in its own memory when it is large enough, else fresh zeroed memory (which the
-/// system hands out without writing it).
+/// `v` with `n` elements, whose numbers the caller overwrites: shortened, or lengthened in its
+/// own memory when it is large enough (only the new elements are written), else fresh zeroed
+/// memory (which the system hands out without writing it).
 fn sized<T: Zeroable + Clone>(v: &mut Vec<T>, n: usize) {
-    if v.len() == n {
+    if v.len() >= n {
+        v.truncate(n);
     } else if v.capacity() >= n {
-        v.clear();
         v.resize(n, T::zeroed());
     } else {
         *v = bytemuck::zeroed_vec(n);
@@ -369,6 +375,31 @@ mod tests {
         }
         inv.compute_from_closed(&lines(12, 0.4));
         assert_eq!(inv, Invariants::from_lines_closed(&lines(12, 0.4)));
+    }
+
+    /// The kernel's path keeps its arrays where they are too, once they are large enough (the
+    /// zero-copy `InvariantsBuffer` relies on it), and a smaller surface in between does not move
+    /// them.
+    #[test]
+    fn computing_from_points_reuses_the_arrays() {
+        let points = |n: usize, twist: f64| -> Vec<DVec3> {
+            (0..n)
+                .flat_map(|i| {
+                    let (s, c) = (twist * i as f64).sin_cos();
+                    [DVec3::new(i as f64 * 0.1, 0.0, 0.0), DVec3::new(i as f64 * 0.1, c, s)]
+                })
+                .collect()
+        };
+        let mut inv = Invariants::default();
+        inv.compute_from_points(&points(50, 0.2), true);
+        let (angle, feet, striction) = (inv.angle.as_ptr(), inv.footpoints.as_ptr(), inv.striction.as_ptr());
+        for (n, twist, closed) in [(50, 0.3, false), (20, 0.1, true), (50, 0.25, true), (49, 0.2, false)] {
+            inv.compute_from_points(&points(n, twist), closed);
+            let mut fresh = Invariants::default();
+            fresh.compute_from_points(&points(n, twist), closed);
+            assert_eq!(format!("{inv:?}"), format!("{fresh:?}"));
+            assert_eq!((inv.angle.as_ptr(), inv.footpoints.as_ptr(), inv.striction.as_ptr()), (angle, feet, striction));
+        }
     }
 
     #[test]

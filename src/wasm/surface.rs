@@ -7,7 +7,7 @@ use crate::ruled::{self, convergence, Development, HingeChain};
 use crate::tolerance::{INVARIANTS_BLOCK, MAX_SAMPLES, MAX_STUDY_LEVELS};
 use js_sys::{Float32Array, Float64Array, Uint8Array};
 use serde::{Deserialize, Serialize};
-use std::cell::OnceCell;
+use std::cell::{OnceCell, RefCell};
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -206,24 +206,29 @@ impl RuledSurface {
             }
         }
         let (pairs, interior) = self.sizes(closed);
-        ruled::Invariants::by_blocks(self.inner.points(), closed, INVARIANTS_BLOCK, |b| {
-            let (p, m, inv) = (b.pairs_from, b.interior_from, b.inv);
-            let flat = ruled::Invariants::flat;
-            put(&out.angle, p, pairs, &inv.angle);
-            put(&out.distance, p, pairs, &inv.distance);
-            put(&out.distribution, p, pairs, &inv.distribution);
-            put(&out.footpoints, 6 * p, 6 * pairs, flat(&inv.footpoints));
-            put(&out.central_normal, 3 * p, 3 * pairs, flat(&inv.central_normal));
-            put(&out.perpendicular_midpoints, 3 * p, 3 * pairs, flat(&inv.perpendicular_midpoints));
-            put(&out.striction, 3 * m, 3 * interior, flat(&inv.striction));
-            put(&out.distribution_mean, m, interior, &inv.distribution_mean);
-            // bool is one byte holding 0 or 1
-            let parallel: &[u8] = bytemuck::cast_slice(&inv.parallel);
-            if parallel.len() == pairs {
-                out.parallel.copy_from(parallel);
-            } else if !parallel.is_empty() {
-                out.parallel.subarray(p as u32, (p + parallel.len()) as u32).copy_from(parallel);
-            }
+        // the blocks' arrays (at most INVARIANTS_BLOCK pairs, about 600 KiB) are kept from call
+        // to call: allocating them zeroed would cost a small call as much as its work
+        thread_local!(static SCRATCH: RefCell<ruled::Invariants> = RefCell::default());
+        SCRATCH.with_borrow_mut(|scratch| {
+            ruled::Invariants::by_blocks(self.inner.points(), closed, INVARIANTS_BLOCK, scratch, |b| {
+                let (p, m, inv) = (b.pairs_from, b.interior_from, b.inv);
+                let flat = ruled::Invariants::flat;
+                put(&out.angle, p, pairs, &inv.angle);
+                put(&out.distance, p, pairs, &inv.distance);
+                put(&out.distribution, p, pairs, &inv.distribution);
+                put(&out.footpoints, 6 * p, 6 * pairs, flat(&inv.footpoints));
+                put(&out.central_normal, 3 * p, 3 * pairs, flat(&inv.central_normal));
+                put(&out.perpendicular_midpoints, 3 * p, 3 * pairs, flat(&inv.perpendicular_midpoints));
+                put(&out.striction, 3 * m, 3 * interior, flat(&inv.striction));
+                put(&out.distribution_mean, m, interior, &inv.distribution_mean);
+                // bool is one byte holding 0 or 1
+                let parallel: &[u8] = bytemuck::cast_slice(&inv.parallel);
+                if parallel.len() == pairs {
+                    out.parallel.copy_from(parallel);
+                } else if !parallel.is_empty() {
+                    out.parallel.subarray(p as u32, (p + parallel.len()) as u32).copy_from(parallel);
+                }
+            })
         });
     }
 
