@@ -207,9 +207,17 @@ impl RuledSurface {
         }
         let (pairs, interior) = self.sizes(closed);
         // the blocks' arrays (at most INVARIANTS_BLOCK pairs, about 600 KiB) are kept from call
-        // to call: allocating them zeroed would cost a small call as much as its work
+        // to call: allocating them zeroed would cost a small call as much as its work. Should a
+        // call come in while they are in use (an array of `out` whose own `set` calls ruledlab
+        // again), it gets fresh ones instead of a panic.
         thread_local!(static SCRATCH: RefCell<ruled::Invariants> = RefCell::default());
-        SCRATCH.with_borrow_mut(|scratch| {
+        SCRATCH.with(|cell| {
+            let mut fresh = ruled::Invariants::default();
+            let mut kept = cell.try_borrow_mut();
+            let scratch = match kept.as_deref_mut() {
+                Ok(kept) => kept,
+                Err(_) => &mut fresh,
+            };
             ruled::Invariants::by_blocks(self.inner.points(), closed, INVARIANTS_BLOCK, scratch, |b| {
                 let (p, m, inv) = (b.pairs_from, b.interior_from, b.inv);
                 let flat = ruled::Invariants::flat;
