@@ -9,7 +9,8 @@
 //
 // `node bench/wasm.mjs` prints the tables, writes bench/results/wasm.json, and rewrites the
 // README's table between <!-- bench:begin --> and <!-- bench:end -->.
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, totalmem } from 'node:os';
 import { performance } from 'node:perf_hooks';
 import * as ruledlab from '../pkg/ruledlab.js';
@@ -96,6 +97,26 @@ const nativeMs = (/** @type {string} */ group, /** @type {number} */ id) => {
   }
 };
 
+// The same operation natively, measured in the same minute as the wasm one (this machine's speed
+// swings between minutes): examples/count.rs (release), the median of `repeats` calls, with
+// glibc keeping freed memory for reuse as wasm does (scripts/bench.sh). Without that build,
+// criterion's median from `cargo bench`.
+const countBinary = new URL('../target/release/examples/count', import.meta.url).pathname;
+const beside = (
+  /** @type {string} */ op,
+  /** @type {number} */ n,
+  /** @type {number} */ repeats,
+  /** @type {string} */ group,
+) => {
+  if (!existsSync(countBinary)) return nativeMs(group, n);
+  const r = spawnSync(countBinary, [op, `${n}`, `${repeats}`], {
+    encoding: 'utf8',
+    env: { ...process.env, GLIBC_TUNABLES: 'glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967295' },
+  });
+  const m = /: ([\d.]+) ms/.exec(r.stderr);
+  return m ? Number(m[1]) : NaN;
+};
+
 // ---- operations at 10⁶ rulings, each beside its limit
 const rows = [];
 /** @param {string} op @param {number} ms @param {number} outBytes @param {'mapped' | 'fresh'} kind @param {number | null} js @param {number} native */
@@ -113,6 +134,7 @@ const row = (op, ms, outBytes, kind, js = null, native = NaN) => {
     outMB: outBytes / 1e6,
     nativeMs: native,
     nativeOfLimit: native / l[kind],
+    nativeOfWasm: native / ms,
   });
 };
 
@@ -120,8 +142,7 @@ const outInv = invariantBytes(N);
 const reuse = surface.invariants();
 const buffer = new InvariantsBuffer();
 const jsOut = plain.invariantsArrays(N);
-const jsInto = median(() => plain.invariantsInto(flat, jsOut), 5);
-// (no native number here: natively the result's memory is reused, see scripts/bench.sh)
+// (no native number for fresh arrays: natively the result's memory is reused, see scripts/bench.sh)
 row(
   'invariants() — fresh arrays',
   median(() => surface.invariants(), 5),
@@ -134,8 +155,8 @@ row(
   median(() => surface.invariantsInto(reuse), 5),
   outInv,
   'mapped',
-  jsInto,
-  nativeMs('invariants_into', N),
+  median(() => plain.invariantsInto(flat, jsOut), 5),
+  beside('invariants', N, 11, 'invariants_into'),
 );
 row(
   'invariantsInPlace(buffer) — zero-copy views',
@@ -145,15 +166,21 @@ row(
   }, 5),
   outInv,
   'mapped',
-  jsInto,
-  nativeMs('invariants_into', N),
+  median(() => plain.invariantsInto(flat, jsOut), 5),
+  beside('invariants', N, 11, 'invariants_into'),
 );
 
 const jsFourOut = new Float64Array(6 * (2 * N - 1));
-for (const [name, options, js, group] of /** @type {const} */ ([
-  ['four-point step', { scheme: 'four-point' }, () => plain.fourPoint(flat, jsFourOut), 'subdivide_four-point'],
-  ['Chaikin step', { scheme: 'chaikin' }, null, 'subdivide_chaikin'],
-  ['cubic B-spline step', { scheme: 'bspline', degree: 3 }, null, 'subdivide_bspline3'],
+for (const [name, options, js, op, group] of /** @type {const} */ ([
+  [
+    'four-point step',
+    { scheme: 'four-point' },
+    () => plain.fourPoint(flat, jsFourOut),
+    'four-point',
+    'subdivide_four-point',
+  ],
+  ['Chaikin step', { scheme: 'chaikin' }, null, 'chaikin', 'subdivide_chaikin'],
+  ['cubic B-spline step', { scheme: 'bspline', degree: 3 }, null, 'bspline3', 'subdivide_bspline3'],
 ])) {
   const probe = surface.subdivide(options);
   const outBytes = 48 * probe.length;
@@ -164,7 +191,7 @@ for (const [name, options, js, group] of /** @type {const} */ ([
     outBytes,
     'mapped',
     js ? median(js, 5) : null,
-    nativeMs(group, N),
+    beside(op, N, 11, group),
   );
 }
 
@@ -176,14 +203,17 @@ for (const n of [1e3, 1e4]) {
   const r = s.invariants();
   const b = new InvariantsBuffer();
   const j = plain.invariantsArrays(n);
+  const four = new Float64Array(6 * (2 * n - 1));
   small.push({
     rulings: n,
     'invariants()': median(() => s.invariants(), 201),
     invariantsInto: median(() => s.invariantsInto(r), 201),
     invariantsInPlace: median(() => s.invariantsInPlace(b), 201),
-    'native (fresh)': nativeMs('invariants', n),
-    'native (into)': nativeMs('invariants_into', n),
+    'native (fresh)': beside('invariants-fresh', n, n < 1e4 ? 2001 : 201, 'invariants'),
+    'native (into)': beside('invariants', n, n < 1e4 ? 2001 : 201, 'invariants_into'),
     'plain JS (into)': median(() => plain.invariantsInto(f, j), 201),
+    'four-point': median(() => s.subdivide({ scheme: 'four-point' }).free(), 201),
+    'four-point plain JS': median(() => plain.fourPoint(f, four), 201),
   });
   b.free();
   s.free();
@@ -233,6 +263,7 @@ console.table(
     '× limit': f(r.ofLimit, 2),
     'plain JS ms': f(r.jsMs),
     'JS / wasm': f(r.versusJs, 2),
+    'native / wasm': f(r.nativeOfWasm, 2),
   })),
 );
 console.log('small calls, ms, median');
@@ -262,22 +293,23 @@ const table = [
   '',
   `Measured ${date} on ${machine}; one process, median of 5–7 runs. "Limit" is the time to write the`,
   "operation's output into already-mapped memory plus read its input once (into fresh memory for",
-  '`invariants()`, which must allocate its result arrays). "Native" is criterion\'s median of the same',
-  'operation in native code on the same machine (`cargo bench`, run just before, freed memory kept',
-  'for reuse as wasm keeps it).',
+  '`invariants()`, which must allocate its result arrays). "Native" is the same operation in native',
+  'code on the same machine, measured right after the wasm one (`examples/count.rs`, release build,',
+  'median of 11 calls at 10⁶ rulings, freed memory kept for reuse as wasm keeps it; for the',
+  "congruences criterion's median from `cargo bench`, run just before).",
   '',
-  '| 10⁶ rulings | wasm ms | output MB | limit ms | × limit | native ms | native × limit | careful plain JS ms | JS / wasm |',
-  '|---|---:|---:|---:|---:|---:|---:|---:|---:|',
+  '| 10⁶ rulings | wasm ms | output MB | limit ms | × limit | native ms | native × limit | native / wasm | careful plain JS ms | JS / wasm |',
+  '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
   ...rows.map(
     (r) =>
-      `| ${r.op} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} (${r.kind}) | ${f(r.ofLimit, 2)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 2)} | ${f(r.jsMs)} | ${f(r.versusJs, 2)} |`,
+      `| ${r.op} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} (${r.kind}) | ${f(r.ofLimit, 2)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 2)} | ${f(r.nativeOfWasm, 2)} | ${f(r.jsMs)} | ${f(r.versusJs, 2)} |`,
   ),
   '',
-  '| small calls, ms | `invariants()` | `invariantsInto` | `invariantsInPlace` | native (fresh) | native (into) | plain JS (into) |',
-  '|---|---:|---:|---:|---:|---:|---:|',
+  '| small calls, ms | `invariants()` | `invariantsInto` | `invariantsInPlace` | native (fresh) | native (into) | plain JS (into) | JS / `invariantsInPlace` | JS / `invariantsInto` | four-point step | plain JS | JS / wasm |',
+  '|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|',
   ...small.map(
     (r) =>
-      `| ${r.rulings} rulings | ${f(r['invariants()'], 3)} | ${f(r.invariantsInto, 3)} | ${f(r.invariantsInPlace, 3)} | ${f(r['native (fresh)'], 3)} | ${f(r['native (into)'], 3)} | ${f(r['plain JS (into)'], 3)} |`,
+      `| ${r.rulings} rulings | ${f(r['invariants()'], 3)} | ${f(r.invariantsInto, 3)} | ${f(r.invariantsInPlace, 3)} | ${f(r['native (fresh)'], 3)} | ${f(r['native (into)'], 3)} | ${f(r['plain JS (into)'], 3)} | ${f(r['plain JS (into)'] / r.invariantsInPlace, 2)} | ${f(r['plain JS (into)'] / r.invariantsInto, 2)} | ${f(r['four-point'], 3)} | ${f(r['four-point plain JS'], 3)} | ${f(r['four-point plain JS'] / r['four-point'], 2)} |`,
   ),
   '',
   '| congruences | wasm ms | output MB | limit ms (mapped) | × limit | native ms | native × limit |',

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Benchmarks: criterion natively, then the same kernels through the wasm package in Node, frame
-# times in the page, and Lighthouse on the production page and the one-file build (installed on
-# demand into target/lighthouse/).
+# Benchmarks: criterion natively, then the same kernels through the wasm package in Node, their
+# instructions per ruling (valgrind), frame times in the page, and Lighthouse on the production page
+# and the one-file build (installed on demand into target/lighthouse/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -12,7 +12,15 @@ bash scripts/build.sh
 # heap so native and wasm compare like with like
 GLIBC_TUNABLES=glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967295 \
   cargo bench --bench invariants --bench subdivision --bench congruence
+# the native side of bench/wasm.mjs's table, measured beside each wasm operation
+cargo build --release --example count --quiet
 node bench/wasm.mjs
+# instructions per ruling (valgrind): the repeatable measure beside the times above
+if command -v valgrind >/dev/null; then
+  node bench/instructions.mjs
+else
+  echo "bench: valgrind not found; the instruction counts (bench/instructions.mjs) are skipped"
+fi
 node bench/page.mjs
 node bench/drag.mjs
 node bench/lighthouse.mjs

@@ -54,7 +54,7 @@ pub use error::{
 };
 
 // shared vocabulary: lines, jets, parameter ranges
-pub use base::{check_coordinates, parameters as sample_parameters, CongruenceJet, Jet, Ranges};
+pub use base::{atan2_x2, check_coordinates, parameters as sample_parameters, CongruenceJet, Jet, Ranges};
 pub use line::{Line, Segment};
 pub use line_fit::{fit_line, LineFit};
 pub use mesh::{grid_indices, strip_indices, Mesh};
@@ -68,7 +68,7 @@ pub use ruled::convergence::{
     fit_order, study as convergence_study, Series as ConvergenceSeries, Study as ConvergenceStudy,
 };
 pub use ruled::surface::points_from_flat;
-pub use ruled::{Invariants, PairInvariants, RuledSurface, SmoothRuled};
+pub use ruled::{Invariants, InvariantsBlock, PairInvariants, RuledSurface, SmoothRuled};
 
 // Section 3: isometries and the development
 pub use ruled::development::Frame;

@@ -77,6 +77,11 @@ pub const DISTANCE_SCAN: usize = 64;
 /// (each shrinks the bracket by 0.618: 80 reach the rounding of u).
 pub const DISTANCE_REFINE_STEPS: usize = 80;
 
+/// Pairs of rulings whose invariants the wasm bindings compute at a time before copying them into
+/// JavaScript's arrays (`invariants()`, `invariantsInto`): about 600 KiB of results, which stay
+/// in the processor's cache between the kernel and the copy.
+pub const INVARIANTS_BLOCK: usize = 4096;
+
 /// Largest stride of the buffers of inserted rulings (2^k after k steps).
 pub const MAX_STRIDE: usize = 1 << 24;
 
@@ -216,6 +221,15 @@ pub mod test {
     pub const EXACT: f64 = 1e-12;
     /// Slack allowed around a measured convergence order (1 or 2).
     pub const ORDER: f64 = 0.1;
+    /// The invariants kernel's φ against `f64::atan2`, in units in the last place, over the whole
+    /// upper half-plane (`tests/kernels.rs`). Measured: 1 against glibc's `atan2` (natively,
+    /// within about ½ ulp of the exact angle), 2 against fdlibm's (Rust's in wasm), where both
+    /// are off the exact angle by up to 1.4 ulp, in opposite directions.
+    pub const KERNEL_ANGLE_ULPS: u64 = 2;
+    /// The kernel's δ = h/φ against the scalar path's (h is the same bits, φ within
+    /// [`KERNEL_ANGLE_ULPS`], and the division rounds once more); (δ_{i−1,i} + δ_{i,i+1})/2
+    /// within as many ulp of the larger term.
+    pub const KERNEL_DELTA_ULPS: u64 = 3;
 }
 
 /// Asserts `|a − b| ≤ tol · max(1, |a|, |b|)` for numbers or `DVec3`s, with a useful message.

@@ -24,7 +24,9 @@
 //! rulings (h = 0) are not degenerate.
 
 use crate::line::Line;
+use crate::ruled::kernel::{self, Rulings};
 use crate::tolerance::PARALLEL_SIN;
+use bytemuck::Zeroable;
 use glam::DVec3;
 
 /// The invariants of one pair of consecutive rulings.
@@ -107,6 +109,20 @@ pub struct Invariants {
 }
 
 const NAN3: DVec3 = DVec3::splat(f64::NAN);
+
+/// One block of [`Invariants::by_blocks`].
+#[derive(Debug)]
+pub struct InvariantsBlock<'a> {
+    /// Where the block's pairs begin in the whole surface's pair arrays (`angle`, `distance`,
+    /// `distribution`, `central_normal`, `parallel`, `perpendicular_midpoints`; twice this in
+    /// `footpoints`).
+    pub pairs_from: usize,
+    /// Where the block's striction quantities begin in the whole surface's `striction` and
+    /// `distribution_mean`.
+    pub interior_from: usize,
+    /// The block's invariants (arrays of the block's size).
+    pub inv: &'a Invariants,
+}
 
 impl Invariants {
     /// Computes every invariant in one pass over the lines (O(N), one allocation per array).
@@ -191,9 +207,117 @@ impl Invariants {
         inv.distribution_mean.insert(0, 0.5 * (inv.distribution[n - 1] + inv.distribution[0]));
     }
 
+    /// The invariants of the rulings a_i → b_i given by their endpoints a_0, b_0, a_1, b_1, …
+    /// (N ≥ 2 segments of nonzero length, as a [`RuledSurface`](super::RuledSurface) holds them),
+    /// open or closed, by the f64x2 kernel (`ruled/kernel.rs`), into these arrays: their memory
+    /// is reused when they have the size already (as [`Invariants::compute_from`]). The numbers
+    /// are those of [`Invariants::from_lines`] of the segments' lines bit for bit, except φ
+    /// (within 1 ulp of `f64::atan2`) and δ, (δ_{i−1,i} + δ_{i,i+1})/2, which divide by it.
+    pub fn compute_from_points(&mut self, points: &[DVec3], closed: bool) {
+        let seq = Rulings::new(bytemuck::cast_slice(points), closed);
+        let pairs = seq.pairs();
+        // closed: R_0's striction quantities come first, from the last pair
+        self.compute_range(&seq, 0, pairs, closed as usize);
+        if closed {
+            let inv = self;
+            let (m, mean) = kernel::closing(
+                inv.footpoints[0].into(),
+                inv.footpoints[2 * pairs - 1].into(),
+                inv.distribution[0],
+                inv.distribution[pairs - 1],
+            );
+            inv.striction[0] = m.into();
+            inv.distribution_mean[0] = mean;
+        }
+    }
+
+    /// As [`Invariants::compute_from_points`], a block of at most `block` pairs at a time
+    /// (`block` ≥ 2), computed into `scratch` (whose arrays are reused, as by
+    /// [`Invariants::compute_from`]): `f` gets each block's invariants in arrays of the block's
+    /// size, which a caller copies where they belong (the wasm bindings straight into
+    /// JavaScript's arrays, so that the whole result never sits in wasm memory). A block computed
+    /// alone gives the same numbers as the whole surface at once.
+    pub fn by_blocks(
+        points: &[DVec3],
+        closed: bool,
+        block: usize,
+        scratch: &mut Invariants,
+        mut f: impl FnMut(&InvariantsBlock<'_>),
+    ) {
+        let seq = Rulings::new(bytemuck::cast_slice(points), closed);
+        let pairs = seq.pairs();
+        let block = block.max(2);
+        let (mut first, mut last) = ((DVec3::ZERO, 0.0), (DVec3::ZERO, 0.0));
+        let mut start = 0;
+        while start < pairs {
+            let end = (start + block).min(pairs);
+            scratch.compute_range(&seq, start, end, 0);
+            if start == 0 {
+                first = (scratch.footpoints[0], scratch.distribution[0]);
+            }
+            if end == pairs {
+                last = (scratch.footpoints[2 * (end - start) - 1], scratch.distribution[end - start - 1]);
+            }
+            f(&InvariantsBlock { pairs_from: start, interior_from: start.max(1) - 1 + closed as usize, inv: scratch });
+            start = end;
+        }
+        if closed {
+            let (m, mean) = kernel::closing(first.0.into(), last.0.into(), first.1, last.1);
+            scratch.compute_range(&seq, pairs, pairs, 0);
+            scratch.striction.push(m.into());
+            scratch.distribution_mean.push(mean);
+            f(&InvariantsBlock { pairs_from: pairs, interior_from: 0, inv: scratch });
+        }
+    }
+
+    /// The kernel on pairs start … end − 1 into these arrays, sized for them: the striction
+    /// quantities of rulings max(start, 1) … end − 1 after `skip` entries left for the caller.
+    fn compute_range(&mut self, seq: &Rulings<'_>, start: usize, end: usize, skip: usize) {
+        let (pairs, interior) = (end - start, end.saturating_sub(start.max(1)) + skip);
+        let inv = self;
+        sized(&mut inv.angle, pairs);
+        sized(&mut inv.distance, pairs);
+        sized(&mut inv.distribution, pairs);
+        sized(&mut inv.footpoints, 2 * pairs);
+        sized(&mut inv.central_normal, pairs);
+        sized(&mut inv.parallel, pairs);
+        sized(&mut inv.striction, interior);
+        sized(&mut inv.distribution_mean, interior);
+        sized(&mut inv.perpendicular_midpoints, pairs);
+        kernel::pairs(
+            seq,
+            start,
+            end,
+            &mut kernel::Out {
+                angle: &mut inv.angle,
+                distance: &mut inv.distance,
+                distribution: &mut inv.distribution,
+                footpoints: bytemuck::cast_slice_mut(&mut inv.footpoints),
+                normal: bytemuck::cast_slice_mut(&mut inv.central_normal),
+                parallel: &mut inv.parallel,
+                striction: bytemuck::cast_slice_mut(&mut inv.striction[skip..]),
+                mean: &mut inv.distribution_mean[skip..],
+                midpoints: bytemuck::cast_slice_mut(&mut inv.perpendicular_midpoints),
+            },
+        );
+    }
+
     /// A `DVec3` slice as its flat `f64` coordinates, without copying.
     pub fn flat(points: &[DVec3]) -> &[f64] {
         bytemuck::cast_slice(points)
+    }
+}
+
+/// `v` with `n` elements, whose numbers the caller overwrites: shortened, or lengthened in its
+/// own memory when it is large enough (only the new elements are written), else fresh zeroed
+/// memory (which the system hands out without writing it).
+fn sized<T: Zeroable + Clone>(v: &mut Vec<T>, n: usize) {
+    if v.len() >= n {
+        v.truncate(n);
+    } else if v.capacity() >= n {
+        v.resize(n, T::zeroed());
+    } else {
+        *v = bytemuck::zeroed_vec(n);
     }
 }
 
@@ -251,6 +375,31 @@ mod tests {
         }
         inv.compute_from_closed(&lines(12, 0.4));
         assert_eq!(inv, Invariants::from_lines_closed(&lines(12, 0.4)));
+    }
+
+    /// The kernel's path keeps its arrays where they are too, once they are large enough (the
+    /// zero-copy `InvariantsBuffer` relies on it), and a smaller surface in between does not move
+    /// them.
+    #[test]
+    fn computing_from_points_reuses_the_arrays() {
+        let points = |n: usize, twist: f64| -> Vec<DVec3> {
+            (0..n)
+                .flat_map(|i| {
+                    let (s, c) = (twist * i as f64).sin_cos();
+                    [DVec3::new(i as f64 * 0.1, 0.0, 0.0), DVec3::new(i as f64 * 0.1, c, s)]
+                })
+                .collect()
+        };
+        let mut inv = Invariants::default();
+        inv.compute_from_points(&points(50, 0.2), true);
+        let (angle, feet, striction) = (inv.angle.as_ptr(), inv.footpoints.as_ptr(), inv.striction.as_ptr());
+        for (n, twist, closed) in [(50, 0.3, false), (20, 0.1, true), (50, 0.25, true), (49, 0.2, false)] {
+            inv.compute_from_points(&points(n, twist), closed);
+            let mut fresh = Invariants::default();
+            fresh.compute_from_points(&points(n, twist), closed);
+            assert_eq!(format!("{inv:?}"), format!("{fresh:?}"));
+            assert_eq!((inv.angle.as_ptr(), inv.footpoints.as_ptr(), inv.striction.as_ptr()), (angle, feet, striction));
+        }
     }
 
     #[test]

@@ -115,25 +115,27 @@ impl RuledSurface {
         self.flat().iter().map(|&x| x as f32).collect()
     }
 
-    /// All discrete invariants of Section 2.
+    /// All discrete invariants of Section 2, by the f64x2 kernel
+    /// ([`Invariants::compute_from_points`]: [`Invariants::of`] of the lines to the last bit, φ
+    /// and what divides by it to within a few ulp).
     pub fn invariants(&self) -> Invariants {
-        Invariants::from_lines(self.lines())
+        let mut inv = Invariants::default();
+        inv.compute_from_points(&self.points, false);
+        inv
     }
 
     /// The invariants of the surface read as closed: R_{N−1} is followed by R_0 again
-    /// ([`Invariants::from_lines_closed`]).
+    /// ([`Invariants::from_lines_closed`]; computed as [`RuledSurface::invariants`]).
     pub fn invariants_closed(&self) -> Invariants {
-        Invariants::from_lines_closed(&self.lines().collect::<Vec<_>>())
+        let mut inv = Invariants::default();
+        inv.compute_from_points(&self.points, true);
+        inv
     }
 
     /// The invariants (closed or open) written into `out`, reusing its memory: the zero-copy
     /// path of the wasm API keeps `out` in wasm memory and hands out views of its arrays.
     pub fn invariants_into(&self, out: &mut Invariants, closed: bool) {
-        if closed {
-            out.compute_from_closed(&self.lines().collect::<Vec<_>>());
-        } else {
-            out.compute_from(self.lines());
-        }
+        out.compute_from_points(&self.points, closed);
     }
 
     /// The unit directions e_i = (b_i − a_i)/|b_i − a_i|.

@@ -14,6 +14,7 @@ pub mod bezier;
 pub mod bspline;
 pub mod chaikin;
 pub mod four_point;
+pub(crate) mod kernel;
 pub mod line_space;
 pub mod strip;
 pub mod triangulation;

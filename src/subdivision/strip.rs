@@ -9,6 +9,7 @@
 
 use crate::error::{Error, Result};
 use crate::ruled::RuledSurface;
+use crate::subdivision::kernel::{self, Check};
 use crate::subdivision::{check_steps, polygon_step, variational, Pair, Scheme};
 use crate::tolerance::MAX_COORD;
 use glam::DVec3;
@@ -25,17 +26,40 @@ pub fn subdivide_strip(surface: &RuledSurface, scheme: Scheme, closed: bool, ste
         }
         return Ok(s);
     }
-    let bezier_degree = surface.len() - 1;
     if steps == 0 {
         return Ok(surface.clone());
     }
     // the strip as one polygon of endpoint pairs, read in place (the endpoints are laid out as
     // pairs) and handed to the new surface without a copy
-    let mut pairs = polygon_step(bytemuck::cast_slice::<DVec3, Pair>(surface.points()), scheme, closed, bezier_degree);
-    for _ in 1..steps {
-        pairs = polygon_step(&pairs, scheme, closed, bezier_degree);
+    let strip: &[Pair] = bytemuck::cast_slice(surface.points());
+    let bezier_degree = surface.len() - 1;
+    let mut pairs = Vec::new();
+    let mut passed = false;
+    for step in 0..steps {
+        let p = if step == 0 { strip } else { &pairs[..] };
+        // only the last step's rulings become a surface; its kept ones are the input's when it
+        // is the only step
+        let check = match (step + 1 == steps, steps) {
+            (false, _) => Check::Nothing,
+            (true, 1) => Check::New,
+            (true, _) => Check::All,
+        };
+        (pairs, passed) = match scheme {
+            Scheme::FourPoint { w } => kernel::four_point(p, w, closed, check),
+            Scheme::Chaikin => kernel::chaikin(p, closed, check),
+            Scheme::BSpline { degree } => kernel::bspline(p, degree, closed, check),
+            _ => (polygon_step(p, scheme, closed, bezier_degree), false),
+        };
     }
-    RuledSurface::from_points(bytemuck::allocation::cast_vec(pairs))
+    let points = bytemuck::allocation::cast_vec(pairs);
+    // the kernels check the new rulings as they compute them; the full validation runs when
+    // they did not, or found something, or too few rulings came out (it then says what, exactly
+    // as before)
+    if passed && points.len() >= 2 * RuledSurface::MIN_RULINGS {
+        Ok(RuledSurface::from_trusted_points(points))
+    } else {
+        RuledSurface::from_points(points)
+    }
 }
 
 /// The segments re-cut to length `length` (default: the mean segment length), centred on the

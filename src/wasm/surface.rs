@@ -5,10 +5,10 @@ use super::catalogue::AnalyticSurface;
 use super::live::Live;
 use super::timing::Measure;
 use crate::ruled::{self, convergence, Development, HingeChain};
-use crate::tolerance::{MAX_SAMPLES, MAX_STUDY_LEVELS};
+use crate::tolerance::{INVARIANTS_BLOCK, MAX_SAMPLES, MAX_STUDY_LEVELS};
 use js_sys::{Float32Array, Float64Array, Uint8Array};
 use serde::{Deserialize, Serialize};
-use std::cell::OnceCell;
+use std::cell::{OnceCell, RefCell};
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
@@ -185,9 +185,60 @@ struct ConvergenceOptions {
 }
 
 impl RuledSurface {
-    fn compute_invariants(&self, func: &str, options: JsValue) -> Result<ruled::Invariants, JsValue> {
-        let o: InvariantsOptions = args::options(func, options)?;
-        Ok(if o.closed { self.inner.invariants_closed() } else { self.inner.invariants() })
+    /// Pairs and interior rulings of the invariants (closed or not): the arrays' lengths.
+    fn sizes(&self, closed: bool) -> (usize, usize) {
+        let n = self.inner.len();
+        if closed {
+            (n, n)
+        } else {
+            (n - 1, n - 2)
+        }
+    }
+
+    /// Computes the invariants into JavaScript's arrays (of the right lengths and types), a
+    /// block at a time: the kernel writes a block into wasm memory, where it stays in the
+    /// processor's cache, and each array's part is copied out before the next block.
+    fn fill(&self, out: &Invariants, closed: bool) {
+        fn put(a: &Float64Array, at: usize, whole: usize, data: &[f64]) {
+            if data.len() == whole {
+                a.copy_from(data);
+            } else if !data.is_empty() {
+                a.subarray(at as u32, (at + data.len()) as u32).copy_from(data);
+            }
+        }
+        let (pairs, interior) = self.sizes(closed);
+        // the blocks' arrays (at most INVARIANTS_BLOCK pairs, about 600 KiB) are kept from call
+        // to call: allocating them zeroed would cost a small call as much as its work. Should a
+        // call come in while they are in use (an array of `out` whose own `set` calls ruledlab
+        // again), it gets fresh ones instead of a panic.
+        thread_local!(static SCRATCH: RefCell<ruled::Invariants> = RefCell::default());
+        SCRATCH.with(|cell| {
+            let mut fresh = ruled::Invariants::default();
+            let mut kept = cell.try_borrow_mut();
+            let scratch = match kept.as_deref_mut() {
+                Ok(kept) => kept,
+                Err(_) => &mut fresh,
+            };
+            ruled::Invariants::by_blocks(self.inner.points(), closed, INVARIANTS_BLOCK, scratch, |b| {
+                let (p, m, inv) = (b.pairs_from, b.interior_from, b.inv);
+                let flat = ruled::Invariants::flat;
+                put(&out.angle, p, pairs, &inv.angle);
+                put(&out.distance, p, pairs, &inv.distance);
+                put(&out.distribution, p, pairs, &inv.distribution);
+                put(&out.footpoints, 6 * p, 6 * pairs, flat(&inv.footpoints));
+                put(&out.central_normal, 3 * p, 3 * pairs, flat(&inv.central_normal));
+                put(&out.perpendicular_midpoints, 3 * p, 3 * pairs, flat(&inv.perpendicular_midpoints));
+                put(&out.striction, 3 * m, 3 * interior, flat(&inv.striction));
+                put(&out.distribution_mean, m, interior, &inv.distribution_mean);
+                // bool is one byte holding 0 or 1
+                let parallel: &[u8] = bytemuck::cast_slice(&inv.parallel);
+                if parallel.len() == pairs {
+                    out.parallel.copy_from(parallel);
+                } else if !parallel.is_empty() {
+                    out.parallel.subarray(p as u32, (p + parallel.len()) as u32).copy_from(parallel);
+                }
+            })
+        });
     }
 
     /// Wraps a core surface.
@@ -246,22 +297,21 @@ impl RuledSurface {
     ) -> Result<JsValue, JsValue> {
         const F: &str = "RuledSurface.invariants";
         let _measure = Measure::start(F);
-        let inv = self.compute_invariants(F, options.map(JsValue::from).unwrap_or_default())?;
-        let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
-        to_js(
-            F,
-            &Invariants {
-                angle: Float64Array::from(&inv.angle[..]),
-                distance: Float64Array::from(&inv.distance[..]),
-                distribution: Float64Array::from(&inv.distribution[..]),
-                footpoints: Float64Array::from(ruled::Invariants::flat(&inv.footpoints)),
-                central_normal: Float64Array::from(ruled::Invariants::flat(&inv.central_normal)),
-                striction: Float64Array::from(ruled::Invariants::flat(&inv.striction)),
-                distribution_mean: Float64Array::from(&inv.distribution_mean[..]),
-                perpendicular_midpoints: Float64Array::from(ruled::Invariants::flat(&inv.perpendicular_midpoints)),
-                parallel: Uint8Array::from(&parallel[..]),
-            },
-        )
+        let o: InvariantsOptions = args::options(F, options.map(JsValue::from).unwrap_or_default())?;
+        let (pairs, interior) = self.sizes(o.closed);
+        let out = Invariants {
+            angle: Float64Array::new_with_length(pairs as u32),
+            distance: Float64Array::new_with_length(pairs as u32),
+            distribution: Float64Array::new_with_length(pairs as u32),
+            footpoints: Float64Array::new_with_length(6 * pairs as u32),
+            central_normal: Float64Array::new_with_length(3 * pairs as u32),
+            striction: Float64Array::new_with_length(3 * interior as u32),
+            distribution_mean: Float64Array::new_with_length(interior as u32),
+            perpendicular_midpoints: Float64Array::new_with_length(3 * pairs as u32),
+            parallel: Uint8Array::new_with_length(pairs as u32),
+        };
+        self.fill(&out, o.closed);
+        to_js(F, &out)
     }
 
     /// As `invariants()`, but written into the arrays of `out` (an object returned by an
@@ -279,8 +329,8 @@ impl RuledSurface {
         if !out.is_object() {
             return Err(fail(F, format!("out must be an Invariants object, got {}", describe(&out))));
         }
-        let inv = self.compute_invariants(F, options)?;
-        let parallel: Vec<u8> = inv.parallel.iter().map(|&p| p as u8).collect();
+        let o: InvariantsOptions = args::options(F, options)?;
+        let (pairs, interior) = self.sizes(o.closed);
         let target = |key: &str, len: usize| -> Result<JsValue, JsValue> {
             let v = js_sys::Reflect::get(&out, &key.into()).map_err(|_| fail(F, format!("out.{key} is missing")))?;
             let got = js_sys::Reflect::get(&v, &"length".into()).ok().and_then(|l| l.as_f64());
@@ -295,27 +345,25 @@ impl RuledSurface {
             }
             Ok(v)
         };
-        let copy = |key: &str, data: &[f64]| -> Result<(), JsValue> {
-            match target(key, data.len())?.dyn_into::<Float64Array>() {
-                Ok(a) => {
-                    a.copy_from(data);
-                    Ok(())
-                }
-                Err(_) => Err(fail(F, format!("out.{key} must be a Float64Array"))),
-            }
+        let f64s = |key: &str, len: usize| -> Result<Float64Array, JsValue> {
+            target(key, len)?
+                .dyn_into::<Float64Array>()
+                .map_err(|_| fail(F, format!("out.{key} must be a Float64Array")))
         };
-        copy("angle", &inv.angle)?;
-        copy("distance", &inv.distance)?;
-        copy("distribution", &inv.distribution)?;
-        copy("footpoints", ruled::Invariants::flat(&inv.footpoints))?;
-        copy("centralNormal", ruled::Invariants::flat(&inv.central_normal))?;
-        copy("striction", ruled::Invariants::flat(&inv.striction))?;
-        copy("distributionMean", &inv.distribution_mean)?;
-        copy("perpendicularMidpoints", ruled::Invariants::flat(&inv.perpendicular_midpoints))?;
-        match target("parallel", parallel.len())?.dyn_into::<Uint8Array>() {
-            Ok(a) => a.copy_from(&parallel),
-            Err(_) => return Err(fail(F, "out.parallel must be a Uint8Array")),
-        }
+        let out = Invariants {
+            angle: f64s("angle", pairs)?,
+            distance: f64s("distance", pairs)?,
+            distribution: f64s("distribution", pairs)?,
+            footpoints: f64s("footpoints", 6 * pairs)?,
+            central_normal: f64s("centralNormal", 3 * pairs)?,
+            striction: f64s("striction", 3 * interior)?,
+            distribution_mean: f64s("distributionMean", interior)?,
+            perpendicular_midpoints: f64s("perpendicularMidpoints", 3 * pairs)?,
+            parallel: target("parallel", pairs)?
+                .dyn_into::<Uint8Array>()
+                .map_err(|_| fail(F, "out.parallel must be a Uint8Array"))?,
+        };
+        self.fill(&out, o.closed);
         Ok(())
     }
 

@@ -261,6 +261,57 @@ test('invariantsInPlace: views of wasm memory with the numbers of invariants(), 
   }
 });
 
+test('invariants() and invariantsInto, filled a block of pairs at a time, equal the zero-copy views', () => {
+  // 10 001 rulings: three blocks and a part, open and closed
+  const a = ruledlab.AnalyticSurface.byName('hyperboloid');
+  const s = a.sample(10001, { uMin: 0, uMax: 40, closed: false });
+  const buffer = new ruledlab.InvariantsBuffer();
+  try {
+    for (const closed of [false, true]) {
+      const fresh = s.invariants({ closed });
+      const into = s.invariants({ closed });
+      for (const v of Object.values(into)) v.fill(0);
+      s.invariantsInto(into, { closed });
+      s.invariantsInPlace(buffer, { closed });
+      for (const [k, v] of Object.entries(fresh)) {
+        const view = /** @type {any} */ (buffer)[k];
+        assert.equal(v.length, view.length, k);
+        assert.deepEqual(v, view.slice(), `invariants().${k}, closed: ${closed}`);
+        assert.deepEqual(/** @type {any} */ (into)[k], v, `invariantsInto: ${k}, closed: ${closed}`);
+      }
+    }
+  } finally {
+    buffer.free();
+    s.free();
+    a.free();
+  }
+});
+
+test('invariantsInto called again from inside its own copy (an array whose set calls ruledlab) does not panic', () => {
+  const a = ruledlab.AnalyticSurface.byName('quartic');
+  const s = a.sample(30);
+  try {
+    const inner = s.invariants();
+    let calls = 0;
+    class Sneaky extends Float64Array {
+      /** @param {ArrayLike<number>} src @param {number} [at] */
+      set(src, at) {
+        if (calls++ === 0) s.invariantsInto(inner);
+        super.set(src, at);
+      }
+    }
+    const out = s.invariants();
+    out.angle = new Sneaky(out.angle.length);
+    s.invariantsInto(out);
+    assert.ok(calls >= 1);
+    assert.deepEqual(Array.from(out.angle), Array.from(s.invariants().angle));
+    assert.deepEqual(inner.striction, s.invariants().striction);
+  } finally {
+    s.free();
+    a.free();
+  }
+});
+
 test('invariantsInto refills the arrays of an earlier result without allocating new ones', () => {
   const a = ruledlab.AnalyticSurface.byName('quartic');
   const s1 = a.sample(40);
