@@ -189,14 +189,14 @@ test('in a sandboxed frame the page does without storage and history, and says s
   // a scene change still works (no history entry to write)
   await frame.locator('#scene').selectOption('strip');
   await frame.locator('.rl-stage[data-scene="strip"][data-ready="1"]').waitFor();
-  assert.equal(await frame.locator('.io-note').isHidden(), true, 'a note about storage before anyone asked for it');
+  assert.equal(await frame.locator('.io-stored').isHidden(), true, 'a note about storage before anyone asked for it');
   // an import too large for the link cannot be kept: the page says so there, and shows it
   await frame.locator('.io summary').click();
   const rows = Array.from({ length: 260 }, (_, i) => `${i},0,0,${i},1,${i / 10}`).join('\n');
   await frame.locator('#import-text').fill(rows);
   await frame.locator('#import-button').click();
   await frame.locator('.rl-stage[data-scene="data"][data-ready="1"]').waitFor();
-  assert.match(await frame.locator('.io-note').innerText(), /no storage here/);
+  assert.match(await frame.locator('.io-stored').innerText(), /no storage here/);
   assert.equal(await frame.locator('.rl-fullscreen').isHidden(), true, 'a full-screen button the frame does not allow');
   assert.deepEqual(problems, []);
   await page.close();

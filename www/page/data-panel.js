@@ -82,7 +82,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
   row.append(upload, showButton);
   const importError = el('p', { className: 'io-error', id: 'import-error', hidden: true });
   importError.setAttribute('role', 'alert');
-  const storedNote = el('p', { className: 'io-note', hidden: true });
+  const storedNote = el('p', { className: 'io-note io-stored', hidden: true });
   const exportsLabel = el('p', { className: 'io-label' });
   const exports = el('div', { className: 'io-row', id: 'exports' });
   /** @type {Record<string, HTMLButtonElement>} */
@@ -93,7 +93,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
     exports.append(buttons[kind]);
   }
   // in an exercise the data files wait (a table of δ or of the footpoints would be the answer)
-  const heldNote = el('p', { className: 'io-note', hidden: true });
+  const heldNote = el('p', { className: 'io-note io-held', hidden: true });
   io.append(summary, pasteLabel, paste, kindRow, row, importError, storedNote, exportsLabel, exports, heldNote);
   stage.panel.insertBefore(io, stage.text);
 
