@@ -287,7 +287,9 @@ test('writing an exercise with the keyboard alone: every field of the panel is r
   await page.keyboard.press('Enter');
   await page.locator('#share-exercise').focus();
   await page.keyboard.press('Enter');
-  // the title field has the keyboard; type, Tab to the prompt, type
+  // the title field has the keyboard once the author has loaded (it loads on demand); type, Tab to
+  // the prompt, type
+  await page.waitForFunction(() => document.activeElement?.getAttribute('name') === 'author-title');
   await page.keyboard.type('Beat the midpoint rule');
   await page.keyboard.press('Tab');
   await page.keyboard.type('Choose n.');
