@@ -188,10 +188,21 @@ pub fn linearise(
     let mut origin: Vec<f64> = (0..poses.len()).map(|i| i as f64).collect();
     let mut before = None;
     let mut round = 0;
+    // the blocks of the previous round that were kept whole: new block i was old block carried[i]
+    // (a pure function of its poses and axis values: where those are the same, so is its deviation)
+    let mut previous: Option<(Vec<Joints>, Vec<BlockDeviation>)> = None;
+    let mut carried: Vec<Option<usize>> = Vec::new();
     loop {
         let joints = inverse(m, &poses, tool_length).map_err(|e| renamed(e, &origin))?;
         let blocks: Vec<BlockDeviation> = (0..poses.len().saturating_sub(1))
-            .map(|i| block_deviation(m, (&poses[i], &poses[i + 1]), (&joints[i], &joints[i + 1]), how, tool_length))
+            .map(|i| {
+                if let (Some((old_joints, old_blocks)), Some(&Some(j))) = (&previous, carried.get(i)) {
+                    if old_joints[j] == joints[i] && old_joints[j + 1] == joints[i + 1] {
+                        return old_blocks[j];
+                    }
+                }
+                block_deviation(m, (&poses[i], &poses[i + 1]), (&joints[i], &joints[i + 1]), how, tool_length)
+            })
             .collect();
         let before = *before.get_or_insert(largest(&blocks));
         let bad: Vec<usize> = (0..blocks.len()).filter(|&i| blocks[i].max() > tolerance).collect();
@@ -228,6 +239,7 @@ pub fn linearise(
             });
         }
         let (mut p, mut o) = (Vec::with_capacity(poses.len() + bad.len()), Vec::with_capacity(poses.len() + bad.len()));
+        let mut c = Vec::with_capacity(poses.len() + bad.len());
         let mut next_bad = bad.iter().peekable();
         for i in 0..poses.len() {
             p.push(poses[i]);
@@ -236,9 +248,13 @@ pub fn linearise(
                 next_bad.next();
                 p.push(midpoint(&poses[i], &poses[i + 1]));
                 o.push(0.5 * (origin[i] + origin[i + 1]));
+                c.extend([None, None]);
+            } else {
+                c.push(Some(i));
             }
         }
-        (poses, origin) = (p, o);
+        (poses, origin, carried) = (p, o, c);
+        previous = Some((joints, blocks));
         round += 1;
     }
 }
@@ -273,5 +289,29 @@ mod tests {
         // tool-centre point with vectors follows the path itself
         let v = linearise(&m, &poses, 50.0, Interpolation::TcpVector, 0.01).unwrap();
         assert_eq!(v.report.inserted, 0);
+    }
+
+    #[test]
+    fn blocks_kept_from_round_to_round_are_the_blocks_computed_afresh() {
+        // a path whose blocks need different numbers of halvings: some are kept whole in a round
+        let m = Machine::preset("table-table-ac").unwrap();
+        let poses: Vec<Pose> = (0..6)
+            .map(|i| {
+                let t = f64::from(i);
+                Pose {
+                    tip: DVec3::new(12.0 * t, 3.0 * t.sin(), 0.0),
+                    axis: DVec3::new(0.4 * (t * t / 9.0).sin(), 0.2, 1.0).normalize(),
+                }
+            })
+            .collect();
+        for how in [Interpolation::Machine, Interpolation::TcpAngles] {
+            let l = linearise(&m, &poses, 50.0, how, 0.005).unwrap();
+            assert!(l.report.rounds >= 2 && l.report.inserted > 0, "{:?}", l.report);
+            for (i, block) in l.report.blocks.iter().enumerate() {
+                let fresh =
+                    block_deviation(&m, (&l.poses[i], &l.poses[i + 1]), (&l.joints[i], &l.joints[i + 1]), how, 50.0);
+                assert_eq!(*block, fresh, "block {i}");
+            }
+        }
     }
 }
