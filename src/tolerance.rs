@@ -210,8 +210,12 @@ pub const HIDDEN_LINE_GRID_ENTRIES: usize = 16;
 /// Hidden lines: most triangles and most line points in one call (checked before binning).
 pub const MAX_HIDDEN_LINE_ITEMS: usize = 1 << 22;
 
-/// `|a − b| ≤ tol · max(1, |a|, |b|)`: relative for large numbers, absolute near zero.
+/// `|a − b| ≤ tol · max(1, |a|, |b|)`: relative for large numbers, absolute near zero; an
+/// infinity is near only itself (the relative bound would let ∞ be near every number).
 pub fn near(a: f64, b: f64, tol: f64) -> bool {
+    if a.is_infinite() || b.is_infinite() {
+        return a == b;
+    }
     (a - b).abs() <= tol * 1f64.max(a.abs()).max(b.abs())
 }
 
@@ -232,14 +236,16 @@ pub mod test {
     pub const KERNEL_DELTA_ULPS: u64 = 3;
 }
 
-/// Asserts `|a − b| ≤ tol · max(1, |a|, |b|)` for numbers or `DVec3`s, with a useful message.
+/// Asserts `|a − b| ≤ tol · max(1, |a|, |b|)` for numbers or `DVec3`s, with a useful message;
+/// a value with an infinite part is near only an equal value.
 #[macro_export]
 macro_rules! assert_near {
     ($a:expr, $b:expr, $tol:expr $(,)?) => {{
         let (a, b, tol) = ($a, $b, $tol);
         let err = $crate::tolerance::Distance::distance(&a, &b);
         let scale = 1f64.max($crate::tolerance::Distance::size(&a)).max($crate::tolerance::Distance::size(&b));
-        assert!(err <= tol * scale, "assert_near failed: {:?} vs {:?}: error {:e} > {:e}", a, b, err, tol * scale);
+        let ok = if scale.is_finite() { err <= tol * scale } else { a == b };
+        assert!(ok, "assert_near failed: {:?} vs {:?}: error {:e} > {:e}", a, b, err, tol * scale);
     }};
 }
 
@@ -288,5 +294,21 @@ mod tests {
         assert!(!near(1e6, 1e6 + 1e-4, 1e-12));
         assert!(near(0.0, 1e-13, 1e-12));
         assert!(!near(0.0, 1e-11, 1e-12));
+    }
+
+    #[test]
+    fn an_infinity_is_near_only_itself() {
+        assert!(near(f64::INFINITY, f64::INFINITY, 1e-12));
+        assert!(!near(f64::INFINITY, 5.0, 1e-12));
+        assert!(!near(-1e300, f64::NEG_INFINITY, 1e-12));
+        assert!(!near(f64::INFINITY, f64::NEG_INFINITY, 1e-12));
+        assert_near!(f64::INFINITY, f64::INFINITY, 1e-12);
+        assert_near!(glam::DVec3::new(1.0, 2.0, 3.0), glam::DVec3::new(1.0, 2.0, 3.0 + 1e-13), 1e-12);
+        let caught = std::panic::catch_unwind(|| assert_near!(f64::INFINITY, 5.0, 1e-12));
+        assert!(caught.is_err(), "∞ passed as near 5");
+        let caught = std::panic::catch_unwind(|| {
+            assert_near!(glam::DVec3::new(f64::INFINITY, 0.0, 0.0), glam::DVec3::ZERO, 1e-12)
+        });
+        assert!(caught.is_err(), "a point at infinity passed as near the origin");
     }
 }
