@@ -103,6 +103,17 @@ mod tests {
     }
 
     #[test]
+    fn a_formula_keeps_its_text_and_gives_values_at_plain_numbers() {
+        let f = Formula::parse("x(u, v)", " u^2*cos(v) + a ", &["u", "v", "a"]).unwrap();
+        assert_eq!(f.text(), " u^2*cos(v) + a ");
+        assert_eq!(f.value(&[3.0, 0.0, 0.5]), 9.5);
+        assert_near!(f.value(&[2.0, std::f64::consts::PI, -1.0]), -5.0, 1e-15);
+        // value is eval's real part at constants
+        let at = [Dual::constant(1.5), Dual::constant(0.25), Dual::constant(2.0)];
+        assert_eq!(f.value(&[1.5, 0.25, 2.0]), f.eval(&at, &mut Vec::new()).re);
+    }
+
+    #[test]
     fn bad_text_is_refused_with_a_column() {
         let e = Formula::parse("a[1]", "sni(u)", &["u"]).unwrap_err();
         assert_eq!(e.code(), "parse-error");
