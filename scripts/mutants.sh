@@ -23,7 +23,7 @@ for file in "${files[@]}"; do
   # each equivalent mutant that this file still has; an entry that matches none is stale
   grep -v '^#' "$equivalent" | grep "^$file:" | sed 's/  *#.*//' | sort -u > "$out/equivalent" || true
   cargo mutants --list --file "$file" | sort -u > "$out/all"
-  comm -23 "$out/equivalent" "$out/all" | sed "s/^/mutants: stale entry in $equivalent: /" >&2
+  comm -23 "$out/equivalent" "$out/all" | sed "s#^#mutants: stale entry in $equivalent: #" >&2
   cargo mutants --file "$file" --output "$out" --no-shuffle -- "${tests[@]}" || true
   missed=$(sort -u "$out/mutants.out/missed.txt" | comm -23 - "$out/equivalent" | wc -l)
   caught=$(wc -l < "$out/mutants.out/caught.txt")
