@@ -347,6 +347,36 @@ mod tests {
     }
 
     #[test]
+    fn one_family_of_rulings_of_a_hyperboloid_is_a_regulus() {
+        // x² + y² − z² = 1: the lines through (cos t, sin t, 0) along (−sin t, cos t, 1)
+        let lines: Vec<Segment> = (0..10)
+            .map(|k| {
+                let t = k as f64 * 0.6;
+                let (x, d) = (DVec3::new(t.cos(), t.sin(), 0.0), DVec3::new(-t.sin(), t.cos(), 1.0));
+                Segment::new(x - d, x + 0.5 * d)
+            })
+            .collect();
+        let fit = fit(&lines, None);
+        assert_eq!((fit.nullity, fit.kind, fit.kind.name()), (3, ComplexKind::Regulus, "regulus"));
+        assert!(fit.spectrum[3] > 1e-2, "{:?}", fit.spectrum);
+    }
+
+    #[test]
+    fn lines_in_general_position_lie_in_no_complex() {
+        let lines: Vec<Segment> = (0..12)
+            .map(|k| {
+                let t = k as f64;
+                let x = DVec3::new((1.1 * t).sin(), (2.3 * t).cos(), (0.7 * t).sin()) * 2.0;
+                let d = DVec3::new((1.9 * t).cos(), (0.4 * t + 1.0).sin(), (3.1 * t).cos() + 0.2);
+                Segment::new(x, x + d)
+            })
+            .collect();
+        let fit = fit(&lines, None);
+        assert_eq!((fit.nullity, fit.kind, fit.kind.name()), (0, ComplexKind::General, "general"));
+        assert!(fit.spectrum[0] > 1e-3 && fit.residual > 1e-3, "{:?}", fit.spectrum);
+    }
+
+    #[test]
     fn kinds_have_machine_names() {
         let names = [
             ComplexKind::General,
