@@ -6,7 +6,8 @@
 # (focal geometry, linear complexes, formulas). MUTANTS_TESTS narrows the tests run for each
 # mutant (cargo test's arguments, e.g. "--lib --test focal"; default: all native tests).
 # mutants/equivalent.txt names the mutants that change nothing observable, each with its reason:
-# they are listed but not counted. Results: target/mutants/<module>/mutants.out.
+# they are listed but not counted; a timeout counts as caught (the mutant did not pass). Results:
+# target/mutants/<path with - for />/mutants.out.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -17,14 +18,18 @@ equivalent=mutants/equivalent.txt
 read -r -a tests <<< "${MUTANTS_TESTS:-}"
 status=0
 for file in "${files[@]}"; do
-  name=$(basename "${file%.rs}")
+  name=$(printf '%s' "${file%.rs}" | tr / -)
   out="target/mutants/$name"
   mkdir -p "$out"
   # each equivalent mutant that this file still has; an entry that matches none is stale
   grep -v '^#' "$equivalent" | grep "^$file:" | sed 's/  *#.*//' | sort -u > "$out/equivalent" || true
   cargo mutants --list --file "$file" | sort -u > "$out/all"
   comm -23 "$out/equivalent" "$out/all" | sed "s#^#mutants: stale entry in $equivalent: #" >&2
-  cargo mutants --file "$file" --output "$out" --no-shuffle -- "${tests[@]}" || true
+  # exit 0: all caught, 2: some missed, 3: some timed out; anything else (a failing baseline,
+  # a usage error) stops here
+  code=0
+  cargo mutants --file "$file" --output "$out" --no-shuffle -- "${tests[@]}" || code=$?
+  case $code in 0 | 2 | 3) ;; *) echo "mutants: cargo mutants failed on $file (exit $code)" >&2; exit "$code" ;; esac
   missed=$(sort -u "$out/mutants.out/missed.txt" | comm -23 - "$out/equivalent" | wc -l)
   caught=$(wc -l < "$out/mutants.out/caught.txt")
   unviable=$(wc -l < "$out/mutants.out/unviable.txt")

@@ -205,14 +205,20 @@ mod tests {
         eps.iter()
             .enumerate()
             .map(|(k, &e)| {
-                let (t, r, z, s) =
-                    (k as f64 * 0.9, 1.0 + 0.15 * k as f64, 0.3 * k as f64 - 1.0, (0.7 * k as f64).sin());
-                let (radial, tangent) = (DVec3::new(t.cos(), t.sin(), 0.0), DVec3::new(-t.sin(), t.cos(), 0.0));
-                let d = (p * tangent - r * DVec3::Z + s * radial).normalize();
-                let x = r * radial + DVec3::new(0.0, 0.0, z) + e * radial;
+                let (x, d, radial) = helical_line(p, k);
+                let x = x + e * radial;
                 Segment::new(x - 0.8 * d, x + 1.3 * d)
             })
             .collect()
+    }
+
+    /// The k-th line of [`near_helical`] before it is moved: a point, its unit direction, r̂.
+    fn helical_line(p: f64, k: usize) -> (DVec3, DVec3, DVec3) {
+        let k = k as f64;
+        let (t, r, z, s) = (k * 0.9, 1.0 + 0.15 * k, 0.3 * k - 1.0, (0.7 * k).sin());
+        let (radial, tangent) = (DVec3::new(t.cos(), t.sin(), 0.0), DVec3::new(-t.sin(), t.cos(), 0.0));
+        let d = (p * tangent - r * DVec3::Z + s * radial).normalize();
+        (r * radial + DVec3::new(0.0, 0.0, z), d, radial)
     }
 
     /// The residual is the documented value: the root mean square of c·m + c̄·d over the lines,
@@ -257,10 +263,8 @@ mod tests {
         moved[7] = eps;
         let lines = near_helical(p, &moved);
         let fit = fit(&lines, None);
-        let k = 7.0_f64;
-        let (t, r, s) = (k * 0.9, 1.0 + 0.15 * k, (0.7 * k).sin());
-        let (radial, tangent) = (DVec3::new(t.cos(), t.sin(), 0.0), DVec3::new(-t.sin(), t.cos(), 0.0));
-        let d = (p * tangent - r * DVec3::Z + s * radial).normalize();
+        let (_, d, radial) = helical_line(p, 7);
+        let tangent = DVec3::Z.cross(radial);
         let first_order = eps * tangent.dot(d).abs() / (n as f64).sqrt();
         // the helical complex itself has that residual; the fit leans towards the moved line,
         // which only lowers it, to √(1 − h) of it where h is the line's leverage in the least
