@@ -63,6 +63,41 @@ fn lines_meeting_two_skew_lines_have_their_focal_points_on_them() {
     }
 }
 
+/// A focal sheet is the grid of one focal point per line, two triangles per quad (a, a + cols,
+/// a + cols + 1; a, a + cols + 1, a + 1); a point farther than FOCAL_SHEET_REACH diagonals of
+/// the lines' bounding box from its centre, or not real, sits at the centre and drops its quads.
+#[cfg_attr(not(target_family = "wasm"), test)]
+#[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
+fn a_focal_sheet_is_the_grid_of_focal_points_near_the_lines() {
+    let c = formula(["u", "0", "-1"], ["-u", "v", "2"], (-1.0, 1.5), (-0.5, 2.0));
+    let (rows, cols) = (3, 4);
+    let grid = c.grid(rows, cols).unwrap();
+    let mut focal = focal_of(&grid);
+    let sheet = ruledlab::focal_sheet(&grid, &focal, 0);
+    for (x, f) in sheet.positions.iter().zip(&focal) {
+        assert_eq!(*x, f.points[0]);
+    }
+    let quad = |i: u32, j: u32| {
+        let a = i * cols as u32 + j;
+        [a, a + cols as u32, a + cols as u32 + 1, a, a + cols as u32 + 1, a + 1]
+    };
+    let all: Vec<u32> = (0..2).flat_map(|i| (0..3).flat_map(move |j| quad(i, j))).collect();
+    assert_eq!(sheet.indices, all);
+    // the endpoints span x ∈ [−1, 1.5], y ∈ [−0.5, 2], z ∈ [−1, 1]
+    let centre = DVec3::new(0.25, 0.75, 0.0);
+    let reach = ruledlab::tolerance::FOCAL_SHEET_REACH * 16.5f64.sqrt();
+    focal[0].points[0] = centre + 1.01 * reach * DVec3::X;
+    focal[6].points[0] = centre + 0.99 * reach * DVec3::Y;
+    focal[11].points[0] = DVec3::NAN;
+    let sheet = ruledlab::focal_sheet(&grid, &focal, 0);
+    assert_near!(sheet.positions[0], centre, 1e-15);
+    assert_eq!(sheet.positions[6], focal[6].points[0]);
+    assert_near!(sheet.positions[11], centre, 1e-15);
+    // quads (0, 0) and (1, 2) hold the dropped points
+    let kept: Vec<u32> = [(0, 1), (0, 2), (1, 0), (1, 1)].into_iter().flat_map(|(i, j)| quad(i, j)).collect();
+    assert_eq!(sheet.indices, kept);
+}
+
 const A: f64 = 3.0;
 const B: f64 = 2.0;
 const C: f64 = 1.0;

@@ -339,12 +339,88 @@ mod tests {
 
     #[test]
     fn differences_are_second_order_at_the_ends_too() {
-        let f = |x: f64| DVec3::splat(x * x);
-        // d/dk of (k h)² at k = 0, 2, 4 of five samples: 2 k h², exact for quadratics
+        // d/dk of (k h)² at k = 0, 2, 4 of five samples: 2 k h², exact for quadratics; the
+        // samples are a slice, so a difference reaching past either end panics
         let h = 0.1;
+        let samples: Vec<DVec3> = (0..5).map(|r| DVec3::splat((r as f64 * h).powi(2))).collect();
         for k in [0, 2, 4] {
-            let got = difference(|r| f(r as f64 * h), k, 5);
+            let got = difference(|r| samples[r], k, 5);
             assert!((got.x - 2.0 * k as f64 * h * h).abs() < 1e-15, "{k}: {got}");
         }
+        // two samples: the plain difference at both
+        for k in [0, 1] {
+            assert_eq!(difference(|r| [1.0, 3.5][r], k, 2), 2.5);
+        }
+    }
+
+    /// The line x = t·(0, 0, 1) whose jet has, in (F3), f_k = (f_k, 0) and h_k = (h_k, 0):
+    /// d = ê, d_k = f_k and m_k = (h_k.y, −h_k.x, 0), so that ê × m_k = h_k (p = 0).
+    fn jet(f: [[f64; 2]; 2], h: [[f64; 2]; 2]) -> LineJet {
+        let d_uv = f.map(|[x, y]| DVec3::new(x, y, 0.0));
+        let m_uv = h.map(|[x, y]| DVec3::new(y, -x, 0.0));
+        LineJet { p: DVec3::ZERO, d: DVec3::Z, d_uv, m_uv }
+    }
+
+    /// a = 4, b = −16 and c = 16 − y in (F3): for y = 0 the double root t = 2. With c chosen
+    /// so that the discriminant b² − 4ac is s·FOCAL_PARABOLIC·(b² + 4|ac|), the line is
+    /// parabolic for |s| < 1 (focal point t = −b/(2a) = 2 exactly), elliptic below, hyperbolic above.
+    #[test]
+    fn the_parabolic_tolerance_is_relative_to_b2_plus_4ac() {
+        let line = |s: f64| {
+            let c = 16.0 * (1.0 - s * FOCAL_PARABOLIC) / (1.0 + s * FOCAL_PARABOLIC);
+            jet([[2.0, 0.0], [0.0, 2.0]], [[-4.0, 16.0 - c], [1.0, -4.0]]).focal()
+        };
+        assert_eq!(line(-1.1).kind, FocalKind::Elliptic);
+        assert_eq!(line(1.1).kind, FocalKind::Hyperbolic);
+        for s in [-0.9, 0.0, 0.9] {
+            let f = line(s);
+            assert_eq!(f.kind, FocalKind::Parabolic, "{s}");
+            assert_eq!(f.parameters, [2.0, 2.0], "{s}");
+            assert_eq!(f.points, [DVec3::new(0.0, 0.0, 2.0); 2], "{s}");
+            assert_eq!(f.middle, DVec3::new(0.0, 0.0, 2.0), "{s}");
+            // at t = 2, x_u⊥ = (0, 16 − c, 0) ≈ 0 and x_v⊥ = (1, 0, 0): du = 1, dv = 0
+            assert_eq!(f.torsal, [DVec2::X; 2], "{s}");
+            assert_eq!(f.normality, 1.0, "{s}");
+        }
+    }
+
+    /// A bundle through (0, 0, 2) disturbed by δ: f_k = 3·(unit k), h₀ = (−6, 0), h₁ = (δ, −6), so
+    /// a = 9, b = −36, c = 36 (double root t = 2) and at t = 2 the displacements are 0 and
+    /// (δ, 0). Every direction is torsal while δ ≤ FOCAL_TORSAL_ZERO·(|h|max + |t|·|f|max) =
+    /// 12·FOCAL_TORSAL_ZERO; above, only du (torsal (1, 0)).
+    #[test]
+    fn every_direction_is_torsal_within_the_tolerance_of_the_derivatives() {
+        let torsal = |delta: f64| jet([[3.0, 0.0], [0.0, 3.0]], [[-6.0, 0.0], [delta, -6.0]]).focal().torsal;
+        assert!(torsal(11.5 * FOCAL_TORSAL_ZERO).iter().all(|w| w.is_nan()));
+        assert!(torsal(12.5 * FOCAL_TORSAL_ZERO).iter().all(|w| (*w - DVec2::X).length() < 1e-15));
+        assert!(torsal(0.0).iter().all(|w| w.is_nan()));
+    }
+
+    /// f₀ = f₁ = (1, 0) (a = 0), h₀ = (2, 1), h₁ = (0, 2): b = 1, c = 4, so t = −4 and a focal
+    /// point at infinity. At t = −4 the displacements (−2, 1) and (−4, 2) vanish along
+    /// (du, dv) = (2, −1)/√5, whose focal plane holds f = (1, 0, 0); at infinity f vanishes along
+    /// (1, −1)/√2 and the plane holds h₀ − h₁ = (2, −1, 0): normality 2/√5.
+    #[test]
+    fn a_focal_point_at_infinity_has_its_plane_through_h() {
+        let f = jet([[1.0, 0.0], [1.0, 0.0]], [[2.0, 1.0], [0.0, 2.0]]).focal();
+        assert_eq!(f.kind, FocalKind::Hyperbolic);
+        assert_eq!(f.parameters, [f64::NEG_INFINITY, -4.0]);
+        assert!(f.points[0].is_nan());
+        assert_eq!(f.points[1], DVec3::new(0.0, 0.0, -4.0));
+        assert!(f.middle.is_nan(), "a = 0: no middle point");
+        let [w1, w2] = f.torsal;
+        assert!((w1 - DVec2::new(1.0, -1.0) / 2f64.sqrt()).length() < 1e-15, "{w1}");
+        assert!((w2 - DVec2::new(2.0, -1.0) / 5f64.sqrt()).length() < 1e-15, "{w2}");
+        assert!((f.normality - 2.0 / 5f64.sqrt()).abs() < 1e-15, "{}", f.normality);
+    }
+
+    /// The kernel's sign: du > 0, or dv > 0 when du = 0.
+    #[test]
+    fn torsal_directions_point_to_growing_u() {
+        // x_u = (4, 0, 0), x_v = (−3, 0, 0): 4 du − 3 dv = 0 along ±(0.6, 0.8)
+        let w = kernel([DVec3::new(4.0, 0.0, 0.0), DVec3::new(-3.0, 0.0, 0.0)], 1.0);
+        assert!((w - DVec2::new(0.6, 0.8)).length() < 1e-15, "{w}");
+        // x_v = 0: the direction (0, ±1)
+        assert_eq!(kernel([DVec3::X, DVec3::ZERO], 1.0), DVec2::Y);
     }
 }

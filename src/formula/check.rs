@@ -358,6 +358,24 @@ mod tests {
             "e[0]: \"1,5\" could be two arguments or a decimal comma: write 1.5 for the number, or \"1, 5\" (a space after the comma) for two arguments at column 8"
         );
         assert!(d("atan2(0,5 , 2)").is_err());
+        // the numbers on both sides, whole, also at the end of the text
+        let e = d("atan2(12,50").unwrap_err();
+        assert_eq!(e.details().column, Some(9));
+        assert!(
+            e.to_string().starts_with(
+                "e[0]: \"12,50\" could be two arguments or a decimal comma: write 12.50 for the number, or \"12, 50\""
+            ),
+            "{e}"
+        );
+        // a space before atan2's parenthesis, and parentheses inside its arguments
+        assert!(d("atan2 (1,5)").is_err());
+        assert_eq!(d("atan2((1,5), 2)").unwrap(), "atan2((1.5), 2)");
+        assert_eq!(d("sin ((1,5))").unwrap(), "sin ((1.5))");
+        // only a comma between two digits is a decimal comma
+        assert_eq!(d("atan2(u,5)").unwrap(), "atan2(u,5)");
+        assert_eq!(d("atan2(5,u)").unwrap(), "atan2(5,u)");
+        assert_eq!(d("u,5 + 5,u").unwrap(), "u,5 + 5,u");
+        assert_eq!(d(",5").unwrap(), ",5");
         // read without strictness (an English reader): the comma in atan2's arguments separates
         assert_eq!(decimal_commas("e[0]", "atan2(1,5) + 0,5", false).unwrap(), "atan2(1,5) + 0.5");
     }
@@ -414,16 +432,48 @@ mod tests {
         assert!(check("x", "-u*-u^-u", &["u"]).is_ok());
     }
 
+    /// Each lookalike of an ASCII sign is named with the sign to write instead.
+    #[test]
+    fn lookalikes_get_their_ascii_spelling() {
+        let cases = [
+            ("π", "write pi"),
+            ("²", "write ^2"),
+            ("³", "write ^3"),
+            ("×", "write * for products"),
+            ("·", "write * for products"),
+            ("⋅", "write * for products"),
+            ("−", "write - (the ASCII minus)"),
+            ("–", "write - (the ASCII minus)"),
+            ("÷", "write / for quotients"),
+            (":", "write / for quotients"),
+            ("[", "use round parentheses"),
+            ("}", "use round parentheses"),
+            (";", "separate the two arguments of atan2 with a comma: atan2(y, x)"),
+            ("$", "formulas use numbers, names, + - * / ^, parentheses and commas"),
+        ];
+        for (c, hint) in cases {
+            assert_eq!(message(&format!("u{c}2")), format!("a[1]: unexpected character \"{c}\" ({hint}) at column 2"));
+        }
+    }
+
     #[test]
     fn limits_are_checked_first() {
         let long = "u+".repeat(600) + "u";
         let e = check("a[0]", &long, &["u"]).unwrap_err();
         assert_eq!(e.code(), "too-large");
         assert_eq!(e.to_string(), "a[0]: 1201 characters exceed the limit of 1000");
+        let longest = "u+".repeat(499) + "u ";
+        assert_eq!(longest.chars().count(), MAX_FORMULA_CHARS);
+        assert!(check("a[0]", &longest, &["u"]).is_ok());
         let deep = "(".repeat(65) + "u" + &")".repeat(65);
         let e = check("a[0]", &deep, &["u"]).unwrap_err();
         assert_eq!(e.to_string(), "a[0]: 65 levels of nesting exceed the limit of 64 (first at column 65)");
         let ok = "(".repeat(64) + "u" + &")".repeat(64);
         assert!(check("a[0]", &ok, &["u"]).is_ok());
+        // a function's parenthesis is a level too (the 65th "(" is at column 64·4 + 4)
+        let calls = |n: usize| "sin(".repeat(n) + "u" + &")".repeat(n);
+        assert!(check("a[0]", &calls(64), &["u"]).is_ok());
+        let e = check("a[0]", &calls(65), &["u"]).unwrap_err();
+        assert_eq!(e.to_string(), "a[0]: 65 levels of nesting exceed the limit of 64 (first at column 260)");
     }
 }

@@ -270,6 +270,70 @@ mod tests {
         assert_eq!(u.pow(Dual::constant(2.0)).du, 2.5);
     }
 
+    /// Each part of `got` within `tol` of `want`'s, relative to 1 or the part's size.
+    fn near(got: Dual, want: Dual, tol: f64, what: &str) {
+        for (a, b) in [(got.re, want.re), (got.du, want.du), (got.dv, want.dv)] {
+            assert!((a - b).abs() <= tol * b.abs().max(1.0), "{what}: {got:?} vs {want:?}");
+        }
+    }
+
+    /// Each rule once more, on operands that depend on both parameters, against derivatives
+    /// worked out by hand: x = 1.5 + 2ε_u − ε_v, y = −0.5 + 0.25ε_u + 3ε_v.
+    #[test]
+    fn both_derivatives_follow_the_rules() {
+        let x = Dual { re: 1.5, du: 2.0, dv: -1.0 };
+        let y = Dual { re: -0.5, du: 0.25, dv: 3.0 };
+        let d = |re: f64, du: f64, dv: f64| Dual { re, du, dv };
+        assert_eq!(x + y, d(1.0, 2.25, 2.0));
+        assert_eq!(x - y, d(2.0, 1.75, -4.0));
+        assert_eq!(-x, d(-1.5, -2.0, 1.0));
+        // (xy)′ = x′y + xy′
+        assert_eq!(x * y, d(-0.75, -1.0 + 0.375, 0.5 + 4.5));
+        // (x/y)′ = (x′ − (x/y)y′)/y with x/y = −3
+        assert_eq!(x / y, d(-3.0, -5.5, -16.0));
+        assert_eq!(2.0 - x, d(0.5, -2.0, 1.0));
+        assert_eq!(x - 2.0, d(-0.5, 2.0, -1.0));
+        assert_eq!(2.0 + x, x + 2.0);
+        assert_eq!(4.0 * x, d(6.0, 8.0, -4.0));
+        assert_eq!(x * 4.0, 4.0 * x);
+        assert_eq!(x / 4.0, d(0.375, 0.5, -0.25));
+        // 3/x: −3x′/x² = −(4/3)x′
+        near(3.0 / x, d(2.0, -8.0 / 3.0, 4.0 / 3.0), 1e-15, "3/x");
+        // x^y with both depending on u and v: xʸ(y′ ln x + y x′/x); at x = 2, y = 3
+        let (x2, y3) = (d(2.0, 1.0, 0.5), d(3.0, 0.25, -1.0));
+        let ln2 = 2f64.ln();
+        near(x2.pow(y3), d(8.0, 2.0 * ln2 + 12.0, 6.0 - 8.0 * ln2), 1e-14, "x^y");
+        // constant exponents: the power rule, also for x < 0; x⁰ = 1 with no slope
+        near(y.pow(Dual::constant(3.0)), d(-0.125, 0.1875, 2.25), 1e-15, "y^3");
+        assert_eq!(y.pow(Dual::constant(0.0)), d(1.0, 0.0, 0.0));
+        // atan2(y, x)′ = (x y′ − y x′)/(x² + y²) = (0.375 + 1, 4.5 − 0.5)/2.5
+        near(y.atan2(x), d((-0.5f64).atan2(1.5), 0.55, 1.6), 1e-15, "atan2");
+        // one-argument rules: (f(x), f′(x)·2, f′(x)·(−1)) at x = 0.5 + 2ε_u − ε_v
+        let h = d(0.5, 2.0, -1.0);
+        let chain = |f: f64, slope: f64| d(f, 2.0 * slope, -slope);
+        let r = (1.0f64 - 0.25).sqrt();
+        let cases = [
+            (h.sin(), chain(0.5f64.sin(), 0.5f64.cos())),
+            (h.cos(), chain(0.5f64.cos(), -0.5f64.sin())),
+            (h.tan(), chain(0.5f64.tan(), 1.0 / 0.5f64.cos().powi(2))),
+            (h.asin(), chain(0.5f64.asin(), 1.0 / r)),
+            (h.acos(), chain(0.5f64.acos(), -1.0 / r)),
+            (h.atan(), chain(0.5f64.atan(), 0.8)),
+            (h.sinh(), chain(0.5f64.sinh(), 0.5f64.cosh())),
+            (h.cosh(), chain(0.5f64.cosh(), 0.5f64.sinh())),
+            (h.tanh(), chain(0.5f64.tanh(), 1.0 / 0.5f64.cosh().powi(2))),
+            (h.exp(), chain(0.5f64.exp(), 0.5f64.exp())),
+            (h.ln(), chain(0.5f64.ln(), 2.0)),
+            (h.sqrt(), chain(0.5f64.sqrt(), 0.5 / 0.5f64.sqrt())),
+            (h.abs(), chain(0.5, 1.0)),
+            ((-h).abs(), d(0.5, 2.0, -1.0)),
+            (d(0.0, 2.0, -1.0).abs(), d(0.0, 0.0, 0.0)),
+        ];
+        for (k, (got, want)) in cases.into_iter().enumerate() {
+            near(got, want, 1e-15, &format!("rule {k}"));
+        }
+    }
+
     #[test]
     fn singularities_are_not_finite() {
         assert!(!Dual::u(0.0).sqrt().is_finite());

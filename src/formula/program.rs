@@ -242,3 +242,68 @@ fn emit<'a>(source: &str, tree: &'a Node, variables: &[&str], ops: &mut Vec<Op>)
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn compile(text: &str) -> Program {
+        let tree = evalexpr::build_operator_tree::<evalexpr::DefaultNumericTypes>(text).unwrap();
+        Program::compile(text, &tree, &["u", "v"]).unwrap()
+    }
+
+    /// Each name of [`super::super::check::FUNCTIONS`] calls its own function: its value at 0.5.
+    #[test]
+    fn every_function_name_calls_its_function() {
+        let x = 0.5f64;
+        let functions: [(&str, f64); 14] = [
+            ("sin", x.sin()),
+            ("cos", x.cos()),
+            ("tan", x.tan()),
+            ("asin", x.asin()),
+            ("acos", x.acos()),
+            ("atan", x.atan()),
+            ("sinh", x.sinh()),
+            ("cosh", x.cosh()),
+            ("tanh", x.tanh()),
+            ("exp", x.exp()),
+            ("ln", x.ln()),
+            ("log", x.ln()),
+            ("sqrt", x.sqrt()),
+            ("abs", x.abs()),
+        ];
+        let names: Vec<&str> = functions.iter().map(|(name, _)| *name).collect();
+        assert_eq!(names, super::super::check::FUNCTIONS);
+        for (name, value) in functions {
+            let program = compile(&format!("{name}(u)"));
+            assert_eq!(program.eval(&[Dual::u(x), Dual::v(2.0)], &mut Vec::new()).re, value, "{name}");
+        }
+        assert_eq!(Function::by_name("sni"), None);
+    }
+
+    /// atan2 takes the two entries of a parenthesised pair, not of a pair inside anything else
+    /// (text that [`super::super::check`] refuses, compiled here without it).
+    #[test]
+    fn atan2_takes_a_pair_in_parentheses_only() {
+        let program = compile("atan2(((u, v)))");
+        assert_eq!(program.eval(&[Dual::constant(1.0), Dual::constant(-1.0)], &mut Vec::new()).re, 1f64.atan2(-1.0));
+        for text in ["atan2(-(u, v))", "atan2(sin((u, v)))", "atan2(u)", "atan2((u, v, u))"] {
+            let tree = evalexpr::build_operator_tree::<evalexpr::DefaultNumericTypes>(text).unwrap();
+            let e = Program::compile(text, &tree, &["u", "v"]).unwrap_err();
+            assert_eq!(e.code(), "parse-error", "{text}");
+        }
+    }
+
+    /// The depth is the most operands waiting at once: u, v, u before the product.
+    #[test]
+    fn the_depth_is_the_most_operands_at_once() {
+        assert_eq!(compile("u + v*u").depth, 3);
+        assert_eq!(compile("u*v + u").depth, 2);
+        assert_eq!(compile("-sin(u)").depth, 1);
+        assert_eq!(compile("atan2(u, v)^2 - 1").depth, 2);
+        let mut stack = Vec::new();
+        let program = compile("u + v*u");
+        assert_eq!(program.eval(&[Dual::constant(2.0), Dual::constant(3.0)], &mut stack).re, 8.0);
+        assert!(stack.capacity() >= 3);
+    }
+}
