@@ -114,6 +114,11 @@ pub const MAX_CONGRUENCE_STEPS: usize = 12;
 /// Most vertices of a mesh handed in for shading: the two endpoints of the most rulings.
 pub const MAX_MESH_VERTICES: usize = 2 * MAX_RULINGS;
 
+// The limits admit what the others produce (checked when compiling): the stride of the inserted
+// rulings after the most subdivision steps, a mesh of the most rulings' endpoints.
+const _: () = assert!(MAX_STRIDE >= 1 << MAX_SUBDIVISION_STEPS);
+const _: () = assert!(MAX_MESH_VERTICES >= 2 * MAX_RULINGS);
+
 /// Focal geometry: a line is parabolic (one double focal point) when the discriminant of (F3)
 /// is within this fraction of b² + 4|ac|: exact data only; a grid of a parabolic congruence
 /// shows both other kinds, with nearly equal focal points.
@@ -294,6 +299,22 @@ mod tests {
         assert!(!near(1e6, 1e6 + 1e-4, 1e-12));
         assert!(near(0.0, 1e-13, 1e-12));
         assert!(!near(0.0, 1e-11, 1e-12));
+    }
+
+    /// assert_near! measures each kind of value: far apart fails, near passes, relative to the
+    /// larger size above 1.
+    #[test]
+    fn assert_near_measures_distances_relative_to_the_size() {
+        use glam::{DVec2, DVec3};
+        let fails = |f: fn()| std::panic::catch_unwind(f).is_err();
+        assert!(fails(|| assert_near!(1.0, 2.0, 1e-3)));
+        assert!(fails(|| assert_near!(DVec3::X, DVec3::Y, 1e-3)));
+        assert!(fails(|| assert_near!(DVec2::X, DVec2::Y, 1e-3)));
+        // 1 apart at a size of 1.7e6: within 1e-5 relative, not absolute
+        assert_near!(1e6, 1e6 + 1.0, 1e-5);
+        assert_near!(DVec3::splat(1e6), DVec3::splat(1e6 + 1.0), 1e-5);
+        assert_near!(DVec2::splat(1e6), DVec2::splat(1e6 + 1.0), 1e-5);
+        assert!(fails(|| assert_near!(DVec3::splat(10.0), DVec3::splat(11.0), 1e-5)));
     }
 
     #[test]

@@ -57,5 +57,11 @@ mod tests {
             check_interval("u", (0.0, f64::INFINITY), false).unwrap_err().details().reason,
             Some("interval-not-finite")
         );
+        // each end on its own: not a number, beyond MAX_COORD; MAX_COORD itself is allowed
+        let reason = |lo: f64, hi: f64| check_interval("u", (lo, hi), false).err().and_then(|e| e.details().reason);
+        for (lo, hi) in [(f64::NAN, 0.0), (0.0, f64::NAN), (-2.0 * MAX_COORD, 0.0), (0.0, 2.0 * MAX_COORD)] {
+            assert_eq!(reason(lo, hi), Some("interval-not-finite"), "({lo}, {hi})");
+        }
+        assert_eq!(reason(-MAX_COORD, MAX_COORD), None);
     }
 }

@@ -188,7 +188,7 @@ fn kernel(x: [DVec3; 2], scale: f64) -> DVec2 {
 /// samples at the ends (both second order), the plain difference for two samples.
 fn difference<T>(at: impl Fn(usize) -> T, k: usize, n: usize) -> T
 where
-    T: std::ops::Sub<Output = T> + std::ops::Mul<f64, Output = T> + std::ops::Add<Output = T>,
+    T: std::ops::Sub<Output = T> + std::ops::Mul<f64, Output = T>,
 {
     if n == 2 {
         at(1) - at(0)
@@ -289,13 +289,6 @@ impl std::ops::Sub for Plucker {
     type Output = Plucker;
     fn sub(self, o: Plucker) -> Plucker {
         Plucker { d: self.d - o.d, m: self.m - o.m }
-    }
-}
-
-impl std::ops::Add for Plucker {
-    type Output = Plucker;
-    fn add(self, o: Plucker) -> Plucker {
-        Plucker { d: self.d + o.d, m: self.m + o.m }
     }
 }
 
