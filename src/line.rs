@@ -67,6 +67,13 @@ mod tests {
     use super::*;
 
     #[test]
+    fn projection_onto_a_line_off_the_origin() {
+        let line = Line { point: DVec3::new(1.0, 2.0, 3.0), dir: DVec3::X };
+        assert_eq!(line.project(DVec3::new(5.0, 7.0, -1.0)), DVec3::new(5.0, 2.0, 3.0));
+        assert_eq!(line.distance_to(DVec3::new(5.0, 5.0, 7.0)), 5.0);
+    }
+
+    #[test]
     fn line_of_segment_keeps_orientation() {
         let s = Segment::new(DVec3::new(1.0, 2.0, 3.0), DVec3::new(1.0, 2.0, 1.0));
         assert_eq!(s.line().dir, DVec3::new(0.0, 0.0, -1.0));

@@ -68,6 +68,16 @@ mod tests {
     use crate::assert_near;
     use glam::DQuat;
 
+    /// Two points are the fewest: the line through them; one is refused.
+    #[test]
+    fn two_points_are_enough_and_one_is_not() {
+        let fit = fit_line(&[DVec3::new(1.0, 1.0, 0.0), DVec3::new(3.0, 1.0, 0.0)]).unwrap();
+        assert_near!(fit.direction.dot(DVec3::X).abs(), 1.0, 1e-15);
+        assert_eq!(fit.deviation, 0.0);
+        assert_eq!(fit_line(&[DVec3::ONE]).unwrap_err().code(), "invalid-argument");
+        assert!(fit_line(&[]).is_err());
+    }
+
     #[test]
     fn points_on_a_line_deviate_by_rounding_only() {
         let d = DVec3::new(1.0, -2.0, 0.5).normalize();

@@ -170,6 +170,55 @@ mod tests {
         .unwrap()
     }
 
+    /// The frame and the development of the rulings moved by a translation: the frame moves
+    /// along, the development is the same (a rigid motion changes no distance or angle).
+    #[test]
+    fn the_frame_moves_with_the_rulings_and_the_development_does_not() {
+        let s = four_skew_rulings();
+        let shift = DVec3::new(5.0, -2.0, 3.0);
+        let moved: Vec<f64> = s.points().iter().flat_map(|&p| (p + shift).to_array()).collect();
+        let moved = RuledSurface::from_flat(&moved).unwrap();
+        let frame = Frame::of(&moved);
+        let m = frame.world_to_frame();
+        let a0 = moved.segment(0).a;
+        assert_near!(m.transform_point3(a0), DVec3::ZERO, EXACT);
+        for (axis, unit) in [(frame.x, DVec3::X), (frame.y, DVec3::Y), (frame.z, DVec3::Z)] {
+            assert_near!(m.transform_point3(a0 + axis), unit, EXACT);
+        }
+        // plane points and plane coordinates are inverse; the plane is z = 0 in the frame
+        let p = DVec2::new(2.0, -3.0);
+        assert_near!(frame.plane_coordinates(frame.plane_point(p)), p, EXACT);
+        assert_near!(m.transform_point3(frame.plane_point(p)), p.extend(0.0), EXACT);
+        let (dev, still) = (Development::of(&moved), Development::of(&s));
+        for (a, b) in dev.points.iter().zip(&still.points) {
+            assert_near!(*a, *b, EXACT);
+        }
+        for (a, b) in dev.heights.iter().zip(&still.heights) {
+            assert_near!(*a, *b, EXACT);
+        }
+        // flat: x, y of each point in turn
+        let flat: Vec<f64> = dev.points.iter().flat_map(|p| p.to_array()).collect();
+        assert_eq!(dev.flat(), flat);
+    }
+
+    /// A parallel pair has no envelope between its rulings: NaN at both rulings it joins.
+    #[test]
+    fn envelope_radii_are_nan_beside_a_parallel_pair() {
+        let s = RuledSurface::from_flat(&[
+            0.0, 0.0, 0.0, 1.0, 0.0, 0.0, //
+            0.0, 0.1, 1.0, 0.0, 1.0, 1.0, //
+            0.5, 0.1, 2.0, 0.5, 1.0, 2.0, //
+            0.3, 0.0, 2.5, 1.0, 1.0, 2.0, //
+            0.0, 0.4, 3.0, 0.0, -1.0, 3.7,
+        ])
+        .unwrap();
+        assert_eq!(s.invariants().parallel, [false, true, false, false]);
+        let radii = envelope_radii(&s);
+        assert_eq!(radii.len(), 3);
+        assert!(radii[0].is_nan() && radii[1].is_nan(), "{radii:?}");
+        assert!(radii[2].is_finite(), "{radii:?}");
+    }
+
     #[test]
     fn heights_are_running_sums_of_h() {
         let s = four_skew_rulings();

@@ -36,6 +36,14 @@ pub fn de_casteljau<T: Affine>(points: &[T], degree: usize) -> Vec<T> {
 mod tests {
     use super::*;
 
+    /// Degree 1: each edge of the polygon is a piece, split at its midpoint.
+    #[test]
+    fn degree_one_splits_every_edge() {
+        let p = [DVec3::ZERO, DVec3::X * 2.0, DVec3::new(2.0, 4.0, 0.0)];
+        let q = de_casteljau(&p, 1);
+        assert_eq!(q, [p[0], DVec3::X, p[1], DVec3::new(2.0, 2.0, 0.0), p[2]]);
+    }
+
     fn bezier(p: &[DVec3], t: f64) -> DVec3 {
         let mut w = p.to_vec();
         for r in 1..p.len() {

@@ -78,6 +78,19 @@ pub fn four_point<T: Affine>(points: &[T], w: f64, closed: bool) -> Vec<T> {
 mod tests {
     use super::*;
 
+    /// The ghost point continues the polynomial through the points: of degree 0, 1, 2, 3.
+    #[test]
+    fn ghosts_extrapolate_the_polynomial_through_the_points() {
+        // x(k) = 1 + 2k + 3k² − k³ at k = 0, 1, 2, 3; the ghost is x(−1) for the cubic
+        let x = |k: f64| DVec3::new(1.0 + 2.0 * k + 3.0 * k * k - k * k * k, k, 0.0);
+        let p: Vec<DVec3> = (0..4).map(|k| x(k as f64)).collect();
+        assert_eq!(ghost(&p), x(-1.0));
+        assert_eq!(ghost(&p[..1]), p[0]);
+        // the line through two points, the parabola through three: x(−1) of those
+        assert_eq!(ghost(&p[..2]), 2.0 * p[0] - p[1]);
+        assert_eq!(ghost(&[DVec3::ZERO, DVec3::ONE, 4.0 * DVec3::ONE]), DVec3::ONE);
+    }
+
     fn cubic(t: f64) -> DVec3 {
         DVec3::new(t, 0.5 * t * t - t, 0.1 * t * t * t - 0.3 * t * t + 2.0)
     }
