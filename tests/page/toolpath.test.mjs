@@ -56,8 +56,15 @@ test('the milling scene plots the deviation along the path and writes G-code for
   assert.match(g.text, /TRAORI/);
   // the German page says it in German
   await showScene(page, '#scene=milling&lang=de', 'milling');
-  assert.match(await page.locator('.rl-figure svg title').first().textContent(), /Abweichung entlang der Bahn/);
-  assert.match(await page.locator('.rl-controls').innerText(), /Steuerung \(G-Code\)/);
+  // the scene stays (showScene finds it ready at once): wait for the texts, which come with the
+  // German catalogue, loaded on demand (a fresh clone's CI once looked before it arrived)
+  await page.waitForFunction(
+    () =>
+      /Abweichung entlang der Bahn/.test(document.querySelector('.rl-figure svg title')?.textContent ?? '') &&
+      /Steuerung \(G-Code\)/.test(/** @type {HTMLElement} */ (document.querySelector('.rl-controls'))?.innerText ?? ''),
+    null,
+    { timeout: 20000 },
+  );
   assert.deepEqual(problems, []);
   await page.close();
 });
