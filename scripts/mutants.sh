@@ -6,11 +6,12 @@
 # (src/**/*.rs but the bindings in src/wasm/).
 # Two passes: first the fast in-file unit tests (`--lib`) on every mutant, then what they missed
 # once more with the whole native suite (MUTANTS_TESTS, cargo test's arguments; default
-# "--lib --tests", all but the doctests); a timeout counts as caught at once. All files share
-# one copy of the tree and one baseline build per pass; builds use the `mutants` profile (no
-# debug info). Do not edit the sources during a run: the second pass finds mutants by line.
+# "--lib --tests", all but the doctests); a timeout counts as caught at once (the mutant did
+# not pass). All files share one copy of the tree and one baseline build per pass; builds use
+# the `mutants` profile (no debug info). Do not edit the sources during a run: the second pass
+# finds mutants by line.
 # mutants/equivalent.txt names the mutants that change nothing observable, each with its reason:
-# they are listed but not counted; a timeout counts as caught (the mutant did not pass).
+# they are listed but not counted.
 # Results: target/mutants/mutants.out (the first pass: target/mutants/lib/mutants.out) and a
 # line per module in target/mutants/summary.txt.
 set -euo pipefail

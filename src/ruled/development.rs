@@ -190,6 +190,8 @@ mod tests {
         assert_near!(frame.plane_coordinates(frame.plane_point(p)), p, EXACT);
         assert_near!(m.transform_point3(frame.plane_point(p)), p.extend(0.0), EXACT);
         let (dev, still) = (Development::of(&moved), Development::of(&s));
+        assert_eq!((dev.points.len(), dev.heights.len()), (8, 4));
+        assert_eq!((still.points.len(), still.heights.len()), (8, 4));
         for (a, b) in dev.points.iter().zip(&still.points) {
             assert_near!(*a, *b, EXACT);
         }

@@ -86,8 +86,8 @@ mod tests {
         let p: Vec<DVec3> = (0..4).map(|k| x(k as f64)).collect();
         assert_eq!(ghost(&p), x(-1.0));
         assert_eq!(ghost(&p[..1]), p[0]);
-        // the line through two points, the parabola through three: x(−1) of those
-        assert_eq!(ghost(&p[..2]), 2.0 * p[0] - p[1]);
+        // the line through x(0) = (1, 0, 0) and x(1) = (5, 1, 0) at −1; the parabola k² at −1
+        assert_eq!(ghost(&p[..2]), DVec3::new(-3.0, -1.0, 0.0));
         assert_eq!(ghost(&[DVec3::ZERO, DVec3::ONE, 4.0 * DVec3::ONE]), DVec3::ONE);
     }
 
