@@ -39,7 +39,8 @@ pub struct SamplingErrors {
 pub fn sampling_errors(surface: &(impl SmoothRuled + ?Sized), count: usize, ranges: Ranges) -> Result<SamplingErrors> {
     let sampled = surface.sample(count, ranges)?;
     let u = parameters(count, ranges);
-    let h = if count > 1 { u[1] - u[0] } else { 0.0 };
+    // `sample` refuses fewer than 2 rulings
+    let h = u[1] - u[0];
     let inv = if ranges.closed { sampled.invariants_closed() } else { sampled.invariants() };
     // the rulings that have a striction point, and the index of their m_i
     let rulings: Vec<(usize, usize)> =
@@ -82,11 +83,24 @@ pub struct SamplingOrders {
     pub distribution_mean: f64,
 }
 
+/// log₂(coarse/fine): the order of an error that falls from `coarse` to `fine` when the
+/// spacing is halved; NaN unless both are positive (an exact sampling has no order, and a NaN
+/// error none either).
+fn order(coarse: f64, fine: f64) -> f64 {
+    if coarse > 0.0 && fine > 0.0 {
+        (coarse / fine).log2()
+    } else {
+        f64::NAN
+    }
+}
+
 /// The orders of the sampling errors of `surface` at `count` rulings (see [`SamplingOrders`]).
 pub fn sampling_orders(surface: &(impl SmoothRuled + ?Sized), count: usize, ranges: Ranges) -> Result<SamplingOrders> {
+    // the coarse sampling first: it refuses a count of 0 or 1 (2·count − 1 would underflow) and
+    // one above MAX_SAMPLES (2·count could overflow)
+    let coarse = sampling_errors(surface, count, ranges)?;
     let finer = if ranges.closed { 2 * count } else { 2 * count - 1 };
-    let (coarse, fine) = (sampling_errors(surface, count, ranges)?, sampling_errors(surface, finer, ranges)?);
-    let order = |a: f64, b: f64| if a > 0.0 && b > 0.0 { (a / b).log2() } else { f64::NAN };
+    let fine = sampling_errors(surface, finer, ranges)?;
     Ok(SamplingOrders {
         finer,
         footpoint: order(coarse.footpoint, fine.footpoint),
@@ -124,6 +138,35 @@ mod tests {
             .unwrap()
             .midpoint
             .is_nan());
+    }
+
+    #[test]
+    fn an_order_needs_two_positive_errors() {
+        assert_eq!(order(8.0, 2.0), 2.0);
+        assert_eq!(order(3.0, 6.0), -1.0);
+        assert_eq!(order(1.0, 1.0), 0.0);
+        for (coarse, fine) in [(0.0, 1.0), (1.0, 0.0), (0.0, 0.0), (-4.0, -1.0), (f64::NAN, 1.0), (1.0, f64::NAN)] {
+            assert!(order(coarse, fine).is_nan(), "order({coarse}, {fine})");
+        }
+    }
+
+    /// Fewer than two rulings have no errors to measure: refused, like the sampling.
+    #[test]
+    fn one_ruling_is_refused() {
+        let hyp = AnalyticSurface::ALL[0].clone();
+        for closed in [false, true] {
+            let r = Ranges { closed, ..hyp.ranges() };
+            for count in [0, 1] {
+                assert!(matches!(
+                    sampling_errors(&hyp, count, r),
+                    Err(crate::error::Error::TooFew { what: "rulings", got, min: 2 }) if got == count
+                ));
+                assert!(matches!(
+                    sampling_orders(&hyp, count, r),
+                    Err(crate::error::Error::TooFew { what: "rulings", got, min: 2 }) if got == count
+                ));
+            }
+        }
     }
 
     /// On the hyperboloid of Example 1 the midpoint errors fall 4× when N doubles (second
