@@ -307,4 +307,163 @@ mod tests {
         assert!(matches!(s.map_points(|_| DVec3::ZERO), Err(Error::ZeroLength { ruling: 0 })));
         assert!(matches!(s.map_points(|p| p * 1e300), Err(Error::OutOfRange { .. })));
     }
+
+    /// Rulings from (0, i, 0) along x, of lengths 1, 2, 3, …
+    fn ladder(n: usize) -> RuledSurface {
+        RuledSurface::new(
+            (0..n)
+                .map(|i| {
+                    let y = i as f64;
+                    Segment::new(DVec3::new(0.0, y, 0.0), DVec3::new(y + 1.0, y, 0.0))
+                })
+                .collect(),
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn from_points_counts_rulings_as_pairs_of_points() {
+        let p = |x: f64| DVec3::new(x, 0.0, 1.0);
+        assert!(matches!(
+            RuledSurface::from_points(vec![p(0.0), p(1.0), p(2.0)]),
+            Err(Error::BadLength { what: "endpoints", len: 3, multiple: 2 })
+        ));
+        assert!(matches!(RuledSurface::from_points(vec![p(0.0), p(1.0)]), Err(Error::TooFew { got: 1, min: 2, .. })));
+        let s = RuledSurface::from_points(vec![p(0.0), p(1.0), p(2.0), p(4.0)]).unwrap();
+        assert_eq!((s.len(), s.segment(1).b), (2, p(4.0)));
+        assert!(!s.is_empty());
+        assert!(matches!(
+            RuledSurface::from_points(vec![p(0.0), p(f64::NAN), p(2.0), p(4.0)]),
+            Err(Error::NonFinite { index: 3, .. })
+        ));
+    }
+
+    #[test]
+    fn a_short_ruling_is_kept_until_its_length_is_rounding() {
+        // |b − a| = 1e-9 beside |a| = 1: short, but a billion times above ZERO_LENGTH_REL
+        let a = DVec3::new(1.0, 0.0, 0.0);
+        let short = vec![a, a + DVec3::new(0.0, 1e-9, 0.0), a, a + DVec3::Z];
+        assert!(RuledSurface::from_points(short).is_ok());
+        let rounding = vec![a, a + DVec3::new(0.0, 1e-12, 0.0), a, a + DVec3::Z];
+        assert_eq!(RuledSurface::from_points(rounding), Err(Error::ZeroLength { ruling: 0 }));
+    }
+
+    #[test]
+    fn f32_coordinates_directions_and_mean_length() {
+        let s = ladder(3);
+        assert_eq!(
+            s.flat_f32(),
+            [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 2.0, 1.0, 0.0, 0.0, 2.0, 0.0, 3.0, 2.0, 0.0]
+        );
+        assert_eq!(s.directions(), [DVec3::X; 3]);
+        // lengths 1, 2, 3
+        assert_eq!(s.mean_length(), 2.0);
+        assert_eq!(ladder(2).mean_length(), 1.5);
+    }
+
+    #[test]
+    fn slide_moves_each_end_along_its_ruling() {
+        let s = ladder(2);
+        let slid = s.slide(&[0.5, -0.25, -1.0, 2.0]).unwrap();
+        assert_eq!(slid.segment(0), Segment::new(DVec3::new(0.5, 0.0, 0.0), DVec3::new(0.75, 0.0, 0.0)));
+        assert_eq!(slid.segment(1), Segment::new(DVec3::new(-1.0, 1.0, 0.0), DVec3::new(4.0, 1.0, 0.0)));
+        // a slide that makes a ruling's ends meet is refused like any zero-length ruling
+        assert_eq!(s.slide(&[0.0, -1.0, 0.0, 0.0]), Err(Error::ZeroLength { ruling: 0 }));
+        let wrong = s.slide(&[0.0; 3]).unwrap_err();
+        assert_eq!(wrong.code(), "invalid-argument");
+        assert!(wrong.to_string().contains("need 2 numbers per ruling (4 for 2 rulings), got 3"), "{wrong}");
+        assert!(s.slide(&[0.0; 5]).is_err());
+        let nan = s.slide(&[0.0, f64::NAN, 0.0, 0.0]).unwrap_err();
+        assert!(nan.to_string().contains("every amount must be a finite number"), "{nan}");
+    }
+
+    #[test]
+    fn angle_between_corresponding_rulings_as_unoriented_lines() {
+        let s = ladder(3);
+        // ruling 1 turned by 30° about z, ruling 2 reversed (the same line)
+        let turned = RuledSurface::new(vec![
+            s.segment(0),
+            Segment::new(DVec3::new(0.0, 1.0, 0.0), DVec3::new(3f64.sqrt() / 2.0, 1.5, 0.0)),
+            Segment::new(s.segment(2).b, s.segment(2).a),
+        ])
+        .unwrap();
+        assert!((s.max_angle_to(&turned).unwrap() - std::f64::consts::FRAC_PI_6).abs() < 1e-15);
+        assert_eq!(s.max_angle_to(&s).unwrap(), 0.0);
+        let e = s.max_angle_to(&ladder(2)).unwrap_err();
+        assert!(e.to_string().contains("needs 3 rulings, got 2"), "{e}");
+        assert!(s.max_angle_to(&ladder(4)).is_err());
+    }
+
+    #[test]
+    fn edge_change_of_the_boundary_polygons() {
+        // a_i = (0, i, 0), b_i = (i + 1, i, 0): edges a_i a_{i+1} of length 1, b_i b_{i+1} of √2
+        let s = ladder(3);
+        assert_eq!(s.max_edge_change(&s).unwrap(), 0.0);
+        // b_2 moved to (3, 2, 1): the edge b_1 b_2 grows from √2 to √3
+        let mut p = s.points().to_vec();
+        p[5].z = 1.0;
+        let moved = RuledSurface::from_points(p).unwrap();
+        let want = (3f64.sqrt() - 2f64.sqrt()) / 2f64.sqrt();
+        assert!((s.max_edge_change(&moved).unwrap() - want).abs() < 1e-15);
+        // a_1 moved to (0, 0.5, 0): a_0 a_1 shrinks to ½ and a_1 a_2 grows to 1.5
+        let mut p = s.points().to_vec();
+        p[2].y = 0.5;
+        let moved = RuledSurface::from_points(p).unwrap();
+        assert_eq!(s.max_edge_change(&moved).unwrap(), 0.5);
+        assert_eq!(moved.max_edge_change(&s).unwrap(), 1.0);
+        // an edge of length 0 has no relative change: skipped
+        let doubled = RuledSurface::from_points(vec![DVec3::ZERO, DVec3::X, DVec3::ZERO, DVec3::Y]).unwrap();
+        let other = RuledSurface::from_points(vec![DVec3::ZERO, DVec3::X, DVec3::Z, DVec3::Y * 3.0]).unwrap();
+        // (a_0 a_1 of length 0 becomes 1; b_0 b_1 grows from √2 to √10)
+        assert!((doubled.max_edge_change(&other).unwrap() - (5f64.sqrt() - 1.0)).abs() < 1e-15);
+        assert!(s.max_edge_change(&ladder(2)).unwrap_err().to_string().contains("needs 3 rulings, got 2"));
+    }
+
+    #[test]
+    fn inserted_rulings_are_those_off_the_stride() {
+        let s = ladder(7);
+        let ys = |stride| s.inserted(stride).iter().map(|r| r.a.y).collect::<Vec<_>>();
+        assert_eq!(ys(2), [1.0, 3.0, 5.0]);
+        assert_eq!(ys(4), [1.0, 2.0, 3.0, 5.0, 6.0]);
+        assert_eq!(ys(1), Vec::<f64>::new());
+        assert_eq!(ys(0), Vec::<f64>::new());
+    }
+
+    #[test]
+    fn counts_are_checked_at_both_ends() {
+        assert!(matches!(check_count(1), Err(Error::TooFew { got: 1, min: 2, .. })));
+        assert!(check_count(2).is_ok());
+        assert!(check_count(MAX_RULINGS).is_ok());
+        assert!(matches!(check_count(MAX_RULINGS + 1), Err(Error::TooMany { max: MAX_RULINGS, .. })));
+    }
+
+    #[test]
+    fn a_polygon_from_flat_coordinates() {
+        assert_eq!(
+            points_from_flat(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]).unwrap(),
+            [DVec3::new(1.0, 2.0, 3.0), DVec3::new(4.0, 5.0, 6.0)]
+        );
+        assert!(matches!(points_from_flat(&[0.0; 7]), Err(Error::BadLength { len: 7, multiple: 3, .. })));
+        assert!(matches!(points_from_flat(&[0.0; 3]), Err(Error::TooFew { got: 1, min: 2, .. })));
+        assert!(matches!(points_from_flat(&[]), Err(Error::TooFew { got: 0, .. })));
+        assert!(matches!(
+            points_from_flat(&[0.0, 0.0, 0.0, 0.0, f64::NAN, 0.0]),
+            Err(Error::NonFinite { index: 4, .. })
+        ));
+        assert_eq!(points_from_flat(&vec![0.0; 3 * MAX_RULINGS]).unwrap().len(), MAX_RULINGS);
+        assert!(matches!(
+            points_from_flat(&vec![0.0; 3 * MAX_RULINGS + 3]),
+            Err(Error::TooMany { got, max: MAX_RULINGS, .. }) if got == MAX_RULINGS + 1
+        ));
+    }
+
+    #[test]
+    fn a_bad_segment_is_named_by_its_index_in_the_flat_layout() {
+        let mut segments: Vec<Segment> = ladder(3).segments().collect();
+        segments[2].b.y = f64::NAN;
+        // segment 2's b.y is number 6·2 + 4 of the flat coordinates
+        assert!(matches!(RuledSurface::new(segments.clone()), Err(Error::NonFinite { index: 16, .. })));
+        segments[2].b.y = 1e300;
+        assert!(matches!(RuledSurface::new(segments), Err(Error::OutOfRange { index: 16, .. })));
+    }
 }
