@@ -14,19 +14,30 @@
 # they are listed but not counted.
 # Results: target/mutants/mutants.out (the first pass: target/mutants/lib/mutants.out) and a
 # line per module in target/mutants/summary.txt.
+# `scripts/mutants.sh --again` (after writing tests for what was missed): the second pass once
+# more over the last run's missed mutants alone, then the summary. Tests may be added, but the
+# code above them must not move: mutants are found by line.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 command -v cargo-mutants >/dev/null || cargo install cargo-mutants --version 27.1.0 --locked
-files=("$@")
-if [ ${#files[@]} -eq 0 ]; then
-  mapfile -t files < <(cargo mutants --list-files | grep -v '^src/wasm/' | sort)
+out=target/mutants
+again=0
+if [ "${1:-}" = --again ]; then
+  again=1
+  [ -s "$out/files" ] || { echo "mutants: --again needs an earlier run ($out/files)" >&2; exit 1; }
+  mapfile -t files < "$out/files"
+else
+  files=("$@")
+  if [ ${#files[@]} -eq 0 ]; then
+    mapfile -t files < <(cargo mutants --list-files | grep -v '^src/wasm/' | sort)
+  fi
+  rm -rf "$out"
+  mkdir -p "$out/lib"
+  printf '%s\n' "${files[@]}" > "$out/files"
 fi
 equivalent=mutants/equivalent.txt
 read -r -a tests <<< "${MUTANTS_TESTS:---lib --tests}"
-out=target/mutants
-rm -rf "$out"
-mkdir -p "$out/lib"
 selection=()
 for file in "${files[@]}"; do selection+=(--file "$file"); done
 common=(--no-shuffle --profile mutants "${selection[@]}")
@@ -38,41 +49,44 @@ run() {
   case $code in 0 | 2 | 3) ;; *) echo "mutants: cargo mutants failed (exit $code)" >&2; exit "$code" ;; esac
 }
 # the equivalent mutants that the files still have; an entry that matches none is stale
-cargo mutants --list "${selection[@]}" | sort -u > "$out/all"
+[ $again = 1 ] || cargo mutants --list "${selection[@]}" | sort -u > "$out/all"
 grep -v '^#' "$equivalent" | sed 's/  *#.*//' | sort -u > "$out/named"
 for file in "${files[@]}"; do grep "^$file:" "$out/named" || true; done | sort -u > "$out/equivalent"
 comm -23 "$out/equivalent" "$out/all" | sed "s#^#mutants: stale entry in $equivalent: #" >&2
-run --output "$out/lib" "${common[@]}" -- --lib
 first="$out/lib/mutants.out"
+[ $again = 1 ] || run --output "$out/lib" "${common[@]}" -- --lib
 touch "$first/missed.txt" "$first/timeout.txt" "$first/caught.txt" "$first/unviable.txt"
-second=0
-if [ -s "$first/missed.txt" ]; then
-  # the second pass: only what the unit tests let through, with every native test (a timeout
-  # is caught already, so it is not tried again)
-  cp -r "$first" "$out/mutants.out"
-  cat "$first/timeout.txt" >> "$out/mutants.out/previously_caught.txt"
-  run --output "$out" "${common[@]}" --iterate -- "${tests[@]}"
-  second=1
-fi
 result="$first"
-[ $second = 0 ] || result="$out/mutants.out"
-touch "$result/missed.txt" "$result/timeout.txt" "$result/caught.txt"
+[ ! -d "$out/mutants.out" ] || result="$out/mutants.out"
+if [ -s "$result/missed.txt" ]; then
+  # the second pass: only what the unit tests (or, again, the last second pass) let through,
+  # with every native test (a timeout is caught already, so it is not tried again)
+  if [ "$result" = "$first" ]; then
+    cp -r "$first" "$out/mutants.out"
+    cat "$first/timeout.txt" >> "$out/mutants.out/previously_caught.txt"
+  else
+    cat "$result/timeout.txt" >> "$result/previously_caught.txt"
+  fi
+  run --output "$out" "${common[@]}" --iterate -- "${tests[@]}"
+  result="$out/mutants.out"
+fi
+touch "$result/missed.txt"
 count() { { grep "^$1:" "$2" || true; } | sort -u | wc -l; }
+: > "$out/summary.txt"
 status=0
+# every viable mutant ends caught, timed out or missed, and the first pass sorts out the
+# unviable ones: what is neither unviable nor missed in the end was caught
 for file in "${files[@]}"; do
-  caught=$(count "$file" "$first/caught.txt")
-  [ $second = 0 ] || caught=$((caught + $(count "$file" "$result/caught.txt")))
+  total=$(count "$file" "$out/all")
   unviable=$(count "$file" "$first/unviable.txt")
-  timeout=$(count "$file" "$first/timeout.txt")
-  [ $second = 0 ] || timeout=$((timeout + $(count "$file" "$result/timeout.txt")))
   missed_all=$({ grep "^$file:" "$result/missed.txt" || true; } | sort -u)
   missed=$(comm -23 <(printf '%s\n' "$missed_all" | sed '/^$/d') "$out/equivalent" | sed '/^$/d')
   n_missed=$(printf '%s' "$missed" | grep -c . || true)
   equiv=$(comm -12 <(printf '%s\n' "$missed_all" | sed '/^$/d') "$out/equivalent" | grep -c . || true)
-  viable=$((caught + n_missed + timeout))
-  total=$(count "$file" "$out/all")
-  percent=$(awk -v c=$((caught + timeout)) -v v="$viable" 'BEGIN { printf "%.1f", v ? 100 * c / v : 100 }')
-  echo "mutants: $file: $percent % caught ($((caught + timeout)) of $viable viable; $equiv equivalent, $unviable unviable; $total in all)" | tee -a "$out/summary.txt"
+  caught=$((total - unviable - n_missed - equiv))
+  viable=$((caught + n_missed))
+  percent=$(awk -v c="$caught" -v v="$viable" 'BEGIN { printf "%.1f", v ? 100 * c / v : 100 }')
+  echo "mutants: $file: $percent % caught ($caught of $viable viable; $equiv equivalent, $unviable unviable; $total in all)" | tee -a "$out/summary.txt"
   if [ "$n_missed" -gt 0 ]; then
     printf '%s\n' "$missed" | sed 's/^/  missed: /'
     status=1

@@ -373,6 +373,9 @@ mod tests {
         assert_eq!(wrong.code(), "invalid-argument");
         assert!(wrong.to_string().contains("need 2 numbers per ruling (4 for 2 rulings), got 3"), "{wrong}");
         assert!(s.slide(&[0.0; 5]).is_err());
+        // 2 numbers per ruling, not 2 more than the rulings
+        assert!(ladder(3).slide(&[0.0; 5]).is_err());
+        assert_eq!(ladder(3).slide(&[0.0; 6]).unwrap(), ladder(3));
         let nan = s.slide(&[0.0, f64::NAN, 0.0, 0.0]).unwrap_err();
         assert!(nan.to_string().contains("every amount must be a finite number"), "{nan}");
     }

@@ -277,3 +277,48 @@ fn checked(out: Vec<Pair>, check: Check) -> (Vec<Pair>, bool) {
     let passed = checks.passed();
     (out, passed)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ruled::RuledSurface;
+    use glam::DVec3;
+
+    /// Chaikin's step on four parallel rulings a_i = (x, 0, i), b_i = a_i + (0, ℓ·(i + 1), 0):
+    /// whether its checks pass, and whether the validation accepts the same rulings.
+    fn chaikin_checks(x: f64, length: f64) -> (bool, bool) {
+        let strip: Vec<Pair> = (0..4)
+            .map(|i| {
+                let a = DVec3::new(x, 0.0, i as f64);
+                Pair(a, a + DVec3::new(0.0, length * (i + 1) as f64, 0.0))
+            })
+            .collect();
+        let (out, passed) = chaikin(&strip, false, Check::New);
+        let valid = RuledSurface::from_points(out.iter().flat_map(|p| [p.0, p.1]).collect()).is_ok();
+        (passed, valid)
+    }
+
+    /// The length test is the validation's: rulings 10⁻⁹ long beside |a| = 1 are short but
+    /// certainly valid (the limit is 10⁻¹² of |a|), and pass without the full validation.
+    #[test]
+    fn short_rulings_the_validation_accepts_pass_the_checks() {
+        assert_eq!(chaikin_checks(1.0, 1e-9), (true, true));
+        assert_eq!(chaikin_checks(1.0, 1.0), (true, true));
+        // 10⁻¹³ of |a|: too short for the validation, so the checks must not pass
+        assert_eq!(chaikin_checks(1.0, 1e-13), (false, false));
+    }
+
+    /// The size test: |a|² below MAX_COORD²·(1 − 10⁻¹²)² passes; within that margin of
+    /// MAX_COORD (where rounding of |a|² could hide a coordinate above it) the full validation
+    /// decides, and it accepts these rulings.
+    #[test]
+    fn coordinates_near_the_limit_are_left_to_the_validation() {
+        // a ruling 10⁻¹⁰ of |a| long: long enough at every size here
+        let length = |x: f64| x * 1e-10;
+        let far = MAX_COORD * (1.0 - 1e-11);
+        assert_eq!(chaikin_checks(far, length(far)), (true, true));
+        let near = MAX_COORD * (1.0 - 7.5e-13);
+        assert_eq!(chaikin_checks(near, length(near)), (false, true));
+        assert_eq!(chaikin_checks(MAX_COORD, length(MAX_COORD)), (false, true));
+    }
+}

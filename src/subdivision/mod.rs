@@ -211,4 +211,113 @@ mod tests {
         assert!(Scheme::BSpline { degree: 0 }.validate().is_err());
         assert!(Scheme::Variational { n: 2, variant: Variant::Coupled }.validate().is_err());
     }
+
+    #[test]
+    fn parameters_are_checked_at_both_ends() {
+        let ok = |s: Scheme| s.validate().is_ok();
+        assert!((1..=MAX_BSPLINE_DEGREE).all(|degree| ok(Scheme::BSpline { degree })));
+        assert!(!ok(Scheme::BSpline { degree: MAX_BSPLINE_DEGREE + 1 }));
+        for w in [-0.25, 0.0, 0.0625, 0.25] {
+            assert!(ok(Scheme::FourPoint { w }), "w = {w}");
+        }
+        for w in [-0.2501, 0.2501, f64::INFINITY] {
+            assert!(!ok(Scheme::FourPoint { w }), "w = {w}");
+        }
+        for (n, valid) in [(3, true), (1000, true), (1001, false), (0, false)] {
+            assert_eq!(ok(Scheme::Variational { n, variant: Variant::Literal }), valid, "n = {n}");
+        }
+        assert!(ok(Scheme::Chaikin) && ok(Scheme::Bezier));
+        let e = Scheme::BSpline { degree: 8 }.validate().unwrap_err();
+        assert_eq!((e.code(), e.to_string().contains("from 1 to 7, got 8")), ("invalid-argument", true), "{e}");
+    }
+
+    #[test]
+    fn interpolatory_schemes_keep_the_old_points() {
+        let variational = Scheme::Variational { n: 4, variant: Variant::Coupled };
+        assert!(Scheme::FourPoint { w: 0.0625 }.is_interpolatory() && variational.is_interpolatory());
+        assert!(![Scheme::Chaikin, Scheme::BSpline { degree: 3 }, Scheme::Bezier].iter().any(Scheme::is_interpolatory));
+    }
+
+    /// Points after one step, open and closed, from the fewest each scheme takes.
+    #[test]
+    fn points_after_one_step() {
+        let four = Scheme::FourPoint { w: 0.0625 };
+        let variational = Scheme::Variational { n: 4, variant: Variant::Coupled };
+        let open = [
+            (Scheme::Chaikin, 2, 2),
+            (Scheme::Chaikin, 5, 8),
+            (Scheme::BSpline { degree: 1 }, 2, 3),
+            (Scheme::BSpline { degree: 3 }, 2, 1),
+            (Scheme::BSpline { degree: 4 }, 3, 2),
+            (Scheme::BSpline { degree: 7 }, 4, 1),
+            (Scheme::BSpline { degree: 7 }, 9, 11),
+            (Scheme::Bezier, 2, 3),
+            (Scheme::Bezier, 5, 9),
+            (four, 2, 3),
+            (four, 5, 9),
+            (variational, 5, 9),
+        ];
+        for (scheme, n, want) in open {
+            assert_eq!(scheme.output_len(n, false).unwrap(), want, "{scheme:?} from {n}");
+        }
+        for (scheme, n, min) in [
+            (Scheme::Chaikin, 1, 2),
+            (Scheme::BSpline { degree: 4 }, 2, 3),
+            (Scheme::BSpline { degree: 7 }, 3, 4),
+            (Scheme::Bezier, 1, 2),
+            (four, 1, 2),
+        ] {
+            assert_eq!(
+                scheme.output_len(n, false),
+                Err(Error::TooFew { what: "points (rulings) for this scheme", got: n, min })
+            );
+        }
+        for scheme in [Scheme::Chaikin, Scheme::BSpline { degree: 5 }, four] {
+            assert_eq!(scheme.output_len(3, true).unwrap(), 6, "{scheme:?}");
+            assert_eq!(scheme.output_len(7, true).unwrap(), 14, "{scheme:?}");
+            assert!(matches!(scheme.output_len(2, true), Err(Error::TooFew { got: 2, min: 3, .. })));
+        }
+        for scheme in [Scheme::Bezier, variational] {
+            assert!(matches!(scheme.output_len(5, true), Err(Error::InvalidParameter { name: "closed", .. })));
+        }
+    }
+
+    #[test]
+    fn points_after_steps_up_to_the_limits() {
+        assert_eq!(Scheme::FourPoint { w: 0.0625 }.output_len_after(5, false, 3).unwrap(), 33);
+        assert_eq!(Scheme::Chaikin.output_len_after(5, true, 0).unwrap(), 5);
+        // exactly MAX_RULINGS is allowed, one more is not
+        assert_eq!(Scheme::Chaikin.output_len_after(MAX_RULINGS / 4, true, 2).unwrap(), MAX_RULINGS);
+        assert_eq!(
+            Scheme::Bezier.output_len_after(MAX_RULINGS / 2 + 1, false, 1),
+            Err(Error::TooMany {
+                what: "points of one Bézier control polygon (its degree + 1)",
+                got: MAX_RULINGS / 2 + 1,
+                max: MAX_BEZIER_POINTS
+            })
+        );
+        assert!(matches!(
+            Scheme::FourPoint { w: 0.0 }.output_len_after(MAX_RULINGS / 2 + 1, false, 1),
+            Err(Error::TooMany { what: "rulings after subdivision", got, .. }) if got == MAX_RULINGS + 1
+        ));
+        // the Bézier limit is on its control polygon, not on other schemes' polygons
+        assert_eq!(Scheme::Bezier.output_len_after(MAX_BEZIER_POINTS, false, 1).unwrap(), 2 * MAX_BEZIER_POINTS - 1);
+        assert_eq!(Scheme::Chaikin.output_len_after(MAX_BEZIER_POINTS + 1, false, 1).unwrap(), 2 * MAX_BEZIER_POINTS);
+    }
+
+    #[test]
+    fn steps_up_to_the_limit() {
+        assert!(check_steps(0).is_ok() && check_steps(MAX_SUBDIVISION_STEPS).is_ok());
+        let e = check_steps(MAX_SUBDIVISION_STEPS + 1).unwrap_err();
+        assert!(e.to_string().contains("from 0 to 24, got 25"), "{e}");
+    }
+
+    /// One de Casteljau step of a quadratic Bézier polygon: the halves' control points.
+    #[test]
+    fn a_bezier_polygon_of_degree_two() {
+        let p = [DVec3::ZERO, DVec3::new(1.0, 2.0, 0.0), DVec3::new(2.0, 0.0, 0.0)];
+        let q = subdivide_polygon(&p, Scheme::Bezier, false, 1).unwrap();
+        let want = [(0.0, 0.0), (0.5, 1.0), (1.0, 1.0), (1.5, 1.0), (2.0, 0.0)].map(|(x, y)| DVec3::new(x, y, 0.0));
+        assert_eq!(q, want);
+    }
 }

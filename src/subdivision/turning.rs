@@ -152,4 +152,27 @@ mod tests {
         assert!(turning_angles(&p[..2], Scheme::Chaikin, true, 1).is_err());
         assert_eq!(turning_angles(&p, Scheme::Chaikin, false, 0).unwrap().len(), 1);
     }
+
+    #[test]
+    fn open_polygons_do_not_wrap_and_two_points_do_not_close() {
+        let v = |x: f64, y: f64| DVec3::new(x, y, 0.0);
+        // edges +x, +y, −x: two right angles; the first and last edges (π apart) are not a pair
+        let hook = [v(0.0, 0.0), v(1.0, 0.0), v(1.0, 1.0), v(0.0, 1.0)];
+        assert_near!(largest_turning_angle(&hook, false), FRAC_PI_2, EXACT);
+        assert_near!(largest_turning_angle(&hook, true), FRAC_PI_2, EXACT);
+        // two points closed would run there and back: read as the open segment, no angle
+        assert_eq!(largest_turning_angle(&hook[..2], true), 0.0);
+        assert_eq!(largest_turning_angle(&hook[..1], true), 0.0);
+    }
+
+    #[test]
+    fn edges_of_zero_length_are_skipped_at_any_scale() {
+        let v = |x: f64, y: f64| DVec3::new(x, y, 0.0);
+        // a repeated vertex at the origin: the angle is the one between −x and +y
+        let corner = [v(1.0, 0.0), v(0.0, 0.0), v(0.0, 0.0), v(0.0, 1.0)];
+        assert_near!(largest_turning_angle(&corner, false), FRAC_PI_2, EXACT);
+        // a right angle 1e-10 across is resolved, not rounding
+        let tiny: Vec<DVec3> = corner.iter().map(|p| *p * 1e-10).collect();
+        assert_near!(largest_turning_angle(&tiny, false), FRAC_PI_2, EXACT);
+    }
 }
