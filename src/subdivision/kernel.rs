@@ -284,28 +284,35 @@ mod tests {
     use crate::ruled::RuledSurface;
     use glam::DVec3;
 
-    /// Chaikin's step on four parallel rulings a_i = (x, 0, i), b_i = a_i + (0, ℓ·(i + 1), 0):
-    /// whether its checks pass, and whether the validation accepts the same rulings.
-    fn chaikin_checks(x: f64, length: f64) -> (bool, bool) {
-        let strip: Vec<Pair> = (0..4)
+    /// The kernels on six parallel rulings a_i = (x, 0, i), b_i = a_i + (0, ℓ·(i + 1), 0), one
+    /// step each (the four-point scheme's kernel takes five rulings or more): whether each one's
+    /// checks pass, and whether the validation accepts the same rulings.
+    fn checks(x: f64, length: f64) -> [(bool, bool); 3] {
+        let strip: Vec<Pair> = (0..6)
             .map(|i| {
                 let a = DVec3::new(x, 0.0, i as f64);
                 Pair(a, a + DVec3::new(0.0, length * (i + 1) as f64, 0.0))
             })
             .collect();
-        let (out, passed) = chaikin(&strip, false, Check::New);
-        let valid = RuledSurface::from_points(out.iter().flat_map(|p| [p.0, p.1]).collect()).is_ok();
-        (passed, valid)
+        [
+            chaikin(&strip, false, Check::New),
+            four_point(&strip, 0.0625, false, Check::New),
+            bspline(&strip, 3, false, Check::New),
+        ]
+        .map(|(out, passed)| {
+            let valid = RuledSurface::from_points(out.iter().flat_map(|p| [p.0, p.1]).collect()).is_ok();
+            (passed, valid)
+        })
     }
 
     /// The length test is the validation's: rulings 10⁻⁹ long beside |a| = 1 are short but
     /// certainly valid (the limit is 10⁻¹² of |a|), and pass without the full validation.
     #[test]
     fn short_rulings_the_validation_accepts_pass_the_checks() {
-        assert_eq!(chaikin_checks(1.0, 1e-9), (true, true));
-        assert_eq!(chaikin_checks(1.0, 1.0), (true, true));
+        assert_eq!(checks(1.0, 1e-9), [(true, true); 3]);
+        assert_eq!(checks(1.0, 1.0), [(true, true); 3]);
         // 10⁻¹³ of |a|: too short for the validation, so the checks must not pass
-        assert_eq!(chaikin_checks(1.0, 1e-13), (false, false));
+        assert_eq!(checks(1.0, 1e-13), [(false, false); 3]);
     }
 
     /// The size test: |a|² below MAX_COORD²·(1 − 10⁻¹²)² passes; within that margin of
@@ -316,9 +323,9 @@ mod tests {
         // a ruling 10⁻¹⁰ of |a| long: long enough at every size here
         let length = |x: f64| x * 1e-10;
         let far = MAX_COORD * (1.0 - 1e-11);
-        assert_eq!(chaikin_checks(far, length(far)), (true, true));
+        assert_eq!(checks(far, length(far)), [(true, true); 3]);
         let near = MAX_COORD * (1.0 - 7.5e-13);
-        assert_eq!(chaikin_checks(near, length(near)), (false, true));
-        assert_eq!(chaikin_checks(MAX_COORD, length(MAX_COORD)), (false, true));
+        assert_eq!(checks(near, length(near)), [(false, true); 3]);
+        assert_eq!(checks(MAX_COORD, length(MAX_COORD)), [(false, true); 3]);
     }
 }

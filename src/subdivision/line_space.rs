@@ -149,4 +149,41 @@ mod tests {
         assert!(m.distance_to(o) < 1e-15);
         assert!((m.dir - DVec3::new(1.0, 1.0, 0.0).normalize()).length() < 1e-15);
     }
+
+    /// Rulings through (0, i, 0) turning about y, of lengths 1, 2, 3, 4, all pointing to +x:
+    /// refined in line space, they are cut to the mean length 2.5 and keep pointing to +x.
+    #[test]
+    fn refined_lines_get_the_mean_length_and_keep_their_orientation() {
+        let segments = (0..4)
+            .map(|i| {
+                let (a, t) = (DVec3::new(0.0, i as f64, 0.0), 0.3 * i as f64);
+                Segment::new(a, a + (i + 1) as f64 * DVec3::new(t.cos(), 0.0, t.sin()))
+            })
+            .collect();
+        let s = RuledSurface::new(segments).unwrap();
+        for scheme in [Scheme::Chaikin, Scheme::FourPoint { w: 0.0625 }] {
+            let r = subdivide_lines(&s, scheme, false, 2, None).unwrap();
+            for seg in r.segments() {
+                assert!((seg.length() - 2.5).abs() < 1e-12, "{scheme:?}: {}", seg.length());
+                assert!(seg.line().dir.x > 0.5, "{scheme:?}: {}", seg.line().dir);
+            }
+            let r = subdivide_lines(&s, scheme, false, 1, Some(0.5)).unwrap();
+            assert!(r.segments().all(|seg| (seg.length() - 0.5).abs() < 1e-13));
+        }
+    }
+
+    /// A line perpendicular to its predecessor keeps the orientation it was given (neither sign
+    /// makes an acute angle): lines along x, y, x give Chaikin's ¾ x + ¼ y first, not ¾ x − ¼ y.
+    #[test]
+    fn a_perpendicular_line_keeps_its_orientation() {
+        let segments = [DVec3::X, DVec3::Y, DVec3::X]
+            .iter()
+            .enumerate()
+            .map(|(i, &e)| Segment::new(DVec3::new(0.0, 0.0, i as f64), DVec3::new(0.0, 0.0, i as f64) + e))
+            .collect();
+        let s = RuledSurface::new(segments).unwrap();
+        let r = subdivide_lines(&s, Scheme::Chaikin, false, 1, None).unwrap();
+        let want = DVec3::new(3.0, 1.0, 0.0).normalize();
+        assert!((r.segment(0).line().dir - want).length() < 1e-15, "{}", r.segment(0).line().dir);
+    }
 }
