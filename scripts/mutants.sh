@@ -25,7 +25,9 @@ out=target/mutants
 again=0
 if [ "${1:-}" = --again ]; then
   again=1
-  [ -s "$out/files" ] || { echo "mutants: --again needs an earlier run ($out/files)" >&2; exit 1; }
+  [ $# -eq 1 ] || { echo "mutants: --again takes no files (it re-tries the last run's)" >&2; exit 1; }
+  [ -s "$out/files" ] && [ -s "$out/all" ] && [ -d "$out/lib/mutants.out" ] ||
+    { echo "mutants: --again needs an earlier run in $out" >&2; exit 1; }
   mapfile -t files < "$out/files"
 else
   files=("$@")
@@ -70,7 +72,13 @@ if [ -s "$result/missed.txt" ]; then
   run --output "$out" "${common[@]}" --iterate -- "${tests[@]}"
   result="$out/mutants.out"
 fi
-touch "$result/missed.txt"
+# every mutant has an outcome (an interrupted run would otherwise count as caught below)
+touch "$result"/{caught,missed,timeout,unviable,previously_caught}.txt
+untried=$(comm -23 "$out/all" <(sort -u "$result"/{caught,missed,timeout,unviable,previously_caught}.txt) | grep -c . || true)
+if [ "$untried" -gt 0 ]; then
+  echo "mutants: $untried mutants have no outcome (an interrupted run?): run again" >&2
+  exit 1
+fi
 count() { { grep "^$1:" "$2" || true; } | sort -u | wc -l; }
 : > "$out/summary.txt"
 status=0

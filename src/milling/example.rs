@@ -75,4 +75,68 @@ mod tests {
             assert!(((pose.tip + 0.25 * pose.axis) - c).length() < 1e-15);
         }
     }
+
+    #[test]
+    fn the_part_surface_at_known_points() {
+        use std::f64::consts::{FRAC_PI_2, FRAC_PI_6};
+        // 0.3 · sin x · cos 0.7y: sin π/6 = ½, cos 0 = 1, cos(0.7 · π/1.4) = cos π/2 = 0
+        assert_eq!(part_height(FRAC_PI_6, 0.0), 0.3 * 0.5);
+        assert_eq!(part_height(-FRAC_PI_2, 0.0), -0.3);
+        assert!(part_height(FRAC_PI_2, FRAC_PI_2 / 0.7).abs() < 1e-16);
+        assert!((part_height(FRAC_PI_2, 1.0) - 0.3 * 0.7f64.cos()).abs() < 1e-16);
+    }
+
+    /// The grid runs over x ∈ [−0.4, 6.4], y ∈ [−2.2, 2.2], y fastest, on the part surface.
+    #[test]
+    fn the_part_mesh_covers_the_part() {
+        let m = part_mesh(5, 3);
+        assert_eq!(m.positions.len(), 15);
+        assert_eq!(m.indices.len(), 6 * 4 * 2);
+        let xy = |k: usize| (m.positions[k].x, m.positions[k].y);
+        assert_eq!(xy(0), (-0.4, -2.2));
+        assert_eq!(xy(1), (-0.4, 0.0));
+        assert!((xy(3).0 - 1.3).abs() < 1e-15 && xy(3).1 == -2.2);
+        let last = xy(14);
+        assert!((last.0 - 6.4).abs() < 1e-15 && (last.1 - 2.2).abs() < 1e-15, "{last:?}");
+        assert!(m.positions.iter().all(|p| p.z == part_height(p.x, p.y)));
+        // fewer than 2 × 2 points is 2 × 2
+        assert_eq!(part_mesh(1, 0).positions.len(), 4);
+    }
+
+    /// The pose against what it is defined by, with derivatives by central differences (to
+    /// 10⁻⁸): γ on the surface over (s, 1.5 sin 0.6s), ν normal to the surface and upwards, the
+    /// axis in the plane of ν and γ′ at the lead angle atan 0.35 from ν, towards γ′.
+    #[test]
+    fn the_pose_is_what_the_example_defines() {
+        let h = 1e-6;
+        for s in [0.0, 0.7, 2.5, 4.1, 6.0] {
+            let (g, c, pose) = exact(s, 0.25);
+            assert_eq!(g, DVec3::new(s, 1.5 * (0.6 * s).sin(), part_height(s, 1.5 * (0.6 * s).sin())));
+            let (x, y) = (g.x, g.y);
+            let fx = (part_height(x + h, y) - part_height(x - h, y)) / (2.0 * h);
+            let fy = (part_height(x, y + h) - part_height(x, y - h)) / (2.0 * h);
+            let normal = (c - g) / 0.25;
+            assert!(normal.dot(DVec3::new(1.0, 0.0, fx)).abs() < 1e-8, "s = {s}");
+            assert!(normal.dot(DVec3::new(0.0, 1.0, fy)).abs() < 1e-8, "s = {s}");
+            assert!(normal.z > 0.0 && (normal.length() - 1.0).abs() < 1e-15);
+            let tangent = (exact(s + h, 0.25).0 - exact(s - h, 0.25).0).normalize();
+            let lead = pose.axis.dot(normal).clamp(-1.0, 1.0).acos();
+            assert!((lead - 0.35f64.atan()).abs() < 1e-8, "s = {s}: lead {lead}");
+            // in the plane of ν and γ′, leaning towards γ′
+            assert!(pose.axis.dot(normal.cross(tangent)).abs() < 1e-8 && pose.axis.dot(tangent) > 0.3);
+        }
+    }
+
+    #[test]
+    fn the_example_samples_the_profile_evenly() {
+        let path = example(7).unwrap();
+        assert_eq!((path.tool.radius, path.tool.length, path.tool.end), (0.25, 1.5, ToolEnd::Ball));
+        assert_eq!(path.poses.len(), 7);
+        for (k, pose) in path.poses.iter().enumerate() {
+            assert_eq!(*pose, exact(k as f64, 0.25).2, "pose {k}");
+        }
+        assert_eq!(example(1).unwrap().poses, [exact(0.0, 0.25).2, exact(6.0, 0.25).2]);
+        let p = profile(4);
+        assert_eq!(p, [0.0, 2.0, 4.0, 6.0].map(|s| exact(s, 0.25).0));
+    }
 }

@@ -134,3 +134,96 @@ pub(crate) fn tool_line(path: &ToolPath) -> String {
     };
     format!("{end}, radius {}, length {}", path.tool.radius, path.tool.length)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Three poses of a ball-end tool of radius ½ and length 2: axes along z, along x, and
+    /// (1, 2, 2)/3.
+    fn path(end: ToolEnd) -> ToolPath {
+        let poses = [
+            (DVec3::new(0.0, 0.0, 0.0), DVec3::Z),
+            (DVec3::new(1.0, 0.0, 0.0), DVec3::X),
+            (DVec3::new(2.0, 1.0, 0.0), DVec3::new(1.0, 2.0, 2.0) / 3.0),
+        ]
+        .map(|(tip, axis)| Pose { tip, axis });
+        ToolPath { poses: poses.to_vec(), tool: Tool::new(0.5, 2.0, end).unwrap() }
+    }
+
+    #[test]
+    fn points_along_the_axis() {
+        let p = path(ToolEnd::Ball);
+        let tips = [DVec3::ZERO, DVec3::X, DVec3::new(2.0, 1.0, 0.0)];
+        let ends = [
+            DVec3::new(0.0, 0.0, 2.0),
+            DVec3::new(3.0, 0.0, 0.0),
+            DVec3::new(2.0, 1.0, 0.0) + DVec3::new(2.0, 4.0, 4.0) / 3.0,
+        ];
+        let axes = p.axis_surface().unwrap();
+        assert_eq!(
+            axes.segments().map(|s| (s.a, s.b)).collect::<Vec<_>>(),
+            tips.into_iter().zip(ends).collect::<Vec<_>>()
+        );
+        // the barycentres halfway (L/2 = 1), the ball centres at r = ½
+        let half = [
+            DVec3::new(0.0, 0.0, 1.0),
+            DVec3::new(2.0, 0.0, 0.0),
+            DVec3::new(2.0, 1.0, 0.0) + DVec3::new(1.0, 2.0, 2.0) / 3.0,
+        ];
+        assert_eq!(p.barycentres(), half);
+        let centres = [
+            DVec3::new(0.0, 0.0, 0.5),
+            DVec3::new(1.5, 0.0, 0.0),
+            DVec3::new(2.0, 1.0, 0.0) + DVec3::new(1.0, 2.0, 2.0) / 6.0,
+        ];
+        assert_eq!(p.cutting_centres(), centres);
+        assert_eq!(path(ToolEnd::Flat).cutting_centres(), tips);
+    }
+
+    #[test]
+    fn refining_by_no_step_keeps_the_poses_bit_for_bit() {
+        let p = path(ToolEnd::Ball);
+        assert_eq!(p.refine(Scheme::Chaikin, 0).unwrap(), p);
+        // one step of Chaikin's corner cutting: 2·3 − 2 poses, a quarter along the first edge
+        let r = p.refine(Scheme::Chaikin, 1).unwrap();
+        assert_eq!(r.poses.len(), 4);
+        assert_eq!(r.poses[0].tip, DVec3::new(0.25, 0.0, 0.0));
+        assert_eq!(r.tool, p.tool);
+    }
+
+    /// The envelope is a tube of radius r about the cutting centres: every ring vertex is r from
+    /// its centre.
+    #[test]
+    fn the_envelope_is_a_tube_about_the_cutting_centres() {
+        for end in [ToolEnd::Ball, ToolEnd::Flat] {
+            let p = path(end);
+            let m = p.envelope_mesh(12);
+            let centres = p.cutting_centres();
+            assert_eq!(m.positions.len(), 3 * 12);
+            for (k, v) in m.positions.iter().enumerate() {
+                assert!(((*v - centres[k / 12]).length() - 0.5).abs() < 1e-15, "{end:?}, vertex {k}");
+            }
+        }
+    }
+
+    /// The tool body from its lowest point, the tip, to the top of the cylinder at tip + L·axis;
+    /// a ball end has sides/2 latitude rings, a flat end one rim.
+    #[test]
+    fn the_tool_body_from_the_tip_to_its_length() {
+        for (end, rings) in [(ToolEnd::Ball, 4), (ToolEnd::Flat, 1)] {
+            let p = path(end);
+            for (i, pose) in p.poses.iter().enumerate() {
+                let m = p.tool_mesh(i, 8).unwrap();
+                assert_eq!(m.positions.len(), 1 + (rings + 1) * 8 + 1, "{end:?}");
+                assert!((m.positions[0] - pose.tip).length() < 1e-15, "{end:?}, pose {i}");
+                assert!((m.positions[m.positions.len() - 1] - (pose.tip + 2.0 * pose.axis)).length() < 1e-15);
+                // the widest ring is r from the axis
+                let radius =
+                    m.positions.iter().map(|v| (*v - pose.tip).reject_from(pose.axis).length()).fold(0.0, f64::max);
+                assert!((radius - 0.5).abs() < 1e-15, "{end:?}, pose {i}: {radius}");
+            }
+            assert!(p.tool_mesh(3, 8).is_none());
+        }
+    }
+}

@@ -340,7 +340,7 @@ mod tests {
 
     #[test]
     fn a_short_ruling_is_kept_until_its_length_is_rounding() {
-        // |b − a| = 1e-9 beside |a| = 1: short, but a billion times above ZERO_LENGTH_REL
+        // |b − a| = 1e-9 beside |a| = 1: short, but a thousand times above ZERO_LENGTH_REL
         let a = DVec3::new(1.0, 0.0, 0.0);
         let short = vec![a, a + DVec3::new(0.0, 1e-9, 0.0), a, a + DVec3::Z];
         assert!(RuledSurface::from_points(short).is_ok());

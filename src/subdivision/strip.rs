@@ -136,10 +136,10 @@ mod tests {
         assert_near!(rc.segment(2).a + rc.segment(2).b, cyl.segment(2).a + cyl.segment(2).b, EXACT);
     }
 
-    /// Rulings b_i − a_i along x with the given lengths: the four-point rule with w = 1/16 gives
-    /// 9/16·(1 + 1) − 1/16·(9 + 9) = 0 on an edge between two rulings of length 1 that have
-    /// rulings of length 9 beyond them.
-    fn strip_with_a_vanishing_new_ruling(lengths: [f64; 6]) -> RuledSurface {
+    /// Rulings from (0, i, 0) along x with the given lengths. (The four-point rule with w = 1/16
+    /// gives 9/16·(1 + 1) − 1/16·(9 + 9) = 0 on an edge between two rulings of length 1 that
+    /// have rulings of length 9 beyond them.)
+    fn strip_of_lengths(lengths: [f64; 6]) -> RuledSurface {
         RuledSurface::from_points(
             lengths
                 .iter()
@@ -161,17 +161,17 @@ mod tests {
         let four = Scheme::FourPoint { w: 1.0 / 16.0 };
         // open: edge 3 (between the rulings of length 1 at 3 and 4, with 9 at 2 and 5) is the
         // kernel's leftover edge for six rulings; it becomes ruling 7
-        let open = strip_with_a_vanishing_new_ruling([1.0, 1.0, 9.0, 1.0, 1.0, 9.0]);
+        let open = strip_of_lengths([1.0, 1.0, 9.0, 1.0, 1.0, 9.0]);
         assert_eq!(subdivide_strip(&open, four, false, 1), Err(Error::ZeroLength { ruling: 7 }));
         // closed: the edge R_5 → R_0, with R_4 and R_1 of length 9 beyond: ruling 11, and after a
         // second step (which keeps it) ruling 22
-        let closed = strip_with_a_vanishing_new_ruling([1.0, 9.0, 3.0, 3.0, 9.0, 1.0]);
+        let closed = strip_of_lengths([1.0, 9.0, 3.0, 3.0, 9.0, 1.0]);
         assert_eq!(subdivide_strip(&closed, four, true, 1), Err(Error::ZeroLength { ruling: 11 }));
         assert_eq!(subdivide_strip(&closed, four, true, 2), Err(Error::ZeroLength { ruling: 22 }));
-        // open, the last edge but one: its outer neighbour is the ghost 4p₅ − 6p₄ + 4p₃ − p₂, so
+        // open, the last edge (n − 2): its outer neighbour is the ghost 4p₅ − 6p₄ + 4p₃ − p₂, so
         // the new ruling is (15 d₄ + 5 d₅ − 5 d₃ + d₂)/16 = 0 for lengths 5, 5, 1, 1: ruling 9,
         // and after a second step (which keeps it next to the end) ruling 18
-        let end = strip_with_a_vanishing_new_ruling([2.0, 1.0, 5.0, 5.0, 1.0, 1.0]);
+        let end = strip_of_lengths([2.0, 1.0, 5.0, 5.0, 1.0, 1.0]);
         assert_eq!(subdivide_strip(&end, four, false, 1), Err(Error::ZeroLength { ruling: 9 }));
         assert_eq!(subdivide_strip(&end, four, false, 2), Err(Error::ZeroLength { ruling: 18 }));
     }
@@ -179,7 +179,7 @@ mod tests {
     /// Without a length the re-cut takes the mean length of the segments.
     #[test]
     fn recut_to_the_mean_length() {
-        let s = strip_with_a_vanishing_new_ruling([1.0, 2.0, 3.0, 4.0, 5.0, 9.0]);
+        let s = strip_of_lengths([1.0, 2.0, 3.0, 4.0, 5.0, 9.0]);
         assert!(recut(&s, None).unwrap().segments().all(|seg| (seg.length() - 4.0).abs() < 1e-15));
     }
 
@@ -196,7 +196,7 @@ mod tests {
 
     #[test]
     fn a_recut_length_must_be_positive() {
-        let s = strip_with_a_vanishing_new_ruling([1.0; 6]);
+        let s = strip_of_lengths([1.0; 6]);
         for l in [0.0, -1.0, f64::NAN, 2.0 * MAX_COORD] {
             assert!(matches!(recut(&s, Some(l)), Err(Error::InvalidParameter { name: "length", .. })), "{l}");
         }
