@@ -442,4 +442,68 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn angles_wrap_into_a_turn_and_steps_wrap_on_continuous_axes() {
+        assert_eq!([wrap(370.0), wrap(-190.0), wrap(725.0), wrap(0.0), wrap(-90.0)], [10.0, 170.0, 5.0, 0.0, -90.0]);
+        // a limited axis cannot go the short way round; a continuous one can
+        assert_eq!(step(Value::Fixed(10.0), Value::Fixed(350.0)), 340.0);
+        assert_eq!(step(Value::Turn(10.0), Value::Fixed(350.0)), 20.0);
+        assert_eq!(step(Value::Fixed(-170.0), Value::Turn(170.0)), 20.0);
+        assert_eq!(step(Value::Turn(30.0), Value::Turn(-45.0)), 75.0);
+    }
+
+    /// The head turns the tip about its pivot c′ = pivot + L·Z: at 180° the tip goes to
+    /// c′ − R c′ = 2 c′ for a pivot on the spindle's axis, whichever way the axis counts.
+    #[test]
+    fn the_head_turns_the_tip_about_its_pivot() {
+        // head-table-bc: B's pivot 150 mm above the nose, a 40 mm tool: c′ = (0, 0, 190)
+        let m = Machine::preset("head-table-bc").unwrap();
+        assert_eq!(head_offset(&m, [0.0, 0.0], 40.0), DVec3::ZERO);
+        assert!((head_offset(&m, [180.0, 0.0], 40.0) - DVec3::new(0.0, 0.0, 380.0)).length() < 1e-12);
+        let quarter = head_offset(&m, [90.0, 0.0], 40.0);
+        assert!(
+            (quarter.x.abs() - 190.0).abs() < 1e-12 && quarter.y.abs() < 1e-12 && (quarter.z - 190.0).abs() < 1e-12
+        );
+        // head-head-ac: A's pivot 120 mm up; C (pivot on the spindle's axis) does not move it
+        let m = Machine::preset("head-head-ac").unwrap();
+        for c in [0.0, 90.0, -135.0] {
+            assert!((head_offset(&m, [c, 180.0], 40.0) - DVec3::new(0.0, 0.0, 320.0)).length() < 1e-12, "C = {c}");
+        }
+    }
+
+    /// Near the pole two solutions closer than 10⁻¹² are one; elsewhere the two differ.
+    #[test]
+    fn one_solution_at_the_pole_two_elsewhere() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        for tilt in [0.0f64, 1e-13] {
+            assert_eq!(orientations(&m, DVec3::new(tilt.sin(), 0.0, tilt.cos())).len(), 1, "tilt {tilt}");
+        }
+        let sols = orientations(&m, DVec3::new(0.3, -0.5, 0.8).normalize());
+        assert_eq!(sols.len(), 2);
+        assert!(
+            (sols[0][0].unwrap() + sols[1][0].unwrap()).abs() < 1e-12 && sols[0][0].unwrap().abs() > 0.1,
+            "{sols:?}"
+        );
+    }
+
+    /// A machine whose head turns about Z (C) over a table tilting about X (A): its axes reach
+    /// only tool axes normal to X, each with C free; X itself is out of reach.
+    #[test]
+    fn a_head_turning_about_z_over_a_tilting_table() {
+        let mut m = Machine::preset("head-table-bc").unwrap();
+        m.rotary[0].name = crate::milling::machine::AxisName::C;
+        m.rotary[1].name = crate::milling::machine::AxisName::A;
+        m.validate().unwrap();
+        assert!(orientations(&m, DVec3::X).is_empty());
+        for t in [0.4f64, -1.1, 2.0] {
+            let a = DVec3::new(0.0, t.sin(), t.cos());
+            let sols = orientations(&m, a);
+            assert_eq!(sols.len(), 1, "{t}");
+            let [c, tilt] = sols[0];
+            assert!(c.is_none());
+            let v = [0.0, m.rotary[1].value(tilt.unwrap())];
+            assert!((tool_axis(&m, v) - a).length() < 1e-15, "{t}: {}", tool_axis(&m, v));
+        }
+    }
 }
