@@ -129,3 +129,15 @@ fn sinumerik_840d() {
         assert!(p.text.contains("G0 SUPA Z") && p.text.contains("T1 D1 M6") && p.text.contains("G54"));
     }
 }
+
+/// The work offset chosen is the one written: 1 … 6 are G54 … G59 in LinuxCNC.
+#[test]
+fn linuxcnc_work_offsets() {
+    let path = example_tool_path(7).unwrap();
+    for (k, word) in (1..=6).zip(["G54", "G55", "G56", "G57", "G58", "G59"]) {
+        let o = PostOptions { dialect: Dialect::LinuxCnc, work_offset: k, ..Default::default() };
+        let p = gcode(&path, &o).unwrap();
+        let offsets: Vec<&str> = p.text.lines().filter(|l| l.starts_with("G5") && !l.starts_with("G53")).collect();
+        assert_eq!(offsets, [word], "work offset {k}");
+    }
+}

@@ -183,7 +183,8 @@ fn values(m: &Machine, k: usize, theta: f64) -> Vec<Value> {
     if r.min.is_none() && r.max.is_none() {
         return vec![Value::Turn(wrap(v))];
     }
-    let lo = r.min.unwrap_or(v - 360.0 * MAX_AXIS_TURNS as f64);
+    // with a maximum alone, the MAX_AXIS_TURNS turns below it (the nearest one included)
+    let lo = r.min.unwrap_or_else(|| r.max.unwrap_or(v) - 360.0 * MAX_AXIS_TURNS as f64);
     let first = v + 360.0 * ((lo - v) / 360.0).ceil();
     (0..MAX_AXIS_TURNS).map(|n| first + 360.0 * n as f64).filter(|&x| r.allows(x)).map(Value::Fixed).collect()
 }
@@ -504,6 +505,100 @@ mod tests {
             assert!(c.is_none());
             let v = [0.0, m.rotary[1].value(tilt.unwrap())];
             assert!((tool_axis(&m, v) - a).length() < 1e-15, "{t}: {}", tool_axis(&m, v));
+        }
+    }
+
+    /// An axis tilted by `tilt`° from Z towards the direction `turn`° about Z.
+    fn tilted(tilt: f64, turn: f64) -> [f64; 3] {
+        let (t, f) = (tilt.to_radians(), turn.to_radians());
+        [t.sin() * f.cos(), t.sin() * f.sin(), t.cos()]
+    }
+
+    /// What is out of reach is named: the orientation's axis nearest its limits (A would be
+    /// ±130°, 10° and 100° beyond), or the linear axis that leaves its travel.
+    #[test]
+    fn unreachable_poses_are_named_with_the_axis_and_its_limits() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        let e = inverse(&m, &[pose([0.0; 3], tilted(130.0, 90.0))], 40.0).unwrap_err();
+        assert_eq!(e.to_string(), "pose 0 cannot be reached: A would be 130, outside its limits -30 to 120");
+        let far = [pose([0.0; 3], [0.0, 0.0, 1.0]), pose([900.0, 0.0, 0.0], [0.0, 0.0, 1.0])];
+        let e = inverse(&m, &far, 40.0).unwrap_err();
+        assert_eq!(e.to_string(), "pose 1 cannot be reached: X would be 910, outside its limits -500 to 500");
+        // the travel's ends are inside it
+        for x in [-500.0, 500.0] {
+            assert!(check_travel(&m, 0, DVec3::new(x, 400.0, -400.0)).is_ok(), "{x}");
+        }
+        assert!(check_travel(&m, 0, DVec3::new(500.001, 0.0, 0.0)).is_err());
+        assert!(check_travel(&m, 0, DVec3::new(0.0, 0.0, -400.001)).is_err());
+        // limits the other way round: now −130 is the nearer (10° below −120; 130 is 100° above 30)
+        let mut flipped = m.clone();
+        (flipped.rotary[0].min, flipped.rotary[0].max) = (Some(-120.0), Some(30.0));
+        let e = inverse(&flipped, &[pose([0.0; 3], tilted(130.0, 90.0))], 40.0).unwrap_err();
+        assert_eq!(e.to_string(), "pose 0 cannot be reached: A would be -130, outside its limits -120 to 30");
+        // a controller value of 360 at the zero position: the value named is within a turn of 0
+        let mut turned = m.clone();
+        turned.rotary[0].zero = 360.0;
+        let e = inverse(&turned, &[pose([0.0; 3], tilted(130.0, 90.0))], 40.0).unwrap_err();
+        assert_eq!(e.to_string(), "pose 0 cannot be reached: A would be 130, outside its limits -30 to 120");
+    }
+
+    /// The values an angle may take: a limited axis every turn within its limits, a
+    /// continuous one the angle wrapped into (−180°, 180°], a one-sided one MAX_AXIS_TURNS turns
+    /// up from its limit.
+    #[test]
+    fn the_values_of_an_angle_on_each_kind_of_axis() {
+        let fixed = |vs: Vec<Value>| -> Vec<f64> {
+            vs.iter().map(|v| if let Value::Fixed(x) = v { (x * 1e9).round() / 1e9 } else { f64::NAN }).collect()
+        };
+        let m = Machine::preset("head-head-ac").unwrap();
+        assert_eq!(fixed(values(&m, 0, 10f64.to_radians())), [-350.0, 10.0]);
+        assert_eq!(fixed(values(&m, 1, 100f64.to_radians())), [100.0]);
+        assert!(values(&m, 1, 115f64.to_radians()).is_empty());
+        let t = Machine::preset("table-table-ac").unwrap();
+        assert!(matches!(values(&t, 1, 370f64.to_radians())[..], [Value::Turn(x)] if (x - 10.0).abs() < 1e-9));
+        let mut one_sided = t.clone();
+        one_sided.rotary[0].max = None;
+        let up = fixed(values(&one_sided, 0, 10f64.to_radians()));
+        assert_eq!(up, (0..MAX_AXIS_TURNS).map(|n| 10.0 + 360.0 * n as f64).collect::<Vec<_>>());
+        // a maximum alone: the turns below it, down from the nearest (it was MAX_AXIS_TURNS turns
+        // below the value itself, which left out the value, 10, and every turn up to it)
+        one_sided.rotary[0] = crate::milling::machine::RotaryAxis { min: None, max: Some(20.0), ..t.rotary[0].clone() };
+        let down = fixed(values(&one_sided, 0, 10f64.to_radians()));
+        assert_eq!(down, (0..MAX_AXIS_TURNS).rev().map(|n| 10.0 - 360.0 * n as f64).collect::<Vec<_>>());
+        let j = inverse(&one_sided, &[pose([0.0; 3], tilted(10.0, 90.0))], 40.0).unwrap()[0];
+        assert!((j.rotary[0].abs() - 10.0).abs() < 1e-9, "{j:?}");
+    }
+
+    /// The first pose takes the solution nearest zero; a continuous C follows the path round
+    /// and round without jumping back; a pose at the pole takes its free C from its neighbour.
+    #[test]
+    fn the_axes_move_least() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        for turn in [30.0, 120.0, -150.0] {
+            let j = inverse(&m, &[pose([0.0; 3], tilted(20.0, turn))], 40.0).unwrap()[0];
+            assert!(j.rotary[1].abs() <= 90.0 + 1e-9 && (j.rotary[0].abs() - 20.0).abs() < 1e-9, "{turn}: {j:?}");
+        }
+        let round: Vec<Pose> = (0..=72).map(|k| pose([0.0; 3], tilted(20.0, 10.0 * k as f64))).collect();
+        let j = inverse(&m, &round, 40.0).unwrap();
+        for w in j.windows(2) {
+            let d = w[1].rotary[1] - w[0].rotary[1];
+            assert!((d.abs() - 10.0).abs() < 1e-9 && (w[1].rotary[0] - w[0].rotary[0]).abs() < 1e-9, "{w:?}");
+        }
+        assert!((j[72].rotary[1] - j[0].rotary[1]).abs() > 719.0);
+        let pole_first =
+            inverse(&m, &[pose([0.0; 3], [0.0, 0.0, 1.0]), pose([0.0; 3], tilted(20.0, 50.0))], 40.0).unwrap();
+        assert!((pole_first[0].rotary[1] - pole_first[1].rotary[1]).abs() < 1e-9, "{pole_first:?}");
+        // a pose repeated costs no motion whichever solution: the one nearer zero stays chosen
+        for turn in [50.0, 140.0, -120.0, -20.0] {
+            let twice = [pose([0.0; 3], tilted(20.0, turn)), pose([1.0, 0.0, 0.0], tilted(20.0, turn))];
+            let j = inverse(&m, &twice, 40.0).unwrap();
+            assert!(j.iter().all(|j| j.rotary[1].abs() <= 90.0 + 1e-9), "{turn}: {j:?}");
+        }
+        // and of the neighbour's two solutions, the one nearer zero (the pole's A = 0 does not
+        // make every C as good)
+        for turn in [50.0, 140.0, -120.0, -20.0] {
+            let j = inverse(&m, &[pose([0.0; 3], [0.0, 0.0, 1.0]), pose([0.0; 3], tilted(20.0, turn))], 40.0).unwrap();
+            assert!(j[1].rotary[1].abs() <= 90.0 + 1e-9, "{turn}: {j:?}");
         }
     }
 }

@@ -120,3 +120,43 @@ pub fn write(ops: &[Op], c: &Context) -> String {
     block(&mut g, &format!("END PGM {} MM", c.name));
     g
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    fn context(mode: Mode) -> Context {
+        Context {
+            letters: ["A", "C"],
+            mode,
+            name: "T".into(),
+            bounds: (DVec3::new(0.0, -2.0, -3.0), DVec3::new(10.0, 2.0, 5.0)),
+        }
+    }
+
+    /// The blank is the box of the tips, 1 mm larger on every side.
+    #[test]
+    fn the_blank_is_the_tips_box_and_a_millimetre() {
+        let g = write(&[Op::Start], &context(Mode::Tcp));
+        assert!(g.contains("BLK FORM 0.1 Z X-1.0000 Y-3.0000 Z-4.0000\n"), "{g}");
+        assert!(g.contains("BLK FORM 0.2 X+11.0000 Y+3.0000 Z+6.0000\n"), "{g}");
+    }
+
+    /// In machine coordinates a simultaneous move's feed is scaled by the linear share of its
+    /// distance (the controller applies F to the linear axes): 1000 · 0.5/2 = 250; a move with no
+    /// linear part keeps the feed; with tool-centre-point control F is the tip's feed.
+    #[test]
+    fn feeds_of_simultaneous_moves() {
+        let t = Target { xyz: DVec3::ZERO, rotary: [0.0, 0.0], axis: DVec3::Z };
+        let feed = |mode, linear| {
+            let g = write(&[Op::Feed(t, Rate::Simultaneous { feed: 1000.0, distance: 2.0, linear })], &context(mode));
+            g.lines()
+                .find(|l| l.contains(" L "))
+                .map(|l| l.split_whitespace().find(|w| w.starts_with('F')).unwrap().to_string())
+        };
+        assert_eq!(feed(Mode::Machine, 0.5).as_deref(), Some("F250.0000"));
+        assert_eq!(feed(Mode::Machine, 0.0).as_deref(), Some("F1000.0000"));
+        assert_eq!(feed(Mode::Tcp, 0.5).as_deref(), Some("F1000.0000"));
+    }
+}

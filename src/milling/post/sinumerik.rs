@@ -102,3 +102,18 @@ pub fn write(ops: &[Op], c: &Context) -> String {
     }
     g
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Seven decimals, and no "−0": a component that rounds to zero is written unsigned.
+    #[test]
+    fn vector_components() {
+        assert_eq!(vector(-0.5), "-0.5000000");
+        assert_eq!(vector(0.25), "0.2500000");
+        assert_eq!(vector(-1e-9), "0.0000000");
+        assert_eq!(vector(-0.0), "0.0000000");
+        assert_eq!(vector(-0.00000006), "-0.0000001");
+    }
+}
