@@ -562,7 +562,7 @@ mod tests {
         assert_eq!(up, (0..MAX_AXIS_TURNS).map(|n| 10.0 + 360.0 * n as f64).collect::<Vec<_>>());
         // a maximum alone: the turns below it, down from the nearest (it was MAX_AXIS_TURNS turns
         // below the value itself, which left out the value, 10, and every turn up to it)
-        one_sided.rotary[0] = crate::milling::machine::RotaryAxis { min: None, max: Some(20.0), ..t.rotary[0].clone() };
+        one_sided.rotary[0] = crate::milling::machine::RotaryAxis { min: None, max: Some(20.0), ..t.rotary[0] };
         let down = fixed(values(&one_sided, 0, 10f64.to_radians()));
         assert_eq!(down, (0..MAX_AXIS_TURNS).rev().map(|n| 10.0 - 360.0 * n as f64).collect::<Vec<_>>());
         let j = inverse(&one_sided, &[pose([0.0; 3], tilted(10.0, 90.0))], 40.0).unwrap()[0];
