@@ -238,6 +238,7 @@ mod tests {
     fn strip_and_grid_indices() {
         assert_eq!(strip_indices(3, false), [0, 1, 3, 0, 3, 2, 2, 3, 5, 2, 5, 4]);
         assert_eq!(strip_indices(2, true), [0, 1, 3, 0, 3, 2, 2, 3, 1, 2, 1, 0]);
+        assert_eq!(&strip_indices(3, true)[12..], [4, 5, 1, 4, 1, 0]);
         assert!(strip_indices(1, false).is_empty());
         assert_eq!(grid_indices(2, 3), [0, 3, 4, 0, 4, 1, 1, 4, 5, 1, 5, 2]);
         assert!(grid_indices(1, 5).is_empty());
@@ -260,5 +261,84 @@ mod tests {
         assert!((lowest + 0.5).abs() < 1e-12);
         assert!(c.indices.iter().all(|&i| (i as usize) < c.positions.len()));
         assert!(c.positions.iter().all(|p| (p.x * p.x + p.y * p.y).sqrt() <= 0.5 + 1e-12));
+    }
+
+    /// The side every triangle of `m` faces (by its winding): 1 when all face away from
+    /// `inside(centroid)`, −1 when all face towards it, 0 when they differ.
+    fn facing(m: &Mesh, inside: impl Fn(DVec3) -> DVec3) -> i32 {
+        let signs: Vec<f64> = m
+            .indices
+            .chunks_exact(3)
+            .map(|t| {
+                let [a, b, c] = [0, 1, 2].map(|k| m.positions[t[k] as usize]);
+                let centroid = (a + b + c) / 3.0;
+                (b - a).cross(c - a).dot(centroid - inside(centroid)).signum()
+            })
+            .collect();
+        if signs.iter().all(|&s| s == signs[0]) {
+            signs[0] as i32
+        } else {
+            0
+        }
+    }
+
+    #[test]
+    fn a_tube_is_regular_polygons_in_the_normal_planes_wound_alike() {
+        // a straight line off the origin along d = (1, 2, 2)/3: every ring lies in the plane
+        // normal to d through its point, on the circle of the radius, as a regular polygon
+        let d = DVec3::new(1.0, 2.0, 2.0) / 3.0;
+        let line: Vec<DVec3> = (0..4).map(|i| DVec3::new(5.0, -1.0, 2.0) + 1.5 * i as f64 * d).collect();
+        let (r, sides) = (0.25, 6);
+        let t = Mesh::tube(&line, r, sides);
+        assert_eq!(t.positions.len(), 4 * sides);
+        let side = 2.0 * r * (std::f64::consts::PI / sides as f64).sin();
+        for (i, ring) in t.positions.chunks_exact(sides).enumerate() {
+            for (k, p) in ring.iter().enumerate() {
+                assert!((*p - line[i]).dot(d).abs() < 1e-14, "ring {i} vertex {k} off the normal plane");
+                assert!(((*p - line[i]).length() - r).abs() < 1e-14);
+                assert!(((*p - ring[(k + 1) % sides]).length() - side).abs() < 1e-14);
+            }
+        }
+        // two rings of three: the quads (a, c, d), (a, d, b) between vertex k and k + 1
+        let two = Mesh::tube(&line[..2], r, 3);
+        assert_eq!(two.indices, [0, 3, 4, 0, 4, 1, 1, 4, 5, 1, 5, 2, 2, 5, 3, 2, 3, 0]);
+        let three = Mesh::tube(&line[..3], r, 3);
+        assert_eq!(&three.indices[18..], [3, 6, 7, 3, 7, 4, 4, 7, 8, 4, 8, 5, 5, 8, 6, 5, 6, 3]);
+        // every face wound the same way: towards the axis (the capped cylinder's face away
+        // from it; the page colours the two sides alike, see issue 34's note)
+        let axis = |p: DVec3| line[0] + (p - line[0]).dot(d) * d;
+        assert_eq!(facing(&t, axis), -1);
+    }
+
+    #[test]
+    fn a_capped_cylinder_is_rings_on_its_surface_with_every_face_outward() {
+        let (from, to, r) = (DVec3::new(1.0, 2.0, 3.0), DVec3::new(1.0, 2.0, 5.0), 0.5);
+        let axis = |p: DVec3| DVec3::new(1.0, 2.0, p.z.clamp(3.0, 5.0));
+        // a flat end: the bottom centre, a ring at each end, the top centre; fans and quads
+        let flat = Mesh::capped_cylinder(from, to, r, false, 3);
+        assert_eq!(flat.positions.len(), 8);
+        assert_eq!((flat.positions[0], flat.positions[7]), (from, to));
+        assert!(flat.positions[1..4].iter().all(|p| p.z == 3.0 && ((*p - from).length() - r).abs() < 1e-15));
+        assert!(flat.positions[4..7].iter().all(|p| p.z == 5.0 && ((*p - to).length() - r).abs() < 1e-15));
+        #[rustfmt::skip]
+        let want = [0, 2, 1, 0, 3, 2, 0, 1, 3,
+                    1, 2, 5, 1, 5, 4, 2, 3, 6, 2, 6, 5, 3, 1, 4, 3, 4, 6,
+                    7, 4, 5, 7, 5, 6, 7, 6, 4];
+        assert_eq!(flat.indices, want);
+        // a ball end of 12 sides: 6 latitudes at 15°, 30°, …, 90° from the bottom, each a ring on
+        // the sphere about `from`, below it by r·cos of its latitude
+        let ball = Mesh::capped_cylinder(from, to, r, true, 12);
+        assert_eq!(ball.positions.len(), 1 + 7 * 12 + 1);
+        assert_eq!(ball.positions[0], from - r * DVec3::Z);
+        for l in 1..=6 {
+            let angle = (15 * l) as f64 * std::f64::consts::PI / 180.0;
+            for p in &ball.positions[1 + (l - 1) * 12..1 + l * 12] {
+                assert!(((*p - from).length() - r).abs() < 1e-15);
+                assert!((p.z - (3.0 - r * angle.cos())).abs() < 1e-15, "latitude {l}: {p}");
+            }
+        }
+        for m in [&flat, &ball] {
+            assert_eq!(facing(m, axis), 1);
+        }
     }
 }

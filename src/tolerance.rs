@@ -63,6 +63,10 @@ pub const MAX_IMPORT_TEXT: usize = 64 << 20;
 /// Deepest nesting of arrays and objects in an imported JSON file.
 pub const MAX_JSON_DEPTH: usize = 16;
 
+/// Most numbers in an imported JSON file: six for each of [`MAX_RULINGS`] segments (counted
+/// while parsing, before the values pile up).
+pub const MAX_JSON_NUMBERS: usize = 6 * MAX_RULINGS;
+
 /// Convergence study: errors below this (relative to the surface's size, ~1) are rounding noise
 /// and carry no order.
 pub const CONVERGENCE_NOISE_FLOOR: f64 = 1e-13;

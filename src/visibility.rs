@@ -983,4 +983,54 @@ mod tests {
         assert!(View::new(&[1.0; 15], 10.0, 10.0).is_err());
         assert!(View::new(&DMat4::IDENTITY.to_cols_array(), 0.0, 10.0).is_err());
     }
+
+    #[test]
+    fn the_page_camera_puts_the_target_mid_screen_and_the_field_of_view_at_its_edges() {
+        // from 10 before the target along +y, a field of view of 90° (tan 45° = 1) on 800 × 400
+        // (aspect 2): z is up, x to the right; 10 above the target is the top edge, 20 to a side
+        // a side edge
+        let (eye, target) = (DVec3::new(3.0, -4.0, 2.0), DVec3::new(3.0, 6.0, 2.0));
+        let v = View::looking(eye, target, std::f64::consts::FRAC_PI_2, 800.0, 400.0).unwrap();
+        let at = |p: DVec3| v.project(p).unwrap();
+        let close = |a: DVec2, b: [f64; 2]| (a - DVec2::from(b)).length() < 1e-9;
+        assert!(close(at(target), [400.0, 200.0]), "{}", at(target));
+        assert!(close(at(target + DVec3::new(0.0, 0.0, 10.0)), [400.0, 0.0]));
+        assert!(close(at(target + DVec3::new(20.0, 0.0, -10.0)), [800.0, 400.0]));
+        assert!(close(at(target - DVec3::new(20.0, 0.0, 0.0)), [0.0, 200.0]));
+        // the near plane is a hundredth of the distance from the eye
+        assert!(v.project(eye + DVec3::new(0.0, 0.1001, 0.0)).is_some());
+        assert!(v.project(eye + DVec3::new(0.0, 0.0999, 0.0)).is_none());
+        assert!(v.project(eye - DVec3::Y).is_none());
+        // looking straight down, y is up on the screen
+        let down =
+            View::looking(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO, std::f64::consts::FRAC_PI_2, 400.0, 400.0).unwrap();
+        assert!(close(down.project(DVec3::new(0.0, 10.0, 0.0)).unwrap(), [200.0, 0.0]));
+        assert!(close(down.project(DVec3::new(10.0, 0.0, 0.0)).unwrap(), [400.0, 200.0]));
+    }
+
+    #[test]
+    fn views_are_refused_by_name_at_their_bounds() {
+        let name = |r: Result<View>| match r {
+            Err(Error::InvalidParameter { name, .. }) => name,
+            other => panic!("expected a refusal, got {other:?}"),
+        };
+        let (eye, t) = (DVec3::new(0.0, -5.0, 0.0), DVec3::ZERO);
+        assert_eq!(name(View::looking(t, t, 1.0, 100.0, 100.0)), "eye");
+        for fov in [0.0, -0.5, std::f64::consts::PI, f64::NAN] {
+            assert_eq!(name(View::looking(eye, t, fov, 100.0, 100.0)), "eye", "{fov}");
+        }
+        assert!(View::looking(eye, t, 3.1, 100.0, 100.0).is_ok());
+        let id: Vec<f64> = DMat4::IDENTITY.to_cols_array().to_vec();
+        assert!(View::new(&id, 1e6, 1.0).is_ok());
+        for (w, h, which) in
+            [(0.0, 1.0, "width"), (1e6 + 1.0, 1.0, "width"), (1.0, -1.0, "height"), (1.0, f64::NAN, "height")]
+        {
+            assert_eq!(name(View::new(&id, w, h)), which);
+        }
+        assert_eq!(name(View::new(&id[..15], 1.0, 1.0)), "viewProj");
+        let mut nan = id.clone();
+        nan[5] = f64::INFINITY;
+        assert_eq!(name(View::new(&nan, 1.0, 1.0)), "viewProj");
+        assert_eq!(name(View::new(&[0.0; 16], 1.0, 1.0)), "viewProj");
+    }
 }

@@ -68,6 +68,12 @@ fn bad_inputs_become_errors_with_messages() {
     assert_eq!(Reflect::get(&e, &"code".into()).unwrap(), "not-finite");
     let details = Reflect::get(&e, &"details".into()).unwrap();
     assert_eq!(Reflect::get(&details, &"index".into()).unwrap(), 1);
+    // the reason's arguments are a plain object a page reads by name: ruling 0, a.y, NaN
+    let args = Reflect::get(&details, &"args".into()).unwrap();
+    assert_eq!(Reflect::get(&details, &"reason".into()).unwrap(), "not-finite-segment");
+    assert_eq!(Reflect::get(&args, &"item".into()).unwrap(), 0);
+    assert_eq!(Reflect::get(&args, &"coordinate".into()).unwrap(), "a.y");
+    assert!(Reflect::get(&args, &"value".into()).unwrap().as_f64().is_some_and(f64::is_nan));
     let big = f64s(&[0.0, 0.0, 0.0, 1e300, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]);
     assert_eq!(code(RuledSurface::from_segments(big)), "out-of-range");
     let flat = f64s(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 2.0, 2.0, 2.0, 2.0, 2.0, 2.0]);

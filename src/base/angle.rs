@@ -179,4 +179,22 @@ mod tests {
         }
         assert!(atan2_x2([f64::NAN, 1.0], [1.0, f64::NAN]).iter().all(|v| v.is_nan()));
     }
+
+    #[test]
+    fn the_constants_rounding_error_is_carried_to_the_last_bit() {
+        // θ = C_hi + (C_lo + …), where C_lo = (B_lo + σ·atan(c)_lo) + the rounding error of
+        // B_hi + σ·atan(c)_hi. At the first two arguments (octant y > x > 0, B = π/2, c = ½)
+        // dropping or negating that error moves θ by an ulp; at the last two (x > y > 0, B = 0,
+        // c = 1) dropping or negating atan(1)_lo does. The kernel's θ is the exact angle rounded
+        // (mpmath atan2 at 200 bits).
+        let cases = [
+            (0.8853447220829251, 0.46493518158976527, 1.087234929608245),
+            (0.8277216789590154, 0.5611388617635288, 0.9750352680563323),
+            (0.6417970014273561, 0.7668745718556942, 0.6968392540192497),
+            (0.5657222818493397, 0.8245958402873351, 0.6013089129208825),
+        ];
+        for (y, x, exact) in cases {
+            assert_eq!(atan2_x2([y, y], [x, x]), [exact, exact], "atan2({y}, {x})");
+        }
+    }
 }

@@ -54,3 +54,21 @@ impl CongruenceJet {
         [self.p, self.p_u, self.p_v, self.d, self.d_u, self.d_v].iter().all(|x| x.is_finite())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_jet_is_finite_when_every_value_and_derivative_is() {
+        let jet = Jet { a: DVec3::X, da: DVec3::Y, d: DVec3::Z, dd: DVec3::ZERO };
+        assert!(jet.is_finite());
+        assert!(!Jet { dd: DVec3::new(0.0, f64::NAN, 0.0), ..jet }.is_finite());
+        assert!(!Jet { a: DVec3::new(f64::INFINITY, 0.0, 0.0), ..jet }.is_finite());
+        let c =
+            CongruenceJet { p: DVec3::X, p_u: DVec3::Y, p_v: DVec3::Z, d: DVec3::Z, d_u: DVec3::X, d_v: DVec3::ZERO };
+        assert!(c.is_finite());
+        assert!(!CongruenceJet { d_v: DVec3::new(0.0, 0.0, f64::NEG_INFINITY), ..c }.is_finite());
+        assert!(!CongruenceJet { p_u: DVec3::NAN, ..c }.is_finite());
+    }
+}

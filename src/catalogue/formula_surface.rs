@@ -158,12 +158,12 @@ fn vanishing(u: f64) -> Error {
     Error::degenerate("e", crate::msg!("direction-vanishes-u", u = six(u)))
 }
 
-/// A parameter value for messages, rounded to 6 significant digits (as [`short`] writes it).
+/// A parameter value for messages, rounded to 6 decimals (as [`short`] writes it).
 pub(crate) fn six(x: f64) -> f64 {
     short(x).parse().unwrap_or(x)
 }
 
-/// A parameter value for messages: 6 significant digits.
+/// A parameter value for messages: 6 decimals, without trailing zeros (and no "-0").
 pub(crate) fn short(x: f64) -> String {
     let s = format!("{x:.6}");
     let s = s.trim_end_matches('0').trim_end_matches('.');
@@ -243,5 +243,32 @@ mod tests {
         assert!(e.to_string().starts_with("a[1]: unknown function \"sni\" at column 1"), "{e}");
         assert!(FormulaSurface::new(&spec(["u", "0", "0"], ["0", "0", "1"], (1.0, 1.0))).is_err());
         assert!(FormulaSurface::new(&spec(["u", "0", "0"], ["0", "0", "1"], (0.0, f64::NAN))).is_err());
+    }
+
+    #[test]
+    fn parameter_values_in_messages_have_six_decimals_at_most() {
+        assert_eq!(short(0.1234567), "0.123457");
+        assert_eq!((short(2.0), short(-1.5), short(-0.0000001)), ("2".into(), "-1.5".into(), "0".into()));
+        assert_eq!(six(0.1234567), 0.123457);
+        assert_eq!(six(-2.25), -2.25);
+    }
+
+    #[test]
+    fn parameters_and_values_beyond_the_coordinate_limit_are_refused() {
+        assert!(check_parameters(&[1.0, -MAX_COORD, MAX_COORD]).is_ok());
+        for bad in [[f64::NAN, 0.0, 0.0], [0.0, 2.0 * MAX_COORD, 0.0], [0.0, 0.0, f64::NEG_INFINITY]] {
+            assert_eq!(check_parameters(&bad).unwrap_err().details().option.as_deref(), Some("parameters"));
+        }
+        // a(u) = (a·u, 0, 0) with a = 1e149 stays within 1e150 over its range [0, 1], not at u = 20
+        let f = FormulaSurface::new(&spec(["a*u", "0", "0"], ["0", "0", "1"], (0.0, 1.0))).unwrap();
+        assert!(f.checked_jet(0.5).is_ok());
+        let limit = FormulaSurface::new(&spec(["1e150", "-1e150", "0"], ["0", "0", "1"], (0.0, 1.0))).unwrap();
+        assert!(limit.checked_jet(0.5).is_ok());
+        let big = FormulaSurface::new(&FormulaSpec {
+            parameters: [1e149, 0.0, 0.0],
+            ..spec(["a*u", "0", "0"], ["0", "0", "1"], (0.0, 1.0))
+        });
+        let e = big.map(|b| b.checked_jet(20.0).unwrap_err()).unwrap();
+        assert_eq!((e.code(), e.details().option.as_deref()), ("not-finite", Some("a[0]")));
     }
 }

@@ -358,4 +358,27 @@ mod tests {
         assert!(hyp.sample(5, Ranges { v: (1.0, 1.0), ..r }).is_err());
         assert!(hyp.sample(5, Ranges { u: (f64::NAN, 1.0), ..r }).is_err());
     }
+
+    #[test]
+    fn as_a_smooth_ruled_surface_each_keeps_its_name_and_a_formula_its_checks() {
+        for s in AnalyticSurface::ALL {
+            assert_eq!(SmoothRuled::name(&s), s.name());
+            assert_eq!(SmoothRuled::checked_jet(&s, 0.2).unwrap(), s.jet(0.2));
+        }
+        // a pole between the samples the constructor checks: the jet there is refused
+        let texts = |t: [&str; 3]| t.map(String::from);
+        let spec = FormulaSpec {
+            a: texts(["1/(u - 0.1234567)", "0", "0"]),
+            e: texts(["0", "0", "1"]),
+            u: (0.0, 1.0),
+            v: (-1.0, 1.0),
+            closed: false,
+            parameters: [1.0; 3],
+        };
+        let f = FormulaSurface::new(&spec).unwrap();
+        let s = AnalyticSurface::Formula(std::sync::Arc::new(f));
+        assert_eq!(SmoothRuled::name(&s), "formula");
+        let e = SmoothRuled::checked_jet(&s, 0.1234567).unwrap_err();
+        assert_eq!(e.code(), "not-finite");
+    }
 }

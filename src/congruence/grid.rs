@@ -190,4 +190,34 @@ mod tests {
         g[5] = f64::NAN;
         assert!(LineCongruence::from_flat(2, 2, &g).unwrap_err().to_string().contains("NaN"));
     }
+
+    #[test]
+    fn inserted_lines_are_those_off_the_coarse_grid_and_flat_is_the_input() {
+        // the 3 × 5 grid of lines (i, j, 0) → (i, j, 1): with stride 2 the coarse lines are
+        // (0, 0), (0, 2), (0, 4), (2, 0), (2, 2), (2, 4); the other nine were inserted
+        let g = grid(3, 5);
+        let c = LineCongruence::from_flat(3, 5, &g).unwrap();
+        assert_eq!(c.flat(), &g[..]);
+        let at = |s: &Segment| (s.a.x as usize, s.a.y as usize);
+        let inserted: Vec<(usize, usize)> = c.inserted(2).iter().map(at).collect();
+        assert_eq!(inserted, [(0, 1), (0, 3), (1, 0), (1, 1), (1, 2), (1, 3), (1, 4), (2, 1), (2, 3)]);
+        assert!(c.inserted(1).is_empty() && c.inserted(0).is_empty());
+        assert_eq!(c.inserted(4).len(), 15 - 2);
+        // and with an even number of columns (3 × 4)
+        let even = LineCongruence::from_flat(3, 4, &grid(3, 4)).unwrap();
+        let inserted: Vec<(usize, usize)> = even.inserted(2).iter().map(at).collect();
+        assert_eq!(inserted, [(0, 1), (0, 3), (1, 0), (1, 1), (1, 2), (1, 3), (2, 1), (2, 3)]);
+    }
+
+    #[test]
+    fn a_line_is_of_zero_length_relative_to_its_endpoints_and_named_by_its_place() {
+        // line (1, 2) of a 2 × 3 grid: endpoints near 1000 apart by 1e-10 (relative 1e-13) is
+        // of zero length; near 1 apart by 1e-11 (relative 1e-11) it has a direction
+        let mut g = grid(2, 3);
+        g[30..36].copy_from_slice(&[1000.0, 0.0, 0.0, 1000.0, 1e-10, 0.0]);
+        let e = LineCongruence::from_flat(2, 3, &g).unwrap_err();
+        assert!(e.to_string().contains("line (1, 2) has zero length"), "{e}");
+        g[30..36].copy_from_slice(&[1.0, 0.0, 0.0, 1.0, 1e-11, 0.0]);
+        assert!(LineCongruence::from_flat(2, 3, &g).is_ok());
+    }
 }

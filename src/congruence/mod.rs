@@ -97,3 +97,53 @@ pub fn butterfly_diagonal(c: &LineCongruence, w: f64) -> Result<LineCongruence> 
     let q = butterfly::diagonal_points(&c.q(), r, cc, w);
     LineCongruence::from_points(r - 1, cc - 1, &p, &q)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 3 × 3 grid of lines from (i, j, 0), their directions varying a little.
+    fn grid() -> LineCongruence {
+        let coords: Vec<f64> = (0..9)
+            .flat_map(|k| {
+                let (i, j) = ((k / 3) as f64, (k % 3) as f64);
+                [i, j, 0.0, i + 0.1 * i * j, j + 0.05 * i, 1.0]
+            })
+            .collect();
+        LineCongruence::from_flat(3, 3, &coords).unwrap()
+    }
+
+    #[test]
+    fn parameters_are_refused_by_name_at_their_bounds() {
+        let c = grid();
+        let option = |scheme: CongruenceScheme| subdivide(&c, scheme, 1).unwrap_err().details().option;
+        for w in [0.2500001, -0.2500001, f64::NAN] {
+            assert_eq!(option(CongruenceScheme::Butterfly { w }).as_deref(), Some("w"), "{w}");
+            assert_eq!(butterfly_diagonal(&c, w).unwrap_err().details().option.as_deref(), Some("w"));
+        }
+        for k in [2, 1001] {
+            for scheme in
+                [CongruenceScheme::TwoStage { k }, CongruenceScheme::Paper { k }, CongruenceScheme::Coupled { k }]
+            {
+                assert_eq!(option(scheme).as_deref(), Some("K"), "{scheme:?}");
+            }
+        }
+        for w in [0.25, -0.25] {
+            assert_eq!(subdivide(&c, CongruenceScheme::Butterfly { w }, 1).unwrap().rows(), 5);
+            let d = butterfly_diagonal(&c, w).unwrap();
+            assert_eq!((d.rows(), d.cols()), (2, 2));
+        }
+        for scheme in [CongruenceScheme::TwoStage { k: 3 }, CongruenceScheme::Coupled { k: 1000 }] {
+            let s = subdivide(&c, scheme, 2).unwrap();
+            assert_eq!((s.rows(), s.cols()), (9, 9));
+        }
+    }
+
+    #[test]
+    fn sizes_are_checked_before_any_work() {
+        // 3 × 3 → 5 × 5 → … → (2¹¹ + 1)²: the eleventh step would make 2049² = 4 198 401 lines
+        let e = subdivide(&grid(), CongruenceScheme::Butterfly { w: 0.0625 }, 11).unwrap_err();
+        assert_eq!(e, Error::TooMany { what: "lines after subdivision", got: 2049 * 2049, max: MAX_RULINGS });
+        assert_eq!(subdivide(&grid(), CongruenceScheme::Butterfly { w: 0.0625 }, 0).unwrap(), grid());
+    }
+}

@@ -10,6 +10,8 @@
 use std::fmt;
 
 mod message;
+#[cfg(any(feature = "serde", target_family = "wasm"))]
+mod serialize;
 pub use message::{number, template, Arg, Message, CATALOGUE, TEXT};
 
 /// Why an input was rejected or a computation could not be carried out.
@@ -221,22 +223,6 @@ pub struct Hint {
     pub reason: &'static str,
     /// Its arguments.
     pub args: Args,
-}
-
-#[cfg(any(feature = "serde", target_family = "wasm"))]
-impl serde::Serialize for Args {
-    fn serialize<S: serde::Serializer>(&self, serializer: S) -> std::result::Result<S::Ok, S::Error> {
-        // a struct, so that JS gets a plain object (serde-wasm-bindgen writes maps as Map)
-        use serde::ser::SerializeStruct;
-        let mut object = serializer.serialize_struct("Args", self.0.len())?;
-        for (name, value) in &self.0 {
-            match value {
-                Arg::Text(s) => object.serialize_field(name, s)?,
-                Arg::Number(x) => object.serialize_field(name, x)?,
-            }
-        }
-        object.end()
-    }
 }
 
 impl Error {
@@ -500,5 +486,18 @@ mod tests {
         assert_eq!(Error::TooMany { what: "x", got: 9, max: 8 }.details().limit, Some(8.0));
         assert_eq!(Error::NonFinite { index: 7, value: f64::NAN, record: Record::Segment }.details().index, Some(7));
         assert_eq!(Error::parameter("steps", "bad").details().option.as_deref(), Some("steps"));
+    }
+
+    #[test]
+    fn the_kinds_that_name_their_subject_say_it_first() {
+        assert_eq!(Record::of_stride(6), Record::Segment);
+        assert_eq!(Record::of_stride(3), Record::Point);
+        let e = Error::OutOfRange { index: 4, value: 1e200, max: 1e150, record: Record::of_stride(3) };
+        assert!(e.to_string().starts_with("coordinate 4 (point 1, y)"), "{e}");
+        assert!(Error::parameter("steps", "bad").to_string().starts_with("steps: "));
+        let e = Error::NotConverged { what: "the development", iterations: 10 };
+        assert!(e.to_string().starts_with("the development: "), "{e}");
+        let e = Error::Singular { what: "the fairing system", pivot: 3, value: -1.0 };
+        assert!(e.to_string().starts_with("the fairing system: "), "{e}");
     }
 }

@@ -27,6 +27,12 @@ pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
 /// The rows of six numbers (flat) and the 1-based line of each, checked for syntax only (the
 /// tool poses of `io/toolpath.rs` read the same rows as tip and axis).
 pub fn rows_with(text: &str, number: NumberParser<'_>) -> Result<(Vec<f64>, Vec<usize>)> {
+    rows_at_most(text, number, MAX_RULINGS)
+}
+
+/// [`rows_with`] with at most `max_rows` rows (a parameter, so that a test reaches the limit
+/// with three rows instead of four million).
+fn rows_at_most(text: &str, number: NumberParser<'_>, max_rows: usize) -> Result<(Vec<f64>, Vec<usize>)> {
     if text.len() > MAX_IMPORT_TEXT {
         return Err(Error::TooMany { what: "bytes of CSV", got: text.len(), max: MAX_IMPORT_TEXT });
     }
@@ -76,8 +82,8 @@ pub fn rows_with(text: &str, number: NumberParser<'_>) -> Result<(Vec<f64>, Vec<
             let col = fields.get(6).map_or(raw.chars().count() + 1, |f| f.0);
             return Err(fail(line, col, msg!("csv-six-numbers", found = fields.len())));
         }
-        if coords.len() / 6 >= MAX_RULINGS {
-            return Err(Error::TooMany { what: "rulings in the CSV", got: coords.len() / 6 + 1, max: MAX_RULINGS });
+        if coords.len() / 6 >= max_rows {
+            return Err(Error::TooMany { what: "rulings in the CSV", got: coords.len() / 6 + 1, max: max_rows });
         }
         lines.push(line);
         for (col, f) in &fields {
@@ -151,5 +157,23 @@ mod tests {
         assert_eq!(e("0,0,NaN,1,0,0\n"), "csv: line 1, column 5: NaN is not a finite number");
         assert!(e("\n# nothing\n").contains("no data lines"));
         assert!(e("just a header\n").contains("no data lines"));
+    }
+
+    #[test]
+    fn a_text_of_the_size_limit_is_read_and_a_byte_more_is_not() {
+        let data = "0,0,0,1,0,0\n0,0,1,0,1,1\n#";
+        let mut text = format!("{data}{}", "x".repeat(MAX_IMPORT_TEXT - data.len()));
+        assert_eq!(parse(&text).unwrap().coords.len(), 12);
+        text.push('x');
+        let e = parse(&text).unwrap_err();
+        assert_eq!((e.code(), e.details().limit), ("too-large", Some(MAX_IMPORT_TEXT as f64)));
+    }
+
+    #[test]
+    fn rows_beyond_the_limit_are_refused_at_the_first_one_over() {
+        let rows = "0,0,0,1,0,0\n# a comment\n0,0,1,0,1,1\n0,0,2,1,1,2\n";
+        assert_eq!(rows_at_most(rows, &rust_number, 3).unwrap().1, [1, 3, 4]);
+        let e = rows_at_most(rows, &rust_number, 2).unwrap_err();
+        assert_eq!(e, Error::TooMany { what: "rulings in the CSV", got: 3, max: 2 });
     }
 }

@@ -91,4 +91,23 @@ mod tests {
         assert_eq!(text.lines().count(), 1 + inv.angle.len());
         assert!(text.lines().nth(1).unwrap().starts_with(&format!("0,{:?},", inv.angle[0])));
     }
+
+    #[test]
+    fn csv_rows_hold_each_pairs_own_values() {
+        // rulings along x at z = 0, along y at z = 1, along x at z = 2: each pair meets at a right
+        // angle, one apart, with footpoints on the z-axis
+        let text = write_csv(&surface().invariants());
+        let rows: Vec<Vec<f64>> =
+            text.lines().skip(1).map(|l| l.split(',').map(|c| c.parse().unwrap()).collect()).collect();
+        for (i, row) in rows.iter().enumerate() {
+            let z = i as f64;
+            assert_eq!(row[0], z);
+            assert!(
+                (row[1] - std::f64::consts::FRAC_PI_2).abs() < 1e-15 && (row[2].abs() - 1.0).abs() < 1e-15,
+                "{row:?}"
+            );
+            assert_eq!(&row[4..10], &[0.0, 0.0, z, 0.0, 0.0, z + 1.0], "footpoints of pair {i}");
+            assert_eq!((row[10].abs(), row[11].abs(), row[12].abs(), row[13]), (0.0, 0.0, 1.0, 0.0));
+        }
+    }
 }

@@ -11,7 +11,7 @@
 use super::{classify, position, rust_number, Imported, NumberParser, Token};
 use crate::error::{Error, Message, Result};
 use crate::msg;
-use crate::tolerance::{MAX_IMPORT_TEXT, MAX_JSON_DEPTH, MAX_RULINGS};
+use crate::tolerance::{MAX_IMPORT_TEXT, MAX_JSON_DEPTH, MAX_JSON_NUMBERS, MAX_RULINGS};
 
 /// A parsed JSON value; arrays and objects keep the byte offset of each item.
 #[derive(Debug, Clone, PartialEq)]
@@ -24,18 +24,25 @@ pub(crate) enum Value {
     Object(Vec<(String, usize, Value)>),
 }
 
+/// A parse error at byte offset `at` of `text`, said by line and column.
+fn fail(text: &str, at: usize, message: Message) -> Error {
+    let (line, column) = position(text, at);
+    Error::parse("json", Some(line), Some(column), message)
+}
+
 struct Parser<'a> {
     text: &'a str,
     bytes: &'a [u8],
     at: usize,
     numbers: usize,
+    /// The most numbers read ([`MAX_JSON_NUMBERS`]; a test's own below it).
+    max_numbers: usize,
     number: NumberParser<'a>,
 }
 
 impl<'a> Parser<'a> {
     fn fail(&self, at: usize, message: Message) -> Error {
-        let (line, column) = position(self.text, at);
-        Error::parse("json", Some(line), Some(column), message)
+        fail(self.text, at, message)
     }
 
     fn skip_space(&mut self) {
@@ -144,11 +151,11 @@ impl<'a> Parser<'a> {
                     return Err(self.fail(start, msg!("not-finite-number", text = token)));
                 }
                 self.numbers += 1;
-                if self.numbers > 6 * MAX_RULINGS {
+                if self.numbers > self.max_numbers {
                     return Err(Error::TooMany {
                         what: "numbers in the JSON",
                         got: self.numbers,
-                        max: 6 * MAX_RULINGS,
+                        max: self.max_numbers,
                     });
                 }
                 Value::Number(x)
@@ -165,10 +172,16 @@ impl<'a> Parser<'a> {
 /// Parses JSON text into a [`Value`] (the tool poses of `io/toolpath.rs`), with the size and
 /// nesting limits of [`parse`].
 pub(crate) fn value_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<(usize, Value)> {
+    value_at_most(text, number, MAX_JSON_NUMBERS)
+}
+
+/// [`value_with`] with at most `max_numbers` numbers (a parameter, so that a test reaches the
+/// limit with a few numbers instead of 25 million).
+fn value_at_most<'a>(text: &'a str, number: NumberParser<'a>, max_numbers: usize) -> Result<(usize, Value)> {
     if text.len() > MAX_IMPORT_TEXT {
         return Err(Error::TooMany { what: "bytes of JSON", got: text.len(), max: MAX_IMPORT_TEXT });
     }
-    let mut p = Parser { text, bytes: text.as_bytes(), at: 0, numbers: 0, number };
+    let mut p = Parser { text, bytes: text.as_bytes(), at: 0, numbers: 0, max_numbers, number };
     let root = p.value(0)?;
     p.skip_space();
     if p.at < text.len() {
@@ -184,20 +197,12 @@ pub fn parse(text: &str) -> Result<Imported> {
 
 /// As [`parse`], converting numbers with `number` (see [`NumberParser`]).
 pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Imported> {
-    if text.len() > MAX_IMPORT_TEXT {
-        return Err(Error::TooMany { what: "bytes of JSON", got: text.len(), max: MAX_IMPORT_TEXT });
-    }
-    let mut p = Parser { text, bytes: text.as_bytes(), at: 0, numbers: 0, number };
-    let (at, root) = p.value(0)?;
-    p.skip_space();
-    if p.at < text.len() {
-        return Err(p.fail(p.at, msg!("json-trailing")));
-    }
+    let (at, root) = value_with(text, number)?;
     let (segments_at, segments, grid) = match root {
         Value::Object(fields) => {
             let find = |k: &str| fields.iter().find(|f| f.0 == k);
             let Some((_, s_at, s)) = find("segments") else {
-                return Err(p.fail(at, msg!("json-segments-missing")));
+                return Err(fail(text, at, msg!("json-segments-missing")));
             };
             let dim = |k: &str| -> Result<Option<usize>> {
                 match find(k) {
@@ -205,22 +210,22 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
                     Some((_, a, Value::Number(x))) if x.fract() == 0.0 && *x >= 2.0 && *x <= MAX_RULINGS as f64 => {
                         Ok(Some(*x as usize))
                     }
-                    Some((_, a, _)) => Err(p.fail(*a, msg!("json-grid-integer", key = k, max = MAX_RULINGS))),
+                    Some((_, a, _)) => Err(fail(text, *a, msg!("json-grid-integer", key = k, max = MAX_RULINGS))),
                 }
             };
             let grid = match (dim("rows")?, dim("cols")?) {
                 (Some(r), Some(c)) => Some((r, c)),
                 (None, None) => None,
-                _ => return Err(p.fail(at, msg!("json-rows-and-cols"))),
+                _ => return Err(fail(text, at, msg!("json-rows-and-cols"))),
             };
             (*s_at, s.clone(), grid)
         }
         other => (at, other, None),
     };
     let Value::Array(items) = segments else {
-        return Err(p.fail(segments_at, msg!("json-segments-array")));
+        return Err(fail(text, segments_at, msg!("json-segments-array")));
     };
-    let mut coords = Vec::with_capacity(items.len().min(6 * MAX_RULINGS));
+    let mut coords = Vec::with_capacity(items.len().min(MAX_JSON_NUMBERS));
     // where each record starts, for the messages of check_records
     let mut starts: Vec<usize> = Vec::new();
     let nested = matches!(items.first(), Some((_, Value::Array(_))));
@@ -232,25 +237,29 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
             (false, Value::Number(x)) => coords.push(*x),
             (true, Value::Array(row)) => {
                 if row.len() != 6 {
-                    return Err(p.fail(*item_at, msg!("json-segment-six", found = row.len())));
+                    return Err(fail(text, *item_at, msg!("json-segment-six", found = row.len())));
                 }
                 for (a, v) in row {
                     match v {
                         Value::Number(x) => coords.push(*x),
-                        _ => return Err(p.fail(*a, msg!("json-number"))),
+                        _ => return Err(fail(text, *a, msg!("json-number"))),
                     }
                 }
             }
-            (true, _) => return Err(p.fail(*item_at, msg!("json-segment"))),
-            (false, _) => return Err(p.fail(*item_at, msg!("json-number"))),
+            (true, _) => return Err(fail(text, *item_at, msg!("json-segment"))),
+            (false, _) => return Err(fail(text, *item_at, msg!("json-number"))),
         }
     }
     if coords.len() % 6 != 0 {
-        return Err(p.fail(segments_at, msg!("json-whole-segments", count = coords.len())));
+        return Err(fail(text, segments_at, msg!("json-whole-segments", count = coords.len())));
     }
     if let Some((r, c)) = grid {
         if r * c * 6 != coords.len() {
-            return Err(p.fail(at, msg!("json-grid-count", rows = r, cols = c, need = r * c, found = coords.len() / 6)));
+            return Err(fail(
+                text,
+                at,
+                msg!("json-grid-count", rows = r, cols = c, need = r * c, found = coords.len() / 6),
+            ));
         }
     }
     super::check_records("json", &coords, |k| match starts.get(k) {
@@ -323,5 +332,64 @@ mod tests {
         assert!(e("[1,2] x").contains("unexpected text after"));
         assert!(e("\"abc").contains("unterminated string"));
         assert!(e("").contains("unexpected end"));
+    }
+
+    #[test]
+    fn nesting_is_limited_by_level_through_arrays_objects_and_keys() {
+        let read = |t: &str| value_with(t, &rust_number);
+        let at = |t: &str| {
+            let d = read(t).unwrap_err().details();
+            (d.reason, d.column)
+        };
+        // the root is level 0: 17 arrays (the innermost at level 16) are read, 18 are not
+        let arrays = |n: usize| format!("{}{}", "[".repeat(n), "]".repeat(n));
+        assert!(read(&arrays(17)).is_ok());
+        assert_eq!(at(&arrays(18)), (Some("json-too-deep"), Some(18)));
+        // an object's keys and values are a level below it: in 16 nested objects the last key
+        // and the 1 are at level 16; in 17 the last key is at 17 (column 16·6 + 2)
+        let objects = |n: usize| format!("{}1{}", "{\"a\": ".repeat(n), "}".repeat(n));
+        assert!(read(&objects(16)).is_ok());
+        assert_eq!(at(&objects(17)), (Some("json-too-deep"), Some(16 * 6 + 2)));
+        // and so are its keys: an object at level 16 fails at its key (column 18), not its value
+        let deep = format!("{}{{\"a\": 1}}{}", "[".repeat(16), "]".repeat(16));
+        assert_eq!(at(&deep), (Some("json-too-deep"), Some(18)));
+    }
+
+    #[test]
+    fn words_objects_and_grids_are_read_as_written() {
+        let read = |t: &str| value_with(t, &rust_number).unwrap().1;
+        assert_eq!(read("null"), Value::Null);
+        assert_eq!(read(" true "), Value::Bool);
+        assert_eq!(read("{}"), Value::Object(Vec::new()));
+        assert_eq!(read("{ \"k\" : [ ] }"), Value::Object(vec![("k".into(), 8, Value::Array(Vec::new()))]));
+        let reason = |t: &str| parse(t).unwrap_err().details().reason;
+        assert_eq!(reason("{}"), Some("json-segments-missing"));
+        assert_eq!(reason("{\"segments\": {}}"), Some("json-segments-array"));
+        assert_eq!(reason("[1,2] x"), Some("json-trailing"));
+        // rows and cols: integers from 2 to MAX_RULINGS
+        let two = "[[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1],[0,0,0,1,1,0]]";
+        assert_eq!(parse(&format!("{{\"rows\": 2, \"cols\": 2, \"segments\": {two}}}")).unwrap().grid, Some((2, 2)));
+        for rows in ["2.5", "1", "0", "-2", "4194305", "\"2\""] {
+            let e = parse(&format!("{{\"rows\": {rows}, \"cols\": 2, \"segments\": {two}}}")).unwrap_err();
+            assert_eq!((e.details().reason, e.details().column), (Some("json-grid-integer"), Some(10)), "rows {rows}");
+        }
+    }
+
+    #[test]
+    fn a_text_of_the_size_limit_is_read_and_a_byte_more_is_not() {
+        let data = "[0,0,0,1,0,0, 0,0,1,0,1,1]";
+        let mut text = format!("{data}{}", " ".repeat(MAX_IMPORT_TEXT - data.len()));
+        assert_eq!(parse(&text).unwrap().coords.len(), 12);
+        text.push(' ');
+        let e = parse(&text).unwrap_err();
+        assert_eq!((e.code(), e.details().limit), ("too-large", Some(MAX_IMPORT_TEXT as f64)));
+    }
+
+    #[test]
+    fn numbers_beyond_the_limit_are_refused_at_the_first_one_over() {
+        let text = "{\"rows\": 2, \"v\": [1, 2.5]}";
+        assert!(value_at_most(text, &rust_number, 3).is_ok());
+        let e = value_at_most(text, &rust_number, 2).unwrap_err();
+        assert_eq!(e, Error::TooMany { what: "numbers in the JSON", got: 3, max: 2 });
     }
 }

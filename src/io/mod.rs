@@ -116,4 +116,17 @@ mod tests {
             assert_eq!(classify(t), Token::Invalid, "{t}");
         }
     }
+
+    #[test]
+    fn a_record_is_of_zero_length_relative_to_its_endpoints() {
+        let at = |_| (None, None);
+        // endpoints near 1000 apart by 1e-10: |b − a|² = 1e-20 ≤ (1e-12)²·1e6 = 1e-18, zero length
+        let near = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1000.0, 0.0, 0.0, 1000.0, 1e-10, 0.0];
+        let e = check_records("csv", &near, at).unwrap_err();
+        assert_eq!(e.details().reason, Some("import-zero-length"));
+        // endpoints near 1 apart by 1e-11: |b − a|² = 1e-22 > (1e-12)²·1 = 1e-24, a direction
+        let short = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1e-11, 0.0];
+        assert!(check_records("csv", &short, at).is_ok());
+        assert_eq!(check_records("csv", &near[..6], at).unwrap_err().details().reason, Some("import-too-few"));
+    }
 }

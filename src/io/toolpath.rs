@@ -81,12 +81,16 @@ fn tool_from_header(text: &str) -> Option<Tool> {
     Tool::new(value("radius")?, value("length")?, end).ok()
 }
 
+/// The unit axis of pose k: a unit vector as written (ruledlab's own files) bit for bit, any
+/// other nonzero one normalised — scaled by its largest coordinate first where its squared
+/// length would overflow (1e300) or underflow (1e-200) — and the zero vector refused.
 fn pose_axis(source: &str, k: usize, axis: DVec3, at: (Option<usize>, Option<usize>)) -> Result<DVec3> {
-    if axis.length_squared() > 0.0 && axis.is_finite() && axis.normalize().is_finite() {
-        // a unit vector as written (ruledlab's own files) is kept bit for bit
-        Ok(if (axis.length_squared() - 1.0).abs() < 1e-15 { axis } else { axis.normalize() })
-    } else {
-        Err(Error::parse(source, at.0, at.1, crate::msg!("import-zero-axis", record = k)))
+    if (axis.length_squared() - 1.0).abs() < 1e-15 {
+        return Ok(axis);
+    }
+    match axis.try_normalize().or_else(|| (axis / axis.abs().max_element()).try_normalize()) {
+        Some(unit) => Ok(unit),
+        None => Err(Error::parse(source, at.0, at.1, crate::msg!("import-zero-axis", record = k))),
     }
 }
 
@@ -213,5 +217,46 @@ mod tests {
         assert!(e.to_string().starts_with("json: line 1, column 12: expected a pose"), "{e}");
         let e = read_poses("[{\"tip\": [0, 0, 0], \"axis\": [0, 0, 1]}]", true, &rust_number).unwrap_err();
         assert!(e.to_string().contains("at least 2"), "{e}");
+    }
+
+    #[test]
+    fn a_flat_tool_and_three_numbers_per_vector_are_read_as_written() {
+        let text = |tip: &str| {
+            format!(
+                "{{\"tool\": {{\"end\": \"flat\", \"radius\": 2, \"length\": 30}}, \"poses\": [{{\"tip\": {tip}, \"axis\": [0, 0, 1]}}, {{\"tip\": [1, 0, 0], \"axis\": [0, 0, 1]}}]}}"
+            )
+        };
+        let read = read_poses(&text("[0, 0, 0]"), true, &rust_number).unwrap();
+        assert_eq!(read.tool.map(|t| (t.end, t.radius, t.length)), Some((ToolEnd::Flat, 2.0, 30.0)));
+        for tip in ["[0, 0]", "[0, 0, 0, 0]"] {
+            let e = read_poses(&text(tip), true, &rust_number).unwrap_err();
+            assert_eq!(e.details().reason, Some("json-pose"), "{tip}");
+        }
+    }
+
+    #[test]
+    fn an_axis_of_any_nonzero_length_is_a_direction_and_zero_is_none() {
+        let at = (Some(1), None);
+        let axis = |v: DVec3| pose_axis("csv", 0, v, at);
+        // (2, 3, 6)/7 has |a|² = 1 − 2⁻⁵³ as written, and normalising it would move its last bits
+        let unit = DVec3::new(2.0 / 7.0, 3.0 / 7.0, 6.0 / 7.0);
+        assert_ne!(unit.normalize(), unit);
+        assert_eq!(axis(unit).unwrap().to_array().map(f64::to_bits), unit.to_array().map(f64::to_bits));
+        let diagonal = DVec3::new(1.0, 1.0, 0.0) / 2f64.sqrt();
+        for v in [DVec3::new(3.0, 3.0, 0.0), DVec3::new(1e300, 1e300, 0.0), DVec3::new(1e-200, 1e-200, 0.0)] {
+            assert!((axis(v).unwrap() - diagonal).length() < 1e-15, "{v}");
+        }
+        let e = axis(DVec3::ZERO).unwrap_err();
+        assert_eq!((e.details().reason, e.details().line), (Some("import-zero-axis"), Some(1)));
+    }
+
+    #[test]
+    fn poses_are_told_from_segments_by_a_tip_or_an_axis() {
+        assert!(looks_like_poses("[{\"tip\": [0, 0, 0], \"axis\": [0, 0, 1]}]"));
+        assert!(looks_like_poses("{\"poses\": []}"));
+        assert!(looks_like_poses("# a comment\nx,y,z,axis_i,axis_j,axis_k\n"));
+        assert!(looks_like_poses("TIP_X TIP_Y TIP_Z I J K\n"));
+        assert!(!looks_like_poses("[[0, 0, 0, 1, 0, 0]]"));
+        assert!(!looks_like_poses("ax,ay,az,bx,by,bz\n"));
     }
 }

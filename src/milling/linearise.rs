@@ -314,4 +314,50 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn distances_from_a_chord_and_an_arc_are_their_definitions() {
+        // the chord (1, 1, 0) → (1, 3, 0): a point beside its middle is 1 from it, beyond its ends
+        // the distance to the end; a chord of one point is that point
+        let (a, b) = (DVec3::new(1.0, 1.0, 0.0), DVec3::new(1.0, 3.0, 0.0));
+        assert_eq!(distance_from_chord(DVec3::new(0.0, 2.0, 0.0), a, b), 1.0);
+        assert_eq!(distance_from_chord(DVec3::new(1.0, 5.0, 0.0), a, b), 2.0);
+        assert_eq!(distance_from_chord(DVec3::new(4.0, 5.0, 0.0), a, a), 5.0);
+        // the arc X → Y on the unit sphere: a direction above its middle at 30° is 30° from it,
+        // one beside the arc is as far as the nearer end, and an arc of one point is that point
+        let deg = std::f64::consts::PI / 180.0;
+        let above = DVec3::new((45.0 * deg).cos() * (60.0 * deg).sin(), (45.0 * deg).sin() * (60.0 * deg).sin(), 0.5);
+        assert!((angle_from_arc(above, DVec3::X, DVec3::Y) - 30.0 * deg).abs() < 1e-15);
+        let beside = DVec3::new((-20.0 * deg).cos(), (-20.0 * deg).sin(), 0.0);
+        assert!((angle_from_arc(beside, DVec3::X, DVec3::Y) - 20.0 * deg).abs() < 1e-15);
+        assert!((angle_from_arc(DVec3::Y, DVec3::X, DVec3::X) - 90.0 * deg).abs() < 1e-15);
+    }
+
+    #[test]
+    fn one_rotary_axis_turning_alone_keeps_the_tool_axis_on_the_great_circle() {
+        // table-table-ac: A turning alone from 0° to 60° (C = 0), or C alone from 0° to 60° with A
+        // at 90° (the axis then on the equator), turns the tool axis about one line, along the
+        // great circle through its ends: no axis deviation with the angles interpolated
+        let m = Machine::preset("table-table-ac").unwrap();
+        for (from, to) in [([0.0, 0.0], [60.0, 0.0]), ([90.0, 0.0], [90.0, 60.0])] {
+            let (ja, jb) = (Joints { xyz: DVec3::ZERO, rotary: from }, Joints { xyz: DVec3::ZERO, rotary: to });
+            let (a, b) = (forward(&m, &ja, 50.0), forward(&m, &jb, 50.0));
+            assert!(a.axis.angle_between(b.axis) > 1.0, "the ends are 60° apart");
+            let d = block_deviation(&m, (&a, &b), (&ja, &jb), Interpolation::TcpAngles, 50.0);
+            assert!(d.axis < 1e-12 && d.tip < 1e-12, "{from:?} → {to:?}: {d:?}");
+        }
+    }
+
+    #[test]
+    fn a_blocks_midpoint_halves_the_chord_and_the_arc() {
+        let (a, b) = (
+            Pose { tip: DVec3::new(1.0, 2.0, 3.0), axis: DVec3::X },
+            Pose { tip: DVec3::new(3.0, 4.0, 5.0), axis: DVec3::Y },
+        );
+        let m = midpoint(&a, &b);
+        assert_eq!(m.tip, DVec3::new(2.0, 3.0, 4.0));
+        assert!((m.axis - DVec3::new(1.0, 1.0, 0.0) / 2f64.sqrt()).length() < 1e-16);
+        // opposite axes have no arc between them: the first is kept
+        assert_eq!(midpoint(&a, &Pose { axis: -DVec3::X, ..b }).axis, DVec3::X);
+    }
 }

@@ -168,4 +168,28 @@ mod tests {
         assert!(study(&s, 0.3, 0.1, 99).is_err());
         assert!(study(&AnalyticSurface::Cylinder, 0.3, 0.1, 5).is_err());
     }
+
+    #[test]
+    fn each_parameter_is_refused_by_name_at_its_bounds() {
+        let s = AnalyticSurface::Quartic;
+        let option = |u: f64, h0: f64, levels: usize| study(&s, u, h0, levels).unwrap_err().details().option;
+        assert_eq!(option(f64::INFINITY, 0.1, 5).as_deref(), Some("u"));
+        for h0 in [0.0, -0.1, 1.000001, f64::NAN, f64::INFINITY] {
+            assert_eq!(option(0.3, h0, 5).as_deref(), Some("h0"), "h0 = {h0}");
+        }
+        for levels in [1, MAX_STUDY_LEVELS + 1] {
+            assert_eq!(option(0.3, 0.1, levels).as_deref(), Some("levels"));
+        }
+        // h0 = 1 and both ends of the levels are accepted; the steps halve from h0
+        let ok = study(&s, 0.3, 1.0, 2).unwrap();
+        assert_eq!((ok.u, ok.steps.clone()), (0.3, vec![1.0, 0.5]));
+        assert_eq!(study(&s, 0.3, 0.1, MAX_STUDY_LEVELS).unwrap().steps.len(), MAX_STUDY_LEVELS);
+    }
+
+    #[test]
+    fn two_errors_above_the_floor_are_enough_for_an_order() {
+        // errors 4e-2 and 1e-2 at H = 0.2 and 0.1: order log₂ 4 = 2; one error alone has none
+        assert_near!(fit_order(&[0.2, 0.1], &[4e-2, 1e-2]), 2.0, EXACT);
+        assert!(fit_order(&[0.2, 0.1], &[4e-2, 0.0]).is_nan());
+    }
 }

@@ -234,4 +234,54 @@ mod tests {
             assert!(chain.bend(t).is_err());
         }
     }
+
+    #[test]
+    fn parallel_rulings_take_the_perpendicular_between_them_or_the_previous_one() {
+        let line = |p: [f64; 3]| Line { point: DVec3::from(p), dir: DVec3::X };
+        // skew: the unit common perpendicular e₀ × e₁
+        let skew = Line { point: DVec3::ZERO, dir: DVec3::Y };
+        assert_eq!(body_normal(&line([0.0, 0.0, 0.0]), &skew, None), DVec3::Z);
+        // parallel, 2 apart: the unit vector from the first to the second, across them
+        assert_eq!(body_normal(&line([5.0, 3.0, 0.0]), &line([0.0, 1.0, 0.0]), Some(DVec3::Z)), -DVec3::Y);
+        // within 1e-12 of their size of each other (1e-10 at 1000), or the same line: the
+        // previous body's perpendicular, made orthogonal to them
+        let near = (line([1e3, 0.0, 0.0]), line([1e3, 1e-10, 0.0]));
+        assert_eq!(body_normal(&near.0, &near.1, Some(DVec3::new(1.0, 0.0, 1.0))), DVec3::Z);
+        assert_eq!(body_normal(&near.0, &near.0, Some(DVec3::Z)), DVec3::Z);
+        let any = body_normal(&near.0, &near.0, None);
+        assert!((any.length() - 1.0).abs() < 1e-15 && any.dot(DVec3::X) == 0.0);
+    }
+
+    #[test]
+    fn a_long_chain_moves_as_the_rotations_composed_one_by_one() {
+        // 10 rulings of a helicoid: the blocks of ⌈√10⌉ = 4 hinges are composed across blocks too
+        let n = 10;
+        let flat: Vec<f64> = (0..n)
+            .flat_map(|k| {
+                let (s, c) = (k as f64 * std::f64::consts::PI / 5.0).sin_cos();
+                [0.0, 0.0, 0.5 * k as f64, c, s, 0.5 * k as f64]
+            })
+            .collect();
+        let surface = RuledSurface::from_flat(&flat).unwrap();
+        let chain = HingeChain::new(&surface);
+        let angles: Vec<f64> = (0..n - 2).map(|k| 0.1 * (k + 1) as f64).collect();
+        let moved = chain.deform(&angles).unwrap();
+        // the reference: M_k = M_{k−1} ∘ Rot(R_k, θ_k) as affine maps, ruling j moved by M_{j−1}
+        let mut m = glam::DAffine3::IDENTITY;
+        for j in 0..n {
+            if j >= 2 {
+                let hinge = surface.segment(j - 1).line();
+                let rot = glam::DAffine3::from_translation(hinge.point)
+                    * glam::DAffine3::from_axis_angle(hinge.dir, angles[j - 2])
+                    * glam::DAffine3::from_translation(-hinge.point);
+                m *= rot;
+            }
+            let (want, got) = (surface.segment(j), moved.segment(j));
+            assert_near!(m.transform_point3(want.a), got.a, 1e-14);
+            assert_near!(m.transform_point3(want.b), got.b, 1e-14);
+        }
+        // bending: t = 0 is the input, t = 1 the conoidal model
+        assert_eq!(chain.bend(0.0).unwrap(), surface);
+        assert_eq!(chain.bend(1.0).unwrap(), chain.conoidal());
+    }
 }

@@ -158,3 +158,19 @@ test('bad input throws clear Errors', () => {
   const ok = ToolPath.fromSegments(seg, { radius: 0.1, length: 1, end: 'flat' });
   assert.equal(ok.length, 2);
 });
+
+test('G-code: a rotary axis described without a direction turns as +1, a machine without a name is custom', () => {
+  const path = ToolPath.example(7).refine({ steps: 1 });
+  const preset = ToolPath.machine('table-table-ac');
+  assert.ok(preset.rotary.every((/** @type {{direction: number}} */ r) => r.direction === 1));
+  const without = { ...preset, rotary: preset.rotary.map(({ direction, ...rest }) => rest) };
+  const options = { dialect: /** @type {const} */ ('linuxcnc'), mode: /** @type {const} */ ('machine'), scale: 10 };
+  const gcode = path.export('gcode', { ...options, machine: preset });
+  assert.equal(path.export('gcode', { ...options, machine: without }), gcode);
+  const reversed = { ...preset, rotary: preset.rotary.map((r) => ({ ...r, direction: -1 })) };
+  assert.notEqual(path.export('gcode', { ...options, machine: reversed }), gcode);
+  // and one without a name is called "custom"
+  const { name, ...unnamed } = preset;
+  assert.equal(name, 'table-table-ac');
+  assert.match(path.export('gcode', { ...options, machine: unnamed }), /\(machine custom: /);
+});
