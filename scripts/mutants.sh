@@ -85,7 +85,7 @@ if [ ${#native[@]} -gt 0 ]; then
     else
       cat "$result/timeout.txt" >> "$result/previously_caught.txt"
     fi
-    if [ $again = 1 ]; then
+    if [ $again = 1 ] && [ "${tests[*]}" != --lib ]; then
       # after new tests: the unit tests first (a cheap build), the whole suite on what is left
       run --output "$out" "${common[@]}" --iterate --cargo-arg=--lib
       cat "$result/timeout.txt" >> "$result/previously_caught.txt"

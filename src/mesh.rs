@@ -135,6 +135,12 @@ impl Mesh {
     /// [`MAX_MESH_VERTICES`] vertices, coordinates finite and at most `MAX_COORD`, every index a
     /// vertex.
     pub fn from_flat(coords: &[f64], indices: &[u32]) -> Result<Self> {
+        Self::from_flat_at_most(coords, indices, MAX_MESH_VERTICES)
+    }
+
+    /// [`Mesh::from_flat`] with at most `max_vertices` vertices (a parameter, so that a test
+    /// reaches the limit with four vertices instead of eight million).
+    fn from_flat_at_most(coords: &[f64], indices: &[u32], max_vertices: usize) -> Result<Self> {
         if coords.len() % 3 != 0 {
             return Err(Error::BadLength { what: "vertex coordinates", len: coords.len(), multiple: 3 });
         }
@@ -142,8 +148,8 @@ impl Mesh {
             return Err(Error::BadLength { what: "triangle indices", len: indices.len(), multiple: 3 });
         }
         let n = coords.len() / 3;
-        if n > MAX_MESH_VERTICES {
-            return Err(Error::TooMany { what: "vertices", got: n, max: MAX_MESH_VERTICES });
+        if n > max_vertices {
+            return Err(Error::TooMany { what: "vertices", got: n, max: max_vertices });
         }
         check_coordinates(coords, 3)?;
         if let Some((k, &i)) = indices.iter().enumerate().find(|(_, &i)| i as usize >= n) {
@@ -340,5 +346,13 @@ mod tests {
         for m in [&flat, &ball] {
             assert_eq!(facing(m, axis), 1);
         }
+    }
+
+    #[test]
+    fn vertices_beyond_the_limit_are_refused() {
+        let square = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0];
+        assert_eq!(Mesh::from_flat_at_most(&square, &[0, 1, 2], 4).unwrap().positions.len(), 4);
+        let e = Mesh::from_flat_at_most(&square, &[0, 1, 2], 3).unwrap_err();
+        assert_eq!(e, Error::TooMany { what: "vertices", got: 4, max: 3 });
     }
 }

@@ -246,7 +246,7 @@ impl Machine {
     }
 
     /// A short description for a program's header: "table-table-ac: A on the table about X
-    /// (-30 to 120), C on the table about Z (continuous)".
+    /// (-30 to 120 deg), C on the table about Z (continuous)".
     pub fn describe(&self) -> String {
         let one = |r: &RotaryAxis| {
             let on = match r.on {
@@ -257,12 +257,12 @@ impl Machine {
             let limits = match (r.min, r.max) {
                 (None, None) => "continuous".to_string(),
                 (lo, hi) => format!(
-                    "{} to {}",
+                    "{} to {} deg",
                     lo.map_or("-inf".to_string(), |v| format!("{v}")),
                     hi.map_or("inf".to_string(), |v| format!("{v}"))
                 ),
             };
-            format!("{} on the {on} about {about} ({limits} deg)", r.name.letter())
+            format!("{} on the {on} about {about} ({limits})", r.name.letter())
         };
         format!("{}: {}, {}", self.name, one(&self.rotary[0]), one(&self.rotary[1]))
     }
@@ -316,5 +316,24 @@ mod tests {
         };
         assert!((r.value(r.angle(37.0)) - 37.0).abs() < 1e-12);
         assert!((r.angle(90.0)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn presets_describe_their_axes_and_limits() {
+        let described: Vec<String> = PRESETS.iter().map(|n| Machine::preset(n).unwrap().describe()).collect();
+        assert_eq!(
+            described,
+            [
+                "table-table-ac: A on the table about X (-30 to 120 deg), C on the table about Z (continuous)",
+                "table-table-bc: B on the table about Y (-110 to 110 deg), C on the table about Z (continuous)",
+                "head-table-bc: B on the head about Y (-95 to 95 deg), C on the table about Z (continuous)",
+                "head-head-ac: C on the head about Z (-360 to 360 deg), A on the head about X (-110 to 110 deg)",
+            ]
+        );
+        let mut one_sided = Machine::preset("table-table-ac").unwrap();
+        one_sided.rotary[0].min = None;
+        assert!(one_sided.describe().contains("A on the table about X (-inf to 120 deg)"));
+        one_sided.rotary[0] = RotaryAxis { min: Some(-30.0), max: None, ..one_sided.rotary[0] };
+        assert!(one_sided.describe().contains("(-30 to inf deg)"));
     }
 }

@@ -479,4 +479,68 @@ mod tests {
         assert_eq!(number(-2.25, true), "-2.2500");
         assert_eq!(clean("a (b); [c] é"), "a <b>, <c>  ");
     }
+
+    #[test]
+    fn options_are_refused_by_name_at_their_bounds() {
+        let option = |o: PostOptions| validate(&o).err().and_then(|e| e.details().option);
+        let base = PostOptions::default;
+        assert_eq!(option(base()), None);
+        // positive numbers of at most 1e7
+        for (name, set) in [
+            ("feed", (|o: &mut PostOptions, x| o.feed = x) as fn(&mut PostOptions, f64)),
+            ("approachFeed", |o, x| o.approach_feed = Some(x)),
+            ("scale", |o, x| o.scale = x),
+            ("spindle", |o, x| o.spindle = x),
+            ("clearance", |o, x| o.clearance = x),
+        ] {
+            for bad in [0.0, -1.0, 1e7 * (1.0 + 1e-15), f64::NAN, f64::INFINITY] {
+                let mut o = base();
+                set(&mut o, bad);
+                assert_eq!(option(o).as_deref(), Some(name), "{name} = {bad}");
+            }
+            let mut o = base();
+            set(&mut o, 1e7);
+            assert_eq!(option(o), None, "{name} = 1e7");
+        }
+        // the safe height may be zero or negative, not beyond 1e7
+        for (h, ok) in [(0.0, true), (-20.0, true), (-1e7, true), (-2e7, false), (f64::NAN, false)] {
+            assert_eq!(option(PostOptions { safe_height: Some(h), ..base() }).is_none(), ok, "safe height {h}");
+        }
+        // the tolerance from 1e-4 mm
+        assert_eq!(option(PostOptions { tolerance: 1e-4, ..base() }), None);
+        assert_eq!(option(PostOptions { tolerance: 0.99e-4, ..base() }).as_deref(), Some("tolerance"));
+        // tool 1–99999, work offset 1–6, a name of 1 to 24 letters, digits or _
+        for (o, name) in [
+            (PostOptions { tool: 0, ..base() }, "tool"),
+            (PostOptions { tool: 100_000, ..base() }, "tool"),
+            (PostOptions { work_offset: 0, ..base() }, "workOffset"),
+            (PostOptions { work_offset: 7, ..base() }, "workOffset"),
+            (PostOptions { name: String::new(), ..base() }, "name"),
+            (PostOptions { name: "A".repeat(25), ..base() }, "name"),
+            (PostOptions { name: "A B".into(), ..base() }, "name"),
+        ] {
+            assert_eq!(option(o).as_deref(), Some(name));
+        }
+        for o in [
+            PostOptions { tool: 99_999, work_offset: 6, name: "Z_9".repeat(8), ..base() },
+            PostOptions { tool: 1, work_offset: 1, name: "a".into(), ..base() },
+        ] {
+            assert_eq!(option(o), None);
+        }
+    }
+
+    #[test]
+    fn retracts_follow_the_axis_and_spindles_print_whole_numbers_whole() {
+        // up the axis (0.6, 0, 0.8) from (1, 2, 3) to height 7: 4 = 0.8·5, so 5 along it
+        let p = Pose { tip: DVec3::new(1.0, 2.0, 3.0), axis: DVec3::new(0.6, 0.0, 0.8) };
+        assert_eq!(on_axis(&p, 7.0, 0).unwrap().tip, DVec3::new(4.0, 2.0, 7.0));
+        // an axis below 0.1 from the horizontal has no retract: named by its pose
+        let flat = Pose { axis: DVec3::new(0.995, 0.0, 0.0999), ..p };
+        assert_eq!(on_axis(&flat, 7.0, 3).unwrap_err().details().index, Some(3));
+        assert!(on_axis(&Pose { axis: DVec3::new(0.995, 0.0, 0.1), ..p }, 7.0, 3).is_ok());
+        assert_eq!((speed(10000.0), speed(12.5)), ("10000".to_string(), number(12.5, false)));
+        // inverse time: a block of 2 mm at 100 mm/min takes 0.02 min, F 50; a zero block is 1e-6
+        assert_eq!(Rate::inverse_time(100.0, 2.0), 50.0);
+        assert_eq!(Rate::inverse_time(100.0, 0.0), 1e8);
+    }
 }
