@@ -284,4 +284,26 @@ mod tests {
         assert_eq!(chain.bend(0.0).unwrap(), surface);
         assert_eq!(chain.bend(1.0).unwrap(), chain.conoidal());
     }
+
+    #[test]
+    fn bending_turns_each_body_back_by_its_angle_times_t() {
+        // rulings turning unevenly and climbing unevenly: the bodies' normals turn about the hinges
+        let flat = [
+            0.0, 0.0, 0.0, 1.0, 0.0, 0.0, //
+            0.1, 0.2, 1.0, 0.3, 1.0, 1.4, //
+            -0.2, 0.1, 2.1, -1.0, 0.5, 1.7, //
+            0.3, -0.1, 2.9, 0.2, -1.1, 3.6, //
+            0.0, 0.4, 4.2, 1.1, 0.9, 4.0, //
+            0.2, 0.0, 5.0, 0.4, 1.2, 5.8,
+        ];
+        let surface = RuledSurface::from_flat(&flat).unwrap();
+        let chain = HingeChain::new(&surface);
+        assert!(chain.hinge_angles().iter().filter(|t| t.abs() > 0.5).count() >= 3, "{:?}", chain.hinge_angles());
+        let minus: Vec<f64> = chain.hinge_angles().iter().map(|t| -0.5 * t).collect();
+        assert_eq!(chain.bend(0.5).unwrap(), chain.deform(&minus).unwrap());
+        assert_eq!(chain.bend(1.0).unwrap(), chain.conoidal());
+        // the conoidal model's bodies all have the first body's normal: its hinge angles vanish
+        let flat_again = HingeChain::new(&chain.conoidal());
+        assert!(flat_again.hinge_angles().iter().all(|t| t.abs() < 1e-12), "{:?}", flat_again.hinge_angles());
+    }
 }

@@ -131,3 +131,20 @@ pub trait SmoothRuled {
         RuledSurface::new(segments)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::catalogue::AnalyticSurface;
+
+    #[test]
+    fn the_central_tangent_of_a_helicoid_is_its_axis_and_a_cylinder_has_none() {
+        // rulings (cos u, sin u, 0) turning about the z-axis: e × e′ is ±z at every u
+        let h = AnalyticSurface::by_name("helicoid").unwrap();
+        for u in [-1.0, 0.0, 0.4, 2.5] {
+            let t = SmoothRuled::central_tangent(&h, u).unwrap();
+            assert!((t.z.abs() - 1.0).abs() < 1e-15 && t.x.abs() < 1e-15 && t.y.abs() < 1e-15, "{t}");
+        }
+        assert_eq!(SmoothRuled::central_tangent(&AnalyticSurface::by_name("cylinder").unwrap(), 0.3), None);
+    }
+}
