@@ -97,3 +97,93 @@ pub trait SmoothCongruence {
         worst
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// p(u, v) = (u, v, 0), d(u, v) = (v, −u, 1) over [1, 3] × [−2, 4].
+    struct Toy;
+
+    impl SmoothCongruence for Toy {
+        fn name(&self) -> &str {
+            "toy"
+        }
+        fn jet(&self, u: f64, v: f64) -> CongruenceJet {
+            CongruenceJet {
+                p: DVec3::new(u, v, 0.0),
+                p_u: DVec3::X,
+                p_v: DVec3::Y,
+                d: DVec3::new(v, -u, 1.0),
+                d_u: DVec3::new(0.0, -1.0, 0.0),
+                d_v: DVec3::X,
+            }
+        }
+        fn domain(&self) -> ((f64, f64), (f64, f64), usize, usize) {
+            ((1.0, 3.0), (-2.0, 4.0), 5, 5)
+        }
+    }
+
+    /// The line at (u, v) with its start moved by `shift` across it and its direction turned
+    /// by `angle` towards (1, 0, −v)/|…| (perpendicular to d = (v, −u, 1)).
+    fn moved(u: f64, v: f64, shift: f64, angle: f64) -> (DVec3, DVec3) {
+        let d = DVec3::new(v, -u, 1.0);
+        let across = DVec3::new(1.0, 0.0, -v).normalize();
+        let p = DVec3::new(u, v, 0.0) + shift * across;
+        (p, p + angle.cos() * d + angle.sin() * d.length() * across)
+    }
+
+    fn congruence(rows: usize, cols: usize, line: impl Fn(usize, usize) -> (DVec3, DVec3)) -> LineCongruence {
+        let (p, q): (Vec<DVec3>, Vec<DVec3>) = (0..rows * cols).map(|k| line(k / cols, k % cols)).unzip();
+        LineCongruence::from_points(rows, cols, &p, &q).unwrap()
+    }
+
+    #[test]
+    fn grid_parameters_span_the_domain_row_by_row() {
+        // 5 rows over u ∈ [1, 3] (step 1/2), 4 columns over v ∈ [−2, 4] (step 2)
+        assert_eq!(Toy.parameters(0, 0, 5, 4), (1.0, -2.0));
+        assert_eq!(Toy.parameters(1, 2, 5, 4), (1.5, 2.0));
+        assert_eq!(Toy.parameters(4, 3, 5, 4), (3.0, 4.0));
+        let g = Toy.grid_reaching(5, 4, 2.0).unwrap();
+        assert_eq!((g.rows(), g.cols()), (5, 4));
+        let s = g.line(1, 2);
+        assert_eq!((s.a, s.b), (DVec3::new(1.5, 2.0, 0.0), DVec3::new(1.5 + 4.0, 2.0 - 3.0, 2.0)));
+        let s = Toy.grid(5, 4).unwrap().line(4, 1);
+        assert_eq!((s.a, s.b), (DVec3::new(3.0, 0.0, 0.0), DVec3::new(3.0, -3.0, 1.0)));
+    }
+
+    /// Only the new lines of a refined grid count: (0, 0) and (2, 2) are moved far and do not;
+    /// the largest shift, 0.25, is at (0, 1) (one odd index), the largest turn, 0.3, at (1, 0).
+    #[test]
+    fn errors_take_the_worst_new_line() {
+        let r = congruence(3, 3, |i, j| {
+            let (u, v) = Toy.parameters(i, j, 3, 3);
+            let (shift, angle) = match (i, j) {
+                (0, 0) | (2, 2) => (10.0, 1.0),
+                (0, 1) => (0.25, 0.0),
+                (1, 0) => (0.0, 0.3),
+                (1, 1) => (0.1, 0.1),
+                _ => (0.0, 0.0),
+            };
+            moved(u, v, shift, angle)
+        });
+        let (distance, angle) = Toy.errors(&r);
+        assert!((distance - 0.25).abs() < 1e-14 && (angle - 0.3).abs() < 1e-12, "{distance} {angle}");
+    }
+
+    /// A 2 × 3 diagonal grid stands at the cell centres of a 5 × 7 grid: (u, v) of (2i + 1, 2j + 1).
+    #[test]
+    fn diagonal_errors_measure_at_the_cell_centres() {
+        let d = congruence(2, 3, |i, j| {
+            let (u, v) = Toy.parameters(2 * i + 1, 2 * j + 1, 5, 7);
+            let (shift, angle) = match (i, j) {
+                (1, 2) => (0.5, 0.0),
+                (0, 1) => (0.0, 0.2),
+                _ => (0.0, 0.0),
+            };
+            moved(u, v, shift, angle)
+        });
+        let (distance, angle) = Toy.diagonal_errors(&d);
+        assert!((distance - 0.5).abs() < 1e-14 && (angle - 0.2).abs() < 1e-12, "{distance} {angle}");
+    }
+}

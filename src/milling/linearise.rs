@@ -176,13 +176,26 @@ fn renamed(e: Error, origin: &[f64]) -> Error {
 }
 
 /// Solves the kinematics of `poses` (part frame, mm) and halves the blocks whose interpolation
-/// strays beyond `tolerance` (mm) until none does.
+/// strays beyond `tolerance` (mm) until none does, in at most [`MAX_LINEARISATION_ROUNDS`]
+/// rounds and [`MAX_POST_POSES`] poses.
 pub fn linearise(
     m: &Machine,
     poses: &[Pose],
     tool_length: f64,
     how: Interpolation,
     tolerance: f64,
+) -> Result<Linearised> {
+    linearise_at_most(m, poses, tool_length, how, tolerance, (MAX_LINEARISATION_ROUNDS, MAX_POST_POSES))
+}
+
+/// [`linearise`] with its limits, (rounds, poses), as a parameter.
+fn linearise_at_most(
+    m: &Machine,
+    poses: &[Pose],
+    tool_length: f64,
+    how: Interpolation,
+    tolerance: f64,
+    (max_rounds, max_poses): (usize, usize),
 ) -> Result<Linearised> {
     let mut poses = poses.to_vec();
     let mut origin: Vec<f64> = (0..poses.len()).map(|i| i as f64).collect();
@@ -216,7 +229,7 @@ pub fn linearise(
                 report: Linearisation { tolerance, before, after, inserted, rounds: round, blocks },
             });
         }
-        if round == MAX_LINEARISATION_ROUNDS {
+        if round == max_rounds {
             let worst = bad.iter().copied().fold(bad[0], |w, i| if blocks[i].max() > blocks[w].max() { i } else { w });
             let pose = origin[worst].floor() as usize;
             return Err(Error::Unreachable {
@@ -231,12 +244,8 @@ pub fn linearise(
                 ),
             });
         }
-        if poses.len() + bad.len() > MAX_POST_POSES {
-            return Err(Error::TooMany {
-                what: "poses of the program",
-                got: poses.len() + bad.len(),
-                max: MAX_POST_POSES,
-            });
+        if poses.len() + bad.len() > max_poses {
+            return Err(Error::TooMany { what: "poses of the program", got: poses.len() + bad.len(), max: max_poses });
         }
         let (mut p, mut o) = (Vec::with_capacity(poses.len() + bad.len()), Vec::with_capacity(poses.len() + bad.len()));
         let mut c = Vec::with_capacity(poses.len() + bad.len());
@@ -359,5 +368,89 @@ mod tests {
         assert!((m.axis - DVec3::new(1.0, 1.0, 0.0) / 2f64.sqrt()).length() < 1e-16);
         // opposite axes have no arc between them: the first is kept
         assert_eq!(midpoint(&a, &Pose { axis: -DVec3::X, ..b }).axis, DVec3::X);
+    }
+
+    /// Ends within 1e-12 of opposite span no plane one can trust (their cross product is mostly
+    /// rounding): like the midpoint, the arc keeps its start, and a direction square to it is
+    /// 90° away, although a plane through (1, 0, 0) and (−1, 1e-13, 0) would hold it.
+    #[test]
+    fn an_arc_between_nearly_opposite_ends_is_its_start() {
+        let b = DVec3::new(-1.0, 1e-13, 0.0);
+        assert!((angle_from_arc(DVec3::Y, DVec3::X, b) - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+    }
+
+    /// An error at pose 5 of a list with poses inserted (origins 0, ½, 1, 1½, 2, 2½, 3) is at
+    /// pose 2 of the given path: the error and its message's `pose` say so, its other numbers
+    /// stay; a pose beyond the list keeps its number, and other errors pass unchanged.
+    #[test]
+    fn errors_name_the_pose_of_the_given_path() {
+        let origin = [0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0];
+        let at = |pose: usize| Error::Unreachable {
+            pose,
+            message: crate::msg!("linearisation-tolerance", pose = pose, next = pose + 1, rounds = 7),
+        };
+        let Error::Unreachable { pose, message } = renamed(at(5), &origin) else { panic!("unreachable") };
+        assert_eq!(pose, 2);
+        assert_eq!(
+            message.args,
+            vec![("pose", Arg::Number(2.0)), ("next", Arg::Number(6.0)), ("rounds", Arg::Number(7.0))]
+        );
+        assert!(matches!(renamed(at(9), &origin), Error::Unreachable { pose: 9, .. }));
+        let other = Error::parameter("tolerance", "too small");
+        assert_eq!(renamed(other.clone(), &origin), other);
+    }
+
+    /// Every inserted pose lies halfway between its neighbours on the given path (origins
+    /// k/2^r, increasing): the second block turns the axis 20°, the first 2°.
+    #[test]
+    fn inserted_poses_halve_their_blocks_of_the_given_path() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        let deg = std::f64::consts::PI / 180.0;
+        let axis = |a: f64| DVec3::new((a * deg).sin(), 0.0, (a * deg).cos());
+        let poses = [
+            Pose { tip: DVec3::new(0.0, 0.0, 0.0), axis: axis(0.0) },
+            Pose { tip: DVec3::new(10.0, 0.0, 0.0), axis: axis(2.0) },
+            Pose { tip: DVec3::new(20.0, 0.0, 0.0), axis: axis(22.0) },
+        ];
+        let l = linearise(&m, &poses, 50.0, Interpolation::Machine, 1e-3).unwrap();
+        assert!(l.report.inserted >= 2 && l.report.rounds >= 2, "{:?}", l.report);
+        assert_eq!((l.origin[0], l.origin[l.origin.len() - 1]), (0.0, 2.0));
+        for k in 1..l.origin.len() - 1 {
+            let (a, o, b) = (l.origin[k - 1], l.origin[k], l.origin[k + 1]);
+            assert!(a < o && o < b, "{a} {o} {b}");
+            if o.fract() != 0.0 {
+                // an inserted pose: k/2^r with r ≤ the rounds, between the given poses ⌊o⌋ and ⌈o⌉
+                let scaled = o * 2f64.powi(l.report.rounds as i32);
+                assert_eq!(scaled.fract(), 0.0, "{o}");
+            }
+        }
+    }
+
+    /// A tolerance out of reach: after the last round the error names the worst block by its
+    /// pose of the given path (the second block turns the axis 20°, the first 2°: pose 1) and
+    /// the rounds; both blocks are halved each round (3, 5, 9, 17 poses), so a limit of 5 poses
+    /// is met in round 0 and exceeded in round 1 (5 + 4 = 9), and one of 4 at once (3 + 2).
+    #[test]
+    fn the_limits_of_rounds_and_poses_are_kept() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        let deg = std::f64::consts::PI / 180.0;
+        let axis = |a: f64| DVec3::new((a * deg).sin(), 0.0, (a * deg).cos());
+        let poses = [
+            Pose { tip: DVec3::new(0.0, 0.0, 0.0), axis: axis(0.0) },
+            Pose { tip: DVec3::new(10.0, 0.0, 0.0), axis: axis(2.0) },
+            Pose { tip: DVec3::new(20.0, 0.0, 0.0), axis: axis(22.0) },
+        ];
+        let run = |limits| linearise_at_most(&m, &poses, 50.0, Interpolation::Machine, 1e-300, limits);
+        let Err(Error::Unreachable { pose, message }) = run((3, 100)) else { panic!("{:?}", run((3, 100))) };
+        assert_eq!((pose, message.reason), (1, "linearisation-tolerance"));
+        assert_eq!((message.arg("rounds"), message.arg("next")), (Some(&Arg::Number(3.0)), Some(&Arg::Number(2.0))));
+        for (max, got) in [(5, 9), (4, 5), (16, 17)] {
+            assert!(
+                matches!(run((3, max)), Err(Error::TooMany { got: g, max: m, .. }) if g == got && m == max),
+                "{max}: {:?}",
+                run((3, max)).err()
+            );
+        }
+        assert!(matches!(run((3, 17)), Err(Error::Unreachable { .. })));
     }
 }

@@ -336,4 +336,52 @@ mod tests {
         one_sided.rotary[0] = RotaryAxis { min: Some(-30.0), max: None, ..one_sided.rotary[0] };
         assert!(one_sided.describe().contains("(-30 to inf deg)"));
     }
+
+    /// Each check alone refuses its machine: numbers up to 1e7 in size, not beyond; direction
+    /// −1 is as good as 1; a bad zero with a good pivot, a bad travel minimum with a good maximum.
+    #[test]
+    fn each_check_of_a_machine_stands_alone() {
+        let ok = || Machine::preset("table-table-ac").unwrap();
+        let refused = |change: &dyn Fn(&mut Machine)| {
+            let mut m = ok();
+            change(&mut m);
+            m.validate().is_err()
+        };
+        assert!(!refused(&|m| m.rotary[0].direction = -1.0));
+        assert!(!refused(&|m| m.rotary[0].zero = -1e7));
+        assert!(refused(&|m| m.rotary[0].zero = 1e7 * (1.0 + 1e-15)));
+        assert!(refused(&|m| m.rotary[1].zero = f64::NAN));
+        assert!(refused(&|m| m.rotary[1].pivot[2] = f64::INFINITY));
+        assert!(refused(&|m| m.rotary[0].max = Some(2e7)));
+        assert!(refused(&|m| m.travel[0] = [f64::NAN, 100.0]));
+        assert!(refused(&|m| m.travel[1] = [-100.0, f64::INFINITY]));
+        assert!(refused(&|m| m.part_zero[2] = -2e7));
+    }
+
+    /// Limits are kept to within 1e-9°, a value's rounding, and no further.
+    #[test]
+    fn limits_allow_a_rounding_beyond_them() {
+        let a = Machine::preset("table-table-ac").unwrap().rotary[0];
+        for (v, allowed) in
+            [(-30.0 - 0.5e-9, true), (120.0 + 0.5e-9, true), (-30.0 - 2e-9, false), (120.0 + 2e-9, false)]
+        {
+            assert_eq!(a.allows(v), allowed, "{v}");
+        }
+        assert!(!a.allows(-31.0) && !a.allows(121.0) && a.allows(45.0));
+    }
+
+    /// The presets are the machines their comments describe: a trunnion's tilt axis 80 mm
+    /// below the table top, a swivel head's B 150 mm and a fork head's A 120 mm above the
+    /// spindle nose, the C axes through the origin; every part's zero at (10, −5, 25).
+    #[test]
+    fn presets_have_their_pivots_and_part_zero() {
+        let pivots = |name: &str| Machine::preset(name).unwrap().rotary.map(|r| r.pivot);
+        assert_eq!(pivots("table-table-ac"), [[0.0, 0.0, -80.0], [0.0; 3]]);
+        assert_eq!(pivots("table-table-bc"), [[0.0, 0.0, -80.0], [0.0; 3]]);
+        assert_eq!(pivots("head-table-bc"), [[0.0, 0.0, 150.0], [0.0; 3]]);
+        assert_eq!(pivots("head-head-ac"), [[0.0; 3], [0.0, 0.0, 120.0]]);
+        for name in PRESETS {
+            assert_eq!(Machine::preset(name).unwrap().part_zero, [10.0, -5.0, 25.0], "{name}");
+        }
+    }
 }

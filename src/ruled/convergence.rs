@@ -192,4 +192,16 @@ mod tests {
         assert_near!(fit_order(&[0.2, 0.1], &[4e-2, 1e-2]), 2.0, EXACT);
         assert!(fit_order(&[0.2, 0.1], &[4e-2, 0.0]).is_nan());
     }
+
+    /// A step of 0 is refused as a parameter before any ruling is taken (not as the parallel
+    /// rulings it would give).
+    #[test]
+    fn a_zero_step_is_a_bad_parameter() {
+        for h0 in [0.0, -0.0] {
+            assert!(matches!(
+                study(&AnalyticSurface::Quartic, 0.3, h0, 5),
+                Err(Error::InvalidParameter { name: "h0", .. })
+            ));
+        }
+    }
 }

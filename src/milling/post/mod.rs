@@ -27,7 +27,7 @@ pub mod sinumerik;
 
 use crate::error::{Error, Result};
 use crate::milling::kinematics::{check_travel, machine_position, Joints};
-use crate::milling::linearise::{linearise, Interpolation, Linearisation};
+use crate::milling::linearise::{linearise, Interpolation, Linearisation, Linearised};
 use crate::milling::machine::Machine;
 use crate::milling::{Pose, ToolEnd, ToolPath};
 use crate::tolerance::{GCODE_DECIMALS, MAX_MACHINE_VALUE, MIN_LINEARISATION_TOLERANCE, MIN_RETRACT_COS};
@@ -309,8 +309,31 @@ fn on_axis(p: &Pose, h: f64, index: usize) -> Result<Pose> {
     Ok(Pose { tip: p.tip + ((h - p.tip.z) / p.axis.z) * p.axis, axis: p.axis })
 }
 
+/// A program before a dialect writes it: its steps, what the dialect needs besides, and the
+/// linearised path they follow.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plan {
+    /// The steps, in order.
+    pub ops: Vec<Op>,
+    /// What the dialect needs besides.
+    pub context: Context,
+    /// The poses of the cut and their axis values.
+    pub linearised: Linearised,
+}
+
 /// The G-code program of `path` (see the module documentation).
 pub fn program(path: &ToolPath, o: &PostOptions) -> Result<Program> {
+    let Plan { ops, context, linearised: lin } = plan(path, o)?;
+    let text = match o.dialect {
+        Dialect::LinuxCnc => linuxcnc::write(&ops, &context),
+        Dialect::Heidenhain => heidenhain::write(&ops, &context),
+        Dialect::Sinumerik => sinumerik::write(&ops, &context),
+    };
+    Ok(Program { text, poses: lin.poses, joints: lin.joints, origin: lin.origin, linearisation: lin.report })
+}
+
+/// The steps of `path`'s program, in no dialect yet (see the module documentation).
+pub fn plan(path: &ToolPath, o: &PostOptions) -> Result<Plan> {
     validate(o)?;
     let m = &o.machine;
     let length = path.tool.length * o.scale;
@@ -411,12 +434,7 @@ pub fn program(path: &ToolPath, o: &PostOptions) -> Result<Program> {
         name: o.name.clone(),
         bounds: (lo, hi),
     };
-    let text = match o.dialect {
-        Dialect::LinuxCnc => linuxcnc::write(&ops, &context),
-        Dialect::Heidenhain => heidenhain::write(&ops, &context),
-        Dialect::Sinumerik => sinumerik::write(&ops, &context),
-    };
-    Ok(Program { text, poses: lin.poses, joints: lin.joints, origin: lin.origin, linearisation: lin.report })
+    Ok(Plan { ops, context, linearised: lin })
 }
 
 fn header(path: &ToolPath, o: &PostOptions, l: &Linearisation, n: usize, safe: f64, approach: f64) -> Vec<Op> {
@@ -542,5 +560,205 @@ mod tests {
         // inverse time: a block of 2 mm at 100 mm/min takes 0.02 min, F 50; a zero block is 1e-6
         assert_eq!(Rate::inverse_time(100.0, 2.0), 50.0);
         assert_eq!(Rate::inverse_time(100.0, 0.0), 1e8);
+    }
+
+    /// A path on table-table-ac with every kind of block, scale 2, tool length 25 (50 mm): the
+    /// tool axis (0, 0.6, 0.8) is A = atan(3/4) = 36.87°, (0, 0.8, 0.6) is 53.13°, C stays 0;
+    /// the A-only turns keep the axis on a great circle, so nothing is inserted.
+    fn path() -> ToolPath {
+        let deg = std::f64::consts::PI / 180.0;
+        let pose = |x: f64, a: DVec3| Pose { tip: DVec3::new(x, 0.0, 0.0), axis: a };
+        let (up, over) = (DVec3::new(0.0, 0.6, 0.8), DVec3::new(0.0, 0.8, 0.6));
+        let small = DVec3::new(0.0, (37.17 * deg).sin(), (37.17 * deg).cos());
+        ToolPath {
+            poses: vec![
+                pose(0.0, up),
+                pose(0.0, over),
+                pose(1.0, up),
+                pose(6.0, small),
+                pose(11.0, up),
+                pose(12.0, up),
+            ],
+            tool: crate::milling::Tool { radius: 3.0, length: 25.0, end: ToolEnd::Ball },
+        }
+    }
+
+    fn motions(ops: &[Op]) -> Vec<Op> {
+        ops.iter().filter(|op| !matches!(op, Op::Comment(_))).cloned().collect()
+    }
+
+    fn near(a: DVec3, b: DVec3) -> bool {
+        (a - b).length() < 1e-12
+    }
+
+    /// Tool-centre point: X Y Z are the tips in part coordinates. The safe height is 25 mm above
+    /// the highest tip (z = 0) plus the clearance 5: 30; the first axis reaches it at
+    /// 30/0.8 = 37.5 mm from the tip, (0, 22.5, 30), and the clearance at 5 mm, (0, 3, 4). The
+    /// approach runs at a quarter of the feed. A block that turns a rotary axis is timed by the
+    /// tip's distance (10 mm), or, with the tip still, by the tool's far end: 50 mm × the turn,
+    /// acos 0.96 = 0.28379 rad; a turn of 0.3° (above the program's 1e-4°) counts.
+    #[test]
+    fn a_tcp_program_takes_its_points_on_the_tool_axes_and_times_its_turns() {
+        let o = PostOptions { scale: 2.0, mode: Mode::Tcp, ..PostOptions::default() };
+        let p = plan(&path(), &o).unwrap();
+        let (a0, a1, a2) = (36.86989764584402, 53.13010235415599, 37.17);
+        let (up, over) = (DVec3::new(0.0, 0.6, 0.8), DVec3::new(0.0, 0.8, 0.6));
+        let small = path().poses[3].axis;
+        let at = |x: f64, y: f64, z: f64, a: f64| Target { xyz: DVec3::new(x, y, z), rotary: [a, 0.0], axis: up };
+        let ops = motions(&p.ops);
+        let expected = [
+            Op::Start,
+            Op::WorkOffset(1),
+            Op::ToolChange { tool: 1, spindle: 10000.0 },
+            Op::RetractTop(400.0),
+            Op::Rotate([a0, 0.0]),
+            Op::Tcp(true),
+            Op::Rapid(at(0.0, 22.5, 30.0, a0)),
+            Op::Rapid(at(0.0, 3.0, 4.0, a0)),
+            Op::Coolant(Coolant::Flood),
+            Op::Feed(at(0.0, 0.0, 0.0, a0), Rate::PerMinute(250.0)),
+            Op::Feed(
+                Target { axis: over, ..at(0.0, 0.0, 0.0, a1) },
+                Rate::Simultaneous { feed: 1000.0, distance: 50.0 * 0.96f64.acos(), linear: 0.0 },
+            ),
+            Op::Feed(at(2.0, 0.0, 0.0, a0), Rate::Simultaneous { feed: 1000.0, distance: 2.0, linear: 2.0 }),
+            Op::Feed(
+                Target { axis: small, ..at(12.0, 0.0, 0.0, a2) },
+                Rate::Simultaneous { feed: 1000.0, distance: 10.0, linear: 10.0 },
+            ),
+            Op::Feed(at(22.0, 0.0, 0.0, a0), Rate::Simultaneous { feed: 1000.0, distance: 10.0, linear: 10.0 }),
+            Op::Feed(at(24.0, 0.0, 0.0, a0), Rate::PerMinute(1000.0)),
+            Op::Feed(at(24.0, 3.0, 4.0, a0), Rate::PerMinute(250.0)),
+            Op::Rapid(at(24.0, 22.5, 30.0, a0)),
+            Op::Coolant(Coolant::Off),
+            Op::SpindleOff,
+            Op::Tcp(false),
+            Op::RetractTop(400.0),
+            Op::Rotate([0.0, 0.0]),
+            Op::End,
+        ];
+        assert_eq!(ops.len(), expected.len(), "{ops:#?}");
+        for (k, (got, want)) in ops.iter().zip(&expected).enumerate() {
+            let same = match (got, want) {
+                (Op::Rapid(g), Op::Rapid(w)) => near(g.xyz, w.xyz) && near(g.axis, w.axis) && near_rotary(g, w),
+                (Op::Feed(g, gr), Op::Feed(w, wr)) => {
+                    near(g.xyz, w.xyz) && near(g.axis, w.axis) && near_rotary(g, w) && near_rate(gr, wr)
+                }
+                (Op::Rotate(g), Op::Rotate(w)) => (g[0] - w[0]).abs() < 1e-9 && g[1] == w[1],
+                _ => got == want,
+            };
+            assert!(same, "op {k}: {got:?}, expected {want:?}");
+        }
+        // the header: six poses, none inserted; the part's box
+        assert!(p.ops.contains(&Op::Comment("ruledlab tool path: 6 poses, 6 of the path and 0 inserted".into())));
+        assert!(p.ops.contains(&Op::Comment(
+            "safe height 30.0000 mm above the part zero, clearance 5.0000 mm along the tool axis".into()
+        )));
+        assert_eq!(p.context.bounds, (DVec3::ZERO, DVec3::new(24.0, 0.0, 0.0)));
+        assert_eq!((p.context.letters, p.context.mode), (["A", "C"], Mode::Tcp));
+    }
+
+    fn near_rotary(g: &Target, w: &Target) -> bool {
+        (g.rotary[0] - w.rotary[0]).abs() < 1e-9 && g.rotary[1] == w.rotary[1]
+    }
+
+    fn near_rate(g: &Rate, w: &Rate) -> bool {
+        match (g, w) {
+            (Rate::PerMinute(a), Rate::PerMinute(b)) => a == b,
+            (
+                Rate::Simultaneous { feed: f, distance: d, linear: l },
+                Rate::Simultaneous { feed: g, distance: e, linear: m },
+            ) => f == g && (d - e).abs() < 1e-12 && (l - m).abs() < 1e-12,
+            _ => false,
+        }
+    }
+
+    /// Machine coordinates: the table tilts the axis (0, 0.6, 0.8) back to +Z, turning
+    /// (y, z) to (0.8y − 0.6z, 0.6y + 0.8z) about A's pivot z = −80, after the part's zero
+    /// (10, −5, 25) is added: the tip (0, 0, 0) is at (10, −67, 1), the clearance point (0, 3, 4) at
+    /// (10, −67, 6), the safe point (0, 22.5, 30) at (10, −67, 38.5); the last tip (24, 0, 0)
+    /// 24 further along X. No TCP switch; the still tip's turn is cut into blocks.
+    #[test]
+    fn a_machine_program_writes_machine_positions() {
+        let p = plan(&path(), &PostOptions { scale: 2.0, ..PostOptions::default() }).unwrap();
+        let ops = motions(&p.ops);
+        assert!(!ops.iter().any(|op| matches!(op, Op::Tcp(_))));
+        let xyz = |op: &Op| match op {
+            Op::Rapid(t) | Op::Feed(t, _) => t.xyz,
+            other => panic!("{other:?}"),
+        };
+        let v = DVec3::new;
+        let n = ops.len();
+        for (k, want) in [(5, v(10.0, -67.0, 38.5)), (6, v(10.0, -67.0, 6.0)), (8, v(10.0, -67.0, 1.0))] {
+            assert!(near(xyz(&ops[k]), want), "op {k}: {:?}", ops[k]);
+        }
+        for (k, want) in [(n - 8, v(34.0, -67.0, 1.0)), (n - 7, v(34.0, -67.0, 6.0)), (n - 6, v(34.0, -67.0, 38.5))] {
+            assert!(near(xyz(&ops[k]), want), "op {k}: {:?}", ops[k]);
+        }
+        let cut = p.linearised.poses.len();
+        assert!(cut > 6, "the still tip's turn is cut");
+        let header = format!("ruledlab tool path: {cut} poses, 6 of the path and {} inserted", cut - 6);
+        assert!(p.ops.contains(&Op::Comment(header)));
+    }
+
+    /// The safe height may be the highest tip plus the clearance (5 mm here), not below.
+    #[test]
+    fn the_safe_height_clears_the_highest_tip_by_the_clearance() {
+        let o = |h: f64| PostOptions { scale: 2.0, mode: Mode::Tcp, safe_height: Some(h), ..PostOptions::default() };
+        let e = plan(&path(), &o(4.999)).unwrap_err();
+        assert_eq!(e.details().option.as_deref(), Some("safeHeight"));
+        let p = plan(&path(), &o(5.0)).unwrap();
+        let Op::Rapid(t) = motions(&p.ops)[6] else { panic!() };
+        assert!(near(t.xyz, DVec3::new(0.0, 3.75, 5.0)), "{t:?}");
+    }
+
+    /// Each dialect says how its rotary moves are fed.
+    #[test]
+    fn the_header_says_how_rotary_moves_are_fed() {
+        for (dialect, mode, says) in [
+            (Dialect::Heidenhain, Mode::Tcp, "F at the tip with FUNCTION TCPM F TCP"),
+            (Dialect::Heidenhain, Mode::Machine, "rotary moves get the F of X Y Z that keeps the feed at the tip"),
+            (Dialect::LinuxCnc, Mode::Machine, "inverse time G93 on rotary moves"),
+            (Dialect::Sinumerik, Mode::Tcp, "inverse time G93 on rotary moves"),
+        ] {
+            let p = plan(&path(), &PostOptions { dialect, mode, ..PostOptions::default() }).unwrap();
+            let line =
+                format!("units mm, 1 mm per model unit, feed 1000 mm/min at the tip, {says}, approach 250 mm/min");
+            assert!(p.ops.contains(&Op::Comment(line)), "{dialect:?} {mode:?}: {:?}", p.ops[3]);
+        }
+    }
+
+    /// The safe moves at the end are checked against the travel (and the retract's slope) and
+    /// named by the last pose of the given path. Table-table-ac turns the axis (0, 0.6, 0.8) to
+    /// +Z, (y, z) ↦ (0.8y − 0.6z, 0.6y + 0.8z) about z = −80 after adding the part zero
+    /// (10, −5, 25), so a point of part height z on that axis through a tip (x, 0, 0) is at
+    /// machine Z 1 + 1.25z, and the tip (0, 500, 120) at Z 397, its clearance point 5 mm up
+    /// the axis at 402, over the travel's 400. The first pose stands upright (machine Z is part
+    /// Z + 25): its own safe moves stay within the travel.
+    #[test]
+    fn the_safe_moves_at_the_end_are_named_by_the_last_pose() {
+        let tool = crate::milling::Tool { radius: 3.0, length: 25.0, end: ToolEnd::Ball };
+        let path = |last: Pose| ToolPath {
+            poses: vec![
+                Pose { tip: DVec3::ZERO, axis: DVec3::Z },
+                Pose { tip: DVec3::new(10.0, 0.0, 0.0), ..last },
+                last,
+            ],
+            tool,
+        };
+        let tilted = DVec3::new(0.0, 0.6, 0.8);
+        let o = |h: Option<f64>| PostOptions { mode: Mode::Tcp, safe_height: h, ..PostOptions::default() };
+        let pose_of = |p: &ToolPath, o: &PostOptions| plan(p, o).unwrap_err().details().index;
+        // the safe point at height 350: Z 438.5 at the end, 375 at the start
+        let end_safe = path(Pose { tip: DVec3::new(20.0, 0.0, 0.0), axis: tilted });
+        assert_eq!(pose_of(&end_safe, &o(Some(350.0))), Some(2));
+        assert!(plan(&end_safe, &o(Some(319.0))).is_ok(), "Z 399.75");
+        // the clearance point: Z 402
+        let end_near = path(Pose { tip: DVec3::new(0.0, 500.0, 120.0), axis: tilted });
+        assert_eq!(pose_of(&end_near, &o(None)), Some(2));
+        // an axis within 0.1 of the horizontal has no way up
+        let flat = path(Pose { tip: DVec3::new(20.0, 0.0, 0.0), axis: DVec3::new(0.0, 0.9959, 0.09).normalize() });
+        let Err(Error::Unreachable { pose, message }) = plan(&flat, &o(None)) else { panic!("reachable") };
+        assert_eq!((pose, message.reason), (2, "retract-horizontal"));
     }
 }
