@@ -191,6 +191,7 @@ mod tests {
             Err(Error::TooMany { got, max: MAX_RULINGS, .. }) if got == 2049 * 2049
         ));
         assert!(matches!(butterfly_lines(&c, 0.5, 10, None), Err(Error::InvalidParameter { name: "w", .. })));
+        assert!(matches!(butterfly_lines(&c, 0.5, 11, None), Err(Error::TooMany { .. })), "the size before w");
         let c = congruence(3, 3, |i, j| (DVec3::new(i as f64, j as f64, 0.0), DVec3::new(i as f64, j as f64, 1.0)));
         assert!(matches!(
             butterfly_lines(&c, 0.0, 10, None),

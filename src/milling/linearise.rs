@@ -387,21 +387,21 @@ mod tests {
         let origin = [0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0];
         let at = |pose: usize| Error::Unreachable {
             pose,
-            message: crate::msg!("linearisation-tolerance", pose = pose, next = pose + 1, rounds = 7),
+            message: crate::msg!("pose-unreachable", pose = pose, axis = "A", value = 130.0),
         };
         let Error::Unreachable { pose, message } = renamed(at(5), &origin) else { panic!("unreachable") };
         assert_eq!(pose, 2);
         assert_eq!(
             message.args,
-            vec![("pose", Arg::Number(2.0)), ("next", Arg::Number(6.0)), ("rounds", Arg::Number(7.0))]
+            vec![("pose", Arg::Number(2.0)), ("axis", Arg::Text("A".into())), ("value", Arg::Number(130.0))]
         );
         assert!(matches!(renamed(at(9), &origin), Error::Unreachable { pose: 9, .. }));
         let other = Error::parameter("tolerance", "too small");
         assert_eq!(renamed(other.clone(), &origin), other);
     }
 
-    /// Every inserted pose lies halfway between its neighbours on the given path (origins
-    /// k/2^r, increasing): the second block turns the axis 20°, the first 2°.
+    /// The inserted poses' places on the given path increase and are multiples of 2^−r after
+    /// r rounds of halving: the second block turns the axis 20°, the first 2°.
     #[test]
     fn inserted_poses_halve_their_blocks_of_the_given_path() {
         let m = Machine::preset("table-table-ac").unwrap();
@@ -452,5 +452,35 @@ mod tests {
             );
         }
         assert!(matches!(run((3, 17)), Err(Error::Unreachable { .. })));
+    }
+
+    /// Of equally bad blocks the error names the first: on the path a, b, a, b in tool-centre
+    /// point with the angles interpolated, the axis deviation depends only on the axes and their
+    /// rotary values, so the three blocks (the middle one reversed) are equally bad to the bit.
+    #[test]
+    fn of_equally_bad_blocks_the_first_is_named() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        let (a, b) = (DVec3::new(0.0, 0.6, 0.8), DVec3::new(0.6, 0.0, 0.8));
+        let poses: Vec<Pose> = [a, b, a, b]
+            .iter()
+            .enumerate()
+            .map(|(k, &axis)| Pose { tip: DVec3::new(k as f64, 0.0, 0.0), axis })
+            .collect();
+        let joints = inverse(&m, &poses, 50.0).unwrap();
+        let d: Vec<f64> = (0..3)
+            .map(|i| {
+                block_deviation(
+                    &m,
+                    (&poses[i], &poses[i + 1]),
+                    (&joints[i], &joints[i + 1]),
+                    Interpolation::TcpAngles,
+                    50.0,
+                )
+                .max()
+            })
+            .collect();
+        assert!(d[0] > 1.0 && d[1] == d[0] && d[2] == d[0], "three equal blocks: {d:?}");
+        let e = linearise_at_most(&m, &poses, 50.0, Interpolation::TcpAngles, 1e-300, (0, 100)).unwrap_err();
+        assert!(matches!(e, Error::Unreachable { pose: 0, .. }), "{e:?}");
     }
 }

@@ -564,7 +564,8 @@ mod tests {
 
     /// A path on table-table-ac with every kind of block, scale 2, tool length 25 (50 mm): the
     /// tool axis (0, 0.6, 0.8) is A = atan(3/4) = 36.87°, (0, 0.8, 0.6) is 53.13°, C stays 0;
-    /// the A-only turns keep the axis on a great circle, so nothing is inserted.
+    /// the A-only turns keep the axis on a great circle, so with the angles interpolated (tool-
+    /// centre point) nothing is inserted.
     fn path() -> ToolPath {
         let deg = std::f64::consts::PI / 180.0;
         let pose = |x: f64, a: DVec3| Pose { tip: DVec3::new(x, 0.0, 0.0), axis: a };
@@ -760,5 +761,29 @@ mod tests {
         let flat = path(Pose { tip: DVec3::new(20.0, 0.0, 0.0), axis: DVec3::new(0.0, 0.9959, 0.09).normalize() });
         let Err(Error::Unreachable { pose, message }) = plan(&flat, &o(None)) else { panic!("reachable") };
         assert_eq!((pose, message.reason), (2, "retract-horizontal"));
+    }
+
+    /// A turning block whose tip moves 1e-3 mm exactly is timed by the tool's far end: with the
+    /// tool of 25 mm and the turn acos 0.96, 25 × 0.28379 = 7.09 mm, not the tip's 0.001 mm.
+    #[test]
+    fn a_turn_with_the_tip_moving_a_thousandth_is_timed_by_the_far_end() {
+        let path = ToolPath {
+            poses: vec![
+                Pose { tip: DVec3::ZERO, axis: DVec3::new(0.0, 0.6, 0.8) },
+                Pose { tip: DVec3::new(1e-3, 0.0, 0.0), axis: DVec3::new(0.0, 0.8, 0.6) },
+            ],
+            tool: crate::milling::Tool { radius: 3.0, length: 25.0, end: ToolEnd::Ball },
+        };
+        let p = plan(&path, &PostOptions { mode: Mode::Tcp, ..PostOptions::default() }).unwrap();
+        let rates: Vec<Rate> = p
+            .ops
+            .iter()
+            .filter_map(|op| match op {
+                Op::Feed(_, r @ Rate::Simultaneous { .. }) => Some(*r),
+                _ => None,
+            })
+            .collect();
+        let [Rate::Simultaneous { distance, .. }] = rates[..] else { panic!("one turning block: {rates:?}") };
+        assert!((distance - 25.0 * 0.96f64.acos()).abs() < 1e-12, "{distance}");
     }
 }
