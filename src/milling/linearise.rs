@@ -400,18 +400,21 @@ mod tests {
         assert_eq!(renamed(other.clone(), &origin), other);
     }
 
+    /// Three poses 10 mm apart, the axis tilted about Y by 0°, 2° and 22°: a block that turns
+    /// it 2°, then one that turns it 20°.
+    fn two_turns() -> [Pose; 3] {
+        let pose = |x: f64, a: f64| Pose {
+            tip: DVec3::new(x, 0.0, 0.0),
+            axis: DVec3::new(a.to_radians().sin(), 0.0, a.to_radians().cos()),
+        };
+        [pose(0.0, 0.0), pose(10.0, 2.0), pose(20.0, 22.0)]
+    }
+
     /// The inserted poses' places on the given path increase and are multiples of 2^−r after
     /// r rounds of halving: the second block turns the axis 20°, the first 2°.
     #[test]
     fn inserted_poses_halve_their_blocks_of_the_given_path() {
-        let m = Machine::preset("table-table-ac").unwrap();
-        let deg = std::f64::consts::PI / 180.0;
-        let axis = |a: f64| DVec3::new((a * deg).sin(), 0.0, (a * deg).cos());
-        let poses = [
-            Pose { tip: DVec3::new(0.0, 0.0, 0.0), axis: axis(0.0) },
-            Pose { tip: DVec3::new(10.0, 0.0, 0.0), axis: axis(2.0) },
-            Pose { tip: DVec3::new(20.0, 0.0, 0.0), axis: axis(22.0) },
-        ];
+        let (m, poses) = (Machine::preset("table-table-ac").unwrap(), two_turns());
         let l = linearise(&m, &poses, 50.0, Interpolation::Machine, 1e-3).unwrap();
         assert!(l.report.inserted >= 2 && l.report.rounds >= 2, "{:?}", l.report);
         assert_eq!((l.origin[0], l.origin[l.origin.len() - 1]), (0.0, 2.0));
@@ -432,14 +435,7 @@ mod tests {
     /// is met in round 0 and exceeded in round 1 (5 + 4 = 9), and one of 4 at once (3 + 2).
     #[test]
     fn the_limits_of_rounds_and_poses_are_kept() {
-        let m = Machine::preset("table-table-ac").unwrap();
-        let deg = std::f64::consts::PI / 180.0;
-        let axis = |a: f64| DVec3::new((a * deg).sin(), 0.0, (a * deg).cos());
-        let poses = [
-            Pose { tip: DVec3::new(0.0, 0.0, 0.0), axis: axis(0.0) },
-            Pose { tip: DVec3::new(10.0, 0.0, 0.0), axis: axis(2.0) },
-            Pose { tip: DVec3::new(20.0, 0.0, 0.0), axis: axis(22.0) },
-        ];
+        let (m, poses) = (Machine::preset("table-table-ac").unwrap(), two_turns());
         let run = |limits| linearise_at_most(&m, &poses, 50.0, Interpolation::Machine, 1e-300, limits);
         let Err(Error::Unreachable { pose, message }) = run((3, 100)) else { panic!("{:?}", run((3, 100))) };
         assert_eq!((pose, message.reason), (1, "linearisation-tolerance"));
