@@ -329,4 +329,130 @@ mod tests {
         s.grid = (1, 5);
         assert!(AnalyticCongruence::from_formulas(&s).is_err());
     }
+
+    /// p, d and their partial derivatives of the three built-in congruences, written out by
+    /// hand from the formulas of the module's head (ruledlab's for Example 4, the paper's for
+    /// Example 5), at a point where no term vanishes.
+    #[test]
+    fn built_in_jets_are_the_formulas() {
+        let (u, v) = (0.7f64, -0.4f64);
+        let (cu, su, cv, sv) = (u.cos(), u.sin(), v.cos(), v.sin());
+        let j = AnalyticCongruence::Sphere.jet(u, v);
+        let p = DVec3::new(cv * cu, cv * su, sv);
+        let (p_u, p_v) = (DVec3::new(-cv * su, cv * cu, 0.0), DVec3::new(-sv * cu, -sv * su, cv));
+        assert_near!(j.p, p, 1e-15);
+        assert_near!(j.p_u, p_u, 1e-15);
+        assert_near!(j.p_v, p_v, 1e-15);
+        assert_near!(j.d, p + 0.3 * DVec3::new((2.0 * v).sin(), (3.0 * u).cos(), u * v), 1e-15);
+        assert_near!(j.d_u, p_u + 0.3 * DVec3::new(0.0, -3.0 * (3.0 * u).sin(), v), 1e-15);
+        assert_near!(j.d_v, p_v + 0.3 * DVec3::new(2.0 * (2.0 * v).cos(), 0.0, u), 1e-15);
+
+        let j = AnalyticCongruence::HyperbolicParaboloid.jet(u, v);
+        assert_near!(j.p, DVec3::new(u, v, u * v), 1e-15);
+        assert_near!(j.p_u, DVec3::new(1.0, 0.0, v), 1e-15);
+        assert_near!(j.p_v, DVec3::new(0.0, 1.0, u), 1e-15);
+        assert_near!(j.d, DVec3::new(-v + 0.3 * (2.0 * v).cos(), -u + 0.3 * su, 1.0), 1e-15);
+        assert_near!(j.d_u, DVec3::new(0.0, -1.0 + 0.3 * cu, 0.0), 1e-15);
+        assert_near!(j.d_v, DVec3::new(-1.0 - 0.6 * (2.0 * v).sin(), 0.0, 0.0), 1e-15);
+
+        let j = AnalyticCongruence::Example5.jet(u, v);
+        let w = 2.0 * u + 1.5 * v;
+        assert_near!(j.p, DVec3::new(u, v, 0.5 * w.sin()), 1e-15);
+        assert_near!(j.p_u, DVec3::new(1.0, 0.0, w.cos()), 1e-15);
+        assert_near!(j.p_v, DVec3::new(0.0, 1.0, 0.75 * w.cos()), 1e-15);
+        assert_near!(j.d, DVec3::new(u, v, su + 1.3 * cv), 1e-15);
+        assert_near!(j.d_u, DVec3::new(1.0, 0.0, cu), 1e-15);
+        assert_near!(j.d_v, DVec3::new(0.0, 1.0, -1.3 * sv), 1e-15);
+
+        // the trait gives the same, and the built-ins' checked jets are their jets
+        for c in AnalyticCongruence::ALL {
+            assert_eq!(SmoothCongruence::jet(&c, u, v), c.jet(u, v));
+            assert_eq!(SmoothCongruence::checked_jet(&c, u, v).unwrap(), c.jet(u, v));
+        }
+    }
+
+    /// Names, titles and domains of every congruence, through the type and the trait; and
+    /// `by_name` finds each built-in, a formulas-only catalogue entry, and names the known ones
+    /// when it finds none.
+    #[test]
+    fn names_domains_and_lookup() {
+        let typed = AnalyticCongruence::from_formulas(&example5_spec()).unwrap();
+        let expected = [
+            (AnalyticCongruence::Sphere, "sphere", ((-0.8, 0.8), (-0.6, 0.6), 6, 6)),
+            (AnalyticCongruence::HyperbolicParaboloid, "hyperbolic-paraboloid", ((-1.0, 1.0), (-1.0, 1.0), 6, 6)),
+            (AnalyticCongruence::Example5, "example5", ((-1.1, 1.1), (-1.1, 1.1), 8, 7)),
+            (typed, "formula", ((-1.1, 1.1), (-1.1, 1.1), 8, 7)),
+        ];
+        for (c, name, domain) in expected {
+            assert_eq!(c.name(), name);
+            assert_eq!(SmoothCongruence::name(&c), name);
+            assert_eq!(c.domain(), domain, "{name}");
+            assert_eq!(SmoothCongruence::domain(&c), domain, "{name}");
+            assert!(c.title().len() > 20, "{}", c.title());
+            if name != "formula" {
+                assert_eq!(AnalyticCongruence::by_name(name).unwrap(), c);
+            }
+        }
+        assert_eq!(
+            AnalyticCongruence::Formula(Arc::new(FormulaCongruence::new(&example5_spec()).unwrap())).title(),
+            "Your congruence p(u, v) + t·e(u, v)"
+        );
+        let AnalyticCongruence::Formula(normals) = AnalyticCongruence::by_name("ellipsoid-normals").unwrap() else {
+            panic!("ellipsoid-normals exists only as formulas")
+        };
+        assert_eq!(normals.spec(), &crate::catalogue::texts::congruence("ellipsoid-normals").unwrap().spec().unwrap());
+        let e = AnalyticCongruence::by_name("torus").unwrap_err();
+        assert_eq!(e.code(), "invalid-argument");
+        assert!(e.to_string().contains("unknown congruence \"torus\"; known: "), "{e}");
+        assert!(e.to_string().contains("ellipsoid-normals"), "{e}");
+    }
+
+    /// What `new` and `checked_jet` refuse, each on its own: a NaN value (not infinite: the
+    /// check is `not finite or too large`), a value just above the coordinate limit (the
+    /// limit itself is allowed), an infinite derivative of a finite value, a direction that
+    /// vanishes at a point between the probes, and one that is tiny next to the largest;
+    /// grids of 2 and 1000 rows or columns are allowed, 1001 is not.
+    #[test]
+    fn formula_checks_one_by_one() {
+        let spec = |p: [&str; 3], e: [&str; 3], u: (f64, f64)| CongruenceSpec {
+            p: p.map(String::from),
+            e: e.map(String::from),
+            u,
+            v: (0.1, 1.0),
+            parameters: [1.0, 2.0, 3.0],
+            grid: (2, 1000),
+        };
+        let at_limit = FormulaCongruence::new(&spec(["1e150", "v", "0"], ["1", "0", "0"], (0.0, 1.0))).unwrap();
+        assert_eq!(at_limit.spec().grid, (2, 1000));
+        assert_eq!(at_limit.checked_jet(0.5, 0.5).unwrap().p, DVec3::new(1e150, 0.5, 0.0));
+        let refused = |p: [&str; 3], e: [&str; 3], u: (f64, f64)| FormulaCongruence::new(&spec(p, e, u)).unwrap_err();
+        let e = refused(["1.0000001e150", "v", "0"], ["1", "0", "0"], (0.0, 1.0));
+        assert!(matches!(e, Error::NotFiniteAt { ref what, derivative: false, .. } if what == "p[0]"), "{e:?}");
+        let e = refused(["u", "sqrt(u - 2)", "0"], ["1", "0", "0"], (0.0, 1.0));
+        assert!(
+            matches!(e, Error::NotFiniteAt { ref what, value, derivative: false, .. } if what == "p[1]" && value.is_nan()),
+            "{e:?}"
+        );
+        let e = refused(["u", "v", "0"], ["1", "0", "sqrt(u)"], (0.0, 1.0));
+        assert!(
+            matches!(e, Error::NotFiniteAt { ref what, u, value, derivative: true, .. } if what == "e[2]" && u == 0.0 && value.is_infinite()),
+            "{e:?}"
+        );
+        // e = (u − 0.3, v, 0) vanishes at (0.3, 0), which no probe meets (v starts at 0.1)
+        let between = FormulaCongruence::new(&spec(["u", "v", "0"], ["u - 0.3", "v", "0"], (0.0, 1.0))).unwrap();
+        assert_eq!(between.jet(0.3, 0.0).d, DVec3::ZERO);
+        let e = between.checked_jet(0.3, 0.0).unwrap_err();
+        assert_eq!(e.to_string(), "e: e(u, v) vanishes at (u, v) = (0.3, 0), so the line there has no direction");
+        let as_analytic = AnalyticCongruence::Formula(Arc::new(between));
+        assert_eq!(SmoothCongruence::checked_jet(&as_analytic, 0.3, 0.0).unwrap_err().to_string(), e.to_string());
+        // e⁻⁴⁰ next to e⁴⁰: the direction counts as vanishing at the first probe, u = −1
+        let e = refused(["u", "v", "0"], ["exp(40*u)", "0", "0"], (-1.0, 1.0));
+        assert_eq!(e.to_string(), "e: e(u, v) vanishes at (u, v) = (-1, 0.1), so the line there has no direction");
+        for (grid, name) in [((1001, 5), "rows"), ((5, 1001), "cols"), ((1, 5), "rows")] {
+            let mut s = spec(["u", "v", "0"], ["1", "0", "0"], (0.0, 1.0));
+            s.grid = grid;
+            let e = FormulaCongruence::new(&s).unwrap_err();
+            assert!(matches!(e, Error::InvalidParameter { name: n, .. } if n == name), "{e:?}");
+        }
+    }
 }
