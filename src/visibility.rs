@@ -676,6 +676,18 @@ pub fn hidden_lines(
     lines: &[(LineKind, &[DVec3])],
     options: HiddenLineOptions,
 ) -> Result<Vec<Vec<Run>>> {
+    hidden_lines_at_most(view, meshes, lines, options, MAX_HIDDEN_LINE_ITEMS)
+}
+
+/// [`hidden_lines`] with at most `max_items` triangles and line points (a parameter so that a
+/// test can reach the limit).
+fn hidden_lines_at_most(
+    view: &View,
+    meshes: &[(&[DVec3], &[u32])],
+    lines: &[(LineKind, &[DVec3])],
+    options: HiddenLineOptions,
+    max_items: usize,
+) -> Result<Vec<Vec<Run>>> {
     for (name, x, ok) in [
         ("tolerance", options.tolerance, options.tolerance >= 0.0 && options.tolerance <= 1.0),
         ("minPiece", options.min_piece, options.min_piece >= 0.0 && options.min_piece <= 1e3),
@@ -694,8 +706,8 @@ pub fn hidden_lines(
     let triangles: usize = meshes.iter().map(|(_, idx)| idx.len() / 3).sum();
     let points: usize = lines.iter().map(|(_, p)| p.len()).sum();
     for (what, got) in [("triangles", triangles), ("line points", points)] {
-        if got > MAX_HIDDEN_LINE_ITEMS {
-            return Err(Error::TooMany { what, got, max: MAX_HIDDEN_LINE_ITEMS });
+        if got > max_items {
+            return Err(Error::TooMany { what, got, max: max_items });
         }
     }
     // τ from the triangles' bounding box
@@ -1032,5 +1044,363 @@ mod tests {
         nan[5] = f64::INFINITY;
         assert_eq!(name(View::new(&nan, 1.0, 1.0)), "viewProj");
         assert_eq!(name(View::new(&[0.0; 16], 1.0, 1.0)), "viewProj");
+    }
+
+    /// Reproducible pseudo-random numbers in [0, 1) (xorshift64).
+    fn random(seed: &mut u64) -> f64 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        (*seed >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// A screen grid of `cols` × `rows` cells from `origin`, each holding one item, its own
+    /// number r·cols + c: what `cells_along` visits are then the cells themselves.
+    fn numbered_grid(origin: DVec2, cell: DVec2, cols: usize, rows: usize) -> Scene {
+        let n = (cols * rows) as u32;
+        Scene { occluders: Vec::new(), origin, cell, cols, rows, starts: (0..=n).collect(), items: (0..n).collect() }
+    }
+
+    /// The cells `cells_along` visits, sorted; none twice.
+    fn visited(scene: &Scene, a: DVec2, b: DVec2) -> Vec<u32> {
+        let mut cells = Vec::new();
+        scene.cells_along(a, b, |k| cells.push(k));
+        let n = cells.len();
+        cells.sort_unstable();
+        cells.dedup();
+        assert_eq!(cells.len(), n, "a cell visited twice along {a} → {b}");
+        cells
+    }
+
+    /// The cells whose closed rectangle (the border cells reaching to infinity) the segment
+    /// a → b meets, by clipping the segment to each rectangle (Liang–Barsky): the same answer
+    /// found another way.
+    fn crossed(scene: &Scene, a: DVec2, b: DVec2) -> Vec<u32> {
+        let bounds = |k: usize, n: usize, origin: f64, size: f64| {
+            let lo = if k == 0 { f64::NEG_INFINITY } else { origin + k as f64 * size };
+            let hi = if k + 1 == n { f64::INFINITY } else { origin + (k + 1) as f64 * size };
+            (lo, hi)
+        };
+        let mut out = Vec::new();
+        for r in 0..scene.rows {
+            for c in 0..scene.cols {
+                let (x0, x1) = bounds(c, scene.cols, scene.origin.x, scene.cell.x);
+                let (y0, y1) = bounds(r, scene.rows, scene.origin.y, scene.cell.y);
+                let (mut t0, mut t1) = (0.0f64, 1.0f64);
+                for (p, d, lo, hi) in [(a.x, b.x - a.x, x0, x1), (a.y, b.y - a.y, y0, y1)] {
+                    if d == 0.0 {
+                        if p < lo || p > hi {
+                            t0 = 2.0;
+                        }
+                    } else {
+                        let (ta, tb) = ((lo - p) / d, (hi - p) / d);
+                        t0 = t0.max(ta.min(tb));
+                        t1 = t1.min(ta.max(tb));
+                    }
+                }
+                if t0 <= t1 {
+                    out.push((r * scene.cols + c) as u32);
+                }
+            }
+        }
+        out
+    }
+
+    /// The screen grid: a point's cell (clamped into the border cells, NaN to the first), and
+    /// the cells a segment visits — exactly those it crosses, for 2 000 random segments, as many
+    /// vertical ones and as many single points, over the grid and beyond its borders.
+    #[test]
+    fn a_segment_visits_exactly_the_cells_it_crosses() {
+        let scene = numbered_grid(DVec2::new(-300.0, -200.0), DVec2::new(100.0, 50.0), 9, 12);
+        assert_eq!(scene.cell_of(DVec2::new(150.0, 60.0)), (4, 5));
+        assert_eq!(scene.cell_of(DVec2::new(-300.0, -200.0)), (0, 0));
+        assert_eq!(scene.cell_of(DVec2::new(599.999, 399.999)), (8, 11));
+        assert_eq!(scene.cell_of(DVec2::new(-1e9, 1e9)), (0, 11));
+        assert_eq!(scene.cell_of(DVec2::new(f64::NAN, 0.0)), (0, 4));
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        for _ in 0..2000 {
+            let mut point = || DVec2::new(-500.0 + 1300.0 * random(&mut seed), -400.0 + 1000.0 * random(&mut seed));
+            let (a, b) = (point(), point());
+            let vertical = DVec2::new(a.x, b.y);
+            for (a, b) in [(a, b), (a, vertical), (b, b)] {
+                assert_eq!(visited(&scene, a, b), crossed(&scene, a, b), "{a} → {b}");
+            }
+        }
+        // a segment whose x extent is within rounding of zero (one unit in the last place at
+        // x = 100, a column border) counts as vertical: its whole y range in both columns, a
+        // harmless superset; ten units are a slope like any other
+        let scene = numbered_grid(DVec2::new(0.0, -200.0), DVec2::new(100.0, 50.0), 9, 12);
+        let below = |x: f64, units: u64| f64::from_bits(x.to_bits() - units);
+        let (a, b) = (DVec2::new(below(100.0, 1), 30.0), DVec2::new(100.0, 380.0));
+        let mut both: Vec<u32> = (4..=11).flat_map(|r| [r * 9, r * 9 + 1]).collect();
+        both.sort_unstable();
+        assert_eq!(visited(&scene, a, b), both);
+        let a = DVec2::new(below(100.0, 10), 30.0);
+        let exact = visited(&scene, a, b);
+        assert_eq!(exact, crossed(&scene, a, b));
+        assert_eq!(exact.iter().filter(|&&k| k % 9 == 1).collect::<Vec<_>>(), [&(11 * 9 + 1)]);
+    }
+
+    /// A chain along the x axis from 0: pieces of the given lengths and visibilities.
+    fn chain(pieces: &[(f64, bool)]) -> Chain {
+        let mut c = Chain::new();
+        c.points.push(DVec2::ZERO);
+        let mut x = 0.0;
+        for &(length, visible) in pieces {
+            x += length;
+            c.points.push(DVec2::new(x, 0.0));
+            c.visible.push(visible);
+        }
+        c
+    }
+
+    /// Runs as (visible, first x, last x, number of points).
+    fn shape(runs: &[Run]) -> Vec<(bool, f64, f64, usize)> {
+        runs.iter().map(|r| (r.visible, r.points[0].x, r.points[r.points.len() - 1].x, r.points.len())).collect()
+    }
+
+    /// Runs of pieces, and slivers (shorter than `min`, 1 here) given to their neighbours, the
+    /// shortest first, with lengths that add up: a run exactly `min` long stays, so does a run
+    /// made of two short pieces, or made long enough by the sliver it took in (first, last).
+    #[test]
+    fn runs_join_pieces_and_give_slivers_away() {
+        const V: bool = true;
+        const H: bool = false;
+        let runs = |pieces: &[(f64, bool)]| shape(&chain(pieces).runs(1.0));
+        assert_eq!(runs(&[(5.0, V), (5.0, H)]), [(V, 0.0, 5.0, 2), (H, 5.0, 10.0, 2)]);
+        assert_eq!(runs(&[(0.625, V), (0.625, V), (5.0, H)]), [(V, 0.0, 1.25, 3), (H, 1.25, 6.25, 2)]);
+        assert_eq!(runs(&[(0.5, V)]), [(V, 0.0, 0.5, 2)]);
+        assert_eq!(runs(&[(5.0, V), (1.0, H), (5.0, V)]), [(V, 0.0, 5.0, 2), (H, 5.0, 6.0, 2), (V, 6.0, 11.0, 2)]);
+        assert_eq!(runs(&[(5.0, V), (0.5, H), (5.0, V)]), [(V, 0.0, 10.5, 4)]);
+        // the first run a sliver: it joins the next, 0.375 + 0.75 = 1.125, no longer a sliver
+        assert_eq!(runs(&[(0.375, V), (0.75, H), (3.0, V)]), [(H, 0.0, 1.125, 3), (V, 1.125, 4.125, 2)]);
+        // the last: it joins the one before
+        assert_eq!(runs(&[(3.0, V), (0.75, H), (0.375, V)]), [(V, 0.0, 3.0, 2), (H, 3.0, 4.125, 3)]);
+        // the shortest sliver goes first: 0.25 joins its neighbours (0.5 + 0.25 + 0.75 = 1.5)
+        assert_eq!(
+            runs(&[(4.0, V), (0.5, H), (0.25, V), (0.75, H), (4.0, V)]),
+            [(V, 0.0, 4.0, 2), (H, 4.0, 5.5, 4), (V, 5.5, 9.5, 2)]
+        );
+        // min = 0 keeps everything, a zero-length piece too
+        assert_eq!(shape(&chain(&[(0.0, H), (2.0, V)]).runs(0.0)), [(H, 0.0, 0.0, 2), (V, 0.0, 2.0, 2)]);
+    }
+
+    /// Options at their bounds, refused beyond by name; at most `max_items` triangles (counted
+    /// in threes of indices) and line points.
+    #[test]
+    fn options_and_sizes_are_refused_by_name_at_their_bounds() {
+        let view = camera(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO);
+        let with =
+            |tolerance: f64, min_piece: f64| hidden_lines(&view, &[], &[], HiddenLineOptions { tolerance, min_piece });
+        assert!(with(1.0, 1000.0).is_ok());
+        assert!(with(0.0, 0.0).is_ok());
+        for (tolerance, min_piece, which) in [
+            (1.000_000_1, 1.0, "tolerance"),
+            (-1e-9, 1.0, "tolerance"),
+            (f64::INFINITY, 1.0, "tolerance"),
+            (0.5, 1000.5, "minPiece"),
+            (0.5, -1.0, "minPiece"),
+            (0.5, f64::NAN, "minPiece"),
+        ] {
+            match with(tolerance, min_piece) {
+                Err(Error::InvalidParameter { name, .. }) => assert_eq!(name, which, "{tolerance} {min_piece}"),
+                other => panic!("{tolerance} {min_piece}: expected a refusal, got {other:?}"),
+            }
+        }
+        let (p, _) = square();
+        let at_most_10 = |idx: &[u32], points: &[DVec3]| {
+            hidden_lines_at_most(&view, &[(&p, idx)], &[(LineKind::Points, points)], exact(), 10)
+        };
+        let ten: Vec<u32> = [0, 1, 2].repeat(10);
+        assert!(at_most_10(&ten, &[DVec3::ZERO; 10]).is_ok());
+        let and_one_index: Vec<u32> = [&ten[..], &[3]].concat();
+        assert!(at_most_10(&and_one_index, &[]).is_ok());
+        let eleven: Vec<u32> = [0, 1, 2].repeat(11);
+        let too_many = |r: Result<Vec<Vec<Run>>>| match r {
+            Err(Error::TooMany { what, got, max }) => (what, got, max),
+            other => panic!("expected too many, got {other:?}"),
+        };
+        assert_eq!(too_many(at_most_10(&eleven, &[])), ("triangles", 11, 10));
+        assert_eq!(too_many(at_most_10(&ten, &[DVec3::ZERO; 11])), ("line points", 11, 10));
+    }
+
+    /// A closed polyline joins its last point to its first (three points or more); two points
+    /// are one segment either way.
+    #[test]
+    fn closed_polylines_come_back_to_their_first_point() {
+        let view = camera(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO);
+        let triangle = [DVec3::new(-1.0, -1.0, 0.0), DVec3::new(1.0, -1.0, 0.0), DVec3::new(0.0, 1.0, 0.0)];
+        let images: Vec<DVec2> = triangle.iter().map(|&q| view.project(q).unwrap()).collect();
+        let draw = |closed: bool, points: &[DVec3]| {
+            hidden_lines(&view, &[], &[(LineKind::Polyline { closed }, points)], exact()).unwrap().remove(0)
+        };
+        assert_eq!(draw(true, &triangle), [Run { points: [&images[..], &images[..1]].concat(), visible: true }]);
+        assert_eq!(draw(false, &triangle), [Run { points: images.clone(), visible: true }]);
+        assert_eq!(draw(true, &triangle[..2]), [Run { points: images[..2].to_vec(), visible: true }]);
+    }
+
+    #[test]
+    fn transformed_moves_points_by_the_model_matrix() {
+        let points = [DVec3::new(1.0, 2.0, 3.0), DVec3::new(-1.0, 0.0, 0.5)];
+        assert_eq!(transformed(&points, None), points);
+        let m = DMat4::from_translation(DVec3::new(10.0, 20.0, 30.0)) * DMat4::from_scale(DVec3::splat(2.0));
+        assert_eq!(transformed(&points, Some(&m)), [DVec3::new(12.0, 24.0, 36.0), DVec3::new(8.0, 20.0, 31.0)]);
+    }
+
+    /// A view from a matrix given by its rows.
+    fn view_of_rows(rows: [[f64; 4]; 4]) -> View {
+        let m = DMat4::from_cols_array_2d(&rows).transpose();
+        View::new(&m.to_cols_array(), 2.0, 2.0).unwrap()
+    }
+
+    /// Clipping to the near plane (z + w ≥ 0, closed) and to w > 0 (open: a point at w = 0 has
+    /// no image), with matrices that set clip z and w apart; a segment with a point at infinity
+    /// is left out.
+    #[test]
+    fn segments_are_clipped_to_the_near_plane_and_to_positive_w() {
+        // clip (y, z, 5, x): z + w ≥ 0 for x ≥ −5; w = x
+        let w_is_x =
+            view_of_rows([[0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 5.0], [1.0, 0.0, 0.0, 0.0]]);
+        assert_eq!(w_is_x.project(DVec3::new(2.0, 0.5, 0.25)), Some(DVec2::new(1.25, 0.875)));
+        assert_eq!(w_is_x.project(DVec3::new(0.0, 0.5, 0.25)), None);
+        assert!(clip_segment(&w_is_x, DVec3::X, DVec3::ZERO).is_none());
+        assert!(clip_segment(&w_is_x, DVec3::ZERO, DVec3::X).is_none());
+        let whole = clip_segment(&w_is_x, DVec3::X, DVec3::new(3.0, 1.0, 0.0)).unwrap();
+        assert_eq!((whole.a, whole.b, whole.ia.w, whole.ib.w), (DVec3::X, DVec3::new(3.0, 1.0, 0.0), 1.0, 3.0));
+        // clip (y, z, −1, x): the near plane is x = 1
+        let near_at_1 =
+            view_of_rows([[0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, -1.0], [1.0, 0.0, 0.0, 0.0]]);
+        let cut = clip_segment(&near_at_1, DVec3::new(0.5, 0.0, 0.0), DVec3::new(3.0, 2.0, 0.0)).unwrap();
+        crate::assert_near!(cut.a, DVec3::new(1.0, 0.4, 0.0), 1e-15);
+        assert_eq!(cut.b, DVec3::new(3.0, 2.0, 0.0));
+        crate::assert_near!(cut.ia.screen, DVec2::new(1.4, 1.0), 1e-15);
+        // touching the near plane in one point: that point is kept
+        let touch = clip_segment(&near_at_1, DVec3::X, DVec3::new(0.5, 0.0, 0.0)).unwrap();
+        assert_eq!((touch.a, touch.b), (DVec3::X, DVec3::X));
+        // clip (y, z, x + 1, x + 2): a point at x = ∞ has z + w = w = ∞ but no image
+        let x_grows =
+            view_of_rows([[0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, 1.0], [1.0, 0.0, 0.0, 2.0]]);
+        let far = DVec3::new(f64::INFINITY, 0.0, 0.0);
+        assert!(clip_segment(&x_grows, far, DVec3::X).is_none());
+        assert!(clip_segment(&x_grows, DVec3::X, far).is_none());
+        assert!(clip_segment(&x_grows, DVec3::X, DVec3::Y).is_some());
+    }
+
+    /// An occluder is left out when a corner is behind the eye, or its image is thinner than
+    /// 1e−12 of its longer side squared (area A, longer side L from corner 0: kept when
+    /// A > 1e−12 L²): a triangle far from the origin with A = 1e−11 L² is kept, whichever side
+    /// is longer; one with A = 1e−13 L² is not.
+    #[test]
+    fn occluders_leave_out_what_hides_nothing() {
+        // clip (x, y, z, 1): the image of (x, y, z) is (x + 1, 1 − y)
+        let flat = View::new(&DMat4::IDENTITY.to_cols_array(), 2.0, 2.0).unwrap();
+        let triangle = |c0: DVec2, d1: DVec2, d2: DVec2| [c0.extend(0.0), (c0 + d1).extend(0.0), (c0 + d2).extend(0.0)];
+        let far = DVec2::splat(1000.0);
+        let (long, short) = (DVec2::new(1.0, 0.0), DVec2::new(0.5, 1e-11));
+        assert!(occluder(&flat, triangle(far, long, short), 0.0).is_some());
+        assert!(occluder(&flat, triangle(far, short, long), 0.0).is_some());
+        let (long, short) = (DVec2::new(100.0, 0.0), DVec2::new(0.5, 1e-11));
+        assert!(occluder(&flat, triangle(far, long, short), 0.0).is_none());
+        assert!(occluder(&flat, triangle(far, short, long), 0.0).is_none());
+        let view = camera(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO);
+        let (p, _) = square();
+        assert!(occluder(&view, [p[0], p[1], p[2]], 0.0).is_some());
+        assert!(occluder(&view, [p[0], p[1], DVec3::new(0.0, 0.0, 20.0)], 0.0).is_none());
+        // seen edge-on
+        assert!(occluder(&view, [DVec3::X, DVec3::new(1.0, 0.0, 1.0), DVec3::new(2.0, 0.0, 0.0)], 0.0).is_none());
+    }
+
+    /// A point or a line ending on a surface is not hidden by it, tolerance zero or not; a square
+    /// far below the eye (a plane offset larger than the eye's homogeneous w) still hides what
+    /// is behind it, not what is in front.
+    #[test]
+    fn what_lies_on_a_surface_is_seen_and_the_eye_decides_the_side() {
+        let view = camera(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO);
+        let (p, idx) = square();
+        let on = [DVec3::new(0.3, 0.2, 0.0)];
+        let up = [DVec3::new(0.3, 0.2, 0.0), DVec3::new(0.3, 0.2, 1.0)];
+        let down = [up[1], up[0]];
+        for tolerance in [0.0, HIDDEN_LINE_TOLERANCE] {
+            let options = HiddenLineOptions { tolerance, min_piece: 0.0 };
+            let lines = [(LineKind::Points, &on[..]), (LineKind::Segments, &up[..]), (LineKind::Segments, &down[..])];
+            let runs = hidden_lines(&view, &[(&p, &idx)], &lines, options).unwrap();
+            for r in &runs {
+                assert_eq!(r.iter().map(|r| r.visible).collect::<Vec<_>>(), [true], "τ = {tolerance}: {r:?}");
+            }
+        }
+        let low: Vec<DVec3> = p.iter().map(|q| *q - DVec3::new(0.0, 0.0, 100.0)).collect();
+        let dots = [DVec3::new(0.0, 0.0, -101.0), DVec3::new(0.0, 0.0, -99.0)];
+        let runs = hidden_lines(&view, &[(&low, &idx)], &[(LineKind::Points, &dots)], exact()).unwrap();
+        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true]);
+    }
+
+    /// How far the triangles across each edge bend away from a triangle's plane, against the
+    /// same found pair by pair; a triangle naming a point that does not exist is no one's
+    /// neighbour and bends nothing.
+    #[test]
+    fn bend_is_the_largest_distance_of_a_neighbours_far_corner() {
+        let n = 5;
+        let mut seed = 7u64;
+        let mut p: Vec<DVec3> =
+            (0..n * n).map(|k| DVec3::new((k % n) as f64, (k / n) as f64, random(&mut seed) - 0.5)).collect();
+        p.push(DVec3::NAN);
+        let mut idx = crate::grid_indices(n, n);
+        idx.extend([0, 1, (n * n + 7) as u32, (n * n + 1) as u32, (n * n + 1) as u32, 0]);
+        let triangles = idx.len() / 3;
+        let mut pairwise = vec![0.0f64; triangles];
+        let corners = |t: usize| [idx[3 * t], idx[3 * t + 1], idx[3 * t + 2]];
+        for (a, out) in pairwise.iter_mut().enumerate() {
+            let ca = corners(a);
+            let Some(pa) = ca.iter().map(|&i| p.get(i as usize).copied()).collect::<Option<Vec<_>>>() else { continue };
+            let normal = (pa[1] - pa[0]).cross(pa[2] - pa[0]).normalize_or_zero();
+            for b in (0..triangles).filter(|&b| b != a) {
+                let cb = corners(b);
+                if cb.iter().any(|&i| i as usize >= p.len()) {
+                    continue;
+                }
+                for k in 0..3 {
+                    let (i, j) = (ca[k], ca[(k + 1) % 3]);
+                    if cb.contains(&i) && cb.contains(&j) {
+                        let far = cb.iter().find(|&&c| c != i && c != j).unwrap();
+                        let d = normal.dot(p[*far as usize] - pa[0]).abs();
+                        if d.is_finite() {
+                            *out = out.max(d);
+                        }
+                    }
+                }
+            }
+        }
+        let b = bend(&p, &idx);
+        assert_eq!(b.len(), triangles);
+        for t in 0..triangles {
+            crate::assert_near!(b[t], pairwise[t], 1e-14);
+        }
+        assert!(b[..triangles - 2].iter().all(|&x| x > 0.0), "{b:?}");
+        assert_eq!(&b[triangles - 2..], [0.0, 0.0]);
+        // flat: nothing bends
+        let (square, idx) = square();
+        assert_eq!(bend(&square, &idx), [0.0, 0.0]);
+    }
+
+    /// The page camera: the near plane a hundredth of the distance from the eye to 1e−5 of it
+    /// (a far plane at ± near would move it by 1e−4); "up" is z until the view direction is
+    /// within 1e−9 (exactly, here) of z.
+    #[test]
+    fn the_page_camera_near_plane_and_up_direction() {
+        let eye = DVec3::new(0.0, -10.0, 0.0);
+        let v = View::looking(eye, DVec3::ZERO, 1.0, 400.0, 300.0).unwrap();
+        assert!(v.project(eye + DVec3::new(0.0, 0.100_005, 0.0)).is_some());
+        assert!(v.project(eye + DVec3::new(0.0, 0.099_995, 0.0)).is_none());
+        let square = |eye: DVec3| View::looking(eye, DVec3::ZERO, std::f64::consts::FRAC_PI_2, 400.0, 400.0).unwrap();
+        let tilted = square(DVec3::new(1e-9, 0.0, 1.0));
+        assert_eq!(DVec3::new(1e-9, 0.0, 1.0).cross(DVec3::Z).length(), 1e-9);
+        // up is z: the view's right is the world's +y
+        crate::assert_near!(tilted.project(DVec3::new(0.0, 0.5, 0.0)).unwrap(), DVec2::new(300.0, 200.0), 1e-6);
+        // along z: up is y
+        crate::assert_near!(
+            square(DVec3::Z).project(DVec3::new(0.0, 0.5, 0.0)).unwrap(),
+            DVec2::new(200.0, 100.0),
+            1e-9
+        );
     }
 }
