@@ -38,8 +38,8 @@
 
 use crate::error::{Error, Result};
 use crate::tolerance::{
-    HIDDEN_LINE_BEND, HIDDEN_LINE_GRID_ENTRIES, HIDDEN_LINE_MIN_PIECE, HIDDEN_LINE_TOLERANCE, MAX_HIDDEN_LINE_GRID,
-    MAX_HIDDEN_LINE_ITEMS,
+    HIDDEN_LINE_BEND, HIDDEN_LINE_GRID_ENTRIES, HIDDEN_LINE_MIN_PIECE, HIDDEN_LINE_TOLERANCE, MAX_COORD,
+    MAX_HIDDEN_LINE_GRID, MAX_HIDDEN_LINE_ITEMS,
 };
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
@@ -107,13 +107,17 @@ impl View {
 
     /// The page's camera (`www/camera.js`): perspective with vertical field of view `fov_y`
     /// (radians) from `eye` towards `target`, z up (y up when looking along z), the near and far
-    /// planes at 1/100 and 100 times the distance, on a `width` × `height` viewport.
+    /// planes at 1/100 and 100 times the distance, on a `width` × `height` viewport. Refused: an
+    /// eye at the target or farther from it than [`MAX_COORD`], a field of view outside (0, π).
     pub fn looking(eye: DVec3, target: DVec3, fov_y: f64, width: f64, height: f64) -> Result<Self> {
         let distance = eye.distance(target);
-        if !(distance > 0.0 && distance.is_finite() && fov_y > 0.0 && fov_y < std::f64::consts::PI) {
+        if !(distance > 0.0 && distance <= MAX_COORD && fov_y > 0.0 && fov_y < std::f64::consts::PI) {
             return Err(Error::InvalidParameter {
                 name: "eye",
-                message: format!("need an eye apart from the target and a field of view in (0, π), got {fov_y}").into(),
+                message: format!(
+                    "need an eye apart from the target, at most {MAX_COORD:e} from it (got {distance}), and a field of view in (0, π) (got {fov_y})"
+                )
+                .into(),
             });
         }
         let (near, far) = (distance / 100.0, distance * 100.0);
@@ -1032,6 +1036,13 @@ mod tests {
             assert_eq!(name(View::looking(eye, t, fov, 100.0, 100.0)), "eye", "{fov}");
         }
         assert!(View::looking(eye, t, 3.1, 100.0, 100.0).is_ok());
+        // as far as the coordinate limit, not farther (2·far·near = 2·distance² would overflow
+        // from 9.5e153 on)
+        let far = View::looking(DVec3::new(0.0, -1e150, 0.0), t, 1.0, 100.0, 100.0).unwrap();
+        crate::assert_near!(far.project(DVec3::new(0.0, 1e150, 0.0)).unwrap(), DVec2::new(50.0, 50.0), 1e-12);
+        for y in [-1.000_000_1e150, -1.2e154, f64::NEG_INFINITY] {
+            assert_eq!(name(View::looking(DVec3::new(0.0, y, 0.0), t, 1.0, 100.0, 100.0)), "eye", "{y}");
+        }
         let id: Vec<f64> = DMat4::IDENTITY.to_cols_array().to_vec();
         assert!(View::new(&id, 1e6, 1.0).is_ok());
         for (w, h, which) in
