@@ -467,4 +467,27 @@ mod tests {
         }
         assert_eq!(r.line(2, 4), c.line(1, 2));
     }
+
+    /// The convergence floor scales with the data and with the grid: 2·10⁶ from the origin (at
+    /// coordinates that are not binary fractions, so the butterfly start's affine x and y carry
+    /// rounding) on a 49 × 61 grid, x and y are still recognised as converged and kept bit for
+    /// bit.
+    #[test]
+    fn the_convergence_floor_scales_with_the_data() {
+        let shift = DVec3::new(1e6 * std::f64::consts::PI, -2e6 * std::f64::consts::E, 0.0);
+        let c = congruence(25, 31, |u, v| {
+            let (p, q) = wavy(u, v);
+            (p + shift, q + shift)
+        });
+        let start =
+            crate::congruence::subdivide(&c, crate::congruence::CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1)
+                .unwrap();
+        let grid = start.p();
+        let mut each = grid.clone();
+        solve_coordinates(&mut each, start.rows(), start.cols()).unwrap();
+        for k in 0..grid.len() {
+            assert_eq!((each[k].x, each[k].y), (grid[k].x, grid[k].y), "node {k}: affine coordinates kept");
+        }
+        assert!(each.iter().zip(&grid).any(|(a, b)| (a.z - b.z).abs() > 1e-6), "z was solved");
+    }
 }
