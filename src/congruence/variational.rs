@@ -111,9 +111,7 @@ pub fn coupled(c: &LineCongruence, _k: usize) -> Result<(LineCongruence, SolveRe
 fn solve_coordinates(grid: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
     let op = Umbrella { rows, cols };
     let n = grid.len();
-    // converged: ‖r‖ ≤ SOLVE_TOLERANCE · (largest coordinate) · √n, against the size of the data
-    let scale = grid.iter().fold(0.0f64, |m, p| m.max(p.abs().max_element()));
-    let floor = (SOLVE_TOLERANCE * scale.max(f64::MIN_POSITIVE)).powi(2) * n as f64;
+    let floor = convergence_floor(grid);
     let mut x = vec![0.0; n];
     let mut most = 0;
     for axis in 0..3 {
@@ -122,6 +120,13 @@ fn solve_coordinates(grid: &mut [DVec3], rows: usize, cols: usize) -> Result<usi
         grid.iter_mut().zip(&x).for_each(|(p, s)| p[axis] = *s);
     }
     Ok(most)
+}
+
+/// Converged: ‖r‖ ≤ SOLVE_TOLERANCE · (largest coordinate) · √n, against the size of the data
+/// (n points); returned squared, ‖r‖² ≤ floor.
+fn convergence_floor(grid: &[DVec3]) -> f64 {
+    let scale = grid.iter().fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+    (SOLVE_TOLERANCE * scale).powi(2) * grid.len() as f64
 }
 
 /// The umbrella operator L of the refined grid: the 8-neighbour umbrella (20) at interior
@@ -468,26 +473,14 @@ mod tests {
         assert_eq!(r.line(2, 4), c.line(1, 2));
     }
 
-    /// The convergence floor scales with the data and with the grid: 2·10⁶ from the origin (at
-    /// coordinates that are not binary fractions, so the butterfly start's affine x and y carry
-    /// rounding) on a 49 × 61 grid, x and y are still recognised as converged and kept bit for
-    /// bit.
+    /// The convergence floor, by hand: (10⁻¹³ · 8)² · 4 for four points whose largest
+    /// coordinate is −8 (a grid of zeros: 0, and its residual is 0 too).
     #[test]
-    fn the_convergence_floor_scales_with_the_data() {
-        let shift = DVec3::new(1e6 * std::f64::consts::PI, -2e6 * std::f64::consts::E, 0.0);
-        let c = congruence(25, 31, |u, v| {
-            let (p, q) = wavy(u, v);
-            (p + shift, q + shift)
-        });
-        let start =
-            crate::congruence::subdivide(&c, crate::congruence::CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1)
-                .unwrap();
-        let grid = start.p();
-        let mut each = grid.clone();
-        solve_coordinates(&mut each, start.rows(), start.cols()).unwrap();
-        for k in 0..grid.len() {
-            assert_eq!((each[k].x, each[k].y), (grid[k].x, grid[k].y), "node {k}: affine coordinates kept");
-        }
-        assert!(each.iter().zip(&grid).any(|(a, b)| (a.z - b.z).abs() > 1e-6), "z was solved");
+    fn the_convergence_floor_scales_with_the_data_and_the_grid() {
+        let grid = [DVec3::new(1.0, 2.0, 3.0), DVec3::new(0.5, -8.0, 0.0), DVec3::ZERO, DVec3::new(7.0, 0.0, -1.0)];
+        assert_eq!(SOLVE_TOLERANCE, 1e-13);
+        let floor = convergence_floor(&grid);
+        assert!((floor / 2.56e-24 - 1.0).abs() < 1e-14, "{floor:e}");
+        assert_eq!(convergence_floor(&[DVec3::ZERO; 9]), 0.0);
     }
 }
