@@ -107,26 +107,39 @@ pub fn coupled(c: &LineCongruence, _k: usize) -> Result<(LineCongruence, SolveRe
 /// converged — one the start already gets right (an affine one, which the butterfly rule
 /// reproduces) costs one residual and no iteration. One coordinate at a time, the operator
 /// and the updates run over plain `f64` arrays, which the compiler turns into SIMD (f64x2).
-/// Returns the most iterations taken.
+/// The solve runs on the grid scaled by a power of two to a largest coordinate in [1, 2):
+/// that scaling is exact, so the result is the same bit for bit, and no square in the solve
+/// under- or overflows whatever the data's size (at 10⁻¹⁵⁹ they did). Returns the most
+/// iterations taken.
 fn solve_coordinates(grid: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
     let op = Umbrella { rows, cols };
     let n = grid.len();
-    let floor = convergence_floor(grid);
+    let largest = grid.iter().fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+    let unit = power_of_two_below(largest);
+    let floor = convergence_floor(largest / unit, n);
     let mut x = vec![0.0; n];
     let mut most = 0;
     for axis in 0..3 {
-        x.iter_mut().zip(grid.iter()).for_each(|(s, p)| *s = p[axis]);
+        x.iter_mut().zip(grid.iter()).for_each(|(s, p)| *s = p[axis] / unit);
         most = most.max(conjugate_gradients(&op, &mut x, floor)?);
-        grid.iter_mut().zip(&x).for_each(|(p, s)| p[axis] = *s);
+        grid.iter_mut().zip(&x).for_each(|(p, s)| p[axis] = *s * unit);
     }
     Ok(most)
 }
 
+/// The largest power of two 2ᵉ ≤ x for x > 0 (e within ±1000), 1 for x = 0.
+fn power_of_two_below(x: f64) -> f64 {
+    if x > 0.0 {
+        2f64.powi(x.log2().floor().clamp(-1000.0, 1000.0) as i32)
+    } else {
+        1.0
+    }
+}
+
 /// Converged: ‖r‖ ≤ SOLVE_TOLERANCE · (largest coordinate) · √n, against the size of the data
 /// (n points); returned squared, ‖r‖² ≤ floor.
-fn convergence_floor(grid: &[DVec3]) -> f64 {
-    let scale = grid.iter().fold(0.0f64, |m, p| m.max(p.abs().max_element()));
-    (SOLVE_TOLERANCE * scale).powi(2) * grid.len() as f64
+fn convergence_floor(largest: f64, n: usize) -> f64 {
+    (SOLVE_TOLERANCE * largest).powi(2) * n as f64
 }
 
 /// The umbrella operator L of the refined grid: the 8-neighbour umbrella (20) at interior
@@ -190,12 +203,14 @@ impl Umbrella {
     /// of the boundary (0: every node), so only sources within depth + 1 are visited.
     fn scatter_transpose(&self, u: &[f64], y: &mut [f64], target: impl Fn(usize, usize) -> bool, depth: usize) {
         let (r, c) = (self.rows, self.cols);
-        // the nodes within `reach` of the boundary, row by row (every node when reach is 0)
+        // the nodes within `reach` of the boundary, row by row (every node when reach is 0),
+        // each once
         let ring = |reach: usize| {
             (0..r).flat_map(move |i| {
-                // a whole row, or its first and last `reach` columns
+                // a whole row, or its first and last `reach` columns, none twice (5 columns
+                // with reach 3 took column 2 twice)
                 let whole = reach == 0 || i < reach || i + reach >= r;
-                let (left, right) = if whole { (c, c) } else { (reach, c - reach) };
+                let (left, right) = if whole { (c, c) } else { (reach, (c - reach).max(reach)) };
                 (0..left).chain(right..c).map(move |j| (i, j))
             })
         };
@@ -304,7 +319,9 @@ mod tests {
             seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
             ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
         };
-        for (r, c) in [(3, 3), (3, 7), (4, 5), (5, 5), (6, 9), (11, 8)] {
+        // every size from 3 × 3 to 12 × 12 (5 columns and 7 rows or more once scattered a
+        // node of the band's middle column twice)
+        for (r, c) in (3..=12).flat_map(|r| (3..=12).map(move |c| (r, c))) {
             let op = Umbrella { rows: r, cols: c };
             let n = r * c;
             let x: Vec<f64> = (0..n).map(|_| rnd()).collect();
@@ -377,8 +394,16 @@ mod tests {
     /// written out literally: perturbing any new endpoint raises it.
     #[test]
     fn coupled_minimises_the_layered_energy() {
-        let c = congruence(3, 4, wavy);
-        let (r, report) = coupled(&c, 6).unwrap();
+        // 4 × 3 lines refine to 7 × 5 (the umbrella's transpose once took a node twice there)
+        for (rows, cols) in [(3, 4), (4, 3)] {
+            minimises_the_layered_energy(&congruence(rows, cols, wavy));
+        }
+    }
+
+    /// Moving any new endpoint of the coupled result by 10⁻⁴ along an axis raises the layered
+    /// energy (20)–(21), summed over k = 0 … 6.
+    fn minimises_the_layered_energy(c: &LineCongruence) {
+        let (r, report) = coupled(c, 6).unwrap();
         assert!(report.iterations > 0);
         let energy = |g: &LineCongruence| {
             let (rr, cc) = (g.rows(), g.cols());
@@ -398,14 +423,15 @@ mod tests {
         };
         let e0 = energy(&r);
         let (mut p, q) = (r.p(), r.q());
-        for k in [1, 5, 7, 10] {
+        let cols = r.cols();
+        for k in (0..p.len()).filter(|k| (k / cols) % 2 == 1 || (k % cols) % 2 == 1) {
             for axis in 0..3 {
                 for sign in [-1.0, 1.0] {
                     let mut e = DVec3::ZERO;
                     e[axis] = sign * 1e-4;
                     p[k] += e;
                     let moved = LineCongruence::from_points(r.rows(), r.cols(), &p, &q).unwrap();
-                    assert!(energy(&moved) > e0, "node {k} axis {axis}");
+                    assert!(energy(&moved) > e0, "{}×{}: node {k} axis {axis}", c.rows(), c.cols());
                     p[k] -= e;
                 }
             }
@@ -474,13 +500,31 @@ mod tests {
     }
 
     /// The convergence floor, by hand: (10⁻¹³ · 8)² · 4 for four points whose largest
-    /// coordinate is −8 (a grid of zeros: 0, and its residual is 0 too).
+    /// coordinate is 8; and the power of two the solve scales by.
     #[test]
-    fn the_convergence_floor_scales_with_the_data_and_the_grid() {
-        let grid = [DVec3::new(1.0, 2.0, 3.0), DVec3::new(0.5, -8.0, 0.0), DVec3::ZERO, DVec3::new(7.0, 0.0, -1.0)];
+    fn the_convergence_floor_and_the_scale_of_the_solve() {
         assert_eq!(SOLVE_TOLERANCE, 1e-13);
-        let floor = convergence_floor(&grid);
+        let floor = convergence_floor(8.0, 4);
         assert!((floor / 2.56e-24 - 1.0).abs() < 1e-14, "{floor:e}");
-        assert_eq!(convergence_floor(&[DVec3::ZERO; 9]), 0.0);
+        for (x, below) in [(1.0, 1.0), (1.5, 1.0), (0.75, 0.5), (1e-159, 2f64.powi(-529)), (3e120, 2f64.powi(400))] {
+            assert_eq!(power_of_two_below(x), below, "{x:e}");
+        }
+        assert_eq!(power_of_two_below(0.0), 1.0);
+        assert_eq!(power_of_two_below(1e-310), 2f64.powi(-1000));
+    }
+
+    /// The coupled scheme commutes with scaling by powers of two, bit for bit, also where the
+    /// squares of its solve would under- or overflow unscaled (2⁻⁵²⁸ ≈ 10⁻¹⁵⁹).
+    #[test]
+    fn coupled_commutes_with_scaling_by_powers_of_two() {
+        let c = congruence(4, 5, wavy);
+        let (r, _) = coupled(&c, 3).unwrap();
+        let times = |points: Vec<DVec3>, s: f64| points.into_iter().map(|x| x * s).collect::<Vec<_>>();
+        for s in [2f64.powi(-528), 2f64.powi(-60), 2f64.powi(400)] {
+            let scaled = LineCongruence::from_points(4, 5, &times(c.p(), s), &times(c.q(), s)).unwrap();
+            let (rs, _) = coupled(&scaled, 3).unwrap();
+            assert_eq!(rs.p(), times(r.p(), s), "{s:e}");
+            assert_eq!(rs.q(), times(r.q(), s), "{s:e}");
+        }
     }
 }
