@@ -853,7 +853,17 @@ mod tests {
         assert_eq!(runs[1].iter().map(|r| r.visible).collect::<Vec<_>>(), [true, false]);
         let tau = HIDDEN_LINE_TOLERANCE * 8f64.sqrt();
         // hidden from where it is τ below the plane: z = −τ, x = τ/2 on the slanted line
-        crate::assert_near!(runs[1][1].points[0], view.project(DVec3::new(tau / 2.0, 0.0, -tau)).unwrap(), 1e-9);
+        let crossing = view.project(DVec3::new(tau / 2.0, 0.0, -tau)).unwrap();
+        crate::assert_near!(runs[1][1].points[0], crossing, 1e-9);
+        // the same lines the other way: hidden up to there
+        let (up, rising) = ([through[1], through[0]], [slanted[1], slanted[0]]);
+        let runs =
+            hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Segments, &up), (LineKind::Segments, &rising)], exact())
+                .unwrap();
+        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true]);
+        assert_eq!(runs[1].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true]);
+        crate::assert_near!(runs[1][0].points[1], crossing, 1e-9);
+        crate::assert_near!(runs[1][0].points[0], view.project(rising[0]).unwrap(), 1e-9);
     }
 
     #[test]
@@ -1322,8 +1332,8 @@ mod tests {
     }
 
     /// A point or a line ending on a surface is not hidden by it, tolerance zero or not; a square
-    /// far below the eye (a plane offset larger than the eye's homogeneous w) still hides what
-    /// is behind it, not what is in front.
+    /// between the eye and the origin hides what is behind it, not what is in front (the eye's
+    /// side of its plane from the homogeneous eye).
     #[test]
     fn what_lies_on_a_surface_is_seen_and_the_eye_decides_the_side() {
         let view = camera(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO);
@@ -1339,9 +1349,11 @@ mod tests {
                 assert_eq!(r.iter().map(|r| r.visible).collect::<Vec<_>>(), [true], "τ = {tolerance}: {r:?}");
             }
         }
-        let low: Vec<DVec3> = p.iter().map(|q| *q - DVec3::new(0.0, 0.0, 100.0)).collect();
-        let dots = [DVec3::new(0.0, 0.0, -101.0), DVec3::new(0.0, 0.0, -99.0)];
-        let runs = hidden_lines(&view, &[(&low, &idx)], &[(LineKind::Points, &dots)], exact()).unwrap();
+        // from 100 above the origin (the eye's homogeneous w ≈ −1/2), a square at z = 60
+        let view = camera(DVec3::new(0.0, 0.0, 100.0), DVec3::ZERO);
+        let lifted: Vec<DVec3> = p.iter().map(|q| *q + DVec3::new(0.0, 0.0, 60.0)).collect();
+        let dots = [DVec3::new(0.0, 0.0, 59.0), DVec3::new(0.0, 0.0, 61.0)];
+        let runs = hidden_lines(&view, &[(&lifted, &idx)], &[(LineKind::Points, &dots)], exact()).unwrap();
         assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true]);
     }
 
@@ -1386,6 +1398,12 @@ mod tests {
         for t in 0..triangles {
             crate::assert_near!(b[t], pairwise[t], 1e-14);
         }
+        // the same triangles with their corners named from the second on (the smallest index
+        // is no longer always first)
+        let turned: Vec<u32> = idx.chunks_exact(3).flat_map(|t| [t[1], t[2], t[0]]).collect();
+        for (x, y) in bend(&p, &turned).into_iter().zip(&b) {
+            crate::assert_near!(x, *y, 1e-14);
+        }
         assert!(b[..triangles - 2].iter().all(|&x| x > 0.0), "{b:?}");
         assert_eq!(&b[triangles - 2..], [0.0, 0.0]);
         // flat: nothing bends
@@ -1413,5 +1431,42 @@ mod tests {
             DVec2::new(200.0, 100.0),
             1e-9
         );
+    }
+
+    /// Eight squares in a row above a line drawn from right to left: the grid finds their
+    /// triangles column by column, left to right, so the hidden intervals (in the line's
+    /// parameter, which grows leftwards) come in falling order and must be sorted before they
+    /// are merged; each shadow is hidden exactly, the gaps between them seen.
+    #[test]
+    fn hidden_parts_found_out_of_order_are_sorted() {
+        let view = camera(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO);
+        let mut p = Vec::new();
+        let mut idx = Vec::new();
+        for k in 0..8 {
+            let x = -3.75 + k as f64;
+            let base = p.len() as u32;
+            p.extend([
+                DVec3::new(x - 0.25, -0.25, 0.0),
+                DVec3::new(x + 0.25, -0.25, 0.0),
+                DVec3::new(x + 0.25, 0.25, 0.0),
+                DVec3::new(x - 0.25, 0.25, 0.0),
+            ]);
+            idx.extend([base, base + 1, base + 2, base, base + 2, base + 3]);
+        }
+        let scene = Scene::new(&view, &[(&p, &idx)], 0.0);
+        assert!(scene.cols >= 3, "the squares lie in several columns of the grid");
+        let line = [DVec3::new(5.0, 0.1, -1.0), DVec3::new(-5.0, 0.1, -1.0)];
+        let runs = hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Segments, &line)], exact()).unwrap().remove(0);
+        assert_eq!(runs.len(), 17);
+        // seen from z = 10, a square's shadow on z = −1 is 1.1 times as wide
+        let shadow = |x: f64| view.project(DVec3::new(1.1 * x, 0.1, -1.0)).unwrap();
+        for (k, run) in runs.iter().enumerate() {
+            assert_eq!(run.visible, k % 2 == 0, "run {k}");
+            if !run.visible {
+                let x = 3.25 - (k / 2) as f64;
+                crate::assert_near!(run.points[0], shadow(x + 0.25), 1e-9);
+                crate::assert_near!(run.points[1], shadow(x - 0.25), 1e-9);
+            }
+        }
     }
 }
