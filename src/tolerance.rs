@@ -15,7 +15,9 @@ pub const PARALLEL_SIN: f64 = 1e-9;
 /// dominated by rounding.
 pub const ZERO_LENGTH_REL: f64 = 1e-12;
 
-/// Largest accepted coordinate magnitude. Squares of differences stay far from overflow.
+/// Largest accepted coordinate magnitude. Squares of differences stay far from overflow. Also
+/// the hidden-line camera's limit for its eye and target, and 1/MAX_COORD the least distance
+/// between them (its near and far planes' product, distance²/50, stays a normal number).
 pub const MAX_COORD: f64 = 1e150;
 
 /// Largest number of rulings in one discrete ruled surface (input or output, checked before
@@ -208,6 +210,17 @@ pub const HIDDEN_LINE_BEND: f64 = 0.5;
 /// Hidden lines: a run of one visibility shorter than this many pixels between runs of the other
 /// is a sliver where a line grazes an edge, and goes to its neighbours.
 pub const HIDDEN_LINE_MIN_PIECE: f64 = 1.0;
+
+/// Hidden lines: the largest `minPiece` (pixels) an export may ask for.
+pub const MAX_HIDDEN_LINE_MIN_PIECE: f64 = 1e3;
+
+/// Hidden lines: a triangle whose image has |(b − a) × (c − a)| (twice its area) at most this
+/// times its longer side from a, squared, is seen edge-on and hides nothing.
+pub const HIDDEN_LINE_EDGE_ON: f64 = 1e-12;
+
+/// The hidden-line camera (`View::looking`) takes z as up unless the view direction is within
+/// this sine of z, where it takes y.
+pub const CAMERA_UP_SINE: f64 = 1e-9;
 
 /// Hidden lines: most cells per side of the screen grid the triangles are binned in.
 pub const MAX_HIDDEN_LINE_GRID: usize = 1024;

@@ -38,8 +38,8 @@
 
 use crate::error::{Error, Result};
 use crate::tolerance::{
-    HIDDEN_LINE_BEND, HIDDEN_LINE_GRID_ENTRIES, HIDDEN_LINE_MIN_PIECE, HIDDEN_LINE_TOLERANCE, MAX_COORD,
-    MAX_HIDDEN_LINE_GRID, MAX_HIDDEN_LINE_ITEMS,
+    CAMERA_UP_SINE, HIDDEN_LINE_BEND, HIDDEN_LINE_EDGE_ON, HIDDEN_LINE_GRID_ENTRIES, HIDDEN_LINE_MIN_PIECE,
+    HIDDEN_LINE_TOLERANCE, MAX_COORD, MAX_HIDDEN_LINE_GRID, MAX_HIDDEN_LINE_ITEMS, MAX_HIDDEN_LINE_MIN_PIECE,
 };
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
@@ -108,16 +108,25 @@ impl View {
     /// The page's camera (`www/camera.js`): perspective with vertical field of view `fov_y`
     /// (radians) from `eye` towards `target`, z up (y up when looking along z), the near and far
     /// planes at 1/100 and 100 times the distance, on a `width` × `height` viewport. Refused: an
-    /// eye at the target or farther from it than [`MAX_COORD`], a field of view outside (0, π).
+    /// eye or target with a coordinate beyond ±[`MAX_COORD`], an eye nearer the target than
+    /// 1/[`MAX_COORD`], a field of view outside (0, π).
     pub fn looking(eye: DVec3, target: DVec3, fov_y: f64, width: f64, height: f64) -> Result<Self> {
         let distance = eye.distance(target);
-        if !(distance > 0.0 && distance <= MAX_COORD && fov_y > 0.0 && fov_y < std::f64::consts::PI) {
+        let within = |p: DVec3| p.abs().max_element() <= MAX_COORD;
+        if !(within(eye) && within(target) && distance >= 1.0 / MAX_COORD) {
             return Err(Error::InvalidParameter {
                 name: "eye",
                 message: format!(
-                    "need an eye apart from the target, at most {MAX_COORD:e} from it (got {distance}), and a field of view in (0, π) (got {fov_y})"
+                    "need an eye and a target within ±{MAX_COORD:e}, at least {:e} apart, got {eye} and {target}",
+                    1.0 / MAX_COORD
                 )
                 .into(),
+            });
+        }
+        if !(fov_y > 0.0 && fov_y < std::f64::consts::PI) {
+            return Err(Error::InvalidParameter {
+                name: "fovY",
+                message: format!("the field of view must be in (0, π), got {fov_y}").into(),
             });
         }
         let (near, far) = (distance / 100.0, distance * 100.0);
@@ -142,7 +151,7 @@ impl View {
             0.0,
         ]);
         let z = (eye - target) / distance;
-        let up = if z.cross(DVec3::Z).length() < 1e-9 { DVec3::Y } else { DVec3::Z };
+        let up = if z.cross(DVec3::Z).length() < CAMERA_UP_SINE { DVec3::Y } else { DVec3::Z };
         let x = up.cross(z).normalize();
         let y = z.cross(x);
         let look = DMat4::from_cols(
@@ -386,7 +395,7 @@ fn occluder(view: &View, [p0, p1, p2]: [DVec3; 3], tau: f64) -> Option<Occluder>
     let mut corners = clips.map(|c| view.image_of_clip(c).screen);
     let area = (corners[1] - corners[0]).perp_dot(corners[2] - corners[0]);
     let scale = (corners[1] - corners[0]).length_squared().max((corners[2] - corners[0]).length_squared());
-    if area.is_nan() || area.abs() <= 1e-12 * scale {
+    if area.is_nan() || area.abs() <= HIDDEN_LINE_EDGE_ON * scale {
         return None;
     }
     if area < 0.0 {
@@ -694,14 +703,18 @@ fn hidden_lines_at_most(
 ) -> Result<Vec<Vec<Run>>> {
     for (name, x, ok) in [
         ("tolerance", options.tolerance, options.tolerance >= 0.0 && options.tolerance <= 1.0),
-        ("minPiece", options.min_piece, options.min_piece >= 0.0 && options.min_piece <= 1e3),
+        ("minPiece", options.min_piece, options.min_piece >= 0.0 && options.min_piece <= MAX_HIDDEN_LINE_MIN_PIECE),
     ] {
         if !(x.is_finite() && ok) {
             return Err(Error::InvalidParameter {
                 name: if name == "tolerance" { "tolerance" } else { "minPiece" },
                 message: format!(
                     "{name} must be a number in {}, got {x}",
-                    if name == "tolerance" { "[0, 1]" } else { "[0, 1000]" }
+                    if name == "tolerance" {
+                        "[0, 1]".to_string()
+                    } else {
+                        format!("[0, {MAX_HIDDEN_LINE_MIN_PIECE}]")
+                    }
                 )
                 .into(),
             });
@@ -814,6 +827,11 @@ mod tests {
         (p, vec![0, 1, 2, 0, 2, 3])
     }
 
+    /// The visibility of each run.
+    fn seen(runs: &[Run]) -> Vec<bool> {
+        runs.iter().map(|r| r.visible).collect()
+    }
+
     fn exact() -> HiddenLineOptions {
         HiddenLineOptions { min_piece: 0.0, ..Default::default() }
     }
@@ -826,7 +844,7 @@ mod tests {
         let line = [DVec3::new(-5.0, 0.3, -1.0), DVec3::new(5.0, 0.3, -1.0)];
         let runs = hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Segments, &line)], exact()).unwrap();
         let runs = &runs[0];
-        assert_eq!(runs.iter().map(|r| r.visible).collect::<Vec<_>>(), [true, false, true]);
+        assert_eq!(seen(runs), [true, false, true]);
         let shadow = |x: f64| view.project(DVec3::new(x, 0.3, -1.0)).unwrap();
         crate::assert_near!(runs[1].points[0], shadow(-1.1), 1e-9);
         crate::assert_near!(runs[1].points[1], shadow(1.1), 1e-9);
@@ -849,8 +867,8 @@ mod tests {
             exact(),
         )
         .unwrap();
-        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [true, false]);
-        assert_eq!(runs[1].iter().map(|r| r.visible).collect::<Vec<_>>(), [true, false]);
+        assert_eq!(seen(&runs[0]), [true, false]);
+        assert_eq!(seen(&runs[1]), [true, false]);
         let tau = HIDDEN_LINE_TOLERANCE * 8f64.sqrt();
         // hidden from where it is τ below the plane: z = −τ, x = τ/2 on the slanted line
         let crossing = view.project(DVec3::new(tau / 2.0, 0.0, -tau)).unwrap();
@@ -860,8 +878,8 @@ mod tests {
         let runs =
             hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Segments, &up), (LineKind::Segments, &rising)], exact())
                 .unwrap();
-        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true]);
-        assert_eq!(runs[1].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true]);
+        assert_eq!(seen(&runs[0]), [false, true]);
+        assert_eq!(seen(&runs[1]), [false, true]);
         crate::assert_near!(runs[1][0].points[1], crossing, 1e-9);
         crate::assert_near!(runs[1][0].points[0], view.project(rising[0]).unwrap(), 1e-9);
     }
@@ -998,11 +1016,11 @@ mod tests {
             .collect();
         let idx: Vec<u32> = (0..60_000).collect();
         let runs = hidden_lines(&view, &[(&huge, &idx)], &[(LineKind::Points, &dots)], exact()).unwrap();
-        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, false, true]);
+        assert_eq!(seen(&runs[0]), [false, false, true]);
         // a triangle naming no point hides nothing (and breaks nothing)
         let wild = [0, 1, u32::MAX, 0, 2, 3];
         let runs = hidden_lines(&view, &[(&p, &wild)], &[(LineKind::Points, &dots)], exact()).unwrap();
-        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true, true]);
+        assert_eq!(seen(&runs[0]), [false, true, true]);
         let bad = HiddenLineOptions { tolerance: f64::NAN, ..Default::default() };
         assert_eq!(hidden_lines(&view, &[], &[], bad).unwrap_err().code(), "invalid-argument");
         assert!(View::new(&[0.0; 16], 10.0, 10.0).is_err());
@@ -1043,16 +1061,21 @@ mod tests {
         let (eye, t) = (DVec3::new(0.0, -5.0, 0.0), DVec3::ZERO);
         assert_eq!(name(View::looking(t, t, 1.0, 100.0, 100.0)), "eye");
         for fov in [0.0, -0.5, std::f64::consts::PI, f64::NAN] {
-            assert_eq!(name(View::looking(eye, t, fov, 100.0, 100.0)), "eye", "{fov}");
+            assert_eq!(name(View::looking(eye, t, fov, 100.0, 100.0)), "fovY", "{fov}");
         }
         assert!(View::looking(eye, t, 3.1, 100.0, 100.0).is_ok());
-        // as far as the coordinate limit, not farther (2·far·near = 2·distance² would overflow
-        // from 9.5e153 on)
-        let far = View::looking(DVec3::new(0.0, -1e150, 0.0), t, 1.0, 100.0, 100.0).unwrap();
+        // eye and target within the coordinate limit, 2e150 apart: the target mid-screen
+        // (2·far·near = 2·distance² would overflow from 9.5e153 on)
+        let far = View::looking(DVec3::new(0.0, -1e150, 0.0), DVec3::new(0.0, 1e150, 0.0), 1.0, 100.0, 100.0).unwrap();
         crate::assert_near!(far.project(DVec3::new(0.0, 1e150, 0.0)).unwrap(), DVec2::new(50.0, 50.0), 1e-12);
-        for y in [-1.000_000_1e150, -1.2e154, f64::NEG_INFINITY] {
-            assert_eq!(name(View::looking(DVec3::new(0.0, y, 0.0), t, 1.0, 100.0, 100.0)), "eye", "{y}");
+        for beyond in [DVec3::new(0.0, -1.000_000_1e150, 0.0), DVec3::new(1e300, 0.0, 0.0), DVec3::NEG_INFINITY] {
+            assert_eq!(name(View::looking(beyond, t, 1.0, 100.0, 100.0)), "eye", "{beyond}");
+            assert_eq!(name(View::looking(DVec3::X, beyond, 1.0, 100.0, 100.0)), "eye", "{beyond}");
         }
+        // as near as 1e−150, not nearer (2·far·near would no longer be a normal number)
+        let near = View::looking(DVec3::new(0.0, -1e-150, 0.0), t, 1.0, 100.0, 100.0).unwrap();
+        crate::assert_near!(near.project(DVec3::new(0.0, 1e-150, 0.0)).unwrap(), DVec2::new(50.0, 50.0), 1e-12);
+        assert_eq!(name(View::looking(DVec3::new(0.0, -0.999e-150, 0.0), t, 1.0, 100.0, 100.0)), "eye");
         let id: Vec<f64> = DMat4::IDENTITY.to_cols_array().to_vec();
         assert!(View::new(&id, 1e6, 1.0).is_ok());
         for (w, h, which) in
@@ -1307,14 +1330,15 @@ mod tests {
         assert!(clip_segment(&x_grows, DVec3::X, DVec3::Y).is_some());
     }
 
-    /// An occluder is left out when a corner is behind the eye, or its image is thinner than
-    /// 1e−12 of its longer side squared (area A, longer side L from corner 0: kept when
-    /// A > 1e−12 L²): a triangle far from the origin with A = 1e−11 L² is kept, whichever side
-    /// is longer; one with A = 1e−13 L² is not.
+    /// An occluder is left out when a corner is behind the eye, or its image is edge-on: with
+    /// A = |(b − a) × (c − a)| (twice its area) and L its longer side from a, kept when
+    /// A > [`HIDDEN_LINE_EDGE_ON`] L² (10⁻¹²): a triangle far from the origin with A = 10⁻¹¹ L² is
+    /// kept, whichever side is longer; one with A = 10⁻¹³ L² is not.
     #[test]
     fn occluders_leave_out_what_hides_nothing() {
         // clip (x, y, z, 1): the image of (x, y, z) is (x + 1, 1 − y)
         let flat = View::new(&DMat4::IDENTITY.to_cols_array(), 2.0, 2.0).unwrap();
+        assert_eq!(HIDDEN_LINE_EDGE_ON, 1e-12);
         let triangle = |c0: DVec2, d1: DVec2, d2: DVec2| [c0.extend(0.0), (c0 + d1).extend(0.0), (c0 + d2).extend(0.0)];
         let far = DVec2::splat(1000.0);
         let (long, short) = (DVec2::new(1.0, 0.0), DVec2::new(0.5, 1e-11));
@@ -1346,7 +1370,7 @@ mod tests {
             let lines = [(LineKind::Points, &on[..]), (LineKind::Segments, &up[..]), (LineKind::Segments, &down[..])];
             let runs = hidden_lines(&view, &[(&p, &idx)], &lines, options).unwrap();
             for r in &runs {
-                assert_eq!(r.iter().map(|r| r.visible).collect::<Vec<_>>(), [true], "τ = {tolerance}: {r:?}");
+                assert_eq!(seen(r), [true], "τ = {tolerance}: {r:?}");
             }
         }
         // from 100 above the origin (the eye's homogeneous w ≈ −1/2), a square at z = 60
@@ -1354,7 +1378,7 @@ mod tests {
         let lifted: Vec<DVec3> = p.iter().map(|q| *q + DVec3::new(0.0, 0.0, 60.0)).collect();
         let dots = [DVec3::new(0.0, 0.0, 59.0), DVec3::new(0.0, 0.0, 61.0)];
         let runs = hidden_lines(&view, &[(&lifted, &idx)], &[(LineKind::Points, &dots)], exact()).unwrap();
-        assert_eq!(runs[0].iter().map(|r| r.visible).collect::<Vec<_>>(), [false, true]);
+        assert_eq!(seen(&runs[0]), [false, true]);
     }
 
     /// How far the triangles across each edge bend away from a triangle's plane, against the
@@ -1368,7 +1392,8 @@ mod tests {
             (0..n * n).map(|k| DVec3::new((k % n) as f64, (k / n) as f64, random(&mut seed) - 0.5)).collect();
         p.push(DVec3::NAN);
         let mut idx = crate::grid_indices(n, n);
-        idx.extend([0, 1, (n * n + 7) as u32, (n * n + 1) as u32, (n * n + 1) as u32, 0]);
+        // a triangle with a NaN corner (across the edge 0–1 of the grid) and one naming no point
+        idx.extend([0, 1, (n * n) as u32, (n * n + 1) as u32, (n * n + 1) as u32, 0]);
         let triangles = idx.len() / 3;
         let mut pairwise = vec![0.0f64; triangles];
         let corners = |t: usize| [idx[3 * t], idx[3 * t + 1], idx[3 * t + 2]];
@@ -1411,9 +1436,9 @@ mod tests {
         assert_eq!(bend(&square, &idx), [0.0, 0.0]);
     }
 
-    /// The page camera: the near plane a hundredth of the distance from the eye to 1e−5 of it
-    /// (a far plane at ± near would move it by 1e−4); "up" is z until the view direction is
-    /// within 1e−9 (exactly, here) of z.
+    /// The page camera: the near plane at a hundredth of the distance (0.1 here), to ±5·10⁻⁶ (the
+    /// far plane's far − near in place of far + near would move it to 0.10001); "up" is z until
+    /// the view direction is within the sine [`CAMERA_UP_SINE`] of z (exactly, here).
     #[test]
     fn the_page_camera_near_plane_and_up_direction() {
         let eye = DVec3::new(0.0, -10.0, 0.0);
@@ -1422,7 +1447,7 @@ mod tests {
         assert!(v.project(eye + DVec3::new(0.0, 0.099_995, 0.0)).is_none());
         let square = |eye: DVec3| View::looking(eye, DVec3::ZERO, std::f64::consts::FRAC_PI_2, 400.0, 400.0).unwrap();
         let tilted = square(DVec3::new(1e-9, 0.0, 1.0));
-        assert_eq!(DVec3::new(1e-9, 0.0, 1.0).cross(DVec3::Z).length(), 1e-9);
+        assert_eq!(DVec3::new(1e-9, 0.0, 1.0).cross(DVec3::Z).length(), CAMERA_UP_SINE);
         // up is z: the view's right is the world's +y
         crate::assert_near!(tilted.project(DVec3::new(0.0, 0.5, 0.0)).unwrap(), DVec2::new(300.0, 200.0), 1e-6);
         // along z: up is y

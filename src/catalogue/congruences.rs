@@ -410,7 +410,8 @@ mod tests {
     /// What `new` and `checked_jet` refuse, each on its own: a NaN value (not infinite: the
     /// check is `not finite or too large`), a value just above the coordinate limit (the
     /// limit itself is allowed), an infinite derivative of a finite value, a direction that
-    /// vanishes at a point between the probes, and one that is tiny next to the largest;
+    /// vanishes at a point no probe meets (`checked_jet` takes any point), and one that is tiny
+    /// next to the largest;
     /// grids of 2 and 1000 rows or columns are allowed, 1001 is not.
     #[test]
     fn formula_checks_one_by_one() {

@@ -108,9 +108,10 @@ pub fn coupled(c: &LineCongruence, _k: usize) -> Result<(LineCongruence, SolveRe
 /// reproduces) costs one residual and no iteration. One coordinate at a time, the operator
 /// and the updates run over plain `f64` arrays, which the compiler turns into SIMD (f64x2).
 /// The solve runs on the grid scaled by a power of two to a largest coordinate in [1, 2):
-/// that scaling is exact, so the result is the same bit for bit, and no square in the solve
-/// under- or overflows whatever the data's size (at 10⁻¹⁵⁹ they did). Returns the most
-/// iterations taken.
+/// that scaling is exact, so the result is the same bit for bit, and the solve's squares and
+/// its convergence floor do not underflow however small the data (at 10⁻¹⁵⁹ they did). Only
+/// the new nodes are written back: the old ones stay bit for bit, even a coordinate that the
+/// scaling would have made subnormal. Returns the most iterations taken.
 fn solve_coordinates(grid: &mut [DVec3], rows: usize, cols: usize) -> Result<usize> {
     let op = Umbrella { rows, cols };
     let n = grid.len();
@@ -122,15 +123,25 @@ fn solve_coordinates(grid: &mut [DVec3], rows: usize, cols: usize) -> Result<usi
     for axis in 0..3 {
         x.iter_mut().zip(grid.iter()).for_each(|(s, p)| *s = p[axis] / unit);
         most = most.max(conjugate_gradients(&op, &mut x, floor)?);
-        grid.iter_mut().zip(&x).for_each(|(p, s)| p[axis] = *s * unit);
+        for (k, (p, s)) in grid.iter_mut().zip(&x).enumerate() {
+            if (k / cols) % 2 == 1 || (k % cols) % 2 == 1 {
+                p[axis] = *s * unit;
+            }
+        }
     }
     Ok(most)
 }
 
-/// The largest power of two 2ᵉ ≤ x for x > 0 (e within ±1000), 1 for x = 0.
+/// The largest power of two 2ᵉ ≤ x, read from x's exponent bits (exact), for finite x > 0;
+/// 1 for x = 0.
 fn power_of_two_below(x: f64) -> f64 {
-    if x > 0.0 {
-        2f64.powi(x.log2().floor().clamp(-1000.0, 1000.0) as i32)
+    const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
+    if x >= f64::MIN_POSITIVE {
+        f64::from_bits(x.to_bits() & EXPONENT)
+    } else if x > 0.0 {
+        // subnormal: 2⁵² x is normal, and dividing its power of two by 2⁵² is exact
+        let up = 2f64.powi(52);
+        f64::from_bits((x * up).to_bits() & EXPONENT) / up
     } else {
         1.0
     }
@@ -400,8 +411,8 @@ mod tests {
         }
     }
 
-    /// Moving any new endpoint of the coupled result by 10⁻⁴ along an axis raises the layered
-    /// energy (20)–(21), summed over k = 0 … 6.
+    /// Moving either end of any new line of the coupled result by 10⁻⁴ along an axis raises the
+    /// layered energy (20)–(21), summed over k = 0 … 6.
     fn minimises_the_layered_energy(c: &LineCongruence) {
         let (r, report) = coupled(c, 6).unwrap();
         assert!(report.iterations > 0);
@@ -422,18 +433,16 @@ mod tests {
             total
         };
         let e0 = energy(&r);
-        let (mut p, q) = (r.p(), r.q());
+        let (p, q) = (r.p(), r.q());
         let cols = r.cols();
         for k in (0..p.len()).filter(|k| (k / cols) % 2 == 1 || (k % cols) % 2 == 1) {
-            for axis in 0..3 {
-                for sign in [-1.0, 1.0] {
-                    let mut e = DVec3::ZERO;
-                    e[axis] = sign * 1e-4;
-                    p[k] += e;
-                    let moved = LineCongruence::from_points(r.rows(), r.cols(), &p, &q).unwrap();
-                    assert!(energy(&moved) > e0, "{}×{}: node {k} axis {axis}", c.rows(), c.cols());
-                    p[k] -= e;
-                }
+            for (end, axis, sign) in
+                (0..2).flat_map(|end| (0..3).flat_map(move |axis| [(end, axis, -1.0), (end, axis, 1.0)]))
+            {
+                let (mut p, mut q) = (p.clone(), q.clone());
+                [&mut p, &mut q][end][k][axis] += sign * 1e-4;
+                let moved = LineCongruence::from_points(r.rows(), r.cols(), &p, &q).unwrap();
+                assert!(energy(&moved) > e0, "{}×{}: node {k}, end {end}, axis {axis}", c.rows(), c.cols());
             }
         }
     }
@@ -468,7 +477,7 @@ mod tests {
         let op = Umbrella { rows, cols };
         let grid = start.p();
         let n = grid.len();
-        let floor = (SOLVE_TOLERANCE * 10.0).powi(2) * n as f64;
+        let floor = convergence_floor(10.0, n);
         let iterations: Vec<usize> = (0..3)
             .map(|axis| {
                 let mut x: Vec<f64> = grid.iter().map(|p| p[axis]).collect();
@@ -506,15 +515,28 @@ mod tests {
         assert_eq!(SOLVE_TOLERANCE, 1e-13);
         let floor = convergence_floor(8.0, 4);
         assert!((floor / 2.56e-24 - 1.0).abs() < 1e-14, "{floor:e}");
-        for (x, below) in [(1.0, 1.0), (1.5, 1.0), (0.75, 0.5), (1e-159, 2f64.powi(-529)), (3e120, 2f64.powi(400))] {
+        let just_below = |x: f64| f64::from_bits(x.to_bits() - 1);
+        for (x, below) in [
+            (1.0, 1.0),
+            (1.5, 1.0),
+            (0.75, 0.5),
+            (1e-159, 2f64.powi(-529)),
+            (3e120, 2f64.powi(400)),
+            (just_below(2f64.powi(400)), 2f64.powi(399)),
+            (f64::MAX, 2f64.powi(1023)),
+            (f64::MIN_POSITIVE, f64::MIN_POSITIVE),
+            (just_below(f64::MIN_POSITIVE), f64::from_bits(1 << 51)),
+            (3e-320, f64::from_bits(1 << 12)),
+            (5e-324, 5e-324),
+        ] {
             assert_eq!(power_of_two_below(x), below, "{x:e}");
         }
         assert_eq!(power_of_two_below(0.0), 1.0);
-        assert_eq!(power_of_two_below(1e-310), 2f64.powi(-1000));
     }
 
     /// The coupled scheme commutes with scaling by powers of two, bit for bit, also where the
-    /// squares of its solve would under- or overflow unscaled (2⁻⁵²⁸ ≈ 10⁻¹⁵⁹).
+    /// squares of its solve would underflow unscaled (2⁻⁵²⁸ ≈ 10⁻¹⁵⁹); old lines are kept bit
+    /// for bit, even a coordinate of 5·10⁻³²⁴ beside ones of 4.
     #[test]
     fn coupled_commutes_with_scaling_by_powers_of_two() {
         let c = congruence(4, 5, wavy);
@@ -526,5 +548,11 @@ mod tests {
             assert_eq!(rs.p(), times(r.p(), s), "{s:e}");
             assert_eq!(rs.q(), times(r.q(), s), "{s:e}");
         }
+        let (mut p, q) = (c.p(), c.q());
+        p[6].x = 5e-324;
+        let tiny = LineCongruence::from_points(4, 5, &p, &q).unwrap();
+        let (refined, _) = coupled(&tiny, 3).unwrap();
+        assert_eq!(refined.line(2, 2), tiny.line(1, 1));
+        assert_eq!(refined.line(2, 2).a.x, 5e-324);
     }
 }
