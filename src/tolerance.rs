@@ -256,6 +256,14 @@ pub mod test {
     /// [`KERNEL_ANGLE_ULPS`], and the division rounds once more); (δ_{i−1,i} + δ_{i,i+1})/2
     /// within as many ulp of the larger term.
     pub const KERNEL_DELTA_ULPS: u64 = 3;
+
+    /// Reproducible pseudo-random numbers in [0, 1) for the unit tests: a 64-bit linear
+    /// congruential generator (Knuth's MMIX constants), the top 53 bits.
+    #[cfg(test)]
+    pub fn uniform(seed: &mut u64) -> f64 {
+        *seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (*seed >> 11) as f64 / (1u64 << 53) as f64
+    }
 }
 
 /// Asserts `|a − b| ≤ tol · max(1, |a|, |b|)` for numbers or `DVec3`s, with a useful message;

@@ -809,6 +809,7 @@ pub fn transformed(points: &[DVec3], model: Option<&DMat4>) -> Vec<DVec3> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tolerance::test::uniform;
 
     /// The page's camera: perspective (35°) looking from `eye` at `target`, z up unless looking
     /// along z, on a 640 × 420 viewport.
@@ -825,6 +826,14 @@ mod tests {
             DVec3::new(-1.0, 1.0, 0.0),
         ];
         (p, vec![0, 1, 2, 0, 2, 3])
+    }
+
+    /// The name of the refused parameter.
+    fn refused<T: std::fmt::Debug>(r: Result<T>) -> &'static str {
+        match r {
+            Err(Error::InvalidParameter { name, .. }) => name,
+            other => panic!("expected a refusal, got {other:?}"),
+        }
     }
 
     /// The visibility of each run.
@@ -1054,14 +1063,10 @@ mod tests {
 
     #[test]
     fn views_are_refused_by_name_at_their_bounds() {
-        let name = |r: Result<View>| match r {
-            Err(Error::InvalidParameter { name, .. }) => name,
-            other => panic!("expected a refusal, got {other:?}"),
-        };
         let (eye, t) = (DVec3::new(0.0, -5.0, 0.0), DVec3::ZERO);
-        assert_eq!(name(View::looking(t, t, 1.0, 100.0, 100.0)), "eye");
+        assert_eq!(refused(View::looking(t, t, 1.0, 100.0, 100.0)), "eye");
         for fov in [0.0, -0.5, std::f64::consts::PI, f64::NAN] {
-            assert_eq!(name(View::looking(eye, t, fov, 100.0, 100.0)), "fovY", "{fov}");
+            assert_eq!(refused(View::looking(eye, t, fov, 100.0, 100.0)), "fovY", "{fov}");
         }
         assert!(View::looking(eye, t, 3.1, 100.0, 100.0).is_ok());
         // eye and target within the coordinate limit, 2e150 apart: the target mid-screen
@@ -1069,33 +1074,25 @@ mod tests {
         let far = View::looking(DVec3::new(0.0, -1e150, 0.0), DVec3::new(0.0, 1e150, 0.0), 1.0, 100.0, 100.0).unwrap();
         crate::assert_near!(far.project(DVec3::new(0.0, 1e150, 0.0)).unwrap(), DVec2::new(50.0, 50.0), 1e-12);
         for beyond in [DVec3::new(0.0, -1.000_000_1e150, 0.0), DVec3::new(1e300, 0.0, 0.0), DVec3::NEG_INFINITY] {
-            assert_eq!(name(View::looking(beyond, t, 1.0, 100.0, 100.0)), "eye", "{beyond}");
-            assert_eq!(name(View::looking(DVec3::X, beyond, 1.0, 100.0, 100.0)), "eye", "{beyond}");
+            assert_eq!(refused(View::looking(beyond, t, 1.0, 100.0, 100.0)), "eye", "{beyond}");
+            assert_eq!(refused(View::looking(DVec3::X, beyond, 1.0, 100.0, 100.0)), "eye", "{beyond}");
         }
         // as near as 1e−150, not nearer (2·far·near would no longer be a normal number)
         let near = View::looking(DVec3::new(0.0, -1e-150, 0.0), t, 1.0, 100.0, 100.0).unwrap();
         crate::assert_near!(near.project(DVec3::new(0.0, 1e-150, 0.0)).unwrap(), DVec2::new(50.0, 50.0), 1e-12);
-        assert_eq!(name(View::looking(DVec3::new(0.0, -0.999e-150, 0.0), t, 1.0, 100.0, 100.0)), "eye");
+        assert_eq!(refused(View::looking(DVec3::new(0.0, -0.999e-150, 0.0), t, 1.0, 100.0, 100.0)), "eye");
         let id: Vec<f64> = DMat4::IDENTITY.to_cols_array().to_vec();
         assert!(View::new(&id, 1e6, 1.0).is_ok());
         for (w, h, which) in
             [(0.0, 1.0, "width"), (1e6 + 1.0, 1.0, "width"), (1.0, -1.0, "height"), (1.0, f64::NAN, "height")]
         {
-            assert_eq!(name(View::new(&id, w, h)), which);
+            assert_eq!(refused(View::new(&id, w, h)), which);
         }
-        assert_eq!(name(View::new(&id[..15], 1.0, 1.0)), "viewProj");
+        assert_eq!(refused(View::new(&id[..15], 1.0, 1.0)), "viewProj");
         let mut nan = id.clone();
         nan[5] = f64::INFINITY;
-        assert_eq!(name(View::new(&nan, 1.0, 1.0)), "viewProj");
-        assert_eq!(name(View::new(&[0.0; 16], 1.0, 1.0)), "viewProj");
-    }
-
-    /// Reproducible pseudo-random numbers in [0, 1) (xorshift64).
-    fn random(seed: &mut u64) -> f64 {
-        *seed ^= *seed << 13;
-        *seed ^= *seed >> 7;
-        *seed ^= *seed << 17;
-        (*seed >> 11) as f64 / (1u64 << 53) as f64
+        assert_eq!(refused(View::new(&nan, 1.0, 1.0)), "viewProj");
+        assert_eq!(refused(View::new(&[0.0; 16], 1.0, 1.0)), "viewProj");
     }
 
     /// A screen grid of `cols` × `rows` cells from `origin`, each holding one item, its own
@@ -1163,7 +1160,7 @@ mod tests {
         assert_eq!(scene.cell_of(DVec2::new(f64::NAN, 0.0)), (0, 4));
         let mut seed = 0x9e37_79b9_7f4a_7c15u64;
         for _ in 0..2000 {
-            let mut point = || DVec2::new(-500.0 + 1300.0 * random(&mut seed), -400.0 + 1000.0 * random(&mut seed));
+            let mut point = || DVec2::new(-500.0 + 1300.0 * uniform(&mut seed), -400.0 + 1000.0 * uniform(&mut seed));
             let (a, b) = (point(), point());
             let vertical = DVec2::new(a.x, b.y);
             for (a, b) in [(a, b), (a, vertical), (b, b)] {
@@ -1246,11 +1243,10 @@ mod tests {
             (0.5, -1.0, "minPiece"),
             (0.5, f64::NAN, "minPiece"),
         ] {
-            match with(tolerance, min_piece) {
-                Err(Error::InvalidParameter { name, .. }) => assert_eq!(name, which, "{tolerance} {min_piece}"),
-                other => panic!("{tolerance} {min_piece}: expected a refusal, got {other:?}"),
-            }
+            assert_eq!(refused(with(tolerance, min_piece)), which, "{tolerance} {min_piece}");
         }
+        let e = with(0.5, 1000.5).unwrap_err().to_string();
+        assert!(e.contains("minPiece must be a number in [0, 1000], got 1000.5"), "{e}");
         let (p, _) = square();
         let at_most_10 = |idx: &[u32], points: &[DVec3]| {
             hidden_lines_at_most(&view, &[(&p, idx)], &[(LineKind::Points, points)], exact(), 10)
@@ -1389,7 +1385,7 @@ mod tests {
         let n = 5;
         let mut seed = 7u64;
         let mut p: Vec<DVec3> =
-            (0..n * n).map(|k| DVec3::new((k % n) as f64, (k / n) as f64, random(&mut seed) - 0.5)).collect();
+            (0..n * n).map(|k| DVec3::new((k % n) as f64, (k / n) as f64, uniform(&mut seed) - 0.5)).collect();
         p.push(DVec3::NAN);
         let mut idx = crate::grid_indices(n, n);
         // a triangle with a NaN corner (across the edge 0–1 of the grid) and one naming no point

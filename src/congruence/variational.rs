@@ -326,10 +326,7 @@ mod tests {
     #[test]
     fn umbrella_and_its_transpose_are_adjoint_and_match_the_definition() {
         let mut seed = 7u64;
-        let mut rnd = move || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
-        };
+        let mut rnd = move || crate::tolerance::test::uniform(&mut seed) - 0.5;
         // every size from 3 × 3 to 12 × 12 (5 columns and 7 rows or more once scattered a
         // node of the band's middle column twice)
         for (r, c) in (3..=12).flat_map(|r| (3..=12).map(move |c| (r, c))) {

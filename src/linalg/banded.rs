@@ -105,10 +105,7 @@ mod tests {
     /// A random SPD banded matrix: B Bᵀ for banded B, plus a little diagonal.
     fn random(n: usize, p: usize, seed: u64) -> (SymmetricBanded, DMatrix<f64>) {
         let mut s = seed;
-        let mut rnd = || {
-            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut rnd = || crate::tolerance::test::uniform(&mut s) - 0.5;
         let half = p / 2;
         let b = DMatrix::from_fn(n, n, |i, j| if i >= j && i - j <= half { rnd() } else { 0.0 });
         let a = &b * b.transpose() + DMatrix::identity(n, n) * 0.1;
