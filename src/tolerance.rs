@@ -124,6 +124,7 @@ pub const MAX_MESH_VERTICES: usize = 2 * MAX_RULINGS;
 // rulings after the most subdivision steps, a mesh of the most rulings' endpoints.
 const _: () = assert!(MAX_STRIDE >= 1 << MAX_SUBDIVISION_STEPS);
 const _: () = assert!(MAX_MESH_VERTICES >= 2 * MAX_RULINGS);
+const _: () = assert!(MAX_JSON_NUMBERS >= 6 * MAX_RULINGS);
 
 /// Focal geometry: a line is parabolic (one double focal point) when the discriminant of (F3)
 /// is within this fraction of b² + 4|ac|: exact data only; a grid of a parabolic congruence
