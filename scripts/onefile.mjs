@@ -14,7 +14,7 @@ import { createHash } from 'node:crypto';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { fileURLToPath } from 'node:url';
-import { BODY, SCRIPT_ID, STATE_ID, stateJson } from '../www/export/onefile.js';
+import { BODY, SCRIPT_ID, STATE_ID, stateJson } from '../www/page/onefile.js';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 /** @param {string} p */
@@ -61,9 +61,9 @@ async function bundle(entry, format, plugin, base = 'document.baseURI') {
 const sha = (text) => `'sha256-${createHash('sha256').update(text, 'utf8').digest('base64')}'`;
 const embed = await bundle('scripts/onefile/entry.js', 'iife', inline);
 const page = embed.replaceAll('</script', '<\\/script');
-const css = readFileSync(path('www/style.css'), 'utf8');
+const css = readFileSync(path('www/page/style.css'), 'utf8');
 // scripts off (an iframe sandbox without allow-scripts): the <noscript> sentence, no endless "Loading"
-const noscript = readFileSync(path('www/noscript.css'), 'utf8');
+const noscript = readFileSync(path('www/page/noscript.css'), 'utf8');
 const icon = `data:image/svg+xml,${encodeURIComponent(readFileSync(path('www/favicon.svg'), 'utf8'))}`;
 const csp = [
   "default-src 'none'",

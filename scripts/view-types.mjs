@@ -1,6 +1,6 @@
 // The declarations of `ruledlab/view`, generated from the JSDoc of www/ (the scene contract in
 // www/scene.js, the Stage, the <ruled-view> element, …) by tsc --emitDeclarationOnly into
-// pkg/view/ (pkg/view/www/view.d.ts is the entry; package.json's "./view" types point there).
+// pkg/view/ (pkg/view/www/index.d.ts is the entry; package.json's "./view" types point there).
 // Written once, in the JavaScript: nothing here is typed by hand. The core's classes come from
 // pkg/ruledlab.d.ts itself (imports of it are pointed there), so `ruledlab` and
 // `ruledlab/view` share one RuledSurface type.
@@ -83,12 +83,12 @@ for (const file of walk(OUT)) {
   );
   writeFileSync(file, text);
 }
-const entry = join(OUT, 'www', 'view.d.ts');
+const entry = join(OUT, 'www', 'index.d.ts');
 if (!statSync(entry, { throwIfNoEntry: false }))
   throw new Error(`view-types: ${relative(ROOT, entry)} was not generated`);
 // what JSDoc cannot say: importing ruledlab/view defines the element (document.createElement
 // and querySelector know its type)
-// and the typedefs of view.js that name a type of another module re-export that type itself,
+// and the typedefs of index.js that name a type of another module re-export that type itself,
 // so the reference shows it with its documentation
 const aliases = readFileSync(entry, 'utf8').replace(
   /^export type (\w+) = import\("([^"]+)"\)\.\1;$/gm,

@@ -30,14 +30,14 @@ const ASSETS = join(OUT, 'assets');
  * the first scene requests none of them. */
 const LAZY = {
   'the other language': ['www/i18n/de.js'],
-  'the Share dialog': ['www/share.js'],
+  'the Share dialog': ['www/page/share.js'],
   'the figure exports': ['www/export/svg.js', 'www/export/tikz.js', 'www/export/png.js'],
-  'the exercise author': ['www/task/author.js'],
+  'the exercise author': ['www/page/author.js'],
 };
 /** `new URL(…, import.meta.url)` targets the bundles may keep as they are, and why. */
 const UNUSED = {
   // share.js's snippet script when no manifest is served; the site serves dist/manifest.json
-  'www/view.js': 'the site serves dist/manifest.json',
+  'www/index.js': 'the site serves dist/manifest.json',
 };
 /** Files (of the site) not worth compressing. */
 const BINARY = new Set(['.png', '.jpg', '.ico', '.gz', '.br']);
@@ -130,7 +130,7 @@ urls.set(join(ROOT, 'www/worker.js'), `./${basename(workerFile)}`);
 
 const page = await build({
   ...common,
-  entryPoints: { main: join(ROOT, 'www/main.js') },
+  entryPoints: { main: join(ROOT, 'www/page/main.js') },
   splitting: true,
   outdir: ASSETS,
   entryNames: '[name]-[hash]',
@@ -153,7 +153,7 @@ const initial = closure(entry);
 const chunkOf = (/** @type {string} */ source) =>
   Object.keys(chunks).find((p) => Object.keys(chunks[p].inputs).includes(source));
 
-const boot = await build({ ...common, entryPoints: [join(ROOT, 'www/boot.js')], format: 'iife', outfile: 'b.js' });
+const boot = await build({ ...common, entryPoints: [join(ROOT, 'www/page/boot.js')], format: 'iife', outfile: 'b.js' });
 const bootFile = `assets/boot-${hash(outputs(boot)[0].contents)}.js`;
 put(bootFile, outputs(boot)[0].contents);
 
@@ -161,11 +161,11 @@ put(bootFile, outputs(boot)[0].contents);
 // and the chunks the entry imports announced at once (modulepreload: fetched in parallel
 // instead of one import level after the other)
 const references = {
-  'www/style.css': hashed('www/style.css'),
-  'www/noscript.css': hashed('www/noscript.css'),
+  'www/page/style.css': hashed('www/page/style.css'),
+  'www/page/noscript.css': hashed('www/page/noscript.css'),
   'www/favicon.svg': hashed('www/favicon.svg'),
-  'www/boot.js': bootFile,
-  'www/main.js': entry,
+  'www/page/boot.js': bootFile,
+  'www/page/main.js': entry,
 };
 let html = readFileSync(join(ROOT, 'index.html'), 'utf8');
 for (const [from, to] of Object.entries(references)) {
@@ -234,7 +234,7 @@ const manifest = {
 };
 writeFileSync(join(ROOT, 'dist/web-manifest.json'), `${JSON.stringify(manifest, null, 2)}\n`);
 const kib = (/** @type {number} */ n) => `${(n / 1024).toFixed(0)} KiB`;
-const first = [...initial, wasm, references['www/style.css']].map(size);
+const first = [...initial, wasm, references['www/page/style.css']].map(size);
 console.log(
   `build: dist/web/ (${written.size} files, ${compressed} compressed now): the first scene loads ${kib(first.reduce((s, f) => s + f.bytes, 0))}, ${kib(first.reduce((s, f) => s + (f.brotli ?? f.bytes), 0))} with brotli (JavaScript ${kib(initial.map(size).reduce((s, f) => s + (f.brotli ?? f.bytes), 0))})`,
 );

@@ -18,7 +18,7 @@
 // rulings or congruence in the "data" scene. `height` sizes the element (pixels or a CSS length,
 // without an inline style a strict Content-Security-Policy would refuse). `handles()` lists every handle with its position
 // in the element. `task` shows an exercise (a built-in one's id, or the page's "j." link value;
-// README, "Exercises"): `task-check` and `task-solved` report how it stands (also posted to the
+// the book's "Exercises"): `task-check` and `task-solved` report how it stands (also posted to the
 // parent window of a frame). Events: `input` during a drag and `change` at its end (detail: { scene, data,
 // readouts }), `scene-change` (detail: { scene, params }), `view-change` (detail: the
 // camera, during a move), `camera-change` (detail: { camera, yaw, pitch, distance, target },
@@ -33,13 +33,8 @@ import { readCamera, writeCamera } from './state.js';
 import { decodeInput, encodeInput, fitsSets, linkableInput } from './edit/input.js';
 import { toScreen } from './edit/geometry.js';
 import { plainRich } from './ui/richtext.js';
-import { builtInTask } from './task/builtin.js';
-import { taskFromLink } from './task/format.js';
-import { fitTask } from './task/check.js';
 import { postToParent } from './task/message.js';
-import { taskErrorText } from './task/words.js';
-import { encodeInput as encodeEdit } from './edit/input.js';
-import { withChoices } from './scene.js';
+import { openView } from './stage/open.js';
 import { start } from './core.js';
 import { translator, pickLanguage } from './i18n/index.js';
 import { startFailure } from './ui/errors.js';
@@ -76,7 +71,7 @@ let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
  *
  * @typedef {object} RuledViewErrorDetail   `error`: the message in the element's language
  * @property {string} message
- * @property {string | null} code           the error's stable code (README, "Errors")
+ * @property {string | null} code           the error’s stable code (the book’s chapter "Errors")
  * @property {object | null} details        the core's details (reason, args, option, …)
  *
  * @typedef {object} EditDetail   `input` (during a drag) and `change` (at its end): what the reader made
@@ -374,7 +369,7 @@ export class RuledView extends HTMLElement {
         postToParent(type, report, {
           scene: stage?.scene?.id ?? '',
           params: { ...(stage?.params ?? {}) },
-          input: input ? encodeEdit(input) : null,
+          input: input ? encodeInput(input) : null,
         });
       },
       onChange: ({ reason, ended }) => {
@@ -496,31 +491,18 @@ export class RuledView extends HTMLElement {
           const input = this.hasAttribute('input') ? decodeInput(this.getAttribute('input') ?? '') : null;
           if (this.hasAttribute('input') && !input) notes.push({ key: 'input', note: 'element.note.badInput' });
           // an exercise: its scene and start (the element's scene and params are its own then)
-          const taskValue = this.getAttribute('task');
-          if (taskValue) {
-            try {
-              const task = taskFromLink(taskValue, builtInTask);
-              const taskScene = fitTask(task, SCENES, (params, edit) => {
-                const s = /** @type {import('./scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
-                return s.create(withChoices(s, { ...task.params, ...params }), {
-                  t: stage.i18n.t,
-                  format: stage.i18n.format,
-                  lang: stage.i18n.lang,
-                  ...(edit ? { input: edit } : {}),
-                });
-              });
-              return stage.openTask(task, taskScene, { camera, notes }).then(() => this.refused(notes));
-            } catch (e) {
-              notes.push({ key: 'task', note: 'element.note.badTask', vars: { reason: taskErrorText(e, stage.i18n) } });
-            }
-          }
-          return stage
-            .open(
-              scene,
-              { ...defaults(scene), ...params },
-              { data: this._data, notes, autoplay: this.autoplay, paper, camera, input },
-            )
-            .then(() => this.refused(notes));
+          return openView(stage, {
+            scene,
+            params: { ...defaults(scene), ...params },
+            task: this.getAttribute('task') || null,
+            data: this._data,
+            notes,
+            autoplay: this.autoplay,
+            paper,
+            camera,
+            input,
+            source: 'element',
+          }).then((shown) => this.refused(shown));
         },
         (e) => {
           // the core did not start: why, in the element's language

@@ -4,9 +4,9 @@
 // starts the page there (the file's state block marks it). One script for both, so the one-file
 // page can hand out the exact embed script it runs (Share → "Download ruledlab-embed.js").
 import './configure.js';
-import '../../www/view.js';
-import { startPage, showStartFailure } from '../../www/app.js';
-import { isOneFilePage, SCRIPT_ID } from '../../www/export/onefile.js';
+import '../../www/index.js';
+import { startPage, showStartFailure } from '../../www/page/app.js';
+import { isOneFilePage, SCRIPT_ID } from '../../www/page/onefile.js';
 
 // the text of this script when it is inline (the one-file page, where it is a module at the end
 // of the body: currentScript is null there), read while it runs

@@ -9,7 +9,7 @@ import assert from 'node:assert/strict';
 import './load.mjs';
 import { SCENES } from '../../www/scenes/index.js';
 import { STYLES } from '../../www/theme.js';
-import { paint } from '../../www/export/figure.js';
+import { paint } from '../../www/export/projection.js';
 import { texText, texLabel } from '../../www/export/tikz.js';
 import { translator, LANGUAGE_CODES } from '../../www/i18n/index.js';
 import { lab } from '../page/colour.mjs';

@@ -35,7 +35,7 @@ test('every figure and scene in <ruled-view>, cold, from the module ruledlab/vie
     (elements) =>
       site.write(
         `module-${++n}.html`,
-        hostPage(elements, `<script type="module" src="${session.url}www/view.js"></script>`),
+        hostPage(elements, `<script type="module" src="${session.url}www/index.js"></script>`),
       ),
     ours,
   );

@@ -252,7 +252,7 @@ test('with a mouse, on every scene of the page and in the element: every target 
   }
   // and <ruled-view controls> beside the page's own view
   await page.evaluate(async () => {
-    await import('/www/view.js');
+    await import('/www/index.js');
     const v = Object.assign(document.createElement('ruled-view'), { id: 'mouse' });
     v.setAttribute('paper', 'fig15');
     v.setAttribute('controls', '');

@@ -75,7 +75,7 @@ test('the language switch changes the page and the link; <ruled-view lang="de"> 
   assert.match(await page.locator('.rl-panel h2').first().innerText(), /Variationelle Streifenunterteilung/);
   assert.match(page.url(), /lang=de/);
   await page.evaluate(async () => {
-    await import('/www/view.js');
+    await import('/www/index.js');
     const v = document.createElement('ruled-view');
     v.setAttribute('scene', 'isometry');
     v.setAttribute('lang', 'de');
@@ -283,7 +283,7 @@ test('every error path of the German page speaks German: formulas, imports, link
   }
   // the element's errors
   await page.evaluate(async () => {
-    await import('/www/view.js');
+    await import('/www/index.js');
     for (const [k, v] of [
       ['scene', 'nope'],
       ['paper', 'fig99'],

@@ -27,8 +27,9 @@ before(async () => {
   tarball = join(dir, out[0].filename);
   const files = out[0].files.map((f) => f.path);
   for (const need of [
+    'www/index.js',
     'www/view.js',
-    'pkg/view/www/view.d.ts',
+    'pkg/view/www/index.d.ts',
     'pkg/ruledlab.d.ts',
     'www/ruled-view.js',
     'www/worker.js',
@@ -79,7 +80,7 @@ test('npm pack → installed in a fresh app → <ruled-view controls> from ruled
   writeFileSync(
     join(dir, 'index.html'),
     `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>app</title>
-<script type="importmap">{ "imports": { "ruledlab/view": "./node_modules/ruledlab/www/view.js" } }</script>
+<script type="importmap">{ "imports": { "ruledlab/view": "./node_modules/ruledlab/www/index.js" } }</script>
 <script type="module">import 'ruledlab/view';</script>
 <style>ruled-view { height: 520px; }</style></head>
 <body><ruled-view scene="striction" controls></ruled-view></body></html>`,
@@ -191,7 +192,7 @@ test('every figure and scene in <ruled-view>, cold, from the installed tarball (
         writeFileSync(
           join(dir, name),
           `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>cold</title>
-<script type="importmap">{ "imports": { "ruledlab/view": "./node_modules/ruledlab/www/view.js" } }</script>
+<script type="importmap">{ "imports": { "ruledlab/view": "./node_modules/ruledlab/www/index.js" } }</script>
 <script type="module">import 'ruledlab/view';</script></head><body>${elements}</body></html>`,
         );
         return url + name;

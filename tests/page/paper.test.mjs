@@ -115,7 +115,7 @@ test('the card in German, and <ruled-view paper="fig15">', async () => {
   assert.match(card, /Über die Arbeit hinaus/);
   assert.match(await page.locator('.rl-claims').innerText(), /Bildunterschrift/);
   await page.evaluate(async () => {
-    await import('./www/view.js');
+    await import('./www/index.js');
     const view = document.createElement('ruled-view');
     view.setAttribute('paper', 'fig15');
     view.setAttribute('controls', '');

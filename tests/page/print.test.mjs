@@ -31,7 +31,7 @@ async function exportAll() {
   const { page, problems } = await session.open('examples/web-component.html', { wait: false });
   const exports = /** @type {Export[]} */ (
     await page.evaluate(async () => {
-      const { SCENES } = await import(new URL('../www/view.js', location.href).href);
+      const { SCENES } = await import(new URL('../www/index.js', location.href).href);
       const out = [];
       for (const scene of SCENES) {
         const allOn = scene.params

@@ -4,7 +4,7 @@
 // and dots over everything — visibility computed by the core (figure.js) — with exact curves on
 // a paper-coloured halo; labels as <text> with subscripts as <tspan>s, an optional legend and
 // title; in colour, or in black and white (grey levels, widths, dashes and hatching).
-import { figureOf, paint, hiddenLook, facetColour, hatchLines, hex, HATCH, PAPER } from './figure.js';
+import { figureOf, paint, hiddenLook, facetColour, hatchLines, hex, HATCH, PAPER } from './projection.js';
 import { parseRich } from '../ui/richtext.js';
 import { SVG, svgMaker } from '../svg-dom.js';
 
@@ -64,7 +64,7 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
   // surfaces: light flat facets back to front, each with its hatching in black and white
   const surfaces = el('g', { class: 'surfaces' });
   for (const facet of fig.facets) {
-    const look = /** @type {import('./figure.js').AreaLook} */ (paint(facet.style, bw));
+    const look = /** @type {import('./projection.js').AreaLook} */ (paint(facet.style, bw));
     const fill = hex(facetColour(look, facet, bw));
     const attrs = { points: pts(facet.points), fill, stroke: fill, 'stroke-width': 0.4 };
     if (look.opacity < 1) Object.assign(attrs, { 'fill-opacity': look.opacity, 'stroke-opacity': look.opacity });
@@ -114,7 +114,7 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
     const runs = set.runs.filter((r) => r.visible);
     if (!runs.length) return;
     if (set.kind === 'points') {
-      const look = /** @type {import('./figure.js').PointLook} */ (paint(set.style, bw));
+      const look = /** @type {import('./projection.js').PointLook} */ (paint(set.style, bw));
       const g = el('g', { class: `dots set-${k} ${set.style} visible` });
       for (const r of runs) {
         const attrs = {
@@ -129,7 +129,7 @@ export function exportSvg(stage, { bw = false, legend = true, title = false, lab
       seen.append(g);
       return;
     }
-    const look = /** @type {import('./figure.js').LineLook} */ (paint(set.style, bw));
+    const look = /** @type {import('./projection.js').LineLook} */ (paint(set.style, bw));
     if (look.halo) {
       const halo = el('g', {
         class: `halo set-${k} ${set.style}`,

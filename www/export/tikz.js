@@ -5,7 +5,7 @@
 // ($R_{i}$, $d_{1}$, $\varphi$), other letters as TeX accents (\"u), so it compiles with pdflatex,
 // lualatex and xelatex with nothing but \usepackage{tikz}. Deterministic for a given view, so a
 // known scene's export can be checked exactly.
-import { figureOf, paint, hiddenLook, facetColour, hatchLines, HATCH } from './figure.js';
+import { figureOf, paint, hiddenLook, facetColour, hatchLines, HATCH } from './projection.js';
 import { parseRich } from '../ui/richtext.js';
 
 /** Letters and signs that are symbols: written in math mode. */
@@ -259,7 +259,7 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
     group = { head: '', paths: [] };
   };
   for (const facet of fig.facets) {
-    const look = /** @type {import('./figure.js').AreaLook} */ (paint(facet.style, bw));
+    const look = /** @type {import('./projection.js').AreaLook} */ (paint(facet.style, bw));
     const fill = colour(facetColour(look, facet, bw));
     const head = `\\pgfsetfillcolor{${fill}}${look.opacity < 1 ? `\\pgfsetfillopacity{${n(look.opacity)}}` : ''}`;
     if (group.head !== head) {
@@ -298,7 +298,7 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
     const runs = set.runs.filter((r) => r.visible);
     if (!runs.length) continue;
     if (set.kind === 'points') {
-      const look = /** @type {import('./figure.js').PointLook} */ (paint(set.style, bw));
+      const look = /** @type {import('./projection.js').PointLook} */ (paint(set.style, bw));
       for (const r of runs) {
         const c = `${at(r.points[0], r.points[1])} circle (${pt(look.radius)})`;
         body.push(
@@ -309,7 +309,7 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
       }
       continue;
     }
-    const look = /** @type {import('./figure.js').LineLook} */ (paint(set.style, bw));
+    const look = /** @type {import('./projection.js').LineLook} */ (paint(set.style, bw));
     const lines = runs.map((r) => path(r.points)).join(' ');
     if (look.halo) body.push(`\\draw[white, line width=${pt(look.width + 3)}] ${lines};`);
     const opacity = look.opacity < 1 ? `, draw opacity=${n(look.opacity)}` : '';

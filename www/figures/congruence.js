@@ -5,7 +5,7 @@
 // congruence" share.
 import { gridIndices } from '../../pkg/ruledlab.js';
 import { bounds } from '../scene.js';
-import { butterflyStencil } from '../stencil.js';
+import { butterflyStencil } from '../diagrams/butterfly.js';
 import { ROUNDING } from '../limits.js';
 
 /** The schemes: menu value → subdivide options. */

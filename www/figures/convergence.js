@@ -2,7 +2,7 @@
 // u against the exact ones, and the measured orders plotted log-log. Drawn by the convergence
 // scene and "Your surface".
 import { bounds, f32 } from '../scene.js';
-import { logLogPlot } from '../plot.js';
+import { logLogPlot } from '../diagrams/plot.js';
 import { EXACT_ZERO } from '../limits.js';
 
 const SERIES = [

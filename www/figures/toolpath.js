@@ -6,7 +6,7 @@
 // module only asks for them and draws the plot with the DOM.
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { svgMaker, svgFigure } from '../svg-dom.js';
-import { SMALLEST_TEXT, marker } from '../plot.js';
+import { SMALLEST_TEXT, marker } from '../diagrams/plot.js';
 
 /** The machines of the post (the core's presets). */
 export const MACHINES = /** @type {const} */ (['table-table-ac', 'table-table-bc', 'head-table-bc', 'head-head-ac']);

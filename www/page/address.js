@@ -5,7 +5,7 @@
 // page starts from the state stored in it.
 import { writeState } from '../state.js';
 import { writeHistory } from '../platform.js';
-import { storedHash } from '../export/onefile.js';
+import { storedHash } from './onefile.js';
 
 /** Least time between two writes of the address while a control moves (ms). */
 const WRITE_EVERY = 200;

@@ -2,7 +2,7 @@
 // core's importSegments, errors said at the paste box), and the menu of exports of what is
 // shown — drawings (SVG, TikZ, PNG, the plot) and data files (written by the core).
 import { importSegments, importToolPoses, detectImport } from '../../pkg/ruledlab.js';
-import { download } from '../stage.js';
+import { download } from '../ui/download.js';
 import { linkable } from '../state.js';
 import { describeError } from '../ui/errors.js';
 import { dataFile } from '../export/files.js';
@@ -60,7 +60,7 @@ export function parseStored(/** @type {string} */ text) {
  *   (the promise says why it could not, or null)
  */
 export function dataPanel(stage, { i18n, onData, onTask }) {
-  const doc = stage.panel.ownerDocument;
+  const doc = stage.els.panel.ownerDocument;
   const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
     Object.assign(doc.createElement(tag), props);
   const io = el('details', { className: 'io' });
@@ -95,7 +95,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
   // in an exercise the data files wait (a table of δ or of the footpoints would be the answer)
   const heldNote = el('p', { className: 'io-note io-held', hidden: true });
   io.append(summary, pasteLabel, paste, kindRow, row, importError, storedNote, exportsLabel, exports, heldNote);
-  stage.panel.insertBefore(io, stage.text);
+  stage.els.panel.insertBefore(io, stage.els.text);
 
   // import: pasted text or an uploaded file; an error is said at the paste box, and the scene
   // stays as it is

@@ -4,7 +4,7 @@
 // claims say where the four-point scheme's polygons still straighten out on this polygon.
 import { subdividePolygon, turningAngles } from '../../pkg/ruledlab.js';
 import { defineScene, bounds, f32 } from '../scene.js';
-import { logLogPlot } from '../plot.js';
+import { logLogPlot } from '../diagrams/plot.js';
 import { ROUNDING, TURNING_FROM, TURNING_STEPS } from '../limits.js';
 import { pointSet } from '../edit/sets.js';
 

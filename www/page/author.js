@@ -4,13 +4,13 @@
 // the prompt and up to three hints, record the start and the solution from the view as she sets
 // it, and take the link, iframe and element snippets. Each condition shows whether it holds at
 // the start and in the solution, so an exercise that is solved at its start or unsolvable shows.
-import { readTask, writeTask } from './format.js';
-import { checkGoal, measuresOf } from './check.js';
-import { describeCondition, statedNumber, valueName } from './words.js';
+import { readTask, writeTask } from '../task/format.js';
+import { checkGoal, measuresOf } from '../task/check.js';
+import { describeCondition, statedNumber, valueName } from '../task/words.js';
 import { encodeInput, decodeInput } from '../edit/input.js';
 
 /**
- * @typedef {import('./format.js').Task} Task
+ * @typedef {import('../task/format.js').Task} Task
  *
  * What the author panel needs of the page.
  * @typedef {object} AuthorHooks

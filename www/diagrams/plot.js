@@ -3,9 +3,9 @@
 // same element is shown on the page and saved as a file. Series differ in colour, marker and
 // dash, not in colour alone.
 
-import { parseRich } from './ui/richtext.js';
-import { superscript } from './i18n/translate.js';
-import { svgMaker, svgFigure } from './svg-dom.js';
+import { parseRich } from '../ui/richtext.js';
+import { superscript } from '../i18n/translate.js';
+import { svgMaker, svgFigure } from '../svg-dom.js';
 
 /** The least size of any text in a figure, subscripts included, in user units (= CSS px at 1:1). */
 export const SMALLEST_TEXT = 12.5;

@@ -4,7 +4,7 @@
 // with the DOM (like the convergence plot), so it is shown beside the view and saved as a file.
 // Weights differ by marker shape and label as well as colour.
 import { richSvgText, marker, SMALLEST_TEXT } from './plot.js';
-import { svgMaker, svgFigure } from './svg-dom.js';
+import { svgMaker, svgFigure } from '../svg-dom.js';
 
 /** The stencil of (16): grid offsets (di, dj) from p_{i,j} and the weight of each. */
 export const BUTTERFLY_STENCIL = /** @type {const} */ ([

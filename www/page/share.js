@@ -12,24 +12,24 @@
 // camera and the reader's edit of the input (up to MAX_LINK_HANDLES handles), and lets readers
 // move the handles of a scene that has them; the tests paste each into a page on another origin
 // and require it to draw.
-import { defaults } from './scene.js';
-import { writeState } from './state.js';
-import { encodeInput, linkableInput } from './edit/input.js';
-import { download } from './stage.js';
-import { oneFileWithState } from './export/onefile.js';
-import { place } from './platform.js';
+import { defaults } from '../scene.js';
+import { writeState } from '../state.js';
+import { encodeInput, linkableInput } from '../edit/input.js';
+import { download } from '../ui/download.js';
+import { oneFileWithState } from './onefile.js';
+import { place } from '../platform.js';
 
 /** What `npm run build` made beside the served page (dist/manifest.json names the embed script). */
-const MANIFEST = new URL('../dist/manifest.json', import.meta.url).href;
+const MANIFEST = new URL('../../dist/manifest.json', import.meta.url).href;
 
 /** The file name the embed script is handed out under. */
 export const EMBED_FILE = 'ruledlab-embed.js';
 
 /**
  * @typedef {object} ShareContext
- * @property {import('./stage.js').Stage} stage
- * @property {() => import('./i18n/index.js').Translator} i18n
- * @property {() => Omit<import('./state.js').ViewState, 'notes'>} state   the view as the link writes it
+ * @property {import('../stage.js').Stage} stage
+ * @property {() => import('../i18n/index.js').Translator} i18n
+ * @property {() => Omit<import('../state.js').ViewState, 'notes'>} state   the view as the link writes it
  * @property {boolean} oneFile       this page is the one-file build
  * @property {(() => string) | undefined} embedScript   the one-file build's own script (its embed script)
  * @property {() => void} [author]   opens "Make an exercise" on this view (the page)
@@ -66,7 +66,7 @@ export function shareDialog(dialog, context) {
         script = { src: embed };
         scriptNote = t('share.elementServed');
       } else {
-        script = { src: new URL('./view.js', import.meta.url).href, module: true };
+        script = { src: new URL('../index.js', import.meta.url).href, module: true };
         scriptNote = t('share.elementModule');
       }
     }
@@ -122,7 +122,7 @@ export function shareDialog(dialog, context) {
       'share.element',
       'share-element',
       elementSnippet(
-        /** @type {import('./scene.js').Scene} */ (stage.scene),
+        /** @type {import('../scene.js').Scene} */ (stage.scene),
         stage.params,
         state.lang ?? context.i18n().lang,
         script,
@@ -278,18 +278,18 @@ export function iframeSnippet(
  * the figure of the paper shown, if any: then only the values that differ from the figure's
  * are listed), after the script that defines the element; its height an attribute (no inline
  * style, which a strict Content-Security-Policy refuses).
- * @param {import('./scene.js').Scene} scene
- * @param {import('./scene.js').Params} params
+ * @param {import('../scene.js').Scene} scene
+ * @param {import('../scene.js').Params} params
  * @param {string} lang
  * @param {{src: string, module?: boolean}} script   the script that defines <ruled-view>: the
  *   one-file embed script (a classic script, loads from anywhere) or the module `ruledlab/view`
- * @param {import('./paper.js').PaperPreset | null} [paper]
+ * @param {import('../paper.js').PaperPreset | null} [paper]
  * @param {number[] | null} [camera]   yaw, pitch, distance, target x, y, z
- * @param {{editable?: boolean, input?: import('./scene.js').Input | null}} [edit]   whether readers
+ * @param {{editable?: boolean, input?: import('../scene.js').Input | null}} [edit]   whether readers
  *   may drag the handles, and the edit of the input to show
  */
 export function elementSnippet(scene, params, lang, script, paper = null, camera = null, edit = {}) {
-  /** @type {import('./scene.js').Params} */
+  /** @type {import('../scene.js').Params} */
   const base = { ...defaults(scene), ...(paper?.params ?? {}) };
   const q = new URLSearchParams();
   for (const p of scene.params)

@@ -1,32 +1,32 @@
 // The page: a Stage (the view with its controls) and the page's own parts around it — the chrome
 // (page/chrome.js: scene, figure and language pickers, Share), the data panel (page/data-panel.js:
 // import and exports), the address (page/address.js: the state in the URL hash, Back returns to
-// the previous scene) and the Share dialog (share.js). This module puts them together.
-import { liveObjects } from '../pkg/ruledlab.js';
-import { start, memoryBytes } from './core.js';
-import { afterPaint, nextTask } from './tasks.js';
-import { Stage } from './stage.js';
-import { SCENES } from './scenes/index.js';
-import { findPreset } from './paper.js';
-import { readState } from './state.js';
-import { translator, pickLanguage, loadLanguage } from './i18n/translate.js';
-import { adoptStyles } from './ui/css.js';
-import { showFailure } from './ui/failure.js';
-import { storedHash } from './export/onefile.js';
-import { stored } from './platform.js';
-import { pageChrome, plainTitle } from './page/chrome.js';
-import { dataPanel, parseStored, STORED } from './page/data-panel.js';
-import { pageAddress } from './page/address.js';
-import { keepInput, keptInput } from './page/stored-input.js';
-import { readParams, withChoices as withChoicesOf } from './scene.js';
-import { builtInTask } from './task/builtin.js';
-import { taskFromLink, taskLink } from './task/format.js';
-import { fitTask } from './task/check.js';
-import { markSolved } from './task/progress.js';
-import { postToParent } from './task/message.js';
-import { taskErrorText } from './task/words.js';
-import { encodeInput } from './edit/input.js';
-import { readTask, say } from './task/format.js';
+// the previous scene), the Share dialog (share.js) and the exercise author (author.js). This
+// module puts them together; the package's `ruledlab/view` ships none of www/page/.
+import { liveObjects } from '../../pkg/ruledlab.js';
+import { start, memoryBytes } from '../core.js';
+import { afterPaint, nextTask } from '../schedule.js';
+import { Stage } from '../stage.js';
+import { SCENES } from '../scenes/index.js';
+import { findPreset } from '../paper.js';
+import { readState } from '../state.js';
+import { translator, pickLanguage, loadLanguage } from '../i18n/translate.js';
+import { adoptStyles } from '../ui/css.js';
+import { showFailure } from '../ui/failure.js';
+import { storedHash } from './onefile.js';
+import { stored } from '../platform.js';
+import { pageChrome, plainTitle } from './chrome.js';
+import { dataPanel, parseStored, STORED } from './data-panel.js';
+import { pageAddress } from './address.js';
+import { keepInput, keptInput } from './stored-input.js';
+import { readParams } from '../scene.js';
+import { builtInTask } from '../task/builtin.js';
+import { readTask, say, taskLink } from '../task/format.js';
+import { markSolved } from '../task/progress.js';
+import { postToParent } from '../task/message.js';
+import { taskErrorText } from '../task/words.js';
+import { encodeInput } from '../edit/input.js';
+import { openExercise, openView } from '../stage/open.js';
 
 /**
  * The page (see the module documentation).
@@ -42,7 +42,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   const core = start();
   core.catch(() => {});
   const link = new URLSearchParams((location.hash || (oneFile ? `#${storedHash()}` : '')).replace(/^#/, ''));
-  /** @type {import('./state.js').ViewState} */
+  /** @type {import('../state.js').ViewState} */
   let state;
   let lang = pickLanguage(link.get('lang'));
   await Promise.all([loadLanguage(lang), nextTask()]);
@@ -74,15 +74,13 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     editable: !link.has('embed') || link.has('edit'),
     onChange: ({ reason, ended }) => {
       // an edit too large for the link stays in the tab (and the page says so)
-      if (ended && stage.scene && (reason === 'input' || reason === 'reset')) {
-        stage.inputNote = keepInput(stage.scene.id, stage.input);
-        stage.showEditing();
-      }
+      if (ended && stage.scene && (reason === 'input' || reason === 'reset'))
+        stage.setInputNote(keepInput(stage.scene.id, stage.input));
       address.save(reason === 'scene' ? 'push' : 'replace', ended);
     },
     onBuilt: (built) => data.update(built),
     onEditAsData: (imported) =>
-      go(/** @type {import('./scene.js').Scene} */ (SCENES.find((s) => s.id === 'data')), {}, { data: imported }),
+      go(/** @type {import('../scene.js').Scene} */ (SCENES.find((s) => s.id === 'data')), {}, { data: imported }),
     onTask: (type, report) => {
       // solved exercises are marked in the menu (where the browser keeps anything)
       if (type === 'solved') {
@@ -107,8 +105,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
 
   /** Opens `scene` (with `params` and `options`), then records it as a new history entry. */
   const go = (
-    /** @type {import('./scene.js').Scene} */ scene,
-    /** @type {import('./scene.js').Params} */ params,
+    /** @type {import('../scene.js').Scene} */ scene,
+    /** @type {import('../scene.js').Params} */ params,
     /** @type {Parameters<Stage['open']>[2]} */ options,
   ) =>
     stage.open(scene, params, options).then(() => {
@@ -120,7 +118,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     // an exercise file, pasted or uploaded: opened as the exercise (its reason when it cannot be)
     onTask: async (json) => {
       try {
-        await openTaskOf(readTask(json), true);
+        await openExercise(stage, readTask(json));
         address.save('push');
         localize();
         return null;
@@ -131,7 +129,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     // tool poses go to the milling scene, segments to "Your data"
     onData: (imported) =>
       go(
-        /** @type {import('./scene.js').Scene} */ (SCENES.find((s) => s.id === (imported.poses ? 'milling' : 'data'))),
+        /** @type {import('../scene.js').Scene} */ (SCENES.find((s) => s.id === (imported.poses ? 'milling' : 'data'))),
         {},
         { data: imported },
       ),
@@ -156,12 +154,16 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     doc.body.classList.toggle('embed', state.embed);
     stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
     stage.setEditable(!state.embed || !!state.edit);
-    // an exercise: its scene and start, with the reader's progress from the link
-    if (state.task && (await openTask(state.task))) return localize();
     const text = stored(STORED);
     // an edit: the link's, or one too large for it that this tab kept
     const input = state.input ?? keptInput(state.scene.id);
-    await stage.open(state.scene, state.params, {
+    await openView(stage, {
+      scene: state.scene,
+      params: state.params,
+      // an exercise: its scene and start, with the reader's progress from the link
+      task: state.task,
+      progress: progressOf,
+      taskInput: state.input,
       camera: state.camera,
       data: state.data ?? (text ? parseStored(text) : null),
       notes: state.notes,
@@ -174,44 +176,32 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   };
 
   /**
-   * Opens the exercise of a link value (a built-in id, or "j." and its JSON) with the reader's
-   * progress from the address; false (and a note) when it cannot be read or does not fit.
-   * @param {string} value
-   * @param {boolean} [fresh]   from its start, whatever the address holds (the menu, "Try it")
+   * The reader's parameters in the exercise of the address: those the link sets (the exercise
+   * keeps the ones it lets change).
+   * @param {import('../scene.js').Scene} scene   the exercise's
    */
-  const openTask = async (value, fresh = false) => {
+  const progressOf = (scene) => {
+    const q = new URLSearchParams(address.current().replace(/^#/, ''));
+    const read = readParams(scene, q).params;
+    return Object.fromEntries(Object.entries(read).filter(([k]) => q.has(k)));
+  };
+
+  /**
+   * Opens an exercise from its start (the menu, "Try it", a pasted file), as a new history entry;
+   * false (and its reason in a note) when it cannot be read or does not fit its scene.
+   * @param {string | import('../task/format.js').Task} value
+   */
+  const startTask = async (value) => {
     try {
-      await openTaskOf(taskFromLink(value, builtInTask), fresh);
+      await openExercise(stage, value);
+      address.save('push');
       return true;
     } catch (e) {
       state.notes.push({ key: 'task', note: 'note.badTask', vars: { reason: taskErrorText(e, i18n) } });
       return false;
+    } finally {
+      localize();
     }
-  };
-
-  /**
-   * Opens an exercise (throws a TaskError where it does not fit its scene).
-   * @param {import('./task/format.js').Task} task
-   * @param {boolean} fresh
-   */
-  const openTaskOf = async (task, fresh) => {
-    const scene = fitTask(task, SCENES, (params, input) => {
-      const s = /** @type {import('./scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
-      return s.create(withChoicesOf(s, { ...task.params, ...params }), {
-        t: i18n.t,
-        format: i18n.format,
-        lang,
-        ...(input ? { input } : {}),
-      });
-    });
-    const q = new URLSearchParams(fresh ? '' : address.current().replace(/^#/, ''));
-    const read = readParams(scene, q).params;
-    const params = Object.fromEntries(Object.entries(read).filter(([k]) => q.has(k)));
-    await stage.openTask(
-      task,
-      scene,
-      fresh ? {} : { params, input: state.input, camera: state.camera, notes: state.notes },
-    );
   };
 
   /** @param {string} code @param {boolean} [write] */
@@ -239,16 +229,13 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   chrome.taskPicker.addEventListener('change', () => {
     const id = chrome.taskPicker.value;
     if (!id) return stage.task && stage.openTask(null).then(() => address.save('push'));
-    openTask(id, true).then((opened) => {
-      if (opened) address.save('push');
-      localize();
-    });
+    startTask(id);
   });
   window.addEventListener('popstate', () => openAddress());
   window.addEventListener('hashchange', () => openAddress());
 
   // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file, and "Make an
-  // exercise" from the view on screen (Share → Make an exercise) — share.js and task/author.js,
+  // exercise" from the view on screen (Share → Make an exercise) — share.js and author.js,
   // loaded when first opened
   /** @type {Promise<ReturnType<import('./share.js').shareDialog>> | null} */
   let sharing = null;
@@ -266,10 +253,10 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     return sharing;
   };
   const openShare = () => shareModule().then((dialog) => dialog.open());
-  /** @type {Promise<import('./task/author.js').Author> | null} */
+  /** @type {Promise<import('./author.js').Author> | null} */
   let author = null;
   const authoring = () => {
-    author ??= import('./task/author.js').then(
+    author ??= import('./author.js').then(
       ({ Author }) =>
         new Author(stage.authorBox, {
           i18n: () => i18n,
@@ -283,13 +270,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
             ),
           tryIt: (task) => {
             authoring().then((made) => made.close());
-            openTask(
-              taskLink(task, (id) => builtInTask(id) !== null),
-              true,
-            ).then((opened) => {
-              if (opened) address.save('push');
-              localize();
-            });
+            startTask(taskLink(task, (id) => builtInTask(id) !== null));
           },
         }),
     );
@@ -301,7 +282,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     doc.body.dataset.frames = String(n);
   };
   localize();
-  if (boot) stage.view.append(boot);
+  if (boot) stage.els.view.append(boot);
   // the linked scene's heading and explanation while the core loads (a view in a frame, which
   // may show no text, and an exercise, which may hide some, wait for the link to be read)
   if (!link.has('embed') && !link.has('task'))

@@ -1,0 +1,63 @@
+// ruledlab/view: the viewer as a package entry. Importing it defines <ruled-view>; it also
+// exports the pieces a page of one's own needs: the Stage (a view with controls), the Viewer,
+// the scene list and contract, the wasm start-up (configure({ wasm }) to pass a URL or bytes),
+// the URL-hash state, the styles and the languages.
+export { RuledView } from './ruled-view.js';
+export { Stage } from './stage.js';
+export { Viewer } from './viewer.js';
+export { SCENES } from './scenes/index.js';
+export { PRESETS, findPreset } from './paper.js';
+export { configure, start } from './core.js';
+export { readState, writeState } from './state.js';
+export { defineScene, scoped, bounds, readParams, defaults, RESERVED_KEYS } from './scene.js';
+export { STYLES, PALETTE } from './theme.js';
+export { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
+export { readTask, writeTask, TaskError } from './task/format.js';
+export { builtInTasks, builtInTask } from './task/builtin.js';
+
+// The types of the pieces above, for TypeScript users (pkg/view/www/view.d.ts is generated from
+// this JSDoc and the sources' own: scripts/view-types.mjs).
+/**
+ * @typedef {import('./core.js').WasmSource} WasmSource
+ * @typedef {import('./scene.js').Scene} Scene
+ * @typedef {import('./scene.js').Param} Param
+ * @typedef {import('./scene.js').Params} Params
+ * @typedef {import('./scene.js').Context} Context
+ * @typedef {import('./scene.js').Built} Built
+ * @typedef {import('./scene.js').Layer} Layer
+ * @typedef {import('./scene.js').Label} Label
+ * @typedef {import('./scene.js').LegendEntry} LegendEntry
+ * @typedef {import('./scene.js').Readout} Readout
+ * @typedef {import('./scene.js').Download} Download
+ * @typedef {import('./scene.js').Claim} Claim
+ * @typedef {import('./scene.js').ImportedData} ImportedData
+ * @typedef {import('./scene.js').Input} Input
+ * @typedef {import('./scene.js').HandleSet} HandleSet
+ * @typedef {import('./scene.js').Editable} Editable
+ * @typedef {import('./paper.js').PaperPreset} PaperPreset
+ * @typedef {import('./state.js').ViewState} ViewState
+ * @typedef {import('./theme.js').Style} Style
+ * @typedef {import('./theme.js').LineStyle} LineStyle
+ * @typedef {import('./theme.js').PointStyle} PointStyle
+ * @typedef {import('./theme.js').AreaStyle} AreaStyle
+ * @typedef {import('./theme.js').Hatch} Hatch
+ * @typedef {import('./i18n/index.js').Translator} Translator
+ * @typedef {import('./camera.js').OrbitCamera} OrbitCamera
+ * @typedef {import('./stage.js').StageOptions} StageOptions
+ * @typedef {import('./export/svg.js').FigureOptions} FigureOptions
+ * @typedef {import('./ruled-view.js').SceneChangeDetail} SceneChangeDetail
+ * @typedef {import('./ruled-view.js').ViewChangeDetail} ViewChangeDetail
+ * @typedef {import('./ruled-view.js').CameraChangeDetail} CameraChangeDetail
+ * @typedef {import('./ruled-view.js').RuledViewErrorDetail} RuledViewErrorDetail
+ * @typedef {import('./ruled-view.js').EditDetail} EditDetail
+ * @typedef {import('./ruled-view.js').HandleInfo} HandleInfo
+ * @typedef {import('./ruled-view.js').RuledViewEvents} RuledViewEvents
+ * @typedef {import('./ruled-view.js').RuledViewEventMap} RuledViewEventMap
+ * @typedef {import('./task/format.js').Task} Task
+ * @typedef {import('./task/panel.js').TaskReport} TaskReport
+ * @typedef {import('./task/check.js').Answers} Answers
+ * @typedef {import('./task/format.js').Answer} Answer
+ * @typedef {import('./task/format.js').Condition} Condition
+ * @typedef {import('./task/format.js').Words} Words
+ * @typedef {import('./task/format.js').TaskState} TaskState
+ */

@@ -1,0 +1,41 @@
+// What a stage says to screen readers (its polite live region): a step in words when it happens
+// ("ruling 5 moved"), and the readout in a sentence once an interaction ends — at most once a
+// second, so that a slider dragged across its range is not read out value by value.
+
+/** Least time between two announcements of the readout (ms). */
+const ANNOUNCE_EVERY = 1000;
+
+export class Announcer {
+  /**
+   * @param {HTMLElement} status   the live region
+   * @param {() => string | null} sentence   the readout now, in a sentence (null: nothing computed)
+   */
+  constructor(status, sentence) {
+    this.status = status;
+    this.sentence = sentence;
+    this.last = 0;
+    this.timer = 0;
+  }
+
+  /** Says `text` now. */
+  say(/** @type {string} */ text) {
+    this.status.textContent = text;
+  }
+
+  /** Says the readout (after `prefix`, what the step did) once the last announcement is a second old. */
+  announce(prefix = '') {
+    clearTimeout(this.timer);
+    const speak = () => {
+      this.last = performance.now();
+      const sentence = this.sentence();
+      if (sentence !== null || prefix) this.say([prefix, sentence ?? ''].filter(Boolean).join('. '));
+    };
+    const wait = this.last + ANNOUNCE_EVERY - performance.now();
+    if (wait <= 0) speak();
+    else this.timer = window.setTimeout(speak, wait);
+  }
+
+  dispose() {
+    clearTimeout(this.timer);
+  }
+}

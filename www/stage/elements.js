@@ -1,0 +1,180 @@
+// The elements of a stage, built once: the view (canvas, labels, legend, the bar with the hint,
+// the edit bar and the toolbar, progress, notes, errors, the screen reader's description and
+// live region) and the panel beside or below it (heading, exercise, paper card, controls,
+// player, readout, figure, downloads, explanation). Nothing here listens or decides: the parts
+// of the stage (stage/*.js) fill and wire these elements.
+
+/**
+ * @typedef {object} StageElements
+ * @property {HTMLElement} root      the stage (view, panel and the shortcuts dialog)
+ * @property {HTMLElement} view      the 3D view's box
+ * @property {HTMLCanvasElement} canvas
+ * @property {HTMLElement} labels    labels placed by the camera's projection
+ * @property {HTMLElement} legend
+ * @property {HTMLElement} bar       the view's bottom edge: the hint (or the edit bar) and the toolbar
+ * @property {HTMLElement} hint
+ * @property {HTMLElement} toolbar
+ * @property {HTMLElement} editBar   while editing: how a drag moves a handle, and Done
+ * @property {Record<import('../edit/geometry.js').MoveMode, HTMLButtonElement>} modes
+ * @property {HTMLElement} modeGroup
+ * @property {HTMLElement} modeLabel
+ * @property {HTMLButtonElement} done
+ * @property {{edit: HTMLButtonElement, undo: HTMLButtonElement, redo: HTMLButtonElement, fit: HTMLButtonElement, reset: HTMLButtonElement, fullscreen: HTMLButtonElement, help: HTMLButtonElement}} buttons
+ * @property {HTMLElement} progress
+ * @property {HTMLProgressElement} progressBar
+ * @property {HTMLButtonElement} cancel
+ * @property {HTMLElement} error     an error over the view (role alert)
+ * @property {HTMLElement} noteBox   notes about link values that were not used
+ * @property {HTMLElement} description   what the figure shows, for screen readers
+ * @property {HTMLElement} status    the polite live region
+ * @property {HTMLElement} panel
+ * @property {HTMLElement} heading
+ * @property {HTMLElement} authorBox the place of the page's "Make an exercise" panel
+ * @property {HTMLElement} taskBox   the exercise: prompt, answers, Check, hints
+ * @property {HTMLElement} paperCard the paper's figure shown, and the way back to it
+ * @property {HTMLElement} edited    "edited from: …", with the way back to the built-in input
+ * @property {HTMLElement} form      the controls
+ * @property {HTMLButtonElement} asData   "Edit as data" of a scene without handles
+ * @property {HTMLElement} player    speed and single step
+ * @property {HTMLElement} readout
+ * @property {HTMLElement} problems  what an edited input leaves undefined
+ * @property {HTMLElement} claims
+ * @property {HTMLElement} note      the readout's note
+ * @property {HTMLElement} caption
+ * @property {HTMLElement} figure    a picture beside the view (a plot, a stencil)
+ * @property {HTMLElement} downloads
+ * @property {HTMLElement} text      the scene's explanation
+ * @property {HTMLDialogElement} shortcuts
+ */
+
+let serial = 0;
+
+/**
+ * Builds a stage's elements into `host`.
+ * @param {HTMLElement} host
+ * @param {{page?: boolean}} options   page: the page's stage (the page scrolls)
+ * @returns {StageElements}
+ */
+export function stageElements(host, { page = false }) {
+  const id = `rl-stage-${++serial}`;
+  const doc = host.ownerDocument;
+  /** @template {keyof HTMLElementTagNameMap} K @param {K} tag @param {Record<string, any>} [props] @returns {HTMLElementTagNameMap[K]} */
+  const el = (tag, props = {}) => Object.assign(doc.createElement(tag), props);
+  const button = (/** @type {string} */ className = '', hidden = false) =>
+    el('button', { type: 'button', className, hidden });
+
+  const canvas = el('canvas', { tabIndex: 0 });
+  canvas.setAttribute('role', 'img');
+  const labels = el('div', { className: 'rl-labels' });
+  labels.setAttribute('aria-hidden', 'true');
+  const progressBar = el('progress', { max: 1, value: 0 });
+  const cancel = button();
+  const progress = el('div', { className: 'rl-progress', hidden: true });
+  progress.append(progressBar, cancel);
+  const error = el('p', { className: 'rl-error', hidden: true });
+  error.setAttribute('role', 'alert');
+  const description = el('p', { className: 'rl-sr-only', id: `${id}-description` });
+  canvas.setAttribute('aria-describedby', description.id);
+  const status = el('p', { className: 'rl-sr-only' });
+  status.setAttribute('aria-live', 'polite');
+
+  // while editing (in the hint's place): how a drag moves a handle (for those without Shift and Alt), and Done
+  const modes = { view: button(), line: button(), vertical: button() };
+  const modeLabel = el('span', { className: 'rl-editbar-label' });
+  const modeGroup = el('div', { className: 'rl-modes' });
+  modeGroup.setAttribute('role', 'group');
+  modeGroup.append(modeLabel, ...Object.values(modes));
+  const done = button('rl-done');
+  const editBar = el('div', { className: 'rl-editbar', hidden: true });
+  editBar.append(modeGroup, done);
+  const buttons = {
+    edit: button('rl-edit', true),
+    undo: button('rl-undo', true),
+    redo: button('rl-redo', true),
+    fit: button('rl-fit'),
+    reset: button('rl-reset'),
+    fullscreen: button('rl-fullscreen'),
+    help: button('rl-help'),
+  };
+  const toolbar = el('div', { className: 'rl-toolbar' });
+  toolbar.append(...Object.values(buttons));
+  // the hint and the toolbar share the bottom edge: the hint takes what room the buttons leave
+  const hint = el('p', { className: 'rl-hint' });
+  const bar = el('div', { className: 'rl-bar' });
+  bar.append(hint, editBar, toolbar);
+  const legend = el('ul', { className: 'rl-legend' });
+  const noteBox = el('p', { className: 'rl-note', hidden: true });
+  const view = el('div', { className: 'rl-view' });
+  view.append(canvas, labels, legend, bar, progress, noteBox, error, description, status);
+
+  const paperCard = el('section', { className: 'rl-paper', hidden: true, id: `${id}-paper` });
+  // a group, not a form: Enter in a field of a form in a sandboxed frame without allow-forms is a
+  // blocked submission the console reports (course systems frame the page that way)
+  const form = el('div', { className: 'rl-controls' });
+  form.setAttribute('role', 'group');
+  const parts = {
+    heading: el('h2'),
+    authorBox: el('section', { className: 'rl-author', hidden: true }),
+    taskBox: el('section', { className: 'rl-task', hidden: true }),
+    paperCard,
+    edited: el('div', { className: 'rl-edited', hidden: true }),
+    form,
+    asData: button('rl-as-data', true),
+    player: el('div', { className: 'rl-player', hidden: true }),
+    readout: el('dl', { className: 'rl-readout' }),
+    problems: el('ul', { className: 'rl-problems', hidden: true }),
+    claims: el('ul', { className: 'rl-claims', hidden: true }),
+    note: el('p', { className: 'rl-readout-note', hidden: true }),
+    caption: el('p', { className: 'rl-caption' }),
+    figure: el('figure', { className: 'rl-figure' }),
+    downloads: el('div', { className: 'rl-downloads' }),
+    text: el('article', { className: 'rl-text' }),
+  };
+  const panel = el('div', { className: 'rl-panel' });
+  panel.append(...Object.values(parts));
+
+  const shortcuts = el('dialog', { className: 'rl-shortcuts' });
+  const root = el('div', { className: page ? 'rl-stage rl-page' : 'rl-stage' });
+  root.append(view, panel, shortcuts);
+  host.append(root);
+  return {
+    root,
+    view,
+    canvas,
+    labels,
+    legend,
+    bar,
+    hint,
+    toolbar,
+    editBar,
+    modes,
+    modeGroup,
+    modeLabel,
+    done,
+    buttons,
+    progress,
+    progressBar,
+    cancel,
+    error,
+    noteBox,
+    description,
+    status,
+    panel,
+    ...parts,
+    shortcuts,
+  };
+}
+
+/**
+ * Gives `button` a word, and a sign that stands in for it where the box is narrow (its name
+ * stays the word).
+ * @param {HTMLElement} button @param {string} sign @param {string} word
+ */
+export function labelButton(button, sign, word) {
+  const doc = button.ownerDocument;
+  const icon = Object.assign(doc.createElement('span'), { className: 'rl-btn-sign', textContent: sign });
+  icon.setAttribute('aria-hidden', 'true');
+  const text = Object.assign(doc.createElement('span'), { className: 'rl-btn-word', textContent: word });
+  button.replaceChildren(icon, text);
+  button.setAttribute('aria-label', word);
+}

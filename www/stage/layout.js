@@ -1,0 +1,50 @@
+// The arrangement of a stage: its panel beside the view when there is room, under it otherwise
+// (narrow: under NARROW px, or a box taller than wide under PORTRAIT px); the labels above the
+// controls when tiny; the legend leading the panel of a narrow box. The box is the element's, or
+// for the page the screen. Also the share of a narrow view the legend and the toolbar cover, so
+// that a fitted figure is framed between them.
+import { NARROW, PORTRAIT, TINY, SMALL_VIEW } from '../limits.js';
+
+/**
+ * Arranges the stage for the size of its box; redraws when the arrangement changed.
+ * @param {import('../stage.js').Stage} stage
+ */
+export function arrange(stage) {
+  const { root, panel, legend, view, bar } = stage.els;
+  const before = root.className;
+  const box = root.getBoundingClientRect();
+  const host = () => stage.host.getBoundingClientRect();
+  const width = box.width || host().width;
+  const height = stage.options.page ? window.innerHeight : box.height || host().height;
+  const narrow = width > 0 && (width < NARROW || (height > width && width < PORTRAIT));
+  root.classList.toggle('rl-narrow', narrow);
+  // in a narrow box with a panel the legend leads the panel, right under the view: the view
+  // keeps its whole height for the figure
+  const legendInPanel = narrow && !panel.hidden && !!stage.showControls;
+  if (legendInPanel && legend.parentElement !== panel) panel.prepend(legend);
+  if (!legendInPanel && legend.parentElement !== view) view.insertBefore(legend, bar);
+  legend.classList.toggle('rl-legend-panel', legendInPanel);
+  root.classList.toggle('rl-tiny', width > 0 && width < TINY);
+  // the hint under the view only where it fits beside the toolbar on one line
+  root.classList.toggle('rl-view-small', view.getBoundingClientRect().width < SMALL_VIEW);
+  stage.controls?.fit();
+  // a new arrangement moves the view (a view resized alone is redrawn by the viewer itself)
+  if (root.className !== before) stage.viewer.requestRender();
+}
+
+/**
+ * The shares of the view's height that the legend (top) and the toolbar (bottom) cover in a
+ * narrow box; none beside a panel.
+ * @param {import('./elements.js').StageElements} els
+ */
+export function covered({ root, view, legend, toolbar }) {
+  if (!root.classList.contains('rl-narrow')) return { top: 0, bottom: 0 };
+  const box = view.getBoundingClientRect();
+  if (!box.height) return { top: 0, bottom: 0 };
+  const top = legend.hidden || !view.contains(legend) ? null : legend.getBoundingClientRect();
+  const bar = toolbar.getBoundingClientRect();
+  return {
+    top: top ? Math.max(0, top.bottom - box.top) / box.height : 0,
+    bottom: Math.max(0, box.bottom - bar.top) / box.height,
+  };
+}

@@ -1,0 +1,129 @@
+// What a stage says about what the core computed: after a computation the legend, the readout,
+// the claims, the problems an edit leaves, the description (for screen readers and as the
+// caption), the figure beside the view and the downloads; after a failure the error, over the
+// view and next to the control it concerns, in the stage's language (the last picture stays);
+// and the notes about link values that were not used. An exercise hides what would give its
+// answer away.
+import { showLegend } from '../ui/legend.js';
+import { showReadout, showClaims } from '../ui/readout.js';
+import { describeError } from '../ui/errors.js';
+import { appendRich, plainRich } from '../ui/richtext.js';
+import { download } from '../ui/download.js';
+import { say } from '../task/format.js';
+
+export class Results {
+  /** @param {import('../stage.js').Stage} stage */
+  constructor(stage) {
+    this.stage = stage;
+  }
+
+  /** Shows what a computation built (`final`: no heavier result is on its way). */
+  show(/** @type {import('../scene.js').Built} */ built, /** @type {boolean} */ final) {
+    const stage = this.stage;
+    const { scene, els, i18n } = stage;
+    if (!scene) return;
+    const { t } = i18n;
+    const doc = els.root.ownerDocument;
+    showLegend(els.legend, scene, stage.params, t);
+    // the legend may cover another share of a narrow view now: a fitted view is framed anew (not
+    // while the reader moves the geometry: the view holds still under the pointer)
+    if (els.root.classList.contains('rl-narrow') && stage.viewer.camera.atHome() && !stage.input) stage.viewer.fit();
+    // the handles where the core has them (an edit comes back in the core's own form: a tool
+    // axis keeps the tool's length); the edit itself stays as the reader made it, bit for bit
+    stage.edit.editor.show(built.input);
+    els.problems.replaceChildren(...(built.problems ?? []).map((text) => appendRich(doc.createElement('li'), text)));
+    els.problems.hidden = !built.problems?.length;
+    stage.edit.showAsData(built);
+    // an exercise hides what would give its answer away (the readout and the sentences that say it)
+    const hidden = stage.task?.hide ?? [];
+    showReadout(els.readout, this.readouts(built), i18n);
+    showClaims(els.claims, hidden.includes('claims') ? [] : (built.claims ?? []), t);
+    els.note.hidden = !built.note;
+    els.note.textContent = built.note ?? '';
+    const description = stage.task && hidden.length ? say(stage.task.title, i18n.lang) : built.description;
+    els.description.replaceChildren();
+    appendRich(els.description, description);
+    els.caption.replaceChildren();
+    appendRich(els.caption, description);
+    els.figure.replaceChildren(...(built.figure ? [built.figure()] : []));
+    els.downloads.replaceChildren(
+      ...(built.downloads ?? []).map((d) => {
+        const b = Object.assign(doc.createElement('button'), { type: 'button', textContent: t(d.label) });
+        b.addEventListener('click', () =>
+          download(d.filename, typeof d.content === 'function' ? d.content() : d.content, d.type),
+        );
+        return b;
+      }),
+    );
+    for (const p of scene.params) stage.controls?.invalid(p.key, null);
+    els.root.dataset.scene = scene.id;
+    els.root.dataset.paper = stage.paper?.id ?? '';
+    if (final) els.root.dataset.ready = '1';
+    else delete els.root.dataset.ready;
+  }
+
+  /** The readouts of `built` the reader may see (an exercise hides some). */
+  readouts(/** @type {import('../scene.js').Built} */ built) {
+    const hidden = this.stage.task?.hide ?? [];
+    return (built.readouts ?? []).filter((r) => !hidden.includes(r.label));
+  }
+
+  /**
+   * Shows an error in the view (and next to the control it concerns), in the stage's language;
+   * the last picture stays. Returns the sentence shown.
+   */
+  fail(/** @type {unknown} */ e) {
+    const stage = this.stage;
+    const { els, scene, controls } = stage;
+    const option = /** @type {any} */ (e)?.details?.option;
+    // the field it concerns: of the scene's candidates, the one the reader changed last
+    const candidates = [scene && option ? scene.fieldOf?.(option) : null].flat().filter((k) => typeof k === 'string');
+    const last = stage.lastChanged;
+    const key = candidates.includes(last ?? '') ? last : (candidates[0] ?? null);
+    // named as the page names it: the option's own name ("the interval of u"), else the field's
+    const { t, has } = stage.i18n;
+    const name =
+      option && has(`error.option.${option}`) ? t(`error.option.${option}`) : key ? this.fieldName(key) : undefined;
+    const message = describeError(e, stage.i18n, name);
+    els.error.hidden = false;
+    // beside its field the whole sentence; over the view (small on a phone) where to look
+    els.error.textContent = key && stage.showControls ? t('error.seeField', { field: this.fieldName(key) }) : message;
+    // the field the reader just changed keeps no old message when the error is now elsewhere (it
+    // was fixed, or the core has not come to it: it says so again once the other is fixed)
+    if (last && last !== key) controls?.invalid(last, null);
+    if (key) controls?.invalid(key, message);
+    // an edit the core cannot compute on: said under the readout too (the drag can go on, undo back)
+    if (stage.input) {
+      els.problems.replaceChildren(Object.assign(els.root.ownerDocument.createElement('li'), { textContent: message }));
+      els.problems.hidden = false;
+    }
+    stage.options.onError?.(e, message);
+    return message;
+  }
+
+  /** The name of the field of parameter `key` in messages ("the z component of e(u)"), or its label. */
+  fieldName(/** @type {string} */ key) {
+    const p = this.stage.scene?.params.find((q) => q.key === key);
+    if (!p) return key;
+    const { t, has } = this.stage.i18n;
+    return has(`${p.label}.field`) ? t(`${p.label}.field`) : plainRich(t(p.label));
+  }
+
+  /** Notes about link values that were not used: read once, then out of the figure's way. */
+  notes(/** @type {Array<{key: string, note: string, vars?: Record<string, string>}>} */ notes) {
+    const { t } = this.stage.i18n;
+    const box = this.stage.els.noteBox;
+    const doc = box.ownerDocument;
+    box.hidden = notes.length === 0;
+    const close = Object.assign(doc.createElement('button'), {
+      type: 'button',
+      className: 'rl-note-close',
+      textContent: '×',
+    });
+    close.setAttribute('aria-label', t('view.closeNote'));
+    close.addEventListener('click', () => (box.hidden = true));
+    const text = doc.createElement('span');
+    text.textContent = notes.map(({ key, note, vars }) => t(note, { key, ...vars })).join(' ');
+    box.replaceChildren(text, close);
+  }
+}

@@ -1,0 +1,139 @@
+// The keys of a stage and the list of them: ? opens the list of gestures (first, on a touch
+// screen) and keys, R resets, Space plays or pauses, "." steps, E starts keyboard editing, Ctrl+Z
+// and Ctrl+Shift+Z / Ctrl+Y undo and redo an edit (the view's own keys are the camera's:
+// camera.js). Every key asks the stage for the change a button would make.
+import { touchScreen } from './touch.js';
+
+/** The keys of the view and what each does (i18n keys). @type {Array<[string, string]>} */
+const KEYS = [
+  ['←  →  ↑  ↓', 'keys.orbit'],
+  ['Shift + ←  →  ↑  ↓', 'keys.pan'],
+  ['+  −', 'keys.zoom'],
+  ['F', 'keys.fit'],
+  ['R', 'keys.reset'],
+  ['Space', 'keys.play'],
+  ['.', 'keys.step'],
+  ['Tab', 'keys.tab'],
+  ['?', 'keys.help'],
+  ['Esc', 'keys.close'],
+];
+/** The keys of editing. @type {Array<[string, string]>} */
+const EDIT_KEYS = [
+  ['E', 'keys.edit'],
+  ['Tab  Shift+Tab  [  ]', 'keys.editStep'],
+  ['←  →  ↑  ↓', 'keys.editMove'],
+  ['PageUp  PageDown', 'keys.editDepth'],
+  ['Shift', 'keys.editFine'],
+  ['Enter', 'keys.editEnd'],
+  ['Esc', 'keys.editCancel'],
+  ['Ctrl+Z', 'keys.undo'],
+  ['Ctrl+Shift+Z  Ctrl+Y', 'keys.redo'],
+];
+/** The gestures on a touch screen. @type {Array<[string, string]>} */
+const GESTURES = [
+  ['touch.one', 'touch.oneWhat'],
+  ['touch.two', 'touch.twoWhat'],
+  ['touch.pinch', 'touch.pinchWhat'],
+  ['touch.fit', 'touch.fitWhat'],
+];
+/** … and those of editing. @type {Array<[string, string]>} */
+const EDIT_GESTURES = [
+  ['touch.handle', 'touch.handleWhat'],
+  ['touch.hold', 'touch.holdWhat'],
+];
+
+export class Shortcuts {
+  /** @param {import('../stage.js').Stage} stage */
+  constructor(stage) {
+    this.stage = stage;
+    this.dialog = stage.els.shortcuts;
+  }
+
+  /** Handles a key pressed in the stage (or, on the page, with nothing focused). */
+  key(/** @type {KeyboardEvent} */ e) {
+    const stage = this.stage;
+    const editor = stage.edit.editor;
+    const target = /** @type {HTMLElement} */ (e.target);
+    if (target.matches?.('input[type=text], textarea, select')) return;
+    // undo and redo of the edit, wherever the keyboard is in the stage
+    if ((e.ctrlKey || e.metaKey) && !e.altKey && editor.active) {
+      const k = e.key.toLowerCase();
+      if (k === 'z' || k === 'y') {
+        e.preventDefault();
+        if (k === 'y' || e.shiftKey) editor.redo();
+        else editor.undo();
+      }
+      return;
+    }
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
+    const onView = target === stage.els.canvas;
+    if (onView && (e.key === 'e' || e.key === 'E') && editor.active) {
+      e.preventDefault();
+      editor.setEditing(!editor.editing);
+    } else if (e.key === '?') {
+      e.preventDefault();
+      this.open();
+    } else if (onView && (e.key === 'r' || e.key === 'R')) {
+      e.preventDefault();
+      stage.reset();
+    } else if (onView && e.key === ' ') {
+      e.preventDefault();
+      const key = stage.player.playableKey();
+      if (key) stage.player.toggle(key);
+    } else if (onView && e.key === '.') {
+      e.preventDefault();
+      /** @type {HTMLButtonElement | null} */ (stage.els.player.querySelector('button'))?.click();
+    }
+  }
+
+  /** Opens the list. */
+  open() {
+    if (this.dialog.open) return;
+    this.build();
+    this.dialog.showModal?.();
+    this.dialog.scrollTop = 0;
+  }
+
+  /** The list in the stage's language, if it is open (a closed list costs the start nothing). */
+  localize() {
+    if (this.dialog.open) this.build();
+  }
+
+  /** Builds the list of gestures (first, on a touch screen) and keys. */
+  build() {
+    const stage = this.stage;
+    const { t } = stage.i18n;
+    const doc = this.dialog.ownerDocument;
+    const editing = stage.edit.editor.active;
+    /** @param {Array<[string, string]>} rows @param {boolean} [keyCaps] */
+    const table = (rows, keyCaps = true) => {
+      const tab = doc.createElement('table');
+      for (const [k, what] of rows) {
+        const row = tab.insertRow();
+        // keys by the names on the reader's keyboard (German: Strg, Umschalt, Leertaste, Bild↑)
+        const name = keyCaps ? k.replace(/\b(Shift|Ctrl|Space|PageUp|PageDown|Enter)\b/g, (m) => t(`key.${m}`)) : t(k);
+        row.insertCell().append(Object.assign(doc.createElement(keyCaps ? 'kbd' : 'strong'), { textContent: name }));
+        row.insertCell().textContent = t(what);
+      }
+      return tab;
+    };
+    const touch = table([...GESTURES, ...(editing ? EDIT_GESTURES : [])], false);
+    touch.className = 'rl-gestures';
+    // Close first: the dialog opens at its top with the keyboard on Close (a phone shows the
+    // gestures, not the end of the list)
+    const close = Object.assign(doc.createElement('button'), {
+      type: 'button',
+      className: 'rl-shortcuts-close',
+      textContent: t('keys.closeButton'),
+    });
+    close.addEventListener('click', () => this.dialog.close());
+    const heading = (/** @type {string} */ key) => Object.assign(doc.createElement('h2'), { textContent: t(key) });
+    const intro = Object.assign(doc.createElement('p'), { textContent: t('keys.intro') });
+    const gestures = [heading('touch.title'), touch];
+    const keyboard = [heading('keys.title'), intro, table(KEYS)];
+    if (editing) keyboard.push(heading('keys.editTitle'), table(EDIT_KEYS));
+    this.dialog.setAttribute('aria-label', t(touchScreen() ? 'touch.dialog' : 'keys.title'));
+    // on a touch screen the gestures come first; the keys stay for a keyboard attached to it
+    this.dialog.replaceChildren(close, ...(touchScreen() ? [...gestures, ...keyboard] : [...keyboard, ...gestures]));
+  }
+}
