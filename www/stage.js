@@ -4,25 +4,24 @@
 // its state and reports every change, it never touches the URL itself.
 //
 // Data goes one way. The state — scene, parameters, input (the reader's edit), exercise, the
-// paper's figure, imported data, language — changes only in the methods of this class
-// (enter, setParam, setInput, openTask, setLanguage, …); each asks the core for what the state
-// shows (session.js: the scene's create()), and the parts of the stage (stage/*.js: controls,
-// player, paper card, edit host, exercise host, results, announcer, shortcuts, layout) show it.
-// A part asks for a change by calling one of these methods; none changes the state itself.
-import { start } from './core.js';
+// paper's figure, imported data, language — changes only in the methods of this class (setParam,
+// setInput, setLanguage, reset, …) and in opening a scene or an exercise (stage/open.js); each
+// asks the core for what the state shows (session.js: the scene's create()), and the parts of the
+// stage (stage/*.js: controls, player, paper card, edit host, exercise host, results, announcer,
+// shortcuts, layout) show it. A part asks for a change by calling one of these methods; none
+// changes the state itself.
 import { Viewer } from './viewer.js';
 import { SceneSession } from './session.js';
-import { defaults, withChoices } from './scene.js';
+import { defaults } from './scene.js';
 import { translator, pickLanguage } from './i18n/translate.js';
-import { buildControls } from './ui/controls.js';
 import { readoutSentence } from './ui/readout.js';
 import { showLegend } from './ui/legend.js';
 import { appendRich } from './ui/richtext.js';
-import { Player } from './ui/player.js';
 import { refineInWorker } from './compute.js';
-import { canFullscreen } from './platform.js';
-import { copyInput, fitsSets, inputOf } from './edit/input.js';
-import { stageElements, labelButton } from './stage/elements.js';
+import { copyInput, inputOf } from './edit/input.js';
+import { stageElements } from './stage/elements.js';
+import { enterScene, openScene, openTask } from './stage/open.js';
+import { wireToolbar, labelToolbar } from './stage/toolbar.js';
 import { arrange, covered } from './stage/layout.js';
 import { Announcer } from './stage/announcer.js';
 import { PlayerRow } from './stage/player-row.js';
@@ -31,26 +30,12 @@ import { EditHost } from './stage/edit-host.js';
 import { ExerciseHost } from './stage/exercise-host.js';
 import { Results } from './stage/results.js';
 import { Shortcuts } from './stage/shortcuts.js';
-import { touchScreen } from './stage/touch.js';
 
 /**
- * @typedef {object} StageOptions
- * @property {boolean} [controls]   show the controls (and the readout)
- * @property {boolean} [text]       show the explanation
- * @property {string | null} [lang]
- * @property {boolean} [page]       the stage is the page's (the page scrolls; a narrow view stays at the top of the screen)
- * @property {boolean} [editable]   the reader may drag the scene's handles (the page; <ruled-view editable>)
- * @property {(data: import('./scene.js').ImportedData) => void} [onEditAsData]   "Edit as data" of a
- *   scene without handles: show its sample as your data (the "data" scene)
- * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input', ended: boolean}) => void} [onChange]
- * @property {(type: 'check' | 'solved', report: import('./task/panel.js').TaskReport) => void} [onTask]
- *   an exercise was checked, or solved
- * @property {() => void} [onLeaveTask]   the reader leaves the exercise (the page; an element has no Leave)
- * @property {(error: unknown, message: string) => void} [onError]   with the sentence shown
- * @property {(built: import('./scene.js').Built) => void} [onBuilt]
+ * @typedef {import('./stage/options.js').StageOptions} StageOptions
+ * @typedef {import('./stage/options.js').OpenOptions} OpenOptions
+ * @typedef {import('./stage/options.js').Notes} Notes
  */
-
-/** @typedef {Array<{key: string, note: string, vars?: Record<string, string>}>} Notes */
 
 export class Stage {
   /**
@@ -96,14 +81,17 @@ export class Stage {
     this.viewer.insets = () => covered(els);
     /** @internal */
     this.session = new SceneSession(this.viewer, {
-      onBuilt: (built, final) => this.shown(built, final),
+      onBuilt: (built, final) => {
+        this.results.show(built, final);
+        options.onBuilt?.(built);
+      },
       onError: (e) => this.fail(e),
       onProgress: (f) => {
         els.progress.hidden = f === null;
         if (f !== null) els.progressBar.value = f;
       },
     });
-    /** @internal @type {ReturnType<typeof buildControls> | null} */
+    /** @internal @type {ReturnType<typeof import('./ui/controls.js').buildControls> | null} */
     this.controls = null;
     // the parts, each showing a piece of the state
     /** @internal */
@@ -128,24 +116,7 @@ export class Stage {
       this.report('camera', ended);
       if (ended) this.announce();
     };
-    els.buttons.fit.addEventListener('click', () => {
-      this.viewer.fit();
-      this.report('camera', true);
-    });
-    els.buttons.reset.addEventListener('click', () => this.reset());
-    els.buttons.fullscreen.addEventListener('click', () => this.toggleFullscreen());
-    els.buttons.help.addEventListener('click', () => this.shortcuts.open());
-    els.cancel.addEventListener('click', () => {
-      this.session.dispose();
-      els.progress.hidden = true;
-    });
-    els.root.addEventListener('keydown', (e) => this.shortcuts.key(e));
-    // the page's stage also takes the keys pressed with nothing focused (undo after a drag elsewhere)
-    /** @internal */
-    this.onDocumentKey = (/** @type {KeyboardEvent} */ e) => {
-      if (e.target === host.ownerDocument.body) this.shortcuts.key(e);
-    };
-    if (options.page) host.ownerDocument.addEventListener('keydown', this.onDocumentKey);
+    wireToolbar(this);
     /** @internal */
     this.resize = new ResizeObserver(() => arrange(this));
     this.resize.observe(els.root);
@@ -186,24 +157,7 @@ export class Stage {
 
   /** @internal The texts that depend on the language but not on the scene. */
   localize() {
-    const { t } = this.i18n;
-    const { canvas, buttons, cancel, legend, form, readout } = this.els;
-    canvas.setAttribute('aria-label', t('view.label'));
-    labelButton(buttons.fit, '⌂', t('view.fit'));
-    buttons.fit.title = t('view.fitTitle');
-    labelButton(buttons.reset, '↺', t('view.reset'));
-    buttons.reset.title = t('view.resetTitle');
-    labelButton(buttons.fullscreen, '⤢', t('view.fullscreen'));
-    // a frame without allow="fullscreen" cannot: no button that does nothing
-    buttons.fullscreen.hidden = !canFullscreen(canvas.ownerDocument);
-    buttons.help.textContent = '?';
-    buttons.help.setAttribute('aria-label', t('view.shortcuts'));
-    buttons.help.title = t('view.shortcuts');
-    cancel.textContent = t('view.cancel');
-    legend.setAttribute('aria-label', t('view.legend'));
-    form.setAttribute('aria-label', t('panel.controls'));
-    readout.setAttribute('aria-label', t('panel.readout'));
-    this.els.hint.textContent = t(touchScreen() ? 'view.hintTouch' : 'view.hintMouse');
+    labelToolbar(this);
     this.shortcuts.localize();
     this.edit.localize();
   }
@@ -247,33 +201,8 @@ export class Stage {
    * @param {import('./scene.js').Scene | null} [scene]
    * @param {{params?: import('./scene.js').Params, input?: import('./scene.js').Input | null, camera?: number[] | null, notes?: Notes}} [state]
    */
-  async openTask(task, scene = null, state = {}) {
-    if (!task || !scene) {
-      this.leaveTask();
-      if (this.scene)
-        this.enter(this.scene, this.params, { camera: this.viewer.camera.toArray(), fit: false, input: this.input });
-      return;
-    }
-    this.task = task;
-    this.paper = null;
-    this.exercise.take(task);
-    const kept = Object.fromEntries(Object.entries(state.params ?? {}).filter(([k]) => task.change.includes(k)));
-    const input = task.change.includes('handles') && state.input ? state.input : this.exercise.input;
-    await this.open(
-      scene,
-      { ...withChoices(scene, task.params), ...kept },
-      { camera: state.camera ?? null, input, notes: state.notes ?? [], task: true },
-    );
-    this.exercise.panel.show(task);
-    this.edit.show();
-  }
-
-  /** @internal Leaves the exercise shown (if any); the scene stays. */
-  leaveTask() {
-    if (!this.task) return;
-    this.task = null;
-    this.exercise.take(null);
-    this.exercise.panel.show(null);
+  openTask(task, scene = null, state = {}) {
+    return openTask(this, task, scene, state);
   }
 
   /** Back to the exercise's start (its parameters and edit). */
@@ -313,29 +242,10 @@ export class Stage {
    * Opens a scene with `params` (missing ones take their defaults).
    * @param {import('./scene.js').Scene} scene
    * @param {import('./scene.js').Params} params
-   * @param {{camera?: number[] | null, fit?: boolean, data?: import('./scene.js').ImportedData | null, notes?: Notes, autoplay?: boolean, paper?: import('./paper.js').PaperPreset | null, input?: import('./scene.js').Input | null, inputNote?: string, task?: boolean}} [options]
-   *   task: the exercise shown stays (openTask); otherwise opening a scene leaves it
+   * @param {OpenOptions} [options]
    */
-  async open(scene, params, options = {}) {
-    if (!options.task) this.leaveTask();
-    try {
-      await start();
-    } catch (e) {
-      this.fail(e);
-      throw e;
-    }
-    if (options.data !== undefined) this.data = options.data;
-    this.paper = options.paper && options.paper.scene === scene.id ? options.paper : null;
-    const notes = [...(options.notes ?? [])];
-    this.inputNote = options.inputNote ?? '';
-    const input = options.input ?? null;
-    const fits = this.enter(scene, { ...defaults(scene), ...params }, { camera: options.camera ?? null, input });
-    if (!fits) notes.push({ key: 'input', note: 'note.badInput' });
-    this.results.notes(notes);
-    if (options.autoplay && !Player.reducedMotion()) {
-      const key = this.player.playableKey();
-      if (key) this.player.toggle(key);
-    }
+  open(scene, params, options = {}) {
+    return openScene(this, scene, params, options);
   }
 
   /**
@@ -353,53 +263,14 @@ export class Stage {
   }
 
   /**
-   * Shows `scene` with `params`: its texts and controls, then what the core computes, the
-   * built-in input first (its handles set the box they stay in and say what was edited), then
-   * `input` where it fits the scene's handles.
+   * @internal Shows `scene` with `params` (stage/open.js's enterScene); returns whether the
+   * input given (if any) fits the scene's handles.
    * @param {import('./scene.js').Scene} scene
    * @param {import('./scene.js').Params} params
-   * @param {{camera?: number[] | null, fit?: boolean, input?: import('./scene.js').Input | null, history?: boolean}} options
-   *   history: keep the edit's undo steps (a change of language)
-   * @returns {boolean} whether the input given (if any) fits
-   * @internal
+   * @param {import('./stage/open.js').EnterOptions} options
    */
-  enter(scene, params, { camera = null, fit = true, input = null, history = false }) {
-    if (this.scene !== scene) this.player.stop();
-    this.input = null;
-    if (!history) this.editor.cancel();
-    this.scene = scene;
-    this.params = { ...params };
-    this.preview(scene);
-    // (an exercise may hide the explanation where it would say the answer)
-    this.els.text.hidden = !this.showText || !!this.task?.hide.includes('text');
-    this.controls = buildControls(this.els.form, scene, this.params, this.i18n, {
-      onChange: (key, value, ended) => this.setParam(key, value, ended),
-      onPlay: (key) => this.player.toggle(key),
-      fixed: (p) => this.heldReason(p.key),
-    });
-    // an exercise's hidden parameters (an answer-revealing layer) are not shown at all
-    for (const key of this.task?.hide ?? []) {
-      const row = this.controls.rows.get(key)?.row;
-      if (row) row.hidden = true;
-    }
-    this.controls.fit();
-    this.player.build();
-    this.paperCard.show();
-    const editable = this.compute({ fit: fit && !camera })?.input;
-    if (history) this.editor.show(editable);
-    else this.editor.enter(editable);
-    const fits = !input || (!!editable && fitsSets(input, editable.sets));
-    if (input && fits) {
-      this.input = copyInput(input);
-      this.compute();
-      this.controls.update(this.params);
-    }
-    this.edit.show();
-    if (camera) {
-      this.viewer.camera.fromArray(camera);
-      this.viewer.requestRender();
-    }
-    return fits;
+  enter(scene, params, options) {
+    return enterScene(this, scene, params, options);
   }
 
   /**
@@ -466,13 +337,6 @@ export class Stage {
     return built;
   }
 
-  /** @internal After a computation: what the parts show of it. */
-  shown(/** @type {import('./scene.js').Built} */ built, /** @type {boolean} */ final) {
-    if (!this.scene) return;
-    this.results.show(built, final);
-    this.options.onBuilt?.(built);
-  }
-
   /**
    * @internal Shows an error in the view (and next to the control it concerns), in the view's
    * language; the last picture stays. Returns the sentence shown.
@@ -516,7 +380,7 @@ export class Stage {
     this.session.dispose();
     this.viewer.dispose();
     this.resize.disconnect();
-    this.host.ownerDocument.removeEventListener('keydown', this.onDocumentKey);
+    this.shortcuts.dispose();
     this.els.root.remove();
   }
 }

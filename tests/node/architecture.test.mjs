@@ -1,6 +1,8 @@
 // The page's modules keep their places (ARCHITECTURE.md): no scene imports another scene (what
 // two share lives in a module named for what it is: figures/, catalogue.js, …), the figures and
-// everything below them import no scene, and the module graph has no cycle.
+// everything below them import no scene, the module graph has no cycle, nothing the package
+// ships (everything but www/page/) imports the page's shell, and every file stays small enough
+// to read in one sitting.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync, statSync } from 'node:fs';
@@ -69,4 +71,23 @@ test('the page’s module graph has no cycle', () => {
   };
   for (const m of g.keys()) visit(m, []);
   assert.deepEqual(cycles, []);
+});
+
+test('what ruledlab/view ships imports nothing of the page’s shell (www/page/, left out of the package)', () => {
+  const wrong = [];
+  for (const [m, deps] of graph())
+    if (!m.startsWith('page/')) for (const d of deps) if (d.startsWith('page/')) wrong.push(`${m} imports ${d}`);
+  assert.deepEqual(wrong, []);
+  const pkg = JSON.parse(readFileSync(new URL('../../package.json', import.meta.url), 'utf8'));
+  assert.ok(pkg.files.includes('!www/page/'), 'package.json ships www/page/');
+});
+
+test('no file of www/ over 600 lines; the stage and its parts under 400', () => {
+  const long = [];
+  for (const m of graph().keys()) {
+    const lines = readFileSync(join(WWW, m), 'utf8').split('\n').length;
+    const limit = m === 'stage.js' || m.startsWith('stage/') ? 400 : 600;
+    if (lines > limit) long.push(`${m}: ${lines} lines (at most ${limit})`);
+  }
+  assert.deepEqual(long, []);
 });

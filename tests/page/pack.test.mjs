@@ -43,6 +43,12 @@ before(async () => {
     !files.some((f) => f.startsWith('src/') || f.startsWith('tests/') || f.startsWith('target/')),
     'the package ships sources or tests',
   );
+  // the element and what it needs, not the page's shell (its header, Share, the author, the app)
+  assert.deepEqual(
+    files.filter((f) => f.startsWith('www/page/') || f === 'index.html'),
+    [],
+    'the package ships the page',
+  );
 });
 after(async () => browser?.close());
 

@@ -6,12 +6,11 @@
 // hands the new input to the core and draws what comes back; one drag (or one run of key moves on
 // a handle) is one step of undo, which restores the input bit for bit.
 import { copyInput, inputOf, sameInput } from './input.js';
+import { HandleMarks } from './marks.js';
 import { clampTo, dragTo, editBox, invertRigid, nearest, pointerRay, toScreen, transformPoint } from './geometry.js';
 import { normalize, sub, cross, add, scale } from '../math.js';
 import { DRAG_SLOP, EDIT_BOX, HANDLE_REACH, HANDLE_REACH_COARSE, KEY_STEP, LONG_PRESS } from '../limits.js';
 
-/** Least time between two announcements of a moving handle (ms). */
-const SAY_EVERY = 1000;
 /** A run of key moves on one handle ends after this pause (ms): it is one step of undo. */
 const KEY_RUN = 1000;
 
@@ -48,7 +47,6 @@ export class Editor {
     this.view = view;
     this.viewer = viewer;
     this.hooks = hooks;
-    const doc = view.ownerDocument;
     /** whether handles may be grabbed at all (<ruled-view editable>, #embed&edit, the page) */
     this.enabled = false;
     /** keyboard editing: every handle shown, arrows move the selected one */
@@ -83,16 +81,8 @@ export class Editor {
     /** @type {import('../scene.js').Input | null} the input waiting for the next animation frame */
     this.pending = null;
     this.frame = 0;
-    this.lastSaid = 0;
-    this.sayTimer = 0;
-
-    this.layer = Object.assign(doc.createElement('div'), { className: 'rl-handles' });
-    this.layer.setAttribute('aria-hidden', 'true');
-    this.tip = Object.assign(doc.createElement('div'), { className: 'rl-handle-tip', hidden: true });
-    this.layer.append(this.tip);
-    view.append(this.layer);
-    /** @type {HTMLElement[]} */
-    this.marks = [];
+    /** the handles drawn over the view, the tip beside one, and their words */
+    this.marks = new HandleMarks(this);
 
     // before the camera (capture): a press on a handle is a drag, anywhere else the camera's
     view.addEventListener('pointerdown', (e) => this.down(e), { capture: true });
@@ -388,12 +378,12 @@ export class Editor {
     const drag = this.drag;
     if (!drag) return;
     clearTimeout(drag.timer);
-    clearTimeout(this.sayTimer);
+    this.marks.quiet();
     const said = this.describe(drag.handle);
     this.drag = null;
     this.pending = null;
     cancelAnimationFrame(this.frame);
-    this.tip.hidden = true;
+    this.marks.hideTip();
     if (drag.moved && !sameInput(drag.working, drag.initial)) {
       this.record(drag.before);
       this.hooks.apply(drag.working, true, said);
@@ -411,7 +401,7 @@ export class Editor {
     this.drag = null;
     this.pending = null;
     cancelAnimationFrame(this.frame);
-    this.tip.hidden = true;
+    this.marks.hideTip();
     if (drag.moved) this.hooks.apply(drag.before, true);
     this.hooks.changed();
     this.viewer.requestRender();
@@ -535,7 +525,7 @@ export class Editor {
     const run = this.keyRun;
     if (!run) return;
     clearTimeout(run.timer);
-    clearTimeout(this.sayTimer);
+    this.marks.quiet();
     const said = this.describe(run.handle);
     this.keyRun = null;
     if (!sameInput(run.working, run.initial)) {
@@ -554,94 +544,37 @@ export class Editor {
     this.hooks.changed();
   }
 
-  // —— words and pictures ——————————————————————————————————————————————————————
+  // —— words and pictures (edit/marks.js) ——————————————————————————————————————
 
   /** A handle in words: "ruling 5, end b: 1.20, −0.40, 3.00". */
   describe(/** @type {number} */ k) {
-    const handle = this.handles()[k];
-    if (!handle) return '';
-    const i18n = this.hooks.i18n();
-    return `${this.nameOf(handle)}: ${coordinates(handle.point, i18n.lang)}`;
+    return this.marks.describe(k);
   }
 
   /** The name of a handle ("ruling 5, end b"). */
   nameOf(/** @type {Handle} */ handle) {
-    const { t } = this.hooks.i18n();
-    const set = this.sets[handle.set];
-    const line = set.shape === 'pairs' ? handle.index >> 1 : handle.index;
-    const end = set.ends ? t(set.ends[handle.index & 1]) : '';
-    /** @type {Record<string, string>} */
-    const vars = { i: String(line), end };
-    if (set.cols) Object.assign(vars, { row: String(Math.floor(line / set.cols)), col: String(line % set.cols) });
-    return t(set.name, vars);
+    return this.marks.nameOf(handle);
   }
 
   /** @internal Says where handle `k` is, at most once a second (the last position wins). */
   sayLater(/** @type {number} */ k) {
-    clearTimeout(this.sayTimer);
-    const wait = this.lastSaid + SAY_EVERY - performance.now();
-    const say = () => {
-      this.lastSaid = performance.now();
-      this.hooks.say(this.describe(k));
-    };
-    if (wait <= 0) say();
-    else this.sayTimer = window.setTimeout(say, wait);
+    this.marks.sayLater(k);
   }
 
   /** @internal Shows the coordinates of handle `k` beside it (a long press, a drag). */
   showTip(/** @type {number} */ k) {
-    this.tip.textContent = this.describe(k);
-    this.tip.hidden = false;
-    this.tip.dataset.handle = String(k);
-    this.viewer.requestRender();
+    this.marks.showTip(k);
   }
 
-  /**
-   * Draws the handles over the view after a frame (every one while editing; else the one under
-   * the pointer or dragged), the selected one marked.
-   * @param {ArrayLike<number>} viewProj
-   */
+  /** Draws the handles over the view after a frame. @param {ArrayLike<number>} viewProj */
   place(viewProj) {
-    const doc = this.view.ownerDocument;
-    const { clientWidth: w, clientHeight: h } = this.viewer.canvas;
-    const all = this.active ? this.handles() : [];
-    const dragged = this.drag?.handle ?? -1;
-    const shown = all
-      .map((handle, k) => ({ handle, k }))
-      .filter(({ k }) => this.editing || k === this.hover || k === dragged);
-    while (this.marks.length < shown.length) {
-      const mark = Object.assign(doc.createElement('span'), { className: 'rl-handle' });
-      this.layer.append(mark);
-      this.marks.push(mark);
-    }
-    this.marks.forEach((mark, i) => {
-      const item = shown[i];
-      if (!item) {
-        mark.hidden = true;
-        return;
-      }
-      const s = toScreen(viewProj, item.handle.world, w, h);
-      mark.hidden = !s.visible;
-      mark.style.transform = `translate(${s.x}px, ${s.y}px)`;
-      mark.classList.toggle('rl-hover', item.k === this.hover || item.k === dragged);
-      mark.classList.toggle('rl-selected', this.editing && item.k === this.selected);
-      mark.dataset.handle = String(item.k);
-    });
-    if (!this.tip.hidden) {
-      const k = Number(this.tip.dataset.handle);
-      const handle = all[k];
-      if (handle) {
-        const s = toScreen(viewProj, handle.world, w, h);
-        this.tip.style.transform = `translate(${Math.min(s.x + 14, w - this.tip.offsetWidth - 4)}px, ${Math.max(4, s.y - 34)}px)`;
-      }
-    }
+    this.marks.place(viewProj);
   }
 
   /** Forgets timers and listeners' work in progress. */
   dispose() {
     this.cancel();
-    clearTimeout(this.sayTimer);
-    this.layer.remove();
+    this.marks.dispose();
   }
 }
 
@@ -656,12 +589,6 @@ function boxOf(/** @type {import('../scene.js').HandleSet[]} */ sets) {
         if (points[i + k] > max[k]) max[k] = points[i + k];
       }
   return { min, max };
-}
-
-/** Coordinates as the language writes them: "1.20, −0.40, 3.00" (German: "1,20; −0,40; 3,00"). */
-export function coordinates(/** @type {number[]} */ p, /** @type {string} */ lang) {
-  const f = new Intl.NumberFormat(lang, { minimumFractionDigits: 2, maximumFractionDigits: 2, useGrouping: false });
-  return p.map((x) => f.format(Math.abs(x) < 0.005 ? 0 : x).replace('-', '−')).join(lang === 'de' ? '; ' : ', ');
 }
 
 /** Whether the main pointer is coarse (a finger). */

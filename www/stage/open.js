@@ -1,9 +1,14 @@
-// Opening what a link or an element asks for, in a stage: an exercise (a built-in one's id, the
-// page's "j." link value, or a Task) with the reader's progress, or else a scene with its
-// parameters, the paper's figure, an edit and a camera. One function for the page (its address)
-// and for <ruled-view> (its attributes), so both read an exercise the same way.
+// Opening in a stage: a scene (with its parameters, the paper's figure, imported data, an edit,
+// a camera; the core started first) or an exercise (its start, what it holds, the reader's
+// progress) — the stage's state changes here and in stage.js only. And one function for what a
+// link (the page's address) or an element (its attributes) asks for, so both read an exercise the
+// same way.
+import { start } from '../core.js';
 import { SCENES } from '../scenes/index.js';
-import { withChoices } from '../scene.js';
+import { defaults, withChoices } from '../scene.js';
+import { Player } from '../ui/player.js';
+import { buildControls } from '../ui/controls.js';
+import { copyInput, fitsSets } from '../edit/input.js';
 import { builtInTask } from '../task/builtin.js';
 import { taskFromLink } from '../task/format.js';
 import { fitTask } from '../task/check.js';
@@ -79,4 +84,132 @@ export async function openExercise(stage, value, progress = {}) {
   });
   const { params, ...rest } = progress;
   await stage.openTask(task, scene, { ...rest, params: params?.(scene) ?? {} });
+}
+
+/**
+ * Opens `scene` in `stage` (Stage.open): the core started, its parameters (missing ones take
+ * their defaults), the paper's figure if it is this scene's, the notes said, autoplay unless the
+ * reader prefers reduced motion. Opening a scene leaves the exercise shown, unless `options.task`.
+ * @param {import('../stage.js').Stage} stage
+ * @param {import('../scene.js').Scene} scene
+ * @param {import('../scene.js').Params} params
+ * @param {import('../stage.js').OpenOptions} options
+ */
+export async function openScene(stage, scene, params, options) {
+  if (!options.task) leaveTask(stage);
+  try {
+    await start();
+  } catch (e) {
+    stage.fail(e);
+    throw e;
+  }
+  if (options.data !== undefined) stage.data = options.data;
+  stage.paper = options.paper && options.paper.scene === scene.id ? options.paper : null;
+  const notes = [...(options.notes ?? [])];
+  stage.inputNote = options.inputNote ?? '';
+  const input = options.input ?? null;
+  const fits = stage.enter(scene, { ...defaults(scene), ...params }, { camera: options.camera ?? null, input });
+  if (!fits) notes.push({ key: 'input', note: 'note.badInput' });
+  stage.results.notes(notes);
+  if (options.autoplay && !Player.reducedMotion()) {
+    const key = stage.player.playableKey();
+    if (key) stage.player.toggle(key);
+  }
+}
+
+/**
+ * Opens `task` in `stage` (Stage.openTask): its scene at its start, what it lets change (its
+ * parameters from `state`, and the reader's edit where handles may move), the rest held; null
+ * leaves the exercise (the scene stays).
+ * @param {import('../stage.js').Stage} stage
+ * @param {import('../task/format.js').Task | null} task
+ * @param {import('../scene.js').Scene | null} scene
+ * @param {{params?: import('../scene.js').Params, input?: import('../scene.js').Input | null, camera?: number[] | null, notes?: import('../stage.js').Notes}} state
+ */
+export async function openTask(stage, task, scene, state) {
+  if (!task || !scene) {
+    leaveTask(stage);
+    if (stage.scene)
+      stage.enter(stage.scene, stage.params, { camera: stage.viewer.camera.toArray(), fit: false, input: stage.input });
+    return;
+  }
+  stage.task = task;
+  stage.paper = null;
+  stage.exercise.take(task);
+  const kept = Object.fromEntries(Object.entries(state.params ?? {}).filter(([k]) => task.change.includes(k)));
+  const input = task.change.includes('handles') && state.input ? state.input : stage.exercise.input;
+  await openScene(
+    stage,
+    scene,
+    { ...withChoices(scene, task.params), ...kept },
+    { camera: state.camera ?? null, input, notes: state.notes ?? [], task: true },
+  );
+  stage.exercise.panel.show(task);
+  stage.edit.show();
+}
+
+/** Leaves the exercise shown in `stage` (if any); the scene stays. @param {import('../stage.js').Stage} stage */
+function leaveTask(stage) {
+  if (!stage.task) return;
+  stage.task = null;
+  stage.exercise.take(null);
+  stage.exercise.panel.show(null);
+}
+
+/**
+ * How a scene is shown (Stage.enter).
+ * @typedef {object} EnterOptions
+ * @property {number[] | null} [camera]   the camera to show it from (default: fitted, if `fit`)
+ * @property {boolean} [fit]
+ * @property {import('../scene.js').Input | null} [input]   an edit to show (kept only where it fits the scene's handles)
+ * @property {boolean} [history]   keep the edit's undo steps (a change of language)
+ */
+
+/**
+ * Shows `scene` with `params` in `stage`: its texts and controls, then what the core computes,
+ * the built-in input first (its handles set the box they stay in and say what was edited), then
+ * `input` where it fits the scene's handles. Returns whether the input given (if any) fits.
+ * @param {import('../stage.js').Stage} stage
+ * @param {import('../scene.js').Scene} scene
+ * @param {import('../scene.js').Params} params
+ * @param {EnterOptions} options
+ */
+export function enterScene(stage, scene, params, { camera = null, fit = true, input = null, history = false }) {
+  if (stage.scene !== scene) stage.player.stop();
+  stage.input = null;
+  if (!history) stage.editor.cancel();
+  stage.scene = scene;
+  stage.params = { ...params };
+  stage.preview(scene);
+  // (an exercise may hide the explanation where it would say the answer)
+  stage.els.text.hidden = !stage.showText || !!stage.task?.hide.includes('text');
+  const controls = buildControls(stage.els.form, scene, stage.params, stage.i18n, {
+    onChange: (key, value, ended) => stage.setParam(key, value, ended),
+    onPlay: (key) => stage.player.toggle(key),
+    fixed: (p) => stage.heldReason(p.key),
+  });
+  stage.controls = controls;
+  // an exercise's hidden parameters (an answer-revealing layer) are not shown at all
+  for (const key of stage.task?.hide ?? []) {
+    const row = controls.rows.get(key)?.row;
+    if (row) row.hidden = true;
+  }
+  controls.fit();
+  stage.player.build();
+  stage.paperCard.show();
+  const editable = stage.compute({ fit: fit && !camera })?.input;
+  if (history) stage.editor.show(editable);
+  else stage.editor.enter(editable);
+  const fits = !input || (!!editable && fitsSets(input, editable.sets));
+  if (input && fits) {
+    stage.input = copyInput(input);
+    stage.compute();
+    controls.update(stage.params);
+  }
+  stage.edit.show();
+  if (camera) {
+    stage.viewer.camera.fromArray(camera);
+    stage.viewer.requestRender();
+  }
+  return fits;
 }

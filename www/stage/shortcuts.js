@@ -47,6 +47,17 @@ export class Shortcuts {
   constructor(stage) {
     this.stage = stage;
     this.dialog = stage.els.shortcuts;
+    stage.els.root.addEventListener('keydown', (e) => this.key(e));
+    // the page's stage also takes the keys pressed with nothing focused (undo after a drag elsewhere)
+    this.onDocumentKey = (/** @type {KeyboardEvent} */ e) => {
+      if (e.target === stage.host.ownerDocument.body) this.key(e);
+    };
+    if (stage.options.page) stage.host.ownerDocument.addEventListener('keydown', this.onDocumentKey);
+  }
+
+  /** Stops listening to the document's keys. */
+  dispose() {
+    this.stage.host.ownerDocument.removeEventListener('keydown', this.onDocumentKey);
   }
 
   /** Handles a key pressed in the stage (or, on the page, with nothing focused). */
