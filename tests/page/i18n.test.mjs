@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import { readFileSync } from 'node:fs';
 import assert from 'node:assert/strict';
 import { pageSession, ready } from './browser.mjs';
-import en from '../../www/i18n/en.js';
+import en from '../../www/i18n/en/index.js';
 import de from '../../www/i18n/de.js';
 
 const session = pageSession();

@@ -1,8 +1,8 @@
-// English texts of exercises (www/task/): the panel, the conditions in words, the page's menu
-// of exercises, the values conditions name, and why an exercise cannot be read.
+// English texts of exercises (www/task/): the panel, the conditions in words, the values
+// conditions name, why an exercise cannot be read, and the author's form.
+// Keys: task.*, author.*, measure.*
 
 export default {
-  'app.exercises': 'Exercises',
   'task.none': '— none —',
   'task.heading': 'Exercise:',
   'task.check': 'Check',
@@ -17,8 +17,6 @@ export default {
   'task.solved': 'Solved: every condition holds.',
   'task.notSolved': 'Not solved yet: {passed} of {of:condition:conditions} met.',
   'task.holds': 'holds',
-  'io.heldInTask':
-    'The data files (OBJ, CSV, JSON, invariants) can be saved once you leave the exercise: they would hold the answer.',
   'task.held': 'The exercise holds the controls it does not ask you to change.',
   'task.heldAll': 'The scene’s controls are held: the answer goes in the field above.',
   'task.notYet': 'not yet',
@@ -39,30 +37,6 @@ export default {
   'task.out.curveMisses': 'up to {value} away, farthest at u = {at}',
   'task.out.holds': 'now {value}',
   'task.out.misses': 'now {value}: misses by {miss}',
-  'note.badTask': 'The exercise in the link could not be read ({reason}); the scene is shown without it.',
-  'element.note.badTask': 'The task attribute could not be read ({reason}); the scene is shown without it.',
-
-  'measure.striction.minAbsDelta': 'the smallest |δ| of a pair of rulings',
-  'measure.isometry.deltaMiddle': 'δ of the middle pair of rulings',
-  'measure.isometry.deltaBentMiddle': 'δ of the middle pair after bending',
-  'measure.formula.strictionStraightness':
-    'the exact striction curve’s largest distance from its fitted line, as a share of its length',
-  'measure.readout.midpointError': 'the largest distance of the striction polygon from the exact curve',
-  'measure.isometry.readout.nonDevelopability': 'the height of the conoidal model',
-  'measure.curves.readout.points': 'the number of points',
-  'measure.strip.readout.compare.midpoint': 'the midpoint rule’s largest distance from the surface',
-  'measure.strip.readout.compare.literal': 'literal (15)’s largest distance from the surface',
-  'measure.strip.readout.compare.coupled': 'the coupled scheme’s largest distance from the surface',
-  'measure.strip.readout.compare.averaged': 'the averaged scheme’s largest distance from the surface',
-  'measure.strip.readout.compare.fourPoint': 'the four-point scheme’s largest distance from the surface',
-  'measure.congruence.readout.angle': 'the largest angle of the new lines to the exact lines (rad)',
-  'measure.milling.readout.deviation': 'the largest |deviation| of the machined surface from the profile',
-  'measure.lines.readout.endpoints': 'the angle the endpoint scheme’s new rulings turn by (rad)',
-  'measure.lines.readout.lines': 'the angle the line-space scheme’s new rulings turn by (rad)',
-  'measure.focal.ellipticShare': 'the share of elliptic lines',
-  'measure.focal.hyperbolicShare': 'the share of hyperbolic lines',
-  'isometry.readout.delta': 'δ of the middle pair of rulings',
-
   'task.error.notJson': 'the exercise is not JSON: {detail}',
   'task.error.badLink': 'the link does not hold an exercise (its text after "task=j." is not one written by ruledlab)',
   'task.error.tooLong': 'the exercise is longer than {max} characters',
@@ -127,4 +101,24 @@ export default {
   'author.json': 'The exercise as JSON (README, “Exercises”)',
   'author.try': 'Try it as a reader',
   'author.close': 'Close',
+
+  'measure.striction.minAbsDelta': 'the smallest |δ| of a pair of rulings',
+  'measure.isometry.deltaMiddle': 'δ of the middle pair of rulings',
+  'measure.isometry.deltaBentMiddle': 'δ of the middle pair after bending',
+  'measure.formula.strictionStraightness':
+    'the exact striction curve’s largest distance from its fitted line, as a share of its length',
+  'measure.readout.midpointError': 'the largest distance of the striction polygon from the exact curve',
+  'measure.isometry.readout.nonDevelopability': 'the height of the conoidal model',
+  'measure.curves.readout.points': 'the number of points',
+  'measure.strip.readout.compare.midpoint': 'the midpoint rule’s largest distance from the surface',
+  'measure.strip.readout.compare.literal': 'literal (15)’s largest distance from the surface',
+  'measure.strip.readout.compare.coupled': 'the coupled scheme’s largest distance from the surface',
+  'measure.strip.readout.compare.averaged': 'the averaged scheme’s largest distance from the surface',
+  'measure.strip.readout.compare.fourPoint': 'the four-point scheme’s largest distance from the surface',
+  'measure.congruence.readout.angle': 'the largest angle of the new lines to the exact lines (rad)',
+  'measure.milling.readout.deviation': 'the largest |deviation| of the machined surface from the profile',
+  'measure.lines.readout.endpoints': 'the angle the endpoint scheme’s new rulings turn by (rad)',
+  'measure.lines.readout.lines': 'the angle the line-space scheme’s new rulings turn by (rad)',
+  'measure.focal.ellipticShare': 'the share of elliptic lines',
+  'measure.focal.hyperbolicShare': 'the share of hyperbolic lines',
 };
