@@ -1,5 +1,8 @@
 // Deutsche Erläuterungen der Szenen: Markup (HTML mit MathML) aus den eigenen Dateien des Projekts.
-import { sub, m, mr, display, frac, row } from './mathml.js';
+// Keys: striction.text, notation.text, convergence.text, isometry.text, curves.text, strip.text,
+//   congruence.text, milling.text, formula.text, focal.text, formulaCongruence.text, lines.text,
+//   large.text, data.text
+import { sub, m, mr, display, frac, row } from '../mathml.js';
 
 const fii1 = sub('f', 'i , i + 1');
 const fiim = sub('f', 'i , i − 1');
