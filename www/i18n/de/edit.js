@@ -22,9 +22,10 @@ export default {
   'edit.from': 'Bearbeitet aus: {from}.',
   'edit.restore': 'Zurück zur eingebauten Eingabe',
   'edit.reason.fixed': 'Durch Ihre Bearbeitung festgelegt: „Zurück zur eingebauten Eingabe“ gibt es frei.',
-  'edit.tooLarge': 'Diese Bearbeitung hat mehr als 200 Punkte: Der Link enthält sie nicht; dieser Tab bewahrt sie auf.',
+  'edit.tooLarge':
+    'Diese Bearbeitung hat mehr als {max} Punkte: Der Link enthält sie nicht; dieser Tab bewahrt sie auf.',
   'edit.tooLargeNoStorage':
-    'Diese Bearbeitung hat mehr als 200 Punkte: Der Link enthält sie nicht, und diese Seite kann sie nicht aufbewahren (Neuladen verliert sie).',
+    'Diese Bearbeitung hat mehr als {max} Punkte: Der Link enthält sie nicht, und diese Seite kann sie nicht aufbewahren (Neuladen verliert sie).',
   'edit.entered':
     'Bearbeiten von {count:Punkt:Punkten}: Tab geht von Punkt zu Punkt, die Pfeiltasten verschieben einen, Escape beendet.',
   'edit.left': 'Bearbeiten beendet.',

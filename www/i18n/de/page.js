@@ -55,7 +55,7 @@ export default {
   'share.copied': 'Kopiert.',
   'share.close': 'Schließen',
   'share.editTooLarge':
-    'Ihre Bearbeitung hat mehr als 200 Punkte: Link und Ausschnitte enthalten sie nicht (der Download als eine Datei schon).',
+    'Ihre Bearbeitung hat mehr als {max} Punkte: Link und Ausschnitte enthalten sie nicht (der Download als eine Datei schon).',
 
   'io.summary': 'Import und Export',
   'io.paste': 'CSV (6 Zahlen je Erzeugende) oder JSON einfügen',
@@ -64,8 +64,8 @@ export default {
   'io.staleExample': 'Die Beispieldaten bleiben zu sehen.',
   'io.stale': 'Gezeigt werden weiterhin die zuvor importierten Daten: Dieser Text konnte nicht gelesen werden.',
   'io.notStored':
-    'Dieser Import hat mehr als 200 Erzeugende: zu viele für den Link, und diese Seite hat hier keinen Speicher (sie wird in einem abgeschotteten Rahmen gezeigt), daher bleibt er nur, bis die Seite geschlossen wird.',
-  'io.stored': 'Dieser Import hat mehr als 200 Erzeugende: Er steht im Sitzungsspeicher dieses Tabs, nicht im Link.',
+    'Dieser Import hat mehr als {max} Erzeugende: zu viele für den Link, und diese Seite hat hier keinen Speicher (sie wird in einem abgeschotteten Rahmen gezeigt), daher bleibt er nur, bis die Seite geschlossen wird.',
+  'io.stored': 'Dieser Import hat mehr als {max} Erzeugende: Er steht im Sitzungsspeicher dieses Tabs, nicht im Link.',
   'io.exports': 'Das Gezeigte speichern',
   'io.kind': 'Der Text enthält',
   'io.kind.auto': 'erkennen',
@@ -110,7 +110,7 @@ export default {
   'note.unknownChoice': 'Der Wert von „{key}“ im Link ist keine der Auswahlmöglichkeiten; es gilt die Voreinstellung.',
   'note.tooLong': 'Der Wert von „{key}“ im Link ist zu lang; es gilt die Voreinstellung.',
   'note.linkTooLong':
-    'Dieser Link ist länger als 64 KiB und wurde nicht gelesen; die Seite beginnt mit ihren Voreinstellungen.',
+    'Dieser Link ist länger als {max} KiB und wurde nicht gelesen; die Seite beginnt mit ihren Voreinstellungen.',
   'note.unknownScene': 'Der Link nennt eine Szene, die es nicht gibt; die erste Szene wird gezeigt.',
   'note.badCamera': 'Die Kamera im Link konnte nicht gelesen werden; die Ansicht wird an die Szene angepasst.',
   'note.badData': 'Die Daten im Link konnten nicht gelesen werden; die Beispieldaten werden gezeigt.',

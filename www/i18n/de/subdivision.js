@@ -2,6 +2,10 @@
 // (Abschnitte 4 und 6). Beschriftungen dürfen Indizes wie R_{i,i+1} verwenden (ui/richtext.js).
 // Keys: curves.*, strip.*, lines.*, milling.*
 
+// Texte, die ohne Aufrufer mit Werten gesagt werden (Beschriftungen der Messwerte, Aussagen),
+// zitieren die Grenzen der Seite aus limits.js.
+import { TURNING_FROM, TURNING_STEPS } from '../../limits.js';
+
 export default {
   'curves.title': 'Kurvenunterteilung (Abb. 7–8)',
   'curves.scheme.chaikin': 'Chaikin (Abb. 7)',
@@ -18,14 +22,12 @@ export default {
   'curves.readout.points': 'Punkte',
   'curves.readout.w': 'Spannungsparameter w',
   'curves.readout.turning': 'größter Außenwinkel des gezeichneten Polygons (rad)',
-  'curves.readout.turningLate': 'größter Außenwinkel nach 8 → 12 Schritten (rad)',
+  'curves.readout.turningLate': `größter Außenwinkel nach ${TURNING_FROM} → ${TURNING_STEPS} Schritten (rad)`,
   'curves.plot.x': 'Schritte',
   'curves.plot.y': 'größter Außenwinkel (rad)',
   'curves.plot.title': 'Größter Außenwinkel des verfeinerten Polygons nach jedem Schritt (logarithmisch)',
-  'curves.claim.falls':
-    'Auf diesem Polygon ist der größte Außenwinkel nach 12 Schritten kleiner als nach 8, für jedes w mit 0 < w ≤ 0,17 (geschlossen) bzw. 0 < w ≤ 0,126 (offen).',
-  'curves.claim.sharp':
-    'Ab w = 0,171 (geschlossen) bzw. w = 0,127 (offen) bis 0,2 knickt das Polygon nach 12 Schritten noch irgendwo um mehr als 1 rad (57°) ab.',
+  'curves.claim.falls': `Auf diesem Polygon ist der größte Außenwinkel nach ${TURNING_STEPS} Schritten kleiner als nach ${TURNING_FROM}, für jedes w mit 0 < w ≤ 0,17 (geschlossen) bzw. 0 < w ≤ 0,126 (offen).`,
+  'curves.claim.sharp': `Ab w = 0,171 (geschlossen) bzw. w = 0,127 (offen) bis 0,2 knickt das Polygon nach ${TURNING_STEPS} Schritten noch irgendwo um mehr als 1 rad (57°) ab.`,
   'curves.describe':
     '{scheme}, {steps:Schritt:Schritte} auf einem Polygon aus acht Punkten: {points} Punkte; der größte Außenwinkel beträgt {angle} rad ({late} rad nach {last} Schritten).',
 

@@ -22,9 +22,9 @@ export default {
   'edit.from': 'Edited from: {from}.',
   'edit.restore': 'Back to the built-in input',
   'edit.reason.fixed': 'Held by your edit: “Back to the built-in input” frees it.',
-  'edit.tooLarge': 'This edit has more than 200 points: the link does not carry it; this tab keeps it.',
+  'edit.tooLarge': 'This edit has more than {max} points: the link does not carry it; this tab keeps it.',
   'edit.tooLargeNoStorage':
-    'This edit has more than 200 points: the link does not carry it, and this page cannot keep it (a reload loses it).',
+    'This edit has more than {max} points: the link does not carry it, and this page cannot keep it (a reload loses it).',
   'edit.entered': 'Editing {count:point:points}: Tab steps through them, the arrow keys move one, Escape stops.',
   'edit.left': 'Editing stopped.',
   'edit.undone': 'Undone',

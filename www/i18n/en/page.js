@@ -54,7 +54,7 @@ export default {
   'share.copied': 'Copied.',
   'share.close': 'Close',
   'share.editTooLarge':
-    'Your edit has more than 200 points: the link and the snippets do not carry it (the one-file download does).',
+    'Your edit has more than {max} points: the link and the snippets do not carry it (the one-file download does).',
 
   'io.summary': 'Import and export',
   'io.paste': 'Paste CSV (6 numbers per ruling) or JSON',
@@ -63,8 +63,9 @@ export default {
   'io.staleExample': 'The example data stays on screen.',
   'io.stale': 'The data shown is the previous import: this text could not be read.',
   'io.notStored':
-    'This import has more than 200 rulings: too many for the link, and this page has no storage here (it is shown in a sandboxed frame), so it lasts until the page is closed.',
-  'io.stored': 'This import has more than 200 rulings: it is kept in this tab\u2019s session storage, not in the link.',
+    'This import has more than {max} rulings: too many for the link, and this page has no storage here (it is shown in a sandboxed frame), so it lasts until the page is closed.',
+  'io.stored':
+    'This import has more than {max} rulings: it is kept in this tab\u2019s session storage, not in the link.',
   'io.exports': 'Save what is shown',
   'io.kind': 'The text holds',
   'io.kind.auto': 'recognise it',
@@ -107,7 +108,7 @@ export default {
   'note.clamped': 'The link\u2019s value of “{key}” is out of range; the nearest allowed value is used.',
   'note.unknownChoice': 'The link\u2019s value of “{key}” is not one of the choices; its default is used.',
   'note.tooLong': 'The link\u2019s value of “{key}” is too long; its default is used.',
-  'note.linkTooLong': 'This link is longer than 64 KiB and was not read; the page starts at its defaults.',
+  'note.linkTooLong': 'This link is longer than {max} KiB and was not read; the page starts at its defaults.',
   'note.unknownScene': 'The link names a scene that does not exist; the first scene is shown.',
   'note.badCamera': 'The link\u2019s camera could not be read; the view is fitted to the scene.',
   'note.badData': 'The link\u2019s data could not be read; the example data is shown.',

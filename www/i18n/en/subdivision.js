@@ -2,6 +2,10 @@
 // (Sections 4 and 6). Labels may use R_{i,i+1}-style subscripts (ui/richtext.js).
 // Keys: curves.*, strip.*, lines.*, milling.*
 
+// The texts said by key with no caller to fill a placeholder (readout labels, claims) quote
+// the page's limits from limits.js.
+import { TURNING_FROM, TURNING_STEPS } from '../../limits.js';
+
 export default {
   // Figs. 7–8
   'curves.title': 'Curve subdivision (Figs. 7–8)',
@@ -19,14 +23,12 @@ export default {
   'curves.readout.points': 'points',
   'curves.readout.w': 'tension w',
   'curves.readout.turning': 'largest turning angle of the polygon drawn (rad)',
-  'curves.readout.turningLate': 'largest turning angle after 8 → 12 steps (rad)',
+  'curves.readout.turningLate': `largest turning angle after ${TURNING_FROM} → ${TURNING_STEPS} steps (rad)`,
   'curves.plot.x': 'steps',
   'curves.plot.y': 'largest turning angle (rad)',
   'curves.plot.title': 'Largest turning angle of the refined polygon after each step (logarithmic)',
-  'curves.claim.falls':
-    'On this polygon the largest turning angle is smaller after 12 steps than after 8 for every w with 0 < w ≤ 0.17 (closed) or 0 < w ≤ 0.126 (open).',
-  'curves.claim.sharp':
-    'From w = 0.171 (closed) or w = 0.127 (open) up to 0.2 the polygon still turns by more than 1 rad (57°) somewhere after 12 steps.',
+  'curves.claim.falls': `On this polygon the largest turning angle is smaller after ${TURNING_STEPS} steps than after ${TURNING_FROM} for every w with 0 < w ≤ 0.17 (closed) or 0 < w ≤ 0.126 (open).`,
+  'curves.claim.sharp': `From w = 0.171 (closed) or w = 0.127 (open) up to 0.2 the polygon still turns by more than 1 rad (57°) somewhere after ${TURNING_STEPS} steps.`,
   'curves.describe':
     '{scheme}, {steps:step:steps} on an eight-point polygon: {points} points; the largest turning angle is {angle} rad ({late} rad after {last} steps).',
 
