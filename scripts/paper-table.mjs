@@ -4,7 +4,7 @@
 //   node scripts/paper-table.mjs --check   exit 1 if README.md is not current (npm test)
 import { readFileSync } from 'node:fs';
 import { PRESETS } from '../www/paper.js';
-import en from '../www/i18n/en.js';
+import en from '../www/i18n/en/index.js';
 import { README, withBlock, rewriteBlock } from './readme-block.mjs';
 
 /** An i18n text as Markdown: R_{i,j} → R<sub>i,j</sub>. */

@@ -29,7 +29,7 @@ const ASSETS = join(OUT, 'assets');
 /** The modules loaded on demand (by a dynamic import), by what they are: the test checks that
  * the first scene requests none of them. */
 const LAZY = {
-  'the other language': ['www/i18n/de.js'],
+  'the other language': ['www/i18n/de/index.js'],
   'the Share dialog': ['www/page/share.js'],
   'the figure exports': ['www/export/svg.js', 'www/export/tikz.js', 'www/export/png.js'],
   'the exercise author': ['www/page/author.js'],

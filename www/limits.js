@@ -20,7 +20,7 @@ export const DATA_COMPLEX_TOLERANCE = 1e-6;
  * up to this many (more than are drawn: smoothness shows over many steps) …
  */
 export const TURNING_STEPS = 12;
-/** … and the readout and the claims compare it with its value this many steps in (the texts say 8 and 12). */
+/** … and the readout and the claims compare it with its value this many steps in (the texts quote both). */
 export const TURNING_FROM = 8;
 
 /** The nearest the camera comes to its target, and the least radius a fitted view frames. */
@@ -49,8 +49,14 @@ export const TINY = 360;
 /** Below this width of the view, the mouse hint is left out (the toolbar needs the room). */
 export const SMALL_VIEW = 560;
 
+/** Longest hash read, in characters (imported data of up to MAX_LINK_RULINGS rulings fits at full precision). */
+export const MAX_HASH = 65536;
+/** Most rulings (or lines) of imported data kept in the link; larger imports go to session storage. */
+export const MAX_LINK_RULINGS = 200;
 /** Most handles of an edited input kept in the link; a larger edit goes to session storage. */
 export const MAX_LINK_HANDLES = 200;
+/** Longest text parameter (a formula), in characters, unless the parameter sets its own maxLength. */
+export const MAX_TEXT_PARAM = 1000;
 /** A handle is grabbed within this distance of the pointer (CSS px), on fine and on coarse pointers. */
 export const HANDLE_REACH = 10;
 export const HANDLE_REACH_COARSE = 22;
@@ -79,3 +85,39 @@ export const STRAIGHTNESS_MIN_EXTENT = 1e-3;
 export const FIGURE_TRIANGLES = 20_000;
 /** Distance of hatch lines on a surface in a black-and-white figure (CSS pixels). */
 export const HATCH_SPACING = 4;
+/** Inserted lines (or rulings) above this many are drawn in the thinner style, so they stay apart. */
+export const FINE_LINES = 400;
+/** Most points of a series in a plot drawn with markers (more would merge into a thick line). */
+export const PLOT_MARKERS = 80;
+
+// Exercises (task/format.js): what an exercise may hold; the texts quote these.
+
+/** Longest exercise read (characters of JSON). */
+export const MAX_TASK = 32768;
+/** Longest title or answer label, in characters. */
+export const MAX_TASK_TITLE = 200;
+/** Longest prompt or hint, in characters. */
+export const MAX_TASK_TEXT = 2000;
+/** Largest magnitude of a number in an exercise. */
+export const MAX_TASK_NUMBER = 1e12;
+/** Most answers, conditions and hints. */
+export const MAX_TASK_ANSWERS = 3;
+export const MAX_TASK_GOAL = 6;
+export const MAX_TASK_HINTS = 3;
+/** Points at which a typed curve is compared with the exact one, by default and at most. */
+export const TASK_SAMPLES = 50;
+export const MAX_TASK_SAMPLES = 1000;
+/** Longest id of an exercise (lowercase letters, digits and dashes). */
+export const MAX_TASK_ID = 64;
+/** The title's share of an id the author makes (then a dash and a hash of at most 7 characters: within MAX_TASK_ID). */
+export const MAX_TASK_SLUG = 40;
+/** Longest name (a parameter, a readout, a measure, an answer), in characters. */
+export const MAX_TASK_NAME = 80;
+/** Most entries of a list of names (change, hide) and of parameter values. */
+export const MAX_TASK_NAMES = 64;
+/** Longest camera of an exercise, in characters (six numbers, as the link writes them). */
+export const MAX_TASK_CAMERA = 200;
+/** Longest edited input of an exercise, in characters: no more than a link can hold. */
+export const MAX_TASK_INPUT = MAX_HASH;
+/** Most characters of the JSON parser's message an exercise's error quotes. */
+export const MAX_TASK_DETAIL = 120;

@@ -1,6 +1,7 @@
 // The scene contract: what a scene declares and what its create() returns. The page
 // (app.js), the <ruled-view> element and the one-file build read only these fields; nothing
 // of parsing, legends, wasm start-up or hash handling exists twice.
+import { MAX_TEXT_PARAM } from './limits.js';
 
 /**
  * A parameter of a scene: one control, one key in the link.
@@ -16,7 +17,7 @@
  * @property {boolean} [exact]       range: a field beside the slider takes exact values ("1/13")
  * @property {boolean} [play]        range: can be played (animated) by the player
  * @property {() => Array<[string, string]>} [options]  select: [value, i18n key of its title]
- * @property {number} [maxLength]    text: longest value (default 1000)
+ * @property {number} [maxLength]    text: longest value (default MAX_TEXT_PARAM of limits.js)
  * @property {boolean} [refit]       select: whether a change reframes the camera (default true)
  * @property {(value: number | string | boolean, params: Params) => Params} [sets]
  *   other parameters a choice sets as well (a preset fills the formula fields)
@@ -187,9 +188,6 @@ export const RESERVED_KEYS = Object.freeze([
   'edit',
   'task',
 ]);
-
-/** Longest text parameter (a formula), in characters. */
-export const MAX_TEXT_PARAM = 1000;
 
 /**
  * Checks a scene against the contract (keys unique, none reserved, defaults valid); throws at

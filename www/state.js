@@ -6,12 +6,7 @@
 import { readParams, serialize } from './scene.js';
 import { findPreset, withPreset } from './paper.js';
 import { decodeInput, encodeInput, linkableInput } from './edit/input.js';
-
-/** Longest hash read, in characters (imported data of up to 200 rulings fits at full precision). */
-export const MAX_HASH = 65536;
-
-/** Most rulings (or lines) of imported data kept in the link; larger imports go to session storage. */
-export const MAX_LINK_RULINGS = 200;
+import { MAX_HASH, MAX_LINK_RULINGS } from './limits.js';
 
 /**
  * @typedef {object} ViewState
@@ -42,7 +37,7 @@ export function readState(hash, scenes) {
   const notes = [];
   let text = String(hash ?? '').replace(/^#/, '');
   if (text.length > MAX_HASH) {
-    notes.push({ key: 'link', note: 'note.linkTooLong' });
+    notes.push({ key: 'link', note: 'note.linkTooLong', vars: { max: String(MAX_HASH / 1024) } });
     text = '';
   }
   let q = new URLSearchParams(text);

@@ -1,5 +1,5 @@
 // The core's messages in every language of the page: each reason of the core's catalogue
-// (src/error/message.rs) has a text in en-errors.js and de-errors.js using only values the core
+// (src/error/message.rs) has a text in en/errors.js and de/errors.js using only values the core
 // gives; errors through the package carry their reason and values (numbers as numbers); the
 // page's sentence is built from them in the reader's language, German decimal commas
 // included; and German formulas take decimal commas.
@@ -7,8 +7,8 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import ruledlab from './load.mjs';
-import en from '../../www/i18n/en.js';
-import de from '../../www/i18n/de.js';
+import en from '../../www/i18n/en/index.js';
+import de from '../../www/i18n/de/index.js';
 import { translator } from '../../www/i18n/index.js';
 import { describeError } from '../../www/ui/errors.js';
 

@@ -5,8 +5,8 @@ import { test } from 'node:test';
 import { readFileSync } from 'node:fs';
 import assert from 'node:assert/strict';
 import { pageSession, ready } from './browser.mjs';
-import en from '../../www/i18n/en.js';
-import de from '../../www/i18n/de.js';
+import en from '../../www/i18n/en/index.js';
+import de from '../../www/i18n/de/index.js';
 
 const session = pageSession();
 

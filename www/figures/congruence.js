@@ -6,7 +6,7 @@
 import { gridIndices } from '../../pkg/ruledlab.js';
 import { bounds } from '../scene.js';
 import { butterflyStencil } from '../diagrams/butterfly.js';
-import { ROUNDING } from '../limits.js';
+import { FINE_LINES, ROUNDING } from '../limits.js';
 
 /** The schemes: menu value → subdivide options. */
 /** @type {Record<string, (steps: number) => import('../../pkg/ruledlab.js').CongruenceSubdivideOptions>} */
@@ -56,7 +56,7 @@ export function congruenceFigure(own, grid, analytic, p, { t, format }, name, co
   const inserted = diagonal ? refined.segmentsF32() : refined.insertedF32(stride);
   const dense = diagonal ? grid : refined;
   const indices = gridIndices(dense.rows, dense.cols);
-  const fine = inserted.length / 6 > 400;
+  const fine = inserted.length / 6 > FINE_LINES;
   // Fig. 14's notation: one cell in bold, every other line faint
   const cell = p.labels && fig14Applies(p) ? fig14Cell(refined) : null;
   /** @type {import('../scene.js').Layer[]} */

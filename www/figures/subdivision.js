@@ -3,6 +3,7 @@
 // Drawn by "Your surface".
 import { stripIndices } from '../../pkg/ruledlab.js';
 import { bounds } from '../scene.js';
+import { FINE_LINES } from '../limits.js';
 
 /**
  * The subdivision figure of a sampled surface: old rulings, inserted rulings, and how far the
@@ -33,7 +34,7 @@ export function subdivisionFigure(own, analytic, ranges, p, { t }) {
       { kind: 'segments', style: 'given', positions: surface.segmentsF32() },
       {
         kind: 'segments',
-        style: refined.length > 400 ? 'insertedFine' : 'inserted',
+        style: refined.length > FINE_LINES ? 'insertedFine' : 'inserted',
         positions: refined.insertedF32(stride),
       },
       { kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(refined.length) },

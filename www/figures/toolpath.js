@@ -7,6 +7,7 @@
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { svgMaker, svgFigure } from '../svg-dom.js';
 import { SMALLEST_TEXT, marker } from '../diagrams/plot.js';
+import { PLOT_MARKERS } from '../limits.js';
 
 /** The machines of the post (the core's presets). */
 export const MACHINES = /** @type {const} */ (['table-table-ac', 'table-table-bc', 'head-table-bc', 'head-head-ac']);
@@ -143,7 +144,7 @@ export function deviationPlot(doc, { series, xLabel, yLabel, title }) {
         points: pts.map(([a, b]) => `${px(a).toFixed(2)},${py(b).toFixed(2)}`).join(' '),
       }),
     );
-    if (pts.length <= 80) for (const [a, b] of pts) g.append(marker(el, look.marker, px(a), py(b), 2.5));
+    if (pts.length <= PLOT_MARKERS) for (const [a, b] of pts) g.append(marker(el, look.marker, px(a), py(b), 2.5));
     svg.append(g);
     const ly = pad.t + 14 + 17 * k;
     const key = el('g', {});

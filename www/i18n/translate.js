@@ -1,9 +1,9 @@
-// Languages: every visible text comes from a per-language table (en.js, de.js) by key, and
+// Languages: every visible text comes from a per-language table (en/, de/) by key, and
 // numbers are formatted for the language (decimal comma in German). A translator is made
 // per view, so two <ruled-view> elements in different languages can share a page. English is
 // always here; another language is loaded on demand (loadLanguage): the page loads only the
 // language it shows. i18n/index.js is this module with every language loaded.
-import en from './en.js';
+import en from './en/index.js';
 
 /** The tables of the languages loaded so far. @type {Record<string, Record<string, string>>} */
 export const LANGUAGES = { en };
@@ -13,7 +13,7 @@ export const LANGUAGES = { en };
  * so a page in English never loads the German tables).
  * @type {Record<string, () => Promise<{default: Record<string, string>}>>}
  */
-const LOADERS = { de: () => import('./de.js') };
+const LOADERS = { de: () => import('./de/index.js') };
 
 /** Codes of the languages offered. */
 export const LANGUAGE_CODES = ['en', ...Object.keys(LOADERS)];

@@ -8,6 +8,7 @@ import { readTask, writeTask } from '../task/format.js';
 import { checkGoal, measuresOf } from '../task/check.js';
 import { describeCondition, statedNumber, valueName } from '../task/words.js';
 import { encodeInput, decodeInput } from '../edit/input.js';
+import { MAX_TASK_HINTS, MAX_TASK_SLUG, MAX_TASK_TEXT, MAX_TASK_TITLE } from '../limits.js';
 
 /**
  * @typedef {import('../task/format.js').Task} Task
@@ -52,7 +53,7 @@ export class Author {
     this.rows = [];
     this.title = '';
     this.prompt = '';
-    this.hints = ['', '', ''];
+    this.hints = Array(MAX_TASK_HINTS).fill('');
     /** @type {string} the scene the panel was opened on */
     this.scene = '';
   }
@@ -70,7 +71,7 @@ export class Author {
       this.solution = null;
       this.title = '';
       this.prompt = '';
-      this.hints = ['', '', ''];
+      this.hints = Array(MAX_TASK_HINTS).fill('');
     }
     this.open = true;
     this.start = this.snapshot();
@@ -112,7 +113,7 @@ export class Author {
         .toLowerCase()
         .replace(/[^a-z0-9]+/g, '-')
         .replace(/^-|-$/g, '')
-        .slice(0, 40) || 'exercise'
+        .slice(0, MAX_TASK_SLUG) || 'exercise'
     }-${hash(JSON.stringify([params, start.input, this.rows]))}`;
     return readTask({
       ruledlab: 'exercise',
@@ -203,9 +204,9 @@ export class Author {
     const heading = el('h3', { textContent: t('author.heading'), id: 'rl-author-title' });
     this.box.setAttribute('aria-labelledby', heading.id);
     const intro = el('p', { className: 'rl-author-intro', textContent: t('author.intro') });
-    const title = el('input', { type: 'text', value: this.title, maxLength: 200, name: 'author-title' });
+    const title = el('input', { type: 'text', value: this.title, maxLength: MAX_TASK_TITLE, name: 'author-title' });
     title.addEventListener('input', () => (this.title = title.value));
-    const prompt = el('textarea', { rows: 4, value: this.prompt, maxLength: 2000, name: 'author-prompt' });
+    const prompt = el('textarea', { rows: 4, value: this.prompt, maxLength: MAX_TASK_TEXT, name: 'author-prompt' });
     prompt.addEventListener('input', () => (this.prompt = prompt.value));
 
     // what the reader may change, and what is hidden
@@ -328,9 +329,9 @@ export class Author {
     goal.append(add);
 
     const hints = el('fieldset', { className: 'rl-author-hints' });
-    hints.append(el('legend', { textContent: t('author.hints') }));
+    hints.append(el('legend', { textContent: t('author.hints', { max: MAX_TASK_HINTS }) }));
     this.hints.forEach((h, k) => {
-      const area = el('textarea', { rows: 2, value: h, maxLength: 2000, name: `author-hint-${k}` });
+      const area = el('textarea', { rows: 2, value: h, maxLength: MAX_TASK_TEXT, name: `author-hint-${k}` });
       area.addEventListener('input', () => (this.hints[k] = area.value));
       hints.append(field(t('author.hint', { index: k + 1 }), area));
     });

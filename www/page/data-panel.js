@@ -7,6 +7,7 @@ import { linkable } from '../state.js';
 import { describeError } from '../ui/errors.js';
 import { dataFile } from '../export/files.js';
 import { store } from '../platform.js';
+import { MAX_LINK_RULINGS } from '../limits.js';
 
 /** Session storage key of an import too large for the link. */
 export const STORED = 'ruledlab.data';
@@ -149,7 +150,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
       linkable(data) ? null : JSON.stringify({ ...data, segments: Array.from(data.segments) }),
     );
     storedNote.hidden = linkable(data);
-    storedNote.textContent = i18n().t(keptThere ? 'io.stored' : 'io.notStored');
+    storedNote.textContent = i18n().t(keptThere ? 'io.stored' : 'io.notStored', { max: MAX_LINK_RULINGS });
     onData(data);
   };
   showButton.addEventListener('click', () => show(paste.value));

@@ -18,6 +18,7 @@ import { encodeInput, linkableInput } from '../edit/input.js';
 import { download } from '../ui/download.js';
 import { oneFileWithState } from './onefile.js';
 import { place } from '../platform.js';
+import { MAX_LINK_HANDLES } from '../limits.js';
 
 /** What `npm run build` made beside the served page (dist/manifest.json names the embed script). */
 const MANIFEST = new URL('../../dist/manifest.json', import.meta.url).href;
@@ -135,7 +136,13 @@ export function shareDialog(dialog, context) {
     rows.push(element);
     // an edit too large for a link is in none of the snippets: say so
     if (stage.input && !input)
-      rows.push(el('p', { className: 'share-note', id: 'share-edit-large', textContent: t('share.editTooLarge') }));
+      rows.push(
+        el('p', {
+          className: 'share-note',
+          id: 'share-edit-large',
+          textContent: t('share.editTooLarge', { max: MAX_LINK_HANDLES }),
+        }),
+      );
     if (script.src === EMBED_FILE) {
       const embed = el('button', {
         type: 'button',

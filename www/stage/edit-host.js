@@ -7,6 +7,7 @@ import { Editor } from '../edit/editor.js';
 import { appendRich } from '../ui/richtext.js';
 import { labelButton } from './elements.js';
 import { touchScreen } from './touch.js';
+import { MAX_LINK_HANDLES } from '../limits.js';
 
 /** The sign of each way a drag moves a handle. */
 const MODE_SIGNS = { view: '⊙', line: '⤡', vertical: '↕' };
@@ -101,7 +102,10 @@ export class EditHost {
       const parts = [text, back];
       if (stage.inputNote)
         parts.push(
-          Object.assign(doc.createElement('p'), { className: 'rl-edited-note', textContent: t(stage.inputNote) }),
+          Object.assign(doc.createElement('p'), {
+            className: 'rl-edited-note',
+            textContent: t(stage.inputNote, { max: MAX_LINK_HANDLES }),
+          }),
         );
       els.edited.replaceChildren(...parts);
     }

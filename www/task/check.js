@@ -7,7 +7,8 @@
 import { evaluateFormulas } from '../../pkg/ruledlab.js';
 import { readValue, serialize } from '../scene.js';
 import { decodeInput, fitsSets } from '../edit/input.js';
-import { HIDE_WORDS, SAMPLES, TaskError } from './format.js';
+import { HIDE_WORDS, TaskError } from './format.js';
+import { TASK_SAMPLES } from '../limits.js';
 
 /**
  * @typedef {import('./format.js').Task} Task
@@ -113,7 +114,7 @@ function matches(
     state.params,
     state.context,
     /** @type {'striction' | 'distribution'} */ (c.matches),
-    c.samples ?? SAMPLES,
+    c.samples ?? TASK_SAMPLES,
   );
   if (!exact) throw new TaskError('task.error.noExact', { scene: state.scene.id });
   const width = c.matches === 'striction' ? 3 : 1;

@@ -15,23 +15,32 @@
 //   "hints": [{ "en": "…" }], "solution": { "params": {…}, "input": "…", "answers": { "s": ["u", "0", "0"] } }
 // }
 
-/** Longest exercise read (characters of JSON). */
-export const MAX_TASK = 32768;
-/** Longest title, prompt or hint, in characters. */
-const MAX_TITLE = 200;
-const MAX_TEXT = 2000;
-/** Largest magnitude of a number in an exercise. */
-const MAX_NUMBER = 1e12;
-/** Most answers, conditions and hints. */
-const MAX_ANSWERS = 3;
-const MAX_GOAL = 6;
-const MAX_HINTS = 3;
-/** Points at which a typed curve is compared with the exact one, by default and at most. */
-export const SAMPLES = 50;
+import {
+  MAX_TASK,
+  MAX_TASK_ANSWERS,
+  MAX_TASK_CAMERA,
+  MAX_TASK_DETAIL,
+  MAX_TASK_GOAL,
+  MAX_TASK_HINTS,
+  MAX_TASK_ID,
+  MAX_TASK_INPUT,
+  MAX_TASK_NAME,
+  MAX_TASK_NAMES,
+  MAX_TASK_NUMBER,
+  MAX_TASK_SAMPLES,
+  MAX_TASK_TEXT,
+  MAX_TASK_TITLE,
+  MAX_TEXT_PARAM,
+} from '../limits.js';
 
 /** What `hide` may name besides parameters and readouts: the claims under the readout, the explanation. */
 export const HIDE_WORDS = ['claims', 'text'];
-const MAX_SAMPLES = 1000;
+/** An exercise's id: a lowercase letter or digit, then letters, digits and dashes, MAX_TASK_ID in all. */
+const ID = new RegExp(`^[a-z0-9][a-z0-9-]{0,${MAX_TASK_ID - 1}}$`);
+/** A name: a letter, then letters, digits, "_", "." and "-", MAX_TASK_NAME in all. */
+const NAME = new RegExp(`^[A-Za-z][A-Za-z0-9_.-]{0,${MAX_TASK_NAME - 1}}$`);
+/** MAX_TASK_NUMBER as the reasons say it ("1e12"). */
+const LARGEST_NUMBER = MAX_TASK_NUMBER.toExponential().replace('+', '');
 
 /**
  * Words in the languages of the page (at least one; a reader of the other sees the one there is).
@@ -118,10 +127,10 @@ const ENGLISH = /** @type {Record<string, string>} */ ({
   'task.error.missing': 'The exercise lacks "{key}".',
   'task.error.type': '"{key}" must be {what}.',
   'task.error.text': '"{key}" must be a text of at most {max} characters.',
-  'task.error.number': '"{key}" must be a finite number of magnitude at most 1e12.',
+  'task.error.number': '"{key}" must be a finite number of magnitude at most {max}.',
   'task.error.count': '"{key}" may have at most {max} entries.',
   'task.error.condition': 'Condition {index} of the goal: {problem}',
-  'task.error.id': '"id" must be 1 to 64 lowercase letters, digits and dashes.',
+  'task.error.id': '"id" must be 1 to {max} lowercase letters, digits and dashes.',
   'task.error.unknownBuiltIn': 'There is no built-in exercise "{id}".',
   'task.error.unknownScene': 'The exercise names a scene that does not exist: "{scene}".',
   'task.error.unknownParam': 'The scene "{scene}" has no parameter "{key}" (in {where}).',
@@ -140,14 +149,14 @@ function englishOf(/** @type {string} */ reason, /** @type {Record<string, strin
 const isObject = (/** @type {unknown} */ x) => typeof x === 'object' && x !== null && !Array.isArray(x);
 
 /** A text without control characters (a text is shown as text: nothing in it is markup). */
-function text(/** @type {unknown} */ x, /** @type {string} */ key, max = MAX_TEXT) {
+function text(/** @type {unknown} */ x, /** @type {string} */ key, max = MAX_TASK_TEXT) {
   if (typeof x !== 'string' || x.length > max) throw new TaskError('task.error.text', { key, max });
   // biome-ignore lint/suspicious/noControlCharactersInRegex: the control characters are what is removed
   return x.replace(/[\u0000-\u0008\u000b-\u001f\u007f]/g, '').trim();
 }
 
 /** Words: { en, de? }. */
-function words(/** @type {unknown} */ x, /** @type {string} */ key, max = MAX_TEXT) {
+function words(/** @type {unknown} */ x, /** @type {string} */ key, max = MAX_TASK_TEXT) {
   if (!isObject(x)) throw new TaskError('task.error.type', { key, what: 'an object { "en": …, "de": … }' });
   const o = /** @type {Record<string, unknown>} */ (x);
   for (const k of Object.keys(o))
@@ -162,8 +171,8 @@ function words(/** @type {unknown} */ x, /** @type {string} */ key, max = MAX_TE
 
 /** A finite number of sensible size. */
 function number(/** @type {unknown} */ x, /** @type {string} */ key) {
-  if (typeof x !== 'number' || !Number.isFinite(x) || Math.abs(x) > MAX_NUMBER)
-    throw new TaskError('task.error.number', { key });
+  if (typeof x !== 'number' || !Number.isFinite(x) || Math.abs(x) > MAX_TASK_NUMBER)
+    throw new TaskError('task.error.number', { key, max: LARGEST_NUMBER });
   return x;
 }
 
@@ -176,7 +185,7 @@ function list(/** @type {unknown} */ x, /** @type {string} */ key, /** @type {nu
 
 /** A name: a parameter key, a readout key, a measure's name, an answer's id. */
 function name(/** @type {unknown} */ x, /** @type {string} */ key) {
-  if (typeof x !== 'string' || !/^[A-Za-z][A-Za-z0-9_.-]{0,79}$/.test(x))
+  if (typeof x !== 'string' || !NAME.test(x))
     throw new TaskError('task.error.type', { key, what: 'a name of letters, digits, dots and dashes' });
   return x;
 }
@@ -187,12 +196,12 @@ function params(/** @type {unknown} */ x, /** @type {string} */ key) {
   /** @type {Record<string, number | string | boolean>} */
   const out = {};
   const entries = Object.entries(/** @type {Record<string, unknown>} */ (x));
-  if (entries.length > 64) throw new TaskError('task.error.count', { key, max: 64 });
+  if (entries.length > MAX_TASK_NAMES) throw new TaskError('task.error.count', { key, max: MAX_TASK_NAMES });
   for (const [k, v] of entries) {
     name(k, `${key}`);
     if (typeof v === 'number') out[k] = number(v, `${key}.${k}`);
     else if (typeof v === 'boolean') out[k] = v;
-    else out[k] = text(v, `${key}.${k}`, 1000);
+    else out[k] = text(v, `${key}.${k}`, MAX_TEXT_PARAM);
   }
   return out;
 }
@@ -247,8 +256,8 @@ function condition(/** @type {unknown} */ x, /** @type {number} */ index, /** @t
     if (!('within' in o)) throw fail('"matches" needs "within"');
     if ('samples' in o) {
       const n = number(o.samples, `goal[${index}].samples`);
-      if (!Number.isInteger(n) || n < 2 || n > MAX_SAMPLES)
-        throw fail(`"samples" is a whole number from 2 to ${MAX_SAMPLES}`);
+      if (!Number.isInteger(n) || n < 2 || n > MAX_TASK_SAMPLES)
+        throw fail(`"samples" is a whole number from 2 to ${MAX_TASK_SAMPLES}`);
       c.samples = n;
     }
   } else if ('samples' in o) throw fail('"samples" goes with "matches"');
@@ -268,8 +277,8 @@ function solutionAnswers(/** @type {unknown} */ x, /** @type {Answer[]} */ answe
     if (!answer) throw new TaskError('task.error.unknownKey', { key: k, where: 'solution.answers' });
     const key = `solution.answers.${k}`;
     if (answer.kind === 'number') out[k] = number(v, key);
-    else if (answer.kind === 'function') out[k] = text(v, key, 1000);
-    else out[k] = list(v, key, 3).map((t, i) => text(t, `${key}[${i}]`, 1000));
+    else if (answer.kind === 'function') out[k] = text(v, key, MAX_TEXT_PARAM);
+    else out[k] = list(v, key, 3).map((t, i) => text(t, `${key}[${i}]`, MAX_TEXT_PARAM));
   }
   return out;
 }
@@ -287,7 +296,9 @@ export function readTask(source) {
     try {
       x = JSON.parse(source);
     } catch (e) {
-      throw new TaskError('task.error.notJson', { detail: String(/** @type {Error} */ (e).message).slice(0, 120) });
+      throw new TaskError('task.error.notJson', {
+        detail: String(/** @type {Error} */ (e).message).slice(0, MAX_TASK_DETAIL),
+      });
     }
   }
   if (!isObject(x)) throw new TaskError('task.error.notExercise');
@@ -297,8 +308,8 @@ export function readTask(source) {
     if (!KEYS.includes(k)) throw new TaskError('task.error.unknownKey', { key: k, where: 'the exercise' });
   for (const k of ['id', 'title', 'prompt', 'scene', 'goal'])
     if (!(k in o)) throw new TaskError('task.error.missing', { key: k });
-  if (typeof o.id !== 'string' || !/^[a-z0-9][a-z0-9-]{0,63}$/.test(o.id)) throw new TaskError('task.error.id');
-  const answers = list(o.answers ?? [], 'answers', MAX_ANSWERS).map((a, i) => {
+  if (typeof o.id !== 'string' || !ID.test(o.id)) throw new TaskError('task.error.id', { max: MAX_TASK_ID });
+  const answers = list(o.answers ?? [], 'answers', MAX_TASK_ANSWERS).map((a, i) => {
     const key = `answers[${i}]`;
     if (!isObject(a)) throw new TaskError('task.error.type', { key, what: 'an object { id, kind, label }' });
     const r = /** @type {Record<string, unknown>} */ (a);
@@ -309,15 +320,15 @@ export function readTask(source) {
     return /** @type {Answer} */ ({
       id: name(r.id, `${key}.id`),
       kind: r.kind,
-      label: words(r.label, `${key}.label`, MAX_TITLE),
+      label: words(r.label, `${key}.label`, MAX_TASK_TITLE),
     });
   });
   if (new Set(answers.map((a) => a.id)).size !== answers.length)
     throw new TaskError('task.error.type', { key: 'answers', what: 'answers with different ids' });
-  const goal = list(o.goal, 'goal', MAX_GOAL).map((c, i) => condition(c, i, answers));
+  const goal = list(o.goal, 'goal', MAX_TASK_GOAL).map((c, i) => condition(c, i, answers));
   if (!goal.length) throw new TaskError('task.error.missing', { key: 'goal[0]' });
   const names = (/** @type {unknown} */ v, /** @type {string} */ key) =>
-    list(v ?? [], key, 64).map((n, i) => name(n, `${key}[${i}]`));
+    list(v ?? [], key, MAX_TASK_NAMES).map((n, i) => name(n, `${key}[${i}]`));
   let solution = null;
   if (o.solution !== undefined) {
     if (!isObject(o.solution)) throw new TaskError('task.error.type', { key: 'solution', what: 'an object' });
@@ -327,23 +338,23 @@ export function readTask(source) {
         throw new TaskError('task.error.unknownKey', { key: k, where: 'solution' });
     solution = {
       ...(s.params !== undefined ? { params: params(s.params, 'solution.params') } : {}),
-      ...(s.input !== undefined ? { input: text(s.input, 'solution.input', 65536) } : {}),
+      ...(s.input !== undefined ? { input: text(s.input, 'solution.input', MAX_TASK_INPUT) } : {}),
       ...(s.answers !== undefined ? { answers: solutionAnswers(s.answers, answers) } : {}),
     };
   }
   return {
     id: o.id,
-    title: words(o.title, 'title', MAX_TITLE),
+    title: words(o.title, 'title', MAX_TASK_TITLE),
     prompt: words(o.prompt, 'prompt'),
     scene: name(o.scene, 'scene'),
     params: o.params === undefined ? {} : params(o.params, 'params'),
-    input: o.input === undefined ? null : text(o.input, 'input', 65536),
-    camera: o.camera === undefined ? null : text(o.camera, 'camera', 200),
+    input: o.input === undefined ? null : text(o.input, 'input', MAX_TASK_INPUT),
+    camera: o.camera === undefined ? null : text(o.camera, 'camera', MAX_TASK_CAMERA),
     change: names(o.change, 'change'),
     hide: names(o.hide, 'hide'),
     answers,
     goal,
-    hints: list(o.hints ?? [], 'hints', MAX_HINTS).map((h, i) => words(h, `hints[${i}]`)),
+    hints: list(o.hints ?? [], 'hints', MAX_TASK_HINTS).map((h, i) => words(h, `hints[${i}]`)),
     solution,
   };
 }
@@ -386,7 +397,7 @@ export function taskLink(/** @type {Task} */ task, /** @type {(id: string) => bo
 export function taskFromLink(value, builtIn) {
   if (!value.startsWith('j.')) {
     const task = builtIn(value);
-    if (!task) throw new TaskError('task.error.unknownBuiltIn', { id: value.slice(0, 64) });
+    if (!task) throw new TaskError('task.error.unknownBuiltIn', { id: value.slice(0, MAX_TASK_ID) });
     return task;
   }
   const b64 = value.slice(2).replace(/-/g, '+').replace(/_/g, '/');

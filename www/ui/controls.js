@@ -4,7 +4,7 @@
 // disabled and says why. Used by the page and by <ruled-view controls>.
 import { irrelevance, parseNumber } from '../scene.js';
 import { appendRich } from './richtext.js';
-import { ROUNDING } from '../limits.js';
+import { MAX_TEXT_PARAM, ROUNDING } from '../limits.js';
 
 /**
  * @typedef {object} ControlHooks
@@ -79,7 +79,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
         type: 'text',
         spellcheck: false,
         autocomplete: 'off',
-        maxLength: p.maxLength ?? 1000,
+        maxLength: p.maxLength ?? MAX_TEXT_PARAM,
       });
       field.setAttribute('autocapitalize', 'off');
       field.className = 'rl-formula';

@@ -2,7 +2,7 @@
 // `details` — the reason and its values, the line and column, a hint — with the field named
 // as the page names it ("z-Komponente von e(u): Die Formel endet, wo ein Operand erwartet
 // wird (Spalte 3)."). The core's `message` stays the API's English (for the console and for
-// programs); texts for every reason of the core's catalogue are in i18n/*-errors.js
+// programs); texts for every reason of the core's catalogue are in i18n/*/errors.js
 // (tests/node/messages.test.mjs checks that each language has them all).
 
 /**

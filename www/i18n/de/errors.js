@@ -2,40 +2,9 @@
 // sie betreffen („z-Komponente von e(u): Die Formel endet, wo ein Operand erwartet wird
 // (Spalte 3).“); ui/errors.js setzt sie aus details.reason und details.args zusammen.
 // tests/node/messages.test.mjs verlangt für jeden Grund einen Text mit denselben Platzhaltern.
-
-/** Feldnamen der Formelszenen in Meldungen: „z-Komponente von e(u)“, das Feld „u von“. */
-/** @type {Array<[string, Array<[string, string]>]>} */
-const FORMULA_FIELDS = [
-  [
-    'formula',
-    [
-      ['a', 'a(u)'],
-      ['e', 'e(u)'],
-    ],
-  ],
-  [
-    'formulaCongruence',
-    [
-      ['p', 'p(u, v)'],
-      ['e', 'e(u, v)'],
-    ],
-  ],
-];
-const fields = Object.fromEntries(
-  FORMULA_FIELDS.flatMap(([scene, vectors]) => [
-    ...vectors.flatMap(([v, name]) =>
-      ['x', 'y', 'z'].map((c) => [`${scene}.param.${v}${c}.field`, `${c}-Komponente von ${name}`]),
-    ),
-    ...['u', 'v'].flatMap((x) => [
-      // named as the page labels the fields
-      [`${scene}.param.${x}min.field`, `das Feld „${x} von“`],
-      [`${scene}.param.${x}max.field`, `das Feld „${x} bis“`],
-    ]),
-  ]),
-);
+// Keys: error.*
 
 export default {
-  ...fields,
   'error.field': '{field}: {text}',
   'error.seeField': 'In „{field}“ stimmt etwas nicht: Die Meldung steht beim Feld.',
   'error.atColumn': '(Spalte {column})',

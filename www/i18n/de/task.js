@@ -1,8 +1,9 @@
-// Deutsche Texte der Aufgaben (www/task/): das Feld der Aufgabe, die Bedingungen in Worten, das
-// Menü der Aufgaben, die Werte, die Bedingungen nennen, und warum eine Aufgabe nicht lesbar ist.
+// Deutsche Texte der Aufgaben (www/task/): das Feld der Aufgabe, die Bedingungen in Worten, die
+// Werte, die Bedingungen nennen, warum eine Aufgabe nicht lesbar ist, und das Formular zum
+// Erstellen.
+// Keys: task.*, author.*, measure.*
 
 export default {
-  'app.exercises': 'Aufgaben',
   'task.none': '— keine —',
   'task.heading': 'Aufgabe:',
   'task.check': 'Prüfen',
@@ -18,8 +19,6 @@ export default {
   'task.solved': 'Gelöst: Alle Bedingungen sind erfüllt.',
   'task.notSolved': 'Noch nicht gelöst: {passed} von {of:Bedingung:Bedingungen} erfüllt.',
   'task.holds': 'erfüllt',
-  'io.heldInTask':
-    'Die Datendateien (OBJ, CSV, JSON, Invarianten) lassen sich speichern, sobald Sie die Aufgabe verlassen: Sie enthielten die Antwort.',
   'task.held': 'Die Aufgabe hält die Bedienelemente fest, die Sie nicht ändern sollen.',
   'task.heldAll': 'Die Bedienelemente der Szene sind festgehalten: Die Antwort gehört in das Feld oben.',
   'task.notYet': 'noch nicht',
@@ -40,30 +39,6 @@ export default {
   'task.out.curveMisses': 'bis zu {value} entfernt, am weitesten bei u = {at}',
   'task.out.holds': 'jetzt {value}',
   'task.out.misses': 'jetzt {value}: um {miss} verfehlt',
-  'note.badTask': 'Die Aufgabe im Link ließ sich nicht lesen ({reason}); die Szene wird ohne sie gezeigt.',
-  'element.note.badTask': 'Das Attribut task ließ sich nicht lesen ({reason}); die Szene wird ohne es gezeigt.',
-
-  'measure.striction.minAbsDelta': 'das kleinste |δ| eines Paares von Erzeugenden',
-  'measure.isometry.deltaMiddle': 'δ des mittleren Paares von Erzeugenden',
-  'measure.isometry.deltaBentMiddle': 'δ des mittleren Paares nach dem Verbiegen',
-  'measure.formula.strictionStraightness':
-    'der größte Abstand der exakten Kehllinie von ihrer Ausgleichsgeraden, bezogen auf ihre Länge',
-  'measure.readout.midpointError': 'der größte Abstand des Kehlpolygons von der exakten Kurve',
-  'measure.isometry.readout.nonDevelopability': 'die Höhe des konoidalen Modells',
-  'measure.curves.readout.points': 'die Zahl der Punkte',
-  'measure.strip.readout.compare.midpoint': 'der größte Abstand der Mittelpunktsregel von der Fläche',
-  'measure.strip.readout.compare.literal': 'der größte Abstand von (15), wörtlich gelesen, von der Fläche',
-  'measure.strip.readout.compare.coupled': 'der größte Abstand des gekoppelten Verfahrens von der Fläche',
-  'measure.strip.readout.compare.averaged': 'der größte Abstand des gemittelten Verfahrens von der Fläche',
-  'measure.strip.readout.compare.fourPoint': 'der größte Abstand des Vierpunktschemas von der Fläche',
-  'measure.congruence.readout.angle': 'der größte Winkel der neuen Geraden zu den exakten Geraden (rad)',
-  'measure.milling.readout.deviation': 'die größte |Abweichung| der gefrästen Fläche vom Profil',
-  'measure.lines.readout.endpoints': 'der Winkel, um den sich die neuen Erzeugenden des Endpunktschemas drehen (rad)',
-  'measure.lines.readout.lines': 'der Winkel, um den sich die neuen Erzeugenden des Geradenraumschemas drehen (rad)',
-  'measure.focal.ellipticShare': 'der Anteil elliptischer Geraden',
-  'measure.focal.hyperbolicShare': 'der Anteil hyperbolischer Geraden',
-  'isometry.readout.delta': 'δ des mittleren Paares von Erzeugenden',
-
   'task.error.notJson': 'die Aufgabe ist kein JSON: {detail}',
   'task.error.badLink': 'der Link enthält keine Aufgabe (sein Text nach „task=j.“ stammt nicht von ruledlab)',
   'task.error.tooLong': 'die Aufgabe ist länger als {max} Zeichen',
@@ -73,10 +48,10 @@ export default {
   'task.error.missing': 'ihr fehlt „{key}“',
   'task.error.type': '„{key}“ muss {what} sein',
   'task.error.text': '„{key}“ muss ein Text von höchstens {max} Zeichen sein',
-  'task.error.number': '„{key}“ muss eine endliche Zahl vom Betrag höchstens 1e12 sein',
+  'task.error.number': '„{key}“ muss eine endliche Zahl vom Betrag höchstens {max} sein',
   'task.error.count': '„{key}“ darf höchstens {max} Einträge haben',
   'task.error.condition': 'Bedingung {index} des Ziels: {problem}',
-  'task.error.id': '„id“ muss aus 1 bis 64 Kleinbuchstaben, Ziffern und Bindestrichen bestehen',
+  'task.error.id': '„id“ muss aus 1 bis {max} Kleinbuchstaben, Ziffern und Bindestrichen bestehen',
   'task.error.unknownBuiltIn': 'es gibt keine eingebaute Aufgabe „{id}“',
   'task.error.unknownScene': 'sie nennt eine Szene, die es nicht gibt: „{scene}“',
   'task.error.unknownParam': 'die Szene „{scene}“ hat keinen Parameter „{key}“ (in {where})',
@@ -119,7 +94,7 @@ export default {
   'author.failsInSolution': 'in der Lösung nicht erfüllt (so ließe sich die Aufgabe nicht lösen)',
   'author.hide.claims': 'die Sätze unter den Messwerten (sie können die Antwort verraten)',
   'author.hide.text': 'die Erklärung der Szene (sie kann die Antwort verraten)',
-  'author.hints': 'Hinweise (bis zu drei, der Reihe nach gezeigt)',
+  'author.hints': 'Hinweise (bis zu {max}, der Reihe nach gezeigt)',
   'author.hint': 'Hinweis {index}',
   'author.recordStart': 'Die Ansicht, wie sie jetzt ist, zum Anfang machen',
   'author.recordSolution': 'Die Ansicht, wie sie jetzt ist, als Lösung festhalten',
@@ -131,4 +106,24 @@ export default {
   'author.json': 'Die Aufgabe als JSON (README, „Exercises“)',
   'author.try': 'Als Lesende ausprobieren',
   'author.close': 'Schließen',
+
+  'measure.striction.minAbsDelta': 'das kleinste |δ| eines Paares von Erzeugenden',
+  'measure.isometry.deltaMiddle': 'δ des mittleren Paares von Erzeugenden',
+  'measure.isometry.deltaBentMiddle': 'δ des mittleren Paares nach dem Verbiegen',
+  'measure.formula.strictionStraightness':
+    'der größte Abstand der exakten Kehllinie von ihrer Ausgleichsgeraden, bezogen auf ihre Länge',
+  'measure.readout.midpointError': 'der größte Abstand des Kehlpolygons von der exakten Kurve',
+  'measure.isometry.readout.nonDevelopability': 'die Höhe des konoidalen Modells',
+  'measure.curves.readout.points': 'die Zahl der Punkte',
+  'measure.strip.readout.compare.midpoint': 'der größte Abstand der Mittelpunktsregel von der Fläche',
+  'measure.strip.readout.compare.literal': 'der größte Abstand von (15), wörtlich gelesen, von der Fläche',
+  'measure.strip.readout.compare.coupled': 'der größte Abstand des gekoppelten Verfahrens von der Fläche',
+  'measure.strip.readout.compare.averaged': 'der größte Abstand des gemittelten Verfahrens von der Fläche',
+  'measure.strip.readout.compare.fourPoint': 'der größte Abstand des Vierpunktschemas von der Fläche',
+  'measure.congruence.readout.angle': 'der größte Winkel der neuen Geraden zu den exakten Geraden (rad)',
+  'measure.milling.readout.deviation': 'die größte |Abweichung| der gefrästen Fläche vom Profil',
+  'measure.lines.readout.endpoints': 'der Winkel, um den sich die neuen Erzeugenden des Endpunktschemas drehen (rad)',
+  'measure.lines.readout.lines': 'der Winkel, um den sich die neuen Erzeugenden des Geradenraumschemas drehen (rad)',
+  'measure.focal.ellipticShare': 'der Anteil elliptischer Geraden',
+  'measure.focal.hyperbolicShare': 'der Anteil hyperbolischer Geraden',
 };

@@ -1,8 +1,8 @@
-// English texts of exercises (www/task/): the panel, the conditions in words, the page's menu
-// of exercises, the values conditions name, and why an exercise cannot be read.
+// English texts of exercises (www/task/): the panel, the conditions in words, the values
+// conditions name, why an exercise cannot be read, and the author's form.
+// Keys: task.*, author.*, measure.*
 
 export default {
-  'app.exercises': 'Exercises',
   'task.none': '— none —',
   'task.heading': 'Exercise:',
   'task.check': 'Check',
@@ -17,8 +17,6 @@ export default {
   'task.solved': 'Solved: every condition holds.',
   'task.notSolved': 'Not solved yet: {passed} of {of:condition:conditions} met.',
   'task.holds': 'holds',
-  'io.heldInTask':
-    'The data files (OBJ, CSV, JSON, invariants) can be saved once you leave the exercise: they would hold the answer.',
   'task.held': 'The exercise holds the controls it does not ask you to change.',
   'task.heldAll': 'The scene’s controls are held: the answer goes in the field above.',
   'task.notYet': 'not yet',
@@ -39,30 +37,6 @@ export default {
   'task.out.curveMisses': 'up to {value} away, farthest at u = {at}',
   'task.out.holds': 'now {value}',
   'task.out.misses': 'now {value}: misses by {miss}',
-  'note.badTask': 'The exercise in the link could not be read ({reason}); the scene is shown without it.',
-  'element.note.badTask': 'The task attribute could not be read ({reason}); the scene is shown without it.',
-
-  'measure.striction.minAbsDelta': 'the smallest |δ| of a pair of rulings',
-  'measure.isometry.deltaMiddle': 'δ of the middle pair of rulings',
-  'measure.isometry.deltaBentMiddle': 'δ of the middle pair after bending',
-  'measure.formula.strictionStraightness':
-    'the exact striction curve’s largest distance from its fitted line, as a share of its length',
-  'measure.readout.midpointError': 'the largest distance of the striction polygon from the exact curve',
-  'measure.isometry.readout.nonDevelopability': 'the height of the conoidal model',
-  'measure.curves.readout.points': 'the number of points',
-  'measure.strip.readout.compare.midpoint': 'the midpoint rule’s largest distance from the surface',
-  'measure.strip.readout.compare.literal': 'literal (15)’s largest distance from the surface',
-  'measure.strip.readout.compare.coupled': 'the coupled scheme’s largest distance from the surface',
-  'measure.strip.readout.compare.averaged': 'the averaged scheme’s largest distance from the surface',
-  'measure.strip.readout.compare.fourPoint': 'the four-point scheme’s largest distance from the surface',
-  'measure.congruence.readout.angle': 'the largest angle of the new lines to the exact lines (rad)',
-  'measure.milling.readout.deviation': 'the largest |deviation| of the machined surface from the profile',
-  'measure.lines.readout.endpoints': 'the angle the endpoint scheme’s new rulings turn by (rad)',
-  'measure.lines.readout.lines': 'the angle the line-space scheme’s new rulings turn by (rad)',
-  'measure.focal.ellipticShare': 'the share of elliptic lines',
-  'measure.focal.hyperbolicShare': 'the share of hyperbolic lines',
-  'isometry.readout.delta': 'δ of the middle pair of rulings',
-
   'task.error.notJson': 'the exercise is not JSON: {detail}',
   'task.error.badLink': 'the link does not hold an exercise (its text after "task=j." is not one written by ruledlab)',
   'task.error.tooLong': 'the exercise is longer than {max} characters',
@@ -71,10 +45,10 @@ export default {
   'task.error.missing': 'it lacks "{key}"',
   'task.error.type': '"{key}" must be {what}',
   'task.error.text': '"{key}" must be a text of at most {max} characters',
-  'task.error.number': '"{key}" must be a finite number of magnitude at most 1e12',
+  'task.error.number': '"{key}" must be a finite number of magnitude at most {max}',
   'task.error.count': '"{key}" may have at most {max} entries',
   'task.error.condition': 'condition {index} of the goal: {problem}',
-  'task.error.id': '"id" must be 1 to 64 lowercase letters, digits and dashes',
+  'task.error.id': '"id" must be 1 to {max} lowercase letters, digits and dashes',
   'task.error.unknownBuiltIn': 'there is no built-in exercise "{id}"',
   'task.error.unknownScene': 'it names a scene that does not exist: "{scene}"',
   'task.error.unknownParam': 'the scene "{scene}" has no parameter "{key}" (in {where})',
@@ -116,7 +90,7 @@ export default {
   'author.failsInSolution': 'fails in the solution (the exercise could not be solved that way)',
   'author.hide.claims': 'the sentences under the readout (they may say the answer)',
   'author.hide.text': 'the scene’s explanation (it may say the answer)',
-  'author.hints': 'Hints (up to three, shown in turn)',
+  'author.hints': 'Hints (up to {max}, shown in turn)',
   'author.hint': 'Hint {index}',
   'author.recordStart': 'Make the view as it is now the start',
   'author.recordSolution': 'Record the view as it is now as the solution',
@@ -127,4 +101,24 @@ export default {
   'author.json': 'The exercise as JSON (README, “Exercises”)',
   'author.try': 'Try it as a reader',
   'author.close': 'Close',
+
+  'measure.striction.minAbsDelta': 'the smallest |δ| of a pair of rulings',
+  'measure.isometry.deltaMiddle': 'δ of the middle pair of rulings',
+  'measure.isometry.deltaBentMiddle': 'δ of the middle pair after bending',
+  'measure.formula.strictionStraightness':
+    'the exact striction curve’s largest distance from its fitted line, as a share of its length',
+  'measure.readout.midpointError': 'the largest distance of the striction polygon from the exact curve',
+  'measure.isometry.readout.nonDevelopability': 'the height of the conoidal model',
+  'measure.curves.readout.points': 'the number of points',
+  'measure.strip.readout.compare.midpoint': 'the midpoint rule’s largest distance from the surface',
+  'measure.strip.readout.compare.literal': 'literal (15)’s largest distance from the surface',
+  'measure.strip.readout.compare.coupled': 'the coupled scheme’s largest distance from the surface',
+  'measure.strip.readout.compare.averaged': 'the averaged scheme’s largest distance from the surface',
+  'measure.strip.readout.compare.fourPoint': 'the four-point scheme’s largest distance from the surface',
+  'measure.congruence.readout.angle': 'the largest angle of the new lines to the exact lines (rad)',
+  'measure.milling.readout.deviation': 'the largest |deviation| of the machined surface from the profile',
+  'measure.lines.readout.endpoints': 'the angle the endpoint scheme’s new rulings turn by (rad)',
+  'measure.lines.readout.lines': 'the angle the line-space scheme’s new rulings turn by (rad)',
+  'measure.focal.ellipticShare': 'the share of elliptic lines',
+  'measure.focal.hyperbolicShare': 'the share of hyperbolic lines',
 };

@@ -1,9 +1,16 @@
 // English explanations of the scenes: markup (HTML with MathML) from the project's own files.
-import { sub, m, mr, display, frac, row } from './mathml.js';
+// Keys: striction.text, notation.text, convergence.text, isometry.text, curves.text, strip.text,
+//   congruence.text, milling.text, formula.text, focal.text, formulaCongruence.text, lines.text,
+//   large.text, data.text
+// The page's limits are quoted from limits.js, never retyped.
+import { sub, m, mr, display, frac, row } from '../mathml.js';
+import { DRAW_LIMIT, MAX_LINK_RULINGS, TURNING_FROM, TURNING_STEPS } from '../../limits.js';
 
 const fii1 = sub('f', 'i , i + 1');
 const fiim = sub('f', 'i , i − 1');
 const Ri = sub('R', 'i');
+/** 100000 → "100 000": numbers as the explanations write them. */
+const grouped = (/** @type {number} */ n) => String(n).replace(/\B(?=(\d{3})+(?!\d))/g, ' ');
 
 export default {
   'striction.text': `
@@ -118,10 +125,10 @@ Dyn, Levin and Gregory proved in 1987, not the place where kinks appear. Dyn, Gr
 (1991) prove C¹ for 0 &lt; w &lt; (√5 − 1)/8 ≈ 0.155, and their test, run over more steps, reaches
 further (to w = 0.18 at least).</p>
 <p><strong>Watch smoothness set in.</strong> The readout and the plot give the largest turning angle
-of the refined polygon, the largest angle between an edge and the next, after each step up to 12,
+of the refined polygon, the largest angle between an edge and the next, after each step up to ${TURNING_STEPS},
 more than are drawn. Where it falls towards 0 the polygons straighten out. On this polygon, closed,
-it still falls from 8 to 12 steps for every w up to 0.17; from w = 0.171 on, the polygon still turns
-by more than 1 rad somewhere after 12 steps: a C¹ limit may still be far off, or have a cusp where
+it still falls from ${TURNING_FROM} to ${TURNING_STEPS} steps for every w up to 0.17; from w = 0.171 on, the polygon still turns
+by more than 1 rad somewhere after ${TURNING_STEPS} steps: a C¹ limit may still be far off, or have a cusp where
 its derivative vanishes. On an open polygon the end edges use ghost points extrapolated from the
 last four points, ruledlab's end rule (the paper gives none), and it gives out first: there the
 angle falls only up to w = 0.126, while the closed polygon, which has no ends, still straightens
@@ -275,7 +282,7 @@ far the new rulings of each scheme turned because of the slide.</p>`,
 1 280 000 rulings (the library's limit is 4 194 304 per surface, refused with a clear message
 above). Small jobs are computed at once; anything larger runs in a Web Worker with its own copy of
 the WebAssembly module, so the page keeps drawing and answering while the progress bar fills
-(Cancel stops it). Above 100 000 rulings the view draws every k-th ruling, a level of detail, and
+(Cancel stops it). Above ${grouped(DRAW_LIMIT)} rulings the view draws every k-th ruling, a level of detail, and
 says so below the readout.</p>`,
 
   'data.text': `
@@ -285,6 +292,6 @@ fine) or JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, or
 <code>{"rows": r, "cols": c, "segments": […]}</code> for a congruence. A malformed file is rejected
 with the line and column of the problem, and the data shown before stays. A ruled surface is shown
 with its striction polygon and common perpendiculars; the export buttons save it again, or its
-invariants. Small imports (up to 200 rulings) are kept in the link; larger ones in this browser
+invariants. Small imports (up to ${MAX_LINK_RULINGS} rulings) are kept in the link; larger ones in this browser
 tab's session storage.</p>`,
 };

@@ -1,9 +1,16 @@
 // Deutsche Erläuterungen der Szenen: Markup (HTML mit MathML) aus den eigenen Dateien des Projekts.
-import { sub, m, mr, display, frac, row } from './mathml.js';
+// Keys: striction.text, notation.text, convergence.text, isometry.text, curves.text, strip.text,
+//   congruence.text, milling.text, formula.text, focal.text, formulaCongruence.text, lines.text,
+//   large.text, data.text
+// Die Grenzen der Seite werden aus limits.js zitiert, nie abgeschrieben.
+import { sub, m, mr, display, frac, row } from '../mathml.js';
+import { DRAW_LIMIT, MAX_LINK_RULINGS, TURNING_FROM, TURNING_STEPS } from '../../limits.js';
 
 const fii1 = sub('f', 'i , i + 1');
 const fiim = sub('f', 'i , i − 1');
 const Ri = sub('R', 'i');
+/** 100000 → „100 000“: Zahlen, wie die Erläuterungen sie schreiben. */
+const grouped = (/** @type {number} */ n) => String(n).replace(/\B(?=(\d{3})+(?!\d))/g, ' ');
 
 export default {
   'striction.text': `
@@ -123,9 +130,9 @@ Dyn, Gregory und Levin (1991) beweisen C¹ für 0 &lt; w &lt; (√5 − 1)/8 ≈
 über mehr Schritte angewandt, noch weiter (mindestens bis w = 0,18).</p>
 <p><strong>Sehen, wie die Kurve glatt wird.</strong> Anzeige und Diagramm nennen den größten
 Außenwinkel des verfeinerten Polygons, den größten Winkel zwischen einer Kante und der nächsten, nach
-jedem Schritt bis 12, also über die gezeichneten hinaus. Wo er gegen 0 fällt, strecken sich die
-Polygone. Auf diesem Polygon, geschlossen, fällt er von 8 auf 12 Schritte noch für jedes w bis 0,17;
-ab w = 0,171 knickt das Polygon nach 12 Schritten noch irgendwo um mehr als 1 rad ab: Eine C¹-Grenzkurve
+jedem Schritt bis ${TURNING_STEPS}, also über die gezeichneten hinaus. Wo er gegen 0 fällt, strecken sich die
+Polygone. Auf diesem Polygon, geschlossen, fällt er von ${TURNING_FROM} auf ${TURNING_STEPS} Schritte noch für jedes w bis 0,17;
+ab w = 0,171 knickt das Polygon nach ${TURNING_STEPS} Schritten noch irgendwo um mehr als 1 rad ab: Eine C¹-Grenzkurve
 kann dann noch fern sein oder eine Spitze haben, wo ihre Ableitung verschwindet. Bei einem offenen
 Polygon verwenden die Endkanten Geisterpunkte, extrapoliert aus den letzten vier Punkten, eine
 Endregel von ruledlab (die Arbeit nennt keine); sie versagt zuerst: Dort fällt der Winkel nur bis
@@ -295,7 +302,7 @@ Vierpunktschemas: bis zu 1 280 000 Erzeugende (die Grenze der Bibliothek liegt b
 Fläche; darüber wird mit einer klaren Meldung abgelehnt). Kleine Aufgaben werden sofort berechnet;
 alles Größere läuft in einem Web Worker mit einer eigenen Kopie des WebAssembly-Moduls, sodass die
 Seite weiter zeichnet und antwortet, während sich der Fortschrittsbalken füllt (Abbrechen beendet
-es). Über 100 000 Erzeugenden zeichnet die Ansicht jede k-te Erzeugende, eine Detailstufe, und sagt
+es). Über ${grouped(DRAW_LIMIT)} Erzeugenden zeichnet die Ansicht jede k-te Erzeugende, eine Detailstufe, und sagt
 das unter der Anzeige.</p>`,
 
   'data.text': `
@@ -305,6 +312,6 @@ b.z; eine Kopfzeile ist erlaubt), oder JSON: <code>[[ax, ay, az, bx, by, bz], �
 <code>{"rows": r, "cols": c, "segments": […]}</code> für eine Kongruenz. Eine fehlerhafte Datei wird mit
 Zeile und Spalte des Fehlers abgelehnt, und die bisher gezeigten Daten bleiben. Eine Regelfläche wird
 mit ihrem Kehlpolygon und den gemeinsamen Loten gezeigt; die Export-Schaltflächen speichern sie wieder
-oder ihre Invarianten. Kleine Importe (bis 200 Erzeugende) stehen im Link, größere im
+oder ihre Invarianten. Kleine Importe (bis ${MAX_LINK_RULINGS} Erzeugende) stehen im Link, größere im
 Sitzungsspeicher dieses Browser-Tabs.</p>`,
 };

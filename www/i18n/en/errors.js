@@ -3,40 +3,9 @@
 // operand is expected (column 3)"): built by ui/errors.js from details.reason and
 // details.args. tests/node/messages.test.mjs requires a text for every reason, in every
 // language, with the same placeholders.
-
-/** Field names of the formula scenes in messages: "the z component of e(u)", "the start of u". */
-/** @type {Array<[string, Array<[string, string]>]>} */
-const FORMULA_FIELDS = [
-  [
-    'formula',
-    [
-      ['a', 'a(u)'],
-      ['e', 'e(u)'],
-    ],
-  ],
-  [
-    'formulaCongruence',
-    [
-      ['p', 'p(u, v)'],
-      ['e', 'e(u, v)'],
-    ],
-  ],
-];
-const fields = Object.fromEntries(
-  FORMULA_FIELDS.flatMap(([scene, vectors]) => [
-    ...vectors.flatMap(([v, name]) =>
-      ['x', 'y', 'z'].map((c) => [`${scene}.param.${v}${c}.field`, `the ${c} component of ${name}`]),
-    ),
-    ...['u', 'v'].flatMap((x) => [
-      // named as the page labels the fields
-      [`${scene}.param.${x}min.field`, `the field “${x} from”`],
-      [`${scene}.param.${x}max.field`, `the field “${x} to”`],
-    ]),
-  ]),
-);
+// Keys: error.*
 
 export default {
-  ...fields,
   // how a sentence is put together
   'error.field': '{field}: {text}',
   'error.seeField': 'Something in “{field}” cannot be used: the message is beside the field.',

@@ -1,0 +1,121 @@
+// Deutsche Texte der Seite um die Ansicht: Titel und Auswahl, der Teilen-Dialog, Import und
+// Export, die Meldungen, wenn sie nicht starten kann, die Hinweise des Elements <ruled-view> und
+// die Hinweise zu Werten des Links, die nicht verwendet wurden.
+// Keys: app.*, boot.*, share.*, io.*, export.*, element.*, note.*
+
+export default {
+  'app.title': 'ruledlab',
+  'app.subtitle': 'Diskrete Modelle von Regelflächen und Geradenkongruenzen, nach Odehnal & Pottmann',
+  'app.scene': 'Szene',
+  'app.language': 'Sprache',
+  'app.figures': 'Abbildungen der Arbeit',
+  'app.share': 'Teilen',
+  'app.onefile': 'Diese Ansicht als eine HTML-Datei herunterladen',
+  'app.onefileMissing':
+    'Die Fassung in einer Datei liegt hier nicht vor: Führen Sie npm run build aus, oder verwenden Sie die heruntergeladene ruledlab.html.',
+  'app.skip': 'Zu den Bedienelementen springen',
+  'app.exercises': 'Aufgaben',
+
+  'boot.noWebgl2':
+    'ruledlab konnte nicht starten: Dieser Browser (oder dieses Gerät) bietet kein WebGL2, das die 3D-Ansicht braucht. Aktuelle Versionen von Firefox, Chrome, Edge und Safari bieten es; ein Browser mit abgeschalteter Hardwarebeschleunigung unter Umständen nicht.',
+  'boot.cspWasm':
+    "ruledlab konnte nicht starten: Die Seite, in der es steht, verbietet WebAssembly. Ihre Content-Security-Policy braucht 'wasm-unsafe-eval' in script-src (README, „In a course system“).",
+  'boot.noWasm':
+    'ruledlab konnte nicht starten: Dieser Browser kann sein WebAssembly nicht ausführen (nötig ist WebAssembly mit SIMD: Chrome 91, Firefox 89, Safari 16.4 oder neuer).',
+  'boot.load':
+    'ruledlab konnte nicht starten: Eine seiner Dateien wurde nicht geladen. Laden Sie die Seite neu; wird sie in einer anderen Seite gezeigt, blockiert diese sie vielleicht.',
+  'boot.technical': 'Was der Browser meldete',
+  'boot.failed': 'ruledlab konnte nicht starten.',
+
+  'share.title': 'Diese Ansicht teilen',
+  'share.intro': 'Jedes Feld enthält die aktuelle Szene, ihre Parameter, die Sprache und die Kamera.',
+  'share.fromFile':
+    'Diese Seite wurde aus einer Datei geöffnet und hat keine Adresse, die andere öffnen könnten. Um diese Ansicht zu teilen, laden Sie sie als eine HTML-Datei herunter und laden diese in Ihren Kurs hoch, oder setzen Sie das Element unten in eine eigene Seite.',
+  'share.noAddress':
+    'Diese Ansicht wird in einer anderen Seite gezeigt und hat keine eigene Adresse, die andere öffnen könnten. Um sie zu teilen, laden Sie sie als eine HTML-Datei herunter, oder setzen Sie das Element unten in eine eigene Seite.',
+  'share.elementServed':
+    'Das Skript kommt von dieser Website und lädt auch auf Seiten jeder anderen Website; kopieren Sie es auf Ihren eigenen Server, falls diese Website verschwinden könnte.',
+  'share.elementModule':
+    'Diese Website hat keine Fassung in einer Datei (npm run build erzeugt sie), daher lädt das Element das Modul ruledlab/view: Auf anderen Websites geht das nur, wenn dieser Server ihnen das Laden seiner Skripte erlaubt (Access-Control-Allow-Origin).',
+  'share.elementUpload':
+    'Laden Sie {file} (die Schaltfläche darunter lädt sie herunter) neben Ihre Seite hoch. Liegt die Datei woanders, ändern Sie src="{file}" in ihre Adresse.',
+  'share.embedDownload': '{file} herunterladen',
+  'share.embedMissing':
+    'Diese Kopie der Seite kann {file} nicht ausgeben; nehmen Sie die Datei aus dist/ des ruledlab-Pakets.',
+  'share.onefileNote':
+    'Die ganze Seite mit dieser Ansicht in einer Datei: Sie läuft direkt von der Festplatte und in einer Lernplattform hochgeladen.',
+  'share.framed':
+    'Wird nichts gespeichert, erlaubt die Seite um diese Ansicht keine Downloads: Öffnen Sie die Ansicht auf einer eigenen Seite.',
+  'share.copyWhat': 'Kopieren: {what}',
+  'share.selectCopy': 'Markiert: Drücken Sie Strg+C (⌘C) zum Kopieren.',
+  'share.link': 'Link',
+  'share.iframe': 'Mit einem iframe einbetten',
+  'share.element': 'Mit <ruled-view> einbetten',
+  'share.copy': 'Kopieren',
+  'share.copied': 'Kopiert.',
+  'share.close': 'Schließen',
+  'share.editTooLarge':
+    'Ihre Bearbeitung hat mehr als {max} Punkte: Link und Ausschnitte enthalten sie nicht (der Download als eine Datei schon).',
+
+  'io.summary': 'Import und Export',
+  'io.paste': 'CSV (6 Zahlen je Erzeugende) oder JSON einfügen',
+  'io.upload': 'Eine CSV- oder JSON-Datei hochladen',
+  'io.show': 'Anzeigen',
+  'io.staleExample': 'Die Beispieldaten bleiben zu sehen.',
+  'io.stale': 'Gezeigt werden weiterhin die zuvor importierten Daten: Dieser Text konnte nicht gelesen werden.',
+  'io.notStored':
+    'Dieser Import hat mehr als {max} Erzeugende: zu viele für den Link, und diese Seite hat hier keinen Speicher (sie wird in einem abgeschotteten Rahmen gezeigt), daher bleibt er nur, bis die Seite geschlossen wird.',
+  'io.stored': 'Dieser Import hat mehr als {max} Erzeugende: Er steht im Sitzungsspeicher dieses Tabs, nicht im Link.',
+  'io.exports': 'Das Gezeigte speichern',
+  'io.kind': 'Der Text enthält',
+  'io.kind.auto': 'erkennen',
+  'io.kind.segments': 'Strecken (Erzeugende, Geraden)',
+  'io.kind.poses': 'Werkzeuglagen (Spitze x, y, z, Achse i, j, k)',
+  'io.heldInTask':
+    'Die Datendateien (OBJ, CSV, JSON, Invarianten) lassen sich speichern, sobald Sie die Aufgabe verlassen: Sie enthielten die Antwort.',
+
+  'export.png': 'PNG',
+  'export.svg': 'Abbildung (SVG)',
+  'export.svgBw': 'Abbildung (SVG, schwarz-weiß)',
+  'export.tikz': 'Abbildung (TikZ)',
+  'export.tikzBw': 'Abbildung (TikZ, schwarz-weiß)',
+  'export.png2': 'PNG 2×',
+  'export.png4': 'PNG 4×',
+  'export.obj': 'OBJ',
+  'export.csv': 'CSV',
+  'export.json': 'JSON',
+  'export.invariants': 'Invarianten (JSON)',
+  'export.invariantsCsv': 'Invarianten (CSV)',
+  'export.plot': 'Diagramm (SVG)',
+
+  'element.unknownScene': 'Eine Szene „{scene}“ gibt es nicht. Die Szenen sind: {known}.',
+  'element.unknownPaper':
+    'Eine Abbildung oder ein Beispiel der Arbeit namens „{paper}“ gibt es nicht. Es gibt: {known}.',
+  'element.note.notOnOff':
+    'Der Wert von „{key}“ im Attribut params ist weder ein noch aus; es gilt die Voreinstellung.',
+  'element.note.notNumber': 'Der Wert von „{key}“ im Attribut params ist keine Zahl; es gilt die Voreinstellung.',
+  'element.note.clamped':
+    'Der Wert von „{key}“ im Attribut params liegt außerhalb des Bereichs; es gilt der nächste erlaubte Wert.',
+  'element.note.unknownChoice':
+    'Der Wert von „{key}“ im Attribut params ist keine der Auswahlmöglichkeiten; es gilt die Voreinstellung.',
+  'element.note.tooLong': 'Der Wert von „{key}“ im Attribut params ist zu lang; es gilt die Voreinstellung.',
+  'element.note.badInput': 'Das Attribut input passt nicht zu dieser Szene; die eingebaute Eingabe wird gezeigt.',
+  'element.badCamera':
+    'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',
+  'element.note.badTask': 'Das Attribut task ließ sich nicht lesen ({reason}); die Szene wird ohne es gezeigt.',
+
+  'note.notOnOff': 'Der Wert von „{key}“ im Link ist weder ein noch aus; es gilt die Voreinstellung.',
+  'note.notNumber': 'Der Wert von „{key}“ im Link ist keine Zahl; es gilt die Voreinstellung.',
+  'note.clamped': 'Der Wert von „{key}“ im Link liegt außerhalb des Bereichs; es gilt der nächste erlaubte Wert.',
+  'note.unknownChoice': 'Der Wert von „{key}“ im Link ist keine der Auswahlmöglichkeiten; es gilt die Voreinstellung.',
+  'note.tooLong': 'Der Wert von „{key}“ im Link ist zu lang; es gilt die Voreinstellung.',
+  'note.linkTooLong':
+    'Dieser Link ist länger als {max} KiB und wurde nicht gelesen; die Seite beginnt mit ihren Voreinstellungen.',
+  'note.unknownScene': 'Der Link nennt eine Szene, die es nicht gibt; die erste Szene wird gezeigt.',
+  'note.badCamera': 'Die Kamera im Link konnte nicht gelesen werden; die Ansicht wird an die Szene angepasst.',
+  'note.badData': 'Die Daten im Link konnten nicht gelesen werden; die Beispieldaten werden gezeigt.',
+  'note.unknownFigure':
+    'Der Link nennt eine Abbildung der Arbeit, die ruledlab nicht kennt; die Szene wird ohne sie gezeigt.',
+  'note.badInput': 'Die bearbeitete Eingabe im Link passt nicht zu dieser Szene; die eingebaute Eingabe wird gezeigt.',
+  'note.badTask': 'Die Aufgabe im Link ließ sich nicht lesen ({reason}); die Szene wird ohne sie gezeigt.',
+};

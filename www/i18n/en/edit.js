@@ -1,0 +1,62 @@
+// English texts of editing the geometry: the handles, their names, the edit's buttons and notes
+// (www/edit/), and what an edited input leaves undefined.
+// Keys: edit.*, handle.*, problem.*
+
+export default {
+  'edit.button': 'Edit',
+  'edit.buttonTitle':
+    'Move the points of the figure with the keyboard (E); a mouse or a finger can drag them at any time',
+  'edit.undo': 'Undo',
+  'edit.undoTitle': 'Undo the last move (Ctrl+Z)',
+  'edit.redo': 'Redo',
+  'edit.redoTitle': 'Redo (Ctrl+Shift+Z or Ctrl+Y)',
+  'edit.moveLabel': 'A drag moves a point',
+  'edit.mode.view': 'facing you',
+  'edit.mode.viewTitle': 'in the plane through the point that faces you',
+  'edit.mode.line': 'along its line',
+  'edit.mode.lineTitle': 'along the ruling or axis it belongs to (or hold Shift while dragging)',
+  'edit.mode.vertical': 'up and down',
+  'edit.mode.verticalTitle': 'along the z-axis (or hold Alt while dragging)',
+  'edit.done': 'Done',
+  'edit.asData': 'Edit as data',
+  'edit.from': 'Edited from: {from}.',
+  'edit.restore': 'Back to the built-in input',
+  'edit.reason.fixed': 'Held by your edit: “Back to the built-in input” frees it.',
+  'edit.tooLarge': 'This edit has more than {max} points: the link does not carry it; this tab keeps it.',
+  'edit.tooLargeNoStorage':
+    'This edit has more than {max} points: the link does not carry it, and this page cannot keep it (a reload loses it).',
+  'edit.entered': 'Editing {count:point:points}: Tab steps through them, the arrow keys move one, Escape stops.',
+  'edit.left': 'Editing stopped.',
+  'edit.undone': 'Undone',
+  'edit.redone': 'Redone',
+  'edit.restored': 'Back to the built-in input',
+  'edit.cancelled': 'Move cancelled',
+  'edit.from.surface': '{surface}, {n:ruling:rulings}',
+  'edit.from.notation': 'three rulings of the hyperboloid of Example 1 around u = {u}, {spacing} apart',
+  'edit.from.convergence': 'three rulings of {surface} around u = {u}',
+  'edit.from.curves': 'the control polygon of Figs. 7–8',
+  'edit.from.strip': '12 rulings of the quartic surface of Example 3',
+  'edit.from.congruence': '{congruence}, {rows} × {cols} lines',
+  'edit.from.lines': 'nine rulings of the {surface} with their endpoints slid',
+  'edit.from.poses': 'the {poses} tool poses of Example 6',
+  'edit.from.data': 'your imported data',
+  'edit.from.example': 'the example strip',
+  'edit.describe': 'Your edit of the input. {description}',
+  'edit.edited': 'your edit of {what}',
+  'edit.from.importedPoses': 'your {poses} imported tool poses',
+
+  'handle.ruling': 'ruling {i}, end {end}',
+  'handle.end.a': 'a',
+  'handle.end.b': 'b',
+  'handle.line': 'line ({row}, {col}), point {end}',
+  'handle.end.p': 'p',
+  'handle.end.q': 'q',
+  'handle.pose': 'pose {i}, {end}',
+  'handle.end.tip': 'tip',
+  'handle.end.axis': 'axis end',
+  'handle.point': 'control point {i}',
+
+  'problem.parallel': 'Rulings {i} and {j} are parallel: δ is undefined there.',
+  'problem.parallelMany':
+    '{count} pairs of consecutive rulings are parallel (the first: {i} and {j}): δ is undefined there.',
+};
