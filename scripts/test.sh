@@ -2,7 +2,8 @@
 # Every test of ruledlab, after installing whatever is missing:
 #   1. lint: rustfmt, clippy -D warnings (native and wasm32), rustdoc -D warnings; Biome (the
 #      JavaScript linter and formatter, biome.json) over www/, scripts, tests and benches
-#   2. native Rust: unit, property and integration tests, doctests, benches in test mode
+#   2. native Rust: unit, property and integration tests, doctests (the README's Rust snippets
+#      among them), benches in test mode
 #   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc types
 #   4. docs: every JS/TS snippet of the book and the README verbatim under tsc --strict against
 #      the package's declarations; the site (book, typedoc, rustdoc) built into site/
