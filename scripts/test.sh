@@ -6,7 +6,8 @@
 #      among them), benches in test mode
 #   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc types
 #   4. docs: every JS/TS snippet of the book and the README verbatim under tsc --strict against
-#      the package's declarations; the site (book, typedoc, rustdoc) built into site/
+#      the package's declarations; the site (book, typedoc, rustdoc) built into site/; every
+#      link and anchor of it checked
 #   then three lanes side by side:
 #   5. wasm: the same integration tests and the bindings tests in headless Chromium and in
 #      headless Firefox ESR (geckodriver)
@@ -45,9 +46,10 @@ step "types: tsc --strict over www/, scripts and tests"
 npx tsc -p tsconfig.json
 npx tsc -p tsconfig.tests.json
 
-step "docs: the snippets of the book and the README; the site (book, typedoc, rustdoc)"
+step "docs: the snippets of the book and the README; the site (book, typedoc, rustdoc); its links"
 node tests/types/snippets.mjs
 bash scripts/docs.sh
+node tests/docs/links.mjs
 
 # The rest runs as three lanes side by side (the machine has idle cores while browsers wait for
 # frames): each lane's log is printed when it ends, and the run fails if any lane fails.
