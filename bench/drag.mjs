@@ -2,19 +2,20 @@
 // recomputed on the moved input, in Node, median of many steps) and, in headless Chromium with
 // software WebGL, the time per drawn frame while a handle is dragged against the time per frame
 // while the camera orbits the same model (judge the ratio: SwiftShader draws slowly, a GPU fast).
-// The goal (issue 27): under 2 ms in the core, and dragging no slower than orbiting.
+// The goals: under 2 ms in the core, and dragging no slower than orbiting (the book, "Speed of
+// the page").
 // `node bench/drag.mjs` (after npm run build).
 import { cpus } from 'node:os';
 import { chromium } from 'playwright-core';
 import { startServer } from '../scripts/serve.mjs';
-import { rewriteBlock } from '../scripts/readme-block.mjs';
+import { rewriteBlock } from '../scripts/doc-block.mjs';
 import '../tests/node/load.mjs';
 import { SCENES } from '../www/scenes/index.js';
 import { defaults } from '../www/scene.js';
 import { translator } from '../www/i18n/index.js';
 import { inputOf } from '../www/edit/input.js';
 
-/** [name, scene, parameters, link] — the issue's teaching models, at the most the page offers. */
+/** [name, scene, parameters, link] — the teaching models, at the most the page offers. */
 const MODELS = [
   ['160 rulings (striction)', 'striction', { n: 160 }, '#scene=striction&n=160'],
   ['20 × 20 lines (focal)', 'focal', { n: 20 }, '#scene=focal&n=20'],
@@ -161,4 +162,4 @@ const block = [
       `| ${r.name} | ${r.core.toFixed(2)} | ${r.page.toFixed(2)} | ${r.orbit.toFixed(1)} | ${r.drag.toFixed(1)} | ${(r.drag / r.orbit).toFixed(2)} |`,
   ),
 ].join('\n');
-if (rewriteBlock('bench-drag', block)) console.log('README.md: drag benchmark rewritten');
+if (rewriteBlock('bench-drag', block)) console.log('docs/src/internals/page-speed.md: drag benchmark rewritten');

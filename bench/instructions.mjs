@@ -10,11 +10,11 @@
 //
 // `node bench/instructions.mjs` (after `npm run build` and
 // `cargo build --release --example count`; `npm run bench` does both) prints the table, writes
-// bench/results/instructions.json and rewrites the README's table between
+// bench/results/instructions.json and rewrites the book's table between
 // <!-- bench-instructions:begin --> and <!-- bench-instructions:end -->.
 import { spawnSync } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
-import { rewriteBlock } from '../scripts/readme-block.mjs';
+import { rewriteBlock } from '../scripts/doc-block.mjs';
 
 const root = new URL('../', import.meta.url).pathname;
 const N = 100_000;
@@ -70,4 +70,5 @@ const table = [
   '|---|---:|---:|',
   ...rows.map((r) => `| ${r.op} | ${f(r.native)} | ${f(r.wasm)} |`),
 ].join('\n');
-if (rewriteBlock('bench-instructions', table)) console.log('README.md: instruction table rewritten');
+if (rewriteBlock('bench-instructions', table))
+  console.log('docs/src/internals/benchmarks.md: instruction table rewritten');

@@ -5,9 +5,10 @@
 // the time in the core, in the scenes' create() and in uploading before it, and the tasks before
 // and of the first frame — so a goal missed because this machine draws WebGL in software shows as
 // such. Lighthouse is installed on demand (pinned, into target/lighthouse/: not a dependency of
-// the package, not needed by `npm test`). Rewrites the README's block "bench-lighthouse".
+// the package, not needed by `npm test`). Rewrites the book's block "bench-lighthouse"
+// (docs/src/internals/page-speed.md).
 //
-//   node bench/lighthouse.mjs [--root DIR] [--page PATH] [--onefile PATH] [--runs N] [--json FILE] [--no-readme]
+//   node bench/lighthouse.mjs [--root DIR] [--page PATH] [--onefile PATH] [--runs N] [--json FILE] [--no-book]
 //
 // --root: the directory served (default dist/web); --page: the page's path in it (default: the
 // directory's index.html); --onefile: the one-file build's path in it (default dist/ruledlab.html);
@@ -20,14 +21,14 @@ import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { startServer } from '../scripts/serve.mjs';
-import { rewriteBlock } from '../scripts/readme-block.mjs';
+import { rewriteBlock } from '../scripts/doc-block.mjs';
 
 const REPO = fileURLToPath(new URL('..', import.meta.url));
 /** The Lighthouse release: 12.x runs on Node 20 (13 wants Node 22). */
 const LIGHTHOUSE = '12.2.3';
 const TOOLS = join(REPO, 'target/lighthouse');
 const SCENES = ['striction', 'congruence', 'focal'];
-/** The goals (issue 31). */
+/** The goals for loading on a phone. */
 const GOALS = { performance: 0.9, lcp: 2500, tbt: 200, accessibility: 1, bestPractices: 1 };
 
 const { values: args } = parseArgs({
@@ -37,7 +38,7 @@ const { values: args } = parseArgs({
     onefile: { type: 'string', default: 'dist/ruledlab.html' },
     runs: { type: 'string', default: '3' },
     json: { type: 'string' },
-    'no-readme': { type: 'boolean', default: false },
+    'no-book': { type: 'boolean', default: false },
   },
 });
 
@@ -251,4 +252,5 @@ const block = [
   `| best practices 1.0 | ${status((r) => r.bestPractices >= GOALS.bestPractices, results)} |`,
 ].join('\n');
 console.log(block);
-if (!args['no-readme'] && rewriteBlock('bench-lighthouse', block)) console.log('README.md: Lighthouse table rewritten');
+if (!args['no-book'] && rewriteBlock('bench-lighthouse', block))
+  console.log('docs/src/internals/page-speed.md: Lighthouse table rewritten');

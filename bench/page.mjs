@@ -6,7 +6,7 @@
 import { cpus } from 'node:os';
 import { chromium } from 'playwright-core';
 import { startServer } from '../scripts/serve.mjs';
-import { rewriteBlock } from '../scripts/readme-block.mjs';
+import { rewriteBlock } from '../scripts/doc-block.mjs';
 
 const CASES = [
   ['figure (striction, 36 rulings)', '#scene=striction'],
@@ -65,7 +65,7 @@ const base = Number(results[1]['ms per frame']);
 console.log('orbiting: time per drawn frame (software WebGL)');
 console.table(results.map((r) => ({ ...r, 'vs 10³': (Number(r['ms per frame']) / base).toFixed(2) })));
 
-// the README's table
+// the book's table (docs/src/internals/page-speed.md)
 const date = new Date().toISOString().slice(0, 10);
 const block = [
   `<!-- written by bench/page.mjs (npm run bench) on ${date} -->`,
@@ -76,4 +76,4 @@ const block = [
   '|---|---:|---:|',
   ...results.map((r) => `| ${r.case} | ${r['ms per frame']} | ${(Number(r['ms per frame']) / base).toFixed(2)} |`),
 ].join('\n');
-if (rewriteBlock('bench-page', block)) console.log('README.md: page benchmark rewritten');
+if (rewriteBlock('bench-page', block)) console.log('docs/src/internals/page-speed.md: page benchmark rewritten');

@@ -8,14 +8,14 @@
 // costs page faults. An operation at 1× its limit could not be faster without writing less.
 //
 // `node bench/wasm.mjs` prints the tables, writes bench/results/wasm.json, and rewrites the
-// README's table between <!-- bench:begin --> and <!-- bench:end -->.
+// book's table between <!-- bench:begin --> and <!-- bench:end --> (docs/src/internals/benchmarks.md).
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, totalmem } from 'node:os';
 import { performance } from 'node:perf_hooks';
 import * as ruledlab from '../pkg/ruledlab.js';
 import * as plain from './plainjs.mjs';
-import { rewriteBlock } from '../scripts/readme-block.mjs';
+import { rewriteBlock } from '../scripts/doc-block.mjs';
 
 ruledlab.initSync({ module: readFileSync(new URL('../pkg/ruledlab_bg.wasm', import.meta.url)) });
 const { AnalyticSurface, AnalyticCongruence, InvariantsBuffer } = ruledlab;
@@ -287,7 +287,7 @@ writeFileSync(
   JSON.stringify({ date, machine, rows, small, congruence }, null, 2),
 );
 
-// ---- the README's table
+// ---- the book's table
 const table = [
   `<!-- written by bench/wasm.mjs (npm run bench) on ${date}: ${machine} -->`,
   '',
@@ -319,4 +319,4 @@ const table = [
       `| ${r.scheme}, one step on ${r.grid} ${r.congruence} | ${f(r.ms)} | ${f(r.outMB, 0)} | ${f(r.limitMs)} | ${f(r.ofLimit, 1)} | ${f(r.nativeMs)} | ${f(r.nativeOfLimit, 1)} |`,
   ),
 ].join('\n');
-if (rewriteBlock('bench', table)) console.log('README.md: benchmark table rewritten');
+if (rewriteBlock('bench', table)) console.log('docs/src/internals/benchmarks.md: benchmark table rewritten');

@@ -1,12 +1,21 @@
 #!/usr/bin/env bash
-# The API reference: typedoc over the package's declarations (pkg/ruledlab.d.ts, the wasm core,
-# and pkg/view/www/index.d.ts, `ruledlab/view`, generated from the JSDoc of www/) into site/api/, and rustdoc for the Rust core into
-# target/doc/ruledlab/. Builds pkg/ first if it is missing. Warnings are errors.
+# The documentation as one site in site/: the book (mdBook, sources in docs/) at the root, the
+# JavaScript and TypeScript reference (typedoc over pkg/ruledlab.d.ts, the wasm core, and
+# pkg/view/www/index.d.ts, `ruledlab/view`, generated from the JSDoc of www/) in site/api/, and
+# the Rust reference (rustdoc, copied from target/doc) in site/rust/. The book's API pages link
+# into both. Installs mdBook and builds pkg/ first when they are missing. Warnings are errors.
+# `npm test` then checks every link and anchor of the site (tests/docs/links.mjs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
-[ -f pkg/ruledlab.d.ts ] || { bash scripts/setup.sh && bash scripts/build.sh; }
+bash scripts/setup.sh --docs
+[ -f pkg/ruledlab.d.ts ] || bash scripts/build.sh
+rm -rf site
+mdbook build docs
 npx typedoc --logLevel Warn --treatWarningsAsErrors --name "ruledlab $(node -p "require('./package.json').version")" \
   --readme none --disableSources --out site/api --tsconfig tests/types/docs.tsconfig.json pkg/ruledlab.d.ts pkg/view/www/index.d.ts
 RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps
-echo "docs: site/api/index.html (JavaScript and TypeScript), target/doc/ruledlab/index.html (Rust)"
+cp -r target/doc site/rust
+# rustdoc's help and settings pages link to the index of all crates, which one crate has not
+printf '<!doctype html><meta charset="utf-8"><title>ruledlab</title><meta http-equiv="refresh" content="0; url=ruledlab/index.html"><a href="ruledlab/index.html">ruledlab</a>\n' > site/rust/index.html
+echo "docs: site/index.html (the book), site/api/index.html (JavaScript and TypeScript), site/rust/ruledlab/index.html (Rust)"

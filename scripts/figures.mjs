@@ -1,7 +1,8 @@
-// The README's pictures, made by the page itself: a screenshot of the page and black-and-white
-// figures exported with <ruled-view>.exportSVG({ bw: true }) — the same code a lecturer uses —
-// and Fig. 2's TikZ export typeset by pdflatex (where it is installed: npm test's setup puts it
-// there), turned into a PNG by pdftoppm. Run after a build: `node scripts/figures.mjs` (writes docs/).
+// The book's pictures (and the README's screenshot), made by the page itself: screenshots of the
+// page and black-and-white figures exported with <ruled-view>.exportSVG({ bw: true }) — the same
+// code a lecturer uses — and Fig. 2's TikZ export typeset by pdflatex (where it is installed:
+// npm test's setup puts it there), turned into a PNG by pdftoppm. Run after a build:
+// `node scripts/figures.mjs` (writes docs/src/images/).
 import { chromium } from 'playwright-core';
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
@@ -9,7 +10,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { startServer } from './serve.mjs';
 
-const DOCS = new URL('../docs/', import.meta.url).pathname;
+const IMAGES = new URL('../docs/src/images/', import.meta.url).pathname;
 
 /**
  * the element's attributes (a scene and its params, or a figure of the paper), camera [yaw, pitch,
@@ -46,10 +47,10 @@ function typeset(/** @type {string} */ tikz, /** @type {string} */ file) {
       ['-r', '110', '-png', '-singlefile', '-x', '180', '-y', '165', '-W', '500', '-H', '400', 'figure.pdf', 'figure'],
       { cwd: dir },
     );
-    writeFileSync(join(DOCS, file), readFileSync(join(dir, 'figure.png')));
-    console.log(`docs/${file}`);
+    writeFileSync(join(IMAGES, file), readFileSync(join(dir, 'figure.png')));
+    console.log(`docs/src/images/${file}`);
   } catch (e) {
-    console.log(`docs/${file} not made: ${/** @type {Error} */ (e).message.split('\n')[0]}`);
+    console.log(`docs/src/images/${file} not made: ${/** @type {Error} */ (e).message.split('\n')[0]}`);
   }
 }
 
@@ -67,8 +68,8 @@ try {
     () => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1',
   );
   await page.waitForTimeout(300);
-  writeFileSync(join(DOCS, 'screenshot-striction.png'), await page.screenshot());
-  console.log('docs/screenshot-striction.png');
+  writeFileSync(join(IMAGES, 'screenshot-striction.png'), await page.screenshot());
+  console.log('docs/src/images/screenshot-striction.png');
   for (const [hash, file] of [
     ['#scene=formula', 'screenshot-formula.png'],
     ['#scene=focal&congruence=example5&reach=1', 'screenshot-focal.png'],
@@ -78,8 +79,8 @@ try {
       () => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1',
     );
     await page.waitForTimeout(300);
-    writeFileSync(join(DOCS, file), await page.screenshot());
-    console.log(`docs/${file}`);
+    writeFileSync(join(IMAGES, file), await page.screenshot());
+    console.log(`docs/src/images/${file}`);
   }
 
   // editing: a ruling of the hyperboloid twisted by its end, the striction polygon following,
@@ -106,8 +107,8 @@ try {
   await page.mouse.up();
   await page.keyboard.press('e');
   await page.waitForTimeout(300);
-  writeFileSync(join(DOCS, 'screenshot-edit.png'), await page.screenshot());
-  console.log('docs/screenshot-edit.png');
+  writeFileSync(join(IMAGES, 'screenshot-edit.png'), await page.screenshot());
+  console.log('docs/src/images/screenshot-edit.png');
 
   await page.goto(`${url}examples/web-component.html`);
   for (const [attributes, camera, file] of FIGURES) {
@@ -125,8 +126,8 @@ try {
       },
       /** @type {const} */ ([attributes, camera]),
     );
-    writeFileSync(join(DOCS, file), svg);
-    console.log(`docs/${file}`);
+    writeFileSync(join(IMAGES, file), svg);
+    console.log(`docs/src/images/${file}`);
     if (attributes.paper === 'fig2') typeset(tikz, 'figure-2-striction-bw-pdflatex.png');
   }
 } finally {

@@ -1,5 +1,5 @@
 // Gives the two errors that wasm-bindgen's generated glue throws by itself a `code`, like every
-// error of ruledlab's own (README, "Errors"): an argument of the wrong class
+// error of ruledlab's own (the book, "Errors and their codes"): an argument of the wrong class
 // (`expected instance of RuledSurface`) becomes `invalid-argument`; calling a method of a freed
 // object ("null pointer passed to rust") becomes `freed` with a message that says what happened;
 // re-entrant use becomes `invalid-state`. Each edit must match the glue exactly once, so a

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Mutation testing of core modules (issue 34): scripts/mutants.sh [src/file.rs ...].
+# Mutation testing of core modules (the book, "Mutation testing"): scripts/mutants.sh [src/file.rs ...].
 # cargo-mutants changes the code one small way at a time (an operator, a comparison, a return
 # value) and runs the native tests; a mutant they still pass is "missed". Not part of `npm test`:
 # it takes hours over the whole core on 2 cores. Without arguments it takes every core module

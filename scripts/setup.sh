@@ -6,6 +6,7 @@
 # without its recommends: just under a minute and ~85 packages, Tcl/Tk and Python among them; with
 # the recommends it would pull a realtime kernel), and the programs the figure exports are checked
 # with: LaTeX (pdflatex and lualatex with TikZ), poppler's pdftoppm and librsvg's rsvg-convert.
+# With --browser or --docs also mdBook, which builds the book (scripts/docs.sh).
 # Only package registries are used; nothing downloads a binary or a browser of its own.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -33,6 +34,14 @@ fi
 if [ ! -f node_modules/.package-lock.json ] || [ package-lock.json -nt node_modules/.package-lock.json ]; then
   say "installing npm packages"
   if [ -f package-lock.json ]; then npm ci --no-audit --no-fund; else npm install --no-audit --no-fund; fi
+fi
+
+# mdBook builds the book (docs/, scripts/docs.sh): from crates.io, compiled like the other tools
+if [ "${1:-}" = "--browser" ] || [ "${1:-}" = "--docs" ]; then
+  if [ "$(mdbook --version 2>/dev/null || true)" != "mdbook v0.5.4" ]; then
+    say "installing mdBook 0.5.4 from crates.io (about ten minutes once on 2 cores)"
+    cargo install mdbook --version 0.5.4 --locked
+  fi
 fi
 
 if [ "${1:-}" = "--browser" ]; then

@@ -2,15 +2,18 @@
 # Every test of ruledlab, after installing whatever is missing:
 #   1. lint: rustfmt, clippy -D warnings (native and wasm32), rustdoc -D warnings; Biome (the
 #      JavaScript linter and formatter, biome.json) over www/, scripts, tests and benches
-#   2. native Rust: unit, property and integration tests, doctests, benches in test mode
-#   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc
-#      types, and every README snippet verbatim against the package's declarations; the docs
+#   2. native Rust: unit, property and integration tests, doctests (the README's Rust snippets
+#      among them), benches in test mode
+#   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc types
+#   4. docs: every JS/TS snippet of the book and the README verbatim under tsc --strict against
+#      the package's declarations; the site (book, typedoc, rustdoc) built into site/; every
+#      link and anchor of it checked
 #   then three lanes side by side:
-#   4. wasm: the same integration tests and the bindings tests in headless Chromium and in
+#   5. wasm: the same integration tests and the bindings tests in headless Chromium and in
 #      headless Firefox ESR (geckodriver)
-#   5. Node: the built package's JS API; the page in headless Chromium (playwright-core driving
+#   6. Node: the built package's JS API; the page in headless Chromium (playwright-core driving
 #      Debian's chromium)
-#   6. short runs of the cargo-fuzz targets (fuzz/); a smoke test of every scene in Firefox ESR,
+#   7. short runs of the cargo-fuzz targets (fuzz/); a smoke test of every scene in Firefox ESR,
 #      headed under Xvfb (headless Firefox has no WebGL2 here)
 # Exits non-zero on the first failing step, or after the lanes when one of them failed.
 set -euo pipefail
@@ -39,11 +42,14 @@ cargo test --doc
 step "build: pkg/"
 bash scripts/build.sh
 
-step "types: tsc --strict over www/, scripts and tests; the README's snippets"
+step "types: tsc --strict over www/, scripts and tests"
 npx tsc -p tsconfig.json
 npx tsc -p tsconfig.tests.json
-node tests/types/readme.mjs
+
+step "docs: the snippets of the book and the README; the site (book, typedoc, rustdoc); its links"
+node tests/types/snippets.mjs
 bash scripts/docs.sh
+node tests/docs/links.mjs
 
 # The rest runs as three lanes side by side (the machine has idle cores while browsers wait for
 # frames): each lane's log is printed when it ends, and the run fails if any lane fails.

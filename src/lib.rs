@@ -27,6 +27,7 @@
 //! assert_eq!(inv.striction.len(), 62);
 //! ```
 
+#[cfg_attr(doctest, doc = include_str!("../README.md"))] // the README's Rust snippets run as doctests
 mod base;
 mod catalogue;
 mod congruence;

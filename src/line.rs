@@ -1,7 +1,7 @@
 //! Lines and segments: the elements of a discrete ruled surface (Section 2).
 //!
 //! A ruling R_i is given as a segment a_i → b_i; its unit direction
-//! e_i = (b_i − a_i)/|b_i − a_i| keeps the given orientation (ERRATA.md, conventions).
+//! e_i = (b_i − a_i)/|b_i − a_i| keeps the given orientation (docs/src/conventions.md, Section 2).
 
 use glam::DVec3;
 

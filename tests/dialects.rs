@@ -1,5 +1,5 @@
 //! The Heidenhain and Sinumerik programs of the G-code post checked against the syntax their
-//! manuals document (no controller of theirs ran them: README, "For CAM"): the program frame,
+//! manuals document (no controller of theirs ran them: the book, "G-code and its dialects"): the program frame,
 //! block numbers, tool-centre-point control on and off, comments, and every block one of the
 //! kinds the post writes, with its words in order.
 #![cfg(not(target_family = "wasm"))]

@@ -33,7 +33,7 @@ fn refined_path_interpolates_the_given_poses() {
 
 /// Refinement brings the machined surface closer to the target profile and makes the
 /// orientation smoother; the variational scheme does best on this path (measured:
-/// README and `cargo run --example milling`).
+/// the book's "Tool paths" and `cargo run --example milling`).
 #[cfg_attr(not(target_family = "wasm"), test)]
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn refinement_improves_the_profile_and_the_orientation() {

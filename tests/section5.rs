@@ -22,7 +22,7 @@ fn keeps_old_lines(c: &LineCongruence, r: &LineCongruence) {
     }
 }
 
-/// The paper's scheme read literally (ERRATA.md): edge lines by the literal strip energy are
+/// The paper's scheme read literally (docs/src/conventions.md, Section 5.2): edge lines by the literal strip energy are
 /// the midpoint rule, and the face line, the average of its 8 neighbours, is then the bilinear
 /// average of the 4 corners, exactly.
 #[cfg_attr(not(target_family = "wasm"), test)]

@@ -2,7 +2,7 @@
 // Examples 1–6): which scene shows each, with which parameters, what the paper's caption says,
 // what ruledlab shows, whose data it is, and where ruledlab goes beyond or corrects the paper.
 // Shared by the page (the "Paper" menu and `#paper=fig3` links), <ruled-view paper="fig3">, the
-// one-file build and the README's table (scripts/paper-table.mjs); tests/node/claims.test.mjs
+// one-file build and the book's page of figures (docs/src/teaching/paper.md, written by scripts/paper-table.mjs); tests/node/claims.test.mjs
 // computes every preset, tests/page/paper.test.mjs opens each.
 import { defaults } from './scene.js';
 

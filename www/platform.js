@@ -3,7 +3,7 @@
 // about:blank documents (no address of their own), without `allow="fullscreen"`, and behind a
 // Content-Security-Policy of its own. Every use of such a facility goes through here and does
 // without it where it is missing; the page says so only where the user asked for the missing
-// thing (README, "In a course system").
+// thing (the book: guide/course-systems.md).
 
 /**
  * Where this document is.

@@ -18,7 +18,7 @@ pub struct Jet {
 }
 
 impl Jet {
-    /// Unit ruling direction e and its derivative e′ = (d′ − (d′·e)e)/|d| (ERRATA.md).
+    /// Unit ruling direction e and its derivative e′ = (d′ − (d′·e)e)/|d| (docs/src/conventions.md, Section 2).
     pub fn frame(&self) -> (DVec3, DVec3) {
         let len = self.d.length();
         let e = self.d / len;

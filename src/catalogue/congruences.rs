@@ -1,7 +1,7 @@
 //! Analytic line congruences: the congruences of Examples 4 and 5 (Section 5, Figs. 13 and
 //! 15) in closed form, and congruences typed as formulas. A line L(u, v) passes through
 //! p(u, v) on the director surface d₁ with direction d(u, v); the segment of a grid runs to
-//! q = p + d (the paper gives no length; ERRATA.md 9).
+//! q = p + d (the paper gives no length: docs/src/conventions.md, choices).
 //!
 //! - `sphere` (Fig. 13 left): d₁ the unit sphere p = (cos v cos u, cos v sin u, sin v),
 //!   d = normal + 0.3 (sin 2v, cos 3u, uv): a generalised offset, not a normal congruence.

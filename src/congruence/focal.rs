@@ -1,5 +1,5 @@
 //! Focal geometry of a line congruence — beyond the paper, which treats congruences (Section 5)
-//! by subdivision only. Conventions (README, "Focal geometry"):
+//! by subdivision only. Conventions (docs/src/guide/focal.md):
 //!
 //! - A line of a grid runs p → q; e = (q − p)/|q − p|; a point on it is p + t·e.
 //! - For a smooth congruence p(u, v) + t·e(u, v) the **focal parameters** are the roots t of

@@ -3,11 +3,11 @@
 //! **Two-stage scheme** (the structure of the paper's scheme): every column j of lines is a
 //! discrete ruled surface; the strip scheme of Section 4 (n = K) inserts the lines T_{i,j}
 //! between R_{i,j} and R_{i+1,j}; every row likewise gives S_{i,j} between R_{i,j} and
-//! R_{i,j+1} (ERRATA.md 9: T for every row j). The face line R̄_{i,j} then minimises the
+//! R_{i,j+1} (T for every row j: docs/src/conventions.md, Section 5.2). The face line R̄_{i,j} then minimises the
 //! 8-neighbour umbrella energy (20)–(21), whose neighbours are all known, so it is their
 //! average in every layer: P̄ = ⅛ Σ of the four corner and four edge points on d₁, Q̄ likewise.
 //! Read literally, the paper's edge lines come from the strip energy (13)–(15) with umbrellas
-//! at the new points only, which is the midpoint rule (ERRATA.md): [`EdgeScheme::Literal`],
+//! at the new points only, which is the midpoint rule (docs/src/conventions.md, Section 5.2): [`EdgeScheme::Literal`],
 //! "paper" in the JS API. ruledlab's "two-stage" variant uses the coupled strip energy.
 //!
 //! **Coupled scheme**: umbrellas (20) at every vertex of the refined grid in every layer

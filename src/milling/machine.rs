@@ -20,7 +20,7 @@
 //! axes are on the same side, the first carries the second (a trunnion's tilt axis carries the
 //! rotary table; a fork head's C carries its A).
 //!
-//! **Presets** (values in the README's table): `table-table-ac` (a trunnion: A tilts the table
+//! **Presets** (values in the table of docs/src/cam/machines.md): `table-table-ac` (a trunnion: A tilts the table
 //! about X, C turns it about Z), `table-table-bc` (B tilts about Y, C on it), `head-table-bc`
 //! (the head swivels B about Y, the table turns C), `head-head-ac` (a fork head: C about Z carries
 //! A about X).
@@ -133,7 +133,7 @@ impl RotaryAxis {
 /// A five-axis machine for the G-code post: its two rotary axes (`rotary`, the first of the
 /// chain from the base first), the travel of X, Y, Z and where the part's zero sits on the table.
 /// Lengths in mm, angles in degrees; at zero the part frame is the machine frame moved by
-/// `partZero`, and the tool points along +Z (README, "For CAM").
+/// `partZero`, and the tool points along +Z (docs/src/cam/machines.md).
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase", deny_unknown_fields))]

@@ -4,7 +4,7 @@
 //! - `footpoint`: max |f_{i,i+1} − s(u_i)| (Proposition 1, first order (3));
 //! - `midpoint`: max |m_i − s(u_i)|, m_i = (f_{i,i−1} + f_{i,i+1})/2 (Proposition 2, (7));
 //! - `perpendicular_midpoint`: max |(f_{i,i+1} + f_{i+1,i})/2 − s(u_i + H/2)| (Example 1's
-//!   polygon, Fig. 3; ERRATA.md 6);
+//!   polygon, Fig. 3; docs/src/conventions.md, Example 1);
 //! - `distribution_mean`: max |(δ_{i−1,i} + δ_{i,i+1})/2 − δ(u_i)| (7).
 //!
 //! Open samplings use the interior rulings; closed ones (R_{N−1} followed by R_0) every ruling.
@@ -77,7 +77,7 @@ pub struct SamplingOrders {
     pub footpoint: f64,
     /// Order of max |m_i − s(u_i)| (2 by Proposition 2).
     pub midpoint: f64,
-    /// Order of the perpendicular midpoints (2, ERRATA.md 6).
+    /// Order of the perpendicular midpoints (2: docs/src/conventions.md, Example 1).
     pub perpendicular_midpoint: f64,
     /// Order of max |δ̄_i − δ(u_i)| (2 by (7)).
     pub distribution_mean: f64,

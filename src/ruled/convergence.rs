@@ -10,7 +10,7 @@
 //! | `distribution`      | δ_{i,i+1} (1)                | δ(u)   | 1 (2), (5)     |
 //! | `distributionMean`  | (δ_{i−1,i} + δ_{i,i+1})/2    | δ(u)   | 2 (7)          |
 //! | `centralNormal`     | ∠(n_{i,i+1}, e₃(u))          | 0      | 1 (4)          |
-//! | `perpendicularMidpoint` | (f_{i,i+1} + f_{i+1,i})/2 | s(u + H/2) | 2 (ERRATA 6) |
+//! | `perpendicularMidpoint` | (f_{i,i+1} + f_{i+1,i})/2 | s(u + H/2) | 2 (conventions: Example 1) |
 //!
 //! Orders are log₂ of successive error ratios; the fitted order is the least-squares slope
 //! of log(error) against log(H). Errors at the rounding floor carry no order (NaN).

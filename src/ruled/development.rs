@@ -12,7 +12,7 @@
 //! footpoints of ruling i project to consecutive corners of the envelope polygon on the
 //! projected ruling i, so the image of m_i is the midpoint of that edge.
 //!
-//! The conoidal rulings lie at heights H_i = Σ_{k<i} h_{k,k+1} along n_{0,1} (ERRATA.md 7);
+//! The conoidal rulings lie at heights H_i = Σ_{k<i} h_{k,k+1} along n_{0,1} (docs/src/conventions.md, Section 3);
 //! the *non-developability measure* is max H_i − min H_i, the "height" of the conoidal
 //! model. It is 0 for a cone or a cylinder and O(H²) for a sampled tangent surface.
 
@@ -128,7 +128,7 @@ impl Development {
 /// the step between the two footpoints on R_i over the turn of the rulings there. The
 /// isometry keeps both, and in the development the step is the chord of the envelope between
 /// two consecutive contact points while the projected rulings turn by φ, so ρ_i is its radius of
-/// curvature. By (6) with ERRATA.md 3, f_{i,i±1} = s ± (H/2)(e·ṡ) e + O(H²) and φ = H|ė| + O(H²),
+/// curvature. By (6) as corrected in docs/src/conventions.md (Section 2), f_{i,i±1} = s ± (H/2)(e·ṡ) e + O(H²) and φ = H|ė| + O(H²),
 /// so ρ_i → (e·ṡ)/|ė| at second order (the O(H²) terms of the two footpoints are symmetric).
 /// For the ruled helical surface of Fig. 5 (radius r, pitch p, rulings at slope β) that is
 /// r + p tan β: the conoidal rulings touch a cylinder of that radius about the axis, and meet

@@ -1,7 +1,7 @@
 //! Discrete invariants of a sequence of lines (Section 2, Fig. 1, Propositions 1 and 2).
 //!
 //! For consecutive rulings R_i = (a_i, e_i) and R_{i+1} = (a_{i+1}, e_{i+1}), with
-//! d = a_{i+1} − a_i and c = e_i × e_{i+1} (conventions of ERRATA.md):
+//! d = a_{i+1} − a_i and c = e_i × e_{i+1} (the conventions of docs/src/conventions.md, Section 2):
 //!
 //! - angle φ_{i,i+1} = atan2(|c|, e_i·e_{i+1}) ∈ [0, π];
 //! - signed distance h_{i,i+1} = det(d, e_i, e_{i+1}) / |c| = (d·c)/|c|;

@@ -12,7 +12,7 @@
 //! rulings keeps every body rigid to ~1e-15 and does not drift (measured in the tests).
 //!
 //! **Conoidal model** (Example 2): θ_i = −τ_i turns each body until n_{i,i+1} points the
-//! same way as n_{0,1} (ERRATA.md 7); then every ruling is orthogonal to n_{0,1}. The bending
+//! same way as n_{0,1} (docs/src/conventions.md, Section 3); then every ruling is orthogonal to n_{0,1}. The bending
 //! parameter t ∈ [0, 1] uses θ_i = −t τ_i: t = 0 is the input, t = 1 the conoidal model.
 //!
 //! **Parallel pairs** have no unique common perpendicular; the body then uses the

@@ -5,7 +5,7 @@
 //! loads), turns them into coordinates by lanes (x = (x_{k+1}, x_{k+2}), …: six shuffles),
 //! normalises both directions at once, and takes R_k, R_{k+1} from the step before (one shuffle
 //! per coordinate: the window moves by two). The formulas are those of
-//! [`PairInvariants::of`](super::PairInvariants::of) and ERRATA.md, with d = a_{k+1} − a_k and
+//! [`PairInvariants::of`](super::PairInvariants::of) and docs/src/conventions.md, with d = a_{k+1} − a_k and
 //! c = e_k × e_{k+1}:
 //!
 //! - φ = atan2(|c|, e_k·e_{k+1}) ∈ [0, π], by [`atan2_fast`] (no library call; should a lane

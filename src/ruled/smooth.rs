@@ -4,7 +4,7 @@
 //! convergence (Propositions 1–2) and accuracy take any implementation, so the algorithms do
 //! not depend on the catalogue.
 //!
-//! For any parametrisation, with e = d/|d| and e′ = (d′ − (d′·e)e)/|d| (ERRATA.md):
+//! For any parametrisation, with e = d/|d| and e′ = (d′ − (d′·e)e)/|d| (docs/src/conventions.md, Section 2):
 //!
 //! - striction point s(u) = a − ((a′·e′)/(e′·e′)) e,
 //! - distribution parameter δ(u) = det(a′, e, e′)/(e′·e′),

@@ -1,5 +1,5 @@
 //! How far refined rulings are from the exact surface they were sampled from: the measure
-//! behind the comparison of schemes in Section 4 (README, `cargo run --example subdivision`).
+//! behind the comparison of schemes in Section 4 (docs/src/guide/subdivision.md, `cargo run --example subdivision`).
 
 use crate::ruled::RuledSurface;
 use crate::ruled::SmoothRuled;

@@ -9,7 +9,7 @@
 //! **Literal variant** (umbrellas at the new vertices Z_{i,k}, 0 < k < n, only, as written):
 //! since every point is linear in k, U + Ũ and U − Ũ separate and
 //! U² + Ũ² = 2|⅓(z_{i,k} − 2Z_{i,k} + z_{i+1,k})|² + const, so the minimiser is exactly the
-//! midpoint rule A_i = (a_i + a_{i+1})/2 (ERRATA.md; a test shows it).
+//! midpoint rule A_i = (a_i + a_{i+1})/2 (docs/src/conventions.md, Section 4; a test shows it).
 //!
 //! **Coupled variant** (default): umbrellas at every interior vertex of the refined strip,
 //! old vertices included, whose neighbours are new points (Kobbelt's variational
@@ -23,7 +23,7 @@
 //! (A_i, B_i) with 2×2-block tridiagonal, symmetric positive definite matrix (n ≥ 3): one
 //! banded Cholesky solve, O(N) time for any n, three right-hand sides (x, y, z).
 //!
-//! **Measured** (README, `cargo run --release --example subdivision`): the coupled scheme
+//! **Measured** (docs/src/guide/subdivision.md, `cargo run --release --example subdivision`): the coupled scheme
 //! beats the midpoint rule clearly, but the twist term ((n−1)/(18n²))|D_i − D_{i−1}|², which
 //! comes from the sheared neighbours of the two triangulations, does not vanish for smooth
 //! data and costs accuracy; [`Variant::Averaged`] omits it.

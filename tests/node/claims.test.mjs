@@ -4,6 +4,7 @@
 // a claim that never appears in the sweep fails too, so none can silently drop out.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
 import ruledlab from './load.mjs';
 import { SCENES } from '../../www/scenes/index.js';
 import { PRESETS } from '../../www/paper.js';
@@ -68,6 +69,37 @@ test('curves (Figs. 7–8): on the zigzag the four-point angle falls from 8 to 1
 test('strip (Example 3): the literal energy is the midpoint rule, coupled beats it for 5 ≤ n ≤ 24 and not for n = 3, 4, four-point is exact', () => {
   const seen = checkClaims('strip', { scheme: ['literal', 'coupled', 'averaged', 'four-point'], n: range(3, 24) });
   assert.deepEqual([...seen].sort(), ['strip.claim.coupled', 'strip.claim.fourPoint', 'strip.claim.literal']);
+});
+
+test('the conventions page states, with its n, how much the coupled strip energy gains over the midpoint rule on Example 3', () => {
+  // the table of docs/src/conventions.md ("How much the coupled reading gains"), recomputed row by
+  // row with the measure of the strip scene's readout, in the digits it shows
+  const page = readFileSync(new URL('../../docs/src/conventions.md', import.meta.url), 'utf8');
+  const header = '| n | midpoint rule | coupled | midpoint / coupled |';
+  const at = page.indexOf(header);
+  assert.ok(at >= 0, `docs/src/conventions.md has no table "${header}"`);
+  const rows = [...page.slice(at).matchAll(/^\| (\d+) \| ([\d.e-]+) \| ([\d.e-]+) \| ([\d.]+) \|$/gm)];
+  assert.ok(rows.length >= 5, `only ${rows.length} rows in the table`);
+  const { AnalyticSurface } = ruledlab;
+  const quartic = AnalyticSurface.byName('quartic');
+  const strip = quartic.sample(12, { uMin: -1, uMax: 1, closed: false });
+  const distance = (/** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */ options) => {
+    const refined = strip.subdivide(options);
+    const d = quartic.insertedDistance(refined, 2, -1, 1);
+    refined.free();
+    return d;
+  };
+  const midpoint = distance({ scheme: 'bspline', degree: 1 });
+  for (const [, n, mid, coupledText, ratio] of rows) {
+    const coupled = distance({ scheme: 'variational', n: Number(n), variant: 'coupled' });
+    assert.deepEqual(
+      [midpoint.toExponential(1), coupled.toExponential(1), (midpoint / coupled).toFixed(1)],
+      [mid, coupledText, ratio],
+      `n = ${n}`,
+    );
+  }
+  strip.free();
+  quartic.free();
 });
 
 test('congruences (Examples 4–5): at one step the butterfly scheme is the most accurate on every built-in congruence', () => {

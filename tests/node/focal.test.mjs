@@ -1,6 +1,6 @@
 // Focal geometry and linear complexes (beyond the paper) through the package: the shapes the
-// README documents, exact answers (two skew lines, a helical surface, a hyperboloid), the
-// discrete values against the exact ones, and coded errors.
+// book documents (docs/src/guide/focal.md), exact answers (two skew lines, a helical surface, a
+// hyperboloid), the discrete values against the exact ones, and coded errors.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab from './load.mjs';

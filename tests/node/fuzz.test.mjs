@@ -2,6 +2,7 @@
 // (never a wasm trap, a WebAssembly.RuntimeError), and the module keeps working afterwards.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
 import ruledlab from './load.mjs';
 
 const {
@@ -234,20 +235,27 @@ function formula() {
   return s.join('');
 }
 
-// the README's table of error codes: every thrown Error has one of them
+// the book's table of error codes (docs/src/guide/errors.md): every thrown Error has one of them
 const CODES = [
-  'invalid-argument',
-  'not-finite',
-  'out-of-range',
-  'too-large',
-  'too-small',
-  'parse-error',
-  'degenerate',
-  'not-converged',
-  'singular',
-  'freed',
-  'invalid-state',
-];
+  ...readFileSync(new URL('../../docs/src/guide/errors.md', import.meta.url), 'utf8').matchAll(
+    /^\| `([a-z-]+)` \| (?!meaning)/gm,
+  ),
+].map((m) => m[1]);
+test('the book lists the error codes', () => {
+  assert.deepEqual(CODES, [
+    'invalid-argument',
+    'not-finite',
+    'out-of-range',
+    'too-large',
+    'too-small',
+    'parse-error',
+    'degenerate',
+    'not-converged',
+    'singular',
+    'freed',
+    'invalid-state',
+  ]);
+});
 
 const CALLS = [
   (_f) =>

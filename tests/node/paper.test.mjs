@@ -1,6 +1,6 @@
 // The paper's figures and examples as presets (www/paper.js): every figure 1–18 and example 1–6
 // is there, each names a real scene with valid values and texts in every language, `#paper=…`
-// links open and restore it, and the README's section is generated from the same list.
+// links open and restore it, and the book's page of the figures is generated from the same list.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
@@ -80,7 +80,7 @@ test("a parameter that does nothing at the figure's settings does not count as a
   assert.ok(!atPreset(fig12, scene, { ...defaults(scene), ...fig12.params, congruence: 'sphere' }));
 });
 
-test('the README section "ruledlab and the paper" is generated from the presets and current', () => {
+test('the book\'s page "The paper, figure by figure" is generated from the presets and current', () => {
   execFileSync(process.execPath, [new URL('../../scripts/paper-table.mjs', import.meta.url).pathname, '--check'], {
     stdio: 'pipe',
   });

@@ -1,4 +1,4 @@
-// In a course system: the ways Moodle, Canvas, ILIAS and H5P show user content (README, "In a
+// In a course system: the ways Moodle, Canvas, ILIAS and H5P show user content (the book, "In a
 // course system"), reproduced on a page of another origin. Each frame must draw, show its
 // controls, move its picture when a control is used, log no console error and request nothing
 // outside ruledlab's files (the one-file build: nothing but itself).

@@ -51,7 +51,7 @@ export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders 
     layers.push({ kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) });
   }
   if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: segments, indices: stripIndices(n, closed) });
-  // beyond the paper: the linear complex that fits the rulings (README, "Focal geometry")
+  // beyond the paper: the linear complex that fits the rulings (the book: guide/focal.md)
   const complex = surface.linearComplex({ tolerance: DATA_COMPLEX_TOLERANCE });
   if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisSegment[0])) {
     layers.push({ kind: 'segments', style: 'complexAxis', positions: f32(complex.axisSegment) });

@@ -101,7 +101,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
   // import: pasted text or an uploaded file; an error is said at the paste box, and the scene
   // stays as it is
   const show = (/** @type {string} */ text) => {
-    // an exercise file (README, "Exercises") opens as the exercise it is
+    // an exercise file (the book: teaching/exercises.md) opens as the exercise it is
     if (onTask && /^\s*\{[\s\S]*"ruledlab"\s*:\s*"exercise"/.test(text)) {
       importError.hidden = true;
       paste.removeAttribute('aria-invalid');

@@ -1,4 +1,4 @@
-// The exercise format (README, "Exercises"): a small JSON document a lecturer writes (or the
+// The exercise format (the book: teaching/exercises.md): a small JSON document a lecturer writes (or the
 // page writes for her: task/author.js) and the page checks. Read here into a Task, or refused
 // with a clear message: unknown keys, wrong types, numbers that are not finite or absurdly large,
 // texts too long, conditions of the wrong shape. Whether the values a condition names exist in

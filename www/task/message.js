@@ -1,5 +1,5 @@
 // What an exercise tells the page around it (a course system, an LTI tool): each check and the
-// moment it is solved, as a message to the parent window. Its shape (README, "Exercises"):
+// moment it is solved, as a message to the parent window. Its shape (the book: teaching/exercises.md):
 //   { source: "ruledlab", version: 1, type: "task-check" | "task-solved",
 //     task, title, solved, passed, of, conditions: [{ holds, value, target }], answers,
 //     state: { scene, params, input } }

@@ -184,7 +184,7 @@ Geraden ist eine Regelfläche: Das Streifenschema fügt die Geraden T und S auf 
 jede Masche erhält die Gerade, deren Umbrella-Vektor (20) über ihre acht Nachbarn in jeder Schicht
 verschwindet: deren Mittel. Wörtlich gelesen (Umbrella-Vektoren nur in den neuen Punkten) liefert das
 Streifenschema die Mittelpunktsregel, das Schema der Arbeit („Arbeit“) ist also bilineare Mittelung
-der vier Ecken (ERRATA.md).</p>
+der vier Ecken.</p>
 <p class="rl-beyond"><strong>Über die Arbeit hinaus.</strong> „Butterfly, alle Kanten“ wendet die
 Schablone von (16) auch auf die beiden anderen Kantenrichtungen an, sodass ein Schritt das Gitter
 verdoppelt. „Zweistufig“ bildet die Kantengeraden mit der gekoppelten Streifenenergie von ruledlab;
@@ -221,7 +221,7 @@ mm bei 1 Einheit = 10 mm).</p>
 Steuerung (LinuxCNC, Heidenhain, Sinumerik) und Kinematik: Maschinenkoordinaten, von ruledlab
 berechnet, oder die Werkzeugspitze (TCP), die die Steuerung umrechnet. Der Postprozessor fügt Lagen
 ein, bis die Interpolation innerhalb von 0,01 mm bleibt, und das Programm beginnt und endet mit
-sicheren Bewegungen entlang der Werkzeugachse (README, „For CAM“). Eigene Werkzeuglagen — eine CSV
+sicheren Bewegungen entlang der Werkzeugachse (Handbuch, Teil „CAM“). Eigene Werkzeuglagen — eine CSV
 mit Spitze x, y, z und Achse i, j, k je Zeile, JSON oder die hier exportierten Dateien — werden im
 Datenbereich eingefügt oder hochgeladen („Werkzeuglagen“) und öffnen sich in dieser Szene.</p>
 <p class="rl-paper-data">Die Arbeit gibt für Beispiel 6 keine Daten an; das Profil auf der
@@ -264,7 +264,7 @@ Werkstück nahe kommt, schneiden sich die Achsen beinahe.</p>
 <p>ruledlab berechnet all das allein aus den Geraden: aus ihren Plücker-Koordinaten, über das Gitter
 differenziert (zentral im Inneren, über drei Geraden am Rand). Das Ergebnis hängt nicht davon ab,
 wo die Punkte p und q auf ihren Geraden liegen, bewegt sich exakt mit Bewegungen mit und
-konvergiert von zweiter Ordnung, auch am Rand (README, „Focal geometry“). Die Anzeige passt
+konvergiert von zweiter Ordnung, auch am Rand (Handbuch, „Focal geometry and linear complexes“). Die Anzeige passt
 außerdem den <em>linearen Komplex</em>
 ${m(`<mi>c</mi><mo>·</mo><mi>m</mi><mo>+</mo><mover><mi>c</mi><mo>‾</mo></mover><mo>·</mo><mi>d</mi><mo>=</mo><mn>0</mn>`)}
 an, der die Geraden am besten enthält: die Treffgeraden zweier windschiefer Geraden liegen in

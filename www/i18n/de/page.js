@@ -19,7 +19,7 @@ export default {
   'boot.noWebgl2':
     'ruledlab konnte nicht starten: Dieser Browser (oder dieses Gerät) bietet kein WebGL2, das die 3D-Ansicht braucht. Aktuelle Versionen von Firefox, Chrome, Edge und Safari bieten es; ein Browser mit abgeschalteter Hardwarebeschleunigung unter Umständen nicht.',
   'boot.cspWasm':
-    "ruledlab konnte nicht starten: Die Seite, in der es steht, verbietet WebAssembly. Ihre Content-Security-Policy braucht 'wasm-unsafe-eval' in script-src (README, „In a course system“).",
+    "ruledlab konnte nicht starten: Die Seite, in der es steht, verbietet WebAssembly. Ihre Content-Security-Policy braucht 'wasm-unsafe-eval' in script-src (im Handbuch von ruledlab: „In a course system“).",
   'boot.noWasm':
     'ruledlab konnte nicht starten: Dieser Browser kann sein WebAssembly nicht ausführen (nötig ist WebAssembly mit SIMD: Chrome 91, Firefox 89, Safari 16.4 oder neuer).',
   'boot.load':

@@ -48,7 +48,7 @@ export default {
   'paper.fig3.note':
     'Das Polygon, das Beispiel 1 beschreibt: die Mittelpunkte (f_{i,i+1} + f_{i+1,i})/2 der gemeinsamen Lote, auf dem Hyperboloid der Arbeit mit 36 Erzeugenden (Zahl von ruledlab).',
   'paper.fig3.beyond':
-    'Das ist nicht das Kehlpolygon m_i aus Satz 2, das der Text als diskrete Kehllinie verwendet: Es nähert die Kehllinie zwischen zwei Erzeugenden, bei u + H/2, ebenfalls mit zweiter Ordnung (ERRATA.md 6). Schalten Sie das Kehlpolygon dazu, um beide zu sehen; die Anzeige misst jedes.',
+    'Das ist nicht das Kehlpolygon m_i aus Satz 2, das der Text als diskrete Kehllinie verwendet: Es nähert die Kehllinie zwischen zwei Erzeugenden, bei u + H/2, ebenfalls mit zweiter Ordnung. Schalten Sie das Kehlpolygon dazu, um beide zu sehen; die Anzeige misst jedes.',
   'paper.fig4.caption':
     '„Diskretes Regelflächenmodell (links) und dazu isometrisches konoidales Modell (rechts).“ (übersetzt)',
   'paper.fig4.note':
@@ -80,10 +80,10 @@ export default {
   'paper.fig10.note':
     'Beispiel 3 mit den Daten der Arbeit: 12 Erzeugende von (1 + vu², u²/2 + uv, u − v), n = 12, ein Schritt der Energie (15) wörtlich gelesen; Kugeln um A_i (hell) und B_i (dunkel). Die Intervalle u ∈ [−1, 1] und v ∈ [−1, 1] (die Enden der Erzeugenden) wählt ruledlab: Die Arbeit nennt keines von beiden.',
   'paper.strip.beyond':
-    'Wörtlich gelesen setzt (15) Umbrella-Vektoren nur in die neuen Punkte, und das Minimum ist genau die Mittelpunktsregel (ERRATA.md; unter der Anzeige geprüft). Die gekoppelte und die gemittelte Energie von ruledlab setzen sie in jeden Knoten; die Anzeige vergleicht jedes Schema bei diesem n: Gekoppelt schlägt die Mittelpunktsregel für jedes n von 5 bis 24 (nicht für n = 3, 4), und das Vierpunktschema ist auf dieser Fläche exakt.',
+    'Wörtlich gelesen setzt (15) Umbrella-Vektoren nur in die neuen Punkte, und das Minimum ist genau die Mittelpunktsregel (unter der Anzeige geprüft). Die gekoppelte und die gemittelte Energie von ruledlab setzen sie in jeden Knoten; die Anzeige vergleicht jedes Schema bei diesem n: Gekoppelt schlägt die Mittelpunktsregel für jedes n von 5 bis 24 (nicht für n = 3, 4), und das Vierpunktschema ist auf dieser Fläche exakt.',
   'paper.fig11.caption': '„Durch zwei Leitflächen bestimmte Geradenkongruenz.“ (übersetzt)',
   'paper.fig11.note':
-    'Die Geraden aus Beispiel 5 zwischen den Leitflächen d₁ und d₂, beide schattiert. Die Abbildung der Arbeit ist eine Skizze; ruledlab nimmt für d₂ die Punkte p + 0,35 d (die Arbeit nennt keine Länge der Strecken, ERRATA.md 9).',
+    'Die Geraden aus Beispiel 5 zwischen den Leitflächen d₁ und d₂, beide schattiert. Die Abbildung der Arbeit ist eine Skizze; ruledlab nimmt für d₂ die Punkte p + 0,35 d (die Arbeit nennt keine Länge der Strecken).',
   'paper.fig12.caption': '„Das Butterfly-Schema.“ (übersetzt)',
   'paper.fig12.note':
     'Die Schablone von (16) ist neben der Ansicht mit allen Gewichten gezeichnet; die Ansicht zeigt die Geraden, die sie auf den Diagonalen des Gitters aus Beispiel 5 einfügt (ein Schritt, wie in der Arbeit). Den Spannungsparameter w = 1/16 wählt ruledlab (er reproduziert kubische Polynome): Die Arbeit nennt keinen Wert.',
@@ -96,11 +96,11 @@ export default {
   'paper.fig14.caption':
     '„Punktschema auf der Leitfläche d₁ (links), Teil der Kongruenz mit einigen Bezeichnungen (rechts).“ (übersetzt)',
   'paper.fig14.note':
-    'Die Bezeichnungen aus Abschnitt 5.2 an einer Masche von Beispiel 5: die gegebenen Geraden R_{i,j} mit ihren Punkten p auf d₁ und q auf d₂, die Kantengeraden T_{i,j} (Punkte r, r′) und S_{i,j} (s, s′) und die Maschengerade R̄_{i,j} (Punkte P, Q). Die Indexbereiche folgen ERRATA.md 9.',
+    'Die Bezeichnungen aus Abschnitt 5.2 an einer Masche von Beispiel 5: die gegebenen Geraden R_{i,j} mit ihren Punkten p auf d₁ und q auf d₂, die Kantengeraden T_{i,j} (Punkte r, r′) und S_{i,j} (s, s′) und die Maschengerade R̄_{i,j} (Punkte P, Q). T läuft über jede Zeile, 1 ≤ j ≤ N₂ (das N₂ − 1 des Texts ließe die letzte aus).',
   'paper.fig15.caption':
     '„Diskrete Geradenkongruenz (links), eingefügte Geraden (schwarz, dick) (rechts).“ (übersetzt)',
   'paper.fig15.note':
-    'Beispiel 5 mit den Daten der Arbeit: d₁ = (u, v, ½ sin(2u + 1,5v)), Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6, einmal verfeinert mit dem wörtlich gelesenen variationellen Schema der Arbeit: Kantengeraden nach der Mittelpunktsregel, jede Maschengerade das Mittel ihrer acht Nachbarn (ERRATA.md). So gelesen wirkt sich K nicht auf das Ergebnis aus: Jedes K liefert dieselben Geraden.',
+    'Beispiel 5 mit den Daten der Arbeit: d₁ = (u, v, ½ sin(2u + 1,5v)), Richtungen (u, v, sin u + 1,3 cos v), 8 × 7 Geraden auf [−1,1; 1,1]², K = 6, einmal verfeinert mit dem wörtlich gelesenen variationellen Schema der Arbeit: Kantengeraden nach der Mittelpunktsregel, jede Maschengerade das Mittel ihrer acht Nachbarn. So gelesen wirkt sich K nicht auf das Ergebnis aus: Jedes K liefert dieselben Geraden.',
   'paper.congruence.beyond':
     'Wörtlich gelesen liefern die Energien (15) und (21) bloße Mittelwerte; ruledlab bietet außerdem „zweistufig“ (seine gekoppelte Streifenenergie auf den Kanten), „gekoppelt“ (alle neuen Geraden in einem dünn besetzten System) und das Butterfly-Schema auf allen Kanten. Die Anzeige misst das gezeigte Schema und zum Vergleich alle vier nach einem Schritt; auf jeder eingebauten Kongruenz ist das Butterfly-Schema auf allen Kanten am genauesten (unter der Anzeige geprüft).',
   'paper.fig16.caption': '„Erster Schritt der Verfeinerung.“ (übersetzt)',

@@ -103,7 +103,7 @@ export default {
   'author.noSolution':
     'Lösung: keine festgehalten (freiwillig). Stellen Sie die Ansicht auf einen gelösten Zustand und halten Sie ihn fest.',
   'author.make': 'Die Aufgabe machen',
-  'author.json': 'Die Aufgabe als JSON (README, „Exercises“)',
+  'author.json': 'Die Aufgabe als JSON (Format: Handbuch von ruledlab, „Exercises“)',
   'author.try': 'Als Lesende ausprobieren',
   'author.close': 'Schließen',
 

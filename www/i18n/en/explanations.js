@@ -178,7 +178,7 @@ tension w; ruledlab uses w = 1/16, which reproduces cubic polynomials.</p>
 a ruled surface: the strip scheme inserts the lines T and S on the edges, and each face gets the
 line whose umbrella vector (20) over its eight neighbours vanishes in every layer: their average.
 Read literally (umbrellas at the new points only), the strip scheme gives the midpoint rule, so the
-paper's scheme ("paper") is bilinear averaging of the four corners (ERRATA.md).</p>
+paper's scheme ("paper") is bilinear averaging of the four corners.</p>
 <p class="rl-beyond"><strong>Beyond the paper.</strong> "Butterfly, all edges" applies (16)'s stencil
 to the other two edge directions too, so one step doubles the grid. "Two-stage" makes the edge lines
 with ruledlab's coupled strip energy; "coupled" lets all new lines settle together in one sparse
@@ -210,7 +210,7 @@ the tool length, in mm at 1 unit = 10 mm).</p>
 <p>The buttons export the path as JSON, CSV, or G-code for the machine, controller (LinuxCNC,
 Heidenhain, Sinumerik) and kinematics chosen: machine coordinates computed by ruledlab, or the
 tool-centre point left to the controller. The post inserts poses until the interpolation stays within
-0.01 mm, and the program starts and ends with safe moves along the tool axis (README, "For CAM").
+0.01 mm, and the program starts and ends with safe moves along the tool axis (the book’s part “CAM”).
 Your own tool poses — a CSV of tip x, y, z and axis i, j, k per row, JSON, or the files exported
 here — are pasted or uploaded in the data panel ("tool poses") and open in this scene.</p>
 <p class="rl-paper-data">The paper gives no data for Example 6; the profile on the part surface
@@ -249,7 +249,7 @@ lines turn elliptic or a focal surface comes close to the part, the axes nearly 
 <p>ruledlab computes all of this from the lines alone: their Plücker coordinates, differenced
 over the grid (central inside, over three lines at the edge). The result does not depend on where
 the points p and q sit on their lines, moves exactly with rigid motions, and converges at second
-order, at the boundary too (README, "Focal geometry"). The readout also fits the
+order, at the boundary too (the book, “Focal geometry and linear complexes”). The readout also fits the
 <em>linear complex</em> ${m(`<mi>c</mi><mo>·</mo><mi>m</mi><mo>+</mo><mover><mi>c</mi><mo>‾</mo></mover><mo>·</mo><mi>d</mi><mo>=</mo><mn>0</mn>`)}
 that holds the lines best: the lines meeting two skew lines lie in two (a linear congruence).</p>
 <p class="rl-paper-data">Data: Example 5's congruence is the paper's; Example 4's two congruences

@@ -19,7 +19,7 @@ export default {
   'boot.noWebgl2':
     'ruledlab could not start: this browser (or this device) does not provide WebGL2, which the 3D view needs. Current Firefox, Chrome, Edge and Safari provide it; a browser with hardware acceleration turned off may not.',
   'boot.cspWasm':
-    "ruledlab could not start: the page it is in forbids WebAssembly. Its Content-Security-Policy needs 'wasm-unsafe-eval' in script-src (README, “In a course system”).",
+    "ruledlab could not start: the page it is in forbids WebAssembly. Its Content-Security-Policy needs 'wasm-unsafe-eval' in script-src (ruledlab’s book: “In a course system”).",
   'boot.noWasm':
     'ruledlab could not start: this browser cannot run its WebAssembly (it needs WebAssembly with SIMD: Chrome 91, Firefox 89, Safari 16.4 or later).',
   'boot.load':

@@ -48,7 +48,7 @@ export default {
   'paper.fig3.note':
     'The polygon Example 1 describes: the midpoints (f_{i,i+1} + f_{i+1,i})/2 of the common perpendiculars, on the paper’s hyperboloid with 36 rulings (ruledlab’s number).',
   'paper.fig3.beyond':
-    'This is not the striction polygon m_i of Proposition 2, which the text uses as the discrete striction curve: it approximates the striction curve between two rulings, at u + H/2, also at second order (ERRATA.md 6). Switch the striction polygon on to see both; the readout measures each.',
+    'This is not the striction polygon m_i of Proposition 2, which the text uses as the discrete striction curve: it approximates the striction curve between two rulings, at u + H/2, also at second order. Switch the striction polygon on to see both; the readout measures each.',
   'paper.fig4.caption': '“Discrete ruled surface model (left) and conoidal model isometric to the first one (right).”',
   'paper.fig4.note':
     'The hinge chain turned all the way into its conoidal model (t = 1), the surface itself as a faint ghost, drawn in one view rather than side by side (the three-panel layout is Fig. 6). The paper gives no data; ruledlab uses 24 rulings of Example 3’s quartic.',
@@ -78,10 +78,10 @@ export default {
   'paper.fig10.note':
     'Example 3 with the paper’s data: 12 rulings of (1 + vu², u²/2 + uv, u − v), n = 12, one step of the energy (15) read literally; spheres at A_i (light) and B_i (dark). The intervals u ∈ [−1, 1] and v ∈ [−1, 1] (the rulings’ ends) are ruledlab’s: the paper gives neither.',
   'paper.strip.beyond':
-    'Read literally, (15) puts umbrella vectors at the new points only, and its minimiser is exactly the midpoint rule (ERRATA.md; checked under the readout). ruledlab’s coupled and averaged energies put them at every vertex; the readout compares every scheme at this n: coupled beats the midpoint rule for every n from 5 to 24 (not for n = 3, 4), and the four-point scheme is exact on this surface.',
+    'Read literally, (15) puts umbrella vectors at the new points only, and its minimiser is exactly the midpoint rule (checked under the readout). ruledlab’s coupled and averaged energies put them at every vertex; the readout compares every scheme at this n: coupled beats the midpoint rule for every n from 5 to 24 (not for n = 3, 4), and the four-point scheme is exact on this surface.',
   'paper.fig11.caption': '“Congruence of lines determined by two directrices.”',
   'paper.fig11.note':
-    'Example 5’s lines between the director surface d₁ and d₂, both shaded. The paper’s figure is a sketch; ruledlab takes d₂ as the points p + 0.35 d (the paper gives no segment length, ERRATA.md 9).',
+    'Example 5’s lines between the director surface d₁ and d₂, both shaded. The paper’s figure is a sketch; ruledlab takes d₂ as the points p + 0.35 d (the paper gives no segment length).',
   'paper.fig12.caption': '“The butterfly-scheme.”',
   'paper.fig12.note':
     'The stencil of (16) is drawn beside the view with all its weights; the view shows the lines it inserts on the diagonals of Example 5’s grid (one step, as in the paper). The tension w = 1/16 is ruledlab’s choice (it reproduces cubic polynomials): the paper gives no value.',
@@ -94,10 +94,10 @@ export default {
   'paper.fig14.caption':
     '“Point scheme on directrix surface d₁ (left), part of the congruence with some notations (right).”',
   'paper.fig14.note':
-    'The notation of Section 5.2 on one cell of Example 5: the given lines R_{i,j} with their points p on d₁ and q on d₂, the edge lines T_{i,j} (points r, r′) and S_{i,j} (s, s′), and the face line R̄_{i,j} (points P, Q). The index ranges follow ERRATA.md 9.',
+    'The notation of Section 5.2 on one cell of Example 5: the given lines R_{i,j} with their points p on d₁ and q on d₂, the edge lines T_{i,j} (points r, r′) and S_{i,j} (s, s′), and the face line R̄_{i,j} (points P, Q). T runs over every row, 1 ≤ j ≤ N₂ (the text’s N₂ − 1 would leave out the last).',
   'paper.fig15.caption': '“Discrete congruence of lines (left), inserted lines (black thick) (right).”',
   'paper.fig15.note':
-    'Example 5 with the paper’s data: d₁ = (u, v, ½ sin(2u + 1.5v)), directions (u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6, refined once by the paper’s variational scheme read literally: midpoint edge lines, each face line the average of its eight neighbours (ERRATA.md). Read so, K has no effect on the result: every K gives the same lines.',
+    'Example 5 with the paper’s data: d₁ = (u, v, ½ sin(2u + 1.5v)), directions (u, v, sin u + 1.3 cos v), 8 × 7 lines on [−1.1, 1.1]², K = 6, refined once by the paper’s variational scheme read literally: midpoint edge lines, each face line the average of its eight neighbours. Read so, K has no effect on the result: every K gives the same lines.',
   'paper.congruence.beyond':
     'Read literally, the energies (15) and (21) give plain averages; ruledlab also offers “two-stage” (its coupled strip energy on the edges), “coupled” (all new lines in one sparse solve) and the butterfly scheme on all edges. The readout measures the scheme shown and, for comparison, all four at one step; on every built-in congruence the butterfly scheme on all edges is the most accurate (checked under the readout).',
   'paper.fig16.caption': '“First step of the refinement.”',

@@ -98,7 +98,7 @@ export default {
   'author.solutionRecorded': 'Solution: recorded (shown to the reader on request after a first check).',
   'author.noSolution': 'Solution: none recorded (optional). Set the view to a solved state and record it.',
   'author.make': 'Make the exercise',
-  'author.json': 'The exercise as JSON (README, “Exercises”)',
+  'author.json': 'The exercise as JSON (format: ruledlab’s book, “Exercises”)',
   'author.try': 'Try it as a reader',
   'author.close': 'Close',
 
