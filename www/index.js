@@ -43,7 +43,9 @@ export { builtInTasks, builtInTask } from './task/builtin.js';
  * @typedef {import('./theme.js').Hatch} Hatch
  * @typedef {import('./i18n/index.js').Translator} Translator
  * @typedef {import('./camera.js').OrbitCamera} OrbitCamera
- * @typedef {import('./stage.js').StageOptions} StageOptions
+ * @typedef {import('./stage/options.js').StageOptions} StageOptions
+ * @typedef {import('./stage/options.js').OpenOptions} OpenOptions
+ * @typedef {import('./stage/options.js').Notes} Notes
  * @typedef {import('./export/svg.js').FigureOptions} FigureOptions
  * @typedef {import('./ruled-view.js').SceneChangeDetail} SceneChangeDetail
  * @typedef {import('./ruled-view.js').ViewChangeDetail} ViewChangeDetail
