@@ -91,3 +91,55 @@ test('no file of www/ over 600 lines; the stage and its parts under 400', () => 
   }
   assert.deepEqual(long, []);
 });
+
+test('scenes and figures ask the core for geometry: no roots, angles or vector helpers of their own', () => {
+  // the few uses that are not geometry of the paper, each with its reason
+  const allowed = new Map([
+    ['scenes/formula.js', 'Math.hypot of the bounding box: how far the camera stands back'],
+    ['scenes/lines.js', 'Math.sin/cos: a fixed pseudo-random wiggle of the demo input, not a formula'],
+    ['figures/isometry.js', "math.js's multiply: the 4×4 frame of the conoidal model, as WebGL takes it"],
+  ]);
+  const wrong = [];
+  for (const [m, deps] of graph()) {
+    if (!m.startsWith('scenes/') && !m.startsWith('figures/')) continue;
+    const text = readFileSync(join(WWW, m), 'utf8');
+    const uses = [
+      ...text.matchAll(/Math\.(sqrt|hypot|atan2?|acos|asin|cos|sin|tan|cbrt)\b/g),
+      ...(deps.includes('math.js') ? [['math.js']] : []),
+    ];
+    if (uses.length && !allowed.has(m)) wrong.push(`${m}: ${uses.map((u) => u[0]).join(', ')}`);
+  }
+  assert.deepEqual(wrong, []);
+  // an allowance that is no longer needed is taken out
+  for (const m of allowed.keys()) assert.ok(graph().has(m), `${m} is gone: take it off the list`);
+});
+
+test('ARCHITECTURE.md names only files that exist', () => {
+  const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+  const text = readFileSync(join(ROOT, 'ARCHITECTURE.md'), 'utf8');
+  // paths in backticks, and the file names of the diagrams (relative to www/ there)
+  const names = new Set([
+    ...[...text.matchAll(/`([\w./-]+\.(?:js|mjs|rs|md|sh|json|toml|html))`/g)].map((m) => m[1]),
+    ...[...text.matchAll(/```\n([\s\S]*?)```/g)].flatMap((m) =>
+      [...m[1].matchAll(/[\w./-]+\.(?:js|rs)\b/g)].map((n) => n[0]),
+    ),
+  ]);
+  // a name may be written relative to the folder its sentence is about ("`base/lanes/`'s
+  // `simd128.rs`"): it must be the end of a path of the repository
+  /** @type {(dir: string) => string[]} */
+  const walk = (dir) =>
+    readdirSync(join(ROOT, dir)).flatMap((name) => {
+      const path = dir ? `${dir}/${name}` : name;
+      if (['node_modules', 'target', 'pkg', 'dist', 'site', '.git', 'corpus', 'artifacts'].includes(name)) return [];
+      return statSync(join(ROOT, path)).isDirectory() ? walk(path) : [path];
+    });
+  const files = walk('');
+  const missing = [...names].filter(
+    (name) =>
+      !name.includes('<') &&
+      !/^(pkg|dist|site|target)\//.test(name) && // what the build makes
+      !files.some((f) => f === name || f.endsWith(`/${name}`)),
+  );
+  assert.ok(names.size > 60, `only ${names.size} names found`);
+  assert.deepEqual(missing, []);
+});
