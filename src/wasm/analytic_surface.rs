@@ -202,7 +202,7 @@ impl AnalyticSurface {
         const F: &str = "AnalyticSurface.parameters";
         let count = integer(F, "count", &count, 2, MAX_SAMPLES)?;
         let r = self.ranges(F, opts)?;
-        Ok(Float64Array::from(&crate::base::parameters(count, r)[..]))
+        Ok(Float64Array::from(&crate::base::sample_parameters(count, r)[..]))
     }
 
     // --- exact values
@@ -323,7 +323,7 @@ impl AnalyticSurface {
         let levels = integer_option(F, "levels", o.levels, 2, MAX_STUDY_LEVELS)?.unwrap_or(8);
         let u = finite_option(F, "u", o.u)?.unwrap_or(0.7);
         let h0 = finite_option(F, "h0", o.h0)?.unwrap_or(0.2);
-        let study = convergence::study(self.core(), u, h0, levels).map_err(|e| fail(F, e))?;
+        let study = convergence::convergence_study(self.core(), u, h0, levels).map_err(|e| fail(F, e))?;
         to_js(F, &study)
     }
 }

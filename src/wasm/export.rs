@@ -40,11 +40,11 @@ pub(super) fn export(
         "\"csv\", \"json\" or \"obj\""
     };
     match (format.as_string().as_deref(), surface) {
-        (Some("csv"), _) => Ok(io::csv::write(flat)),
-        (Some("json"), _) => Ok(io::json::write(flat, grid)),
+        (Some("csv"), _) => Ok(io::csv::write_csv(flat)),
+        (Some("json"), _) => Ok(io::json::write_json(flat, grid)),
         (Some("obj"), _) => Ok(io::obj::write_obj(flat, surface.is_some(), name)),
-        (Some("invariants-csv"), Some(s)) => Ok(io::invariants::write_csv(&s.invariants())),
-        (Some("invariants-json"), Some(s)) => Ok(io::invariants::write_json(&s.invariants())),
+        (Some("invariants-csv"), Some(s)) => Ok(io::invariants::invariants_csv(&s.invariants())),
+        (Some("invariants-json"), Some(s)) => Ok(io::invariants::invariants_json(&s.invariants())),
         (got, _) => {
             let got = got.map_or_else(|| describe(format), |g| format!("\"{g}\""));
             Err(fail(func, format!("format must be {known}, got {got}")))

@@ -104,7 +104,7 @@ enum CoolantName {
 /// The preset machine `name`, or an error naming the presets.
 pub(super) fn preset(func: &str, name: &str) -> Result<machine::Machine, JsValue> {
     machine::Machine::preset(name).ok_or_else(|| {
-        let known: Vec<String> = machine::PRESETS.iter().map(|p| format!("\"{p}\"")).collect();
+        let known: Vec<String> = machine::MACHINE_PRESETS.iter().map(|p| format!("\"{p}\"")).collect();
         fail_option(func, "machine", format!("machine: unknown preset \"{name}\", expected {}", known.join(", ")))
     })
 }

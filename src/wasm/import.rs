@@ -54,8 +54,8 @@ pub fn import_segments(
         format.as_string().unwrap_or_default()
     };
     let imported = match format.as_str() {
-        "csv" => io::csv::parse_with(&text, &js_number),
-        "json" => io::json::parse_with(&text, &js_number),
+        "csv" => io::csv::read_csv_with(&text, &js_number),
+        "json" => io::json::read_json_with(&text, &js_number),
         other => return Err(fail(F, format!("format must be \"csv\" or \"json\", got \"{other}\""))),
     }
     .map_err(|e| fail(F, e))?;
@@ -113,7 +113,7 @@ pub fn import_tool_poses(
         Some("csv") => false,
         _ => return Err(fail(F, format!("format must be \"csv\" or \"json\", got {}", describe(&format)))),
     };
-    let p = io::toolpath::read_poses(&text, json, &js_number).map_err(|e| fail(F, e))?;
+    let p = io::toolpath::read_tool_poses(&text, json, &js_number).map_err(|e| fail(F, e))?;
     let tool = p.tool.map(|t| ToolOut {
         radius: t.radius,
         length: t.length,

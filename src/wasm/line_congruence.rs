@@ -229,7 +229,9 @@ impl LineCongruence {
                 ))
             }
         };
-        congruence::subdivide(&self.inner, scheme, steps).map(LineCongruence::from_core).map_err(|e| fail(F, e))
+        congruence::subdivide_congruence(&self.inner, scheme, steps)
+            .map(LineCongruence::from_core)
+            .map_err(|e| fail(F, e))
     }
 
     // --- focal geometry (beyond the paper)

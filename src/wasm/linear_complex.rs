@@ -70,7 +70,7 @@ pub(super) fn complex_js(func: &str, segments: &[Segment], options: JsValue) -> 
             format!("options.tolerance must be a number in (0, 1], got {t}"),
         ));
     }
-    let f: LinearComplex = linear_complex::fit(segments, tolerance);
+    let f: LinearComplex = linear_complex::fit_linear_complex(segments, tolerance);
     to_js(
         func,
         &LinearComplexFit {

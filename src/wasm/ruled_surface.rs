@@ -352,8 +352,10 @@ impl RuledSurface {
                 crate::Error::TooMany { what: "edges", got: (self.length() - 1) * (2 * n + 1), max: MAX_RULINGS },
             ));
         }
-        let edges: Vec<Segment> =
-            triangulation::edges(self.core(), n, which).into_iter().map(|[a, b]| Segment::new(a, b)).collect();
+        let edges: Vec<Segment> = triangulation::triangulation_edges(self.core(), n, which)
+            .into_iter()
+            .map(|[a, b]| Segment::new(a, b))
+            .collect();
         Ok(segments_f32(&edges))
     }
 

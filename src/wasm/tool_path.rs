@@ -205,7 +205,7 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_optional_param_type = "number")] count: JsValue,
     ) -> Result<ToolPath, JsValue> {
         let count = args::optional_integer("ToolPath.example", "count", &count, 2, MAX_EXAMPLE_POSES, 7)?;
-        example::example(count)
+        example::example_tool_path(count)
             .map(|inner| ToolPath { inner, _live: Live::new() })
             .map_err(|e| fail("ToolPath.example", e))
     }
@@ -216,7 +216,7 @@ impl ToolPath {
         #[wasm_bindgen(unchecked_param_type = "number")] count: JsValue,
     ) -> Result<Float64Array, JsValue> {
         let count = args::integer("ToolPath.exampleProfile", "count", &count, 2, MAX_SAMPLES)?;
-        Ok(points_f64(&example::profile(count)))
+        Ok(points_f64(&example::example_profile(count)))
     }
 
     /// The part surface of the built-in example, z = 0.3 sin x cos 0.7y, as an nx × ny grid mesh.
@@ -408,11 +408,11 @@ impl ToolPath {
             "json" | "csv" if !(options.is_undefined() || options.is_null()) => {
                 Err(fail(F, "the options (feed, scale, machine, …) apply to the \"gcode\" format only"))
             }
-            "json" => Ok(crate::io::toolpath::write_json(&self.inner)),
-            "csv" => Ok(crate::io::toolpath::write_csv(&self.inner)),
+            "json" => Ok(crate::io::toolpath::tool_path_json(&self.inner)),
+            "csv" => Ok(crate::io::toolpath::tool_path_csv(&self.inner)),
             "gcode" => {
                 let o = read_post_options(F, options)?;
-                post::program(&self.inner, &o).map(|p| p.text).map_err(|e| fail(F, e))
+                post::gcode(&self.inner, &o).map(|p| p.text).map_err(|e| fail(F, e))
             }
             _ => Err(fail(F, format!("format must be \"json\", \"csv\" or \"gcode\", got \"{format}\""))),
         }
@@ -428,7 +428,7 @@ impl ToolPath {
         const F: &str = "ToolPath.post";
         let _measure = Measure::start(F);
         let o = read_post_options(F, options)?;
-        let p = post::program(&self.inner, &o).map_err(|e| fail(F, e))?;
+        let p = post::gcode(&self.inner, &o).map_err(|e| fail(F, e))?;
         let l = &p.linearisation;
         let tip: Vec<f64> = l.blocks.iter().map(|b| b.tip).collect();
         let axis: Vec<f64> = l.blocks.iter().map(|b| b.axis).collect();
