@@ -2,7 +2,7 @@
 //! the coupled variational solve on growing grids (native). `cargo bench --bench congruence`
 #![allow(missing_docs)]
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use ruledlab::{subdivide_congruence as subdivide, CongruenceScheme};
+use ruledlab::{subdivide_congruence, CongruenceScheme};
 use ruledlab::{AnalyticCongruence, SmoothCongruence};
 use std::hint::black_box;
 
@@ -14,7 +14,9 @@ fn congruence(c: &mut Criterion) {
         let grid = ex.grid(n, n).expect("valid grid");
         group.throughput(Throughput::Elements((n * n) as u64));
         group.bench_with_input(BenchmarkId::from_parameter(n), &grid, |b, g| {
-            b.iter(|| black_box(subdivide(g, CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1).expect("refines")))
+            b.iter(|| {
+                black_box(subdivide_congruence(g, CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1).expect("refines"))
+            })
         });
     }
     group.finish();
@@ -24,7 +26,7 @@ fn congruence(c: &mut Criterion) {
         let grid = ex.grid(n, n).expect("valid grid");
         group.throughput(Throughput::Elements((n * n) as u64));
         group.bench_with_input(BenchmarkId::from_parameter(n), &grid, |b, g| {
-            b.iter(|| black_box(subdivide(g, CongruenceScheme::Coupled { k: 6 }, 1).expect("refines")))
+            b.iter(|| black_box(subdivide_congruence(g, CongruenceScheme::Coupled { k: 6 }, 1).expect("refines")))
         });
     }
     group.finish();

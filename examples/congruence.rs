@@ -1,7 +1,7 @@
 //! Section 5 compared: error of the inserted lines against the exact congruence after one
 //! step, for bilinear averaging, butterfly, two-stage and coupled variational subdivision.
 //! `cargo run --release --example congruence`
-use ruledlab::{subdivide_congruence as subdivide, CongruenceScheme, LineCongruence};
+use ruledlab::{subdivide_congruence, CongruenceScheme, LineCongruence};
 use ruledlab::{AnalyticCongruence, SmoothCongruence};
 
 /// Bilinear averaging: edge lines the average of their two ends, face lines of four corners.
@@ -25,9 +25,12 @@ fn main() {
         println!("{} ({rows} × {cols}, one step): max |P − p|, max angle (rad) of new lines", c.title());
         let rows_out = [
             ("bilinear average", bilinear(&grid)),
-            ("butterfly w = 1/16", subdivide(&grid, CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1).unwrap()),
-            ("two-stage variational K=6", subdivide(&grid, CongruenceScheme::TwoStage { k: 6 }, 1).unwrap()),
-            ("coupled variational", subdivide(&grid, CongruenceScheme::Coupled { k: 6 }, 1).unwrap()),
+            (
+                "butterfly w = 1/16",
+                subdivide_congruence(&grid, CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1).unwrap(),
+            ),
+            ("two-stage variational K=6", subdivide_congruence(&grid, CongruenceScheme::TwoStage { k: 6 }, 1).unwrap()),
+            ("coupled variational", subdivide_congruence(&grid, CongruenceScheme::Coupled { k: 6 }, 1).unwrap()),
         ];
         for (name, refined) in rows_out {
             let (d, a) = c.errors(&refined);

@@ -1,6 +1,6 @@
 //! Prints the convergence study of Propositions 1 and 2 for every analytic surface:
 //! `cargo run --example convergence [u] [h0] [levels]`.
-use ruledlab::convergence_study as study;
+use ruledlab::convergence_study;
 use ruledlab::AnalyticSurface;
 
 fn main() {
@@ -8,7 +8,7 @@ fn main() {
     let (u, h0, levels) =
         (*args.first().unwrap_or(&0.7), *args.get(1).unwrap_or(&0.1), *args.get(2).unwrap_or(&7.0) as usize);
     for s in AnalyticSurface::ALL {
-        match study(&s, u, h0, levels) {
+        match convergence_study(&s, u, h0, levels) {
             Ok(st) => {
                 println!("{} at u = {u}", s.title());
                 for series in &st.series {

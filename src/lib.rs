@@ -50,12 +50,11 @@ pub mod wasm;
 
 // errors and messages
 pub use error::{
-    number as message_number, template as message_template, Arg, Details, Error, Message, Record, Result,
-    CATALOGUE as MESSAGES, TEXT as TEXT_REASON,
+    message_number, message_template, Arg, Details, Error, Message, Record, Result, MESSAGES, TEXT_REASON,
 };
 
 // shared vocabulary: lines, jets, parameter ranges
-pub use base::{atan2_x2, check_coordinates, parameters as sample_parameters, CongruenceJet, Jet, Ranges};
+pub use base::{atan2_x2, check_coordinates, sample_parameters, CongruenceJet, Jet, Ranges};
 pub use line::{Line, Segment};
 pub use line_fit::{fit_line, LineFit};
 pub use mesh::{grid_indices, strip_indices, Mesh};
@@ -65,9 +64,7 @@ pub use visibility::{hidden_lines, transformed, HiddenLineOptions, LineKind, Run
 
 // Section 2: discrete ruled surfaces, their invariants, convergence and accuracy
 pub use ruled::accuracy::{sampling_errors, sampling_orders, SamplingErrors, SamplingOrders};
-pub use ruled::convergence::{
-    fit_order, study as convergence_study, Series as ConvergenceSeries, Study as ConvergenceStudy,
-};
+pub use ruled::convergence::{convergence_study, fit_order, ConvergenceSeries, ConvergenceStudy};
 pub use ruled::surface::points_from_flat;
 pub use ruled::{Invariants, InvariantsBlock, PairInvariants, RuledSurface, SmoothRuled};
 
@@ -82,45 +79,36 @@ pub use subdivision::bspline::bspline;
 pub use subdivision::chaikin::chaikin;
 pub use subdivision::four_point::four_point;
 pub use subdivision::line_space::{subdivide_lines, DualLine};
-pub use subdivision::triangulation::{division_point, edges as triangulation_edges, Triangulation};
+pub use subdivision::triangulation::{division_point, triangulation_edges, Triangulation};
 pub use subdivision::turning::{largest_turning_angle, turning_angles};
-pub use subdivision::variational::refine as refine_variational;
+pub use subdivision::variational::refine_variational;
 pub use subdivision::{recut, subdivide_polygon, subdivide_strip, Affine, Pair, Scheme, Variant};
 
 // Section 5: line congruences, and their focal geometry (beyond the paper)
 pub use congruence::focal::{focal_analytic, focal_grid, focal_sheet, torsal_strokes};
 pub use congruence::line_space::butterfly_lines;
-pub use congruence::variational::{coupled as coupled_congruence, two_stage, EdgeScheme, SolveReport};
+pub use congruence::variational::{coupled_congruence, two_stage, EdgeScheme, SolveReport};
 pub use congruence::{
-    butterfly_diagonal, subdivide as subdivide_congruence, CongruenceScheme, Focal, FocalKind, LineCongruence,
-    SmoothCongruence,
+    butterfly_diagonal, subdivide_congruence, CongruenceScheme, Focal, FocalKind, LineCongruence, SmoothCongruence,
 };
 
 // linear complexes (beyond the paper)
-pub use linear_complex::{fit as fit_linear_complex, ComplexKind, LinearComplex};
+pub use linear_complex::{fit_linear_complex, ComplexKind, LinearComplex};
 
 // Example 6: tool paths for 5-axis milling
-pub use io::toolpath::{
-    looks_like_poses, read_poses as read_tool_poses, write_csv as tool_path_csv, write_json as tool_path_json,
-    ImportedPoses,
-};
-pub use milling::example::{
-    exact as example_pose, example as example_tool_path, part_height, part_mesh, profile as example_profile,
-    RANGE as EXAMPLE_RANGE,
-};
-pub use milling::kinematics::{
-    at_pole, forward as forward_kinematics, inverse as inverse_kinematics, orientations, tool_axis, Joints,
-};
+pub use io::toolpath::{looks_like_poses, read_tool_poses, tool_path_csv, tool_path_json, ImportedPoses};
+pub use milling::example::{example_pose, example_profile, example_tool_path, part_height, part_mesh, EXAMPLE_RANGE};
+pub use milling::kinematics::{at_pole, forward_kinematics, inverse_kinematics, orientations, tool_axis, Joints};
 pub use milling::linearise::{BlockDeviation, Interpolation, Linearisation};
-pub use milling::machine::{AxisName, Carrier, Machine, RotaryAxis, PRESETS as MACHINE_PRESETS};
-pub use milling::post::{program as gcode, Coolant, Dialect, Mode, PostOptions, Program};
+pub use milling::machine::{AxisName, Carrier, Machine, RotaryAxis, MACHINE_PRESETS};
+pub use milling::post::{gcode, Coolant, Dialect, Mode, PostOptions, Program};
 pub use milling::quality::{deviation, deviation_per_pose, Quality};
 pub use milling::{Pose, Tool, ToolEnd, ToolPath};
 
 // reading and writing segments
-pub use io::csv::{parse as read_csv, write as write_csv};
-pub use io::invariants::{write_csv as invariants_csv, write_json as invariants_json};
-pub use io::json::{parse as read_json, write as write_json};
+pub use io::csv::{read_csv, write_csv};
+pub use io::invariants::{invariants_csv, invariants_json};
+pub use io::json::{read_json, write_json};
 pub use io::obj::write_obj;
 pub use io::Imported;
 
@@ -129,6 +117,6 @@ pub use catalogue::{
     AnalyticCongruence, AnalyticSurface, CongruenceSpec, CongruenceTexts, FormulaCongruence, FormulaSpec,
     FormulaSurface, SurfaceTexts, CONGRUENCE_FORMULAS, ORTHOGONAL_SLOPE, SURFACE_FORMULAS,
 };
-pub use formula::check::{decimal_commas, CONSTANTS as FORMULA_CONSTANTS, FUNCTIONS as FORMULA_FUNCTIONS};
+pub use formula::check::{decimal_commas, FORMULA_CONSTANTS, FORMULA_FUNCTIONS};
 pub use formula::dual::Dual;
 pub use formula::{Formula, PARAMETERS};

@@ -82,7 +82,7 @@ pub struct LinearComplex {
 /// Fits a linear complex to segments (a → b each); `tolerance` bounds a residual in the fit's
 /// frame for the nullity ([`COMPLEX_TOLERANCE`] by default). Segments must have nonzero length
 /// (the validated surfaces and congruences guarantee it).
-pub fn fit(segments: &[Segment], tolerance: Option<f64>) -> LinearComplex {
+pub fn fit_linear_complex(segments: &[Segment], tolerance: Option<f64>) -> LinearComplex {
     let tolerance = tolerance.unwrap_or(COMPLEX_TOLERANCE);
     let n = segments.len().max(1) as f64;
     let mid = |s: &Segment| 0.5 * (s.a + s.b);
@@ -181,7 +181,7 @@ mod tests {
                 Segment::new(DVec3::new(1.0, 2.0, 3.0) - d, DVec3::new(1.0, 2.0, 3.0) + 2.0 * d)
             })
             .collect();
-        let fit = fit(&lines, None);
+        let fit = fit_linear_complex(&lines, None);
         assert_eq!(fit.nullity, 3);
         assert_eq!(fit.kind, ComplexKind::Special);
     }
@@ -192,7 +192,7 @@ mod tests {
             .map(|k| (k as f64 * 0.4, k as f64 * 0.3 - 1.0))
             .map(|(a, z)| seg([0.0, 0.0, z], [a.cos(), a.sin(), z]))
             .collect();
-        let fit = fit(&lines, None);
+        let fit = fit_linear_complex(&lines, None);
         assert_eq!((fit.nullity, fit.kind), (2, ComplexKind::Congruence));
         assert!(fit.residual < 1e-12);
     }
@@ -240,7 +240,7 @@ mod tests {
     fn lines_of_a_helical_complex_give_its_axis_and_pitch_exactly() {
         let p = 0.6;
         let lines = near_helical(p, &[0.0; 14]);
-        let fit = fit(&lines, None);
+        let fit = fit_linear_complex(&lines, None);
         assert_eq!((fit.nullity, fit.kind, fit.kind.name()), (1, ComplexKind::Complex, "complex"));
         let sign = fit.plucker[2].signum();
         let plucker: Vec<f64> = fit.plucker.iter().map(|x| x * sign).collect();
@@ -262,7 +262,7 @@ mod tests {
         let mut moved = vec![0.0; n];
         moved[7] = eps;
         let lines = near_helical(p, &moved);
-        let fit = fit(&lines, None);
+        let fit = fit_linear_complex(&lines, None);
         let (_, d, radial) = helical_line(p, 7);
         let tangent = DVec3::Z.cross(radial);
         let first_order = eps * tangent.dot(d).abs() / (n as f64).sqrt();
@@ -279,7 +279,7 @@ mod tests {
     fn the_residual_of_scattered_lines_is_the_rms_of_the_complex_equation() {
         let eps: Vec<f64> = (0..16).map(|k| 0.05 * ((1.7 * k as f64).sin())).collect();
         let lines = near_helical(0.4, &eps);
-        let fit = fit(&lines, None);
+        let fit = fit_linear_complex(&lines, None);
         assert!(fit.residual > 1e-3);
         crate::assert_near!(fit.residual, residual_by_hand(&fit, &lines), 1e-12);
     }
@@ -294,7 +294,7 @@ mod tests {
         let turn = glam::DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 0.5).normalize(), 2.1);
         let moved: Vec<Segment> =
             lines.iter().map(|s| Segment::new(lambda * (turn * s.a) + shift, lambda * (turn * s.b) + shift)).collect();
-        let (before, after) = (fit(&lines, None), fit(&moved, None));
+        let (before, after) = (fit_linear_complex(&lines, None), fit_linear_complex(&moved, None));
         crate::assert_near!(after.residual, lambda * before.residual, 1e-10);
         crate::assert_near!(after.pitch, lambda * before.pitch, 1e-10);
         for (a, b) in after.spectrum.iter().zip(before.spectrum) {
@@ -322,7 +322,7 @@ mod tests {
                 Segment::new(DVec3::new(1.0, 2.0, 3.0) - d, DVec3::new(1.0, 2.0, 3.0) + d)
             })
             .collect();
-        let fit = fit(&lines, None);
+        let fit = fit_linear_complex(&lines, None);
         assert!(fit.plucker.iter().all(|x| x.is_finite()), "{:?}", fit.plucker);
         assert!(fit.axis_segment.iter().all(|p| p.is_finite()) || fit.pitch.is_infinite());
         assert_eq!((fit.nullity, fit.kind), (3, ComplexKind::Special));
@@ -342,7 +342,7 @@ mod tests {
         let feet =
             [[1.0, 1.0], [1.0, -1.0], [-1.0, 1.0], [-1.0, -1.0], [2.0, 0.0], [-2.0, 0.0], [0.0, 2.0], [0.0, -2.0]];
         let lines: Vec<Segment> = feet.iter().map(|&[x, y]| seg([x, y, -2.5], [x, y, 2.5])).collect();
-        let fit = fit(&lines, None);
+        let fit = fit_linear_complex(&lines, None);
         let half = 0.5_f64.sqrt();
         for (got, want) in fit.spectrum.iter().zip([0.0, 0.0, 0.0, half, half, 1.0]) {
             crate::assert_near!(*got, want, 1e-14);
@@ -360,7 +360,7 @@ mod tests {
                 Segment::new(x - d, x + 0.5 * d)
             })
             .collect();
-        let fit = fit(&lines, None);
+        let fit = fit_linear_complex(&lines, None);
         assert_eq!((fit.nullity, fit.kind, fit.kind.name()), (3, ComplexKind::Regulus, "regulus"));
         assert!(fit.spectrum[3] > 1e-2, "{:?}", fit.spectrum);
     }
@@ -375,7 +375,7 @@ mod tests {
                 Segment::new(x, x + d)
             })
             .collect();
-        let fit = fit(&lines, None);
+        let fit = fit_linear_complex(&lines, None);
         assert_eq!((fit.nullity, fit.kind, fit.kind.name()), (0, ComplexKind::General, "general"));
         assert!(fit.spectrum[0] > 1e-3 && fit.residual > 1e-3, "{:?}", fit.spectrum);
     }

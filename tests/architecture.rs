@@ -4,6 +4,10 @@
 //! the core (the bindings layer `src/wasm/` and test code aside), finds the modules each uses
 //! (`crate::…` paths), and fails on a use that points sideways or up — so a new cycle, or an
 //! algorithm reaching into the catalogue, cannot land.
+//!
+//! The bindings (`src/wasm/`) are read too: their files use each other without a cycle, each
+//! JavaScript class is declared and bound in the one file named after it, and no file outside
+//! them names wasm-bindgen.
 
 use std::collections::BTreeMap;
 use std::fs;
@@ -97,41 +101,241 @@ fn the_layers_name_each_module_once() {
     );
 }
 
-/// The bindings (`src/wasm/`) split by concern, one file per area of the core, named after it
-/// (ARCHITECTURE.md, "The bindings"): a file that names no module of the core is a new concern
-/// without a home. Besides them only the helpers every binding shares.
+/// A module's name in Rust for a JavaScript class: `ruled_surface` for `RuledSurface`.
+fn snake(class: &str) -> String {
+    let mut out = String::new();
+    for (i, c) in class.chars().enumerate() {
+        if c.is_ascii_uppercase() && i > 0 {
+            out.push('_');
+        }
+        out.push(c.to_ascii_lowercase());
+    }
+    out
+}
+
+/// The lines of a source text that are code (comments left out).
+fn code_lines(text: &str) -> impl Iterator<Item = &str> {
+    text.lines().map(str::trim_start).filter(|l| !l.starts_with("//"))
+}
+
+/// The sibling modules a file of `src/wasm/` uses: the first name after each `super::` or
+/// `crate::wasm::`, each name of a group (`use super::{args, buffers::points_f32}`).
+fn sibling_uses(text: &str) -> Vec<String> {
+    let ident = |s: &str| -> String { s.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect() };
+    let mut out = Vec::new();
+    for line in code_lines(text) {
+        let mut rest = line;
+        while let Some(k) = ["super::", "crate::wasm::"].iter().filter_map(|p| rest.find(p).map(|k| k + p.len())).min()
+        {
+            rest = &rest[k..];
+            if let Some(group) = rest.strip_prefix('{') {
+                let mut depth = 0;
+                let mut item = String::new();
+                for c in group.chars() {
+                    match c {
+                        '{' => depth += 1,
+                        '}' if depth == 0 => break,
+                        '}' => depth -= 1,
+                        ',' if depth == 0 => {
+                            out.push(ident(item.trim()));
+                            item.clear();
+                            continue;
+                        }
+                        _ => {}
+                    }
+                    item.push(c);
+                }
+                out.push(ident(item.trim()));
+            } else {
+                out.push(ident(rest));
+            }
+        }
+    }
+    out.retain(|m| !m.is_empty() && m != "self");
+    out
+}
+
+/// The types a source text binds with `#[wasm_bindgen]`: the structs it declares as
+/// JavaScript classes, and the types of its `#[wasm_bindgen] impl` blocks.
+fn bound(text: &str) -> (Vec<String>, Vec<String>) {
+    let (mut classes, mut impls) = (Vec::new(), Vec::new());
+    let mut bindgen = false; // the item being read carries #[wasm_bindgen]
+    let mut open = 0i32; // brackets of an attribute running over lines
+    for line in code_lines(text) {
+        if open > 0 || line.starts_with("#[") {
+            bindgen |= line.starts_with("#[wasm_bindgen");
+            open += line.matches('[').count() as i32 - line.matches(']').count() as i32;
+            continue;
+        }
+        let name = |rest: &str| -> String {
+            // `impl<T> Path::Name<T>`: the generics left out, the path's last name
+            let rest = match rest.strip_prefix('<') {
+                Some(generic) => generic.split_once('>').map_or("", |(_, r)| r.trim_start()),
+                None => rest,
+            };
+            let path: String =
+                rest.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_' || *c == ':').collect();
+            path.rsplit("::").next().unwrap_or_default().to_string()
+        };
+        if bindgen {
+            // `pub`, `pub(crate)` … left out
+            let item = match line.strip_prefix("pub") {
+                Some(rest) if rest.starts_with('(') => rest.split_once(')').map_or("", |(_, r)| r).trim_start(),
+                Some(rest) => rest.trim_start(),
+                None => line,
+            };
+            if let Some(rest) = item.strip_prefix("struct ") {
+                classes.push(name(rest));
+            } else if let Some(rest) = line.strip_prefix("impl").filter(|r| r.starts_with([' ', '<'])) {
+                impls.push(name(rest.trim_start()));
+            }
+        }
+        bindgen = false;
+    }
+    (classes, impls)
+}
+
+/// A cycle of `graph`, as the modules along it (the first again at the end), if it has one.
+fn cycle(graph: &BTreeMap<String, Vec<String>>) -> Option<Vec<String>> {
+    fn visit(
+        m: &str,
+        graph: &BTreeMap<String, Vec<String>>,
+        path: &mut Vec<String>,
+        done: &mut Vec<String>,
+    ) -> Option<Vec<String>> {
+        if let Some(k) = path.iter().position(|p| p == m) {
+            let mut found = path[k..].to_vec();
+            found.push(m.to_string());
+            return Some(found);
+        }
+        if done.iter().any(|d| d == m) {
+            return None;
+        }
+        path.push(m.to_string());
+        for used in graph.get(m).into_iter().flatten() {
+            if let Some(found) = visit(used, graph, path, done) {
+                return Some(found);
+            }
+        }
+        path.pop();
+        done.push(m.to_string());
+        None
+    }
+    let mut done = Vec::new();
+    graph.keys().find_map(|m| visit(m, graph, &mut Vec::new(), &mut done))
+}
+
+/// The files of the bindings (`src/wasm/`, `mod.rs` aside: it only declares and re-exports),
+/// by module name.
+fn binding_files() -> BTreeMap<String, String> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/wasm");
+    let mut out = BTreeMap::new();
+    for entry in fs::read_dir(&dir).expect("src/wasm is readable") {
+        let path = entry.expect("an entry").path();
+        assert!(path.extension().is_some_and(|e| e == "rs"), "{} is not a Rust file of src/wasm/", path.display());
+        let stem = path.file_stem().expect("a name").to_string_lossy().into_owned();
+        if stem != "mod" {
+            out.insert(stem, fs::read_to_string(&path).expect("a source file"));
+        }
+    }
+    out
+}
+
+/// The bindings (`src/wasm/`) use each other without a cycle (ARCHITECTURE.md, "The
+/// bindings"): a class file may use the helpers and the file of a class its methods take or
+/// return, never the other way round. A file names its siblings directly (`super::args`), not
+/// through a re-export of `mod.rs`, so every use is an edge of the graph.
 #[test]
-fn each_binding_file_names_an_area_of_the_core() {
-    const HELPERS: &[&str] = &["mod", "args", "error", "live", "buffers", "timing"];
+fn the_bindings_use_each_other_without_a_cycle() {
+    let files = binding_files();
+    assert!(files.len() > 10, "only {} files in src/wasm/", files.len());
+    let mut graph: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    let mut wrong = Vec::new();
+    for (module, text) in &files {
+        let mut used = sibling_uses(text);
+        used.sort();
+        used.dedup();
+        used.retain(|u| u != module);
+        for u in &used {
+            if !files.contains_key(u) {
+                wrong.push(format!("{module} uses super::{u}, which is no file of src/wasm/"));
+            }
+        }
+        graph.insert(module.clone(), used);
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    if let Some(found) = cycle(&graph) {
+        panic!("the files of src/wasm/ use each other in a cycle: {}\nthe graph: {graph:#?}", found.join(" → "));
+    }
+}
+
+/// One file per JavaScript class (ARCHITECTURE.md, "The bindings"): the class `RuledSurface`
+/// is declared in `src/wasm/ruled_surface.rs`, and every `#[wasm_bindgen] impl RuledSurface`
+/// (every method JavaScript sees) is in that file.
+#[test]
+fn each_javascript_class_has_one_file_named_after_it() {
+    let mut classes = Vec::new();
+    let mut wrong = Vec::new();
+    for (module, text) in &binding_files() {
+        let (declared, impls) = bound(text);
+        for class in declared {
+            if snake(&class) != *module {
+                wrong.push(format!("the class {class} is declared in {module}.rs, not {}.rs", snake(&class)));
+            }
+            classes.push(class);
+        }
+        for class in impls {
+            if snake(&class) != *module {
+                wrong.push(format!("methods of {class} are bound in {module}.rs, not {}.rs", snake(&class)));
+            }
+        }
+    }
+    assert!(classes.len() >= 7, "only {} JavaScript classes found: {classes:?}", classes.len());
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// The core knows nothing of JavaScript: only the bindings name wasm-bindgen, js-sys or
+/// web-sys (a TypeScript description of a result type, derived under wasm, is not JavaScript).
+#[test]
+fn only_the_bindings_name_javascript() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut core = Vec::new();
     sources(&root, &root, &mut core);
-    let mut names: Vec<String> = LAYERS.iter().flat_map(|l| l.iter().map(|m| m.to_string())).collect();
-    fn files(dir: &Path, out: &mut Vec<String>) {
-        for entry in fs::read_dir(dir).expect("readable") {
-            let path = entry.expect("an entry").path();
-            if path.is_dir() && !path.ends_with("wasm") {
-                files(&path, out);
-            }
-            if let Some(stem) = path.file_stem() {
-                out.push(stem.to_string_lossy().into_owned());
-            }
-        }
-    }
-    files(&root, &mut names);
-    let mut homeless = Vec::new();
-    for entry in fs::read_dir(root.join("wasm")).expect("src/wasm is readable") {
-        let stem = entry.expect("an entry").path().file_stem().expect("a name").to_string_lossy().into_owned();
-        if !HELPERS.contains(&stem.as_str()) && !names.contains(&stem) {
-            homeless.push(stem);
-        }
-    }
-    assert!(homeless.is_empty(), "src/wasm/ files that name no area of the core: {homeless:?}");
-    // the core knows nothing of JavaScript: only the bindings name wasm-bindgen or js-sys
-    // (a TypeScript description of a result type, derived under wasm, is not JavaScript)
+    core.push(("lib.rs".to_string(), fs::read_to_string(root.join("lib.rs")).expect("src/lib.rs")));
+    assert!(core.len() > 40, "only {} source files found", core.len());
     for (module, text) in &core {
         for js in ["wasm_bindgen", "js_sys", "web_sys", "JsValue"] {
             assert!(!text.contains(js), "the core module {module} names {js}");
         }
     }
+}
+
+/// The checks of the bindings catch what they guard.
+#[test]
+fn the_binding_checks_catch_what_they_guard() {
+    assert_eq!(snake("RuledSurface"), "ruled_surface");
+    assert_eq!(snake("CongruenceFocal"), "congruence_focal");
+    assert_eq!(snake("ToolPath"), "tool_path");
+    assert_eq!(
+        sibling_uses("use super::args::{self, fail};\nuse super::{buffers::points_f32, live};\n// super::timing\nlet x = crate::wasm::focal::f();"),
+        ["args", "buffers", "live", "focal"]
+    );
+    let text = "/// A class.\n#[wasm_bindgen]\n#[derive(Debug)]\npub struct FooBar {\n}\n#[wasm_bindgen(\n    js_name = Other\n)]\npub(crate) struct Baz;\n\
+                #[derive(Tsify)]\nstruct Options;\n#[wasm_bindgen]\nimpl FooBar {\n    #[wasm_bindgen(getter)]\n    pub fn x() {}\n}\nimpl Baz {}\n\
+                #[wasm_bindgen]\nimpl super::ToolPath {}\n";
+    let (classes, impls) = bound(text);
+    assert_eq!(classes, ["FooBar", "Baz"]);
+    assert_eq!(impls, ["FooBar", "ToolPath"]);
+    let graph = |edges: &[(&str, &str)]| {
+        let mut g: BTreeMap<String, Vec<String>> = BTreeMap::new();
+        for (a, b) in edges {
+            g.entry(a.to_string()).or_default().push(b.to_string());
+            g.entry(b.to_string()).or_default();
+        }
+        g
+    };
+    assert_eq!(cycle(&graph(&[("a", "b"), ("b", "c"), ("a", "c")])), None);
+    assert_eq!(bound("#[wasm_bindgen]\nimpl<T> Wrapper<T> {}").1, ["Wrapper"]);
+    assert_eq!(cycle(&graph(&[("a", "b"), ("b", "c"), ("c", "b")])).unwrap(), ["b", "c", "b"]);
+    assert_eq!(cycle(&graph(&[("x", "x")])).unwrap(), ["x", "x"]);
 }

@@ -6,7 +6,7 @@
 use glam::{DVec2, DVec3};
 use ruledlab::assert_near;
 use ruledlab::tolerance::test::ORDER;
-use ruledlab::{fit_linear_complex as fit, ComplexKind};
+use ruledlab::{fit_linear_complex, ComplexKind};
 use ruledlab::{focal_analytic, focal_grid, SmoothCongruence, SmoothRuled};
 use ruledlab::{AnalyticCongruence, CongruenceSpec};
 use ruledlab::{AnalyticSurface, Segment};
@@ -356,7 +356,7 @@ fn rulings(s: &AnalyticSurface, n: usize) -> Vec<Segment> {
 #[cfg_attr(target_family = "wasm", wasm_bindgen_test)]
 fn linear_complexes_of_helical_surfaces_and_a_hyperboloid() {
     let helical = AnalyticSurface::HelicalRuled { radius: 1.5, pitch: 0.4, slope: 0.6 };
-    let f = fit(&rulings(&helical, 40), None);
+    let f = fit_linear_complex(&rulings(&helical, 40), None);
     assert_eq!((f.nullity, f.kind), (1, ComplexKind::Complex));
     assert_near!(f.axis_direction.cross(DVec3::Z), DVec3::ZERO, 1e-10);
     assert_near!(f.axis_point, DVec3::ZERO, 1e-10);
@@ -368,14 +368,14 @@ fn linear_complexes_of_helical_surfaces_and_a_hyperboloid() {
     }
     assert_near!(0.5 * (f.axis_segment[0].z + f.axis_segment[1].z), mean_z, 1e-10);
     let helicoid = AnalyticSurface::Helicoid { pitch: 0.5 };
-    let f = fit(&rulings(&helicoid, 40), None);
+    let f = fit_linear_complex(&rulings(&helicoid, 40), None);
     assert_eq!((f.nullity, f.kind), (2, ComplexKind::Congruence));
     let hyperboloid = AnalyticSurface::Hyperboloid { a: 1.0, b: 2.0, c: 3.0 };
-    let f = fit(&rulings(&hyperboloid, 40), None);
+    let f = fit_linear_complex(&rulings(&hyperboloid, 40), None);
     assert_eq!((f.nullity, f.kind), (3, ComplexKind::Regulus));
     // Example 3's quartic: a = (1, u²/2, u), d = (u², u, −1), m = a × d has m_x = −3u²/2, so
     // m_x + (3/2) d_x = 0: a complex with the x-axis as axis and pitch 3/2
-    let f = fit(&rulings(&AnalyticSurface::Quartic, 40), None);
+    let f = fit_linear_complex(&rulings(&AnalyticSurface::Quartic, 40), None);
     assert_eq!((f.nullity, f.kind), (1, ComplexKind::Complex));
     assert_near!(f.axis_direction.cross(DVec3::X), DVec3::ZERO, 1e-10);
     assert_near!(f.pitch, 1.5, 1e-10);
@@ -387,7 +387,7 @@ fn linear_complexes_of_helical_surfaces_and_a_hyperboloid() {
             Segment::new(DVec3::new(t.sin(), (2.0 * t).cos(), t * 0.3), DVec3::new((3.0 * t).cos(), t.cos() + 2.0, -t))
         })
         .collect();
-    assert_eq!(fit(&general, None).kind, ComplexKind::General);
+    assert_eq!(fit_linear_complex(&general, None).kind, ComplexKind::General);
 }
 
 /// The tolerance decides the nullity: rulings of a helical surface moved by up to 1e-7 lie in
@@ -404,8 +404,8 @@ fn the_tolerance_decides_what_holds_the_lines() {
             Segment::new(s.a + wobble, s.b - wobble)
         })
         .collect();
-    assert_eq!(fit(&noisy, None).kind, ComplexKind::General);
-    let loose = fit(&noisy, Some(1e-5));
+    assert_eq!(fit_linear_complex(&noisy, None).kind, ComplexKind::General);
+    let loose = fit_linear_complex(&noisy, Some(1e-5));
     assert_eq!((loose.nullity, loose.kind), (1, ComplexKind::Complex));
     assert_near!(loose.axis_direction.cross(DVec3::Z), DVec3::ZERO, 1e-5);
 }
@@ -431,7 +431,7 @@ fn lines_of_a_given_complex_give_it_back() {
             Segment::new(x, x + (1.0 + rand().abs()) * d)
         })
         .collect();
-    let f = fit(&lines, None);
+    let f = fit_linear_complex(&lines, None);
     assert_eq!((f.nullity, f.kind), (1, ComplexKind::Complex));
     let sign = f.axis_direction.dot(axis).signum();
     let got = DVec3::from_slice(&f.plucker[..3]) * sign;

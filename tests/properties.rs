@@ -143,7 +143,7 @@ fn footpoints_minimise_the_distance() {
 mod schemes {
     //! Every subdivision scheme and every isometry commutes with rigid motions.
     use super::*;
-    use ruledlab::{subdivide_congruence as refine_congruence, CongruenceScheme, LineCongruence};
+    use ruledlab::{subdivide_congruence, CongruenceScheme, LineCongruence};
     use ruledlab::{subdivide_strip, Scheme, Variant};
     use ruledlab::{Development, HingeChain};
 
@@ -216,7 +216,7 @@ mod schemes {
             let c = LineCongruence::from_points(3, 3, &p, &q).unwrap();
             let moved = LineCongruence::from_points(3, 3, &p.iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(), &q.iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>()).unwrap();
             for scheme in [CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, CongruenceScheme::TwoStage { k: 4 }, CongruenceScheme::Coupled { k: 4 }] {
-                let (a, b) = (refine_congruence(&c, scheme, 1).unwrap(), refine_congruence(&moved, scheme, 1).unwrap());
+                let (a, b) = (subdivide_congruence(&c, scheme, 1).unwrap(), subdivide_congruence(&moved, scheme, 1).unwrap());
                 same(&a.p().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(), &b.p());
                 same(&a.q().iter().map(|&x| m.transform_point3(x)).collect::<Vec<_>>(), &b.q());
             }
@@ -256,11 +256,11 @@ mod schemes {
 
         #[test]
         fn linear_complexes_move_with_rigid_motions(lines in prop::collection::vec((vec3(), vec3()), 3..20), m in motion()) {
-            use ruledlab::fit_linear_complex as fit;
+            use ruledlab::fit_linear_complex;
             let segments: Vec<Segment> = lines.iter().filter(|(_, d)| d.length() > 0.1).map(|&(a, d)| Segment::new(a, a + d)).collect();
             prop_assume!(segments.len() >= 3);
             let moved: Vec<Segment> = segments.iter().map(|s| Segment::new(m.transform_point3(s.a), m.transform_point3(s.b))).collect();
-            let (f, g) = (fit(&segments, None), fit(&moved, None));
+            let (f, g) = (fit_linear_complex(&segments, None), fit_linear_complex(&moved, None));
             prop_assert_eq!(f.nullity, g.nullity);
             prop_assert_eq!(f.kind, g.kind);
             assert_near!(f.residual, g.residual, 1e-9);

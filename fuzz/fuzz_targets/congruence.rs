@@ -2,7 +2,7 @@
 #![no_main]
 use libfuzzer_sys::fuzz_target;
 use ruledlab::butterfly_lines;
-use ruledlab::{butterfly_diagonal, subdivide_congruence as subdivide, CongruenceScheme, LineCongruence};
+use ruledlab::{butterfly_diagonal, subdivide_congruence, CongruenceScheme, LineCongruence};
 
 #[path = "common.rs"]
 mod common;
@@ -21,7 +21,7 @@ fuzz_target!(|data: &[u8]| {
         CongruenceScheme::TwoStage { k: 3 + (shape as usize >> 4) },
         CongruenceScheme::Coupled { k: 4 },
     ] {
-        let _ = subdivide(&c, scheme, 1);
+        let _ = subdivide_congruence(&c, scheme, 1);
     }
     let _ = butterfly_diagonal(&c, w);
     let _ = butterfly_lines(&c, 1.0 / 16.0, 1, None);

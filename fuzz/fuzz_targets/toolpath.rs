@@ -3,7 +3,7 @@
 //! back from the CSV and JSON.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use ruledlab::{gcode, read_tool_poses, tool_path_csv as csv, tool_path_json as json, Dialect, Machine, Mode, PostOptions, MACHINE_PRESETS};
+use ruledlab::{gcode, read_tool_poses, tool_path_csv, tool_path_json, Dialect, Machine, Mode, PostOptions, MACHINE_PRESETS};
 use ruledlab::{deviation, Quality};
 use ruledlab::{Tool, ToolEnd, ToolPath};
 use ruledlab::Scheme;
@@ -26,7 +26,7 @@ fuzz_target!(|data: &[u8]| {
     let Ok(r) = path.refine(Scheme::FourPoint { w: 1.0 / 16.0 }, 1) else { return };
     let _ = Quality::of(&r);
     let _ = deviation(&r, &[glam::DVec3::ZERO, glam::DVec3::ONE]);
-    let (c, j) = (csv(&r), json(&r));
+    let (c, j) = (tool_path_csv(&r), tool_path_json(&r));
     let number = |t: &str| t.parse::<f64>().unwrap_or(f64::NAN);
     let _ = (read_tool_poses(&c, false, &number), read_tool_poses(&j, true, &number));
     let pick = |k: usize, n: usize| (values[k].abs() * 7.0) as usize % n;

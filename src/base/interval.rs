@@ -17,7 +17,7 @@ pub struct Ranges {
 
 /// `count` equally spaced values in [u₀, u₁] (u₁ excluded when `closed`, so a closed surface
 /// is not sampled twice at the seam): the parameters u_i of a sampling.
-pub fn parameters(count: usize, r: Ranges) -> Vec<f64> {
+pub fn sample_parameters(count: usize, r: Ranges) -> Vec<f64> {
     let intervals = if r.closed { count } else { count.saturating_sub(1).max(1) };
     let step = (r.u.1 - r.u.0) / intervals as f64;
     (0..count).map(|i| r.u.0 + i as f64 * step).collect()
@@ -43,8 +43,8 @@ mod tests {
     #[test]
     fn a_closed_sampling_leaves_out_the_seam() {
         let r = Ranges { u: (0.0, 4.0), v: (-1.0, 1.0), closed: false };
-        assert_eq!(parameters(5, r), [0.0, 1.0, 2.0, 3.0, 4.0]);
-        assert_eq!(parameters(4, Ranges { closed: true, ..r }), [0.0, 1.0, 2.0, 3.0]);
+        assert_eq!(sample_parameters(5, r), [0.0, 1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(sample_parameters(4, Ranges { closed: true, ..r }), [0.0, 1.0, 2.0, 3.0]);
     }
 
     #[test]

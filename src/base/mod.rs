@@ -14,5 +14,5 @@ pub(crate) mod lanes;
 
 pub use angle::atan2_x2;
 pub use coordinates::check_coordinates;
-pub use interval::{check_interval, parameters, Ranges};
+pub use interval::{check_interval, sample_parameters, Ranges};
 pub use jet::{CongruenceJet, Jet};

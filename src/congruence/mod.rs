@@ -44,7 +44,7 @@ pub enum CongruenceScheme {
 
 /// `steps` refinement steps; each maps rows × cols to (2 rows − 1) × (2 cols − 1), old lines
 /// kept. Sizes are checked before any work.
-pub fn subdivide(c: &LineCongruence, scheme: CongruenceScheme, steps: usize) -> Result<LineCongruence> {
+pub fn subdivide_congruence(c: &LineCongruence, scheme: CongruenceScheme, steps: usize) -> Result<LineCongruence> {
     match scheme {
         CongruenceScheme::Butterfly { w } if !(w.is_finite() && (-0.25..=0.25).contains(&w)) => {
             return Err(Error::parameter("w", format!("must be a number in [−1/4, 1/4], got {w}")))
@@ -80,7 +80,7 @@ pub fn subdivide(c: &LineCongruence, scheme: CongruenceScheme, steps: usize) -> 
             }
             CongruenceScheme::TwoStage { k } => variational::two_stage(&out, k, variational::EdgeScheme::Coupled)?,
             CongruenceScheme::Paper { k } => variational::two_stage(&out, k, variational::EdgeScheme::Literal)?,
-            CongruenceScheme::Coupled { k } => variational::coupled(&out, k)?.0,
+            CongruenceScheme::Coupled { k } => variational::coupled_congruence(&out, k)?.0,
         };
     }
     Ok(out)
@@ -116,7 +116,7 @@ mod tests {
     #[test]
     fn parameters_are_refused_by_name_at_their_bounds() {
         let c = grid();
-        let option = |scheme: CongruenceScheme| subdivide(&c, scheme, 1).unwrap_err().details().option;
+        let option = |scheme: CongruenceScheme| subdivide_congruence(&c, scheme, 1).unwrap_err().details().option;
         for w in [0.2500001, -0.2500001, f64::NAN] {
             assert_eq!(option(CongruenceScheme::Butterfly { w }).as_deref(), Some("w"), "{w}");
             assert_eq!(butterfly_diagonal(&c, w).unwrap_err().details().option.as_deref(), Some("w"));
@@ -129,12 +129,12 @@ mod tests {
             }
         }
         for w in [0.25, -0.25] {
-            assert_eq!(subdivide(&c, CongruenceScheme::Butterfly { w }, 1).unwrap().rows(), 5);
+            assert_eq!(subdivide_congruence(&c, CongruenceScheme::Butterfly { w }, 1).unwrap().rows(), 5);
             let d = butterfly_diagonal(&c, w).unwrap();
             assert_eq!((d.rows(), d.cols()), (2, 2));
         }
         for scheme in [CongruenceScheme::TwoStage { k: 3 }, CongruenceScheme::Coupled { k: 1000 }] {
-            let s = subdivide(&c, scheme, 2).unwrap();
+            let s = subdivide_congruence(&c, scheme, 2).unwrap();
             assert_eq!((s.rows(), s.cols()), (9, 9));
         }
     }
@@ -142,8 +142,8 @@ mod tests {
     #[test]
     fn sizes_are_checked_before_any_work() {
         // 3 × 3 → 5 × 5 → … → (2¹¹ + 1)²: the eleventh step would make 2049² = 4 198 401 lines
-        let e = subdivide(&grid(), CongruenceScheme::Butterfly { w: 0.0625 }, 11).unwrap_err();
+        let e = subdivide_congruence(&grid(), CongruenceScheme::Butterfly { w: 0.0625 }, 11).unwrap_err();
         assert_eq!(e, Error::TooMany { what: "lines after subdivision", got: 2049 * 2049, max: MAX_RULINGS });
-        assert_eq!(subdivide(&grid(), CongruenceScheme::Butterfly { w: 0.0625 }, 0).unwrap(), grid());
+        assert_eq!(subdivide_congruence(&grid(), CongruenceScheme::Butterfly { w: 0.0625 }, 0).unwrap(), grid());
     }
 }

@@ -54,13 +54,13 @@ pub fn two_stage(c: &LineCongruence, k: usize, edges: EdgeScheme) -> Result<Line
         q[i * cc + j] = s.b;
     };
     for j in 0..cols {
-        let refined = strip::refine(&c.column(j)?, k, variant)?;
+        let refined = strip::refine_variational(&c.column(j)?, k, variant)?;
         for (i, s) in refined.segments().enumerate() {
             put(i, 2 * j, s);
         }
     }
     for i in 0..rows {
-        let refined = strip::refine(&c.row(i)?, k, variant)?;
+        let refined = strip::refine_variational(&c.row(i)?, k, variant)?;
         for (j, s) in refined.segments().enumerate().filter(|(j, _)| j % 2 == 1) {
             put(2 * i, j, s);
         }
@@ -89,10 +89,10 @@ pub struct SolveReport {
 }
 
 /// The coupled scheme (see the module docs); its minimiser does not depend on K (K ≥ 1).
-pub fn coupled(c: &LineCongruence, _k: usize) -> Result<(LineCongruence, SolveReport)> {
+pub fn coupled_congruence(c: &LineCongruence, _k: usize) -> Result<(LineCongruence, SolveReport)> {
     // the start only decides the iterations, not the result: the butterfly refinement (16)
     // lies closer to the minimiser than the two-stage scheme and costs a fifth of it
-    let start = super::subdivide(c, super::CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1)?;
+    let start = super::subdivide_congruence(c, super::CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1)?;
     let (rr, cc) = (start.rows(), start.cols());
     let (mut p, mut q) = (start.p(), start.q());
     let mut iterations = 0;
@@ -411,7 +411,7 @@ mod tests {
     /// Moving either end of any new line of the coupled result by 10⁻⁴ along an axis raises the
     /// layered energy (20)–(21), summed over k = 0 … 6.
     fn minimises_the_layered_energy(c: &LineCongruence) {
-        let (r, report) = coupled(c, 6).unwrap();
+        let (r, report) = coupled_congruence(c, 6).unwrap();
         assert!(report.iterations > 0);
         let energy = |g: &LineCongruence| {
             let (rr, cc) = (g.rows(), g.cols());
@@ -445,11 +445,11 @@ mod tests {
     }
 
     /// The start decides only the iterations: started from the butterfly refinement (as
-    /// `coupled` is) or from the two-stage scheme, the solve ends at the same lines.
+    /// `coupled_congruence` is) or from the two-stage scheme, the solve ends at the same lines.
     #[test]
     fn the_coupled_result_does_not_depend_on_the_start() {
         let c = congruence(9, 11, wavy);
-        let (fast, _) = coupled(&c, 6).unwrap();
+        let (fast, _) = coupled_congruence(&c, 6).unwrap();
         let start = two_stage(&c, 6, EdgeScheme::Coupled).unwrap();
         let (rr, cc) = (start.rows(), start.cols());
         let (mut p, mut q) = (start.p(), start.q());
@@ -467,9 +467,12 @@ mod tests {
     #[test]
     fn a_coordinate_the_start_gets_right_is_not_solved() {
         let c = congruence(9, 11, wavy);
-        let start =
-            crate::congruence::subdivide(&c, crate::congruence::CongruenceScheme::Butterfly { w: 1.0 / 16.0 }, 1)
-                .unwrap();
+        let start = crate::congruence::subdivide_congruence(
+            &c,
+            crate::congruence::CongruenceScheme::Butterfly { w: 1.0 / 16.0 },
+            1,
+        )
+        .unwrap();
         let (rows, cols) = (start.rows(), start.cols());
         let op = Umbrella { rows, cols };
         let grid = start.p();
@@ -495,7 +498,7 @@ mod tests {
     #[test]
     fn coupled_keeps_affine_data() {
         let c = congruence(4, 4, |u, v| (DVec3::new(u, v, 0.2 * u - 0.1 * v), DVec3::new(u, v, 2.0)));
-        let (r, _) = coupled(&c, 6).unwrap();
+        let (r, _) = coupled_congruence(&c, 6).unwrap();
         for i in 0..7 {
             for j in 0..7 {
                 let (u, v) = (i as f64 / 2.0, j as f64 / 2.0);
@@ -537,18 +540,18 @@ mod tests {
     #[test]
     fn coupled_commutes_with_scaling_by_powers_of_two() {
         let c = congruence(4, 5, wavy);
-        let (r, _) = coupled(&c, 3).unwrap();
+        let (r, _) = coupled_congruence(&c, 3).unwrap();
         let times = |points: Vec<DVec3>, s: f64| points.into_iter().map(|x| x * s).collect::<Vec<_>>();
         for s in [2f64.powi(-528), 2f64.powi(-60), 2f64.powi(400)] {
             let scaled = LineCongruence::from_points(4, 5, &times(c.p(), s), &times(c.q(), s)).unwrap();
-            let (rs, _) = coupled(&scaled, 3).unwrap();
+            let (rs, _) = coupled_congruence(&scaled, 3).unwrap();
             assert_eq!(rs.p(), times(r.p(), s), "{s:e}");
             assert_eq!(rs.q(), times(r.q(), s), "{s:e}");
         }
         let (mut p, q) = (c.p(), c.q());
         p[6].x = 5e-324;
         let tiny = LineCongruence::from_points(4, 5, &p, &q).unwrap();
-        let (refined, _) = coupled(&tiny, 3).unwrap();
+        let (refined, _) = coupled_congruence(&tiny, 3).unwrap();
         assert_eq!(refined.line(2, 2), tiny.line(1, 1));
         assert_eq!(refined.line(2, 2).a.x, 5e-324);
     }

@@ -1,5 +1,5 @@
 //! The core's messages: each a stable *reason* (a kebab-case key) with named arguments, and
-//! its English text from one catalogue ([`CATALOGUE`]). The English is the API's (an
+//! its English text from one catalogue ([`MESSAGES`]). The English is the API's (an
 //! `Error`'s `message` in JS); a page speaking another language builds its own sentence from
 //! the reason and the arguments (`details.reason`, `details.args` in JS), so a German student
 //! reads "Die Formel endet, wo ein Operand erwartet wird" while a developer's console keeps
@@ -56,13 +56,13 @@ impl Arg {
     pub fn english(&self) -> String {
         match self {
             Arg::Text(s) => s.clone(),
-            Arg::Number(x) => number(*x),
+            Arg::Number(x) => message_number(*x),
         }
     }
 }
 
 /// A number for an English message.
-pub fn number(x: f64) -> String {
+pub fn message_number(x: f64) -> String {
     let a = x.abs();
     if x.is_finite() && a != 0.0 && !(1e-4..1e15).contains(&a) {
         format!("{x:e}")
@@ -74,7 +74,7 @@ pub fn number(x: f64) -> String {
 /// A reason and its arguments.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Message {
-    /// The stable key of what is wrong (a key of [`CATALOGUE`]).
+    /// The stable key of what is wrong (a key of [`MESSAGES`]).
     pub reason: &'static str,
     /// The values its text names, in order.
     pub args: Vec<(&'static str, Arg)>,
@@ -82,7 +82,7 @@ pub struct Message {
 
 /// The reason of a message that is only text (for callers of the API who pass their own
 /// wording; no page shows it, tests/node/messages.test.mjs keeps it off every page path).
-pub const TEXT: &str = "text";
+pub const TEXT_REASON: &str = "text";
 
 impl Message {
     /// A message without arguments yet.
@@ -103,7 +103,7 @@ impl Message {
 
     /// The English text: the catalogue's template with `{name}` replaced by the arguments.
     pub fn english(&self) -> String {
-        let Some(template) = template(self.reason) else {
+        let Some(template) = message_template(self.reason) else {
             // a reason missing from the catalogue is a bug the tests catch; say what there is
             let mut out = self.reason.to_string();
             for (n, v) in &self.args {
@@ -142,13 +142,13 @@ impl Message {
 
 impl From<String> for Message {
     fn from(text: String) -> Self {
-        Message::new(TEXT).with("text", text)
+        Message::new(TEXT_REASON).with("text", text)
     }
 }
 
 impl From<&str> for Message {
     fn from(text: &str) -> Self {
-        Message::new(TEXT).with("text", text)
+        Message::new(TEXT_REASON).with("text", text)
     }
 }
 
@@ -161,14 +161,14 @@ macro_rules! msg {
 }
 
 /// The English template of `reason`.
-pub fn template(reason: &str) -> Option<&'static str> {
-    CATALOGUE.iter().find(|(r, _)| *r == reason).map(|(_, t)| *t)
+pub fn message_template(reason: &str) -> Option<&'static str> {
+    MESSAGES.iter().find(|(r, _)| *r == reason).map(|(_, t)| *t)
 }
 
 /// Every reason of the core with its English template (`{name}`: an argument). The page's
 /// language files (www/i18n) have a text for each, under `error.<reason>`.
-pub const CATALOGUE: &[(&str, &str)] = &[
-    (TEXT, "{text}"),
+pub const MESSAGES: &[(&str, &str)] = &[
+    (TEXT_REASON, "{text}"),
     // the kinds with fields of their own (Error::message)
     ("bad-length", "{what}: length {len} is not a multiple of {multiple} ({multiple} numbers per item)"),
     ("too-few", "{what}: got {got}, need at least {min}"),
@@ -313,19 +313,19 @@ mod tests {
 
     #[test]
     fn numbers_read_as_numbers() {
-        assert_eq!(number(3.0), "3");
-        assert_eq!(number(0.25), "0.25");
-        assert_eq!(number(1e300), "1e300");
-        assert_eq!(number(-2.5e-7), "-2.5e-7");
-        assert_eq!(number(f64::NAN), "NaN");
-        assert_eq!(number(f64::INFINITY), "inf");
-        assert_eq!(number(0.0), "0");
+        assert_eq!(message_number(3.0), "3");
+        assert_eq!(message_number(0.25), "0.25");
+        assert_eq!(message_number(1e300), "1e300");
+        assert_eq!(message_number(-2.5e-7), "-2.5e-7");
+        assert_eq!(message_number(f64::NAN), "NaN");
+        assert_eq!(message_number(f64::INFINITY), "inf");
+        assert_eq!(message_number(0.0), "0");
     }
 
     #[test]
     fn the_catalogue_has_each_reason_once_and_closed_placeholders() {
-        for (i, (reason, template)) in CATALOGUE.iter().enumerate() {
-            assert!(CATALOGUE[..i].iter().all(|(r, _)| r != reason), "{reason} twice");
+        for (i, (reason, template)) in MESSAGES.iter().enumerate() {
+            assert!(MESSAGES[..i].iter().all(|(r, _)| r != reason), "{reason} twice");
             assert!(reason.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-'), "{reason}");
             // every "{" opens a placeholder that closes before the next one opens
             for piece in template.split('{').skip(1) {

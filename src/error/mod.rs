@@ -12,7 +12,7 @@ use std::fmt;
 mod message;
 #[cfg(any(feature = "serde", target_family = "wasm"))]
 mod serialize;
-pub use message::{number, template, Arg, Message, CATALOGUE, TEXT};
+pub use message::{message_number, message_template, Arg, Message, MESSAGES, TEXT_REASON};
 
 /// Why an input was rejected or a computation could not be carried out.
 #[derive(Debug, Clone, PartialEq)]
@@ -200,7 +200,7 @@ pub struct Details {
     /// The limit that was exceeded (or not reached).
     #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
     pub limit: Option<f64>,
-    /// What is wrong, as a stable key of [`CATALOGUE`] (for a page that says it in its language).
+    /// What is wrong, as a stable key of [`MESSAGES`] (for a page that says it in its language).
     #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
     pub reason: Option<&'static str>,
     /// The values the reason's text names (numbers stay numbers).

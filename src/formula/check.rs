@@ -12,14 +12,14 @@ use crate::msg;
 use crate::tolerance::{MAX_FORMULA_CHARS, MAX_FORMULA_DEPTH, MAX_FORMULA_SIGNS};
 
 /// Functions of one argument.
-pub const FUNCTIONS: [&str; 14] =
+pub const FORMULA_FUNCTIONS: [&str; 14] =
     ["sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "exp", "ln", "log", "sqrt", "abs"];
 
 /// Functions of two arguments.
 pub const FUNCTIONS2: [&str; 1] = ["atan2"];
 
 /// Named constants.
-pub const CONSTANTS: [&str; 2] = ["pi", "e"];
+pub const FORMULA_CONSTANTS: [&str; 2] = ["pi", "e"];
 
 /// One open parenthesis: where it is, and whether it holds the arguments of atan2.
 struct Open {
@@ -47,7 +47,7 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
     }
     let known = || {
         let mut names: Vec<&str> = variables.to_vec();
-        names.extend(CONSTANTS);
+        names.extend(FORMULA_CONSTANTS);
         names.join(", ")
     };
     let mut open: Vec<Open> = Vec::new();
@@ -89,7 +89,7 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
                 next += 1;
             }
             let call = chars.get(next) == Some(&'(');
-            let is_function = FUNCTIONS.contains(&name.as_str()) || FUNCTIONS2.contains(&name.as_str());
+            let is_function = FORMULA_FUNCTIONS.contains(&name.as_str()) || FUNCTIONS2.contains(&name.as_str());
             if is_function {
                 if !call {
                     return Err(fail(start, msg!("function-needs-parentheses", name = name)));
@@ -110,7 +110,7 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
                 signs = 0;
                 continue;
             }
-            if variables.contains(&name.as_str()) || CONSTANTS.contains(&name.as_str()) {
+            if variables.contains(&name.as_str()) || FORMULA_CONSTANTS.contains(&name.as_str()) {
                 if call {
                     return Err(fail(start, msg!("not-a-function", name = name)));
                 }
@@ -120,7 +120,7 @@ pub fn check(source: &str, text: &str, variables: &[&str]) -> Result<()> {
             }
             return Err(if call {
                 fail(start, msg!("unknown-function", name = name))
-                    .with_hint(msg!("known-names", names = format!("{}, atan2", FUNCTIONS.join(", "))))
+                    .with_hint(msg!("known-names", names = format!("{}, atan2", FORMULA_FUNCTIONS.join(", "))))
             } else {
                 fail(start, msg!("unknown-name", name = name)).with_hint(msg!("known-names", names = known()))
             });

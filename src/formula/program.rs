@@ -4,7 +4,7 @@
 //! once into a flat list of operations; evaluation runs that list over a small stack, with no
 //! recursion and no loop that depends on the values, so it always ends after `ops.len()` steps.
 
-use super::check::CONSTANTS;
+use super::check::FORMULA_CONSTANTS;
 use super::dual::Dual;
 use crate::error::{Error, Result};
 use evalexpr::{Node, Operator, Value};
@@ -221,7 +221,7 @@ fn emit<'a>(source: &str, tree: &'a Node, variables: &[&str], ops: &mut Vec<Op>)
                         _ => return Err(unsupported()),
                     }),
                 });
-                debug_assert!(CONSTANTS.len() == 2);
+                debug_assert!(FORMULA_CONSTANTS.len() == 2);
             }
             (Operator::FunctionIdentifier { identifier }, [argument]) if identifier == "atan2" => {
                 let mut inner = argument;
@@ -252,7 +252,7 @@ mod tests {
         Program::compile(text, &tree, &["u", "v"]).unwrap()
     }
 
-    /// Each name of [`super::super::check::FUNCTIONS`] calls its own function: its value at 0.5.
+    /// Each name of [`super::super::check::FORMULA_FUNCTIONS`] calls its own function: its value at 0.5.
     #[test]
     fn every_function_name_calls_its_function() {
         let x = 0.5f64;
@@ -273,7 +273,7 @@ mod tests {
             ("abs", x.abs()),
         ];
         let names: Vec<&str> = functions.iter().map(|(name, _)| *name).collect();
-        assert_eq!(names, super::super::check::FUNCTIONS);
+        assert_eq!(names, super::super::check::FORMULA_FUNCTIONS);
         for (name, value) in functions {
             let program = compile(&format!("{name}(u)"));
             assert_eq!(program.eval(&[Dual::u(x), Dual::v(2.0)], &mut Vec::new()).re, value, "{name}");

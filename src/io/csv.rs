@@ -13,12 +13,12 @@ fn fail(line: usize, column: usize, message: Message) -> Error {
 }
 
 /// Parses CSV text into flat coordinates.
-pub fn parse(text: &str) -> Result<Imported> {
-    parse_with(text, &rust_number)
+pub fn read_csv(text: &str) -> Result<Imported> {
+    read_csv_with(text, &rust_number)
 }
 
-/// As [`parse`], converting numbers with `number` (see [`NumberParser`]).
-pub fn parse_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
+/// As [`read_csv`], converting numbers with `number` (see [`NumberParser`]).
+pub fn read_csv_with(text: &str, number: NumberParser<'_>) -> Result<Imported> {
     let (coords, lines) = rows_with(text, number)?;
     super::check_records("csv", &coords, |k| (lines.get(k).copied(), None))?;
     Ok(Imported { coords, grid: None })
@@ -102,7 +102,7 @@ fn rows_at_most(text: &str, number: NumberParser<'_>, max_rows: usize) -> Result
 }
 
 /// Writes flat coordinates as CSV with a header (shortest round-trip number format).
-pub fn write(coords: &[f64]) -> String {
+pub fn write_csv(coords: &[f64]) -> String {
     let mut out = String::from("ax,ay,az,bx,by,bz\n");
     for c in coords.chunks_exact(6) {
         let row: Vec<String> = c.iter().map(|x| format!("{x:?}")).collect();
@@ -119,32 +119,32 @@ mod tests {
     #[test]
     fn reads_with_and_without_header_and_round_trips() {
         let text = "# a comment\nax,ay,az,bx,by,bz\n0,0,0,1,0,0\n\n0 0 1 ; 0 1 1\n";
-        let r = parse(text).unwrap();
+        let r = read_csv(text).unwrap();
         assert_eq!(r.coords, vec![0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]);
-        assert_eq!(parse(&write(&r.coords)).unwrap(), r);
+        assert_eq!(read_csv(&write_csv(&r.coords)).unwrap(), r);
         let odd = [0.1, -2.5e-300, 1.0 / 3.0, 7.0, 1e17, -0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
-        assert_eq!(parse(&write(&odd)).unwrap().coords, odd);
+        assert_eq!(read_csv(&write_csv(&odd)).unwrap().coords, odd);
     }
 
     /// A German spreadsheet: semicolons between the fields, decimal commas in the numbers.
     #[test]
     fn semicolon_lines_take_decimal_commas() {
-        let r = parse("ax;ay;az;bx;by;bz\n1,5;0;0;0;1;0\n0; 0; 1,25; -0,5; 1; 1\n").unwrap();
+        let r = read_csv("ax;ay;az;bx;by;bz\n1,5;0;0;0;1;0\n0; 0; 1,25; -0,5; 1; 1\n").unwrap();
         assert_eq!(r.coords, vec![1.5, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.25, -0.5, 1.0, 1.0]);
     }
 
     /// One record, or a record of zero length, is refused where it is, with its line.
     #[test]
     fn records_are_checked_where_they_are() {
-        let e = parse("0,0,0,1,0,0\n").unwrap_err();
+        let e = read_csv("0,0,0,1,0,0\n").unwrap_err();
         assert_eq!(e.details().reason, Some("import-too-few"));
-        let e = parse("# header\n0,0,0,1,0,0\n\n2,2,2,2,2,2\n").unwrap_err();
+        let e = read_csv("# header\n0,0,0,1,0,0\n\n2,2,2,2,2,2\n").unwrap_err();
         assert_eq!((e.details().reason, e.details().line), (Some("import-zero-length"), Some(4)));
     }
 
     #[test]
     fn malformed_files_name_line_and_column() {
-        let e = |t: &str| parse(t).unwrap_err().to_string();
+        let e = |t: &str| read_csv(t).unwrap_err().to_string();
         assert_eq!(
             e("x,y,z,a,b,c\n0,0,0,1,0\n"),
             "csv: line 2, column 10: expected 6 numbers (a.x a.y a.z b.x b.y b.z), found 5"
@@ -163,9 +163,9 @@ mod tests {
     fn a_text_of_the_size_limit_is_read_and_a_byte_more_is_not() {
         let data = "0,0,0,1,0,0\n0,0,1,0,1,1\n#";
         let mut text = format!("{data}{}", "x".repeat(MAX_IMPORT_TEXT - data.len()));
-        assert_eq!(parse(&text).unwrap().coords.len(), 12);
+        assert_eq!(read_csv(&text).unwrap().coords.len(), 12);
         text.push('x');
-        let e = parse(&text).unwrap_err();
+        let e = read_csv(&text).unwrap_err();
         assert_eq!((e.code(), e.details().limit), ("too-large", Some(MAX_IMPORT_TEXT as f64)));
     }
 

@@ -17,7 +17,7 @@ fn json_number(x: f64) -> String {
 }
 
 /// The invariants as JSON.
-pub fn write_json(inv: &Invariants) -> String {
+pub fn invariants_json(inv: &Invariants) -> String {
     let numbers = |v: &[f64]| v.iter().map(|&x| json_number(x)).collect::<Vec<_>>().join(",");
     let points = |v: &[DVec3]| v.iter().flat_map(|p| p.to_array()).map(json_number).collect::<Vec<_>>().join(",");
     let flags = |v: &[bool]| v.iter().map(|&b| if b { "1" } else { "0" }).collect::<Vec<_>>().join(",");
@@ -36,7 +36,7 @@ pub fn write_json(inv: &Invariants) -> String {
 }
 
 /// The invariants as CSV, one row per pair of consecutive rulings.
-pub fn write_csv(inv: &Invariants) -> String {
+pub fn invariants_csv(inv: &Invariants) -> String {
     let mut out = String::from("pair,angle,distance,distribution,f0x,f0y,f0z,f1x,f1y,f1z,nx,ny,nz,parallel\n");
     for i in 0..inv.angle.len() {
         let (f0, f1, n) = (inv.footpoints[2 * i], inv.footpoints[2 * i + 1], inv.central_normal[i]);
@@ -67,7 +67,7 @@ mod tests {
     #[test]
     fn json_has_every_quantity_and_reads_back() {
         let inv = surface().invariants();
-        let text = write_json(&inv);
+        let text = invariants_json(&inv);
         for key in [
             "angle",
             "distance",
@@ -87,7 +87,7 @@ mod tests {
     #[test]
     fn csv_has_a_row_per_pair() {
         let inv = surface().invariants();
-        let text = write_csv(&inv);
+        let text = invariants_csv(&inv);
         assert_eq!(text.lines().count(), 1 + inv.angle.len());
         assert!(text.lines().nth(1).unwrap().starts_with(&format!("0,{:?},", inv.angle[0])));
     }
@@ -96,7 +96,7 @@ mod tests {
     fn csv_rows_hold_each_pairs_own_values() {
         // rulings along x at z = 0, along y at z = 1, along x at z = 2: each pair meets at a right
         // angle, one apart, with footpoints on the z-axis
-        let text = write_csv(&surface().invariants());
+        let text = invariants_csv(&surface().invariants());
         let rows: Vec<Vec<f64>> =
             text.lines().skip(1).map(|l| l.split(',').map(|c| c.parse().unwrap()).collect()).collect();
         for (i, row) in rows.iter().enumerate() {

@@ -170,7 +170,7 @@ impl<'a> Parser<'a> {
 }
 
 /// Parses JSON text into a [`Value`] (the tool poses of `io/toolpath.rs`), with the size and
-/// nesting limits of [`parse`].
+/// nesting limits of [`read_json`].
 pub(crate) fn value_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<(usize, Value)> {
     value_at_most(text, number, MAX_JSON_NUMBERS)
 }
@@ -191,12 +191,12 @@ fn value_at_most<'a>(text: &'a str, number: NumberParser<'a>, max_numbers: usize
 }
 
 /// Parses JSON text into flat coordinates (and a grid shape if given).
-pub fn parse(text: &str) -> Result<Imported> {
-    parse_with(text, &rust_number)
+pub fn read_json(text: &str) -> Result<Imported> {
+    read_json_with(text, &rust_number)
 }
 
-/// As [`parse`], converting numbers with `number` (see [`NumberParser`]).
-pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Imported> {
+/// As [`read_json`], converting numbers with `number` (see [`NumberParser`]).
+pub fn read_json_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Imported> {
     let (at, root) = value_with(text, number)?;
     let (segments_at, segments, grid) = match root {
         Value::Object(fields) => {
@@ -273,7 +273,7 @@ pub fn parse_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Importe
 }
 
 /// Writes segments as `{ "segments": [[…], …] }`, with the grid shape if given.
-pub fn write(coords: &[f64], grid: Option<(usize, usize)>) -> String {
+pub fn write_json(coords: &[f64], grid: Option<(usize, usize)>) -> String {
     let rows: Vec<String> = coords
         .chunks_exact(6)
         .map(|c| format!("[{}]", c.iter().map(|x| format!("{x:?}")).collect::<Vec<_>>().join(", ")))
@@ -289,12 +289,12 @@ mod tests {
     #[test]
     fn accepted_shapes_and_round_trip() {
         let flat = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5, -1e-300, 3.0, 0.25, 1.0, 1.0];
-        assert_eq!(parse("[0,0,0,1,0,0, 0.5,-1e-300,3,0.25,1,1]").unwrap().coords, flat);
-        assert_eq!(parse(&write(&flat, None)).unwrap().coords, flat);
-        let g = parse(&write(&[flat, flat].concat(), Some((2, 2)))).unwrap();
+        assert_eq!(read_json("[0,0,0,1,0,0, 0.5,-1e-300,3,0.25,1,1]").unwrap().coords, flat);
+        assert_eq!(read_json(&write_json(&flat, None)).unwrap().coords, flat);
+        let g = read_json(&write_json(&[flat, flat].concat(), Some((2, 2)))).unwrap();
         assert_eq!(g.grid, Some((2, 2)));
         assert_eq!(
-            parse("{\"note\": \"x\", \"segments\": [[1,2,3,4,5,6], [0,0,0,1,1,1]], \"v\": [true, null]}")
+            read_json("{\"note\": \"x\", \"segments\": [[1,2,3,4,5,6], [0,0,0,1,1,1]], \"v\": [true, null]}")
                 .unwrap()
                 .coords
                 .len(),
@@ -304,18 +304,18 @@ mod tests {
 
     #[test]
     fn zero_length_records_are_named_by_their_place() {
-        let e = parse("[[0,0,0,1,0,0],\n [3,3,3,3,3,3]]").unwrap_err();
+        let e = read_json("[[0,0,0,1,0,0],\n [3,3,3,3,3,3]]").unwrap_err();
         assert_eq!(
             (e.details().reason, e.details().line, e.details().column),
             (Some("import-zero-length"), Some(2), Some(2))
         );
-        let e = parse("[0,0,0,1,0,0, 5,5,5,5,5,5]").unwrap_err();
+        let e = read_json("[0,0,0,1,0,0, 5,5,5,5,5,5]").unwrap_err();
         assert_eq!((e.details().line, e.details().column), (Some(1), Some(15)));
     }
 
     #[test]
     fn malformed_files_name_line_and_column() {
-        let e = |t: &str| parse(t).unwrap_err().to_string();
+        let e = |t: &str| read_json(t).unwrap_err().to_string();
         assert_eq!(e("[[0,0,0,1,0,0],\n [0,0,0,1,0]]"), "json: line 2, column 2: a segment needs 6 numbers, found 5");
         assert_eq!(e("[0,0,0,1,0,\"x\"]"), "json: line 1, column 12: expected a number");
         assert_eq!(
@@ -362,15 +362,18 @@ mod tests {
         assert_eq!(read(" true "), Value::Bool);
         assert_eq!(read("{}"), Value::Object(Vec::new()));
         assert_eq!(read("{ \"k\" : [ ] }"), Value::Object(vec![("k".into(), 8, Value::Array(Vec::new()))]));
-        let reason = |t: &str| parse(t).unwrap_err().details().reason;
+        let reason = |t: &str| read_json(t).unwrap_err().details().reason;
         assert_eq!(reason("{}"), Some("json-segments-missing"));
         assert_eq!(reason("{\"segments\": {}}"), Some("json-segments-array"));
         assert_eq!(reason("[1,2] x"), Some("json-trailing"));
         // rows and cols: integers from 2 to MAX_RULINGS
         let two = "[[0,0,0,1,0,0],[0,0,0,0,1,0],[0,0,0,0,0,1],[0,0,0,1,1,0]]";
-        assert_eq!(parse(&format!("{{\"rows\": 2, \"cols\": 2, \"segments\": {two}}}")).unwrap().grid, Some((2, 2)));
+        assert_eq!(
+            read_json(&format!("{{\"rows\": 2, \"cols\": 2, \"segments\": {two}}}")).unwrap().grid,
+            Some((2, 2))
+        );
         for rows in ["2.5", "1", "0", "-2", "4194305", "\"2\""] {
-            let e = parse(&format!("{{\"rows\": {rows}, \"cols\": 2, \"segments\": {two}}}")).unwrap_err();
+            let e = read_json(&format!("{{\"rows\": {rows}, \"cols\": 2, \"segments\": {two}}}")).unwrap_err();
             assert_eq!((e.details().reason, e.details().column), (Some("json-grid-integer"), Some(10)), "rows {rows}");
         }
     }
@@ -379,9 +382,9 @@ mod tests {
     fn a_text_of_the_size_limit_is_read_and_a_byte_more_is_not() {
         let data = "[0,0,0,1,0,0, 0,0,1,0,1,1]";
         let mut text = format!("{data}{}", " ".repeat(MAX_IMPORT_TEXT - data.len()));
-        assert_eq!(parse(&text).unwrap().coords.len(), 12);
+        assert_eq!(read_json(&text).unwrap().coords.len(), 12);
         text.push(' ');
-        let e = parse(&text).unwrap_err();
+        let e = read_json(&text).unwrap_err();
         assert_eq!((e.code(), e.details().limit), ("too-large", Some(MAX_IMPORT_TEXT as f64)));
     }
 

@@ -2,7 +2,7 @@
 //! comment header with the conventions) and JSON (`{ units, tool, poses: [{ tip, axis }] }`),
 //! numbers in the shortest form that reads back to the same doubles. The G-code post is the
 //! machine's own format (`crate::milling::post`). Tool poses are read back from both, and from
-//! CSV or JSON of tips and axes written elsewhere ([`read_poses`]).
+//! CSV or JSON of tips and axes written elsewhere ([`read_tool_poses`]).
 
 use crate::error::{Error, Result};
 use crate::io::json::{self, Value};
@@ -13,7 +13,7 @@ use glam::DVec3;
 use std::fmt::Write;
 
 /// CSV: a comment header with the conventions, then tip x, y, z and unit axis i, j, k per row.
-pub fn write_csv(path: &ToolPath) -> String {
+pub fn tool_path_csv(path: &ToolPath) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "# ruledlab tool path; model units; tool: {}", tool_line(path));
     let _ = writeln!(s, "tip_x,tip_y,tip_z,axis_i,axis_j,axis_k");
@@ -25,7 +25,7 @@ pub fn write_csv(path: &ToolPath) -> String {
 
 /// JSON: { units, tool, poses: [{ tip: [x, y, z], axis: [i, j, k] }] } (shortest round-trip
 /// number format, so reading it back gives the same doubles).
-pub fn write_json(path: &ToolPath) -> String {
+pub fn tool_path_json(path: &ToolPath) -> String {
     let v = |p: DVec3| format!("[{:?}, {:?}, {:?}]", p.x, p.y, p.z);
     let end = match path.tool.end {
         ToolEnd::Ball => "ball",
@@ -98,7 +98,7 @@ fn pose_axis(source: &str, k: usize, axis: DVec3, at: (Option<usize>, Option<usi
 /// unit vector; an optional header; `#` comments, ruledlab's own naming the tool) or JSON
 /// (`{ "poses": [{ "tip": [x, y, z], "axis": [i, j, k] }, …], "tool"?: { "end", "radius",
 /// "length" } }` or the array of poses alone). At least two poses; no zero axis.
-pub fn read_poses(text: &str, json: bool, number: NumberParser<'_>) -> Result<ImportedPoses> {
+pub fn read_tool_poses(text: &str, json: bool, number: NumberParser<'_>) -> Result<ImportedPoses> {
     let (tips, axes, tool) = if json { read_json(text, number)? } else { read_csv(text, number)? };
     if tips.len() < 2 {
         let source = if json { "json" } else { "csv" };
@@ -188,14 +188,14 @@ fn read_json(text: &str, number: NumberParser<'_>) -> Result<Read> {
 mod tests {
     use super::*;
     use crate::io::rust_number;
-    use crate::milling::example::example;
+    use crate::milling::example::example_tool_path;
 
     #[test]
     fn csv_and_json_round_trip_with_the_tool() {
-        let path = example(5).unwrap();
-        for (text, json) in [(write_csv(&path), false), (write_json(&path), true)] {
+        let path = example_tool_path(5).unwrap();
+        for (text, json) in [(tool_path_csv(&path), false), (tool_path_json(&path), true)] {
             assert!(looks_like_poses(&text));
-            let back = read_poses(&text, json, &rust_number).unwrap();
+            let back = read_tool_poses(&text, json, &rust_number).unwrap();
             assert_eq!(back.tool, Some(path.tool));
             for (k, p) in path.poses.iter().enumerate() {
                 assert_eq!(back.tips[k], p.tip);
@@ -208,14 +208,15 @@ mod tests {
 
     #[test]
     fn bad_poses_are_said_where_they_are() {
-        let e = read_poses("tip_x,tip_y,tip_z,axis_i,axis_j,axis_k\n0,0,0,0,0,1\n1,0,0,0,0,0\n", false, &rust_number);
+        let e =
+            read_tool_poses("tip_x,tip_y,tip_z,axis_i,axis_j,axis_k\n0,0,0,0,0,1\n1,0,0,0,0,0\n", false, &rust_number);
         assert_eq!(
             e.unwrap_err().to_string(),
             "csv: line 3: pose 1 has a zero axis (i = j = k = 0), so it has no direction"
         );
-        let e = read_poses("{\"poses\": [{\"tip\": [0, 0, 0]}]}", true, &rust_number).unwrap_err();
+        let e = read_tool_poses("{\"poses\": [{\"tip\": [0, 0, 0]}]}", true, &rust_number).unwrap_err();
         assert!(e.to_string().starts_with("json: line 1, column 12: expected a pose"), "{e}");
-        let e = read_poses("[{\"tip\": [0, 0, 0], \"axis\": [0, 0, 1]}]", true, &rust_number).unwrap_err();
+        let e = read_tool_poses("[{\"tip\": [0, 0, 0], \"axis\": [0, 0, 1]}]", true, &rust_number).unwrap_err();
         assert!(e.to_string().contains("at least 2"), "{e}");
     }
 
@@ -226,10 +227,10 @@ mod tests {
                 "{{\"tool\": {{\"end\": \"flat\", \"radius\": 2, \"length\": 30}}, \"poses\": [{{\"tip\": {tip}, \"axis\": [0, 0, 1]}}, {{\"tip\": [1, 0, 0], \"axis\": [0, 0, 1]}}]}}"
             )
         };
-        let read = read_poses(&text("[0, 0, 0]"), true, &rust_number).unwrap();
+        let read = read_tool_poses(&text("[0, 0, 0]"), true, &rust_number).unwrap();
         assert_eq!(read.tool.map(|t| (t.end, t.radius, t.length)), Some((ToolEnd::Flat, 2.0, 30.0)));
         for tip in ["[0, 0]", "[0, 0, 0, 0]"] {
-            let e = read_poses(&text(tip), true, &rust_number).unwrap_err();
+            let e = read_tool_poses(&text(tip), true, &rust_number).unwrap_err();
             assert_eq!(e.details().reason, Some("json-pose"), "{tip}");
         }
     }

@@ -31,7 +31,7 @@ pub fn part_mesh(nx: usize, ny: usize) -> Mesh {
 }
 
 /// The exact path at parameter s: (profile point γ(s), ball centre, pose).
-pub fn exact(s: f64, radius: f64) -> (DVec3, DVec3, Pose) {
+pub fn example_pose(s: f64, radius: f64) -> (DVec3, DVec3, Pose) {
     let f = part_height;
     let (x, y) = (s, 1.5 * (0.6 * s).sin());
     let gamma = DVec3::new(x, y, f(x, y));
@@ -45,21 +45,35 @@ pub fn exact(s: f64, radius: f64) -> (DVec3, DVec3, Pose) {
 }
 
 /// Parameter range of the profile.
-pub const RANGE: (f64, f64) = (0.0, 6.0);
+pub const EXAMPLE_RANGE: (f64, f64) = (0.0, 6.0);
 
 /// The example with `count` given poses (Fig. 16 uses 7), tool radius 0.25, length 1.5.
-pub fn example(count: usize) -> Result<ToolPath> {
+pub fn example_tool_path(count: usize) -> Result<ToolPath> {
     let tool = Tool::new(0.25, 1.5, ToolEnd::Ball)?;
     let count = count.max(2);
     let poses = (0..count)
-        .map(|i| exact(RANGE.0 + (RANGE.1 - RANGE.0) * i as f64 / (count - 1) as f64, tool.radius).2)
+        .map(|i| {
+            example_pose(
+                EXAMPLE_RANGE.0 + (EXAMPLE_RANGE.1 - EXAMPLE_RANGE.0) * i as f64 / (count - 1) as f64,
+                tool.radius,
+            )
+            .2
+        })
         .collect();
     Ok(ToolPath { poses, tool })
 }
 
 /// The target profile sampled at `count` points.
-pub fn profile(count: usize) -> Vec<DVec3> {
-    (0..count).map(|i| exact(RANGE.0 + (RANGE.1 - RANGE.0) * i as f64 / (count.max(2) - 1) as f64, 0.25).0).collect()
+pub fn example_profile(count: usize) -> Vec<DVec3> {
+    (0..count)
+        .map(|i| {
+            example_pose(
+                EXAMPLE_RANGE.0 + (EXAMPLE_RANGE.1 - EXAMPLE_RANGE.0) * i as f64 / (count.max(2) - 1) as f64,
+                0.25,
+            )
+            .0
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -69,7 +83,7 @@ mod tests {
     #[test]
     fn the_ball_touches_the_profile() {
         for s in [0.3, 2.0, 4.7] {
-            let (g, c, pose) = exact(s, 0.25);
+            let (g, c, pose) = example_pose(s, 0.25);
             assert!(((c - g).length() - 0.25).abs() < 1e-15);
             assert!((pose.axis.length() - 1.0).abs() < 1e-15);
             assert!(((pose.tip + 0.25 * pose.axis) - c).length() < 1e-15);
@@ -110,7 +124,7 @@ mod tests {
     fn the_pose_is_what_the_example_defines() {
         let h = 1e-6;
         for s in [0.0, 0.7, 2.5, 4.1, 6.0] {
-            let (g, c, pose) = exact(s, 0.25);
+            let (g, c, pose) = example_pose(s, 0.25);
             assert_eq!(g, DVec3::new(s, 1.5 * (0.6 * s).sin(), part_height(s, 1.5 * (0.6 * s).sin())));
             let (x, y) = (g.x, g.y);
             let fx = (part_height(x + h, y) - part_height(x - h, y)) / (2.0 * h);
@@ -119,7 +133,7 @@ mod tests {
             assert!(normal.dot(DVec3::new(1.0, 0.0, fx)).abs() < 1e-8, "s = {s}");
             assert!(normal.dot(DVec3::new(0.0, 1.0, fy)).abs() < 1e-8, "s = {s}");
             assert!(normal.z > 0.0 && (normal.length() - 1.0).abs() < 1e-15);
-            let tangent = (exact(s + h, 0.25).0 - exact(s - h, 0.25).0).normalize();
+            let tangent = (example_pose(s + h, 0.25).0 - example_pose(s - h, 0.25).0).normalize();
             let lead = pose.axis.dot(normal).clamp(-1.0, 1.0).acos();
             assert!((lead - 0.35f64.atan()).abs() < 1e-8, "s = {s}: lead {lead}");
             // in the plane of ν and γ′, leaning towards γ′
@@ -129,14 +143,14 @@ mod tests {
 
     #[test]
     fn the_example_samples_the_profile_evenly() {
-        let path = example(7).unwrap();
+        let path = example_tool_path(7).unwrap();
         assert_eq!((path.tool.radius, path.tool.length, path.tool.end), (0.25, 1.5, ToolEnd::Ball));
         assert_eq!(path.poses.len(), 7);
         for (k, pose) in path.poses.iter().enumerate() {
-            assert_eq!(*pose, exact(k as f64, 0.25).2, "pose {k}");
+            assert_eq!(*pose, example_pose(k as f64, 0.25).2, "pose {k}");
         }
-        assert_eq!(example(1).unwrap().poses, [exact(0.0, 0.25).2, exact(6.0, 0.25).2]);
-        let p = profile(4);
-        assert_eq!(p, [0.0, 2.0, 4.0, 6.0].map(|s| exact(s, 0.25).0));
+        assert_eq!(example_tool_path(1).unwrap().poses, [example_pose(0.0, 0.25).2, example_pose(6.0, 0.25).2]);
+        let p = example_profile(4);
+        assert_eq!(p, [0.0, 2.0, 4.0, 6.0].map(|s| example_pose(s, 0.25).0));
     }
 }

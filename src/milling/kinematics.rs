@@ -87,7 +87,7 @@ pub fn tool_axis(m: &Machine, rotary: [f64; 2]) -> DVec3 {
 
 /// Forward kinematics: the pose (part frame, mm) of the axis values `j` for a tool of length
 /// `tool_length` (mm).
-pub fn forward(m: &Machine, j: &Joints, tool_length: f64) -> Pose {
+pub fn forward_kinematics(m: &Machine, j: &Joints, tool_length: f64) -> Pose {
     let tip_m = j.xyz + head_offset(m, j.rotary, tool_length);
     Pose { tip: table_unmap(m, j.rotary, tip_m) - DVec3::from(m.part_zero), axis: tool_axis(m, j.rotary) }
 }
@@ -216,7 +216,7 @@ fn limit(x: Option<f64>, default: f64) -> f64 {
 /// Inverse kinematics of a path (part frame, mm; unit axes) for a tool of length `tool_length`
 /// (mm): the axis values of every pose, chosen within the limits to move least (see the module
 /// documentation).
-pub fn inverse(m: &Machine, poses: &[Pose], tool_length: f64) -> Result<Vec<Joints>> {
+pub fn inverse_kinematics(m: &Machine, poses: &[Pose], tool_length: f64) -> Result<Vec<Joints>> {
     let raw: Vec<Vec<Orientation>> = poses.iter().map(|p| orientations(m, p.axis)).collect();
     let determined = |o: &Orientation| o[0].is_some() && o[1].is_some();
     // the pole: the free angle takes its values from the nearest poses off the pole
@@ -353,7 +353,7 @@ pub fn at_pole(m: &Machine, a: DVec3) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::milling::machine::PRESETS;
+    use crate::milling::machine::MACHINE_PRESETS;
 
     fn pose(tip: [f64; 3], axis: [f64; 3]) -> Pose {
         Pose { tip: DVec3::from(tip), axis: DVec3::from(axis).normalize() }
@@ -361,7 +361,7 @@ mod tests {
 
     #[test]
     fn both_solutions_give_the_axis() {
-        for name in PRESETS {
+        for name in MACHINE_PRESETS {
             let m = Machine::preset(name).unwrap();
             for a in [[0.3, -0.5, 0.8], [-0.6, 0.2, 0.5], [0.0, 0.4, 0.9]] {
                 let a = DVec3::from(a).normalize();
@@ -377,12 +377,12 @@ mod tests {
 
     #[test]
     fn inverse_then_forward_is_the_identity() {
-        for name in PRESETS {
+        for name in MACHINE_PRESETS {
             let m = Machine::preset(name).unwrap();
             let poses = [pose([1.0, 2.0, 3.0], [0.2, 0.1, 1.0]), pose([4.0, -2.0, 1.0], [-0.3, 0.4, 0.9])];
-            let j = inverse(&m, &poses, 40.0).unwrap();
+            let j = inverse_kinematics(&m, &poses, 40.0).unwrap();
             for (p, j) in poses.iter().zip(&j) {
-                let q = forward(&m, j, 40.0);
+                let q = forward_kinematics(&m, j, 40.0);
                 assert!((q.tip - p.tip).length() < 1e-9 && (q.axis - p.axis).length() < 1e-12, "{name}");
             }
         }
@@ -395,7 +395,7 @@ mod tests {
         m.rotary[0].pivot = [0.0; 3];
         m.part_zero = [0.0; 3];
         let a = DVec3::new(0.3, -0.5, 0.8).normalize();
-        let j = inverse(&m, &[Pose { tip: DVec3::new(1.0, 2.0, 3.0), axis: a }], 10.0).unwrap()[0];
+        let j = inverse_kinematics(&m, &[Pose { tip: DVec3::new(1.0, 2.0, 3.0), axis: a }], 10.0).unwrap()[0];
         assert!((j.rotary[0] - a.x.hypot(a.y).atan2(a.z).to_degrees()).abs() < 1e-9);
         assert!((j.rotary[1] - a.x.atan2(a.y).to_degrees()).abs() < 1e-9);
         let r = DMat3::from_rotation_x(j.rotary[0].to_radians()) * DMat3::from_rotation_z(j.rotary[1].to_radians());
@@ -406,7 +406,7 @@ mod tests {
     fn the_pole_takes_the_neighbours_angle() {
         let m = Machine::preset("table-table-ac").unwrap();
         let poses = [pose([0.0; 3], [0.5, 0.5, 0.7]), pose([1.0, 0.0, 0.0], [0.0, 0.0, 1.0])];
-        let j = inverse(&m, &poses, 10.0).unwrap();
+        let j = inverse_kinematics(&m, &poses, 10.0).unwrap();
         assert_eq!(j[1].rotary[1], j[0].rotary[1]);
         assert!(j[1].rotary[0].abs() < 1e-12);
         assert!(at_pole(&m, DVec3::Z) && !at_pole(&m, DVec3::X));
@@ -417,7 +417,7 @@ mod tests {
         let m = Machine::preset("table-table-ac").unwrap();
         // the axis pointing down into the part: A would be 180°
         let poses = [pose([0.0; 3], [0.0, 0.3, 1.0]), pose([0.0; 3], [0.0, 0.1, -1.0])];
-        let e = inverse(&m, &poses, 10.0).unwrap_err();
+        let e = inverse_kinematics(&m, &poses, 10.0).unwrap_err();
         assert_eq!(e.code(), "unreachable");
         assert!(e.to_string().starts_with("pose 1 cannot be reached"), "{e}");
     }
@@ -427,7 +427,7 @@ mod tests {
     /// axis came back 5.8·10⁻¹⁰ off; the property test found 4·10⁻¹¹ at a tilt of 2·10⁻⁶ rad.)
     #[test]
     fn axes_near_the_pole_come_back_exactly() {
-        for name in PRESETS {
+        for name in MACHINE_PRESETS {
             let m = Machine::preset(name).unwrap();
             for tilt in [1e-3f64, 1e-5, 4e-8, 2e-9] {
                 for turn in [0.3f64, 2.0, -2.5] {
@@ -519,10 +519,10 @@ mod tests {
     #[test]
     fn unreachable_poses_are_named_with_the_axis_and_its_limits() {
         let m = Machine::preset("table-table-ac").unwrap();
-        let e = inverse(&m, &[pose([0.0; 3], tilted(130.0, 90.0))], 40.0).unwrap_err();
+        let e = inverse_kinematics(&m, &[pose([0.0; 3], tilted(130.0, 90.0))], 40.0).unwrap_err();
         assert_eq!(e.to_string(), "pose 0 cannot be reached: A would be 130, outside its limits -30 to 120");
         let far = [pose([0.0; 3], [0.0, 0.0, 1.0]), pose([900.0, 0.0, 0.0], [0.0, 0.0, 1.0])];
-        let e = inverse(&m, &far, 40.0).unwrap_err();
+        let e = inverse_kinematics(&m, &far, 40.0).unwrap_err();
         assert_eq!(e.to_string(), "pose 1 cannot be reached: X would be 910, outside its limits -500 to 500");
         // the travel's ends are inside it
         for x in [-500.0, 500.0] {
@@ -533,12 +533,12 @@ mod tests {
         // limits the other way round: now −130 is the nearer (10° below −120; 130 is 100° above 30)
         let mut flipped = m.clone();
         (flipped.rotary[0].min, flipped.rotary[0].max) = (Some(-120.0), Some(30.0));
-        let e = inverse(&flipped, &[pose([0.0; 3], tilted(130.0, 90.0))], 40.0).unwrap_err();
+        let e = inverse_kinematics(&flipped, &[pose([0.0; 3], tilted(130.0, 90.0))], 40.0).unwrap_err();
         assert_eq!(e.to_string(), "pose 0 cannot be reached: A would be -130, outside its limits -120 to 30");
         // a controller value of 360 at the zero position: the value named is within a turn of 0
         let mut turned = m.clone();
         turned.rotary[0].zero = 360.0;
-        let e = inverse(&turned, &[pose([0.0; 3], tilted(130.0, 90.0))], 40.0).unwrap_err();
+        let e = inverse_kinematics(&turned, &[pose([0.0; 3], tilted(130.0, 90.0))], 40.0).unwrap_err();
         assert_eq!(e.to_string(), "pose 0 cannot be reached: A would be 130, outside its limits -30 to 120");
     }
 
@@ -565,7 +565,7 @@ mod tests {
         one_sided.rotary[0] = crate::milling::machine::RotaryAxis { min: None, max: Some(20.0), ..t.rotary[0] };
         let down = fixed(values(&one_sided, 0, 10f64.to_radians()));
         assert_eq!(down, (0..MAX_AXIS_TURNS).rev().map(|n| 10.0 - 360.0 * n as f64).collect::<Vec<_>>());
-        let j = inverse(&one_sided, &[pose([0.0; 3], tilted(10.0, 90.0))], 40.0).unwrap()[0];
+        let j = inverse_kinematics(&one_sided, &[pose([0.0; 3], tilted(10.0, 90.0))], 40.0).unwrap()[0];
         assert!((j.rotary[0].abs() - 10.0).abs() < 1e-9, "{j:?}");
     }
 
@@ -575,29 +575,32 @@ mod tests {
     fn the_axes_move_least() {
         let m = Machine::preset("table-table-ac").unwrap();
         for turn in [30.0, 120.0, -150.0] {
-            let j = inverse(&m, &[pose([0.0; 3], tilted(20.0, turn))], 40.0).unwrap()[0];
+            let j = inverse_kinematics(&m, &[pose([0.0; 3], tilted(20.0, turn))], 40.0).unwrap()[0];
             assert!(j.rotary[1].abs() <= 90.0 + 1e-9 && (j.rotary[0].abs() - 20.0).abs() < 1e-9, "{turn}: {j:?}");
         }
         let round: Vec<Pose> = (0..=72).map(|k| pose([0.0; 3], tilted(20.0, 10.0 * k as f64))).collect();
-        let j = inverse(&m, &round, 40.0).unwrap();
+        let j = inverse_kinematics(&m, &round, 40.0).unwrap();
         for w in j.windows(2) {
             let d = w[1].rotary[1] - w[0].rotary[1];
             assert!((d.abs() - 10.0).abs() < 1e-9 && (w[1].rotary[0] - w[0].rotary[0]).abs() < 1e-9, "{w:?}");
         }
         assert!((j[72].rotary[1] - j[0].rotary[1]).abs() > 719.0);
         let pole_first =
-            inverse(&m, &[pose([0.0; 3], [0.0, 0.0, 1.0]), pose([0.0; 3], tilted(20.0, 50.0))], 40.0).unwrap();
+            inverse_kinematics(&m, &[pose([0.0; 3], [0.0, 0.0, 1.0]), pose([0.0; 3], tilted(20.0, 50.0))], 40.0)
+                .unwrap();
         assert!((pole_first[0].rotary[1] - pole_first[1].rotary[1]).abs() < 1e-9, "{pole_first:?}");
         // a pose repeated costs no motion whichever solution: the one nearer zero stays chosen
         for turn in [50.0, 140.0, -120.0, -20.0] {
             let twice = [pose([0.0; 3], tilted(20.0, turn)), pose([1.0, 0.0, 0.0], tilted(20.0, turn))];
-            let j = inverse(&m, &twice, 40.0).unwrap();
+            let j = inverse_kinematics(&m, &twice, 40.0).unwrap();
             assert!(j.iter().all(|j| j.rotary[1].abs() <= 90.0 + 1e-9), "{turn}: {j:?}");
         }
         // and of the neighbour's two solutions, the one nearer zero (the pole's A = 0 does not
         // make every C as good)
         for turn in [50.0, 140.0, -120.0, -20.0] {
-            let j = inverse(&m, &[pose([0.0; 3], [0.0, 0.0, 1.0]), pose([0.0; 3], tilted(20.0, turn))], 40.0).unwrap();
+            let j =
+                inverse_kinematics(&m, &[pose([0.0; 3], [0.0, 0.0, 1.0]), pose([0.0; 3], tilted(20.0, turn))], 40.0)
+                    .unwrap();
             assert!(j[1].rotary[1].abs() <= 90.0 + 1e-9, "{turn}: {j:?}");
         }
     }

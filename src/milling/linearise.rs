@@ -22,7 +22,7 @@
 //! is an error naming its poses (the axes turn over or pass the pole there).
 
 use crate::error::{Arg, Error, Result};
-use crate::milling::kinematics::{forward, inverse, tool_axis, Joints};
+use crate::milling::kinematics::{forward_kinematics, inverse_kinematics, tool_axis, Joints};
 use crate::milling::machine::Machine;
 use crate::milling::Pose;
 use crate::tolerance::{LINEARISATION_SAMPLES, MAX_LINEARISATION_ROUNDS, MAX_POST_POSES};
@@ -139,7 +139,7 @@ pub fn block_deviation(
             [ja.rotary[0] + s * (jb.rotary[0] - ja.rotary[0]), ja.rotary[1] + s * (jb.rotary[1] - ja.rotary[1])];
         let (tip, axis) = match how {
             Interpolation::Machine => {
-                let p = forward(m, &Joints { xyz: ja.xyz.lerp(jb.xyz, s), rotary }, tool_length);
+                let p = forward_kinematics(m, &Joints { xyz: ja.xyz.lerp(jb.xyz, s), rotary }, tool_length);
                 (p.tip, p.axis)
             }
             Interpolation::TcpAngles => (a.tip.lerp(b.tip, s), tool_axis(m, rotary)),
@@ -206,7 +206,7 @@ fn linearise_at_most(
     let mut previous: Option<(Vec<Joints>, Vec<BlockDeviation>)> = None;
     let mut carried: Vec<Option<usize>> = Vec::new();
     loop {
-        let joints = inverse(m, &poses, tool_length).map_err(|e| renamed(e, &origin))?;
+        let joints = inverse_kinematics(m, &poses, tool_length).map_err(|e| renamed(e, &origin))?;
         let blocks: Vec<BlockDeviation> = (0..poses.len().saturating_sub(1))
             .map(|i| {
                 if let (Some((old_joints, old_blocks)), Some(&Some(j))) = (&previous, carried.get(i)) {
@@ -350,7 +350,7 @@ mod tests {
         let m = Machine::preset("table-table-ac").unwrap();
         for (from, to) in [([0.0, 0.0], [60.0, 0.0]), ([90.0, 0.0], [90.0, 60.0])] {
             let (ja, jb) = (Joints { xyz: DVec3::ZERO, rotary: from }, Joints { xyz: DVec3::ZERO, rotary: to });
-            let (a, b) = (forward(&m, &ja, 50.0), forward(&m, &jb, 50.0));
+            let (a, b) = (forward_kinematics(&m, &ja, 50.0), forward_kinematics(&m, &jb, 50.0));
             assert!(a.axis.angle_between(b.axis) > 1.0, "the ends are 60° apart");
             let d = block_deviation(&m, (&a, &b), (&ja, &jb), Interpolation::TcpAngles, 50.0);
             assert!(d.axis < 1e-12 && d.tip < 1e-12, "{from:?} → {to:?}: {d:?}");
@@ -462,7 +462,7 @@ mod tests {
             .enumerate()
             .map(|(k, &axis)| Pose { tip: DVec3::new(k as f64, 0.0, 0.0), axis })
             .collect();
-        let joints = inverse(&m, &poses, 50.0).unwrap();
+        let joints = inverse_kinematics(&m, &poses, 50.0).unwrap();
         let d: Vec<f64> = (0..3)
             .map(|i| {
                 block_deviation(

@@ -158,14 +158,14 @@ fn custom() -> String {
 }
 
 /// The names of the presets, in the order of [`Machine::preset`].
-pub const PRESETS: [&str; 4] = ["table-table-ac", "table-table-bc", "head-table-bc", "head-head-ac"];
+pub const MACHINE_PRESETS: [&str; 4] = ["table-table-ac", "table-table-bc", "head-table-bc", "head-head-ac"];
 
 fn axis(name: AxisName, on: Carrier, limits: (Option<f64>, Option<f64>), pivot: [f64; 3]) -> RotaryAxis {
     RotaryAxis { name, on, direction: 1.0, zero: 0.0, min: limits.0, max: limits.1, pivot }
 }
 
 impl Machine {
-    /// A preset by name (see [`PRESETS`]), or `None`.
+    /// A preset by name (see [`MACHINE_PRESETS`]), or `None`.
     pub fn preset(name: &str) -> Option<Machine> {
         use AxisName::{A, B, C};
         use Carrier::{Head, Table};
@@ -279,7 +279,7 @@ mod tests {
 
     #[test]
     fn presets_are_valid_and_named() {
-        for name in PRESETS {
+        for name in MACHINE_PRESETS {
             let m = Machine::preset(name).unwrap();
             m.validate().unwrap();
             assert_eq!(m.name, name);
@@ -320,7 +320,7 @@ mod tests {
 
     #[test]
     fn presets_describe_their_axes_and_limits() {
-        let described: Vec<String> = PRESETS.iter().map(|n| Machine::preset(n).unwrap().describe()).collect();
+        let described: Vec<String> = MACHINE_PRESETS.iter().map(|n| Machine::preset(n).unwrap().describe()).collect();
         assert_eq!(
             described,
             [
@@ -380,7 +380,7 @@ mod tests {
         assert_eq!(pivots("table-table-bc"), [[0.0, 0.0, -80.0], [0.0; 3]]);
         assert_eq!(pivots("head-table-bc"), [[0.0, 0.0, 150.0], [0.0; 3]]);
         assert_eq!(pivots("head-head-ac"), [[0.0; 3], [0.0, 0.0, 120.0]]);
-        for name in PRESETS {
+        for name in MACHINE_PRESETS {
             assert_eq!(Machine::preset(name).unwrap().part_zero, [10.0, -5.0, 25.0], "{name}");
         }
     }

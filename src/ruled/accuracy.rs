@@ -9,7 +9,7 @@
 //!
 //! Open samplings use the interior rulings; closed ones (R_{N−1} followed by R_0) every ruling.
 
-use crate::base::{parameters, Ranges};
+use crate::base::{sample_parameters, Ranges};
 use crate::error::Result;
 use crate::ruled::SmoothRuled;
 use glam::DVec3;
@@ -38,7 +38,7 @@ pub struct SamplingErrors {
 /// Errors of `count` rulings of `surface` sampled over `ranges`.
 pub fn sampling_errors(surface: &(impl SmoothRuled + ?Sized), count: usize, ranges: Ranges) -> Result<SamplingErrors> {
     let sampled = surface.sample(count, ranges)?;
-    let u = parameters(count, ranges);
+    let u = sample_parameters(count, ranges);
     // `sample` refuses fewer than 2 rulings
     let h = u[1] - u[0];
     let inv = if ranges.closed { sampled.invariants_closed() } else { sampled.invariants() };

@@ -25,8 +25,7 @@ use crate::tolerance::{CONVERGENCE_NOISE_FLOOR, MAX_STUDY_LEVELS};
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
 #[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
-#[cfg_attr(target_family = "wasm", tsify(type_prefix = "Convergence"))]
-pub struct Series {
+pub struct ConvergenceSeries {
     /// Name of the quantity (see the module table).
     #[cfg_attr(
         target_family = "wasm",
@@ -45,13 +44,12 @@ pub struct Series {
     pub fitted_order: f64,
 }
 
-/// The result of [`study`].
+/// The result of [`convergence_study`].
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
 #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
 #[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
-#[cfg_attr(target_family = "wasm", tsify(type_prefix = "Convergence"))]
-pub struct Study {
+pub struct ConvergenceStudy {
     /// Surface name.
     pub surface: String,
     /// The parameter u studied.
@@ -59,11 +57,16 @@ pub struct Study {
     /// The steps H₀, H₀/2, ….
     pub steps: Vec<f64>,
     /// One series per quantity.
-    pub series: Vec<Series>,
+    pub series: Vec<ConvergenceSeries>,
 }
 
 /// Runs the study at `u` with steps `h0 · 2^{−k}`, k = 0 … levels − 1.
-pub fn study(surface: &(impl SmoothRuled + ?Sized), u: f64, h0: f64, levels: usize) -> Result<Study> {
+pub fn convergence_study(
+    surface: &(impl SmoothRuled + ?Sized),
+    u: f64,
+    h0: f64,
+    levels: usize,
+) -> Result<ConvergenceStudy> {
     if !u.is_finite() {
         return Err(Error::parameter("u", format!("must be a finite number, got {u}")));
     }
@@ -117,10 +120,10 @@ pub fn study(surface: &(impl SmoothRuled + ?Sized), u: f64, h0: f64, levels: usi
                 .windows(2)
                 .map(|w| if w[1] > CONVERGENCE_NOISE_FLOOR { (w[0] / w[1]).log2() } else { f64::NAN })
                 .collect();
-            Series { name, expected_order, fitted_order: fit_order(&steps, &errors), errors, orders }
+            ConvergenceSeries { name, expected_order, fitted_order: fit_order(&steps, &errors), errors, orders }
         })
         .collect();
-    Ok(Study { surface: surface.name().to_string(), u, steps, series })
+    Ok(ConvergenceStudy { surface: surface.name().to_string(), u, steps, series })
 }
 
 /// Least-squares slope of log(error) against log(H) over the errors above the noise floor.
@@ -162,17 +165,18 @@ mod tests {
     #[test]
     fn rejects_bad_parameters() {
         let s = AnalyticSurface::Quartic;
-        assert!(study(&s, f64::NAN, 0.1, 5).is_err());
-        assert!(study(&s, 0.3, 0.0, 5).is_err());
-        assert!(study(&s, 0.3, 0.1, 1).is_err());
-        assert!(study(&s, 0.3, 0.1, 99).is_err());
-        assert!(study(&AnalyticSurface::Cylinder, 0.3, 0.1, 5).is_err());
+        assert!(convergence_study(&s, f64::NAN, 0.1, 5).is_err());
+        assert!(convergence_study(&s, 0.3, 0.0, 5).is_err());
+        assert!(convergence_study(&s, 0.3, 0.1, 1).is_err());
+        assert!(convergence_study(&s, 0.3, 0.1, 99).is_err());
+        assert!(convergence_study(&AnalyticSurface::Cylinder, 0.3, 0.1, 5).is_err());
     }
 
     #[test]
     fn each_parameter_is_refused_by_name_at_its_bounds() {
         let s = AnalyticSurface::Quartic;
-        let option = |u: f64, h0: f64, levels: usize| study(&s, u, h0, levels).unwrap_err().details().option;
+        let option =
+            |u: f64, h0: f64, levels: usize| convergence_study(&s, u, h0, levels).unwrap_err().details().option;
         assert_eq!(option(f64::INFINITY, 0.1, 5).as_deref(), Some("u"));
         for h0 in [0.0, -0.1, 1.000001, f64::NAN, f64::INFINITY] {
             assert_eq!(option(0.3, h0, 5).as_deref(), Some("h0"), "h0 = {h0}");
@@ -181,9 +185,9 @@ mod tests {
             assert_eq!(option(0.3, 0.1, levels).as_deref(), Some("levels"));
         }
         // h0 = 1 and both ends of the levels are accepted; the steps halve from h0
-        let ok = study(&s, 0.3, 1.0, 2).unwrap();
+        let ok = convergence_study(&s, 0.3, 1.0, 2).unwrap();
         assert_eq!((ok.u, ok.steps.clone()), (0.3, vec![1.0, 0.5]));
-        assert_eq!(study(&s, 0.3, 0.1, MAX_STUDY_LEVELS).unwrap().steps.len(), MAX_STUDY_LEVELS);
+        assert_eq!(convergence_study(&s, 0.3, 0.1, MAX_STUDY_LEVELS).unwrap().steps.len(), MAX_STUDY_LEVELS);
     }
 
     #[test]
@@ -199,7 +203,7 @@ mod tests {
     fn a_zero_step_is_a_bad_parameter() {
         for h0 in [0.0, -0.0] {
             assert!(matches!(
-                study(&AnalyticSurface::Quartic, 0.3, h0, 5),
+                convergence_study(&AnalyticSurface::Quartic, 0.3, h0, 5),
                 Err(Error::InvalidParameter { name: "h0", .. })
             ));
         }

@@ -12,7 +12,7 @@
 //!
 //! A cylindrical ruling (e′ = 0) has no striction point and δ = 0 (it is torsal).
 
-use crate::base::{parameters, Jet, Ranges};
+use crate::base::{sample_parameters, Jet, Ranges};
 use crate::error::{Error, Result};
 use crate::line::{Line, Segment};
 use crate::ruled::RuledSurface;
@@ -108,7 +108,7 @@ pub trait SmoothRuled {
         best.1.min(fc).min(fd)
     }
 
-    /// `count` rulings at the [`parameters`] of `r`, each the segment from a + v₀d to a + v₁d.
+    /// `count` rulings at the [`sample_parameters`] of `r`, each the segment from a + v₀d to a + v₁d.
     fn sample(&self, count: usize, r: Ranges) -> Result<RuledSurface> {
         if count > MAX_SAMPLES {
             return Err(Error::TooMany { what: "samples", got: count, max: MAX_SAMPLES });
@@ -121,7 +121,7 @@ pub trait SmoothRuled {
         if r.v.0 == r.v.1 {
             return Err(Error::parameter("vMax", "must differ from vMin (segments of zero length)"));
         }
-        let segments = parameters(count, r)
+        let segments = sample_parameters(count, r)
             .into_iter()
             .map(|u| {
                 let j = self.checked_jet(u)?;

@@ -22,7 +22,7 @@ pub fn subdivide_strip(surface: &RuledSurface, scheme: Scheme, closed: bool, ste
     if let Scheme::Variational { n, variant } = scheme {
         let mut s = surface.clone();
         for _ in 0..steps {
-            s = variational::refine(&s, n, variant)?;
+            s = variational::refine_variational(&s, n, variant)?;
         }
         return Ok(s);
     }

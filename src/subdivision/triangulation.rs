@@ -24,7 +24,7 @@ pub fn division_point(strip: &RuledSurface, j: usize, k: usize, n: usize) -> DVe
 
 /// The edges between consecutive rulings of `strip` (the rulings themselves not included):
 /// (n + 1) level segments and n diagonals per pair of rulings.
-pub fn edges(strip: &RuledSurface, n: usize, which: Triangulation) -> Vec<[DVec3; 2]> {
+pub fn triangulation_edges(strip: &RuledSurface, n: usize, which: Triangulation) -> Vec<[DVec3; 2]> {
     let n = n.max(1);
     let mut out = Vec::with_capacity((strip.len() - 1) * (2 * n + 1));
     for j in 0..strip.len() - 1 {
@@ -55,8 +55,8 @@ mod tests {
         let strip =
             RuledSurface::from_flat(&[0., 0., 0., 0., 1., 0., 1., 0., 0., 1., 1., 0., 2., 0., 0., 2., 1., 0.]).unwrap();
         let n = 4;
-        let first = edges(&strip, n, Triangulation::First);
-        let second = edges(&strip, n, Triangulation::Second);
+        let first = triangulation_edges(&strip, n, Triangulation::First);
+        let second = triangulation_edges(&strip, n, Triangulation::Second);
         assert_eq!(first.len(), 2 * (2 * n + 1));
         let z = |j: usize, k: usize| DVec3::new(j as f64, k as f64 / n as f64, 0.0);
         let neighbours = |edges: &[[DVec3; 2]], p: DVec3| -> Vec<DVec3> {

@@ -80,7 +80,7 @@ fn add_energy(h: &mut SymmetricBanded, r: &mut [[f64; 3]], forms: &[Form<'_>], m
 }
 
 /// One step: N rulings → 2N − 1, old rulings at even indices, unchanged.
-pub fn refine(surface: &RuledSurface, n: usize, variant: Variant) -> Result<RuledSurface> {
+pub fn refine_variational(surface: &RuledSurface, n: usize, variant: Variant) -> Result<RuledSurface> {
     let segs: Vec<Segment> = surface.segments().collect();
     let count = segs.len() - 1; // new rulings
     let (a_idx, b_idx) = (|i: usize| 2 * i, |i: usize| 2 * i + 1);
@@ -177,7 +177,7 @@ mod tests {
     #[test]
     fn literal_variant_is_the_midpoint_rule() {
         let s = quartic();
-        let r = refine(&s, 12, Variant::Literal).unwrap();
+        let r = refine_variational(&s, 12, Variant::Literal).unwrap();
         for i in 0..11 {
             assert_eq!(r.segment(2 * i), s.segment(i));
             assert_near!(r.segment(2 * i + 1).a, 0.5 * (s.segment(i).a + s.segment(i + 1).a), EXACT);
@@ -191,7 +191,7 @@ mod tests {
     fn coupled_solution_minimises_the_literal_formulas() {
         let s = quartic();
         for n in [3, 5, 12] {
-            let r = refine(&s, n, Variant::Coupled).unwrap();
+            let r = refine_variational(&s, n, Variant::Coupled).unwrap();
             let f0 = energy(&r, n, true);
             let pts: Vec<DVec3> = r.points().to_vec();
             for idx in [2, 3, 10, 11, 42, 43] {
@@ -214,7 +214,7 @@ mod tests {
     #[test]
     fn keeps_old_rulings_bit_for_bit() {
         let s = quartic();
-        let r = refine(&s, 12, Variant::Coupled).unwrap();
+        let r = refine_variational(&s, 12, Variant::Coupled).unwrap();
         assert_eq!(r.len(), 23);
         for i in 0..12 {
             assert_eq!(r.segment(2 * i), s.segment(i));

@@ -2,7 +2,7 @@
 //! problem, with a stable `code` (see [`crate::Error::code`]) and, where it helps, `details`
 //! (`{ option, index, line, column, limit, reason, args, hint }`), so a page can tell "too
 //! large" from "malformed" and say what is wrong in its own language (`reason` is a key of
-//! [`crate::error::CATALOGUE`], `args` its values).
+//! [`crate::error::MESSAGES`], `args` its values).
 
 use crate::error::{Arg, Args, Details, Error};
 use js_sys::Reflect;
@@ -48,7 +48,7 @@ pub fn fail(func: &str, problem: impl Into<Problem>) -> JsValue {
             // the argument checks speak to programmers: their reason is plain text
             let details = Details {
                 option,
-                reason: Some(crate::error::TEXT),
+                reason: Some(crate::error::TEXT_REASON),
                 args: Some(Args(vec![("text", Arg::Text(message.clone()))])),
                 ..Details::default()
             };

@@ -1,10 +1,10 @@
-//! `AnalyticSurface.fromFormulas` and `AnalyticCongruence.fromFormulas`: surfaces and
-//! congruences typed as formulas (see [`crate::formula`]). The options object is read by
+//! Formulas typed by a reader (see [`crate::formula`]): the surfaces and congruences of
+//! `AnalyticSurface.fromFormulas` and `AnalyticCongruence.fromFormulas` read into the core's
+//! specs, the catalogue's formulas as presets (`formulaPresets()` of both), and
+//! `evaluateFormulas`, the values of a reader's formulas. The options objects are read by
 //! serde-wasm-bindgen, unknown keys refused.
 
-use super::args::{required, to_js};
-use super::catalogue::AnalyticCongruence;
-use super::catalogue::AnalyticSurface;
+use super::args::{numbers, required};
 use super::error::{fail, fail_option};
 use super::timing::Measure;
 use crate::catalogue::{self as examples, CongruenceSpec, FormulaSpec};
@@ -218,7 +218,7 @@ impl From<[f64; 3]> for ParameterValues {
 /// A surface of the catalogue as formulas (`AnalyticSurface.formulaPresets()`): `fromFormulas`
 /// of it is that surface.
 #[derive(Serialize, Tsify)]
-struct SurfacePreset {
+pub(super) struct SurfacePreset {
     name: &'static str,
     a: [&'static str; 3],
     e: [&'static str; 3],
@@ -230,7 +230,7 @@ struct SurfacePreset {
 
 /// A congruence of the catalogue as formulas (`AnalyticCongruence.formulaPresets()`).
 #[derive(Serialize, Tsify)]
-struct CongruencePreset {
+pub(super) struct CongruencePreset {
     name: &'static str,
     p: [&'static str; 3],
     e: [&'static str; 3],
@@ -243,52 +243,82 @@ struct CongruencePreset {
     reach: f64,
 }
 
-#[wasm_bindgen]
-impl AnalyticSurface {
-    /// Every surface of the catalogue as formulas, in menu order: the presets of "Your
-    /// surface". `fromFormulas` of a preset is the surface of its name (tested to 1e-12).
-    #[wasm_bindgen(js_name = formulaPresets, unchecked_return_type = "SurfacePreset[]")]
-    pub fn formula_presets() -> Result<JsValue, JsValue> {
-        let list: Vec<SurfacePreset> = examples::SURFACE_FORMULAS
-            .iter()
-            .map(|t| SurfacePreset {
-                name: t.name,
-                a: t.a,
-                e: t.e,
-                u: t.u,
-                v: t.v,
-                closed: t.closed,
-                parameters: t.parameters.into(),
-            })
-            .collect();
-        to_js("AnalyticSurface.formulaPresets", &list)
-    }
+/// Every surface of the catalogue as formulas, in menu order.
+pub(super) fn surface_presets() -> Vec<SurfacePreset> {
+    examples::SURFACE_FORMULAS
+        .iter()
+        .map(|t| SurfacePreset {
+            name: t.name,
+            a: t.a,
+            e: t.e,
+            u: t.u,
+            v: t.v,
+            closed: t.closed,
+            parameters: t.parameters.into(),
+        })
+        .collect()
+}
 
-    /// A surface typed as formulas (`SurfaceFormulas`): everything the built-in surfaces do,
-    /// with a′ and e′ differentiated exactly. Throws with the formula and column of a syntax
-    /// error, or the parameter where a value is not finite or e(u) vanishes.
-    #[wasm_bindgen(js_name = fromFormulas)]
-    pub fn from_formulas(
-        #[wasm_bindgen(unchecked_param_type = "SurfaceFormulas")] spec: JsValue,
-    ) -> Result<AnalyticSurface, JsValue> {
-        const F: &str = "AnalyticSurface.fromFormulas";
-        let _measure = Measure::start(F);
-        let s: SurfaceFormulas = required(F, "spec", spec, &[PARAMETER_KEYS])?;
-        let parameters = s.parameters.values();
-        let comma = s.decimal_comma;
-        let spec = FormulaSpec {
-            u: interval(F, "u", &s.u, &parameters, comma)?,
-            v: match &s.v {
-                Some(v) => interval(F, "v", v, &parameters, comma)?,
-                None => (-1.0, 1.0),
-            },
-            a: texts(F, "a", s.a, comma)?,
-            e: texts(F, "e", s.e, comma)?,
-            closed: s.closed,
-            parameters,
-        };
-        examples::AnalyticSurface::from_formulas(&spec).map(AnalyticSurface::from_core).map_err(|e| fail(F, e))
-    }
+/// The surface of `spec` (`SurfaceFormulas`), its bounds evaluated and decimal commas read;
+/// `func` names the export in messages.
+pub(super) fn surface_spec(func: &str, spec: JsValue) -> Result<FormulaSpec, JsValue> {
+    let s: SurfaceFormulas = required(func, "spec", spec, &[PARAMETER_KEYS])?;
+    let parameters = s.parameters.values();
+    let comma = s.decimal_comma;
+    Ok(FormulaSpec {
+        u: interval(func, "u", &s.u, &parameters, comma)?,
+        v: match &s.v {
+            Some(v) => interval(func, "v", v, &parameters, comma)?,
+            None => (-1.0, 1.0),
+        },
+        a: texts(func, "a", s.a, comma)?,
+        e: texts(func, "e", s.e, comma)?,
+        closed: s.closed,
+        parameters,
+    })
+}
+
+/// Every congruence of the catalogue as formulas, in menu order.
+pub(super) fn congruence_presets() -> Vec<CongruencePreset> {
+    examples::CONGRUENCE_FORMULAS
+        .iter()
+        .map(|t| CongruencePreset {
+            name: t.name,
+            p: t.p,
+            e: t.e,
+            u: t.u,
+            v: t.v,
+            rows: t.grid.0,
+            cols: t.grid.1,
+            parameters: t.parameters.into(),
+            reach: t.reach,
+        })
+        .collect()
+}
+
+/// The congruence of `spec` (`CongruenceFormulas`), its bounds evaluated, its grid size
+/// checked and decimal commas read; `func` names the export in messages.
+pub(super) fn congruence_spec(func: &str, spec: JsValue) -> Result<CongruenceSpec, JsValue> {
+    let s: CongruenceFormulas = required(func, "spec", spec, &[PARAMETER_KEYS])?;
+    let parameters = s.parameters.values();
+    let size = |name: &str, x: Option<f64>| -> Result<usize, JsValue> {
+        match x {
+            None => Ok(8),
+            Some(x) if x.fract() == 0.0 && (2.0..=MAX_GRID_SIDE as f64).contains(&x) => Ok(x as usize),
+            Some(x) => {
+                Err(fail_option(func, name, format!("{name} must be an integer from 2 to {MAX_GRID_SIDE}, got {x}")))
+            }
+        }
+    };
+    let comma = s.decimal_comma;
+    Ok(CongruenceSpec {
+        u: interval(func, "u", &s.u, &parameters, comma)?,
+        v: interval(func, "v", &s.v, &parameters, comma)?,
+        grid: (size("rows", s.rows)?, size("cols", s.cols)?),
+        p: texts(func, "p", s.p, comma)?,
+        e: texts(func, "e", s.e, comma)?,
+        parameters,
+    })
 }
 
 /// Formulas of one variable to evaluate (`evaluateFormulas`): a reader's answer, such as the
@@ -336,7 +366,7 @@ pub fn evaluate_formulas(
     if name.len() > 32 || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
         return Err(fail_option(F, "name", "a name of at most 32 letters, digits or _"));
     }
-    let at = super::args::numbers(F, "at", &at)?;
+    let at = numbers(F, "at", &at)?;
     if at.len() > MAX_SAMPLES {
         return Err(fail_option(F, "at", format!("at most {MAX_SAMPLES} values, got {}", at.len())));
     }
@@ -361,58 +391,4 @@ pub fn evaluate_formulas(
         out.extend(formulas.iter().map(|f| f.value(&vars)));
     }
     Ok(js_sys::Float64Array::from(&out[..]))
-}
-
-#[wasm_bindgen]
-impl AnalyticCongruence {
-    /// Every congruence of the catalogue as formulas, in menu order: the presets of "Your
-    /// congruence" and the focal scene's congruences.
-    #[wasm_bindgen(js_name = formulaPresets, unchecked_return_type = "CongruencePreset[]")]
-    pub fn formula_presets() -> Result<JsValue, JsValue> {
-        let list: Vec<CongruencePreset> = examples::CONGRUENCE_FORMULAS
-            .iter()
-            .map(|t| CongruencePreset {
-                name: t.name,
-                p: t.p,
-                e: t.e,
-                u: t.u,
-                v: t.v,
-                rows: t.grid.0,
-                cols: t.grid.1,
-                parameters: t.parameters.into(),
-                reach: t.reach,
-            })
-            .collect();
-        to_js("AnalyticCongruence.formulaPresets", &list)
-    }
-
-    /// A congruence typed as formulas (`CongruenceFormulas`), with exact derivatives.
-    #[wasm_bindgen(js_name = fromFormulas)]
-    pub fn from_formulas(
-        #[wasm_bindgen(unchecked_param_type = "CongruenceFormulas")] spec: JsValue,
-    ) -> Result<AnalyticCongruence, JsValue> {
-        const F: &str = "AnalyticCongruence.fromFormulas";
-        let _measure = Measure::start(F);
-        let s: CongruenceFormulas = required(F, "spec", spec, &[PARAMETER_KEYS])?;
-        let parameters = s.parameters.values();
-        let size = |name: &str, x: Option<f64>| -> Result<usize, JsValue> {
-            match x {
-                None => Ok(8),
-                Some(x) if x.fract() == 0.0 && (2.0..=MAX_GRID_SIDE as f64).contains(&x) => Ok(x as usize),
-                Some(x) => {
-                    Err(fail_option(F, name, format!("{name} must be an integer from 2 to {MAX_GRID_SIDE}, got {x}")))
-                }
-            }
-        };
-        let comma = s.decimal_comma;
-        let spec = CongruenceSpec {
-            u: interval(F, "u", &s.u, &parameters, comma)?,
-            v: interval(F, "v", &s.v, &parameters, comma)?,
-            grid: (size("rows", s.rows)?, size("cols", s.cols)?),
-            p: texts(F, "p", s.p, comma)?,
-            e: texts(F, "e", s.e, comma)?,
-            parameters,
-        };
-        examples::AnalyticCongruence::from_formulas(&spec).map(AnalyticCongruence::from_core).map_err(|e| fail(F, e))
-    }
 }

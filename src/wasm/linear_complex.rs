@@ -1,10 +1,8 @@
-//! Linear complexes for JavaScript (beyond the paper): `linearComplex(segments)`,
-//! `RuledSurface.linearComplex()` and `LineCongruence.linearComplex()`, the complex
+//! Linear complexes for JavaScript (beyond the paper): `linearComplex(segments)`, and the fit
+//! that `RuledSurface.linearComplex()` and `LineCongruence.linearComplex()` return: the complex
 //! c·m + c̄·d = 0 that fits lines best.
 
 use super::args::{self, fail, finite_option, to_js};
-use super::congruence::LineCongruence;
-use super::surface::RuledSurface;
 use crate::line::Segment;
 use crate::linear_complex::{self, LinearComplex};
 use crate::ruled::RuledSurface as CoreSurface;
@@ -60,7 +58,9 @@ struct LinearComplexFit {
     kind: &'static str,
 }
 
-fn complex_js(func: &str, segments: &[Segment], options: JsValue) -> Result<JsValue, JsValue> {
+/// The best-fitting complex of `segments` as a `LinearComplexFit` object (`options`: its
+/// `LinearComplexOptions`).
+pub(super) fn complex_js(func: &str, segments: &[Segment], options: JsValue) -> Result<JsValue, JsValue> {
     let options: LinearComplexOptions = args::options(func, options)?;
     let tolerance = finite_option(func, "tolerance", options.tolerance)?;
     if let Some(t) = tolerance.filter(|t| !(*t > 0.0 && *t <= 1.0)) {
@@ -70,7 +70,7 @@ fn complex_js(func: &str, segments: &[Segment], options: JsValue) -> Result<JsVa
             format!("options.tolerance must be a number in (0, 1], got {t}"),
         ));
     }
-    let f: LinearComplex = linear_complex::fit(segments, tolerance);
+    let f: LinearComplex = linear_complex::fit_linear_complex(segments, tolerance);
     to_js(
         func,
         &LinearComplexFit {
@@ -90,6 +90,7 @@ fn complex_js(func: &str, segments: &[Segment], options: JsValue) -> Result<JsVa
 }
 
 /// The best-fitting linear complex of segments (6 numbers each: a then b; at least 2).
+/// In Rust `ruledlab::wasm::linear_complex_of`.
 #[wasm_bindgen(js_name = linearComplex, unchecked_return_type = "LinearComplexFit")]
 pub fn linear_complex_of(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] segments: JsValue,
@@ -99,31 +100,4 @@ pub fn linear_complex_of(
     let coords = args::numbers(F, "segments", &segments)?;
     let surface = CoreSurface::from_flat(&coords).map_err(|e| fail(F, e))?;
     complex_js(F, &surface.segments().collect::<Vec<_>>(), options)
-}
-
-#[wasm_bindgen]
-impl RuledSurface {
-    /// The linear complex that fits the rulings best (a helical surface: its screw axis; a
-    /// regulus: nullity 3).
-    #[wasm_bindgen(js_name = linearComplex, unchecked_return_type = "LinearComplexFit")]
-    pub fn linear_complex(
-        &self,
-        #[wasm_bindgen(unchecked_optional_param_type = "LinearComplexOptions")] options: JsValue,
-    ) -> Result<JsValue, JsValue> {
-        complex_js("RuledSurface.linearComplex", &self.core().segments().collect::<Vec<_>>(), options)
-    }
-}
-
-#[wasm_bindgen]
-impl LineCongruence {
-    /// The linear complex that fits the lines best.
-    #[wasm_bindgen(js_name = linearComplex, unchecked_return_type = "LinearComplexFit")]
-    pub fn linear_complex(
-        &self,
-        #[wasm_bindgen(unchecked_optional_param_type = "LinearComplexOptions")] options: JsValue,
-    ) -> Result<JsValue, JsValue> {
-        let c = self.core();
-        let segments: Vec<Segment> = (0..c.rows() * c.cols()).map(|k| c.line(k / c.cols(), k % c.cols())).collect();
-        complex_js("LineCongruence.linearComplex", &segments, options)
-    }
 }

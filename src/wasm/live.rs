@@ -1,9 +1,9 @@
 //! A count of the wasm objects JavaScript holds (surfaces, congruences, tool paths): each
 //! carries a [`Live`] token, counted when made and uncounted when freed, so tests can show that
-//! a page frees what it makes (`liveObjects()` stays flat while every slider moves).
+//! a page frees what it makes (`liveObjects()`, in `module_info.rs`, stays flat while every
+//! slider moves). No JS class.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
-use wasm_bindgen::prelude::*;
 
 static LIVE: AtomicUsize = AtomicUsize::new(0);
 
@@ -31,9 +31,7 @@ impl Drop for Live {
     }
 }
 
-/// How many ruledlab objects (RuledSurface, AnalyticSurface, LineCongruence,
-/// AnalyticCongruence, ToolPath) exist, i.e. have been made and not yet freed.
-#[wasm_bindgen(js_name = liveObjects)]
-pub fn live_objects() -> usize {
+/// How many tokens exist: objects made and not yet freed.
+pub(super) fn count() -> usize {
     LIVE.load(Ordering::Relaxed)
 }

@@ -4,38 +4,50 @@
 //! included: a JS caller can pass anything), and turns the core's [`crate::Error`] into a
 //! JS `Error` with the same message. Nothing here panics on any input, so no trap crosses
 //! the boundary and the module stays usable after an error.
+//!
+//! One file per JavaScript class, named after it (`ruled_surface.rs` for `RuledSurface`), with
+//! every method of the class; the free functions in files named for what they do; the helpers
+//! (argument checks, errors, option types and conversions) in files that declare no class. No
+//! file uses another in a cycle (`tests/architecture.rs`).
 
+// the classes
+mod analytic_congruence;
+mod analytic_surface;
+mod congruence_focal;
+mod invariants_buffer;
+mod line_congruence;
+mod ruled_surface;
+mod tool_path;
+
+// the free functions
+mod hidden_lines;
+mod import;
+mod line_fit;
+mod mesh;
+mod module_info;
+mod polygon;
+
+// what they share
 mod args;
 mod buffers;
-mod catalogue;
-mod congruence;
 mod error;
+mod export;
 mod focal;
 mod formula;
-mod io;
-mod line_fit;
+mod gcode_options;
+mod invariants;
 mod linear_complex;
 mod live;
-mod milling;
-mod subdivision;
-mod surface;
+mod subdivide_options;
 mod timing;
-mod visibility;
 
-pub use catalogue::{AnalyticCongruence, AnalyticSurface};
-pub use congruence::LineCongruence;
-pub use io::import_segments;
+pub use analytic_congruence::AnalyticCongruence;
+pub use analytic_surface::AnalyticSurface;
+pub use hidden_lines::hidden_lines;
+pub use import::import_segments;
+pub use line_congruence::LineCongruence;
 pub use linear_complex::linear_complex_of;
-pub use live::live_objects;
-pub use milling::ToolPath;
-pub use subdivision::subdivide_polygon;
-pub use surface::RuledSurface;
-pub use visibility::hidden_lines;
-
-use wasm_bindgen::prelude::*;
-
-/// The crate version, e.g. "0.1.0".
-#[wasm_bindgen]
-pub fn version() -> String {
-    env!("CARGO_PKG_VERSION").to_string()
-}
+pub use module_info::{live_objects, version};
+pub use polygon::subdivide_polygon;
+pub use ruled_surface::RuledSurface;
+pub use tool_path::ToolPath;

@@ -19,13 +19,12 @@ const LANGUAGES = { en, de };
 function catalogue() {
   const source = readFileSync(new URL('../../src/error/message.rs', import.meta.url), 'utf8');
   const body = source.slice(
-    source.indexOf('pub const CATALOGUE'),
-    source.indexOf('];', source.indexOf('pub const CATALOGUE')),
+    source.indexOf('pub const MESSAGES'),
+    source.indexOf('];', source.indexOf('pub const MESSAGES')),
   );
-  const pairs = [...body.matchAll(/\(\s*(TEXT|"[a-z0-9-]+")\s*,\s*"((?:[^"\\]|\\.)*)"\s*,?\s*\)/g)].map(([, r, t]) => [
-    r === 'TEXT' ? 'text' : JSON.parse(r),
-    JSON.parse(`"${t}"`),
-  ]);
+  const pairs = [...body.matchAll(/\(\s*(TEXT_REASON|"[a-z0-9-]+")\s*,\s*"((?:[^"\\]|\\.)*)"\s*,?\s*\)/g)].map(
+    ([, r, t]) => [r === 'TEXT_REASON' ? 'text' : JSON.parse(r), JSON.parse(`"${t}"`)],
+  );
   return pairs;
 }
 

@@ -95,8 +95,8 @@ test('the language switch changes the page and the link; <ruled-view lang="de"> 
 function coreFragments() {
   const source = readFileSync(new URL('../../src/error/message.rs', import.meta.url), 'utf8');
   const body = source.slice(
-    source.indexOf('pub const CATALOGUE'),
-    source.indexOf('];', source.indexOf('pub const CATALOGUE')),
+    source.indexOf('pub const MESSAGES'),
+    source.indexOf('];', source.indexOf('pub const MESSAGES')),
   );
   const templates = [...body.matchAll(/"((?:[^"\\]|\\.)*)"\s*,?\s*\)/g)].map(([, t]) => JSON.parse(`"${t}"`));
   return templates.flatMap((t) =>

@@ -322,7 +322,7 @@ pub struct Plan {
 }
 
 /// The G-code program of `path` (see the module documentation).
-pub fn program(path: &ToolPath, o: &PostOptions) -> Result<Program> {
+pub fn gcode(path: &ToolPath, o: &PostOptions) -> Result<Program> {
     let Plan { ops, context, linearised: lin } = plan(path, o)?;
     let text = match o.dialect {
         Dialect::LinuxCnc => linuxcnc::write(&ops, &context),

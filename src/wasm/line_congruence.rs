@@ -1,12 +1,22 @@
-//! Line congruences for JavaScript (Section 5): `LineCongruence` and `AnalyticCongruence`.
+//! `LineCongruence` for JavaScript: a discrete line congruence, a grid of lines (Section 5),
+//! its subdivision, its rows and columns as ruled surfaces, its focal geometry (beyond the
+//! paper), the buffers the page draws of it, its best-fitting linear complex and its export as
+//! data.
 
 use super::args::{self, fail, finite_option, integer, integer_option, numbers, only_for};
+use super::buffers::{points_f32, segments_f32};
+use super::congruence_focal::CongruenceFocal;
+use super::export::export;
+use super::focal::{focal_js, sheet_figure, strokes};
+use super::linear_complex::complex_js;
 use super::live::Live;
-use super::subdivision::SubdivisionSpace;
-use super::surface::RuledSurface;
+use super::ruled_surface::RuledSurface;
+use super::subdivide_options::SubdivisionSpace;
 use super::timing::Measure;
-use crate::congruence::{self, CongruenceScheme};
-use crate::tolerance::{MAX_CONGRUENCE_STEPS, MAX_PARTS, MAX_RULINGS};
+use crate::congruence::{self, focal, CongruenceScheme};
+use crate::line::Segment;
+use crate::tolerance::{MAX_CONGRUENCE_STEPS, MAX_PARTS, MAX_RULINGS, MAX_STRIDE};
+use glam::DVec3;
 use js_sys::{Float32Array, Float64Array};
 use serde::Deserialize;
 use tsify_next::Tsify;
@@ -93,6 +103,8 @@ impl LineCongruence {
 
 #[wasm_bindgen]
 impl LineCongruence {
+    // --- making one, and its lines
+
     /// A congruence from a Float64Array of 6 · rows · cols numbers (p then q per line, row by
     /// row). Throws for a length mismatch, fewer than 2 × 2 lines, more than 4 194 304,
     /// non-finite numbers or zero-length lines.
@@ -129,13 +141,6 @@ impl LineCongruence {
         Float64Array::from(self.inner.flat())
     }
 
-    /// The lines as 32-bit floats for a WebGL buffer.
-    #[wasm_bindgen(js_name = segmentsF32)]
-    pub fn segments_f32(&self) -> Float32Array {
-        let v: Vec<f32> = self.inner.flat().iter().map(|&x| x as f32).collect();
-        Float32Array::from(&v[..])
-    }
-
     /// Row i as a discrete ruled surface (Section 2's invariants apply).
     pub fn row(&self, #[wasm_bindgen(unchecked_param_type = "number")] i: JsValue) -> Result<RuledSurface, JsValue> {
         let i = integer("LineCongruence.row", "i", &i, 0, self.inner.rows() - 1)?;
@@ -147,6 +152,8 @@ impl LineCongruence {
         let j = integer("LineCongruence.column", "j", &j, 0, self.inner.cols() - 1)?;
         self.inner.column(j).map(RuledSurface::from_core).map_err(|e| fail("LineCongruence.column", e))
     }
+
+    // --- subdivision (Section 5)
 
     /// The refined congruence (see `CongruenceSubdivideOptions`): each step maps rows × cols
     /// to (2 rows − 1) × (2 cols − 1) with the old lines at even indices, unchanged.
@@ -222,6 +229,130 @@ impl LineCongruence {
                 ))
             }
         };
-        congruence::subdivide(&self.inner, scheme, steps).map(LineCongruence::from_core).map_err(|e| fail(F, e))
+        congruence::subdivide_congruence(&self.inner, scheme, steps)
+            .map(LineCongruence::from_core)
+            .map_err(|e| fail(F, e))
+    }
+
+    // --- focal geometry (beyond the paper)
+
+    /// The focal geometry of every line: focal points and parameters, kind, torsal
+    /// directions, middle points and normality (`FocalGeometry`), from the lines' Plücker
+    /// coordinates differenced over the grid (second order, at the boundary too).
+    #[wasm_bindgen(unchecked_return_type = "FocalGeometry")]
+    pub fn focal(&self) -> Result<JsValue, JsValue> {
+        let _measure = Measure::start("LineCongruence.focal");
+        let c = self.core();
+        focal_js("LineCongruence.focal", c.rows(), c.cols(), &focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()))
+    }
+
+    /// Focal sheet 1 (of t1) or 2 (of t2) as a mesh with vertex normals and the box of its drawn
+    /// vertices (`FocalSheetFigure`, as `focalGeometry().sheetF32(sheet)`): the grid's quads
+    /// whose four focal points are real and within three bounding-box diagonals of the lines'
+    /// centre.
+    #[wasm_bindgen(js_name = focalSheetF32, unchecked_return_type = "FocalSheetFigure")]
+    pub fn focal_sheet_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "1 | 2")] sheet: JsValue,
+    ) -> Result<JsValue, JsValue> {
+        let c = self.core();
+        sheet_figure("LineCongruence.focalSheetF32", c, &focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()), &sheet)
+    }
+
+    /// Strokes on the director surface d₁ along the real torsal directions, p ± scale·(du·p_i
+    /// + dv·p_j) (`scale` default 0.35 of a grid step), as f32 segments.
+    #[wasm_bindgen(js_name = torsalStrokesF32)]
+    pub fn torsal_strokes_f32(
+        &self,
+        #[wasm_bindgen(unchecked_optional_param_type = "number")] scale: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        let c = self.core();
+        strokes("LineCongruence.torsalStrokesF32", c, &focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()), &scale)
+    }
+
+    /// The focal geometry of every line, computed once, with the figures drawn from it
+    /// (`CongruenceFocal`): what `focal()`, `focalSheetF32` and `torsalStrokesF32` each compute
+    /// anew.
+    #[wasm_bindgen(js_name = focalGeometry)]
+    pub fn focal_geometry(&self) -> CongruenceFocal {
+        let _measure = Measure::start("LineCongruence.focalGeometry");
+        let c = self.core();
+        CongruenceFocal::new(c.clone(), focal::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()))
+    }
+
+    // --- buffers for WebGL
+
+    /// The lines as 32-bit floats for a WebGL buffer.
+    #[wasm_bindgen(js_name = segmentsF32)]
+    pub fn segments_f32(&self) -> Float32Array {
+        let v: Vec<f32> = self.inner.flat().iter().map(|&x| x as f32).collect();
+        Float32Array::from(&v[..])
+    }
+
+    /// The lines (i, j) with i or j not a multiple of `stride` (after k steps, 2^k: the
+    /// inserted lines), as f32 segments.
+    #[wasm_bindgen(js_name = insertedF32)]
+    pub fn inserted_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        let stride = integer("LineCongruence.insertedF32", "stride", &stride, 1, MAX_STRIDE)?;
+        Ok(segments_f32(&self.core().inserted(stride)))
+    }
+
+    /// The points of the director surface d₁ (`which` = 1, the p) or d₂ (2, the q), f32,
+    /// 3 per line, row-major: draw them as a rows × cols grid.
+    #[wasm_bindgen(js_name = directorF32)]
+    pub fn director_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] which: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        let which = integer("LineCongruence.directorF32", "which", &which, 1, 2)?;
+        Ok(points_f32(&if which == 1 { self.core().p() } else { self.core().q() }))
+    }
+
+    /// The points of d₁ (`which` = 1) or d₂ of the lines that `insertedF32(stride)` returns.
+    #[wasm_bindgen(js_name = insertedDirectorF32)]
+    pub fn inserted_director_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "number")] which: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        const F: &str = "LineCongruence.insertedDirectorF32";
+        let stride = integer(F, "stride", &stride, 1, MAX_STRIDE)?;
+        let which = integer(F, "which", &which, 1, 2)?;
+        let points: Vec<DVec3> =
+            self.core().inserted(stride).iter().map(|s| if which == 1 { s.a } else { s.b }).collect();
+        Ok(points_f32(&points))
+    }
+
+    // --- the linear complex, and the lines as data
+
+    /// The linear complex that fits the lines best.
+    #[wasm_bindgen(js_name = linearComplex, unchecked_return_type = "LinearComplexFit")]
+    pub fn linear_complex(
+        &self,
+        #[wasm_bindgen(unchecked_optional_param_type = "LinearComplexOptions")] options: JsValue,
+    ) -> Result<JsValue, JsValue> {
+        let c = self.core();
+        let segments: Vec<Segment> = (0..c.rows() * c.cols()).map(|k| c.line(k / c.cols(), k % c.cols())).collect();
+        complex_js("LineCongruence.linearComplex", &segments, options)
+    }
+
+    /// The lines as data: "json" (`{ "rows", "cols", "segments": [[…], …] }`), "csv" (row-major,
+    /// the grid shape is not kept) or "obj" (vertices and line elements).
+    pub fn export(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "\"csv\" | \"json\" | \"obj\"")] format: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "ExportOptions")] options: JsValue,
+    ) -> Result<String, JsValue> {
+        export(
+            "LineCongruence.export",
+            &format,
+            options,
+            self.core().flat(),
+            Some((self.core().rows(), self.core().cols())),
+            None,
+        )
     }
 }

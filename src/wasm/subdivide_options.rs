@@ -1,14 +1,11 @@
-//! Subdivision for JavaScript (Section 4): `surface.subdivide(options)`, `surface.recut()`,
-//! `subdividePolygon(points, options)` and `turningAngles(points, options)`.
+//! The options of the subdivision schemes (Section 4) as JavaScript passes them
+//! (`SubdivideOptions`), read into the core's scheme: for `RuledSurface.subdivide`,
+//! `subdividePolygon`, `turningAngles` and `ToolPath.refine`, and the `space` option of
+//! `LineCongruence.subdivide`. No JS class.
 
-use super::args::{self, fail, fail_option, finite_option, integer, integer_option, interval, numbers, only_for};
-use super::catalogue::AnalyticSurface;
-use super::surface::RuledSurface;
-use super::timing::Measure;
-use crate::ruled::surface::points_from_flat;
-use crate::subdivision::{self, Scheme, Variant};
-use crate::tolerance::{MAX_BSPLINE_DEGREE, MAX_PARTS, MAX_STRIDE, MAX_SUBDIVISION_STEPS};
-use js_sys::Float64Array;
+use super::args::{self, fail, fail_option, finite_option, integer_option, only_for};
+use crate::subdivision::{Scheme, Variant};
+use crate::tolerance::{MAX_BSPLINE_DEGREE, MAX_PARTS, MAX_SUBDIVISION_STEPS};
 use serde::Deserialize;
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
@@ -98,7 +95,7 @@ enum SubdivisionVariant {
 /// Where a scheme acts (`space` of the strip and congruence options).
 #[derive(Deserialize, Clone, Copy, Tsify)]
 #[serde(rename_all = "kebab-case", expecting = "\"points\" or \"lines\"")]
-pub(crate) enum SubdivisionSpace {
+pub(super) enum SubdivisionSpace {
     /// On the endpoints.
     Points,
     /// On the lines (dual unit vectors).
@@ -106,7 +103,7 @@ pub(crate) enum SubdivisionSpace {
 }
 
 /// Where a strip scheme acts: on the endpoints, or on the lines (with the output length).
-pub(crate) enum Space {
+pub(super) enum Space {
     Points,
     Lines(Option<f64>),
 }
@@ -114,7 +111,7 @@ pub(crate) enum Space {
 /// Reads `options` into a scheme, `closed`, `steps` and the space the scheme acts in;
 /// `default_scheme` stands in when `options.scheme` is absent (otherwise it is required), and
 /// then the options object may be left out.
-pub(crate) fn read(
+pub(super) fn read(
     func: &'static str,
     options: JsValue,
     default_scheme: Option<&str>,
@@ -164,100 +161,4 @@ pub(crate) fn read(
     scheme.validate().map_err(|e| fail(func, e))?;
     let steps = integer_option(func, "steps", o.steps, 0, MAX_SUBDIVISION_STEPS)?.unwrap_or(1);
     Ok((scheme, o.closed.unwrap_or(false), steps, space))
-}
-
-#[wasm_bindgen]
-impl RuledSurface {
-    /// The surface refined by a subdivision scheme (see `SubdivideOptions`). Interpolatory
-    /// schemes ("four-point", "variational") return 2N − 1 rulings per step (2N closed) with
-    /// the old ones at even indices, unchanged.
-    pub fn subdivide(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
-    ) -> Result<RuledSurface, JsValue> {
-        const F: &str = "RuledSurface.subdivide";
-        let _measure = Measure::start(F);
-        let (scheme, closed, steps, space) = read(F, options, None)?;
-        match space {
-            Space::Points => subdivision::subdivide_strip(self.core(), scheme, closed, steps),
-            Space::Lines(length) => {
-                subdivision::line_space::subdivide_lines(self.core(), scheme, closed, steps, length)
-            }
-        }
-        .map(RuledSurface::from_core)
-        .map_err(|e| fail(F, e))
-    }
-
-    /// The rulings re-cut to segments of one length (default: the mean length), centred on
-    /// the striction points: for data given as lines, before subdividing.
-    pub fn recut(
-        &self,
-        #[wasm_bindgen(unchecked_optional_param_type = "number")] length: JsValue,
-    ) -> Result<RuledSurface, JsValue> {
-        const F: &str = "RuledSurface.recut";
-        let length = if length.is_undefined() { None } else { Some(args::number(F, "length", &length)?) };
-        subdivision::recut(self.core(), length).map(RuledSurface::from_core).map_err(|e| fail(F, e))
-    }
-}
-
-/// A polygon (3 numbers per point) refined by a curve scheme (see `SubdivideOptions`;
-/// "variational" is for ruled strips only).
-#[wasm_bindgen(js_name = subdividePolygon)]
-pub fn subdivide_polygon(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
-    #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
-) -> Result<Float64Array, JsValue> {
-    const F: &str = "subdividePolygon";
-    let _measure = Measure::start(F);
-    let flat = numbers(F, "points", &points)?;
-    let points = points_from_flat(&flat).map_err(|e| fail(F, e))?;
-    let (scheme, closed, steps, space) = read(F, options, None)?;
-    if matches!(space, Space::Lines(_)) {
-        return Err(fail(F, "options.space \"lines\" refines ruled surfaces, not polygons"));
-    }
-    let out = subdivision::subdivide_polygon(&points, scheme, closed, steps).map_err(|e| fail(F, e))?;
-    Ok(Float64Array::from(bytemuck::cast_slice::<_, f64>(&out)))
-}
-
-/// The largest turning angle (radians, 0 … π: the largest angle between an edge and the
-/// next) of a polygon (3 numbers per point) and of each of its refinements by a curve scheme
-/// (see `SubdivideOptions`; "variational" is for ruled strips only): `steps + 1` numbers, the
-/// first for the polygon itself. Where the limit is a regular C¹ curve the polygons turn less
-/// and less from step to step; where the angle stops falling the limit has a corner or a cusp,
-/// or is approached slowly.
-#[wasm_bindgen(js_name = turningAngles)]
-pub fn turning_angles(
-    #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
-    #[wasm_bindgen(unchecked_param_type = "SubdivideOptions")] options: JsValue,
-) -> Result<Float64Array, JsValue> {
-    const F: &str = "turningAngles";
-    let flat = numbers(F, "points", &points)?;
-    let points = points_from_flat(&flat).map_err(|e| fail(F, e))?;
-    let (scheme, closed, steps, space) = read(F, options, None)?;
-    if matches!(space, Space::Lines(_)) {
-        return Err(fail(F, "options.space \"lines\" refines ruled surfaces, not polygons"));
-    }
-    let out = subdivision::turning::turning_angles(&points, scheme, closed, steps).map_err(|e| fail(F, e))?;
-    Ok(Float64Array::from(&out[..]))
-}
-
-#[wasm_bindgen]
-impl AnalyticSurface {
-    /// Largest distance from this surface of the rulings of `refined` whose index is not a
-    /// multiple of `stride` (the inserted ones), sampled at 9 points each; `refined` was
-    /// refined from a sampling of the parameter interval [uMin, uMax].
-    #[wasm_bindgen(js_name = insertedDistance)]
-    pub fn inserted_distance(
-        &self,
-        refined: &RuledSurface,
-        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
-        #[wasm_bindgen(unchecked_param_type = "number")] u_min: JsValue,
-        #[wasm_bindgen(unchecked_param_type = "number")] u_max: JsValue,
-    ) -> Result<f64, JsValue> {
-        const F: &str = "AnalyticSurface.insertedDistance";
-        let stride = integer(F, "stride", &stride, 2, MAX_STRIDE)?;
-        let (u_min, u_max) = interval(F, &u_min, &u_max)?;
-        let which = (0..refined.length()).filter(|i| i % stride != 0);
-        Ok(crate::subdivision::accuracy::max_distance(self.core(), refined.core(), u_min, u_max, which))
-    }
 }
