@@ -11,8 +11,9 @@
 //!
 //! The core is pure Rust on `f64` and glam's `DVec3`; it knows nothing of JavaScript. The
 //! WebAssembly bindings live in `wasm` (compiled for wasm32 only) and take and return
-//! flat typed arrays. Conventions and corrections to the paper: `ERRATA.md` of the paper
-//! notes, summarised in each module's documentation.
+//! flat typed arrays. The conventions ruledlab keeps and its corrections of the paper, with
+//! the equation numbers, are in `docs/src/conventions.md` (the book's page "Conventions"), which
+//! each module's documentation cites.
 //!
 //! The crate's modules are private; this page is the public surface, grouped below by the
 //! paper's sections. How the modules depend on each other (a tree: shared vocabulary at the

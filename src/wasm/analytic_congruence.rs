@@ -110,7 +110,7 @@ impl AnalyticCongruence {
     // --- grids of its lines, and how far refined grids are from it
 
     /// A rows × cols grid of its lines (default: the paper's grid size), each the segment
-    /// from p to p + reach·d (`reach` default 1: the paper gives no length, ERRATA.md 9;
+    /// from p to p + reach·d (`reach` default 1: the paper gives no length: docs/src/conventions.md, choices;
     /// shorter segments are the same lines, and every scheme refines them to the same lines).
     pub fn grid(
         &self,

@@ -202,7 +202,7 @@ pub fn required<T: DeserializeOwned>(
     })
 }
 
-/// serde's messages in the words of the README: "expected a number, got the string \"x\"",
+/// serde's messages in the words of the book's chapter on errors: "expected a number, got the string \"x\"",
 /// not "invalid type: string `x`, expected f64".
 fn plain_words(message: &str) -> String {
     let message = message.strip_prefix("Error: ").unwrap_or(message);

@@ -14,7 +14,7 @@ use serde::Serialize;
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
-/// The focal geometry of every line of a congruence (README, "Focal geometry"): a line runs
+/// The focal geometry of every line of a congruence (docs/src/guide/focal.md): a line runs
 /// p → q, e = (q − p)/|q − p|, a point on it is p + t·e. Per line, row-major.
 #[derive(Serialize, Tsify)]
 struct FocalGeometry {

@@ -9,7 +9,7 @@ use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
 /// Options of `ToolPath.export("gcode", …)` and `ToolPath.post`: the controller, the machine,
-/// the feeds and the safe moves (README, "For CAM"). Every option is optional.
+/// the feeds and the safe moves (docs/src/cam/gcode.md). Every option is optional.
 #[derive(Deserialize, Default, Tsify)]
 #[serde(default, rename_all = "camelCase")]
 struct GcodeOptions {

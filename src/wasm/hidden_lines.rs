@@ -174,7 +174,7 @@ fn points(what: &str, positions: &JsValue, transform: &JsValue) -> Result<Vec<DV
 
 /// The visible and hidden runs of a figure's lines behind its meshes, for the camera given by
 /// `figure.viewProj` on a `figure.width` × `figure.height` viewport: each set of lines comes
-/// back as runs of pixel positions, each seen or hidden (README, "Figures for lecture notes").
+/// back as runs of pixel positions, each seen or hidden (docs/src/teaching/figures.md).
 #[wasm_bindgen(js_name = hiddenLines, unchecked_return_type = "HiddenLines")]
 pub fn hidden_lines(
     #[wasm_bindgen(unchecked_param_type = "HiddenLineFigure")] figure: JsValue,

@@ -392,11 +392,11 @@ impl ToolPath {
         }
     }
 
-    // --- G-code and data (README, "For CAM")
+    // --- G-code and data (docs/src/cam/gcode.md)
 
     /// The path as text: "json" or "csv" (poses, full precision), or "gcode": a program for a
-    /// five-axis controller (see `GcodeOptions`; what it assumes in the file's header and the
-    /// README's "For CAM").
+    /// five-axis controller (see `GcodeOptions`; what it assumes is said in the program's header
+    /// and in docs/src/cam/gcode.md).
     pub fn export(
         &self,
         #[wasm_bindgen(unchecked_param_type = "\"json\" | \"csv\" | \"gcode\"")] format: JsValue,

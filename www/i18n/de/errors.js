@@ -1,4 +1,4 @@
-// Die Fehlergründe des Kerns (src/error/message.rs, CATALOGUE) auf Deutsch, nach dem Feld, das
+// Die Fehlergründe des Kerns (src/error/message.rs, MESSAGES) auf Deutsch, nach dem Feld, das
 // sie betreffen („z-Komponente von e(u): Die Formel endet, wo ein Operand erwartet wird
 // (Spalte 3).“); ui/errors.js setzt sie aus details.reason und details.args zusammen.
 // tests/node/messages.test.mjs verlangt für jeden Grund einen Text mit denselben Platzhaltern.

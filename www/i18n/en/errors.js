@@ -1,4 +1,4 @@
-// English texts of the core's error reasons (src/error/message.rs, CATALOGUE) as the page says
+// English texts of the core's error reasons (src/error/message.rs, MESSAGES) as the page says
 // them, after the field they concern ("the z component of e(u): the formula ends where an
 // operand is expected (column 3)"): built by ui/errors.js from details.reason and
 // details.args. tests/node/messages.test.mjs requires a text for every reason, in every
