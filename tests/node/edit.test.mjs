@@ -31,7 +31,7 @@ import {
   transformPoint,
 } from '../../www/edit/geometry.js';
 import { OrbitCamera } from '../../www/camera.js';
-import { coordinates } from '../../www/edit/editor.js';
+import { coordinates } from '../../www/edit/marks.js';
 
 const i18n = translator('en');
 const context = { t: i18n.t, format: i18n.format, lang: 'en' };
