@@ -12,8 +12,8 @@
 //! footpoints of ruling i project to consecutive corners of the envelope polygon on the
 //! projected ruling i, so the image of m_i is the midpoint of that edge.
 //!
-//! The conoidal rulings lie at heights H_i = Σ_{k<i} h_{k,k+1} along n_{0,1} (docs/src/conventions.md, Section 3);
-//! the *non-developability measure* is max H_i − min H_i, the "height" of the conoidal
+//! The conoidal rulings lie at heights ζ_i = Σ_{k<i} h_{k,k+1} along n_{0,1} (docs/src/conventions.md, Section 3);
+//! the *non-developability measure* is max ζ_i − min ζ_i, the "height" of the conoidal
 //! model. It is 0 for a cone or a cylinder and O(H²) for a sampled tangent surface.
 
 use crate::ruled::{HingeChain, RuledSurface};
@@ -73,7 +73,7 @@ pub struct Development {
     pub conoidal: RuledSurface,
     /// Images of a_0, b_0, a_1, b_1, … in the plane.
     pub points: Vec<DVec2>,
-    /// Height H_i of each conoidal ruling along n_{0,1}, relative to R_0.
+    /// Height ζ_i of each conoidal ruling along n_{0,1}, relative to R_0.
     pub heights: Vec<f64>,
 }
 
@@ -91,7 +91,7 @@ impl Development {
         Development { conoidal, points, heights }
     }
 
-    /// max H_i − min H_i: how far the surface is from developable (0 when developable).
+    /// max ζ_i − min ζ_i: how far the surface is from developable (0 when developable).
     pub fn non_developability(&self) -> f64 {
         let (lo, hi) =
             self.heights.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| (lo.min(h), hi.max(h)));

@@ -11,7 +11,7 @@ import { PRESETS } from '../../www/paper.js';
 import { defaults } from '../../www/scene.js';
 import { translator } from '../../www/i18n/index.js';
 import { STYLES } from '../../www/theme.js';
-import { ROUNDING } from '../../www/limits.js';
+import { ROUNDING, TURNING_FROM, TURNING_STEPS } from '../../www/limits.js';
 
 const i18n = translator('en');
 const context = { t: i18n.t, format: i18n.format };
@@ -146,7 +146,7 @@ test('Example 5: read literally (and coupled), K has no effect — every K from 
   }
 });
 
-test('milling (Example 6): refining helps; with 7 poses or more the variational schemes come closest to the profile', () => {
+test('milling (Example 6): refining helps; with 7 poses or more the variational schemes come closest to the profile; the midpoint rule turns in the smallest steps but least evenly, the averaged scheme most evenly (4–12 poses, 1–3 steps)', () => {
   const seen = checkClaims('milling', {
     poses: range(4, 12),
     steps: [0, 1, 2, 3],
@@ -154,7 +154,7 @@ test('milling (Example 6): refining helps; with 7 poses or more the variational 
     envelope: [false],
     part: [false],
   });
-  assert.deepEqual([...seen].sort(), ['milling.claim.refined', 'milling.claim.variational']);
+  assert.deepEqual([...seen].sort(), ['milling.claim.refined', 'milling.claim.turns', 'milling.claim.variational']);
 });
 
 test('Fig. 5: the caption fails at 45° (ρ = r + p tan β = 1.4) and holds in the limit orthogonal to the striction helix (ρ → 0 as H²)', () => {
@@ -189,4 +189,44 @@ test('every legend entry that says “dashed” or “dash-dot” is drawn dashe
     }
   }
   assert.ok(checked >= 8, `only ${checked} dashed legend entries`);
+});
+
+test('curves: the text’s turning angles at w = 0.17 (closed) after four step counts are what the core measures, and they do not fall steadily', () => {
+  const scene = sceneOf('curves');
+  const steps = [TURNING_FROM - 2, TURNING_FROM, TURNING_STEPS - 2, TURNING_STEPS];
+  // the scene's own polygon, as its handles hold it (f64)
+  const polygon = /** @type {any} */ (scene.create({ ...defaults(scene), steps: 0 }, context)).input.sets[0].points;
+  const angles = ruledlab.turningAngles(polygon, { scheme: 'four-point', steps: TURNING_STEPS, closed: true, w: 0.17 });
+  const said = steps.map((k) => angles[k].toFixed(2));
+  assert.deepEqual(said, ['1.15', '1.04', '1.19', '1.00']);
+  assert.ok(angles[steps[2]] > angles[steps[1]], 'the angle rises from the second to the third count: it oscillates');
+  for (const lang of ['en', 'de']) {
+    const text = translator(lang).t('curves.text');
+    const words = lang === 'en' ? said : said.map((x) => x.replace('.', ','));
+    const numbers = `${words.slice(0, -1).join(', ')} ${lang === 'en' ? 'and' : 'und'} ${words.at(-1)}`;
+    assert.ok(text.includes(numbers), `${lang}: curves.text does not say ${numbers}`);
+  }
+});
+
+test('the four-point scheme is C¹ at w = 0.18, beyond (√5 − 1)/8, as the text says the sharp bound 0.19273 allows: the scheme of the divided differences contracts in 16 steps', () => {
+  // a(z) of (8), and c(z) = 2a(z)/(1 + z)², the scheme of the differences of the divided
+  // differences; S_a is C¹ when ‖S_c^k‖_∞ < 1 for some k (Dyn's criterion)
+  const contraction = (/** @type {number} */ w, /** @type {number} */ k) => {
+    const c = [-2 * w, 4 * w, 1 - 4 * w, 4 * w, -2 * w];
+    let m = Float64Array.from(c);
+    for (let level = 1; level < k; level++) {
+      const s = 2 ** level;
+      const next = new Float64Array(m.length + (c.length - 1) * s);
+      for (let j = 0; j < c.length; j++) for (let i = 0; i < m.length; i++) next[j * s + i] += c[j] * m[i];
+      m = next;
+    }
+    const period = 2 ** k;
+    const sums = new Float64Array(period);
+    for (let i = 0; i < m.length; i++) sums[i % period] += Math.abs(m[i]);
+    return sums.reduce((a, b) => Math.max(a, b), 0) ** (1 / k);
+  };
+  assert.ok(contraction(0.18, 16) < 0.98);
+  // at w = 1/16 (cubic precision) the rate tends to 1/2 from above
+  const cubic = contraction(1 / 16, 16);
+  assert.ok(cubic > 0.5 && cubic < 0.61, String(cubic));
 });

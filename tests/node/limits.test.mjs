@@ -67,7 +67,7 @@ const REFERENCE =
 /**
  * The numbers a text writes (markup, MathML and references to the paper left out), in the
  * language's notation: "65,536" and "10 000" grouped, "0,17" a decimal in German, "1e12", and
- * "64 KiB" as 65536.
+ * "64 KiB" as 65536; the base of a power ("10⁻³") is no number of its own.
  * @param {string} text
  * @param {string} lang
  * @returns {Array<{value: number, written: string}>}
@@ -81,7 +81,7 @@ function numbersIn(text, lang) {
     .replace(REFERENCE, ' ');
   const esc = (/** @type {string} */ c) => `\\${c}`;
   const number = new RegExp(
-    `(?<![\\w${esc(group)}${esc(point)}/^])(\\d{1,3}(?:[${esc(group)} \\u00a0\\u2009\\u202f]\\d{3})+(?!\\d)|\\d+)(?:${esc(point)}(\\d+))?(?:e(-?\\d+))?(\\s*KiB)?(?![\\d/])`,
+    `(?<![\\w${esc(group)}${esc(point)}/^])(\\d{1,3}(?:[${esc(group)} \\u00a0\\u2009\\u202f]\\d{3})+(?!\\d)|\\d+)(?:${esc(point)}(\\d+))?(?:e(-?\\d+))?(\\s*KiB)?(?![\\d/⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺^])`,
     'g',
   );
   return [...plain.matchAll(number)].map((m) => {
@@ -193,6 +193,7 @@ test('the text check finds a retyped limit in every notation, and passes referen
   assert.equal(found('after 12 steps').length, 1);
   assert.equal(found('a step of 0,02', 'de').length, 1);
   assert.deepEqual(found('Fig. 12, Figs. 11–12, (12), Example 12, 0.200, 1/12, R_12, 2000'), []);
+  assert.deepEqual(found('1.89·10⁻³, 10^3'), []);
   assert.deepEqual(found('n = 12 rulings', 'en', 'strip.describe'), []);
   assert.deepEqual(found('0,2 und 12,5', 'de'), []);
 });

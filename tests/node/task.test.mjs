@@ -1,15 +1,15 @@
-// Exercises (issue 28): the format read and refused as documented, every built-in exercise fits
+// Exercises: the format read and refused as documented, every built-in exercise fits
 // its scene, is not solved at its start and is solved by its solution state — checked by the same
 // code the page checks with, on what the core computes.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import './load.mjs';
+import ruledlab from './load.mjs';
 import { SCENES } from '../../www/scenes/index.js';
 import { defaults, withChoices } from '../../www/scene.js';
 import { translator } from '../../www/i18n/index.js';
 import { decodeInput } from '../../www/edit/input.js';
 import { readTask, writeTask, taskFromLink, taskLink, TaskError } from '../../www/task/format.js';
-import { checkGoal, fitTask, answerNumber, measuresOf } from '../../www/task/check.js';
+import { checkGoal, fitTask, answerNumber, measuresOf, unreadable } from '../../www/task/check.js';
 import { outcomeText } from '../../www/task/words.js';
 import { builtInTasks, builtInTask } from '../../www/task/builtin.js';
 
@@ -303,4 +303,83 @@ test('an exercise that does not fit its scene is refused: unknown scene, paramet
       `${JSON.stringify(x).slice(0, 100)} → ${reason}`,
     );
   }
+});
+
+test('"What bending keeps": the δ the student reads is δ of the surface, not discretisation error (its sign and size as the exact δ at the pair)', () => {
+  const task = /** @type {import('../../www/task/format.js').Task} */ (builtInTask('minding-delta'));
+  const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === task.scene));
+  const built = scene.create(withChoices(scene, task.params), { t: i18n.t, format: i18n.format });
+  const shown = /** @type {number} */ (built.measures?.['isometry.deltaMiddle']);
+  // the middle pair of the n rulings shown, and the exact δ(u) at its middle
+  const analytic = ruledlab.AnalyticSurface.byName(String(task.params.surface));
+  try {
+    const n = Number(task.params.n);
+    // the scene samples the hyperboloid on u ∈ [0, 2.4] (scenes/isometry.js)
+    const u = analytic.parameters(n, { uMin: 0, uMax: 2.4, closed: false });
+    const middle = Math.floor((n - 2) / 2);
+    const exact = analytic.distribution(Float64Array.of((u[middle] + u[middle + 1]) / 2))[0];
+    assert.ok(Math.abs(exact) > 0.5, `exact δ ${exact} is far from 0`);
+    assert.ok(Math.sign(shown) === Math.sign(exact) && Math.abs(shown - exact) < 0.05 * Math.abs(exact), `shown ${shown}, exact ${exact}`);
+  } finally {
+    analytic.free();
+  }
+});
+
+test('"A close scheme in one step": exactly the two butterfly variants pass, and the hints say so', () => {
+  const task = /** @type {import('../../www/task/format.js').Task} */ (builtInTask('congruence-scheme'));
+  const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === task.scene));
+  const schemes = /** @type {any} */ (scene.params.find((p) => p.key === 'scheme')).options().map((/** @type {string[]} */ o) => o[0]);
+  const passing = schemes.filter((/** @type {string} */ scheme) => check(task, { params: { scheme } }).solved);
+  assert.deepEqual(passing.sort(), ['butterfly', 'diagonal']);
+  assert.ok(task.hints.some((h) => /both butterfly variants pass/i.test(h.en)));
+});
+
+test('a number the page writes is read where the page asks for one: the readout’s own format in each language, powers of ten, groups of three', () => {
+  for (const lang of ['en', 'de']) {
+    const { format } = translator(lang);
+    for (const x of [0.0018915497, -1.7110714, 12345.678, 1.5e-7, 250000, -3, 0.5])
+      assert.equal(
+        Number(answerNumber(format(x), lang).toPrecision(3)),
+        Number(x.toPrecision(3)),
+        `${lang}: ${format(x)} is read as ${answerNumber(format(x), lang)}`,
+      );
+  }
+  assert.equal(answerNumber('1,89·10⁻³', 'de'), 0.00189);
+  assert.equal(answerNumber('1.89·10⁻³', 'en'), 0.00189);
+  assert.equal(answerNumber('1.89 × 10^-3', 'en'), 0.00189);
+  assert.equal(answerNumber('1.89e−3', 'en'), 0.00189);
+  assert.equal(answerNumber('250,000', 'en'), 250000);
+  assert.equal(answerNumber('250.000', 'de'), 250000);
+  assert.equal(answerNumber('0,5', 'en'), 0.5);
+  assert.equal(answerNumber('0.5', 'de'), 0.5);
+  for (const bad of ['1,89·10', '10⁻', '1..2', '1·10^1.5', 'e-3', '·10⁻³'])
+    assert.ok(Number.isNaN(answerNumber(bad, 'en')), `${bad} is not a number`);
+});
+
+test('an answer that cannot be read is said with how to write it, and the check does not count', () => {
+  const task = readTask(
+    JSON.stringify({
+      ruledlab: 'exercise',
+      version: 1,
+      id: 'typed',
+      title: { en: 'Typed' },
+      prompt: { en: 'δ(u)?' },
+      scene: 'striction',
+      params: { surface: 'quartic' },
+      answers: [
+        { id: 'x', kind: 'number', label: { en: 'a number' } },
+        { id: 'f', kind: 'function', label: { en: 'δ(u)' } },
+      ],
+      goal: [
+        { answer: 'x', near: 1, within: 0.1 },
+        { answer: 'f', matches: 'distribution', within: 1e-6 },
+      ],
+    }),
+  );
+  const outcomes = check(task, { answers: { x: 'one', f: '1+u²' } }).outcomes;
+  assert.deepEqual(outcomes.map(unreadable), [true, true]);
+  // the formula's message says how to write the square
+  assert.match(outcomeText(outcomes[1], i18n, task), /u\^2|\^/);
+  const readable = check(task, { answers: { x: '1,05', f: '1+u^2' } }).outcomes;
+  assert.deepEqual(readable.map(unreadable), [false, false]);
 });

@@ -14,6 +14,21 @@ const SCHEMES = {
   linear: { scheme: 'bspline', degree: 1 },
 };
 
+/**
+ * Whether the schemes turn the tool as the text says: the midpoint rule in the smallest largest
+ * steps (it halves each turn) but least evenly (the largest second difference), the averaged
+ * variational scheme most evenly (the smallest second difference).
+ * @param {Record<string, {maxAngleStep: number, maxSecondDifference: number}>} turns   per scheme
+ */
+function turnsAsSaid(turns) {
+  const others = Object.entries(turns).filter(([k]) => k !== 'linear');
+  const { linear, averaged } = turns;
+  return (
+    others.every(([, q]) => linear.maxAngleStep < q.maxAngleStep && linear.maxSecondDifference > q.maxSecondDifference) &&
+    others.every(([k, q]) => k === 'averaged' || averaged.maxSecondDifference < q.maxSecondDifference)
+  );
+}
+
 /** Largest |deviation| of the machined surface from the target profile. */
 function maxDeviation(
   /** @type {import('../../pkg/ruledlab.js').ToolPath} */ path,
@@ -82,12 +97,18 @@ export const scene = defineScene({
       const profile = imported ? null : ToolPath.exampleProfile(400);
       const deviation = profile ? maxDeviation(refined, profile) : Number.NaN;
       const quality = refined.quality();
-      // every scheme's deviation at these steps, for the comparison the text makes (and its claim)
+      // every scheme's deviation and orientation at these steps, for the comparisons the text
+      // makes (and their claims)
       /** @type {Record<string, number>} */
       const compare = {};
+      /** @type {Record<string, {maxAngleStep: number, maxSecondDifference: number}>} */
+      const turns = {};
       if (profile)
-        for (const [k, o] of Object.entries(SCHEMES))
-          compare[k] = maxDeviation(own(path.refine({ ...o, steps })), profile);
+        for (const [k, o] of Object.entries(SCHEMES)) {
+          const other = own(path.refine({ ...o, steps }));
+          compare[k] = maxDeviation(other, profile);
+          turns[k] = other.quality();
+        }
       const given0 = profile ? maxDeviation(path, profile) : Number.NaN;
       const centres = refined.barycentres();
       /** @type {import('../scene.js').Layer[]} */
@@ -154,6 +175,14 @@ export const scene = defineScene({
                     {
                       text: 'milling.claim.refined',
                       holds: Math.max(compare.variational, compare.averaged, compare['four-point']) < given0,
+                    },
+                  ]
+                : []),
+              ...(steps > 0 && profile
+                ? [
+                    {
+                      text: 'milling.claim.turns',
+                      holds: turnsAsSaid(turns),
                     },
                   ]
                 : []),

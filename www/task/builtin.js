@@ -94,7 +94,9 @@ const RAW = [
       de: 'Die Messwerte zeigen δ des mittleren Paares von Erzeugenden dieser Fläche. Welchen Wert hat δ dieses Paares, wenn die Fläche zu ihrem konoidalen Modell verbogen ist (t = 1)? Geben Sie Ihre Vorhersage ein.',
     },
     scene: 'isometry',
-    params: { surface: 'quartic', layout: 'bend', n: 24, t: 0 },
+    // the hyperboloid of Example 1: δ of the middle pair is far from 0 (the quartic's middle pair
+    // straddles its torsal ruling u = 0, where δ ≤ 0 vanishes, and shows only discretisation error)
+    params: { surface: 'hyperboloid', layout: 'bend', n: 24, t: 0 },
     change: [],
     answers: [{ id: 'delta', kind: 'number', label: { en: 'δ after bending', de: 'δ nach dem Verbiegen' } }],
     goal: [{ answer: 'delta', near: { value: 'isometry.deltaBentMiddle' }, within: 2e-4 }],
@@ -104,11 +106,11 @@ const RAW = [
         de: 'Eine diskrete Minding-Isometrie (Abschnitt 3) bewegt jedes Paar aufeinanderfolgender Erzeugender samt gemeinsamem Lot als starren Körper; die Körper drehen sich um die Erzeugenden als Gelenke. Was bleibt von dem Paar erhalten?',
       },
       {
-        en: 'It keeps the angle φ and the distance h of consecutive rulings, so δ = h/φ stays what it is.',
-        de: 'Sie erhält den Winkel φ und den Abstand h aufeinanderfolgender Erzeugender, also bleibt δ = h/φ, wie es ist.',
+        en: 'It keeps the angle φ and the signed distance h of consecutive rulings, so δ = h/φ stays what it is.',
+        de: 'Sie erhält den Winkel φ und den vorzeichenbehafteten Abstand h aufeinanderfolgender Erzeugender, also bleibt δ = h/φ, wie es ist.',
       },
     ],
-    solution: { answers: { delta: 0.0018915 } },
+    solution: { answers: { delta: -1.7110714 } },
   },
   {
     id: 'developable-cone',
@@ -159,7 +161,7 @@ const RAW = [
     title: { en: 'When coupling pays', de: 'Wann sich die Kopplung lohnt' },
     prompt: {
       en: 'ruledlab’s coupled energy (beyond the paper: read literally, (13)–(15) give the midpoint rule) inserts rulings into Example 3’s quartic surface. For large n, the number of parts of each segment, it comes closer to the exact surface than the midpoint rule — but not for every n. What is the smallest n for which the coupled scheme’s inserted rulings are closer to the surface than the midpoint rule’s?',
-      de: 'ruledlabs gekoppelte Energie (über die Arbeit hinaus: wörtlich gelesen ergeben (13)–(15) die Mittelpunktsregel) fügt Erzeugende in die quartische Fläche aus Beispiel 3 ein. Für großes n, die Zahl der Teile jeder Strecke, kommt sie der exakten Fläche näher als die Mittelpunktsregel – aber nicht für jedes n. Für welches kleinste n liegen die vom gekoppelten Verfahren eingefügten Erzeugenden näher an der Fläche als die der Mittelpunktsregel?',
+      de: 'ruledlabs gekoppelte Energie (über die Arbeit hinaus: wörtlich gelesen ergeben (13)–(15) die Mittelpunktsregel) fügt Erzeugende in die quartische Fläche aus Beispiel 3 ein. Für großes n, die Zahl der Teile jeder Strecke, kommt sie der exakten Fläche näher als die Mittelpunktsregel – aber nicht für jedes n. Für welches kleinste n liegen die vom gekoppelten Schema eingefügten Erzeugenden näher an der Fläche als die der Mittelpunktsregel?',
     },
     scene: 'strip',
     params: { scheme: 'coupled', n: 3, exact: true },
@@ -171,7 +173,7 @@ const RAW = [
     hints: [
       {
         en: 'The readout lists every scheme’s distance from the quartic at this n.',
-        de: 'Die Messwerte nennen bei diesem n den Abstand jedes Verfahrens von der quartischen Fläche.',
+        de: 'Die Messwerte nennen bei diesem n den Abstand jedes Schemas von der quartischen Fläche.',
       },
       { en: 'Try n = 3, 4, 5, … in turn.', de: 'Versuchen Sie n = 3, 4, 5, … der Reihe nach.' },
     ],
@@ -179,10 +181,10 @@ const RAW = [
   },
   {
     id: 'congruence-scheme',
-    title: { en: 'A close scheme in one step', de: 'Ein genaues Verfahren in einem Schritt' },
+    title: { en: 'A close scheme in one step', de: 'Ein genaues Schema in einem Schritt' },
     prompt: {
       en: 'Refine the congruence of Example 5 once. Choose a scheme whose inserted lines make an angle of less than 10⁻³ rad with the exact congruence’s lines.',
-      de: 'Verfeinern Sie die Kongruenz aus Beispiel 5 einmal. Wählen Sie ein Verfahren, dessen eingefügte Geraden mit den Geraden der exakten Kongruenz einen Winkel unter 10⁻³ rad einschließen.',
+      de: 'Verfeinern Sie die Kongruenz aus Beispiel 5 einmal. Wählen Sie ein Schema, dessen eingefügte Geraden mit den Geraden der exakten Kongruenz einen Winkel unter 10⁻³ rad einschließen.',
     },
     scene: 'congruence',
     params: { congruence: 'example5', scheme: 'paper', steps: 1 },
@@ -199,13 +201,18 @@ const RAW = [
     hints: [
       {
         en: 'The variational schemes minimise an energy of the new lines; the butterfly scheme (16) averages the neighbouring lines’ points on the two director surfaces with fixed weights.',
-        de: 'Die Variationsverfahren minimieren eine Energie der neuen Geraden; das Butterfly-Verfahren (16) mittelt die Punkte der Nachbargeraden auf den beiden Leitflächen mit festen Gewichten.',
+        de: 'Die variationellen Schemata minimieren eine Energie der neuen Geraden; das Butterfly-Schema (16) mittelt die Punkte der Nachbargeraden auf den beiden Leitflächen mit festen Gewichten.',
       },
       {
         en: 'Try each scheme and watch the angle in the readout.',
-        de: 'Probieren Sie jedes Verfahren und beobachten Sie den Winkel in den Messwerten.',
+        de: 'Probieren Sie jedes Schema und beobachten Sie den Winkel in den Messwerten.',
+      },
+      {
+        en: 'Both butterfly variants pass, on purpose: on Example 5 the largest angle is that of the lines (16) inserts on the diagonals, which the two share; the variational schemes miss by 5·10⁻³ rad or more.',
+        de: 'Beide Varianten des Butterfly-Schemas bestehen, mit Absicht: Auf Beispiel 5 ist der größte Winkel der der Geraden, die (16) auf den Diagonalen einfügt, und die haben beide gemeinsam; die variationellen Schemata verfehlen um 5·10⁻³ rad oder mehr.',
       },
     ],
+    // either butterfly variant (all edges, or the diagonals only) is a solution
     solution: { params: { scheme: 'butterfly' } },
   },
   {

@@ -37,12 +37,51 @@ export function measuresOf(/** @type {import('../scene.js').Built | null} */ bui
   return values;
 }
 
-/** A number as a reader types it ("0,5" in German, "1/3", "−2"), NaN when it is not one. */
-export function answerNumber(/** @type {string} */ text) {
-  const t = String(text).trim().replace('−', '-').replace(',', '.');
-  const fraction = /^([+-]?\d+(?:\.\d*)?)\s*\/\s*(\d+(?:\.\d*)?)$/.exec(t);
-  if (fraction) return Number(fraction[1]) / Number(fraction[2]);
+/** Superscript digits and signs, as the readout writes a power of ten ("10⁻³"). */
+const SUPERSCRIPTS = /** @type {Record<string, string>} */ ({
+  '⁰': '0', '¹': '1', '²': '2', '³': '3', '⁴': '4', '⁵': '5', '⁶': '6', '⁷': '7', '⁸': '8', '⁹': '9', '⁻': '-', '⁺': '+',
+});
+
+/**
+ * A number as a reader types it, or as the page writes it, in the page's language `lang`: "0.25"
+ * and "0,25" (either decimal sign), "1/3", "−2", groups of three as the language writes them
+ * ("250,000"; German "250.000"), and a power of ten as the readout writes it ("1.89·10⁻³",
+ * "1,89·10⁻³", "1.89×10^-3", "1.89e-3"). NaN when it is not one.
+ * @param {string} text @param {string} [lang]
+ */
+export function answerNumber(text, lang = 'en') {
+  const t = String(text)
+    .trim()
+    .replace(/[\u2212\u2012\u2013]/g, '-')
+    .replace(/[\s\u00a0\u202f\u2009]/g, '');
+  const fraction = /^([+-]?[\d.,]+)\/([\d.,]+)$/.exec(t);
+  if (fraction) return decimal(fraction[1], lang) / decimal(fraction[2], lang);
+  const power = /^([+-]?[\d.,]+)(?:[·⋅×*x]10(?:\^|\*\*)?\(?([+-]?\d+|[⁺⁻]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)\)?)$/.exec(t);
+  if (power) {
+    const exponent = Number(power[2].replace(/[⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻]/g, (c) => SUPERSCRIPTS[c]));
+    const mantissa = decimal(power[1], lang);
+    return Number.isInteger(exponent) ? Number(`${mantissa}e${exponent}`) : Number.NaN;
+  }
+  return decimal(t, lang);
+}
+
+/** A decimal number in `lang`'s writing or with the other decimal sign, or with an exponent ("e-3"). */
+function decimal(/** @type {string} */ text, /** @type {string} */ lang) {
+  const [group, point] = lang === 'de' ? ['.', ','] : [',', '.'];
+  const grouped = new RegExp(`^[+-]?\\d{1,3}(\\${group}\\d{3})+(\\${point}\\d*)?$`);
+  const t = (grouped.test(text) ? text.split(group).join('') : text).replace(',', '.');
   return /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i.test(t) ? Number(t) : Number.NaN;
+}
+
+/**
+ * Whether a condition could not be checked because an answer could not be read (a number that is
+ * not one, a formula the core refused): the check is shown with how to write it, but it does not
+ * count as an attempt.
+ * @param {Outcome} outcome
+ */
+export function unreadable(outcome) {
+  const e = /** @type {any} */ (outcome.error);
+  return e?.details?.reason === 'task.check.notNumber' || e?.code === 'parse-error' || e?.code === 'too-large';
 }
 
 /**
@@ -65,7 +104,7 @@ export function checkGoal(task, built, answers, state) {
       if (condition.value) outcome.value = values[condition.value] ?? Number.NaN;
       else {
         const typed = answers[/** @type {string} */ (condition.answer)];
-        outcome.value = typeof typed === 'string' ? answerNumber(typed) : Number.NaN;
+        outcome.value = typeof typed === 'string' ? answerNumber(typed, state.context.lang) : Number.NaN;
         if (typed === undefined || String(typed).trim() === '') outcome.error = new TaskError('task.check.noAnswer');
         else if (Number.isNaN(outcome.value)) outcome.error = new TaskError('task.check.notNumber');
       }

@@ -3,7 +3,7 @@
 // not by colour alone), up to three hints revealed in turn, the solution on request after a first
 // check, Start over, and Leave. All of it is text: an exercise's texts are never markup.
 import { say } from './format.js';
-import { checkGoal } from './check.js';
+import { checkGoal, unreadable } from './check.js';
 import { describeCondition, outcomeText } from './words.js';
 
 /**
@@ -243,7 +243,13 @@ export class TaskPanel {
     verdict.hidden = false;
     verdict.className = solved ? 'rl-task-verdict rl-task-solved' : 'rl-task-verdict';
     const passed = outcomes.filter((o) => o.holds).length;
-    verdict.textContent = solved ? `✓ ${t('task.solved')}` : t('task.notSolved', { passed, of: outcomes.length });
+    // an answer that could not be read is said with how to write it, and the check is not counted
+    const counted = !outcomes.some(unreadable);
+    verdict.textContent = solved
+      ? `✓ ${t('task.solved')}`
+      : counted
+        ? t('task.notSolved', { passed, of: outcomes.length })
+        : t('task.notCounted');
     /** @type {TaskReport} */
     const report = {
       task: task.id,
@@ -261,7 +267,7 @@ export class TaskPanel {
     if (announce) {
       // where the panel runs below the screen (a phone), the verdict is brought into sight
       verdict.scrollIntoView({ block: 'nearest' });
-      this.hooks.report('check', report);
+      if (counted) this.hooks.report('check', report);
       if (solved && !this.solved) this.hooks.report('solved', report);
     }
     this.solved = solved;

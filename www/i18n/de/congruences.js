@@ -51,7 +51,7 @@ export default {
   'complex.kind.general': 'kein linearer Komplex',
   'complex.kind.complex': 'ein linearer Komplex',
   'complex.kind.congruence': 'eine lineare Kongruenz',
-  'complex.kind.regulus': 'ein Regulus',
+  'complex.kind.regulus': 'eine Regelschar',
   'complex.kind.special': 'ein Bündel, ein Feld oder zu wenige Geraden',
 
   'focal.title': 'Brennflächen (über die Arbeit hinaus)',

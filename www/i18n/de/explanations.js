@@ -19,7 +19,7 @@ export default {
 Erzeugende schließen den Winkel ${m(sub('φ', 'i , i + 1'))} ein und haben genau ein gemeinsames Lot
 ${m(sub('N', 'i , i + 1'))}. Es trifft ${m(Ri)} im Fußpunkt ${m(fii1)}; die beiden Fußpunkte eines
 Paares haben den Abstand ${m(`<mo>|</mo>${sub('h', 'i , i + 1')}<mo>|</mo>`)}: ${m(sub('h', 'i , i + 1'))} ist ihr vorzeichenbehafteter Abstand,
-dessen Vorzeichen sagt, wie sich die beiden Erzeugenden umwinden. Der <em>diskrete Drall</em> ist</p>
+dessen Vorzeichen den Windungssinn (Schraubsinn) des Paares angibt. Der <em>diskrete Drall</em> (Verteilungsparameter) ist</p>
 ${display(`${sub('δ', 'i , i + 1')}<mo>=</mo>${frac(sub('h', 'i , i + 1'), sub('φ', 'i , i + 1'))}`, '1')}
 <p>Jede Erzeugende trägt zwei Fußpunkte, ${m(fiim)} und ${m(fii1)}. Beide streben gegen den
 <em>Kehlpunkt</em> ${mr('s ( u )')}, wenn die Erzeugenden zusammenrücken, aber nur von erster Ordnung
@@ -27,9 +27,9 @@ ${display(`${sub('δ', 'i , i + 1')}<mo>=</mo>${frac(sub('h', 'i , i + 1'), sub(
 ${display(`${sub('m', 'i')}<mo>=</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>(</mo>${fiim}<mo>+</mo>${fii1}<mo>)</mo>`, '7')}
 <p>konvergiert von zweiter Ordnung (Satz 2): Die Fehler erster Ordnung der beiden Fußpunkte sind
 gleich groß und entgegengesetzt. Das <em>Kehlpolygon</em> verbindet diese Mittelpunkte.</p>
-<p><strong>Zwei Polygone, nicht eines.</strong> Abb. 3 der Arbeit zeigt ein anderes Polygon: die
+<p><strong>Zwei Polygone, nicht eines.</strong> Wörtlich gelesen beschreibt Beispiel 1 ein anderes Polygon: die
 Mittelpunkte ${m(`<mo>(</mo>${fii1}<mo>+</mo>${sub('f', 'i + 1 , i')}<mo>)</mo><mo>/</mo><mn>2</mn>`)} der
-gemeinsamen Lote (zuschaltbar). Es nähert die Kehllinie beim Parameter <em>zwischen</em> zwei
+gemeinsamen Lote (zuschaltbar). Es nähert die Kehllinie (Striktionslinie) beim Parameter <em>zwischen</em> zwei
 Erzeugenden an, ${mr('u + H / 2')}, ebenfalls von zweiter Ordnung; das Kehlpolygon
 ${m(sub('m', 'i'))} nähert sie an den Erzeugenden selbst an. Die Anzeige misst beide.</p>
 <p><strong>Probieren Sie es aus.</strong> Verdoppeln Sie die Zahl der Erzeugenden und beobachten Sie
@@ -47,8 +47,8 @@ Arbeit; die Zahl der Erzeugenden (36) und die Länge der Strecken wählt ruledla
 <p>Drei aufeinanderfolgende Erzeugende ${m(sub('R', 'i − 1'))}, ${m(Ri)}, ${m(sub('R', 'i + 1'))} des
 Hyperboloids aus Beispiel 1. Jedes Paar hat genau ein gemeinsames Lot ${m(sub('N', 'i , i + 1'))}; es
 trifft ${m(Ri)} im Fußpunkt ${m(fii1)} und ${m(sub('R', 'i + 1'))} in ${m(sub('f', 'i + 1 , i'))}.
-Seine Länge ist der Abstand der beiden Erzeugenden; mit Vorzeichen (je nachdem, wie sich die beiden
-Erzeugenden umwinden) ist sie der vorzeichenbehaftete Abstand ${m(sub('h', 'i , i + 1'))} der Anzeige. Die gestrichelte Gerade durch ${m(fii1)} ist parallel zu
+Seine Länge ist der Abstand der beiden Erzeugenden; mit Vorzeichen (nach dem Windungssinn, dem
+Schraubsinn, des Paares) ist sie der vorzeichenbehaftete Abstand ${m(sub('h', 'i , i + 1'))} der Anzeige. Die gestrichelte Gerade durch ${m(fii1)} ist parallel zu
 ${m(sub('R', 'i + 1'))}: Sie schließt mit ${m(Ri)} den Winkel ${m(sub('φ', 'i , i + 1'))} ein. Jede
 Erzeugende trägt zwei Fußpunkte, einen von jedem Nachbarn; ihr Mittelpunkt ${m(sub('m', 'i'))} ist der
 diskrete Kehlpunkt. Verkleinern Sie den Abstand und sehen Sie, wie die beiden Fußpunkte auf ihn
@@ -86,17 +86,17 @@ erste, ${m(sub('n', '0 , 1'))}. Dann steht jede Erzeugende normal zu dieser Rich
 <em>konoidal</em> geworden (alle Erzeugenden parallel zu einer Ebene). Schieben Sie <em>t</em> von 0
 bis 1 (oder drücken Sie Abspielen), um die Verbiegung zu sehen; das Bild ist so gedreht, dass
 ${m(sub('n', '0 , 1'))} nach oben zeigt, und die konoidalen Erzeugenden werden waagrecht, gestapelt in
-den Höhen ${m(`${sub('H', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${sub('h', 'k , k + 1')}`)}.</p>
+den Höhen ${m(`${sub('ζ', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${sub('h', 'k , k + 1')}`)}.</p>
 <p><strong>Näherungsabwicklung (Abb. 6).</strong> Projizieren Sie das konoidale Modell normal auf eine
 Ebene parallel zu seinen Erzeugenden. Jede Erzeugende behält ihre Länge. Die gemeinsamen Lote des
-konoidalen Modells sind alle parallel, die beiden Fußpunkte jedes Paares fallen also in einen Punkt,
+konoidalen Modells zeigen alle in dieselbe Richtung, die beiden Fußpunkte jedes Paares fallen also in einen Punkt,
 den Schnittpunkt der beiden projizierten Erzeugenden: Diese Punkte bilden das Polygon, das die
 projizierten Erzeugenden einhüllen (gestrichelt; das Bild des Polygons der Lotmittelpunkte aus
 Abb. 3), so wie die Gratlinie in der Abwicklung einer Torse die Einhüllende ist. Das Bild des
 Kehlpolygons ist diesem Polygon eingeschrieben: ${m(sub('m', 'i'))} liegt in der Mitte zwischen den
 beiden Fußpunkten auf ${m(Ri)}, sein Bild also im Mittelpunkt der Kante, die auf dieser Erzeugenden
 liegt. Die Spanne der Höhen,
-${m(`<mo>max</mo>${sub('H', 'i')}<mo>−</mo><mo>min</mo>${sub('H', 'i')}`)}, misst, wie weit die Fläche
+${m(`<mo>max</mo>${sub('ζ', 'i')}<mo>−</mo><mo>min</mo>${sub('ζ', 'i')}`)}, misst, wie weit die Fläche
 von einer Torse entfernt ist: 0 beim Kegel, winzig (und mit ${m('<msup><mi>H</mi><mn>2</mn></msup>')}
 fallend) bei der Tangentenfläche, deutlich positiv beim Hyperboloidstreifen.</p>
 <p class="rl-beyond"><strong>Über die Arbeit hinaus: wann die Bildunterschrift von Abb. 5 stimmt.</strong>
@@ -104,7 +104,7 @@ Die Arbeit zeigt das konoidale Bild einer Schraubregelfläche als Wendelfläche,
 Achse senkrecht treffen. Hier gemessen gilt das nur, wenn die Kehllinie die Erzeugenden rechtwinklig
 kreuzt. Im Allgemeinen berühren die konoidalen Erzeugenden einen Zylinder um die Achse mit dem Radius
 ${m(frac(row('e · ṡ'), row('| e′ |')))}: 1,4 für die Fläche mit Erzeugenden unter 45° (Radius 1,
-Schraubparameter 0,4, also Höhe 0,4 je Radiant: z = 0,4 u). Die Anzeige misst ihn diskret: ρ, der Abstand der beiden Fußpunkte auf einer
+Schraubparameter 0,4, also Höhe 0,4 je Radiant: z = 0,4 u). Die Anzeige misst ihn diskret: ρ, die (vorzeichenbehaftete) Differenz der beiden Fußpunkte auf einer
 Erzeugenden geteilt durch den Winkel, um den sich die Erzeugenden dort drehen, ist der Krümmungsradius
 der Hüllkurve der abgewickelten Erzeugenden und strebt mit zweiter Ordnung gegen
 ${m(frac(row('e · ṡ'), row('| e′ |')))}. Wählen Sie „Erzeugende normal zur Kehlschraublinie“
@@ -117,8 +117,10 @@ Hyperboloids aus Beispiel 1.</p>`,
 <h2>Unterteilung von Polygonen</h2>
 <p><strong>Der Algorithmus von Chaikin</strong> (Abb. 7) ersetzt jede Kante durch die Punkte bei ¼ und
 ¾ ihrer Länge. Die Polygone konvergieren gegen den quadratischen B-Spline mit den ursprünglichen
-Punkten als Kontrollpunkten; er berührt jede innere Kante in ihrem Mittelpunkt. Die Algorithmen von
-de Casteljau und de Boor arbeiten ebenso, für Bézier- und B-Spline-Kurven beliebigen Grades.</p>
+Punkten als Kontrollpunkten; er berührt jede innere Kante in ihrem Mittelpunkt. Die Arbeit zählt
+die Algorithmen von de Casteljau und de Boor zu den Unterteilungsalgorithmen dieser Art, die die
+Eingabepunkte nicht behalten: Wiederholt konvergieren sie gegen eine Bézier- bzw. B-Spline-Kurve.
+Ihre Regeln sind eigene, nicht Chaikins Schnitte bei ¼ und ¾.</p>
 <p><strong>Das Vierpunktschema</strong> von Dyn, Levin und Gregory (Abb. 8) behält jeden Punkt und
 fügt auf jeder Kante einen neuen ein:</p>
 ${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>+</mo><mi>w</mi><mo>)</mo><mo>(</mo>${sub('p', 'i')}<mo>+</mo>${sub('p', 'i + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i − 1')}<mo>+</mo>${sub('p', 'i + 2')}<mo>)</mo>`, '8')}
@@ -126,14 +128,20 @@ ${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2
 Regler exakt eintippen), und w = 1/16 reproduziert kubische Polynome; bei w = 0 ist die Grenzkurve das
 Polygon selbst. Die Arbeit nennt die Grenzkurve C¹ für 0 &lt; w &lt; ⅛: Das ist die hinreichende
 Bedingung, die Dyn, Levin und Gregory 1987 bewiesen haben, nicht die Stelle, an der Knicke entstehen.
-Dyn, Gregory und Levin (1991) beweisen C¹ für 0 &lt; w &lt; (√5 − 1)/8 ≈ 0,155, und ihr Kriterium reicht,
-über mehr Schritte angewandt, noch weiter (mindestens bis w = 0,18).</p>
-<p><strong>Sehen, wie die Kurve glatt wird.</strong> Anzeige und Diagramm nennen den größten
+Dyn, Gregory und Levin (1991) beweisen C¹ für 0 &lt; w &lt; (√5 − 1)/8 ≈ 0,155. Die scharfe Schranke
+ist bekannt: Die Grenzkurve ist genau für 0 &lt; w &lt; w* ≈ 0,19273 C¹, die reelle Nullstelle von
+32w³ + 4w − 1 = 0 (J. Hechler, B. Mößner und U. Reif, <em>C¹-continuity of the generalized
+four-point scheme</em>, Linear Algebra Appl. 430, 2009); dort erreicht der gemeinsame
+Spektralradius des Schemas der dividierten Differenzen den Wert 1.</p>
+<p><strong>Sehen, wie sich die Polygone strecken.</strong> Anzeige und Diagramm nennen den größten
 Außenwinkel des verfeinerten Polygons, den größten Winkel zwischen einer Kante und der nächsten, nach
 jedem Schritt bis ${TURNING_STEPS}, also über die gezeichneten hinaus. Wo er gegen 0 fällt, strecken sich die
-Polygone. Auf diesem Polygon, geschlossen, fällt er von ${TURNING_FROM} auf ${TURNING_STEPS} Schritte noch für jedes w bis 0,17;
-ab w = 0,171 knickt das Polygon nach ${TURNING_STEPS} Schritten noch irgendwo um mehr als 1 rad ab: Eine C¹-Grenzkurve
-kann dann noch fern sein oder eine Spitze haben, wo ihre Ableitung verschwindet. Bei einem offenen
+Polygone; er zeigt, wie schnell, nicht ob die Grenzkurve C¹ ist. Auf diesem Polygon, geschlossen, ist er
+nach ${TURNING_STEPS} Schritten für jedes w bis 0,17 kleiner als nach ${TURNING_FROM}, fällt dort aber nicht mehr gleichmäßig:
+Bei w = 0,17 beträgt er nach ${TURNING_FROM - 2}, ${TURNING_FROM}, ${TURNING_STEPS - 2} und ${TURNING_STEPS} Schritten 1,15, 1,04, 1,19 und 1,00 rad. Ab w = 0,171
+knickt das Polygon nach ${TURNING_STEPS} Schritten noch irgendwo um mehr als 1 rad ab: langsame Konvergenz oder
+eine Spitze der Grenzkurve, wo ihre Ableitung verschwindet — auch eine C¹-Grenzkurve kann eine haben,
+und die Winkel unterscheiden beides nicht. Bei einem offenen
 Polygon verwenden die Endkanten Geisterpunkte, extrapoliert aus den letzten vier Punkten, eine
 Endregel von ruledlab (die Arbeit nennt keine); sie versagt zuerst: Dort fällt der Winkel nur bis
 w = 0,126, während sich das geschlossene Polygon, das keine Enden hat, darüber hinaus noch streckt.</p>
@@ -147,7 +155,7 @@ Schema fügt zwischen je zwei Erzeugenden eine Erzeugende ${m(`${sub('A', 'i')}$
 teilt alle Strecken in <em>n</em> Teile,</p>
 ${display(`${sub('z', 'i , k')}<mo>=</mo>${frac(row('n − k'), '<mi>n</mi>')}${sub('a', 'i')}<mo>+</mo>${frac('<mi>k</mi>', '<mi>n</mi>')}${sub('b', 'i')}`, '9')}
 <p>und trianguliert den verfeinerten Streifen auf die beiden Arten von Abb. 9. In einem Knoten mit
-sechs Nachbarn ist der <em>Umbrella-Vektor</em> (13) der Knoten minus dem Mittel seiner Nachbarn, eine
+sechs Nachbarn ist der <em>Umbrella-Vektor</em> (13) der Knoten abzüglich des Mittels seiner Nachbarn, eine
 diskrete mittlere Krümmung; die neuen Endpunkte minimieren</p>
 ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(</mo><msubsup><mi>U</mi>${row('i , k')}<mn>2</mn></msubsup><mo>+</mo><msubsup><mover><mi>U</mi><mo>~</mo></mover>${row('i , k')}<mn>2</mn></msubsup><mo>)</mo>`, '15')}
 <p>eine quadratische Funktion, also ein lineares Gleichungssystem.</p>
@@ -212,8 +220,8 @@ bleibt Material stehen, negativ wird zu viel abgetragen), die größte Änderung
 Werkzeugorientierung zwischen zwei Lagen und ihre zweite Differenz (wie gleichmäßig sich die
 Orientierung dreht). Vergleichen Sie die Schemata an der Anzeige: Ab sieben Lagen lassen die
 variationellen Schemata die kleinste Abweichung vom Profil (bei weniger kann das Vierpunktschema
-näher liegen); welches Schema den kleinsten
-Orientierungsschritt hat, hängt von der Zahl der Schritte ab. Das Diagramm zeigt die Abweichung
+näher liegen); die Mittelpunktsregel dreht das Werkzeug in den kleinsten Schritten (sie halbiert
+jede Drehung), aber am wenigsten gleichmäßig, die variationellen Schemata am gleichmäßigsten. Das Diagramm zeigt die Abweichung
 entlang der Bahn: je Lage, wie weit die Kugel vom Profil absteht; je Satz des G-Codes, wie weit die
 lineare Interpolation der Steuerung von der Bahn abweicht (Spitze, und Achse mal Werkzeuglänge, in
 mm bei 1 Einheit = 10 mm).</p>
@@ -247,11 +255,14 @@ Die Formeln sind Teil des Links: Teilen Sie ihn als Übungsaufgabe.</p>`,
 <h2>Brennflächen einer Geradenkongruenz</h2>
 <p class="rl-beyond"><strong>Über die Arbeit hinaus.</strong> Die Arbeit verfeinert Kongruenzen
 (Abschnitt 5), berechnet aber nicht ihre Geometrie. Längs einer Geraden ${mr('p + t e')} der
-Kongruenz ${mr('p ( u , v ) + t e ( u , v )')}, mit ${m('<mi>e</mi>')} der Länge 1, kommen die
-Nachbargeraden ihr in den <em>Brennpunkten</em> am nächsten: den Nullstellen von</p>
+Kongruenz ${mr('p ( u , v ) + t e ( u , v )')}, mit ${m('<mi>e</mi>')} der Länge 1, sind die
+<em>Brennpunkte</em> die Punkte, in denen die Gerade ihre unendlich benachbarten Geraden in den beiden
+Torsalrichtungen (unten) schneidet: die Nullstellen von</p>
 ${display(`<mo>det</mo><mo>(</mo>${sub('p', 'u')}<mo>+</mo><mi>t</mi>${sub('e', 'u')}<mo>,</mo>${sub('p', 'v')}<mo>+</mo><mi>t</mi>${sub('e', 'v')}<mo>,</mo><mi>e</mi><mo>)</mo><mo>=</mo><mn>0</mn>`, 'F1')}
 <p>Zwei reelle Nullstellen machen die Gerade <em>hyperbolisch</em> (durchgezogen), keine
-<em>elliptisch</em> (gestrichelt), eine doppelte <em>parabolisch</em>. Bewegt sich die Gerade,
+<em>elliptisch</em> (gestrichelt), eine doppelte <em>parabolisch</em>. (Nachbargeraden in jeder
+anderen Richtung schneiden die Gerade nicht: Sie kommen ihr in ihren <em>Zentralpunkten</em> am
+nächsten, die zwischen den beiden Grenzpunkten liegen.) Bewegt sich die Gerade,
 überstreichen ihre Brennpunkte die beiden <em>Brennflächen</em> (schattiert, wo reell). Längs einer
 <em>Torsalrichtung</em> ${mr('( du : dv )')} bilden die Geraden einen abwickelbaren Streifen durch
 einen Brennpunkt,</p>
@@ -259,8 +270,9 @@ ${display(`<mo>det</mo><mo>(</mo>${sub('p', 'u')}<mi>du</mi><mo>+</mo>${sub('p',
 <p>(Striche auf der Leitfläche ${m(sub('d', '1'))}). Die <em>Normalität</em> ist |cos| des Winkels
 der beiden Brennebenen: 0 für die Normalen einer Fläche, deren Brennpunkte die
 Hauptkrümmungsmittelpunkte sind — probieren Sie das Ellipsoid. Ein Feld von Werkzeugachsen beim
-5-Achs-Fräsen ist eine Kongruenz: wo ihre Geraden elliptisch werden oder eine Brennfläche dem
-Werkstück nahe kommt, schneiden sich die Achsen beinahe.</p>
+5-Achs-Fräsen ist eine Kongruenz: Wo eine Brennfläche dem Werkstück nahe kommt, schneiden sich
+benachbarte Achsen dort (beinahe); wo ihre Geraden elliptisch werden, haben sie keine reellen
+Brennpunkte, und benachbarte Achsen laufen windschief aneinander vorbei.</p>
 <p>ruledlab berechnet all das allein aus den Geraden: aus ihren Plücker-Koordinaten, über das Gitter
 differenziert (zentral im Inneren, über drei Geraden am Rand). Das Ergebnis hängt nicht davon ab,
 wo die Punkte p und q auf ihren Geraden liegen, bewegt sich exakt mit Bewegungen mit und
@@ -269,7 +281,7 @@ außerdem den <em>linearen Komplex</em>
 ${m(`<mi>c</mi><mo>·</mo><mi>m</mi><mo>+</mo><mover><mi>c</mi><mo>‾</mo></mover><mo>·</mo><mi>d</mi><mo>=</mo><mn>0</mn>`)}
 an, der die Geraden am besten enthält: die Treffgeraden zweier windschiefer Geraden liegen in
 zweien (eine lineare Kongruenz).</p>
-<p class="rl-paper-data">Daten: die Kongruenz von Beispiel 5 stammt aus dem Paper; die beiden
+<p class="rl-paper-data">Daten: die Kongruenz von Beispiel 5 stammt aus der Arbeit; die beiden
 Kongruenzen von Beispiel 4 (die Arbeit nennt für sie keine Daten), das Ellipsoid (Halbachsen 1,6;
 1,2; 0,8), die zwei windschiefen Geraden und die elliptische Kongruenz wählt ruledlab.</p>`,
 

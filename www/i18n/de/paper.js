@@ -12,12 +12,12 @@ export default {
   'paper.data.partly': 'Daten: teils aus der Arbeit (siehe oben).',
   'paper.data.none': 'Daten: Die Arbeit gibt keine an; Wahl von ruledlab (siehe oben).',
   'paper.fig1': 'Abb. 1: Bezeichnungen',
-  'paper.fig2': 'Abb. 2: Kehllinie und gemeinsame Normalen',
-  'paper.fig3': 'Abb. 3: diskrete Zentralkurve',
+  'paper.fig2': 'Abb. 2: Kehllinie und gemeinsame Normalen (gemeinsame Lote)',
+  'paper.fig3': 'Abb. 3: diskrete Zentralkurve (Kehllinie)',
   'paper.fig4': 'Abb. 4: konoidales Modell',
   'paper.fig5': 'Abb. 5: Schraubregelfläche, Bildunterschrift trifft nicht zu',
   'paper.fig5-orthogonal': 'Abb. 5: Schraubregelfläche, Bildunterschrift trifft zu',
-  'paper.fig6': 'Abb. 6: genäherte Abwicklung',
+  'paper.fig6': 'Abb. 6: Näherungsabwicklung',
   'paper.fig7': 'Abb. 7: Algorithmus von Chaikin',
   'paper.fig8': 'Abb. 8: Vierpunktschema, w = 1/13',
   'paper.fig9': 'Abb. 9: Bezeichnungen am Streifen',
@@ -39,7 +39,7 @@ export default {
   'paper.ex6': 'Beispiel 6: Fräsen',
   'paper.fig1.caption': '„Diskretes Regelflächenmodell: Bezeichnungen.“ (übersetzt)',
   'paper.fig1.note':
-    'Drei aufeinanderfolgende Erzeugende R_{i−1}, R_i, R_{i+1} mit den gemeinsamen Loten N_{i,i+1}, den Fußpunkten f_{i,i+1}, f_{i+1,i}, dem Winkel φ_{i,i+1} und dem vorzeichenbehafteten Abstand h_{i,i+1} (sein Betrag ist der Abstand der beiden Erzeugenden, sein Vorzeichen sagt, wie sie sich umwinden). Die Arbeit gibt keine Daten an; ruledlab verwendet drei Erzeugende des Hyperboloids aus Beispiel 1 (Abstand und Lage sind Schieberegler).',
+    'Drei aufeinanderfolgende Erzeugende R_{i−1}, R_i, R_{i+1} mit den gemeinsamen Loten N_{i,i+1}, den Fußpunkten f_{i,i+1}, f_{i+1,i}, dem Winkel φ_{i,i+1} und dem vorzeichenbehafteten Abstand h_{i,i+1} (sein Betrag ist der Abstand der beiden Erzeugenden, sein Vorzeichen der Windungssinn (Schraubsinn) des Paares). Die Arbeit gibt keine Daten an; ruledlab verwendet drei Erzeugende des Hyperboloids aus Beispiel 1 (Abstand und Lage sind Schieberegler).',
   'paper.fig2.caption':
     '„Diskretes Modell einer Regelfläche mit Kehllinie und der Folge der gemeinsamen Normalen der Erzeugenden.“ (übersetzt)',
   'paper.fig2.note':
@@ -62,7 +62,7 @@ export default {
   'paper.fig5.beyond':
     'Die Bildunterschrift trifft nur zu, wenn die Erzeugenden die Kehllinie rechtwinklig kreuzen (e·ṡ = 0); das sagt die Arbeit nicht. Im Allgemeinen berühren die konoidalen Erzeugenden einen Zylinder um die Achse mit Radius ρ = (e·ṡ)/|e′|, für diese Flächen r + p tan β: 1,4 unter 45°, 0 im rechten Winkel. Die Anzeige misst ρ, die Aussagen darunter werden geprüft.',
   'paper.fig6.caption':
-    '„Genäherte Abwicklung einer windschiefen Regelfläche auf Grund der diskreten Darstellung: links das diskrete Modell einer windschiefen Regelfläche, in der Mitte das isometrische konoidale diskrete Modell, rechts die Projektion der diskreten konoidalen Fläche normal zu ihren Erzeugenden.“ (übersetzt)',
+    '„Näherungsabwicklung einer windschiefen Regelfläche auf Grund der diskreten Darstellung: links das diskrete Modell einer windschiefen Regelfläche, in der Mitte das isometrische konoidale diskrete Modell, rechts die Projektion der diskreten konoidalen Fläche normal zu ihren Erzeugenden.“ (übersetzt)',
   'paper.fig6.note':
     'Die drei Felder von Abb. 6: ein Streifen des Hyperboloids aus Beispiel 1, sein konoidales Modell und die Abwicklung, in der das Bild des Kehlpolygons dem von den abgewickelten Erzeugenden eingehüllten Polygon (gestrichelt) eingeschrieben ist; die Anzeige nennt die Höhe des konoidalen Modells, das Maß der Nichtabwickelbarkeit. Die Arbeit gibt keine Daten an; den Streifen (24 Erzeugende, u von 0 bis 2,4) wählt ruledlab.',
   'paper.fig7.caption': '„Algorithmus von Chaikin.“ (übersetzt)',
@@ -105,7 +105,7 @@ export default {
     'Wörtlich gelesen liefern die Energien (15) und (21) bloße Mittelwerte; ruledlab bietet außerdem „zweistufig“ (seine gekoppelte Streifenenergie auf den Kanten), „gekoppelt“ (alle neuen Geraden in einem dünn besetzten System) und das Butterfly-Schema auf allen Kanten. Die Anzeige misst das gezeigte Schema und zum Vergleich alle vier nach einem Schritt; auf jeder eingebauten Kongruenz ist das Butterfly-Schema auf allen Kanten am genauesten (unter der Anzeige geprüft).',
   'paper.fig16.caption': '„Erster Schritt der Verfeinerung.“ (übersetzt)',
   'paper.fig16.note':
-    'Beispiel 6 nach einem Schritt: gegebene Werkzeugachsen dunkel, eingefügte hell, das Werkzeug als Zylinder mit Kugelende, die Schwerpunktkurve gestrichelt, die gefegte Kugel über dem Werkstück. Die Arbeit gibt keine Daten an; Profil, sieben Lagen und Werkzeug (Radius 0,25, Länge 1,5) stammen von ruledlab.',
+    'Beispiel 6 nach einem Schritt: gegebene Werkzeugachsen dunkel, eingefügte hell, das Werkzeug als Zylinder mit Kugelende, die Schwerpunktkurve gestrichelt, die überstrichene Kugel über dem Werkstück. Die Arbeit gibt keine Daten an; Profil, sieben Lagen und Werkzeug (Radius 0,25, Länge 1,5) stammen von ruledlab.',
   'paper.fig17.caption': '„Zweiter Schritt der Verfeinerung.“ (übersetzt)',
   'paper.fig17.note': 'Beispiel 6 nach zwei Schritten (Daten von ruledlab, wie in Abb. 16).',
   'paper.fig18.caption': '„Dritter Schritt der Verfeinerung.“ (übersetzt)',
@@ -113,7 +113,7 @@ export default {
   'paper.milling.beyond':
     'Die Arbeit verfeinert die Bahn „wie in Abschnitt 4 beschrieben“; wörtlich gelesen ist diese Energie die Mittelpunktsregel („linear“ im Menü). ruledlab verwendet stattdessen seine gekoppelte Energie; die Anzeige nennt die Abweichung jedes Schemas vom Profil, und die Aussagen darunter sagen, wo die variationellen Schemata am nächsten kommen.',
   'paper.ex1.caption':
-    'Beispiel 1: ein diskretisierter Regulus des Hyperboloids x² + y²/4 − z²/9 = 1 mit seiner Kehllinie.',
+    'Beispiel 1: eine diskretisierte Regelschar des Hyperboloids x² + y²/4 − z²/9 = 1 mit seiner Kehllinie.',
   'paper.ex1.note':
     'Beide diskreten Kehlpolygone, m_i aus Satz 2 und die Lotmittelpunkte aus Abb. 3, gegen die exakte Kehllinie; die Anzeige misst jedes. Das Hyperboloid stammt aus der Arbeit, die 36 Erzeugenden von ruledlab.',
   'paper.ex2.caption': 'Beispiel 2: Jede Regelfläche lässt sich isometrisch auf eine konoidale Regelfläche abbilden.',

@@ -80,7 +80,7 @@ export default {
   'notation.describe':
     'Drei aufeinanderfolgende Erzeugende des Hyperboloids aus Beispiel 1, im Parameter {spacing} voneinander entfernt, mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} ist {angle} rad, ihr vorzeichenbehafteter Abstand h_{i,i+1} beträgt {distance} (sein Betrag ist der Abstand der beiden Geraden).',
   'notation.describeEdited':
-    'Ihre Bearbeitung dreier aufeinanderfolgender Erzeugender mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} beträgt {angle} rad, ihr Abstand {distance}.',
+    'Ihre Bearbeitung dreier aufeinanderfolgender Erzeugender mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} beträgt {angle} rad, ihr vorzeichenbehafteter Abstand h_{i,i+1} {distance} (sein Betrag ist der Abstand der beiden Geraden).',
 
   'convergence.title': 'Konvergenzordnungen (Sätze 1–2)',
   'convergence.param.u': 'Parameter u',

@@ -75,7 +75,7 @@ export default {
   'lines.describe':
     'Neun Erzeugende: {surface}, ihre Endpunkte entlang der Erzeugenden um {slide} des Musters verschoben; die neuen Erzeugenden des Endpunktschemas drehten sich um bis zu {endpointTurn} rad, die des Geradenraumschemas um {lineTurn}.',
   'lines.describeEdited':
-    'Ihre Bearbeitung der neun gegebenen Erzeugenden von {surface}; gegenüber den Erzeugenden, die die Verfahren aus der unverschobenen Fläche machen, drehten sich die neuen Erzeugenden des Endpunktverfahrens um bis zu {endpointTurn} rad, die des Geradenraum-Verfahrens um {lineTurn}.',
+    'Ihre Bearbeitung der neun gegebenen Erzeugenden von {surface}; gegenüber den Erzeugenden, die die Schemata aus der unverschobenen Fläche machen, drehten sich die neuen Erzeugenden des Endpunktverfahrens um bis zu {endpointTurn} rad, die des Geradenraum-Verfahrens um {lineTurn}.',
 
   'milling.title': 'Werkzeugbahn für 5-Achs-Fräsen (Beispiel 6, Abb. 16–18)',
   'milling.param.poses': 'Gegebene Lagen',
@@ -113,6 +113,8 @@ export default {
   'milling.readout.compare.linear': 'linear (Mittelpunkte): max. |Abweichung|',
   'milling.claim.refined':
     'Die glättenden Schemata (beide variationellen und das Vierpunktschema) fräsen näher am Profil als die gegebenen Lagen allein; die Mittelpunktsregel nicht unbedingt.',
+  'milling.claim.turns':
+    'Die Mittelpunktsregel dreht das Werkzeug in den kleinsten Schritten (sie halbiert jede Drehung), aber am wenigsten gleichmäßig: Ihre größte zweite Differenz ist die größte der vier Schemata; das gemittelte variationelle Schema dreht es am gleichmäßigsten.',
   'milling.claim.variational':
     'Ab 7 gegebenen Lagen lassen beide variationellen Schemata bei jeder Schrittzahl eine kleinere Abweichung als das Vierpunktschema und die Mittelpunktsregel.',
   'milling.param.machine': 'Maschine',

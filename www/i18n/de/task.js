@@ -61,7 +61,8 @@ export default {
   'task.error.unknownValue': 'die Szene berechnet keinen Wert „{value}“ (genannt in {where})',
   'task.error.noExact':
     'die Szene „{scene}“ hat keine exakte Kurve, mit der eine eingegebene Formel verglichen werden könnte',
-  'task.check.notNumber': 'das ist keine Zahl: Geben Sie Ziffern ein, z. B. 50, 0,25 oder 1/3',
+  'task.notCounted': 'Eine Antwort war nicht lesbar (siehe oben): Diese Prüfung zählt nicht. Verbessern Sie sie und prüfen Sie erneut.',
+  'task.check.notNumber': 'das ist keine Zahl: Geben Sie Ziffern ein, z. B. 50, 0,25, 1/3 oder 1,89·10⁻³',
   'task.check.noAnswer': 'noch keine Antwort',
 
   'author.open': 'Aus dieser Ansicht eine Aufgabe machen',
@@ -117,8 +118,8 @@ export default {
   'measure.curves.readout.points': 'die Zahl der Punkte',
   'measure.strip.readout.compare.midpoint': 'der größte Abstand der Mittelpunktsregel von der Fläche',
   'measure.strip.readout.compare.literal': 'der größte Abstand von (15), wörtlich gelesen, von der Fläche',
-  'measure.strip.readout.compare.coupled': 'der größte Abstand des gekoppelten Verfahrens von der Fläche',
-  'measure.strip.readout.compare.averaged': 'der größte Abstand des gemittelten Verfahrens von der Fläche',
+  'measure.strip.readout.compare.coupled': 'der größte Abstand des gekoppelten Schemas von der Fläche',
+  'measure.strip.readout.compare.averaged': 'der größte Abstand des gemittelten Schemas von der Fläche',
   'measure.strip.readout.compare.fourPoint': 'der größte Abstand des Vierpunktschemas von der Fläche',
   'measure.congruence.readout.angle': 'der größte Winkel der neuen Geraden zu den exakten Geraden (rad)',
   'measure.milling.readout.deviation': 'die größte |Abweichung| der gefrästen Fläche vom Profil',

@@ -27,7 +27,7 @@ Their midpoint</p>
 ${display(`${sub('m', 'i')}<mo>=</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>(</mo>${fiim}<mo>+</mo>${fii1}<mo>)</mo>`, '7')}
 <p>converges at second order (Proposition 2): the first-order errors of the two footpoints are
 equal and opposite. The <em>striction polygon</em> joins these midpoints.</p>
-<p><strong>Two polygons, not one.</strong> Fig. 3 of the paper shows a different polygon: the
+<p><strong>Two polygons, not one.</strong> Read literally, Example 1 describes a different polygon: the
 midpoints ${m(`<mo>(</mo>${fii1}<mo>+</mo>${sub('f', 'i + 1 , i')}<mo>)</mo><mo>/</mo><mn>2</mn>`)} of
 the common perpendiculars (switch it on). It approximates the striction curve at the parameter
 <em>between</em> two rulings, ${mr('u + H / 2')}, also at second order; the striction polygon
@@ -83,7 +83,7 @@ ${m(sub('n', '0 , 1'))}. Then every ruling is orthogonal to that direction: the 
 <em>conoidal</em> (all rulings parallel to one plane). Slide <em>t</em> from 0 to 1 (or press play)
 to watch the bending; the picture is turned so that ${m(sub('n', '0 , 1'))} points up, and the
 conoidal rulings become horizontal, stacked at heights
-${m(`${sub('H', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${sub('h', 'k , k + 1')}`)}.</p>
+${m(`${sub('ζ', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${sub('h', 'k , k + 1')}`)}.</p>
 <p><strong>Approximate development (Fig. 6).</strong> Project the conoidal model orthogonally onto a
 plane parallel to its rulings. Each ruling keeps its length. The common perpendiculars of the
 conoidal model all point the same way, so the two footpoints of every pair fall onto one point,
@@ -92,7 +92,7 @@ where the two projected rulings meet: these points form the polygon the projecte
 the envelope in the development of a developable surface. The image of the striction polygon is
 inscribed in it: ${m(sub('m', 'i'))} lies midway between the two footpoints on ${m(Ri)}, so its image
 is the midpoint of the envelope polygon's edge on that ruling. The spread of the heights,
-${m(`<mo>max</mo>${sub('H', 'i')}<mo>−</mo><mo>min</mo>${sub('H', 'i')}`)}, measures how far the
+${m(`<mo>max</mo>${sub('ζ', 'i')}<mo>−</mo><mo>min</mo>${sub('ζ', 'i')}`)}, measures how far the
 surface is from developable: 0 for the cone, tiny (shrinking like
 ${m('<msup><mi>H</mi><mn>2</mn></msup>')} as rulings are added) for the tangent surface, clearly
 positive for the hyperboloid strip.</p>
@@ -113,8 +113,10 @@ a ruled helical surface (radius 1, pitch 0.4 per radian, so 2π · 0.4 ≈ 2.51 
 <h2>Subdivision of polygons</h2>
 <p><strong>Chaikin's algorithm</strong> (Fig. 7) replaces every edge by the points at ¼ and ¾ of its
 length. The polygons converge to the quadratic B-spline with the original points as control
-points; it touches every interior edge at its midpoint. The algorithms of de Casteljau and de Boor
-work the same way, for Bézier and B-spline curves of any degree.</p>
+points; it touches every interior edge at its midpoint. The paper counts the algorithms of de
+Casteljau and de Boor among the subdivision algorithms of this type, which do not keep the input
+points: repeated, they converge to a Bézier or a B-spline curve. Their rules are their own, not
+Chaikin's cuts at ¼ and ¾.</p>
 <p><strong>The four-point scheme</strong> of Dyn, Levin and Gregory (Fig. 8) keeps every point and
 inserts a new one on each edge:</p>
 ${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>+</mo><mi>w</mi><mo>)</mo><mo>(</mo>${sub('p', 'i')}<mo>+</mo>${sub('p', 'i + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i − 1')}<mo>+</mo>${sub('p', 'i + 2')}<mo>)</mo>`, '8')}
@@ -122,14 +124,19 @@ ${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2
 beside the slider), and w = 1/16 reproduces cubic polynomials; slide w to 0 and the limit is the
 polygon itself. The paper calls the limit C¹ for 0 &lt; w &lt; ⅛: that is the sufficient condition
 Dyn, Levin and Gregory proved in 1987, not the place where kinks appear. Dyn, Gregory and Levin
-(1991) prove C¹ for 0 &lt; w &lt; (√5 − 1)/8 ≈ 0.155, and their test, run over more steps, reaches
-further (to w = 0.18 at least).</p>
-<p><strong>Watch smoothness set in.</strong> The readout and the plot give the largest turning angle
-of the refined polygon, the largest angle between an edge and the next, after each step up to ${TURNING_STEPS},
-more than are drawn. Where it falls towards 0 the polygons straighten out. On this polygon, closed,
-it still falls from ${TURNING_FROM} to ${TURNING_STEPS} steps for every w up to 0.17; from w = 0.171 on, the polygon still turns
-by more than 1 rad somewhere after ${TURNING_STEPS} steps: a C¹ limit may still be far off, or have a cusp where
-its derivative vanishes. On an open polygon the end edges use ghost points extrapolated from the
+(1991) prove C¹ for 0 &lt; w &lt; (√5 − 1)/8 ≈ 0.155. The sharp bound is known: the limit is C¹
+exactly for 0 &lt; w &lt; w* ≈ 0.19273, the real root of 32w³ + 4w − 1 = 0 (J. Hechler, B. Mößner
+and U. Reif, <em>C¹-continuity of the generalized four-point scheme</em>, Linear Algebra Appl.
+430, 2009), where the joint spectral radius of the scheme of the divided differences reaches 1.</p>
+<p><strong>Watch the polygons straighten out.</strong> The readout and the plot give the largest
+turning angle of the refined polygon, the largest angle between an edge and the next, after each
+step up to ${TURNING_STEPS}, more than are drawn. Where it falls towards 0 the polygons straighten out; it
+shows how fast they do, not whether the limit is C¹. On this polygon, closed, it is smaller after
+${TURNING_STEPS} steps than after ${TURNING_FROM} for every w up to 0.17, but near there it no longer falls steadily: at
+w = 0.17 it is 1.15, 1.04, 1.19 and 1.00 rad after ${TURNING_FROM - 2}, ${TURNING_FROM}, ${TURNING_STEPS - 2} and ${TURNING_STEPS} steps. From w = 0.171 on, the
+polygon still turns by more than 1 rad somewhere after ${TURNING_STEPS} steps: slow convergence, or a cusp of
+the limit where its derivative vanishes — a C¹ limit may have one, and the angles cannot tell the
+two apart. On an open polygon the end edges use ghost points extrapolated from the
 last four points, ruledlab's end rule (the paper gives none), and it gives out first: there the
 angle falls only up to w = 0.126, while the closed polygon, which has no ends, still straightens
 out beyond.</p>
@@ -203,7 +210,8 @@ the machined surface. The tool itself is drawn at one pose (slide or play its po
 target profile (positive leaves material, negative gouges), the largest change of tool orientation
 between two poses, and its second difference (how evenly the orientation turns). Compare the schemes
 with the readout: with seven poses or more the variational schemes leave the smallest deviation from
-the profile (fewer, and four-point can be closer); which scheme has the smallest orientation step depends on the number of steps. The plot
+the profile (fewer, and four-point can be closer); the midpoint rule turns the tool in the smallest
+steps (it halves each turn) but least evenly, the variational schemes most evenly. The plot
 shows the deviation along the path: per pose, how far the ball stands off the profile; per block of
 the G-code, how far the controller's linear interpolation strays from the path (tip, and axis times
 the tool length, in mm at 1 unit = 10 mm).</p>
@@ -234,18 +242,21 @@ The formulas are part of the link: share it as an exercise.</p>`,
 <h2>Focal surfaces of a line congruence</h2>
 <p class="rl-beyond"><strong>Beyond the paper.</strong> The paper refines congruences (Section 5)
 but does not compute their geometry. Along a line ${mr('p + t e')} of a congruence
-${mr('p ( u , v ) + t e ( u , v )')}, with ${m('<mi>e</mi>')} of unit length, the neighbouring lines
-come closest to meeting it at the <em>focal points</em>: the roots of</p>
+${mr('p ( u , v ) + t e ( u , v )')}, with ${m('<mi>e</mi>')} of unit length, the <em>focal points</em>
+are where the line meets its infinitely near neighbours in the two torsal directions (below): the
+roots of</p>
 ${display(`<mo>det</mo><mo>(</mo>${sub('p', 'u')}<mo>+</mo><mi>t</mi>${sub('e', 'u')}<mo>,</mo>${sub('p', 'v')}<mo>+</mo><mi>t</mi>${sub('e', 'v')}<mo>,</mo><mi>e</mi><mo>)</mo><mo>=</mo><mn>0</mn>`, 'F1')}
 <p>Two real roots make the line <em>hyperbolic</em> (solid), none <em>elliptic</em> (dashed), a double
-one <em>parabolic</em>. As the line moves, its two focal points sweep the two <em>focal surfaces</em>
+one <em>parabolic</em>. (Neighbours in any other direction do not meet the line: they come closest
+at its <em>central points</em>, which range between the two limit points.) As the line moves, its two focal points sweep the two <em>focal surfaces</em>
 (shaded where real). Along a <em>torsal direction</em> ${mr('( du : dv )')} the lines form a
 developable strip through one focal point,</p>
 ${display(`<mo>det</mo><mo>(</mo>${sub('p', 'u')}<mi>du</mi><mo>+</mo>${sub('p', 'v')}<mi>dv</mi><mo>,</mo><mi>e</mi><mo>,</mo>${sub('e', 'u')}<mi>du</mi><mo>+</mo>${sub('e', 'v')}<mi>dv</mi><mo>)</mo><mo>=</mo><mn>0</mn>`, 'F2')}
 <p>(strokes on the director surface ${m(sub('d', '1'))}). The <em>normality</em> is |cos| of the angle
 between the two focal planes: 0 for the normals of a surface, whose focal points are the centres
-of principal curvature — try the ellipsoid. A 5-axis tool-axis field is a congruence: where its
-lines turn elliptic or a focal surface comes close to the part, the axes nearly meet.</p>
+of principal curvature — try the ellipsoid. A 5-axis tool-axis field is a congruence: where a focal
+surface comes close to the part, neighbouring axes (nearly) meet there; where its lines turn
+elliptic, they have no real focal points, and neighbouring axes twist past each other.</p>
 <p>ruledlab computes all of this from the lines alone: their Plücker coordinates, differenced
 over the grid (central inside, over three lines at the edge). The result does not depend on where
 the points p and q sit on their lines, moves exactly with rigid motions, and converges at second

@@ -84,7 +84,7 @@ export default {
   'notation.describe':
     'Three consecutive rulings of the hyperboloid of Example 1, {spacing} apart in the parameter, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their signed distance h_{i,i+1} is {distance} (its absolute value is the distance of the two lines).',
   'notation.describeEdited':
-    'Your edit of three consecutive rulings, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their distance {distance}.',
+    'Your edit of three consecutive rulings, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their signed distance h_{i,i+1} is {distance} (its absolute value is the distance of the two lines).',
 
   // Propositions 1–2
   'convergence.title': 'Convergence orders (Propositions 1–2)',

@@ -117,6 +117,8 @@ export default {
   'milling.readout.compare.linear': 'linear (midpoints): max |deviation|',
   'milling.claim.refined':
     'The smoothing schemes (both variational ones and four-point) machine closer to the profile than the given poses alone; the midpoint rule need not.',
+  'milling.claim.turns':
+    'The midpoint rule turns the tool in the smallest steps (it halves each turn) but least evenly: its largest second difference is the largest of the four schemes; the averaged variational scheme turns it most evenly.',
   'milling.claim.variational':
     'With 7 given poses or more, both variational schemes leave a smaller deviation than four-point and the midpoint rule, at every number of steps.',
   'milling.param.machine': 'Machine',

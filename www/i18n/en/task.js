@@ -58,7 +58,8 @@ export default {
   'task.error.unknownValue': 'the scene computes no value "{value}" (named in {where})',
   'task.error.noExact': 'the scene "{scene}" has no exact curve to compare a typed formula with',
   'task.check.noAnswer': 'no answer yet',
-  'task.check.notNumber': 'that is not a number: type digits, e.g. 50, 0.25 or 1/3',
+  'task.notCounted': 'An answer could not be read (see above): this check does not count. Correct it and check again.',
+  'task.check.notNumber': 'that is not a number: type digits, e.g. 50, 0.25, 1/3 or 1.89·10⁻³',
 
   'author.open': 'Make an exercise from this view',
   'author.heading': 'Make an exercise',
