@@ -1,5 +1,5 @@
 // German as German line geometry writes it: the table of terms in the book (docs/src/guide/
-// languages.md, between its "terms" markers) is read, and every German text of the page and of
+// languages.md, between its "german terms" markers) is read, and every German text of the page and of
 // the built-in exercises is held to it — the words the table rules out never appear (a word the
 // paper's own caption uses stays in the captions the page quotes), and a term given with its
 // synonym ("Kehllinie (Striktionslinie)") is introduced that way somewhere.
@@ -14,7 +14,7 @@ const BOOK = new URL('../../docs/src/guide/languages.md', import.meta.url);
 /** The table's rows: the German term and the words not to use (and whether captions may). */
 function terms() {
   const text = readFileSync(BOOK, 'utf8');
-  const block = /<!-- terms:begin -->([\s\S]*?)<!-- terms:end -->/.exec(text)?.[1] ?? '';
+  const block = /<!-- german terms [^>]*-->([\s\S]*?)<!-- end of german terms -->/.exec(text)?.[1] ?? '';
   return block
     .split('\n')
     .filter((line) => line.startsWith('|') && !/^\|\s*(English|---)/.test(line))
