@@ -319,7 +319,10 @@ test('"What bending keeps": the δ the student reads is δ of the surface, not d
     const middle = Math.floor((n - 2) / 2);
     const exact = analytic.distribution(Float64Array.of((u[middle] + u[middle + 1]) / 2))[0];
     assert.ok(Math.abs(exact) > 0.5, `exact δ ${exact} is far from 0`);
-    assert.ok(Math.sign(shown) === Math.sign(exact) && Math.abs(shown - exact) < 0.05 * Math.abs(exact), `shown ${shown}, exact ${exact}`);
+    assert.ok(
+      Math.sign(shown) === Math.sign(exact) && Math.abs(shown - exact) < 0.05 * Math.abs(exact),
+      `shown ${shown}, exact ${exact}`,
+    );
   } finally {
     analytic.free();
   }
@@ -328,7 +331,9 @@ test('"What bending keeps": the δ the student reads is δ of the surface, not d
 test('"A close scheme in one step": exactly the two butterfly variants pass, and the hints say so', () => {
   const task = /** @type {import('../../www/task/format.js').Task} */ (builtInTask('congruence-scheme'));
   const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === task.scene));
-  const schemes = /** @type {any} */ (scene.params.find((p) => p.key === 'scheme')).options().map((/** @type {string[]} */ o) => o[0]);
+  const schemes = /** @type {any} */ (scene.params.find((p) => p.key === 'scheme'))
+    .options()
+    .map((/** @type {string[]} */ o) => o[0]);
   const passing = schemes.filter((/** @type {string} */ scheme) => check(task, { params: { scheme } }).solved);
   assert.deepEqual(passing.sort(), ['butterfly', 'diagonal']);
   assert.ok(task.hints.some((h) => /both butterfly variants pass/i.test(h.en)));

@@ -19,7 +19,10 @@ function terms() {
     .split('\n')
     .filter((line) => line.startsWith('|') && !/^\|\s*(English|---)/.test(line))
     .map((line) => {
-      const [english, german, not] = line.split('|').slice(1, 4).map((c) => c.trim());
+      const [english, german, not] = line
+        .split('|')
+        .slice(1, 4)
+        .map((c) => c.trim());
       const caption = /\(but in the paper's caption\)/.test(not);
       const words = not
         .replace(/\(but in the paper's caption\)/, '')
@@ -70,7 +73,8 @@ test('no German text uses a word the table rules out (the paper’s captions may
       const first = `[${word[0].toLowerCase()}${word[0].toUpperCase()}]`;
       const pattern = new RegExp(`(^|[^\\p{L}])${first}${escaped}`, 'u');
       for (const [key, text] of texts)
-        if (pattern.test(text.replace(/<[^>]+>|\{[^}]*\}/g, '')) && !(caption && isCaption(key))) wrong.push(`${key}: "${word}"`);
+        if (pattern.test(text.replace(/<[^>]+>|\{[^}]*\}/g, '')) && !(caption && isCaption(key)))
+          wrong.push(`${key}: "${word}"`);
     }
   assert.deepEqual(wrong, []);
 });

@@ -24,8 +24,9 @@ function turnsAsSaid(turns) {
   const others = Object.entries(turns).filter(([k]) => k !== 'linear');
   const { linear, averaged } = turns;
   return (
-    others.every(([, q]) => linear.maxAngleStep < q.maxAngleStep && linear.maxSecondDifference > q.maxSecondDifference) &&
-    others.every(([k, q]) => k === 'averaged' || averaged.maxSecondDifference < q.maxSecondDifference)
+    others.every(
+      ([, q]) => linear.maxAngleStep < q.maxAngleStep && linear.maxSecondDifference > q.maxSecondDifference,
+    ) && others.every(([k, q]) => k === 'averaged' || averaged.maxSecondDifference < q.maxSecondDifference)
   );
 }
 

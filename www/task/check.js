@@ -39,7 +39,18 @@ export function measuresOf(/** @type {import('../scene.js').Built | null} */ bui
 
 /** Superscript digits and signs, as the readout writes a power of ten ("10⁻³"). */
 const SUPERSCRIPTS = /** @type {Record<string, string>} */ ({
-  '⁰': '0', '¹': '1', '²': '2', '³': '3', '⁴': '4', '⁵': '5', '⁶': '6', '⁷': '7', '⁸': '8', '⁹': '9', '⁻': '-', '⁺': '+',
+  '⁰': '0',
+  '¹': '1',
+  '²': '2',
+  '³': '3',
+  '⁴': '4',
+  '⁵': '5',
+  '⁶': '6',
+  '⁷': '7',
+  '⁸': '8',
+  '⁹': '9',
+  '⁻': '-',
+  '⁺': '+',
 });
 
 /**

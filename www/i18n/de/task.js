@@ -61,7 +61,8 @@ export default {
   'task.error.unknownValue': 'die Szene berechnet keinen Wert „{value}“ (genannt in {where})',
   'task.error.noExact':
     'die Szene „{scene}“ hat keine exakte Kurve, mit der eine eingegebene Formel verglichen werden könnte',
-  'task.notCounted': 'Eine Antwort war nicht lesbar (siehe oben): Diese Prüfung zählt nicht. Verbessern Sie sie und prüfen Sie erneut.',
+  'task.notCounted':
+    'Eine Antwort war nicht lesbar (siehe oben): Diese Prüfung zählt nicht. Verbessern Sie sie und prüfen Sie erneut.',
   'task.check.notNumber': 'das ist keine Zahl: Geben Sie Ziffern ein, z. B. 50, 0,25, 1/3 oder 1,89·10⁻³',
   'task.check.noAnswer': 'noch keine Antwort',
 
