@@ -38,7 +38,7 @@ function germanTexts() {
   /** @type {Array<[string, string]>} */
   const out = Object.entries(/** @type {Record<string, string>} */ (de));
   const walk = (/** @type {unknown} */ value, /** @type {string} */ path) => {
-    if (Array.isArray(value)) value.forEach((v, i) => walk(v, `${path}[${i}]`));
+    if (Array.isArray(value)) for (const [i, v] of value.entries()) walk(v, `${path}[${i}]`);
     else if (value && typeof value === 'object')
       for (const [k, v] of Object.entries(value)) {
         if (k === 'de' && typeof v === 'string') out.push([path, v]);
