@@ -80,6 +80,9 @@ class View(anywidget.AnyWidget):
     )
     _rev = t.Int(0).tag(sync=True)
 
+    #: the last error the view reported (None once a change of Python's is shown without one)
+    error: RuledlabError | None = None
+
     def __init__(self, **kwargs: Any) -> None:
         self._from_view = False
         self._shown_rev = -1
@@ -88,8 +91,7 @@ class View(anywidget.AnyWidget):
         self._figures: dict[str, Figure] = {}
         self._on_check: list[Callable[[dict[str, Any]], Any]] = []
         self._on_error: list[Callable[[RuledlabError], Any]] = []
-        #: the last error the view reported (None once a change of Python's is shown without one)
-        self.error: RuledlabError | None = None
+        self.error = None
         super().__init__(**kwargs)
         self.on_msg(self._message)
 
