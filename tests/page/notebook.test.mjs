@@ -239,6 +239,13 @@ test('the example notebook runs in JupyterLab, with data both ways', { timeout: 
     await page.waitForTimeout(500);
     assert.match(await run(22, /checks/), /\('check', True, 1, 1\)/);
     await grab(page.locator('.jp-NotebookPanel:not(.lm-mod-hidden)'), 'notebook-page');
+    // what the cells printed, for people to read
+    const outputs = [];
+    for (let i = 0; i < count; i++) {
+      const area = cells.nth(i).locator('.jp-OutputArea');
+      if (await area.count()) outputs.push(`[${i}] ${await area.evaluate((e) => e.textContent)}`);
+    }
+    writeFileSync(join(ARTIFACTS, 'notebook-outputs.txt'), outputs.join('\n'));
     assert.deepEqual(
       problems.filter((p) => !/favicon|api\/(kernels|sessions|lab)/.test(p)),
       [],
