@@ -238,6 +238,11 @@ test('the example notebook runs in JupyterLab, with data both ways', { timeout: 
     await check.click();
     await page.waitForTimeout(500);
     assert.match(await run(22, /checks/), /\('check', True, 1, 1\)/);
+    // a figure left as a cell's last line shows in its output when it arrives
+    await run(24, /^bending\.png\(scale=1\)$/);
+    const image = cells.nth(24).locator('.jp-OutputArea img');
+    await image.waitFor({ timeout: 30000 });
+    assert.ok((await image.evaluate((img) => /** @type {HTMLImageElement} */ (img).naturalWidth)) > 200);
     await grab(page.locator('.jp-NotebookPanel:not(.lm-mod-hidden)'), 'notebook-page');
     // what the cells printed, for people to read
     const outputs = [];
