@@ -31,8 +31,17 @@ class Figure:
         if content.get("error"):
             self._future.set_exception(RuledlabError.from_detail(content["error"]))
         else:
-            value: str | bytes = bytes(buffers[0]) if self.kind == "png" else str(content.get("text", ""))
-            if self.path is not None:
+            value: Any
+            if self.kind == "layers":
+                import numpy as np
+
+                value = [
+                    {**layer, "points": np.frombuffer(bytes(b), dtype="<f4").astype(float).reshape(-1, 3)}
+                    for layer, b in zip(content.get("layers") or [], buffers)
+                ]
+            else:
+                value = bytes(buffers[0]) if self.kind == "png" else str(content.get("text", ""))
+            if self.path is not None and self.kind != "layers":
                 if isinstance(value, bytes):
                     self.path.write_bytes(value)
                 else:

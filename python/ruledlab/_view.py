@@ -248,6 +248,12 @@ class View(anywidget.AnyWidget):
         """The view as a PNG (``scale`` 1, 2 or 4 times its size); ``await`` it for the bytes."""
         return self._figure("png", path, {"scale": scale, "legend": legend})
 
+    def layers(self) -> Figure:
+        """What the view draws, as the core computed it: ``await view.layers()`` gives a list of
+        ``{kind, style, points}`` (``points`` an (n, 3) array: a segments layer's ends in pairs, a
+        polyline's points, a mesh's vertices), e.g. the striction polygon as style ``striction``."""
+        return self._figure("layers", None, {})
+
     # --- callbacks
 
     def on_check(self, fn: Callable[[dict[str, Any]], Any]) -> Callable[[dict[str, Any]], Any]:

@@ -271,7 +271,16 @@ async function render({ model, el }) {
     const { id, format, options = {} } = msg;
     try {
       await queue;
-      if (format === 'png') {
+      if (format === 'layers') {
+        // what the view draws, as the core computed it (f32 points: segments' ends, polylines, meshes' vertices)
+        const layers = view.view?.session.built?.layers ?? [];
+        const buffers = layers.map((l) => l.positions.slice().buffer);
+        model.send(
+          { kind: 'export', id, layers: layers.map((l) => ({ kind: l.kind, style: l.style })) },
+          undefined,
+          buffers,
+        );
+      } else if (format === 'png') {
         const blob = await view.exportPNG(options);
         model.send({ kind: 'export', id }, undefined, [await blob.arrayBuffer()]);
       } else {

@@ -300,3 +300,26 @@ def test_the_books_and_the_notebooks_python_reads_and_names_what_exists():
             if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
                 if node.value.id in views or node.value.id == "View":
                     assert hasattr(View, node.attr), f"{where}: View has no {node.attr}"
+
+
+def test_the_layers_the_view_draws_arrive_as_arrays():
+    view = View(scene="striction")
+    wire = Wire(view)
+
+    async def run():
+        layers = view.layers()
+        ask = wire.messages[-1][0]
+        assert (ask["kind"], ask["format"]) == ("export", "layers")
+        striction = np.array([[0, 0, 0], [1, 0.5, 0.25]], dtype="<f4")
+        rulings = np.arange(12, dtype="<f4")
+        kinds = [{"kind": "polyline", "style": "striction"}, {"kind": "segments", "style": "ruling"}]
+        buffers = [memoryview(striction.tobytes()), memoryview(rulings.tobytes())]
+        asyncio.get_running_loop().call_later(0.02, answer, view, {**ask, "layers": kinds}, buffers)
+        got = await layers
+        assert [(g["kind"], g["style"], g["points"].shape) for g in got] == [
+            ("polyline", "striction", (2, 3)),
+            ("segments", "ruling", (4, 3)),
+        ]
+        assert np.array_equal(got[0]["points"], striction.astype(float))
+
+    asyncio.run(run())

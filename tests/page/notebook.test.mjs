@@ -243,6 +243,8 @@ test('the example notebook runs in JupyterLab, with data both ways', { timeout: 
     const image = cells.nth(24).locator('.jp-OutputArea img');
     await image.waitFor({ timeout: 30000 });
     assert.ok((await image.evaluate((img) => /** @type {HTMLImageElement} */ (img).naturalWidth)) > 200);
+    // the striction polygon the view computed, in Python
+    assert.match(await run(26, /await surface\.layers\(\)/), /^\(2\d, 3\) True$/m);
     await grab(page.locator('.jp-NotebookPanel:not(.lm-mod-hidden)'), 'notebook-page');
     // what the cells printed, for people to read
     const outputs = [];
