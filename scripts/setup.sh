@@ -6,7 +6,9 @@
 # without its recommends: just under a minute and ~85 packages, Tcl/Tk and Python among them; with
 # the recommends it would pull a realtime kernel), and the programs the figure exports are checked
 # with: LaTeX (pdflatex and lualatex with TikZ), poppler's pdftoppm and librsvg's rsvg-convert.
-# With --browser or --docs also mdBook, which builds the book (scripts/docs.sh).
+# With --browser or --docs also mdBook, which builds the book (scripts/docs.sh). With --browser
+# also a Python virtual environment .venv/ (JupyterLab, anywidget, NumPy, pytest, setuptools from
+# PyPI) for the notebook widget in python/ and its test in a real JupyterLab.
 # Only package registries are used; nothing downloads a binary or a browser of its own.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -84,5 +86,23 @@ if [ "${1:-}" = "--browser" ]; then
   if ! command -v geckodriver >/dev/null; then
     say "installing geckodriver 0.37 from crates.io (about two minutes once)"
     cargo install geckodriver --version 0.37.0 --locked
+  fi
+fi
+
+# The notebook widget (python/): its wheel is built and tested with these, and JupyterLab runs the
+# example notebook (tests/page/notebook.test.mjs). Remade only when the list below changes.
+if [ "${1:-}" = "--browser" ]; then
+  PY_PACKAGES="jupyterlab==4.6.6 anywidget==0.11.0 numpy==2.4.6 pytest==9.2.0 setuptools==84.2.1"
+  if [ "$(cat .venv/ruledlab-packages 2>/dev/null || true)" != "$PY_PACKAGES" ]; then
+    if ! python3 -c 'import venv, ensurepip' 2>/dev/null; then
+      say "installing Debian's python3-venv"
+      sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
+      $sudo apt-get update -qq
+      DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq python3-venv >/dev/null
+    fi
+    say "making the Python environment .venv/ (JupyterLab, anywidget, NumPy, pytest; about a minute once)"
+    python3 -m venv .venv
+    .venv/bin/python -m pip install -q --disable-pip-version-check $PY_PACKAGES
+    echo "$PY_PACKAGES" > .venv/ruledlab-packages
   fi
 fi

@@ -4,7 +4,9 @@
 #      JavaScript linter and formatter, biome.json) over www/, scripts, tests and benches
 #   2. native Rust: unit, property and integration tests, doctests (the README's Rust snippets
 #      among them), benches in test mode
-#   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc types
+#   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc types;
+#      the Python package for notebooks (python/) built into a wheel with dist/ruledlab-embed.js
+#      inside, installed into .venv/ and its pytest tests
 #   4. docs: every JS/TS snippet of the book and the README verbatim under tsc --strict against
 #      the package's declarations; the site (book, typedoc, rustdoc) built into site/; every
 #      link and anchor of it checked
@@ -12,7 +14,7 @@
 #   5. wasm: the same integration tests and the bindings tests in headless Chromium and in
 #      headless Firefox ESR (geckodriver)
 #   6. Node: the built package's JS API; the page in headless Chromium (playwright-core driving
-#      Debian's chromium)
+#      Debian's chromium), and the example notebook run in a real JupyterLab (.venv/)
 #   7. short runs of the cargo-fuzz targets (fuzz/); a smoke test of every scene in Firefox ESR,
 #      headed under Xvfb (headless Firefox has no WebGL2 here)
 # Exits non-zero on the first failing step, or after the lanes when one of them failed.
@@ -45,6 +47,10 @@ bash scripts/build.sh
 step "types: tsc --strict over www/, scripts and tests"
 npx tsc -p tsconfig.json
 npx tsc -p tsconfig.tests.json
+
+step "python: the notebook widget's wheel (python/ into dist/python/, installed into .venv/), pytest"
+bash scripts/wheel.sh
+.venv/bin/python -m pytest -q -p no:cacheprovider python/tests
 
 step "docs: the snippets of the book and the README; the site (book, typedoc, rustdoc); its links"
 node tests/types/snippets.mjs

@@ -28,7 +28,7 @@
 // a page. Disconnecting the element releases its WebGL context and every wasm object it made.
 import { Stage } from './stage.js';
 import { SCENES } from './scenes/index.js';
-import { readParams, defaults } from './scene.js';
+import { readParams, readSome, defaults } from './scene.js';
 import { readCamera, writeCamera } from './state.js';
 import { decodeInput, encodeInput, fitsSets, linkableInput } from './edit/input.js';
 import { toScreen } from './edit/geometry.js';
@@ -376,12 +376,7 @@ export class RuledView extends HTMLElement {
         if (reason === 'input' && this.stage?.scene) {
           const stage = this.stage;
           const scene = this.stage.scene;
-          const readouts = (stage.session.built?.readouts ?? []).map(({ label, value }) => ({
-            key: label,
-            label: plainRich(stage.i18n.t(label)),
-            value: typeof value === 'number' ? value : stage.i18n.t(String(value)),
-          }));
-          const detail = { scene: scene.id, data: stage.currentInput() ?? {}, readouts };
+          const detail = { scene: scene.id, data: stage.currentInput() ?? {}, readouts: this.readouts() };
           this.dispatchEvent(new CustomEvent(ended ? 'change' : 'input', { detail }));
         }
         if (reason === 'camera' && this.stage) {
@@ -531,13 +526,44 @@ export class RuledView extends HTMLElement {
       this.dispatchEvent(
         new CustomEvent('error', {
           detail: {
-            message: t(n.note, n.vars),
+            message: t(n.note, { key: n.key, ...n.vars }),
             code: 'invalid-argument',
             details: { option, reason: n.note, ...(option === 'params' ? { param: n.key } : {}) },
           },
         }),
       );
     }
+  }
+
+  /**
+   * The numbers the readout shows now (an exercise's hidden ones too), as `change` gives them:
+   * the label's i18n key, its text in the element's language, and the value (a number, or a word).
+   * @returns {EditDetail['readouts']}
+   */
+  readouts() {
+    const stage = this.stage;
+    if (!stage) return [];
+    const { t } = stage.i18n;
+    return (stage.session.built?.readouts ?? []).map(({ label, value }) => {
+      return { key: label, label: plainRich(t(label)), value: typeof value === 'number' ? value : t(String(value)) };
+    });
+  }
+
+  /**
+   * Sets the parameters named in `values` (an object, or a query string as `params` takes) as
+   * the scene's controls would: the others, the camera and an edit stay. Values are read as the
+   * `params` attribute's are; one the scene cannot take, or a name it has no parameter of, fires
+   * `error` (`invalid-argument`, `details.param`). Returns the parameters now.
+   * @param {Record<string, number | string | boolean> | string} values
+   * @returns {import('./scene.js').Params}
+   */
+  setParams(values) {
+    const stage = this.stage;
+    if (!stage?.scene) throw Object.assign(new Error('ruled-view: no scene shown yet'), { code: 'invalid-argument' });
+    const { params, notes } = readSome(stage.scene, values);
+    for (const [key, value] of Object.entries(params)) stage.setParam(key, value);
+    this.refused(notes.map((n) => ({ ...n, note: n.note.replace(/^note\./, 'element.note.') })));
+    return { ...stage.params };
   }
 
   /** The scene's defaults and its fitted view. */

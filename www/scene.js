@@ -277,6 +277,28 @@ export function readParams(scene, query) {
 }
 
 /**
+ * The parameters named in `values` (an object, or a query string), read as a link's are: those
+ * of `scene` with their values (one that cannot be used falls back as in readParams, with a
+ * note), and a note `note.unknownParam` for each name that is not a parameter of `scene`.
+ * @param {Scene} scene
+ * @param {Record<string, number | string | boolean> | string} values
+ * @returns {{params: Params, notes: Array<{key: string, note: string, vars?: Record<string, string>}>}}
+ */
+export function readSome(scene, values) {
+  const entries = typeof values === 'string' ? values : Object.entries(values).map(([k, v]) => [k, String(v)]);
+  const query = new URLSearchParams(entries);
+  const read = readParams(scene, query);
+  const known = scene.params.map((p) => p.key);
+  const params = Object.fromEntries(known.filter((k) => query.has(k)).map((k) => [k, read.params[k]]));
+  const unknown = [...new Set(query.keys())].filter((k) => !known.includes(k));
+  const vars = (/** @type {string} */ key) => ({ key, known: known.join(', ') });
+  return {
+    params,
+    notes: [...read.notes, ...unknown.map((key) => ({ key, note: 'note.unknownParam', vars: vars(key) }))],
+  };
+}
+
+/**
  * The scene's defaults with `chosen` parameters and what those choices set besides (Param.sets:
  * a preset fills the formula fields), as choosing them in the controls does; values chosen
  * explicitly win over what a choice sets.

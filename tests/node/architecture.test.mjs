@@ -130,7 +130,8 @@ test('ARCHITECTURE.md names only files that exist', () => {
   const walk = (dir) =>
     readdirSync(join(ROOT, dir)).flatMap((name) => {
       const path = dir ? `${dir}/${name}` : name;
-      if (['node_modules', 'target', 'pkg', 'dist', 'site', '.git', 'corpus', 'artifacts'].includes(name)) return [];
+      if (['node_modules', 'target', 'pkg', 'dist', 'site', '.git', 'corpus', 'artifacts', '.venv'].includes(name))
+        return [];
       return statSync(join(ROOT, path)).isDirectory() ? walk(path) : [path];
     });
   const files = walk('');

@@ -143,3 +143,48 @@ test('the page in an iframe with #embed&controls shows the view with its control
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('<ruled-view> setParams() sets named parameters as the controls would, keeping the camera; readouts() reads the readout', async () => {
+  const { page, problems } = await session.open('examples/web-component.html', { wait: false });
+  await allDrawn(page);
+  const left = page.locator('#left');
+  // a camera the reader chose (the fitted one is fitted again when the view's size changes)
+  await left.evaluate((v) => (v.camera = '0.3,0.4,12,0,0,0.5'));
+  const camera = await left.evaluate((v) => v.camera);
+  await page.waitForTimeout(200);
+  const before = await grab(left, 'set-params-before');
+  const now = await left.evaluate((v) => v.setParams({ t: 0.6, n: 30 }));
+  assert.deepEqual([now.t, now.n, now.surface], [0.6, 30, 'helical']);
+  assert.equal(await left.evaluate((v) => v.shadowRoot.querySelector('.rl-controls [name="t"]').value), '0.6');
+  assert.equal(await left.evaluate((v) => v.camera), camera, 'the camera stays');
+  await page.waitForTimeout(200);
+  assert.ok(countChanged(before, await grab(left, 'set-params-after')) > 1000);
+  // the readout as shown: every label's text, a value each
+  const readouts = await left.evaluate((v) => v.readouts());
+  const shown = await left.evaluate((v) => v.shadowRoot.querySelector('.rl-readout').textContent);
+  assert.ok(readouts.length > 0);
+  for (const r of readouts) {
+    assert.match(r.key, /^[a-z]+(\.[A-Za-z0-9]+)+$/);
+    assert.ok(shown.includes(r.label), `“${r.label}” is in the readout`);
+    assert.ok(typeof r.value === 'number' || typeof r.value === 'string');
+  }
+  // a value it cannot take and a name it has no parameter of: an error event each, in words
+  const errors = await left.evaluate((v) => {
+    const seen = [];
+    v.addEventListener('error', (e) => seen.push(e.detail));
+    v.setParams('t=abc&zz=1');
+    return seen;
+  });
+  assert.deepEqual(
+    errors.map((e) => [e.code, e.details.param]),
+    [
+      ['invalid-argument', 't'],
+      ['invalid-argument', 'zz'],
+    ],
+  );
+  assert.match(errors[0].message, /^The value of “t” in the params attribute is not a number/);
+  assert.match(errors[1].message, /no parameter “zz”; its parameters are: surface, layout, n, t, ghost/);
+  assert.equal(await left.evaluate((v) => v.view.params.n), 30, 'the others stay');
+  assert.deepEqual(problems, []);
+  await page.close();
+});

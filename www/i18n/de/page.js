@@ -99,6 +99,7 @@ export default {
   'element.note.unknownChoice':
     'Der Wert von „{key}“ im Attribut params ist keine der Auswahlmöglichkeiten; es gilt die Voreinstellung.',
   'element.note.tooLong': 'Der Wert von „{key}“ im Attribut params ist zu lang; es gilt die Voreinstellung.',
+  'element.note.unknownParam': 'Diese Szene hat keinen Parameter „{key}“; ihre Parameter sind: {known}.',
   'element.note.badInput': 'Das Attribut input passt nicht zu dieser Szene; die eingebaute Eingabe wird gezeigt.',
   'element.badCamera':
     'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',

@@ -97,6 +97,7 @@ export default {
   'element.note.unknownChoice':
     'The value of “{key}” in the params attribute is not one of the choices; its default is used.',
   'element.note.tooLong': 'The value of “{key}” in the params attribute is too long; its default is used.',
+  'element.note.unknownParam': 'This scene has no parameter “{key}”; its parameters are: {known}.',
   'element.note.badInput': 'The input attribute does not fit this scene; the built-in input is shown.',
   'element.badCamera':
     'The camera attribute could not be read (six numbers: yaw, pitch, distance, x, y, z); the view is fitted to the scene.',

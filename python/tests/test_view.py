@@ -1,0 +1,325 @@
+"""Unit tests of the package: what a View sends and how it takes the view's answers.
+
+The view's side is played here by calling the messages it sends (``_message``) and reading what
+the widget sends (its ``_send`` and ``send`` captured); the real view is exercised in a real
+JupyterLab by tests/page/notebook.test.mjs.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import gzip
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from ipywidgets.widgets.widget import _remove_buffers
+
+import ruledlab
+from ruledlab import RuledlabError, View
+from ruledlab._script import script_path
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+def hyperboloid(n: int = 8, phi: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
+    u = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    a = np.stack([np.cos(u), np.sin(u), -np.ones(n)], axis=1)
+    b = np.stack([np.cos(u + phi), np.sin(u + phi), np.ones(n)], axis=1)
+    return a, b
+
+
+class Wire:
+    """What a view sends: state updates (``_send``) and custom messages (``send``)."""
+
+    def __init__(self, view: View):
+        self.updates: list[tuple[dict, list]] = []
+        self.messages: list[tuple[dict, list]] = []
+        view._send = lambda msg, buffers=None: self.updates.append((msg, list(buffers or [])))
+        view.send = lambda content, buffers=None: self.messages.append((content, list(buffers or [])))
+
+
+def answer(view: View, content: dict, buffers: list | None = None) -> None:
+    """A message of the view's front end to the kernel."""
+    view._message(view, content, buffers or [])
+
+
+def test_segments_go_as_one_binary_buffer_of_doubles():
+    a, b = hyperboloid(8)
+    view = View.from_segments(a, b)
+    assert view.scene == "data"
+    state, paths, buffers = _remove_buffers(view.get_state())
+    assert ["_source", "segments"] in paths
+    raw = bytes(buffers[paths.index(["_source", "segments"])])
+    assert len(raw) == 8 * 6 * 8
+    sent = np.frombuffer(raw, dtype="<f8").reshape(8, 6)
+    assert np.array_equal(sent[:, :3], a) and np.array_equal(sent[:, 3:], b)
+    # nothing of the data is a JSON list
+    assert "segments" not in json.dumps(state["_source"])
+
+
+def test_a_grid_goes_row_by_row_with_its_size():
+    s, t = np.meshgrid(np.arange(3.0), np.arange(4.0), indexing="ij")
+    p = np.stack([s, t, np.zeros_like(s)], axis=2)
+    q = p + np.array([0.0, 0.0, 1.0])
+    view = View.from_grid(p, q)
+    state, paths, buffers = _remove_buffers(view.get_state())
+    assert (state["_source"]["rows"], state["_source"]["cols"]) == (3, 4)
+    lines = np.frombuffer(bytes(buffers[paths.index(["_source", "segments"])]), dtype="<f8").reshape(3, 4, 6)
+    assert np.array_equal(lines[..., :3], p) and np.array_equal(lines[..., 3:], q)
+
+
+@pytest.mark.parametrize(
+    ("a", "b", "option"),
+    [
+        (np.zeros((4, 2)), np.zeros((4, 2)), "a"),
+        (np.zeros((4, 3)), np.zeros((5, 3)), "b"),
+        ([["x", 1, 2]], [[0, 1, 2]], "a"),
+        (np.zeros(3), np.zeros(3), "a"),
+    ],
+)
+def test_arrays_of_the_wrong_shape_are_refused_with_a_code(a, b, option):
+    with pytest.raises(RuledlabError) as e:
+        View.from_segments(a, b)
+    assert e.value.code == "invalid-argument"
+    assert e.value.details["option"] == option
+    with pytest.raises(RuledlabError):
+        View.from_grid(np.zeros((2, 3)), np.zeros((2, 3)))
+
+
+def test_a_change_of_pythons_goes_with_its_revision_in_one_message():
+    view = View(scene="isometry", params={"t": 0.5})
+    wire = Wire(view)
+    rev = view._rev
+    view.params = {"t": np.float64(0.75), "n": np.int64(30), "ghost": np.bool_(False)}
+    assert view._rev == rev + 1
+    assert len(wire.updates) == 1
+    state = wire.updates[0][0]["state"]
+    assert state["params"] == {"t": 0.75, "n": 30, "ghost": False}
+    assert state["_rev"] == rev + 1
+    assert type(view.params["n"]) is int and type(view.params["ghost"]) is bool
+    view.camera = (0.5, 0.25, 4, 0, 0, 1)
+    view.height = 560
+    assert (view.camera, view.height, view._rev) == ("0.5,0.25,4,0,0,1", "560", rev + 3)
+    with pytest.raises(RuledlabError) as e:
+        view.params = {"t": [1, 2]}
+    assert (e.value.code, e.value.details["param"]) == ("invalid-argument", "t")
+
+
+def test_what_the_view_reports_becomes_the_traits_without_a_revision():
+    a, b = hyperboloid(4)
+    view = View.from_segments(a, b)
+    wire = Wire(view)
+    rev = view._rev
+    ends = np.hstack([a, b]).reshape(-1, 3)
+    readouts = [{"key": "readout.rulings", "label": "rulings", "value": 4}]
+    answer(
+        view,
+        {
+            "kind": "state",
+            "state": {"scene": "data", "params": {"strip": False}, "readouts": readouts, "_rev": 99},
+            "input": ["rulings"],
+        },
+        [memoryview(ends.astype("<f8").tobytes())],
+    )
+    assert view.params == {"strip": False} and view.readouts == readouts
+    assert np.array_equal(view.data["rulings"], ends)
+    assert view._rev == rev, "the view's state is not a change of Python's (and cannot set the revision)"
+    # (ipywidgets tells other front ends; never the data back to the view that sent it)
+    assert all("data" not in msg["state"] and "_rev" not in msg["state"] for msg, _ in wire.updates)
+    # a camera moved by the reader
+    answer(view, {"kind": "state", "state": {"camera": "1,0.5,5,0,0,0"}, "input": None})
+    assert view.camera == "1,0.5,5,0,0,0" and view._rev == rev
+
+
+def test_setting_data_moves_the_handles_and_is_checked():
+    view = View(scene="data")
+    wire = Wire(view)
+    view.data = {"rulings": np.zeros((4, 3))}
+    msg, buffers = wire.updates[-1]
+    assert msg["buffer_paths"] == [["data", "rulings"]] and len(bytes(buffers[0])) == 4 * 3 * 8
+    assert msg["state"]["_rev"] == view._rev
+    with pytest.raises(RuledlabError):
+        view.data = {"rulings": np.zeros((4, 2))}
+
+
+def test_wait_raises_the_cores_error_and_the_view_works_on():
+    a, _ = hyperboloid(6)
+
+    async def run():
+        view = View.from_segments(a, a)
+        said = []
+        view.on_error(said.append)
+        rev = view._rev
+        error = {
+            "message": "RuledSurface.fromSegments: ruling 0 has zero length",
+            "code": "degenerate",
+            "details": {"index": 0, "reason": "zeroLength"},
+        }
+        asyncio.get_running_loop().call_later(0.05, answer, view, {"kind": "shown", "rev": rev, "errors": [error]})
+        with pytest.raises(RuledlabError) as e:
+            await view.wait(timeout=5)
+        assert e.value.code == "degenerate"
+        assert str(e.value) == error["message"] and e.value.details["index"] == 0
+        assert view.error is not None and view.error.code == "degenerate"
+        assert [s.code for s in said] == ["degenerate"]
+        # good rulings: the same view shows them, the error is gone
+        view.set_segments(*hyperboloid(6))
+        assert view._rev == rev + 1
+        loop = asyncio.get_running_loop()
+        loop.call_later(0.05, answer, view, {"kind": "shown", "rev": rev + 1, "errors": []})
+        assert await view.wait(timeout=5) is view
+        assert view.error is None
+        # an error the view finds later (a computation in a worker) is kept and said
+        answer(view, {"kind": "error", "error": {"message": "too many", "code": "too-large"}})
+        assert view.error.code == "too-large" and said[-1].code == "too-large"
+
+    asyncio.run(run())
+
+
+def test_wait_says_when_no_view_answers():
+    async def run():
+        view = View(scene="striction")
+        with pytest.raises(TimeoutError, match="is it displayed"):
+            await view.wait(timeout=0.1)
+
+    asyncio.run(run())
+
+
+def test_figures_arrive_as_text_bytes_and_files(tmp_path):
+    view = View(scene="striction")
+    wire = Wire(view)
+
+    async def run():
+        svg = view.svg(tmp_path / "fig.svg", bw=True)
+        png = view.png(tmp_path / "fig.png", scale=2)
+        tikz = view.tikz(width=8)
+        asks = [m for m, _ in wire.messages]
+        assert [(m["kind"], m["format"]) for m in asks] == [("export", "svg"), ("export", "png"), ("export", "tikz")]
+        assert asks[0]["options"] == {"bw": True} and asks[1]["options"] == {"scale": 2, "legend": True}
+        assert not svg.done()
+        with pytest.raises(RuntimeError):
+            svg.result()
+        loop = asyncio.get_running_loop()
+        loop.call_later(0.02, answer, view, {"kind": "export", "id": asks[0]["id"], "text": "<svg/>"})
+        loop.call_later(0.02, answer, view, {"kind": "export", "id": asks[1]["id"]}, [memoryview(b"\x89PNG..")])
+        error = {"message": "ruled-view: not connected", "code": "invalid-argument"}
+        loop.call_later(0.02, answer, view, {"kind": "export", "id": asks[2]["id"], "error": error})
+        assert await svg == "<svg/>"
+        assert await png == b"\x89PNG.."
+        with pytest.raises(RuledlabError, match="not connected"):
+            await tikz
+        # a second answer (the view shown twice) changes nothing
+        answer(view, {"kind": "export", "id": asks[0]["id"], "text": "<other/>"})
+        assert svg.result() == "<svg/>"
+
+    asyncio.run(run())
+    assert (tmp_path / "fig.svg").read_text() == "<svg/>"
+    assert (tmp_path / "fig.png").read_bytes() == b"\x89PNG.."
+
+
+def test_the_first_view_gets_the_bundled_script_gzipped():
+    view = View()
+    wire = Wire(view)
+    answer(view, {"kind": "embed"})
+    content, buffers = wire.messages[-1]
+    assert content == {"kind": "embed"}
+    script = gzip.decompress(bytes(buffers[0]))
+    assert script == script_path().read_bytes()
+    assert b"ruled-view" in script and len(buffers[0]) < len(script) / 2
+    # the installed package carries it
+    assert script_path().parent.name == "static"
+
+
+def test_exercise_checks_reach_python():
+    view = View(task="striction-accuracy")
+    checks = []
+
+    @view.on_check
+    def heard(report):
+        checks.append(report)
+
+    report = {"task": "striction-accuracy", "solved": True, "passed": 1, "of": 1, "conditions": []}
+    answer(view, {"kind": "task", "type": "check", "report": report})
+    answer(view, {"kind": "task", "type": "solved", "report": report})
+    assert [(c["event"], c["solved"], c["task"]) for c in checks] == [
+        ("check", True, "striction-accuracy"),
+        ("solved", True, "striction-accuracy"),
+    ]
+
+
+def test_the_version_is_the_npm_packages():
+    npm = json.loads((REPO / "package.json").read_text())
+    assert ruledlab.__version__ == npm["version"]
+    assert f'version = "{npm["version"]}"' in (REPO / "python" / "pyproject.toml").read_text()
+
+
+def test_pip_installs_the_package_from_the_repository(tmp_path):
+    """`pip install ./python` (here into a folder of its own): the script comes along from dist/."""
+    target = tmp_path / "site"
+    subprocess.run(
+        [sys.executable, "-m", "pip", "install", "-q", "--disable-pip-version-check", "--no-deps",
+         "--no-build-isolation", "--target", str(target), str(REPO / "python")],
+        check=True,
+    )  # fmt: skip
+    installed = target / "ruledlab" / "static" / "ruledlab-embed.js"
+    assert installed.read_bytes() == (REPO / "dist" / "ruledlab-embed.js").read_bytes()
+    probe = "import ruledlab, ruledlab._script as s; print(ruledlab.__file__); print(s.script_path())"
+    out = subprocess.run(
+        [sys.executable, "-c", probe], cwd=tmp_path, env={"PYTHONPATH": str(target)}, capture_output=True, text=True
+    )
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.splitlines() == [str(target / "ruledlab" / "__init__.py"), str(installed)]
+
+
+def python_snippets() -> list[tuple[str, str]]:
+    """The Python of the book's chapter and the code cells of the example notebook."""
+    import re
+
+    chapter = (REPO / "docs" / "src" / "guide" / "notebooks.md").read_text()
+    out = [("notebooks.md", m) for m in re.findall(r"^```python\n(.*?)^```", chapter, flags=re.S | re.M)]
+    notebook = json.loads((REPO / "examples" / "notebook.ipynb").read_text())
+    cells = [(i, c) for i, c in enumerate(notebook["cells"]) if c["cell_type"] == "code"]
+    return out + [(f"notebook.ipynb cell {i}", "".join(c["source"])) for i, c in cells]
+
+
+def test_the_books_and_the_notebooks_python_reads_and_names_what_exists():
+    """Every snippet compiles (top-level await, as in a notebook) and uses only what a View has;
+    the notebook's cells run for real in the JupyterLab test."""
+    import ast
+
+    snippets = python_snippets()
+    assert len(snippets) >= 20
+    views = {"view", "surface", "bending", "flat", "exercise", "lines"}
+    for where, code in snippets:
+        tree = compile(code, where, "exec", flags=ast.PyCF_ONLY_AST | ast.PyCF_ALLOW_TOP_LEVEL_AWAIT)
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+                if node.value.id in views or node.value.id == "View":
+                    assert hasattr(View, node.attr), f"{where}: View has no {node.attr}"
+
+
+def test_the_layers_the_view_draws_arrive_as_arrays():
+    view = View(scene="striction")
+    wire = Wire(view)
+
+    async def run():
+        layers = view.layers()
+        ask = wire.messages[-1][0]
+        assert (ask["kind"], ask["format"]) == ("export", "layers")
+        striction = np.array([[0, 0, 0], [1, 0.5, 0.25]], dtype="<f4")
+        rulings = np.arange(12, dtype="<f4")
+        kinds = [{"kind": "polyline", "style": "striction"}, {"kind": "segments", "style": "ruling"}]
+        buffers = [memoryview(striction.tobytes()), memoryview(rulings.tobytes())]
+        asyncio.get_running_loop().call_later(0.02, answer, view, {**ask, "layers": kinds}, buffers)
+        got = await layers
+        assert [(g["kind"], g["style"], g["points"].shape) for g in got] == [
+            ("polyline", "striction", (2, 3)),
+            ("segments", "ruling", (4, 3)),
+        ]
+        assert np.array_equal(got[0]["points"], striction.astype(float))
+
+    asyncio.run(run())
