@@ -91,8 +91,9 @@ const siteUrls = {
   setup(b) {
     b.onLoad({ filter: /\.js$/ }, ({ path }) => {
       const source = readFileSync(path, 'utf8');
+      // (comments before the target, such as core.js's /* @vite-ignore */, are dropped)
       const contents = source.replace(
-        /new URL\((['"])([^'"]+)\1,\s*import\.meta\.url\)/g,
+        /new URL\((?:\/\*[^*]*\*\/\s*)*(['"])([^'"]+)\1,\s*import\.meta\.url\)/g,
         (/** @type {string} */ whole, /** @type {string} */ quote, /** @type {string} */ target) => {
           const absolute = resolve(dirname(path), target);
           const mapped = urls.get(absolute);
