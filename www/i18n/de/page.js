@@ -67,6 +67,7 @@ export default {
     'Dieser Import hat mehr als {max} Erzeugende: zu viele für den Link, und diese Seite hat hier keinen Speicher (sie wird in einem abgeschotteten Rahmen gezeigt), daher bleibt er nur, bis die Seite geschlossen wird.',
   'io.stored': 'Dieser Import hat mehr als {max} Erzeugende: Er steht im Sitzungsspeicher dieses Tabs, nicht im Link.',
   'io.exports': 'Das Gezeigte speichern',
+  'io.printWidth': 'Druckbreite der SVG- und TikZ-Abbildungen (cm)',
   'io.kind': 'Der Text enthält',
   'io.kind.auto': 'erkennen',
   'io.kind.segments': 'Strecken (Erzeugende, Geraden)',

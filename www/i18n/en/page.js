@@ -67,6 +67,7 @@ export default {
   'io.stored':
     'This import has more than {max} rulings: it is kept in this tab\u2019s session storage, not in the link.',
   'io.exports': 'Save what is shown',
+  'io.printWidth': 'Printed width of SVG and TikZ figures (cm)',
   'io.kind': 'The text holds',
   'io.kind.auto': 'recognise it',
   'io.kind.segments': 'segments (rulings, lines)',
