@@ -16,12 +16,14 @@
 // sends to browsers that accept it. What the first scene needs and what loads later is written
 // to dist/web-manifest.json (the build's test reads it). A file whose hashed name and
 // compressions are already there is not compressed again; files of older builds are removed.
-import { build } from 'esbuild';
+import { build, transform } from 'esbuild';
 import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { basename, dirname, extname, join, relative, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { brotliCompressSync, constants, gzipSync } from 'node:zlib';
+import { shellHtml, firstScript } from '../www/page/shell.js';
+import { CSS } from '../www/ui/css.js';
 
 const ROOT = resolve(fileURLToPath(new URL('..', import.meta.url)));
 const OUT = join(ROOT, 'dist/web');
@@ -64,8 +66,10 @@ function put(/** @type {string} */ path, /** @type {Uint8Array | string} */ byte
 }
 
 /** Copies a repository file into assets/ under its hashed name; returns the path under dist/web/. */
-function hashed(/** @type {string} */ source) {
-  const bytes = readFileSync(join(ROOT, source));
+function hashed(
+  /** @type {string} */ source,
+  /** @type {Uint8Array | string} */ bytes = readFileSync(join(ROOT, source)),
+) {
   const ext = extname(source);
   const path = `assets/${basename(source, ext)}-${hash(bytes)}${ext}`;
   put(path, bytes);
@@ -162,7 +166,9 @@ put(bootFile, outputs(boot)[0].contents);
 // and the chunks the entry imports announced at once (modulepreload: fetched in parallel
 // instead of one import level after the other)
 const references = {
-  'www/page/style.css': hashed('www/page/style.css'),
+  // the page's styles and the view's (ui/css.js, which the page then need not adopt): the shell
+  // is painted styled before any script runs
+  'www/page/style.css': hashed('www/page/style.css', `${readFileSync(join(ROOT, 'www/page/style.css'), 'utf8')}${CSS}`),
   'www/page/noscript.css': hashed('www/page/noscript.css'),
   'www/favicon.svg': hashed('www/favicon.svg'),
   'www/page/boot.js': bootFile,
@@ -180,6 +186,23 @@ const preloads = [
   ...initial.filter((p) => p !== entry).map((p) => `  <link rel="modulepreload" href="${p}">\n`),
 ].join('');
 if (preloads) html = html.replace(/(\n\s*<script type="module")/, `\n${preloads.trimEnd()}$1`);
+// the page's shell (www/page/shell.js) in its body, and in its head the few lines that choose what
+// the link asks for before the first paint, inline (allowed by their hash)
+const firstLines = (
+  await transform(firstScript(), { minify: true, target: 'es2020', legalComments: 'none' })
+).code.trim();
+const body = /<body>[\s\S]*<\/body>/;
+if (!body.test(html)) throw new Error('index.html has no <body>');
+html = html
+  .replace(body, `<body>\n${shellHtml()}\n</body>`)
+  // before the stylesheet: a script after it would wait for it (and the shell could be painted first)
+  .replace(/(\n\s*<link rel="stylesheet")/, `\n  <script>${firstLines}</script>$1`)
+  .replace(/<html lang="en">/, '<html lang="en" data-shell>')
+  .replace(
+    "script-src 'self'",
+    `script-src 'self' 'sha256-${createHash('sha256').update(firstLines).digest('base64')}'`,
+  );
+if (!html.includes('data-shell') || !html.includes("'sha256-")) throw new Error('index.html: the shell was not put in');
 if (/\bwww\//.test(html)) throw new Error('dist/web/index.html still names a file of www/');
 put('index.html', html);
 

@@ -15,6 +15,7 @@ export default {
     'Die Fassung in einer Datei liegt hier nicht vor: Führen Sie npm run build aus, oder verwenden Sie die heruntergeladene ruledlab.html.',
   'app.skip': 'Zu den Bedienelementen springen',
   'app.exercises': 'Aufgaben',
+  'app.menu': 'Menü',
 
   'boot.noWebgl2':
     'ruledlab konnte nicht starten: Dieser Browser (oder dieses Gerät) bietet kein WebGL2, das die 3D-Ansicht braucht. Aktuelle Versionen von Firefox, Chrome, Edge und Safari bieten es; ein Browser mit abgeschalteter Hardwarebeschleunigung unter Umständen nicht.',

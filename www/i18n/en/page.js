@@ -15,6 +15,7 @@ export default {
   'app.onefileMissing': 'The one-file build is not here: run npm run build, or use the downloaded ruledlab.html.',
   'app.skip': 'Skip to the controls',
   'app.exercises': 'Exercises',
+  'app.menu': 'Menu',
 
   'boot.noWebgl2':
     'ruledlab could not start: this browser (or this device) does not provide WebGL2, which the 3D view needs. Current Firefox, Chrome, Edge and Safari provide it; a browser with hardware acceleration turned off may not.',
