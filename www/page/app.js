@@ -72,6 +72,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       task: stage.task ? taskLink(stage.task, (id) => builtInTask(id) !== null) : null,
     };
   const address = pageAddress({ oneFile, state: shown });
+  await nextTask();
+  // (the viewer's WebGL context and the compilation of its shaders start here)
   const stage = new Stage(chrome.main, {
     lang,
     page: true,
@@ -118,6 +120,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       address.save('push');
       localize();
     });
+  await nextTask();
   const data = dataPanel(stage, {
     i18n: () => i18n,
     // an exercise file, pasted or uploaded: opened as the exercise (its reason when it cannot be)
@@ -299,7 +302,18 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     if (heading.innerHTML !== wanted.innerHTML) heading.replaceChildren(...wanted.childNodes);
   }
   await Promise.all([core, afterPaint()]);
+  // the first scene in two frames: its controls, text and numbers (the page's layout and paint),
+  // then the figure (the buffers' upload and the first WebGL frame) — the viewer's drawing held
+  // until the first is painted, so that no one task does both
+  const viewer = stage.viewer;
+  const holding = !viewer.pending;
+  if (holding) viewer.pending = true;
   await openAddress();
+  if (holding) {
+    await afterPaint();
+    viewer.pending = false;
+    viewer.requestRender();
+  }
   address.save('replace');
   doc.getElementById('boot')?.remove();
   doc.documentElement.dataset.started = '1';
