@@ -1,6 +1,9 @@
 // Builds the production page into dist/web/ (after scripts/build.sh has built pkg/ and
 // scripts/onefile.mjs the one-file builds), the site `npm start` serves:
-//   index.html              the page, its references rewritten to the hashed files
+//   index.html              the page, its references rewritten to the hashed files, its body the
+//                           page's shell (www/page/shell.js: header, stage, the linked scene's
+//                           heading) and its head the few inline lines that choose that heading
+//                           before the first paint (allowed by their hash in the page's policy)
 //   assets/                 every file named by its content's hash (cached for a year):
 //     main-<hash>.js          the page's entry, bundled and minified with esbuild, and the
 //     chunk-<hash>.js         chunks it shares with what loads on demand (split at the page's
@@ -9,7 +12,7 @@
 //                             classic start-up message
 //     worker-<hash>.js        the refinement worker, one module
 //     ruledlab_bg-<hash>.wasm the core (fetched and compiled by WebAssembly.instantiateStreaming)
-//     style-, noscript-, favicon-<hash>.*
+//     style-, noscript-, favicon-<hash>.*  (style: the page's and the view's, ui/css.js)
 //   dist/                   the one-file page, its embed script and manifest, at the paths the
 //                           page asks for them (the Share dialog), not hashed: they are handed out
 // and beside every file its gzip (.gz) and brotli (.br) compression, which scripts/serve.mjs
