@@ -182,17 +182,21 @@ for (const [from, to] of Object.entries(references)) {
   if (!html.includes(`"${from}"`)) throw new Error(`index.html does not name ${from}`);
   html = html.replaceAll(`"${from}"`, `"${to}"`);
 }
-// and the core (fetched by the entry's first statement otherwise: one round trip later, after
-// the chunks; `crossorigin`: the same request as the fetch of wasm-bindgen's loader, so it is used)
-const preloads = [
-  `  <link rel="preload" href="${wasm}" as="fetch" type="application/wasm" crossorigin>\n`,
-  ...initial.filter((p) => p !== entry).map((p) => `  <link rel="modulepreload" href="${p}">\n`),
-].join('');
-if (preloads) html = html.replace(/(\n\s*<script type="module")/, `\n${preloads.trimEnd()}$1`);
 // the page's shell (www/page/shell.js) in its body, and in its head the few lines that choose what
-// the link asks for before the first paint, inline (allowed by their hash)
+// the link asks for before the first paint, inline (allowed by their hash). Those lines also
+// start the page's module, its chunks (modulepreload: fetched in parallel instead of one import
+// level after the other) and the core (preloaded: compiled while it downloads) — once the shell
+// is painted, so that on a slow line these 440 KiB do not share it with the stylesheet the first
+// paint waits for
+const module = `<script type="module" src="${entry}"></script>`;
+if (!html.includes(module)) throw new Error('index.html does not load the page module');
+html = html.replace(new RegExp(`\\n\\s*${module.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}`), '');
 const firstLines = (
-  await transform(firstScript(), { minify: true, target: 'es2020', legalComments: 'none' })
+  await transform(firstScript({ wasm, entry, chunks: initial.filter((p) => p !== entry) }), {
+    minify: true,
+    target: 'es2020',
+    legalComments: 'none',
+  })
 ).code.trim();
 const body = /<body>[\s\S]*<\/body>/;
 if (!body.test(html)) throw new Error('index.html has no <body>');

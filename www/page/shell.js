@@ -53,10 +53,16 @@ export function shellHtml() {
 /**
  * The first lines: a classic script (no module, no import: it runs as soon as it is parsed,
  * before the first paint) with what it needs written into it — every scene's heading in every
- * language, the figures' scenes, the header's texts, the phone's limits.
+ * language, the figures' scenes, the header's texts, the phone's limits — and, for the
+ * production page, its module (`entry`), the chunks it imports and the core's file, fetched once
+ * the first paint is done.
+ * @param {{wasm?: string, entry?: string, chunks?: string[]}} [options]
  */
-export function firstScript() {
+export function firstScript({ wasm = '', entry = '', chunks = /** @type {string[]} */ ([]) } = {}) {
   const data = {
+    wasm,
+    entry,
+    chunks,
     first: SCENES[0].id,
     headings: Object.fromEntries(
       SCENES.map((s) => [s.id, Object.fromEntries(LANGUAGE_CODES.map((l) => [l, richHtml(translator(l).t(s.title))]))]),
@@ -77,7 +83,7 @@ export function firstScript() {
 /**
  * What the first lines do (serialized into the page by firstScript: it must use nothing but `d`
  * and the browser).
- * @param {{first: string, headings: Record<string, Record<string, string>>, options: Record<string, string[]>,
+ * @param {{wasm: string, entry: string, chunks: string[], first: string, headings: Record<string, Record<string, string>>, options: Record<string, string[]>,
  *   figures: Record<string, string>, header: Record<string, string[]>, languages: string[], narrow: number,
  *   portrait: number, state: string}} d
  */
@@ -153,6 +159,19 @@ function first(d) {
     }
     return done.size === 3;
   };
+  // the page's module, its chunks and the core's file, fetched once the shell is painted: on a
+  // slow line they would share it with the stylesheet the first paint waits for
+  if (d.entry)
+    requestAnimationFrame(() =>
+      setTimeout(() => {
+        const link = (/** @type {Record<string, string>} */ props) =>
+          doc.head.append(Object.assign(doc.createElement('link'), props));
+        for (const chunk of d.chunks) link({ rel: 'modulepreload', href: chunk });
+        // (the same request as wasm-bindgen's fetch, so that it is used)
+        link({ rel: 'preload', href: d.wasm, as: 'fetch', type: 'application/wasm', crossOrigin: 'anonymous' });
+        doc.head.append(Object.assign(doc.createElement('script'), { type: 'module', src: d.entry }));
+      }),
+    );
   // this runs in the head, before the page's stylesheet (a script after it would wait for it, and
   // the browser could paint the shell before it ran): each element is set as the parser makes it,
   // before anything is painted
