@@ -27,12 +27,14 @@ const FIGURES = [
 /** Typesets a TikZ picture with pdflatex and saves its page as a PNG (skipped without pdflatex). */
 function typeset(/** @type {string} */ tikz, /** @type {string} */ file) {
   const dir = mkdtempSync(join(tmpdir(), 'ruledlab-tikz-'));
+  // the page is the picture's box with a margin of 10 pt (pdflatex ships the box alone)
   const tex = [
     '\\documentclass{article}',
     '\\usepackage{tikz}',
-    '\\pagestyle{empty}',
     '\\begin{document}',
-    tikz,
+    `\\setbox0\\hbox{${tikz.trimEnd()}}`,
+    '\\pdfpagewidth=\\dimexpr\\wd0+20pt\\relax \\pdfpageheight=\\dimexpr\\ht0+\\dp0+20pt\\relax',
+    '\\pdfhorigin=10pt \\pdfvorigin=10pt \\shipout\\box0',
     '\\end{document}',
   ];
   writeFileSync(join(dir, 'figure.tex'), tex.join('\n'));
@@ -41,12 +43,7 @@ function typeset(/** @type {string} */ tikz, /** @type {string} */ file) {
       cwd: dir,
       stdio: 'ignore',
     });
-    // the picture's box on the page: crop the PDF page to what is drawn (A4, the picture at the top left)
-    execFileSync(
-      'pdftoppm',
-      ['-r', '110', '-png', '-singlefile', '-x', '180', '-y', '165', '-W', '500', '-H', '400', 'figure.pdf', 'figure'],
-      { cwd: dir },
-    );
+    execFileSync('pdftoppm', ['-r', '110', '-png', '-singlefile', 'figure.pdf', 'figure'], { cwd: dir });
     writeFileSync(join(IMAGES, file), readFileSync(join(dir, 'figure.png')));
     console.log(`docs/src/images/${file}`);
   } catch (e) {

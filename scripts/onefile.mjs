@@ -3,24 +3,29 @@
 //                           inlined (scripts/onefile/entry.js)
 //   dist/ruledlab.html      the whole page in one file: the same script inline, the CSS, a
 //                           state block; no other request; works from file:// and uploaded to
-//                           a course system. The script is a module at the end of the body:
-//                           the browser parses and paints the page's "Loading" before it runs it,
-//                           and the page shows the scene's heading and text before the core is
-//                           decoded and compiled
+//                           a course system. Its body is the page's shell (page/shell.js: the
+//                           header, the linked scene's heading, chosen by a few inline lines
+//                           before the first paint) and the script, a module at the end of the
+//                           body: the browser paints the shell before it runs it
 // The page's Content-Security-Policy allows exactly its inline script and style by hash,
 // 'wasm-unsafe-eval' for the module, data:/blob: images and blob: workers.
-import { build } from 'esbuild';
+import { build, transform } from 'esbuild';
 import { createHash } from 'node:crypto';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { fileURLToPath } from 'node:url';
-import { BODY, SCRIPT_ID, STATE_ID, stateJson } from '../www/page/onefile.js';
+import { SCRIPT_ID, STATE_ID, stateJson } from '../www/page/onefile.js';
+import { shellHtml, firstScript } from '../www/page/shell.js';
+import { CSS } from '../www/ui/css.js';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 /** @param {string} p */
 const path = (p) => `${ROOT}${p}`;
 
 const wasm = readFileSync(path('pkg/ruledlab_bg.wasm')).toString('base64');
+// the page's shell and the few lines that choose what the link asks for, before the first paint
+const first = (await transform(firstScript(), { minify: true, target: 'es2020', legalComments: 'none' })).code.trim();
+const body = shellHtml();
 // a classic worker: module workers from blob: URLs do not start in file:// pages
 const worker = await bundle('www/worker.js', 'iife', null, 'self.location.href');
 /** @type {import('esbuild').Plugin} */
@@ -29,7 +34,7 @@ const inline = {
   setup(b) {
     b.onResolve({ filter: /^ruledlab:inline$/ }, () => ({ path: 'inline', namespace: 'ruledlab' }));
     b.onLoad({ filter: /.*/, namespace: 'ruledlab' }, () => ({
-      contents: `export const WASM = ${JSON.stringify(wasm)};\nexport const WORKER = ${JSON.stringify(worker)};`,
+      contents: `export const WASM = ${JSON.stringify(wasm)};\nexport const WORKER = ${JSON.stringify(worker)};\nexport const SHELL = ${JSON.stringify(body)};`,
       loader: 'js',
     }));
   },
@@ -61,13 +66,14 @@ async function bundle(entry, format, plugin, base = 'document.baseURI') {
 const sha = (text) => `'sha256-${createHash('sha256').update(text, 'utf8').digest('base64')}'`;
 const embed = await bundle('scripts/onefile/entry.js', 'iife', inline);
 const page = embed.replaceAll('</script', '<\\/script');
-const css = readFileSync(path('www/page/style.css'), 'utf8');
+// the page's styles and the view's (the page then need not adopt them): the shell is painted styled
+const css = `${readFileSync(path('www/page/style.css'), 'utf8')}${CSS}`;
 // scripts off (an iframe sandbox without allow-scripts): the <noscript> sentence, no endless "Loading"
 const noscript = readFileSync(path('www/page/noscript.css'), 'utf8');
 const icon = `data:image/svg+xml,${encodeURIComponent(readFileSync(path('www/favicon.svg'), 'utf8'))}`;
 const csp = [
   "default-src 'none'",
-  `script-src ${sha(page)} 'wasm-unsafe-eval'`,
+  `script-src ${sha(first)} ${sha(page)} 'wasm-unsafe-eval'`,
   `style-src ${sha(css)} ${sha(noscript)}`,
   'img-src data: blob:',
   'worker-src blob:',
@@ -77,7 +83,7 @@ const csp = [
   "form-action 'none'",
 ].join('; ');
 const html = `<!doctype html>
-<html lang="en" data-build="onefile">
+<html lang="en" data-build="onefile" data-shell>
 <head>
 <meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
@@ -87,8 +93,9 @@ const html = `<!doctype html>
 <style>${css}</style>
 <noscript><style>${noscript}</style></noscript>
 <script type="application/json" id="${STATE_ID}">${stateJson('')}</script>
+<script>${first}</script>
 </head>
-<body>${BODY}
+<body>${body}
 <script type="module" id="${SCRIPT_ID}">${page}</script></body>
 </html>
 `;

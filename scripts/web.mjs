@@ -1,6 +1,9 @@
 // Builds the production page into dist/web/ (after scripts/build.sh has built pkg/ and
 // scripts/onefile.mjs the one-file builds), the site `npm start` serves:
-//   index.html              the page, its references rewritten to the hashed files
+//   index.html              the page, its references rewritten to the hashed files, its body the
+//                           page's shell (www/page/shell.js: header, stage, the linked scene's
+//                           heading) and its head the few inline lines that choose that heading
+//                           before the first paint (allowed by their hash in the page's policy)
 //   assets/                 every file named by its content's hash (cached for a year):
 //     main-<hash>.js          the page's entry, bundled and minified with esbuild, and the
 //     chunk-<hash>.js         chunks it shares with what loads on demand (split at the page's
@@ -9,19 +12,21 @@
 //                             classic start-up message
 //     worker-<hash>.js        the refinement worker, one module
 //     ruledlab_bg-<hash>.wasm the core (fetched and compiled by WebAssembly.instantiateStreaming)
-//     style-, noscript-, favicon-<hash>.*
+//     style-, noscript-, favicon-<hash>.*  (style: the page's and the view's, ui/css.js)
 //   dist/                   the one-file page, its embed script and manifest, at the paths the
 //                           page asks for them (the Share dialog), not hashed: they are handed out
 // and beside every file its gzip (.gz) and brotli (.br) compression, which scripts/serve.mjs
 // sends to browsers that accept it. What the first scene needs and what loads later is written
 // to dist/web-manifest.json (the build's test reads it). A file whose hashed name and
 // compressions are already there is not compressed again; files of older builds are removed.
-import { build } from 'esbuild';
+import { build, transform } from 'esbuild';
 import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { basename, dirname, extname, join, relative, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { brotliCompressSync, constants, gzipSync } from 'node:zlib';
+import { shellHtml, firstScript } from '../www/page/shell.js';
+import { CSS } from '../www/ui/css.js';
 
 const ROOT = resolve(fileURLToPath(new URL('..', import.meta.url)));
 const OUT = join(ROOT, 'dist/web');
@@ -64,8 +69,10 @@ function put(/** @type {string} */ path, /** @type {Uint8Array | string} */ byte
 }
 
 /** Copies a repository file into assets/ under its hashed name; returns the path under dist/web/. */
-function hashed(/** @type {string} */ source) {
-  const bytes = readFileSync(join(ROOT, source));
+function hashed(
+  /** @type {string} */ source,
+  /** @type {Uint8Array | string} */ bytes = readFileSync(join(ROOT, source)),
+) {
   const ext = extname(source);
   const path = `assets/${basename(source, ext)}-${hash(bytes)}${ext}`;
   put(path, bytes);
@@ -91,8 +98,9 @@ const siteUrls = {
   setup(b) {
     b.onLoad({ filter: /\.js$/ }, ({ path }) => {
       const source = readFileSync(path, 'utf8');
+      // (comments before the target, such as core.js's /* @vite-ignore */, are dropped)
       const contents = source.replace(
-        /new URL\((['"])([^'"]+)\1,\s*import\.meta\.url\)/g,
+        /new URL\((?:\/\*[^*]*\*\/\s*)*(['"])([^'"]+)\1,\s*import\.meta\.url\)/g,
         (/** @type {string} */ whole, /** @type {string} */ quote, /** @type {string} */ target) => {
           const absolute = resolve(dirname(path), target);
           const mapped = urls.get(absolute);
@@ -161,7 +169,9 @@ put(bootFile, outputs(boot)[0].contents);
 // and the chunks the entry imports announced at once (modulepreload: fetched in parallel
 // instead of one import level after the other)
 const references = {
-  'www/page/style.css': hashed('www/page/style.css'),
+  // the page's styles and the view's (ui/css.js, which the page then need not adopt): the shell
+  // is painted styled before any script runs
+  'www/page/style.css': hashed('www/page/style.css', `${readFileSync(join(ROOT, 'www/page/style.css'), 'utf8')}${CSS}`),
   'www/page/noscript.css': hashed('www/page/noscript.css'),
   'www/favicon.svg': hashed('www/favicon.svg'),
   'www/page/boot.js': bootFile,
@@ -172,13 +182,34 @@ for (const [from, to] of Object.entries(references)) {
   if (!html.includes(`"${from}"`)) throw new Error(`index.html does not name ${from}`);
   html = html.replaceAll(`"${from}"`, `"${to}"`);
 }
-// and the core (fetched by the entry's first statement otherwise: one round trip later, after
-// the chunks; `crossorigin`: the same request as the fetch of wasm-bindgen's loader, so it is used)
-const preloads = [
-  `  <link rel="preload" href="${wasm}" as="fetch" type="application/wasm" crossorigin>\n`,
-  ...initial.filter((p) => p !== entry).map((p) => `  <link rel="modulepreload" href="${p}">\n`),
-].join('');
-if (preloads) html = html.replace(/(\n\s*<script type="module")/, `\n${preloads.trimEnd()}$1`);
+// the page's shell (www/page/shell.js) in its body, and in its head the few lines that choose what
+// the link asks for before the first paint, inline (allowed by their hash). Those lines also
+// start the page's module, its chunks (modulepreload: fetched in parallel instead of one import
+// level after the other) and the core (preloaded: compiled while it downloads) — once the shell
+// is painted, so that on a slow line these 440 KiB do not share it with the stylesheet the first
+// paint waits for
+const module = `<script type="module" src="${entry}"></script>`;
+if (!html.includes(module)) throw new Error('index.html does not load the page module');
+html = html.replace(new RegExp(`\\n\\s*${module.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}`), '');
+const firstLines = (
+  await transform(firstScript({ wasm, entry, chunks: initial.filter((p) => p !== entry) }), {
+    minify: true,
+    target: 'es2020',
+    legalComments: 'none',
+  })
+).code.trim();
+const body = /<body>[\s\S]*<\/body>/;
+if (!body.test(html)) throw new Error('index.html has no <body>');
+html = html
+  .replace(body, `<body>\n${shellHtml()}\n</body>`)
+  // before the stylesheet: a script after it would wait for it (and the shell could be painted first)
+  .replace(/(\n\s*<link rel="stylesheet")/, `\n  <script>${firstLines}</script>$1`)
+  .replace(/<html lang="en">/, '<html lang="en" data-shell>')
+  .replace(
+    "script-src 'self'",
+    `script-src 'self' 'sha256-${createHash('sha256').update(firstLines).digest('base64')}'`,
+  );
+if (!html.includes('data-shell') || !html.includes("'sha256-")) throw new Error('index.html: the shell was not put in');
 if (/\bwww\//.test(html)) throw new Error('dist/web/index.html still names a file of www/');
 put('index.html', html);
 

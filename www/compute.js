@@ -2,7 +2,7 @@
 // time; a newer job supersedes an older one, whose result is dropped. Where no worker can
 // start — a sandboxed frame, a page whose Content-Security-Policy forbids the worker's script —
 // the same job (refine.js) runs on the main thread, yielding between steps.
-import { newWorker, wasmSource } from './core.js';
+import { newWorker, reportNoWorker, wasmSource } from './core.js';
 import { refineSteps } from './refine.js';
 
 /** @type {Worker | null} */
@@ -24,7 +24,8 @@ function theWorker() {
   if (worker || noWorker) return worker;
   try {
     worker = newWorker();
-  } catch {
+  } catch (e) {
+    reportNoWorker(e);
     noWorker = true;
     return null;
   }
@@ -42,6 +43,7 @@ function theWorker() {
   // the script did not load (blocked by a policy, or no such file): the jobs run here instead
   worker.onerror = (e) => {
     e.preventDefault();
+    reportNoWorker(e);
     worker?.terminate();
     worker = null;
     noWorker = true;

@@ -51,16 +51,39 @@ export function memoryBytes() {
 }
 
 /**
- * A new worker for heavy computations (www/worker.js unless configured otherwise). A worker's
- * script must come from the document's own origin: where the module was loaded from another
- * one (a CDN, the site of a Share snippet) or the document is sandboxed (an opaque origin), a
- * module worker made from a blob: URL of this origin imports worker.js (whose server allows
- * that, as a static CDN does). Throws where no worker can be made; compute.js then works here.
+ * A new worker for heavy computations (www/worker.js unless configured otherwise). Written the
+ * way bundlers read it — `new Worker(new URL('./worker.js', import.meta.url), { type: 'module' })`
+ * — so that Vite, webpack 5 and esbuild-based builds bundle worker.js with its imports as a worker
+ * entry of its own and put its URL here. A worker's script must come from the document's own
+ * origin: where this module was loaded from another one (a CDN, the site of a Share snippet) or
+ * the document is sandboxed (an opaque origin), a module worker made from a blob: URL of this
+ * origin imports worker.js (whose server allows that, as a static CDN does). Throws where no
+ * worker can be made; compute.js then works here (and says so once: `reportNoWorker`).
  */
 export function newWorker() {
   if (workerFactory) return workerFactory();
-  const url = new URL('./worker.js', import.meta.url);
-  if (url.origin === globalThis.origin) return new Worker(url, { type: 'module' });
-  const shim = URL.createObjectURL(new Blob([`import ${JSON.stringify(url.href)};`], { type: 'text/javascript' }));
+  // where worker.js is unbundled, beside this module (bundlers leave this URL alone: they bundle
+  // the worker from the expression below; scripts/web.mjs maps both to the site's worker file)
+  const beside = new URL(/* @vite-ignore */ /* webpackIgnore: true */ './worker.js', import.meta.url);
+  if (beside.origin === globalThis.origin)
+    return new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+  const shim = URL.createObjectURL(new Blob([`import ${JSON.stringify(beside.href)};`], { type: 'text/javascript' }));
   return new Worker(shim, { type: 'module' });
+}
+
+let warned = false;
+
+/**
+ * Says once in the console that no worker could start here and why: large refinements then run
+ * on the main thread, in steps, and the page may answer slowly while they run.
+ * @param {unknown} reason  the error, or the worker's error event
+ */
+export function reportNoWorker(reason) {
+  if (warned) return;
+  warned = true;
+  const event = /** @type {{type?: string, message?: string}} */ (reason);
+  const why = event?.type === 'error' ? event.message || 'its script did not load' : String(reason);
+  console.warn(
+    `ruledlab: no Web Worker could start here (${why}); large refinements run on the main thread instead, between frames, and the page may answer slowly while they run.`,
+  );
 }

@@ -83,7 +83,9 @@ export const STRAIGHTNESS_MIN_EXTENT = 1e-3;
  * not detail.
  */
 export const FIGURE_TRIANGLES = 20_000;
-/** Distance of hatch lines on a surface in a black-and-white figure (CSS pixels). */
+/** The printed width of an SVG or TikZ figure, cm: a column of 8 by default, and the range the page offers. */
+export const PRINT_WIDTH = { min: 2, max: 40, default: 8 };
+/** Distance of hatch lines on a surface in a black-and-white figure (CSS pixels on paper). */
 export const HATCH_SPACING = 4;
 /** Inserted lines (or rulings) above this many are drawn in the thinner style, so they stay apart. */
 export const FINE_LINES = 400;

@@ -573,8 +573,9 @@ export class RuledView extends HTMLElement {
 
   /**
    * The current view as a self-contained SVG 1.1 figure (labels as text), in colour or black
-   * and white, the parts of lines a surface hides thin and dashed or left out:
-   * `{ bw?, legend? = true, title? = false, labels? = true, hidden? = 'dashed' | 'omit' }`.
+   * and white, the parts of lines a surface hides thin and dashed or left out, cropped to the
+   * drawing and `width` cm wide on paper (lines, dashes and type keep their printed size):
+   * `{ bw?, legend? = true, title? = false, labels? = true, hidden? = 'dashed' | 'omit', width? = 8 }`.
    * @param {import('./export/svg.js').FigureOptions} [options]
    */
   exportSVG(options) {
@@ -582,7 +583,7 @@ export class RuledView extends HTMLElement {
     return exportSvg(this.stage, options);
   }
 
-  /** The current view as a TikZ picture for LaTeX (same options as exportSVG, and `width` in cm). */
+  /** The current view as a TikZ picture for LaTeX (the same options as exportSVG: cropped, `width` cm wide). */
   exportTikZ(/** @type {import('./export/svg.js').FigureOptions & {width?: number}} */ options = {}) {
     if (!this.stage) throw Object.assign(new Error('ruled-view: not connected'), { code: 'invalid-argument' });
     return exportTikz(this.stage, options);

@@ -2,6 +2,9 @@
 // before any view module starts it; the wasm is decoded when the core starts (not while this
 // script runs: the page paints first) and compiled asynchronously by WebAssembly.instantiate.
 import { configure } from '../../www/core.js';
-import { wasmBytes, workerFactory } from './inline.js';
+import { useBody } from '../../www/page/onefile.js';
+import { wasmBytes, workerFactory, SHELL } from './inline.js';
 
 configure({ wasm: wasmBytes, worker: workerFactory() });
+// the page's copies of itself (Share → one file) carry the same shell
+useBody(SHELL);

@@ -1,5 +1,8 @@
-// The inlined wasm (base64) and worker (source text), from the build's virtual module.
-import { WASM, WORKER } from 'ruledlab:inline';
+// The inlined wasm (base64) and worker (source text), and the page's shell (its body before any
+// script, page/shell.js), from the build's virtual module.
+import { WASM, WORKER, SHELL } from 'ruledlab:inline';
+
+export { SHELL };
 
 /** The wasm module's bytes (decoded natively where the browser can: a millisecond, not twenty). */
 export function wasmBytes() {

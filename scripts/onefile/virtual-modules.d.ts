@@ -4,4 +4,6 @@ declare module 'ruledlab:inline' {
   export const WASM: string;
   /** The worker's bundled source text (a classic script). */
   export const WORKER: string;
+  /** The one-file page's body before its module: the shell and its first lines (page/shell.js). */
+  export const SHELL: string;
 }

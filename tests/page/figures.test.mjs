@@ -1,6 +1,8 @@
 // Figures for lecture notes: SVG that parses and holds what the view shows (labels as <text>),
 // black and white without colour, TikZ of a known view equal to the checked-in file, PNG at 2×
-// and 4× with labels and legend, and the page's export buttons.
+// and 4× with labels and legend, and the page's export buttons: names that say what the figure
+// is (Fig. 13 and Fig. 15 do not overwrite each other), the printed width the reader chooses,
+// line widths and dashes the same on paper at any width.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
@@ -110,15 +112,15 @@ test('PNG at 2× and 4× of the view, and the page’s export buttons download f
   const { page: p, problems: figureProblems } = await session.open('#scene=convergence');
   await p.locator('.io summary').click();
   for (const [kind, name] of [
-    ['svg', /convergence\.svg$/],
-    ['svgBw', /convergence-bw\.svg$/],
-    ['tikz', /convergence\.tikz$/],
-    ['tikzBw', /convergence-bw\.tikz$/],
-    ['png2', /convergence-2x\.png$/],
-    ['plot', /convergence-plot\.svg$/],
+    ['svg', 'convergence-levels8.svg'],
+    ['svgBw', 'convergence-levels8-bw.svg'],
+    ['tikz', 'convergence-levels8.tikz'],
+    ['tikzBw', 'convergence-levels8-bw.tikz'],
+    ['png2', 'convergence-levels8-2x.png'],
+    ['plot', 'convergence-levels8-plot.svg'],
   ]) {
     const [download] = await Promise.all([p.waitForEvent('download'), p.locator(`[data-export="${kind}"]`).click()]);
-    assert.match(download.suggestedFilename(), name);
+    assert.equal(download.suggestedFilename(), name);
   }
   // the convergence plot is self-contained: its own grid, dashed slopes and legend
   const plot = await p.evaluate(() => new XMLSerializer().serializeToString(document.querySelector('.rl-figure svg')));
@@ -145,10 +147,10 @@ test('PNG at 2× and 4× of the view, and the page’s export buttons download f
   });
   await d.locator('[data-export="obj"]:not([disabled])').waitFor();
   const obj = await save('obj');
-  assert.equal(obj.name, 'striction.obj');
+  assert.equal(obj.name, 'striction-n36.obj');
   assert.match(obj.text, /^o striction\n(v \S+ \S+ \S+\n)+(l \d+ \d+\n)+(f \d+ \d+ \d+ \d+\n)+$/m);
   const inv = await save('invariants');
-  assert.equal(inv.name, 'striction-invariants.json');
+  assert.equal(inv.name, 'striction-n36-invariants.json');
   assert.ok(JSON.parse(inv.text).distribution.length > 2);
   assert.match((await save('invariantsCsv')).text, /^pair,angle,distance,distribution,/);
   await d.evaluate(() => {
@@ -160,4 +162,94 @@ test('PNG at 2× and 4× of the view, and the page’s export buttons download f
   assert.equal(JSON.parse((await save('json')).text).rows > 1, true);
   assert.deepEqual(dataProblems, []);
   await d.close();
+});
+
+/** Saves the export `kind` of the page's view: its suggested name and its text. */
+async function save(/** @type {import('playwright-core').Page} */ page, /** @type {string} */ kind) {
+  const [download] = await Promise.all([
+    page.waitForEvent('download'),
+    page.locator(`[data-export="${kind}"]`).click(),
+  ]);
+  return {
+    name: download.suggestedFilename(),
+    text: readFileSync(/** @type {string} */ (await download.path()), 'utf8'),
+  };
+}
+
+/** Follows `hash` in the page and waits until `scene` is computed and drawn. */
+async function follow(
+  /** @type {import('playwright-core').Page} */ page,
+  /** @type {string} */ hash,
+  /** @type {string} */ scene,
+) {
+  await page.evaluate((h) => {
+    location.hash = h;
+  }, hash);
+  await page.locator(`.rl-stage[data-scene="${scene}"][data-ready="1"]`).waitFor();
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+}
+
+test('export names say what the figure is: Fig. 13 and Fig. 15 apart, the counts, a switch, the language', async () => {
+  const { page, problems } = await session.open('#paper=fig13');
+  await page.locator('.io summary').click();
+  const fig13 = await save(page, 'svgBw');
+  assert.equal(fig13.name, 'fig13-congruence-bw.svg');
+  await follow(page, '#paper=fig15', 'congruence');
+  await page.waitForFunction(() => /** @type {any} */ (window).ruledlab.stage.paper?.id === 'fig15');
+  const fig15 = await save(page, 'svgBw');
+  assert.equal(fig15.name, 'fig15-congruence-bw.svg');
+  assert.notEqual(fig13.text, fig15.text);
+  await follow(page, '#scene=striction', 'striction');
+  assert.equal((await save(page, 'tikzBw')).name, 'striction-n36-bw.tikz');
+  await follow(page, '#scene=striction&exact=1&lang=de', 'striction');
+  await page.waitForFunction(() => document.documentElement.lang === 'de');
+  assert.equal((await save(page, 'svg')).name, 'striction-n36-exact-de.svg');
+  assert.equal((await save(page, 'csv')).name, 'striction-n36-exact.csv', 'a data file has no words: no language');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('the printed width: the SVG is as wide as chosen (8 cm by default), its lines and dashes the same on paper at any width', async () => {
+  const { page, problems } = await session.open('#paper=fig2');
+  await page.locator('.io summary').click();
+  assert.equal(await page.locator('#print-width').inputValue(), '8');
+  /** The width on paper (mm), and the stroke width and dashes of the common perpendiculars (mm). */
+  const measure = (/** @type {string} */ text) =>
+    page.evaluate((svg) => {
+      const root = new DOMParser().parseFromString(svg, 'image/svg+xml').documentElement;
+      const mm = Number.parseFloat(/** @type {string} */ (root.getAttribute('width')));
+      const perMm = Number(/** @type {string} */ (root.getAttribute('viewBox')).split(' ')[2]) / mm;
+      const group = /** @type {Element} */ (root.querySelector('g.visible > g.lines.normal'));
+      const dashes = (/** @type {Element} */ e) =>
+        /** @type {string} */ (e.getAttribute('stroke-dasharray')).split(' ').map((d) => Number(d) / perMm);
+      return {
+        mm,
+        stroke: Number(group.getAttribute('stroke-width')) / perMm,
+        dash: dashes(group),
+        // a piece too short for the style's dashes: its own, shorter pattern
+        short: [...group.querySelectorAll('polyline[stroke-dasharray]')].map(dashes),
+      };
+    }, text);
+  const column = await measure((await save(page, 'svgBw')).text);
+  assert.equal(column.mm, 80);
+  await page.locator('#print-width').fill('16');
+  const wide = await measure((await save(page, 'svgBw')).text);
+  assert.equal(wide.mm, 160);
+  // 0.6 × 1.6 px of the screen (0.75 pt each) on paper: 0.254 mm, at 8 cm and at 16 cm
+  for (const m of [column, wide]) {
+    assert.ok(Math.abs(m.stroke - 0.96 * (25.4 / 96)) < 0.002, `stroke ${m.stroke} mm`);
+    assert.deepEqual(
+      m.dash.map((d) => Math.round(d * 100) / 100),
+      [0.79, 0.53],
+    );
+  }
+  // in the column, Fig. 2's shortest common perpendiculars get shorter dashes — none below 0.2 mm
+  assert.ok(column.short.length > 0, 'no short perpendicular got a pattern of its own');
+  for (const d of column.short.flat()) assert.ok(d >= 0.2 && d < 0.79, `a dash of ${d} mm`);
+  // a width out of range is brought into it, and the field shows what was used
+  await page.locator('#print-width').fill('400');
+  assert.equal((await measure((await save(page, 'svgBw')).text)).mm, 400);
+  assert.equal(await page.locator('#print-width').inputValue(), '40');
+  assert.deepEqual(problems, []);
+  await page.close();
 });

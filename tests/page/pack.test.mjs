@@ -1,14 +1,17 @@
 // The package as a web developer gets it: `npm pack`, installed into a fresh app outside the
 // repo, served as static files, <ruled-view scene="striction" controls> from 'ruledlab/view'
-// draws with its controls; and a Vite app built from the tarball runs.
+// draws with its controls; a Vite app built from the tarball runs; and in the production builds
+// of Vite and of webpack 5, with no configuration, the large model refines in the worker (seen in
+// the worker's own timeline), and where a policy forbids workers the page says so once.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, readdirSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { build } from 'vite';
+import webpack from 'webpack';
 import { startServer } from '../../scripts/serve.mjs';
 import { launch, watch, ARTIFACTS } from './browser.mjs';
 import { decodePng, countDifferent } from './png.mjs';
@@ -137,6 +140,108 @@ try {
   } finally {
     server.close();
   }
+});
+
+/**
+ * A production build of the app in `dir` (its main.js) with webpack 5, no configuration beyond
+ * entry and output, into `dir/dist-webpack/` with a page that loads the bundle.
+ */
+async function webpackBuild(/** @type {string} */ dir) {
+  const out = join(dir, 'dist-webpack');
+  const stats = await new Promise((resolve, reject) =>
+    webpack({ mode: 'production', context: dir, entry: './main.js', output: { path: out } }, (err, s) =>
+      err ? reject(err) : resolve(s),
+    ),
+  );
+  assert.ok(!stats.hasErrors(), stats.toString({ all: false, errors: true }));
+  writeFileSync(
+    join(out, 'index.html'),
+    `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>webpack app</title><style>ruled-view { height: 520px; }</style></head><body>${LARGE}<script src="main.js"></script></body></html>`,
+  );
+  return out;
+}
+
+/** A model above the worker's threshold: 10 000 rulings refined three times (79 993 rulings). */
+const LARGE = '<ruled-view scene="large" params="n=10000&steps=3" controls></ruled-view>';
+const SUBDIVIDE = 'ruledlab:core:RuledSurface.subdivide';
+
+/**
+ * Opens the built app at `url` (served with `headers`) and waits for the refined model; returns
+ * where the core subdivided (its User Timing measure is set in the timeline of the thread that
+ * called it: the page's, or a worker's), the workers that started and what the console said.
+ */
+async function refineIn(/** @type {string} */ root, /** @type {Record<string, string>} */ headers = {}) {
+  const { server, url } = await startServer({ root, headers });
+  const page = await browser.newPage();
+  const problems = watch(page);
+  /** @type {string[]} */
+  const warnings = [];
+  page.on('console', (m) => m.type() === 'warning' && /ruledlab/.test(m.text()) && warnings.push(m.text()));
+  /** @type {import('playwright-core').Worker[]} */
+  const workers = [];
+  page.on('worker', (w) => workers.push(w));
+  try {
+    await page.goto(url);
+    await page.waitForFunction(
+      () =>
+        /79[\s,.]?993/.test(
+          document.querySelector('ruled-view')?.shadowRoot?.querySelector('.rl-readout')?.textContent ?? '',
+        ),
+      null,
+      { timeout: 120000 },
+    );
+    const inWorkers = await Promise.all(
+      workers.map((w) => w.evaluate((name) => performance.getEntriesByName(name).length, SUBDIVIDE).catch(() => 0)),
+    );
+    return {
+      page: await page.evaluate((name) => performance.getEntriesByName(name).length, SUBDIVIDE),
+      worker: inWorkers.reduce((a, b) => a + b, 0),
+      workers: workers.map((w) => w.url()),
+      warnings,
+      problems,
+    };
+  } finally {
+    await page.close();
+    server.close();
+  }
+}
+
+test('the worker in every bundle: Vite 8 and webpack 5 production builds of the tarball refine in the worker; where none may start, the page says so once', async () => {
+  const dir = app();
+  writeFileSync(
+    join(dir, 'index.html'),
+    `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>vite app</title><style>ruled-view { height: 520px; }</style></head><body>${LARGE}<script type="module" src="./main.js"></script></body></html>`,
+  );
+  writeFileSync(join(dir, 'main.js'), "import 'ruledlab/view';\n");
+  const vite = join(dir, 'dist-vite');
+  mkdirSync(vite);
+  await build({ root: dir, logLevel: 'silent', build: { outDir: vite, target: 'es2022' } });
+  const builds = { vite, webpack: await webpackBuild(dir) };
+  for (const [bundler, root] of Object.entries(builds)) {
+    const got = await refineIn(root);
+    assert.equal(got.workers.length, 1, `${bundler}: workers ${got.workers}`);
+    assert.ok(
+      !got.workers[0].startsWith('data:') && !got.workers[0].startsWith('blob:'),
+      `${bundler}: ${got.workers[0]}`,
+    );
+    assert.ok(got.worker > 0, `${bundler}: the core did not subdivide in the worker`);
+    assert.equal(got.page, 0, `${bundler}: the core subdivided on the main thread`);
+    assert.deepEqual(got.warnings, [], bundler);
+    assert.deepEqual(got.problems, [], bundler);
+  }
+  // a page whose policy allows no worker: the same model refines on the main thread, and the page
+  // says so in the console once (the browser reports the refused worker itself)
+  const blocked = await refineIn(builds.vite, {
+    'content-security-policy':
+      "default-src 'self'; script-src 'self' 'wasm-unsafe-eval'; style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:; worker-src 'none'",
+  });
+  assert.ok(blocked.page > 0, 'the refinement did not run on the main thread');
+  assert.equal(blocked.warnings.length, 1, blocked.warnings.join('\n'));
+  assert.match(blocked.warnings[0], /no Web Worker could start here/);
+  assert.deepEqual(
+    blocked.problems.filter((p) => !/worker/i.test(p)),
+    [],
+  );
 });
 
 test('a TypeScript app typed by the installed tarball: tsc --strict resolves ruledlab and ruledlab/view by the package exports', () => {

@@ -3,10 +3,13 @@
 // in colour and in black and white:
 // - the SVG has no piece of a line shorter than a pixel that splitting made (a piece that short
 //   touching another piece of its own lines), and each export takes well under a second;
+// - the SVG is cropped to what it draws: its viewBox holds the drawing (legend and labels
+//   included, as Chromium measures them) and is at most 5 % wider and taller;
 // - the TikZ of all of them (with every switch on: in black and white), one figure per page,
 //   compiles with pdflatex and with lualatex
-//   (nothing but \usepackage{tikz}) without an error or a missing character, and every page
-//   draws (pdftoppm: pixels that are not white);
+//   (nothing but \usepackage{tikz}) without an error or a missing character, every page
+//   draws (pdftoppm: pixels that are not white), and every figure is 8 cm wide as typeset (the
+//   default printed width: a column);
 // - the SVGs convert to PDF with rsvg-convert without a warning, and every page draws.
 // The documents and PDFs are kept in test-artifacts/print/ for people to look at.
 import { test } from 'node:test';
@@ -104,9 +107,33 @@ async function exportAll() {
       [`${e.name} bw`, e.svgBw],
     ]),
   );
+  // the crop: the box of everything drawn (but the paper behind it) against the viewBox
+  const crops = await page.evaluate(
+    (svgs) =>
+      svgs.map(([name, text]) => {
+        const root = /** @type {SVGSVGElement} */ (
+          document.importNode(new DOMParser().parseFromString(text, 'image/svg+xml').documentElement, true)
+        );
+        root.querySelector(':scope > rect')?.remove();
+        document.body.append(root);
+        const box = root.getBBox();
+        const [x, y, w, h] = /** @type {string} */ (root.getAttribute('viewBox')).split(' ').map(Number);
+        root.remove();
+        return {
+          name,
+          box: [box.x, box.y, box.width, box.height],
+          view: [x, y, w, h],
+          width: root.getAttribute('width'),
+        };
+      }),
+    exports.flatMap((e) => [
+      [`${e.name} colour`, e.svg],
+      [`${e.name} bw`, e.svgBw],
+    ]),
+  );
   assert.deepEqual(problems, []);
   await page.close();
-  return { exports, artefacts };
+  return { exports, artefacts, crops };
 }
 
 /** Pages of a PDF as images at `dpi`, and the number of pixels of each that are not white. */
@@ -123,10 +150,30 @@ test('every scene prints: SVG without splitting slivers, TikZ through pdflatex a
   const t0 = Date.now();
   rmSync(OUT, { recursive: true, force: true });
   mkdirSync(OUT, { recursive: true });
-  const { exports, artefacts } = await exportAll();
+  const { exports, artefacts, crops } = await exportAll();
   const exported = Date.now();
   assert.ok(exports.length >= 30, `only ${exports.length} views`);
   assert.deepEqual(artefacts, [], 'pieces of lines shorter than a pixel made by splitting');
+  for (const { name, box, view, width } of crops) {
+    const [bx, by, bw, bh] = box;
+    const [vx, vy, vw, vh] = view;
+    const slack = 0.01 * Math.max(vw, vh);
+    assert.ok(
+      vx <= bx + slack && vy <= by + slack && bx + bw <= vx + vw + slack && by + bh <= vy + vh + slack,
+      `${name}: the drawing ${box.map((v) => v.toFixed(1))} is not inside the viewBox ${view}`,
+    );
+    assert.equal(width, '80.00mm', `${name}: ${width} wide on paper, not 8 cm`);
+    assert.ok(
+      vw <= 1.05 * bw && vh <= 1.05 * bh,
+      `${name}: the viewBox ${view} is more than 5 % larger than the drawing ${box.map((v) => v.toFixed(1))}`,
+    );
+  }
+  const loosest = crops
+    .map((c) => ({ name: c.name, excess: Math.max(c.view[2] / c.box[2], c.view[3] / c.box[3]) - 1 }))
+    .sort((a, b) => b.excess - a.excess)[0];
+  console.log(
+    `# SVG crop: the viewBox is at most ${(100 * loosest.excess).toFixed(1)} % larger than the drawing (${loosest.name})`,
+  );
   for (const e of exports) assert.ok(e.ms < 1000, `${e.name}: the black-and-white SVG took ${e.ms.toFixed(0)} ms`);
   const slowest = [...exports].sort((a, b) => b.ms - a.ms).slice(0, 4);
   console.log(
@@ -145,8 +192,14 @@ test('every scene prints: SVG without splitting slivers, TikZ through pdflatex a
     '\\usepackage{tikz}',
     '\\pagestyle{empty}',
     '\\tracinglostchars=2',
+    // a figure 8 cm wide is as tall as its drawing makes it (a tall one about 28 cm): pages of 45 cm
+    '\\setlength{\\textheight}{40cm}\\ifdefined\\pageheight\\pageheight=45cm\\else\\pdfpageheight=45cm\\fi',
     '\\begin{document}',
-    ...figures.map(([name, tikz]) => `% ${name}\n\\noindent\n${tikz}\\clearpage`),
+    // each figure measured as typeset (its width in the log), then put on its page
+    ...figures.map(
+      ([name, tikz]) =>
+        `% ${name}\n\\noindent\\sbox0{${tikz.trimEnd()}}\\typeout{RLWIDTH \\the\\wd0}\\usebox0\\clearpage`,
+    ),
     '\\end{document}',
     '',
   ].join('\n');
@@ -179,6 +232,13 @@ test('every scene prints: SVG without splitting slivers, TikZ through pdflatex a
     assert.equal(latex[k].stderr, '', `${engine}: ${latex[k].stderr}`);
     assert.doesNotMatch(log, /^! /m, `${engine} reports an error (test-artifacts/print/figures-${engine}.log)`);
     assert.doesNotMatch(log, /Missing character/, `${engine} misses a character`);
+    // 8 cm = 227.62 pt: the drawing fills the column (its lines' widths included), the legend
+    // under it wraps within it
+    const widths = [...log.matchAll(/^RLWIDTH ([\d.]+)pt$/gm)].map((m) => Number(m[1]));
+    assert.equal(widths.length, figures.length, `${engine}: ${widths.length} widths in the log`);
+    widths.forEach((w, j) => {
+      assert.ok(Math.abs(w - 227.62) < 1, `${engine}: ${figures[j][0]} is ${w} pt wide, not 8 cm`);
+    });
   });
   assert.equal(rsvg.stderr, '', `rsvg-convert: ${rsvg.stderr}`);
   for (const pdf of [...engines.map((e) => `figures-${e}.pdf`), 'figures-svg.pdf']) {

@@ -6,7 +6,8 @@
 // start from here, so a figure on paper is the figure on screen.
 import { hiddenLines } from '../../pkg/ruledlab.js';
 import { STYLES, rgb, PALETTE } from '../theme.js';
-import { FIGURE_TRIANGLES, HATCH_SPACING } from '../limits.js';
+import { FIGURE_TRIANGLES, HATCH_SPACING, PRINT_WIDTH } from '../limits.js';
+import { parseRich } from '../ui/richtext.js';
 
 /**
  * @typedef {object} Facet   a triangle of a surface, in CSS pixels (y down)
@@ -271,17 +272,18 @@ export function facetColour(look, facet, bw) {
  * that neighbouring facets continue each other's lines.
  * @param {number[]} points   the facet's corners
  * @param {import('../theme.js').Hatch} hatch
+ * @param {number} [spacing]   distance of the lines (pixels of the figure)
  * @returns {number[][]}
  */
-export function hatchLines(points, hatch) {
+export function hatchLines(points, hatch, spacing = HATCH_SPACING) {
   const angles = { ne: [Math.PI / 4], nw: [-Math.PI / 4], h: [0], cross: [Math.PI / 4, -Math.PI / 4] }[hatch];
   const out = [];
   for (const angle of angles) {
     // lines n·x = k·spacing, n the normal of the direction (cos, −sin) (y down: "ne" rises)
     const n = [Math.sin(angle), Math.cos(angle)];
     const d = [0, 2, 4].map((k) => n[0] * points[k] + n[1] * points[k + 1]);
-    for (let k = Math.ceil(Math.min(...d) / HATCH_SPACING); k * HATCH_SPACING <= Math.max(...d); k++) {
-      const level = k * HATCH_SPACING;
+    for (let k = Math.ceil(Math.min(...d) / spacing); k * spacing <= Math.max(...d); k++) {
+      const level = k * spacing;
       const cut = [];
       for (let e = 0; e < 3; e++) {
         const [i, j] = [e, (e + 1) % 3];
@@ -323,3 +325,147 @@ export function hex(/** @type {number[]} */ c) {
 
 /** The page background. */
 export const PAPER = rgb(PALETTE.paper);
+
+// ---- print: the drawing's box, and sizes that hold on paper
+
+/**
+ * One CSS pixel of the screen on paper, in mm: 1/96 inch (0.75 pt). The styles' line widths,
+ * dash lengths and dot sizes are given in these pixels, and a printed figure draws them at this
+ * size whatever its width: a figure shrunk to a column keeps lines and dashes that can be seen.
+ */
+export const PX_MM = 25.4 / 96;
+
+/** Type sizes of a printed figure in CSS pixels (0.75 pt): labels 10 pt, legend 8 pt, title 11 pt. */
+export const PRINT_TYPE = { label: 40 / 3, legend: 32 / 3, title: 44 / 3 };
+
+/** The margin around a printed drawing (mm). */
+const MARGIN_MM = 0.8;
+
+/** The shortest dash or gap a shortened dash pattern keeps (CSS pixels: 0.6 pt, 0.2 mm). */
+const LEAST_DASH = 0.8;
+
+/** @type {CanvasRenderingContext2D | null} */
+let measuring = null;
+
+/**
+ * The width of `text` (with R_{i,i+1}-style sub- and superscripts at 72 %) in `family` at `size`
+ * pixels, as the browser sets it (0.5 em per character where nothing can measure).
+ * @param {string} text @param {number} size @param {string} family @param {string} [style]  e.g. "italic"
+ */
+export function textWidth(text, size, family, style = '') {
+  measuring ??= typeof document === 'object' ? document.createElement('canvas').getContext('2d') : null;
+  let width = 0;
+  for (const part of parseRich(text)) {
+    const px = part.kind === 'text' ? size : 0.72 * size;
+    if (!measuring) width += 0.5 * px * [...part.text].length;
+    else {
+      measuring.font = `${style} ${px}px ${family}`.trim();
+      width += measuring.measureText(part.text).width;
+    }
+  }
+  return width;
+}
+
+/** The font of a figure's labels, and of its legend and title. */
+export const LABEL_FONT = 'Times New Roman, Times, serif';
+export const TEXT_FONT = 'Helvetica, Arial, sans-serif';
+
+/**
+ * Where a label's text goes and what box it takes in a printed figure, its type `size` in the
+ * figure's pixels: the label's box on screen has its top-left corner at (x, y).
+ * @param {{x: number, y: number, text: string}} label @param {number} size
+ */
+export function labelBox(label, size) {
+  const width = textWidth(label.text, size, LABEL_FONT, 'italic');
+  return {
+    x: label.x + 0.2 * size,
+    baseline: label.y + 0.9 * size,
+    box: [label.x, label.y, label.x + width + 0.4 * size, label.y + 1.3 * size],
+  };
+}
+
+/**
+ * @typedef {object} PrintFrame
+ * @property {number} x        the drawing's box in the view's pixels, its margin included
+ * @property {number} y
+ * @property {number} w
+ * @property {number} h
+ * @property {number} nat      view pixels per CSS pixel on paper (0.75 pt): what a style's width,
+ *   a dash, a dot's radius or a type size is multiplied by
+ * @property {number} mm       mm on paper per view pixel
+ */
+
+/**
+ * The box of a figure's drawing — its facets, the lines and dots drawn (hidden pieces unless
+ * left out), their widths and the labels — with a small margin, for a figure `width` cm wide on
+ * paper, and the size of a CSS pixel of the styles in it.
+ * @param {Figure} fig
+ * @param {{width?: number, bw?: boolean, labels?: boolean, hidden?: 'dashed' | 'omit'}} [options]
+ * @returns {PrintFrame}
+ */
+export function printFrame(fig, { width = PRINT_WIDTH.default, bw = false, labels = true, hidden = 'dashed' } = {}) {
+  /** @type {Array<{points: number[], r: number}>} extents in natural pixels (r: half a line's width, a dot's radius) */
+  const parts = fig.facets.map((f) => ({ points: f.points, r: 0 }));
+  for (const set of fig.lines) {
+    const look = /** @type {any} */ (paint(set.style, bw));
+    for (const run of set.runs) {
+      if (!run.visible && (hidden === 'omit' || set.kind === 'points')) continue;
+      const r =
+        set.kind === 'points'
+          ? look.radius
+          : (run.visible ? look.width + (look.halo ? 3 : 0) : hiddenLook(look, bw).width) / 2;
+      parts.push({ points: run.points, r });
+    }
+  }
+  const box = (/** @type {number} */ nat) => {
+    let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
+    for (const { points, r } of parts)
+      for (let k = 0; k + 1 < points.length; k += 2) {
+        x0 = Math.min(x0, points[k] - r * nat);
+        x1 = Math.max(x1, points[k] + r * nat);
+        y0 = Math.min(y0, points[k + 1] - r * nat);
+        y1 = Math.max(y1, points[k + 1] + r * nat);
+      }
+    if (labels)
+      for (const label of fig.labels) {
+        const [a, b, c, d] = labelBox(label, PRINT_TYPE.label * nat).box;
+        [x0, y0, x1, y1] = [Math.min(x0, a), Math.min(y0, b), Math.max(x1, c), Math.max(y1, d)];
+      }
+    // nothing drawn: the whole view
+    return x1 > x0 && y1 > y0 ? [x0, y0, x1, y1] : [0, 0, fig.width, fig.height];
+  };
+  // type and widths are sized on paper, so the box depends on the scale and the scale on the box:
+  // a few rounds settle it
+  let nat = (PX_MM * fig.width) / (10 * width);
+  let frame = { x: 0, y: 0, w: fig.width, h: fig.height, nat, mm: (10 * width) / fig.width };
+  for (let round = 0; round < 4; round++) {
+    const [x0, y0, x1, y1] = box(nat);
+    const margin = (MARGIN_MM / PX_MM) * nat;
+    const w = x1 - x0 + 2 * margin;
+    frame = { x: x0 - margin, y: y0 - margin, w, h: y1 - y0 + 2 * margin, nat, mm: (10 * width) / w };
+    nat = PX_MM / frame.mm;
+  }
+  return frame;
+}
+
+/**
+ * The dash pattern of a dashed run `length` long (both in CSS pixels on paper): the style's
+ * where the run holds two periods, shrunk until two fit on a shorter run — but no dash or gap
+ * below 0.6 pt — so that a short dashed piece (a common perpendicular of a few mm) still shows
+ * dashes.
+ * @param {number[]} dash @param {number} length
+ */
+export function dashFor(dash, length) {
+  const period = dash.reduce((a, b) => a + b, 0);
+  if (length >= 2 * period) return dash;
+  const f = Math.min(1, Math.max(length / (2 * period), LEAST_DASH / Math.min(...dash)));
+  return dash.map((d) => d * f);
+}
+
+/** The length of a run (pixels of the figure). @param {number[]} points */
+export function runLength(points) {
+  let length = 0;
+  for (let k = 2; k + 1 < points.length; k += 2)
+    length += Math.hypot(points[k] - points[k - 2], points[k + 1] - points[k - 1]);
+  return length;
+}

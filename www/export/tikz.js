@@ -5,7 +5,18 @@
 // ($R_{i}$, $d_{1}$, $\varphi$), other letters as TeX accents (\"u), so it compiles with pdflatex,
 // lualatex and xelatex with nothing but \usepackage{tikz}. Deterministic for a given view, so a
 // known scene's export can be checked exactly.
-import { figureOf, paint, hiddenLook, facetColour, hatchLines, HATCH } from './projection.js';
+import {
+  figureOf,
+  paint,
+  hiddenLook,
+  facetColour,
+  hatchLines,
+  HATCH,
+  printFrame,
+  dashFor,
+  runLength,
+} from './projection.js';
+import { HATCH_SPACING, PRINT_WIDTH } from '../limits.js';
 import { parseRich } from '../ui/richtext.js';
 
 /** Letters and signs that are symbols: written in math mode. */
@@ -204,19 +215,26 @@ export function texLabel(/** @type {string} */ text) {
 }
 
 /**
- * The TikZ picture of a stage's current view, 12 cm wide.
+ * The TikZ picture of a stage's current view, cropped to its drawing and `width` cm wide (8 by
+ * default: a column); line widths, dashes and dots in points, the same on paper at any width.
  * @param {import('../stage.js').Stage} stage
- * @param {import('./svg.js').FigureOptions & {width?: number}} [options]
+ * @param {import('./svg.js').FigureOptions} [options]
  */
-export function exportTikz(stage, { bw = false, legend = true, labels = true, hidden = 'dashed', width = 12 } = {}) {
+export function exportTikz(
+  stage,
+  { bw = false, legend = true, labels = true, hidden = 'dashed', width = PRINT_WIDTH.default } = {},
+) {
   const fig = figureOf(stage);
-  const s = width / fig.width;
+  const frame = printFrame(fig, { width, bw, labels, hidden });
+  // cm per pixel of the figure; the origin at the lower left corner of the drawing's box
+  const s = frame.mm / 10;
+  const bottom = frame.y + frame.h;
   const n = (/** @type {number} */ x) =>
     (Math.round(x * 1000) / 1000)
       .toFixed(3)
       .replace(/\.?0+$/, '')
       .replace(/^-0$/, '0');
-  const at = (/** @type {number} */ x, /** @type {number} */ y) => `(${n(x * s)},${n((fig.height - y) * s)})`;
+  const at = (/** @type {number} */ x, /** @type {number} */ y) => `(${n((x - frame.x) * s)},${n((bottom - y) * s)})`;
   const path = (/** @type {number[]} */ p) => {
     const out = [];
     for (let k = 0; k + 1 < p.length; k += 2) out.push(at(p[k], p[k + 1]));
@@ -225,6 +243,24 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
   const pt = (/** @type {number} */ px) => `${n(px * 0.75)}pt`;
   const dash = (/** @type {number[] | null} */ d) =>
     d ? `, dash pattern=${d.map((x, k) => `${k % 2 ? 'off' : 'on'} ${pt(x)}`).join(' ')}` : '';
+  /**
+   * The runs of a dashed line by the pattern each is drawn with (a short one gets a shorter
+   * pattern, projection.js's dashFor), the style's first; a solid line's all in one.
+   * @param {Array<{points: number[]}>} runs @param {number[] | null} pattern
+   * @returns {Array<[number[] | null, string]>}
+   */
+  const byDash = (runs, pattern) => {
+    if (!pattern) return [[null, runs.map((r) => path(r.points)).join(' ')]];
+    /** @type {Map<string, {dash: number[], paths: string[]}>} */
+    const groups = new Map([[String(pattern), { dash: pattern, paths: [] }]]);
+    for (const r of runs) {
+      const own = dashFor(pattern, runLength(r.points) / frame.nat).map((x) => Math.round(x * 100) / 100);
+      const key = String(own[0] === pattern[0] ? pattern : own);
+      if (!groups.has(key)) groups.set(key, { dash: own, paths: [] });
+      /** @type {{paths: string[]}} */ (groups.get(key)).paths.push(path(r.points));
+    }
+    return [...groups.values()].filter((g) => g.paths.length).map((g) => [g.dash, g.paths.join(' ')]);
+  };
   /** @type {Map<string, string>} */
   const colours = new Map();
   const colour = (/** @type {number[]} */ c) => {
@@ -245,7 +281,7 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
   // typeset than TikZ paths), consecutive facets of one colour in one path
   // (\rlM, \rlL: moveto and lineto in points, defined inside the picture)
   const q = (/** @type {number} */ x, /** @type {number} */ y) =>
-    `{${(x * s * 28.45274).toFixed(1)}}{${((fig.height - y) * s * 28.45274).toFixed(1)}}`;
+    `{${((x - frame.x) * s * 28.45274).toFixed(1)}}{${((bottom - y) * s * 28.45274).toFixed(1)}}`;
   const polygon = (/** @type {number[]} */ p) => {
     let out = '';
     for (let k = 0; k + 1 < p.length; k += 2) out += `\\rl${k ? 'L' : 'M'}${q(p[k], p[k + 1])}`;
@@ -269,7 +305,7 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
     group.paths.push(polygon(facet.points));
     if (look.hatch) {
       flush();
-      const lines = hatchLines(facet.points, look.hatch);
+      const lines = hatchLines(facet.points, look.hatch, HATCH_SPACING * frame.nat);
       if (lines.length)
         body.push(
           `\\begin{pgfscope}\\pgfsetstrokecolor{${colour([HATCH.grey, HATCH.grey, HATCH.grey])}}\\pgfsetlinewidth{${pt(HATCH.width)}}`,
@@ -289,8 +325,9 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
       // (a hidden dot is left out: a point behind a surface says nothing its lines do not)
       if (set.kind === 'points') continue;
       const look = hiddenLook(style, bw);
-      const opts = `${colour(look.color)}, line width=${pt(look.width)}${dash(look.dash)}${look.opacity < 1 ? `, draw opacity=${n(look.opacity)}` : ''}`;
-      body.push(`\\draw[${opts}] ${runs.map((r) => path(r.points)).join(' ')};`);
+      const opacity = look.opacity < 1 ? `, draw opacity=${n(look.opacity)}` : '';
+      for (const [pattern, paths] of byDash(runs, look.dash))
+        body.push(`\\draw[${colour(look.color)}, line width=${pt(look.width)}${dash(pattern)}${opacity}] ${paths};`);
     }
 
   // what is seen, in the scene's order
@@ -310,10 +347,11 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
       continue;
     }
     const look = /** @type {import('./projection.js').LineLook} */ (paint(set.style, bw));
-    const lines = runs.map((r) => path(r.points)).join(' ');
-    if (look.halo) body.push(`\\draw[white, line width=${pt(look.width + 3)}] ${lines};`);
+    if (look.halo)
+      body.push(`\\draw[white, line width=${pt(look.width + 3)}] ${runs.map((r) => path(r.points)).join(' ')};`);
     const opacity = look.opacity < 1 ? `, draw opacity=${n(look.opacity)}` : '';
-    body.push(`\\draw[${colour(look.color)}, line width=${pt(look.width)}${dash(look.dash)}${opacity}] ${lines};`);
+    for (const [pattern, paths] of byDash(runs, look.dash))
+      body.push(`\\draw[${colour(look.color)}, line width=${pt(look.width)}${dash(pattern)}${opacity}] ${paths};`);
   }
 
   if (labels)
@@ -322,13 +360,15 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
         `\\node[anchor=north west, inner sep=1pt, fill=white, fill opacity=0.85, text opacity=1] at ${at(l.x, l.y)} {${texLabel(l.text)}};`,
       );
 
-  // the legend under the picture: each entry's node hangs from the one above, so none overlaps
+  // the legend under the picture: each entry's node hangs from the one above, so none overlaps;
+  // its text wraps within the figure's width (at least 2 cm)
   if (legend && fig.legend.length) {
+    const text = Math.max(2, frame.w * s - 1.3 - 0.106);
     fig.legend.forEach((entry, k) => {
       const name = `rl-legend-${k}`;
       const where = k === 0 ? `(${n(1.3)},${n(-0.2)})` : `(rl-legend-${k - 1}.south west)`;
       body.push(
-        `\\node[anchor=north west, inner sep=1.5pt, text height=1.6ex, text depth=0.5ex, font=\\small] (${name}) at ${where} {${texText(entry.label)}};`,
+        `\\node[anchor=north west, inner sep=1.5pt, text width=${n(text)}cm, align=left, font=\\small] (${name}) at ${where} {${texText(entry.label)}};`,
       );
       const look = /** @type {any} */ (paint(entry.style, bw));
       const sample = [];
@@ -349,7 +389,11 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
         if (look.hatch) {
           // the hatching of a 0.7 × 0.26 cm box, drawn in its own pixels (1 cm = 1/s px)
           const [w, h] = [0.7 / s, 0.26 / s];
-          const lines = [...hatchLines([0, 0, w, 0, w, h], look.hatch), ...hatchLines([0, 0, w, h, 0, h], look.hatch)];
+          const spacing = HATCH_SPACING * frame.nat;
+          const lines = [
+            ...hatchLines([0, 0, w, 0, w, h], look.hatch, spacing),
+            ...hatchLines([0, 0, w, h, 0, h], look.hatch, spacing),
+          ];
           const local = (/** @type {number} */ x, /** @type {number} */ y) => `(${n(-1 + x * s)},${n(0.13 - y * s)})`;
           if (lines.length)
             sample.push(
@@ -357,7 +401,8 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
             );
         }
       }
-      body.push(`\\begin{scope}[shift={(${name}.west)}]`, ...sample, '\\end{scope}');
+      // (the sample beside the entry's first line)
+      body.push(`\\begin{scope}[shift={([yshift=-5.2pt]${name}.north west)}]`, ...sample, '\\end{scope}');
     });
   }
   const defs = [...colours].map(([hexColour, name]) => `\\definecolor{${name}}{HTML}{${hexColour}}`);
@@ -368,6 +413,9 @@ export function exportTikz(stage, { bw = false, legend = true, labels = true, hi
       ? ['\\def\\rlM#1#2{\\pgfpathqmoveto{#1pt}{#2pt}}\\def\\rlL#1#2{\\pgfpathqlineto{#1pt}{#2pt}}']
       : []),
     ...defs,
+    // the drawing's box, margin included: the picture is as wide as asked (PGF's quick paths of
+    // the surfaces do not count in TikZ's own bounding box)
+    `\\path (0,0) rectangle ${at(frame.x + frame.w, frame.y)};`,
     ...body,
     '\\end{tikzpicture}',
     '',

@@ -13,6 +13,7 @@ import { readState } from '../state.js';
 import { translator, pickLanguage, loadLanguage } from '../i18n/translate.js';
 import { adoptStyles } from '../ui/css.js';
 import { showFailure } from '../ui/failure.js';
+import { appendRich } from '../ui/richtext.js';
 import { storedHash } from './onefile.js';
 import { stored } from '../platform.js';
 import { pageChrome, plainTitle } from './chrome.js';
@@ -35,7 +36,10 @@ import { openExercise, openView } from '../stage/open.js';
  */
 export async function startPage({ oneFile = false, embedScript } = {}) {
   const doc = document;
-  adoptStyles(doc);
+  // the production page and the one-file build carry the page's shell and the styles of the view
+  // in their HTML (page/shell.js): painted before this runs, taken over as they are
+  const shell = doc.documentElement.hasAttribute('data-shell');
+  if (!shell) adoptStyles(doc);
   // the core downloads and compiles while the page around the view is built, each part in a
   // task of its own (tasks.js); the link is read once the core is there (its values are checked
   // against the core's catalogue)
@@ -50,7 +54,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
 
   // "Loading …" (boot.js) goes over the view while the core loads, and says why if it cannot start
   const boot = doc.getElementById('boot');
-  const chrome = pageChrome(doc);
+  const chrome = pageChrome(doc, translator('en'));
   const share = /** @type {HTMLDialogElement} */ (
     Object.assign(doc.createElement('dialog'), { className: 'share', id: 'share-dialog' })
   );
@@ -68,6 +72,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       task: stage.task ? taskLink(stage.task, (id) => builtInTask(id) !== null) : null,
     };
   const address = pageAddress({ oneFile, state: shown });
+  await nextTask();
+  // (the viewer's WebGL context and the compilation of its shaders start here)
   const stage = new Stage(chrome.main, {
     lang,
     page: true,
@@ -102,6 +108,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     },
   });
   doc.body.append(share);
+  await nextTask();
 
   /** Opens `scene` (with `params` and `options`), then records it as a new history entry. */
   const go = (
@@ -113,6 +120,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       address.save('push');
       localize();
     });
+  await nextTask();
   const data = dataPanel(stage, {
     i18n: () => i18n,
     // an exercise file, pasted or uploaded: opened as the exercise (its reason when it cannot be)
@@ -282,15 +290,30 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     doc.body.dataset.frames = String(n);
   };
   localize();
-  if (boot) stage.els.view.append(boot);
-  // the linked scene's heading and explanation while the core loads (a view in a frame, which
-  // may show no text, and an exercise, which may hide some, wait for the link to be read)
-  if (!link.has('embed') && !link.has('task'))
-    stage.preview(
-      SCENES.find((s) => s.id === (link.get('scene') ?? findPreset(link.get('paper'))?.scene)) ?? SCENES[0],
-    );
+  if (boot && boot.parentElement !== stage.els.view) stage.els.view.append(boot);
+  // the linked scene's heading while the core loads (the shell's first lines have shown it
+  // already; a view in a frame, which may show no text, and an exercise, which may hide some,
+  // wait for the link to be read). Its explanation comes with its controls, under them: shown
+  // now, it would move down when they arrive
+  if (!link.has('embed') && !link.has('task')) {
+    const scene = SCENES.find((s) => s.id === (link.get('scene') ?? findPreset(link.get('paper'))?.scene)) ?? SCENES[0];
+    const heading = stage.els.heading;
+    const wanted = appendRich(doc.createElement('h2'), i18n.t(scene.title));
+    if (heading.innerHTML !== wanted.innerHTML) heading.replaceChildren(...wanted.childNodes);
+  }
   await Promise.all([core, afterPaint()]);
+  // the first scene in two frames: its controls, text and numbers (the page's layout and paint),
+  // then the figure (the buffers' upload and the first WebGL frame) — the viewer's drawing held
+  // until the first is painted, so that no one task does both
+  const viewer = stage.viewer;
+  const holding = !viewer.pending;
+  if (holding) viewer.pending = true;
   await openAddress();
+  if (holding) {
+    await afterPaint();
+    viewer.pending = false;
+    viewer.requestRender();
+  }
   address.save('replace');
   doc.getElementById('boot')?.remove();
   doc.documentElement.dataset.started = '1';

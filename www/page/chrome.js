@@ -1,5 +1,6 @@
-// The page's chrome above the stage: the skip link, the title, the scene, figure and language
-// pickers and the Share button, with their texts in the reader's language.
+// The page's chrome above the stage: the skip link, the title, the scene, figure, exercise and
+// language pickers and the Share button (on a phone behind one Menu button), with their texts in
+// the reader's language.
 import { SCENES } from '../scenes/index.js';
 import { PRESETS } from '../paper.js';
 import { LANGUAGE_CODES } from '../i18n/translate.js';
@@ -13,40 +14,91 @@ const NATIVE = { en: 'English', de: 'Deutsch' };
 /** A title without the markup of sub- and superscripts (for menus and the tab). */
 export const plainTitle = (/** @type {string} */ text) => text.replace(/[_^]\{?([^}]*)\}?/g, '$1');
 
+/** Text as HTML (for the shell's markup). */
+export const htmlText = (/** @type {string} */ text) =>
+  text.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c] ?? c);
+
 /**
- * The header of the page and the <main> the stage fills, put into `doc.body`.
- * @param {Document} doc
+ * The markup of the skip link and the header in English, before any script: the production page
+ * and the one-file build carry it in their HTML (page/shell.js), so that it is painted with the
+ * first bytes; pageChrome() takes it over, or puts it in where the page has none (npm run dev).
+ * On a phone the header is one row: the name and the Menu button, which opens the pickers and
+ * Share over the figure.
+ * @param {import('../i18n/index.js').Translator} i18n   English
  */
-export function pageChrome(doc) {
-  const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
-    Object.assign(doc.createElement(tag), props);
-  const skip = el('a', { className: 'skip', href: '#main' });
+export function chromeHtml({ t }) {
+  const picker = (/** @type {string} */ id, /** @type {string} */ label, /** @type {string} */ options) =>
+    `<label class="picker"><span>${htmlText(t(label))} </span><select id="${id}">${options}</select></label>`;
+  const option = (/** @type {string} */ value, /** @type {string} */ text) =>
+    `<option value="${htmlText(value)}">${htmlText(text)}</option>`;
+  return [
+    `<a class="skip" href="#main">${htmlText(t('app.skip'))}</a>`,
+    '<header class="page-header">',
+    '<h1>ruledlab</h1>',
+    `<p class="subtitle">${htmlText(t('app.subtitle'))}</p>`,
+    `<button type="button" id="menu" class="menu" aria-expanded="false" aria-controls="page-menu"><span class="menu-sign" aria-hidden="true">☰</span> <span class="menu-word">${htmlText(t('app.menu'))}</span></button>`,
+    '<div class="page-menu" id="page-menu">',
+    picker('scene', 'app.scene', SCENES.map((s) => option(s.id, plainTitle(t(s.title)))).join('')),
+    picker('paper', 'app.figures', option('', t('paper.none'))),
+    picker('task', 'app.exercises', option('', t('task.none'))),
+    picker(
+      'lang',
+      'app.language',
+      LANGUAGE_CODES.map((code) => option(code, NATIVE[/** @type {keyof typeof NATIVE} */ (code)] ?? code)).join(''),
+    ),
+    `<button type="button" id="share">${htmlText(t('app.share'))}</button>`,
+    '</div>',
+    '</header>',
+  ].join('');
+}
+
+/**
+ * The header of the page and the <main> the stage fills: taken over from the page's shell where
+ * its HTML has one, else put into `doc.body`.
+ * @param {Document} doc
+ * @param {import('../i18n/index.js').Translator} english
+ */
+export function pageChrome(doc, english) {
+  if (!doc.querySelector('header.page-header')) {
+    doc.body.innerHTML = `${chromeHtml(english)}<main id="main"></main>`;
+  }
+  const by = (/** @type {string} */ selector) => /** @type {HTMLElement} */ (doc.querySelector(selector));
+  const skip = by('a.skip');
   skip.addEventListener('click', (e) => {
     e.preventDefault();
     /** @type {HTMLElement | null} */ (doc.querySelector('.rl-controls [name]'))?.focus();
   });
-  const header = el('header', { className: 'page-header' });
-  const title = el('h1', { textContent: 'ruledlab' });
-  const subtitle = el('p', { className: 'subtitle' });
-  const pickerLabel = el('label', { className: 'picker' });
-  const picker = /** @type {HTMLSelectElement} */ (el('select', { id: 'scene' }));
-  pickerLabel.append(el('span'), picker);
-  const paperLabel = el('label', { className: 'picker' });
-  const paperPicker = /** @type {HTMLSelectElement} */ (el('select', { id: 'paper' }));
-  paperLabel.append(el('span'), paperPicker);
-  const taskLabel = el('label', { className: 'picker' });
-  const taskPicker = /** @type {HTMLSelectElement} */ (el('select', { id: 'task' }));
-  taskLabel.append(el('span'), taskPicker);
-  const langLabel = el('label', { className: 'picker' });
-  const langPicker = /** @type {HTMLSelectElement} */ (el('select', { id: 'lang' }));
-  for (const code of LANGUAGE_CODES) {
-    langPicker.add(new Option(NATIVE[/** @type {keyof typeof NATIVE} */ (code)] ?? code, code));
-  }
-  langLabel.append(el('span'), langPicker);
-  const shareButton = el('button', { type: 'button', id: 'share' });
-  header.append(title, subtitle, pickerLabel, paperLabel, taskLabel, langLabel, shareButton);
-  const main = el('main', { id: 'main' });
-  doc.body.replaceChildren(skip, header, main);
+  const header = by('header.page-header');
+  const subtitle = by('.page-header .subtitle');
+  const picker = /** @type {HTMLSelectElement} */ (by('#scene'));
+  const paperPicker = /** @type {HTMLSelectElement} */ (by('#paper'));
+  const taskPicker = /** @type {HTMLSelectElement} */ (by('#task'));
+  const langPicker = /** @type {HTMLSelectElement} */ (by('#lang'));
+  const [pickerLabel, paperLabel, taskLabel, langLabel] = [picker, paperPicker, taskPicker, langPicker].map(
+    (p) => /** @type {HTMLElement} */ (p.parentElement),
+  );
+  const shareButton = /** @type {HTMLButtonElement} */ (by('#share'));
+  const menuButton = /** @type {HTMLButtonElement} */ (by('#menu'));
+  const main = by('#main');
+
+  // the phone's menu: opened and closed by its button, closed by Escape, a click elsewhere, or
+  // once a choice is made in it
+  const open = (/** @type {boolean} */ on) => {
+    header.classList.toggle('open', on);
+    menuButton.setAttribute('aria-expanded', String(on));
+  };
+  menuButton.addEventListener('click', () => open(!header.classList.contains('open')));
+  header.addEventListener('keydown', (e) => {
+    if (e.key === 'Escape' && header.classList.contains('open')) {
+      open(false);
+      menuButton.focus();
+    }
+  });
+  doc.addEventListener('pointerdown', (e) => {
+    if (header.classList.contains('open') && !header.contains(/** @type {Node} */ (e.target))) open(false);
+  });
+  for (const control of [picker, paperPicker, taskPicker, langPicker, shareButton])
+    control.addEventListener(control === shareButton ? 'click' : 'change', () => open(false));
 
   /** The label text before a picker. */
   const label = (/** @type {HTMLElement} */ box, /** @type {string} */ text) => {
@@ -90,6 +142,7 @@ export function pageChrome(doc) {
       );
       taskPicker.value = shown.task && builtInTasks().some((x) => x.id === shown.task) ? shown.task : '';
       shareButton.textContent = t('app.share');
+      /** @type {HTMLElement} */ (menuButton.querySelector('.menu-word')).textContent = t('app.menu');
     },
   };
 }

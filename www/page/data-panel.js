@@ -7,7 +7,8 @@ import { linkable } from '../state.js';
 import { describeError } from '../ui/errors.js';
 import { dataFile } from '../export/files.js';
 import { store } from '../platform.js';
-import { MAX_LINK_RULINGS } from '../limits.js';
+import { MAX_LINK_RULINGS, PRINT_WIDTH } from '../limits.js';
+import { exportName } from './file-names.js';
 
 /** Session storage key of an import too large for the link. */
 export const STORED = 'ruledlab.data';
@@ -85,6 +86,29 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
   importError.setAttribute('role', 'alert');
   const storedNote = el('p', { className: 'io-note io-stored', hidden: true });
   const exportsLabel = el('p', { className: 'io-label' });
+  // the printed width of the SVG and TikZ figures: their lines, dashes and type are sized for it
+  const widthLabel = el('label', { htmlFor: 'print-width' });
+  const printWidth = /** @type {HTMLInputElement} */ (
+    el('input', {
+      type: 'number',
+      id: 'print-width',
+      min: PRINT_WIDTH.min,
+      max: PRINT_WIDTH.max,
+      step: 0.5,
+      value: PRINT_WIDTH.default,
+      inputMode: 'decimal',
+    })
+  );
+  const widthRow = el('div', { className: 'io-row io-width' });
+  widthRow.append(widthLabel, printWidth);
+  /** The printed width asked for, in its range (the field shows what is used). */
+  const width = () => {
+    const asked = Number(printWidth.value);
+    const cm = Number.isFinite(asked) && printWidth.value !== '' ? asked : PRINT_WIDTH.default;
+    const used = Math.min(PRINT_WIDTH.max, Math.max(PRINT_WIDTH.min, cm));
+    if (used !== asked) printWidth.value = String(used);
+    return used;
+  };
   const exports = el('div', { className: 'io-row', id: 'exports' });
   /** @type {Record<string, HTMLButtonElement>} */
   const buttons = {};
@@ -95,7 +119,19 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
   }
   // in an exercise the data files wait (a table of δ or of the footpoints would be the answer)
   const heldNote = el('p', { className: 'io-note io-held', hidden: true });
-  io.append(summary, pasteLabel, paste, kindRow, row, importError, storedNote, exportsLabel, exports, heldNote);
+  io.append(
+    summary,
+    pasteLabel,
+    paste,
+    kindRow,
+    row,
+    importError,
+    storedNote,
+    exportsLabel,
+    widthRow,
+    exports,
+    heldNote,
+  );
   stage.els.panel.insertBefore(io, stage.els.text);
 
   // import: pasted text or an uploaded file; an error is said at the paste box, and the scene
@@ -164,27 +200,27 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
     const kind = /** @type {HTMLElement} */ (e.target).dataset?.export;
     const built = stage.session.built;
     if (!kind || !built || !stage.scene) return;
-    const name = stage.scene.id;
     try {
       const data = built.data;
       if (kind === 'png' || kind === 'png2' || kind === 'png4') {
         const scale = kind === 'png' ? 1 : Number(kind.slice(3));
         // the figure exports are loaded when first asked for
         const { png } = await import('../export/png.js');
-        download(`${name}${scale === 1 ? '' : `-${scale}x`}.png`, await png(stage, { scale }));
+        download(exportName(stage, 'png', { scale }), await png(stage, { scale }));
       } else if (kind === 'svg' || kind === 'svgBw') {
         const bw = kind === 'svgBw';
         const { exportSvg } = await import('../export/svg.js');
-        download(`${name}${bw ? '-bw' : ''}.svg`, exportSvg(stage, { bw }), 'image/svg+xml');
+        download(exportName(stage, 'svg', { bw }), exportSvg(stage, { bw, width: width() }), 'image/svg+xml');
       } else if (kind === 'tikz' || kind === 'tikzBw') {
         const bw = kind === 'tikzBw';
         const { exportTikz } = await import('../export/tikz.js');
-        download(`${name}${bw ? '-bw' : ''}.tikz`, exportTikz(stage, { bw }), 'text/x-tex');
+        download(exportName(stage, 'tikz', { bw }), exportTikz(stage, { bw, width: width() }), 'text/x-tex');
       } else if (kind === 'plot' && built.figure) {
-        download(`${name}-plot.svg`, new XMLSerializer().serializeToString(built.figure()), 'image/svg+xml');
+        download(exportName(stage, 'plot'), new XMLSerializer().serializeToString(built.figure()), 'image/svg+xml');
       } else if (data && kind in DATA_FILES) {
         const [suffix, format, type] = DATA_FILES[/** @type {keyof typeof DATA_FILES} */ (kind)];
-        download(`${name}${suffix}`, dataFile(data.segments, format, { grid: data.grid, name }), type);
+        const name = exportName(stage, 'data', { suffix });
+        download(name, dataFile(data.segments, format, { grid: data.grid, name: stage.scene.id }), type);
       }
     } catch (err) {
       stage.fail(err);
@@ -202,6 +238,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
       kindLabel.textContent = t('io.kind');
       for (const option of kind.options) option.textContent = t(`io.kind.${option.value}`);
       exportsLabel.textContent = t('io.exports');
+      widthLabel.textContent = t('io.printWidth');
       for (const [kind, key] of EXPORTS) buttons[kind].textContent = t(key);
       heldNote.textContent = t('io.heldInTask');
     },

@@ -8,6 +8,14 @@ export const BODY =
   '<p id="boot" class="boot">Loading ruledlab …</p>' +
   '<noscript><p class="boot boot-problem" lang="en">ruledlab needs JavaScript, which is turned off here (a page that shows it in a frame may have turned it off: an iframe sandbox without allow-scripts). <span lang="de">ruledlab braucht JavaScript, das hier ausgeschaltet ist (eine Seite, die es in einem Rahmen zeigt, hat es vielleicht ausgeschaltet: ein iframe-sandbox ohne allow-scripts).</span></p></noscript>';
 
+/** The body the one-file page writes into a copy of itself (its shell: scripts/onefile.mjs sets it). */
+let body = BODY;
+
+/** Sets the body of the one-file page's copies (the build's shell, scripts/onefile/configure.js). */
+export function useBody(/** @type {string} */ html) {
+  body = html;
+}
+
 /** The id of the state block. */
 export const STATE_ID = 'ruledlab-state';
 
@@ -54,7 +62,7 @@ export function storedHash() {
 export async function oneFileWithState(oneFile, hash) {
   if (oneFile)
     return withState(
-      `<!doctype html>\n<html lang="en" data-build="onefile">\n<head>${document.head.innerHTML}</head>\n<body>${BODY}\n${SCRIPT}</body>\n</html>\n`,
+      `<!doctype html>\n<html lang="en" data-build="onefile" data-shell>\n<head>${document.head.innerHTML}</head>\n<body>${body}\n${SCRIPT}</body>\n</html>\n`,
       hash,
     );
   const response = await fetch(new URL('../../dist/ruledlab.html', import.meta.url));

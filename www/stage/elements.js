@@ -62,6 +62,11 @@ export function stageElements(host, { page = false }) {
   const el = (tag, props = {}) => Object.assign(doc.createElement(tag), props);
   const button = (/** @type {string} */ className = '', hidden = false) =>
     el('button', { type: 'button', className, hidden });
+  // the page's shell (in the HTML of the production page and the one-file build): its stage, view,
+  // panel and heading, painted before any script ran, are taken over where they are
+  const shell = /** @type {HTMLElement | null} */ (host.querySelector(':scope > .rl-stage'));
+  const take = (/** @type {string} */ selector) =>
+    /** @type {HTMLElement | null} */ (shell?.querySelector(`:scope > ${selector}`) ?? null);
 
   const canvas = el('canvas', { tabIndex: 0 });
   canvas.setAttribute('role', 'img');
@@ -104,7 +109,7 @@ export function stageElements(host, { page = false }) {
   bar.append(hint, editBar, toolbar);
   const legend = el('ul', { className: 'rl-legend' });
   const noteBox = el('p', { className: 'rl-note', hidden: true });
-  const view = el('div', { className: 'rl-view' });
+  const view = take('.rl-view') ?? el('div', { className: 'rl-view' });
   view.append(canvas, labels, legend, bar, progress, noteBox, error, description, status);
 
   const paperCard = el('section', { className: 'rl-paper', hidden: true, id: `${id}-paper` });
@@ -113,7 +118,7 @@ export function stageElements(host, { page = false }) {
   const form = el('div', { className: 'rl-controls' });
   form.setAttribute('role', 'group');
   const parts = {
-    heading: el('h2'),
+    heading: take('.rl-panel > h2') ?? el('h2'),
     authorBox: el('section', { className: 'rl-author', hidden: true }),
     taskBox: el('section', { className: 'rl-task', hidden: true }),
     paperCard,
@@ -130,13 +135,16 @@ export function stageElements(host, { page = false }) {
     downloads: el('div', { className: 'rl-downloads' }),
     text: el('article', { className: 'rl-text' }),
   };
-  const panel = el('div', { className: 'rl-panel' });
-  panel.append(...Object.values(parts));
+  const panel = take('.rl-panel') ?? el('div', { className: 'rl-panel' });
+  panel.append(...Object.values(parts).filter((part) => part.parentElement !== panel));
 
   const shortcuts = el('dialog', { className: 'rl-shortcuts' });
-  const root = el('div', { className: page ? 'rl-stage rl-page' : 'rl-stage' });
-  root.append(view, panel, shortcuts);
-  host.append(root);
+  const root = shell ?? el('div', { className: page ? 'rl-stage rl-page' : 'rl-stage' });
+  if (!shell) {
+    root.append(view, panel);
+    host.append(root);
+  }
+  root.append(shortcuts);
   return {
     root,
     view,

@@ -1,6 +1,6 @@
 // The arrangement of a stage: its panel beside the view when there is room, under it otherwise
 // (narrow: under NARROW px, or a box taller than wide under PORTRAIT px); the labels above the
-// controls when tiny; the legend leading the panel of a narrow box. The box is the element's, or
+// controls when tiny; the legend under the heading in the panel of a narrow box. The box is the element's, or
 // for the page the screen. Also the share of a narrow view the legend and the toolbar cover, so
 // that a fitted figure is framed between them.
 import { NARROW, PORTRAIT, TINY, SMALL_VIEW } from '../limits.js';
@@ -18,10 +18,11 @@ export function arrange(stage) {
   const height = stage.options.page ? window.innerHeight : box.height || host().height;
   const narrow = width > 0 && (width < NARROW || (height > width && width < PORTRAIT));
   root.classList.toggle('rl-narrow', narrow);
-  // in a narrow box with a panel the legend leads the panel, right under the view: the view
-  // keeps its whole height for the figure
+  // in a narrow box with a panel the legend goes into the panel, under the scene's heading: the
+  // view keeps its whole height for the figure, and the heading, painted first (the page's shell),
+  // stays where it is when the legend comes
   const legendInPanel = narrow && !panel.hidden && !!stage.showControls;
-  if (legendInPanel && legend.parentElement !== panel) panel.prepend(legend);
+  if (legendInPanel && legend.parentElement !== panel) stage.els.heading.after(legend);
   if (!legendInPanel && legend.parentElement !== view) view.insertBefore(legend, bar);
   legend.classList.toggle('rl-legend-panel', legendInPanel);
   root.classList.toggle('rl-tiny', width > 0 && width < TINY);

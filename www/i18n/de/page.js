@@ -15,6 +15,7 @@ export default {
     'Die Fassung in einer Datei liegt hier nicht vor: Führen Sie npm run build aus, oder verwenden Sie die heruntergeladene ruledlab.html.',
   'app.skip': 'Zu den Bedienelementen springen',
   'app.exercises': 'Aufgaben',
+  'app.menu': 'Menü',
 
   'boot.noWebgl2':
     'ruledlab konnte nicht starten: Dieser Browser (oder dieses Gerät) bietet kein WebGL2, das die 3D-Ansicht braucht. Aktuelle Versionen von Firefox, Chrome, Edge und Safari bieten es; ein Browser mit abgeschalteter Hardwarebeschleunigung unter Umständen nicht.',
@@ -67,6 +68,7 @@ export default {
     'Dieser Import hat mehr als {max} Erzeugende: zu viele für den Link, und diese Seite hat hier keinen Speicher (sie wird in einem abgeschotteten Rahmen gezeigt), daher bleibt er nur, bis die Seite geschlossen wird.',
   'io.stored': 'Dieser Import hat mehr als {max} Erzeugende: Er steht im Sitzungsspeicher dieses Tabs, nicht im Link.',
   'io.exports': 'Das Gezeigte speichern',
+  'io.printWidth': 'Druckbreite der SVG- und TikZ-Abbildungen (cm)',
   'io.kind': 'Der Text enthält',
   'io.kind.auto': 'erkennen',
   'io.kind.segments': 'Strecken (Erzeugende, Geraden)',

@@ -15,6 +15,7 @@ export default {
   'app.onefileMissing': 'The one-file build is not here: run npm run build, or use the downloaded ruledlab.html.',
   'app.skip': 'Skip to the controls',
   'app.exercises': 'Exercises',
+  'app.menu': 'Menu',
 
   'boot.noWebgl2':
     'ruledlab could not start: this browser (or this device) does not provide WebGL2, which the 3D view needs. Current Firefox, Chrome, Edge and Safari provide it; a browser with hardware acceleration turned off may not.',
@@ -67,6 +68,7 @@ export default {
   'io.stored':
     'This import has more than {max} rulings: it is kept in this tab\u2019s session storage, not in the link.',
   'io.exports': 'Save what is shown',
+  'io.printWidth': 'Printed width of SVG and TikZ figures (cm)',
   'io.kind': 'The text holds',
   'io.kind.auto': 'recognise it',
   'io.kind.segments': 'segments (rulings, lines)',
