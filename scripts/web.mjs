@@ -33,6 +33,7 @@ const LAZY = {
   'the Share dialog': ['www/page/share.js'],
   'the figure exports': ['www/export/svg.js', 'www/export/tikz.js', 'www/export/png.js'],
   'the exercise author': ['www/page/author.js'],
+  'the course packages and a package page': ['www/page/packages.js', 'www/page/course.js'],
 };
 /** `new URL(…, import.meta.url)` targets the bundles may keep as they are, and why. */
 const UNUSED = {
@@ -79,6 +80,7 @@ const urls = new Map([
   [join(ROOT, 'pkg/ruledlab_bg.wasm'), `./${basename(wasm)}`],
   [join(ROOT, 'dist/manifest.json'), '../dist/manifest.json'],
   [join(ROOT, 'dist/ruledlab.html'), '../dist/ruledlab.html'],
+  [join(ROOT, 'dist/ruledlab-embed.js'), '../dist/ruledlab-embed.js'],
 ]);
 
 /**
