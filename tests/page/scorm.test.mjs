@@ -110,7 +110,7 @@ test('SCORM 1.2 from Share: found by its manifest, failed and then solved with t
   assert.deepEqual(lecturer.problems, []);
   await lecturer.page.close();
 
-  const folder = unpack(bytes, 'p12');
+  unpack(bytes, 'p12');
   const { page, problems, requests } = await session.open(lms('lms12.html', 'p12/'), { wait: false });
   const frame = await activity(page);
   assert.deepEqual(await page.evaluate(() => window.manifest), {

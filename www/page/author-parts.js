@@ -113,7 +113,7 @@ export function answersBox({ rows, values, exact, i18n, el, render }) {
     if (r.kind !== 'number')
       row.append(
         labelled(
-          t('author.answer.samples'),
+          t('author.answer.samples', { samples: TASK_SAMPLES }),
           text(`author-answer-samples-${k}`, r.samples, (v) => (r.samples = v)),
         ),
       );
