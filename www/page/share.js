@@ -143,7 +143,8 @@ export function shareDialog(dialog, context) {
     const { script, scriptNote } = await scriptOf();
     /** @type {HTMLElement[]} */
     const rows = [];
-    const handles = stage.editor.sets.length > 0;
+    // (an exercise says itself whether its points may be dragged)
+    const handles = stage.editor.sets.length > 0 && !task;
     readers.edit ??= stage.editor.active;
     const who = { ...readers, edit: handles && !!readers.edit, leave: !!task && readers.leave };
     const input = stage.input && linkableInput(stage.input) ? stage.input : null;
