@@ -141,7 +141,10 @@ const page = await build({
 for (const file of outputs(page)) put(relative(OUT, file.path), file.contents);
 const meta = /** @type {import('esbuild').Metafile} */ (page.metafile);
 const chunks = Object.fromEntries(Object.entries(meta.outputs).map(([p, o]) => [relative(OUT, resolve(ROOT, p)), o]));
-const entry = /** @type {string} */ (Object.keys(chunks).find((p) => chunks[p].entryPoint));
+// (a chunk that is imported on demand has an entryPoint too: the page's is main.js)
+const entry = /** @type {string} */ (
+  Object.keys(chunks).find((p) => chunks[p].entryPoint === relative(ROOT, join(ROOT, 'www/page/main.js')))
+);
 /** The files a chunk imports statically, itself included (what loads with it). */
 const closure = (/** @type {string} */ start) => {
   const seen = new Set([start]);

@@ -184,13 +184,22 @@ export function drawFields({ key, row, i18n, el, render }) {
   return box;
 }
 
+/** Greek letters by their names (a title about δ(u) keeps its δ in the id as "delta"). */
+const GREEK = Object.fromEntries(
+  'alpha beta gamma delta epsilon zeta eta theta iota kappa lambda mu nu xi omicron pi rho sigma tau upsilon phi chi psi omega'
+    .split(' ')
+    .map((name, k) => [String.fromCharCode(0x3b1 + k + (k > 16 ? 1 : 0)), ` ${name} `]),
+);
+
 /**
- * An id from a title that keeps its letters: "Was heißt torsal?" → "was-heisst-torsal" (ä → ae,
- * ß → ss, other accents dropped), at most `max` characters.
+ * An id from a title that keeps its letters: "Was heißt δ(u)?" → "was-heisst-delta-u" (ä → ae,
+ * ß → ss, Greek letters by name, other accents dropped), at most `max` characters.
  */
 export function slug(/** @type {string} */ title, /** @type {number} */ max) {
   return title
     .toLowerCase()
+    .replace(/[α-ω]/g, (c) => GREEK[c] ?? c)
+    .replace(/ς/g, ' sigma ')
     .replace(/ä/g, 'ae')
     .replace(/ö/g, 'oe')
     .replace(/ü/g, 'ue')

@@ -3,7 +3,7 @@
 // values tried: each of a list, a range's ends and a few seeds between). Each warning says the
 // condition, the numbers drawn where there are any, and the values the scene computes there.
 import { checkGoal, measuresOf } from '../task/check.js';
-import { describeCondition, statedNumber } from '../task/words.js';
+import { describeCondition, outcomeText } from '../task/words.js';
 import { drawTask, drawnText } from '../task/draw.js';
 import { decodeInput } from '../edit/input.js';
 import { withChoices } from '../scene.js';
@@ -86,7 +86,8 @@ export function authorWarnings(task, states, scene, context, i18n) {
     Number.isFinite(o.value) ? format(o.value) : t('task.out.undefined');
   for (const drawn of drawsToTry(task)) {
     const numbers = drawnText(drawn, lang);
-    const where = numbers ? t('author.warn.with', { numbers }) : '';
+    // (the numbers drawn, marked off so that warnings alike can be merged below)
+    const where = numbers ? `\u0000${numbers}\u0000` : '';
     const start = outcomesAt(drawn, states.start, scene, context, {});
     if (!start) out.push({ kind: 'error', text: `${where}${t('author.warn.startBroken')}` });
     else if (start.every((o) => o.holds))
@@ -104,18 +105,27 @@ export function authorWarnings(task, states, scene, context, i18n) {
     }
     solved.forEach((o, k) => {
       if (o.holds) return;
-      const condition = describeCondition(o.condition, drawn, i18n);
-      const target = Number.isFinite(o.target) ? statedNumber(o.target, lang) : '';
       out.push({
         kind: 'solution',
-        text: `${where}${t(o.condition.answer ? 'author.warn.answerFails' : 'author.warn.solutionFails', {
+        text: `${where}${t('author.warn.solutionFails', {
           index: k + 1,
-          condition,
-          value: o.condition.answer && !o.condition.matches ? '' : value(o),
-          target,
+          condition: describeCondition(o.condition, drawn, i18n),
+          outcome: outcomeText(o, i18n, drawn),
         })}`,
       });
     });
   }
-  return out;
+  // the same warning for several draws is said once, with all their numbers
+  /** @type {Map<string, {kind: Warning['kind'], numbers: string[]}>} */
+  const merged = new Map();
+  for (const w of out) {
+    const [, numbers = '', text = w.text] = /^\u0000([^\u0000]*)\u0000(.*)$/s.exec(w.text) ?? [];
+    const seen = merged.get(text) ?? { kind: w.kind, numbers: [] };
+    if (numbers) seen.numbers.push(numbers);
+    merged.set(text, seen);
+  }
+  return [...merged].map(([text, { kind, numbers }]) => ({
+    kind,
+    text: `${numbers.length ? t('author.warn.with', { numbers: numbers.join('; ') }) : ''}${text}`,
+  }));
 }

@@ -241,7 +241,12 @@ export class Author {
     if (!name) return;
     const find = (/** @type {string} */ n) =>
       /** @type {HTMLElement | null} */ (this.box.querySelector(`[name="${n}"]`));
-    (find(name) ?? (name.startsWith('author-remove-') ? find('author-add') : null))?.focus({ preventScroll: true });
+    const gone = name.startsWith('author-remove-')
+      ? find('author-add')
+      : name.startsWith('author-answer-remove-')
+        ? find('author-answer-add')
+        : null;
+    (find(name) ?? gone)?.focus({ preventScroll: true });
     this.box.scrollTop = scroll;
   }
 
@@ -335,7 +340,7 @@ export class Author {
     let task = /** @type {Task | null} */ (null);
     let problem = '';
     try {
-      task = this.rows.length ? this.task() : null;
+      task = this.rows.length || this.answers.length ? this.task() : null;
     } catch (e) {
       problem = String(/** @type {any} */ (e).message);
     }
@@ -534,7 +539,8 @@ export class Author {
     const close = el('button', { type: 'button', textContent: t('author.close') });
     close.addEventListener('click', () => this.close());
     out.append(make, close, result);
-    if (problem && this.rows.length) out.append(el('p', { className: 'rl-author-problem', textContent: problem }));
+    if (problem && (this.rows.length || this.answers.length))
+      out.append(el('p', { className: 'rl-author-problem', textContent: problem }));
     this.box.replaceChildren(
       heading,
       intro,

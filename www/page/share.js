@@ -106,9 +106,9 @@ export function shareDialog(dialog, context) {
    * page has an address, and the element.
    * @param {string} value
    * @param {string} title
-   * @param {Readers} [who]   what readers may do (default: see the controls, drag the points)
+   * @param {Readers} [who]   what readers may do (default: see the controls; an exercise says itself whether its points move)
    */
-  const taskSnippets = async (value, title, who = { controls: true, text: false, edit: true, leave: false }) => {
+  const taskSnippets = async (value, title, who = { controls: true, text: false, edit: false, leave: false }) => {
     const lang = context.state().lang ?? context.i18n().lang;
     const hash = new URLSearchParams({ task: value, lang }).toString();
     const base = location.href.split('#')[0];

@@ -146,9 +146,7 @@ export default {
   'author.warn.startSolves': 'der Anfang erfüllt schon alle Bedingungen, es gäbe also nichts zu tun ({values}).',
   'author.warn.startBroken': 'die Szene lässt sich am Anfang nicht berechnen.',
   'author.warn.solutionBroken': 'die Szene lässt sich in der Lösung nicht berechnen.',
-  'author.warn.solutionFails':
-    'die Lösung verfehlt Bedingung {index}, {condition}: dort ist der Wert {value} (die Schranke: {target}).',
-  'author.warn.answerFails': 'die Antwort der Lösung verfehlt Bedingung {index}, {condition}.',
+  'author.warn.solutionFails': 'die Lösung verfehlt Bedingung {index} ({condition}): {outcome}.',
 
   'measure.striction.minAbsDelta': 'das kleinste |δ| eines Paares von Erzeugenden',
   'measure.isometry.deltaMiddle': 'δ des mittleren Paares von Erzeugenden',

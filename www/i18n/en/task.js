@@ -141,9 +141,7 @@ export default {
     'the start already meets every condition, so the reader would have nothing to do ({values}).',
   'author.warn.startBroken': 'the scene cannot be computed at the start.',
   'author.warn.solutionBroken': 'the scene cannot be computed in the solution.',
-  'author.warn.solutionFails':
-    'the solution fails condition {index}, {condition}: there it is {value} (the bound: {target}).',
-  'author.warn.answerFails': 'the solution’s answer fails condition {index}, {condition}.',
+  'author.warn.solutionFails': 'the solution fails condition {index} ({condition}): {outcome}.',
 
   'measure.striction.minAbsDelta': 'the smallest |δ| of a pair of rulings',
   'measure.isometry.deltaMiddle': 'δ of the middle pair of rulings',
