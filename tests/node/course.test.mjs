@@ -203,9 +203,15 @@ test('what the package’s page writes to a SCORM runtime, in the formats SCORM 
     scormValues('2004', [tasks[0], { ...tasks[1], best: { passed: 1, of: 1 } }], [], { seconds: 5, now: when }),
   );
   assert.deepEqual(
-    ['raw', 'max', 'scaled'].map((k) => v2004[`cmi.score.${k}`]),
-    ['2', '3', '0.6666667'],
+    ['raw', 'min', 'max', 'scaled'].map((k) => v2004[`cmi.score.${k}`]),
+    ['66.67', '0', '100', '0.6666667'],
   );
+  // each exercise's own count: its objective
+  assert.deepEqual(
+    ['raw', 'max', 'scaled'].map((k) => v2004[`cmi.objectives.0.score.${k}`]),
+    ['1', '2', '0.5'],
+  );
+  assert.deepEqual([v12['cmi.objectives.0.score.raw'], v12['cmi.objectives.0.score.max']], ['1', '2']);
   assert.equal(v2004['cmi.completion_status'], 'completed');
   assert.equal(v2004['cmi.success_status'], 'failed');
   assert.equal(v2004['cmi.interactions.1.type'], 'other');

@@ -228,7 +228,7 @@ test('SCORM 2004 from the package’s function: two exercises as one activity, t
   let data = (await cmi(page, '2004')).cmi;
   assert.deepEqual(
     [data.score.raw, data.score.max, data.score.scaled, data.completion_status, data.success_status],
-    ['1', '2', '0.5', 'completed', 'failed'],
+    ['50', '100', '0.5', 'completed', 'failed'],
   );
   assert.deepEqual(
     Object.values(data.objectives).map((/** @type {any} */ o) => [o.id, o.success_status, o.score.raw]),

@@ -1,7 +1,7 @@
 // The SCORM runtime of a course system, as a package's page talks to it (page/course.js): found
 // the standard way (the `API_1484_11` object of SCORM 2004 or the `API` of SCORM 1.2 in this
 // window, its parents, then its opener's), and what the page records there — score (raw, min,
-// max; scaled in 2004), status (1.2: lesson_status; 2004: completion_status and success_status),
+// max: the share of conditions met in percent; scaled in 2004), status (1.2: lesson_status; 2004: completion_status and success_status),
 // one objective per exercise, one interaction per condition (its id, correct or not, what the
 // student typed or the value she reached — never the expected value), the time spent, and the
 // attempt in suspend_data; committed on every check, terminated when the page goes. Every call
@@ -111,13 +111,14 @@ export function scormValues(version, tasks, order, { seconds, now }) {
   const solved = tasks.every((t) => t.best && t.best.passed === t.of);
   const checked = tasks.every((t) => t.best);
   const share = (/** @type {number} */ passed, /** @type {number} */ of) => (of ? passed / of : 0);
+  // the score is the share of conditions met, in percent (0 to 100: SCORM 1.2's range, and what
+  // course systems that grade by score.raw expect); each exercise's own count is its objective's
+  const percent = decimal(Math.round(10000 * share(raw, max)) / 100);
   if (version === '1.2') {
-    // SCORM 1.2's score is 0 to 100: the share of conditions met, in percent
-    out.push(['cmi.core.score.min', '0'], ['cmi.core.score.max', '100']);
-    out.push(['cmi.core.score.raw', decimal(Math.round(10000 * share(raw, max)) / 100)]);
+    out.push(['cmi.core.score.min', '0'], ['cmi.core.score.max', '100'], ['cmi.core.score.raw', percent]);
     out.push(['cmi.core.lesson_status', solved ? 'passed' : checked ? 'failed' : 'incomplete']);
   } else {
-    out.push(['cmi.score.min', '0'], ['cmi.score.max', String(max)], ['cmi.score.raw', String(raw)]);
+    out.push(['cmi.score.min', '0'], ['cmi.score.max', '100'], ['cmi.score.raw', percent]);
     out.push(['cmi.score.scaled', decimal(share(raw, max))]);
     out.push(['cmi.completion_status', checked ? 'completed' : 'incomplete']);
     out.push(['cmi.success_status', solved ? 'passed' : checked ? 'failed' : 'unknown']);
@@ -128,8 +129,9 @@ export function scormValues(version, tasks, order, { seconds, now }) {
     const passed = t.best?.passed ?? 0;
     out.push([`${o}.id`, t.id]);
     if (version === '1.2') {
-      out.push([`${o}.score.min`, '0'], [`${o}.score.max`, '100']);
-      if (t.best) out.push([`${o}.score.raw`, decimal(Math.round(10000 * share(passed, t.of)) / 100)]);
+      // (SCORM 1.2 keeps a score within 0 to 100: a goal has at most MAX_TASK_GOAL conditions)
+      out.push([`${o}.score.min`, '0'], [`${o}.score.max`, String(t.of)]);
+      if (t.best) out.push([`${o}.score.raw`, String(passed)]);
       out.push([`${o}.status`, !t.best ? 'incomplete' : passed === t.of ? 'passed' : 'failed']);
     } else {
       out.push([`${o}.score.min`, '0'], [`${o}.score.max`, String(t.of)]);
