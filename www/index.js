@@ -62,4 +62,11 @@ export { builtInTasks, builtInTask } from './task/builtin.js';
  * @typedef {import('./task/format.js').Condition} Condition
  * @typedef {import('./task/format.js').Words} Words
  * @typedef {import('./task/format.js').TaskState} TaskState
+ * @typedef {import('./task/format.js').Bound} Bound
+ * @typedef {import('./task/format.js').Draw} Draw
+ * @typedef {import('./task/format.js').Drawn} Drawn
+ * @typedef {import('./task/panel.js').PanelAttempt} PanelAttempt
+ * @typedef {import('./task/panel.js').Check} Check
+ * @typedef {import('./task/attempt.js').Attempt} Attempt
+ * @typedef {import('./stage/exercise-api.js').ExerciseApi} ExerciseApi
  */

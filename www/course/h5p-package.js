@@ -51,7 +51,8 @@ export function libraryJson() {
     license: 'MIT',
     author: 'ruledlab',
     embedTypes: ['iframe'],
-    coreApi: { majorVersion: 1, minorVersion: 24 },
+    // (H5P core 1.19 has every call it uses: xAPI events, scored results, saved state)
+    coreApi: { majorVersion: 1, minorVersion: 19 },
     preloadedJs: [{ path: H5P_SCRIPT }],
   };
 }

@@ -11,3 +11,11 @@ export { scormPackage, scormManifest, packageTasks, LAUNCH } from './scorm-packa
 export { h5pPackage, h5pParams, readH5p, libraryJson, semanticsJson, H5P_LIBRARY, H5P_FOLDER } from './h5p-package.js';
 export { readScorm } from './read.js';
 export { makeZip, readZip, PackageError } from './zip.js';
+
+// The types of the pieces above, for TypeScript users (generated from this JSDoc and the sources').
+/**
+ * @typedef {import('./scorm-package.js').ScormOptions} ScormOptions
+ * @typedef {import('./scorm-package.js').Readers} Readers
+ * @typedef {import('./h5p-package.js').H5PParams} H5PParams
+ * @typedef {import('../task/format.js').Task} Task
+ */
