@@ -74,7 +74,19 @@ test('with the keyboard alone: a typed δ(u) and a parameter drawn per attempt; 
   assert.equal(await page.locator('[name="author-answer-kind-0"]').inputValue(), 'function');
   assert.equal(await page.locator('[name="author-answer-label-0"]').inputValue(), 'δ(u)');
   await tabTo(page, 'author-answer-solution-0');
-  await page.keyboard.type('(1 + a^2*u^2)/a');
+  // a solution that is wrong for the numbers drawn (it is δ for a = 1): warned, for each a, with how far it is
+  await page.keyboard.type('1 + u^2');
+  await page.keyboard.press('Tab');
+  await page.waitForTimeout(100);
+  const warned = await page.locator('.rl-author-warnings').innerText();
+  assert.match(
+    warned,
+    /With a = 2: the solution fails condition 1 \(your δ\(u\) agrees with the exact distribution parameter to within 10⁻⁶\): up to [\d.]+ away/,
+  );
+  assert.match(warned, /With a = 3: the solution fails/);
+  await page.keyboard.press('Shift+Tab');
+  assert.equal(await focused(page), 'author-answer-solution-0');
+  await retype(page, '(1 + a^2*u^2)/a');
   await page.keyboard.press('Tab');
   await page.waitForTimeout(100);
   // for every number drawn the solution holds and the start does not: no warning

@@ -12,7 +12,7 @@ import { cpSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { pageSession } from './browser.mjs';
-import { otherOrigin } from './places.mjs';
+import { otherOrigin, drawnShare } from './places.mjs';
 import { unzipSync, strFromU8 } from '../../pkg/zip.js';
 
 const REPO = fileURLToPath(new URL('../..', import.meta.url));
@@ -112,7 +112,11 @@ test('an .h5p file from Share plays in h5p-standalone: drawn, failed and solved 
 
   const { page, problems, requests } = await session.open(course('play.html', 'hd'), { wait: false });
   const { frame, handle } = await played(page);
-  // it draws: the canvas has pixels other than the paper's
+  // it draws: the view has pixels other than the paper's
+  await frame.locator('ruled-view[data-frames]').waitFor();
+  const view = await frame.locator('ruled-view').boundingBox();
+  const png = await page.screenshot({ clip: /** @type {any} */ (view) });
+  assert.ok(drawnShare(png) > 0.05, `drawn: ${drawnShare(png)}`);
   const k = Number(/k = (−?\d)/.exec(await frame.locator('.rl-task-drawn').innerText())?.[1].replace('−', '-'));
   assert.ok([-3, -2, 2, 3].includes(k), `k drawn: ${k}`);
   assert.equal(await handle.evaluate(() => H5P.instances[0].getMaxScore()), 1);

@@ -16,6 +16,7 @@ import { pageSession } from './browser.mjs';
 import { otherOrigin } from './places.mjs';
 import { unzipSync, strFromU8 } from '../../pkg/zip.js';
 import { scormPackage } from '../../www/course/scorm-package.js';
+import { readScorm } from '../../www/course/read.js';
 
 const REPO = fileURLToPath(new URL('../..', import.meta.url));
 const ONEFILE = readFileSync(join(REPO, 'dist/ruledlab.html'), 'utf8');
@@ -375,6 +376,32 @@ test('without a course system the package’s page works as anywhere, and says t
   await page.locator('input[name="task-count"]').fill('3');
   await page.locator('.rl-task-check').click();
   assert.match(await page.locator('.rl-task-verdict').innerText(), /^Not solved yet/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('Share: exercises ticked under “More exercises” go into the same SCORM package, one activity', async () => {
+  const { page, problems } = await session.open('index.html#task=torsal-pair&lang=en');
+  await page.locator('#share').click();
+  await page.locator('#share-dialog[data-ready="1"]').waitFor();
+  await page.locator('.rl-package-more summary').click();
+  await page.locator('[name="share-more-coupled-strip"]').check();
+  await page.locator('[name="share-more-hypar-striction"]').check();
+  const [download] = await Promise.all([
+    page.waitForEvent('download'),
+    page.locator('[name="share-scorm2004"]').click(),
+  ]);
+  const read = readScorm(new Uint8Array(readFileSync(/** @type {string} */ (await download.path()))));
+  assert.equal(read.standard, 'scorm2004');
+  assert.deepEqual(
+    read.tasks.map((t) => t.id),
+    ['torsal-pair', 'coupled-strip', 'hypar-striction'],
+  );
+  assert.equal(
+    read.title,
+    'Make a pair of rulings torsal · When coupling pays · The striction curve of the hyperbolic paraboloid',
+  );
+  assert.match(await page.locator('.rl-package-note').innerText(), /Made: upload the zip file as a SCORM package/);
   assert.deepEqual(problems, []);
   await page.close();
 });

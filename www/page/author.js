@@ -14,7 +14,7 @@ import { describeCondition, statedNumber, valueName } from '../task/words.js';
 import { encodeInput } from '../edit/input.js';
 import { MAX_TASK_HINTS, MAX_TASK_SLUG, MAX_TASK_TEXT, MAX_TASK_TITLE, TASK_SAMPLES } from '../limits.js';
 import { copyField } from './copy-field.js';
-import { packageButtons } from './packages.js';
+import { packageButtons, remember } from './packages.js';
 import { answersBox, drawFields, slug } from './author-parts.js';
 import { authorWarnings, outcomesAt } from './author-warnings.js';
 import { drawTask } from '../task/draw.js';
@@ -518,6 +518,7 @@ export class Author {
         if (snippets.iframe) lines.push(copy(t('share.iframe'), snippets.iframe, 'author-iframe'));
         lines.push(copy(t('share.element'), snippets.element, 'author-element'));
         lines.push(copy(t('author.json'), writeTask(made), 'author-json'));
+        remember(made);
         const packages = packageButtons(
           doc,
           () => this.hooks.i18n(),

@@ -6,6 +6,20 @@
 import { download } from '../ui/download.js';
 import { oneFileHtml } from './onefile.js';
 import { taskErrorText } from '../task/words.js';
+import { builtInTasks } from '../task/builtin.js';
+import { say } from '../task/format.js';
+import { undrawn } from '../task/draw.js';
+import { MAX_PACKAGE_TASKS } from '../limits.js';
+
+/** Exercises made with the author during this visit, offered for a package of several. */
+const made = /** @type {import('../task/format.js').Task[]} */ ([]);
+
+/** Remembers an exercise made with the author (the newest version of an id replaces the older). */
+export function remember(/** @type {import('../task/format.js').Task} */ task) {
+  const k = made.findIndex((t) => t.id === task.id);
+  if (k >= 0) made.splice(k, 1);
+  made.unshift(task);
+}
 
 /**
  * @typedef {import('../task/format.js').Task} Task
@@ -61,8 +75,9 @@ export async function downloadPackage(kind, tasks, options) {
 }
 
 /**
- * The three buttons (SCORM 1.2, SCORM 2004, H5P) for the exercises `tasks()` gives, with a note
- * under them for what goes wrong.
+ * The three buttons (SCORM 1.2, SCORM 2004, H5P) for the exercise `tasks()` gives, with a note
+ * under them for what goes wrong; a SCORM package may take more exercises (built-in ones, those
+ * made here), ticked under "More exercises in the SCORM package": one activity, the score their sum.
  * @param {Document} doc
  * @param {() => import('../i18n/index.js').Translator} i18n
  * @param {() => Task[]} tasks
@@ -75,6 +90,27 @@ export function packageButtons(doc, i18n, tasks, options, prefix) {
   const note = Object.assign(doc.createElement('p'), { className: 'share-note rl-package-note', hidden: true });
   note.setAttribute('role', 'status');
   box.append(Object.assign(doc.createElement('p'), { textContent: t('course.packages') }));
+  // more exercises for one SCORM package
+  const more = doc.createElement('details');
+  more.className = 'rl-package-more';
+  more.append(
+    Object.assign(doc.createElement('summary'), { textContent: t('course.more', { max: MAX_PACKAGE_TASKS }) }),
+  );
+  const lang = i18n().lang;
+  const first = new Set(tasks().map((x) => x.id));
+  const offered = [...made, ...builtInTasks()].filter(
+    (x, k, all) => !first.has(x.id) && all.findIndex((y) => y.id === x.id) === k,
+  );
+  /** @type {Array<[HTMLInputElement, import('../task/format.js').Task]>} */
+  const ticks = offered.map((task) => {
+    const input = Object.assign(doc.createElement('input'), { type: 'checkbox', name: `${prefix}-more-${task.id}` });
+    const label = Object.assign(doc.createElement('label'), { className: 'rl-package-task' });
+    label.append(input, ` ${say(undrawn(task.title, task), lang)}`);
+    more.append(label);
+    return [input, task];
+  });
+  const chosen = () => [...tasks(), ...ticks.filter(([input]) => input.checked).map(([, task]) => task)];
+  box.append(more);
   for (const kind of /** @type {const} */ (['scorm12', 'scorm2004', 'h5p'])) {
     const button = Object.assign(doc.createElement('button'), {
       type: 'button',
@@ -85,7 +121,10 @@ export function packageButtons(doc, i18n, tasks, options, prefix) {
       note.hidden = true;
       button.disabled = true;
       try {
-        await downloadPackage(kind, tasks(), options());
+        // (an H5P file holds one exercise; a package of several is named after all of them)
+        const list = kind === 'h5p' ? tasks() : chosen();
+        const opts = options();
+        await downloadPackage(kind, list, list.length > 1 ? { ...opts, title: undefined } : opts);
         note.hidden = false;
         note.textContent = t(`course.made.${kind === 'h5p' ? 'h5p' : 'scorm'}`);
       } catch (e) {

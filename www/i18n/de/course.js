@@ -33,6 +33,7 @@ export default {
     'Gemacht: Laden Sie die Zip-Datei als SCORM-Paket hoch (ruledlabs Buch, „In a course system“, sagt wie).',
   'course.made.h5p':
     'Gemacht: Laden Sie die .h5p-Datei als H5P-Inhalt hoch (ruledlabs Buch, „In a course system“, sagt wie).',
+  'course.more': 'Weitere Aufgaben im SCORM-Paket (eine Aktivität, die Punkte ihre Summe; bis zu {max} insgesamt)',
   'course.notMade': 'Nicht gemacht: {reason}.',
   'course.error.notZip': 'das ist keine Zip-Datei: {detail}',
   'course.error.tooLarge': 'das Paket ist größer als {max} MB',

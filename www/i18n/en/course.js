@@ -30,6 +30,7 @@ export default {
   'course.made.scorm':
     'Made: upload the zip file as a SCORM package (ruledlab’s book, “In a course system”, says how).',
   'course.made.h5p': 'Made: upload the .h5p file as H5P content (ruledlab’s book, “In a course system”, says how).',
+  'course.more': 'More exercises in the SCORM package (one activity, the score their sum; up to {max} in all)',
   'course.notMade': 'Not made: {reason}.',
   'course.error.notZip': 'this is not a zip file: {detail}',
   'course.error.tooLarge': 'the package is larger than {max} MB',
