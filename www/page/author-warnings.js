@@ -34,7 +34,15 @@ export function drawsToTry(task) {
     const key = JSON.stringify(drawn.drawn?.values);
     if (!seen.has(key)) seen.set(key, drawn);
   }
-  return [...seen.values()];
+  // in the order of their numbers (n = 8, 9, …)
+  const order = (/** @type {Task} */ t) => Object.values(t.drawn?.values ?? {});
+  return [...seen.values()].sort((a, b) => {
+    const [x, y] = [order(a), order(b)];
+    for (let k = 0; k < x.length; k++)
+      if (x[k] !== y[k])
+        return typeof x[k] === 'number' ? Number(x[k]) - Number(y[k]) : String(x[k]).localeCompare(String(y[k]));
+    return 0;
+  });
 }
 
 /**

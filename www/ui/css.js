@@ -227,7 +227,9 @@ export const CSS = `
 .rl-author-answer { display: flex; flex-wrap: wrap; gap: 0 .6rem; align-items: end; padding: .3rem 0; border-bottom: 1px dashed var(--line); }
 .rl-author-answer .rl-author-field { flex: 1 1 9rem; }
 .rl-author-draw { display: flex; flex-wrap: wrap; gap: 0 .6rem; margin: 0 0 .4rem 1rem; }
-.rl-author-draw .rl-author-field { flex: 0 1 6rem; }
+.rl-author-draw .rl-author-field, .rl-author-answer .rl-author-field { min-width: 0; grid-template-columns: minmax(0, 1fr); }
+.rl-author-draw .rl-author-field { flex: 1 1 4rem; }
+.rl-author-draw input, .rl-author-answer :is(input, select), .rl-author-params select { width: 100%; box-sizing: border-box; }
 .rl-author-note { flex-basis: 100%; margin: 0; color: var(--muted); font-size: .82rem; }
 .rl-author-warnings { margin: .5rem 0; padding: .3rem .7rem; background: #fff3ef; border-left: 4px solid #d55e00; border-radius: 5px; }
 .rl-author-warnings h4 { margin: .2rem 0; font-size: .88rem; }

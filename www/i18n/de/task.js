@@ -121,7 +121,7 @@ export default {
   'author.json': 'Die Aufgabe als JSON (Format: Handbuch von ruledlab, „Exercises“)',
   'author.try': 'Als Lesende ausprobieren',
   'author.close': 'Schließen',
-  'author.param.draw': 'pro Versuch gezogen (für jede und jeden eigene)',
+  'author.param.draw': 'pro Versuch gezogen',
   'author.draw.from': 'von',
   'author.draw.to': 'bis',
   'author.draw.step': 'in Schritten von',

@@ -116,7 +116,7 @@ export default {
   'author.json': 'The exercise as JSON (format: ruledlab’s book, “Exercises”)',
   'author.try': 'Try it as a reader',
   'author.close': 'Close',
-  'author.param.draw': 'drawn per attempt (every student her own)',
+  'author.param.draw': 'drawn per attempt',
   'author.draw.from': 'from',
   'author.draw.to': 'to',
   'author.draw.step': 'in steps of',
