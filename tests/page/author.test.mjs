@@ -7,11 +7,23 @@
 // element's seed, the same numbers as the link's.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
 import { pageSession, ready, setControl } from './browser.mjs';
 import { otherOrigin, hostPage } from './places.mjs';
 
 const session = pageSession();
 const site = otherOrigin();
+const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+
+/** axe-core's WCAG 2.1 A/AA violations on `page` (none expected). */
+async function axe(/** @type {Page} */ page) {
+  await page.evaluate(AXE);
+  const result = await page.evaluate(() =>
+    window.axe.run(document, { runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'] } }),
+  );
+  return result.violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+}
 
 /** @typedef {import('playwright-core').Page} Page */
 
@@ -283,6 +295,9 @@ test('Share’s options with the keyboard: the snippets carry what readers may d
 test('the element’s seed draws the link’s numbers; a seed that is not one is said and new numbers drawn', async () => {
   const linked = await session.open('index.html#task=striction-accuracy&seed=77');
   const want = await linked.page.evaluate(() => window.ruledlab.stage.task.drawn.values);
+  // a check and a hint, kept with the attempt in this browser: back after a reload
+  await linked.page.locator('.rl-task-check').click();
+  await linked.page.locator('.rl-task-hint').click();
   await linked.page.reload();
   await ready(linked.page);
   assert.deepEqual(
@@ -290,6 +305,12 @@ test('the element’s seed draws the link’s numbers; a seed that is not one is
     want,
     'a reload keeps them',
   );
+  assert.equal(await linked.page.locator('.rl-task-history li').count(), 1);
+  assert.equal(await linked.page.locator('.rl-task-hints li').count(), 1);
+  // Start over: the answers and hints go, the checks stay (they are the attempt's record)
+  await linked.page.locator('.rl-task-again').click();
+  assert.equal(await linked.page.locator('.rl-task-hints li').count(), 0);
+  assert.equal(await linked.page.locator('.rl-task-history li').count(), 1);
   await linked.page.close();
   const url = site.write(
     'seed.html',
@@ -315,4 +336,32 @@ test('the element’s seed draws the link’s numbers; a seed that is not one is
   assert.notEqual(await page.locator('#b').evaluate((v) => v.exercise.seed), null);
   assert.deepEqual(problems, []);
   await page.close();
+});
+
+test('axe-core finds no WCAG 2.1 A/AA violation in the author with answers, draws and warnings, nor in Share’s options and packages, in German too', async () => {
+  for (const lang of ['en', 'de']) {
+    const { page, problems } = await session.open(`index.html#scene=striction&surface=helix-tangent&n=12&lang=${lang}`);
+    await page.locator('#share').click();
+    await page.locator('#share-dialog[data-ready="1"]').waitFor();
+    assert.deepEqual(await axe(page), [], `Share (${lang})`);
+    await page.locator('#share-exercise').click();
+    await page.locator('[name="author-title"]').fill('x');
+    await page.selectOption('[name="author-n"]', 'draw');
+    await page.locator('[name="author-add"]').click();
+    await page.selectOption('[name="author-value-0"]', 'striction.minAbsDelta');
+    await page.locator('[name="author-bound-0"]').fill('0.001');
+    await page.locator('[name="author-bound-0"]').dispatchEvent('change');
+    await page.locator('[name="author-answer-add"]').click();
+    await page.locator('[name="author-record-solution"]').click();
+    await page.locator('.rl-author-warnings').waitFor();
+    assert.deepEqual(await axe(page), [], `the author (${lang})`);
+    assert.deepEqual(problems, []);
+    await page.close();
+  }
+  const exercise = await session.open('index.html#task=torsal-pair&lang=de');
+  await exercise.page.locator('#share').click();
+  await exercise.page.locator('#share-dialog[data-ready="1"]').waitFor();
+  await exercise.page.locator('.rl-package-more summary').click();
+  assert.deepEqual(await axe(exercise.page), [], 'Share on an exercise');
+  await exercise.page.close();
 });

@@ -12,6 +12,7 @@ import assert from 'node:assert/strict';
 import { copyFileSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { createRequire } from 'node:module';
 import { pageSession } from './browser.mjs';
 import { otherOrigin } from './places.mjs';
 import { unzipSync, strFromU8 } from '../../pkg/zip.js';
@@ -370,9 +371,17 @@ test('a hostile package or suspend_data: markup stays text, absurd numbers are r
   await absurd.page.close();
 });
 
-test('without a course system the package’s page works as anywhere, and says that nothing is recorded', async () => {
+test('without a course system the package’s page works as anywhere, and says that nothing is recorded; its bar is accessible', async () => {
   const { page, problems } = await session.open(`${site.url}p12/index.html`);
   assert.match(await page.locator('.rl-course-status').innerText(), /No course system records here/);
+  await page.evaluate(readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8'));
+  const result = await page.evaluate(() =>
+    window.axe.run(document, { runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'] } }),
+  );
+  assert.deepEqual(
+    result.violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`),
+    [],
+  );
   await page.locator('input[name="task-count"]').fill('3');
   await page.locator('.rl-task-check').click();
   assert.match(await page.locator('.rl-task-verdict').innerText(), /^Not solved yet/);
