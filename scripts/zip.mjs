@@ -4,7 +4,7 @@
 // Its declarations (pkg/zip.d.ts) are fflate's own, re-exported.
 // Usage: node scripts/zip.mjs
 import { build } from 'esbuild';
-import { readFileSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
@@ -23,6 +23,7 @@ const out = await build({
   logLevel: 'error',
 });
 const banner = `// fflate ${version} (https://github.com/101arrowz/fflate), MIT License, ${copyright}: ${NAMES.join(', ')}, bundled by scripts/zip.mjs\n`;
+mkdirSync(`${ROOT}pkg`, { recursive: true });
 writeFileSync(`${ROOT}pkg/zip.js`, banner + out.outputFiles[0].text);
 // the types: fflate's declarations of these functions and of what they take
 const types = readFileSync(`${ROOT}node_modules/fflate/esm/browser.d.ts`, 'utf8');
