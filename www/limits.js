@@ -126,6 +126,8 @@ export const MAX_TASK_DRAWS = 6;
 export const MAX_DRAW_LIST = 64;
 /** Most values a drawn range may hold ((to − from) / step + 1). */
 export const MAX_DRAW_CHOICES = 100_000;
+/** Most values of a drawn parameter checked one by one against its control (a longer range: its ends). */
+export const MAX_TASK_CHECKED_DRAWS = 1000;
 /** Largest seed of the drawn numbers (a 32-bit unsigned integer). */
 export const MAX_SEED = 4_294_967_295;
 /** Most checks an attempt keeps (the oldest go first), and how many the panel lists. */

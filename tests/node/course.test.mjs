@@ -18,6 +18,9 @@ import { readTask, writeTask, readSeed, linkSeed } from '../../www/task/format.j
 import { drawTask, drawChoices, drawnValues } from '../../www/task/draw.js';
 import { readAttempt, bestCheck } from '../../www/task/attempt.js';
 import { builtInTask } from '../../www/task/builtin.js';
+import { fitTask } from '../../www/task/check.js';
+import { SCENES } from '../../www/scenes/index.js';
+import { withChoices } from '../../www/scene.js';
 import { MAX_PACKAGE_BYTES, SCORM12_RESPONSE } from '../../www/limits.js';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
@@ -125,6 +128,38 @@ test('a draw, a drawn reference or a seed that is not one is refused with its re
     reason(() => drawTask(readTask(EXERCISE), -1)),
     'task.error.seed',
   );
+});
+
+test('a drawn parameter must be one the scene takes for every value drawn', () => {
+  const scene = /** @type {any} */ (SCENES.find((s) => s.id === 'striction'));
+  const compute = (/** @type {any} */ task) => (/** @type {any} */ params, /** @type {any} */ input) =>
+    scene.create(withChoices(scene, { ...task.params, ...params }), {
+      t: (/** @type {string} */ k) => k,
+      format: String,
+      lang: 'en',
+      ...(input ? { input } : {}),
+    });
+  const base = {
+    ruledlab: 'exercise',
+    version: 1,
+    id: 'n',
+    title: { en: 'n' },
+    prompt: { en: 'n' },
+    scene: 'striction',
+    params: { n: { drawn: 'n' } },
+    change: ['n'],
+    goal: [{ value: 'readout.midpointError', below: 1 }],
+  };
+  const ok = drawTask(readTask({ ...base, draw: { n: { from: 8, to: 16 } } }), 1);
+  assert.equal(fitTask(ok, SCENES, compute(ok)).id, 'striction');
+  for (const draw of [{ from: 2, to: 16 }, { list: [12, 500] }, { from: 8, to: 9, step: 0.5 }]) {
+    const bad = drawTask(readTask({ ...base, draw: { n: draw } }), 1);
+    assert.equal(
+      reason(() => fitTask(bad, SCENES, compute(bad))),
+      'task.error.drawnParam',
+      JSON.stringify(draw),
+    );
+  }
 });
 
 test('an attempt read back from storage or a course system keeps what is one and drops the rest', () => {

@@ -152,11 +152,14 @@ export async function startCourse(setup, hooks) {
     picker.value = String(at);
     const raw = tasks.reduce((sum, _, k) => sum + (bestCheck(attempts[k])?.passed ?? 0), 0);
     const max = tasks.reduce((sum, task) => sum + task.goal.length, 0);
+    // (a runtime that would not start says so in the problem below, and claims nothing here)
     const where = !session
       ? t('course.noRuntime')
       : recordedAt && !trouble
         ? t('course.recorded', { time: recordedAt.toLocaleTimeString(lang) })
-        : t('course.connected', { standard: found?.version ?? '' });
+        : session.open
+          ? t('course.connected', { standard: found?.version ?? '' })
+          : '';
     status.textContent = broken
       ? ''
       : `${t('course.score', { raw, max })} ${where}${kept.learner ? ` ${t('course.learner', { name: kept.learner.slice(0, 100) })}` : ''}`;

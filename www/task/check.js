@@ -8,7 +8,7 @@ import { evaluateFormulas } from '../../pkg/ruledlab.js';
 import { readValue, serialize } from '../scene.js';
 import { decodeInput, fitsSets } from '../edit/input.js';
 import { HIDE_WORDS, TaskError } from './format.js';
-import { TASK_SAMPLES } from '../limits.js';
+import { TASK_SAMPLES, MAX_TASK_CHECKED_DRAWS } from '../limits.js';
 import { drawChoices } from './draw.js';
 
 /**
@@ -178,19 +178,25 @@ export function fitTask(task, scenes, compute) {
       if (read.note && p.type !== 'select') throw new TaskError('task.error.badParam', { key: k, where });
     }
   };
-  known(task.params, 'params');
-  if (task.solution?.params) known(task.solution.params, 'solution.params');
-  // a drawn parameter: every value it can take must be one the scene takes (a range: its ends)
+  // a drawn parameter: every value it can take must be one the scene takes (of a long range, its
+  // ends), and a whole number where the control takes whole numbers (N rulings, steps)
   for (const [k, name] of Object.entries(task.drawnParams)) {
     const draw = task.draw[name];
     const p = scene.params.find((q) => q.key === k);
-    const candidates = 'list' in draw ? draw.list : [draw.from, drawChoices(draw).at(-1) ?? draw.to];
-    for (const value of candidates) {
+    const all = 'list' in draw ? draw.list : drawChoices(draw);
+    const candidates = all.length <= MAX_TASK_CHECKED_DRAWS ? all : [all[0], all[all.length - 1]];
+    const whole = p?.type === 'range' && Number.isInteger(p.step ?? 1) && Number.isInteger(p.min ?? 0);
+    const wholeDraw = 'list' in draw || (Number.isInteger(draw.from) && Number.isInteger(draw.step));
+    for (const value of whole && !wholeDraw
+      ? [...candidates, draw.from + /** @type {any} */ (draw).step]
+      : candidates) {
       const read = p ? readValue(p, serialize(p, value)) : null;
-      if (!read || read.note || read.value !== value)
+      if (!read || read.note || read.value !== value || (whole && !Number.isInteger(value)))
         throw new TaskError('task.error.drawnParam', { key: k, value: String(value) });
     }
   }
+  known(task.params, 'params');
+  if (task.solution?.params) known(task.solution.params, 'solution.params');
   for (const c of task.change)
     if (c !== 'handles' && !keys.includes(c))
       throw new TaskError('task.error.unknownParam', { key: c, where: 'change', scene: scene.id });
