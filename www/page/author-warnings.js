@@ -88,51 +88,45 @@ function drawnParams(/** @type {Task} */ task) {
  */
 export function authorWarnings(task, states, scene, context, i18n) {
   const { t, format, lang } = i18n;
-  /** @type {Warning[]} */
-  const out = [];
+  /** the warnings by their text, each with the numbers drawn it holds for (said once, with all of them) */
+  /** @type {Map<string, {kind: Warning['kind'], numbers: string[]}>} */
+  const found = new Map();
+  const warn = (/** @type {Warning['kind']} */ kind, /** @type {string} */ text, /** @type {string} */ numbers) => {
+    const seen = found.get(text) ?? { kind, numbers: [] };
+    if (numbers) seen.numbers.push(numbers);
+    found.set(text, seen);
+  };
   const value = (/** @type {import('../task/check.js').Outcome} */ o) =>
     Number.isFinite(o.value) ? format(o.value) : t('task.out.undefined');
   for (const drawn of drawsToTry(task)) {
     const numbers = drawnText(drawn, lang);
-    // (the numbers drawn, marked off so that warnings alike can be merged below)
-    const where = numbers ? `\u0000${numbers}\u0000` : '';
     const start = outcomesAt(drawn, states.start, scene, context, {});
-    if (!start) out.push({ kind: 'error', text: `${where}${t('author.warn.startBroken')}` });
+    if (!start) warn('error', t('author.warn.startBroken'), numbers);
     else if (start.every((o) => o.holds))
-      out.push({
-        kind: 'start',
-        text: `${where}${t('author.warn.startSolves', {
+      warn(
+        'start',
+        t('author.warn.startSolves', {
           values: start.map((o) => `${describeCondition(o.condition, drawn, i18n)}: ${value(o)}`).join('; '),
-        })}`,
-      });
+        }),
+        numbers,
+      );
     if (!states.solution) continue;
     const solved = outcomesAt(drawn, states.solution, scene, context, states.answers);
     if (!solved) {
-      out.push({ kind: 'error', text: `${where}${t('author.warn.solutionBroken')}` });
+      warn('error', t('author.warn.solutionBroken'), numbers);
       continue;
     }
     solved.forEach((o, k) => {
       if (o.holds) return;
-      out.push({
-        kind: 'solution',
-        text: `${where}${t('author.warn.solutionFails', {
-          index: k + 1,
-          condition: describeCondition(o.condition, drawn, i18n),
-          outcome: outcomeText(o, i18n, drawn),
-        })}`,
+      const text = t('author.warn.solutionFails', {
+        index: k + 1,
+        condition: describeCondition(o.condition, drawn, i18n),
+        outcome: outcomeText(o, i18n, drawn),
       });
+      warn('solution', text, numbers);
     });
   }
-  // the same warning for several draws is said once, with all their numbers
-  /** @type {Map<string, {kind: Warning['kind'], numbers: string[]}>} */
-  const merged = new Map();
-  for (const w of out) {
-    const [, numbers = '', text = w.text] = /^\u0000([^\u0000]*)\u0000(.*)$/s.exec(w.text) ?? [];
-    const seen = merged.get(text) ?? { kind: w.kind, numbers: [] };
-    if (numbers) seen.numbers.push(numbers);
-    merged.set(text, seen);
-  }
-  return [...merged].map(([text, { kind, numbers }]) => ({
+  return [...found].map(([text, { kind, numbers }]) => ({
     kind,
     text: `${numbers.length ? t('author.warn.with', { numbers: numbers.join('; ') }) : ''}${text}`,
   }));
