@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The documentation as one site in site/: the book (mdBook, sources in docs/) at the root, the
 # JavaScript and TypeScript reference (typedoc over pkg/ruledlab.d.ts, the wasm core, and
-# pkg/view/www/index.d.ts, `ruledlab/view`, generated from the JSDoc of www/) in site/api/, and
+# pkg/view/www/index.d.ts, `ruledlab/view`, and pkg/view/www/course/index.d.ts, `ruledlab/course`,
+# generated from the JSDoc of www/) in site/api/, and
 # the Rust reference (rustdoc, copied from target/doc) in site/rust/. The book's API pages link
 # into both. Installs mdBook and builds pkg/ first when they are missing. Warnings are errors.
 # `npm test` then checks every link and anchor of the site (tests/docs/links.mjs).
@@ -13,7 +14,7 @@ bash scripts/setup.sh --docs
 rm -rf site
 mdbook build docs
 npx typedoc --logLevel Warn --treatWarningsAsErrors --name "ruledlab $(node -p "require('./package.json').version")" \
-  --readme none --disableSources --out site/api --tsconfig tests/types/docs.tsconfig.json pkg/ruledlab.d.ts pkg/view/www/index.d.ts
+  --readme none --disableSources --out site/api --tsconfig tests/types/docs.tsconfig.json pkg/ruledlab.d.ts pkg/view/www/index.d.ts pkg/view/www/course/index.d.ts
 RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps
 cp -r target/doc site/rust
 # rustdoc's help and settings pages link to the index of all crates, which one crate has not

@@ -90,10 +90,16 @@ if (!statSync(entry, { throwIfNoEntry: false }))
 // and querySelector know its type)
 // and the typedefs of index.js that name a type of another module re-export that type itself,
 // so the reference shows it with its documentation
-const aliases = readFileSync(entry, 'utf8').replace(
-  /^export type (\w+) = import\("([^"]+)"\)\.\1;$/gm,
-  'export type { $1 } from "$2";',
-);
+/** @param {string} file */
+const reexported = (file) =>
+  readFileSync(file, 'utf8').replace(
+    /^export type (\w+) = import\("([^"]+)"\)\.\1;$/gm,
+    'export type { $1 } from "$2";',
+  );
+const aliases = reexported(entry);
+// (ruledlab/course, the second entry, the same way)
+const course = join(OUT, 'www', 'course', 'index.d.ts');
+writeFileSync(course, reexported(course));
 writeFileSync(
   entry,
   `${aliases}

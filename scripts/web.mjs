@@ -38,6 +38,7 @@ const LAZY = {
   'the Share dialog': ['www/page/share.js'],
   'the figure exports': ['www/export/svg.js', 'www/export/tikz.js', 'www/export/png.js'],
   'the exercise author': ['www/page/author.js'],
+  'the course packages and a package page': ['www/page/packages.js', 'www/page/course.js'],
 };
 /** `new URL(…, import.meta.url)` targets the bundles may keep as they are, and why. */
 const UNUSED = {
@@ -86,6 +87,7 @@ const urls = new Map([
   [join(ROOT, 'pkg/ruledlab_bg.wasm'), `./${basename(wasm)}`],
   [join(ROOT, 'dist/manifest.json'), '../dist/manifest.json'],
   [join(ROOT, 'dist/ruledlab.html'), '../dist/ruledlab.html'],
+  [join(ROOT, 'dist/ruledlab-embed.js'), '../dist/ruledlab-embed.js'],
 ]);
 
 /**
@@ -147,7 +149,10 @@ const page = await build({
 for (const file of outputs(page)) put(relative(OUT, file.path), file.contents);
 const meta = /** @type {import('esbuild').Metafile} */ (page.metafile);
 const chunks = Object.fromEntries(Object.entries(meta.outputs).map(([p, o]) => [relative(OUT, resolve(ROOT, p)), o]));
-const entry = /** @type {string} */ (Object.keys(chunks).find((p) => chunks[p].entryPoint));
+// (a chunk that is imported on demand has an entryPoint too: the page's is main.js)
+const entry = /** @type {string} */ (
+  Object.keys(chunks).find((p) => chunks[p].entryPoint === relative(ROOT, join(ROOT, 'www/page/main.js')))
+);
 /** The files a chunk imports statically, itself included (what loads with it). */
 const closure = (/** @type {string} */ start) => {
   const seen = new Set([start]);

@@ -47,14 +47,14 @@ export { builtInTasks, builtInTask } from './task/builtin.js';
  * @typedef {import('./stage/options.js').OpenOptions} OpenOptions
  * @typedef {import('./stage/options.js').Notes} Notes
  * @typedef {import('./export/svg.js').FigureOptions} FigureOptions
- * @typedef {import('./ruled-view.js').SceneChangeDetail} SceneChangeDetail
- * @typedef {import('./ruled-view.js').ViewChangeDetail} ViewChangeDetail
- * @typedef {import('./ruled-view.js').CameraChangeDetail} CameraChangeDetail
- * @typedef {import('./ruled-view.js').RuledViewErrorDetail} RuledViewErrorDetail
- * @typedef {import('./ruled-view.js').EditDetail} EditDetail
- * @typedef {import('./ruled-view.js').HandleInfo} HandleInfo
- * @typedef {import('./ruled-view.js').RuledViewEvents} RuledViewEvents
- * @typedef {import('./ruled-view.js').RuledViewEventMap} RuledViewEventMap
+ * @typedef {import('./ruled-view-events.js').SceneChangeDetail} SceneChangeDetail
+ * @typedef {import('./ruled-view-events.js').ViewChangeDetail} ViewChangeDetail
+ * @typedef {import('./ruled-view-events.js').CameraChangeDetail} CameraChangeDetail
+ * @typedef {import('./ruled-view-events.js').RuledViewErrorDetail} RuledViewErrorDetail
+ * @typedef {import('./ruled-view-events.js').EditDetail} EditDetail
+ * @typedef {import('./ruled-view-events.js').HandleInfo} HandleInfo
+ * @typedef {import('./ruled-view-events.js').RuledViewEvents} RuledViewEvents
+ * @typedef {import('./ruled-view-events.js').RuledViewEventMap} RuledViewEventMap
  * @typedef {import('./task/format.js').Task} Task
  * @typedef {import('./task/panel.js').TaskReport} TaskReport
  * @typedef {import('./task/check.js').Answers} Answers
@@ -62,4 +62,11 @@ export { builtInTasks, builtInTask } from './task/builtin.js';
  * @typedef {import('./task/format.js').Condition} Condition
  * @typedef {import('./task/format.js').Words} Words
  * @typedef {import('./task/format.js').TaskState} TaskState
+ * @typedef {import('./task/format.js').Bound} Bound
+ * @typedef {import('./task/format.js').Draw} Draw
+ * @typedef {import('./task/format.js').Drawn} Drawn
+ * @typedef {import('./task/panel.js').PanelAttempt} PanelAttempt
+ * @typedef {import('./task/panel.js').Check} Check
+ * @typedef {import('./task/attempt.js').Attempt} Attempt
+ * @typedef {import('./stage/exercise-api.js').ExerciseApi} ExerciseApi
  */

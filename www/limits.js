@@ -123,3 +123,36 @@ export const MAX_TASK_CAMERA = 200;
 export const MAX_TASK_INPUT = MAX_HASH;
 /** Most characters of the JSON parser's message an exercise's error quotes. */
 export const MAX_TASK_DETAIL = 120;
+/** Most numbers an exercise draws per attempt, and most values a list of them may hold. */
+export const MAX_TASK_DRAWS = 6;
+export const MAX_DRAW_LIST = 64;
+/** Most values a drawn range may hold ((to − from) / step + 1). */
+export const MAX_DRAW_CHOICES = 100_000;
+/** Most values of a drawn parameter checked one by one against its control (a longer range: its ends). */
+export const MAX_TASK_CHECKED_DRAWS = 1000;
+/** Largest seed of the drawn numbers (a 32-bit unsigned integer). */
+export const MAX_SEED = 4_294_967_295;
+/** Most checks an attempt keeps (the oldest go first), and how many the panel lists. */
+export const MAX_TASK_HISTORY = 30;
+export const TASK_HISTORY_SHOWN = 5;
+/** A typed number within this share of the right one is "a little" too large or too small. */
+export const ANSWER_CLOSE = 0.1;
+
+// Course systems (www/course/, page/scorm.js): what a package may hold and what SCORM allows.
+
+/** Most exercises in one SCORM package or H5P file. */
+export const MAX_PACKAGE_TASKS = 12;
+/** Longest suspend_data SCORM 1.2 keeps (CMIString4096) and SCORM 2004 4th edition (SPM 64000). */
+export const SCORM12_SUSPEND = 4096;
+export const SCORM2004_SUSPEND = 64000;
+/** Longest text of a SCORM 1.2 interaction's student_response (CMIString255), and 2004's learner_response of type "other" (SPM 4000). */
+export const SCORM12_RESPONSE = 255;
+export const SCORM2004_RESPONSE = 4000;
+/** Longest SCORM 2004 interaction description (SPM 250). */
+export const SCORM2004_DESCRIPTION = 250;
+/** How many frames up a package's page looks for the course system's runtime (the standard's search allows 500). */
+export const SCORM_FRAMES = 500;
+/** Longest H5P or SCORM package this page reads back (bytes). */
+export const MAX_PACKAGE_BYTES = 64 * 1024 * 1024;
+/** Height of an exercise in an H5P activity (CSS pixels), by default. */
+export const H5P_HEIGHT = 640;

@@ -18,8 +18,9 @@
 // rulings or congruence in the "data" scene. `height` sizes the element (pixels or a CSS length,
 // without an inline style a strict Content-Security-Policy would refuse). `handles()` lists every handle with its position
 // in the element. `task` shows an exercise (a built-in one's id, or the page's "j." link value;
-// the book's "Exercises"): `task-check` and `task-solved` report how it stands (also posted to the
-// parent window of a frame). Events: `input` during a drag and `change` at its end (detail: { scene, data,
+// the book's "Exercises"), `seed` the seed of its drawn numbers, `leave` offers to leave it;
+// `task-check` and `task-solved` report how it stands (also posted to the parent window of a
+// frame), `exercise` lets a program check, show the solution, start over. Events: `input` during a drag and `change` at its end (detail: { scene, data,
 // readouts }), `scene-change` (detail: { scene, params }), `view-change` (detail: the
 // camera, during a move), `camera-change` (detail: { camera, yaw, pitch, distance, target },
 // once a move ends; `camera` is the attribute's value), `error` (detail: { message, code },
@@ -35,6 +36,8 @@ import { toScreen } from './edit/geometry.js';
 import { plainRich } from './ui/richtext.js';
 import { postToParent } from './task/message.js';
 import { openView } from './stage/open.js';
+import { exerciseApi } from './stage/exercise-api.js';
+import { linkSeed } from './task/format.js';
 import { start } from './core.js';
 import { translator, pickLanguage } from './i18n/index.js';
 import { startFailure } from './ui/errors.js';
@@ -56,50 +59,10 @@ const HOST_CSS = `:host { display: block; position: relative; max-width: 100%; h
 let hostSheet = /** @type {CSSStyleSheet | null} */ (null);
 
 /**
- * @typedef {object} SceneChangeDetail   `scene-change`: the scene shown and its parameters
- * @property {string} scene
- * @property {import('./scene.js').Params} params
- *
- * @typedef {object} ViewChangeDetail    `view-change`, during a camera move
- * @property {number} yaw
- * @property {number} pitch
- * @property {number} distance
- * @property {number[]} target
- *
- * @typedef {ViewChangeDetail & { camera: string }} CameraChangeDetail   `camera-change`, once a
- *   move ends: `camera` is the value of the element's `camera` attribute for this view
- *
- * @typedef {object} RuledViewErrorDetail   `error`: the message in the element's language
- * @property {string} message
- * @property {string | null} code           the error’s stable code (the book’s chapter "Errors")
- * @property {object | null} details        the core's details (reason, args, option, …)
- *
- * @typedef {object} EditDetail   `input` (during a drag) and `change` (at its end): what the reader made
- * @property {string} scene
- * @property {import('./scene.js').Input} data       the scene's input, per handle set (copies)
- * @property {Array<{key: string, label: string, value: number | string}>} readouts   the numbers
- *   shown: the label's i18n key, its text, and the value (a number, or a word)
- *
- * @typedef {object} HandleInfo   one handle of `handles()`
- * @property {string} set         the handle set's key ("rulings", "lines", "poses", "points")
- * @property {number} index       the handle's index in its set (pairs: 2k and 2k + 1 are line k's ends)
- * @property {string} name        its name, as the element says it ("ruling 5, end b")
- * @property {number[]} point     where it is, in the scene's coordinates
- * @property {number} x           where it is drawn, in CSS px from the element's left
- * @property {number} y           … and top
- * @property {boolean} visible    in front of the camera
- *
- * @typedef {object} RuledViewEvents       the events of <ruled-view> and their details
- * @property {CustomEvent<import('./task/panel.js').TaskReport>} task-check   how an exercise stands after a check
- * @property {CustomEvent<import('./task/panel.js').TaskReport>} task-solved   … the first time it is solved
- * @property {CustomEvent<EditDetail>} input
- * @property {CustomEvent<EditDetail>} change
- * @property {CustomEvent<SceneChangeDetail>} scene-change
- * @property {CustomEvent<ViewChangeDetail>} view-change
- * @property {CustomEvent<CameraChangeDetail>} camera-change
- * @property {CustomEvent<RuledViewErrorDetail>} error
- *
- * @typedef {Omit<HTMLElementEventMap, 'error' | 'input' | 'change'> & RuledViewEvents} RuledViewEventMap
+ * @typedef {import('./ruled-view-events.js').SceneChangeDetail} SceneChangeDetail
+ * @typedef {import('./ruled-view-events.js').RuledViewEventMap} RuledViewEventMap
+ * @typedef {import('./ruled-view-events.js').HandleInfo} HandleInfo
+ * @typedef {import('./ruled-view-events.js').EditDetail} EditDetail
  */
 
 export class RuledView extends HTMLElement {
@@ -116,6 +79,8 @@ export class RuledView extends HTMLElement {
     'input',
     'height',
     'task',
+    'seed',
+    'leave',
   ];
 
   constructor() {
@@ -244,6 +209,19 @@ export class RuledView extends HTMLElement {
     this.setAttribute('task', String(value));
   }
 
+  /** The seed of the exercise's drawn numbers (a whole number; none: one drawn when it opens). */
+  get seed() {
+    return this.getAttribute('seed') ?? '';
+  }
+  set seed(value) {
+    this.setAttribute('seed', String(value));
+  }
+
+  /** The exercise shown, for a program (stage/exercise-api.js); null when none is shown. */
+  get exercise() {
+    return this.stage ? exerciseApi(this.stage) : null;
+  }
+
   /** Whether the reader may drag the scene's handles. */
   get editable() {
     return this.hasAttribute('editable');
@@ -359,6 +337,9 @@ export class RuledView extends HTMLElement {
       text: this.text,
       lang,
       editable: this.editable,
+      // Leave, where the attribute allows it: the scene without the exercise
+      onLeaveTask: () => this.stage?.openTask(null),
+      mayLeaveTask: () => this.hasAttribute('leave'),
       onEditAsData: (data) => {
         this.data = data;
       },
@@ -421,7 +402,8 @@ export class RuledView extends HTMLElement {
   attributeChangedCallback(name, before, after) {
     if (name === 'height') return this.sized();
     if (!this.stage || before === after) return;
-    if (name === 'scene' || name === 'params' || name === 'paper' || name === 'task') this.open();
+    if (['scene', 'params', 'paper', 'task', 'seed'].includes(name)) this.open();
+    else if (name === 'leave') this.stage.exercise.panel.render();
     else if (name === 'controls' || name === 'text') this.stage.setPanel(this.controls, this.text);
     else if (name === 'editable') this.stage.setEditable(this.editable);
     else if (name === 'input') {
@@ -485,11 +467,14 @@ export class RuledView extends HTMLElement {
           if (this.hasAttribute('camera') && !camera) notes.push({ key: 'camera', note: 'element.badCamera' });
           const input = this.hasAttribute('input') ? decodeInput(this.getAttribute('input') ?? '') : null;
           if (this.hasAttribute('input') && !input) notes.push({ key: 'input', note: 'element.note.badInput' });
+          const { seed, note } = linkSeed(this.getAttribute('seed'), 'element.note');
+          if (note) notes.push(note);
           // an exercise: its scene and start (the element's scene and params are its own then)
           return openView(stage, {
             scene,
             params: { ...defaults(scene), ...params },
             task: this.getAttribute('task') || null,
+            seed,
             data: this._data,
             notes,
             autoplay: this.autoplay,

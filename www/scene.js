@@ -187,6 +187,8 @@ export const RESERVED_KEYS = Object.freeze([
   'input',
   'edit',
   'task',
+  'seed',
+  'leave',
 ]);
 
 /**

@@ -199,7 +199,7 @@ export class Stage {
    * change, an edit where handles may move). null leaves the exercise (the scene stays).
    * @param {import('./task/format.js').Task | null} task
    * @param {import('./scene.js').Scene | null} [scene]
-   * @param {{params?: import('./scene.js').Params, input?: import('./scene.js').Input | null, camera?: number[] | null, notes?: Notes}} [state]
+   * @param {Parameters<typeof openTask>[3]} [state]
    */
   openTask(task, scene = null, state = {}) {
     return openTask(this, task, scene, state);

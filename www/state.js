@@ -23,6 +23,9 @@ import { MAX_HASH, MAX_LINK_RULINGS } from './limits.js';
  *   (its handles moved), bit for bit; up to MAX_LINK_HANDLES handles
  * @property {boolean} [edit]           with #embed: the reader may drag the handles
  * @property {string | null} [task]     an exercise: a built-in one's id, or "j." and its JSON (task/format.js)
+ * @property {string | null} [seed]     the seed of the exercise's drawn numbers, as the link writes it
+ *   (task/format.js's readSeed says whether it is one)
+ * @property {boolean} [leave]          with #embed: the reader may leave the exercise
  * @property {Array<{key: string, note: string, vars?: Record<string, string>}>} notes   values that were not used, and why
  * @property {string | null} [paper]    the figure or example of the paper shown (paper.js), if any
  */
@@ -74,6 +77,8 @@ export function readState(hash, scenes) {
     input,
     edit: q.has('edit'),
     task: q.get('task'),
+    seed: q.get('seed'),
+    leave: q.has('leave'),
     notes,
     paper: paper?.id ?? null,
   };
@@ -90,7 +95,9 @@ export function writeState(state, { wholeInput = false } = {}) {
   if (state.embed && state.controls) q.set('controls', '');
   if (state.embed && state.text) q.set('text', '');
   if (state.embed && state.edit) q.set('edit', '');
+  if (state.embed && state.leave) q.set('leave', '');
   if (state.task) q.set('task', state.task);
+  if (state.task && state.seed) q.set('seed', state.seed);
   if (state.paper) q.set('paper', state.paper);
   q.set('scene', state.scene.id);
   for (const p of state.scene.params) q.set(p.key, serialize(p, state.params[p.key]));

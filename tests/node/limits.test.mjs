@@ -36,6 +36,11 @@ const NOT_LIMITS = [
   ],
   [10, ['milling.text'], 'the figure’s scale (1 unit = 10 mm), not HANDLE_REACH or EDIT_BOX'],
   [50, ['task.check.notNumber'], 'an example of a number to type, not TASK_SAMPLES'],
+  [
+    0.1,
+    ['convergence.readout.delta01', 'isometry.claim.helical'],
+    'the index 0,1 and the paper’s 0.1, not ANSWER_CLOSE',
+  ],
 ];
 
 /** Every .js file under `dir`. */

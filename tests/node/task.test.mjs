@@ -12,6 +12,7 @@ import { readTask, writeTask, taskFromLink, taskLink, TaskError } from '../../ww
 import { checkGoal, fitTask, answerNumber, measuresOf, unreadable } from '../../www/task/check.js';
 import { outcomeText } from '../../www/task/words.js';
 import { builtInTasks, builtInTask } from '../../www/task/builtin.js';
+import { drawTask, drawChoices } from '../../www/task/draw.js';
 
 const i18n = translator('en');
 const context = { t: i18n.t, format: i18n.format, lang: 'en' };
@@ -32,7 +33,9 @@ function check(/** @type {any} */ task, /** @type {any} */ state) {
   const built = scene.create(params, { ...context, ...(input ? { input } : {}) });
   /** @type {Record<string, string | string[]>} */
   const answers = {};
-  for (const [k, v] of Object.entries(state.answers ?? {})) answers[k] = Array.isArray(v) ? v : String(v);
+  // (a number the scene computes in this state, { value }: what it built)
+  for (const [k, v] of Object.entries(state.answers ?? {}))
+    answers[k] = Array.isArray(v) ? v : typeof v === 'object' ? String(measuresOf(built)[v.value]) : String(v);
   return checkGoal(task, built, answers, { scene, params, context });
 }
 
@@ -63,8 +66,27 @@ test('the built-in set: at least 12 exercises along the paper, English and Germa
     assert.ok(scenes.has(s), `an exercise in ${s}`);
 });
 
-for (const task of builtInTasks()) {
-  test(`built-in "${task.id}": not solved at its start, solved by its solution`, () => {
+/**
+ * The exercise as students get it: as it is, or — one that draws numbers — drawn for seeds 0 to
+ * 39, which between them draw every value each draw can give (asserted).
+ */
+function variants(/** @type {any} */ task) {
+  if (!Object.keys(task.draw).length) return [task];
+  const drawn = Array.from({ length: 40 }, (_, seed) => drawTask(task, seed));
+  for (const [name, d] of Object.entries(task.draw))
+    assert.deepEqual(
+      new Set(drawn.map((t) => t.drawn.values[name])),
+      new Set(drawChoices(/** @type {any} */ (d))),
+      `${task.id}: the seeds draw every value of ${name}`,
+    );
+  return drawn;
+}
+
+for (const variant of builtInTasks().flatMap(variants)) {
+  const task = variant;
+  const numbers = task.drawn ? ` (${JSON.stringify(task.drawn.values)})` : '';
+  test(`built-in "${task.id}"${numbers}: not solved at its start, solved by its solution`, () => {
+    fitTask(task, SCENES, computeFor(task));
     const start = check(task, { input: task.input });
     assert.equal(
       start.solved,
@@ -86,13 +108,30 @@ for (const task of builtInTasks()) {
   });
 }
 
-test('answers: a wrong number misses by how much, a formula is evaluated by the core and compared point by point', () => {
-  const chaikin = /** @type {any} */ (builtInTask('chaikin-count'));
+/** `task` drawn with the first seed that gives `values`. */
+function drawnWith(/** @type {any} */ task, /** @type {Record<string, number | string>} */ values) {
+  for (let seed = 0; seed < 1000; seed++) {
+    const drawn = drawTask(task, seed);
+    if (Object.entries(values).every(([k, v]) => drawn.drawn?.values[k] === v)) return /** @type {any} */ (drawn);
+  }
+  throw new Error(`no seed below 1000 draws ${JSON.stringify(values)}`);
+}
+
+test('answers: a wrong number misses by how much and which way (said without the answer), a formula is evaluated by the core and compared point by point', () => {
+  const chaikin = drawnWith(builtInTask('chaikin-count'), { steps: 3 });
   const wrong = check(chaikin, { answers: { count: '48' } });
   assert.equal(wrong.solved, false);
   assert.equal(wrong.outcomes[0].value, 48);
   assert.equal(wrong.outcomes[0].target, 50);
   assert.ok(Math.abs(wrong.outcomes[0].miss - 1.999) < 1e-12, '|48 − 50| − 0.001');
+  // which way, and whether it is close (within 10 %) — never by how much, which would give 50 away
+  assert.equal(wrong.outcomes[0].side, -1);
+  assert.equal(outcomeText(wrong.outcomes[0], i18n, chaikin), 'not right yet: a little too small (within 10 %)');
+  assert.equal(
+    outcomeText(check(chaikin, { answers: { count: '98' } }).outcomes[0], i18n, chaikin),
+    'not right yet: too large',
+  );
+  assert.doesNotMatch(outcomeText(wrong.outcomes[0], translator('de'), chaikin), /50|2/);
   // a count is a whole number; a word is not a number at all (said so, not "not right")
   assert.equal(check(chaikin, { answers: { count: '49.6' } }).solved, false);
   const word = check(chaikin, { answers: { count: 'fünfzig' } });
@@ -119,13 +158,20 @@ test('answers: a wrong number misses by how much, a formula is evaluated by the 
   const deltaTask = /** @type {any} */ (builtInTask('hypar-distribution'));
   const badDelta = check(deltaTask, { answers: { delta: '1 +' } });
   assert.match(outcomeText(badDelta.outcomes[0], translator('de'), deltaTask), /^δ\(u\): /);
-  // German decimal commas in a typed formula
-  const delta = /** @type {any} */ (builtInTask('hypar-distribution'));
+  // German decimal commas in a typed formula; the numbers drawn (k = 2: δ = (1 + 4u²)/2)
+  const delta = drawnWith(builtInTask('hypar-distribution'), { k: 2 });
   const de = { ...context, lang: 'de' };
   const scene = sceneOf('formula');
   const params = withChoices(scene, delta.params);
   const built = scene.create(params, de);
-  assert.equal(checkGoal(delta, built, { delta: '1 + 1,0*u^2' }, { scene, params, context: de }).solved, true);
+  assert.equal(checkGoal(delta, built, { delta: '0,5 + 2,0*u^2' }, { scene, params, context: de }).solved, true);
+  // … and the same formula is wrong for another k: the exact δ the core gives follows the number drawn
+  const other = drawnWith(builtInTask('hypar-distribution'), { k: 3 });
+  const otherParams = withChoices(scene, other.params);
+  const otherBuilt = scene.create(otherParams, de);
+  const ctx = { scene, params: otherParams, context: de };
+  assert.equal(checkGoal(other, otherBuilt, { delta: '0,5 + 2,0*u^2' }, ctx).solved, false);
+  assert.equal(checkGoal(other, otherBuilt, { delta: '1/3 + 3*u^2' }, ctx).solved, true);
   assert.equal(answerNumber('−0,5'), -0.5);
   assert.equal(answerNumber('1/3'), 1 / 3);
   assert.ok(Number.isNaN(answerNumber('one half')));

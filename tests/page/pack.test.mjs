@@ -39,6 +39,8 @@ before(async () => {
     'pkg/ruledlab_bg.wasm',
     'dist/ruledlab.html',
     'dist/ruledlab-embed.js',
+    'www/course/index.js',
+    'pkg/zip.js',
   ]) {
     assert.ok(files.includes(need), `the package lacks ${need}`);
   }
@@ -286,6 +288,51 @@ s.subdivide({ scheme: 'cubic' });
         types: [],
       },
       files: ['main.ts'],
+    }),
+  );
+  execFileSync(join(REPO, 'node_modules/.bin/tsc'), ['-p', join(dir, 'tsconfig.json')], { cwd: dir, stdio: 'inherit' });
+});
+
+test('ruledlab/course from the installed tarball in Node: a SCORM 2004 package and an .h5p file, typed', () => {
+  const dir = app();
+  writeFileSync(
+    join(dir, 'course.mjs'),
+    `import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { scormPackage, h5pPackage, readScorm, readH5p } from 'ruledlab/course';
+const require = createRequire(import.meta.url);
+const page = readFileSync(require.resolve('ruledlab/ruledlab.html'), 'utf8');
+const script = readFileSync(require.resolve('ruledlab/embed'), 'utf8');
+const zip = await scormPackage(['torsal-pair', 'chaikin-count'], { standard: 'scorm2004', page });
+const h5p = await h5pPackage('hypar-distribution', { script, lang: 'de' });
+console.log(JSON.stringify({ scorm: readScorm(zip).tasks.map((t) => t.id), standard: readScorm(zip).standard, h5p: readH5p(h5p).task.id }));
+`,
+  );
+  const out = JSON.parse(execFileSync('node', ['course.mjs'], { cwd: dir, encoding: 'utf8' }));
+  assert.deepEqual(out, { scorm: ['torsal-pair', 'chaikin-count'], standard: 'scorm2004', h5p: 'hypar-distribution' });
+  writeFileSync(
+    join(dir, 'course.ts'),
+    `import { scormPackage, type PackageError } from 'ruledlab/course';
+const zip: Uint8Array = await scormPackage(['torsal-pair'], { standard: 'scorm12', page: '<html></html>' });
+let e: PackageError | null = null;
+console.log(zip.length, e);
+// @ts-expect-error a standard ruledlab does not write
+await scormPackage(['torsal-pair'], { standard: 'aicc' });
+`,
+  );
+  writeFileSync(
+    join(dir, 'tsconfig.json'),
+    JSON.stringify({
+      compilerOptions: {
+        strict: true,
+        noEmit: true,
+        target: 'es2022',
+        module: 'esnext',
+        moduleResolution: 'bundler',
+        lib: ['es2022', 'dom'],
+        types: [],
+      },
+      files: ['course.ts'],
     }),
   );
   execFileSync(join(REPO, 'node_modules/.bin/tsc'), ['-p', join(dir, 'tsconfig.json')], { cwd: dir, stdio: 'inherit' });

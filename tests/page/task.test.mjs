@@ -67,7 +67,8 @@ test('doing an exercise: only what it lets change is enabled, Check says how eac
 });
 
 test('with the keyboard alone: Tab to the answer, type, Enter checks; a hint and the solution by Enter', async () => {
-  const { page, problems } = await session.open('index.html#task=chaikin-count');
+  // (seed 0 draws 3 steps: 50 points)
+  const { page, problems } = await session.open('index.html#task=chaikin-count&seed=0');
   // from the top of the page, Tab until the answer field has the keyboard
   await page.evaluate(() => /** @type {HTMLElement} */ (document.activeElement)?.blur());
   let at = '';
@@ -119,8 +120,9 @@ test('a typed curve is checked by the core: how far it is from the exact stricti
   // the exact striction curve is held off and hidden: no row of its own to switch on
   assert.equal(await page.locator('.rl-row[data-key="exact"]').isHidden(), true);
   await page.close();
-  const de = await session.open('index.html#task=hypar-distribution&lang=de');
-  await de.page.locator('input[name="task-delta"]').fill('1,0 + u^2');
+  // (seed 4 draws k = 2: δ(u) = (1 + 4u²)/2)
+  const de = await session.open('index.html#task=hypar-distribution&seed=4&lang=de');
+  await de.page.locator('input[name="task-delta"]').fill('0,5 + 2,0*u^2');
   await de.page.click('.rl-task-check');
   assert.match(await verdict(de.page), /^✓ Gelöst/);
   assert.deepEqual([...problems, ...de.problems], []);
@@ -132,8 +134,8 @@ test('<ruled-view task>: task-check and task-solved events; a framed page tells 
     'course.html',
     `<!doctype html><html lang="en"><head><meta charset="utf-8"><link rel="icon" href="data:,"><title>course</title>
 <script defer src="${session.url}dist/ruledlab-embed.js"></script></head><body>
-<ruled-view id="v" task="chaikin-count" lang="en" controls height="560"></ruled-view>
-<iframe id="f" sandbox="allow-scripts" src="${session.url}index.html#embed&amp;controls&amp;task=chaikin-count" width="800" height="560" title="exercise"></iframe>
+<ruled-view id="v" task="chaikin-count" seed="0" lang="en" controls height="560"></ruled-view>
+<iframe id="f" sandbox="allow-scripts" src="${session.url}index.html#embed&amp;controls&amp;task=chaikin-count&amp;seed=0" width="800" height="560" title="exercise"></iframe>
 <script>
 window.events = []; window.messages = [];
 document.getElementById('v').addEventListener('task-check', (e) => window.events.push(['check', e.detail]));

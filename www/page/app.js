@@ -14,7 +14,7 @@ import { translator, pickLanguage, loadLanguage } from '../i18n/translate.js';
 import { adoptStyles } from '../ui/css.js';
 import { showFailure } from '../ui/failure.js';
 import { appendRich } from '../ui/richtext.js';
-import { storedHash } from './onefile.js';
+import { storedCourse, storedHash } from './onefile.js';
 import { stored } from '../platform.js';
 import { pageChrome, plainTitle } from './chrome.js';
 import { dataPanel, parseStored, STORED } from './data-panel.js';
@@ -22,8 +22,9 @@ import { pageAddress } from './address.js';
 import { keepInput, keptInput } from './stored-input.js';
 import { readParams } from '../scene.js';
 import { builtInTask } from '../task/builtin.js';
-import { readTask, say, taskLink } from '../task/format.js';
-import { markSolved } from '../task/progress.js';
+import { linkSeed, readTask, say, taskLink } from '../task/format.js';
+import { keepAttempt, keptAttempt, markSolved } from '../task/progress.js';
+import { attemptOf } from '../stage/exercise-api.js';
 import { postToParent } from '../task/message.js';
 import { taskErrorText } from '../task/words.js';
 import { encodeInput } from '../edit/input.js';
@@ -70,6 +71,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       input: stage.input,
       paper: stage.paper?.id ?? null,
       task: stage.task ? taskLink(stage.task, (id) => builtInTask(id) !== null) : null,
+      seed: stage.task?.drawn ? String(stage.task.drawn.seed) : null,
     };
   const address = pageAddress({ oneFile, state: shown });
   await nextTask();
@@ -78,6 +80,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     lang,
     page: true,
     editable: !link.has('embed') || link.has('edit'),
+    // Leave the exercise: in a frame only where the snippet allows it
+    mayLeaveTask: () => !state?.embed || !!state.leave,
     onChange: ({ reason, ended }) => {
       // an edit too large for the link stays in the tab (and the page says so)
       if (ended && stage.scene && (reason === 'input' || reason === 'reset'))
@@ -93,6 +97,9 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
         markSolved(report.task);
         localize();
       }
+      // the attempt is kept where the browser keeps anything; a package's page records it (course.js)
+      keepTaskAttempt();
+      if (type === 'check') course?.checked(report);
       const input = stage.input;
       postToParent(type, report, {
         scene: stage.scene?.id ?? '',
@@ -108,6 +115,13 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     },
   });
   doc.body.append(share);
+  /** @type {Awaited<ReturnType<import('./course.js').startCourse>> | null} a SCORM package's side (course.js) */
+  let course = null;
+  /** Keeps the attempt at the exercise shown in this browser (task/progress.js). */
+  const keepTaskAttempt = () => {
+    const attempt = attemptOf(stage);
+    if (attempt && stage.task) keepAttempt(stage.task.id, attempt);
+  };
   await nextTask();
 
   /** Opens `scene` (with `params` and `options`), then records it as a new history entry. */
@@ -153,6 +167,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       task: stage.task?.id ?? null,
     });
     data.localize();
+    course?.localize();
   };
 
   /** Opens the state of the current address (on load, Back/Forward, or an edited link). */
@@ -165,6 +180,9 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     const text = stored(STORED);
     // an edit: the link's, or one too large for it that this tab kept
     const input = state.input ?? keptInput(state.scene.id);
+    // an exercise's drawn numbers: the link's seed (one that is not a seed is said, and a new one drawn)
+    const { seed, note } = linkSeed(state.seed);
+    if (note) state.notes.push(note);
     await openView(stage, {
       scene: state.scene,
       params: state.params,
@@ -172,6 +190,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       task: state.task,
       progress: progressOf,
       taskInput: state.input,
+      seed,
+      attempt: (task) => keptAttempt(task.id),
       camera: state.camera,
       data: state.data ?? (text ? parseStored(text) : null),
       notes: state.notes,
@@ -201,7 +221,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
    */
   const startTask = async (value) => {
     try {
-      await openExercise(stage, value);
+      await openExercise(stage, value, { attempt: (task) => keptAttempt(task.id) });
       address.save('push');
       return true;
     } catch (e) {
@@ -276,6 +296,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
                 say(task.title, lang),
               ),
             ),
+          source: () => ({ oneFile, embedScript }),
           tryIt: (task) => {
             authoring().then((made) => made.close());
             startTask(taskLink(task, (id) => builtInTask(id) !== null));
@@ -315,6 +336,13 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     viewer.requestRender();
   }
   address.save('replace');
+  window.addEventListener('pagehide', keepTaskAttempt);
+  // a SCORM package's page: the course system's runtime records its exercises (course.js)
+  const setup = oneFile ? storedCourse() : null;
+  if (setup)
+    course = await import('./course.js').then((m) =>
+      m.startCourse(setup, { stage, i18n: () => i18n, before: chrome.main, opened: () => address.save('replace') }),
+    );
   doc.getElementById('boot')?.remove();
   doc.documentElement.dataset.started = '1';
   // for the page tests and the curious

@@ -2,13 +2,22 @@
 // a panel in the stage lets the lecturer pick what the reader may change and what is hidden,
 // build the goal from the values the scene computes (each with its value now), type the title,
 // the prompt and up to three hints, record the start and the solution from the view as she sets
-// it, and take the link, iframe and element snippets. Each condition shows whether it holds at
-// the start and in the solution, so an exercise that is solved at its start or unsolvable shows.
+// it, and take the link, iframe and element snippets (each with a Copy button), the JSON, or a
+// SCORM package or an H5P file. Answers the reader types (a number, δ(u), s(u)) are written from
+// the values and curves the scene knows (page/author-parts.js); a parameter may be drawn per
+// attempt ("{n}" in the texts says it). Each condition shows whether it holds at the start and
+// in the solution, and warnings say — for every number drawn, with the values — where the start
+// already does what the goal says or the solution does not (page/author-warnings.js).
 import { readTask, writeTask } from '../task/format.js';
-import { checkGoal, measuresOf } from '../task/check.js';
+import { measuresOf } from '../task/check.js';
 import { describeCondition, statedNumber, valueName } from '../task/words.js';
-import { encodeInput, decodeInput } from '../edit/input.js';
-import { MAX_TASK_HINTS, MAX_TASK_SLUG, MAX_TASK_TEXT, MAX_TASK_TITLE } from '../limits.js';
+import { encodeInput } from '../edit/input.js';
+import { MAX_TASK_HINTS, MAX_TASK_SLUG, MAX_TASK_TEXT, MAX_TASK_TITLE, TASK_SAMPLES } from '../limits.js';
+import { copyField } from './copy-field.js';
+import { packageButtons, remember } from './packages.js';
+import { answersBox, drawFields, slug } from './author-parts.js';
+import { authorWarnings, outcomesAt } from './author-warnings.js';
+import { drawTask } from '../task/draw.js';
 
 /**
  * @typedef {import('../task/format.js').Task} Task
@@ -20,6 +29,7 @@ import { MAX_TASK_HINTS, MAX_TASK_SLUG, MAX_TASK_TEXT, MAX_TASK_TITLE } from '..
  * @property {(task: Task) => Promise<{link: string | null, iframe: string | null, element: string}>} snippets
  *   the Share dialog's snippets of an exercise (no link or iframe where the page has no address)
  * @property {(task: Task) => void} tryIt   opens the exercise as a reader sees it
+ * @property {() => import('./packages.js').PackageSource} source   where a package's page files come from
  */
 
 /**
@@ -44,8 +54,12 @@ export class Author {
     this.start = null;
     /** @type {{params: import('../scene.js').Params, input: string | null} | null} */
     this.solution = null;
-    /** @type {Record<string, 'fixed' | 'change' | 'hide'>} */
+    /** @type {Record<string, 'fixed' | 'change' | 'hide' | 'draw'>} */
     this.params = {};
+    /** @type {Record<string, import('./author-parts.js').DrawRow>} parameters drawn per attempt */
+    this.draws = {};
+    /** @type {import('./author-parts.js').AnswerRow[]} answers the reader types */
+    this.answers = [];
     this.handles = false;
     /** @type {Set<string>} readouts hidden */
     this.hidden = new Set();
@@ -65,6 +79,8 @@ export class Author {
     if (!this.open || this.scene !== stage.scene.id) {
       this.scene = stage.scene.id;
       this.params = Object.fromEntries(stage.scene.params.map((p) => [p.key, 'fixed']));
+      this.draws = {};
+      this.answers = [];
       this.handles = false;
       this.hidden = new Set();
       this.rows = [];
@@ -108,13 +124,23 @@ export class Author {
             .map((p) => [p.key, this.solution?.params[p.key]]),
         )
       : null;
-    const id = `${
-      this.title
-        .toLowerCase()
-        .replace(/[^a-z0-9]+/g, '-')
-        .replace(/^-|-$/g, '')
-        .slice(0, MAX_TASK_SLUG) || 'exercise'
-    }-${hash(JSON.stringify([params, start.input, this.rows]))}`;
+    const id = `${slug(this.title, MAX_TASK_SLUG) || 'exercise'}-${hash(
+      JSON.stringify([params, start.input, this.rows, this.answers, this.draws]),
+    )}`;
+    // parameters drawn per attempt: their range, and { drawn } where the start holds them
+    const drawn = Object.keys(this.params).filter((k) => this.params[k] === 'draw');
+    for (const k of drawn) params[k] = /** @type {any} */ ({ drawn: k });
+    const answers = this.answers.map((a, k) => ({ id: `answer${k + 1}`, kind: a.kind, label: words(a.label.trim()) }));
+    /** @type {Record<string, unknown>} */
+    const solutionAnswers = {};
+    this.answers.forEach((a, k) => {
+      const typed = a.solution.map((x) => x.trim());
+      if (a.kind === 'number') {
+        if (a.target) solutionAnswers[`answer${k + 1}`] = { value: a.target };
+        else if (typed[0]) solutionAnswers[`answer${k + 1}`] = number(typed[0]);
+      } else if (typed.every(Boolean)) solutionAnswers[`answer${k + 1}`] = a.kind === 'curve' ? typed : typed[0];
+    });
+    const hasSolution = this.solution || Object.keys(solutionAnswers).length;
     return readTask({
       ruledlab: 'exercise',
       version: 1,
@@ -136,35 +162,70 @@ export class Author {
           .map(([k]) => k),
         ...this.hidden,
       ],
-      goal: this.rows.map((r) => ({
-        value: r.value,
-        [r.test]: number(r.bound),
-        ...(r.test === 'near' ? { within: number(r.within) } : {}),
-      })),
+      ...(answers.length ? { answers } : {}),
+      ...(drawn.length
+        ? {
+            draw: Object.fromEntries(
+              drawn.map((k) => {
+                const d = this.draws[k] ?? { from: '', to: '', step: '' };
+                return [k, { from: number(d.from), to: number(d.to), step: d.step.trim() ? number(d.step) : 1 }];
+              }),
+            ),
+          }
+        : {}),
+      goal: [
+        ...this.rows.map((r) => ({
+          value: r.value,
+          [r.test]: number(r.bound),
+          ...(r.test === 'near' ? { within: number(r.within) } : {}),
+        })),
+        ...this.answers.map((a, k) => {
+          const answer = `answer${k + 1}`;
+          const samples = a.samples.trim() ? { samples: number(a.samples) } : {};
+          if (a.kind === 'number')
+            return { answer, near: a.target ? { value: a.target } : number(a.bound), within: number(a.within) };
+          return {
+            answer,
+            matches: a.kind === 'curve' ? 'striction' : 'distribution',
+            within: number(a.within),
+            ...samples,
+          };
+        }),
+      ],
       hints: this.hints.filter((h) => h.trim()).map((h) => words(h.trim())),
-      ...(this.solution
+      ...(hasSolution
         ? {
             solution: {
               ...(solutionParams && Object.keys(solutionParams).length ? { params: solutionParams } : {}),
-              ...(this.solution.input !== start.input && this.solution.input ? { input: this.solution.input } : {}),
+              ...(this.solution && this.solution.input !== start.input && this.solution.input
+                ? { input: this.solution.input }
+                : {}),
+              ...(Object.keys(solutionAnswers).length ? { answers: solutionAnswers } : {}),
             },
           }
         : {}),
     });
   }
 
-  /** @internal Whether `task` holds in a recorded state (computed by the scene). */
-  holdsIn(/** @type {Task} */ task, /** @type {{params: import('../scene.js').Params, input: string | null}} */ state) {
+  /** @internal The solution's typed answers, as the warnings check them. */
+  solutionAnswers(/** @type {Task} */ task) {
+    /** @type {import('./author-warnings.js').SolutionAnswers} */
+    const out = {};
+    for (const [k, v] of Object.entries(task.solution?.answers ?? {}))
+      out[k] = Array.isArray(v) ? v : typeof v === 'object' ? v : String(v);
+    return out;
+  }
+
+  /** @internal Whether each condition of `task` holds in a recorded state (computed by the scene). */
+  holdsIn(
+    /** @type {Task} */ task,
+    /** @type {{params: import('../scene.js').Params, input: string | null}} */ state,
+    /** @type {import('./author-warnings.js').SolutionAnswers} */ answers = {},
+  ) {
     const stage = this.hooks.stage();
     const scene = /** @type {import('../scene.js').Scene} */ (stage.scene);
-    const input = state.input ? decodeInput(state.input) : null;
-    const context = { ...stage.context(), input: input ?? undefined };
-    try {
-      const built = scene.create(state.params, context);
-      return checkGoal(task, built, {}, { scene, params: state.params, context }).outcomes.map((o) => o.holds);
-    } catch {
-      return task.goal.map(() => false);
-    }
+    const outcomes = outcomesAt(task, state, scene, stage.context(), answers);
+    return outcomes ? outcomes.map((o) => o.holds) : task.goal.map(() => false);
   }
 
   /**
@@ -180,7 +241,12 @@ export class Author {
     if (!name) return;
     const find = (/** @type {string} */ n) =>
       /** @type {HTMLElement | null} */ (this.box.querySelector(`[name="${n}"]`));
-    (find(name) ?? (name.startsWith('author-remove-') ? find('author-add') : null))?.focus({ preventScroll: true });
+    const gone = name.startsWith('author-remove-')
+      ? find('author-add')
+      : name.startsWith('author-answer-remove-')
+        ? find('author-answer-add')
+        : null;
+    (find(name) ?? gone)?.focus({ preventScroll: true });
     this.box.scrollTop = scroll;
   }
 
@@ -214,12 +280,33 @@ export class Author {
     controls.append(el('legend', { textContent: t('author.params') }));
     for (const p of scene.params) {
       const select = /** @type {HTMLSelectElement} */ (el('select', { name: `author-${p.key}` }));
-      for (const v of ['fixed', 'change', 'hide']) select.add(new Option(t(`author.param.${v}`), v));
+      // (a number may be drawn per attempt, from a range)
+      for (const v of ['fixed', 'change', 'hide', ...(p.type === 'range' ? ['draw'] : [])])
+        select.add(new Option(t(`author.param.${v}`), v));
       select.value = this.params[p.key] ?? 'fixed';
       select.addEventListener('change', () => {
-        this.params[p.key] = /** @type {'fixed' | 'change' | 'hide'} */ (select.value);
+        this.params[p.key] = /** @type {'fixed' | 'change' | 'hide' | 'draw'} */ (select.value);
+        if (select.value === 'draw') {
+          const now = Number(stage.params[p.key]);
+          this.draws[p.key] ??= {
+            from: String(Math.max(Number(p.min), now - 4 * Number(p.step ?? 1))),
+            to: String(Math.min(Number(p.max), now + 4 * Number(p.step ?? 1))),
+            step: String(p.step ?? 1),
+          };
+          this.render();
+        } else if (this.draws[p.key]) this.render();
       });
       controls.append(field(valueName(p.label, i18n), select));
+      if (this.params[p.key] === 'draw')
+        controls.append(
+          drawFields({
+            key: p.key,
+            row: /** @type {any} */ (this.draws[p.key]),
+            i18n,
+            el,
+            render: () => this.render(),
+          }),
+        );
     }
     if (stage.editor.sets.length) {
       const handles = el('input', { type: 'checkbox', checked: this.handles, name: 'author-handles' });
@@ -253,12 +340,15 @@ export class Author {
     let task = /** @type {Task | null} */ (null);
     let problem = '';
     try {
-      task = this.rows.length ? this.task() : null;
+      task = this.rows.length || this.answers.length ? this.task() : null;
     } catch (e) {
       problem = String(/** @type {any} */ (e).message);
     }
-    const atStart = task && this.start ? this.holdsIn(task, this.start) : [];
-    const atSolution = task && this.solution ? this.holdsIn(task, this.solution) : [];
+    // (a drawn exercise: its conditions as they stand for the first numbers it draws)
+    const first = task && Object.keys(task.draw).length ? drawsFirst(task) : task;
+    const solutionState = this.solution ?? (task?.solution?.answers ? this.start : null);
+    const atStart = first && this.start ? this.holdsIn(first, this.start) : [];
+    const atSolution = first && solutionState ? this.holdsIn(first, solutionState, this.solutionAnswers(first)) : [];
     this.rows.forEach((r, k) => {
       const row = el('div', { className: 'rl-author-row' });
       const value = /** @type {HTMLSelectElement} */ (el('select', { name: `author-value-${k}` }));
@@ -302,11 +392,11 @@ export class Author {
         this.render();
       });
       row.append(remove);
-      if (task) {
-        const c = task.goal[k];
+      if (first) {
+        const c = first.goal[k];
         const status = el('p', { className: 'rl-author-status' });
-        status.textContent = `${describeCondition(c, task, i18n)}: ${t(atStart[k] ? 'author.holdsAtStart' : 'author.failsAtStart')}${
-          this.solution ? `; ${t(atSolution[k] ? 'author.holdsInSolution' : 'author.failsInSolution')}` : ''
+        status.textContent = `${describeCondition(c, first, i18n)}: ${t(atStart[k] ? 'author.holdsAtStart' : 'author.failsAtStart')}${
+          solutionState ? `; ${t(atSolution[k] ? 'author.holdsInSolution' : 'author.failsInSolution')}` : ''
         }`;
         row.append(status);
       }
@@ -327,6 +417,39 @@ export class Author {
       )?.focus();
     });
     goal.append(add);
+    // the answers the reader types: a number, δ(u) or s(u), from what the scene computes and knows
+    const exactOf = (/** @type {'striction' | 'distribution'} */ kind) => {
+      try {
+        return !!scene.exact?.(stage.params, stage.context(), kind, TASK_SAMPLES);
+      } catch {
+        return false;
+      }
+    };
+    const answers = answersBox({
+      rows: this.answers,
+      values,
+      exact: { function: exactOf('distribution'), curve: exactOf('striction') },
+      i18n,
+      el,
+      render: () => this.render(),
+    });
+    // what the start and the solution do, for every number drawn (with the values)
+    const warnings = el('div', { className: 'rl-author-warnings' });
+    warnings.setAttribute('role', 'status');
+    if (task && this.start) {
+      const list = authorWarnings(
+        task,
+        { start: this.start, solution: solutionState, answers: this.solutionAnswers(task) },
+        scene,
+        stage.context(),
+        i18n,
+      );
+      warnings.hidden = !list.length;
+      warnings.append(
+        el('h4', { textContent: t('author.warn.heading') }),
+        ...list.map((w) => el('p', { className: `rl-author-warning rl-warn-${w.kind}`, textContent: `⚠ ${w.text}` })),
+      );
+    } else warnings.hidden = true;
 
     const hints = el('fieldset', { className: 'rl-author-hints' });
     hints.append(el('legend', { textContent: t('author.hints', { max: MAX_TASK_HINTS }) }));
@@ -389,20 +512,36 @@ export class Author {
       }
       this.hooks.snippets(made).then((snippets) => {
         const lines = [];
-        if (snippets.link) lines.push(readonly(doc, t('share.link'), snippets.link, 'author-link'));
-        if (snippets.iframe) lines.push(readonly(doc, t('share.iframe'), snippets.iframe, 'author-iframe'));
-        lines.push(readonly(doc, t('share.element'), snippets.element, 'author-element'));
-        lines.push(readonly(doc, t('author.json'), writeTask(made), 'author-json'));
+        const copy = (/** @type {string} */ label, /** @type {string} */ value, /** @type {string} */ id) =>
+          copyField(doc, t, { label, id, value });
+        if (snippets.link) lines.push(copy(t('share.link'), snippets.link, 'author-link'));
+        if (snippets.iframe) lines.push(copy(t('share.iframe'), snippets.iframe, 'author-iframe'));
+        lines.push(copy(t('share.element'), snippets.element, 'author-element'));
+        lines.push(copy(t('author.json'), writeTask(made), 'author-json'));
+        remember(made);
+        const packages = packageButtons(
+          doc,
+          () => this.hooks.i18n(),
+          () => [made],
+          () => ({
+            ...this.hooks.source(),
+            lang: this.hooks.i18n().lang,
+            readers: { controls: true, edit: true },
+            title: made.title[this.hooks.i18n().lang === 'de' ? 'de' : 'en'] ?? '',
+          }),
+          'author',
+        );
         const tryIt = el('button', { type: 'button', textContent: t('author.try') });
         tryIt.addEventListener('click', () => this.hooks.tryIt(made));
-        result.append(...lines, tryIt);
+        result.append(...lines, packages, tryIt);
         /** @type {HTMLElement | null} */ (result.querySelector('textarea'))?.focus();
       });
     });
     const close = el('button', { type: 'button', textContent: t('author.close') });
     close.addEventListener('click', () => this.close());
     out.append(make, close, result);
-    if (problem && this.rows.length) out.append(el('p', { className: 'rl-author-problem', textContent: problem }));
+    if (problem && (this.rows.length || this.answers.length))
+      out.append(el('p', { className: 'rl-author-problem', textContent: problem }));
     this.box.replaceChildren(
       heading,
       intro,
@@ -411,24 +550,18 @@ export class Author {
       controls,
       hide,
       goal,
+      answers,
       hints,
       states,
+      warnings,
       out,
     );
   }
 }
 
-/** A read-only text with its label, to copy from. */
-function readonly(
-  /** @type {Document} */ doc,
-  /** @type {string} */ label,
-  /** @type {string} */ value,
-  /** @type {string} */ id,
-) {
-  const row = Object.assign(doc.createElement('div'), { className: 'rl-author-snippet' });
-  const area = Object.assign(doc.createElement('textarea'), { id, value, readOnly: true, rows: 3, spellcheck: false });
-  row.append(Object.assign(doc.createElement('label'), { htmlFor: id, textContent: label }), area);
-  return row;
+/** A drawn exercise with the numbers of seed 0 (how its conditions are shown while it is written). */
+function drawsFirst(/** @type {Task} */ task) {
+  return drawTask(task, 0);
 }
 
 /** A number as typed ("0,5" too); NaN when it is none (the format refuses it then). */

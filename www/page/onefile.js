@@ -1,7 +1,10 @@
 // The view as one HTML file, for a course page: the one-file build (dist/ruledlab.html) with
 // the current state written into its state block, which the file reads when it is opened
 // without a hash (from disk). The state block is JSON, never executed, so the file's
-// Content-Security-Policy hash of its script stays valid.
+// Content-Security-Policy hash of its script stays valid (the block: course/page-file.js).
+import { STATE_ID, stateBlock, withState } from '../course/page-file.js';
+
+export { STATE_ID, stateJson, withState } from '../course/page-file.js';
 
 /** The body of the one-file build before its script runs. */
 export const BODY =
@@ -16,26 +19,13 @@ export function useBody(/** @type {string} */ html) {
   body = html;
 }
 
-/** The id of the state block. */
-export const STATE_ID = 'ruledlab-state';
-
 /** The id of the page's script (at the end of its body: what is above it is painted first). */
 export const SCRIPT_ID = 'ruledlab-script';
 
 /** The one-file page's script element as it was written, taken while it runs (the page then replaces the body). */
 const SCRIPT = typeof document === 'undefined' ? '' : (document.getElementById(SCRIPT_ID)?.outerHTML ?? '');
-
-/** The state block's JSON for a hash, with "<" escaped so it cannot end the block. */
-export function stateJson(/** @type {string} */ hash) {
-  return JSON.stringify({ hash }).replace(/</g, '\\u003c');
-}
-
-/** `html` (the one-file build) with its state block set to `hash`. */
-export function withState(/** @type {string} */ html, /** @type {string} */ hash) {
-  const block = new RegExp(`(<script type="application/json" id="${STATE_ID}">)[\\s\\S]*?(</script>)`);
-  if (!block.test(html)) throw new Error('not the one-file build: no state block');
-  return html.replace(block, (_, open, close) => `${open}${stateJson(hash)}${close}`);
-}
+/** … and its head, before the page changes it (its title, the styles adopted). */
+const HEAD = typeof document === 'undefined' ? '' : document.head.innerHTML;
 
 /** Whether `doc` is the one-file page (dist/ruledlab.html or a view downloaded from it). */
 export function isOneFilePage(/** @type {Document} */ doc) {
@@ -44,28 +34,34 @@ export function isOneFilePage(/** @type {Document} */ doc) {
 
 /** The hash stored in the page's state block, if any. */
 export function storedHash() {
-  const text = document.getElementById(STATE_ID)?.textContent ?? '';
-  try {
-    const { hash } = JSON.parse(text || '{}');
-    return typeof hash === 'string' ? hash : '';
-  } catch {
-    return '';
-  }
+  const { hash } = stateBlock(document);
+  return typeof hash === 'string' ? hash : '';
+}
+
+/** What the state block says of a SCORM package (page/course.js reads it), or null. */
+export function storedCourse() {
+  return stateBlock(document).course ?? null;
 }
 
 /**
- * The one-file build showing `hash`: this document itself when it is the one-file build,
- * otherwise dist/ruledlab.html fetched from the server (throws when it is not there).
+ * The one-file build as written: this document itself when it is the one-file build (its state
+ * block as the file came), otherwise dist/ruledlab.html fetched from the server (throws when it
+ * is not there).
+ * @param {boolean} oneFile
+ */
+export async function oneFileHtml(oneFile) {
+  if (oneFile)
+    return `<!doctype html>\n<html lang="en" data-build="onefile" data-shell>\n<head>${HEAD}</head>\n<body>${body}\n${SCRIPT}</body>\n</html>\n`;
+  const response = await fetch(new URL('../../dist/ruledlab.html', import.meta.url));
+  if (!response.ok) throw new Error(`dist/ruledlab.html: HTTP ${response.status}`);
+  return response.text();
+}
+
+/**
+ * The one-file build showing `hash` (see oneFileHtml).
  * @param {boolean} oneFile
  * @param {string} hash
  */
 export async function oneFileWithState(oneFile, hash) {
-  if (oneFile)
-    return withState(
-      `<!doctype html>\n<html lang="en" data-build="onefile" data-shell>\n<head>${document.head.innerHTML}</head>\n<body>${body}\n${SCRIPT}</body>\n</html>\n`,
-      hash,
-    );
-  const response = await fetch(new URL('../../dist/ruledlab.html', import.meta.url));
-  if (!response.ok) throw new Error(`dist/ruledlab.html: HTTP ${response.status}`);
-  return withState(await response.text(), hash);
+  return withState(await oneFileHtml(oneFile), hash);
 }

@@ -9,9 +9,12 @@
 //                                       them), a sentence saying so, the one-file download and
 //                                       the element snippet with its script to upload
 // Every snippet carries the scene, its parameters, the figure of the paper, the language, the
-// camera and the reader's edit of the input (up to MAX_LINK_HANDLES handles), and lets readers
-// move the handles of a scene that has them; the tests paste each into a page on another origin
-// and require it to draw.
+// camera and the reader's edit of the input (up to MAX_LINK_HANDLES handles), and what readers
+// may do there — edit the geometry, see the controls, see the explanation, leave an exercise
+// (the dialog's options; Leave is not offered in a frame unless allowed). On an exercise the
+// snippets show the exercise (each reader drawing her own numbers), and it goes out as a SCORM
+// package or an H5P file too (page/packages.js). Each snippet has a Copy button; the tests paste
+// each into a page on another origin and require it to draw.
 import { defaults } from '../scene.js';
 import { writeState } from '../state.js';
 import { encodeInput, linkableInput } from '../edit/input.js';
@@ -19,12 +22,34 @@ import { download } from '../ui/download.js';
 import { oneFileWithState } from './onefile.js';
 import { place } from '../platform.js';
 import { MAX_LINK_HANDLES } from '../limits.js';
+import { copyField } from './copy-field.js';
+import { packageButtons } from './packages.js';
+import { taskLink, say } from '../task/format.js';
+import { builtInTask } from '../task/builtin.js';
+import { undrawn } from '../task/draw.js';
 
 /** What `npm run build` made beside the served page (dist/manifest.json names the embed script). */
 const MANIFEST = new URL('../../dist/manifest.json', import.meta.url).href;
 
 /** The file name the embed script is handed out under. */
 export const EMBED_FILE = 'ruledlab-embed.js';
+
+/**
+ * What readers may do where a snippet puts the view (the Share dialog's options).
+ * @typedef {object} Readers
+ * @property {boolean} controls   see the controls and the readout
+ * @property {boolean} text       see the scene's explanation
+ * @property {boolean} edit       drag the points (a scene that has them)
+ * @property {boolean} leave      leave the exercise for the scene alone
+ */
+
+/** The hash flags of what readers may do in a frame (after "embed"). */
+const flags = (/** @type {Readers} */ r) =>
+  ['controls', 'edit', 'text', 'leave'].filter((k) => r[/** @type {keyof Readers} */ (k)]);
+
+/** The element's attributes of what readers may do. */
+const attributes = (/** @type {Readers} */ r) =>
+  `${r.controls ? ' controls' : ''}${r.text ? ' text' : ''}${r.edit ? ' editable' : ''}${r.leave ? ' leave' : ''}`;
 
 /**
  * @typedef {object} ShareContext
@@ -40,9 +65,11 @@ export const EMBED_FILE = 'ruledlab-embed.js';
  * The Share dialog of the page.
  * @param {HTMLDialogElement} dialog
  * @param {ShareContext} context
- * @returns {{open: () => Promise<void>, taskSnippets: (value: string, title: string) => Promise<{link: string | null, iframe: string | null, element: string}>}}
+ * @returns {{open: () => Promise<void>, taskSnippets: (value: string, title: string, readers?: Readers) => Promise<{link: string | null, iframe: string | null, element: string}>}}
  */
 export function shareDialog(dialog, context) {
+  /** What readers may do (the options, kept while the page is open; edit: null until first set, then the scene's). */
+  const readers = { controls: true, text: false, edit: /** @type {boolean | null} */ (null), leave: false };
   const doc = dialog.ownerDocument;
   const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
     Object.assign(doc.createElement(tag), props);
@@ -79,8 +106,9 @@ export function shareDialog(dialog, context) {
    * page has an address, and the element.
    * @param {string} value
    * @param {string} title
+   * @param {Readers} [who]   what readers may do (default: see the controls; an exercise says itself whether its points move)
    */
-  const taskSnippets = async (value, title) => {
+  const taskSnippets = async (value, title, who = { controls: true, text: false, edit: false, leave: false }) => {
     const lang = context.state().lang ?? context.i18n().lang;
     const hash = new URLSearchParams({ task: value, lang }).toString();
     const base = location.href.split('#')[0];
@@ -88,28 +116,43 @@ export function shareDialog(dialog, context) {
     const address = place().address;
     return {
       link: address ? `${base}#${hash}` : null,
-      iframe: address ? iframeSnippet(base, hash, title, true) : null,
-      element: taskElementSnippet(value, lang, script),
+      iframe: address ? iframeSnippet(base, hash, title, who) : null,
+      element: taskElementSnippet(value, lang, script, who),
     };
   };
 
   const open = async () => {
     const { stage, oneFile } = context;
-    const { t } = context.i18n();
+    const i18n = context.i18n();
+    const { t } = i18n;
     const where = place();
-    const state = context.state();
+    // (every reader of a snippet draws her own numbers: the seed stays out)
+    const state = { ...context.state(), seed: null };
     const hash = writeState(state);
     const base = location.href.split('#')[0];
-    // a figure's snippets are named after the figure, others after the scene
-    const title = stage.paper ? t(stage.paper.label) : t(stage.scene?.title ?? '');
+    const task = stage.task;
+    const lang = state.lang ?? i18n.lang;
+    // a figure's snippets are named after the figure, an exercise's after it, others after the scene
+    // (an exercise that draws its numbers is named without the numbers drawn here)
+    const written = task?.drawn?.from ?? task;
+    const title = written
+      ? say(undrawn(written.title, written), lang)
+      : stage.paper
+        ? t(stage.paper.label)
+        : t(stage.scene?.title ?? '');
     const { script, scriptNote } = await scriptOf();
     /** @type {HTMLElement[]} */
     const rows = [];
-    const editable = stage.editor.active;
+    // (an exercise says itself whether its points may be dragged)
+    const handles = stage.editor.sets.length > 0 && !task;
+    readers.edit ??= stage.editor.active;
+    const who = { ...readers, edit: handles && !!readers.edit, leave: !!task && readers.leave };
     const input = stage.input && linkableInput(stage.input) ? stage.input : null;
+    const value = task ? taskLink(task, (id) => builtInTask(id) !== null) : '';
+    const taskHash = new URLSearchParams({ task: value, lang }).toString();
     if (where.address) {
-      rows.push(field('share.link', 'share-link', `${base}#${hash}`));
-      rows.push(field('share.iframe', 'share-iframe', iframeSnippet(base, hash, title, editable)));
+      rows.push(field('share.link', 'share-link', `${base}#${task ? taskHash : hash}`));
+      rows.push(field('share.iframe', 'share-iframe', iframeSnippet(base, task ? taskHash : hash, title, who)));
     } else {
       rows.push(
         el('p', {
@@ -122,18 +165,31 @@ export function shareDialog(dialog, context) {
     const element = field(
       'share.element',
       'share-element',
-      elementSnippet(
-        /** @type {import('../scene.js').Scene} */ (stage.scene),
-        stage.params,
-        state.lang ?? context.i18n().lang,
-        script,
-        stage.paper,
-        state.camera,
-        { editable, input },
-      ),
+      task
+        ? taskElementSnippet(value, lang, script, who)
+        : elementSnippet(
+            /** @type {import('../scene.js').Scene} */ (stage.scene),
+            stage.params,
+            lang,
+            script,
+            stage.paper,
+            state.camera,
+            { input, readers: who },
+          ),
       scriptNote,
     );
     rows.push(element);
+    // an exercise as a file the course system records: SCORM 1.2, SCORM 2004, H5P
+    if (task)
+      rows.push(
+        packageButtons(
+          doc,
+          context.i18n,
+          () => [/** @type {import('../task/format.js').Task} */ (written)],
+          () => ({ oneFile, embedScript: context.embedScript, lang, readers: who, title }),
+          'share',
+        ),
+      );
     // an edit too large for a link is in none of the snippets: say so
     if (stage.input && !input)
       rows.push(
@@ -193,6 +249,7 @@ export function shareDialog(dialog, context) {
     dialog.replaceChildren(
       el('h2', { textContent: t('share.title') }),
       el('p', { textContent: t('share.intro') }),
+      options(i18n, handles, !!task),
       ...rows,
       onefileRow,
       exercise,
@@ -215,47 +272,56 @@ export function shareDialog(dialog, context) {
    */
   const field = (label, id, value, note) => {
     const { t } = context.i18n();
-    const wrap = el('div', { className: 'share-row' });
-    const area = el('textarea', { id, rows: 3, readOnly: true, spellcheck: false, value });
-    const copy = el('button', { type: 'button', textContent: t('share.copy') });
-    copy.setAttribute('aria-label', t('share.copyWhat', { what: t(label) }));
-    const done = el('span', { className: 'share-done' });
-    done.setAttribute('aria-live', 'polite');
-    copy.addEventListener('click', async () => {
-      area.select();
-      let copied = false;
-      try {
-        // a frame whose page does not allow clipboard-write: straight to the old way (the
-        // Clipboard API would log a policy violation there)
-        const policy = /** @type {any} */ (doc).permissionsPolicy ?? /** @type {any} */ (doc).featurePolicy;
-        if (policy?.allowsFeature?.('clipboard-write') === false || !navigator.clipboard)
-          throw new Error('no clipboard');
-        await navigator.clipboard.writeText(area.value);
-        copied = true;
-      } catch {
-        copied = doc.execCommand?.('copy') ?? false;
-      }
-      // a sandboxed frame may refuse both: the text stays selected for Ctrl+C
-      done.textContent = t(copied ? 'share.copied' : 'share.selectCopy');
-    });
-    wrap.append(el('label', { htmlFor: id, textContent: t(label) }), area, copy, done);
-    if (note) wrap.append(el('p', { className: 'share-note', textContent: note }));
-    return wrap;
+    return copyField(doc, t, { label: t(label), id, value, note });
+  };
+
+  /**
+   * What readers may do: a checkbox each (the points only where the scene has them, Leave only
+   * on an exercise); a change makes the snippets again, the keyboard staying on the checkbox.
+   * @param {import('../i18n/index.js').Translator} i18n
+   * @param {boolean} handles
+   * @param {boolean} exercise
+   */
+  const options = ({ t }, handles, exercise) => {
+    const box = el('fieldset', { className: 'share-readers' });
+    box.append(el('legend', { textContent: t('course.readers') }));
+    const offered = /** @type {Array<keyof typeof readers>} */ ([
+      ...(handles ? ['edit'] : []),
+      'controls',
+      'text',
+      ...(exercise ? ['leave'] : []),
+    ]);
+    for (const key of offered) {
+      const name = `share-reader-${key}`;
+      const input = el('input', { type: 'checkbox', name, id: name, checked: !!readers[key] });
+      input.addEventListener('change', () => {
+        readers[key] = input.checked;
+        open().then(() => /** @type {HTMLElement | null} */ (dialog.querySelector(`[name="${name}"]`))?.focus());
+      });
+      const row = el('label', { className: 'share-reader', htmlFor: name });
+      row.append(input, ` ${t(`course.reader.${key}`)}`);
+      box.append(row);
+    }
+    return box;
   };
 
   return { open, taskSnippets };
 }
 
-/** A <ruled-view> showing an exercise (its link value), after the script that defines the element. */
+/**
+ * A <ruled-view> showing an exercise (its link value), after the script that defines the element;
+ * `readers`: what readers may do there (default: see the controls).
+ */
 export function taskElementSnippet(
   /** @type {string} */ value,
   /** @type {string} */ lang,
   /** @type {{src: string, module?: boolean}} */ script,
+  /** @type {Readers} */ readers = { controls: true, text: false, edit: false, leave: false },
 ) {
   const tag = script.module
     ? `<script type="module" src="${attr(script.src)}"></script>`
     : `<script defer src="${attr(script.src)}"></script>`;
-  return `${tag}\n<ruled-view task="${attr(value)}" lang="${attr(lang)}" controls height="640"></ruled-view>`;
+  return `${tag}\n<ruled-view task="${attr(value)}" lang="${attr(lang)}"${attributes(readers)} height="640"></ruled-view>`;
 }
 
 /** Text for an HTML attribute value in double quotes. */
@@ -265,18 +331,18 @@ const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g,
 const plainTitle = (/** @type {string} */ s) => s.replace(/[_^]\{?([^}]*)\}?/g, '$1');
 
 /**
- * An <iframe> of this page in embed mode, with controls (and `edit`: its handles can be dragged).
- * Sized by attributes, not a style attribute: a course page's Content-Security-Policy
- * (style-src 'self') refuses inline styles.
+ * An <iframe> of this page in embed mode, with what readers may do there (the controls, dragging
+ * the handles, the explanation, leaving an exercise). Sized by attributes, not a style
+ * attribute: a course page's Content-Security-Policy (style-src 'self') refuses inline styles.
  */
 export function iframeSnippet(
   /** @type {string} */ base,
   /** @type {string} */ hash,
   /** @type {string} */ title,
-  editable = false,
+  /** @type {Readers} */ readers = { controls: true, text: false, edit: false, leave: false },
 ) {
-  const rest = hash.replace(/^embed&?|(^|&)(controls|edit)(?=&|$)/g, '').replace(/^&/, '');
-  const src = `${base}#embed&controls&${editable ? 'edit&' : ''}${rest}`;
+  const rest = hash.replace(/^embed&?|(^|&)(controls|edit|text|leave)(?=&|$)/g, '').replace(/^&/, '');
+  const src = `${base}#${['embed', ...flags(readers), rest].filter(Boolean).join('&')}`;
   return `<iframe src="${attr(src)}" title="${attr(plainTitle(title))}" width="100%" height="560" frameborder="0" allow="fullscreen" loading="lazy"></iframe>`;
 }
 
@@ -292,8 +358,8 @@ export function iframeSnippet(
  *   one-file embed script (a classic script, loads from anywhere) or the module `ruledlab/view`
  * @param {import('../paper.js').PaperPreset | null} [paper]
  * @param {number[] | null} [camera]   yaw, pitch, distance, target x, y, z
- * @param {{editable?: boolean, input?: import('../scene.js').Input | null}} [edit]   whether readers
- *   may drag the handles, and the edit of the input to show
+ * @param {{input?: import('../scene.js').Input | null, readers?: Readers}} [edit]   the edit of the
+ *   input to show, and what readers may do (default: see the controls)
  */
 export function elementSnippet(scene, params, lang, script, paper = null, camera = null, edit = {}) {
   /** @type {import('../scene.js').Params} */
@@ -309,6 +375,6 @@ export function elementSnippet(scene, params, lang, script, paper = null, camera
     ? `<script type="module" src="${attr(script.src)}"></script>`
     : `<script defer src="${attr(script.src)}"></script>`;
   const input = edit.input ? ` input="${attr(encodeInput(edit.input))}"` : '';
-  const editable = edit.editable ? ' editable' : '';
-  return `${tag}\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}"${view}${input} lang="${attr(lang)}" controls${editable} height="560"></ruled-view>`;
+  const readers = edit.readers ?? { controls: true, text: false, edit: false, leave: false };
+  return `${tag}\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}"${view}${input} lang="${attr(lang)}"${attributes({ ...readers, leave: false })} height="560"></ruled-view>`;
 }

@@ -24,6 +24,7 @@ export class ExerciseHost {
       startOver: () => this.start(),
       showSolution: () => this.solve(),
       leave: options.onLeaveTask ? () => options.onLeaveTask?.() : null,
+      mayLeave: () => options.mayLeaveTask?.() ?? true,
       report: (type, report) => {
         if (type === 'solved') stage.announcer.say(stage.i18n.t('task.solved'));
         options.onTask?.(type, report);

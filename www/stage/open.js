@@ -12,6 +12,7 @@ import { copyInput, fitsSets } from '../edit/input.js';
 import { builtInTask } from '../task/builtin.js';
 import { taskFromLink } from '../task/format.js';
 import { fitTask } from '../task/check.js';
+import { drawTask, randomSeed } from '../task/draw.js';
 import { taskErrorText } from '../task/words.js';
 
 /**
@@ -23,6 +24,8 @@ import { taskErrorText } from '../task/words.js';
  * @property {(scene: import('../scene.js').Scene) => import('../scene.js').Params} [progress]   the reader's
  *   parameters in the exercise, read for its scene (it keeps those it lets change)
  * @property {import('../scene.js').Input | null} [taskInput]   the reader's edit in the exercise
+ * @property {number | null} [seed]   the seed of the exercise's drawn numbers (none: a new one)
+ * @property {AttemptOf} [attempt]   what the reader did in it
  * @property {import('../paper.js').PaperPreset | null} [paper]
  * @property {number[] | null} [camera]
  * @property {import('../scene.js').Input | null} [input]
@@ -31,6 +34,13 @@ import { taskErrorText } from '../task/words.js';
  * @property {import('../stage.js').Notes} [notes]   values that were not used, said in the view
  * @property {boolean} [autoplay]
  * @property {'link' | 'element'} [source]   where the request came from (the notes say "the link" or "the element")
+ */
+
+/**
+ * What the reader did in an exercise (task/attempt.js), or a function that finds it for the
+ * exercise once read (the page: the attempt this browser kept); used only where its seed is the
+ * seed the exercise is drawn with.
+ * @typedef {import('../task/attempt.js').Attempt | ((task: import('../task/format.js').Task) => import('../task/attempt.js').Attempt | null) | null} AttemptOf
  */
 
 /**
@@ -48,6 +58,8 @@ export async function openView(stage, request) {
         input: request.taskInput ?? null,
         camera: request.camera ?? null,
         notes,
+        seed: request.seed ?? null,
+        attempt: request.attempt ?? null,
       });
       return notes;
     } catch (e) {
@@ -72,18 +84,23 @@ export async function openView(stage, request) {
  * in the stage's language by task/words.js) where it cannot be read or does not fit its scene.
  * @param {import('../stage.js').Stage} stage
  * @param {string | import('../task/format.js').Task} value   a built-in id, a "j." link value, or a Task
- * @param {{params?: (scene: import('../scene.js').Scene) => import('../scene.js').Params, input?: import('../scene.js').Input | null, camera?: number[] | null, notes?: import('../stage.js').Notes}} [progress]
- *   the reader's parameters (read for the exercise's scene), edit, camera; notes to show
+ * @param {{params?: (scene: import('../scene.js').Scene) => import('../scene.js').Params, input?: import('../scene.js').Input | null, camera?: number[] | null, notes?: import('../stage.js').Notes, seed?: number | null, attempt?: AttemptOf}} [progress]
+ *   the reader's parameters (read for the exercise's scene), edit, camera; notes to show; the
+ *   seed of the numbers drawn (none: a new one) and what she did (answers, hints, checks)
  */
 export async function openExercise(stage, value, progress = {}) {
-  const task = typeof value === 'string' ? taskFromLink(value, builtInTask) : value;
+  const read = typeof value === 'string' ? taskFromLink(value, builtInTask) : value;
+  const kept = typeof progress.attempt === 'function' ? progress.attempt(read) : (progress.attempt ?? null);
+  const task = drawTask(read, progress.seed ?? kept?.seed ?? read.drawn?.seed ?? randomSeed());
+  // the attempt belongs to these numbers (or the exercise draws none)
+  const attempt = kept && (kept.seed ?? null) === (task.drawn?.seed ?? null) ? kept : null;
   const { t, format, lang } = stage.i18n;
   const scene = fitTask(task, SCENES, (params, input) => {
     const s = /** @type {import('../scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
     return s.create(withChoices(s, { ...task.params, ...params }), { t, format, lang, ...(input ? { input } : {}) });
   });
-  const { params, ...rest } = progress;
-  await stage.openTask(task, scene, { ...rest, params: params?.(scene) ?? {} });
+  const { params, seed: _, attempt: __, ...rest } = progress;
+  await stage.openTask(task, scene, { ...rest, attempt, params: params?.(scene) ?? {} });
 }
 
 /**
@@ -124,7 +141,7 @@ export async function openScene(stage, scene, params, options) {
  * @param {import('../stage.js').Stage} stage
  * @param {import('../task/format.js').Task | null} task
  * @param {import('../scene.js').Scene | null} scene
- * @param {{params?: import('../scene.js').Params, input?: import('../scene.js').Input | null, camera?: number[] | null, notes?: import('../stage.js').Notes}} state
+ * @param {{params?: import('../scene.js').Params, input?: import('../scene.js').Input | null, camera?: number[] | null, notes?: import('../stage.js').Notes, attempt?: Partial<import('../task/panel.js').PanelAttempt> | null}} state
  */
 export async function openTask(stage, task, scene, state) {
   if (!task || !scene) {
@@ -144,7 +161,7 @@ export async function openTask(stage, task, scene, state) {
     { ...withChoices(scene, task.params), ...kept },
     { camera: state.camera ?? null, input, notes: state.notes ?? [], task: true },
   );
-  stage.exercise.panel.show(task);
+  stage.exercise.panel.show(task, state.attempt ?? null);
   stage.edit.show();
 }
 

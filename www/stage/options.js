@@ -13,7 +13,8 @@
  * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input', ended: boolean}) => void} [onChange]
  * @property {(type: 'check' | 'solved', report: import('../task/panel.js').TaskReport) => void} [onTask]
  *   an exercise was checked, or solved
- * @property {() => void} [onLeaveTask]   the reader leaves the exercise (the page; an element has no Leave)
+ * @property {() => void} [onLeaveTask]   the reader leaves the exercise (the page; an element with `leave`)
+ * @property {() => boolean} [mayLeaveTask]   whether Leave is offered now (a page in a frame: only where allowed)
  * @property {(error: unknown, message: string) => void} [onError]   with the sentence shown
  * @property {(built: import('../scene.js').Built) => void} [onBuilt]
  */

@@ -42,26 +42,29 @@ const LINES_SOLUTION =
 const RAW = [
   {
     id: 'striction-accuracy',
-    title: { en: 'How many rulings for 10⁻³?', de: 'Wie viele Erzeugende für 10⁻³?' },
+    title: { en: 'How many rulings for {tol}?', de: 'Wie viele Erzeugende für {tol}?' },
     prompt: {
-      en: 'The striction polygon m_i converges to the exact striction curve with order 2 (Proposition 2): doubling the number of rulings N divides its error by about 4. Choose N so that the polygon is within 10⁻³ of the exact curve at every interior ruling of the quartic surface (m_i exists only there). The readout shows the error and the measured order.',
-      de: 'Das Kehlpolygon m_i konvergiert mit der Ordnung 2 gegen die exakte Kehllinie (Satz 2): Eine Verdopplung der Zahl N der Erzeugenden teilt seinen Fehler etwa durch 4. Wählen Sie N so, dass das Polygon an jeder inneren Erzeugenden der quartischen Fläche (nur dort gibt es m_i) höchstens 10⁻³ von der exakten Kehllinie entfernt ist. Die Messwerte zeigen den Fehler und die gemessene Ordnung.',
+      en: 'The striction polygon m_i converges to the exact striction curve with order 2 (Proposition 2): doubling the number of rulings N divides its error by about 4. Starting from N = {n}, choose N so that the polygon is within {tol} of the exact curve at every interior ruling of the quartic surface (m_i exists only there). The readout shows the error and the measured order.',
+      de: 'Das Kehlpolygon m_i konvergiert mit der Ordnung 2 gegen die exakte Kehllinie (Satz 2): Eine Verdopplung der Zahl N der Erzeugenden teilt seinen Fehler etwa durch 4. Wählen Sie, ausgehend von N = {n}, N so, dass das Polygon an jeder inneren Erzeugenden der quartischen Fläche (nur dort gibt es m_i) höchstens {tol} von der exakten Kehllinie entfernt ist. Die Messwerte zeigen den Fehler und die gemessene Ordnung.',
     },
     scene: 'striction',
-    params: { surface: 'quartic', n: 12, exact: true, normals: false },
+    // every student her own start and tolerance (task/draw.js); the check is the core's at her N
+    draw: { n: { from: 8, to: 16 }, tol: { list: [2e-3, 1e-3, 5e-4] } },
+    params: { surface: 'quartic', n: { drawn: 'n' }, exact: true, normals: false },
     change: ['n'],
-    goal: [{ value: 'readout.midpointError', below: 1e-3 }],
+    goal: [{ value: 'readout.midpointError', below: { drawn: 'tol' } }],
     hints: [
       {
-        en: 'At N = 12 the error is about 0.017: it has to shrink about 17-fold.',
-        de: 'Bei N = 12 ist der Fehler etwa 0,017: Er muss etwa auf ein Siebzehntel schrumpfen.',
+        en: 'Read the error at N = {n} in the readout, and divide it by {tol}: that is the factor by which it has to shrink.',
+        de: 'Lesen Sie den Fehler bei N = {n} in den Messwerten ab und teilen Sie ihn durch {tol}: So viel kleiner muss er werden.',
       },
       {
-        en: 'With order 2 the error falls like 1/N² (strictly, like the square of the spacing, 1/(N − 1)²): N − 1 must grow by a factor of about √17 ≈ 4.1, from 11 to about 46.',
-        de: 'Bei Ordnung 2 fällt der Fehler wie 1/N² (genau: wie das Quadrat der Schrittweite, 1/(N − 1)²): N − 1 muss etwa um den Faktor √17 ≈ 4,1 wachsen, von 11 auf etwa 46.',
+        en: 'With order 2 the error falls like 1/N² (strictly, like the square of the spacing, 1/(N − 1)²): N − 1 must grow by about the square root of that factor. From N = 12, for 10⁻³: the error 0.017 must shrink 17-fold, so N − 1 grows by √17 ≈ 4.1, from 11 to about 46.',
+        de: 'Bei Ordnung 2 fällt der Fehler wie 1/N² (genau: wie das Quadrat der Schrittweite, 1/(N − 1)²): N − 1 muss etwa um die Wurzel dieses Faktors wachsen. Von N = 12 aus, für 10⁻³: Der Fehler 0,017 muss auf ein Siebzehntel schrumpfen, also wächst N − 1 um √17 ≈ 4,1, von 11 auf etwa 46.',
       },
     ],
-    solution: { params: { n: 50 } },
+    // (within every tolerance drawn: about 2·10⁻⁴ at N = 100)
+    solution: { params: { n: 100 } },
   },
   {
     id: 'torsal-pair',
@@ -140,21 +143,25 @@ const RAW = [
     id: 'chaikin-count',
     title: { en: 'Count Chaikin’s points', de: 'Chaikins Punkte zählen' },
     prompt: {
-      en: 'Chaikin’s corner cutting replaces each edge of an open polygon by two points, at ¼ and ¾ of it. Starting from these 8 control points, how many points does the polygon have after 3 steps?',
-      de: 'Chaikins Eckenabschneiden ersetzt jede Kante eines offenen Polygons durch zwei Punkte bei ¼ und ¾ ihrer Länge. Wie viele Punkte hat das Polygon nach 3 Schritten, ausgehend von diesen 8 Kontrollpunkten?',
+      en: 'Chaikin’s corner cutting replaces each edge of an open polygon by two points, at ¼ and ¾ of it. Starting from these 8 control points, how many points does the polygon have after {steps} steps?',
+      de: 'Chaikins Eckenabschneiden ersetzt jede Kante eines offenen Polygons durch zwei Punkte bei ¼ und ¾ ihrer Länge. Wie viele Punkte hat das Polygon nach {steps} Schritten, ausgehend von diesen 8 Kontrollpunkten?',
     },
     scene: 'curves',
-    params: { scheme: 'chaikin', steps: 3, closed: false, levels: true },
+    // every student her own number of steps; the count the check compares with is the core's
+    draw: { steps: { from: 2, to: 4 } },
+    params: { scheme: 'chaikin', steps: { drawn: 'steps' }, closed: false, levels: true },
     change: [],
     hide: ['curves.readout.points'],
-    answers: [{ id: 'count', kind: 'number', label: { en: 'points after 3 steps', de: 'Punkte nach 3 Schritten' } }],
+    answers: [
+      { id: 'count', kind: 'number', label: { en: 'points after {steps} steps', de: 'Punkte nach {steps} Schritten' } },
+    ],
     // (a count: 49.6 is not one)
     goal: [{ answer: 'count', near: { value: 'curves.readout.points' }, within: 0.001 }],
     hints: [
       { en: 'An open polygon of n points has n − 1 edges.', de: 'Ein offenes Polygon mit n Punkten hat n − 1 Kanten.' },
       { en: 'After one step: 2 · (8 − 1) = 14 points.', de: 'Nach einem Schritt: 2 · (8 − 1) = 14 Punkte.' },
     ],
-    solution: { answers: { count: 50 } },
+    solution: { answers: { count: { value: 'curves.readout.points' } } },
   },
   {
     id: 'coupled-strip',
@@ -311,11 +318,14 @@ const RAW = [
       de: 'Der Drall des hyperbolischen Paraboloids',
     },
     prompt: {
-      en: 'For the hyperbolic paraboloid a(u) = (u, 0, 0), e(u) = (0, 1, u), compute the distribution parameter δ(u) and type it.',
-      de: 'Berechnen Sie für das hyperbolische Paraboloid a(u) = (u, 0, 0), e(u) = (0, 1, u) den Drall δ(u) und geben Sie ihn ein.',
+      en: 'For the hyperbolic paraboloid z = {k}·xy, the ruled surface a(u) + v·e(u) with a(u) = (u, 0, 0), e(u) = (0, 1, {k}·u), compute the distribution parameter δ(u) and type it (you may write a for {k}).',
+      de: 'Berechnen Sie für das hyperbolische Paraboloid z = {k}·xy, die Regelfläche a(u) + v·e(u) mit a(u) = (u, 0, 0), e(u) = (0, 1, {k}·u), den Drall δ(u) und geben Sie ihn ein (für {k} dürfen Sie a schreiben).',
     },
     scene: 'formula',
-    params: { preset: 'hyperbolic-paraboloid', tool: 'striction' },
+    // every student her own factor k (the formula field ez is a·u, a the drawn k): the exact δ(u)
+    // the check compares with is the core's for it
+    draw: { k: { list: [-3, -2, 2, 3] } },
+    params: { preset: 'hyperbolic-paraboloid', tool: 'striction', ez: 'a*u', a: { drawn: 'k' } },
     change: [],
     hide: ['readout.meanDelta'],
     answers: [{ id: 'delta', kind: 'function', label: { en: 'δ(u)', de: 'δ(u)' } }],
@@ -326,11 +336,11 @@ const RAW = [
         de: 'Für jede Richtung e(u) gilt δ = det(a′, e, e′) · (e·e) / |e × e′|².',
       },
       {
-        en: 'Here det(a′, e, e′) = 1 and e × e′ = (1, 0, 0).',
-        de: 'Hier ist det(a′, e, e′) = 1 und e × e′ = (1, 0, 0).',
+        en: 'Here det(a′, e, e′) = {k} and e × e′ = ({k}, 0, 0).',
+        de: 'Hier ist det(a′, e, e′) = {k} und e × e′ = ({k}, 0, 0).',
       },
     ],
-    solution: { answers: { delta: '1 + u^2' } },
+    solution: { answers: { delta: '(1 + a^2*u^2)/a' } },
   },
   {
     id: 'straight-striction',

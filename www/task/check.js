@@ -8,7 +8,8 @@ import { evaluateFormulas } from '../../pkg/ruledlab.js';
 import { readValue, serialize } from '../scene.js';
 import { decodeInput, fitsSets } from '../edit/input.js';
 import { HIDE_WORDS, TaskError } from './format.js';
-import { TASK_SAMPLES } from '../limits.js';
+import { TASK_SAMPLES, MAX_TASK_CHECKED_DRAWS } from '../limits.js';
+import { drawChoices } from './draw.js';
 
 /**
  * @typedef {import('./format.js').Task} Task
@@ -24,6 +25,7 @@ import { TASK_SAMPLES } from '../limits.js';
  * @property {number} value    the value it is about (for "matches": the largest distance found); NaN when there is none
  * @property {number} target   what it is compared with
  * @property {number} miss     by how much it misses (0 when it holds)
+ * @property {-1 | 0 | 1} side  which way it misses: 1 too large, −1 too small (0 when it holds or there is no value)
  * @property {unknown} [error] why there is no value (an answer not given, a formula the core refused)
  * @property {number} [at]     "matches": where the typed formula is farthest from the exact one (u)
  */
@@ -105,11 +107,11 @@ export function unreadable(outcome) {
  */
 export function checkGoal(task, built, answers, state) {
   const values = measuresOf(built);
-  const of = (/** @type {number | {value: string}} */ b) =>
-    typeof b === 'number' ? b : (values[b.value] ?? Number.NaN);
+  const of = (/** @type {import('./format.js').Bound} */ b) =>
+    typeof b === 'number' ? b : 'value' in b ? (values[b.value] ?? Number.NaN) : Number.NaN;
   const outcomes = task.goal.map((condition) => {
     /** @type {Outcome} */
-    const outcome = { condition, holds: false, value: Number.NaN, target: Number.NaN, miss: Number.NaN };
+    const outcome = { condition, holds: false, value: Number.NaN, target: Number.NaN, miss: Number.NaN, side: 0 };
     try {
       if (condition.matches) return matches(outcome, answers, state);
       if (condition.value) outcome.value = values[condition.value] ?? Number.NaN;
@@ -135,11 +137,18 @@ export function checkGoal(task, built, answers, state) {
         outcome.holds = off <= within;
         outcome.miss = outcome.holds ? 0 : off - within;
       }
+      if (!outcome.holds)
+        outcome.side =
+          condition.below !== undefined ? 1 : condition.above !== undefined ? -1 : x > outcome.target ? 1 : -1;
     } catch (e) {
       outcome.error = e;
     }
     // a value that is not a number (NaN: undefined here) never satisfies a condition
-    if (!Number.isFinite(outcome.value) || !Number.isFinite(outcome.target)) outcome.holds = false;
+    if (!Number.isFinite(outcome.value) || !Number.isFinite(outcome.target)) {
+      outcome.holds = false;
+      outcome.side = 0;
+    }
+    if (outcome.holds) outcome.side = 0;
     return outcome;
   });
   return { outcomes, solved: outcomes.every((o) => o.holds) };
@@ -219,6 +228,23 @@ export function fitTask(task, scenes, compute) {
       if (read.note && p.type !== 'select') throw new TaskError('task.error.badParam', { key: k, where });
     }
   };
+  // a drawn parameter: every value it can take must be one the scene takes (of a long range, its
+  // ends), and a whole number where the control takes whole numbers (N rulings, steps)
+  for (const [k, name] of Object.entries(task.drawnParams)) {
+    const draw = task.draw[name];
+    const p = scene.params.find((q) => q.key === k);
+    const all = 'list' in draw ? draw.list : drawChoices(draw);
+    const candidates = all.length <= MAX_TASK_CHECKED_DRAWS ? all : [all[0], all[all.length - 1]];
+    const whole = p?.type === 'range' && Number.isInteger(p.step ?? 1) && Number.isInteger(p.min ?? 0);
+    const wholeDraw = 'list' in draw || (Number.isInteger(draw.from) && Number.isInteger(draw.step));
+    for (const value of whole && !wholeDraw
+      ? [...candidates, draw.from + /** @type {any} */ (draw).step]
+      : candidates) {
+      const read = p ? readValue(p, serialize(p, value)) : null;
+      if (!read || read.note || read.value !== value || (whole && !Number.isInteger(value)))
+        throw new TaskError('task.error.drawnParam', { key: k, value: String(value) });
+    }
+  }
   known(task.params, 'params');
   if (task.solution?.params) known(task.solution.params, 'solution.params');
   for (const c of task.change)
@@ -247,11 +273,17 @@ export function fitTask(task, scenes, compute) {
     if (!keys.includes(h) && !values.has(h) && !shown.has(h) && !HIDE_WORDS.includes(h))
       throw new TaskError('task.error.unknownValue', { value: h, where: 'hide' });
   task.goal.forEach((c, i) => {
-    const named = [c.value, ...[c.below, c.above, c.near].map((b) => (typeof b === 'object' ? b.value : undefined))];
+    const named = [
+      c.value,
+      ...[c.below, c.above, c.near].map((b) => (typeof b === 'object' && 'value' in b ? b.value : undefined)),
+    ];
     for (const v of named)
       if (v !== undefined && !values.has(v))
         throw new TaskError('task.error.unknownValue', { value: v, where: `goal[${i}]` });
     if (c.matches && !scene.exact) throw new TaskError('task.error.noExact', { scene: scene.id });
   });
+  for (const [k, a] of Object.entries(task.solution?.answers ?? {}))
+    if (a && typeof a === 'object' && !Array.isArray(a) && !values.has(a.value))
+      throw new TaskError('task.error.unknownValue', { value: a.value, where: `solution.answers.${k}` });
   return scene;
 }

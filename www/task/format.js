@@ -12,8 +12,11 @@
 //   "answers": [{ "id": "s", "kind": "curve", "label": { "en": "s(u)" } }],
 //   "goal": [{ "value": "striction.minAbsDelta", "below": 0.01 },
 //            { "answer": "s", "matches": "striction", "within": 1e-6 }],
-//   "hints": [{ "en": "…" }], "solution": { "params": {…}, "input": "…", "answers": { "s": ["u", "0", "0"] } }
+//   "hints": [{ "en": "…" }], "solution": { "params": {…}, "input": "…", "answers": { "s": ["u", "0", "0"] } },
+//   "draw": { "k": { "from": 2, "to": 4 }, "tol": { "list": [0.002, 0.001] } }
 // }
+// Drawn numbers (task/draw.js): a parameter's value `{ "drawn": "k" }`, a bound `{ "drawn": "tol" }`
+// and "{k}" in the texts take the number drawn for the attempt from its seed.
 
 import {
   MAX_TASK,
@@ -31,6 +34,10 @@ import {
   MAX_TASK_TEXT,
   MAX_TASK_TITLE,
   MAX_TEXT_PARAM,
+  MAX_TASK_DRAWS,
+  MAX_DRAW_LIST,
+  MAX_DRAW_CHOICES,
+  MAX_SEED,
 } from '../limits.js';
 
 /** What `hide` may name besides parameters and readouts: the claims under the readout, the explanation. */
@@ -58,17 +65,30 @@ const LARGEST_NUMBER = MAX_TASK_NUMBER.toExponential().replace('+', '');
  * @typedef {object} Condition
  * @property {string} [value]     the value it is about
  * @property {string} [answer]    or the answer it is about
- * @property {number | {value: string}} [below]   holds when the value is below this (a number, or another value)
- * @property {number | {value: string}} [above]
- * @property {number | {value: string}} [near]    holds within `within` of this
+ * @property {Bound} [below]   holds when the value is below this (a number, another value, or a number drawn)
+ * @property {Bound} [above]
+ * @property {Bound} [near]    holds within `within` of this
  * @property {number} [within]
  * @property {'striction' | 'distribution'} [matches]   a typed curve or function against the exact one
  * @property {number} [samples]   at how many points (default 50)
  *
+ * A bound of a condition: a number, a value the scene computes, or a number drawn (until drawn).
+ * @typedef {number | {value: string} | {drawn: string}} Bound
+ *
+ * A number drawn per attempt: from a range (`step` 1 unless given) or from a list.
+ * @typedef {{from: number, to: number, step: number} | {list: Array<number | string>}} Draw
+ *
+ * What an attempt drew (task/draw.js): its seed, the numbers, and the exercise as written.
+ * @typedef {object} Drawn
+ * @property {number} seed
+ * @property {Record<string, number | string>} values
+ * @property {Task} from
+ *
  * @typedef {object} TaskState
  * @property {Record<string, number | string | boolean>} [params]
  * @property {string} [input]     an edit, as the link writes it (edit/input.js)
- * @property {Record<string, number | string | string[]>} [answers]
+ * @property {Record<string, number | string | string[] | {value: string}>} [answers]   a number
+ *   answer may be `{ value }`: what the scene computes in the solution's state
  *
  * An exercise.
  * @typedef {object} Task
@@ -76,7 +96,9 @@ const LARGEST_NUMBER = MAX_TASK_NUMBER.toExponential().replace('+', '');
  * @property {Words} title
  * @property {Words} prompt
  * @property {string} scene
- * @property {Record<string, number | string | boolean>} params
+ * @property {Record<string, number | string | boolean>} params   (a drawn one holds the first value
+ *   it can take until the exercise is drawn)
+ * @property {Record<string, string>} drawnParams   parameters whose value is drawn: the draw's name
  * @property {string | null} input
  * @property {string | null} camera
  * @property {string[]} change    parameter keys the reader may change, and "handles"
@@ -87,6 +109,8 @@ const LARGEST_NUMBER = MAX_TASK_NUMBER.toExponential().replace('+', '');
  * @property {Condition[]} goal
  * @property {Words[]} hints
  * @property {TaskState | null} solution
+ * @property {Record<string, Draw>} draw   numbers drawn per attempt, by name
+ * @property {Drawn | null} [drawn]   set once drawn (task/draw.js's drawTask)
  */
 
 const KEYS = [
@@ -105,6 +129,7 @@ const KEYS = [
   'goal',
   'hints',
   'solution',
+  'draw',
 ];
 
 /** An exercise that cannot be read: its message says where and why (in English; `details` for the page's language). */
@@ -139,6 +164,12 @@ const ENGLISH = /** @type {Record<string, string>} */ ({
   'task.error.noHandles': 'The scene "{scene}" has no points to move, so "handles" cannot be changed.',
   'task.error.unknownValue': 'The scene computes no value "{value}" (named in {where}).',
   'task.error.noExact': 'The scene "{scene}" has no exact curve to compare a typed formula with.',
+  'task.error.draw':
+    '"draw.{name}" must be {"from", "to"} with from ≤ to and a positive "step" (at most {max} values), or {"list": [...]} of 1 to {most} numbers.',
+  'task.error.notDrawn': '"{name}" (in {where}) is not a number the exercise draws.',
+  'task.error.drawnParam': 'The drawn value {value} of "{key}" is not one the scene takes.',
+  'task.error.seed': 'The seed must be a whole number from 0 to {max}.',
+  'task.error.badLink': 'The link does not hold an exercise.',
   'task.check.noAnswer': 'No answer yet.',
 });
 
@@ -190,10 +221,14 @@ function name(/** @type {unknown} */ x, /** @type {string} */ key) {
   return x;
 }
 
-/** The parameter values of a state: numbers, texts (a formula) and switches. */
-function params(/** @type {unknown} */ x, /** @type {string} */ key) {
+/**
+ * The parameter values of a state: numbers, texts (a formula), switches, and numbers drawn
+ * (`{ "drawn": name }`, where `draws` has them).
+ * @returns {Record<string, number | string | boolean | {drawn: string}>}
+ */
+function params(/** @type {unknown} */ x, /** @type {string} */ key, /** @type {Record<string, Draw>} */ draws = {}) {
   if (!isObject(x)) throw new TaskError('task.error.type', { key, what: 'an object of parameter values' });
-  /** @type {Record<string, number | string | boolean>} */
+  /** @type {Record<string, number | string | boolean | {drawn: string}>} */
   const out = {};
   const entries = Object.entries(/** @type {Record<string, unknown>} */ (x));
   if (entries.length > MAX_TASK_NAMES) throw new TaskError('task.error.count', { key, max: MAX_TASK_NAMES });
@@ -201,15 +236,84 @@ function params(/** @type {unknown} */ x, /** @type {string} */ key) {
     name(k, `${key}`);
     if (typeof v === 'number') out[k] = number(v, `${key}.${k}`);
     else if (typeof v === 'boolean') out[k] = v;
+    else if (isObject(v)) out[k] = drawnRef(v, `${key}.${k}`, draws);
     else out[k] = text(v, `${key}.${k}`, MAX_TEXT_PARAM);
   }
   return out;
 }
 
-/** A number condition's bound: a number or { value }. */
-function bound(/** @type {unknown} */ x, /** @type {string} */ key) {
+/** `{ "drawn": name }`, naming a number of `draws`. */
+function drawnRef(/** @type {unknown} */ x, /** @type {string} */ where, /** @type {Record<string, Draw>} */ draws) {
+  const o = /** @type {Record<string, unknown>} */ (x);
+  for (const k of Object.keys(o)) if (k !== 'drawn') throw new TaskError('task.error.unknownKey', { key: k, where });
+  const n = name(o.drawn, `${where}.drawn`);
+  if (!Object.hasOwn(draws, n)) throw new TaskError('task.error.notDrawn', { name: n, where });
+  return { drawn: n };
+}
+
+/** The numbers drawn per attempt: { name: { from, to, step? } | { list } }. */
+function readDraws(/** @type {unknown} */ x) {
+  if (x === undefined) return {};
+  if (!isObject(x)) throw new TaskError('task.error.type', { key: 'draw', what: 'an object of numbers drawn' });
+  const entries = Object.entries(/** @type {Record<string, unknown>} */ (x));
+  if (entries.length > MAX_TASK_DRAWS) throw new TaskError('task.error.count', { key: 'draw', max: MAX_TASK_DRAWS });
+  /** @type {Record<string, Draw>} */
+  const out = {};
+  for (const [k, v] of entries) {
+    name(k, 'draw');
+    const fail = () =>
+      new TaskError('task.error.draw', { name: k, max: MAX_DRAW_CHOICES.toLocaleString('en'), most: MAX_DRAW_LIST });
+    if (!isObject(v)) throw fail();
+    const o = /** @type {Record<string, unknown>} */ (v);
+    const keys = Object.keys(o);
+    if ('list' in o) {
+      if (keys.length !== 1 || !Array.isArray(o.list) || !o.list.length || o.list.length > MAX_DRAW_LIST) throw fail();
+      out[k] = {
+        list: o.list.map((e, i) =>
+          typeof e === 'number' ? number(e, `draw.${k}.list[${i}]`) : text(e, `draw.${k}.list[${i}]`, MAX_TASK_NAME),
+        ),
+      };
+      continue;
+    }
+    if (keys.some((key) => !['from', 'to', 'step'].includes(key)) || !('from' in o) || !('to' in o)) throw fail();
+    const from = number(o.from, `draw.${k}.from`);
+    const to = number(o.to, `draw.${k}.to`);
+    const step = o.step === undefined ? 1 : number(o.step, `draw.${k}.step`);
+    if (!(step > 0) || from > to || (to - from) / step + 1 > MAX_DRAW_CHOICES) throw fail();
+    out[k] = { from, to, step };
+  }
+  return out;
+}
+
+/**
+ * A seed as a link or an element's attribute writes it (null: none given), and the note that says
+ * it is not one (then a new one is drawn): "note.badSeed" or, for an element, "element.note.badSeed".
+ * @param {string | null | undefined} text
+ * @param {'note' | 'element.note'} [prefix]
+ * @returns {{seed: number | null, note: {key: string, note: string, vars: Record<string, string>} | null}}
+ */
+export function linkSeed(text, prefix = 'note') {
+  if (text === null || text === undefined) return { seed: null, note: null };
+  try {
+    return { seed: readSeed(text), note: null };
+  } catch {
+    return { seed: null, note: { key: 'task', note: `${prefix}.badSeed`, vars: { max: String(MAX_SEED) } } };
+  }
+}
+
+/** A seed of the drawn numbers as a link or a course system gives it (a text or a number); throws a TaskError. */
+export function readSeed(/** @type {unknown} */ x) {
+  const t = typeof x === 'number' ? String(x) : typeof x === 'string' ? x.trim() : '';
+  const n = /^\d{1,10}$/.test(t) ? Number(t) : Number.NaN;
+  if (!(n <= MAX_SEED)) throw new TaskError('task.error.seed', { max: MAX_SEED });
+  return n;
+}
+
+/** A number condition's bound: a number, { value } or { drawn }. */
+function bound(/** @type {unknown} */ x, /** @type {string} */ key, /** @type {Record<string, Draw>} */ draws) {
   if (isObject(x)) {
     const o = /** @type {Record<string, unknown>} */ (x);
+    if ('drawn' in o) return drawnRef(o, key, draws);
     for (const k of Object.keys(o))
       if (k !== 'value') throw new TaskError('task.error.unknownKey', { key: k, where: key });
     return { value: name(o.value, `${key}.value`) };
@@ -218,7 +322,12 @@ function bound(/** @type {unknown} */ x, /** @type {string} */ key) {
 }
 
 /** One condition of the goal. */
-function condition(/** @type {unknown} */ x, /** @type {number} */ index, /** @type {Answer[]} */ answers) {
+function condition(
+  /** @type {unknown} */ x,
+  /** @type {number} */ index,
+  /** @type {Answer[]} */ answers,
+  /** @type {Record<string, Draw>} */ draws,
+) {
   const fail = (/** @type {string} */ problem) => new TaskError('task.error.condition', { index: index + 1, problem });
   if (!isObject(x)) throw fail('it must be an object');
   const o = /** @type {Record<string, unknown>} */ (x);
@@ -234,10 +343,10 @@ function condition(/** @type {unknown} */ x, /** @type {number} */ index, /** @t
   }
   const tests = ['below', 'above', 'near', 'matches'].filter((k) => k in o);
   if (tests.length !== 1) throw fail('it has exactly one of "below", "above", "near" or "matches"');
-  if ('below' in o) c.below = bound(o.below, `goal[${index}].below`);
-  if ('above' in o) c.above = bound(o.above, `goal[${index}].above`);
+  if ('below' in o) c.below = bound(o.below, `goal[${index}].below`, draws);
+  if ('above' in o) c.above = bound(o.above, `goal[${index}].above`, draws);
   if ('near' in o) {
-    c.near = bound(o.near, `goal[${index}].near`);
+    c.near = bound(o.near, `goal[${index}].near`, draws);
     if (!('within' in o)) throw fail('"near" needs "within"');
   }
   if ('within' in o) {
@@ -270,13 +379,18 @@ function condition(/** @type {unknown} */ x, /** @type {number} */ index, /** @t
 /** The answers of a solution: numbers, or formulas (one text, or three). */
 function solutionAnswers(/** @type {unknown} */ x, /** @type {Answer[]} */ answers) {
   if (!isObject(x)) throw new TaskError('task.error.type', { key: 'solution.answers', what: 'an object' });
-  /** @type {Record<string, number | string | string[]>} */
+  /** @type {Record<string, number | string | string[] | {value: string}>} */
   const out = {};
   for (const [k, v] of Object.entries(/** @type {Record<string, unknown>} */ (x))) {
     const answer = answers.find((a) => a.id === k);
     if (!answer) throw new TaskError('task.error.unknownKey', { key: k, where: 'solution.answers' });
     const key = `solution.answers.${k}`;
-    if (answer.kind === 'number') out[k] = number(v, key);
+    if (answer.kind === 'number' && isObject(v)) {
+      const o = /** @type {Record<string, unknown>} */ (v);
+      for (const n of Object.keys(o))
+        if (n !== 'value') throw new TaskError('task.error.unknownKey', { key: n, where: key });
+      out[k] = { value: name(o.value, `${key}.value`) };
+    } else if (answer.kind === 'number') out[k] = number(v, key);
     else if (answer.kind === 'function') out[k] = text(v, key, MAX_TEXT_PARAM);
     else out[k] = list(v, key, 3).map((t, i) => text(t, `${key}[${i}]`, MAX_TEXT_PARAM));
   }
@@ -325,7 +439,8 @@ export function readTask(source) {
   });
   if (new Set(answers.map((a) => a.id)).size !== answers.length)
     throw new TaskError('task.error.type', { key: 'answers', what: 'answers with different ids' });
-  const goal = list(o.goal, 'goal', MAX_TASK_GOAL).map((c, i) => condition(c, i, answers));
+  const draws = readDraws(o.draw);
+  const goal = list(o.goal, 'goal', MAX_TASK_GOAL).map((c, i) => condition(c, i, answers, draws));
   if (!goal.length) throw new TaskError('task.error.missing', { key: 'goal[0]' });
   const names = (/** @type {unknown} */ v, /** @type {string} */ key) =>
     list(v ?? [], key, MAX_TASK_NAMES).map((n, i) => name(n, `${key}[${i}]`));
@@ -337,17 +452,33 @@ export function readTask(source) {
       if (!['params', 'input', 'answers'].includes(k))
         throw new TaskError('task.error.unknownKey', { key: k, where: 'solution' });
     solution = {
-      ...(s.params !== undefined ? { params: params(s.params, 'solution.params') } : {}),
+      ...(s.params !== undefined
+        ? { params: /** @type {Record<string, number | string | boolean>} */ (params(s.params, 'solution.params')) }
+        : {}),
       ...(s.input !== undefined ? { input: text(s.input, 'solution.input', MAX_TASK_INPUT) } : {}),
       ...(s.answers !== undefined ? { answers: solutionAnswers(s.answers, answers) } : {}),
     };
+  }
+  // a drawn parameter holds the first value it can take until the exercise is drawn (task/draw.js)
+  /** @type {Record<string, number | string | boolean>} */
+  const start = {};
+  /** @type {Record<string, string>} */
+  const drawnParams = {};
+  for (const [k, v] of Object.entries(o.params === undefined ? {} : params(o.params, 'params', draws))) {
+    if (typeof v !== 'object') start[k] = v;
+    else {
+      drawnParams[k] = v.drawn;
+      const d = draws[v.drawn];
+      start[k] = 'list' in d ? d.list[0] : d.from;
+    }
   }
   return {
     id: o.id,
     title: words(o.title, 'title', MAX_TASK_TITLE),
     prompt: words(o.prompt, 'prompt'),
     scene: name(o.scene, 'scene'),
-    params: o.params === undefined ? {} : params(o.params, 'params'),
+    params: start,
+    drawnParams,
     input: o.input === undefined ? null : text(o.input, 'input', MAX_TASK_INPUT),
     camera: o.camera === undefined ? null : text(o.camera, 'camera', MAX_TASK_CAMERA),
     change: names(o.change, 'change'),
@@ -356,19 +487,27 @@ export function readTask(source) {
     goal,
     hints: list(o.hints ?? [], 'hints', MAX_TASK_HINTS).map((h, i) => words(h, `hints[${i}]`)),
     solution,
+    draw: draws,
+    drawn: null,
   };
 }
 
-/** The exercise as JSON (what readTask reads back to the same Task). */
+/** The exercise as JSON (what readTask reads back to the same Task); a drawn one as it was written. */
 export function writeTask(/** @type {Task} */ task) {
-  const { input, camera, solution, ...rest } = task;
+  const { input, camera, solution, draw, drawn: _, drawnParams, params, ...rest } = task.drawn?.from ?? task;
+  const written = {
+    ...params,
+    ...Object.fromEntries(Object.entries(drawnParams ?? {}).map(([k, n]) => [k, { drawn: n }])),
+  };
   return JSON.stringify({
     ruledlab: 'exercise',
     version: 1,
     ...rest,
+    params: written,
     ...(input ? { input } : {}),
     ...(camera ? { camera } : {}),
     ...(solution ? { solution } : {}),
+    ...(Object.keys(draw ?? {}).length ? { draw } : {}),
   });
 }
 

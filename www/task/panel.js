@@ -1,10 +1,13 @@
 // The exercise in the stage's panel: its title and prompt, the reader's answer fields, Check (each
 // condition: holds or not, by how much it misses, in words; solved said in words and by a mark,
 // not by colour alone), up to three hints revealed in turn, the solution on request after a first
-// check, Start over, and Leave. All of it is text: an exercise's texts are never markup.
+// check, Start over, and Leave; the numbers drawn for this attempt and the checks made so far (the
+// attempt: task/attempt.js). All of it is text: an exercise's texts are never markup.
 import { say } from './format.js';
-import { checkGoal, unreadable } from './check.js';
+import { checkGoal, measuresOf, unreadable } from './check.js';
 import { describeCondition, outcomeText } from './words.js';
+import { drawnText } from './draw.js';
+import { MAX_TASK_HISTORY, TASK_HISTORY_SHOWN } from '../limits.js';
 
 /**
  * @typedef {import('./format.js').Task} Task
@@ -17,6 +20,7 @@ import { describeCondition, outcomeText } from './words.js';
  * @property {() => void} startOver      back to the exercise's start
  * @property {() => void} showSolution   the solution's state (parameters, edit)
  * @property {(() => void) | null} leave the page leaves the exercise (an element cannot)
+ * @property {() => boolean} [mayLeave]  whether Leave is offered now (an embed hides it unless allowed)
  * @property {(type: 'check' | 'solved', detail: TaskReport) => void} report
  *
  * What a check reports (the `task-check` and `task-solved` events, and a message to the page
@@ -30,6 +34,17 @@ import { describeCondition, outcomeText } from './words.js';
  * @property {Array<{holds: boolean, value: number | null, target: number | null}>} conditions
  *   (an answer condition's value and target are null: they would give the answer away)
  * @property {import('./check.js').Answers} answers
+ * @property {number | null} seed   the seed of the numbers drawn (null: the exercise draws none)
+ * @property {Record<string, number | string> | null} drawn   the numbers drawn, by name
+ *
+ * One check of an attempt: when (ms since 1970), how many conditions held, of how many.
+ * @typedef {{at: number, passed: number, of: number}} Check
+ *
+ * What the reader has done in an exercise: her answers, the hints shown, her checks.
+ * @typedef {object} PanelAttempt
+ * @property {import('./check.js').Answers} answers
+ * @property {number} hints
+ * @property {Check[]} checks
  */
 
 let serial = 0;
@@ -49,17 +64,30 @@ export class TaskPanel {
     this.hints = 0;
     this.checked = false;
     this.solved = false;
+    /** @type {Check[]} */
+    this.checks = [];
     this.id = `rl-task-${++serial}`;
   }
 
-  /** Shows an exercise (null: none), its answers empty, no hint shown. */
-  show(/** @type {Task | null} */ task) {
+  /**
+   * Shows an exercise (null: none): its answers empty and no hint shown, or as `attempt` left
+   * them (answers, hints shown, checks made).
+   * @param {Task | null} task
+   * @param {Partial<PanelAttempt> | null} [attempt]
+   */
+  show(task, attempt = null) {
     this.task = task;
-    this.answers = {};
-    this.hints = 0;
-    this.checked = false;
-    this.solved = false;
+    this.answers = structuredClone(attempt?.answers ?? {});
+    this.hints = Math.min(task?.hints.length ?? 0, attempt?.hints ?? 0);
+    this.checks = [...(attempt?.checks ?? [])].slice(-MAX_TASK_HISTORY);
+    this.checked = this.checks.length > 0;
+    this.solved = this.checks.some((c) => c.passed === c.of);
     this.render();
+  }
+
+  /** What the reader has done so far (a copy). @returns {PanelAttempt} */
+  attempt() {
+    return { answers: structuredClone(this.answers), hints: this.hints, checks: this.checks.map((c) => ({ ...c })) };
   }
 
   /** Builds the panel in the current language (answers typed so far stay). */
@@ -133,20 +161,15 @@ export class TaskPanel {
       disabled: !this.checked,
       title: this.checked ? '' : t('task.solutionAfterCheck'),
     });
-    solution.addEventListener('click', () => {
-      const answers = task.solution?.answers ?? {};
-      for (const [k, v] of Object.entries(answers)) this.answers[k] = Array.isArray(v) ? [...v] : String(v);
-      this.hooks.showSolution();
-      this.render();
-      this.check();
-    });
+    solution.addEventListener('click', () => this.solve());
     const again = el('button', { type: 'button', className: 'rl-task-again', textContent: t('task.startOver') });
     again.addEventListener('click', () => {
-      this.show(task);
+      // (the checks made so far stay: they are the attempt's record)
+      this.show(task, { checks: this.checks });
       this.hooks.startOver();
     });
     buttons.append(check, hint, solution, again);
-    if (this.hooks.leave) {
+    if (this.hooks.leave && (this.hooks.mayLeave?.() ?? true)) {
       const leave = el('button', { type: 'button', className: 'rl-task-leave', textContent: t('task.leave') });
       leave.addEventListener('click', () => this.hooks.leave?.());
       buttons.append(leave);
@@ -160,8 +183,63 @@ export class TaskPanel {
     results.setAttribute('aria-label', t('task.results'));
     const verdict = el('p', { className: 'rl-task-verdict', hidden: true });
     verdict.setAttribute('role', 'status');
-    this.box.replaceChildren(heading, prompt, answers, buttons, hints, results, verdict, held);
+    const drawn = drawnText(task, lang);
+    const numbers = el('p', {
+      className: 'rl-task-drawn',
+      textContent: drawn ? t('task.drawn', { values: drawn }) : '',
+      hidden: !drawn,
+    });
+    const history = el('div', { className: 'rl-task-history' });
+    this.box.replaceChildren(heading, prompt, numbers, answers, buttons, hints, results, verdict, history, held);
+    this.showChecks();
     if (this.checked) this.check(false);
+  }
+
+  /** The checks made so far, the latest first (a few; how many more there were). */
+  showChecks() {
+    const box = /** @type {HTMLElement | null} */ (this.box.querySelector('.rl-task-history'));
+    if (!box) return;
+    const { t, lang } = this.hooks.i18n();
+    const doc = this.box.ownerDocument;
+    box.hidden = this.checks.length === 0;
+    if (box.hidden) return box.replaceChildren();
+    const time = (/** @type {number} */ at) =>
+      new Date(at).toLocaleTimeString(lang, { hour: '2-digit', minute: '2-digit', second: '2-digit' });
+    const list = doc.createElement('ol');
+    list.reversed = true;
+    const shown = this.checks.slice(-TASK_HISTORY_SHOWN).reverse();
+    list.start = this.checks.length;
+    for (const c of shown)
+      list.append(
+        Object.assign(doc.createElement('li'), {
+          textContent:
+            c.passed === c.of
+              ? `✓ ${t('task.historySolved', { time: time(c.at) })}`
+              : t('task.historyEntry', { time: time(c.at), passed: c.passed, of: c.of }),
+        }),
+      );
+    const heading = Object.assign(doc.createElement('h4'), { textContent: t('task.history') });
+    const more = this.checks.length - shown.length;
+    box.replaceChildren(heading, list);
+    if (more > 0)
+      box.append(Object.assign(doc.createElement('p'), { textContent: t('task.historyMore', { count: more }) }));
+  }
+
+  /** The solution on screen, its answers filled in and checked. */
+  solve() {
+    const task = this.task;
+    if (!task?.solution) return null;
+    this.hooks.showSolution();
+    // a number the scene computes in the solution's state ({ value }) is read from what it built now
+    const values = measuresOf(this.hooks.state()?.built ?? null);
+    for (const [k, v] of Object.entries(task.solution.answers ?? {}))
+      this.answers[k] = Array.isArray(v)
+        ? [...v]
+        : typeof v === 'object'
+          ? String(Number((values[v.value] ?? Number.NaN).toPrecision(12)))
+          : String(v);
+    this.render();
+    return this.check();
   }
 
   /** Whether the exercise lets the reader change anything in the scene. */
@@ -263,8 +341,12 @@ export class TaskPanel {
         target: o.condition.answer && !o.condition.matches ? null : Number.isFinite(o.target) ? o.target : null,
       })),
       answers: structuredClone(this.answers),
+      seed: task.drawn?.seed ?? null,
+      drawn: task.drawn ? { ...task.drawn.values } : null,
     };
     if (announce) {
+      this.checks = [...this.checks, { at: Date.now(), passed, of: outcomes.length }].slice(-MAX_TASK_HISTORY);
+      this.showChecks();
       // where the panel runs below the screen (a phone), the verdict is brought into sight
       verdict.scrollIntoView({ block: 'nearest' });
       if (counted) this.hooks.report('check', report);

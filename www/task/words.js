@@ -6,6 +6,7 @@ import { say } from './format.js';
 import { plainRich } from '../ui/richtext.js';
 import { describeError } from '../ui/errors.js';
 import { superscript } from '../i18n/translate.js';
+import { ANSWER_CLOSE } from '../limits.js';
 
 /**
  * @typedef {import('./format.js').Task} Task
@@ -34,9 +35,10 @@ export function statedNumber(/** @type {number} */ x, /** @type {string} */ lang
   return `${mantissa.toLocaleString(lang, { maximumSignificantDigits: 6 }).replace('-', '−')}·${power}`;
 }
 
-/** The bound of a condition in words: a number, or another value's name. */
-function boundText(/** @type {number | {value: string}} */ b, /** @type {Translator} */ i18n) {
-  return typeof b === 'number' ? statedNumber(b, i18n.lang) : valueName(b.value, i18n);
+/** The bound of a condition in words: a number, another value's name, or the name of a number drawn. */
+function boundText(/** @type {import('./format.js').Bound} */ b, /** @type {Translator} */ i18n) {
+  if (typeof b === 'number') return statedNumber(b, i18n.lang);
+  return 'value' in b ? valueName(b.value, i18n) : `{${b.drawn}}`;
 }
 
 /** What a condition asks, in words. */
@@ -61,7 +63,7 @@ export function describeCondition(
   if (c.above !== undefined) return t('task.cond.above', { name, bound: boundText(c.above, i18n) });
   return t('task.cond.near', {
     name,
-    bound: boundText(/** @type {number | {value: string}} */ (c.near), i18n),
+    bound: boundText(/** @type {import('./format.js').Bound} */ (c.near), i18n),
     within: statedNumber(/** @type {number} */ (c.within), i18n.lang),
   });
 }
@@ -93,7 +95,15 @@ export function outcomeText(
     return t('task.out.error', { message: taskErrorText(error, i18n, field) });
   }
   const c = o.condition;
-  if (c.answer && !c.matches) return t(o.holds ? 'task.out.right' : 'task.out.notRight');
+  if (c.answer && !c.matches) {
+    if (o.holds) return t('task.out.right');
+    // which way it misses, and whether it is close — never by how much (that would give the answer)
+    if (!o.side) return t('task.out.notRight');
+    const close = Math.abs(o.value - o.target) <= ANSWER_CLOSE * Math.abs(o.target);
+    return t(`task.out.${o.side > 0 ? 'tooLarge' : 'tooSmall'}${close ? 'Close' : ''}`, {
+      share: format(ANSWER_CLOSE * 100),
+    });
+  }
   if (!Number.isFinite(o.value)) return t('task.out.undefined');
   if (c.matches) {
     if (o.value === Number.POSITIVE_INFINITY) return t('task.out.curveUndefined', { at: format(o.at ?? Number.NaN) });
@@ -102,7 +112,8 @@ export function outcomeText(
       at: format(o.at ?? Number.NaN),
     });
   }
-  return t(o.holds ? 'task.out.holds' : 'task.out.misses', { value: format(o.value), miss: format(o.miss) });
+  if (o.holds) return t('task.out.holds', { value: format(o.value) });
+  return t(o.side < 0 ? 'task.out.missesLow' : 'task.out.missesHigh', { value: format(o.value), miss: format(o.miss) });
 }
 
 /**

@@ -198,6 +198,10 @@ export const CSS = `
 .rl-task-verdict { margin: .4rem 0 0; font-weight: 600; }
 .rl-task-held { margin: .5rem 0 0; color: var(--muted); font-size: .82rem; }
 .rl-task-verdict.rl-task-solved { color: #14532d; background: #e8f5ec; border: 1px solid #9fd3b0; border-radius: 5px; padding: .3rem .5rem; }
+.rl-task-drawn { margin: 0 0 .6rem; font-weight: 600; }
+.rl-task-history h4 { margin: .6rem 0 .15rem; font-size: .85rem; }
+.rl-task-history ol, .rl-task-history p { margin: 0; font-size: .82rem; color: var(--muted); }
+.rl-task-history ol { padding-left: 1.8rem; }
 /* "Make an exercise" (task/author.js) */
 .rl-author { margin: .2rem 0 .9rem; padding: .6rem .8rem; border: 1px solid #d8c9a6; border-left: 4px solid #e69f00; border-radius: 6px;
   background: #fffbf2; font-size: .88rem; }
@@ -220,6 +224,16 @@ export const CSS = `
 .rl-author-snippet { display: grid; gap: .2rem; margin: .4rem 0; }
 .rl-author-snippet textarea { width: 100%; font: 12px ui-monospace, monospace; }
 .rl-author-problem { color: #8c1d14; margin: .3rem 0; }
+.rl-author-answer { display: flex; flex-wrap: wrap; gap: 0 .6rem; align-items: end; padding: .3rem 0; border-bottom: 1px dashed var(--line); }
+.rl-author-answer .rl-author-field { flex: 1 1 9rem; }
+.rl-author-draw { display: flex; flex-wrap: wrap; gap: 0 .6rem; margin: 0 0 .4rem 1rem; }
+.rl-author-draw .rl-author-field, .rl-author-answer .rl-author-field { min-width: 0; grid-template-columns: minmax(0, 1fr); }
+.rl-author-draw .rl-author-field { flex: 1 1 4rem; }
+.rl-author-draw input, .rl-author-answer :is(input, select), .rl-author-params select { width: 100%; box-sizing: border-box; }
+.rl-author-note { flex-basis: 100%; margin: 0; color: var(--muted); font-size: .82rem; }
+.rl-author-warnings { margin: .5rem 0; padding: .3rem .7rem; background: #fff3ef; border-left: 4px solid #d55e00; border-radius: 5px; }
+.rl-author-warnings h4 { margin: .2rem 0; font-size: .88rem; }
+.rl-author-warning { margin: .25rem 0; }
 /* slider steppers (controls.js): − / + and a number field where the range has more values than the slider pixels */
 .rl-step { min-width: 28px; padding: 0 !important; font-weight: 600; }
 .rl-fine .rl-exact { display: inline-block; }

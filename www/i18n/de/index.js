@@ -5,6 +5,7 @@ import page from './page.js';
 import view from './view.js';
 import edit from './edit.js';
 import task from './task.js';
+import course from './course.js';
 import errors from './errors.js';
 import paper from './paper.js';
 import scenes from './scenes.js';
@@ -17,6 +18,7 @@ export default {
   ...view,
   ...edit,
   ...task,
+  ...course,
   ...errors,
   ...paper,
   ...scenes,

@@ -106,6 +106,7 @@ export default {
   'element.badCamera':
     'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',
   'element.note.badTask': 'Das Attribut task ließ sich nicht lesen ({reason}); die Szene wird ohne es gezeigt.',
+  'element.note.badSeed': 'Das Attribut seed ist keine ganze Zahl von 0 bis {max}; neue Zahlen wurden gezogen.',
 
   'note.notOnOff': 'Der Wert von „{key}“ im Link ist weder ein noch aus; es gilt die Voreinstellung.',
   'note.notNumber': 'Der Wert von „{key}“ im Link ist keine Zahl; es gilt die Voreinstellung.',
@@ -121,4 +122,5 @@ export default {
     'Der Link nennt eine Abbildung der Arbeit, die ruledlab nicht kennt; die Szene wird ohne sie gezeigt.',
   'note.badInput': 'Die bearbeitete Eingabe im Link passt nicht zu dieser Szene; die eingebaute Eingabe wird gezeigt.',
   'note.badTask': 'Die Aufgabe im Link ließ sich nicht lesen ({reason}); die Szene wird ohne sie gezeigt.',
+  'note.badSeed': 'Der Startwert (seed) im Link ist keine ganze Zahl von 0 bis {max}; neue Zahlen wurden gezogen.',
 };

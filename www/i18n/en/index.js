@@ -6,6 +6,7 @@ import page from './page.js';
 import view from './view.js';
 import edit from './edit.js';
 import task from './task.js';
+import course from './course.js';
 import errors from './errors.js';
 import paper from './paper.js';
 import scenes from './scenes.js';
@@ -18,6 +19,7 @@ export default {
   ...view,
   ...edit,
   ...task,
+  ...course,
   ...errors,
   ...paper,
   ...scenes,

@@ -104,6 +104,7 @@ export default {
   'element.badCamera':
     'The camera attribute could not be read (six numbers: yaw, pitch, distance, x, y, z); the view is fitted to the scene.',
   'element.note.badTask': 'The task attribute could not be read ({reason}); the scene is shown without it.',
+  'element.note.badSeed': 'The seed attribute is not a whole number from 0 to {max}; new numbers were drawn.',
 
   // values the link could not use
   'note.notOnOff': 'The link\u2019s value of “{key}” is not on or off; its default is used.',
@@ -119,4 +120,5 @@ export default {
     'The link names a figure of the paper that ruledlab does not know; the scene is shown without it.',
   'note.badInput': 'The edited input in the link does not fit this scene; the built-in input is shown.',
   'note.badTask': 'The exercise in the link could not be read ({reason}); the scene is shown without it.',
+  'note.badSeed': 'The link\u2019s seed is not a whole number from 0 to {max}; new numbers were drawn.',
 };
