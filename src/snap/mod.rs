@@ -38,7 +38,7 @@ use target::{sane, Shape};
 pub struct Ray {
     /// The eye.
     pub origin: DVec3,
-    /// Towards the pointer (any non-zero length).
+    /// Towards the pointer (not zero; its length does not matter).
     pub direction: DVec3,
 }
 

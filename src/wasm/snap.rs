@@ -29,7 +29,7 @@ struct SnapQuery {
     bounds: SnapBounds,
 }
 
-/// A ray: from `origin` along `direction` (any non-zero length).
+/// A ray: from `origin` along `direction` (not zero; its length does not matter).
 #[derive(Deserialize, Tsify)]
 #[serde(deny_unknown_fields)]
 struct SnapRay {

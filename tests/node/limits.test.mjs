@@ -36,6 +36,8 @@ const NOT_LIMITS = [
   ],
   [10, ['milling.text'], 'the figure’s scale (1 unit = 10 mm), not HANDLE_REACH or EDIT_BOX'],
   [50, ['task.check.notNumber'], 'an example of a number to type, not TASK_SAMPLES'],
+  [0.2, ['curves.claim.sharp'], 'the largest four-point tension w the claim covers, not FINE_DRAG'],
+  [16, ['boot.noWasm'], 'Safari 16.4 (German reads it as 16 and 4), not SNAP_REACH_COARSE'],
 ];
 
 /** Every .js file under `dir`. */

@@ -4,7 +4,7 @@
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { POST_PARAMS, givenPath, postOf, programFile, deviationFigure } from '../figures/toolpath.js';
-import { poseSet } from '../edit/sets.js';
+import { poseSet, poseValues } from '../edit/sets.js';
 
 /** @type {Record<string, Partial<import('../../pkg/ruledlab.js').SubdivideOptions>>} */
 const SCHEMES = {
@@ -90,6 +90,7 @@ export const scene = defineScene({
           compare[k] = maxDeviation(own(path.refine({ ...o, steps })), profile);
       const given0 = profile ? maxDeviation(path, profile) : Number.NaN;
       const centres = refined.barycentres();
+      const perPose = profile ? refined.deviationPerPose(profile) : null;
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
         ...(profile
@@ -183,7 +184,7 @@ export const scene = defineScene({
               deviation,
             }),
         figure: deviationFigure({
-          perPose: profile ? refined.deviationPerPose(profile) : null,
+          perPose,
           stride: 2 ** steps,
           post,
           t,
@@ -192,6 +193,7 @@ export const scene = defineScene({
         // turns the tool about the tip)
         input: {
           sets: [poseSet(edited ?? path.segments())],
+          values: poseValues(path.quality().angleStep, perPose, 2 ** steps, t),
           from: imported
             ? t('edit.from.importedPoses', { poses: path.length })
             : t('edit.from.poses', { poses: Number(p.poses) }),

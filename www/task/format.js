@@ -12,7 +12,8 @@
 //   "answers": [{ "id": "s", "kind": "curve", "label": { "en": "s(u)" } }],
 //   "goal": [{ "value": "striction.minAbsDelta", "below": 0.01 },
 //            { "answer": "s", "matches": "striction", "within": 1e-6 }],
-//   "hints": [{ "en": "…" }], "solution": { "params": {…}, "input": "…", "answers": { "s": ["u", "0", "0"] } }
+//   "hints": [{ "en": "…" }], "solution": { "params": {…}, "input": "…", "answers": { "s": ["u", "0", "0"] } },
+//   "edit": { "snap": true, "typed": true, "constraints": [{ "handle": "rulings.21", "on": "line", "direction": [0, 0, 1] }] }
 // }
 
 import {
@@ -32,6 +33,7 @@ import {
   MAX_TASK_TITLE,
   MAX_TEXT_PARAM,
 } from '../limits.js';
+import { readEditRules } from '../edit/rules.js';
 
 /** What `hide` may name besides parameters and readouts: the claims under the readout, the explanation. */
 export const HIDE_WORDS = ['claims', 'text'];
@@ -87,6 +89,8 @@ const LARGEST_NUMBER = MAX_TASK_NUMBER.toExponential().replace('+', '');
  * @property {Condition[]} goal
  * @property {Words[]} hints
  * @property {TaskState | null} solution
+ * @property {import('../edit/rules.js').EditRules | null} edit   how the points may move (edit/rules.js): snapping,
+ *   typed coordinates, points held on a line, on a plane or fixed
  */
 
 const KEYS = [
@@ -105,6 +109,7 @@ const KEYS = [
   'goal',
   'hints',
   'solution',
+  'edit',
 ];
 
 /** An exercise that cannot be read: its message says where and why (in English; `details` for the page's language). */
@@ -356,12 +361,18 @@ export function readTask(source) {
     goal,
     hints: list(o.hints ?? [], 'hints', MAX_TASK_HINTS).map((h, i) => words(h, `hints[${i}]`)),
     solution,
+    edit:
+      o.edit === undefined
+        ? null
+        : readEditRules(o.edit, (key, what) => {
+            throw new TaskError('task.error.type', { key, what });
+          }),
   };
 }
 
 /** The exercise as JSON (what readTask reads back to the same Task). */
 export function writeTask(/** @type {Task} */ task) {
-  const { input, camera, solution, ...rest } = task;
+  const { input, camera, solution, edit, ...rest } = task;
   return JSON.stringify({
     ruledlab: 'exercise',
     version: 1,
@@ -369,6 +380,7 @@ export function writeTask(/** @type {Task} */ task) {
     ...(input ? { input } : {}),
     ...(camera ? { camera } : {}),
     ...(solution ? { solution } : {}),
+    ...(edit ? { edit } : {}),
   });
 }
 

@@ -71,7 +71,7 @@ export function showClaims(list, claims, t) {
  * @param {boolean | undefined} exactZero
  * @param {Pick<import('../i18n/index.js').Translator, 't' | 'format'>} i18n
  */
-function valueText(value, exactZero, { t, format }) {
+export function valueText(value, exactZero, { t, format }) {
   if (exactZero && typeof value === 'number' && Math.abs(value) < EXACT_ZERO) return t('readout.exact');
   return typeof value === 'number' ? format(value) : t(String(value));
 }
