@@ -85,6 +85,7 @@ export class HandleMarks {
     const { t } = editor.hooks.i18n();
     const snap = editor.drag?.snap ?? editor.keys.run?.snap ?? null;
     const held = editor.drag?.held;
+    /** @type {HTMLElement[]} */
     const rows = [Object.assign(doc.createElement('div'), { textContent: this.describe(k) })];
     if (editor.drag?.fine)
       rows.push(
@@ -104,13 +105,25 @@ export class HandleMarks {
       rows.push(
         Object.assign(doc.createElement('div'), { className: 'rl-tip-held', textContent: t(`snap.held.${held}`) }),
       );
+    // the neighbourhood's values flow in one paragraph (a narrow view keeps the tip short); an
+    // exercise's conditions get a line each
+    const values = Object.assign(doc.createElement('div'), { className: 'rl-tip-values' });
+    /** @type {HTMLElement[]} */
+    const goals = [];
     for (const line of editor.live.lines(k)) {
-      const row = Object.assign(doc.createElement('div'), { className: 'rl-tip-value' });
-      if (line.holds !== undefined) row.classList.add(line.holds ? 'rl-holds' : 'rl-fails');
-      appendRich(row, line.label);
-      row.append(`: ${line.text}${line.holds ? ' ✓' : ''}`);
-      rows.push(row);
+      const item = Object.assign(doc.createElement('span'), { className: 'rl-tip-value' });
+      appendRich(item, line.label);
+      if (line.holds === undefined) {
+        item.append(` ${line.text}`);
+        values.append(item, ' ');
+      } else {
+        item.classList.add(line.holds ? 'rl-holds' : 'rl-fails');
+        item.append(`: ${line.text}${line.holds ? ' ✓' : ''}`);
+        goals.push(item);
+      }
     }
+    if (values.childElementCount) rows.push(values);
+    rows.push(...goals);
     this.tip.replaceChildren(...rows);
     this.tip.hidden = false;
     this.tip.dataset.handle = String(k);

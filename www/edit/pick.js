@@ -4,6 +4,9 @@
 // coordinates are typed, or the keyboard moves it). Escape or a press elsewhere closes the list.
 import { PICK_LIST } from '../limits.js';
 
+/** A click this soon after the list opened (ms) is the end of the press that opened it. */
+const PICK_SETTLE = 350;
+
 export class PickList {
   /** @param {import('./editor.js').Editor} editor */
   constructor(editor) {
@@ -22,6 +25,7 @@ export class PickList {
       }
     });
     editor.view.append(this.box);
+    this.openedAt = 0;
   }
 
   /** Whether the list is open. */
@@ -50,6 +54,9 @@ export class PickList {
         });
         b.dataset.handle = String(k);
         b.addEventListener('click', () => {
+          // (the press that opened the list ends in a click a browser may give to a button near
+          // the finger: not a choice)
+          if (performance.now() - this.openedAt < PICK_SETTLE) return;
           this.close();
           editor.select(k, true);
           editor.marks.showTip(k);
@@ -59,11 +66,12 @@ export class PickList {
       }),
     );
     this.box.hidden = false;
-    // beside the press, inside the view
+    this.openedAt = performance.now();
+    // beside the press (clear of the finger), inside the view
     const view = editor.view.getBoundingClientRect();
     const w = this.box.offsetWidth,
       h = this.box.offsetHeight;
-    const left = Math.max(4, Math.min(x + 16, view.width - w - 4));
+    const left = x + 32 + w < view.width - 4 ? x + 32 : Math.max(4, x - 32 - w);
     const top = Math.max(4, Math.min(y - h / 2, view.height - h - 4));
     this.box.style.transform = `translate(${left}px, ${top}px)`;
     /** @type {HTMLElement | null} */ (this.list.firstElementChild)?.focus({ preventScroll: true });

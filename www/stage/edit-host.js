@@ -108,7 +108,7 @@ export class EditHost {
       labelButton(button, MODE_SIGNS[/** @type {keyof typeof MODE_SIGNS} */ (mode)], t(`edit.mode.${mode}`));
       button.title = t(`edit.mode.${mode}Title`);
     }
-    labelButton(snap, '⌖', t('edit.snap'));
+    labelButton(snap, '◈', t('edit.snap'));
     snap.title = t('edit.snapTitle');
     done.textContent = t('edit.done');
     asData.textContent = t('edit.asData');

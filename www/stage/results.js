@@ -67,6 +67,7 @@ export class Results {
     const figure = `${scene.id} ${stage.task?.id ?? ''} ${i18n.lang}`;
     if (final && figure !== this.said) {
       this.said = figure;
+      stage.announcer.cancel();
       stage.announcer.say(this.spoken());
     }
     els.figure.replaceChildren(...(built.figure ? [built.figure()] : []));

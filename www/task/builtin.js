@@ -80,8 +80,8 @@ const RAW = [
         de: 'Zwei Geraden schneiden sich, wenn ein Punkt der einen auf der anderen liegt: Bringen Sie ein Ende einer Erzeugenden auf die Gerade ihrer Nachbarin.',
       },
       {
-        en: 'Drag the end near the neighbouring ruling: it snaps onto that line exactly (◆ “on ruling …” beside it), and δ of the pair, shown beside the end, becomes 0. Snapping is on unless the ⌖ button in the ✎ bar (or S) turned it off.',
-        de: 'Ziehen Sie das Ende nahe an die benachbarte Erzeugende: Es rastet genau auf dieser Geraden ein (◆ „auf der Erzeugenden …“ daneben), und δ des Paares, neben dem Ende angezeigt, wird 0. Das Einrasten ist an, solange die Schaltfläche ⌖ in der ✎-Leiste (oder S) es nicht ausgeschaltet hat.',
+        en: 'Drag the end near the neighbouring ruling: it snaps onto that line exactly (◆ “on ruling …” beside it), and δ of the pair, shown beside the end, becomes 0. Snapping is on unless the ◈ button in the ✎ bar (or S) turned it off.',
+        de: 'Ziehen Sie das Ende nahe an die benachbarte Erzeugende: Es rastet genau auf dieser Geraden ein (◆ „auf der Erzeugenden …“ daneben), und δ des Paares, neben dem Ende angezeigt, wird 0. Das Einrasten ist an, solange die Schaltfläche ◈ in der ✎-Leiste (oder S) es nicht ausgeschaltet hat.',
       },
     ],
     solution: { input: TORSAL_SOLUTION },

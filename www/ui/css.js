@@ -145,7 +145,10 @@ export const CSS = `
 .rl-handle.rl-selected { left: -11px; top: -11px; width: 22px; height: 22px; border: 4px solid #d55e00; background: rgb(255 255 255 / .25); }
 .rl-handle-tip { position: absolute; left: 0; top: 0; padding: .15rem .45rem; border-radius: 5px; background: rgb(31 36 48 / .9);
   color: #fff; font-size: .8rem; font-variant-numeric: tabular-nums; white-space: nowrap; }
-.rl-handle-tip > div + div { font-size: .8rem; }
+.rl-handle-tip { max-width: min(24rem, calc(100% - 8px)); white-space: normal; }
+.rl-handle-tip > * { display: block; }
+.rl-handle-tip > * + * { font-size: .8rem; }
+.rl-handle-tip .rl-tip-values .rl-tip-value { display: inline-block; margin-right: .5rem; white-space: nowrap; }
 .rl-handle-tip .rl-tip-snap { color: #ffd27a; }
 .rl-handle-tip .rl-tip-held { color: #ffc2b3; }
 .rl-handle-tip .rl-tip-value.rl-holds { color: #a6e3c8; }
