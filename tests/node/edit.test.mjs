@@ -20,6 +20,7 @@ import {
 } from '../../www/edit/input.js';
 import { clampTo, editBox, invertRigid, pointerRay, toScreen, transformPoint } from '../../www/edit/geometry.js';
 import { snapPoint } from '../../pkg/ruledlab.js';
+import { readTask, writeTask } from '../../www/task/format.js';
 import { OrbitCamera } from '../../www/camera.js';
 import { coordinates } from '../../www/edit/marks.js';
 
@@ -268,4 +269,45 @@ test('an edited striction scene measures on the edit: its readouts are those of 
   } finally {
     surface.free();
   }
+});
+
+test('an exercise’s "edit" field: read, written back, and refused where it is not one', () => {
+  const base = {
+    ruledlab: 'exercise',
+    version: 1,
+    id: 'held',
+    title: { en: 'Held' },
+    prompt: { en: 'Move it.' },
+    scene: 'striction',
+    change: ['handles'],
+    goal: [{ value: 'striction.minAbsDelta', below: 0.01 }],
+  };
+  const edit = {
+    snap: false,
+    typed: true,
+    constraints: [
+      { handle: 'rulings.21', on: 'line', direction: [0, 0, 1] },
+      { handle: 'points.3', on: 'plane', normal: [0, 0, 2] },
+      { handle: 'poses.6', on: 'fixed' },
+    ],
+  };
+  const task = readTask({ ...base, edit });
+  assert.deepEqual(task.edit, edit);
+  assert.deepEqual(readTask(writeTask(task)).edit, edit, 'written and read back');
+  assert.equal(readTask(base).edit, null);
+  assert.deepEqual(readTask({ ...base, edit: {} }).edit, { snap: true, typed: true, constraints: [] });
+  for (const bad of [
+    [],
+    { snap: 'yes' },
+    { grid: true },
+    { constraints: {} },
+    { constraints: [{ handle: 'rulings', on: 'fixed' }] },
+    { constraints: [{ handle: 'rulings.1', on: 'circle' }] },
+    { constraints: [{ handle: 'rulings.1', on: 'line' }] },
+    { constraints: [{ handle: 'rulings.1', on: 'line', direction: [0, 1] }] },
+    { constraints: [{ handle: 'rulings.1', on: 'plane', normal: [0, Number.NaN, 1] }] },
+    { constraints: [{ handle: 'rulings.1', on: 'fixed', direction: [0, 0, 1] }] },
+    { constraints: Array(65).fill({ handle: 'rulings.1', on: 'fixed' }) },
+  ])
+    assert.throws(() => readTask({ ...base, edit: bad }), { code: 'invalid-task' }, JSON.stringify(bad).slice(0, 60));
 });

@@ -7,7 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
-import { pageSession, ready, shoot, framesAfter, control, showScene } from './browser.mjs';
+import { launch, pageSession, ready, shoot, framesAfter, control, showScene, watch } from './browser.mjs';
 import { difference, parseColour } from './colour.mjs';
 import { countChanged } from './png.mjs';
 
@@ -214,4 +214,67 @@ test('every scene describes what it shows with its key values, in English and in
     await page.close();
   }
   for (const { id } of scenes) assert.notEqual(said.en[id], said.de[id], `${id}: the same words in both languages`);
+});
+
+test('reflow at 320 px: no scene scrolls sideways (a plot or a formula wider than that scrolls in its own box); focus is never hidden under the view', async () => {
+  const narrow = await launch({ viewport: { width: 320, height: 640 } });
+  try {
+    const page = await narrow.newPage();
+    const problems = watch(page);
+    await page.goto(`${session.url}#scene=striction`);
+    await ready(page);
+    const scenes = await page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
+    for (const id of scenes) {
+      await showScene(page, `#scene=${id}`, id);
+      const wide = await page.evaluate(() => {
+        // what reaches past the screen's right edge, unless a box that scrolls holds it
+        const scrolls = (/** @type {Element} */ e) => {
+          for (let a = e.parentElement; a; a = a.parentElement)
+            if (
+              ['auto', 'scroll'].includes(getComputedStyle(a).overflowX) &&
+              a.getBoundingClientRect().right <= innerWidth + 1
+            )
+              return true;
+          return false;
+        };
+        return {
+          page: document.documentElement.scrollWidth,
+          out: [...document.querySelectorAll('body *')]
+            .filter(
+              (e) =>
+                e.checkVisibility() &&
+                !e.closest('.rl-sr-only') &&
+                e.getBoundingClientRect().right > innerWidth + 1 &&
+                !scrolls(e),
+            )
+            .map((e) => `${e.tagName.toLowerCase()}.${e.getAttribute('class') ?? ''}`)
+            .slice(0, 5),
+        };
+      });
+      assert.equal(wide.page, 320, `${id}: the page scrolls sideways`);
+      assert.deepEqual(wide.out, [], `${id}: cut off at 320 px`);
+    }
+    // 2.4.11: every control the keyboard reaches shows at least in part beside the sticky view
+    await showScene(page, '#scene=striction', 'striction');
+    await page.focus('.rl-view canvas');
+    const hidden = [];
+    for (let k = 0; k < 40; k++) {
+      await page.keyboard.press('Tab');
+      const seen = await page.evaluate(() => {
+        const e = /** @type {HTMLElement} */ (document.activeElement);
+        if (!e || e === document.body) return null;
+        const r = e.getBoundingClientRect();
+        const v = /** @type {HTMLElement} */ (document.querySelector('.rl-view')).getBoundingClientRect();
+        // on screen, less what the view covers of it (nothing of what is in the view itself)
+        const [top, bottom] = [Math.max(r.top, 0), Math.min(r.bottom, innerHeight)];
+        const covered = e.closest('.rl-view') ? 0 : Math.max(0, Math.min(bottom, v.bottom) - Math.max(top, v.top));
+        return { what: e.getAttribute('name') || e.className || e.tagName, visible: bottom - top - covered > 0 };
+      });
+      if (seen && !seen.visible) hidden.push(seen.what);
+    }
+    assert.deepEqual(hidden, [], 'focused controls hidden under the view');
+    assert.deepEqual(problems, []);
+  } finally {
+    await narrow.close();
+  }
 });

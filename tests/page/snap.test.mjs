@@ -123,6 +123,7 @@ test('a ruling’s end snaps onto its neighbour exactly — mouse and keyboard; 
     await page.keyboard.press(
       Math.abs(dx) > Math.abs(dy) ? (dx > 0 ? 'ArrowRight' : 'ArrowLeft') : dy > 0 ? 'ArrowDown' : 'ArrowUp',
     );
+    await drawn(page);
     snapped = /◆ on ruling 3/.test(await page.locator('.rl-handle-tip').innerText());
   }
   assert.ok(snapped, 'the arrow keys brought the end onto ruling 3');

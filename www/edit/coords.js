@@ -78,13 +78,16 @@ export class CoordsBox {
     }
     this.shownFor = k;
     const doc = this.box.ownerDocument;
+    const lines = editor.live.lines(k);
+    // (written again only when a value changed: a drag calls this every frame)
+    const said = lines.map((line) => `${line.label} ${line.text} ${line.holds}`).join('\n');
+    if (this.values.dataset.said === said) return;
+    this.values.dataset.said = said;
     this.values.replaceChildren(
-      ...editor.live
-        .lines(k)
-        .flatMap((line) => [
-          appendRich(doc.createElement('dt'), line.label),
-          Object.assign(doc.createElement('dd'), { textContent: `${line.text}${line.holds ? ' ✓' : ''}` }),
-        ]),
+      ...lines.flatMap((line) => [
+        appendRich(doc.createElement('dt'), line.label),
+        Object.assign(doc.createElement('dd'), { textContent: `${line.text}${line.holds ? ' ✓' : ''}` }),
+      ]),
     );
     this.values.hidden = !this.values.childElementCount;
     this.values.setAttribute('aria-label', t('edit.coordsValues'));

@@ -26,6 +26,8 @@ export class HandleMarks {
     this.rings = [];
     this.lastSaid = 0;
     this.sayTimer = 0;
+    /** whether the tip's words wait for the next frame */
+    this.stale = false;
   }
 
   /** A handle in words: "ruling 5, end b: 1.20, −0.40, 3.00". */
@@ -78,8 +80,19 @@ export class HandleMarks {
     clearTimeout(this.sayTimer);
   }
 
-  /** Shows beside handle `k` its coordinates, what a move snapped it onto and its live values. */
+  /**
+   * Shows beside handle `k` its coordinates, what a move snapped it onto and its live values —
+   * written once per frame, when the handles are placed (a pointer moves more often than that).
+   */
   showTip(/** @type {number} */ k) {
+    this.tip.hidden = false;
+    this.tip.dataset.handle = String(k);
+    this.stale = true;
+    this.editor.viewer.requestRender();
+  }
+
+  /** @internal Writes the tip of handle `k`. */
+  fillTip(/** @type {number} */ k) {
     const editor = this.editor;
     const doc = this.tip.ownerDocument;
     const { t } = editor.hooks.i18n();
@@ -125,9 +138,6 @@ export class HandleMarks {
     if (values.childElementCount) rows.push(values);
     rows.push(...goals);
     this.tip.replaceChildren(...rows);
-    this.tip.hidden = false;
-    this.tip.dataset.handle = String(k);
-    editor.viewer.requestRender();
   }
 
   /** The tip again with the values of a new computation (a drag's frame). */
@@ -177,6 +187,10 @@ export class HandleMarks {
     if (snap) {
       const s = toScreen(viewProj, snap.world, w, h);
       this.snapMark.style.transform = `translate(${s.x}px, ${s.y}px) rotate(45deg)`;
+    }
+    if (!this.tip.hidden && this.stale) {
+      this.stale = false;
+      this.fillTip(Number(this.tip.dataset.handle));
     }
     if (!this.tip.hidden) {
       const handle = all[Number(this.tip.dataset.handle)];

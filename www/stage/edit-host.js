@@ -136,7 +136,10 @@ export class EditHost {
     const doc = els.root.ownerDocument;
     // (in an exercise its own Start over takes the note's place)
     els.edited.hidden = !stage.input || !!stage.task;
-    if (stage.input && !stage.task) {
+    // (written again only when what it says changes: a drag calls this every frame)
+    const note = `${editor.from}\n${stage.inputNote}\n${t('edit.restore')}`;
+    if (stage.input && !stage.task && els.edited.dataset.note !== note) {
+      els.edited.dataset.note = note;
       const text = doc.createElement('p');
       appendRich(text, t('edit.from', { from: editor.from }));
       const back = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('edit.restore') });
@@ -154,9 +157,10 @@ export class EditHost {
     this.coords.show();
     els.root.classList.toggle('rl-has-handles', active);
     const touch = touchScreen();
-    els.hint.textContent = t(
+    const hint = t(
       touch ? (active ? 'view.hintTouchEdit' : 'view.hintTouch') : active ? 'view.hintEdit' : 'view.hintMouse',
     );
+    if (els.hint.textContent !== hint) els.hint.textContent = hint;
   }
 
   /** "Edit as data" where the scene offers it and the reader may edit. */

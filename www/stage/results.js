@@ -40,7 +40,11 @@ export class Results {
     const editor = stage.edit.editor;
     const moving = !!(editor.drag || editor.keys.run) && !!stage.input;
     editor.show(built.input);
-    els.problems.replaceChildren(...(built.problems ?? []).map((text) => appendRich(doc.createElement('li'), text)));
+    const problems = (built.problems ?? []).join('\n');
+    if (els.problems.dataset.said !== problems || !moving) {
+      els.problems.dataset.said = problems;
+      els.problems.replaceChildren(...(built.problems ?? []).map((text) => appendRich(doc.createElement('li'), text)));
+    }
     els.problems.hidden = !built.problems?.length;
     showReadout(els.readout, this.readouts(built), i18n);
     if (moving) {
