@@ -161,7 +161,12 @@ test('an exercise holds its points: fixed, on a line (exactly), and a constraint
     scene: 'striction',
     params: { surface: 'hyperboloid', n: 8 },
     change: ['handles'],
-    goal: [{ value: 'striction.minAbsDelta', below: 0.01 }],
+    // the second condition's value is hidden: beside the point only "closer" or "further"
+    goal: [
+      { value: 'striction.minAbsDelta', below: 0.01 },
+      { value: 'readout.meanDelta', below: -100 },
+    ],
+    hide: ['readout.meanDelta'],
     edit: {
       constraints: [
         { handle: 'rulings.0', on: 'fixed' },
@@ -185,6 +190,13 @@ test('an exercise holds its points: fixed, on a line (exactly), and a constraint
   await page.mouse.move(handles[3].x, handles[3].y);
   await page.mouse.down();
   for (let s = 1; s <= 6; s++) await page.mouse.move(handles[3].x + 9 * s, handles[3].y + 7 * s);
+  await drawn(page);
+  const goals = await page
+    .locator('.rl-handle-tip .rl-tip-value.rl-fails, .rl-handle-tip .rl-tip-value.rl-holds')
+    .allInnerTexts();
+  assert.equal(goals.length, 2, goals.join(' | '));
+  assert.match(goals[0], /^the smallest \|δ\| of a pair of rulings: [\d.·⁻−]+ \(goal: below 0\.01\)/);
+  assert.match(goals[1], /^δ̄ at the middle ruling: (closer|further|no change)$/, 'a hidden value is not shown');
   await page.mouse.up();
   await drawn(page);
   const moved = (await inputNow(page)).rulings;
