@@ -66,7 +66,7 @@ lane() {
   ( set -e; t0=$SECONDS; "$@"; echo "lane $name: done in $((SECONDS - t0)) s" ) > "$LOGS/$name.log" 2>&1
 }
 wasm_lane() {
-  WASM_TESTS=(--test kernels --test section2 --test section3 --test section4 --test section5 --test milling --test line_space --test formula --test focal --test visibility --test bindings)
+  WASM_TESTS=(--test kernels --test section2 --test section3 --test section4 --test section5 --test milling --test line_space --test formula --test focal --test visibility --test snap --test bindings)
   CHROMEDRIVER="$(command -v chromedriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
   GECKODRIVER="$(command -v geckodriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
 }

@@ -42,6 +42,7 @@ mod linear_complex;
 mod mesh;
 mod milling;
 mod ruled;
+mod snap;
 mod subdivision;
 pub mod tolerance;
 mod visibility;
@@ -59,6 +60,9 @@ pub use base::{atan2_x2, check_coordinates, sample_parameters, CongruenceJet, Je
 pub use line::{Line, Segment};
 pub use line_fit::{fit_line, LineFit};
 pub use mesh::{grid_indices, strip_indices, Mesh};
+
+// the reader's hand: where a dragged handle goes (constraints and snapping)
+pub use snap::{place, Bounds, Constraint, Held, Placement, Ray, Target};
 
 // figures: hidden lines of vector drawings
 pub use visibility::{hidden_lines, transformed, HiddenLineOptions, LineKind, Run, View};

@@ -15,6 +15,15 @@ pub const PARALLEL_SIN: f64 = 1e-9;
 /// dominated by rounding.
 pub const ZERO_LENGTH_REL: f64 = 1e-12;
 
+/// A dragged handle counts as on a line or plane of the figure (a snap under a constraint: a
+/// point on the handle's line, two lines that meet) within this share of the edit box's
+/// diagonal — rounding of a scene's numbers, far below a pixel.
+pub const SNAP_ON: f64 = 1e-9;
+
+/// Most snap targets one placement of a dragged handle looks at (the page offers those near the
+/// pointer: a handful).
+pub const MAX_SNAP_TARGETS: usize = 4096;
+
 /// Largest accepted coordinate magnitude. Squares of differences stay far from overflow. Also
 /// the hidden-line camera's limit for its eye and target, and 1/MAX_COORD the least distance
 /// between them (its near and far planes' product, distance²/50, stays a normal number).

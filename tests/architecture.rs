@@ -16,7 +16,7 @@ use std::path::Path;
 /// The layers, bottom first. A module may use modules of its own layer's predecessors only.
 const LAYERS: &[&[&str]] = &[
     &["error", "tolerance", "line"],
-    &["base", "formula", "linalg", "linear_complex", "line_fit"],
+    &["base", "formula", "linalg", "linear_complex", "line_fit", "snap"],
     &["ruled", "mesh", "visibility"],
     &["subdivision"],
     &["congruence"],

@@ -1,6 +1,8 @@
 // An orbit camera around a target, z up: drag to orbit, right/shift-drag or two fingers to
-// pan, wheel or pinch to zoom; keyboard (while the view has focus): arrows orbit,
-// shift+arrows pan, +/- zoom, F fits.
+// pan, wheel or pinch to zoom (a pinch zooms by the fingers' own ratio: spread them twice as far
+// apart and the figure is twice as large); keyboard (while the view has focus): arrows orbit
+// (J L I K too, which still turn it while the arrows move a point), shift+arrows pan, +/- zoom,
+// F, 0 and Home back to the fitted view.
 import { add, lookAt, multiply, perspective, scale, sub, cross, normalize, length } from './math.js';
 import { CAMERA_NEAREST, PITCH_LIMIT } from './limits.js';
 
@@ -112,14 +114,21 @@ export class OrbitCamera {
     const pointers = new Map();
     /** @type {{mid: {x: number, y: number}, span: number} | null} */
     let last = null;
+    /** @type {{span: number, distance: number} | null} where a pinch began */
+    let pinch = null;
     element.addEventListener('pointerdown', (e) => {
       element.setPointerCapture?.(e.pointerId);
       pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
       last = null;
+      // a second finger: the pinch is measured from the fingers' span now
+      const [p, q] = [...pointers.values()];
+      pinch =
+        pointers.size === 2 ? { span: Math.max(Math.hypot(p.x - q.x, p.y - q.y), 1), distance: this.distance } : null;
     });
     const end = (/** @type {PointerEvent} */ e) => {
       const was = pointers.delete(e.pointerId);
       last = null;
+      pinch = null;
       if (was && pointers.size === 0) changed(true);
     };
     element.addEventListener('pointerup', end);
@@ -138,10 +147,11 @@ export class OrbitCamera {
         const [p, q] = [...pointers.values()];
         const mid = { x: (p.x + q.x) / 2, y: (p.y + q.y) / 2 };
         const span = Math.hypot(p.x - q.x, p.y - q.y);
-        if (last) {
-          this.zoom(last.span / Math.max(span, 1));
-          this.pan((mid.x - last.mid.x) / h / 2, (mid.y - last.mid.y) / h / 2);
-        }
+        // the distance from where the pinch began, by the ratio of the fingers' spans (not a
+        // product of per-event factors, which drifts)
+        pinch ??= { span: Math.max(span, 1), distance: this.distance };
+        this.distance = Math.max(CAMERA_NEAREST, (pinch.distance * pinch.span) / Math.max(span, 1));
+        if (last) this.pan((mid.x - last.mid.x) / h / 2, (mid.y - last.mid.y) / h / 2);
         last = { mid, span };
       }
       changed(false);
@@ -172,6 +182,13 @@ export class OrbitCamera {
         '-': () => this.zoom(1 / 0.9),
         f: () => this.reset(),
         F: () => this.reset(),
+        0: () => this.reset(),
+        Home: () => this.reset(),
+        // letters that turn the view whatever the arrows do (while editing they move a point)
+        j: () => this.orbit(step, 0),
+        l: () => this.orbit(-step, 0),
+        i: () => this.orbit(0, step),
+        k: () => this.orbit(0, -step),
       };
       if (actions[e.key] && !e.ctrlKey && !e.metaKey && !e.altKey) {
         e.preventDefault();

@@ -34,6 +34,9 @@ export { builtInTasks, builtInTask } from './task/builtin.js';
  * @typedef {import('./scene.js').Input} Input
  * @typedef {import('./scene.js').HandleSet} HandleSet
  * @typedef {import('./scene.js').Editable} Editable
+ * @typedef {import('./scene.js').SnapTargets} SnapTargets
+ * @typedef {import('./edit/rules.js').EditRules} EditRules
+ * @typedef {import('./edit/rules.js').HeldHandle} HeldHandle
  * @typedef {import('./paper.js').PaperPreset} PaperPreset
  * @typedef {import('./state.js').ViewState} ViewState
  * @typedef {import('./theme.js').Style} Style

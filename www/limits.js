@@ -60,6 +60,18 @@ export const MAX_TEXT_PARAM = 1000;
 /** A handle is grabbed within this distance of the pointer (CSS px), on fine and on coarse pointers. */
 export const HANDLE_REACH = 10;
 export const HANDLE_REACH_COARSE = 22;
+/**
+ * A dragged handle snaps onto a point, line or plane of the figure the core puts within this
+ * distance of the pointer (CSS px), on fine and on coarse pointers (a finger is off by a few).
+ */
+export const SNAP_REACH = 8;
+export const SNAP_REACH_COARSE = 16;
+/** Handles closer than this on screen (CSS px) are offered as a list to pick from, not grabbed blindly. */
+export const HANDLE_OVERLAP = 8;
+/** Most handles in that list (the nearest). */
+export const PICK_LIST = 8;
+/** After a long press a dragged handle follows at this share of the pointer's speed (a fine drag). */
+export const FINE_DRAG = 0.2;
 /** Handles stay in the box of the scene's bounds scaled by this about its centre. */
 export const EDIT_BOX = 10;
 /** One arrow key moves a handle by this share of the scene's size (Shift: a tenth of it). */

@@ -64,12 +64,30 @@ import { MAX_TEXT_PARAM } from './limits.js';
  *   (a tool's tip carries the tool; its axis end alone turns it)
  * @property {Float32Array | Float64Array} [transform]   4 × 4 model matrix, column-major: where
  *   the handles are drawn (the layer's transform); a rigid motion
+ * @property {string} [lineName]     pairs: i18n key naming line {i} as a snap target ("ruling {i}")
+ * @property {boolean} [closed]      pairs: the last line and the first are neighbours (a closed surface)
+ * @property {SnapTargets[]} [targets]   what else a dragged handle of the set snaps onto (its
+ *   other handles and, for pairs, the other lines are targets anyway)
+ *
+ * Points, lines or planes of a figure a dragged handle snaps onto (edit/snap.js; the core puts
+ * the handle on them exactly), in the set's input coordinates.
+ * @typedef {object} SnapTargets
+ * @property {'point' | 'line' | 'plane'} kind
+ * @property {Float64Array} points   3 numbers per point; 6 per line (two of its points: the part
+ *   drawn); 6 per plane (a point, the normal)
+ * @property {string} name           i18n key naming target {i} ("footpoint f_{{i},{j}}")
+ * @property {(i: number) => Record<string, string>} [vars]   more variables of its name
+ * @property {(i: number) => number[]} [of]   the set's lines target i is made from: a drag of one of
+ *   their handles moves it, so it is no target then
  *
  * What a scene offers to edit, beside what it built.
  * @typedef {object} Editable
  * @property {HandleSet[]} sets
  * @property {string} from           what the built-in input is, in words ("the hyperboloid of
  *   Example 1, 36 rulings"): the page says "edited from: …"
+ * @property {(set: number, index: number) => Readout[]} [values]   the values of handle `index`
+ *   of set `set`'s neighbourhood, shown beside it while it moves (a ruling's end: φ, h, δ of both
+ *   pairs of its ruling; a tool pose: its orientation steps and deviation); labels are texts
  *
  * Your own segments, or your tool poses (the milling scene).
  * @typedef {object} ImportedData

@@ -3,7 +3,8 @@
 // batches, renders on demand, places the 3D-anchored labels, rebuilds after a context loss,
 // and releases the context when disposed. Buffers go to the GPU in the animation frame that
 // draws them (the computation and the upload are separate tasks; two computations in one frame
-// upload once).
+// upload once); a layer of the same kind and style as before keeps its batch, and only numbers
+// that changed are uploaded again (a drag moves one handle: most layers come back equal).
 import { OrbitCamera } from './camera.js';
 import { forgetPrograms } from './gl/program.js';
 import { LineBatch, polylineSegments, prepare as prepareLines } from './gl/lines.js';
@@ -24,8 +25,31 @@ import { mark, measured } from './timing.js';
  */
 
 /**
- * @typedef {{draw(gl: WebGL2RenderingContext, frame: Frame): void, dispose(gl: WebGL2RenderingContext): void, transparent?: boolean}} Batch
+ * @typedef {{draw(gl: WebGL2RenderingContext, frame: Frame): void, dispose(gl: WebGL2RenderingContext): void, transparent?: boolean, layer?: string}} Batch
  */
+
+/**
+ * Puts `layer` into `old`, the batch of the layer before it, where that is of the same kind and
+ * style (only what changed is uploaded); returns whether it did.
+ * @param {WebGL2RenderingContext} gl
+ * @param {Batch | null | undefined} old
+ * @param {import('./scene.js').Layer} layer
+ */
+function reuse(gl, old, layer) {
+  if (!old || old.layer !== `${layer.kind} ${layer.style}`) return false;
+  const transform = layer.transform ?? undefined;
+  if (old instanceof TriangleMesh)
+    return old.update(gl, layer.positions, /** @type {Uint32Array} */ (layer.indices), transform, layer.normals);
+  if (old instanceof PointBatch) old.update(gl, layer.positions, transform);
+  else if (old instanceof LineBatch)
+    old.update(
+      gl,
+      layer.kind === 'polyline' ? polylineSegments(layer.positions, layer.closed) : layer.positions,
+      transform,
+    );
+  else return false;
+  return true;
+}
 
 /**
  * The GPU batch of one layer.
@@ -34,6 +58,13 @@ import { mark, measured } from './timing.js';
  * @returns {Batch}
  */
 export function batch(gl, layer) {
+  const made = makeBatch(gl, layer);
+  made.layer = `${layer.kind} ${layer.style}`;
+  return made;
+}
+
+/** @param {WebGL2RenderingContext} gl @param {import('./scene.js').Layer} layer @returns {Batch} */
+function makeBatch(gl, layer) {
   const style = STYLES[layer.style];
   if (!style) throw new Error(`unknown style "${layer.style}"`);
   const transform = layer.transform ?? undefined;
@@ -213,23 +244,25 @@ export class Viewer {
         appendRich(Object.assign(document.createElement('span'), { className: 'rl-label' }), text),
       ),
     );
-    this.batches.forEach((b) => {
-      b.dispose(gl);
-    });
-    this.light.forEach((b) => {
-      b?.dispose(gl);
-    });
+    const [before, lightBefore] = [this.batches, this.light];
     this.batches = [];
     this.light = [];
     const built = this.built;
     if (built && !this.lost && !this.disposed) {
       measured('ruledlab:upload', () => {
-        for (const layer of built.layers) {
-          this.batches.push(batch(gl, layer));
-          this.light.push(layer.moving ? batch(gl, layer.moving) : null);
-        }
+        built.layers.forEach((layer, i) => {
+          // the batch of the same layer before, where it can take the new numbers
+          const kept = reuse(gl, before[i], layer) ? before[i] : null;
+          if (kept) before[i] = /** @type {any} */ (null);
+          this.batches.push(kept ?? batch(gl, layer));
+          const moving = layer.moving;
+          const light = moving && reuse(gl, lightBefore[i], moving) ? lightBefore[i] : null;
+          if (light) lightBefore[i] = null;
+          this.light.push(light ?? (moving ? batch(gl, moving) : null));
+        });
       });
     }
+    for (const b of [...before, ...lightBefore]) b?.dispose(gl);
   }
 
   /**

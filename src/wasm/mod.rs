@@ -26,6 +26,7 @@ mod line_fit;
 mod mesh;
 mod module_info;
 mod polygon;
+mod snap;
 
 // what they share
 mod args;
@@ -50,4 +51,5 @@ pub use linear_complex::linear_complex_of;
 pub use module_info::{live_objects, version};
 pub use polygon::subdivide_polygon;
 pub use ruled_surface::RuledSurface;
+pub use snap::snap_point;
 pub use tool_path::ToolPath;

@@ -18,18 +18,9 @@ import {
   linkableInput,
   sameInput,
 } from '../../www/edit/input.js';
-import {
-  clampTo,
-  dragTo,
-  editBox,
-  invertRigid,
-  nearest,
-  onLine,
-  onPlane,
-  pointerRay,
-  toScreen,
-  transformPoint,
-} from '../../www/edit/geometry.js';
+import { clampTo, editBox, invertRigid, pointerRay, toScreen, transformPoint } from '../../www/edit/geometry.js';
+import { snapPoint } from '../../pkg/ruledlab.js';
+import { readTask, writeTask } from '../../www/task/format.js';
 import { OrbitCamera } from '../../www/camera.js';
 import { coordinates } from '../../www/edit/marks.js';
 
@@ -111,42 +102,73 @@ test('the pointer’s ray goes through the handle it was projected from (any cam
   }
 });
 
-test('a drag in the view plane keeps the handle’s depth; along a line and vertically it stays on that line', () => {
-  const ray = { origin: [0, -10, 0], dir: [0, 1, 0] };
-  // the plane y = 2 (normal along the view): the ray meets it at (0, 2, 0)
-  assert.deepEqual(onPlane(ray, [5, 2, 7], [0, 1, 0]), [0, 2, 0]);
-  assert.equal(onPlane(ray, [0, 2, 0], [1, 0, 0]), null, 'a ray in the plane gives no point');
-  assert.equal(onPlane({ origin: [0, 10, 0], dir: [0, 1, 0] }, [0, 2, 0], [0, 1, 0]), null, 'behind the eye');
-  // the line through (3, 0, 0) along z: nearest the ray (the y-axis) at (3, 0, 0)
-  assert.ok(close(/** @type {number[]} */ (onLine(ray, [3, 0, 5], [0, 0, 2])), [3, 0, 0]));
+test('a drag puts a handle where the core says: the plane facing the view keeps its depth; along a line and vertically it stays on that line', () => {
+  const bounds = { min: [-50, -50, -50], max: [50, 50, 50] };
+  /** @type {import('../../pkg/ruledlab.js').SnapQuery['ray']} */
+  const ray = { origin: [0, -10, 0], direction: [0, 1, 0] };
+  const at = (/** @type {any} */ constraint, /** @type {[number, number, number]} */ start = [5, 2, 7], r = ray) =>
+    snapPoint({ ray: r, start, constraint, targets: [], bounds });
+  const point = (/** @type {import('../../pkg/ruledlab.js').Snapped} */ s) => Array.from(s.point ?? []);
+  // the plane y = 2 through the handle (normal along the view): the ray meets it at (0, 2, 0)
+  assert.deepEqual(point(at({ kind: 'view', normal: [0, 1, 0] })), [0, 2, 0]);
+  assert.equal(
+    at({ kind: 'view', normal: [1, 0, 0] }, [0, 2, 0]).held,
+    'parallel',
+    'a ray in the plane gives no point',
+  );
+  const behind = { origin: [0, 10, 0], direction: [0, 1, 0] };
+  assert.equal(at({ kind: 'view', normal: [0, 1, 0] }, [0, 2, 0], behind).held, 'parallel', 'behind the eye');
+  // the line through (3, 0, 5) along z: nearest the ray (the y-axis) at (3, 0, 0)
+  assert.ok(close(point(at({ kind: 'line', point: [3, 0, 5], direction: [0, 0, 2] })), [3, 0, 0]));
   // a skew line through (1, 0, 0) along (1, 0, 1): (1 + t, 0, t) is nearest the y-axis at t = −½
-  assert.ok(close(/** @type {number[]} */ (onLine(ray, [1, 0, 0], [1, 0, 1])), [0.5, 0, -0.5]));
-  assert.equal(onLine(ray, [0, 0, 0], [0, 3, 0]), null, 'a line along the ray gives no point');
-  // the three modes
-  const start = [1, 2, 3];
-  assert.deepEqual(dragTo('view', ray, start, [0, 1, 0], null), [0, 2, 0]);
-  assert.ok(close(/** @type {number[]} */ (dragTo('vertical', ray, start, [0, 1, 0], null)), [1, 2, 0]));
-  assert.ok(close(/** @type {number[]} */ (dragTo('line', ray, start, [0, 1, 0], [1, 0, 0])), [0, 2, 3]));
+  assert.ok(close(point(at({ kind: 'line', point: [1, 0, 0], direction: [1, 0, 1] })), [0.5, 0, -0.5]));
+  assert.equal(at({ kind: 'line', point: [0, 0, 0], direction: [0, 3, 0] }).held, 'parallel', 'a line along the ray');
+  // the modes through the handle at (1, 2, 3): vertically, along its line (here x)
+  assert.ok(close(point(at({ kind: 'line', point: [1, 2, 3], direction: [0, 0, 1] }, [1, 2, 3])), [1, 2, 0]));
+  assert.ok(close(point(at({ kind: 'line', point: [1, 2, 3], direction: [1, 0, 0] }, [1, 2, 3])), [0, 2, 3]));
+});
+
+test('snapPoint: exact onto its targets, bad targets none, bad queries an error with a code', () => {
+  /** @type {import('../../pkg/ruledlab.js').SnapQuery} */
+  const query = {
+    ray: { origin: [0, -10, 1], direction: [0, 1, 0] },
+    start: [0, 0, 0],
+    constraint: { kind: 'view', normal: [0, 1, 0] },
+    targets: [
+      { kind: 'line', point: [-1, 0, 0], direction: [2, 0, 2] },
+      { kind: 'point', point: [Number.NaN, 0, 0] },
+      { kind: 'line', point: [3, 3, 3], direction: [0, 0, 0] },
+      { kind: 'point', point: [Number.POSITIVE_INFINITY, 0, 0] },
+    ],
+    bounds: { min: [-5, -5, -5], max: [5, 5, 5] },
+  };
+  const { point, snaps } = snapPoint(query);
+  assert.deepEqual(Array.from(point ?? []), [0, 0, 1]);
+  // the line's point nearest the ray, on it: −1 + t·2 with t = ½
+  assert.deepEqual(Array.from(snaps[0] ?? []), [0, 0, 1]);
+  // NaN, a ruling of zero length (its point), a point at infinity
+  assert.equal(snaps[1], undefined);
+  assert.deepEqual(Array.from(snaps[2] ?? []), [3, 3, 3]);
+  assert.equal(snaps[3], undefined);
+  const code = (/** @type {unknown} */ q) => {
+    try {
+      snapPoint(/** @type {any} */ (q));
+      return 'none';
+    } catch (e) {
+      return /** @type {{code: string}} */ (e).code;
+    }
+  };
+  assert.equal(code({ ...query, extra: 1 }), 'invalid-argument');
+  assert.equal(code({ ...query, constraint: { kind: 'circle' } }), 'invalid-argument');
+  assert.equal(code({ ...query, start: [0, 0] }), 'invalid-argument');
+  assert.equal(code({ ...query, targets: Array(4097).fill(query.targets?.[0]) }), 'too-large');
+  assert.equal(code(null), 'invalid-argument');
 });
 
 test('the box of an edit is the scene’s bounds scaled about their centre, a cube where the scene is flat', () => {
   const box = editBox({ min: [0, 0, 0], max: [2, 4, 0] }, 10);
   assert.deepEqual(box, { min: [-19, -18, -20], max: [21, 22, 20] });
   assert.deepEqual(clampTo([100, -100, 5], box), [21, -18, 5]);
-  assert.equal(
-    nearest(
-      [
-        { x: 0, y: 0, visible: true },
-        { x: 5, y: 0, visible: true },
-        { x: 3, y: 0, visible: false },
-      ],
-      4,
-      0,
-      10,
-    ),
-    1,
-  );
-  assert.equal(nearest([{ x: 0, y: 0, visible: true }], 40, 0, 10), -1);
 });
 
 test('a rigid motion and its inverse give back every point', () => {
@@ -247,4 +269,45 @@ test('an edited striction scene measures on the edit: its readouts are those of 
   } finally {
     surface.free();
   }
+});
+
+test('an exercise’s "edit" field: read, written back, and refused where it is not one', () => {
+  const base = {
+    ruledlab: 'exercise',
+    version: 1,
+    id: 'held',
+    title: { en: 'Held' },
+    prompt: { en: 'Move it.' },
+    scene: 'striction',
+    change: ['handles'],
+    goal: [{ value: 'striction.minAbsDelta', below: 0.01 }],
+  };
+  const edit = {
+    snap: false,
+    typed: true,
+    constraints: [
+      { handle: 'rulings.21', on: 'line', direction: [0, 0, 1] },
+      { handle: 'points.3', on: 'plane', normal: [0, 0, 2] },
+      { handle: 'poses.6', on: 'fixed' },
+    ],
+  };
+  const task = readTask({ ...base, edit });
+  assert.deepEqual(task.edit, edit);
+  assert.deepEqual(readTask(writeTask(task)).edit, edit, 'written and read back');
+  assert.equal(readTask(base).edit, null);
+  assert.deepEqual(readTask({ ...base, edit: {} }).edit, { snap: true, typed: true, constraints: [] });
+  for (const bad of [
+    [],
+    { snap: 'yes' },
+    { grid: true },
+    { constraints: {} },
+    { constraints: [{ handle: 'rulings', on: 'fixed' }] },
+    { constraints: [{ handle: 'rulings.1', on: 'circle' }] },
+    { constraints: [{ handle: 'rulings.1', on: 'line' }] },
+    { constraints: [{ handle: 'rulings.1', on: 'line', direction: [0, 1] }] },
+    { constraints: [{ handle: 'rulings.1', on: 'plane', normal: [0, Number.NaN, 1] }] },
+    { constraints: [{ handle: 'rulings.1', on: 'fixed', direction: [0, 0, 1] }] },
+    { constraints: Array(65).fill({ handle: 'rulings.1', on: 'fixed' }) },
+  ])
+    assert.throws(() => readTask({ ...base, edit: bad }), { code: 'invalid-task' }, JSON.stringify(bad).slice(0, 60));
 });

@@ -1,12 +1,13 @@
 // Accessible in fact: colours that stay apart for colour-blind readers (simulated), axe-core at
-// zero WCAG 2.1 A/AA violations on every scene and embed, everything by keyboard with a visible
-// focus, a description of every scene linked to the view, and readouts announced only when an
-// interaction ends, at most once a second.
+// zero WCAG 2.2 A/AA violations on every scene and embed, everything by keyboard with a visible
+// focus, a description of every scene linked to the view — what it shows and its key values, in
+// both languages, following the figure, said when a new figure opens — and readouts announced only
+// when an interaction ends, at most once a second.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
-import { pageSession, ready, shoot, framesAfter, control, showScene } from './browser.mjs';
+import { launch, pageSession, ready, shoot, framesAfter, control, showScene, watch } from './browser.mjs';
 import { difference, parseColour } from './colour.mjs';
 import { countChanged } from './png.mjs';
 
@@ -57,14 +58,16 @@ test('every pair of legend colours shown together stays ≥ 15 ΔE00 apart under
   console.log(`# smallest ΔE00 per scene: ${report.join(', ')}`);
 });
 
-test('axe-core finds no WCAG 2.1 A/AA violation on any scene, in either language, nor on the embeds', async () => {
+test('axe-core finds no WCAG 2.2 A/AA violation on any scene, in either language, nor on the embeds', async () => {
   const first = await session.open();
   const scenes = await first.page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
   await first.page.close();
   const run = async (page, what) => {
     await page.evaluate(AXE);
     const result = await page.evaluate(() =>
-      window.axe.run(document, { runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'] } }),
+      window.axe.run(document, {
+        runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22a', 'wcag22aa'] },
+      }),
     );
     const violations = result.violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
     assert.deepEqual(violations, [], `${what}`);
@@ -163,4 +166,115 @@ test('every scene describes itself to screen readers; readouts are announced onc
   );
   assert.deepEqual(problems, []);
   await page.close();
+});
+
+test('every scene describes what it shows with its key values, in English and in German; the description follows the figure and a new figure is said', async () => {
+  const first = await session.open();
+  const scenes = await first.page.evaluate(() =>
+    window.ruledlab.scenes.map((s) => ({
+      id: s.id,
+      // the number of rulings where a scene has it, else its first slider
+      range: s.params.find((p) => p.key === 'n')?.key ?? s.params.find((p) => p.type === 'range')?.key,
+    })),
+  );
+  await first.page.close();
+  /** @type {Record<string, Record<string, string>>} */
+  const said = { en: {}, de: {} };
+  for (const lang of ['en', 'de']) {
+    const { page, problems } = await session.open(`#scene=${scenes[0].id}&lang=${lang}`);
+    const description = () =>
+      page.evaluate(() => {
+        const canvas = document.querySelector('.rl-view canvas');
+        return document.getElementById(canvas.getAttribute('aria-describedby'))?.textContent ?? '';
+      });
+    for (const { id, range } of scenes) {
+      await showScene(page, `#scene=${id}&lang=${lang}`, id);
+      const text = await description();
+      said[lang][id] = text;
+      assert.ok(text.length > 40, `${id} (${lang}): "${text}"`);
+      assert.match(text, /\d/, `${id} (${lang}) says no value: "${text}"`);
+      // a new figure is said to screen readers (politely)
+      const spoken = await page.evaluate(() => document.querySelector('.rl-stage [aria-live]')?.textContent ?? '');
+      // (the live region says a subscript as a word of its own: "m 18" for m₁₈)
+      assert.equal(spoken.replace(/\s/g, ''), text.replace(/\s/g, ''), `${id} (${lang}) was not said`);
+      // the description follows the figure: another value of a slider says another thing
+      if (range) {
+        const value = await page.evaluate((key) => {
+          const p = window.ruledlab.stage.scene.params.find((q) => q.key === key);
+          const now = Number(window.ruledlab.stage.params[key]);
+          return now + (now + (p.step ?? 1) <= p.max ? 1 : -1) * (p.step ?? (p.max - p.min) / 10);
+        }, range);
+        await page.evaluate(([key, v]) => window.ruledlab.stage.setParam(key, v), [range, value]);
+        await ready(page, 60000);
+        if (!['large'].includes(id))
+          assert.notEqual(await description(), text, `${id} (${lang}): ${range} moved, the same words`);
+      }
+    }
+    assert.deepEqual(problems, []);
+    await page.close();
+  }
+  for (const { id } of scenes) assert.notEqual(said.en[id], said.de[id], `${id}: the same words in both languages`);
+});
+
+test('reflow at 320 px: no scene scrolls sideways (a plot or a formula wider than that scrolls in its own box); focus is never hidden under the view', async () => {
+  const narrow = await launch({ viewport: { width: 320, height: 640 } });
+  try {
+    const page = await narrow.newPage();
+    const problems = watch(page);
+    await page.goto(`${session.url}#scene=striction`);
+    await ready(page);
+    const scenes = await page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));
+    for (const id of scenes) {
+      await showScene(page, `#scene=${id}`, id);
+      const wide = await page.evaluate(() => {
+        // what reaches past the screen's right edge, unless a box that scrolls holds it
+        const scrolls = (/** @type {Element} */ e) => {
+          for (let a = e.parentElement; a; a = a.parentElement)
+            if (
+              ['auto', 'scroll'].includes(getComputedStyle(a).overflowX) &&
+              a.getBoundingClientRect().right <= innerWidth + 1
+            )
+              return true;
+          return false;
+        };
+        return {
+          page: document.documentElement.scrollWidth,
+          out: [...document.querySelectorAll('body *')]
+            .filter(
+              (e) =>
+                e.checkVisibility() &&
+                !e.closest('.rl-sr-only') &&
+                e.getBoundingClientRect().right > innerWidth + 1 &&
+                !scrolls(e),
+            )
+            .map((e) => `${e.tagName.toLowerCase()}.${e.getAttribute('class') ?? ''}`)
+            .slice(0, 5),
+        };
+      });
+      assert.equal(wide.page, 320, `${id}: the page scrolls sideways`);
+      assert.deepEqual(wide.out, [], `${id}: cut off at 320 px`);
+    }
+    // 2.4.11: every control the keyboard reaches shows at least in part beside the sticky view
+    await showScene(page, '#scene=striction', 'striction');
+    await page.focus('.rl-view canvas');
+    const hidden = [];
+    for (let k = 0; k < 40; k++) {
+      await page.keyboard.press('Tab');
+      const seen = await page.evaluate(() => {
+        const e = /** @type {HTMLElement} */ (document.activeElement);
+        if (!e || e === document.body) return null;
+        const r = e.getBoundingClientRect();
+        const v = /** @type {HTMLElement} */ (document.querySelector('.rl-view')).getBoundingClientRect();
+        // on screen, less what the view covers of it (nothing of what is in the view itself)
+        const [top, bottom] = [Math.max(r.top, 0), Math.min(r.bottom, innerHeight)];
+        const covered = e.closest('.rl-view') ? 0 : Math.max(0, Math.min(bottom, v.bottom) - Math.max(top, v.top));
+        return { what: e.getAttribute('name') || e.className || e.tagName, visible: bottom - top - covered > 0 };
+      });
+      if (seen && !seen.visible) hidden.push(seen.what);
+    }
+    assert.deepEqual(hidden, [], 'focused controls hidden under the view');
+    assert.deepEqual(problems, []);
+  } finally {
+    await narrow.close();
+  }
 });

@@ -392,8 +392,10 @@ test('a long press shows a handle’s coordinates; "?" lists the edit keys and g
   const h = await pickHandle(page);
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: h.x, y: h.y }] });
   await page.waitForTimeout(700);
-  const tip = await page.locator('.rl-handle-tip').innerText();
+  // its name and coordinates first (then that the drag from here is fine)
+  const [tip, fine] = (await page.locator('.rl-handle-tip').innerText()).split('\n');
   assert.match(tip, /^Kontrollpunkt \d: −?\d+,\d\d; −?\d+,\d\d; −?\d+,\d\d$/);
+  assert.match(fine, /^fein: 20 % Ihrer Geschwindigkeit$/);
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
   assert.equal(await inputText(page), '', 'a press without a move edits nothing');
   await page.focus('.rl-view canvas');

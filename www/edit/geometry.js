@@ -1,15 +1,16 @@
-// Where a handle is on screen and where a drag puts it: the camera's projection of a handle, the
-// ray through a pointer, and the three ways a handle moves — in the plane through it orthogonal
-// to the view, along the line it belongs to (a ruling, a tool axis), along the world z-axis —
-// kept inside the scene's box. This is the camera's geometry (the page's), not the paper's: no
-// formula of the core is repeated here.
-import { add, cross, length, normalize, scale, sub } from '../math.js';
+// Where a handle is on screen and the ray back through a pixel: the camera's projection of a
+// handle, the ray through a pointer, the rigid motions a set is drawn with, and the box handles
+// stay in. This is the camera's geometry (the page's), not the paper's: where a drag puts a
+// handle — on a plane, a line, snapped — the core decides (edit/snap.js, snapPoint).
+import { add, cross, normalize, scale, sub } from '../math.js';
 
 /** @typedef {[number, number, number]} Vec3 */
 /** @typedef {{origin: number[], dir: number[]}} Ray */
-/** @typedef {'view' | 'line' | 'vertical'} MoveMode */
-
-const dot = (/** @type {number[]} */ a, /** @type {number[]} */ b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+/**
+ * How a drag moves a handle: in the plane through it facing the viewer, along its own line (a
+ * ruling, a tool axis), or along the input's z-axis.
+ * @typedef {'view' | 'line' | 'vertical'} MoveMode
+ */
 
 /**
  * A point moved by a 4 × 4 column-major matrix (a rigid motion; no perspective).
@@ -72,48 +73,6 @@ export function pointerRay(camera, x, y, w, h) {
 }
 
 /**
- * Where the ray meets the plane through `point` with normal `normal`; null when it runs
- * parallel to the plane or meets it behind the eye.
- * @param {Ray} ray @param {number[]} point @param {number[]} normal
- */
-export function onPlane(ray, point, normal) {
-  const d = dot(ray.dir, normal);
-  if (Math.abs(d) < 1e-12) return null;
-  const t = dot(sub(point, ray.origin), normal) / d;
-  return t > 0 ? add(ray.origin, scale(ray.dir, t)) : null;
-}
-
-/**
- * The point of the line through `point` with direction `dir` nearest to the ray (the pointer's
- * "shadow" on the line); null when the line runs along the ray.
- * @param {Ray} ray @param {number[]} point @param {number[]} dir
- */
-export function onLine(ray, point, dir) {
-  const u = normalize(dir);
-  const w0 = sub(point, ray.origin);
-  const b = dot(u, ray.dir);
-  const denominator = 1 - b * b;
-  if (!(length(u) > 0) || denominator < 1e-9) return null;
-  const s = (b * dot(ray.dir, w0) - dot(u, w0)) / denominator;
-  return add(point, scale(u, s));
-}
-
-/**
- * Where a drag puts a handle that was at `start` when the drag began.
- * @param {MoveMode} mode
- * @param {Ray} ray      through the pointer now
- * @param {number[]} start   the handle's world position at the start of the drag
- * @param {number[]} viewDir  the camera's forward direction (the plane's normal in "view" mode)
- * @param {number[] | null} along   the direction of the handle's line ("line" mode)
- * @returns {number[] | null}   null when the pointer gives no point (the handle stays)
- */
-export function dragTo(mode, ray, start, viewDir, along) {
-  if (mode === 'line' && along) return onLine(ray, start, along);
-  if (mode === 'vertical') return onLine(ray, start, [0, 0, 1]);
-  return onPlane(ray, start, viewDir);
-}
-
-/**
  * The box handles stay in: the scene's bounds scaled by `factor` about their centre (a cube
  * when the scene is flat in some direction).
  * @param {{min: number[], max: number[]}} bounds
@@ -129,20 +88,4 @@ export function editBox({ min, max }, factor) {
 /** `p` clamped into the box. */
 export function clampTo(/** @type {number[]} */ p, /** @type {{min: number[], max: number[]}} */ box) {
   return p.map((x, k) => Math.min(box.max[k], Math.max(box.min[k], x)));
-}
-
-/**
- * The nearest of `points` (screen positions) to (x, y) within `reach` CSS px, or -1.
- * @param {Array<{x: number, y: number, visible: boolean}>} points
- * @param {number} x @param {number} y @param {number} reach
- */
-export function nearest(points, x, y, reach) {
-  let best = -1,
-    bestDistance = reach;
-  points.forEach((p, i) => {
-    if (!p.visible) return;
-    const d = Math.hypot(p.x - x, p.y - y);
-    if (d <= bestDistance) [best, bestDistance] = [i, d];
-  });
-  return best;
 }

@@ -6,7 +6,7 @@ import { stripIndices } from '../../pkg/ruledlab.js';
 import { f32 } from '../scene.js';
 import { multiply } from '../math.js';
 import { developmentSvg } from '../export/development.js';
-import { parallelProblems, rulingSet } from '../edit/sets.js';
+import { parallelProblems, rulingSet, rulingValues, strictionTargets } from '../edit/sets.js';
 
 /** A translation by (x, y, z), column-major. */
 const translation = (/** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ z) =>
@@ -69,6 +69,7 @@ function claimsOf(name, n, radius, finer) {
  */
 export function isometryFigure(own, surface, p, { t }, name, finer = null, from = null) {
   const frame = f32(surface.referenceFrame());
+  const inv = surface.invariants();
   const input = surface.segmentsF32();
   const bent = own(surface.bend(p.layout === 'panels' ? 1 : p.t));
   const bentSeg = bent.segmentsF32();
@@ -92,7 +93,7 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null, from 
     const left = multiply(translation(-width, 0, 0), frame);
     const right = multiply(translation(width, 0, local.min[2]), frame);
     inputAt = left;
-    panel(input, f32(surface.invariants().striction), left);
+    panel(input, f32(inv.striction), left);
     panel(bentSeg, f32(bent.invariants().striction), frame);
     panel(f32(surface.developmentInSpace()), f32(surface.developmentStrictionInSpace()), right);
     // the polygon the developed rulings envelop; the striction polygon's image is inscribed in it
@@ -116,7 +117,7 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null, from 
   // δ of the middle pair of rulings, on the surface and on what it is bent to: a Minding
   // isometry keeps it (Section 3); of n − 1 pairs the middle one (for 24 rulings, R₁₁R₁₂)
   const middle = Math.max(0, Math.floor((n - 2) / 2));
-  const delta = surface.invariants().distribution[middle];
+  const delta = inv.distribution[middle];
   const deltaBent = bent.invariants().distribution[middle];
   return {
     bounds: box,
@@ -147,7 +148,16 @@ export function isometryFigure(own, surface, p, { t }, name, finer = null, from 
       },
     ],
     data: { segments: bent.segments() },
-    problems: parallelProblems(surface.invariants().parallel, n, t),
-    ...(from ? { input: { sets: [rulingSet(surface.segments(), inputAt)], from } } : {}),
+    problems: parallelProblems(inv.parallel, n, t),
+    // the handles snap onto the striction points (a cone's: its apex), with φ, h, δ beside them
+    ...(from
+      ? {
+          input: {
+            sets: [{ ...rulingSet(surface.segments(), inputAt), targets: [strictionTargets(inv.striction, n)] }],
+            from,
+            values: rulingValues(inv, n, t),
+          },
+        }
+      : {}),
   };
 }

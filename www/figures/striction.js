@@ -6,7 +6,7 @@
 import { stripIndices } from '../../pkg/ruledlab.js';
 import { bounds, f32 } from '../scene.js';
 import { DATA_COMPLEX_TOLERANCE, ROUNDING } from '../limits.js';
-import { parallelProblems } from '../edit/sets.js';
+import { footpointTargets, parallelProblems, rulingSet, rulingValues, strictionTargets } from '../edit/sets.js';
 
 /**
  * The striction figure of a discrete ruled surface: a sample of an analytic surface with
@@ -20,9 +20,12 @@ import { parallelProblems } from '../edit/sets.js';
  * @param {string} name   the surface's name, for the description
  * @param {boolean} [orders]   also measure the orders, halving the spacing (the built-in surfaces,
  *   about which the text makes its claim)
+ * @param {string | null} [from]   what the surface is, for its handles (the striction scene): the
+ *   rulings' endpoints, snapping onto the footpoints and striction points drawn, with φ, h, δ
+ *   beside a moving end
  * @returns {import('../scene.js').Built}
  */
-export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders = false) {
+export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders = false, from = null) {
   const { t } = ctx;
   const closed = ranges.closed;
   const n = surface.length;
@@ -74,7 +77,22 @@ export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders 
       });
     }
   }
-  const middle = inv.distributionMean.length ? inv.distributionMean[Math.floor(inv.distributionMean.length / 2)] : NaN;
+  // δ̄ of the readout is the middle interior ruling's: marked in the view where it is
+  const mid = Math.floor(inv.distributionMean.length / 2);
+  const middle = inv.distributionMean.length ? inv.distributionMean[mid] : NaN;
+  const midRuling = mid + (inv.distributionMean.length === n ? 0 : 1);
+  const midAt = Array.from(inv.striction.subarray(3 * mid, 3 * mid + 3));
+  /** @type {import('../scene.js').Label[]} */
+  const labels =
+    inv.distributionMean.length && midAt.every(Number.isFinite)
+      ? [{ at: midAt, text: t('striction.label.meanDelta', { i: midRuling }) }]
+      : [];
+  /** @type {import('../scene.js').SnapTargets[]} */
+  const targets = [];
+  if (p.normals) targets.push(footpointTargets(inv.footpoints, n));
+  if (p.polygon) targets.push(strictionTargets(inv.striction, n));
+  if (p.axis && complex.kind !== 'general' && Number.isFinite(complex.axisSegment[0]))
+    targets.push({ kind: 'line', points: Float64Array.from(complex.axisSegment), name: 'snap.complexAxis' });
   const shown = [
     p.normals && t('striction.describe.normals'),
     p.polygon && t('striction.describe.polygon'),
@@ -85,10 +103,13 @@ export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders 
   // the smallest |δ| of a pair of rulings: 0 where two rulings meet (a torsal pair)
   const deltas = Array.from(inv.distribution, Math.abs).filter(Number.isFinite);
   const surfaceName = t(`surface.${name}`);
+  const least = deltas.length ? Math.min(...deltas) : Number.NaN;
+  const keyValues = { mid: midRuling, mean: middle, least };
   return {
     bounds: bounds(segments),
     camera: { yaw: -0.9, pitch: 0.45 },
     layers,
+    labels,
     readouts: [
       { label: 'readout.rulings', value: n },
       { label: 'readout.parallelPairs', value: errors?.parallelPairs ?? parallelPairs },
@@ -117,7 +138,7 @@ export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders 
       ...measured,
     ],
     claims,
-    measures: { 'striction.minAbsDelta': deltas.length ? Math.min(...deltas) : Number.NaN },
+    measures: { 'striction.minAbsDelta': least },
     problems: parallelProblems(inv.parallel, n, t),
     description: errors
       ? t('striction.describe', {
@@ -127,13 +148,25 @@ export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders 
           shown: shown.length ? shown.join(', ') : t('describe.nothingElse'),
           midpoint: errors.midpoint,
           footpoint: errors.footpoint,
+          ...keyValues,
         })
       : t('striction.describeEdited', {
           surface: surfaceName,
           n,
           shown: shown.length ? shown.join(', ') : t('describe.nothingElse'),
+          parallel: parallelPairs,
+          ...keyValues,
         }),
     data: { segments: surface.segments() },
+    ...(from
+      ? {
+          input: {
+            sets: [{ ...rulingSet(surface.segments(), undefined, closed), targets }],
+            from,
+            values: rulingValues(inv, n, t),
+          },
+        }
+      : {}),
   };
 }
 

@@ -17,6 +17,30 @@ export function createBuffer(gl, data, target = gl.ARRAY_BUFFER) {
 }
 
 /**
+ * Puts `data` into `buffer` (bound to `target`): nothing when it holds these numbers already (the
+ * `last` it was given), in place when the size is the same, else anew. Returns `data` (the next
+ * `last`). A drag changes one handle: most layers come back equal and go to the GPU no more.
+ * @template {ArrayBufferView & ArrayLike<number>} T
+ * @param {WebGL2RenderingContext} gl
+ * @param {WebGLBuffer | null} buffer
+ * @param {T} data
+ * @param {T | null} last
+ * @param {number} [target]
+ * @returns {T}
+ */
+export function updateBuffer(gl, buffer, data, last, target = gl.ARRAY_BUFFER) {
+  if (last && last.length === data.length) {
+    let same = true;
+    for (let i = 0; i < data.length && same; i++) same = Object.is(data[i], last[i]);
+    if (same) return data;
+  }
+  gl.bindBuffer(target, buffer);
+  if (last && last.length === data.length) gl.bufferSubData(target, 0, data);
+  else gl.bufferData(target, data, gl.STATIC_DRAW);
+  return data;
+}
+
+/**
  * Binds a float attribute of `size` components to `buffer` (bound VAO assumed).
  * @param {WebGL2RenderingContext} gl
  * @param {number} location

@@ -2,7 +2,7 @@
 // dashed, optionally moved by a model matrix. A batch takes the core's f32 segments (6 floats
 // per segment) or a polyline (3 per point); records holding NaN are left out when uploading.
 import { cachedProgram, beginDraw, prepareProgram } from './program.js';
-import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
+import { createBuffer, floatAttribute, updateBuffer, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
 layout(location = 0) in vec2 corner;   // x: 0 at p0, 1 at p1; y: -1 or 1 across
@@ -113,7 +113,20 @@ export class LineBatch {
     floatAttribute(gl, 2, inst, 3, { stride: 24, offset: 12, divisor: 1 });
     gl.bindVertexArray(null);
     this.buffers = [corners, inst];
+    this.data = data;
     this.transparent = (style.color[3] ?? 1) < 1;
+  }
+
+  /** New segments for the same style: uploaded only where they changed (see updateBuffer). */
+  update(
+    /** @type {WebGL2RenderingContext} */ gl,
+    /** @type {Float32Array} */ segments,
+    /** @type {ArrayLike<number>} */ transform = IDENTITY,
+  ) {
+    const data = finiteSegments(segments);
+    this.data = updateBuffer(gl, this.buffers[1], data, this.data);
+    this.count = data.length / 6;
+    this.model = new Float32Array(transform);
   }
 
   /** @param {WebGL2RenderingContext} gl @param {import('../viewer.js').Frame} frame */

@@ -4,7 +4,7 @@
 // screen-space derivatives, so the facets of a discrete model show honestly; a mesh whose
 // facets are smaller than a pixel brings vertex normals from the core instead (no moiré).
 import { cachedProgram, beginDraw, prepareProgram } from './program.js';
-import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
+import { createBuffer, floatAttribute, updateBuffer, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
 layout(location = 0) in vec3 position;
@@ -70,6 +70,29 @@ export class TriangleMesh {
     if (this.nbo) floatAttribute(gl, 1, this.nbo, 3);
     this.ibo = createBuffer(gl, indices, gl.ELEMENT_ARRAY_BUFFER);
     gl.bindVertexArray(null);
+    /** @type {[Float32Array, Uint32Array, Float32Array | null]} what the buffers hold */
+    this.data = [positions, indices, normals ?? null];
+  }
+
+  /**
+   * New positions, indices (and normals) for the same style, uploaded only where they changed;
+   * false where a mesh with normals and one without would share a batch (it is made anew).
+   * @param {WebGL2RenderingContext} gl @param {Float32Array} positions @param {Uint32Array} indices
+   * @param {ArrayLike<number>} [transform] @param {Float32Array} [normals]
+   */
+  update(gl, positions, indices, transform = IDENTITY, normals = undefined) {
+    if (!!normals !== this.smooth) return false;
+    gl.bindVertexArray(this.vao);
+    const [p, i, n] = this.data;
+    this.data = [
+      updateBuffer(gl, this.vbo, positions, p),
+      updateBuffer(gl, this.ibo, indices, i, gl.ELEMENT_ARRAY_BUFFER),
+      normals && this.nbo ? updateBuffer(gl, this.nbo, normals, n) : null,
+    ];
+    gl.bindVertexArray(null);
+    this.count = indices.length;
+    this.model = new Float32Array(transform);
+    return true;
   }
 
   /** @param {WebGL2RenderingContext} gl @param {import('../viewer.js').Frame} frame */

@@ -1,6 +1,6 @@
 // Points as round, lightly shaded sprites (3 floats per point; NaN points are left out).
 import { cachedProgram, beginDraw, prepareProgram } from './program.js';
-import { createBuffer, floatAttribute, IDENTITY } from './buffers.js';
+import { createBuffer, floatAttribute, updateBuffer, IDENTITY } from './buffers.js';
 
 const VS = `#version 300 es
 layout(location = 0) in vec3 position;
@@ -64,6 +64,19 @@ export class PointBatch {
     this.buffer = createBuffer(gl, data);
     floatAttribute(gl, 0, this.buffer, 3);
     gl.bindVertexArray(null);
+    this.data = data;
+  }
+
+  /** New points for the same style: uploaded only where they changed (see updateBuffer). */
+  update(
+    /** @type {WebGL2RenderingContext} */ gl,
+    /** @type {Float32Array} */ points,
+    /** @type {ArrayLike<number>} */ transform = IDENTITY,
+  ) {
+    const data = finitePoints(points);
+    this.data = updateBuffer(gl, this.buffer, data, this.data);
+    this.count = data.length / 3;
+    this.model = new Float32Array(transform);
   }
 
   /** @param {WebGL2RenderingContext} gl @param {import('../viewer.js').Frame} frame */

@@ -5,7 +5,7 @@ import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { convergenceFigure, convergenceSample } from '../figures/convergence.js';
 import { surfaceOptions } from '../catalogue.js';
-import { parallelProblems, rulingSet } from '../edit/sets.js';
+import { parallelProblems, rulingSet, rulingValues } from '../edit/sets.js';
 
 /**
  * The reader's edit of the three rulings: their common perpendiculars, footpoints and striction
@@ -89,7 +89,9 @@ export const scene = defineScene({
       const built = edited ? editedSample(sample, ctx) : convergenceFigure(own, analytic, q, ctx);
       // the handles: the endpoints of the three rulings
       const from = ctx.t('edit.from.convergence', { surface: ctx.t(`surface.${name}`), u: q.u });
-      return { ...built, input: { sets: [rulingSet(sample.segments())], from } };
+      // (three rulings: their invariants cost nothing beside the figure's)
+      const values = rulingValues(sample.invariants(), 3, ctx.t);
+      return { ...built, input: { sets: [rulingSet(sample.segments())], from, values } };
     });
   },
 });

@@ -9,6 +9,13 @@ import { ROUNDING, TURNING_FROM, TURNING_STEPS } from '../limits.js';
 import { pointSet } from '../edit/sets.js';
 
 /** The control polygon: eight points in a zigzag in the plane z = 0 (the project's choice; the paper gives no data). */
+/** The plane of Figs. 7–8, z = 0 (a point on it, its normal), as a snap target. */
+const FIGURE_PLANE = /** @type {import('../scene.js').SnapTargets} */ ({
+  kind: 'plane',
+  points: new Float64Array([0, 0, 0, 0, 0, 1]),
+  name: 'snap.figurePlane',
+});
+
 const POLYGON = new Float64Array([
   0, 0, 0, 2, 3, 0, 4, 0.5, 0, 6.5, 3.5, 0, 8, -0.5, 0, 5.5, -3, 0, 3, -1.5, 0, 1, -3.2, 0,
 ]);
@@ -153,8 +160,12 @@ export const scene = defineScene({
         late: angles[TURNING_STEPS],
         last: TURNING_STEPS,
       }),
-      // the handles: the control points
-      input: { sets: [pointSet(Float64Array.from(polygon))], from: t('edit.from.curves') },
+      // the handles: the control points, snapping onto each other and onto the plane of the
+      // figures (z = 0)
+      input: {
+        sets: [{ ...pointSet(Float64Array.from(polygon)), targets: [FIGURE_PLANE] }],
+        from: t('edit.from.curves'),
+      },
     };
   },
 });

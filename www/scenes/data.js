@@ -2,7 +2,7 @@
 import { LineCongruence, RuledSurface, stripIndices, gridIndices } from '../../pkg/ruledlab.js';
 import { focalFigure } from '../figures/focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
-import { lineSet, parallelProblems, rulingSet } from '../edit/sets.js';
+import { lineSet, parallelProblems, rulingSet, rulingValues, strictionTargets } from '../edit/sets.js';
 
 /**
  * What the scene shows before anything is imported: five rulings of a small twisted strip.
@@ -98,10 +98,20 @@ export const scene = defineScene({
           { label: 'readout.rulings', value: s.length },
           { label: 'readout.parallelPairs', value: parallel },
         ],
-        description: t('data.describe', { n: s.length, parallel }),
+        description: t('data.describe', {
+          n: s.length,
+          parallel,
+          least: Math.min(...Array.from(inv.distribution, Math.abs).filter(Number.isFinite)),
+        }),
         problems: parallelProblems(inv.parallel, s.length, t),
         data: { segments },
-        input: { sets: [rulingSet(s.segments())], from },
+        input: {
+          sets: [
+            { ...rulingSet(s.segments(), undefined, closed), targets: [strictionTargets(inv.striction, s.length)] },
+          ],
+          from,
+          values: rulingValues(inv, s.length, t),
+        },
       };
     });
   },

@@ -4,7 +4,7 @@
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { POST_PARAMS, givenPath, postOf, programFile, deviationFigure } from '../figures/toolpath.js';
-import { poseSet } from '../edit/sets.js';
+import { poseSet, poseValues } from '../edit/sets.js';
 
 /** @type {Record<string, Partial<import('../../pkg/ruledlab.js').SubdivideOptions>>} */
 const SCHEMES = {
@@ -112,6 +112,7 @@ export const scene = defineScene({
         }
       const given0 = profile ? maxDeviation(path, profile) : Number.NaN;
       const centres = refined.barycentres();
+      const perPose = profile ? refined.deviationPerPose(profile) : null;
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
         ...(profile
@@ -213,7 +214,7 @@ export const scene = defineScene({
               deviation,
             }),
         figure: deviationFigure({
-          perPose: profile ? refined.deviationPerPose(profile) : null,
+          perPose,
           stride: 2 ** steps,
           post,
           t,
@@ -222,6 +223,7 @@ export const scene = defineScene({
         // turns the tool about the tip)
         input: {
           sets: [poseSet(edited ?? path.segments())],
+          values: poseValues(path.quality().angleStep, perPose, 2 ** steps, t),
           from: imported
             ? t('edit.from.importedPoses', { poses: path.length })
             : t('edit.from.poses', { poses: Number(p.poses) }),

@@ -3,7 +3,7 @@
 // midpoint m_i of the two footpoints on R_i.
 import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
-import { parallelProblems, rulingSet } from '../edit/sets.js';
+import { footpointTargets, parallelProblems, rulingSet, rulingValues } from '../edit/sets.js';
 
 /** The point t of the way along segment i of flat segments `s`. */
 const along = (/** @type {Float64Array} */ s, /** @type {number} */ i, /** @type {number} */ t) =>
@@ -88,10 +88,15 @@ export const scene = defineScene({
         description: t(edited ? 'notation.describeEdited' : 'notation.describe', {
           angle: inv.angle[1],
           distance: inv.distance[1],
+          delta: inv.distribution[1],
           spacing,
         }),
         // the handles: the endpoints of the three rulings
-        input: { sets: [rulingSet(seg)], from: t('edit.from.notation', { u, spacing }) },
+        input: {
+          sets: [{ ...rulingSet(seg), targets: [footpointTargets(inv.footpoints, 3)] }],
+          from: t('edit.from.notation', { u, spacing }),
+          values: rulingValues(inv, 3, t),
+        },
       };
     });
   },

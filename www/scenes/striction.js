@@ -5,7 +5,6 @@ import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
 import { strictionFigure, exactCurve } from '../figures/striction.js';
 import { surfaceOptions, rangesOf } from '../catalogue.js';
-import { rulingSet } from '../edit/sets.js';
 
 /** @typedef {{surface: string, n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis: boolean}} StrictionParams */
 
@@ -49,10 +48,9 @@ export const scene = defineScene({
       const ranges = rangesOf(name);
       const edited = ctx.input?.rulings;
       const surface = own(edited ? RuledSurface.fromSegments(edited) : analytic.sample(p.n, ranges));
-      const built = strictionFigure(surface, edited ? null : analytic, ranges, p, ctx, name, true);
       // the handles: every ruling's endpoints a_i, b_i
       const from = ctx.t('edit.from.surface', { surface: ctx.t(`surface.${name}`), n: p.n });
-      return { ...built, input: { sets: [rulingSet(surface.segments())], from } };
+      return strictionFigure(surface, edited ? null : analytic, ranges, p, ctx, name, true, from);
     });
   },
 });

@@ -35,6 +35,11 @@ export class Announcer {
     else this.timer = window.setTimeout(speak, wait);
   }
 
+  /** Forgets an announcement waiting for its second (a new figure is said instead). */
+  cancel() {
+    clearTimeout(this.timer);
+  }
+
   dispose() {
     clearTimeout(this.timer);
   }

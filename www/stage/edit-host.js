@@ -1,9 +1,13 @@
 // Editing in a stage: the editor of the scene's handles (edit/editor.js) with the buttons around
-// it — ✎ (keyboard editing), undo and redo in the toolbar, the edit bar (how a drag moves a
-// handle, Done), the note "edited from …" with the way back to the built-in input, and "Edit as
-// data" for a scene without handles. The editor's moves go to the stage as changes of the input
-// (Stage.setInput); what is shown here follows the stage's state and the editor's history.
+// it — ✎ (editing: every point ringed, the keyboard moves them), undo and redo in the toolbar,
+// the edit bar (how a drag moves a point, snapping, Done), the chosen point's coordinates and
+// values in the panel (edit/coords.js), the note "edited from …" with the way back to the
+// built-in input, and "Edit as data" for a scene without handles. The editor's moves go to the
+// stage as changes of the input (Stage.setInput); what is shown here follows the stage's state
+// and the editor's history. Editing ends when the scene changes; entering it keeps the page where
+// it is.
 import { Editor } from '../edit/editor.js';
+import { CoordsBox } from '../edit/coords.js';
 import { appendRich } from '../ui/richtext.js';
 import { labelButton } from './elements.js';
 import { touchScreen } from './touch.js';
@@ -24,16 +28,25 @@ export class EditHost {
       apply: (input, ended, said) => stage.setInput(input, ended, said),
       say: (text) => stage.announcer.say(text),
       changed: () => this.show(),
+      built: () => stage.session.built,
+      task: () => stage.task,
     });
     this.editor.enabled = !!stage.options.editable;
+    this.coords = new CoordsBox(this.editor, els.coords);
+    /** @type {Array<{handle: string, why: string}>} an exercise's constraints that could not hold (said once) */
+    this.lifted = [];
     stage.viewer.overlays.push((m) => this.editor.place(m));
     els.buttons.edit.addEventListener('click', () => {
       this.editor.setEditing(!this.editor.editing);
-      if (this.editor.editing) els.canvas.focus();
+      if (!this.editor.editing) return;
+      // the keyboard goes to the view, the page stays where it is (the exercise in sight)
+      els.canvas.focus({ preventScroll: true });
+      if (this.covered()) stage.viewer.fit();
     });
     els.buttons.undo.addEventListener('click', () => this.editor.undo());
     els.buttons.redo.addEventListener('click', () => this.editor.redo());
     els.done.addEventListener('click', () => this.editor.setEditing(false));
+    els.snap.addEventListener('click', () => this.editor.setSnapping(!this.editor.snapOn));
     for (const [mode, button] of Object.entries(els.modes))
       button.addEventListener('click', () =>
         this.editor.setMode(/** @type {import('../edit/geometry.js').MoveMode} */ (mode)),
@@ -52,10 +65,35 @@ export class EditHost {
     return this.editor.enabled;
   }
 
+  /**
+   * A scene (or its built-in input) shown anew: editing ends where the scene changed, the history
+   * goes, the exercise's rules are taken (those that cannot hold are kept in `lifted`, for a note).
+   * @param {import('../scene.js').Editable | null | undefined} editable
+   * @param {boolean} sceneChanged
+   */
+  enter(editable, sceneChanged) {
+    if (sceneChanged) this.editor.setEditing(false);
+    this.lifted = this.editor.enter(editable, this.stage.task?.edit ?? null);
+  }
+
+  /** Whether a handle is hidden under the view's bars or outside the view (Fit frames them between). */
+  covered() {
+    const { els, viewer } = this.stage;
+    const view = els.canvas.getBoundingClientRect();
+    const bar = els.bar.getBoundingClientRect();
+    const m = viewer.camera.viewProj(view.width / (view.height || 1));
+    return this.editor.handles().some(({ world }) => {
+      const cw = m[3] * world[0] + m[7] * world[1] + m[11] * world[2] + m[15];
+      const x = (((m[0] * world[0] + m[4] * world[1] + m[8] * world[2] + m[12]) / cw + 1) / 2) * view.width;
+      const y = ((1 - (m[1] * world[0] + m[5] * world[1] + m[9] * world[2] + m[13]) / cw) / 2) * view.height;
+      return cw <= 0 || x < 0 || x > view.width || y < 0 || view.top + y > bar.top;
+    });
+  }
+
   /** The labels of the edit's buttons in the stage's language. */
   localize() {
     const { t } = this.stage.i18n;
-    const { buttons, modes, modeLabel, modeGroup, done, asData } = this.stage.els;
+    const { buttons, modes, modeLabel, modeGroup, done, asData, snap } = this.stage.els;
     labelButton(buttons.edit, '✎', t('edit.button'));
     buttons.edit.title = t('edit.buttonTitle');
     buttons.undo.textContent = '↶';
@@ -70,6 +108,8 @@ export class EditHost {
       labelButton(button, MODE_SIGNS[/** @type {keyof typeof MODE_SIGNS} */ (mode)], t(`edit.mode.${mode}`));
       button.title = t(`edit.mode.${mode}Title`);
     }
+    labelButton(snap, '◈', t('edit.snap'));
+    snap.title = t('edit.snapTitle');
     done.textContent = t('edit.done');
     asData.textContent = t('edit.asData');
     this.show();
@@ -91,10 +131,15 @@ export class EditHost {
     for (const [mode, button] of Object.entries(els.modes))
       button.setAttribute('aria-pressed', String(editor.mode === mode));
     els.modes.line.hidden = !editor.sets.some((set) => set.shape === 'pairs');
+    els.snap.hidden = !editor.rules.exercise.snap;
+    els.snap.setAttribute('aria-pressed', String(editor.snapOn));
     const doc = els.root.ownerDocument;
     // (in an exercise its own Start over takes the note's place)
     els.edited.hidden = !stage.input || !!stage.task;
-    if (stage.input && !stage.task) {
+    // (written again only when what it says changes: a drag calls this every frame)
+    const note = `${editor.from}\n${stage.inputNote}\n${t('edit.restore')}`;
+    if (stage.input && !stage.task && els.edited.dataset.note !== note) {
+      els.edited.dataset.note = note;
       const text = doc.createElement('p');
       appendRich(text, t('edit.from', { from: editor.from }));
       const back = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('edit.restore') });
@@ -109,11 +154,13 @@ export class EditHost {
         );
       els.edited.replaceChildren(...parts);
     }
+    this.coords.show();
     els.root.classList.toggle('rl-has-handles', active);
     const touch = touchScreen();
-    els.hint.textContent = t(
+    const hint = t(
       touch ? (active ? 'view.hintTouchEdit' : 'view.hintTouch') : active ? 'view.hintEdit' : 'view.hintMouse',
     );
+    if (els.hint.textContent !== hint) els.hint.textContent = hint;
   }
 
   /** "Edit as data" where the scene offers it and the reader may edit. */

@@ -18,6 +18,7 @@
  * @property {Record<import('../edit/geometry.js').MoveMode, HTMLButtonElement>} modes
  * @property {HTMLElement} modeGroup
  * @property {HTMLElement} modeLabel
+ * @property {HTMLButtonElement} snap   snapping on or off
  * @property {HTMLButtonElement} done
  * @property {{edit: HTMLButtonElement, undo: HTMLButtonElement, redo: HTMLButtonElement, fit: HTMLButtonElement, reset: HTMLButtonElement, fullscreen: HTMLButtonElement, help: HTMLButtonElement}} buttons
  * @property {HTMLElement} progress
@@ -33,6 +34,7 @@
  * @property {HTMLElement} taskBox   the exercise: prompt, answers, Check, hints
  * @property {HTMLElement} paperCard the paper's figure shown, and the way back to it
  * @property {HTMLElement} edited    "edited from: …", with the way back to the built-in input
+ * @property {HTMLElement} coords    the chosen point: its coordinates (typed) and values
  * @property {HTMLElement} form      the controls
  * @property {HTMLButtonElement} asData   "Edit as data" of a scene without handles
  * @property {HTMLElement} player    speed and single step
@@ -84,14 +86,15 @@ export function stageElements(host, { page = false }) {
   status.setAttribute('aria-live', 'polite');
 
   // while editing (in the hint's place): how a drag moves a handle (for those without Shift and Alt), and Done
-  const modes = { view: button(), line: button(), vertical: button() };
+  const modes = { view: button('rl-mode-view'), line: button('rl-mode-line'), vertical: button('rl-mode-vertical') };
   const modeLabel = el('span', { className: 'rl-editbar-label' });
   const modeGroup = el('div', { className: 'rl-modes' });
   modeGroup.setAttribute('role', 'group');
   modeGroup.append(modeLabel, ...Object.values(modes));
+  const snap = button('rl-snap');
   const done = button('rl-done');
   const editBar = el('div', { className: 'rl-editbar', hidden: true });
-  editBar.append(modeGroup, done);
+  editBar.append(modeGroup, snap, done);
   const buttons = {
     edit: button('rl-edit', true),
     undo: button('rl-undo', true),
@@ -123,6 +126,7 @@ export function stageElements(host, { page = false }) {
     taskBox: el('section', { className: 'rl-task', hidden: true }),
     paperCard,
     edited: el('div', { className: 'rl-edited', hidden: true }),
+    coords: el('section', { className: 'rl-coords', hidden: true }),
     form,
     asData: button('rl-as-data', true),
     player: el('div', { className: 'rl-player', hidden: true }),
@@ -158,6 +162,7 @@ export function stageElements(host, { page = false }) {
     modes,
     modeGroup,
     modeLabel,
+    snap,
     done,
     buttons,
     progress,

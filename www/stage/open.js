@@ -127,6 +127,9 @@ export async function openScene(stage, scene, params, options) {
   const input = options.input ?? null;
   const fits = stage.enter(scene, { ...defaults(scene), ...params }, { camera: options.camera ?? null, input });
   if (!fits) notes.push({ key: 'input', note: 'note.badInput' });
+  // an exercise's constraint that cannot hold is said, and lifted
+  for (const { handle, why } of stage.edit.lifted)
+    notes.push({ key: 'edit', note: `snap.lifted.${why}`, vars: { handle } });
   stage.results.notes(notes);
   if (options.autoplay && !Player.reducedMotion()) {
     const key = stage.player.playableKey();
@@ -192,7 +195,8 @@ function leaveTask(stage) {
  * @param {EnterOptions} options
  */
 export function enterScene(stage, scene, params, { camera = null, fit = true, input = null, history = false }) {
-  if (stage.scene !== scene) stage.player.stop();
+  const sceneChanged = stage.scene !== scene;
+  if (sceneChanged) stage.player.stop();
   stage.input = null;
   if (!history) stage.editor.cancel();
   stage.scene = scene;
@@ -216,7 +220,7 @@ export function enterScene(stage, scene, params, { camera = null, fit = true, in
   stage.paperCard.show();
   const editable = stage.compute({ fit: fit && !camera })?.input;
   if (history) stage.editor.show(editable);
-  else stage.editor.enter(editable);
+  else stage.edit.enter(editable, sceneChanged);
   const fits = !input || (!!editable && fitsSets(input, editable.sets));
   if (input && fits) {
     stage.input = copyInput(input);

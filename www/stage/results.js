@@ -3,7 +3,9 @@
 // caption), the figure beside the view and the downloads; after a failure the error, over the
 // view and next to the control it concerns, in the stage's language (the last picture stays);
 // and the notes about link values that were not used. An exercise hides what would give its
-// answer away.
+// answer away. While a point is dragged only what follows the hand is shown each frame (the
+// readout, the problems, the handles); the rest once the move ends. A new figure's description
+// is said to screen readers (politely); D says it again.
 import { showLegend } from '../ui/legend.js';
 import { showReadout, showClaims } from '../ui/readout.js';
 import { describeError } from '../ui/errors.js';
@@ -15,6 +17,15 @@ export class Results {
   /** @param {import('../stage.js').Stage} stage */
   constructor(stage) {
     this.stage = stage;
+    /** the scene whose description was said last (a new one is said once) */
+    this.said = '';
+    /** @type {string} what the description says now */
+    this.description = '';
+  }
+
+  /** What the figure shows, in words (as the description says it). */
+  spoken() {
+    return plainRich(this.description);
   }
 
   /** Shows what a computation built (`final`: no heavier result is on its way). */
@@ -24,27 +35,45 @@ export class Results {
     if (!scene) return;
     const { t } = i18n;
     const doc = els.root.ownerDocument;
+    // a point on the move: the readout, the problems and the handles follow it; the rest waits
+    // for the move's end (the same build is shown again then)
+    const editor = stage.edit.editor;
+    const moving = !!(editor.drag || editor.keys.run) && !!stage.input;
+    editor.show(built.input);
+    const problems = (built.problems ?? []).join('\n');
+    if (els.problems.dataset.said !== problems || !moving) {
+      els.problems.dataset.said = problems;
+      els.problems.replaceChildren(...(built.problems ?? []).map((text) => appendRich(doc.createElement('li'), text)));
+    }
+    els.problems.hidden = !built.problems?.length;
+    showReadout(els.readout, this.readouts(built), i18n);
+    if (moving) {
+      delete els.root.dataset.ready;
+      return;
+    }
     showLegend(els.legend, scene, stage.params, t);
     // the legend may cover another share of a narrow view now: a fitted view is framed anew (not
     // while the reader moves the geometry: the view holds still under the pointer)
     if (els.root.classList.contains('rl-narrow') && stage.viewer.camera.atHome() && !stage.input) stage.viewer.fit();
-    // the handles where the core has them (an edit comes back in the core's own form: a tool
-    // axis keeps the tool's length); the edit itself stays as the reader made it, bit for bit
-    stage.edit.editor.show(built.input);
-    els.problems.replaceChildren(...(built.problems ?? []).map((text) => appendRich(doc.createElement('li'), text)));
-    els.problems.hidden = !built.problems?.length;
     stage.edit.showAsData(built);
     // an exercise hides what would give its answer away (the readout and the sentences that say it)
     const hidden = stage.task?.hide ?? [];
-    showReadout(els.readout, this.readouts(built), i18n);
     showClaims(els.claims, hidden.includes('claims') ? [] : (built.claims ?? []), t);
     els.note.hidden = !built.note;
     els.note.textContent = built.note ?? '';
     const description = stage.task && hidden.length ? say(stage.task.title, i18n.lang) : built.description;
+    this.description = description;
     els.description.replaceChildren();
     appendRich(els.description, description);
     els.caption.replaceChildren();
     appendRich(els.caption, description);
+    // a new figure (another scene, or an exercise) is described once, politely
+    const figure = `${scene.id} ${stage.task?.id ?? ''} ${i18n.lang}`;
+    if (final && figure !== this.said) {
+      this.said = figure;
+      stage.announcer.cancel();
+      stage.announcer.say(this.spoken());
+    }
     els.figure.replaceChildren(...(built.figure ? [built.figure()] : []));
     els.downloads.replaceChildren(
       ...(built.downloads ?? []).map((d) => {

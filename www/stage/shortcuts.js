@@ -1,15 +1,18 @@
 // The keys of a stage and the list of them: ? opens the list of gestures (first, on a touch
-// screen) and keys, R resets, Space plays or pauses, "." steps, E starts keyboard editing, Ctrl+Z
-// and Ctrl+Shift+Z / Ctrl+Y undo and redo an edit (the view's own keys are the camera's:
-// camera.js). Every key asks the stage for the change a button would make.
+// screen) and keys, R resets, Space plays or pauses, "." steps, D says what the figure shows, E
+// starts keyboard editing, Ctrl+Z and Ctrl+Shift+Z / Ctrl+Y undo and redo an edit (the view's
+// own keys are the camera's: camera.js; S and the keys that move a point are the editor's:
+// edit/keys.js). Every key asks the stage for the change a button would make.
 import { touchScreen } from './touch.js';
 
 /** The keys of the view and what each does (i18n keys). @type {Array<[string, string]>} */
 const KEYS = [
   ['←  →  ↑  ↓', 'keys.orbit'],
+  ['J  L  I  K', 'keys.orbitLetters'],
   ['Shift + ←  →  ↑  ↓', 'keys.pan'],
   ['+  −', 'keys.zoom'],
-  ['F', 'keys.fit'],
+  ['F  0  Home', 'keys.fit'],
+  ['D', 'keys.describe'],
   ['R', 'keys.reset'],
   ['Space', 'keys.play'],
   ['.', 'keys.step'],
@@ -24,6 +27,7 @@ const EDIT_KEYS = [
   ['←  →  ↑  ↓', 'keys.editMove'],
   ['PageUp  PageDown', 'keys.editDepth'],
   ['Shift', 'keys.editFine'],
+  ['S', 'keys.snap'],
   ['Enter', 'keys.editEnd'],
   ['Esc', 'keys.editCancel'],
   ['Ctrl+Z', 'keys.undo'],
@@ -40,6 +44,8 @@ const GESTURES = [
 const EDIT_GESTURES = [
   ['touch.handle', 'touch.handleWhat'],
   ['touch.hold', 'touch.holdWhat'],
+  ['touch.tap', 'touch.tapWhat'],
+  ['touch.blob', 'touch.blobWhat'],
 ];
 
 export class Shortcuts {
@@ -91,6 +97,9 @@ export class Shortcuts {
       e.preventDefault();
       const key = stage.player.playableKey();
       if (key) stage.player.toggle(key);
+    } else if (onView && (e.key === 'd' || e.key === 'D')) {
+      e.preventDefault();
+      stage.announcer.say(stage.results.spoken());
     } else if (onView && e.key === '.') {
       e.preventDefault();
       /** @type {HTMLButtonElement | null} */ (stage.els.player.querySelector('button'))?.click();
@@ -122,7 +131,9 @@ export class Shortcuts {
       for (const [k, what] of rows) {
         const row = tab.insertRow();
         // keys by the names on the reader's keyboard (German: Strg, Umschalt, Leertaste, Bild↑)
-        const name = keyCaps ? k.replace(/\b(Shift|Ctrl|Space|PageUp|PageDown|Enter)\b/g, (m) => t(`key.${m}`)) : t(k);
+        const name = keyCaps
+          ? k.replace(/\b(Shift|Ctrl|Space|PageUp|PageDown|Enter|Home)\b/g, (m) => t(`key.${m}`))
+          : t(k);
         row.insertCell().append(Object.assign(doc.createElement(keyCaps ? 'kbd' : 'strong'), { textContent: name }));
         row.insertCell().textContent = t(what);
       }

@@ -79,12 +79,12 @@ const RAW = [
     goal: [{ value: 'striction.minAbsDelta', below: 0.01 }],
     hints: [
       {
-        en: 'Turn the view until you look straight along the neighbouring ruling: it shrinks to a point on the screen.',
-        de: 'Drehen Sie die Ansicht, bis Sie genau längs der Nachbarin blicken: Sie schrumpft auf dem Bildschirm zu einem Punkt.',
+        en: 'Two lines meet when a point of one lies on the other: move an end of a ruling onto the line of its neighbour.',
+        de: 'Zwei Geraden schneiden sich, wenn ein Punkt der einen auf der anderen liegt: Bringen Sie ein Ende einer Erzeugenden auf die Gerade ihrer Nachbarin.',
       },
       {
-        en: 'Now drag the end onto that point: the ruling then passes through the neighbour, so the two meet.',
-        de: 'Ziehen Sie nun das Ende auf diesen Punkt: Die Erzeugende geht dann durch die Nachbarin, die beiden schneiden sich.',
+        en: 'Drag the end near the neighbouring ruling: it snaps onto that line exactly (◆ “on ruling …” beside it), and δ of the pair, shown beside the end, becomes 0. Snapping is on unless the ◈ button in the ✎ bar (or S) turned it off.',
+        de: 'Ziehen Sie das Ende nahe an die benachbarte Erzeugende: Es rastet genau auf dieser Geraden ein (◆ „auf der Erzeugenden …“ daneben), und δ des Paares, neben dem Ende angezeigt, wird 0. Das Einrasten ist an, solange die Schaltfläche ◈ in der ✎-Leiste (oder S) es nicht ausgeschaltet hat.',
       },
     ],
     solution: { input: TORSAL_SOLUTION },
@@ -133,8 +133,8 @@ const RAW = [
         de: 'Die Erzeugenden eines Kegels treffen sich in seiner Spitze: Finden Sie diejenige, die sie verfehlt.',
       },
       {
-        en: 'Ruling 10 was lifted by 0.4 at its end b: move that end straight down (Alt while dragging).',
-        de: 'Erzeugende 10 wurde an ihrem Ende b um 0,4 angehoben: Bewegen Sie dieses Ende senkrecht nach unten (beim Ziehen Alt halten).',
+        en: 'Ruling 10 was lifted by 0.4 at its end b: move that end straight down. Press ✎ and choose ↕ (along z), then drag the end — hold it a moment first to move it finely, and watch the height beside it; with a mouse, Alt while dragging does the same. Or tap the end and type its z under the view.',
+        de: 'Erzeugende 10 wurde an ihrem Ende b um 0,4 angehoben: Bewegen Sie dieses Ende senkrecht nach unten. Tippen Sie auf ✎ und wählen Sie ↕ (längs z), dann ziehen Sie das Ende – erst einen Moment halten, um es fein zu bewegen, und die Höhe daneben beobachten; mit der Maus tut Alt beim Ziehen dasselbe. Oder tippen Sie das Ende an und geben Sie sein z unter der Ansicht ein.',
       },
     ],
     solution: {},
@@ -240,8 +240,8 @@ const RAW = [
         de: 'Das Sollprofil ist breit und hell gezeichnet: Die Kugel des Werkzeugs soll darauf abrollen.',
       },
       {
-        en: 'Pose 3 was lifted by 0.3: drag its tip straight down (Alt while dragging) — the tool comes with it.',
-        de: 'Werkzeuglage 3 wurde um 0,3 angehoben: Ziehen Sie ihre Spitze senkrecht nach unten (beim Ziehen Alt halten) – das Werkzeug kommt mit.',
+        en: 'Pose 3 was lifted by 0.3: move its tip straight down — the tool comes with it. Press ✎ and choose ↕ (along z), then drag the tip (hold it a moment first to move it finely, and watch the deviation beside it); with a mouse, Alt while dragging does the same. Or tap the tip and type its z under the view.',
+        de: 'Werkzeuglage 3 wurde um 0,3 angehoben: Bewegen Sie ihre Spitze senkrecht nach unten – das Werkzeug kommt mit. Tippen Sie auf ✎ und wählen Sie ↕ (längs z), dann ziehen Sie die Spitze (erst einen Moment halten, um sie fein zu bewegen, und die Abweichung daneben beobachten); mit der Maus tut Alt beim Ziehen dasselbe. Oder tippen Sie die Spitze an und geben Sie ihr z unter der Ansicht ein.',
       },
     ],
     solution: {},
@@ -395,8 +395,8 @@ const RAW = [
     id: 'line-space-slide',
     title: { en: 'Slide without turning', de: 'Verschieben ohne Drehen' },
     prompt: {
-      en: 'The line-space scheme refines the lines; the endpoint scheme refines their endpoints. Slide given endpoints along their own rulings (drag with Shift): make the endpoint scheme’s new rulings turn by more than 0.05 rad while the line-space scheme’s do not turn (less than 10⁻⁹ rad).',
-      de: 'Das Geradenraumschema verfeinert die Geraden, das Endpunktschema ihre Endpunkte. Verschieben Sie gegebene Endpunkte längs ihrer eigenen Erzeugenden (beim Ziehen Umschalt halten): Die neuen Erzeugenden des Endpunktschemas sollen sich um mehr als 0,05 rad drehen, die des Geradenraumschemas sich nicht drehen (weniger als 10⁻⁹ rad).',
+      en: 'The line-space scheme refines the lines; the endpoint scheme refines their endpoints. Slide given endpoints along their own rulings (the ⤡ mode of the ✎ bar): make the endpoint scheme’s new rulings turn by more than 0.05 rad while the line-space scheme’s do not turn (less than 10⁻⁹ rad).',
+      de: 'Das Geradenraumschema verfeinert die Geraden, das Endpunktschema ihre Endpunkte. Verschieben Sie gegebene Endpunkte längs ihrer eigenen Erzeugenden (die Art ⤡ der ✎-Leiste): Die neuen Erzeugenden des Endpunktschemas sollen sich um mehr als 0,05 rad drehen, die des Geradenraumschemas sich nicht drehen (weniger als 10⁻⁹ rad).',
     },
     scene: 'lines',
     params: { surface: 'helical', slide: 0, steps: 2 },
@@ -407,8 +407,8 @@ const RAW = [
     ],
     hints: [
       {
-        en: 'Hold Shift while you drag: the end then moves along its own ruling, whatever the view.',
-        de: 'Halten Sie beim Ziehen Umschalt: Das Ende bewegt sich dann längs seiner eigenen Erzeugenden, unabhängig von der Ansicht.',
+        en: 'Press ✎ and choose ⤡ (along its line), then drag an end (with a mouse, Shift while dragging does the same): the end moves along its own ruling, whatever the view.',
+        de: 'Tippen Sie auf ✎ und wählen Sie ⤡ (längs seiner Geraden), dann ziehen Sie ein Ende (mit der Maus tut Umschalt beim Ziehen dasselbe): Das Ende bewegt sich längs seiner eigenen Erzeugenden, unabhängig von der Ansicht.',
       },
       {
         en: 'A ruling whose ends only slide along it is the same line: the line-space scheme cannot tell the difference.',

@@ -14,6 +14,7 @@
 //            { "answer": "s", "matches": "striction", "within": 1e-6 }],
 //   "hints": [{ "en": "…" }], "solution": { "params": {…}, "input": "…", "answers": { "s": ["u", "0", "0"] } },
 //   "draw": { "k": { "from": 2, "to": 4 }, "tol": { "list": [0.002, 0.001] } }
+//   "edit": { "snap": true, "typed": true, "constraints": [{ "handle": "rulings.21", "on": "line", "direction": [0, 0, 1] }] }
 // }
 // Drawn numbers (task/draw.js): a parameter's value `{ "drawn": "k" }`, a bound `{ "drawn": "tol" }`
 // and "{k}" in the texts take the number drawn for the attempt from its seed.
@@ -39,6 +40,7 @@ import {
   MAX_DRAW_CHOICES,
   MAX_SEED,
 } from '../limits.js';
+import { readEditRules } from '../edit/rules.js';
 
 /** What `hide` may name besides parameters and readouts: the claims under the readout, the explanation. */
 export const HIDE_WORDS = ['claims', 'text'];
@@ -111,6 +113,8 @@ const LARGEST_NUMBER = MAX_TASK_NUMBER.toExponential().replace('+', '');
  * @property {TaskState | null} solution
  * @property {Record<string, Draw>} draw   numbers drawn per attempt, by name
  * @property {Drawn | null} [drawn]   set once drawn (task/draw.js's drawTask)
+ * @property {import('../edit/rules.js').EditRules | null} edit   how the points may move (edit/rules.js): snapping,
+ *   typed coordinates, points held on a line, on a plane or fixed
  */
 
 const KEYS = [
@@ -130,6 +134,7 @@ const KEYS = [
   'hints',
   'solution',
   'draw',
+  'edit',
 ];
 
 /** An exercise that cannot be read: its message says where and why (in English; `details` for the page's language). */
@@ -489,12 +494,18 @@ export function readTask(source) {
     solution,
     draw: draws,
     drawn: null,
+    edit:
+      o.edit === undefined
+        ? null
+        : readEditRules(o.edit, (key, what) => {
+            throw new TaskError('task.error.type', { key, what });
+          }),
   };
 }
 
 /** The exercise as JSON (what readTask reads back to the same Task); a drawn one as it was written. */
 export function writeTask(/** @type {Task} */ task) {
-  const { input, camera, solution, draw, drawn: _, drawnParams, params, ...rest } = task.drawn?.from ?? task;
+  const { input, camera, solution, draw, drawn: _, drawnParams, params, edit, ...rest } = task.drawn?.from ?? task;
   const written = {
     ...params,
     ...Object.fromEntries(Object.entries(drawnParams ?? {}).map(([k, n]) => [k, { drawn: n }])),
@@ -508,6 +519,7 @@ export function writeTask(/** @type {Task} */ task) {
     ...(camera ? { camera } : {}),
     ...(solution ? { solution } : {}),
     ...(Object.keys(draw ?? {}).length ? { draw } : {}),
+    ...(edit ? { edit } : {}),
   });
 }
 

@@ -44,8 +44,8 @@ export const CSS = `
 .rl-bar > * { pointer-events: auto; }
 /* toolbar buttons: their word, or in a narrow box their sign (the accessible name stays the word) */
 .rl-btn-sign { display: none; }
-.rl-narrow :is(.rl-toolbar, .rl-modes) .rl-btn-sign { display: inline; font-size: 1.05rem; line-height: 1; }
-.rl-narrow :is(.rl-toolbar, .rl-modes) .rl-btn-word { display: none; }
+.rl-narrow :is(.rl-toolbar, .rl-modes, .rl-editbar) .rl-btn-sign { display: inline; font-size: 1.05rem; line-height: 1; }
+.rl-narrow :is(.rl-toolbar, .rl-modes, .rl-editbar) .rl-btn-word { display: none; }
 .rl-toolbar { display: flex; gap: .3rem; flex-wrap: wrap; justify-content: flex-end; margin-left: auto; }
 .rl-stage button, .rl-stage select, .rl-stage input[type=text] { font: inherit; font-size: .85rem; color: var(--ink); }
 .rl-stage select { min-height: 28px; }
@@ -145,14 +145,44 @@ export const CSS = `
 .rl-handle.rl-selected { left: -11px; top: -11px; width: 22px; height: 22px; border: 4px solid #d55e00; background: rgb(255 255 255 / .25); }
 .rl-handle-tip { position: absolute; left: 0; top: 0; padding: .15rem .45rem; border-radius: 5px; background: rgb(31 36 48 / .9);
   color: #fff; font-size: .8rem; font-variant-numeric: tabular-nums; white-space: nowrap; }
+.rl-handle-tip { max-width: min(24rem, calc(100% - 8px)); white-space: normal; }
+.rl-handle-tip > * { display: block; }
+.rl-handle-tip > * + * { font-size: .8rem; }
+.rl-handle-tip .rl-tip-values .rl-tip-value { display: inline-block; margin-right: .5rem; white-space: nowrap; }
+.rl-handle-tip .rl-tip-snap { color: #ffd27a; }
+.rl-handle-tip .rl-tip-held { color: #ffc2b3; }
+.rl-handle-tip .rl-tip-value.rl-holds { color: #a6e3c8; }
+/* where a drag snapped: a small vermillion diamond (the tip says onto what) */
+.rl-snap-mark { position: absolute; left: -6px; top: -6px; width: 12px; height: 12px; background: #d55e00;
+  border: 2px solid #fff; box-shadow: 0 0 0 1px #1f2430; }
+/* handles on top of each other: the list to choose one from, beside the finger */
+.rl-pick { position: absolute; left: 0; top: 0; z-index: 3; max-width: 16rem; padding: .35rem; border: 1px solid #1f2430;
+  border-radius: 6px; background: #fff; box-shadow: 0 2px 8px rgb(0 0 0 / .25); }
+.rl-pick-heading { margin: 0 0 .3rem; font-size: .85rem; }
+.rl-pick-list { display: grid; gap: .2rem; max-height: 14rem; overflow-y: auto; }
+.rl-pick-list button { text-align: left; }
+/* the chosen point in the panel: its coordinates (typed) and values */
+.rl-coords { margin: .2rem 0 .8rem; padding: .45rem .7rem; border: 1px solid #c9c5ba; border-left: 4px solid #d55e00;
+  border-radius: 6px; font-size: .86rem; }
+.rl-coords h3 { font-size: .95rem; margin: 0 0 .35rem; }
+.rl-coords-fields { display: flex; flex-wrap: wrap; gap: .3rem .7rem; align-items: center; }
+.rl-coords-fields > span { display: inline-flex; gap: .3rem; align-items: center; }
+.rl-coords-fields input { width: 6.5em; font: inherit; font-variant-numeric: tabular-nums; }
+.rl-coords-message { margin: .3rem 0 0; }
+.rl-coords-values { display: grid; grid-template-columns: auto 1fr; gap: .1rem .7rem; margin: .45rem 0 0; }
+.rl-coords-values dd { margin: 0; font-variant-numeric: tabular-nums; }
 .rl-view canvas.rl-grab { cursor: grab; }
 .rl-view canvas.rl-grab:active { cursor: grabbing; }
 .rl-editbar { flex: 1 1 auto; min-width: 0; display: flex; flex-wrap: wrap; gap: .3rem; align-items: center; }
 .rl-editing .rl-hint { display: none; }
 /* in a narrow box, while editing, the toolbar is the edit toolbar, one row of signs: the move modes,
-   then ✎ (pressed: press again to stop), ↶ ↷ — Fit, Reset, full screen, ? and Done wait until editing ends */
+   snapping, then Fit, ✎ (pressed: press again to stop), ↶ ↷ — Reset, full screen, ? and Done wait
+   until editing ends; the row is packed tight to stay one row on a phone */
 .rl-narrow .rl-editbar-label { display: none; }
-.rl-narrow .rl-view.rl-editing .rl-toolbar > :is(.rl-fit, .rl-reset, .rl-fullscreen, .rl-help) { display: none; }
+.rl-narrow .rl-view.rl-editing .rl-toolbar > :is(.rl-reset, .rl-fullscreen, .rl-help) { display: none; }
+.rl-narrow .rl-view.rl-editing .rl-bar { gap: .15rem; }
+.rl-narrow .rl-view.rl-editing :is(.rl-toolbar, .rl-modes, .rl-editbar) { gap: 2px; }
+.rl-narrow .rl-view.rl-editing .rl-modes { padding: 0 2px; }
 .rl-narrow .rl-view.rl-editing .rl-done { display: none; }
 .rl-narrow .rl-editbar { flex: 0 1 auto; container-type: normal; }
 .rl-modes { display: flex; flex-wrap: wrap; gap: .25rem; align-items: center; background: rgb(255 255 255 / .92); border-radius: 6px; padding: .15rem .3rem; }

@@ -10,6 +10,18 @@ import { EXACT_ZERO } from '../limits.js';
  */
 export function showReadout(list, readouts, { t, format }) {
   const doc = list.ownerDocument;
+  // the same labels as shown (a drag's frame, a slider moved): only the values that changed are
+  // written, so the panel is not laid out anew for every frame
+  const labels = readouts.map(({ label }) => t(label)).join('\n');
+  if (list.dataset.labels === labels) {
+    const values = list.querySelectorAll('dd');
+    readouts.forEach(({ value, exactZero }, i) => {
+      const shown = valueText(value, exactZero, { t, format });
+      if (values[i] && values[i].textContent !== shown) values[i].textContent = shown;
+    });
+    return;
+  }
+  list.dataset.labels = labels;
   list.replaceChildren(
     ...readouts.flatMap(({ label, value, exactZero }) => {
       const shown = valueText(value, exactZero, { t, format });
@@ -71,7 +83,7 @@ export function showClaims(list, claims, t) {
  * @param {boolean | undefined} exactZero
  * @param {Pick<import('../i18n/index.js').Translator, 't' | 'format'>} i18n
  */
-function valueText(value, exactZero, { t, format }) {
+export function valueText(value, exactZero, { t, format }) {
   if (exactZero && typeof value === 'number' && Math.abs(value) < EXACT_ZERO) return t('readout.exact');
   return typeof value === 'number' ? format(value) : t(String(value));
 }

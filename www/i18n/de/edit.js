@@ -1,6 +1,6 @@
 // Deutsche Texte zum Bearbeiten der Geometrie: die Anfasser, ihre Namen, Schaltflächen und
 // Hinweise (www/edit/), und was eine bearbeitete Eingabe undefiniert lässt.
-// Keys: edit.*, handle.*, problem.*
+// Keys: edit.*, handle.*, problem.*, snap.*, value.*
 
 export default {
   'edit.button': 'Bearbeiten',
@@ -15,8 +15,8 @@ export default {
   'edit.mode.viewTitle': 'in der Ebene durch den Punkt, die Ihnen zugewandt ist',
   'edit.mode.line': 'längs seiner Geraden',
   'edit.mode.lineTitle': 'längs der Erzeugenden oder Achse, zu der er gehört (oder beim Ziehen Umschalt halten)',
-  'edit.mode.vertical': 'auf und ab',
-  'edit.mode.verticalTitle': 'längs der z-Achse (oder beim Ziehen Alt halten)',
+  'edit.mode.vertical': 'längs z',
+  'edit.mode.verticalTitle': 'längs der z-Achse des Modells (oder beim Ziehen Alt halten)',
   'edit.done': 'Fertig',
   'edit.asData': 'Als Daten bearbeiten',
   'edit.from': 'Bearbeitet aus: {from}.',
@@ -46,6 +46,52 @@ export default {
   'edit.describe': 'Ihre Bearbeitung der Eingabe. {description}',
   'edit.edited': 'Ihre Bearbeitung von {what}',
   'edit.from.importedPoses': 'Ihre {poses} importierten Werkzeuglagen',
+
+  'edit.fine': 'Fein: Der Punkt folgt mit {percent} % Ihrer Geschwindigkeit.',
+  'edit.fineTip': 'fein: {percent} % Ihrer Geschwindigkeit',
+  'edit.pick': 'Welcher Punkt? {count:Punkt liegt:Punkte liegen} hier',
+  'edit.coords': 'Punkt: {handle}',
+  'edit.coordsSet': 'Dorthin setzen',
+  'edit.coordsBad': 'Die {axis}-Koordinate ist keine Zahl.',
+  'edit.coordsHeld': 'Dieser Punkt ist an seinem Ort festgehalten.',
+  'edit.coordsSame': 'Der Punkt ist schon dort.',
+  'edit.coordsValues': 'Werte an diesem Punkt',
+  'edit.snap': 'Einrasten',
+  'edit.snapTitle': 'Einen gezogenen Punkt auf Punkten, Geraden und Ebenen der Figur einrasten (S)',
+
+  'snap.on': 'Einrasten an.',
+  'snap.off': 'Einrasten aus.',
+  'snap.onto': 'auf {name}',
+  'snap.ruling': 'der Erzeugenden {i}',
+  'snap.gridLine': 'der Geraden ({row}, {col})',
+  'snap.axis': 'der Achse der Lage {i}',
+  'snap.line': 'der Geraden {i}',
+  'snap.footpoint': 'dem Fußpunkt f_{{i},{j}}',
+  'snap.striction': 'dem Kehlpunkt m_{{i}}',
+  'snap.complexAxis': 'der Achse des linearen Komplexes',
+  'snap.figurePlane': 'der Ebene z = 0 der Abbildungen',
+  'snap.held.parallel': 'In dieser Ansicht kann er sich so nicht bewegen: Drehen Sie die Ansicht.',
+  'snap.held.outside': 'Er würde den Bereich verlassen, in dem die Punkte bleiben.',
+  'snap.held.degenerate': 'Seine Einschränkung kann nicht gelten.',
+  'snap.lifted': 'Die Einschränkung der Aufgabe für {handle} kann hier nicht gelten: Sie ist aufgehoben.',
+  'snap.lifted.handle':
+    'Die Aufgabe hält einen Punkt „{handle}“ fest, den diese Szene nicht hat: Diese Einschränkung ist aufgehoben.',
+  'snap.lifted.vector':
+    'Die Aufgabe hält „{handle}“ auf einer Geraden ohne Richtung oder einer Ebene ohne Normale: Diese Einschränkung ist aufgehoben.',
+
+  'value.phi': 'φ_{{i},{j}}',
+  'value.h': 'h_{{i},{j}}',
+  'value.delta': 'δ_{{i},{j}}',
+  'value.deltaMean': 'δ̄_{{i}}',
+  'value.step': 'Achsenwinkel zur Lage {j}',
+  'value.deviation': 'Abweichung bei Lage {i}',
+  'value.below': 'Ziel: unter {bound}',
+  'value.above': 'Ziel: über {bound}',
+  'value.near': 'Ziel: nahe {bound}',
+  'value.closer': 'näher',
+  'value.further': 'weiter weg',
+  'value.same': 'unverändert',
+  'value.holds': 'erreicht',
 
   'handle.ruling': 'Erzeugende {i}, Ende {end}',
   'handle.end.a': 'a',

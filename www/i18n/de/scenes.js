@@ -26,6 +26,7 @@ export default {
   'readout.footpointError': 'max |f_{i,i+1} − s(u_i)|',
   'readout.perpendicularMidpointError': 'max |Polygon aus Abb. 3 − s(u_i + H/2)|',
   'readout.meanDelta': 'δ̄ an der mittleren Erzeugenden',
+  'striction.label.meanDelta': 'δ̄ (m_{{i}})',
   'readout.none': 'keine (ein Fehler ist 0 oder nicht definiert)',
 
   'describe.closed': 'geschlossen',
@@ -56,7 +57,7 @@ export default {
   'striction.param.axis': 'Achse des linearen Komplexes (über die Arbeit hinaus)',
   'striction.param.exact': 'Exakte Kehllinie s(u)',
   'striction.describe':
-    'Fläche: {surface}, {closed}, {n} Erzeugende; gezeigt: {shown}. Das Kehlpolygon liegt an den Erzeugenden bis zu {midpoint} von der exakten Kehllinie entfernt; ein einzelner Fußpunkt bis zu {footpoint}.',
+    'Fläche: {surface}, {closed}, {n} Erzeugende; gezeigt: {shown}. Das Kehlpolygon liegt an den Erzeugenden bis zu {midpoint} von der exakten Kehllinie entfernt; ein einzelner Fußpunkt bis zu {footpoint}. δ̄ an der mittleren Erzeugenden m_{{mid}} beträgt {mean}; das kleinste |δ| eines Paares von Erzeugenden ist {least}.',
   'striction.describe.normals': 'die gemeinsamen Lote mit ihren Fußpunkten',
   'striction.describe.polygon': 'das Kehlpolygon der Fußpunktmittelpunkte',
   'striction.describe.midpoints': 'das Polygon der Lotmittelpunkte',
@@ -67,7 +68,7 @@ export default {
   'striction.claim.orders':
     'Auf dem Hyperboloid und der Quartik halbiert ab 20 Erzeugenden jede Verdopplung von N den Fehler der Fußpunkte und viertelt die Fehler beider Polygone: gemessene Ordnungen höchstens 0,25 neben 1, 2 und 2.',
   'striction.describeEdited':
-    'Ihre Bearbeitung von {n} Erzeugenden von {surface}; gezeigt: {shown}. Ohne die exakte Fläche gibt es keine Fehler zu messen.',
+    'Ihre Bearbeitung von {n} Erzeugenden von {surface}; gezeigt: {shown}. δ̄ an der mittleren Erzeugenden m_{{mid}} beträgt {mean}; das kleinste |δ| eines Paares von Erzeugenden ist {least}; {parallel:Paar ist:Paare sind} parallel. Ohne die exakte Fläche gibt es keine Fehler zu messen.',
 
   'notation.title': 'Bezeichnungen: Winkel, Lot, Fußpunkte (Abb. 1)',
   'notation.param.spacing': 'Abstand der Erzeugenden H',
@@ -78,9 +79,9 @@ export default {
   'notation.readout.distance': 'vorzeichenbehafteter Abstand h_{i,i+1}',
   'notation.readout.delta': 'δ_{i,i+1} = h / φ',
   'notation.describe':
-    'Drei aufeinanderfolgende Erzeugende des Hyperboloids aus Beispiel 1, im Parameter {spacing} voneinander entfernt, mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} ist {angle} rad, ihr vorzeichenbehafteter Abstand h_{i,i+1} beträgt {distance} (sein Betrag ist der Abstand der beiden Geraden).',
+    'Drei aufeinanderfolgende Erzeugende des Hyperboloids aus Beispiel 1, im Parameter {spacing} voneinander entfernt, mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} ist {angle} rad, ihr vorzeichenbehafteter Abstand h_{i,i+1} beträgt {distance} (sein Betrag ist der Abstand der beiden Geraden), also ist δ_{i,i+1} = h/φ gleich {delta}.',
   'notation.describeEdited':
-    'Ihre Bearbeitung dreier aufeinanderfolgender Erzeugender mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} beträgt {angle} rad, ihr vorzeichenbehafteter Abstand h_{i,i+1} {distance} (sein Betrag ist der Abstand der beiden Geraden).',
+    'Ihre Bearbeitung dreier aufeinanderfolgender Erzeugender mit ihren gemeinsamen Loten, Fußpunkten und dem Mittelpunkt m_i; der Winkel zwischen R_i und R_{i+1} beträgt {angle} rad, ihr vorzeichenbehafteter Abstand h_{i,i+1} {distance} (sein Betrag ist der Abstand der beiden Geraden), also ist δ_{i,i+1} = h/φ gleich {delta}.',
 
   'convergence.title': 'Konvergenzordnungen (Sätze 1–2)',
   'convergence.param.u': 'Parameter u',
@@ -189,7 +190,7 @@ export default {
   'data.legend.rulings': 'Ihre Erzeugenden',
   'data.readout.lines': 'Geraden (Kongruenz)',
   'data.describe':
-    'Ihre Regelfläche aus {n} Erzeugenden ({parallel} parallele Paare) mit ihren gemeinsamen Loten und ihrem Kehlpolygon.',
+    'Ihre Regelfläche aus {n} Erzeugenden ({parallel} parallele Paare) mit ihren gemeinsamen Loten und ihrem Kehlpolygon; das kleinste |δ| eines Paares von Erzeugenden ist {least}.',
   'data.describeCongruence': 'Ihre Geradenkongruenz aus {rows} × {cols} Geraden.',
 
   'large.title': 'Große Modelle in einem Web Worker',

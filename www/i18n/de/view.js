@@ -4,7 +4,7 @@
 
 export default {
   'view.label':
-    '3D-Ansicht der Szene. Ziehen oder Pfeiltasten drehen sie, Umschalt+Ziehen oder Umschalt+Pfeiltasten verschieben sie, Mausrad oder + und − zoomen, F passt ein, ? zeigt alle Tasten.',
+    '3D-Ansicht der Szene. Ziehen oder Pfeiltasten drehen sie, Umschalt+Ziehen oder Umschalt+Pfeiltasten verschieben sie, Mausrad oder + und − zoomen, F passt ein, D sagt, was sie zeigt, ? zeigt alle Tasten.',
   'view.fit': 'Einpassen',
   'view.fitTitle': 'Die Ansicht an die Szene anpassen (F)',
   'view.reset': 'Zurücksetzen',
@@ -18,7 +18,8 @@ export default {
   'view.hintTouch': 'ein Finger: drehen · zwei Finger: verschieben und zoomen',
   'view.hintEdit':
     'Ziehen: drehen · Punkt ziehen: verschieben · Umschalt/Rechts-Ziehen: Ansicht verschieben · Mausrad: zoomen · E: bearbeiten · ?: Tasten',
-  'view.hintTouchEdit': 'ein Finger: drehen oder einen Punkt ziehen · zwei Finger: verschieben und zoomen',
+  'view.hintTouchEdit':
+    'ein Finger: drehen oder einen Punkt ziehen (erst halten: fein verschieben) · zwei Finger: verschieben und zoomen · ✎: wie ein Punkt sich bewegt',
 
   'panel.controls': 'Parameter der Szene',
   'panel.readout': 'Messwerte',
@@ -50,14 +51,21 @@ export default {
   'touch.handle': 'ein Finger auf einem Punkt',
   'touch.handleWhat': 'ihn ziehen',
   'touch.hold': 'einen Punkt halten',
-  'touch.holdWhat': 'seine Koordinaten sehen',
+  'touch.holdWhat':
+    'seine Koordinaten sehen; dann ziehen: Der Punkt folgt dem Finger langsam, für feine Verschiebungen',
+  'touch.tap': 'einen Punkt antippen',
+  'touch.tapWhat': 'ihn wählen: Seine Koordinaten und Werte erscheinen unter der Ansicht und lassen sich eintippen',
+  'touch.blob': 'ein Finger auf übereinanderliegenden Punkten',
+  'touch.blobWhat': 'einen davon aus einer Liste wählen, dann ziehen',
 
   'keys.title': 'Tastatur',
   'keys.intro': 'Die Tasten der Ansicht wirken, solange die Ansicht den Fokus hat (mit Tab dorthin).',
   'keys.orbit': 'Ansicht drehen',
+  'keys.orbitLetters': 'Ansicht drehen, auch während die Pfeiltasten einen Punkt verschieben',
+  'keys.describe': 'sagen, was die Abbildung zeigt',
   'keys.pan': 'Ansicht verschieben',
   'keys.zoom': 'hinein- und herauszoomen',
-  'keys.fit': 'Ansicht an die Szene anpassen',
+  'keys.fit': 'zurück zur eingepassten Ansicht',
   'keys.reset': 'Szene auf ihre Voreinstellungen zurücksetzen',
   'keys.play': 'ersten abspielbaren Parameter abspielen oder anhalten',
   'keys.step': 'einen Schritt davon',
@@ -70,7 +78,8 @@ export default {
   'keys.editStep': 'nächster oder voriger Punkt',
   'keys.editMove': 'Punkt quer zum Blick verschieben',
   'keys.editDepth': 'von Ihnen weg oder zu Ihnen hin verschieben',
-  'keys.editFine': 'zusammen mit einer Verschiebung: ein Zehntel des Schritts',
+  'keys.editFine': 'zusammen mit einer Verschiebung: ein Zehntel des Schritts (ohne Einrasten)',
+  'keys.snap': 'Einrasten an oder aus',
   'keys.editEnd': 'Verschiebung abschließen (ein Schritt zum Rückgängigmachen)',
   'keys.editCancel': 'Verschiebung abbrechen; noch einmal: Bearbeiten beenden',
   'keys.undo': 'rückgängig machen',
@@ -82,4 +91,5 @@ export default {
   'key.PageUp': 'Bild↑',
   'key.PageDown': 'Bild↓',
   'key.Enter': 'Eingabe',
+  'key.Home': 'Pos1',
 };

@@ -1,6 +1,6 @@
 // English texts of editing the geometry: the handles, their names, the edit's buttons and notes
 // (www/edit/), and what an edited input leaves undefined.
-// Keys: edit.*, handle.*, problem.*
+// Keys: edit.*, handle.*, problem.*, snap.*, value.*
 
 export default {
   'edit.button': 'Edit',
@@ -15,8 +15,8 @@ export default {
   'edit.mode.viewTitle': 'in the plane through the point that faces you',
   'edit.mode.line': 'along its line',
   'edit.mode.lineTitle': 'along the ruling or axis it belongs to (or hold Shift while dragging)',
-  'edit.mode.vertical': 'up and down',
-  'edit.mode.verticalTitle': 'along the z-axis (or hold Alt while dragging)',
+  'edit.mode.vertical': 'along z',
+  'edit.mode.verticalTitle': 'along the z-axis of the model (or hold Alt while dragging)',
   'edit.done': 'Done',
   'edit.asData': 'Edit as data',
   'edit.from': 'Edited from: {from}.',
@@ -44,6 +44,51 @@ export default {
   'edit.describe': 'Your edit of the input. {description}',
   'edit.edited': 'your edit of {what}',
   'edit.from.importedPoses': 'your {poses} imported tool poses',
+
+  'edit.fine': 'Fine: the point follows at {percent} % of your speed.',
+  'edit.fineTip': 'fine: {percent} % of your speed',
+  'edit.pick': 'Which point? {count:point is:points are} here',
+  'edit.coords': 'Point: {handle}',
+  'edit.coordsSet': 'Move it there',
+  'edit.coordsBad': 'The {axis} coordinate is not a number.',
+  'edit.coordsHeld': 'This point is held where it is.',
+  'edit.coordsSame': 'The point is there already.',
+  'edit.coordsValues': 'Values at this point',
+  'edit.snap': 'Snap',
+  'edit.snapTitle': 'Snap a dragged point onto points, lines and planes of the figure (S)',
+
+  'snap.on': 'Snapping on.',
+  'snap.off': 'Snapping off.',
+  'snap.onto': 'on {name}',
+  'snap.ruling': 'ruling {i}',
+  'snap.gridLine': 'line ({row}, {col})',
+  'snap.axis': 'the axis of pose {i}',
+  'snap.line': 'line {i}',
+  'snap.footpoint': 'the footpoint f_{{i},{j}}',
+  'snap.striction': 'the striction point m_{{i}}',
+  'snap.complexAxis': 'the axis of the linear complex',
+  'snap.figurePlane': 'the plane z = 0 of the figures',
+  'snap.held.parallel': 'It cannot move that way from this view: turn the view.',
+  'snap.held.outside': 'It would leave the box the points stay in.',
+  'snap.held.degenerate': 'Its constraint cannot hold.',
+  'snap.lifted': 'The exercise’s constraint on {handle} cannot hold here: it is lifted.',
+  'snap.lifted.handle': 'The exercise holds a point “{handle}” this scene does not have: that constraint is lifted.',
+  'snap.lifted.vector':
+    'The exercise holds “{handle}” on a line without a direction or a plane without a normal: that constraint is lifted.',
+
+  'value.phi': 'φ_{{i},{j}}',
+  'value.h': 'h_{{i},{j}}',
+  'value.delta': 'δ_{{i},{j}}',
+  'value.deltaMean': 'δ̄_{{i}}',
+  'value.step': 'axis angle to pose {j}',
+  'value.deviation': 'deviation at pose {i}',
+  'value.below': 'goal: below {bound}',
+  'value.above': 'goal: above {bound}',
+  'value.near': 'goal: near {bound}',
+  'value.closer': 'closer',
+  'value.further': 'further',
+  'value.same': 'no change',
+  'value.holds': 'reached',
 
   'handle.ruling': 'ruling {i}, end {end}',
   'handle.end.a': 'a',

@@ -27,6 +27,7 @@ export default {
   'readout.footpointError': 'max |f_{i,i+1} − s(u_i)|',
   'readout.perpendicularMidpointError': 'max |Fig. 3 polygon − s(u_i + H/2)|',
   'readout.meanDelta': 'δ̄ at the middle ruling',
+  'striction.label.meanDelta': 'δ̄ (m_{{i}})',
   'readout.none': 'none (an error is 0 or undefined)',
 
   'describe.closed': 'closed',
@@ -59,7 +60,7 @@ export default {
   'striction.param.axis': 'Axis of the linear complex (beyond the paper)',
   'striction.param.exact': 'Exact striction curve s(u)',
   'striction.describe':
-    'Surface: {surface}, {closed}, {n} rulings; shown: {shown}. The striction polygon is {midpoint} from the exact striction curve at the rulings; a single footpoint is up to {footpoint} away.',
+    'Surface: {surface}, {closed}, {n} rulings; shown: {shown}. The striction polygon is {midpoint} from the exact striction curve at the rulings; a single footpoint is up to {footpoint} away. δ̄ at the middle ruling m_{{mid}} is {mean}; the smallest |δ| of a pair of rulings is {least}.',
   'striction.describe.normals': 'the common perpendiculars with their footpoints',
   'striction.describe.polygon': 'the striction polygon of footpoint midpoints',
   'striction.describe.midpoints': 'the polygon of the perpendiculars\u2019 midpoints',
@@ -70,7 +71,7 @@ export default {
   'striction.claim.orders':
     'On the hyperboloid and the quartic, from 20 rulings on, doubling N halves the footpoint error and quarters the errors of both polygons: measured orders within 0.25 of 1, 2 and 2.',
   'striction.describeEdited':
-    'Your edit of {n} rulings of {surface}; shown: {shown}. Without the exact surface there are no errors to measure.',
+    'Your edit of {n} rulings of {surface}; shown: {shown}. δ̄ at the middle ruling m_{{mid}} is {mean}; the smallest |δ| of a pair of rulings is {least}; {parallel:pair is:pairs are} parallel. Without the exact surface there are no errors to measure.',
 
   // Fig. 1
   'notation.title': 'Notation: angle, perpendicular, footpoints (Fig. 1)',
@@ -82,9 +83,9 @@ export default {
   'notation.readout.distance': 'signed distance h_{i,i+1}',
   'notation.readout.delta': 'δ_{i,i+1} = h / φ',
   'notation.describe':
-    'Three consecutive rulings of the hyperboloid of Example 1, {spacing} apart in the parameter, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their signed distance h_{i,i+1} is {distance} (its absolute value is the distance of the two lines).',
+    'Three consecutive rulings of the hyperboloid of Example 1, {spacing} apart in the parameter, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their signed distance h_{i,i+1} is {distance} (its absolute value is the distance of the two lines), so δ_{i,i+1} = h/φ is {delta}.',
   'notation.describeEdited':
-    'Your edit of three consecutive rulings, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their signed distance h_{i,i+1} is {distance} (its absolute value is the distance of the two lines).',
+    'Your edit of three consecutive rulings, with their common perpendiculars, footpoints and the midpoint m_i; the angle between R_i and R_{i+1} is {angle} rad and their signed distance h_{i,i+1} is {distance} (its absolute value is the distance of the two lines), so δ_{i,i+1} = h/φ is {delta}.',
 
   // Propositions 1–2
   'convergence.title': 'Convergence orders (Propositions 1–2)',
@@ -197,7 +198,7 @@ export default {
   'data.legend.rulings': 'your rulings',
   'data.readout.lines': 'lines (congruence)',
   'data.describe':
-    'Your ruled surface of {n} rulings ({parallel} parallel pairs), with its common perpendiculars and striction polygon.',
+    'Your ruled surface of {n} rulings ({parallel} parallel pairs), with its common perpendiculars and striction polygon; the smallest |δ| of a pair of rulings is {least}.',
   'data.describeCongruence': 'Your line congruence of {rows} × {cols} lines.',
 
   // large models

@@ -5,7 +5,7 @@
 export default {
   // the view
   'view.label':
-    '3D view of the scene. Drag or use the arrow keys to turn it, shift+drag or shift+arrows to move it, wheel or + and − to zoom, F to fit, ? for all keys.',
+    '3D view of the scene. Drag or use the arrow keys to turn it, shift+drag or shift+arrows to move it, wheel or + and − to zoom, F to fit, D to hear what it shows, ? for all keys.',
   'view.fit': 'Fit',
   'view.fitTitle': 'Fit the view to the scene (F)',
   'view.reset': 'Reset',
@@ -18,7 +18,8 @@ export default {
   'view.hintMouse': 'drag: turn · shift/right-drag: move · wheel: zoom · F: fit · ?: keys',
   'view.hintTouch': 'one finger: turn · two fingers: move and zoom',
   'view.hintEdit': 'drag: turn · drag a point: move it · shift/right-drag: move · wheel: zoom · E: edit · ?: keys',
-  'view.hintTouchEdit': 'one finger: turn, or drag a point · two fingers: move and zoom',
+  'view.hintTouchEdit':
+    'one finger: turn, or drag a point (hold it first to move it finely) · two fingers: move and zoom · ✎: how a point moves',
 
   'panel.controls': 'Parameters of the scene',
   'panel.readout': 'Measured values',
@@ -50,14 +51,20 @@ export default {
   'touch.handle': 'one finger on a point',
   'touch.handleWhat': 'drag it',
   'touch.hold': 'hold a point',
-  'touch.holdWhat': 'see its coordinates',
+  'touch.holdWhat': 'see its coordinates; then drag: the point follows your finger slowly, for fine moves',
+  'touch.tap': 'tap a point',
+  'touch.tapWhat': 'choose it: its coordinates and values show, and can be typed, under the view',
+  'touch.blob': 'a finger on points on top of each other',
+  'touch.blobWhat': 'choose one of them from a list, then drag it',
 
   'keys.title': 'Keyboard',
   'keys.intro': 'The view\u2019s keys act while the view has focus (Tab to it).',
   'keys.orbit': 'turn the view',
+  'keys.orbitLetters': 'turn the view, also while the arrows move a point',
+  'keys.describe': 'say what the figure shows',
   'keys.pan': 'move the view',
   'keys.zoom': 'zoom in and out',
-  'keys.fit': 'fit the view to the scene',
+  'keys.fit': 'back to the fitted view',
   'keys.reset': 'reset the scene to its defaults',
   'keys.play': 'play or pause the first playable parameter',
   'keys.step': 'one step of it',
@@ -70,7 +77,8 @@ export default {
   'keys.editStep': 'next or previous point',
   'keys.editMove': 'move the point across the view',
   'keys.editDepth': 'move it away from you or towards you',
-  'keys.editFine': 'held with a move: a tenth of the step',
+  'keys.editFine': 'held with a move: a tenth of the step (no snapping)',
+  'keys.snap': 'snapping on or off',
   'keys.editEnd': 'end the move (one step of undo)',
   'keys.editCancel': 'cancel the move; again: stop editing',
   'keys.undo': 'undo',
@@ -82,4 +90,5 @@ export default {
   'key.PageUp': 'PageUp',
   'key.PageDown': 'PageDown',
   'key.Enter': 'Enter',
+  'key.Home': 'Home',
 };
