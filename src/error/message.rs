@@ -298,6 +298,8 @@ pub const MESSAGES: &[(&str, &str)] = &[
     ("warn-acceleration", "{count} blocks still need more acceleration than an axis has, from pose {pose}"),
     ("warn-pole-cone", "{count} poses within {cone}° of the pole, from pose {pose}: their tool axis turned by up to {angle}° to keep the rotary axes smooth"),
     ("warn-tool-in-stock", "the {part} enters the stock at pose {pose} ({count} poses of the cut)"),
+    ("part-holder", "holder"),
+    ("part-shank", "shank"),
 ];
 
 #[cfg(test)]

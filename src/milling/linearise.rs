@@ -123,7 +123,9 @@ fn angle(a: DVec3, b: DVec3) -> f64 {
     a.cross(b).length().atan2(a.dot(b))
 }
 
-/// The angle of unit `v` from the great-circle arc a → b.
+/// The angle of unit `v` from the great-circle arc a → b: from the arc's great circle where `v`
+/// projects onto the arc (between a and b: a × v and v × b both along a × b), else from the
+/// nearer end.
 fn angle_from_arc(v: DVec3, a: DVec3, b: DVec3) -> f64 {
     let n = a.cross(b);
     if n.length() < 1e-12 {
@@ -132,16 +134,10 @@ fn angle_from_arc(v: DVec3, a: DVec3, b: DVec3) -> f64 {
     let n = n.normalize();
     let off = v.dot(n);
     let inside = v - off * n;
-    let ends = angle(v, a).min(angle(v, b));
-    if inside.length() < 1e-12 {
-        return ends;
+    if inside.length() >= 1e-12 && a.cross(inside).dot(n) >= 0.0 && inside.cross(b).dot(n) >= 0.0 {
+        return off.abs().min(1.0).asin();
     }
-    let inside = inside.normalize();
-    if (angle(a, inside) + angle(inside, b) - angle(a, b)).abs() < 1e-9 {
-        off.abs().min(1.0).asin()
-    } else {
-        ends
-    }
+    angle(v, a).min(angle(v, b))
 }
 
 fn distance_from_chord(q: DVec3, a: DVec3, b: DVec3) -> f64 {
@@ -243,8 +239,20 @@ pub fn linearise(
 /// [`linearise`] with an angular tolerance, the pole cone and unwinding: a block is measured
 /// against the poses the program writes (in the cone, the tool axis of the interpolated rotary
 /// values), from the axis values it leaves its first pose with (after an unwinding there).
+#[cfg(test)]
 pub fn linearise_with(m: &Machine, poses: &[Pose], tool_length: f64, o: &LineariseOptions) -> Result<Linearised> {
-    linearise_at_most(m, poses, tool_length, o, (MAX_LINEARISATION_ROUNDS, MAX_POST_POSES))
+    linearise_at_most(m, poses, tool_length, o, (MAX_LINEARISATION_ROUNDS, MAX_POST_POSES), &mut |_| {})
+}
+
+/// [`linearise_with`] telling `progress` the number of each round as it ends (0 first).
+pub fn linearise_reporting(
+    m: &Machine,
+    poses: &[Pose],
+    tool_length: f64,
+    o: &LineariseOptions,
+    progress: &mut dyn FnMut(usize),
+) -> Result<Linearised> {
+    linearise_at_most(m, poses, tool_length, o, (MAX_LINEARISATION_ROUNDS, MAX_POST_POSES), progress)
 }
 
 /// A block's ends: the axis values it leaves and reaches, and the poses it joins.
@@ -257,6 +265,7 @@ fn linearise_at_most(
     tool_length: f64,
     o: &LineariseOptions,
     (max_rounds, max_poses): (usize, usize),
+    progress: &mut dyn FnMut(usize),
 ) -> Result<Linearised> {
     let (how, tolerance) = (o.how, o.tolerance);
     let too_far = |b: &BlockDeviation| b.max() > tolerance || o.angular.is_some_and(|a| b.angle > a);
@@ -287,6 +296,7 @@ fn linearise_at_most(
             })
             .collect();
         let before = *before.get_or_insert(largest(&blocks));
+        progress(round);
         let bad: Vec<usize> = (0..blocks.len()).filter(|&i| too_far(&blocks[i])).collect();
         if bad.is_empty() {
             let inserted = poses.len() - origin.iter().filter(|o| o.fract() == 0.0).count();
@@ -519,7 +529,7 @@ mod tests {
             lever: None,
             solve: SolveOptions::exact(),
         };
-        let run = |limits| linearise_at_most(&m, &poses, 50.0, &o, limits);
+        let run = |limits| linearise_at_most(&m, &poses, 50.0, &o, limits, &mut |_| {});
         let Err(Error::Unreachable { pose, message, .. }) = run((3, 100)) else { panic!("{:?}", run((3, 100))) };
         assert_eq!((pose, message.reason), (1, "linearisation-tolerance"));
         assert_eq!((message.arg("rounds"), message.arg("next")), (Some(&Arg::Number(3.0)), Some(&Arg::Number(2.0))));
@@ -566,7 +576,7 @@ mod tests {
             lever: None,
             solve: SolveOptions::exact(),
         };
-        let e = linearise_at_most(&m, &poses, 50.0, &o, (0, 100)).unwrap_err();
+        let e = linearise_at_most(&m, &poses, 50.0, &o, (0, 100), &mut |_| {}).unwrap_err();
         assert!(matches!(e, Error::Unreachable { pose: 0, .. }), "{e:?}");
     }
 }

@@ -52,6 +52,10 @@ pub const UNWIND_COST: f64 = 1e5;
 /// than an unwind.
 pub const TURN_OVER_COST: f64 = 1e4;
 
+/// A block whose rotary axes turn less than this (degrees) is not priced for straying: its
+/// axis strays by a fraction of a degree at most.
+pub const STRAY_STEP: f64 = 20.0;
+
 /// How [`solve`] treats the pole and the limits.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolveOptions {
@@ -243,6 +247,7 @@ pub fn solve(m: &Machine, poses: &[Pose], tool_length: f64, o: &SolveOptions) ->
 /// from `middle` (the middle of the path's arc), with the unwinds `transition` makes.
 fn stray(m: &Machine, a: [Value; 2], b: [Value; 2], middle: DVec3, unwind: bool) -> f64 {
     let mut r = [0.0; 2];
+    let mut big = false;
     for k in 0..2 {
         let (x, y) = match (a[k], b[k]) {
             (Value::Fixed(x), Value::Fixed(y)) => {
@@ -255,6 +260,12 @@ fn stray(m: &Machine, a: [Value; 2], b: [Value; 2], middle: DVec3, unwind: bool)
             (Value::Fixed(x) | Value::Turn(x), Value::Fixed(y) | Value::Turn(y)) => (x, x + wrap(y - x)),
         };
         r[k] = 0.5 * (x + y);
+        big |= (y - x).abs() > STRAY_STEP;
+    }
+    // a block that turns each axis by a few degrees strays by their square: only the big ones can
+    // turn the tool over
+    if !big {
+        return 0.0;
     }
     let axis = tool_axis(m, r);
     axis.cross(middle).length().atan2(axis.dot(middle)).to_degrees()

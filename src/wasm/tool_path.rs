@@ -18,6 +18,7 @@ use js_sys::{Float32Array, Float64Array, Uint8Array};
 use serde::{Deserialize, Serialize};
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
 
 /// A milling tool: a cylinder of `radius` and `length` (model units), flat or ball end.
 #[derive(Deserialize, Tsify)]
@@ -129,6 +130,9 @@ struct PostResult {
     /// What the machinist should know: duplicate poses, flipped axes, blocks slowed, the pole
     /// cone, the holder or shank in the stock.
     warnings: Vec<PostWarning>,
+    /// The stock the rapids were checked against: [[xmin, ymin, zmin], [xmax, ymax, zmax]], part
+    /// frame, program units.
+    stock: [[f64; 3]; 2],
 }
 
 /// A warning of the post, naming the pose (of the input where `input` told its numbering).
@@ -483,6 +487,23 @@ impl ToolPath {
         Ok(segments_f32(&axes.inserted(stride)))
     }
 
+    /// The axes (tip → tip + L·axis) of every `every`-th pose and the last, as f32 segments: a
+    /// level of detail of a path too long to draw whole.
+    #[wasm_bindgen(js_name = everyF32)]
+    pub fn every_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] every: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        const F: &str = "ToolPath.everyF32";
+        let every = integer(F, "every", &every, 1, MAX_STRIDE)?;
+        let length = self.inner.tool.length;
+        let n = self.inner.poses.len();
+        let picked = (0..n).filter(|&i| i % every == 0 || i + 1 == n).map(|i| &self.inner.poses[i]);
+        let v: Vec<f32> =
+            picked.flat_map(|p| [p.tip, p.tip + length * p.axis]).flat_map(|q| q.to_array()).map(|x| x as f32).collect();
+        Ok(Float32Array::from(&v[..]))
+    }
+
     /// The envelope of the tool's cutting end along the path (a tube of the tool radius about
     /// the ball centres; its lower half is the machined surface), `sides` vertices per ring.
     #[wasm_bindgen(js_name = envelopeMesh, unchecked_return_type = "MeshBuffers")]
@@ -538,16 +559,33 @@ impl ToolPath {
     }
 
     /// The G-code program (as `export("gcode", options)`) with what the post did: the poses it
-    /// inserted and the deviation of every block from the path (the linearisation check).
+    /// inserted and the deviation of every block from the path (the linearisation check), the
+    /// machine's axes along the path and each block's time, the unwinds, the pole cone, the
+    /// warnings. `onProgress(fraction)` is called as the post goes on (a long job's progress).
     #[wasm_bindgen(unchecked_return_type = "PostResult")]
     pub fn post(
         &self,
         #[wasm_bindgen(unchecked_optional_param_type = "GcodeOptions")] options: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "(fraction: number) => void")] on_progress: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "ToolPath.post";
         let _measure = Measure::start(F);
         let o = read_post_options(F, options)?;
-        let p = post::gcode(&self.inner, &o).map_err(|e| fail(F, e))?;
+        let report = if on_progress.is_undefined() || on_progress.is_null() {
+            None
+        } else {
+            Some(
+                on_progress
+                    .dyn_into::<js_sys::Function>()
+                    .map_err(|v| fail(F, format!("onProgress must be a function, got {}", args::describe(&v))))?,
+            )
+        };
+        let mut progress = |f: f64| {
+            if let Some(r) = &report {
+                let _ = r.call1(&JsValue::NULL, &JsValue::from_f64(f));
+            }
+        };
+        let p = post::gcode_reporting(&self.inner, &o, &mut progress).map_err(|e| fail(F, e))?;
         let u = o.units.mm();
         let l = &p.linearisation;
         let tip: Vec<f64> = l.blocks.iter().map(|b| b.tip / u).collect();
@@ -599,6 +637,7 @@ impl ToolPath {
                 unwinds: (0..p.unwound.len()).filter(|&i| p.unwound[i].is_some()).collect(),
                 adjusted: Float64Array::from(&adjusted[..]),
                 warnings,
+                stock: p.stock.map(|c| c.map(|x| x / u)),
             },
         )
     }

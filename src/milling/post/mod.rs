@@ -32,7 +32,7 @@ pub mod linuxcnc;
 mod plan;
 pub mod sinumerik;
 
-pub use plan::plan;
+pub use plan::plan_reporting;
 
 use crate::error::Message;
 use crate::error::{Error, Result};
@@ -259,6 +259,8 @@ pub struct Program {
     pub linearisation: Linearisation,
     /// What the machinist should know.
     pub warnings: Vec<Warning>,
+    /// The stock the rapids were checked against, part frame, mm.
+    pub stock: [[f64; 3]; 2],
 }
 
 /// Where a block goes: X Y Z as written (part frame in TCP mode, machine frame otherwise), the
@@ -371,9 +373,25 @@ pub fn number(x: f64, plus: bool) -> String {
     decimals(x, GCODE_DECIMALS, plus)
 }
 
-/// A number with `places` decimals ("-0.000" written "0.000"); `plus`: a sign always.
+/// A number with `places` decimals ("-0.000" written "0.000"); `plus`: a sign always. Rounded
+/// as `format!` rounds (to the nearest, exactly): where x·10^places is not within 10⁻⁶ of a half
+/// (so rounding it cannot fall the other way) from its integer, else by `format!` itself — a
+/// program of a million blocks spends most of its time writing numbers.
 pub fn decimals(x: f64, places: usize, plus: bool) -> String {
-    let s = format!("{x:.places$}");
+    let scale = 10f64.powi(places as i32);
+    let y = x * scale;
+    let s = if y.abs() < 1e9 && (y.fract().abs() - 0.5).abs() > 1e-6 {
+        let r = y.round() as i64;
+        let (whole, part) = (r.unsigned_abs() / scale as u64, r.unsigned_abs() % scale as u64);
+        let sign = if r < 0 { "-" } else { "" };
+        if places == 0 {
+            format!("{sign}{whole}")
+        } else {
+            format!("{sign}{whole}.{part:0places$}")
+        }
+    } else {
+        format!("{x:.places$}")
+    };
     let s = if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
         s.trim_start_matches('-').to_string()
     } else {
@@ -548,12 +566,20 @@ pub struct Plan {
 
 /// The G-code program of `path` (see the module documentation).
 pub fn gcode(path: &ToolPath, o: &PostOptions) -> Result<Program> {
-    let Plan { ops, context, linearised: lin, motion, warnings } = plan(path, o)?;
+    gcode_reporting(path, o, &mut |_| {})
+}
+
+/// [`gcode`] telling `progress` how far it is (0 to 1), for a long job's progress bar.
+pub fn gcode_reporting(path: &ToolPath, o: &PostOptions, progress: &mut dyn FnMut(f64)) -> Result<Program> {
+    let Plan { ops, context, linearised: lin, motion, warnings } = plan_reporting(path, o, progress)?;
+    let u = o.units.mm();
+    let stock = [(context.bounds.0 * u).to_array(), (context.bounds.1 * u).to_array()];
     let text = match o.dialect {
         Dialect::LinuxCnc => linuxcnc::write(&ops, &context),
         Dialect::Heidenhain => heidenhain::write(&ops, &context),
         Dialect::Sinumerik => sinumerik::write(&ops, &context),
     };
+    progress(1.0);
     Ok(Program {
         text,
         poses: lin.poses,
@@ -564,6 +590,7 @@ pub fn gcode(path: &ToolPath, o: &PostOptions) -> Result<Program> {
         motion,
         linearisation: lin.report,
         warnings,
+        stock,
     })
 }
 
@@ -577,6 +604,16 @@ mod tests {
         assert_eq!(number(1.5, true), "+1.5000");
         assert_eq!(number(-2.25, true), "-2.2500");
         assert_eq!(decimals(99_999.999_4, 3, false), "99999.999");
+        // the fast way and format!'s agree, ties and near-ties included
+        for x in [0.12345, -0.00005, 2.5e-5, 123456.78905, -7.0, 0.99995, 1e8 + 0.5, -3.14159265, 1.0000499999] {
+            for places in [0, 3, 4] {
+                let mut want = format!("{x:.places$}");
+                if want.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+                    want = want.trim_start_matches('-').to_string();
+                }
+                assert_eq!(decimals(x, places, false), want, "{x} to {places}");
+            }
+        }
         assert_eq!(decimals(-0.0004, 3, true), "+0.000");
         assert_eq!(clean("a (b); [c] {d} é"), "a <b>, [c] <d>  ");
         let long = "word ".repeat(60);

@@ -8,7 +8,7 @@ use super::{
 };
 use crate::error::{Arg, Error, Message, Result};
 use crate::milling::kinematics::{forward_kinematics, machine_position, tool_axis, Joints};
-use crate::milling::linearise::{linearise_with, Interpolation, LineariseOptions, Linearised};
+use crate::milling::linearise::{linearise_reporting, Interpolation, LineariseOptions, Linearised};
 use crate::milling::machine::Machine;
 use crate::milling::motion::{time_blocks, BlockMotion, BlockNeed, Limit};
 use crate::milling::solve::SolveOptions;
@@ -94,13 +94,20 @@ struct Job {
 }
 
 /// The steps of `path`'s program, in no dialect yet (see the module documentation).
+#[cfg(test)]
 pub fn plan(path: &ToolPath, o: &PostOptions) -> Result<Plan> {
-    validate(o)?;
-    let namer = Namer(o.numbering.as_ref());
-    plan_named(path, o, &namer).map_err(|e| namer.error(e))
+    plan_reporting(path, o, &mut |_| {})
 }
 
-fn plan_named(path: &ToolPath, o: &PostOptions, namer: &Namer) -> Result<Plan> {
+/// [`plan`] telling `progress` how far it is (0 to 1; the linearisation's rounds take most of
+/// the time, each halving what is left before 0.8).
+pub fn plan_reporting(path: &ToolPath, o: &PostOptions, progress: &mut dyn FnMut(f64)) -> Result<Plan> {
+    validate(o)?;
+    let namer = Namer(o.numbering.as_ref());
+    plan_named(path, o, &namer, progress).map_err(|e| namer.error(e))
+}
+
+fn plan_named(path: &ToolPath, o: &PostOptions, namer: &Namer, progress: &mut dyn FnMut(f64)) -> Result<Plan> {
     let m = &o.machine;
     let u = o.units.mm();
     let s = o.scale * u;
@@ -123,7 +130,10 @@ fn plan_named(path: &ToolPath, o: &PostOptions, namer: &Namer) -> Result<Plan> {
             ball: (path.tool.end == ToolEnd::Ball).then_some(job.radius),
         },
     };
-    let lin = linearise_with(m, &poses, job.gauge, &lo)?;
+    progress(0.05);
+    let lin = linearise_reporting(m, &poses, job.gauge, &lo, &mut |round| {
+        progress(0.05 + 0.75 * (1.0 - 0.5f64.powi(round as i32 + 1)))
+    })?;
     let n = lin.poses.len();
     let path_pose = |i: usize| lin.origin[i].floor() as usize;
 
@@ -155,6 +165,7 @@ fn plan_named(path: &ToolPath, o: &PostOptions, namer: &Namer) -> Result<Plan> {
         turns.push((turning, distance, linear, turn));
     }
     let motion = time_blocks(m, &needs, job.feed);
+    progress(0.85);
     warnings.extend(motion_warnings(&motion, &needs, job.feed, &lin, namer, m));
     warnings.extend(cone_warnings(&lin, o.pole_cone, namer));
 
