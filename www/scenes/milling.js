@@ -132,8 +132,6 @@ export const scene = defineScene({
     { style: 'envelope', label: 'milling.legend.envelope', when: (p) => !!p.envelope },
     { style: 'tool', label: 'milling.legend.tool', when: (p) => !!p.tool },
     { style: 'part', label: 'milling.legend.part', when: (p) => !!p.part },
-    { style: 'helper', label: 'milling.legend.stock' },
-    { style: 'resultPoint', label: 'milling.legend.worst' },
   ],
   create(p, ctx) {
     const { t, data, input } = ctx;
@@ -193,9 +191,13 @@ export const scene = defineScene({
       }
       // the G-code post for the machine, controller, mode and job chosen
       const { result: post, error: postError } = postOf(refined, p, numbering);
-      if (post) layers.push({ kind: 'segments', style: 'helper', positions: boxEdges(post.stock, scale) });
       /** @type {import('../scene.js').Label[]} */
       const labels = [];
+      // the stock box (named at its greatest corner: a label, the legend's colours being taken)
+      if (post) {
+        layers.push({ kind: 'segments', style: 'helper', positions: boxEdges(post.stock, scale) });
+        labels.push({ at: post.stock[1].map((x) => x / scale), text: t('milling.label.stock') });
+      }
       if (surface) {
         layers.push({ kind: 'points', style: 'resultPoint', positions: f32(surface.worstPoint) });
         labels.push({
