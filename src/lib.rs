@@ -101,13 +101,22 @@ pub use congruence::{
 pub use linear_complex::{fit_linear_complex, ComplexKind, LinearComplex};
 
 // Example 6: tool paths for 5-axis milling
-pub use io::toolpath::{looks_like_poses, read_tool_poses, tool_path_csv, tool_path_json, ImportedPoses};
-pub use milling::example::{example_pose, example_profile, example_tool_path, part_height, part_mesh, EXAMPLE_RANGE};
-pub use milling::kinematics::{at_pole, forward_kinematics, inverse_kinematics, orientations, tool_axis, Joints};
+pub use io::target::{looks_like_target, read_target, Target};
+pub use io::toolpath::{
+    looks_like_poses, read_tool_poses, read_tool_poses_for, tool_path_csv, tool_path_json, ImportedPoses,
+};
+pub use milling::example::{
+    example_pose, example_profile, example_tool_path, example_tool_path_for, part_height, part_mesh, EXAMPLE_RANGE,
+};
+pub use milling::kinematics::{at_pole, forward_kinematics, orientations, pole_angle, tool_axis, Joints};
 pub use milling::linearise::{BlockDeviation, Interpolation, Linearisation};
 pub use milling::machine::{AxisName, Carrier, Machine, RotaryAxis, MACHINE_PRESETS};
-pub use milling::post::{gcode, Coolant, Dialect, Mode, PostOptions, Program};
-pub use milling::quality::{deviation, deviation_per_pose, Quality};
+pub use milling::motion::{BlockMotion, Limit};
+pub use milling::post::{
+    gcode, Coolant, Dialect, Holder, Mode, Numbering, PostOptions, Program, SpindleDirection, Units, Warning,
+};
+pub use milling::quality::{deviation, deviation_per_pose, envelope_deviation, EnvelopeDeviation, Quality};
+pub use milling::solve::{inverse_kinematics, solve, SolveOptions, Solved};
 pub use milling::{Pose, Tool, ToolEnd, ToolPath};
 
 // reading and writing segments

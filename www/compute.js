@@ -1,9 +1,12 @@
 // Runs refinements in a Web Worker (www/worker.js, with its own wasm instance), one job at a
 // time; a newer job supersedes an older one, whose result is dropped. Where no worker can
 // start — a sandboxed frame, a page whose Content-Security-Policy forbids the worker's script —
-// the same job (refine.js) runs on the main thread, yielding between steps.
+// the same job (refine.js) runs on the main thread, yielding between steps. A tool path's post
+// (post-job.js) runs the same way; as it can take a minute, a newer job or cancelWork() stops
+// the worker computing it (a new one starts for the next job).
 import { newWorker, reportNoWorker, wasmSource } from './core.js';
 import { refineSteps } from './refine.js';
+import { postSteps } from './post-job.js';
 
 /** @type {Worker | null} */
 let worker = null;
@@ -11,7 +14,8 @@ let worker = null;
 let noWorker = false;
 let nextId = 0;
 /**
- * @typedef {{resolve: (v: any) => void, reject: (e: any) => void, onProgress: (f: number) => void, job: {segments: Float64Array, options: import('../pkg/ruledlab.js').SubdivideOptions, draw: number}}} Job
+ * @typedef {{resolve: (v: any) => void, reject: (e: any) => void, onProgress: (f: number) => void, job: any, post?: boolean}} Job
+ *   job: a refinement's {segments, options, draw}, or a post's (post-job.js)
  */
 /** @type {Map<number, Job>} */
 const jobs = new Map();
@@ -57,7 +61,10 @@ function here(/** @type {number} */ id, /** @type {Job} */ job) {
   const pause = () =>
     new Promise((resolve, reject) => setTimeout(() => (jobs.has(id) ? resolve(undefined) : reject(superseded())), 0));
   pause()
-    .then(() => refineSteps(job.job, job.onProgress, pause))
+    .then(
+      /** @returns {Promise<unknown>} */
+      () => (job.post ? postSteps(job.job, job.onProgress, pause) : refineSteps(job.job, job.onProgress, pause)),
+    )
     .then(
       (done) => {
         if (jobs.get(id) !== job) return;
@@ -82,10 +89,7 @@ function here(/** @type {number} */ id, /** @type {Job} */ job) {
  */
 export function refineInWorker(segments, options, onProgress = () => {}, draw = Infinity) {
   const id = ++nextId;
-  for (const [old, job] of jobs) {
-    jobs.delete(old);
-    job.reject(superseded());
-  }
+  supersede();
   return new Promise((resolve, reject) => {
     /** @type {Job} */
     const job = { resolve, reject, onProgress, job: { segments, options, draw } };
@@ -94,4 +98,42 @@ export function refineInWorker(segments, options, onProgress = () => {}, draw = 
     if (w) w.postMessage({ id, segments, options, draw });
     else here(id, job);
   });
+}
+
+/** Drops every pending job (rejected as superseded); a post running in the worker stops it. */
+function supersede() {
+  let busy = false;
+  for (const [old, job] of jobs) {
+    jobs.delete(old);
+    busy ||= !!job.post;
+    job.reject(superseded());
+  }
+  if (busy && worker) {
+    worker.terminate();
+    worker = null;
+  }
+}
+
+/**
+ * Refines tool poses and posts them as G-code in the worker (or here, where there is none).
+ * @param {import('./post-job.js').PostJob} job
+ * @param {(fraction: number) => void} [onProgress]
+ * @returns {Promise<import('./post-job.js').PostJobResult>}
+ */
+export function postInWorker(job, onProgress = () => {}) {
+  const id = ++nextId;
+  supersede();
+  return new Promise((resolve, reject) => {
+    /** @type {Job} */
+    const entry = { resolve, reject, onProgress, job, post: true };
+    jobs.set(id, entry);
+    const w = theWorker();
+    if (w) w.postMessage({ id, kind: 'post', ...job });
+    else here(id, entry);
+  });
+}
+
+/** Stops the work in progress (the view's Cancel): its result will not come. */
+export function cancelWork() {
+  supersede();
 }

@@ -30,6 +30,11 @@ export const PITCH_LIMIT = 1.55;
 
 /** Output sizes (rulings) above this are computed in the worker. */
 export const WORKER_THRESHOLD = 50_000;
+/**
+ * Refined tool poses above this are refined and posted in the worker (the milling scene's long
+ * jobs: its G-code post takes about a second for 40 000 poses on the page).
+ */
+export const POST_WORKER_THRESHOLD = 5_000;
 /** Most rulings drawn as a strip (a level of detail above it). */
 export const DRAW_LIMIT = 100_000;
 /**

@@ -96,6 +96,9 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {number} [cols]
  * @property {boolean} [poses]   tool poses, not segments
  * @property {{ radius: number, length: number, end: 'ball' | 'flat' }} [tool]   the tool their file names
+ * @property {'mm' | 'inch'} [units]   tool poses: the units of their file
+ * @property {number[]} [lines]   tool poses: the line of each in its file (errors name it)
+ * @property {Float64Array} [target]   tool poses: your target curve, 3 numbers per point
  *
  * Something to draw: f32 buffers from the core, and a style of theme.js.
  * @typedef {object} Layer

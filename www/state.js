@@ -128,17 +128,19 @@ export function writeCamera(/** @type {number[]} */ camera) {
 
 /** Whether imported data is small enough for a link. */
 export function linkable(/** @type {import('./scene.js').ImportedData} */ data) {
-  return data.segments.length / 6 <= MAX_LINK_RULINGS;
+  return (data.segments.length + (data.target?.length ?? 0) / 2) / 6 <= MAX_LINK_RULINGS;
 }
 
 /**
  * "rows x cols:" (for a congruence) or "p:" (tool poses; "p radius~length~b|f:" with their
- * tool) then the numbers, comma-separated, at full precision.
+ * tool) then the numbers, comma-separated, at full precision; tool poses with a target curve
+ * add "~t:" and its points' numbers.
  */
 export function writeData(/** @type {import('./scene.js').ImportedData} */ data) {
   const tool = data.tool ? `${data.tool.radius}~${data.tool.length}~${data.tool.end === 'flat' ? 'f' : 'b'}` : '';
   const shape = data.poses ? `p${tool}:` : data.rows && data.cols ? `${data.rows}x${data.cols}:` : '';
-  return shape + Array.from(data.segments, (x) => String(x)).join(',');
+  const target = data.poses && data.target ? `~t:${Array.from(data.target, (x) => String(x)).join(',')}` : '';
+  return shape + Array.from(data.segments, (x) => String(x)).join(',') + target;
 }
 
 /**
@@ -147,7 +149,7 @@ export function writeData(/** @type {import('./scene.js').ImportedData} */ data)
  * @returns {import('./scene.js').ImportedData | null}
  */
 export function readData(text) {
-  const poses = /^p(?:([0-9.eE+]+)~([0-9.eE+]+)~([bf]))?:(.*)$/.exec(text);
+  const poses = /^p(?:([0-9.eE+]+)~([0-9.eE+]+)~([bf]))?:([^~]*)(?:~t:([-+0-9.eE,]*))?$/.exec(text);
   const m = /^(?:(\d{1,4})x(\d{1,4}):)?([-+0-9.eE,]*)$/.exec(poses ? poses[4] : text);
   if (!m || (poses && m[1])) return null;
   const numbers = m[3].split(',').map(Number);
@@ -157,7 +159,12 @@ export function readData(text) {
     const [radius, length] = [Number(poses[1]), Number(poses[2])];
     const tool =
       poses[1] && radius > 0 && length > 0 ? { radius, length, end: poses[3] === 'f' ? 'flat' : 'ball' } : null;
-    return tool ? { segments, poses: true, tool: /** @type {any} */ (tool) } : { segments, poses: true };
+    const points = poses[5] ? poses[5].split(',').map(Number) : [];
+    if (points.length % 3 !== 0 || !points.every(Number.isFinite)) return null;
+    const target = points.length >= 6 ? { target: new Float64Array(points) } : {};
+    return tool
+      ? { segments, poses: true, tool: /** @type {any} */ (tool), ...target }
+      : { segments, poses: true, ...target };
   }
   if (m[1]) {
     const [rows, cols] = [Number(m[1]), Number(m[2])];

@@ -3,9 +3,11 @@
 // Then { id, segments: Float64Array, options, draw } (RuledSurface.subdivide options, steps
 // included; `draw`: most rulings to send back). Messages out: { id, progress } after each
 // step, then { id, segments: Float32Array, rulings, drawn } (transferred; see refine.js), or
-// { id, error, code, details }.
+// { id, error, code, details }. A job with `kind: 'post'` is a tool path refined and posted as
+// G-code (post-job.js): { id, kind, poses, tool, refine, post, draw } in, its result out.
 import init from '../pkg/ruledlab.js';
 import { refineSteps } from './refine.js';
+import { postSteps } from './post-job.js';
 
 /** @type {Promise<unknown> | null} */
 let ready = null;
@@ -18,7 +20,8 @@ self.onmessage = async ({ data }) => {
   const { id } = data;
   try {
     await ready;
-    const done = await refineSteps(data, (progress) => self.postMessage({ id, progress }));
+    const report = (/** @type {number} */ progress) => self.postMessage({ id, progress });
+    const done = data.kind === 'post' ? await postSteps(data, report) : await refineSteps(data, report);
     self.postMessage({ id, ...done }, { transfer: [done.segments.buffer] });
   } catch (e) {
     const error = /** @type {any} */ (e);

@@ -267,11 +267,20 @@ pub const MESSAGES: &[(&str, &str)] = &[
     ("json-whole-segments", "{count} numbers are not a whole number of segments (6 each)"),
     ("json-grid-count", "a {rows} × {cols} grid needs {need} segments, found {found}"),
     // tool poses (src/io/toolpath.rs)
-    ("import-zero-axis", "pose {record} has a zero axis (i = j = k = 0), so it has no direction"),
+    ("import-zero-axis", "pose {record} has a zero tool axis (i = j = k = 0), so it has no direction"),
     ("import-too-few-poses", "{found} pose(s): at least 2 are needed (a tool path has two poses or more)"),
     ("json-poses-missing", "an object needs a \"poses\" array"),
     ("json-poses-array", "poses must be an array"),
     ("json-pose", "expected a pose: an object with \"tip\": [x, y, z] and \"axis\": [i, j, k]"),
+    ("csv-pose-numbers", "expected 6 numbers for a pose (tip x, y, z and tool axis i, j, k), found {found}"),
+    ("csv-pose-angles", "expected a number in each of the columns {columns}, found {found} numbers"),
+    ("pose-angles-machine", "the poses give rotary angles ({columns}): name the machine they are for (a line \"# machine: <name>\" or the machine chosen)"),
+    ("pose-angles-letter", "the machine {machine} has no rotary axis {letter}, which the column {letter} gives"),
+    // target curves (src/io/target.rs)
+    ("target-too-few", "{found} target point(s): at least 2 are needed (a target curve)"),
+    ("target-three-numbers", "expected 3 numbers for a target point (x, y, z), found {found}"),
+    ("target-json", "expected an array of points [x, y, z], or an object with \"points\""),
+    ("target-json-point", "expected a target point [x, y, z]"),
     // the G-code post (src/milling)
     ("pose-orientation", "pose {pose}: no setting of the rotary axes of {machine} gives this tool axis"),
     ("pose-unreachable", "pose {pose} cannot be reached: {axis} would be {value}, outside its limits {min} to {max}"),
@@ -280,6 +289,17 @@ pub const MESSAGES: &[(&str, &str)] = &[
         "between poses {pose} and {next} the controller's linear interpolation still strays {deviation} mm from the path after {rounds} rounds of inserted poses (tolerance {tolerance} mm): the rotary axes turn over or pass the pole there",
     ),
     ("retract-horizontal", "pose {pose}: the tool axis is too close to horizontal to retract along it to the safe height"),
+    ("approach-blocked", "pose {pose}: no point on its tool axis within the machine's travel from which the tool comes down clear of the stock"),
+    ("unwind-blocked", "pose {pose}: a rotary axis must unwind here, and no point on the tool axis within the travel lets it turn clear of the stock"),
+    // what the G-code post warns of (src/milling/post/plan.rs)
+    ("warn-duplicate-pose", "pose {pose} repeats pose {previous}: no block written for it"),
+    ("warn-flipped-axis", "pose {pose}: the tool axis turns {angle}° from pose {previous}; is it flipped, pointing away from the spindle?"),
+    ("warn-slowed", "{count} blocks slowed by the axes' limits, the slowest at {feed} mm/min at the tip instead of {wanted} ({axis}, pose {pose})"),
+    ("warn-acceleration", "{count} blocks still need more acceleration than an axis has, from pose {pose}"),
+    ("warn-pole-cone", "{count} poses within {cone}° of the pole, from pose {pose}: their tool axis turned by up to {angle}° to keep the rotary axes smooth"),
+    ("warn-tool-in-stock", "the {part} enters the stock at pose {pose} ({count} poses of the cut)"),
+    ("part-holder", "holder"),
+    ("part-shank", "shank"),
 ];
 
 #[cfg(test)]

@@ -135,8 +135,11 @@ pub enum Error {
     /// A tool pose a machine cannot serve: beyond an axis limit, or a path the controller's
     /// linear interpolation cannot follow within the tolerance (the G-code post).
     Unreachable {
-        /// The pose (0-based, in the path given to the post).
+        /// The pose (0-based, in the path given to the post, or the pose of the input it was
+        /// refined from where the post was told the input's numbering).
         pose: usize,
+        /// The 1-based line of that pose in the file it was read from, where known.
+        line: Option<usize>,
         /// What is out of reach, and by how much.
         message: Message,
     },
@@ -356,7 +359,10 @@ impl Error {
             Error::Degenerate { what, .. } | Error::NotFiniteAt { what, .. } => d.option = Some(what.clone()),
             Error::NotConverged { iterations, .. } => d.limit = Some(*iterations as f64),
             Error::Singular { pivot, .. } => d.index = Some(*pivot),
-            Error::Unreachable { pose, .. } => d.index = Some(*pose),
+            Error::Unreachable { pose, line, .. } => {
+                d.index = Some(*pose);
+                d.line = *line;
+            }
         }
         let message = self.message();
         d.reason = Some(message.reason);
@@ -397,6 +403,7 @@ impl fmt::Display for Error {
             Error::NotFiniteAt { what, derivative: false, .. } => write!(f, "{what} is {text}"),
             Error::NotFiniteAt { what, derivative: true, .. } => write!(f, "{what}: {text}"),
             Error::NotConverged { what, .. } | Error::Singular { what, .. } => write!(f, "{what}: {text}"),
+            Error::Unreachable { line: Some(l), .. } => write!(f, "{text} (line {l})"),
             _ => write!(f, "{text}"),
         }
     }

@@ -1,6 +1,7 @@
 //! Data formats, the one home of every file ruledlab reads or writes as data (drawings are the
 //! page's: `www/export/`): segments as CSV (6 numbers per line) and JSON, read and written; OBJ
-//! of a strip; the invariants of Section 2 as CSV and JSON; a tool path as CSV and JSON.
+//! of a strip; the invariants of Section 2 as CSV and JSON; a tool path as CSV and JSON, tool
+//! poses and target curves read from tables CAM systems write.
 //! Malformed input is rejected with the line and column of the problem; sizes are checked
 //! before anything large is allocated ([`MAX_IMPORT_TEXT`](crate::tolerance::MAX_IMPORT_TEXT), and the ruling limit).
 
@@ -8,6 +9,8 @@ pub mod csv;
 pub mod invariants;
 pub mod json;
 pub mod obj;
+pub mod table;
+pub mod target;
 pub mod toolpath;
 
 use crate::error::{Error, Result};

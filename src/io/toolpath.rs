@@ -6,9 +6,13 @@
 
 use crate::error::{Error, Result};
 use crate::io::json::{self, Value};
+use crate::io::table::{read_table, Table};
 use crate::io::{position, NumberParser};
+use crate::milling::kinematics::tool_axis;
+use crate::milling::machine::Machine;
 use crate::milling::tool_line;
 use crate::milling::{Tool, ToolEnd, ToolPath};
+use crate::tolerance::MAX_RULINGS;
 use glam::DVec3;
 use std::fmt::Write;
 
@@ -50,13 +54,51 @@ pub struct ImportedPoses {
     pub axes: Vec<DVec3>,
     /// The tool of ruledlab's own files (CSV header, JSON `tool`).
     pub tool: Option<Tool>,
+    /// The 1-based line of each pose in the file.
+    pub lines: Vec<usize>,
+    /// "mm" or "inch" where the file says so (`# units: …`, JSON `"units"`).
+    pub units: Option<String>,
+    /// The machine whose rotary angles the file gives, where it gives angles.
+    pub machine: Option<String>,
+}
+
+/// Which columns of a CSV give a pose.
+#[derive(Debug, Clone, PartialEq)]
+enum Columns {
+    /// Six numbers a line: tip x, y, z, axis i, j, k.
+    Positional,
+    /// The columns of tip x, y, z and axis i, j, k.
+    Vector([usize; 6]),
+    /// The columns of tip x, y, z and of the rotary angles (letter, column), degrees.
+    Angles([usize; 3], Vec<(char, usize)>),
+}
+
+/// The columns a header names (module documentation), if it names a pose's.
+fn columns(header: &[String]) -> Option<Columns> {
+    let find = |names: &[&str]| header.iter().position(|h| names.contains(&h.as_str()));
+    let xyz =
+        [find(&["x", "tip_x", "tipx", "px"]), find(&["y", "tip_y", "tipy", "py"]), find(&["z", "tip_z", "tipz", "pz"])];
+    let ijk = [
+        find(&["i", "axis_i", "axisi", "nx"]),
+        find(&["j", "axis_j", "axisj", "ny"]),
+        find(&["k", "axis_k", "axisk", "nz"]),
+    ];
+    let [Some(x), Some(y), Some(z)] = xyz else { return None };
+    if let [Some(i), Some(j), Some(k)] = ijk {
+        return Some(Columns::Vector([x, y, z, i, j, k]));
+    }
+    let angles: Vec<(char, usize)> = ['a', 'b', 'c']
+        .into_iter()
+        .filter_map(|l| header.iter().position(|h| h.len() == 1 && h.starts_with(l)).map(|c| (l, c)))
+        .collect();
+    (!angles.is_empty() && ijk.iter().all(Option::is_none)).then_some(Columns::Angles([x, y, z], angles))
 }
 
 /// Whether a text looks like tool poses rather than segments: JSON with `"poses"` or `"tip"`;
 /// CSV from ruledlab's tool-path export (`# ruledlab tool path`) or whose header names a tip or
 /// an axis (`tip_x,…,axis_k`).
 pub fn looks_like_poses(text: &str) -> bool {
-    let t = text.trim_start();
+    let t = text.trim_start_matches('\u{feff}').trim_start();
     if t.starts_with(['[', '{']) {
         return t.contains("\"poses\"") || t.contains("\"tip\"");
     }
@@ -68,7 +110,9 @@ pub fn looks_like_poses(text: &str) -> bool {
             continue;
         }
         let l = line.to_ascii_lowercase();
-        return l.contains("tip") || l.contains("axis");
+        let names: Vec<String> =
+            l.split([',', ';', '\t', ' ']).map(|f| f.trim().to_string()).filter(|f| !f.is_empty()).collect();
+        return l.contains("tip") || l.contains("axis") || columns(&names).is_some();
     }
     false
 }
@@ -94,33 +138,134 @@ fn pose_axis(source: &str, k: usize, axis: DVec3, at: (Option<usize>, Option<usi
     }
 }
 
-/// Reads tool poses from CSV (tip x, y, z and axis i, j, k per row; the axis need not be a
-/// unit vector; an optional header; `#` comments, ruledlab's own naming the tool) or JSON
-/// (`{ "poses": [{ "tip": [x, y, z], "axis": [i, j, k] }, …], "tool"?: { "end", "radius",
-/// "length" } }` or the array of poses alone). At least two poses; no zero axis.
+/// Reads tool poses from CSV (see the module documentation; the axis need not be a unit
+/// vector; `#` comments, ruledlab's own naming the tool) or JSON (`{ "poses": [{ "tip": [x, y,
+/// z], "axis": [i, j, k] }, …], "tool"?: { "end", "radius", "length" }, "units"? }` or the array
+/// of poses alone). At least two poses; no zero axis.
 pub fn read_tool_poses(text: &str, json: bool, number: NumberParser<'_>) -> Result<ImportedPoses> {
-    let (tips, axes, tool) = if json { read_json(text, number)? } else { read_csv(text, number)? };
-    if tips.len() < 2 {
+    read_tool_poses_for(text, json, number, None)
+}
+
+/// [`read_tool_poses`] with the machine whose rotary angles a CSV's `a`, `b`, `c` columns are
+/// (where the file names none in a comment `# machine: <preset>`).
+pub fn read_tool_poses_for(
+    text: &str,
+    json: bool,
+    number: NumberParser<'_>,
+    machine: Option<&Machine>,
+) -> Result<ImportedPoses> {
+    let read = if json { read_json(text, number)? } else { read_csv(text, number, machine)? };
+    if read.tips.len() < 2 {
         let source = if json { "json" } else { "csv" };
-        return Err(Error::parse(source, None, None, crate::msg!("import-too-few-poses", found = tips.len())));
+        return Err(Error::parse(source, None, None, crate::msg!("import-too-few-poses", found = read.tips.len())));
     }
-    Ok(ImportedPoses { tips, axes, tool })
+    Ok(read)
 }
 
-type Read = (Vec<DVec3>, Vec<DVec3>, Option<Tool>);
-
-fn read_csv(text: &str, number: NumberParser<'_>) -> Result<Read> {
-    let (coords, lines) = crate::io::csv::rows_with(text, number)?;
-    let mut tips = Vec::with_capacity(coords.len() / 6);
-    let mut axes = Vec::with_capacity(coords.len() / 6);
-    for (k, r) in coords.chunks_exact(6).enumerate() {
-        tips.push(DVec3::new(r[0], r[1], r[2]));
-        axes.push(pose_axis("csv", k, DVec3::new(r[3], r[4], r[5]), (lines.get(k).copied(), None))?);
+/// "mm" or "inch" for what a file says of its units (`millimetres`, `in`, … too), else `None`.
+fn units_word(said: Option<String>) -> Option<String> {
+    let s = said?.to_ascii_lowercase();
+    let s = s.trim();
+    if ["mm", "millimetre", "millimetres", "millimeter", "millimeters"].contains(&s) {
+        Some("mm".into())
+    } else if ["in", "inch", "inches", "\""].contains(&s) {
+        Some("inch".into())
+    } else {
+        None
     }
-    Ok((tips, axes, tool_from_header(text)))
 }
 
-fn read_json(text: &str, number: NumberParser<'_>) -> Result<Read> {
+fn read_csv(text: &str, number: NumberParser<'_>, machine: Option<&Machine>) -> Result<ImportedPoses> {
+    let table: Table = read_table(text, number, "csv", MAX_RULINGS)?;
+    if table.rows.is_empty() {
+        return Err(Error::parse("csv", None, None, crate::msg!("csv-no-data")));
+    }
+    let cols = table.header.as_deref().and_then(columns).unwrap_or(Columns::Positional);
+    let named = table.said("machine");
+    let preset = named.as_deref().and_then(Machine::preset);
+    let mut out = ImportedPoses {
+        tips: Vec::with_capacity(table.rows.len()),
+        axes: Vec::with_capacity(table.rows.len()),
+        tool: tool_from_header(text),
+        lines: Vec::with_capacity(table.rows.len()),
+        units: units_word(table.said("units")),
+        machine: None,
+    };
+    let m = match &cols {
+        Columns::Angles(_, letters) => {
+            let names: String = letters.iter().map(|(l, _)| l.to_ascii_uppercase()).collect();
+            let Some(m) = preset.as_ref().or(machine) else {
+                return Err(Error::parse(
+                    "csv",
+                    table.header.as_ref().map(|_| 1),
+                    None,
+                    crate::msg!("pose-angles-machine", columns = names),
+                ));
+            };
+            out.machine = Some(m.name.clone());
+            Some(m)
+        }
+        _ => None,
+    };
+    for (k, row) in table.rows.iter().enumerate() {
+        let v = &row.values;
+        let wrong = |found: usize, need: usize| {
+            let col = row.columns.get(need.min(found)).copied().or(row.columns.last().map(|c| c + 1));
+            Error::parse("csv", Some(row.line), col, crate::msg!("csv-pose-numbers", found = found))
+        };
+        let (tip, axis) = match &cols {
+            Columns::Positional => {
+                if v.len() != 6 {
+                    return Err(wrong(v.len(), 6));
+                }
+                (DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]))
+            }
+            Columns::Vector(c) => {
+                if c.iter().any(|&i| i >= v.len()) {
+                    return Err(wrong(v.len(), 6));
+                }
+                (DVec3::new(v[c[0]], v[c[1]], v[c[2]]), DVec3::new(v[c[3]], v[c[4]], v[c[5]]))
+            }
+            Columns::Angles(xyz, letters) => {
+                let m = m.expect("a machine for angles");
+                let need = xyz.iter().chain(letters.iter().map(|(_, c)| c)).copied().max().unwrap_or(0);
+                if need >= v.len() {
+                    let names: String = letters.iter().map(|(l, _)| l.to_ascii_uppercase()).collect();
+                    let col = row.columns.last().map(|c| c + 1);
+                    return Err(Error::parse(
+                        "csv",
+                        Some(row.line),
+                        col,
+                        crate::msg!("csv-pose-angles", columns = format!("X Y Z {names}"), found = v.len()),
+                    ));
+                }
+                let mut rotary = [0.0; 2];
+                for (l, c) in letters {
+                    let letter = l.to_ascii_uppercase().to_string();
+                    match (0..2).find(|&a| m.rotary[a].name.letter() == letter) {
+                        Some(a) => rotary[a] = v[*c],
+                        None if v[*c] == 0.0 => {}
+                        None => {
+                            return Err(Error::parse(
+                                "csv",
+                                Some(row.line),
+                                row.columns.get(*c).copied(),
+                                crate::msg!("pose-angles-letter", machine = m.name.as_str(), letter = letter),
+                            ));
+                        }
+                    }
+                }
+                (DVec3::new(v[xyz[0]], v[xyz[1]], v[xyz[2]]), tool_axis(m, rotary))
+            }
+        };
+        out.tips.push(tip);
+        out.axes.push(pose_axis("csv", k, axis, (Some(row.line), None))?);
+        out.lines.push(row.line);
+    }
+    Ok(out)
+}
+
+fn read_json(text: &str, number: NumberParser<'_>) -> Result<ImportedPoses> {
     let (root_at, root) = json::value_with(text, number)?;
     let at = |a: usize| {
         let (l, c) = position(text, a);
@@ -132,8 +277,12 @@ fn read_json(text: &str, number: NumberParser<'_>) -> Result<Read> {
     };
     let field =
         |fields: &[(String, usize, Value)], k: &str| fields.iter().find(|f| f.0 == k).map(|f| (f.1, f.2.clone()));
+    let mut units = None;
     let (poses_at, poses, tool) = match root {
         Value::Object(fields) => {
+            if let Some((_, Value::String(u))) = field(&fields, "units") {
+                units = units_word(Some(u));
+            }
             let Some((p_at, p)) = field(&fields, "poses") else {
                 return Err(fail(root_at, crate::msg!("json-poses-missing")));
             };
@@ -159,6 +308,7 @@ fn read_json(text: &str, number: NumberParser<'_>) -> Result<Read> {
         return Err(fail(poses_at, crate::msg!("json-poses-array")));
     };
     let (mut tips, mut axes) = (Vec::with_capacity(items.len()), Vec::with_capacity(items.len()));
+    let mut lines = Vec::with_capacity(items.len());
     let vector = |v: Option<(usize, Value)>, a: usize| -> Result<DVec3> {
         match v {
             Some((_, Value::Array(xs))) if xs.len() == 3 => {
@@ -180,8 +330,9 @@ fn read_json(text: &str, number: NumberParser<'_>) -> Result<Read> {
         };
         tips.push(vector(field(fields, "tip"), *item_at)?);
         axes.push(pose_axis("json", k, vector(field(fields, "axis"), *item_at)?, at(*item_at))?);
+        lines.push(position(text, *item_at).0);
     }
-    Ok((tips, axes, tool))
+    Ok(ImportedPoses { tips, axes, tool, lines, units, machine: None })
 }
 
 #[cfg(test)]
@@ -212,7 +363,13 @@ mod tests {
             read_tool_poses("tip_x,tip_y,tip_z,axis_i,axis_j,axis_k\n0,0,0,0,0,1\n1,0,0,0,0,0\n", false, &rust_number);
         assert_eq!(
             e.unwrap_err().to_string(),
-            "csv: line 3: pose 1 has a zero axis (i = j = k = 0), so it has no direction"
+            "csv: line 3: pose 1 has a zero tool axis (i = j = k = 0), so it has no direction"
+        );
+        // a pose's numbers are counted in a pose's words, where they are
+        let e = read_tool_poses("0,0,0,0,0,1\n1,0,0,0,1\n", false, &rust_number).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "csv: line 2, column 10: expected 6 numbers for a pose (tip x, y, z and tool axis i, j, k), found 5"
         );
         let e = read_tool_poses("{\"poses\": [{\"tip\": [0, 0, 0]}]}", true, &rust_number).unwrap_err();
         assert!(e.to_string().starts_with("json: line 1, column 12: expected a pose"), "{e}");
@@ -249,6 +406,49 @@ mod tests {
         }
         let e = axis(DVec3::ZERO).unwrap_err();
         assert_eq!((e.details().reason, e.details().line), (Some("import-zero-axis"), Some(1)));
+    }
+
+    /// The CAM header `x,y,z,i,j,k` (any order, any case), the units in a comment, a BOM and
+    /// semicolons with decimal commas; each pose's line.
+    #[test]
+    fn named_columns_units_and_lines() {
+        let text = "\u{feff}# units: inch\nI;J;K;X;Y;Z\n0;0;1;1,5;0;0\n\n0;0,6;0,8;2;0;0\n";
+        assert!(looks_like_poses(text));
+        let p = read_tool_poses(text, false, &rust_number).unwrap();
+        assert_eq!(p.tips, [DVec3::new(1.5, 0.0, 0.0), DVec3::new(2.0, 0.0, 0.0)]);
+        assert_eq!(p.axes[1], DVec3::new(0.0, 0.6, 0.8));
+        assert_eq!((p.lines, p.units.as_deref(), p.machine), (vec![3, 5], Some("inch"), None));
+        assert!(looks_like_poses("x,y,z,i,j,k\n"));
+        assert!(!looks_like_poses("x,y,z,u,v,w\n"));
+    }
+
+    /// `x y z a b c` in degrees: the tool axis the named machine's rotary axes give (table-table-ac:
+    /// A tilts about X, C turns about Z; A = 90°, C = 0 turns the table's +Y to +Z, so the tool
+    /// axis, +Z of the machine, is −Y… seen from the part: R_Tᵀ Z with R_T = R_X(90°) is (0, 1, 0)
+    /// rotated back, tool_axis's answer); without a machine the file is refused, naming its
+    /// columns; a B on an A/C machine is refused where it is not 0.
+    #[test]
+    fn rotary_angles_for_a_named_machine() {
+        let m = Machine::preset("table-table-ac").unwrap();
+        let text = "# machine: table-table-ac\nx y z a b c\n0 0 0 0 0 0\n1 0 0 90 0 0\n2 0 0 30 0 45\n";
+        assert!(looks_like_poses(text));
+        let p = read_tool_poses(text, false, &rust_number).unwrap();
+        assert_eq!(p.machine.as_deref(), Some("table-table-ac"));
+        assert_eq!(p.axes[0], DVec3::Z);
+        assert!((p.axes[1] - tool_axis(&m, [90.0, 0.0])).length() < 1e-15);
+        assert!((p.axes[2] - tool_axis(&m, [30.0, 45.0])).length() < 1e-15);
+        let bare = "x,y,z,a,c\n0,0,0,0,0\n1,0,0,10,0\n";
+        let e = read_tool_poses(bare, false, &rust_number).unwrap_err();
+        assert_eq!(e.details().reason, Some("pose-angles-machine"));
+        let h = Machine::preset("head-head-ac").unwrap();
+        let p = read_tool_poses_for(bare, false, &rust_number, Some(&h)).unwrap();
+        assert!((p.axes[1] - tool_axis(&h, [0.0, 10.0])).length() < 1e-15, "A is head-head-ac's second axis");
+        let e =
+            read_tool_poses_for("x y z a b c\n0 0 0 0 5 0\n1 0 0 0 0 0\n", false, &rust_number, Some(&m)).unwrap_err();
+        assert_eq!(
+            (e.details().reason, e.details().line, e.details().column),
+            (Some("pose-angles-letter"), Some(2), Some(9))
+        );
     }
 
     #[test]

@@ -49,7 +49,12 @@ pub const EXAMPLE_RANGE: (f64, f64) = (0.0, 6.0);
 
 /// The example with `count` given poses (Fig. 16 uses 7), tool radius 0.25, length 1.5.
 pub fn example_tool_path(count: usize) -> Result<ToolPath> {
-    let tool = Tool::new(0.25, 1.5, ToolEnd::Ball)?;
+    example_tool_path_for(count, Tool::new(0.25, 1.5, ToolEnd::Ball)?)
+}
+
+/// The example for another tool: the ball of the tool's radius touches the profile at every
+/// pose (the tip r below its centre along the axis), whatever the tool's end and length.
+pub fn example_tool_path_for(count: usize, tool: Tool) -> Result<ToolPath> {
     let count = count.max(2);
     let poses = (0..count)
         .map(|i| {
@@ -139,6 +144,23 @@ mod tests {
             // in the plane of ν and γ′, leaning towards γ′
             assert!(pose.axis.dot(normal.cross(tangent)).abs() < 1e-8 && pose.axis.dot(tangent) > 0.3);
         }
+    }
+
+    /// Another tool's example: its ball touches the same profile; the radius 0.25 gives the
+    /// paper's example bit for bit.
+    #[test]
+    fn the_example_for_another_tool_touches_the_same_profile() {
+        let tool = Tool::new(0.4, 2.0, ToolEnd::Flat).unwrap();
+        let p = example_tool_path_for(5, tool).unwrap();
+        assert_eq!(p.tool, tool);
+        for (k, pose) in p.poses.iter().enumerate() {
+            let (g, c, _) = example_pose(1.5 * k as f64, 0.4);
+            assert!(((pose.tip + 0.4 * pose.axis) - c).length() < 1e-15 && ((c - g).length() - 0.4).abs() < 1e-15);
+        }
+        assert_eq!(
+            example_tool_path_for(7, Tool::new(0.25, 1.5, ToolEnd::Ball).unwrap()).unwrap(),
+            example_tool_path(7).unwrap()
+        );
     }
 
     #[test]

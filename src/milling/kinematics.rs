@@ -113,18 +113,59 @@ fn angle_about(u: DVec3, from: DVec3, to: DVec3) -> Option<f64> {
     Some(u.dot(f.cross(t)).atan2(f.dot(t)))
 }
 
+/// How a machine's orientation equation R(u, φ) p = R(w, ψ) q reads (module documentation):
+/// p is the part-frame tool axis and q is Z on every machine type; φ is the geometric angle of
+/// `rotary[iu]` times `su`, ψ that of `rotary[iw]` times `sw`. The pole is p ∥ u: φ free there.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Frame {
+    /// The axis whose angle the pole leaves free, its direction and sign.
+    pub iu: usize,
+    /// Its direction.
+    pub u: DVec3,
+    /// φ = su · θ[iu].
+    pub su: f64,
+    /// The other axis, its direction and sign.
+    pub iw: usize,
+    /// Its direction.
+    pub w: DVec3,
+    /// ψ = sw · θ[iw].
+    pub sw: f64,
+}
+
+/// The machine's [`Frame`]; `None` for a machine with no rotary axis on the table or the head
+/// that can turn the tool axis (never for a valid description with two axes).
+pub fn frame(m: &Machine) -> Option<Frame> {
+    let (table, head) = (m.table_axes(), m.head_axes());
+    let dir = |k: usize| m.rotary[k].name.direction();
+    let ((iu, su), (iw, sw)) = match (table.as_slice(), head.as_slice()) {
+        ([o, i], []) => ((*i, 1.0), (*o, -1.0)),
+        ([t], [h]) => ((*t, 1.0), (*h, 1.0)),
+        (_, [o, i]) => ((*o, -1.0), (*i, 1.0)),
+        _ => return None,
+    };
+    Some(Frame { iu, u: dir(iu), su, iw, w: dir(iw), sw })
+}
+
+/// The angle (radians) of the part-frame unit axis `a` from the machine's pole (the nearer of
+/// ±u, where the angle of `rotary[iu]` is free); π/2 on a machine without a frame.
+pub fn pole_angle(m: &Machine, a: DVec3) -> f64 {
+    frame(m).map_or(std::f64::consts::FRAC_PI_2, |f| a.cross(f.u).length().atan2(a.dot(f.u).abs()))
+}
+
+/// With the angle of the free axis fixed at `theta` (geometric, radians), the angle of the
+/// other axis that brings the tool axis nearest to `a`: ψ turns Z about w towards R(u, φ) a.
+/// `None` where that leaves it free too.
+pub fn nearest_tilt(m: &Machine, a: DVec3, theta: f64) -> Option<f64> {
+    let f = frame(m)?;
+    let target = DMat3::from_axis_angle(f.u, f.su * theta) * a;
+    angle_about(f.w, DVec3::Z, target).map(|psi| f.sw * psi)
+}
+
 /// Both solutions (one where they coincide) of the orientation for the part-frame unit axis `a`;
 /// empty when no setting of the two axes gives it.
 pub fn orientations(m: &Machine, a: DVec3) -> Vec<Orientation> {
-    let (table, head) = (m.table_axes(), m.head_axes());
-    let dir = |k: usize| m.rotary[k].name.direction();
-    // (u, index of φ, sign of φ, p), (w, index of ψ, sign of ψ, q)
-    let ((u, iu, su, p), (w, iw, sw, q)) = match (table.as_slice(), head.as_slice()) {
-        ([o, i], []) => ((dir(*i), *i, 1.0, a), (dir(*o), *o, -1.0, DVec3::Z)),
-        ([t], [h]) => ((dir(*t), *t, 1.0, a), (dir(*h), *h, 1.0, DVec3::Z)),
-        (_, [o, i]) => ((dir(*o), *o, -1.0, a), (dir(*i), *i, 1.0, DVec3::Z)),
-        _ => return Vec::new(),
-    };
+    let Some(Frame { iu, u, su, iw, w, sw }) = frame(m) else { return Vec::new() };
+    let (p, q) = (a, DVec3::Z);
     let (alpha, beta) = (u.dot(p), w.dot(q));
     // γ² = 1 − α² − β² = |u × p|² − β² (p a unit vector; likewise with w, q): near the pole α²
     // is within rounding of 1 and 1 − α² would keep only a few digits of γ, the cross product
@@ -151,24 +192,24 @@ pub fn orientations(m: &Machine, a: DVec3) -> Vec<Orientation> {
 
 /// A candidate value of one axis: fixed (a limited axis, unwrapped within its limits) or
 /// known modulo 360° (a continuous axis, unwrapped later towards its neighbour).
-#[derive(Debug, Clone, Copy)]
-enum Value {
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Value {
     Fixed(f64),
     Turn(f64),
 }
 
-fn wrap(d: f64) -> f64 {
+pub(crate) fn wrap(d: f64) -> f64 {
     d - 360.0 * (d / 360.0).round()
 }
 
-fn step(a: Value, b: Value) -> f64 {
+pub(crate) fn step(a: Value, b: Value) -> f64 {
     match (a, b) {
         (Value::Fixed(x), Value::Fixed(y)) => (y - x).abs(),
         (Value::Fixed(x) | Value::Turn(x), Value::Fixed(y) | Value::Turn(y)) => wrap(y - x).abs(),
     }
 }
 
-fn from_zero(v: Value) -> f64 {
+pub(crate) fn from_zero(v: Value) -> f64 {
     match v {
         Value::Fixed(x) => x.abs(),
         Value::Turn(x) => wrap(x).abs(),
@@ -177,7 +218,7 @@ fn from_zero(v: Value) -> f64 {
 
 /// The unwrapped values of geometric angle `theta` on axis `k`: within the limits, or one value
 /// modulo 360° for a continuous axis.
-fn values(m: &Machine, k: usize, theta: f64) -> Vec<Value> {
+pub(crate) fn values(m: &Machine, k: usize, theta: f64) -> Vec<Value> {
     let r = &m.rotary[k];
     let v = r.value(theta);
     if r.min.is_none() && r.max.is_none() {
@@ -190,7 +231,7 @@ fn values(m: &Machine, k: usize, theta: f64) -> Vec<Value> {
 }
 
 /// The nearest value to the limits an unreachable angle had, for the message: (axis, value).
-fn nearest_violation(m: &Machine, solutions: &[[f64; 2]]) -> (usize, f64) {
+pub(crate) fn nearest_violation(m: &Machine, solutions: &[[f64; 2]]) -> (usize, f64) {
     let mut best = (0, f64::NAN, f64::INFINITY);
     for s in solutions {
         for k in 0..2 {
@@ -209,119 +250,8 @@ fn nearest_violation(m: &Machine, solutions: &[[f64; 2]]) -> (usize, f64) {
     (best.0, best.1)
 }
 
-fn limit(x: Option<f64>, default: f64) -> f64 {
+pub(crate) fn limit(x: Option<f64>, default: f64) -> f64 {
     x.unwrap_or(default)
-}
-
-/// Inverse kinematics of a path (part frame, mm; unit axes) for a tool of length `tool_length`
-/// (mm): the axis values of every pose, chosen within the limits to move least (see the module
-/// documentation).
-pub fn inverse_kinematics(m: &Machine, poses: &[Pose], tool_length: f64) -> Result<Vec<Joints>> {
-    let raw: Vec<Vec<Orientation>> = poses.iter().map(|p| orientations(m, p.axis)).collect();
-    let determined = |o: &Orientation| o[0].is_some() && o[1].is_some();
-    // the pole: the free angle takes its values from the nearest poses off the pole
-    let mut concrete: Vec<Vec<[f64; 2]>> = Vec::with_capacity(poses.len());
-    for (i, sols) in raw.iter().enumerate() {
-        if sols.is_empty() {
-            return Err(Error::Unreachable {
-                pose: i,
-                message: crate::msg!("pose-orientation", pose = i, machine = m.name.as_str()),
-            });
-        }
-        let mut out = Vec::new();
-        for s in sols {
-            if determined(s) {
-                out.push([s[0].unwrap_or(0.0), s[1].unwrap_or(0.0)]);
-                continue;
-            }
-            let free = if s[0].is_none() { 0 } else { 1 };
-            let before = raw[..i].iter().rev().find(|o| o.iter().all(determined));
-            let after = raw[i + 1..].iter().find(|o| o.iter().all(determined));
-            let mut fills: Vec<f64> =
-                before.into_iter().chain(after).flatten().filter_map(|o| o[free]).collect::<Vec<_>>();
-            if fills.is_empty() {
-                fills.push(m.rotary[free].angle(0.0));
-            }
-            for f in fills {
-                let mut c = [s[0].unwrap_or(0.0), s[1].unwrap_or(0.0)];
-                c[free] = f;
-                out.push(c);
-            }
-        }
-        concrete.push(out);
-    }
-    // the candidates within limits
-    let mut candidates: Vec<Vec<[Value; 2]>> = Vec::with_capacity(poses.len());
-    for (i, sols) in concrete.iter().enumerate() {
-        let mut c = Vec::new();
-        for s in sols {
-            for v0 in values(m, 0, s[0]) {
-                for v1 in values(m, 1, s[1]) {
-                    c.push([v0, v1]);
-                }
-            }
-        }
-        if c.is_empty() {
-            let (k, value) = nearest_violation(m, sols);
-            let r = &m.rotary[k];
-            return Err(Error::Unreachable {
-                pose: i,
-                message: crate::msg!(
-                    "pose-unreachable",
-                    pose = i,
-                    axis = r.name.letter(),
-                    value = value,
-                    min = limit(r.min, f64::NEG_INFINITY),
-                    max = limit(r.max, f64::INFINITY)
-                ),
-            });
-        }
-        candidates.push(c);
-    }
-    // the dynamic programme: least total motion
-    let mut cost: Vec<f64> = candidates[0].iter().map(|c| from_zero(c[0]) + from_zero(c[1])).collect();
-    let mut back: Vec<Vec<usize>> = vec![vec![0; candidates[0].len()]];
-    for i in 1..candidates.len() {
-        let (prev, cur) = (&candidates[i - 1], &candidates[i]);
-        let mut next = Vec::with_capacity(cur.len());
-        let mut from = Vec::with_capacity(cur.len());
-        for c in cur {
-            let (mut best, mut arg) = (f64::INFINITY, 0);
-            for (j, p) in prev.iter().enumerate() {
-                let total = cost[j] + step(p[0], c[0]) + step(p[1], c[1]);
-                if total < best - 1e-9 {
-                    (best, arg) = (total, j);
-                }
-            }
-            next.push(best);
-            from.push(arg);
-        }
-        cost = next;
-        back.push(from);
-    }
-    let mut k = (0..cost.len()).fold(0, |b, j| if cost[j] < cost[b] - 1e-9 { j } else { b });
-    let mut chosen = vec![[Value::Fixed(0.0); 2]; poses.len()];
-    for i in (0..poses.len()).rev() {
-        chosen[i] = candidates[i][k];
-        k = back[i][k];
-    }
-    // unwrap the continuous axes towards the previous pose, then place X, Y, Z
-    let mut previous = [0.0, 0.0];
-    let mut joints = Vec::with_capacity(poses.len());
-    for (i, (c, p)) in chosen.iter().zip(poses).enumerate() {
-        let mut rotary = [0.0; 2];
-        for a in 0..2 {
-            rotary[a] = match c[a] {
-                Value::Fixed(v) => v,
-                Value::Turn(v) => v + 360.0 * ((previous[a] - v) / 360.0).round(),
-            };
-        }
-        previous = rotary;
-        let xyz = machine_position(m, p.tip, rotary, tool_length);
-        check_travel(m, i, xyz)?;
-        joints.push(Joints { xyz, rotary });
-    }
-    Ok(joints)
 }
 
 /// An error naming the pose and the linear axis when `xyz` leaves the machine's travel.
@@ -331,6 +261,7 @@ pub fn check_travel(m: &Machine, pose: usize, xyz: DVec3) -> Result<()> {
         if !(*lo - 1e-9..=*hi + 1e-9).contains(&v) {
             return Err(Error::Unreachable {
                 pose,
+                line: None,
                 message: crate::msg!(
                     "pose-unreachable",
                     pose = pose,
@@ -354,6 +285,7 @@ pub fn at_pole(m: &Machine, a: DVec3) -> bool {
 mod tests {
     use super::*;
     use crate::milling::machine::MACHINE_PRESETS;
+    use crate::milling::solve::inverse_kinematics;
 
     fn pose(tip: [f64; 3], axis: [f64; 3]) -> Pose {
         Pose { tip: DVec3::from(tip), axis: DVec3::from(axis).normalize() }

@@ -22,8 +22,9 @@
 //! is an error naming its poses (the axes turn over or pass the pole there).
 
 use crate::error::{Arg, Error, Result};
-use crate::milling::kinematics::{forward_kinematics, inverse_kinematics, tool_axis, Joints};
+use crate::milling::kinematics::{forward_kinematics, tool_axis, Joints};
 use crate::milling::machine::Machine;
+use crate::milling::solve::{solve, SolveOptions};
 use crate::milling::Pose;
 use crate::tolerance::{LINEARISATION_SAMPLES, MAX_LINEARISATION_ROUNDS, MAX_POST_POSES};
 use glam::DVec3;
@@ -46,6 +47,8 @@ pub struct BlockDeviation {
     pub tip: f64,
     /// Largest angle of the interpolated axis from the arc times the tool length.
     pub axis: f64,
+    /// That angle, radians.
+    pub angle: f64,
 }
 
 impl BlockDeviation {
@@ -82,15 +85,47 @@ pub struct Linearised {
     pub joints: Vec<Joints>,
     /// Where each pose lies on the given path.
     pub origin: Vec<f64>,
+    /// At a pose where a limited axis unwinds, its rotary values after unwinding.
+    pub unwound: Vec<Option<[f64; 2]>>,
+    /// Angle between each pose's given tool axis and the one written (the pole cone), radians.
+    pub adjusted: Vec<f64>,
+    /// Whether each pose lies in the pole cone.
+    pub in_cone: Vec<bool>,
     /// The report.
     pub report: Linearisation,
+}
+
+impl Linearised {
+    /// The axis values the block leaving pose `i` starts from (after an unwinding there).
+    pub fn leaving(&self, i: usize) -> Joints {
+        let j = self.joints[i];
+        Joints { rotary: self.unwound[i].unwrap_or(j.rotary), ..j }
+    }
+}
+
+/// How [`linearise_with`] checks and solves.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LineariseOptions {
+    /// How the controller interpolates.
+    pub how: Interpolation,
+    /// Largest deviation of the tip, and of the axis times the tool length, mm.
+    pub tolerance: f64,
+    /// Largest angle of the interpolated axis from the arc, radians (`None`: no such bound).
+    pub angular: Option<f64>,
+    /// The length the axis's angle is multiplied by (`None`: the tool length of the
+    /// kinematics).
+    pub lever: Option<f64>,
+    /// The pole cone and unwinding.
+    pub solve: SolveOptions,
 }
 
 fn angle(a: DVec3, b: DVec3) -> f64 {
     a.cross(b).length().atan2(a.dot(b))
 }
 
-/// The angle of unit `v` from the great-circle arc a → b.
+/// The angle of unit `v` from the great-circle arc a → b: from the arc's great circle where `v`
+/// projects onto the arc (between a and b: a × v and v × b both along a × b), else from the
+/// nearer end.
 fn angle_from_arc(v: DVec3, a: DVec3, b: DVec3) -> f64 {
     let n = a.cross(b);
     if n.length() < 1e-12 {
@@ -99,16 +134,10 @@ fn angle_from_arc(v: DVec3, a: DVec3, b: DVec3) -> f64 {
     let n = n.normalize();
     let off = v.dot(n);
     let inside = v - off * n;
-    let ends = angle(v, a).min(angle(v, b));
-    if inside.length() < 1e-12 {
-        return ends;
+    if inside.length() >= 1e-12 && a.cross(inside).dot(n) >= 0.0 && inside.cross(b).dot(n) >= 0.0 {
+        return off.abs().min(1.0).asin();
     }
-    let inside = inside.normalize();
-    if (angle(a, inside) + angle(inside, b) - angle(a, b)).abs() < 1e-9 {
-        off.abs().min(1.0).asin()
-    } else {
-        ends
-    }
+    angle(v, a).min(angle(v, b))
 }
 
 fn distance_from_chord(q: DVec3, a: DVec3, b: DVec3) -> f64 {
@@ -125,12 +154,25 @@ pub fn midpoint(a: &Pose, b: &Pose) -> Pose {
 }
 
 /// The deviation of the block between poses a and b with axis values ja, jb.
+#[cfg(test)]
 pub fn block_deviation(
     m: &Machine,
     (a, b): (&Pose, &Pose),
     (ja, jb): (&Joints, &Joints),
     how: Interpolation,
     tool_length: f64,
+) -> BlockDeviation {
+    block_deviation_with(m, (a, b), (ja, jb), how, (tool_length, tool_length))
+}
+
+/// [`block_deviation`] with the tool length of the kinematics and the lever of the axis's angle
+/// apart.
+pub fn block_deviation_with(
+    m: &Machine,
+    (a, b): (&Pose, &Pose),
+    (ja, jb): (&Joints, &Joints),
+    how: Interpolation,
+    (tool_length, lever): (f64, f64),
 ) -> BlockDeviation {
     let mut d = BlockDeviation::default();
     for k in 1..LINEARISATION_SAMPLES {
@@ -147,29 +189,33 @@ pub fn block_deviation(
         };
         d.tip = d.tip.max(distance_from_chord(tip, a.tip, b.tip));
         if how != Interpolation::TcpVector {
-            d.axis = d.axis.max(angle_from_arc(axis, a.axis, b.axis) * tool_length);
+            let angle = angle_from_arc(axis, a.axis, b.axis);
+            d.angle = d.angle.max(angle);
+            d.axis = d.axis.max(angle * lever);
         }
     }
     d
 }
 
 fn largest(blocks: &[BlockDeviation]) -> BlockDeviation {
-    blocks
-        .iter()
-        .fold(BlockDeviation::default(), |m, b| BlockDeviation { tip: m.tip.max(b.tip), axis: m.axis.max(b.axis) })
+    blocks.iter().fold(BlockDeviation::default(), |m, b| BlockDeviation {
+        tip: m.tip.max(b.tip),
+        axis: m.axis.max(b.axis),
+        angle: m.angle.max(b.angle),
+    })
 }
 
 /// An error of pose `i` of the current list named by its pose of the given path.
 fn renamed(e: Error, origin: &[f64]) -> Error {
     match e {
-        Error::Unreachable { pose, mut message } => {
+        Error::Unreachable { pose, line, mut message } => {
             let given = origin.get(pose).map_or(pose, |o| o.floor() as usize);
             for (name, value) in &mut message.args {
                 if *name == "pose" {
                     *value = Arg::Number(given as f64);
                 }
             }
-            Error::Unreachable { pose: given, message }
+            Error::Unreachable { pose: given, line, message }
         }
         other => other,
     }
@@ -178,6 +224,7 @@ fn renamed(e: Error, origin: &[f64]) -> Error {
 /// Solves the kinematics of `poses` (part frame, mm) and halves the blocks whose interpolation
 /// strays beyond `tolerance` (mm) until none does, in at most [`MAX_LINEARISATION_ROUNDS`]
 /// rounds and [`MAX_POST_POSES`] poses.
+#[cfg(test)]
 pub fn linearise(
     m: &Machine,
     poses: &[Pose],
@@ -185,47 +232,82 @@ pub fn linearise(
     how: Interpolation,
     tolerance: f64,
 ) -> Result<Linearised> {
-    linearise_at_most(m, poses, tool_length, how, tolerance, (MAX_LINEARISATION_ROUNDS, MAX_POST_POSES))
+    let o = LineariseOptions { how, tolerance, angular: None, lever: None, solve: SolveOptions::exact() };
+    linearise_with(m, poses, tool_length, &o)
 }
 
-/// [`linearise`] with its limits, (rounds, poses), as a parameter.
+/// [`linearise`] with an angular tolerance, the pole cone and unwinding: a block is measured
+/// against the poses the program writes (in the cone, the tool axis of the interpolated rotary
+/// values), from the axis values it leaves its first pose with (after an unwinding there).
+#[cfg(test)]
+pub fn linearise_with(m: &Machine, poses: &[Pose], tool_length: f64, o: &LineariseOptions) -> Result<Linearised> {
+    linearise_at_most(m, poses, tool_length, o, (MAX_LINEARISATION_ROUNDS, MAX_POST_POSES), &mut |_| {})
+}
+
+/// [`linearise_with`] telling `progress` the number of each round as it ends (0 first).
+pub fn linearise_reporting(
+    m: &Machine,
+    poses: &[Pose],
+    tool_length: f64,
+    o: &LineariseOptions,
+    progress: &mut dyn FnMut(usize),
+) -> Result<Linearised> {
+    linearise_at_most(m, poses, tool_length, o, (MAX_LINEARISATION_ROUNDS, MAX_POST_POSES), progress)
+}
+
+/// A block's ends: the axis values it leaves and reaches, and the poses it joins.
+type BlockEnds = (Joints, Joints, Pose, Pose);
+
+/// [`linearise_with`] with its limits, (rounds, poses), as a parameter.
 fn linearise_at_most(
     m: &Machine,
     poses: &[Pose],
     tool_length: f64,
-    how: Interpolation,
-    tolerance: f64,
+    o: &LineariseOptions,
     (max_rounds, max_poses): (usize, usize),
+    progress: &mut dyn FnMut(usize),
 ) -> Result<Linearised> {
+    let (how, tolerance) = (o.how, o.tolerance);
+    let too_far = |b: &BlockDeviation| b.max() > tolerance || o.angular.is_some_and(|a| b.angle > a);
     let mut poses = poses.to_vec();
     let mut origin: Vec<f64> = (0..poses.len()).map(|i| i as f64).collect();
     let mut before = None;
     let mut round = 0;
     // the blocks of the previous round that were kept whole: new block i was old block carried[i]
     // (a pure function of its poses and axis values: where those are the same, so is its deviation)
-    let mut previous: Option<(Vec<Joints>, Vec<BlockDeviation>)> = None;
+    let mut previous: Option<(Vec<BlockEnds>, Vec<BlockDeviation>)> = None;
     let mut carried: Vec<Option<usize>> = Vec::new();
     loop {
-        let joints = inverse_kinematics(m, &poses, tool_length).map_err(|e| renamed(e, &origin))?;
-        let blocks: Vec<BlockDeviation> = (0..poses.len().saturating_sub(1))
-            .map(|i| {
-                if let (Some((old_joints, old_blocks)), Some(&Some(j))) = (&previous, carried.get(i)) {
-                    if old_joints[j] == joints[i] && old_joints[j + 1] == joints[i + 1] {
+        let solved = solve(m, &poses, tool_length, &o.solve).map_err(|e| renamed(e, &origin))?;
+        let ends: Vec<BlockEnds> = (0..poses.len().saturating_sub(1))
+            .map(|i| (solved.leaving(i), solved.joints[i + 1], solved.poses[i], solved.poses[i + 1]))
+            .collect();
+        let blocks: Vec<BlockDeviation> = ends
+            .iter()
+            .enumerate()
+            .map(|(i, e)| {
+                if let (Some((old_ends, old_blocks)), Some(&Some(j))) = (&previous, carried.get(i)) {
+                    if old_ends[j] == *e {
                         return old_blocks[j];
                     }
                 }
-                block_deviation(m, (&poses[i], &poses[i + 1]), (&joints[i], &joints[i + 1]), how, tool_length)
+                let lever = o.lever.unwrap_or(tool_length);
+                block_deviation_with(m, (&e.2, &e.3), (&e.0, &e.1), how, (tool_length, lever))
             })
             .collect();
         let before = *before.get_or_insert(largest(&blocks));
-        let bad: Vec<usize> = (0..blocks.len()).filter(|&i| blocks[i].max() > tolerance).collect();
+        progress(round);
+        let bad: Vec<usize> = (0..blocks.len()).filter(|&i| too_far(&blocks[i])).collect();
         if bad.is_empty() {
             let inserted = poses.len() - origin.iter().filter(|o| o.fract() == 0.0).count();
             let after = largest(&blocks);
             return Ok(Linearised {
-                poses,
-                joints,
+                poses: solved.poses,
+                joints: solved.joints,
                 origin,
+                unwound: solved.unwound,
+                adjusted: solved.adjusted,
+                in_cone: solved.in_cone,
                 report: Linearisation { tolerance, before, after, inserted, rounds: round, blocks },
             });
         }
@@ -234,6 +316,7 @@ fn linearise_at_most(
             let pose = origin[worst].floor() as usize;
             return Err(Error::Unreachable {
                 pose,
+                line: None,
                 message: crate::msg!(
                     "linearisation-tolerance",
                     pose = pose,
@@ -247,23 +330,24 @@ fn linearise_at_most(
         if poses.len() + bad.len() > max_poses {
             return Err(Error::TooMany { what: "poses of the program", got: poses.len() + bad.len(), max: max_poses });
         }
-        let (mut p, mut o) = (Vec::with_capacity(poses.len() + bad.len()), Vec::with_capacity(poses.len() + bad.len()));
+        let (mut p, mut og) =
+            (Vec::with_capacity(poses.len() + bad.len()), Vec::with_capacity(poses.len() + bad.len()));
         let mut c = Vec::with_capacity(poses.len() + bad.len());
         let mut next_bad = bad.iter().peekable();
         for i in 0..poses.len() {
             p.push(poses[i]);
-            o.push(origin[i]);
+            og.push(origin[i]);
             if next_bad.peek() == Some(&&i) {
                 next_bad.next();
                 p.push(midpoint(&poses[i], &poses[i + 1]));
-                o.push(0.5 * (origin[i] + origin[i + 1]));
+                og.push(0.5 * (origin[i] + origin[i + 1]));
                 c.extend([None, None]);
             } else {
                 c.push(Some(i));
             }
         }
-        (poses, origin, carried) = (p, o, c);
-        previous = Some((joints, blocks));
+        (poses, origin, carried) = (p, og, c);
+        previous = Some((ends, blocks));
         round += 1;
     }
 }
@@ -271,6 +355,7 @@ fn linearise_at_most(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::milling::solve::inverse_kinematics;
 
     #[test]
     fn an_arc_and_a_chord_measure_distances() {
@@ -387,9 +472,10 @@ mod tests {
         let origin = [0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0];
         let at = |pose: usize| Error::Unreachable {
             pose,
+            line: None,
             message: crate::msg!("pose-unreachable", pose = pose, axis = "A", value = 130.0),
         };
-        let Error::Unreachable { pose, message } = renamed(at(5), &origin) else { panic!("unreachable") };
+        let Error::Unreachable { pose, message, .. } = renamed(at(5), &origin) else { panic!("unreachable") };
         assert_eq!(pose, 2);
         assert_eq!(
             message.args,
@@ -436,8 +522,15 @@ mod tests {
     #[test]
     fn the_limits_of_rounds_and_poses_are_kept() {
         let (m, poses) = (Machine::preset("table-table-ac").unwrap(), two_turns());
-        let run = |limits| linearise_at_most(&m, &poses, 50.0, Interpolation::Machine, 1e-300, limits);
-        let Err(Error::Unreachable { pose, message }) = run((3, 100)) else { panic!("{:?}", run((3, 100))) };
+        let o = LineariseOptions {
+            how: Interpolation::Machine,
+            tolerance: 1e-300,
+            angular: None,
+            lever: None,
+            solve: SolveOptions::exact(),
+        };
+        let run = |limits| linearise_at_most(&m, &poses, 50.0, &o, limits, &mut |_| {});
+        let Err(Error::Unreachable { pose, message, .. }) = run((3, 100)) else { panic!("{:?}", run((3, 100))) };
         assert_eq!((pose, message.reason), (1, "linearisation-tolerance"));
         assert_eq!((message.arg("rounds"), message.arg("next")), (Some(&Arg::Number(3.0)), Some(&Arg::Number(2.0))));
         for (max, got) in [(5, 9), (4, 5), (16, 17)] {
@@ -476,7 +569,14 @@ mod tests {
             })
             .collect();
         assert!(d[0] > 1.0 && d[1] == d[0] && d[2] == d[0], "three equal blocks: {d:?}");
-        let e = linearise_at_most(&m, &poses, 50.0, Interpolation::TcpAngles, 1e-300, (0, 100)).unwrap_err();
+        let o = LineariseOptions {
+            how: Interpolation::TcpAngles,
+            tolerance: 1e-300,
+            angular: None,
+            lever: None,
+            solve: SolveOptions::exact(),
+        };
+        let e = linearise_at_most(&m, &poses, 50.0, &o, (0, 100), &mut |_| {}).unwrap_err();
         assert!(matches!(e, Error::Unreachable { pose: 0, .. }), "{e:?}");
     }
 }

@@ -101,6 +101,14 @@ pub struct RotaryAxis {
     /// spindle nose for a head axis (all axes at zero; default [0, 0, 0]).
     #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default))]
     pub pivot: [f64; 3],
+    /// Its largest speed, degrees per minute; absent or null: no limit. The post slows every
+    /// block that would turn the axis faster.
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default))]
+    pub speed: Option<f64>,
+    /// Its largest acceleration, degrees per second²; absent or null: no limit. Blocks whose
+    /// change of speed needs more are slowed.
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default))]
+    pub acceleration: Option<f64>,
 }
 
 #[cfg(any(feature = "serde", target_family = "wasm"))]
@@ -150,6 +158,12 @@ pub struct Machine {
     pub travel: [[f64; 2]; 3],
     /// Where the part's zero sits, in the machine frame with the rotary axes at zero, mm.
     pub part_zero: [f64; 3],
+    /// The largest speeds of X, Y and Z, mm/min; absent or null: no limit.
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default))]
+    pub speed: Option<[f64; 3]>,
+    /// The largest accelerations of X, Y and Z, mm/s²; absent or null: no limit.
+    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(default))]
+    pub acceleration: Option<[f64; 3]>,
 }
 
 #[cfg(any(feature = "serde", target_family = "wasm"))]
@@ -160,8 +174,17 @@ fn custom() -> String {
 /// The names of the presets, in the order of [`Machine::preset`].
 pub const MACHINE_PRESETS: [&str; 4] = ["table-table-ac", "table-table-bc", "head-table-bc", "head-head-ac"];
 
-fn axis(name: AxisName, on: Carrier, limits: (Option<f64>, Option<f64>), pivot: [f64; 3]) -> RotaryAxis {
-    RotaryAxis { name, on, direction: 1.0, zero: 0.0, min: limits.0, max: limits.1, pivot }
+/// A preset's rotary axis: its limits (degrees), pivot (mm), speed (degrees/min) and
+/// acceleration (degrees/s²).
+fn axis(
+    name: AxisName,
+    on: Carrier,
+    limits: (Option<f64>, Option<f64>),
+    pivot: [f64; 3],
+    dynamics: [f64; 2],
+) -> RotaryAxis {
+    let [speed, acceleration] = dynamics.map(Some);
+    RotaryAxis { name, on, direction: 1.0, zero: 0.0, min: limits.0, max: limits.1, pivot, speed, acceleration }
 }
 
 impl Machine {
@@ -171,31 +194,49 @@ impl Machine {
         use Carrier::{Head, Table};
         let free = (None, None);
         let (rotary, travel) = match name {
-            // a trunnion: the tilt axis 80 mm below the table top, the rotary table on it
+            // a trunnion: the tilt axis 80 mm below the table top, the rotary table on it; the
+            // tilt 15 turns a minute (5400°/min), the table 30 (10800°/min)
             "table-table-ac" => (
-                [axis(A, Table, (Some(-30.0), Some(120.0)), [0.0, 0.0, -80.0]), axis(C, Table, free, [0.0; 3])],
+                [
+                    axis(A, Table, (Some(-30.0), Some(120.0)), [0.0, 0.0, -80.0], [5400.0, 720.0]),
+                    axis(C, Table, free, [0.0; 3], [10800.0, 1440.0]),
+                ],
                 [[-500.0, 500.0], [-400.0, 400.0], [-400.0, 400.0]],
             ),
             "table-table-bc" => (
-                [axis(B, Table, (Some(-110.0), Some(110.0)), [0.0, 0.0, -80.0]), axis(C, Table, free, [0.0; 3])],
+                [
+                    axis(B, Table, (Some(-110.0), Some(110.0)), [0.0, 0.0, -80.0], [5400.0, 720.0]),
+                    axis(C, Table, free, [0.0; 3], [10800.0, 1440.0]),
+                ],
                 [[-500.0, 500.0], [-400.0, 400.0], [-400.0, 400.0]],
             ),
             // a swivel head, its B axis 150 mm above the spindle nose; a rotary table
             "head-table-bc" => (
-                [axis(B, Head, (Some(-95.0), Some(95.0)), [0.0, 0.0, 150.0]), axis(C, Table, free, [0.0; 3])],
+                [
+                    axis(B, Head, (Some(-95.0), Some(95.0)), [0.0, 0.0, 150.0], [3600.0, 540.0]),
+                    axis(C, Table, free, [0.0; 3], [10800.0, 1440.0]),
+                ],
                 [[-800.0, 800.0], [-600.0, 600.0], [-500.0, 600.0]],
             ),
             // a fork head: C (two turns of cable) carries A, whose axis is 120 mm above the nose
             "head-head-ac" => (
                 [
-                    axis(C, Head, (Some(-360.0), Some(360.0)), [0.0; 3]),
-                    axis(A, Head, (Some(-110.0), Some(110.0)), [0.0, 0.0, 120.0]),
+                    axis(C, Head, (Some(-360.0), Some(360.0)), [0.0; 3], [7200.0, 720.0]),
+                    axis(A, Head, (Some(-110.0), Some(110.0)), [0.0, 0.0, 120.0], [7200.0, 720.0]),
                 ],
                 [[-1500.0, 1500.0], [-1000.0, 1000.0], [-600.0, 800.0]],
             ),
             _ => return None,
         };
-        Some(Machine { name: name.to_string(), rotary, travel, part_zero: [10.0, -5.0, 25.0] })
+        Some(Machine {
+            name: name.to_string(),
+            rotary,
+            travel,
+            part_zero: [10.0, -5.0, 25.0],
+            // X, Y, Z: 30 m/min, 3 m/s²
+            speed: Some([30000.0; 3]),
+            acceleration: Some([3000.0; 3]),
+        })
     }
 
     /// Checks the description: distinct axes, direction ±1, finite numbers below 1e7, min < max.
@@ -221,6 +262,16 @@ impl Machine {
                 if lo >= hi {
                     return bad(format!("rotary axis {n}: min must be below max, got [{lo}, {hi}]"));
                 }
+            }
+            for (what, v) in [("speed", r.speed), ("acceleration", r.acceleration)] {
+                if !v.is_none_or(|x| finite(x) && x > 0.0) {
+                    return bad(format!("rotary axis {n}: {what} must be a positive number of at most 1e7, or null"));
+                }
+            }
+        }
+        for (what, v) in [("speed", self.speed), ("acceleration", self.acceleration)] {
+            if !v.is_none_or(|xyz| xyz.iter().all(|&x| finite(x) && x > 0.0)) {
+                return bad(format!("{what} must be three positive numbers of at most 1e7 (X, Y, Z), or null"));
             }
         }
         for (k, [lo, hi]) in self.travel.iter().enumerate() {
@@ -313,6 +364,8 @@ mod tests {
             min: None,
             max: None,
             pivot: [0.0; 3],
+            speed: None,
+            acceleration: None,
         };
         assert!((r.value(r.angle(37.0)) - 37.0).abs() < 1e-12);
         assert!((r.angle(90.0)).abs() < 1e-15);
@@ -356,6 +409,13 @@ mod tests {
         assert!(refused(&|m| m.travel[0] = [f64::NAN, 100.0]));
         assert!(refused(&|m| m.travel[1] = [-100.0, f64::INFINITY]));
         assert!(refused(&|m| m.part_zero[2] = -2e7));
+        // speeds and accelerations positive, or no limit
+        assert!(!refused(&|m| m.rotary[0].speed = None));
+        assert!(!refused(&|m| m.speed = None));
+        assert!(refused(&|m| m.rotary[1].speed = Some(0.0)));
+        assert!(refused(&|m| m.rotary[0].acceleration = Some(-1.0)));
+        assert!(refused(&|m| m.speed = Some([1000.0, f64::NAN, 1000.0])));
+        assert!(refused(&|m| m.acceleration = Some([1000.0, 1000.0, 0.0])));
     }
 
     /// Limits are kept to within 1e-9°, a value's rounding, and no further.

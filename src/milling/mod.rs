@@ -11,8 +11,11 @@ pub mod example;
 pub mod kinematics;
 pub mod linearise;
 pub mod machine;
+pub mod motion;
 pub mod post;
 pub mod quality;
+pub mod solve;
+pub mod stock;
 
 use crate::error::{Error, Result};
 use crate::line::Segment;

@@ -1,7 +1,150 @@
 //! How good a tool path is: smoothness of the orientation and deviation from the target.
+//!
+//! **The machined surface** is the boundary of the solid the tool sweeps: at each pose the tool
+//! is a capsule (a ball end: the segment from the ball's centre tip + r·a to tip + L·a,
+//! thickened by r) or a cylinder (a flat end: radius r from the tip over the length L along the
+//! axis). Between two poses the controller moves the tip along the chord and turns the axis
+//! along the arc; each block is cut into sub-blocks short enough that the axis turns by at most
+//! [`ENVELOPE_STEP`] of the radius at the tool's far end, and over a sub-block the tool keeps the
+//! sub-block's first axis while its tip slides along the chord: a signed distance convex along
+//! the chord, whose least value golden-section search finds. The **deviation** of a target
+//! point q is its signed distance from the swept solid, the least over the sub-blocks: > 0 the
+//! tool leaves material there, < 0 it cuts into the target (a gouge). Where the axis is
+//! constant the answer is exact (the tests' circle).
 
-use crate::milling::ToolPath;
+use crate::milling::{Pose, ToolEnd, ToolPath};
 use glam::DVec3;
+
+/// The largest turn of the axis within a sub-block of the envelope, as a share of the tool's
+/// radius at its far end.
+pub const ENVELOPE_STEP: f64 = 0.25;
+
+/// The signed distance of `q` from the tool at pose `p` (module documentation).
+pub fn tool_distance(q: DVec3, p: &Pose, radius: f64, length: f64, end: ToolEnd) -> f64 {
+    let a = p.axis;
+    match end {
+        ToolEnd::Ball => {
+            let c = p.tip + radius * a;
+            let top = p.tip + length.max(radius) * a;
+            let ab = top - c;
+            let t =
+                if ab.length_squared() > 0.0 { ((q - c).dot(ab) / ab.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
+            (q - (c + t * ab)).length() - radius
+        }
+        ToolEnd::Flat => {
+            let v = q - p.tip;
+            let h = v.dot(a);
+            let rho = (v - h * a).length();
+            let (dr, da) = (rho - radius, (-h).max(h - length));
+            dr.max(0.0).hypot(da.max(0.0)) + dr.max(da).min(0.0)
+        }
+    }
+}
+
+/// The deviation of target points from the machined surface (module documentation).
+#[derive(Debug, Clone, PartialEq)]
+pub struct EnvelopeDeviation {
+    /// Per target point: its signed distance from the swept tool.
+    pub points: Vec<f64>,
+    /// Per target point: where along the path the nearest tool is (k + s between poses k and k
+    /// + 1).
+    pub at: Vec<f64>,
+    /// The target point of the largest |deviation|.
+    pub worst: usize,
+}
+
+impl EnvelopeDeviation {
+    /// Per pose of the path (`poses` of them): the deviation of largest size among the target
+    /// points nearest it (within half a block); NaN where none is.
+    pub fn per_pose(&self, poses: usize) -> Vec<f64> {
+        let mut out = vec![f64::NAN; poses];
+        for (d, at) in self.points.iter().zip(&self.at) {
+            let k = (at.round() as usize).min(poses.saturating_sub(1));
+            if out[k].is_nan() || d.abs() > out[k].abs() {
+                out[k] = *d;
+            }
+        }
+        out
+    }
+}
+
+/// Minimises a function convex on [0, 1] by golden-section search: (argument, value).
+fn golden(f: impl Fn(f64) -> f64) -> (f64, f64) {
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (0.0f64, 1.0f64);
+    let (mut x1, mut x2) = (b - g * (b - a), a + g * (b - a));
+    let (mut f1, mut f2) = (f(x1), f(x2));
+    for _ in 0..60 {
+        if f1 <= f2 {
+            b = x2;
+            (x2, f2) = (x1, f1);
+            x1 = b - g * (b - a);
+            f1 = f(x1);
+        } else {
+            a = x1;
+            (x1, f1) = (x2, f2);
+            x2 = a + g * (b - a);
+            f2 = f(x2);
+        }
+    }
+    [(0.0, f(0.0)), (1.0, f(1.0)), (x1, f1), (x2, f2)].into_iter().fold((0.0, f64::INFINITY), |m, x| {
+        if x.1 < m.1 {
+            x
+        } else {
+            m
+        }
+    })
+}
+
+/// The deviation of `targets` from the surface `path`'s tool machines (module documentation).
+pub fn envelope_deviation(path: &ToolPath, targets: &[DVec3]) -> EnvelopeDeviation {
+    let (r, l, end) = (path.tool.radius, path.tool.length, path.tool.end);
+    // the sub-blocks: (first pose, chord's end tip, position along the path at its start, its length in positions)
+    let mut subs: Vec<(Pose, DVec3, f64, f64)> = Vec::new();
+    let n = path.poses.len();
+    for k in 0..n.saturating_sub(1) {
+        let (a, b) = (&path.poses[k], &path.poses[k + 1]);
+        let theta = a.axis.angle_between(b.axis);
+        let pieces = ((theta * l.max(r) / (ENVELOPE_STEP * r)).ceil() as usize).clamp(1, 64);
+        for j in 0..pieces {
+            let (s0, s1) = (j as f64 / pieces as f64, (j + 1) as f64 / pieces as f64);
+            let axis = slerp(a.axis, b.axis, theta, s0);
+            let tip = a.tip.lerp(b.tip, s0);
+            subs.push((Pose { tip, axis }, a.tip.lerp(b.tip, s1), k as f64 + s0, s1 - s0));
+        }
+    }
+    if n == 1 {
+        subs.push((path.poses[0], path.poses[0].tip, 0.0, 0.0));
+    }
+    let reach = l.max(r) + r;
+    let mut points = Vec::with_capacity(targets.len());
+    let mut at = Vec::with_capacity(targets.len());
+    for &q in targets {
+        let (mut best, mut where_) = (f64::INFINITY, 0.0);
+        for (p, to, start, span) in &subs {
+            // a lower bound: the distance to the tip's chord less the tool's reach
+            if distance_to_segment(q, p.tip, *to) - reach > best {
+                continue;
+            }
+            let (s, d) = golden(|s| tool_distance(q, &Pose { tip: p.tip.lerp(*to, s), axis: p.axis }, r, l, end));
+            if d < best {
+                (best, where_) = (d, start + s * span);
+            }
+        }
+        points.push(best);
+        at.push(where_);
+    }
+    let worst = (0..points.len()).fold(0, |w, i| if points[i].abs() > points[w].abs() { i } else { w });
+    EnvelopeDeviation { points, at, worst }
+}
+
+/// The unit vector a fraction `s` along the great-circle arc from unit `a` to unit `b` (θ apart).
+fn slerp(a: DVec3, b: DVec3, theta: f64, s: f64) -> DVec3 {
+    if theta < 1e-12 {
+        return a;
+    }
+    (((1.0 - s) * theta).sin() * a + (s * theta).sin() * b) / theta.sin()
+}
 
 /// Orientation smoothness of a path.
 #[derive(Debug, Clone, PartialEq)]
@@ -71,8 +214,77 @@ fn distance_to_segment(q: DVec3, a: DVec3, b: DVec3) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::milling::{Pose, Tool, ToolEnd};
-    use std::f64::consts::FRAC_PI_2;
+    use crate::milling::Tool;
+    use std::f64::consts::{FRAC_PI_2, PI};
+
+    /// A ball end of radius r = 2 and length 20 around a circle: N = 24 poses, the ball's centre
+    /// on the circle of radius R = 30 at height h = 2 (the tip at 0), the axis vertical. The
+    /// machine cuts the chords, so the centre runs on the 24-gon. A target point q at angle φ
+    /// on the circle of radius R_t = 28 at height z_t = −1 lies nearest the chord whose middle
+    /// is at the angle m of φ's block: in that block's plane, at distance R cos(π/N) −
+    /// R_t cos(φ − m) across the chord and z_t − h below it, so its deviation is
+    /// √((R cos(π/N) − R_t cos(φ − m))² + (h − z_t)²) − r exactly. A flat end of the same size
+    /// with its tip at height h: its bottom disk sweeps the same chords, so the point is
+    /// √(max(0, R cos(π/N) − R_t cos(φ − m) − r)² + (h − z_t)²) from it.
+    #[test]
+    fn a_tool_around_a_circle_deviates_by_the_distance_in_closed_form() {
+        let (n, big_r, r, h, rt, zt) = (24usize, 30.0, 2.0, 2.0, 28.0, -1.0);
+        let poses = |tip_z: f64| -> Vec<Pose> {
+            (0..=n)
+                .map(|k| {
+                    let f = 2.0 * PI * k as f64 / n as f64;
+                    Pose { tip: DVec3::new(big_r * f.cos(), big_r * f.sin(), tip_z), axis: DVec3::Z }
+                })
+                .collect()
+        };
+        let ball = ToolPath { poses: poses(h - r), tool: Tool::new(r, 20.0, ToolEnd::Ball).unwrap() };
+        let flat = ToolPath { poses: poses(h), tool: Tool::new(r, 20.0, ToolEnd::Flat).unwrap() };
+        let phis: Vec<f64> = (0..50).map(|k| 0.123 + 2.0 * PI * k as f64 / 50.0).collect();
+        let targets: Vec<DVec3> = phis.iter().map(|f| DVec3::new(rt * f.cos(), rt * f.sin(), zt)).collect();
+        let block = 2.0 * PI / n as f64;
+        let across = |f: f64| {
+            let m = (f / block).floor() * block + block / 2.0;
+            big_r * (PI / n as f64).cos() - rt * (f - m).cos()
+        };
+        let b = envelope_deviation(&ball, &targets);
+        let fl = envelope_deviation(&flat, &targets);
+        for (k, &f) in phis.iter().enumerate() {
+            let want = across(f).hypot(h - zt) - r;
+            assert!((b.points[k] - want).abs() < 1e-9, "ball at φ = {f}: {} vs {want}", b.points[k]);
+            let want = (across(f) - r).max(0.0).hypot(h - zt);
+            assert!((fl.points[k] - want).abs() < 1e-9, "flat at φ = {f}: {} vs {want}", fl.points[k]);
+            // the nearest tool is in φ's block
+            assert!((b.at[k] - f / block).abs() < 1.0, "{} vs {}", b.at[k], f / block);
+        }
+        // the worst point is where the chord is farthest from the target: φ at a block's end
+        let worst = b.points[b.worst];
+        assert!(b.points.iter().all(|d| d.abs() <= worst.abs()));
+        // per pose: each pose's nearest target points, their largest deviation
+        let per = b.per_pose(n + 1);
+        assert_eq!(per.len(), n + 1);
+        assert!(per.iter().filter(|d| d.is_finite()).count() >= n - 1);
+        // a target inside the tool is cut into: negative
+        let gouge = envelope_deviation(&ball, &[DVec3::new(big_r, 0.0, h)]);
+        assert!((gouge.points[0] + r).abs() < 1e-12, "{}", gouge.points[0]);
+    }
+
+    /// A helix: the ball's centre on the helix (R cos t, R sin t, c t) with a vertical axis, the
+    /// target the helix's axis line point (0, 0, z): its distance from every centre is at least
+    /// R; with dense poses the deviation tends to R − r (to the chords' sag, R(1 − cos(π/N))).
+    #[test]
+    fn a_ball_along_a_helix_is_r_minus_its_radius_from_the_axis() {
+        let (n, big_r, c, r) = (720usize, 10.0, 1.0, 1.5);
+        let poses: Vec<Pose> = (0..=n)
+            .map(|k| {
+                let t = 4.0 * PI * k as f64 / n as f64;
+                Pose { tip: DVec3::new(big_r * t.cos(), big_r * t.sin(), c * t - r), axis: DVec3::Z }
+            })
+            .collect();
+        let path = ToolPath { poses, tool: Tool::new(r, 10.0, ToolEnd::Ball).unwrap() };
+        let d = envelope_deviation(&path, &[DVec3::new(0.0, 0.0, 2.0 * PI * c)]);
+        let sag = big_r * (1.0 - (PI / (n as f64 / 2.0)).cos());
+        assert!(d.points[0] <= big_r - r + 1e-12 && d.points[0] >= big_r - r - sag - 1e-12, "{}", d.points[0]);
+    }
 
     fn path(poses: &[(DVec3, DVec3)], end: ToolEnd) -> ToolPath {
         ToolPath {

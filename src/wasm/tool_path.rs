@@ -14,10 +14,11 @@ use crate::ruled::surface::points_from_flat;
 use crate::ruled::RuledSurface;
 use crate::tolerance::{MAX_EXAMPLE_POSES, MAX_GRID_SIDE, MAX_MESH_SIDES, MAX_SAMPLES, MAX_STRIDE};
 use glam::DVec3;
-use js_sys::{Float32Array, Float64Array};
+use js_sys::{Float32Array, Float64Array, Uint8Array};
 use serde::{Deserialize, Serialize};
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
 
 /// A milling tool: a cylinder of `radius` and `length` (model units), flat or ball end.
 #[derive(Deserialize, Tsify)]
@@ -90,6 +91,93 @@ struct PostResult {
     #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float64Array")]
     origin: Float64Array,
+    /// The program's units: lengths here are in them.
+    #[tsify(type = "\"mm\" | \"inch\"")]
+    units: &'static str,
+    /// The machine's axes: "X", "Y", "Z", then its two rotary axes' letters.
+    letters: Vec<&'static str>,
+    /// Per pose of the program: the axes' values as the block arriving there ends, 5 numbers (X, Y,
+    /// Z machine positions, then the rotary axes in degrees).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    axes: Float64Array,
+    /// Per block: its time, minutes.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    block_minutes: Float64Array,
+    /// Per block: the feed at the tool tip it keeps, units/min (below the job's where the axes
+    /// slowed it).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    block_feed: Float64Array,
+    /// Per block: the rotary axes' speeds, degrees/min, 2 numbers.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    block_rotary_speed: Float64Array,
+    /// Per block: what set its time: 0 the feed, 1 an axis's speed limit, 2 an acceleration
+    /// limit, 3 the controller's feed word.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Uint8Array")]
+    block_limit: Uint8Array,
+    /// Blocks still needing more acceleration than an axis has.
+    over_acceleration: usize,
+    /// The poses of the program where a limited rotary axis unwinds (out, turned, back).
+    unwinds: Vec<usize>,
+    /// Per pose of the program: how far the pole cone turned its tool axis, degrees.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    adjusted: Float64Array,
+    /// What the machinist should know: duplicate poses, flipped axes, blocks slowed, the pole
+    /// cone, the holder or shank in the stock.
+    warnings: Vec<PostWarning>,
+    /// The stock the rapids were checked against: [[xmin, ymin, zmin], [xmax, ymax, zmax]], part
+    /// frame, program units.
+    stock: [[f64; 3]; 2],
+}
+
+/// A warning of the post, naming the pose (of the input where `input` told its numbering).
+#[derive(Serialize, Tsify)]
+struct PostWarning {
+    /// The pose.
+    pose: usize,
+    /// Its line in the input file.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    line: Option<usize>,
+    /// The stable key of what it is (the page words it in the reader's language).
+    reason: &'static str,
+    /// The values its text names.
+    #[tsify(type = "Record<string, string | number>")]
+    args: crate::error::Args,
+    /// In English.
+    message: String,
+}
+
+/// The deviation of target points from the surface the tool machines: `ToolPath.envelopeDeviation`.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+struct EnvelopeResult {
+    /// Per target point: its signed distance from the tool's swept solid (> 0 material left, < 0
+    /// cut into), model units.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    points: Float64Array,
+    /// Per target point: where along the path the nearest tool is (k + s between poses k and k + 1).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    at: Float64Array,
+    /// Per pose: the deviation of largest size among the target points nearest it (NaN: none).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    per_pose: Float64Array,
+    /// The target point of the largest |deviation|, its index.
+    worst: usize,
+    /// Its deviation.
+    worst_deviation: f64,
+    /// The point itself, 3 numbers.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    worst_point: Float64Array,
 }
 
 /// Orientation smoothness of a tool path.
@@ -200,14 +288,20 @@ impl ToolPath {
         Ok(ToolPath { inner: milling::ToolPath { poses: out, tool }, _live: Live::new() })
     }
 
-    /// The built-in path of Figs. 16–18 with `count` given poses (default 7).
+    /// The built-in path of Figs. 16–18 with `count` given poses (default 7), for its tool (a ball
+    /// end of radius 0.25 and length 1.5) or for `tool`: its ball touches the profile at every pose.
     pub fn example(
         #[wasm_bindgen(unchecked_optional_param_type = "number")] count: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "ToolOptions")] tool: JsValue,
     ) -> Result<ToolPath, JsValue> {
-        let count = args::optional_integer("ToolPath.example", "count", &count, 2, MAX_EXAMPLE_POSES, 7)?;
-        example::example_tool_path(count)
-            .map(|inner| ToolPath { inner, _live: Live::new() })
-            .map_err(|e| fail("ToolPath.example", e))
+        const F: &str = "ToolPath.example";
+        let count = args::optional_integer(F, "count", &count, 2, MAX_EXAMPLE_POSES, 7)?;
+        let made = if tool.is_undefined() || tool.is_null() {
+            example::example_tool_path(count)
+        } else {
+            example::example_tool_path_for(count, read_tool(F, tool)?)
+        };
+        made.map(|inner| ToolPath { inner, _live: Live::new() }).map_err(|e| fail(F, e))
     }
 
     /// The example's target profile γ, `count` points (3 numbers each).
@@ -342,6 +436,35 @@ impl ToolPath {
         Ok(Float64Array::from(&quality::deviation_per_pose(&self.inner, &t)[..]))
     }
 
+    /// The deviation of a target curve (3 numbers per point, the edge or contact curve the tool
+    /// should machine) from the surface the tool machines: each point's signed distance from the
+    /// solid the tool sweeps along the path (ball or flat end, its length; > 0 material left, < 0
+    /// cut into), where along the path that is, per pose, and the worst point.
+    #[wasm_bindgen(js_name = envelopeDeviation, unchecked_return_type = "EnvelopeResult")]
+    pub fn envelope_deviation(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] targets: JsValue,
+    ) -> Result<JsValue, JsValue> {
+        const F: &str = "ToolPath.envelopeDeviation";
+        let _measure = Measure::start(F);
+        let t = points_from_flat(&numbers(F, "targets", &targets)?).map_err(|e| fail(F, e))?;
+        if t.is_empty() {
+            return Err(fail(F, Error::TooFew { what: "target points", got: 0, min: 1 }));
+        }
+        let d = quality::envelope_deviation(&self.inner, &t);
+        to_js(
+            F,
+            &EnvelopeResult {
+                per_pose: Float64Array::from(&d.per_pose(self.inner.poses.len())[..]),
+                worst_deviation: d.points[d.worst],
+                worst_point: points_f64(&[t[d.worst]]),
+                worst: d.worst,
+                points: Float64Array::from(&d.points[..]),
+                at: Float64Array::from(&d.at[..]),
+            },
+        )
+    }
+
     // --- buffers for WebGL
 
     /// Axis segments tip → tip + L·axis (6 numbers per pose) as 32-bit floats for WebGL.
@@ -362,6 +485,23 @@ impl ToolPath {
         let stride = integer(F, "stride", &stride, 1, MAX_STRIDE)?;
         let axes = self.core().axis_surface().map_err(|e| fail(F, e))?;
         Ok(segments_f32(&axes.inserted(stride)))
+    }
+
+    /// The axes (tip → tip + L·axis) of every `every`-th pose and the last, as f32 segments: a
+    /// level of detail of a path too long to draw whole.
+    #[wasm_bindgen(js_name = everyF32)]
+    pub fn every_f32(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "number")] every: JsValue,
+    ) -> Result<Float32Array, JsValue> {
+        const F: &str = "ToolPath.everyF32";
+        let every = integer(F, "every", &every, 1, MAX_STRIDE)?;
+        let length = self.inner.tool.length;
+        let n = self.inner.poses.len();
+        let picked = (0..n).filter(|&i| i % every == 0 || i + 1 == n).map(|i| &self.inner.poses[i]);
+        let v: Vec<f32> =
+            picked.flat_map(|p| [p.tip, p.tip + length * p.axis]).flat_map(|q| q.to_array()).map(|x| x as f32).collect();
+        Ok(Float32Array::from(&v[..]))
     }
 
     /// The envelope of the tool's cutting end along the path (a tube of the tool radius about
@@ -419,31 +559,85 @@ impl ToolPath {
     }
 
     /// The G-code program (as `export("gcode", options)`) with what the post did: the poses it
-    /// inserted and the deviation of every block from the path (the linearisation check).
+    /// inserted and the deviation of every block from the path (the linearisation check), the
+    /// machine's axes along the path and each block's time, the unwinds, the pole cone, the
+    /// warnings. `onProgress(fraction)` is called as the post goes on (a long job's progress).
     #[wasm_bindgen(unchecked_return_type = "PostResult")]
     pub fn post(
         &self,
         #[wasm_bindgen(unchecked_optional_param_type = "GcodeOptions")] options: JsValue,
+        #[wasm_bindgen(unchecked_optional_param_type = "(fraction: number) => void")] on_progress: JsValue,
     ) -> Result<JsValue, JsValue> {
         const F: &str = "ToolPath.post";
         let _measure = Measure::start(F);
         let o = read_post_options(F, options)?;
-        let p = post::gcode(&self.inner, &o).map_err(|e| fail(F, e))?;
+        let report = if on_progress.is_undefined() || on_progress.is_null() {
+            None
+        } else {
+            Some(
+                on_progress
+                    .dyn_into::<js_sys::Function>()
+                    .map_err(|v| fail(F, format!("onProgress must be a function, got {}", args::describe(&v))))?,
+            )
+        };
+        let mut progress = |f: f64| {
+            if let Some(r) = &report {
+                let _ = r.call1(&JsValue::NULL, &JsValue::from_f64(f));
+            }
+        };
+        let p = post::gcode_reporting(&self.inner, &o, &mut progress).map_err(|e| fail(F, e))?;
+        let u = o.units.mm();
         let l = &p.linearisation;
-        let tip: Vec<f64> = l.blocks.iter().map(|b| b.tip).collect();
-        let axis: Vec<f64> = l.blocks.iter().map(|b| b.axis).collect();
+        let tip: Vec<f64> = l.blocks.iter().map(|b| b.tip / u).collect();
+        let axis: Vec<f64> = l.blocks.iter().map(|b| b.axis / u).collect();
+        let axes: Vec<f64> =
+            p.joints.iter().flat_map(|j| [j.xyz.x / u, j.xyz.y / u, j.xyz.z / u, j.rotary[0], j.rotary[1]]).collect();
+        let minutes: Vec<f64> = p.motion.iter().map(|b| b.minutes).collect();
+        let feed: Vec<f64> = p
+            .motion
+            .iter()
+            .enumerate()
+            .map(|(i, b)| (p.poses[i + 1].tip - p.poses[i].tip).length() / u / b.minutes.max(1e-300))
+            .collect();
+        let speeds: Vec<f64> = p.motion.iter().flat_map(|b| [b.speed(3), b.speed(4)]).collect();
+        let limits: Vec<u8> = p.motion.iter().map(|b| b.limit.code()).collect();
+        let adjusted: Vec<f64> = p.adjusted.iter().map(|a| a.to_degrees()).collect();
+        let warnings = p
+            .warnings
+            .iter()
+            .map(|w| PostWarning {
+                pose: w.pose,
+                line: w.line,
+                reason: w.message.reason,
+                args: crate::error::Args(w.message.args.clone()),
+                message: w.text(),
+            })
+            .collect();
+        let m = &o.machine;
         to_js(
             F,
             &PostResult {
                 text: p.text,
                 poses: p.poses.len(),
                 inserted: l.inserted,
-                tolerance: l.tolerance,
-                before: Deviation { tip: l.before.tip, axis: l.before.axis },
-                after: Deviation { tip: l.after.tip, axis: l.after.axis },
+                tolerance: l.tolerance / u,
+                before: Deviation { tip: l.before.tip / u, axis: l.before.axis / u },
+                after: Deviation { tip: l.after.tip / u, axis: l.after.axis / u },
                 block_tip: Float64Array::from(&tip[..]),
                 block_axis: Float64Array::from(&axis[..]),
                 origin: Float64Array::from(&p.origin[..]),
+                units: o.units.word(),
+                letters: vec!["X", "Y", "Z", m.rotary[0].name.letter(), m.rotary[1].name.letter()],
+                axes: Float64Array::from(&axes[..]),
+                block_minutes: Float64Array::from(&minutes[..]),
+                block_feed: Float64Array::from(&feed[..]),
+                block_rotary_speed: Float64Array::from(&speeds[..]),
+                block_limit: Uint8Array::from(&limits[..]),
+                over_acceleration: p.motion.iter().filter(|b| b.over).count(),
+                unwinds: (0..p.unwound.len()).filter(|&i| p.unwound[i].is_some()).collect(),
+                adjusted: Float64Array::from(&adjusted[..]),
+                warnings,
+                stock: p.stock.map(|c| c.map(|x| x / u)),
             },
         )
     }

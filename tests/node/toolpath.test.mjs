@@ -3,7 +3,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab from './load.mjs';
 
-const { ToolPath, importToolPoses, detectImport } = ruledlab;
+const { ToolPath, importToolPoses, importTarget, detectImport } = ruledlab;
 
 test('the example refines through its given poses with unit axes', () => {
   const path = ToolPath.example();
@@ -104,7 +104,7 @@ test('tool poses: imported from CSV and JSON, ruledlab exports round trip with t
   const plain = importToolPoses('x,y,z,i,j,k\n0,0,0,0,0,2\n1,0,0,0,1,1\n');
   assert.deepEqual([...plain.axes.subarray(0, 3)], [0, 0, 1]);
   assert.equal(plain.tool, undefined);
-  assert.throws(() => importToolPoses('0,0,0,0,0,1\n1,0,0,0,0,0'), /line 2: pose 1 has a zero axis/);
+  assert.throws(() => importToolPoses('0,0,0,0,0,1\n1,0,0,0,0,0'), /line 2: pose 1 has a zero tool axis/);
   const dev = ToolPath.example(7).refine({ steps: 1 }).deviationPerPose(ToolPath.exampleProfile(400));
   assert.equal(dev.length, 13);
   assert.ok(Math.abs(dev[0]) < 1e-3 && Math.max(...dev.map(Math.abs)) < 0.05);
@@ -173,4 +173,135 @@ test('G-code: a rotary axis described without a direction turns as +1, a machine
   const { name, ...unnamed } = preset;
   assert.equal(name, 'table-table-ac');
   assert.match(path.export('gcode', { ...options, machine: unnamed }), /\(machine custom: /);
+});
+
+test('a job: units, tool, feeds, tolerances, stock and pole cone in the program and its numbers', () => {
+  const path = ToolPath.example(7, { radius: 0.3, length: 2, end: 'flat' }).refine({ steps: 2 });
+  const r = path.post({
+    machine: 'head-head-ac',
+    mode: 'tcp',
+    units: 'inch',
+    scale: 0.4,
+    feed: 40,
+    spindle: 12000,
+    direction: 'ccw',
+    coolant: 'mist',
+    tolerance: 0.0005,
+    angularTolerance: 0.2,
+    gauge: 3,
+    holder: { radius: 0.8, length: 1 },
+    stock: [
+      [-1, -1, -1],
+      [4, 1, 0.5],
+    ],
+    clearance: 0.2,
+    poleCone: 2,
+    input: { stride: 4, lines: [2, 3, 4, 5, 6, 7, 8] },
+  });
+  assert.match(r.text, /^\(ruledlab tool path: /);
+  assert.match(r.text, /\nG20 G90 G94/);
+  // the header's long comments wrap onto lines of their own
+  const header = r.text.replaceAll(')\n(  ', ' ');
+  assert.match(
+    header,
+    /\(tool 1: flat end, radius 0\.1200 inch, length 0\.8000 inch, gauge length 3\.0000 inch, holder radius 0\.8000 length 1\.0000 inch\)/,
+  );
+  assert.match(header, /\(spindle 12000 1\/min counter-clockwise <M4>, coolant mist <M7>\)/);
+  assert.match(r.text, /\nS12000 M4\n/);
+  assert.match(r.text, /\nG64 P0\.0005 Q0\n/);
+  assert.match(r.text, /\nM68 E3 Q1\nM66 E0 L0\n/);
+  assert.equal(r.units, 'inch');
+  assert.deepEqual(r.letters, ['X', 'Y', 'Z', 'C', 'A']);
+  assert.equal(r.axes.length, 5 * r.poses);
+  assert.equal(r.blockMinutes.length, r.poses - 1);
+  assert.equal(r.blockRotarySpeed.length, 2 * (r.poses - 1));
+  assert.equal(r.blockLimit.length, r.poses - 1);
+  assert.ok(r.blockFeed.every((f) => f <= 40 + 1e-9));
+  assert.equal(r.adjusted.length, r.poses);
+  assert.deepEqual(r.stock, [
+    [-1, -1, -1],
+    [4, 1, 0.5],
+  ]);
+  assert.ok(Array.isArray(r.warnings) && Array.isArray(r.unwinds));
+  // an unknown key in a machine description at any depth: its path, and the key meant
+  const machine = ToolPath.machine('table-table-ac');
+  const bad = { ...machine, rotary: [{ ...machine.rotary[0], maxx: 100 }, machine.rotary[1]] };
+  assert.throws(
+    () => path.export('gcode', { machine: bad }),
+    /machine\.rotary\[0\]\.maxx: unknown key; did you mean max\?/,
+  );
+  const pivot = { ...machine, rotary: [machine.rotary[0], { ...machine.rotary[1], pviot: [0, 0, 0] }] };
+  assert.throws(
+    () => path.export('gcode', { machine: pivot }),
+    /machine\.rotary\[1\]\.pviot: unknown key; did you mean pivot\?/,
+  );
+  assert.throws(
+    () => path.export('gcode', { machine: { ...machine, partzero: [0, 0, 0] } }),
+    /did you mean partZero\?/,
+  );
+  assert.throws(() => path.export('gcode', { holder: { radius: 1, lenght: 2 } }), /unknown option "holder\.lenght"/);
+  // speed and acceleration limits in a description slow the blocks
+  const slow = { ...machine, rotary: machine.rotary.map((a) => ({ ...a, speed: 100 })) };
+  const s = path.post({ machine: slow, scale: 10 });
+  assert.ok(Array.from(s.blockLimit).some((l) => l === 1));
+  assert.ok(s.blockRotarySpeed.every((v) => v <= 100 + 1e-9));
+  assert.ok(s.warnings.some((w) => w.reason === 'warn-slowed'));
+});
+
+test('errors and warnings name the input pose and its line; the progress of a post is told', () => {
+  const text = 'x,y,z,i,j,k\n0,0,0,0,0,1\n10,0,0,0,0,1\n10,0,0,0,0,1\n20,0,0,0,-0.99,0.14\n';
+  const got = importToolPoses(text);
+  assert.deepEqual(Array.from(got.lines), [2, 3, 4, 5]);
+  const path = ToolPath.fromPoses(got.poses, { radius: 3, length: 30 });
+  const r = path.post({ machine: 'table-table-bc', input: { stride: 1, lines: Array.from(got.lines) } });
+  const dup = r.warnings.find((w) => w.reason === 'warn-duplicate-pose');
+  assert.deepEqual([dup?.pose, dup?.line], [2, 4]);
+  assert.match(dup?.message ?? '', /pose 2 repeats pose 1: no block written for it \(line 4\)/);
+  /** @type {number[]} */
+  const seen = [];
+  path.post({ machine: 'table-table-ac', scale: 1 }, (/** @type {number} */ f) => seen.push(f));
+  assert.ok(seen.length >= 3 && seen.at(-1) === 1 && seen.every((f, i) => i === 0 || f >= seen[i - 1]), String(seen));
+  // a pose beyond A's limits, refined by midpoints to 4 poses a pose: the input's pose 1, its line 3
+  const far = ToolPath.fromPoses([0, 0, 0, 0, 0.2, 1, 1, 0, 0, 0, -0.766, -0.643, 2, 0, 0, 0, 0, 1], {
+    radius: 0.1,
+    length: 1,
+  });
+  assert.throws(
+    () => far.refine({ scheme: 'bspline', degree: 1, steps: 2 }).post({ input: { stride: 4, lines: [2, 3, 4] } }),
+    (e) =>
+      /** @type {any} */ (e).details.index === 1 &&
+      /** @type {any} */ (e).details.line === 3 &&
+      /\(line 3\)$/.test(String(/** @type {any} */ (e).message)),
+  );
+});
+
+test('CAM tables, rotary angles for a machine, units, target curves and the deviation from them', () => {
+  assert.equal(detectImport('X,Y,Z,I,J,K\n0,0,0,0,0,1\n'), 'poses');
+  assert.equal(detectImport('# machine: head-head-ac\nx y z a b c\n0 0 0 0 0 0\n'), 'poses');
+  assert.equal(detectImport('x,y,z\n0,0,0\n1,0,0\n'), 'target');
+  assert.equal(detectImport('{"points": [[0, 0, 0], [1, 0, 0]]}'), 'target');
+  const angles = importToolPoses('x,y,z,a,c\n0,0,0,0,0\n1,0,0,30,90\n', undefined, { machine: 'table-table-ac' });
+  assert.equal(angles.machine, 'table-table-ac');
+  assert.ok(Math.abs(Math.hypot(...angles.axes.subarray(3, 6)) - 1) < 1e-15);
+  assert.throws(() => importToolPoses('x,y,z,a,c\n0,0,0,0,0\n1,0,0,30,90\n'), /name the machine/);
+  const inch = importToolPoses('# units: inch\n0,0,0,0,0,1\n1,0,0,0,0,1\n');
+  assert.equal(inch.units, 'inch');
+  assert.throws(
+    () => importToolPoses('0,0,0,0,0,1\n1,0,0,0,1\n'),
+    /line 2, column 10: expected 6 numbers for a pose \(tip x, y, z and tool axis i, j, k\), found 5/,
+  );
+  const target = importTarget('# units: mm\nx;y;z\n0;0;-1\n1,5;0;-1\n');
+  assert.deepEqual(Array.from(target.points), [0, 0, -1, 1.5, 0, -1]);
+  assert.equal(target.units, 'mm');
+  // a ball of radius 1 whose centre runs along z = 1 over x from 0 to 3: a target line at z = −1 is
+  // 2 from the centres, 1 from the ball
+  const path = ToolPath.fromPoses([0, 0, 0, 0, 0, 1, 3, 0, 0, 0, 0, 1], { radius: 1, length: 5 });
+  const d = path.envelopeDeviation([0.5, 0, -1, 1.5, 0, -1, 2.5, 0, -1, 1.5, 0, 0.5]);
+  assert.deepEqual(
+    Array.from(d.points).map((x) => Math.round(x * 1e12) / 1e12),
+    [1, 1, 1, -0.5],
+  );
+  assert.equal(d.worst, 0);
+  assert.equal(d.perPose.length, 2);
+  assert.deepEqual(Array.from(d.worstPoint), [0.5, 0, -1]);
 });

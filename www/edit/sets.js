@@ -147,7 +147,7 @@ export function rulingValues(inv, count, t) {
 
 /**
  * The values beside a moving tool pose k (either handle): its orientation steps, the angles
- * between its axis and its neighbours' (the core's `quality().angleStep` of the given poses), and
+ * between its axis and its neighbours' in degrees (the core's `quality().angleStep` of the given poses), and
  * the deviation of the refined path at it (`deviationPerPose`, every `stride`-th refined pose is a
  * given one).
  * @param {ArrayLike<number>} angleStep   per pair of given poses
@@ -163,7 +163,7 @@ export function poseValues(angleStep, perPose, stride, t) {
     const out = [];
     for (const j of [k - 1, k])
       if (j >= 0 && j < angleStep.length)
-        out.push({ label: t('value.step', { i: String(j), j: String(j + 1) }), value: angleStep[j] });
+        out.push({ label: t('value.step', { i: String(j), j: String(j + 1) }), value: (angleStep[j] * 180) / Math.PI });
     if (perPose && k * stride < perPose.length)
       out.push({ label: t('value.deviation', { i: String(k) }), value: perPose[k * stride] });
     return out;

@@ -1,13 +1,15 @@
 // The milling scene's link to a real machine (Example 6 beyond the paper): the tool path shown —
-// the example or your own imported tool poses —, the controls of the G-code post (machine,
-// dialect, mode), the program with its linearisation numbers, and the deviation along the path
-// as a plot (per pose: how far the ball stands off the target profile; per block: how far the
-// controller's interpolation strays from the path). The core computes every number; this
-// module only asks for them and draws the plot with the DOM.
+// the example or your own imported tool poses, for the job's tool —, the controls of the G-code
+// post (machine, dialect, mode), the program with what the post did, and the figure beside the
+// view: the deviation along the path (the machined surface from the target, against the
+// tolerance; the controller's interpolation per block) over the machine's axes along the path
+// (the rotary axes' values and speeds, the blocks the axes slowed). The core computes every
+// number; this module only asks for them and draws the plots with the DOM.
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { svgMaker, svgFigure } from '../svg-dom.js';
 import { SMALLEST_TEXT, marker } from '../diagrams/plot.js';
 import { PLOT_MARKERS } from '../limits.js';
+import { drawnTool, jobOptions } from './job.js';
 
 /** The machines of the post (the core's presets). */
 export const MACHINES = /** @type {const} */ (['table-table-ac', 'table-table-bc', 'head-table-bc', 'head-head-ac']);
@@ -15,12 +17,6 @@ export const MACHINES = /** @type {const} */ (['table-table-ac', 'table-table-bc
 export const DIALECTS = /** @type {const} */ (['linuxcnc', 'heidenhain', 'sinumerik']);
 /** Who does the kinematics. */
 export const MODES = /** @type {const} */ (['machine', 'tcp']);
-
-/** The tool of imported poses whose file names none (model units). */
-export const IMPORTED_TOOL = { radius: 0.25, length: 1.5, end: /** @type {const} */ ('ball') };
-
-/** Millimetres per model unit in the page's programs (1 unit = 10 mm). */
-export const PAGE_SCALE = 10;
 
 /**
  * The post's controls, added to the milling scene's parameters.
@@ -54,34 +50,45 @@ export const POST_PARAMS = [
 ];
 
 /**
- * The given path: your imported tool poses (6 numbers per pose: tip, axis) or the example.
+ * The given path for the job's tool: your imported tool poses (6 numbers per pose: tip, axis)
+ * or the example (its ball touching the profile at every pose).
  * @param {(o: any) => any} own  the scene's scope (frees the object)
  * @param {import('../scene.js').ImportedData | undefined} data
- * @param {number} poses  the example's number of given poses
+ * @param {Record<string, unknown>} p  the scene's parameters
  * @returns {{ path: import('../../pkg/ruledlab.js').ToolPath, imported: boolean }}
  */
-export function givenPath(own, data, poses) {
-  if (data?.poses) return { path: own(ToolPath.fromPoses(data.segments, data.tool ?? IMPORTED_TOOL)), imported: true };
-  return { path: own(ToolPath.example(poses)), imported: false };
+export function givenPath(own, data, p) {
+  const tool = drawnTool(p);
+  if (data?.poses) return { path: own(ToolPath.fromPoses(data.segments, tool)), imported: true };
+  return { path: own(ToolPath.example(Number(p.poses), tool)), imported: false };
 }
 
 /**
- * The program of the refined path for the machine, dialect and mode chosen, or the error the
- * post gave (a pose beyond the machine's limits is said, not thrown).
+ * The options of the post for the parameters: the machine, dialect and mode chosen, and the job.
+ * @param {Record<string, unknown>} p
+ * @param {{ stride: number, lines?: number[] }} [input]
+ * @returns {import('../../pkg/ruledlab.js').GcodeOptions}
+ */
+export function postOptions(p, input) {
+  return {
+    machine: /** @type {(typeof MACHINES)[number]} */ (p.machine),
+    dialect: /** @type {(typeof DIALECTS)[number]} */ (p.dialect),
+    mode: /** @type {(typeof MODES)[number]} */ (p.mode),
+    ...jobOptions(p, input),
+  };
+}
+
+/**
+ * The program of the refined path for the parameters, or the error the post gave (a pose
+ * beyond the machine's limits is said, not thrown).
  * @param {import('../../pkg/ruledlab.js').ToolPath} refined
  * @param {Record<string, unknown>} p
+ * @param {{ stride: number, lines?: number[] }} [input]
  * @returns {{ result: import('../../pkg/ruledlab.js').PostResult | null, error: unknown }}
  */
-export function postOf(refined, p) {
+export function postOf(refined, p, input) {
   try {
-    const result = refined.post({
-      machine: /** @type {(typeof MACHINES)[number]} */ (p.machine),
-      dialect: /** @type {(typeof DIALECTS)[number]} */ (p.dialect),
-      mode: /** @type {(typeof MODES)[number]} */ (p.mode),
-      scale: PAGE_SCALE,
-      feed: 1200,
-    });
-    return { result, error: null };
+    return { result: refined.post(postOptions(p, input)), error: null };
   } catch (error) {
     return { result: null, error };
   }
@@ -99,22 +106,27 @@ const LOOKS = [
 ];
 
 /**
- * The deviation along the path: series of values over a common x (the position along the given
- * path, pose k at x = k), linear axes, a zero line. Self-contained SVG like the log-log plot.
- * @param {Document} doc
- * @param {{ series: Array<{ name: string, x: ArrayLike<number>, y: ArrayLike<number> }>, xLabel: string, yLabel: string, title: string }} spec
- * @returns {SVGSVGElement}
+ * @typedef {{ name: string, x: ArrayLike<number>, y: ArrayLike<number>, dots?: boolean }} Series
+ *   dots: markers only, no line (blocks that hit a limit)
+ * @typedef {{ value: number, name: string }} Level   a horizontal line (the tolerance)
  */
-export function deviationPlot(doc, { series, xLabel, yLabel, title }) {
-  const [width, height] = [360, 260];
-  const el = svgMaker(doc);
-  const svg = svgFigure(el, { width, height, title });
+
+/**
+ * A plot of series over a common x (the position along the given path, pose k at x = k): linear
+ * axes, a zero line, dashed levels. Drawn into `g` of the maker `el`, `width` × `height` at its
+ * origin.
+ * @param {ReturnType<typeof svgMaker>} el
+ * @param {SVGElement} g
+ * @param {{ series: Series[], levels?: Level[], xLabel: string, yLabel: string, width: number, height: number }} spec
+ */
+function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height }) {
   const pad = { l: 62, r: 12, t: 12, b: 42 };
   const xs = series.flatMap((s) => Array.from(s.x));
   const ys = series.flatMap((s) => Array.from(s.y)).filter(Number.isFinite);
-  if (!xs.length || !ys.length) return svg;
+  if (!xs.length || !ys.length) return;
+  const levelValues = levels.map((l) => l.value).filter(Number.isFinite);
   const [x0, x1] = [Math.min(...xs), Math.max(...xs, Math.min(...xs) + 1)];
-  let [y0, y1] = [Math.min(0, ...ys), Math.max(0, ...ys)];
+  let [y0, y1] = [Math.min(0, ...ys, ...levelValues), Math.max(0, ...ys, ...levelValues)];
   if (y1 - y0 < 1e-12) y1 = y0 + 1e-3;
   const px = (/** @type {number} */ v) => pad.l + ((v - x0) / (x1 - x0)) * (width - pad.l - pad.r);
   const py = (/** @type {number} */ v) => height - pad.b - ((v - y0) / (y1 - y0)) * (height - pad.t - pad.b);
@@ -130,73 +142,162 @@ export function deviationPlot(doc, { series, xLabel, yLabel, title }) {
     grid.append(el('line', { x1: px(v), x2: px(v), y1: pad.t, y2: height - pad.b }));
     labels.append(el('text', { x: px(v), y: height - pad.b + 17, 'text-anchor': 'middle' }, String(v)));
   }
-  svg.append(grid, labels);
-  svg.append(el('line', { x1: pad.l, x2: width - pad.r, y1: py(0), y2: py(0), stroke: '#777', 'stroke-width': 1 }));
+  g.append(grid, labels);
+  g.append(el('line', { x1: pad.l, x2: width - pad.r, y1: py(0), y2: py(0), stroke: '#777', 'stroke-width': 1 }));
+  for (const level of levels) {
+    const line = el('line', {
+      x1: pad.l,
+      x2: width - pad.r,
+      y1: py(level.value),
+      y2: py(level.value),
+      stroke: '#771100',
+      'stroke-width': 1.2,
+      'stroke-dasharray': '8 4',
+    });
+    line.append(el('title', {}, level.name));
+    g.append(line);
+  }
+  // the key on a pale ground, over the lines it names
+  const keys = el('g', {});
+  keys.append(
+    el('rect', {
+      x: pad.l + 3,
+      y: pad.t + 1,
+      width: Math.min(width - pad.l - pad.r - 6, 34 + 6.8 * Math.max(0, ...series.map((s) => s.name.length))),
+      height: 17 * series.length + 4,
+      fill: '#fbfaf7',
+      'fill-opacity': 0.88,
+    }),
+  );
   series.forEach((s, k) => {
     const look = LOOKS[k % LOOKS.length];
     const pts = Array.from(s.x, (x, i) => [x, s.y[i]]).filter(([, y]) => Number.isFinite(y));
-    const g = el('g', { stroke: look.color, fill: look.color });
-    g.append(
-      el('polyline', {
-        fill: 'none',
-        'stroke-width': 2,
-        'stroke-dasharray': look.dash || 'none',
-        points: pts.map(([a, b]) => `${px(a).toFixed(2)},${py(b).toFixed(2)}`).join(' '),
-      }),
-    );
-    if (pts.length <= PLOT_MARKERS) for (const [a, b] of pts) g.append(marker(el, look.marker, px(a), py(b), 2.5));
-    svg.append(g);
+    const sg = el('g', { stroke: look.color, fill: look.color });
+    if (!s.dots)
+      sg.append(
+        el('polyline', {
+          fill: 'none',
+          'stroke-width': 2,
+          'stroke-dasharray': look.dash || 'none',
+          points: pts.map(([a, b]) => `${px(a).toFixed(2)},${py(b).toFixed(2)}`).join(' '),
+        }),
+      );
+    if (s.dots || pts.length <= PLOT_MARKERS)
+      for (const [a, b] of pts.slice(0, 4 * PLOT_MARKERS)) sg.append(marker(el, look.marker, px(a), py(b), 2.5));
+    g.append(sg);
     const ly = pad.t + 14 + 17 * k;
-    const key = el('g', {});
-    key.append(
-      el('line', {
-        x1: pad.l + 8,
-        x2: pad.l + 26,
-        y1: ly - 4,
-        y2: ly - 4,
-        stroke: look.color,
-        'stroke-width': 2,
-        'stroke-dasharray': look.dash || 'none',
-      }),
-      el('text', { x: pad.l + 31, y: ly, fill: '#222' }, s.name),
-    );
-    svg.append(key);
+    const swatch = el('g', { stroke: look.color, fill: look.color });
+    if (s.dots) swatch.append(marker(el, look.marker, pad.l + 17, ly - 4, 2.5));
+    else
+      swatch.append(
+        el('line', {
+          x1: pad.l + 8,
+          x2: pad.l + 26,
+          y1: ly - 4,
+          y2: ly - 4,
+          'stroke-width': 2,
+          'stroke-dasharray': look.dash || 'none',
+        }),
+      );
+    keys.append(swatch, el('text', { x: pad.l + 31, y: ly, fill: '#222' }, s.name));
   });
-  svg.append(el('text', { x: (width + pad.l) / 2, y: height - 6, 'text-anchor': 'middle', fill: '#222' }, xLabel));
+  if (series.length) g.append(keys);
+  g.append(el('text', { x: (width + pad.l) / 2, y: height - 6, 'text-anchor': 'middle', fill: '#222' }, xLabel));
   const mid = (height - pad.b) / 2;
-  svg.append(
+  g.append(
     el('text', { x: 12, y: mid, transform: `rotate(-90 12 ${mid})`, 'text-anchor': 'middle', fill: '#222' }, yLabel),
   );
+}
+
+/**
+ * Plots stacked in one self-contained SVG (the first one's title names the figure).
+ * @param {Document} doc
+ * @param {{ title: string, plots: Array<{ series: Series[], levels?: Level[], xLabel: string, yLabel: string, title: string }> }} spec
+ * @returns {SVGSVGElement}
+ */
+export function stackedPlots(doc, { title, plots }) {
+  const [width, height] = [360, 260];
+  const el = svgMaker(doc);
+  const svg = svgFigure(el, { width, height: height * Math.max(1, plots.length), title });
+  plots.forEach((plot, k) => {
+    const g = el('g', { transform: `translate(0 ${k * height})` });
+    g.setAttribute('aria-label', plot.title);
+    g.append(el('title', {}, plot.title));
+    drawPlot(el, g, { ...plot, width, height });
+    svg.append(g);
+  });
   return svg;
 }
 
 /**
- * The plot of the milling scene: the deviation per pose (the example's ball from its profile, mm)
- * and the linearisation error per block of the program (tip and axis, mm), over the position
- * along the refined path.
- * @param {{ perPose: Float64Array | null, stride: number, post: import('../../pkg/ruledlab.js').PostResult | null, t: (key: string, args?: Record<string, string | number>) => string }} o
- *   stride: refined poses per given pose (the x of refined pose i is i / stride)
+ * The figure of the milling scene: the deviation along the path — the machined surface from
+ * the target per target point (job units), with the tolerance's lines, and the linearisation
+ * error per block (tip and axis) — and, below it, the machine's rotary axes along the path with
+ * the blocks the axes' limits slowed.
+ * @param {{
+ *   target: { points: Float64Array, at: Float64Array } | null,
+ *   scale: number, stride: number,
+ *   post: import('../../pkg/ruledlab.js').PostResult | null,
+ *   t: (key: string, args?: Record<string, string | number>) => string,
+ * }} o  target: the envelope's deviation (in the poses' units); stride: refined poses per given pose
  */
-export function deviationFigure({ perPose, stride, post, t }) {
-  /** @type {Array<{ name: string, x: ArrayLike<number>, y: ArrayLike<number> }>} */
-  const series = [];
-  if (perPose)
-    series.push({
-      name: t('milling.plot.pose'),
-      x: Array.from(perPose, (_, i) => i / stride),
-      y: Array.from(perPose, (d) => d * PAGE_SCALE),
+export function deviationFigure({ target, scale, stride, post, t }) {
+  const units = post?.units ?? 'mm';
+  /** @type {Series[]} */
+  const deviation = [];
+  if (target)
+    deviation.push({
+      name: t('milling.plot.surface'),
+      x: Array.from(target.at, (a) => a / stride),
+      y: Array.from(target.points, (d) => d * scale),
     });
+  /** @type {Series[]} */
+  const axes = [];
   if (post) {
     // a block's value at its midpoint along the path
     const at = Array.from(post.blockTip, (_, i) => (post.origin[i] + post.origin[i + 1]) / 2 / stride);
-    series.push({ name: t('milling.plot.tip'), x: at, y: post.blockTip });
-    series.push({ name: t('milling.plot.axis'), x: at, y: post.blockAxis });
+    deviation.push({ name: t('milling.plot.tip'), x: at, y: post.blockTip });
+    deviation.push({ name: t('milling.plot.axis'), x: at, y: post.blockAxis });
+    const poses = Array.from(post.origin, (o) => o / stride);
+    for (const k of [0, 1])
+      axes.push({
+        name: t('milling.plot.rotary', { axis: post.letters[3 + k] }),
+        x: poses,
+        y: Array.from(poses, (_, i) => post.axes[5 * i + 3 + k]),
+      });
+    const slowed = Array.from(post.blockLimit, (l, i) => (l ? i : -1)).filter((i) => i >= 0);
+    if (slowed.length)
+      axes.push({
+        name: t('milling.plot.slowed'),
+        x: slowed.map((i) => at[i]),
+        y: slowed.map((i) => post.axes[5 * (i + 1) + 4]),
+        dots: true,
+      });
   }
+  const tolerance = post?.tolerance ?? 0;
+  const levels =
+    target && tolerance
+      ? [
+          { value: tolerance, name: t('milling.plot.tolerance') },
+          { value: -tolerance, name: t('milling.plot.tolerance') },
+        ]
+      : [];
+  const title = t('milling.plot.title');
   return () =>
-    deviationPlot(document, {
-      series,
-      xLabel: t('milling.plot.x'),
-      yLabel: t('milling.plot.y'),
-      title: t('milling.plot.title'),
+    stackedPlots(document, {
+      title,
+      plots: [
+        { series: deviation, levels, xLabel: t('milling.plot.x'), yLabel: t('milling.plot.y', { units }), title },
+        ...(axes.length
+          ? [
+              {
+                series: axes,
+                xLabel: t('milling.plot.x'),
+                yLabel: t('milling.plot.axesY'),
+                title: t('milling.plot.axesTitle'),
+              },
+            ]
+          : []),
+      ],
     });
 }

@@ -18,6 +18,7 @@ import { storedCourse, storedHash } from './onefile.js';
 import { stored } from '../platform.js';
 import { pageChrome, plainTitle } from './chrome.js';
 import { dataPanel, parseStored, STORED } from './data-panel.js';
+import { importParams } from '../figures/job.js';
 import { pageAddress } from './address.js';
 import { keepInput, keptInput } from './stored-input.js';
 import { readParams } from '../scene.js';
@@ -148,11 +149,12 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
         return taskErrorText(e, i18n);
       }
     },
-    // tool poses go to the milling scene, segments to "Your data"
+    // tool poses go to the milling scene (at their file's scale, in its units, with its tool; a
+    // target curve added keeps the job as it is), segments to "Your data"
     onData: (imported) =>
       go(
         /** @type {import('../scene.js').Scene} */ (SCENES.find((s) => s.id === (imported.poses ? 'milling' : 'data'))),
-        {},
+        imported.poses ? (imported.target ? { ...stage.params } : importParams(imported)) : {},
         { data: imported },
       ),
   });

@@ -1,7 +1,9 @@
 // The page's data panel, in the stage's panel: your own segments pasted or uploaded (read by the
-// core's importSegments, errors said at the paste box), and the menu of exports of what is
-// shown — drawings (SVG, TikZ, PNG, the plot) and data files (written by the core).
-import { importSegments, importToolPoses, detectImport } from '../../pkg/ruledlab.js';
+// core's importSegments, errors said at the paste box), your tool poses (importToolPoses: the
+// columns CAM systems write, their units, each pose's line) and the target curve they should
+// machine (importTarget), and the menu of exports of what is shown — drawings (SVG, TikZ, PNG,
+// the plot) and data files (written by the core).
+import { importSegments, importToolPoses, importTarget, detectImport } from '../../pkg/ruledlab.js';
 import { download } from '../ui/download.js';
 import { linkable } from '../state.js';
 import { describeError } from '../ui/errors.js';
@@ -45,9 +47,16 @@ const EXPORTS = /** @type {const} */ ([
 /** Imported data kept in session storage, or null. */
 export function parseStored(/** @type {string} */ text) {
   try {
-    const { segments, rows, cols, poses, tool } = JSON.parse(text);
+    const { segments, rows, cols, poses, tool, units, lines, target } = JSON.parse(text);
     return poses
-      ? { segments: new Float64Array(segments), poses: true, tool }
+      ? {
+          segments: new Float64Array(segments),
+          poses: true,
+          tool,
+          ...(units ? { units } : {}),
+          ...(lines ? { lines } : {}),
+          ...(target ? { target: new Float64Array(target) } : {}),
+        }
       : { segments: new Float64Array(segments), rows, cols };
   } catch {
     return null;
@@ -73,9 +82,13 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
   // what the text holds: recognised, or chosen (tool poses: tip and axis per row)
   const kindLabel = el('label', { htmlFor: 'import-kind' });
   const kind = /** @type {HTMLSelectElement} */ (el('select', { id: 'import-kind' }));
-  for (const k of ['auto', 'segments', 'poses']) kind.append(el('option', { value: k }));
+  for (const k of ['auto', 'segments', 'poses', 'target']) kind.append(el('option', { value: k }));
+  // the units of tool poses and targets: as the file says (millimetres when it says nothing), or chosen
+  const unitsLabel = el('label', { htmlFor: 'import-units' });
+  const units = /** @type {HTMLSelectElement} */ (el('select', { id: 'import-units' }));
+  for (const k of ['auto', 'mm', 'inch']) units.append(el('option', { value: k }));
   const kindRow = el('div', { className: 'io-row' });
-  kindRow.append(kindLabel, kind);
+  kindRow.append(kindLabel, kind, unitsLabel, units);
   const row = el('div', { className: 'io-row' });
   const upload = /** @type {HTMLInputElement} */ (
     el('input', { type: 'file', id: 'import-file', accept: '.csv,.json,.txt,.exercise,text/csv,application/json' })
@@ -154,11 +167,25 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
     /** @type {import('../scene.js').ImportedData} */
     let data;
     try {
-      const poses = kind.value === 'poses' || (kind.value === 'auto' && detectImport(text) === 'poses');
-      if (poses) {
-        // tool poses: tip and axis, 6 numbers each, with their tool
-        const got = importToolPoses(text);
-        data = got.tool ? { segments: got.poses, poses: true, tool: got.tool } : { segments: got.poses, poses: true };
+      const detected = kind.value === 'auto' ? detectImport(text) : kind.value;
+      if (detected === 'poses') {
+        // tool poses: tip and axis, 6 numbers each, with their tool, units and lines; rotary
+        // angles (x y z a b c) for the machine the milling scene has chosen
+        const machine = stage.scene?.id === 'milling' ? String(stage.params.machine) : undefined;
+        const got = importToolPoses(text, undefined, machine ? { machine: /** @type {any} */ (machine) } : undefined);
+        const fileUnits = units.value === 'auto' ? (got.units ?? 'mm') : units.value;
+        data = {
+          segments: got.poses,
+          poses: true,
+          ...(got.tool ? { tool: got.tool } : {}),
+          units: /** @type {'mm' | 'inch'} */ (fileUnits),
+          lines: Array.from(got.lines),
+        };
+      } else if (detected === 'target') {
+        // a target curve for the tool poses on screen
+        const got = importTarget(text);
+        if (!stage.data?.poses) throw Object.assign(new Error(i18n().t('io.targetNeedsPoses')), { localized: true });
+        data = { ...stage.data, target: got.points };
       } else {
         const got = importSegments(text);
         data = { segments: got.segments, rows: got.rows, cols: got.cols };
@@ -183,7 +210,13 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
     // too large for the link: kept in the tab's session storage, where there is one
     const keptThere = store(
       STORED,
-      linkable(data) ? null : JSON.stringify({ ...data, segments: Array.from(data.segments) }),
+      linkable(data)
+        ? null
+        : JSON.stringify({
+            ...data,
+            segments: Array.from(data.segments),
+            ...(data.target ? { target: Array.from(data.target) } : {}),
+          }),
     );
     storedNote.hidden = linkable(data);
     storedNote.textContent = i18n().t(keptThere ? 'io.stored' : 'io.notStored', { max: MAX_LINK_RULINGS });
@@ -237,6 +270,8 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
       showButton.textContent = t('io.show');
       kindLabel.textContent = t('io.kind');
       for (const option of kind.options) option.textContent = t(`io.kind.${option.value}`);
+      unitsLabel.textContent = t('io.units');
+      for (const option of units.options) option.textContent = t(`io.units.${option.value}`);
       exportsLabel.textContent = t('io.exports');
       widthLabel.textContent = t('io.printWidth');
       for (const [kind, key] of EXPORTS) buttons[kind].textContent = t(key);

@@ -1,10 +1,16 @@
 // Example 6, Figs. 16–18: a few 5-axis tool poses refined by a strip scheme into a smooth tool
 // path; the ball-end tool (drawn at one pose, Fig. 16) sweeps a tube whose lower half is the
-// machined surface. The part, the envelope and the tool are meshes built by the core.
+// machined surface. The part, the envelope and the tool are meshes built by the core. Beyond the
+// paper: the job a machinist posts (figures/job.js) — the program for the machine, controller
+// and mode chosen, the machined surface against your target curve, the machine's axes along the
+// path —, and a long job refined and posted in the worker (post-job.js).
 import { ToolPath } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
-import { POST_PARAMS, givenPath, postOf, programFile, deviationFigure } from '../figures/toolpath.js';
+import { POST_PARAMS, givenPath, postOf, postOptions, programFile, deviationFigure } from '../figures/toolpath.js';
+import { JOB_PARAMS, drawnTool, stockOf } from '../figures/job.js';
+import { postInWorker } from '../compute.js';
 import { poseSet, poseValues } from '../edit/sets.js';
+import { DRAW_LIMIT, POST_WORKER_THRESHOLD } from '../limits.js';
 
 /** @type {Record<string, Partial<import('../../pkg/ruledlab.js').SubdivideOptions>>} */
 const SCHEMES = {
@@ -36,6 +42,66 @@ function maxDeviation(
   /** @type {Float64Array} */ profile,
 ) {
   return path.deviation(profile).reduce((m, d) => Math.max(m, Math.abs(d)), 0);
+}
+
+/** The largest of an array's absolute values (0 for none). */
+const largest = (/** @type {ArrayLike<number>} */ xs) => Array.from(xs).reduce((m, x) => Math.max(m, Math.abs(x)), 0);
+
+/**
+ * The post's warnings in the reader's language (the core's reason and values, its line).
+ * @param {import('../../pkg/ruledlab.js').PostResult['warnings']} warnings
+ * @param {import('../scene.js').Context} ctx
+ */
+function warningTexts(warnings, { t, format }) {
+  return warnings.map((w) => {
+    /** @type {Record<string, string>} */
+    const args = {};
+    for (const [k, v] of Object.entries(w.args ?? {}))
+      if (k.endsWith('Reason')) args[k.slice(0, -6)] = t(`error.${v}`);
+      else args[k] ??= typeof v === 'number' ? format(v) : String(v);
+    const text = t(`error.${w.reason}`, args);
+    return w.line ? `${text} ${t('error.atLine', { line: w.line })}` : text;
+  });
+}
+
+/**
+ * The twelve edges of a box as f32 segments (the stock, drawn in the poses' units).
+ * @param {[[number, number, number], [number, number, number]]} box
+ * @param {number} scale  program units per unit of the poses
+ */
+function boxEdges([lo, hi], scale) {
+  const c = (/** @type {number} */ k) => [k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]];
+  const edges = [0, 1, 0, 2, 1, 3, 2, 3, 4, 5, 4, 6, 5, 7, 6, 7, 0, 4, 1, 5, 2, 6, 3, 7];
+  return new Float32Array(edges.flatMap((k) => c(k).map((x) => x / scale)));
+}
+
+/**
+ * The post's readouts: what it inserted, how far the interpolation strayed, the rotary axes'
+ * speeds and steps, the blocks the axes slowed, the unwinds, the pole cone, the time.
+ * @param {import('../../pkg/ruledlab.js').PostResult} post
+ */
+function postReadouts(post) {
+  const u = post.units;
+  const letters = post.letters.slice(3);
+  const speeds = letters.map(
+    (l, k) => `${l} ${Math.round(largest(post.blockRotarySpeed.filter((_, i) => i % 2 === k)))}`,
+  );
+  const steps = letters.map((l, k) => {
+    let m = 0;
+    for (let i = 5 + 3 + k; i < post.axes.length; i += 5) m = Math.max(m, Math.abs(post.axes[i] - post.axes[i - 5]));
+    return `${l} ${m.toFixed(3)}`;
+  });
+  return [
+    { label: 'milling.readout.inserted', value: post.inserted },
+    { label: `milling.readout.linearTip.${u}`, value: post.before.tip },
+    { label: `milling.readout.linearAxis.${u}`, value: post.before.axis },
+    { label: 'milling.readout.rotarySpeed', value: speeds.join(', ') },
+    { label: 'milling.readout.rotaryStep', value: steps.join(', ') },
+    { label: 'milling.readout.slowed', value: Array.from(post.blockLimit).filter(Boolean).length },
+    { label: 'milling.readout.unwinds', value: post.unwinds.length },
+    { label: 'milling.readout.cone', value: Array.from(post.adjusted).filter((a) => a > 0).length },
+    { label: 'milling.readout.minutes', value: post.blockMinutes.reduce((s, m) => s + m, 0) },
+  ];
 }
 
 export const scene = defineScene({
@@ -72,6 +138,7 @@ export const scene = defineScene({
     { key: 'envelope', label: 'milling.param.envelope', type: 'checkbox', value: true },
     { key: 'part', label: 'milling.param.part', type: 'checkbox', value: true },
     ...POST_PARAMS,
+    ...JOB_PARAMS,
   ],
   legend: [
     { style: 'exact', label: 'milling.legend.profile' },
@@ -82,20 +149,29 @@ export const scene = defineScene({
     { style: 'tool', label: 'milling.legend.tool', when: (p) => !!p.tool },
     { style: 'part', label: 'milling.legend.part', when: (p) => !!p.part },
   ],
-  create(p, { t, data, input }) {
+  create(p, ctx) {
+    const { t, data, input } = ctx;
     return scoped((own) => {
       const steps = Number(p.steps);
+      const scale = Number(p.scale);
       // your imported tool poses, or the example of Figs. 16–18 (its profile and part with it)
-      const { path: base, imported } = givenPath(own, data, Number(p.poses));
+      const { path: base, imported } = givenPath(own, data, p);
       // the given poses as the reader moved them (the same tool)
       const edited = input?.poses;
       const path = edited ? own(ToolPath.fromSegments(edited, base.tool)) : base;
+      // the input's numbering: errors and warnings name your pose and its line
+      const numbering = { stride: 2 ** steps, ...(imported && !edited && data?.lines ? { lines: data.lines } : {}) };
+      const expected = (path.length - 1) * 2 ** steps + 1;
+      if (expected > POST_WORKER_THRESHOLD) return largeJob(path, p, ctx, numbering);
       const refined = own(path.refine({ ...SCHEMES[/** @type {keyof typeof SCHEMES} */ (p.scheme)], steps }));
       // the given axes as the poses were given: an edited axis point stays where the reader put
       // it (the tool keeps its length along that direction)
       const given = edited ? f32(edited) : path.segmentsF32();
       const all = refined.segmentsF32();
       const profile = imported ? null : ToolPath.exampleProfile(400);
+      // the target the machined surface is measured against: the example's profile, or yours
+      const target = profile ?? data?.target ?? null;
+      const surface = target ? refined.envelopeDeviation(target) : null;
       const deviation = profile ? maxDeviation(refined, profile) : Number.NaN;
       const quality = refined.quality();
       // every scheme's deviation and orientation at these steps, for the comparisons the text
@@ -115,8 +191,8 @@ export const scene = defineScene({
       const perPose = profile ? refined.deviationPerPose(profile) : null;
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
-        ...(profile
-          ? [/** @type {import('../scene.js').Layer} */ ({ kind: 'polyline', style: 'exact', positions: f32(profile) })]
+        ...(target
+          ? [/** @type {import('../scene.js').Layer} */ ({ kind: 'polyline', style: 'exact', positions: f32(target) })]
           : []),
         { kind: 'segments', style: 'given', positions: given },
         { kind: 'polyline', style: 'barycentre', positions: f32(centres) },
@@ -136,31 +212,54 @@ export const scene = defineScene({
         const { positions, indices } = ToolPath.examplePart(60, 30);
         layers.push({ kind: 'mesh', style: 'part', positions, indices });
       }
-      // the G-code post for the machine, dialect and mode chosen
-      const { result: post, error: postError } = postOf(refined, p);
-      const exports = {
-        json: refined.export('json'),
-        csv: refined.export('csv'),
-      };
+      // the G-code post for the machine, controller, mode and job chosen
+      const { result: post, error: postError } = postOf(refined, p, numbering);
+      /** @type {import('../scene.js').Label[]} */
+      const labels = [];
+      // the stock box (named at its greatest corner: a label, the legend's colours being taken)
+      if (post) {
+        layers.push({ kind: 'segments', style: 'helper', positions: boxEdges(post.stock, scale) });
+        labels.push({ at: post.stock[1].map((x) => x / scale), text: t('milling.label.stock') });
+      }
+      if (surface) {
+        layers.push({ kind: 'points', style: 'resultPoint', positions: f32(surface.worstPoint) });
+        labels.push({
+          at: Array.from(surface.worstPoint),
+          text: t('milling.worst', {
+            value: ctx.format(surface.worstDeviation * scale),
+            units: post?.units ?? String(p.units),
+          }),
+        });
+      }
+      const tolerance = Number(p.tolerance);
+      const units = post?.units ?? (p.units === 'inch' ? 'inch' : 'mm');
+      const exports = { json: refined.export('json'), csv: refined.export('csv') };
+      const stockProblem = stockOf(String(p.stock)) === undefined ? [t('milling.note.stock')] : [];
       return {
-        bounds: profile ? bounds(given, all, profile) : bounds(given, all),
+        bounds: target ? bounds(given, all, target) : bounds(given, all),
         camera: { yaw: -1.9, pitch: 0.55 },
         layers,
+        labels,
         readouts: [
           { label: 'milling.readout.poses', value: refined.length },
           ...(profile ? [{ label: 'milling.readout.deviation', value: deviation }] : []),
-          { label: 'milling.readout.angleStep', value: quality.maxAngleStep },
+          ...(surface
+            ? [
+                { label: `milling.readout.envelope.${units}`, value: Math.abs(surface.worstDeviation) * scale },
+                {
+                  label: 'milling.readout.beyond',
+                  value: Array.from(surface.points).filter((d) => Math.abs(d) * scale > tolerance).length,
+                },
+              ]
+            : []),
+          { label: 'milling.readout.angleStep', value: (quality.maxAngleStep * 180) / Math.PI },
           { label: 'milling.readout.secondDifference', value: quality.maxSecondDifference },
           ...(profile ? [{ label: 'milling.readout.compare.given', value: given0 }] : []),
           ...(steps > 0 && profile
             ? Object.entries(compare).map(([k, v]) => ({ label: `milling.readout.compare.${k}`, value: v }))
             : []),
           ...(post
-            ? [
-                { label: 'milling.readout.inserted', value: post.inserted },
-                { label: 'milling.readout.linearTip', value: post.before.tip },
-                { label: 'milling.readout.linearAxis', value: post.before.axis },
-              ]
+            ? postReadouts(post)
             : [
                 {
                   label: 'milling.readout.post',
@@ -168,6 +267,7 @@ export const scene = defineScene({
                 },
               ]),
         ],
+        problems: [...stockProblem, ...(post ? warningTexts(post.warnings, ctx) : [])],
         // the claims are about the example's own poses, not an edit of them
         claims: edited
           ? []
@@ -213,12 +313,7 @@ export const scene = defineScene({
               total: refined.length,
               deviation,
             }),
-        figure: deviationFigure({
-          perPose,
-          stride: 2 ** steps,
-          post,
-          t,
-        }),
+        figure: deviationFigure({ target: surface, scale, stride: 2 ** steps, post, t }),
         // the handles: every given pose's tip (it carries the tool) and a point on its axis (it
         // turns the tool about the tip)
         input: {
@@ -252,3 +347,80 @@ export const scene = defineScene({
     });
   },
 });
+
+/**
+ * A job too long to refine and post while the page waits: the given poses drawn at once, then
+ * refined and posted in the worker with progress (the view's Cancel stops it); the refined path
+ * drawn every k-th tool axis, its program downloadable, the post's numbers in the readout.
+ * @param {import('../../pkg/ruledlab.js').ToolPath} path
+ * @param {import('../scene.js').Params} p
+ * @param {import('../scene.js').Context} ctx
+ * @param {{ stride: number, lines?: number[] }} numbering
+ * @returns {import('../scene.js').Built}
+ */
+function largeJob(path, p, ctx, numbering) {
+  const { t } = ctx;
+  const steps = Number(p.steps);
+  // what the picture needs of the path, read now: the scope frees it when create() returns
+  const given = path.segmentsF32();
+  const count = path.length;
+  const expected = (count - 1) * 2 ** steps + 1;
+  /** @returns {import('../scene.js').Built} */
+  const picture = (/** @type {Float32Array} */ segments, /** @type {string} */ note) => ({
+    bounds: bounds(given, segments),
+    camera: { yaw: -1.9, pitch: 0.55 },
+    layers: [
+      { kind: 'segments', style: 'insertedAxis', positions: segments },
+      { kind: 'segments', style: 'given', positions: given },
+    ],
+    readouts: [{ label: 'milling.readout.poses', value: expected }],
+    note: note || undefined,
+    description: t('milling.describeImported', {
+      poses: count,
+      steps,
+      scheme: t(`milling.scheme.${p.scheme}`),
+      total: expected,
+    }),
+  });
+  const first = picture(new Float32Array(0), t('milling.note.large', { poses: expected }));
+  const job = {
+    poses: path.tips().length ? interleave(path.tips(), path.axes()) : new Float64Array(0),
+    tool: drawnTool(p),
+    refine: { ...SCHEMES[/** @type {keyof typeof SCHEMES} */ (p.scheme)], steps },
+    post: postOptions(p, numbering),
+    draw: DRAW_LIMIT,
+  };
+  first.later = (onProgress) =>
+    postInWorker(/** @type {import('../post-job.js').PostJob} */ (job), onProgress).then((done) => {
+      const built = picture(
+        done.segments,
+        done.every > 1 ? t('milling.note.drawn', { every: done.every, poses: done.poses }) : '',
+      );
+      built.readouts = [
+        { label: 'milling.readout.poses', value: done.poses },
+        { label: 'milling.readout.angleStep', value: (done.maxAngleStep * 180) / Math.PI },
+        ...postReadouts(/** @type {import('../../pkg/ruledlab.js').PostResult} */ ({ ...done.post, text: '' })),
+      ];
+      built.problems = warningTexts(done.post.warnings, ctx);
+      built.downloads = [
+        {
+          label: 'milling.download.gcode',
+          filename: programFile(String(p.dialect)),
+          content: done.text,
+          type: 'text/plain',
+        },
+      ];
+      return built;
+    });
+  return first;
+}
+
+/** Tips and axes (3 numbers each) as 6 numbers per pose. */
+function interleave(/** @type {Float64Array} */ tips, /** @type {Float64Array} */ axes) {
+  const out = new Float64Array(2 * tips.length);
+  for (let i = 0; i < tips.length / 3; i++) {
+    out.set(tips.subarray(3 * i, 3 * i + 3), 6 * i);
+    out.set(axes.subarray(3 * i, 3 * i + 3), 6 * i + 3);
+  }
+  return out;
+}

@@ -5,6 +5,7 @@
 import { canFullscreen } from '../platform.js';
 import { labelButton } from './elements.js';
 import { touchScreen } from './touch.js';
+import { cancelWork } from '../compute.js';
 
 /** Wires the view's buttons. @param {import('../stage.js').Stage} stage */
 export function wireToolbar(stage) {
@@ -18,6 +19,8 @@ export function wireToolbar(stage) {
   buttons.help.addEventListener('click', () => stage.shortcuts.open());
   cancel.addEventListener('click', () => {
     stage.session.dispose();
+    // a long job in the worker (a tool path's post) stops there too
+    cancelWork();
     progress.hidden = true;
   });
 }

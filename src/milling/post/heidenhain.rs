@@ -1,30 +1,61 @@
 //! The Heidenhain TNC plain-text (Klartext) dialect: `0 BEGIN PGM <NAME> MM` … `N END PGM <NAME>
-//! MM`, every block numbered from 0, comments as `; …` blocks, the blank as `BLK FORM 0.1 Z` /
-//! `0.2`, the datum with cycle 247 (`Q339` the preset's number), `TOOL CALL <T> Z S…` (the
-//! length offset comes with the tool call), straight moves `L X+… Y+… Z+… A+… C+… R0 F…`,
-//! `FMAX` for rapids, `M91` for the retract in machine coordinates, `M3`/`M5`, `M7`/`M8`/`M9`
-//! and `M30` on the blocks that need them. Tool-centre-point mode: `FUNCTION TCPM F TCP AXIS POS
-//! PATHCTRL AXIS` (the feed at the tip, the rotary axes as angles; the older M128 does the same)
-//! and `FUNCTION RESET TCPM`. In machine coordinates a block that turns a rotary axis gets the F
-//! of the linear axes that makes it last as long as the tip at the given feed (F × |ΔXYZ| / tip
-//! distance; the control refers F to the linear axes there). No Heidenhain control ran these
-//! programs: they follow the TNC 640 user's manual for Klartext programming, checked by a test
-//! of their syntax only.
+//! MM` (`INCH` for inches), every block numbered from 0, comments as `; …` blocks, the stock as
+//! `BLK FORM 0.1 Z` / `0.2`, the datum with cycle 247 (`Q339` the preset's number), `TOOL CALL <T>
+//! Z S…` (the length offset comes with the tool call), cycle 32 `TOLERANCE` (`T` the chordal
+//! tolerance, `HSC-MODE:0` finishing, `TA` the rotary axes' tolerance in degrees; reset by the
+//! cycle without `T` at the end), straight moves `L X+… Y+… Z+… A+… C+… R0 F…`, `FMAX` for
+//! rapids, `M140 MB MAX` for the retract along the tool axis to the travel's end, `M3`/`M4`/`M5`,
+//! `M7`/`M8`/`M9` and `M30` on the blocks that need them. The feed word has 3 decimals and at
+//! most 99 999.999 (the TNC's input range: `motion.rs` slows a block rather than write more).
+//! Tool-centre-point mode: `FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS` (the feed at the tip,
+//! the rotary axes as angles; the older M128 does the same) and `FUNCTION RESET TCPM`. In
+//! machine coordinates a block that turns a rotary axis gets the F of the linear axes that makes
+//! it last the block's time (F × time = |ΔXYZ|; the control refers F to the linear axes there),
+//! or, where the linear axes stand still, the F of the rotary axes in degrees per minute. No
+//! Heidenhain control ran these programs: they follow the TNC 640 user's manual for Klartext
+//! programming, checked by a test of their syntax only.
 
-use super::{clean, number, speed, Context, Coolant, Mode, Op, Rate, Target};
+use super::HEIDENHAIN_MAX_FEED;
+use super::{
+    comment_lines, decimals, number, speed, Context, Coolant, Mode, Op, Rate, SpindleDirection, Target, Units, Words,
+};
 use std::fmt::Write;
 
-fn axes(t: &Target, c: &Context) -> String {
-    format!(
-        "X{} Y{} Z{} {}{} {}{}",
-        number(t.xyz.x, true),
-        number(t.xyz.y, true),
-        number(t.xyz.z, true),
-        c.letters[0],
-        number(t.rotary[0], true),
-        c.letters[1],
-        number(t.rotary[1], true)
-    )
+fn axes(t: &Target, c: &Context, words: Words) -> String {
+    match (words, c.mode) {
+        (Words::Xy, Mode::Machine) => format!("X{} Y{}", number(t.xyz.x, true), number(t.xyz.y, true)),
+        (Words::Z, Mode::Machine) => format!("Z{}", number(t.xyz.z, true)),
+        _ => format!(
+            "X{} Y{} Z{} {}{} {}{}",
+            number(t.xyz.x, true),
+            number(t.xyz.y, true),
+            number(t.xyz.z, true),
+            c.letters[0],
+            number(t.rotary[0], true),
+            c.letters[1],
+            number(t.rotary[1], true)
+        ),
+    }
+}
+
+/// A feed word: 3 decimals, within 0.001 … 99 999.999.
+pub fn feed_word(f: f64) -> String {
+    decimals(f.clamp(0.001, HEIDENHAIN_MAX_FEED), 3, false)
+}
+
+/// The feed word of a block (module documentation).
+pub fn feed_of(rate: &Rate, c: &Context) -> f64 {
+    match (rate, c.mode) {
+        (Rate::PerMinute(f), _) => *f,
+        (Rate::Simultaneous { minutes, distance, .. }, Mode::Tcp) => distance / minutes.max(1e-12),
+        (Rate::Simultaneous { minutes, linear, turn, .. }, Mode::Machine) => {
+            if linear * c.units.mm() >= 0.01 {
+                linear / minutes.max(1e-12)
+            } else {
+                turn / minutes.max(1e-12)
+            }
+        }
+    }
 }
 
 /// The program text.
@@ -35,7 +66,11 @@ pub fn write(ops: &[Op], c: &Context) -> String {
         let _ = writeln!(g, "{n} {s}");
         n += 1;
     };
-    block(&mut g, &format!("BEGIN PGM {} MM", c.name));
+    let unit = match c.units {
+        Units::Mm => "MM",
+        Units::Inch => "INCH",
+    };
+    block(&mut g, &format!("BEGIN PGM {} {unit}", c.name));
     // a pending M function for the next positioning block (spindle on, coolant)
     let mut pending: Vec<&str> = Vec::new();
     let m = |pending: &mut Vec<&str>| {
@@ -46,10 +81,13 @@ pub fn write(ops: &[Op], c: &Context) -> String {
     for (i, op) in ops.iter().enumerate() {
         let last = matches!(ops.get(i + 1), Some(Op::End));
         match op {
-            Op::Comment(text) => block(&mut g, &format!("; {}", clean(text))),
+            Op::Comment(text) => {
+                for l in comment_lines(text) {
+                    block(&mut g, &format!("; {l}"));
+                }
+            }
             Op::Start => {
                 let (lo, hi) = c.bounds;
-                let (lo, hi) = (lo - glam::DVec3::splat(1.0), hi + glam::DVec3::splat(1.0));
                 block(
                     &mut g,
                     &format!("BLK FORM 0.1 Z X{} Y{} Z{}", number(lo.x, true), number(lo.y, true), number(lo.z, true)),
@@ -59,18 +97,33 @@ pub fn write(ops: &[Op], c: &Context) -> String {
                     &format!("BLK FORM 0.2 X{} Y{} Z{}", number(hi.x, true), number(hi.y, true), number(hi.z, true)),
                 );
             }
+            Op::Tolerance { chordal, angular } => {
+                block(&mut g, "CYCL DEF 32.0 TOLERANCE");
+                block(&mut g, &format!("CYCL DEF 32.1 T{}", number(*chordal, false)));
+                if *angular > 0.0 {
+                    block(&mut g, &format!("CYCL DEF 32.2 HSC-MODE:0 TA{}", number(*angular, false)));
+                } else {
+                    block(&mut g, "CYCL DEF 32.2 HSC-MODE:0");
+                }
+            }
+            Op::ToleranceOff => {
+                block(&mut g, "CYCL DEF 32.0 TOLERANCE");
+                block(&mut g, "CYCL DEF 32.1");
+            }
             Op::WorkOffset(k) => {
                 block(&mut g, "CYCL DEF 247 DATUM SETTING ~");
                 let _ = writeln!(g, "  Q339=+{k} ;DATUM NUMBER");
             }
-            Op::ToolChange { tool, spindle } => {
+            Op::ToolChange { tool, spindle, direction } => {
                 block(&mut g, &format!("TOOL CALL {tool} Z S{}", speed(*spindle)));
-                pending.push("M3");
+                pending.push(match direction {
+                    SpindleDirection::Clockwise => "M3",
+                    SpindleDirection::CounterClockwise => "M4",
+                });
             }
-            Op::RetractTop(z) => {
-                let extra = m(&mut pending);
-                block(&mut g, &format!("L Z{} R0 FMAX M91{extra}", number(*z, true)));
-            }
+            // out along the tool axis to the end of the travel (the M functions wait for the
+            // next positioning block)
+            Op::RetractTop(_) => block(&mut g, "L M140 MB MAX"),
             Op::Rotate(r) => {
                 if last {
                     pending.push("M30");
@@ -89,23 +142,13 @@ pub fn write(ops: &[Op], c: &Context) -> String {
             }
             Op::Tcp(true) => block(&mut g, "FUNCTION TCPM F TCP AXIS POS PATHCTRL AXIS"),
             Op::Tcp(false) => block(&mut g, "FUNCTION RESET TCPM"),
-            Op::Rapid(t) => {
+            Op::Rapid(t, words) => {
                 let extra = m(&mut pending);
-                block(&mut g, &format!("L {} R0 FMAX{extra}", axes(t, c)));
+                block(&mut g, &format!("L {} R0 FMAX{extra}", axes(t, c, *words)));
             }
             Op::Feed(t, rate) => {
-                let f = match (rate, c.mode) {
-                    (Rate::PerMinute(f), _) | (Rate::Simultaneous { feed: f, .. }, Mode::Tcp) => *f,
-                    (Rate::Simultaneous { feed, distance, linear }, Mode::Machine) => {
-                        if *linear > 1e-4 {
-                            feed * linear / distance.max(1e-6)
-                        } else {
-                            *feed
-                        }
-                    }
-                };
                 let extra = m(&mut pending);
-                block(&mut g, &format!("L {} R0 F{}{extra}", axes(t, c), number(f, false)));
+                block(&mut g, &format!("L {} R0 F{}{extra}", axes(t, c, Words::All), feed_word(feed_of(rate, c))));
             }
             Op::Coolant(k) => match k {
                 Coolant::Flood => pending.push("M8"),
@@ -117,7 +160,7 @@ pub fn write(ops: &[Op], c: &Context) -> String {
             Op::End => {}
         }
     }
-    block(&mut g, &format!("END PGM {} MM", c.name));
+    block(&mut g, &format!("END PGM {} {unit}", c.name));
     g
 }
 
@@ -132,31 +175,43 @@ mod tests {
             mode,
             name: "T".into(),
             bounds: (DVec3::new(0.0, -2.0, -3.0), DVec3::new(10.0, 2.0, 5.0)),
+            units: Units::Mm,
         }
     }
 
-    /// The blank is the box of the tips, 1 mm larger on every side.
+    /// The blank is the stock's box.
     #[test]
-    fn the_blank_is_the_tips_box_and_a_millimetre() {
+    fn the_blank_is_the_stock() {
         let g = write(&[Op::Start], &context(Mode::Tcp));
-        assert!(g.contains("BLK FORM 0.1 Z X-1.0000 Y-3.0000 Z-4.0000\n"), "{g}");
-        assert!(g.contains("BLK FORM 0.2 X+11.0000 Y+3.0000 Z+6.0000\n"), "{g}");
+        assert!(
+            g.contains("BLK FORM 0.1 Z X0.0000 Y-2.0000 Z-3.0000\n")
+                || g.contains("BLK FORM 0.1 Z X+0.0000 Y-2.0000 Z-3.0000\n"),
+            "{g}"
+        );
+        assert!(g.contains("BLK FORM 0.2 X+10.0000 Y+2.0000 Z+5.0000\n"), "{g}");
     }
 
-    /// In machine coordinates a simultaneous move's feed is scaled by the linear share of its
-    /// distance (the controller applies F to the linear axes): 1000 · 0.5/2 = 250; a move with no
-    /// linear part keeps the feed; with tool-centre-point control F is the tip's feed.
+    /// In machine coordinates a simultaneous move's F is its linear distance over its time (the
+    /// controller applies F to the linear axes): 0.5 mm in 0.002 min is F250; a move with no
+    /// linear part gets the rotary axes' degrees per minute, 3° in 0.002 min F1500; with
+    /// tool-centre-point control F is the tip's distance over the time, 2 mm: F1000.
     #[test]
     fn feeds_of_simultaneous_moves() {
         let t = Target { xyz: DVec3::ZERO, rotary: [0.0, 0.0], axis: DVec3::Z };
         let feed = |mode, linear| {
-            let g = write(&[Op::Feed(t, Rate::Simultaneous { feed: 1000.0, distance: 2.0, linear })], &context(mode));
+            let rate = Rate::Simultaneous { minutes: 0.002, distance: 2.0, linear, turn: 3.0 };
+            let g = write(&[Op::Feed(t, rate)], &context(mode));
             g.lines()
                 .find(|l| l.contains(" L "))
                 .map(|l| l.split_whitespace().find(|w| w.starts_with('F')).unwrap().to_string())
         };
-        assert_eq!(feed(Mode::Machine, 0.5).as_deref(), Some("F250.0000"));
-        assert_eq!(feed(Mode::Machine, 0.0).as_deref(), Some("F1000.0000"));
-        assert_eq!(feed(Mode::Tcp, 0.5).as_deref(), Some("F1000.0000"));
+        assert_eq!(feed(Mode::Machine, 0.5).as_deref(), Some("F250.000"));
+        assert_eq!(feed(Mode::Machine, 0.0).as_deref(), Some("F1500.000"));
+        assert_eq!(feed(Mode::Tcp, 0.5).as_deref(), Some("F1000.000"));
+        // the word's range: 3 decimals, at most 99 999.999, at least 0.001
+        assert_eq!(
+            (feed_word(123_456.0), feed_word(0.0), feed_word(12.34567)),
+            ("99999.999".into(), "0.001".into(), "12.346".into())
+        );
     }
 }

@@ -1,14 +1,18 @@
 //! The Siemens Sinumerik 840D dialect: the archive header `%_N_<NAME>_MPF` and
-//! `;$PATH=/_N_MPF_DIR`, blocks numbered N10, N20, …, comments after `;`, `G17 G71 G90 G94` at
-//! the start, `G54`–`G57`, `G505`, `G506` (work offsets 5 and 6), `T… D1 M6`, `S… M3`, `G0 SUPA Z…`
-//! for the retract in machine coordinates, `G93` inverse time (F in 1/min) on blocks that turn
-//! a rotary axis, `M30` at the end. Tool-centre-point mode: `TRAORI` with `ORIWKS` (orientation
+//! `;$PATH=/_N_MPF_DIR`, blocks numbered N10, N20, …, comments after `;`, `G17 G71 G90 G94 G64`
+//! at the start (`G700` for inches: lengths and feeds), continuous-path mode with `CYCLE832`
+//! (the chordal tolerance, machining type 1 finishing, plus 10 with the orientation tolerance as
+//! its third parameter; deselected with type 0 at the end: the programming manual's "High speed
+//! settings - CYCLE832") instead of modal exact stop `G60`, `G54`–`G57`, `G505`, `G506` (work
+//! offsets 5 and 6), `T… D1 M6`, `S… M3`/`M4`, `G0 SUPA Z…` for the retract in machine
+//! coordinates, `G93` inverse time (F in 1/min) on blocks that turn a rotary axis, `M30` at the
+//! end. Tool-centre-point mode: `TRAORI` with `ORIWKS` (orientation
 //! in the workpiece frame) and `ORIVECT` (the axis on a great circle), the tool axis written as
 //! the vector `A3= B3= C3=`; `TRAFOOF` ends it. No Sinumerik ran these programs: they follow
 //! Siemens' programming manual (fundamentals and job planning), checked by a test of their
 //! syntax only.
 
-use super::{clean, number, speed, Context, Coolant, Mode, Op, Rate, Target};
+use super::{comment_lines, number, speed, Context, Coolant, Mode, Op, Rate, SpindleDirection, Target, Units, Words};
 use crate::tolerance::GCODE_VECTOR_DECIMALS;
 use std::fmt::Write;
 
@@ -21,8 +25,13 @@ fn vector(x: f64) -> String {
     }
 }
 
-fn axes(t: &Target, c: &Context) -> String {
+fn axes(t: &Target, c: &Context, words: Words) -> String {
     let xyz = format!("X{} Y{} Z{}", number(t.xyz.x, false), number(t.xyz.y, false), number(t.xyz.z, false));
+    match (words, c.mode) {
+        (Words::Xy, Mode::Machine) => return format!("X{} Y{}", number(t.xyz.x, false), number(t.xyz.y, false)),
+        (Words::Z, Mode::Machine) => return format!("Z{}", number(t.xyz.z, false)),
+        _ => {}
+    }
     match c.mode {
         Mode::Tcp => format!("{xyz} A3={} B3={} C3={}", vector(t.axis.x), vector(t.axis.y), vector(t.axis.z)),
         Mode::Machine => format!(
@@ -49,13 +58,34 @@ pub fn write(ops: &[Op], c: &Context) -> String {
     for op in ops {
         match op {
             Op::Comment(text) => {
-                let _ = writeln!(g, "; {}", clean(text));
+                for l in comment_lines(text) {
+                    let _ = writeln!(g, "; {l}");
+                }
             }
-            Op::Start => block(&mut g, "G17 G71 G90 G94 G40 G60"),
+            Op::Start => block(
+                &mut g,
+                match c.units {
+                    Units::Mm => "G17 G71 G90 G94 G40 G64",
+                    Units::Inch => "G17 G700 G90 G94 G40 G64",
+                },
+            ),
+            Op::Tolerance { chordal, angular } => {
+                let call = if *angular > 0.0 {
+                    format!("CYCLE832({},11,{})", number(*chordal, false), number(*angular, false))
+                } else {
+                    format!("CYCLE832({},1,1)", number(*chordal, false))
+                };
+                block(&mut g, &call);
+            }
+            Op::ToleranceOff => block(&mut g, "CYCLE832(0,0,1)"),
             Op::WorkOffset(k) => block(&mut g, ["G54", "G55", "G56", "G57", "G505", "G506"][(*k as usize - 1).min(5)]),
-            Op::ToolChange { tool, spindle } => {
+            Op::ToolChange { tool, spindle, direction } => {
                 block(&mut g, &format!("T{tool} D1 M6"));
-                block(&mut g, &format!("S{} M3", speed(*spindle)));
+                let m = match direction {
+                    SpindleDirection::Clockwise => "M3",
+                    SpindleDirection::CounterClockwise => "M4",
+                };
+                block(&mut g, &format!("S{} {m}", speed(*spindle)));
             }
             Op::RetractTop(z) => block(&mut g, &format!("G0 SUPA Z{}", number(*z, false))),
             Op::Rotate(r) => block(
@@ -64,22 +94,22 @@ pub fn write(ops: &[Op], c: &Context) -> String {
             ),
             Op::Tcp(true) => block(&mut g, "TRAORI ORIWKS ORIVECT"),
             Op::Tcp(false) => block(&mut g, "TRAFOOF"),
-            Op::Rapid(t) => {
+            Op::Rapid(t, words) => {
                 let mode = if inverse { "G94 " } else { "" };
                 inverse = false;
-                block(&mut g, &format!("{mode}G0 {}", axes(t, c)));
+                block(&mut g, &format!("{mode}G0 {}", axes(t, c, *words)));
             }
             Op::Feed(t, rate) => match rate {
                 Rate::PerMinute(f) => {
                     let mode = if inverse { "G94 " } else { "" };
                     inverse = false;
-                    block(&mut g, &format!("{mode}G1 {} F{}", axes(t, c), number(*f, false)));
+                    block(&mut g, &format!("{mode}G1 {} F{}", axes(t, c, Words::All), number(*f, false)));
                 }
-                Rate::Simultaneous { feed, distance, .. } => {
+                Rate::Simultaneous { minutes, .. } => {
                     let mode = if inverse { "" } else { "G93 " };
                     inverse = true;
-                    let f = Rate::inverse_time(*feed, *distance);
-                    block(&mut g, &format!("{mode}G1 {} F{}", axes(t, c), number(f, false)));
+                    let f = 1.0 / minutes.max(1e-9);
+                    block(&mut g, &format!("{mode}G1 {} F{}", axes(t, c, Words::All), number(f, false)));
                 }
             },
             Op::Coolant(k) => block(

@@ -157,7 +157,7 @@ export default {
   'error.json-segment': '[ax, ay, az, bx, by, bz] erwartet',
   'error.json-whole-segments': '{count} Zahlen ergeben keine ganze Zahl von Strecken (je 6)',
   'error.json-grid-count': 'Ein Gitter von {rows} × {cols} braucht {need} Strecken, es sind {found}',
-  'error.import-zero-axis': 'Lage {record} hat die Achse null (i = j = k = 0) und damit keine Richtung',
+  'error.import-zero-axis': 'Lage {record} hat die Werkzeugachse null (i = j = k = 0) und damit keine Richtung',
   'error.import-too-few-poses': '{found} Lage(n): mindestens 2 sind nötig (eine Werkzeugbahn hat zwei Lagen oder mehr)',
   'error.json-poses-missing': 'Ein Objekt braucht ein Feld „poses“',
   'error.json-poses-array': '„poses“ muss ein Array sein',
@@ -169,4 +169,29 @@ export default {
     'Zwischen den Lagen {pose} und {next} weicht die lineare Interpolation nach {rounds} Runden eingefügter Lagen noch {deviation} mm von der Bahn ab (Toleranz {tolerance} mm): Dort schlagen die Drehachsen um oder gehen durch den Pol',
   'error.retract-horizontal':
     'Lage {pose}: Die Werkzeugachse liegt zu flach, um entlang ihr auf die sichere Höhe zurückzuziehen',
+  'error.approach-blocked':
+    'Lage {pose}: Kein Punkt auf ihrer Werkzeugachse im Verfahrbereich, von dem das Werkzeug frei vom Rohteil herabfährt',
+  'error.unwind-blocked':
+    'Lage {pose}: Hier muss eine Drehachse zurückdrehen, und kein Punkt der Werkzeugachse im Verfahrbereich lässt sie frei vom Rohteil drehen',
+  'error.warn-duplicate-pose': 'Lage {pose} wiederholt Lage {previous}: Für sie wird kein Satz geschrieben',
+  'error.warn-flipped-axis':
+    'Lage {pose}: Die Werkzeugachse dreht sich um {angle}° gegenüber Lage {previous}; ist sie umgedreht und zeigt von der Spindel weg?',
+  'error.warn-slowed':
+    '{count} Sätze durch die Grenzen der Achsen verlangsamt, der langsamste mit {feed} mm/min an der Spitze statt {wanted} ({axis}, Lage {pose})',
+  'error.warn-acceleration': '{count} Sätze brauchen noch mehr Beschleunigung, als eine Achse hat, ab Lage {pose}',
+  'error.warn-pole-cone':
+    '{count} Lagen näher als {cone}° am Pol, ab Lage {pose}: ihre Werkzeugachse um bis zu {angle}° gedreht, damit die Drehachsen ruhig laufen',
+  'error.warn-tool-in-stock': 'Der {part} ragt bei Lage {pose} ins Rohteil ({count} Lagen des Schnitts)',
+  'error.csv-pose-numbers':
+    '6 Zahlen für eine Lage erwartet (Spitze x, y, z und Werkzeugachse i, j, k), gefunden: {found}',
+  'error.csv-pose-angles': 'In jeder der Spalten {columns} eine Zahl erwartet, gefunden: {found} Zahlen',
+  'error.pose-angles-machine':
+    'Die Lagen geben Drehwinkel ({columns}): Nennen Sie die Maschine dazu (eine Zeile „# machine: <Name>“ oder die gewählte Maschine)',
+  'error.pose-angles-letter': 'Die Maschine {machine} hat keine Drehachse {letter}, die die Spalte {letter} angibt',
+  'error.target-too-few': '{found} Sollpunkt(e): mindestens 2 sind nötig (eine Sollkurve)',
+  'error.target-three-numbers': '3 Zahlen für einen Sollpunkt erwartet (x, y, z), gefunden: {found}',
+  'error.target-json': 'Ein Array von Punkten [x, y, z] erwartet, oder ein Objekt mit "points"',
+  'error.target-json-point': 'Einen Sollpunkt [x, y, z] erwartet',
+  'error.part-holder': 'Halter',
+  'error.part-shank': 'Schaft',
 };

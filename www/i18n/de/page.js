@@ -59,7 +59,7 @@ export default {
     'Ihre Bearbeitung hat mehr als {max} Punkte: Link und Ausschnitte enthalten sie nicht (der Download als eine Datei schon).',
 
   'io.summary': 'Import und Export',
-  'io.paste': 'CSV (6 Zahlen je Erzeugende) oder JSON einfügen',
+  'io.paste': 'CSV (6 Zahlen je Erzeugende oder Werkzeuglage) oder JSON einfügen',
   'io.upload': 'Eine CSV- oder JSON-Datei hochladen',
   'io.show': 'Anzeigen',
   'io.staleExample': 'Die Beispieldaten bleiben zu sehen.',
@@ -72,7 +72,13 @@ export default {
   'io.kind': 'Der Text enthält',
   'io.kind.auto': 'erkennen',
   'io.kind.segments': 'Strecken (Erzeugende, Geraden)',
-  'io.kind.poses': 'Werkzeuglagen (Spitze x, y, z, Achse i, j, k)',
+  'io.kind.poses': 'Werkzeuglagen (Spitze x, y, z und Werkzeugachse i, j, k; oder x, y, z und Drehwinkel a, b, c)',
+  'io.kind.target': 'eine Sollkurve zu den Werkzeuglagen (x, y, z)',
+  'io.units': 'in',
+  'io.units.auto': 'den Einheiten der Datei (Millimeter, wenn sie nichts sagt)',
+  'io.units.mm': 'Millimetern',
+  'io.units.inch': 'Zoll',
+  'io.targetNeedsPoses': 'Eine Sollkurve wird an Ihren Werkzeuglagen gemessen: Importieren Sie diese zuerst.',
   'io.heldInTask':
     'Die Datendateien (OBJ, CSV, JSON, Invarianten) lassen sich speichern, sobald Sie die Aufgabe verlassen: Sie enthielten die Antwort.',
 

@@ -161,7 +161,7 @@ export default {
   'error.json-segment': '[ax, ay, az, bx, by, bz] expected',
   'error.json-whole-segments': '{count} numbers are not a whole number of segments (6 each)',
   'error.json-grid-count': 'a {rows} × {cols} grid needs {need} segments, there are {found}',
-  'error.import-zero-axis': 'pose {record} has a zero axis (i = j = k = 0), so it has no direction',
+  'error.import-zero-axis': 'pose {record} has a zero tool axis (i = j = k = 0), so it has no direction',
   'error.import-too-few-poses': '{found} pose(s): at least 2 are needed (a tool path has two poses or more)',
   'error.json-poses-missing': 'an object needs a "poses" array',
   'error.json-poses-array': 'poses must be an array',
@@ -172,4 +172,28 @@ export default {
     'between poses {pose} and {next} the linear interpolation still strays {deviation} mm from the path after {rounds} rounds of inserted poses (tolerance {tolerance} mm): the rotary axes turn over or pass the pole there',
   'error.retract-horizontal':
     'pose {pose}: the tool axis is too close to horizontal to retract along it to the safe height',
+  'error.approach-blocked':
+    'pose {pose}: no point on its tool axis within the machine’s travel from which the tool comes down clear of the stock',
+  'error.unwind-blocked':
+    'pose {pose}: a rotary axis must unwind here, and no point on the tool axis within the travel lets it turn clear of the stock',
+  'error.warn-duplicate-pose': 'pose {pose} repeats pose {previous}: no block written for it',
+  'error.warn-flipped-axis':
+    'pose {pose}: the tool axis turns {angle}° from pose {previous}; is it flipped, pointing away from the spindle?',
+  'error.warn-slowed':
+    '{count} blocks slowed by the axes’ limits, the slowest at {feed} mm/min at the tip instead of {wanted} ({axis}, pose {pose})',
+  'error.warn-acceleration': '{count} blocks still need more acceleration than an axis has, from pose {pose}',
+  'error.warn-pole-cone':
+    '{count} poses within {cone}° of the pole, from pose {pose}: their tool axis turned by up to {angle}° to keep the rotary axes smooth',
+  'error.warn-tool-in-stock': 'the {part} enters the stock at pose {pose} ({count} poses of the cut)',
+  'error.csv-pose-numbers': 'expected 6 numbers for a pose (tip x, y, z and tool axis i, j, k), found {found}',
+  'error.csv-pose-angles': 'expected a number in each of the columns {columns}, found {found} numbers',
+  'error.pose-angles-machine':
+    'the poses give rotary angles ({columns}): name the machine they are for (a line “# machine: <name>” or the machine chosen)',
+  'error.pose-angles-letter': 'the machine {machine} has no rotary axis {letter}, which the column {letter} gives',
+  'error.target-too-few': '{found} target point(s): at least 2 are needed (a target curve)',
+  'error.target-three-numbers': 'expected 3 numbers for a target point (x, y, z), found {found}',
+  'error.target-json': 'expected an array of points [x, y, z], or an object with "points"',
+  'error.target-json-point': 'expected a target point [x, y, z]',
+  'error.part-holder': 'holder',
+  'error.part-shank': 'shank',
 };

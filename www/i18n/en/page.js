@@ -58,7 +58,7 @@ export default {
     'Your edit has more than {max} points: the link and the snippets do not carry it (the one-file download does).',
 
   'io.summary': 'Import and export',
-  'io.paste': 'Paste CSV (6 numbers per ruling) or JSON',
+  'io.paste': 'Paste CSV (6 numbers per ruling or tool pose) or JSON',
   'io.upload': 'Upload a CSV or JSON file',
   'io.show': 'Show',
   'io.staleExample': 'The example data stays on screen.',
@@ -72,7 +72,13 @@ export default {
   'io.kind': 'The text holds',
   'io.kind.auto': 'recognise it',
   'io.kind.segments': 'segments (rulings, lines)',
-  'io.kind.poses': 'tool poses (tip x, y, z, axis i, j, k)',
+  'io.kind.poses': 'tool poses (tip x, y, z and tool axis i, j, k; or x, y, z and rotary angles a, b, c)',
+  'io.kind.target': 'a target curve for the tool poses (x, y, z)',
+  'io.units': 'in',
+  'io.units.auto': 'the file’s units (millimetres unless it says)',
+  'io.units.mm': 'millimetres',
+  'io.units.inch': 'inches',
+  'io.targetNeedsPoses': 'A target curve is measured against your tool poses: import them first.',
   'io.heldInTask':
     'The data files (OBJ, CSV, JSON, invariants) can be saved once you leave the exercise: they would hold the answer.',
 

@@ -1,0 +1,149 @@
+// The job a machinist posts from the milling scene: the program's units and the scale of the
+// poses, the tool (its end, radius, length, gauge length, holder), feed, spindle speed and
+// direction, coolant, the chordal and angular tolerances, the stock box, the clearance and the
+// pole cone — page controls kept in the link, handed to the core's G-code post as they are (the
+// program's header says them back). The example is drawn in the paper's units, 10 mm each; an
+// import opens at 1 unit per unit of its file (millimetres unless the file or the import says
+// inches).
+
+/** The program's units. */
+export const UNITS = /** @type {const} */ (['mm', 'inch']);
+
+/**
+ * The job's controls, added to the milling scene's parameters (lengths in the program's units).
+ * @type {import('../scene.js').Param[]}
+ */
+export const JOB_PARAMS = [
+  {
+    key: 'units',
+    label: 'milling.param.units',
+    type: 'select',
+    value: 'mm',
+    refit: false,
+    options: () => UNITS.map((u) => [u, `milling.units.${u}`]),
+  },
+  { key: 'scale', label: 'milling.param.scale', type: 'range', min: 0.01, max: 1000, step: 0.01, value: 10 },
+  {
+    key: 'end',
+    label: 'milling.param.end',
+    type: 'select',
+    value: 'ball',
+    refit: false,
+    options: () => [
+      ['ball', 'milling.end.ball'],
+      ['flat', 'milling.end.flat'],
+    ],
+  },
+  { key: 'radius', label: 'milling.param.radius', type: 'range', min: 0.01, max: 50, step: 0.001, value: 2.5 },
+  { key: 'length', label: 'milling.param.length', type: 'range', min: 0.1, max: 300, step: 0.01, value: 15 },
+  { key: 'gauge', label: 'milling.param.gauge', type: 'range', min: 0.1, max: 500, step: 0.01, value: 60 },
+  { key: 'holder', label: 'milling.param.holder', type: 'range', min: 0, max: 100, step: 0.1, value: 16 },
+  { key: 'holderLength', label: 'milling.param.holderLength', type: 'range', min: 0, max: 200, step: 0.1, value: 30 },
+  { key: 'feed', label: 'milling.param.feed', type: 'range', min: 1, max: 60000, step: 1, value: 1200 },
+  { key: 'spindle', label: 'milling.param.spindle', type: 'range', min: 10, max: 60000, step: 10, value: 10000 },
+  {
+    key: 'direction',
+    label: 'milling.param.direction',
+    type: 'select',
+    value: 'cw',
+    refit: false,
+    options: () => [
+      ['cw', 'milling.direction.cw'],
+      ['ccw', 'milling.direction.ccw'],
+    ],
+  },
+  {
+    key: 'coolant',
+    label: 'milling.param.coolant',
+    type: 'select',
+    value: 'flood',
+    refit: false,
+    options: () => [
+      ['flood', 'milling.coolant.flood'],
+      ['mist', 'milling.coolant.mist'],
+      ['off', 'milling.coolant.off'],
+    ],
+  },
+  { key: 'tolerance', label: 'milling.param.tolerance', type: 'range', min: 0.0001, max: 1, step: 0.0001, value: 0.01 },
+  { key: 'angular', label: 'milling.param.angular', type: 'range', min: 0, max: 10, step: 0.01, value: 0 },
+  { key: 'stock', label: 'milling.param.stock', type: 'text', value: '', maxLength: 200 },
+  { key: 'clearance', label: 'milling.param.clearance', type: 'range', min: 0.1, max: 100, step: 0.1, value: 5 },
+  { key: 'cone', label: 'milling.param.cone', type: 'range', min: 0, max: 10, step: 0.1, value: 1 },
+];
+
+/**
+ * The stock box a text gives: six numbers "xmin ymin zmin xmax ymax zmax" (spaces, commas or
+ * semicolons between them; a decimal comma where semicolons separate), or null for the default
+ * (the tips' box grown by 1 mm); undefined when the text is not six numbers.
+ * @param {string} text
+ * @returns {[[number, number, number], [number, number, number]] | null | undefined}
+ */
+export function stockOf(text) {
+  const t = String(text ?? '').trim();
+  if (!t) return null;
+  const fields = t.includes(';') ? t.split(/[;\s]+/).map((f) => f.replace(',', '.')) : t.split(/[,\s]+/);
+  const x = fields.filter(Boolean).map(Number);
+  if (x.length !== 6 || !x.every(Number.isFinite)) return undefined;
+  return [
+    [x[0], x[1], x[2]],
+    [x[3], x[4], x[5]],
+  ];
+}
+
+/**
+ * The tool of the job in the poses' units (what the view draws): its radius and length divided
+ * by the scale.
+ * @param {Record<string, unknown>} p
+ * @returns {{ radius: number, length: number, end: 'ball' | 'flat' }}
+ */
+export function drawnTool(p) {
+  const s = Number(p.scale);
+  return { radius: Number(p.radius) / s, length: Number(p.length) / s, end: p.end === 'flat' ? 'flat' : 'ball' };
+}
+
+/**
+ * The options of the core's post for the job of parameters `p` (the machine, dialect and mode
+ * besides): what the controls say, as they say it.
+ * @param {Record<string, unknown>} p
+ * @param {{ stride: number, lines?: number[] }} [input]  how the poses were numbered as given
+ * @returns {import('../../pkg/ruledlab.js').GcodeOptions}
+ */
+export function jobOptions(p, input) {
+  const holder = Number(p.holder) > 0 && Number(p.holderLength) > 0;
+  const stock = stockOf(String(p.stock));
+  return {
+    units: /** @type {'mm' | 'inch'} */ (p.units === 'inch' ? 'inch' : 'mm'),
+    scale: Number(p.scale),
+    feed: Number(p.feed),
+    spindle: Number(p.spindle),
+    direction: /** @type {'cw' | 'ccw'} */ (p.direction === 'ccw' ? 'ccw' : 'cw'),
+    coolant: /** @type {'flood' | 'mist' | 'off'} */ (p.coolant),
+    tolerance: Number(p.tolerance),
+    ...(Number(p.angular) > 0 ? { angularTolerance: Number(p.angular) } : {}),
+    gauge: Number(p.gauge),
+    ...(holder ? { holder: { radius: Number(p.holder), length: Number(p.holderLength) } } : {}),
+    ...(stock ? { stock } : {}),
+    clearance: Number(p.clearance),
+    poleCone: Number(p.cone),
+    ...(input ? { input } : {}),
+  };
+}
+
+/**
+ * The parameters an import of tool poses opens the milling scene with: 1 unit per unit of the
+ * file, in its units (millimetres unless it says inches), and the tool its file names.
+ * @param {import('../scene.js').ImportedData} data
+ * @returns {import('../scene.js').Params}
+ */
+export function importParams(data) {
+  /** @type {import('../scene.js').Params} */
+  const params = { scale: 1, units: data.units === 'inch' ? 'inch' : 'mm' };
+  if (data.tool)
+    Object.assign(params, {
+      end: data.tool.end,
+      radius: data.tool.radius,
+      length: data.tool.length,
+      gauge: Math.max(60, 4 * data.tool.length),
+    });
+  return params;
+}
