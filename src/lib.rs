@@ -101,7 +101,7 @@ pub use congruence::{
 pub use linear_complex::{fit_linear_complex, ComplexKind, LinearComplex};
 
 // Example 6: tool paths for 5-axis milling
-pub use io::target::{looks_like_target, read_target, Target};
+pub use io::target::{looks_like_target, read_target, TargetCurve};
 pub use io::toolpath::{
     looks_like_poses, read_tool_poses, read_tool_poses_for, tool_path_csv, tool_path_json, ImportedPoses,
 };

@@ -12,7 +12,7 @@ use glam::DVec3;
 
 /// A target curve read: its points and the units its file says, if it says them.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Target {
+pub struct TargetCurve {
     /// The points, in order.
     pub points: Vec<DVec3>,
     /// "mm" or "inch" where the file says so.
@@ -37,7 +37,7 @@ pub fn looks_like_target(text: &str) -> bool {
 }
 
 /// Reads a target curve (see the module documentation): at least two points.
-pub fn read_target(text: &str, json: bool, number: NumberParser<'_>) -> Result<Target> {
+pub fn read_target(text: &str, json: bool, number: NumberParser<'_>) -> Result<TargetCurve> {
     let source = if json { "json" } else { "csv" };
     let target = if json { from_json(text, number)? } else { from_csv(text, number)? };
     if target.points.len() < 2 {
@@ -46,7 +46,7 @@ pub fn read_target(text: &str, json: bool, number: NumberParser<'_>) -> Result<T
     Ok(target)
 }
 
-fn from_csv(text: &str, number: NumberParser<'_>) -> Result<Target> {
+fn from_csv(text: &str, number: NumberParser<'_>) -> Result<TargetCurve> {
     let t = read_table(text, number, "csv", MAX_RULINGS)?;
     let mut points = Vec::with_capacity(t.rows.len());
     for row in &t.rows {
@@ -61,10 +61,10 @@ fn from_csv(text: &str, number: NumberParser<'_>) -> Result<Target> {
         }
         points.push(DVec3::new(row.values[0], row.values[1], row.values[2]));
     }
-    Ok(Target { points, units: t.said("units") })
+    Ok(TargetCurve { points, units: t.said("units") })
 }
 
-fn from_json(text: &str, number: NumberParser<'_>) -> Result<Target> {
+fn from_json(text: &str, number: NumberParser<'_>) -> Result<TargetCurve> {
     let (root_at, root) = json::value_with(text, number)?;
     let fail = |a: usize, m: crate::error::Message| {
         let (l, c) = position(text, a);
@@ -101,7 +101,7 @@ fn from_json(text: &str, number: NumberParser<'_>) -> Result<Target> {
             _ => return Err(fail(*item_at, crate::msg!("target-json-point"))),
         }
     }
-    Ok(Target { points, units })
+    Ok(TargetCurve { points, units })
 }
 
 #[cfg(test)]

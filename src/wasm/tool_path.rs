@@ -499,8 +499,11 @@ impl ToolPath {
         let length = self.inner.tool.length;
         let n = self.inner.poses.len();
         let picked = (0..n).filter(|&i| i % every == 0 || i + 1 == n).map(|i| &self.inner.poses[i]);
-        let v: Vec<f32> =
-            picked.flat_map(|p| [p.tip, p.tip + length * p.axis]).flat_map(|q| q.to_array()).map(|x| x as f32).collect();
+        let v: Vec<f32> = picked
+            .flat_map(|p| [p.tip, p.tip + length * p.axis])
+            .flat_map(|q| q.to_array())
+            .map(|x| x as f32)
+            .collect();
         Ok(Float32Array::from(&v[..]))
     }
 

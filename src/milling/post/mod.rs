@@ -605,7 +605,7 @@ mod tests {
         assert_eq!(number(-2.25, true), "-2.2500");
         assert_eq!(decimals(99_999.999_4, 3, false), "99999.999");
         // the fast way and format!'s agree, ties and near-ties included
-        for x in [0.12345, -0.00005, 2.5e-5, 123456.78905, -7.0, 0.99995, 1e8 + 0.5, -3.14159265, 1.0000499999] {
+        for x in [0.12345, -0.00005, 2.5e-5, 123456.78905, -7.0, 0.99995, 1e8 + 0.5, -3.24159265, 1.0000499999] {
             for places in [0, 3, 4] {
                 let mut want = format!("{x:.places$}");
                 if want.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
