@@ -73,7 +73,13 @@ export class LiveValues {
       }
       const c = o.condition;
       const bound = c.below ?? c.above ?? c.near;
-      const target = typeof bound === 'number' ? statedNumber(bound, i18n.lang) : valueName(String(bound?.value), i18n);
+      // a drawn bound is a number once the attempt's numbers are drawn (task/draw.js)
+      const target =
+        typeof bound === 'number'
+          ? statedNumber(bound, i18n.lang)
+          : bound && 'value' in bound
+            ? valueName(bound.value, i18n)
+            : '';
       const goal = i18n.t(
         c.below !== undefined ? 'value.below' : c.above !== undefined ? 'value.above' : 'value.near',
         {
