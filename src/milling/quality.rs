@@ -6,8 +6,11 @@
 //! axis). Between two poses the controller moves the tip along the chord and turns the axis
 //! along the arc; each block is cut into sub-blocks short enough that the axis turns by at most
 //! [`ENVELOPE_STEP`] of the radius at the tool's far end, and over a sub-block the tool keeps the
-//! sub-block's first axis while its tip slides along the chord: a signed distance convex along
-//! the chord, whose least value golden-section search finds. The **deviation** of a target
+//! sub-block's first axis while its tip slides along the chord. A ball's centre segment then
+//! sweeps a parallelogram, and the distance from it less r is the sub-block's distance, exactly;
+//! a flat end's signed distance is convex along the chord and golden-section search finds its
+//! least value, the sub-blocks tried nearest first (the parallelogram its axis segment sweeps,
+//! less r, bounds it from below). The **deviation** of a target
 //! point q is its signed distance from the swept solid, the least over the sub-blocks: > 0 the
 //! tool leaves material there, < 0 it cuts into the target (a gouge). Where the axis is
 //! constant the answer is exact (the tests' circle).
@@ -96,10 +99,10 @@ fn golden(f: impl Fn(f64) -> f64) -> (f64, f64) {
     })
 }
 
-/// The deviation of `targets` from the surface `path`'s tool machines (module documentation).
-pub fn envelope_deviation(path: &ToolPath, targets: &[DVec3]) -> EnvelopeDeviation {
-    let (r, l, end) = (path.tool.radius, path.tool.length, path.tool.end);
-    // the sub-blocks: (first pose, chord's end tip, position along the path at its start, its length in positions)
+/// The sub-blocks of `path` (module documentation): (first pose, the chord's end tip, position
+/// along the path at its start, its length in positions).
+fn sub_blocks(path: &ToolPath) -> Vec<(Pose, DVec3, f64, f64)> {
+    let (r, l) = (path.tool.radius, path.tool.length);
     let mut subs: Vec<(Pose, DVec3, f64, f64)> = Vec::new();
     let n = path.poses.len();
     for k in 0..n.saturating_sub(1) {
@@ -116,19 +119,51 @@ pub fn envelope_deviation(path: &ToolPath, targets: &[DVec3]) -> EnvelopeDeviati
     if n == 1 {
         subs.push((path.poses[0], path.poses[0].tip, 0.0, 0.0));
     }
-    let reach = l.max(r) + r;
+    subs
+}
+
+/// The deviation of `targets` from the surface `path`'s tool machines (module documentation).
+pub fn envelope_deviation(path: &ToolPath, targets: &[DVec3]) -> EnvelopeDeviation {
+    let (r, l, end) = (path.tool.radius, path.tool.length, path.tool.end);
+    let subs = sub_blocks(path);
     let mut points = Vec::with_capacity(targets.len());
     let mut at = Vec::with_capacity(targets.len());
+    // a flat end's sub-blocks, nearest bound first (reused per target point)
+    let mut order: Vec<(f64, usize)> = Vec::with_capacity(subs.len());
     for &q in targets {
         let (mut best, mut where_) = (f64::INFINITY, 0.0);
-        for (p, to, start, span) in &subs {
-            // a lower bound: the distance to the tip's chord less the tool's reach
-            if distance_to_segment(q, p.tip, *to) - reach > best {
-                continue;
+        match end {
+            // over a sub-block the ball's centre segment sweeps a parallelogram: the distance
+            // from it less r is the sub-block's deviation, exactly
+            ToolEnd::Ball => {
+                for (p, to, start, span) in &subs {
+                    let (d, s) = nearest_in_parallelogram(q, p.tip + r * p.axis, *to - p.tip, (l.max(r) - r) * p.axis);
+                    if d - r < best {
+                        (best, where_) = (d - r, start + s * span);
+                    }
+                }
             }
-            let (s, d) = golden(|s| tool_distance(q, &Pose { tip: p.tip.lerp(*to, s), axis: p.axis }, r, l, end));
-            if d < best {
-                (best, where_) = (d, start + s * span);
+            // the cylinder lies within r of its axis segment: the distance from the parallelogram
+            // that segment sweeps, less r, bounds the sub-block's deviation from below
+            ToolEnd::Flat => {
+                order.clear();
+                order.extend(
+                    subs.iter().enumerate().map(|(i, (p, to, _, _))| {
+                        (nearest_in_parallelogram(q, p.tip, *to - p.tip, l * p.axis).0 - r, i)
+                    }),
+                );
+                order.sort_by(|a, b| a.0.total_cmp(&b.0));
+                for &(bound, i) in &order {
+                    if bound >= best {
+                        break;
+                    }
+                    let (p, to, start, span) = &subs[i];
+                    let (s, d) =
+                        golden(|s| tool_distance(q, &Pose { tip: p.tip.lerp(*to, s), axis: p.axis }, r, l, end));
+                    if d < best {
+                        (best, where_) = (d, start + s * span);
+                    }
+                }
             }
         }
         points.push(best);
@@ -203,6 +238,29 @@ pub fn deviation_per_pose(path: &ToolPath, targets: &[DVec3]) -> Vec<f64> {
             d - path.tool.radius
         })
         .collect()
+}
+
+/// The point of the parallelogram o + s·u + t·v (s, t ∈ [0, 1]) nearest `q`: its distance and s.
+/// Inside, the distance from the plane; else the nearest of the four edges (also where u and v
+/// are parallel or zero).
+fn nearest_in_parallelogram(q: DVec3, o: DVec3, u: DVec3, v: DVec3) -> (f64, f64) {
+    let w = q - o;
+    let (uu, uv, vv) = (u.dot(u), u.dot(v), v.dot(v));
+    let det = uu * vv - uv * uv;
+    if det > 1e-24 * uu * vv && det > 0.0 {
+        let (wu, wv) = (w.dot(u), w.dot(v));
+        let (s, t) = ((wu * vv - wv * uv) / det, (wv * uu - wu * uv) / det);
+        if (0.0..=1.0).contains(&s) && (0.0..=1.0).contains(&t) {
+            return (w.dot(u.cross(v)).abs() / det.sqrt(), s);
+        }
+    }
+    let along = |a: DVec3, d: DVec3| {
+        let t = if d.length_squared() > 0.0 { ((q - a).dot(d) / d.length_squared()).clamp(0.0, 1.0) } else { 0.0 };
+        ((q - (a + t * d)).length(), t)
+    };
+    let (bottom, top) = (along(o, u), along(o + v, u));
+    let (first, last) = ((along(o, v).0, 0.0), (along(o + u, v).0, 1.0));
+    [bottom, top, first, last].into_iter().fold((f64::INFINITY, 0.0), |m, e| if e.0 < m.0 { e } else { m })
 }
 
 fn distance_to_segment(q: DVec3, a: DVec3, b: DVec3) -> f64 {
@@ -284,6 +342,38 @@ mod tests {
         let d = envelope_deviation(&path, &[DVec3::new(0.0, 0.0, 2.0 * PI * c)]);
         let sag = big_r * (1.0 - (PI / (n as f64 / 2.0)).cos());
         assert!(d.points[0] <= big_r - r + 1e-12 && d.points[0] >= big_r - r - sag - 1e-12, "{}", d.points[0]);
+    }
+
+    /// The fast ways agree with trying every sub-block by golden-section search: a ball's
+    /// parallelogram to rounding, a flat end's bound never skips the nearest sub-block (equal).
+    #[test]
+    fn the_parallelogram_and_the_bound_agree_with_every_sub_block_searched() {
+        let mut seed = 7;
+        let mut u = || crate::tolerance::test::uniform(&mut seed) * 2.0 - 1.0;
+        let poses: Vec<(DVec3, DVec3)> = (0..7)
+            .map(|k| {
+                let tip = DVec3::new(k as f64, 0.3 * (k as f64).sin(), 0.1 * k as f64);
+                (tip, DVec3::new(0.4 * u(), 0.4 * u(), 1.0).normalize())
+            })
+            .collect();
+        for end in [ToolEnd::Ball, ToolEnd::Flat] {
+            let p = path(&poses, end);
+            let targets: Vec<DVec3> = (0..300).map(|k| DVec3::new(6.0 * k as f64 / 299.0, u(), u() + 0.5)).collect();
+            let fast = envelope_deviation(&p, &targets);
+            let subs = sub_blocks(&p);
+            for (q, got) in targets.iter().zip(&fast.points) {
+                let all = subs
+                    .iter()
+                    .map(|(s, to, _, _)| {
+                        golden(|x| tool_distance(*q, &Pose { tip: s.tip.lerp(*to, x), axis: s.axis }, 0.5, 2.0, end)).1
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                match end {
+                    ToolEnd::Ball => assert!((got - all).abs() < 1e-9, "{q}: {got} against {all}"),
+                    ToolEnd::Flat => assert_eq!(*got, all, "{q}"),
+                }
+            }
+        }
     }
 
     fn path(poses: &[(DVec3, DVec3)], end: ToolEnd) -> ToolPath {
