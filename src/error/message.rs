@@ -275,6 +275,7 @@ pub const MESSAGES: &[(&str, &str)] = &[
     ("csv-pose-numbers", "expected 6 numbers for a pose (tip x, y, z and tool axis i, j, k), found {found}"),
     ("csv-pose-angles", "expected a number in each of the columns {columns}, found {found} numbers"),
     ("pose-angles-machine", "the poses give rotary angles ({columns}): name the machine they are for (a line \"# machine: <name>\" or the machine chosen)"),
+    ("pose-header-unknown", "the header {columns} names no tool pose: name the tip's columns x, y, z (or tip_x, tip_y, tip_z) and the tool axis's i, j, k (or axis_i, axis_j, axis_k; from the tip towards the spindle), or x, y, z and rotary angles a, b, c for a machine; without a header each line is tip x, y, z and axis i, j, k"),
     ("pose-angles-letter", "the machine {machine} has no rotary axis {letter}, which the column {letter} gives"),
     // target curves (src/io/target.rs)
     ("target-too-few", "{found} target point(s): at least 2 are needed (a target curve)"),

@@ -180,7 +180,19 @@ fn read_csv(text: &str, number: NumberParser<'_>, machine: Option<&Machine>) -> 
     if table.rows.is_empty() {
         return Err(Error::parse("csv", None, None, crate::msg!("csv-no-data")));
     }
-    let cols = table.header.as_deref().and_then(columns).unwrap_or(Columns::Positional);
+    // a header must name a pose's columns: six numbers read by position under a header that
+    // means something else (a3,b3,c3,x,y,z; i,j,kk,x,y,z) would swap tip and axis silently
+    let cols = match table.header.as_deref() {
+        None => Columns::Positional,
+        Some(h) => columns(h).ok_or_else(|| {
+            Error::parse(
+                "csv",
+                Some(table.rows[0].line.saturating_sub(1).max(1)),
+                None,
+                crate::msg!("pose-header-unknown", columns = h.join(",")),
+            )
+        })?,
+    };
     let named = table.said("machine");
     let preset = named.as_deref().and_then(Machine::preset);
     let mut out = ImportedPoses {
@@ -420,6 +432,22 @@ mod tests {
         assert_eq!((p.lines, p.units.as_deref(), p.machine), (vec![3, 5], Some("inch"), None));
         assert!(looks_like_poses("x,y,z,i,j,k\n"));
         assert!(!looks_like_poses("x,y,z,u,v,w\n"));
+    }
+
+    /// A header that names no pose's columns is refused (naming it), never read by position.
+    #[test]
+    fn a_header_that_names_no_pose_is_refused() {
+        for text in ["a3,b3,c3,x,y,z\n0,0,1,5,6,7\n0,0,1,8,6,7\n", "i,j,kk,x,y,z\n0,0,1,5,6,7\n0,0,1,8,6,7\n"] {
+            let e = read_tool_poses(text, false, &rust_number).unwrap_err();
+            assert_eq!((e.details().reason, e.details().line), (Some("pose-header-unknown"), Some(1)), "{text}");
+            assert!(e.to_string().contains(text.lines().next().unwrap()), "{e}");
+        }
+        let e = read_tool_poses("# units: mm\nu,v,w,x,y,z\n0,0,1,5,6,7\n", false, &rust_number).unwrap_err();
+        assert_eq!(e.details().line, Some(2));
+        // the same numbers without a header, or under x,y,z,i,j,k in any order, are poses
+        assert!(read_tool_poses("0,0,1,5,6,7\n0,0,1,8,6,7\n", false, &rust_number).is_ok());
+        let p = read_tool_poses("i,j,k,x,y,z\n0,0,1,5,6,7\n0,0,1,8,6,7\n", false, &rust_number).unwrap();
+        assert_eq!((p.tips[0], p.axes[0]), (DVec3::new(5.0, 6.0, 7.0), DVec3::Z));
     }
 
     /// `x y z a b c` in degrees: the tool axis the named machine's rotary axes give (table-table-ac:

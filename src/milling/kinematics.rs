@@ -254,6 +254,17 @@ pub(crate) fn limit(x: Option<f64>, default: f64) -> f64 {
     x.unwrap_or(default)
 }
 
+/// An axis value beyond its limits `lo`..`hi` as an error states it: to the program's 4
+/// decimals, unless rounding would bring it within the limits (then as it is).
+pub fn beyond(v: f64, lo: f64, hi: f64) -> f64 {
+    let r = (v * 1e4).round() / 1e4;
+    if (lo..=hi).contains(&r) {
+        v
+    } else {
+        r
+    }
+}
+
 /// An error naming the pose and the linear axis when `xyz` leaves the machine's travel.
 pub fn check_travel(m: &Machine, pose: usize, xyz: DVec3) -> Result<()> {
     for (k, [lo, hi]) in m.travel.iter().enumerate() {
@@ -266,7 +277,7 @@ pub fn check_travel(m: &Machine, pose: usize, xyz: DVec3) -> Result<()> {
                     "pose-unreachable",
                     pose = pose,
                     axis = ["X", "Y", "Z"][k],
-                    value = v,
+                    value = beyond(v, *lo, *hi),
                     min = *lo,
                     max = *hi
                 ),
@@ -284,6 +295,14 @@ pub fn at_pole(m: &Machine, a: DVec3) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An error's axis value: the program's 4 decimals, more where they would hide the violation.
+    #[test]
+    fn a_value_beyond_its_limits_is_stated_to_four_decimals() {
+        assert_eq!(beyond(167.99958945184727, -120.0, 120.0), 167.9996);
+        assert_eq!(beyond(-120.00000004, -120.0, 120.0), -120.00000004);
+        assert_eq!(beyond(f64::INFINITY, 0.0, 1.0), f64::INFINITY);
+    }
     use crate::milling::machine::MACHINE_PRESETS;
     use crate::milling::solve::inverse_kinematics;
 

@@ -187,7 +187,11 @@ pub fn solve(m: &Machine, poses: &[Pose], tool_length: f64, o: &SolveOptions) ->
                     "pose-unreachable",
                     pose = i,
                     axis = r.name.letter(),
-                    value = value,
+                    value = crate::milling::kinematics::beyond(
+                        value,
+                        limit(r.min, f64::NEG_INFINITY),
+                        limit(r.max, f64::INFINITY)
+                    ),
                     min = limit(r.min, f64::NEG_INFINITY),
                     max = limit(r.max, f64::INFINITY)
                 ),

@@ -414,17 +414,21 @@ pub fn speed(x: f64) -> String {
 }
 
 /// A comment's text made safe for every dialect: printable ASCII without parentheses, braces
-/// or `;` (square brackets stay: an INI section's name is written as LinuxCNC's INI file has it).
+/// or `;` (square brackets stay: an INI section's name is written as LinuxCNC's INI file has it),
+/// a degree sign written `deg`.
 pub fn clean(text: &str) -> String {
-    text.chars()
-        .map(|c| match c {
-            '(' | '{' => '<',
-            ')' | '}' => '>',
-            ';' => ',',
-            c if c.is_ascii_graphic() || c == ' ' => c,
-            _ => ' ',
-        })
-        .collect()
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '(' | '{' => out.push('<'),
+            ')' | '}' => out.push('>'),
+            ';' => out.push(','),
+            '°' => out.push_str(" deg"),
+            c if c.is_ascii_graphic() || c == ' ' => out.push(c),
+            _ => out.push(' '),
+        }
+    }
+    out
 }
 
 /// The longest comment line a program writes (LinuxCNC's interpreter refuses lines of 256
@@ -616,6 +620,7 @@ mod tests {
         }
         assert_eq!(decimals(-0.0004, 3, true), "+0.000");
         assert_eq!(clean("a (b); [c] {d} é"), "a <b>, [c] <d>  ");
+        assert_eq!(clean("within 1° of the pole"), "within 1 deg of the pole");
         let long = "word ".repeat(60);
         let lines = comment_lines(&long);
         assert!(lines.len() == 3 && lines.iter().all(|l| l.len() <= COMMENT_WIDTH), "{lines:?}");

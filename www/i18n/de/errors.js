@@ -187,6 +187,8 @@ export default {
   'error.csv-pose-angles': 'In jeder der Spalten {columns} eine Zahl erwartet, gefunden: {found} Zahlen',
   'error.pose-angles-machine':
     'Die Lagen geben Drehwinkel ({columns}): Nennen Sie die Maschine dazu (eine Zeile „# machine: <Name>“ oder die gewählte Maschine)',
+  'error.pose-header-unknown':
+    'Die Kopfzeile {columns} nennt keine Werkzeuglage: Nennen Sie die Spalten der Spitze x, y, z (oder tip_x, tip_y, tip_z) und der Werkzeugachse i, j, k (oder axis_i, axis_j, axis_k; von der Spitze zur Spindel), oder x, y, z und Drehwinkel a, b, c für eine Maschine; ohne Kopfzeile ist jede Zeile Spitze x, y, z und Achse i, j, k',
   'error.pose-angles-letter': 'Die Maschine {machine} hat keine Drehachse {letter}, die die Spalte {letter} angibt',
   'error.target-too-few': '{found} Sollpunkt(e): mindestens 2 sind nötig (eine Sollkurve)',
   'error.target-three-numbers': '3 Zahlen für einen Sollpunkt erwartet (x, y, z), gefunden: {found}',

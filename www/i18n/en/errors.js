@@ -189,6 +189,8 @@ export default {
   'error.csv-pose-angles': 'expected a number in each of the columns {columns}, found {found} numbers',
   'error.pose-angles-machine':
     'the poses give rotary angles ({columns}): name the machine they are for (a line “# machine: <name>” or the machine chosen)',
+  'error.pose-header-unknown':
+    'the header {columns} names no tool pose: name the tip’s columns x, y, z (or tip_x, tip_y, tip_z) and the tool axis’s i, j, k (or axis_i, axis_j, axis_k; from the tip towards the spindle), or x, y, z and rotary angles a, b, c for a machine; without a header each line is tip x, y, z and axis i, j, k',
   'error.pose-angles-letter': 'the machine {machine} has no rotary axis {letter}, which the column {letter} gives',
   'error.target-too-few': '{found} target point(s): at least 2 are needed (a target curve)',
   'error.target-three-numbers': 'expected 3 numbers for a target point (x, y, z), found {found}',
