@@ -151,6 +151,8 @@ import { MAX_TEXT_PARAM } from './limits.js';
  *   the numeric readouts, which conditions name by their keys), e.g. "striction.minAbsDelta"
  * @property {string[]} [problems]  what the input's geometry leaves undefined, in words ("rulings
  *   4 and 5 are parallel: δ undefined there"), shown under the readout
+ * @property {Record<string, string>} [invalid]   a parameter's value the scene could not use, by its key:
+ *   what is wrong, said beside its field (the scene computed with what it uses meanwhile)
  *
  * A comparative sentence of the page, checked against the numbers shown beside it.
  * @typedef {object} Claim

@@ -2,6 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab from './load.mjs';
+import { niceTicks, tickText } from '../../www/figures/toolpath.js';
 
 const { ToolPath, importToolPoses, importTarget, detectImport } = ruledlab;
 
@@ -304,4 +305,27 @@ test('CAM tables, rotary angles for a machine, units, target curves and the devi
   assert.equal(d.worst, 0);
   assert.equal(d.perPose.length, 2);
   assert.deepEqual(Array.from(d.worstPoint), [0.5, 0, -1]);
+});
+
+test('the plot’s ticks: 1, 2 or 5 times a power of ten, covering the values, written with the language’s marks', () => {
+  const at = (/** @type {number} */ lo, /** @type {number} */ hi) => niceTicks(lo, hi);
+  assert.deepEqual(at(-0.158, 0.141), { values: [-0.2, -0.1, 0, 0.1, 0.2], step: 0.1 });
+  assert.deepEqual(at(-8.3, 170), { values: [-50, 0, 50, 100, 150, 200], step: 50 });
+  assert.deepEqual(at(0, 0).values.length > 1, true, 'an empty range still has two ticks');
+  for (const [lo, hi] of [
+    [-3e-5, 7e-4],
+    [1, 1.0001],
+    [-1234, -17],
+  ]) {
+    const { values, step } = at(lo, hi);
+    assert.ok(values[0] <= lo && values[values.length - 1] >= hi && values.length <= 7, `${lo}..${hi}`);
+    assert.ok(
+      [1, 2, 5].some((m) => Math.abs(step / 10 ** Math.floor(Math.log10(step)) - m) < 1e-9),
+      `step ${step}`,
+    );
+  }
+  assert.equal(tickText(-0.1, 0.1), '−0.1');
+  assert.equal(tickText(0.30000000000000004, 0.1, true), '0,3');
+  assert.equal(tickText(-1e-17, 0.05), '0.00');
+  assert.equal(tickText(150, 50), '150');
 });

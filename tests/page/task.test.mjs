@@ -53,9 +53,15 @@ test('doing an exercise: only what it lets change is enabled, Check says how eac
   await ready(page);
   assert.equal(await page.evaluate(() => window.ruledlab.stage.params.n), 6);
   assert.match(await page.locator('#task option:checked').innerText(), /^✓ When coupling pays/);
+  // a drawn exercise's title in the list says its numbers as …, never a {placeholder}
+  assert.ok((await page.locator('#task option').allInnerTexts()).every((o) => !o.includes('{')));
   // Start over: back to n = 3; Leave: the scene without the exercise
   await page.click('.rl-task-again');
   assert.equal(await page.evaluate(() => window.ruledlab.stage.params.n), 3);
+  // no verdict of the figure before: "Solved" would be stale
+  assert.equal(await page.locator('.rl-task-verdict').isHidden(), true);
+  await page.click('.rl-task-check');
+  assert.match(await verdict(page), /^Not solved yet/);
   await page.click('.rl-task-leave');
   assert.equal(await page.locator('.rl-task').isHidden(), true);
   assert.equal(await page.locator('.rl-controls [name="scheme"]').isDisabled(), false);

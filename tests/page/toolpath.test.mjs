@@ -191,11 +191,22 @@ test('a millimetre job of the user’s tool: the header and the moves say what t
       ['direction', 'ccw'],
       ['coolant', 'mist'],
       ['tolerance', 0.005],
-      ['stock', '-5 -10 0 75 10 20'],
       ['mode', 'tcp'],
       ['steps', 2],
     ]))
       await setControl(page, key, value);
+    // a stock box of five numbers is said beside its field (the tips' box used meanwhile); six are taken
+    await setControl(page, 'stock', '0 0 0 1 1');
+    const stock = page.locator('.rl-row[data-key="stock"] input');
+    await page.waitForFunction(
+      () => document.querySelector('.rl-row[data-key="stock"] input')?.getAttribute('aria-invalid') === 'true',
+    );
+    assert.match(await page.locator('.rl-row[data-key="stock"] .rl-fielderror').innerText(), /six numbers/);
+    await setControl(page, 'stock', '-5 -10 0 75 10 20');
+    await page.waitForFunction(
+      () => document.querySelector('.rl-row[data-key="stock"] input')?.getAttribute('aria-invalid') === 'false',
+    );
+    assert.equal(await stock.getAttribute('aria-invalid'), 'false');
     // every control in the link
     for (const part of [
       'radius=3',

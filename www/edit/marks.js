@@ -203,7 +203,7 @@ export class HandleMarks {
         const above = s.y - th - 18;
         const y = above >= 4 ? above : Math.min(s.y + 22, h - th - 4);
         this.tip.style.transform = `translate(${x}px, ${y}px)`;
-      }
+      } else this.tip.hidden = true; // its handle is gone (another scene, editing ended)
     }
   }
 

@@ -112,30 +112,56 @@ const LOOKS = [
  */
 
 /**
+ * Ticks at 1, 2 or 5 times a power of ten covering [lo, hi] with at most 6 intervals: their
+ * values (the first at or below lo, the last at or above hi) and the step.
+ * @returns {{ values: number[], step: number }}
+ */
+export function niceTicks(/** @type {number} */ lo, /** @type {number} */ hi) {
+  if (!(hi - lo > 1e-12 * Math.max(1, Math.abs(lo), Math.abs(hi)))) hi = lo + Math.max(1e-3, Math.abs(lo) * 1e-3);
+  const power = 10 ** Math.floor(Math.log10((hi - lo) / 6));
+  const step =
+    [1, 2, 5, 10].map((m) => m * power).find((m) => Math.ceil(hi / m) - Math.floor(lo / m) <= 6) ?? 10 * power;
+  const first = Math.floor(lo / step);
+  const last = Math.ceil(hi / step);
+  // (k · step, not a sum of steps: 0.1 + 0.2 would not be 0.3)
+  return { values: Array.from({ length: last - first + 1 }, (_, k) => (first + k) * step), step };
+}
+
+/** A tick's value with the decimals its step needs, a minus sign and the language's decimal mark. */
+export function tickText(/** @type {number} */ v, /** @type {number} */ step, comma = false) {
+  const places = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
+  const text = Math.abs(v) < step / 2 ? (0).toFixed(places) : v.toFixed(places);
+  return (comma ? text.replace('.', ',') : text).replace('-', '−');
+}
+
+/**
  * A plot of series over a common x (the position along the given path, pose k at x = k): linear
  * axes, a zero line, dashed levels. Drawn into `g` of the maker `el`, `width` × `height` at its
  * origin.
  * @param {ReturnType<typeof svgMaker>} el
  * @param {SVGElement} g
- * @param {{ series: Series[], levels?: Level[], xLabel: string, yLabel: string, width: number, height: number }} spec
+ * @param {{ series: Series[], levels?: Level[], xLabel: string, yLabel: string, width: number, height: number, comma?: boolean }} spec
+ *   comma: a decimal comma (German)
  */
-function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height }) {
-  const pad = { l: 62, r: 12, t: 12, b: 42 };
+function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height, comma = false }) {
+  // the key above the plotting area (a line of it per series, and one for the levels), so that
+  // no curve runs under it
+  const keyRows = series.length + (levels.length ? 1 : 0);
+  const pad = { l: 62, r: 12, t: 12 + 17 * keyRows, b: 42 };
   const xs = series.flatMap((s) => Array.from(s.x));
   const ys = series.flatMap((s) => Array.from(s.y)).filter(Number.isFinite);
   if (!xs.length || !ys.length) return;
   const levelValues = levels.map((l) => l.value).filter(Number.isFinite);
   const [x0, x1] = [Math.min(...xs), Math.max(...xs, Math.min(...xs) + 1)];
-  let [y0, y1] = [Math.min(0, ...ys, ...levelValues), Math.max(0, ...ys, ...levelValues)];
-  if (y1 - y0 < 1e-12) y1 = y0 + 1e-3;
+  const yTicks = niceTicks(Math.min(0, ...ys, ...levelValues), Math.max(0, ...ys, ...levelValues));
+  const [y0, y1] = [yTicks.values[0], yTicks.values[yTicks.values.length - 1]];
   const px = (/** @type {number} */ v) => pad.l + ((v - x0) / (x1 - x0)) * (width - pad.l - pad.r);
   const py = (/** @type {number} */ v) => height - pad.b - ((v - y0) / (y1 - y0)) * (height - pad.t - pad.b);
   const grid = el('g', { stroke: '#dedbd2', 'stroke-width': 1 });
   const labels = el('g', { fill: '#333', 'font-size': SMALLEST_TEXT });
-  for (let k = 0; k <= 4; k++) {
-    const v = y0 + ((y1 - y0) * k) / 4;
+  for (const v of yTicks.values) {
     grid.append(el('line', { x1: pad.l, x2: width - pad.r, y1: py(v), y2: py(v) }));
-    labels.append(el('text', { x: pad.l - 4, y: py(v) + 4, 'text-anchor': 'end' }, v.toPrecision(2)));
+    labels.append(el('text', { x: pad.l - 4, y: py(v) + 4, 'text-anchor': 'end' }, tickText(v, yTicks.step, comma)));
   }
   const xStep = Math.max(1, Math.ceil((x1 - x0) / 6));
   for (let v = Math.ceil(x0); v <= x1; v += xStep) {
@@ -157,18 +183,9 @@ function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height })
     line.append(el('title', {}, level.name));
     g.append(line);
   }
-  // the key on a pale ground, over the lines it names
+  // the key, above the plotting area
   const keys = el('g', {});
-  keys.append(
-    el('rect', {
-      x: pad.l + 3,
-      y: pad.t + 1,
-      width: Math.min(width - pad.l - pad.r - 6, 34 + 6.8 * Math.max(0, ...series.map((s) => s.name.length))),
-      height: 17 * series.length + 4,
-      fill: '#fbfaf7',
-      'fill-opacity': 0.88,
-    }),
-  );
+  const keyTop = 4;
   series.forEach((s, k) => {
     const look = LOOKS[k % LOOKS.length];
     const pts = Array.from(s.x, (x, i) => [x, s.y[i]]).filter(([, y]) => Number.isFinite(y));
@@ -185,7 +202,7 @@ function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height })
     if (s.dots || pts.length <= PLOT_MARKERS)
       for (const [a, b] of pts.slice(0, 4 * PLOT_MARKERS)) sg.append(marker(el, look.marker, px(a), py(b), 2.5));
     g.append(sg);
-    const ly = pad.t + 14 + 17 * k;
+    const ly = keyTop + 14 + 17 * k;
     const swatch = el('g', { stroke: look.color, fill: look.color });
     if (s.dots) swatch.append(marker(el, look.marker, pad.l + 17, ly - 4, 2.5));
     else
@@ -201,7 +218,23 @@ function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height })
       );
     keys.append(swatch, el('text', { x: pad.l + 31, y: ly, fill: '#222' }, s.name));
   });
-  if (series.length) g.append(keys);
+  if (levels.length) {
+    // the levels (the tolerance's lines) named once in the key
+    const ly = keyTop + 14 + 17 * series.length;
+    keys.append(
+      el('line', {
+        x1: pad.l + 8,
+        x2: pad.l + 26,
+        y1: ly - 4,
+        y2: ly - 4,
+        stroke: '#771100',
+        'stroke-width': 1.2,
+        'stroke-dasharray': '8 4',
+      }),
+      el('text', { x: pad.l + 31, y: ly, fill: '#222' }, levels[0].name),
+    );
+  }
+  if (keyRows) g.append(keys);
   g.append(el('text', { x: (width + pad.l) / 2, y: height - 6, 'text-anchor': 'middle', fill: '#222' }, xLabel));
   const mid = (height - pad.b) / 2;
   g.append(
@@ -212,10 +245,10 @@ function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height })
 /**
  * Plots stacked in one self-contained SVG (the first one's title names the figure).
  * @param {Document} doc
- * @param {{ title: string, plots: Array<{ series: Series[], levels?: Level[], xLabel: string, yLabel: string, title: string }> }} spec
+ * @param {{ title: string, comma?: boolean, plots: Array<{ series: Series[], levels?: Level[], xLabel: string, yLabel: string, title: string }> }} spec
  * @returns {SVGSVGElement}
  */
-export function stackedPlots(doc, { title, plots }) {
+export function stackedPlots(doc, { title, plots, comma = false }) {
   const [width, height] = [360, 260];
   const el = svgMaker(doc);
   const svg = svgFigure(el, { width, height: height * Math.max(1, plots.length), title });
@@ -223,7 +256,7 @@ export function stackedPlots(doc, { title, plots }) {
     const g = el('g', { transform: `translate(0 ${k * height})` });
     g.setAttribute('aria-label', plot.title);
     g.append(el('title', {}, plot.title));
-    drawPlot(el, g, { ...plot, width, height });
+    drawPlot(el, g, { ...plot, width, height, comma });
     svg.append(g);
   });
   return svg;
@@ -239,9 +272,10 @@ export function stackedPlots(doc, { title, plots }) {
  *   scale: number, stride: number,
  *   post: import('../../pkg/ruledlab.js').PostResult | null,
  *   t: (key: string, args?: Record<string, string | number>) => string,
+ *   lang?: string,
  * }} o  target: the envelope's deviation (in the poses' units); stride: refined poses per given pose
  */
-export function deviationFigure({ target, scale, stride, post, t }) {
+export function deviationFigure({ target, scale, stride, post, t, lang = 'en' }) {
   const units = post?.units ?? 'mm';
   /** @type {Series[]} */
   const deviation = [];
@@ -286,6 +320,7 @@ export function deviationFigure({ target, scale, stride, post, t }) {
   return () =>
     stackedPlots(document, {
       title,
+      comma: lang === 'de',
       plots: [
         { series: deviation, levels, xLabel: t('milling.plot.x'), yLabel: t('milling.plot.y', { units }), title },
         ...(axes.length

@@ -7,6 +7,7 @@ import { LANGUAGE_CODES } from '../i18n/translate.js';
 import { builtInTasks } from '../task/builtin.js';
 import { solvedTasks } from '../task/progress.js';
 import { say } from '../task/format.js';
+import { undrawn } from '../task/draw.js';
 
 /** The page's language names, in their own language. */
 const NATIVE = { en: 'English', de: 'Deutsch' };
@@ -137,7 +138,7 @@ export function pageChrome(doc, english) {
       taskPicker.replaceChildren(
         new Option(t('task.none'), ''),
         ...builtInTasks().map(
-          (task) => new Option(`${solved.has(task.id) ? '✓ ' : ''}${say(task.title, lang)}`, task.id),
+          (task) => new Option(`${solved.has(task.id) ? '✓ ' : ''}${say(undrawn(task.title, task), lang)}`, task.id),
         ),
       );
       taskPicker.value = shown.task && builtInTasks().some((x) => x.id === shown.task) ? shown.task : '';

@@ -79,17 +79,18 @@ function boxEdges([lo, hi], scale) {
  * The post's readouts: what it inserted, how far the interpolation strayed, the rotary axes'
  * speeds and steps, the blocks the axes slowed, the unwinds, the pole cone, the time.
  * @param {import('../../pkg/ruledlab.js').PostResult} post
+ * @param {(x: number) => string} format   numbers in the page's language
  */
-function postReadouts(post) {
+function postReadouts(post, format) {
   const u = post.units;
   const letters = post.letters.slice(3);
   const speeds = letters.map(
-    (l, k) => `${l} ${Math.round(largest(post.blockRotarySpeed.filter((_, i) => i % 2 === k)))}`,
+    (l, k) => `${l} ${format(Math.round(largest(post.blockRotarySpeed.filter((_, i) => i % 2 === k))))}`,
   );
   const steps = letters.map((l, k) => {
     let m = 0;
     for (let i = 5 + 3 + k; i < post.axes.length; i += 5) m = Math.max(m, Math.abs(post.axes[i] - post.axes[i - 5]));
-    return `${l} ${m.toFixed(3)}`;
+    return `${l} ${format(m)}`;
   });
   return [
     { label: 'milling.readout.inserted', value: post.inserted },
@@ -259,7 +260,7 @@ export const scene = defineScene({
             ? Object.entries(compare).map(([k, v]) => ({ label: `milling.readout.compare.${k}`, value: v }))
             : []),
           ...(post
-            ? postReadouts(post)
+            ? postReadouts(post, ctx.format)
             : [
                 {
                   label: 'milling.readout.post',
@@ -268,6 +269,7 @@ export const scene = defineScene({
               ]),
         ],
         problems: [...stockProblem, ...(post ? warningTexts(post.warnings, ctx) : [])],
+        invalid: stockProblem.length ? { stock: stockProblem[0] } : undefined,
         // the claims are about the example's own poses, not an edit of them
         claims: edited
           ? []
@@ -313,7 +315,7 @@ export const scene = defineScene({
               total: refined.length,
               deviation,
             }),
-        figure: deviationFigure({ target: surface, scale, stride: 2 ** steps, post, t }),
+        figure: deviationFigure({ target: surface, scale, stride: 2 ** steps, post, t, lang: ctx.lang }),
         // the handles: every given pose's tip (it carries the tool) and a point on its axis (it
         // turns the tool about the tip)
         input: {
@@ -399,7 +401,10 @@ function largeJob(path, p, ctx, numbering) {
       built.readouts = [
         { label: 'milling.readout.poses', value: done.poses },
         { label: 'milling.readout.angleStep', value: (done.maxAngleStep * 180) / Math.PI },
-        ...postReadouts(/** @type {import('../../pkg/ruledlab.js').PostResult} */ ({ ...done.post, text: '' })),
+        ...postReadouts(
+          /** @type {import('../../pkg/ruledlab.js').PostResult} */ ({ ...done.post, text: '' }),
+          ctx.format,
+        ),
       ];
       built.problems = warningTexts(done.post.warnings, ctx);
       built.downloads = [

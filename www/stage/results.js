@@ -84,7 +84,7 @@ export class Results {
         return b;
       }),
     );
-    for (const p of scene.params) stage.controls?.invalid(p.key, null);
+    for (const p of scene.params) stage.controls?.invalid(p.key, built.invalid?.[p.key] ?? null);
     els.root.dataset.scene = scene.id;
     els.root.dataset.paper = stage.paper?.id ?? '';
     if (final) els.root.dataset.ready = '1';

@@ -164,9 +164,12 @@ export class TaskPanel {
     solution.addEventListener('click', () => this.solve());
     const again = el('button', { type: 'button', className: 'rl-task-again', textContent: t('task.startOver') });
     again.addEventListener('click', () => {
-      // (the checks made so far stay: they are the attempt's record)
-      this.show(task, { checks: this.checks });
+      // the figure back to the start first, then the panel (the checks made so far stay: they are
+      // the attempt's record); the verdict was of the figure before, so it waits for the next check
       this.hooks.startOver();
+      this.show(task, { checks: this.checks });
+      for (const part of this.box.querySelectorAll('.rl-task-results, .rl-task-verdict'))
+        if (part instanceof HTMLElement) part.hidden = true;
     });
     buttons.append(check, hint, solution, again);
     if (this.hooks.leave && (this.hooks.mayLeave?.() ?? true)) {

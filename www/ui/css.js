@@ -143,7 +143,7 @@ export const CSS = `
   background: rgb(255 255 255 / .55); border: 2px solid #1f2430; box-shadow: 0 0 0 1.5px rgb(255 255 255 / .9); }
 .rl-handle.rl-hover { left: -10px; top: -10px; width: 20px; height: 20px; border: 3px solid #e69f00; background: rgb(255 255 255 / .35); }
 .rl-handle.rl-selected { left: -11px; top: -11px; width: 22px; height: 22px; border: 4px solid #d55e00; background: rgb(255 255 255 / .25); }
-.rl-handle-tip { position: absolute; left: 0; top: 0; padding: .15rem .45rem; border-radius: 5px; background: rgb(31 36 48 / .9);
+.rl-handle-tip { position: absolute; z-index: 2; left: 0; top: 0; padding: .15rem .45rem; border-radius: 5px; background: rgb(31 36 48 / .9);
   color: #fff; font-size: .8rem; font-variant-numeric: tabular-nums; white-space: nowrap; }
 .rl-handle-tip { max-width: min(24rem, calc(100% - 8px)); white-space: normal; }
 .rl-handle-tip > * { display: block; }

@@ -188,7 +188,7 @@ export default {
   'milling.plot.slowed': 'von den Achsen verlangsamte Sätze',
   'milling.plot.axesTitle': 'Die Drehachsen entlang der Bahn',
   'milling.plot.axesY': 'Winkel (°)',
-  'milling.worst': 'am meisten: {value} {units}',
+  'milling.worst': 'größte Abweichung: {value} {units}',
   'milling.note.stock':
     'Der Rohteilquader braucht sechs Zahlen (x y z kleinste, dann x y z größte): Solange gilt der Quader der Spitzen.',
   'milling.note.large':
