@@ -51,7 +51,7 @@ test('the milling scene plots the deviation and the axes along the path and writ
   const readout = await page.locator('.rl-readout').innerText();
   assert.match(readout, /poses the G-code post inserted/);
   assert.match(readout, /max \|deviation\| of the machined surface from the target \(mm\)/);
-  assert.match(readout, /largest speed of the rotary axes \(°\/min\)\s+A \d+, C \d+/);
+  assert.match(readout, /largest speed of the rotary axes \(°\/min\)\s+A [\d,]+, C [\d,]+/);
   // the worst point of the deviation is marked in the view
   assert.match(
     await page
@@ -277,8 +277,9 @@ test('a target curve: the machined surface measured against it, the worst point 
     );
     assert.match(readout, /target points beyond the chordal tolerance\s+1\b/);
     assert.match((await page.locator('.rl-label').allInnerTexts()).join(' '), /worst: [−-](5[.,]0+·10⁻²|0[.,]050?) mm/);
-    // the tolerance's lines in the plot: ±0.01
-    assert.equal(await page.locator('.rl-figure svg line[stroke-dasharray="8 4"]').count(), 2);
+    // the tolerance's lines in the plot: ±0.01, each titled, and their swatch in the key
+    assert.equal(await page.locator('.rl-figure svg line[stroke-dasharray="8 4"]:has(title)').count(), 2);
+    assert.equal(await page.locator('.rl-figure svg line[stroke-dasharray="8 4"]').count(), 3);
     // a target without tool poses is refused in words
     await showScene(page, '#scene=data', 'data');
     await importBox(page, 'target');

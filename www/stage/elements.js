@@ -122,13 +122,11 @@ export function stageElements(host, { page = false }) {
   form.setAttribute('role', 'group');
   const parts = {
     heading: take('.rl-panel > h2') ?? el('h2'),
-    // the chosen point's typed coordinates first, where a phone's finger finds them under the view
-    // (not below an exercise's panel)
-    coords: el('section', { className: 'rl-coords', hidden: true }),
     authorBox: el('section', { className: 'rl-author', hidden: true }),
     taskBox: el('section', { className: 'rl-task', hidden: true }),
     paperCard,
     edited: el('div', { className: 'rl-edited', hidden: true }),
+    coords: el('section', { className: 'rl-coords', hidden: true }),
     form,
     asData: button('rl-as-data', true),
     player: el('div', { className: 'rl-player', hidden: true }),
