@@ -175,7 +175,8 @@ export class Stage {
    * undone, the input replaced; `ended`: the step is over (the link is written, `change` fired).
    * @param {import('./scene.js').Input | null} input
    * @param {boolean} ended
-   * @param {string} [said]   what the step did, said before the readout once it has ended
+   * @param {string | (() => string)} [said]   what the step did, said before the readout once it
+   *   has ended (a function: asked once the scene is computed on the input)
    */
   setInput(input, ended, said = '') {
     if (!this.scene) return;
@@ -184,7 +185,7 @@ export class Stage {
     this.controls?.update(this.params);
     this.edit.show();
     this.report('input', ended);
-    if (ended) this.announce(said);
+    if (ended) this.announce(typeof said === 'function' ? said() : said);
   }
 
   /** Sets the note about the edit (an i18n key, or ''): the page's "kept in this tab". */

@@ -199,6 +199,14 @@ test('an exercise holds its points: fixed, on a line (exactly), and a constraint
   assert.match(goals[1], /^δ̄ at the middle ruling: (closer|further|no change)$/, 'a hidden value is not shown');
   await page.mouse.up();
   await drawn(page);
+  // the finger lifted: the tip stays with the conditions on the new figure, and they are said
+  const after = await page
+    .locator('.rl-handle-tip:visible .rl-tip-value.rl-fails, .rl-handle-tip:visible .rl-tip-value.rl-holds')
+    .count();
+  assert.equal(after, 2, 'the conditions beside the point after the drag');
+  await page.waitForFunction(() =>
+    /conditions? on the figure hold/.test(document.querySelector('.rl-stage [aria-live]')?.textContent ?? ''),
+  );
   const moved = (await inputNow(page)).rulings;
   assert.deepEqual(moved.slice(9, 11), start.slice(9, 11), 'on the line through it along z');
   assert.notEqual(moved[11], start[11]);

@@ -135,7 +135,8 @@ export class KeyInput {
     if (!run) return;
     clearTimeout(run.timer);
     editor.marks.quiet();
-    editor.marks.hideTip();
+    // in an exercise the tip stays with its conditions (as after a drag)
+    if (!editor.live.outcomes().length) editor.marks.hideTip();
     const { t } = editor.hooks.i18n();
     const said = [editor.describe(run.handle), run.snap && t('snap.onto', { name: run.snap.name })]
       .filter(Boolean)

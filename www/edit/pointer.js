@@ -264,7 +264,9 @@ export class PointerInput {
     this.fineAt = null;
     editor.unschedule();
     if (drag.moved && !sameInput(drag.working, drag.initial)) {
-      editor.marks.hideTip();
+      // in an exercise the tip stays, its conditions (reached or not) written anew for the figure
+      if (editor.live.outcomes().length) editor.marks.showTip(drag.handle);
+      else editor.marks.hideTip();
       editor.record(drag.before);
       editor.hooks.apply(drag.working, true, said);
     } else if (!drag.moved) {

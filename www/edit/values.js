@@ -36,6 +36,19 @@ export class LiveValues {
     return outcomes.map((o, i) => ({ o, hidden: task.hide.includes(/** @type {string} */ (o.condition.value)), i }));
   }
 
+  /**
+   * The exercise's conditions on the figure in words, said when a move ends ("every condition on
+   * the figure holds: Check to confirm"), or "" without an exercise or conditions on values.
+   */
+  summary() {
+    const outs = this.outcomes();
+    if (!outs.length) return '';
+    const met = outs.filter(({ o }) => o.holds).length;
+    return this.editor.hooks
+      .i18n()
+      .t(met === outs.length ? 'value.allHold' : 'value.someHold', { met, of: outs.length });
+  }
+
   /** A move begins: how far each condition misses now, for "closer" and "further". */
   begin() {
     this.baseline = new Map(this.outcomes().map(({ o, i }) => [i, o.miss]));

@@ -25,7 +25,9 @@ export class EditHost {
       i18n: () => stage.i18n,
       current: () => stage.input,
       base: () => stage.exercise.startInput(),
-      apply: (input, ended, said) => stage.setInput(input, ended, said),
+      // a move that ends says where it went, then (in an exercise) its conditions on the new figure
+      apply: (input, ended, said) =>
+        stage.setInput(input, ended, () => [said, ended ? this.editor.live.summary() : ''].filter(Boolean).join('; ')),
       say: (text) => stage.announcer.say(text),
       changed: () => this.show(),
       built: () => stage.session.built,

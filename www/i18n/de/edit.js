@@ -92,6 +92,8 @@ export default {
   'value.further': 'weiter weg',
   'value.same': 'unverändert',
   'value.holds': 'erreicht',
+  'value.allHold': 'jede Bedingung an der Figur ist erfüllt: Prüfen bestätigt es',
+  'value.someHold': '{met} von {of} Bedingungen an der Figur erfüllt',
 
   'handle.ruling': 'Erzeugende {i}, Ende {end}',
   'handle.end.a': 'a',

@@ -89,6 +89,8 @@ export default {
   'value.further': 'further',
   'value.same': 'no change',
   'value.holds': 'reached',
+  'value.allHold': 'every condition on the figure holds: Check to confirm',
+  'value.someHold': '{met} of {of} conditions on the figure hold',
 
   'handle.ruling': 'ruling {i}, end {end}',
   'handle.end.a': 'a',
