@@ -32,6 +32,23 @@ fn js_number(token: &str) -> f64 {
     js_sys::parse_float(token)
 }
 
+/// The text an import reads and whether it is JSON: `format` "json" or "csv", or, left out, JSON
+/// when the text starts with `[` or `{`. Throws (as `f`) for a text that is not a string or
+/// another format.
+fn text_and_format(f: &str, text: JsValue, format: &JsValue) -> Result<(String, bool), JsValue> {
+    let Some(text) = text.as_string() else {
+        return Err(fail(f, format!("text must be a string, got {}", describe(&text))));
+    };
+    let json = match format.as_string().as_deref() {
+        None if format.is_undefined() || format.is_null() => text.trim_start().starts_with(['[', '{']),
+        Some("json") => true,
+        Some("csv") => false,
+        Some(other) => return Err(fail(f, format!("format must be \"csv\" or \"json\", got \"{other}\""))),
+        None => return Err(fail(f, format!("format must be \"csv\" or \"json\", got {}", describe(format)))),
+    };
+    Ok((text, json))
+}
+
 /// Reads segments from CSV (six numbers per line, optional header, `#` comments) or JSON
 /// (`[[ax, ay, az, bx, by, bz], …]`, a flat array, or `{ segments, rows?, cols? }`).
 /// `format` defaults to JSON when the text starts with `[` or `{`, else CSV. Throws with the
@@ -42,24 +59,10 @@ pub fn import_segments(
     #[wasm_bindgen(unchecked_optional_param_type = "\"csv\" | \"json\"")] format: JsValue,
 ) -> Result<JsValue, JsValue> {
     const F: &str = "importSegments";
-    let Some(text) = text.as_string() else {
-        return Err(fail(F, format!("text must be a string, got {}", describe(&text))));
-    };
-    let format = if format.is_undefined() || format.is_null() {
-        if text.trim_start().starts_with(['[', '{']) {
-            "json".to_string()
-        } else {
-            "csv".to_string()
-        }
-    } else {
-        format.as_string().unwrap_or_default()
-    };
-    let imported = match format.as_str() {
-        "csv" => io::csv::read_csv_with(&text, &js_number),
-        "json" => io::json::read_json_with(&text, &js_number),
-        other => return Err(fail(F, format!("format must be \"csv\" or \"json\", got \"{other}\""))),
-    }
-    .map_err(|e| fail(F, e))?;
+    let (text, json) = text_and_format(F, text, &format)?;
+    let imported =
+        if json { io::json::read_json_with(&text, &js_number) } else { io::csv::read_csv_with(&text, &js_number) }
+            .map_err(|e| fail(F, e))?;
     let (rows, cols) = imported.grid.map_or((None, None), |(r, c)| (Some(r), Some(c)));
     to_js(F, &ImportedSegments { segments: Float64Array::from(&imported.coords[..]), rows, cols })
 }
@@ -144,15 +147,7 @@ pub fn import_tool_poses(
 ) -> Result<JsValue, JsValue> {
     const F: &str = "importToolPoses";
     let _measure = Measure::start(F);
-    let Some(text) = text.as_string() else {
-        return Err(fail(F, format!("text must be a string, got {}", describe(&text))));
-    };
-    let json = match format.as_string().as_deref() {
-        None if format.is_undefined() || format.is_null() => text.trim_start().starts_with(['[', '{']),
-        Some("json") => true,
-        Some("csv") => false,
-        _ => return Err(fail(F, format!("format must be \"csv\" or \"json\", got {}", describe(&format)))),
-    };
+    let (text, json) = text_and_format(F, text, &format)?;
     let o: PoseImportOptions = super::args::options(F, options)?;
     let machine = match o.machine.as_deref() {
         None => None,
@@ -192,15 +187,7 @@ pub fn import_target(
     #[wasm_bindgen(unchecked_optional_param_type = "\"csv\" | \"json\"")] format: JsValue,
 ) -> Result<JsValue, JsValue> {
     const F: &str = "importTarget";
-    let Some(text) = text.as_string() else {
-        return Err(fail(F, format!("text must be a string, got {}", describe(&text))));
-    };
-    let json = match format.as_string().as_deref() {
-        None if format.is_undefined() || format.is_null() => text.trim_start().starts_with(['[', '{']),
-        Some("json") => true,
-        Some("csv") => false,
-        _ => return Err(fail(F, format!("format must be \"csv\" or \"json\", got {}", describe(&format)))),
-    };
+    let (text, json) = text_and_format(F, text, &format)?;
     let t = io::target::read_target(&text, json, &js_number).map_err(|e| fail(F, e))?;
     to_js(F, &ImportedTarget { points: points_f64(&t.points), units: t.units })
 }

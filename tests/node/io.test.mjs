@@ -40,7 +40,12 @@ test('malformed files are rejected with the line and column', () => {
       String(message),
     );
   assert.throws(() => importSegments(42), /text must be a string, got a number/);
-  assert.throws(() => importSegments('0,0,0,1,0,0', 'xml'), /format must be "csv" or "json"/);
+  // the three readers refuse a text that is not one and a format they do not read alike, naming it
+  for (const read of [importSegments, ruledlab.importToolPoses, ruledlab.importTarget]) {
+    assert.throws(() => read(42), /text must be a string, got a number/, read.name);
+    assert.throws(() => read('0,0,0,1,0,0', 'xml'), /format must be "csv" or "json", got "xml"/, read.name);
+    assert.throws(() => read('0,0,0,1,0,0', 5), /format must be "csv" or "json", got a number/, read.name);
+  }
   assert.throws(
     () => AnalyticSurface.byName('cone').sample(3).export('xml'),
     /format must be "csv", "json", "obj", "invariants-csv" or "invariants-json", got "xml"/,
