@@ -46,24 +46,7 @@ fn rows_at_most(text: &str, number: NumberParser<'_>, max_rows: usize) -> Result
         if trimmed.is_empty() || trimmed.starts_with('#') {
             continue;
         }
-        // fields with their 1-based columns; a line separated by semicolons writes numbers with
-        // decimal commas (German spreadsheets: "1,5;0;0;…")
-        let decimal_comma = raw.contains(';');
-        let mut fields: Vec<(usize, std::borrow::Cow<str>)> = Vec::with_capacity(6);
-        let mut start = None;
-        for (i, c) in raw.char_indices().chain(std::iter::once((raw.len(), ' '))) {
-            let separator = matches!(c, ';' | '\t' | ' ') || (c == ',' && !decimal_comma);
-            match (separator, start) {
-                (false, None) => start = Some(i),
-                (true, Some(s)) => {
-                    let field = &raw[s..i];
-                    let field = if decimal_comma { field.replace(',', ".").into() } else { field.into() };
-                    fields.push((raw[..s].chars().count() + 1, field));
-                    start = None;
-                }
-                _ => {}
-            }
-        }
+        let fields = super::table::fields(raw);
         let kinds: Vec<Token> = fields.iter().map(|(_, f)| classify(f)).collect();
         if header_allowed && kinds.contains(&Token::Invalid) {
             header_allowed = false;

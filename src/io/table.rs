@@ -7,6 +7,7 @@
 use crate::error::{Error, Result};
 use crate::io::{classify, NumberParser, Token};
 use crate::tolerance::MAX_IMPORT_TEXT;
+use std::borrow::Cow;
 
 /// One record: its 1-based line, its numbers, and each one's 1-based column.
 #[derive(Debug, Clone, PartialEq)]
@@ -42,10 +43,12 @@ impl Table {
     }
 }
 
-/// The fields of a line with their 1-based columns.
-fn fields(raw: &str) -> Vec<(usize, String)> {
+/// The fields of a line with their 1-based columns: separated by commas, semicolons, tabs or
+/// spaces; a line separated by semicolons writes numbers with decimal commas (German
+/// spreadsheets: "1,5;0;0;…"), read as points. Borrowed where nothing is replaced.
+pub fn fields(raw: &str) -> Vec<(usize, Cow<'_, str>)> {
     let decimal_comma = raw.contains(';');
-    let mut out = Vec::new();
+    let mut out = Vec::with_capacity(6);
     let mut start = None;
     for (i, c) in raw.char_indices().chain(std::iter::once((raw.len(), ' '))) {
         let separator = matches!(c, ';' | '\t' | ' ') || (c == ',' && !decimal_comma);
@@ -53,7 +56,7 @@ fn fields(raw: &str) -> Vec<(usize, String)> {
             (false, None) => start = Some(i),
             (true, Some(s)) => {
                 let field = &raw[s..i];
-                let field = if decimal_comma { field.replace(',', ".") } else { field.to_string() };
+                let field = if decimal_comma { field.replace(',', ".").into() } else { field.into() };
                 out.push((raw[..s].chars().count() + 1, field));
                 start = None;
             }
@@ -98,7 +101,7 @@ pub fn read_table(text: &str, number: NumberParser<'_>, source: &str, max_rows: 
                         source,
                         Some(line),
                         Some(*col),
-                        crate::msg!("not-a-number", text = f.as_str()),
+                        crate::msg!("not-a-number", text = f.as_ref()),
                     ))
                 }
                 Token::NonFinite => {
@@ -106,7 +109,7 @@ pub fn read_table(text: &str, number: NumberParser<'_>, source: &str, max_rows: 
                         source,
                         Some(line),
                         Some(*col),
-                        crate::msg!("not-finite-number", text = f.as_str()),
+                        crate::msg!("not-finite-number", text = f.as_ref()),
                     ))
                 }
                 Token::Number => number(f),
@@ -116,7 +119,7 @@ pub fn read_table(text: &str, number: NumberParser<'_>, source: &str, max_rows: 
                     source,
                     Some(line),
                     Some(*col),
-                    crate::msg!("not-finite-number", text = f.as_str()),
+                    crate::msg!("not-finite-number", text = f.as_ref()),
                 ));
             }
             row.values.push(x);
