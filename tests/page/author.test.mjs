@@ -70,12 +70,21 @@ test('with the keyboard alone: a typed δ(u) and a parameter drawn per attempt; 
   assert.equal(await focused(page), 'author-a', 'the keyboard stays on the menu');
   await page.keyboard.press('Tab');
   assert.equal(await focused(page), 'author-draw-a-from');
-  await retype(page, '2');
-  await page.keyboard.press('Tab');
-  await retype(page, '3');
-  await page.keyboard.press('Tab');
-  await retype(page, '1');
-  await page.keyboard.press('Tab');
+  // from 2 to 3 in steps of 1, each field settled before the next is typed (the author's form is
+  // written anew after a change: on a loaded machine a frame or two later)
+  for (const [part, value] of [
+    ['from', '2'],
+    ['to', '3'],
+    ['step', '1'],
+  ]) {
+    await tabTo(page, `author-draw-a-${part}`);
+    await retype(page, value);
+    await page.keyboard.press('Tab');
+    await page.waitForFunction(
+      ([name, v]) => /** @type {HTMLInputElement | null} */ (document.querySelector(`[name="${name}"]`))?.value === v,
+      [`author-draw-a-${part}`, value],
+    );
+  }
   await page.waitForTimeout(100);
   assert.match(await page.locator('.rl-author-draw .rl-author-note').innerText(), /Write \{a\} in the title/);
   // an answer: δ(u), with the answer of the solution typed
