@@ -19,6 +19,8 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {() => Array<[string, string]>} [options]  select: [value, i18n key of its title]
  * @property {number} [maxLength]    text: longest value (default MAX_TEXT_PARAM of limits.js)
  * @property {boolean} [refit]       select: whether a change reframes the camera (default true)
+ * @property {(params: Params) => string} [unit]   range: i18n key of the unit its value is in
+ *   (shown after the value and said with it), which may follow other parameters
  * @property {(value: number | string | boolean, params: Params) => Params} [sets]
  *   other parameters a choice sets as well (a preset fills the formula fields)
  * @property {(params: Params) => string | null} [unless]

@@ -252,6 +252,26 @@ test('a millimetre job of the user’s tool: the header and the moves say what t
       last,
       new RegExp(`X${x}\\.0000 Y${(4 * Math.sin(x / 25)).toFixed(4)} Z${(10 + 3 * Math.cos(x / 20)).toFixed(4)} `),
     );
+    // the job's lengths and feed are in the program's units, said beside the values and with them
+    const unit = (/** @type {string} */ key) => page.locator(`.rl-row[data-key="${key}"] .rl-unit`).innerText();
+    const said = (/** @type {string} */ key) =>
+      page.locator(`.rl-row[data-key="${key}"] input[type=range]`).getAttribute('aria-valuetext');
+    assert.deepEqual(await Promise.all(['radius', 'gauge', 'tolerance', 'clearance', 'feed'].map(unit)), [
+      'mm',
+      'mm',
+      'mm',
+      'mm',
+      'mm/min',
+    ]);
+    assert.equal(await said('radius'), '3 mm');
+    assert.equal(await said('feed'), '1,500 mm/min');
+    assert.equal(await page.locator('.rl-row[data-key="spindle"] .rl-unit').isVisible(), false);
+    await setControl(page, 'units', 'inch');
+    await page.waitForFunction(
+      () => document.querySelector('.rl-row[data-key="feed"] .rl-unit')?.textContent === 'in/min',
+    );
+    assert.equal(await unit('radius'), 'in');
+    assert.equal(await said('radius'), '3 in');
     assert.deepEqual(problems, []);
   } finally {
     await page.close();

@@ -9,6 +9,11 @@
 /** The program's units. */
 export const UNITS = /** @type {const} */ (['mm', 'inch']);
 
+/** The unit of a length of the job: the program's. */
+const length = (/** @type {import('../scene.js').Params} */ p) => `milling.unit.${p.units === 'inch' ? 'inch' : 'mm'}`;
+/** The unit of a feed: the program's per minute. */
+const feed = (/** @type {import('../scene.js').Params} */ p) => `${length(p)}PerMin`;
+
 /**
  * The job's controls, added to the milling scene's parameters (lengths in the program's units).
  * @type {import('../scene.js').Param[]}
@@ -34,12 +39,48 @@ export const JOB_PARAMS = [
       ['flat', 'milling.end.flat'],
     ],
   },
-  { key: 'radius', label: 'milling.param.radius', type: 'range', min: 0.01, max: 50, step: 0.001, value: 2.5 },
-  { key: 'length', label: 'milling.param.length', type: 'range', min: 0.1, max: 300, step: 0.01, value: 15 },
-  { key: 'gauge', label: 'milling.param.gauge', type: 'range', min: 0.1, max: 500, step: 0.01, value: 60 },
-  { key: 'holder', label: 'milling.param.holder', type: 'range', min: 0, max: 100, step: 0.1, value: 16 },
-  { key: 'holderLength', label: 'milling.param.holderLength', type: 'range', min: 0, max: 200, step: 0.1, value: 30 },
-  { key: 'feed', label: 'milling.param.feed', type: 'range', min: 1, max: 60000, step: 1, value: 1200 },
+  {
+    key: 'radius',
+    label: 'milling.param.radius',
+    type: 'range',
+    min: 0.01,
+    max: 50,
+    step: 0.001,
+    value: 2.5,
+    unit: length,
+  },
+  {
+    key: 'length',
+    label: 'milling.param.length',
+    type: 'range',
+    min: 0.1,
+    max: 300,
+    step: 0.01,
+    value: 15,
+    unit: length,
+  },
+  {
+    key: 'gauge',
+    label: 'milling.param.gauge',
+    type: 'range',
+    min: 0.1,
+    max: 500,
+    step: 0.01,
+    value: 60,
+    unit: length,
+  },
+  { key: 'holder', label: 'milling.param.holder', type: 'range', min: 0, max: 100, step: 0.1, value: 16, unit: length },
+  {
+    key: 'holderLength',
+    label: 'milling.param.holderLength',
+    type: 'range',
+    min: 0,
+    max: 200,
+    step: 0.1,
+    value: 30,
+    unit: length,
+  },
+  { key: 'feed', label: 'milling.param.feed', type: 'range', min: 1, max: 60000, step: 1, value: 1200, unit: feed },
   { key: 'spindle', label: 'milling.param.spindle', type: 'range', min: 10, max: 60000, step: 10, value: 10000 },
   {
     key: 'direction',
@@ -64,10 +105,28 @@ export const JOB_PARAMS = [
       ['off', 'milling.coolant.off'],
     ],
   },
-  { key: 'tolerance', label: 'milling.param.tolerance', type: 'range', min: 0.0001, max: 1, step: 0.0001, value: 0.01 },
+  {
+    key: 'tolerance',
+    label: 'milling.param.tolerance',
+    type: 'range',
+    min: 0.0001,
+    max: 1,
+    step: 0.0001,
+    value: 0.01,
+    unit: length,
+  },
   { key: 'angular', label: 'milling.param.angular', type: 'range', min: 0, max: 10, step: 0.01, value: 0 },
   { key: 'stock', label: 'milling.param.stock', type: 'text', value: '', maxLength: 200 },
-  { key: 'clearance', label: 'milling.param.clearance', type: 'range', min: 0.1, max: 100, step: 0.1, value: 5 },
+  {
+    key: 'clearance',
+    label: 'milling.param.clearance',
+    type: 'range',
+    min: 0.1,
+    max: 100,
+    step: 0.1,
+    value: 5,
+    unit: length,
+  },
   { key: 'cone', label: 'milling.param.cone', type: 'range', min: 0, max: 10, step: 0.1, value: 1 },
 ];
 

@@ -33,7 +33,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
   form.replaceChildren();
   /** @type {Array<{row: HTMLElement, slider: HTMLInputElement, minus: HTMLButtonElement, plus: HTMLButtonElement, exact: HTMLInputElement, output: HTMLOutputElement, param: import('../scene.js').Param}>} the sliders */
   const fine = [];
-  /** @type {Map<string, {row: HTMLElement, input: HTMLInputElement | HTMLSelectElement, set: (v: any) => void, reason: HTMLElement, problem: HTMLElement, play?: HTMLButtonElement, also: Array<HTMLInputElement | HTMLButtonElement>, param: import('../scene.js').Param}>} */
+  /** @type {Map<string, {row: HTMLElement, input: HTMLInputElement | HTMLSelectElement, set: (v: any, unit: string) => void, reason: HTMLElement, problem: HTMLElement, play?: HTMLButtonElement, also: Array<HTMLInputElement | HTMLButtonElement>, param: import('../scene.js').Param}>} */
   const rows = new Map();
   for (const p of scene.params) {
     const id = `${prefix}-${p.key}`;
@@ -55,7 +55,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
     });
     /** @type {HTMLInputElement | HTMLSelectElement} */
     let input;
-    /** @type {(v: any) => void} */
+    /** @type {(v: any, unit: string) => void} the value shown, with its unit (a slider's) */
     let set;
     /** @type {HTMLButtonElement | undefined} */
     let play;
@@ -157,17 +157,19 @@ export function buildControls(form, scene, params, i18n, hooks) {
       };
       const [minus, plus] = [stepper(-1), stepper(1)];
       also.push(minus, plus, exact);
-      set = (v) => {
+      const unit = Object.assign(doc.createElement('span'), { className: 'rl-unit', hidden: !p.unit });
+      set = (v, u) => {
         slider.value = String(v);
         output.value = format(Number(v));
-        slider.setAttribute('aria-valuetext', format(Number(v)));
+        unit.textContent = u;
+        slider.setAttribute('aria-valuetext', u ? `${format(Number(v))} ${u}` : format(Number(v)));
         if (doc.activeElement !== exact) exact.value = p.exact ? fraction(Number(v)) : plain(Number(v), i18n.lang);
       };
       slider.addEventListener('input', () => hooks.onChange(p.key, Number(slider.value), false));
       slider.addEventListener('change', () => hooks.onChange(p.key, Number(slider.value), true));
       input = slider;
       const line = Object.assign(doc.createElement('span'), { className: 'rl-line' });
-      line.append(minus, slider, plus, output, exact);
+      line.append(minus, slider, plus, output, exact, unit);
       cell.append(line);
       fine.push({ row, slider, minus, plus, exact, output, param: p });
       if (p.play) {
@@ -190,7 +192,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
   /** Shows `params`: values, and which controls are disabled and why. */
   const update = (/** @type {import('../scene.js').Params} */ values) => {
     for (const [key, r] of rows) {
-      r.set(values[key]);
+      r.set(values[key], r.param.unit ? t(r.param.unit(values)) : '');
       const why = hooks.fixed?.(r.param) ?? irrelevance(r.param, values);
       r.input.disabled = !!why;
       for (const c of r.also) c.disabled = !!why;

@@ -83,6 +83,7 @@ export const CSS = `
 .rl-cell input[type=range] { flex: 1 1 5rem; min-width: 4rem; height: 24px; margin: 0; touch-action: pan-y; }
 .rl-cell input[type=checkbox] { width: 24px; height: 24px; margin: 0; }
 .rl-cell output { font-variant-numeric: tabular-nums; color: var(--muted); min-width: 3.2rem; text-align: right; font-size: .85rem; }
+.rl-unit { color: var(--muted); font-size: .85rem; white-space: nowrap; margin-left: -.15rem; }
 .rl-exact { width: 4.6rem; min-height: 28px; padding: 0 .3rem; border: 1px solid #c9c5ba; border-radius: 5px; }
 .rl-formula { flex: 1; min-width: 0; min-height: 30px; padding: .15rem .4rem; font-family: ui-monospace, "SFMono-Regular", Menlo, monospace !important;
   border: 1px solid #c9c5ba; border-radius: 5px; }
