@@ -157,6 +157,22 @@ for (const [which, base] of [
       const b = /** @type {{x: number, width: number, height: number}} */ (await control.boundingBox());
       assert.ok(b.x >= 0 && b.x + b.width <= 412 && b.height >= 44, `#${id}: ${JSON.stringify(b)}`);
     }
+    // each menu under its label, as wide as the open menu (a long scene title is not cut at half)
+    const widths = await page.evaluate(() => {
+      const menu = /** @type {HTMLElement} */ (document.getElementById('page-menu'));
+      const style = getComputedStyle(menu);
+      const inner = menu.clientWidth - Number.parseFloat(style.paddingLeft) - Number.parseFloat(style.paddingRight);
+      return ['scene', 'paper', 'task', 'lang'].map((id) => {
+        const select = /** @type {HTMLElement} */ (document.getElementById(id));
+        const label = /** @type {HTMLElement} */ (select.closest('label')?.querySelector('span'));
+        const below = select.getBoundingClientRect().top >= label.getBoundingClientRect().bottom - 1;
+        return { id, width: Math.round(select.getBoundingClientRect().width - inner), below };
+      });
+    });
+    assert.deepEqual(
+      widths,
+      ['scene', 'paper', 'task', 'lang'].map((id) => ({ id, width: 0, below: true })),
+    );
     // Escape closes it, and the keyboard is back on the button
     await page.keyboard.press('Escape');
     assert.equal(await page.locator('#scene').isVisible(), false);
