@@ -295,7 +295,7 @@ pub const MESSAGES: &[(&str, &str)] = &[
     // what the G-code post warns of (src/milling/post/plan.rs)
     ("warn-duplicate-pose", "pose {pose} repeats pose {previous}: no block written for it"),
     ("warn-flipped-axis", "pose {pose}: the tool axis turns {angle}° from pose {previous}; is it flipped, pointing away from the spindle?"),
-    ("warn-slowed", "{count} blocks slowed by the axes' limits, the slowest at {feed} mm/min at the tip instead of {wanted} ({axis}, pose {pose})"),
+    ("warn-slowed", "{count} blocks slowed by the axes' limits, the slowest at {feed} {units}/min at the tip instead of {wanted} ({axis}, pose {pose})"),
     ("warn-acceleration", "{count} blocks still need more acceleration than an axis has, from pose {pose}"),
     ("warn-pole-cone", "{count} poses within {cone}° of the pole, from pose {pose}: their tool axis turned by up to {angle}° to keep the rotary axes smooth"),
     ("warn-tool-in-stock", "the {part} enters the stock at pose {pose} ({count} poses of the cut)"),

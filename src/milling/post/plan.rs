@@ -3,7 +3,7 @@
 
 use super::header::{header, HeaderFacts};
 use super::{
-    validate, Context, Coolant, Dialect, Mode, Numbering, Op, Plan, PostOptions, Rate, Target, Warning, Words,
+    validate, Context, Coolant, Dialect, Mode, Numbering, Op, Plan, PostOptions, Rate, Target, Units, Warning, Words,
     HEIDENHAIN_MAX_FEED,
 };
 use crate::error::{Arg, Error, Message, Result};
@@ -166,7 +166,7 @@ fn plan_named(path: &ToolPath, o: &PostOptions, namer: &Namer, progress: &mut dy
     }
     let motion = time_blocks(m, &needs, job.feed);
     progress(0.85);
-    warnings.extend(motion_warnings(&motion, &needs, job.feed, &lin, namer, m));
+    warnings.extend(motion_warnings(&motion, &needs, (job.feed, o.units), &lin, namer, m));
     warnings.extend(cone_warnings(&lin, o.pole_cone, namer));
 
     // the safe start and end, and the unwinds, clear of the stock
@@ -357,10 +357,13 @@ fn input_warnings(poses: &[Pose], namer: &Namer) -> Vec<Warning> {
 }
 
 /// Blocks the machine's axes slowed, and accelerations still beyond the limits.
+/// The warnings of the blocks' timing: those slowed by the axes' limits (the slowest one's feed
+/// at the tip and the feed asked for, per minute in the program's units), those that would need
+/// more acceleration than an axis has. `feed` is in mm per minute.
 fn motion_warnings(
     motion: &[BlockMotion],
     needs: &[BlockNeed],
-    feed: f64,
+    (feed, units): (f64, Units),
     lin: &Linearised,
     namer: &Namer,
     m: &Machine,
@@ -372,7 +375,7 @@ fn motion_warnings(
         let f = |i: usize| needs[i].distance / motion[i].minutes.max(1e-300);
         f(a).total_cmp(&f(b))
     }) {
-        let tip = needs[worst].distance / motion[worst].minutes.max(1e-300);
+        let tip = needs[worst].distance / motion[worst].minutes.max(1e-300) / units.mm();
         let axis = motion[worst].limit.axis().map_or("F".to_string(), |k| axis_letter(m, k).to_string());
         out.push(namer.warning(
             pose(worst),
@@ -380,7 +383,8 @@ fn motion_warnings(
                 "warn-slowed",
                 count = slowed.len(),
                 feed = (tip * 10.0).round() / 10.0,
-                wanted = feed,
+                wanted = feed / units.mm(),
+                units = units.word(),
                 axis = axis,
                 pose = pose(worst)
             ),

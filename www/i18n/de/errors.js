@@ -177,7 +177,7 @@ export default {
   'error.warn-flipped-axis':
     'Lage {pose}: Die Werkzeugachse dreht sich um {angle}° gegenüber Lage {previous}; ist sie umgedreht und zeigt von der Spindel weg?',
   'error.warn-slowed':
-    '{count} Sätze durch die Grenzen der Achsen verlangsamt, der langsamste mit {feed} mm/min an der Spitze statt {wanted} ({axis}, Lage {pose})',
+    '{count} Sätze durch die Grenzen der Achsen verlangsamt, der langsamste mit {feed} {units}/min an der Spitze statt {wanted} ({axis}, Lage {pose})',
   'error.warn-acceleration': '{count} Sätze brauchen noch mehr Beschleunigung, als eine Achse hat, ab Lage {pose}',
   'error.warn-pole-cone':
     '{count} Lagen näher als {cone}° am Pol, ab Lage {pose}: ihre Werkzeugachse um bis zu {angle}° gedreht, damit die Drehachsen ruhig laufen',

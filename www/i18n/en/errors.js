@@ -180,7 +180,7 @@ export default {
   'error.warn-flipped-axis':
     'pose {pose}: the tool axis turns {angle}° from pose {previous}; is it flipped, pointing away from the spindle?',
   'error.warn-slowed':
-    '{count} blocks slowed by the axes’ limits, the slowest at {feed} mm/min at the tip instead of {wanted} ({axis}, pose {pose})',
+    '{count} blocks slowed by the axes’ limits, the slowest at {feed} {units}/min at the tip instead of {wanted} ({axis}, pose {pose})',
   'error.warn-acceleration': '{count} blocks still need more acceleration than an axis has, from pose {pose}',
   'error.warn-pole-cone':
     '{count} poses within {cone}° of the pole, from pose {pose}: their tool axis turned by up to {angle}° to keep the rotary axes smooth',

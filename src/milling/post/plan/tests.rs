@@ -265,6 +265,30 @@ fn an_inch_program_writes_inches() {
             _ => {}
         }
     }
+    // the block of the first test slowed by A's speed (664 mm/min instead of 1000), in an inch
+    // program: said in inches per minute
+    let slowed = |o: &PostOptions| {
+        let p = plan(&path(), o).unwrap();
+        let w = p.warnings.iter().find(|w| w.message.reason == "warn-slowed").expect("a slowed block").clone();
+        let arg = |name: &str| w.message.args.iter().find(|(n, _)| *n == name).map(|(_, v)| v.clone());
+        match (arg("feed"), arg("wanted"), arg("units")) {
+            (Some(Arg::Number(f)), Some(Arg::Number(w)), Some(Arg::Text(u))) => (f, w, u),
+            other => panic!("{other:?}"),
+        }
+    };
+    let (f_mm, w_mm, u_mm) = slowed(&PostOptions { scale: 2.0, mode: Mode::Tcp, ..PostOptions::default() });
+    let (f_in, w_in, u_in) = slowed(&PostOptions {
+        scale: 2.0 / 25.4,
+        feed: 1000.0 / 25.4,
+        units: Units::Inch,
+        mode: Mode::Tcp,
+        clearance: 5.0 / 25.4,
+        ..PostOptions::default()
+    });
+    assert_eq!((w_mm, u_mm.as_str(), u_in.as_str()), (1000.0, "mm", "inch"));
+    assert!((w_in - 1000.0 / 25.4).abs() < 1e-9 && (f_mm - 664.0).abs() < 1.0, "{w_in} {f_mm}");
+    // (each rounded to a tenth)
+    assert!((f_mm / 25.4 - f_in).abs() <= 0.05 + 0.05 / 25.4, "{f_mm} mm/min, {f_in} inch/min");
 }
 
 /// A holder that reaches into the stock along the cut is a warning naming the first pose; the
