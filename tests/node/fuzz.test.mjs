@@ -252,8 +252,10 @@ test('the book lists the error codes', () => {
     'degenerate',
     'not-converged',
     'singular',
+    'unreachable',
     'freed',
     'invalid-state',
+    'internal',
   ]);
 });
 
@@ -445,7 +447,8 @@ test('100 000 random and adversarial calls: only Errors, never a trap; the modul
       assert.ok(!(e instanceof WebAssembly.RuntimeError), `wasm trap in call ${CALLS.indexOf(call)}: ${e.stack}`);
       assert.ok(e instanceof Error, `not an Error: ${e}`);
       assert.ok(e.message.length > 10, `unclear message: ${e.message}`);
-      assert.ok(CODES.includes(e.code), `no documented code on: ${e.message} (${e.code})`);
+      // (`internal`, documented for the glue's unknown errors, is a bug wherever it is met)
+      assert.ok(CODES.includes(e.code) && e.code !== 'internal', `no documented code on: ${e.message} (${e.code})`);
       errors++;
       // the module keeps working after every error
       assert.equal(probe.invariants().angle[0], probeAngle);
