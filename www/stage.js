@@ -112,10 +112,8 @@ export class Stage {
     /** @internal */
     this.shortcuts = new Shortcuts(this);
 
-    this.viewer.onCameraChange = (ended) => {
-      this.report('camera', ended);
-      if (ended) this.announce();
-    };
+    // (turning the view changes no number: the readout is not said again)
+    this.viewer.onCameraChange = (ended) => this.report('camera', ended);
     wireToolbar(this);
     /** @internal */
     this.resize = new ResizeObserver(() => arrange(this));
@@ -305,6 +303,15 @@ export class Stage {
     if (ended) this.announce();
   }
 
+  /**
+   * @internal Where the keyboard goes when the button it was on is gone with what it did: the
+   * first control that takes it, else the view.
+   */
+  keepKeyboard() {
+    const first = /** @type {HTMLElement | null} */ (this.els.form.querySelector('[name]:not(:disabled)'));
+    (first && first.offsetParent !== null ? first : this.els.canvas).focus({ preventScroll: true });
+  }
+
   /** @internal Back to the settings of the paper's figure shown (its card's button). */
   backToPaper() {
     const { scene, paper } = this;
@@ -314,7 +321,7 @@ export class Stage {
     this.report('param', true);
     this.announce();
     // the button is gone with the change: keep the keyboard in the controls
-    /** @type {HTMLElement | null} */ (this.els.form.querySelector('[name]'))?.focus();
+    this.keepKeyboard();
   }
 
   /** @internal What a scene's create() is given besides its parameters, now. */

@@ -297,6 +297,8 @@ test('a reload of the link restores the edit bit for bit, the held parameters st
   // back to the built-in input: one step, undone by undo
   await page.getByRole('button', { name: 'Back to the built-in input' }).click();
   assert.equal(await inputText(page), '');
+  // (the button is gone with the note: the keyboard is on the figure, not lost to the page)
+  assert.equal(await page.evaluate(() => document.activeElement?.matches('.rl-view canvas')), true);
   assert.equal(await page.locator('.rl-controls [name="n"]').isDisabled(), false);
   await page.keyboard.press('Control+z');
   assert.equal(await inputText(page), link);

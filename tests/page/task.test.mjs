@@ -107,6 +107,26 @@ test('with the keyboard alone: Tab to the answer, type, Enter checks; a hint and
   await page.keyboard.press('Enter');
   assert.equal(await page.locator('input[name="task-count"]').inputValue(), '50');
   assert.match(await verdict(page), /^✓ Solved/);
+  // the buttons that rebuild the panel or take it away leave the keyboard where it can go on
+  const focused = () =>
+    page.evaluate(() => {
+      const a = document.activeElement;
+      return a === document.body || !a
+        ? 'body'
+        : `${a.tagName.toLowerCase()}.${a.className}[${a.getAttribute('name') ?? ''}]`;
+    });
+  assert.equal(await focused(), 'button.rl-task-solution[]', 'Show the solution keeps the keyboard');
+  await page.locator('.rl-task-again').focus();
+  await page.keyboard.press('Enter');
+  assert.equal(await focused(), 'button.rl-task-again[]', 'Start over keeps the keyboard');
+  // the skip link goes to the exercise's first field (the scene's controls are held)
+  await page.locator('a.skip').focus();
+  await page.keyboard.press('Enter');
+  assert.equal(await focused(), 'input.rl-task-number[task-count]');
+  await page.locator('.rl-task-leave').focus();
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => !document.querySelector('.rl-task-leave'));
+  assert.match(await focused(), /\[(n|steps|scheme|w)\]$/, 'leaving puts the keyboard on the first control');
   assert.deepEqual(problems, []);
   await page.close();
 });

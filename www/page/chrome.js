@@ -65,9 +65,15 @@ export function pageChrome(doc, english) {
   }
   const by = (/** @type {string} */ selector) => /** @type {HTMLElement} */ (doc.querySelector(selector));
   const skip = by('a.skip');
+  // to the first field or button that takes the keyboard: the exercise's (where its held controls
+  // are disabled), else the scene's controls, else anything in the panel
   skip.addEventListener('click', (e) => {
     e.preventDefault();
-    /** @type {HTMLElement | null} */ (doc.querySelector('.rl-controls [name]'))?.focus();
+    const takes = ':is(input, select, textarea, button, [tabindex="0"]):not(:disabled, [tabindex="-1"])';
+    const first = ['.rl-task:not([hidden])', '.rl-controls', '.rl-panel']
+      .flatMap((part) => [...doc.querySelectorAll(`${part} ${takes}`)])
+      .find((c) => c instanceof HTMLElement && c.offsetParent !== null);
+    /** @type {HTMLElement | undefined} */ (first)?.focus();
   });
   const header = by('header.page-header');
   const subtitle = by('.page-header .subtitle');

@@ -1,6 +1,7 @@
 // What a stage says to screen readers (its polite live region): a step in words when it happens
 // ("ruling 5 moved"), and the readout in a sentence once an interaction ends — at most once a
-// second, so that a slider dragged across its range is not read out value by value.
+// second, so that a slider dragged across its range is not read out value by value, and only
+// when it says something new (a step that changes no number is not read out again).
 
 /** Least time between two announcements of the readout (ms). */
 const ANNOUNCE_EVERY = 1000;
@@ -28,7 +29,9 @@ export class Announcer {
     const speak = () => {
       this.last = performance.now();
       const sentence = this.sentence();
-      if (sentence !== null || prefix) this.say([prefix, sentence ?? ''].filter(Boolean).join('. '));
+      const text = [prefix, sentence ?? ''].filter(Boolean).join('. ');
+      // (a live region given the text it holds would say it again)
+      if (text && text !== this.status.textContent) this.say(text);
     };
     const wait = this.last + ANNOUNCE_EVERY - performance.now();
     if (wait <= 0) speak();

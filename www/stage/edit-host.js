@@ -145,7 +145,11 @@ export class EditHost {
       const text = doc.createElement('p');
       appendRich(text, t('edit.from', { from: editor.from }));
       const back = Object.assign(doc.createElement('button'), { type: 'button', textContent: t('edit.restore') });
-      back.addEventListener('click', () => editor.restore());
+      back.addEventListener('click', () => {
+        editor.restore();
+        // (the note and its button are gone: the keyboard stays on the figure they were about)
+        stage.els.canvas.focus({ preventScroll: true });
+      });
       const parts = [text, back];
       if (stage.inputNote)
         parts.push(

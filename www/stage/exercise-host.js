@@ -23,7 +23,13 @@ export class ExerciseHost {
       },
       startOver: () => this.start(),
       showSolution: () => this.solve(),
-      leave: options.onLeaveTask ? () => options.onLeaveTask?.() : null,
+      leave: options.onLeaveTask
+        ? () => {
+            options.onLeaveTask?.();
+            // (the panel is gone, and the button with it)
+            stage.keepKeyboard();
+          }
+        : null,
       mayLeave: () => options.mayLeaveTask?.() ?? true,
       report: (type, report) => {
         if (type === 'solved') stage.announcer.say(stage.i18n.t('task.solved'));

@@ -161,7 +161,11 @@ export class TaskPanel {
       disabled: !this.checked,
       title: this.checked ? '' : t('task.solutionAfterCheck'),
     });
-    solution.addEventListener('click', () => this.solve());
+    solution.addEventListener('click', () => {
+      this.solve();
+      // (the panel is new: the keyboard stays on its button)
+      /** @type {HTMLElement | null} */ (this.box.querySelector('.rl-task-solution'))?.focus();
+    });
     const again = el('button', { type: 'button', className: 'rl-task-again', textContent: t('task.startOver') });
     again.addEventListener('click', () => {
       // the figure back to the start first, then the panel (the checks made so far stay: they are
@@ -170,6 +174,8 @@ export class TaskPanel {
       this.show(task, { checks: this.checks });
       for (const part of this.box.querySelectorAll('.rl-task-results, .rl-task-verdict'))
         if (part instanceof HTMLElement) part.hidden = true;
+      // (the panel is new: the keyboard stays on its Start over)
+      /** @type {HTMLElement | null} */ (this.box.querySelector('.rl-task-again'))?.focus();
     });
     buttons.append(check, hint, solution, again);
     if (this.hooks.leave && (this.hooks.mayLeave?.() ?? true)) {
