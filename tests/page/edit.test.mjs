@@ -405,7 +405,74 @@ test('a long press shows a handle’s coordinates; "?" lists the edit keys and g
   const keys = await page.locator('.rl-shortcuts').innerText();
   assert.match(keys, /Punkte bearbeiten \(E\)/);
   assert.match(keys, /einen Punkt halten/);
+  assert.match(keys, /M\s*wie sich der Punkt bewegt/);
   await page.keyboard.press('Escape');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+test('editing with the keyboard alone: M changes how the point moves; Tab goes on past the last point to the edit bar and the typed coordinates, and Shift+Tab back', async () => {
+  const { page, problems } = await session.open('index.html#scene=striction');
+  const focused = () =>
+    page.evaluate(() => {
+      const a = document.activeElement;
+      if (a?.closest('.rl-coords-fields')) return 'coords';
+      return a?.matches('.rl-view canvas') ? 'canvas' : `${a?.tagName.toLowerCase()}.${a?.className}`;
+    });
+  const said = () => page.evaluate(() => document.querySelector('.rl-stage [aria-live]')?.textContent ?? '');
+  const pressed = () =>
+    page.evaluate(() =>
+      [...document.querySelectorAll('.rl-modes button')]
+        .filter((b) => b.getAttribute('aria-pressed') === 'true')
+        .map((b) => b.className),
+    );
+  await page.focus('.rl-view canvas');
+  await page.keyboard.press('e');
+  assert.match(await said(), /Tab steps through them and on past the last/);
+  assert.deepEqual(await pressed(), ['rl-mode-view']);
+  for (const [mode, words] of [
+    ['rl-mode-line', /The point moves along its line\./],
+    ['rl-mode-vertical', /The point moves along z\./],
+    ['rl-mode-view', /The point moves facing you\./],
+  ]) {
+    await page.keyboard.press('m');
+    assert.deepEqual(await pressed(), [mode]);
+    assert.match(await said(), words);
+  }
+  // along its line by the keys: the point stays on its ruling
+  await page.keyboard.press('m');
+  const before = await page.evaluate(() => window.ruledlab.stage.editor.handles()[0].point);
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('Enter');
+  const after = await page.evaluate(() => window.ruledlab.stage.editor.handles()[0].point);
+  const other = await page.evaluate(() => window.ruledlab.stage.editor.handles()[1].point);
+  const along = after.map((x, c) => x - before[c]);
+  const line = other.map((x, c) => x - before[c]);
+  const cross = [
+    along[1] * line[2] - along[2] * line[1],
+    along[2] * line[0] - along[0] * line[2],
+    along[0] * line[1] - along[1] * line[0],
+  ];
+  assert.ok(Math.hypot(...along) > 1e-6, 'the point moved');
+  assert.ok(Math.hypot(...cross) <= 1e-9 * Math.hypot(...line) * Math.hypot(...along), `off its line: ${cross}`);
+  // Shift+Tab at the first point leaves backwards; back on the view, [ to the last point, and Tab
+  // goes on: through the edit bar's modes to the typed coordinates, editing still on
+  await page.keyboard.press('Shift+Tab');
+  assert.notEqual(await focused(), 'canvas');
+  await page.focus('.rl-view canvas');
+  await page.keyboard.press('[');
+  const last = await page.evaluate(() => window.ruledlab.stage.editor.handles().length - 1);
+  assert.equal(await page.evaluate(() => window.ruledlab.stage.editor.selected), last);
+  const reached = [];
+  for (let k = 0; k < 20 && !reached.includes('coords'); k++) {
+    await page.keyboard.press('Tab');
+    reached.push(await focused());
+  }
+  assert.ok(
+    reached.includes('button.rl-mode-line') && reached.includes('coords'),
+    `Tab from the last point reached ${reached}`,
+  );
+  assert.equal(await page.evaluate(() => window.ruledlab.stage.editor.editing), true);
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -215,6 +215,15 @@ export class Editor {
     this.hooks.changed();
   }
 
+  /** The next move mode the handles have (M): facing you, along its line (lines only), along z; said. */
+  nextMode() {
+    /** @type {import('./geometry.js').MoveMode[]} */
+    const modes = this.sets.some((set) => set.shape === 'pairs') ? ['view', 'line', 'vertical'] : ['view', 'vertical'];
+    this.setMode(modes[(modes.indexOf(this.mode) + 1) % modes.length]);
+    const { t } = this.hooks.i18n();
+    this.hooks.say(t('edit.modeSaid', { mode: t(`edit.mode.${this.mode}`) }));
+  }
+
   /** Snapping on or off (the toggle, S), said in words. */
   setSnapping(/** @type {boolean} */ on) {
     this.snapOn = on;

@@ -1,8 +1,10 @@
 // Editing from the keyboard (while the view has focus and editing is on): Tab / Shift+Tab and
-// ] / [ step through the handles, the arrow keys move the selected one across the view, PageUp /
-// PageDown away from and towards the viewer, Shift a tenth of the step (and no snapping); the mode
-// and the constraints hold as for a drag, and a step that ends near a target is snapped onto it
-// by the core. Enter ends a run of moves (one step of undo), Escape cancels it, a second Escape
+// ] / [ step through the handles (Tab past the last one, Shift+Tab before the first, go on to the
+// page: the edit bar and the typed coordinates after the view), the arrow keys move the selected
+// one across the view, PageUp / PageDown away from and towards the viewer, Shift a tenth of the
+// step (and no snapping); M changes the mode (facing you, along its line, along z); the mode and
+// the constraints hold as for a drag, and a step that ends near a target is snapped onto it by
+// the core. Enter ends a run of moves (one step of undo), Escape cancels it, a second Escape
 // stops editing; S turns snapping on and off.
 import { inputOf, copyInput, sameInput } from './input.js';
 import { toScreen, transformPoint } from './geometry.js';
@@ -57,7 +59,11 @@ export class KeyInput {
     };
     if (e.key === 'Tab' || e.key === ']' || e.key === '[') {
       const back = e.key === '[' || (e.key === 'Tab' && e.shiftKey);
+      // (Tab at either end leaves the view, as Tab does: no trap)
+      if (e.key === 'Tab' && editor.selected === (back ? 0 : count - 1)) return false;
       editor.select((editor.selected + (back ? count - 1 : 1)) % count);
+    } else if (e.key === 'm' || e.key === 'M') {
+      editor.nextMode();
     } else if (moves[e.key]) {
       this.nudge(moves[e.key], !e.shiftKey);
     } else if (e.key === 'Escape') {

@@ -26,6 +26,7 @@ const EDIT_KEYS = [
   ['Tab  Shift+Tab  [  ]', 'keys.editStep'],
   ['←  →  ↑  ↓', 'keys.editMove'],
   ['PageUp  PageDown', 'keys.editDepth'],
+  ['M', 'keys.editMode'],
   ['Shift', 'keys.editFine'],
   ['S', 'keys.snap'],
   ['Enter', 'keys.editEnd'],

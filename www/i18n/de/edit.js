@@ -17,6 +17,7 @@ export default {
   'edit.mode.lineTitle': 'längs der Erzeugenden oder Achse, zu der er gehört (oder beim Ziehen Umschalt halten)',
   'edit.mode.vertical': 'längs z',
   'edit.mode.verticalTitle': 'längs der z-Achse des Modells (oder beim Ziehen Alt halten)',
+  'edit.modeSaid': 'Der Punkt bewegt sich {mode}.',
   'edit.done': 'Fertig',
   'edit.asData': 'Als Daten bearbeiten',
   'edit.from': 'Bearbeitet aus: {from}.',
@@ -27,7 +28,7 @@ export default {
   'edit.tooLargeNoStorage':
     'Diese Bearbeitung hat mehr als {max} Punkte: Der Link enthält sie nicht, und diese Seite kann sie nicht aufbewahren (Neuladen verliert sie).',
   'edit.entered':
-    'Bearbeiten von {count:Punkt:Punkten}: Tab geht von Punkt zu Punkt, die Pfeiltasten verschieben einen, Escape beendet.',
+    'Bearbeiten von {count:Punkt:Punkten}: Tab geht von Punkt zu Punkt und nach dem letzten weiter, die Pfeiltasten verschieben einen, M ändert wie, Escape beendet.',
   'edit.left': 'Bearbeiten beendet.',
   'edit.undone': 'Rückgängig gemacht',
   'edit.redone': 'Wiederholt',

@@ -78,6 +78,7 @@ export default {
   'keys.editStep': 'nächster oder voriger Punkt',
   'keys.editMove': 'Punkt quer zum Blick verschieben',
   'keys.editDepth': 'von Ihnen weg oder zu Ihnen hin verschieben',
+  'keys.editMode': 'wie sich der Punkt bewegt: quer zum Blick, längs seiner Geraden, längs z',
   'keys.editFine': 'zusammen mit einer Verschiebung: ein Zehntel des Schritts (ohne Einrasten)',
   'keys.snap': 'Einrasten an oder aus',
   'keys.editEnd': 'Verschiebung abschließen (ein Schritt zum Rückgängigmachen)',

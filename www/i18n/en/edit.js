@@ -17,6 +17,7 @@ export default {
   'edit.mode.lineTitle': 'along the ruling or axis it belongs to (or hold Shift while dragging)',
   'edit.mode.vertical': 'along z',
   'edit.mode.verticalTitle': 'along the z-axis of the model (or hold Alt while dragging)',
+  'edit.modeSaid': 'The point moves {mode}.',
   'edit.done': 'Done',
   'edit.asData': 'Edit as data',
   'edit.from': 'Edited from: {from}.',
@@ -25,7 +26,8 @@ export default {
   'edit.tooLarge': 'This edit has more than {max} points: the link does not carry it; this tab keeps it.',
   'edit.tooLargeNoStorage':
     'This edit has more than {max} points: the link does not carry it, and this page cannot keep it (a reload loses it).',
-  'edit.entered': 'Editing {count:point:points}: Tab steps through them, the arrow keys move one, Escape stops.',
+  'edit.entered':
+    'Editing {count:point:points}: Tab steps through them and on past the last, the arrow keys move one, M changes how, Escape stops.',
   'edit.left': 'Editing stopped.',
   'edit.undone': 'Undone',
   'edit.redone': 'Redone',

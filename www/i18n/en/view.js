@@ -77,6 +77,7 @@ export default {
   'keys.editStep': 'next or previous point',
   'keys.editMove': 'move the point across the view',
   'keys.editDepth': 'move it away from you or towards you',
+  'keys.editMode': 'how the point moves: facing you, along its line, along z',
   'keys.editFine': 'held with a move: a tenth of the step (no snapping)',
   'keys.snap': 'snapping on or off',
   'keys.editEnd': 'end the move (one step of undo)',
