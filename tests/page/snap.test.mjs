@@ -210,6 +210,19 @@ test('an exercise holds its points: fixed, on a line (exactly), and a constraint
   const moved = (await inputNow(page)).rulings;
   assert.deepEqual(moved.slice(9, 11), start.slice(9, 11), 'on the line through it along z');
   assert.notEqual(moved[11], start[11]);
+  // the tip may always be dismissed: Escape on the view hides it; a new figure does not keep it
+  await page.focus('.rl-view canvas');
+  await page.keyboard.press('Escape');
+  assert.equal(await page.locator('.rl-handle-tip').isVisible(), false, 'Escape dismissed the tip');
+  const again = (await handlesOnPage(page))[3];
+  await page.mouse.move(again.x, again.y);
+  await page.mouse.down();
+  for (let s = 1; s <= 3; s++) await page.mouse.move(again.x + 9 * s, again.y - 7 * s);
+  await page.mouse.up();
+  await drawn(page);
+  assert.equal(await page.locator('.rl-handle-tip').isVisible(), true, 'the tip after a second drag');
+  await page.locator('.rl-task-leave').click();
+  assert.equal(await page.locator('.rl-handle-tip').isVisible(), false, 'the tip left with the exercise');
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -173,6 +173,8 @@ export class Editor {
   enter(editable, rules = null) {
     this.cancel();
     this.pick.close();
+    // (a tip kept with an exercise's conditions belongs to the figure before)
+    this.marks.hideTip();
     this.past = [];
     this.future = [];
     this.selected = 0;
@@ -197,6 +199,7 @@ export class Editor {
     if (on === this.editing) return;
     this.keys.end();
     this.pick.close();
+    if (!on) this.marks.hideTip();
     this.editing = on;
     this.view.classList.toggle('rl-editing', on);
     const { t } = this.hooks.i18n();

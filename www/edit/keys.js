@@ -4,8 +4,8 @@
 // one across the view, PageUp / PageDown away from and towards the viewer, Shift a tenth of the
 // step (and no snapping); M changes the mode (facing you, along its line, along z); the mode and
 // the constraints hold as for a drag, and a step that ends near a target is snapped onto it by
-// the core. Enter ends a run of moves (one step of undo), Escape cancels it, a second Escape
-// stops editing; S turns snapping on and off.
+// the core. Enter ends a run of moves (one step of undo), Escape cancels it, or hides the tip an
+// exercise keeps with its conditions, and then stops editing; S turns snapping on and off.
 import { inputOf, copyInput, sameInput } from './input.js';
 import { toScreen, transformPoint } from './geometry.js';
 import { constraintOf } from './snap.js';
@@ -37,6 +37,13 @@ export class KeyInput {
     if (e.ctrlKey || e.metaKey || e.altKey) return false;
     if ((e.key === 's' || e.key === 'S') && editor.active && editor.rules.exercise.snap) {
       editor.setSnapping(!editor.snapOn);
+      e.preventDefault();
+      return true;
+    }
+    // a tip an exercise keeps with its conditions may always be dismissed (after a move, before
+    // editing stops; a mouse user's too)
+    if (e.key === 'Escape' && !this.run && !editor.marks.tip.hidden) {
+      editor.marks.hideTip();
       e.preventDefault();
       return true;
     }
