@@ -130,6 +130,12 @@ test('every scene describes itself to screen readers; readouts are announced onc
     return document.getElementById(canvas.getAttribute('aria-describedby'))?.textContent ?? '';
   });
   assert.match(described, /Hyperboloid.*36 rulings.*striction polygon is/);
+  // the view takes keys: an application to a screen reader (which passes it the keys), named as a 3D view
+  const canvas = page.locator('.rl-view canvas');
+  assert.deepEqual(
+    [await canvas.getAttribute('role'), await canvas.getAttribute('aria-roledescription')],
+    ['application', '3D view'],
+  );
   // announcements: count changes of the live region while a parameter plays for 2 s
   await page.evaluate(() => {
     window.__announced = 0;

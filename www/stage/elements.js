@@ -71,7 +71,9 @@ export function stageElements(host, { page = false }) {
     /** @type {HTMLElement | null} */ (shell?.querySelector(`:scope > ${selector}`) ?? null);
 
   const canvas = el('canvas', { tabIndex: 0 });
-  canvas.setAttribute('role', 'img');
+  // an application: a screen reader in browse mode passes the view's keys (arrows, letters) to
+  // it once it has focus, which it would take for its own navigation over an image
+  canvas.setAttribute('role', 'application');
   const labels = el('div', { className: 'rl-labels' });
   labels.setAttribute('aria-hidden', 'true');
   const progressBar = el('progress', { max: 1, value: 0 });

@@ -30,6 +30,7 @@ export function labelToolbar(stage) {
   const { t } = stage.i18n;
   const { canvas, buttons, cancel, legend, form, readout, hint } = stage.els;
   canvas.setAttribute('aria-label', t('view.label'));
+  canvas.setAttribute('aria-roledescription', t('view.role'));
   labelButton(buttons.fit, '⌂', t('view.fit'));
   buttons.fit.title = t('view.fitTitle');
   labelButton(buttons.reset, '↺', t('view.reset'));
