@@ -183,6 +183,12 @@ for (const [which, base] of [
     await page.locator('.rl-stage[data-scene="curves"][data-ready="1"]').waitFor({ timeout: 60000 });
     assert.equal(await page.locator('#scene').isVisible(), false, 'the menu stayed open');
     assert.equal(await menu.getAttribute('aria-expanded'), 'false');
+    // Tab past its last entry closes it (the view it covers takes the keyboard)
+    await menu.tap();
+    await page.locator('#share').focus();
+    await page.keyboard.press('Tab');
+    assert.equal(await page.locator('#scene').isVisible(), false, 'the menu stayed open after Tab left it');
+    assert.equal(await menu.getAttribute('aria-expanded'), 'false');
     // Share, from the menu
     await menu.tap();
     await page.locator('#share').tap();

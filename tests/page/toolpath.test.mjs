@@ -272,6 +272,13 @@ test('a millimetre job of the user’s tool: the header and the moves say what t
     );
     assert.equal(await unit('radius'), 'in');
     assert.equal(await said('radius'), '3 in');
+    // a number field that cannot be read says so at once (an alert), with the range to type in
+    const field = page.locator('.rl-row[data-key="radius"] .rl-exact');
+    await field.fill('3x');
+    await field.dispatchEvent('change');
+    const error = page.locator('.rl-row[data-key="radius"] .rl-fielderror');
+    assert.equal(await error.getAttribute('role'), 'alert');
+    assert.equal(await error.innerText(), 'Not a number: type one from 0.01 to 50.');
     assert.deepEqual(problems, []);
   } finally {
     await page.close();

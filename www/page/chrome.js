@@ -45,7 +45,13 @@ export function chromeHtml({ t }) {
     picker(
       'lang',
       'app.language',
-      LANGUAGE_CODES.map((code) => option(code, NATIVE[/** @type {keyof typeof NATIVE} */ (code)] ?? code)).join(''),
+      // (each language's name in that language, and read in it: lang on its option)
+      LANGUAGE_CODES.map((code) =>
+        option(code, NATIVE[/** @type {keyof typeof NATIVE} */ (code)] ?? code).replace(
+          '<option ',
+          `<option lang="${htmlText(code)}" `,
+        ),
+      ).join(''),
     ),
     `<button type="button" id="share">${htmlText(t('app.share'))}</button>`,
     '</div>',
@@ -103,6 +109,11 @@ export function pageChrome(doc, english) {
   });
   doc.addEventListener('pointerdown', (e) => {
     if (header.classList.contains('open') && !header.contains(/** @type {Node} */ (e.target))) open(false);
+  });
+  // … and when the keyboard leaves it (Tab past Share would go on under it)
+  header.addEventListener('focusout', (e) => {
+    const to = e.relatedTarget;
+    if (header.classList.contains('open') && to instanceof Node && !header.contains(to)) open(false);
   });
   for (const control of [picker, paperPicker, taskPicker, langPicker, shareButton])
     control.addEventListener(control === shareButton ? 'click' : 'change', () => open(false));

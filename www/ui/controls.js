@@ -53,6 +53,8 @@ export function buildControls(form, scene, params, i18n, hooks) {
       id: `${id}-error`,
       hidden: true,
     });
+    // said when it appears, as a formula's error is
+    problem.setAttribute('role', 'alert');
     /** @type {HTMLInputElement | HTMLSelectElement} */
     let input;
     /** @type {(v: any, unit: string) => void} the value shown, with its unit (a slider's) */
@@ -132,9 +134,10 @@ export function buildControls(form, scene, params, i18n, hooks) {
                 : exact.title === t('control.exactHint')
                   ? 'control.notFraction'
                   : 'control.notNumber',
+              // (as one types them: 0.01, not 1.00·10⁻²)
               {
-                min: /** @type {number} */ (p.min),
-                max: /** @type {number} */ (p.max),
+                min: plain(/** @type {number} */ (p.min), i18n.lang),
+                max: plain(/** @type {number} */ (p.max), i18n.lang),
               },
             );
         if (inRange) exact.removeAttribute('aria-describedby');
@@ -224,7 +227,8 @@ export function buildControls(form, scene, params, i18n, hooks) {
     if (!r) return;
     r.input.setAttribute('aria-invalid', String(!!message));
     r.problem.hidden = !message;
-    r.problem.textContent = message ?? '';
+    // (the same message again is not said again)
+    if (r.problem.textContent !== (message ?? '')) r.problem.textContent = message ?? '';
     const described = [r.reason.hidden ? '' : r.reason.id, message ? r.problem.id : ''].filter(Boolean).join(' ');
     if (described) r.input.setAttribute('aria-describedby', described);
     else r.input.removeAttribute('aria-describedby');

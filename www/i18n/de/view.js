@@ -26,7 +26,7 @@ export default {
   'panel.readout': 'Messwerte',
 
   'control.outOfRange': 'Außerhalb des Bereichs des Schiebereglers, von {min} bis {max}.',
-  'control.notNumber': 'Keine Zahl: Geben Sie eine ein, etwa 0,5.',
+  'control.notNumber': 'Keine Zahl: Geben Sie eine von {min} bis {max} ein.',
   'control.notFraction': 'Keine Zahl: Geben Sie eine ein, etwa 0,5, oder einen Bruch wie 1/13.',
   'control.exactValue': 'Exakter Wert von {name}',
   'control.exactHint': 'Zahl oder Bruch eintippen, z. B. 1/13',

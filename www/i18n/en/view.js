@@ -26,7 +26,7 @@ export default {
   'panel.readout': 'Measured values',
 
   'control.outOfRange': 'Outside the slider’s range, from {min} to {max}.',
-  'control.notNumber': 'Not a number: type one such as 0.5.',
+  'control.notNumber': 'Not a number: type one from {min} to {max}.',
   'control.notFraction': 'Not a number: type one such as 0.5 or a fraction such as 1/13.',
   'control.exactValue': 'Exact value of {name}',
   'control.exactHint': 'Type a number or a fraction, e.g. 1/13',
