@@ -136,6 +136,14 @@ test('every scene describes itself to screen readers; readouts are announced onc
     [await canvas.getAttribute('role'), await canvas.getAttribute('aria-roledescription')],
     ['application', '3D view'],
   );
+  // each language's name is read in that language
+  assert.deepEqual(
+    await page.evaluate(() => [...document.querySelectorAll('#lang option')].map((o) => [o.value, o.lang])),
+    [
+      ['en', 'en'],
+      ['de', 'de'],
+    ],
+  );
   // announcements: count changes of the live region while a parameter plays for 2 s
   await page.evaluate(() => {
     window.__announced = 0;
