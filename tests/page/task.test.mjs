@@ -75,6 +75,12 @@ test('doing an exercise: only what it lets change is enabled, Check says how eac
 test('with the keyboard alone: Tab to the answer, type, Enter checks; a hint and the solution by Enter', async () => {
   // (seed 0 draws 3 steps: 50 points)
   const { page, problems } = await session.open('index.html#task=chaikin-count&seed=0');
+  // a screen reader hears what the exercise asks, then what the figure shows
+  const prompt = await page.locator('.rl-task-prompt').innerText();
+  const title = await page.locator('.rl-task-title').innerText();
+  const heard = await page.evaluate(() => document.querySelector('.rl-stage [aria-live]')?.textContent ?? '');
+  assert.ok(heard.startsWith(`${title.replace(/[.!?]$/, '')}`), `${heard} | ${title}`);
+  assert.ok(heard.includes(prompt), `${heard} | ${prompt}`);
   // from the top of the page, Tab until the answer field has the keyboard
   await page.evaluate(() => /** @type {HTMLElement} */ (document.activeElement)?.blur());
   let at = '';

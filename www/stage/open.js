@@ -165,6 +165,8 @@ export async function openTask(stage, task, scene, state) {
     { camera: state.camera ?? null, input, notes: state.notes ?? [], task: true },
   );
   stage.exercise.panel.show(task, state.attempt ?? null);
+  // the exercise is at the top of the panel: a panel scrolled down for the figure before shows it
+  stage.els.panel.scrollTop = 0;
   stage.edit.show();
 }
 

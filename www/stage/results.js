@@ -67,12 +67,17 @@ export class Results {
     appendRich(els.description, description);
     els.caption.replaceChildren();
     appendRich(els.caption, description);
-    // a new figure (another scene, or an exercise) is described once, politely
+    // a new figure (another scene, or an exercise: first what it asks) is described once, politely
     const figure = `${scene.id} ${stage.task?.id ?? ''} ${i18n.lang}`;
     if (final && figure !== this.said) {
       this.said = figure;
       stage.announcer.cancel();
-      stage.announcer.say(this.spoken());
+      const task = stage.task;
+      const sentence = (/** @type {string} */ s) => (/[.!?…:]$/.test(s) ? s : `${s}.`);
+      const asked = task
+        ? `${t('task.heading')} ${sentence(say(task.title, i18n.lang))} ${say(task.prompt, i18n.lang)}`
+        : '';
+      stage.announcer.say([asked, this.spoken()].filter(Boolean).join(' '));
     }
     els.figure.replaceChildren(...(built.figure ? [built.figure()] : []));
     els.downloads.replaceChildren(
