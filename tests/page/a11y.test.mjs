@@ -136,6 +136,15 @@ test('every scene describes itself to screen readers; readouts are announced onc
     [await canvas.getAttribute('role'), await canvas.getAttribute('aria-roledescription')],
     ['application', '3D view'],
   );
+  // Full screen is a toggle that says whether it is on
+  const full = page.locator('.rl-fullscreen');
+  assert.equal(await full.getAttribute('aria-pressed'), 'false');
+  await full.click();
+  await page.waitForFunction(() => document.querySelector('.rl-fullscreen')?.getAttribute('aria-pressed') === 'true');
+  await full.click();
+  await page.waitForFunction(() => document.querySelector('.rl-fullscreen')?.getAttribute('aria-pressed') === 'false');
+  // the units menu of the import is named by more than its label "in"
+  assert.equal(await page.locator('#import-units').getAttribute('aria-label'), 'in: the units of the tool poses');
   // each language's name is read in that language
   assert.deepEqual(
     await page.evaluate(() => [...document.querySelectorAll('#lang option')].map((o) => [o.value, o.lang])),

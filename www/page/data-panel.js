@@ -271,6 +271,8 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
       kindLabel.textContent = t('io.kind');
       for (const option of kind.options) option.textContent = t(`io.kind.${option.value}`);
       unitsLabel.textContent = t('io.units');
+      // ("in" alone names nothing: the name begins with the word shown and says what it is)
+      units.setAttribute('aria-label', t('io.unitsName'));
       for (const option of units.options) option.textContent = t(`io.units.${option.value}`);
       exportsLabel.textContent = t('io.exports');
       widthLabel.textContent = t('io.printWidth');

@@ -16,6 +16,12 @@ export function wireToolbar(stage) {
   });
   buttons.reset.addEventListener('click', () => stage.reset());
   buttons.fullscreen.addEventListener('click', () => stage.toggleFullscreen());
+  // a toggle: pressed while the stage is full screen (the event comes to the element that is)
+  buttons.fullscreen.setAttribute('aria-pressed', 'false');
+  stage.els.root.addEventListener('fullscreenchange', () => {
+    const on = stage.els.root.ownerDocument.fullscreenElement === stage.els.root;
+    buttons.fullscreen.setAttribute('aria-pressed', String(on));
+  });
   buttons.help.addEventListener('click', () => stage.shortcuts.open());
   cancel.addEventListener('click', () => {
     stage.session.dispose();

@@ -61,7 +61,7 @@ export default {
   'io.summary': 'Import und Export',
   'io.paste': 'CSV (6 Zahlen je Erzeugende oder Werkzeuglage) oder JSON einfügen',
   'io.upload': 'Eine CSV- oder JSON-Datei hochladen',
-  'io.show': 'Anzeigen',
+  'io.show': 'In der Ansicht zeigen',
   'io.staleExample': 'Die Beispieldaten bleiben zu sehen.',
   'io.stale': 'Gezeigt werden weiterhin die zuvor importierten Daten: Dieser Text konnte nicht gelesen werden.',
   'io.notStored':
@@ -75,6 +75,7 @@ export default {
   'io.kind.poses': 'Werkzeuglagen (Spitze x, y, z und Werkzeugachse i, j, k; oder x, y, z und Drehwinkel a, b, c)',
   'io.kind.target': 'eine Sollkurve zu den Werkzeuglagen (x, y, z)',
   'io.units': 'in',
+  'io.unitsName': 'in: die Einheiten der Werkzeuglagen',
   'io.units.auto': 'den Einheiten der Datei (Millimeter, wenn sie nichts sagt)',
   'io.units.mm': 'Millimetern',
   'io.units.inch': 'Zoll',

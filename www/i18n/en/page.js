@@ -60,7 +60,7 @@ export default {
   'io.summary': 'Import and export',
   'io.paste': 'Paste CSV (6 numbers per ruling or tool pose) or JSON',
   'io.upload': 'Upload a CSV or JSON file',
-  'io.show': 'Show',
+  'io.show': 'Show in the view',
   'io.staleExample': 'The example data stays on screen.',
   'io.stale': 'The data shown is the previous import: this text could not be read.',
   'io.notStored':
@@ -75,6 +75,7 @@ export default {
   'io.kind.poses': 'tool poses (tip x, y, z and tool axis i, j, k; or x, y, z and rotary angles a, b, c)',
   'io.kind.target': 'a target curve for the tool poses (x, y, z)',
   'io.units': 'in',
+  'io.unitsName': 'in: the units of the tool poses',
   'io.units.auto': 'the file’s units (millimetres unless it says)',
   'io.units.mm': 'millimetres',
   'io.units.inch': 'inches',
