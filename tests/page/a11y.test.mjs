@@ -311,3 +311,29 @@ test('reflow at 320 px: no scene scrolls sideways (a plot or a formula wider tha
     await narrow.close();
   }
 });
+
+test('stepping through the closed scene menu with the arrow keys opens only the scene the steps end on; Enter opens it at once', async () => {
+  const { page, problems } = await session.open('#scene=striction');
+  const ids = await page.evaluate(() => [...document.querySelectorAll('#scene option')].map((o) => o.value));
+  const start = ids.indexOf('striction');
+  await page.evaluate(() => {
+    window.__scenes = [];
+    const root = /** @type {HTMLElement} */ (document.querySelector('.rl-stage'));
+    new MutationObserver(() => window.__scenes.push(root.dataset.scene)).observe(root, {
+      attributes: true,
+      attributeFilter: ['data-scene'],
+    });
+  });
+  await page.locator('#scene').focus();
+  for (let k = 0; k < 3; k++) await page.keyboard.press('ArrowDown');
+  assert.equal(await page.evaluate(() => window.ruledlab.stage.scene.id), 'striction', 'a step opened a scene');
+  await page.locator(`.rl-stage[data-scene="${ids[start + 3]}"][data-ready="1"]`).waitFor({ timeout: 30000 });
+  assert.deepEqual(await page.evaluate(() => window.__scenes), [ids[start + 3]], 'the scenes on the way were opened');
+  // one step and Enter: at once
+  await page.keyboard.press('ArrowDown');
+  await page.keyboard.press('Enter');
+  assert.equal(await page.evaluate(() => window.ruledlab.stage.scene.id), ids[start + 4]);
+  assert.equal(await page.evaluate(() => document.activeElement?.id), 'scene', 'the keyboard stayed on the menu');
+  assert.deepEqual(problems, []);
+  await page.close();
+});

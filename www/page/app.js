@@ -16,7 +16,7 @@ import { showFailure } from '../ui/failure.js';
 import { appendRich } from '../ui/richtext.js';
 import { storedCourse, storedHash } from './onefile.js';
 import { stored } from '../platform.js';
-import { pageChrome, plainTitle } from './chrome.js';
+import { onChosen, pageChrome, plainTitle } from './chrome.js';
 import { dataPanel, parseStored, STORED } from './data-panel.js';
 import { importParams } from '../figures/job.js';
 import { pageAddress } from './address.js';
@@ -246,17 +246,18 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     if (write) address.save('replace');
   };
 
-  chrome.picker.addEventListener('change', () => {
+  // (a choice stepped to with the arrow keys waits for the last step: chrome.js)
+  onChosen(chrome.picker, () => {
     const scene = SCENES.find((s) => s.id === chrome.picker.value);
-    if (scene) go(scene, {}, {});
+    if (scene && scene !== stage.scene) go(scene, {}, {});
   });
-  chrome.paperPicker.addEventListener('change', () => {
+  onChosen(chrome.paperPicker, () => {
     const preset = findPreset(chrome.paperPicker.value);
     const scene = SCENES.find((s) => s.id === (preset?.scene ?? stage.scene?.id));
     if (scene) go(scene, preset ? preset.params : stage.params, { paper: preset ?? null });
   });
-  chrome.langPicker.addEventListener('change', () => setLanguage(chrome.langPicker.value));
-  chrome.taskPicker.addEventListener('change', () => {
+  onChosen(chrome.langPicker, () => setLanguage(chrome.langPicker.value));
+  onChosen(chrome.taskPicker, () => {
     const id = chrome.taskPicker.value;
     if (!id) return stage.task && stage.openTask(null).then(() => address.save('push'));
     startTask(id);

@@ -115,8 +115,8 @@ export function pageChrome(doc, english) {
     const to = e.relatedTarget;
     if (header.classList.contains('open') && to instanceof Node && !header.contains(to)) open(false);
   });
-  for (const control of [picker, paperPicker, taskPicker, langPicker, shareButton])
-    control.addEventListener(control === shareButton ? 'click' : 'change', () => open(false));
+  shareButton.addEventListener('click', () => open(false));
+  for (const control of [picker, paperPicker, taskPicker, langPicker]) onChosen(control, () => open(false));
 
   /** The label text before a picker. */
   const label = (/** @type {HTMLElement} */ box, /** @type {string} */ text) => {
@@ -163,4 +163,38 @@ export function pageChrome(doc, english) {
       /** @type {HTMLElement} */ (menuButton.querySelector('.menu-word')).textContent = t('app.menu');
     },
   };
+}
+
+/** How long a choice made by stepping through a closed menu with keys waits for the next step (ms). */
+const STEPPED = 600;
+
+/**
+ * Calls `act` when the reader has chosen in `select`: at once when chosen by the mouse, a finger
+ * or Enter, but after a pause when the arrow keys step through the closed menu (each step would
+ * otherwise open another scene or exercise, and say it, on the way to the one wanted); Enter or
+ * leaving the menu acts at once on a step that waits.
+ * @param {HTMLSelectElement} select
+ * @param {() => void} act
+ */
+export function onChosen(select, act) {
+  let stepped = 0;
+  let timer = 0;
+  const now = () => {
+    clearTimeout(timer);
+    if (timer) {
+      timer = 0;
+      act();
+    }
+  };
+  select.addEventListener('keydown', (e) => {
+    if (/^(Arrow(Up|Down|Left|Right)|Home|End|Page(Up|Down))$/.test(e.key)) stepped = performance.now();
+    else if (e.key === 'Enter') now();
+  });
+  select.addEventListener('blur', now);
+  select.addEventListener('change', () => {
+    clearTimeout(timer);
+    timer = 0;
+    if (performance.now() - stepped < 100) timer = window.setTimeout(now, STEPPED);
+    else act();
+  });
 }
