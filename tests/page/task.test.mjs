@@ -113,6 +113,11 @@ test('with the keyboard alone: Tab to the answer, type, Enter checks; a hint and
   await page.keyboard.press('Enter');
   assert.equal(await page.locator('input[name="task-count"]').inputValue(), '50');
   assert.match(await verdict(page), /^✓ Solved/);
+  // said once, by the verdict (a status): not by the view's live region too
+  assert.doesNotMatch(
+    await page.evaluate(() => document.querySelector('.rl-stage [aria-live]')?.textContent ?? ''),
+    /Solved/,
+  );
   // the buttons that rebuild the panel or take it away leave the keyboard where it can go on
   const focused = () =>
     page.evaluate(() => {

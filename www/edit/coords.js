@@ -73,7 +73,9 @@ export class CoordsBox {
     if (!typing || this.shownFor !== k) {
       const f = new Intl.NumberFormat(lang, { maximumFractionDigits: 6, useGrouping: false });
       this.fields.forEach((field, c) => {
-        field.value = f.format(handle.point[c]).replace('-', '−');
+        // (a value that rounds to 0 shows as 0, not −0)
+        const shown = Math.round(handle.point[c] * 1e6) / 1e6;
+        field.value = f.format(shown === 0 ? 0 : shown).replace('-', '−');
       });
     }
     this.shownFor = k;

@@ -32,7 +32,9 @@ export class ExerciseHost {
         : null,
       mayLeave: () => options.mayLeaveTask?.() ?? true,
       report: (type, report) => {
-        if (type === 'solved') stage.announcer.say(stage.i18n.t('task.solved'));
+        // (where the panel is shown its verdict, a status, says it: once is enough)
+        if (type === 'solved' && stage.els.taskBox.offsetParent === null)
+          stage.announcer.say(stage.i18n.t('task.solved'));
         options.onTask?.(type, report);
       },
     });

@@ -217,7 +217,8 @@ export function buildControls(form, scene, params, i18n, hooks) {
       const on = k === key;
       r.play.textContent = on ? '⏸' : '▶';
       r.play.setAttribute('aria-pressed', String(on));
-      r.play.setAttribute('aria-label', t(on ? 'control.pause' : 'control.play', { name: t(r.param.label) }));
+      // (a toggle keeps its name: pressed says that it plays)
+      r.play.setAttribute('aria-label', t('control.play', { name: t(r.param.label) }));
     }
   };
 

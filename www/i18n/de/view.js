@@ -34,7 +34,6 @@ export default {
   'control.decrease': '{name} verringern',
   'control.increase': '{name} erhöhen',
   'control.play': '{name} abspielen',
-  'control.pause': '{name} anhalten',
 
   'player.speed': 'Tempo',
   'player.step': 'Schritt',

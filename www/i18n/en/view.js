@@ -34,7 +34,6 @@ export default {
   'control.decrease': 'Decrease {name}',
   'control.increase': 'Increase {name}',
   'control.play': 'Play {name}',
-  'control.pause': 'Pause {name}',
 
   'player.speed': 'Speed',
   'player.step': 'Step',
