@@ -268,10 +268,10 @@ test('a millimetre job of the user’s tool: the header and the moves say what t
     assert.equal(await page.locator('.rl-row[data-key="spindle"] .rl-unit').isVisible(), false);
     await setControl(page, 'units', 'inch');
     await page.waitForFunction(
-      () => document.querySelector('.rl-row[data-key="feed"] .rl-unit')?.textContent === 'in/min',
+      () => document.querySelector('.rl-row[data-key="feed"] .rl-unit')?.textContent === 'inch/min',
     );
-    assert.equal(await unit('radius'), 'in');
-    assert.equal(await said('radius'), '3 in');
+    assert.equal(await unit('radius'), 'inch');
+    assert.equal(await said('radius'), '3 inch');
     // a number field that cannot be read says so at once (an alert), with the range to type in
     const field = page.locator('.rl-row[data-key="radius"] .rl-exact');
     await field.fill('3x');
