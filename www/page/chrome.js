@@ -30,8 +30,12 @@ export const htmlText = (/** @type {string} */ text) =>
 export function chromeHtml({ t }) {
   const picker = (/** @type {string} */ id, /** @type {string} */ label, /** @type {string} */ options) =>
     `<label class="picker"><span>${htmlText(t(label))} </span><select id="${id}">${options}</select></label>`;
-  const option = (/** @type {string} */ value, /** @type {string} */ text) =>
-    `<option value="${htmlText(value)}">${htmlText(text)}</option>`;
+  /** An option; `lang`: the language its text is in, where it is not the page's. */
+  const option = (/** @type {string} */ value, /** @type {string} */ text, lang = '') =>
+    `<option value="${htmlText(value)}"${lang ? ` lang="${htmlText(lang)}"` : ''}>${htmlText(text)}</option>`;
+  // each language's name in that language, and read in it
+  const name = (/** @type {string} */ code) => NATIVE[/** @type {keyof typeof NATIVE} */ (code)] ?? code;
+  const languages = LANGUAGE_CODES.map((code) => option(code, name(code), code)).join('');
   return [
     `<a class="skip" href="#main">${htmlText(t('app.skip'))}</a>`,
     '<header class="page-header">',
@@ -42,17 +46,7 @@ export function chromeHtml({ t }) {
     picker('scene', 'app.scene', SCENES.map((s) => option(s.id, plainTitle(t(s.title)))).join('')),
     picker('paper', 'app.figures', option('', t('paper.none'))),
     picker('task', 'app.exercises', option('', t('task.none'))),
-    picker(
-      'lang',
-      'app.language',
-      // (each language's name in that language, and read in it: lang on its option)
-      LANGUAGE_CODES.map((code) =>
-        option(code, NATIVE[/** @type {keyof typeof NATIVE} */ (code)] ?? code).replace(
-          '<option ',
-          `<option lang="${htmlText(code)}" `,
-        ),
-      ).join(''),
-    ),
+    picker('lang', 'app.language', languages),
     `<button type="button" id="share">${htmlText(t('app.share'))}</button>`,
     '</div>',
     '</header>',
