@@ -1,17 +1,13 @@
-// The inlined wasm (base64) and worker (source text), and the page's shell (its body before any
-// script, page/shell.js), from the build's virtual module.
+// The inlined wasm (hex: hex.js) and worker (source text), and the page's shell (its body before
+// any script, page/shell.js), from the build's virtual module.
 import { WASM, WORKER, SHELL } from 'ruledlab:inline';
+import { hexBytes } from './hex.js';
 
 export { SHELL };
 
-/** The wasm module's bytes (decoded natively where the browser can: a millisecond, not twenty). */
+/** The wasm module's bytes (hex.js: decoded natively where the browser can). */
 export function wasmBytes() {
-  const native = /** @type {{fromBase64?: (text: string) => Uint8Array}} */ (/** @type {unknown} */ (Uint8Array));
-  if (typeof native.fromBase64 === 'function') return native.fromBase64(WASM);
-  const text = atob(WASM);
-  const bytes = new Uint8Array(text.length);
-  for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
-  return bytes;
+  return hexBytes(WASM);
 }
 
 /**

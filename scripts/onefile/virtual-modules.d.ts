@@ -1,6 +1,6 @@
 // The virtual module that scripts/onefile.mjs's esbuild plugin provides.
 declare module 'ruledlab:inline' {
-  /** The wasm module, base64. */
+  /** The wasm module, hex (hex.js). */
   export const WASM: string;
   /** The worker's bundled source text (a classic script). */
   export const WORKER: string;
