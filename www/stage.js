@@ -47,6 +47,10 @@ export class Stage {
     this.host = host;
     /** @internal */
     this.options = options;
+    /** @internal The latest opening (stage/open.js): one still in its steps ends when another begins. */
+    this.entering = /** @type {object | null} */ (null);
+    /** @internal Whether openings go in tasks of their own (the page's first: stage/open.js's enterInSteps). */
+    this.inSteps = false;
     /** @internal */
     this.i18n = translator(pickLanguage(options.lang));
     /** @internal */

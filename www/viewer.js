@@ -13,6 +13,9 @@ import { TriangleMesh, prepare as prepareMeshes } from './gl/mesh.js';
 import { STYLES, rgb, rgba, PALETTE } from './theme.js';
 import { appendRich } from './ui/richtext.js';
 import { mark, measured } from './timing.js';
+import { FrameTarget } from './gl/target.js';
+import { finished } from './gl/fence.js';
+import { afterPaint } from './schedule.js';
 
 /**
  * What a layer draws with in one frame.
@@ -153,6 +156,12 @@ export class Viewer {
     this.frames = 0;
     /** @internal */
     this.pending = false;
+    /** @internal Whether the first figure has been readied (prepareFirst). */
+    this.warm = false;
+    /** @internal Bumped whenever the batches change: part of the key of the frame in the target. */
+    this.version = 0;
+    /** @internal The key of the frame the target holds (drawFrame). */
+    this.drawn = '';
     /** @internal Whether `built` has changed since the batches were made (they are made at the next frame). */
     this.stale = false;
     /** @internal */
@@ -165,13 +174,21 @@ export class Viewer {
     this.onCameraChange = null;
     /** @internal @type {Array<(viewProj: Float32Array) => void>} what is placed over the view after each frame (the handles) */
     this.overlays = [];
-    const gl = canvas.getContext('webgl2', { antialias: true, alpha: false, preserveDrawingBuffer: false });
+    const gl = canvas.getContext('webgl2', {
+      // the frame target is multisampled (gl/target.js): the canvas's own buffer needs neither
+      antialias: false,
+      depth: false,
+      alpha: false,
+      preserveDrawingBuffer: false,
+    });
     if (!gl)
       throw Object.assign(new Error('This page needs WebGL2, which this browser does not provide.'), {
         code: 'no-webgl2',
       });
     /** @internal */
     this.gl = gl;
+    /** @internal The multisampled framebuffer frames are drawn into, then resolved onto the canvas. */
+    this.target = new FrameTarget(gl);
     // the shaders compile on the GPU while the core loads and the first scene computes
     for (const prepare of [prepareLines, preparePoints, prepareMeshes]) prepare(gl);
     /** @internal */
@@ -180,6 +197,8 @@ export class Viewer {
       this.lost = true;
       this.batches = [];
       this.light = [];
+      this.target.forget();
+      this.drawn = '';
     };
     /** @internal */
     this.onRestored = () => {
@@ -238,6 +257,7 @@ export class Viewer {
   /** @internal Makes the batches and the labels of `built`. */
   upload() {
     this.stale = false;
+    this.version++;
     const gl = this.gl;
     this.labelLayer.replaceChildren(
       ...(this.built?.labels ?? []).map(({ text }) =>
@@ -290,10 +310,93 @@ export class Viewer {
   requestRender() {
     if (this.pending || this.disposed) return;
     this.pending = true;
-    requestAnimationFrame(() => {
-      this.pending = false;
-      this.render();
-    });
+    const draw = () =>
+      requestAnimationFrame(() => {
+        // the first figure is drawn and waited for before its frame (prepareFirst)
+        if (!this.warm && this.built) {
+          this.prepareFirst().then(draw);
+          return;
+        }
+        this.pending = false;
+        this.render();
+      });
+    draw();
+  }
+
+  /**
+   * @internal Readies the first frame of a figure without blocking the page: the canvas sized
+   * (and cleared, a frame of its own), then the figure drawn into the frame target while the GPU's
+   * work — building the programs' code for their first draw, and the drawing — is waited for
+   * between tasks (gl/fence.js). The frame that shows it resolves the target onto the canvas and
+   * waits for nothing. On software WebGL that work took 60–200 ms here, every millisecond of it
+   * blocking the page when the browser presented a frame still being drawn. Once per viewer.
+   */
+  async prepareFirst() {
+    if (this.warm) return;
+    this.warm = true;
+    const { gl } = this;
+    if (this.lost || this.disposed || !this.built) return;
+    this.sizeCanvas(this.frame());
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.viewport(0, 0, this.canvas.width, this.canvas.height);
+    gl.clearColor(this.background[0], this.background[1], this.background[2], 1);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+    await afterPaint();
+    if (this.lost || this.disposed || !this.built) return;
+    if (this.stale) this.upload();
+    const frame = this.frame();
+    this.drawFrame(frame, this.moving);
+    await finished(gl);
+  }
+
+  /**
+   * @internal Draws the batches into the frame target (the stand-ins where `moving`), unless it
+   * holds this very frame already (prepareFirst); the canvas is not touched.
+   */
+  drawFrame(/** @type {Frame} */ frame, /** @type {boolean} */ moving) {
+    const { gl } = this;
+    const key = `${frame.width} ${frame.height} ${moving} ${this.version} ${frame.viewProj.join()}`;
+    if (key === this.drawn && this.target.buffers) return;
+    this.target.bind(frame.width, frame.height);
+    gl.viewport(0, 0, frame.width, frame.height);
+    this.setState(this.background);
+    measured('ruledlab:draw', () => this.drawBatches(frame, moving));
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    this.drawn = key;
+  }
+
+  /** @internal Gives the canvas the frame's size in device pixels (a new size allocates its buffers). */
+  sizeCanvas(/** @type {Frame} */ frame) {
+    const { canvas } = this;
+    if (canvas.width !== frame.width || canvas.height !== frame.height) {
+      canvas.width = frame.width;
+      canvas.height = frame.height;
+    }
+  }
+
+  /** @internal The state every frame is drawn with, the target cleared to `background`. */
+  setState(/** @type {number[]} */ background) {
+    const { gl } = this;
+    gl.clearColor(background[0], background[1], background[2], 1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    gl.enable(gl.DEPTH_TEST);
+    // ties go to the layer drawn later: a line drawn again in another style (a highlighted cell) shows
+    gl.depthFunc(gl.LEQUAL);
+    gl.enable(gl.BLEND);
+    gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+  }
+
+  /** @internal Draws the batches (the stand-ins where `moving`), opaque ones first. */
+  drawBatches(/** @type {Frame} */ frame, /** @type {boolean} */ moving) {
+    const { gl } = this;
+    for (const transparent of [false, true]) {
+      gl.depthMask(!transparent);
+      this.batches.forEach((full, i) => {
+        const b = (moving && this.light[i]) || full;
+        if (!!b.transparent === transparent) b.draw(gl, frame);
+      });
+    }
+    gl.depthMask(true);
   }
 
   /** @internal The frame's matrices and sizes for the current canvas size (`scale`: pixels per CSS pixel). */
@@ -310,22 +413,11 @@ export class Viewer {
    * detail even while the camera moves (both for figure export).
    */
   render({ scale = window.devicePixelRatio || 1, full = false } = {}) {
-    const { gl, canvas } = this;
-    if (this.lost || this.disposed || gl.isContextLost()) return;
+    const { gl } = this;
+    // (nothing to show yet: the canvas keeps the view's background, and no frame is read back)
+    if (this.lost || this.disposed || !this.built || gl.isContextLost()) return;
     if (this.stale) this.upload();
     const frame = this.frame(scale);
-    if (canvas.width !== frame.width || canvas.height !== frame.height) {
-      canvas.width = frame.width;
-      canvas.height = frame.height;
-    }
-    gl.viewport(0, 0, frame.width, frame.height);
-    gl.clearColor(this.background[0], this.background[1], this.background[2], 1);
-    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-    gl.enable(gl.DEPTH_TEST);
-    // ties go to the layer drawn later: a line drawn again in another style (a highlighted cell) shows
-    gl.depthFunc(gl.LEQUAL);
-    gl.enable(gl.BLEND);
-    gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
     const moving = !full && this.moving;
     // what this frame shows, for tests and curious readers: the stand-ins or everything
     this.canvas.dataset.detail = moving && this.light.some(Boolean) ? 'stand-in' : 'full';
@@ -333,16 +425,9 @@ export class Viewer {
     const now = performance.now();
     if (now - this.lastFrameAt < 2000) this.frameGap = now - this.lastFrameAt;
     this.lastFrameAt = now;
-    measured('ruledlab:draw', () => {
-      for (const transparent of [false, true]) {
-        gl.depthMask(!transparent);
-        this.batches.forEach((full, i) => {
-          const b = (moving && this.light[i]) || full;
-          if (!!b.transparent === transparent) b.draw(gl, frame);
-        });
-      }
-    });
-    gl.depthMask(true);
+    this.drawFrame(frame, moving);
+    this.sizeCanvas(frame);
+    this.target.resolve();
     this.placeLabels(frame.viewProj);
     for (const overlay of this.overlays) overlay(frame.viewProj);
     this.frames++;
@@ -430,6 +515,7 @@ export class Viewer {
     clearTimeout(this.restTimer);
     this.batches = [];
     this.light = [];
+    this.target.dispose();
     forgetPrograms(gl);
     this.resize.disconnect();
     this.canvas.removeEventListener('webglcontextlost', this.onLost);

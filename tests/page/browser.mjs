@@ -87,8 +87,12 @@ export async function shoot(page, name) {
  * @param {Page} page
  */
 export async function ready(page, timeout = 30000) {
+  // (the numbers final, and the first frame drawn: the viewer readies it off the page's tasks)
   await page.waitForFunction(
-    () => /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'))?.dataset.ready === '1',
+    () => {
+      const stage = /** @type {HTMLElement | null} */ (document.querySelector('.rl-stage'));
+      return stage?.dataset.ready === '1' && !!stage.querySelector('canvas')?.dataset.detail;
+    },
     null,
     { timeout },
   );

@@ -197,3 +197,136 @@ for (const [which, base] of [
     await page.close();
   });
 }
+
+// The first figure is readied off the page's tasks (viewer.js's prepareFirst): drawn into the
+// frame target while the GPU's work is waited for between tasks, so that the frame showing it
+// only resolves the target onto the canvas — and shows what a frame drawn anew shows.
+test('the first frame of a view resolves the figure drawn before it, and shows what a new frame draws', async () => {
+  const page = await browsers.desktop.newPage();
+  const problems = watch(page);
+  await page.goto(`${url}#scene=striction`);
+  await ready(page, 60000);
+  const seen = await page.evaluate(async () => {
+    const { stage } = /** @type {any} */ (window).ruledlab;
+    const Viewer = stage.viewer.constructor;
+    const canvas = document.createElement('canvas');
+    canvas.style.cssText = 'position: fixed; left: 0; top: 0; width: 300px; height: 200px';
+    const labels = document.createElement('div');
+    document.body.append(canvas, labels);
+    const v = new Viewer(canvas, labels);
+    /** How much of an image (a data: URL) differs from its first pixel, the background. */
+    const drawn = async (/** @type {string} */ src) => {
+      const img = new Image();
+      img.src = src;
+      await img.decode();
+      const out = Object.assign(document.createElement('canvas'), { width: img.width, height: img.height });
+      const ctx = /** @type {CanvasRenderingContext2D} */ (out.getContext('2d'));
+      ctx.drawImage(img, 0, 0);
+      const px = ctx.getImageData(0, 0, img.width, img.height).data;
+      let other = 0;
+      for (let i = 0; i < px.length; i += 4) if (px[i] !== px[0] || px[i + 1] !== px[1] || px[i + 2] !== px[2]) other++;
+      return other / (px.length / 4);
+    };
+    try {
+      let draws = 0;
+      const bind = v.target.bind.bind(v.target);
+      v.target.bind = (/** @type {number} */ w, /** @type {number} */ h) => {
+        draws++;
+        return bind(w, h);
+      };
+      /** @type {Promise<{draws: number, image: string}>} */
+      const first = new Promise((resolve) => {
+        v.onFrame = (/** @type {number} */ n) => {
+          // (read in the task that drew it: the canvas keeps no frame after it is shown)
+          if (n === 1) resolve({ draws, image: canvas.toDataURL() });
+        };
+      });
+      v.show(stage.viewer.built, { fit: true });
+      const shown = await first;
+      v.onFrame = null;
+      v.drawn = '';
+      v.render();
+      const again = canvas.toDataURL();
+      return {
+        before: shown.draws,
+        after: draws,
+        same: shown.image === again,
+        covered: await drawn(shown.image),
+      };
+    } finally {
+      v.dispose();
+      canvas.remove();
+      labels.remove();
+    }
+  });
+  assert.equal(seen.before, 1, 'the figure was drawn into the target once before its first frame');
+  assert.equal(seen.after, 2, 'a new frame draws into the target again');
+  assert.ok(seen.covered > 0.05, `the first frame shows the figure (${(seen.covered * 100).toFixed(1)} % drawn)`);
+  assert.ok(seen.same, 'the first frame shows what a frame drawn anew shows');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+// The page's first opening goes in steps, its panel's parts invisible in their places until the
+// last; a scene opened meanwhile (a click in the menu) ends it, and is what the page shows.
+test('an opening in steps ends where another scene is opened meanwhile; the page shows that scene, whole', async () => {
+  const page = await browsers.desktop.newPage();
+  const problems = watch(page);
+  await page.goto(`${url}#scene=striction`);
+  await ready(page, 60000);
+  const seen = await page.evaluate(async () => {
+    const { stage, scenes } = /** @type {any} */ (window).ruledlab;
+    const find = (/** @type {string} */ id) => scenes.find((/** @type {any} */ s) => s.id === id);
+    const root = stage.els.root;
+    /** @type {Promise<unknown> | null} */
+    let second = null;
+    let hidden = false;
+    // as soon as the first opening is in its steps (its controls built, still invisible)
+    const watcher = new MutationObserver(() => {
+      if (second || !root.classList.contains('rl-opening')) return;
+      hidden = getComputedStyle(stage.els.form).visibility === 'hidden';
+      // (the second at once, as a click does)
+      stage.inSteps = false;
+      second = stage.open(find('congruence'), {}, {});
+    });
+    watcher.observe(root, { attributes: true, attributeFilter: ['class'] });
+    stage.inSteps = true;
+    // (the first with a camera and a note of its own: neither may reach the scene opened meanwhile)
+    const camera = [2.5, 0.7, 9.25, 0.5, -0.25, 0.125];
+    const first = stage.open(find('focal'), {}, { camera, notes: [{ key: 'input', note: 'note.badInput' }] });
+    await first;
+    await second;
+    watcher.disconnect();
+    return {
+      hidden,
+      camera: stage.viewer.camera.toArray().join() === camera.join(),
+      note: !stage.els.noteBox.hidden,
+      interrupted: !!second,
+      scene: stage.scene.id,
+      opening: root.classList.contains('rl-opening'),
+      visible: getComputedStyle(stage.els.form).visibility,
+      heading: stage.els.heading.textContent,
+      controls: [...stage.els.form.querySelectorAll('[name]')].map((e) => /** @type {HTMLInputElement} */ (e).name),
+      params: Object.keys(stage.params).sort(),
+      expected: find('congruence')
+        .params.map((/** @type {any} */ p) => p.key)
+        .sort(),
+    };
+  });
+  assert.ok(seen.interrupted, 'the second opening began while the first was in its steps');
+  assert.ok(seen.hidden, 'the panel waited invisible while the first opening was in its steps');
+  assert.equal(seen.scene, 'congruence');
+  assert.equal(seen.camera, false, 'the ended opening set its camera');
+  assert.equal(seen.note, false, 'the ended opening said its note');
+  assert.equal(seen.opening, false);
+  assert.equal(seen.visible, 'visible');
+  assert.match(seen.heading, /Line congruences/);
+  assert.deepEqual(seen.params, seen.expected);
+  assert.ok(
+    seen.controls.every((/** @type {string} */ key) => seen.params.includes(key)),
+    `controls of another scene: ${seen.controls}`,
+  );
+  await ready(page, 60000);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -172,8 +172,11 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     course?.localize();
   };
 
-  /** Opens the state of the current address (on load, Back/Forward, or an edited link). */
-  const openAddress = async () => {
+  /**
+   * Opens the state of the current address (on load, Back/Forward, or an edited link); on load
+   * `inSteps`: in tasks of their own (stage/open.js's enterInSteps).
+   */
+  const openAddress = async ({ inSteps = false } = {}) => {
     state = readState(address.current(), SCENES);
     if (state.lang && pickLanguage(state.lang) !== lang) await setLanguage(pickLanguage(state.lang), false);
     doc.body.classList.toggle('embed', state.embed);
@@ -202,6 +205,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       input,
       inputNote: input && !state.input ? keepInput(state.scene.id, input) : '',
     });
+    if (inSteps) await nextTask();
     localize();
   };
 
@@ -310,6 +314,17 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   };
   chrome.shareButton.addEventListener('click', () => openShare());
 
+  // for the page tests and the curious
+  Object.assign(window, {
+    ruledlab: {
+      stage,
+      scenes: SCENES,
+      wasm: { live: liveObjects, memory: memoryBytes },
+      get state() {
+        return state;
+      },
+    },
+  });
   stage.viewer.onFrame = (n) => {
     doc.body.dataset.frames = String(n);
   };
@@ -332,33 +347,32 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   const viewer = stage.viewer;
   const holding = !viewer.pending;
   if (holding) viewer.pending = true;
-  await openAddress();
+  // a SCORM package's page: the course system's runtime records its exercises (course.js), which
+  // it opens itself — until then the exercise waits, unseen, so that no answer goes unrecorded
+  const setup = oneFile ? storedCourse() : null;
+  if (setup) stage.els.root.classList.add('rl-waiting');
+  stage.inSteps = true;
+  await openAddress({ inSteps: true });
+  if (setup) {
+    try {
+      course = await import('./course.js').then((m) =>
+        m.startCourse(setup, { stage, i18n: () => i18n, before: chrome.main, opened: () => address.save('replace') }),
+      );
+    } finally {
+      stage.els.root.classList.remove('rl-waiting');
+    }
+  }
+  stage.inSteps = false;
   if (holding) {
     await afterPaint();
+    await viewer.prepareFirst();
     viewer.pending = false;
     viewer.requestRender();
   }
   address.save('replace');
   window.addEventListener('pagehide', keepTaskAttempt);
-  // a SCORM package's page: the course system's runtime records its exercises (course.js)
-  const setup = oneFile ? storedCourse() : null;
-  if (setup)
-    course = await import('./course.js').then((m) =>
-      m.startCourse(setup, { stage, i18n: () => i18n, before: chrome.main, opened: () => address.save('replace') }),
-    );
   doc.getElementById('boot')?.remove();
   doc.documentElement.dataset.started = '1';
-  // for the page tests and the curious
-  Object.assign(window, {
-    ruledlab: {
-      stage,
-      scenes: SCENES,
-      wasm: { live: liveObjects, memory: memoryBytes },
-      get state() {
-        return state;
-      },
-    },
-  });
 }
 
 /** Says, in the reader's language, that the page could not start (and why); rethrows. */

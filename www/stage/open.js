@@ -14,6 +14,7 @@ import { taskFromLink } from '../task/format.js';
 import { fitTask } from '../task/check.js';
 import { drawTask, randomSeed } from '../task/draw.js';
 import { taskErrorText } from '../task/words.js';
+import { nextTask } from '../schedule.js';
 
 /**
  * What to show.
@@ -125,7 +126,13 @@ export async function openScene(stage, scene, params, options) {
   const notes = [...(options.notes ?? [])];
   stage.inputNote = options.inputNote ?? '';
   const input = options.input ?? null;
-  const fits = stage.enter(scene, { ...defaults(scene), ...params }, { camera: options.camera ?? null, input });
+  const enterOptions = { camera: options.camera ?? null, input };
+  const all = { ...defaults(scene), ...params };
+  const fits = stage.inSteps
+    ? await enterInSteps(stage, scene, all, enterOptions)
+    : stage.enter(scene, all, enterOptions);
+  // (an opening begun while this one was in its steps has shown its scene: this one ends)
+  if (fits === null) return;
   if (!fits) notes.push({ key: 'input', note: 'note.badInput' });
   // an exercise's constraint that cannot hold is said, and lifted
   for (const { handle, why } of stage.edit.lifted)
@@ -196,7 +203,55 @@ function leaveTask(stage) {
  * @param {import('../scene.js').Params} params
  * @param {EnterOptions} options
  */
-export function enterScene(stage, scene, params, { camera = null, fit = true, input = null, history = false }) {
+export function enterScene(stage, scene, params, options) {
+  const token = {};
+  stage.entering = token;
+  // (an opening still in its steps ends here: this one shows everything now)
+  stage.els.root.classList.remove('rl-opening');
+  const steps = enterSteps(stage, scene, params, options, token);
+  let step = steps.next();
+  while (!step.done) step = steps.next();
+  return step.value ?? true;
+}
+
+/**
+ * enterScene in tasks of their own (the page's first opening: no task of the start blocks the
+ * reader for long): the texts and controls, the computation, the rest — the panel's new parts
+ * kept invisible until the last, in their places (nothing painted moves). A later opening of the
+ * stage ends one still in its steps: then null.
+ * @param {import('../stage.js').Stage} stage
+ * @param {import('../scene.js').Scene} scene
+ * @param {import('../scene.js').Params} params
+ * @param {EnterOptions} options
+ */
+export async function enterInSteps(stage, scene, params, options) {
+  const token = {};
+  stage.entering = token;
+  const steps = enterSteps(stage, scene, params, options, token);
+  const { root } = stage.els;
+  root.classList.add('rl-opening');
+  try {
+    for (let step = steps.next(); ; step = steps.next()) {
+      if (step.done) return step.value;
+      await nextTask();
+    }
+  } finally {
+    if (stage.entering === token) root.classList.remove('rl-opening');
+  }
+}
+
+/**
+ * The steps of enterScene: each `yield` is a place where the work may wait for a later task; an
+ * opening begun since ends this one there.
+ * @param {import('../stage.js').Stage} stage
+ * @param {import('../scene.js').Scene} scene
+ * @param {import('../scene.js').Params} params
+ * @param {EnterOptions} options
+ * @param {object} token   the opening's (stage.entering while it is the latest)
+ * @returns {Generator<void, boolean | null, void>}   null where an opening begun since ended it
+ */
+function* enterSteps(stage, scene, params, { camera = null, fit = true, input = null, history = false }, token) {
+  const superseded = () => stage.entering !== token;
   const sceneChanged = stage.scene !== scene;
   if (sceneChanged) stage.player.stop();
   stage.input = null;
@@ -217,10 +272,13 @@ export function enterScene(stage, scene, params, { camera = null, fit = true, in
     const row = controls.rows.get(key)?.row;
     if (row) row.hidden = true;
   }
-  controls.fit();
   stage.player.build();
   stage.paperCard.show();
+  yield;
+  if (superseded()) return null;
   const editable = stage.compute({ fit: fit && !camera })?.input;
+  yield;
+  if (superseded()) return null;
   if (history) stage.editor.show(editable);
   else stage.edit.enter(editable, sceneChanged);
   const fits = !input || (!!editable && fitsSets(input, editable.sets));
@@ -230,6 +288,8 @@ export function enterScene(stage, scene, params, { camera = null, fit = true, in
     controls.update(stage.params);
   }
   stage.edit.show();
+  // (measured once everything the scene shows is in the page: one layout, not one per part)
+  controls.fit();
   if (camera) {
     stage.viewer.camera.fromArray(camera);
     stage.viewer.requestRender();

@@ -63,6 +63,9 @@ export const CSS = `
   border: 1px solid #ead79b; border-radius: 6px; font-size: .82rem; }
 .rl-hint { flex: 0 1 auto; min-width: 0; margin: 0; pointer-events: none !important; color: var(--muted); font-size: .75rem; background: rgb(251 250 247 / .8); border-radius: 4px; padding: 0 .25rem; }
 .rl-stale canvas { opacity: .55; }
+/* a scene opening in steps (the page's first), or a course package's page until its course system
+   is connected: the panel's parts wait, in their places, until all are there */
+.rl-opening > .rl-panel > :not(h2), .rl-opening .rl-legend, .rl-waiting > .rl-panel > :not(h2) { visibility: hidden; }
 .rl-sr-only { position: absolute !important; width: 1px; height: 1px; padding: 0; margin: -1px; overflow: hidden; clip: rect(0 0 0 0); white-space: nowrap; border: 0; }
 .rl-panel { flex: 0 0 24rem; max-width: 46%; overflow-y: auto; background: var(--panel); border-left: 1px solid var(--line); padding: .8rem 1rem 1.2rem; }
 .rl-panel h2 { font-size: 1.05rem; margin: .2rem 0 .6rem; }
