@@ -174,3 +174,30 @@ test('from the one-file page on a server: the link and the iframe, and the eleme
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+// Share is loaded when first opened: a load that fails (the connection dropped, a new release
+// replaced the file) is said over the view, in the page's language, and the next click loads it.
+test('Share that could not be loaded is said, and the next click loads it', async () => {
+  const { page, problems } = await session.open('#scene=striction&lang=de');
+  const share = /\/www\/page\/share\.js$/;
+  let blocked = 0;
+  await page.route(share, (route) => {
+    blocked++;
+    return route.abort('internetdisconnected');
+  });
+  await page.locator('#share').click();
+  const error = page.locator('.rl-view .rl-error');
+  await error.waitFor();
+  assert.match(/** @type {string} */ (await error.textContent()), /konnte nicht geladen werden/);
+  await page.unroute(share);
+  await page.locator('#share').click();
+  await page.locator('#share-dialog[data-ready="1"]').waitFor();
+  assert.equal(await error.isVisible(), false, 'the sentence stays after Share was loaded');
+  assert.equal(blocked, 1);
+  // (the request refused here, and the browser's word on it, are the only problems)
+  assert.deepEqual(
+    problems.filter((p) => !/share\.js|ERR_INTERNET_DISCONNECTED/.test(p)),
+    [],
+  );
+  await page.close();
+});

@@ -30,6 +30,7 @@ import { postToParent } from '../task/message.js';
 import { taskErrorText } from '../task/words.js';
 import { encodeInput } from '../edit/input.js';
 import { openExercise, openView } from '../stage/open.js';
+import { lazy } from './lazy.js';
 
 /**
  * The page (see the module documentation).
@@ -271,29 +272,37 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
 
   // sharing: the link, an iframe, a <ruled-view>, and the view as one HTML file, and "Make an
   // exercise" from the view on screen (Share → Make an exercise) — share.js and author.js,
-  // loaded when first opened
-  /** @type {Promise<ReturnType<import('./share.js').shareDialog>> | null} */
-  let sharing = null;
-  const shareModule = () => {
-    sharing ??= import('./share.js').then(({ shareDialog }) =>
-      shareDialog(share, {
-        stage,
-        i18n: () => i18n,
-        state: () => ({ .../** @type {NonNullable<ReturnType<typeof shown>>} */ (shown()), lang }),
-        oneFile,
-        embedScript,
-        author: () => authoring().then((author) => author.show()),
-      }),
-    );
-    return sharing;
+  // loaded when first opened (one that could not be loaded is said over the view, and loaded again
+  // at the next click; the sentence goes when it is there)
+  let unsaid = '';
+  const unloaded = (/** @type {Error} */ e) => {
+    unsaid = stage.fail(e);
   };
-  const openShare = () => shareModule().then((dialog) => dialog.open());
-  /** @type {Promise<import('./author.js').Author> | null} */
-  let author = null;
-  const authoring = () => {
-    author ??= import('./author.js').then(
-      ({ Author }) =>
-        new Author(stage.authorBox, {
+  const loaded = () => {
+    if (unsaid && stage.els.error.textContent === unsaid) stage.els.error.hidden = true;
+    unsaid = '';
+  };
+  const shareModule = lazy(
+    () =>
+      import('./share.js').then(({ shareDialog }) => {
+        loaded();
+        return shareDialog(share, {
+          stage,
+          i18n: () => i18n,
+          state: () => ({ .../** @type {NonNullable<ReturnType<typeof shown>>} */ (shown()), lang }),
+          oneFile,
+          embedScript,
+          author: () => authoring().then((author) => author.show(), ignore),
+        });
+      }),
+    unloaded,
+  );
+  const openShare = () => shareModule().then((dialog) => dialog.open(), ignore);
+  const authoring = lazy(
+    () =>
+      import('./author.js').then(({ Author }) => {
+        loaded();
+        return new Author(stage.authorBox, {
           i18n: () => i18n,
           stage: () => stage,
           snippets: (task) =>
@@ -305,13 +314,13 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
             ),
           source: () => ({ oneFile, embedScript }),
           tryIt: (task) => {
-            authoring().then((made) => made.close());
+            authoring().then((made) => made.close(), ignore);
             startTask(taskLink(task, (id) => builtInTask(id) !== null));
           },
-        }),
-    );
-    return author;
-  };
+        });
+      }),
+    unloaded,
+  );
   chrome.shareButton.addEventListener('click', () => openShare());
 
   // for the page tests and the curious
@@ -374,6 +383,9 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   doc.getElementById('boot')?.remove();
   doc.documentElement.dataset.started = '1';
 }
+
+/** For a part that could not be loaded: said already (lazy.js). */
+const ignore = () => {};
 
 /** Says, in the reader's language, that the page could not start (and why); rethrows. */
 export function showStartFailure(/** @type {unknown} */ e) {

@@ -22,6 +22,8 @@ export default {
   'error.code.singular': 'Das Gleichungssystem ist nicht lösbar',
   'error.code.freed': 'Dieses Objekt ist bereits freigegeben',
   'error.code.invalid-state': 'Dieses Objekt ist mit einem anderen Aufruf beschäftigt',
+  'error.code.not-loaded':
+    'Ein Teil der Seite konnte nicht geladen werden (die Verbindung?): bitte noch einmal versuchen',
   'error.code.no-webgl2': 'Dieser Browser bietet kein WebGL2',
   'error.code.unknown': 'Etwas ist schiefgegangen',
   'error.what.rulings': 'Erzeugende',
