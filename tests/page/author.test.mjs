@@ -78,11 +78,16 @@ test('with the keyboard alone: a typed δ(u) and a parameter drawn per attempt; 
     ['step', '1'],
   ]) {
     await tabTo(page, `author-draw-a-${part}`);
+    const typed = await page.locator(`[name="author-draw-a-${part}"]`).elementHandle();
     await retype(page, value);
     await page.keyboard.press('Tab');
+    // settled: the form written anew (a new field) with the value typed
     await page.waitForFunction(
-      ([name, v]) => /** @type {HTMLInputElement | null} */ (document.querySelector(`[name="${name}"]`))?.value === v,
-      [`author-draw-a-${part}`, value],
+      ([name, v, old]) => {
+        const input = /** @type {HTMLInputElement | null} */ (document.querySelector(`[name="${name}"]`));
+        return input !== old && input?.value === v;
+      },
+      /** @type {const} */ ([`author-draw-a-${part}`, value, typed]),
     );
   }
   await page.waitForTimeout(100);
@@ -133,6 +138,12 @@ test('with the keyboard alone: a typed δ(u) and a parameter drawn per attempt; 
     .last()
     .filter({ hasText: /Copied|Selected/ })
     .waitFor();
+  // copied, the keyboard stays on the button; else it is in the selected text, for Ctrl+C
+  const said = await page.locator('.rl-author-result .share-row .share-done').last().textContent();
+  assert.equal(
+    await page.evaluate(() => document.activeElement?.tagName),
+    /Copied/.test(said ?? '') ? 'BUTTON' : 'TEXTAREA',
+  );
   // the packages, offered here too
   assert.equal(
     await page.locator('[name="author-scorm12"], [name="author-scorm2004"], [name="author-h5p"]').count(),

@@ -29,8 +29,10 @@ export function copyField(doc, t, { label, id, value, note, rows = 3 }) {
     } catch {
       copied = doc.execCommand?.('copy') ?? false;
     }
-    // a sandboxed frame may refuse both: the text stays selected for Ctrl+C
+    // a sandboxed frame may refuse both: the text stays selected for Ctrl+C; copied, the keyboard
+    // stays on the button (selecting the text had taken it into the field)
     done.textContent = t(copied ? 'share.copied' : 'share.selectCopy');
+    if (copied) copy.focus();
   });
   wrap.append(el('label', { htmlFor: id, textContent: label }), area, copy, done);
   if (note) wrap.append(el('p', { className: 'share-note', textContent: note }));
