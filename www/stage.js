@@ -10,6 +10,7 @@
 // stage (stage/*.js: controls, player, paper card, edit host, exercise host, results, announcer,
 // shortcuts, layout) show it. A part asks for a change by calling one of these methods; none
 // changes the state itself.
+import { watchMath } from './ui/scrolling-math.js';
 import { Viewer } from './viewer.js';
 import { SceneSession } from './session.js';
 import { defaults } from './scene.js';
@@ -47,8 +48,6 @@ export class Stage {
     this.host = host;
     /** @internal */
     this.options = options;
-    /** @internal The latest opening (stage/open.js): one still in its steps ends when another begins. */
-    this.entering = /** @type {object | null} */ (null);
     /** @internal Whether openings go in tasks of their own (the page's first: stage/open.js's enterInSteps). */
     this.inSteps = false;
     /** @internal */
@@ -263,6 +262,8 @@ export class Stage {
     appendRich(heading, t(scene.title));
     // the explanation is markup from the project's own language files (never user text)
     text.innerHTML = t(scene.text);
+    // (its display equations: tab stops where they scroll)
+    watchMath(text);
   }
 
   /**

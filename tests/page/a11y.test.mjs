@@ -337,3 +337,51 @@ test('stepping through the closed scene menu with the arrow keys opens only the 
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+// A display equation that scrolls sideways takes the keyboard (it can be scrolled by keys); one
+// that fits its column is no tab stop to pass — on a phone at 320 px and on a desktop alike.
+test('display equations are tab stops exactly where they scroll sideways (320 px and desktop)', async () => {
+  /** @type {Record<string, {scrolls: number, fits: number}>} */
+  const counted = {};
+  for (const [name, viewport] of /** @type {const} */ ([
+    ['phone', { width: 320, height: 640 }],
+    ['desktop', { width: 1350, height: 940 }],
+  ])) {
+    const browser = await launch({ viewport });
+    try {
+      const page = await browser.newPage();
+      const problems = watch(page);
+      counted[name] = { scrolls: 0, fits: 0 };
+      for (const scene of ['curves', 'striction', 'strip', 'congruence']) {
+        await page.goto(`${session.url}#scene=${scene}`);
+        await ready(page);
+        const seen = await page.evaluate(async () => {
+          const maths = [
+            .../** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('.rl-text math[display="block"]')),
+          ];
+          const frame = () => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+          const out = [];
+          for (const math of maths) {
+            math.scrollIntoView({ block: 'center' });
+            await frame();
+            out.push({
+              scrolls: math.scrollWidth > math.clientWidth + 1,
+              stop: math.getAttribute('tabindex') === '0',
+            });
+          }
+          return out;
+        });
+        for (const [k, { scrolls, stop }] of seen.entries()) {
+          assert.equal(stop, scrolls, `${name} ${scene}, equation ${k + 1}: ${scrolls ? 'scrolls' : 'fits'}`);
+          counted[name][scrolls ? 'scrolls' : 'fits']++;
+        }
+      }
+      assert.deepEqual(problems, []);
+    } finally {
+      await browser.close();
+    }
+  }
+  // (both cases met: the test is not empty on either side)
+  assert.ok(counted.phone.scrolls > 0, `at 320 px no equation scrolls: ${JSON.stringify(counted)}`);
+  assert.ok(counted.desktop.fits > 0, `on a desktop every equation scrolls: ${JSON.stringify(counted)}`);
+});

@@ -194,6 +194,9 @@ function leaveTask(stage) {
  * @property {boolean} [history]   keep the edit's undo steps (a change of language)
  */
 
+/** The latest opening of each stage: one still in its steps ends when another begins. @type {WeakMap<object, object>} */
+const openings = new WeakMap();
+
 /**
  * Shows `scene` with `params` in `stage`: its texts and controls, then what the core computes,
  * the built-in input first (its handles set the box they stay in and say what was edited), then
@@ -205,7 +208,7 @@ function leaveTask(stage) {
  */
 export function enterScene(stage, scene, params, options) {
   const token = {};
-  stage.entering = token;
+  openings.set(stage, token);
   // (an opening still in its steps ends here: this one shows everything now)
   stage.els.root.classList.remove('rl-opening');
   const steps = enterSteps(stage, scene, params, options, token);
@@ -226,7 +229,7 @@ export function enterScene(stage, scene, params, options) {
  */
 export async function enterInSteps(stage, scene, params, options) {
   const token = {};
-  stage.entering = token;
+  openings.set(stage, token);
   const steps = enterSteps(stage, scene, params, options, token);
   const { root } = stage.els;
   root.classList.add('rl-opening');
@@ -236,7 +239,7 @@ export async function enterInSteps(stage, scene, params, options) {
       await nextTask();
     }
   } finally {
-    if (stage.entering === token) root.classList.remove('rl-opening');
+    if (openings.get(stage) === token) root.classList.remove('rl-opening');
   }
 }
 
@@ -247,11 +250,11 @@ export async function enterInSteps(stage, scene, params, options) {
  * @param {import('../scene.js').Scene} scene
  * @param {import('../scene.js').Params} params
  * @param {EnterOptions} options
- * @param {object} token   the opening's (stage.entering while it is the latest)
+ * @param {object} token   the opening's (in `openings` while it is the latest)
  * @returns {Generator<void, boolean | null, void>}   null where an opening begun since ended it
  */
 function* enterSteps(stage, scene, params, { camera = null, fit = true, input = null, history = false }, token) {
-  const superseded = () => stage.entering !== token;
+  const superseded = () => openings.get(stage) !== token;
   const sceneChanged = stage.scene !== scene;
   if (sceneChanged) stage.player.stop();
   stage.input = null;
