@@ -25,22 +25,36 @@ export class PaperCard {
     const doc = card.ownerDocument;
     const el = (/** @type {string} */ tag, /** @type {string} */ className, /** @type {string} */ text) =>
       appendRich(Object.assign(doc.createElement(tag), { className }), text);
-    const heading = el('h3', 'rl-paper-title', t('paper.heading', { figure: t(preset.label) }));
+    // the heading holds the button that opens and closes the rest (a heading inside a <summary>
+    // is no heading to a screen reader): open beside the view, closed over the controls of a
+    // narrow box (one line instead of a screenful before the first slider), as the reader left it
+    const heading = doc.createElement('h3');
+    heading.className = 'rl-paper-title';
     heading.id = `${card.id}-title`;
     card.setAttribute('aria-labelledby', heading.id);
+    const toggle = /** @type {HTMLButtonElement} */ (
+      el('button', 'rl-paper-toggle', t('paper.heading', { figure: t(preset.label) }))
+    );
+    toggle.type = 'button';
+    heading.append(toggle);
     const caption = el('blockquote', 'rl-paper-caption', t(preset.caption));
     const note = el('p', 'rl-paper-note', t(preset.note));
     const data = el('p', `rl-paper-data rl-data-${preset.data}`, t(`paper.data.${preset.data}`));
-    // the heading opens and closes the rest: open beside the view, closed over the controls of a
-    // narrow box (one line instead of a screenful before the first slider), as the reader left it
-    const more = /** @type {HTMLDetailsElement} */ (doc.createElement('details'));
+    const more = doc.createElement('div');
     more.className = 'rl-paper-more';
-    more.open = this.open ?? !stage.els.root.classList.contains('rl-narrow');
-    more.addEventListener('toggle', () => (this.open = more.open));
-    const summary = doc.createElement('summary');
-    summary.append(heading);
-    more.append(summary, caption, note, data);
-    card.replaceChildren(more);
+    more.id = `${card.id}-more`;
+    toggle.setAttribute('aria-controls', more.id);
+    const shown = (/** @type {boolean} */ open) => {
+      more.hidden = !open;
+      toggle.setAttribute('aria-expanded', String(open));
+    };
+    shown(this.open ?? !stage.els.root.classList.contains('rl-narrow'));
+    toggle.addEventListener('click', () => {
+      this.open = more.hidden;
+      shown(this.open);
+    });
+    more.append(caption, note, data);
+    card.replaceChildren(heading, more);
     if (preset.beyond) {
       const beyond = doc.createElement('p');
       beyond.className = 'rl-beyond';

@@ -103,9 +103,12 @@ export const CSS = `
 .rl-readout dd { margin: 0; font-variant-numeric: tabular-nums; text-align: right; }
 .rl-paper { margin: .2rem 0 .9rem; padding: .55rem .75rem; border: 1px solid #d8d3c4; border-radius: 6px; background: #fffdf7; font-size: .86rem; line-height: 1.45; }
 .rl-paper[hidden] { display: none; }
-.rl-paper h3 { display: inline; font-size: .95rem; margin: 0; }
-.rl-paper summary { cursor: pointer; padding: .1rem 0 .35rem; }
-.rl-paper details:not([open]) > summary { padding-bottom: .1rem; }
+.rl-paper h3 { font-size: .95rem; margin: 0; }
+.rl-paper .rl-paper-toggle { all: unset; box-sizing: border-box; display: block; width: 100%; cursor: pointer; min-height: 24px; padding: .1rem 0 .35rem; font-weight: 700; }
+.rl-paper .rl-paper-toggle::before { content: "▸ "; font-weight: 400; }
+.rl-paper .rl-paper-toggle[aria-expanded=true]::before { content: "▾ "; }
+.rl-paper .rl-paper-toggle:focus-visible { outline: 3px solid var(--focus); outline-offset: 2px; }
+.rl-paper .rl-paper-toggle[aria-expanded=false] { padding-bottom: .1rem; }
 .rl-paper blockquote { margin: 0 0 .45rem; padding-left: .6rem; border-left: 3px solid #8a8f99; font-style: italic; }
 .rl-paper p { margin: .35rem 0; }
 .rl-paper .rl-paper-data { color: var(--muted); }
@@ -275,6 +278,7 @@ export const CSS = `
 @media (pointer: coarse) {
   .rl-stage button, .rl-stage select, .rl-stage input[type=text], .rl-stage summary { min-height: 44px; min-width: 44px; }
   .rl-task-field input { min-height: 44px; }
+  .rl-stage .rl-paper .rl-paper-toggle { min-height: 44px; }
   .rl-stage input[type=checkbox] { width: 44px; height: 44px; }
   .rl-stage input[type=range] { height: 44px; }
   .rl-exact { min-height: 44px; }
