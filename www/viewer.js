@@ -162,6 +162,8 @@ export class Viewer {
     this.version = 0;
     /** @internal The key of the frame the target holds (drawFrame). */
     this.drawn = '';
+    /** @internal Whether the last frame was drawn straight onto the canvas (no target of its size). */
+    this.direct = false;
     /** @internal Whether `built` has changed since the batches were made (they are made at the next frame). */
     this.stale = false;
     /** @internal */
@@ -314,7 +316,8 @@ export class Viewer {
       requestAnimationFrame(() => {
         // the first figure is drawn and waited for before its frame (prepareFirst)
         if (!this.warm && this.built) {
-          this.prepareFirst().then(draw);
+          // (a failure there leaves the frame to the ordinary path, which says it)
+          this.prepareFirst().then(draw, draw);
           return;
         }
         this.pending = false;
@@ -355,14 +358,15 @@ export class Viewer {
    */
   drawFrame(/** @type {Frame} */ frame, /** @type {boolean} */ moving) {
     const { gl } = this;
-    const key = `${frame.width} ${frame.height} ${moving} ${this.version} ${frame.viewProj.join()}`;
+    const key = `${frame.width} ${frame.height} ${frame.dpr} ${moving} ${this.version} ${frame.viewProj.join()}`;
     if (key === this.drawn && this.target.buffers) return;
-    this.target.bind(frame.width, frame.height);
+    // (a size the GPU cannot make a framebuffer of is drawn straight onto the canvas, unresolved)
+    this.direct = !this.target.bind(frame.width, frame.height);
     gl.viewport(0, 0, frame.width, frame.height);
     this.setState(this.background);
     measured('ruledlab:draw', () => this.drawBatches(frame, moving));
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    this.drawn = key;
+    this.drawn = this.direct ? '' : key;
   }
 
   /** @internal Gives the canvas the frame's size in device pixels (a new size allocates its buffers). */
@@ -425,9 +429,9 @@ export class Viewer {
     const now = performance.now();
     if (now - this.lastFrameAt < 2000) this.frameGap = now - this.lastFrameAt;
     this.lastFrameAt = now;
-    this.drawFrame(frame, moving);
     this.sizeCanvas(frame);
-    this.target.resolve();
+    this.drawFrame(frame, moving);
+    if (!this.direct) this.target.resolve();
     this.placeLabels(frame.viewProj);
     for (const overlay of this.overlays) overlay(frame.viewProj);
     this.frames++;

@@ -247,11 +247,22 @@ test('the first frame of a view resolves the figure drawn before it, and shows w
       v.drawn = '';
       v.render();
       const again = canvas.toDataURL();
+      // a size the GPU cannot make a target of is refused, the canvas bound; the viewer then
+      // draws straight onto the canvas
+      const gl = v.gl;
+      const largest = Math.min(gl.getParameter(gl.MAX_RENDERBUFFER_SIZE), ...gl.getParameter(gl.MAX_VIEWPORT_DIMS));
+      const counted = draws;
+      const refused = v.target.bind(largest + 1, 4) === false && gl.getParameter(gl.FRAMEBUFFER_BINDING) === null;
+      v.target.bind = () => false;
+      v.render();
+      const direct = await drawn(canvas.toDataURL());
       return {
         before: shown.draws,
-        after: draws,
+        after: counted,
         same: shown.image === again,
         covered: await drawn(shown.image),
+        refused,
+        direct,
       };
     } finally {
       v.dispose();
@@ -263,6 +274,8 @@ test('the first frame of a view resolves the figure drawn before it, and shows w
   assert.equal(seen.after, 2, 'a new frame draws into the target again');
   assert.ok(seen.covered > 0.05, `the first frame shows the figure (${(seen.covered * 100).toFixed(1)} % drawn)`);
   assert.ok(seen.same, 'the first frame shows what a frame drawn anew shows');
+  assert.ok(seen.refused, 'a framebuffer larger than the GPU allows was not refused');
+  assert.ok(seen.direct > 0.05, `drawn without a target, the figure is not there (${seen.direct})`);
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -327,6 +340,48 @@ test('an opening in steps ends where another scene is opened meanwhile; the page
     `controls of another scene: ${seen.controls}`,
   );
   await ready(page, 60000);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
+// An exercise link opens in steps; a scene chosen before its last step is what the page shows —
+// the exercise's panel does not come back over it, nothing is held.
+test('an exercise opening in steps, ended by a scene chosen meanwhile, leaves no exercise behind', async () => {
+  const page = await browsers.desktop.newPage();
+  const problems = watch(page);
+  await page.addInitScript(() => {
+    let done = false;
+    new MutationObserver(() => {
+      const root = document.querySelector('.rl-stage');
+      const ruledlab = /** @type {any} */ (window).ruledlab;
+      if (done || !ruledlab || !root?.classList.contains('rl-opening')) return;
+      done = true;
+      const scene = ruledlab.scenes.find((/** @type {any} */ s) => s.id === 'congruence');
+      /** @type {any} */ (window).chosen = ruledlab.stage.open(scene, {}, {});
+    }).observe(document, { subtree: true, attributes: true, attributeFilter: ['class'] });
+  });
+  await page.goto(`${url}#task=chaikin-count&seed=0`);
+  await ready(page, 60000);
+  await page.evaluate(() => /** @type {any} */ (window).chosen);
+  await page.waitForTimeout(300);
+  const seen = await page.evaluate(() => {
+    const { stage } = /** @type {any} */ (window).ruledlab;
+    return {
+      chosen: !!(/** @type {any} */ (window).chosen),
+      scene: stage.scene.id,
+      task: stage.task?.id ?? null,
+      panel: !(/** @type {HTMLElement} */ (document.querySelector('.rl-task')).hidden),
+      held: [...document.querySelectorAll('.rl-controls [name]')].filter(
+        (e) => /** @type {HTMLInputElement} */ (e).disabled,
+      ).length,
+      classes: /** @type {HTMLElement} */ (document.querySelector('.rl-stage')).className,
+    };
+  });
+  assert.ok(seen.chosen, 'the scene was not chosen while the exercise opened');
+  assert.equal(seen.scene, 'congruence');
+  assert.equal(seen.task, null);
+  assert.equal(seen.panel, false, "the exercise's panel came back");
+  assert.doesNotMatch(seen.classes, /rl-opening|rl-waiting/);
   assert.deepEqual(problems, []);
   await page.close();
 });

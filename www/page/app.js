@@ -361,22 +361,22 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   const setup = oneFile ? storedCourse() : null;
   if (setup) stage.els.root.classList.add('rl-waiting');
   stage.inSteps = true;
-  await openAddress({ inSteps: true });
-  if (setup) {
-    try {
+  try {
+    await openAddress({ inSteps: true });
+    if (setup)
       course = await import('./course.js').then((m) =>
         m.startCourse(setup, { stage, i18n: () => i18n, before: chrome.main, opened: () => address.save('replace') }),
       );
-    } finally {
-      stage.els.root.classList.remove('rl-waiting');
+  } finally {
+    // (also where the start fails: what could be shown is shown, and the view draws)
+    stage.els.root.classList.remove('rl-waiting');
+    stage.inSteps = false;
+    if (holding) {
+      await afterPaint();
+      await viewer.prepareFirst().catch(() => {});
+      viewer.pending = false;
+      viewer.requestRender();
     }
-  }
-  stage.inSteps = false;
-  if (holding) {
-    await afterPaint();
-    await viewer.prepareFirst();
-    viewer.pending = false;
-    viewer.requestRender();
   }
   address.save('replace');
   window.addEventListener('pagehide', keepTaskAttempt);

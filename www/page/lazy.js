@@ -1,6 +1,8 @@
 // A part of the page loaded when first used (Share, the exercise author). A load that failed —
 // the connection dropped, or a new release replaced the file — is said, and tried again at the
-// next use instead of failing for good.
+// next use instead of failing for good (where the browser fetches a module that failed anew, as
+// Chromium here does; one that remembers the failure until a reload is why the sentence also
+// says to reload).
 
 /**
  * `load`, called once and remembered; after a failure (said by `onError`, with the code

@@ -108,10 +108,12 @@ export async function openExercise(stage, value, progress = {}) {
  * Opens `scene` in `stage` (Stage.open): the core started, its parameters (missing ones take
  * their defaults), the paper's figure if it is this scene's, the notes said, autoplay unless the
  * reader prefers reduced motion. Opening a scene leaves the exercise shown, unless `options.task`.
+ * Resolves to true, or false where an opening begun while this one was in its steps ended it.
  * @param {import('../stage.js').Stage} stage
  * @param {import('../scene.js').Scene} scene
  * @param {import('../scene.js').Params} params
  * @param {import('../stage.js').OpenOptions} options
+ * @returns {Promise<boolean>}
  */
 export async function openScene(stage, scene, params, options) {
   if (!options.task) leaveTask(stage);
@@ -132,7 +134,7 @@ export async function openScene(stage, scene, params, options) {
     ? await enterInSteps(stage, scene, all, enterOptions)
     : stage.enter(scene, all, enterOptions);
   // (an opening begun while this one was in its steps has shown its scene: this one ends)
-  if (fits === null) return;
+  if (fits === null) return false;
   if (!fits) notes.push({ key: 'input', note: 'note.badInput' });
   // an exercise's constraint that cannot hold is said, and lifted
   for (const { handle, why } of stage.edit.lifted)
@@ -142,6 +144,7 @@ export async function openScene(stage, scene, params, options) {
     const key = stage.player.playableKey();
     if (key) stage.player.toggle(key);
   }
+  return true;
 }
 
 /**
@@ -165,12 +168,14 @@ export async function openTask(stage, task, scene, state) {
   stage.exercise.take(task);
   const kept = Object.fromEntries(Object.entries(state.params ?? {}).filter(([k]) => task.change.includes(k)));
   const input = task.change.includes('handles') && state.input ? state.input : stage.exercise.input;
-  await openScene(
+  const shown = await openScene(
     stage,
     scene,
     { ...withChoices(scene, task.params), ...kept },
     { camera: state.camera ?? null, input, notes: state.notes ?? [], task: true },
   );
+  // (another opening, begun while this one was in its steps, has the stage now)
+  if (!shown || stage.task !== task) return;
   stage.exercise.panel.show(task, state.attempt ?? null);
   // the exercise is at the top of the panel: a panel scrolled down for the figure before shows it
   stage.els.panel.scrollTop = 0;

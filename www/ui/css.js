@@ -105,8 +105,9 @@ export const CSS = `
 .rl-paper[hidden] { display: none; }
 .rl-paper h3 { font-size: .95rem; margin: 0; }
 .rl-paper .rl-paper-toggle { all: unset; box-sizing: border-box; display: block; width: 100%; cursor: pointer; min-height: 24px; padding: .1rem 0 .35rem; font-weight: 700; }
-.rl-paper .rl-paper-toggle::before { content: "▸ "; font-weight: 400; }
-.rl-paper .rl-paper-toggle[aria-expanded=true]::before { content: "▾ "; }
+/* (the arrows are not part of the button's name: an empty alternative text where browsers take one) */
+.rl-paper .rl-paper-toggle::before { content: "▸ "; content: "▸ " / ""; font-weight: 400; }
+.rl-paper .rl-paper-toggle[aria-expanded=true]::before { content: "▾ "; content: "▾ " / ""; }
 .rl-paper .rl-paper-toggle:focus-visible { outline: 3px solid var(--focus); outline-offset: 2px; }
 .rl-paper .rl-paper-toggle[aria-expanded=false] { padding-bottom: .1rem; }
 .rl-paper blockquote { margin: 0 0 .45rem; padding-left: .6rem; border-left: 3px solid #8a8f99; font-style: italic; }

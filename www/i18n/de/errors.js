@@ -23,7 +23,7 @@ export default {
   'error.code.freed': 'Dieses Objekt ist bereits freigegeben',
   'error.code.invalid-state': 'Dieses Objekt ist mit einem anderen Aufruf beschäftigt',
   'error.code.not-loaded':
-    'Ein Teil der Seite konnte nicht geladen werden (die Verbindung?): bitte noch einmal versuchen',
+    'Ein Teil der Seite konnte nicht geladen werden (die Verbindung?): bitte noch einmal versuchen oder die Seite neu laden',
   'error.code.no-webgl2': 'Dieser Browser bietet kein WebGL2',
   'error.code.unknown': 'Etwas ist schiefgegangen',
   'error.what.rulings': 'Erzeugende',

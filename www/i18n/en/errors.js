@@ -25,7 +25,7 @@ export default {
   'error.code.singular': 'the system cannot be solved',
   'error.code.freed': 'this object has already been freed',
   'error.code.invalid-state': 'this object is busy with another call',
-  'error.code.not-loaded': 'a part of the page could not be loaded (the connection?): try again',
+  'error.code.not-loaded': 'a part of the page could not be loaded (the connection?): try again, or reload the page',
   'error.code.no-webgl2': 'this browser does not provide WebGL2',
   'error.code.unknown': 'something went wrong',
   // what the core counts
