@@ -177,9 +177,10 @@ export class Viewer {
     /** @internal @type {Array<(viewProj: Float32Array) => void>} what is placed over the view after each frame (the handles) */
     this.overlays = [];
     const gl = canvas.getContext('webgl2', {
-      // the frame target is multisampled (gl/target.js): the canvas's own buffer needs neither
+      // the frame target is multisampled (gl/target.js): the canvas's own buffer is not; its
+      // depth buffer serves a frame too large for a target (drawn straight onto the canvas)
       antialias: false,
-      depth: false,
+      depth: true,
       alpha: false,
       preserveDrawingBuffer: false,
     });

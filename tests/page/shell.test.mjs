@@ -215,14 +215,17 @@ test('the first frame of a view resolves the figure drawn before it, and shows w
     document.body.append(canvas, labels);
     const v = new Viewer(canvas, labels);
     /** How much of an image (a data: URL) differs from its first pixel, the background. */
-    const drawn = async (/** @type {string} */ src) => {
+    const pixels = async (/** @type {string} */ src) => {
       const img = new Image();
       img.src = src;
       await img.decode();
       const out = Object.assign(document.createElement('canvas'), { width: img.width, height: img.height });
       const ctx = /** @type {CanvasRenderingContext2D} */ (out.getContext('2d'));
       ctx.drawImage(img, 0, 0);
-      const px = ctx.getImageData(0, 0, img.width, img.height).data;
+      return ctx.getImageData(0, 0, img.width, img.height).data;
+    };
+    const drawn = async (/** @type {string} */ src) => {
+      const px = await pixels(src);
       let other = 0;
       for (let i = 0; i < px.length; i += 4) if (px[i] !== px[0] || px[i + 1] !== px[1] || px[i + 2] !== px[2]) other++;
       return other / (px.length / 4);
@@ -255,7 +258,13 @@ test('the first frame of a view resolves the figure drawn before it, and shows w
       const refused = v.target.bind(largest + 1, 4) === false && gl.getParameter(gl.FRAMEBUFFER_BINDING) === null;
       v.target.bind = () => false;
       v.render();
-      const direct = await drawn(canvas.toDataURL());
+      const straight = canvas.toDataURL();
+      const direct = await drawn(straight);
+      // the same picture but for antialiasing: what is hidden stays hidden (the canvas's depth)
+      const [a, b] = [await pixels(shown.image), await pixels(straight)];
+      let apart = 0;
+      for (let i = 0; i < a.length; i += 4)
+        if (Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) > 64) apart++;
       return {
         before: shown.draws,
         after: counted,
@@ -263,6 +272,7 @@ test('the first frame of a view resolves the figure drawn before it, and shows w
         covered: await drawn(shown.image),
         refused,
         direct,
+        apart: apart / (a.length / 4),
       };
     } finally {
       v.dispose();
@@ -276,6 +286,7 @@ test('the first frame of a view resolves the figure drawn before it, and shows w
   assert.ok(seen.same, 'the first frame shows what a frame drawn anew shows');
   assert.ok(seen.refused, 'a framebuffer larger than the GPU allows was not refused');
   assert.ok(seen.direct > 0.05, `drawn without a target, the figure is not there (${seen.direct})`);
+  assert.ok(seen.apart < 0.02, `drawn without a target, ${(seen.apart * 100).toFixed(1)} % of the pixels differ`);
   assert.deepEqual(problems, []);
   await page.close();
 });
