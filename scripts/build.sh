@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the package into pkg/ (release wasm with LTO, wasm-bindgen --target web, wasm-opt;
 # skipped when pkg/ is newer than the compiled wasm; pkg/catalogue.js, the catalogue's formula
-# texts for the page; pkg/zip.js, fflate's zip writer and reader as one module; pkg/view/, the declarations of ruledlab/view generated from www/'s JSDoc),
+# texts for the page; pkg/zip.js, fflate's zip writer and reader as one module; pkg/scorm-schemas.js, the schema files a SCORM package carries; pkg/view/, the declarations of ruledlab/view generated from www/'s JSDoc),
 # the one-file builds into dist/ and the production page into dist/web/ (bundled, minified,
 # split, hashed, precompressed: scripts/web.mjs).
 set -euo pipefail
@@ -14,6 +14,7 @@ if [ pkg/ruledlab_bg.wasm -nt "$raw" ] && [ pkg/ruledlab.js -nt "$raw" ]; then
   echo "build: pkg/ is up to date"
   [ pkg/catalogue.js -nt pkg/ruledlab_bg.wasm ] || node scripts/catalogue.mjs
   node scripts/zip.mjs
+  node scripts/scorm-schemas.mjs
   node scripts/view-types.mjs
   node scripts/onefile.mjs
   node scripts/web.mjs
@@ -28,6 +29,7 @@ gz=$(gzip -9 -c pkg/ruledlab_bg.wasm | wc -c)
 echo "build: pkg/ruledlab_bg.wasm $((size / 1024)) KiB, $((gz / 1024)) KiB gzipped"
 node scripts/catalogue.mjs
 node scripts/zip.mjs
+node scripts/scorm-schemas.mjs
 node scripts/view-types.mjs
 node scripts/onefile.mjs
 node scripts/web.mjs

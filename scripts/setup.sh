@@ -5,7 +5,8 @@
 # xvfb, geckodriver, cargo-fuzz, LinuxCNC's G-code interpreter rs274 (Debian's linuxcnc-uspace
 # without its recommends: just under a minute and ~85 packages, Tcl/Tk and Python among them; with
 # the recommends it would pull a realtime kernel), and the programs the figure exports are checked
-# with: LaTeX (pdflatex and lualatex with TikZ), poppler's pdftoppm and librsvg's rsvg-convert.
+# with: LaTeX (pdflatex and lualatex with TikZ), poppler's pdftoppm and librsvg's rsvg-convert, and
+# libxml2-utils' xmllint, which validates the SCORM manifests.
 # With --browser or --docs also mdBook, which builds the book (scripts/docs.sh). With --browser
 # also a Python virtual environment .venv/ (JupyterLab, anywidget, NumPy, pytest, setuptools from
 # PyPI) for the notebook widget in python/ and its test in a real JupyterLab.
@@ -82,6 +83,13 @@ if [ "${1:-}" = "--browser" ]; then
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=900 \
       texlive-latex-base texlive-pictures texlive-luatex texlive-latex-recommended poppler-utils librsvg2-bin >/dev/null
+  fi
+  # xmllint validates the SCORM manifests against the ADL/IMS schemas they carry (tests/node/course.test.mjs)
+  if ! command -v xmllint >/dev/null; then
+    say "installing Debian's libxml2-utils (xmllint)"
+    sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends -o DPkg::Lock::Timeout=900 libxml2-utils >/dev/null
   fi
   if ! command -v geckodriver >/dev/null; then
     say "installing geckodriver 0.37 from crates.io (about two minutes once)"

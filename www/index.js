@@ -48,6 +48,7 @@ export { builtInTasks, builtInTask } from './task/builtin.js';
  * @typedef {import('./camera.js').OrbitCamera} OrbitCamera
  * @typedef {import('./stage/options.js').StageOptions} StageOptions
  * @typedef {import('./stage/options.js').OpenOptions} OpenOptions
+ * @typedef {import('./task/panel.js').SolutionRule} SolutionRule
  * @typedef {import('./stage/options.js').Notes} Notes
  * @typedef {import('./export/svg.js').FigureOptions} FigureOptions
  * @typedef {import('./ruled-view-events.js').SceneChangeDetail} SceneChangeDetail

@@ -123,6 +123,8 @@ export const MAX_TASK_NUMBER = 1e12;
 export const MAX_TASK_ANSWERS = 3;
 export const MAX_TASK_GOAL = 6;
 export const MAX_TASK_HINTS = 3;
+/** The most checks a lecturer may ask for before the solution is offered (task/solution-rule.js). */
+export const MAX_SOLUTION_AFTER = 9;
 /** Points at which a typed curve is compared with the exact one, by default and at most. */
 export const TASK_SAMPLES = 50;
 export const MAX_TASK_SAMPLES = 1000;

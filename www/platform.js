@@ -138,3 +138,10 @@ export function keep(/** @type {string} */ key, /** @type {string} */ value) {
     return false;
   }
 }
+
+/** Forgets what is kept under `key` (nothing where there is no storage). */
+export function forget(/** @type {string} */ key) {
+  try {
+    lasting()?.removeItem(key);
+  } catch {}
+}

@@ -1,6 +1,6 @@
 // The events of <ruled-view> and what each carries (types only; ruled-view.js fires them, the
 // package's declarations name them): scene-change, view-change, camera-change, error, input and
-// change of the reader's edits, task-check and task-solved of an exercise, and what handles()
+// change of the reader's edits, task-check, task-solved and task-solution of an exercise, and what handles()
 // returns.
 
 /**
@@ -40,6 +40,7 @@
  * @typedef {object} RuledViewEvents       the events of <ruled-view> and their details
  * @property {CustomEvent<import('./task/panel.js').TaskReport>} task-check   how an exercise stands after a check
  * @property {CustomEvent<import('./task/panel.js').TaskReport>} task-solved   … the first time it is solved
+ * @property {CustomEvent<import('./task/panel.js').TaskReport>} task-solution   the solution was shown (`counted` false: it earns nothing)
  * @property {CustomEvent<EditDetail>} input
  * @property {CustomEvent<EditDetail>} change
  * @property {CustomEvent<SceneChangeDetail>} scene-change

@@ -18,9 +18,11 @@
 // rulings or congruence in the "data" scene. `height` sizes the element (pixels or a CSS length,
 // without an inline style a strict Content-Security-Policy would refuse). `handles()` lists every handle with its position
 // in the element. `task` shows an exercise (a built-in one's id, or the page's "j." link value;
-// the book's "Exercises"), `seed` the seed of its drawn numbers, `leave` offers to leave it;
-// `task-check` and `task-solved` report how it stands (also posted to the parent window of a
-// frame), `exercise` lets a program check, show the solution, start over. Events: `input` during a drag and `change` at its end (detail: { scene, data,
+// the book's "Exercises"), `seed` the seed of its drawn numbers, `leave` offers to leave it,
+// `solution` says when its solution is offered ("never", or after how many checks that did not
+// solve it; default 1); `task-check` and `task-solved` report how it stands, `task-solution` that
+// the solution was shown (it counts for nothing, nor does a check after it: `counted` false; also
+// posted to the parent window of a frame), `exercise` lets a program check, show the solution, start over. Events: `input` during a drag and `change` at its end (detail: { scene, data,
 // readouts }), `scene-change` (detail: { scene, params }), `view-change` (detail: the
 // camera, during a move), `camera-change` (detail: { camera, yaw, pitch, distance, target },
 // once a move ends; `camera` is the attribute's value), `error` (detail: { message, code },
@@ -28,6 +30,8 @@
 // wasm core before it reads anything that needs it, so it works as the first ruledlab code on
 // a page. Disconnecting the element releases its WebGL context and every wasm object it made.
 import { Stage } from './stage.js';
+import { DEFAULT_SOLUTION_RULE, readSolutionRule } from './task/solution-rule.js';
+import { MAX_SOLUTION_AFTER } from './limits.js';
 import { SCENES } from './scenes/index.js';
 import { readParams, readSome, defaults } from './scene.js';
 import { readCamera, writeCamera } from './state.js';
@@ -81,6 +85,7 @@ export class RuledView extends HTMLElement {
     'task',
     'seed',
     'leave',
+    'solution',
   ];
 
   constructor() {
@@ -340,6 +345,7 @@ export class RuledView extends HTMLElement {
       // Leave, where the attribute allows it: the scene without the exercise
       onLeaveTask: () => this.stage?.openTask(null),
       mayLeaveTask: () => this.hasAttribute('leave'),
+      solutionRule: () => readSolutionRule(this.getAttribute('solution')) ?? DEFAULT_SOLUTION_RULE,
       onEditAsData: (data) => {
         this.data = data;
       },
@@ -403,7 +409,7 @@ export class RuledView extends HTMLElement {
     if (name === 'height') return this.sized();
     if (!this.stage || before === after) return;
     if (['scene', 'params', 'paper', 'task', 'seed'].includes(name)) this.open();
-    else if (name === 'leave') this.stage.exercise.panel.render();
+    else if (name === 'leave' || name === 'solution') this.stage.exercise.panel.render();
     else if (name === 'controls' || name === 'text') this.stage.setPanel(this.controls, this.text);
     else if (name === 'editable') this.stage.setEditable(this.editable);
     else if (name === 'input') {
@@ -469,6 +475,12 @@ export class RuledView extends HTMLElement {
           if (this.hasAttribute('input') && !input) notes.push({ key: 'input', note: 'element.note.badInput' });
           const { seed, note } = linkSeed(this.getAttribute('seed'), 'element.note');
           if (note) notes.push(note);
+          if (this.hasAttribute('solution') && !readSolutionRule(this.getAttribute('solution')))
+            notes.push({
+              key: 'solution',
+              note: 'element.note.badSolution',
+              vars: { max: String(MAX_SOLUTION_AFTER) },
+            });
           // an exercise: its scene and start (the element's scene and params are its own then)
           return openView(stage, {
             scene,

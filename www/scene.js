@@ -214,6 +214,7 @@ export const RESERVED_KEYS = Object.freeze([
   'task',
   'seed',
   'leave',
+  'solution',
 ]);
 
 /**

@@ -114,7 +114,6 @@ export class Stage {
     this.edit = new EditHost(this);
     /** @internal */
     this.shortcuts = new Shortcuts(this);
-
     // (turning the view changes no number: the readout is not said again)
     this.viewer.onCameraChange = (ended) => this.report('camera', ended);
     wireToolbar(this);
@@ -362,7 +361,8 @@ export class Stage {
   reset() {
     if (!this.scene) return;
     if (this.task) {
-      this.exercise.panel.show(this.task);
+      // as Start over: the answers go, the attempt's checks and a solution shown stay
+      this.exercise.panel.show(this.task, { checks: this.exercise.panel.checks, shown: this.exercise.panel.shown });
       return this.startTask();
     }
     this.player.stop();

@@ -26,6 +26,8 @@ import { MAX_HASH, MAX_LINK_RULINGS } from './limits.js';
  * @property {string | null} [seed]     the seed of the exercise's drawn numbers, as the link writes it
  *   (task/format.js's readSeed says whether it is one)
  * @property {boolean} [leave]          with #embed: the reader may leave the exercise
+ * @property {string | null} [solution] when the exercise's solution is offered: "never", or after how
+ *   many checks that did not solve it (task/solution-rule.js; absent: after a first one)
  * @property {Array<{key: string, note: string, vars?: Record<string, string>}>} notes   values that were not used, and why
  * @property {string | null} [paper]    the figure or example of the paper shown (paper.js), if any
  */
@@ -79,6 +81,7 @@ export function readState(hash, scenes) {
     task: q.get('task'),
     seed: q.get('seed'),
     leave: q.has('leave'),
+    solution: q.get('solution'),
     notes,
     paper: paper?.id ?? null,
   };
@@ -98,6 +101,7 @@ export function writeState(state, { wholeInput = false } = {}) {
   if (state.embed && state.leave) q.set('leave', '');
   if (state.task) q.set('task', state.task);
   if (state.task && state.seed) q.set('seed', state.seed);
+  if (state.task && state.solution) q.set('solution', state.solution);
   if (state.paper) q.set('paper', state.paper);
   q.set('scene', state.scene.id);
   for (const p of state.scene.params) q.set(p.key, serialize(p, state.params[p.key]));

@@ -82,11 +82,13 @@ test('what ruledlab/view ships imports nothing of the page’s shell (www/page/,
   assert.ok(pkg.files.includes('!www/page/'), 'package.json ships www/page/');
 });
 
-test('no file of www/ over 600 lines; the stage and its parts under 400', () => {
+// (sized by concept: a file is as long as its one concept needs; 800 lines is where one file
+// stops being readable in one sitting)
+test('no file of www/ over 800 lines; the stage and its parts under 400', () => {
   const long = [];
   for (const m of graph().keys()) {
     const lines = readFileSync(join(WWW, m), 'utf8').split('\n').length;
-    const limit = m === 'stage.js' || m.startsWith('stage/') ? 400 : 600;
+    const limit = m === 'stage.js' || m.startsWith('stage/') ? 400 : 800;
     if (lines > limit) long.push(`${m}: ${lines} lines (at most ${limit})`);
   }
   assert.deepEqual(long, []);

@@ -14,14 +14,27 @@ import { scormPackage, h5pPackage, readH5p, readScorm, readZip, makeZip, H5P_FOL
 import { H5P_PATCH } from '../../www/course/h5p-package.js';
 import { h5pExercise } from '../../www/course/h5p-exercise.js';
 import { scormValues, decimal, timespan, moment, findRuntime } from '../../www/page/scorm.js';
+import { readSuspend, writeSuspend } from '../../www/page/suspend.js';
+import { readSolutionRule, writeSolutionRule } from '../../www/task/solution-rule.js';
+import { SCORM2004_SCHEMAS } from '../../pkg/scorm-schemas.js';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { readTask, writeTask, readSeed, linkSeed } from '../../www/task/format.js';
 import { drawTask, drawChoices, drawnValues } from '../../www/task/draw.js';
 import { readAttempt, bestCheck } from '../../www/task/attempt.js';
-import { builtInTask } from '../../www/task/builtin.js';
+import { builtInTask, builtInTasks } from '../../www/task/builtin.js';
 import { fitTask } from '../../www/task/check.js';
 import { SCENES } from '../../www/scenes/index.js';
 import { withChoices } from '../../www/scene.js';
-import { MAX_PACKAGE_BYTES, SCORM12_RESPONSE } from '../../www/limits.js';
+import {
+  MAX_PACKAGE_BYTES,
+  MAX_SOLUTION_AFTER,
+  MAX_TASK_HISTORY,
+  SCORM12_RESPONSE,
+  SCORM12_SUSPEND,
+} from '../../www/limits.js';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const PAGE = readFileSync(`${ROOT}dist/ruledlab.html`, 'utf8');
@@ -173,9 +186,23 @@ test('an attempt read back from storage or a course system keeps what is one and
       { at: 1, passed: 0, of: 1 },
       { at: 2, passed: 1, of: 1 },
     ],
+    shown: false,
   };
   assert.deepEqual(readAttempt(JSON.parse(JSON.stringify(good))), good);
   assert.equal(bestCheck(good)?.at, 2);
+  // a solution shown, and every check after it, count for nothing: the best stays the one before
+  const shown = readAttempt({
+    ...good,
+    checks: [
+      { at: 1, passed: 0, of: 1 },
+      { at: 2, passed: 1, of: 1, shown: 'solution' },
+      { at: 3, passed: 1, of: 1, shown: 'after' },
+    ],
+  });
+  assert.equal(shown?.shown, true, 'a check marked as made after the solution says the solution was shown');
+  assert.deepEqual(bestCheck(shown), { at: 1, passed: 0, of: 1 });
+  assert.equal(bestCheck({ checks: [{ at: 2, passed: 1, of: 1, shown: 'solution' }] }), null);
+  assert.equal(readAttempt({ checks: [{ at: 1, passed: 0, of: 1, shown: 'bogus' }] })?.checks[0].shown, undefined);
   assert.equal(readAttempt('x'), null);
   assert.equal(readAttempt([1]), null);
   const hostile = readAttempt({
@@ -193,6 +220,7 @@ test('an attempt read back from storage or a course system keeps what is one and
     answers: { u: '<b>bold</b>' },
     hints: 0,
     checks: [{ at: 3, passed: 1, of: 2 }],
+    shown: false,
   });
 });
 
@@ -247,8 +275,51 @@ test('what the package’s page writes to a SCORM runtime, in the formats SCORM 
     ['1', '2', '0.5'],
   );
   assert.deepEqual([v12['cmi.objectives.0.score.raw'], v12['cmi.objectives.0.score.max']], ['1', '2']);
-  assert.equal(v2004['cmi.completion_status'], 'completed');
-  assert.equal(v2004['cmi.success_status'], 'failed');
+  // the attempt stays open until every exercise is solved or she ends it (a course system treats
+  // "completed", "passed" and "failed" as finished and opens the next launch for review)
+  assert.equal(v2004['cmi.completion_status'], 'incomplete');
+  assert.equal(v2004['cmi.success_status'], 'unknown');
+  assert.equal(v2004['cmi.objectives.0.success_status'], 'unknown');
+  assert.equal(v2004['cmi.objectives.1.success_status'], 'passed');
+  const ended = Object.fromEntries(
+    scormValues('2004', [tasks[0], { ...tasks[1], best: { passed: 1, of: 1 } }], [], {
+      seconds: 5,
+      now: when,
+      ended: true,
+    }),
+  );
+  assert.deepEqual(
+    [ended['cmi.completion_status'], ended['cmi.success_status'], ended['cmi.progress_measure']],
+    ['completed', 'failed', '1'],
+  );
+  const ended12 = Object.fromEntries(scormValues('1.2', tasks, [], { seconds: 5, now: when, ended: true }));
+  assert.equal(ended12['cmi.core.lesson_status'], 'failed');
+  const solvedAll = (/** @type {'1.2' | '2004'} */ v) =>
+    Object.fromEntries(
+      scormValues(
+        v,
+        [
+          { ...tasks[0], best: { passed: 2, of: 2 } },
+          { ...tasks[1], best: { passed: 1, of: 1 } },
+        ],
+        [],
+        {
+          seconds: 5,
+          now: when,
+        },
+      ),
+    );
+  assert.equal(solvedAll('1.2')['cmi.core.lesson_status'], 'passed');
+  assert.deepEqual(
+    [solvedAll('2004')['cmi.completion_status'], solvedAll('2004')['cmi.success_status']],
+    ['completed', 'passed'],
+  );
+  // a condition checked with the solution shown (or after it): recorded as neutral, in both
+  const shownTasks = [{ ...tasks[0], conditions: tasks[0].conditions.map((c) => ({ ...c, shown: true })) }];
+  const n12 = Object.fromEntries(scormValues('1.2', shownTasks, [], { seconds: 5, now: when }));
+  const n2004 = Object.fromEntries(scormValues('2004', shownTasks, [], { seconds: 5, now: when }));
+  assert.deepEqual([n12['cmi.interactions.0.result'], n12['cmi.interactions.1.result']], ['neutral', 'neutral']);
+  assert.deepEqual([n2004['cmi.interactions.0.result'], n2004['cmi.interactions.1.result']], ['neutral', 'neutral']);
   assert.equal(v2004['cmi.interactions.1.type'], 'other');
   assert.equal(v2004['cmi.interactions.1.result'], 'incorrect');
   assert.equal(v2004['cmi.interactions.0.learner_response'], '0.5');
@@ -279,7 +350,11 @@ test('a SCORM package from Node: its manifest, its launch file set to the exerci
     },
   );
   const files = unzipSync(zip);
-  assert.deepEqual(Object.keys(files).sort(), ['imsmanifest.xml', 'index.html']);
+  // the manifest, the schema files it names (the standard's: SCORM 2004 4th edition's), the page
+  assert.deepEqual(
+    Object.keys(files).sort(),
+    ['imsmanifest.xml', 'index.html', ...Object.keys(SCORM2004_SCHEMAS)].sort(),
+  );
   const manifest = strFromU8(files['imsmanifest.xml']);
   assert.match(manifest, /<schemaversion>2004 4th Edition<\/schemaversion>/);
   assert.match(manifest, /adlcp:scormType="sco" href="index.html"/);
@@ -384,4 +459,193 @@ test('an .h5p file from Node: H5P’s files, the library at ruledlab’s version
     reason(() => readH5p(makeZip({ 'h5p.json': '{"mainLibrary":"H5P.Other"}', 'content/content.json': '{}' }))),
     'course.error.notH5p',
   );
+});
+
+/**
+ * xmllint's verdict on the manifest in `dir`, against the schemas its xsi:schemaLocation names (as
+ * a validating course system reads it: one schema importing each namespace from its location, no
+ * network); what xmllint writes to stderr ("… validates" or the errors).
+ */
+function validate(/** @type {string} */ dir) {
+  const manifest = readFileSync(join(dir, 'imsmanifest.xml'), 'utf8');
+  const pairs = (/xsi:schemaLocation="([^"]*)"/.exec(manifest)?.[1] ?? '').trim().split(/\s+/);
+  const imports = [];
+  for (let k = 0; k + 1 < pairs.length; k += 2)
+    imports.push(`<xsd:import namespace="${pairs[k]}" schemaLocation="${pairs[k + 1]}"/>`);
+  writeFileSync(
+    join(dir, 'all.xsd'),
+    `<?xml version="1.0"?><xsd:schema xmlns:xsd="http://www.w3.org/2001/XMLSchema" targetNamespace="urn:ruledlab:all">${imports.join('')}</xsd:schema>`,
+  );
+  const run = spawnSync('xmllint', ['--noout', '--nonet', '--schema', 'all.xsd', 'imsmanifest.xml'], {
+    cwd: dir,
+    encoding: 'utf8',
+  });
+  return { ok: run.status === 0, said: run.stderr, located: pairs.filter((_, k) => k % 2 === 1) };
+}
+
+test('the manifests validate against the ADL/IMS schemas they carry (xmllint), SCORM 1.2 and 2004', async () => {
+  for (const standard of /** @type {const} */ (['scorm12', 'scorm2004'])) {
+    const zip = await scormPackage(['torsal-pair', EXERCISE], { standard, page: PAGE, title: 'A <set> & “more”' });
+    const dir = mkdtempSync(join(tmpdir(), 'ruledlab-scorm-'));
+    for (const [name, data] of Object.entries(unzipSync(zip))) writeFileSync(join(dir, name), data);
+    const { ok, said, located } = validate(dir);
+    assert.ok(ok, `${standard}: ${said}`);
+    assert.match(said, /imsmanifest\.xml validates/);
+    // every schema the manifest names by location is in the package, the content-packaging one first
+    assert.equal(located[0], standard === 'scorm12' ? 'imscp_rootv1p1p2.xsd' : 'imscp_v1p1.xsd');
+    for (const file of located) assert.ok(unzipSync(zip)[file], `${standard}: ${file} is in the package`);
+  }
+  // a manifest that breaks its schema is caught (the check can fail)
+  const dir = mkdtempSync(join(tmpdir(), 'ruledlab-scorm-'));
+  const zip = await scormPackage(['torsal-pair'], { page: PAGE });
+  for (const [name, data] of Object.entries(unzipSync(zip))) writeFileSync(join(dir, name), data);
+  writeFileSync(
+    join(dir, 'imsmanifest.xml'),
+    strFromU8(unzipSync(zip)['imsmanifest.xml']).replace('adlcp:scormtype="sco"', 'adlcp:scormtype="lesson"'),
+  );
+  const broken = validate(dir);
+  assert.equal(broken.ok, false);
+  assert.match(broken.said, /scormtype/);
+});
+
+test('suspend_data: compact, read back as written (and in its first form), under SCORM 1.2’s 4096 characters after 50 checks of the largest exercise', () => {
+  const ids = ['torsal-pair', 'chaikin-count'];
+  /** @type {any} */
+  const a = readAttempt({
+    seed: 7,
+    params: { n: 40 },
+    input: 'rulings.AAAA',
+    answers: { count: '26' },
+    hints: 2,
+    checks: [
+      { at: 1_765_000_000_000, passed: 0, of: 1 },
+      { at: 1_765_000_060_000, passed: 1, of: 1, shown: 'solution' },
+    ],
+  });
+  const text = writeSuspend(
+    { seed: 7, at: 1, ended: true, order: ['chaikin-count.c1', 'torsal-pair.c2'], attempts: [null, a] },
+    ids,
+    4096,
+    bestCheck,
+  );
+  const back = readSuspend(text, ids);
+  assert.deepEqual(
+    [back?.seed, back?.at, back?.ended, back?.order],
+    [7, 1, true, ['chaikin-count.c1', 'torsal-pair.c2']],
+  );
+  const read = readAttempt(back?.attempts[1]);
+  assert.deepEqual({ ...read, seed: 7 }, a, 'the attempt comes back as it went');
+  assert.equal(readAttempt(back?.attempts[0]), null);
+  // the first form, as packages wrote it before
+  const v1 = JSON.stringify({
+    v: 1,
+    seed: 3,
+    at: 0,
+    i: ['torsal-pair.c1'],
+    a: [{ answers: { x: '1' }, checks: [{ at: 5, passed: 1, of: 1 }] }],
+  });
+  const old = readSuspend(v1, ids);
+  assert.deepEqual([old?.seed, old?.at, old?.order], [3, 0, ['torsal-pair.c1']]);
+  assert.deepEqual(readAttempt(old?.attempts[0])?.checks, [{ at: 5, passed: 1, of: 1 }]);
+  assert.equal(readSuspend('not json', ids), null);
+  assert.equal(readSuspend('[1]', ids), null);
+  // the largest built-in exercise (most conditions, an edit of its points, answers): 50 checks in
+  // a package of all twelve it may hold — the history keeps MAX_TASK_HISTORY, the rest is trimmed
+  const all = builtInTasks().slice(0, 12);
+  const big = all.map((task) => {
+    const checks = Array.from({ length: 50 }, (_, k) => ({
+      at: 1_765_000_000_000 + k * 61_000,
+      passed: k % (task.goal.length + 1),
+      of: task.goal.length,
+    }));
+    return readAttempt({
+      seed: 4_000_000_000,
+      params: Object.fromEntries(task.change.filter((c) => c !== 'handles').map((c) => [c, 12.345678])),
+      input: task.input ?? null,
+      answers: Object.fromEntries(
+        task.answers.map((x) => [x.id, x.kind === 'curve' ? ['u*cos(u)', 'u*sin(u)', '2*u'] : '1.2345678']),
+      ),
+      hints: task.hints.length,
+      checks: checks.slice(-MAX_TASK_HISTORY),
+    });
+  });
+  const order = all.flatMap((task) => task.goal.map((_, j) => `${task.id}.c${j + 1}`));
+  const packed = writeSuspend(
+    { seed: 4_000_000_000, at: 0, ended: false, order, attempts: big },
+    all.map((t) => t.id),
+    SCORM12_SUSPEND,
+    bestCheck,
+  );
+  assert.ok(packed.length <= SCORM12_SUSPEND, `${packed.length} characters`);
+  // and what stays is read back: the best check of each exercise, the exercise shown's edit
+  const kept = readSuspend(
+    packed,
+    all.map((t) => t.id),
+  );
+  for (let k = 0; k < all.length; k++) assert.deepEqual(bestCheck(readAttempt(kept?.attempts[k])), bestCheck(big[k]));
+  assert.equal(readAttempt(kept?.attempts[0])?.input, big[0]?.input ?? null);
+  // one exercise alone keeps every one of its last MAX_TASK_HISTORY checks
+  const one = writeSuspend(
+    { seed: 1, at: 0, ended: false, order: [], attempts: [big[0]] },
+    [all[0].id],
+    SCORM12_SUSPEND,
+    bestCheck,
+  );
+  assert.equal(readAttempt(readSuspend(one, [all[0].id])?.attempts[0])?.checks.length, MAX_TASK_HISTORY);
+});
+
+test('when the solution may be shown: "never" or a number of checks, read and written the same way everywhere', () => {
+  assert.deepEqual(readSolutionRule('never'), { after: null });
+  assert.deepEqual(readSolutionRule('0'), { after: 0 });
+  assert.deepEqual(readSolutionRule(String(MAX_SOLUTION_AFTER)), { after: MAX_SOLUTION_AFTER });
+  for (const bad of ['', '-1', '1.5', String(MAX_SOLUTION_AFTER + 1), 'always', '1e1', null, undefined])
+    assert.equal(readSolutionRule(/** @type {any} */ (bad)), null, String(bad));
+  assert.equal(writeSolutionRule({ after: 1 }), null, 'the default is not written');
+  assert.equal(writeSolutionRule({ after: null }), 'never');
+  assert.equal(writeSolutionRule({ after: 3 }), '3');
+});
+
+test('H5P’s own rules: every content field is one semantics.json names, the library holds only files H5P allows, a problem set plays its exercises', async () => {
+  const bytes = await h5pPackage(['torsal-pair', 'chaikin-count', EXERCISE], {
+    script: EMBED,
+    title: 'Set 1',
+    readers: { leave: true, solution: null, controls: true, edit: true, text: false },
+    draw: 'learner',
+  });
+  const files = unzipSync(bytes);
+  const content = JSON.parse(strFromU8(files['content/content.json']));
+  const semantics = JSON.parse(strFromU8(files[`${H5P_FOLDER}/semantics.json`]));
+  /** Every key of `value` is a field of `fields` (H5P drops the others: H5PContentValidator::validateGroup). */
+  const covered = (/** @type {any} */ value, /** @type {any[]} */ fields, /** @type {string} */ where) => {
+    for (const [key, v] of Object.entries(value)) {
+      const field = fields.find((f) => f.name === key);
+      assert.ok(field, `${where}${key} is in semantics.json`);
+      if (field.type === 'group') covered(v, field.fields, `${where}${key}.`);
+      if (field.type === 'list')
+        for (const x of /** @type {unknown[]} */ (v))
+          assert.equal(typeof x, field.field.type === 'text' ? 'string' : typeof x);
+      if (field.type === 'select')
+        assert.ok(
+          field.options.some((/** @type {any} */ o) => o.value === v),
+          `${where}${key} = ${v} is an option`,
+        );
+    }
+  };
+  covered(content, semantics, '');
+  assert.deepEqual(content.readers, { controls: true, text: false, edit: true, leave: true, solution: 'never' });
+  assert.equal(content.draw, 'learner');
+  assert.equal(content.more.length, 2);
+  // H5P's default whitelist for a library: its content list (json, images, …) and js, css, svg, xml — no wasm
+  const allowed = new Set(
+    'json png jpg jpeg gif bmp tif tiff eot ttf woff woff2 otf webm mp4 ogg mp3 m4a wav txt pdf rtf doc docx xls xlsx ppt pptx odt ods odp csv diff patch swf md textile vtt webvtt gltf glb js css svg xml'.split(
+      ' ',
+    ),
+  );
+  for (const name of Object.keys(files))
+    assert.ok(allowed.has(name.split('.').at(-1) ?? ''), `${name} is a file type H5P allows`);
+  assert.deepEqual(
+    readH5p(bytes).tasks.map((t) => t.id),
+    ['torsal-pair', 'chaikin-count', 'heisst-torsal'],
+  );
+  assert.equal(JSON.parse(strFromU8(files['h5p.json'])).title, 'Set 1');
 });

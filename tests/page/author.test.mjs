@@ -117,6 +117,11 @@ test('with the keyboard alone: a typed δ(u) and a parameter drawn per attempt; 
   await page.waitForTimeout(100);
   // for every number drawn the solution holds and the start does not: no warning
   assert.equal(await page.locator('.rl-author-warnings').isHidden(), true);
+  // the goal lists the answer as a condition too
+  assert.match(
+    await page.locator('.rl-author-goal .rl-author-answer-status').innerText(),
+    /your δ\(u\) agrees with the exact distribution parameter to within 10⁻⁶: the reader answers it; holds in the solution/,
+  );
   await tabTo(page, 'author-make', 80).catch(() => {});
   await page.getByRole('button', { name: 'Make the exercise' }).focus();
   await page.keyboard.press('Enter');
@@ -192,7 +197,9 @@ test('a typed number compared with a value the scene computes; the solution answ
   await page.locator('.rl-task-check').click();
   assert.match(await page.locator('.rl-task-results li').first().innerText(), /not right yet: too large/);
   await page.locator('.rl-task-solution').click();
-  assert.match(await page.locator('.rl-task-verdict').innerText(), /^✓ Solved/);
+  // the solution shown: the value filled in, every condition holding, and counted for nothing
+  assert.match(await page.locator('.rl-task-verdict').innerText(), /^Solution shown: it does not count/);
+  assert.equal(await page.locator('.rl-task-results li.rl-holds').count(), 1);
   assert.deepEqual(problems, []);
   await page.close();
 });
@@ -239,6 +246,11 @@ test('warnings with the values: the surface the prompt calls developable fails t
   await drawn.page.waitForTimeout(100);
   await drawn.page.getByRole('button', { name: 'Add a condition' }).click();
   await drawn.page.selectOption('[name="author-value-0"]', 'readout.midpointError');
+  // what a bound is compared with: the value over the numbers that can be drawn, not at N = 12 alone
+  const option = await drawn.page.locator('[name="author-value-0"] option:checked').innerText();
+  const range = /from ([\d.·⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+) to ([\d.·⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+) over the numbers drawn/.exec(option);
+  assert.ok(range, option);
+  assert.doesNotMatch(option, /now/);
   await drawn.page.locator('[name="author-bound-0"]').fill('0.012');
   await drawn.page.locator('[name="author-bound-0"]').dispatchEvent('change');
   await drawn.page.waitForTimeout(100);
@@ -274,6 +286,17 @@ test('Share’s options with the keyboard: the snippets carry what readers may d
   await page.waitForFunction(() => !/controls/.test(document.querySelector('#share-element')?.value ?? 'controls'));
   assert.doesNotMatch(await page.locator('#share-iframe').inputValue(), /controls/);
   await page.locator('[name="share-reader-controls"]').press('Space');
+  // what an exercise's snippets carry, said as it is: the exercise, not this view's camera
+  assert.match(
+    await page.locator('#share-dialog > p').first().innerText(),
+    /Each carries the exercise, the language and what readers may do/,
+  );
+  assert.match(await page.locator('label[for="share-link"]').innerText(), /Link to the exercise/);
+  // the solution never offered: the link, the iframe, the element and the packages carry it
+  await page.locator('[name="share-reader-solution"]').selectOption('never');
+  await page.waitForFunction(() => /solution=never/.test(document.querySelector('#share-link')?.value ?? ''));
+  assert.match(await page.locator('#share-iframe').inputValue(), /solution=never/);
+  assert.match(await page.locator('#share-element').inputValue(), / solution="never"/);
   assert.deepEqual(problems, []);
   await page.close();
 
@@ -384,4 +407,50 @@ test('axe-core finds no WCAG 2.1 A/AA violation in the author with answers, draw
   await exercise.page.locator('.rl-package-more summary').click();
   assert.deepEqual(await axe(exercise.page), [], 'Share on an exercise');
   await exercise.page.close();
+});
+
+test('the author’s fields never change under the caret: typed with pauses between keys and after Tab, 20 of 20 exported as typed', async () => {
+  const { page, problems } = await session.open('index.html#scene=striction&surface=quartic&n=12&exact=1');
+  await openAuthor(page);
+  await page.keyboard.type('Drawn');
+  await page.selectOption('[name="author-n"]', 'draw');
+  await page.locator('[name="author-draw-n-from"]').waitFor();
+  await page.getByRole('button', { name: 'Add a condition' }).click();
+  const runs = [];
+  for (let k = 0; k < 20; k++) {
+    const from = String(4 + (k % 5));
+    const to = String(16 + (k % 7));
+    const step = String(1 + (k % 3));
+    // as a person types: a key, a pause, Tab, a pause of her own (0 to 570 ms), the next field
+    await page.locator('[name="author-draw-n-from"]').focus();
+    await page.keyboard.press('Control+a');
+    await page.keyboard.type(from, { delay: 60 });
+    await page.keyboard.press('Tab');
+    await page.waitForTimeout(30 * (k % 20));
+    await page.keyboard.type(to, { delay: 40 + 10 * (k % 4) });
+    await page.keyboard.press('Tab');
+    await page.waitForTimeout(20 * ((k * 7) % 20));
+    await page.keyboard.type(step, { delay: 50 });
+    // and on into the goal's bound, which rebuilds the panel again
+    await page.keyboard.press('Tab');
+    await page.locator('[name="author-bound-0"]').focus();
+    await page.keyboard.press('Control+a');
+    await page.keyboard.type('0.5', { delay: 30 });
+    await page.keyboard.press('Tab');
+    await page.waitForTimeout(100);
+    await page.getByRole('button', { name: 'Make the exercise' }).click();
+    await page.waitForSelector('#author-json');
+    const json = JSON.parse(await page.locator('#author-json').inputValue());
+    runs.push([
+      JSON.stringify(json.draw.n),
+      JSON.stringify({ from: Number(from), to: Number(to), step: Number(step) }),
+    ]);
+  }
+  assert.deepEqual(
+    runs.filter(([got, want]) => got !== want),
+    [],
+    'every run exported as typed',
+  );
+  assert.deepEqual(problems, []);
+  await page.close();
 });

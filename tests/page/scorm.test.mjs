@@ -18,6 +18,11 @@ import { otherOrigin } from './places.mjs';
 import { unzipSync, strFromU8 } from '../../pkg/zip.js';
 import { scormPackage } from '../../www/course/scorm-package.js';
 import { readScorm } from '../../www/course/read.js';
+import { SCORM12_SCHEMAS } from '../../pkg/scorm-schemas.js';
+import { readSuspend } from '../../www/page/suspend.js';
+import { readAttempt } from '../../www/task/attempt.js';
+import { drawTask, seedOf } from '../../www/task/draw.js';
+import { builtInTask } from '../../www/task/builtin.js';
 
 const REPO = fileURLToPath(new URL('../..', import.meta.url));
 const ONEFILE = readFileSync(join(REPO, 'dist/ruledlab.html'), 'utf8');
@@ -108,7 +113,11 @@ test('SCORM 1.2 from Share: found by its manifest, failed and then solved with t
   ]);
   assert.equal(download.suggestedFilename(), 'chaikin-count-scorm12.zip');
   const bytes = new Uint8Array(readFileSync(/** @type {string} */ (await download.path())));
-  assert.deepEqual(Object.keys(unzipSync(bytes)).sort(), ['imsmanifest.xml', 'index.html']);
+  // the manifest, the schema files it names, the page
+  assert.deepEqual(
+    Object.keys(unzipSync(bytes)).sort(),
+    ['imsmanifest.xml', 'index.html', ...Object.keys(SCORM12_SCHEMAS)].sort(),
+  );
   assert.deepEqual(lecturer.problems, []);
   await lecturer.page.close();
 
@@ -130,7 +139,8 @@ test('SCORM 1.2 from Share: found by its manifest, failed and then solved with t
   await frame.locator('.rl-task-check').click();
   assert.match(await frame.locator('.rl-task-results li').first().innerText(), /too small/);
   let data = await cmi(page);
-  assert.equal(data.cmi.core.lesson_status, 'failed');
+  // the attempt stays open: "failed" would make a course system open the next launch for review
+  assert.equal(data.cmi.core.lesson_status, 'incomplete');
   assert.equal(data.cmi.core.score.raw, '0');
   assert.equal(data.cmi.core.score.max, '100');
   const interactions = async () =>
@@ -155,9 +165,9 @@ test('SCORM 1.2 from Share: found by its manifest, failed and then solved with t
   assert.deepEqual(data.cmi.interactions['0'].correct_responses, {});
   assert.equal(data.cmi.objectives['0'].id, 'chaikin-count');
   assert.equal(data.cmi.objectives['0'].status, 'passed');
-  const suspend = JSON.parse(data.cmi.suspend_data);
-  assert.equal(suspend.at, 0);
-  assert.equal(suspend.a[0].checks.length, 2);
+  const suspend = readSuspend(data.cmi.suspend_data, ['chaikin-count']);
+  assert.equal(suspend?.at, 0);
+  assert.equal(readAttempt(suspend?.attempts[0])?.checks.length, 2);
   assert.match(await frame.locator('.rl-course-status').innerText(), /1 of 1 conditions met.*Recorded/s);
   // nothing requested outside the package and the runtime
   assert.deepEqual(
@@ -171,7 +181,9 @@ test('SCORM 1.2 from Share: found by its manifest, failed and then solved with t
   await page.evaluate(() => localStorage.clear());
   data = await cmi(page);
   assert.equal(data.cmi.core.exit, '');
-  assert.match(data.cmi.core.session_time, /^\d{2,4}:\d\d:\d\d(\.\d\d)?$/);
+  // SCORM 1.2's CMITimespan: HHHH:MM:SS with one or two decimals of a second (RTE 3.4.2.2; the
+  // runtime may write its own; Moodle's scorm_12.js: ^([0-9]{2,4}):([0-9]{2}):([0-9]{2})(\.[0-9]{1,2})?$)
+  assert.match(data.cmi.core.session_time, /^\d{2,4}:\d\d:\d\d(\.\d{1,2})?$/);
   assert.deepEqual(problems, []);
   await page.close();
 
@@ -191,10 +203,10 @@ test('SCORM 1.2 from Share: found by its manifest, failed and then solved with t
   await back.page.close();
 });
 
-test('SCORM 2004 from the package’s function: two exercises as one activity, the score their sum; one solved by the controls, one failed; resumed where she left', async () => {
+test('SCORM 2004 from the package’s function: three exercises as one activity, the score their sum; one solved by the controls, one failed; resumed where she left', async () => {
   runtimes();
   // a program makes the package (Node, the one-file page given), in German
-  const bytes = await scormPackage(['striction-accuracy', 'chaikin-count'], {
+  const bytes = await scormPackage(['striction-accuracy', 'chaikin-count', 'coupled-strip'], {
     standard: 'scorm2004',
     page: ONEFILE,
     lang: 'de',
@@ -205,7 +217,7 @@ test('SCORM 2004 from the package’s function: two exercises as one activity, t
   const frame = await activity(page);
   assert.deepEqual(await page.evaluate(() => window.manifest), {
     schemaversion: '2004 4th Edition',
-    title: 'Wie viele Erzeugende für …? · Chaikins Punkte zählen',
+    title: 'Wie viele Erzeugende für …? · Chaikins Punkte zählen · Wann sich die Kopplung lohnt',
     scormtype: 'sco',
     href: 'index.html',
   });
@@ -213,7 +225,7 @@ test('SCORM 2004 from the package’s function: two exercises as one activity, t
   // the course bar: two exercises to choose, in German
   assert.deepEqual(
     (await frame.locator('[name="course-task"] option').allInnerTexts()).map((t) => t.replace(/ für .*\?/, ' für …?')),
-    ['1. Wie viele Erzeugende für …?', '2. Chaikins Punkte zählen'],
+    ['1. Wie viele Erzeugende für …?', '2. Chaikins Punkte zählen', '3. Wann sich die Kopplung lohnt'],
   );
   // exercise 1: her own start N and tolerance; she sets N = 100 with the control and checks
   const n = frame.locator('.rl-controls [name="n"]');
@@ -227,29 +239,40 @@ test('SCORM 2004 from the package’s function: two exercises as one activity, t
   await frame.locator('input[name="task-count"]').fill('1000');
   await frame.locator('.rl-task-check').click();
   assert.match(await frame.locator('.rl-task-results li').first().innerText(), /zu groß/);
+  // exercise 3: solved by its answer (n = 5)
+  await frame.locator('[name="course-task"]').selectOption('2');
+  await frame.locator('.rl-task h3', { hasText: 'Kopplung' }).waitFor();
+  await frame.locator('input[name="task-n"]').fill('5');
+  await frame.locator('.rl-task-check').click();
+  await frame.locator('.rl-task-verdict.rl-task-solved').waitFor();
   let data = (await cmi(page, '2004')).cmi;
+  // the score is the sum (2 of 3 conditions); the attempt stays open until all are solved or she ends it
   assert.deepEqual(
     [data.score.raw, data.score.max, data.score.scaled, data.completion_status, data.success_status],
-    ['50', '100', '0.5', 'completed', 'failed'],
+    ['66.67', '100', '0.6666667', 'incomplete', 'unknown'],
   );
   assert.deepEqual(
     Object.values(data.objectives).map((/** @type {any} */ o) => [o.id, o.success_status, o.score.raw]),
     [
       ['striction-accuracy', 'passed', '1'],
-      ['chaikin-count', 'failed', '0'],
+      ['chaikin-count', 'unknown', '0'],
+      ['coupled-strip', 'passed', '1'],
     ],
   );
   const inter = Object.values(data.interactions).map((/** @type {any} */ i) => [i.id, i.type, i.result]);
   assert.deepEqual(inter, [
     ['striction-accuracy.c1', 'numeric', 'correct'],
     ['chaikin-count.c1', 'other', 'incorrect'],
+    ['coupled-strip.c1', 'other', 'correct'],
   ]);
   // the value she reached, and what she typed (never the expected value); the condition in words
   const [first, second] = /** @type {any[]} */ (Object.values(data.interactions));
+  await frame.locator('[name="course-task"]').selectOption('1');
+  await frame.locator('.rl-task h3', { hasText: 'Chaikins Punkte' }).waitFor();
   assert.ok(Number(first.learner_response) > 0 && Number(first.learner_response) < 2e-3, first.learner_response);
   assert.match(first.description, /Kehlpolygons.*unter/);
   assert.equal(second.learner_response, '1000');
-  assert.match(await frame.locator('.rl-course-status').innerText(), /Bisher: 1 von 2 Bedingungen erfüllt/);
+  assert.match(await frame.locator('.rl-course-status').innerText(), /Bisher: 2 von 3 Bedingungen erfüllt/);
   // she leaves with one exercise unsolved: exit "suspend", the time spent
   await page.locator('#sco').evaluate((f) => f.remove());
   await page.waitForFunction(() => window.API_1484_11.isTerminated());
@@ -267,7 +290,7 @@ test('SCORM 2004 from the package’s function: two exercises as one activity, t
   assert.match(await again.locator('.rl-task h3').innerText(), /Chaikins Punkte/);
   assert.equal(await again.locator('input[name="task-count"]').inputValue(), '1000');
   assert.match(await again.locator('[name="course-task"] option').first().innerText(), /^✓ 1\./);
-  assert.match(await again.locator('.rl-course-status').innerText(), /1 von 2/);
+  assert.match(await again.locator('.rl-course-status').innerText(), /2 von 3/);
   assert.deepEqual(back.problems, []);
   await back.page.close();
 });
@@ -413,4 +436,319 @@ test('Share: exercises ticked under “More exercises” go into the same SCORM 
   assert.match(await page.locator('.rl-package-note').innerText(), /Made: upload the zip file as a SCORM package/);
   assert.deepEqual(problems, []);
   await page.close();
+});
+
+test('a shown solution earns nothing: after a wrong check, Show the solution and a check after it leave the score and status as the wrong check left them, the interactions neutral (1.2 and 2004)', async () => {
+  runtimes();
+  for (const version of /** @type {const} */ (['1.2', '2004'])) {
+    const standard = version === '1.2' ? 'scorm12' : 'scorm2004';
+    const bytes = await scormPackage(['coupled-strip'], { standard, page: ONEFILE, lang: 'en' });
+    unpack(bytes, `shown${version}`);
+    const { page, problems } = await session.open(lms(`lms-shown${version}.html`, `shown${version}/`, version), {
+      wait: false,
+    });
+    const frame = await activity(page);
+    // the solution is not offered before a first check
+    assert.equal(await frame.locator('.rl-task-solution').isDisabled(), true);
+    await frame.locator('input[name="task-n"]').fill('9');
+    await frame.locator('.rl-task-check').click();
+    await frame.locator('.rl-task-solution:not([disabled])').click();
+    // the page says it counts for nothing; the answer is filled in and every condition holds
+    assert.match(await frame.locator('.rl-task-verdict').innerText(), /Solution shown: it does not count/);
+    assert.equal(await frame.locator('input[name="task-n"]').inputValue(), '5');
+    assert.equal(await frame.locator('.rl-task-verdict.rl-task-solved').count(), 0);
+    // she checks the solution's answer herself: still nothing
+    await frame.locator('.rl-task-check').click();
+    assert.match(await frame.locator('.rl-task-verdict').innerText(), /not counted: the solution was shown/);
+    const data = (await cmi(page, version)).cmi;
+    const interactions = /** @type {any[]} */ (Object.values(data.interactions));
+    if (version === '1.2') {
+      assert.deepEqual([data.core.score.raw, data.core.lesson_status], ['0', 'incomplete']);
+      assert.equal(data.objectives['0'].status, 'incomplete');
+    } else {
+      assert.deepEqual(
+        [data.score.raw, data.score.scaled, data.success_status, data.completion_status],
+        ['0', '0', 'unknown', 'incomplete'],
+      );
+      assert.match(interactions[0].description, /^\(solution shown: not counted\)/);
+    }
+    // one interaction per condition, its result the latest: neutral (the solution's check, then hers)
+    assert.deepEqual(
+      interactions.map((i) => [i.id, i.result]),
+      [['coupled-strip.c1', 'neutral']],
+    );
+    // the history says which checks count
+    assert.deepEqual(
+      (await frame.locator('.rl-task-history li').allInnerTexts()).map((t) => t.replace(/^[\d:. APM]+: /, '')),
+      ['1 of 1 met (not counted: after the solution)', 'solution shown (not counted)', '0 of 1 met'],
+    );
+    assert.match(await frame.locator('.rl-course-status').innerText(), /Score so far: 0 of 1/);
+    // the view's Reset (as Start over) keeps the attempt's checks and the solution's mark
+    await frame.locator('.rl-reset').click();
+    await frame.locator('input[name="task-n"]').fill('5');
+    await frame.locator('.rl-task-check').click();
+    assert.match(await frame.locator('.rl-task-verdict').innerText(), /not counted/);
+    assert.equal(await frame.locator('.rl-task-history li').count(), 4);
+    // the student leaves and comes back: still shown, still nothing
+    await page.locator('#sco').evaluate((f) => f.remove());
+    const saved = {
+      'cmi.suspend_data': (await cmi(page, version)).cmi.suspend_data,
+      [version === '1.2' ? 'cmi.core.entry' : 'cmi.entry']: 'resume',
+    };
+    assert.deepEqual(problems, []);
+    await page.close();
+    const back = await session.open(lms(`lms-shown${version}b.html`, `shown${version}/`, version, saved), {
+      wait: false,
+    });
+    const again = await activity(back.page);
+    await again.locator('.rl-task-check').click();
+    assert.match(await again.locator('.rl-task-verdict').innerText(), /not counted/);
+    const after = (await cmi(back.page, version)).cmi;
+    assert.equal(version === '1.2' ? after.core.score.raw : after.score.raw, '0');
+    assert.deepEqual(back.problems, []);
+    await back.page.close();
+  }
+});
+
+test('a lecturer may offer the solution only after N checks, or never: said on the button, held to by the page', async () => {
+  runtimes();
+  const bytes = await scormPackage(['coupled-strip'], { page: ONEFILE, lang: 'en', readers: { solution: 2 } });
+  unpack(bytes, 'after2');
+  const { page, problems } = await session.open(lms('lms-after2.html', 'after2/'), { wait: false });
+  const frame = await activity(page);
+  const button = frame.locator('.rl-task-solution');
+  assert.match(/** @type {string} */ (await button.getAttribute('title')), /once 2 checks have not solved/);
+  await frame.locator('input[name="task-n"]').fill('9');
+  await frame.locator('.rl-task-check').click();
+  assert.equal(await button.isDisabled(), true, 'one check is not enough');
+  await frame.locator('.rl-task-check').click();
+  assert.equal(await button.isDisabled(), false);
+  assert.deepEqual(problems, []);
+  await page.close();
+  const never = await scormPackage(['coupled-strip'], { page: ONEFILE, lang: 'en', readers: { solution: null } });
+  unpack(never, 'never');
+  const other = await session.open(lms('lms-never.html', 'never/'), { wait: false });
+  const f = await activity(other.page);
+  await f.locator('input[name="task-n"]').fill('9');
+  for (let k = 0; k < 3; k++) await f.locator('.rl-task-check').click();
+  assert.equal(await f.locator('.rl-task-solution').isHidden(), true);
+  assert.deepEqual(other.problems, []);
+  await other.page.close();
+});
+
+test('two learners on one lab computer never see each other’s work; each finds her own again; a copy kept here is read only for its learner (1.2 and 2004)', async () => {
+  runtimes();
+  for (const version of /** @type {const} */ (['1.2', '2004'])) {
+    const standard = version === '1.2' ? 'scorm12' : 'scorm2004';
+    const id = version === '1.2' ? 'cmi.core.student_id' : 'cmi.learner_id';
+    const name = version === '1.2' ? 'cmi.core.student_name' : 'cmi.learner_name';
+    const entry = version === '1.2' ? 'cmi.core.entry' : 'cmi.entry';
+    const bytes = await scormPackage(['coupled-strip'], { standard, page: ONEFILE, lang: 'en' });
+    const folder = `two${version}`;
+    unpack(bytes, folder);
+    // Alice: a wrong answer, then she leaves (the attempt open)
+    const alice = await session.open(
+      lms(`alice${version}.html`, `${folder}/`, version, { [id]: 'u-alice', [name]: 'Alice' }),
+      {
+        wait: false,
+      },
+    );
+    let frame = await activity(alice.page);
+    await frame.locator('input[name="task-n"]').fill('7');
+    await frame.locator('.rl-task-check').click();
+    await alice.page.locator('#sco').evaluate((f) => f.remove());
+    const aliceData = (await cmi(alice.page, version)).cmi;
+    assert.equal(version === '1.2' ? aliceData.core.exit : aliceData.exit, 'suspend');
+    assert.equal(version === '1.2' ? aliceData.core.lesson_status : aliceData.completion_status, 'incomplete');
+    await alice.page.close();
+    // Bob, next, in the same browser: a new learner, nothing kept for him
+    const bob = await session.open(lms(`bob${version}.html`, `${folder}/`, version, { [id]: 'u-bob', [name]: 'Bob' }), {
+      wait: false,
+    });
+    frame = await activity(bob.page);
+    assert.equal(await frame.locator('input[name="task-n"]').inputValue(), '');
+    assert.equal(await frame.locator('.rl-task-history li').count(), 0);
+    assert.match(await frame.locator('.rl-course-status').innerText(), /Score so far: 0 of 1/);
+    // he leaves without typing: his record holds nothing of hers
+    await bob.page.locator('#sco').evaluate((f) => f.remove());
+    const bobData = (await cmi(bob.page, version)).cmi;
+    assert.deepEqual(bobData.interactions ?? {}, {});
+    assert.notEqual(version === '1.2' ? bobData.core.lesson_status : bobData.success_status, 'passed');
+    assert.doesNotMatch(bobData.suspend_data, /"7"/);
+    assert.deepEqual(bob.problems, []);
+    await bob.page.close();
+    // Alice back: the course system's record of her attempt resumes it
+    const back = await session.open(
+      lms(`alice${version}b.html`, `${folder}/`, version, {
+        [id]: 'u-alice',
+        [name]: 'Alice',
+        [entry]: 'resume',
+        'cmi.suspend_data': aliceData.suspend_data,
+      }),
+      { wait: false },
+    );
+    frame = await activity(back.page);
+    assert.equal(await frame.locator('input[name="task-n"]').inputValue(), '7');
+    assert.equal(await frame.locator('.rl-task-history li').count(), 1);
+    await back.page.close();
+    // Alice again, and the course system lost her attempt (its last saving failed): this browser's
+    // copy of hers, keyed by her id and the package, restores it, and says so
+    const lost = await session.open(
+      lms(`alice${version}c.html`, `${folder}/`, version, { [id]: 'u-alice', [name]: 'Alice', [entry]: 'resume' }),
+      { wait: false },
+    );
+    frame = await activity(lost.page);
+    assert.equal(await frame.locator('input[name="task-n"]').inputValue(), '7');
+    assert.match(await frame.locator('.rl-course-mode').innerText(), /restored from this browser/);
+    await lost.page.close();
+    // … but never for Bob, nor for a learner the course system does not name
+    for (const who of [{ [id]: 'u-bob' }, {}]) {
+      const other = await session.open(
+        lms(`other${version}.html`, `${folder}/`, version, { ...who, [entry]: 'resume' }),
+        {
+          wait: false,
+        },
+      );
+      frame = await activity(other.page);
+      assert.equal(await frame.locator('input[name="task-n"]').inputValue(), '', JSON.stringify(who));
+      await other.page.close();
+    }
+    // nothing of the course's in the storage every page of this origin shares, under the exercise's own name
+    const { page } = await session.open(site.write('blank.html', '<!doctype html><title>blank</title>'), {
+      wait: false,
+    });
+    const keys = await page.evaluate(() => Object.keys(localStorage));
+    assert.deepEqual(
+      keys.filter((k) => k.startsWith('ruledlab.attempt.') || k === 'ruledlab.progress'),
+      [],
+    );
+    await page.evaluate(() => localStorage.clear());
+    await page.close();
+  }
+});
+
+test('a course system that will not start the session, a review, browsing and no credit: each said; nothing that counts is written', async () => {
+  runtimes();
+  const bytes = await scormPackage(['coupled-strip'], { standard: 'scorm2004', page: ONEFILE, lang: 'en' });
+  unpack(bytes, 'modes');
+  // Initialize answers "false": said, and the bar claims nothing
+  const refuse = `const api = window.API_1484_11; api.Initialize = () => 'false'; api.GetLastError = () => '102'; api.GetErrorString = () => 'General Initialization Failure';`;
+  const failed = await session.open(lms('lms-init.html', 'modes/', '2004', {}, refuse), { wait: false });
+  let frame = await activity(failed.page);
+  assert.match(
+    await frame.locator('.rl-course-problem').innerText(),
+    /The course system did not start the session \(Initialize: error 102, “General Initialization Failure”\): nothing you do here is recorded/,
+  );
+  await frame.locator('input[name="task-n"]').fill('5');
+  await frame.locator('.rl-task-check').click();
+  assert.doesNotMatch(await frame.locator('.rl-course-status').innerText(), /records|Recorded/);
+  assert.equal(await frame.locator('[name="course-end"]').isHidden(), true);
+  assert.deepEqual(failed.problems, []);
+  await failed.page.close();
+
+  // a recorded attempt (a wrong check, left open) to review
+  const first = await session.open(lms('lms-first.html', 'modes/', '2004'), { wait: false });
+  frame = await activity(first.page);
+  await frame.locator('input[name="task-n"]').fill('7');
+  await frame.locator('.rl-task-check').click();
+  await first.page.locator('#sco').evaluate((f) => f.remove());
+  const recorded = (await cmi(first.page, '2004')).cmi;
+  await first.page.close();
+  for (const [mode, credit, said] of [
+    ['review', 'no-credit', /opened this attempt for review/],
+    ['browse', 'no-credit', /opened this activity for browsing/],
+    ['normal', 'no-credit', /not graded/],
+  ]) {
+    const saved = {
+      'cmi.suspend_data': recorded.suspend_data,
+      'cmi.entry': 'resume',
+      'cmi.mode': mode,
+      'cmi.credit': credit,
+    };
+    const { page, problems } = await session.open(lms(`lms-${mode}.html`, 'modes/', '2004', saved), { wait: false });
+    frame = await activity(page);
+    assert.match(await frame.locator('.rl-course-mode').innerText(), said);
+    // her work is there; she may check, and nothing that counts is written
+    assert.equal(await frame.locator('input[name="task-n"]').inputValue(), '7');
+    await frame.locator('input[name="task-n"]').fill('5');
+    await frame.locator('.rl-task-check').click();
+    await frame.locator('.rl-task-verdict.rl-task-solved').waitFor();
+    await page.locator('#sco').evaluate((f) => f.remove());
+    const data = (await cmi(page, '2004')).cmi;
+    assert.deepEqual([data.score.raw, data.success_status, data.interactions ?? {}], ['', 'unknown', {}], mode);
+    // (without credit in a normal attempt her work is kept; a review keeps the attempt as it was)
+    assert.equal(data.suspend_data.includes('"5"'), mode === 'normal', mode);
+    assert.deepEqual(problems, []);
+    await page.close();
+  }
+});
+
+test('ending the attempt: asked once more, then recorded as done (1.2 failed, 2004 completed and failed) and the session ended; nothing after it is recorded', async () => {
+  runtimes();
+  for (const version of /** @type {const} */ (['1.2', '2004'])) {
+    const bytes = await scormPackage(['coupled-strip', 'chaikin-count'], {
+      standard: version === '1.2' ? 'scorm12' : 'scorm2004',
+      page: ONEFILE,
+      lang: 'en',
+    });
+    unpack(bytes, `end${version}`);
+    const { page, problems } = await session.open(lms(`lms-end${version}.html`, `end${version}/`, version), {
+      wait: false,
+    });
+    const frame = await activity(page);
+    await frame.locator('input[name="task-n"]').fill('5');
+    await frame.locator('.rl-task-check').click();
+    await frame.locator('[name="course-end"]').click();
+    assert.match(await frame.locator('.rl-course-confirm').innerText(), /End the attempt with 1 of 2 conditions met\?/);
+    // "Keep working" keeps it open
+    await frame.locator('[name="course-end-no"]').click();
+    assert.equal(await frame.locator('.rl-course-confirm').isHidden(), true);
+    await frame.locator('[name="course-end"]').click();
+    await frame.locator('[name="course-end-yes"]').click();
+    await page.waitForFunction((v) => window[v === '1.2' ? 'API' : 'API_1484_11'].isTerminated(), version);
+    const data = (await cmi(page, version)).cmi;
+    if (version === '1.2')
+      assert.deepEqual([data.core.lesson_status, data.core.exit, data.core.score.raw], ['failed', '', '50']);
+    else
+      assert.deepEqual(
+        [data.completion_status, data.success_status, data.exit, data.score.raw],
+        ['completed', 'failed', 'normal', '50'],
+      );
+    assert.match(await frame.locator('.rl-course-status').innerText(), /You ended this attempt/);
+    assert.equal(await frame.locator('[name="course-end"]').isHidden(), true);
+    assert.deepEqual(problems, []);
+    await page.close();
+  }
+});
+
+test('numbers drawn per learner: the same at every launch of hers (a new attempt and a review too), another learner’s her own', async () => {
+  runtimes();
+  const bytes = await scormPackage(['hypar-distribution'], { page: ONEFILE, lang: 'en', draw: 'learner' });
+  unpack(bytes, 'learner');
+  const packageKey = seedOf(JSON.stringify(['scorm12', readScorm(bytes).title, ['hypar-distribution']])).toString(36);
+  const task = /** @type {import('../../www/task/format.js').Task} */ (builtInTask('hypar-distribution'));
+  /** The k the page must draw for a learner: from her id and the package, as the page computes it. */
+  const expected = (/** @type {string} */ id) => drawTask(task, seedOf(`${id}\u0000${packageKey}`)).drawn?.values.k;
+  // two learners whose numbers differ (found, not hoped for)
+  const ids = ['u-1', 'u-2', 'u-3', 'u-4', 'u-5'];
+  const other = ids.find((id) => expected(id) !== expected('u-1'));
+  assert.ok(other);
+  /** The k a launch shows. */
+  const shown = async (/** @type {string} */ name, /** @type {Record<string, string>} */ saved) => {
+    const { page, problems } = await session.open(lms(name, 'learner/', '1.2', saved), { wait: false });
+    const frame = await activity(page);
+    const k = Number(/k = (−?\d)/.exec(await frame.locator('.rl-task-drawn').innerText())?.[1].replace('−', '-'));
+    assert.deepEqual(problems, []);
+    await page.close();
+    return k;
+  };
+  assert.equal(await shown('l1.html', { 'cmi.core.student_id': 'u-1' }), expected('u-1'));
+  assert.equal(
+    await shown('l2.html', { 'cmi.core.student_id': 'u-1', 'cmi.core.lesson_mode': 'review' }),
+    expected('u-1'),
+  );
+  assert.equal(
+    await shown('l3.html', { 'cmi.core.student_id': /** @type {string} */ (other) }),
+    expected(/** @type {string} */ (other)),
+  );
 });

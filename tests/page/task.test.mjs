@@ -108,11 +108,13 @@ test('with the keyboard alone: Tab to the answer, type, Enter checks; a hint and
   }
   await page.keyboard.press('Enter');
   assert.match(await page.locator('.rl-task-hints li').first().innerText(), /n − 1 edges/);
-  // the solution (allowed after a check): its answer filled in and checked
+  // the solution (offered after a check that did not solve it): its answer filled in, its
+  // conditions shown holding, and counted for nothing
   await page.locator('.rl-task-solution').focus();
   await page.keyboard.press('Enter');
   assert.equal(await page.locator('input[name="task-count"]').inputValue(), '50');
-  assert.match(await verdict(page), /^✓ Solved/);
+  assert.match(await verdict(page), /^Solution shown: it does not count/);
+  assert.equal(await page.locator('.rl-task-results li.rl-holds').count(), 1);
   // said once, by the verdict (a status): not by the view's live region too
   assert.doesNotMatch(
     await page.evaluate(() => document.querySelector('.rl-stage [aria-live]')?.textContent ?? ''),
@@ -285,7 +287,12 @@ test('writing an exercise: Share → Make an exercise, a condition from the valu
   await reader.page.click('.rl-task-check');
   assert.match(await verdict(reader.page), /^Not solved yet/);
   await reader.page.click('.rl-task-solution');
-  assert.match(await verdict(reader.page), /^✓ Solved/);
+  assert.match(await verdict(reader.page), /^Solution shown/);
+  assert.equal(
+    await reader.page.locator('.rl-task-results li.rl-fails').count(),
+    0,
+    'the solution meets every condition',
+  );
   assert.deepEqual([...problems, ...reader.problems], []);
   await reader.page.close();
 });

@@ -17,5 +17,6 @@ export { makeZip, readZip, PackageError } from './zip.js';
  * @typedef {import('./scorm-package.js').ScormOptions} ScormOptions
  * @typedef {import('./scorm-package.js').Readers} Readers
  * @typedef {import('./h5p-package.js').H5PParams} H5PParams
+ * @typedef {import('./h5p-package.js').H5POptions} H5POptions
  * @typedef {import('../task/format.js').Task} Task
  */

@@ -1,7 +1,7 @@
 // A SCORM package of exercises, which every course system imports (Moodle, Canvas, ILIAS,
-// Blackboard, OpenOLAT): one zip with the manifest (imsmanifest.xml) and the one-file page
-// (dist/ruledlab.html) as its launch file, set to the exercises in its state block — nothing is
-// fetched from elsewhere. In the course system the page finds the runtime the standard way and
+// Blackboard, OpenOLAT): one zip with the manifest (imsmanifest.xml), the schema files it names
+// (xsi:schemaLocation; pkg/scorm-schemas.js) and the one-file page (dist/ruledlab.html) as its
+// launch file, set to the exercises in its state block — nothing is fetched from elsewhere. In the course system the page finds the runtime the standard way and
 // records score, status, one interaction per condition, the time and the attempt
 // (www/page/scorm.js). SCORM 1.2 or SCORM 2004 4th edition; several exercises make one graded
 // activity, the score their sum. Made in the browser (Share, the author) or by a program:
@@ -13,6 +13,7 @@ import { MAX_PACKAGE_TASKS, MAX_TASK_ID } from '../limits.js';
 import { withState } from './page-file.js';
 import { undrawn } from '../task/draw.js';
 import { makeZip, PackageError } from './zip.js';
+import { writeSolutionRule } from '../task/solution-rule.js';
 
 /**
  * @typedef {import('../task/format.js').Task} Task
@@ -23,14 +24,18 @@ import { makeZip, PackageError } from './zip.js';
  * @property {boolean} [text]       see the scene's explanation
  * @property {boolean} [edit]       drag the points of a scene that has them
  * @property {boolean} [leave]      leave the exercise for the scene alone
+ * @property {number | null} [solution]   have the solution shown after this many checks that do
+ *   not solve the exercise (null: never; default 1); a solution shown earns nothing either way
  *
  * @typedef {object} ScormOptions
  * @property {'scorm12' | 'scorm2004'} [standard]   SCORM 1.2 (default) or SCORM 2004 4th edition
- * @property {string} [title]      the activity's title in the course (default: the first exercise's)
+ * @property {string} [title]      the activity's title in the course (default: the exercises' titles)
  * @property {string} [lang]       the page's language ("en", "de"; default: the reader's browser)
  * @property {string | Uint8Array} [page]   the one-file page (dist/ruledlab.html); fetched next to
  *   this module in a browser when not given (in Node: give it)
  * @property {Readers} [readers]
+ * @property {'attempt' | 'learner'} [draw]   numbers drawn per attempt (the default) or per learner
+ *   (from her id in the course system: the same at every launch of hers)
  */
 
 /** The launch file of a package. */
@@ -79,7 +84,7 @@ export function scormManifest({ standard, id, title, launch = LAUNCH }) {
   const ident = `ruledlab-${id}`.replace(/[^A-Za-z0-9_.-]/g, '-');
   if (standard === 'scorm12')
     return `<?xml version="1.0" encoding="UTF-8"?>
-<manifest identifier="${ident}" version="1" xmlns="http://www.imsproject.org/xsd/imscp_rootv1p1p2" xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_rootv1p2">
+<manifest identifier="${ident}" version="1" xmlns="http://www.imsproject.org/xsd/imscp_rootv1p1p2" xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_rootv1p2" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:schemaLocation="http://www.imsproject.org/xsd/imscp_rootv1p1p2 imscp_rootv1p1p2.xsd http://www.imsglobal.org/xsd/imsmd_rootv1p2p1 imsmd_rootv1p2p1.xsd http://www.adlnet.org/xsd/adlcp_rootv1p2 adlcp_rootv1p2.xsd">
   <metadata>
     <schema>ADL SCORM</schema>
     <schemaversion>1.2</schemaversion>
@@ -100,7 +105,7 @@ export function scormManifest({ standard, id, title, launch = LAUNCH }) {
 </manifest>
 `;
   return `<?xml version="1.0" encoding="UTF-8"?>
-<manifest identifier="${ident}" version="1" xmlns="http://www.imsglobal.org/xsd/imscp_v1p1" xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_v1p3" xmlns:adlseq="http://www.adlnet.org/xsd/adlseq_v1p3" xmlns:adlnav="http://www.adlnet.org/xsd/adlnav_v1p3" xmlns:imsss="http://www.imsglobal.org/xsd/imsss">
+<manifest identifier="${ident}" version="1" xmlns="http://www.imsglobal.org/xsd/imscp_v1p1" xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_v1p3" xmlns:adlseq="http://www.adlnet.org/xsd/adlseq_v1p3" xmlns:adlnav="http://www.adlnet.org/xsd/adlnav_v1p3" xmlns:imsss="http://www.imsglobal.org/xsd/imsss" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:schemaLocation="http://www.imsglobal.org/xsd/imscp_v1p1 imscp_v1p1.xsd http://www.adlnet.org/xsd/adlcp_v1p3 adlcp_v1p3.xsd http://www.adlnet.org/xsd/adlseq_v1p3 adlseq_v1p3.xsd http://www.adlnet.org/xsd/adlnav_v1p3 adlnav_v1p3.xsd http://www.imsglobal.org/xsd/imsss imsss_v1p0.xsd">
   <metadata>
     <schema>ADL SCORM</schema>
     <schemaversion>2004 4th Edition</schemaversion>
@@ -136,6 +141,8 @@ export function packageHash(first, readers, lang) {
   if (readers.text) q.set('text', '');
   if (readers.edit ?? true) q.set('edit', '');
   if (readers.leave) q.set('leave', '');
+  const rule = writeSolutionRule(readers.solution === undefined ? null : { after: readers.solution });
+  if (rule) q.set('solution', rule);
   q.set(
     'task',
     taskLink(first, (id) => builtInTask(id) !== null),
@@ -175,11 +182,18 @@ export async function scormPackage(tasks, options = {}) {
     standard,
     title,
     tasks: read.map((t) => (builtInTask(t.id) ? t.id : JSON.parse(writeTask(t)))),
+    ...(options.draw === 'learner' ? { draw: 'learner' } : {}),
   };
   const launch = withState(html, packageHash(read[0], options.readers ?? {}, lang), course);
   const id = read
     .map((t) => t.id)
     .join('-')
     .slice(0, 60);
-  return makeZip({ 'imsmanifest.xml': scormManifest({ standard, id, title }), [LAUNCH]: launch });
+  // the schema files the manifest names, beside it (as the standards ask)
+  const { SCORM12_SCHEMAS, SCORM2004_SCHEMAS } = await import('../../pkg/scorm-schemas.js');
+  return makeZip({
+    'imsmanifest.xml': scormManifest({ standard, id, title }),
+    ...(standard === 'scorm12' ? SCORM12_SCHEMAS : SCORM2004_SCHEMAS),
+    [LAUNCH]: launch,
+  });
 }

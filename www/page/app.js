@@ -29,6 +29,8 @@ import { attemptOf } from '../stage/exercise-api.js';
 import { postToParent } from '../task/message.js';
 import { taskErrorText } from '../task/words.js';
 import { encodeInput } from '../edit/input.js';
+import { DEFAULT_SOLUTION_RULE, readSolutionRule } from '../task/solution-rule.js';
+import { MAX_SOLUTION_AFTER } from '../limits.js';
 import { openExercise, openView } from '../stage/open.js';
 import { lazy } from './lazy.js';
 
@@ -49,6 +51,11 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   const core = start();
   core.catch(() => {});
   const link = new URLSearchParams((location.hash || (oneFile ? `#${storedHash()}` : '')).replace(/^#/, ''));
+  // a SCORM package's page: its attempts live in the course system alone (course.js), never in
+  // this browser's storage under the exercise's id, which every learner on this computer shares
+  const setup = oneFile ? storedCourse() : null;
+  /** An exercise's attempt kept in this browser (none in a package's page). */
+  const ownAttempt = (/** @type {import('../task/format.js').Task} */ task) => (setup ? null : keptAttempt(task.id));
   /** @type {import('../state.js').ViewState} */
   let state;
   let lang = pickLanguage(link.get('lang'));
@@ -84,6 +91,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     editable: !link.has('embed') || link.has('edit'),
     // Leave the exercise: in a frame only where the snippet allows it
     mayLeaveTask: () => !state?.embed || !!state.leave,
+    // when the solution is offered: the link says (a lecturer's package or snippet), else after a first check
+    solutionRule: () => readSolutionRule(state?.solution) ?? DEFAULT_SOLUTION_RULE,
     onChange: ({ reason, ended }) => {
       // an edit too large for the link stays in the tab (and the page says so)
       if (ended && stage.scene && (reason === 'input' || reason === 'reset'))
@@ -94,14 +103,14 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     onEditAsData: (imported) =>
       go(/** @type {import('../scene.js').Scene} */ (SCENES.find((s) => s.id === 'data')), {}, { data: imported }),
     onTask: (type, report) => {
-      // solved exercises are marked in the menu (where the browser keeps anything)
-      if (type === 'solved') {
+      // solved exercises are marked in the menu (where the browser keeps anything; not in a package's page)
+      if (type === 'solved' && !setup) {
         markSolved(report.task);
         localize();
       }
       // the attempt is kept where the browser keeps anything; a package's page records it (course.js)
       keepTaskAttempt();
-      if (type === 'check') course?.checked(report);
+      if (type === 'check' || type === 'solution') course?.checked(report);
       const input = stage.input;
       postToParent(type, report, {
         scene: stage.scene?.id ?? '',
@@ -122,7 +131,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   /** Keeps the attempt at the exercise shown in this browser (task/progress.js). */
   const keepTaskAttempt = () => {
     const attempt = attemptOf(stage);
-    if (attempt && stage.task) keepAttempt(stage.task.id, attempt);
+    if (attempt && stage.task && !setup) keepAttempt(stage.task.id, attempt);
   };
   await nextTask();
 
@@ -189,6 +198,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     // an exercise's drawn numbers: the link's seed (one that is not a seed is said, and a new one drawn)
     const { seed, note } = linkSeed(state.seed);
     if (note) state.notes.push(note);
+    if (state.solution != null && !readSolutionRule(state.solution))
+      state.notes.push({ key: 'solution', note: 'note.badSolution', vars: { max: String(MAX_SOLUTION_AFTER) } });
     await openView(stage, {
       scene: state.scene,
       params: state.params,
@@ -197,7 +208,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       progress: progressOf,
       taskInput: state.input,
       seed,
-      attempt: (task) => keptAttempt(task.id),
+      attempt: ownAttempt,
       camera: state.camera,
       data: state.data ?? (text ? parseStored(text) : null),
       notes: state.notes,
@@ -228,7 +239,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
    */
   const startTask = async (value) => {
     try {
-      await openExercise(stage, value, { attempt: (task) => keptAttempt(task.id) });
+      await openExercise(stage, value, { attempt: ownAttempt });
       address.save('push');
       return true;
     } catch (e) {
@@ -358,7 +369,6 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   if (holding) viewer.pending = true;
   // a SCORM package's page: the course system's runtime records its exercises (course.js), which
   // it opens itself — until then the exercise waits, unseen, so that no answer goes unrecorded
-  const setup = oneFile ? storedCourse() : null;
   if (setup) stage.els.root.classList.add('rl-waiting');
   stage.inSteps = true;
   try {

@@ -38,10 +38,11 @@ export function newAnswer(/** @type {AnswerRow['kind']} */ kind, /** @type {stri
 /**
  * The answers' fieldset: per answer its kind, label, what it is compared with and how closely,
  * and the answer in the solution; "Add an answer".
- * @param {{rows: AnswerRow[], values: Record<string, number>, exact: {function: boolean, curve: boolean},
- *   i18n: import('../i18n/index.js').Translator, el: El, render: () => void}} o
+ * @param {{rows: AnswerRow[], values: Record<string, number>, preview: (key: string) => string,
+ *   exact: {function: boolean, curve: boolean}, i18n: import('../i18n/index.js').Translator, el: El, render: () => void}} o
+ *   preview: a value's figure as the menus show it (now, or over the numbers drawn)
  */
-export function answersBox({ rows, values, exact, i18n, el, render }) {
+export function answersBox({ rows, values, preview, exact, i18n, el, render }) {
   const { t } = i18n;
   const box = el('fieldset', { className: 'rl-author-answers' });
   box.append(el('legend', { textContent: t('author.answers') }));
@@ -85,10 +86,7 @@ export function answersBox({ rows, values, exact, i18n, el, render }) {
     );
     if (r.kind === 'number') {
       const target = /** @type {HTMLSelectElement} */ (el('select', { name: `author-answer-target-${k}` }));
-      for (const key of Object.keys(values))
-        target.add(
-          new Option(`${valueName(key, i18n)} (${t('author.now', { value: i18n.format(values[key]) })})`, key),
-        );
+      for (const key of Object.keys(values)) target.add(new Option(`${valueName(key, i18n)} (${preview(key)})`, key));
       target.add(new Option(t('author.answer.aNumber'), ''));
       target.value = r.target;
       target.addEventListener('change', () => {

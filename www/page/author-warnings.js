@@ -4,7 +4,7 @@
 // condition, the numbers drawn where there are any, and the values the scene computes there.
 import { checkGoal, measuresOf } from '../task/check.js';
 import { describeCondition, outcomeText } from '../task/words.js';
-import { drawTask, drawnText } from '../task/draw.js';
+import { drawChoices, drawTask, drawnText } from '../task/draw.js';
 import { decodeInput } from '../edit/input.js';
 import { withChoices } from '../scene.js';
 
@@ -130,4 +130,61 @@ export function authorWarnings(task, states, scene, context, i18n) {
     kind,
     text: `${numbers.length ? t('author.warn.with', { numbers: numbers.join('; ') }) : ''}${text}`,
   }));
+}
+
+/**
+ * The least and greatest value of each number the scene computes, over the numbers an exercise
+ * being written can draw (its drawn parameters' ranges as typed, with the start's other
+ * parameters): what a goal's bound or an answer's target is compared with across the attempts.
+ * Every combination when there are at most SEEDS of them, else SEEDS spread evenly over them
+ * (the first and the last among them). Null when nothing is drawn or no range can be read.
+ * @param {import('../scene.js').Scene} scene
+ * @param {import('../scene.js').Context} context
+ * @param {Recorded} start
+ * @param {Record<string, string>} roles   each parameter's role ('draw': drawn per attempt)
+ * @param {Record<string, {from: string, to: string, step: string}>} draws   the ranges as typed
+ * @returns {Record<string, {min: number, max: number}> | null}
+ */
+export function valueRanges(scene, context, start, roles, draws) {
+  const read = (/** @type {string} */ x) => Number(String(x).trim().replace('−', '-').replace(',', '.'));
+  /** @type {Array<[string, number[]]>} */
+  const axes = [];
+  for (const [key, role] of Object.entries(roles)) {
+    if (role !== 'draw' || !draws[key]) continue;
+    const from = read(draws[key].from);
+    const to = read(draws[key].to);
+    const step = draws[key].step.trim() ? read(draws[key].step) : 1;
+    if (!Number.isFinite(from) || !Number.isFinite(to) || !(step > 0) || to < from || (to - from) / step > 1e4)
+      continue;
+    axes.push([key, /** @type {number[]} */ (drawChoices({ from, to, step }))]);
+  }
+  if (!axes.length) return null;
+  const total = axes.reduce((n, [, values]) => n * values.length, 1);
+  const picks =
+    total <= SEEDS
+      ? [...Array(total).keys()]
+      : [...Array(SEEDS).keys()].map((k) => Math.round((k * (total - 1)) / (SEEDS - 1)));
+  const input = start.input ? decodeInput(start.input) : null;
+  const ctx = { ...context, input: input ?? undefined };
+  /** @type {Record<string, {min: number, max: number}>} */
+  const out = {};
+  for (let index of picks) {
+    /** @type {Record<string, number>} */
+    const combo = {};
+    for (const [key, values] of axes) {
+      combo[key] = values[index % values.length];
+      index = Math.floor(index / values.length);
+    }
+    try {
+      const values = measuresOf(scene.create(withChoices(scene, { ...start.params, ...combo }), ctx));
+      for (const [key, v] of Object.entries(values)) {
+        if (!Number.isFinite(v)) continue;
+        const r = out[key] ?? { min: v, max: v };
+        out[key] = { min: Math.min(r.min, v), max: Math.max(r.max, v) };
+      }
+    } catch {
+      // (a combination the scene cannot compute: the warnings say it)
+    }
+  }
+  return Object.keys(out).length ? out : null;
 }

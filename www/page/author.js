@@ -16,7 +16,7 @@ import { MAX_TASK_HINTS, MAX_TASK_SLUG, MAX_TASK_TEXT, MAX_TASK_TITLE, TASK_SAMP
 import { copyField } from './copy-field.js';
 import { packageButtons, remember } from './packages.js';
 import { answersBox, drawFields, slug } from './author-parts.js';
-import { authorWarnings, outcomesAt } from './author-warnings.js';
+import { authorWarnings, outcomesAt, valueRanges } from './author-warnings.js';
 import { drawTask } from '../task/draw.js';
 
 /**
@@ -230,23 +230,45 @@ export class Author {
 
   /**
    * Builds the panel in the current language, the keyboard staying on the control it was on
-   * (a change rebuilds the panel: ArrowDown in a menu, a bound typed, a state recorded).
+   * (a change rebuilds the panel: ArrowDown in a menu, a bound typed, a state recorded). A text
+   * field being typed in is never rebuilt: the field itself is kept in its place, with what was
+   * typed into it meanwhile, its caret and its selection (a rebuild after Tab would otherwise
+   * drop the selection Tab made, and the next keys would be added to the old value).
    */
   render() {
     const root = /** @type {Document | ShadowRoot} */ (this.box.getRootNode());
     const active = /** @type {HTMLElement | null} */ (root.activeElement);
     const name = active && this.box.contains(active) ? active.getAttribute('name') : null;
+    const typing =
+      name &&
+      active &&
+      (active.tagName === 'TEXTAREA' ||
+        (active.tagName === 'INPUT' && /** @type {HTMLInputElement} */ (active).type === 'text'))
+        ? /** @type {HTMLInputElement | HTMLTextAreaElement} */ (active)
+        : null;
+    const caret = typing
+      ? /** @type {const} */ ([typing.selectionStart, typing.selectionEnd, typing.selectionDirection])
+      : null;
     const scroll = this.box.scrollTop;
     this.build();
     if (!name) return;
     const find = (/** @type {string} */ n) =>
       /** @type {HTMLElement | null} */ (this.box.querySelector(`[name="${n}"]`));
+    const fresh = find(name);
+    if (typing && caret && fresh && fresh.tagName === typing.tagName) {
+      // (its listeners write into the same state as the fresh field's would: the rows, draws and answers are kept objects)
+      fresh.replaceWith(typing);
+      typing.focus({ preventScroll: true });
+      typing.setSelectionRange(caret[0], caret[1], /** @type {'forward' | 'backward' | 'none'} */ (caret[2] ?? 'none'));
+      this.box.scrollTop = scroll;
+      return;
+    }
     const gone = name.startsWith('author-remove-')
       ? find('author-add')
       : name.startsWith('author-answer-remove-')
         ? find('author-answer-add')
         : null;
-    (find(name) ?? gone)?.focus({ preventScroll: true });
+    (fresh ?? gone)?.focus({ preventScroll: true });
     this.box.scrollTop = scroll;
   }
 
@@ -333,8 +355,16 @@ export class Author {
       hide.append(row);
     }
 
-    // the goal: conditions on the values the scene computes, each with its value now
+    // the goal: conditions on the values the scene computes, each with its value now — or, where
+    // the exercise draws numbers, the least and greatest it takes over the numbers that can be drawn
     const values = measuresOf(built);
+    const ranges = this.start ? valueRanges(scene, stage.context(), this.start, this.params, this.draws) : null;
+    const preview = (/** @type {string} */ key) => {
+      const r = ranges?.[key];
+      return r
+        ? t('author.overDraws', { min: i18n.format(r.min), max: i18n.format(r.max) })
+        : t('author.now', { value: i18n.format(values[key]) });
+    };
     const goal = el('fieldset', { className: 'rl-author-goal' });
     goal.append(el('legend', { textContent: t('author.goal') }));
     let task = /** @type {Task | null} */ (null);
@@ -353,8 +383,7 @@ export class Author {
       const row = el('div', { className: 'rl-author-row' });
       const value = /** @type {HTMLSelectElement} */ (el('select', { name: `author-value-${k}` }));
       value.setAttribute('aria-label', t('author.value'));
-      for (const key of Object.keys(values))
-        value.add(new Option(`${valueName(key, i18n)} (${t('author.now', { value: i18n.format(values[key]) })})`, key));
+      for (const key of Object.keys(values)) value.add(new Option(`${valueName(key, i18n)} (${preview(key)})`, key));
       value.value = r.value;
       value.addEventListener('change', () => {
         r.value = value.value;
@@ -402,6 +431,19 @@ export class Author {
       }
       goal.append(row);
     });
+    // the answers the reader types are conditions of the goal too (written below, under Answers)
+    if (first)
+      first.goal.slice(this.rows.length).forEach((c, j) => {
+        const k = this.rows.length + j;
+        goal.append(
+          el('p', {
+            className: 'rl-author-status rl-author-answer-status',
+            textContent: `${describeCondition(c, first, i18n)}: ${t(atStart[k] ? 'author.holdsAtStart' : 'author.answerAtStart')}${
+              solutionState ? `; ${t(atSolution[k] ? 'author.holdsInSolution' : 'author.failsInSolution')}` : ''
+            }`,
+          }),
+        );
+      });
     const add = el('button', {
       type: 'button',
       textContent: t('author.add'),
@@ -428,6 +470,7 @@ export class Author {
     const answers = answersBox({
       rows: this.answers,
       values,
+      preview,
       exact: { function: exactOf('distribution'), curve: exactOf('striction') },
       i18n,
       el,
@@ -491,9 +534,11 @@ export class Author {
     const make = el('button', { type: 'button', className: 'rl-author-make', textContent: t('author.make') });
     const result = el('div', { className: 'rl-author-result' });
     make.addEventListener('click', () => {
-      // the texts as typed now (a field left without a change event)
-      this.title = title.value;
-      this.prompt = prompt.value;
+      // the texts as typed now (read from the panel: the field kept while typing may be an older build's)
+      this.title = /** @type {HTMLInputElement} */ (this.box.querySelector('[name="author-title"]') ?? title).value;
+      this.prompt = /** @type {HTMLTextAreaElement} */ (
+        this.box.querySelector('[name="author-prompt"]') ?? prompt
+      ).value;
       result.replaceChildren();
       let made;
       try {

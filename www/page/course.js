@@ -1,21 +1,31 @@
 // A SCORM package's page (course/scorm-package.js): the one-file page whose state block holds the
-// package's exercises. It shows a bar above the view — the exercises (one to choose, each marked
-// when solved), the score so far and whether the course system took it — finds the course
-// system's runtime (page/scorm.js) and records there after every check; a student who leaves and
-// comes back finds her exercise, numbers, answers, hints and checks again (suspend_data, and the
-// browser's own storage where there is any). Without a runtime the exercises work as anywhere.
-// The package's setup is read like anything from outside: what is not one is said, in the
-// page's language, and the page shows what it can.
+// package's exercises. It shows a bar above the view — the activity's title, the exercises (one to
+// choose, each marked when solved), the score so far, whether the course system took it, and
+// "End the attempt" — finds the course system's runtime (page/scorm.js) and records there after
+// every check. The attempt stays open until every exercise is solved or the student ends it, so a
+// student who leaves and comes back finds her exercise, numbers, answers, hints and checks again
+// (suspend_data: page/suspend.js). A course system's review or browsing shows her recorded work
+// and writes nothing; without credit nothing that counts is written; each is said.
+//
+// Only the course system's store counts in a course system: every package of a site runs on one
+// origin, so every learner of a lab computer shares the browser's storage. The page's own copy
+// of the attempt (kept in case a commit fails) is keyed by the learner's id and the package, read
+// only for that learner's open attempt of that package, and forgotten once the attempt ends; a
+// launch that names no learner keeps none.
+//
+// Without a runtime the exercises work as anywhere. The package's setup is read like anything
+// from outside: what is not one is said, in the page's language, and the page shows what it can.
 import { packageTasks } from '../course/scorm-package.js';
 import { readAttempt, bestCheck } from '../task/attempt.js';
-import { keptAttempt } from '../task/progress.js';
 import { say } from '../task/format.js';
 import { describeCondition, taskErrorText } from '../task/words.js';
-import { drawTask, randomSeed } from '../task/draw.js';
+import { drawTask, randomSeed, seedOf } from '../task/draw.js';
 import { attemptOf } from '../stage/exercise-api.js';
 import { openExercise } from '../stage/open.js';
 import { decodeInput } from '../edit/input.js';
+import { forget, keep, kept } from '../platform.js';
 import { decimal, findRuntime, scormValues, ScormSession } from './scorm.js';
+import { readSuspend, writeSuspend } from './suspend.js';
 import { MAX_SEED } from '../limits.js';
 
 /**
@@ -29,41 +39,8 @@ import { MAX_SEED } from '../limits.js';
  * @property {() => void} opened    an exercise was opened (the page writes its link and titles)
  */
 
-/** The suspend_data of an attempt at a package: which exercise is shown, the seed, each exercise's attempt, the interactions' order. */
-function suspendOf(
-  /** @type {number} */ at,
-  /** @type {number} */ seed,
-  /** @type {Array<Attempt | null>} */ attempts,
-  /** @type {string[]} */ order,
-  /** @type {number} */ limit,
-) {
-  const data = { v: 1, seed, at, i: order, a: attempts.map((a) => a && { ...a, seed: undefined }) };
-  let text = JSON.stringify(data);
-  // too long for the runtime (SCORM 1.2 keeps 4096 characters): the older checks go first (the
-  // best one stays: the score is made of it), then the edits of exercises not shown, then answers
-  const trims = [
-    (/** @type {any} */ a) => {
-      const best = bestCheck(a);
-      a.checks = a.checks.filter(
-        (/** @type {any} */ c, /** @type {number} */ k) => c === best || k === a.checks.length - 1,
-      );
-    },
-    (/** @type {any} */ a, /** @type {number} */ k) => {
-      if (k !== at) a.input = null;
-    },
-    (/** @type {any} */ a) => {
-      a.answers = {};
-    },
-  ];
-  for (const trim of trims) {
-    if (text.length <= limit) break;
-    data.a.forEach((a, k) => {
-      if (a) trim(a, k);
-    });
-    text = JSON.stringify(data);
-  }
-  return text;
-}
+/** The prefix of the page's own copies of course attempts (with the package's key and the learner's). */
+const COPY = 'ruledlab.course.';
 
 /**
  * Starts the package's side of the page (see the module's documentation), or does nothing when
@@ -86,6 +63,7 @@ export async function startCourse(setup, hooks) {
   } catch (e) {
     broken = e;
   }
+  const ids = tasks.map((t) => t.id);
   const bar = doc.createElement('nav');
   bar.className = 'rl-course';
   const heading = doc.createElement('h2');
@@ -96,10 +74,22 @@ export async function startCourse(setup, hooks) {
   const status = doc.createElement('p');
   status.className = 'rl-course-status';
   status.setAttribute('role', 'status');
+  status.tabIndex = -1;
+  const mode = doc.createElement('p');
+  mode.className = 'rl-course-mode';
+  mode.hidden = true;
+  const end = Object.assign(doc.createElement('button'), { type: 'button', name: 'course-end', hidden: true });
+  const confirm = doc.createElement('div');
+  confirm.className = 'rl-course-confirm';
+  confirm.hidden = true;
+  const confirmText = doc.createElement('p');
+  const confirmYes = Object.assign(doc.createElement('button'), { type: 'button', name: 'course-end-yes' });
+  const confirmNo = Object.assign(doc.createElement('button'), { type: 'button', name: 'course-end-no' });
+  confirm.append(confirmText, confirmYes, confirmNo);
   const problem = doc.createElement('p');
   problem.className = 'rl-course-problem';
   problem.hidden = true;
-  bar.append(heading, choose, status, problem);
+  bar.append(heading, choose, status, mode, end, confirm, problem);
   hooks.before.before(bar);
 
   /** The latest problem of the runtime (said until a record succeeds). */
@@ -112,28 +102,54 @@ export async function startCourse(setup, hooks) {
       })
     : null;
   session?.initialize();
-  const kept = session?.resume() ?? { suspend: '', entry: '', learner: '' };
-  /** @type {any} */
-  let saved = null;
-  try {
-    saved = kept.suspend ? JSON.parse(kept.suspend) : null;
-  } catch {}
-  const seedSaved = Number.isInteger(saved?.seed) && saved.seed >= 0 && saved.seed <= MAX_SEED ? saved.seed : null;
-  const seed = seedSaved ?? randomSeed();
+  /** @type {import('./scorm.js').Launch} */
+  const launch = session?.open
+    ? session.resume()
+    : { suspend: '', entry: '', learner: '', learnerId: '', mode: 'normal', credit: true };
+
+  // the page's own copy of this learner's open attempt at this package (none without a learner)
+  const packageKey = seedOf(JSON.stringify([standard, s?.title ?? '', s?.tasks ?? []])).toString(36);
+  const copyKey = launch.learnerId ? `${COPY}${packageKey}.${seedOf(launch.learnerId).toString(36)}` : null;
+  const fromSystem = readSuspend(launch.suspend, ids);
+  // (the copy is read only where the course system kept nothing and the attempt is open: a commit that failed)
+  const fromCopy = !fromSystem && copyKey && !session?.readOnly ? readSuspend(kept(copyKey) ?? '', ids) : null;
+  const saved = fromSystem ?? fromCopy;
+  const restoredHere = !fromSystem && !!fromCopy;
+  let ended = !!saved?.ended;
+
+  // the numbers drawn: per learner where the lecturer chose so (and the course system names her),
+  // else the attempt's own, kept in suspend_data
+  const perLearner = s?.draw === 'learner' && !!launch.learnerId;
+  const seedSaved =
+    Number.isInteger(saved?.seed) &&
+    /** @type {number} */ (saved?.seed) >= 0 &&
+    /** @type {number} */ (saved?.seed) <= MAX_SEED
+      ? /** @type {number} */ (saved?.seed)
+      : null;
+  const seed = perLearner ? seedOf(`${launch.learnerId}\u0000${packageKey}`) : (seedSaved ?? randomSeed());
   /** @type {string[]} */
-  const order = Array.isArray(saved?.i)
-    ? saved.i.filter((/** @type {unknown} */ x) => typeof x === 'string').slice(0, 200)
-    : [];
-  /** each exercise's attempt: the course system's, else this browser's (same seed), else none */
+  const order = (saved?.order ?? []).slice(0, 2000);
+  /** each exercise's attempt: the course system's (or this learner's copy), else none */
   const attempts = tasks.map((t, k) => {
-    // (an exercise that draws nothing has no seed)
-    const own = Object.keys(t.draw).length ? seed : null;
-    const mine = readAttempt(Array.isArray(saved?.a) ? saved.a[k] : null);
-    if (mine) return { ...mine, seed: own };
-    const local = keptAttempt(t.id);
-    return local && local.seed === own ? local : null;
+    const mine = readAttempt(saved?.attempts[k] ?? null);
+    return mine ? { ...mine, seed: Object.keys(t.draw).length ? seed : null } : null;
   });
-  let at = Number.isInteger(saved?.at) && saved.at >= 0 && saved.at < tasks.length ? saved.at : 0;
+  let at =
+    Number.isInteger(saved?.at) &&
+    /** @type {number} */ (saved?.at) >= 0 &&
+    /** @type {number} */ (saved?.at) < tasks.length
+      ? /** @type {number} */ (saved?.at)
+      : 0;
+
+  /** Every exercise solved (by a check that counts). */
+  const solved = () =>
+    tasks.length > 0 &&
+    tasks.every((_, k) => {
+      const best = bestCheck(attempts[k]);
+      return best && best.passed === best.of;
+    });
+  /** Whether what the student does now is recorded as a grade. */
+  const counting = () => !!session?.open && !session.readOnly && !session.noCredit && !ended;
 
   const localize = () => {
     const i18n = hooks.i18n();
@@ -153,27 +169,52 @@ export async function startCourse(setup, hooks) {
     const raw = tasks.reduce((sum, _, k) => sum + (bestCheck(attempts[k])?.passed ?? 0), 0);
     const max = tasks.reduce((sum, task) => sum + task.goal.length, 0);
     // (a runtime that would not start says so in the problem below, and claims nothing here)
-    const where = !session
+    const where = !found
       ? t('course.noRuntime')
-      : recordedAt && !trouble
-        ? t('course.recorded', { time: recordedAt.toLocaleTimeString(lang) })
-        : session.open
-          ? t('course.connected', { standard: found?.version ?? '' })
-          : '';
+      : ended && !session?.readOnly
+        ? t('course.ended')
+        : !session?.open || session.readOnly || session.noCredit
+          ? ''
+          : recordedAt && !trouble
+            ? t('course.recorded', { time: recordedAt.toLocaleTimeString(lang) })
+            : t('course.connected', { standard: found.version });
+    const learner = launch.learner ? ` ${t('course.learner', { name: launch.learner.slice(0, 100) })}` : '';
     status.textContent = broken
       ? ''
-      : `${t('course.score', { raw, max })} ${where}${kept.learner ? ` ${t('course.learner', { name: kept.learner.slice(0, 100) })}` : ''}`;
-    problem.hidden = !trouble && !broken;
+      : `${t(session?.readOnly ? 'course.scoreRecorded' : 'course.score', { raw, max })} ${where}${learner}`;
+    // how the course system opened the attempt, when it is not an ordinary one
+    mode.hidden = !(session?.readOnly || session?.noCredit || restoredHere);
+    mode.textContent = session?.readOnly
+      ? t(launch.mode === 'browse' ? 'course.browse' : 'course.review')
+      : session?.noCredit
+        ? t('course.noCredit')
+        : restoredHere
+          ? t('course.restored')
+          : '';
+    end.hidden = !counting() || broken !== null || !tasks.length;
+    end.textContent = t('course.end');
+    confirmText.textContent = t('course.endConfirm', { raw, max });
+    confirmYes.textContent = t('course.endYes');
+    confirmNo.textContent = t('course.endNo');
+    if (end.hidden) confirm.hidden = true;
+    const initFailed = found && !session?.open ? session?.refused : null;
+    problem.hidden = !trouble && !broken && !initFailed;
     problem.setAttribute('role', 'alert');
     problem.textContent = broken
       ? t('course.broken', { reason: taskErrorText(broken, i18n) })
-      : trouble
-        ? t(trouble.code ? 'course.refused' : 'course.threw', {
-            call: trouble.call,
-            code: trouble.code,
-            text: trouble.text || '—',
+      : initFailed
+        ? t(initFailed.code ? 'course.notStarted' : 'course.startThrew', {
+            call: initFailed.call,
+            code: initFailed.code,
+            text: initFailed.text || '—',
           })
-        : '';
+        : trouble
+          ? t(trouble.code ? 'course.refused' : 'course.threw', {
+              call: trouble.call,
+              code: trouble.code,
+              text: trouble.text || '—',
+            })
+          : '';
   };
 
   /** Opens exercise `k` with its attempt. */
@@ -188,6 +229,13 @@ export async function startCourse(setup, hooks) {
     });
     hooks.opened();
     localize();
+  };
+
+  /** Keeps the attempt in this browser for this learner and package while it is open (and forgets it once it ends). */
+  const keepCopy = (/** @type {string} */ suspend) => {
+    if (!copyKey || session?.readOnly) return;
+    if (ended || solved()) forget(copyKey);
+    else keep(copyKey, suspend);
   };
 
   /** Everything the course system is told now (the conditions of `checked`: their latest check). */
@@ -210,9 +258,12 @@ export async function startCourse(setup, hooks) {
                   const condition = drawn.goal[j];
                   const typed = condition.answer ? checked.answers[condition.answer] : undefined;
                   const value = condition.answer || c.value === null ? '' : decimal(c.value);
+                  const words = describeCondition(condition, drawn, i18n);
                   return {
                     id: `${task.id}.c${j + 1}`,
                     holds: c.holds,
+                    // the solution shown, or a check after it: recorded, and marked as counting for nothing
+                    shown: !checked.counted,
                     numeric: value !== '',
                     // what she typed, or the value she reached — never what was expected
                     response: condition.answer
@@ -220,18 +271,20 @@ export async function startCourse(setup, hooks) {
                         ? typed.join('; ')
                         : String(typed ?? '')
                       : value,
-                    description: describeCondition(condition, drawn, i18n),
+                    description: checked.counted ? words : `${i18n.t('course.shownDescription')} ${words}`,
                   };
                 })
               : null,
         };
       }),
       order,
-      { seconds: session.seconds(), now: new Date() },
+      { seconds: session.seconds(), now: new Date(), ended },
     );
     trouble = null;
-    const ok = session.record(values, suspendOf(at, seed, attempts, order, session.limit));
-    recordedAt = ok ? new Date() : recordedAt;
+    const suspend = writeSuspend({ seed, at, ended, order, attempts }, ids, session.limit, bestCheck);
+    keepCopy(suspend);
+    const ok = session.record(values, suspend);
+    recordedAt = ok && !session.readOnly ? new Date() : recordedAt;
     localize();
   };
 
@@ -240,27 +293,41 @@ export async function startCourse(setup, hooks) {
     const k = Number(picker.value);
     show(k).then(() => record(null));
   });
-  const done = () =>
-    tasks.length > 0 &&
-    tasks.every((_, k) => {
-      const best = bestCheck(attempts[k]);
-      return best && best.passed === best.of;
-    });
+  // ending the attempt: asked once more (it cannot be undone), then recorded as done and the session ended
+  end.addEventListener('click', () => {
+    confirm.hidden = false;
+    confirmNo.focus();
+  });
+  confirmNo.addEventListener('click', () => {
+    confirm.hidden = true;
+    end.focus();
+  });
+  confirmYes.addEventListener('click', () => {
+    attempts[at] = attemptOf(stage) ?? attempts[at];
+    ended = true;
+    confirm.hidden = true;
+    record(null);
+    session?.finish(true);
+    localize();
+    status.focus();
+  });
   win.addEventListener('pagehide', () => {
     if (!session?.open) return;
     attempts[at] = attemptOf(stage) ?? attempts[at];
     record(null);
-    session.finish(done());
+    session.finish(ended || solved());
   });
 
   localize();
   if (tasks.length) await show(at);
   return {
-    /** After a check (or the first solve) of the exercise shown. */
+    /** After a check of the exercise shown, or its solution shown. */
     checked: (/** @type {import('../task/panel.js').TaskReport} */ report) => {
       attempts[at] = attemptOf(stage);
       record(report);
     },
+    /** Whether the attempt is the course system's only (the page keeps no copy of its own elsewhere). */
+    counting,
     localize,
   };
 }

@@ -10,10 +10,11 @@
 //                                       the element snippet with its script to upload
 // Every snippet carries the scene, its parameters, the figure of the paper, the language, the
 // camera and the reader's edit of the input (up to MAX_LINK_HANDLES handles), and what readers
-// may do there — edit the geometry, see the controls, see the explanation, leave an exercise
-// (the dialog's options; Leave is not offered in a frame unless allowed). On an exercise the
-// snippets show the exercise (each reader drawing her own numbers), and it goes out as a SCORM
-// package or an H5P file too (page/packages.js). Each snippet has a Copy button; the tests paste
+// may do there — edit the geometry, see the controls, see the explanation, leave an exercise,
+// when its solution may be shown (the dialog's options; Leave is not offered in a frame unless
+// allowed). On an exercise the snippets carry the exercise, the language and those options — not
+// this view's camera or the answers typed here — each reader drawing her own numbers, and it goes
+// out as a SCORM package or an H5P file too (page/packages.js). Each snippet has a Copy button; the tests paste
 // each into a page on another origin and require it to draw.
 import { defaults } from '../scene.js';
 import { writeState } from '../state.js';
@@ -27,6 +28,7 @@ import { packageButtons } from './packages.js';
 import { taskLink, say } from '../task/format.js';
 import { builtInTask } from '../task/builtin.js';
 import { undrawn } from '../task/draw.js';
+import { writeSolutionRule } from '../task/solution-rule.js';
 
 /** What `npm run build` made beside the served page (dist/manifest.json names the embed script). */
 const MANIFEST = new URL('../../dist/manifest.json', import.meta.url).href;
@@ -41,15 +43,31 @@ export const EMBED_FILE = 'ruledlab-embed.js';
  * @property {boolean} text       see the scene's explanation
  * @property {boolean} edit       drag the points (a scene that has them)
  * @property {boolean} leave      leave the exercise for the scene alone
+ * @property {number | null} [solution]   have the solution shown after this many checks that do
+ *   not solve it (null: never; default 1)
  */
 
 /** The hash flags of what readers may do in a frame (after "embed"). */
 const flags = (/** @type {Readers} */ r) =>
-  ['controls', 'edit', 'text', 'leave'].filter((k) => r[/** @type {keyof Readers} */ (k)]);
+  ['controls', 'edit', 'text', 'leave'].filter((k) => r[/** @type {'controls' | 'edit' | 'text' | 'leave'} */ (k)]);
+
+/** When the solution is offered, as a link and an attribute write it (null: the default). */
+const solutionOf = (/** @type {Readers} */ r) =>
+  writeSolutionRule(r.solution === undefined ? null : { after: r.solution });
 
 /** The element's attributes of what readers may do. */
-const attributes = (/** @type {Readers} */ r) =>
-  `${r.controls ? ' controls' : ''}${r.text ? ' text' : ''}${r.edit ? ' editable' : ''}${r.leave ? ' leave' : ''}`;
+const attributes = (/** @type {Readers} */ r) => {
+  const rule = solutionOf(r);
+  return `${r.controls ? ' controls' : ''}${r.text ? ' text' : ''}${r.edit ? ' editable' : ''}${r.leave ? ' leave' : ''}${rule ? ` solution="${rule}"` : ''}`;
+};
+
+/** An exercise's hash: its link value, the language, and when its solution is offered. */
+const exerciseHash = (/** @type {string} */ value, /** @type {string} */ lang, /** @type {Readers} */ r) => {
+  const q = new URLSearchParams({ task: value, lang });
+  const rule = solutionOf(r);
+  if (rule) q.set('solution', rule);
+  return q.toString();
+};
 
 /**
  * @typedef {object} ShareContext
@@ -69,7 +87,13 @@ const attributes = (/** @type {Readers} */ r) =>
  */
 export function shareDialog(dialog, context) {
   /** What readers may do (the options, kept while the page is open; edit: null until first set, then the scene's). */
-  const readers = { controls: true, text: false, edit: /** @type {boolean | null} */ (null), leave: false };
+  const readers = {
+    controls: true,
+    text: false,
+    edit: /** @type {boolean | null} */ (null),
+    leave: false,
+    solution: /** @type {number | null} */ (1),
+  };
   const doc = dialog.ownerDocument;
   const el = (/** @type {string} */ tag, /** @type {Record<string, any>} */ props = {}) =>
     Object.assign(doc.createElement(tag), props);
@@ -110,7 +134,7 @@ export function shareDialog(dialog, context) {
    */
   const taskSnippets = async (value, title, who = { controls: true, text: false, edit: false, leave: false }) => {
     const lang = context.state().lang ?? context.i18n().lang;
-    const hash = new URLSearchParams({ task: value, lang }).toString();
+    const hash = exerciseHash(value, lang, who);
     const base = location.href.split('#')[0];
     const { script } = await scriptOf();
     const address = place().address;
@@ -149,9 +173,9 @@ export function shareDialog(dialog, context) {
     const who = { ...readers, edit: handles && !!readers.edit, leave: !!task && readers.leave };
     const input = stage.input && linkableInput(stage.input) ? stage.input : null;
     const value = task ? taskLink(task, (id) => builtInTask(id) !== null) : '';
-    const taskHash = new URLSearchParams({ task: value, lang }).toString();
+    const taskHash = exerciseHash(value, lang, who);
     if (where.address) {
-      rows.push(field('share.link', 'share-link', `${base}#${task ? taskHash : hash}`));
+      rows.push(field(task ? 'share.taskLink' : 'share.link', 'share-link', `${base}#${task ? taskHash : hash}`));
       rows.push(field('share.iframe', 'share-iframe', iframeSnippet(base, task ? taskHash : hash, title, who)));
     } else {
       rows.push(
@@ -248,7 +272,7 @@ export function shareDialog(dialog, context) {
     dialog.setAttribute('aria-label', t('share.title'));
     dialog.replaceChildren(
       el('h2', { textContent: t('share.title') }),
-      el('p', { textContent: t('share.intro') }),
+      el('p', { textContent: t(task ? 'share.introTask' : 'share.intro') }),
       options(i18n, handles, !!task),
       ...rows,
       onefileRow,
@@ -285,7 +309,7 @@ export function shareDialog(dialog, context) {
   const options = ({ t }, handles, exercise) => {
     const box = el('fieldset', { className: 'share-readers' });
     box.append(el('legend', { textContent: t('course.readers') }));
-    const offered = /** @type {Array<keyof typeof readers>} */ ([
+    const offered = /** @type {Array<'edit' | 'controls' | 'text' | 'leave'>} */ ([
       ...(handles ? ['edit'] : []),
       'controls',
       'text',
@@ -300,6 +324,24 @@ export function shareDialog(dialog, context) {
       });
       const row = el('label', { className: 'share-reader', htmlFor: name });
       row.append(input, ` ${t(`course.reader.${key}`)}`);
+      box.append(row);
+    }
+    // on an exercise: when its solution may be shown (whenever it is, it earns nothing)
+    if (exercise) {
+      const name = 'share-reader-solution';
+      const select = /** @type {HTMLSelectElement} */ (el('select', { name, id: name }));
+      for (const n of [0, 1, 2, 3, 5])
+        select.add(
+          new Option(n === 0 ? t('course.solution.atOnce') : t('course.solution.after', { count: n }), String(n)),
+        );
+      select.add(new Option(t('course.solution.never'), 'never'));
+      select.value = readers.solution === null ? 'never' : String(readers.solution);
+      select.addEventListener('change', () => {
+        readers.solution = select.value === 'never' ? null : Number(select.value);
+        open().then(() => /** @type {HTMLElement | null} */ (dialog.querySelector(`[name="${name}"]`))?.focus());
+      });
+      const row = el('label', { className: 'share-reader', htmlFor: name });
+      row.append(`${t('course.solution')} `, select);
       box.append(row);
     }
     return box;
@@ -342,6 +384,7 @@ export function iframeSnippet(
   /** @type {Readers} */ readers = { controls: true, text: false, edit: false, leave: false },
 ) {
   const rest = hash.replace(/^embed&?|(^|&)(controls|edit|text|leave)(?=&|$)/g, '').replace(/^&/, '');
+  // (an exercise's hash carries its solution rule already)
   const src = `${base}#${['embed', ...flags(readers), rest].filter(Boolean).join('&')}`;
   return `<iframe src="${attr(src)}" title="${attr(plainTitle(title))}" width="100%" height="560" frameborder="0" allow="fullscreen" loading="lazy"></iframe>`;
 }

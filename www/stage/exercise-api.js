@@ -11,8 +11,9 @@ import { openExercise } from './open.js';
  * @property {number} maxScore     how many conditions its goal has
  * @property {number | null} seed  the seed of the numbers drawn (null: it draws none)
  * @property {() => import('../task/panel.js').TaskReport | null} check   a check, reported as the Check button's
- * @property {() => import('../task/panel.js').TaskReport | null} showSolution   the solution, checked (null: it has none)
- * @property {() => void} startOver   back to the start, answers and hints cleared
+ * @property {() => import('../task/panel.js').TaskReport | null} showSolution   the solution, shown with its
+ *   conditions (null: it has none, or it is not offered yet); it counts for nothing, nor does any check after it
+ * @property {() => void} startOver   back to the start, answers, hints and checks cleared (a solution shown stays shown)
  * @property {() => import('../task/attempt.js').Attempt} attempt   the attempt as it stands
  * @property {(attempt: import('../task/attempt.js').Attempt) => Promise<void>} restore   an attempt read by task/attempt.js
  */
@@ -45,8 +46,9 @@ export function exerciseApi(stage) {
     seed: task.drawn?.seed ?? null,
     check: () => panel.check(),
     showSolution: () => panel.solve(),
+    // (a solution shown stays shown: what is checked after it in this attempt still counts for nothing)
     startOver: () => {
-      panel.show(task);
+      panel.show(task, { shown: panel.shown });
       stage.startTask();
     },
     attempt: () => /** @type {import('../task/attempt.js').Attempt} */ (attemptOf(stage)),

@@ -31,6 +31,7 @@ export class ExerciseHost {
           }
         : null,
       mayLeave: () => options.mayLeaveTask?.() ?? true,
+      solutionRule: () => options.solutionRule?.() ?? { after: 1 },
       report: (type, report) => {
         // (where the panel is shown its verdict, a status, says it: once is enough)
         if (type === 'solved' && stage.els.taskBox.offsetParent === null)

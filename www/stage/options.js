@@ -11,8 +11,10 @@
  * @property {(data: import('../scene.js').ImportedData) => void} [onEditAsData]   "Edit as data" of a
  *   scene without handles: show its sample as your data (the "data" scene)
  * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input', ended: boolean}) => void} [onChange]
- * @property {(type: 'check' | 'solved', report: import('../task/panel.js').TaskReport) => void} [onTask]
- *   an exercise was checked, or solved
+ * @property {(type: 'check' | 'solved' | 'solution', report: import('../task/panel.js').TaskReport) => void} [onTask]
+ *   an exercise was checked, solved, or its solution shown (which counts for nothing)
+ * @property {() => import('../task/panel.js').SolutionRule} [solutionRule]   when the solution is offered
+ *   (default: after a first check that does not solve the exercise)
  * @property {() => void} [onLeaveTask]   the reader leaves the exercise (the page; an element with `leave`)
  * @property {() => boolean} [mayLeaveTask]   whether Leave is offered now (a page in a frame: only where allowed)
  * @property {(error: unknown, message: string) => void} [onError]   with the sentence shown

@@ -1,5 +1,6 @@
 // An attempt at an exercise: its seed (the numbers drawn), what the reader may change and has
-// changed (parameters, her edit), her answers, the hints she has seen and her checks. The page
+// changed (parameters, her edit), her answers, the hints she has seen, her checks, and whether she
+// has had the solution shown (a shown solution and every check after it earn nothing). The page
 // keeps it in the browser where it can (task/progress.js), a SCORM package in the course
 // system's suspend_data (page/scorm.js), an H5P activity in H5P's saved state. Whatever comes
 // back from there is read here and only here: anything that is not an attempt this code wrote —
@@ -15,6 +16,7 @@ import { MAX_SEED, MAX_TASK_HISTORY, MAX_TASK_INPUT, MAX_TEXT_PARAM, MAX_TASK_NA
  * @property {import('./check.js').Answers} answers
  * @property {number} hints
  * @property {import('./panel.js').Check[]} checks
+ * @property {boolean} shown   the solution was shown in this attempt (its checks since count for nothing)
  */
 
 const isObject = (/** @type {unknown} */ x) => typeof x === 'object' && x !== null && !Array.isArray(x);
@@ -63,7 +65,12 @@ export function readAttempt(x) {
             count(c.of, MAX_TASK_NAMES) !== undefined &&
             count(c.passed, c.of) !== undefined,
         )
-        .map((c) => ({ at: c.at, passed: c.passed, of: c.of }))
+        .map((c) => ({
+          at: c.at,
+          passed: c.passed,
+          of: c.of,
+          ...(c.shown === 'solution' || c.shown === 'after' ? { shown: c.shown } : {}),
+        }))
     : [];
   return {
     seed: count(o.seed, MAX_SEED) ?? null,
@@ -72,12 +79,17 @@ export function readAttempt(x) {
     answers,
     hints: count(o.hints, MAX_TASK_NAMES) ?? 0,
     checks,
+    // (a check made with the solution shown says so too: an attempt trimmed of its older entries keeps it)
+    shown: o.shown === true || checks.some((c) => c.shown),
   };
 }
 
-/** The best check of an attempt: the most conditions met (null before a first check). */
+/**
+ * The best check of an attempt that counts: the most conditions met (null before a first check
+ * that counts). The solution shown and the checks made after it count for nothing.
+ */
 export function bestCheck(/** @type {Pick<Attempt, 'checks'> | null} */ attempt) {
   let best = /** @type {import('./panel.js').Check | null} */ (null);
-  for (const c of attempt?.checks ?? []) if (!best || c.passed / c.of > best.passed / best.of) best = c;
+  for (const c of attempt?.checks ?? []) if (!c.shown && (!best || c.passed / c.of > best.passed / best.of)) best = c;
   return best;
 }

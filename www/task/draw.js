@@ -20,6 +20,17 @@ export function randomSeed() {
 }
 
 /**
+ * A whole number from 0 to MAX_SEED that a text gives, the same on every machine (FNV-1a, 32
+ * bits): the seed of a learner's numbers where the lecturer draws them per learner (her id and the
+ * package's), so that every launch of hers — a relaunch, a review — shows the same numbers.
+ */
+export function seedOf(/** @type {string} */ text) {
+  let h = 2166136261;
+  for (let i = 0; i < text.length; i++) h = Math.imul(h ^ text.charCodeAt(i), 16777619);
+  return (h >>> 0) % (MAX_SEED + 1);
+}
+
+/**
  * A number in [0, 1) from `seed` and a label (an exercise's id and a drawn name): FNV-1a of the
  * label started from the seed, then mulberry32's output mix — the same on every machine.
  */

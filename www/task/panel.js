@@ -1,8 +1,10 @@
 // The exercise in the stage's panel: its title and prompt, the reader's answer fields, Check (each
 // condition: holds or not, by how much it misses, in words; solved said in words and by a mark,
-// not by colour alone), up to three hints revealed in turn, the solution on request after a first
-// check, Start over, and Leave; the numbers drawn for this attempt and the checks made so far (the
-// attempt: task/attempt.js). All of it is text: an exercise's texts are never markup.
+// not by colour alone), up to three hints revealed in turn, the solution on request (after as many
+// checks as the lecturer allows, or never), Start over, and Leave; the numbers drawn for this
+// attempt and the checks made so far (the attempt: task/attempt.js). A solution shown earns
+// nothing: it is reported as a `solution`, not a check, and every check of the attempt after it
+// is reported as not counted. All of it is text: an exercise's texts are never markup.
 import { say } from './format.js';
 import { checkGoal, measuresOf, unreadable } from './check.js';
 import { describeCondition, outcomeText } from './words.js';
@@ -21,14 +23,22 @@ import { MAX_TASK_HISTORY, TASK_HISTORY_SHOWN } from '../limits.js';
  * @property {() => void} showSolution   the solution's state (parameters, edit)
  * @property {(() => void) | null} leave the page leaves the exercise (an element cannot)
  * @property {() => boolean} [mayLeave]  whether Leave is offered now (an embed hides it unless allowed)
- * @property {(type: 'check' | 'solved', detail: TaskReport) => void} report
+ * @property {() => SolutionRule} [solutionRule]   when the solution is offered (default: after a first check)
+ * @property {(type: 'check' | 'solved' | 'solution', detail: TaskReport) => void} report
+ *
+ * When the reader may have the solution shown: after `after` checks that did not solve the
+ * exercise (1: after a first check), or never (null).
+ * @typedef {{after: number | null}} SolutionRule
  *
  * What a check reports (the `task-check` and `task-solved` events, and a message to the page
- * around a frame).
+ * around a frame); the solution shown reports the same (`task-solution`), with `counted` false.
  * @typedef {object} TaskReport
  * @property {string} task        the exercise's id
  * @property {string} title
- * @property {boolean} solved
+ * @property {boolean} solved     solved by this check, and it counts (never with the solution shown)
+ * @property {boolean} counted    whether it counts toward a score: false for the solution shown and
+ *   every check after it in the same attempt (a grade takes nothing from it)
+ * @property {boolean} shown      the solution has been shown in this attempt
  * @property {number} passed      how many conditions hold
  * @property {number} of          how many there are
  * @property {Array<{holds: boolean, value: number | null, target: number | null}>} conditions
@@ -37,14 +47,17 @@ import { MAX_TASK_HISTORY, TASK_HISTORY_SHOWN } from '../limits.js';
  * @property {number | null} seed   the seed of the numbers drawn (null: the exercise draws none)
  * @property {Record<string, number | string> | null} drawn   the numbers drawn, by name
  *
- * One check of an attempt: when (ms since 1970), how many conditions held, of how many.
- * @typedef {{at: number, passed: number, of: number}} Check
+ * One check of an attempt: when (ms since 1970), how many conditions held, of how many; `shown`:
+ * the solution shown ('solution') or a check made after it ('after') — neither counts.
+ * @typedef {{at: number, passed: number, of: number, shown?: 'solution' | 'after'}} Check
  *
- * What the reader has done in an exercise: her answers, the hints shown, her checks.
+ * What the reader has done in an exercise: her answers, the hints shown, her checks, whether she
+ * has had the solution shown.
  * @typedef {object} PanelAttempt
  * @property {import('./check.js').Answers} answers
  * @property {number} hints
  * @property {Check[]} checks
+ * @property {boolean} shown
  */
 
 let serial = 0;
@@ -64,6 +77,8 @@ export class TaskPanel {
     this.hints = 0;
     this.checked = false;
     this.solved = false;
+    /** the solution has been shown in this attempt: nothing since counts */
+    this.shown = false;
     /** @type {Check[]} */
     this.checks = [];
     this.id = `rl-task-${++serial}`;
@@ -71,7 +86,7 @@ export class TaskPanel {
 
   /**
    * Shows an exercise (null: none): its answers empty and no hint shown, or as `attempt` left
-   * them (answers, hints shown, checks made).
+   * them (answers, hints shown, checks made, the solution shown).
    * @param {Task | null} task
    * @param {Partial<PanelAttempt> | null} [attempt]
    */
@@ -80,14 +95,31 @@ export class TaskPanel {
     this.answers = structuredClone(attempt?.answers ?? {});
     this.hints = Math.min(task?.hints.length ?? 0, attempt?.hints ?? 0);
     this.checks = [...(attempt?.checks ?? [])].slice(-MAX_TASK_HISTORY);
+    this.shown = !!attempt?.shown || this.checks.some((c) => c.shown);
     this.checked = this.checks.length > 0;
-    this.solved = this.checks.some((c) => c.passed === c.of);
+    this.solved = this.checks.some((c) => !c.shown && c.passed === c.of);
     this.render();
   }
 
   /** What the reader has done so far (a copy). @returns {PanelAttempt} */
   attempt() {
-    return { answers: structuredClone(this.answers), hints: this.hints, checks: this.checks.map((c) => ({ ...c })) };
+    return {
+      answers: structuredClone(this.answers),
+      hints: this.hints,
+      checks: this.checks.map((c) => ({ ...c })),
+      shown: this.shown,
+    };
+  }
+
+  /** Checks made so far that did not solve the exercise (and count). */
+  failures() {
+    return this.checks.filter((c) => !c.shown && c.passed < c.of).length;
+  }
+
+  /** Whether the solution is offered now: the exercise has one, the lecturer allows it, and enough checks failed. */
+  solutionOffered() {
+    const after = (this.hooks.solutionRule?.() ?? { after: 1 }).after;
+    return !!this.task?.solution && after !== null && (this.shown || this.solved || this.failures() >= after);
   }
 
   /** Builds the panel in the current language (answers typed so far stay). */
@@ -153,13 +185,16 @@ export class TaskPanel {
       this.render();
       /** @type {HTMLElement | null} */ (this.box.querySelector(`.rl-task-hints li:nth-child(${this.hints})`))?.focus();
     });
+    // the solution: where the exercise has one and the lecturer allows it, after enough checks
+    const rule = this.hooks.solutionRule?.() ?? { after: 1 };
+    const offered = this.solutionOffered();
     const solution = el('button', {
       type: 'button',
       className: 'rl-task-solution',
       textContent: t('task.solution'),
-      hidden: !task.solution,
-      disabled: !this.checked,
-      title: this.checked ? '' : t('task.solutionAfterCheck'),
+      hidden: !task.solution || rule.after === null,
+      disabled: !offered,
+      title: offered ? t('task.solutionCounts') : t('task.solutionAfter', { count: rule.after ?? 1 }),
     });
     solution.addEventListener('click', () => {
       this.solve();
@@ -171,7 +206,7 @@ export class TaskPanel {
       // the figure back to the start first, then the panel (the checks made so far stay: they are
       // the attempt's record); the verdict was of the figure before, so it waits for the next check
       this.hooks.startOver();
-      this.show(task, { checks: this.checks });
+      this.show(task, { checks: this.checks, shown: this.shown });
       for (const part of this.box.querySelectorAll('.rl-task-results, .rl-task-verdict'))
         if (part instanceof HTMLElement) part.hidden = true;
       // (the panel is new: the keyboard stays on its Start over)
@@ -201,7 +236,7 @@ export class TaskPanel {
     const history = el('div', { className: 'rl-task-history' });
     this.box.replaceChildren(heading, prompt, numbers, answers, buttons, hints, results, verdict, history, held);
     this.showChecks();
-    if (this.checked) this.check(false);
+    if (this.checked) this.check(false, this.checks.at(-1)?.shown === 'solution' ? 'solution' : 'check');
   }
 
   /** The checks made so far, the latest first (a few; how many more there were). */
@@ -222,9 +257,13 @@ export class TaskPanel {
       list.append(
         Object.assign(doc.createElement('li'), {
           textContent:
-            c.passed === c.of
-              ? `✓ ${t('task.historySolved', { time: time(c.at) })}`
-              : t('task.historyEntry', { time: time(c.at), passed: c.passed, of: c.of }),
+            c.shown === 'solution'
+              ? t('task.historySolution', { time: time(c.at) })
+              : c.shown
+                ? t('task.historyAfter', { time: time(c.at), passed: c.passed, of: c.of })
+                : c.passed === c.of
+                  ? `✓ ${t('task.historySolved', { time: time(c.at) })}`
+                  : t('task.historyEntry', { time: time(c.at), passed: c.passed, of: c.of }),
         }),
       );
     const heading = Object.assign(doc.createElement('h4'), { textContent: t('task.history') });
@@ -234,10 +273,15 @@ export class TaskPanel {
       box.append(Object.assign(doc.createElement('p'), { textContent: t('task.historyMore', { count: more }) }));
   }
 
-  /** The solution on screen, its answers filled in and checked. */
+  /**
+   * The solution on screen, its answers filled in and its conditions shown (null where it is not
+   * offered). It counts for nothing, and nothing checked after it in this attempt does: it is
+   * reported as a `solution`, with the score of the checks before it untouched.
+   */
   solve() {
     const task = this.task;
-    if (!task?.solution) return null;
+    if (!task?.solution || !this.solutionOffered()) return null;
+    this.shown = true;
     this.hooks.showSolution();
     // a number the scene computes in the solution's state ({ value }) is read from what it built now
     const values = measuresOf(this.hooks.state()?.built ?? null);
@@ -248,7 +292,7 @@ export class TaskPanel {
           ? String(Number((values[v.value] ?? Number.NaN).toPrecision(12)))
           : String(v);
     this.render();
-    return this.check();
+    return this.check(true, 'solution');
   }
 
   /** Whether the exercise lets the reader change anything in the scene. */
@@ -286,8 +330,13 @@ export class TaskPanel {
     return row;
   }
 
-  /** Checks the goal on what is shown: each condition in words, solved or not; reports it (`announce`: say it). */
-  check(announce = true) {
+  /**
+   * Checks the goal on what is shown: each condition in words, solved or not; reports it
+   * (`announce`: say it and keep it). `kind` 'solution': the solution shown, which counts for nothing.
+   * @param {boolean} [announce]
+   * @param {'check' | 'solution'} [kind]
+   */
+  check(announce = true, kind = 'check') {
     const task = this.task;
     if (!task) return null;
     const i18n = this.hooks.i18n();
@@ -297,7 +346,6 @@ export class TaskPanel {
     const state = this.hooks.state();
     const doc = this.box.ownerDocument;
     this.checked = true;
-    /** @type {HTMLButtonElement | null} */ (this.box.querySelector('.rl-task-solution'))?.removeAttribute('disabled');
     if (!state) {
       results.hidden = true;
       verdict.hidden = false;
@@ -305,7 +353,12 @@ export class TaskPanel {
       verdict.textContent = t('task.noPicture');
       return null;
     }
-    const { outcomes, solved } = checkGoal(task, state.built, this.answers, state);
+    const { outcomes, solved: holds } = checkGoal(task, state.built, this.answers, state);
+    /** whether a check that counts had solved it before this one (the first that does is reported as solved) */
+    const before = this.solved;
+    // (the solution shown, and every check after it, count for nothing)
+    const counts = !this.shown;
+    const solved = holds && counts;
     results.replaceChildren(
       ...outcomes.map((o) => {
         const li = doc.createElement('li');
@@ -331,17 +384,24 @@ export class TaskPanel {
     verdict.className = solved ? 'rl-task-verdict rl-task-solved' : 'rl-task-verdict';
     const passed = outcomes.filter((o) => o.holds).length;
     // an answer that could not be read is said with how to write it, and the check is not counted
-    const counted = !outcomes.some(unreadable);
-    verdict.textContent = solved
-      ? `✓ ${t('task.solved')}`
-      : counted
-        ? t('task.notSolved', { passed, of: outcomes.length })
-        : t('task.notCounted');
+    const readable = !outcomes.some(unreadable);
+    verdict.textContent =
+      kind === 'solution'
+        ? t('task.solutionShown')
+        : !counts
+          ? t(holds ? 'task.afterSolutionHolds' : 'task.afterSolution', { passed, of: outcomes.length })
+          : solved
+            ? `✓ ${t('task.solved')}`
+            : readable
+              ? t('task.notSolved', { passed, of: outcomes.length })
+              : t('task.notCounted');
     /** @type {TaskReport} */
     const report = {
       task: task.id,
       title: task.title.en ?? task.title.de ?? task.id,
       solved,
+      counted: counts,
+      shown: this.shown,
       passed,
       of: outcomes.length,
       conditions: outcomes.map((o) => ({
@@ -353,15 +413,30 @@ export class TaskPanel {
       seed: task.drawn?.seed ?? null,
       drawn: task.drawn ? { ...task.drawn.values } : null,
     };
-    if (announce) {
-      this.checks = [...this.checks, { at: Date.now(), passed, of: outcomes.length }].slice(-MAX_TASK_HISTORY);
+    if (announce && (readable || kind === 'solution')) {
+      /** @type {Check} */
+      const entry = { at: Date.now(), passed, of: outcomes.length };
+      if (!counts) entry.shown = kind === 'solution' ? 'solution' : 'after';
+      this.checks = [...this.checks, entry].slice(-MAX_TASK_HISTORY);
       this.showChecks();
+    }
+    // (a check not announced — the panel built anew — only shows how the figure stands)
+    if (announce) this.solved = this.solved || solved;
+    // the solution, once enough checks have failed (or at once, where the lecturer allows it)
+    const offer = /** @type {HTMLButtonElement | null} */ (this.box.querySelector('.rl-task-solution'));
+    if (offer) {
+      const offered = this.solutionOffered();
+      offer.disabled = !offered;
+      const rule = this.hooks.solutionRule?.() ?? { after: 1 };
+      offer.title = offered ? t('task.solutionCounts') : t('task.solutionAfter', { count: rule.after ?? 1 });
+    }
+    if (announce) {
       // where the panel runs below the screen (a phone), the verdict is brought into sight
       verdict.scrollIntoView({ block: 'nearest' });
-      if (counted) this.hooks.report('check', report);
-      if (solved && !this.solved) this.hooks.report('solved', report);
+      if (kind === 'solution') this.hooks.report('solution', report);
+      else if (readable) this.hooks.report('check', report);
+      if (solved && !before) this.hooks.report('solved', report);
     }
-    this.solved = solved;
     return report;
   }
 }

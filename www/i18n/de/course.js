@@ -8,7 +8,46 @@ export default {
   'course.exercise': 'Aufgabe',
   'course.score': 'Bisher: {raw} von {max} Bedingungen erfüllt.',
   'course.noRuntime': 'Hier zeichnet keine Lernplattform auf: Die Aufgaben funktionieren, aufgezeichnet wird nichts.',
-  'course.connected': 'Die Lernplattform (SCORM {standard}) zeichnet jede Prüfung auf.',
+  'course.connected':
+    'Die Lernplattform (SCORM {standard}) zeichnet jede Prüfung auf; der Versuch bleibt offen, bis alle Aufgaben gelöst sind oder Sie ihn beenden.',
+  'course.scoreRecorded': 'In diesem Versuch gespeichert: {raw} von {max} Bedingungen erfüllt.',
+  'course.ended': 'Sie haben diesen Versuch beendet: Was Sie jetzt prüfen, wird nicht aufgezeichnet.',
+  'course.review':
+    'Die Lernplattform hat diesen Versuch zur Ansicht geöffnet: Sie sehen Ihre gespeicherte Arbeit, und nichts, was Sie jetzt tun, wird aufgezeichnet.',
+  'course.browse':
+    'Die Lernplattform hat diese Aktivität zum Durchsehen geöffnet: Nichts, was Sie tun, wird aufgezeichnet.',
+  'course.noCredit':
+    'Dieser Versuch wird nicht bewertet (die Lernplattform rechnet ihn nicht an): Ihre Arbeit bleibt, Punkte werden nicht aufgezeichnet.',
+  'course.restored':
+    'Ihre Arbeit wurde aus diesem Browser wiederhergestellt: Die Lernplattform hatte sie nicht behalten (ihr letztes Speichern schlug fehl).',
+  'course.end': 'Versuch beenden',
+  'course.endConfirm':
+    'Den Versuch mit {raw} von {max} erfüllten Bedingungen beenden? Ihre Punkte sind dann endgültig, und die Lernplattform öffnet ihn danach zur Ansicht.',
+  'course.endYes': 'Beenden',
+  'course.endNo': 'Weiterarbeiten',
+  'course.notStarted':
+    'Die Lernplattform hat die Sitzung nicht begonnen ({call}: Fehler {code}, „{text}“): Nichts, was Sie hier tun, wird aufgezeichnet. Laden Sie die Seite neu oder sagen Sie es Ihrer Lehrperson.',
+  'course.startThrew':
+    'Die Lernplattform ist nicht erreichbar ({call}: „{text}“): Nichts, was Sie hier tun, wird aufgezeichnet. Laden Sie die Seite neu oder sagen Sie es Ihrer Lehrperson.',
+  'course.shownDescription': '(Lösung gezeigt: zählt nicht)',
+  'course.h5pPending':
+    'Aufgezeichnet, wenn Sie die Aufgabe lösen oder den Versuch beenden (bisher {raw} von {max} Bedingungen erfüllt).',
+  'course.h5pRecorded':
+    'Aufgezeichnet: {raw} von {max} Bedingungen erfüllt. „Neu beginnen“ startet einen neuen Versuch.',
+  'course.activityTitle': 'Titel der Aktivität (wie der Kurs ihn zeigt)',
+  'course.solution': 'Die Lösung darf gezeigt werden',
+  'course.solution.after': 'nach {count:Prüfung:Prüfungen} ohne Lösung',
+  'course.solution.never': 'nie',
+  'course.solution.atOnce': 'sofort',
+  'course.draw': 'Gezogene Zahlen',
+  'course.draw.attempt': 'für jeden Versuch neu',
+  'course.draw.learner': 'für jede Person fest (bei jedem ihrer Starts dieselben; auch die Ansicht zeigt sie)',
+  'course.packageOf.scorm12': 'SCORM-1.2-Paket von {what}',
+  'course.packageOf.scorm2004': 'SCORM-2004-Paket von {what}',
+  'course.packageOf.h5p': 'H5P-Datei von {what}',
+  'course.what.one': '‚{title}‘',
+  'course.what.more': '‚{title}‘ + {count} weitere',
+  'course.what.titled': '„{title}“ ({count:Aufgabe:Aufgaben})',
   'course.recorded': 'Um {time} im Kurs gespeichert.',
   'course.learner': 'Studierende/r: {name}.',
   'course.broken':

@@ -30,6 +30,8 @@ export default {
 
   'share.title': 'Diese Ansicht teilen',
   'share.intro': 'Jedes Feld enthält die aktuelle Szene, ihre Parameter, die Sprache und die Kamera.',
+  'share.introTask':
+    'Jedes Feld enthält die Aufgabe, die Sprache und was Lesende dürfen – nicht die Kamera dieser Ansicht und nicht die hier getippten Antworten; alle Lesenden ziehen ihre eigenen Zahlen.',
   'share.fromFile':
     'Diese Seite wurde aus einer Datei geöffnet und hat keine Adresse, die andere öffnen könnten. Um diese Ansicht zu teilen, laden Sie sie als eine HTML-Datei herunter und laden diese in Ihren Kurs hoch, oder setzen Sie das Element unten in eine eigene Seite.',
   'share.noAddress':
@@ -50,6 +52,7 @@ export default {
   'share.copyWhat': 'Kopieren: {what}',
   'share.selectCopy': 'Markiert: Drücken Sie Strg+C (⌘C) zum Kopieren.',
   'share.link': 'Link',
+  'share.taskLink': 'Link zur Aufgabe',
   'share.iframe': 'Mit einem iframe einbetten',
   'share.element': 'Mit <ruled-view> einbetten',
   'share.copy': 'Kopieren',
@@ -113,6 +116,8 @@ export default {
   'element.badCamera':
     'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',
   'element.note.badTask': 'Das Attribut task ließ sich nicht lesen ({reason}); die Szene wird ohne es gezeigt.',
+  'element.note.badSolution':
+    'Das Attribut solution ist weder \u201enever\u201c noch eine ganze Zahl von Prüfungen von 0 bis {max}; die Lösung wird nach einer ersten Prüfung angeboten.',
   'element.note.badSeed': 'Das Attribut seed ist keine ganze Zahl von 0 bis {max}; neue Zahlen wurden gezogen.',
 
   'note.notOnOff': 'Der Wert von „{key}“ im Link ist weder ein noch aus; es gilt die Voreinstellung.',
@@ -130,4 +135,6 @@ export default {
   'note.badInput': 'Die bearbeitete Eingabe im Link passt nicht zu dieser Szene; die eingebaute Eingabe wird gezeigt.',
   'note.badTask': 'Die Aufgabe im Link ließ sich nicht lesen ({reason}); die Szene wird ohne sie gezeigt.',
   'note.badSeed': 'Der Startwert (seed) im Link ist keine ganze Zahl von 0 bis {max}; neue Zahlen wurden gezogen.',
+  'note.badSolution':
+    'Die Regel für die Lösung im Link ist weder \u201enever\u201c noch eine ganze Zahl von Prüfungen von 0 bis {max}; die Lösung wird nach einer ersten Prüfung angeboten.',
 };

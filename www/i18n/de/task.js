@@ -10,7 +10,14 @@ export default {
   'task.hint': 'Einen Hinweis zeigen ({shown} von {count} gezeigt)',
   'task.hints': 'Hinweise',
   'task.solution': 'Lösung zeigen',
-  'task.solutionAfterCheck': 'Die Lösung lässt sich nach einer ersten Prüfung zeigen',
+  'task.solutionAfter':
+    'Die Lösung lässt sich zeigen, wenn die Aufgabe nach {count:Prüfung:Prüfungen} nicht gelöst ist',
+  'task.solutionCounts':
+    'Gezeigt bringt die Lösung nichts ein: Ihre Punkte bleiben, was Ihre eigenen Prüfungen ergaben',
+  'task.solutionShown':
+    'Lösung gezeigt: Sie zählt nicht, und keine Prüfung dieses Versuchs zählt von jetzt an. Ihre Punkte bleiben, was Ihre eigenen Prüfungen ergaben.',
+  'task.afterSolution': 'Zählt nicht (die Lösung wurde gezeigt): {passed} von {of:Bedingung:Bedingungen} erfüllt.',
+  'task.afterSolutionHolds': 'Alle Bedingungen sind erfüllt – zählt nicht: Die Lösung wurde gezeigt.',
   'task.startOver': 'Von vorn',
   'task.leave': 'Aufgabe verlassen',
   'task.results': 'Stand der Bedingungen',
@@ -79,6 +86,8 @@ export default {
   'task.history': 'Ihre Prüfungen',
   'task.historyEntry': '{time}: {passed} von {of} erfüllt',
   'task.historySolved': '{time}: gelöst',
+  'task.historySolution': '{time}: Lösung gezeigt (zählt nicht)',
+  'task.historyAfter': '{time}: {passed} von {of} erfüllt (zählt nicht: nach der Lösung)',
   'task.historyMore': 'und {count:frühere Prüfung:frühere Prüfungen}',
 
   'author.open': 'Aus dieser Ansicht eine Aufgabe machen',
@@ -103,6 +112,8 @@ export default {
   'author.within': 'Toleranz',
   'author.withinLabel': '±',
   'author.now': 'jetzt {value}',
+  'author.overDraws': 'von {min} bis {max} über die gezogenen Zahlen',
+  'author.answerAtStart': 'die Leserin beantwortet sie',
   'author.remove': 'Bedingung {index} entfernen',
   'author.add': 'Eine Bedingung hinzufügen',
   'author.holdsAtStart': 'am Anfang erfüllt (es gäbe nichts zu tun)',

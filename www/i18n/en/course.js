@@ -7,7 +7,44 @@ export default {
   'course.exercise': 'Exercise',
   'course.score': 'Score so far: {raw} of {max} conditions met.',
   'course.noRuntime': 'No course system records here: the exercises work, nothing is recorded.',
-  'course.connected': 'The course system (SCORM {standard}) records each check.',
+  'course.connected':
+    'The course system (SCORM {standard}) records each check; the attempt stays open until every exercise is solved or you end it.',
+  'course.scoreRecorded': 'Recorded in this attempt: {raw} of {max} conditions met.',
+  'course.ended': 'You ended this attempt: what you check now is not recorded.',
+  'course.review':
+    'The course system opened this attempt for review: you see your recorded work, and nothing you do now is recorded.',
+  'course.browse': 'The course system opened this activity for browsing: nothing you do is recorded.',
+  'course.noCredit':
+    'This attempt is not graded (the course system gives it no credit): your work is kept, no score is recorded.',
+  'course.restored':
+    'Your work was restored from this browser: the course system had not kept it (its last saving failed).',
+  'course.end': 'End the attempt',
+  'course.endConfirm':
+    'End the attempt with {raw} of {max} conditions met? Your score is then final, and the course system will open it for review.',
+  'course.endYes': 'End it',
+  'course.endNo': 'Keep working',
+  'course.notStarted':
+    'The course system did not start the session ({call}: error {code}, “{text}”): nothing you do here is recorded. Reload the page, or tell your lecturer.',
+  'course.startThrew':
+    'The course system could not be reached ({call}: “{text}”): nothing you do here is recorded. Reload the page, or tell your lecturer.',
+  'course.shownDescription': '(solution shown: not counted)',
+  'course.h5pPending':
+    'Recorded when you solve the exercise or end the attempt (so far {raw} of {max} conditions met).',
+  'course.h5pRecorded': 'Recorded: {raw} of {max} conditions met. Start over to make a new attempt.',
+  'course.activityTitle': 'Activity title (as the course shows it)',
+  'course.solution': 'The solution may be shown',
+  'course.solution.after': 'after {count:check:checks} without solving it',
+  'course.solution.never': 'never',
+  'course.solution.atOnce': 'at once',
+  'course.draw': 'Numbers drawn',
+  'course.draw.attempt': 'per attempt',
+  'course.draw.learner': 'per learner (the same at every launch of hers; a review shows them too)',
+  'course.packageOf.scorm12': 'SCORM 1.2 package of {what}',
+  'course.packageOf.scorm2004': 'SCORM 2004 package of {what}',
+  'course.packageOf.h5p': 'H5P file of {what}',
+  'course.what.one': '‘{title}’',
+  'course.what.more': '‘{title}’ + {count} more',
+  'course.what.titled': '“{title}” ({count:exercise:exercises})',
   'course.recorded': 'Recorded in the course at {time}.',
   'course.learner': 'Student: {name}.',
   'course.broken': 'This package’s exercises cannot be read ({reason}): ask your lecturer for a new package.',

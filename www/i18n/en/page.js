@@ -30,6 +30,8 @@ export default {
 
   'share.title': 'Share this view',
   'share.intro': 'Each carries the current scene, its parameters, the language and the camera.',
+  'share.introTask':
+    'Each carries the exercise, the language and what readers may do — not this view’s camera or the answers typed here; each reader draws her own numbers.',
   'share.fromFile':
     'This page was opened from a file, so it has no address that others could open. To share this view, download it as one HTML file and upload that to your course page, or put the element below into a page of your own.',
   'share.noAddress':
@@ -49,6 +51,7 @@ export default {
   'share.copyWhat': 'Copy: {what}',
   'share.selectCopy': 'Selected: press Ctrl+C (⌘C) to copy.',
   'share.link': 'Link',
+  'share.taskLink': 'Link to the exercise',
   'share.iframe': 'Embed with an iframe',
   'share.element': 'Embed with <ruled-view>',
   'share.copy': 'Copy',
@@ -111,6 +114,8 @@ export default {
   'element.badCamera':
     'The camera attribute could not be read (six numbers: yaw, pitch, distance, x, y, z); the view is fitted to the scene.',
   'element.note.badTask': 'The task attribute could not be read ({reason}); the scene is shown without it.',
+  'element.note.badSolution':
+    'The solution attribute is not \u201cnever\u201d or a whole number of checks from 0 to {max}; the solution is offered after a first check.',
   'element.note.badSeed': 'The seed attribute is not a whole number from 0 to {max}; new numbers were drawn.',
 
   // values the link could not use
@@ -128,4 +133,6 @@ export default {
   'note.badInput': 'The edited input in the link does not fit this scene; the built-in input is shown.',
   'note.badTask': 'The exercise in the link could not be read ({reason}); the scene is shown without it.',
   'note.badSeed': 'The link\u2019s seed is not a whole number from 0 to {max}; new numbers were drawn.',
+  'note.badSolution':
+    'The link\u2019s solution rule is not \u201cnever\u201d or a whole number of checks from 0 to {max}; the solution is offered after a first check.',
 };
