@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the package into pkg/ (release wasm with LTO, wasm-bindgen --target web, wasm-opt;
+# Builds the package into pkg/ (the two wasm modules — the teaching module pkg/ruledlab.js and
+# the CAM module pkg/cam/ruledlab_cam.js — release with LTO, wasm-bindgen --target web, wasm-opt;
 # skipped when pkg/ is newer than the compiled wasm; pkg/catalogue.js, the catalogue's formula
 # texts for the page; pkg/zip.js, fflate's zip writer and reader as one module; pkg/scorm-schemas.js, the schema files a SCORM package carries; pkg/view/, the declarations of ruledlab/view generated from www/'s JSDoc),
 # the one-file builds into dist/ and the production page into dist/web/ (bundled, minified,
@@ -8,9 +9,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 
-raw=target/wasm32-unknown-unknown/release/ruledlab.wasm
-cargo build --release --target wasm32-unknown-unknown --lib --quiet
-if [ pkg/ruledlab_bg.wasm -nt "$raw" ] && [ pkg/ruledlab.js -nt "$raw" ]; then
+# the two modules: the teaching module (crates/ruledlab-wasm → pkg/ruledlab.js) and the CAM
+# module (crates/ruledlab-cam-wasm → pkg/cam/ruledlab_cam.js), loaded when asked for
+raw=target/wasm32-unknown-unknown/release/ruledlab_wasm.wasm
+raw_cam=target/wasm32-unknown-unknown/release/ruledlab_cam_wasm.wasm
+cargo build --release --target wasm32-unknown-unknown -p ruledlab-wasm -p ruledlab-cam-wasm --lib --quiet
+if [ pkg/ruledlab_bg.wasm -nt "$raw" ] && [ pkg/ruledlab.js -nt "$raw" ] && [ pkg/cam/ruledlab_cam_bg.wasm -nt "$raw_cam" ]; then
   echo "build: pkg/ is up to date"
   [ pkg/catalogue.js -nt pkg/ruledlab_bg.wasm ] || node scripts/catalogue.mjs
   node scripts/zip.mjs
@@ -20,13 +24,20 @@ if [ pkg/ruledlab_bg.wasm -nt "$raw" ] && [ pkg/ruledlab.js -nt "$raw" ]; then
   node scripts/web.mjs
   exit 0
 fi
-wasm-bindgen --target web --weak-refs --out-dir pkg --out-name ruledlab \
-  --remove-name-section --remove-producers-section "$raw"
-node scripts/glue.mjs pkg/ruledlab.js
-node_modules/.bin/wasm-opt -O3 pkg/ruledlab_bg.wasm -o pkg/ruledlab_bg.wasm
-size=$(stat -c %s pkg/ruledlab_bg.wasm)
-gz=$(gzip -9 -c pkg/ruledlab_bg.wasm | wc -c)
-echo "build: pkg/ruledlab_bg.wasm $((size / 1024)) KiB, $((gz / 1024)) KiB gzipped"
+# one module: wasm-bindgen's glue, the glue's errors given codes, wasm-opt; its size said
+bind() {
+  local input=$1 dir=$2 name=$3
+  wasm-bindgen --target web --weak-refs --out-dir "$dir" --out-name "$name" \
+    --remove-name-section --remove-producers-section "$input"
+  node scripts/glue.mjs "$dir/$name.js"
+  node_modules/.bin/wasm-opt -O3 "$dir/${name}_bg.wasm" -o "$dir/${name}_bg.wasm"
+  local size gz
+  size=$(stat -c %s "$dir/${name}_bg.wasm")
+  gz=$(gzip -9 -c "$dir/${name}_bg.wasm" | wc -c)
+  echo "build: $dir/${name}_bg.wasm $((size / 1024)) KiB, $((gz / 1024)) KiB gzipped"
+}
+bind "$raw" pkg ruledlab
+bind "$raw_cam" pkg/cam ruledlab_cam
 node scripts/catalogue.mjs
 node scripts/zip.mjs
 node scripts/scorm-schemas.mjs

@@ -24,6 +24,7 @@ const path = (p) => `${ROOT}${p}`;
 
 // hex, not base64: a fifth less once compressed (scripts/onefile/hex.js)
 const wasm = readFileSync(path('pkg/ruledlab_bg.wasm')).toString('hex');
+const camWasm = readFileSync(path('pkg/cam/ruledlab_cam_bg.wasm')).toString('hex');
 // the page's shell and the few lines that choose what the link asks for, before the first paint
 const first = (await transform(firstScript(), { minify: true, target: 'es2020', legalComments: 'none' })).code.trim();
 const body = shellHtml();
@@ -35,7 +36,7 @@ const inline = {
   setup(b) {
     b.onResolve({ filter: /^ruledlab:inline$/ }, () => ({ path: 'inline', namespace: 'ruledlab' }));
     b.onLoad({ filter: /.*/, namespace: 'ruledlab' }, () => ({
-      contents: `export const WASM = ${JSON.stringify(wasm)};\nexport const WORKER = ${JSON.stringify(worker)};\nexport const SHELL = ${JSON.stringify(body)};`,
+      contents: `export const WASM = ${JSON.stringify(wasm)};\nexport const CAM_WASM = ${JSON.stringify(camWasm)};\nexport const WORKER = ${JSON.stringify(worker)};\nexport const SHELL = ${JSON.stringify(body)};`,
       loader: 'js',
     }));
   },

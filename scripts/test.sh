@@ -33,13 +33,13 @@ bash scripts/setup.sh --browser
 step "lint: rustfmt, clippy (native and wasm32), rustdoc, Biome"
 cargo fmt --check
 npx biome ci .
-cargo clippy --quiet --all-targets -- -D warnings
-cargo clippy --quiet --target wasm32-unknown-unknown --lib --tests -- -D warnings
-RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps
+cargo clippy --quiet --workspace --all-targets -- -D warnings
+cargo clippy --quiet --workspace --target wasm32-unknown-unknown --lib --tests -- -D warnings
+RUSTDOCFLAGS="-D warnings" cargo doc --quiet --workspace --no-deps
 
-step "native: cargo test (with LinuxCNC's rs274 reading the G-code: tests/controller.rs)"
-RULEDLAB_REQUIRE_RS274=1 cargo test --all-targets
-cargo test --doc
+step "native: cargo test, every crate (with LinuxCNC's rs274 reading the G-code: crates/ruledlab-cam/tests/controller.rs)"
+RULEDLAB_REQUIRE_RS274=1 cargo test --workspace --all-targets
+cargo test --workspace --doc
 
 step "build: pkg/"
 bash scripts/build.sh
@@ -66,7 +66,8 @@ lane() {
   ( set -e; t0=$SECONDS; "$@"; echo "lane $name: done in $((SECONDS - t0)) s" ) > "$LOGS/$name.log" 2>&1
 }
 wasm_lane() {
-  WASM_TESTS=(--test kernels --test section2 --test section3 --test section4 --test section5 --test milling --test line_space --test formula --test focal --test visibility --test snap --test bindings)
+  # the geometry's integration tests, the CAM crate's, and each module's bindings
+  WASM_TESTS=(-p ruledlab --test kernels --test section2 --test section3 --test section4 --test section5 --test line_space --test formula --test focal --test visibility --test snap -p ruledlab-cam --test milling -p ruledlab-wasm --test bindings)
   CHROMEDRIVER="$(command -v chromedriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
   GECKODRIVER="$(command -v geckodriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
 }

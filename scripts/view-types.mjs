@@ -76,10 +76,11 @@ let count = 0;
 for (const file of walk(OUT)) {
   if (!file.endsWith('.d.ts')) continue;
   count++;
-  // pkg/view/<path>.d.ts imports "…/pkg/ruledlab.js" as the source did from <path>: one level up
+  // pkg/view/<path>.d.ts imports "…/pkg/ruledlab.js" (and the CAM module's "…/pkg/cam/ruledlab_cam.js")
+  // as the source did from <path>: one level up
   const text = stripInternal(readFileSync(file, 'utf8')).replace(
-    /(["'])((?:\.\.\/)+)pkg\/ruledlab\.js\1/g,
-    (_, q, up) => `${q}../${up}ruledlab.js${q}`,
+    /(["'])((?:\.\.\/)+)pkg\/(ruledlab\.js|cam\/ruledlab_cam\.js)\1/g,
+    (_, q, up, name) => `${q}../${up}${name}${q}`,
   );
   writeFileSync(file, text);
 }

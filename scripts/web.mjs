@@ -39,6 +39,8 @@ const LAZY = {
   'the figure exports': ['www/export/svg.js', 'www/export/tikz.js', 'www/export/png.js'],
   'the exercise author': ['www/page/author.js'],
   'the course packages and a package page': ['www/page/packages.js', 'www/page/course.js'],
+  // the second wasm module and its glue: tool paths, machines, G-code (cam.js)
+  'the CAM module': ['pkg/cam/ruledlab_cam.js'],
 };
 /** `new URL(…, import.meta.url)` targets the bundles may keep as they are, and why. */
 const UNUSED = {
@@ -80,11 +82,13 @@ function hashed(
   return path;
 }
 
-// the core, then the worker (it names the core's file), then the page (it names both)
+// the core's two modules, then the worker (it names their files), then the page (it names all)
 const wasm = hashed('pkg/ruledlab_bg.wasm');
+const camWasm = hashed('pkg/cam/ruledlab_cam_bg.wasm');
 /** Where each `new URL(…, import.meta.url)` target of the sources is in the site, from assets/. */
 const urls = new Map([
   [join(ROOT, 'pkg/ruledlab_bg.wasm'), `./${basename(wasm)}`],
+  [join(ROOT, 'pkg/cam/ruledlab_cam_bg.wasm'), `./${basename(camWasm)}`],
   [join(ROOT, 'dist/manifest.json'), '../dist/manifest.json'],
   [join(ROOT, 'dist/ruledlab.html'), '../dist/ruledlab.html'],
   [join(ROOT, 'dist/ruledlab-embed.js'), '../dist/ruledlab-embed.js'],
@@ -259,6 +263,7 @@ const manifest = {
   entry,
   initial,
   wasm,
+  camWasm,
   worker: workerFile,
   lazy: Object.fromEntries(
     Object.entries(LAZY).map(([what, sources]) => [

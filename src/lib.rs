@@ -9,9 +9,10 @@
 //! their footpoints, the distribution parameter, the striction polygon), with the
 //! convergence orders of Propositions 1 and 2 measured by [`convergence_study`].
 //!
-//! The core is pure Rust on `f64` and glam's `DVec3`; it knows nothing of JavaScript. The
-//! WebAssembly bindings live in `wasm` (compiled for wasm32 only) and take and return
-//! flat typed arrays. The conventions ruledlab keeps and its corrections of the paper, with
+//! The core is pure Rust on `f64` and glam's `DVec3`; it knows nothing of JavaScript, nor of
+//! machining: the five-axis tool paths of Example 6 and their G-code are the crate
+//! `ruledlab-cam`, which builds on this one; the WebAssembly bindings are the crates
+//! `ruledlab-wasm` and `ruledlab-cam-wasm` (the workspace's `crates/`). The conventions ruledlab keeps and its corrections of the paper, with
 //! the equation numbers, are in `docs/src/conventions.md` (the book's page "Conventions"), which
 //! each module's documentation cites.
 //!
@@ -40,19 +41,16 @@ mod line;
 mod line_fit;
 mod linear_complex;
 mod mesh;
-mod milling;
 mod ruled;
 mod snap;
 mod subdivision;
 pub mod tolerance;
 mod visibility;
 
-#[cfg(target_family = "wasm")]
-pub mod wasm;
-
 // errors and messages
 pub use error::{
-    message_number, message_template, Arg, Details, Error, Message, Record, Result, MESSAGES, TEXT_REASON,
+    message_number, message_template, Arg, Args, Catalogue, Details, Error, Message, Record, Result, MESSAGES,
+    TEXT_REASON,
 };
 
 // shared vocabulary: lines, jets, parameter ranges
@@ -91,6 +89,7 @@ pub use subdivision::{recut, subdivide_polygon, subdivide_strip, Affine, Pair, S
 
 // Section 5: line congruences, and their focal geometry (beyond the paper)
 pub use congruence::focal::{focal_analytic, focal_grid, focal_sheet, torsal_strokes};
+pub use congruence::grid::check_grid_shape;
 pub use congruence::line_space::butterfly_lines;
 pub use congruence::variational::{coupled_congruence, two_stage, EdgeScheme, SolveReport};
 pub use congruence::{
@@ -100,31 +99,19 @@ pub use congruence::{
 // linear complexes (beyond the paper)
 pub use linear_complex::{fit_linear_complex, ComplexKind, LinearComplex};
 
-// Example 6: tool paths for 5-axis milling
-pub use io::target::{looks_like_target, read_target, TargetCurve};
-pub use io::toolpath::{
-    looks_like_poses, read_tool_poses, read_tool_poses_for, tool_path_csv, tool_path_json, ImportedPoses,
-};
-pub use milling::example::{
-    example_pose, example_profile, example_tool_path, example_tool_path_for, part_height, part_mesh, EXAMPLE_RANGE,
-};
-pub use milling::kinematics::{at_pole, forward_kinematics, orientations, pole_angle, tool_axis, Joints};
-pub use milling::linearise::{BlockDeviation, Interpolation, Linearisation};
-pub use milling::machine::{AxisName, Carrier, Machine, RotaryAxis, MACHINE_PRESETS};
-pub use milling::motion::{BlockMotion, Limit};
-pub use milling::post::{
-    gcode, Coolant, Dialect, Holder, Mode, Numbering, PostOptions, Program, SpindleDirection, Units, Warning,
-};
-pub use milling::quality::{deviation, deviation_per_pose, envelope_deviation, EnvelopeDeviation, Quality};
-pub use milling::solve::{inverse_kinematics, solve, SolveOptions, Solved};
-pub use milling::{Pose, Tool, ToolEnd, ToolPath};
-
 // reading and writing segments
-pub use io::csv::{read_csv, write_csv};
+pub use io::csv::{read_csv, read_csv_with, write_csv};
 pub use io::invariants::{invariants_csv, invariants_json};
-pub use io::json::{read_json, write_json};
+pub use io::json::{read_json, read_json_with, write_json};
 pub use io::obj::write_obj;
 pub use io::Imported;
+
+// reading text: what ruledlab-cam's readers of tool poses and target curves build on, and what
+// kind of data a text holds
+pub use io::json::{read_json_value, JsonValue};
+pub use io::sniff::{looks_like_poses, looks_like_target, pose_columns, PoseColumns};
+pub use io::table::{fields, read_table, Row, Table};
+pub use io::{check_records, classify, position, rust_number, NumberParser, Token};
 
 // formulas, and the catalogue of analytic surfaces and congruences
 pub use catalogue::{

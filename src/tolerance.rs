@@ -169,41 +169,6 @@ pub const SOLVE_TOLERANCE: f64 = 1e-13;
 /// in a bounded number, about 20; this only catches a broken one).
 pub const SOLVE_MAX_ITERATIONS: usize = 2000;
 
-/// The pole of a five-axis machine: a vector within this sine of the rotary axis that turns it
-/// (|v × u| below it) leaves that axis's angle undetermined (`milling::kinematics`).
-pub const POLE_SIN: f64 = 1e-9;
-
-/// Samples per block at which the post compares the controller's linear interpolation with the
-/// path (`milling::linearise`).
-pub const LINEARISATION_SAMPLES: usize = 16;
-
-/// Most rounds of halving the blocks whose interpolation strays beyond the tolerance (each round
-/// halves every such block once; 16 rounds split a block into up to 65 536).
-pub const MAX_LINEARISATION_ROUNDS: usize = 16;
-
-/// Most poses the post writes (the refined path with the poses the linearisation inserted).
-pub const MAX_POST_POSES: usize = 1 << 20;
-
-/// The smallest linearisation tolerance accepted, in mm (below the 1e-4 mm the programs print).
-pub const MIN_LINEARISATION_TOLERANCE: f64 = 1e-4;
-
-/// Decimals of lengths (mm) and angles (degrees) in the G-code: 1e-4 mm and 1e-4°.
-pub const GCODE_DECIMALS: usize = 4;
-
-/// Decimals of a tool-axis vector's components (Sinumerik `A3= B3= C3=`).
-pub const GCODE_VECTOR_DECIMALS: usize = 7;
-
-/// The smallest vertical component of a tool axis that the safe moves retract along: a tool
-/// axis within about 5.7° of horizontal cannot be retracted along itself to a safe height.
-pub const MIN_RETRACT_COS: f64 = 0.1;
-
-/// Most distinct unwrappings (multiples of 360°) of one limited rotary axis the inverse
-/// kinematics considers per pose.
-pub const MAX_AXIS_TURNS: usize = 8;
-
-/// The largest coordinate (mm, degrees, feed) a machine description or post option accepts.
-pub const MAX_MACHINE_VALUE: f64 = 1e7;
-
 /// Hidden lines: a line within this distance of a triangle's plane is never hidden by it, as a
 /// fraction of the diagonal of the triangles' bounding box (rounding of f32 buffers, lines on a
 /// flat mesh); see also [`HIDDEN_LINE_BEND`].
@@ -267,9 +232,8 @@ pub mod test {
     /// within as many ulp of the larger term.
     pub const KERNEL_DELTA_ULPS: u64 = 3;
 
-    /// Reproducible pseudo-random numbers in [0, 1) for the unit tests: a 64-bit linear
-    /// congruential generator (Knuth's MMIX constants), the top 53 bits.
-    #[cfg(test)]
+    /// Reproducible pseudo-random numbers in [0, 1) for the unit tests (of this crate and of
+    /// ruledlab-cam): a 64-bit linear congruential generator (Knuth's MMIX constants), the top 53 bits.
     pub fn uniform(seed: &mut u64) -> f64 {
         *seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
         (*seed >> 11) as f64 / (1u64 << 53) as f64

@@ -1,13 +1,16 @@
-//! The core's modules form layers (ARCHITECTURE.md): each module uses only modules of lower
-//! layers — the shared vocabulary at the bottom, the catalogue of analytic surfaces and
-//! congruences at the top, which no algorithm imports. This test reads every source file of
-//! the core (the bindings layer `src/wasm/` and test code aside), finds the modules each uses
-//! (`crate::…` paths), and fails on a use that points sideways or up — so a new cycle, or an
-//! algorithm reaching into the catalogue, cannot land.
+//! What the compiler cannot keep. The crates are walls the compiler keeps (ARCHITECTURE.md):
+//! `ruledlab` depends on no other crate of the workspace, `ruledlab-cam` only on it, the
+//! bindings on both. Within the geometry crate, the modules form layers: each module uses only
+//! modules of lower layers — the shared vocabulary at the bottom, the catalogue of analytic
+//! surfaces and congruences at the top, which no algorithm imports. This test reads every source
+//! file of the core (test code aside), finds the modules each uses (`crate::…` paths), and fails
+//! on a use that points sideways or up — so a new cycle, or an algorithm reaching into the
+//! catalogue, cannot land.
 //!
-//! The bindings (`src/wasm/`) are read too: their files use each other without a cycle, each
-//! JavaScript class is declared and bound in the one file named after it, and no file outside
-//! them names wasm-bindgen.
+//! The bindings (`crates/ruledlab-wasm/`, `crates/ruledlab-cam-wasm/`) are read too: in each,
+//! the files use each other without a cycle and each JavaScript class is declared and bound in the
+//! one file named after it; `crates/ruledlab-js/` declares nothing to JavaScript; and neither the
+//! geometry nor the CAM crate names wasm-bindgen.
 
 use std::collections::BTreeMap;
 use std::fs;
@@ -20,7 +23,6 @@ const LAYERS: &[&[&str]] = &[
     &["ruled", "mesh", "visibility"],
     &["subdivision"],
     &["congruence"],
-    &["milling"],
     &["catalogue", "io"],
 ];
 
@@ -49,7 +51,7 @@ fn sources(root: &Path, dir: &Path, out: &mut Vec<(String, String)>) {
     for entry in fs::read_dir(dir).expect("src is readable") {
         let path = entry.expect("an entry").path();
         let relative = path.strip_prefix(root).expect("below src").to_string_lossy().replace('\\', "/");
-        if relative == "wasm" || relative == "lib.rs" {
+        if relative == "lib.rs" {
             continue;
         }
         if path.is_dir() {
@@ -118,15 +120,14 @@ fn code_lines(text: &str) -> impl Iterator<Item = &str> {
     text.lines().map(str::trim_start).filter(|l| !l.starts_with("//"))
 }
 
-/// The sibling modules a file of `src/wasm/` uses: the first name after each `super::` or
-/// `crate::wasm::`, each name of a group (`use super::{args, buffers::points_f32}`).
+/// The sibling modules a file of a binding crate uses: the first name after each `super::` or
+/// `crate::`, each name of a group (`use super::{export, focal::focal_js}`).
 fn sibling_uses(text: &str) -> Vec<String> {
     let ident = |s: &str| -> String { s.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect() };
     let mut out = Vec::new();
     for line in code_lines(text) {
         let mut rest = line;
-        while let Some(k) = ["super::", "crate::wasm::"].iter().filter_map(|p| rest.find(p).map(|k| k + p.len())).min()
-        {
+        while let Some(k) = ["super::", "crate::"].iter().filter_map(|p| rest.find(p).map(|k| k + p.len())).min() {
             rest = &rest[k..];
             if let Some(group) = rest.strip_prefix('{') {
                 let mut depth = 0;
@@ -225,16 +226,20 @@ fn cycle(graph: &BTreeMap<String, Vec<String>>) -> Option<Vec<String>> {
     graph.keys().find_map(|m| visit(m, graph, &mut Vec::new(), &mut done))
 }
 
-/// The files of the bindings (`src/wasm/`, `mod.rs` aside: it only declares and re-exports),
-/// by module name.
-fn binding_files() -> BTreeMap<String, String> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/wasm");
+/// The crates of the bindings, and the one that shares their helpers.
+const BINDINGS: [&str; 2] = ["crates/ruledlab-wasm/src", "crates/ruledlab-cam-wasm/src"];
+const SHARED: &str = "crates/ruledlab-js/src";
+
+/// The files of a crate of the bindings (`lib.rs` aside: it only declares and re-exports), by
+/// module name.
+fn binding_files(crate_src: &str) -> BTreeMap<String, String> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join(crate_src);
     let mut out = BTreeMap::new();
-    for entry in fs::read_dir(&dir).expect("src/wasm is readable") {
+    for entry in fs::read_dir(&dir).unwrap_or_else(|_| panic!("{crate_src} is readable")) {
         let path = entry.expect("an entry").path();
-        assert!(path.extension().is_some_and(|e| e == "rs"), "{} is not a Rust file of src/wasm/", path.display());
+        assert!(path.extension().is_some_and(|e| e == "rs"), "{} is not a Rust file of {crate_src}/", path.display());
         let stem = path.file_stem().expect("a name").to_string_lossy().into_owned();
-        if stem != "mod" {
+        if stem != "lib" {
             out.insert(stem, fs::read_to_string(&path).expect("a source file"));
         }
     }
@@ -247,25 +252,27 @@ fn binding_files() -> BTreeMap<String, String> {
 /// through a re-export of `mod.rs`, so every use is an edge of the graph.
 #[test]
 fn the_bindings_use_each_other_without_a_cycle() {
-    let files = binding_files();
-    assert!(files.len() > 10, "only {} files in src/wasm/", files.len());
-    let mut graph: BTreeMap<String, Vec<String>> = BTreeMap::new();
-    let mut wrong = Vec::new();
-    for (module, text) in &files {
-        let mut used = sibling_uses(text);
-        used.sort();
-        used.dedup();
-        used.retain(|u| u != module);
-        for u in &used {
-            if !files.contains_key(u) {
-                wrong.push(format!("{module} uses super::{u}, which is no file of src/wasm/"));
+    for crate_src in BINDINGS.into_iter().chain([SHARED]) {
+        let files = binding_files(crate_src);
+        assert!(files.len() >= 4, "only {} files in {crate_src}/", files.len());
+        let mut graph: BTreeMap<String, Vec<String>> = BTreeMap::new();
+        let mut wrong = Vec::new();
+        for (module, text) in &files {
+            let mut used = sibling_uses(text);
+            used.sort();
+            used.dedup();
+            used.retain(|u| u != module);
+            for u in &used {
+                if !files.contains_key(u) {
+                    wrong.push(format!("{module} uses crate::{u}, which is no file of {crate_src}/"));
+                }
             }
+            graph.insert(module.clone(), used);
         }
-        graph.insert(module.clone(), used);
-    }
-    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
-    if let Some(found) = cycle(&graph) {
-        panic!("the files of src/wasm/ use each other in a cycle: {}\nthe graph: {graph:#?}", found.join(" → "));
+        assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+        if let Some(found) = cycle(&graph) {
+            panic!("the files of {crate_src}/ use each other in a cycle: {}\nthe graph: {graph:#?}", found.join(" → "));
+        }
     }
 }
 
@@ -276,8 +283,10 @@ fn the_bindings_use_each_other_without_a_cycle() {
 fn each_javascript_class_has_one_file_named_after_it() {
     let mut classes = Vec::new();
     let mut wrong = Vec::new();
-    for (module, text) in &binding_files() {
-        let (declared, impls) = bound(text);
+    let files = BINDINGS.into_iter().flat_map(binding_files);
+    for (module, text) in files {
+        let module = &module;
+        let (declared, impls) = bound(&text);
         for class in declared {
             if snake(&class) != *module {
                 wrong.push(format!("the class {class} is declared in {module}.rs, not {}.rs", snake(&class)));
@@ -292,20 +301,30 @@ fn each_javascript_class_has_one_file_named_after_it() {
     }
     assert!(classes.len() >= 7, "only {} JavaScript classes found: {classes:?}", classes.len());
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    // what both modules share exports nothing: each module declares its own classes and functions
+    for (module, text) in binding_files(SHARED) {
+        assert!(
+            !text.contains("#[wasm_bindgen"),
+            "crates/ruledlab-js/src/{module}.rs declares something to JavaScript"
+        );
+    }
 }
 
-/// The core knows nothing of JavaScript: only the bindings name wasm-bindgen, js-sys or
-/// web-sys (a TypeScript description of a result type, derived under wasm, is not JavaScript).
+/// The geometry and the CAM crate know nothing of JavaScript: only the bindings name
+/// wasm-bindgen, js-sys or web-sys (a TypeScript description of a result type, derived under the
+/// `tsify` feature, is not JavaScript).
 #[test]
 fn only_the_bindings_name_javascript() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut core = Vec::new();
-    sources(&root, &root, &mut core);
-    core.push(("lib.rs".to_string(), fs::read_to_string(root.join("lib.rs")).expect("src/lib.rs")));
-    assert!(core.len() > 40, "only {} source files found", core.len());
-    for (module, text) in &core {
-        for js in ["wasm_bindgen", "js_sys", "web_sys", "JsValue"] {
-            assert!(!text.contains(js), "the core module {module} names {js}");
+    for dir in ["src", "crates/ruledlab-cam/src"] {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join(dir);
+        let mut core = Vec::new();
+        sources(&root, &root, &mut core);
+        core.push(("lib.rs".to_string(), fs::read_to_string(root.join("lib.rs")).expect("lib.rs")));
+        assert!(core.len() > 10, "only {} source files found in {dir}", core.len());
+        for (module, text) in &core {
+            for js in ["wasm_bindgen", "js_sys", "web_sys", "JsValue"] {
+                assert!(!text.contains(js), "{dir}: the module {module} names {js}");
+            }
         }
     }
 }
@@ -317,7 +336,7 @@ fn the_binding_checks_catch_what_they_guard() {
     assert_eq!(snake("CongruenceFocal"), "congruence_focal");
     assert_eq!(snake("ToolPath"), "tool_path");
     assert_eq!(
-        sibling_uses("use super::args::{self, fail};\nuse super::{buffers::points_f32, live};\n// super::timing\nlet x = crate::wasm::focal::f();"),
+        sibling_uses("use super::args::{self, fail};\nuse super::{buffers::points_f32, live};\n// super::timing\nlet x = crate::focal::f();"),
         ["args", "buffers", "live", "focal"]
     );
     let text = "/// A class.\n#[wasm_bindgen]\n#[derive(Debug)]\npub struct FooBar {\n}\n#[wasm_bindgen(\n    js_name = Other\n)]\npub(crate) struct Baz;\n\

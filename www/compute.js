@@ -5,6 +5,7 @@
 // (post-job.js) runs the same way; as it can take a minute, a newer job or cancelWork() stops
 // the worker computing it (a new one starts for the next job).
 import { newWorker, reportNoWorker, wasmSource } from './core.js';
+import { camSource } from './cam.js';
 import { refineSteps } from './refine.js';
 import { postSteps } from './post-job.js';
 
@@ -128,7 +129,8 @@ export function postInWorker(job, onProgress = () => {}) {
     const entry = { resolve, reject, onProgress, job, post: true };
     jobs.set(id, entry);
     const w = theWorker();
-    if (w) w.postMessage({ id, kind: 'post', ...job });
+    // (the CAM module is started on this thread already: the worker starts its own from the same source)
+    if (w) w.postMessage({ id, kind: 'post', ...job, cam: camSource() });
     else here(id, entry);
   });
 }

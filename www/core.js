@@ -2,9 +2,12 @@
 // By default the module is fetched from ../pkg/ruledlab_bg.wasm relative to this file, so an
 // installed package needs no configuration; `configure({ wasm })` takes a URL, a Response,
 // bytes or a compiled WebAssembly.Module instead, or a function returning one, called when the
-// core starts (the one-file build decodes its inlined bytes only then).
+// core starts (the one-file build decodes its inlined bytes only then). The CAM module
+// (pkg/cam/: tool paths, machines, G-code) is a second one, started only when asked for
+// (cam.js); `configure({ cam })` says where it comes from, the same ways.
 import init from '../pkg/ruledlab.js';
 import { mark } from './timing.js';
+import { setCamSource } from './cam.js';
 
 /** @typedef {string | URL | Response | BufferSource | WebAssembly.Module} WasmSource */
 
@@ -18,14 +21,16 @@ let instance = null;
 let workerFactory = null;
 
 /**
- * Where the wasm comes from (or a function that says, called once when the core starts), and
- * how workers are made; call before the first view starts.
- * @param {{wasm?: WasmSource | (() => WasmSource), worker?: () => Worker}} options
+ * Where the wasm comes from (or a function that says, called once when the core starts), where
+ * the CAM module's comes from (called once when it is first asked for), and how workers are made;
+ * call before the first view starts.
+ * @param {{wasm?: WasmSource | (() => WasmSource), cam?: WasmSource | (() => WasmSource), worker?: () => Worker}} options
  */
-export function configure({ wasm, worker } = {}) {
+export function configure({ wasm, cam, worker } = {}) {
   if (ready && wasm !== undefined)
     throw new Error('ruledlab: configure({ wasm }) must come before the first view starts');
   if (wasm !== undefined) source = wasm;
+  if (cam !== undefined) setCamSource(cam);
   if (worker !== undefined) workerFactory = worker;
 }
 

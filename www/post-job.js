@@ -3,14 +3,14 @@
 // what the page shows of it — the program, its numbers, every k-th tool axis to draw. Run by the
 // worker (worker.js) and, where no worker can start, on the main thread by compute.js: one
 // routine for both.
-import { ToolPath } from '../pkg/ruledlab.js';
+import { cam } from './cam.js';
 
 /**
  * @typedef {object} PostJob
  * @property {Float64Array} poses   6 numbers per given pose (tip, axis)
  * @property {{ radius: number, length: number, end?: 'ball' | 'flat' }} tool
  * @property {import('../pkg/ruledlab.js').SubdivideOptions} refine   steps included
- * @property {import('../pkg/ruledlab.js').GcodeOptions} post
+ * @property {import('../pkg/cam/ruledlab_cam.js').GcodeOptions} post
  * @property {number} [draw]   most tool axes to send back (every k-th above it)
  *
  * @typedef {object} PostJobResult
@@ -19,7 +19,7 @@ import { ToolPath } from '../pkg/ruledlab.js';
  * @property {Float32Array} segments   every k-th tool axis (f32, 6 numbers each)
  * @property {number} every         k
  * @property {number} maxAngleStep  the refined path's largest orientation step (rad)
- * @property {Omit<import('../pkg/ruledlab.js').PostResult, 'text'>} post   what the post did
+ * @property {Omit<import('../pkg/cam/ruledlab_cam.js').PostResult, 'text'>} post   what the post did
  */
 
 /**
@@ -30,7 +30,7 @@ import { ToolPath } from '../pkg/ruledlab.js';
  * @returns {Promise<PostJobResult>}
  */
 export async function postSteps({ poses, tool, refine, post, draw = Infinity }, progress, pause) {
-  let path = ToolPath.fromPoses(poses, tool);
+  let path = cam().ToolPath.fromPoses(poses, tool);
   try {
     const steps = refine.steps ?? 1;
     // the refinement is about a third of the work, the post the rest

@@ -179,6 +179,8 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {Param[]} params
  * @property {LegendEntry[]} legend
  * @property {boolean} [paper]       whether the scene reproduces a figure of the paper
+ * @property {Array<'cam'>} [needs]  the second wasm module it computes with ('cam': the CAM
+ *   module, cam.js), started before the scene opens: create() may then call `cam()`
  * @property {{make(params: P, context: Context): Built}['make']} create
  *   what is drawn, said and exported for these parameters (a method: a scene of typed
  *   parameters is a scene of Params)

@@ -4,8 +4,11 @@
 // included; `draw`: most rulings to send back). Messages out: { id, progress } after each
 // step, then { id, segments: Float32Array, rulings, drawn } (transferred; see refine.js), or
 // { id, error, code, details }. A job with `kind: 'post'` is a tool path refined and posted as
-// G-code (post-job.js): { id, kind, poses, tool, refine, post, draw } in, its result out.
+// G-code (post-job.js): { id, kind, poses, tool, refine, post, draw, cam } in, its result out;
+// `cam` is where the CAM module comes from (its URL or bytes), which this worker starts at its
+// first such job.
 import init from '../pkg/ruledlab.js';
+import { setCamSource, startCam } from './cam.js';
 import { refineSteps } from './refine.js';
 import { postSteps } from './post-job.js';
 
@@ -20,6 +23,10 @@ self.onmessage = async ({ data }) => {
   const { id } = data;
   try {
     await ready;
+    if (data.kind === 'post') {
+      if (data.cam) setCamSource(data.cam);
+      await startCam();
+    }
     const report = (/** @type {number} */ progress) => self.postMessage({ id, progress });
     const done = data.kind === 'post' ? await postSteps(data, report) : await refineSteps(data, report);
     self.postMessage({ id, ...done }, { transfer: [done.segments.buffer] });

@@ -3,9 +3,9 @@
 //! back from the CSV and JSON.
 #![no_main]
 use libfuzzer_sys::fuzz_target;
-use ruledlab::{gcode, read_tool_poses, tool_path_csv, tool_path_json, Dialect, Machine, Mode, PostOptions, MACHINE_PRESETS};
-use ruledlab::{deviation, Quality};
-use ruledlab::{Tool, ToolEnd, ToolPath};
+use ruledlab_cam::{gcode, read_tool_poses, tool_path_csv, tool_path_json, Dialect, Machine, Mode, PostOptions, MACHINE_PRESETS};
+use ruledlab_cam::{deviation, Quality};
+use ruledlab_cam::{Tool, ToolEnd, ToolPath};
 use ruledlab::Scheme;
 use ruledlab::RuledSurface;
 

@@ -3,8 +3,8 @@
 // script runs: the page paints first) and compiled asynchronously by WebAssembly.instantiate.
 import { configure } from '../../www/core.js';
 import { useBody } from '../../www/page/onefile.js';
-import { wasmBytes, workerFactory, SHELL } from './inline.js';
+import { camBytes, wasmBytes, workerFactory, SHELL } from './inline.js';
 
-configure({ wasm: wasmBytes, worker: workerFactory() });
+configure({ wasm: wasmBytes, cam: camBytes, worker: workerFactory() });
 // the page's copies of itself (Share → one file) carry the same shell
 useBody(SHELL);

@@ -1,13 +1,19 @@
-// The inlined wasm (hex: hex.js) and worker (source text), and the page's shell (its body before
-// any script, page/shell.js), from the build's virtual module.
-import { WASM, WORKER, SHELL } from 'ruledlab:inline';
+// The inlined wasm modules (hex: hex.js) — the teaching module and the CAM module, each decoded
+// only when it starts — the worker (source text), and the page's shell (its body before any
+// script, page/shell.js), from the build's virtual module.
+import { WASM, CAM_WASM, WORKER, SHELL } from 'ruledlab:inline';
 import { hexBytes } from './hex.js';
 
 export { SHELL };
 
-/** The wasm module's bytes (hex.js: decoded natively where the browser can). */
+/** The teaching module's bytes (hex.js: decoded natively where the browser can). */
 export function wasmBytes() {
   return hexBytes(WASM);
+}
+
+/** The CAM module's bytes, decoded when it is first asked for (the milling scene, an import of tool poses). */
+export function camBytes() {
+  return hexBytes(CAM_WASM);
 }
 
 /**

@@ -22,7 +22,7 @@ pub struct LineCongruence {
 impl LineCongruence {
     /// From flat coordinates, 6 numbers per line (p then q), row-major.
     pub fn from_flat(rows: usize, cols: usize, coords: &[f64]) -> Result<Self> {
-        check_shape(rows, cols)?;
+        check_grid_shape(rows, cols)?;
         let expected = 6 * rows * cols;
         if coords.len() != expected {
             return Err(Error::parameter(
@@ -36,7 +36,7 @@ impl LineCongruence {
 
     /// From endpoints p_{i,j}, q_{i,j} (row-major), validated.
     pub fn from_points(rows: usize, cols: usize, p: &[DVec3], q: &[DVec3]) -> Result<Self> {
-        check_shape(rows, cols)?;
+        check_grid_shape(rows, cols)?;
         let points: Vec<DVec3> = p.iter().zip(q).flat_map(|(&a, &b)| [a, b]).collect();
         if points.len() != 2 * rows * cols {
             return Err(Error::parameter("points", "need one p and one q per line"));
@@ -48,7 +48,7 @@ impl LineCongruence {
     /// From endpoints p_{i,j}, q_{i,j} interleaved (p then q per line, row-major), validated;
     /// the vector becomes the congruence's storage without a copy.
     pub fn from_interleaved(rows: usize, cols: usize, points: Vec<DVec3>) -> Result<Self> {
-        check_shape(rows, cols)?;
+        check_grid_shape(rows, cols)?;
         if points.len() != 2 * rows * cols {
             return Err(Error::parameter("points", "need one p and one q per line"));
         }
@@ -143,8 +143,9 @@ fn name_line(e: Error, cols: usize) -> Error {
     }
 }
 
-/// rows, cols ≥ 2 and rows · cols ≤ [`MAX_RULINGS`] (checked without overflow).
-pub fn check_shape(rows: usize, cols: usize) -> Result<()> {
+/// Whether a grid shape is one a congruence may have: rows, cols ≥ 2 and rows · cols ≤
+/// [`MAX_RULINGS`] (checked without overflow).
+pub fn check_grid_shape(rows: usize, cols: usize) -> Result<()> {
     if rows < 2 || cols < 2 {
         return Err(Error::parameter(
             "rows, cols",
@@ -182,8 +183,8 @@ mod tests {
     fn rejects_bad_grids() {
         assert!(LineCongruence::from_flat(1, 4, &grid(1, 4)).is_err());
         assert!(LineCongruence::from_flat(3, 4, &grid(3, 3)).unwrap_err().to_string().contains("needs 72 numbers"));
-        assert!(matches!(check_shape(1 << 12, 1 << 12), Err(Error::TooMany { .. })));
-        assert!(check_shape(usize::MAX, 3).is_err());
+        assert!(matches!(check_grid_shape(1 << 12, 1 << 12), Err(Error::TooMany { .. })));
+        assert!(check_grid_shape(usize::MAX, 3).is_err());
         let mut g = grid(2, 2);
         g[5] = 0.0;
         assert!(LineCongruence::from_flat(2, 2, &g).unwrap_err().to_string().contains("line (0, 0) has zero length"));

@@ -4,7 +4,7 @@
 //! focal geometry (`focal_analytic`) takes any implementation.
 
 use crate::base::CongruenceJet;
-use crate::congruence::grid::check_shape;
+use crate::congruence::grid::check_grid_shape;
 use crate::congruence::LineCongruence;
 use crate::error::Result;
 use glam::DVec3;
@@ -44,7 +44,7 @@ pub trait SmoothCongruence {
 
     /// As [`SmoothCongruence::grid`], the segments p → p + reach·d.
     fn grid_reaching(&self, rows: usize, cols: usize, reach: f64) -> Result<LineCongruence> {
-        check_shape(rows, cols)?;
+        check_grid_shape(rows, cols)?;
         let mut p = Vec::with_capacity(rows * cols);
         let mut q = Vec::with_capacity(rows * cols);
         for k in 0..rows * cols {

@@ -7,6 +7,7 @@
 //! this catalogue in every language (tests/node/messages.test.mjs checks it, placeholders
 //! included).
 
+use std::fmt;
 use std::fmt::Write as _;
 
 /// A value of a message: text (a name, a formula's piece) or a number (formatted by the
@@ -71,23 +72,47 @@ pub fn message_number(x: f64) -> String {
     }
 }
 
+/// A catalogue of messages: each reason with its English template (`{name}`: an argument).
+pub type Catalogue = &'static [(&'static str, &'static str)];
+
 /// A reason and its arguments.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Clone)]
 pub struct Message {
-    /// The stable key of what is wrong (a key of [`MESSAGES`]).
+    /// The stable key of what is wrong (a key of [`MESSAGES`], or of the catalogue of the crate
+    /// that made the message: ruledlab-cam has its own).
     pub reason: &'static str,
     /// The values its text names, in order.
     pub args: Vec<(&'static str, Arg)>,
+    /// The catalogue that has the reason's English template.
+    pub catalogue: Catalogue,
 }
 
 /// The reason of a message that is only text (for callers of the API who pass their own
 /// wording; no page shows it, tests/node/messages.test.mjs keeps it off every page path).
 pub const TEXT_REASON: &str = "text";
 
+// (a message is its reason and arguments: the catalogue only says where its template is)
+impl PartialEq for Message {
+    fn eq(&self, other: &Self) -> bool {
+        self.reason == other.reason && self.args == other.args
+    }
+}
+
+impl fmt::Debug for Message {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Message").field("reason", &self.reason).field("args", &self.args).finish()
+    }
+}
+
 impl Message {
-    /// A message without arguments yet.
+    /// A message of the core's catalogue, without arguments yet.
     pub fn new(reason: &'static str) -> Self {
-        Message { reason, args: Vec::new() }
+        Message { reason, args: Vec::new(), catalogue: MESSAGES }
+    }
+
+    /// A message of another crate's catalogue (its reasons are that crate's own), without arguments yet.
+    pub fn of(catalogue: Catalogue, reason: &'static str) -> Self {
+        Message { reason, args: Vec::new(), catalogue }
     }
 
     /// The same message with one more argument.
@@ -103,7 +128,8 @@ impl Message {
 
     /// The English text: the catalogue's template with `{name}` replaced by the arguments.
     pub fn english(&self) -> String {
-        let Some(template) = message_template(self.reason) else {
+        let template = self.catalogue.iter().find(|(r, _)| *r == self.reason).map(|(_, t)| *t);
+        let Some(template) = template else {
             // a reason missing from the catalogue is a bug the tests catch; say what there is
             let mut out = self.reason.to_string();
             for (n, v) in &self.args {
@@ -167,7 +193,7 @@ pub fn message_template(reason: &str) -> Option<&'static str> {
 
 /// Every reason of the core with its English template (`{name}`: an argument). The page's
 /// language files (www/i18n) have a text for each, under `error.<reason>`.
-pub const MESSAGES: &[(&str, &str)] = &[
+pub const MESSAGES: Catalogue = &[
     (TEXT_REASON, "{text}"),
     // the kinds with fields of their own (Error::message)
     ("bad-length", "{what}: length {len} is not a multiple of {multiple} ({multiple} numbers per item)"),
@@ -266,41 +292,6 @@ pub const MESSAGES: &[(&str, &str)] = &[
     ("json-segment", "expected [ax, ay, az, bx, by, bz]"),
     ("json-whole-segments", "{count} numbers are not a whole number of segments (6 each)"),
     ("json-grid-count", "a {rows} × {cols} grid needs {need} segments, found {found}"),
-    // tool poses (src/io/toolpath.rs)
-    ("import-zero-axis", "pose {record} has a zero tool axis (i = j = k = 0), so it has no direction"),
-    ("import-too-few-poses", "{found} pose(s): at least 2 are needed (a tool path has two poses or more)"),
-    ("json-poses-missing", "an object needs a \"poses\" array"),
-    ("json-poses-array", "poses must be an array"),
-    ("json-pose", "expected a pose: an object with \"tip\": [x, y, z] and \"axis\": [i, j, k]"),
-    ("csv-pose-numbers", "expected 6 numbers for a pose (tip x, y, z and tool axis i, j, k), found {found}"),
-    ("csv-pose-angles", "expected a number in each of the columns {columns}, found {found} numbers"),
-    ("pose-angles-machine", "the poses give rotary angles ({columns}): name the machine they are for (a line \"# machine: <name>\" or the machine chosen)"),
-    ("pose-header-unknown", "the header {columns} names no tool pose: name the tip's columns x, y, z (or tip_x, tip_y, tip_z) and the tool axis's i, j, k (or axis_i, axis_j, axis_k; from the tip towards the spindle), or x, y, z and rotary angles a, b, c for a machine; without a header each line is tip x, y, z and axis i, j, k"),
-    ("pose-angles-letter", "the machine {machine} has no rotary axis {letter}, which the column {letter} gives"),
-    // target curves (src/io/target.rs)
-    ("target-too-few", "{found} target point(s): at least 2 are needed (a target curve)"),
-    ("target-three-numbers", "expected 3 numbers for a target point (x, y, z), found {found}"),
-    ("target-json", "expected an array of points [x, y, z], or an object with \"points\""),
-    ("target-json-point", "expected a target point [x, y, z]"),
-    // the G-code post (src/milling)
-    ("pose-orientation", "pose {pose}: no setting of the rotary axes of {machine} gives this tool axis"),
-    ("pose-unreachable", "pose {pose} cannot be reached: {axis} would be {value}, outside its limits {min} to {max}"),
-    (
-        "linearisation-tolerance",
-        "between poses {pose} and {next} the controller's linear interpolation still strays {deviation} mm from the path after {rounds} rounds of inserted poses (tolerance {tolerance} mm): the rotary axes turn over or pass the pole there",
-    ),
-    ("retract-horizontal", "pose {pose}: the tool axis is too close to horizontal to retract along it to the safe height"),
-    ("approach-blocked", "pose {pose}: no point on its tool axis within the machine's travel from which the tool comes down clear of the stock"),
-    ("unwind-blocked", "pose {pose}: a rotary axis must unwind here, and no point on the tool axis within the travel lets it turn clear of the stock"),
-    // what the G-code post warns of (src/milling/post/plan.rs)
-    ("warn-duplicate-pose", "pose {pose} repeats pose {previous}: no block written for it"),
-    ("warn-flipped-axis", "pose {pose}: the tool axis turns {angle}° from pose {previous}; is it flipped, pointing away from the spindle?"),
-    ("warn-slowed", "{count} blocks slowed by the axes' limits, the slowest at {feed} {units}/min at the tip instead of {wanted} ({axis}, pose {pose})"),
-    ("warn-acceleration", "{count} blocks still need more acceleration than an axis has, from pose {pose}"),
-    ("warn-pole-cone", "{count} poses within {cone}° of the pole, from pose {pose}: their tool axis turned by up to {angle}° to keep the rotary axes smooth"),
-    ("warn-tool-in-stock", "the {part} enters the stock at pose {pose} ({count} poses of the cut)"),
-    ("part-holder", "holder"),
-    ("part-shank", "shank"),
 ];
 
 #[cfg(test)]

@@ -10,9 +10,9 @@
 use std::fmt;
 
 mod message;
-#[cfg(any(feature = "serde", target_family = "wasm"))]
+#[cfg(feature = "serde")]
 mod serialize;
-pub use message::{message_number, message_template, Arg, Message, MESSAGES, TEXT_REASON};
+pub use message::{message_number, message_template, Arg, Catalogue, Message, MESSAGES, TEXT_REASON};
 
 /// Why an input was rejected or a computation could not be carried out.
 #[derive(Debug, Clone, PartialEq)]
@@ -185,32 +185,32 @@ pub type Result<T> = std::result::Result<T, Error>;
 
 /// Where an error points: the fields of a JS error's `details` (all optional).
 #[derive(Debug, Clone, Default, PartialEq)]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "camelCase"))]
 pub struct Details {
     /// The option or parameter at fault.
-    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub option: Option<String>,
     /// Index into the flat input array (or of the ruling, for zero-length rulings).
-    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub index: Option<usize>,
     /// 1-based line of a text.
-    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub line: Option<usize>,
     /// 1-based column of a text.
-    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub column: Option<usize>,
     /// The limit that was exceeded (or not reached).
-    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub limit: Option<f64>,
     /// What is wrong, as a stable key of [`MESSAGES`] (for a page that says it in its language).
-    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub reason: Option<&'static str>,
     /// The values the reason's text names (numbers stay numbers).
-    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub args: Option<Args>,
     /// What to do about it: `{ reason, args }`, said after the position.
-    #[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(skip_serializing_if = "Option::is_none"))]
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub hint: Option<Hint>,
 }
 
@@ -220,7 +220,7 @@ pub struct Args(pub Vec<(&'static str, Arg)>);
 
 /// A hint for JS: `{ reason, args }`.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Hint {
     /// The hint's reason.
     pub reason: &'static str,

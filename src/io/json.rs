@@ -13,15 +13,22 @@ use crate::error::{Error, Message, Result};
 use crate::msg;
 use crate::tolerance::{MAX_IMPORT_TEXT, MAX_JSON_DEPTH, MAX_JSON_NUMBERS, MAX_RULINGS};
 
-/// A parsed JSON value; arrays and objects keep the byte offset of each item.
+/// A parsed JSON value; arrays and objects keep the byte offset of each item (so that a reader
+/// built on it says where a value at fault is, by line and column).
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) enum Value {
+pub enum JsonValue {
+    /// `null`.
     Null,
+    /// `true` or `false` (which one is not kept: no reader needs it).
     Bool,
+    /// A number, read by the parser given.
     Number(f64),
+    /// A string, its escapes resolved.
     String(String),
-    Array(Vec<(usize, Value)>),
-    Object(Vec<(String, usize, Value)>),
+    /// An array: each item with its byte offset.
+    Array(Vec<(usize, JsonValue)>),
+    /// An object: each field's name, its value's byte offset, its value.
+    Object(Vec<(String, usize, JsonValue)>),
 }
 
 /// A parse error at byte offset `at` of `text`, said by line and column.
@@ -51,7 +58,7 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn value(&mut self, depth: usize) -> Result<(usize, Value)> {
+    fn value(&mut self, depth: usize) -> Result<(usize, JsonValue)> {
         self.skip_space();
         let start = self.at;
         if depth > MAX_JSON_DEPTH {
@@ -79,7 +86,7 @@ impl<'a> Parser<'a> {
                         }
                     }
                 }
-                Value::Array(items)
+                JsonValue::Array(items)
             }
             b'{' => {
                 self.at += 1;
@@ -91,7 +98,7 @@ impl<'a> Parser<'a> {
                     loop {
                         self.skip_space();
                         let key_at = self.at;
-                        let Value::String(key) = self.value(depth + 1)?.1 else {
+                        let JsonValue::String(key) = self.value(depth + 1)?.1 else {
                             return Err(self.fail(key_at, msg!("json-string-key")));
                         };
                         self.skip_space();
@@ -112,7 +119,7 @@ impl<'a> Parser<'a> {
                         }
                     }
                 }
-                Value::Object(fields)
+                JsonValue::Object(fields)
             }
             b'"' => {
                 self.at += 1;
@@ -125,13 +132,13 @@ impl<'a> Parser<'a> {
                 }
                 let s = self.text.get(begin..self.at).unwrap_or("").to_string();
                 self.at += 1;
-                Value::String(s)
+                JsonValue::String(s)
             }
             b't' | b'f' | b'n' => {
                 for word in ["true", "false", "null"] {
                     if self.text.get(self.at..self.at + word.len()) == Some(word) {
                         self.at += word.len();
-                        return Ok((start, if word == "null" { Value::Null } else { Value::Bool }));
+                        return Ok((start, if word == "null" { JsonValue::Null } else { JsonValue::Bool }));
                     }
                 }
                 return Err(self.fail(start, msg!("json-word")));
@@ -158,7 +165,7 @@ impl<'a> Parser<'a> {
                         max: self.max_numbers,
                     });
                 }
-                Value::Number(x)
+                JsonValue::Number(x)
             }
             _ => {
                 let c = self.text[start..].chars().next().unwrap_or(' ');
@@ -169,15 +176,15 @@ impl<'a> Parser<'a> {
     }
 }
 
-/// Parses JSON text into a [`Value`] (the tool poses of `io/toolpath.rs`), with the size and
-/// nesting limits of [`read_json`].
-pub(crate) fn value_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<(usize, Value)> {
+/// Parses JSON text into a [`JsonValue`] with the size and nesting limits of [`read_json`]: the
+/// root's byte offset and the value (the tool poses of ruledlab-cam are read with it).
+pub fn read_json_value<'a>(text: &'a str, number: NumberParser<'a>) -> Result<(usize, JsonValue)> {
     value_at_most(text, number, MAX_JSON_NUMBERS)
 }
 
 /// [`value_with`] with at most `max_numbers` numbers (a parameter, so that a test reaches the
 /// limit with a few numbers instead of 25 million).
-fn value_at_most<'a>(text: &'a str, number: NumberParser<'a>, max_numbers: usize) -> Result<(usize, Value)> {
+fn value_at_most<'a>(text: &'a str, number: NumberParser<'a>, max_numbers: usize) -> Result<(usize, JsonValue)> {
     if text.len() > MAX_IMPORT_TEXT {
         return Err(Error::TooMany { what: "bytes of JSON", got: text.len(), max: MAX_IMPORT_TEXT });
     }
@@ -197,9 +204,9 @@ pub fn read_json(text: &str) -> Result<Imported> {
 
 /// As [`read_json`], converting numbers with `number` (see [`NumberParser`]).
 pub fn read_json_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Imported> {
-    let (at, root) = value_with(text, number)?;
+    let (at, root) = read_json_value(text, number)?;
     let (segments_at, segments, grid) = match root {
-        Value::Object(fields) => {
+        JsonValue::Object(fields) => {
             let find = |k: &str| fields.iter().find(|f| f.0 == k);
             let Some((_, s_at, s)) = find("segments") else {
                 return Err(fail(text, at, msg!("json-segments-missing")));
@@ -207,7 +214,7 @@ pub fn read_json_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Imp
             let dim = |k: &str| -> Result<Option<usize>> {
                 match find(k) {
                     None => Ok(None),
-                    Some((_, a, Value::Number(x))) if x.fract() == 0.0 && *x >= 2.0 && *x <= MAX_RULINGS as f64 => {
+                    Some((_, a, JsonValue::Number(x))) if x.fract() == 0.0 && *x >= 2.0 && *x <= MAX_RULINGS as f64 => {
                         Ok(Some(*x as usize))
                     }
                     Some((_, a, _)) => Err(fail(text, *a, msg!("json-grid-integer", key = k, max = MAX_RULINGS))),
@@ -222,26 +229,26 @@ pub fn read_json_with<'a>(text: &'a str, number: NumberParser<'a>) -> Result<Imp
         }
         other => (at, other, None),
     };
-    let Value::Array(items) = segments else {
+    let JsonValue::Array(items) = segments else {
         return Err(fail(text, segments_at, msg!("json-segments-array")));
     };
     let mut coords = Vec::with_capacity(items.len().min(MAX_JSON_NUMBERS));
     // where each record starts, for the messages of check_records
     let mut starts: Vec<usize> = Vec::new();
-    let nested = matches!(items.first(), Some((_, Value::Array(_))));
+    let nested = matches!(items.first(), Some((_, JsonValue::Array(_))));
     for (item_at, item) in &items {
         if nested || coords.len() % 6 == 0 {
             starts.push(*item_at);
         }
         match (nested, item) {
-            (false, Value::Number(x)) => coords.push(*x),
-            (true, Value::Array(row)) => {
+            (false, JsonValue::Number(x)) => coords.push(*x),
+            (true, JsonValue::Array(row)) => {
                 if row.len() != 6 {
                     return Err(fail(text, *item_at, msg!("json-segment-six", found = row.len())));
                 }
                 for (a, v) in row {
                     match v {
-                        Value::Number(x) => coords.push(*x),
+                        JsonValue::Number(x) => coords.push(*x),
                         _ => return Err(fail(text, *a, msg!("json-number"))),
                     }
                 }
@@ -336,7 +343,7 @@ mod tests {
 
     #[test]
     fn nesting_is_limited_by_level_through_arrays_objects_and_keys() {
-        let read = |t: &str| value_with(t, &rust_number);
+        let read = |t: &str| read_json_value(t, &rust_number);
         let at = |t: &str| {
             let d = read(t).unwrap_err().details();
             (d.reason, d.column)
@@ -357,11 +364,11 @@ mod tests {
 
     #[test]
     fn words_objects_and_grids_are_read_as_written() {
-        let read = |t: &str| value_with(t, &rust_number).unwrap().1;
-        assert_eq!(read("null"), Value::Null);
-        assert_eq!(read(" true "), Value::Bool);
-        assert_eq!(read("{}"), Value::Object(Vec::new()));
-        assert_eq!(read("{ \"k\" : [ ] }"), Value::Object(vec![("k".into(), 8, Value::Array(Vec::new()))]));
+        let read = |t: &str| read_json_value(t, &rust_number).unwrap().1;
+        assert_eq!(read("null"), JsonValue::Null);
+        assert_eq!(read(" true "), JsonValue::Bool);
+        assert_eq!(read("{}"), JsonValue::Object(Vec::new()));
+        assert_eq!(read("{ \"k\" : [ ] }"), JsonValue::Object(vec![("k".into(), 8, JsonValue::Array(Vec::new()))]));
         let reason = |t: &str| read_json(t).unwrap_err().details().reason;
         assert_eq!(reason("{}"), Some("json-segments-missing"));
         assert_eq!(reason("{\"segments\": {}}"), Some("json-segments-array"));

@@ -17,9 +17,9 @@ use glam::DVec3;
 /// The largest errors of a sampling (see the module documentation); NaN where a surface has
 /// no striction point (a cylinder) or a pair of rulings is parallel.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
-#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "camelCase"))]
+#[cfg_attr(feature = "tsify", derive(tsify_next::Tsify))]
 pub struct SamplingErrors {
     /// Rulings sampled.
     pub rulings: usize,
@@ -67,9 +67,9 @@ pub fn sampling_errors(surface: &(impl SmoothRuled + ?Sized), count: usize, rang
 /// (2·count − 1 rulings on an open range, 2·count on a closed one): log₂ of the ratio of
 /// [`SamplingErrors`]; NaN where an error is NaN or zero.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
-#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "camelCase"))]
+#[cfg_attr(feature = "tsify", derive(tsify_next::Tsify))]
 pub struct SamplingOrders {
     /// Rulings of the finer sampling.
     pub finer: usize,

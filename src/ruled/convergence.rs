@@ -22,13 +22,13 @@ use crate::tolerance::{CONVERGENCE_NOISE_FLOOR, MAX_STUDY_LEVELS};
 
 /// One quantity's errors over the refinement levels.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
-#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "camelCase"))]
+#[cfg_attr(feature = "tsify", derive(tsify_next::Tsify))]
 pub struct ConvergenceSeries {
     /// Name of the quantity (see the module table).
     #[cfg_attr(
-        target_family = "wasm",
+        feature = "tsify",
         tsify(
             type = "\"footpoint\" | \"midpoint\" | \"distribution\" | \"distributionMean\" | \"centralNormal\" | \"perpendicularMidpoint\""
         )
@@ -46,9 +46,9 @@ pub struct ConvergenceSeries {
 
 /// The result of [`convergence_study`].
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), derive(serde::Serialize))]
-#[cfg_attr(any(feature = "serde", target_family = "wasm"), serde(rename_all = "camelCase"))]
-#[cfg_attr(target_family = "wasm", derive(tsify_next::Tsify))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "camelCase"))]
+#[cfg_attr(feature = "tsify", derive(tsify_next::Tsify))]
 pub struct ConvergenceStudy {
     /// Surface name.
     pub surface: String,

@@ -207,14 +207,23 @@ test('the TypeScript declarations type the results', () => {
     'convergence(opts?: ConvergenceOptions): ConvergenceStudy;',
     'sample(count: number, opts?: SampleOptions): RuledSurface;',
     'importSegments(text: string, format?: "csv" | "json"): ImportedSegments;',
-    'refine(options?: Partial<SubdivideOptions>): ToolPath;',
-    'export(format: "json" | "csv" | "gcode", options?: GcodeOptions): string;',
     'grid(rows?: number, cols?: number, reach?: number): LineCongruence;',
   ])
     assert.ok(dts.includes(signature), signature);
+  // the CAM module's (ruledlab/cam)
+  const camDts = readFileSync(new URL('../../pkg/cam/ruledlab_cam.d.ts', import.meta.url), 'utf8');
+  for (const signature of [
+    'refine(options?: Partial<SubdivideOptions>): ToolPath;',
+    'export(format: "json" | "csv" | "gcode", options?: GcodeOptions): string;',
+  ])
+    assert.ok(camDts.includes(signature), signature);
+  // the teaching module declares nothing of CAM
+  assert.doesNotMatch(dts, /class ToolPath|GcodeOptions|importToolPoses/);
   // the public API (before wasm-bindgen's internal InitOutput table) has no `any` type
-  const api = dts.slice(0, dts.indexOf('export type InitInput'));
-  assert.doesNotMatch(api, /[:<,|(]\s*any\b|\bany\[\]/);
+  for (const text of [dts, camDts]) {
+    const api = text.slice(0, text.indexOf('export type InitInput'));
+    assert.doesNotMatch(api, /[:<,|(]\s*any\b|\bany\[\]/);
+  }
 });
 
 test('invariantsInPlace: views of wasm memory with the numbers of invariants(), reused in place, detached (never wrong) once memory grows', () => {

@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import ruledlab from './load.mjs';
+import ruledlab, { cam } from './load.mjs';
 
 const {
   RuledSurface,
@@ -11,7 +11,6 @@ const {
   InvariantsBuffer,
   LineCongruence,
   AnalyticCongruence,
-  ToolPath,
   subdividePolygon,
   turningAngles,
   importSegments,
@@ -19,6 +18,7 @@ const {
   linearComplex,
   hiddenLines,
 } = ruledlab;
+const { ToolPath } = cam;
 
 let seed = Number(process.env.FUZZ_SEED ?? 12345);
 const random = () => {

@@ -1,7 +1,7 @@
 // Import and export of segments: round trips, malformed files with line and column.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import ruledlab from './load.mjs';
+import ruledlab, { cam } from './load.mjs';
 
 const { RuledSurface, LineCongruence, AnalyticSurface, AnalyticCongruence, importSegments } = ruledlab;
 
@@ -41,7 +41,7 @@ test('malformed files are rejected with the line and column', () => {
     );
   assert.throws(() => importSegments(42), /text must be a string, got a number/);
   // the three readers refuse a text that is not one and a format they do not read alike, naming it
-  for (const read of [importSegments, ruledlab.importToolPoses, ruledlab.importTarget]) {
+  for (const read of [importSegments, cam.importToolPoses, cam.importTarget]) {
     assert.throws(() => read(42), /text must be a string, got a number/, read.name);
     assert.throws(() => read('0,0,0,1,0,0', 'xml'), /format must be "csv" or "json", got "xml"/, read.name);
     assert.throws(() => read('0,0,0,1,0,0', 5), /format must be "csv" or "json", got a number/, read.name);

@@ -1,5 +1,5 @@
-// The core's messages in every language of the page: each reason of the core's catalogue
-// (src/error/message.rs) has a text in en/errors.js and de/errors.js using only values the core
+// The core's messages in every language of the page: each reason of the core's catalogues
+// (src/error/message.rs, crates/ruledlab-cam/src/messages.rs) has a text in en/errors.js and de/errors.js using only values the core
 // gives; errors through the package carry their reason and values (numbers as numbers); the
 // page's sentence is built from them in the reader's language, German decimal commas
 // included; and German formulas take decimal commas.
@@ -15,13 +15,18 @@ import { describeError } from '../../www/ui/errors.js';
 const { AnalyticSurface, importSegments, RuledSurface } = ruledlab;
 const LANGUAGES = { en, de };
 
-/** The catalogue as the Rust source writes it: [reason, template] pairs. */
+/** The catalogues as the Rust sources write them — the geometry's and the CAM crate's: [reason, template] pairs. */
 function catalogue() {
-  const source = readFileSync(new URL('../../src/error/message.rs', import.meta.url), 'utf8');
-  const body = source.slice(
-    source.indexOf('pub const MESSAGES'),
-    source.indexOf('];', source.indexOf('pub const MESSAGES')),
-  );
+  return [
+    ...pairsOf('../../src/error/message.rs', 'pub const MESSAGES'),
+    ...pairsOf('../../crates/ruledlab-cam/src/messages.rs', 'pub const CAM_MESSAGES'),
+  ];
+}
+
+/** The [reason, template] pairs of the catalogue `start` opens in a Rust source. */
+function pairsOf(/** @type {string} */ file, /** @type {string} */ start) {
+  const source = readFileSync(new URL(file, import.meta.url), 'utf8');
+  const body = source.slice(source.indexOf(start), source.indexOf('];', source.indexOf(start)));
   const pairs = [...body.matchAll(/\(\s*(TEXT_REASON|"[a-z0-9-]+")\s*,\s*"((?:[^"\\]|\\.)*)"\s*,?\s*\)/g)].map(
     ([, r, t]) => [r === 'TEXT_REASON' ? 'text' : JSON.parse(r), JSON.parse(`"${t}"`)],
   );

@@ -1,10 +1,11 @@
 // Example 6 through the package: ToolPath, refinement, quality, exports, G-code round trip.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import ruledlab from './load.mjs';
+import ruledlab, { cam } from './load.mjs';
 import { niceTicks, tickText } from '../../www/figures/toolpath.js';
 
-const { ToolPath, importToolPoses, importTarget, detectImport } = ruledlab;
+const { detectImport } = ruledlab;
+const { ToolPath, importToolPoses, importTarget } = cam;
 
 test('the example refines through its given poses with unit axes', () => {
   const path = ToolPath.example();

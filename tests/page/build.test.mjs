@@ -159,6 +159,8 @@ test('the first scene requests only what it draws; the other language, the Share
       assert.ok(!first.includes(file), `${what} (${file}) loaded with the first scene`);
     }
   assert.ok(!first.includes(MANIFEST.worker), 'the worker started for a figure that needs none');
+  // no CAM code with a teaching scene: neither the CAM module's glue (a lazy chunk) nor its wasm
+  assert.ok(!first.includes(MANIFEST.camWasm), 'the CAM module loaded with the first scene');
   assert.equal(requests.filter((r) => r === MANIFEST.wasm).length, 1, 'the wasm was fetched more than once');
   assert.deepEqual(await page.evaluate(() => /** @type {any} */ (window).compiled), { streaming: 1, bytes: 0 });
 
@@ -184,6 +186,15 @@ test('the first scene requests only what it draws; the other language, the Share
   await page.waitForFunction(() => document.documentElement.lang === 'de');
   assert.match(await page.locator('.rl-panel h2').first().innerText(), /Kehlpolygon/);
   assert.ok(loaded('the other language').length > 0);
+  // the milling scene: the CAM module comes now, once, and draws
+  assert.deepEqual(loaded('the CAM module'), []);
+  await page.evaluate(() => {
+    location.hash = '#scene=milling&lang=de';
+  });
+  await page.waitForFunction(() => document.querySelector('.rl-stage')?.getAttribute('data-scene') === 'milling');
+  await ready(page);
+  assert.ok(loaded('the CAM module').length > 0, 'the milling scene opened without the CAM module');
+  assert.equal(requests.filter((r) => r === MANIFEST.camWasm).length, 1, 'the CAM wasm was fetched other than once');
   assert.deepEqual(problems, []);
   await page.close();
 });

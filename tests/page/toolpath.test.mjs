@@ -9,11 +9,11 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import ruledlab from '../node/load.mjs';
+import { cam } from '../node/load.mjs';
 import { pageSession, ready, setControl, showScene, animationFrames } from './browser.mjs';
 
 const session = pageSession();
-const { ToolPath } = ruledlab;
+const { ToolPath } = cam;
 
 /** The text of the download whose button says `label`. */
 async function downloaded(/** @type {import('playwright-core').Page} */ page, /** @type {RegExp} */ label) {

@@ -165,7 +165,7 @@ export function drawnTool(p) {
  * besides): what the controls say, as they say it.
  * @param {Record<string, unknown>} p
  * @param {{ stride: number, lines?: number[] }} [input]  how the poses were numbered as given
- * @returns {import('../../pkg/ruledlab.js').GcodeOptions}
+ * @returns {import('../../pkg/cam/ruledlab_cam.js').GcodeOptions}
  */
 export function jobOptions(p, input) {
   const holder = Number(p.holder) > 0 && Number(p.holderLength) > 0;

@@ -5,7 +5,7 @@
 // tolerance; the controller's interpolation per block) over the machine's axes along the path
 // (the rotary axes' values and speeds, the blocks the axes slowed). The core computes every
 // number; this module only asks for them and draws the plots with the DOM.
-import { ToolPath } from '../../pkg/ruledlab.js';
+import { cam } from '../cam.js';
 import { svgMaker, svgFigure } from '../svg-dom.js';
 import { SMALLEST_TEXT, marker } from '../diagrams/plot.js';
 import { PLOT_MARKERS } from '../limits.js';
@@ -55,19 +55,19 @@ export const POST_PARAMS = [
  * @param {(o: any) => any} own  the scene's scope (frees the object)
  * @param {import('../scene.js').ImportedData | undefined} data
  * @param {Record<string, unknown>} p  the scene's parameters
- * @returns {{ path: import('../../pkg/ruledlab.js').ToolPath, imported: boolean }}
+ * @returns {{ path: import('../../pkg/cam/ruledlab_cam.js').ToolPath, imported: boolean }}
  */
 export function givenPath(own, data, p) {
   const tool = drawnTool(p);
-  if (data?.poses) return { path: own(ToolPath.fromPoses(data.segments, tool)), imported: true };
-  return { path: own(ToolPath.example(Number(p.poses), tool)), imported: false };
+  if (data?.poses) return { path: own(cam().ToolPath.fromPoses(data.segments, tool)), imported: true };
+  return { path: own(cam().ToolPath.example(Number(p.poses), tool)), imported: false };
 }
 
 /**
  * The options of the post for the parameters: the machine, dialect and mode chosen, and the job.
  * @param {Record<string, unknown>} p
  * @param {{ stride: number, lines?: number[] }} [input]
- * @returns {import('../../pkg/ruledlab.js').GcodeOptions}
+ * @returns {import('../../pkg/cam/ruledlab_cam.js').GcodeOptions}
  */
 export function postOptions(p, input) {
   return {
@@ -81,10 +81,10 @@ export function postOptions(p, input) {
 /**
  * The program of the refined path for the parameters, or the error the post gave (a pose
  * beyond the machine's limits is said, not thrown).
- * @param {import('../../pkg/ruledlab.js').ToolPath} refined
+ * @param {import('../../pkg/cam/ruledlab_cam.js').ToolPath} refined
  * @param {Record<string, unknown>} p
  * @param {{ stride: number, lines?: number[] }} [input]
- * @returns {{ result: import('../../pkg/ruledlab.js').PostResult | null, error: unknown }}
+ * @returns {{ result: import('../../pkg/cam/ruledlab_cam.js').PostResult | null, error: unknown }}
  */
 export function postOf(refined, p, input) {
   try {
@@ -270,7 +270,7 @@ export function stackedPlots(doc, { title, plots, comma = false }) {
  * @param {{
  *   target: { points: Float64Array, at: Float64Array } | null,
  *   scale: number, stride: number,
- *   post: import('../../pkg/ruledlab.js').PostResult | null,
+ *   post: import('../../pkg/cam/ruledlab_cam.js').PostResult | null,
  *   t: (key: string, args?: Record<string, string | number>) => string,
  *   lang?: string,
  * }} o  target: the envelope's deviation (in the poses' units); stride: refined poses per given pose

@@ -3,7 +3,8 @@
 // columns CAM systems write, their units, each pose's line) and the target curve they should
 // machine (importTarget), and the menu of exports of what is shown — drawings (SVG, TikZ, PNG,
 // the plot) and data files (written by the core).
-import { importSegments, importToolPoses, importTarget, detectImport } from '../../pkg/ruledlab.js';
+import { importSegments, detectImport } from '../../pkg/ruledlab.js';
+import { cam, startCam } from '../cam.js';
 import { download } from '../ui/download.js';
 import { linkable } from '../state.js';
 import { describeError } from '../ui/errors.js';
@@ -149,7 +150,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
 
   // import: pasted text or an uploaded file; an error is said at the paste box, and the scene
   // stays as it is
-  const show = (/** @type {string} */ text) => {
+  const show = async (/** @type {string} */ text) => {
     // an exercise file (the book: teaching/exercises.md) opens as the exercise it is
     if (onTask && /^\s*\{[\s\S]*"ruledlab"\s*:\s*"exercise"/.test(text)) {
       importError.hidden = true;
@@ -168,11 +169,17 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
     let data;
     try {
       const detected = kind.value === 'auto' ? detectImport(text) : kind.value;
+      // tool poses and target curves are the CAM module's to read: started now, if not yet
+      if (detected !== 'segments') await startCam();
       if (detected === 'poses') {
         // tool poses: tip and axis, 6 numbers each, with their tool, units and lines; rotary
         // angles (x y z a b c) for the machine the milling scene has chosen
         const machine = stage.scene?.id === 'milling' ? String(stage.params.machine) : undefined;
-        const got = importToolPoses(text, undefined, machine ? { machine: /** @type {any} */ (machine) } : undefined);
+        const got = cam().importToolPoses(
+          text,
+          undefined,
+          machine ? { machine: /** @type {any} */ (machine) } : undefined,
+        );
         const fileUnits = units.value === 'auto' ? (got.units ?? 'mm') : units.value;
         data = {
           segments: got.poses,
@@ -183,7 +190,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
         };
       } else if (detected === 'target') {
         // a target curve for the tool poses on screen
-        const got = importTarget(text);
+        const got = cam().importTarget(text);
         if (!stage.data?.poses) throw Object.assign(new Error(i18n().t('io.targetNeedsPoses')), { localized: true });
         data = { ...stage.data, target: got.points };
       } else {

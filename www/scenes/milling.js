@@ -4,7 +4,7 @@
 // paper: the job a machinist posts (figures/job.js) — the program for the machine, controller
 // and mode chosen, the machined surface against your target curve, the machine's axes along the
 // path —, and a long job refined and posted in the worker (post-job.js).
-import { ToolPath } from '../../pkg/ruledlab.js';
+import { cam } from '../cam.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { POST_PARAMS, givenPath, postOf, postOptions, programFile, deviationFigure } from '../figures/toolpath.js';
 import { JOB_PARAMS, drawnTool, stockOf } from '../figures/job.js';
@@ -38,7 +38,7 @@ function turnsAsSaid(turns) {
 
 /** Largest |deviation| of the machined surface from the target profile. */
 function maxDeviation(
-  /** @type {import('../../pkg/ruledlab.js').ToolPath} */ path,
+  /** @type {import('../../pkg/cam/ruledlab_cam.js').ToolPath} */ path,
   /** @type {Float64Array} */ profile,
 ) {
   return path.deviation(profile).reduce((m, d) => Math.max(m, Math.abs(d)), 0);
@@ -49,7 +49,7 @@ const largest = (/** @type {ArrayLike<number>} */ xs) => Array.from(xs).reduce((
 
 /**
  * The post's warnings in the reader's language (the core's reason and values, its line).
- * @param {import('../../pkg/ruledlab.js').PostResult['warnings']} warnings
+ * @param {import('../../pkg/cam/ruledlab_cam.js').PostResult['warnings']} warnings
  * @param {import('../scene.js').Context} ctx
  */
 function warningTexts(warnings, { t, format }) {
@@ -78,7 +78,7 @@ function boxEdges([lo, hi], scale) {
 /**
  * The post's readouts: what it inserted, how far the interpolation strayed, the rotary axes'
  * speeds and steps, the blocks the axes slowed, the unwinds, the pole cone, the time.
- * @param {import('../../pkg/ruledlab.js').PostResult} post
+ * @param {import('../../pkg/cam/ruledlab_cam.js').PostResult} post
  * @param {(x: number) => string} format   numbers in the page's language
  */
 function postReadouts(post, format) {
@@ -110,6 +110,8 @@ export const scene = defineScene({
   title: 'milling.title',
   text: 'milling.text',
   paper: true,
+  // tool paths and their G-code are the CAM module's
+  needs: ['cam'],
   // an edit of the poses replaces the example's
   fixed: ['poses'],
   params: [
@@ -159,7 +161,7 @@ export const scene = defineScene({
       const { path: base, imported } = givenPath(own, data, p);
       // the given poses as the reader moved them (the same tool)
       const edited = input?.poses;
-      const path = edited ? own(ToolPath.fromSegments(edited, base.tool)) : base;
+      const path = edited ? own(cam().ToolPath.fromSegments(edited, base.tool)) : base;
       // the input's numbering: errors and warnings name your pose and its line
       const numbering = { stride: 2 ** steps, ...(imported && !edited && data?.lines ? { lines: data.lines } : {}) };
       const expected = (path.length - 1) * 2 ** steps + 1;
@@ -169,7 +171,7 @@ export const scene = defineScene({
       // it (the tool keeps its length along that direction)
       const given = edited ? f32(edited) : path.segmentsF32();
       const all = refined.segmentsF32();
-      const profile = imported ? null : ToolPath.exampleProfile(400);
+      const profile = imported ? null : cam().ToolPath.exampleProfile(400);
       // the target the machined surface is measured against: the example's profile, or yours
       const target = profile ?? data?.target ?? null;
       const surface = target ? refined.envelopeDeviation(target) : null;
@@ -210,7 +212,7 @@ export const scene = defineScene({
         layers.push({ kind: 'mesh', style: 'tool', positions, indices });
       }
       if (p.part && !imported) {
-        const { positions, indices } = ToolPath.examplePart(60, 30);
+        const { positions, indices } = cam().ToolPath.examplePart(60, 30);
         layers.push({ kind: 'mesh', style: 'part', positions, indices });
       }
       // the G-code post for the machine, controller, mode and job chosen
@@ -354,7 +356,7 @@ export const scene = defineScene({
  * A job too long to refine and post while the page waits: the given poses drawn at once, then
  * refined and posted in the worker with progress (the view's Cancel stops it); the refined path
  * drawn every k-th tool axis, its program downloadable, the post's numbers in the readout.
- * @param {import('../../pkg/ruledlab.js').ToolPath} path
+ * @param {import('../../pkg/cam/ruledlab_cam.js').ToolPath} path
  * @param {import('../scene.js').Params} p
  * @param {import('../scene.js').Context} ctx
  * @param {{ stride: number, lines?: number[] }} numbering
@@ -402,7 +404,7 @@ function largeJob(path, p, ctx, numbering) {
         { label: 'milling.readout.poses', value: done.poses },
         { label: 'milling.readout.angleStep', value: (done.maxAngleStep * 180) / Math.PI },
         ...postReadouts(
-          /** @type {import('../../pkg/ruledlab.js').PostResult} */ ({ ...done.post, text: '' }),
+          /** @type {import('../../pkg/cam/ruledlab_cam.js').PostResult} */ ({ ...done.post, text: '' }),
           ctx.format,
         ),
       ];

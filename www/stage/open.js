@@ -4,6 +4,7 @@
 // link (the page's address) or an element (its attributes) asks for, so both read an exercise the
 // same way.
 import { start } from '../core.js';
+import { startCam } from '../cam.js';
 import { SCENES } from '../scenes/index.js';
 import { defaults, withChoices } from '../scene.js';
 import { Player } from '../ui/player.js';
@@ -91,6 +92,8 @@ export async function openView(stage, request) {
  */
 export async function openExercise(stage, value, progress = {}) {
   const read = typeof value === 'string' ? taskFromLink(value, builtInTask) : value;
+  // (fitting it to its scene computes the scene: the module it needs first)
+  if (SCENES.find((x) => x.id === read.scene)?.needs?.includes('cam')) await startCam();
   const kept = typeof progress.attempt === 'function' ? progress.attempt(read) : (progress.attempt ?? null);
   const task = drawTask(read, progress.seed ?? kept?.seed ?? read.drawn?.seed ?? randomSeed());
   // the attempt belongs to these numbers (or the exercise draws none)
@@ -119,6 +122,7 @@ export async function openScene(stage, scene, params, options) {
   if (!options.task) leaveTask(stage);
   try {
     await start();
+    if (scene.needs?.includes('cam')) await startCam();
   } catch (e) {
     stage.fail(e);
     throw e;

@@ -1,0 +1,354 @@
+use super::*;
+use crate::post::{Holder, Numbering, SpindleDirection, Units};
+use crate::Tool;
+
+/// A path on table-table-ac with every kind of block, scale 2, tool length 25 (50 mm): the tool
+/// axis (0, 0.6, 0.8) is A = atan(3/4) = 36.87°, (0, 0.8, 0.6) is 53.13°, C stays 0; the A-only
+/// turns keep the axis on a great circle, so with the angles interpolated (tool-centre point)
+/// nothing is inserted.
+fn path() -> ToolPath {
+    let deg = std::f64::consts::PI / 180.0;
+    let pose = |x: f64, a: DVec3| Pose { tip: DVec3::new(x, 0.0, 0.0), axis: a };
+    let (up, over) = (DVec3::new(0.0, 0.6, 0.8), DVec3::new(0.0, 0.8, 0.6));
+    let small = DVec3::new(0.0, (37.17 * deg).sin(), (37.17 * deg).cos());
+    ToolPath {
+        poses: vec![pose(0.0, up), pose(0.0, over), pose(1.0, up), pose(6.0, small), pose(11.0, up), pose(12.0, up)],
+        tool: Tool { radius: 3.0, length: 25.0, end: ToolEnd::Ball },
+    }
+}
+
+fn motions(ops: &[Op]) -> Vec<Op> {
+    ops.iter().filter(|op| !matches!(op, Op::Comment(_))).cloned().collect()
+}
+
+fn near(a: DVec3, b: DVec3) -> bool {
+    (a - b).length() < 1e-9
+}
+
+/// The kind of each op, to compare sequences.
+fn kind(op: &Op) -> String {
+    match op {
+        Op::Rapid(_, w) => format!("Rapid {w:?}"),
+        Op::Feed(_, Rate::PerMinute(_)) => "Feed".into(),
+        Op::Feed(_, Rate::Simultaneous { .. }) => "Feed turning".into(),
+        other => format!("{other:?}").split(['(', ' ', '{']).next().unwrap_or("").to_string(),
+    }
+}
+
+/// Tool-centre point: X Y Z are the tips in part coordinates. The machinist's order: the spindle
+/// to the top of Z, the rotary axes turned there, tool-centre point on, X Y at the top of Z, Z
+/// down to the safe point on the first tool axis — 25 mm above the highest tip (z = 0) plus the
+/// clearance 5: part height 30, 37.5 mm up the axis, (0, 22.5, 30) —, down the axis to the
+/// clearance outside the stock: the stock is the tips' box grown by 1 mm, which the axis leaves
+/// at z = 1 (t = 1.25), so 5 mm on, t = 6.25: (0, 3.75, 5). The approach runs at a quarter of the
+/// feed. A block that turns a rotary axis takes the tip's distance at the feed (10 mm: 0.01 min),
+/// or, with the tip still, the tool's far end: 50 mm × acos 0.96.
+#[test]
+fn a_tcp_program_takes_its_points_on_the_tool_axes_and_times_its_turns() {
+    let o = PostOptions { scale: 2.0, mode: Mode::Tcp, ..PostOptions::default() };
+    let p = plan(&path(), &o).unwrap();
+    let ops = motions(&p.ops);
+    let kinds: Vec<String> = ops.iter().map(kind).collect();
+    assert_eq!(
+        kinds,
+        [
+            "Start",
+            "WorkOffset",
+            "ToolChange",
+            "Tolerance",
+            "RetractTop",
+            "Rotate",
+            "Tcp",
+            "Rapid Xy",
+            "Rapid Z",
+            "Rapid All",
+            "Coolant",
+            "Feed",
+            "Feed turning",
+            "Feed turning",
+            "Feed turning",
+            "Feed turning",
+            "Feed",
+            "Feed",
+            "Coolant",
+            "SpindleOff",
+            "Rapid All",
+            "Tcp",
+            "RetractTop",
+            "ToleranceOff",
+            "Rotate",
+            "End",
+        ]
+    );
+    let a0 = 36.86989764584402;
+    let target = |k: usize| match &ops[k] {
+        Op::Rapid(t, _) | Op::Feed(t, _) => *t,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(ops[2], Op::ToolChange { tool: 1, spindle: 10000.0, direction: SpindleDirection::Clockwise });
+    assert_eq!(ops[3], Op::Tolerance { chordal: 0.01, angular: 0.0 });
+    assert_eq!(ops[4], Op::RetractTop(400.0));
+    let Op::Rotate(r) = ops[5] else { panic!() };
+    assert!((r[0] - a0).abs() < 1e-9 && r[1] == 0.0, "{r:?}");
+    // X Y at the top of Z over the safe point, on the machine's vertical through it
+    let m = &o.machine;
+    let (top, safe, clear) = (target(7), target(8), target(9));
+    let (mt, ms) = (machine_position(m, top.xyz, r, 50.0), machine_position(m, safe.xyz, r, 50.0));
+    assert!((mt.x - ms.x).abs() < 1e-9 && (mt.y - ms.y).abs() < 1e-9 && (mt.z - 400.0).abs() < 1e-9, "{mt} {ms}");
+    assert!(near(safe.xyz, DVec3::new(0.0, 22.5, 30.0)), "{safe:?}");
+    assert!(near(clear.xyz, DVec3::new(0.0, 3.75, 5.0)), "{clear:?}");
+    assert!(near(target(11).xyz, DVec3::ZERO));
+    assert_eq!(ops[11], Op::Feed(target(11), Rate::PerMinute(250.0)));
+    let rate = |k: usize| match &ops[k] {
+        Op::Feed(_, r) => *r,
+        other => panic!("{other:?}"),
+    };
+    let Rate::Simultaneous { minutes, distance, linear, turn } = rate(12) else { panic!() };
+    assert!((distance - 50.0 * 0.96f64.acos()).abs() < 1e-12 && linear == 0.0);
+    assert!((minutes - distance / 1000.0).abs() < 1e-15 && (turn - (53.13010235415599 - a0)).abs() < 1e-9);
+    // back from 53.13° to 36.87° over 2 mm: at 1000 mm/min A would turn 8130°/min; at its 5400
+    // the block takes 16.26/5400 min, the tip slowed to 664 mm/min (a warning says so)
+    let Rate::Simultaneous { minutes, .. } = rate(13) else { panic!() };
+    assert!((minutes - (53.13010235415599 - a0) / 5400.0).abs() < 1e-12, "{minutes}");
+    assert_eq!(p.warnings.len(), 1, "{:?}", p.warnings);
+    assert_eq!((p.warnings[0].message.reason, p.warnings[0].pose), ("warn-slowed", 1));
+    let Rate::Simultaneous { minutes, distance, .. } = rate(14) else { panic!() };
+    assert!((distance - 10.0).abs() < 1e-12 && (minutes - 0.01).abs() < 1e-15);
+    assert_eq!(rate(16), Rate::PerMinute(1000.0));
+    // the end mirrors the start: out to the clearance, up the axis to the safe height
+    assert!(near(target(17).xyz, DVec3::new(24.0, 3.75, 5.0)) && rate(17) == Rate::PerMinute(250.0));
+    assert!(near(target(20).xyz, DVec3::new(24.0, 22.5, 30.0)));
+    assert_eq!(ops[24], Op::Rotate([0.0, 0.0]));
+    // the header: six poses, none inserted; the stock
+    assert!(p.ops.contains(&Op::Comment("ruledlab tool path: 6 poses, 6 of the path and 0 inserted".into())));
+    assert_eq!(p.context.bounds, (DVec3::splat(-1.0), DVec3::new(25.0, 1.0, 1.0)));
+    assert_eq!((p.context.letters, p.context.mode), (["A", "C"], Mode::Tcp));
+}
+
+/// Machine coordinates: X Y Z are the machine positions, computed with the machine's pivots and
+/// part zero; the rapids to the safe point write X Y, then Z; no TCP switch; the still tip's turn
+/// is cut into blocks.
+#[test]
+fn a_machine_program_writes_machine_positions() {
+    let o = PostOptions { scale: 2.0, ..PostOptions::default() };
+    let p = plan(&path(), &o).unwrap();
+    let ops = motions(&p.ops);
+    assert!(!ops.iter().any(|op| matches!(op, Op::Tcp(_))));
+    let m = &o.machine;
+    let Op::Rotate(r) = ops[5] else { panic!() };
+    let (Op::Rapid(xy, Words::Xy), Op::Rapid(z, Words::Z)) = (&ops[6], &ops[7]) else { panic!("{:?}", &ops[6..8]) };
+    let safe = machine_position(m, DVec3::new(0.0, 22.5, 30.0), r, 50.0);
+    assert!(near(xy.xyz, DVec3::new(safe.x, safe.y, 400.0)) && near(z.xyz, safe), "{xy:?} {z:?} {safe}");
+    let Op::Feed(first, _) = &ops[10] else { panic!() };
+    assert!(near(first.xyz, machine_position(m, DVec3::ZERO, r, 50.0)));
+    let cut = p.linearised.poses.len();
+    assert!(cut > 6, "the still tip's turn is cut");
+    let header = format!("ruledlab tool path: {cut} poses, 6 of the path and {} inserted", cut - 6);
+    assert!(p.ops.contains(&Op::Comment(header)));
+}
+
+/// The safe height may be the highest tip plus the clearance (5 mm here), not below.
+#[test]
+fn the_safe_height_clears_the_highest_tip_by_the_clearance() {
+    let o = |h: f64| PostOptions { scale: 2.0, mode: Mode::Tcp, safe_height: Some(h), ..PostOptions::default() };
+    let e = plan(&path(), &o(4.999)).unwrap_err();
+    assert_eq!(e.details().option.as_deref(), Some("safeHeight"));
+    let p = plan(&path(), &o(5.0)).unwrap();
+    let Op::Rapid(t, Words::Z) = motions(&p.ops)[8] else { panic!() };
+    assert!(near(t.xyz, DVec3::new(0.0, 3.75, 5.0)), "{t:?}");
+}
+
+/// Each dialect says how its rotary moves are fed.
+#[test]
+fn the_header_says_how_rotary_moves_are_fed() {
+    for (dialect, mode, says) in [
+        (Dialect::Heidenhain, Mode::Tcp, "F at the tip with FUNCTION TCPM F TCP"),
+        (Dialect::Heidenhain, Mode::Machine, "rotary moves get the F of X Y Z that keeps the feed at the tip"),
+        (Dialect::LinuxCnc, Mode::Machine, "inverse time G93 on rotary moves"),
+        (Dialect::Sinumerik, Mode::Tcp, "inverse time G93 on rotary moves"),
+    ] {
+        let p = plan(&path(), &PostOptions { dialect, mode, ..PostOptions::default() }).unwrap();
+        let line = format!("units mm, 1 mm per model unit, feed 1000 mm/min at the tip, {says}, approach 250 mm/min");
+        assert!(p.ops.contains(&Op::Comment(line)), "{dialect:?} {mode:?}: {:?}", p.ops[3]);
+    }
+}
+
+/// The safe moves at the end are checked against the travel (and the retract's slope) and
+/// named by the last pose of the given path. An axis within 0.1 of the horizontal has no way up.
+#[test]
+fn the_safe_moves_at_the_end_are_named_by_the_last_pose() {
+    let tool = Tool { radius: 3.0, length: 25.0, end: ToolEnd::Ball };
+    let path = |last: Pose| ToolPath {
+        poses: vec![Pose { tip: DVec3::ZERO, axis: DVec3::Z }, Pose { tip: DVec3::new(10.0, 0.0, 0.0), ..last }, last],
+        tool,
+    };
+    let o = PostOptions { mode: Mode::Tcp, ..PostOptions::default() };
+    let flat = path(Pose { tip: DVec3::new(20.0, 0.0, 0.0), axis: DVec3::new(0.0, 0.9959, 0.09).normalize() });
+    let Err(Error::Unreachable { pose, message, .. }) = plan(&flat, &o) else { panic!("reachable") };
+    assert_eq!((pose, message.reason), (2, "retract-horizontal"));
+    // the safe point beyond the top of Z: no clear approach within the travel
+    let high = path(Pose { tip: DVec3::new(20.0, 0.0, 0.0), axis: DVec3::new(0.0, 0.6, 0.8) });
+    let Err(Error::Unreachable { pose, message, .. }) = plan(&high, &PostOptions { safe_height: Some(450.0), ..o })
+    else {
+        panic!("reachable")
+    };
+    assert_eq!((pose, message.reason), (0, "approach-blocked"));
+}
+
+/// Poses named in the input's numbering: with 4 poses of the path per input pose and the input
+/// read from lines 3, 4, 5, an error at path pose 2 is at input pose 0, line 3; a warning at
+/// path pose 5 (a duplicate) at input pose 1, line 4.
+#[test]
+fn errors_and_warnings_name_the_input_pose_and_its_line() {
+    let mut p = path();
+    p.poses[4] = p.poses[3];
+    let numbering = Some(Numbering { stride: 4, lines: vec![3, 4, 5] });
+    let o = PostOptions { mode: Mode::Tcp, numbering, ..PostOptions::default() };
+    let plan = plan(&p, &o).unwrap();
+    let dup: Vec<&Warning> = plan.warnings.iter().filter(|w| w.message.reason == "warn-duplicate-pose").collect();
+    assert_eq!(dup.len(), 1, "{:?}", plan.warnings);
+    assert_eq!((dup[0].pose, dup[0].line), (1, Some(4)));
+    // no empty block: one feed fewer than poses after the approach
+    let feeds = motions(&plan.ops).iter().filter(|op| matches!(op, Op::Feed(..))).count();
+    assert_eq!(feeds, 1 + (plan.linearised.poses.len() - 2) + 1);
+    // an axis turned to 130° from the vertical, at path pose 2: input pose 0, line 3
+    let mut far = path();
+    let t = 130f64.to_radians();
+    far.poses[2].axis = DVec3::new(0.0, t.sin(), t.cos());
+    let e = super::plan(&far, &o).unwrap_err();
+    assert_eq!((e.details().index, e.details().line), (Some(0), Some(3)), "{e}");
+    assert!(
+        e.to_string().starts_with("pose 0 cannot be reached: A would be") && e.to_string().ends_with("(line 3)"),
+        "{e}"
+    );
+    // the flipped axis is said
+    let warned = super::plan(&far, &PostOptions { machine: Machine::preset("table-table-bc").unwrap(), ..o.clone() });
+    if let Ok(w) = warned {
+        assert!(w.warnings.iter().any(|w| w.message.reason == "warn-flipped-axis"), "{:?}", w.warnings);
+    }
+}
+
+/// Inches: the program's lengths and feeds are the options' (25.4 mm each), the machine's
+/// travel converted; the same path at 1 inch per unit gives the millimetre program's numbers at
+/// 25.4 mm per unit divided by 25.4.
+#[test]
+fn an_inch_program_writes_inches() {
+    let mm = plan(
+        &path(),
+        &PostOptions { scale: 25.4, feed: 2540.0, mode: Mode::Tcp, clearance: 25.4, ..PostOptions::default() },
+    )
+    .unwrap();
+    let inch = plan(
+        &path(),
+        &PostOptions {
+            scale: 1.0,
+            feed: 100.0,
+            units: Units::Inch,
+            mode: Mode::Tcp,
+            clearance: 1.0,
+            ..PostOptions::default()
+        },
+    )
+    .unwrap();
+    assert_eq!(inch.context.units, Units::Inch);
+    let (a, b) = (motions(&mm.ops), motions(&inch.ops));
+    assert_eq!(a.len(), b.len());
+    for (x, y) in a.iter().zip(&b) {
+        match (x, y) {
+            (Op::Feed(s, Rate::PerMinute(f)), Op::Feed(t, Rate::PerMinute(g))) => {
+                assert!(near(s.xyz / 25.4, t.xyz) && (f / 25.4 - g).abs() < 1e-9, "{x:?} {y:?}")
+            }
+            (Op::Rapid(s, _), Op::Rapid(t, _)) | (Op::Feed(s, _), Op::Feed(t, _)) => {
+                assert!(near(s.xyz / 25.4, t.xyz), "{x:?} {y:?}")
+            }
+            (Op::RetractTop(z), Op::RetractTop(w)) => assert!((z / 25.4 - w).abs() < 1e-12),
+            _ => {}
+        }
+    }
+    // the block of the first test slowed by A's speed (664 mm/min instead of 1000), in an inch
+    // program: said in inches per minute
+    let slowed = |o: &PostOptions| {
+        let p = plan(&path(), o).unwrap();
+        let w = p.warnings.iter().find(|w| w.message.reason == "warn-slowed").expect("a slowed block").clone();
+        let arg = |name: &str| w.message.args.iter().find(|(n, _)| *n == name).map(|(_, v)| v.clone());
+        match (arg("feed"), arg("wanted"), arg("units")) {
+            (Some(Arg::Number(f)), Some(Arg::Number(w)), Some(Arg::Text(u))) => (f, w, u),
+            other => panic!("{other:?}"),
+        }
+    };
+    let (f_mm, w_mm, u_mm) = slowed(&PostOptions { scale: 2.0, mode: Mode::Tcp, ..PostOptions::default() });
+    let (f_in, w_in, u_in) = slowed(&PostOptions {
+        scale: 2.0 / 25.4,
+        feed: 1000.0 / 25.4,
+        units: Units::Inch,
+        mode: Mode::Tcp,
+        clearance: 5.0 / 25.4,
+        ..PostOptions::default()
+    });
+    assert_eq!((w_mm, u_mm.as_str(), u_in.as_str()), (1000.0, "mm", "inch"));
+    assert!((w_in - 1000.0 / 25.4).abs() < 1e-9 && (f_mm - 664.0).abs() < 1.0, "{w_in} {f_mm}");
+    // (each rounded to a tenth)
+    assert!((f_mm / 25.4 - f_in).abs() <= 0.05 + 0.05 / 25.4, "{f_mm} mm/min, {f_in} inch/min");
+}
+
+/// A holder that reaches into the stock along the cut is a warning naming the first pose; the
+/// gauge length moves the head machines' positions, not the table machines'.
+#[test]
+fn the_holder_in_the_stock_is_said_and_the_gauge_length_is_the_kinematics() {
+    // the holder from 50 to 60 mm up the axis (0, 0.6, 0.8) of the first pose: its lowest
+    // point at 40 − 15 · 0.6 = 31 above the tip, below the stock's top at 36
+    let stock = Some([[-10.0, -10.0, -50.0], [40.0, 40.0, 36.0]]);
+    let o = PostOptions {
+        mode: Mode::Tcp,
+        scale: 2.0,
+        gauge: Some(60.0),
+        holder: Some(Holder { radius: 15.0, length: 10.0 }),
+        stock,
+        safe_height: Some(40.0),
+        ..PostOptions::default()
+    };
+    let p = plan(&path(), &o).unwrap();
+    let w: Vec<&Warning> = p.warnings.iter().filter(|w| w.message.reason == "warn-tool-in-stock").collect();
+    assert!(
+        !w.is_empty() && w.iter().any(|w| w.message.arg("part") == Some(&Arg::Text("holder".into()))),
+        "{:?}",
+        p.warnings
+    );
+    assert!(p.ops.iter().any(|op| matches!(op, Op::Comment(c) if c.contains("gauge length 60.0000 mm, holder radius 15.0000 length 10.0000 mm"))));
+    let head = |gauge: f64| {
+        let o = PostOptions {
+            machine: Machine::preset("head-table-bc").unwrap(),
+            gauge: Some(gauge),
+            scale: 2.0,
+            ..PostOptions::default()
+        };
+        plan(&path(), &o).unwrap().linearised.joints[0].xyz
+    };
+    assert!((head(50.0) - head(80.0)).length() > 1.0);
+}
+
+/// A continuous axis ends at its nearest whole turn, a limited one at zero: the table-table
+/// machine's C after a spiral of two and a half turns ends at 720° with no rapid back, the
+/// fork head's limited C at 0.
+#[test]
+fn the_rotary_axes_end_without_a_multi_turn_rapid() {
+    let poses: Vec<Pose> = (0..=90)
+        .map(|k| {
+            let (t, f) = (30f64.to_radians(), (10.0 * k as f64).to_radians());
+            Pose {
+                tip: DVec3::new(40.0 * f.cos(), 40.0 * f.sin(), 0.0),
+                axis: DVec3::new(t.sin() * f.cos(), t.sin() * f.sin(), t.cos()),
+            }
+        })
+        .collect();
+    let path = ToolPath { poses, tool: Tool { radius: 3.0, length: 25.0, end: ToolEnd::Ball } };
+    let p = plan(&path, &PostOptions { mode: Mode::Tcp, ..PostOptions::default() }).unwrap();
+    let Some(Op::Rotate(home)) = p.ops.iter().rev().find(|op| matches!(op, Op::Rotate(_))).cloned() else { panic!() };
+    let last = p.linearised.leaving(p.linearised.joints.len() - 1).rotary;
+    assert_eq!(home[0], 0.0);
+    assert!(
+        (home[1] - last[1]).abs() <= 180.0 && home[1] % 360.0 == 0.0 && home[1].abs() >= 720.0,
+        "{home:?} from {last:?}"
+    );
+    assert!(p.ops.iter().any(|op| matches!(op, Op::Comment(c) if c.contains("no unwinding rapid"))));
+}

@@ -1,0 +1,38 @@
+//! The CAM crate's limits and tolerances, one module (the geometry's are `ruledlab::tolerance`):
+//! the pole of a machine, the post's linearisation, the G-code's decimals, safe moves, the values
+//! a machine description may hold. Each constant says where it is used.
+
+/// The pole of a five-axis machine: a vector within this sine of the rotary axis that turns it
+/// (|v × u| below it) leaves that axis's angle undetermined (`kinematics`).
+pub const POLE_SIN: f64 = 1e-9;
+
+/// Samples per block at which the post compares the controller's linear interpolation with the
+/// path (`linearise`).
+pub const LINEARISATION_SAMPLES: usize = 16;
+
+/// Most rounds of halving the blocks whose interpolation strays beyond the tolerance (each round
+/// halves every such block once; 16 rounds split a block into up to 65 536).
+pub const MAX_LINEARISATION_ROUNDS: usize = 16;
+
+/// Most poses the post writes (the refined path with the poses the linearisation inserted).
+pub const MAX_POST_POSES: usize = 1 << 20;
+
+/// The smallest linearisation tolerance accepted, in mm (below the 1e-4 mm the programs print).
+pub const MIN_LINEARISATION_TOLERANCE: f64 = 1e-4;
+
+/// Decimals of lengths (mm) and angles (degrees) in the G-code: 1e-4 mm and 1e-4°.
+pub const GCODE_DECIMALS: usize = 4;
+
+/// Decimals of a tool-axis vector's components (Sinumerik `A3= B3= C3=`).
+pub const GCODE_VECTOR_DECIMALS: usize = 7;
+
+/// The smallest vertical component of a tool axis that the safe moves retract along: a tool
+/// axis within about 5.7° of horizontal cannot be retracted along itself to a safe height.
+pub const MIN_RETRACT_COS: f64 = 0.1;
+
+/// Most distinct unwrappings (multiples of 360°) of one limited rotary axis the inverse
+/// kinematics considers per pose.
+pub const MAX_AXIS_TURNS: usize = 8;
+
+/// The largest coordinate (mm, degrees, feed) a machine description or post option accepts.
+pub const MAX_MACHINE_VALUE: f64 = 1e7;

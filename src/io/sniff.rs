@@ -1,0 +1,77 @@
+//! What kind of data a text holds, before it is read: segments (the geometry's own), tool
+//! poses or a target curve (read by ruledlab-cam). The page asks this of any text it is given
+//! and loads the CAM module only for what is CAM's; the test is on the text alone — JSON keys,
+//! a CSV header's column names, how many numbers a line has.
+
+/// Which columns of a table give a tool pose (read by ruledlab-cam's pose reader).
+#[derive(Debug, Clone, PartialEq)]
+pub enum PoseColumns {
+    /// Six numbers a line: tip x, y, z, axis i, j, k.
+    Positional,
+    /// The columns of tip x, y, z and axis i, j, k.
+    Vector([usize; 6]),
+    /// The columns of tip x, y, z and of the rotary angles (letter, column), degrees.
+    Angles([usize; 3], Vec<(char, usize)>),
+}
+
+/// The columns a header names, if it names a pose's: tip x, y, z (or tip_x, …) with axis i, j, k
+/// (or axis_i, …), or with rotary angles a, b, c for a machine.
+pub fn pose_columns(header: &[String]) -> Option<PoseColumns> {
+    let find = |names: &[&str]| header.iter().position(|h| names.contains(&h.as_str()));
+    let xyz =
+        [find(&["x", "tip_x", "tipx", "px"]), find(&["y", "tip_y", "tipy", "py"]), find(&["z", "tip_z", "tipz", "pz"])];
+    let ijk = [
+        find(&["i", "axis_i", "axisi", "nx"]),
+        find(&["j", "axis_j", "axisj", "ny"]),
+        find(&["k", "axis_k", "axisk", "nz"]),
+    ];
+    let [Some(x), Some(y), Some(z)] = xyz else { return None };
+    if let [Some(i), Some(j), Some(k)] = ijk {
+        return Some(PoseColumns::Vector([x, y, z, i, j, k]));
+    }
+    let angles: Vec<(char, usize)> = ['a', 'b', 'c']
+        .into_iter()
+        .filter_map(|l| header.iter().position(|h| h.len() == 1 && h.starts_with(l)).map(|c| (l, c)))
+        .collect();
+    (!angles.is_empty() && ijk.iter().all(Option::is_none)).then_some(PoseColumns::Angles([x, y, z], angles))
+}
+
+/// Whether a text looks like tool poses rather than segments: JSON with `"poses"` or `"tip"`;
+/// CSV from ruledlab's tool-path export (`# ruledlab tool path`) or whose header names a tip or
+/// an axis (`tip_x,…,axis_k`).
+pub fn looks_like_poses(text: &str) -> bool {
+    let t = text.trim_start_matches('\u{feff}').trim_start();
+    if t.starts_with(['[', '{']) {
+        return t.contains("\"poses\"") || t.contains("\"tip\"");
+    }
+    for line in t.lines().map(str::trim).filter(|l| !l.is_empty()) {
+        if line.starts_with("# ruledlab tool path") {
+            return true;
+        }
+        if line.starts_with('#') {
+            continue;
+        }
+        let l = line.to_ascii_lowercase();
+        let names: Vec<String> =
+            l.split([',', ';', '\t', ' ']).map(|f| f.trim().to_string()).filter(|f| !f.is_empty()).collect();
+        return l.contains("tip") || l.contains("axis") || pose_columns(&names).is_some();
+    }
+    false
+}
+
+/// Whether a text looks like a target curve rather than segments or poses: JSON with
+/// `"points"`, or CSV whose first record has 3 numbers.
+pub fn looks_like_target(text: &str) -> bool {
+    let t = text.trim_start_matches('\u{feff}').trim_start();
+    if t.starts_with(['[', '{']) {
+        return t.contains("\"points\"");
+    }
+    let record = t.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with('#')).find(|l| {
+        let fields: Vec<&str> = l.split([',', ';', '\t', ' ']).filter(|f| !f.is_empty()).collect();
+        fields.iter().all(|f| super::classify(&f.replace(',', ".")) == super::Token::Number)
+    });
+    record.is_some_and(|l| {
+        let sep: &[char] = if l.contains(';') { &[';', '\t', ' '] } else { &[',', '\t', ' '] };
+        l.split(sep).filter(|f| !f.is_empty()).count() == 3
+    })
+}
