@@ -16,6 +16,8 @@ rm -rf site
 mdbook build docs
 npx typedoc --logLevel Warn --treatWarningsAsErrors --name "ruledlab $(node -p "require('./package.json').version")" \
   --readme none --disableSources --out site/api --tsconfig tests/types/docs.tsconfig.json pkg/ruledlab.d.ts pkg/cam/ruledlab_cam.d.ts pkg/view/www/index.d.ts pkg/view/www/course/index.d.ts
+# (the lint step documents every crate of the workspace: the site takes the two users call)
+rm -rf target/doc
 RUSTDOCFLAGS="-D warnings" cargo doc --quiet --no-deps -p ruledlab -p ruledlab-cam
 cp -r target/doc site/rust
 # rustdoc's help and settings pages link to the index of all crates, which one crate has not

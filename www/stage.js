@@ -4,12 +4,13 @@
 // its state and reports every change, it never touches the URL itself.
 //
 // Data goes one way. The state — scene, parameters, input (the reader's edit), exercise, the
-// paper's figure, imported data, language — changes only in the methods of this class (setParam,
-// setInput, setLanguage, reset, …) and in opening a scene or an exercise (stage/open.js); each
-// asks the core for what the state shows (session.js: the scene's create()), and the parts of the
-// stage (stage/*.js: controls, player, paper card, edit host, exercise host, results, announcer,
-// shortcuts, layout) show it. A part asks for a change by calling one of these methods; none
-// changes the state itself.
+// paper's figure, imported data, language, what the panel shows — is the store's (store.js): a
+// frozen object that only `dispatch(change)` replaces. The methods of this class (setParam,
+// setInput, setLanguage, reset, …) and opening a scene or an exercise (stage/open.js) dispatch
+// changes; each asks the core for what the state shows (session.js: the scene's create()), and
+// the parts of the stage (stage/*.js: controls, player, paper card, edit host, exercise host,
+// results, announcer, shortcuts, layout) show it. The state's fields read here (`scene`,
+// `params`, …) are views of the store's state: assigning one throws.
 import { watchMath } from './ui/scrolling-math.js';
 import { Viewer } from './viewer.js';
 import { SceneSession } from './session.js';
@@ -31,6 +32,7 @@ import { EditHost } from './stage/edit-host.js';
 import { ExerciseHost } from './stage/exercise-host.js';
 import { Results } from './stage/results.js';
 import { Shortcuts } from './stage/shortcuts.js';
+import { Store, initialState, heldReason } from './store.js';
 
 /**
  * @typedef {import('./stage/options.js').StageOptions} StageOptions
@@ -56,27 +58,16 @@ export class Stage {
     this.els = stageElements(host, { page: options.page });
     const els = this.els;
 
-    // the state (changed only by the methods below)
-    /** @type {import('./scene.js').Scene | null} */
-    this.scene = null;
-    /** @type {import('./scene.js').Params} */
-    this.params = {};
-    /** @type {import('./scene.js').ImportedData | null} */
-    this.data = null;
-    /** @type {import('./paper.js').PaperPreset | null} the figure of the paper shown, if any */
-    this.paper = null;
-    /** @type {import('./scene.js').Input | null} the reader's edit of the scene's input (null: the built-in input) */
-    this.input = null;
-    /** the i18n key of a note about the edit (too large for the link), or '' */
-    this.inputNote = '';
-    /** @type {import('./task/format.js').Task | null} the exercise being done, if any */
-    this.task = null;
-    /** @internal @type {string | null} the parameter the reader changed last (an error names its field) */
-    this.lastChanged = null;
-    /** @internal whether the controls and the explanation are shown */
-    this.showControls = options.controls ?? true;
-    /** @internal */
-    this.showText = options.text ?? true;
+    /** @internal the state, and its one writer (store.js) */
+    this.store = new Store(
+      initialState({
+        lang: this.i18n.lang,
+        controls: options.controls ?? true,
+        text: options.text ?? true,
+        editable: !!options.editable,
+      }),
+      () => {},
+    );
 
     /** the place of the page's "Make an exercise" panel (task/author.js) */
     this.authorBox = els.authorBox;
@@ -129,6 +120,69 @@ export class Stage {
     return this.edit.editor;
   }
 
+  /** The state now (store.js): frozen, changed only by `dispatch`. */
+  get state() {
+    return this.store.state;
+  }
+
+  /**
+   * @internal Changes the state (store.js's `dispatch`, its one writer).
+   * @param {import('./store.js').Change} change
+   */
+  dispatch(change) {
+    return this.store.dispatch(change);
+  }
+
+  /** The scene shown. @returns {import('./scene.js').Scene | null} */
+  get scene() {
+    return this.state.scene;
+  }
+
+  /** Its parameters. @returns {import('./scene.js').Params} */
+  get params() {
+    return this.state.params;
+  }
+
+  /** Your data (the "data" and milling scenes). @returns {import('./scene.js').ImportedData | null} */
+  get data() {
+    return this.state.data;
+  }
+
+  /** The figure of the paper shown, if any. @returns {import('./paper.js').PaperPreset | null} */
+  get paper() {
+    return this.state.paper;
+  }
+
+  /** The reader's edit of the scene's input (null: the built-in input). @returns {import('./scene.js').Input | null} */
+  get input() {
+    return this.state.input;
+  }
+
+  /** The i18n key of a note about the edit (too large for the link), or ''. */
+  get inputNote() {
+    return this.state.inputNote;
+  }
+
+  /** The exercise being done, if any. @returns {import('./task/format.js').Task | null} */
+  get task() {
+    return this.state.exercise;
+  }
+
+  /** @internal The parameter the reader changed last (an error names its field). */
+  get lastChanged() {
+    return this.state.changed;
+  }
+
+  /** @internal Whether the controls (and the readout) are shown. */
+  get showControls() {
+    return this.state.controls;
+  }
+
+  /** @internal Whether the explanation is shown. */
+  get showText() {
+    return this.state.text;
+  }
+
   /** @internal Tells the stage's owner what changed (the page writes the link, the element fires events). */
   report(
     /** @type {'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input'} */ reason,
@@ -145,8 +199,7 @@ export class Stage {
   /** Shows or hides the controls and the explanation. */
   setPanel(/** @type {boolean} */ controls, /** @type {boolean} */ text) {
     const { root, text: article, heading, panel } = this.els;
-    this.showControls = controls;
-    this.showText = text;
+    this.dispatch({ type: 'panel', controls, text });
     root.classList.toggle('rl-no-controls', !controls);
     article.hidden = !text || !!this.task?.hide.includes('text');
     heading.hidden = !controls && !text;
@@ -164,6 +217,7 @@ export class Stage {
 
   /** Whether the reader may drag the scene's handles. */
   setEditable(/** @type {boolean} */ on) {
+    this.dispatch({ type: 'editable', on });
     this.edit.enabled = on;
     if (!on) this.editor.setEditing(false);
     this.edit.show();
@@ -180,7 +234,7 @@ export class Stage {
    */
   setInput(input, ended, said = '') {
     if (!this.scene) return;
-    this.input = input ? copyInput(input) : null;
+    this.dispatch({ type: 'input', input: input ? copyInput(input) : null, moving: !ended });
     this.compute();
     this.controls?.update(this.params);
     this.edit.show();
@@ -190,7 +244,7 @@ export class Stage {
 
   /** Sets the note about the edit (an i18n key, or ''): the page's "kept in this tab". */
   setInputNote(/** @type {string} */ note) {
-    this.inputNote = note;
+    this.dispatch({ type: 'inputNote', note });
     this.edit.show();
   }
 
@@ -226,6 +280,7 @@ export class Stage {
   /** The language (a code of i18n/index.js, or null for the browser's). */
   setLanguage(/** @type {string | null} */ lang) {
     this.i18n = translator(pickLanguage(lang));
+    this.dispatch({ type: 'lang', lang: this.i18n.lang });
     this.localize();
     if (!this.scene) return;
     this.enter(this.scene, this.params, {
@@ -282,9 +337,7 @@ export class Stage {
    * changes by no route — slider, − / +, its field, play, single step, setParam.
    */
   heldReason(/** @type {string} */ key) {
-    if (this.task && !this.task.change.includes(key)) return 'task.reason.locked';
-    if (this.input && !this.task && this.scene?.fixed?.includes(key)) return 'edit.reason.fixed';
-    return null;
+    return heldReason(this.state, key);
   }
 
   /** Sets one parameter and recomputes (not one that is held: heldReason). */
@@ -298,8 +351,7 @@ export class Stage {
       return;
     }
     const p = this.scene.params.find((q) => q.key === key);
-    this.lastChanged = key;
-    this.params = { ...this.params, [key]: value, ...(p?.sets?.(value, this.params) ?? {}) };
+    this.dispatch({ type: 'param', key, value });
     this.controls?.update(this.params);
     this.paperCard.show();
     this.compute({ fit: p?.type === 'select' && p.refit !== false });

@@ -119,6 +119,8 @@ export async function openExercise(stage, value, progress = {}) {
  * @returns {Promise<boolean>}
  */
 export async function openScene(stage, scene, params, options) {
+  // (the figure shown is no longer the one asked for: ready again once this one is computed)
+  delete stage.els.root.dataset.ready;
   if (!options.task) leaveTask(stage);
   try {
     await start();
@@ -127,12 +129,20 @@ export async function openScene(stage, scene, params, options) {
     stage.fail(e);
     throw e;
   }
-  if (options.data !== undefined) stage.data = options.data;
-  stage.paper = options.paper && options.paper.scene === scene.id ? options.paper : null;
   const notes = [...(options.notes ?? [])];
-  stage.inputNote = options.inputNote ?? '';
   const input = options.input ?? null;
-  const enterOptions = { camera: options.camera ?? null, input };
+  /** @type {EnterOptions} */
+  const enterOptions = {
+    camera: options.camera ?? null,
+    input,
+    // what the opening sets besides the scene and its parameters (store.js's 'open')
+    opening: {
+      ...(options.data !== undefined ? { data: options.data } : {}),
+      paper: options.paper && options.paper.scene === scene.id ? options.paper : null,
+      inputNote: options.inputNote ?? '',
+      ...(options.task ? {} : { exercise: null }),
+    },
+  };
   const all = { ...defaults(scene), ...params };
   const fits = stage.inSteps
     ? await enterInSteps(stage, scene, all, enterOptions)
@@ -167,8 +177,7 @@ export async function openTask(stage, task, scene, state) {
       stage.enter(stage.scene, stage.params, { camera: stage.viewer.camera.toArray(), fit: false, input: stage.input });
     return;
   }
-  stage.task = task;
-  stage.paper = null;
+  stage.dispatch({ type: 'exercise', exercise: task });
   stage.exercise.take(task);
   const kept = Object.fromEntries(Object.entries(state.params ?? {}).filter(([k]) => task.change.includes(k)));
   const input = task.change.includes('handles') && state.input ? state.input : stage.exercise.input;
@@ -176,7 +185,7 @@ export async function openTask(stage, task, scene, state) {
     stage,
     scene,
     { ...withChoices(scene, task.params), ...kept },
-    { camera: state.camera ?? null, input, notes: state.notes ?? [], task: true },
+    { camera: state.camera ?? null, input, notes: state.notes ?? [], task: true, paper: null },
   );
   // (another opening, begun while this one was in its steps, has the stage now)
   if (!shown || stage.task !== task) return;
@@ -189,7 +198,7 @@ export async function openTask(stage, task, scene, state) {
 /** Leaves the exercise shown in `stage` (if any); the scene stays. @param {import('../stage.js').Stage} stage */
 function leaveTask(stage) {
   if (!stage.task) return;
-  stage.task = null;
+  stage.dispatch({ type: 'exercise', exercise: null });
   stage.exercise.take(null);
   stage.exercise.panel.show(null);
 }
@@ -201,6 +210,8 @@ function leaveTask(stage) {
  * @property {boolean} [fit]
  * @property {import('../scene.js').Input | null} [input]   an edit to show (kept only where it fits the scene's handles)
  * @property {boolean} [history]   keep the edit's undo steps (a change of language)
+ * @property {Partial<Omit<Extract<import('../store.js').Change, {type: 'open'}>, 'type' | 'scene' | 'params' | 'input'>>} [opening]
+ *   what the opening sets besides the scene, its parameters and the input (store.js's 'open')
  */
 
 /** The latest opening of each stage: one still in its steps ends when another begins. @type {WeakMap<object, object>} */
@@ -262,14 +273,18 @@ export async function enterInSteps(stage, scene, params, options) {
  * @param {object} token   the opening's (in `openings` while it is the latest)
  * @returns {Generator<void, boolean | null, void>}   null where an opening begun since ended it
  */
-function* enterSteps(stage, scene, params, { camera = null, fit = true, input = null, history = false }, token) {
+function* enterSteps(
+  stage,
+  scene,
+  params,
+  { camera = null, fit = true, input = null, history = false, opening = {} },
+  token,
+) {
   const superseded = () => openings.get(stage) !== token;
   const sceneChanged = stage.scene !== scene;
   if (sceneChanged) stage.player.stop();
-  stage.input = null;
   if (!history) stage.editor.cancel();
-  stage.scene = scene;
-  stage.params = { ...params };
+  stage.dispatch({ type: 'open', scene, params, input: null, ...opening });
   stage.preview(scene);
   // (an exercise may hide the explanation where it would say the answer)
   stage.els.text.hidden = !stage.showText || !!stage.task?.hide.includes('text');
@@ -295,7 +310,7 @@ function* enterSteps(stage, scene, params, { camera = null, fit = true, input = 
   else stage.edit.enter(editable, sceneChanged);
   const fits = !input || (!!editable && fitsSets(input, editable.sets));
   if (input && fits) {
-    stage.input = copyInput(input);
+    stage.dispatch({ type: 'input', input: copyInput(input) });
     stage.compute();
     controls.update(stage.params);
   }

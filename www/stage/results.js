@@ -132,6 +132,8 @@ export class Results {
       els.problems.hidden = false;
     }
     stage.options.onError?.(e, message);
+    // (settled: what is shown is the last picture and the error, until the reader changes something)
+    els.root.dataset.ready = '1';
     return message;
   }
 

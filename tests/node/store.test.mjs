@@ -1,0 +1,90 @@
+// The view's state and its one writer (www/store.js): each change gives the state it says and
+// nothing else, the state is frozen (a write to it throws), a parameter an exercise holds or an
+// edit replaces changes by no route, a choice sets what its rule sets, and a change that changes
+// nothing tells nobody.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import './load.mjs';
+import { Store, initialState, reduce, heldReason } from '../../www/store.js';
+import { SCENES } from '../../www/scenes/index.js';
+import { defaults } from '../../www/scene.js';
+import { builtInTask } from '../../www/task/builtin.js';
+
+const scene = (/** @type {string} */ id) =>
+  /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === id));
+
+test('each change gives the state it says; a change that changes nothing tells nobody; the state is frozen', () => {
+  /** @type {Array<[any, any, any]>} */
+  const told = [];
+  const store = new Store(initialState({ lang: 'de' }), (next, previous, change) =>
+    told.push([next, previous, change]),
+  );
+  assert.equal(store.state.scene, null);
+  const striction = scene('striction');
+  assert.ok(store.dispatch({ type: 'open', scene: striction, params: defaults(striction) }));
+  assert.equal(store.state.scene, striction);
+  assert.equal(store.state.lang, 'de', 'what the opening does not name stays');
+  assert.equal(told.length, 1);
+  // the state is frozen: only dispatch writes it
+  assert.throws(() => {
+    /** @type {any} */ (store.state).scene = null;
+  }, TypeError);
+  // a parameter: set, and the one changed last named
+  store.dispatch({ type: 'param', key: 'n', value: 40 });
+  assert.equal(store.state.params.n, 40);
+  assert.equal(store.state.changed, 'n');
+  // the same value again changes nothing and tells nobody
+  assert.equal(store.dispatch({ type: 'param', key: 'n', value: 40 }), false);
+  assert.equal(told.length, 2);
+  // an input: kept, and whether it is still moving
+  const input = { rulings: new Float64Array(6) };
+  store.dispatch({ type: 'input', input, moving: true });
+  assert.deepEqual([store.state.input, store.state.moving], [input, true]);
+  store.dispatch({ type: 'input', input, moving: false });
+  assert.equal(store.state.moving, false);
+  // the language, the panel, editing
+  store.dispatch({ type: 'lang', lang: 'en' });
+  store.dispatch({ type: 'panel', controls: false, text: true });
+  store.dispatch({ type: 'editable', on: true });
+  assert.deepEqual(
+    [store.state.lang, store.state.controls, store.state.text, store.state.editable],
+    ['en', false, true, true],
+  );
+  assert.equal(store.dispatch({ type: 'panel', controls: false, text: true }), false);
+  // every state told is the one after, the one before is what it was
+  for (const [next, previous] of told) assert.notEqual(next, previous);
+});
+
+test('a parameter an exercise holds, or an edit replaces, changes by no route; a choice sets what its rule sets', () => {
+  const exercise = /** @type {import('../../www/task/format.js').Task} */ (builtInTask('coupled-strip'));
+  const strip = scene(exercise.scene);
+  let state = reduce(initialState(), { type: 'open', scene: strip, params: defaults(strip), exercise });
+  const held = strip.params.find((p) => !exercise.change.includes(p.key));
+  assert.ok(held);
+  assert.equal(heldReason(state, held.key), 'task.reason.locked');
+  assert.equal(reduce(state, { type: 'param', key: held.key, value: 'x' }), state, 'held: unchanged');
+  assert.notEqual(reduce(state, { type: 'param', key: 'n', value: 7 }), state, 'what it lets change changes');
+  // an edit holds what it replaces (the scene's `fixed`), outside an exercise
+  const milling = scene('milling');
+  state = reduce(initialState(), { type: 'open', scene: milling, params: defaults(milling) });
+  const fixed = /** @type {string[]} */ (milling.fixed)[0];
+  assert.equal(heldReason(state, fixed), null);
+  state = reduce(state, { type: 'input', input: { poses: new Float64Array(12) } });
+  assert.equal(heldReason(state, fixed), 'edit.reason.fixed');
+  assert.equal(reduce(state, { type: 'param', key: fixed, value: 9 }), state);
+  // a choice with a rule (a preset) sets the values it names with it
+  const formula = scene('formula');
+  const preset = formula.params.find((p) => p.sets);
+  assert.ok(preset, 'the formula scene has a choice with a rule');
+  state = reduce(initialState(), { type: 'open', scene: formula, params: defaults(formula) });
+  const options = /** @type {any} */ (preset).options;
+  const value = (typeof options === 'function' ? options() : options)
+    .map((/** @type {any} */ o) => (Array.isArray(o) ? o[0] : o.value))
+    .find((/** @type {any} */ v) => v !== state.params[preset.key]);
+  const next = reduce(state, { type: 'param', key: preset.key, value });
+  assert.deepEqual(next.params, {
+    ...state.params,
+    [preset.key]: value,
+    ...(preset.sets?.(value, state.params) ?? {}),
+  });
+});
