@@ -1,14 +1,18 @@
 // ruledlab/view: the viewer as a package entry. Importing it defines <ruled-view>; it also
 // exports the pieces a page of one's own needs: the Stage (a view with controls), the Viewer,
 // the scene list and contract, the wasm start-up (configure({ wasm }) to pass a URL or bytes),
-// the URL-hash state, the styles and the languages.
+// the link's codec (a view in the URL hash and back), the styles and the languages.
 export { RuledView } from './ruled-view.js';
 export { Stage } from './stage.js';
 export { Viewer } from './viewer.js';
 export { SCENES } from './scenes/index.js';
 export { PRESETS, findPreset } from './paper.js';
 export { configure, start } from './core.js';
-export { readState, writeState } from './state.js';
+export { readLink, writeLink } from './link.js';
+/** @deprecated the earlier name of readLink */
+export { readLink as readState } from './link.js';
+/** @deprecated the earlier name of writeLink */
+export { writeLink as writeState } from './link.js';
 export { defineScene, scoped, bounds, readParams, defaults, RESERVED_KEYS } from './scene.js';
 export { STYLES, PALETTE } from './theme.js';
 export { translator, pickLanguage, LANGUAGE_CODES } from './i18n/index.js';
@@ -38,7 +42,10 @@ export { builtInTasks, builtInTask } from './task/builtin.js';
  * @typedef {import('./edit/rules.js').EditRules} EditRules
  * @typedef {import('./edit/rules.js').HeldHandle} HeldHandle
  * @typedef {import('./paper.js').PaperPreset} PaperPreset
- * @typedef {import('./state.js').ViewState} ViewState
+ * @typedef {import('./link.js').LinkState} LinkState
+ * @typedef {import('./link.js').LinkState} ViewState   (deprecated: the earlier name of LinkState)
+ * @typedef {import('./store.js').StageState} StageState
+ * @typedef {import('./store.js').StageChange} StageChange
  * @typedef {import('./theme.js').Style} Style
  * @typedef {import('./theme.js').LineStyle} LineStyle
  * @typedef {import('./theme.js').PointStyle} PointStyle

@@ -34,7 +34,7 @@ import { DEFAULT_SOLUTION_RULE, readSolutionRule } from './task/solution-rule.js
 import { MAX_SOLUTION_AFTER } from './limits.js';
 import { SCENES } from './scenes/index.js';
 import { readParams, readSome, defaults } from './scene.js';
-import { readCamera, writeCamera } from './state.js';
+import { readCamera, writeCamera } from './link.js';
 import { decodeInput, encodeInput, fitsSets, linkableInput } from './edit/input.js';
 import { toScreen } from './edit/geometry.js';
 import { plainRich } from './ui/richtext.js';

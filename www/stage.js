@@ -3,14 +3,16 @@
 // page (page/app.js) and <ruled-view> are both a Stage plus their own chrome; a Stage is told
 // its state and reports every change, it never touches the URL itself.
 //
-// Data goes one way. The state — scene, parameters, input (the reader's edit), exercise, the
-// paper's figure, imported data, language, what the panel shows — is the store's (store.js): a
-// frozen object that only `dispatch(change)` replaces. The methods of this class (setParam,
-// setInput, setLanguage, reset, …) and opening a scene or an exercise (stage/open.js) dispatch
-// changes; each asks the core for what the state shows (session.js: the scene's create()), and
-// the parts of the stage (stage/*.js: controls, player, paper card, edit host, exercise host,
-// results, announcer, shortcuts, layout) show it. The state's fields read here (`scene`,
-// `params`, …) are views of the store's state: assigning one throws.
+// Data goes one way: state → core → what is drawn and said. The state — scene, parameters, input
+// (the reader's edit), exercise, the paper's figure, imported data, language, what the panel
+// shows — is the store's (store.js): a frozen object that only `dispatch(change)` replaces. The
+// methods of this class (setParam, setInput, setLanguage, reset, …) and opening a scene or an
+// exercise (stage/open.js) dispatch changes. After each change `render` asks the core for what the
+// state shows where it changed (session.js: the scene's create()) and hands the state and what
+// the core built to the parts of the stage (stage/*.js: controls, player, paper card, edit host,
+// exercise host, results, shortcuts, layout) — each draws its own elements from them, asks for a
+// change through the ports this class gives it, and knows no other part. The state's fields read
+// here (`scene`, `params`, …) are views of the store's state: assigning one throws.
 import { watchMath } from './ui/scrolling-math.js';
 import { Viewer } from './viewer.js';
 import { SceneSession } from './session.js';
@@ -33,6 +35,7 @@ import { ExerciseHost } from './stage/exercise-host.js';
 import { Results } from './stage/results.js';
 import { Shortcuts } from './stage/shortcuts.js';
 import { Store, initialState, heldReason } from './store.js';
+import { cancelWork } from './compute.js';
 
 /**
  * @typedef {import('./stage/options.js').StageOptions} StageOptions
@@ -58,7 +61,7 @@ export class Stage {
     this.els = stageElements(host, { page: options.page });
     const els = this.els;
 
-    /** @internal the state, and its one writer (store.js) */
+    /** @internal the state, and its one writer (store.js); every change is drawn by `render` */
     this.store = new Store(
       initialState({
         lang: this.i18n.lang,
@@ -66,7 +69,7 @@ export class Stage {
         text: options.text ?? true,
         editable: !!options.editable,
       }),
-      () => {},
+      (next, previous, change) => this.render(next, previous, change),
     );
 
     /** the place of the page's "Make an exercise" panel (task/author.js) */
@@ -76,7 +79,8 @@ export class Stage {
     /** @internal */
     this.session = new SceneSession(this.viewer, {
       onBuilt: (built, final) => {
-        this.results.show(built, final);
+        this.results.render(this.state, built, final);
+        this.edit.render(this.state, built);
         options.onBuilt?.(built);
       },
       onError: (e) => this.fail(e),
@@ -87,32 +91,180 @@ export class Stage {
     });
     /** @internal @type {ReturnType<typeof import('./ui/controls.js').buildControls> | null} */
     this.controls = null;
-    // the parts, each showing a piece of the state
+    // the parts, each drawing a piece of the state; what each may ask of the stage, its ports
+    const state = () => this.state;
+    const i18n = () => this.i18n;
+    const say = (/** @type {string} */ text) => this.announcer.say(text);
     /** @internal */
     this.announcer = new Announcer(els.status, () => {
       const built = this.session.built;
-      return built ? readoutSentence(this.results.readouts(built), this.i18n) : null;
+      return built ? readoutSentence(this.results.readouts(this.state, built), this.i18n) : null;
     });
     /** @internal */
-    this.results = new Results(this);
+    this.results = new Results({
+      els,
+      i18n,
+      say,
+      hush: () => this.announcer.cancel(),
+      refit: () => {
+        if (els.root.classList.contains('rl-narrow') && this.viewer.camera.atHome()) this.viewer.fit();
+      },
+      mark: (key, message) => this.controls?.invalid(key, message),
+      onError: options.onError,
+    });
     /** @internal */
-    this.player = new PlayerRow(this);
+    this.player = new PlayerRow(els.player, {
+      state,
+      i18n,
+      set: (key, value, ended) => this.setParam(key, value, ended),
+      announce: () => this.announce(),
+      playing: (key) => this.controls?.playing(key),
+    });
     /** @internal */
-    this.paperCard = new PaperCard(this);
+    this.paperCard = new PaperCard(els.paperCard, {
+      i18n,
+      narrow: () => els.root.classList.contains('rl-narrow'),
+      back: () => this.backToPaper(),
+    });
     /** @internal */
-    this.exercise = new ExerciseHost(this);
+    this.exercise = new ExerciseHost(els.taskBox, {
+      state,
+      i18n,
+      view: () => {
+        const built = this.session.built;
+        if (!built || !this.scene || els.root.classList.contains('rl-stale')) return null;
+        return { scene: this.scene, params: this.params, context: this.context(), built };
+      },
+      enter: (params, input, keepCamera) => {
+        if (!this.scene) return;
+        this.enter(
+          this.scene,
+          params,
+          keepCamera ? { camera: this.viewer.camera.toArray(), fit: false, input } : { fit: true, input },
+        );
+        this.report(keepCamera ? 'param' : 'reset', true);
+      },
+      leave: options.onLeaveTask
+        ? () => {
+            options.onLeaveTask?.();
+            // (the panel is gone, and the button with it)
+            this.keepKeyboard();
+          }
+        : null,
+      mayLeave: () => options.mayLeaveTask?.() ?? true,
+      solutionRule: () => options.solutionRule?.() ?? { after: 1 },
+      report: (type, report) => options.onTask?.(type, report),
+      say,
+    });
     /** @internal */
-    this.edit = new EditHost(this);
+    this.edit = new EditHost({
+      els,
+      viewer: this.viewer,
+      state,
+      built: () => this.session.built,
+      i18n,
+      apply: (input, ended, said) => this.setInput(input, ended, said),
+      say,
+      asData: options.onEditAsData ?? null,
+    });
     /** @internal */
-    this.shortcuts = new Shortcuts(this);
+    this.shortcuts = new Shortcuts(els, {
+      host,
+      page: !!options.page,
+      i18n,
+      edit: {
+        active: () => this.editor.active,
+        editing: () => this.editor.editing,
+        toggle: () => this.editor.setEditing(!this.editor.editing),
+        undo: () => this.editor.undo(),
+        redo: () => this.editor.redo(),
+      },
+      reset: () => this.reset(),
+      play: () => {
+        const key = this.player.playableKey();
+        if (key) this.player.toggle(key);
+      },
+      step: () => this.player.step(),
+      describe: () => say(this.results.spoken()),
+    });
     // (turning the view changes no number: the readout is not said again)
     this.viewer.onCameraChange = (ended) => this.report('camera', ended);
-    wireToolbar(this);
+    wireToolbar(els, {
+      fit: () => {
+        this.viewer.fit();
+        this.report('camera', true);
+      },
+      reset: () => this.reset(),
+      fullscreen: () => this.toggleFullscreen(),
+      help: () => this.shortcuts.open(),
+      cancel: () => {
+        this.session.dispose();
+        // a long job in the worker (a tool path's post) stops there too
+        cancelWork();
+      },
+    });
+    /** @internal how the stage is arranged for its box (stage/layout.js) */
+    this.layout = {
+      host,
+      page: !!options.page,
+      controls: () => this.state.controls,
+      fitControls: () => this.controls?.fit(),
+      redraw: () => this.viewer.requestRender(),
+    };
     /** @internal */
-    this.resize = new ResizeObserver(() => arrange(this));
+    this.resize = new ResizeObserver(() => arrange(els, this.layout));
     this.resize.observe(els.root);
-    this.setPanel(this.showControls, this.showText);
+    this.showPanel(this.state);
     this.localize();
+  }
+
+  /**
+   * @internal Draws a change of the state: the core asked for what the state shows where what
+   * it computes from changed (an opening computes in its own steps: stage/open.js), then each
+   * part from the state (and what the core built).
+   * @param {import('./store.js').StageState} next
+   * @param {import('./store.js').StageState} previous
+   * @param {import('./store.js').StageChange} change
+   */
+  render(next, previous, change) {
+    if (next.lang !== previous.lang) this.i18n = translator(next.lang);
+    if (change.type === 'open') return;
+    if (
+      next.scene &&
+      (next.params !== previous.params || next.input !== previous.input || next.data !== previous.data)
+    ) {
+      // (a choice that changes the figure's size frames it anew)
+      const p = change.type === 'param' ? next.scene.params.find((q) => q.key === change.key) : undefined;
+      this.compute({ fit: p?.type === 'select' && p.refit !== false });
+    }
+    this.show(next, previous);
+  }
+
+  /**
+   * @internal Each part drawn from the state where what it draws from changed.
+   * @param {import('./store.js').StageState} next
+   * @param {import('./store.js').StageState | null} previous   null: everything
+   */
+  show(next, previous) {
+    const changed = (/** @type {Array<keyof import('./store.js').StageState>} */ ...keys) =>
+      !previous || keys.some((k) => next[k] !== previous[k]);
+    if (changed('params', 'input', 'exercise')) this.controls?.update(next.params);
+    if (changed('params', 'paper', 'exercise', 'scene', 'lang')) this.paperCard.render(next);
+    if (changed('controls', 'text', 'exercise')) this.showPanel(next);
+    if (changed('exercise', 'scene', 'input')) this.player.render(next);
+    this.edit.render(next, null);
+  }
+
+  /** @internal The panel: the controls and the explanation shown or not (an exercise may hide the explanation). */
+  showPanel(/** @type {import('./store.js').StageState} */ state) {
+    const { root, text: article, heading, panel } = this.els;
+    const { controls, text } = state;
+    root.classList.toggle('rl-no-controls', !controls);
+    article.hidden = !text || !!state.exercise?.hide.includes('text');
+    heading.hidden = !controls && !text;
+    panel.hidden = !controls && !text;
+    root.classList.toggle('rl-no-panel', !controls && !text);
+    arrange(this.els, this.layout);
   }
 
   /** @internal The editor of the scene's handles. */
@@ -127,7 +279,7 @@ export class Stage {
 
   /**
    * @internal Changes the state (store.js's `dispatch`, its one writer).
-   * @param {import('./store.js').Change} change
+   * @param {import('./store.js').StageChange} change
    */
   dispatch(change) {
     return this.store.dispatch(change);
@@ -196,21 +348,19 @@ export class Stage {
     this.announcer.announce(prefix);
   }
 
+  /** Shows notes about values that were not used (a link's, an element's, an exercise that could not open), in the view. */
+  showNotes(/** @type {Notes} */ notes) {
+    this.results.notes(notes);
+  }
+
   /** Shows or hides the controls and the explanation. */
   setPanel(/** @type {boolean} */ controls, /** @type {boolean} */ text) {
-    const { root, text: article, heading, panel } = this.els;
     this.dispatch({ type: 'panel', controls, text });
-    root.classList.toggle('rl-no-controls', !controls);
-    article.hidden = !text || !!this.task?.hide.includes('text');
-    heading.hidden = !controls && !text;
-    panel.hidden = !controls && !text;
-    root.classList.toggle('rl-no-panel', !controls && !text);
-    arrange(this);
   }
 
   /** @internal The texts that depend on the language but not on the scene. */
   localize() {
-    labelToolbar(this);
+    labelToolbar(this.els, this.i18n);
     this.shortcuts.localize();
     this.edit.localize();
   }
@@ -218,10 +368,6 @@ export class Stage {
   /** Whether the reader may drag the scene's handles. */
   setEditable(/** @type {boolean} */ on) {
     this.dispatch({ type: 'editable', on });
-    this.edit.enabled = on;
-    if (!on) this.editor.setEditing(false);
-    this.edit.show();
-    this.viewer.requestRender();
   }
 
   /**
@@ -234,10 +380,9 @@ export class Stage {
    */
   setInput(input, ended, said = '') {
     if (!this.scene) return;
-    this.dispatch({ type: 'input', input: input ? copyInput(input) : null, moving: !ended });
-    this.compute();
-    this.controls?.update(this.params);
-    this.edit.show();
+    const changed = this.dispatch({ type: 'input', input: input ? copyInput(input) : null, moving: !ended });
+    // (the same input that ends a move: the figure computed on it is shown whole now)
+    if (!changed) this.compute();
     this.report('input', ended);
     if (ended) this.announce(typeof said === 'function' ? said() : said);
   }
@@ -245,7 +390,6 @@ export class Stage {
   /** Sets the note about the edit (an i18n key, or ''): the page's "kept in this tab". */
   setInputNote(/** @type {string} */ note) {
     this.dispatch({ type: 'inputNote', note });
-    this.edit.show();
   }
 
   /**
@@ -350,11 +494,7 @@ export class Stage {
       }
       return;
     }
-    const p = this.scene.params.find((q) => q.key === key);
     this.dispatch({ type: 'param', key, value });
-    this.controls?.update(this.params);
-    this.paperCard.show();
-    this.compute({ fit: p?.type === 'select' && p.refit !== false });
     this.report('param', ended);
     if (ended) this.announce();
   }
@@ -406,7 +546,7 @@ export class Stage {
    * language; the last picture stays. Returns the sentence shown.
    */
   fail(/** @type {unknown} */ e) {
-    return this.results.fail(e);
+    return this.results.fail(this.state, e);
   }
 
   /** The scene's defaults and its fitted camera (in an exercise: its start; with an edit: the built-in input, undoably). */
@@ -420,7 +560,7 @@ export class Stage {
     this.player.stop();
     // an edit is taken back first, as one step of undo (↶ brings it back); pressed again, Reset
     // resets the controls
-    if (this.input && this.edit.enabled) {
+    if (this.input && this.editor.enabled) {
       this.editor.restore();
       this.viewer.fit();
       return;

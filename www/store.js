@@ -8,14 +8,10 @@
 // tests/node/architecture.test.mjs holds the rest of www/ to writing nothing of it.
 
 /**
- * @typedef {import('./scene.js').Scene} Scene
- * @typedef {import('./scene.js').Params} Params
- * @typedef {import('./scene.js').Input} Input
- *
- * @typedef {object} ViewState
- * @property {Scene | null} scene      the scene shown (null before the first opening)
- * @property {Params} params           its parameters
- * @property {Input | null} input      the reader's edit of its input (null: the built-in input)
+ * @typedef {object} StageState
+ * @property {import('./scene.js').Scene | null} scene      the scene shown (null before the first opening)
+ * @property {import('./scene.js').Params} params           its parameters
+ * @property {import('./scene.js').Input | null} input      the reader's edit of its input (null: the built-in input)
  * @property {string} inputNote        the i18n key of a note about the edit (kept in this tab), or ''
  * @property {import('./task/format.js').Task | null} exercise   the exercise being done, if any
  * @property {import('./paper.js').PaperPreset | null} paper      the paper's figure shown, if any
@@ -28,20 +24,20 @@
  * @property {boolean} moving          the input is being moved (a drag or a held key that has not ended)
  *
  * A change of the state (what `dispatch` takes):
- * @typedef {{type: 'open', scene: Scene, params: Params, input?: Input | null, exercise?: import('./task/format.js').Task | null,
+ * @typedef {{type: 'open', scene: import('./scene.js').Scene, params: import('./scene.js').Params, input?: import('./scene.js').Input | null, exercise?: import('./task/format.js').Task | null,
  *   paper?: import('./paper.js').PaperPreset | null, data?: import('./scene.js').ImportedData | null, inputNote?: string}
  *   | {type: 'param', key: string, value: number | string | boolean}
- *   | {type: 'params', params: Params}
- *   | {type: 'input', input: Input | null, moving?: boolean}
+ *   | {type: 'params', params: import('./scene.js').Params}
+ *   | {type: 'input', input: import('./scene.js').Input | null, moving?: boolean}
  *   | {type: 'inputNote', note: string}
  *   | {type: 'exercise', exercise: import('./task/format.js').Task | null}
  *   | {type: 'lang', lang: string}
  *   | {type: 'panel', controls: boolean, text: boolean}
- *   | {type: 'editable', on: boolean}} Change
+ *   | {type: 'editable', on: boolean}} StageChange
  */
 
-/** The state of a view that shows nothing yet. @returns {ViewState} */
-export function initialState(/** @type {Partial<ViewState>} */ given = {}) {
+/** The state of a view that shows nothing yet. @returns {StageState} */
+export function initialState(/** @type {Partial<StageState>} */ given = {}) {
   return Object.freeze({
     scene: null,
     params: {},
@@ -64,7 +60,7 @@ export function initialState(/** @type {Partial<ViewState>} */ given = {}) {
  * Why parameter `key` is held where it is (an i18n key), or null: an exercise holds what it does
  * not let change, an edit of the input holds what would replace it. A held parameter changes by
  * no route — slider, − / +, its field, play, single step, setParams.
- * @param {ViewState} state
+ * @param {StageState} state
  * @param {string} key
  */
 export function heldReason(state, key) {
@@ -76,9 +72,9 @@ export function heldReason(state, key) {
 /**
  * The state after `change` (the same object where it changes nothing). Pure: it reads only its
  * arguments, and the scene's own rules (a parameter's `sets`).
- * @param {ViewState} state
- * @param {Change} change
- * @returns {ViewState}
+ * @param {StageState} state
+ * @param {StageChange} change
+ * @returns {StageState}
  */
 export function reduce(state, change) {
   switch (change.type) {
@@ -130,11 +126,11 @@ export function reduce(state, change) {
 /** The state of one view, and its one writer. */
 export class Store {
   /**
-   * @param {ViewState} initial
-   * @param {(next: ViewState, previous: ViewState, change: Change) => void} changed   told after each change
+   * @param {StageState} initial
+   * @param {(next: StageState, previous: StageState, change: StageChange) => void} changed   told after each change
    */
   constructor(initial, changed) {
-    /** @type {ViewState} */
+    /** @type {StageState} */
     this.current = Object.freeze({ ...initial });
     this.changed = changed;
   }
@@ -146,7 +142,7 @@ export class Store {
 
   /**
    * Applies `change`; tells the owner the next state and the one before. Returns whether anything changed.
-   * @param {Change} change
+   * @param {StageChange} change
    */
   dispatch(change) {
     const previous = this.current;

@@ -146,3 +146,38 @@ test('ARCHITECTURE.md names only files that exist', () => {
   assert.ok(names.size > 60, `only ${names.size} names found`);
   assert.deepEqual(missing, []);
 });
+
+// The parts of a stage (www/stage/*.js) draw from the state and ask for changes through the ports
+// their stage gives them: none imports the stage or another part (only the stage's element
+// helpers), none holds the stage. Opening (open.js) and the exercise's API (exercise-api.js) act
+// for the stage and take it.
+const STAGE_HELPERS = new Set(['stage/elements.js', 'stage/touch.js', 'stage/options.js']);
+const ACTS_FOR_STAGE = new Set(['stage/open.js', 'stage/exercise-api.js']);
+
+test('a part of the stage imports no stage and no other part, and holds no stage', () => {
+  const g = graph();
+  const parts = [...g.keys()].filter((m) => m.startsWith('stage/') && !STAGE_HELPERS.has(m) && !ACTS_FOR_STAGE.has(m));
+  assert.ok(parts.length >= 8, `the parts: ${parts.join(', ')}`);
+  for (const part of parts) {
+    for (const dep of g.get(part) ?? [])
+      assert.ok(
+        dep !== 'stage.js' && (!dep.startsWith('stage/') || STAGE_HELPERS.has(dep)),
+        `${part} imports ${dep}: a part asks its stage through its ports`,
+      );
+    const code = readFileSync(join(WWW, part), 'utf8')
+      .replace(/\/\*[\s\S]*?\*\//g, '')
+      .replace(/\/\/.*$/gm, '');
+    assert.doesNotMatch(code, /\bstage\b|\bStage\b(?!Elements)/, `${part} names the stage in its code`);
+  }
+});
+
+test('only the store writes the state: no module assigns a field of a state or replaces the store’s', () => {
+  const FIELDS = 'scene|params|input|inputNote|exercise|paper|data|lang|controls|text|editable|changed|moving';
+  const write = new RegExp(`\\bstate(?:\\(\\))?\\.(?:${FIELDS})\\s*(?:=(?!=)|\\+=|-=)|\\.current\\s*=(?!=)`);
+  for (const m of graph().keys()) {
+    if (m === 'store.js') continue;
+    const code = readFileSync(join(WWW, m), 'utf8').replace(/\/\/.*$/gm, '');
+    const line = code.split('\n').find((l) => write.test(l));
+    assert.equal(line, undefined, `${m} writes the state: ${line?.trim()}`);
+  }
+});

@@ -8,7 +8,7 @@ import './load.mjs';
 import { SCENES } from '../../www/scenes/index.js';
 import { PRESETS, findPreset, atPreset } from '../../www/paper.js';
 import { readValue, serialize, defaults } from '../../www/scene.js';
-import { readState, writeState } from '../../www/state.js';
+import { readLink, writeLink } from '../../www/link.js';
 import { translator, LANGUAGE_CODES } from '../../www/i18n/index.js';
 
 test('every figure (1–18) and example (1–6) has a preset, ids unique', () => {
@@ -45,26 +45,26 @@ test('each preset names a scene, its keys and valid values, and texts in every l
 
 test('#paper=… opens the figure; a link written from it restores it; link values override; unknown ids are noted', () => {
   for (const preset of PRESETS) {
-    const state = readState(`#paper=${preset.id}`, SCENES);
+    const state = readLink(`#paper=${preset.id}`, SCENES);
     assert.equal(state.scene.id, preset.scene);
     assert.equal(state.paper, preset.id);
     for (const [k, v] of Object.entries(preset.params)) assert.equal(state.params[k], v, `${preset.id}: ${k}`);
-    const again = readState(writeState(state), SCENES);
+    const again = readLink(writeLink(state), SCENES);
     assert.equal(again.paper, preset.id);
     assert.deepEqual(again.params, state.params);
     assert.deepEqual(again.notes, []);
   }
   const fig3 = /** @type {import('../../www/paper.js').PaperPreset} */ (findPreset('fig3'));
   const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === 'striction'));
-  const changed = readState('#paper=fig3&n=72', SCENES);
+  const changed = readLink('#paper=fig3&n=72', SCENES);
   assert.equal(changed.params.n, 72);
   assert.equal(changed.params.midpoints, true);
   assert.equal(atPreset(fig3, scene, changed.params), false);
   // a link naming another scene shows that scene without the figure
-  const other = readState('#paper=fig3&scene=curves', SCENES);
+  const other = readLink('#paper=fig3&scene=curves', SCENES);
   assert.equal(other.scene.id, 'curves');
   assert.equal(other.paper, null);
-  const unknown = readState('#paper=fig99', SCENES);
+  const unknown = readLink('#paper=fig99', SCENES);
   assert.equal(unknown.paper, null);
   assert.deepEqual(
     unknown.notes.map((n) => n.note),

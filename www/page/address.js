@@ -3,7 +3,7 @@
 // while a slider is dragged at most every 200 ms. Where the document cannot write its address
 // (srcdoc, about:blank, some sandboxes) the state lives here, in memory, only; the one-file
 // page starts from the state stored in it.
-import { writeState } from '../state.js';
+import { writeLink } from '../link.js';
 import { writeHistory } from '../platform.js';
 import { storedHash } from './onefile.js';
 
@@ -11,7 +11,7 @@ import { storedHash } from './onefile.js';
 const WRITE_EVERY = 200;
 
 /**
- * @param {{ oneFile: boolean, state: () => Omit<import('../state.js').ViewState, 'notes'> | null }} options
+ * @param {{ oneFile: boolean, state: () => Omit<import('../link.js').LinkState, 'notes'> | null }} options
  *   state: what is on screen now (null before a scene is shown)
  */
 export function pageAddress({ oneFile, state }) {
@@ -33,7 +33,7 @@ export function pageAddress({ oneFile, state }) {
       const write = () => {
         const shown = state();
         if (!shown) return;
-        const hash = `#${writeState(shown)}`;
+        const hash = `#${writeLink(shown)}`;
         if (hash === (location.hash || kept)) return;
         if (!writeHistory(mode, hash)) kept = hash;
       };

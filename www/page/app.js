@@ -9,7 +9,7 @@ import { afterPaint, nextTask } from '../schedule.js';
 import { Stage } from '../stage.js';
 import { SCENES } from '../scenes/index.js';
 import { findPreset } from '../paper.js';
-import { readState } from '../state.js';
+import { readLink } from '../link.js';
 import { translator, pickLanguage, loadLanguage } from '../i18n/translate.js';
 import { adoptStyles } from '../ui/css.js';
 import { showFailure } from '../ui/failure.js';
@@ -56,8 +56,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   const setup = oneFile ? storedCourse() : null;
   /** An exercise's attempt kept in this browser (none in a package's page). */
   const ownAttempt = (/** @type {import('../task/format.js').Task} */ task) => (setup ? null : keptAttempt(task.id));
-  /** @type {import('../state.js').ViewState} */
-  let state;
+  /** What the address asks for, as read last (the link's codec, link.js); the view's state is the stage's. @type {import('../link.js').LinkState} */
+  let asked;
   let lang = pickLanguage(link.get('lang'));
   await Promise.all([loadLanguage(lang), nextTask()]);
   let i18n = translator(lang);
@@ -71,11 +71,11 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   /** What is on screen, as the address and the Share dialog write it. */
   const shown = () =>
     stage.scene && {
-      ...state,
+      ...asked,
       scene: stage.scene,
       params: stage.params,
       camera: stage.viewer.camera.toArray(),
-      lang: state.lang,
+      lang,
       data: stage.data,
       input: stage.input,
       paper: stage.paper?.id ?? null,
@@ -90,9 +90,9 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     page: true,
     editable: !link.has('embed') || link.has('edit'),
     // Leave the exercise: in a frame only where the snippet allows it
-    mayLeaveTask: () => !state?.embed || !!state.leave,
+    mayLeaveTask: () => !asked?.embed || !!asked.leave,
     // when the solution is offered: the link says (a lecturer's package or snippet), else after a first check
-    solutionRule: () => readSolutionRule(state?.solution) ?? DEFAULT_SOLUTION_RULE,
+    solutionRule: () => readSolutionRule(asked?.solution) ?? DEFAULT_SOLUTION_RULE,
     onChange: ({ reason, ended }) => {
       // an edit too large for the link stays in the tab (and the page says so)
       if (ended && stage.scene && (reason === 'input' || reason === 'reset'))
@@ -183,39 +183,39 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   };
 
   /**
-   * Opens the state of the current address (on load, Back/Forward, or an edited link); on load
+   * Opens what the current address asks for (on load, Back/Forward, or an edited link); on load
    * `inSteps`: in tasks of their own (stage/open.js's enterInSteps).
    */
   const openAddress = async ({ inSteps = false } = {}) => {
-    state = readState(address.current(), SCENES);
-    if (state.lang && pickLanguage(state.lang) !== lang) await setLanguage(pickLanguage(state.lang), false);
-    doc.body.classList.toggle('embed', state.embed);
-    stage.setPanel(!state.embed || state.controls, !state.embed || state.text);
-    stage.setEditable(!state.embed || !!state.edit);
+    asked = readLink(address.current(), SCENES);
+    if (asked.lang && pickLanguage(asked.lang) !== lang) await setLanguage(pickLanguage(asked.lang), false);
+    doc.body.classList.toggle('embed', asked.embed);
+    stage.setPanel(!asked.embed || asked.controls, !asked.embed || asked.text);
+    stage.setEditable(!asked.embed || !!asked.edit);
     const text = stored(STORED);
     // an edit: the link's, or one too large for it that this tab kept
-    const input = state.input ?? keptInput(state.scene.id);
+    const input = asked.input ?? keptInput(asked.scene.id);
     // an exercise's drawn numbers: the link's seed (one that is not a seed is said, and a new one drawn)
-    const { seed, note } = linkSeed(state.seed);
-    if (note) state.notes.push(note);
-    if (state.solution != null && !readSolutionRule(state.solution))
-      state.notes.push({ key: 'solution', note: 'note.badSolution', vars: { max: String(MAX_SOLUTION_AFTER) } });
+    const { seed, note } = linkSeed(asked.seed);
+    const notes = [...asked.notes, ...(note ? [note] : [])];
+    if (asked.solution != null && !readSolutionRule(asked.solution))
+      notes.push({ key: 'solution', note: 'note.badSolution', vars: { max: String(MAX_SOLUTION_AFTER) } });
     await openView(stage, {
-      scene: state.scene,
-      params: state.params,
+      scene: asked.scene,
+      params: asked.params,
       // an exercise: its scene and start, with the reader's progress from the link
-      task: state.task,
+      task: asked.task,
       progress: progressOf,
-      taskInput: state.input,
+      taskInput: asked.input,
       seed,
       attempt: ownAttempt,
-      camera: state.camera,
-      data: state.data ?? (text ? parseStored(text) : null),
-      notes: state.notes,
-      autoplay: state.autoplay,
-      paper: findPreset(state.paper) ?? null,
+      camera: asked.camera,
+      data: asked.data ?? (text ? parseStored(text) : null),
+      notes,
+      autoplay: asked.autoplay,
+      paper: findPreset(asked.paper) ?? null,
       input,
-      inputNote: input && !state.input ? keepInput(state.scene.id, input) : '',
+      inputNote: input && !asked.input ? keepInput(asked.scene.id, input) : '',
     });
     if (inSteps) await nextTask();
     localize();
@@ -243,7 +243,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       address.save('push');
       return true;
     } catch (e) {
-      state.notes.push({ key: 'task', note: 'note.badTask', vars: { reason: taskErrorText(e, i18n) } });
+      stage.showNotes([{ key: 'task', note: 'note.badTask', vars: { reason: taskErrorText(e, i18n) } }]);
       return false;
     } finally {
       localize();
@@ -255,7 +255,6 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     await loadLanguage(code);
     lang = code;
     i18n = translator(lang);
-    state.lang = code;
     stage.setLanguage(code);
     localize();
     if (share.open) openShare();
@@ -340,8 +339,8 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       stage,
       scenes: SCENES,
       wasm: { live: liveObjects, memory: memoryBytes },
-      get state() {
-        return state;
+      get asked() {
+        return asked;
       },
     },
   });

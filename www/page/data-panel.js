@@ -6,7 +6,7 @@
 import { importSegments, detectImport } from '../../pkg/ruledlab.js';
 import { cam, startCam } from '../cam.js';
 import { download } from '../ui/download.js';
-import { linkable } from '../state.js';
+import { linkable } from '../link.js';
 import { describeError } from '../ui/errors.js';
 import { dataFile } from '../export/files.js';
 import { store } from '../platform.js';

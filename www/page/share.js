@@ -17,7 +17,7 @@
 // out as a SCORM package or an H5P file too (page/packages.js). Each snippet has a Copy button; the tests paste
 // each into a page on another origin and require it to draw.
 import { defaults } from '../scene.js';
-import { writeState } from '../state.js';
+import { writeLink } from '../link.js';
 import { encodeInput, linkableInput } from '../edit/input.js';
 import { download } from '../ui/download.js';
 import { oneFileWithState } from './onefile.js';
@@ -73,7 +73,7 @@ const exerciseHash = (/** @type {string} */ value, /** @type {string} */ lang, /
  * @typedef {object} ShareContext
  * @property {import('../stage.js').Stage} stage
  * @property {() => import('../i18n/index.js').Translator} i18n
- * @property {() => Omit<import('../state.js').ViewState, 'notes'>} state   the view as the link writes it
+ * @property {() => Omit<import('../link.js').LinkState, 'notes'>} state   the view as the link writes it
  * @property {boolean} oneFile       this page is the one-file build
  * @property {(() => string) | undefined} embedScript   the one-file build's own script (its embed script)
  * @property {() => void} [author]   opens "Make an exercise" on this view (the page)
@@ -152,7 +152,7 @@ export function shareDialog(dialog, context) {
     const where = place();
     // (every reader of a snippet draws her own numbers: the seed stays out)
     const state = { ...context.state(), seed: null };
-    const hash = writeState(state);
+    const hash = writeLink(state);
     const base = location.href.split('#')[0];
     const task = stage.task;
     const lang = state.lang ?? i18n.lang;
@@ -246,7 +246,7 @@ export function shareDialog(dialog, context) {
       try {
         download(
           `ruledlab-${stage.paper?.id ?? stage.scene?.id ?? 'view'}.html`,
-          await oneFileWithState(oneFile, writeState(state, { wholeInput: true })),
+          await oneFileWithState(oneFile, writeLink(state, { wholeInput: true })),
           'text/html',
         );
       } catch {

@@ -49,7 +49,7 @@ export function exerciseApi(stage) {
     // (a solution shown stays shown: what is checked after it in this attempt still counts for nothing)
     startOver: () => {
       panel.show(task, { shown: panel.shown });
-      stage.startTask();
+      stage.exercise.start();
     },
     attempt: () => /** @type {import('../task/attempt.js').Attempt} */ (attemptOf(stage)),
     restore: (attempt) =>

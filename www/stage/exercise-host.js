@@ -1,82 +1,71 @@
 // An exercise in a stage: the panel (task/panel.js: prompt, answers, Check, hints, solution,
-// Start over, Leave) and what the exercise holds — its start (parameters and edit), which
-// parameters it lets change, whether handles may move. Opening, starting over and showing the
-// solution are changes of the stage's state (Stage.enter); a check is reported through the
-// stage's options (`onTask`: the page posts it to a parent frame, the element fires events).
+// Start over, Leave) and what the exercise asks of the view — its start (parameters and edit)
+// and its solution's state, each a change the stage makes (`ports.enter`). The exercise itself is
+// the state's (store.js); a check is reported through `ports.report` (the page posts it to a
+// parent frame, the element fires events).
 import { TaskPanel } from '../task/panel.js';
 import { decodeInput } from '../edit/input.js';
 import { withChoices } from '../scene.js';
 
+/**
+ * What the exercise asks of its stage.
+ * @typedef {object} ExercisePorts
+ * @property {() => import('../store.js').StageState} state
+ * @property {() => import('../i18n/index.js').Translator} i18n
+ * @property {() => {scene: import('../scene.js').Scene, params: import('../scene.js').Params, context: import('../scene.js').Context, built: import('../scene.js').Built} | null} view
+ *   what is shown now (null while the scene cannot be computed)
+ * @property {(params: import('../scene.js').Params, input: import('../scene.js').Input | null, keepCamera: boolean) => void} enter
+ *   the scene shown anew with these parameters and edit (keepCamera: from where it is seen now)
+ * @property {(() => void) | null} leave   the owner leaves the exercise (an element cannot unless allowed)
+ * @property {() => boolean} mayLeave
+ * @property {() => import('../task/panel.js').SolutionRule} solutionRule
+ * @property {(type: 'check' | 'solved' | 'solution', report: import('../task/panel.js').TaskReport) => void} report
+ * @property {(text: string) => void} say
+ */
+
 export class ExerciseHost {
-  /** @param {import('../stage.js').Stage} stage */
-  constructor(stage) {
-    this.stage = stage;
-    /** @type {import('../scene.js').Input | null} the exercise's start edit */
-    this.input = null;
-    const { options } = stage;
-    this.panel = new TaskPanel(stage.els.taskBox, {
-      i18n: () => stage.i18n,
-      state: () => {
-        const built = stage.session.built;
-        if (!built || !stage.scene || stage.els.root.classList.contains('rl-stale')) return null;
-        return { scene: stage.scene, params: stage.params, context: stage.context(), built };
-      },
+  /**
+   * @param {HTMLElement} box   the exercise's place in the panel
+   * @param {ExercisePorts} ports
+   */
+  constructor(box, ports) {
+    this.box = box;
+    this.ports = ports;
+    this.panel = new TaskPanel(box, {
+      i18n: ports.i18n,
+      state: ports.view,
       startOver: () => this.start(),
       showSolution: () => this.solve(),
-      leave: options.onLeaveTask
-        ? () => {
-            options.onLeaveTask?.();
-            // (the panel is gone, and the button with it)
-            stage.keepKeyboard();
-          }
-        : null,
-      mayLeave: () => options.mayLeaveTask?.() ?? true,
-      solutionRule: () => options.solutionRule?.() ?? { after: 1 },
+      leave: ports.leave,
+      mayLeave: ports.mayLeave,
+      solutionRule: ports.solutionRule,
       report: (type, report) => {
         // (where the panel is shown its verdict, a status, says it: once is enough)
-        if (type === 'solved' && stage.els.taskBox.offsetParent === null)
-          stage.announcer.say(stage.i18n.t('task.solved'));
-        options.onTask?.(type, report);
+        if (type === 'solved' && box.offsetParent === null) ports.say(ports.i18n().t('task.solved'));
+        ports.report(type, report);
       },
     });
   }
 
-  /** What "back" of the editor restores in an exercise (its start edit), or null outside one. */
+  /** The exercise's start edit (its handles as it begins), or null outside one. */
   startInput() {
-    return this.stage.task ? this.input : null;
-  }
-
-  /**
-   * Takes `task` as the stage's exercise (null: none): its start edit, and whether its handles
-   * may move. The stage's state changes in Stage.openTask.
-   * @param {import('../task/format.js').Task | null} task
-   */
-  take(task) {
-    this.input = task?.input ? decodeInput(task.input) : null;
-    this.stage.edit.enabled = task ? task.change.includes('handles') : !!this.stage.options.editable;
+    const task = this.ports.state().exercise;
+    return task?.input ? decodeInput(task.input) : null;
   }
 
   /** Back to the exercise's start (its parameters and edit). */
   start() {
-    const { stage } = this;
-    const task = stage.task;
-    if (!task || !stage.scene) return;
-    stage.enter(stage.scene, withChoices(stage.scene, task.params), { fit: true, input: this.input });
-    stage.report('reset', true);
+    const { scene, exercise } = this.ports.state();
+    if (!exercise || !scene) return;
+    this.ports.enter(withChoices(scene, exercise.params), this.startInput(), false);
   }
 
   /** The exercise's solution on screen (its parameters and edit). */
   solve() {
-    const { stage } = this;
-    const task = stage.task;
-    if (!task?.solution || !stage.scene) return;
-    const solution = task.solution;
-    const input = solution.input ? decodeInput(solution.input) : this.input;
-    stage.enter(stage.scene, withChoices(stage.scene, { ...task.params, ...(solution.params ?? {}) }), {
-      camera: stage.viewer.camera.toArray(),
-      fit: false,
-      input,
-    });
-    stage.report('param', true);
+    const { scene, exercise } = this.ports.state();
+    if (!exercise?.solution || !scene) return;
+    const solution = exercise.solution;
+    const input = solution.input ? decodeInput(solution.input) : this.startInput();
+    this.ports.enter(withChoices(scene, { ...exercise.params, ...(solution.params ?? {}) }), input, true);
   }
 }

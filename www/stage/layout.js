@@ -6,31 +6,42 @@
 import { NARROW, PORTRAIT, TINY, SMALL_VIEW } from '../limits.js';
 
 /**
- * Arranges the stage for the size of its box; redraws when the arrangement changed.
- * @param {import('../stage.js').Stage} stage
+ * What arranging a stage needs besides its elements.
+ * @typedef {object} LayoutPorts
+ * @property {HTMLElement} host      the element the stage fills
+ * @property {boolean} page          the page's stage (its box is the screen)
+ * @property {() => boolean} controls   the panel shows the controls (the state's)
+ * @property {() => void} fitControls   the controls measure themselves for the new width
+ * @property {() => void} redraw     the view is drawn again (it moved)
  */
-export function arrange(stage) {
-  const { root, panel, legend, view, bar } = stage.els;
+
+/**
+ * Arranges the stage for the size of its box; redraws when the arrangement changed.
+ * @param {import('./elements.js').StageElements} els
+ * @param {LayoutPorts} ports
+ */
+export function arrange(els, ports) {
+  const { root, panel, legend, view, bar } = els;
   const before = root.className;
   const box = root.getBoundingClientRect();
-  const host = () => stage.host.getBoundingClientRect();
+  const host = () => ports.host.getBoundingClientRect();
   const width = box.width || host().width;
-  const height = stage.options.page ? window.innerHeight : box.height || host().height;
+  const height = ports.page ? window.innerHeight : box.height || host().height;
   const narrow = width > 0 && (width < NARROW || (height > width && width < PORTRAIT));
   root.classList.toggle('rl-narrow', narrow);
   // in a narrow box with a panel the legend goes into the panel, under the scene's heading: the
   // view keeps its whole height for the figure, and the heading, painted first (the page's shell),
   // stays where it is when the legend comes
-  const legendInPanel = narrow && !panel.hidden && !!stage.showControls;
-  if (legendInPanel && legend.parentElement !== panel) stage.els.heading.after(legend);
+  const legendInPanel = narrow && !panel.hidden && ports.controls();
+  if (legendInPanel && legend.parentElement !== panel) els.heading.after(legend);
   if (!legendInPanel && legend.parentElement !== view) view.insertBefore(legend, bar);
   legend.classList.toggle('rl-legend-panel', legendInPanel);
   root.classList.toggle('rl-tiny', width > 0 && width < TINY);
   // the hint under the view only where it fits beside the toolbar on one line
   root.classList.toggle('rl-view-small', view.getBoundingClientRect().width < SMALL_VIEW);
-  stage.controls?.fit();
+  ports.fitControls();
   // a new arrangement moves the view (a view resized alone is redrawn by the viewer itself)
-  if (root.className !== before) stage.viewer.requestRender();
+  if (root.className !== before) ports.redraw();
 }
 
 /**

@@ -153,7 +153,7 @@ export async function openScene(stage, scene, params, options) {
   // an exercise's constraint that cannot hold is said, and lifted
   for (const { handle, why } of stage.edit.lifted)
     notes.push({ key: 'edit', note: `snap.lifted.${why}`, vars: { handle } });
-  stage.results.notes(notes);
+  stage.showNotes(notes);
   if (options.autoplay && !Player.reducedMotion()) {
     const key = stage.player.playableKey();
     if (key) stage.player.toggle(key);
@@ -178,9 +178,8 @@ export async function openTask(stage, task, scene, state) {
     return;
   }
   stage.dispatch({ type: 'exercise', exercise: task });
-  stage.exercise.take(task);
   const kept = Object.fromEntries(Object.entries(state.params ?? {}).filter(([k]) => task.change.includes(k)));
-  const input = task.change.includes('handles') && state.input ? state.input : stage.exercise.input;
+  const input = task.change.includes('handles') && state.input ? state.input : stage.exercise.startInput();
   const shown = await openScene(
     stage,
     scene,
@@ -199,7 +198,6 @@ export async function openTask(stage, task, scene, state) {
 function leaveTask(stage) {
   if (!stage.task) return;
   stage.dispatch({ type: 'exercise', exercise: null });
-  stage.exercise.take(null);
   stage.exercise.panel.show(null);
 }
 
@@ -210,7 +208,7 @@ function leaveTask(stage) {
  * @property {boolean} [fit]
  * @property {import('../scene.js').Input | null} [input]   an edit to show (kept only where it fits the scene's handles)
  * @property {boolean} [history]   keep the edit's undo steps (a change of language)
- * @property {Partial<Omit<Extract<import('../store.js').Change, {type: 'open'}>, 'type' | 'scene' | 'params' | 'input'>>} [opening]
+ * @property {Partial<Omit<Extract<import('../store.js').StageChange, {type: 'open'}>, 'type' | 'scene' | 'params' | 'input'>>} [opening]
  *   what the opening sets besides the scene, its parameters and the input (store.js's 'open')
  */
 
@@ -299,8 +297,8 @@ function* enterSteps(
     const row = controls.rows.get(key)?.row;
     if (row) row.hidden = true;
   }
-  stage.player.build();
-  stage.paperCard.show();
+  stage.player.render(stage.state);
+  stage.paperCard.render(stage.state);
   yield;
   if (superseded()) return null;
   const editable = stage.compute({ fit: fit && !camera })?.input;
@@ -310,9 +308,8 @@ function* enterSteps(
   else stage.edit.enter(editable, sceneChanged);
   const fits = !input || (!!editable && fitsSets(input, editable.sets));
   if (input && fits) {
+    // (drawn as every change is: the core computes on it, the controls follow)
     stage.dispatch({ type: 'input', input: copyInput(input) });
-    stage.compute();
-    controls.update(stage.params);
   }
   stage.edit.show();
   // (measured once everything the scene shows is in the page: one layout, not one per part)

@@ -1,27 +1,31 @@
 // The card of the paper's figure a stage shows (if any): its caption, what ruledlab shows and
 // whose data it is, where ruledlab goes beyond the paper, and — once a control has moved — the
-// way back to the figure's own settings. It reads the stage's state; the way back is a change the
-// stage makes (Stage.backToPaper).
+// way back to the figure's own settings. It draws from the state (render); the way back is asked
+// of the stage (`back`).
 import { appendRich } from '../ui/richtext.js';
 import { atPreset } from '../paper.js';
 
 export class PaperCard {
-  /** @param {import('../stage.js').Stage} stage */
-  constructor(stage) {
-    this.stage = stage;
+  /**
+   * @param {HTMLElement} card   its place in the panel
+   * @param {{i18n: () => import('../i18n/index.js').Translator, narrow: () => boolean, back: () => void}} ports
+   *   narrow: the stage's box is narrow (the card starts closed there); back: the figure's settings again
+   */
+  constructor(card, ports) {
+    this.card = card;
+    this.ports = ports;
     /** @type {boolean | undefined} whether the reader opened (or closed) the card */
     this.open = undefined;
   }
 
-  /** Shows the card as the state stands (none in an exercise). */
-  show() {
-    const stage = this.stage;
-    const card = stage.els.paperCard;
-    const { scene, params } = stage;
-    const preset = stage.task ? null : stage.paper;
+  /** Draws the card as the state stands (none in an exercise). @param {import('../store.js').StageState} state */
+  render(state) {
+    const card = this.card;
+    const { scene, params } = state;
+    const preset = state.exercise ? null : state.paper;
     card.hidden = !preset || !scene;
     if (!preset || !scene) return card.replaceChildren();
-    const { t } = stage.i18n;
+    const { t } = this.ports.i18n();
     const doc = card.ownerDocument;
     const el = (/** @type {string} */ tag, /** @type {string} */ className, /** @type {string} */ text) =>
       appendRich(Object.assign(doc.createElement(tag), { className }), text);
@@ -48,7 +52,7 @@ export class PaperCard {
       more.hidden = !open;
       toggle.setAttribute('aria-expanded', String(open));
     };
-    shown(this.open ?? !stage.els.root.classList.contains('rl-narrow'));
+    shown(this.open ?? !this.ports.narrow());
     toggle.addEventListener('click', () => {
       this.open = more.hidden;
       shown(this.open);
@@ -68,7 +72,7 @@ export class PaperCard {
         type: 'button',
         textContent: t('paper.back', { figure: t(preset.label) }),
       });
-      back.addEventListener('click', () => stage.backToPaper());
+      back.addEventListener('click', () => this.ports.back());
       changed.append(back);
       card.append(changed);
     }

@@ -1,22 +1,38 @@
 // The player of a stage: the play button of a parameter (in its control row) sweeps it, the
 // player row under the controls offers the speed and a single step, Space and "." do the same
 // from the view. A parameter an exercise holds is not played. The values go to the stage as any
-// other change of a parameter (Stage.setParam), so the link, the readout and the picture follow.
+// other change of a parameter (`set`, a dispatch), so the link, the readout and the picture
+// follow; the row draws from the state (render).
 import { Player } from '../ui/player.js';
+import { heldReason } from '../store.js';
+
+/**
+ * What the player asks of its stage.
+ * @typedef {object} PlayerPorts
+ * @property {() => import('../store.js').StageState} state
+ * @property {() => import('../i18n/index.js').Translator} i18n
+ * @property {(key: string, value: number, ended: boolean) => void} set   a value played (ended: the last)
+ * @property {() => void} announce   the readout said, once an interaction ends
+ * @property {(key: string | null) => void} playing   the controls mark the parameter playing
+ */
 
 export class PlayerRow {
-  /** @param {import('../stage.js').Stage} stage */
-  constructor(stage) {
-    this.stage = stage;
+  /**
+   * @param {HTMLElement} row   its place under the controls
+   * @param {PlayerPorts} ports
+   */
+  constructor(row, ports) {
+    this.row = row;
+    this.ports = ports;
     this.player = new Player((key, value) => {
       const p = this.param(key);
-      if (p) stage.setParam(key, Number(value.toFixed(Player.stepped(p) ? 0 : 4)), false);
+      if (p) ports.set(key, Number(value.toFixed(Player.stepped(p) ? 0 : 4)), false);
     });
   }
 
   /** @param {string} key */
   param(key) {
-    return this.stage.scene?.params.find((p) => p.key === key);
+    return this.ports.state().scene?.params.find((p) => p.key === key);
   }
 
   get playing() {
@@ -25,22 +41,22 @@ export class PlayerRow {
 
   /** The parameter Space plays and "." steps: the one playing, or the first that may move now. */
   playableKey() {
-    const { scene, params } = this.stage;
+    const state = this.ports.state();
+    const { scene, params } = state;
     return (
       this.player.param?.key ??
-      scene?.params.find((p) => p.play && !p.unless?.(params) && !this.stage.heldReason(p.key))?.key
+      scene?.params.find((p) => p.play && !p.unless?.(params) && !heldReason(state, p.key))?.key
     );
   }
 
-  /** The row: speed and single step, shown when the scene has a parameter to play. */
-  build() {
-    const stage = this.stage;
-    const row = stage.els.player;
-    const { t, lang } = stage.i18n;
+  /** The row — speed and single step — shown when the scene has a parameter to play. @param {import('../store.js').StageState} state */
+  render(state) {
+    const row = this.row;
+    const { t, lang } = this.ports.i18n();
     const doc = row.ownerDocument;
     // (not a parameter an exercise holds)
     const playable =
-      stage.scene?.params.filter((p) => p.play && stage.heldReason(p.key) !== 'task.reason.locked') ?? [];
+      state.scene?.params.filter((p) => p.play && heldReason(state, p.key) !== 'task.reason.locked') ?? [];
     row.hidden = playable.length === 0;
     row.replaceChildren();
     if (!playable.length) return;
@@ -62,27 +78,28 @@ export class PlayerRow {
     const p = key ? this.param(key) : undefined;
     if (!key || !p) return;
     this.stop();
-    this.player.step(p, Number(this.stage.params[key]));
-    this.stage.announce();
+    this.player.step(p, Number(this.ports.state().params[key]));
+    this.ports.announce();
   }
 
   /** Plays or pauses parameter `key`. */
   toggle(/** @type {string} */ key) {
     const p = this.param(key);
-    if (!p || this.stage.heldReason(key)) return;
+    if (!p || heldReason(this.ports.state(), key)) return;
     if (this.player.playing && this.player.param?.key === key) {
       this.stop();
-      this.stage.announce();
+      this.ports.announce();
       return;
     }
-    this.player.play(p, Number(this.stage.params[key]));
-    this.stage.controls?.playing(key);
+    this.player.play(p, Number(this.ports.state().params[key]));
+    this.ports.playing(key);
   }
 
   /** Stops playing (the value reached is the change that ends). */
   stop() {
-    if (this.player.playing) this.stage.report('param', true);
+    const key = this.player.playing ? this.player.param?.key : null;
     this.player.stop();
-    this.stage.controls?.playing(null);
+    if (key) this.ports.set(key, Number(this.ports.state().params[key]), true);
+    this.ports.playing(null);
   }
 }

@@ -2,7 +2,7 @@
 // screen) and keys, R resets, Space plays or pauses, "." steps, D says what the figure shows, E
 // starts keyboard editing, Ctrl+Z and Ctrl+Shift+Z / Ctrl+Y undo and redo an edit (the view's
 // own keys are the camera's: camera.js; S and the keys that move a point are the editor's:
-// edit/keys.js). Every key asks the stage for the change a button would make.
+// edit/keys.js). Every key asks the stage for the change a button would make (`ports`).
 import { touchScreen } from './touch.js';
 
 /** The keys of the view and what each does (i18n keys). @type {Array<[string, string]>} */
@@ -49,61 +49,77 @@ const EDIT_GESTURES = [
   ['touch.blob', 'touch.blobWhat'],
 ];
 
+/**
+ * What the keys ask of the stage.
+ * @typedef {object} ShortcutPorts
+ * @property {HTMLElement} host      the element the stage fills
+ * @property {boolean} page          the page's stage: it takes the keys pressed with nothing focused too
+ * @property {() => import('../i18n/index.js').Translator} i18n
+ * @property {{active: () => boolean, editing: () => boolean, toggle: () => void, undo: () => void, redo: () => void}} edit
+ *   the edit of the scene's handles (the edit host's)
+ * @property {() => void} reset
+ * @property {() => void} play       Space: play or pause the parameter that may move
+ * @property {() => void} step       ".": a single step of it
+ * @property {() => void} describe   D: the figure said again
+ */
+
 export class Shortcuts {
-  /** @param {import('../stage.js').Stage} stage */
-  constructor(stage) {
-    this.stage = stage;
-    this.dialog = stage.els.shortcuts;
-    stage.els.root.addEventListener('keydown', (e) => this.key(e));
+  /**
+   * @param {import('./elements.js').StageElements} els
+   * @param {ShortcutPorts} ports
+   */
+  constructor(els, ports) {
+    this.els = els;
+    this.ports = ports;
+    this.dialog = els.shortcuts;
+    els.root.addEventListener('keydown', (e) => this.key(e));
     // the page's stage also takes the keys pressed with nothing focused (undo after a drag elsewhere)
     this.onDocumentKey = (/** @type {KeyboardEvent} */ e) => {
-      if (e.target === stage.host.ownerDocument.body) this.key(e);
+      if (e.target === ports.host.ownerDocument.body) this.key(e);
     };
-    if (stage.options.page) stage.host.ownerDocument.addEventListener('keydown', this.onDocumentKey);
+    if (ports.page) ports.host.ownerDocument.addEventListener('keydown', this.onDocumentKey);
   }
 
   /** Stops listening to the document's keys. */
   dispose() {
-    this.stage.host.ownerDocument.removeEventListener('keydown', this.onDocumentKey);
+    this.ports.host.ownerDocument.removeEventListener('keydown', this.onDocumentKey);
   }
 
   /** Handles a key pressed in the stage (or, on the page, with nothing focused). */
   key(/** @type {KeyboardEvent} */ e) {
-    const stage = this.stage;
-    const editor = stage.edit.editor;
+    const { edit } = this.ports;
     const target = /** @type {HTMLElement} */ (e.target);
     if (target.matches?.('input[type=text], textarea, select')) return;
     // undo and redo of the edit, wherever the keyboard is in the stage
-    if ((e.ctrlKey || e.metaKey) && !e.altKey && editor.active) {
+    if ((e.ctrlKey || e.metaKey) && !e.altKey && edit.active()) {
       const k = e.key.toLowerCase();
       if (k === 'z' || k === 'y') {
         e.preventDefault();
-        if (k === 'y' || e.shiftKey) editor.redo();
-        else editor.undo();
+        if (k === 'y' || e.shiftKey) edit.redo();
+        else edit.undo();
       }
       return;
     }
     if (e.ctrlKey || e.metaKey || e.altKey) return;
-    const onView = target === stage.els.canvas;
-    if (onView && (e.key === 'e' || e.key === 'E') && editor.active) {
+    const onView = target === this.els.canvas;
+    if (onView && (e.key === 'e' || e.key === 'E') && edit.active()) {
       e.preventDefault();
-      editor.setEditing(!editor.editing);
+      edit.toggle();
     } else if (e.key === '?') {
       e.preventDefault();
       this.open();
     } else if (onView && (e.key === 'r' || e.key === 'R')) {
       e.preventDefault();
-      stage.reset();
+      this.ports.reset();
     } else if (onView && e.key === ' ') {
       e.preventDefault();
-      const key = stage.player.playableKey();
-      if (key) stage.player.toggle(key);
+      this.ports.play();
     } else if (onView && (e.key === 'd' || e.key === 'D')) {
       e.preventDefault();
-      stage.announcer.say(stage.results.spoken());
+      this.ports.describe();
     } else if (onView && e.key === '.') {
       e.preventDefault();
-      /** @type {HTMLButtonElement | null} */ (stage.els.player.querySelector('button'))?.click();
+      this.ports.step();
     }
   }
 
@@ -122,10 +138,9 @@ export class Shortcuts {
 
   /** Builds the list of gestures (first, on a touch screen) and keys. */
   build() {
-    const stage = this.stage;
-    const { t } = stage.i18n;
+    const { t } = this.ports.i18n();
     const doc = this.dialog.ownerDocument;
-    const editing = stage.edit.editor.active;
+    const editing = this.ports.edit.active();
     /** @param {Array<[string, string]>} rows @param {boolean} [keyCaps] */
     const table = (rows, keyCaps = true) => {
       const tab = doc.createElement('table');

@@ -1,40 +1,41 @@
 // The view's own buttons — Fit, Reset, Fullscreen, ? (the list of keys and gestures) and Cancel
 // of long work — and the view's texts that depend on the language but not on the scene (its
 // name, the hint, the labels of the legend, controls and readout). Each button asks the stage for
-// what it does.
+// what it does (`actions`).
 import { canFullscreen } from '../platform.js';
 import { labelButton } from './elements.js';
 import { touchScreen } from './touch.js';
-import { cancelWork } from '../compute.js';
 
-/** Wires the view's buttons. @param {import('../stage.js').Stage} stage */
-export function wireToolbar(stage) {
-  const { buttons, cancel, progress } = stage.els;
-  buttons.fit.addEventListener('click', () => {
-    stage.viewer.fit();
-    stage.report('camera', true);
-  });
-  buttons.reset.addEventListener('click', () => stage.reset());
-  buttons.fullscreen.addEventListener('click', () => stage.toggleFullscreen());
+/**
+ * Wires the view's buttons to what they ask of the stage.
+ * @param {import('./elements.js').StageElements} els
+ * @param {{fit: () => void, reset: () => void, fullscreen: () => void, help: () => void, cancel: () => void}} actions
+ */
+export function wireToolbar(els, actions) {
+  const { buttons, cancel, progress } = els;
+  buttons.fit.addEventListener('click', actions.fit);
+  buttons.reset.addEventListener('click', actions.reset);
+  buttons.fullscreen.addEventListener('click', actions.fullscreen);
   // a toggle: pressed while the stage is full screen (the event comes to the element that is)
   buttons.fullscreen.setAttribute('aria-pressed', 'false');
-  stage.els.root.addEventListener('fullscreenchange', () => {
-    const on = stage.els.root.ownerDocument.fullscreenElement === stage.els.root;
+  els.root.addEventListener('fullscreenchange', () => {
+    const on = els.root.ownerDocument.fullscreenElement === els.root;
     buttons.fullscreen.setAttribute('aria-pressed', String(on));
   });
-  buttons.help.addEventListener('click', () => stage.shortcuts.open());
+  buttons.help.addEventListener('click', actions.help);
   cancel.addEventListener('click', () => {
-    stage.session.dispose();
-    // a long job in the worker (a tool path's post) stops there too
-    cancelWork();
+    actions.cancel();
     progress.hidden = true;
   });
 }
 
-/** The view's texts in the stage's language. @param {import('../stage.js').Stage} stage */
-export function labelToolbar(stage) {
-  const { t } = stage.i18n;
-  const { canvas, buttons, cancel, legend, form, readout, hint } = stage.els;
+/**
+ * The view's texts in the stage's language.
+ * @param {import('./elements.js').StageElements} els
+ * @param {import('../i18n/index.js').Translator} i18n
+ */
+export function labelToolbar(els, { t }) {
+  const { canvas, buttons, cancel, legend, form, readout, hint } = els;
   canvas.setAttribute('aria-label', t('view.label'));
   canvas.setAttribute('aria-roledescription', t('view.role'));
   labelButton(buttons.fit, '⌂', t('view.fit'));

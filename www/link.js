@@ -1,4 +1,4 @@
-// The state of a view in the URL hash, and back:
+// The link's codec: a view in the URL hash, and back (the page's address, Share's links):
 //   #scene=striction&surface=hyperboloid&n=36&cam=yaw,pitch,distance,x,y,z&lang=de
 // The page's own keys (RESERVED_KEYS of scene.js) never collide with a scene's parameters.
 // A hash longer than MAX_HASH characters is not read at all (the page says so); a value that
@@ -9,7 +9,7 @@ import { decodeInput, encodeInput, linkableInput } from './edit/input.js';
 import { MAX_HASH, MAX_LINK_RULINGS } from './limits.js';
 
 /**
- * @typedef {object} ViewState
+ * @typedef {object} LinkState
  * @property {import('./scene.js').Scene} scene
  * @property {import('./scene.js').Params} params
  * @property {number[] | null} camera    yaw, pitch, distance, target x, y, z
@@ -36,9 +36,9 @@ import { MAX_HASH, MAX_LINK_RULINGS } from './limits.js';
  * Reads a hash (with or without "#") against the list of scenes.
  * @param {string} hash
  * @param {import('./scene.js').Scene[]} scenes
- * @returns {ViewState}
+ * @returns {LinkState}
  */
-export function readState(hash, scenes) {
+export function readLink(hash, scenes) {
   const notes = [];
   let text = String(hash ?? '').replace(/^#/, '');
   if (text.length > MAX_HASH) {
@@ -90,9 +90,9 @@ export function readState(hash, scenes) {
 /**
  * The hash of a state (without "#"); `wholeInput`: the edit even beyond MAX_LINK_HANDLES (the
  * one-file page keeps its own hash, whose length no address bar limits).
- * @param {Omit<ViewState, 'notes'>} state
+ * @param {Omit<LinkState, 'notes'>} state
  */
-export function writeState(state, { wholeInput = false } = {}) {
+export function writeLink(state, { wholeInput = false } = {}) {
   const q = new URLSearchParams();
   if (state.embed) q.set('embed', '');
   if (state.embed && state.controls) q.set('controls', '');
