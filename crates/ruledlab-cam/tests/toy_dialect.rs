@@ -11,7 +11,7 @@ mod jobs;
 
 use ruledlab::{Scheme, Variant};
 use ruledlab_cam::controller::{
-    comment_lines, iso, number, Context, Controller, Iso, Mode, Op, Orientation, Rate, Target, Units, MACHINE_MODE,
+    comment_lines, iso, number, Context, Controller, Iso, LinuxCnc, Mode, Op, Orientation, Rate, Target, Units,
 };
 use ruledlab_cam::{example_tool_path, gcode, gcode_with, Dialect, Machine, PostOptions, Program, ToolPath};
 
@@ -71,9 +71,8 @@ impl Controller for Toy {
     }
 }
 
-/// An ISO controller that says every word as LinuxCNC does (its header's line on machine
-/// coordinates too), but numbers its blocks N10, N20, … and switches its tool-centre point with
-/// `G43.4`.
+/// An ISO controller built on LinuxCNC's: every word as LinuxCNC says it (its header's too), but
+/// blocks numbered N10, N20, … and its tool-centre point switched with `G43.4`.
 struct NumberedIso;
 
 impl Iso for NumberedIso {
@@ -81,31 +80,28 @@ impl Iso for NumberedIso {
         true
     }
     fn comment(&self, text: &str) -> String {
-        format!("({text})")
+        LinuxCnc.comment(text)
     }
     fn start(&self, units: Units) -> &'static str {
-        match units {
-            Units::Mm => "G21 G90 G94 G17 G40 G49 G80",
-            Units::Inch => "G20 G90 G94 G17 G40 G49 G80",
-        }
+        LinuxCnc.start(units)
     }
-    fn tolerance(&self, chordal: f64, _: f64) -> String {
-        format!("G64 P{} Q0", number(chordal, false))
+    fn tolerance(&self, chordal: f64, angular: f64) -> String {
+        LinuxCnc.tolerance(chordal, angular)
     }
     fn work_offset(&self, k: u32) -> &'static str {
-        ["G54", "G55", "G56", "G57", "G58", "G59"][k as usize - 1]
+        LinuxCnc.work_offset(k)
     }
     fn tool_change(&self, tool: u32) -> Vec<String> {
-        vec![format!("T{tool} M6"), format!("G43 H{tool}")]
+        LinuxCnc.tool_change(tool)
     }
     fn retract(&self, z: &str) -> String {
-        format!("G53 G0 Z{z}")
+        LinuxCnc.retract(z)
     }
     fn tcp(&self, on: bool) -> Vec<&'static str> {
         vec![if on { "G43.4 H1" } else { "G49" }]
     }
     fn g94_alone(&self) -> bool {
-        true
+        LinuxCnc.g94_alone()
     }
 }
 
@@ -114,15 +110,13 @@ impl Controller for NumberedIso {
         "a numbered ISO controller"
     }
     fn orientation(&self) -> Orientation {
-        Orientation::Angles
+        LinuxCnc.orientation()
     }
-    fn feed_words(&self, _: Mode) -> &'static str {
-        "inverse time G93 on rotary moves"
+    fn feed_words(&self, mode: Mode) -> &'static str {
+        LinuxCnc.feed_words(mode)
     }
     fn machine_mode(&self) -> String {
-        format!(
-            "{MACHINE_MODE}, the kinematics the identity (trivkins, or the identity type of a switchable kinematics)"
-        )
+        LinuxCnc.machine_mode()
     }
     fn tcp_mode(&self, _: &Machine) -> Vec<String> {
         vec!["mode: tool-centre point - G43.4".into()]
@@ -210,9 +204,9 @@ fn a_toy_dialect_is_interpolated_and_unwinds_as_its_orientation_says() {
     }
 }
 
-/// The ISO writer is one function a controller calls with its words: a toy that says every word
-/// as LinuxCNC does writes LinuxCNC's program but for its block numbers; under tool-centre-point
-/// control its own `G43.4` and `G49`.
+/// The ISO writer is one function a controller calls with its words: a toy built on LinuxCNC's
+/// words writes LinuxCNC's program but for its block numbers; under tool-centre-point control its
+/// own `G43.4` and `G49`.
 #[test]
 fn a_toy_iso_controller_shares_the_iso_writer() {
     for preset in ["table-table-ac", "head-head-ac"] {

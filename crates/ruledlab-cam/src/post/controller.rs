@@ -24,10 +24,13 @@
 //! arm in [`Dialect::controller`] (and the name the bindings read). A controller of one's own
 //! posts with [`gcode_with`](super::gcode_with) without being registered.
 
-use super::heidenhain::Heidenhain;
-use super::linuxcnc::LinuxCnc;
-use super::sinumerik::Sinumerik;
 use crate::machine::Machine;
+
+// the controllers of the dialects: to post with, or to build another on (one that says most
+// words as one of them does)
+pub use super::heidenhain::Heidenhain;
+pub use super::linuxcnc::LinuxCnc;
+pub use super::sinumerik::Sinumerik;
 
 // what a controller is given and writes with
 pub use super::iso::{self, Iso};
