@@ -6,6 +6,9 @@ use ruledlab::{subdivide_congruence, CongruenceScheme};
 use ruledlab::{AnalyticCongruence, SmoothCongruence};
 use std::hint::black_box;
 
+mod sizes;
+use sizes::sizes;
+
 fn congruence(c: &mut Criterion) {
     let ex = AnalyticCongruence::Example5;
     let mut group = c.benchmark_group("butterfly");
@@ -30,16 +33,6 @@ fn congruence(c: &mut Criterion) {
         });
     }
     group.finish();
-}
-
-/// All sizes under `cargo bench`; only the smallest when `cargo test` runs the bench once
-/// as a test (criterion passes `--bench` only in the former).
-fn sizes<T>(all: &[T]) -> &[T] {
-    if std::env::args().any(|a| a == "--bench") {
-        all
-    } else {
-        &all[..1]
-    }
 }
 
 criterion_group!(benches, congruence);

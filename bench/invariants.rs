@@ -5,6 +5,9 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use ruledlab::{AnalyticSurface, SmoothRuled};
 use std::hint::black_box;
 
+mod sizes;
+use sizes::sizes;
+
 /// n rulings of Example 1's hyperboloid.
 fn hyperboloid(n: usize) -> ruledlab::RuledSurface {
     let hyp = AnalyticSurface::ALL[0].clone();
@@ -50,16 +53,6 @@ fn from_flat(c: &mut Criterion) {
         b.iter(|| black_box(ruledlab::RuledSurface::from_flat(&flat).expect("valid")))
     });
     group.finish();
-}
-
-/// All sizes under `cargo bench`; only the smallest when `cargo test` runs the bench once
-/// as a test (criterion passes `--bench` only in the former).
-fn sizes<T>(all: &[T]) -> &[T] {
-    if std::env::args().any(|a| a == "--bench") {
-        all
-    } else {
-        &all[..1]
-    }
 }
 
 criterion_group!(benches, invariants, invariants_into, from_flat);

@@ -6,6 +6,9 @@ use ruledlab::{subdivide_strip, Scheme, Variant};
 use ruledlab::{AnalyticSurface, Ranges, SmoothRuled};
 use std::hint::black_box;
 
+mod sizes;
+use sizes::sizes;
+
 fn schemes(c: &mut Criterion) {
     let hyp = AnalyticSurface::ALL[0].clone();
     let schemes = [
@@ -27,16 +30,6 @@ fn schemes(c: &mut Criterion) {
             });
         }
         group.finish();
-    }
-}
-
-/// All sizes under `cargo bench`; only the smallest when `cargo test` runs the bench once
-/// as a test (criterion passes `--bench` only in the former).
-fn sizes<T>(all: &[T]) -> &[T] {
-    if std::env::args().any(|a| a == "--bench") {
-        all
-    } else {
-        &all[..1]
     }
 }
 

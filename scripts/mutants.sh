@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# Mutation testing of core modules (the book, "Mutation testing"): scripts/mutants.sh [src/file.rs ...].
+# Mutation testing of the modules of the geometry crate and the CAM crate (the book, "Mutation
+# testing"): scripts/mutants.sh [file.rs ...], a file named from the workspace's root
+# (src/snap/meet.rs, crates/ruledlab-cam/src/stock.rs).
 # cargo-mutants changes the code one small way at a time (an operator, a comparison, a return
-# value) and runs the native tests; a mutant they still pass is "missed". Not part of `npm test`:
-# it takes hours over the whole core on 2 cores. Without arguments it takes every core module
-# (src/**/*.rs but the bindings in src/wasm/).
+# value) and runs the native tests of the mutant's crate; a mutant they still pass is "missed".
+# Not part of `npm test`: it takes hours over both crates on 2 cores. Without arguments it takes
+# every module of both (PACKAGES below: src/**/*.rs and crates/ruledlab-cam/src/**/*.rs; the
+# bindings are not measured).
 # Two passes: first the fast in-file unit tests (`--lib`) on every mutant, then what they missed
 # once more with the whole native suite (MUTANTS_TESTS, cargo test's arguments; default
 # "--lib --tests", all but the doctests); a timeout counts as caught at once (the mutant did
@@ -29,6 +32,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 command -v cargo-mutants >/dev/null || cargo install cargo-mutants --version 27.1.0 --locked
+# the crates measured: cargo-mutants mutates these (from the root it would take the root package
+# alone) and runs each mutant's own crate's tests
+PACKAGES=(--package ruledlab --package ruledlab-cam)
 WASM_ONLY=(src/base/lanes/simd128.rs src/error/serialize.rs)
 WASM_TESTS=(--test kernels --test bindings)
 out=${MUTANTS_OUT:-target/mutants}
@@ -42,7 +48,7 @@ if [ "${1:-}" = --again ]; then
 else
   files=("$@")
   if [ ${#files[@]} -eq 0 ]; then
-    mapfile -t files < <(cargo mutants --list-files | grep -v '^src/wasm/' | sort)
+    mapfile -t files < <(cargo mutants --list-files "${PACKAGES[@]}" | sort)
   fi
   rm -rf "$out"
   mkdir -p "$out/lib" "$out/wasm"
@@ -54,7 +60,7 @@ for file in "${files[@]}"; do
 done
 equivalent=mutants/equivalent.txt
 read -r -a tests <<< "${MUTANTS_TESTS:---lib --tests}"
-selection=()
+selection=("${PACKAGES[@]}")
 for file in "${files[@]}"; do selection+=(--file "$file"); done
 # exit 0: all caught, 2: some missed, 3: some timed out; anything else (a failing baseline,
 # a usage error) stops here
@@ -71,7 +77,7 @@ comm -23 "$out/equivalent" "$out/all" | sed "s#^#mutants: stale entry in $equiva
 first="$out/lib/mutants.out"
 result="$first"
 if [ ${#native[@]} -gt 0 ]; then
-  common=(--no-shuffle --profile mutants)
+  common=(--no-shuffle --profile mutants "${PACKAGES[@]}")
   for file in "${native[@]}"; do common+=(--file "$file"); done
   [ $again = 1 ] || run --output "$out/lib" "${common[@]}" --cargo-arg=--lib
   touch "$first/missed.txt" "$first/timeout.txt" "$first/caught.txt" "$first/unviable.txt"
@@ -97,7 +103,7 @@ fi
 browser="$out/wasm/mutants.out"
 if [ ${#wasm[@]} -gt 0 ]; then
   # the wasm-only files, in Chromium (again: only what the last browser pass missed)
-  chromium=(--no-shuffle --profile mutants --cargo-arg=--target=wasm32-unknown-unknown)
+  chromium=(--no-shuffle --profile mutants --package ruledlab --cargo-arg=--target=wasm32-unknown-unknown)
   for file in "${wasm[@]}"; do chromium+=(--file "$file"); done
   for t in "${WASM_TESTS[@]}"; do chromium+=(--cargo-arg="$t"); done
   if [ $again = 1 ] && [ -d "$browser" ]; then

@@ -9,6 +9,7 @@ use glam::DVec3;
 
 /// Where a dragged handle may go.
 #[derive(Debug, Clone, Copy, PartialEq)]
+// Line and Plane are written as Target's are, but a line here cannot lose its direction: two enums
 pub enum Constraint {
     /// Anywhere: the pointer moves it in the plane through where it started with this normal
     /// (the view's direction), and a snap may take it off that plane.

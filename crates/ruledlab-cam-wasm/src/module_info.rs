@@ -4,6 +4,8 @@
 use ruledlab_js::live;
 use wasm_bindgen::prelude::*;
 
+// the teaching module's two functions again (ruledlab-wasm): each wasm module exports its own
+
 /// The crate version, e.g. "0.1.0" (the teaching module's too: they are built together).
 #[wasm_bindgen]
 pub fn version() -> String {

@@ -5,7 +5,7 @@
 use super::gcode_options::{preset, read_post_options};
 use ruledlab::Error;
 use ruledlab_js::args::{self, fail, fail_option, finite_option, integer, numbers, to_js};
-use ruledlab_js::buffers::{mesh_buffers, points_f64, segments_f32};
+use ruledlab_js::buffers::{self, mesh_buffers, points_f64};
 use ruledlab_js::live::Live;
 use ruledlab_js::subdivide_options::{read, Space};
 use ruledlab_js::timing::Measure;
@@ -13,8 +13,9 @@ use ruledlab_js::timing::Measure;
 use glam::DVec3;
 use js_sys::{Float32Array, Float64Array, Uint8Array};
 use ruledlab::points_from_flat;
-use ruledlab::tolerance::{MAX_EXAMPLE_POSES, MAX_GRID_SIDE, MAX_MESH_SIDES, MAX_SAMPLES, MAX_STRIDE};
+use ruledlab::tolerance::{MAX_EXAMPLE_POSES, MAX_GRID_SIDE, MAX_MESH_SIDES, MAX_SAMPLES};
 use ruledlab::RuledSurface;
+use ruledlab::Segment;
 use serde::{Deserialize, Serialize};
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
@@ -466,12 +467,13 @@ impl ToolPath {
     }
 
     // --- buffers for WebGL
+    // (the same signatures in every class of lines, as wasm-bindgen binds methods class by class;
+    // one body for them all: ruledlab_js::buffers)
 
     /// Axis segments tip → tip + L·axis (6 numbers per pose) as 32-bit floats for WebGL.
     #[wasm_bindgen(js_name = segmentsF32)]
     pub fn segments_f32(&self) -> Float32Array {
-        let v: Vec<f32> = self.axis_coords().into_iter().map(|x| x as f32).collect();
-        Float32Array::from(&v[..])
+        buffers::f32s(self.axis_coords())
     }
 
     /// The axes (tip → tip + L·axis) of the poses whose index is not a multiple of `stride`
@@ -481,10 +483,7 @@ impl ToolPath {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        const F: &str = "ToolPath.insertedF32";
-        let stride = integer(F, "stride", &stride, 1, MAX_STRIDE)?;
-        let axes = self.core().axis_surface().map_err(|e| fail(F, e))?;
-        Ok(segments_f32(&axes.inserted(stride)))
+        buffers::inserted_f32("ToolPath", &stride, |stride| Ok(self.core().axis_surface()?.inserted(stride)))
     }
 
     /// The axes (tip → tip + L·axis) of every `every`-th pose and the last, as f32 segments: a
@@ -494,17 +493,11 @@ impl ToolPath {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] every: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        const F: &str = "ToolPath.everyF32";
-        let every = integer(F, "every", &every, 1, MAX_STRIDE)?;
         let length = self.inner.tool.length;
-        let n = self.inner.poses.len();
-        let picked = (0..n).filter(|&i| i % every == 0 || i + 1 == n).map(|i| &self.inner.poses[i]);
-        let v: Vec<f32> = picked
-            .flat_map(|p| [p.tip, p.tip + length * p.axis])
-            .flat_map(|q| q.to_array())
-            .map(|x| x as f32)
-            .collect();
-        Ok(Float32Array::from(&v[..]))
+        buffers::every_f32("ToolPath", "every", &every, self.inner.poses.len(), |i| {
+            let p = &self.inner.poses[i];
+            Segment::new(p.tip, p.tip + length * p.axis)
+        })
     }
 
     /// The envelope of the tool's cutting end along the path (a tube of the tool radius about

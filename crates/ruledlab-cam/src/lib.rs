@@ -55,9 +55,11 @@ pub use solve::{inverse_kinematics, solve, SolveOptions, Solved};
 pub use linearise::{BlockDeviation, Interpolation, Linearisation};
 pub use motion::{BlockMotion, Limit};
 pub use post::{
-    gcode, gcode_reporting, Coolant, Dialect, Holder, Mode, Numbering, PostOptions, Program, SpindleDirection, Units,
-    Warning,
+    gcode, gcode_reporting, gcode_with, Coolant, Dialect, Holder, Mode, Numbering, PostOptions, Program,
+    SpindleDirection, Units, Warning,
 };
+// a controller's language: the trait a dialect implements, what it is given, the ISO writer
+pub use post::controller;
 
 // tool poses and target curves read from files, tool paths written
 pub use poses::{read_tool_poses, read_tool_poses_for, tool_path_csv, tool_path_json, ImportedPoses};

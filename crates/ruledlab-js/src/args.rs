@@ -80,6 +80,15 @@ pub fn integer(func: &str, name: &str, value: &JsValue, min: usize, max: usize) 
     }
 }
 
+/// A catalogue's entry by its name (`byName(name)` of a class): `find` of the string, refused
+/// when the argument is not a string or `find` knows no such name.
+pub fn by_name<T>(func: &str, name: &JsValue, find: impl FnOnce(&str) -> ruledlab::Result<T>) -> Result<T, JsValue> {
+    let Some(name) = name.as_string() else {
+        return Err(fail(func, format!("name must be a string, got {}", describe(name))));
+    };
+    find(&name).map_err(|e| fail(func, e))
+}
+
 /// As [`integer`], `default` when the argument is left out (`undefined`).
 pub fn optional_integer(
     func: &str,

@@ -1,13 +1,58 @@
 //! Conversions of the core's geometry into typed arrays for JavaScript: f32 buffers for WebGL
 //! (6 numbers per segment, 3 per point, indexed triangle meshes) and points as f64. The page
 //! uploads them as they are. No JS class.
+//!
+//! The buffer methods the classes of lines share (`segmentsF32`, `insertedF32(stride)`,
+//! `everyF32(k)`, the ends of some lines) are written once here: each class keeps its own bound
+//! method (wasm-bindgen binds methods class by class) and calls them with its name and its lines.
 
-use super::args::to_js;
+use super::args::{fail, integer, to_js};
 use glam::DVec3;
 use js_sys::{Float32Array, Float64Array, Uint32Array};
+use ruledlab::tolerance::MAX_STRIDE;
 use ruledlab::Mesh;
 use ruledlab::Segment;
 use wasm_bindgen::prelude::*;
+
+/// Numbers as f32 (`segmentsF32()`: a class's coordinates, 6 per line).
+pub fn f32s(values: impl IntoIterator<Item = f64>) -> Float32Array {
+    let out: Vec<f32> = values.into_iter().map(|x| x as f32).collect();
+    Float32Array::from(&out[..])
+}
+
+/// `<class>.insertedF32(stride)`: the lines `inserted` gives for a stride from 1 to
+/// [`MAX_STRIDE`] (those whose index is not a multiple of it: after k steps of an interpolatory
+/// scheme, stride 2^k, the inserted ones), as f32 segments.
+pub fn inserted_f32(
+    class: &str,
+    stride: &JsValue,
+    inserted: impl FnOnce(usize) -> ruledlab::Result<Vec<Segment>>,
+) -> Result<Float32Array, JsValue> {
+    let func = format!("{class}.insertedF32");
+    let stride = integer(&func, "stride", stride, 1, MAX_STRIDE)?;
+    inserted(stride).map(|lines| segments_f32(&lines)).map_err(|e| fail(&func, e))
+}
+
+/// `<class>.everyF32(k)`: every k-th of `count` lines (indices 0, k, 2k, …) and the last, k from
+/// 1 to [`MAX_STRIDE`] (its argument's name `name`), as f32 segments: a level of detail for
+/// drawing more lines than a view can show.
+pub fn every_f32(
+    class: &str,
+    name: &str,
+    k: &JsValue,
+    count: usize,
+    line: impl Fn(usize) -> Segment,
+) -> Result<Float32Array, JsValue> {
+    let k = integer(&format!("{class}.everyF32"), name, k, 1, MAX_STRIDE)?;
+    let lines: Vec<Segment> = (0..count).filter(|i| i % k == 0 || i + 1 == count).map(line).collect();
+    Ok(segments_f32(&lines))
+}
+
+/// The first ends a (`which` = 1) or the second ends b (2) of `lines`, as f32 points.
+pub fn ends_f32(lines: &[Segment], which: usize) -> Float32Array {
+    let points: Vec<DVec3> = lines.iter().map(|s| if which == 1 { s.a } else { s.b }).collect();
+    points_f32(&points)
+}
 
 /// Segments as f32, 6 per segment.
 pub fn segments_f32(segments: &[Segment]) -> Float32Array {
@@ -23,6 +68,7 @@ pub fn points_f32(points: &[DVec3]) -> Float32Array {
 
 /// An indexed triangle mesh for WebGL: 3 floats per vertex, 3 indices per triangle.
 #[derive(serde::Serialize, tsify_next::Tsify)]
+// a focal sheet writes these fields again (ruledlab-wasm's focal.rs): serde's flatten would give a Map
 pub struct MeshBuffers {
     #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float32Array")]

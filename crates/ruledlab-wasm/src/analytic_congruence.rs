@@ -7,7 +7,7 @@ use super::formula::{congruence_presets, congruence_spec};
 use super::line_congruence::LineCongruence;
 use ruledlab::tolerance::{MAX_REACH, MAX_RULINGS};
 use ruledlab::SmoothCongruence;
-use ruledlab_js::args::{self, describe, fail, to_js};
+use ruledlab_js::args::{self, fail, to_js};
 use ruledlab_js::live::Live;
 use ruledlab_js::timing::Measure;
 use serde::Serialize;
@@ -18,6 +18,7 @@ use wasm_bindgen::prelude::*;
 /// the paper's figure.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
+// the fields of AnalyticSurfaceInfo's name and domain again: serde's flatten would give JavaScript a Map
 struct AnalyticCongruenceInfo {
     name: &'static str,
     title: &'static str,
@@ -79,12 +80,8 @@ impl AnalyticCongruence {
     pub fn by_name(
         #[wasm_bindgen(unchecked_param_type = "string")] name: JsValue,
     ) -> Result<AnalyticCongruence, JsValue> {
-        let Some(name) = name.as_string() else {
-            return Err(fail("AnalyticCongruence.byName", format!("name must be a string, got {}", describe(&name))));
-        };
-        ruledlab::AnalyticCongruence::by_name(&name)
-            .map(|inner| AnalyticCongruence { inner, _live: Live::new() })
-            .map_err(|e| fail("AnalyticCongruence.byName", e))
+        let inner = args::by_name("AnalyticCongruence.byName", &name, ruledlab::AnalyticCongruence::by_name)?;
+        Ok(AnalyticCongruence { inner, _live: Live::new() })
     }
 
     /// Every congruence of the catalogue as formulas, in menu order: the presets of "Your

@@ -7,7 +7,7 @@ use super::ruled_surface::RuledSurface;
 use js_sys::Float64Array;
 use ruledlab::tolerance::{MAX_SAMPLES, MAX_STRIDE, MAX_STUDY_LEVELS};
 use ruledlab::SmoothRuled;
-use ruledlab_js::args::{describe, fail, finite_option, integer, integer_option, interval, numbers, options, to_js};
+use ruledlab_js::args::{self, fail, finite_option, integer, integer_option, interval, numbers, options, to_js};
 use ruledlab_js::live::Live;
 use ruledlab_js::timing::Measure;
 use serde::{Deserialize, Serialize};
@@ -30,6 +30,7 @@ struct SampleOptions {
 /// ranges.
 #[derive(Serialize, Tsify)]
 #[serde(rename_all = "camelCase")]
+// the fields of AnalyticCongruenceInfo's name and domain again: serde's flatten would give JavaScript a Map
 struct AnalyticSurfaceInfo {
     name: &'static str,
     title: &'static str,
@@ -137,12 +138,8 @@ impl AnalyticSurface {
     /// The surface named `name` (see `list()`); throws for an unknown name.
     #[wasm_bindgen(js_name = byName)]
     pub fn by_name(#[wasm_bindgen(unchecked_param_type = "string")] name: JsValue) -> Result<AnalyticSurface, JsValue> {
-        let Some(name) = name.as_string() else {
-            return Err(fail("AnalyticSurface.byName", format!("name must be a string, got {}", describe(&name))));
-        };
-        ruledlab::AnalyticSurface::by_name(&name)
-            .map(|inner| AnalyticSurface { inner, _live: Live::new() })
-            .map_err(|e| fail("AnalyticSurface.byName", e))
+        let inner = args::by_name("AnalyticSurface.byName", &name, ruledlab::AnalyticSurface::by_name)?;
+        Ok(AnalyticSurface { inner, _live: Live::new() })
     }
 
     /// Every surface of the catalogue as formulas, in menu order: the presets of "Your

@@ -71,6 +71,7 @@ pub(super) fn focal_js(func: &str, rows: usize, cols: usize, all: &[Focal]) -> R
 /// A focal sheet for WebGL (positions, triangle indices, smooth vertex normals) with the box of
 /// its drawn vertices.
 #[derive(Serialize, Tsify)]
+// MeshBuffers' fields again (ruledlab_js::buffers), not flattened: serde's flatten would give JavaScript a Map
 struct FocalSheetFigure {
     #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float32Array")]

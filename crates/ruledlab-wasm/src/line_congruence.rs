@@ -8,13 +8,12 @@ use super::export::export;
 use super::focal::{focal_js, sheet_figure, strokes};
 use super::linear_complex::complex_js;
 use super::ruled_surface::RuledSurface;
-use glam::DVec3;
 use js_sys::{Float32Array, Float64Array};
 use ruledlab::tolerance::{MAX_CONGRUENCE_STEPS, MAX_PARTS, MAX_RULINGS, MAX_STRIDE};
 use ruledlab::CongruenceScheme;
 use ruledlab::Segment;
 use ruledlab_js::args::{self, fail, finite_option, integer, integer_option, numbers, only_for};
-use ruledlab_js::buffers::{points_f32, segments_f32};
+use ruledlab_js::buffers::{self, points_f32};
 use ruledlab_js::live::Live;
 use ruledlab_js::subdivide_options::SubdivisionSpace;
 use ruledlab_js::timing::Measure;
@@ -284,12 +283,13 @@ impl LineCongruence {
     }
 
     // --- buffers for WebGL
+    // (the same signatures in every class of lines, as wasm-bindgen binds methods class by class;
+    // one body for them all: ruledlab_js::buffers)
 
     /// The lines as 32-bit floats for a WebGL buffer.
     #[wasm_bindgen(js_name = segmentsF32)]
     pub fn segments_f32(&self) -> Float32Array {
-        let v: Vec<f32> = self.inner.flat().iter().map(|&x| x as f32).collect();
-        Float32Array::from(&v[..])
+        buffers::f32s(self.inner.flat().iter().copied())
     }
 
     /// The lines (i, j) with i or j not a multiple of `stride` (after k steps, 2^k: the
@@ -299,8 +299,7 @@ impl LineCongruence {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        let stride = integer("LineCongruence.insertedF32", "stride", &stride, 1, MAX_STRIDE)?;
-        Ok(segments_f32(&self.core().inserted(stride)))
+        buffers::inserted_f32("LineCongruence", &stride, |stride| Ok(self.core().inserted(stride)))
     }
 
     /// The points of the director surface d₁ (`which` = 1, the p) or d₂ (2, the q), f32,
@@ -324,9 +323,7 @@ impl LineCongruence {
         const F: &str = "LineCongruence.insertedDirectorF32";
         let stride = integer(F, "stride", &stride, 1, MAX_STRIDE)?;
         let which = integer(F, "which", &which, 1, 2)?;
-        let points: Vec<DVec3> =
-            self.core().inserted(stride).iter().map(|s| if which == 1 { s.a } else { s.b }).collect();
-        Ok(points_f32(&points))
+        Ok(buffers::ends_f32(&self.core().inserted(stride), which))
     }
 
     // --- the linear complex, and the lines as data

@@ -3,6 +3,8 @@
 use ruledlab_js::live;
 use wasm_bindgen::prelude::*;
 
+// the CAM module's two functions again (ruledlab-cam-wasm): each wasm module exports its own
+
 /// The crate version, e.g. "0.1.0".
 #[wasm_bindgen]
 pub fn version() -> String {

@@ -6,7 +6,6 @@ use super::export::export;
 use super::invariants::{Invariants, InvariantsOptions};
 use super::invariants_buffer::InvariantsBuffer;
 use super::linear_complex::complex_js;
-use glam::DVec3;
 use js_sys::{Float32Array, Float64Array};
 use ruledlab::tolerance::{MAX_PARTS, MAX_RULINGS, MAX_STRIDE};
 use ruledlab::Frame;
@@ -14,7 +13,7 @@ use ruledlab::Segment;
 use ruledlab::Triangulation;
 use ruledlab::{Development, HingeChain};
 use ruledlab_js::args::{self, fail, integer, numbers, to_js};
-use ruledlab_js::buffers::{points_f32, segments_f32};
+use ruledlab_js::buffers::{self, segments_f32};
 use ruledlab_js::live::Live;
 use ruledlab_js::subdivide_options::{read, Space};
 use ruledlab_js::timing::Measure;
@@ -357,11 +356,13 @@ impl RuledSurface {
     }
 
     // --- buffers for WebGL
+    // (the same signatures in every class of lines, as wasm-bindgen binds methods class by class;
+    // one body for them all: ruledlab_js::buffers)
 
     /// The segments as 32-bit floats, ready for a WebGL buffer.
     #[wasm_bindgen(js_name = segmentsF32)]
     pub fn segments_f32(&self) -> Float32Array {
-        Float32Array::from(&self.inner.flat_f32()[..])
+        buffers::f32s(self.inner.flat().iter().copied())
     }
 
     /// The rulings whose index is not a multiple of `stride` (after k interpolatory steps,
@@ -371,8 +372,7 @@ impl RuledSurface {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        let stride = integer("RuledSurface.insertedF32", "stride", &stride, 1, MAX_STRIDE)?;
-        Ok(segments_f32(&self.core().inserted(stride)))
+        buffers::inserted_f32("RuledSurface", &stride, |stride| Ok(self.core().inserted(stride)))
     }
 
     /// Every k-th ruling (indices 0, k, 2k, …, and the last), as f32 segments: a level of
@@ -382,11 +382,7 @@ impl RuledSurface {
         &self,
         #[wasm_bindgen(unchecked_param_type = "number")] k: JsValue,
     ) -> Result<Float32Array, JsValue> {
-        let k = integer("RuledSurface.everyF32", "k", &k, 1, MAX_STRIDE)?;
-        let n = self.length();
-        let rulings: Vec<Segment> =
-            (0..n).filter(|i| i % k == 0 || *i == n - 1).map(|i| self.core().segment(i)).collect();
-        Ok(segments_f32(&rulings))
+        buffers::every_f32("RuledSurface", "k", &k, self.length(), |i| self.core().segment(i))
     }
 
     /// The endpoints a_i (`which` = 1) or b_i (2) of the rulings whose index is not a multiple
@@ -402,8 +398,7 @@ impl RuledSurface {
         let stride = integer(F, "stride", &stride, 1, MAX_STRIDE)?;
         let rulings: Vec<Segment> =
             if stride == 1 { self.core().segments().collect() } else { self.core().inserted(stride) };
-        let points: Vec<DVec3> = rulings.iter().map(|s| if which == 1 { s.a } else { s.b }).collect();
-        Ok(points_f32(&points))
+        Ok(buffers::ends_f32(&rulings, which))
     }
 
     // --- the linear complex, and the surface as data

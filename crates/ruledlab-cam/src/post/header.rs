@@ -2,9 +2,8 @@
 //! (machine, mode and the controller's setup it needs, units, tool, feeds, tolerances, stock,
 //! the linearisation's and the axes' numbers, warnings), in the program's units.
 
-use super::{number, Dialect, Mode, Op, PostOptions, SpindleDirection, Warning};
+use super::{number, Controller, Mode, Op, PostOptions, SpindleDirection, Warning};
 use crate::linearise::Linearisation;
-use crate::machine::{AxisName, Carrier, Machine};
 use crate::motion::{BlockMotion, Limit};
 use crate::stock::Aabb;
 use crate::{ToolEnd, ToolPath};
@@ -25,22 +24,14 @@ pub(super) struct HeaderFacts<'a> {
     pub warnings: &'a [Warning],
 }
 
-/// The LinuxCNC 2.9 kinematics module that is this machine's tool-centre point, if one is:
-/// `xyzac-trt-kins` and `xyzbc-trt-kins` for a tilting table (A or B) carrying a rotary table
-/// (C), `5axiskins` for a bridge mill's head (C carrying B). LinuxCNC's "Switchable Kinematics"
-/// chapter lists these as switchable; its man page kins(9) describes them.
-pub fn linuxcnc_kinematics(m: &Machine) -> Option<&'static str> {
-    let [a, b] = &m.rotary;
-    match ((a.on, a.name), (b.on, b.name)) {
-        ((Carrier::Table, AxisName::A), (Carrier::Table, AxisName::C)) => Some("xyzac-trt-kins"),
-        ((Carrier::Table, AxisName::B), (Carrier::Table, AxisName::C)) => Some("xyzbc-trt-kins"),
-        ((Carrier::Head, AxisName::C), (Carrier::Head, AxisName::B)) => Some("5axiskins"),
-        _ => None,
-    }
-}
-
-/// The header's comment lines.
-pub(super) fn header(path: &ToolPath, o: &PostOptions, l: &Linearisation, f: &HeaderFacts) -> Vec<Op> {
+/// The header's comment lines, in `controller`'s words where they are about its setup.
+pub(super) fn header(
+    path: &ToolPath,
+    o: &PostOptions,
+    controller: &dyn Controller,
+    l: &Linearisation,
+    f: &HeaderFacts,
+) -> Vec<Op> {
     let u = o.units.mm();
     let w = o.units.word();
     let len = |x: f64| number(x / u, false);
@@ -53,12 +44,11 @@ pub(super) fn header(path: &ToolPath, o: &PostOptions, l: &Linearisation, f: &He
         ),
         format!("machine {}", o.machine.describe()),
     ];
-    lines.extend(mode_lines(o));
-    let feed_word = match (o.dialect, o.mode) {
-        (Dialect::Heidenhain, Mode::Tcp) => "F at the tip with FUNCTION TCPM F TCP",
-        (Dialect::Heidenhain, Mode::Machine) => "rotary moves get the F of X Y Z that keeps the feed at the tip",
-        _ => "inverse time G93 on rotary moves",
-    };
+    match o.mode {
+        Mode::Machine => lines.push(controller.machine_mode()),
+        Mode::Tcp => lines.extend(controller.tcp_mode(&o.machine)),
+    }
+    let feed_word = controller.feed_words(o.mode);
     lines.push(format!(
         "units {w}, {} {w} per model unit, feed {} {w}/min at the tip, {feed_word}, approach {} {w}/min",
         o.scale,
@@ -133,44 +123,6 @@ pub fn warning_text(w: &Warning) -> String {
     match w.line {
         Some(line) => format!("{text} (line {line})"),
         None => text,
-    }
-}
-
-/// What each mode assumes of the controller, in its words.
-fn mode_lines(o: &PostOptions) -> Vec<String> {
-    let m = &o.machine;
-    match (o.mode, o.dialect) {
-        (Mode::Machine, Dialect::LinuxCnc) => vec![
-            "mode: machine coordinates - X Y Z are the machine position of the tip, the work offset must be 0, the kinematics the identity (trivkins, or the identity type of a switchable kinematics)".into(),
-        ],
-        (Mode::Machine, _) => vec![
-            "mode: machine coordinates - X Y Z are the machine position of the tip, the work offset must be 0".into(),
-        ],
-        (Mode::Tcp, Dialect::LinuxCnc) => {
-            let mut v = vec![
-                "mode: tool-centre point - X Y Z the tip in part coordinates, LinuxCNC 2.9 has no G43.4: its switchable kinematics is switched to the tool-centre point with M68 E3 Q1 and M66 E0 L0, as M428 of its sim configs, and back with M68 E3 Q0".to_string(),
-            ];
-            match super::header::linuxcnc_kinematics(m) {
-                Some(kins) => {
-                    v.push(format!(
-                        "LinuxCNC INI: [KINS] KINEMATICS = {kins} sparm=identityfirst, [HAL] HALCMD = net :kinstype-select <= motion.analog-out-03 => motion.switchkins-type"
-                    ));
-                    v.push(format!(
-                        "LinuxCNC HAL: {kins} rot-point and offset pins set to this machine's pivots, its tool-offset pin from motion.tooloffset.z"
-                    ));
-                }
-                None => v.push(
-                    "LinuxCNC: no kinematics module of LinuxCNC 2.9 is this machine's tool-centre point - xyzac-trt-kins and xyzbc-trt-kins are tilting tables carrying a rotary table, 5axiskins a head with C carrying B - so it needs a switchable kinematics of its own whose type 1 is its tool-centre point".into(),
-                ),
-            }
-            v
-        }
-        (Mode::Tcp, Dialect::Heidenhain) => {
-            vec!["mode: tool-centre point - FUNCTION TCPM, X Y Z the tip in part coordinates".into()]
-        }
-        (Mode::Tcp, Dialect::Sinumerik) => vec![
-            "mode: tool-centre point - TRAORI, X Y Z the tip and A3 B3 C3 the tool axis in part coordinates".into(),
-        ],
     }
 }
 

@@ -15,11 +15,67 @@
 //! Heidenhain control ran these programs: they follow the TNC 640 user's manual for Klartext
 //! programming, checked by a test of their syntax only.
 
-use super::HEIDENHAIN_MAX_FEED;
+use super::controller::{Controller, Orientation, Travel};
 use super::{
     comment_lines, decimals, number, speed, Context, Coolant, Mode, Op, Rate, SpindleDirection, Target, Units, Words,
 };
+use crate::machine::Machine;
 use std::fmt::Write;
+
+/// The largest feed a Heidenhain TNC reads: its feed word has 5 places before the point and 3
+/// after (the TNC user's manual, "Input format and unit of TNC functions": feed rates 0 to
+/// 99 999.999 mm/min).
+pub const HEIDENHAIN_MAX_FEED: f64 = 99_999.999;
+
+/// A Heidenhain TNC (the TNC 640's Klartext).
+pub struct Heidenhain;
+
+impl Controller for Heidenhain {
+    fn name(&self) -> &str {
+        "a Heidenhain TNC"
+    }
+
+    /// `FUNCTION TCPM … AXIS POS`: the rotary axes' angles.
+    fn orientation(&self) -> Orientation {
+        Orientation::Angles
+    }
+
+    fn max_feed(&self) -> Option<f64> {
+        Some(HEIDENHAIN_MAX_FEED)
+    }
+
+    /// The tip's distance, but in machine coordinates on a block that turns a rotary axis: X Y
+    /// Z's distance, or where they stand still (under 0.01 mm) the rotary axes' degrees (module
+    /// documentation; [`feed_of`] writes the same word).
+    fn feed_measure(&self, mode: Mode, b: &Travel, units: Units) -> f64 {
+        let u = units.mm();
+        match mode {
+            Mode::Machine if b.turning => {
+                if b.linear >= 0.01 {
+                    b.linear / u
+                } else {
+                    b.turn
+                }
+            }
+            _ => b.distance / u,
+        }
+    }
+
+    fn feed_words(&self, mode: Mode) -> &'static str {
+        match mode {
+            Mode::Tcp => "F at the tip with FUNCTION TCPM F TCP",
+            Mode::Machine => "rotary moves get the F of X Y Z that keeps the feed at the tip",
+        }
+    }
+
+    fn tcp_mode(&self, _: &Machine) -> Vec<String> {
+        vec!["mode: tool-centre point - FUNCTION TCPM, X Y Z the tip in part coordinates".into()]
+    }
+
+    fn write(&self, ops: &[Op], context: &Context) -> String {
+        write(ops, context)
+    }
+}
 
 fn axes(t: &Target, c: &Context, words: Words) -> String {
     match (words, c.mode) {
@@ -59,7 +115,7 @@ pub fn feed_of(rate: &Rate, c: &Context) -> f64 {
 }
 
 /// The program text.
-pub fn write(ops: &[Op], c: &Context) -> String {
+fn write(ops: &[Op], c: &Context) -> String {
     let mut g = String::new();
     let mut n = 0;
     let mut block = |g: &mut String, s: &str| {

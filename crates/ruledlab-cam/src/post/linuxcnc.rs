@@ -7,106 +7,116 @@
 //! otherwise, `M30` at the end. Tool-centre-point mode switches a switchable kinematics to its
 //! tool-centre point type with `M68 E3 Q1` and `M66 E0 L0` and back with `M68 E3 Q0` (LinuxCNC's
 //! "Switchable Kinematics" chapter: the analog output 3 wired to `motion.switchkins-type`, the
-//! wait forcing the interpreter and motion into step; its sim configs' `M428`/`M429` do the same).
+//! wait forcing the interpreter and motion into step; its sim configs' `M428`/`M429` do the same);
+//! the kinematics interpolates the rotary angles. The program is ISO G-code (`iso.rs`).
 
-use super::{comment_lines, number, speed, Context, Coolant, Mode, Op, Rate, SpindleDirection, Target, Units, Words};
-use std::fmt::Write;
+use super::controller::{Controller, Orientation, MACHINE_MODE};
+use super::iso::{self, Iso};
+use super::{number, Context, Mode, Op, Units};
+use crate::machine::{AxisName, Carrier, Machine};
 
-fn axes(t: &Target, c: &Context, words: Words) -> String {
-    let rotary =
-        || format!(" {}{} {}{}", c.letters[0], number(t.rotary[0], false), c.letters[1], number(t.rotary[1], false));
-    match (words, c.mode) {
-        (Words::Xy, Mode::Machine) => format!("X{} Y{}", number(t.xyz.x, false), number(t.xyz.y, false)),
-        (Words::Z, Mode::Machine) => format!("Z{}", number(t.xyz.z, false)),
-        _ => format!("X{} Y{} Z{}{}", number(t.xyz.x, false), number(t.xyz.y, false), number(t.xyz.z, false), rotary()),
+/// LinuxCNC 2.9.
+pub struct LinuxCnc;
+
+/// The LinuxCNC 2.9 kinematics module that is this machine's tool-centre point, if one is:
+/// `xyzac-trt-kins` and `xyzbc-trt-kins` for a tilting table (A or B) carrying a rotary table
+/// (C), `5axiskins` for a bridge mill's head (C carrying B). LinuxCNC's "Switchable Kinematics"
+/// chapter lists these as switchable; its man page kins(9) describes them.
+pub fn linuxcnc_kinematics(m: &Machine) -> Option<&'static str> {
+    let [a, b] = &m.rotary;
+    match ((a.on, a.name), (b.on, b.name)) {
+        ((Carrier::Table, AxisName::A), (Carrier::Table, AxisName::C)) => Some("xyzac-trt-kins"),
+        ((Carrier::Table, AxisName::B), (Carrier::Table, AxisName::C)) => Some("xyzbc-trt-kins"),
+        ((Carrier::Head, AxisName::C), (Carrier::Head, AxisName::B)) => Some("5axiskins"),
+        _ => None,
     }
 }
 
-/// The program text.
-pub fn write(ops: &[Op], c: &Context) -> String {
-    let mut g = String::new();
-    let mut inverse = false;
-    let line = |g: &mut String, s: &str| {
-        let _ = writeln!(g, "{s}");
-    };
-    for op in ops {
-        match op {
-            Op::Comment(text) => {
-                for l in comment_lines(text) {
-                    line(&mut g, &format!("({l})"));
-                }
+impl Controller for LinuxCnc {
+    fn name(&self) -> &str {
+        "LinuxCNC"
+    }
+
+    fn orientation(&self) -> Orientation {
+        Orientation::Angles
+    }
+
+    fn feed_words(&self, _: Mode) -> &'static str {
+        "inverse time G93 on rotary moves"
+    }
+
+    fn machine_mode(&self) -> String {
+        format!(
+            "{MACHINE_MODE}, the kinematics the identity (trivkins, or the identity type of a switchable kinematics)"
+        )
+    }
+
+    fn tcp_mode(&self, m: &Machine) -> Vec<String> {
+        let mut v = vec![
+            "mode: tool-centre point - X Y Z the tip in part coordinates, LinuxCNC 2.9 has no G43.4: its switchable kinematics is switched to the tool-centre point with M68 E3 Q1 and M66 E0 L0, as M428 of its sim configs, and back with M68 E3 Q0".to_string(),
+        ];
+        match linuxcnc_kinematics(m) {
+            Some(kins) => {
+                v.push(format!(
+                    "LinuxCNC INI: [KINS] KINEMATICS = {kins} sparm=identityfirst, [HAL] HALCMD = net :kinstype-select <= motion.analog-out-03 => motion.switchkins-type"
+                ));
+                v.push(format!(
+                    "LinuxCNC HAL: {kins} rot-point and offset pins set to this machine's pivots, its tool-offset pin from motion.tooloffset.z"
+                ));
             }
-            Op::Start => line(
-                &mut g,
-                match c.units {
-                    Units::Mm => "G21 G90 G94 G17 G40 G49 G80",
-                    Units::Inch => "G20 G90 G94 G17 G40 G49 G80",
-                },
+            None => v.push(
+                "LinuxCNC: no kinematics module of LinuxCNC 2.9 is this machine's tool-centre point - xyzac-trt-kins and xyzbc-trt-kins are tilting tables carrying a rotary table, 5axiskins a head with C carrying B - so it needs a switchable kinematics of its own whose type 1 is its tool-centre point".into(),
             ),
-            Op::Tolerance { chordal, .. } => line(&mut g, &format!("G64 P{} Q0", number(*chordal, false))),
-            Op::ToleranceOff => {}
-            Op::WorkOffset(k) => line(&mut g, ["G54", "G55", "G56", "G57", "G58", "G59"][(*k as usize - 1).min(5)]),
-            Op::ToolChange { tool, spindle, direction } => {
-                line(&mut g, &format!("T{tool} M6"));
-                line(&mut g, &format!("G43 H{tool}"));
-                let m = match direction {
-                    SpindleDirection::Clockwise => "M3",
-                    SpindleDirection::CounterClockwise => "M4",
-                };
-                line(&mut g, &format!("S{} {m}", speed(*spindle)));
-            }
-            Op::RetractTop(z) => line(&mut g, &format!("G53 G0 Z{}", number(*z, false))),
-            Op::Rotate(r) => line(
-                &mut g,
-                &format!("G0 {}{} {}{}", c.letters[0], number(r[0], false), c.letters[1], number(r[1], false)),
-            ),
-            Op::Tcp(on) => {
-                let (comment, q) = if *on {
-                    ("(TCP on: switchable kinematics to its tool-centre point, type 1)", "M68 E3 Q1")
-                } else {
-                    ("(TCP off: switchable kinematics back to the identity, type 0)", "M68 E3 Q0")
-                };
-                line(&mut g, comment);
-                line(&mut g, q);
-                line(&mut g, "M66 E0 L0");
-            }
-            Op::Rapid(t, words) => {
-                if inverse {
-                    line(&mut g, "G94");
-                    inverse = false;
-                }
-                line(&mut g, &format!("G0 {}", axes(t, c, *words)));
-            }
-            Op::Feed(t, rate) => match rate {
-                Rate::PerMinute(f) => {
-                    let mode = if inverse { "G94 " } else { "" };
-                    inverse = false;
-                    line(&mut g, &format!("{mode}G1 {} F{}", axes(t, c, Words::All), number(*f, false)));
-                }
-                Rate::Simultaneous { minutes, .. } => {
-                    let mode = if inverse { "" } else { "G93 " };
-                    inverse = true;
-                    let f = 1.0 / minutes.max(1e-9);
-                    line(&mut g, &format!("{mode}G1 {} F{}", axes(t, c, Words::All), number(f, false)));
-                }
-            },
-            Op::Coolant(k) => line(
-                &mut g,
-                match k {
-                    Coolant::Flood => "M8",
-                    Coolant::Mist => "M7",
-                    Coolant::Off => "M9",
-                },
-            ),
-            Op::SpindleOff => line(&mut g, "M5"),
-            Op::End => {
-                if inverse {
-                    line(&mut g, "G94");
-                    inverse = false;
-                }
-                line(&mut g, "M30");
-            }
+        }
+        v
+    }
+
+    fn write(&self, ops: &[Op], context: &Context) -> String {
+        iso::program(self, ops, context)
+    }
+}
+
+impl Iso for LinuxCnc {
+    fn numbered(&self) -> bool {
+        false
+    }
+
+    fn comment(&self, text: &str) -> String {
+        format!("({text})")
+    }
+
+    fn start(&self, units: Units) -> &'static str {
+        match units {
+            Units::Mm => "G21 G90 G94 G17 G40 G49 G80",
+            Units::Inch => "G20 G90 G94 G17 G40 G49 G80",
         }
     }
-    g
+
+    fn tolerance(&self, chordal: f64, _: f64) -> String {
+        format!("G64 P{} Q0", number(chordal, false))
+    }
+
+    fn work_offset(&self, k: u32) -> &'static str {
+        ["G54", "G55", "G56", "G57", "G58", "G59"][(k as usize - 1).min(5)]
+    }
+
+    fn tool_change(&self, tool: u32) -> Vec<String> {
+        vec![format!("T{tool} M6"), format!("G43 H{tool}")]
+    }
+
+    fn retract(&self, z: &str) -> String {
+        format!("G53 G0 Z{z}")
+    }
+
+    fn tcp(&self, on: bool) -> Vec<&'static str> {
+        if on {
+            vec!["(TCP on: switchable kinematics to its tool-centre point, type 1)", "M68 E3 Q1", "M66 E0 L0"]
+        } else {
+            vec!["(TCP off: switchable kinematics back to the identity, type 0)", "M68 E3 Q0", "M66 E0 L0"]
+        }
+    }
+
+    fn g94_alone(&self) -> bool {
+        true
+    }
 }

@@ -1,10 +1,10 @@
 //! The steps of a program in no dialect yet (the module documentation of `post` says what they
 //! are). Everything is computed in millimetres and converted to the program's units at the end.
 
+use super::controller::{Orientation, Travel};
 use super::header::{header, HeaderFacts};
 use super::{
-    validate, Context, Coolant, Dialect, Mode, Numbering, Op, Plan, PostOptions, Rate, Target, Units, Warning, Words,
-    HEIDENHAIN_MAX_FEED,
+    validate, Context, Controller, Coolant, Mode, Numbering, Op, Plan, PostOptions, Rate, Target, Units, Warning, Words,
 };
 use crate::kinematics::{forward_kinematics, machine_position, tool_axis, Joints};
 use crate::linearise::{linearise_reporting, Interpolation, LineariseOptions, Linearised};
@@ -93,31 +93,44 @@ struct Job {
     safe_height: f64,
 }
 
-/// The steps of `path`'s program, in no dialect yet (see the module documentation).
+/// The steps of `path`'s program for the options' dialect, in no dialect yet (see the module
+/// documentation).
 #[cfg(test)]
 pub fn plan(path: &ToolPath, o: &PostOptions) -> Result<Plan> {
-    plan_reporting(path, o, &mut |_| {})
+    plan_reporting(path, o, o.dialect.controller(), &mut |_| {})
 }
 
-/// [`plan`] telling `progress` how far it is (0 to 1; the linearisation's rounds take most of
-/// the time, each halving what is left before 0.8).
-pub fn plan_reporting(path: &ToolPath, o: &PostOptions, progress: &mut dyn FnMut(f64)) -> Result<Plan> {
-    validate(o)?;
+/// [`plan`] for `controller` (how it interpolates, what its feed word reads), telling `progress`
+/// how far it is (0 to 1; the linearisation's rounds take most of the time, each halving what is
+/// left before 0.8).
+pub fn plan_reporting(
+    path: &ToolPath,
+    o: &PostOptions,
+    controller: &dyn Controller,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Plan> {
+    validate(o, controller)?;
     let namer = Namer(o.numbering.as_ref());
-    plan_named(path, o, &namer, progress).map_err(|e| namer.error(e))
+    plan_named(path, o, controller, &namer, progress).map_err(|e| namer.error(e))
 }
 
-fn plan_named(path: &ToolPath, o: &PostOptions, namer: &Namer, progress: &mut dyn FnMut(f64)) -> Result<Plan> {
+fn plan_named(
+    path: &ToolPath,
+    o: &PostOptions,
+    controller: &dyn Controller,
+    namer: &Namer,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Plan> {
     let m = &o.machine;
     let u = o.units.mm();
     let s = o.scale * u;
     let poses: Vec<Pose> = path.poses.iter().map(|p| Pose { tip: s * p.tip, axis: p.axis.normalize() }).collect();
     let job = job(path, o, &poses)?;
     let mut warnings = input_warnings(&poses, namer);
-    let how = match (o.mode, o.dialect) {
+    let how = match (o.mode, controller.orientation()) {
         (Mode::Machine, _) => Interpolation::Machine,
-        (Mode::Tcp, Dialect::Sinumerik) => Interpolation::TcpVector,
-        (Mode::Tcp, _) => Interpolation::TcpAngles,
+        (Mode::Tcp, Orientation::Vector) => Interpolation::TcpVector,
+        (Mode::Tcp, Orientation::Angles) => Interpolation::TcpAngles,
     };
     let lo = LineariseOptions {
         how,
@@ -154,13 +167,8 @@ fn plan_named(path: &ToolPath, o: &PostOptions, namer: &Namer, progress: &mut dy
         let distance = if tip > 1e-3 || !turning { tip } else { tip.max(job.cutter * a.axis.angle_between(b.axis)) };
         let linear = (target(b, &jb).xyz - target(a, &ja).xyz).length();
         let turn = DVec3::new(jb.rotary[0] - ja.rotary[0], jb.rotary[1] - ja.rotary[1], 0.0).length();
-        let word = match (o.dialect, o.mode) {
-            (Dialect::Heidenhain, Mode::Machine) if turning => {
-                Some((if linear >= 0.01 { linear / u } else { turn }, HEIDENHAIN_MAX_FEED))
-            }
-            (Dialect::Heidenhain, _) => Some((distance / u, HEIDENHAIN_MAX_FEED)),
-            _ => None,
-        };
+        let travel = Travel { turning, distance, linear, turn };
+        let word = controller.max_feed().map(|max| (controller.feed_measure(o.mode, &travel, o.units), max));
         needs.push(BlockNeed { from: ja, to: jb, distance, word });
         turns.push((turning, distance, linear, turn));
     }
@@ -217,7 +225,7 @@ fn plan_named(path: &ToolPath, o: &PostOptions, namer: &Namer, progress: &mut dy
         };
         ops.push(Op::Feed(target(&lin.poses[i], &jb), rate));
         if let Some(after) = lin.unwound[i] {
-            ops.extend(unwind(m, o, &job, &lin, i, after, namer, path_pose(i))?);
+            ops.extend(unwind(m, o, controller.orientation(), &job, &lin, i, after, namer, path_pose(i))?);
         }
     }
     let last = &lin.poses[n - 1];
@@ -261,7 +269,7 @@ fn plan_named(path: &ToolPath, o: &PostOptions, namer: &Namer, progress: &mut dy
         unwinds: lin.unwound.iter().filter(|x| x.is_some()).count(),
         warnings: &warnings,
     };
-    let mut all = header(path, o, &lin.report, &facts);
+    let mut all = header(path, o, controller, &lin.report, &facts);
     all.extend(ops);
     let ops: Vec<Op> = all.into_iter().map(|op| in_units(op, 1.0 / u)).collect();
     let context = Context {
@@ -522,6 +530,7 @@ fn home_of(m: &Machine, rotary: [f64; 2]) -> [f64; 2] {
 fn unwind(
     m: &Machine,
     o: &PostOptions,
+    orientation: Orientation,
     job: &Job,
     lin: &Linearised,
     i: usize,
@@ -543,9 +552,10 @@ fn unwind(
         if !within_travel(m, xyz) {
             break;
         }
-        // the turn: X Y Z held (machine mode, and Sinumerik with its transformation off), or
-        // the tip held in the part (the other controllers' tool-centre point)
-        let tip_held = o.mode == Mode::Tcp && o.dialect != Dialect::Sinumerik;
+        // the turn: X Y Z held (machine mode, and a controller given the tool axis as a vector,
+        // with its transformation off), or the tip held in the part (the others' tool-centre
+        // point)
+        let tip_held = o.mode == Mode::Tcp && orientation == Orientation::Angles;
         let clear = (0..=MOTION_SAMPLES).all(|k| {
             let s = k as f64 / MOTION_SAMPLES as f64;
             let r = [before[0] + s * (after[0] - before[0]), before[1] + s * (after[1] - before[1])];
@@ -587,7 +597,8 @@ fn unwind(
         Op::Feed(at(near, before), Rate::PerMinute(job.approach)),
         Op::Rapid(at(point, before), Words::All),
     ];
-    let transformation_off = o.mode == Mode::Tcp && o.dialect == Dialect::Sinumerik;
+    // a controller given the tool axis as a vector cannot be told a turn by whole turns
+    let transformation_off = o.mode == Mode::Tcp && orientation == Orientation::Vector;
     if transformation_off {
         ops.push(Op::Tcp(false));
     }

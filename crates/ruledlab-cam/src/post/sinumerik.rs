@@ -10,11 +10,16 @@
 //! in the workpiece frame) and `ORIVECT` (the axis on a great circle), the tool axis written as
 //! the vector `A3= B3= C3=`; `TRAFOOF` ends it. No Sinumerik ran these programs: they follow
 //! Siemens' programming manual (fundamentals and job planning), checked by a test of their
-//! syntax only.
+//! syntax only. The program is ISO G-code (`iso.rs`).
 
-use super::{comment_lines, number, speed, Context, Coolant, Mode, Op, Rate, SpindleDirection, Target, Units, Words};
+use super::controller::{Controller, Orientation};
+use super::iso::{self, Iso};
+use super::{number, Context, Mode, Op, Target, Units};
+use crate::machine::Machine;
 use crate::tolerance::GCODE_VECTOR_DECIMALS;
-use std::fmt::Write;
+
+/// Siemens Sinumerik 840D.
+pub struct Sinumerik;
 
 fn vector(x: f64) -> String {
     let s = format!("{x:.GCODE_VECTOR_DECIMALS$}");
@@ -25,112 +30,83 @@ fn vector(x: f64) -> String {
     }
 }
 
-fn axes(t: &Target, c: &Context, words: Words) -> String {
-    let xyz = format!("X{} Y{} Z{}", number(t.xyz.x, false), number(t.xyz.y, false), number(t.xyz.z, false));
-    match (words, c.mode) {
-        (Words::Xy, Mode::Machine) => return format!("X{} Y{}", number(t.xyz.x, false), number(t.xyz.y, false)),
-        (Words::Z, Mode::Machine) => return format!("Z{}", number(t.xyz.z, false)),
-        _ => {}
+impl Controller for Sinumerik {
+    fn name(&self) -> &str {
+        "a Sinumerik 840D"
     }
-    match c.mode {
-        Mode::Tcp => format!("{xyz} A3={} B3={} C3={}", vector(t.axis.x), vector(t.axis.y), vector(t.axis.z)),
-        Mode::Machine => format!(
-            "{xyz} {}{} {}{}",
-            c.letters[0],
-            number(t.rotary[0], false),
-            c.letters[1],
-            number(t.rotary[1], false)
-        ),
+
+    fn orientation(&self) -> Orientation {
+        Orientation::Vector
+    }
+
+    fn feed_words(&self, _: Mode) -> &'static str {
+        "inverse time G93 on rotary moves"
+    }
+
+    fn tcp_mode(&self, _: &Machine) -> Vec<String> {
+        vec!["mode: tool-centre point - TRAORI, X Y Z the tip and A3 B3 C3 the tool axis in part coordinates".into()]
+    }
+
+    fn write(&self, ops: &[Op], context: &Context) -> String {
+        iso::program(self, ops, context)
     }
 }
 
-/// The program text.
-pub fn write(ops: &[Op], c: &Context) -> String {
-    let mut g = String::new();
-    let _ = writeln!(g, "%_N_{}_MPF", c.name);
-    let _ = writeln!(g, ";$PATH=/_N_MPF_DIR");
-    let mut n = 0;
-    let mut inverse = false;
-    let mut block = |g: &mut String, s: &str| {
-        n += 10;
-        let _ = writeln!(g, "N{n} {s}");
-    };
-    for op in ops {
-        match op {
-            Op::Comment(text) => {
-                for l in comment_lines(text) {
-                    let _ = writeln!(g, "; {l}");
-                }
-            }
-            Op::Start => block(
-                &mut g,
-                match c.units {
-                    Units::Mm => "G17 G71 G90 G94 G40 G64",
-                    Units::Inch => "G17 G700 G90 G94 G40 G64",
-                },
-            ),
-            Op::Tolerance { chordal, angular } => {
-                let call = if *angular > 0.0 {
-                    format!("CYCLE832({},11,{})", number(*chordal, false), number(*angular, false))
-                } else {
-                    format!("CYCLE832({},1,1)", number(*chordal, false))
-                };
-                block(&mut g, &call);
-            }
-            Op::ToleranceOff => block(&mut g, "CYCLE832(0,0,1)"),
-            Op::WorkOffset(k) => block(&mut g, ["G54", "G55", "G56", "G57", "G505", "G506"][(*k as usize - 1).min(5)]),
-            Op::ToolChange { tool, spindle, direction } => {
-                block(&mut g, &format!("T{tool} D1 M6"));
-                let m = match direction {
-                    SpindleDirection::Clockwise => "M3",
-                    SpindleDirection::CounterClockwise => "M4",
-                };
-                block(&mut g, &format!("S{} {m}", speed(*spindle)));
-            }
-            Op::RetractTop(z) => block(&mut g, &format!("G0 SUPA Z{}", number(*z, false))),
-            Op::Rotate(r) => block(
-                &mut g,
-                &format!("G0 {}{} {}{}", c.letters[0], number(r[0], false), c.letters[1], number(r[1], false)),
-            ),
-            Op::Tcp(true) => block(&mut g, "TRAORI ORIWKS ORIVECT"),
-            Op::Tcp(false) => block(&mut g, "TRAFOOF"),
-            Op::Rapid(t, words) => {
-                let mode = if inverse { "G94 " } else { "" };
-                inverse = false;
-                block(&mut g, &format!("{mode}G0 {}", axes(t, c, *words)));
-            }
-            Op::Feed(t, rate) => match rate {
-                Rate::PerMinute(f) => {
-                    let mode = if inverse { "G94 " } else { "" };
-                    inverse = false;
-                    block(&mut g, &format!("{mode}G1 {} F{}", axes(t, c, Words::All), number(*f, false)));
-                }
-                Rate::Simultaneous { minutes, .. } => {
-                    let mode = if inverse { "" } else { "G93 " };
-                    inverse = true;
-                    let f = 1.0 / minutes.max(1e-9);
-                    block(&mut g, &format!("{mode}G1 {} F{}", axes(t, c, Words::All), number(f, false)));
-                }
-            },
-            Op::Coolant(k) => block(
-                &mut g,
-                match k {
-                    Coolant::Flood => "M8",
-                    Coolant::Mist => "M7",
-                    Coolant::Off => "M9",
-                },
-            ),
-            Op::SpindleOff => block(&mut g, "M5"),
-            Op::End => {
-                if inverse {
-                    block(&mut g, "G94");
-                    inverse = false;
-                }
-                block(&mut g, "M30");
-            }
+impl Iso for Sinumerik {
+    fn preamble(&self, c: &Context) -> Vec<String> {
+        vec![format!("%_N_{}_MPF", c.name), ";$PATH=/_N_MPF_DIR".into()]
+    }
+
+    fn numbered(&self) -> bool {
+        true
+    }
+
+    fn comment(&self, text: &str) -> String {
+        format!("; {text}")
+    }
+
+    fn start(&self, units: Units) -> &'static str {
+        match units {
+            Units::Mm => "G17 G71 G90 G94 G40 G64",
+            Units::Inch => "G17 G700 G90 G94 G40 G64",
         }
     }
-    g
+
+    fn tolerance(&self, chordal: f64, angular: f64) -> String {
+        if angular > 0.0 {
+            format!("CYCLE832({},11,{})", number(chordal, false), number(angular, false))
+        } else {
+            format!("CYCLE832({},1,1)", number(chordal, false))
+        }
+    }
+
+    fn tolerance_off(&self) -> Option<&'static str> {
+        Some("CYCLE832(0,0,1)")
+    }
+
+    fn work_offset(&self, k: u32) -> &'static str {
+        ["G54", "G55", "G56", "G57", "G505", "G506"][(k as usize - 1).min(5)]
+    }
+
+    fn tool_change(&self, tool: u32) -> Vec<String> {
+        vec![format!("T{tool} D1 M6")]
+    }
+
+    fn retract(&self, z: &str) -> String {
+        format!("G0 SUPA Z{z}")
+    }
+
+    fn tcp(&self, on: bool) -> Vec<&'static str> {
+        vec![if on { "TRAORI ORIWKS ORIVECT" } else { "TRAFOOF" }]
+    }
+
+    fn tcp_axis(&self, t: &Target, _: &Context) -> String {
+        format!("A3={} B3={} C3={}", vector(t.axis.x), vector(t.axis.y), vector(t.axis.z))
+    }
+
+    fn g94_alone(&self) -> bool {
+        false
+    }
 }
 
 #[cfg(test)]

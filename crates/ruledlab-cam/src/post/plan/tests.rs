@@ -1,5 +1,5 @@
 use super::*;
-use crate::post::{Holder, Numbering, SpindleDirection, Units};
+use crate::post::{Dialect, Holder, Numbering, SpindleDirection, Units};
 use crate::Tool;
 
 /// A path on table-table-ac with every kind of block, scale 2, tool length 25 (50 mm): the tool
