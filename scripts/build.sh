@@ -44,3 +44,4 @@ node scripts/scorm-schemas.mjs
 node scripts/view-types.mjs
 node scripts/onefile.mjs
 node scripts/web.mjs
+node scripts/sizes.mjs

@@ -16,6 +16,7 @@ export const BLOCKS = /** @type {const} */ ({
   'bench-page': 'internals/page-speed.md',
   'bench-drag': 'internals/page-speed.md',
   'bench-lighthouse': 'internals/page-speed.md',
+  sizes: 'internals/sizes.md',
 });
 
 /** @typedef {keyof typeof BLOCKS} BlockName */

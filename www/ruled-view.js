@@ -343,7 +343,7 @@ export class RuledView extends HTMLElement {
       lang,
       editable: this.editable,
       // Leave, where the attribute allows it: the scene without the exercise
-      onLeaveTask: () => this.stage?.openTask(null),
+      onLeaveTask: () => this.stage?.leaveExercise(),
       mayLeaveTask: () => this.hasAttribute('leave'),
       solutionRule: () => readSolutionRule(this.getAttribute('solution')) ?? DEFAULT_SOLUTION_RULE,
       onEditAsData: (data) => {

@@ -139,7 +139,8 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {Float32Array} [keepClear]   segments (6 floats each) labels must not cover
  * @property {Readout[]} [readouts]
  * @property {string} description    what is shown, in words (for screen readers and the figure caption)
- * @property {() => SVGElement} [figure]   a plot beside the view (built with the DOM)
+ * @property {() => SVGElement} [diagram]   a plot beside the view (built with the DOM)
+ * @property {() => SVGElement} [figure]   deprecated: the earlier name of `diagram`
  * @property {Download[]} [downloads]
  * @property {{segments: Float64Array, grid?: {rows: number, cols: number}}} [data]   for export
  * @property {string} [note]          a remark shown under the readout (e.g. the level of detail)
@@ -383,4 +384,14 @@ export { bounds } from './math.js';
 /** A Float32Array copy of any numbers (no copy when already f32). */
 export function f32(/** @type {ArrayLike<number>} */ data) {
   return data instanceof Float32Array ? data : new Float32Array(data);
+}
+
+/**
+ * The diagram a scene built beside the view, if any (`Built.diagram`, or its earlier name
+ * `figure` from a scene of one's own written before).
+ * @param {Built} built
+ * @returns {(() => SVGElement) | undefined}
+ */
+export function diagramOf(built) {
+  return built.diagram ?? built.figure;
 }

@@ -24,7 +24,7 @@ import { appendRich } from './ui/richtext.js';
 import { refineInWorker } from './compute.js';
 import { copyInput, inputOf } from './edit/input.js';
 import { stageElements } from './stage/elements.js';
-import { enterScene, openScene, openTask } from './stage/open.js';
+import { enterScene, leaveExercise, openView } from './stage/open.js';
 import { wireToolbar, labelToolbar } from './stage/toolbar.js';
 import { arrange, covered } from './stage/layout.js';
 import { Announcer } from './stage/announcer.js';
@@ -393,15 +393,30 @@ export class Stage {
   }
 
   /**
-   * Opens an exercise (task/format.js) in `scene`: its start state, what it lets change (the
-   * rest held), what it hides; `state` restores a reader's progress (parameters the exercise lets
+   * Opens an exercise (task/format.js): its scene at its start, what it lets change (the rest
+   * held), what it hides; `state` restores a reader's progress (parameters the exercise lets
    * change, an edit where handles may move). null leaves the exercise (the scene stays).
+   * (stage/open.js's openView opens it, as it opens everything.)
    * @param {import('./task/format.js').Task | null} task
-   * @param {import('./scene.js').Scene | null} [scene]
-   * @param {Parameters<typeof openTask>[3]} [state]
+   * @param {import('./scene.js').Scene | null} [_scene]   unused: the exercise names its scene
+   * @param {{params?: import('./scene.js').Params, input?: import('./scene.js').Input | null, camera?: number[] | null, notes?: Notes, attempt?: import('./task/attempt.js').Attempt | null}} [state]
    */
-  openTask(task, scene = null, state = {}) {
-    return openTask(this, task, scene, state);
+  async openTask(task, _scene = null, state = {}) {
+    if (!task) return leaveExercise(this);
+    await openView(this, {
+      task: task.drawn?.from ?? task,
+      seed: task.drawn?.seed ?? null,
+      progress: () => state.params ?? {},
+      taskInput: state.input ?? null,
+      camera: state.camera ?? null,
+      notes: state.notes,
+      attempt: state.attempt ?? null,
+    });
+  }
+
+  /** Leaves the exercise shown (if any): the scene stays as it is, with nothing held. */
+  leaveExercise() {
+    leaveExercise(this);
   }
 
   /** Back to the exercise's start (its parameters and edit). */
@@ -439,13 +454,15 @@ export class Stage {
   }
 
   /**
-   * Opens a scene with `params` (missing ones take their defaults).
+   * Opens a scene with `params` (missing ones take their defaults), leaving an exercise shown;
+   * resolves to whether it is shown (false where an opening begun meanwhile took the stage).
    * @param {import('./scene.js').Scene} scene
    * @param {import('./scene.js').Params} params
    * @param {OpenOptions} [options]
    */
-  open(scene, params, options = {}) {
-    return openScene(this, scene, params, options);
+  async open(scene, params, options = {}) {
+    await openView(this, { scene, params, ...options });
+    return this.scene === scene;
   }
 
   /**

@@ -13,7 +13,7 @@ import { TriangleMesh, prepare as prepareMeshes } from './gl/mesh.js';
 import { STYLES, rgb, rgba, PALETTE } from './theme.js';
 import { appendRich } from './ui/richtext.js';
 import { mark, measured } from './timing.js';
-import { FrameTarget } from './gl/target.js';
+import { Framebuffer } from './gl/framebuffer.js';
 import { finished } from './gl/fence.js';
 import { afterPaint } from './schedule.js';
 
@@ -158,11 +158,11 @@ export class Viewer {
     this.pending = false;
     /** @internal Whether the first figure has been readied (prepareFirst). */
     this.warm = false;
-    /** @internal Bumped whenever the batches change: part of the key of the frame in the target. */
+    /** @internal Bumped whenever the batches change: part of the key of the frame in the framebuffer. */
     this.version = 0;
-    /** @internal The key of the frame the target holds (drawFrame). */
+    /** @internal The key of the frame the framebuffer holds (drawFrame). */
     this.drawn = '';
-    /** @internal Whether the last frame was drawn straight onto the canvas (no target of its size). */
+    /** @internal Whether the last frame was drawn straight onto the canvas (no framebuffer of its size). */
     this.direct = false;
     /** @internal Whether `built` has changed since the batches were made (they are made at the next frame). */
     this.stale = false;
@@ -177,8 +177,8 @@ export class Viewer {
     /** @internal @type {Array<(viewProj: Float32Array) => void>} what is placed over the view after each frame (the handles) */
     this.overlays = [];
     const gl = canvas.getContext('webgl2', {
-      // the frame target is multisampled (gl/target.js): the canvas's own buffer is not; its
-      // depth buffer serves a frame too large for a target (drawn straight onto the canvas)
+      // the framebuffer is multisampled (gl/framebuffer.js): the canvas's own buffer is not; its
+      // depth buffer serves a frame too large for the framebuffer (drawn straight onto the canvas)
       antialias: false,
       depth: true,
       alpha: false,
@@ -191,7 +191,7 @@ export class Viewer {
     /** @internal */
     this.gl = gl;
     /** @internal The multisampled framebuffer frames are drawn into, then resolved onto the canvas. */
-    this.target = new FrameTarget(gl);
+    this.framebuffer = new Framebuffer(gl);
     // the shaders compile on the GPU while the core loads and the first scene computes
     for (const prepare of [prepareLines, preparePoints, prepareMeshes]) prepare(gl);
     /** @internal */
@@ -200,7 +200,7 @@ export class Viewer {
       this.lost = true;
       this.batches = [];
       this.light = [];
-      this.target.forget();
+      this.framebuffer.forget();
       this.drawn = '';
     };
     /** @internal */
@@ -329,9 +329,9 @@ export class Viewer {
 
   /**
    * @internal Readies the first frame of a figure without blocking the page: the canvas sized
-   * (and cleared, a frame of its own), then the figure drawn into the frame target while the GPU's
+   * (and cleared, a frame of its own), then the figure drawn into the framebuffer while the GPU's
    * work — building the programs' code for their first draw, and the drawing — is waited for
-   * between tasks (gl/fence.js). The frame that shows it resolves the target onto the canvas and
+   * between tasks (gl/fence.js). The frame that shows it resolves the framebuffer onto the canvas and
    * waits for nothing. On software WebGL that work took 60–200 ms here, every millisecond of it
    * blocking the page when the browser presented a frame still being drawn. Once per viewer.
    */
@@ -354,15 +354,15 @@ export class Viewer {
   }
 
   /**
-   * @internal Draws the batches into the frame target (the stand-ins where `moving`), unless it
+   * @internal Draws the batches into the framebuffer (the stand-ins where `moving`), unless it
    * holds this very frame already (prepareFirst); the canvas is not touched.
    */
   drawFrame(/** @type {Frame} */ frame, /** @type {boolean} */ moving) {
     const { gl } = this;
     const key = `${frame.width} ${frame.height} ${frame.dpr} ${moving} ${this.version} ${frame.viewProj.join()}`;
-    if (key === this.drawn && this.target.buffers) return;
+    if (key === this.drawn && this.framebuffer.buffers) return;
     // (a size the GPU cannot make a framebuffer of is drawn straight onto the canvas, unresolved)
-    this.direct = !this.target.bind(frame.width, frame.height);
+    this.direct = !this.framebuffer.bind(frame.width, frame.height);
     gl.viewport(0, 0, frame.width, frame.height);
     this.setState(this.background);
     measured('ruledlab:draw', () => this.drawBatches(frame, moving));
@@ -379,7 +379,7 @@ export class Viewer {
     }
   }
 
-  /** @internal The state every frame is drawn with, the target cleared to `background`. */
+  /** @internal The state every frame is drawn with, the framebuffer cleared to `background`. */
   setState(/** @type {number[]} */ background) {
     const { gl } = this;
     gl.clearColor(background[0], background[1], background[2], 1);
@@ -432,7 +432,7 @@ export class Viewer {
     this.lastFrameAt = now;
     this.sizeCanvas(frame);
     this.drawFrame(frame, moving);
-    if (!this.direct) this.target.resolve();
+    if (!this.direct) this.framebuffer.resolve();
     this.placeLabels(frame.viewProj);
     for (const overlay of this.overlays) overlay(frame.viewProj);
     this.frames++;
@@ -520,7 +520,7 @@ export class Viewer {
     clearTimeout(this.restTimer);
     this.batches = [];
     this.light = [];
-    this.target.dispose();
+    this.framebuffer.dispose();
     forgetPrograms(gl);
     this.resize.disconnect();
     this.canvas.removeEventListener('webglcontextlost', this.onLost);

@@ -1,5 +1,5 @@
 // The page's modules keep their places (ARCHITECTURE.md): no scene imports another scene (what
-// two share lives in a module named for what it is: figures/, catalogue.js, …), the figures and
+// two share lives in a module named for what it is: layers/, catalogue.js, …), the layers and
 // everything below them import no scene, the module graph has no cycle, nothing the package
 // ships (everything but www/page/) imports the page's shell, and every file stays small enough
 // to read in one sitting.
@@ -34,7 +34,7 @@ function graph() {
   return out;
 }
 
-test('no scene imports another scene; figures and what is below them import no scene', () => {
+test('no scene imports another scene; layers and what is below them import no scene', () => {
   const g = graph();
   assert.ok(g.size > 40, `only ${g.size} modules`);
   const wrong = [];
@@ -45,7 +45,7 @@ test('no scene imports another scene; figures and what is below them import no s
       if (!m.startsWith('scenes/') && d.startsWith('scenes/') && d !== 'scenes/index.js')
         wrong.push(`${m} imports the scene ${d}`);
       if (
-        (m.startsWith('figures/') || m.startsWith('gl/') || m.startsWith('ui/') || m.startsWith('i18n/')) &&
+        (m.startsWith('layers/') || m.startsWith('gl/') || m.startsWith('ui/') || m.startsWith('i18n/')) &&
         d === 'scenes/index.js'
       )
         wrong.push(`${m} imports the scene list`);
@@ -94,16 +94,16 @@ test('no file of www/ over 800 lines', () => {
   assert.deepEqual(long, []);
 });
 
-test('scenes and figures ask the core for geometry: no roots, angles or vector helpers of their own', () => {
+test('scenes and layers ask the core for geometry: no roots, angles or vector helpers of their own', () => {
   // the few uses that are not geometry of the paper, each with its reason
   const allowed = new Map([
     ['scenes/formula.js', 'Math.hypot of the bounding box: how far the camera stands back'],
     ['scenes/lines.js', 'Math.sin/cos: a fixed pseudo-random wiggle of the demo input, not a formula'],
-    ['figures/isometry.js', "math.js's multiply: the 4×4 frame of the conoidal model, as WebGL takes it"],
+    ['layers/isometry.js', "math.js's multiply: the 4×4 frame of the conoidal model, as WebGL takes it"],
   ]);
   const wrong = [];
   for (const [m, deps] of graph()) {
-    if (!m.startsWith('scenes/') && !m.startsWith('figures/')) continue;
+    if (!m.startsWith('scenes/') && !m.startsWith('layers/')) continue;
     const text = readFileSync(join(WWW, m), 'utf8');
     const uses = [
       ...text.matchAll(/Math\.(sqrt|hypot|atan2?|acos|asin|cos|sin|tan|cbrt)\b/g),
@@ -116,9 +116,14 @@ test('scenes and figures ask the core for geometry: no roots, angles or vector h
   for (const m of allowed.keys()) assert.ok(graph().has(m), `${m} is gone: take it off the list`);
 });
 
-test('ARCHITECTURE.md names only files that exist', () => {
+test('ARCHITECTURE.md and the book’s internals name only files that exist', () => {
   const ROOT = fileURLToPath(new URL('../..', import.meta.url));
-  const text = readFileSync(join(ROOT, 'ARCHITECTURE.md'), 'utf8');
+  const text = [
+    'ARCHITECTURE.md',
+    ...readdirSync(join(ROOT, 'docs/src/internals')).map((f) => `docs/src/internals/${f}`),
+  ]
+    .map((f) => readFileSync(join(ROOT, f), 'utf8'))
+    .join('\n');
   // paths in backticks, and the file names of the diagrams (relative to www/ there)
   const names = new Set([
     ...[...text.matchAll(/`([\w./-]+\.(?:js|mjs|rs|md|sh|json|toml|html))`/g)].map((m) => m[1]),
@@ -180,4 +185,63 @@ test('only the store writes the state: no module assigns a field of a state or r
     const line = code.split('\n').find((l) => write.test(l));
     assert.equal(line, undefined, `${m} writes the state: ${line?.trim()}`);
   }
+});
+
+// One name per thing. A figure is a picture (the view's, the paper's, a printed one); what two
+// scenes draw alike are layers (www/layers/) and a picture beside the view a diagram
+// (Built.diagram, www/diagrams/); a task is an exercise, and the browser's unit of work a turn
+// (schedule.js's nextTurn); the view's frame is drawn into a framebuffer (gl/framebuffer.js), no
+// longer a "frame target" beside the snap targets (the camera's target, the point it looks at,
+// and the machinist's target curve keep the names their fields give them); the link's codec is
+// link.js. The old names are gone from the code and the book (the deprecated exports of index.js
+// and the changelog aside).
+const OLD_NAMES = [
+  [/www\/figures\/|'\.\.?\/figures\//, 'www/figures/ (now www/layers/)'],
+  [
+    /\b(?:congruence|convergence|focal|isometry|striction|subdivision|deviation)Figure\b/,
+    'xFigure (now xLayers, deviationDiagram)',
+  ],
+  [/\bFrameTarget\b|gl\/target\.js/, 'FrameTarget, gl/target.js (now Framebuffer, gl/framebuffer.js)'],
+  [/\bnextTask\b/, 'nextTask (now nextTurn)'],
+  [/\bopenExercise\b|\bopenScene\b/, 'openExercise, openScene (now openView)'],
+  [
+    /[^\w-]state\.js\b|\breadState\b|\bwriteState\b|\bViewState\b/,
+    'state.js, readState, writeState, ViewState (now link.js, readLink, writeLink, LinkState)',
+  ],
+  [/\bbuilt\.figure\b/, 'built.figure (now diagramOf(built))'],
+];
+
+test('the old names are gone', () => {
+  const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+  /** @type {(dir: string) => string[]} */
+  const walk = (dir) =>
+    readdirSync(join(ROOT, dir)).flatMap((name) => {
+      const path = `${dir}/${name}`;
+      // (what a build or an install writes is not read)
+      if (['build', 'dist', 'node_modules', 'target', '.venv', 'corpus', 'artifacts'].includes(name)) return [];
+      if (statSync(join(ROOT, path)).isDirectory()) return walk(path);
+      return /\.(js|mjs|rs|md|html|py)$/.test(name) ? [path] : [];
+    });
+  const files = [
+    ...['www', 'src', 'crates', 'docs/src', 'tests', 'python', 'examples', 'scripts'].flatMap(walk),
+    'ARCHITECTURE.md',
+    'README.md',
+  ];
+  const found = [];
+  for (const file of files) {
+    if (file === 'tests/node/architecture.test.mjs' || file === 'docs/src/changelog.md') continue;
+    const lines = readFileSync(join(ROOT, file), 'utf8').split('\n');
+    for (const [i, line] of lines.entries()) {
+      // the deprecated exports keep the old names for this release
+      if (file === 'www/index.js' && /deprecated|readLink as readState|writeLink as writeState/.test(line)) continue;
+      if (
+        file === 'www/scene.js' &&
+        /deprecated: the earlier name of `diagram`|built\.diagram \?\? built\.figure/.test(line)
+      )
+        continue;
+      for (const [re, what] of OLD_NAMES) if (re.test(line)) found.push(`${file}:${i + 1}: ${what}`);
+    }
+  }
+  assert.ok(files.length > 400, `only ${files.length} files read`);
+  assert.deepEqual(found, []);
 });

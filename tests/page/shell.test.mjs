@@ -199,7 +199,7 @@ for (const [which, base] of [
 }
 
 // The first figure is readied off the page's tasks (viewer.js's prepareFirst): drawn into the
-// frame target while the GPU's work is waited for between tasks, so that the frame showing it
+// framebuffer while the GPU's work is waited for between tasks, so that the frame showing it
 // only resolves the target onto the canvas — and shows what a frame drawn anew shows.
 test('the first frame of a view resolves the figure drawn before it, and shows what a new frame draws', async () => {
   const page = await browsers.desktop.newPage();
@@ -232,8 +232,8 @@ test('the first frame of a view resolves the figure drawn before it, and shows w
     };
     try {
       let draws = 0;
-      const bind = v.target.bind.bind(v.target);
-      v.target.bind = (/** @type {number} */ w, /** @type {number} */ h) => {
+      const bind = v.framebuffer.bind.bind(v.framebuffer);
+      v.framebuffer.bind = (/** @type {number} */ w, /** @type {number} */ h) => {
         draws++;
         return bind(w, h);
       };
@@ -255,8 +255,8 @@ test('the first frame of a view resolves the figure drawn before it, and shows w
       const gl = v.gl;
       const largest = Math.min(gl.getParameter(gl.MAX_RENDERBUFFER_SIZE), ...gl.getParameter(gl.MAX_VIEWPORT_DIMS));
       const counted = draws;
-      const refused = v.target.bind(largest + 1, 4) === false && gl.getParameter(gl.FRAMEBUFFER_BINDING) === null;
-      v.target.bind = () => false;
+      const refused = v.framebuffer.bind(largest + 1, 4) === false && gl.getParameter(gl.FRAMEBUFFER_BINDING) === null;
+      v.framebuffer.bind = () => false;
       v.render();
       const straight = canvas.toDataURL();
       const direct = await drawn(straight);

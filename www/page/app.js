@@ -5,7 +5,7 @@
 // module puts them together; the package's `ruledlab/view` ships none of www/page/.
 import { liveObjects } from '../../pkg/ruledlab.js';
 import { start, memoryBytes } from '../core.js';
-import { afterPaint, nextTask } from '../schedule.js';
+import { afterPaint, nextTurn } from '../schedule.js';
 import { Stage } from '../stage.js';
 import { SCENES } from '../scenes/index.js';
 import { findPreset } from '../paper.js';
@@ -18,7 +18,7 @@ import { storedCourse, storedHash } from './onefile.js';
 import { stored } from '../platform.js';
 import { onChosen, pageChrome, plainTitle } from './chrome.js';
 import { dataPanel, parseStored, STORED } from './data-panel.js';
-import { importParams } from '../figures/job.js';
+import { importParams } from '../layers/job.js';
 import { pageAddress } from './address.js';
 import { keepInput, keptInput } from './stored-input.js';
 import { readParams } from '../scene.js';
@@ -31,7 +31,7 @@ import { taskErrorText } from '../task/words.js';
 import { encodeInput } from '../edit/input.js';
 import { DEFAULT_SOLUTION_RULE, readSolutionRule } from '../task/solution-rule.js';
 import { MAX_SOLUTION_AFTER } from '../limits.js';
-import { openExercise, openView } from '../stage/open.js';
+import { openView } from '../stage/open.js';
 import { lazy } from './lazy.js';
 
 /**
@@ -59,7 +59,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   /** What the address asks for, as read last (the link's codec, link.js); the view's state is the stage's. @type {import('../link.js').LinkState} */
   let asked;
   let lang = pickLanguage(link.get('lang'));
-  await Promise.all([loadLanguage(lang), nextTask()]);
+  await Promise.all([loadLanguage(lang), nextTurn()]);
   let i18n = translator(lang);
 
   // "Loading …" (boot.js) goes over the view while the core loads, and says why if it cannot start
@@ -83,7 +83,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       seed: stage.task?.drawn ? String(stage.task.drawn.seed) : null,
     };
   const address = pageAddress({ oneFile, state: shown });
-  await nextTask();
+  await nextTurn();
   // (the viewer's WebGL context and the compilation of its shaders start here)
   const stage = new Stage(chrome.main, {
     lang,
@@ -119,10 +119,9 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       });
     },
     onLeaveTask: () => {
-      stage.openTask(null).then(() => {
-        address.save('push');
-        localize();
-      });
+      stage.leaveExercise();
+      address.save('push');
+      localize();
     },
   });
   doc.body.append(share);
@@ -133,7 +132,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     const attempt = attemptOf(stage);
     if (attempt && stage.task && !setup) keepAttempt(stage.task.id, attempt);
   };
-  await nextTask();
+  await nextTurn();
 
   /** Opens `scene` (with `params` and `options`), then records it as a new history entry. */
   const go = (
@@ -145,13 +144,13 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       address.save('push');
       localize();
     });
-  await nextTask();
+  await nextTurn();
   const data = dataPanel(stage, {
     i18n: () => i18n,
     // an exercise file, pasted or uploaded: opened as the exercise (its reason when it cannot be)
     onTask: async (json) => {
       try {
-        await openExercise(stage, readTask(json));
+        await openView(stage, { task: readTask(json) });
         address.save('push');
         localize();
         return null;
@@ -217,7 +216,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       input,
       inputNote: input && !asked.input ? keepInput(asked.scene.id, input) : '',
     });
-    if (inSteps) await nextTask();
+    if (inSteps) await nextTurn();
     localize();
   };
 
@@ -239,7 +238,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
    */
   const startTask = async (value) => {
     try {
-      await openExercise(stage, value, { attempt: ownAttempt });
+      await openView(stage, { task: value, attempt: ownAttempt });
       address.save('push');
       return true;
     } catch (e) {
@@ -274,7 +273,13 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
   onChosen(chrome.langPicker, () => setLanguage(chrome.langPicker.value));
   onChosen(chrome.taskPicker, () => {
     const id = chrome.taskPicker.value;
-    if (!id) return stage.task && stage.openTask(null).then(() => address.save('push'));
+    if (!id) {
+      if (stage.task) {
+        stage.leaveExercise();
+        address.save('push');
+      }
+      return;
+    }
     startTask(id);
   });
   window.addEventListener('popstate', () => openAddress());

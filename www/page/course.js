@@ -21,7 +21,7 @@ import { say } from '../task/format.js';
 import { describeCondition, taskErrorText } from '../task/words.js';
 import { drawTask, randomSeed, seedOf } from '../task/draw.js';
 import { attemptOf } from '../stage/exercise-api.js';
-import { openExercise } from '../stage/open.js';
+import { openView } from '../stage/open.js';
 import { decodeInput } from '../edit/input.js';
 import { forget, keep, kept } from '../platform.js';
 import { decimal, findRuntime, scormValues, ScormSession } from './scorm.js';
@@ -221,11 +221,12 @@ export async function startCourse(setup, hooks) {
   const show = async (/** @type {number} */ k) => {
     const attempt = attempts[k];
     at = k;
-    await openExercise(stage, tasks[k], {
+    await openView(stage, {
+      task: tasks[k],
       seed,
       attempt,
-      params: () => attempt?.params ?? {},
-      input: attempt?.input ? decodeInput(attempt.input) : null,
+      progress: () => attempt?.params ?? {},
+      taskInput: attempt?.input ? decodeInput(attempt.input) : null,
     });
     hooks.opened();
     localize();

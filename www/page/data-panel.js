@@ -12,6 +12,7 @@ import { dataFile } from '../export/files.js';
 import { store } from '../platform.js';
 import { MAX_LINK_RULINGS, PRINT_WIDTH } from '../limits.js';
 import { exportName } from './file-names.js';
+import { diagramOf } from '../scene.js';
 
 /** Session storage key of an import too large for the link. */
 export const STORED = 'ruledlab.data';
@@ -255,8 +256,9 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
         const bw = kind === 'tikzBw';
         const { exportTikz } = await import('../export/tikz.js');
         download(exportName(stage, 'tikz', { bw }), exportTikz(stage, { bw, width: width() }), 'text/x-tex');
-      } else if (kind === 'plot' && built.figure) {
-        download(exportName(stage, 'plot'), new XMLSerializer().serializeToString(built.figure()), 'image/svg+xml');
+      } else if (kind === 'plot' && diagramOf(built)) {
+        const diagram = /** @type {() => SVGElement} */ (diagramOf(built));
+        download(exportName(stage, 'plot'), new XMLSerializer().serializeToString(diagram()), 'image/svg+xml');
       } else if (data && kind in DATA_FILES) {
         const [suffix, format, type] = DATA_FILES[/** @type {keyof typeof DATA_FILES} */ (kind)];
         const name = exportName(stage, 'data', { suffix });
@@ -291,7 +293,7 @@ export function dataPanel(stage, { i18n, onData, onTask }) {
       const data = built.data;
       for (const k of ['obj', 'csv', 'json']) buttons[k].disabled = !data;
       for (const k of ['invariants', 'invariantsCsv']) buttons[k].disabled = !data || !!data.grid;
-      buttons.plot.disabled = !built.figure;
+      buttons.plot.disabled = !diagramOf(built);
       const inTask = !!stage.task;
       for (const k of DATA_KINDS) buttons[k].hidden = inTask;
       heldNote.hidden = !inTask;

@@ -3,7 +3,7 @@
 // colour, the director surface d₁ shaded (and d₂ on request).
 import { AnalyticCongruence, LineCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { congruenceFigure, fig14Applies, givenGrid, SCHEME_PARAMS, LEGEND } from '../figures/congruence.js';
+import { congruenceLayers, fig14Applies, givenGrid, SCHEME_PARAMS, LEGEND } from '../layers/congruence.js';
 import { lineSet } from '../edit/sets.js';
 import { congruenceOptions } from '../catalogue.js';
 
@@ -43,7 +43,7 @@ export const scene = defineScene({
       const given = givenGrid(own, analytic);
       const edited = ctx.input?.lines;
       const grid = edited ? own(LineCongruence.fromGrid(given.rows, given.cols, edited)) : given;
-      const built = congruenceFigure(own, grid, edited ? null : analytic, p, ctx, name, true);
+      const built = congruenceLayers(own, grid, edited ? null : analytic, p, ctx, name, true);
       // the handles: p and q of every given line
       const from = ctx.t('edit.from.congruence', {
         congruence: ctx.t(`congruence.${name}`),

@@ -3,7 +3,7 @@
 // the central tangent (4). Measured live by the core, plotted log-log.
 import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
-import { convergenceFigure, convergenceSample } from '../figures/convergence.js';
+import { convergenceLayers, convergenceSample } from '../layers/convergence.js';
 import { surfaceOptions } from '../catalogue.js';
 import { parallelProblems, rulingSet, rulingValues } from '../edit/sets.js';
 
@@ -86,7 +86,7 @@ export const scene = defineScene({
       const q = { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) };
       const edited = ctx.input?.rulings;
       const sample = edited ? own(RuledSurface.fromSegments(edited)) : convergenceSample(own, analytic, q);
-      const built = edited ? editedSample(sample, ctx) : convergenceFigure(own, analytic, q, ctx);
+      const built = edited ? editedSample(sample, ctx) : convergenceLayers(own, analytic, q, ctx);
       // the handles: the endpoints of the three rulings
       const from = ctx.t('edit.from.convergence', { surface: ctx.t(`surface.${name}`), u: q.u });
       // (three rulings: their invariants cost nothing beside the figure's)

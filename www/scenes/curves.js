@@ -136,7 +136,7 @@ export const scene = defineScene({
       ],
       // the claims are about the project's polygon, not an edit of it
       claims: fourPoint && !input ? claimsOf(Number(p.w), closed, angles) : [],
-      figure: () =>
+      diagram: () =>
         logLogPlot(document, {
           x: Array.from(angles, (_, k) => k),
           series: [{ name: '', y: Array.from(angles) }],

@@ -1,6 +1,6 @@
 // Your data: rulings (or a congruence) pasted or uploaded as CSV or JSON, with its invariants.
 import { LineCongruence, RuledSurface, stripIndices, gridIndices } from '../../pkg/ruledlab.js';
-import { focalFigure } from '../figures/focal.js';
+import { focalLayers } from '../layers/focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { lineSet, parallelProblems, rulingSet, rulingValues, strictionTargets } from '../edit/sets.js';
 
@@ -61,7 +61,7 @@ export const scene = defineScene({
         let description = t('data.describeCongruence', { rows, cols });
         if (p.focal) {
           // beyond the paper: the focal geometry of your grid of lines (scene "Focal surfaces")
-          const focal = focalFigure(own, c, { sheets: true, torsal: true }, ctx);
+          const focal = focalLayers(own, c, { sheets: true, torsal: true }, ctx);
           layers.push(...focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'));
           readouts.push(...focal.readouts);
           Object.assign(measures, focal.measures);

@@ -4,7 +4,7 @@
 // from the core (LineCongruence.focal, focalSheetF32, torsalStrokesF32, linearComplex).
 import { AnalyticCongruence, LineCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds } from '../scene.js';
-import { focalFigure } from '../figures/focal.js';
+import { focalLayers } from '../layers/focal.js';
 import { CONGRUENCE_PRESETS, congruencePreset } from '../catalogue.js';
 import { lineSet } from '../edit/sets.js';
 
@@ -46,7 +46,7 @@ export const scene = defineScene({
       const n = Number(p.n);
       const edited = ctx.input?.lines;
       const grid = own(edited ? LineCongruence.fromGrid(n, n, edited) : analytic.grid(n, n, Number(p.reach)));
-      const figure = focalFigure(own, grid, p, ctx);
+      const figure = focalLayers(own, grid, p, ctx);
       const congruence = ctx.t(`congruence.${name}`);
       return {
         bounds: bounds(...figure.positions),

@@ -2,8 +2,8 @@
 // Section 5 like the paper's examples.
 import { AnalyticCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { congruenceFigure, givenGrid, SCHEME_PARAMS, LEGEND } from '../figures/congruence.js';
-import { focalFigure } from '../figures/focal.js';
+import { congruenceLayers, givenGrid, SCHEME_PARAMS, LEGEND } from '../layers/congruence.js';
+import { focalLayers } from '../layers/focal.js';
 import { CONGRUENCE_PRESETS, congruencePreset, formulaParameter } from '../catalogue.js';
 
 /** The formula fields a catalogue congruence fills in (its texts from the core), its grid and a, b, c. */
@@ -115,10 +115,10 @@ export const scene = defineScene({
           decimalComma: ctx.lang === 'de' ? true : 'unambiguous',
         }),
       );
-      const built = congruenceFigure(own, givenGrid(own, analytic), analytic, p, ctx, 'formula');
+      const built = congruenceLayers(own, givenGrid(own, analytic), analytic, p, ctx, 'formula');
       if (p.focal) {
         // beyond the paper: the focal sheets and torsal directions of the given grid (scene "Focal surfaces")
-        const focal = focalFigure(own, own(analytic.grid()), { sheets: true, torsal: true }, ctx);
+        const focal = focalLayers(own, own(analytic.grid()), { sheets: true, torsal: true }, ctx);
         built.layers.push(...focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'));
         built.readouts?.push(...focal.readouts);
         built.measures = { ...built.measures, ...focal.measures };

@@ -4,10 +4,10 @@
 // differentiates them exactly; the formulas live in the link, so a lecturer can link an exercise.
 import { AnalyticSurface, fitLine } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { strictionFigure, exactCurve } from '../figures/striction.js';
-import { convergenceFigure } from '../figures/convergence.js';
-import { isometryFigure } from '../figures/isometry.js';
-import { subdivisionFigure } from '../figures/subdivision.js';
+import { strictionLayers, exactCurve } from '../layers/striction.js';
+import { convergenceLayers } from '../layers/convergence.js';
+import { isometryLayers } from '../layers/isometry.js';
+import { subdivisionLayers } from '../layers/subdivision.js';
 import { STRAIGHTNESS_MIN_EXTENT, STRAIGHTNESS_SAMPLES } from '../limits.js';
 import { SURFACE_PRESETS, surfacePreset, formulaParameter } from '../catalogue.js';
 
@@ -267,12 +267,12 @@ export const scene = defineScene({
       const ranges = rangesOf(analytic, p);
       const n = Number(p.n);
       if (p.tool === 'convergence')
-        return convergenceFigure(own, analytic, { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) }, ctx);
+        return convergenceLayers(own, analytic, { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) }, ctx);
       if (p.tool === 'subdivision')
-        return subdivisionFigure(own, analytic, ranges, { n, scheme: String(p.scheme), steps: Number(p.steps) }, ctx);
+        return subdivisionLayers(own, analytic, ranges, { n, scheme: String(p.scheme), steps: Number(p.steps) }, ctx);
       if (p.tool === 'bending' || p.tool === 'development') {
         const surface = own(analytic.sample(n, { closed: false }));
-        return isometryFigure(
+        return isometryLayers(
           own,
           surface,
           { layout: p.tool === 'bending' ? 'bend' : 'panels', t: Number(p.t), ghost: true, n },
@@ -280,7 +280,7 @@ export const scene = defineScene({
           'formula',
         );
       }
-      const built = strictionFigure(own(analytic.sample(p.n, ranges)), analytic, ranges, p, ctx, 'formula');
+      const built = strictionLayers(own(analytic.sample(p.n, ranges)), analytic, ranges, p, ctx, 'formula');
       // how far the exact striction curve is from a straight line, as a share of its length (an
       // exercise asks for one that is straight; scale-free, so shrinking the surface does not pass)
       let straightness = Number.NaN;

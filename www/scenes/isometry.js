@@ -4,7 +4,7 @@
 // the reference frame of the conoidal model (x = e_0, z = n_{0,1}), which the core supplies.
 import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { isometryFigure, middleRadius } from '../figures/isometry.js';
+import { isometryLayers, middleRadius } from '../layers/isometry.js';
 import { surfaceOptions, rangesOf } from '../catalogue.js';
 
 /** Open parameter ranges that make good figures (the project's choice: the paper gives no data). */
@@ -99,7 +99,7 @@ export const scene = defineScene({
           ? { n: 2 * n - 1, radius: middleRadius(own(analytic.sample(2 * n - 1, ranges))) }
           : null;
       const from = ctx.t('edit.from.surface', { surface: ctx.t(`surface.${name}`), n });
-      const built = isometryFigure(own, surface, p, ctx, name, finer, from);
+      const built = isometryLayers(own, surface, p, ctx, name, finer, from);
       // the captions' claims are about the built-in surfaces
       if (!edited) return built;
       return { ...built, claims: [], description: ctx.t('edit.describe', { description: built.description }) };

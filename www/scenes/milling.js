@@ -1,13 +1,13 @@
 // Example 6, Figs. 16–18: a few 5-axis tool poses refined by a strip scheme into a smooth tool
 // path; the ball-end tool (drawn at one pose, Fig. 16) sweeps a tube whose lower half is the
 // machined surface. The part, the envelope and the tool are meshes built by the core. Beyond the
-// paper: the job a machinist posts (figures/job.js) — the program for the machine, controller
+// paper: the job a machinist posts (layers/job.js) — the program for the machine, controller
 // and mode chosen, the machined surface against your target curve, the machine's axes along the
 // path —, and a long job refined and posted in the worker (post-job.js).
 import { cam } from '../cam.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
-import { POST_PARAMS, givenPath, postOf, postOptions, programFile, deviationFigure } from '../figures/toolpath.js';
-import { JOB_PARAMS, drawnTool, stockOf } from '../figures/job.js';
+import { POST_PARAMS, givenPath, postOf, postOptions, programFile, deviationDiagram } from '../layers/toolpath.js';
+import { JOB_PARAMS, drawnTool, stockOf } from '../layers/job.js';
 import { postInWorker } from '../compute.js';
 import { poseSet, poseValues } from '../edit/sets.js';
 import { DRAW_LIMIT, POST_WORKER_THRESHOLD } from '../limits.js';
@@ -317,7 +317,7 @@ export const scene = defineScene({
               total: refined.length,
               deviation,
             }),
-        figure: deviationFigure({ target: surface, scale, stride: 2 ** steps, post, t, lang: ctx.lang }),
+        diagram: deviationDiagram({ target: surface, scale, stride: 2 ** steps, post, t, lang: ctx.lang }),
         // the handles: every given pose's tip (it carries the tool) and a point on its axis (it
         // turns the tool about the tip)
         input: {

@@ -3,7 +3,7 @@
 // midpoints of the common perpendiculars, against the exact striction curve.
 import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { strictionFigure, exactCurve } from '../figures/striction.js';
+import { strictionLayers, exactCurve } from '../layers/striction.js';
 import { surfaceOptions, rangesOf } from '../catalogue.js';
 
 /** @typedef {{surface: string, n: number, strip: boolean, normals: boolean, polygon: boolean, midpoints: boolean, exact: boolean, axis: boolean}} StrictionParams */
@@ -50,7 +50,7 @@ export const scene = defineScene({
       const surface = own(edited ? RuledSurface.fromSegments(edited) : analytic.sample(p.n, ranges));
       // the handles: every ruling's endpoints a_i, b_i
       const from = ctx.t('edit.from.surface', { surface: ctx.t(`surface.${name}`), n: p.n });
-      return strictionFigure(surface, edited ? null : analytic, ranges, p, ctx, name, true, from);
+      return strictionLayers(surface, edited ? null : analytic, ranges, p, ctx, name, true, from);
     });
   },
 });

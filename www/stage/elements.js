@@ -43,7 +43,7 @@
  * @property {HTMLElement} claims
  * @property {HTMLElement} note      the readout's note
  * @property {HTMLElement} caption
- * @property {HTMLElement} figure    a picture beside the view (a plot, a stencil)
+ * @property {HTMLElement} diagram   a picture beside the view (a plot, a stencil)
  * @property {HTMLElement} downloads
  * @property {HTMLElement} text      the scene's explanation
  * @property {HTMLDialogElement} shortcuts
@@ -137,7 +137,7 @@ export function stageElements(host, { page = false }) {
     claims: el('ul', { className: 'rl-claims', hidden: true }),
     note: el('p', { className: 'rl-readout-note', hidden: true }),
     caption: el('p', { className: 'rl-caption' }),
-    figure: el('figure', { className: 'rl-figure' }),
+    diagram: el('figure', { className: 'rl-figure' }),
     downloads: el('div', { className: 'rl-downloads' }),
     text: el('article', { className: 'rl-text' }),
   };

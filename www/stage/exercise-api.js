@@ -3,7 +3,7 @@
 // solution, start over, and read or restore the attempt (seed, what the reader changed, her
 // answers, hints and checks: task/attempt.js).
 import { encodeInput, decodeInput } from '../edit/input.js';
-import { openExercise } from './open.js';
+import { openView } from './open.js';
 
 /**
  * @typedef {object} ExerciseApi
@@ -53,12 +53,13 @@ export function exerciseApi(stage) {
     },
     attempt: () => /** @type {import('../task/attempt.js').Attempt} */ (attemptOf(stage)),
     restore: (attempt) =>
-      openExercise(stage, task.drawn?.from ?? task, {
+      openView(stage, {
+        task: task.drawn?.from ?? task,
         seed: attempt.seed ?? task.drawn?.seed ?? null,
-        params: () => attempt.params,
-        input: attempt.input ? decodeInput(attempt.input) : null,
+        progress: () => attempt.params,
+        taskInput: attempt.input ? decodeInput(attempt.input) : null,
         camera: stage.viewer.camera.toArray(),
         attempt,
-      }),
+      }).then(() => {}),
   };
 }

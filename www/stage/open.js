@@ -1,28 +1,31 @@
-// Opening in a stage: a scene (with its parameters, the paper's figure, imported data, an edit,
-// a camera; the core started first) or an exercise (its start, what it holds, the reader's
-// progress) — the stage's state changes here and in stage.js only. And one function for what a
-// link (the page's address) or an element (its attributes) asks for, so both read an exercise the
-// same way.
+// Opening in a stage, one way for everything: `openView` shows what a request asks for — an
+// exercise (read, its numbers drawn, fitted to its scene, what it holds held, the reader's
+// progress), or else a scene (with its parameters, the paper's figure, imported data, an edit, a
+// camera); the core started first. The page's link, <ruled-view>'s attributes, a course's
+// exercise, the exercise API and the Stage's own `open` all go through it. `enterScene` is its
+// last step, which a change of language or a return to an exercise's start also takes.
 import { start } from '../core.js';
 import { startCam } from '../cam.js';
 import { SCENES } from '../scenes/index.js';
 import { defaults, withChoices } from '../scene.js';
 import { Player } from '../ui/player.js';
 import { buildControls } from '../ui/controls.js';
-import { copyInput, fitsSets } from '../edit/input.js';
+import { copyInput, decodeInput, fitsSets } from '../edit/input.js';
 import { builtInTask } from '../task/builtin.js';
 import { taskFromLink } from '../task/format.js';
 import { fitTask } from '../task/check.js';
 import { drawTask, randomSeed } from '../task/draw.js';
 import { taskErrorText } from '../task/words.js';
-import { nextTask } from '../schedule.js';
+import { nextTurn } from '../schedule.js';
 
 /**
- * What to show.
+ * What to show: an exercise (`task`), or a scene. Without `scene`, an exercise that cannot be
+ * read or does not fit its scene throws its TaskError; with one, that is said in a note and the
+ * scene opens instead.
  * @typedef {object} ViewRequest
- * @property {import('../scene.js').Scene} scene   the scene (if there is no exercise, or it cannot be opened)
- * @property {import('../scene.js').Params} params
- * @property {string | import('../task/format.js').Task | null} [task]   an exercise
+ * @property {import('../scene.js').Scene} [scene]   the scene (if there is no exercise, or it cannot be opened)
+ * @property {import('../scene.js').Params} [params]
+ * @property {string | import('../task/format.js').Task | null} [task]   an exercise: a built-in id, a "j." link value, or a Task
  * @property {(scene: import('../scene.js').Scene) => import('../scene.js').Params} [progress]   the reader's
  *   parameters in the exercise, read for its scene (it keeps those it lets change)
  * @property {import('../scene.js').Input | null} [taskInput]   the reader's edit in the exercise
@@ -46,56 +49,76 @@ import { nextTask } from '../schedule.js';
  */
 
 /**
+ * An opening, read from a request: the scene and its parameters, and the exercise with the
+ * reader's progress in it, or what a scene alone is opened with.
+ * @typedef {object} Opening
+ * @property {import('../scene.js').Scene} scene
+ * @property {import('../scene.js').Params} params
+ * @property {import('../task/format.js').Task | null} exercise
+ * @property {Partial<import('../task/panel.js').PanelAttempt> | null} attempt
+ * @property {import('../scene.js').Input | null} input
+ * @property {number[] | null} camera
+ * @property {import('../paper.js').PaperPreset | null} paper
+ * @property {import('../scene.js').ImportedData | null | undefined} data
+ * @property {string} inputNote
+ * @property {boolean} autoplay
+ */
+
+/**
  * Opens `request` in `stage`: its exercise, or — without one, or where it cannot be read or does
- * not fit its scene (said in a note) — its scene. Resolves to the notes shown.
+ * not fit its scene (said in a note) — its scene. Resolves to the notes (said in the view unless
+ * an opening begun meanwhile ended this one).
  * @param {import('../stage.js').Stage} stage
  * @param {ViewRequest} request
+ * @returns {Promise<import('../stage.js').Notes>}
  */
 export async function openView(stage, request) {
   const notes = [...(request.notes ?? [])];
+  /** @type {Opening | null} */
+  let opening = null;
   if (request.task) {
     try {
-      await openExercise(stage, request.task, {
-        params: request.progress ?? (() => ({})),
-        input: request.taskInput ?? null,
-        camera: request.camera ?? null,
-        notes,
-        seed: request.seed ?? null,
-        attempt: request.attempt ?? null,
-      });
-      return notes;
+      opening = await readExercise(stage, request.task, request);
     } catch (e) {
+      if (!request.scene) throw e;
       const note = request.source === 'element' ? 'element.note.badTask' : 'note.badTask';
       notes.push({ key: 'task', note, vars: { reason: taskErrorText(e, stage.i18n) } });
     }
   }
-  await stage.open(request.scene, request.params, {
-    camera: request.camera ?? null,
-    data: request.data,
-    notes,
-    autoplay: request.autoplay,
-    paper: request.paper ?? null,
-    input: request.input ?? null,
-    inputNote: request.inputNote,
-  });
+  if (!opening) {
+    const scene = /** @type {import('../scene.js').Scene} */ (request.scene);
+    opening = {
+      scene,
+      params: { ...defaults(scene), ...(request.params ?? {}) },
+      exercise: null,
+      attempt: null,
+      input: request.input ?? null,
+      camera: request.camera ?? null,
+      paper: request.paper && request.paper.scene === scene.id ? request.paper : null,
+      data: request.data,
+      inputNote: request.inputNote ?? '',
+      autoplay: !!request.autoplay,
+    };
+  }
+  await show(stage, opening, notes);
   return notes;
 }
 
 /**
- * Opens an exercise in `stage` with the reader's `progress`; throws a TaskError (its reason said
- * in the stage's language by task/words.js) where it cannot be read or does not fit its scene.
+ * Reads the exercise `value` for `stage`: drawn with the request's seed (or the kept attempt's,
+ * or a new one), fitted to its scene (which computes it: the module it needs started first), at
+ * its start with what the reader may change from `request`'s progress; throws a TaskError (its
+ * reason said in the stage's language by task/words.js) where it cannot be read or does not fit.
  * @param {import('../stage.js').Stage} stage
- * @param {string | import('../task/format.js').Task} value   a built-in id, a "j." link value, or a Task
- * @param {{params?: (scene: import('../scene.js').Scene) => import('../scene.js').Params, input?: import('../scene.js').Input | null, camera?: number[] | null, notes?: import('../stage.js').Notes, seed?: number | null, attempt?: AttemptOf}} [progress]
- *   the reader's parameters (read for the exercise's scene), edit, camera; notes to show; the
- *   seed of the numbers drawn (none: a new one) and what she did (answers, hints, checks)
+ * @param {string | import('../task/format.js').Task} value
+ * @param {ViewRequest} request
+ * @returns {Promise<Opening>}
  */
-export async function openExercise(stage, value, progress = {}) {
+async function readExercise(stage, value, request) {
   const read = typeof value === 'string' ? taskFromLink(value, builtInTask) : value;
-  // (fitting it to its scene computes the scene: the module it needs first)
   if (SCENES.find((x) => x.id === read.scene)?.needs?.includes('cam')) await startCam();
-  const kept = typeof progress.attempt === 'function' ? progress.attempt(read) : (progress.attempt ?? null);
-  const task = drawTask(read, progress.seed ?? kept?.seed ?? read.drawn?.seed ?? randomSeed());
+  const kept = typeof request.attempt === 'function' ? request.attempt(read) : (request.attempt ?? null);
+  const task = drawTask(read, request.seed ?? kept?.seed ?? read.drawn?.seed ?? randomSeed());
   // the attempt belongs to these numbers (or the exercise draws none)
   const attempt = kept && (kept.seed ?? null) === (task.drawn?.seed ?? null) ? kept : null;
   const { t, format, lang } = stage.i18n;
@@ -103,25 +126,37 @@ export async function openExercise(stage, value, progress = {}) {
     const s = /** @type {import('../scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
     return s.create(withChoices(s, { ...task.params, ...params }), { t, format, lang, ...(input ? { input } : {}) });
   });
-  const { params, seed: _, attempt: __, ...rest } = progress;
-  await stage.openTask(task, scene, { ...rest, attempt, params: params?.(scene) ?? {} });
+  const progress = request.progress?.(scene) ?? {};
+  const changed = Object.fromEntries(Object.entries(progress).filter(([k]) => task.change.includes(k)));
+  const start = task.input ? decodeInput(task.input) : null;
+  return {
+    scene,
+    params: { ...defaults(scene), ...withChoices(scene, task.params), ...changed },
+    exercise: task,
+    attempt,
+    input: task.change.includes('handles') && request.taskInput ? request.taskInput : start,
+    camera: request.camera ?? null,
+    paper: null,
+    data: undefined,
+    inputNote: '',
+    autoplay: false,
+  };
 }
 
 /**
- * Opens `scene` in `stage` (Stage.open): the core started, its parameters (missing ones take
- * their defaults), the paper's figure if it is this scene's, the notes said, autoplay unless the
- * reader prefers reduced motion. Opening a scene leaves the exercise shown, unless `options.task`.
- * Resolves to true, or false where an opening begun while this one was in its steps ended it.
+ * Shows `opening` in `stage` (and says `notes`): the core (and the CAM module where the scene needs it) started, the
+ * scene entered — in steps on the page's first opening — with the exercise and what it holds, the
+ * notes said, the exercise's panel shown, autoplay unless the reader prefers reduced motion.
+ * Resolves to false where an opening begun while this one was in its steps ended it.
  * @param {import('../stage.js').Stage} stage
- * @param {import('../scene.js').Scene} scene
- * @param {import('../scene.js').Params} params
- * @param {import('../stage.js').OpenOptions} options
- * @returns {Promise<boolean>}
+ * @param {Opening} opening
+ * @param {import('../stage.js').Notes} notes
  */
-export async function openScene(stage, scene, params, options) {
+async function show(stage, opening, notes) {
+  const { scene, params, exercise, input, camera } = opening;
   // (the figure shown is no longer the one asked for: ready again once this one is computed)
   delete stage.els.root.dataset.ready;
-  if (!options.task) leaveTask(stage);
+  if (!exercise) stage.exercise.panel.show(null);
   try {
     await start();
     if (scene.needs?.includes('cam')) await startCam();
@@ -129,32 +164,34 @@ export async function openScene(stage, scene, params, options) {
     stage.fail(e);
     throw e;
   }
-  const notes = [...(options.notes ?? [])];
-  const input = options.input ?? null;
   /** @type {EnterOptions} */
-  const enterOptions = {
-    camera: options.camera ?? null,
+  const options = {
+    camera,
     input,
-    // what the opening sets besides the scene and its parameters (store.js's 'open')
     opening: {
-      ...(options.data !== undefined ? { data: options.data } : {}),
-      paper: options.paper && options.paper.scene === scene.id ? options.paper : null,
-      inputNote: options.inputNote ?? '',
-      ...(options.task ? {} : { exercise: null }),
+      exercise,
+      paper: opening.paper,
+      inputNote: opening.inputNote,
+      ...(opening.data !== undefined ? { data: opening.data } : {}),
     },
   };
-  const all = { ...defaults(scene), ...params };
   const fits = stage.inSteps
-    ? await enterInSteps(stage, scene, all, enterOptions)
-    : stage.enter(scene, all, enterOptions);
+    ? await enterInSteps(stage, scene, params, options)
+    : enterScene(stage, scene, params, options);
   // (an opening begun while this one was in its steps has shown its scene: this one ends)
-  if (fits === null) return false;
+  if (fits === null || stage.task !== exercise) return false;
   if (!fits) notes.push({ key: 'input', note: 'note.badInput' });
   // an exercise's constraint that cannot hold is said, and lifted
   for (const { handle, why } of stage.edit.lifted)
     notes.push({ key: 'edit', note: `snap.lifted.${why}`, vars: { handle } });
   stage.showNotes(notes);
-  if (options.autoplay && !Player.reducedMotion()) {
+  if (exercise) {
+    stage.exercise.panel.show(exercise, opening.attempt);
+    // the exercise is at the top of the panel: a panel scrolled down for the figure before shows it
+    stage.els.panel.scrollTop = 0;
+    stage.edit.show();
+  }
+  if (opening.autoplay && !Player.reducedMotion()) {
     const key = stage.player.playableKey();
     if (key) stage.player.toggle(key);
   }
@@ -162,43 +199,19 @@ export async function openScene(stage, scene, params, options) {
 }
 
 /**
- * Opens `task` in `stage` (Stage.openTask): its scene at its start, what it lets change (its
- * parameters from `state`, and the reader's edit where handles may move), the rest held; null
- * leaves the exercise (the scene stays).
+ * Leaves the exercise shown in `stage` (if any): the scene stays, as it is, with nothing held.
  * @param {import('../stage.js').Stage} stage
- * @param {import('../task/format.js').Task | null} task
- * @param {import('../scene.js').Scene | null} scene
- * @param {{params?: import('../scene.js').Params, input?: import('../scene.js').Input | null, camera?: number[] | null, notes?: import('../stage.js').Notes, attempt?: Partial<import('../task/panel.js').PanelAttempt> | null}} state
  */
-export async function openTask(stage, task, scene, state) {
-  if (!task || !scene) {
-    leaveTask(stage);
-    if (stage.scene)
-      stage.enter(stage.scene, stage.params, { camera: stage.viewer.camera.toArray(), fit: false, input: stage.input });
-    return;
-  }
-  stage.dispatch({ type: 'exercise', exercise: task });
-  const kept = Object.fromEntries(Object.entries(state.params ?? {}).filter(([k]) => task.change.includes(k)));
-  const input = task.change.includes('handles') && state.input ? state.input : stage.exercise.startInput();
-  const shown = await openScene(
-    stage,
-    scene,
-    { ...withChoices(scene, task.params), ...kept },
-    { camera: state.camera ?? null, input, notes: state.notes ?? [], task: true, paper: null },
-  );
-  // (another opening, begun while this one was in its steps, has the stage now)
-  if (!shown || stage.task !== task) return;
-  stage.exercise.panel.show(task, state.attempt ?? null);
-  // the exercise is at the top of the panel: a panel scrolled down for the figure before shows it
-  stage.els.panel.scrollTop = 0;
-  stage.edit.show();
-}
-
-/** Leaves the exercise shown in `stage` (if any); the scene stays. @param {import('../stage.js').Stage} stage */
-function leaveTask(stage) {
+export function leaveExercise(stage) {
   if (!stage.task) return;
-  stage.dispatch({ type: 'exercise', exercise: null });
   stage.exercise.panel.show(null);
+  if (stage.scene)
+    enterScene(stage, stage.scene, stage.params, {
+      camera: stage.viewer.camera.toArray(),
+      fit: false,
+      input: stage.input,
+      opening: { exercise: null },
+    });
 }
 
 /**
@@ -254,7 +267,7 @@ export async function enterInSteps(stage, scene, params, options) {
   try {
     for (let step = steps.next(); ; step = steps.next()) {
       if (step.done) return step.value;
-      await nextTask();
+      await nextTurn();
     }
   } finally {
     if (openings.get(stage) === token) root.classList.remove('rl-opening');
@@ -284,8 +297,8 @@ function* enterSteps(
   if (!history) stage.editor.cancel();
   stage.dispatch({ type: 'open', scene, params, input: null, ...opening });
   stage.preview(scene);
-  // (an exercise may hide the explanation where it would say the answer)
-  stage.els.text.hidden = !stage.showText || !!stage.task?.hide.includes('text');
+  // the panel (an exercise may hide the explanation where it would say the answer)
+  stage.showPanel(stage.state);
   const controls = buildControls(stage.els.form, scene, stage.params, stage.i18n, {
     onChange: (key, value, ended) => stage.setParam(key, value, ended),
     onPlay: (key) => stage.player.toggle(key),

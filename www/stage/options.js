@@ -34,7 +34,6 @@
  * @property {import('../paper.js').PaperPreset | null} [paper]   the paper's figure shown (if it is this scene's)
  * @property {import('../scene.js').Input | null} [input]   an edit of the scene's input (kept where it fits its handles)
  * @property {string} [inputNote]   a note about the edit (an i18n key)
- * @property {boolean} [task]   the exercise shown stays (openTask); otherwise opening a scene leaves it
  */
 
 export {};

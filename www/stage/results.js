@@ -13,6 +13,7 @@ import { describeError } from '../ui/errors.js';
 import { appendRich, plainRich } from '../ui/richtext.js';
 import { download } from '../ui/download.js';
 import { say } from '../task/format.js';
+import { diagramOf } from '../scene.js';
 
 /**
  * What the results ask of their stage.
@@ -96,7 +97,8 @@ export class Results {
         : '';
       this.ports.say([asked, this.spoken()].filter(Boolean).join(' '));
     }
-    els.figure.replaceChildren(...(built.figure ? [built.figure()] : []));
+    const diagram = diagramOf(built);
+    els.diagram.replaceChildren(...(diagram ? [diagram()] : []));
     els.downloads.replaceChildren(
       ...(built.downloads ?? []).map((d) => {
         const b = Object.assign(doc.createElement('button'), { type: 'button', textContent: t(d.label) });

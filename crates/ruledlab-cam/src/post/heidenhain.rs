@@ -46,7 +46,7 @@ impl Controller for Heidenhain {
 
     /// The tip's distance, but in machine coordinates on a block that turns a rotary axis: X Y
     /// Z's distance, or where they stand still (under 0.01 mm) the rotary axes' degrees (module
-    /// documentation; [`feed_of`] writes the same word).
+    /// documentation; `feed_of` writes the same word).
     fn feed_measure(&self, mode: Mode, b: &Travel, units: Units) -> f64 {
         let u = units.mm();
         match mode {

@@ -11,7 +11,7 @@ import { DATA_COMPLEX_TOLERANCE, ROUNDING } from '../limits.js';
  * @param {import('../scene.js').Context} ctx
  * @returns {{layers: import('../scene.js').Layer[], readouts: import('../scene.js').Readout[], sentence: string, positions: ArrayLike<number>[], measures: Record<string, number>}}
  */
-export function focalFigure(own, grid, p, { t }) {
+export function focalLayers(own, grid, p, { t }) {
   // computed once by the core; every layer below is drawn from that one computation
   const geometry = own(grid.focalGeometry());
   const focal = geometry.result();

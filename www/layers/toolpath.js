@@ -275,7 +275,7 @@ export function stackedPlots(doc, { title, plots, comma = false }) {
  *   lang?: string,
  * }} o  target: the envelope's deviation (in the poses' units); stride: refined poses per given pose
  */
-export function deviationFigure({ target, scale, stride, post, t, lang = 'en' }) {
+export function deviationDiagram({ target, scale, stride, post, t, lang = 'en' }) {
   const units = post?.units ?? 'mm';
   /** @type {Series[]} */
   const deviation = [];

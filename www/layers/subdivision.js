@@ -15,7 +15,7 @@ import { FINE_LINES } from '../limits.js';
  * @param {import('../scene.js').Context} ctx
  * @returns {import('../scene.js').Built}
  */
-export function subdivisionFigure(own, analytic, ranges, p, { t }) {
+export function subdivisionLayers(own, analytic, ranges, p, { t }) {
   const surface = own(analytic.sample(p.n, { ...ranges, closed: false }));
   const steps = Number(p.steps);
   /** @type {import('../../pkg/ruledlab.js').SubdivideOptions} */

@@ -34,7 +34,7 @@ export function convergenceSample(own, analytic, p) {
  * @param {import('../scene.js').Context} ctx
  * @returns {import('../scene.js').Built}
  */
-export function convergenceFigure(own, analytic, p, { t }) {
+export function convergenceLayers(own, analytic, p, { t }) {
   const H = Math.min(p.h0, 1);
   const study = analytic.convergence({ u: p.u, h0: H, levels: p.levels });
   const sample = convergenceSample(own, analytic, p);
@@ -63,7 +63,7 @@ export function convergenceFigure(own, analytic, p, { t }) {
       { kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) },
       { kind: 'points', style: 'exactPoint', positions: f32(exact) },
     ],
-    figure: () =>
+    diagram: () =>
       logLogPlot(document, {
         x: study.steps,
         series: shown.map(([name, label]) => ({

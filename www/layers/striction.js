@@ -25,7 +25,7 @@ import { footpointTargets, parallelProblems, rulingSet, rulingValues, strictionT
  *   beside a moving end
  * @returns {import('../scene.js').Built}
  */
-export function strictionFigure(surface, analytic, ranges, p, ctx, name, orders = false, from = null) {
+export function strictionLayers(surface, analytic, ranges, p, ctx, name, orders = false, from = null) {
   const { t } = ctx;
   const closed = ranges.closed;
   const n = surface.length;

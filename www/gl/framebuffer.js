@@ -6,7 +6,7 @@
 /** Pixels from which a framebuffer made is checked (2²² ≈ 2048 × 2048). */
 const LARGE = 1 << 22;
 
-export class FrameTarget {
+export class Framebuffer {
   /** @param {WebGL2RenderingContext} gl */
   constructor(gl) {
     /** @internal */
@@ -39,7 +39,7 @@ export class FrameTarget {
       }
       this.refused = '';
     }
-    gl.bindFramebuffer(gl.FRAMEBUFFER, /** @type {NonNullable<FrameTarget['buffers']>} */ (this.buffers).framebuffer);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, /** @type {NonNullable<Framebuffer['buffers']>} */ (this.buffers).framebuffer);
     return true;
   }
 

@@ -47,7 +47,7 @@ export function givenGrid(own, analytic) {
  *   built-in congruences, about which the text makes its comparisons)
  * @returns {import('../scene.js').Built}
  */
-export function congruenceFigure(own, grid, analytic, p, { t, format }, name, compare = false) {
+export function congruenceLayers(own, grid, analytic, p, { t, format }, name, compare = false) {
   const diagonal = p.scheme === 'diagonal';
   const steps = diagonal ? 1 : p.steps;
   const refined = own(grid.subdivide(SCHEMES[/** @type {keyof typeof SCHEMES} */ (p.scheme)](steps)));
@@ -116,7 +116,7 @@ export function congruenceFigure(own, grid, analytic, p, { t, format }, name, co
     claims,
     ...(p.scheme === 'butterfly' || diagonal
       ? {
-          figure: () =>
+          diagram: () =>
             butterflyStencil(document, {
               title: t('congruence.stencil.title'),
               weights: t('congruence.stencil.weights'),

@@ -67,7 +67,7 @@ function claimsOf(name, n, radius, finer) {
  *   rulings' endpoints, drawn where the input surface is (the ghost, or the first panel)
  * @returns {import('../scene.js').Built}
  */
-export function isometryFigure(own, surface, p, { t }, name, finer = null, from = null) {
+export function isometryLayers(own, surface, p, { t }, name, finer = null, from = null) {
   const frame = f32(surface.referenceFrame());
   const inv = surface.invariants();
   const input = surface.segmentsF32();
