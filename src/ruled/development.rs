@@ -7,7 +7,7 @@
 //! +φ_{0,1} with the x-axis). The map is isometric on every ruling. The common perpendiculars
 //! of the conoidal model are all parallel to n_{0,1}, so the two footpoints of a pair land on
 //! one point, where the two projected rulings meet: these N − 1 points, the images of the
-//! perpendiculars' midpoints (Fig. 3's polygon), form the polygon the projected rulings
+//! perpendiculars' midpoints (Example 1's polygon), form the polygon the projected rulings
 //! envelop. The striction polygon m_i = (f_{i,i−1} + f_{i,i+1})/2 is *inscribed* in it: both
 //! footpoints of ruling i project to consecutive corners of the envelope polygon on the
 //! projected ruling i, so the image of m_i is the midpoint of that edge.
@@ -102,7 +102,7 @@ impl Development {
 
     /// The polygon the developed rulings envelop: the N − 1 points where consecutive developed
     /// rulings meet, each the image of both footpoints f_{i,i+1}, f_{i+1,i} of a pair of the
-    /// conoidal model (so of Fig. 3's perpendicular midpoint too).
+    /// conoidal model (so of the perpendicular's midpoint too, a vertex of Example 1's polygon).
     pub fn envelope_polygon(&self) -> Vec<DVec2> {
         let frame = Frame::of(&self.conoidal);
         self.conoidal.invariants().footpoints.iter().step_by(2).map(|&f| frame.plane_coordinates(f)).collect()

@@ -16,7 +16,7 @@ export default {
   'legend.rulings3': 'rulings R_{i−1}, R_i, R_{i+1}',
   'legend.normals': 'common perpendiculars N_{i,i+1} and footpoints',
   'legend.striction': 'striction polygon m_i (thick, with points)',
-  'legend.perpendicularMidpoints': 'polygon of perpendicular midpoints (Fig. 3, dashed)',
+  'legend.perpendicularMidpoints': 'polygon of perpendicular midpoints (Example 1’s polygon, dashed)',
   'legend.complexAxis': 'axis of the linear complex (dash-dot)',
   'legend.exactStriction': 'exact striction curve s(u) (wide)',
 
@@ -25,7 +25,7 @@ export default {
   'readout.parallelPairs': 'parallel pairs',
   'readout.midpointError': 'max |m_i − s(u_i)|',
   'readout.footpointError': 'max |f_{i,i+1} − s(u_i)|',
-  'readout.perpendicularMidpointError': 'max |Fig. 3 polygon − s(u_i + H/2)|',
+  'readout.perpendicularMidpointError': 'max |Example 1’s polygon − s(u_i + H/2)|',
   'readout.meanDelta': 'δ̄ at the middle ruling',
   'striction.label.meanDelta': 'δ̄ (m_{{i}})',
   'readout.none': 'none (an error is 0 or undefined)',
@@ -56,7 +56,7 @@ export default {
   'striction.title': 'Striction polygon (Figs. 2–3, Example 1)',
   'striction.param.normals': 'Common perpendiculars N_{i,i+1}',
   'striction.param.polygon': 'Striction polygon m_i',
-  'striction.param.midpoints': 'Perpendicular midpoints (Fig. 3)',
+  'striction.param.midpoints': 'Perpendicular midpoints (Example 1’s polygon)',
   'striction.param.axis': 'Axis of the linear complex (beyond the paper)',
   'striction.param.exact': 'Exact striction curve s(u)',
   'striction.describe':
@@ -67,7 +67,7 @@ export default {
   'striction.describe.exact': 'the exact striction curve',
   'striction.readout.order.footpoint': 'measured order N → 2N: footpoint',
   'striction.readout.order.midpoint': 'measured order N → 2N: striction polygon m_i',
-  'striction.readout.order.perpendicular': 'measured order N → 2N: Fig. 3 polygon',
+  'striction.readout.order.perpendicular': 'measured order N → 2N: Example 1’s polygon',
   'striction.claim.orders':
     'On the hyperboloid and the quartic, from 20 rulings on, doubling N halves the footpoint error and quarters the errors of both polygons: measured orders within 0.25 of 1, 2 and 2.',
   'striction.describeEdited':
@@ -130,7 +130,7 @@ export default {
   'isometry.reason.flat': 'At t = 0 the surface is the original.',
   'isometry.legend.striction': 'striction polygon (in the development: its image)',
   'isometry.legend.envelope':
-    'in the development: the polygon the rulings envelop, image of the Fig. 3 polygon (dashed)',
+    'in the development: the polygon the rulings envelop, image of Example 1’s polygon (dashed)',
   'isometry.legend.ghost': 'original surface (dashed)',
   'isometry.readout.nonDevelopability': 'non-developability (height of the conoidal model)',
   'isometry.readout.isometry': 'max relative change of an edge length',
