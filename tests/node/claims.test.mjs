@@ -8,6 +8,7 @@ import { readFileSync } from 'node:fs';
 import ruledlab from './load.mjs';
 import { SCENES } from '../../www/scenes/index.js';
 import { PRESETS } from '../../www/paper.js';
+import { builtInTasks } from '../../www/task/builtin.js';
 import { defaults } from '../../www/scene.js';
 import { translator } from '../../www/i18n/index.js';
 import { STYLES } from '../../www/theme.js';
@@ -419,4 +420,79 @@ test('the polygon of perpendicular midpoints is Example 1’s polygon, after the
     const page = readFileSync(new URL(`../../docs/src/${file}`, import.meta.url), 'utf8').replace(/\s+/g, ' ');
     assert.doesNotMatch(page, fig3, file);
   }
+});
+
+test('the exercises as the book and their hints state them: the tolerances drawn for the striction exercise, and the variational schemes missing 10⁻³ rad by about 5·10⁻³ or more', () => {
+  const tasks = builtInTasks();
+  const striction = tasks.find((t) => t.id === 'striction-accuracy');
+  const tolerances = /** @type {any} */ (striction?.draw)?.tol?.list;
+  assert.deepEqual(tolerances, [2e-3, 1e-3, 5e-4]);
+  const page = readFileSync(new URL('../../docs/src/teaching/exercises.md', import.meta.url), 'utf8').replace(
+    /\s+/g,
+    ' ',
+  );
+  assert.ok(page.includes('within a tolerance drawn from 2·10⁻³, 10⁻³ and 5·10⁻⁴ of the exact curve'));
+  // the congruence exercise: one step of every variational scheme on Example 5
+  const scene = sceneOf('congruence');
+  const angle = (/** @type {string} */ scheme) =>
+    /** @type {number} */ (
+      scene
+        .create({ ...defaults(scene), congruence: 'example5', scheme, steps: 1 }, context)
+        .readouts?.find((r) => r.label === 'congruence.readout.angle')?.value
+    );
+  const misses = ['paper', 'two-stage', 'coupled'].map(angle);
+  const least = Math.min(...misses);
+  assert.equal(least.toExponential(2), '4.98e-3', 'the coupled scheme, just under 5·10⁻³');
+  assert.ok(misses.every((x) => x > 1e-3));
+  const hints = /** @type {any} */ (tasks.find((t) => t.id === 'congruence-scheme'))?.hints.at(-1);
+  assert.ok(hints.en.includes('miss by about 5·10⁻³ rad or more'), hints.en);
+  assert.ok(hints.de.includes('verfehlen um etwa 5·10⁻³ rad oder mehr'), hints.de);
+});
+
+test('strip: the texts give the n slider’s range as it is, 3 to 24, apart from the 5 to 24 where coupled wins', () => {
+  const n = /** @type {any} */ (sceneOf('strip').params.find((p) => p.key === 'n'));
+  const said = {
+    en: `(the slider runs from ${n.min} to ${n.max})`,
+    de: `(der Regler reicht von ${n.min} bis ${n.max})`,
+  };
+  for (const [lang, words] of Object.entries(said)) {
+    const { t } = translator(lang);
+    for (const key of ['strip.claim.coupled', 'strip.text'])
+      assert.ok(t(key).replace(/\s+/g, ' ').includes(words), `${lang}: ${key} does not say "${words}"`);
+  }
+});
+
+test('congruences: butterfly has the smallest angle everywhere and the smallest distance on the sphere and Example 5; on the hyperbolic paraboloid it ties at distance 0 with the bilinear average and the coupled scheme, as the book says', () => {
+  const scene = sceneOf('congruence');
+  /** @type {Record<string, Record<string, {distance: number, angle: number}>>} */
+  const errors = {};
+  for (const congruence of ['sphere', 'hyperbolic-paraboloid', 'example5']) {
+    errors[congruence] = {};
+    for (const scheme of ['paper', 'two-stage', 'coupled', 'butterfly']) {
+      const built = scene.create({ ...defaults(scene), congruence, scheme, steps: 1 }, context);
+      const value = (/** @type {string} */ l) =>
+        /** @type {number} */ (built.readouts?.find((r) => r.label === l)?.value);
+      errors[congruence][scheme] = {
+        distance: value('congruence.readout.distance'),
+        angle: value('congruence.readout.angle'),
+      };
+    }
+  }
+  for (const [congruence, by] of Object.entries(errors)) {
+    const { butterfly, ...others } = by;
+    for (const [scheme, e] of Object.entries(others)) {
+      assert.ok(butterfly.angle < e.angle, `${congruence}: ${scheme}'s angle`);
+      if (congruence !== 'hyperbolic-paraboloid')
+        assert.ok(butterfly.distance < e.distance, `${congruence}: ${scheme}`);
+    }
+  }
+  const paraboloid = errors['hyperbolic-paraboloid'];
+  for (const scheme of ['paper', 'coupled', 'butterfly']) assert.ok(paraboloid[scheme].distance < 1e-15, scheme);
+  assert.ok(paraboloid['two-stage'].distance > 1e-3);
+  const page = readFileSync(new URL('../../docs/src/guide/congruences.md', import.meta.url), 'utf8').replace(
+    /\s+/g,
+    ' ',
+  );
+  assert.ok(!page.includes('wins everywhere'));
+  assert.ok(page.includes('ties at distance 0 with the bilinear average and the coupled scheme'));
 });

@@ -166,7 +166,7 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 in den neuen Punkten, ist das Minimum genau die Mittelpunktsregel (wählen Sie „wörtlich“: Die Anzeige
 gleicht der Mittelpunktsregel). Die <em>gekoppelte</em> Energie von ruledlab nimmt Umbrella-Vektoren in
 jedem inneren Knoten, auch in den alten, sodass die neuen Erzeugenden gekoppelt sind und der Fläche
-für jedes n von 5 bis 24 (den Bereich des Reglers) enger folgen als die Mittelpunktsregel (für n = 3, 4
+für jedes n von 5 bis 24 (der Regler reicht von 3 bis 24) enger folgen als die Mittelpunktsregel (für n = 3, 4
 nicht). Die <em>gemittelte</em> Variante mittelt die Umbrella-Vektoren der beiden
 Triangulierungen vor dem Quadrieren: Die Energie (15) enthält einen Verdrillungsterm aus den
 gescherten Nachbarn der beiden Triangulierungen, den das Mitteln aufhebt. Auf dieser Fläche ist das

@@ -158,7 +158,7 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 <p class="rl-beyond"><strong>What ruledlab adds.</strong> Read literally, with umbrellas at the new
 points only, the minimiser is just the midpoint rule (choose "literal": the readout equals the
 midpoint rule's). ruledlab's <em>coupled</em> energy puts umbrellas at every interior vertex, old
-ones included, so the new rulings couple and, for every n from 5 to 24 (the slider's range), follow
+ones included, so the new rulings couple and, for every n from 5 to 24 (the slider runs from 3 to 24), follow
 the surface more closely than the midpoint rule (for n = 3, 4 they do not). The <em>averaged</em>
 variant averages the two triangulations' umbrellas before squaring: the energy (15) contains a
 twist term from the sheared neighbours of the two triangulations, and averaging cancels it. On
