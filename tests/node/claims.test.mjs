@@ -496,3 +496,85 @@ test('congruences: butterfly has the smallest angle everywhere and the smallest 
   assert.ok(!page.includes('wins everywhere'));
   assert.ok(page.includes('ties at distance 0 with the bilinear average and the coupled scheme'));
 });
+
+test('subdivision: every scheme of the book’s table is named by options the API takes, and its Example 3 column is what they give; the README’s midpoint rule is one of them', () => {
+  const { AnalyticSurface } = ruledlab;
+  const quartic = AnalyticSurface.byName('quartic');
+  const strip = quartic.sample(12, { uMin: -1, uMax: 1, closed: false });
+  const page = readFileSync(new URL('../../docs/src/guide/subdivision.md', import.meta.url), 'utf8');
+  const rows = [...page.matchAll(/^\| ([^|]*?`(scheme: [^`]*)`[^|]*) \| \**([\d.e-]+)\**/gm)];
+  assert.equal(rows.length, 7, 'the table names each scheme by its options');
+  for (const [, name, options, said] of rows) {
+    const o = /** @type {any} */ (Function(`return ({ ${options} })`)());
+    if (o.scheme === 'variational') o.n = 12;
+    const refined = strip.subdivide(o);
+    // the inserted rulings of the interpolatory schemes (Chaikin keeps none, and the book
+    // measures all its rulings, which insertedDistance does not: its options alone are checked)
+    const d = o.scheme === 'chaikin' ? Number.NaN : quartic.insertedDistance(refined, 2, -1, 1);
+    refined.free();
+    if (o.scheme === 'chaikin') continue;
+    if (Number(said) < 1e-14) assert.ok(d < 1e-14, `${name}: ${d}`);
+    else assert.equal(d.toExponential(1), said, name);
+  }
+  const readme = readFileSync(new URL('../../README.md', import.meta.url), 'utf8');
+  const literal = strip.subdivide({ scheme: 'variational', n: 12, variant: 'literal' });
+  const midpoint = strip.subdivide({ scheme: 'bspline', degree: 1 });
+  const coupled = strip.subdivide({ scheme: 'variational', n: 12 });
+  const [l, m, c] = [literal, midpoint, coupled].map((r) => quartic.insertedDistance(r, 2, -1, 1).toExponential(1));
+  assert.deepEqual([l, m, c], ['9.2e-3', '9.2e-3', '8.0e-4']);
+  for (const said of [
+    `${c} from`,
+    `the midpoint rule's, { scheme: 'bspline', degree: 1 }`,
+    "variant: 'literal'): 9.2e-3",
+  ])
+    assert.ok(readme.includes(said), `README: "${said}"`);
+  for (const o of [literal, midpoint, coupled, strip, quartic]) o.free();
+});
+
+test('the book against what a newcomer does: no invented address, where the source comes from, the installed path of the element, its least height, the camera event, the Node.js versions', () => {
+  const read = (/** @type {string} */ file) =>
+    readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8').replace(/\s+/g, ' ');
+  const cargo = read('Cargo.toml');
+  assert.ok(!/\brepository\s*=/.test(cargo), 'Cargo.toml names no repository');
+  const pages = [
+    'README.md',
+    'Cargo.toml',
+    'package.json',
+    'docs/src/guide/package.md',
+    'docs/src/guide/getting-started.md',
+  ];
+  for (const file of pages) {
+    const text = read(file);
+    assert.ok(!/example\.invalid|<the repository>/.test(text), `${file} invents no address`);
+  }
+  const pkg = read('docs/src/guide/package.md');
+  assert.ok(
+    !pkg.startsWith('# The npm package `npm install ruledlab` gives'),
+    'package.md does not begin with npm install',
+  );
+  assert.ok(pkg.includes('ruledlab is not published'));
+  assert.ok(pkg.includes('Its source is the repository this book belongs to'));
+  // the element from an installed package, as tests/page/pack.test.mjs loads it
+  const installed = '"ruledlab/view": "./node_modules/ruledlab/www/index.js"';
+  for (const file of ['README.md', 'docs/src/guide/embedding.md']) {
+    const text = read(file);
+    assert.ok(!text.includes('src="./www/ruled-view.js"'), `${file}: a path of the repository only`);
+    assert.ok(text.includes(installed), `${file}: the installed path`);
+  }
+  assert.ok(read('tests/page/pack.test.mjs').includes(installed));
+  const element = readFileSync(new URL('../../www/ruled-view.js', import.meta.url), 'utf8');
+  const least = /:host \{[^}]*min-height: (\d+)px/.exec(element)?.[1];
+  const view = read('docs/src/guide/ruled-view.md');
+  assert.ok(view.includes(`never less than ${least} px, the element's \`min-height\``), `ruled-view.md: ${least} px`);
+  assert.ok(view.includes('the attribute itself is not changed'));
+  for (const file of ['docs/src/introduction.md', 'docs/src/guide/getting-started.md', 'README.md']) {
+    const text = read(file);
+    assert.match(text, /16\.4/, file);
+    assert.match(text, /20/, file);
+  }
+  assert.ok(
+    read('docs/src/introduction.md').includes(
+      'Node.js 16.4 runs the built package; building it from the source and its tests need Node.js 20 or later',
+    ),
+  );
+});

@@ -182,7 +182,12 @@ test('<ruled-view> setParams() sets named parameters as the controls would, keep
       ['invalid-argument', 'zz'],
     ],
   );
-  assert.match(errors[0].message, /^The value of “t” in the params attribute is not a number/);
+  // said as given to setParams, not as the params attribute
+  assert.match(errors[0].message, /^The value setParams was given for “t” is not a number/);
+  assert.deepEqual(
+    errors.map((e) => e.details.reason),
+    ['element.set.notNumber', 'element.set.unknownParam'],
+  );
   assert.match(errors[1].message, /no parameter “zz”; its parameters are: surface, layout, n, t, ghost/);
   assert.equal(await left.evaluate((v) => v.view.params.n), 30, 'the others stay');
   assert.deepEqual(problems, []);
