@@ -311,3 +311,27 @@ test('an exercise’s "edit" field: read, written back, and refused where it is 
   ])
     assert.throws(() => readTask({ ...base, edit: bad }), { code: 'invalid-task' }, JSON.stringify(bad).slice(0, 60));
 });
+
+test('a tool pose’s neighbour angles name the poses each is between: pose 3 has the angle between poses 2 and 3 and the one between 3 and 4, in both languages', async () => {
+  const { poseValues } = await import('../../www/edit/sets.js');
+  const steps = [0.1, 0.2, 0.3, 0.4, 0.5];
+  for (const [lang, words] of /** @type {const} */ ([
+    ['en', ['axis angle between poses 2 and 3 (°)', 'axis angle between poses 3 and 4 (°)']],
+    ['de', ['Achsenwinkel zwischen den Lagen 2 und 3 (°)', 'Achsenwinkel zwischen den Lagen 3 und 4 (°)']],
+  ])) {
+    const values = poseValues(steps, null, 1, translator(lang).t)(0, 2 * 3);
+    assert.deepEqual(
+      values.map((v) => v.label),
+      words,
+    );
+    assert.deepEqual(
+      values.map((v) => v.value),
+      [steps[2], steps[3]].map((a) => (a * 180) / Math.PI),
+    );
+  }
+  // the first pose has one neighbour
+  assert.deepEqual(
+    poseValues(steps, null, 1, i18n.t)(0, 1).map((v) => v.label),
+    ['axis angle between poses 0 and 1 (°)'],
+  );
+});

@@ -169,7 +169,7 @@ test('every scene describes itself to screen readers; readouts are announced onc
   await page.waitForTimeout(1200);
   assert.equal(await page.evaluate(() => window.__announced), 1, 'pausing announces the readout once');
   const said = await page.evaluate(() => document.querySelector('.rl-stage [aria-live]').textContent);
-  assert.match(said, /rulings N: \d+; .*max \|m i − s\(u i\)\|/);
+  assert.match(said, /rulings N: \d+; .*max \|mᵢ − s\(uᵢ\)\|/);
   // ten slider moves in quick succession (in one task of the page, so that a loaded machine
   // cannot spread them out): at most one announcement now and one per second after
   const spent = await control(page, 'n').evaluate((el) => {

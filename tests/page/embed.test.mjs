@@ -190,6 +190,17 @@ test('<ruled-view> setParams() sets named parameters as the controls would, keep
   );
   assert.match(errors[1].message, /no parameter “zz”; its parameters are: surface, layout, n, t, ghost/);
   assert.equal(await left.evaluate((v) => v.view.params.n), 30, 'the others stay');
+  // a label with subscripts reads as the page shows it, lowered (a notebook prints these)
+  const labels = await left.evaluate(
+    (v) =>
+      new Promise((done) => {
+        v.addEventListener('scene-change', () => done(v.readouts().map((/** @type {any} */ r) => r.label)), {
+          once: true,
+        });
+        v.setAttribute('scene', 'striction');
+      }),
+  );
+  assert.ok(labels.includes('max |mᵢ − s(uᵢ)|'), labels.join(' / '));
   assert.deepEqual(problems, []);
   await page.close();
 });
