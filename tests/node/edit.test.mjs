@@ -335,3 +335,25 @@ test('a tool pose’s neighbour angles name the poses each is between: pose 3 ha
     ['axis angle between poses 0 and 1 (°)'],
   );
 });
+
+test('the cone exercise’s figure is described as it is seen: the ruling that misses the vertex is named, and an edited cone whose rulings all meet says so', async () => {
+  const { builtInTask } = await import('../../www/task/builtin.js');
+  const task = /** @type {import('../../www/task/format.js').Task} */ (builtInTask('developable-cone'));
+  const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === 'isometry'));
+  const input = /** @type {import('../../www/scene.js').Input} */ (decodeInput(/** @type {string} */ (task.input)));
+  const said = {
+    en: 'Ruling 10 misses the cone’s vertex by 5.19·10⁻²; the others pass through it.',
+    de: 'Erzeugende 10 verfehlt die Spitze des Kegels um 5,19·10⁻²; die anderen gehen durch sie.',
+  };
+  for (const [lang, sentence] of Object.entries(said)) {
+    const { t, format } = translator(lang);
+    const built = scene.create({ ...defaults(scene), ...task.params }, { t, format, lang, input });
+    assert.ok(built.description.endsWith(sentence), built.description);
+  }
+  // the cone itself, as an edit: every ruling meets the vertex
+  const cone = scene.create({ ...defaults(scene), surface: 'cone', n: 24 }, context);
+  const rulings = /** @type {any} */ (cone).input?.sets?.[0]?.points ?? null;
+  assert.ok(rulings, 'the cone scene gives its rulings as input');
+  const again = scene.create({ ...defaults(scene), surface: 'cone', n: 24 }, { ...context, input: { rulings } });
+  assert.ok(again.description.endsWith('Every ruling passes through the cone’s vertex.'), again.description);
+});

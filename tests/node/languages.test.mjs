@@ -298,3 +298,15 @@ test('one rendering of subscripts everywhere: every label with one — the table
         assert.doesNotMatch(say(words, lang), /_[{\w]/, `${task.id}: ${say(words, lang)}`);
   assert.equal(plainSubscripts('m_i and u^2'), 'mᵢ and u^2');
 });
+
+test('the 3D view’s accessible name lists the touch gestures as well as the keys and the mouse, in both languages', async () => {
+  const { translator } = await import('../../www/i18n/index.js');
+  const words = {
+    en: ['arrow keys', 'wheel', 'one finger', 'two fingers', 'pinch'],
+    de: ['Pfeiltasten', 'Mausrad', 'Finger', 'zwei', 'gespreizte'],
+  };
+  for (const [lang, need] of Object.entries(words)) {
+    const label = translator(lang).t('view.label');
+    for (const w of need) assert.ok(label.includes(w), `${lang}: view.label has no "${w}"`);
+  }
+});

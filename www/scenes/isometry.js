@@ -8,6 +8,34 @@ import { isometryFigure, middleRadius } from '../figures/isometry.js';
 import { surfaceOptions, rangesOf } from '../catalogue.js';
 
 /** Open parameter ranges that make good figures (the project's choice: the paper gives no data). */
+/**
+ * The rulings of an edited cone that miss its vertex, in a sentence: by how much, or that every
+ * ruling passes through it (within 10⁻⁹ of the cone's size, rounding).
+ * @param {Float64Array} segments   a_i, b_i per ruling
+ * @param {Float64Array} vertex
+ * @param {import('../scene.js').Context} ctx
+ */
+function offVertex(segments, vertex, ctx) {
+  /** @type {Array<[number, number]>} */
+  const off = [];
+  let size = 0;
+  for (let i = 0; 6 * i + 5 < segments.length; i++) {
+    const a = [0, 1, 2].map((k) => segments[6 * i + k] - vertex[k]);
+    const e = [0, 1, 2].map((k) => segments[6 * i + 3 + k] - segments[6 * i + k]);
+    const length = Math.hypot(...e);
+    // |a × e| / |e|: the distance of the vertex from the ruling's line
+    const c = [a[1] * e[2] - a[2] * e[1], a[2] * e[0] - a[0] * e[2], a[0] * e[1] - a[1] * e[0]];
+    const distance = length > 0 ? Math.hypot(...c) / length : Math.hypot(...a);
+    size = Math.max(size, Math.hypot(...a), length);
+    off.push([i, distance]);
+  }
+  const missing = off.filter(([, d]) => d > 1e-9 * size);
+  if (!missing.length) return ctx.t('isometry.describe.vertex.all');
+  const most = ctx.format(Math.max(...missing.map(([, d]) => d)));
+  if (missing.length === 1) return ctx.t('isometry.describe.vertex.one', { i: String(missing[0][0]), distance: most });
+  return ctx.t('isometry.describe.vertex.some', { list: missing.map(([i]) => i).join(', '), distance: most });
+}
+
 const RANGES = {
   hyperboloid: { uMin: 0, uMax: 2.4, closed: false },
   helical: { uMin: 0, uMax: 9, closed: false },
@@ -102,7 +130,11 @@ export const scene = defineScene({
       const built = isometryFigure(own, surface, p, ctx, name, finer, from);
       // the captions' claims are about the built-in surfaces
       if (!edited) return built;
-      return { ...built, claims: [], description: ctx.t('edit.describe', { description: built.description }) };
+      const description = ctx.t('edit.describe', { description: built.description });
+      // an edited cone: which rulings miss its vertex, as the eye sees at once (the exercise
+      // "Make the cone developable again" starts with one lifted)
+      const vertex = name === 'cone' ? offVertex(edited, analytic.striction(new Float64Array([0])), ctx) : '';
+      return { ...built, claims: [], description: vertex ? `${description} ${vertex}` : description };
     });
   },
 });

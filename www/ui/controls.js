@@ -84,6 +84,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
         maxLength: p.maxLength ?? MAX_TEXT_PARAM,
       });
       field.setAttribute('autocapitalize', 'off');
+      field.setAttribute('autocorrect', 'off');
       field.className = 'rl-formula';
       set = (v) => {
         if (doc.activeElement !== field) field.value = String(v);
@@ -112,7 +113,9 @@ export function buildControls(form, scene, params, i18n, hooks) {
       // any slider with more values than pixels (fit()), beside its − / + steps
       const exact = Object.assign(doc.createElement('input'), {
         type: 'text',
-        inputMode: 'decimal',
+        // a phone's decimal keypad (iOS's) has no minus and no slash: the keyboard where the
+        // value may be negative or a fraction ("1/13")
+        inputMode: p.exact || Number(p.min) < 0 ? 'text' : 'decimal',
         className: 'rl-exact',
         spellcheck: false,
         autocomplete: 'off',

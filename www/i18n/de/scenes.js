@@ -130,6 +130,11 @@ export default {
   'isometry.readout.isometry': 'max. relative Änderung einer Kantenlänge',
   'isometry.describe':
     '{surface} als {n} Erzeugende, isometrisch verbogen bis t = {t} zum konoidalen Modell; das konoidale Modell ist {height} hoch.',
+  'isometry.describe.vertex.one':
+    'Erzeugende {i} verfehlt die Spitze des Kegels um {distance}; die anderen gehen durch sie.',
+  'isometry.describe.vertex.some':
+    'Die Erzeugenden {list} verfehlen die Spitze des Kegels um bis zu {distance}; die anderen gehen durch sie.',
+  'isometry.describe.vertex.all': 'Jede Erzeugende geht durch die Spitze des Kegels.',
   'isometry.describePanels':
     '{surface} als {n} Erzeugende (links), ihr konoidales Modell (Mitte) und ihre Näherungsabwicklung (rechts); das konoidale Modell ist {height} hoch.',
   'isometry.download.development': 'Abwicklung herunterladen (SVG)',

@@ -136,6 +136,10 @@ export default {
   'isometry.readout.isometry': 'max relative change of an edge length',
   'isometry.describe':
     'Surface: {surface}, {n} rulings, bent isometrically to t = {t} toward its conoidal model; the conoidal model is {height} high.',
+  'isometry.describe.vertex.one': 'Ruling {i} misses the cone’s vertex by {distance}; the others pass through it.',
+  'isometry.describe.vertex.some':
+    'Rulings {list} miss the cone’s vertex, by up to {distance}; the others pass through it.',
+  'isometry.describe.vertex.all': 'Every ruling passes through the cone’s vertex.',
   'isometry.describePanels':
     'Surface: {surface}, {n} rulings (left), its conoidal model (middle) and its approximate development (right); the conoidal model is {height} high.',
   'isometry.download.development': 'Download the development (SVG)',
