@@ -357,3 +357,24 @@ test('the cone exercise’s figure is described as it is seen: the ruling that m
   const again = scene.create({ ...defaults(scene), surface: 'cone', n: 24 }, { ...context, input: { rulings } });
   assert.ok(again.description.endsWith('Every ruling passes through the cone’s vertex.'), again.description);
 });
+
+test('“Your data” is named for any source (a notebook’s NumPy arrays too, not “import CSV or JSON”); a grid of lines says “Closed” does not close it, rulings that they have no focal surfaces', () => {
+  for (const lang of ['en', 'de']) {
+    const { t } = translator(lang);
+    assert.doesNotMatch(t('data.title'), /CSV|JSON/, lang);
+    assert.match(t('data.text'), /View\.from_segments/, lang);
+  }
+  const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === 'data'));
+  // a 2 × 2 grid of lines
+  const grid = {
+    rows: 2,
+    cols: 2,
+    segments: new Float64Array([0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 1, 0, 0.1, 1, 1, 1, 1, 0, 1, 1, 1]),
+  };
+  const shown = (/** @type {Record<string, any>} */ p, /** @type {any} */ data) =>
+    scene.create({ ...defaults(scene), ...p }, { ...context, data });
+  assert.equal(shown({ closed: true }, grid).note, i18n.t('data.note.closedGrid'));
+  assert.equal(shown({ closed: false }, grid).note, undefined);
+  assert.equal(shown({ focal: true }, undefined).note, i18n.t('data.note.focalRulings'));
+  assert.equal(shown({ closed: true }, undefined).note, undefined);
+});

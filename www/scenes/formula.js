@@ -89,6 +89,36 @@ function analyticOf(p, ctx) {
   });
 }
 
+/**
+ * Why "Closed in u" does not fit the surface of the fields, or null: a closed surface follows its
+ * last ruling by its first, so the ruling at the end of u must be the one at its start (the same
+ * line, either way round: a Möbius band closes too). A surface typed over a preset keeps the
+ * preset's "closed" (the hyperboloid's), and a helicoid over [0, 2π] would be joined from its top
+ * back to its foot: that is said, not drawn silently.
+ * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
+ * @param {import('../scene.js').Context} ctx
+ */
+function notClosing(analytic, ctx) {
+  const ends = analytic.sample(2, { closed: false });
+  const s = ends.segments();
+  ends.free();
+  const point = (/** @type {number} */ k) => [s[3 * k], s[3 * k + 1], s[3 * k + 2]];
+  const [a0, b0, a1, b1] = [0, 1, 2, 3].map(point);
+  const e = a0.map((x, k) => b0[k] - x);
+  const length = Math.hypot(...e);
+  /** the distance of `q` from the first ruling's line */
+  const off = (/** @type {number[]} */ q) => {
+    const d = q.map((x, k) => x - a0[k]);
+    const along = d.reduce((sum, x, k) => sum + x * e[k], 0) / (length * length);
+    return Math.hypot(...d.map((x, k) => x - along * e[k]));
+  };
+  const size = Math.max(length, ...[a0, b0, a1, b1].map((q) => Math.hypot(...q.map((x, k) => x - a0[k]))));
+  const gap = Math.max(off(a1), off(b1));
+  if (gap <= 1e-9 * Math.max(size, 1)) return null;
+  const [uMin, uMax] = [...analytic.parameters(2, { closed: false })];
+  return ctx.t('formula.problem.notClosed', { umin: ctx.format(uMin), umax: ctx.format(uMax), gap: ctx.format(gap) });
+}
+
 /** The u-range of the surface of the formula fields (the fields' own ends, evaluated by the core). */
 function rangesOf(
   /** @type {import('../../pkg/ruledlab.js').AnalyticSurface} */ analytic,
@@ -268,8 +298,14 @@ export const scene = defineScene({
       const n = Number(p.n);
       if (p.tool === 'convergence')
         return convergenceFigure(own, analytic, { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) }, ctx);
+      // "Closed in u" on a surface whose ends do not meet (the tools that read it: these two)
+      const open = ranges.closed ? notClosing(analytic, ctx) : null;
+      const also = (/** @type {import('../scene.js').Built} */ b) =>
+        open ? { ...b, problems: [open, ...(b.problems ?? [])] } : b;
       if (p.tool === 'subdivision')
-        return subdivisionFigure(own, analytic, ranges, { n, scheme: String(p.scheme), steps: Number(p.steps) }, ctx);
+        return also(
+          subdivisionFigure(own, analytic, ranges, { n, scheme: String(p.scheme), steps: Number(p.steps) }, ctx),
+        );
       if (p.tool === 'bending' || p.tool === 'development') {
         const surface = own(analytic.sample(n, { closed: false }));
         return isometryFigure(
@@ -289,7 +325,7 @@ export const scene = defineScene({
         const size = Math.hypot(...built.bounds.max.map((m, k) => m - built.bounds.min[k]));
         if (fit.extent >= STRAIGHTNESS_MIN_EXTENT * size) straightness = fit.deviation / fit.extent;
       } catch {}
-      return { ...built, measures: { ...built.measures, 'formula.strictionStraightness': straightness } };
+      return also({ ...built, measures: { ...built.measures, 'formula.strictionStraightness': straightness } });
     });
   },
 });

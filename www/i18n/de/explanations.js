@@ -322,11 +322,15 @@ das unter der Anzeige.</p>`,
 
   'data.text': `
 <h2>Ihre eigenen Erzeugenden</h2>
-<p>Fügen Sie eine CSV-Datei mit sechs Zahlen je Zeile ein oder laden Sie sie hoch (a.x a.y a.z b.x b.y
-b.z; eine Kopfzeile ist erlaubt), oder JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, oder
+<p>Ihre Erzeugenden oder Ihr Raster von Geraden kommen aus dem Datenbereich der Seite, aus „Als Daten
+bearbeiten“ in einer als Formeln eingegebenen Szene oder aus einem Notebook (NumPy-Arrays, gesendet mit
+<code>View.from_segments</code> oder <code>View.from_grid</code>). Im Datenbereich fügen Sie eine
+CSV-Datei mit sechs Zahlen je Zeile ein oder laden sie hoch (a.x a.y a.z b.x b.y b.z; eine Kopfzeile
+ist erlaubt), oder JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, oder
 <code>{"rows": r, "cols": c, "segments": […]}</code> für eine Kongruenz. Eine fehlerhafte Datei wird mit
 Zeile und Spalte des Fehlers abgelehnt, und die bisher gezeigten Daten bleiben. Eine Regelfläche wird
-mit ihrem Kehlpolygon und den gemeinsamen Loten gezeigt; die Export-Schaltflächen speichern sie wieder
-oder ihre Invarianten. Kleine Importe (bis ${MAX_LINK_RULINGS} Erzeugende) stehen im Link, größere im
-Sitzungsspeicher dieses Browser-Tabs.</p>`,
+mit ihrem Kehlpolygon und den gemeinsamen Loten gezeigt, ein Raster von Geraden mit seiner Leitfläche
+(und seinen Brennflächen, wenn Sie sie wählen); die Export-Schaltflächen speichern sie wieder oder
+ihre Invarianten. Auf der Seite stehen kleine Importe (bis ${MAX_LINK_RULINGS} Erzeugende) im Link,
+größere im Sitzungsspeicher dieses Browser-Tabs.</p>`,
 };

@@ -170,6 +170,8 @@ export default {
   'formula.tool.development': 'Näherungsabwicklung (Abb. 6)',
   'formula.tool.subdivision': 'Unterteilung (Abschnitt 4)',
   'formula.reason.tool': 'Vom gewählten Werkzeug nicht verwendet.',
+  'formula.problem.notClosed':
+    '„In u geschlossen“ lässt auf die letzte Erzeugende die erste folgen, aber diese Fläche schließt sich nicht: Ihre Erzeugende bei u = {umax} liegt {gap} von der bei u = {umin} entfernt. Nehmen Sie das Häkchen für eine Fläche heraus, die sich nicht schließt.',
   'formula.scheme.fourPoint': 'Vierpunktschema w = 1/16',
   'formula.scheme.chaikin': 'Chaikin',
   'formula.scheme.variational': 'Variationell (gekoppelt)',
@@ -190,9 +192,13 @@ export default {
   'formula.param.vmin.field': 'das Feld „v von“',
   'formula.param.vmax.field': 'das Feld „v bis“',
 
-  'data.title': 'Ihre Daten (CSV oder JSON importieren)',
+  'data.title': 'Ihre Daten',
   'data.param.closed': 'Geschlossen (auf die letzte Erzeugende folgt die erste)',
   'data.legend.rulings': 'Ihre Erzeugenden',
+  'data.note.closedGrid':
+    '„Geschlossen“ lässt auf die letzte Erzeugende einer Fläche die erste folgen; ein Raster von Geraden wird gezeigt, wie es ist, nicht geschlossen.',
+  'data.note.focalRulings':
+    'Brennflächen hat ein Raster von Geraden; Ihre Erzeugenden sind eine Fläche, die keine hat.',
   'data.readout.lines': 'Geraden (Kongruenz)',
   'data.describe':
     'Ihre Regelfläche aus {n} Erzeugenden ({parallel} parallele Paare) mit ihren gemeinsamen Loten und ihrem Kehlpolygon; das kleinste |δ| eines Paares von Erzeugenden ist {least}.',

@@ -299,11 +299,14 @@ says so below the readout.</p>`,
 
   'data.text': `
 <h2>Your own rulings</h2>
-<p>Paste or upload a CSV file with six numbers per line (a.x a.y a.z b.x b.y b.z; a header line is
-fine) or JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, or
+<p>Your rulings, or your grid of lines, come from the page's data panel, from "Edit as data" in a
+scene typed as formulas, or from a notebook (NumPy arrays sent by <code>View.from_segments</code> or
+<code>View.from_grid</code>). In the data panel, paste or upload a CSV file with six numbers per line
+(a.x a.y a.z b.x b.y b.z; a header line is fine) or JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, or
 <code>{"rows": r, "cols": c, "segments": […]}</code> for a congruence. A malformed file is rejected
 with the line and column of the problem, and the data shown before stays. A ruled surface is shown
-with its striction polygon and common perpendiculars; the export buttons save it again, or its
-invariants. Small imports (up to ${MAX_LINK_RULINGS} rulings) are kept in the link; larger ones in this browser
-tab's session storage.</p>`,
+with its striction polygon and common perpendiculars, a grid of lines with its director surface (and
+its focal surfaces, if you choose them); the export buttons save it again, or its invariants. On the
+page, small imports (up to ${MAX_LINK_RULINGS} rulings) are kept in the link; larger ones in this
+browser tab's session storage.</p>`,
 };

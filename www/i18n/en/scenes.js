@@ -176,6 +176,8 @@ export default {
   'formula.tool.development': 'Approximate development (Fig. 6)',
   'formula.tool.subdivision': 'Subdivision (Section 4)',
   'formula.reason.tool': 'Not used by the chosen tool.',
+  'formula.problem.notClosed':
+    '“Closed in u” follows the last ruling by the first, but this surface does not close: its ruling at u = {umax} is {gap} away from the one at u = {umin}. Uncheck it for a surface that does not close.',
   'formula.scheme.fourPoint': 'Four-point w = 1/16',
   'formula.scheme.chaikin': 'Chaikin',
   'formula.scheme.variational': 'Variational (coupled)',
@@ -197,9 +199,12 @@ export default {
   'formula.param.vmax.field': 'the field “v to”',
 
   // your data
-  'data.title': 'Your data (import CSV or JSON)',
+  'data.title': 'Your data',
   'data.param.closed': 'Closed (last ruling followed by the first)',
   'data.legend.rulings': 'your rulings',
+  'data.note.closedGrid':
+    '“Closed” follows the last ruling of a surface by the first; a grid of lines is shown as it is, not closed.',
+  'data.note.focalRulings': 'Focal surfaces are those of a grid of lines; your rulings are a surface, which has none.',
   'data.readout.lines': 'lines (congruence)',
   'data.describe':
     'Your ruled surface of {n} rulings ({parallel} parallel pairs), with its common perpendiculars and striction polygon; the smallest |δ| of a pair of rulings is {least}.',
