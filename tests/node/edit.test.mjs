@@ -336,14 +336,14 @@ test('a tool pose’s neighbour angles name the poses each is between: pose 3 ha
   );
 });
 
-test('the cone exercise’s figure is described as it is seen: the ruling that misses the vertex is named, and an edited cone whose rulings all meet says so', async () => {
+test('the cone exercise’s figure is described as it is seen: the ruling out of place is named (it meets neither neighbour), and an edited cone whose rulings all meet says so', async () => {
   const { builtInTask } = await import('../../www/task/builtin.js');
   const task = /** @type {import('../../www/task/format.js').Task} */ (builtInTask('developable-cone'));
   const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === 'isometry'));
   const input = /** @type {import('../../www/scene.js').Input} */ (decodeInput(/** @type {string} */ (task.input)));
   const said = {
-    en: 'Ruling 10 misses the cone’s vertex by 5.19·10⁻²; the others pass through it.',
-    de: 'Erzeugende 10 verfehlt die Spitze des Kegels um 5,19·10⁻²; die anderen gehen durch sie.',
+    en: 'Ruling 10 meets neither of its neighbours (up to 4.91·10⁻² apart); every other pair of consecutive rulings meets, as on a cone.',
+    de: 'Erzeugende 10 trifft keine ihrer Nachbarinnen (bis zu 4,91·10⁻² entfernt); jedes andere Paar aufeinanderfolgender Erzeugender trifft sich, wie auf einem Kegel.',
   };
   for (const [lang, sentence] of Object.entries(said)) {
     const { t, format } = translator(lang);
@@ -355,7 +355,7 @@ test('the cone exercise’s figure is described as it is seen: the ruling that m
   const rulings = /** @type {any} */ (cone).input?.sets?.[0]?.points ?? null;
   assert.ok(rulings, 'the cone scene gives its rulings as input');
   const again = scene.create({ ...defaults(scene), surface: 'cone', n: 24 }, { ...context, input: { rulings } });
-  assert.ok(again.description.endsWith('Every ruling passes through the cone’s vertex.'), again.description);
+  assert.ok(again.description.endsWith('Every pair of consecutive rulings meets, as on a cone.'), again.description);
 });
 
 test('“Your data” is named for any source (a notebook’s NumPy arrays too, not “import CSV or JSON”); a grid of lines says “Closed” does not close it, rulings that they have no focal surfaces', () => {

@@ -218,11 +218,11 @@ test('“Closed in u” on a surface whose ends do not meet is said (a helicoid 
   assert.equal(defaults(scene).closed, true, 'the hyperboloid’s fields are closed');
   for (const tool of ['striction', 'subdivision'])
     assert.deepEqual(problemsOf({ ...helicoid, tool }), [
-      '“Closed in u” follows the last ruling by the first, but this surface does not close: its ruling at u = 6.283 is 3.142 away from the one at u = 0. Uncheck it for a surface that does not close.',
+      '“Closed in u” follows the last ruling by the first, but this surface does not close: its ruling at u = 6.283 is not the one at u = 0 (3.142 apart, at 0 rad). Uncheck it for a surface that does not close.',
     ]);
   assert.match(
     problemsOf(helicoid, 'de')[0],
-    /^„In u geschlossen“ .* u = 6,283 liegt 3,142 von der bei u = 0 entfernt/,
+    /^„In u geschlossen“ .* u = 6,283 ist nicht die bei u = 0 \(3,142 entfernt, unter 0 rad\)/,
   );
   assert.deepEqual(problemsOf({ ...helicoid, closed: false }), []);
   let closed = 0;

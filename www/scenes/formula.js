@@ -99,24 +99,23 @@ function analyticOf(p, ctx) {
  * @param {import('../scene.js').Context} ctx
  */
 function notClosing(analytic, ctx) {
+  // the core's pair invariants of the rulings at the two ends of u: one line when they are
+  // parallel (or antiparallel) at distance 0
   const ends = analytic.sample(2, { closed: false });
-  const s = ends.segments();
+  const { parallel, distance, angle } = ends.invariants({ closed: false });
+  // rounding: 10⁻⁹ of the largest coordinate
+  const size = Array.from(ends.segments()).reduce((m, x) => Math.max(m, Math.abs(x)), 1);
   ends.free();
-  const point = (/** @type {number} */ k) => [s[3 * k], s[3 * k + 1], s[3 * k + 2]];
-  const [a0, b0, a1, b1] = [0, 1, 2, 3].map(point);
-  const e = a0.map((x, k) => b0[k] - x);
-  const length = Math.hypot(...e);
-  /** the distance of `q` from the first ruling's line */
-  const off = (/** @type {number[]} */ q) => {
-    const d = q.map((x, k) => x - a0[k]);
-    const along = d.reduce((sum, x, k) => sum + x * e[k], 0) / (length * length);
-    return Math.hypot(...d.map((x, k) => x - along * e[k]));
-  };
-  const size = Math.max(length, ...[a0, b0, a1, b1].map((q) => Math.hypot(...q.map((x, k) => x - a0[k]))));
-  const gap = Math.max(off(a1), off(b1));
-  if (gap <= 1e-9 * Math.max(size, 1)) return null;
+  const gap = Math.abs(distance[0]);
+  if (parallel[0] && gap <= 1e-9 * size) return null;
   const [uMin, uMax] = [...analytic.parameters(2, { closed: false })];
-  return ctx.t('formula.problem.notClosed', { umin: ctx.format(uMin), umax: ctx.format(uMax), gap: ctx.format(gap) });
+  return ctx.t('formula.problem.notClosed', {
+    umin: ctx.format(uMin),
+    umax: ctx.format(uMax),
+    gap: ctx.format(gap),
+    // (a parallel pair at angle 0, not its rounding)
+    angle: ctx.format(parallel[0] ? 0 : Math.min(angle[0], Math.PI - angle[0])),
+  });
 }
 
 /** The u-range of the surface of the formula fields (the fields' own ends, evaluated by the core). */

@@ -9,31 +9,29 @@ import { surfaceOptions, rangesOf } from '../catalogue.js';
 
 /** Open parameter ranges that make good figures (the project's choice: the paper gives no data). */
 /**
- * The rulings of an edited cone that miss its vertex, in a sentence: by how much, or that every
- * ruling passes through it (within 10⁻⁹ of the cone's size, rounding).
- * @param {Float64Array} segments   a_i, b_i per ruling
- * @param {Float64Array} vertex
+ * An edited cone in a sentence, from the core's signed distances h of consecutive rulings (on a
+ * cone each pair meets, h = 0): the rulings that meet neither neighbour (one lifted off the vertex
+ * is one), else the pairs that do not meet, else that every pair meets — what the eye sees at once.
+ * @param {import('../../pkg/ruledlab.js').RuledSurface} surface
+ * @param {boolean} closed
  * @param {import('../scene.js').Context} ctx
  */
-function offVertex(segments, vertex, ctx) {
-  /** @type {Array<[number, number]>} */
-  const off = [];
-  let size = 0;
-  for (let i = 0; 6 * i + 5 < segments.length; i++) {
-    const a = [0, 1, 2].map((k) => segments[6 * i + k] - vertex[k]);
-    const e = [0, 1, 2].map((k) => segments[6 * i + 3 + k] - segments[6 * i + k]);
-    const length = Math.hypot(...e);
-    // |a × e| / |e|: the distance of the vertex from the ruling's line
-    const c = [a[1] * e[2] - a[2] * e[1], a[2] * e[0] - a[0] * e[2], a[0] * e[1] - a[1] * e[0]];
-    const distance = length > 0 ? Math.hypot(...c) / length : Math.hypot(...a);
-    size = Math.max(size, Math.hypot(...a), length);
-    off.push([i, distance]);
-  }
-  const missing = off.filter(([, d]) => d > 1e-9 * size);
-  if (!missing.length) return ctx.t('isometry.describe.vertex.all');
-  const most = ctx.format(Math.max(...missing.map(([, d]) => d)));
-  if (missing.length === 1) return ctx.t('isometry.describe.vertex.one', { i: String(missing[0][0]), distance: most });
-  return ctx.t('isometry.describe.vertex.some', { list: missing.map(([i]) => i).join(', '), distance: most });
+function coneSentence(surface, closed, ctx) {
+  const { distance } = surface.invariants({ closed });
+  const n = surface.length;
+  // rounding: 10⁻⁹ of the largest coordinate
+  const size = Array.from(surface.segments()).reduce((m, x) => Math.max(m, Math.abs(x)), 1);
+  const apart = Array.from(distance, (h) => Math.abs(h) > 1e-9 * size);
+  const worst = ctx.format(Array.from(distance).reduce((m, h) => Math.max(m, Math.abs(h)), 0));
+  const pair = (/** @type {number} */ k) => (k >= 0 ? apart[k] : closed && apart[n - 1]);
+  const lone = Array.from({ length: n }, (_, i) => i).filter(
+    (i) => pair(i - 1) && (i < apart.length ? apart[i] : false),
+  );
+  if (lone.length === 1) return ctx.t('isometry.describe.cone.one', { i: String(lone[0]), distance: worst });
+  if (lone.length) return ctx.t('isometry.describe.cone.some', { list: lone.join(', '), distance: worst });
+  const pairs = apart.flatMap((a, k) => (a ? [`(${k}, ${(k + 1) % n})`] : []));
+  if (pairs.length) return ctx.t('isometry.describe.cone.pairs', { list: pairs.join(', '), distance: worst });
+  return ctx.t('isometry.describe.cone.all');
 }
 
 const RANGES = {
@@ -131,10 +129,10 @@ export const scene = defineScene({
       // the captions' claims are about the built-in surfaces
       if (!edited) return built;
       const description = ctx.t('edit.describe', { description: built.description });
-      // an edited cone: which rulings miss its vertex, as the eye sees at once (the exercise
+      // an edited cone: which ruling is out of place, as the eye sees at once (the exercise
       // "Make the cone developable again" starts with one lifted)
-      const vertex = name === 'cone' ? offVertex(edited, analytic.striction(new Float64Array([0])), ctx) : '';
-      return { ...built, claims: [], description: vertex ? `${description} ${vertex}` : description };
+      const cone = name === 'cone' ? coneSentence(surface, ranges.closed, ctx) : '';
+      return { ...built, claims: [], description: cone ? `${description} ${cone}` : description };
     });
   },
 });

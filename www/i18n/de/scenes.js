@@ -130,11 +130,13 @@ export default {
   'isometry.readout.isometry': 'max. relative Änderung einer Kantenlänge',
   'isometry.describe':
     '{surface} als {n} Erzeugende, isometrisch verbogen bis t = {t} zum konoidalen Modell; das konoidale Modell ist {height} hoch.',
-  'isometry.describe.vertex.one':
-    'Erzeugende {i} verfehlt die Spitze des Kegels um {distance}; die anderen gehen durch sie.',
-  'isometry.describe.vertex.some':
-    'Die Erzeugenden {list} verfehlen die Spitze des Kegels um bis zu {distance}; die anderen gehen durch sie.',
-  'isometry.describe.vertex.all': 'Jede Erzeugende geht durch die Spitze des Kegels.',
+  'isometry.describe.cone.one':
+    'Erzeugende {i} trifft keine ihrer Nachbarinnen (bis zu {distance} entfernt); jedes andere Paar aufeinanderfolgender Erzeugender trifft sich, wie auf einem Kegel.',
+  'isometry.describe.cone.some':
+    'Die Erzeugenden {list} treffen keine ihrer Nachbarinnen (bis zu {distance} entfernt); jedes andere Paar aufeinanderfolgender Erzeugender trifft sich.',
+  'isometry.describe.cone.pairs':
+    'Die aufeinanderfolgenden Erzeugenden {list} treffen sich nicht (bis zu {distance} entfernt).',
+  'isometry.describe.cone.all': 'Jedes Paar aufeinanderfolgender Erzeugender trifft sich, wie auf einem Kegel.',
   'isometry.describePanels':
     '{surface} als {n} Erzeugende (links), ihr konoidales Modell (Mitte) und ihre Näherungsabwicklung (rechts); das konoidale Modell ist {height} hoch.',
   'isometry.download.development': 'Abwicklung herunterladen (SVG)',
@@ -171,7 +173,7 @@ export default {
   'formula.tool.subdivision': 'Unterteilung (Abschnitt 4)',
   'formula.reason.tool': 'Vom gewählten Werkzeug nicht verwendet.',
   'formula.problem.notClosed':
-    '„In u geschlossen“ lässt auf die letzte Erzeugende die erste folgen, aber diese Fläche schließt sich nicht: Ihre Erzeugende bei u = {umax} liegt {gap} von der bei u = {umin} entfernt. Nehmen Sie das Häkchen für eine Fläche heraus, die sich nicht schließt.',
+    '„In u geschlossen“ lässt auf die letzte Erzeugende die erste folgen, aber diese Fläche schließt sich nicht: Ihre Erzeugende bei u = {umax} ist nicht die bei u = {umin} ({gap} entfernt, unter {angle} rad). Nehmen Sie das Häkchen für eine Fläche heraus, die sich nicht schließt.',
   'formula.scheme.fourPoint': 'Vierpunktschema w = 1/16',
   'formula.scheme.chaikin': 'Chaikin',
   'formula.scheme.variational': 'Variationell (gekoppelt)',

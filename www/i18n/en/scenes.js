@@ -136,10 +136,12 @@ export default {
   'isometry.readout.isometry': 'max relative change of an edge length',
   'isometry.describe':
     'Surface: {surface}, {n} rulings, bent isometrically to t = {t} toward its conoidal model; the conoidal model is {height} high.',
-  'isometry.describe.vertex.one': 'Ruling {i} misses the cone’s vertex by {distance}; the others pass through it.',
-  'isometry.describe.vertex.some':
-    'Rulings {list} miss the cone’s vertex, by up to {distance}; the others pass through it.',
-  'isometry.describe.vertex.all': 'Every ruling passes through the cone’s vertex.',
+  'isometry.describe.cone.one':
+    'Ruling {i} meets neither of its neighbours (up to {distance} apart); every other pair of consecutive rulings meets, as on a cone.',
+  'isometry.describe.cone.some':
+    'Rulings {list} meet neither of their neighbours (up to {distance} apart); every other pair of consecutive rulings meets.',
+  'isometry.describe.cone.pairs': 'The consecutive rulings {list} do not meet (up to {distance} apart).',
+  'isometry.describe.cone.all': 'Every pair of consecutive rulings meets, as on a cone.',
   'isometry.describePanels':
     'Surface: {surface}, {n} rulings (left), its conoidal model (middle) and its approximate development (right); the conoidal model is {height} high.',
   'isometry.download.development': 'Download the development (SVG)',
@@ -177,7 +179,7 @@ export default {
   'formula.tool.subdivision': 'Subdivision (Section 4)',
   'formula.reason.tool': 'Not used by the chosen tool.',
   'formula.problem.notClosed':
-    '“Closed in u” follows the last ruling by the first, but this surface does not close: its ruling at u = {umax} is {gap} away from the one at u = {umin}. Uncheck it for a surface that does not close.',
+    '“Closed in u” follows the last ruling by the first, but this surface does not close: its ruling at u = {umax} is not the one at u = {umin} ({gap} apart, at {angle} rad). Uncheck it for a surface that does not close.',
   'formula.scheme.fourPoint': 'Four-point w = 1/16',
   'formula.scheme.chaikin': 'Chaikin',
   'formula.scheme.variational': 'Variational (coupled)',
