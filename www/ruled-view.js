@@ -559,7 +559,8 @@ export class RuledView extends HTMLElement {
     if (!stage?.scene) throw Object.assign(new Error('ruled-view: no scene shown yet'), { code: 'invalid-argument' });
     const { params, notes } = readSome(stage.scene, values);
     for (const [key, value] of Object.entries(params)) stage.setParam(key, value);
-    this.refused(notes.map((n) => ({ ...n, note: n.note.replace(/^note\./, 'element.note.') })));
+    // (said as given to setParams, not as in the params attribute)
+    this.refused(notes.map((n) => ({ ...n, note: n.note.replace(/^note\./, 'element.set.') })));
     return { ...stage.params };
   }
 

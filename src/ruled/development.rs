@@ -7,14 +7,16 @@
 //! +φ_{0,1} with the x-axis). The map is isometric on every ruling. The common perpendiculars
 //! of the conoidal model are all parallel to n_{0,1}, so the two footpoints of a pair land on
 //! one point, where the two projected rulings meet: these N − 1 points, the images of the
-//! perpendiculars' midpoints (Fig. 3's polygon), form the polygon the projected rulings
+//! perpendiculars' midpoints (Example 1's polygon), form the polygon the projected rulings
 //! envelop. The striction polygon m_i = (f_{i,i−1} + f_{i,i+1})/2 is *inscribed* in it: both
 //! footpoints of ruling i project to consecutive corners of the envelope polygon on the
 //! projected ruling i, so the image of m_i is the midpoint of that edge.
 //!
 //! The conoidal rulings lie at heights ζ_i = Σ_{k<i} h_{k,k+1} along n_{0,1} (docs/src/conventions.md, Section 3);
-//! the *non-developability measure* is max ζ_i − min ζ_i, the "height" of the conoidal
-//! model. It is 0 for a cone or a cylinder and O(H²) for a sampled tangent surface.
+//! a parallel pair is coplanar and adds no height, as a meeting pair does (its body turns about
+//! the normal of its plane, [`HingeChain`]). The *non-developability measure* is max ζ_i − min ζ_i,
+//! the "height" of the conoidal model. It is 0 for a cone or a cylinder (whose development is the
+//! strip of its chords, unrolled) and O(H²) for a sampled tangent surface.
 
 use crate::ruled::{HingeChain, RuledSurface};
 use glam::{DMat4, DVec2, DVec3, DVec4};
@@ -100,7 +102,7 @@ impl Development {
 
     /// The polygon the developed rulings envelop: the N − 1 points where consecutive developed
     /// rulings meet, each the image of both footpoints f_{i,i+1}, f_{i+1,i} of a pair of the
-    /// conoidal model (so of Fig. 3's perpendicular midpoint too).
+    /// conoidal model (so of the perpendicular's midpoint too, a vertex of Example 1's polygon).
     pub fn envelope_polygon(&self) -> Vec<DVec2> {
         let frame = Frame::of(&self.conoidal);
         self.conoidal.invariants().footpoints.iter().step_by(2).map(|&f| frame.plane_coordinates(f)).collect()
@@ -258,6 +260,50 @@ mod tests {
         assert_near!(dev.points[1], DVec2::new(1.0, 0.0), EXACT);
         let e1 = (dev.points[3] - dev.points[2]).normalize();
         assert_near!(e1.y.atan2(e1.x), s.invariants().angle[0], EXACT);
+    }
+
+    /// A cylinder is developable: its parallel pairs add no height, so the measure is 0, and
+    /// the development lays its rulings side by side at the chord distances.
+    #[test]
+    fn a_cylinder_is_developable_and_develops_into_its_chords() {
+        // five parallel rulings on an arc of 1 rad of the unit circle: chords 2 sin(1/8)
+        let arc: Vec<f64> = (0..5)
+            .flat_map(|k| {
+                let (s, c) = (0.25 * k as f64).sin_cos();
+                [c, s, 0.0, c, s, 1.0]
+            })
+            .collect();
+        let dev = Development::of(&RuledSurface::from_flat(&arc).unwrap());
+        // 0 (it was the sum of the chords, 8 sin(1/8) = 0.997, while a parallel pair added its
+        // distance), up to rounding in the turns
+        assert!(dev.non_developability() <= EXACT, "heights {:?}", dev.heights);
+        let chord = 2.0 * 0.125f64.sin();
+        for k in 0..5 {
+            let y = k as f64 * chord;
+            assert_near!(dev.points[2 * k], DVec2::new(0.0, y), EXACT);
+            assert_near!(dev.points[2 * k + 1], DVec2::new(1.0, y), EXACT);
+        }
+        // the catalogue's elliptic cylinder (cos u, 0.7 sin u, v), 24 rulings round it (v from −1
+        // to 1): all at height 0, at the summed chords of the ellipse
+        let cylinder = crate::catalogue::AnalyticSurface::by_name("cylinder").unwrap();
+        let ranges = cylinder.ranges();
+        let s = cylinder.sample(24, ranges).unwrap();
+        let dev = Development::of(&s);
+        assert!(dev.heights.iter().all(|h| h.abs() <= EXACT), "heights {:?}", dev.heights);
+        // (5.18 while a parallel pair added its distance: the 23 chords)
+        assert!(dev.non_developability() <= EXACT, "{}", dev.non_developability());
+        let mut y = 0.0;
+        for k in 0..24 {
+            assert_near!(dev.points[2 * k], DVec2::new(0.0, y), EXACT);
+            assert_near!(dev.points[2 * k + 1], DVec2::new(2.0, y), EXACT);
+            if k < 23 {
+                let at = |j: usize| {
+                    let (s, c) = (std::f64::consts::TAU * j as f64 / 24.0).sin_cos();
+                    DVec2::new(c, 0.7 * s)
+                };
+                y += (at(k + 1) - at(k)).length();
+            }
+        }
     }
 
     /// Fig. 6's strip of Example 1's hyperboloid (24 rulings, u from 0 to 2.4): the image of

@@ -15,10 +15,13 @@
 //! same way as n_{0,1} (docs/src/conventions.md, Section 3); then every ruling is orthogonal to n_{0,1}. The bending
 //! parameter t ∈ [0, 1] uses θ_i = −t τ_i: t = 0 is the input, t = 1 the conoidal model.
 //!
-//! **Parallel pairs** have no unique common perpendicular; the body then uses the
-//! perpendicular from R_i towards R_{i+1} (or, for coincident rulings, the previous body's
-//! perpendicular), so the chain and the conoidal model stay defined; a sampled cylinder
-//! bends flat, with its rulings at the chord distances.
+//! **Parallel pairs** have no unique common perpendicular. Two parallel rulings span a plane,
+//! as two intersecting rulings do, and the body then takes that plane's unit normal
+//! e_i × (the perpendicular from R_i towards R_{i+1}), turned to agree with the previous body's
+//! (for coincident rulings the previous body's perpendicular itself), so the chain and the
+//! conoidal model stay defined and a parallel pair adds no height, as a meeting pair does: a
+//! sampled cylinder bends into one plane, with its rulings at the chord distances, and its
+//! non-developability is 0 (docs/src/conventions.md, Section 3).
 
 use crate::error::{Error, Result};
 use crate::line::Line;
@@ -49,7 +52,13 @@ fn body_normal(r0: &Line, r1: &Line, previous: Option<DVec3>) -> DVec3 {
     let perp = d.reject_from_normalized(r0.dir);
     let scale = r0.point.length().max(r1.point.length()).max(d.length());
     if perp.length() > ZERO_LENGTH_REL * scale {
-        return perp.normalize();
+        // the normal of the plane of the two rulings: the pair lies at one height, as a
+        // meeting pair does (either sign is a normal; the previous body's picks the smaller turn)
+        let normal = r0.dir.cross(perp).normalize();
+        return match previous {
+            Some(p) if p.dot(normal) < 0.0 => -normal,
+            _ => normal,
+        };
     }
     previous
         .map(|p| p.reject_from_normalized(r0.dir))
@@ -236,13 +245,20 @@ mod tests {
     }
 
     #[test]
-    fn parallel_rulings_take_the_perpendicular_between_them_or_the_previous_one() {
+    fn parallel_rulings_take_the_normal_of_their_plane_or_the_previous_perpendicular() {
         let line = |p: [f64; 3]| Line { point: DVec3::from(p), dir: DVec3::X };
         // skew: the unit common perpendicular e₀ × e₁
         let skew = Line { point: DVec3::ZERO, dir: DVec3::Y };
         assert_eq!(body_normal(&line([0.0, 0.0, 0.0]), &skew, None), DVec3::Z);
-        // parallel, 2 apart: the unit vector from the first to the second, across them
-        assert_eq!(body_normal(&line([5.0, 3.0, 0.0]), &line([0.0, 1.0, 0.0]), Some(DVec3::Z)), -DVec3::Y);
+        // parallel, 2 apart in the plane z = 0: that plane's normal, e₀ × (0, −1, 0) = −z on its
+        // own, turned to agree with the previous body's
+        let (r0, r1) = (line([5.0, 3.0, 0.0]), line([0.0, 1.0, 0.0]));
+        assert_eq!(body_normal(&r0, &r1, None), -DVec3::Z);
+        assert_eq!(body_normal(&r0, &r1, Some(DVec3::new(0.0, 0.3, 1.0))), DVec3::Z);
+        assert_eq!(body_normal(&r0, &r1, Some(-DVec3::Z)), -DVec3::Z);
+        // antiparallel: the same plane
+        let back = Line { point: DVec3::new(0.0, 1.0, 0.0), dir: -DVec3::X };
+        assert_eq!(body_normal(&r0, &back, None), -DVec3::Z);
         // within 1e-12 of their size of each other (1e-10 at 1000), or the same line: the
         // previous body's perpendicular, made orthogonal to them
         let near = (line([1e3, 0.0, 0.0]), line([1e3, 1e-10, 0.0]));

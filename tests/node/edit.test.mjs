@@ -311,3 +311,70 @@ test('an exercise’s "edit" field: read, written back, and refused where it is 
   ])
     assert.throws(() => readTask({ ...base, edit: bad }), { code: 'invalid-task' }, JSON.stringify(bad).slice(0, 60));
 });
+
+test('a tool pose’s neighbour angles name the poses each is between: pose 3 has the angle between poses 2 and 3 and the one between 3 and 4, in both languages', async () => {
+  const { poseValues } = await import('../../www/edit/sets.js');
+  const steps = [0.1, 0.2, 0.3, 0.4, 0.5];
+  for (const [lang, words] of /** @type {const} */ ([
+    ['en', ['axis angle between poses 2 and 3 (°)', 'axis angle between poses 3 and 4 (°)']],
+    ['de', ['Achsenwinkel zwischen den Lagen 2 und 3 (°)', 'Achsenwinkel zwischen den Lagen 3 und 4 (°)']],
+  ])) {
+    const values = poseValues(steps, null, 1, translator(lang).t)(0, 2 * 3);
+    assert.deepEqual(
+      values.map((v) => v.label),
+      words,
+    );
+    assert.deepEqual(
+      values.map((v) => v.value),
+      [steps[2], steps[3]].map((a) => (a * 180) / Math.PI),
+    );
+  }
+  // the first pose has one neighbour
+  assert.deepEqual(
+    poseValues(steps, null, 1, i18n.t)(0, 1).map((v) => v.label),
+    ['axis angle between poses 0 and 1 (°)'],
+  );
+});
+
+test('the cone exercise’s figure is described as it is seen: the ruling out of place is named (it meets neither neighbour), and an edited cone whose rulings all meet says so', async () => {
+  const { builtInTask } = await import('../../www/task/builtin.js');
+  const task = /** @type {import('../../www/task/format.js').Task} */ (builtInTask('developable-cone'));
+  const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === 'isometry'));
+  const input = /** @type {import('../../www/scene.js').Input} */ (decodeInput(/** @type {string} */ (task.input)));
+  const said = {
+    en: 'Ruling 10 meets neither of its neighbours (up to 4.91·10⁻² apart); every other pair of consecutive rulings meets, as on a cone.',
+    de: 'Erzeugende 10 trifft keine ihrer Nachbarinnen (bis zu 4,91·10⁻² entfernt); jedes andere Paar aufeinanderfolgender Erzeugender trifft sich, wie auf einem Kegel.',
+  };
+  for (const [lang, sentence] of Object.entries(said)) {
+    const { t, format } = translator(lang);
+    const built = scene.create({ ...defaults(scene), ...task.params }, { t, format, lang, input });
+    assert.ok(built.description.endsWith(sentence), built.description);
+  }
+  // the cone itself, as an edit: every ruling meets the vertex
+  const cone = scene.create({ ...defaults(scene), surface: 'cone', n: 24 }, context);
+  const rulings = /** @type {any} */ (cone).input?.sets?.[0]?.points ?? null;
+  assert.ok(rulings, 'the cone scene gives its rulings as input');
+  const again = scene.create({ ...defaults(scene), surface: 'cone', n: 24 }, { ...context, input: { rulings } });
+  assert.ok(again.description.endsWith('Every pair of consecutive rulings meets, as on a cone.'), again.description);
+});
+
+test('“Your data” is named for any source (a notebook’s NumPy arrays too, not “import CSV or JSON”); a grid of lines says “Closed” does not close it, rulings that they have no focal surfaces', () => {
+  for (const lang of ['en', 'de']) {
+    const { t } = translator(lang);
+    assert.doesNotMatch(t('data.title'), /CSV|JSON/, lang);
+    assert.match(t('data.text'), /View\.from_segments/, lang);
+  }
+  const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === 'data'));
+  // a 2 × 2 grid of lines
+  const grid = {
+    rows: 2,
+    cols: 2,
+    segments: new Float64Array([0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 1, 0, 0.1, 1, 1, 1, 1, 0, 1, 1, 1]),
+  };
+  const shown = (/** @type {Record<string, any>} */ p, /** @type {any} */ data) =>
+    scene.create({ ...defaults(scene), ...p }, { ...context, data });
+  assert.equal(shown({ closed: true }, grid).note, i18n.t('data.note.closedGrid'));
+  assert.equal(shown({ closed: false }, grid).note, undefined);
+  assert.equal(shown({ focal: true }, undefined).note, i18n.t('data.note.focalRulings'));
+  assert.equal(shown({ closed: true }, undefined).note, undefined);
+});

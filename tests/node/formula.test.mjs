@@ -203,3 +203,39 @@ test('the page’s formula presets are the core’s catalogue: each typed preset
     });
   }
 });
+
+test('“Closed in u” on a surface whose ends do not meet is said (a helicoid typed over the hyperboloid keeps its “closed”); every closed preset, the Möbius band too, closes', async () => {
+  const { SCENES } = await import('../../www/scenes/index.js');
+  const { defaults, withChoices } = await import('../../www/scene.js');
+  const { translator } = await import('../../www/i18n/index.js');
+  const { SURFACE_PRESETS } = await import('../../www/catalogue.js');
+  const scene = /** @type {import('../../www/scene.js').Scene} */ (SCENES.find((s) => s.id === 'formula'));
+  const problemsOf = (/** @type {Record<string, any>} */ p, lang = 'en') => {
+    const { t, format } = translator(lang);
+    return scene.create({ ...defaults(scene), ...p }, { t, format, lang }).problems ?? [];
+  };
+  const helicoid = { ax: '0', ay: '0', az: 'u/2', ex: 'cos(u)', ey: 'sin(u)', ez: '0' };
+  assert.equal(defaults(scene).closed, true, 'the hyperboloid’s fields are closed');
+  for (const tool of ['striction', 'subdivision'])
+    assert.deepEqual(problemsOf({ ...helicoid, tool }), [
+      '“Closed in u” follows the last ruling by the first, but this surface does not close: its ruling at u = 6.283 is not the one at u = 0 (3.142 apart, at 0 rad). Uncheck it for a surface that does not close.',
+    ]);
+  assert.match(
+    problemsOf(helicoid, 'de')[0],
+    /^„In u geschlossen“ .* u = 6,283 ist nicht die bei u = 0 \(3,142 entfernt, unter 0 rad\)/,
+  );
+  assert.deepEqual(problemsOf({ ...helicoid, closed: false }), []);
+  let closed = 0;
+  for (const { name } of SURFACE_PRESETS) {
+    const p = withChoices(scene, { preset: name });
+    if (!p.closed) continue;
+    closed++;
+    // (a cylinder's parallel pairs are said too: not this)
+    assert.deepEqual(
+      problemsOf(p).filter((/** @type {string} */ x) => x.startsWith('“Closed in u”')),
+      [],
+      name,
+    );
+  }
+  assert.ok(closed >= 4, `${closed} closed presets`);
+});

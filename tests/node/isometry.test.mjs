@@ -3,7 +3,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab, { sampled } from './load.mjs';
 
-const { AnalyticSurface } = ruledlab;
+const { AnalyticSurface, RuledSurface } = ruledlab;
 const near = (a, b, tol = 1e-12) => Math.abs(a - b) <= tol * Math.max(1, Math.abs(a), Math.abs(b));
 
 /** Edge lengths of the polygon a_i + t_i (b_i − a_i), computed here in JS. */
@@ -74,6 +74,29 @@ test('development: 4 numbers per ruling, R_0 on the x-axis, a cone has measure 0
   assert.ok(s.nonDevelopability() > 0.01);
   const cone = AnalyticSurface.byName('cone').sample(24, { uMin: 0, uMax: 4, closed: false });
   assert.ok(cone.nonDevelopability() < 1e-12, `cone measure ${cone.nonDevelopability()}`);
+});
+
+test('a cylinder is developable: parallel pairs add no height (the catalogue cylinder, 24 rulings; five parallel rulings on an arc of 1 rad), and it develops into its chords', () => {
+  const cylinder = AnalyticSurface.byName('cylinder');
+  const round = cylinder.sample(24);
+  assert.ok(round.nonDevelopability() <= 1e-12, `cylinder measure ${round.nonDevelopability()}`);
+  const arc = RuledSurface.fromSegments(
+    new Float64Array(
+      [0, 1, 2, 3, 4].flatMap((k) => [Math.cos(k / 4), Math.sin(k / 4), 0, Math.cos(k / 4), Math.sin(k / 4), 1]),
+    ),
+  );
+  assert.ok(arc.nonDevelopability() <= 1e-12, `arc measure ${arc.nonDevelopability()}`);
+  // ruling k at y = k · 2 sin(1/8), from x = 0 to 1
+  const dev = arc.development();
+  for (let k = 0; k < 5; k++) {
+    const y = 2 * k * Math.sin(1 / 8);
+    const at = dev.slice(4 * k, 4 * k + 4);
+    assert.ok(
+      [0, y, 1, y].every((x, j) => Math.abs(x - at[j]) < 1e-12),
+      `ruling ${k}: ${[...at]}`,
+    );
+  }
+  for (const o of [round, arc, cylinder]) o.free();
 });
 
 test('envelopeRadii: N − 2 radii; Fig. 5: r + p tan β = 1.4 for rulings at 45°, → 0 (as H²) for rulings orthogonal to the striction helix', () => {

@@ -233,3 +233,80 @@ test('each check fails on tables that break it', () => {
   const long = `// Keys: a.*\nexport default {\n${"  'a.x': 'x',\n".repeat(1)}${'\n'.repeat(MOST_LINES)}};\n`;
   assert.match(problems({ en: { 'a.js': long } }).join('\n'), /more than 400/);
 });
+
+test('one rendering of subscripts everywhere: every label with one — the tables’ texts, the scenes’ labels and readouts, the exercises — shows it lowered, as <sub> in the page and in Unicode’s subscripts as plain text, never as m_{6} or m i', async () => {
+  const { parseRich, plainRich, plainSubscripts } = await import('../../www/ui/richtext.js');
+  const { translator } = await import('../../www/i18n/index.js');
+  const { builtInTasks } = await import('../../www/task/builtin.js');
+  const { say } = await import('../../www/task/format.js');
+  const subscript = /[₀-ₜᵢ-ᵪⱼ]/u;
+  /** Fails unless `text` has a subscript that plain text shows lowered, with no mark left. */
+  const lowered = (/** @type {string} */ where, /** @type {string} */ text) => {
+    const plain = plainRich(text);
+    assert.doesNotMatch(plain, /[_{}]/, `${where}: "${text}" → "${plain}"`);
+    assert.match(plain, subscript, `${where}: "${text}" → "${plain}"`);
+    assert.ok(
+      parseRich(text).some((p) => p.kind === 'sub'),
+      `${where}: "${text}" has no <sub> in the page`,
+    );
+  };
+  let checked = 0;
+  for (const lang of ['en', 'de']) {
+    const i18n = translator(lang);
+    const table = /** @type {Record<string, string>} */ ((await import(`../../www/i18n/${lang}/index.js`)).default);
+    for (const [key, text] of Object.entries(table)) {
+      // texts with markup are HTML or MathML; an error quotes column names as written (tip_x)
+      if (!/_[{\w]/.test(text) || /[<`]/.test(text) || key.startsWith('error.')) continue;
+      // every placeholder filled with a number, as the page fills {i} and {j}
+      const vars = Object.fromEntries([...text.matchAll(/\{(\w+)[}:]/g)].map((m) => [m[1], 6]));
+      lowered(`${lang} ${key}`, i18n.t(key, vars));
+      checked++;
+    }
+  }
+  assert.ok(checked >= 80, `${checked} texts`);
+  // the snap targets' names, as the tip and the live region show them
+  const en = translator('en');
+  assert.equal(plainRich(en.t('snap.striction', { i: '6' })), 'the striction point m₆');
+  assert.equal(plainRich(en.t('snap.footpoint', { i: '6', j: '5' })), 'the footpoint f₆,₅');
+  assert.equal(plainRich(en.t('readout.midpointError')), 'max |mᵢ − s(uᵢ)|');
+  assert.equal(plainRich('x^2 + N_{i,i+1}'), 'x² + Nᵢ,ᵢ₊₁');
+  // the labels of every scene's figure and its readouts (the notebook reads these as text)
+  const ruledlab = (await import('./load.mjs')).default;
+  assert.ok(ruledlab);
+  const { SCENES } = await import('../../www/scenes/index.js');
+  const { defaults } = await import('../../www/scene.js');
+  const context = { t: en.t, format: en.format, lang: 'en' };
+  let labels = 0;
+  for (const scene of SCENES) {
+    if (scene.id === 'large' || scene.id === 'data') continue;
+    const built = /** @type {any} */ (await scene.create(defaults(scene), context));
+    const texts = [
+      ...(built.labels ?? []).map((/** @type {any} */ l) => [`${scene.id} label`, l.text]),
+      ...(built.readouts ?? []).map((/** @type {any} */ r) => [`${scene.id} readout`, en.t(r.label)]),
+    ];
+    for (const [where, text] of texts)
+      if (/_[{\w]/.test(text)) {
+        lowered(where, text);
+        labels++;
+      }
+  }
+  assert.ok(labels >= 10, `${labels} labels of scenes`);
+  // the exercises' texts: m_i said as mᵢ, in both languages
+  for (const task of builtInTasks())
+    for (const words of [task.title, task.prompt, ...task.hints, ...task.answers.map((a) => a.label)])
+      for (const lang of ['en', 'de'])
+        assert.doesNotMatch(say(words, lang), /_[{\w]/, `${task.id}: ${say(words, lang)}`);
+  assert.equal(plainSubscripts('m_i and u^2'), 'mᵢ and u^2');
+});
+
+test('the 3D view’s accessible name lists the touch gestures as well as the keys and the mouse, in both languages', async () => {
+  const { translator } = await import('../../www/i18n/index.js');
+  const words = {
+    en: ['arrow keys', 'wheel', 'one finger', 'two fingers', 'pinch'],
+    de: ['Pfeiltasten', 'Mausrad', 'Finger', 'zwei', 'gespreizte'],
+  };
+  for (const [lang, need] of Object.entries(words)) {
+    const label = translator(lang).t('view.label');
+    for (const w of need) assert.ok(label.includes(w), `${lang}: view.label has no "${w}"`);
+  }
+});

@@ -41,7 +41,11 @@ const NOT_LIMITS = [
     ['convergence.readout.delta01', 'isometry.claim.helical'],
     'the index 0,1 and the paper’s 0.1, not ANSWER_CLOSE',
   ],
-  [0.2, ['curves.claim.sharp'], 'the largest four-point tension w the claim covers, not FINE_DRAG'],
+  [
+    0.2,
+    ['curves.claim.sharp', 'curves.text'],
+    'the largest four-point tension w the claim covers, the end of the w slider, not FINE_DRAG',
+  ],
   [16, ['boot.noWasm'], 'Safari 16.4 (German reads it as 16 and 4), not SNAP_REACH_COARSE'],
 ];
 

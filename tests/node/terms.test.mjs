@@ -55,7 +55,14 @@ const isCaption = (/** @type {string} */ key) => /^paper\.fig\d+(\.caption)?$/.t
 test('the table of German terms is there and has the terms this page needs', () => {
   const rows = terms();
   assert.ok(rows.length >= 15, `${rows.length} rows`);
-  for (const needed of ['Regelschar', 'Näherungsabwicklung', 'Butterfly-Schema', 'Kehllinie (Striktionslinie)'])
+  for (const needed of [
+    'Regelschar',
+    'Näherungsabwicklung',
+    'Butterfly-Schema',
+    'Kehllinie (Striktionslinie)',
+    'Endpunktschema',
+    'Geradenraumschema',
+  ])
     assert.ok(
       rows.some((r) => r.german.includes(needed)),
       `the table has ${needed}`,

@@ -251,6 +251,11 @@ test('warnings with the values: the surface the prompt calls developable fails t
   const range = /from ([\d.·⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+) to ([\d.·⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+) over the numbers drawn/.exec(option);
   assert.ok(range, option);
   assert.doesNotMatch(option, /now/);
+  // a target named by its readout's label: its subscripts as everywhere (an option holds no <sub>)
+  const footpoint = await drawn.page
+    .locator('[name="author-value-0"] option[value="readout.footpointError"]')
+    .innerText();
+  assert.ok(footpoint.startsWith('max |fᵢ,ᵢ₊₁ − s(uᵢ)|'), footpoint);
   await drawn.page.locator('[name="author-bound-0"]').fill('0.012');
   await drawn.page.locator('[name="author-bound-0"]').dispatchEvent('change');
   await drawn.page.waitForTimeout(100);

@@ -182,9 +182,25 @@ test('<ruled-view> setParams() sets named parameters as the controls would, keep
       ['invalid-argument', 'zz'],
     ],
   );
-  assert.match(errors[0].message, /^The value of “t” in the params attribute is not a number/);
+  // said as given to setParams, not as the params attribute
+  assert.match(errors[0].message, /^The value setParams was given for “t” is not a number/);
+  assert.deepEqual(
+    errors.map((e) => e.details.reason),
+    ['element.set.notNumber', 'element.set.unknownParam'],
+  );
   assert.match(errors[1].message, /no parameter “zz”; its parameters are: surface, layout, n, t, ghost/);
   assert.equal(await left.evaluate((v) => v.view.params.n), 30, 'the others stay');
+  // a label with subscripts reads as the page shows it, lowered (a notebook prints these)
+  const labels = await left.evaluate(
+    (v) =>
+      new Promise((done) => {
+        v.addEventListener('scene-change', () => done(v.readouts().map((/** @type {any} */ r) => r.label)), {
+          once: true,
+        });
+        v.setAttribute('scene', 'striction');
+      }),
+  );
+  assert.ok(labels.includes('max |mᵢ − s(uᵢ)|'), labels.join(' / '));
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -290,3 +290,39 @@ async function typePoints(
       await hand.tap(page.locator('.rl-coords-set'));
     }
 }
+
+test('phone keyboards: a number answer takes a minus (the keyboard, not iOS’s decimal keypad, which has none), a fraction field too; no answer or formula field capitalises or corrects; the view’s name lists the gestures', async () => {
+  const page = await phone.newPage();
+  const problems = watch(page);
+  /** The keyboard attributes of the fields `selector` finds. */
+  const keyboard = (/** @type {string} */ selector) =>
+    page.$$eval(selector, (fields) =>
+      fields.map((f) => [f.getAttribute('inputmode'), f.getAttribute('autocapitalize'), f.getAttribute('autocorrect')]),
+    );
+  // minding-delta: its answer is −1.711
+  await page.goto(`${url}#task=minding-delta`);
+  await ready(page);
+  assert.deepEqual(await keyboard('input[name="task-delta"]'), [['text', 'off', 'off']]);
+  // the view's accessible name says the gestures too, not only keys and mouse
+  assert.match(
+    /** @type {string} */ (await page.locator('.rl-view canvas').getAttribute('aria-label')),
+    /On a touch screen, drag one finger to turn it, two fingers together to move it, and spread or pinch two fingers to zoom\.$/,
+  );
+  await page.locator('input[name="task-delta"]').fill('−1.711');
+  assert.equal(await page.locator('input[name="task-delta"]').inputValue(), '−1.711');
+  // a curve typed as three formulas
+  await page.goto(`${url}#task=hypar-striction`);
+  await ready(page);
+  assert.deepEqual(await keyboard('.rl-task-answers input'), Array(3).fill(['text', 'off', 'off']));
+  // the scene's own formula fields, and the exact value of w (from −0.05, and fractions as 1/13)
+  await page.goto(`${url}#scene=formula`);
+  await ready(page);
+  const formulas = await keyboard('.rl-controls input.rl-formula');
+  assert.ok(formulas.length >= 6, `${formulas.length} formula fields`);
+  for (const f of formulas) assert.deepEqual(f.slice(1), ['off', 'off']);
+  await page.goto(`${url}#scene=curves&scheme=four-point`);
+  await ready(page);
+  assert.deepEqual(await keyboard('.rl-row[data-key="w"] input.rl-exact'), [['text', null, null]]);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

@@ -151,6 +151,55 @@ test('a ruling’s end snaps onto its neighbour exactly — mouse and keyboard; 
   await page.close();
 });
 
+test('a snap onto a striction point or a footpoint is named with its subscripts, in the tip and in what is said: m₄, f₄,₅, never m_{4}', async () => {
+  const { page, problems } = await session.open(
+    'index.html#scene=striction&surface=hyperboloid&n=8&normals=1&polygon=1',
+  );
+  /** The screen point of the `k`-th point of the snap targets named `name` (client px). */
+  const targetOnScreen = (/** @type {string} */ name, /** @type {number} */ k) =>
+    page.evaluate(
+      ([name, k]) => {
+        const { stage } = window.ruledlab;
+        const b = stage.viewer.canvas.getBoundingClientRect();
+        const m = stage.viewer.camera.viewProj(b.width / b.height);
+        const group = stage.editor.sets[0].targets.find((/** @type {any} */ g) => g.name === name);
+        const p = group.points.subarray(3 * Number(k), 3 * Number(k) + 3);
+        const w = m[3] * p[0] + m[7] * p[1] + m[11] * p[2] + m[15];
+        return {
+          x: b.left + (((m[0] * p[0] + m[4] * p[1] + m[8] * p[2] + m[12]) / w + 1) / 2) * b.width,
+          y: b.top + ((1 - (m[1] * p[0] + m[5] * p[1] + m[9] * p[2] + m[13]) / w) / 2) * b.height,
+        };
+      },
+      [name, k],
+    );
+  // ruling 0's end a onto m_4 (the closed surface's striction points are m_0 … m_7), then onto
+  // f_4,5 (the footpoint on ruling 4 of the pair (4, 5): target 8)
+  for (const [name, k, said] of /** @type {const} */ ([
+    ['snap.striction', 4, 'on the striction point m₄'],
+    ['snap.footpoint', 8, 'on the footpoint f₄,₅'],
+  ])) {
+    const from = (await handlesOnPage(page))[0];
+    const to = await targetOnScreen(name, k);
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    for (let s = 1; s <= 10; s++)
+      await page.mouse.move(from.x + ((to.x + 1 - from.x) * s) / 10, from.y + ((to.y - 1 - from.y) * s) / 10);
+    await drawn(page);
+    const tip = await page.locator('.rl-tip-snap').innerText();
+    assert.equal(tip, `◆ ${said}`);
+    const live = await page.evaluate(() => document.querySelector('.rl-stage [aria-live]')?.textContent ?? '');
+    assert.ok(live.includes(said), `said: ${live}`);
+    await page.mouse.up();
+    await drawn(page);
+    const after = await page.evaluate(() => document.querySelector('.rl-stage [aria-live]')?.textContent ?? '');
+    assert.doesNotMatch(after, /[_{}]/, `said after the drag: ${after}`);
+    await page.keyboard.press('Control+z');
+    await drawn(page);
+  }
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('an exercise holds its points: fixed, on a line (exactly), and a constraint that cannot hold is said and lifted', async () => {
   const task = readTask({
     ruledlab: 'exercise',

@@ -10,6 +10,7 @@
 import { snapPoint } from '../../pkg/ruledlab.js';
 import { pointerRay, toScreen, transformPoint } from './geometry.js';
 import { normalize, sub } from '../math.js';
+import { plainRich } from '../ui/richtext.js';
 
 /**
  * A target on screen: what the core is asked about, and what a snap onto it is called.
@@ -262,7 +263,7 @@ export class Snapper {
       .sort((a, b) => order[a.c.kind] - order[b.c.kind] || a.c.rank - b.c.rank || a.c.distance - b.c.distance)[0];
     if (taken?.s) {
       point = Array.from(taken.s);
-      snap = { name: taken.c.name, kind: taken.c.kind, world: transformPoint(m, point) };
+      snap = { name: plainRich(taken.c.name), kind: taken.c.kind, world: transformPoint(m, point) };
     }
     return { point, free, held: placed.held ?? null, snap };
   }

@@ -22,7 +22,7 @@ import {
   LABEL_FONT,
   TEXT_FONT,
 } from './projection.js';
-import { parseRich } from '../ui/richtext.js';
+import { parseRich, plainRich } from '../ui/richtext.js';
 import { SVG, svgMaker } from '../svg-dom.js';
 import { HATCH_SPACING, PRINT_WIDTH } from '../limits.js';
 
@@ -54,7 +54,7 @@ export function exportSvg(
   const nat = frame.nat;
   const doc = document.implementation.createDocument(SVG, 'svg', null);
   const svg = doc.documentElement;
-  const plainTitle = fig.title.replace(/[_^]\{?([^}\s]*)\}?/g, '$1');
+  const plainTitle = plainRich(fig.title);
   // the title in 11 pt, smaller (down to 8 pt) where that is wider than the drawing
   const titleSize = title
     ? Math.max(

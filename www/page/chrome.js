@@ -8,12 +8,13 @@ import { builtInTasks } from '../task/builtin.js';
 import { solvedTasks } from '../task/progress.js';
 import { say } from '../task/format.js';
 import { undrawn } from '../task/draw.js';
+import { plainRich } from '../ui/richtext.js';
 
 /** The page's language names, in their own language. */
 const NATIVE = { en: 'English', de: 'Deutsch' };
 
-/** A title without the markup of sub- and superscripts (for menus and the tab). */
-export const plainTitle = (/** @type {string} */ text) => text.replace(/[_^]\{?([^}]*)\}?/g, '$1');
+/** A title in plain text, its scripts as everywhere (for menus and the tab: "R_{i}" → "Rᵢ"). */
+export const plainTitle = (/** @type {string} */ text) => plainRich(text);
 
 /** Text as HTML (for the shell's markup). */
 export const htmlText = (/** @type {string} */ text) =>

@@ -26,6 +26,7 @@ import { MAX_LINK_HANDLES } from '../limits.js';
 import { copyField } from './copy-field.js';
 import { packageButtons } from './packages.js';
 import { taskLink, say } from '../task/format.js';
+import { plainRich } from '../ui/richtext.js';
 import { builtInTask } from '../task/builtin.js';
 import { undrawn } from '../task/draw.js';
 import { writeSolutionRule } from '../task/solution-rule.js';
@@ -369,8 +370,8 @@ export function taskElementSnippet(
 /** Text for an HTML attribute value in double quotes. */
 const attr = (/** @type {string} */ s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
 
-/** A scene title without its subscript marks ("R_{i}" → "Ri"). */
-const plainTitle = (/** @type {string} */ s) => s.replace(/[_^]\{?([^}]*)\}?/g, '$1');
+/** A scene title in plain text, its scripts as everywhere ("R_{i}" → "Rᵢ"). */
+const plainTitle = (/** @type {string} */ s) => plainRich(s);
 
 /**
  * An <iframe> of this page in embed mode, with what readers may do there (the controls, dragging

@@ -1,4 +1,8 @@
-// Your data: rulings (or a congruence) pasted or uploaded as CSV or JSON, with its invariants.
+// Your data: rulings (or a congruence) pasted or uploaded as CSV or JSON in the page's data panel,
+// handed over by "Edit as data", or sent from a notebook (NumPy arrays), with its invariants.
+// "Closed" acts on rulings and "Focal surfaces" on a grid of lines: which one the data is is known
+// only once it is read (a control's reason follows its parameters alone), so the other is said
+// in a note when it is checked.
 import { LineCongruence, RuledSurface, stripIndices, gridIndices } from '../../pkg/ruledlab.js';
 import { focalLayers } from '../layers/focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
@@ -73,6 +77,7 @@ export const scene = defineScene({
           readouts,
           measures,
           description,
+          ...(p.closed ? { note: t('data.note.closedGrid') } : {}),
           data: { segments, grid: { rows, cols } },
           input: { sets: [lineSet(c.segments(), cols)], from },
         };
@@ -104,6 +109,7 @@ export const scene = defineScene({
           least: Math.min(...Array.from(inv.distribution, Math.abs).filter(Number.isFinite)),
         }),
         problems: parallelProblems(inv.parallel, s.length, t),
+        ...(p.focal ? { note: t('data.note.focalRulings') } : {}),
         data: { segments },
         input: {
           sets: [

@@ -89,6 +89,35 @@ function analyticOf(p, ctx) {
   });
 }
 
+/**
+ * Why "Closed in u" does not fit the surface of the fields, or null: a closed surface follows its
+ * last ruling by its first, so the ruling at the end of u must be the one at its start (the same
+ * line, either way round: a Möbius band closes too). A surface typed over a preset keeps the
+ * preset's "closed" (the hyperboloid's), and a helicoid over [0, 2π] would be joined from its top
+ * back to its foot: that is said, not drawn silently.
+ * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
+ * @param {import('../scene.js').Context} ctx
+ */
+function notClosing(analytic, ctx) {
+  // the core's pair invariants of the rulings at the two ends of u: one line when they are
+  // parallel (or antiparallel) at distance 0
+  const ends = analytic.sample(2, { closed: false });
+  const { parallel, distance, angle } = ends.invariants({ closed: false });
+  // rounding: 10⁻⁹ of the largest coordinate
+  const size = Array.from(ends.segments()).reduce((m, x) => Math.max(m, Math.abs(x)), 1);
+  ends.free();
+  const gap = Math.abs(distance[0]);
+  if (parallel[0] && gap <= 1e-9 * size) return null;
+  const [uMin, uMax] = [...analytic.parameters(2, { closed: false })];
+  return ctx.t('formula.problem.notClosed', {
+    umin: ctx.format(uMin),
+    umax: ctx.format(uMax),
+    gap: ctx.format(gap),
+    // (a parallel pair at angle 0, not its rounding)
+    angle: ctx.format(parallel[0] ? 0 : Math.min(angle[0], Math.PI - angle[0])),
+  });
+}
+
 /** The u-range of the surface of the formula fields (the fields' own ends, evaluated by the core). */
 function rangesOf(
   /** @type {import('../../pkg/ruledlab.js').AnalyticSurface} */ analytic,
@@ -268,8 +297,14 @@ export const scene = defineScene({
       const n = Number(p.n);
       if (p.tool === 'convergence')
         return convergenceLayers(own, analytic, { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) }, ctx);
+      // "Closed in u" on a surface whose ends do not meet (the tools that read it: these two)
+      const open = ranges.closed ? notClosing(analytic, ctx) : null;
+      const also = (/** @type {import('../scene.js').Built} */ b) =>
+        open ? { ...b, problems: [open, ...(b.problems ?? [])] } : b;
       if (p.tool === 'subdivision')
-        return subdivisionLayers(own, analytic, ranges, { n, scheme: String(p.scheme), steps: Number(p.steps) }, ctx);
+        return also(
+          subdivisionLayers(own, analytic, ranges, { n, scheme: String(p.scheme), steps: Number(p.steps) }, ctx),
+        );
       if (p.tool === 'bending' || p.tool === 'development') {
         const surface = own(analytic.sample(n, { closed: false }));
         return isometryLayers(
@@ -289,7 +324,7 @@ export const scene = defineScene({
         const size = Math.hypot(...built.bounds.max.map((m, k) => m - built.bounds.min[k]));
         if (fit.extent >= STRAIGHTNESS_MIN_EXTENT * size) straightness = fit.deviation / fit.extent;
       } catch {}
-      return { ...built, measures: { ...built.measures, 'formula.strictionStraightness': straightness } };
+      return also({ ...built, measures: { ...built.measures, 'formula.strictionStraightness': straightness } });
     });
   },
 });

@@ -8,6 +8,32 @@ import { isometryLayers, middleRadius } from '../layers/isometry.js';
 import { surfaceOptions, rangesOf } from '../catalogue.js';
 
 /** Open parameter ranges that make good figures (the project's choice: the paper gives no data). */
+/**
+ * An edited cone in a sentence, from the core's signed distances h of consecutive rulings (on a
+ * cone each pair meets, h = 0): the rulings that meet neither neighbour (one lifted off the vertex
+ * is one), else the pairs that do not meet, else that every pair meets — what the eye sees at once.
+ * @param {import('../../pkg/ruledlab.js').RuledSurface} surface
+ * @param {boolean} closed
+ * @param {import('../scene.js').Context} ctx
+ */
+function coneSentence(surface, closed, ctx) {
+  const { distance } = surface.invariants({ closed });
+  const n = surface.length;
+  // rounding: 10⁻⁹ of the largest coordinate
+  const size = Array.from(surface.segments()).reduce((m, x) => Math.max(m, Math.abs(x)), 1);
+  const apart = Array.from(distance, (h) => Math.abs(h) > 1e-9 * size);
+  const worst = ctx.format(Array.from(distance).reduce((m, h) => Math.max(m, Math.abs(h)), 0));
+  const pair = (/** @type {number} */ k) => (k >= 0 ? apart[k] : closed && apart[n - 1]);
+  const lone = Array.from({ length: n }, (_, i) => i).filter(
+    (i) => pair(i - 1) && (i < apart.length ? apart[i] : false),
+  );
+  if (lone.length === 1) return ctx.t('isometry.describe.cone.one', { i: String(lone[0]), distance: worst });
+  if (lone.length) return ctx.t('isometry.describe.cone.some', { list: lone.join(', '), distance: worst });
+  const pairs = apart.flatMap((a, k) => (a ? [`(${k}, ${(k + 1) % n})`] : []));
+  if (pairs.length) return ctx.t('isometry.describe.cone.pairs', { list: pairs.join(', '), distance: worst });
+  return ctx.t('isometry.describe.cone.all');
+}
+
 const RANGES = {
   hyperboloid: { uMin: 0, uMax: 2.4, closed: false },
   helical: { uMin: 0, uMax: 9, closed: false },
@@ -102,7 +128,11 @@ export const scene = defineScene({
       const built = isometryLayers(own, surface, p, ctx, name, finer, from);
       // the captions' claims are about the built-in surfaces
       if (!edited) return built;
-      return { ...built, claims: [], description: ctx.t('edit.describe', { description: built.description }) };
+      const description = ctx.t('edit.describe', { description: built.description });
+      // an edited cone: which ruling is out of place, as the eye sees at once (the exercise
+      // "Make the cone developable again" starts with one lifted)
+      const cone = name === 'cone' ? coneSentence(surface, ranges.closed, ctx) : '';
+      return { ...built, claims: [], description: cone ? `${description} ${cone}` : description };
     });
   },
 });

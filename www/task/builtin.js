@@ -215,8 +215,8 @@ const RAW = [
         de: 'Probieren Sie jedes Schema und beobachten Sie den Winkel in den Messwerten.',
       },
       {
-        en: 'Both butterfly variants pass, on purpose: on Example 5 the largest angle is that of the lines (16) inserts on the diagonals, which the two share; the variational schemes miss by 5·10⁻³ rad or more.',
-        de: 'Beide Varianten des Butterfly-Schemas bestehen, mit Absicht: Auf Beispiel 5 ist der größte Winkel der der Geraden, die (16) auf den Diagonalen einfügt, und die haben beide gemeinsam; die variationellen Schemata verfehlen um 5·10⁻³ rad oder mehr.',
+        en: 'Both butterfly variants pass, on purpose: on Example 5 the largest angle is that of the lines (16) inserts on the diagonals, which the two share; the variational schemes miss by about 5·10⁻³ rad or more.',
+        de: 'Beide Varianten des Butterfly-Schemas bestehen, mit Absicht: Auf Beispiel 5 ist der größte Winkel der der Geraden, die (16) auf den Diagonalen einfügt, und die haben beide gemeinsam; die variationellen Schemata verfehlen um etwa 5·10⁻³ rad oder mehr.',
       },
     ],
     // either butterfly variant (all edges, or the diagonals only) is a solution

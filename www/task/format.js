@@ -19,6 +19,7 @@
 // Drawn numbers (task/draw.js): a parameter's value `{ "drawn": "k" }`, a bound `{ "drawn": "tol" }`
 // and "{k}" in the texts take the number drawn for the attempt from its seed.
 
+import { plainSubscripts } from '../ui/richtext.js';
 import {
   MAX_TASK,
   MAX_TASK_ANSWERS,
@@ -523,9 +524,12 @@ export function writeTask(/** @type {Task} */ task) {
   });
 }
 
-/** Words in `lang`, else in the language there is. */
+/**
+ * Words in `lang`, else in the language there is, their subscripts shown as everywhere on the page
+ * ("m_i" → "mᵢ", "R_{i,i+1}" → "Rᵢ,ᵢ₊₁"; a caret stays as typed, for the formulas hints quote).
+ */
 export function say(/** @type {Words} */ w, /** @type {string} */ lang) {
-  return (lang === 'de' ? (w.de ?? w.en) : (w.en ?? w.de)) ?? '';
+  return plainSubscripts((lang === 'de' ? (w.de ?? w.en) : (w.en ?? w.de)) ?? '');
 }
 
 // —— in a link: a built-in exercise by its id, another as "j." and its JSON in base64url ——

@@ -316,8 +316,13 @@ export class TaskPanel {
       spellcheck: false,
       autocomplete: 'off',
       className: number ? 'rl-task-number' : 'rl-formula',
+      // a number may be negative, a fraction or a power of ten (−1.711, 1/13, 2·10^-3): a phone's
+      // decimal keypad (iOS's) has no minus, slash or caret, so every answer takes the keyboard
+      inputMode: 'text',
     });
-    if (number) input.inputMode = 'decimal';
+    // as the scene's own formula fields: no capital letter or correction of "sin(u)" or "2e-3"
+    input.setAttribute('autocapitalize', 'off');
+    input.setAttribute('autocorrect', 'off');
     input.addEventListener('input', () => onInput(input.value));
     // Enter in a field checks
     input.addEventListener('keydown', (e) => {

@@ -3,7 +3,7 @@
 // the DOM from the scene's declaration. A control that does nothing in the current state is
 // disabled and says why. Used by the page and by <ruled-view controls>.
 import { irrelevance, parseNumber } from '../scene.js';
-import { appendRich } from './richtext.js';
+import { appendRich, plainRich } from './richtext.js';
 import { MAX_TEXT_PARAM, ROUNDING } from '../limits.js';
 
 /**
@@ -84,6 +84,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
         maxLength: p.maxLength ?? MAX_TEXT_PARAM,
       });
       field.setAttribute('autocapitalize', 'off');
+      field.setAttribute('autocorrect', 'off');
       field.className = 'rl-formula';
       set = (v) => {
         if (doc.activeElement !== field) field.value = String(v);
@@ -112,12 +113,14 @@ export function buildControls(form, scene, params, i18n, hooks) {
       // any slider with more values than pixels (fit()), beside its − / + steps
       const exact = Object.assign(doc.createElement('input'), {
         type: 'text',
-        inputMode: 'decimal',
+        // a phone's decimal keypad (iOS's) has no minus and no slash: the keyboard where the
+        // value may be negative or a fraction ("1/13")
+        inputMode: p.exact || Number(p.min) < 0 ? 'text' : 'decimal',
         className: 'rl-exact',
         spellcheck: false,
         autocomplete: 'off',
       });
-      exact.setAttribute('aria-label', t('control.exactValue', { name: t(p.label) }));
+      exact.setAttribute('aria-label', t('control.exactValue', { name: plainRich(t(p.label)) }));
       exact.title = t(p.exact ? 'control.exactHint' : 'control.numberHint');
       exact.hidden = !p.exact;
       exact.addEventListener('change', () => {
@@ -151,7 +154,10 @@ export function buildControls(form, scene, params, i18n, hooks) {
           textContent: sign < 0 ? '−' : '+',
           hidden: true,
         });
-        b.setAttribute('aria-label', t(sign < 0 ? 'control.decrease' : 'control.increase', { name: t(p.label) }));
+        b.setAttribute(
+          'aria-label',
+          t(sign < 0 ? 'control.decrease' : 'control.increase', { name: plainRich(t(p.label)) }),
+        );
         b.addEventListener('click', () => {
           const next = snap(p, Number(slider.value) + sign * (p.step ?? span(p) / 100));
           if (next !== Number(slider.value)) hooks.onChange(p.key, next, true);
@@ -178,7 +184,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
       if (p.play) {
         play = Object.assign(doc.createElement('button'), { type: 'button', className: 'rl-play' });
         play.setAttribute('aria-pressed', 'false');
-        play.setAttribute('aria-label', t('control.play', { name: t(p.label) }));
+        play.setAttribute('aria-label', t('control.play', { name: plainRich(t(p.label)) }));
         play.textContent = '▶';
         play.addEventListener('click', () => hooks.onPlay(p.key));
         line.append(play);
@@ -218,7 +224,7 @@ export function buildControls(form, scene, params, i18n, hooks) {
       r.play.textContent = on ? '⏸' : '▶';
       r.play.setAttribute('aria-pressed', String(on));
       // (a toggle keeps its name: pressed says that it plays)
-      r.play.setAttribute('aria-label', t('control.play', { name: t(r.param.label) }));
+      r.play.setAttribute('aria-label', t('control.play', { name: plainRich(t(r.param.label)) }));
     }
   };
 

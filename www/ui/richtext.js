@@ -37,10 +37,55 @@ export function appendRich(parent, text) {
   return parent;
 }
 
-/** The label read aloud: "R_{i,i+1}" → "R i,i+1". */
+/** Unicode's subscript and superscript forms of the characters that have one. */
+const SCRIPTS = {
+  sub: Object.fromEntries(
+    [...'0123456789+−-=()aehijklmnoprstuvxβγρφχ'].map((c, k) => [c, [...'₀₁₂₃₄₅₆₇₈₉₊₋₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓᵦᵧᵨᵩᵪ'][k]]),
+  ),
+  sup: Object.fromEntries(
+    [...'0123456789+−-=()abcdefghijklmnoprstuvwxyz'].map((c, k) => [
+      c,
+      [...'⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁻⁼⁽⁾ᵃᵇᶜᵈᵉᶠᵍʰⁱʲᵏˡᵐⁿᵒᵖʳˢᵗᵘᵛʷˣʸᶻ'][k],
+    ]),
+  ),
+};
+
+/**
+ * A script in Unicode's sub- or superscript characters: "i,i+1" → "ᵢ,ᵢ₊₁" (a comma or a space
+ * stays as it is); null when a character has no such form.
+ */
+function scripted(/** @type {string} */ text, /** @type {'sub' | 'sup'} */ kind) {
+  const forms = /** @type {Record<string, string>} */ (SCRIPTS[kind]);
+  const chars = [...text];
+  if (!chars.every((c) => c in forms || c === ',' || c === ' ')) return null;
+  return chars.map((c) => forms[c] ?? c).join('');
+}
+
+/**
+ * Only the subscripts of `text` in Unicode's characters ("m_i" → "mᵢ"), carets left as typed: the
+ * texts of an exercise, whose hints may quote a formula ("type u^2").
+ */
+export function plainSubscripts(/** @type {string} */ text) {
+  return String(text).replace(
+    /_(?:\{([^}]*)\}|(.))/gu,
+    (whole, braced, one) => scripted(braced ?? one, 'sub') ?? whole,
+  );
+}
+
+/**
+ * A label as plain text, for every place that holds no markup (a menu's option, a live region, a
+ * tip's words, the readouts a notebook reads): its scripts in Unicode's sub- and superscript
+ * characters, "R_{i,i+1}" → "Rᵢ,ᵢ₊₁", "f_{6,5}" → "f₆,₅", "x^2" → "x²" — the one rendering of
+ * scripts beside the <sub>/<sup> of appendRich. A script with a character Unicode has no such
+ * form of stays readable as "_(…)" or "^(…)".
+ */
 export function plainRich(/** @type {string} */ text) {
   return parseRich(text)
-    .map((p) => (p.kind === 'text' ? p.text : ` ${p.text}`))
+    .map((p) => {
+      if (p.kind === 'text') return p.text;
+      const mark = p.kind === 'sub' ? '_' : '^';
+      return scripted(p.text, p.kind) ?? (p.text.length === 1 ? `${mark}${p.text}` : `${mark}(${p.text})`);
+    })
     .join('')
     .replace(/\s+/g, ' ')
     .trim();

@@ -84,7 +84,7 @@ export default {
   'value.h': 'h_{{i},{j}}',
   'value.delta': 'δ_{{i},{j}}',
   'value.deltaMean': 'δ̄_{{i}}',
-  'value.step': 'Achsenwinkel zur Lage {j} (°)',
+  'value.step': 'Achsenwinkel zwischen den Lagen {i} und {j} (°)',
   'value.deviation': 'Abweichung bei Lage {i} (Einheiten der Figur)',
   'value.below': 'Ziel: unter {bound}',
   'value.above': 'Ziel: über {bound}',

@@ -92,7 +92,7 @@ Ebene parallel zu seinen Erzeugenden. Jede Erzeugende behält ihre Länge. Die g
 konoidalen Modells zeigen alle in dieselbe Richtung, die beiden Fußpunkte jedes Paares fallen also in einen Punkt,
 den Schnittpunkt der beiden projizierten Erzeugenden: Diese Punkte bilden das Polygon, das die
 projizierten Erzeugenden einhüllen (gestrichelt; das Bild des Polygons der Lotmittelpunkte aus
-Abb. 3), so wie die Gratlinie in der Abwicklung einer Torse die Einhüllende ist. Das Bild des
+Beispiel 1), so wie die Gratlinie in der Abwicklung einer Torse die Einhüllende ist. Das Bild des
 Kehlpolygons ist diesem Polygon eingeschrieben: ${m(sub('m', 'i'))} liegt in der Mitte zwischen den
 beiden Fußpunkten auf ${m(Ri)}, sein Bild also im Mittelpunkt der Kante, die auf dieser Erzeugenden
 liegt. Die Spanne der Höhen,
@@ -118,9 +118,11 @@ Hyperboloids aus Beispiel 1.</p>`,
 <p><strong>Der Algorithmus von Chaikin</strong> (Abb. 7) ersetzt jede Kante durch die Punkte bei ¼ und
 ¾ ihrer Länge. Die Polygone konvergieren gegen den quadratischen B-Spline mit den ursprünglichen
 Punkten als Kontrollpunkten; er berührt jede innere Kante in ihrem Mittelpunkt. Die Arbeit zählt
-die Algorithmen von de Casteljau und de Boor zu den Unterteilungsalgorithmen dieser Art, die die
-Eingabepunkte nicht behalten: Wiederholt konvergieren sie gegen eine Bézier- bzw. B-Spline-Kurve.
-Ihre Regeln sind eigene, nicht Chaikins Schnitte bei ¼ und ¾.</p>
+die Algorithmen von de Casteljau und de Boor zu den Unterteilungsalgorithmen dieser Art, die nicht
+alle Eingabepunkte behalten (der von de Casteljau behält die beiden Endpunkte): Wiederholt
+konvergieren sie gegen eine Bézier- bzw. B-Spline-Kurve. Ihre Regeln sind eigene, nicht Chaikins
+Schnitte bei ¼ und ¾, außer für Grad 2: Die Mittelpunkte gleichabständiger Knoten in einen
+quadratischen B-Spline einzufügen ist der Algorithmus von Chaikin.</p>
 <p><strong>Das Vierpunktschema</strong> von Dyn, Levin und Gregory (Abb. 8) behält jeden Punkt und
 fügt auf jeder Kante einen neuen ein:</p>
 ${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>+</mo><mi>w</mi><mo>)</mo><mo>(</mo>${sub('p', 'i')}<mo>+</mo>${sub('p', 'i + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i − 1')}<mo>+</mo>${sub('p', 'i + 2')}<mo>)</mo>`, '8')}
@@ -129,10 +131,10 @@ Regler exakt eintippen), und w = 1/16 reproduziert kubische Polynome; bei w = 0 
 Polygon selbst. Die Arbeit nennt die Grenzkurve C¹ für 0 &lt; w &lt; ⅛: Das ist die hinreichende
 Bedingung, die Dyn, Levin und Gregory 1987 bewiesen haben, nicht die Stelle, an der Knicke entstehen.
 Dyn, Gregory und Levin (1991) beweisen C¹ für 0 &lt; w &lt; (√5 − 1)/8 ≈ 0,155. Die scharfe Schranke
-ist bekannt: Die Grenzkurve ist genau für 0 &lt; w &lt; w* ≈ 0,19273 C¹, die reelle Nullstelle von
-32w³ + 4w − 1 = 0 (J. Hechler, B. Mößner und U. Reif, <em>C¹-continuity of the generalized
-four-point scheme</em>, Linear Algebra Appl. 430, 2009); dort erreicht der gemeinsame
-Spektralradius des Schemas der dividierten Differenzen den Wert 1.</p>
+ist bekannt: Die Grenzkurve ist genau für 0 &lt; w &lt; w* C¹, und w* ≈ 0,19273 ist die reelle
+Nullstelle von 32w³ + 4w − 1 = 0 (J. Hechler, B. Mößner und U. Reif, <em>C¹-continuity of the
+generalized four-point scheme</em>, Linear Algebra Appl. 430, 2009, S. 3019–3029); dort erreicht der
+gemeinsame Spektralradius des Schemas der dividierten Differenzen den Wert 1.</p>
 <p><strong>Sehen, wie sich die Polygone strecken.</strong> Anzeige und Diagramm nennen den größten
 Außenwinkel des verfeinerten Polygons, den größten Winkel zwischen einer Kante und der nächsten, nach
 jedem Schritt bis ${TURNING_STEPS}, also über die gezeichneten hinaus. Wo er gegen 0 fällt, strecken sich die
@@ -141,7 +143,8 @@ nach ${TURNING_STEPS} Schritten für jedes w bis 0,17 kleiner als nach ${TURNING
 Bei w = 0,17 beträgt er nach ${TURNING_FROM - 2}, ${TURNING_FROM}, ${TURNING_STEPS - 2} und ${TURNING_STEPS} Schritten 1,15, 1,04, 1,19 und 1,00 rad. Ab w = 0,171
 knickt das Polygon nach ${TURNING_STEPS} Schritten noch irgendwo um mehr als 1 rad ab: langsame Konvergenz oder
 eine Spitze der Grenzkurve, wo ihre Ableitung verschwindet — auch eine C¹-Grenzkurve kann eine haben,
-und die Winkel unterscheiden beides nicht. Bei einem offenen
+und die Winkel unterscheiden beides nicht. Jenseits von w* ≈ 0,193 (der Regler reicht bis 0,2) gibt es
+keine C¹-Grenzkurve. Bei einem offenen
 Polygon verwenden die Endkanten Geisterpunkte, extrapoliert aus den letzten vier Punkten, eine
 Endregel von ruledlab (die Arbeit nennt keine); sie versagt zuerst: Dort fällt der Winkel nur bis
 w = 0,126, während sich das geschlossene Polygon, das keine Enden hat, darüber hinaus noch streckt.</p>
@@ -163,7 +166,7 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 in den neuen Punkten, ist das Minimum genau die Mittelpunktsregel (wählen Sie „wörtlich“: Die Anzeige
 gleicht der Mittelpunktsregel). Die <em>gekoppelte</em> Energie von ruledlab nimmt Umbrella-Vektoren in
 jedem inneren Knoten, auch in den alten, sodass die neuen Erzeugenden gekoppelt sind und der Fläche
-für jedes n von 5 bis 24 (den Bereich des Reglers) enger folgen als die Mittelpunktsregel (für n = 3, 4
+für jedes n von 5 bis 24 (der Regler reicht von 3 bis 24) enger folgen als die Mittelpunktsregel (für n = 3, 4
 nicht). Die <em>gemittelte</em> Variante mittelt die Umbrella-Vektoren der beiden
 Triangulierungen vor dem Quadrieren: Die Energie (15) enthält einen Verdrillungsterm aus den
 gescherten Nachbarn der beiden Triangulierungen, den das Mitteln aufhebt. Auf dieser Fläche ist das
@@ -221,7 +224,7 @@ Werkzeugorientierung zwischen zwei Lagen und ihre zweite Differenz (wie gleichm�
 Orientierung dreht). Vergleichen Sie die Schemata an der Anzeige: Ab sieben Lagen lassen die
 variationellen Schemata die kleinste Abweichung vom Profil (bei weniger kann das Vierpunktschema
 näher liegen); die Mittelpunktsregel dreht das Werkzeug in den kleinsten Schritten (sie halbiert
-jede Drehung), aber am wenigsten gleichmäßig, die variationellen Schemata am gleichmäßigsten. Das Diagramm zeigt die Abweichung
+jede Drehung), aber am wenigsten gleichmäßig, das gemittelte variationelle Schema am gleichmäßigsten. Das Diagramm zeigt die Abweichung
 entlang der Bahn: je Lage, wie weit die Kugel vom Profil absteht; je Satz des G-Codes, wie weit die
 lineare Interpolation der Steuerung von der Bahn abweicht (Spitze, und Achse mal Werkzeuglänge, in
 mm bei 1 Einheit = 10 mm).</p>
@@ -319,11 +322,15 @@ das unter der Anzeige.</p>`,
 
   'data.text': `
 <h2>Ihre eigenen Erzeugenden</h2>
-<p>Fügen Sie eine CSV-Datei mit sechs Zahlen je Zeile ein oder laden Sie sie hoch (a.x a.y a.z b.x b.y
-b.z; eine Kopfzeile ist erlaubt), oder JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, oder
+<p>Ihre Erzeugenden oder Ihr Raster von Geraden kommen aus dem Datenbereich der Seite, aus „Als Daten
+bearbeiten“ in einer als Formeln eingegebenen Szene oder aus einem Notebook (NumPy-Arrays, gesendet mit
+<code>View.from_segments</code> oder <code>View.from_grid</code>). Im Datenbereich fügen Sie eine
+CSV-Datei mit sechs Zahlen je Zeile ein oder laden sie hoch (a.x a.y a.z b.x b.y b.z; eine Kopfzeile
+ist erlaubt), oder JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, oder
 <code>{"rows": r, "cols": c, "segments": […]}</code> für eine Kongruenz. Eine fehlerhafte Datei wird mit
 Zeile und Spalte des Fehlers abgelehnt, und die bisher gezeigten Daten bleiben. Eine Regelfläche wird
-mit ihrem Kehlpolygon und den gemeinsamen Loten gezeigt; die Export-Schaltflächen speichern sie wieder
-oder ihre Invarianten. Kleine Importe (bis ${MAX_LINK_RULINGS} Erzeugende) stehen im Link, größere im
-Sitzungsspeicher dieses Browser-Tabs.</p>`,
+mit ihrem Kehlpolygon und den gemeinsamen Loten gezeigt, ein Raster von Geraden mit seiner Leitfläche
+(und seinen Brennflächen, wenn Sie sie wählen); die Export-Schaltflächen speichern sie wieder oder
+ihre Invarianten. Auf der Seite stehen kleine Importe (bis ${MAX_LINK_RULINGS} Erzeugende) im Link,
+größere im Sitzungsspeicher dieses Browser-Tabs.</p>`,
 };

@@ -112,6 +112,16 @@ export default {
     'Der Wert von „{key}“ im Attribut params ist keine der Auswahlmöglichkeiten; es gilt die Voreinstellung.',
   'element.note.tooLong': 'Der Wert von „{key}“ im Attribut params ist zu lang; es gilt die Voreinstellung.',
   'element.note.unknownParam': 'Diese Szene hat keinen Parameter „{key}“; ihre Parameter sind: {known}.',
+  // dasselbe für einen Wert, den setParams() erhielt
+  'element.set.notOnOff':
+    'Der Wert, den setParams für „{key}“ erhielt, ist weder ein noch aus; es gilt die Voreinstellung.',
+  'element.set.notNumber': 'Der Wert, den setParams für „{key}“ erhielt, ist keine Zahl; es gilt die Voreinstellung.',
+  'element.set.clamped':
+    'Der Wert, den setParams für „{key}“ erhielt, liegt außerhalb des Bereichs; es gilt der nächste erlaubte Wert.',
+  'element.set.unknownChoice':
+    'Der Wert, den setParams für „{key}“ erhielt, ist keine der Auswahlmöglichkeiten; es gilt die Voreinstellung.',
+  'element.set.tooLong': 'Der Wert, den setParams für „{key}“ erhielt, ist zu lang; es gilt die Voreinstellung.',
+  'element.set.unknownParam': 'Diese Szene hat keinen Parameter „{key}“; ihre Parameter sind: {known}.',
   'element.note.badInput': 'Das Attribut input passt nicht zu dieser Szene; die eingebaute Eingabe wird gezeigt.',
   'element.badCamera':
     'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',

@@ -115,7 +115,7 @@ export default {
   'paper.ex1.caption':
     'Beispiel 1: eine diskretisierte Regelschar des Hyperboloids x² + y²/4 − z²/9 = 1 mit seiner Kehllinie.',
   'paper.ex1.note':
-    'Beide diskreten Kehlpolygone, m_i aus Satz 2 und die Lotmittelpunkte aus Abb. 3, gegen die exakte Kehllinie; die Anzeige misst jedes. Das Hyperboloid stammt aus der Arbeit, die 36 Erzeugenden von ruledlab.',
+    'Beide diskreten Kehlpolygone, m_i aus Satz 2 und die Lotmittelpunkte, die der Text von Beispiel 1 beschreibt, gegen die exakte Kehllinie; die Anzeige misst jedes. Das Hyperboloid stammt aus der Arbeit, die 36 Erzeugenden von ruledlab.',
   'paper.ex2.caption': 'Beispiel 2: Jede Regelfläche lässt sich isometrisch auf eine konoidale Regelfläche abbilden.',
   'paper.ex2.note':
     'Die Gelenkkette der Quartik aus Beispiel 3 auf halbem Weg (t = 0,5) zwischen der Fläche und ihrem konoidalen Modell; verschieben Sie t oder spielen Sie es ab. Die Anzeige der Kantenlängen zeigt, dass die Verbiegung bis auf Rundung isometrisch ist. Die Arbeit gibt keine Daten an.',

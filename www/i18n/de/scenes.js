@@ -15,7 +15,7 @@ export default {
   'legend.rulings3': 'Erzeugende R_{i−1}, R_i, R_{i+1}',
   'legend.normals': 'gemeinsame Lote N_{i,i+1} mit Fußpunkten',
   'legend.striction': 'Kehlpolygon m_i (dick, mit Punkten)',
-  'legend.perpendicularMidpoints': 'Polygon der Lotmittelpunkte (Abb. 3, gestrichelt)',
+  'legend.perpendicularMidpoints': 'Polygon der Lotmittelpunkte (Polygon aus Beispiel 1, gestrichelt)',
   'legend.complexAxis': 'Achse des linearen Komplexes (strichpunktiert)',
   'legend.exactStriction': 'exakte Kehllinie s(u) (breit)',
 
@@ -24,7 +24,7 @@ export default {
   'readout.parallelPairs': 'parallele Paare',
   'readout.midpointError': 'max |m_i − s(u_i)|',
   'readout.footpointError': 'max |f_{i,i+1} − s(u_i)|',
-  'readout.perpendicularMidpointError': 'max |Polygon aus Abb. 3 − s(u_i + H/2)|',
+  'readout.perpendicularMidpointError': 'max |Polygon aus Beispiel 1 − s(u_i + H/2)|',
   'readout.meanDelta': 'δ̄ an der mittleren Erzeugenden',
   'striction.label.meanDelta': 'δ̄ (m_{{i}})',
   'readout.none': 'keine (ein Fehler ist 0 oder nicht definiert)',
@@ -53,7 +53,7 @@ export default {
   'striction.title': 'Kehlpolygon (Abb. 2–3, Beispiel 1)',
   'striction.param.normals': 'Gemeinsame Lote N_{i,i+1}',
   'striction.param.polygon': 'Kehlpolygon m_i',
-  'striction.param.midpoints': 'Lotmittelpunkte (Abb. 3)',
+  'striction.param.midpoints': 'Lotmittelpunkte (Polygon aus Beispiel 1)',
   'striction.param.axis': 'Achse des linearen Komplexes (über die Arbeit hinaus)',
   'striction.param.exact': 'Exakte Kehllinie s(u)',
   'striction.describe':
@@ -64,7 +64,7 @@ export default {
   'striction.describe.exact': 'die exakte Kehllinie',
   'striction.readout.order.footpoint': 'gemessene Ordnung N → 2N: Fußpunkt',
   'striction.readout.order.midpoint': 'gemessene Ordnung N → 2N: Kehlpolygon m_i',
-  'striction.readout.order.perpendicular': 'gemessene Ordnung N → 2N: Polygon aus Abb. 3',
+  'striction.readout.order.perpendicular': 'gemessene Ordnung N → 2N: Polygon aus Beispiel 1',
   'striction.claim.orders':
     'Auf dem Hyperboloid und der Quartik halbiert ab 20 Erzeugenden jede Verdopplung von N den Fehler der Fußpunkte und viertelt die Fehler beider Polygone: gemessene Ordnungen höchstens 0,25 neben 1, 2 und 2.',
   'striction.describeEdited':
@@ -124,12 +124,19 @@ export default {
   'isometry.reason.flat': 'Bei t = 0 ist die Fläche die ursprüngliche.',
   'isometry.legend.striction': 'Kehlpolygon (in der Abwicklung: sein Bild)',
   'isometry.legend.envelope':
-    'in der Abwicklung: das von den Erzeugenden eingehüllte Polygon, Bild des Polygons aus Abb. 3 (gestrichelt)',
+    'in der Abwicklung: das von den Erzeugenden eingehüllte Polygon, Bild des Polygons aus Beispiel 1 (gestrichelt)',
   'isometry.legend.ghost': 'ursprüngliche Fläche (gestrichelt)',
   'isometry.readout.nonDevelopability': 'Nichtabwickelbarkeit (Höhe des konoidalen Modells)',
   'isometry.readout.isometry': 'max. relative Änderung einer Kantenlänge',
   'isometry.describe':
     '{surface} als {n} Erzeugende, isometrisch verbogen bis t = {t} zum konoidalen Modell; das konoidale Modell ist {height} hoch.',
+  'isometry.describe.cone.one':
+    'Erzeugende {i} trifft keine ihrer Nachbarinnen (bis zu {distance} entfernt); jedes andere Paar aufeinanderfolgender Erzeugender trifft sich, wie auf einem Kegel.',
+  'isometry.describe.cone.some':
+    'Die Erzeugenden {list} treffen keine ihrer Nachbarinnen (bis zu {distance} entfernt); jedes andere Paar aufeinanderfolgender Erzeugender trifft sich.',
+  'isometry.describe.cone.pairs':
+    'Die aufeinanderfolgenden Erzeugenden {list} treffen sich nicht (bis zu {distance} entfernt).',
+  'isometry.describe.cone.all': 'Jedes Paar aufeinanderfolgender Erzeugender trifft sich, wie auf einem Kegel.',
   'isometry.describePanels':
     '{surface} als {n} Erzeugende (links), ihr konoidales Modell (Mitte) und ihre Näherungsabwicklung (rechts); das konoidale Modell ist {height} hoch.',
   'isometry.download.development': 'Abwicklung herunterladen (SVG)',
@@ -165,6 +172,8 @@ export default {
   'formula.tool.development': 'Näherungsabwicklung (Abb. 6)',
   'formula.tool.subdivision': 'Unterteilung (Abschnitt 4)',
   'formula.reason.tool': 'Vom gewählten Werkzeug nicht verwendet.',
+  'formula.problem.notClosed':
+    '„In u geschlossen“ lässt auf die letzte Erzeugende die erste folgen, aber diese Fläche schließt sich nicht: Ihre Erzeugende bei u = {umax} ist nicht die bei u = {umin} ({gap} entfernt, unter {angle} rad). Nehmen Sie das Häkchen für eine Fläche heraus, die sich nicht schließt.',
   'formula.scheme.fourPoint': 'Vierpunktschema w = 1/16',
   'formula.scheme.chaikin': 'Chaikin',
   'formula.scheme.variational': 'Variationell (gekoppelt)',
@@ -185,9 +194,13 @@ export default {
   'formula.param.vmin.field': 'das Feld „v von“',
   'formula.param.vmax.field': 'das Feld „v bis“',
 
-  'data.title': 'Ihre Daten (CSV oder JSON importieren)',
+  'data.title': 'Ihre Daten',
   'data.param.closed': 'Geschlossen (auf die letzte Erzeugende folgt die erste)',
   'data.legend.rulings': 'Ihre Erzeugenden',
+  'data.note.closedGrid':
+    '„Geschlossen“ lässt auf die letzte Erzeugende einer Fläche die erste folgen; ein Raster von Geraden wird gezeigt, wie es ist, nicht geschlossen.',
+  'data.note.focalRulings':
+    'Brennflächen hat ein Raster von Geraden; Ihre Erzeugenden sind eine Fläche, die keine hat.',
   'data.readout.lines': 'Geraden (Kongruenz)',
   'data.describe':
     'Ihre Regelfläche aus {n} Erzeugenden ({parallel} parallele Paare) mit ihren gemeinsamen Loten und ihrem Kehlpolygon; das kleinste |δ| eines Paares von Erzeugenden ist {least}.',

@@ -59,7 +59,7 @@ export default {
   'strip.readout.compare.fourPoint': 'Vierpunktschema: max. Abstand',
   'strip.claim.literal': 'Wörtlich gelesen ist (15) die Mittelpunktsregel: ihre Abstände sind für jedes n gleich.',
   'strip.claim.coupled':
-    'Für jedes n von 5 bis 24 (den Bereich des Reglers) kommt die gekoppelte Energie der Fläche näher als die Mittelpunktsregel; für n = 3, 4 nicht.',
+    'Für jedes n von 5 bis 24 (der Regler reicht von 3 bis 24) kommt die gekoppelte Energie der Fläche näher als die Mittelpunktsregel; für n = 3, 4 nicht.',
   'strip.claim.fourPoint':
     'Das Vierpunktschema ist auf dieser Fläche exakt, an der schlechtesten Erzeugenden das beste: seine Randkurven sind quadratisch, und w = 1/16 reproduziert sie.',
   'strip.describeEdited':
@@ -75,7 +75,7 @@ export default {
   'lines.describe':
     'Neun Erzeugende: {surface}, ihre Endpunkte entlang der Erzeugenden um {slide} des Musters verschoben; die neuen Erzeugenden des Endpunktschemas drehten sich um bis zu {endpointTurn} rad, die des Geradenraumschemas um {lineTurn}.',
   'lines.describeEdited':
-    'Ihre Bearbeitung der neun gegebenen Erzeugenden von {surface}; gegenüber den Erzeugenden, die die Schemata aus der unverschobenen Fläche machen, drehten sich die neuen Erzeugenden des Endpunktverfahrens um bis zu {endpointTurn} rad, die des Geradenraum-Verfahrens um {lineTurn}.',
+    'Ihre Bearbeitung der neun gegebenen Erzeugenden von {surface}; gegenüber den Erzeugenden, die die Schemata aus der unverschobenen Fläche machen, drehten sich die neuen Erzeugenden des Endpunktschemas um bis zu {endpointTurn} rad, die des Geradenraumschemas um {lineTurn}.',
 
   'milling.title': 'Werkzeugbahn für 5-Achs-Fräsen (Beispiel 6, Abb. 16–18)',
   'milling.param.poses': 'Gegebene Lagen',

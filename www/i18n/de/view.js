@@ -4,7 +4,7 @@
 
 export default {
   'view.label':
-    '3D-Ansicht der Szene. Ziehen oder Pfeiltasten drehen sie, Umschalt+Ziehen oder Umschalt+Pfeiltasten verschieben sie, Mausrad oder + und − zoomen, F passt ein, D sagt, was sie zeigt, ? zeigt alle Tasten.',
+    '3D-Ansicht der Szene. Ziehen oder Pfeiltasten drehen sie, Umschalt+Ziehen oder Umschalt+Pfeiltasten verschieben sie, Mausrad oder + und − zoomen, F passt ein, D sagt, was sie zeigt, ? zeigt alle Tasten. Auf einem Touchscreen dreht ein gezogener Finger sie, zwei gemeinsam gezogene Finger verschieben sie, zwei gespreizte oder zusammengeführte Finger zoomen.',
   'view.role': '3D-Ansicht',
   'view.fit': 'Einpassen',
   'view.fitTitle': 'Die Ansicht an die Szene anpassen (F)',

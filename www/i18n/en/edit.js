@@ -82,7 +82,7 @@ export default {
   'value.h': 'h_{{i},{j}}',
   'value.delta': 'δ_{{i},{j}}',
   'value.deltaMean': 'δ̄_{{i}}',
-  'value.step': 'axis angle to pose {j} (°)',
+  'value.step': 'axis angle between poses {i} and {j} (°)',
   'value.deviation': 'deviation at pose {i} (units of the figure)',
   'value.below': 'goal: below {bound}',
   'value.above': 'goal: above {bound}',

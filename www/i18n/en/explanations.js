@@ -88,7 +88,7 @@ ${m(`${sub('ζ', 'i')}<mo>=</mo><munder><mo>∑</mo>${row('k < i')}</munder>${su
 plane parallel to its rulings. Each ruling keeps its length. The common perpendiculars of the
 conoidal model all point the same way, so the two footpoints of every pair fall onto one point,
 where the two projected rulings meet: these points form the polygon the projected rulings envelop
-(dashed; the image of Fig. 3's polygon of perpendicular midpoints), just as the regression curve is
+(dashed; the image of Example 1's polygon of perpendicular midpoints), just as the regression curve is
 the envelope in the development of a developable surface. The image of the striction polygon is
 inscribed in it: ${m(sub('m', 'i'))} lies midway between the two footpoints on ${m(Ri)}, so its image
 is the midpoint of the envelope polygon's edge on that ruling. The spread of the heights,
@@ -114,9 +114,10 @@ a ruled helical surface (radius 1, pitch 0.4 per radian, so 2π · 0.4 ≈ 2.51 
 <p><strong>Chaikin's algorithm</strong> (Fig. 7) replaces every edge by the points at ¼ and ¾ of its
 length. The polygons converge to the quadratic B-spline with the original points as control
 points; it touches every interior edge at its midpoint. The paper counts the algorithms of de
-Casteljau and de Boor among the subdivision algorithms of this type, which do not keep the input
-points: repeated, they converge to a Bézier or a B-spline curve. Their rules are their own, not
-Chaikin's cuts at ¼ and ¾.</p>
+Casteljau and de Boor among the subdivision algorithms of this type, which do not keep all the
+input points (de Casteljau's keeps the two end points): repeated, they converge to a Bézier or a
+B-spline curve. Their rules are their own, not Chaikin's cuts at ¼ and ¾, except for degree 2:
+inserting the midpoints of uniform knots into a quadratic B-spline is Chaikin's algorithm.</p>
 <p><strong>The four-point scheme</strong> of Dyn, Levin and Gregory (Fig. 8) keeps every point and
 inserts a new one on each edge:</p>
 ${display(`${sub('p', 'i + 1/2')}<mo>=</mo><mo>(</mo>${frac('<mn>1</mn>', '<mn>2</mn>')}<mo>+</mo><mi>w</mi><mo>)</mo><mo>(</mo>${sub('p', 'i')}<mo>+</mo>${sub('p', 'i + 1')}<mo>)</mo><mo>−</mo><mi>w</mi><mo>(</mo>${sub('p', 'i − 1')}<mo>+</mo>${sub('p', 'i + 2')}<mo>)</mo>`, '8')}
@@ -127,7 +128,7 @@ Dyn, Levin and Gregory proved in 1987, not the place where kinks appear. Dyn, Gr
 (1991) prove C¹ for 0 &lt; w &lt; (√5 − 1)/8 ≈ 0.155. The sharp bound is known: the limit is C¹
 exactly for 0 &lt; w &lt; w* ≈ 0.19273, the real root of 32w³ + 4w − 1 = 0 (J. Hechler, B. Mößner
 and U. Reif, <em>C¹-continuity of the generalized four-point scheme</em>, Linear Algebra Appl.
-430, 2009), where the joint spectral radius of the scheme of the divided differences reaches 1.</p>
+430, 2009, pp. 3019–3029), where the joint spectral radius of the scheme of the divided differences reaches 1.</p>
 <p><strong>Watch the polygons straighten out.</strong> The readout and the plot give the largest
 turning angle of the refined polygon, the largest angle between an edge and the next, after each
 step up to ${TURNING_STEPS}, more than are drawn. Where it falls towards 0 the polygons straighten out; it
@@ -136,7 +137,7 @@ ${TURNING_STEPS} steps than after ${TURNING_FROM} for every w up to 0.17, but ne
 w = 0.17 it is 1.15, 1.04, 1.19 and 1.00 rad after ${TURNING_FROM - 2}, ${TURNING_FROM}, ${TURNING_STEPS - 2} and ${TURNING_STEPS} steps. From w = 0.171 on, the
 polygon still turns by more than 1 rad somewhere after ${TURNING_STEPS} steps: slow convergence, or a cusp of
 the limit where its derivative vanishes — a C¹ limit may have one, and the angles cannot tell the
-two apart. On an open polygon the end edges use ghost points extrapolated from the
+two apart. Past w* ≈ 0.193 (the slider goes on to 0.2) there is no C¹ limit. On an open polygon the end edges use ghost points extrapolated from the
 last four points, ruledlab's end rule (the paper gives none), and it gives out first: there the
 angle falls only up to w = 0.126, while the closed polygon, which has no ends, still straightens
 out beyond.</p>
@@ -157,7 +158,7 @@ ${display(`<mi>F</mi><mo>=</mo><munder><mo>∑</mo>${row('i , k')}</munder><mo>(
 <p class="rl-beyond"><strong>What ruledlab adds.</strong> Read literally, with umbrellas at the new
 points only, the minimiser is just the midpoint rule (choose "literal": the readout equals the
 midpoint rule's). ruledlab's <em>coupled</em> energy puts umbrellas at every interior vertex, old
-ones included, so the new rulings couple and, for every n from 5 to 24 (the slider's range), follow
+ones included, so the new rulings couple and, for every n from 5 to 24 (the slider runs from 3 to 24), follow
 the surface more closely than the midpoint rule (for n = 3, 4 they do not). The <em>averaged</em>
 variant averages the two triangulations' umbrellas before squaring: the energy (15) contains a
 twist term from the sheared neighbours of the two triangulations, and averaging cancels it. On
@@ -211,7 +212,7 @@ target profile (positive leaves material, negative gouges), the largest change o
 between two poses, and its second difference (how evenly the orientation turns). Compare the schemes
 with the readout: with seven poses or more the variational schemes leave the smallest deviation from
 the profile (fewer, and four-point can be closer); the midpoint rule turns the tool in the smallest
-steps (it halves each turn) but least evenly, the variational schemes most evenly. The plot
+steps (it halves each turn) but least evenly, the averaged variational scheme most evenly. The plot
 shows the deviation along the path: per pose, how far the ball stands off the profile; per block of
 the G-code, how far the controller's linear interpolation strays from the path (tip, and axis times
 the tool length, in mm at 1 unit = 10 mm).</p>
@@ -298,11 +299,14 @@ says so below the readout.</p>`,
 
   'data.text': `
 <h2>Your own rulings</h2>
-<p>Paste or upload a CSV file with six numbers per line (a.x a.y a.z b.x b.y b.z; a header line is
-fine) or JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, or
+<p>Your rulings, or your grid of lines, come from the page's data panel, from "Edit as data" in a
+scene typed as formulas, or from a notebook (NumPy arrays sent by <code>View.from_segments</code> or
+<code>View.from_grid</code>). In the data panel, paste or upload a CSV file with six numbers per line
+(a.x a.y a.z b.x b.y b.z; a header line is fine) or JSON: <code>[[ax, ay, az, bx, by, bz], …]</code>, or
 <code>{"rows": r, "cols": c, "segments": […]}</code> for a congruence. A malformed file is rejected
 with the line and column of the problem, and the data shown before stays. A ruled surface is shown
-with its striction polygon and common perpendiculars; the export buttons save it again, or its
-invariants. Small imports (up to ${MAX_LINK_RULINGS} rulings) are kept in the link; larger ones in this browser
-tab's session storage.</p>`,
+with its striction polygon and common perpendiculars, a grid of lines with its director surface (and
+its focal surfaces, if you choose them); the export buttons save it again, or its invariants. On the
+page, small imports (up to ${MAX_LINK_RULINGS} rulings) are kept in the link; larger ones in this
+browser tab's session storage.</p>`,
 };

@@ -110,6 +110,15 @@ export default {
     'The value of “{key}” in the params attribute is not one of the choices; its default is used.',
   'element.note.tooLong': 'The value of “{key}” in the params attribute is too long; its default is used.',
   'element.note.unknownParam': 'This scene has no parameter “{key}”; its parameters are: {known}.',
+  // the same, for a value given to setParams()
+  'element.set.notOnOff': 'The value setParams was given for “{key}” is not on or off; its default is used.',
+  'element.set.notNumber': 'The value setParams was given for “{key}” is not a number; its default is used.',
+  'element.set.clamped':
+    'The value setParams was given for “{key}” is out of range; the nearest allowed value is used.',
+  'element.set.unknownChoice':
+    'The value setParams was given for “{key}” is not one of the choices; its default is used.',
+  'element.set.tooLong': 'The value setParams was given for “{key}” is too long; its default is used.',
+  'element.set.unknownParam': 'This scene has no parameter “{key}”; its parameters are: {known}.',
   'element.note.badInput': 'The input attribute does not fit this scene; the built-in input is shown.',
   'element.badCamera':
     'The camera attribute could not be read (six numbers: yaw, pitch, distance, x, y, z); the view is fitted to the scene.',

@@ -112,7 +112,7 @@ export default {
   'paper.ex1.caption':
     'Example 1: a discretised regulus of the hyperboloid x² + y²/4 − z²/9 = 1 with its striction line.',
   'paper.ex1.note':
-    'Both discrete striction polygons, m_i of Proposition 2 and the perpendicular midpoints of Fig. 3, against the exact striction curve; the readout measures each. The hyperboloid is the paper’s, the 36 rulings ruledlab’s.',
+    'Both discrete striction polygons, m_i of Proposition 2 and the perpendicular midpoints Example 1’s text describes, against the exact striction curve; the readout measures each. The hyperboloid is the paper’s, the 36 rulings ruledlab’s.',
   'paper.ex2.caption': 'Example 2: any ruled surface can be mapped isometrically onto a conoidal ruled surface.',
   'paper.ex2.note':
     'The hinge chain of Example 3’s quartic half-way (t = 0.5) between the surface and its conoidal model; slide t or press play. The edge-length readout shows that the bending is isometric to rounding. The paper gives no data.',

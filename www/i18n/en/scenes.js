@@ -16,7 +16,7 @@ export default {
   'legend.rulings3': 'rulings R_{i−1}, R_i, R_{i+1}',
   'legend.normals': 'common perpendiculars N_{i,i+1} and footpoints',
   'legend.striction': 'striction polygon m_i (thick, with points)',
-  'legend.perpendicularMidpoints': 'polygon of perpendicular midpoints (Fig. 3, dashed)',
+  'legend.perpendicularMidpoints': 'polygon of perpendicular midpoints (Example 1’s polygon, dashed)',
   'legend.complexAxis': 'axis of the linear complex (dash-dot)',
   'legend.exactStriction': 'exact striction curve s(u) (wide)',
 
@@ -25,7 +25,7 @@ export default {
   'readout.parallelPairs': 'parallel pairs',
   'readout.midpointError': 'max |m_i − s(u_i)|',
   'readout.footpointError': 'max |f_{i,i+1} − s(u_i)|',
-  'readout.perpendicularMidpointError': 'max |Fig. 3 polygon − s(u_i + H/2)|',
+  'readout.perpendicularMidpointError': 'max |Example 1’s polygon − s(u_i + H/2)|',
   'readout.meanDelta': 'δ̄ at the middle ruling',
   'striction.label.meanDelta': 'δ̄ (m_{{i}})',
   'readout.none': 'none (an error is 0 or undefined)',
@@ -56,7 +56,7 @@ export default {
   'striction.title': 'Striction polygon (Figs. 2–3, Example 1)',
   'striction.param.normals': 'Common perpendiculars N_{i,i+1}',
   'striction.param.polygon': 'Striction polygon m_i',
-  'striction.param.midpoints': 'Perpendicular midpoints (Fig. 3)',
+  'striction.param.midpoints': 'Perpendicular midpoints (Example 1’s polygon)',
   'striction.param.axis': 'Axis of the linear complex (beyond the paper)',
   'striction.param.exact': 'Exact striction curve s(u)',
   'striction.describe':
@@ -67,7 +67,7 @@ export default {
   'striction.describe.exact': 'the exact striction curve',
   'striction.readout.order.footpoint': 'measured order N → 2N: footpoint',
   'striction.readout.order.midpoint': 'measured order N → 2N: striction polygon m_i',
-  'striction.readout.order.perpendicular': 'measured order N → 2N: Fig. 3 polygon',
+  'striction.readout.order.perpendicular': 'measured order N → 2N: Example 1’s polygon',
   'striction.claim.orders':
     'On the hyperboloid and the quartic, from 20 rulings on, doubling N halves the footpoint error and quarters the errors of both polygons: measured orders within 0.25 of 1, 2 and 2.',
   'striction.describeEdited':
@@ -130,12 +130,18 @@ export default {
   'isometry.reason.flat': 'At t = 0 the surface is the original.',
   'isometry.legend.striction': 'striction polygon (in the development: its image)',
   'isometry.legend.envelope':
-    'in the development: the polygon the rulings envelop, image of the Fig. 3 polygon (dashed)',
+    'in the development: the polygon the rulings envelop, image of Example 1’s polygon (dashed)',
   'isometry.legend.ghost': 'original surface (dashed)',
   'isometry.readout.nonDevelopability': 'non-developability (height of the conoidal model)',
   'isometry.readout.isometry': 'max relative change of an edge length',
   'isometry.describe':
     'Surface: {surface}, {n} rulings, bent isometrically to t = {t} toward its conoidal model; the conoidal model is {height} high.',
+  'isometry.describe.cone.one':
+    'Ruling {i} meets neither of its neighbours (up to {distance} apart); every other pair of consecutive rulings meets, as on a cone.',
+  'isometry.describe.cone.some':
+    'Rulings {list} meet neither of their neighbours (up to {distance} apart); every other pair of consecutive rulings meets.',
+  'isometry.describe.cone.pairs': 'The consecutive rulings {list} do not meet (up to {distance} apart).',
+  'isometry.describe.cone.all': 'Every pair of consecutive rulings meets, as on a cone.',
   'isometry.describePanels':
     'Surface: {surface}, {n} rulings (left), its conoidal model (middle) and its approximate development (right); the conoidal model is {height} high.',
   'isometry.download.development': 'Download the development (SVG)',
@@ -172,6 +178,8 @@ export default {
   'formula.tool.development': 'Approximate development (Fig. 6)',
   'formula.tool.subdivision': 'Subdivision (Section 4)',
   'formula.reason.tool': 'Not used by the chosen tool.',
+  'formula.problem.notClosed':
+    '“Closed in u” follows the last ruling by the first, but this surface does not close: its ruling at u = {umax} is not the one at u = {umin} ({gap} apart, at {angle} rad). Uncheck it for a surface that does not close.',
   'formula.scheme.fourPoint': 'Four-point w = 1/16',
   'formula.scheme.chaikin': 'Chaikin',
   'formula.scheme.variational': 'Variational (coupled)',
@@ -193,9 +201,12 @@ export default {
   'formula.param.vmax.field': 'the field “v to”',
 
   // your data
-  'data.title': 'Your data (import CSV or JSON)',
+  'data.title': 'Your data',
   'data.param.closed': 'Closed (last ruling followed by the first)',
   'data.legend.rulings': 'your rulings',
+  'data.note.closedGrid':
+    '“Closed” follows the last ruling of a surface by the first; a grid of lines is shown as it is, not closed.',
+  'data.note.focalRulings': 'Focal surfaces are those of a grid of lines; your rulings are a surface, which has none.',
   'data.readout.lines': 'lines (congruence)',
   'data.describe':
     'Your ruled surface of {n} rulings ({parallel} parallel pairs), with its common perpendiculars and striction polygon; the smallest |δ| of a pair of rulings is {least}.',

@@ -61,7 +61,7 @@ export default {
   'strip.readout.compare.fourPoint': 'four-point: max distance',
   'strip.claim.literal': 'Read literally, (15) is the midpoint rule: their distances are equal for every n.',
   'strip.claim.coupled':
-    'For every n from 5 to 24 (the slider’s range) the coupled energy comes closer to the surface than the midpoint rule; for n = 3, 4 it does not.',
+    'For every n from 5 to 24 (the slider runs from 3 to 24) the coupled energy comes closer to the surface than the midpoint rule; for n = 3, 4 it does not.',
   'strip.claim.fourPoint':
     'The four-point scheme is exact on this surface, the best of all at the worst ruling: its boundary curves are quadratic, which w = 1/16 reproduces.',
   'strip.describeEdited':

@@ -5,7 +5,7 @@
 export default {
   // the view
   'view.label':
-    '3D view of the scene. Drag or use the arrow keys to turn it, shift+drag or shift+arrows to move it, wheel or + and − to zoom, F to fit, D to hear what it shows, ? for all keys.',
+    '3D view of the scene. Drag or use the arrow keys to turn it, shift+drag or shift+arrows to move it, wheel or + and − to zoom, F to fit, D to hear what it shows, ? for all keys. On a touch screen, drag one finger to turn it, two fingers together to move it, and spread or pinch two fingers to zoom.',
   'view.role': '3D view',
   'view.fit': 'Fit',
   'view.fitTitle': 'Fit the view to the scene (F)',
