@@ -69,3 +69,60 @@ export function formulaParameter(key, value) {
     play: true,
   };
 }
+
+/**
+ * The formula fields of "Your surface" a catalogue surface fills in (its texts from the core), its
+ * u and v ranges, whether it is closed, and a, b, c; {} for a name the catalogue does not have.
+ * @param {string} name
+ * @returns {import('./scene.js').Params}
+ */
+export function surfaceFields(name) {
+  const p = surfacePreset(name);
+  if (!p) return {};
+  const [[ax, ay, az], [ex, ey, ez]] = [p.a, p.e];
+  return {
+    ax,
+    ay,
+    az,
+    ex,
+    ey,
+    ez,
+    umin: p.u[0],
+    umax: p.u[1],
+    vmin: p.v[0],
+    vmax: p.v[1],
+    closed: p.closed,
+    a: p.parameters.a,
+    b: p.parameters.b,
+    c: p.parameters.c,
+  };
+}
+
+/**
+ * The formula fields of "Your congruence" a catalogue congruence fills in, its u and v ranges, its
+ * grid and a, b, c; {} for a name the catalogue does not have.
+ * @param {string} name
+ * @returns {import('./scene.js').Params}
+ */
+export function congruenceFields(name) {
+  const c = congruencePreset(name);
+  if (!c) return {};
+  const [[px, py, pz], [ex, ey, ez]] = [c.p, c.e];
+  return {
+    px,
+    py,
+    pz,
+    ex,
+    ey,
+    ez,
+    umin: c.u[0],
+    umax: c.u[1],
+    vmin: c.v[0],
+    vmax: c.v[1],
+    rows: c.rows,
+    cols: c.cols,
+    a: c.parameters.a,
+    b: c.parameters.b,
+    c: c.parameters.c,
+  };
+}

@@ -395,3 +395,14 @@ export function f32(/** @type {ArrayLike<number>} */ data) {
 export function diagramOf(built) {
   return built.diagram ?? built.figure;
 }
+
+/**
+ * The entries of `scene`'s legend that apply to `params` (an entry's `when` decides): what the
+ * legend on the page, the printed figures and the PNG show alike.
+ * @param {Scene} scene
+ * @param {Params} params
+ * @returns {LegendEntry[]}
+ */
+export function legendOf(scene, params) {
+  return scene.legend.filter((entry) => !entry.when || entry.when(params));
+}

@@ -2,7 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab, { cam } from './load.mjs';
-import { niceTicks, tickText } from '../../www/layers/toolpath.js';
+import { niceTicks, tickText } from '../../www/diagrams/plot.js';
 
 const { detectImport } = ruledlab;
 const { ToolPath, importToolPoses, importTarget } = cam;

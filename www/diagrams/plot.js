@@ -1,11 +1,13 @@
-// A log-log plot (or, with linearX, x linear and y logarithmic) built with the DOM as self-contained SVG 1.1 (its own fonts, colours, grid,
-// dashed reference slopes and legend as presentation attributes: no page CSS needed), so the
-// same element is shown on the page and saved as a file. Series differ in colour, marker and
-// dash, not in colour alone.
+// The plots beside the view, built with the DOM as self-contained SVG 1.1 (their own fonts,
+// colours, grid and key as presentation attributes: no page CSS needed), so the same element is
+// shown on the page and saved as a file: a log-log plot (or, with linearX, x linear and y
+// logarithmic) with dashed reference slopes, and linear plots stacked in one figure (the milling
+// scene's deviation and axes). Series differ in colour, marker and dash, not in colour alone.
 
 import { parseRich } from '../ui/richtext.js';
 import { superscript } from '../i18n/translate.js';
 import { svgMaker, svgFigure } from '../svg-dom.js';
+import { PLOT_MARKERS } from '../limits.js';
 
 /** The least size of any text in a figure, subscripts included, in user units (= CSS px at 1:1). */
 export const SMALLEST_TEXT = 12.5;
@@ -108,17 +110,14 @@ export function logLogPlot(
   series.forEach((s, k) => {
     const look = SERIES[k % SERIES.length];
     const pts = x.map((xv, i) => [xv, s.y[i]]).filter(([xv, yv]) => finite(yv) && xs.includes(xv));
-    const g = el('g', { stroke: look.color, fill: look.color });
-    g.append(
-      el('polyline', {
-        fill: 'none',
-        'stroke-width': 2,
-        'stroke-dasharray': look.dash || 'none',
-        points: pts.map(([a, b]) => `${px(a).toFixed(2)},${py(b).toFixed(2)}`).join(' '),
-      }),
+    svg.append(
+      seriesMarks(
+        el,
+        look,
+        pts.map(([a, b]) => [px(a), py(b)]),
+        { radius: 3 },
+      ),
     );
-    for (const [a, b] of pts) g.append(marker(el, look.marker, px(a), py(b), 3));
-    svg.append(g);
     if (!s.name) return; // a lone series named by the axis needs no key
     const ly = pad.t + 14 + 17 * k;
     const key = el('g', {});
@@ -189,4 +188,186 @@ export function marker(
   if (kind === 'diamond')
     return el('polygon', { points: `${x},${y - r * 1.3} ${x + r * 1.1},${y} ${x},${y + r * 1.3} ${x - r * 1.1},${y}` });
   return el('circle', { cx: x, cy: y, r });
+}
+
+/**
+ * A series drawn at its points on screen: its line in its colour and dash (unless `line` is
+ * false) and a marker at each of its first `markers` points.
+ * @param {ReturnType<typeof svgMaker>} el
+ * @param {{ color: string, marker: string, dash: string }} look
+ * @param {number[][]} points   [x, y] on screen
+ * @param {{ line?: boolean, markers?: number, radius: number }} how
+ */
+function seriesMarks(el, look, points, { line = true, markers = Number.POSITIVE_INFINITY, radius }) {
+  const g = el('g', { stroke: look.color, fill: look.color });
+  if (line)
+    g.append(
+      el('polyline', {
+        fill: 'none',
+        'stroke-width': 2,
+        'stroke-dasharray': look.dash || 'none',
+        points: points.map(([a, b]) => `${a.toFixed(2)},${b.toFixed(2)}`).join(' '),
+      }),
+    );
+  for (const [a, b] of points.slice(0, markers)) g.append(marker(el, look.marker, a, b, radius));
+  return g;
+}
+
+/** The looks of a linear plot's series. */
+const LOOKS = [
+  { color: '#d55e00', marker: 'circle', dash: '' },
+  { color: '#0072b2', marker: 'square', dash: '6 3' },
+  { color: '#1f2430', marker: 'triangle', dash: '2 2' },
+];
+
+/**
+ * @typedef {{ name: string, x: ArrayLike<number>, y: ArrayLike<number>, dots?: boolean }} Series
+ *   dots: markers only, no line (blocks that hit a limit)
+ * @typedef {{ value: number, name: string }} Level   a horizontal line (the tolerance)
+ */
+
+/**
+ * Ticks at 1, 2 or 5 times a power of ten covering [lo, hi] with at most 6 intervals: their
+ * values (the first at or below lo, the last at or above hi) and the step.
+ * @returns {{ values: number[], step: number }}
+ */
+export function niceTicks(/** @type {number} */ lo, /** @type {number} */ hi) {
+  if (!(hi - lo > 1e-12 * Math.max(1, Math.abs(lo), Math.abs(hi)))) hi = lo + Math.max(1e-3, Math.abs(lo) * 1e-3);
+  const power = 10 ** Math.floor(Math.log10((hi - lo) / 6));
+  const step =
+    [1, 2, 5, 10].map((m) => m * power).find((m) => Math.ceil(hi / m) - Math.floor(lo / m) <= 6) ?? 10 * power;
+  const first = Math.floor(lo / step);
+  const last = Math.ceil(hi / step);
+  // (k · step, not a sum of steps: 0.1 + 0.2 would not be 0.3)
+  return { values: Array.from({ length: last - first + 1 }, (_, k) => (first + k) * step), step };
+}
+
+/** A tick's value with the decimals its step needs, a minus sign and the language's decimal mark. */
+export function tickText(/** @type {number} */ v, /** @type {number} */ step, comma = false) {
+  const places = Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
+  const text = Math.abs(v) < step / 2 ? (0).toFixed(places) : v.toFixed(places);
+  return (comma ? text.replace('.', ',') : text).replace('-', '−');
+}
+
+/**
+ * A plot of series over a common x (the position along the given path, pose k at x = k): linear
+ * axes, a zero line, dashed levels. Drawn into `g` of the maker `el`, `width` × `height` at its
+ * origin.
+ * @param {ReturnType<typeof svgMaker>} el
+ * @param {SVGElement} g
+ * @param {{ series: Series[], levels?: Level[], xLabel: string, yLabel: string, width: number, height: number, comma?: boolean }} spec
+ *   comma: a decimal comma (German)
+ */
+function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height, comma = false }) {
+  // the key above the plotting area (a line of it per series, and one for the levels), so that
+  // no curve runs under it
+  const keyRows = series.length + (levels.length ? 1 : 0);
+  const pad = { l: 62, r: 12, t: 12 + 17 * keyRows, b: 42 };
+  const xs = series.flatMap((s) => Array.from(s.x));
+  const ys = series.flatMap((s) => Array.from(s.y)).filter(Number.isFinite);
+  if (!xs.length || !ys.length) return;
+  const levelValues = levels.map((l) => l.value).filter(Number.isFinite);
+  const [x0, x1] = [Math.min(...xs), Math.max(...xs, Math.min(...xs) + 1)];
+  const yTicks = niceTicks(Math.min(0, ...ys, ...levelValues), Math.max(0, ...ys, ...levelValues));
+  const [y0, y1] = [yTicks.values[0], yTicks.values[yTicks.values.length - 1]];
+  const px = (/** @type {number} */ v) => pad.l + ((v - x0) / (x1 - x0)) * (width - pad.l - pad.r);
+  const py = (/** @type {number} */ v) => height - pad.b - ((v - y0) / (y1 - y0)) * (height - pad.t - pad.b);
+  const grid = el('g', { stroke: '#dedbd2', 'stroke-width': 1 });
+  const labels = el('g', { fill: '#333', 'font-size': SMALLEST_TEXT });
+  for (const v of yTicks.values) {
+    grid.append(el('line', { x1: pad.l, x2: width - pad.r, y1: py(v), y2: py(v) }));
+    labels.append(el('text', { x: pad.l - 4, y: py(v) + 4, 'text-anchor': 'end' }, tickText(v, yTicks.step, comma)));
+  }
+  const xStep = Math.max(1, Math.ceil((x1 - x0) / 6));
+  for (let v = Math.ceil(x0); v <= x1; v += xStep) {
+    grid.append(el('line', { x1: px(v), x2: px(v), y1: pad.t, y2: height - pad.b }));
+    labels.append(el('text', { x: px(v), y: height - pad.b + 17, 'text-anchor': 'middle' }, String(v)));
+  }
+  g.append(grid, labels);
+  g.append(el('line', { x1: pad.l, x2: width - pad.r, y1: py(0), y2: py(0), stroke: '#777', 'stroke-width': 1 }));
+  for (const level of levels) {
+    const line = el('line', {
+      x1: pad.l,
+      x2: width - pad.r,
+      y1: py(level.value),
+      y2: py(level.value),
+      stroke: '#771100',
+      'stroke-width': 1.2,
+      'stroke-dasharray': '8 4',
+    });
+    line.append(el('title', {}, level.name));
+    g.append(line);
+  }
+  // the key, above the plotting area
+  const keys = el('g', {});
+  const keyTop = 4;
+  series.forEach((s, k) => {
+    const look = LOOKS[k % LOOKS.length];
+    const pts = Array.from(s.x, (x, i) => [x, s.y[i]]).filter(([, y]) => Number.isFinite(y));
+    g.append(
+      seriesMarks(
+        el,
+        look,
+        pts.map(([a, b]) => [px(a), py(b)]),
+        { line: !s.dots, markers: s.dots || pts.length <= PLOT_MARKERS ? 4 * PLOT_MARKERS : 0, radius: 2.5 },
+      ),
+    );
+    const ly = keyTop + 14 + 17 * k;
+    const swatch = el('g', { stroke: look.color, fill: look.color });
+    if (s.dots) swatch.append(marker(el, look.marker, pad.l + 17, ly - 4, 2.5));
+    else
+      swatch.append(
+        el('line', {
+          x1: pad.l + 8,
+          x2: pad.l + 26,
+          y1: ly - 4,
+          y2: ly - 4,
+          'stroke-width': 2,
+          'stroke-dasharray': look.dash || 'none',
+        }),
+      );
+    keys.append(swatch, el('text', { x: pad.l + 31, y: ly, fill: '#222' }, s.name));
+  });
+  if (levels.length) {
+    // the levels (the tolerance's lines) named once in the key
+    const ly = keyTop + 14 + 17 * series.length;
+    keys.append(
+      el('line', {
+        x1: pad.l + 8,
+        x2: pad.l + 26,
+        y1: ly - 4,
+        y2: ly - 4,
+        stroke: '#771100',
+        'stroke-width': 1.2,
+        'stroke-dasharray': '8 4',
+      }),
+      el('text', { x: pad.l + 31, y: ly, fill: '#222' }, levels[0].name),
+    );
+  }
+  if (keyRows) g.append(keys);
+  g.append(el('text', { x: (width + pad.l) / 2, y: height - 6, 'text-anchor': 'middle', fill: '#222' }, xLabel));
+  const mid = (height - pad.b) / 2;
+  g.append(
+    el('text', { x: 12, y: mid, transform: `rotate(-90 12 ${mid})`, 'text-anchor': 'middle', fill: '#222' }, yLabel),
+  );
+}
+
+/**
+ * Plots stacked in one self-contained SVG (the first one's title names the figure).
+ * @param {Document} doc
+ * @param {{ title: string, comma?: boolean, plots: Array<{ series: Series[], levels?: Level[], xLabel: string, yLabel: string, title: string }> }} spec
+ * @returns {SVGSVGElement}
+ */
+export function stackedPlots(doc, { title, plots, comma = false }) {
+  const [width, height] = [360, 260];
+  const el = svgMaker(doc);
+  const svg = svgFigure(el, { width, height: height * Math.max(1, plots.length), title });
+  plots.forEach((plot, k) => {
+    const g = el('g', { transform: `translate(0 ${k * height})` });
+    g.setAttribute('aria-label', plot.title);
+    g.append(el('title', {}, plot.title));
+    drawPlot(el, g, { ...plot, width, height, comma });
+    svg.append(g);
+  });
+  return svg;
 }

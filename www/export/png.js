@@ -1,6 +1,7 @@
 // PNG of the view, at 1×, 2× or 4× of its size, with the labels and the legend drawn in.
 import { parseRich } from '../ui/richtext.js';
 import { STYLES } from '../theme.js';
+import { legendOf } from '../scene.js';
 
 /**
  * @param {import('../stage.js').Stage} stage
@@ -27,7 +28,7 @@ export async function png(stage, { scale = 1, legend = true } = {}) {
     drawRich(ctx, label.text, Number(match[1]) + 3, Number(match[2]) + 13, 'italic 15px "Times New Roman", serif');
   });
   if (legend && stage.scene) {
-    const entries = stage.scene.legend.filter((e) => !e.when || e.when(stage.params));
+    const entries = legendOf(stage.scene, stage.params);
     ctx.font = '12px system-ui, sans-serif';
     const width = Math.max(0, ...entries.map((e) => ctx.measureText(stage.i18n.t(e.label)).width)) + 56;
     ctx.fillStyle = 'rgba(255,255,255,0.88)';

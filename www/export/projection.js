@@ -8,6 +8,7 @@ import { hiddenLines } from '../../pkg/ruledlab.js';
 import { STYLES, rgb, PALETTE } from '../theme.js';
 import { FIGURE_TRIANGLES, HATCH_SPACING, PRINT_WIDTH } from '../limits.js';
 import { parseRich } from '../ui/richtext.js';
+import { legendOf } from '../scene.js';
 
 /**
  * @typedef {object} Facet   a triangle of a surface, in CSS pixels (y down)
@@ -97,9 +98,10 @@ export function figureOf(stage) {
       const match = /translate\(([-\d.e]+)px, ([-\d.e]+)px\)/.exec(el.style.transform);
       return { x: match ? Number(match[1]) : 0, y: match ? Number(match[2]) : 0, text };
     });
-  const legend = (stage.scene?.legend ?? [])
-    .filter((e) => !e.when || e.when(stage.params))
-    .map((e) => ({ style: e.style, label: stage.i18n.t(e.label) }));
+  const legend = (stage.scene ? legendOf(stage.scene, stage.params) : []).map((e) => ({
+    style: e.style,
+    label: stage.i18n.t(e.label),
+  }));
   return {
     width,
     height,

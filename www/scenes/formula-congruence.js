@@ -4,33 +4,9 @@ import { AnalyticCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
 import { congruenceLayers, givenGrid, SCHEME_PARAMS, LEGEND } from '../layers/congruence.js';
 import { focalLayers } from '../layers/focal.js';
-import { CONGRUENCE_PRESETS, congruencePreset, formulaParameter } from '../catalogue.js';
+import { CONGRUENCE_PRESETS, formulaParameter, congruenceFields } from '../catalogue.js';
 
-/** The formula fields a catalogue congruence fills in (its texts from the core), its grid and a, b, c. */
-/** @returns {import('../scene.js').Params} */
-function presetParams(/** @type {string} */ name) {
-  const c = congruencePreset(name);
-  if (!c) return {};
-  return {
-    px: c.p[0],
-    py: c.p[1],
-    pz: c.p[2],
-    ex: c.e[0],
-    ey: c.e[1],
-    ez: c.e[2],
-    umin: c.u[0],
-    umax: c.u[1],
-    vmin: c.v[0],
-    vmax: c.v[1],
-    rows: c.rows,
-    cols: c.cols,
-    a: c.parameters.a,
-    b: c.parameters.b,
-    c: c.parameters.c,
-  };
-}
-
-const START = presetParams('example5');
+const START = congruenceFields('example5');
 const formula = (/** @type {string} */ key) => ({
   key,
   label: `formulaCongruence.param.${key}`,
@@ -71,7 +47,7 @@ export const scene = defineScene({
       type: 'select',
       value: 'example5',
       options: () => CONGRUENCE_PRESETS.map((k) => [k.name, `congruence.${k.name}`]),
-      sets: (v) => presetParams(String(v)),
+      sets: (v) => congruenceFields(String(v)),
     },
     formula('px'),
     formula('py'),

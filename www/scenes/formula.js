@@ -9,32 +9,9 @@ import { convergenceLayers } from '../layers/convergence.js';
 import { isometryLayers } from '../layers/isometry.js';
 import { subdivisionLayers } from '../layers/subdivision.js';
 import { STRAIGHTNESS_MIN_EXTENT, STRAIGHTNESS_SAMPLES } from '../limits.js';
-import { SURFACE_PRESETS, surfacePreset, formulaParameter } from '../catalogue.js';
+import { SURFACE_PRESETS, formulaParameter, surfaceFields } from '../catalogue.js';
 
-/** The formula fields a catalogue surface fills in (its texts from the core) and its a, b, c. */
-/** @returns {import('../scene.js').Params} */
-function presetParams(/** @type {string} */ name) {
-  const p = surfacePreset(name);
-  if (!p) return {};
-  return {
-    ax: p.a[0],
-    ay: p.a[1],
-    az: p.a[2],
-    ex: p.e[0],
-    ey: p.e[1],
-    ez: p.e[2],
-    umin: p.u[0],
-    umax: p.u[1],
-    vmin: p.v[0],
-    vmax: p.v[1],
-    closed: p.closed,
-    a: p.parameters.a,
-    b: p.parameters.b,
-    c: p.parameters.c,
-  };
-}
-
-const HYPERBOLOID = presetParams('hyperboloid');
+const HYPERBOLOID = surfaceFields('hyperboloid');
 const TOOLS = ['striction', 'convergence', 'bending', 'development', 'subdivision'];
 /** @param {string[]} tools @returns {(p: import('../scene.js').Params) => string | null} */
 const onlyFor =
@@ -139,7 +116,7 @@ export const scene = defineScene({
       type: 'select',
       value: 'hyperboloid',
       options: () => SURFACE_PRESETS.map((k) => [k.name, `surface.${k.name}`]),
-      sets: (v) => presetParams(String(v)),
+      sets: (v) => surfaceFields(String(v)),
     },
     formula('ax', String(HYPERBOLOID.ax)),
     formula('ay', String(HYPERBOLOID.ay)),

@@ -4,30 +4,11 @@
 // once from the scenes' input and written here; their mathematics is the paper's (Sections 2–5)
 // and the core's.
 import { readTask } from './format.js';
-import { congruencePreset, surfacePreset } from '../catalogue.js';
+import { congruenceFields, surfaceFields } from '../catalogue.js';
 
-/** The formula fields of a catalogue surface (for a solution typed as formulas). */
-function surfaceFields(/** @type {string} */ name) {
-  const p = /** @type {NonNullable<ReturnType<typeof surfacePreset>>} */ (surfacePreset(name));
-  return { ax: p.a[0], ay: p.a[1], az: p.a[2], ex: p.e[0], ey: p.e[1], ez: p.e[2], umin: p.u[0], umax: p.u[1] };
-}
-
-/** The formula fields of a catalogue congruence. */
-function congruenceFields(/** @type {string} */ name) {
-  const c = /** @type {NonNullable<ReturnType<typeof congruencePreset>>} */ (congruencePreset(name));
-  return {
-    px: c.p[0],
-    py: c.p[1],
-    pz: c.p[2],
-    ex: c.e[0],
-    ey: c.e[1],
-    ez: c.e[2],
-    umin: c.u[0],
-    umax: c.u[1],
-    vmin: c.v[0],
-    vmax: c.v[1],
-  };
-}
+/** Only the fields `keys` of `fields` (a solution sets what the exercise lets change). */
+const pick = (/** @type {Record<string, unknown>} */ fields, /** @type {string[]} */ keys) =>
+  Object.fromEntries(keys.map((k) => [k, fields[k]]));
 
 /** Edits made once from the scenes' own input (a ruling of the cone lifted, a tool pose lifted, …). */
 const TORSAL_SOLUTION =
@@ -423,9 +404,22 @@ const RAW = [
 function complete(/** @type {any} */ raw) {
   const solution =
     raw.solution === 'HELICOID'
-      ? { params: surfaceFields('helicoid') }
+      ? { params: pick(surfaceFields('helicoid'), ['ax', 'ay', 'az', 'ex', 'ey', 'ez', 'umin', 'umax']) }
       : raw.solution === 'ELLIPTIC'
-        ? { params: congruenceFields('elliptic') }
+        ? {
+            params: pick(congruenceFields('elliptic'), [
+              'px',
+              'py',
+              'pz',
+              'ex',
+              'ey',
+              'ez',
+              'umin',
+              'umax',
+              'vmin',
+              'vmax',
+            ]),
+          }
         : raw.solution;
   return readTask({ ruledlab: 'exercise', version: 1, ...raw, solution });
 }

@@ -20,6 +20,7 @@
 // and "{k}" in the texts take the number drawn for the attempt from its seed.
 
 import { plainSubscripts } from '../ui/richtext.js';
+import { fromBase64url, toBase64url } from '../base64url.js';
 import {
   MAX_TASK,
   MAX_TASK_ANSWERS,
@@ -537,10 +538,7 @@ export function say(/** @type {Words} */ w, /** @type {string} */ lang) {
 /** The link value of an exercise: a built-in one's id, else its JSON, encoded. */
 export function taskLink(/** @type {Task} */ task, /** @type {(id: string) => boolean} */ builtIn) {
   if (builtIn(task.id)) return task.id;
-  const bytes = new TextEncoder().encode(writeTask(task));
-  let binary = '';
-  for (const b of bytes) binary += String.fromCharCode(b);
-  return `j.${btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '')}`;
+  return `j.${toBase64url(new TextEncoder().encode(writeTask(task)))}`;
 }
 
 /**
@@ -555,12 +553,12 @@ export function taskFromLink(value, builtIn) {
     if (!task) throw new TaskError('task.error.unknownBuiltIn', { id: value.slice(0, MAX_TASK_ID) });
     return task;
   }
-  const b64 = value.slice(2).replace(/-/g, '+').replace(/_/g, '/');
-  if (!/^[A-Za-z0-9+/]*$/.test(b64) || b64.length > (MAX_TASK * 4) / 3 + 4) throw new TaskError('task.error.badLink');
+  const text = value.slice(2);
+  const bytes = text.length > (MAX_TASK * 4) / 3 + 4 ? null : fromBase64url(text);
+  if (!bytes) throw new TaskError('task.error.badLink');
   let json = '';
   try {
-    const binary = atob(b64 + '='.repeat((4 - (b64.length % 4)) % 4));
-    json = new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
+    json = new TextDecoder('utf-8', { fatal: true }).decode(bytes);
   } catch {
     throw new TaskError('task.error.badLink');
   }

@@ -2,6 +2,7 @@
 // dot for points, a filled square for areas: the second cue besides colour) and its name.
 import { STYLES } from '../theme.js';
 import { appendRich } from './richtext.js';
+import { legendOf } from '../scene.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
 
@@ -55,14 +56,12 @@ export function swatch(doc, styleKey) {
 export function showLegend(list, scene, params, t) {
   const doc = list.ownerDocument;
   list.replaceChildren(
-    ...scene.legend
-      .filter((entry) => !entry.when || entry.when(params))
-      .map((entry) => {
-        const li = doc.createElement('li');
-        li.dataset.style = entry.style;
-        li.append(swatch(doc, entry.style), appendRich(doc.createElement('span'), t(entry.label)));
-        return li;
-      }),
+    ...legendOf(scene, params).map((entry) => {
+      const li = doc.createElement('li');
+      li.dataset.style = entry.style;
+      li.append(swatch(doc, entry.style), appendRich(doc.createElement('span'), t(entry.label)));
+      return li;
+    }),
   );
   list.hidden = list.children.length === 0;
 }
