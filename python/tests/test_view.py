@@ -10,8 +10,6 @@ from __future__ import annotations
 import asyncio
 import gzip
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -255,24 +253,6 @@ def test_the_version_is_the_npm_packages():
     npm = json.loads((REPO / "package.json").read_text())
     assert ruledlab.__version__ == npm["version"]
     assert f'version = "{npm["version"]}"' in (REPO / "python" / "pyproject.toml").read_text()
-
-
-def test_pip_installs_the_package_from_the_repository(tmp_path):
-    """`pip install ./python` (here into a folder of its own): the script comes along from dist/."""
-    target = tmp_path / "site"
-    subprocess.run(
-        [sys.executable, "-m", "pip", "install", "-q", "--disable-pip-version-check", "--no-deps",
-         "--no-build-isolation", "--target", str(target), str(REPO / "python")],
-        check=True,
-    )  # fmt: skip
-    installed = target / "ruledlab" / "static" / "ruledlab-embed.js"
-    assert installed.read_bytes() == (REPO / "dist" / "ruledlab-embed.js").read_bytes()
-    probe = "import ruledlab, ruledlab._script as s; print(ruledlab.__file__); print(s.script_path())"
-    out = subprocess.run(
-        [sys.executable, "-c", probe], cwd=tmp_path, env={"PYTHONPATH": str(target)}, capture_output=True, text=True
-    )
-    assert out.returncode == 0, out.stderr
-    assert out.stdout.splitlines() == [str(target / "ruledlab" / "__init__.py"), str(installed)]
 
 
 def python_snippets() -> list[tuple[str, str]]:
