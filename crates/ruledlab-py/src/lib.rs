@@ -29,6 +29,7 @@ mod module_info;
 mod polygon;
 
 // what they share
+mod allocator;
 mod args;
 mod arrays;
 mod convert;
@@ -41,6 +42,10 @@ mod layout;
 mod scheme_options;
 
 use pyo3::prelude::*;
+
+/// Large blocks on transparent huge pages, as NumPy's (`allocator.rs`).
+#[global_allocator]
+static ALLOCATOR: allocator::Allocator = allocator::Allocator;
 
 /// The compiled core of the Python package ``ruledlab`` (import ``ruledlab``, not this module).
 #[pymodule]

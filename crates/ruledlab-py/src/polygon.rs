@@ -9,13 +9,20 @@ use crate::scheme_options::{read, SchemeArgs, Space};
 use glam::DVec3;
 use pyo3::prelude::*;
 
-/// The points of an (N, 3) array, checked (finite, at most 1e150, 2 … 4 194 304 points).
-fn polygon<'py>(py: Python<'py>, func: &str, points: &Bound<'py, PyAny>) -> PyResult<Vec<DVec3>> {
+/// `f` of the points of an (N, 3) array, checked (finite, at most 1e150, 2 … 4 194 304 points)
+/// and read where they lie, the GIL released.
+fn with_polygon<'py, T: Send>(
+    py: Python<'py>,
+    func: &str,
+    points: &Bound<'py, PyAny>,
+    f: impl FnOnce(&[DVec3]) -> ruledlab::Result<T> + Send,
+) -> PyResult<T> {
     let p = arrays::numbers(func, "points", points)?;
     let n = arrays::rows(func, "points", &p, 3, "point")?;
     let flat = p.slice();
-    py.detach(|| ruledlab::points_from_flat(flat))
-        .map_err(|e| fail_input(func, e, &Layout::One { name: "points", shape: vec![n, 3], lead: 1 }))
+    let points = ruledlab::checked_points(flat)
+        .map_err(|e| fail_input(func, e, &Layout::One { name: "points", shape: vec![n, 3], lead: 1 }))?;
+    py.detach(|| f(points)).map_err(|e| fail(func, e))
 }
 
 /// A polygon ((N, 3)) refined by a curve scheme of Section 4: ``scheme`` "chaikin", "bspline"
@@ -47,8 +54,7 @@ pub fn subdivide_polygon<'py>(
     };
     let (scheme, closed, steps, space) = read(F, &a, None)?;
     debug_assert!(matches!(space, Space::Points));
-    let p = polygon(py, F, points)?;
-    let out = py.detach(|| ruledlab::subdivide_polygon(&p, scheme, closed, steps)).map_err(|e| fail(F, e))?;
+    let out = with_polygon(py, F, points, |p| ruledlab::subdivide_polygon(p, scheme, closed, steps))?;
     arrays::points(py, out)
 }
 
@@ -81,8 +87,7 @@ pub fn turning_angles<'py>(
         length: None,
     };
     let (scheme, closed, steps, _) = read(F, &a, None)?;
-    let p = polygon(py, F, points)?;
-    let out = py.detach(|| ruledlab::turning_angles(&p, scheme, closed, steps)).map_err(|e| fail(F, e))?;
+    let out = with_polygon(py, F, points, |p| ruledlab::turning_angles(p, scheme, closed, steps))?;
     let n = out.len();
     arrays::array(py, out, &[n])
 }
