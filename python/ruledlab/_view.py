@@ -14,7 +14,8 @@ import traitlets as t
 
 from . import _data
 from ._errors import RuledlabError
-from ._figure import TIMEOUT, Figure
+from ._figure import Figure
+from ._front_end import TIMEOUT, FrontEnd, no_answer
 from ._script import script_gzip
 
 #: the traits whose change from Python the view applies and answers with an outcome
@@ -91,6 +92,7 @@ class View(anywidget.AnyWidget):
         self._figures: dict[str, Figure] = {}
         self._on_check: list[Callable[[dict[str, Any]], Any]] = []
         self._on_error: list[Callable[[RuledlabError], Any]] = []
+        self._front = FrontEnd()
         self.error = None
         super().__init__(**kwargs)
         self.on_msg(self._message)
@@ -110,12 +112,14 @@ class View(anywidget.AnyWidget):
         return cls(scene="data", _source=_data.grid(p, q), **kwargs)
 
     def set_segments(self, a: Any, b: Any) -> None:
-        """Shows other rulings (N × 3 arrays ``a`` and ``b``) in this view."""
-        self._source = _data.segments(a, b)
+        """Shows other rulings (N × 3 arrays ``a`` and ``b``) in this view; what the core refuses
+        raises RuledlabError at once, and the view keeps what it shows."""
+        self._source = _data.segments(a, b, "View.set_segments")
 
     def set_grid(self, p: Any, q: Any) -> None:
-        """Shows another congruence (rows × cols × 3 arrays ``p`` and ``q``) in this view."""
-        self._source = _data.grid(p, q)
+        """Shows another congruence (rows × cols × 3 arrays ``p`` and ``q``) in this view; what the
+        core refuses raises RuledlabError at once."""
+        self._source = _data.grid(p, q, "View.set_grid")
 
     # --- checks of what Python sets
 
@@ -170,6 +174,11 @@ class View(anywidget.AnyWidget):
 
     def _message(self, _widget: Any, content: dict[str, Any], buffers: list[Any]) -> None:
         kind = content.get("kind") if isinstance(content, dict) else None
+        self._front.heard()
+        if kind in ("shown", "state", "embed"):
+            self._front.displayed = True  # (a front end that draws it displayed it, also where the kernel cannot tell)
+        if kind == "hello":
+            return
         if kind == "embed":
             self.send({"kind": "embed"}, buffers=[script_gzip()])
         elif kind == "state" and isinstance(content.get("state"), dict):
@@ -207,28 +216,43 @@ class View(anywidget.AnyWidget):
             fn(error)
 
     async def wait(self, timeout: float = TIMEOUT) -> View:
-        """Waits until the view shows everything Python has set (``await view.wait()``); raises
-        RuledlabError with the core's ``code`` and message when that failed (the view keeps
-        the last picture and works on), TimeoutError when no view answers (is it displayed?)."""
+        """Waits until the view shows everything Python has set (``await view.wait()``) and
+        returns the view; raises RuledlabError with the core's ``code`` and message when that
+        failed (the view keeps the last picture and works on). It is for views only: where no
+        front end holds the view (a notebook run headless) there is nothing to wait for, and it
+        returns at once (``await view.has_front_end()`` tells); a view never displayed raises
+        ``not-displayed``, one whose front end does not answer in ``timeout`` s ``no-answer``."""
         target = self._rev
         if self._shown_rev < target:
+            if not await self._front.present():
+                return self
+            await self._front.needed("picture to wait for")
             future: concurrent.futures.Future[None] = concurrent.futures.Future()
             self._waiters.append((target, future))
             try:
                 await asyncio.wait_for(asyncio.wrap_future(future), timeout)
             except asyncio.TimeoutError:
-                raise TimeoutError(
-                    f"ruledlab: the view did not answer in {timeout:g} s: is it displayed (its cell run, "
-                    "the last line of a cell or display(view))?"
-                ) from None
+                raise no_answer("answer", timeout) from None
         if self._outcome:
             raise RuledlabError.from_detail(self._outcome[0])
         return self
 
+    async def has_front_end(self, timeout: float | None = None) -> bool:
+        """Whether a front end (JupyterLab, Jupyter Notebook, VS Code, …) holds this view, so that
+        it draws, answers ``wait()``, makes figures and reports what the reader does: False in a
+        notebook run headless (nbconvert, papermill). Found at once once the front end has said
+        hello, else by waiting for it until ``timeout`` seconds after the view was made (default
+        GRACE, 3 s; 30 s when a front end has spoken for another view of this kernel)."""
+        return await self._front.present(timeout)
+
+    def _repr_mimebundle_(self, **kwargs: Any) -> Any:
+        self._front.displayed = True
+        return super()._repr_mimebundle_(**kwargs)
+
     # --- figures
 
     def _figure(self, kind: str, path: str | Path | None, options: dict[str, Any]) -> Figure:
-        figure = Figure(kind, path)
+        figure = Figure(kind, path, self._front)
         key = str(next(_ids))
         self._figures[key] = figure
         self.send({"kind": "export", "id": key, "format": kind, "options": options})

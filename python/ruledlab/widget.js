@@ -13,7 +13,9 @@
 // view's traits. Figures (SVG, TikZ, PNG) and exercise checks are messages too.
 //
 // Messages, kernel → view: { kind: 'embed' } + [gzipped script], { kind: 'export', id, format,
-// options }. View → kernel: { kind: 'embed' }, { kind: 'state', state, input } (+ [doubles per
+// options }. View → kernel: { kind: 'hello' } (once per model, when a front end creates it:
+// Python learns that a front end holds the view, which a notebook run headless has not), { kind:
+// 'embed' }, { kind: 'state', state, input } (+ [doubles per
 // input set]), { kind: 'shown', rev, errors }, { kind: 'error',
 // error } (an error outside a change of Python's, e.g. from a worker), { kind: 'export', id, text
 // | error } (+ [png bytes]), { kind: 'task', type, report }.
@@ -300,4 +302,13 @@ async function render({ model, el }) {
   };
 }
 
-export default { render };
+/**
+ * A front end made the model: say so, before anything is drawn (Python's wait() and figures need
+ * a front end; without one, in a notebook run headless, they do not wait for it).
+ * @param {{model: Model}} context
+ */
+function initialize({ model }) {
+  model.send({ kind: 'hello' });
+}
+
+export default { initialize, render };

@@ -29,3 +29,37 @@ def test_the_python_chapter_runs_as_printed():
     assert printed[1] == "800 (800, 6)"
     assert printed[2] == "not-finite 2 [2, 1]"
     assert printed[3].startswith("RuledSurface.from_segments: coordinate b[2, 1] (ruling 2, b.y) is NaN")
+
+
+def run_in_kernel(cells: list[str], tmp_path: Path) -> list[dict]:
+    """Runs `cells` in order in a fresh kernel, headless (nbclient, as `nbconvert --execute` does),
+    and gives each cell's outputs."""
+    import nbclient
+    import nbformat
+
+    notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
+    notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    client = nbclient.NotebookClient(
+        notebook, timeout=120, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}
+    )
+    client.execute()
+    return [cell["outputs"] for cell in notebook.cells]
+
+
+def test_the_notebooks_chapter_runs_in_a_kernel_as_printed(tmp_path):
+    """"In notebooks" (docs/src/guide/notebooks.md): its Python blocks in order in one kernel,
+    headless, every block passes and shows nothing it should not (a bound method's repr …)."""
+    code = blocks("notebooks.md")
+    assert len(code) >= 8
+    outputs = run_in_kernel(code, tmp_path)
+    text = []
+    for k, cell in enumerate(outputs):
+        for out in cell:
+            assert out["output_type"] != "error", f"block {k}: {out.get('ename')}: {out.get('evalue')}"
+            plain = out.get("text") or out.get("data", {}).get("text/plain", "")
+            assert not plain.startswith(("<function", "<built-in", "<bound")), f"block {k} shows {plain!r}"
+            text.append(plain)
+    printed = "".join(text)
+    assert "(22, 3)" in printed  # the striction polygon of 24 rulings
+    assert "degenerate | View.from_segments: ruling 0 has zero length" in printed
+    assert "0.9 40" in printed

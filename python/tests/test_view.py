@@ -18,6 +18,7 @@ from ipywidgets.widgets.widget import _remove_buffers
 
 import ruledlab
 from ruledlab import RuledlabError, View
+from ruledlab import _front_end as front_end
 from ruledlab._script import script_path
 
 REPO = Path(__file__).resolve().parents[2]
@@ -43,6 +44,20 @@ class Wire:
 def answer(view: View, content: dict, buffers: list | None = None) -> None:
     """A message of the view's front end to the kernel."""
     view._message(view, content, buffers or [])
+
+
+def shown(view: View) -> View:
+    """The view displayed (its output published) and held by a front end (which said hello)."""
+    view._repr_mimebundle_()
+    answer(view, {"kind": "hello"})
+    return view
+
+
+@pytest.fixture(autouse=True)
+def headless(monkeypatch):
+    """Each test starts in a kernel no front end has spoken to, with a short grace period."""
+    monkeypatch.setattr(front_end, "_any_front_end", False)
+    monkeypatch.setattr(front_end, "GRACE", 0.2)
 
 
 def test_segments_go_as_one_binary_buffer_of_doubles():
@@ -144,28 +159,43 @@ def test_setting_data_moves_the_handles_and_is_checked():
         view.data = {"rulings": np.zeros((4, 2))}
 
 
-def test_wait_raises_the_cores_error_and_the_view_works_on():
-    a, _ = hyperboloid(6)
+def test_what_the_core_refuses_is_refused_at_once_without_a_view():
+    a, b = hyperboloid(6)
+    with pytest.raises(RuledlabError) as e:
+        View.from_segments(a, a)
+    assert e.value.code == "degenerate" and e.value.details["index"] == 0
+    assert str(e.value).startswith("View.from_segments: ruling 0 has zero length")
+    b[3, 2] = np.nan
+    view = View.from_segments(*hyperboloid(6))
+    with pytest.raises(RuledlabError) as e:
+        view.set_segments(a, b)
+    assert (e.value.code, e.value.details["index"], e.value.details["at"]) == ("not-finite", 3, [3, 2])
+    assert "b[3, 2] (ruling 3, b.z) is NaN" in str(e.value) and str(e.value).startswith("View.set_segments:")
+    # the view keeps what it showed
+    assert np.array_equal(view._source["segments"].reshape(6, 6), np.hstack(hyperboloid(6)))
 
+
+def test_wait_raises_the_views_error_and_the_view_works_on():
     async def run():
-        view = View.from_segments(a, a)
+        view = shown(View(scene="isometry"))
         said = []
         view.on_error(said.append)
+        view.params = {"t": "half"}
         rev = view._rev
         error = {
-            "message": "RuledSurface.fromSegments: ruling 0 has zero length",
-            "code": "degenerate",
-            "details": {"index": 0, "reason": "zeroLength"},
+            "message": "ruled-view: parameter t must be a number, got \"half\"",
+            "code": "invalid-argument",
+            "details": {"param": "t"},
         }
         asyncio.get_running_loop().call_later(0.05, answer, view, {"kind": "shown", "rev": rev, "errors": [error]})
         with pytest.raises(RuledlabError) as e:
             await view.wait(timeout=5)
-        assert e.value.code == "degenerate"
-        assert str(e.value) == error["message"] and e.value.details["index"] == 0
-        assert view.error is not None and view.error.code == "degenerate"
-        assert [s.code for s in said] == ["degenerate"]
-        # good rulings: the same view shows them, the error is gone
-        view.set_segments(*hyperboloid(6))
+        assert e.value.code == "invalid-argument" and e.value.details["param"] == "t"
+        assert str(e.value) == error["message"]
+        assert view.error is not None and view.error.code == "invalid-argument"
+        assert [s.code for s in said] == ["invalid-argument"]
+        # a good value: the same view shows it, the error is gone
+        view.params = {"t": 0.5}
         assert view._rev == rev + 1
         loop = asyncio.get_running_loop()
         loop.call_later(0.05, answer, view, {"kind": "shown", "rev": rev + 1, "errors": []})
@@ -178,17 +208,48 @@ def test_wait_raises_the_cores_error_and_the_view_works_on():
     asyncio.run(run())
 
 
-def test_wait_says_when_no_view_answers():
+def test_without_a_front_end_wait_returns_at_once_and_figures_say_why_not():
+    """A notebook run headless: nothing draws the view; computations never needed it."""
+
     async def run():
         view = View(scene="striction")
-        with pytest.raises(TimeoutError, match="is it displayed"):
+        view._repr_mimebundle_()
+        view.params = {"n": 30}
+        start = asyncio.get_running_loop().time()
+        assert await view.wait(timeout=30) is view
+        assert asyncio.get_running_loop().time() - start < 1
+        assert not await view.has_front_end()
+        with pytest.raises(RuledlabError) as e:
+            await view.svg()
+        assert e.value.code == "no-view" and "headless" in str(e.value)
+
+    asyncio.run(run())
+
+
+def test_with_a_front_end_wait_needs_the_view_displayed_and_says_when_none_answers():
+    async def run():
+        view = View(scene="striction")
+        answer(view, {"kind": "hello"})
+        assert await view.has_front_end()
+        view.params = {"n": 30}
+        with pytest.raises(RuledlabError) as e:
             await view.wait(timeout=0.1)
+        assert e.value.code == "not-displayed"
+        view._repr_mimebundle_()
+        with pytest.raises(RuledlabError) as e:
+            await view.wait(timeout=0.1)
+        assert e.value.code == "no-answer" and e.value.details["limit"] == 0.1
+        # once a front end has spoken, another view waits for its hello longer than the grace
+        later = View(scene="striction")
+        loop = asyncio.get_running_loop()
+        loop.call_later(0.4, answer, later, {"kind": "hello"})
+        assert await later.has_front_end()
 
     asyncio.run(run())
 
 
 def test_figures_arrive_as_text_bytes_and_files(tmp_path):
-    view = View(scene="striction")
+    view = shown(View(scene="striction"))
     wire = Wire(view)
 
     async def run():
@@ -283,7 +344,7 @@ def test_the_books_and_the_notebooks_python_reads_and_names_what_exists():
 
 
 def test_the_layers_the_view_draws_arrive_as_arrays():
-    view = View(scene="striction")
+    view = shown(View(scene="striction"))
     wire = Wire(view)
 
     async def run():

@@ -3,8 +3,8 @@
 // the project's virtual environment (.venv: scripts/setup.sh --browser; scripts/test.sh installs
 // the built wheel there). The views are drawn from NumPy data sent as binary buffers; a slider
 // moved in a view is read in Python; parameters set from Python change the picture; figures
-// arrive as files; a bad input raises RuledlabError with the core's code and the view works on;
-// an exercise's checks reach Python.
+// arrive as files; a bad input raises RuledlabError with the core's code at once, a bad parameter
+// comes from the view, which works on; an exercise's checks reach Python.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
@@ -173,19 +173,21 @@ test('the example notebook runs in JupyterLab, with data both ways', { timeout: 
 
   try {
     await run(1, /from ruledlab import View/);
+    // the invariants computed by the core, in Python
+    assert.match(await run(3, /\.invariants\(\)/), /^δ = -1\.463709 ± /m);
     // your rulings from NumPy: drawn
-    await run(3, /View\.from_segments\(a, b, editable=True/);
-    const surface = await viewOf(3);
+    await run(5, /View\.from_segments\(a, b, editable=True/);
+    const surface = await viewOf(5);
     const drawn = await grab(canvas(surface), 'notebook-surface');
     assert.ok(countDifferent(drawn, BACKGROUND) > 0.02 * drawn.width * drawn.height, 'the rulings are drawn');
-    const readouts = await run(4, /surface\.readouts/);
-    assert.match(readouts, /\d/, 'the readouts arrive in Python');
-    // the rulings came through as they were sent, bit for bit
-    assert.match(await run(5, /surface\.data/), /\(48, 3\) True True/);
+    // the rulings came through as they were sent, bit for bit, and the readouts arrive in Python
+    const back = await run(6, /surface\.data/);
+    assert.match(back, /\(48, 3\) True True/);
+    assert.match(back, /: \d/, 'the readouts arrive in Python');
 
     // a slider moved in the view is read in Python
-    await run(7, /scene="isometry"/);
-    const bending = await viewOf(7);
+    await run(8, /scene="isometry"/);
+    const bending = await viewOf(8);
     const before = await grab(canvas(bending), 'notebook-bending');
     const slider = bending.locator('.rl-controls input[name="t"]');
     await slider.scrollIntoViewIfNeeded();
@@ -194,42 +196,42 @@ test('the example notebook runs in JupyterLab, with data both ways', { timeout: 
     const moved = Number(await slider.inputValue());
     assert.ok(Math.abs(moved - 0.35) < 1e-9, `the slider moved to ${moved}`);
     await page.waitForTimeout(500);
-    assert.match(await run(8, /bending\.params\["t"\]/), new RegExp(`t = ${moved}\\b`));
+    assert.match(await run(9, /bending\.params\["t"\]/), new RegExp(`t = ${moved}\\b`));
 
     // parameters set from Python change the picture and the slider
     const shown = await grab(canvas(bending), 'notebook-bending-moved');
     assert.ok(countChanged(before, shown) > 500, 'moving the slider changed the picture');
-    assert.match(await run(10, /bending\.params = \{"t": 0\.9/), /t = 0\.9 {2}n = 40/);
+    assert.match(await run(11, /bending\.params = \{"t": 0\.9/), /t = 0\.9 {2}n = 40/);
     await page.waitForTimeout(300);
     const after = await grab(canvas(bending), 'notebook-bending-python');
     assert.ok(countChanged(shown, after) > 500, 'the parameters from Python changed the picture');
     assert.equal(Number(await slider.inputValue()), 0.9);
 
     // figures as files
-    const figures = await run(12, /await bending\.svg/);
+    const figures = await run(13, /await bending\.svg/);
     assert.match(figures, /^\d+ \d+ b'\\x89PNG'/m);
     const svg = readFileSync(join(lab.dir, 'bending.svg'), 'utf8');
     assert.match(svg, /^<\?xml[\s\S]*<svg[\s\S]*<\/svg>\s*$/);
     assert.match(readFileSync(join(lab.dir, 'bending.tex'), 'utf8'), /\\begin\{tikzpicture\}/);
 
-    // a bad input: RuledlabError with the core's code; the view works on
-    await run(14, /View\.from_segments\(a, a\)/);
-    await cells.nth(14).locator('ruled-view').waitFor();
-    assert.match(await run(15, /await flat\.wait\(\)/), /^degenerate \| .*zero length|^degenerate \| /m);
-    assert.match(await run(16, /flat\.set_segments\(a, b\)/), /^None True/m);
-    const flat = await viewOf(14);
-    const repaired = await grab(canvas(flat), 'notebook-flat-repaired');
-    assert.ok(countDifferent(repaired, BACKGROUND) > 0.02 * repaired.width * repaired.height);
+    // a bad input: RuledlabError with the core's code, at once; a bad parameter: from the view,
+    // which works on
+    assert.match(await run(15, /View\.from_segments\(a, a\)/), /^degenerate \| .*zero length/m);
+    assert.match(await run(16, /bad\[2, 1\] = np\.nan/), /^not-finite 2 \| /m);
     assert.match(await run(17, /"t": "half"/), /^invalid-argument t \| /m);
+    await page.waitForTimeout(300);
+    const worksOn = await grab(canvas(bending), 'notebook-bending-after-error');
+    assert.ok(countDifferent(worksOn, BACKGROUND) > 0.02 * worksOn.width * worksOn.height);
 
     // a congruence from NumPy, with its focal surfaces
-    await run(19, /View\.from_grid\(p, q/);
-    const lines = await grab(canvas(await viewOf(19)), 'notebook-congruence');
+    assert.match(await run(19, /\.focal\(\)/), /elliptic, hyperbolic, parabolic lines: \[/);
+    await run(20, /View\.from_grid\(p, q/);
+    const lines = await grab(canvas(await viewOf(20)), 'notebook-congruence');
     assert.ok(countDifferent(lines, BACKGROUND) > 0.02 * lines.width * lines.height);
 
     // an exercise: its checks reach Python
-    await run(21, /task="striction-accuracy"/);
-    const exercise = await viewOf(21);
+    await run(22, /task="striction-accuracy"/);
+    const exercise = await viewOf(22);
     const n = exercise.locator('.rl-controls input[name="n"]');
     await n.scrollIntoViewIfNeeded();
     // N = 100 meets every tolerance the exercise draws (5·10⁻⁴ at the tightest)
@@ -238,14 +240,14 @@ test('the example notebook runs in JupyterLab, with data both ways', { timeout: 
     const check = exercise.locator('.rl-task-check');
     await check.click();
     await page.waitForTimeout(500);
-    assert.match(await run(22, /checks/), /\('check', True, 1, 1\)/);
+    assert.match(await run(23, /checks/), /\('check', True, 1, 1\)/);
     // a figure left as a cell's last line shows in its output when it arrives
-    await run(24, /^bending\.png\(scale=1\)$/);
-    const image = cells.nth(24).locator('.jp-OutputArea img');
+    await run(25, /^bending\.png\(scale=1\)$/);
+    const image = cells.nth(25).locator('.jp-OutputArea img');
     await image.waitFor({ timeout: 30000 });
     assert.ok((await image.evaluate((img) => /** @type {HTMLImageElement} */ (img).naturalWidth)) > 200);
-    // the striction polygon the view computed, in Python
-    assert.match(await run(26, /await surface\.layers\(\)/), /^\(2\d, 3\) True$/m);
+    // the striction polygon the view computed is the one the core computed in Python
+    assert.match(await run(27, /await surface\.layers\(\)/), /^\(2\d, 3\) True$/m);
     await grab(page.locator('.jp-NotebookPanel:not(.lm-mod-hidden)'), 'notebook-page');
     // what the cells printed, for people to read
     const outputs = [];
