@@ -6,6 +6,7 @@
 import { parseRich } from '../ui/richtext.js';
 import { superscript } from '../i18n/translate.js';
 import { svgMaker, svgFigure } from '../svg-dom.js';
+import { least, greatest } from '../reduce.js';
 
 /** The least size of any text in a figure, subscripts included, in user units (= CSS px at 1:1). */
 export const SMALLEST_TEXT = 12.5;
@@ -50,12 +51,12 @@ export function logLogPlot(
   const ys = series.flatMap((s) => s.y.filter(finite));
   const xs = x.filter(linearX ? Number.isFinite : finite);
   if (!ys.length || !xs.length) return svg;
-  const x0 = linearX ? Math.min(...xs) : Math.floor(Math.log10(Math.min(...xs))),
-    x1 = linearX ? Math.max(...xs) : Math.ceil(Math.log10(Math.max(...xs)));
+  const x0 = linearX ? least(xs) : Math.floor(Math.log10(least(xs))),
+    x1 = linearX ? greatest(xs) : Math.ceil(Math.log10(greatest(xs)));
   /** Where x lies along the axis, 0 … 1 of [x0, x1] (decades unless linearX). */
   const along = (/** @type {number} */ v) => ((linearX ? v : Math.log10(v)) - x0) / Math.max(x1 - x0, 1);
-  const y0 = Math.floor(Math.log10(Math.min(...ys))),
-    y1 = Math.ceil(Math.log10(Math.max(...ys)));
+  const y0 = Math.floor(Math.log10(least(ys))),
+    y1 = Math.ceil(Math.log10(greatest(ys)));
   const px = (/** @type {number} */ v) => pad.l + along(v) * (width - pad.l - pad.r);
   const py = (/** @type {number} */ v) =>
     height - pad.b - ((Math.log10(v) - y0) / Math.max(y1 - y0, 1)) * (height - pad.t - pad.b);
@@ -88,7 +89,7 @@ export function logLogPlot(
     if (anchor < 0 || linearX) return;
     const xa = x[anchor],
       ya = series[0].y[anchor] * 2;
-    const xb = Math.min(...xs),
+    const xb = least(xs),
       yb = Math.max(ya * (xb / xa) ** p, 10 ** y0);
     svg.append(
       el('line', {

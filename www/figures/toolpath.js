@@ -10,6 +10,7 @@ import { svgMaker, svgFigure } from '../svg-dom.js';
 import { SMALLEST_TEXT, marker } from '../diagrams/plot.js';
 import { PLOT_MARKERS } from '../limits.js';
 import { drawnTool, jobOptions } from './job.js';
+import { least, greatest } from '../reduce.js';
 
 /** The machines of the post (the core's presets). */
 export const MACHINES = /** @type {const} */ (['table-table-ac', 'table-table-bc', 'head-table-bc', 'head-head-ac']);
@@ -152,8 +153,8 @@ function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height, c
   const ys = series.flatMap((s) => Array.from(s.y)).filter(Number.isFinite);
   if (!xs.length || !ys.length) return;
   const levelValues = levels.map((l) => l.value).filter(Number.isFinite);
-  const [x0, x1] = [Math.min(...xs), Math.max(...xs, Math.min(...xs) + 1)];
-  const yTicks = niceTicks(Math.min(0, ...ys, ...levelValues), Math.max(0, ...ys, ...levelValues));
+  const [x0, x1] = [least(xs), greatest(xs, least(xs) + 1)];
+  const yTicks = niceTicks(least(levelValues, least(ys, 0)), greatest(levelValues, greatest(ys, 0)));
   const [y0, y1] = [yTicks.values[0], yTicks.values[yTicks.values.length - 1]];
   const px = (/** @type {number} */ v) => pad.l + ((v - x0) / (x1 - x0)) * (width - pad.l - pad.r);
   const py = (/** @type {number} */ v) => height - pad.b - ((v - y0) / (y1 - y0)) * (height - pad.t - pad.b);

@@ -5,6 +5,7 @@ import { defineScene, scoped } from '../scene.js';
 import { congruenceFigure, givenGrid, SCHEME_PARAMS, LEGEND } from '../figures/congruence.js';
 import { focalFigure } from '../figures/focal.js';
 import { CONGRUENCE_PRESETS, congruencePreset, formulaParameter } from '../catalogue.js';
+import { append } from '../reduce.js';
 
 /** The formula fields a catalogue congruence fills in (its texts from the core), its grid and a, b, c. */
 /** @returns {import('../scene.js').Params} */
@@ -119,8 +120,11 @@ export const scene = defineScene({
       if (p.focal) {
         // beyond the paper: the focal sheets and torsal directions of the given grid (scene "Focal surfaces")
         const focal = focalFigure(own, own(analytic.grid()), { sheets: true, torsal: true }, ctx);
-        built.layers.push(...focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'));
-        built.readouts?.push(...focal.readouts);
+        append(
+          built.layers,
+          focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'),
+        );
+        if (built.readouts) append(built.readouts, focal.readouts);
         built.measures = { ...built.measures, ...focal.measures };
         built.description = `${built.description} ${focal.sentence}`;
       }
