@@ -12,7 +12,7 @@ from typing import Any, Callable
 import anywidget
 import traitlets as t
 
-from . import _data
+from . import _data, _still
 from ._errors import RuledlabError
 from ._figure import Figure
 from ._front_end import TIMEOUT, FrontEnd, no_answer
@@ -93,6 +93,8 @@ class View(anywidget.AnyWidget):
         self._on_check: list[Callable[[dict[str, Any]], Any]] = []
         self._on_error: list[Callable[[RuledlabError], Any]] = []
         self._front = FrontEnd()
+        self._stills: list[Any] = []
+        self._still_png: bytes | None = None
         self.error = None
         super().__init__(**kwargs)
         self.on_msg(self._message)
@@ -206,6 +208,8 @@ class View(anywidget.AnyWidget):
                 figure._resolve(content, buffers)
                 if figure.done():
                     self._figures.pop(str(content.get("id")), None)
+        elif kind == "still" and buffers:
+            self._show_still(bytes(buffers[0]))
         elif kind == "task" and isinstance(content.get("report"), dict):
             report = {**content["report"], "event": content.get("type", "check")}
             for fn in list(self._on_check):
@@ -245,9 +249,37 @@ class View(anywidget.AnyWidget):
         GRACE, 3 s; 30 s when a front end has spoken for another view of this kernel)."""
         return await self._front.present(timeout)
 
+    def __repr__(self) -> str:
+        return f"<{self._describe()}>"
+
+    def _describe(self) -> str:
+        return _still.describe(self.scene, dict(self.params), self._source, self.task, self.paper)
+
     def _repr_mimebundle_(self, **kwargs: Any) -> Any:
         self._front.displayed = True
-        return super()._repr_mimebundle_(**kwargs)
+        bundle = super()._repr_mimebundle_(**kwargs)
+        data = bundle[0] if isinstance(bundle, tuple) else bundle
+        if isinstance(data, dict):
+            data["text/plain"] = self._describe()
+        return bundle
+
+    def _ipython_display_(self) -> None:
+        """Displays the view and, below it, its still (``_still``): what a notebook saved, or
+        converted to HTML, shows of it without a kernel."""
+        from IPython.display import display
+
+        bundle = self._repr_mimebundle_()
+        data, metadata = bundle if isinstance(bundle, tuple) else (bundle, {})
+        display(data, metadata=metadata, raw=True)
+        handle = display(_still.bundle(self._describe(), self._still_png), raw=True, display_id=True)
+        if handle is not None:
+            self._stills.append(handle)
+
+    def _show_still(self, png: bytes) -> None:
+        """The picture the front end drew last, into every still of the view."""
+        self._still_png = png
+        for handle in self._stills:
+            handle.update(_still.bundle(self._describe(), png), raw=True)
 
     # --- figures
 
@@ -275,7 +307,10 @@ class View(anywidget.AnyWidget):
     def layers(self) -> Figure:
         """What the view draws, as the core computed it: ``await view.layers()`` gives a list of
         ``{kind, style, points}`` (``points`` an (n, 3) array: a segments layer's ends in pairs, a
-        polyline's points, a mesh's vertices), e.g. the striction polygon as style ``striction``."""
+        polyline's points, a mesh's vertices), e.g. the striction polygon as style ``striction``.
+        The points are float64 arrays holding the 32-bit floats the view draws (WebGL's): they agree
+        with the core's float64 results (``RuledSurface.invariants()["striction"]``) to about 1e-7
+        relative, not bit for bit."""
         return self._figure("layers", None, {})
 
     # --- callbacks

@@ -63,3 +63,4 @@ def test_the_notebooks_chapter_runs_in_a_kernel_as_printed(tmp_path):
     assert "(22, 3)" in printed  # the striction polygon of 24 rulings
     assert "degenerate | View.from_segments: ruling 0 has zero length" in printed
     assert "0.9 40" in printed
+    assert "<ruledlab view of 24 rulings>" in printed  # a view as text, where no widget runs

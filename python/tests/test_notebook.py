@@ -41,3 +41,20 @@ def test_the_example_notebook_runs_headless_under_nbconvert(tmp_path):
     widget = "application/vnd.jupyter.widget-view+json"
     views = [c for c in code if any(widget in o.get("data", {}) for o in c["outputs"])]
     assert len(views) >= 4
+    # below each view its still: what a notebook without a kernel shows (headless: the sentence)
+    stills = [
+        o for c in code for o in c["outputs"] if "ruledlab-still" in "".join(o.get("data", {}).get("text/html", ""))
+    ]
+    assert len(stills) == len(views), "a still for every view"
+    assert any("ruledlab view of 24 rulings" in "".join(o["data"]["text/plain"]) for o in stills)
+    for c in views:
+        kinds = [list(o.get("data", {})) for o in c["outputs"]]
+        assert ["text/html", "text/plain"] in [sorted(k) for k in kinds], "the view's still is in its cell"
+    # nbconvert's HTML of the run notebook names every view where no widget runs
+    html = subprocess.run(
+        [jupyter, "nbconvert", "--to", "html", str(tmp_path / "run.ipynb"), "--stdout"],
+        cwd=tmp_path, capture_output=True, text=True, check=True,
+    ).stdout  # fmt: skip
+    assert html.count('class="ruledlab-still"') == len(views)
+    assert "ruledlab view of a congruence of 9 × 9 lines" in html
+    assert "&lt;ruledlab._view.View object" not in html and "<ruledlab._view.View object" not in html

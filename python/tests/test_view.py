@@ -364,3 +364,71 @@ def test_the_layers_the_view_draws_arrive_as_arrays():
         assert np.array_equal(got[0]["points"], striction.astype(float))
 
     asyncio.run(run())
+
+
+class Handle:
+    """An IPython display handle that records its updates."""
+
+    def __init__(self) -> None:
+        self.updates: list[dict] = []
+
+    def update(self, obj: dict, raw: bool = False) -> None:
+        assert raw
+        self.updates.append(obj)
+
+
+def test_a_view_says_what_it_shows_as_text_and_leaves_a_still_for_notebooks_without_a_kernel(monkeypatch):
+    """Outside a widget front end (a plain IPython, print, a notebook saved and opened without a
+    kernel, nbconvert's HTML) a view is a sentence, then the picture its front end drew last."""
+    import base64
+
+    import IPython.display
+
+    a, b = hyperboloid(8)
+    view = View.from_segments(a, b, params={"strip": False})
+    assert repr(view) == "<ruledlab view of 8 rulings (strip=False)>"
+    assert str(view) == repr(view)
+    s, t = np.meshgrid(np.arange(3.0), np.arange(4.0), indexing="ij")
+    p = np.stack([s, t, np.zeros_like(s)], axis=2)
+    assert repr(View.from_grid(p, p + [0.0, 0.0, 1.0])) == "<ruledlab view of a congruence of 3 × 4 lines>"
+    assert repr(View(task="striction-accuracy")) == "<ruledlab view of the exercise striction-accuracy>"
+    assert repr(View(scene="isometry", params={"t": 0.5})) == "<ruledlab view of the scene isometry (t=0.5)>"
+    data = view._repr_mimebundle_()
+    data = data[0] if isinstance(data, tuple) else data
+    assert data["text/plain"] == "ruledlab view of 8 rulings (strip=False)"
+    assert data["application/vnd.jupyter.widget-view+json"]["model_id"] == view.model_id
+
+    shown: list[tuple[dict, dict]] = []
+    handles: list[Handle] = []
+
+    def display(obj, metadata=None, raw=False, display_id=None):
+        assert raw
+        shown.append((obj, {"display_id": display_id}))
+        if display_id:
+            handles.append(Handle())
+            return handles[-1]
+        return None
+
+    monkeypatch.setattr(IPython.display, "display", display)
+    view._ipython_display_()
+    assert len(shown) == 2 and "application/vnd.jupyter.widget-view+json" in shown[0][0]
+    still, how = shown[1]
+    assert how["display_id"] is True
+    assert 'class="ruledlab-still"' in still["text/html"] and "ruledlab view of 8 rulings" in still["text/html"]
+    assert still["text/plain"] == "ruledlab view of 8 rulings (strip=False)"
+    # the front end drew it: its picture goes into the still (escaped text as its alternative)
+    png = b"\x89PNG\r\n\x1a\n" + bytes(range(256))
+    answer(view, {"kind": "still"}, [memoryview(png)])
+    (update,) = handles[0].updates
+    assert f'src="data:image/png;base64,{base64.b64encode(png).decode()}"' in update["text/html"]
+    assert 'alt="ruledlab view of 8 rulings (strip=False)"' in update["text/html"]
+    # a view displayed again starts with the picture it has
+    view._ipython_display_()
+    assert base64.b64encode(png).decode() in shown[3][0]["text/html"]
+    answer(view, {"kind": "still"}, [png[:20]])
+    assert len(handles[0].updates) == 2 and len(handles[1].updates) == 1
+    # text that HTML would read is escaped
+    odd = View(scene="<b>x</b>")
+    monkeypatch.setattr(IPython.display, "display", display)
+    odd._ipython_display_()
+    assert "<b>x</b>" not in shown[-1][0]["text/html"] and "&lt;b&gt;" in shown[-1][0]["text/html"]
