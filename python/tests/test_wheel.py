@@ -53,3 +53,28 @@ def test_one_pip_install_into_a_fresh_venv_computes_headless(tmp_path):
     here = RuledSurface.from_segments(a, b).invariants()
     assert got["distribution"] == here["distribution"].tolist()
     assert got["striction"] == here["striction"].tolist()
+
+
+def test_the_wheel_builds_from_a_plain_venv(tmp_path):
+    """What the book's one command does, from ``python3 -m venv`` with nothing added (its pip and,
+    on Python < 3.12, its old setuptools): pip builds with isolation, fetching the build backend
+    python/pyproject.toml pins (maturin), so nothing of .venv/ is needed."""
+    import zipfile
+
+    if not (REPO / "python" / "ruledlab" / "static" / "ruledlab-embed.js").exists():
+        pytest.fail("python/ruledlab/static/ruledlab-embed.js is missing: run bash scripts/wheel.sh")
+    venv = tmp_path / "venv"
+    base = getattr(sys, "_base_executable", sys.executable)
+    subprocess.run([base, "-m", "venv", str(venv)], check=True)
+    python = venv / "bin" / "python"
+    out = subprocess.run(
+        [python, "-m", "pip", "wheel", "-q", "--disable-pip-version-check", "--no-deps", "-w", str(tmp_path / "dist"),
+         str(REPO / "python")],
+        capture_output=True, text=True,
+    )  # fmt: skip
+    assert out.returncode == 0, out.stderr[-3000:]
+    (wheel,) = (tmp_path / "dist").glob("ruledlab-*-cp39-abi3-*.whl")
+    names = zipfile.ZipFile(wheel).namelist()
+    assert any(n.startswith("ruledlab/_core") and n.endswith(".so") for n in names), names
+    assert "ruledlab/static/ruledlab-embed.js" in names and "ruledlab/widget.js" in names
+    assert "ruledlab/_still.py" in names and "ruledlab/_core.pyi" in names and "ruledlab/py.typed" in names
