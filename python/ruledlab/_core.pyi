@@ -6,6 +6,7 @@ without a copy, complex, strings, booleans and objects are refused); arrays out 
 uint8, uint32 where said), one row per record.
 """
 
+import builtins
 from typing import Any, Callable, Literal, Optional, Sequence, TypedDict, Union
 
 import numpy as np
@@ -291,7 +292,7 @@ class AnalyticSurface:
     @staticmethod
     def by_name(name: str) -> AnalyticSurface: ...
     @staticmethod
-    def formula_presets() -> list[SurfacePreset]: ...
+    def formula_presets() -> builtins.list[SurfacePreset]: ...
     @staticmethod
     def from_formulas(
         a: Sequence[str],
@@ -396,7 +397,7 @@ class AnalyticCongruence:
     @staticmethod
     def by_name(name: str) -> AnalyticCongruence: ...
     @staticmethod
-    def formula_presets() -> list[CongruencePreset]: ...
+    def formula_presets() -> builtins.list[CongruencePreset]: ...
     @staticmethod
     def from_formulas(
         p: Sequence[str],
