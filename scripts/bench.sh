@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Benchmarks: criterion natively, then the same kernels through the wasm package in Node, their
-# instructions per ruling (valgrind), frame times in the page, and Lighthouse on the production page
+# instructions per ruling (valgrind), the core from Python against careful NumPy (bench/python.py),
+# frame times in the page, and Lighthouse on the production page
 # and the one-file build (installed on demand into target/lighthouse/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,6 +22,10 @@ if command -v valgrind >/dev/null; then
 else
   echo "bench: valgrind not found; the instruction counts (bench/instructions.mjs) are skipped"
 fi
+# the core from Python against careful NumPy (the wheel built and installed into .venv/)
+[ -x .venv/bin/python ] || bash scripts/setup.sh --browser
+bash scripts/wheel.sh
+.venv/bin/python bench/python.py
 node bench/page.mjs
 node bench/drag.mjs
 node bench/lighthouse.mjs

@@ -13,6 +13,8 @@ export const BLOCKS = /** @type {const} */ ({
   paper: 'teaching/paper.md',
   bench: 'internals/benchmarks.md',
   'bench-instructions': 'internals/benchmarks.md',
+  // (written by bench/python.py)
+  'bench-python': 'internals/benchmarks.md',
   'bench-page': 'internals/page-speed.md',
   'bench-drag': 'internals/page-speed.md',
   'bench-lighthouse': 'internals/page-speed.md',

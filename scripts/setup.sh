@@ -100,7 +100,7 @@ fi
 # The notebook widget (python/): its wheel is built and tested with these, and JupyterLab runs the
 # example notebook (tests/page/notebook.test.mjs). Remade only when the list below changes.
 if [ "${1:-}" = "--browser" ]; then
-  PY_PACKAGES="jupyterlab==4.6.6 anywidget==0.11.0 numpy==2.4.6 pytest==9.2.0 setuptools==84.2.1"
+  PY_PACKAGES="jupyterlab==4.6.6 notebook==7.6.5 anywidget==0.11.0 numpy==2.4.6 pytest==9.2.0 mypy==2.4.1 maturin==1.16.0 nbconvert==7.17.2 nbclient==0.11.0 ipykernel==7.4.0"
   if [ "$(cat .venv/ruledlab-packages 2>/dev/null || true)" != "$PY_PACKAGES" ]; then
     if ! python3 -c 'import venv, ensurepip' 2>/dev/null; then
       say "installing Debian's python3-venv"

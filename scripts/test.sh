@@ -5,8 +5,10 @@
 #   2. native Rust: unit, property and integration tests, doctests (the README's Rust snippets
 #      among them), benches in test mode
 #   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc types;
-#      the Python package for notebooks (python/) built into a wheel with dist/ruledlab-embed.js
-#      inside, installed into .venv/ and its pytest tests
+#      the Python package (python/: the compiled core, crates/ruledlab-py, and the notebook widget
+#      with dist/ruledlab-embed.js inside) built into one wheel, installed into .venv/ and into a
+#      fresh venv; its pytest tests: the core against NumPy baselines and against the JavaScript
+#      API in Node, mypy --strict on an example, the book's Python, the widget
 #   4. docs: every JS/TS snippet of the book and the README verbatim under tsc --strict against
 #      the package's declarations; the site (book, typedoc, rustdoc) built into site/; every
 #      link and anchor of it checked
@@ -48,7 +50,7 @@ step "types: tsc --strict over www/, scripts and tests"
 npx tsc -p tsconfig.json
 npx tsc -p tsconfig.tests.json
 
-step "python: the notebook widget's wheel (python/ into dist/python/, installed into .venv/), pytest"
+step "python: the wheel (python/ and crates/ruledlab-py into dist/python/, installed into .venv/), pytest"
 bash scripts/wheel.sh
 .venv/bin/python -m pytest -q -p no:cacheprovider python/tests
 

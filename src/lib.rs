@@ -68,7 +68,7 @@ pub use visibility::{hidden_lines, transformed, HiddenLineOptions, LineKind, Run
 // Section 2: discrete ruled surfaces, their invariants, convergence and accuracy
 pub use ruled::accuracy::{sampling_errors, sampling_orders, SamplingErrors, SamplingOrders};
 pub use ruled::convergence::{convergence_study, fit_order, ConvergenceSeries, ConvergenceStudy};
-pub use ruled::surface::points_from_flat;
+pub use ruled::surface::{checked_points, points_from_flat};
 pub use ruled::{Invariants, InvariantsBlock, PairInvariants, RuledSurface, SmoothRuled};
 
 // Section 3: isometries and the development

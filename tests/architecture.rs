@@ -7,10 +7,11 @@
 //! on a use that points sideways or up — so a new cycle, or an algorithm reaching into the
 //! catalogue, cannot land.
 //!
-//! The bindings (`crates/ruledlab-wasm/`, `crates/ruledlab-cam-wasm/`) are read too: in each,
-//! the files use each other without a cycle and each JavaScript class is declared and bound in the
-//! one file named after it; `crates/ruledlab-js/` declares nothing to JavaScript; and neither the
-//! geometry nor the CAM crate names wasm-bindgen.
+//! The bindings (`crates/ruledlab-wasm/`, `crates/ruledlab-cam-wasm/`, `crates/ruledlab-py/`) are
+//! read too: in each, the files use each other without a cycle and each JavaScript or Python
+//! class is declared and bound in the one file named after it; `crates/ruledlab-js/` declares
+//! nothing to JavaScript; neither the geometry nor the CAM crate names wasm-bindgen or PyO3, and
+//! only the Python bindings name PyO3.
 
 use std::collections::BTreeMap;
 use std::fs;
@@ -159,12 +160,19 @@ fn sibling_uses(text: &str) -> Vec<String> {
 /// The types a source text binds with `#[wasm_bindgen]`: the structs it declares as
 /// JavaScript classes, and the types of its `#[wasm_bindgen] impl` blocks.
 fn bound(text: &str) -> (Vec<String>, Vec<String>) {
+    bound_by(text, &["#[wasm_bindgen"])
+}
+
+/// The types a source text binds with an attribute of `markers` (`#[wasm_bindgen`; `#[pyclass`
+/// and `#[pymethods` for Python): the structs it declares as classes, and the types of the `impl`
+/// blocks the attribute marks.
+fn bound_by(text: &str, markers: &[&str]) -> (Vec<String>, Vec<String>) {
     let (mut classes, mut impls) = (Vec::new(), Vec::new());
-    let mut bindgen = false; // the item being read carries #[wasm_bindgen]
+    let mut bindgen = false; // the item being read carries a marker
     let mut open = 0i32; // brackets of an attribute running over lines
     for line in code_lines(text) {
         if open > 0 || line.starts_with("#[") {
-            bindgen |= line.starts_with("#[wasm_bindgen");
+            bindgen |= markers.iter().any(|m| line.starts_with(m));
             open += line.matches('[').count() as i32 - line.matches(']').count() as i32;
             continue;
         }
@@ -229,6 +237,8 @@ fn cycle(graph: &BTreeMap<String, Vec<String>>) -> Option<Vec<String>> {
 /// The crates of the bindings, and the one that shares their helpers.
 const BINDINGS: [&str; 2] = ["crates/ruledlab-wasm/src", "crates/ruledlab-cam-wasm/src"];
 const SHARED: &str = "crates/ruledlab-js/src";
+/// The Python bindings (the extension `ruledlab._core`).
+const PYTHON: &str = "crates/ruledlab-py/src";
 
 /// The files of a crate of the bindings (`lib.rs` aside: it only declares and re-exports), by
 /// module name.
@@ -252,7 +262,7 @@ fn binding_files(crate_src: &str) -> BTreeMap<String, String> {
 /// through a re-export of `mod.rs`, so every use is an edge of the graph.
 #[test]
 fn the_bindings_use_each_other_without_a_cycle() {
-    for crate_src in BINDINGS.into_iter().chain([SHARED]) {
+    for crate_src in BINDINGS.into_iter().chain([SHARED, PYTHON]) {
         let files = binding_files(crate_src);
         assert!(files.len() >= 4, "only {} files in {crate_src}/", files.len());
         let mut graph: BTreeMap<String, Vec<String>> = BTreeMap::new();
@@ -310,6 +320,53 @@ fn each_javascript_class_has_one_file_named_after_it() {
     }
 }
 
+/// One file per Python class: the class `RuledSurface` is declared (`#[pyclass]`) in
+/// `crates/ruledlab-py/src/ruled_surface.rs`, and its `#[pymethods]` (every method Python sees)
+/// are in that file.
+#[test]
+fn each_python_class_has_one_file_named_after_it() {
+    let mut classes = Vec::new();
+    let mut wrong = Vec::new();
+    for (module, text) in binding_files(PYTHON) {
+        let (declared, impls) = bound_by(&text, &["#[pyclass", "#[pymethods"]);
+        for class in declared {
+            if snake(&class) != module {
+                wrong.push(format!("the class {class} is declared in {module}.rs, not {}.rs", snake(&class)));
+            }
+            classes.push(class);
+        }
+        for class in impls {
+            if snake(&class) != module {
+                wrong.push(format!("methods of {class} are bound in {module}.rs, not {}.rs", snake(&class)));
+            }
+        }
+    }
+    assert!(classes.len() >= 5, "only {} Python classes found: {classes:?}", classes.len());
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// Only the Python bindings name PyO3 or rust-numpy: the geometry, the CAM crate and the wasm
+/// bindings build without Python.
+#[test]
+fn only_the_python_bindings_name_python() {
+    for dir in ["src", "crates/ruledlab-cam/src"] {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join(dir);
+        let mut files = Vec::new();
+        sources(&root, &root, &mut files);
+        files.push(("lib.rs".to_string(), fs::read_to_string(root.join("lib.rs")).expect("lib.rs")));
+        for (module, text) in &files {
+            for py in ["pyo3", "numpy::", "pythonize"] {
+                assert!(!text.contains(py), "{dir}: the module {module} names {py}");
+            }
+        }
+    }
+    for crate_src in BINDINGS.into_iter().chain([SHARED]) {
+        for (module, text) in binding_files(crate_src) {
+            assert!(!text.contains("pyo3"), "{crate_src}/{module}.rs names pyo3");
+        }
+    }
+}
+
 /// The geometry and the CAM crate know nothing of JavaScript: only the bindings name
 /// wasm-bindgen, js-sys or web-sys (a TypeScript description of a result type, derived under the
 /// `tsify` feature, is not JavaScript).
@@ -355,6 +412,9 @@ fn the_binding_checks_catch_what_they_guard() {
     };
     assert_eq!(cycle(&graph(&[("a", "b"), ("b", "c"), ("a", "c")])), None);
     assert_eq!(bound("#[wasm_bindgen]\nimpl<T> Wrapper<T> {}").1, ["Wrapper"]);
+    let python =
+        "#[pyclass(module = \"m\", frozen)]\npub struct FooBar {}\n#[pymethods]\nimpl FooBar {}\nimpl Other {}\n";
+    assert_eq!(bound_by(python, &["#[pyclass", "#[pymethods"]), (vec!["FooBar".into()], vec!["FooBar".into()]));
     assert_eq!(cycle(&graph(&[("a", "b"), ("b", "c"), ("c", "b")])).unwrap(), ["b", "c", "b"]);
     assert_eq!(cycle(&graph(&[("x", "x")])).unwrap(), ["x", "x"]);
 }

@@ -7,6 +7,7 @@ import { readParams, serialize } from './scene.js';
 import { findPreset, withPreset } from './paper.js';
 import { decodeInput, encodeInput, linkableInput } from './edit/input.js';
 import { MAX_HASH, MAX_LINK_RULINGS } from './limits.js';
+import { append } from './reduce.js';
 
 /**
  * @typedef {object} LinkState
@@ -58,7 +59,7 @@ export function readLink(hash, scenes) {
   const paper = preset && preset.scene === scene.id ? preset : null;
   if (paper) q = withPreset(paper, scene, q);
   const read = readParams(scene, q);
-  notes.push(...read.notes);
+  append(notes, read.notes);
   const camera = readCamera(q.get('cam') ?? '');
   if (q.has('cam') && !camera) notes.push({ key: 'cam', note: 'note.badCamera' });
   const data = q.has('data') ? readData(q.get('data') ?? '') : null;

@@ -415,7 +415,9 @@ export class Viewer {
 
   /**
    * Draws now; `scale` renders at that many pixels per CSS pixel, `full` every layer in full
-   * detail even while the camera moves (both for figure export).
+   * detail even while the camera moves (both for figure export). A figure's frame is drawn
+   * afresh, never the target's frame resolved again: a canvas that only had a resolve since it
+   * was shown is read by drawImage as black (Chromium), which made every PNG at 1× black.
    */
   render({ scale = window.devicePixelRatio || 1, full = false } = {}) {
     const { gl } = this;
@@ -431,6 +433,7 @@ export class Viewer {
     if (now - this.lastFrameAt < 2000) this.frameGap = now - this.lastFrameAt;
     this.lastFrameAt = now;
     this.sizeCanvas(frame);
+    if (full) this.drawn = '';
     this.drawFrame(frame, moving);
     if (!this.direct) this.framebuffer.resolve();
     this.placeLabels(frame.viewProj);

@@ -1,6 +1,9 @@
 """NumPy arrays to the view's binary buffers and back (never JSON lists).
 
-Segments go as little-endian float64: six numbers per line (its point ``a``, then ``b``), as
+Your rulings and congruences are checked by the core first (``ruledlab.RuledSurface``,
+``ruledlab.LineCongruence``): what it refuses — a NaN, a ruling of zero length, a wrong shape,
+complex numbers or strings — raises RuledlabError at once, with the core's code, and never reaches
+a view. They go as little-endian float64: six numbers per line (its point ``a``, then ``b``), as
 ``<ruled-view>``'s ``data`` takes them; the scene's input comes back as one (n, 3) array of
 points per handle set (pairs: rows 2k and 2k + 1 are line k's ends).
 """
@@ -11,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from ._core import LineCongruence, RuledSurface
 from ._errors import RuledlabError
 
 F64 = np.dtype("<f8")
@@ -31,31 +35,30 @@ def _points(x: Any, name: str, ndim: int) -> np.ndarray:
     return a
 
 
-def segments(a: Any, b: Any) -> dict[str, Any]:
-    """The view's source for rulings from points ``a[i]`` to ``b[i]`` (N × 3 each)."""
-    pa, pb = _points(a, "a", 2), _points(b, "b", 2)
-    if pa.shape != pb.shape:
-        raise RuledlabError(
-            f"a and b must have the same shape, not {pa.shape} and {pb.shape}",
-            "invalid-argument",
-            {"option": "b", "shape": list(pb.shape)},
-        )
-    return {"segments": np.ascontiguousarray(np.hstack([pa, pb]), dtype=F64).reshape(-1)}
+def _as(call: str, error: RuledlabError) -> RuledlabError:
+    """The core's error as the view's function `call` raises it."""
+    message = error.message.split(": ", 1)[-1] if ": " in error.message else error.message
+    return RuledlabError(f"{call}: {message}", error.code, error.details)
 
 
-def grid(p: Any, q: Any) -> dict[str, Any]:
+def segments(a: Any, b: Any, call: str = "View.from_segments") -> dict[str, Any]:
+    """The view's source for rulings from points ``a[i]`` to ``b[i]`` (N × 3 each), checked by
+    the core (`call` names the function in its errors)."""
+    try:
+        surface = RuledSurface.from_segments(a, b)
+    except RuledlabError as e:
+        raise _as(call, e) from None
+    return {"segments": surface.segments().reshape(-1)}
+
+
+def grid(p: Any, q: Any, call: str = "View.from_grid") -> dict[str, Any]:
     """The view's source for a congruence: the line of grid point (i, j) through ``p[i, j]``
-    and ``q[i, j]`` (rows × cols × 3 each)."""
-    pp, pq = _points(p, "p", 3), _points(q, "q", 3)
-    if pp.shape != pq.shape:
-        raise RuledlabError(
-            f"p and q must have the same shape, not {pp.shape} and {pq.shape}",
-            "invalid-argument",
-            {"option": "q", "shape": list(pq.shape)},
-        )
-    rows, cols = pp.shape[:2]
-    lines = np.concatenate([pp, pq], axis=2).reshape(-1)
-    return {"segments": np.ascontiguousarray(lines, dtype=F64), "rows": int(rows), "cols": int(cols)}
+    and ``q[i, j]`` (rows × cols × 3 each), checked by the core."""
+    try:
+        congruence = LineCongruence.from_grid(p, q)
+    except RuledlabError as e:
+        raise _as(call, e) from None
+    return {"segments": congruence.segments().reshape(-1), "rows": congruence.rows, "cols": congruence.cols}
 
 
 def source_to_json(value: dict[str, Any] | None, _widget: object = None) -> dict[str, Any] | None:

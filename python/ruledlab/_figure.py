@@ -8,9 +8,7 @@ from pathlib import Path
 from typing import Any, Callable
 
 from ._errors import RuledlabError
-
-#: how long a figure or a view's outcome is waited for before TimeoutError
-TIMEOUT = 30.0
+from ._front_end import TIMEOUT, FrontEnd, no_answer
 
 
 class Figure:
@@ -18,9 +16,10 @@ class Figure:
     or let the notebook show it (the output updates when it arrives). Given a ``path``, it is
     written there when it arrives."""
 
-    def __init__(self, kind: str, path: str | Path | None = None):
+    def __init__(self, kind: str, path: str | Path | None = None, front_end: FrontEnd | None = None):
         self.kind = kind
         self.path = Path(path) if path is not None else None
+        self._front_end = front_end
         self._future: concurrent.futures.Future[Any] = concurrent.futures.Future()
         self._shown: list[Callable[[], None]] = []
 
@@ -62,12 +61,13 @@ class Figure:
         return self._future.result()
 
     async def _wait(self, timeout: float) -> str | bytes:
+        if not self._future.done() and self._front_end is not None:
+            # RuledlabError at once where no front end draws the view (a notebook run headless)
+            await self._front_end.needed(f"{self.kind.upper()} figure")
         try:
             return await asyncio.wait_for(asyncio.wrap_future(self._future), timeout)
         except asyncio.TimeoutError:
-            raise TimeoutError(
-                f"ruledlab: no {self.kind.upper()} from the view in {timeout:g} s: is it shown in the notebook?"
-            ) from None
+            raise no_answer(f"{self.kind.upper()} figure", timeout) from None
 
     def __await__(self):
         return self._wait(TIMEOUT).__await__()

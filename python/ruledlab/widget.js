@@ -13,10 +13,14 @@
 // view's traits. Figures (SVG, TikZ, PNG) and exercise checks are messages too.
 //
 // Messages, kernel → view: { kind: 'embed' } + [gzipped script], { kind: 'export', id, format,
-// options }. View → kernel: { kind: 'embed' }, { kind: 'state', state, input } (+ [doubles per
+// options }. View → kernel: { kind: 'hello' } (once per model, when a front end creates it:
+// Python learns that a front end holds the view, which a notebook run headless has not), { kind:
+// 'embed' }, { kind: 'state', state, input } (+ [doubles per
 // input set]), { kind: 'shown', rev, errors }, { kind: 'error',
 // error } (an error outside a change of Python's, e.g. from a worker), { kind: 'export', id, text
-// | error } (+ [png bytes]), { kind: 'task', type, report }.
+// | error } (+ [png bytes]), { kind: 'task', type, report }, { kind: 'still' } (+ [png bytes]: the
+// picture drawn, a second after a change settled, for the view's still in the saved notebook:
+// ruledlab/_still.py).
 
 /**
  * The part of anywidget's model this module uses (@anywidget/types' AnyModel).
@@ -37,6 +41,22 @@ const OPENING = ['scene', 'paper', 'task'];
 const KEYS = [...FLAGS, ...ATTRIBUTES, ...OPENING, 'params', '_source', 'data'];
 
 const SCRIPT = Symbol.for('ruledlab.embed');
+
+/** How long after a change the picture is sent as the view's still (ms): once the view settled. */
+const STILL_DELAY = 1000;
+
+/**
+ * Hides the views' stills (ruledlab/_still.py: the picture a saved notebook shows without a
+ * kernel) in this page, where the widgets themselves are drawn: their outputs too, so that no
+ * empty row is left.
+ */
+function hideStills() {
+  if (document.getElementById('ruledlab-stills')) return;
+  const style = document.createElement('style');
+  style.id = 'ruledlab-stills';
+  style.textContent = '.jp-OutputArea-child:has(.ruledlab-still), .ruledlab-still { display: none !important; }';
+  document.head.append(style);
+}
 
 /**
  * Defines <ruled-view> in this page (once; every view waits for it): the kernel sends the
@@ -111,6 +131,7 @@ async function connected(view) {
 
 /** @param {{model: Model, el: HTMLElement}} context */
 async function render({ model, el }) {
+  hideStills();
   await defineElement(model);
   const view = /** @type {RuledView} */ (document.createElement('ruled-view'));
   // keys inside the view are the view's (arrows turn it, a slider moves, an answer is typed), not
@@ -185,6 +206,21 @@ async function render({ model, el }) {
   const shown = (rev, errors) => {
     sync(true);
     model.send({ kind: 'shown', rev, errors });
+    still();
+  };
+  /** @type {ReturnType<typeof setTimeout> | undefined} */
+  let stillTimer;
+  /** Sends the picture as the view's still once the view has settled (a view that cannot draw keeps the last). */
+  const still = () => {
+    clearTimeout(stillTimer);
+    stillTimer = setTimeout(async () => {
+      try {
+        await queue;
+        if (!view.view?.scene) return;
+        const blob = await view.exportPNG({ scale: 1 });
+        model.send({ kind: 'still' }, undefined, [await blob.arrayBuffer()]);
+      } catch {}
+    }, STILL_DELAY);
   };
 
   // Python's changes, one after the other
@@ -254,11 +290,16 @@ async function render({ model, el }) {
     }
     sync(!inputSent);
     inputSent = true;
+    still();
   });
-  view.addEventListener('change', () => sync(true));
+  view.addEventListener('change', () => {
+    sync(true);
+    still();
+  });
   view.addEventListener('camera-change', (e) => {
     applied.camera = e.detail.camera;
     model.send({ kind: 'state', state: { camera: e.detail.camera }, input: null });
+    still();
   });
   view.addEventListener('error', (e) => settling || model.send({ kind: 'error', error: e.detail }));
   for (const type of /** @type {const} */ (['task-check', 'task-solved']))
@@ -294,10 +335,21 @@ async function render({ model, el }) {
   model.on('msg:custom', onMessage);
 
   return () => {
+    clearTimeout(stillTimer);
     model.off('change', onChange);
     model.off('msg:custom', onMessage);
     view.remove();
   };
 }
 
-export default { render };
+/**
+ * A front end made the model: say so, before anything is drawn (Python's wait() and figures need
+ * a front end; without one, in a notebook run headless, they do not wait for it).
+ * @param {{model: Model}} context
+ */
+function initialize({ model }) {
+  hideStills();
+  model.send({ kind: 'hello' });
+}
+
+export default { initialize, render };

@@ -10,8 +10,6 @@ from __future__ import annotations
 import asyncio
 import gzip
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -20,6 +18,7 @@ from ipywidgets.widgets.widget import _remove_buffers
 
 import ruledlab
 from ruledlab import RuledlabError, View
+from ruledlab import _front_end as front_end
 from ruledlab._script import script_path
 
 REPO = Path(__file__).resolve().parents[2]
@@ -45,6 +44,20 @@ class Wire:
 def answer(view: View, content: dict, buffers: list | None = None) -> None:
     """A message of the view's front end to the kernel."""
     view._message(view, content, buffers or [])
+
+
+def shown(view: View) -> View:
+    """The view displayed (its output published) and held by a front end (which said hello)."""
+    view._repr_mimebundle_()
+    answer(view, {"kind": "hello"})
+    return view
+
+
+@pytest.fixture(autouse=True)
+def headless(monkeypatch):
+    """Each test starts in a kernel no front end has spoken to, with a short grace period."""
+    monkeypatch.setattr(front_end, "_any_front_end", False)
+    monkeypatch.setattr(front_end, "GRACE", 0.2)
 
 
 def test_segments_go_as_one_binary_buffer_of_doubles():
@@ -146,28 +159,43 @@ def test_setting_data_moves_the_handles_and_is_checked():
         view.data = {"rulings": np.zeros((4, 2))}
 
 
-def test_wait_raises_the_cores_error_and_the_view_works_on():
-    a, _ = hyperboloid(6)
+def test_what_the_core_refuses_is_refused_at_once_without_a_view():
+    a, b = hyperboloid(6)
+    with pytest.raises(RuledlabError) as e:
+        View.from_segments(a, a)
+    assert e.value.code == "degenerate" and e.value.details["index"] == 0
+    assert str(e.value).startswith("View.from_segments: ruling 0 has zero length")
+    b[3, 2] = np.nan
+    view = View.from_segments(*hyperboloid(6))
+    with pytest.raises(RuledlabError) as e:
+        view.set_segments(a, b)
+    assert (e.value.code, e.value.details["index"], e.value.details["at"]) == ("not-finite", 3, [3, 2])
+    assert "b[3, 2] (ruling 3, b.z) is NaN" in str(e.value) and str(e.value).startswith("View.set_segments:")
+    # the view keeps what it showed
+    assert np.array_equal(view._source["segments"].reshape(6, 6), np.hstack(hyperboloid(6)))
 
+
+def test_wait_raises_the_views_error_and_the_view_works_on():
     async def run():
-        view = View.from_segments(a, a)
+        view = shown(View(scene="isometry"))
         said = []
         view.on_error(said.append)
+        view.params = {"t": "half"}
         rev = view._rev
         error = {
-            "message": "RuledSurface.fromSegments: ruling 0 has zero length",
-            "code": "degenerate",
-            "details": {"index": 0, "reason": "zeroLength"},
+            "message": "ruled-view: parameter t must be a number, got \"half\"",
+            "code": "invalid-argument",
+            "details": {"param": "t"},
         }
         asyncio.get_running_loop().call_later(0.05, answer, view, {"kind": "shown", "rev": rev, "errors": [error]})
         with pytest.raises(RuledlabError) as e:
             await view.wait(timeout=5)
-        assert e.value.code == "degenerate"
-        assert str(e.value) == error["message"] and e.value.details["index"] == 0
-        assert view.error is not None and view.error.code == "degenerate"
-        assert [s.code for s in said] == ["degenerate"]
-        # good rulings: the same view shows them, the error is gone
-        view.set_segments(*hyperboloid(6))
+        assert e.value.code == "invalid-argument" and e.value.details["param"] == "t"
+        assert str(e.value) == error["message"]
+        assert view.error is not None and view.error.code == "invalid-argument"
+        assert [s.code for s in said] == ["invalid-argument"]
+        # a good value: the same view shows it, the error is gone
+        view.params = {"t": 0.5}
         assert view._rev == rev + 1
         loop = asyncio.get_running_loop()
         loop.call_later(0.05, answer, view, {"kind": "shown", "rev": rev + 1, "errors": []})
@@ -180,17 +208,48 @@ def test_wait_raises_the_cores_error_and_the_view_works_on():
     asyncio.run(run())
 
 
-def test_wait_says_when_no_view_answers():
+def test_without_a_front_end_wait_returns_at_once_and_figures_say_why_not():
+    """A notebook run headless: nothing draws the view; computations never needed it."""
+
     async def run():
         view = View(scene="striction")
-        with pytest.raises(TimeoutError, match="is it displayed"):
+        view._repr_mimebundle_()
+        view.params = {"n": 30}
+        start = asyncio.get_running_loop().time()
+        assert await view.wait(timeout=30) is view
+        assert asyncio.get_running_loop().time() - start < 1
+        assert not await view.has_front_end()
+        with pytest.raises(RuledlabError) as e:
+            await view.svg()
+        assert e.value.code == "no-view" and "headless" in str(e.value)
+
+    asyncio.run(run())
+
+
+def test_with_a_front_end_wait_needs_the_view_displayed_and_says_when_none_answers():
+    async def run():
+        view = View(scene="striction")
+        answer(view, {"kind": "hello"})
+        assert await view.has_front_end()
+        view.params = {"n": 30}
+        with pytest.raises(RuledlabError) as e:
             await view.wait(timeout=0.1)
+        assert e.value.code == "not-displayed"
+        view._repr_mimebundle_()
+        with pytest.raises(RuledlabError) as e:
+            await view.wait(timeout=0.1)
+        assert e.value.code == "no-answer" and e.value.details["limit"] == 0.1
+        # once a front end has spoken, another view waits for its hello longer than the grace
+        later = View(scene="striction")
+        loop = asyncio.get_running_loop()
+        loop.call_later(0.4, answer, later, {"kind": "hello"})
+        assert await later.has_front_end()
 
     asyncio.run(run())
 
 
 def test_figures_arrive_as_text_bytes_and_files(tmp_path):
-    view = View(scene="striction")
+    view = shown(View(scene="striction"))
     wire = Wire(view)
 
     async def run():
@@ -257,24 +316,6 @@ def test_the_version_is_the_npm_packages():
     assert f'version = "{npm["version"]}"' in (REPO / "python" / "pyproject.toml").read_text()
 
 
-def test_pip_installs_the_package_from_the_repository(tmp_path):
-    """`pip install ./python` (here into a folder of its own): the script comes along from dist/."""
-    target = tmp_path / "site"
-    subprocess.run(
-        [sys.executable, "-m", "pip", "install", "-q", "--disable-pip-version-check", "--no-deps",
-         "--no-build-isolation", "--target", str(target), str(REPO / "python")],
-        check=True,
-    )  # fmt: skip
-    installed = target / "ruledlab" / "static" / "ruledlab-embed.js"
-    assert installed.read_bytes() == (REPO / "dist" / "ruledlab-embed.js").read_bytes()
-    probe = "import ruledlab, ruledlab._script as s; print(ruledlab.__file__); print(s.script_path())"
-    out = subprocess.run(
-        [sys.executable, "-c", probe], cwd=tmp_path, env={"PYTHONPATH": str(target)}, capture_output=True, text=True
-    )
-    assert out.returncode == 0, out.stderr
-    assert out.stdout.splitlines() == [str(target / "ruledlab" / "__init__.py"), str(installed)]
-
-
 def python_snippets() -> list[tuple[str, str]]:
     """The Python of the book's chapter and the code cells of the example notebook."""
     import re
@@ -303,7 +344,7 @@ def test_the_books_and_the_notebooks_python_reads_and_names_what_exists():
 
 
 def test_the_layers_the_view_draws_arrive_as_arrays():
-    view = View(scene="striction")
+    view = shown(View(scene="striction"))
     wire = Wire(view)
 
     async def run():
@@ -323,3 +364,71 @@ def test_the_layers_the_view_draws_arrive_as_arrays():
         assert np.array_equal(got[0]["points"], striction.astype(float))
 
     asyncio.run(run())
+
+
+class Handle:
+    """An IPython display handle that records its updates."""
+
+    def __init__(self) -> None:
+        self.updates: list[dict] = []
+
+    def update(self, obj: dict, raw: bool = False) -> None:
+        assert raw
+        self.updates.append(obj)
+
+
+def test_a_view_says_what_it_shows_as_text_and_leaves_a_still_for_notebooks_without_a_kernel(monkeypatch):
+    """Outside a widget front end (a plain IPython, print, a notebook saved and opened without a
+    kernel, nbconvert's HTML) a view is a sentence, then the picture its front end drew last."""
+    import base64
+
+    import IPython.display
+
+    a, b = hyperboloid(8)
+    view = View.from_segments(a, b, params={"strip": False})
+    assert repr(view) == "<ruledlab view of 8 rulings (strip=False)>"
+    assert str(view) == repr(view)
+    s, t = np.meshgrid(np.arange(3.0), np.arange(4.0), indexing="ij")
+    p = np.stack([s, t, np.zeros_like(s)], axis=2)
+    assert repr(View.from_grid(p, p + [0.0, 0.0, 1.0])) == "<ruledlab view of a congruence of 3 × 4 lines>"
+    assert repr(View(task="striction-accuracy")) == "<ruledlab view of the exercise striction-accuracy>"
+    assert repr(View(scene="isometry", params={"t": 0.5})) == "<ruledlab view of the scene isometry (t=0.5)>"
+    data = view._repr_mimebundle_()
+    data = data[0] if isinstance(data, tuple) else data
+    assert data["text/plain"] == "ruledlab view of 8 rulings (strip=False)"
+    assert data["application/vnd.jupyter.widget-view+json"]["model_id"] == view.model_id
+
+    shown: list[tuple[dict, dict]] = []
+    handles: list[Handle] = []
+
+    def display(obj, metadata=None, raw=False, display_id=None):
+        assert raw
+        shown.append((obj, {"display_id": display_id}))
+        if display_id:
+            handles.append(Handle())
+            return handles[-1]
+        return None
+
+    monkeypatch.setattr(IPython.display, "display", display)
+    view._ipython_display_()
+    assert len(shown) == 2 and "application/vnd.jupyter.widget-view+json" in shown[0][0]
+    still, how = shown[1]
+    assert how["display_id"] is True
+    assert 'class="ruledlab-still"' in still["text/html"] and "ruledlab view of 8 rulings" in still["text/html"]
+    assert still["text/plain"] == "ruledlab view of 8 rulings (strip=False)"
+    # the front end drew it: its picture goes into the still (escaped text as its alternative)
+    png = b"\x89PNG\r\n\x1a\n" + bytes(range(256))
+    answer(view, {"kind": "still"}, [memoryview(png)])
+    (update,) = handles[0].updates
+    assert f'src="data:image/png;base64,{base64.b64encode(png).decode()}"' in update["text/html"]
+    assert 'alt="ruledlab view of 8 rulings (strip=False)"' in update["text/html"]
+    # a view displayed again starts with the picture it has
+    view._ipython_display_()
+    assert base64.b64encode(png).decode() in shown[3][0]["text/html"]
+    answer(view, {"kind": "still"}, [png[:20]])
+    assert len(handles[0].updates) == 2 and len(handles[1].updates) == 1
+    # text that HTML would read is escaped
+    odd = View(scene="<b>x</b>")
+    monkeypatch.setattr(IPython.display, "display", display)
+    odd._ipython_display_()
+    assert "<b>x</b>" not in shown[-1][0]["text/html"] and "&lt;b&gt;" in shown[-1][0]["text/html"]

@@ -235,6 +235,12 @@ pub fn check_count(n: usize) -> Result<()> {
 /// A polygon from flat coordinates, 3 per point: at least 2 and at most [`MAX_RULINGS`]
 /// points, every coordinate finite and at most [`crate::tolerance::MAX_COORD`] in magnitude.
 pub fn points_from_flat(coords: &[f64]) -> Result<Vec<DVec3>> {
+    checked_points(coords).map(<[DVec3]>::to_vec)
+}
+
+/// The points of flat coordinates, checked as [`points_from_flat`] checks them, as a view of
+/// the same memory (no copy: glam lays a `DVec3` out as three consecutive `f64`).
+pub fn checked_points(coords: &[f64]) -> Result<&[DVec3]> {
     if coords.len() % 3 != 0 {
         return Err(Error::BadLength { what: "point coordinates", len: coords.len(), multiple: 3 });
     }
@@ -246,7 +252,8 @@ pub fn points_from_flat(coords: &[f64]) -> Result<Vec<DVec3>> {
         return Err(Error::TooMany { what: "points", got: n, max: MAX_RULINGS });
     }
     check_coordinates(coords, 3)?;
-    Ok(coords.chunks_exact(3).map(DVec3::from_slice).collect())
+    // (a slice of f64 is aligned for DVec3, whose alignment is f64's, and 3n long)
+    Ok(bytemuck::cast_slice(coords))
 }
 
 fn shift_index(e: Error, offset: usize) -> Error {

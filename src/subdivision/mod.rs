@@ -164,8 +164,12 @@ pub fn subdivide_polygon(points: &[DVec3], scheme: Scheme, closed: bool, steps: 
     }
     scheme.output_len_after(points.len(), closed, steps)?;
     let bezier_degree = points.len() - 1;
-    let mut p = points.to_vec();
-    for _ in 0..steps {
+    // the first step reads the caller's points where they lie (no copy of the input)
+    let mut p = match steps {
+        0 => return Ok(points.to_vec()),
+        _ => polygon_step(points, scheme, closed, bezier_degree),
+    };
+    for _ in 1..steps {
         p = polygon_step(&p, scheme, closed, bezier_degree);
     }
     Ok(p)

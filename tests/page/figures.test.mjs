@@ -7,7 +7,9 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { pageSession } from './browser.mjs';
-import { decodePng } from './png.mjs';
+import { countDifferent, decodePng } from './png.mjs';
+
+const BACKGROUND = [251, 250, 247];
 
 const session = pageSession();
 const EXPECTED = new URL('./expected/curves-fig8.tikz', import.meta.url);
@@ -98,7 +100,9 @@ test('TikZ of a known view equals the checked-in file; labels come out as math',
 
 test('PNG at 2× and 4× of the view, and the page’s export buttons download figures', async () => {
   const { page, problems } = await element('striction', '', [-0.9, 0.45, 15, 0, 0, 0]);
-  for (const scale of [2, 4]) {
+  // 1× too: a figure's frame is drawn afresh (at the view's own size the frame the canvas showed
+  // was resolved again, and Chromium's drawImage read the canvas as black)
+  for (const scale of [1, 2, 4]) {
     const bytes = await page.evaluate(
       async (s) => [
         ...new Uint8Array(await (await document.getElementById('figure').exportPNG({ scale: s })).arrayBuffer()),
@@ -107,6 +111,14 @@ test('PNG at 2× and 4× of the view, and the page’s export buttons download f
     );
     const image = decodePng(Buffer.from(bytes));
     assert.deepEqual([image.width, image.height], [640 * scale, 420 * scale]);
+    assert.ok(
+      countDifferent(image, BACKGROUND) < 0.5 * image.width * image.height,
+      `the ${scale}× PNG is the view, on its background`,
+    );
+    assert.ok(
+      countDifferent(image, BACKGROUND) > 0.005 * image.width * image.height,
+      `the ${scale}× PNG shows the scene`,
+    );
   }
   await page.close();
   const { page: p, problems: figureProblems } = await session.open('#scene=convergence');

@@ -8,6 +8,7 @@ import { parseRich } from '../ui/richtext.js';
 import { superscript } from '../i18n/translate.js';
 import { svgMaker, svgFigure } from '../svg-dom.js';
 import { PLOT_MARKERS } from '../limits.js';
+import { least, greatest } from '../reduce.js';
 
 /** The least size of any text in a figure, subscripts included, in user units (= CSS px at 1:1). */
 export const SMALLEST_TEXT = 12.5;
@@ -52,12 +53,12 @@ export function logLogPlot(
   const ys = series.flatMap((s) => s.y.filter(finite));
   const xs = x.filter(linearX ? Number.isFinite : finite);
   if (!ys.length || !xs.length) return svg;
-  const x0 = linearX ? Math.min(...xs) : Math.floor(Math.log10(Math.min(...xs))),
-    x1 = linearX ? Math.max(...xs) : Math.ceil(Math.log10(Math.max(...xs)));
+  const x0 = linearX ? least(xs) : Math.floor(Math.log10(least(xs))),
+    x1 = linearX ? greatest(xs) : Math.ceil(Math.log10(greatest(xs)));
   /** Where x lies along the axis, 0 … 1 of [x0, x1] (decades unless linearX). */
   const along = (/** @type {number} */ v) => ((linearX ? v : Math.log10(v)) - x0) / Math.max(x1 - x0, 1);
-  const y0 = Math.floor(Math.log10(Math.min(...ys))),
-    y1 = Math.ceil(Math.log10(Math.max(...ys)));
+  const y0 = Math.floor(Math.log10(least(ys))),
+    y1 = Math.ceil(Math.log10(greatest(ys)));
   const px = (/** @type {number} */ v) => pad.l + along(v) * (width - pad.l - pad.r);
   const py = (/** @type {number} */ v) =>
     height - pad.b - ((Math.log10(v) - y0) / Math.max(y1 - y0, 1)) * (height - pad.t - pad.b);
@@ -90,7 +91,7 @@ export function logLogPlot(
     if (anchor < 0 || linearX) return;
     const xa = x[anchor],
       ya = series[0].y[anchor] * 2;
-    const xb = Math.min(...xs),
+    const xb = least(xs),
       yb = Math.max(ya * (xb / xa) ** p, 10 ** y0);
     svg.append(
       el('line', {
@@ -267,8 +268,8 @@ function drawPlot(el, g, { series, levels = [], xLabel, yLabel, width, height, c
   const ys = series.flatMap((s) => Array.from(s.y)).filter(Number.isFinite);
   if (!xs.length || !ys.length) return;
   const levelValues = levels.map((l) => l.value).filter(Number.isFinite);
-  const [x0, x1] = [Math.min(...xs), Math.max(...xs, Math.min(...xs) + 1)];
-  const yTicks = niceTicks(Math.min(0, ...ys, ...levelValues), Math.max(0, ...ys, ...levelValues));
+  const [x0, x1] = [least(xs), greatest(xs, least(xs) + 1)];
+  const yTicks = niceTicks(least(levelValues, least(ys, 0)), greatest(levelValues, greatest(ys, 0)));
   const [y0, y1] = [yTicks.values[0], yTicks.values[yTicks.values.length - 1]];
   const px = (/** @type {number} */ v) => pad.l + ((v - x0) / (x1 - x0)) * (width - pad.l - pad.r);
   const py = (/** @type {number} */ v) => height - pad.b - ((v - y0) / (y1 - y0)) * (height - pad.t - pad.b);

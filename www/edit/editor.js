@@ -16,6 +16,7 @@ import { Rules } from './rules.js';
 import { Snapper } from './snap.js';
 import { LiveValues } from './values.js';
 import { EDIT_BOX } from '../limits.js';
+import { greatest } from '../reduce.js';
 
 /**
  * One handle: its set, its index in the set, and where it is.
@@ -181,7 +182,12 @@ export class Editor {
     this.picked = false;
     const box = editable?.sets.length ? boxOf(editable.sets) : null;
     this.box = box ? editBox(box, EDIT_BOX) : null;
-    this.size = box ? Math.max(...box.max.map((b, k) => b - box.min[k]), 1e-6) : 1;
+    this.size = box
+      ? greatest(
+          box.max.map((b, k) => b - box.min[k]),
+          1e-6,
+        )
+      : 1;
     this.show(editable);
     const lifted = this.rules.take(this.sets, rules);
     this.hooks.changed();

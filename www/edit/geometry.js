@@ -3,6 +3,7 @@
 // stay in. This is the camera's geometry (the page's), not the paper's: where a drag puts a
 // handle — on a plane, a line, snapped — the core decides (edit/snap.js, snapPoint).
 import { add, cross, normalize, scale, sub } from '../math.js';
+import { greatest } from '../reduce.js';
 
 /** @typedef {[number, number, number]} Vec3 */
 /** @typedef {{origin: number[], dir: number[]}} Ray */
@@ -80,7 +81,10 @@ export function pointerRay(camera, x, y, w, h) {
  */
 export function editBox({ min, max }, factor) {
   const centre = min.map((a, k) => (a + max[k]) / 2);
-  const half = Math.max(...min.map((a, k) => (max[k] - a) / 2), 1e-6);
+  const half = greatest(
+    min.map((a, k) => (max[k] - a) / 2),
+    1e-6,
+  );
   const reach = factor * half;
   return { min: centre.map((c) => c - reach), max: centre.map((c) => c + reach) };
 }

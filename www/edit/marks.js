@@ -7,6 +7,7 @@
 import { toScreen } from './geometry.js';
 import { appendRich, plainRich } from '../ui/richtext.js';
 import { FINE_DRAG } from '../limits.js';
+import { append } from '../reduce.js';
 
 /** Least time between two announcements of a moving handle (ms). */
 const SAY_EVERY = 1000;
@@ -136,7 +137,7 @@ export class HandleMarks {
       }
     }
     if (values.childElementCount) rows.push(values);
-    rows.push(...goals);
+    append(rows, goals);
     this.tip.replaceChildren(...rows);
   }
 

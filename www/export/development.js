@@ -1,6 +1,7 @@
 // The development of a ruled strip (Section 2, Fig. 2) as a standalone SVG file, built with
 // the DOM and serialised, never from strings.
 import { SVG, svgMaker } from '../svg-dom.js';
+import { least, greatest } from '../reduce.js';
 
 /**
  * A development (x, y of a'_i then b'_i per ruling), the image of the striction polygon and the
@@ -20,7 +21,7 @@ export function developmentSvg(points, striction, envelope, title) {
     xs.push(points[i]);
     ys.push(points[i + 1]);
   }
-  const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+  const [x0, x1, y0, y1] = [least(xs), greatest(xs), least(ys), greatest(ys)];
   const s = 560 / Math.max(x1 - x0, y1 - y0, 1e-9);
   const X = (/** @type {number} */ x) => ((x - x0) * s + 20).toFixed(2);
   const Y = (/** @type {number} */ y) => ((y1 - y) * s + 20).toFixed(2);

@@ -2,6 +2,7 @@
 import { parseRich } from '../ui/richtext.js';
 import { STYLES } from '../theme.js';
 import { legendOf } from '../scene.js';
+import { greatest } from '../reduce.js';
 
 /**
  * @param {import('../stage.js').Stage} stage
@@ -30,7 +31,11 @@ export async function png(stage, { scale = 1, legend = true } = {}) {
   if (legend && stage.scene) {
     const entries = legendOf(stage.scene, stage.params);
     ctx.font = '12px system-ui, sans-serif';
-    const width = Math.max(0, ...entries.map((e) => ctx.measureText(stage.i18n.t(e.label)).width)) + 56;
+    const width =
+      greatest(
+        entries.map((e) => ctx.measureText(stage.i18n.t(e.label)).width),
+        0,
+      ) + 56;
     ctx.fillStyle = 'rgba(255,255,255,0.88)';
     ctx.fillRect(10, 8, width, 8 + 18 * entries.length);
     entries.forEach((entry, k) => {

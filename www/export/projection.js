@@ -9,6 +9,7 @@ import { STYLES, rgb, PALETTE } from '../theme.js';
 import { FIGURE_TRIANGLES, HATCH_SPACING, PRINT_WIDTH } from '../limits.js';
 import { parseRich } from '../ui/richtext.js';
 import { legendOf } from '../scene.js';
+import { least, greatest, append } from '../reduce.js';
 
 /**
  * @typedef {object} Facet   a triangle of a surface, in CSS pixels (y down)
@@ -65,7 +66,7 @@ export function figureOf(stage) {
       // a mesh of more triangles than a figure needs is drawn by its lighter stand-in
       const mesh = (layer.indices?.length ?? 0) / 3 > FIGURE_TRIANGLES && layer.moving ? layer.moving : layer;
       if (!mesh.indices || style.kind !== 'area') continue;
-      facets.push(...facetsOf(mesh, layer.style, m, width, height, eye));
+      append(facets, facetsOf(mesh, layer.style, m, width, height, eye));
       if (style.occludes !== false)
         meshes.push({ positions: mesh.positions, indices: mesh.indices, transform: mesh.transform });
     } else {
@@ -284,7 +285,7 @@ export function hatchLines(points, hatch, spacing = HATCH_SPACING) {
     // lines n·x = k·spacing, n the normal of the direction (cos, −sin) (y down: "ne" rises)
     const n = [Math.sin(angle), Math.cos(angle)];
     const d = [0, 2, 4].map((k) => n[0] * points[k] + n[1] * points[k + 1]);
-    for (let k = Math.ceil(Math.min(...d) / spacing); k * spacing <= Math.max(...d); k++) {
+    for (let k = Math.ceil(least(d) / spacing); k * spacing <= greatest(d); k++) {
       const level = k * spacing;
       const cut = [];
       for (let e = 0; e < 3; e++) {
@@ -460,7 +461,7 @@ export function printFrame(fig, { width = PRINT_WIDTH.default, bw = false, label
 export function dashFor(dash, length) {
   const period = dash.reduce((a, b) => a + b, 0);
   if (length >= 2 * period) return dash;
-  const f = Math.min(1, Math.max(length / (2 * period), LEAST_DASH / Math.min(...dash)));
+  const f = Math.min(1, Math.max(length / (2 * period), LEAST_DASH / least(dash)));
   return dash.map((d) => d * f);
 }
 

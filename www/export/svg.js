@@ -25,6 +25,7 @@ import {
 import { parseRich, plainRich } from '../ui/richtext.js';
 import { SVG, svgMaker } from '../svg-dom.js';
 import { HATCH_SPACING, PRINT_WIDTH } from '../limits.js';
+import { greatest } from '../reduce.js';
 
 /**
  * @typedef {object} FigureOptions
@@ -77,10 +78,12 @@ export function exportSvg(
   }));
   const lineCount = entries.reduce((sum, e) => sum + e.lines.length, 0);
   const below = entries.length ? u * (10 + 18 * entries.length + 15 * (lineCount - entries.length)) : 0;
-  const wide = Math.max(
+  const wide = greatest(
+    [
+      ...entries.flatMap((e) => e.lines.map((line) => u * 38 + textWidth(line, size, TEXT_FONT) + 2 * nat)),
+      title ? textWidth(plainTitle, titleSize, TEXT_FONT, 'bold') + 2 * nat : 0,
+    ],
     frame.w,
-    ...entries.flatMap((e) => e.lines.map((line) => u * 38 + textWidth(line, size, TEXT_FONT) + 2 * nat)),
-    title ? textWidth(plainTitle, titleSize, TEXT_FONT, 'bold') + 2 * nat : 0,
   );
   const [x0, y0, w, h] = [frame.x, frame.y - top, wide, frame.h + top + below];
   const el = svgMaker(doc);

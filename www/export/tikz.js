@@ -18,6 +18,7 @@ import {
 } from './projection.js';
 import { HATCH_SPACING, PRINT_WIDTH } from '../limits.js';
 import { parseRich } from '../ui/richtext.js';
+import { append } from '../reduce.js';
 
 /** Letters and signs that are symbols: written in math mode. */
 const MATH = {
@@ -275,6 +276,7 @@ export function exportTikz(
     if (!colours.has(key)) colours.set(key, `rl${colours.size}`);
     return /** @type {string} */ (colours.get(key));
   };
+  /** @type {string[]} */
   const body = [];
 
   // surfaces: thousands of facets, so in PGF's quick path commands (three times faster to
@@ -291,7 +293,7 @@ export function exportTikz(
   let group = { head: '', paths: [] };
   const flush = () => {
     if (group.paths.length)
-      body.push(`\\begin{pgfscope}${group.head}`, ...group.paths, '\\pgfusepathqfill\\end{pgfscope}');
+      append(body, [`\\begin{pgfscope}${group.head}`, ...group.paths, '\\pgfusepathqfill\\end{pgfscope}']);
     group = { head: '', paths: [] };
   };
   for (const facet of fig.facets) {
@@ -402,7 +404,7 @@ export function exportTikz(
         }
       }
       // (the sample beside the entry's first line)
-      body.push(`\\begin{scope}[shift={([yshift=-5.2pt]${name}.north west)}]`, ...sample, '\\end{scope}');
+      append(body, [`\\begin{scope}[shift={([yshift=-5.2pt]${name}.north west)}]`, ...sample, '\\end{scope}']);
     });
   }
   const defs = [...colours].map(([hexColour, name]) => `\\definecolor{${name}}{HTML}{${hexColour}}`);

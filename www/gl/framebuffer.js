@@ -2,6 +2,7 @@
 // is single-sampled: the context is made with antialias off). The same work the browser does for
 // an antialiased canvas, in the page's hands: a frame can be drawn here, waited for off the main
 // thread (gl/fence.js), and put on the canvas later by the resolve alone (viewer.js's first frame).
+import { least } from '../reduce.js';
 
 /** Pixels from which a framebuffer made is checked (2²² ≈ 2048 × 2048). */
 const LARGE = 1 << 22;
@@ -28,9 +29,9 @@ export class Framebuffer {
     if (!this.buffers || width !== this.width || height !== this.height) {
       this.dispose();
       const size = `${width} ${height}`;
-      const largest = Math.min(
+      const largest = least(
+        gl.getParameter(gl.MAX_VIEWPORT_DIMS) ?? [0],
         gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) || 0,
-        ...(gl.getParameter(gl.MAX_VIEWPORT_DIMS) ?? [0]),
       );
       if (this.refused === size || width > largest || height > largest || !this.make(width, height)) {
         this.refused = size;

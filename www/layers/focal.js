@@ -2,6 +2,7 @@
 // parabolic), its focal sheets where real, the torsal strokes, and the readouts of kinds,
 // normality and the linear complex. Drawn by the focal scene, "Your congruence" and "Your data".
 import { DATA_COMPLEX_TOLERANCE, ROUNDING } from '../limits.js';
+import { greatest } from '../reduce.js';
 
 /**
  * The focal figure of a grid of lines: shared with "Your congruence".
@@ -44,7 +45,7 @@ export function focalLayers(own, grid, p, { t }) {
   }
   if (p.torsal) layers.push({ kind: 'segments', style: 'torsal', positions: geometry.strokesF32() });
   const complex = grid.linearComplex({ tolerance: DATA_COMPLEX_TOLERANCE });
-  const normality = real.length ? Math.max(...real) : NaN;
+  const normality = real.length ? greatest(real) : NaN;
   /** @type {import('../scene.js').Readout[]} */
   const readouts = [
     { label: 'focal.readout.hyperbolic', value: `${count[1]} / ${n}` },

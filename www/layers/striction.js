@@ -7,6 +7,7 @@ import { stripIndices } from '../../pkg/ruledlab.js';
 import { bounds, f32 } from '../scene.js';
 import { DATA_COMPLEX_TOLERANCE, ROUNDING } from '../limits.js';
 import { footpointTargets, parallelProblems, rulingSet, rulingValues, strictionTargets } from '../edit/sets.js';
+import { least } from '../reduce.js';
 
 /**
  * The striction figure of a discrete ruled surface: a sample of an analytic surface with
@@ -103,8 +104,8 @@ export function strictionLayers(surface, analytic, ranges, p, ctx, name, orders 
   // the smallest |δ| of a pair of rulings: 0 where two rulings meet (a torsal pair)
   const deltas = Array.from(inv.distribution, Math.abs).filter(Number.isFinite);
   const surfaceName = t(`surface.${name}`);
-  const least = deltas.length ? Math.min(...deltas) : Number.NaN;
-  const keyValues = { mid: midRuling, mean: middle, least };
+  const smallest = deltas.length ? least(deltas) : Number.NaN;
+  const keyValues = { mid: midRuling, mean: middle, least: smallest };
   return {
     bounds: bounds(segments),
     camera: { yaw: -0.9, pitch: 0.45 },
@@ -138,7 +139,7 @@ export function strictionLayers(surface, analytic, ranges, p, ctx, name, orders 
       ...measured,
     ],
     claims,
-    measures: { 'striction.minAbsDelta': least },
+    measures: { 'striction.minAbsDelta': smallest },
     problems: parallelProblems(inv.parallel, n, t),
     description: errors
       ? t('striction.describe', {

@@ -7,6 +7,7 @@ import { LineCongruence, RuledSurface, stripIndices, gridIndices } from '../../p
 import { focalLayers } from '../layers/focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { lineSet, parallelProblems, rulingSet, rulingValues, strictionTargets } from '../edit/sets.js';
+import { least, append } from '../reduce.js';
 
 /**
  * What the scene shows before anything is imported: five rulings of a small twisted strip.
@@ -66,8 +67,11 @@ export const scene = defineScene({
         if (p.focal) {
           // beyond the paper: the focal geometry of your grid of lines (scene "Focal surfaces")
           const focal = focalLayers(own, c, { sheets: true, torsal: true }, ctx);
-          layers.push(...focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'));
-          readouts.push(...focal.readouts);
+          append(
+            layers,
+            focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'),
+          );
+          append(readouts, focal.readouts);
           Object.assign(measures, focal.measures);
           description = `${description} ${focal.sentence}`;
         }
@@ -106,7 +110,7 @@ export const scene = defineScene({
         description: t('data.describe', {
           n: s.length,
           parallel,
-          least: Math.min(...Array.from(inv.distribution, Math.abs).filter(Number.isFinite)),
+          least: least(Array.from(inv.distribution, Math.abs).filter(Number.isFinite)),
         }),
         problems: parallelProblems(inv.parallel, s.length, t),
         ...(p.focal ? { note: t('data.note.focalRulings') } : {}),

@@ -5,6 +5,7 @@ import { defineScene, scoped } from '../scene.js';
 import { congruenceLayers, givenGrid, SCHEME_PARAMS, LEGEND } from '../layers/congruence.js';
 import { focalLayers } from '../layers/focal.js';
 import { CONGRUENCE_PRESETS, formulaParameter, congruenceFields } from '../catalogue.js';
+import { append } from '../reduce.js';
 
 const START = congruenceFields('example5');
 const formula = (/** @type {string} */ key) => ({
@@ -95,8 +96,11 @@ export const scene = defineScene({
       if (p.focal) {
         // beyond the paper: the focal sheets and torsal directions of the given grid (scene "Focal surfaces")
         const focal = focalLayers(own, own(analytic.grid()), { sheets: true, torsal: true }, ctx);
-        built.layers.push(...focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'));
-        built.readouts?.push(...focal.readouts);
+        append(
+          built.layers,
+          focal.layers.filter((l) => l.kind === 'mesh' || l.style === 'torsal'),
+        );
+        if (built.readouts) append(built.readouts, focal.readouts);
         built.measures = { ...built.measures, ...focal.measures };
         built.description = `${built.description} ${focal.sentence}`;
       }

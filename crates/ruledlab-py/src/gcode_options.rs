@@ -1,0 +1,265 @@
+//! The options of a G-code program as Python passes them (keyword arguments of
+//! `ToolPath.export("gcode", …)` and `ToolPath.post(…)`), read into `ruledlab_cam::PostOptions`,
+//! as `crates/ruledlab-cam-wasm/src/gcode_options.rs` reads JavaScript's `GcodeOptions` (the
+//! book's "G-code and its dialects"): the same names in snake_case, every one optional. A machine
+//! is a preset's name or its JSON description as a dict (keys as the book writes them:
+//! `partZero`), every key at every depth checked.
+
+use crate::args::{self, describe};
+use crate::arrays;
+use crate::error::fail_option;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+use ruledlab_cam::{Coolant, Dialect, Holder, Machine, Mode, Numbering, PostOptions, SpindleDirection, Units};
+
+/// The keyword arguments of a program, as given (None: left out).
+#[derive(Default)]
+pub struct PostArgs<'a, 'py> {
+    /// "linuxcnc" (default), "heidenhain" or "sinumerik".
+    pub dialect: Option<&'a Bound<'py, PyAny>>,
+    /// "machine" (default) or "tcp".
+    pub mode: Option<&'a Bound<'py, PyAny>>,
+    /// A preset's name (default "table-table-ac") or a machine description (a dict).
+    pub machine: Option<&'a Bound<'py, PyAny>>,
+    /// "mm" (default) or "inch".
+    pub units: Option<&'a Bound<'py, PyAny>>,
+    /// Feed at the tool tip, units/min (default 1000).
+    pub feed: Option<&'a Bound<'py, PyAny>>,
+    /// Feed of the approach and retract, units/min (default feed / 4).
+    pub approach_feed: Option<&'a Bound<'py, PyAny>>,
+    /// Units per model unit of the path (default 1).
+    pub scale: Option<&'a Bound<'py, PyAny>>,
+    /// Tool number (default 1).
+    pub tool: Option<&'a Bound<'py, PyAny>>,
+    /// Spindle speed, 1/min (default 10000).
+    pub spindle: Option<&'a Bound<'py, PyAny>>,
+    /// "cw" (default) or "ccw".
+    pub direction: Option<&'a Bound<'py, PyAny>>,
+    /// "flood" (default), "mist" or "off".
+    pub coolant: Option<&'a Bound<'py, PyAny>>,
+    /// Work offset 1–6 (default 1).
+    pub work_offset: Option<&'a Bound<'py, PyAny>>,
+    /// Least part height of the safe moves.
+    pub safe_height: Option<&'a Bound<'py, PyAny>>,
+    /// Distance kept from the stock along the tool axis (default 5 mm).
+    pub clearance: Option<&'a Bound<'py, PyAny>>,
+    /// The chordal tolerance (default 0.01 mm).
+    pub tolerance: Option<&'a Bound<'py, PyAny>>,
+    /// The angular tolerance, degrees (default none).
+    pub angular_tolerance: Option<&'a Bound<'py, PyAny>>,
+    /// Gauge length, spindle nose to tip.
+    pub gauge: Option<&'a Bound<'py, PyAny>>,
+    /// The tool holder: {"radius", "length"}.
+    pub holder: Option<&'a Bound<'py, PyAny>>,
+    /// The shank's radius.
+    pub shank: Option<&'a Bound<'py, PyAny>>,
+    /// The stock box, [[xmin, ymin, zmin], [xmax, ymax, zmax]].
+    pub stock: Option<&'a Bound<'py, PyAny>>,
+    /// Half-angle of the pole cone, degrees (default 1).
+    pub pole_cone: Option<&'a Bound<'py, PyAny>>,
+    /// How the input the path was refined from numbers its poses: {"stride", "lines"}.
+    pub input: Option<&'a Bound<'py, PyAny>>,
+    /// Program name (Heidenhain, Sinumerik).
+    pub name: Option<&'a Bound<'py, PyAny>>,
+}
+
+impl PostArgs<'_, '_> {
+    /// Whether any option was given.
+    pub fn any(&self) -> bool {
+        [
+            self.dialect,
+            self.mode,
+            self.machine,
+            self.units,
+            self.feed,
+            self.approach_feed,
+            self.scale,
+            self.tool,
+            self.spindle,
+            self.direction,
+            self.coolant,
+            self.work_offset,
+            self.safe_height,
+            self.clearance,
+            self.tolerance,
+            self.angular_tolerance,
+            self.gauge,
+            self.holder,
+            self.shank,
+            self.stock,
+            self.pole_cone,
+            self.input,
+            self.name,
+        ]
+        .into_iter()
+        .any(args::given)
+    }
+}
+
+/// The preset machine `name`, or an error naming the presets.
+pub fn preset(func: &str, name: &str) -> PyResult<Machine> {
+    Machine::preset(name).ok_or_else(|| {
+        let known: Vec<String> = ruledlab_cam::MACHINE_PRESETS.iter().map(|p| format!("\"{p}\"")).collect();
+        fail_option(func, "machine", format!("machine: unknown preset \"{name}\", expected {}", known.join(", ")))
+    })
+}
+
+/// A machine: a preset's name, or a description (a dict read by serde, unknown keys refused
+/// with their path).
+fn machine(func: &str, value: &Bound<'_, PyAny>) -> PyResult<Machine> {
+    if let Ok(name) = value.cast::<PyString>() {
+        return preset(func, &name.to_string());
+    }
+    if !value.is_instance_of::<PyDict>() {
+        return Err(fail_option(
+            func,
+            "machine",
+            format!("machine must be a preset's name or a machine description (a dict), got {}", describe(value)),
+        ));
+    }
+    let mut reader = pythonize::Depythonizer::from_object(value);
+    serde_path_to_error::deserialize(&mut reader).map_err(|e| {
+        let path = e.path().to_string();
+        let at = if path == "." { "machine".to_string() } else { format!("machine.{path}") };
+        fail_option(func, &at, format!("{at}: {}", e.into_inner()))
+    })
+}
+
+/// A number option that must be a non-negative integer (tool number, work offset, stride).
+fn whole(func: &str, name: &str, value: Option<&Bound<'_, PyAny>>, default: u32) -> PyResult<u32> {
+    Ok(args::optional_integer(func, name, value, 0, 1_000_000_000, default as usize)? as u32)
+}
+
+/// A dict with exactly `keys` (others refused), its values.
+fn fields<'py>(
+    func: &str,
+    name: &str,
+    value: &Bound<'py, PyAny>,
+    keys: &[&str],
+) -> PyResult<Vec<Option<Bound<'py, PyAny>>>> {
+    let dict = value.cast::<PyDict>().map_err(|_| {
+        fail_option(func, name, format!("{name} must be a dict {{{}}}, got {}", keys.join(", "), describe(value)))
+    })?;
+    for key in dict.keys() {
+        let key = key.str()?.to_string();
+        if !keys.contains(&key.as_str()) {
+            return Err(fail_option(
+                func,
+                &format!("{name}.{key}"),
+                format!("{name}: unknown key \"{key}\"; the keys are {}", keys.join(", ")),
+            ));
+        }
+    }
+    keys.iter().map(|k| dict.get_item(k)).collect()
+}
+
+/// The options of a program from the keyword arguments.
+pub fn read_post_options(func: &str, a: &PostArgs<'_, '_>) -> PyResult<PostOptions> {
+    let d = PostOptions::default();
+    let number = |name: &str, v| args::optional_number(func, name, v);
+    let holder = match a.holder.filter(|v| !v.is_none()) {
+        None => None,
+        Some(h) => {
+            let f = fields(func, "holder", h, &["radius", "length"])?;
+            let part = |k: usize, name: &str| -> PyResult<f64> {
+                match &f[k] {
+                    Some(v) => args::number(func, &format!("holder.{name}"), v),
+                    None => Err(fail_option(func, &format!("holder.{name}"), format!("holder.{name} is required"))),
+                }
+            };
+            Some(Holder { radius: part(0, "radius")?, length: part(1, "length")? })
+        }
+    };
+    let numbering = match a.input.filter(|v| !v.is_none()) {
+        None => None,
+        Some(i) => {
+            let f = fields(func, "input", i, &["stride", "lines"])?;
+            let Some(stride) = &f[0] else {
+                return Err(fail_option(func, "input.stride", "input.stride is required"));
+            };
+            let stride = whole(func, "input.stride", Some(stride), 1)? as usize;
+            let mut lines = Vec::new();
+            if let Some(l) = &f[1] {
+                let given = arrays::numbers(func, "input.lines", l)?;
+                arrays::vector(func, "input.lines", &given)?;
+                for &x in given.slice() {
+                    if !(x.fract() == 0.0 && (0.0..=1e9).contains(&x)) {
+                        return Err(fail_option(
+                            func,
+                            "input.lines",
+                            format!("input.lines: must be integers, got {x}"),
+                        ));
+                    }
+                    lines.push(x as usize);
+                }
+            }
+            Some(Numbering { stride, lines })
+        }
+    };
+    let stock = match a.stock.filter(|v| !v.is_none()) {
+        None => None,
+        Some(s) => {
+            let given = arrays::numbers(func, "stock", s)?;
+            if given.shape() != [2, 3] {
+                return Err(fail_option(
+                    func,
+                    "stock",
+                    format!(
+                        "stock must be [[xmin, ymin, zmin], [xmax, ymax, zmax]], shape (2, 3), got {}",
+                        arrays::shape_text(given.shape())
+                    ),
+                ));
+            }
+            let x = given.slice();
+            if let Some(bad) = x.iter().find(|x| !x.is_finite()) {
+                return Err(fail_option(func, "stock", format!("stock must be finite, got {bad}")));
+            }
+            Some([[x[0], x[1], x[2]], [x[3], x[4], x[5]]])
+        }
+    };
+    Ok(PostOptions {
+        dialect: match args::choice(func, "dialect", a.dialect, &["linuxcnc", "heidenhain", "sinumerik"])? {
+            None | Some(0) => Dialect::LinuxCnc,
+            Some(1) => Dialect::Heidenhain,
+            _ => Dialect::Sinumerik,
+        },
+        mode: match args::choice(func, "mode", a.mode, &["machine", "tcp"])? {
+            None | Some(0) => Mode::Machine,
+            _ => Mode::Tcp,
+        },
+        machine: match a.machine.filter(|v| !v.is_none()) {
+            None => d.machine.clone(),
+            Some(m) => machine(func, m)?,
+        },
+        units: match args::choice(func, "units", a.units, &["mm", "inch"])? {
+            None | Some(0) => Units::Mm,
+            _ => Units::Inch,
+        },
+        feed: number("feed", a.feed)?.unwrap_or(d.feed),
+        approach_feed: number("approach_feed", a.approach_feed)?,
+        scale: number("scale", a.scale)?.unwrap_or(d.scale),
+        tool: whole(func, "tool", a.tool, d.tool)?,
+        spindle: number("spindle", a.spindle)?.unwrap_or(d.spindle),
+        direction: match args::choice(func, "direction", a.direction, &["cw", "ccw"])? {
+            None | Some(0) => SpindleDirection::Clockwise,
+            _ => SpindleDirection::CounterClockwise,
+        },
+        coolant: match args::choice(func, "coolant", a.coolant, &["flood", "mist", "off"])? {
+            None | Some(0) => Coolant::Flood,
+            Some(1) => Coolant::Mist,
+            _ => Coolant::Off,
+        },
+        work_offset: whole(func, "work_offset", a.work_offset, d.work_offset)?,
+        safe_height: number("safe_height", a.safe_height)?,
+        clearance: number("clearance", a.clearance)?.unwrap_or(d.clearance),
+        tolerance: number("tolerance", a.tolerance)?.unwrap_or(d.tolerance),
+        angular_tolerance: number("angular_tolerance", a.angular_tolerance)?,
+        gauge: number("gauge", a.gauge)?,
+        holder,
+        shank: number("shank", a.shank)?,
+        stock,
+        pole_cone: number("pole_cone", a.pole_cone)?.unwrap_or(d.pole_cone),
+        numbering,
+        name: args::optional_text(func, "name", a.name)?.unwrap_or(d.name),
+    })
+}
