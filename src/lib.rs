@@ -33,6 +33,7 @@
 mod base;
 mod catalogue;
 mod congruence;
+mod developable;
 mod error;
 mod formula;
 mod io;
@@ -74,6 +75,15 @@ pub use ruled::{Invariants, InvariantsBlock, PairInvariants, RuledSurface, Smoot
 // Section 3: isometries and the development
 pub use ruled::development::Frame;
 pub use ruled::{envelope_radii, Development, HingeChain};
+
+// Section 3, beyond it: developable strips, their exact unfolding and flat patterns for cutting
+pub use developable::approximate::ApproximatePattern;
+pub use developable::construct::{cone, cylinder, rectifying_developable, tangent_surface, Span};
+pub use developable::outline::{offset, outline, perimeter, signed_area, Outline, Side, Stroke};
+pub use developable::overlap::{overlapping_faces, pieces};
+pub use developable::repair::{make_developable, max_abs_delta, size_of, Repair};
+pub use developable::sheet::{bends, closes, tile, Paper, Sheet, SheetLabel, SheetOptions, SheetPiece, Tile, Tiling};
+pub use developable::unfold::{crossed_faces, isometry_error, IsometryError, Unfolding};
 
 // Section 4: subdivision
 pub use subdivision::accuracy::max_distance;
