@@ -114,6 +114,8 @@ pub use io::csv::{read_csv, read_csv_with, write_csv};
 pub use io::invariants::{invariants_csv, invariants_json};
 pub use io::json::{read_json, read_json_with, write_json};
 pub use io::obj::write_obj;
+pub use io::sheet_dxf::sheet_dxf;
+pub use io::sheet_svg::{page_svg, sheet_svg};
 pub use io::Imported;
 
 // reading text: what ruledlab-cam's readers of tool poses and target curves build on, and what
