@@ -243,6 +243,14 @@ pub const MAX_TAB_MM: f64 = 50.0;
 /// printer that scales the page shows it as another length.
 pub const CHECK_SQUARE_MM: f64 = 100.0;
 
+/// Flat patterns: the blank margin on each side of a printed page, millimetres (most printers
+/// print to within 5 mm of the edge).
+pub const PAGE_MARGIN_MM: f64 = 10.0;
+
+/// Flat patterns: how far neighbouring pages of a tiled print overlap, millimetres (the
+/// registration marks sit in the middle of the overlap).
+pub const PAGE_OVERLAP_MM: f64 = 10.0;
+
 /// `|a − b| ≤ tol · max(1, |a|, |b|)`: relative for large numbers, absolute near zero; an
 /// infinity is near only itself (the relative bound would let ∞ be near every number).
 pub fn near(a: f64, b: f64, tol: f64) -> bool {

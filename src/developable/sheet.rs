@@ -305,7 +305,7 @@ impl Sheet {
             at: square + DVec2::new(CHECK_SQUARE_MM / 2.0, -4.0),
             angle: 0.0,
             size: 4.0,
-            text: format!("{CHECK_SQUARE_MM} mm"),
+            text: format!("{} mm", CHECK_SQUARE_MM as u32),
         });
         Ok(Sheet { size, pieces: out, check_square: square, labels })
     }

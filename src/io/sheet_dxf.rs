@@ -29,7 +29,7 @@ fn pair(out: &mut String, code: u16, value: impl std::fmt::Display) {
 
 /// A coordinate: six decimals (a nanometre).
 fn c(x: f64) -> String {
-    let s = format!("{x:.6}");
+    let s = crate::io::sheet_svg::fixed(x, 6);
     if s.trim_start_matches('-').chars().all(|ch| ch == '0' || ch == '.') {
         "0.0".into()
     } else {

@@ -20,11 +20,30 @@ use crate::tolerance::CHECK_SQUARE_MM;
 use glam::DVec2;
 use std::fmt::Write;
 
-/// A number for SVG: at most four decimals (0.1 µm), no trailing zeros.
+/// `x` with `decimals` decimals (at most 9), rounded half away from zero, no "-0": written from an
+/// integer, not by the float formatter (whose exact mode would add its tables to the wasm module).
+/// For |x| · 10^decimals below 2⁶³ (a sheet is at most 10 m).
+pub(crate) fn fixed(x: f64, decimals: u32) -> String {
+    let scale = 10i64.pow(decimals);
+    let scaled = (x * scale as f64).round();
+    if !scaled.is_finite() || scaled.abs() >= 9.2e18 {
+        return "0".into();
+    }
+    let scaled = scaled as i64;
+    let (sign, units) = (if scaled < 0 { "-" } else { "" }, scaled.unsigned_abs());
+    let (whole, frac) = (units / scale as u64, units % scale as u64);
+    if decimals == 0 {
+        format!("{sign}{whole}")
+    } else {
+        format!("{sign}{whole}.{frac:0width$}", width = decimals as usize)
+    }
+}
+
+/// A number for SVG: at most four decimals (0.1 µm), no trailing zeros, no "-0".
 pub(crate) fn num(x: f64) -> String {
-    let s = format!("{x:.4}");
+    let s = fixed(x, 4);
     let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
+    if s == "-0" || s.is_empty() {
         "0".into()
     } else {
         s.into()
@@ -172,6 +191,10 @@ mod tests {
         assert_eq!(num(-0.00001), "0");
         assert_eq!(num(12.345678), "12.3457");
         assert_eq!(num(-2.5), "-2.5");
+        assert_eq!(num(0.00005), "0.0001");
+        assert_eq!(num(-1234.56789), "-1234.5679");
+        assert_eq!(fixed(2.0, 0), "2");
+        assert_eq!(fixed(-0.000001, 6), "-0.000001");
         assert_eq!(escape("a<b&\"c\">"), "a&lt;b&amp;&quot;c&quot;&gt;");
     }
 }
