@@ -340,6 +340,29 @@ mod tests {
         assert!(max_abs_delta(&s) <= 1e-13);
     }
 
+    /// Every construction commutes with rigid motions: the strip of the moved directrix (and apex,
+    /// and direction) is the moved strip.
+    #[test]
+    fn the_constructions_are_invariant_under_rigid_motions() {
+        let c = helix(33, 1.0, 0.3, 1.2);
+        let q = glam::DQuat::from_axis_angle(DVec3::new(1.0, 2.0, -0.5).normalize(), 0.9);
+        let t = DVec3::new(2.0, -1.0, 4.0);
+        let m: Vec<DVec3> = c.iter().map(|p| q * *p + t).collect();
+        let (apex, dir) = (DVec3::new(0.2, -0.1, 3.0), DVec3::new(0.1, 0.2, 1.0));
+        let span = Span { from: 0.1, to: 0.9 };
+        let pairs = [
+            (tangent_surface(&c, span).unwrap(), tangent_surface(&m, span).unwrap()),
+            (cone(&c, apex, span).unwrap(), cone(&m, q * apex + t, span).unwrap()),
+            (cylinder(&c, dir, span).unwrap(), cylinder(&m, q * dir, span).unwrap()),
+            (rectifying_developable(&c, span).unwrap(), rectifying_developable(&m, span).unwrap()),
+        ];
+        for (k, (s, moved)) in pairs.iter().enumerate() {
+            for (x, y) in s.points().iter().zip(moved.points()) {
+                assert!((q * *x + t - *y).length() < 1e-9, "construction {k}: {x} {y}");
+            }
+        }
+    }
+
     #[test]
     fn degenerate_directrices_and_spans_are_refused_with_their_reasons() {
         let c = helix(9, 1.0, 0.3, 1.0);

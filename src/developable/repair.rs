@@ -337,6 +337,21 @@ mod tests {
         assert!(max_abs_delta(&out.surface).0 <= DEVELOPABLE_DELTA * size, "{:?} {size}", max_abs_delta(&out.surface));
     }
 
+    /// The repair commutes with rigid motions: repairing a moved edit gives the moved repair.
+    #[test]
+    fn the_repair_is_invariant_under_rigid_motions() {
+        let s = tangent_surface(&helix(30), Span { from: 0.1, to: 1.0 }).unwrap();
+        let edit = dragged(&s, 9, DVec3::new(0.04, 0.07, -0.05));
+        let q = glam::DQuat::from_axis_angle(DVec3::new(0.3, -1.0, 2.0).normalize(), 2.3);
+        let t = DVec3::new(-3.0, 1.5, 7.0);
+        let moved = edit.map_points(|p| q * p + t).unwrap();
+        let (a, b) = (make_developable(&edit), make_developable(&moved));
+        assert_eq!(a.anchors, b.anchors);
+        for (x, y) in a.surface.points().iter().zip(b.surface.points()) {
+            assert!((q * *x + t - *y).length() < 1e-12, "{x} {y}");
+        }
+    }
+
     /// A flat strip of parallel rulings, one of them tilted out of its plane: the strip twists to
     /// follow it.
     #[test]
