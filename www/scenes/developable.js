@@ -100,7 +100,7 @@ export const scene = defineScene({
   ],
   legend: [
     { style: 'ruling', label: 'legend.rulings' },
-    { style: 'result', label: 'developable.legend.pattern' },
+    { style: 'lineScheme', label: 'developable.legend.pattern' },
     { style: 'striction', label: 'developable.legend.overlap' },
   ],
   /** @param {DevelopableParams} p */
@@ -126,7 +126,7 @@ export const scene = defineScene({
       const layers = [
         { kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(rulings) },
         { kind: 'segments', style: 'ruling', positions: seg },
-        { kind: 'segments', style: 'result', positions: flat, transform: place },
+        { kind: 'segments', style: 'lineScheme', positions: flat, transform: place },
       ];
       if (overlap.length) layers.push({ kind: 'segments', style: 'striction', positions: overlap, transform: place });
       const pieces = pattern.pieces().length / 2;
