@@ -33,6 +33,7 @@ const MODELS = [
   ],
   ['12 tool poses, 1 step (milling)', 'milling', { poses: 12 }, '#scene=milling&poses=12'],
   ['8 control points, 6 steps (curves)', 'curves', { steps: 6 }, '#scene=curves&steps=6'],
+  ['200 rulings (paper models, tangent surface)', 'developable', { n: 200 }, '#scene=developable&n=200'],
 ];
 
 const i18n = translator('en');

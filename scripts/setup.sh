@@ -8,8 +8,8 @@
 # with: LaTeX (pdflatex and lualatex with TikZ), poppler's pdftoppm and librsvg's rsvg-convert, and
 # libxml2-utils' xmllint, which validates the SCORM manifests.
 # With --browser or --docs also mdBook, which builds the book (scripts/docs.sh). With --browser
-# also a Python virtual environment .venv/ (JupyterLab, anywidget, NumPy, pytest, setuptools from
-# PyPI) for the notebook widget in python/ and its test in a real JupyterLab.
+# also a Python virtual environment .venv/ (JupyterLab, anywidget, NumPy, pytest, setuptools, ezdxf
+# from PyPI) for the notebook widget in python/ and its test in a real JupyterLab.
 # Only package registries are used; nothing downloads a binary or a browser of its own.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -98,9 +98,10 @@ if [ "${1:-}" = "--browser" ]; then
 fi
 
 # The notebook widget (python/): its wheel is built and tested with these, and JupyterLab runs the
-# example notebook (tests/page/notebook.test.mjs). Remade only when the list below changes.
+# example notebook (tests/page/notebook.test.mjs); ezdxf reads the flat patterns' DXF back
+# (tests/paper_models.rs). Remade only when the list below changes.
 if [ "${1:-}" = "--browser" ]; then
-  PY_PACKAGES="jupyterlab==4.6.6 notebook==7.6.5 anywidget==0.11.0 numpy==2.4.6 pytest==9.2.0 mypy==2.4.1 maturin==1.16.0 nbconvert==7.17.2 nbclient==0.11.0 ipykernel==7.4.0"
+  PY_PACKAGES="jupyterlab==4.6.6 notebook==7.6.5 anywidget==0.11.0 numpy==2.4.6 pytest==9.2.0 mypy==2.4.1 maturin==1.16.0 nbconvert==7.17.2 nbclient==0.11.0 ipykernel==7.4.0 ezdxf==1.4.5"
   if [ "$(cat .venv/ruledlab-packages 2>/dev/null || true)" != "$PY_PACKAGES" ]; then
     if ! python3 -c 'import venv, ensurepip' 2>/dev/null; then
       say "installing Debian's python3-venv"

@@ -40,7 +40,7 @@ cargo clippy --quiet --workspace --target wasm32-unknown-unknown --lib --tests -
 RUSTDOCFLAGS="-D warnings" cargo doc --quiet --workspace --no-deps
 
 step "native: cargo test, every crate (with LinuxCNC's rs274 reading the G-code: crates/ruledlab-cam/tests/controller.rs)"
-RULEDLAB_REQUIRE_RS274=1 cargo test --workspace --all-targets
+RULEDLAB_REQUIRE_RS274=1 RULEDLAB_REQUIRE_READERS=1 cargo test --workspace --all-targets
 cargo test --workspace --doc
 
 step "build: pkg/"

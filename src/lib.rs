@@ -33,6 +33,7 @@
 mod base;
 mod catalogue;
 mod congruence;
+mod developable;
 mod error;
 mod formula;
 mod io;
@@ -75,6 +76,15 @@ pub use ruled::{Invariants, InvariantsBlock, PairInvariants, RuledSurface, Smoot
 pub use ruled::development::Frame;
 pub use ruled::{envelope_radii, Development, HingeChain};
 
+// Section 3, beyond it: developable strips, their exact unfolding and flat patterns for cutting
+pub use developable::approximate::ApproximatePattern;
+pub use developable::construct::{cone, cylinder, rectifying_developable, tangent_surface, Span};
+pub use developable::outline::{offset, outline, perimeter, signed_area, Outline, Side, Stroke};
+pub use developable::overlap::{overlapping_faces, pieces};
+pub use developable::repair::{make_developable, max_abs_delta, size_of, Repair};
+pub use developable::sheet::{bends, closes, tile, Paper, Sheet, SheetLabel, SheetOptions, SheetPiece, Tile, Tiling};
+pub use developable::unfold::{crossed_faces, isometry_error, IsometryError, Unfolding};
+
 // Section 4: subdivision
 pub use subdivision::accuracy::max_distance;
 pub use subdivision::bezier::de_casteljau;
@@ -104,6 +114,8 @@ pub use io::csv::{read_csv, read_csv_with, write_csv};
 pub use io::invariants::{invariants_csv, invariants_json};
 pub use io::json::{read_json, read_json_with, write_json};
 pub use io::obj::write_obj;
+pub use io::sheet_dxf::sheet_dxf;
+pub use io::sheet_svg::{page_svg, sheet_svg};
 pub use io::Imported;
 
 // reading text: what ruledlab-cam's readers of tool poses and target curves build on, and what

@@ -207,6 +207,50 @@ pub const HIDDEN_LINE_GRID_ENTRIES: usize = 16;
 /// Hidden lines: most triangles and most line points in one call (checked before binning).
 pub const MAX_HIDDEN_LINE_ITEMS: usize = 1 << 22;
 
+/// Developable strips: a pair of consecutive rulings counts as coplanar (torsal) when its
+/// distribution parameter |δ| (1) is at most this times max(1, the strip's size: the diagonal of
+/// its bounding box). The constructions and the repair of `developable/` reach ~1e-15 on strips
+/// whose consecutive rulings meet at angles φ ≳ 10⁻² (δ = h/φ magnifies the rounding of h by
+/// 1/φ²); the exact unfolding refuses a strip with a pair above it.
+pub const DEVELOPABLE_DELTA: f64 = 1e-12;
+
+/// Developable strips, the repair: most Gauss–Newton steps towards the nearest developable strip
+/// (they converge quadratically: a drag on the page takes 3 to 5; the sweep that follows them makes
+/// every pair torsal in any case).
+pub const REPAIR_STEPS: usize = 50;
+
+/// Flat patterns: two faces overlap when their interiors overlap by more than this share of the
+/// pattern's size (faces that only touch, at a cone's apex or along a ruling, do not).
+pub const OVERLAP_REL: f64 = 1e-9;
+
+/// Flat patterns: most millimetres per unit of the model (and least: 1/this).
+pub const MAX_PATTERN_SCALE: f64 = 1e4;
+
+/// Flat patterns: the largest sheet, in millimetres per side (10 m: a roll of paper or a big
+/// laser bed; tiling it into A4 pages gives at most [`MAX_PAGES`]).
+pub const MAX_SHEET_MM: f64 = 10_000.0;
+
+/// Flat patterns: most printed pages of a tiling.
+pub const MAX_PAGES: usize = 2500;
+
+/// Flat patterns: the widest kerf (the width a laser or knife cuts away), millimetres.
+pub const MAX_KERF_MM: f64 = 5.0;
+
+/// Flat patterns: the widest glue tab, millimetres.
+pub const MAX_TAB_MM: f64 = 50.0;
+
+/// Flat patterns: the side of the check square printed beside every pattern, millimetres: a
+/// printer that scales the page shows it as another length.
+pub const CHECK_SQUARE_MM: f64 = 100.0;
+
+/// Flat patterns: the blank margin on each side of a printed page, millimetres (most printers
+/// print to within 5 mm of the edge).
+pub const PAGE_MARGIN_MM: f64 = 10.0;
+
+/// Flat patterns: how far neighbouring pages of a tiled print overlap, millimetres (the
+/// registration marks sit in the middle of the overlap).
+pub const PAGE_OVERLAP_MM: f64 = 10.0;
+
 /// `|a − b| ≤ tol · max(1, |a|, |b|)`: relative for large numbers, absolute near zero; an
 /// infinity is near only itself (the relative bound would let ∞ be near every number).
 pub fn near(a: f64, b: f64, tol: f64) -> bool {

@@ -22,7 +22,7 @@ const LAYERS: &[&[&str]] = &[
     &["error", "tolerance", "line"],
     &["base", "formula", "linalg", "linear_complex", "line_fit", "snap"],
     &["ruled", "mesh", "visibility"],
-    &["subdivision"],
+    &["subdivision", "developable"],
     &["congruence"],
     &["catalogue", "io"],
 ];

@@ -1,7 +1,7 @@
 //! Data formats, the one home of every file the geometry reads or writes as data (drawings are
 //! the page's: `www/export/`; tool paths, tool poses and target curves are ruledlab-cam's, built
 //! on the JSON and table readers here): segments as CSV (6 numbers per line) and JSON, read and
-//! written; OBJ of a strip; the invariants of Section 2 as CSV and JSON; what kind of data a text
+//! written; OBJ of a strip; a flat pattern's sheet as SVG and DXF R12 for cutting; the invariants of Section 2 as CSV and JSON; what kind of data a text
 //! holds (`sniff`).
 //! Malformed input is rejected with the line and column of the problem; sizes are checked
 //! before anything large is allocated ([`MAX_IMPORT_TEXT`](crate::tolerance::MAX_IMPORT_TEXT), and the ruling limit).
@@ -10,6 +10,8 @@ pub mod csv;
 pub mod invariants;
 pub mod json;
 pub mod obj;
+pub mod sheet_dxf;
+pub mod sheet_svg;
 pub mod sniff;
 pub mod table;
 

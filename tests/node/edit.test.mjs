@@ -240,6 +240,7 @@ test('every scene with handles: its input handed back as an edit gives the same 
     'convergence',
     'curves',
     'data',
+    'developable',
     'focal',
     'isometry',
     'lines',

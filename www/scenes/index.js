@@ -5,6 +5,7 @@ import { scene as convergence } from './convergence.js';
 import { scene as isometry } from './isometry.js';
 import { scene as curves } from './curves.js';
 import { scene as strip } from './strip.js';
+import { scene as developable } from './developable.js';
 import { scene as congruence } from './congruence.js';
 import { scene as milling } from './milling.js';
 import { scene as formula } from './formula.js';
@@ -22,6 +23,7 @@ export const SCENES = [
   isometry,
   curves,
   strip,
+  developable,
   congruence,
   milling,
   formula,

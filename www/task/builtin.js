@@ -121,6 +121,28 @@ const RAW = [
     solution: {},
   },
   {
+    id: 'one-piece',
+    title: { en: 'A paper model in one piece', de: 'Ein Papiermodell aus einem Stück' },
+    prompt: {
+      en: 'The tangent surface of a helix is developable: its flat pattern keeps every length. Over one and a half turns the pattern overlaps itself and must be cut into pieces. Choose the turns of the helix so that the pattern is one piece, with at least one full turn.',
+      de: 'Die Tangentenfläche einer Schraublinie ist abwickelbar: Ihr Schnittmuster erhält jede Länge. Über anderthalb Windungen überlappt sich das Muster und muss in Teile zerlegt werden. Wählen Sie die Windungen der Schraublinie so, dass das Muster aus einem Stück besteht, mit mindestens einer vollen Windung.',
+    },
+    scene: 'developable',
+    params: { kind: 'tangent', n: 60, turns: 1.5, width: 1.2 },
+    change: ['turns'],
+    goal: [
+      { value: 'developable.readout.pieces', below: 1.5 },
+      { value: 'developable.readout.turns', above: 0.99 },
+    ],
+    hints: [
+      {
+        en: 'The edge of regression unrolls onto a circle: per turn of the helix it turns through 2π/√(1 + 0.4²) ≈ 5.83 rad, a little less than a full turn.',
+        de: 'Die Gratlinie wickelt sich auf einen Kreis ab: Je Windung der Schraublinie dreht sie sich um 2π/√(1 + 0,4²) ≈ 5,83 rad, etwas weniger als eine volle Umdrehung.',
+      },
+    ],
+    solution: { params: { turns: 1 } },
+  },
+  {
     id: 'chaikin-count',
     title: { en: 'Count Chaikin’s points', de: 'Chaikins Punkte zählen' },
     prompt: {

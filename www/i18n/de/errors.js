@@ -41,6 +41,8 @@ export default {
   'error.what.levels of nesting': 'Klammerebenen',
   'error.what.segment coordinates': 'Koordinaten der Strecken',
   'error.what.point coordinates': 'Koordinaten der Punkte',
+  'error.what.directrix points': 'Punkte der Leitkurve',
+  'error.what.pages': 'Seiten',
   'error.option.csv': 'CSV',
   'error.option.json': 'JSON',
   'error.option.u': 'Bereich von u',
@@ -133,6 +135,33 @@ export default {
   'error.no-striction-point':
     'Die Fläche hat bei u = {u} keinen Kehlpunkt: Die Erzeugende dort ist zylindrisch (ihre Nachbarn sind zu ihr parallel)',
   'error.not-a-number': '„{text}“ ist keine Zahl',
+  // abwickelbare Streifen und Schnittmuster
+  'error.span-crosses-regression':
+    'muss bei 0 oder später beginnen, angegeben ist {from}: Der Streifen ginge über seine Gratlinie (oder die Spitze) hinaus',
+  'error.directrix-edge-zero':
+    'Die Punkte {edge} und {next} der Leitkurve fallen zusammen: Die Kante zwischen ihnen hat keine Richtung',
+  'error.directrix-no-turn-at':
+    'Die Leitkurve knickt im Punkt {point} nicht: Die Geraden der dort zusammentreffenden Kanten fallen zusammen und begrenzen keine Fläche',
+  'error.directrix-straight': 'Die Leitkurve ist gerade: Sie knickt nirgends und hat daher keine rektifizierende Torse',
+  'error.apex-not-finite': 'Die Spitze müssen drei endliche Zahlen sein',
+  'error.apex-on-directrix':
+    'Die Spitze liegt auf dem Punkt {point} der Leitkurve: Die Erzeugende dort hat keine Richtung',
+  'error.apex-in-line':
+    'Die Punkte {edge} und {next} der Leitkurve liegen mit der Spitze auf einer Geraden: Die Fläche zwischen ihren Erzeugenden hat keine Breite',
+  'error.direction-zero': 'muss ein vom Nullvektor verschiedener Vektor aus endlichen Zahlen sein',
+  'error.edge-along-rulings':
+    'Die Kante {edge} der Leitkurve verläuft entlang der Erzeugenden: Die Fläche dort hat keine Breite',
+  'error.edge-along-ruling':
+    'Die Kante der Leitkurve im Punkt {point} verläuft entlang der Erzeugenden dort: Die nächste Erzeugende ist nicht bestimmt',
+  'error.not-developable':
+    'Die Erzeugenden {i} und {j} liegen nicht in einer Ebene (δ = {delta}, mehr als {max}): Der Streifen ist nicht abwickelbar; die näherungsweise Abwicklung aus Abschnitt 3 bildet ihn mit Lücken ab',
+  'error.rulings-collinear':
+    'Die Erzeugenden {i} und {j} liegen auf einer Geraden: Die Fläche zwischen ihnen hat keine Breite',
+  'error.out-of-interval': 'muss eine Zahl von {min} bis {max} sein, angegeben ist {value}',
+  'error.pattern-points': 'braucht {need} Zahlen (x, y beider Enden jeder Erzeugenden), angegeben sind {got}',
+  'error.sheet-too-large':
+    'Der Bogen würde {width} × {height} mm groß, mehr als {max} mm je Seite: weniger Millimeter je Einheit wählen',
+  'error.paper-too-small': 'Eine Seite von {width} × {height} mm lässt innerhalb ihrer Ränder keinen Platz',
   'error.not-finite-number': '{text} ist keine endliche Zahl',
   'error.csv-six-numbers': 'Eine Zeile braucht 6 Zahlen (a.x a.y a.z b.x b.y b.z), diese hat {found}',
   'error.csv-no-data': 'Sie enthält keine Zeile mit 6 Zahlen',

@@ -12,6 +12,7 @@ import scenes from './scenes.js';
 import subdivision from './subdivision.js';
 import congruences from './congruences.js';
 import explanations from './explanations.js';
+import developable from './developable.js';
 
 export default {
   ...page,
@@ -25,4 +26,5 @@ export default {
   ...subdivision,
   ...congruences,
   ...explanations,
+  ...developable,
 };

@@ -44,6 +44,8 @@ export default {
   'error.what.levels of nesting': 'levels of parentheses',
   'error.what.segment coordinates': 'segment coordinates',
   'error.what.point coordinates': 'point coordinates',
+  'error.what.directrix points': 'directrix points',
+  'error.what.pages': 'pages',
   // options the core names, as the page names them
   'error.option.csv': 'CSV',
   'error.option.json': 'JSON',
@@ -137,6 +139,30 @@ export default {
   'error.no-striction-point':
     'the surface has no striction point at u = {u}: the ruling there is cylindrical (its neighbours are parallel to it)',
   'error.not-a-number': '“{text}” is not a number',
+  // developable strips and flat patterns
+  'error.span-crosses-regression':
+    'must start at 0 or beyond, got {from}: the strip would cross its edge of regression (or the apex)',
+  'error.directrix-edge-zero':
+    'points {edge} and {next} of the directrix coincide: the edge between them has no direction',
+  'error.directrix-no-turn-at':
+    'the directrix does not turn at point {point}: the lines of the edges meeting there coincide and bound no face',
+  'error.directrix-straight': 'the directrix is straight: it turns nowhere, so it has no rectifying developable',
+  'error.apex-not-finite': 'the apex must be three finite numbers',
+  'error.apex-on-directrix': 'the apex lies on point {point} of the directrix: the ruling there has no direction',
+  'error.apex-in-line':
+    'points {edge} and {next} of the directrix are in line with the apex: the face between their rulings has no width',
+  'error.direction-zero': 'must be a nonzero vector of finite numbers',
+  'error.edge-along-rulings': 'edge {edge} of the directrix runs along the rulings: the face there has no width',
+  'error.edge-along-ruling':
+    'the edge of the directrix at point {point} runs along the ruling there: the next ruling is not defined',
+  'error.not-developable':
+    'rulings {i} and {j} are not coplanar (δ = {delta}, more than {max}): the strip is not developable; Section 3’s approximate development maps it with gaps',
+  'error.rulings-collinear': 'rulings {i} and {j} lie on one line: the face between them has no width',
+  'error.out-of-interval': 'must be a number from {min} to {max}, got {value}',
+  'error.pattern-points': 'needs {need} numbers (x, y of both ends of every ruling), got {got}',
+  'error.sheet-too-large':
+    'the sheet would be {width} × {height} mm, more than {max} mm a side: choose fewer millimetres per unit',
+  'error.paper-too-small': 'a page of {width} × {height} mm leaves no room inside its margins',
   'error.not-finite-number': '{text} is not a finite number',
   'error.csv-six-numbers': 'a line needs 6 numbers (a.x a.y a.z b.x b.y b.z), this one has {found}',
   'error.csv-no-data': 'there is no line of 6 numbers in it',

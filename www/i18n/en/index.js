@@ -13,6 +13,7 @@ import scenes from './scenes.js';
 import subdivision from './subdivision.js';
 import congruences from './congruences.js';
 import explanations from './explanations.js';
+import developable from './developable.js';
 
 export default {
   ...page,
@@ -26,4 +27,5 @@ export default {
   ...subdivision,
   ...congruences,
   ...explanations,
+  ...developable,
 };

@@ -1,0 +1,390 @@
+//! Discrete developable strips from a directrix polygon c_0 … c_{M−1} (Section 3: "if we apply
+//! the procedure of Example 2 to a developable surface, we get its development"; the discrete
+//! developables here are the strips whose consecutive rulings are coplanar, δ_{i,i+1} = 0 in (1)).
+//!
+//! Each construction makes consecutive rulings meet (or run parallel) *by construction*, so
+//! δ_{i,i+1} = h/φ vanishes to rounding, not to a discretisation error: the exact tangents of a
+//! smooth developable sampled at parameters u_i are skew at O(H³) (docs/src/conventions.md,
+//! Section 3), the rulings built here are not.
+//!
+//! - **Tangent surface.** The ruling of edge i is the line of c_i c_{i+1}, t_i its unit
+//!   direction; consecutive edge lines meet at c_{i+1}, and the face between them lies in the
+//!   osculating plane of c_i, c_{i+1}, c_{i+2}. The strip is the forward half,
+//!   R_i: c_{i+1} + v t_i, v ∈ [from, to], from ≥ 0; for from = 0 its edge a is the directrix
+//!   itself, the edge of regression. It develops into a polygon with the same edge lengths
+//!   |c_{i+1} − c_i| and turning angles φ_{i,i+1} = ∠(t_i, t_{i+1}): the discrete form of the
+//!   fact that a tangent developable develops onto the plane curve of the same curvature κ(s),
+//!   whatever its torsion (a helix of radius r and pitch p, κ = r/(r² + p²), onto a circle of
+//!   radius (r² + p²)/r).
+//! - **Cone.** R_i: A + s (c_i − A), s ∈ [from, to], 0 ≤ from (s = 1 on the directrix, 0 at the
+//!   apex A). Every ruling passes through A. A right circular cone of half-angle α develops into
+//!   a circular sector of angle 2π sin α; the discrete one into a fan of the angles
+//!   φ_{i,i+1} = 2 arcsin(sin α sin(Δ/2)) for directrix points Δ apart about the axis.
+//! - **Cylinder.** R_i: c_i + v d, v ∈ [from, to], d a unit direction: parallel rulings (sin φ = 0
+//!   exactly). It develops onto the plane by unrolling the directrix's projection orthogonal to
+//!   d; a circular cylinder cut by an inclined plane onto a sine curve.
+//! - **Rectifying developable.** The developable that holds the directrix as a geodesic: its
+//!   rulings run along the Darboux vector τT + κB. Discretely, the polygon is a geodesic of the
+//!   strip when at every interior vertex c_i the ruling r_i makes equal angles with the edges
+//!   meeting there, r_i ⊥ (T_i − T_{i−1}); consecutive rulings are coplanar when r_i lies in the
+//!   plane of T_{i−1} and r_{i−1}. The two conditions fix r_i from r_{i−1}:
+//!   r_i ∥ (T_{i−1} × r_{i−1}) × (T_i − T_{i−1}). Every start r_k (k the first turning vertex,
+//!   r_k ⊥ T_k − T_{k−1}) gives a discrete developable holding the polygon as a geodesic, but all
+//!   except one zig-zag along the strip with an amplitude that does not die out; the start chosen
+//!   is the one with the least Σ|r_{i+1} − 2r_i + r_{i−1}|² (a scan of the angle and golden
+//!   sections), whose rulings tend to the Darboux vector (for a helix: its axis, so the strip is a
+//!   cylinder, as for the smooth helix). The end rulings repeat their neighbours. The directrix
+//!   develops onto a straight line
+//!   exactly.
+
+use crate::error::{Error, Result};
+use crate::msg;
+use crate::ruled::RuledSurface;
+use crate::tolerance::{PARALLEL_SIN, ZERO_LENGTH_REL};
+use glam::DVec3;
+
+/// The span of a strip along its rulings: `from` < `to`, both finite (what each number measures
+/// is the construction's: a length along the tangent, a factor towards the apex, a length along a
+/// direction).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Span {
+    /// Where each ruling's segment begins (its end a).
+    pub from: f64,
+    /// Where it ends (its end b).
+    pub to: f64,
+}
+
+impl Span {
+    /// The span [from, to]; `nonnegative`: whether `from` must be 0 or more (the tangent surface and
+    /// the cone stop at their edge of regression and apex).
+    fn checked(self, nonnegative: bool) -> Result<Span> {
+        let Span { from, to } = self;
+        if !from.is_finite() || !to.is_finite() {
+            return Err(Error::parameter("span", msg!("interval-not-finite", lo = from, hi = to)));
+        }
+        if from >= to {
+            return Err(Error::parameter("span", msg!("interval-order", lo = from, hi = to)));
+        }
+        if nonnegative && from < 0.0 {
+            return Err(Error::parameter("span", msg!("span-crosses-regression", from = from)));
+        }
+        Ok(self)
+    }
+}
+
+/// The directrix checked: at least `min` points, no two consecutive ones equal.
+fn checked_directrix(points: &[DVec3], min: usize) -> Result<()> {
+    if points.len() < min {
+        return Err(Error::TooFew { what: "directrix points", got: points.len(), min });
+    }
+    for (i, w) in points.windows(2).enumerate() {
+        let len2 = (w[1] - w[0]).length_squared();
+        if len2 <= ZERO_LENGTH_REL * ZERO_LENGTH_REL * w[0].length_squared().max(w[1].length_squared()) {
+            return Err(Error::degenerate("directrix", msg!("directrix-edge-zero", edge = i, next = i + 1)));
+        }
+    }
+    Ok(())
+}
+
+/// The unit edge directions T_i = (c_{i+1} − c_i)/|c_{i+1} − c_i| of a checked directrix.
+fn edge_directions(points: &[DVec3]) -> Vec<DVec3> {
+    points.windows(2).map(|w| (w[1] - w[0]).normalize()).collect()
+}
+
+/// The strip of the lines `point_i + v dir_i`, v ∈ span (directions need not be unit).
+fn strip(points: impl Iterator<Item = (DVec3, DVec3)>, span: Span) -> Result<RuledSurface> {
+    RuledSurface::from_points(points.flat_map(|(p, d)| [p + span.from * d, p + span.to * d]).collect())
+}
+
+/// The discrete tangent surface of the directrix (see the module): M − 1 rulings along its edges,
+/// R_i: c_{i+1} + v t_i, v ∈ [from, to], from ≥ 0. Needs M ≥ 3 points and a turn at every
+/// interior vertex (consecutive edge lines that coincide bound no face).
+pub fn tangent_surface(points: &[DVec3], span: Span) -> Result<RuledSurface> {
+    let span = span.checked(true)?;
+    checked_directrix(points, 3)?;
+    let t = edge_directions(points);
+    for (i, w) in t.windows(2).enumerate() {
+        if w[0].cross(w[1]).length() < PARALLEL_SIN {
+            return Err(Error::degenerate("directrix", msg!("directrix-no-turn-at", point = i + 1)));
+        }
+    }
+    strip(t.iter().enumerate().map(|(i, &d)| (points[i + 1], d)), span)
+}
+
+/// The cone over the directrix with apex `apex` (see the module): R_i: A + s (c_i − A),
+/// s ∈ [from, to], from ≥ 0. Needs M ≥ 2 points, none at the apex, and no two consecutive ones
+/// in line with it.
+pub fn cone(points: &[DVec3], apex: DVec3, span: Span) -> Result<RuledSurface> {
+    let span = span.checked(true)?;
+    checked_directrix(points, 2)?;
+    crate::base::check_coordinates(&apex.to_array(), 3)
+        .map_err(|_| Error::parameter("apex", msg!("apex-not-finite")))?;
+    let scale = points.iter().fold(apex.length(), |m, p| m.max(p.length()));
+    for (i, p) in points.iter().enumerate() {
+        if (*p - apex).length() <= ZERO_LENGTH_REL * scale {
+            return Err(Error::degenerate("apex", msg!("apex-on-directrix", point = i)));
+        }
+    }
+    for (i, w) in points.windows(2).enumerate() {
+        if (w[0] - apex).normalize().cross((w[1] - apex).normalize()).length() < PARALLEL_SIN {
+            return Err(Error::degenerate("apex", msg!("apex-in-line", edge = i, next = i + 1)));
+        }
+    }
+    strip(points.iter().map(|&p| (apex, p - apex)), span)
+}
+
+/// The cylinder over the directrix with rulings along `direction` (see the module):
+/// R_i: c_i + v d, v ∈ [from, to], d = direction/|direction|. Needs M ≥ 2 points and no edge of
+/// the directrix along d.
+pub fn cylinder(points: &[DVec3], direction: DVec3, span: Span) -> Result<RuledSurface> {
+    let span = span.checked(false)?;
+    checked_directrix(points, 2)?;
+    let d = direction
+        .try_normalize()
+        .filter(|_| direction.is_finite())
+        .ok_or_else(|| Error::parameter("direction", msg!("direction-zero")))?;
+    for (i, t) in edge_directions(points).iter().enumerate() {
+        if t.cross(d).length() < PARALLEL_SIN {
+            return Err(Error::degenerate("direction", msg!("edge-along-rulings", edge = i)));
+        }
+    }
+    strip(points.iter().map(|&p| (p, d)), span)
+}
+
+/// The discrete rectifying developable of the directrix (see the module): a ruling r_i through
+/// every c_i, R_i: c_i + v r_i, v ∈ [from, to] (r_i unit). Needs M ≥ 3 points and a turn at some
+/// vertex; no edge may run along the ruling at its start.
+pub fn rectifying_developable(points: &[DVec3], span: Span) -> Result<RuledSurface> {
+    let span = span.checked(false)?;
+    checked_directrix(points, 3)?;
+    let r = rectifying_rulings(points)?;
+    strip(points.iter().copied().zip(r), span)
+}
+
+/// The unit rulings r_0 … r_{M−1} of the rectifying developable (see the module).
+fn rectifying_rulings(points: &[DVec3]) -> Result<Vec<DVec3>> {
+    let t = edge_directions(points);
+    let m = points.len();
+    // the turn at interior vertex i (1 … M − 2): T_i − T_{i−1}
+    let turn = |i: usize| t[i] - t[i - 1];
+    let turning = |i: usize| t[i - 1].cross(t[i]).length() >= PARALLEL_SIN;
+    let k =
+        (1..m - 1).find(|&k| turning(k)).ok_or_else(|| Error::degenerate("directrix", msg!("directrix-straight")))?;
+    // the plane of the rulings that keep the equal angles at c_k: spanned by the binormal and the
+    // mean tangent there; the ruling at angle θ in it
+    let b = t[k - 1].cross(t[k]).normalize();
+    let mean = (t[k - 1] + t[k]).normalize();
+    let start = |theta: f64| b * theta.cos() + mean * theta.sin();
+    let rough = |theta: f64| match propagate(&t, k, start(theta), &turn) {
+        Ok(r) => r.windows(3).map(|w| (w[2] - 2.0 * w[1] + w[0]).length_squared()).sum::<f64>(),
+        Err(_) => f64::INFINITY,
+    };
+    // the recurrence has a one-parameter family of solutions (every start at c_k); all but one
+    // zig-zag with an amplitude that persists along the strip. The smooth one, whose limit is the
+    // Darboux vector, is the start with the least second differences: a scan, then golden sections
+    const SCAN: usize = 181;
+    let step = std::f64::consts::PI / (SCAN - 1) as f64;
+    let best = (0..SCAN)
+        .map(|j| -std::f64::consts::FRAC_PI_2 + j as f64 * step)
+        .map(|theta| (theta, rough(theta)))
+        .fold((0.0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+    let (mut lo, mut hi) = (best.0 - step, best.0 + step);
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    for _ in 0..60 {
+        let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if rough(x1) <= rough(x2) {
+            hi = x2;
+        } else {
+            lo = x1;
+        }
+    }
+    propagate(&t, k, start((lo + hi) / 2.0), &turn)
+}
+
+/// The rulings from `rk` at vertex k along the recurrence (see the module), forwards and
+/// backwards; a vertex without a turn (and an end) repeats the ruling before it on the way.
+fn propagate(t: &[DVec3], k: usize, rk: DVec3, turn: &dyn Fn(usize) -> DVec3) -> Result<Vec<DVec3>> {
+    let m = t.len() + 1;
+    let mut r = vec![DVec3::ZERO; m];
+    r[k] = rk;
+    // r_i in the plane of T_j and r_j (j the vertex before, on the way), orthogonal to the turn at i
+    let next = |previous: DVec3, edge: DVec3, turn_here: Option<DVec3>, vertex: usize| -> Result<DVec3> {
+        let plane = edge.cross(previous);
+        if plane.length() < PARALLEL_SIN {
+            return Err(Error::degenerate("directrix", msg!("edge-along-ruling", point = vertex)));
+        }
+        // no turn here (the end, or a straight vertex): the equal angles hold for any ruling
+        let Some(g) = turn_here.filter(|g| g.length() >= PARALLEL_SIN).map(DVec3::normalize) else {
+            return Ok(previous);
+        };
+        let d = plane.normalize().cross(g);
+        // the plane of T and the previous ruling is orthogonal to the turn: every direction of
+        // it keeps the equal angles, the ruling repeats
+        if d.length() < PARALLEL_SIN {
+            return Ok(previous);
+        }
+        let d = d.normalize();
+        Ok(if d.dot(previous) < 0.0 { -d } else { d })
+    };
+    for i in k + 1..m {
+        let g = (i < m - 1).then(|| turn(i));
+        r[i] = next(r[i - 1], t[i - 1], g, i - 1)?;
+    }
+    for i in (0..k).rev() {
+        let g = (i > 0).then(|| turn(i));
+        r[i] = next(r[i + 1], t[i], g, i + 1)?;
+    }
+    Ok(r)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assert_near;
+    use std::f64::consts::TAU;
+
+    /// M points of the helix (r cos u, r sin u, p u), u from 0 to `turns` turns.
+    pub(crate) fn helix(m: usize, r: f64, p: f64, turns: f64) -> Vec<DVec3> {
+        (0..m)
+            .map(|i| {
+                let u = turns * TAU * i as f64 / (m - 1) as f64;
+                DVec3::new(r * u.cos(), r * u.sin(), p * u)
+            })
+            .collect()
+    }
+
+    fn max_abs_delta(s: &RuledSurface) -> f64 {
+        let inv = s.invariants();
+        inv.distribution.iter().zip(&inv.parallel).filter(|(_, &p)| !p).fold(0.0, |m, (d, _)| m.max(d.abs()))
+    }
+
+    #[test]
+    fn every_construction_makes_consecutive_rulings_coplanar() {
+        let c = helix(41, 1.0, 0.3, 1.5);
+        let span = Span { from: 0.0, to: 0.8 };
+        let strips = [
+            tangent_surface(&c, span).unwrap(),
+            cone(&c, DVec3::new(0.2, -0.1, 3.0), span).unwrap(),
+            cylinder(&c, DVec3::new(0.1, 0.2, 1.0), Span { from: -0.4, to: 0.4 }).unwrap(),
+            rectifying_developable(&c, Span { from: -0.4, to: 0.4 }).unwrap(),
+        ];
+        for s in &strips {
+            assert!(max_abs_delta(s) <= 1e-13, "|δ| = {}", max_abs_delta(s));
+        }
+        // the exact tangents of the helix at the same points are skew: δ of order H² there
+        let sampled: Vec<DVec3> = c
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &p)| {
+                let u = 1.5 * TAU * i as f64 / 40.0;
+                [p, p + 0.8 * DVec3::new(-u.sin(), u.cos(), 0.3)]
+            })
+            .collect();
+        assert!(max_abs_delta(&RuledSurface::from_points(sampled).unwrap()) > 1e-4);
+    }
+
+    #[test]
+    fn the_tangent_surface_follows_the_edges_and_starts_at_the_edge_of_regression() {
+        let c = helix(9, 1.0, 0.3, 1.0);
+        let s = tangent_surface(&c, Span { from: 0.0, to: 2.0 }).unwrap();
+        assert_eq!(s.len(), 8);
+        for i in 0..8 {
+            let seg = s.segment(i);
+            assert_near!(seg.a, c[i + 1], 1e-15);
+            assert_near!(seg.line().dir, (c[i + 1] - c[i]).normalize(), 1e-15);
+            assert_near!(seg.length(), 2.0, 1e-14);
+        }
+    }
+
+    #[test]
+    fn the_cone_passes_through_its_apex_and_the_cylinder_runs_parallel() {
+        let c = helix(7, 1.0, 0.0, 0.5);
+        let apex = DVec3::new(0.0, 0.0, 2.0);
+        let s = cone(&c, apex, Span { from: 0.25, to: 1.0 }).unwrap();
+        for (i, seg) in s.segments().enumerate() {
+            assert_near!(seg.b, c[i], 1e-15);
+            assert_near!(seg.a, apex + 0.25 * (c[i] - apex), 1e-15);
+        }
+        let s = cylinder(&c, DVec3::new(0.0, 0.0, 3.0), Span { from: -1.0, to: 2.0 }).unwrap();
+        assert!(s.invariants().parallel.iter().all(|&p| p));
+        for (i, seg) in s.segments().enumerate() {
+            assert_eq!(seg.a, c[i] - DVec3::Z);
+            assert_eq!(seg.b, c[i] + 2.0 * DVec3::Z);
+        }
+    }
+
+    /// The rectifying developable of a helix is the cylinder over it along its axis (the helix's
+    /// Darboux vector is constant), and of a plane curve the cylinder over it along the normal.
+    #[test]
+    fn the_rectifying_developable_of_a_helix_is_a_cylinder_along_its_axis() {
+        for (r, p) in [(1.0, 0.3), (0.5, -0.8), (2.0, 0.0)] {
+            let c = helix(60, r, p, 1.2);
+            let s = rectifying_developable(&c, Span { from: -0.5, to: 0.5 }).unwrap();
+            for seg in s.segments() {
+                assert_near!(seg.line().dir, DVec3::Z, 1e-9);
+            }
+        }
+    }
+
+    #[test]
+    fn the_rectifying_rulings_make_equal_angles_with_the_edges() {
+        // a curve with varying curvature and torsion
+        let c: Vec<DVec3> =
+            (0..50).map(|i| i as f64 / 49.0 * 3.0).map(|u| DVec3::new(u, 0.4 * u * u, 0.1 * u * u * u)).collect();
+        let s = rectifying_developable(&c, Span { from: -0.3, to: 0.3 }).unwrap();
+        for i in 1..49 {
+            let r = s.segment(i).line().dir;
+            let (t0, t1) = ((c[i] - c[i - 1]).normalize(), (c[i + 1] - c[i]).normalize());
+            assert_near!(r.dot(t0), r.dot(t1), 1e-13);
+        }
+        assert!(max_abs_delta(&s) <= 1e-13);
+    }
+
+    /// Every construction commutes with rigid motions: the strip of the moved directrix (and apex,
+    /// and direction) is the moved strip.
+    #[test]
+    fn the_constructions_are_invariant_under_rigid_motions() {
+        let c = helix(33, 1.0, 0.3, 1.2);
+        let q = glam::DQuat::from_axis_angle(DVec3::new(1.0, 2.0, -0.5).normalize(), 0.9);
+        let t = DVec3::new(2.0, -1.0, 4.0);
+        let m: Vec<DVec3> = c.iter().map(|p| q * *p + t).collect();
+        let (apex, dir) = (DVec3::new(0.2, -0.1, 3.0), DVec3::new(0.1, 0.2, 1.0));
+        let span = Span { from: 0.1, to: 0.9 };
+        let pairs = [
+            (tangent_surface(&c, span).unwrap(), tangent_surface(&m, span).unwrap()),
+            (cone(&c, apex, span).unwrap(), cone(&m, q * apex + t, span).unwrap()),
+            (cylinder(&c, dir, span).unwrap(), cylinder(&m, q * dir, span).unwrap()),
+            (rectifying_developable(&c, span).unwrap(), rectifying_developable(&m, span).unwrap()),
+        ];
+        for (k, (s, moved)) in pairs.iter().enumerate() {
+            for (x, y) in s.points().iter().zip(moved.points()) {
+                assert!((q * *x + t - *y).length() < 1e-9, "construction {k}: {x} {y}");
+            }
+        }
+    }
+
+    #[test]
+    fn degenerate_directrices_and_spans_are_refused_with_their_reasons() {
+        let c = helix(9, 1.0, 0.3, 1.0);
+        let span = Span { from: 0.0, to: 1.0 };
+        let reason = |e: Error| e.message().reason;
+        assert_eq!(reason(tangent_surface(&c, Span { from: -0.1, to: 1.0 }).unwrap_err()), "span-crosses-regression");
+        assert_eq!(reason(tangent_surface(&c, Span { from: 1.0, to: 1.0 }).unwrap_err()), "interval-order");
+        assert_eq!(
+            reason(cylinder(&c, DVec3::Z, Span { from: f64::NAN, to: 1.0 }).unwrap_err()),
+            "interval-not-finite"
+        );
+        let straight = [DVec3::ZERO, DVec3::X, 2.0 * DVec3::X, DVec3::new(3.0, 1.0, 0.0)];
+        assert_eq!(reason(tangent_surface(&straight, span).unwrap_err()), "directrix-no-turn-at");
+        let twice = [DVec3::ZERO, DVec3::X, DVec3::X, DVec3::Y];
+        assert_eq!(reason(cone(&twice, DVec3::Z, span).unwrap_err()), "directrix-edge-zero");
+        assert_eq!(reason(cone(&c, c[3], span).unwrap_err()), "apex-on-directrix");
+        assert_eq!(reason(cone(&[DVec3::X, 2.0 * DVec3::X], DVec3::ZERO, span).unwrap_err()), "apex-in-line");
+        assert_eq!(reason(cylinder(&c, DVec3::ZERO, span).unwrap_err()), "direction-zero");
+        assert_eq!(reason(cylinder(&[DVec3::ZERO, DVec3::Z], DVec3::Z, span).unwrap_err()), "edge-along-rulings");
+        let line = [DVec3::ZERO, DVec3::X, 2.0 * DVec3::X];
+        assert_eq!(reason(rectifying_developable(&line, span).unwrap_err()), "directrix-straight");
+        assert!(matches!(tangent_surface(&c[..2], span), Err(Error::TooFew { min: 3, .. })));
+        assert_eq!(tangent_surface(&c, span).map(|s| s.len()), Ok(8));
+    }
+}

@@ -1,0 +1,214 @@
+//! The cut line of one piece of a flat pattern: its outline with glue tabs, and the outline moved
+//! outwards by half the kerf (beyond the paper: what a plotter, a knife or a laser follows).
+//!
+//! A piece holds the rulings s … e of the pattern. Its outline runs along the images of the ends a,
+//! A_s → … → A_e, across the last ruling to B_e, back along the ends b to B_s, and across the first
+//! ruling home; points that coincide (a cone's apex) are merged, and the outline is turned
+//! counter-clockwise. A glue tab on a ruling of the outline is a trapezoid outside it: the ruling is
+//! its base (a fold line), its sides slope in by the tab's width or less, so that a short ruling
+//! gets a low tab.
+//!
+//! **Kerf.** A cutter removes a band of width k (the kerf) centred on the path it follows. So that
+//! the piece keeps its size, the path is the outline offset outwards by k/2: each edge moved along
+//! its outward normal, consecutive edges meeting at the mitre point v + (k/2)(n₀ + n₁)/(1 + n₀·n₁),
+//! and at a corner sharper than a right angle (where the mitre would stick out more than √2 · k/2)
+//! two points v + (k/2)n₀, v + (k/2)n₁ instead (a bevel).
+
+use glam::DVec2;
+
+/// A segment of a flat pattern: a score line or a ruling, and the ruling it is (none for a tab's base).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Stroke {
+    /// One end.
+    pub a: DVec2,
+    /// The other.
+    pub b: DVec2,
+    /// The ruling of the strip it is, if it is one.
+    pub ruling: Option<usize>,
+}
+
+/// Where a tab goes: on the first or the last ruling of a piece.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// The piece's first ruling, B_s → A_s in the outline.
+    First,
+    /// Its last ruling, A_e → B_e.
+    Last,
+}
+
+/// An outline with its tabs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outline {
+    /// The closed polygon, counter-clockwise (the last point joins the first).
+    pub points: Vec<DVec2>,
+    /// The tabs' bases (fold lines), with the tab's middle (where its label goes).
+    pub tab_bases: Vec<(Stroke, DVec2)>,
+}
+
+/// The signed area of a closed polygon (positive counter-clockwise).
+pub fn signed_area(points: &[DVec2]) -> f64 {
+    let n = points.len();
+    (0..n).map(|i| points[i].perp_dot(points[(i + 1) % n])).sum::<f64>() / 2.0
+}
+
+/// The perimeter of a closed polygon.
+pub fn perimeter(points: &[DVec2]) -> f64 {
+    let n = points.len();
+    (0..n).map(|i| (points[(i + 1) % n] - points[i]).length()).sum()
+}
+
+/// The outline of the piece of rulings `first ..= last` of `points` (A_i, B_i per ruling), with a
+/// tab of width `tab` on each side in `tabs` (see the module); `merge`: points closer than this are
+/// one.
+pub fn outline(points: &[DVec2], first: usize, last: usize, tabs: &[Side], tab: f64, merge: f64) -> Outline {
+    // the polygon with, for each point, what the edge leaving it is
+    let mut ring: Vec<(DVec2, Option<Side>)> = Vec::with_capacity(2 * (last - first + 1));
+    for i in first..=last {
+        ring.push((points[2 * i], (i == last).then_some(Side::Last)));
+    }
+    for i in (first..=last).rev() {
+        ring.push((points[2 * i + 1], (i == first).then_some(Side::First)));
+    }
+    // merge coinciding neighbours (keeping the tag of the edge that leaves the merged point)
+    let mut merged: Vec<(DVec2, Option<Side>)> = Vec::with_capacity(ring.len());
+    for (p, tag) in ring {
+        match merged.last_mut() {
+            Some((q, t)) if (p - *q).length() <= merge => {
+                *t = tag.or(*t);
+            }
+            _ => merged.push((p, tag)),
+        }
+    }
+    if merged.len() > 1 && (merged[0].0 - merged[merged.len() - 1].0).length() <= merge {
+        let (_, tag) = merged.pop().expect("a point");
+        merged[0].1 = merged[0].1.or(tag);
+    }
+    let pts: Vec<DVec2> = merged.iter().map(|(p, _)| *p).collect();
+    let ccw = signed_area(&pts) >= 0.0;
+    let mut out = Vec::with_capacity(pts.len() + 4);
+    let mut tab_bases = Vec::new();
+    let n = merged.len();
+    for k in 0..n {
+        let (p, tag) = merged[k];
+        out.push(p);
+        let Some(side) = tag.filter(|s| tabs.contains(s)) else { continue };
+        let q = merged[(k + 1) % n].0;
+        let along = q - p;
+        let length = along.length();
+        if length <= merge {
+            continue;
+        }
+        let d = along / length;
+        // outwards: right of the edge for a counter-clockwise polygon, left for a clockwise one
+        let outward = if ccw { DVec2::new(d.y, -d.x) } else { d.perp() };
+        let height = tab.min(0.45 * length);
+        let inset = height.min(0.3 * length);
+        let (p1, q1) = (p + d * inset + outward * height, q - d * inset + outward * height);
+        out.push(p1);
+        out.push(q1);
+        let ruling = match side {
+            Side::First => first,
+            Side::Last => last,
+        };
+        tab_bases.push((Stroke { a: p, b: q, ruling: Some(ruling) }, (p1 + q1 + p + q) / 4.0));
+    }
+    if !ccw {
+        out.reverse();
+    }
+    Outline { points: out, tab_bases }
+}
+
+/// The closed counter-clockwise polygon `points` offset outwards by `distance` (see the module;
+/// `distance` 0 gives the polygon back).
+pub fn offset(points: &[DVec2], distance: f64) -> Vec<DVec2> {
+    if distance == 0.0 || points.len() < 3 {
+        return points.to_vec();
+    }
+    let n = points.len();
+    let normal = |i: usize| {
+        let d = (points[(i + 1) % n] - points[i]).normalize_or_zero();
+        DVec2::new(d.y, -d.x)
+    };
+    let mut out = Vec::with_capacity(n + 8);
+    for i in 0..n {
+        let (n0, n1) = (normal((i + n - 1) % n), normal(i));
+        let v = points[i];
+        let c = 1.0 + n0.dot(n1);
+        // a mitre within √2 of the distance: corners of a right angle or blunter
+        if c > 1e-12 && (n0 + n1).length() / c <= std::f64::consts::SQRT_2 + 1e-12 {
+            out.push(v + distance * (n0 + n1) / c);
+        } else {
+            out.push(v + distance * n0);
+            out.push(v + distance * n1);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assert_near;
+
+    /// A strip of three unit squares: rulings at x = 0, 1, 2, 3 from y = 0 to 1.
+    fn squares() -> Vec<DVec2> {
+        (0..4).flat_map(|i| [DVec2::new(i as f64, 0.0), DVec2::new(i as f64, 1.0)]).collect()
+    }
+
+    #[test]
+    fn the_outline_runs_round_the_piece_counter_clockwise() {
+        let o = outline(&squares(), 1, 3, &[], 0.0, 1e-9);
+        assert_eq!(o.points.len(), 6);
+        assert_near!(signed_area(&o.points), 2.0, 1e-15);
+        assert_near!(perimeter(&o.points), 6.0, 1e-15);
+        // the same strip mirrored (clockwise as built) still comes out counter-clockwise
+        let mirrored: Vec<DVec2> = squares().iter().map(|p| DVec2::new(p.x, -p.y)).collect();
+        assert_near!(signed_area(&outline(&mirrored, 0, 3, &[], 0.0, 1e-9).points), 3.0, 1e-15);
+    }
+
+    #[test]
+    fn a_tab_is_a_trapezoid_outside_the_ruling_it_is_glued_on() {
+        let o = outline(&squares(), 0, 2, &[Side::Last, Side::First], 0.2, 1e-9);
+        assert_eq!(o.tab_bases.len(), 2);
+        // each tab adds the trapezoid's area: (1 + 1 − 2·0.2)/2 · 0.2
+        assert_near!(signed_area(&o.points), 2.0 + 2.0 * 0.16, 1e-14);
+        let (base, middle) = o.tab_bases[0];
+        assert_eq!(base.ruling, Some(2));
+        assert_near!((base.b - base.a).length(), 1.0, 1e-15);
+        assert!(middle.x > 2.0, "the last ruling's tab is outside: {middle:?}");
+        assert!(o.tab_bases[1].1.x < 0.0);
+        // a short ruling gets a low tab
+        let short = outline(&squares(), 0, 1, &[Side::Last], 5.0, 1e-9);
+        assert_near!(signed_area(&short.points), 1.0 + (1.0 + 0.4) / 2.0 * 0.45, 1e-14);
+    }
+
+    #[test]
+    fn a_fan_from_one_point_has_its_apex_once() {
+        let fan: Vec<DVec2> = (0..5)
+            .flat_map(|i| {
+                let u = 0.3 * i as f64;
+                [DVec2::ZERO, DVec2::new(u.cos(), u.sin())]
+            })
+            .collect();
+        let o = outline(&fan, 0, 4, &[], 0.0, 1e-9);
+        assert_eq!(o.points.len(), 6);
+    }
+
+    /// A square offset by d: a square of side 1 + 2d with the same centre; a sharp corner is
+    /// bevelled, never further than √2 · d from it.
+    #[test]
+    fn the_kerf_offset_moves_every_edge_out_by_the_distance() {
+        let square = [DVec2::ZERO, DVec2::X, DVec2::ONE, DVec2::Y];
+        let out = offset(&square, 0.1);
+        assert_near!(signed_area(&out), 1.44, 1e-14);
+        assert_near!(perimeter(&out), 4.8, 1e-14);
+        // a kite with a spike: the blunt corners mitred, the spike's tip and the sharp back bevelled
+        let kite = [DVec2::ZERO, DVec2::new(10.0, 0.5), DVec2::new(0.0, 1.0), DVec2::new(-1.0, 0.5)];
+        let out = offset(&kite, 0.1);
+        assert_eq!(out.len(), 6, "{out:?}");
+        for (k, v) in [(0, 0), (1, 1), (2, 1), (3, 2), (4, 3), (5, 3)] {
+            assert!((out[k] - kite[v]).length() <= 0.1 * std::f64::consts::SQRT_2 + 1e-12, "{k}");
+        }
+        assert_eq!(offset(&square, 0.0), square.to_vec());
+    }
+}

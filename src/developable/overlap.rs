@@ -1,0 +1,172 @@
+//! Where a flat pattern overlaps itself, and the pieces it is cut into so that none does (Section
+//! 3's development, made printable: a tangent surface of a helix over more than a turn, or a cone
+//! over more than its sector, unrolls onto itself).
+//!
+//! The pattern's faces are the quadrilaterals A_i B_i B_{i+1} A_{i+1}, each taken as its two
+//! triangles A_i B_i B_{i+1} and A_i B_{i+1} A_{i+1}. Two faces overlap when a triangle of one and a
+//! triangle of the other have interiors that meet by more than [`OVERLAP_REL`] of the pattern's
+//! size: no axis separates them (the separating-axis test, exact for convex polygons). Faces that
+//! share a ruling or only touch (at a cone's apex) do not overlap. Candidate pairs come from sorting
+//! the faces' bounding boxes along x (sweep and prune), so a pattern that does not overlap costs
+//! O(N log N).
+//!
+//! **Pieces.** A piece is a run of consecutive faces of which no two overlap; the pattern is split
+//! at rulings. Walking along the strip, a face that overlaps a face of the piece being built starts
+//! the next piece, the ruling between them becoming a cut (and a glue line). Since any part of a
+//! piece is a piece, this greedy split makes the fewest pieces.
+
+use crate::tolerance::OVERLAP_REL;
+use glam::DVec2;
+use std::ops::Range;
+
+/// The two triangles of face i of `points` (A_i, B_i per ruling).
+fn triangles(points: &[DVec2], i: usize) -> [[DVec2; 3]; 2] {
+    let (a, b, c, d) = (points[2 * i], points[2 * i + 1], points[2 * i + 3], points[2 * i + 2]);
+    [[a, b, c], [a, c, d]]
+}
+
+/// Whether the interiors of two triangles meet by more than `tol` (no separating axis among their
+/// edges' normals with the projections apart or within `tol`).
+fn triangles_overlap(s: &[DVec2; 3], t: &[DVec2; 3], tol: f64) -> bool {
+    for tri in [s, t] {
+        for k in 0..3 {
+            let edge = tri[(k + 1) % 3] - tri[k];
+            let Some(axis) = edge.perp().try_normalize() else { continue };
+            let range = |q: &[DVec2; 3]| {
+                q.iter()
+                    .map(|p| p.dot(axis))
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)))
+            };
+            let ((s0, s1), (t0, t1)) = (range(s), range(t));
+            if s1 <= t0 + tol || t1 <= s0 + tol {
+                return false;
+            }
+        }
+    }
+    // a degenerate triangle (no area) has no interior
+    let area = |q: &[DVec2; 3]| (q[1] - q[0]).perp_dot(q[2] - q[0]).abs();
+    area(s) > tol * tol && area(t) > tol * tol
+}
+
+/// The pairs of faces (i, j), i < j, whose interiors overlap (see the module), in ascending order;
+/// faces that share a ruling (j = i + 1) are compared too, so a pattern folded onto itself at a
+/// ruling shows.
+pub fn overlapping_faces(points: &[DVec2]) -> Vec<(usize, usize)> {
+    let faces = (points.len() / 2).saturating_sub(1);
+    let size = points.iter().fold(0.0f64, |m, p| m.max(p.length())).max(1.0);
+    let tol = OVERLAP_REL * size;
+    let boxes: Vec<(DVec2, DVec2)> = (0..faces)
+        .map(|i| {
+            let q = [points[2 * i], points[2 * i + 1], points[2 * i + 2], points[2 * i + 3]];
+            (q.iter().fold(q[0], |m, p| m.min(*p)), q.iter().fold(q[0], |m, p| m.max(*p)))
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..faces).collect();
+    order.sort_by(|&i, &j| boxes[i].0.x.total_cmp(&boxes[j].0.x));
+    let mut out = Vec::new();
+    for (k, &i) in order.iter().enumerate() {
+        for &j in &order[k + 1..] {
+            if boxes[j].0.x >= boxes[i].1.x - tol {
+                break;
+            }
+            let (lo, hi) = (i.min(j), i.max(j));
+            if boxes[j].0.y >= boxes[i].1.y - tol || boxes[i].0.y >= boxes[j].1.y - tol {
+                continue;
+            }
+            let (ti, tj) = (triangles(points, lo), triangles(points, hi));
+            // a face sharing ruling `hi` with the one before: its triangles next to that ruling touch it
+            if ti.iter().any(|s| tj.iter().any(|t| triangles_overlap(s, t, tol))) {
+                out.push((lo, hi));
+            }
+        }
+    }
+    out.sort_unstable();
+    out
+}
+
+/// The pieces of the pattern (see the module): runs of faces, as ranges of ruling indices — piece
+/// `r` holds the rulings `r.start ..= r.end`, and consecutive pieces share a ruling. One piece when
+/// nothing overlaps.
+pub fn pieces(points: &[DVec2], overlaps: &[(usize, usize)]) -> Vec<Range<usize>> {
+    let rulings = points.len() / 2;
+    let faces = rulings.saturating_sub(1);
+    // for each face, the latest earlier face it overlaps
+    let mut latest: Vec<Option<usize>> = vec![None; faces];
+    for &(i, j) in overlaps {
+        latest[j] = Some(latest[j].map_or(i, |k| k.max(i)));
+    }
+    let mut out = Vec::new();
+    let mut start = 0;
+    for f in 0..faces {
+        if latest[f].is_some_and(|g| g >= start) {
+            out.push(start..f);
+            start = f;
+        }
+    }
+    out.push(start..faces);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::TAU;
+
+    /// A flat annulus strip turning `turns` times about the origin: rulings from radius 1 to 2.
+    fn annulus(n: usize, turns: f64) -> Vec<DVec2> {
+        (0..n)
+            .flat_map(|i| {
+                let u = turns * TAU * i as f64 / (n - 1) as f64;
+                let d = DVec2::new(u.cos(), u.sin());
+                [d, 2.0 * d]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_strip_that_turns_less_than_once_does_not_overlap() {
+        let p = annulus(40, 0.9);
+        assert!(overlapping_faces(&p).is_empty());
+        assert_eq!(pieces(&p, &[]), std::slice::from_ref(&(0..39)));
+    }
+
+    /// Two and a half turns: every face overlaps the faces one turn before; the pieces are the
+    /// turns, each just under a full turn (the face that closes a turn touches its first face only
+    /// along a ruling, when the turn is a whole number of faces).
+    #[test]
+    fn a_strip_over_two_and_a_half_turns_is_split_into_three_pieces() {
+        let n = 101; // 100 faces, 40 per turn
+        let p = annulus(n, 2.5);
+        let overlaps = overlapping_faces(&p);
+        assert!(overlaps.contains(&(0, 40)) && overlaps.contains(&(30, 70)) && !overlaps.contains(&(0, 39)));
+        // faces one or two turns apart, give or take a face
+        assert!(overlaps.iter().all(|&(i, j)| [39, 40, 41, 79, 80, 81].contains(&(j - i))), "{overlaps:?}");
+        assert!(overlaps.contains(&(5, 85)));
+        let pieces = pieces(&p, &overlaps);
+        assert_eq!(pieces, [0..40, 40..80, 80..100]);
+        // no two faces of a piece overlap
+        for r in &pieces {
+            assert!(overlaps.iter().all(|&(i, j)| !(r.contains(&i) && r.contains(&j) && j < r.end)));
+        }
+    }
+
+    #[test]
+    fn faces_that_only_touch_do_not_overlap() {
+        // a fan about the origin (a cone unrolled from its apex): every face touches every other there
+        let p: Vec<DVec2> = (0..12)
+            .flat_map(|i| {
+                let u = 0.5 * i as f64;
+                [DVec2::ZERO, DVec2::new(u.cos(), u.sin())]
+            })
+            .collect();
+        // 11 faces of 0.5 rad: 5.5 rad, less than a turn
+        assert!(overlapping_faces(&p).is_empty());
+        // a square and its neighbour sharing an edge
+        let q = [DVec2::ZERO, DVec2::Y, DVec2::X, DVec2::new(1.0, 1.0), DVec2::new(2.0, 0.0), DVec2::new(2.0, 1.0)];
+        assert!(overlapping_faces(&q).is_empty());
+        // folded back onto itself at the middle ruling: the two faces overlap
+        let folded =
+            [DVec2::ZERO, DVec2::Y, DVec2::X, DVec2::new(1.0, 1.0), DVec2::new(0.2, 0.0), DVec2::new(0.2, 1.0)];
+        assert_eq!(overlapping_faces(&folded), [(0, 1)]);
+    }
+}

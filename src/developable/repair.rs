@@ -1,0 +1,367 @@
+//! Keeping a strip developable while its rulings are dragged (beyond the paper; its measure is
+//! Section 2's distribution parameter δ = h/φ (1), which vanishes exactly for coplanar rulings).
+//!
+//! A pair of consecutive rulings is *torsal* when its rulings are coplanar: they meet, or run
+//! parallel. A strip edited by hand breaks this at the dragged ruling: the repair finds the runs of
+//! consecutive pairs that are not torsal (|δ| above [`DEVELOPABLE_DELTA`] of the strip's size),
+//! keeps one ruling of each run as given — its *anchor* — and moves the ends b of the other rulings
+//! as little as possible until every pair is torsal again. The ends a (the strip's directrix) never
+//! move, nor do the anchors; every ruling keeps its length.
+//!
+//! **The nearest developable strip.** With the ends a fixed, pair (j, j + 1) is torsal when
+//!
+//! c_j = det(a_{j+1} − a_j, b_j − a_j, b_{j+1} − a_{j+1}) = 0,
+//!
+//! one equation in the ends b_j, b_{j+1}. The repair solves c(b) = 0 by Gauss–Newton steps of least
+//! norm, Δb = −Jᵀ (J Jᵀ)⁻¹ c, with the anchors' ends held: J Jᵀ is tridiagonal (c_j and c_{j+1} share
+//! b_{j+1}), so a step costs O(N), and the steps converge quadratically to the strip nearest the
+//! edit (in the sum of the squared moves of the ends b, to first order). The move is largest at the
+//! neighbours of the dragged ruling and fades along the strip. Each ruling is then brought back to
+//! its length along its new direction, which changes no line. Should the steps not reach the
+//! tolerance (a strip folded onto itself), a sweep outwards from each anchor turns each ruling into
+//! the plane of its predecessor and its own end a by the least angle, which makes every pair torsal
+//! by construction.
+//!
+//! **The anchor** of a run of broken pairs is its middle ruling: a dragged interior ruling breaks
+//! the two pairs it belongs to, and is their middle. A run of one pair at an end of the strip is
+//! anchored at the end ruling (the end was dragged); where a run has two middle rulings, the one
+//! whose repair moves the strip less is kept. The repair is a function of the rulings alone: the
+//! same input gives the same strip, bit for bit, and a strip that is already developable comes back
+//! unchanged.
+
+use crate::ruled::invariants::PairInvariants;
+use crate::ruled::RuledSurface;
+use crate::tolerance::{DEVELOPABLE_DELTA, REPAIR_STEPS, ZERO_LENGTH_REL};
+use glam::DVec3;
+
+/// A strip made developable, and what the repair did.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Repair {
+    /// The strip, every pair of consecutive rulings torsal.
+    pub surface: RuledSurface,
+    /// The rulings that were turned (ascending).
+    pub turned: Vec<usize>,
+    /// The rulings kept as given as anchors of the broken runs (ascending).
+    pub anchors: Vec<usize>,
+    /// Gauss–Newton steps taken.
+    pub steps: usize,
+}
+
+/// The diagonal of the bounding box of `points`, at least 1: the size against which δ is judged.
+pub fn size_of(points: &[DVec3]) -> f64 {
+    let (lo, hi) = points
+        .iter()
+        .fold((DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)), |(lo, hi), &p| (lo.min(p), hi.max(p)));
+    (hi - lo).length().max(1.0)
+}
+
+/// The largest |δ_{i,i+1}| (1) of the pairs that are not parallel (0 for a strip of parallel
+/// rulings), and the pair where it is.
+pub fn max_abs_delta(surface: &RuledSurface) -> (f64, Option<usize>) {
+    let inv = surface.invariants();
+    let mut worst = (0.0, None);
+    for (i, (&d, &parallel)) in inv.distribution.iter().zip(&inv.parallel).enumerate() {
+        if !parallel && d.abs() > worst.0 {
+            worst = (d.abs(), Some(i));
+        }
+    }
+    worst
+}
+
+/// Whether the pair (j, j + 1) of `p` (endpoints a_0, b_0, a_1, …) is not torsal.
+fn broken(p: &[DVec3], j: usize, scale: f64) -> bool {
+    let pair = PairInvariants::of(&line(p, j), &line(p, j + 1));
+    !pair.is_parallel() && pair.distribution().abs() > DEVELOPABLE_DELTA * scale
+}
+
+/// Ruling i of `p` as a line.
+fn line(p: &[DVec3], i: usize) -> crate::line::Line {
+    crate::line::Segment::new(p[2 * i], p[2 * i + 1]).line()
+}
+
+/// The anchors of the runs of broken pairs of `p` (see the module).
+fn anchors(p: &[DVec3], n: usize, scale: f64) -> Vec<usize> {
+    let mut out = Vec::new();
+    let mut j = 0;
+    while j + 1 < n {
+        if !broken(p, j, scale) {
+            j += 1;
+            continue;
+        }
+        // pairs s ..= e are broken: rulings s ..= t
+        let s = j;
+        let mut e = j;
+        while e + 2 < n && broken(p, e + 1, scale) {
+            e += 1;
+        }
+        let t = e + 1;
+        let k = if s == 0 && t == 1 {
+            0
+        } else if t == n - 1 && s == n - 2 {
+            n - 1
+        } else if (t - s) % 2 == 0 {
+            (s + t) / 2
+        } else {
+            // two middles: the one whose repair (of this run alone) moves the ends b less
+            let k = (s + t) / 2;
+            let moved = |k: usize| {
+                let mut q = p.to_vec();
+                solve(&mut q, n, &[k]);
+                q.iter().zip(p).map(|(x, y)| (*x - *y).length_squared()).sum::<f64>()
+            };
+            if moved(k + 1) < moved(k) {
+                k + 1
+            } else {
+                k
+            }
+        };
+        out.push(k);
+        j = t;
+    }
+    out
+}
+
+/// c_j (see the module) and its gradients with respect to b_j and b_{j+1}, and the product of the
+/// three lengths it is relative to.
+fn constraint(p: &[DVec3], j: usize) -> (f64, DVec3, DVec3, f64) {
+    let d = p[2 * j + 2] - p[2 * j];
+    let (u, v) = (p[2 * j + 1] - p[2 * j], p[2 * j + 3] - p[2 * j + 2]);
+    // det(d, u, v) = u · (v × d) = v · (d × u)
+    (u.dot(v.cross(d)), v.cross(d), d.cross(u), d.length() * u.length() * v.length())
+}
+
+/// Gauss–Newton steps of least norm on the ends b of `p`, the rulings `held` fixed, until every c_j
+/// is at rounding level (or [`REPAIR_STEPS`] steps); then each ruling back to its length. Returns
+/// the steps taken.
+fn solve(p: &mut [DVec3], n: usize, held: &[usize]) -> usize {
+    let lengths: Vec<f64> = (0..n).map(|i| (p[2 * i + 1] - p[2 * i]).length()).collect();
+    let free = |i: usize| !held.contains(&i);
+    let m = n - 1;
+    let (mut diag, mut off, mut rhs) = (vec![0.0; m], vec![0.0; m], vec![0.0; m]);
+    let mut grads = vec![(DVec3::ZERO, DVec3::ZERO); m];
+    let mut steps = 0;
+    for _ in 0..REPAIR_STEPS {
+        let mut worst = 0.0f64;
+        for j in 0..m {
+            let (c, gj, gk) = {
+                let (c, gj, gk, size) = constraint(p, j);
+                worst = worst.max(c.abs() / size.max(f64::MIN_POSITIVE));
+                (c, if free(j) { gj } else { DVec3::ZERO }, if free(j + 1) { gk } else { DVec3::ZERO })
+            };
+            grads[j] = (gj, gk);
+            rhs[j] = c;
+        }
+        // at rounding level: c relative to the lengths it is made of
+        if worst <= 4.0 * f64::EPSILON {
+            break;
+        }
+        for j in 0..m {
+            diag[j] = grads[j].0.length_squared() + grads[j].1.length_squared();
+            off[j] = if j + 1 < m { grads[j].1.dot(grads[j + 1].0) } else { 0.0 };
+        }
+        // (J Jᵀ) λ = c by the tridiagonal elimination; a pair both of whose rulings are held (or
+        // whose gradients vanish) cannot move and is left out
+        let tiny = 1e-300 + 1e-24 * diag.iter().fold(0.0f64, |a, &b| a.max(b));
+        let mut lambda = rhs.clone();
+        let mut pivot = diag.clone();
+        for j in 1..m {
+            if pivot[j - 1] > tiny {
+                let f = off[j - 1] / pivot[j - 1];
+                pivot[j] -= f * off[j - 1];
+                lambda[j] -= f * lambda[j - 1];
+            }
+        }
+        for j in (0..m).rev() {
+            if pivot[j] <= tiny {
+                lambda[j] = 0.0;
+                continue;
+            }
+            let next = if j + 1 < m { off[j] * lambda[j + 1] } else { 0.0 };
+            lambda[j] = (lambda[j] - next) / pivot[j];
+        }
+        for j in 0..m {
+            p[2 * j + 1] -= lambda[j] * grads[j].0;
+            p[2 * j + 3] -= lambda[j] * grads[j].1;
+        }
+        steps += 1;
+    }
+    for i in (0..n).filter(|&i| free(i)) {
+        let dir = (p[2 * i + 1] - p[2 * i]).try_normalize().unwrap_or(DVec3::X);
+        p[2 * i + 1] = p[2 * i] + lengths[i] * dir;
+    }
+    steps
+}
+
+/// Turns ruling `j` about its end a, by the least angle, into the plane through ruling `f` and a_j.
+fn turn_into_plane(p: &mut [DVec3], j: usize, f: usize, scale: f64) {
+    let (a, b) = (p[2 * j], p[2 * j + 1]);
+    let (old, length) = ((b - a).normalize(), (b - a).length());
+    let lf = line(p, f);
+    // the plane through the line of f and a_j (or b_j, where a_j lies on that line)
+    let through = |q: DVec3| lf.dir.cross(q - lf.point);
+    let Some(normal) =
+        [through(a), through(b)].into_iter().find(|n| n.length() > ZERO_LENGTH_REL * scale).map(DVec3::normalize)
+    else {
+        return; // ruling j lies on the line of f: torsal already
+    };
+    let dir = old.reject_from_normalized(normal).try_normalize().unwrap_or(lf.dir);
+    p[2 * j + 1] = a + length * dir;
+}
+
+/// The safety net (see the module): from each anchor outwards, every ruling of a broken pair turned
+/// into the plane of the ruling before it on the way and its own end a.
+fn sweep(p: &mut [DVec3], n: usize, anchors: &[usize], scale: f64) {
+    for &k in anchors {
+        for j in k + 1..n {
+            if broken(p, j - 1, scale) && !anchors.contains(&j) {
+                turn_into_plane(p, j, j - 1, scale);
+            }
+        }
+        for j in (0..k).rev() {
+            if broken(p, j, scale) && !anchors.contains(&j) {
+                turn_into_plane(p, j, j + 1, scale);
+            }
+        }
+    }
+}
+
+/// The strip made developable (see the module): every pair of consecutive rulings torsal, the ends
+/// a unmoved, the anchors kept. O(N) per step.
+pub fn make_developable(surface: &RuledSurface) -> Repair {
+    let n = surface.len();
+    let mut p = surface.points().to_vec();
+    let scale = size_of(&p);
+    let anchors = anchors(&p, n, scale);
+    if anchors.is_empty() {
+        return Repair { surface: surface.clone(), turned: Vec::new(), anchors, steps: 0 };
+    }
+    let steps = solve(&mut p, n, &anchors);
+    if (0..n - 1).any(|j| broken(&p, j, scale)) {
+        sweep(&mut p, n, &anchors, scale);
+    }
+    let turned = (0..n).filter(|&i| p[2 * i + 1] != surface.points()[2 * i + 1]).collect();
+    Repair { surface: RuledSurface::from_trusted_points(p), turned, anchors, steps }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::developable::construct::{cone, tangent_surface, Span};
+    use glam::DVec3;
+    use std::f64::consts::TAU;
+
+    fn helix(m: usize) -> Vec<DVec3> {
+        (0..m)
+            .map(|i| {
+                let u = 1.5 * TAU * i as f64 / (m - 1) as f64;
+                DVec3::new(u.cos(), u.sin(), 0.3 * u)
+            })
+            .collect()
+    }
+
+    /// `s` with the end b of ruling `k` moved by `by`.
+    fn dragged(s: &RuledSurface, k: usize, by: DVec3) -> RuledSurface {
+        let mut p = s.points().to_vec();
+        p[2 * k + 1] += by;
+        RuledSurface::from_points(p).unwrap()
+    }
+
+    #[test]
+    fn a_dragged_ruling_stays_and_the_strip_follows_it_nearby() {
+        let s = tangent_surface(&helix(30), Span { from: 0.1, to: 1.0 }).unwrap();
+        for k in [0, 1, 14, 27, 28] {
+            let edit = dragged(&s, k, DVec3::new(0.05, -0.03, 0.04));
+            assert!(max_abs_delta(&edit).0 > 1e-3);
+            let r = make_developable(&edit);
+            assert!(max_abs_delta(&r.surface).0 <= 1e-13, "ruling {k}: {:?}", max_abs_delta(&r.surface));
+            assert_eq!(r.anchors, [k]);
+            assert!((1..=8).contains(&r.steps), "{} steps", r.steps);
+            assert_eq!(r.surface.segment(k), edit.segment(k), "the dragged ruling is kept as given");
+            let moved: Vec<f64> = (0..29).map(|i| (r.surface.segment(i).b - edit.segment(i).b).length()).collect();
+            for i in 0..29 {
+                assert_eq!(r.surface.segment(i).a, s.segment(i).a, "the ends a stay");
+                assert!((r.surface.segment(i).length() - edit.segment(i).length()).abs() < 1e-14);
+            }
+            // the move is largest beside the dragged ruling and fades along the strip
+            let near = moved[k.saturating_sub(1)].max(moved[(k + 1).min(28)]);
+            let far = (0..29usize).filter(|&i| i.abs_diff(k) >= 4).fold(0.0f64, |m, i| m.max(moved[i]));
+            assert!(near > 2.0 * far, "ruling {k}: {moved:?}");
+        }
+    }
+
+    /// The least-norm steps move the strip less than turning every ruling after the dragged one
+    /// into its predecessor's plane (the safety net) does.
+    #[test]
+    fn the_repair_moves_the_strip_less_than_the_sweep() {
+        let s = cone(&helix(25), DVec3::new(0.0, 0.0, 4.0), Span { from: 0.2, to: 1.0 }).unwrap();
+        let edit = dragged(&s, 12, DVec3::new(0.1, 0.05, -0.08));
+        let moved = |q: &[DVec3]| q.iter().zip(edit.points()).map(|(x, y)| (*x - *y).length_squared()).sum::<f64>();
+        let repaired = make_developable(&edit).surface;
+        let mut swept = edit.points().to_vec();
+        let scale = size_of(&swept);
+        sweep(&mut swept, 25, &[12], scale);
+        let swept = RuledSurface::from_points(swept).unwrap();
+        assert!(max_abs_delta(&swept).0 <= 1e-13);
+        assert!(moved(repaired.points()) < 0.5 * moved(swept.points()));
+    }
+
+    #[test]
+    fn a_developable_strip_comes_back_unchanged_and_the_repair_is_idempotent() {
+        let s = cone(&helix(25), DVec3::new(0.0, 0.0, 4.0), Span { from: 0.2, to: 1.0 }).unwrap();
+        let r = make_developable(&s);
+        assert_eq!(r.surface, s);
+        assert!(r.turned.is_empty() && r.anchors.is_empty());
+        let edit = dragged(&s, 7, DVec3::new(0.2, 0.1, -0.1));
+        let once = make_developable(&edit).surface;
+        assert_eq!(make_developable(&once).surface, once);
+    }
+
+    /// Random rulings, nowhere torsal: one run, repaired from its middle outwards.
+    #[test]
+    fn rulings_in_general_position_become_a_developable_strip() {
+        let mut seed = 7u64;
+        let mut r = || crate::tolerance::test::uniform(&mut seed) * 2.0 - 1.0;
+        let points: Vec<DVec3> = (0..40)
+            .flat_map(|i| {
+                let a = DVec3::new(i as f64 * 0.1, r() * 0.05, r() * 0.05);
+                [a, a + DVec3::new(r() * 0.3, 1.0, r() * 0.3)]
+            })
+            .collect();
+        let s = RuledSurface::from_points(points).unwrap();
+        let out = make_developable(&s);
+        // 39 broken pairs, rulings 0 … 39: two middles, 19 and 20
+        assert!(out.anchors == [19] || out.anchors == [20], "{:?}", out.anchors);
+        // relative to the strip's size, as the tolerance is stated (δ = h/φ magnifies the rounding
+        // of h where the repaired rulings meet at small angles)
+        let size = size_of(out.surface.points());
+        assert!(max_abs_delta(&out.surface).0 <= DEVELOPABLE_DELTA * size, "{:?} {size}", max_abs_delta(&out.surface));
+    }
+
+    /// The repair commutes with rigid motions: repairing a moved edit gives the moved repair.
+    #[test]
+    fn the_repair_is_invariant_under_rigid_motions() {
+        let s = tangent_surface(&helix(30), Span { from: 0.1, to: 1.0 }).unwrap();
+        let edit = dragged(&s, 9, DVec3::new(0.04, 0.07, -0.05));
+        let q = glam::DQuat::from_axis_angle(DVec3::new(0.3, -1.0, 2.0).normalize(), 2.3);
+        let t = DVec3::new(-3.0, 1.5, 7.0);
+        let moved = edit.map_points(|p| q * p + t).unwrap();
+        let (a, b) = (make_developable(&edit), make_developable(&moved));
+        assert_eq!(a.anchors, b.anchors);
+        for (x, y) in a.surface.points().iter().zip(b.surface.points()) {
+            assert!((q * *x + t - *y).length() < 1e-12, "{x} {y}");
+        }
+    }
+
+    /// A flat strip of parallel rulings, one of them tilted out of its plane: the strip twists to
+    /// follow it.
+    #[test]
+    fn a_flat_strip_twists_to_follow_a_tilted_ruling() {
+        let points: Vec<DVec3> =
+            (0..10).flat_map(|i| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(i as f64 + 0.1, 1.0, 0.0)]).collect();
+        let s = RuledSurface::from_points(points).unwrap();
+        let r = make_developable(&dragged(&s, 3, DVec3::new(0.0, 0.0, 0.2)));
+        assert_eq!(r.anchors, [3]);
+        assert!(max_abs_delta(&r.surface).0 <= 1e-12, "{:?}", max_abs_delta(&r.surface));
+        assert!(r.turned.contains(&2) && r.turned.contains(&4));
+    }
+}

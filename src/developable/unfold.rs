@@ -1,0 +1,317 @@
+//! The exact unfolding of a discrete developable strip onto the plane (Section 3: the development
+//! of a developable surface, here face by face rather than through its conoidal model).
+//!
+//! Each face a_i b_i b_{i+1} a_{i+1} of a developable strip is a plane quadrilateral (its rulings
+//! are coplanar). The unfolding lays ruling 0 along the x-axis from the origin and then each face in
+//! turn against the ruling it shares with the face before: in the face's own frame — u along ruling
+//! i, w orthogonal to it in the face, towards ruling i + 1 — the points of ruling i + 1 have the
+//! coordinates x = (p − a_i)·u, y = (p − a_i)·w, which the plane frame of ruling i's image takes
+//! over. The face goes on the other side of the shared ruling than the face before it (a strip
+//! unrolls, it does not fold back), the first one to the left of ruling 0. Every distance within a
+//! face, and so every edge length and every angle, is kept to rounding.
+//!
+//! For a developable strip the unfolding is congruent to Section 3's development through the
+//! conoidal model ([`crate::ruled::Development`], tested): bending the hinge chain of a strip whose
+//! consecutive rulings meet flattens it, and the projection then changes nothing.
+
+use super::repair::{max_abs_delta, size_of};
+use crate::error::{Error, Result};
+use crate::msg;
+use crate::ruled::RuledSurface;
+use crate::tolerance::{DEVELOPABLE_DELTA, ZERO_LENGTH_REL};
+use glam::{DVec2, DVec3};
+
+/// A strip unfolded onto the plane: the images A_i, B_i of its ends a_i, b_i.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unfolding {
+    /// A_0, B_0, A_1, B_1, ….
+    pub points: Vec<DVec2>,
+}
+
+/// How far a flat pattern is from an isometry of the strip it was made from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IsometryError {
+    /// The largest relative change of a distance between two corners of a face (its four edges and
+    /// two diagonals), |ℓ′ − ℓ|/ℓ; distances below the rounding of the strip's size are compared
+    /// absolutely.
+    pub length: f64,
+    /// The largest change of a corner angle of a face, radians.
+    pub angle: f64,
+}
+
+impl Unfolding {
+    /// The exact unfolding of a developable strip (see the module). Refuses a strip with a pair of
+    /// rulings that is not torsal (|δ| above [`DEVELOPABLE_DELTA`] of its size: unfold it with
+    /// Section 3's approximate development instead) and consecutive rulings on one line (a face
+    /// without width). O(N).
+    pub fn of(surface: &RuledSurface) -> Result<Unfolding> {
+        let scale = size_of(surface.points());
+        let (delta, pair) = max_abs_delta(surface);
+        if let Some(i) = pair.filter(|_| delta > DEVELOPABLE_DELTA * scale) {
+            return Err(Error::degenerate(
+                "strip",
+                msg!("not-developable", i = i, j = i + 1, delta = delta, max = DEVELOPABLE_DELTA * scale),
+            ));
+        }
+        let p = surface.points();
+        let n = surface.len();
+        let mut out = Vec::with_capacity(2 * n);
+        out.push(DVec2::ZERO);
+        out.push(DVec2::new((p[1] - p[0]).length(), 0.0));
+        let mut side = 1.0;
+        for i in 0..n - 1 {
+            let (a, b) = (p[2 * i], p[2 * i + 1]);
+            let (a1, b1) = (p[2 * i + 2], p[2 * i + 3]);
+            let u = (b - a).normalize();
+            // w: in the face, orthogonal to ruling i, towards ruling i + 1
+            let w = [(a1 + b1) * 0.5, a1, b1]
+                .into_iter()
+                .map(|q| (q - a).reject_from_normalized(u))
+                .find(|r| r.length() > ZERO_LENGTH_REL * scale)
+                .ok_or_else(|| Error::degenerate("strip", msg!("rulings-collinear", i = i, j = i + 1)))?
+                .normalize();
+            let (a2, b2) = (out[2 * i], out[2 * i + 1]);
+            let u2 = (b2 - a2).normalize();
+            if i > 0 {
+                // the face before lies on one side of ruling i's image: this one on the other
+                let before = (out[2 * i - 2] + out[2 * i - 1]) * 0.5 - a2;
+                side = if u2.perp_dot(before) > 0.0 { -1.0 } else { 1.0 };
+            }
+            let w2 = side * u2.perp();
+            let image = |q: DVec3| a2 + (q - a).dot(u) * u2 + (q - a).dot(w) * w2;
+            out.push(image(a1));
+            out.push(image(b1));
+        }
+        Ok(Unfolding { points: out })
+    }
+
+    /// The coordinates as a flat array: x, y of A_i, then of B_i, per ruling.
+    pub fn flat(&self) -> &[f64] {
+        bytemuck::cast_slice(&self.points)
+    }
+}
+
+/// How far the flat `points` (A_i, B_i per ruling) are from an isometry of `surface` (see
+/// [`IsometryError`]); `points` must have two per ruling.
+pub fn isometry_error(surface: &RuledSurface, points: &[DVec2]) -> IsometryError {
+    let p = surface.points();
+    let floor = ZERO_LENGTH_REL * size_of(p);
+    let mut out = IsometryError { length: 0.0, angle: 0.0 };
+    for i in 0..surface.len() - 1 {
+        let q3 = [p[2 * i], p[2 * i + 1], p[2 * i + 3], p[2 * i + 2]];
+        let q2 = [points[2 * i], points[2 * i + 1], points[2 * i + 3], points[2 * i + 2]];
+        for (j, k) in [(0, 1), (1, 2), (2, 3), (3, 0), (0, 2), (1, 3)] {
+            let (l3, l2) = ((q3[j] - q3[k]).length(), (q2[j] - q2[k]).length());
+            let error = if l3 > floor { (l2 - l3).abs() / l3 } else { (l2 - l3).abs() / floor.max(1.0) };
+            out.length = out.length.max(error);
+        }
+        for j in 0..4 {
+            let (e3, f3) = (q3[(j + 1) % 4] - q3[j], q3[(j + 3) % 4] - q3[j]);
+            let (e2, f2) = (q2[(j + 1) % 4] - q2[j], q2[(j + 3) % 4] - q2[j]);
+            if e3.length() > floor && f3.length() > floor {
+                let a3 = e3.cross(f3).length().atan2(e3.dot(f3));
+                let a2 = e2.perp_dot(f2).abs().atan2(e2.dot(f2));
+                out.angle = out.angle.max((a3 - a2).abs());
+            }
+        }
+    }
+    out
+}
+
+/// The faces whose two rulings cross inside their segments (the strip runs through its edge of
+/// regression there: a paper model would have to pass through itself). Rulings that only share an
+/// end, as at a cone's apex, do not cross.
+pub fn crossed_faces(points: &[DVec2]) -> Vec<usize> {
+    let n = points.len() / 2;
+    let size = points.iter().fold(0.0f64, |m, p| m.max(p.length())).max(1.0);
+    let tol = ZERO_LENGTH_REL * size;
+    (0..n.saturating_sub(1))
+        .filter(|&i| {
+            let (a, b, c, d) = (points[2 * i], points[2 * i + 1], points[2 * i + 2], points[2 * i + 3]);
+            let (d1, d2) = ((b - a).perp_dot(c - a), (b - a).perp_dot(d - a));
+            let (d3, d4) = ((d - c).perp_dot(a - c), (d - c).perp_dot(b - c));
+            let scale1 = (b - a).length();
+            let scale2 = (d - c).length();
+            d1 * d2 < 0.0
+                && d3 * d4 < 0.0
+                && d1.abs().min(d2.abs()) > tol * scale1
+                && d3.abs().min(d4.abs()) > tol * scale2
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assert_near;
+    use crate::developable::construct::{cone, cylinder, rectifying_developable, tangent_surface, Span};
+    use crate::ruled::Development;
+    use std::f64::consts::{PI, TAU};
+
+    fn helix(m: usize, r: f64, p: f64, turns: f64) -> Vec<DVec3> {
+        (0..m)
+            .map(|i| {
+                let u = turns * TAU * i as f64 / (m - 1) as f64;
+                DVec3::new(r * u.cos(), r * u.sin(), p * u)
+            })
+            .collect()
+    }
+
+    /// The discrete tangent surface of a helix develops its regression polygon onto a regular
+    /// polygon: equal edges ℓ and turns θ, on the circle of radius ℓ/(2 sin(θ/2)).
+    #[test]
+    fn the_tangent_surface_of_a_helix_unfolds_its_edge_onto_a_circle() {
+        let (r, p, m) = (1.0, 0.3, 40);
+        let c = helix(m, r, p, 1.5);
+        let s = tangent_surface(&c, Span { from: 0.0, to: 1.0 }).unwrap();
+        let flat = Unfolding::of(&s).unwrap();
+        let e = isometry_error(&s, &flat.points);
+        assert!(e.length <= 1e-12 && e.angle <= 1e-12, "{e:?}");
+        // the images of c_1 … c_{M−1} (the ends a) on a circle
+        let l = (c[1] - c[0]).length();
+        let theta = ((c[1] - c[0]).normalize()).angle_between((c[2] - c[1]).normalize());
+        let radius = l / (2.0 * (theta / 2.0).sin());
+        let a: Vec<DVec2> = (0..m - 1).map(|i| flat.points[2 * i]).collect();
+        // the centre: on the bisector of the first edge, at the distance of the circle
+        let (p0, p1) = (a[0], a[1]);
+        let mid = (p0 + p1) / 2.0;
+        let toward = (a[2] - mid).reject_from((p1 - p0).normalize()).normalize();
+        let centre = mid + toward * (radius * radius - l * l / 4.0).sqrt();
+        for q in &a {
+            assert_near!((*q - centre).length(), radius, 1e-12);
+        }
+        // the radius tends to (r² + p²)/r, the development of the smooth helix, at order 2
+        let radius_of = |m: usize| {
+            let c = helix(m, r, p, 1.5);
+            let l = (c[1] - c[0]).length();
+            let theta = (c[1] - c[0]).normalize().angle_between((c[2] - c[1]).normalize());
+            l / (2.0 * (theta / 2.0).sin())
+        };
+        let exact = (r * r + p * p) / r;
+        let errors: Vec<f64> = [20, 40, 80].iter().map(|&m| (radius_of(m) - exact).abs()).collect();
+        for w in errors.windows(2) {
+            assert!(((w[0] / w[1]).log2() - 2.0).abs() < 0.1, "{errors:?}");
+        }
+    }
+
+    /// A right circular cone of half-angle α: the rulings unfold into a fan of total angle
+    /// N·2 arcsin(sin α sin(π/N)) exactly, which tends to the sector 2π sin α.
+    #[test]
+    fn a_right_circular_cone_unfolds_into_a_sector_of_angle_two_pi_sin_alpha() {
+        let (radius, height): (f64, f64) = (1.0, 2.0);
+        let sin_alpha = radius / f64::hypot(radius, height);
+        let fan = |n: usize| {
+            let c: Vec<DVec3> = (0..=n)
+                .map(|i| {
+                    let u = TAU * i as f64 / n as f64;
+                    DVec3::new(radius * u.cos(), radius * u.sin(), 0.0)
+                })
+                .collect();
+            let s = cone(&c, DVec3::new(0.0, 0.0, height), Span { from: 0.0, to: 1.0 }).unwrap();
+            let flat = Unfolding::of(&s).unwrap();
+            let e = isometry_error(&s, &flat.points);
+            assert!(e.length <= 1e-12 && e.angle <= 1e-12, "{e:?}");
+            // every A_i at the apex's image, the B_i at slant height from it
+            let slant = (radius * radius + height * height).sqrt();
+            for i in 0..=n {
+                assert_near!(flat.points[2 * i], DVec2::ZERO, 1e-14);
+                assert_near!(flat.points[2 * i + 1].length(), slant, 1e-12);
+            }
+            let (first, last) = (flat.points[1], flat.points[2 * n + 1]);
+            // the angle from the first ruling to the last, counter-clockwise (the fan turns left)
+            let mut angle = first.angle_to(last);
+            if angle <= 0.0 {
+                angle += TAU;
+            }
+            angle
+        };
+        for n in [12, 24, 48] {
+            let exact = n as f64 * 2.0 * (sin_alpha * (PI / n as f64).sin()).asin();
+            assert_near!(fan(n), exact, 1e-12);
+        }
+        let errors: Vec<f64> = [24, 48, 96].iter().map(|&n| (fan(n) - TAU * sin_alpha).abs()).collect();
+        for w in errors.windows(2) {
+            assert!(((w[0] / w[1]).log2() - 2.0).abs() < 0.1, "{errors:?}");
+        }
+    }
+
+    /// A circular cylinder cut by the plane z = m x: the cut unrolls onto z = m R cos(s/R),
+    /// s the arc length (discretely: the chord lengths summed).
+    #[test]
+    fn an_obliquely_cut_cylinder_unrolls_its_cut_onto_a_cosine() {
+        let (r, m, n) = (1.5, 0.4, 60);
+        let c: Vec<DVec3> = (0..=n)
+            .map(|i| {
+                let u = TAU * i as f64 / n as f64;
+                DVec3::new(r * u.cos(), r * u.sin(), m * r * u.cos())
+            })
+            .collect();
+        let s = cylinder(&c, DVec3::Z, Span { from: 0.0, to: 1.0 }).unwrap();
+        let flat = Unfolding::of(&s).unwrap();
+        let chord = 2.0 * r * (PI / n as f64).sin();
+        // the rulings along ±y, the cut at x = arc length (in chords) and height z
+        let dir = (flat.points[1] - flat.points[0]).normalize();
+        for i in 0..=n {
+            let q = flat.points[2 * i];
+            let along = q.dot(dir);
+            let across = q.perp_dot(dir).abs();
+            let u = TAU * i as f64 / n as f64;
+            assert_near!(across, i as f64 * chord, 1e-12);
+            assert_near!(along, m * r * u.cos() - m * r, 1e-12);
+        }
+    }
+
+    /// The rectifying developable holds the directrix as a geodesic: it unfolds onto a line.
+    #[test]
+    fn the_rectifying_developable_unfolds_its_directrix_onto_a_straight_line() {
+        let c: Vec<DVec3> =
+            (0..80).map(|i| i as f64 / 79.0 * 4.0).map(|u| DVec3::new(u.cos() + u, u.sin(), 0.2 * u * u)).collect();
+        let s = rectifying_developable(&c, Span { from: -0.25, to: 0.25 }).unwrap();
+        let flat = Unfolding::of(&s).unwrap();
+        let e = isometry_error(&s, &flat.points);
+        assert!(e.length <= 1e-10 && e.angle <= 1e-10, "{e:?}");
+        // the directrix's point on ruling i is its midpoint (v = 0 in [−0.25, 0.25])
+        let d: Vec<DVec2> = (0..80).map(|i| (flat.points[2 * i] + flat.points[2 * i + 1]) / 2.0).collect();
+        let dir = (d[79] - d[0]).normalize();
+        for q in &d {
+            assert!((*q - d[0]).perp_dot(dir).abs() < 1e-12, "{}", (*q - d[0]).perp_dot(dir));
+        }
+    }
+
+    /// Rigid motions change nothing, and Section 3's development through the conoidal model gives
+    /// the same pattern (all distances between the corners of the pattern equal).
+    #[test]
+    fn the_unfolding_is_invariant_and_agrees_with_the_development_of_section_3() {
+        let s = tangent_surface(&helix(30, 1.0, 0.5, 1.0), Span { from: 0.2, to: 1.5 }).unwrap();
+        let q = glam::DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 0.5).normalize(), 1.1);
+        let moved = s.map_points(|p| q * p + DVec3::new(4.0, 5.0, -6.0)).unwrap();
+        let (a, b) = (Unfolding::of(&s).unwrap(), Unfolding::of(&moved).unwrap());
+        for (x, y) in a.points.iter().zip(&b.points) {
+            assert_near!(*x, *y, 1e-12);
+        }
+        let d = Development::of(&s).points;
+        for i in (0..a.points.len()).step_by(3) {
+            for j in (0..a.points.len()).step_by(5) {
+                let (l1, l2) = ((a.points[i] - a.points[j]).length(), (d[i] - d[j]).length());
+                assert_near!(l1, l2, 1e-9);
+            }
+        }
+    }
+
+    #[test]
+    fn a_skew_strip_and_collinear_rulings_are_refused() {
+        let skew = RuledSurface::from_flat(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0]).unwrap();
+        let e = Unfolding::of(&skew).unwrap_err();
+        assert_eq!((e.code(), e.message().reason), ("degenerate", "not-developable"));
+        let collinear = RuledSurface::from_flat(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 2.0, 0.0, 0.0, 3.0, 0.0, 0.0]).unwrap();
+        assert_eq!(Unfolding::of(&collinear).unwrap_err().message().reason, "rulings-collinear");
+    }
+
+    #[test]
+    fn crossed_faces_are_found_and_a_shared_apex_is_no_crossing() {
+        let bow = [DVec2::ZERO, DVec2::new(0.0, 2.0), DVec2::new(-1.0, 1.0), DVec2::new(1.0, 1.5)];
+        assert_eq!(crossed_faces(&bow), [0]);
+        let fan = [DVec2::ZERO, DVec2::new(0.0, 2.0), DVec2::ZERO, DVec2::new(1.0, 2.0)];
+        assert!(crossed_faces(&fan).is_empty());
+    }
+}
