@@ -101,7 +101,7 @@ export const scene = defineScene({
   legend: [
     { style: 'ruling', label: 'legend.rulings' },
     { style: 'lineScheme', label: 'developable.legend.pattern' },
-    { style: 'striction', label: 'developable.legend.overlap' },
+    { style: 'tangent', label: 'developable.legend.overlap' },
   ],
   /** @param {DevelopableParams} p */
   create(p, { t, input }) {
@@ -128,7 +128,7 @@ export const scene = defineScene({
         { kind: 'segments', style: 'ruling', positions: seg },
         { kind: 'segments', style: 'lineScheme', positions: flat, transform: place },
       ];
-      if (overlap.length) layers.push({ kind: 'segments', style: 'striction', positions: overlap, transform: place });
+      if (overlap.length) layers.push({ kind: 'segments', style: 'tangent', positions: overlap, transform: place });
       const pieces = pattern.pieces().length / 2;
       const delta = maxAbsDelta(segments);
       const gaps = pattern.gaps();

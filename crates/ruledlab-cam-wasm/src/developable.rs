@@ -47,8 +47,8 @@ fn vector(f: &str, name: &str, value: &JsValue) -> Result<DVec3, JsValue> {
 #[wasm_bindgen(js_name = tangentSurface)]
 pub fn tangent_surface(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
-    from: JsValue,
-    to: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] from: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] to: JsValue,
 ) -> Result<Float64Array, JsValue> {
     const F: &str = "tangentSurface";
     let (points, span) = directrix(F, &points, &from, &to)?;
@@ -61,8 +61,8 @@ pub fn tangent_surface(
 pub fn cone_surface(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] apex: JsValue,
-    from: JsValue,
-    to: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] from: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] to: JsValue,
 ) -> Result<Float64Array, JsValue> {
     const F: &str = "coneSurface";
     let (points, span) = directrix(F, &points, &from, &to)?;
@@ -76,8 +76,8 @@ pub fn cone_surface(
 pub fn cylinder_surface(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
     #[wasm_bindgen(unchecked_param_type = "Float64Array | number[]")] direction: JsValue,
-    from: JsValue,
-    to: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] from: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] to: JsValue,
 ) -> Result<Float64Array, JsValue> {
     const F: &str = "cylinderSurface";
     let (points, span) = directrix(F, &points, &from, &to)?;
@@ -90,8 +90,8 @@ pub fn cylinder_surface(
 #[wasm_bindgen(js_name = rectifyingDevelopable)]
 pub fn rectifying_developable(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] points: JsValue,
-    from: JsValue,
-    to: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] from: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "number")] to: JsValue,
 ) -> Result<Float64Array, JsValue> {
     const F: &str = "rectifyingDevelopable";
     let (points, span) = directrix(F, &points, &from, &to)?;
