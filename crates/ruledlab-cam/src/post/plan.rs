@@ -12,8 +12,9 @@ use crate::machine::Machine;
 use crate::motion::{time_blocks, BlockMotion, BlockNeed, Limit};
 use crate::solve::SolveOptions;
 use crate::stock::{Aabb, Stretch, ToolShape};
+use crate::sweep::{sweep_deviation, Move, SweptBlock};
 use crate::tolerance::{GCODE_DECIMALS, MIN_RETRACT_COS};
-use crate::{Pose, ToolEnd, ToolPath};
+use crate::{Pose, Tool, ToolEnd, ToolPath};
 use glam::DVec3;
 use ruledlab::{Arg, Error, Message, Result};
 
@@ -244,7 +245,7 @@ fn plan_named(
     }
     ops.push(Op::RetractTop(z_top));
     for k in 0..2 {
-        if home[k] != 0.0 {
+        if home[k] != 0.0 && m.rotary[k].min.is_none() && m.rotary[k].max.is_none() {
             ops.push(Op::Comment(format!(
                 "{} ends at {}, its zero a whole number of turns on: no unwinding rapid",
                 m.rotary[k].name.letter(),
@@ -254,6 +255,17 @@ fn plan_named(
     }
     ops.extend([Op::ToleranceOff, Op::Rotate(home), Op::End]);
     warnings.extend(tool_warnings(&job, &lin, namer));
+
+    // the sweep of the program as posted, and the target's deviation from it
+    let sweep = swept_blocks(&lin, how, &job, (start.near, end.near));
+    let deviation = o.target.as_ref().map(|t| {
+        let targets: Vec<DVec3> = t.iter().map(|&q| s * q).collect();
+        let tool = Tool { radius: job.radius, length: job.cutter, end: path.tool.end };
+        let d = sweep_deviation(m, job.gauge, &tool, &sweep, &targets, &mut |f| progress(0.85 + 0.1 * f));
+        let pose = namer.at(path_pose((d.at[d.worst].floor().max(0.0) as usize).min(n - 1))).0;
+        let point = targets[d.worst];
+        (d, point, pose)
+    });
 
     let facts = HeaderFacts {
         poses: n,
@@ -268,6 +280,7 @@ fn plan_named(
         motion: &motion,
         unwinds: lin.unwound.iter().filter(|x| x.is_some()).count(),
         warnings: &warnings,
+        deviation: deviation.as_ref().map(|(d, q, pose)| (d, *q, *pose)),
     };
     let mut all = header(path, o, controller, &lin.report, &facts);
     all.extend(ops);
@@ -279,7 +292,47 @@ fn plan_named(
         bounds: (job.stock.min / u, job.stock.max / u),
         units: o.units,
     };
-    Ok(Plan { ops, context, linearised: lin, motion, warnings })
+    let deviation = deviation.map(|d| d.0);
+    Ok(Plan { ops, context, linearised: lin, motion, warnings, sweep, deviation })
+}
+
+/// The blocks the controller moves the tool through (`sweep.rs`): the approach down the first
+/// pose's axis from the clearance point, the cut as the controller interpolates it, an
+/// unwinding's way out along the tool axis and back (its turn is clear of the stock), the
+/// retract; all in mm, positions along the program's poses.
+fn swept_blocks(lin: &Linearised, how: Interpolation, job: &Job, (near0, near1): (DVec3, DVec3)) -> Vec<SweptBlock> {
+    let n = lin.poses.len();
+    let cut = match how {
+        Interpolation::Machine => Move::Joints,
+        Interpolation::TcpAngles => Move::Angles,
+        Interpolation::TcpVector => Move::Vector,
+    };
+    let straight = |p: Pose, to: DVec3, j: Joints, at: f64| SweptBlock {
+        from: Pose { tip: to, axis: p.axis },
+        to: p,
+        joints: (j, j),
+        how: Move::Straight,
+        start: at,
+        span: 0.0,
+    };
+    let mut out = vec![straight(lin.poses[0], near0, lin.joints[0], 0.0)];
+    for i in 1..n {
+        out.push(SweptBlock {
+            from: lin.poses[i - 1],
+            to: lin.poses[i],
+            joints: (lin.leaving(i - 1), lin.joints[i]),
+            how: cut,
+            start: (i - 1) as f64,
+            span: 1.0,
+        });
+        if lin.unwound[i].is_some() {
+            let p = lin.poses[i];
+            let near = p.tip + (job.stock.exit(p.tip, p.axis) + job.clearance) * p.axis;
+            out.push(straight(p, near, lin.joints[i], i as f64));
+        }
+    }
+    out.push(straight(lin.poses[n - 1], near1, lin.leaving(n - 1), (n - 1) as f64));
+    out
 }
 
 /// The job in millimetres, checked.
@@ -509,17 +562,17 @@ fn top_of(m: &Machine, o: &PostOptions, job: &Job, point: DVec3, rotary: [f64; 2
     Target { xyz: if o.mode == Mode::Tcp { part.tip } else { top }, rotary, axis: part.axis }
 }
 
-/// The rotary axes' zero: the whole turn nearest where the axis stands, within its limits (a
-/// limited axis without one goes to its limit nearest 0).
+/// The rotary axes' home as the book documents it: a limited axis to 0 (its range holds no
+/// multi-turn rapid; a range without 0, to its limit nearest 0), a continuous axis to the whole
+/// turn nearest where it stands (no program ends with a multi-turn rapid).
 fn home_of(m: &Machine, rotary: [f64; 2]) -> [f64; 2] {
     [0, 1].map(|k| {
         let r = &m.rotary[k];
-        let nearest = 360.0 * (rotary[k] / 360.0).round();
-        let home = [nearest, nearest - 360.0, nearest + 360.0]
-            .into_iter()
-            .filter(|&v| r.allows(v))
-            .min_by(|a, b| (a - rotary[k]).abs().total_cmp(&(b - rotary[k]).abs()))
-            .unwrap_or_else(|| 0f64.clamp(r.min.unwrap_or(f64::NEG_INFINITY), r.max.unwrap_or(f64::INFINITY)));
+        let home = if r.min.is_none() && r.max.is_none() {
+            360.0 * (rotary[k] / 360.0).round()
+        } else {
+            0f64.clamp(r.min.unwrap_or(f64::NEG_INFINITY), r.max.unwrap_or(f64::INFINITY))
+        };
         home + 0.0
     })
 }

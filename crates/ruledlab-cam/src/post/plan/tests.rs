@@ -352,3 +352,28 @@ fn the_rotary_axes_end_without_a_multi_turn_rapid() {
     );
     assert!(p.ops.iter().any(|op| matches!(op, Op::Comment(c) if c.contains("no unwinding rapid"))));
 }
+
+/// A limited axis goes home to 0 as the book says, even where it ends on a whole turn: C limited
+/// to ±360 after one turn of the spiral ends at C360 and goes back to C0 (a rapid within its
+/// range), with no "no unwinding rapid" comment.
+#[test]
+fn a_limited_axis_goes_home_to_zero() {
+    let poses: Vec<Pose> = (0..=36)
+        .map(|k| {
+            let (t, f) = (30f64.to_radians(), (90.0 + 10.0 * k as f64).to_radians());
+            Pose {
+                tip: DVec3::new(40.0 * f.cos(), 40.0 * f.sin(), 0.0),
+                axis: DVec3::new(t.sin() * f.cos(), t.sin() * f.sin(), t.cos()),
+            }
+        })
+        .collect();
+    let path = ToolPath { poses, tool: Tool { radius: 3.0, length: 25.0, end: ToolEnd::Ball } };
+    let mut machine = Machine::preset("table-table-ac").unwrap();
+    (machine.rotary[1].min, machine.rotary[1].max) = (Some(-360.0), Some(360.0));
+    let p = plan(&path, &PostOptions { mode: Mode::Tcp, machine, ..PostOptions::default() }).unwrap();
+    let last = p.linearised.leaving(p.linearised.joints.len() - 1).rotary;
+    assert!((last[1].abs() - 360.0).abs() < 1e-6, "{last:?}");
+    let Some(Op::Rotate(home)) = p.ops.iter().rev().find(|op| matches!(op, Op::Rotate(_))).cloned() else { panic!() };
+    assert_eq!(home, [0.0, 0.0]);
+    assert!(!p.ops.iter().any(|op| matches!(op, Op::Comment(c) if c.contains("no unwinding rapid"))));
+}
