@@ -51,7 +51,7 @@ pub const CAM_MESSAGES: Catalogue = &[
         "between poses {pose} and {next} the rotary axes flip inside the cut: {tilt} from {from} to {to} while the tool axis turns {angle}°; split the cut there",
     ),
     ("retract-horizontal", "pose {pose}: the tool axis is too close to horizontal to retract along it to the safe height"),
-    ("approach-blocked", "pose {pose}: no point on its tool axis within the machine's travel from which the tool comes down clear of the stock"),
+    ("approach-blocked", "pose {pose}: no point on its tool axis within the machine's travel from which the tool comes down clear of the stock (what stays in the stock or stops it: the {part})"),
     ("unwind-blocked", "pose {pose}: a rotary axis must unwind here, and no point on the tool axis within the travel lets it turn clear of the stock"),
     // what the G-code post warns of (post/plan.rs)
     ("warn-duplicate-pose", "pose {pose} repeats pose {previous}: no block written for it"),

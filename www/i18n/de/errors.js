@@ -176,7 +176,7 @@ export default {
   'error.retract-horizontal':
     'Lage {pose}: Die Werkzeugachse liegt zu flach, um entlang ihr auf die sichere Höhe zurückzuziehen',
   'error.approach-blocked':
-    'Lage {pose}: Kein Punkt auf ihrer Werkzeugachse im Verfahrbereich, von dem das Werkzeug frei vom Rohteil herabfährt',
+    'Lage {pose}: Kein Punkt auf ihrer Werkzeugachse im Verfahrbereich, von dem das Werkzeug frei vom Rohteil herabfährt (was im Rohteil bleibt oder es aufhält: {part})',
   'error.unwind-blocked':
     'Lage {pose}: Hier muss eine Drehachse zurückdrehen, und kein Punkt der Werkzeugachse im Verfahrbereich lässt sie frei vom Rohteil drehen',
   'error.warn-duplicate-pose': 'Lage {pose} wiederholt Lage {previous}: Für sie wird kein Satz geschrieben',

@@ -178,7 +178,7 @@ export default {
   'error.retract-horizontal':
     'pose {pose}: the tool axis is too close to horizontal to retract along it to the safe height',
   'error.approach-blocked':
-    'pose {pose}: no point on its tool axis within the machine’s travel from which the tool comes down clear of the stock',
+    'pose {pose}: no point on its tool axis within the machine’s travel from which the tool comes down clear of the stock (what stays in the stock or stops it: the {part})',
   'error.unwind-blocked':
     'pose {pose}: a rotary axis must unwind here, and no point on the tool axis within the travel lets it turn clear of the stock',
   'error.warn-duplicate-pose': 'pose {pose} repeats pose {previous}: no block written for it',

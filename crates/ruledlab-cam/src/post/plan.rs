@@ -327,7 +327,7 @@ fn swept_blocks(lin: &Linearised, how: Interpolation, job: &Job, (near0, near1):
         });
         if lin.unwound[i].is_some() {
             let p = lin.poses[i];
-            let near = p.tip + (job.stock.exit(p.tip, p.axis) + job.clearance) * p.axis;
+            let near = p.tip + clear_out(job, &p) * p.axis;
             out.push(straight(p, near, lin.joints[i], i as f64));
         }
     }
@@ -502,6 +502,33 @@ fn tool_warnings(job: &Job, lin: &Linearised, namer: &Namer) -> Vec<Warning> {
     out
 }
 
+/// How far up `p`'s tool axis the tool must go for the whole cutter — not only its tip's line —
+/// to be out of the stock, plus the clearance: from where the tip's line leaves the box, on by
+/// half the cutter's radius until the cutter is clear, then halved down to 10⁻⁶ mm.
+fn clear_out(job: &Job, p: &Pose) -> f64 {
+    let out = |t: f64| job.shape.enters(p.tip + t * p.axis, p.axis, &["cutter"], &job.stock).is_none();
+    let step = (0.5 * job.radius).max(0.01);
+    let (mut inside, mut t) = (None, job.stock.exit(p.tip, p.axis));
+    for _ in 0..RAISE_STEPS * 100 {
+        if out(t) {
+            break;
+        }
+        inside = Some(t);
+        t += step;
+    }
+    if let Some(mut lo) = inside {
+        while t - lo > 1e-6 {
+            let mid = 0.5 * (lo + t);
+            if out(mid) {
+                t = mid;
+            } else {
+                lo = mid;
+            }
+        }
+    }
+    t + job.clearance
+}
+
 /// A safe point on a pose's tool axis: where the rapid down the axis turns (`point`, part
 /// frame), its part height, and the clearance point outside the stock (`near`).
 struct SafePoint {
@@ -517,12 +544,14 @@ fn safe_point(m: &Machine, job: &Job, p: &Pose, rotary: [f64; 2], pose: usize) -
     if p.axis.z < MIN_RETRACT_COS {
         return Err(Error::Unreachable { pose, line: None, message: crate::msg!("retract-horizontal", pose = pose) });
     }
-    let t_near = job.stock.exit(p.tip, p.axis) + job.clearance;
+    let t_near = clear_out(job, p);
     let near = p.tip + t_near * p.axis;
     let t_height = (job.safe_height - p.tip.z) / p.axis.z;
     let z_top = m.travel[2][1];
     let step = job.clearance.max(1.0);
     let mut t = t_height.max(t_near);
+    // what kept the tool in the stock at the last point tried: the part (none: the travel)
+    let mut blocking = "travel";
     for _ in 0..RAISE_STEPS {
         let point = p.tip + t * p.axis;
         let xyz = machine_position(m, point, rotary, job.gauge);
@@ -530,24 +559,25 @@ fn safe_point(m: &Machine, job: &Job, p: &Pose, rotary: [f64; 2], pose: usize) -
             break;
         }
         let top = DVec3::new(xyz.x, xyz.y, z_top);
-        let descent = (0..=MOTION_SAMPLES).all(|k| {
+        let all = ["cutter", "shank", "holder"];
+        let descent = (0..=MOTION_SAMPLES).find_map(|k| {
             let q = forward_kinematics(
                 m,
                 &Joints { xyz: top.lerp(xyz, k as f64 / MOTION_SAMPLES as f64), rotary },
                 job.gauge,
             );
-            job.shape.enters(q.tip, q.axis, &["cutter", "shank", "holder"], &job.stock).is_none()
+            job.shape.enters(q.tip, q.axis, &all, &job.stock)
         });
-        let down = (0..=MOTION_SAMPLES).all(|k| {
-            let q = point.lerp(near, k as f64 / MOTION_SAMPLES as f64);
-            job.shape.enters(q, p.axis, &["cutter", "shank", "holder"], &job.stock).is_none()
+        let down = (0..=MOTION_SAMPLES).find_map(|k| {
+            job.shape.enters(point.lerp(near, k as f64 / MOTION_SAMPLES as f64), p.axis, &all, &job.stock)
         });
-        if descent && down {
-            return Ok(SafePoint { point, near, height: point.z });
+        match descent.or(down) {
+            None => return Ok(SafePoint { point, near, height: point.z }),
+            Some(part) => blocking = part,
         }
         t += step;
     }
-    Err(Error::Unreachable { pose, line: None, message: crate::msg!("approach-blocked", pose = pose) })
+    Err(Error::Unreachable { pose, line: None, message: crate::msg!("approach-blocked", pose = pose, part = blocking) })
 }
 
 fn within_travel(m: &Machine, xyz: DVec3) -> bool {
@@ -593,7 +623,7 @@ fn unwind(
 ) -> Result<Vec<Op>> {
     let p = &lin.poses[i];
     let before = lin.joints[i].rotary;
-    let t_near = job.stock.exit(p.tip, p.axis) + job.clearance;
+    let t_near = clear_out(job, p);
     let near = p.tip + t_near * p.axis;
     let step = job.clearance.max(1.0);
     let all = ["cutter", "shank", "holder"];
