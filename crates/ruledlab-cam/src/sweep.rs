@@ -30,9 +30,9 @@
 //! the part (a gouge). For a point on the part's surface near the machined one this is its
 //! distance along the part's normal to first order. It is found per block by sampling s so that
 //! the tool's ends move at most [`SWEEP_STEP`]·min(r, L) between samples, then golden-section
-//! search about each sample that is a local least and could beat the best found (the distance
-//! is 1-Lipschitz in the tool's motion); a block is skipped when a sphere holding its every tool
-//! is farther than the best. Where the axis is held the distance is convex in s and the search
+//! search about each sample that is a local least and could beat the best found, nearest first
+//! (the distance is 1-Lipschitz in the tool's motion); a block is skipped when a sphere holding
+//! its every tool is farther than the nearest sample found. Where the axis is held the distance is convex in s and the search
 //! exact; the tests compare it with ≥ 10⁴ samples a block.
 
 use crate::kinematics::{forward_kinematics, tool_axis, Joints};
@@ -40,8 +40,14 @@ use crate::machine::Machine;
 use crate::{Pose, Tool, ToolEnd, ToolPath};
 use glam::DVec3;
 
-/// Most a tool's ends move between two samples of a block, as a share of min(r, L).
-pub const SWEEP_STEP: f64 = 0.25;
+/// Most a tool's ends move between two samples of a block, as a share of min(r, L): fine, so
+/// that the bound below prunes all but the nearest samples.
+pub const SWEEP_STEP: f64 = 0.02;
+
+/// What the tool may come nearer between a sample and its neighbours, as a share of the larger
+/// move of its ends to them (the motion between samples is nearly linear; the share covers its
+/// bend).
+const SLACK: f64 = 1.25;
 
 /// Most samples of one block.
 pub const MAX_SWEEP_SAMPLES: usize = 4096;
@@ -167,7 +173,7 @@ pub(crate) fn golden(lo: f64, hi: f64, f: impl Fn(f64) -> f64) -> (f64, f64) {
     let (mut a, mut b) = (lo, hi);
     let (mut x1, mut x2) = (b - g * (b - a), a + g * (b - a));
     let (mut f1, mut f2) = (f(x1), f(x2));
-    for _ in 0..60 {
+    for _ in 0..32 {
         if f1 <= f2 {
             b = x2;
             (x2, f2) = (x1, f1);
@@ -238,6 +244,7 @@ pub fn sweep_deviation(
     let mut at = Vec::with_capacity(targets.len());
     let mut order: Vec<(f64, usize)> = Vec::with_capacity(blocks.len());
     let mut values: Vec<f64> = Vec::new();
+    let mut candidates: Vec<(f64, f64, usize, usize)> = Vec::new();
     let every = (targets.len() / 50).max(1);
     for (t, &q) in targets.iter().enumerate() {
         if t % every == 0 {
@@ -246,29 +253,41 @@ pub fn sweep_deviation(
         order.clear();
         order.extend(sampled.iter().enumerate().map(|(i, s)| ((q - s.centre).length() - s.reach, i)));
         order.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let (mut best, mut where_) = (f64::INFINITY, 0.0);
+        // the samples of every block that could come nearest, each a local least of its block:
+        // (its value less what the tool can come nearer between its neighbours, block, sample)
+        candidates.clear();
+        let mut best_sample = f64::INFINITY;
         for &(bound, i) in &order {
-            if bound >= best {
+            if bound >= best_sample {
                 break;
             }
-            let (b, s) = (&blocks[i], &sampled[i]);
+            let s = &sampled[i];
             let n = s.poses.len() - 1;
             values.clear();
             values.extend(s.poses.iter().map(|p| tool_distance(q, p, r, l, end)));
             for j in 0..=n {
                 let v = values[j];
+                best_sample = best_sample.min(v);
                 let left = if j > 0 { values[j - 1] } else { f64::INFINITY };
                 let right = if j < n { values[j + 1] } else { f64::INFINITY };
-                let slack = 1.5 * s.moves[j.saturating_sub(1)].max(s.moves[j.min(n - 1)]);
-                if v > left || v > right || v - slack >= best {
-                    continue;
+                if v <= left && v <= right {
+                    let slack = SLACK * s.moves[j.saturating_sub(1)].max(s.moves[j.min(n - 1)]);
+                    candidates.push((v - slack, v, i, j));
                 }
-                let (lo, hi) = (j.saturating_sub(1) as f64 / n as f64, (j + 1).min(n) as f64 / n as f64);
-                let (x, d) = golden(lo, hi, |x| tool_distance(q, &pose_at(m, gauge, b, x), r, l, end));
-                let (x, d) = if v < d { (j as f64 / n as f64, v) } else { (x, d) };
-                if d < best {
-                    (best, where_) = (d, b.start + x * b.span);
-                }
+            }
+        }
+        candidates.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let (mut best, mut where_) = (f64::INFINITY, 0.0);
+        for &(bound, v, i, j) in &candidates {
+            if bound >= best {
+                break;
+            }
+            let (b, n) = (&blocks[i], sampled[i].poses.len() - 1);
+            let (lo, hi) = (j.saturating_sub(1) as f64 / n as f64, (j + 1).min(n) as f64 / n as f64);
+            let (x, d) = golden(lo, hi, |x| tool_distance(q, &pose_at(m, gauge, b, x), r, l, end));
+            let (x, d) = if v < d { (j as f64 / n as f64, v) } else { (x, d) };
+            if d < best {
+                (best, where_) = (d, b.start + x * b.span);
             }
         }
         points.push(best);
