@@ -369,3 +369,23 @@ test('post() measures the program as posted against a target, in the program’s
     (e) => e.details?.option === 'target' || /target/.test(e.message),
   );
 });
+
+test('inch programs default to 0.0004 in and 0.2 in; units other than mm and inch are refused with the list', () => {
+  const path = ToolPath.fromPoses([0, 0, 0, 0, 0, 1, 2, 0, 0, 0, 0, 1], { radius: 0.1, length: 1 });
+  const inch = path.post({ units: 'inch' });
+  assert.ok(Math.abs(inch.tolerance - 0.0004) < 1e-15, `${inch.tolerance}`);
+  assert.match(inch.text, /tolerance chordal 0\.0004 inch/);
+  assert.match(inch.text, /clearance 0\.2000 inch along the/);
+  const mm = path.post({});
+  assert.equal(mm.tolerance, 0.01);
+  assert.match(mm.text, /clearance 5\.0000 mm along the/);
+  for (const said of ['imperial', 'furlong']) {
+    assert.throws(() => importTarget(`# units: ${said}\n0,0,0\n1,1,1\n`), /are not known: write mm or inch/);
+    assert.throws(
+      () => importToolPoses(`# units: ${said}\n0,0,0,0,0,1\n1,0,0,0,0,1\n`),
+      /are not known: write mm or inch/,
+    );
+  }
+  assert.throws(() => importTarget('{"units": "furlong", "points": [[0, 0, 0], [1, 1, 1]]}'), /"furlong"/);
+  assert.equal(importTarget('# units: inches\n0,0,0\n1,1,1\n').units, 'inch');
+});
