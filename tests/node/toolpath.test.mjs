@@ -330,3 +330,62 @@ test('the plot’s ticks: 1, 2 or 5 times a power of ten, covering the values, w
   assert.equal(tickText(-1e-17, 0.05), '0.00');
   assert.equal(tickText(150, 50), '150');
 });
+
+test('post() measures the program as posted against a target, in the program’s units, and the header says it', () => {
+  // a ball of radius 1 along x at a constant vertical axis: its centre on z = 1, so points at z = −1
+  // are 1 from the swept ball (material left) and a point at z = 0.5 under the path is 0.5 inside
+  // it (a gouge); the approach and retract come down and go up the axis at the ends, away from them
+  const path = ToolPath.fromPoses([0, 0, 0, 0, 0, 1, 10, 0, 0, 0, 0, 1], { radius: 1, length: 5 });
+  const target = [2, 0, -1, 8, 0, -1, 5, 0, 0.5];
+  for (const [units, word, places] of [
+    ['mm', 'mm', 4],
+    ['inch', 'inch', 5],
+  ]) {
+    for (const [dialect, mode] of [
+      ['linuxcnc', 'machine'],
+      ['heidenhain', 'tcp'],
+      ['sinumerik', 'tcp'],
+    ]) {
+      const r = path.post({ dialect, mode, units, target, clearance: 0.2, tolerance: 0.001 });
+      const d = r.deviation;
+      assert.ok(d, `${units} ${dialect}`);
+      assert.ok(Math.abs(d.gouge + 0.5) < 1e-9 && Math.abs(d.leave - 1) < 1e-9, `${d.gouge} ${d.leave}`);
+      assert.ok(Math.abs(d.rms - Math.sqrt(2.25 / 3)) < 1e-9);
+      assert.deepEqual([d.worst, Array.from(d.points).map((x) => Math.round(x * 1e9) / 1e9)], [0, [1, 1, -0.5]]);
+      assert.deepEqual(d.at, [2, 0, -1]);
+      const g = (-0.5).toFixed(places);
+      assert.ok(
+        r.text.includes(
+          `deviation of the program as posted from the target, 3 points: gouge ${g} ${word}, leave ${(1).toFixed(places)} ${word}`,
+        ),
+        r.text.slice(0, 2000),
+      );
+    }
+  }
+  // no target, no deviation; a target of no points is refused by name
+  assert.equal(path.post({}).deviation, undefined);
+  assert.throws(
+    () => path.post({ target: [] }),
+    (e) => e.details?.option === 'target' || /target/.test(e.message),
+  );
+});
+
+test('inch programs default to 0.0004 in and 0.2 in; units other than mm and inch are refused with the list', () => {
+  const path = ToolPath.fromPoses([0, 0, 0, 0, 0, 1, 2, 0, 0, 0, 0, 1], { radius: 0.1, length: 1 });
+  const inch = path.post({ units: 'inch' });
+  assert.ok(Math.abs(inch.tolerance - 0.0004) < 1e-15, `${inch.tolerance}`);
+  assert.match(inch.text, /tolerance chordal 0\.0004 inch/);
+  assert.match(inch.text, /clearance 0\.2000 inch along the/);
+  const mm = path.post({});
+  assert.equal(mm.tolerance, 0.01);
+  assert.match(mm.text, /clearance 5\.0000 mm along the/);
+  for (const said of ['imperial', 'furlong']) {
+    assert.throws(() => importTarget(`# units: ${said}\n0,0,0\n1,1,1\n`), /are not known: write mm or inch/);
+    assert.throws(
+      () => importToolPoses(`# units: ${said}\n0,0,0,0,0,1\n1,0,0,0,0,1\n`),
+      /are not known: write mm or inch/,
+    );
+  }
+  assert.throws(() => importTarget('{"units": "furlong", "points": [[0, 0, 0], [1, 1, 1]]}'), /"furlong"/);
+  assert.equal(importTarget('# units: inches\n0,0,0\n1,1,1\n').units, 'inch');
+});

@@ -50,7 +50,7 @@ test('the milling scene plots the deviation and the axes along the path and writ
   assert.match(await plot.locator('g > title').nth(1).textContent(), /The rotary axes along the path/);
   const readout = await page.locator('.rl-readout').innerText();
   assert.match(readout, /poses the G-code post inserted/);
-  assert.match(readout, /max \|deviation\| of the machined surface from the target \(mm\)/);
+  assert.match(readout, /max \|deviation\| from the target of the program as posted \(mm\)/);
   assert.match(readout, /largest speed of the rotary axes \(°\/min\)\s+A [\d,]+, C [\d,]+/);
   // the worst point of the deviation is marked in the view
   assert.match(
@@ -285,7 +285,7 @@ test('a millimetre job of the user’s tool: the header and the moves say what t
   }
 });
 
-test('a target curve: the machined surface measured against it, the worst point marked, the tolerance in the plot', async () => {
+test('a target curve: the program as posted measured against it, the worst point marked, the tolerance in the plot', async () => {
   const { page, problems } = await session.open('#scene=data');
   try {
     const poses = 'x,y,z,i,j,k\n0,0,1,0,0,1\n10,0,1,0,0,1\n20,0,1,0,0,1\n30,0,1,0,0,1\n';
@@ -298,10 +298,13 @@ test('a target curve: the machined surface measured against it, the worst point 
     await page.waitForFunction(() => /~t:/.test(decodeURIComponent(location.hash)));
     await ready(page);
     const readout = await page.locator('.rl-readout').innerText();
+    // of the program as posted: the ball cuts 0.05 into the high point, leaves 0.004 on the line
     assert.match(
       readout,
-      /max \|deviation\| of the machined surface from the target \(mm\)\s+(5[.,]0+·10⁻²|0[.,]050?)\s/,
+      /max \|deviation\| from the target of the program as posted \(mm\)\s+(5[.,]0+·10⁻²|0[.,]050?)\s/,
     );
+    assert.match(readout, /deepest gouge of the program as posted \(mm\)\s+(5[.,]0+·10⁻²|0[.,]050?)\s/);
+    assert.match(readout, /most material left by the program as posted \(mm\)\s+(4[.,]0+·10⁻³|0[.,]0040?)\s/);
     assert.match(readout, /target points beyond the chordal tolerance\s+1\b/);
     assert.match((await page.locator('.rl-label').allInnerTexts()).join(' '), /worst: [−-](5[.,]0+·10⁻²|0[.,]050?) mm/);
     // the tolerance's lines in the plot: ±0.01, each titled, and their swatch in the key

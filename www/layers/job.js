@@ -15,7 +15,8 @@ const length = (/** @type {import('../scene.js').Params} */ p) => `milling.unit.
 const feed = (/** @type {import('../scene.js').Params} */ p) => `${length(p)}PerMin`;
 
 /**
- * The job's controls, added to the milling scene's parameters (lengths in the program's units).
+ * The job's controls, added to the milling scene's parameters (lengths in the program's units,
+ * to 4 decimals: an inch field keeps a ten-thousandth).
  * @type {import('../scene.js').Param[]}
  */
 export const JOB_PARAMS = [
@@ -45,7 +46,7 @@ export const JOB_PARAMS = [
     type: 'range',
     min: 0.01,
     max: 50,
-    step: 0.001,
+    step: 0.0001,
     value: 2.5,
     unit: length,
   },
@@ -55,7 +56,7 @@ export const JOB_PARAMS = [
     type: 'range',
     min: 0.1,
     max: 300,
-    step: 0.01,
+    step: 0.0001,
     value: 15,
     unit: length,
   },
@@ -65,18 +66,27 @@ export const JOB_PARAMS = [
     type: 'range',
     min: 0.1,
     max: 500,
-    step: 0.01,
+    step: 0.0001,
     value: 60,
     unit: length,
   },
-  { key: 'holder', label: 'milling.param.holder', type: 'range', min: 0, max: 100, step: 0.1, value: 16, unit: length },
+  {
+    key: 'holder',
+    label: 'milling.param.holder',
+    type: 'range',
+    min: 0,
+    max: 100,
+    step: 0.0001,
+    value: 16,
+    unit: length,
+  },
   {
     key: 'holderLength',
     label: 'milling.param.holderLength',
     type: 'range',
     min: 0,
     max: 200,
-    step: 0.1,
+    step: 0.0001,
     value: 30,
     unit: length,
   },
@@ -123,7 +133,7 @@ export const JOB_PARAMS = [
     type: 'range',
     min: 0.1,
     max: 100,
-    step: 0.1,
+    step: 0.0001,
     value: 5,
     unit: length,
   },
@@ -190,13 +200,16 @@ export function jobOptions(p, input) {
 
 /**
  * The parameters an import of tool poses opens the milling scene with: 1 unit per unit of the
- * file, in its units (millimetres unless it says inches), and the tool its file names.
+ * file, in its units (millimetres unless it says inches; in inches the tolerance 0.0004 and the
+ * clearance 0.2), and the tool its file names.
  * @param {import('../scene.js').ImportedData} data
  * @returns {import('../scene.js').Params}
  */
 export function importParams(data) {
+  const inch = data.units === 'inch';
+  // in inches the tolerance and clearance a machinist writes (the core's inch defaults)
   /** @type {import('../scene.js').Params} */
-  const params = { scale: 1, units: data.units === 'inch' ? 'inch' : 'mm' };
+  const params = inch ? { scale: 1, units: 'inch', tolerance: 0.0004, clearance: 0.2 } : { scale: 1, units: 'mm' };
   if (data.tool)
     Object.assign(params, {
       end: data.tool.end,

@@ -82,11 +82,12 @@ export function postOptions(p, input) {
  * @param {import('../../pkg/cam/ruledlab_cam.js').ToolPath} refined
  * @param {Record<string, unknown>} p
  * @param {{ stride: number, lines?: number[] }} [input]
+ * @param {Float64Array | number[] | null} [target]   the part's points the program as posted is measured against
  * @returns {{ result: import('../../pkg/cam/ruledlab_cam.js').PostResult | null, error: unknown }}
  */
-export function postOf(refined, p, input) {
+export function postOf(refined, p, input, target) {
   try {
-    return { result: refined.post(postOptions(p, input)), error: null };
+    return { result: refined.post({ ...postOptions(p, input), ...(target ? { target } : {}) }), error: null };
   } catch (error) {
     return { result: null, error };
   }

@@ -92,7 +92,21 @@ function postReadouts(post, format) {
     for (let i = 5 + 3 + k; i < post.axes.length; i += 5) m = Math.max(m, Math.abs(post.axes[i] - post.axes[i - 5]));
     return `${l} ${format(m)}`;
   });
+  const d = post.deviation;
   return [
+    // the target's deviation from the sweep of the program as posted
+    ...(d
+      ? [
+          { label: `milling.readout.posted.${u}`, value: Math.abs(d.largest) },
+          { label: `milling.readout.gouge.${u}`, value: -d.gouge },
+          { label: `milling.readout.leave.${u}`, value: d.leave },
+          { label: `milling.readout.rms.${u}`, value: d.rms },
+          {
+            label: 'milling.readout.beyond',
+            value: Array.from(d.points).filter((x) => Math.abs(x) > post.tolerance).length,
+          },
+        ]
+      : []),
     { label: 'milling.readout.inserted', value: post.inserted },
     { label: `milling.readout.linearTip.${u}`, value: post.before.tip },
     { label: `milling.readout.linearAxis.${u}`, value: post.before.axis },
@@ -216,7 +230,8 @@ export const scene = defineScene({
         layers.push({ kind: 'mesh', style: 'part', positions, indices });
       }
       // the G-code post for the machine, controller, mode and job chosen
-      const { result: post, error: postError } = postOf(refined, p, numbering);
+      // (measured against the target: the deviation of the program as posted)
+      const { result: post, error: postError } = postOf(refined, p, numbering, target);
       /** @type {import('../scene.js').Label[]} */
       const labels = [];
       // the stock box (named at its greatest corner: a label, the legend's colours being taken)
@@ -224,14 +239,17 @@ export const scene = defineScene({
         layers.push({ kind: 'segments', style: 'helper', positions: boxEdges(post.stock, scale) });
         labels.push({ at: post.stock[1].map((x) => x / scale), text: t('milling.label.stock') });
       }
-      if (surface) {
-        layers.push({ kind: 'points', style: 'resultPoint', positions: f32(surface.worstPoint) });
+      // the worst point: of the program as posted, else of the path's own sweep
+      const worst = post?.deviation
+        ? { at: post.deviation.at.map((x) => x / scale), value: post.deviation.largest }
+        : surface
+          ? { at: Array.from(surface.worstPoint), value: surface.worstDeviation * scale }
+          : null;
+      if (worst) {
+        layers.push({ kind: 'points', style: 'resultPoint', positions: f32(worst.at) });
         labels.push({
-          at: Array.from(surface.worstPoint),
-          text: t('milling.worst', {
-            value: ctx.format(surface.worstDeviation * scale),
-            units: post?.units ?? String(p.units),
-          }),
+          at: worst.at,
+          text: t('milling.worst', { value: ctx.format(worst.value), units: post?.units ?? String(p.units) }),
         });
       }
       const tolerance = Number(p.tolerance);
@@ -246,7 +264,7 @@ export const scene = defineScene({
         readouts: [
           { label: 'milling.readout.poses', value: refined.length },
           ...(profile ? [{ label: 'milling.readout.deviation', value: deviation }] : []),
-          ...(surface
+          ...(surface && !post?.deviation
             ? [
                 { label: `milling.readout.envelope.${units}`, value: Math.abs(surface.worstDeviation) * scale },
                 {
@@ -391,7 +409,8 @@ function largeJob(path, p, ctx, numbering) {
     poses: path.tips().length ? interleave(path.tips(), path.axes()) : new Float64Array(0),
     tool: drawnTool(p),
     refine: { ...SCHEMES[/** @type {keyof typeof SCHEMES} */ (p.scheme)], steps },
-    post: postOptions(p, numbering),
+    // your target, where you gave one: the program as posted is measured against it
+    post: { ...postOptions(p, numbering), ...(ctx.data?.target ? { target: ctx.data.target } : {}) },
     draw: DRAW_LIMIT,
   };
   first.later = (onProgress) =>

@@ -70,12 +70,12 @@ struct GcodeOptions {
     #[tsify(optional)]
     safe_height: Option<f64>,
     /// Distance kept from the stock along the tool axis, covered at the approach feed (default 5
-    /// mm).
+    /// mm, 0.2 inch).
     #[tsify(optional)]
     clearance: Option<f64>,
     /// The chordal tolerance: largest deviation of the controller's interpolation from the path,
-    /// the tip's and the axis's times the tool length (default 0.01 mm); blocks beyond it are
-    /// halved.
+    /// the tip's and the axis's times the tool length (default 0.01 mm, 0.0004 inch); blocks
+    /// beyond it are halved.
     #[tsify(optional)]
     tolerance: Option<f64>,
     /// The angular tolerance: largest angle of the interpolated tool axis from the path's,
@@ -106,6 +106,12 @@ struct GcodeOptions {
     /// Program name (Heidenhain, Sinumerik): letters, digits, _ (default "RULEDLAB").
     #[tsify(optional)]
     name: Option<String>,
+    /// The part's points the program is measured against (3 numbers per point, model units like
+    /// the path): `post` then gives the deviation of the program as posted and the header states
+    /// it.
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array | Float32Array | number[]", optional)]
+    target: JsValue,
 }
 
 /// A tool holder: radius and length (program units), down from the gauge line.
@@ -282,7 +288,12 @@ pub(super) fn read_post_options(func: &'static str, options: JsValue) -> Result<
             [("holder", args::fields::<HolderOptions>()), ("input", args::fields::<InputNumbering>())];
         args::required(func, "options", options, &nested)?
     };
-    let d = ruledlab_cam::PostOptions::default();
+    let units = match o.units {
+        None | Some(UnitsName::Mm) => ruledlab_cam::Units::Mm,
+        Some(UnitsName::Inch) => ruledlab_cam::Units::Inch,
+    };
+    // the defaults in the program's units (0.0004 in and 0.2 in for inches)
+    let d = ruledlab_cam::PostOptions::defaults_in(units);
     let machine = if o.machine.is_undefined() || o.machine.is_null() {
         d.machine.clone()
     } else if let Some(name) = o.machine.as_string() {
@@ -309,6 +320,13 @@ pub(super) fn read_post_options(func: &'static str, options: JsValue) -> Result<
             Some(ruledlab_cam::Numbering { stride, lines })
         }
     };
+    let target = if o.target.is_undefined() || o.target.is_null() {
+        None
+    } else {
+        let flat = args::numbers(func, "target", &o.target)?;
+        let points = ruledlab::points_from_flat(&flat).map_err(|e| fail_option(func, "target", e.to_string()))?;
+        Some(points)
+    };
     let finite3 = |name: &'static str, v: Option<[[f64; 3]; 2]>| -> Result<Option<[[f64; 3]; 2]>, JsValue> {
         if let Some(v) = v {
             for x in v.iter().flatten() {
@@ -328,10 +346,7 @@ pub(super) fn read_post_options(func: &'static str, options: JsValue) -> Result<
             Some(ModeName::Tcp) => ruledlab_cam::Mode::Tcp,
         },
         machine,
-        units: match o.units {
-            None | Some(UnitsName::Mm) => ruledlab_cam::Units::Mm,
-            Some(UnitsName::Inch) => ruledlab_cam::Units::Inch,
-        },
+        units,
         feed: finite_option(func, "feed", o.feed)?.unwrap_or(d.feed),
         approach_feed: finite_option(func, "approachFeed", o.approach_feed)?,
         scale: finite_option(func, "scale", o.scale)?.unwrap_or(d.scale),
@@ -364,5 +379,6 @@ pub(super) fn read_post_options(func: &'static str, options: JsValue) -> Result<
         pole_cone: finite_option(func, "poleCone", o.pole_cone)?.unwrap_or(d.pole_cone),
         numbering,
         name: o.name.unwrap_or(d.name),
+        target,
     })
 }

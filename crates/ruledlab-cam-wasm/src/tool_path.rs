@@ -134,6 +134,35 @@ struct PostResult {
     /// The stock the rapids were checked against: [[xmin, ymin, zmin], [xmax, ymax, zmax]], part
     /// frame, program units.
     stock: [[f64; 3]; 2],
+    /// Where the options give a target: its deviation from the sweep of the program as posted
+    /// (the tool moved through the blocks as the controller interpolates them), program units.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[tsify(optional)]
+    deviation: Option<PostDeviation>,
+}
+
+/// The deviation of the target from the sweep of the program as posted, program units.
+#[derive(Serialize, Tsify)]
+#[serde(rename_all = "camelCase")]
+struct PostDeviation {
+    /// The deepest gouge (≤ 0: the least signed distance, 0 where none cuts in).
+    gouge: f64,
+    /// The most material left (≥ 0).
+    leave: f64,
+    /// The root mean square of the target points' deviations.
+    rms: f64,
+    /// Where the largest |deviation| is: the target point (3 numbers, program units, part frame).
+    at: [f64; 3],
+    /// That deviation.
+    largest: f64,
+    /// The target point's index.
+    worst: usize,
+    /// Where along the program's poses the nearest tool is (k + s between poses k and k + 1).
+    pose: f64,
+    /// Per target point: its signed distance from the sweep (> 0 left, < 0 cut into).
+    #[serde(with = "serde_wasm_bindgen::preserve")]
+    #[tsify(type = "Float64Array")]
+    points: Float64Array,
 }
 
 /// A warning of the post, naming the pose (of the input where `input` told its numbering).
@@ -610,6 +639,20 @@ impl ToolPath {
             })
             .collect();
         let m = &o.machine;
+        let deviation = p.deviation.as_ref().map(|d| {
+            let q = o.target.as_ref().map_or(DVec3::ZERO, |t| t[d.worst] * o.scale);
+            let points: Vec<f64> = d.points.iter().map(|x| x / u).collect();
+            PostDeviation {
+                gouge: d.gouge / u,
+                leave: d.leave / u,
+                rms: d.rms / u,
+                at: q.to_array(),
+                largest: d.largest() / u,
+                worst: d.worst,
+                pose: d.at[d.worst],
+                points: Float64Array::from(&points[..]),
+            }
+        });
         to_js(
             F,
             &PostResult {
@@ -634,6 +677,7 @@ impl ToolPath {
                 adjusted: Float64Array::from(&adjusted[..]),
                 warnings,
                 stock: p.stock.map(|c| c.map(|x| x / u)),
+                deviation,
             },
         )
     }

@@ -21,6 +21,7 @@
 //! ```
 
 mod example;
+mod flip;
 mod kinematics;
 mod linearise;
 mod machine;
@@ -31,9 +32,11 @@ mod post;
 mod quality;
 mod solve;
 mod stock;
+mod sweep;
 mod target_curve;
 pub mod tolerance;
 mod tool_path;
+mod units;
 
 pub use messages::CAM_MESSAGES;
 
@@ -44,7 +47,11 @@ pub use example::{
 pub use tool_path::{Pose, Tool, ToolEnd, ToolPath};
 
 // how well the path machines the part
-pub use quality::{deviation, deviation_per_pose, envelope_deviation, EnvelopeDeviation, Quality};
+pub use quality::{deviation, deviation_per_pose, Quality};
+// the sweep of a path or a program as the controller moves the tool, and the part's deviation from it
+pub use sweep::{
+    envelope_deviation, path_blocks, pose_at, sweep_deviation, tool_distance, EnvelopeDeviation, Move, SweptBlock,
+};
 
 // five-axis machines and their kinematics
 pub use kinematics::{at_pole, forward_kinematics, orientations, pole_angle, tool_axis, Joints};

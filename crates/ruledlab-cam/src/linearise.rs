@@ -19,8 +19,11 @@
 //! (the distance at the far end of a tool of that length), both in mm. A block above the
 //! tolerance is halved (the new pose: the chord's midpoint and the arc's midpoint), the
 //! kinematics solved again, up to MAX_LINEARISATION_ROUNDS rounds; a block still above it then
-//! is an error naming its poses (the axes turn over or pass the pole there).
+//! is an error naming its poses (the axes turn over or pass the pole there). A block where the
+//! rotary axes flip from one solution to the other (`flip.rs`) is refused in every mode, naming
+//! the axis whose limit forces it.
 
+use crate::flip::flip;
 use crate::kinematics::{forward_kinematics, tool_axis, Joints};
 use crate::machine::Machine;
 use crate::solve::{solve, SolveOptions};
@@ -298,6 +301,14 @@ fn linearise_at_most(
         let before = *before.get_or_insert(largest(&blocks));
         progress(round);
         let bad: Vec<usize> = (0..blocks.len()).filter(|&i| too_far(&blocks[i])).collect();
+        if bad.is_empty() || round == max_rounds {
+            // a flip of the rotary axes inside the cut, in every mode (the halving cannot mend it)
+            for (i, e) in ends.iter().enumerate() {
+                if let Some(err) = flip(m, o.solve.cone, (&e.2, &e.3), (&e.0, &e.1), origin[i].floor() as usize) {
+                    return Err(err);
+                }
+            }
+        }
         if bad.is_empty() {
             let inserted = poses.len() - origin.iter().filter(|o| o.fract() == 0.0).count();
             let after = largest(&blocks);

@@ -7,6 +7,7 @@
 use crate::kinematics::tool_axis;
 use crate::machine::Machine;
 use crate::tool_path::tool_line;
+use crate::units::units_word;
 use crate::{Tool, ToolEnd, ToolPath};
 use glam::DVec3;
 use ruledlab::tolerance::MAX_RULINGS;
@@ -107,19 +108,6 @@ pub fn read_tool_poses_for(
     Ok(read)
 }
 
-/// "mm" or "inch" for what a file says of its units (`millimetres`, `in`, … too), else `None`.
-fn units_word(said: Option<String>) -> Option<String> {
-    let s = said?.to_ascii_lowercase();
-    let s = s.trim();
-    if ["mm", "millimetre", "millimetres", "millimeter", "millimeters"].contains(&s) {
-        Some("mm".into())
-    } else if ["in", "inch", "inches", "\""].contains(&s) {
-        Some("inch".into())
-    } else {
-        None
-    }
-}
-
 fn read_csv(text: &str, number: NumberParser<'_>, machine: Option<&Machine>) -> Result<ImportedPoses> {
     let table: Table = read_table(text, number, "csv", MAX_RULINGS)?;
     if table.rows.is_empty() {
@@ -145,7 +133,7 @@ fn read_csv(text: &str, number: NumberParser<'_>, machine: Option<&Machine>) -> 
         axes: Vec::with_capacity(table.rows.len()),
         tool: tool_from_header(text),
         lines: Vec::with_capacity(table.rows.len()),
-        units: units_word(table.said("units")),
+        units: units_word(table.said("units"), "csv")?,
         machine: None,
     };
     let m = match &cols {
@@ -238,7 +226,7 @@ fn read_json(text: &str, number: NumberParser<'_>) -> Result<ImportedPoses> {
     let (poses_at, poses, tool) = match root {
         Value::Object(fields) => {
             if let Some((_, Value::String(u))) = field(&fields, "units") {
-                units = units_word(Some(u));
+                units = units_word(Some(u), "json")?;
             }
             let Some((p_at, p)) = field(&fields, "poses") else {
                 return Err(fail(root_at, crate::msg!("json-poses-missing")));

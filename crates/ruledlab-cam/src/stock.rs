@@ -1,11 +1,11 @@
 //! The stock and the tool as solids for the G-code post's safety checks (Example 6's paths on
 //! a real machine): the stock is a box in the part frame (the part is inside it, so a move that
-//! keeps clear of the box keeps clear of the part); the tool is a chain of coaxial cylinders —
-//! the cutter (its ball or flat end), the shank, the holder — each checked as the capsule
-//! around its stretch of the axis: the points within its radius ρ of the segment, the cylinder
-//! with a half ball on each end. It contains the cylinder, so a move it finds clear is clear; a
-//! ball end is its lower half ball exactly. Whether a capsule enters the box is exact: the
-//! distance of a segment from a box (below) is at most ρ.
+//! keeps clear of the box keeps clear of the part); the tool is a chain of coaxial cylinders with
+//! flat ends — the cutter (a flat end, or a ball end: its half ball and the cylinder above the
+//! ball's centre), the shank, the holder. Whether a cylinder enters the box is exact
+//! ([`Aabb::distance_from_axis`]): the box cut by the slab of the cylinder's heights is a convex
+//! polytope, and the cylinder meets it where the polytope comes within its radius of the axis —
+//! the distance, along the axis, of the polygon its vertices project to.
 
 use glam::DVec3;
 
@@ -42,48 +42,43 @@ impl Aabb {
         (self.min - p).max(p - self.max).max(DVec3::ZERO).length()
     }
 
-    /// The distance of the segment a → b from the box (0 if it meets it): the least over
-    /// t ∈ [0, 1] of the distance of p(t) = a + t·(b − a). Its square is Σₖ eₖ(t)², eₖ the
-    /// excess of coordinate k beyond the box's slab (0 inside it), so convex and piecewise
-    /// quadratic, its pieces cut where a coordinate crosses a face's plane; on each piece the
-    /// excesses are linear, eₖ = cₖ + dₖ·t, and the least is at t = −Σcₖdₖ / Σdₖ², kept
-    /// within the piece.
-    pub fn distance_from_segment(&self, a: DVec3, b: DVec3) -> f64 {
-        let d = b - a;
-        let mut cuts = vec![0.0, 1.0];
-        for k in 0..3 {
-            if d[k] != 0.0 {
-                cuts.extend(
-                    [self.min[k], self.max[k]]
-                        .map(|plane| (plane - a[k]) / d[k])
-                        .into_iter()
-                        .filter(|t| (0.0..=1.0).contains(t)),
-                );
-            }
-        }
-        cuts.sort_by(f64::total_cmp);
-        let mut least = self.distance(a).min(self.distance(b));
-        for w in cuts.windows(2) {
-            let mid = a + 0.5 * (w[0] + w[1]) * d;
-            let (mut cd, mut dd) = (0.0, 0.0);
-            for k in 0..3 {
-                // the excess's slope: −dₖ below the slab, dₖ above it, 0 within
-                let (c, slope) = if mid[k] < self.min[k] {
-                    (self.min[k] - a[k], -d[k])
-                } else if mid[k] > self.max[k] {
-                    (a[k] - self.max[k], d[k])
-                } else {
+    /// The least distance from the line through `a` along unit `d` of the box's points whose
+    /// height h = (x − a)·d lies in [0, `len`] (∞ where none does; module documentation): the
+    /// vertices of that polytope are the box's corners within the slab and the points where its
+    /// edges cross the planes h = 0 and h = len; projected along d they span a convex polygon,
+    /// and the answer is the polygon's distance from the line's point (0 where it holds it).
+    pub fn distance_from_axis(&self, a: DVec3, d: DVec3, len: f64) -> f64 {
+        let corner = |i: usize| {
+            DVec3::new(
+                if i & 1 == 0 { self.min.x } else { self.max.x },
+                if i & 2 == 0 { self.min.y } else { self.max.y },
+                if i & 4 == 0 { self.min.z } else { self.max.z },
+            )
+        };
+        let h = |p: DVec3| (p - a).dot(d);
+        let mut points: Vec<DVec3> = (0..8).map(corner).filter(|&c| (0.0..=len).contains(&h(c))).collect();
+        for i in 0..8 {
+            for bit in [1, 2, 4] {
+                let j = i | bit;
+                if j == i {
                     continue;
-                };
-                cd += c * slope;
-                dd += slope * slope;
-            }
-            if dd > 0.0 {
-                let t = (-cd / dd).clamp(w[0], w[1]);
-                least = least.min(self.distance(a + t * d));
+                }
+                let (p, q) = (corner(i), corner(j));
+                let (hp, hq) = (h(p), h(q));
+                for plane in [0.0, len] {
+                    if (hp - plane) * (hq - plane) < 0.0 {
+                        points.push(p + (plane - hp) / (hq - hp) * (q - p));
+                    }
+                }
             }
         }
-        least
+        if points.is_empty() {
+            return f64::INFINITY;
+        }
+        let e1 = d.any_orthonormal_vector();
+        let e2 = d.cross(e1);
+        let flat: Vec<(f64, f64)> = points.iter().map(|&p| ((p - a).dot(e1), (p - a).dot(e2))).collect();
+        polygon_distance(&hull(flat))
     }
 
     /// The parameter t ≥ 0 where the ray `from` + t·`dir` leaves the box (0 if it starts outside
@@ -105,6 +100,59 @@ impl Aabb {
             t1.max(0.0)
         } else {
             0.0
+        }
+    }
+}
+
+/// The convex hull of points in the plane, counter-clockwise (Andrew's monotone chain; fewer
+/// than three points, or points on a line: its ends).
+fn hull(mut p: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+    p.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    p.dedup();
+    if p.len() < 3 {
+        return p;
+    }
+    let cross = |o: (f64, f64), a: (f64, f64), b: (f64, f64)| (a.0 - o.0) * (b.1 - o.1) - (a.1 - o.1) * (b.0 - o.0);
+    let mut h: Vec<(f64, f64)> = Vec::with_capacity(2 * p.len());
+    for pass in 0..2 {
+        let start = h.len();
+        let points: Box<dyn Iterator<Item = &(f64, f64)>> =
+            if pass == 0 { Box::new(p.iter()) } else { Box::new(p.iter().rev()) };
+        for &q in points {
+            while h.len() >= start + 2 && cross(h[h.len() - 2], h[h.len() - 1], q) <= 0.0 {
+                h.pop();
+            }
+            h.push(q);
+        }
+        h.pop();
+    }
+    h
+}
+
+/// The distance of the origin from a convex polygon given counter-clockwise (0 inside; a point or
+/// a segment as such).
+fn polygon_distance(h: &[(f64, f64)]) -> f64 {
+    let to_segment = |a: (f64, f64), b: (f64, f64)| {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let l2 = dx * dx + dy * dy;
+        let t = if l2 > 0.0 { (-(a.0 * dx + a.1 * dy) / l2).clamp(0.0, 1.0) } else { 0.0 };
+        (a.0 + t * dx).hypot(a.1 + t * dy)
+    };
+    match h.len() {
+        0 => f64::INFINITY,
+        1 => h[0].0.hypot(h[0].1),
+        _ => {
+            let n = h.len();
+            let inside = n >= 3
+                && (0..n).all(|i| {
+                    let (a, b) = (h[i], h[(i + 1) % n]);
+                    (b.0 - a.0) * (-a.1) - (b.1 - a.1) * (-a.0) >= 0.0
+                });
+            if inside {
+                0.0
+            } else {
+                (0..n).map(|i| to_segment(h[i], h[(i + 1) % n])).fold(f64::INFINITY, f64::min)
+            }
         }
     }
 }
@@ -146,12 +194,16 @@ impl ToolShape {
     }
 
     /// The first part of the tool (of `parts`) that enters the box at this pose, if one does:
-    /// its capsule comes nearer the box than its radius less 10⁻⁹ mm (a touch is clear), or its
-    /// axis meets the box (however thin the part).
+    /// its cylinder (flat ends; a ball end's half ball too) comes nearer the box than its radius
+    /// less 10⁻⁹ mm (a touch is clear), or its axis meets the box (however thin the part).
     pub fn enters(&self, tip: DVec3, axis: DVec3, parts: &[&str], stock: &Aabb) -> Option<&'static str> {
         self.stretches(tip, axis, parts)
             .into_iter()
-            .find(|&(a, b, r, _)| stock.distance_from_segment(a, b) < (r - 1e-9).max(f64::MIN_POSITIVE))
+            .find(|&(a, b, r, name)| {
+                let within = (r - 1e-9).max(f64::MIN_POSITIVE);
+                let ball = name == "cutter" && self.ball && stock.distance(a) < within;
+                ball || stock.distance_from_axis(a, axis, (b - a).length()) < within
+            })
             .map(|(_, _, _, n)| n)
     }
 }
@@ -198,39 +250,7 @@ mod tests {
         assert_eq!(tool.enters(DVec3::new(0.0, 0.0, 2.0), flat, &["cutter", "shank"], &stock), None);
     }
 
-    /// The segment's distance from the box: exact cases (a segment passing over an edge, one
-    /// along a face, one through it) and, for segments of every kind, the least of a fine
-    /// sampling never below it and within the sampling's step of it.
-    #[test]
-    fn a_segment_is_as_far_from_the_box_as_its_nearest_point() {
-        let b = Aabb { min: DVec3::ZERO, max: DVec3::new(2.0, 2.0, 1.0) };
-        // over the edge y = 2, z = 1 at (1, 3, 2) → (1, 2, 3) ... from (1, 4, 1.5) to (1, 2.5, 4): nearest
-        // the edge: the line through them at distance |(1.5, −0.5)·n| from the edge's point
-        let (p, q) = (DVec3::new(1.0, 4.0, 1.5), DVec3::new(1.0, 2.5, 4.0));
-        let (u, v) = (p - DVec3::new(1.0, 2.0, 1.0), q - p);
-        let line = u.cross(v).length() / v.length();
-        assert!((b.distance_from_segment(p, q) - line).abs() < 1e-15, "{}", b.distance_from_segment(p, q));
-        // along the top face, 0.5 above it; through the box; ending short of it
-        assert_eq!(b.distance_from_segment(DVec3::new(-3.0, 1.0, 1.5), DVec3::new(5.0, 1.0, 1.5)), 0.5);
-        assert_eq!(b.distance_from_segment(DVec3::new(-3.0, 1.0, 0.5), DVec3::new(5.0, 1.0, 0.5)), 0.0);
-        assert_eq!(b.distance_from_segment(DVec3::new(-3.0, 1.0, 0.5), DVec3::new(-1.0, 1.0, 0.5)), 1.0);
-        assert_eq!(b.distance_from_segment(DVec3::new(4.0, 5.0, 3.0), DVec3::new(4.0, 5.0, 3.0)), 17f64.sqrt());
-        let mut seed = 7u64;
-        let mut next = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 10.0 - 4.0
-        };
-        for _ in 0..2000 {
-            let (p, q) = (DVec3::new(next(), next(), next()), DVec3::new(next(), next(), next()));
-            let exact = b.distance_from_segment(p, q);
-            let n = 4000;
-            let sampled = (0..=n).map(|k| b.distance(p.lerp(q, k as f64 / n as f64))).fold(f64::INFINITY, f64::min);
-            let step = (q - p).length() / n as f64;
-            assert!(exact <= sampled + 1e-12 && sampled <= exact + step, "{p} {q}: {exact} {sampled}");
-        }
-    }
-
-    /// A tool of radius 10⁻³²² (a fuzzer's) is checked as quickly as any: its capsules, not
+    /// A tool of radius 10⁻³²² (a fuzzer's) is checked as quickly as any: its cylinders, not
     /// balls a quarter radius apart.
     #[test]
     fn a_tool_of_any_radius_is_checked_at_once() {
@@ -239,5 +259,64 @@ mod tests {
         let tool = ToolShape { ball: true, cutter: Stretch { from: 0.0, to: 1.5, radius: tiny }, above: vec![] };
         assert_eq!(tool.enters(DVec3::new(0.0, 0.0, 0.5), DVec3::Z, &["cutter"], &stock), None);
         assert_eq!(tool.enters(DVec3::new(0.0, 0.0, -1.0), DVec3::Z, &["cutter"], &stock), Some("cutter"));
+    }
+
+    /// The cylinder check is exact: for random boxes and cylinders, the distance it finds is the
+    /// radius at which the solid cylinder starts to meet the box — 2 % larger and a fine sampling
+    /// of the cylinder finds a point in the box (within its spacing), 2 % smaller and none.
+    #[test]
+    fn a_cylinder_meets_the_box_at_the_distance_of_its_axis() {
+        let mut seed = 5;
+        let mut u = || ruledlab::tolerance::test::uniform(&mut seed) * 2.0 - 1.0;
+        let b = Aabb { min: DVec3::new(-1.0, -2.0, -0.5), max: DVec3::new(1.0, 2.0, 0.5) };
+        let mut checked = 0;
+        for _ in 0..40 {
+            let a = DVec3::new(3.0 * u(), 3.0 * u(), 2.0 * u());
+            let d = DVec3::new(u(), u(), u()).normalize();
+            let len = 1.0 + 2.0 * (u() + 1.0);
+            let dist = b.distance_from_axis(a, d, len);
+            if !dist.is_finite() || !(0.05..2.0).contains(&dist) {
+                continue;
+            }
+            checked += 1;
+            let e1 = d.any_orthonormal_vector();
+            let e2 = d.cross(e1);
+            let nearest = |rho: f64| {
+                let mut best = f64::INFINITY;
+                for i in 0..=60 {
+                    for j in 0..=24 {
+                        for k in 0..72 {
+                            let (t, s, f) =
+                                (len * i as f64 / 60.0, rho * j as f64 / 24.0, k as f64 * std::f64::consts::TAU / 72.0);
+                            best = best.min(b.distance(a + t * d + s * (f.cos() * e1 + f.sin() * e2)));
+                        }
+                    }
+                }
+                best
+            };
+            let spacing = (len / 60.0).max(1.02 * dist * std::f64::consts::TAU / 72.0);
+            assert!(nearest(1.02 * dist) <= spacing, "{a} {d} {len}: {dist}");
+            assert!(nearest(0.98 * dist) > 0.0, "{a} {d} {len}: {dist}");
+        }
+        assert!(checked >= 5, "{checked}");
+        // beyond the slab: a cylinder wholly above the box is ∞ from it along its heights
+        assert_eq!(b.distance_from_axis(DVec3::new(0.0, 0.0, 1.0), DVec3::Z, 5.0), f64::INFINITY);
+        // straight down into it: its axis meets it
+        assert_eq!(b.distance_from_axis(DVec3::new(0.0, 0.0, 2.0), -DVec3::Z, 5.0), 0.0);
+    }
+
+    /// A holder of radius 16 and length 40 standing 6 above the stock's top, its axis vertical:
+    /// clear (the capsule reached 16 below its end and entered); 6 lower it enters.
+    #[test]
+    fn a_holder_above_the_stock_is_clear_by_its_flat_end() {
+        let stock = Aabb { min: DVec3::new(-50.0, -50.0, -10.0), max: DVec3::new(50.0, 50.0, 0.0) };
+        let tool = ToolShape {
+            ball: true,
+            cutter: Stretch { from: 0.0, to: 20.0, radius: 3.0 },
+            above: vec![("holder", Stretch { from: 60.0, to: 100.0, radius: 16.0 })],
+        };
+        let tip = |z: f64| DVec3::new(0.0, 0.0, z);
+        assert_eq!(tool.enters(tip(-54.0), DVec3::Z, &["holder"], &stock), None);
+        assert_eq!(tool.enters(tip(-60.5), DVec3::Z, &["holder"], &stock), Some("holder"));
     }
 }

@@ -3,6 +3,7 @@
 //! array of [x, y, z], or `{ "points": […], "units"? }`). The deviation of the machined surface
 //! is measured against it (`milling/quality.rs`).
 
+use crate::units::units_word;
 use glam::DVec3;
 use ruledlab::read_table;
 use ruledlab::tolerance::MAX_RULINGS;
@@ -44,7 +45,7 @@ fn from_csv(text: &str, number: NumberParser<'_>) -> Result<TargetCurve> {
         }
         points.push(DVec3::new(row.values[0], row.values[1], row.values[2]));
     }
-    Ok(TargetCurve { points, units: t.said("units") })
+    Ok(TargetCurve { points, units: units_word(t.said("units"), "csv")? })
 }
 
 fn from_json(text: &str, number: NumberParser<'_>) -> Result<TargetCurve> {
@@ -84,7 +85,7 @@ fn from_json(text: &str, number: NumberParser<'_>) -> Result<TargetCurve> {
             _ => return Err(fail(*item_at, crate::msg!("target-json-point"))),
         }
     }
-    Ok(TargetCurve { points, units })
+    Ok(TargetCurve { points, units: units_word(units, "json")? })
 }
 
 #[cfg(test)]
@@ -116,6 +117,14 @@ mod tests {
         assert_eq!((e.details().reason, e.details().line), (Some("target-three-numbers"), Some(1)));
         let e = read_target("[[0,0,0]]", true, &rust_number).unwrap_err();
         assert_eq!(e.details().reason, Some("target-too-few"));
+        // units other than mm and inch are refused, not read as mm
+        for text in ["# units: imperial\n0,0,0\n1,1,1\n", "# units: furlong\n0,0,0\n1,1,1\n"] {
+            let e = read_target(text, false, &rust_number).unwrap_err();
+            assert_eq!(e.details().reason, Some("units-unknown"), "{text}");
+        }
+        let e = read_target("{\"units\": \"furlong\", \"points\": [[0, 0, 0], [1, 2, 3]]}", true, &rust_number)
+            .unwrap_err();
+        assert_eq!(e.details().reason, Some("units-unknown"));
         let e = read_target("[[0,0,0], [1, 2]]", true, &rust_number).unwrap_err();
         assert_eq!(e.details().reason, Some("target-json-point"));
     }

@@ -36,3 +36,7 @@ pub const MAX_AXIS_TURNS: usize = 8;
 
 /// The largest coordinate (mm, degrees, feed) a machine description or post option accepts.
 pub const MAX_MACHINE_VALUE: f64 = 1e7;
+
+/// Degrees a tilting axis may swing beyond the tool axis's turn (and twice the pole cone) in one
+/// block before the block is a flip of the rotary axes (`flip`).
+pub const FLIP_MARGIN: f64 = 0.01;

@@ -198,10 +198,14 @@ export default {
     'Lage {pose} ist nicht erreichbar: {axis} wäre {value}, außerhalb der Grenzen {min} bis {max}',
   'error.linearisation-tolerance':
     'Zwischen den Lagen {pose} und {next} weicht die lineare Interpolation nach {rounds} Runden eingefügter Lagen noch {deviation} mm von der Bahn ab (Toleranz {tolerance} mm): Dort schlagen die Drehachsen um oder gehen durch den Pol',
+  'error.flip-in-cut':
+    'Zwischen den Lagen {pose} und {next} schlagen die Drehachsen im Schnitt um: {tilt} von {from} auf {to}, während sich die Werkzeugachse um {angle}° dreht, weil {axis} auf derselben Seite {value} erreichen würde, an oder jenseits der Grenzen {min} bis {max}; Grenzen von {axis} erweitern, das Teil drehen oder den Schnitt dort teilen',
+  'error.flip-in-cut-free':
+    'Zwischen den Lagen {pose} und {next} schlagen die Drehachsen im Schnitt um: {tilt} von {from} auf {to}, während sich die Werkzeugachse um {angle}° dreht; den Schnitt dort teilen',
   'error.retract-horizontal':
     'Lage {pose}: Die Werkzeugachse liegt zu flach, um entlang ihr auf die sichere Höhe zurückzuziehen',
   'error.approach-blocked':
-    'Lage {pose}: Kein Punkt auf ihrer Werkzeugachse im Verfahrbereich, von dem das Werkzeug frei vom Rohteil herabfährt',
+    'Lage {pose}: Kein Punkt auf ihrer Werkzeugachse im Verfahrbereich, von dem das Werkzeug frei vom Rohteil herabfährt (was im Rohteil bleibt oder es aufhält: {part})',
   'error.unwind-blocked':
     'Lage {pose}: Hier muss eine Drehachse zurückdrehen, und kein Punkt der Werkzeugachse im Verfahrbereich lässt sie frei vom Rohteil drehen',
   'error.warn-duplicate-pose': 'Lage {pose} wiederholt Lage {previous}: Für sie wird kein Satz geschrieben',
@@ -225,6 +229,8 @@ export default {
   'error.target-three-numbers': '3 Zahlen für einen Sollpunkt erwartet (x, y, z), gefunden: {found}',
   'error.target-json': 'Ein Array von Punkten [x, y, z] erwartet, oder ein Objekt mit "points"',
   'error.target-json-point': 'Einen Sollpunkt [x, y, z] erwartet',
+  'error.units-unknown':
+    'Die Einheit „{said}“ der Datei ist unbekannt: mm oder inch schreiben (auch millimetres, millimeters, in oder inches werden gelesen)',
   'error.part-holder': 'Halter',
   'error.part-shank': 'Schaft',
 };

@@ -197,10 +197,14 @@ export default {
   'error.pose-unreachable': 'pose {pose} cannot be reached: {axis} would be {value}, outside its limits {min} to {max}',
   'error.linearisation-tolerance':
     'between poses {pose} and {next} the linear interpolation still strays {deviation} mm from the path after {rounds} rounds of inserted poses (tolerance {tolerance} mm): the rotary axes turn over or pass the pole there',
+  'error.flip-in-cut':
+    'between poses {pose} and {next} the rotary axes flip inside the cut: {tilt} from {from} to {to} while the tool axis turns {angle}°, because staying on the same side takes {axis} to {value}, at or beyond its limits {min} to {max}; widen {axis}’s limits, turn the part or split the cut there',
+  'error.flip-in-cut-free':
+    'between poses {pose} and {next} the rotary axes flip inside the cut: {tilt} from {from} to {to} while the tool axis turns {angle}°; split the cut there',
   'error.retract-horizontal':
     'pose {pose}: the tool axis is too close to horizontal to retract along it to the safe height',
   'error.approach-blocked':
-    'pose {pose}: no point on its tool axis within the machine’s travel from which the tool comes down clear of the stock',
+    'pose {pose}: no point on its tool axis within the machine’s travel from which the tool comes down clear of the stock (what stays in the stock or stops it: the {part})',
   'error.unwind-blocked':
     'pose {pose}: a rotary axis must unwind here, and no point on the tool axis within the travel lets it turn clear of the stock',
   'error.warn-duplicate-pose': 'pose {pose} repeats pose {previous}: no block written for it',
@@ -223,6 +227,8 @@ export default {
   'error.target-three-numbers': 'expected 3 numbers for a target point (x, y, z), found {found}',
   'error.target-json': 'expected an array of points [x, y, z], or an object with "points"',
   'error.target-json-point': 'expected a target point [x, y, z]',
+  'error.units-unknown':
+    'the file’s units "{said}" are not known: write mm or inch (millimetres, millimeters, in or inches are read too)',
   'error.part-holder': 'holder',
   'error.part-shank': 'shank',
 };

@@ -6,7 +6,9 @@ use super::{number, Controller, Mode, Op, PostOptions, SpindleDirection, Warning
 use crate::linearise::Linearisation;
 use crate::motion::{BlockMotion, Limit};
 use crate::stock::Aabb;
+use crate::sweep::EnvelopeDeviation;
 use crate::{ToolEnd, ToolPath};
+use glam::DVec3;
 
 /// What the plan found, for the header (lengths in mm).
 pub(super) struct HeaderFacts<'a> {
@@ -22,6 +24,8 @@ pub(super) struct HeaderFacts<'a> {
     pub motion: &'a [BlockMotion],
     pub unwinds: usize,
     pub warnings: &'a [Warning],
+    /// The target's deviation from the sweep of the program, its worst point (mm) and pose.
+    pub deviation: Option<(&'a EnvelopeDeviation, DVec3, usize)>,
 }
 
 /// The header's comment lines, in `controller`'s words where they are about its setup.
@@ -45,8 +49,17 @@ pub(super) fn header(
         format!("machine {}", o.machine.describe()),
     ];
     match o.mode {
-        Mode::Machine => lines.push(controller.machine_mode()),
-        Mode::Tcp => lines.extend(controller.tcp_mode(&o.machine)),
+        Mode::Machine => {
+            lines.push(controller.machine_mode());
+            lines.push(format!(
+                "work offset {} is called below and must hold 0 in X Y Z: the program's X Y Z are machine positions",
+                o.work_offset
+            ));
+        }
+        Mode::Tcp => {
+            lines.extend(controller.tcp_mode(&o.machine));
+            lines.push(format!("work offset {} is called below and must hold the part's zero", o.work_offset));
+        }
     }
     let feed_word = controller.feed_words(o.mode);
     lines.push(format!(
@@ -111,6 +124,24 @@ pub(super) fn header(
         len(l.before.axis)
     ));
     lines.push(axes_line(o, f));
+    if let Some((d, q, pose)) = f.deviation {
+        // a micrometre in either units: 4 decimals of mm, 5 of inch
+        let fine = |x: f64| super::decimals(x / u, if u > 1.0 { 5 } else { 4 }, false);
+        lines.push(format!(
+            "deviation of the program as posted from the target, {} points: gouge {} {w}, leave {} {w}, rms {} {w}",
+            d.points.len(),
+            fine(d.gouge),
+            fine(d.leave),
+            fine(d.rms)
+        ));
+        lines.push(format!(
+            "largest deviation {} {w} at X {} Y {} Z {} near pose {pose}",
+            fine(d.largest()),
+            len(q.x),
+            len(q.y),
+            len(q.z)
+        ));
+    }
     for warning in f.warnings {
         lines.push(format!("warning: {}", warning_text(warning)));
     }

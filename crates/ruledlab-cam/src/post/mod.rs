@@ -52,6 +52,7 @@ pub use text::{comment_lines, decimals, number, speed};
 use crate::kinematics::Joints;
 use crate::linearise::{Linearisation, Linearised};
 use crate::motion::BlockMotion;
+use crate::sweep::{EnvelopeDeviation, SweptBlock};
 use crate::{Pose, ToolPath};
 use ruledlab::{Message, Result};
 
@@ -98,6 +99,12 @@ pub struct Program {
     pub warnings: Vec<Warning>,
     /// The stock the rapids were checked against, part frame, mm.
     pub stock: [[f64; 3]; 2],
+    /// The blocks the controller moves the tool through, part frame, mm (`sweep.rs`): the
+    /// approach, the cut, the unwindings' ways out and back, the retract.
+    pub sweep: Vec<SweptBlock>,
+    /// Where the options give a target: its deviation from the sweep of the program as posted,
+    /// mm (positions along the program's poses).
+    pub deviation: Option<EnvelopeDeviation>,
 }
 
 /// A program before a dialect writes it: its steps, what the dialect needs besides, and the
@@ -114,6 +121,10 @@ pub struct Plan {
     pub motion: Vec<BlockMotion>,
     /// What the machinist should know.
     pub warnings: Vec<Warning>,
+    /// The blocks the controller moves the tool through.
+    pub sweep: Vec<SweptBlock>,
+    /// The target's deviation from their sweep, where a target is given.
+    pub deviation: Option<EnvelopeDeviation>,
 }
 
 /// The G-code program of `path` in the dialect of the options (see the module documentation).
@@ -134,7 +145,8 @@ pub fn gcode_with(
     controller: &dyn Controller,
     progress: &mut dyn FnMut(f64),
 ) -> Result<Program> {
-    let Plan { ops, context, linearised: lin, motion, warnings } = plan_reporting(path, o, controller, progress)?;
+    let Plan { ops, context, linearised: lin, motion, warnings, sweep, deviation } =
+        plan_reporting(path, o, controller, progress)?;
     let u = o.units.mm();
     let stock = [(context.bounds.0 * u).to_array(), (context.bounds.1 * u).to_array()];
     let text = controller.write(&ops, &context);
@@ -150,5 +162,7 @@ pub fn gcode_with(
         linearisation: lin.report,
         warnings,
         stock,
+        sweep,
+        deviation,
     })
 }

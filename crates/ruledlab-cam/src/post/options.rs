@@ -115,10 +115,11 @@ pub struct PostOptions {
     /// further where the stock, turned by the rotary axes, stands higher.
     pub safe_height: Option<f64>,
     /// Distance kept from the stock along the tool axis, covered at the approach feed
-    /// (default 5 mm).
+    /// (default 5 mm; 0.2 in, [`PostOptions::defaults_in`]).
     pub clearance: f64,
     /// Largest deviation of the controller's interpolation from the path, the tip's and the
-    /// axis's times the gauge length (default 0.01 mm): the chordal tolerance.
+    /// axis's times the gauge length (default 0.01 mm; 0.0004 in, [`PostOptions::defaults_in`]):
+    /// the chordal tolerance.
     pub tolerance: f64,
     /// Largest angle of the interpolated tool axis from the path's, degrees (default none).
     pub angular_tolerance: Option<f64>,
@@ -138,6 +139,9 @@ pub struct PostOptions {
     pub numbering: Option<Numbering>,
     /// Program name, letters, digits and `_` (default "RULEDLAB").
     pub name: String,
+    /// The part's points the program is measured against, model units like the path (default
+    /// none): the deviation of the program as posted (`sweep.rs`), in the result and the header.
+    pub target: Option<Vec<glam::DVec3>>,
 }
 
 impl Default for PostOptions {
@@ -166,6 +170,20 @@ impl Default for PostOptions {
             pole_cone: 1.0,
             numbering: None,
             name: "RULEDLAB".to_string(),
+            target: None,
+        }
+    }
+}
+
+impl PostOptions {
+    /// The defaults for a program in `units`: in millimetres [`PostOptions::default`]; in inches
+    /// the tolerance 0.0004 in and the clearance 0.2 in a machinist writes (the millimetre
+    /// defaults, 0.01 mm and 5 mm, to the nearest ten-thousandth and tenth of an inch: 0.01 mm is
+    /// 0.000 39 in, 5 mm 0.197 in), the other lengths' defaults already derived from the job.
+    pub fn defaults_in(units: Units) -> Self {
+        match units {
+            Units::Mm => PostOptions::default(),
+            Units::Inch => PostOptions { units, tolerance: 0.0004, clearance: 0.2, ..PostOptions::default() },
         }
     }
 }
@@ -254,6 +272,11 @@ pub fn validate(o: &PostOptions, controller: &dyn Controller) -> Result<()> {
     if n.is_empty() || n.len() > 24 || !n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
         return Err(Error::parameter("name", format!("must be 1 to 24 letters, digits or _, got \"{n}\"")));
     }
+    if let Some(t) = &o.target {
+        if t.is_empty() || t.iter().any(|q| !q.is_finite() || q.abs().max_element() > MAX_MACHINE_VALUE) {
+            return Err(Error::parameter("target", "must be at least one point of finite coordinates of at most 1e7"));
+        }
+    }
     if let Some(nb) = &o.numbering {
         if nb.stride == 0 {
             return Err(Error::parameter("numbering", "the stride must be at least 1".to_string()));
@@ -269,6 +292,18 @@ mod tests {
     #[test]
     fn units() {
         assert_eq!((Units::Inch.mm(), Units::Mm.word()), (25.4, "mm"));
+    }
+
+    /// The inch defaults are the millimetre ones to a machinist's round inches: 0.0004 in within
+    /// 0.0001 in of 0.01 mm, 0.2 in within 0.01 in of 5 mm.
+    #[test]
+    fn inch_defaults_are_the_millimetre_ones_in_round_inches() {
+        let (mm, inch) = (PostOptions::defaults_in(Units::Mm), PostOptions::defaults_in(Units::Inch));
+        assert_eq!(mm, PostOptions::default());
+        assert_eq!((inch.units, inch.tolerance, inch.clearance), (Units::Inch, 0.0004, 0.2));
+        assert!((inch.tolerance * 25.4 - mm.tolerance).abs() < 0.0001 * 25.4);
+        assert!((inch.clearance * 25.4 - mm.clearance).abs() < 0.01 * 25.4);
+        assert_eq!(validate(&inch, inch.dialect.controller()).err(), None);
     }
 
     #[test]

@@ -12,8 +12,9 @@ use crate::machine::Machine;
 use crate::motion::{time_blocks, BlockMotion, BlockNeed, Limit};
 use crate::solve::SolveOptions;
 use crate::stock::{Aabb, Stretch, ToolShape};
+use crate::sweep::{sweep_deviation, Move, SweptBlock};
 use crate::tolerance::{GCODE_DECIMALS, MIN_RETRACT_COS};
-use crate::{Pose, ToolEnd, ToolPath};
+use crate::{Pose, Tool, ToolEnd, ToolPath};
 use glam::DVec3;
 use ruledlab::{Arg, Error, Message, Result};
 
@@ -244,7 +245,7 @@ fn plan_named(
     }
     ops.push(Op::RetractTop(z_top));
     for k in 0..2 {
-        if home[k] != 0.0 {
+        if home[k] != 0.0 && m.rotary[k].min.is_none() && m.rotary[k].max.is_none() {
             ops.push(Op::Comment(format!(
                 "{} ends at {}, its zero a whole number of turns on: no unwinding rapid",
                 m.rotary[k].name.letter(),
@@ -254,6 +255,17 @@ fn plan_named(
     }
     ops.extend([Op::ToleranceOff, Op::Rotate(home), Op::End]);
     warnings.extend(tool_warnings(&job, &lin, namer));
+
+    // the sweep of the program as posted, and the target's deviation from it
+    let sweep = swept_blocks(&lin, how, &job, (start.near, end.near));
+    let deviation = o.target.as_ref().map(|t| {
+        let targets: Vec<DVec3> = t.iter().map(|&q| s * q).collect();
+        let tool = Tool { radius: job.radius, length: job.cutter, end: path.tool.end };
+        let d = sweep_deviation(m, job.gauge, &tool, &sweep, &targets, &mut |f| progress(0.85 + 0.1 * f));
+        let pose = namer.at(path_pose((d.at[d.worst].floor().max(0.0) as usize).min(n - 1))).0;
+        let point = targets[d.worst];
+        (d, point, pose)
+    });
 
     let facts = HeaderFacts {
         poses: n,
@@ -268,6 +280,7 @@ fn plan_named(
         motion: &motion,
         unwinds: lin.unwound.iter().filter(|x| x.is_some()).count(),
         warnings: &warnings,
+        deviation: deviation.as_ref().map(|(d, q, pose)| (d, *q, *pose)),
     };
     let mut all = header(path, o, controller, &lin.report, &facts);
     all.extend(ops);
@@ -279,7 +292,47 @@ fn plan_named(
         bounds: (job.stock.min / u, job.stock.max / u),
         units: o.units,
     };
-    Ok(Plan { ops, context, linearised: lin, motion, warnings })
+    let deviation = deviation.map(|d| d.0);
+    Ok(Plan { ops, context, linearised: lin, motion, warnings, sweep, deviation })
+}
+
+/// The blocks the controller moves the tool through (`sweep.rs`): the approach down the first
+/// pose's axis from the clearance point, the cut as the controller interpolates it, an
+/// unwinding's way out along the tool axis and back (its turn is clear of the stock), the
+/// retract; all in mm, positions along the program's poses.
+fn swept_blocks(lin: &Linearised, how: Interpolation, job: &Job, (near0, near1): (DVec3, DVec3)) -> Vec<SweptBlock> {
+    let n = lin.poses.len();
+    let cut = match how {
+        Interpolation::Machine => Move::Joints,
+        Interpolation::TcpAngles => Move::Angles,
+        Interpolation::TcpVector => Move::Vector,
+    };
+    let straight = |p: Pose, to: DVec3, j: Joints, at: f64| SweptBlock {
+        from: Pose { tip: to, axis: p.axis },
+        to: p,
+        joints: (j, j),
+        how: Move::Straight,
+        start: at,
+        span: 0.0,
+    };
+    let mut out = vec![straight(lin.poses[0], near0, lin.joints[0], 0.0)];
+    for i in 1..n {
+        out.push(SweptBlock {
+            from: lin.poses[i - 1],
+            to: lin.poses[i],
+            joints: (lin.leaving(i - 1), lin.joints[i]),
+            how: cut,
+            start: (i - 1) as f64,
+            span: 1.0,
+        });
+        if lin.unwound[i].is_some() {
+            let p = lin.poses[i];
+            let near = p.tip + clear_out(job, &p) * p.axis;
+            out.push(straight(p, near, lin.joints[i], i as f64));
+        }
+    }
+    out.push(straight(lin.poses[n - 1], near1, lin.leaving(n - 1), (n - 1) as f64));
+    out
 }
 
 /// The job in millimetres, checked.
@@ -449,6 +502,33 @@ fn tool_warnings(job: &Job, lin: &Linearised, namer: &Namer) -> Vec<Warning> {
     out
 }
 
+/// How far up `p`'s tool axis the tool must go for the whole cutter — not only its tip's line —
+/// to be out of the stock, plus the clearance: from where the tip's line leaves the box, on by
+/// half the cutter's radius until the cutter is clear, then halved down to 10⁻⁶ mm.
+fn clear_out(job: &Job, p: &Pose) -> f64 {
+    let out = |t: f64| job.shape.enters(p.tip + t * p.axis, p.axis, &["cutter"], &job.stock).is_none();
+    let step = (0.5 * job.radius).max(0.01);
+    let (mut inside, mut t) = (None, job.stock.exit(p.tip, p.axis));
+    for _ in 0..RAISE_STEPS * 100 {
+        if out(t) {
+            break;
+        }
+        inside = Some(t);
+        t += step;
+    }
+    if let Some(mut lo) = inside {
+        while t - lo > 1e-6 {
+            let mid = 0.5 * (lo + t);
+            if out(mid) {
+                t = mid;
+            } else {
+                lo = mid;
+            }
+        }
+    }
+    t + job.clearance
+}
+
 /// A safe point on a pose's tool axis: where the rapid down the axis turns (`point`, part
 /// frame), its part height, and the clearance point outside the stock (`near`).
 struct SafePoint {
@@ -464,12 +544,14 @@ fn safe_point(m: &Machine, job: &Job, p: &Pose, rotary: [f64; 2], pose: usize) -
     if p.axis.z < MIN_RETRACT_COS {
         return Err(Error::Unreachable { pose, line: None, message: crate::msg!("retract-horizontal", pose = pose) });
     }
-    let t_near = job.stock.exit(p.tip, p.axis) + job.clearance;
+    let t_near = clear_out(job, p);
     let near = p.tip + t_near * p.axis;
     let t_height = (job.safe_height - p.tip.z) / p.axis.z;
     let z_top = m.travel[2][1];
     let step = job.clearance.max(1.0);
     let mut t = t_height.max(t_near);
+    // what kept the tool in the stock at the last point tried: the part (none: the travel)
+    let mut blocking = "travel";
     for _ in 0..RAISE_STEPS {
         let point = p.tip + t * p.axis;
         let xyz = machine_position(m, point, rotary, job.gauge);
@@ -477,24 +559,25 @@ fn safe_point(m: &Machine, job: &Job, p: &Pose, rotary: [f64; 2], pose: usize) -
             break;
         }
         let top = DVec3::new(xyz.x, xyz.y, z_top);
-        let descent = (0..=MOTION_SAMPLES).all(|k| {
+        let all = ["cutter", "shank", "holder"];
+        let descent = (0..=MOTION_SAMPLES).find_map(|k| {
             let q = forward_kinematics(
                 m,
                 &Joints { xyz: top.lerp(xyz, k as f64 / MOTION_SAMPLES as f64), rotary },
                 job.gauge,
             );
-            job.shape.enters(q.tip, q.axis, &["cutter", "shank", "holder"], &job.stock).is_none()
+            job.shape.enters(q.tip, q.axis, &all, &job.stock)
         });
-        let down = (0..=MOTION_SAMPLES).all(|k| {
-            let q = point.lerp(near, k as f64 / MOTION_SAMPLES as f64);
-            job.shape.enters(q, p.axis, &["cutter", "shank", "holder"], &job.stock).is_none()
+        let down = (0..=MOTION_SAMPLES).find_map(|k| {
+            job.shape.enters(point.lerp(near, k as f64 / MOTION_SAMPLES as f64), p.axis, &all, &job.stock)
         });
-        if descent && down {
-            return Ok(SafePoint { point, near, height: point.z });
+        match descent.or(down) {
+            None => return Ok(SafePoint { point, near, height: point.z }),
+            Some(part) => blocking = part,
         }
         t += step;
     }
-    Err(Error::Unreachable { pose, line: None, message: crate::msg!("approach-blocked", pose = pose) })
+    Err(Error::Unreachable { pose, line: None, message: crate::msg!("approach-blocked", pose = pose, part = blocking) })
 }
 
 fn within_travel(m: &Machine, xyz: DVec3) -> bool {
@@ -509,17 +592,17 @@ fn top_of(m: &Machine, o: &PostOptions, job: &Job, point: DVec3, rotary: [f64; 2
     Target { xyz: if o.mode == Mode::Tcp { part.tip } else { top }, rotary, axis: part.axis }
 }
 
-/// The rotary axes' zero: the whole turn nearest where the axis stands, within its limits (a
-/// limited axis without one goes to its limit nearest 0).
+/// The rotary axes' home as the book documents it: a limited axis to 0 (its range holds no
+/// multi-turn rapid; a range without 0, to its limit nearest 0), a continuous axis to the whole
+/// turn nearest where it stands (no program ends with a multi-turn rapid).
 fn home_of(m: &Machine, rotary: [f64; 2]) -> [f64; 2] {
     [0, 1].map(|k| {
         let r = &m.rotary[k];
-        let nearest = 360.0 * (rotary[k] / 360.0).round();
-        let home = [nearest, nearest - 360.0, nearest + 360.0]
-            .into_iter()
-            .filter(|&v| r.allows(v))
-            .min_by(|a, b| (a - rotary[k]).abs().total_cmp(&(b - rotary[k]).abs()))
-            .unwrap_or_else(|| 0f64.clamp(r.min.unwrap_or(f64::NEG_INFINITY), r.max.unwrap_or(f64::INFINITY)));
+        let home = if r.min.is_none() && r.max.is_none() {
+            360.0 * (rotary[k] / 360.0).round()
+        } else {
+            0f64.clamp(r.min.unwrap_or(f64::NEG_INFINITY), r.max.unwrap_or(f64::INFINITY))
+        };
         home + 0.0
     })
 }
@@ -540,7 +623,7 @@ fn unwind(
 ) -> Result<Vec<Op>> {
     let p = &lin.poses[i];
     let before = lin.joints[i].rotary;
-    let t_near = job.stock.exit(p.tip, p.axis) + job.clearance;
+    let t_near = clear_out(job, p);
     let near = p.tip + t_near * p.axis;
     let step = job.clearance.max(1.0);
     let all = ["cutter", "shank", "holder"];

@@ -25,6 +25,13 @@ fn near(a: DVec3, b: DVec3) -> bool {
     (a - b).length() < 1e-9
 }
 
+/// How far up the axis (0, 0.6, 0.8) from the first tip of `path()` at scale 2 the clearance
+/// point is: the whole cutter out of the stock, then 5 mm (the TCP test's documentation).
+fn cleared() -> f64 {
+    let s = (2.8 + (2.8f64 * 2.8 + 136.0).sqrt()) / 2.0;
+    s - 6.0 + 5.0
+}
+
 /// The kind of each op, to compare sequences.
 fn kind(op: &Op) -> String {
     match op {
@@ -39,8 +46,11 @@ fn kind(op: &Op) -> String {
 /// to the top of Z, the rotary axes turned there, tool-centre point on, X Y at the top of Z, Z
 /// down to the safe point on the first tool axis — 25 mm above the highest tip (z = 0) plus the
 /// clearance 5: part height 30, 37.5 mm up the axis, (0, 22.5, 30) —, down the axis to the
-/// clearance outside the stock: the stock is the tips' box grown by 1 mm, which the axis leaves
-/// at z = 1 (t = 1.25), so 5 mm on, t = 6.25: (0, 3.75, 5). The approach runs at a quarter of the
+/// clearance outside the stock: the stock is the tips' box grown by 1 mm, |y|, |z| ≤ 1, which
+/// the whole cutter (its ball of radius 6, centred s = t + 6 up the axis, the cylinder above)
+/// leaves where the ball's centre is 6 from the box's edge (y, z) = (1, 1): (0.6s − 1)² +
+/// (0.8s − 1)² = 36, s = (2.8 + √(2.8² + 136)) / 2, so 5 mm on, t = s − 1 (the tip's line alone
+/// left it at t = 1.25). The approach runs at a quarter of the
 /// feed. A block that turns a rotary axis takes the tip's distance at the feed (10 mm: 0.01 min),
 /// or, with the tip still, the tool's far end: 50 mm × acos 0.96.
 #[test]
@@ -96,7 +106,8 @@ fn a_tcp_program_takes_its_points_on_the_tool_axes_and_times_its_turns() {
     let (mt, ms) = (machine_position(m, top.xyz, r, 50.0), machine_position(m, safe.xyz, r, 50.0));
     assert!((mt.x - ms.x).abs() < 1e-9 && (mt.y - ms.y).abs() < 1e-9 && (mt.z - 400.0).abs() < 1e-9, "{mt} {ms}");
     assert!(near(safe.xyz, DVec3::new(0.0, 22.5, 30.0)), "{safe:?}");
-    assert!(near(clear.xyz, DVec3::new(0.0, 3.75, 5.0)), "{clear:?}");
+    // (the cutter traced out of the stock to 10⁻⁶ mm)
+    assert!((clear.xyz - cleared() * DVec3::new(0.0, 0.6, 0.8)).length() < 1e-5, "{clear:?}");
     assert!(near(target(11).xyz, DVec3::ZERO));
     assert_eq!(ops[11], Op::Feed(target(11), Rate::PerMinute(250.0)));
     let rate = |k: usize| match &ops[k] {
@@ -116,7 +127,8 @@ fn a_tcp_program_takes_its_points_on_the_tool_axes_and_times_its_turns() {
     assert!((distance - 10.0).abs() < 1e-12 && (minutes - 0.01).abs() < 1e-15);
     assert_eq!(rate(16), Rate::PerMinute(1000.0));
     // the end mirrors the start: out to the clearance, up the axis to the safe height
-    assert!(near(target(17).xyz, DVec3::new(24.0, 3.75, 5.0)) && rate(17) == Rate::PerMinute(250.0));
+    let out = DVec3::new(24.0, 0.0, 0.0) + cleared() * DVec3::new(0.0, 0.6, 0.8);
+    assert!((target(17).xyz - out).length() < 1e-5 && rate(17) == Rate::PerMinute(250.0));
     assert!(near(target(20).xyz, DVec3::new(24.0, 22.5, 30.0)));
     assert_eq!(ops[24], Op::Rotate([0.0, 0.0]));
     // the header: six poses, none inserted; the stock
@@ -155,7 +167,8 @@ fn the_safe_height_clears_the_highest_tip_by_the_clearance() {
     assert_eq!(e.details().option.as_deref(), Some("safeHeight"));
     let p = plan(&path(), &o(5.0)).unwrap();
     let Op::Rapid(t, Words::Z) = motions(&p.ops)[8] else { panic!() };
-    assert!(near(t.xyz, DVec3::new(0.0, 3.75, 5.0)), "{t:?}");
+    // (the height 5 is t = 6.25 up the axis, short of where the whole cutter is out and clear)
+    assert!((t.xyz - cleared() * DVec3::new(0.0, 0.6, 0.8)).length() < 1e-5, "{t:?}");
 }
 
 /// Each dialect says how its rotary moves are fed.
@@ -193,6 +206,26 @@ fn the_safe_moves_at_the_end_are_named_by_the_last_pose() {
         panic!("reachable")
     };
     assert_eq!((pose, message.reason), (0, "approach-blocked"));
+    // the travel stops it, and the message says so
+    assert_eq!(message.arg("part"), Some(&ruledlab::Arg::Text("travel".into())));
+}
+
+/// The part in the way is named: a holder of radius 400 mm (wider than the stock's top) on a
+/// tool tilted 37° reaches down into the stock wherever the tool comes down its axis.
+#[test]
+fn the_part_that_blocks_the_approach_is_named() {
+    let p = path();
+    let o = PostOptions {
+        mode: Mode::Tcp,
+        scale: 2.0,
+        gauge: Some(60.0),
+        holder: Some(Holder { radius: 400.0, length: 10.0 }),
+        stock: Some([[-300.0, -300.0, -50.0], [300.0, 300.0, 1.0]]),
+        ..PostOptions::default()
+    };
+    let Err(Error::Unreachable { message, .. }) = plan(&p, &o) else { panic!("reachable") };
+    assert_eq!(message.reason, "approach-blocked");
+    assert_eq!(message.arg("part"), Some(&ruledlab::Arg::Text("holder".into())), "{}", message.english());
 }
 
 /// Poses named in the input's numbering: with 4 poses of the path per input pose and the input
@@ -351,4 +384,29 @@ fn the_rotary_axes_end_without_a_multi_turn_rapid() {
         "{home:?} from {last:?}"
     );
     assert!(p.ops.iter().any(|op| matches!(op, Op::Comment(c) if c.contains("no unwinding rapid"))));
+}
+
+/// A limited axis goes home to 0 as the book says, even where it ends on a whole turn: C limited
+/// to ±360 after one turn of the spiral ends at C360 and goes back to C0 (a rapid within its
+/// range), with no "no unwinding rapid" comment.
+#[test]
+fn a_limited_axis_goes_home_to_zero() {
+    let poses: Vec<Pose> = (0..=36)
+        .map(|k| {
+            let (t, f) = (30f64.to_radians(), (90.0 + 10.0 * k as f64).to_radians());
+            Pose {
+                tip: DVec3::new(40.0 * f.cos(), 40.0 * f.sin(), 0.0),
+                axis: DVec3::new(t.sin() * f.cos(), t.sin() * f.sin(), t.cos()),
+            }
+        })
+        .collect();
+    let path = ToolPath { poses, tool: Tool { radius: 3.0, length: 25.0, end: ToolEnd::Ball } };
+    let mut machine = Machine::preset("table-table-ac").unwrap();
+    (machine.rotary[1].min, machine.rotary[1].max) = (Some(-360.0), Some(360.0));
+    let p = plan(&path, &PostOptions { mode: Mode::Tcp, machine, ..PostOptions::default() }).unwrap();
+    let last = p.linearised.leaving(p.linearised.joints.len() - 1).rotary;
+    assert!((last[1].abs() - 360.0).abs() < 1e-6, "{last:?}");
+    let Some(Op::Rotate(home)) = p.ops.iter().rev().find(|op| matches!(op, Op::Rotate(_))).cloned() else { panic!() };
+    assert_eq!(home, [0.0, 0.0]);
+    assert!(!p.ops.iter().any(|op| matches!(op, Op::Comment(c) if c.contains("no unwinding rapid"))));
 }

@@ -1,0 +1,67 @@
+//! A flip of the rotary axes inside a cut is refused in every dialect and mode, naming the axis
+//! and its limit: on a table–table B/C machine with C limited to −90…90 a tool tilted 17.36° whose
+//! C would run from −80° to −100° must swing B to −17.36° and C round by 180° to stay within
+//! C's limits (the other solution of the orientation); with C continuous the same path posts.
+//! Sinumerik's `ORIVECT` (the tool axis as a vector, its own axes) makes the same jump: "Siemens
+//! SINUMERIK 840D sl, Programming Manual Job Planning, 'Orientation axes, ORIVECT'" — the
+//! controller's transformation picks the rotary values, and only one of its two solutions stays
+//! within C's limits.
+#![cfg(not(target_family = "wasm"))]
+
+use glam::DVec3;
+use ruledlab::{Arg, Error};
+use ruledlab_cam::{gcode, tool_axis, Dialect, Machine, Mode, Pose, PostOptions, Tool, ToolEnd, ToolPath};
+
+fn machine(limited: bool) -> Machine {
+    let mut m = Machine::preset("table-table-bc").unwrap();
+    let c = m.rotary.iter().position(|r| r.name.letter() == "C").unwrap();
+    if limited {
+        (m.rotary[c].min, m.rotary[c].max) = (Some(-90.0), Some(90.0));
+    }
+    m
+}
+
+/// 11 poses 3 mm apart along X, the tool axis that of B 17.36°, C −80° … −100°.
+fn path(m: &Machine) -> ToolPath {
+    let b = m.rotary.iter().position(|r| r.name.letter() == "B").unwrap();
+    let poses = (0..=10)
+        .map(|k| {
+            let mut rotary = [0.0; 2];
+            rotary[b] = 17.36;
+            rotary[1 - b] = -80.0 - 2.0 * k as f64;
+            Pose { tip: DVec3::new(3.0 * k as f64, 0.0, 0.0), axis: tool_axis(m, rotary) }
+        })
+        .collect();
+    ToolPath { poses, tool: Tool::new(3.0, 30.0, ToolEnd::Ball).unwrap() }
+}
+
+#[test]
+fn a_flip_inside_the_cut_is_refused_naming_the_axis_and_its_limit() {
+    let free = machine(false);
+    let p = path(&free);
+    for dialect in [Dialect::LinuxCnc, Dialect::Heidenhain, Dialect::Sinumerik] {
+        for mode in [Mode::Machine, Mode::Tcp] {
+            // with C continuous: no flip, the program is written
+            let o = PostOptions { dialect, mode, machine: free.clone(), ..Default::default() };
+            assert!(gcode(&p, &o).is_ok(), "{dialect:?} {mode:?}: {:?}", gcode(&p, &o).err());
+            let o = PostOptions { dialect, mode, machine: machine(true), ..Default::default() };
+            let e = gcode(&p, &o).unwrap_err();
+            let Error::Unreachable { pose, message, .. } = &e else { panic!("{dialect:?} {mode:?}: {e}") };
+            assert_eq!(message.reason, "flip-in-cut", "{dialect:?} {mode:?}: {e}");
+            let arg = |n: &str| message.arg(n).cloned();
+            assert_eq!(arg("axis"), Some(Arg::Text("C".into())), "{e}");
+            assert_eq!(arg("tilt"), Some(Arg::Text("B".into())), "{e}");
+            assert_eq!((arg("min"), arg("max")), (Some(Arg::Number(-90.0)), Some(Arg::Number(90.0))), "{e}");
+            // C reaches −90 at pose 5 and would pass it after: the flip comes at pose 4 or 5, C
+            // on the side it leaves at −88 … −92
+            assert!((4..=5).contains(pose), "{e}");
+            let Some(Arg::Number(v)) = arg("value") else { panic!("{e}") };
+            assert!((-92.0..=-88.0).contains(&v), "{e}");
+            let text = e.to_string();
+            assert!(
+                text.contains("at or beyond its limits -90 to 90") && text.contains("B from 17.36 to -17.36"),
+                "{text}"
+            );
+        }
+    }
+}
