@@ -72,6 +72,40 @@ test('doing an exercise: only what it lets change is enabled, Check says how eac
   await page.close();
 });
 
+test('back to a solved drag exercise: the figure is the reader’s, not the start, and no condition reads “not yet”', async () => {
+  const { page, problems } = await session.open('index.html#task=torsal-pair');
+  await ready(page);
+  // the reader's edit that solves it (the exercise's own solution, put as her edit would be)
+  const solution = await page.evaluate(async () => {
+    const { decodeInput } = await import('./www/edit/input.js');
+    const stage = window.ruledlab.stage;
+    const text = /** @type {string} */ (stage.task?.solution?.input);
+    stage.setInput(decodeInput(text), true);
+    return text;
+  });
+  await ready(page);
+  await page.click('.rl-task-check');
+  assert.match(await verdict(page), /^✓ Solved/);
+  // another exercise from the menu, then this one again
+  await page.selectOption('#task', 'coupled-strip');
+  await page.waitForFunction(() => window.ruledlab.stage.task?.id === 'coupled-strip');
+  await ready(page);
+  await page.selectOption('#task', 'torsal-pair');
+  await page.waitForFunction(() => window.ruledlab.stage.task?.id === 'torsal-pair');
+  await ready(page);
+  const shown = await page.evaluate(async () => {
+    const { encodeInput } = await import('./www/edit/input.js');
+    const input = window.ruledlab.stage.input;
+    return input ? encodeInput(input) : null;
+  });
+  assert.equal(shown, solution, 'the figure is the one she solved it with');
+  assert.match((await results(page)).join(' '), /✓/, 'her checks are listed');
+  await page.click('.rl-task-check');
+  assert.match(await verdict(page), /^✓ Solved/, 'checked again, it holds');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('with the keyboard alone: Tab to the answer, type, Enter checks; a hint and the solution by Enter', async () => {
   // (seed 0 draws 3 steps: 50 points)
   const { page, problems } = await session.open('index.html#task=chaikin-count&seed=0');

@@ -126,15 +126,18 @@ async function readExercise(stage, value, request) {
     const s = /** @type {import('../scene.js').Scene} */ (SCENES.find((x) => x.id === task.scene));
     return s.create(withChoices(s, { ...task.params, ...params }), { t, format, lang, ...(input ? { input } : {}) });
   });
-  const progress = request.progress?.(scene) ?? {};
+  // the reader's progress: what the request brings (a link, a course), else what she did in the
+  // attempt kept for these numbers — a return to an exercise shows her figure, not its start
+  const progress = { ...(attempt?.params ?? {}), ...(request.progress?.(scene) ?? {}) };
   const changed = Object.fromEntries(Object.entries(progress).filter(([k]) => task.change.includes(k)));
   const start = task.input ? decodeInput(task.input) : null;
+  const edit = request.taskInput ?? (attempt?.input ? decodeInput(attempt.input) : null);
   return {
     scene,
     params: { ...defaults(scene), ...withChoices(scene, task.params), ...changed },
     exercise: task,
     attempt,
-    input: task.change.includes('handles') && request.taskInput ? request.taskInput : start,
+    input: task.change.includes('handles') && edit ? edit : start,
     camera: request.camera ?? null,
     paper: null,
     data: undefined,

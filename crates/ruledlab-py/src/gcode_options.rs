@@ -155,7 +155,12 @@ fn fields<'py>(
 
 /// The options of a program from the keyword arguments.
 pub fn read_post_options(func: &str, a: &PostArgs<'_, '_>) -> PyResult<PostOptions> {
-    let d = PostOptions::default();
+    let units = match args::choice(func, "units", a.units, &["mm", "inch"])? {
+        None | Some(0) => Units::Mm,
+        _ => Units::Inch,
+    };
+    // the defaults of the program's units (an inch program: 0.0004 in, 0.2 in)
+    let d = PostOptions::defaults_in(units);
     let number = |name: &str, v| args::optional_number(func, name, v);
     let holder = match a.holder.filter(|v| !v.is_none()) {
         None => None,
@@ -231,10 +236,7 @@ pub fn read_post_options(func: &str, a: &PostArgs<'_, '_>) -> PyResult<PostOptio
             None => d.machine.clone(),
             Some(m) => machine(func, m)?,
         },
-        units: match args::choice(func, "units", a.units, &["mm", "inch"])? {
-            None | Some(0) => Units::Mm,
-            _ => Units::Inch,
-        },
+        units,
         feed: number("feed", a.feed)?.unwrap_or(d.feed),
         approach_feed: number("approach_feed", a.approach_feed)?,
         scale: number("scale", a.scale)?.unwrap_or(d.scale),
@@ -261,5 +263,8 @@ pub fn read_post_options(func: &str, a: &PostArgs<'_, '_>) -> PyResult<PostOptio
         pole_cone: number("pole_cone", a.pole_cone)?.unwrap_or(d.pole_cone),
         numbering,
         name: args::optional_text(func, "name", a.name)?.unwrap_or(d.name),
+        // (the deviation of the program as posted against a part's points: the JavaScript API's
+        // `target`, not offered here yet)
+        target: None,
     })
 }
