@@ -28,6 +28,11 @@ const EDITABLE = {
   data: ['rulings', ''],
 };
 
+// Scenes with handles whose drag moves more than the handle taken, by design: the paper models'
+// strip is made developable again by the core after each move (its neighbours turn to keep every
+// pair coplanar), which tests/node/developable.test.mjs holds to |δ| within its tolerance.
+const REPAIRED = { developable: 'the core turns the neighbours to keep every pair coplanar' };
+
 /** @typedef {import('playwright-core').Page} Page */
 
 /** The stage's input now (the edit, or the built-in input), as plain arrays of numbers. */
@@ -159,7 +164,7 @@ test('every scene with handles: mouse, finger and keyboard move exactly the hand
     }
     return out;
   });
-  assert.deepEqual(declared.sort(), [...ids].sort());
+  assert.deepEqual(declared.sort(), [...ids, ...Object.keys(REPAIRED)].sort());
   for (const id of ids) {
     const [key, extra] = EDITABLE[id];
     await showScene(page, `#scene=${id}&${extra}`, id);
