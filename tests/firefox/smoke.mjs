@@ -57,8 +57,11 @@ try {
   );
   for (const scene of scenes) {
     const before = problems.length;
+    // a fresh load of each scene: from a blank page, not a refresh right after the link's change,
+    // which would cancel the CAM module's import that the scene's opening began (Firefox reports
+    // the cancelled import as an error of the page it left)
+    await driver.get('about:blank');
     await driver.get(`${url}#scene=${scene}`);
-    await driver.navigate().refresh();
     await driver.wait(until.elementLocated(By.css('.rl-stage[data-ready="1"]')), 60000);
     await driver.sleep(300);
     const canvas = await driver.findElement(By.css('.rl-view canvas'));
