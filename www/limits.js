@@ -95,6 +95,12 @@ export const STRAIGHTNESS_SAMPLES = 201;
 export const STRAIGHTNESS_MIN_EXTENT = 1e-3;
 
 /**
+ * "Closed in u" fits a typed surface when the rulings at the two ends of u are one line: parallel
+ * at a distance of at most this share of the largest coordinate (rounding of the core's sampling).
+ */
+export const CLOSING_GAP = 1e-9;
+
+/**
  * Most triangles of one mesh drawn in a figure (SVG, TikZ): a larger mesh is drawn by its lighter
  * stand-in (Layer.moving) where it has one — facets far below a printed line's width add bytes,
  * not detail.

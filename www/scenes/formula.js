@@ -8,7 +8,7 @@ import { strictionLayers, exactCurve } from '../layers/striction.js';
 import { convergenceLayers } from '../layers/convergence.js';
 import { isometryLayers } from '../layers/isometry.js';
 import { subdivisionLayers } from '../layers/subdivision.js';
-import { STRAIGHTNESS_MIN_EXTENT, STRAIGHTNESS_SAMPLES } from '../limits.js';
+import { CLOSING_GAP, STRAIGHTNESS_MIN_EXTENT, STRAIGHTNESS_SAMPLES } from '../limits.js';
 import { SURFACE_PRESETS, formulaParameter, surfaceFields } from '../catalogue.js';
 
 const HYPERBOLOID = surfaceFields('hyperboloid');
@@ -72,19 +72,19 @@ function analyticOf(p, ctx) {
  * line, either way round: a Möbius band closes too). A surface typed over a preset keeps the
  * preset's "closed" (the hyperboloid's), and a helicoid over [0, 2π] would be joined from its top
  * back to its foot: that is said, not drawn silently.
+ * @param {<T extends {free(): void}>(o: T) => T} own   the scene's scope (frees what it makes)
  * @param {import('../../pkg/ruledlab.js').AnalyticSurface} analytic
  * @param {import('../scene.js').Context} ctx
  */
-function notClosing(analytic, ctx) {
+function notClosing(own, analytic, ctx) {
   // the core's pair invariants of the rulings at the two ends of u: one line when they are
   // parallel (or antiparallel) at distance 0
-  const ends = analytic.sample(2, { closed: false });
+  const ends = own(analytic.sample(2, { closed: false }));
   const { parallel, distance, angle } = ends.invariants({ closed: false });
-  // rounding: 10⁻⁹ of the largest coordinate
+  // rounding: CLOSING_GAP of the largest coordinate
   const size = Array.from(ends.segments()).reduce((m, x) => Math.max(m, Math.abs(x)), 1);
-  ends.free();
   const gap = Math.abs(distance[0]);
-  if (parallel[0] && gap <= 1e-9 * size) return null;
+  if (parallel[0] && gap <= CLOSING_GAP * size) return null;
   const [uMin, uMax] = [...analytic.parameters(2, { closed: false })];
   return ctx.t('formula.problem.notClosed', {
     umin: ctx.format(uMin),
@@ -275,7 +275,7 @@ export const scene = defineScene({
       if (p.tool === 'convergence')
         return convergenceLayers(own, analytic, { u: Number(p.u), h0: Number(p.h0), levels: Number(p.levels) }, ctx);
       // "Closed in u" on a surface whose ends do not meet (the tools that read it: these two)
-      const open = ranges.closed ? notClosing(analytic, ctx) : null;
+      const open = ranges.closed ? notClosing(own, analytic, ctx) : null;
       const also = (/** @type {import('../scene.js').Built} */ b) =>
         open ? { ...b, problems: [open, ...(b.problems ?? [])] } : b;
       if (p.tool === 'subdivision')

@@ -21,9 +21,9 @@ export default {
   'developable.readout.gap': 'größte Lücke h eines Paares',
   'developable.readout.climb': 'die Lücken aufsummiert (der Anstieg)',
   'developable.describe':
-    'Der Streifen „{kind}“ mit {n} Erzeugenden, je zwei benachbarte in einer Ebene, neben seinem exakten Schnittmuster in {pieces} Teilen.',
+    'Der Streifen „{kind}“ mit {n} Erzeugenden, je zwei benachbarte in einer Ebene, neben seinem exakten Schnittmuster (auszuschneidende Teile: {pieces}).',
   'developable.describeApproximate':
-    'Der Streifen „{kind}“ mit {n} Erzeugenden neben der näherungsweisen Abwicklung aus Abschnitt 3, die bei jedem Paar von Erzeugenden eine Lücke lässt; {pieces} Teile.',
+    'Der Streifen „{kind}“ mit {n} Erzeugenden neben der näherungsweisen Abwicklung aus Abschnitt 3, die bei jedem Paar von Erzeugenden eine Lücke lässt; auszuschneidende Teile: {pieces}.',
   'developable.download.svg': 'Schnittmuster (SVG, 1:1 in mm)',
   'developable.download.dxf': 'Schnittmuster (DXF R12, für Laserschneider)',
   'developable.from': 'der Streifen „{kind}“',

@@ -21,9 +21,9 @@ export default {
   'developable.readout.gap': 'largest gap h of a pair',
   'developable.readout.climb': 'the gaps added up (the climb)',
   'developable.describe':
-    'The {kind} with {n} rulings, every pair of consecutive rulings coplanar, beside its exact flat pattern in {pieces} pieces.',
+    'The {kind} with {n} rulings, every pair of consecutive rulings coplanar, beside its exact flat pattern (pieces to cut: {pieces}).',
   'developable.describeApproximate':
-    'The {kind} with {n} rulings beside Section 3’s approximate development, which leaves a gap at every pair of rulings; {pieces} pieces.',
+    'The {kind} with {n} rulings beside Section 3’s approximate development, which leaves a gap at every pair of rulings; pieces to cut: {pieces}.',
   'developable.download.svg': 'Flat pattern (SVG, 1:1 in mm)',
   'developable.download.dxf': 'Flat pattern (DXF R12, for laser cutters)',
   'developable.from': 'the {kind}',
