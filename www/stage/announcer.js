@@ -18,8 +18,12 @@ export class Announcer {
     this.timer = 0;
   }
 
-  /** Says `text` now. */
+  /**
+   * Says `text` now. A readout still waiting for its second is dropped: it would be said after
+   * `text` and speak over it (an undo's readout over the snap of the drag that follows).
+   */
   say(/** @type {string} */ text) {
+    clearTimeout(this.timer);
     this.status.textContent = text;
   }
 
