@@ -11,7 +11,7 @@ from typing import Any, Callable, Literal, Optional, Sequence, TypedDict, Union
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from typing_extensions import NotRequired
+from typing_extensions import NotRequired, Unpack
 
 F64 = NDArray[np.float64]
 Bound = Union[float, str]
@@ -185,6 +185,18 @@ class PostWarning(TypedDict):
     args: dict[str, Union[str, float]]
     message: str
 
+class PostDeviation(TypedDict):
+    """The target's deviation from the sweep of the program as posted, program units."""
+
+    gouge: float
+    leave: float
+    rms: float
+    at: F64  # (3,)
+    largest: float
+    worst: int
+    pose: float
+    points: F64  # (M,)
+
 class PostResult(TypedDict):
     text: str
     poses: int
@@ -207,6 +219,7 @@ class PostResult(TypedDict):
     adjusted: F64
     warnings: list[PostWarning]
     stock: list[list[float]]
+    deviation: NotRequired[PostDeviation]
 
 class Holder(TypedDict):
     radius: float
@@ -229,6 +242,36 @@ class ImportedTarget(TypedDict):
     units: NotRequired[Literal["mm", "inch"]]
 
 MachineName = Literal["table-table-ac", "table-table-bc", "head-table-bc", "head-head-ac"]
+
+class PostOptions(TypedDict, total=False):
+    """The options of a program (``ToolPath.export("gcode", …)``, ``ToolPath.post``), each
+    optional (None: the default); ``target``, the part's points (M, 3) in model units, adds the
+    deviation of the program as posted to the result and the header."""
+
+    dialect: Optional[Literal["linuxcnc", "heidenhain", "sinumerik"]]
+    mode: Optional[Literal["machine", "tcp"]]
+    machine: Union[MachineName, dict[str, Any], None]
+    units: Optional[Literal["mm", "inch"]]
+    feed: Optional[float]
+    approach_feed: Optional[float]
+    scale: Optional[float]
+    tool: Optional[int]
+    spindle: Optional[float]
+    direction: Optional[Literal["cw", "ccw"]]
+    coolant: Optional[Literal["flood", "mist", "off"]]
+    work_offset: Optional[int]
+    safe_height: Optional[float]
+    clearance: Optional[float]
+    tolerance: Optional[float]
+    angular_tolerance: Optional[float]
+    gauge: Optional[float]
+    holder: Optional[Holder]
+    shank: Optional[float]
+    stock: Optional[ArrayLike]
+    pole_cone: Optional[float]
+    input: Optional[InputNumbering]
+    name: Optional[str]
+    target: Optional[ArrayLike]
 
 # --- classes
 
@@ -464,58 +507,13 @@ class ToolPath:
     def export(
         self,
         format: Literal["json", "csv", "gcode"],
-        *,
-        dialect: Optional[Literal["linuxcnc", "heidenhain", "sinumerik"]] = None,
-        mode: Optional[Literal["machine", "tcp"]] = None,
-        machine: Union[MachineName, dict[str, Any], None] = None,
-        units: Optional[Literal["mm", "inch"]] = None,
-        feed: Optional[float] = None,
-        approach_feed: Optional[float] = None,
-        scale: Optional[float] = None,
-        tool: Optional[int] = None,
-        spindle: Optional[float] = None,
-        direction: Optional[Literal["cw", "ccw"]] = None,
-        coolant: Optional[Literal["flood", "mist", "off"]] = None,
-        work_offset: Optional[int] = None,
-        safe_height: Optional[float] = None,
-        clearance: Optional[float] = None,
-        tolerance: Optional[float] = None,
-        angular_tolerance: Optional[float] = None,
-        gauge: Optional[float] = None,
-        holder: Optional[Holder] = None,
-        shank: Optional[float] = None,
-        stock: Optional[ArrayLike] = None,
-        pole_cone: Optional[float] = None,
-        input: Optional[InputNumbering] = None,
-        name: Optional[str] = None,
+        **options: Unpack[PostOptions],
     ) -> str: ...
     def post(
         self,
         *,
-        dialect: Optional[Literal["linuxcnc", "heidenhain", "sinumerik"]] = None,
-        mode: Optional[Literal["machine", "tcp"]] = None,
-        machine: Union[MachineName, dict[str, Any], None] = None,
-        units: Optional[Literal["mm", "inch"]] = None,
-        feed: Optional[float] = None,
-        approach_feed: Optional[float] = None,
-        scale: Optional[float] = None,
-        tool: Optional[int] = None,
-        spindle: Optional[float] = None,
-        direction: Optional[Literal["cw", "ccw"]] = None,
-        coolant: Optional[Literal["flood", "mist", "off"]] = None,
-        work_offset: Optional[int] = None,
-        safe_height: Optional[float] = None,
-        clearance: Optional[float] = None,
-        tolerance: Optional[float] = None,
-        angular_tolerance: Optional[float] = None,
-        gauge: Optional[float] = None,
-        holder: Optional[Holder] = None,
-        shank: Optional[float] = None,
-        stock: Optional[ArrayLike] = None,
-        pole_cone: Optional[float] = None,
-        input: Optional[InputNumbering] = None,
-        name: Optional[str] = None,
         on_progress: Optional[Callable[[float], object]] = None,
+        **options: Unpack[PostOptions],
     ) -> PostResult: ...
 
 # --- free functions

@@ -44,6 +44,10 @@ out.focal = arrays(congruence.focal());
 const path = cam.ToolPath.example(7).refine({ steps: 2 });
 out.gcode = path.export('gcode', { machine: 'table-table-ac', dialect: 'sinumerik' });
 out.post = arrays(path.post({ machine: 'head-table-bc' }));
+// the deviation of the program as posted from the example's profile
+const target = cam.ToolPath.exampleProfile(40);
+const measured = path.post({ machine: 'head-table-bc', target });
+out.deviation = measured.deviation && arrays(measured.deviation);
 
 writeFileSync(
   process.argv[3],

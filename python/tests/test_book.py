@@ -27,8 +27,9 @@ def test_the_python_chapter_runs_as_printed():
     printed = out.getvalue().splitlines()
     # what the comments say it prints
     assert printed[1] == "800 (800, 6)"
-    assert printed[2] == "not-finite 2 [2, 1]"
-    assert printed[3].startswith("RuledSurface.from_segments: coordinate b[2, 1] (ruling 2, b.y) is NaN")
+    assert printed[2] == "gouge -0.0112 leave 0.0047"
+    assert printed[3] == "not-finite 2 [2, 1]"
+    assert printed[4].startswith("RuledSurface.from_segments: coordinate b[2, 1] (ruling 2, b.y) is NaN")
 
 
 def run_in_kernel(cells: list[str], tmp_path: Path) -> list[dict]:

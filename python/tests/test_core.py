@@ -324,6 +324,9 @@ def test_every_error_has_a_code():
         (lambda: AnalyticSurface.by_name("torus"), "invalid-argument"),
         (lambda: ToolPath.example(7).export("gcode", machine={"rotary": []}), "invalid-argument"),
         (lambda: ToolPath.example(7).post(machine="table-table-ac", tolerance=-1), "invalid-argument"),
+        (lambda: ToolPath.example(7).post(feeed=100), "invalid-argument"),
+        (lambda: ToolPath.example(7).export("gcode", target=[[0, 0, float("nan")], [1, 1, 1]]), "not-finite"),
+        (lambda: ToolPath.example(7).export("csv", target=[[0, 0, 0]]), "invalid-argument"),
     ]
     for call, code in cases:
         with pytest.raises(RuledlabError) as e:
@@ -333,6 +336,9 @@ def test_every_error_has_a_code():
     with pytest.raises(RuledlabError) as e:
         AnalyticSurface.from_formulas(["sni(u)", "0", "0"], ["1", "0", "0"], [0, 1])
     assert (e.value.details["option"], e.value.details["column"]) == ("a[0]", 1)
+    with pytest.raises(RuledlabError, match='unknown option "feeed"; the options are dialect, mode') as e:
+        ToolPath.example(7).post(feeed=100)
+    assert e.value.details["option"] == "feeed"
 
 
 # --- the GIL

@@ -1,5 +1,5 @@
-//! The options of a G-code program as Python passes them (keyword arguments of
-//! `ToolPath.export("gcode", …)` and `ToolPath.post(…)`), read into `ruledlab_cam::PostOptions`,
+//! The options of a G-code program as Python passes them (the keyword arguments of
+//! `ToolPath.export("gcode", …)` and `ToolPath.post(…)`, read by name from one list), read into `ruledlab_cam::PostOptions`,
 //! as `crates/ruledlab-cam-wasm/src/gcode_options.rs` reads JavaScript's `GcodeOptions` (the
 //! book's "G-code and its dialects"): the same names in snake_case, every one optional. A machine
 //! is a preset's name or its JSON description as a dict (keys as the book writes them:
@@ -12,87 +12,71 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use ruledlab_cam::{Coolant, Dialect, Holder, Machine, Mode, Numbering, PostOptions, SpindleDirection, Units};
 
-/// The keyword arguments of a program, as given (None: left out).
-#[derive(Default)]
-pub struct PostArgs<'a, 'py> {
-    /// "linuxcnc" (default), "heidenhain" or "sinumerik".
-    pub dialect: Option<&'a Bound<'py, PyAny>>,
-    /// "machine" (default) or "tcp".
-    pub mode: Option<&'a Bound<'py, PyAny>>,
-    /// A preset's name (default "table-table-ac") or a machine description (a dict).
-    pub machine: Option<&'a Bound<'py, PyAny>>,
-    /// "mm" (default) or "inch".
-    pub units: Option<&'a Bound<'py, PyAny>>,
-    /// Feed at the tool tip, units/min (default 1000).
-    pub feed: Option<&'a Bound<'py, PyAny>>,
-    /// Feed of the approach and retract, units/min (default feed / 4).
-    pub approach_feed: Option<&'a Bound<'py, PyAny>>,
-    /// Units per model unit of the path (default 1).
-    pub scale: Option<&'a Bound<'py, PyAny>>,
-    /// Tool number (default 1).
-    pub tool: Option<&'a Bound<'py, PyAny>>,
-    /// Spindle speed, 1/min (default 10000).
-    pub spindle: Option<&'a Bound<'py, PyAny>>,
-    /// "cw" (default) or "ccw".
-    pub direction: Option<&'a Bound<'py, PyAny>>,
-    /// "flood" (default), "mist" or "off".
-    pub coolant: Option<&'a Bound<'py, PyAny>>,
-    /// Work offset 1–6 (default 1).
-    pub work_offset: Option<&'a Bound<'py, PyAny>>,
-    /// Least part height of the safe moves.
-    pub safe_height: Option<&'a Bound<'py, PyAny>>,
-    /// Distance kept from the stock along the tool axis (default 5 mm).
-    pub clearance: Option<&'a Bound<'py, PyAny>>,
-    /// The chordal tolerance (default 0.01 mm).
-    pub tolerance: Option<&'a Bound<'py, PyAny>>,
-    /// The angular tolerance, degrees (default none).
-    pub angular_tolerance: Option<&'a Bound<'py, PyAny>>,
-    /// Gauge length, spindle nose to tip.
-    pub gauge: Option<&'a Bound<'py, PyAny>>,
-    /// The tool holder: {"radius", "length"}.
-    pub holder: Option<&'a Bound<'py, PyAny>>,
-    /// The shank's radius.
-    pub shank: Option<&'a Bound<'py, PyAny>>,
-    /// The stock box, [[xmin, ymin, zmin], [xmax, ymax, zmax]].
-    pub stock: Option<&'a Bound<'py, PyAny>>,
-    /// Half-angle of the pole cone, degrees (default 1).
-    pub pole_cone: Option<&'a Bound<'py, PyAny>>,
-    /// How the input the path was refined from numbers its poses: {"stride", "lines"}.
-    pub input: Option<&'a Bound<'py, PyAny>>,
-    /// Program name (Heidenhain, Sinumerik).
-    pub name: Option<&'a Bound<'py, PyAny>>,
+/// The options' names, as the book's "G-code and its dialects" lists them (`target`: the
+/// part's points, (M, 3) in model units, the program measured against them).
+pub const POST_OPTIONS: [&str; 24] = [
+    "dialect",
+    "mode",
+    "machine",
+    "units",
+    "feed",
+    "approach_feed",
+    "scale",
+    "tool",
+    "spindle",
+    "direction",
+    "coolant",
+    "work_offset",
+    "safe_height",
+    "clearance",
+    "tolerance",
+    "angular_tolerance",
+    "gauge",
+    "holder",
+    "shank",
+    "stock",
+    "pole_cone",
+    "input",
+    "name",
+    "target",
+];
+
+/// The keyword arguments of a program, as given: each of [`POST_OPTIONS`] or left out (a
+/// `None` counts as left out); a keyword not among them is refused with the list.
+pub struct PostArgs<'py> {
+    values: Vec<Option<Bound<'py, PyAny>>>,
 }
 
-impl PostArgs<'_, '_> {
+impl<'py> PostArgs<'py> {
+    /// The options among `kwargs`; `also` names keywords the caller reads itself (left here).
+    pub fn read(func: &str, kwargs: Option<&Bound<'py, PyDict>>, also: &[&str]) -> PyResult<Self> {
+        let mut values = vec![None; POST_OPTIONS.len()];
+        for (key, value) in kwargs.into_iter().flat_map(|d| d.iter()) {
+            let key = key.str()?.to_string();
+            match POST_OPTIONS.iter().position(|k| *k == key) {
+                Some(i) => values[i] = Some(value).filter(|v| !v.is_none()),
+                None if also.contains(&key.as_str()) => {}
+                None => {
+                    return Err(fail_option(
+                        func,
+                        &key,
+                        format!("unknown option \"{key}\"; the options are {}", POST_OPTIONS.join(", ")),
+                    ))
+                }
+            }
+        }
+        Ok(PostArgs { values })
+    }
+
+    /// The option `name` (one of [`POST_OPTIONS`]), if given.
+    fn get(&self, name: &str) -> Option<&Bound<'py, PyAny>> {
+        let i = POST_OPTIONS.iter().position(|k| *k == name).unwrap_or_else(|| unreachable!("an option's name"));
+        self.values[i].as_ref()
+    }
+
     /// Whether any option was given.
     pub fn any(&self) -> bool {
-        [
-            self.dialect,
-            self.mode,
-            self.machine,
-            self.units,
-            self.feed,
-            self.approach_feed,
-            self.scale,
-            self.tool,
-            self.spindle,
-            self.direction,
-            self.coolant,
-            self.work_offset,
-            self.safe_height,
-            self.clearance,
-            self.tolerance,
-            self.angular_tolerance,
-            self.gauge,
-            self.holder,
-            self.shank,
-            self.stock,
-            self.pole_cone,
-            self.input,
-            self.name,
-        ]
-        .into_iter()
-        .any(args::given)
+        self.values.iter().any(Option::is_some)
     }
 }
 
@@ -154,15 +138,15 @@ fn fields<'py>(
 }
 
 /// The options of a program from the keyword arguments.
-pub fn read_post_options(func: &str, a: &PostArgs<'_, '_>) -> PyResult<PostOptions> {
-    let units = match args::choice(func, "units", a.units, &["mm", "inch"])? {
+pub fn read_post_options(func: &str, a: &PostArgs<'_>) -> PyResult<PostOptions> {
+    let units = match args::choice(func, "units", a.get("units"), &["mm", "inch"])? {
         None | Some(0) => Units::Mm,
         _ => Units::Inch,
     };
     // the defaults of the program's units (an inch program: 0.0004 in, 0.2 in)
     let d = PostOptions::defaults_in(units);
     let number = |name: &str, v| args::optional_number(func, name, v);
-    let holder = match a.holder.filter(|v| !v.is_none()) {
+    let holder = match a.get("holder") {
         None => None,
         Some(h) => {
             let f = fields(func, "holder", h, &["radius", "length"])?;
@@ -175,7 +159,7 @@ pub fn read_post_options(func: &str, a: &PostArgs<'_, '_>) -> PyResult<PostOptio
             Some(Holder { radius: part(0, "radius")?, length: part(1, "length")? })
         }
     };
-    let numbering = match a.input.filter(|v| !v.is_none()) {
+    let numbering = match a.get("input") {
         None => None,
         Some(i) => {
             let f = fields(func, "input", i, &["stride", "lines"])?;
@@ -201,7 +185,7 @@ pub fn read_post_options(func: &str, a: &PostArgs<'_, '_>) -> PyResult<PostOptio
             Some(Numbering { stride, lines })
         }
     };
-    let stock = match a.stock.filter(|v| !v.is_none()) {
+    let stock = match a.get("stock") {
         None => None,
         Some(s) => {
             let given = arrays::numbers(func, "stock", s)?;
@@ -223,48 +207,60 @@ pub fn read_post_options(func: &str, a: &PostArgs<'_, '_>) -> PyResult<PostOptio
         }
     };
     Ok(PostOptions {
-        dialect: match args::choice(func, "dialect", a.dialect, &["linuxcnc", "heidenhain", "sinumerik"])? {
+        dialect: match args::choice(func, "dialect", a.get("dialect"), &["linuxcnc", "heidenhain", "sinumerik"])? {
             None | Some(0) => Dialect::LinuxCnc,
             Some(1) => Dialect::Heidenhain,
             _ => Dialect::Sinumerik,
         },
-        mode: match args::choice(func, "mode", a.mode, &["machine", "tcp"])? {
+        mode: match args::choice(func, "mode", a.get("mode"), &["machine", "tcp"])? {
             None | Some(0) => Mode::Machine,
             _ => Mode::Tcp,
         },
-        machine: match a.machine.filter(|v| !v.is_none()) {
+        machine: match a.get("machine") {
             None => d.machine.clone(),
             Some(m) => machine(func, m)?,
         },
         units,
-        feed: number("feed", a.feed)?.unwrap_or(d.feed),
-        approach_feed: number("approach_feed", a.approach_feed)?,
-        scale: number("scale", a.scale)?.unwrap_or(d.scale),
-        tool: whole(func, "tool", a.tool, d.tool)?,
-        spindle: number("spindle", a.spindle)?.unwrap_or(d.spindle),
-        direction: match args::choice(func, "direction", a.direction, &["cw", "ccw"])? {
+        feed: number("feed", a.get("feed"))?.unwrap_or(d.feed),
+        approach_feed: number("approach_feed", a.get("approach_feed"))?,
+        scale: number("scale", a.get("scale"))?.unwrap_or(d.scale),
+        tool: whole(func, "tool", a.get("tool"), d.tool)?,
+        spindle: number("spindle", a.get("spindle"))?.unwrap_or(d.spindle),
+        direction: match args::choice(func, "direction", a.get("direction"), &["cw", "ccw"])? {
             None | Some(0) => SpindleDirection::Clockwise,
             _ => SpindleDirection::CounterClockwise,
         },
-        coolant: match args::choice(func, "coolant", a.coolant, &["flood", "mist", "off"])? {
+        coolant: match args::choice(func, "coolant", a.get("coolant"), &["flood", "mist", "off"])? {
             None | Some(0) => Coolant::Flood,
             Some(1) => Coolant::Mist,
             _ => Coolant::Off,
         },
-        work_offset: whole(func, "work_offset", a.work_offset, d.work_offset)?,
-        safe_height: number("safe_height", a.safe_height)?,
-        clearance: number("clearance", a.clearance)?.unwrap_or(d.clearance),
-        tolerance: number("tolerance", a.tolerance)?.unwrap_or(d.tolerance),
-        angular_tolerance: number("angular_tolerance", a.angular_tolerance)?,
-        gauge: number("gauge", a.gauge)?,
+        work_offset: whole(func, "work_offset", a.get("work_offset"), d.work_offset)?,
+        safe_height: number("safe_height", a.get("safe_height"))?,
+        clearance: number("clearance", a.get("clearance"))?.unwrap_or(d.clearance),
+        tolerance: number("tolerance", a.get("tolerance"))?.unwrap_or(d.tolerance),
+        angular_tolerance: number("angular_tolerance", a.get("angular_tolerance"))?,
+        gauge: number("gauge", a.get("gauge"))?,
         holder,
-        shank: number("shank", a.shank)?,
+        shank: number("shank", a.get("shank"))?,
         stock,
-        pole_cone: number("pole_cone", a.pole_cone)?.unwrap_or(d.pole_cone),
+        pole_cone: number("pole_cone", a.get("pole_cone"))?.unwrap_or(d.pole_cone),
         numbering,
-        name: args::optional_text(func, "name", a.name)?.unwrap_or(d.name),
-        // (the deviation of the program as posted against a part's points: the JavaScript API's
-        // `target`, not offered here yet)
-        target: None,
+        name: args::optional_text(func, "name", a.get("name"))?.unwrap_or(d.name),
+        target: match a.get("target") {
+            None => None,
+            Some(t) => {
+                let given = arrays::numbers(func, "target", t)?;
+                let n = arrays::rows(func, "target", &given, 3, "point")?;
+                let points = ruledlab::points_from_flat(given.slice()).map_err(|e| {
+                    crate::error::fail_input(
+                        func,
+                        e,
+                        &crate::layout::Layout::One { name: "target", shape: vec![n, 3], lead: 1 },
+                    )
+                })?;
+                Some(points)
+            }
+        },
     })
 }

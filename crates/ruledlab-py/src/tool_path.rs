@@ -347,62 +347,15 @@ impl ToolPath {
     /// The path as text: "json" or "csv" (the poses, full precision), or "gcode": a program for
     /// a five-axis controller, with the keyword options of ``post`` (what it assumes is said in
     /// the program's header).
-    #[pyo3(signature = (format, *, dialect=None, mode=None, machine=None, units=None, feed=None, approach_feed=None, scale=None, tool=None, spindle=None, direction=None, coolant=None, work_offset=None, safe_height=None, clearance=None, tolerance=None, angular_tolerance=None, gauge=None, holder=None, shank=None, stock=None, pole_cone=None, input=None, name=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (format, **options))]
     fn export(
         &self,
         py: Python<'_>,
         format: &Bound<'_, PyAny>,
-        dialect: Option<&Bound<'_, PyAny>>,
-        mode: Option<&Bound<'_, PyAny>>,
-        machine: Option<&Bound<'_, PyAny>>,
-        units: Option<&Bound<'_, PyAny>>,
-        feed: Option<&Bound<'_, PyAny>>,
-        approach_feed: Option<&Bound<'_, PyAny>>,
-        scale: Option<&Bound<'_, PyAny>>,
-        tool: Option<&Bound<'_, PyAny>>,
-        spindle: Option<&Bound<'_, PyAny>>,
-        direction: Option<&Bound<'_, PyAny>>,
-        coolant: Option<&Bound<'_, PyAny>>,
-        work_offset: Option<&Bound<'_, PyAny>>,
-        safe_height: Option<&Bound<'_, PyAny>>,
-        clearance: Option<&Bound<'_, PyAny>>,
-        tolerance: Option<&Bound<'_, PyAny>>,
-        angular_tolerance: Option<&Bound<'_, PyAny>>,
-        gauge: Option<&Bound<'_, PyAny>>,
-        holder: Option<&Bound<'_, PyAny>>,
-        shank: Option<&Bound<'_, PyAny>>,
-        stock: Option<&Bound<'_, PyAny>>,
-        pole_cone: Option<&Bound<'_, PyAny>>,
-        input: Option<&Bound<'_, PyAny>>,
-        name: Option<&Bound<'_, PyAny>>,
+        options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<String> {
         const F: &str = "ToolPath.export";
-        let a = PostArgs {
-            dialect,
-            mode,
-            machine,
-            units,
-            feed,
-            approach_feed,
-            scale,
-            tool,
-            spindle,
-            direction,
-            coolant,
-            work_offset,
-            safe_height,
-            clearance,
-            tolerance,
-            angular_tolerance,
-            gauge,
-            holder,
-            shank,
-            stock,
-            pole_cone,
-            input,
-            name,
-        };
+        let a = PostArgs::read(F, options, &[])?;
         let formats = ["json", "csv", "gcode"];
         let format = args::choice(F, "format", Some(format), &formats)?.map(|k| formats[k]);
         match format {
@@ -424,65 +377,21 @@ impl ToolPath {
     /// ``block_minutes``, ``block_feed``, ``block_rotary_speed`` (B, 2), ``block_limit`` (0 feed,
     /// 1 speed limit, 2 acceleration limit, 3 the controller's feed word), per pose ``origin``,
     /// ``axes`` (P, 5: X, Y, Z, then the rotary axes in degrees), ``adjusted``; ``units``,
-    /// ``letters``, ``over_acceleration``, ``unwinds``, ``warnings``, ``stock``. Options as for
-    /// ``export("gcode", …)``; ``on_progress(fraction)`` is called as the post goes on. Releases
+    /// ``letters``, ``over_acceleration``, ``unwinds``, ``warnings``, ``stock``; with a ``target``
+    /// ((M, 3) points of the part, model units) its ``deviation`` from the sweep of the program as
+    /// posted, program units: ``gouge`` (≤ 0), ``leave`` (≥ 0), ``rms``, ``at`` (3,), ``largest``,
+    /// ``worst`` (its point's index), ``pose`` (k + s between poses k and k + 1), ``points`` (M,).
+    /// Options as for ``export("gcode", …)``; ``on_progress(fraction)`` is called as the post goes on. Releases
     /// the GIL while the post computes.
-    #[pyo3(signature = (*, dialect=None, mode=None, machine=None, units=None, feed=None, approach_feed=None, scale=None, tool=None, spindle=None, direction=None, coolant=None, work_offset=None, safe_height=None, clearance=None, tolerance=None, angular_tolerance=None, gauge=None, holder=None, shank=None, stock=None, pole_cone=None, input=None, name=None, on_progress=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (*, on_progress=None, **options))]
     fn post<'py>(
         &self,
         py: Python<'py>,
-        dialect: Option<&Bound<'py, PyAny>>,
-        mode: Option<&Bound<'py, PyAny>>,
-        machine: Option<&Bound<'py, PyAny>>,
-        units: Option<&Bound<'py, PyAny>>,
-        feed: Option<&Bound<'py, PyAny>>,
-        approach_feed: Option<&Bound<'py, PyAny>>,
-        scale: Option<&Bound<'py, PyAny>>,
-        tool: Option<&Bound<'py, PyAny>>,
-        spindle: Option<&Bound<'py, PyAny>>,
-        direction: Option<&Bound<'py, PyAny>>,
-        coolant: Option<&Bound<'py, PyAny>>,
-        work_offset: Option<&Bound<'py, PyAny>>,
-        safe_height: Option<&Bound<'py, PyAny>>,
-        clearance: Option<&Bound<'py, PyAny>>,
-        tolerance: Option<&Bound<'py, PyAny>>,
-        angular_tolerance: Option<&Bound<'py, PyAny>>,
-        gauge: Option<&Bound<'py, PyAny>>,
-        holder: Option<&Bound<'py, PyAny>>,
-        shank: Option<&Bound<'py, PyAny>>,
-        stock: Option<&Bound<'py, PyAny>>,
-        pole_cone: Option<&Bound<'py, PyAny>>,
-        input: Option<&Bound<'py, PyAny>>,
-        name: Option<&Bound<'py, PyAny>>,
         on_progress: Option<&Bound<'py, PyAny>>,
+        options: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         const F: &str = "ToolPath.post";
-        let a = PostArgs {
-            dialect,
-            mode,
-            machine,
-            units,
-            feed,
-            approach_feed,
-            scale,
-            tool,
-            spindle,
-            direction,
-            coolant,
-            work_offset,
-            safe_height,
-            clearance,
-            tolerance,
-            angular_tolerance,
-            gauge,
-            holder,
-            shank,
-            stock,
-            pole_cone,
-            input,
-            name,
-        };
+        let a = PostArgs::read(F, options, &[])?;
         let o = read_post_options(F, &a)?;
         let report: Option<Py<PyAny>> = match on_progress.filter(|f| !f.is_none()) {
             None => None,
@@ -568,6 +477,19 @@ impl ToolPath {
         }
         d.set_item("warnings", warnings)?;
         d.set_item("stock", p.stock.map(|c| c.map(|x| x / u)).map(|c| c.to_vec()).to_vec())?;
+        if let (Some(v), Some(target)) = (&p.deviation, &o.target) {
+            let e = PyDict::new(py);
+            e.set_item("gouge", v.gouge / u)?;
+            e.set_item("leave", v.leave / u)?;
+            e.set_item("rms", v.rms / u)?;
+            e.set_item("at", arrays::array(py, (target[v.worst] * o.scale).to_array().to_vec(), &[3])?)?;
+            e.set_item("largest", v.largest() / u)?;
+            e.set_item("worst", v.worst)?;
+            e.set_item("pose", v.at[v.worst])?;
+            let n = v.points.len();
+            e.set_item("points", arrays::array(py, v.points.iter().map(|x| x / u).collect(), &[n])?)?;
+            d.set_item("deviation", e)?;
+        }
         Ok(d)
     }
 }
