@@ -88,6 +88,16 @@ class SurfaceInfo(TypedDict):
     v_max: float
     closed: bool
 
+class Ranges(TypedDict, total=False):
+    """The sampling ranges of ``AnalyticSurface.sample`` and its kin, the surface's own where left
+    out (or None)."""
+
+    u_min: Optional[float]
+    u_max: Optional[float]
+    v_min: Optional[float]
+    v_max: Optional[float]
+    closed: Optional[bool]
+
 class FormulaParameters(TypedDict, total=False):
     a: float
     b: float
@@ -354,22 +364,12 @@ class AnalyticSurface:
     def sample(
         self,
         count: int,
-        *,
-        u_min: Optional[float] = None,
-        u_max: Optional[float] = None,
-        v_min: Optional[float] = None,
-        v_max: Optional[float] = None,
-        closed: Optional[bool] = None,
+        **ranges: Unpack[Ranges],
     ) -> RuledSurface: ...
     def parameters(
         self,
         count: int,
-        *,
-        u_min: Optional[float] = None,
-        u_max: Optional[float] = None,
-        v_min: Optional[float] = None,
-        v_max: Optional[float] = None,
-        closed: Optional[bool] = None,
+        **ranges: Unpack[Ranges],
     ) -> F64: ...
     def striction(self, u: ArrayLike) -> F64: ...
     def distribution(self, u: ArrayLike) -> F64: ...
@@ -379,22 +379,12 @@ class AnalyticSurface:
     def sampling_errors(
         self,
         count: int,
-        *,
-        u_min: Optional[float] = None,
-        u_max: Optional[float] = None,
-        v_min: Optional[float] = None,
-        v_max: Optional[float] = None,
-        closed: Optional[bool] = None,
+        **ranges: Unpack[Ranges],
     ) -> SamplingErrors: ...
     def sampling_orders(
         self,
         count: int,
-        *,
-        u_min: Optional[float] = None,
-        u_max: Optional[float] = None,
-        v_min: Optional[float] = None,
-        v_max: Optional[float] = None,
-        closed: Optional[bool] = None,
+        **ranges: Unpack[Ranges],
     ) -> SamplingOrders: ...
     def convergence(
         self, *, u: Optional[float] = None, h0: Optional[float] = None, levels: Optional[int] = None

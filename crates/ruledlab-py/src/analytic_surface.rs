@@ -23,14 +23,8 @@ pub struct AnalyticSurface {
     inner: ruledlab::AnalyticSurface,
 }
 
-/// The sampling ranges of the keyword arguments, the surface's own where left out.
-struct RangeArgs<'a, 'py> {
-    u_min: Option<&'a Bound<'py, PyAny>>,
-    u_max: Option<&'a Bound<'py, PyAny>>,
-    v_min: Option<&'a Bound<'py, PyAny>>,
-    v_max: Option<&'a Bound<'py, PyAny>>,
-    closed: Option<&'a Bound<'py, PyAny>>,
-}
+/// The keyword arguments of the sampling ranges (the surface's own where left out).
+const RANGES: [&str; 5] = ["u_min", "u_max", "v_min", "v_max", "closed"];
 
 impl AnalyticSurface {
     /// The core surface.
@@ -38,13 +32,16 @@ impl AnalyticSurface {
         &self.inner
     }
 
-    fn ranges(&self, func: &str, r: &RangeArgs<'_, '_>) -> PyResult<ruledlab::Ranges> {
+    fn ranges(&self, func: &str, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<ruledlab::Ranges> {
         let d = self.inner.ranges();
-        let bound = |name: &str, x, default: f64| args::optional_number(func, name, x).map(|x| x.unwrap_or(default));
+        let r = args::keywords(func, kwargs, &RANGES)?;
+        let bound = |k: usize, default: f64| {
+            args::optional_number(func, RANGES[k], r[k].as_ref()).map(|x| x.unwrap_or(default))
+        };
         Ok(ruledlab::Ranges {
-            u: (bound("u_min", r.u_min, d.u.0)?, bound("u_max", r.u_max, d.u.1)?),
-            v: (bound("v_min", r.v_min, d.v.0)?, bound("v_max", r.v_max, d.v.1)?),
-            closed: args::flag(func, "closed", r.closed, d.closed)?,
+            u: (bound(0, d.u.0)?, bound(1, d.u.1)?),
+            v: (bound(2, d.v.0)?, bound(3, d.v.1)?),
+            closed: args::flag(func, "closed", r[4].as_ref(), d.closed)?,
         })
     }
 
@@ -160,40 +157,30 @@ impl AnalyticSurface {
     // --- sampling
 
     /// ``count`` rulings at equally spaced u over the surface's ranges (or those given).
-    #[pyo3(signature = (count, *, u_min=None, u_max=None, v_min=None, v_max=None, closed=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (count, **ranges))]
     fn sample(
         &self,
         py: Python<'_>,
         count: &Bound<'_, PyAny>,
-        u_min: Option<&Bound<'_, PyAny>>,
-        u_max: Option<&Bound<'_, PyAny>>,
-        v_min: Option<&Bound<'_, PyAny>>,
-        v_max: Option<&Bound<'_, PyAny>>,
-        closed: Option<&Bound<'_, PyAny>>,
+        ranges: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<RuledSurface> {
         const F: &str = "AnalyticSurface.sample";
         let count = args::integer(F, "count", count, 2, MAX_SAMPLES)?;
-        let r = self.ranges(F, &RangeArgs { u_min, u_max, v_min, v_max, closed })?;
+        let r = self.ranges(F, ranges)?;
         py.detach(|| self.inner.sample(count, r)).map(RuledSurface::from_core).map_err(|e| fail(F, e))
     }
 
     /// The parameters u_i at which ``sample(count, …)`` takes its rulings, (count,).
-    #[pyo3(signature = (count, *, u_min=None, u_max=None, v_min=None, v_max=None, closed=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (count, **ranges))]
     fn parameters<'py>(
         &self,
         py: Python<'py>,
         count: &Bound<'py, PyAny>,
-        u_min: Option<&Bound<'py, PyAny>>,
-        u_max: Option<&Bound<'py, PyAny>>,
-        v_min: Option<&Bound<'py, PyAny>>,
-        v_max: Option<&Bound<'py, PyAny>>,
-        closed: Option<&Bound<'py, PyAny>>,
+        ranges: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         const F: &str = "AnalyticSurface.parameters";
         let count = args::integer(F, "count", count, 2, MAX_SAMPLES)?;
-        let r = self.ranges(F, &RangeArgs { u_min, u_max, v_min, v_max, closed })?;
+        let r = self.ranges(F, ranges)?;
         arrays::array(py, ruledlab::sample_parameters(count, r), &[count])
     }
 
@@ -276,42 +263,32 @@ impl AnalyticSurface {
     /// How far the discrete invariants of ``count`` sampled rulings are from the exact ones at
     /// those rulings: ``rulings``, ``parallel_pairs``, ``footpoint``, ``midpoint``,
     /// ``perpendicular_midpoint``, ``distribution_mean`` (closed surfaces read as closed).
-    #[pyo3(signature = (count, *, u_min=None, u_max=None, v_min=None, v_max=None, closed=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (count, **ranges))]
     fn sampling_errors<'py>(
         &self,
         py: Python<'py>,
         count: &Bound<'py, PyAny>,
-        u_min: Option<&Bound<'py, PyAny>>,
-        u_max: Option<&Bound<'py, PyAny>>,
-        v_min: Option<&Bound<'py, PyAny>>,
-        v_max: Option<&Bound<'py, PyAny>>,
-        closed: Option<&Bound<'py, PyAny>>,
+        ranges: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         const F: &str = "AnalyticSurface.sampling_errors";
         let count = args::integer(F, "count", count, 3, MAX_SAMPLES)?;
-        let r = self.ranges(F, &RangeArgs { u_min, u_max, v_min, v_max, closed })?;
+        let r = self.ranges(F, ranges)?;
         let e = py.detach(|| ruledlab::sampling_errors(&self.inner, count, r)).map_err(|e| fail(F, e))?;
         to_python(py, &e)
     }
 
     /// The orders measured from ``count`` rulings and the spacing halved: log₂ of the ratio of
     /// the two samplings' errors (Propositions 1 and 2: 1, 2, 2, 2), with ``finer``.
-    #[pyo3(signature = (count, *, u_min=None, u_max=None, v_min=None, v_max=None, closed=None))]
-    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (count, **ranges))]
     fn sampling_orders<'py>(
         &self,
         py: Python<'py>,
         count: &Bound<'py, PyAny>,
-        u_min: Option<&Bound<'py, PyAny>>,
-        u_max: Option<&Bound<'py, PyAny>>,
-        v_min: Option<&Bound<'py, PyAny>>,
-        v_max: Option<&Bound<'py, PyAny>>,
-        closed: Option<&Bound<'py, PyAny>>,
+        ranges: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         const F: &str = "AnalyticSurface.sampling_orders";
         let count = args::integer(F, "count", count, 3, MAX_SAMPLES / 2)?;
-        let r = self.ranges(F, &RangeArgs { u_min, u_max, v_min, v_max, closed })?;
+        let r = self.ranges(F, ranges)?;
         let o = py.detach(|| ruledlab::sampling_orders(&self.inner, count, r)).map_err(|e| fail(F, e))?;
         to_python(py, &o)
     }

@@ -10,7 +10,7 @@
 use crate::error::fail_option;
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
-use pyo3::types::{PyBool, PyString, PyType};
+use pyo3::types::{PyBool, PyDict, PyString, PyType};
 
 static REAL: PyOnceLock<Py<PyType>> = PyOnceLock::new();
 static INTEGRAL: PyOnceLock<Py<PyType>> = PyOnceLock::new();
@@ -146,4 +146,28 @@ pub fn only_for(func: &str, name: &str, present: bool, scheme: &str, chosen: Opt
 /// Whether an optional argument was given (not left out, not None).
 pub fn given(value: Option<&Bound<'_, PyAny>>) -> bool {
     value.is_some_and(|v| !v.is_none())
+}
+
+/// The keyword arguments `kwargs` read by name: each of `names` given (a `None` counts as left
+/// out) or left out, in the order of `names`; a keyword not among them is refused with the list.
+/// For a set of options several methods share (a program's options, a surface's ranges): one
+/// list of names instead of the same parameters in each signature.
+pub fn keywords<'py>(
+    func: &str,
+    kwargs: Option<&Bound<'py, PyDict>>,
+    names: &[&str],
+) -> PyResult<Vec<Option<Bound<'py, PyAny>>>> {
+    let mut values = vec![None; names.len()];
+    for (key, value) in kwargs.into_iter().flat_map(|d| d.iter()) {
+        let key = key.str()?.to_string();
+        let Some(i) = names.iter().position(|k| *k == key) else {
+            return Err(fail_option(
+                func,
+                &key,
+                format!("unknown option \"{key}\"; the options are {}", names.join(", ")),
+            ));
+        };
+        values[i] = Some(value).filter(|v| !v.is_none());
+    }
+    Ok(values)
 }

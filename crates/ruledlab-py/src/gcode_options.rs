@@ -42,30 +42,15 @@ pub const POST_OPTIONS: [&str; 24] = [
 ];
 
 /// The keyword arguments of a program, as given: each of [`POST_OPTIONS`] or left out (a
-/// `None` counts as left out); a keyword not among them is refused with the list.
+/// keyword not among them refused with the list: [`args::keywords`]).
 pub struct PostArgs<'py> {
     values: Vec<Option<Bound<'py, PyAny>>>,
 }
 
 impl<'py> PostArgs<'py> {
-    /// The options among `kwargs`; `also` names keywords the caller reads itself (left here).
-    pub fn read(func: &str, kwargs: Option<&Bound<'py, PyDict>>, also: &[&str]) -> PyResult<Self> {
-        let mut values = vec![None; POST_OPTIONS.len()];
-        for (key, value) in kwargs.into_iter().flat_map(|d| d.iter()) {
-            let key = key.str()?.to_string();
-            match POST_OPTIONS.iter().position(|k| *k == key) {
-                Some(i) => values[i] = Some(value).filter(|v| !v.is_none()),
-                None if also.contains(&key.as_str()) => {}
-                None => {
-                    return Err(fail_option(
-                        func,
-                        &key,
-                        format!("unknown option \"{key}\"; the options are {}", POST_OPTIONS.join(", ")),
-                    ))
-                }
-            }
-        }
-        Ok(PostArgs { values })
+    /// The options among `kwargs`.
+    pub fn read(func: &str, kwargs: Option<&Bound<'py, PyDict>>) -> PyResult<Self> {
+        Ok(PostArgs { values: args::keywords(func, kwargs, &POST_OPTIONS)? })
     }
 
     /// The option `name` (one of [`POST_OPTIONS`]), if given.

@@ -355,7 +355,7 @@ impl ToolPath {
         options: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<String> {
         const F: &str = "ToolPath.export";
-        let a = PostArgs::read(F, options, &[])?;
+        let a = PostArgs::read(F, options)?;
         let formats = ["json", "csv", "gcode"];
         let format = args::choice(F, "format", Some(format), &formats)?.map(|k| formats[k]);
         match format {
@@ -391,7 +391,7 @@ impl ToolPath {
         options: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         const F: &str = "ToolPath.post";
-        let a = PostArgs::read(F, options, &[])?;
+        let a = PostArgs::read(F, options)?;
         let o = read_post_options(F, &a)?;
         let report: Option<Py<PyAny>> = match on_progress.filter(|f| !f.is_none()) {
             None => None,
