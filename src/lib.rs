@@ -50,7 +50,7 @@ mod visibility;
 
 // errors and messages
 pub use error::{
-    message_number, message_template, Arg, Args, Catalogue, Details, Error, Message, Record, Result, MESSAGES,
+    message_number, message_template, Arg, Args, Catalogue, Details, Error, Message, Problem, Record, Result, MESSAGES,
     TEXT_REASON,
 };
 

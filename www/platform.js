@@ -32,13 +32,14 @@ export function place() {
 }
 
 /**
- * The tab's session storage, or null where there is none (a sandboxed frame throws on the
- * mere access; a browser with storage disabled throws on use).
+ * A storage of the browser, or null where there is none (a sandboxed frame throws on the mere
+ * access; a browser with storage disabled throws on use).
+ * @param {'sessionStorage' | 'localStorage'} kind
  * @returns {Storage | null}
  */
-function session() {
+function storage(kind) {
   try {
-    const s = globalThis.sessionStorage;
+    const s = globalThis[kind];
     const probe = 'ruledlab.probe';
     s.setItem(probe, '1');
     s.removeItem(probe);
@@ -47,6 +48,9 @@ function session() {
     return null;
   }
 }
+
+/** The tab's session storage, or null. */
+const session = () => storage('sessionStorage');
 
 /** Whether this document can keep data in session storage. */
 export function hasStorage() {
@@ -101,22 +105,8 @@ export function canFullscreen(/** @type {Document} */ doc = document) {
   return doc.fullscreenEnabled === true && typeof doc.documentElement.requestFullscreen === 'function';
 }
 
-/**
- * The browser's lasting storage (kept between visits), or null where there is none: a sandboxed
- * frame throws on the mere access, a browser with storage off on use.
- * @returns {Storage | null}
- */
-function lasting() {
-  try {
-    const s = globalThis.localStorage;
-    const probe = 'ruledlab.probe';
-    s.setItem(probe, '1');
-    s.removeItem(probe);
-    return s;
-  } catch {
-    return null;
-  }
-}
+/** The browser's lasting storage (kept between visits), or null. */
+const lasting = () => storage('localStorage');
 
 /** A text kept between visits, or null (also where there is no storage). */
 export function kept(/** @type {string} */ key) {

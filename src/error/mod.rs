@@ -10,9 +10,11 @@
 use std::fmt;
 
 mod message;
+mod problem;
 #[cfg(feature = "serde")]
 mod serialize;
 pub use message::{message_number, message_template, Arg, Catalogue, Message, MESSAGES, TEXT_REASON};
+pub use problem::Problem;
 
 /// Why an input was rejected or a computation could not be carried out.
 #[derive(Debug, Clone, PartialEq)]

@@ -9,6 +9,7 @@ import assert from 'node:assert/strict';
 import { pageSession, launch, watch, ready, shoot, showScene } from './browser.mjs';
 import { otherOrigin, hostPage, drawnShare } from './places.mjs';
 import { decodePng, countChanged } from './png.mjs';
+import { handlesOnPage } from './hands.mjs';
 
 const session = pageSession();
 const site = otherOrigin();
@@ -188,6 +189,30 @@ test('the page on a phone: 44-px targets, no text under 12 px, steps for a dense
       bar.filter((b) => b.width < 43.5 || b.height < 43.5).map((b) => b.name),
       [],
       'edit toolbar targets under 44 px',
+    );
+    // at 360 px, after an edit (↶ ↷ shown): all eight targets still on one row, each 44 px
+    await edit.setViewportSize({ width: 360, height: 740 });
+    await ready(edit);
+    const handle = (await handlesOnPage(edit)).find((h) => h.free);
+    assert.ok(handle, 'a handle in sight at 360 px');
+    await edit.mouse.move(handle.x, handle.y);
+    await edit.mouse.down();
+    await edit.mouse.move(handle.x + 12, handle.y + 6, { steps: 4 });
+    await edit.mouse.up();
+    await edit.locator('.rl-undo:not([hidden])').waitFor();
+    const narrow = await edit.evaluate(() =>
+      [...document.querySelectorAll('.rl-bar button')]
+        .filter((b) => b.checkVisibility())
+        .map((b) => ({ name: b.getAttribute('aria-label') ?? b.textContent, ...b.getBoundingClientRect().toJSON() })),
+    );
+    const rows = new Set(narrow.map((b) => Math.round(b.top)));
+    assert.ok(
+      narrow.length >= 8 && rows.size === 1,
+      `at 360 px: ${JSON.stringify(narrow.map((b) => [b.name, Math.round(b.left), Math.round(b.top)]))}`,
+    );
+    assert.ok(
+      narrow.every((b) => b.width >= 43.5 && b.height >= 43.5 && b.left >= 0 && b.right <= 360),
+      'targets of 44 px inside the screen',
     );
     await edit.close();
     // an exercise on a phone: Check brings its verdict into sight

@@ -185,12 +185,15 @@ export const CSS = `
 .rl-editing .rl-hint { display: none; }
 /* in a narrow box, while editing, the toolbar is the edit toolbar, one row of signs: the move modes,
    snapping, then Fit, ✎ (pressed: press again to stop), ↶ ↷ — Reset, full screen, ? and Done wait
-   until editing ends; the row is packed tight to stay one row on a phone */
+   until editing ends; the row is packed tight to stay one row on a phone: eight 44-px targets are
+   352 px, so at 360 px the bar reaches to 2 px of the edges and each group's buttons touch, as
+   segments (the groups kept apart by a pixel) */
 .rl-narrow .rl-editbar-label { display: none; }
 .rl-narrow .rl-view.rl-editing .rl-toolbar > :is(.rl-reset, .rl-fullscreen, .rl-help) { display: none; }
-.rl-narrow .rl-view.rl-editing .rl-bar { gap: .15rem; }
-.rl-narrow .rl-view.rl-editing :is(.rl-toolbar, .rl-modes, .rl-editbar) { gap: 2px; }
-.rl-narrow .rl-view.rl-editing .rl-modes { padding: 0 2px; }
+.rl-narrow .rl-view.rl-editing .rl-bar { left: 2px; right: 2px; gap: 1px; }
+.rl-narrow .rl-view.rl-editing :is(.rl-toolbar, .rl-modes) { gap: 0; }
+.rl-narrow .rl-view.rl-editing .rl-editbar { gap: 1px; }
+.rl-narrow .rl-view.rl-editing .rl-modes { padding: 0; }
 .rl-narrow .rl-view.rl-editing .rl-done { display: none; }
 .rl-narrow .rl-editbar { flex: 0 1 auto; container-type: normal; }
 .rl-modes { display: flex; flex-wrap: wrap; gap: .25rem; align-items: center; background: rgb(255 255 255 / .92); border-radius: 6px; padding: .15rem .3rem; }

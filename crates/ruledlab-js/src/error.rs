@@ -5,56 +5,12 @@
 //! [`ruledlab::MESSAGES`] or `ruledlab_cam::CAM_MESSAGES`, `args` its values).
 
 use js_sys::Reflect;
-use ruledlab::{Arg, Args, Details, Error};
+pub use ruledlab::Problem;
 use wasm_bindgen::JsValue;
-
-/// A reason to throw: a core error, or a problem with the arguments themselves (a wrong type,
-/// an unknown option), which has the code `invalid-argument`.
-pub enum Problem {
-    /// An error of the core.
-    Core(Error),
-    /// A problem with an argument, optionally naming the option at fault.
-    Argument {
-        /// The option or argument name.
-        option: Option<String>,
-        /// What is wrong.
-        message: String,
-    },
-}
-
-impl From<Error> for Problem {
-    fn from(e: Error) -> Self {
-        Problem::Core(e)
-    }
-}
-
-impl From<String> for Problem {
-    fn from(message: String) -> Self {
-        Problem::Argument { option: None, message }
-    }
-}
-
-impl From<&str> for Problem {
-    fn from(message: &str) -> Self {
-        Problem::Argument { option: None, message: message.to_string() }
-    }
-}
 
 /// The JS `Error` for `problem`, its message prefixed by `func` (e.g. "RuledSurface.fromSegments").
 pub fn fail(func: &str, problem: impl Into<Problem>) -> JsValue {
-    let (message, code, details) = match problem.into() {
-        Problem::Core(e) => (e.to_string(), e.code(), e.details()),
-        Problem::Argument { option, message } => {
-            // the argument checks speak to programmers: their reason is plain text
-            let details = Details {
-                option,
-                reason: Some(ruledlab::TEXT_REASON),
-                args: Some(Args(vec![("text", Arg::Text(message.clone()))])),
-                ..Details::default()
-            };
-            (message, "invalid-argument", details)
-        }
-    };
+    let (message, code, details) = problem.into().parts();
     let error = js_sys::Error::new(&format!("{func}: {message}"));
     // Setting a property of a fresh Error cannot fail; were it to, the message still stands.
     let _ = Reflect::set(&error, &"code".into(), &code.into());

@@ -35,3 +35,23 @@ impl Drop for Live {
 pub fn count() -> usize {
     LIVE.load(Ordering::Relaxed)
 }
+
+/// Declares a module's `version()` and `liveObjects()` where it is invoked (each wasm module
+/// exports its own: this crate exports nothing), `$objects` naming in words the classes whose
+/// objects the count covers. The version is the invoking crate's (the modules are built together).
+#[macro_export]
+macro_rules! module_info {
+    ($objects:literal) => {
+        /// The crate version, e.g. "0.1.0".
+        #[::wasm_bindgen::prelude::wasm_bindgen]
+        pub fn version() -> String {
+            env!("CARGO_PKG_VERSION").to_string()
+        }
+
+        #[doc = concat!("How many objects of ", $objects, " exist, i.e. have been made and not yet freed.")]
+        #[::wasm_bindgen::prelude::wasm_bindgen(js_name = liveObjects)]
+        pub fn live_objects() -> usize {
+            $crate::live::count()
+        }
+    };
+}

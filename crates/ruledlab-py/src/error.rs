@@ -14,63 +14,17 @@ use crate::layout::Layout;
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
 use pyo3::types::{PyDict, PyType};
-use ruledlab::{Arg, Error, Message};
+pub use ruledlab::Problem;
+use ruledlab::{Arg, Details, Error, Message};
 
 /// The class `ruledlab._errors.RuledlabError`, imported once.
 static RULEDLAB_ERROR: PyOnceLock<Py<PyType>> = PyOnceLock::new();
 
-/// What went wrong: an error of the core (or of the CAM crate, which uses the core's type), or
-/// a problem with an argument, optionally naming it (code `invalid-argument`).
-pub enum Problem {
-    /// An error of the core.
-    Core(Error),
-    /// A problem with an argument or option.
-    Argument {
-        /// The argument or option at fault.
-        option: Option<String>,
-        /// What is wrong.
-        message: String,
-    },
-}
-
-impl From<Error> for Problem {
-    fn from(e: Error) -> Self {
-        Problem::Core(e)
-    }
-}
-
-impl From<String> for Problem {
-    fn from(message: String) -> Self {
-        Problem::Argument { option: None, message }
-    }
-}
-
-impl From<&str> for Problem {
-    fn from(message: &str) -> Self {
-        Problem::Argument { option: None, message: message.to_string() }
-    }
-}
-
 /// The `RuledlabError` for `problem`, its message prefixed by `func` (e.g.
 /// "RuledSurface.from_segments").
 pub fn fail(func: &str, problem: impl Into<Problem>) -> PyErr {
-    match problem.into() {
-        Problem::Core(e) => {
-            let message = e.to_string();
-            raise(func, &message, e.code(), |py| core_details(py, &e))
-        }
-        Problem::Argument { option, message } => raise(func, &message, "invalid-argument", |py| {
-            let d = PyDict::new(py);
-            if let Some(option) = &option {
-                d.set_item("option", option)?;
-            }
-            d.set_item("reason", ruledlab::TEXT_REASON)?;
-            let args = PyDict::new(py);
-            args.set_item("text", &message)?;
-            d.set_item("args", args)?;
-            Ok(d)
-        }),
-    }
+    let (message, code, details) = problem.into().parts();
+    raise(func, &message, code, |py| details_dict(py, &details))
 }
 
 /// A problem with the option or argument `option` (its name goes into `details.option`).
@@ -129,9 +83,8 @@ pub fn fail_input(func: &str, e: Error, layout: &Layout) -> PyErr {
     })
 }
 
-/// The core's `details` of `e` as a dict.
-fn core_details<'py>(py: Python<'py>, e: &Error) -> PyResult<Bound<'py, PyDict>> {
-    let details = e.details();
+/// The `details` of an error as a dict.
+fn details_dict<'py>(py: Python<'py>, details: &Details) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     if let Some(option) = &details.option {
         d.set_item("option", option)?;
