@@ -62,6 +62,12 @@ export const MAX_LINK_RULINGS = 200;
 export const MAX_LINK_HANDLES = 200;
 /** Longest text parameter (a formula), in characters, unless the parameter sets its own maxLength. */
 export const MAX_TEXT_PARAM = 1000;
+/**
+ * A slider gets − / + and a number field where a value has fewer CSS px than this: one with a
+ * mouse (a pixel skips values), this many with a finger (a tap or a drag lands within a few
+ * pixels of where it aims, so closer values take tries).
+ */
+export const SLIDER_PX_PER_VALUE = { fine: 1, coarse: 8 };
 /** A handle is grabbed within this distance of the pointer (CSS px), on fine and on coarse pointers. */
 export const HANDLE_REACH = 10;
 export const HANDLE_REACH_COARSE = 22;

@@ -227,7 +227,22 @@ test('the page on a phone: 44-px targets, no text under 12 px, steps for a dense
     });
     assert.ok(verdict.top >= 0 && verdict.bottom <= verdict.height, `the verdict at ${JSON.stringify(verdict)}`);
     await task.close();
-    assert.deepEqual([...problems, ...editProblems, ...taskProblems], []);
+    // a slider whose values lie closer than a finger aims (coupled-strip's n: 22 values) keeps its
+    // − / +, and one tap of + reaches the next value
+    const coupled = await phone.newPage();
+    const coupledProblems = watch(coupled);
+    await coupled.goto(`${session.url}#task=coupled-strip`);
+    await ready(coupled);
+    const n = coupled.locator('.rl-row[data-key="n"]');
+    const width = await n.locator('input[type=range]').evaluate((e) => e.getBoundingClientRect().width);
+    assert.ok(width < 22 * 8, `the n slider is ${width} px: a finger lands on its values`);
+    assert.ok(await n.locator('.rl-step').last().isVisible(), 'no − / + beside n on a phone');
+    await n.locator('.rl-step').last().tap();
+    await coupled.waitForFunction(
+      () => /** @type {HTMLInputElement} */ (document.querySelector('.rl-controls [name="n"]')).value === '4',
+    );
+    await coupled.close();
+    assert.deepEqual([...problems, ...editProblems, ...taskProblems, ...coupledProblems], []);
   } finally {
     await phone.close();
   }

@@ -4,7 +4,7 @@
 // disabled and says why. Used by the page and by <ruled-view controls>.
 import { irrelevance, parseNumber } from '../scene.js';
 import { appendRich, plainRich } from './richtext.js';
-import { MAX_TEXT_PARAM, ROUNDING } from '../limits.js';
+import { MAX_TEXT_PARAM, ROUNDING, SLIDER_PX_PER_VALUE } from '../limits.js';
 
 /**
  * @typedef {object} ControlHooks
@@ -242,16 +242,18 @@ export function buildControls(form, scene, params, i18n, hooks) {
   };
 
   /**
-   * Gives every slider with more values than it has pixels its − / + steps and a number field
-   * (a pixel of such a slider skips values; the steps reach each one). Once shown they stay, so
-   * the slider they narrow does not flip them back.
+   * Gives every slider whose values lie closer than the pointer can aim (SLIDER_PX_PER_VALUE: a
+   * pixel with a mouse, a few with a finger) its − / + steps and a number field, which reach each
+   * value in one tap. Once shown they stay, so the slider they narrow does not flip them back.
    */
   const fit = () => {
+    const finger = doc.defaultView?.matchMedia?.('(pointer: coarse)').matches ?? false;
+    const perValue = finger ? SLIDER_PX_PER_VALUE.coarse : SLIDER_PX_PER_VALUE.fine;
     for (const f of fine) {
       const p = f.param;
       const values = p.step ? Math.round(span(p) / p.step) + 1 : Infinity;
       const width = f.slider.getBoundingClientRect().width;
-      if (width > 0 && values > width && f.minus.hidden) {
+      if (width > 0 && values * perValue > width && f.minus.hidden) {
         f.minus.hidden = f.plus.hidden = f.exact.hidden = false;
         f.output.hidden = true;
         f.row.classList.add('rl-fine');
