@@ -156,6 +156,8 @@ export class Viewer {
     this.frames = 0;
     /** @internal */
     this.pending = false;
+    /** @internal The animation frame requested (requestRender), to cancel when drawn sooner. */
+    this.requested = 0;
     /** @internal Whether the first figure has been readied (prepareFirst). */
     this.warm = false;
     /** @internal Bumped whenever the batches change: part of the key of the frame in the framebuffer. */
@@ -313,8 +315,8 @@ export class Viewer {
   requestRender() {
     if (this.pending || this.disposed) return;
     this.pending = true;
-    const draw = () =>
-      requestAnimationFrame(() => {
+    const draw = () => {
+      this.requested = requestAnimationFrame(() => {
         // the first figure is drawn and waited for before its frame (prepareFirst)
         if (!this.warm && this.built) {
           // (a failure there leaves the frame to the ordinary path, which says it)
@@ -324,7 +326,19 @@ export class Viewer {
         this.pending = false;
         this.render();
       });
+    };
     draw();
+  }
+
+  /**
+   * Draws now what a requested frame would draw, inside an animation frame already running (a
+   * drag's computation): the requested frame is cancelled, so the move is drawn once.
+   */
+  renderNow() {
+    if (!this.pending || !this.warm || this.disposed) return;
+    cancelAnimationFrame(this.requested);
+    this.pending = false;
+    this.render();
   }
 
   /**

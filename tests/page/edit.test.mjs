@@ -349,6 +349,40 @@ test('"Edit as data" hands a formula scene’s sample to "Your data", whose ruli
   await page.close();
 });
 
+test('a drag draws one frame per move: the moved handle with the geometry it makes', async () => {
+  const { page, problems } = await session.open('index.html#scene=striction&n=12');
+  await page.evaluate(() => {
+    const viewer = window.ruledlab.stage.viewer;
+    const render = viewer.render.bind(viewer);
+    /** @type {any} */ (window).renders = 0;
+    viewer.render = (...args) => {
+      /** @type {any} */ (window).renders++;
+      return render(...args);
+    };
+  });
+  const h = (await handlesOnPage(page)).find((p) => p.inside);
+  assert.ok(h);
+  const frames = () =>
+    page.evaluate(
+      () => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => requestAnimationFrame(r)))),
+    );
+  await page.mouse.move(h.x, h.y);
+  await page.mouse.down();
+  await frames();
+  const before = await page.evaluate(() => /** @type {any} */ (window).renders);
+  const inputBefore = await inputText(page);
+  for (let i = 1; i <= 10; i++) {
+    await page.mouse.move(h.x + 3 * i, h.y + 2 * i);
+    await frames();
+  }
+  const after = await page.evaluate(() => /** @type {any} */ (window).renders);
+  await page.mouse.up();
+  assert.notEqual(await inputText(page), inputBefore, 'the drag moved the handle');
+  assert.equal(after - before, 10, `${after - before} frames for 10 moves`);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('a degenerate edit says why in the readout, the view keeps drawing, and undo recovers; a wild drag stays in the box', async () => {
   const { page, problems } = await session.open('index.html#scene=striction&n=12');
   // ruling 4's end b onto its end a: zero length

@@ -349,6 +349,8 @@ export class Editor {
       const next = this.pending;
       this.pending = null;
       if (next) this.hooks.apply(copyInput(next), false);
+      // drawn in this frame, the frame the move asked for included
+      this.viewer.renderNow();
     });
   }
 

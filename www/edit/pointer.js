@@ -235,9 +235,11 @@ export class PointerInput {
       editor.marks.sayNow(t('snap.onto', { name: placed.snap.name }));
     drag.snap = placed.snap;
     editor.put(drag.working, drag.handle, placed.point);
+    // the computation first: its frame draws the moved handle with the geometry it makes (one
+    // frame per move, not the handle's and then the geometry's)
+    editor.schedule(drag.working);
     editor.marks.showTip(drag.handle);
     editor.marks.sayLater(drag.handle);
-    editor.schedule(drag.working);
   }
 
   /** @internal */
