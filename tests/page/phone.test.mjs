@@ -122,6 +122,19 @@ const POINTS = {
     }
     throw new Error('no ruling end and neighbour stand free on the phone');
   },
+  // each ruling's end a dragged onto ruling 0's end a: it snaps onto the point, and the rulings
+  // through one point (a cone) meet pair by pair exactly
+  async 'make-developable'(page, hand) {
+    for (let k = 1; k < 4; k++) {
+      const handles = await handlesOnPage(page);
+      const [h, apex] = [handles[2 * k], handles[0]];
+      assert.ok(h.free && apex.free, `ruling ${k}, end a and ruling 0, end a are in sight, clear of the bars`);
+      await hand.drag(h.x, h.y, apex.x, apex.y, 10);
+      const input = (await inputNow(page)).rulings;
+      const delta = RuledSurface.fromSegments(input).invariants().distribution[k - 1];
+      assert.ok(Math.abs(delta) < 1e-12, `δ_${k - 1},${k} = ${delta} after the snap (the package's, in Node)`);
+    }
+  },
   // ruling 10's end b, ↕ along z, a fine drag down watching the height beside it
   async 'developable-cone'(page, hand) {
     await hand.tap(page.locator('.rl-edit'));

@@ -2,7 +2,8 @@
 // coplanar) made from a helix by the tangent surface, a cone, a cylinder or the rectifying
 // developable — or a hyperboloid's strip, which is not developable — beside its flat pattern: the
 // exact unfolding (an isometry) or, for the hyperboloid, Section 3's approximate development with
-// the gaps it leaves. Dragging a ruling edits the strip; the core makes it developable again.
+// the gaps it leaves. Dragging a ruling edits the strip; the core makes it developable again (or,
+// with "keep neighbours coplanar" off, the reader does: snapping an end onto the next ruling).
 // The pattern is split where it overlaps itself, and downloads as SVG (1:1 in mm, tiled pages)
 // and DXF. The strips and patterns are the CAM module's (the module for making things).
 import { AnalyticSurface, stripIndices } from '../../pkg/ruledlab.js';
@@ -10,7 +11,7 @@ import { cam } from '../cam.js';
 import { defineScene, scoped, bounds } from '../scene.js';
 import { rulingSet } from '../edit/sets.js';
 
-/** @typedef {{kind: string, n: number, turns: number, width: number}} DevelopableParams */
+/** @typedef {{kind: string, n: number, turns: number, width: number, repair: boolean}} DevelopableParams */
 
 /** A translation by (x, y, z), column-major. */
 const translation = (/** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ z) =>
@@ -61,14 +62,29 @@ function strip(own, p) {
 }
 
 /**
+ * The flat pattern of a strip: its exact unfolding where the core finds every pair of rulings
+ * coplanar, else Section 3's approximate development (the core refuses to unfold a pair that is
+ * not: `not-developable`).
+ * @param {<O extends {free(): void}>(o: O) => O} own @param {Float64Array} segments
+ */
+function patternOf(own, segments) {
+  const { FlatPattern } = cam();
+  try {
+    return { pattern: own(FlatPattern.unfold(segments)), developable: true };
+  } catch (e) {
+    if (/** @type {any} */ (e)?.details?.reason !== 'not-developable') throw e;
+    return { pattern: own(FlatPattern.approximate(segments)), developable: false };
+  }
+}
+
+/**
  * The flat pattern of the strip with these segments as a file for cutting (made when asked for:
  * the scene's objects are freed by then).
- * @param {Float64Array} segments @param {boolean} developable @param {'svg' | 'dxf'} format
+ * @param {Float64Array} segments @param {'svg' | 'dxf'} format
  */
-function exported(segments, developable, format) {
+function exported(segments, format) {
   return scoped((own) => {
-    const { FlatPattern } = cam();
-    const pattern = own(developable ? FlatPattern.unfold(segments) : FlatPattern.approximate(segments));
+    const { pattern } = patternOf(own, segments);
     return format === 'svg' ? pattern.svg() : pattern.dxf();
   });
 }
@@ -94,9 +110,11 @@ export const scene = defineScene({
         ['hyperboloid', 'developable.kind.hyperboloid'],
       ],
     },
-    { key: 'n', label: 'param.rulings', type: 'range', min: 6, max: 200, step: 1, value: 48, play: true },
+    { key: 'n', label: 'param.rulings', type: 'range', min: 4, max: 200, step: 1, value: 48, play: true },
     { key: 'turns', label: 'developable.param.turns', type: 'range', min: 0.25, max: 2, step: 0.05, value: 1 },
     { key: 'width', label: 'developable.param.width', type: 'range', min: 0.1, max: 1.5, step: 0.05, value: 0.8 },
+    // off: a dragged strip stays as dragged (the exercise: make it developable by hand)
+    { key: 'repair', label: 'developable.param.repair', type: 'checkbox', value: true },
   ],
   legend: [
     { style: 'ruling', label: 'legend.rulings' },
@@ -107,11 +125,11 @@ export const scene = defineScene({
   create(p, { t, input }) {
     return scoped((own) => {
       const edited = input?.rulings;
-      const { FlatPattern, makeDevelopable, maxAbsDelta } = cam();
-      // an edited strip is made developable again by the core (the dragged ruling kept)
-      const segments = edited ? makeDevelopable(edited) : strip(own, p);
-      const developable = p.kind !== 'hyperboloid' || !!edited;
-      const pattern = own(developable ? FlatPattern.unfold(segments) : FlatPattern.approximate(segments));
+      const { makeDevelopable, maxAbsDelta } = cam();
+      // an edited strip is made developable again by the core (the dragged ruling kept), unless
+      // the reader keeps it as dragged
+      const segments = edited ? (p.repair === false ? edited : makeDevelopable(edited)) : strip(own, p);
+      const { pattern, developable } = patternOf(own, segments);
       const seg = new Float32Array(segments);
       const rulings = segments.length / 6;
       const box = bounds(seg);
@@ -173,13 +191,13 @@ export const scene = defineScene({
           {
             label: 'developable.download.svg',
             filename: `pattern-${name}.svg`,
-            content: () => exported(segments, developable, 'svg'),
+            content: () => exported(segments, 'svg'),
             type: 'image/svg+xml',
           },
           {
             label: 'developable.download.dxf',
             filename: `pattern-${name}.dxf`,
-            content: () => exported(segments, developable, 'dxf'),
+            content: () => exported(segments, 'dxf'),
             type: 'application/dxf',
           },
         ],

@@ -15,6 +15,8 @@ const TORSAL_SOLUTION =
   'rulings.AAAAAAAA8D8AAAAAAAAAwAAAAAAAAAjAAAAAAAAA8D8AAAAAAAAAQAAAAAAAAAhAzDt_Zp6g9j8AAAAAAACwvAAAAAAAAAjAAAAAAAAAoDzMO39mnqAGQAAAAAAAAAhAAAAAAAAA8D__________PwAAAAAAAAjAyzt_Zp6g5r_MO39mnqD2PwAAAAAAAAAAAAAAAAAAoDzMO39mnqAGQAAAAAAAAAjAzDt_Zp6g9r8AAAAAAACwPAAAAAAAAAhA________778BAAAAAAAAQAAAAAAAAAjAAQAAAAAA8L__________vwAAAAAAAAhAzTt_Zp6g9r8AAAAAAADAPAAAAAAAAAjAAAAAAAAAsLzNO39mnqAGwAAAAAAAAAhAAQAAAAAA8L_-________vwAAAAAAAAjA_v______7z8BAAAAAAAAwAAAAAAAAAhAAAAAAAAAuLzMO39mnqAGwAAAAAAAAAjAzDt_Zp6g9j8AAAAAAADIvAAAAAAAAAhA';
 const CONE_START =
   'rulings.zczMzMzM7D-amZmZmZnJvzMzMzMzM_M_MzMzMzMzB0CamZmZmZnJv5qZmZmZmQFACbBiQEiO7D8Q4lrwiZ_EvzMzMzMzM_M_DQiUYGzVBkCIznp3EQuhP5qZmZmZmQFAzA3-TR3V6z-7rg6jL6y_vzMzMzMzM_M_shT99Ku_BUDo-WmLuH3QP5qZmZmZmQFA5WWfwFyo6j_qqQLFC9i2vzMzMzMzM_M_1xjvIIv8A0AhAXxY7rvdP5qZmZmZmQFAng9qdoAT6T9g_z52zDGuvzMzMzMzM_M_bBefsUCdAUA8YKhTU63kP5qZmZmZmQFAq_VeRvsl5z_s9NFi1nShvzMzMzMzM_M_AOEc0_Fx_T8mRPGaL3TpP5qZmZmZmQFAjzrmF6Ly5D9gvZnBjtaPvzMzMzMzM_M_rq-yR-bX9j9Altmd4gPtP5qZmZmZmQFAjClJ7vOO4j8gVHNPyodwvzMzMzMzM_M_R_m2lbdZ7z8OmEaEojnvP5qZmZmZmQFA_R0P7UcS4D8AAPY17BvKvjMzMzMzM_M_7LNajq9t4D8Qrx3W2P_vP5qZmZmZmQFAUATgsNIp2z_A1IH-xYFtvzMzMzMzM_M_EM8AKoHXpz8E9Qhc9U7vP5qZmZmZmQFAnyIUilRe1j8AcINIVRiOvzMzMzMzM_M_RDCHwwTK2b-ArTMBuC3tP83MzMzMzARApDUPCuzw0T_EOeZJ2NKgvzMzMzMzM_M_FF_S4Tst6r9Wqknk7rDpP5qZmZmZmQFAzuaujbEZzD88XjkLjWOtvzMzMzMzM_M_5dK81brs8r-qfMobq_rkP5qZmZmZmQFAkvXloDmwxT-6zGXBul62vzMzMzMzM_M_0YdTx9S797_pTOfd53HeP5qZmZmZmQFA6FSA0xLkwD-qVrdiTiW_vzMzMzMzM_M_UsBf4fFU-78B_uxrCkjRP5qZmZmZmQFAgOqKcjTIuz8IJZz541fEvzMzMzMzM_M_EOgLVeyU_b9Qh1yZoMKnP5qZmZmZmQFAQPKHVzubuT_bFvEvelDJvzMzMzMzM_M_KAUtv8ll_r8hiaYf3eLHv5qZmZmZmQFAxBZ7EntWuz_dxwGx2kvOvzMzMzMzM_M_dtcR2ZG__b-WVwUTkOPav5qZmZmZmQFAygYB54R0wD_EA_yLrYzRvzMzMzMzM_M_6Dq_Upyo-79MC_SjCKbkv5qZmZmZmQFAaPwwLTwOxT9ej4uQCMXTvzMzMzMzM_M_skIb3lI1-L8YrqKxGU_rv5qZmZmZmQFASKQC9XJLyz-yg2h5TrnVvzMzMzMzM_M_ygQ-yGmH87-KxRy29ZXwv5qZmZmZmQFA8PIsgpt30T-fQVFoaFbXvzMzMzMzM_M_Lid5eS2Z679t4nmcnAHzv5qZmZmZmQFAAq5M03PX1T9tIm0Gk4zYvzMzMzMzM_M_7uszDEnz3L-js6OJ3NL0v5qZmZmZmQFAuPOHVYea2j80gBx_-E_ZvzMzMzMzM_M_gGwStP80eL9MwKq-9Pf1v5qZmZmZmQFA';
+const DEVELOPABLE_SOLUTION =
+  'rulings.AAAAAAAA8D-amZmZmZkBwGdmZmZmZgrAAAAAAAAA8D8zMzMzMzPjv8zMzMzMzOy_AAAAAAAA8D-amZmZmZkBwGdmZmZmZgrAV5MZtHOe8D-whXSpVAPLP8zMzMzMzOy_AAAAAAAA8D-amZmZmZkBwGdmZmZmZgrA8AA_hWdq7T9Q7X6Pqq3vP8zMzMzMzOy_AAAAAAAA8D-amZmZmZkBwGdmZmZmZgrArhiAEXgd5T_e8zE28OP5P8zMzMzMzOy_';
 const MILLING_START =
   'poses.uA9c_utesL9NF1zj5purv-BBcOA4j3K_Y0LTWNZ8vL-QjhlOcEHRP9LE2JeuWfc_3fssFErS7T8rJLqSlJLpP_JfhzVgDcw_ju2L-ZpD8j_cBBkY5bbzPyImGKEhPfo_zttNRXXE_j91nR0aO__1P6B_272DeMY_-ALJ7cfnA0AP1hiPu_n7P1nPP66KOPg_H75ZA3BgB0B68Qsrz6P3P4u0Hv4nRNY_cy-9epnzDEBz_SthY6L2Pw2gva2ty_o_817TDop5D0B4wlKHP-jwP7elsBiQZsK_9r7X-A0xEkA4sVnynZLkP_s26eZWk_I_ILBxILa_E0Ba5caWqwjRP7pHCJnTitG_MKgr9azAFEDYOQR-aui6vxa0DJK3hPI_V88zShq8F0DQIh8pgpvjv0pd8F3uL7S_hz1hlpHUF0BCqPVD0S_svx_B04xGWfY_';
 const LINES_SOLUTION =
@@ -141,6 +143,29 @@ const RAW = [
       },
     ],
     solution: { params: { turns: 1 } },
+  },
+  {
+    id: 'make-developable',
+    title: { en: 'Make this strip developable', de: 'Diesen Streifen abwickelbar machen' },
+    prompt: {
+      en: 'These four rulings of a hyperboloid are not a developable strip: no two neighbours lie in one plane, so its flat pattern can only be approximate. Drag the ends of the rulings until every two neighbouring rulings lie in one plane — the largest |δ| of a pair 0 — and the pattern beside it is exact.',
+      de: 'Diese vier Erzeugenden eines Hyperboloids sind kein abwickelbarer Streifen: Keine zwei Nachbarn liegen in einer Ebene, daher kann sein Schnittmuster nur näherungsweise sein. Ziehen Sie die Enden der Erzeugenden, bis je zwei benachbarte Erzeugende in einer Ebene liegen – das größte |δ| eines Paares 0 – und das Muster daneben exakt ist.',
+    },
+    scene: 'developable',
+    params: { kind: 'hyperboloid', n: 4, turns: 0.25, width: 0.8, repair: false },
+    change: ['handles'],
+    goal: [{ value: 'developable.readout.delta', below: 1e-9 }],
+    hints: [
+      {
+        en: 'Two lines lie in one plane when they meet (or are parallel). Rulings that all pass through one point make a cone, and a cone is developable.',
+        de: 'Zwei Geraden liegen in einer Ebene, wenn sie sich schneiden (oder parallel sind). Erzeugende, die alle durch einen Punkt gehen, bilden einen Kegel, und ein Kegel ist abwickelbar.',
+      },
+      {
+        en: 'Press ✎ and drag end a of ruling 1 onto end a of ruling 0: it snaps onto that point (◆ on ruling 0, end a), and the pair meets exactly. Do the same with end a of rulings 2 and 3.',
+        de: 'Tippen Sie auf ✎ und ziehen Sie Ende a der Erzeugenden 1 auf Ende a der Erzeugenden 0: Es rastet auf diesem Punkt ein (◆ auf Erzeugende 0, Ende a), und das Paar schneidet sich exakt. Ebenso mit Ende a der Erzeugenden 2 und 3.',
+      },
+    ],
+    solution: { input: DEVELOPABLE_SOLUTION },
   },
   {
     id: 'chaikin-count',

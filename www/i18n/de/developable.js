@@ -12,6 +12,7 @@ export default {
   'developable.kind.hyperboloid': 'Hyperboloid (nicht abwickelbar)',
   'developable.param.turns': 'Windungen der Schraublinie',
   'developable.param.width': 'Breite des Streifens',
+  'developable.param.repair': 'Nachbarn in einer Ebene halten',
   'developable.legend.pattern': 'Schnittmuster',
   'developable.legend.overlap': 'Flächen, die sich in der Ebene überlappen',
   'developable.readout.delta': 'größtes |δ| eines Paares',
@@ -37,7 +38,10 @@ jeder Winkel bleibt erhalten.</p>
 Erzeugenden längs der Kanten des Polygons), ein <em>Kegel</em> und ein <em>Zylinder</em> über ihr
 und ihre <em>rektifizierende Torse</em>, auf der die Schraublinie eine Geodätische ist und sich auf
 eine Gerade abwickelt. Ziehen Sie an einer Erzeugenden: Der Streifen folgt, und der Kern dreht ihre
-Nachbarn, bis wieder jedes Paar in einer Ebene liegt.</p>
+Nachbarn, bis wieder jedes Paar in einer Ebene liegt. Ist <em>Nachbarn in einer Ebene halten</em>
+aus, bleibt der Streifen, wie Sie ihn ziehen: Machen Sie ihn von Hand abwickelbar, indem Sie ein
+Ende einer Erzeugenden auf die nächste Erzeugende einrasten lassen (zwei Geraden, die sich
+schneiden, liegen in einer Ebene).</p>
 <p>Das Schnittmuster steht neben dem Streifen. Wo es sich selbst überlappt (eine Tangentenfläche
 über mehr als eine Windung ihrer abgewickelten Kante), wird es in Teile zerlegt, die das nicht tun,
 und längs einer Erzeugenden geklebt. Laden Sie es als SVG im Maßstab 1:1 in Millimetern, mit einem

@@ -12,6 +12,7 @@ export default {
   'developable.kind.hyperboloid': 'hyperboloid (not developable)',
   'developable.param.turns': 'Turns of the helix',
   'developable.param.width': 'Width of the strip',
+  'developable.param.repair': 'Keep neighbours coplanar',
   'developable.legend.pattern': 'flat pattern',
   'developable.legend.overlap': 'faces that overlap in the plane',
   'developable.readout.delta': 'largest |δ| of a pair',
@@ -35,7 +36,9 @@ unfolds onto the plane face by face, every length and angle kept.</p>
 <p>The strips here are built that way from a helix: its <em>tangent surface</em> (the rulings along
 the polygon's edges), a <em>cone</em> and a <em>cylinder</em> over it, and its <em>rectifying
 developable</em>, on which the helix is a geodesic and unfolds onto a straight line. Drag a ruling:
-the strip follows, and the core turns its neighbours until every pair is coplanar again.</p>
+the strip follows, and the core turns its neighbours until every pair is coplanar again. With
+<em>Keep neighbours coplanar</em> off, the strip stays as you drag it: make it developable by hand,
+snapping an end of a ruling onto the next ruling (two lines that meet lie in one plane).</p>
 <p>The flat pattern is drawn beside the strip. Where it overlaps itself (a tangent surface over
 more than a turn of its unrolled edge) it is cut into pieces that do not, glued along a ruling.
 Download it as SVG at 1:1 in millimetres, with a 100 mm square to check the print, or as DXF for a
