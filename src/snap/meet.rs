@@ -105,6 +105,33 @@ mod tests {
     }
 
     #[test]
+    fn oblique_skew_lines_meet_their_common_normal() {
+        // directions neither orthogonal nor of unit length (u·v ≠ 0 in (M1)): the segment between
+        // the closest points is orthogonal to both lines, and its length is their distance
+        let (p, u) = (DVec3::new(1.0, -2.0, 0.5), DVec3::new(2.0, 1.0, -1.0));
+        let (q, v) = (DVec3::new(-3.0, 0.0, 4.0), DVec3::new(0.5, -1.5, 3.0));
+        let (s, t) = closest_on_lines(p, u, q, v).unwrap();
+        let (x, y) = (p + s * u, q + t * v);
+        let scale = (x - y).length() * u.length().max(v.length());
+        assert!((x - y).dot(u).abs() <= 1e-14 * scale && (x - y).dot(v).abs() <= 1e-14 * scale);
+        let n = u.cross(v).normalize();
+        assert!(((x - y).length() - (p - q).dot(n).abs()).abs() <= 1e-14);
+    }
+
+    #[test]
+    fn the_parallel_threshold_is_the_sine_of_the_angle_whatever_the_lengths() {
+        // a sine of 2e-9 (above PARALLEL_SIN = 1e-9) has closest points, 5e-10 not — with
+        // directions of lengths 10³ and 10⁻³ as with unit ones
+        for (lu, lv) in [(1.0f64, 1.0f64), (1e3, 1e-3), (1e-3, 1e3)] {
+            for (sine, meets) in [(2e-9f64, true), (5e-10, false)] {
+                let v = DVec3::new((1.0 - sine * sine).sqrt(), sine, 0.0) * lv;
+                let found = closest_on_lines(DVec3::ZERO, lu * DVec3::X, DVec3::Z, v);
+                assert_eq!(found.is_some(), meets, "sine {sine}, lengths {lu} and {lv}");
+            }
+        }
+    }
+
+    #[test]
     fn shadows_and_distances() {
         let t = shadow_on_line(DVec3::new(3.0, 4.0, 0.0), DVec3::ZERO, DVec3::new(2.0, 0.0, 0.0)).unwrap();
         assert_eq!(t, 1.5);

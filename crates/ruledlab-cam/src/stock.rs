@@ -226,6 +226,40 @@ mod tests {
         assert_eq!(b.exit(DVec3::new(5.0, 1.0, 0.5), DVec3::Z), 0.0);
         assert_eq!(b.exit(DVec3::new(1.0, 1.0, 3.0), DVec3::Z), 0.0);
         assert_eq!(Aabb::around([DVec3::X, DVec3::Y]).grown(1.0).max, DVec3::new(2.0, 2.0, 1.0));
+        // out through the floor and a side on the way down (negative slopes): z = 0 at t = 1.5
+        // first, y = 0 only at t = 4
+        assert_eq!(b.exit(DVec3::new(1.0, 1.0, 0.75), DVec3::new(0.0, -0.25, -0.5)), 1.5);
+    }
+
+    /// The parts named, from the tip up, each a segment of the axis with its radius: a ball end's
+    /// cutter from the ball's centre (a radius up), a flat end's from its face; a part left out
+    /// of `parts`, or ending below its start or without radius, is not there.
+    #[test]
+    fn a_tool_is_its_stretches_along_the_axis() {
+        let (tip, axis) = (DVec3::new(1.0, 2.0, 3.0), DVec3::new(0.0, 0.6, 0.8));
+        let mut tool = ToolShape {
+            ball: true,
+            cutter: Stretch { from: 0.0, to: 10.0, radius: 2.0 },
+            above: vec![
+                ("shank", Stretch { from: 10.0, to: 20.0, radius: 1.5 }),
+                ("holder", Stretch { from: 20.0, to: 20.0, radius: 8.0 }),
+            ],
+        };
+        let s = tool.stretches(tip, axis, &["cutter", "shank", "holder"]);
+        assert_eq!(s.iter().map(|x| x.3).collect::<Vec<_>>(), ["cutter", "shank", "holder"]);
+        assert_eq!(s[0], (tip + 2.0 * axis, tip + 10.0 * axis, 2.0, "cutter"));
+        assert_eq!(s[1], (tip + 10.0 * axis, tip + 20.0 * axis, 1.5, "shank"));
+        assert_eq!(tool.stretches(tip, axis, &["shank"]).len(), 1);
+        tool.ball = false;
+        tool.above[1].1.radius = 0.0;
+        let s = tool.stretches(tip, axis, &["cutter", "holder"]);
+        assert_eq!(s, vec![(tip, tip + 10.0 * axis, 2.0, "cutter")]);
+        // a ball longer than its cutter: the cutter is the ball, from its centre
+        tool.ball = true;
+        tool.cutter.to = 1.0;
+        assert_eq!(tool.stretches(tip, axis, &["cutter"])[0].0, tip + axis);
+        tool.above[0].1.to = 5.0;
+        assert!(tool.stretches(tip, axis, &["shank"]).is_empty());
     }
 
     /// A tool of radius 1 standing 0.5 above the box's top: the ball end clear; tilted into a
