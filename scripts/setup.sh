@@ -19,6 +19,9 @@ say() { printf '\033[1msetup:\033[0m %s\n' "$*"; }
 
 command -v cargo >/dev/null || { echo "setup: cargo not found; install Rust with rustup first" >&2; exit 1; }
 command -v npm >/dev/null || { echo "setup: npm not found; install Node.js 20+ first" >&2; exit 1; }
+# building and testing need Node.js 20 (the package's own "engines" is what it needs to run: 16.4)
+node -e 'process.exit(Number(process.versions.node.split(".")[0]) >= 20 ? 0 : 1)' ||
+  { echo "setup: Node.js $(node --version) is too old to build ruledlab; install Node.js 20+ (the built package runs from 16.4)" >&2; exit 1; }
 
 if ! rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown; then
   say "adding the wasm32-unknown-unknown target"

@@ -72,7 +72,7 @@ function fill(
   /** @type {string} */ lang,
 ) {
   return text.replace(/\{([A-Za-z][A-Za-z0-9_.-]*)\}/g, (m, k) => {
-    if (!Object.hasOwn(values, k)) return m;
+    if (!Object.keys(values).includes(k)) return m;
     const v = values[k];
     return typeof v === 'number' ? statedNumber(v, lang) : v;
   });

@@ -254,7 +254,7 @@ function drawnRef(/** @type {unknown} */ x, /** @type {string} */ where, /** @ty
   const o = /** @type {Record<string, unknown>} */ (x);
   for (const k of Object.keys(o)) if (k !== 'drawn') throw new TaskError('task.error.unknownKey', { key: k, where });
   const n = name(o.drawn, `${where}.drawn`);
-  if (!Object.hasOwn(draws, n)) throw new TaskError('task.error.notDrawn', { name: n, where });
+  if (!Object.keys(draws).includes(n)) throw new TaskError('task.error.notDrawn', { name: n, where });
   return { drawn: n };
 }
 
