@@ -1,8 +1,9 @@
 // Builds the one-file versions into dist/ (after scripts/build.sh has built pkg/):
 //   dist/ruledlab-embed.js  one classic script defining <ruled-view>, the wasm and the worker
 //                           inlined (scripts/onefile/entry.js)
-//   dist/ruledlab.html      the whole page in one file: the same script inline, the CSS, a
-//                           state block; no other request; works from file:// and uploaded to
+//   dist/ruledlab.html      the whole page in one file: the same script inline (the wasm and
+//                           the worker beside it in data blocks, read when needed:
+//                           scripts/onefile/blocks.js), the CSS, a state block; no other request; works from file:// and uploaded to
 //                           a course system. Its body is the page's shell (page/shell.js: the
 //                           header, the linked scene's heading, chosen by a few inline lines
 //                           before the first paint) and the script, a module at the end of the
@@ -17,6 +18,7 @@ import { fileURLToPath } from 'node:url';
 import { SCRIPT_ID, STATE_ID, stateJson } from '../www/page/onefile.js';
 import { shellHtml, firstScript } from '../www/page/shell.js';
 import { CSS } from '../www/ui/css.js';
+import { BLOCKS, placeholder } from './onefile/blocks.js';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 /** @param {string} p */
@@ -35,8 +37,11 @@ const inline = {
   name: 'ruledlab-inline',
   setup(b) {
     b.onResolve({ filter: /^ruledlab:inline$/ }, () => ({ path: 'inline', namespace: 'ruledlab' }));
+    // the big texts as placeholders: the page carries them in data blocks, the embed script in place
     b.onLoad({ filter: /.*/, namespace: 'ruledlab' }, () => ({
-      contents: `export const WASM = ${JSON.stringify(wasm)};\nexport const CAM_WASM = ${JSON.stringify(camWasm)};\nexport const WORKER = ${JSON.stringify(worker)};\nexport const SHELL = ${JSON.stringify(body)};`,
+      contents: `${Object.entries(BLOCKS)
+        .map(([name, id]) => `export const ${name} = ${JSON.stringify(placeholder(id))};`)
+        .join('\n')}\nexport const SHELL = ${JSON.stringify(body)};`,
       loader: 'js',
     }));
   },
@@ -66,8 +71,23 @@ async function bundle(entry, format, plugin, base = 'document.baseURI') {
 
 /** @param {string} text */
 const sha = (text) => `'sha256-${createHash('sha256').update(text, 'utf8').digest('base64')}'`;
-const embed = await bundle('scripts/onefile/entry.js', 'iife', inline);
-const page = embed.replaceAll('</script', '<\\/script');
+// one script for both: the page's with placeholders, the embed script with the texts in their place
+const script = await bundle('scripts/onefile/entry.js', 'iife', inline);
+/** The texts of the data blocks, by id. @type {Record<string, string>} */
+const texts = { [BLOCKS.WASM]: wasm, [BLOCKS.CAM_WASM]: camWasm, [BLOCKS.WORKER]: worker };
+let embed = script;
+for (const [id, text] of Object.entries(texts)) {
+  const literal = JSON.stringify(placeholder(id));
+  if (!script.includes(literal)) throw new Error(`onefile: the script lacks the placeholder ${literal}`);
+  embed = embed.replaceAll(literal, JSON.stringify(text));
+}
+const unfilled = embed.match(new RegExp(`["'\`]${placeholder('')}[a-z-]+["'\`]`));
+if (unfilled) throw new Error(`onefile: a placeholder the build does not fill: ${unfilled[0]}`);
+const page = script.replaceAll('</script', '<\\/script');
+// beside the script: data blocks, never run (no CSP hash), read when needed (the hex has no "<")
+const blocks = Object.entries(texts)
+  .map(([id, text]) => `<script type="text/plain" id="${id}">${text.replaceAll('</script', '<\\/script')}</script>`)
+  .join('\n');
 // the page's styles and the view's (the page then need not adopt them): the shell is painted styled
 const css = `${readFileSync(path('www/page/style.css'), 'utf8')}${CSS}`;
 // scripts off (an iframe sandbox without allow-scripts): the <noscript> sentence, no endless "Loading"
@@ -98,6 +118,7 @@ const html = `<!doctype html>
 <script>${first}</script>
 </head>
 <body>${body}
+${blocks}
 <script type="module" id="${SCRIPT_ID}">${page}</script></body>
 </html>
 `;

@@ -9,9 +9,11 @@ import '../../www/index.js';
 import { startPage, showStartFailure } from '../../www/page/app.js';
 import { isOneFilePage, SCRIPT_ID } from '../../www/page/onefile.js';
 import { registerContentType } from '../../www/course/h5p-type.js';
+import { standalone } from './blocks.js';
 
 // the text of this script when it is inline (the one-file page, where it is a module at the end
-// of the body: currentScript is null there), read while it runs
+// of the body: currentScript is null there), read while it runs; it hands out the embed script,
+// which carries the data blocks' texts in place of their placeholders (blocks.js)
 const source = (document.currentScript ?? document.getElementById(SCRIPT_ID))?.textContent ?? '';
 
 // in an H5P activity (this script is the H5P.RuledlabExercise library's viewer: course/h5p-package.js)
@@ -19,7 +21,7 @@ const h5p = /** @type {any} */ (globalThis).H5P;
 if (h5p?.EventDispatcher) registerContentType(h5p);
 
 if (isOneFilePage(document)) {
-  const go = () => startPage({ oneFile: true, embedScript: () => source }).catch(showStartFailure);
+  const go = () => startPage({ oneFile: true, embedScript: () => standalone(source) }).catch(showStartFailure);
   if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', go, { once: true });
   else go();
 }

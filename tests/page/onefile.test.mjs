@@ -38,7 +38,26 @@ test('dist/ruledlab.html from disk: every scene draws, nothing is requested but 
   console.log(
     `# dist/ruledlab.html: ${(html.length / 1024).toFixed(0)} KiB, ${(gzipSync(html).length / 1024).toFixed(0)} KiB gzipped`,
   );
-  // one page from disk, walking every scene by its link
+  // the wasm modules and the worker beside the script in data blocks, never parsed as
+  // JavaScript: the script the browser evaluates holds none of their text
+  const text = html.toString('utf8');
+  const blocks = Object.fromEntries(
+    [...text.matchAll(/<script type="text\/plain" id="([a-z-]+)">([\s\S]*?)<\/script>/g)].map((m) => [m[1], m[2]]),
+  );
+  assert.deepEqual(Object.keys(blocks), ['ruledlab-wasm', 'ruledlab-cam-wasm', 'ruledlab-worker']);
+  assert.equal(
+    Buffer.from(blocks['ruledlab-wasm'], 'hex').compare(readFileSync(join(REPO, 'pkg/ruledlab_bg.wasm'))),
+    0,
+    'the teaching module, whole',
+  );
+  const script = /<script type="module" id="ruledlab-script">([\s\S]*?)<\/script>/.exec(text)?.[1] ?? '';
+  assert.ok(
+    script.length > 0 && script.length < blocks['ruledlab-wasm'].length / 1.5,
+    `the script: ${script.length} characters`,
+  );
+  assert.ok(!script.includes(blocks['ruledlab-wasm'].slice(0, 4096)), 'the wasm in the script too');
+  // one page from disk, walking every scene by its link (the milling scene starts the CAM module
+  // from its block)
   const { page, problems, requests } = await openFile(ONEFILE);
   await ready(page);
   const scenes = await page.evaluate(() => window.ruledlab.scenes.map((s) => s.id));

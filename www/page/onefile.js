@@ -19,6 +19,14 @@ export function useBody(/** @type {string} */ html) {
   body = html;
 }
 
+/** The data blocks the one-file page carries beside its script, as written (scripts/onefile/blocks.js). */
+let blocks = '';
+
+/** Sets the data blocks of the one-file page's copies (scripts/onefile/configure.js). */
+export function useBlocks(/** @type {string} */ html) {
+  blocks = html;
+}
+
 /** The id of the page's script (at the end of its body: what is above it is painted first). */
 export const SCRIPT_ID = 'ruledlab-script';
 
@@ -51,7 +59,7 @@ export function storedCourse() {
  */
 export async function oneFileHtml(oneFile) {
   if (oneFile)
-    return `<!doctype html>\n<html lang="en" data-build="onefile" data-shell>\n<head>${HEAD}</head>\n<body>${body}\n${SCRIPT}</body>\n</html>\n`;
+    return `<!doctype html>\n<html lang="en" data-build="onefile" data-shell>\n<head>${HEAD}</head>\n<body>${body}\n${blocks ? `${blocks}\n` : ''}${SCRIPT}</body>\n</html>\n`;
   const response = await fetch(new URL('../../dist/ruledlab.html', import.meta.url));
   if (!response.ok) throw new Error(`dist/ruledlab.html: HTTP ${response.status}`);
   return response.text();
