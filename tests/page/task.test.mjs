@@ -426,3 +426,19 @@ test('writing an exercise with the keyboard alone: every field of the panel is r
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('an exercise that starts from an edit says its figure as edited, once: the cone with ruling 10 moved', async () => {
+  const { page, problems } = await session.open('index.html#task=developable-cone');
+  await ready(page);
+  const { live, description } = await page.evaluate(() => ({
+    live: document.querySelector('.rl-stage [aria-live]')?.textContent ?? '',
+    description:
+      document.getElementById(document.querySelector('.rl-stage canvas')?.getAttribute('aria-describedby') ?? '')
+        ?.textContent ?? '',
+  }));
+  assert.match(description, /Ruling 10 meets neither of its neighbours/);
+  assert.ok(live.startsWith('Exercise: Make the cone developable again.'), live);
+  assert.ok(live.endsWith(description), `said: ${live}\nshown: ${description}`);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

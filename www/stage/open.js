@@ -317,9 +317,14 @@ function* enterSteps(
   stage.paperCard.render(stage.state);
   yield;
   if (superseded()) return null;
+  // (an edit to show comes next: the figure is said as edited, not as built without it)
+  if (input) stage.results.hold();
   const editable = stage.compute({ fit: fit && !camera })?.input;
   yield;
-  if (superseded()) return null;
+  if (superseded()) {
+    stage.results.hold(false);
+    return null;
+  }
   if (history) stage.editor.show(editable);
   else stage.edit.enter(editable, sceneChanged);
   const fits = !input || (!!editable && fitsSets(input, editable.sets));
@@ -327,6 +332,7 @@ function* enterSteps(
     // (drawn as every change is: the core computes on it, the controls follow)
     stage.dispatch({ type: 'input', input: copyInput(input) });
   }
+  if (input) stage.results.release(stage.state);
   stage.edit.show();
   // (measured once everything the scene shows is in the page: one layout, not one per part)
   controls.fit();

@@ -36,6 +36,47 @@ export class Results {
     this.said = '';
     /** @type {string} what the description says now */
     this.description = '';
+    /** whether a new figure's description waits for the opening's edit (hold, release) */
+    this.held = false;
+    /** whether the last build drawn was final */
+    this.final = false;
+  }
+
+  /**
+   * Says a new figure once, politely (another scene, or an exercise: first what it asks), unless
+   * it was said already.
+   * @param {import('../store.js').StageState} state
+   */
+  announce(state) {
+    const { scene, exercise: task } = state;
+    if (!scene) return;
+    const i18n = this.ports.i18n();
+    const figure = `${scene.id} ${task?.id ?? ''} ${i18n.lang}`;
+    if (figure === this.said) return;
+    this.said = figure;
+    this.ports.hush();
+    const sentence = (/** @type {string} */ s) => (/[.!?…:]$/.test(s) ? s : `${s}.`);
+    const asked = task
+      ? `${i18n.t('task.heading')} ${sentence(say(task.title, i18n.lang))} ${say(task.prompt, i18n.lang)}`
+      : '';
+    this.ports.say([asked, this.spoken()].filter(Boolean).join(' '));
+  }
+
+  /**
+   * Holds a new figure's description back: an opening whose edit comes next (the figure to say
+   * is the edited one); `false` lets it go unsaid (an opening ended by another).
+   */
+  hold(on = true) {
+    this.held = on;
+  }
+
+  /**
+   * Says the figure held back, as it stands now (once its final build is drawn).
+   * @param {import('../store.js').StageState} state
+   */
+  release(state) {
+    this.held = false;
+    if (this.final) this.announce(state);
   }
 
   /** What the figure shows, in words (as the description says it). */
@@ -86,17 +127,8 @@ export class Results {
     appendRich(els.description, description);
     els.caption.replaceChildren();
     appendRich(els.caption, description);
-    // a new figure (another scene, or an exercise: first what it asks) is described once, politely
-    const figure = `${scene.id} ${task?.id ?? ''} ${i18n.lang}`;
-    if (final && figure !== this.said) {
-      this.said = figure;
-      this.ports.hush();
-      const sentence = (/** @type {string} */ s) => (/[.!?…:]$/.test(s) ? s : `${s}.`);
-      const asked = task
-        ? `${t('task.heading')} ${sentence(say(task.title, i18n.lang))} ${say(task.prompt, i18n.lang)}`
-        : '';
-      this.ports.say([asked, this.spoken()].filter(Boolean).join(' '));
-    }
+    this.final = final;
+    if (final && !this.held) this.announce(state);
     const diagram = diagramOf(built);
     els.diagram.replaceChildren(...(diagram ? [diagram()] : []));
     els.downloads.replaceChildren(
