@@ -390,7 +390,7 @@ test('the keyboard turns and resets the view while it moves points; D says what 
   const said = await page.evaluate(() => document.querySelector('.rl-stage [aria-live]')?.textContent ?? '');
   assert.match(
     said,
-    /^Your edit of the input\. Surface: .*8 rulings, bent isometrically .* the conoidal model is .* high\.$/,
+    /^The input, edited\. Surface: .*8 rulings, bent isometrically .* the conoidal model is .* high\.$/,
   );
   assert.deepEqual(problems, []);
   await page.close();

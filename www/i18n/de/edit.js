@@ -44,7 +44,7 @@ export default {
   'edit.from.poses': 'die {poses} Werkzeuglagen aus Beispiel 6',
   'edit.from.data': 'Ihre importierten Daten',
   'edit.from.example': 'der Beispielstreifen',
-  'edit.describe': 'Ihre Bearbeitung der Eingabe. {description}',
+  'edit.describe': 'Die Eingabe, bearbeitet. {description}',
   'edit.edited': 'Ihre Bearbeitung von {what}',
   'edit.from.importedPoses': 'Ihre {poses} importierten Werkzeuglagen',
 

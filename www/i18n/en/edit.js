@@ -43,7 +43,7 @@ export default {
   'edit.from.poses': 'the {poses} tool poses of Example 6',
   'edit.from.data': 'your imported data',
   'edit.from.example': 'the example strip',
-  'edit.describe': 'Your edit of the input. {description}',
+  'edit.describe': 'The input, edited. {description}',
   'edit.edited': 'your edit of {what}',
   'edit.from.importedPoses': 'your {poses} imported tool poses',
 
