@@ -126,3 +126,29 @@ export function congruenceFields(name) {
     c: c.parameters.c,
   };
 }
+
+/**
+ * The form field (or fields) of a formula scene that an option the core names in an error stands
+ * for: `point` is the point formula's letter ("a" for a surface's directrix, "p" for a
+ * congruence's point), the direction is e; the ranges u and v; the formula parameters a, b, c
+ * of a surface's `parameters`, a congruence's grid `rows` and `cols`.
+ * @param {'a' | 'p'} point
+ * @returns {(option: string) => string | string[] | null}
+ */
+export function formulaFieldOf(point) {
+  /** @type {Record<string, string | string[]>} */
+  const fields = {
+    u: ['umin', 'umax'],
+    v: ['vmin', 'vmax'],
+    e: ['ex', 'ey', 'ez'],
+    ...(point === 'a' ? { parameters: 'a' } : { rows: 'rows', cols: 'cols' }),
+  };
+  for (const [letter, keys] of [
+    [point, ['x', 'y', 'z'].map((c) => `${point}${c}`)],
+    ['e', ['ex', 'ey', 'ez']],
+    ['u', ['umin', 'umax']],
+    ['v', ['vmin', 'vmax']],
+  ])
+    for (const [k, key] of /** @type {string[]} */ (keys).entries()) fields[`${letter}[${k}]`] = key;
+  return (option) => fields[option] ?? null;
+}

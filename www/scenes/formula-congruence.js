@@ -4,7 +4,7 @@ import { AnalyticCongruence } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
 import { congruenceLayers, givenGrid, SCHEME_PARAMS, LEGEND } from '../layers/congruence.js';
 import { focalLayers } from '../layers/focal.js';
-import { CONGRUENCE_PRESETS, formulaParameter, congruenceFields } from '../catalogue.js';
+import { CONGRUENCE_PRESETS, formulaFieldOf, formulaParameter, congruenceFields } from '../catalogue.js';
 import { append } from '../reduce.js';
 
 const START = congruenceFields('example5');
@@ -14,25 +14,6 @@ const formula = (/** @type {string} */ key) => ({
   type: /** @type {const} */ ('text'),
   value: String(START[/** @type {keyof typeof START} */ (key)]),
 });
-
-/** @type {Record<string, string | string[]>} */
-const FIELDS = {
-  'p[0]': 'px',
-  'p[1]': 'py',
-  'p[2]': 'pz',
-  'e[0]': 'ex',
-  'e[1]': 'ey',
-  'e[2]': 'ez',
-  'u[0]': 'umin',
-  'u[1]': 'umax',
-  'v[0]': 'vmin',
-  'v[1]': 'vmax',
-  u: ['umin', 'umax'],
-  v: ['vmin', 'vmax'],
-  e: ['ex', 'ey', 'ez'],
-  rows: 'rows',
-  cols: 'cols',
-};
 
 /** @typedef {{preset: string, px: string, py: string, pz: string, ex: string, ey: string, ez: string, umin: string, umax: string, vmin: string, vmax: string, rows: number, cols: number, a: number, b: number, c: number, scheme: string, steps: number, director: boolean, second: boolean, focal: boolean}} FormulaCongruenceParams */
 
@@ -74,7 +55,7 @@ export const scene = defineScene({
     { style: 'focal2', label: 'focal.legend.focal2', when: (p) => !!p.focal },
     { style: 'torsal', label: 'focal.legend.torsal', when: (p) => !!p.focal },
   ],
-  fieldOf: (option) => FIELDS[option] ?? null,
+  fieldOf: formulaFieldOf('p'),
   /** @param {FormulaCongruenceParams} p */
   create(p, ctx) {
     return scoped((own) => {

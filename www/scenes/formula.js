@@ -9,7 +9,7 @@ import { convergenceLayers } from '../layers/convergence.js';
 import { isometryLayers } from '../layers/isometry.js';
 import { subdivisionLayers } from '../layers/subdivision.js';
 import { CLOSING_GAP, STRAIGHTNESS_MIN_EXTENT, STRAIGHTNESS_SAMPLES } from '../limits.js';
-import { SURFACE_PRESETS, formulaParameter, surfaceFields } from '../catalogue.js';
+import { SURFACE_PRESETS, formulaFieldOf, formulaParameter, surfaceFields } from '../catalogue.js';
 
 const HYPERBOLOID = surfaceFields('hyperboloid');
 const TOOLS = ['striction', 'convergence', 'bending', 'development', 'subdivision'];
@@ -18,24 +18,6 @@ const onlyFor =
   (...tools) =>
   (p) =>
     tools.includes(String(p.tool)) ? null : 'formula.reason.tool';
-
-/** @type {Record<string, string | string[]>} */
-const FIELDS = {
-  'a[0]': 'ax',
-  'a[1]': 'ay',
-  'a[2]': 'az',
-  'e[0]': 'ex',
-  'e[1]': 'ey',
-  'e[2]': 'ez',
-  'u[0]': 'umin',
-  'u[1]': 'umax',
-  'v[0]': 'vmin',
-  'v[1]': 'vmax',
-  u: ['umin', 'umax'],
-  v: ['vmin', 'vmax'],
-  e: ['ex', 'ey', 'ez'],
-  parameters: 'a',
-};
 
 /** A text parameter holding a formula. */
 const formula = (/** @type {string} */ key, /** @type {string} */ value) => ({
@@ -258,7 +240,7 @@ export const scene = defineScene({
     { style: 'given', label: 'formula.legend.given', when: (p) => p.tool === 'subdivision' },
     { style: 'inserted', label: 'formula.legend.inserted', when: (p) => p.tool === 'subdivision' },
   ],
-  fieldOf: (option) => FIELDS[option] ?? null,
+  fieldOf: formulaFieldOf('a'),
   /** @param {FormulaParams} p */
   exact(p, ctx, kind, samples) {
     return scoped((own) => {
