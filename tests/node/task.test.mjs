@@ -18,6 +18,17 @@ const i18n = translator('en');
 const context = { t: i18n.t, format: i18n.format, lang: 'en' };
 const sceneOf = (/** @type {string} */ id) => /** @type {any} */ (SCENES.find((s) => s.id === id));
 
+/** The least exercise the format reads, for the tests to vary. */
+const BASE = Object.freeze({
+  ruledlab: 'exercise',
+  version: 1,
+  id: 'x',
+  title: { en: 'T' },
+  prompt: { en: 'P' },
+  scene: 'striction',
+  goal: [{ value: 'readout.midpointError', below: 1 }],
+});
+
 /** The scene of a task at parameters and an edit (the task's start merged in). */
 const computeFor = (/** @type {any} */ task) => (/** @type {any} */ params, /** @type {any} */ input) => {
   const scene = sceneOf(task.scene);
@@ -225,36 +236,27 @@ test('the format: round trip through JSON and a link; malformed and hostile exer
     taskLink(/** @type {any} */ (builtInTask('torsal-pair')), (id) => !!builtInTask(id)),
     'torsal-pair',
   );
-  const base = {
-    ruledlab: 'exercise',
-    version: 1,
-    id: 'x',
-    title: { en: 'T' },
-    prompt: { en: 'P' },
-    scene: 'striction',
-    goal: [{ value: 'readout.midpointError', below: 1 }],
-  };
   /** @type {Array<[any, string]>} */
   const bad = [
     ['{', 'task.error.notJson'],
     ['x'.repeat(40000), 'task.error.tooLong'],
-    [{ ...base, ruledlab: 'other' }, 'task.error.notExercise'],
-    [{ ...base, version: 2 }, 'task.error.notExercise'],
-    [{ ...base, extra: 1 }, 'task.error.unknownKey'],
-    [{ ...base, id: 'Has Spaces' }, 'task.error.id'],
-    [{ ...base, title: 'T' }, 'task.error.type'],
-    [{ ...base, title: { en: 'T', fr: 'T' } }, 'task.error.unknownKey'],
-    [{ ...base, prompt: { en: 'x'.repeat(3000) } }, 'task.error.text'],
-    [{ ...base, params: { n: 1e300 } }, 'task.error.number'],
-    [{ ...base, params: { n: Number.NaN } }, 'task.error.number'],
-    [{ ...base, goal: [] }, 'task.error.missing'],
-    [{ ...base, goal: [{ value: 'a', below: 1, above: 2 }] }, 'task.error.condition'],
-    [{ ...base, goal: [{ value: 'a', near: 1 }] }, 'task.error.condition'],
-    [{ ...base, goal: [{ answer: 'nope', below: 1 }] }, 'task.error.condition'],
-    [{ ...base, goal: [{ value: 'a', below: '<script>' }] }, 'task.error.number'],
-    [{ ...base, hints: [{ en: 'a' }, { en: 'b' }, { en: 'c' }, { en: 'd' }] }, 'task.error.count'],
-    [{ ...base, answers: [{ id: 's', kind: 'essay', label: { en: 's' } }] }, 'task.error.type'],
-    [{ ...base, goal: [{ value: 'readout.midpointError', below: { value: 'x', evil: 1 } }] }, 'task.error.unknownKey'],
+    [{ ...BASE, ruledlab: 'other' }, 'task.error.notExercise'],
+    [{ ...BASE, version: 2 }, 'task.error.notExercise'],
+    [{ ...BASE, extra: 1 }, 'task.error.unknownKey'],
+    [{ ...BASE, id: 'Has Spaces' }, 'task.error.id'],
+    [{ ...BASE, title: 'T' }, 'task.error.type'],
+    [{ ...BASE, title: { en: 'T', fr: 'T' } }, 'task.error.unknownKey'],
+    [{ ...BASE, prompt: { en: 'x'.repeat(3000) } }, 'task.error.text'],
+    [{ ...BASE, params: { n: 1e300 } }, 'task.error.number'],
+    [{ ...BASE, params: { n: Number.NaN } }, 'task.error.number'],
+    [{ ...BASE, goal: [] }, 'task.error.missing'],
+    [{ ...BASE, goal: [{ value: 'a', below: 1, above: 2 }] }, 'task.error.condition'],
+    [{ ...BASE, goal: [{ value: 'a', near: 1 }] }, 'task.error.condition'],
+    [{ ...BASE, goal: [{ answer: 'nope', below: 1 }] }, 'task.error.condition'],
+    [{ ...BASE, goal: [{ value: 'a', below: '<script>' }] }, 'task.error.number'],
+    [{ ...BASE, hints: [{ en: 'a' }, { en: 'b' }, { en: 'c' }, { en: 'd' }] }, 'task.error.count'],
+    [{ ...BASE, answers: [{ id: 's', kind: 'essay', label: { en: 's' } }] }, 'task.error.type'],
+    [{ ...BASE, goal: [{ value: 'readout.midpointError', below: { value: 'x', evil: 1 } }] }, 'task.error.unknownKey'],
   ];
   for (const [x, reason] of bad) {
     assert.throws(
@@ -264,7 +266,7 @@ test('the format: round trip through JSON and a link; malformed and hostile exer
     );
   }
   // texts are kept as text (the page shows them with textContent), control characters dropped
-  const t = readTask({ ...base, title: { en: '<img src=x onerror=alert(1)>\u0007' } });
+  const t = readTask({ ...BASE, title: { en: '<img src=x onerror=alert(1)>\u0007' } });
   assert.equal(t.title.en, '<img src=x onerror=alert(1)>');
 });
 
@@ -286,15 +288,7 @@ test('a straight striction curve cannot be had by shrinking: the measure is a sh
 });
 
 test('hide may name the claims and the explanation besides parameters and readouts', () => {
-  const base = {
-    ruledlab: 'exercise',
-    version: 1,
-    id: 'x',
-    title: { en: 'T' },
-    prompt: { en: 'P' },
-    scene: 'strip',
-    goal: [{ value: 'strip.readout.compare.coupled', below: 1 }],
-  };
+  const base = { ...BASE, scene: 'strip', goal: [{ value: 'strip.readout.compare.coupled', below: 1 }] };
   const ok = readTask({ ...base, hide: ['claims', 'text', 'n'] });
   fitTask(ok, SCENES, computeFor(ok));
   const bad = readTask({ ...base, hide: ['explanation'] });
@@ -305,35 +299,26 @@ test('hide may name the claims and the explanation besides parameters and readou
 });
 
 test('an exercise that does not fit its scene is refused: unknown scene, parameter, value, edit', () => {
-  const base = {
-    ruledlab: 'exercise',
-    version: 1,
-    id: 'x',
-    title: { en: 'T' },
-    prompt: { en: 'P' },
-    scene: 'striction',
-    goal: [{ value: 'readout.midpointError', below: 1 }],
-  };
   /** @type {Array<[any, string]>} */
   const bad = [
-    [{ ...base, scene: 'nowhere' }, 'task.error.unknownScene'],
-    [{ ...base, params: { nope: 1 } }, 'task.error.unknownParam'],
-    [{ ...base, params: { n: 10000 } }, 'task.error.badParam'],
-    [{ ...base, change: ['nope'] }, 'task.error.unknownParam'],
-    [{ ...base, goal: [{ value: 'readout.nothing', below: 1 }] }, 'task.error.unknownValue'],
-    [{ ...base, hide: ['readout.nothing'] }, 'task.error.unknownValue'],
-    [{ ...base, input: 'rulings.AAAA' }, 'task.error.badInput'],
+    [{ ...BASE, scene: 'nowhere' }, 'task.error.unknownScene'],
+    [{ ...BASE, params: { nope: 1 } }, 'task.error.unknownParam'],
+    [{ ...BASE, params: { n: 10000 } }, 'task.error.badParam'],
+    [{ ...BASE, change: ['nope'] }, 'task.error.unknownParam'],
+    [{ ...BASE, goal: [{ value: 'readout.nothing', below: 1 }] }, 'task.error.unknownValue'],
+    [{ ...BASE, hide: ['readout.nothing'] }, 'task.error.unknownValue'],
+    [{ ...BASE, input: 'rulings.AAAA' }, 'task.error.badInput'],
     [
-      { ...base, scene: 'curves', change: ['handles'], input: 'rulings.AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA' },
+      { ...BASE, scene: 'curves', change: ['handles'], input: 'rulings.AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA' },
       'task.error.badInput',
     ],
     [
-      { ...base, scene: 'large', change: ['handles'], goal: [{ value: 'readout.rulings', below: 1 }] },
+      { ...BASE, scene: 'large', change: ['handles'], goal: [{ value: 'readout.rulings', below: 1 }] },
       'task.error.noHandles',
     ],
     [
       {
-        ...base,
+        ...BASE,
         scene: 'curves',
         answers: [{ id: 's', kind: 'curve', label: { en: 's' } }],
         goal: [{ answer: 's', matches: 'striction', within: 1 }],
