@@ -22,6 +22,16 @@ import { defaults } from './scene.js';
  * @property {'paper' | 'partly' | 'none'} data   whether the numbers are the paper's
  */
 
+/** Figs. 2 and 3: Example 1's hyperboloid, 36 rulings, its strip and common perpendiculars. */
+const EXAMPLE_1 = {
+  surface: 'hyperboloid',
+  n: 36,
+  strip: true,
+  normals: true,
+  exact: false,
+  axis: false,
+};
+
 /** @type {PaperPreset[]} */
 export const PRESETS = [
   {
@@ -37,16 +47,7 @@ export const PRESETS = [
     id: 'fig2',
     label: 'paper.fig2',
     scene: 'striction',
-    params: {
-      surface: 'hyperboloid',
-      n: 36,
-      strip: true,
-      normals: true,
-      polygon: true,
-      midpoints: false,
-      exact: false,
-      axis: false,
-    },
+    params: { ...EXAMPLE_1, polygon: true, midpoints: false },
     caption: 'paper.fig2.caption',
     note: 'paper.fig2.note',
     data: 'partly',
@@ -55,16 +56,7 @@ export const PRESETS = [
     id: 'fig3',
     label: 'paper.fig3',
     scene: 'striction',
-    params: {
-      surface: 'hyperboloid',
-      n: 36,
-      strip: true,
-      normals: true,
-      polygon: false,
-      midpoints: true,
-      exact: false,
-      axis: false,
-    },
+    params: { ...EXAMPLE_1, polygon: false, midpoints: true },
     caption: 'paper.fig3.caption',
     note: 'paper.fig3.note',
     beyond: 'paper.fig3.beyond',

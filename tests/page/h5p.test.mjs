@@ -11,7 +11,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { cpSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { dirname, join } from 'node:path';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { pageSession } from './browser.mjs';
 import { otherOrigin, drawnShare } from './places.mjs';
@@ -26,11 +26,7 @@ const site = otherOrigin();
 
 /** Unzips `bytes` into the site's folder `name`/; the player next to it. */
 function unpack(/** @type {Uint8Array} */ bytes, /** @type {string} */ name) {
-  for (const [path, data] of Object.entries(unzipSync(bytes))) {
-    const file = join(site.dir, name, path);
-    mkdirSync(dirname(file), { recursive: true });
-    writeFileSync(file, data);
-  }
+  site.unpack(bytes, name);
   cpSync(join(REPO, 'node_modules/h5p-standalone/dist'), join(site.dir, 'player'), { recursive: true });
 }
 

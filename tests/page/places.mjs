@@ -1,9 +1,10 @@
 // Where users put ruledlab: pages of another origin (a course system, a lecturer's site), into
 // which a test pastes what ruledlab hands out, and checks of a view as a reader meets it there.
 import { before, after } from 'node:test';
-import { mkdtempSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { dirname, join } from 'node:path';
+import { unzipSync } from '../../pkg/zip.js';
 import { startServer } from '../../scripts/serve.mjs';
 import { decodePng, countDifferent } from './png.mjs';
 
@@ -11,7 +12,8 @@ export const BACKGROUND = [251, 250, 247];
 
 /**
  * A second origin for one test file: a server of a temporary folder, started before and closed
- * after its tests. `write(name, html, headers?)` puts a page there; `url + name` opens it.
+ * after its tests. `write(name, html, headers?)` puts a page there; `url + name` opens it;
+ * `unpack(zip, name)` unzips a package (SCORM, H5P) into its folder `name`/ and gives its URL.
  */
 export function otherOrigin() {
   const dir = mkdtempSync(join(tmpdir(), 'ruledlab-site-'));
@@ -25,6 +27,15 @@ export function otherOrigin() {
       writeFileSync(join(dir, name), html);
       if (headers) headersOf[`/${name}`] = headers;
       return site.url + name;
+    },
+    /** @param {Uint8Array} bytes @param {string} name */
+    unpack(bytes, name) {
+      for (const [path, data] of Object.entries(unzipSync(bytes))) {
+        const file = join(dir, name, path);
+        mkdirSync(dirname(file), { recursive: true });
+        writeFileSync(file, data);
+      }
+      return `${site.url}${name}/`;
     },
   };
   /** @type {import('node:http').Server | undefined} */

@@ -10,7 +10,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { copyFileSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { dirname, join } from 'node:path';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { createRequire } from 'node:module';
 import { pageSession } from './browser.mjs';
@@ -31,15 +31,8 @@ const site = otherOrigin();
 
 /** @typedef {import('playwright-core').Page} Page */
 
-/** Unzips `bytes` into the site's folder `name`/. */
-function unpack(/** @type {Uint8Array} */ bytes, /** @type {string} */ name) {
-  for (const [path, data] of Object.entries(unzipSync(bytes))) {
-    const file = join(site.dir, name, path);
-    mkdirSync(dirname(file), { recursive: true });
-    writeFileSync(file, data);
-  }
-  return `${site.url}${name}/`;
-}
+/** Unzips `bytes` into the site's folder `name`/ (its URL). */
+const unpack = (/** @type {Uint8Array} */ bytes, /** @type {string} */ name) => site.unpack(bytes, name);
 
 /** Serves scorm-again's runtimes next to the packages. */
 function runtimes() {

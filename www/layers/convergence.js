@@ -14,6 +14,22 @@ const SERIES = [
 ];
 
 /**
+ * The sample's own layers: its rulings, their common perpendiculars with the footpoints, and
+ * the striction points (what the scene draws of an edited sample too).
+ * @param {Float32Array} seg
+ * @param {{footpoints: Float64Array, striction: Float64Array}} inv
+ * @returns {import('../scene.js').Layer[]}
+ */
+export function sampleLayers(seg, inv) {
+  return [
+    { kind: 'segments', style: 'rulingBold', positions: seg },
+    { kind: 'segments', style: 'normal', positions: f32(inv.footpoints) },
+    { kind: 'points', style: 'foot', positions: f32(inv.footpoints) },
+    { kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) },
+  ];
+}
+
+/**
  * The three rulings at u − h₀, u, u + h₀ that the figure draws: short segments around their
  * striction points.
  * @param {<O extends {free(): void}>(o: O) => O} own
@@ -55,12 +71,9 @@ export function convergenceLayers(own, analytic, p, { t }) {
     bounds: bounds(seg),
     camera: { yaw: -0.9, pitch: 0.35 },
     layers: [
-      { kind: 'segments', style: 'rulingBold', positions: seg },
-      { kind: 'segments', style: 'normal', positions: f32(inv.footpoints) },
+      ...sampleLayers(seg, inv),
       { kind: 'polyline', style: 'exact', positions: f32(curve) },
       { kind: 'segments', style: 'tangent', positions: tangent },
-      { kind: 'points', style: 'foot', positions: f32(inv.footpoints) },
-      { kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) },
       { kind: 'points', style: 'exactPoint', positions: f32(exact) },
     ],
     diagram: () =>

@@ -2,8 +2,8 @@
 // midpoint at second order; likewise δ and its average; and the common perpendicular tends to
 // the central tangent (4). Measured live by the core, plotted log-log.
 import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
-import { defineScene, scoped, bounds, f32 } from '../scene.js';
-import { convergenceLayers, convergenceSample } from '../layers/convergence.js';
+import { defineScene, scoped, bounds } from '../scene.js';
+import { convergenceLayers, convergenceSample, sampleLayers } from '../layers/convergence.js';
 import { surfaceOptions } from '../catalogue.js';
 import { parallelProblems, rulingSet, rulingValues } from '../edit/sets.js';
 
@@ -20,12 +20,7 @@ function editedSample(sample, { t }) {
   return {
     bounds: bounds(seg),
     camera: { yaw: -0.9, pitch: 0.35 },
-    layers: [
-      { kind: 'segments', style: 'rulingBold', positions: seg },
-      { kind: 'segments', style: 'normal', positions: f32(inv.footpoints) },
-      { kind: 'points', style: 'foot', positions: f32(inv.footpoints) },
-      { kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) },
-    ],
+    layers: sampleLayers(seg, inv),
     readouts: [
       { label: 'convergence.readout.delta01', value: inv.distribution[0] },
       { label: 'convergence.readout.delta12', value: inv.distribution[1] },
