@@ -121,7 +121,7 @@ pub use io::Imported;
 // reading text: what ruledlab-cam's readers of tool poses and target curves build on, and what
 // kind of data a text holds
 pub use io::json::{read_json_value, JsonValue};
-pub use io::sniff::{looks_like_poses, looks_like_target, pose_columns, PoseColumns};
+pub use io::sniff::{detect_import, looks_like_poses, looks_like_target, pose_columns, PoseColumns};
 pub use io::table::{fields, read_table, Row, Table};
 pub use io::{check_records, classify, position, rust_number, NumberParser, Token};
 

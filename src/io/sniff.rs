@@ -59,6 +59,18 @@ pub fn looks_like_poses(text: &str) -> bool {
     false
 }
 
+/// What a text holds, as the importers name it: "poses" (tool poses), "target" (a target curve)
+/// or "segments" (anything else: the geometry's own reader says what is wrong with it).
+pub fn detect_import(text: &str) -> &'static str {
+    if looks_like_poses(text) {
+        "poses"
+    } else if looks_like_target(text) {
+        "target"
+    } else {
+        "segments"
+    }
+}
+
 /// Whether a text looks like a target curve rather than segments or poses: JSON with
 /// `"points"`, or CSV whose first record has 3 numbers.
 pub fn looks_like_target(text: &str) -> bool {
@@ -74,4 +86,18 @@ pub fn looks_like_target(text: &str) -> bool {
         let sep: &[char] = if l.contains(';') { &[';', '\t', ' '] } else { &[',', '\t', ' '] };
         l.split(sep).filter(|f| !f.is_empty()).count() == 3
     })
+}
+
+#[cfg(test)]
+mod detect_tests {
+    use super::detect_import;
+
+    #[test]
+    fn a_text_is_poses_a_target_or_segments() {
+        assert_eq!(detect_import("tip_x,tip_y,tip_z,axis_i,axis_j,axis_k\n0,0,0,0,0,1\n"), "poses");
+        assert_eq!(detect_import("{\"points\": [[0, 0, 0], [1, 0, 0]]}"), "target");
+        assert_eq!(detect_import("0,0,0\n1,0,0\n"), "target");
+        assert_eq!(detect_import("0,0,0,1,0,0\n"), "segments");
+        assert_eq!(detect_import(""), "segments");
+    }
 }

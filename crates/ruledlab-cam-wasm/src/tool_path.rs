@@ -615,16 +615,10 @@ impl ToolPath {
         let l = &p.linearisation;
         let tip: Vec<f64> = l.blocks.iter().map(|b| b.tip / u).collect();
         let axis: Vec<f64> = l.blocks.iter().map(|b| b.axis / u).collect();
-        let axes: Vec<f64> =
-            p.joints.iter().flat_map(|j| [j.xyz.x / u, j.xyz.y / u, j.xyz.z / u, j.rotary[0], j.rotary[1]]).collect();
+        let axes = p.axis_values(u);
         let minutes: Vec<f64> = p.motion.iter().map(|b| b.minutes).collect();
-        let feed: Vec<f64> = p
-            .motion
-            .iter()
-            .enumerate()
-            .map(|(i, b)| (p.poses[i + 1].tip - p.poses[i].tip).length() / u / b.minutes.max(1e-300))
-            .collect();
-        let speeds: Vec<f64> = p.motion.iter().flat_map(|b| [b.speed(3), b.speed(4)]).collect();
+        let feed = p.block_feeds(u);
+        let speeds = p.rotary_speeds();
         let limits: Vec<u8> = p.motion.iter().map(|b| b.limit.code()).collect();
         let adjusted: Vec<f64> = p.adjusted.iter().map(|a| a.to_degrees()).collect();
         let warnings = p

@@ -54,11 +54,5 @@ pub fn import_segments<'py>(
 #[pyfunction]
 pub fn detect_import(text: &Bound<'_, PyAny>) -> PyResult<&'static str> {
     let text = args::text("detect_import", "text", text)?;
-    Ok(if ruledlab::looks_like_poses(&text) {
-        "poses"
-    } else if ruledlab::looks_like_target(&text) {
-        "target"
-    } else {
-        "segments"
-    })
+    Ok(ruledlab::detect_import(&text))
 }

@@ -443,19 +443,10 @@ impl ToolPath {
         d.set_item("units", o.units.word())?;
         let m = &o.machine;
         d.set_item("letters", vec!["X", "Y", "Z", m.rotary[0].name.letter(), m.rotary[1].name.letter()])?;
-        let axes: Vec<f64> =
-            p.joints.iter().flat_map(|j| [j.xyz.x / u, j.xyz.y / u, j.xyz.z / u, j.rotary[0], j.rotary[1]]).collect();
-        d.set_item("axes", arrays::array(py, axes, &[pose_count, 5])?)?;
+        d.set_item("axes", arrays::array(py, p.axis_values(u), &[pose_count, 5])?)?;
         d.set_item("block_minutes", arrays::array(py, p.motion.iter().map(|b| b.minutes).collect(), &[motions])?)?;
-        let feed: Vec<f64> = p
-            .motion
-            .iter()
-            .enumerate()
-            .map(|(i, b)| (p.poses[i + 1].tip - p.poses[i].tip).length() / u / b.minutes.max(1e-300))
-            .collect();
-        d.set_item("block_feed", arrays::array(py, feed, &[motions])?)?;
-        let speeds: Vec<f64> = p.motion.iter().flat_map(|b| [b.speed(3), b.speed(4)]).collect();
-        d.set_item("block_rotary_speed", arrays::array(py, speeds, &[motions, 2])?)?;
+        d.set_item("block_feed", arrays::array(py, p.block_feeds(u), &[motions])?)?;
+        d.set_item("block_rotary_speed", arrays::array(py, p.rotary_speeds(), &[motions, 2])?)?;
         let limits: Vec<u8> = p.motion.iter().map(|b| b.limit.code()).collect();
         d.set_item("block_limit", numpy::PyArray1::from_vec(py, limits))?;
         d.set_item("over_acceleration", p.motion.iter().filter(|b| b.over).count())?;

@@ -50,12 +50,5 @@ pub fn detect_import(#[wasm_bindgen(unchecked_param_type = "string")] text: JsVa
     let Some(text) = text.as_string() else {
         return Err(fail("detectImport", format!("text must be a string, got {}", describe(&text))));
     };
-    Ok(if ruledlab::looks_like_poses(&text) {
-        "poses"
-    } else if ruledlab::looks_like_target(&text) {
-        "target"
-    } else {
-        "segments"
-    }
-    .to_string())
+    Ok(ruledlab::detect_import(&text).to_string())
 }

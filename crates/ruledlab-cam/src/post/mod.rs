@@ -107,6 +107,29 @@ pub struct Program {
     pub deviation: Option<EnvelopeDeviation>,
 }
 
+impl Program {
+    /// Per pose its axis values as written, lengths in units of `mm` millimetres (the program's:
+    /// 1 or 25.4): X, Y, Z, then the two rotary axes in degrees; 5 numbers a pose.
+    pub fn axis_values(&self, mm: f64) -> Vec<f64> {
+        self.joints.iter().flat_map(|j| [j.xyz.x / mm, j.xyz.y / mm, j.xyz.z / mm, j.rotary[0], j.rotary[1]]).collect()
+    }
+
+    /// Per block of the cut the feed at the tool tip it moves at, units of `mm` millimetres per
+    /// minute: the tip's way over the block's time.
+    pub fn block_feeds(&self, mm: f64) -> Vec<f64> {
+        self.motion
+            .iter()
+            .enumerate()
+            .map(|(i, b)| (self.poses[i + 1].tip - self.poses[i].tip).length() / mm / b.minutes.max(1e-300))
+            .collect()
+    }
+
+    /// Per block of the cut the speeds of the two rotary axes, degrees per minute; 2 numbers a block.
+    pub fn rotary_speeds(&self) -> Vec<f64> {
+        self.motion.iter().flat_map(|b| [b.speed(3), b.speed(4)]).collect()
+    }
+}
+
 /// A program before a dialect writes it: its steps, what the dialect needs besides, and the
 /// linearised path they follow.
 #[derive(Debug, Clone, PartialEq)]

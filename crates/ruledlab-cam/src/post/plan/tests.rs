@@ -410,3 +410,29 @@ fn a_limited_axis_goes_home_to_zero() {
     assert_eq!(home, [0.0, 0.0]);
     assert!(!p.ops.iter().any(|op| matches!(op, Op::Comment(c) if c.contains("no unwinding rapid"))));
 }
+
+/// What the bindings report of a program, in its units: the axis values of each pose (X, Y, Z
+/// scaled, the rotary axes in degrees), each block's tip feed (its way over its time) and rotary
+/// speeds — here of a program in inches, an inch a model unit.
+#[test]
+fn a_program_reports_its_axes_feeds_and_speeds_in_its_units() {
+    let o = PostOptions { units: Units::Inch, feed: 100.0, clearance: 1.0, ..PostOptions::default() };
+    let p = crate::post::gcode(&path(), &o).unwrap();
+    let u = o.units.mm();
+    assert_eq!(u, 25.4);
+    let axes = p.axis_values(u);
+    assert_eq!(axes.len(), 5 * p.joints.len());
+    for (k, j) in p.joints.iter().enumerate() {
+        assert_eq!(&axes[5 * k..5 * k + 5], &[j.xyz.x / u, j.xyz.y / u, j.xyz.z / u, j.rotary[0], j.rotary[1]]);
+    }
+    let feeds = p.block_feeds(u);
+    assert_eq!(feeds.len(), p.motion.len());
+    for (i, (f, b)) in feeds.iter().zip(&p.motion).enumerate() {
+        let way = (p.poses[i + 1].tip - p.poses[i].tip).length() / u;
+        assert!((f * b.minutes - way).abs() <= 1e-12 * way.max(1.0), "block {i}: {f} in/min for {} min", b.minutes);
+    }
+    let speeds = p.rotary_speeds();
+    assert_eq!(speeds.len(), 2 * p.motion.len());
+    assert!(speeds.iter().any(|&s| s > 0.0), "the A turns are in the speeds");
+    assert_eq!(speeds[1], p.motion[0].speed(4));
+}
