@@ -65,7 +65,7 @@ def source_to_json(value: dict[str, Any] | None, _widget: object = None) -> dict
     """The source as the model holds it: the doubles as one binary buffer."""
     if not value:
         return None
-    out: dict[str, Any] = {"segments": memoryview(np.ascontiguousarray(value["segments"], dtype=F64)).cast("B")}
+    out: dict[str, Any] = {"segments": np.ascontiguousarray(value["segments"], dtype=F64).data.cast("B")}
     if value.get("rows"):
         out["rows"], out["cols"] = int(value["rows"]), int(value["cols"])
     return out
@@ -79,7 +79,7 @@ def source_from_json(value: dict[str, Any] | None, _widget: object = None) -> di
 
 def input_to_json(value: dict[str, Any] | None, _widget: object = None) -> dict[str, Any]:
     """The scene's input, one binary buffer of doubles per handle set."""
-    return {k: memoryview(np.ascontiguousarray(v, dtype=F64).reshape(-1)).cast("B") for k, v in (value or {}).items()}
+    return {k: np.ascontiguousarray(v, dtype=F64).reshape(-1).data.cast("B") for k, v in (value or {}).items()}
 
 
 def input_from_json(value: dict[str, Any] | None, _widget: object = None) -> dict[str, np.ndarray]:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import asyncio
 import concurrent.futures
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Generator
 
 from ._errors import RuledlabError
 from ._front_end import TIMEOUT, FrontEnd, no_answer
@@ -58,7 +58,8 @@ class Figure:
         draw it, and RuntimeError if it has not arrived yet (``await`` the figure to wait)."""
         if not self._future.done():
             raise RuntimeError("ruledlab: the figure has not arrived yet; `await` it")
-        return self._future.result()
+        value: str | bytes = self._future.result()
+        return value
 
     async def _wait(self, timeout: float) -> str | bytes:
         if not self._future.done() and self._front_end is not None:
@@ -69,7 +70,7 @@ class Figure:
         except asyncio.TimeoutError:
             raise no_answer(f"{self.kind.upper()} figure", timeout) from None
 
-    def __await__(self):
+    def __await__(self) -> Generator[Any, None, str | bytes]:
         return self._wait(TIMEOUT).__await__()
 
     def _display_object(self) -> Any:

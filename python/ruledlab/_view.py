@@ -72,7 +72,7 @@ class View(anywidget.AnyWidget):
     autoplay = t.Bool(False, help="play the first playable parameter").tag(sync=True)
     height = t.Unicode("480", help="the view's height: CSS pixels or a CSS length").tag(sync=True)
     task = t.Unicode("", help="an exercise: a built-in one's id or the page's 'j.' value").tag(sync=True)
-    readouts = t.List(help="the numbers the view shows: {key, label, value} each (read only)").tag(sync=True)
+    readouts: t.List[Any] = t.List(help="the numbers the view shows: {key, label, value} each (read only)").tag(sync=True)
     data = t.Dict(help="the scene's input: an (n, 3) array per handle set").tag(
         sync=True, to_json=_data.input_to_json, from_json=_data.input_from_json, echo_update=False
     )

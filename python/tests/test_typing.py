@@ -38,3 +38,14 @@ def test_the_example_runs_headless():
     assert lines[0] == "200 rulings, δ from -1.461725 to -1.461725"
     assert lines[3].startswith("degenerate | RuledSurface.from_segments: ruling 0 has zero length")
     assert lines[4] == "a regulus: regulus, nullity 3"
+
+
+def test_mypy_strict_accepts_the_package_itself():
+    # the package's own modules (the widget, its data, its figures), with its configuration
+    out = subprocess.run(
+        [sys.executable, "-m", "mypy", "--strict", "--config-file", str(REPO / "python" / "pyproject.toml"),
+         "--cache-dir", str(REPO / ".venv" / "mypy-cache"), str(REPO / "python" / "ruledlab")],
+        capture_output=True,
+        text=True,
+    )  # fmt: skip
+    assert out.returncode == 0, out.stdout + out.stderr
