@@ -40,3 +40,17 @@ pub const MAX_MACHINE_VALUE: f64 = 1e7;
 /// Degrees a tilting axis may swing beyond the tool axis's turn (and twice the pole cone) in one
 /// block before the block is a flip of the rotary axes (`flip`).
 pub const FLIP_MARGIN: f64 = 0.01;
+
+/// The fairness weight λ of the pose optimisation's energy (`optimise`, (1)) by default: the
+/// second differences of the poses' tips and axis ends weigh λ times as much as the squared
+/// deviations of the target points nearest them.
+pub const OPTIMISE_FAIRNESS: f64 = 0.01;
+
+/// Most rounds of the pose optimisation by default (`optimise`).
+pub const OPTIMISE_ROUNDS: usize = 40;
+
+/// Most rounds of the pose optimisation accepted.
+pub const MAX_OPTIMISE_ROUNDS: usize = 1000;
+
+/// The pose optimisation stops when a step lowers its energy by less than this share of it.
+pub const OPTIMISE_STOP: f64 = 1e-4;
