@@ -380,6 +380,13 @@ const CALLS = [
   (_f) => ToolPath.exampleProfile(pick(SMALL)),
   (f) => f.path.quality(),
   (f) =>
+    cam.optimisePoses(
+      pick([f.path, value()]),
+      pick([value(), ToolPath.exampleProfile(pick([1, 2, 20]))]),
+      pick([undefined, value(), options(), { rounds: pick([0, 1, 2, NaN, -1, 1.5, 1e9]), fairness: pick(NUMBERS) }]),
+      pick([undefined, value(), () => {}]),
+    ),
+  (f) =>
     meshNormalsF32(pick([value(), f.surface.segmentsF32()]), pick([value(), new Uint32Array([0, 1, 2]), [0, 1, 9]])),
   (f) => f.surface.recut(value()),
   (f) => f.hyp.sample(value(), pick([value(), options()])),

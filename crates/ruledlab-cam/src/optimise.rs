@@ -1,15 +1,15 @@
 //! Tool poses optimised against the part: flank milling's envelope fit, after P. Bo, M. Bartoň,
 //! D. Plakhotnik and H. Pottmann, *Towards efficient 5-axis flank CNC machining of free-form
-//! surfaces via fitting envelopes of surfaces of revolution*, Computer-Aided Design 71 (2016)
-//! 28–41, and P. Bo, M. Bartoň, H. Pottmann, *Automatic fitting of conical envelopes to
-//! free-form surfaces for flank CNC machining*, Computer-Aided Design 91 (2017) 84–94: the tool's
+//! surfaces via fitting envelopes of surfaces of revolution*, Computer-Aided Design 71 (2016),
+//! and P. Bo, M. Bartoň, H. Pottmann, *Automatic fitting of conical envelopes to
+//! free-form surfaces for flank CNC machining*, Computer-Aided Design 91 (2017): the tool's
 //! axis moves on a ruled surface (here the discrete one of the poses, Section 4 of Odehnal &
 //! Pottmann), and the squared distances of the part's points from the envelope of the moving tool
 //! are minimised with a fairness energy, by Gauss–Newton steps with fixed foot points. The start
 //! is the ruling-aligned pose [`ruling_aligned`] (the tool's axis along the ruling, offset by the
-//! radius along the normal), which M. Bedi, S. Mann and C. Menzel's triple-tangent positioning
-//! (*Triple tangent flank milling of ruled surfaces*, CAD 36, 2004) improves in closed form, one
-//! pose at a time; here all poses move together, and the gap between poses counts.
+//! radius along the normal), which C. Menzel, S. Bedi and S. Mann's triple-tangent positioning
+//! (*Triple tangent flank milling of ruled surfaces*, CAD 36, 2004) improves one pose at a time,
+//! tangent to two guiding curves and a ruling; here all poses move together, and the gap between poses counts.
 //!
 //! **Unknowns.** Pose k is held by two points, its tip Pₖ and its axis end Qₖ = Pₖ + L·aₖ (L the
 //! tool's length): 6 numbers a pose, as in the strips of the variational schemes.
