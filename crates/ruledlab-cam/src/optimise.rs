@@ -19,11 +19,14 @@
 //! axis on the great-circle arcs between poses ([`envelope_deviation`], the measure of C. Li,
 //! S. Mann, S. Bedi, CAD 2005) —
 //!
-//! E(x) = Σᵢ D(qᵢ; x)² + λ·(M/N)·Σₖ (|Pₖ₋₁ − 2Pₖ + Pₖ₊₁|² + |Qₖ₋₁ − 2Qₖ + Qₖ₊₁|²)      (1)
+//! E(x) = Σᵢ D(qᵢ; x)² + λ·(M/N)·Σₖ (|Δ²(P − P⁰)ₖ|² + |Δ²(Q − Q⁰)ₖ|²),  Δ²Vₖ = Vₖ₋₁ − 2Vₖ + Vₖ₊₁   (1)
 //!
-//! M target points, N poses, λ the fairness weight ([`OptimiseOptions::fairness`]); the second
-//! sum is the fairness term of the variational schemes' energy (15) on the strip's two boundary
-//! polylines (`ruledlab`'s `subdivision/variational.rs`), scaled to weigh alike for any density of
+//! M target points, N poses, P⁰, Q⁰ the given poses, λ the fairness weight
+//! ([`OptimiseOptions::fairness`]); the second sum is the fairness term of the variational
+//! schemes' energy (15) on the strip's two boundary polylines (`ruledlab`'s
+//! `subdivision/variational.rs`), taken of how far the poses move, so that they move smoothly and
+//! a curved path is not pulled straight (the term of the poses themselves did that on the coarse
+//! paths of Example 6: it raised the largest deviation), scaled to weigh alike for any density of
 //! the target.
 //!
 //! **Linearisation.** The nearest tool to qᵢ is found at block k, parameter s (the pose
@@ -37,19 +40,25 @@
 //! The foot (k, s, t) is where D is least, so (2) is D's gradient (the envelope theorem); the
 //! feet are found again at every round.
 //!
-//! **Steps.** Levenberg–Marquardt: (JᵀJ + λ(M/N)·F + μ·diag(JᵀJ + τ)) δ = −(Jᵀr + λ(M/N)·F x), F
-//! the fairness term's matrix ((1) = rᵀr + λ(M/N)·xᵀF x), banded with half-bandwidth 17 (poses
+//! **Steps.** Levenberg–Marquardt: (JᵀJ + λ(M/N)·F + μ·diag(JᵀJ + τ)) δ = −(Jᵀr + λ(M/N)·F(x − x⁰)), F
+//! the fairness term's matrix ((1) = rᵀr + λ(M/N)·(x − x⁰)ᵀF(x − x⁰)), banded with half-bandwidth 17 (poses
 //! k − 2 … k + 2), solved by the banded Cholesky factorisation; each Qₖ is then put back at the
 //! tool's length from Pₖ along its direction. A step that does not lower (1) is refused and μ
 //! raised fourfold; one that does is taken and μ lowered threefold. The rounds stop when a taken
-//! step lowers (1) by less than [`OPTIMISE_STOP`] of it, or after [`OptimiseOptions::rounds`].
+//! step lowers (1) by less than [`OPTIMISE_STOP`] of it, or to below [`OPTIMISE_FLOOR`] of where
+//! it began (a fit exact to rounding), or when μ has grown beyond [`OPTIMISE_MAX_DAMPING`] (no
+//! step lowers it), or after [`OptimiseOptions::rounds`]; μ starts at 10⁻³ and stays above
+//! [`OPTIMISE_LEAST_DAMPING`].
 //!
 //! What the optimisation lowers is the deviation of the path's own sweep; what a machinist signs
 //! off is the program's (`post()`'s `deviation`), which the post keeps within its chordal
 //! tolerance of the path's: the book's suite measures both.
 
 use crate::sweep::{envelope_deviation, slerp, tool_distance, EnvelopeDeviation};
-use crate::tolerance::{MAX_OPTIMISE_ROUNDS, OPTIMISE_FAIRNESS, OPTIMISE_ROUNDS, OPTIMISE_STOP};
+use crate::tolerance::{
+    MAX_OPTIMISE_ROUNDS, OPTIMISE_FAIRNESS, OPTIMISE_FLOOR, OPTIMISE_LEAST_DAMPING, OPTIMISE_MAX_DAMPING,
+    OPTIMISE_ROUNDS, OPTIMISE_STOP,
+};
 use crate::{Pose, ToolPath};
 use glam::DVec3;
 use ruledlab::{Error, Result, RuledSurface, SymmetricBanded};
@@ -200,9 +209,12 @@ pub fn optimise_poses(
     }
     let length = path.tool.length;
     let mut x: Vec<DVec3> = path.poses.iter().flat_map(|p| [p.tip, p.tip + length * p.axis]).collect();
+    let start = x.clone();
+    // how far the unknowns moved from the given poses: the fairness term's argument
+    let offset = |x: &[DVec3]| -> Vec<DVec3> { x.iter().zip(&start).map(|(a, b)| *a - *b).collect() };
     let weight = options.fairness * targets.len() as f64 / n as f64;
     let energy = |d: &EnvelopeDeviation, x: &[DVec3]| -> f64 {
-        d.points.iter().map(|v| v * v).sum::<f64>() + weight * fairness(x)
+        d.points.iter().map(|v| v * v).sum::<f64>() + weight * fairness(&offset(x))
     };
     let before = envelope_deviation(path, targets);
     let mut current = before.clone();
@@ -253,7 +265,7 @@ pub fn optimise_poses(
                 }
             }
         }
-        add_fairness(&mut h, &mut g, &x, weight);
+        add_fairness(&mut h, &mut g, &offset(&x), weight);
         // Marquardt's damping, and τ for the unknowns no target point reaches
         let diagonal: Vec<f64> = (0..dim).map(|i| h.get(i, i)).collect();
         let tau = 1e-9 * diagonal.iter().sum::<f64>() / dim as f64 + f64::MIN_POSITIVE;
@@ -279,14 +291,14 @@ pub fn optimise_poses(
             if e_trial.is_finite() && e_trial < e {
                 let gain = (e - e_trial) / e;
                 (x, current, e, moved) = (trial, candidate, e_trial, true);
-                mu = (mu / 3.0).max(1e-12);
-                if gain < OPTIMISE_STOP {
+                mu = (mu / 3.0).max(OPTIMISE_LEAST_DAMPING);
+                if gain < OPTIMISE_STOP || e < OPTIMISE_FLOOR * first {
                     break 'rounds;
                 }
                 continue 'rounds;
             }
             mu *= 4.0;
-            if mu > 1e12 {
+            if mu > OPTIMISE_MAX_DAMPING {
                 break 'rounds;
             }
             progress(rounds as f64 / options.rounds as f64);
@@ -300,6 +312,7 @@ pub fn optimise_poses(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tolerance::OPTIMISE_FAIRNESS;
     use crate::{Tool, ToolEnd};
     use ruledlab::Segment;
 
@@ -340,11 +353,18 @@ mod tests {
 
     /// Poses moved off the plane — pushed 0.2 away, tilted 5° about x and 3° about y, each a
     /// little differently — are brought back onto it: the deviation falls from about 1 to below
-    /// 1 µm of the 10-long flank, the energy with it, the tool's length kept.
+    /// 1 µm of the 10-long flank with little fairness, below 5 µm with the default (which holds the
+    /// uneven push back against its unevenness; 2.9 µm measured), the energy by 10⁴ or more. The
+    /// tool's length is kept.
     #[test]
     fn poses_moved_off_a_plane_are_brought_back() {
         let (rulings, targets) = plane();
-        for end in [ToolEnd::Flat, ToolEnd::Ball] {
+        for (end, fairness, within) in [
+            (ToolEnd::Flat, 1e-4, 1e-3),
+            (ToolEnd::Ball, 1e-4, 1e-3),
+            (ToolEnd::Flat, OPTIMISE_FAIRNESS, 5e-3),
+            (ToolEnd::Ball, OPTIMISE_FAIRNESS, 5e-3),
+        ] {
             let tool = Tool::new(0.5, 12.0, end).unwrap();
             let mut path = ruling_aligned(&rulings, tool, -1.0);
             for (k, p) in path.poses.iter_mut().enumerate() {
@@ -354,14 +374,12 @@ mod tests {
                     .normalize();
             }
             let mut shares = Vec::new();
-            let o = optimise_poses(&path, &targets, &OptimiseOptions { rounds: 100, ..Default::default() }, &mut |f| {
-                shares.push(f)
-            })
-            .unwrap();
+            let options = OptimiseOptions { rounds: 60, fairness };
+            let o = optimise_poses(&path, &targets, &options, &mut |f| shares.push(f)).unwrap();
             let largest = |d: &EnvelopeDeviation| d.gouge.abs().max(d.leave);
             assert!(largest(&o.before) > 0.5, "{end:?}: {}", largest(&o.before));
-            assert!(largest(&o.after) < 1e-3, "{end:?}: {} after {} rounds", largest(&o.after), o.rounds);
-            assert!(o.energy.1 < 1e-6 * o.energy.0, "{end:?}: {:?}", o.energy);
+            assert!(largest(&o.after) < within, "{end:?} {fairness}: {} after {} rounds", largest(&o.after), o.rounds);
+            assert!(o.energy.1 < 1e-4 * o.energy.0, "{end:?}: {:?}", o.energy);
             assert_eq!(o.path.poses.len(), path.poses.len());
             assert_eq!(o.path.tool, tool);
             assert!(o.path.poses.iter().all(|p| (p.axis.length() - 1.0).abs() < 1e-12));

@@ -54,3 +54,14 @@ pub const MAX_OPTIMISE_ROUNDS: usize = 1000;
 
 /// The pose optimisation stops when a step lowers its energy by less than this share of it.
 pub const OPTIMISE_STOP: f64 = 1e-4;
+
+/// The pose optimisation stops when its energy falls below this share of where it began: the
+/// poses then fit the target to the rounding of their lengths.
+pub const OPTIMISE_FLOOR: f64 = 1e-16;
+
+/// The pose optimisation stops when its damping μ grows beyond this (its steps are then a
+/// ten-thousandth of Gauss–Newton's, and none lowered the energy).
+pub const OPTIMISE_MAX_DAMPING: f64 = 1e4;
+
+/// The least damping μ of the pose optimisation.
+pub const OPTIMISE_LEAST_DAMPING: f64 = 1e-9;

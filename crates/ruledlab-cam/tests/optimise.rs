@@ -20,7 +20,7 @@ fn largest(d: &EnvelopeDeviation) -> f64 {
 #[test]
 fn optimised_poses_beat_the_ruling_aligned_ones_by_80_percent_on_every_case() {
     // the share each case's largest deviation fell by, as measured (the book's table), less a margin
-    let measured = [0.95, 0.92, 0.89, 0.82];
+    let measured = [0.97, 0.94, 0.96, 0.90];
     for (case, share) in suite::cases().into_iter().zip(measured) {
         let baseline = ruling_aligned(&case.rulings, case.tool, case.side);
         let o = suite::post_options(&case);
