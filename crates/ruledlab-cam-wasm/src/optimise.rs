@@ -64,7 +64,7 @@ struct OptimiseResult {
     after: SweepDeviation,
     /// The energy (squared deviations and fairness) of the given and the optimised poses.
     energy: [f64; 2],
-    /// Rounds taken.
+    /// Rounds taken: the steps tried, the refused ones among them.
     rounds: usize,
 }
 

@@ -90,7 +90,7 @@ pub struct Optimised {
     pub after: EnvelopeDeviation,
     /// The energy (1) of the given and of the optimised poses.
     pub energy: (f64, f64),
-    /// Rounds taken (each one step tried, or more where refused).
+    /// Rounds taken: the steps tried, the refused ones among them.
     pub rounds: usize,
 }
 
