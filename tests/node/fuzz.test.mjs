@@ -379,6 +379,12 @@ const CALLS = [
   (f) => f.path.export(pick([value(), ...STRINGS]), pick([value(), options()])),
   (_f) => ToolPath.exampleProfile(pick(SMALL)),
   (f) => f.path.quality(),
+  (_f) =>
+    ToolPath.rulingAligned(
+      value(),
+      pick([value(), options(), { radius: pick(NUMBERS), length: pick(NUMBERS), end: pick(STRINGS) }]),
+      pick([1, -1, ...SMALL, value()]),
+    ),
   (f) =>
     cam.optimisePoses(
       pick([f.path, value()]),

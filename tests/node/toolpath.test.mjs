@@ -433,3 +433,38 @@ test('optimisePoses brings poses moved off a plane back onto it, with progress, 
   optimised.free();
   path.free();
 });
+
+test('rulingAligned: the tool along each ruling, its radius off the part along the normal, on the side asked', () => {
+  // the plane y = 0: vertical rulings over x ∈ [0, 4]; a ball end of radius ½
+  const rulings = [];
+  for (let k = 0; k <= 4; k++) rulings.push(k, 0, 0, k, 0, 10);
+  const tool = { radius: 0.5, length: 12, end: /** @type {'ball'} */ ('ball') };
+  for (const side of /** @type {const} */ ([1, -1])) {
+    const path = ToolPath.rulingAligned(rulings, tool, side);
+    const [tips, axes] = [path.tips(), path.axes()];
+    for (let k = 0; k <= 4; k++) {
+      assert.deepEqual([tips[3 * k], Math.abs(tips[3 * k + 1]), tips[3 * k + 2]], [k, 0.5, 0]);
+      assert.deepEqual([...axes.subarray(3 * k, 3 * k + 3)], [0, 0, 1]);
+    }
+    // the two sides stand opposite
+    if (side === 1) assert.ok(tips[1] !== 0);
+    path.free();
+  }
+  const a = ToolPath.rulingAligned(rulings, tool, 1);
+  const b = ToolPath.rulingAligned(rulings, tool, -1);
+  assert.equal(a.tips()[1], -b.tips()[1]);
+  a.free();
+  b.free();
+  for (const [args, code] of [
+    [[rulings, tool, 0], 'invalid-argument'],
+    [[rulings.slice(0, 6), tool, 1], 'too-small'],
+    [[[0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 1], tool, 1], 'degenerate'],
+    [[rulings, { radius: -1, length: 2 }, 1], 'invalid-argument'],
+  ]) {
+    assert.throws(
+      () => ToolPath.rulingAligned(.../** @type {[any, any, any]} */ (args)),
+      (e) => e instanceof Error && /** @type {any} */ (e).code === code,
+      `${JSON.stringify(args.slice(1))} ${code}`,
+    );
+  }
+});
