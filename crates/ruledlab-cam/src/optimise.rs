@@ -47,8 +47,8 @@
 //! raised fourfold; one that does is taken and μ lowered threefold. The rounds stop when a taken
 //! step lowers (1) by less than [`OPTIMISE_STOP`] of it, or to below [`OPTIMISE_FLOOR`] of where
 //! it began (a fit exact to rounding), or when μ has grown beyond [`OPTIMISE_MAX_DAMPING`] (no
-//! step lowers it), or after [`OptimiseOptions::rounds`]; μ starts at 10⁻³ and stays above
-//! [`OPTIMISE_LEAST_DAMPING`].
+//! step lowers it), or after [`OptimiseOptions::rounds`]; μ starts at [`OPTIMISE_DAMPING`] and stays above
+//! [`OPTIMISE_LEAST_DAMPING`]; τ is [`OPTIMISE_TAU`] of the mean of diag(JᵀJ + λ(M/N)·F).
 //!
 //! What the optimisation lowers is the deviation of the path's own sweep; what a machinist signs
 //! off is the program's (`post()`'s `deviation`), which the post keeps within its chordal
@@ -56,8 +56,8 @@
 
 use crate::sweep::{envelope_deviation, slerp, tool_distance, EnvelopeDeviation};
 use crate::tolerance::{
-    MAX_OPTIMISE_ROUNDS, OPTIMISE_FAIRNESS, OPTIMISE_FLOOR, OPTIMISE_LEAST_DAMPING, OPTIMISE_MAX_DAMPING,
-    OPTIMISE_ROUNDS, OPTIMISE_STOP,
+    MAX_OPTIMISE_ROUNDS, OPTIMISE_DAMPING, OPTIMISE_FAIRNESS, OPTIMISE_FLOOR, OPTIMISE_GRADIENT_STEP,
+    OPTIMISE_LEAST_DAMPING, OPTIMISE_MAX_DAMPING, OPTIMISE_ROUNDS, OPTIMISE_STOP, OPTIMISE_TAU,
 };
 use crate::{Pose, ToolPath};
 use glam::DVec3;
@@ -162,7 +162,7 @@ fn path_of(x: &[DVec3], like: &ToolPath) -> ToolPath {
 /// of the tool is nearest).
 fn distance_gradient(q: DVec3, p: &Pose, path: &ToolPath) -> DVec3 {
     let t = path.tool;
-    let h = 1e-6 * t.radius;
+    let h = OPTIMISE_GRADIENT_STEP * t.radius;
     let d = |v: DVec3| tool_distance(q + v, p, t.radius, t.length, t.end);
     DVec3::new(
         d(DVec3::X * h) - d(DVec3::X * -h),
@@ -224,7 +224,7 @@ pub fn optimise_poses(
         progress(1.0);
         return Ok(Optimised { path: path.clone(), before, after: current, energy: (e, e), rounds: 0 });
     }
-    let mut mu = 1e-3;
+    let mut mu = OPTIMISE_DAMPING;
     let mut rounds = 0;
     let dim = 6 * n;
     let mut moved = false;
@@ -268,7 +268,7 @@ pub fn optimise_poses(
         add_fairness(&mut h, &mut g, &offset(&x), weight);
         // Marquardt's damping, and τ for the unknowns no target point reaches
         let diagonal: Vec<f64> = (0..dim).map(|i| h.get(i, i)).collect();
-        let tau = 1e-9 * diagonal.iter().sum::<f64>() / dim as f64 + f64::MIN_POSITIVE;
+        let tau = OPTIMISE_TAU * diagonal.iter().sum::<f64>() / dim as f64 + f64::MIN_POSITIVE;
         // each step tried is a round
         while rounds < options.rounds {
             rounds += 1;

@@ -65,3 +65,14 @@ pub const OPTIMISE_MAX_DAMPING: f64 = 1e4;
 
 /// The least damping μ of the pose optimisation.
 pub const OPTIMISE_LEAST_DAMPING: f64 = 1e-9;
+
+/// The damping μ the pose optimisation starts with (`optimise`).
+pub const OPTIMISE_DAMPING: f64 = 1e-3;
+
+/// The pose optimisation's τ, as a share of the mean diagonal of its normal equations: it keeps
+/// the unknowns no target point reaches (a pose's slide along its own axis) determined.
+pub const OPTIMISE_TAU: f64 = 1e-9;
+
+/// The step of the central differences that give the gradient of a point's distance from the
+/// tool in the pose optimisation, as a share of the tool's radius.
+pub const OPTIMISE_GRADIENT_STEP: f64 = 1e-6;
