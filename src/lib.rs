@@ -57,6 +57,8 @@ pub use error::{
 // shared vocabulary: lines, jets, parameter ranges
 pub use base::{atan2_x2, check_coordinates, sample_parameters, CongruenceJet, Jet, Ranges};
 pub use line::{Line, Segment};
+// banded symmetric positive definite systems (the variational schemes'; the CAM crate's pose optimisation)
+pub use linalg::banded::{CholeskyBanded, SymmetricBanded};
 pub use line_fit::{fit_line, LineFit};
 pub use mesh::{grid_indices, strip_indices, Mesh};
 

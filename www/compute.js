@@ -2,12 +2,14 @@
 // time; a newer job supersedes an older one, whose result is dropped. Where no worker can
 // start — a sandboxed frame, a page whose Content-Security-Policy forbids the worker's script —
 // the same job (refine.js) runs on the main thread, yielding between steps. A tool path's post
-// (post-job.js) runs the same way; as it can take a minute, a newer job or cancelWork() stops
-// the worker computing it (a new one starts for the next job).
+// (post-job.js) and an optimisation of its poses (optimise-job.js) run the same way; as they can
+// take a minute, a newer job or cancelWork() stops the worker computing one (a new one starts
+// for the next job).
 import { newWorker, reportNoWorker, wasmSource } from './core.js';
 import { camSource } from './cam.js';
 import { refineSteps } from './refine.js';
 import { postSteps } from './post-job.js';
+import { optimiseSteps } from './optimise-job.js';
 
 /** @type {Worker | null} */
 let worker = null;
@@ -15,8 +17,9 @@ let worker = null;
 let noWorker = false;
 let nextId = 0;
 /**
- * @typedef {{resolve: (v: any) => void, reject: (e: any) => void, onProgress: (f: number) => void, job: any, post?: boolean}} Job
- *   job: a refinement's {segments, options, draw}, or a post's (post-job.js)
+ * @typedef {{resolve: (v: any) => void, reject: (e: any) => void, onProgress: (f: number) => void, job: any, post?: boolean, optimise?: boolean}} Job
+ *   job: a refinement's {segments, options, draw}, a post's (post-job.js) or an optimisation's
+ *   (optimise-job.js)
  */
 /** @type {Map<number, Job>} */
 const jobs = new Map();
@@ -64,7 +67,12 @@ function here(/** @type {number} */ id, /** @type {Job} */ job) {
   pause()
     .then(
       /** @returns {Promise<unknown>} */
-      () => (job.post ? postSteps(job.job, job.onProgress, pause) : refineSteps(job.job, job.onProgress, pause)),
+      () =>
+        job.optimise
+          ? optimiseSteps(job.job, job.onProgress)
+          : job.post
+            ? postSteps(job.job, job.onProgress, pause)
+            : refineSteps(job.job, job.onProgress, pause),
     )
     .then(
       (done) => {
@@ -106,7 +114,7 @@ function supersede() {
   let busy = false;
   for (const [old, job] of jobs) {
     jobs.delete(old);
-    busy ||= !!job.post;
+    busy ||= !!job.post || !!job.optimise;
     job.reject(superseded());
   }
   if (busy && worker) {
@@ -131,6 +139,25 @@ export function postInWorker(job, onProgress = () => {}) {
     const w = theWorker();
     // (the CAM module is started on this thread already: the worker starts its own from the same source)
     if (w) w.postMessage({ id, kind: 'post', ...job, cam: camSource() });
+    else here(id, entry);
+  });
+}
+
+/**
+ * Optimises tool poses against a target and posts them in the worker (or here, where there is none).
+ * @param {import('./optimise-job.js').OptimiseJob} job
+ * @param {(fraction: number) => void} [onProgress]
+ * @returns {Promise<import('./optimise-job.js').OptimiseJobResult>}
+ */
+export function optimiseInWorker(job, onProgress = () => {}) {
+  const id = ++nextId;
+  supersede();
+  return new Promise((resolve, reject) => {
+    /** @type {Job} */
+    const entry = { resolve, reject, onProgress, job, optimise: true };
+    jobs.set(id, entry);
+    const w = theWorker();
+    if (w) w.postMessage({ id, kind: 'optimise', ...job, cam: camSource() });
     else here(id, entry);
   });
 }

@@ -6,11 +6,13 @@
 // { id, error, code, details }. A job with `kind: 'post'` is a tool path refined and posted as
 // G-code (post-job.js): { id, kind, poses, tool, refine, post, draw, cam } in, its result out;
 // `cam` is where the CAM module comes from (its URL or bytes), which this worker starts at its
-// first such job.
+// first such job. A job with `kind: 'optimise'` is tool poses optimised against a target and
+// posted (optimise-job.js): { id, kind, poses, tool, target, post, cam } in, its result out.
 import init from '../pkg/ruledlab.js';
 import { setCamSource, startCam } from './cam.js';
 import { refineSteps } from './refine.js';
 import { postSteps } from './post-job.js';
+import { optimiseSteps } from './optimise-job.js';
 
 /** @type {Promise<unknown> | null} */
 let ready = null;
@@ -23,12 +25,17 @@ self.onmessage = async ({ data }) => {
   const { id } = data;
   try {
     await ready;
-    if (data.kind === 'post') {
+    if (data.kind === 'post' || data.kind === 'optimise') {
       if (data.cam) setCamSource(data.cam);
       await startCam();
     }
     const report = (/** @type {number} */ progress) => self.postMessage({ id, progress });
-    const done = data.kind === 'post' ? await postSteps(data, report) : await refineSteps(data, report);
+    const done =
+      data.kind === 'optimise'
+        ? await optimiseSteps(data, report)
+        : data.kind === 'post'
+          ? await postSteps(data, report)
+          : await refineSteps(data, report);
     self.postMessage({ id, ...done }, { transfer: [done.segments.buffer] });
   } catch (e) {
     const error = /** @type {any} */ (e);

@@ -33,6 +33,15 @@ impl SymmetricBanded {
         self.band[k] += v;
     }
 
+    /// `A[i][j]` (0 outside the band).
+    pub fn get(&self, i: usize, j: usize) -> f64 {
+        let (i, j) = if i >= j { (i, j) } else { (j, i) };
+        if i - j > self.p {
+            return 0.0;
+        }
+        self.band[self.at(i, j)]
+    }
+
     /// Factors in place into L (Cholesky). Fails if the matrix is not positive definite.
     pub fn factor(mut self) -> Result<CholeskyBanded> {
         let (n, p) = (self.n, self.p);

@@ -379,6 +379,19 @@ const CALLS = [
   (f) => f.path.export(pick([value(), ...STRINGS]), pick([value(), options()])),
   (_f) => ToolPath.exampleProfile(pick(SMALL)),
   (f) => f.path.quality(),
+  (_f) =>
+    ToolPath.rulingAligned(
+      value(),
+      pick([value(), options(), { radius: pick(NUMBERS), length: pick(NUMBERS), end: pick(STRINGS) }]),
+      pick([1, -1, ...SMALL, value()]),
+    ),
+  (f) =>
+    cam.optimisePoses(
+      pick([f.path, value()]),
+      pick([value(), ToolPath.exampleProfile(pick([1, 2, 20]))]),
+      pick([undefined, value(), options(), { rounds: pick([0, 1, 2, NaN, -1, 1.5, 1e9]), fairness: pick(NUMBERS) }]),
+      pick([undefined, value(), () => {}]),
+    ),
   (f) =>
     meshNormalsF32(pick([value(), f.surface.segmentsF32()]), pick([value(), new Uint32Array([0, 1, 2]), [0, 1, 9]])),
   (f) => f.surface.recut(value()),

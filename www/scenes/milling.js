@@ -3,12 +3,13 @@
 // machined surface. The part, the envelope and the tool are meshes built by the core. Beyond the
 // paper: the job a machinist posts (layers/job.js) — the program for the machine, controller
 // and mode chosen, the machined surface against your target curve, the machine's axes along the
-// path —, and a long job refined and posted in the worker (post-job.js).
+// path —, a long job refined and posted in the worker (post-job.js), and the poses optimised
+// against the target in the worker (optimise-job.js), the program's deviation before and after.
 import { cam } from '../cam.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { POST_PARAMS, givenPath, postOf, postOptions, programFile, deviationDiagram } from '../layers/toolpath.js';
 import { JOB_PARAMS, drawnTool, stockOf } from '../layers/job.js';
-import { postInWorker } from '../compute.js';
+import { optimiseInWorker, postInWorker } from '../compute.js';
 import { poseSet, poseValues } from '../edit/sets.js';
 import { DRAW_LIMIT, POST_WORKER_THRESHOLD } from '../limits.js';
 
@@ -154,6 +155,7 @@ export const scene = defineScene({
     },
     { key: 'envelope', label: 'milling.param.envelope', type: 'checkbox', value: true },
     { key: 'part', label: 'milling.param.part', type: 'checkbox', value: true },
+    { key: 'optimise', label: 'milling.param.optimise', type: 'checkbox', value: false },
     ...POST_PARAMS,
     ...JOB_PARAMS,
   ],
@@ -165,6 +167,7 @@ export const scene = defineScene({
     { style: 'envelope', label: 'milling.legend.envelope', when: (p) => !!p.envelope },
     { style: 'tool', label: 'milling.legend.tool', when: (p) => !!p.tool },
     { style: 'part', label: 'milling.legend.part', when: (p) => !!p.part },
+    { style: 'optimisedAxis', label: 'milling.legend.optimised', when: (p) => !!p.optimise },
   ],
   create(p, ctx) {
     const { t, data, input } = ctx;
@@ -256,7 +259,8 @@ export const scene = defineScene({
       const units = post?.units ?? (p.units === 'inch' ? 'inch' : 'mm');
       const exports = { json: refined.export('json'), csv: refined.export('csv') };
       const stockProblem = stockOf(String(p.stock)) === undefined ? [t('milling.note.stock')] : [];
-      return {
+      /** @type {import('../scene.js').Built} */
+      const built = {
         bounds: target ? bounds(given, all, target) : bounds(given, all),
         camera: { yaw: -1.9, pitch: 0.55 },
         layers,
@@ -366,9 +370,51 @@ export const scene = defineScene({
         ],
         data: { segments: refined.segments() },
       };
+      // "Optimise the poses": in the worker, measured by the program as posted
+      if (p.optimise && target && post?.deviation)
+        built.later = optimiseLater(built, refined, target, postOptions(p, numbering), post);
+      return built;
     });
   },
 });
+
+/**
+ * The refined poses optimised against the target in the worker (optimise-job.js), with progress:
+ * the optimised tool axes drawn over the path, and the largest deviation from the target of the
+ * program as posted, of the refined poses and of the optimised ones, in the readout.
+ * @param {import('../scene.js').Built} built   what is shown meanwhile
+ * @param {import('../../pkg/cam/ruledlab_cam.js').ToolPath} refined
+ * @param {Float64Array | number[]} target   3 numbers per point
+ * @param {import('../../pkg/cam/ruledlab_cam.js').GcodeOptions} options   the post's
+ * @param {import('../../pkg/cam/ruledlab_cam.js').PostResult} post   the refined poses' program
+ * @returns {(onProgress: (fraction: number) => void) => Promise<import('../scene.js').Built>}
+ */
+function optimiseLater(built, refined, target, options, post) {
+  // what the job needs, read now: the scope frees the path when create() returns
+  const job = {
+    poses: interleave(refined.tips(), refined.axes()),
+    tool: refined.tool,
+    target: Float64Array.from(target),
+    post: options,
+  };
+  const before = Math.abs(post.deviation?.largest ?? Number.NaN);
+  const u = post.units;
+  return (onProgress) =>
+    optimiseInWorker(job, onProgress).then((done) => {
+      const after = done.posted ? Math.abs(done.posted.largest) : Number.NaN;
+      return {
+        ...built,
+        layers: [...built.layers, { kind: 'segments', style: 'optimisedAxis', positions: done.segments }],
+        readouts: [
+          ...(built.readouts ?? []),
+          { label: `milling.readout.optimised.before.${u}`, value: before },
+          { label: `milling.readout.optimised.after.${u}`, value: after },
+          { label: 'milling.readout.optimised.less', value: 100 * (1 - after / before) },
+          { label: 'milling.readout.optimised.rounds', value: done.rounds },
+        ],
+      };
+    });
+}
 
 /**
  * A job too long to refine and post while the page waits: the given poses drawn at once, then

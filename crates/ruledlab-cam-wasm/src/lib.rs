@@ -17,6 +17,7 @@ mod tool_path;
 mod developable;
 mod import;
 mod module_info;
+mod optimise;
 
 // what they share
 mod gcode_options;
@@ -27,4 +28,5 @@ pub use developable::{
 pub use flat_pattern::FlatPattern;
 pub use import::{import_target, import_tool_poses};
 pub use module_info::{live_objects, version};
+pub use optimise::optimise_poses;
 pub use tool_path::ToolPath;

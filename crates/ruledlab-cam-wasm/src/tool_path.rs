@@ -286,6 +286,29 @@ impl ToolPath {
         Ok(ToolPath { inner: ruledlab_cam::ToolPath::from_surface(&axes, tool), _live: Live::new() })
     }
 
+    /// The ruling-aligned poses of a flank cut of a part's rulings (6 numbers each, foot then
+    /// end): the tool's axis along each ruling, its tip the foot moved by the tool's radius along
+    /// the surface's unit normal at the ruling's midpoint, on the side `side` (+1 or −1) says; the
+    /// start `optimisePoses` improves. Throws for zero-length rulings, non-finite numbers, fewer
+    /// than 2 rulings, a bad tool or a side other than ±1.
+    #[wasm_bindgen(js_name = rulingAligned)]
+    pub fn ruling_aligned(
+        #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] rulings: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "ToolOptions")] tool: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "1 | -1")] side: JsValue,
+    ) -> Result<ToolPath, JsValue> {
+        const F: &str = "ToolPath.rulingAligned";
+        let _measure = Measure::start(F);
+        let coords = numbers(F, "rulings", &rulings)?;
+        let tool = read_tool(F, tool)?;
+        let side = args::number(F, "side", &side)?;
+        if side != 1.0 && side != -1.0 {
+            return Err(fail(F, format!("side must be 1 or -1 (the side of the part the tool stands on), got {side}")));
+        }
+        let rulings = RuledSurface::from_flat(&coords).map_err(|e| fail(F, e))?;
+        Ok(ToolPath { inner: ruledlab_cam::ruling_aligned(&rulings, tool, side), _live: Live::new() })
+    }
+
     /// A path from 6 numbers per pose: the tip x, y, z and the axis i, j, k (pointing into the
     /// spindle; it need not be a unit vector, a unit one is kept bit for bit), and a tool. Throws
     /// for zero axes, non-finite numbers or fewer than 2 poses.

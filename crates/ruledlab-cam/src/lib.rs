@@ -27,6 +27,7 @@ mod linearise;
 mod machine;
 mod messages;
 mod motion;
+mod optimise;
 mod poses;
 mod post;
 mod quality;
@@ -52,6 +53,9 @@ pub use quality::{deviation, deviation_per_pose, Quality};
 pub use sweep::{
     envelope_deviation, path_blocks, pose_at, sweep_deviation, tool_distance, EnvelopeDeviation, Move, SweptBlock,
 };
+
+// tool poses fitted to the part: the ruling-aligned start and the optimisation
+pub use optimise::{optimise_poses, ruling_aligned, OptimiseOptions, Optimised};
 
 // five-axis machines and their kinematics
 pub use kinematics::{at_pole, forward_kinematics, orientations, pole_angle, tool_axis, Joints};

@@ -40,3 +40,39 @@ pub const MAX_MACHINE_VALUE: f64 = 1e7;
 /// Degrees a tilting axis may swing beyond the tool axis's turn (and twice the pole cone) in one
 /// block before the block is a flip of the rotary axes (`flip`).
 pub const FLIP_MARGIN: f64 = 0.01;
+
+/// The fairness weight λ of the pose optimisation's energy (`optimise`, (1)) by default: the
+/// second differences of the poses' tips and axis ends weigh λ times as much as the squared
+/// deviations of the target points nearest them.
+pub const OPTIMISE_FAIRNESS: f64 = 0.01;
+
+/// Most rounds of the pose optimisation by default (`optimise`).
+pub const OPTIMISE_ROUNDS: usize = 40;
+
+/// Most rounds of the pose optimisation accepted.
+pub const MAX_OPTIMISE_ROUNDS: usize = 1000;
+
+/// The pose optimisation stops when a step lowers its energy by less than this share of it.
+pub const OPTIMISE_STOP: f64 = 1e-4;
+
+/// The pose optimisation stops when its energy falls below this share of where it began: the
+/// poses then fit the target to the rounding of their lengths.
+pub const OPTIMISE_FLOOR: f64 = 1e-16;
+
+/// The pose optimisation stops when its damping μ grows beyond this (its steps are then a
+/// ten-thousandth of Gauss–Newton's, and none lowered the energy).
+pub const OPTIMISE_MAX_DAMPING: f64 = 1e4;
+
+/// The least damping μ of the pose optimisation.
+pub const OPTIMISE_LEAST_DAMPING: f64 = 1e-9;
+
+/// The damping μ the pose optimisation starts with (`optimise`).
+pub const OPTIMISE_DAMPING: f64 = 1e-3;
+
+/// The pose optimisation's τ, as a share of the mean diagonal of its normal equations: it keeps
+/// the unknowns no target point reaches (a pose's slide along its own axis) determined.
+pub const OPTIMISE_TAU: f64 = 1e-9;
+
+/// The step of the central differences that give the gradient of a point's distance from the
+/// tool in the pose optimisation, as a share of the tool's radius.
+pub const OPTIMISE_GRADIENT_STEP: f64 = 1e-6;
