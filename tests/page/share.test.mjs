@@ -5,7 +5,7 @@
 // language) with no console error and no request outside ruledlab's files.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { copyFileSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { copyFileSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -143,6 +143,11 @@ test('from a downloaded file: no address offered, and the element with its scrip
   const site2 = mkdtempSync(join(tmpdir(), 'ruledlab-lecture-'));
   await download.saveAs(join(site2, download.suggestedFilename()));
   assert.equal(download.suggestedFilename(), 'ruledlab-embed.js');
+  // exactly dist/ruledlab-embed.js: the page's script with its data blocks' texts in place
+  assert.ok(
+    readFileSync(join(site2, 'ruledlab-embed.js')).equals(readFileSync(join(REPO, 'dist/ruledlab-embed.js'))),
+    'the embed script handed out is not the build’s',
+  );
   writeFileSync(join(site2, 'lecture.html'), hostPage(got.element));
   await page.close();
   const lecture = await files.newPage();
