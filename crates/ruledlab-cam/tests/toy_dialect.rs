@@ -11,7 +11,7 @@ mod jobs;
 
 use ruledlab::{Scheme, Variant};
 use ruledlab_cam::controller::{
-    comment_lines, iso, number, Context, Controller, Iso, LinuxCnc, Mode, Op, Orientation, Rate, Target, Units,
+    comment_lines, iso, number, Context, Controller, Iso, LinuxCnc, Mode, Op, Orientation, Rate, Units, Waypoint,
 };
 use ruledlab_cam::{example_tool_path, gcode, gcode_with, Dialect, Machine, PostOptions, Program, ToolPath};
 
@@ -21,7 +21,7 @@ struct Toy {
     orientation: Orientation,
 }
 
-fn at(t: &Target) -> String {
+fn at(t: &Waypoint) -> String {
     let v = |x: f64| number(x, false);
     format!("{} {} {} | {} {} {}", v(t.xyz.x), v(t.xyz.y), v(t.xyz.z), v(t.axis.x), v(t.axis.y), v(t.axis.z))
 }

@@ -34,7 +34,7 @@ pub use super::sinumerik::Sinumerik;
 
 // what a controller is given and writes with
 pub use super::iso::{self, Iso};
-pub use super::ops::{Context, Op, Rate, Target, Words};
+pub use super::ops::{Context, Op, Rate, Waypoint, Words};
 pub use super::options::{Coolant, Mode, SpindleDirection, Units};
 pub use super::text::{clean, comment_lines, decimals, number, speed, COMMENT_WIDTH};
 

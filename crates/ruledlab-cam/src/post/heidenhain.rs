@@ -17,7 +17,7 @@
 
 use super::controller::{Controller, Orientation, Travel};
 use super::{
-    comment_lines, decimals, number, speed, Context, Coolant, Mode, Op, Rate, SpindleDirection, Target, Units, Words,
+    comment_lines, decimals, number, speed, Context, Coolant, Mode, Op, Rate, SpindleDirection, Units, Waypoint, Words,
 };
 use crate::machine::Machine;
 use std::fmt::Write;
@@ -77,7 +77,7 @@ impl Controller for Heidenhain {
     }
 }
 
-fn axes(t: &Target, c: &Context, words: Words) -> String {
+fn axes(t: &Waypoint, c: &Context, words: Words) -> String {
     match (words, c.mode) {
         (Words::Xy, Mode::Machine) => format!("X{} Y{}", number(t.xyz.x, true), number(t.xyz.y, true)),
         (Words::Z, Mode::Machine) => format!("Z{}", number(t.xyz.z, true)),
@@ -253,7 +253,7 @@ mod tests {
     /// tool-centre-point control F is the tip's distance over the time, 2 mm: F1000.
     #[test]
     fn feeds_of_simultaneous_moves() {
-        let t = Target { xyz: DVec3::ZERO, rotary: [0.0, 0.0], axis: DVec3::Z };
+        let t = Waypoint { xyz: DVec3::ZERO, rotary: [0.0, 0.0], axis: DVec3::Z };
         let feed = |mode, linear| {
             let rate = Rate::Simultaneous { minutes: 0.002, distance: 2.0, linear, turn: 3.0 };
             let g = write(&[Op::Feed(t, rate)], &context(mode));

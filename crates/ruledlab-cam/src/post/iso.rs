@@ -11,7 +11,7 @@
 //! how it is given the tool axis, comments, block numbers, a program's first lines) is the
 //! controller's file.
 
-use super::{comment_lines, number, speed, Context, Coolant, Mode, Op, Rate, SpindleDirection, Target, Units, Words};
+use super::{comment_lines, number, speed, Context, Coolant, Mode, Op, Rate, SpindleDirection, Units, Waypoint, Words};
 use std::fmt::Write;
 
 /// The words an ISO controller says its own way. Lengths come as written (program units), the
@@ -56,7 +56,7 @@ pub trait Iso {
 
     /// The words of the tool axis under tool-centre-point control (the default: the rotary
     /// axes' angles, as in machine coordinates).
-    fn tcp_axis(&self, t: &Target, context: &Context) -> String {
+    fn tcp_axis(&self, t: &Waypoint, context: &Context) -> String {
         angles(t.rotary, context)
     }
 
@@ -71,7 +71,7 @@ pub fn angles(rotary: [f64; 2], c: &Context) -> String {
 }
 
 /// The axis words of a block.
-fn axes(iso: &dyn Iso, t: &Target, c: &Context, words: Words) -> String {
+fn axes(iso: &dyn Iso, t: &Waypoint, c: &Context, words: Words) -> String {
     let (x, y, z) = (number(t.xyz.x, false), number(t.xyz.y, false), number(t.xyz.z, false));
     match (words, c.mode) {
         (Words::Xy, Mode::Machine) => format!("X{x} Y{y}"),

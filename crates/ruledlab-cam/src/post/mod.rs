@@ -44,7 +44,7 @@ mod sinumerik;
 mod text;
 
 pub use controller::{Controller, Dialect};
-pub use ops::{Context, Op, Rate, Target, Words};
+pub use ops::{Context, Op, Rate, Waypoint, Words};
 pub use options::{validate, Coolant, Holder, Mode, Numbering, PostOptions, SpindleDirection, Units};
 pub use plan::plan_reporting;
 pub use text::{comment_lines, decimals, number, speed};

@@ -1,4 +1,4 @@
-//! A program in no dialect yet: its steps ([`Op`]), where each block goes ([`Target`]), its feed
+//! A program in no dialect yet: its steps ([`Op`]), where each block goes ([`Waypoint`]), its feed
 //! ([`Rate`]), and what a controller needs to know besides ([`Context`]). The plan (`plan.rs`)
 //! makes them; a [`Controller`](super::Controller) writes them in its words.
 
@@ -8,7 +8,7 @@ use glam::DVec3;
 /// Where a block goes: X Y Z as written (part frame in TCP mode, machine frame otherwise), the
 /// rotary values, the tool axis in the part frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Target {
+pub struct Waypoint {
     /// X, Y, Z as written.
     pub xyz: DVec3,
     /// The rotary axes' values.
@@ -84,9 +84,9 @@ pub enum Op {
     /// Tool-centre-point control on or off.
     Tcp(bool),
     /// Rapid move, with the words it writes.
-    Rapid(Target, Words),
+    Rapid(Waypoint, Words),
     /// Feed move.
-    Feed(Target, Rate),
+    Feed(Waypoint, Rate),
     /// Coolant on (the kind) or off.
     Coolant(Coolant),
     /// Spindle off.

@@ -4,7 +4,8 @@
 use super::controller::{Orientation, Travel};
 use super::header::{header, HeaderFacts};
 use super::{
-    validate, Context, Controller, Coolant, Mode, Numbering, Op, Plan, PostOptions, Rate, Target, Units, Warning, Words,
+    validate, Context, Controller, Coolant, Mode, Numbering, Op, Plan, PostOptions, Rate, Units, Warning, Waypoint,
+    Words,
 };
 use crate::kinematics::{forward_kinematics, machine_position, tool_axis, Joints};
 use crate::linearise::{linearise_reporting, Interpolation, LineariseOptions, Linearised};
@@ -153,7 +154,7 @@ fn plan_named(
 
     // the blocks' times
     let rounded = |v: f64| (v * 10f64.powi(GCODE_DECIMALS as i32)).round();
-    let target = |p: &Pose, j: &Joints| Target {
+    let waypoint = |p: &Pose, j: &Joints| Waypoint {
         xyz: if o.mode == Mode::Tcp { p.tip } else { j.xyz },
         rotary: j.rotary,
         axis: p.axis,
@@ -166,7 +167,7 @@ fn plan_named(
         let turning = (0..2).any(|k| rounded(ja.rotary[k]) != rounded(jb.rotary[k]));
         let tip = (b.tip - a.tip).length();
         let distance = if tip > 1e-3 || !turning { tip } else { tip.max(job.cutter * a.axis.angle_between(b.axis)) };
-        let linear = (target(b, &jb).xyz - target(a, &ja).xyz).length();
+        let linear = (waypoint(b, &jb).xyz - waypoint(a, &ja).xyz).length();
         let turn = DVec3::new(jb.rotary[0] - ja.rotary[0], jb.rotary[1] - ja.rotary[1], 0.0).length();
         let travel = Travel { turning, distance, linear, turn };
         let word = controller.max_feed().map(|max| (controller.feed_measure(o.mode, &travel, o.units), max));
@@ -182,9 +183,9 @@ fn plan_named(
     let start = safe_point(m, &job, &lin.poses[0], lin.joints[0].rotary, path_pose(0))?;
     let end = safe_point(m, &job, &lin.poses[n - 1], lin.leaving(n - 1).rotary, path_pose(n - 1))?;
     let z_top = m.travel[2][1];
-    let at = |p: DVec3, a: DVec3, rotary: [f64; 2]| -> Target {
+    let at = |p: DVec3, a: DVec3, rotary: [f64; 2]| -> Waypoint {
         let xyz = machine_position(m, p, rotary, job.gauge);
-        Target { xyz: if o.mode == Mode::Tcp { p } else { xyz }, rotary, axis: a }
+        Waypoint { xyz: if o.mode == Mode::Tcp { p } else { xyz }, rotary, axis: a }
     };
     let first = &lin.poses[0];
     let j0 = lin.joints[0];
@@ -207,7 +208,7 @@ fn plan_named(
         Op::Comment("down the tool axis to the clearance outside the stock".into()),
         Op::Rapid(at(start.near, first.axis, j0.rotary), Words::All),
         Op::Coolant(o.coolant),
-        Op::Feed(target(first, &j0), Rate::PerMinute(job.approach)),
+        Op::Feed(waypoint(first, &j0), Rate::PerMinute(job.approach)),
         Op::Comment("cut".into()),
     ]);
     for i in 1..n {
@@ -224,7 +225,7 @@ fn plan_named(
         } else {
             Rate::PerMinute(distance / bm.minutes.max(1e-12))
         };
-        ops.push(Op::Feed(target(&lin.poses[i], &jb), rate));
+        ops.push(Op::Feed(waypoint(&lin.poses[i], &jb), rate));
         if let Some(after) = lin.unwound[i] {
             ops.extend(unwind(m, o, controller.orientation(), &job, &lin, i, after, namer, path_pose(i))?);
         }
@@ -585,11 +586,11 @@ fn within_travel(m: &Machine, xyz: DVec3) -> bool {
 }
 
 /// The point above `point` at the top of Z, as the program writes it.
-fn top_of(m: &Machine, o: &PostOptions, job: &Job, point: DVec3, rotary: [f64; 2], z_top: f64) -> Target {
+fn top_of(m: &Machine, o: &PostOptions, job: &Job, point: DVec3, rotary: [f64; 2], z_top: f64) -> Waypoint {
     let xyz = machine_position(m, point, rotary, job.gauge);
     let top = DVec3::new(xyz.x, xyz.y, z_top);
     let part = forward_kinematics(m, &Joints { xyz: top, rotary }, job.gauge);
-    Target { xyz: if o.mode == Mode::Tcp { part.tip } else { top }, rotary, axis: part.axis }
+    Waypoint { xyz: if o.mode == Mode::Tcp { part.tip } else { top }, rotary, axis: part.axis }
 }
 
 /// The rotary axes' home as the book documents it: a limited axis to 0 (its range holds no
@@ -663,7 +664,7 @@ fn unwind(
     let Some(point) = found else {
         return Err(Error::Unreachable { pose, line: None, message: crate::msg!("unwind-blocked", pose = pose) });
     };
-    let at = |q: DVec3, rotary: [f64; 2]| Target {
+    let at = |q: DVec3, rotary: [f64; 2]| Waypoint {
         xyz: if o.mode == Mode::Tcp { q } else { machine_position(m, q, rotary, job.gauge) },
         rotary,
         axis: p.axis,
@@ -702,7 +703,7 @@ fn in_units(op: Op, k: f64) -> Op {
     if k == 1.0 {
         return op;
     }
-    let t = |t: Target| Target { xyz: t.xyz * k, ..t };
+    let t = |t: Waypoint| Waypoint { xyz: t.xyz * k, ..t };
     match op {
         Op::Rapid(x, w) => Op::Rapid(t(x), w),
         Op::Feed(x, Rate::PerMinute(f)) => Op::Feed(t(x), Rate::PerMinute(f * k)),

@@ -14,7 +14,7 @@
 
 use super::controller::{Controller, Orientation};
 use super::iso::{self, Iso};
-use super::{number, Context, Mode, Op, Target, Units};
+use super::{number, Context, Mode, Op, Units, Waypoint};
 use crate::machine::Machine;
 use crate::tolerance::GCODE_VECTOR_DECIMALS;
 
@@ -100,7 +100,7 @@ impl Iso for Sinumerik {
         vec![if on { "TRAORI ORIWKS ORIVECT" } else { "TRAFOOF" }]
     }
 
-    fn tcp_axis(&self, t: &Target, _: &Context) -> String {
+    fn tcp_axis(&self, t: &Waypoint, _: &Context) -> String {
         format!("A3={} B3={} C3={}", vector(t.axis.x), vector(t.axis.y), vector(t.axis.z))
     }
 
