@@ -269,6 +269,10 @@ pub const MAX_KLEIN_UNIT: f64 = 1e6;
 /// The Klein view: most circles of the quadric's outline, and most chords a circle or a conic
 /// is drawn with (`klein/image.rs`, `klein/sections.rs`).
 pub const MAX_KLEIN_OUTLINE_SAMPLES: usize = 1024;
+/// The Klein view's drawing: parallels (and half meridians) of the outline's outer sphere.
+pub const KLEIN_OUTLINE_CIRCLES: usize = 5;
+/// The Klein view's drawing: chords of each circle of the outline, and points of a conic.
+pub const KLEIN_OUTLINE_SAMPLES: usize = 64;
 
 /// Two consecutive normalised rulings meet (a torsal step) when |Ω(L₁, L₂)| ≤ this ·
 /// max(1, |m₁|, |m₂|) (`klein/polygon.rs`): rounding of the moments' few products.

@@ -4,11 +4,15 @@
 //!
 //! **Regulus.** Three pairwise skew lines L₁, L₂, L₃ of a regulus span a plane π of P⁵ (a
 //! 3-dimensional subspace W of R⁶). Restricted to W the Klein form is a 3 × 3 symmetric matrix
-//! Q_jk = Ω(b_j, b_k) in an orthonormal basis b of W; the lines of the regulus are the points
-//! w ∈ W with wᵀQw = 0: a conic, when Q has two eigenvalues of one sign and one of the other,
-//!   w(t) = cos t v₁/√|λ₁| + sin t v₂/√|λ₂| ± v₃/√|λ₃|,                                   (K8)
-//! (v_k the unit eigenvectors, λ₃ the eigenvalue of the lone sign; the sign of the last term
-//! picks the branch of the given lines' orientation). Every other line of the regulus lies in π:
+//! Q_jk = Ω(b_j, b_k) in an orthonormal basis b of W whose first vector is the first line's point
+//! P; the lines of the regulus are the points w ∈ W with wᵀQw = 0: a conic when det Q ≠ 0. The
+//! line of π through P in the direction v meets it again in
+//!   w(v) = Q(v, v) P − 2 Q(P, v) v,                                                      (K8)
+//! and v = cos θ b₁ + sin θ b₂, θ ∈ [0, π), runs once round it. The cone wᵀQw = 0 of R³ has two
+//! nappes (a line's two orientations ±L); two of its vectors lie on one nappe exactly when
+//! Q(w₁, w₂) det Q ≥ 0 (K9: for the signature (2, 1), det Q < 0 and null vectors of one nappe
+//! have Q(w₁, w₂) ≤ 0, as light-like vectors of one time-orientation do; for (1, 2) both signs
+//! turn), which picks the nappe of the given orientation. Every other line of the regulus lies in π:
 //! its distance from W (the sine of the angle between its 6-vector and W, [`RegulusPlane::distance`])
 //! is 0 to rounding.
 //!
@@ -19,24 +23,26 @@
 use crate::error::{Error, Result};
 use crate::klein::point::{klein_form, KleinPoint};
 use crate::tolerance::{COMPLEX_REGULUS_DET, MAX_KLEIN_OUTLINE_SAMPLES};
-use nalgebra::{Matrix3, SymmetricEigen, Vector6};
-use std::f64::consts::TAU;
+use glam::DMat3;
+use std::f64::consts::PI;
 
-fn vec6(p: &KleinPoint) -> Vector6<f64> {
-    Vector6::from_row_slice(&p.to_array())
+/// A point of P⁵ as a vector of R⁶.
+type V6 = [f64; 6];
+
+fn dot(a: &V6, b: &V6) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
-fn point6(v: &Vector6<f64>) -> KleinPoint {
-    KleinPoint::from_array([v[0], v[1], v[2], v[3], v[4], v[5]])
+fn axpy(s: f64, x: &V6, y: &V6) -> V6 {
+    std::array::from_fn(|k| s * x[k] + y[k])
 }
 
 /// The plane of P⁵ that three lines span, and the conic in which it cuts M.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RegulusPlane {
-    /// An orthonormal basis of W ⊂ R⁶ (Gram–Schmidt on the three lines' coordinates).
-    basis: [Vector6<f64>; 3],
-    /// The first line's coordinates in the basis (which branch of the conic it is on).
-    first: [f64; 3],
+    /// An orthonormal basis of W ⊂ R⁶ (Gram–Schmidt on the three lines' coordinates): the
+    /// first is the first line's direction in R⁶.
+    basis: [V6; 3],
 }
 
 impl RegulusPlane {
@@ -44,75 +50,80 @@ impl RegulusPlane {
     /// [`COMPLEX_REGULUS_DET`] of the sine of an angle: two of them the same line, or the three in
     /// a pencil).
     pub fn through(lines: [&KleinPoint; 3]) -> Result<Self> {
-        let mut basis = [Vector6::zeros(); 3];
+        let mut basis = [[0.0; 6]; 3];
         for (k, l) in lines.iter().enumerate() {
-            let v = vec6(l);
+            let v = l.to_array();
             let mut w = v;
             for b in &basis[..k] {
-                w -= b * b.dot(&w);
+                w = axpy(-dot(b, &w), b, &w);
             }
-            let n = w.norm();
-            if n.is_nan() || n <= COMPLEX_REGULUS_DET * v.norm() {
+            let n = dot(&w, &w).sqrt();
+            if n.is_nan() || n <= COMPLEX_REGULUS_DET * dot(&v, &v).sqrt() {
                 return Err(Error::degenerate(
                     "lines",
                     "the three lines span no plane of P⁵ (two are one line, or the three lie in a pencil)",
                 ));
             }
-            basis[k] = w / n;
+            basis[k] = w.map(|x| x / n);
         }
-        let v = vec6(lines[0]);
-        Ok(RegulusPlane { basis, first: [basis[0].dot(&v), basis[1].dot(&v), basis[2].dot(&v)] })
+        Ok(RegulusPlane { basis })
     }
 
     /// The distance of `line`'s point from the plane: |v − P v|/|v| for its 6-vector v (the sine
     /// of the angle between v and W); 0 for the lines of the regulus, NaN for the zero vector.
     pub fn distance(&self, line: &KleinPoint) -> f64 {
-        let v = vec6(line);
+        let v = line.to_array();
         let mut w = v;
         for b in &self.basis {
-            w -= b * b.dot(&w);
+            w = axpy(-dot(b, &w), b, &w);
         }
-        w.norm() / v.norm()
+        (dot(&w, &w) / dot(&v, &v)).sqrt()
     }
 
     /// `samples` points of the conic π ∩ M (K8), on the branch of the first line, in order round
-    /// it; an error when π does not cut M in a conic (the three lines meet pairwise: a pencil's
-    /// plane lies on M) or `samples` is below 3 or above [`MAX_KLEIN_OUTLINE_SAMPLES`].
+    /// it; an error when π does not cut M in a conic (the Klein form degenerate on π: the lines
+    /// meet pairwise, a pencil's plane lies on M) or `samples` is below 3 or above
+    /// [`MAX_KLEIN_OUTLINE_SAMPLES`].
     pub fn conic(&self, samples: usize) -> Result<Vec<KleinPoint>> {
         if !(3..=MAX_KLEIN_OUTLINE_SAMPLES).contains(&samples) {
             return Err(Error::parameter("samples", format!("from 3 to {MAX_KLEIN_OUTLINE_SAMPLES} points")));
         }
-        let points: Vec<KleinPoint> = self.basis.iter().map(point6).collect();
-        let q = Matrix3::from_fn(|j, k| klein_form(&points[j], &points[k]));
-        let eig = SymmetricEigen::new(q);
-        let scale = eig.eigenvalues.iter().fold(0.0f64, |m, l| m.max(l.abs()));
-        let positive: Vec<usize> = (0..3).filter(|&k| eig.eigenvalues[k] > COMPLEX_REGULUS_DET * scale).collect();
-        let negative: Vec<usize> = (0..3).filter(|&k| eig.eigenvalues[k] < -COMPLEX_REGULUS_DET * scale).collect();
-        let (pair, lone) = match (positive.len(), negative.len()) {
-            (2, 1) => ([positive[0], positive[1]], negative[0]),
-            (1, 2) => ([negative[0], negative[1]], positive[0]),
-            _ => {
-                return Err(Error::degenerate(
-                    "lines",
-                    "the plane of the three lines cuts the Klein quadric in no conic (the lines meet pairwise)",
-                ))
-            }
-        };
-        let axis = |k: usize| -> [f64; 3] {
-            let v = eig.eigenvectors.column(k);
-            let s = 1.0 / eig.eigenvalues[k].abs().sqrt();
-            [s * v[0], s * v[1], s * v[2]]
-        };
-        let (a, b, mut c) = (axis(pair[0]), axis(pair[1]), axis(lone));
-        if c[0] * self.first[0] + c[1] * self.first[1] + c[2] * self.first[2] < 0.0 {
-            c = [-c[0], -c[1], -c[2]];
+        let b = self.basis.map(KleinPoint::from_array);
+        let q = |j: usize, k: usize| klein_form(&b[j], &b[k]);
+        // Q in the basis; the first basis vector P is the first line's point, on M (Q₀₀ = 0)
+        let det =
+            DMat3::from_cols_array(&[q(0, 0), q(0, 1), q(0, 2), q(1, 0), q(1, 1), q(1, 2), q(2, 0), q(2, 1), q(2, 2)])
+                .determinant();
+        let scale = (0..3).flat_map(|j| (0..3).map(move |k| (j, k))).fold(0.0f64, |m, (j, k)| m.max(q(j, k).abs()));
+        if det.is_nan() || det.abs() <= COMPLEX_REGULUS_DET * scale.powi(3) {
+            return Err(Error::degenerate(
+                "lines",
+                "the plane of the three lines cuts the Klein quadric in no conic (the lines meet pairwise)",
+            ));
         }
-        Ok((0..samples)
+        // the second point on the conic of the line through P in the direction v = cos θ b₁ + sin θ b₂:
+        // w = Q(v, v) P − 2 Q(P, v) v (K8); θ ∈ [0, π) runs once round the conic
+        let mut out: Vec<[f64; 3]> = (0..samples)
             .map(|i| {
-                let (s, co) = (TAU * i as f64 / samples as f64).sin_cos();
-                let w: Vector6<f64> =
-                    (0..3).map(|k| self.basis[k] * (co * a[k] + s * b[k] + c[k])).fold(Vector6::zeros(), |x, y| x + y);
-                point6(&w)
+                let (s, c) = (PI * i as f64 / samples as f64).sin_cos();
+                let qvv = c * c * q(1, 1) + 2.0 * s * c * q(1, 2) + s * s * q(2, 2);
+                let qpv = c * q(0, 1) + s * q(0, 2);
+                [qvv, -2.0 * qpv * c, -2.0 * qpv * s]
+            })
+            .collect();
+        // one nappe of the cone over the conic: the one of P, where Q(w, P) det Q ≥ 0 (K9)
+        let qp = |w: &[f64; 3]| w[1] * q(0, 1) + w[2] * q(0, 2);
+        let far = out.iter().max_by(|a, b| qp(a).abs().total_cmp(&qp(b).abs())).copied().unwrap_or_default();
+        if qp(&far) * det < 0.0 {
+            out.iter_mut().for_each(|w| *w = w.map(|x| -x));
+        }
+        Ok(out
+            .iter()
+            .map(|w| {
+                let v: V6 = std::array::from_fn(|k| {
+                    w[0] * self.basis[0][k] + w[1] * self.basis[1][k] + w[2] * self.basis[2][k]
+                });
+                KleinPoint::from_array(v)
             })
             .collect())
     }
@@ -152,9 +163,19 @@ mod tests {
             assert!(plane.distance(w) < 1e-14);
         }
         // each ruling is (a positive multiple of) a point of the conic: near one of the samples
-        let unit = |p: &KleinPoint| vec6(p).normalize();
+        let unit = |p: &KleinPoint| {
+            let v = p.to_array();
+            let n = dot(&v, &v).sqrt();
+            v.map(|x| x / n)
+        };
         for p in &k.points {
-            let nearest = conic.iter().map(|w| (unit(w) - unit(p)).norm()).fold(f64::INFINITY, f64::min);
+            let nearest = conic
+                .iter()
+                .map(|w| {
+                    let (a, b) = (unit(w), unit(p));
+                    (0..6).map(|k| (a[k] - b[k]).powi(2)).sum::<f64>().sqrt()
+                })
+                .fold(f64::INFINITY, f64::min);
             assert!(nearest < 0.02, "{nearest}");
         }
         // a line of the other regulus (through the point (1, 0, 0), direction (0, 2, −3)) is not in the plane
