@@ -81,12 +81,12 @@ impl Projection {
         ((c - s).abs(), c + s)
     }
 
-    /// The outline of M's image as segments (two points each): on the outer sphere `circles`
-    /// parallels and `circles` half meridians, on the inner sphere (when its radius is above a
-    /// thousandth of the outer one) its three great circles in the coordinate planes; each circle
-    /// of `samples` chords. An error when `circles` or `samples` is 0 or above
-    /// [`MAX_KLEIN_OUTLINE_SAMPLES`] (or `samples` below 3).
-    pub fn outline(&self, circles: usize, samples: usize) -> Result<Vec<DVec3>> {
+    /// The outline of M's image as closed polylines (the first point repeated at the end): on
+    /// the outer sphere `circles` parallels and `circles` half meridians, on the inner sphere
+    /// (when its radius is above a thousandth of the outer one) its three great circles in the
+    /// coordinate planes; each of `samples` chords. An error when `circles` or `samples` is 0 or
+    /// above [`MAX_KLEIN_OUTLINE_SAMPLES`] (or `samples` below 3).
+    pub fn outline(&self, circles: usize, samples: usize) -> Result<Vec<Vec<DVec3>>> {
         if circles == 0 || circles > MAX_KLEIN_OUTLINE_SAMPLES {
             return Err(Error::parameter("circles", format!("from 1 to {MAX_KLEIN_OUTLINE_SAMPLES} circles")));
         }
@@ -96,10 +96,7 @@ impl Projection {
         let (inner, outer) = self.radii();
         let mut out = Vec::new();
         let mut circle = |f: &dyn Fn(f64) -> DVec3, turn: f64| {
-            for k in 0..samples {
-                out.push(f(turn * k as f64 / samples as f64));
-                out.push(f(turn * (k + 1) as f64 / samples as f64));
-            }
+            out.push((0..=samples).map(|k| f(turn * k as f64 / samples as f64)).collect());
         };
         for j in 0..circles {
             // parallels at heights strictly between the poles
@@ -180,8 +177,11 @@ mod tests {
                 assert!(r >= inner - 1e-12 && r <= outer + 1e-12, "{mix}: {inner} ≤ {r} ≤ {outer}");
             }
             let o = p.outline(4, 24).unwrap();
-            assert_eq!(o.len() % 2, 0);
-            assert!(o.iter().all(|q| (q.length() - outer).abs() < 1e-12 || (q.length() - inner).abs() < 1e-12));
+            assert!(o.len() >= 8 && o.iter().all(|c| c.len() == 25));
+            assert!(o
+                .iter()
+                .flatten()
+                .all(|q| (q.length() - outer).abs() < 1e-12 || (q.length() - inner).abs() < 1e-12));
         }
         let p = Projection::new(0.1, 0.0, 1.0).unwrap();
         assert!(p.outline(0, 24).is_err() && p.outline(4, 2).is_err());

@@ -53,7 +53,7 @@ export const scene = defineScene({
       });
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
-        { kind: 'segments', style: 'level', positions: k.outline },
+        { kind: 'polyline', style: 'level', positions: k.outline },
         { kind: 'segments', style: 'lineScheme', positions: k.positive },
         { kind: 'segments', style: 'endpointScheme', positions: k.negative },
         { kind: 'segments', style: 'torsal', positions: k.torsal },
@@ -75,7 +75,6 @@ export const scene = defineScene({
         { label: 'klein.readout.residual', value: k.maxResidual, exactZero: true },
         { label: 'klein.readout.torsal', value: `${k.torsalSteps} / ${k.omega.length}` },
         { label: 'klein.readout.least', value: k.leastOmega, exactZero: true },
-        { label: 'klein.readout.leastStep', value: k.leastStep },
         {
           label: 'klein.readout.plane',
           value: Number.isFinite(k.planeDistance) ? k.planeDistance : 'klein.readout.noPlane',

@@ -3,6 +3,7 @@
 //! P⁵ (the core's `klein` module; the book's chapter "The Klein quadric"), with the drawing's
 //! f32 buffers ready for WebGL.
 
+use glam::DVec3;
 use js_sys::{Float32Array, Float64Array};
 use ruledlab::tolerance::{KLEIN_OUTLINE_CIRCLES, KLEIN_OUTLINE_SAMPLES};
 use ruledlab::{complex_residuals, fit_linear_complex, KleinPolygon, Projection, RegulusPlane, RuledSurface};
@@ -60,7 +61,8 @@ struct KleinView {
     least_omega: f64,
     /// The largest Klein residual |Ω(L, L)|/2 of the rulings' points.
     max_residual: f64,
-    /// The outline of M's image: circles on the spheres bounding it, 6 floats a chord.
+    /// The outline of M's image: circles on the spheres bounding it, as one polyline (3 floats a
+    /// point) broken by NaN points between the circles.
     #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float32Array")]
     outline: Float32Array,
@@ -147,7 +149,7 @@ pub fn klein_view(
             least_step: least.map_or(-1, |(i, _)| i as i64),
             least_omega: least.map_or(f64::NAN, |(_, w)| w),
             max_residual: polygon.max_residual,
-            outline: points_f32(&outline),
+            outline: points_f32(&outline.join(&DVec3::NAN)),
             radii: Float64Array::from(&[inner, outer][..]),
             conic: points_f32(&conic),
             plane_distance,

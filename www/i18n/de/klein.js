@@ -25,7 +25,6 @@ export default {
   'klein.readout.residual': 'größtes Klein-Residuum |Ω(L, L)|/2',
   'klein.readout.torsal': 'torsale Schritte (Ω = 0)',
   'klein.readout.least': 'Ω am Schritt mit kleinstem |Ω|',
-  'klein.readout.leastStep': 'dieser Schritt i (R_i, R_{i+1})',
   'klein.readout.plane': 'größter Abstand einer Erzeugenden von der Ebene des Kegelschnitts',
   'klein.readout.noPlane': 'die drei Erzeugenden spannen keinen Kegelschnitt auf',
   'klein.readout.complex': 'größtes |Ω(C, L_i)| für den bestpassenden linearen Komplex C',

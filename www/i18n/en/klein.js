@@ -25,7 +25,6 @@ export default {
   'klein.readout.residual': 'largest Klein residual |Ω(L, L)|/2',
   'klein.readout.torsal': 'torsal steps (Ω = 0)',
   'klein.readout.least': 'Ω at the step of least |Ω|',
-  'klein.readout.leastStep': 'that step i (R_i, R_{i+1})',
   'klein.readout.plane': 'largest distance of a ruling from the conic’s plane',
   'klein.readout.noPlane': 'the three rulings span no conic',
   'klein.readout.complex': 'largest |Ω(C, L_i)| for the best linear complex C',
