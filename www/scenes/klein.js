@@ -15,7 +15,7 @@ const SOURCES = ['hyperboloid', 'helicoid', 'helical', 'cone', 'helix-tangent', 
 const SPACE_AT = -3.2;
 const SPACE_RADIUS = 1.3;
 
-/** @typedef {{surface: string, n: number, mix: number, turn: number, unit: number, conic: boolean, space: boolean}} KleinParams */
+/** @typedef {{surface: string, n: number, mix: number, turn: number, unit: number, conic: boolean, space: boolean, mark: number}} KleinParams */
 
 export const scene = defineScene({
   id: 'klein',
@@ -29,6 +29,7 @@ export const scene = defineScene({
     { key: 'unit', label: 'klein.param.unit', type: 'range', min: 0.25, max: 4, step: 0.05, value: 1, play: true },
     { key: 'conic', label: 'klein.param.conic', type: 'checkbox', value: true },
     { key: 'space', label: 'klein.param.space', type: 'checkbox', value: true },
+    { key: 'mark', label: 'klein.param.mark', type: 'range', min: 0, max: 79, step: 1, value: 0, play: true },
   ],
   legend: [
     { style: 'givenPoint', label: 'klein.legend.points' },
@@ -67,6 +68,11 @@ export const scene = defineScene({
       const s = SPACE_RADIUS / (extent || 1);
       const transform = new Float32Array([s, 0, 0, 0, 0, s, 0, 0, 0, 0, s, 0, SPACE_AT, 0, 0, 1]);
       if (p.space) layers.push({ kind: 'segments', style: 'ruling', positions: segments, transform });
+      // the marked ruling R_i, bold in space and red on M (i up to the last ruling)
+      const i = Math.min(Number(p.mark), Number(p.n) - 1);
+      if (p.space)
+        layers.push({ kind: 'segments', style: 'rulingBold', positions: segments.slice(6 * i, 6 * i + 6), transform });
+      layers.push({ kind: 'points', style: 'strictionPoint', positions: k.points.slice(3 * i, 3 * i + 3) });
       const [, outer] = k.radii;
       const r = Math.max(outer, SPACE_RADIUS);
       const box = { min: [p.space ? SPACE_AT - SPACE_RADIUS : -outer, -r, -r], max: [outer, r, r] };
@@ -75,6 +81,11 @@ export const scene = defineScene({
         { label: 'klein.readout.residual', value: k.maxResidual, exactZero: true },
         { label: 'klein.readout.torsal', value: `${k.torsalSteps} / ${k.omega.length}` },
         { label: 'klein.readout.least', value: k.leastOmega, exactZero: true },
+        {
+          label: 'klein.readout.marked',
+          value: i < k.omega.length ? k.omega[i] : 'klein.readout.noStep',
+          exactZero: true,
+        },
         {
           label: 'klein.readout.plane',
           value: Number.isFinite(k.planeDistance) ? k.planeDistance : 'klein.readout.noPlane',
@@ -104,6 +115,7 @@ export const scene = defineScene({
           }),
           conic ? t('klein.describe.conic', { plane: k.planeDistance }) : p.conic ? t('klein.describe.noConic') : '',
           p.space ? t('klein.describe.space', { at: SPACE_AT }) : '',
+          t('klein.describe.mark', { i }),
         ]
           .filter((x) => x)
           .join(' '),

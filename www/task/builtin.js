@@ -424,12 +424,12 @@ const RAW = [
     id: 'klein-torsal',
     title: { en: 'Find the torsal step by Ω', de: 'Den torsalen Schritt an Ω finden' },
     prompt: {
-      en: 'On the Klein quadric each ruling is a point, and Ω(L_i, L_{i+1}) = −h sin φ of consecutive rulings is 0 exactly where they meet. The quartic surface of Example 3 has a torsal ruling, where its distribution parameter δ ≤ 0 touches 0. Which step i (between R_i and R_{i+1}) of its 24 rulings comes nearest to torsal? Read it off the polygon on M — its colour tells the sign of Ω — and type i (counted from 0).',
-      de: 'Auf der Klein-Quadrik ist jede Erzeugende ein Punkt, und Ω(L_i, L_{i+1}) = −h sin φ aufeinanderfolgender Erzeugender ist genau dann 0, wenn sie sich schneiden. Die quartische Fläche von Beispiel 3 hat eine torsale Erzeugende, an der ihr Drall δ ≤ 0 die Null berührt. Welcher Schritt i (zwischen R_i und R_{i+1}) ihrer 24 Erzeugenden kommt einem torsalen am nächsten? Lesen Sie ihn am Polygon auf M ab – seine Farbe zeigt das Vorzeichen von Ω – und geben Sie i ein (von 0 an gezählt).',
+      en: 'On the Klein quadric each ruling is a point, and Ω(L_i, L_{i+1}) = −h sin φ of consecutive rulings is 0 exactly where they meet. The quartic surface of Example 3 has a torsal ruling, where its distribution parameter δ ≤ 0 touches 0. Which step i (between R_i and R_{i+1}) of its 24 rulings comes nearest to torsal? Read it off the polygon on M — its colour tells the sign of Ω — or scan the steps with the marked ruling, and type i (counted from 0).',
+      de: 'Auf der Klein-Quadrik ist jede Erzeugende ein Punkt, und Ω(L_i, L_{i+1}) = −h sin φ aufeinanderfolgender Erzeugender ist genau dann 0, wenn sie sich schneiden. Die quartische Fläche von Beispiel 3 hat eine torsale Erzeugende, an der ihr Drall δ ≤ 0 die Null berührt. Welcher Schritt i (zwischen R_i und R_{i+1}) ihrer 24 Erzeugenden kommt einem torsalen am nächsten? Lesen Sie ihn am Polygon auf M ab – seine Farbe zeigt das Vorzeichen von Ω – oder gehen Sie die Schritte mit der markierten Erzeugenden durch, und geben Sie i ein (von 0 an gezählt).',
     },
     scene: 'klein',
     params: { surface: 'quartic', n: 24, conic: false },
-    change: ['mix', 'turn', 'unit', 'space'],
+    change: ['mix', 'turn', 'unit', 'space', 'mark'],
     answers: [{ id: 'step', kind: 'number', label: { en: 'step i', de: 'Schritt i' } }],
     goal: [{ answer: 'step', near: { value: 'klein.leastStep' }, within: 0.5 }],
     hints: [

@@ -16,6 +16,7 @@ export default {
   'klein.param.unit': 'Längeneinheit ℓ',
   'klein.param.conic': 'Kegelschnitt der Ebene dreier Erzeugenden',
   'klein.param.space': 'Die Fläche im Raum, daneben',
+  'klein.param.mark': 'Markierte Erzeugende R_i (fett im Raum, rot auf M)',
   'klein.legend.points': 'Erzeugende R_i als Punkte von M',
   'klein.legend.positive': 'Schritt mit Ω(L_i, L_{i+1}) > 0',
   'klein.legend.negative': 'Schritt mit Ω < 0 (gestrichelt)',
@@ -25,11 +26,14 @@ export default {
   'klein.readout.residual': 'größtes Klein-Residuum |Ω(L, L)|/2',
   'klein.readout.torsal': 'torsale Schritte (Ω = 0)',
   'klein.readout.least': 'Ω am Schritt mit kleinstem |Ω|',
+  'klein.readout.marked': 'Ω(L_i, L_{i+1}) der markierten Erzeugenden',
+  'klein.readout.noStep': 'die letzte Erzeugende: keine nächste',
   'klein.readout.plane': 'größter Abstand einer Erzeugenden von der Ebene des Kegelschnitts',
   'klein.readout.noPlane': 'die drei Erzeugenden spannen keinen Kegelschnitt auf',
   'klein.readout.complex': 'größtes |Ω(C, L_i)| für den bestpassenden linearen Komplex C',
   'klein.describe':
     'Die {n} Erzeugenden der Fläche „{surface}“ als Punkte der Klein-Quadrik M, gezeichnet mit α = {mix}°, β = {turn}°, ℓ = {unit}: Das Bild von M ist die Schale zwischen den Sphären mit den Radien {inner} und {outer} um die Mitte, gezeichnet als graue Kreise. Die Punkte sind der Reihe nach verbunden; {torsal} der {steps} Schritte sind torsal (Ω = 0), das kleinste |Ω| liegt bei Schritt {least}: Ω = {omega}. Das größte Klein-Residuum ist {residual}.',
+  'klein.describe.mark': 'Die Erzeugende R_{i} ist markiert: fett im Raum, ein roter Punkt auf M.',
   'klein.describe.conic':
     'Der Kegelschnitt, in dem die Ebene der ersten, mittleren und letzten Erzeugenden M schneidet, ist hellblau gezeichnet; die Erzeugenden liegen höchstens {plane} von dieser Ebene entfernt.',
   'klein.describe.noConic':

@@ -16,6 +16,7 @@ export default {
   'klein.param.unit': 'Unit of length ℓ',
   'klein.param.conic': 'Conic of the plane of three rulings',
   'klein.param.space': 'The surface in space, beside',
+  'klein.param.mark': 'Marked ruling R_i (bold in space, red on M)',
   'klein.legend.points': 'rulings R_i as points of M',
   'klein.legend.positive': 'step with Ω(L_i, L_{i+1}) > 0',
   'klein.legend.negative': 'step with Ω < 0 (dashed)',
@@ -25,11 +26,14 @@ export default {
   'klein.readout.residual': 'largest Klein residual |Ω(L, L)|/2',
   'klein.readout.torsal': 'torsal steps (Ω = 0)',
   'klein.readout.least': 'Ω at the step of least |Ω|',
+  'klein.readout.marked': 'Ω(L_i, L_{i+1}) of the marked ruling',
+  'klein.readout.noStep': 'the last ruling: no next one',
   'klein.readout.plane': 'largest distance of a ruling from the conic’s plane',
   'klein.readout.noPlane': 'the three rulings span no conic',
   'klein.readout.complex': 'largest |Ω(C, L_i)| for the best linear complex C',
   'klein.describe':
     'The {n} rulings of the surface “{surface}” as points of the Klein quadric M, drawn with α = {mix}°, β = {turn}°, ℓ = {unit}: the image of M is the shell between the spheres of radii {inner} and {outer} about the centre, drawn as grey circles. The points are joined in order; {torsal} of the {steps} steps are torsal (Ω = 0), the least |Ω| is at step {least}: Ω = {omega}. The largest Klein residual is {residual}.',
+  'klein.describe.mark': 'Ruling R_{i} is marked: bold in space, a red point on M.',
   'klein.describe.conic':
     'The conic in which the plane of the first, middle and last ruling cuts M is drawn light blue; the rulings lie at most {plane} from that plane.',
   'klein.describe.noConic': 'The first, middle and last ruling span no plane cutting M in a conic.',
