@@ -70,6 +70,7 @@ try {
   for (const [hash, file] of [
     ['#scene=formula', 'screenshot-formula.png'],
     ['#scene=focal&congruence=example5&reach=1', 'screenshot-focal.png'],
+    ['#scene=klein', 'screenshot-klein.png'],
   ]) {
     await page.goto(url + hash);
     await page.waitForFunction(

@@ -37,6 +37,7 @@ mod developable;
 mod error;
 mod formula;
 mod io;
+mod klein;
 mod linalg;
 mod line;
 mod line_fit;
@@ -107,6 +108,13 @@ pub use congruence::variational::{coupled_congruence, two_stage, EdgeScheme, Sol
 pub use congruence::{
     butterfly_diagonal, subdivide_congruence, CongruenceScheme, Focal, FocalKind, LineCongruence, SmoothCongruence,
 };
+
+// the Klein quadric: lines as points of P⁵ (beyond the paper)
+pub use klein::departure::{line_space_departure, Departure};
+pub use klein::image::Projection;
+pub use klein::point::{klein_form, KleinPoint};
+pub use klein::polygon::KleinPolygon;
+pub use klein::sections::{complex_residuals, RegulusPlane};
 
 // linear complexes (beyond the paper)
 pub use linear_complex::{fit_linear_complex, ComplexKind, LinearComplex};

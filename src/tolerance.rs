@@ -260,10 +260,31 @@ pub fn near(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol * 1f64.max(a.abs()).max(b.abs())
 }
 
+/// The Klein view: the least and greatest unit of length ℓ that makes moments comparable with
+/// directions in the split of P⁵ into two spheres (`klein/image.rs`, K4).
+pub const MIN_KLEIN_UNIT: f64 = 1e-6;
+/// See [`MIN_KLEIN_UNIT`].
+pub const MAX_KLEIN_UNIT: f64 = 1e6;
+
+/// The Klein view: most circles of the quadric's outline, and most chords a circle or a conic
+/// is drawn with (`klein/image.rs`, `klein/sections.rs`).
+pub const MAX_KLEIN_OUTLINE_SAMPLES: usize = 1024;
+/// The Klein view's drawing: parallels (and half meridians) of the outline's outer sphere.
+pub const KLEIN_OUTLINE_CIRCLES: usize = 5;
+/// The Klein view's drawing: chords of each circle of the outline, and points of a conic.
+pub const KLEIN_OUTLINE_SAMPLES: usize = 64;
+
+/// Two consecutive normalised rulings meet (a torsal step) when |Ω(L₁, L₂)| ≤ this ·
+/// max(1, |m₁|, |m₂|) (`klein/polygon.rs`): rounding of the moments' few products.
+pub const KLEIN_TORSAL: f64 = 1e-12;
+
 /// Tolerances the test suites use, named by what they claim.
 pub mod test {
     /// Results that are exact up to rounding of a few dozen operations.
     pub const EXACT: f64 = 1e-12;
+    /// The Klein residual Ω(L, L)/2 of every line drawn on the Klein quadric, after every edit
+    /// and subdivision step (`tests/klein.rs`).
+    pub const KLEIN_RESIDUAL: f64 = 1e-12;
     /// Slack allowed around a measured convergence order (1 or 2).
     pub const ORDER: f64 = 0.1;
     /// The invariants kernel's φ against `f64::atan2`, in units in the last place, over the whole

@@ -23,7 +23,7 @@ const LAYERS: &[&[&str]] = &[
     &["base", "formula", "linalg", "linear_complex", "line_fit", "snap"],
     &["ruled", "mesh", "visibility"],
     &["subdivision", "developable"],
-    &["congruence"],
+    &["congruence", "klein"],
     &["catalogue", "io"],
 ];
 

@@ -124,6 +124,7 @@ export const STYLES = {
   focal1: area(PALETTE.blue, PALETTE.blue, 0.5, { gray: 0.86, back: 0.8, hatch: 'nw' }),
   focal2: area(PALETTE.grey, PALETTE.grey, 0.55, { gray: 0.92, back: 0.88, hatch: 'h' }),
   torsal: line(PALETTE.maroon, 2.6, { gray: 0.4, width: 1.3 }),
+  conic: line(PALETTE.sky, 5, { gray: 0.6, width: 2.4, dash: [1, 1.5] }, { alpha: 0.85 }),
   cell: line(PALETTE.blue, 3.6, { gray: 0, width: 1.8 }),
   complexAxis: line(PALETTE.grey, 2.4, { gray: 0.4, width: 0.9, dash: [8, 2, 1, 2] }, { dash: [12, 4, 2, 4] }),
   focalHyperbolic: line(PALETTE.ink, 1.2, { gray: 0.3, width: 0.4 }, { alpha: 0.8 }),

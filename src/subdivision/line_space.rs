@@ -54,7 +54,7 @@ impl DualLine {
 }
 
 /// Dual vectors of the rulings, signs made consistent along the sequence.
-fn oriented(lines: impl Iterator<Item = Line>) -> Vec<DualLine> {
+pub(crate) fn oriented(lines: impl Iterator<Item = Line>) -> Vec<DualLine> {
     let mut out: Vec<DualLine> = Vec::new();
     for l in lines {
         let mut d = DualLine::of(&l);

@@ -16,6 +16,7 @@ const {
   importSegments,
   meshNormalsF32,
   linearComplex,
+  kleinView,
   hiddenLines,
 } = ruledlab;
 const { ToolPath } = cam;
@@ -403,6 +404,16 @@ const CALLS = [
   (f) => f.surface.linearComplex(pick([undefined, value(), options(), { tolerance: pick(NUMBERS) }])),
   (f) =>
     linearComplex(pick([value(), f.surface.segments(), [0, 0, 0, 1, 0, 0]]), pick([undefined, value(), options()])),
+  (f) =>
+    kleinView(
+      pick([value(), f.surface.segments(), [0, 0, 0, 1, 0, 0]]),
+      pick([
+        undefined,
+        value(),
+        options(),
+        { mix: pick(NUMBERS), turn: pick(NUMBERS), unit: pick(NUMBERS), closed: pick([true, false, value()]) },
+      ]),
+    ),
   (f) => f.analyticCongruence.focal(pick([undefined, ...SMALL, value()]), pick([undefined, ...SMALL, value()])),
   (f) =>
     hiddenLines(

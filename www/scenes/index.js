@@ -12,6 +12,7 @@ import { scene as formula } from './formula.js';
 import { scene as formulaCongruence } from './formula-congruence.js';
 import { scene as focal } from './focal.js';
 import { scene as lines } from './lines.js';
+import { scene as klein } from './klein.js';
 import { scene as large } from './large.js';
 import { scene as data } from './data.js';
 
@@ -30,6 +31,7 @@ export const SCENES = [
   formulaCongruence,
   focal,
   lines,
+  klein,
   large,
   data,
 ];

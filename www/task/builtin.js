@@ -445,6 +445,30 @@ const RAW = [
     ],
     solution: { input: LINES_SOLUTION },
   },
+  {
+    id: 'klein-torsal',
+    title: { en: 'Find the torsal step by Ω', de: 'Den torsalen Schritt an Ω finden' },
+    prompt: {
+      en: 'On the Klein quadric each ruling is a point, and Ω(L_i, L_{i+1}) = −h sin φ of consecutive rulings is 0 exactly where they meet. The quartic surface of Example 3 has a torsal ruling, where its distribution parameter δ ≤ 0 touches 0. Which step i (between R_i and R_{i+1}) of its 24 rulings comes nearest to torsal? Read it off the polygon on M — its colour tells the sign of Ω — or scan the steps with the marked ruling, and type i (counted from 0).',
+      de: 'Auf der Klein-Quadrik ist jede Erzeugende ein Punkt, und Ω(L_i, L_{i+1}) = −h sin φ aufeinanderfolgender Erzeugender ist genau dann 0, wenn sie sich schneiden. Die quartische Fläche von Beispiel 3 hat eine torsale Erzeugende, an der ihr Drall δ ≤ 0 die Null berührt. Welcher Schritt i (zwischen R_i und R_{i+1}) ihrer 24 Erzeugenden kommt einem torsalen am nächsten? Lesen Sie ihn am Polygon auf M ab – seine Farbe zeigt das Vorzeichen von Ω – oder gehen Sie die Schritte mit der markierten Erzeugenden durch, und geben Sie i ein (von 0 an gezählt).',
+    },
+    scene: 'klein',
+    params: { surface: 'quartic', n: 24, conic: false },
+    change: ['mix', 'turn', 'unit', 'space', 'mark'],
+    answers: [{ id: 'step', kind: 'number', label: { en: 'step i', de: 'Schritt i' } }],
+    goal: [{ answer: 'step', near: { value: 'klein.leastStep' }, within: 0.5 }],
+    hints: [
+      {
+        en: 'Away from the torsal ruling δ < 0, so Ω = −h sin φ ≈ −δ φ² is positive: the polygon is blue. Near the torsal ruling |Ω| is tiny, and the discrete value may even change its sign.',
+        de: 'Abseits der torsalen Erzeugenden ist δ < 0, also ist Ω = −h sin φ ≈ −δ φ² positiv: Das Polygon ist blau. Nahe der torsalen Erzeugenden ist |Ω| winzig, und der diskrete Wert kann sogar sein Vorzeichen wechseln.',
+      },
+      {
+        en: 'The torsal ruling is at u = 0, the middle of the range [−1, 1]; 24 rulings have 23 steps, and the middle one is step 11, drawn orange and dashed: there Ω is −1.4·10⁻⁵.',
+        de: 'Die torsale Erzeugende liegt bei u = 0, in der Mitte des Bereichs [−1, 1]; 24 Erzeugende haben 23 Schritte, der mittlere ist Schritt 11, orange und gestrichelt gezeichnet: Dort ist Ω = −1,4·10⁻⁵.',
+      },
+    ],
+    solution: { answers: { step: 11 } },
+  },
 ];
 
 /** An exercise of the list, its solution typed as a catalogue entry's formulas where it says so. */

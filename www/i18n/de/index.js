@@ -13,6 +13,7 @@ import subdivision from './subdivision.js';
 import congruences from './congruences.js';
 import explanations from './explanations.js';
 import developable from './developable.js';
+import klein from './klein.js';
 
 export default {
   ...page,
@@ -27,4 +28,5 @@ export default {
   ...congruences,
   ...explanations,
   ...developable,
+  ...klein,
 };

@@ -163,6 +163,7 @@ export default {
 
   'measure.striction.minAbsDelta': 'das kleinste |δ| eines Paares von Erzeugenden',
   'measure.isometry.deltaMiddle': 'δ des mittleren Paares von Erzeugenden',
+  'measure.klein.leastStep': 'der Schritt i mit dem kleinsten |Ω(L_i, L_{i+1})|',
   'measure.isometry.deltaBentMiddle': 'δ des mittleren Paares nach dem Verbiegen',
   'measure.formula.strictionStraightness':
     'der größte Abstand der exakten Kehllinie von ihrer Ausgleichsgeraden, bezogen auf ihre Länge',

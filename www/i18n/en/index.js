@@ -14,6 +14,7 @@ import subdivision from './subdivision.js';
 import congruences from './congruences.js';
 import explanations from './explanations.js';
 import developable from './developable.js';
+import klein from './klein.js';
 
 export default {
   ...page,
@@ -28,4 +29,5 @@ export default {
   ...congruences,
   ...explanations,
   ...developable,
+  ...klein,
 };

@@ -155,6 +155,7 @@ export default {
 
   'measure.striction.minAbsDelta': 'the smallest |δ| of a pair of rulings',
   'measure.isometry.deltaMiddle': 'δ of the middle pair of rulings',
+  'measure.klein.leastStep': 'the step i of least |Ω(L_i, L_{i+1})|',
   'measure.isometry.deltaBentMiddle': 'δ of the middle pair after bending',
   'measure.formula.strictionStraightness':
     'the exact striction curve’s largest distance from its fitted line, as a share of its length',

@@ -1,0 +1,65 @@
+// Deutsche Texte der Szene zur Klein-Quadrik (über die Arbeit hinaus): Geraden als Punkte des P⁵.
+// Keys: klein.*
+import { sub, m, mr, display, row } from '../mathml.js';
+
+const L1 = sub('L', '1');
+const L2 = sub('L', '2');
+/** Ω(L₁, L₂) = 𝐝₁ · 𝐦₂ + 𝐝₂ · 𝐦₁ */
+const omega = `<mi>Ω</mi><mo>(</mo>${L1}<mo>,</mo>${L2}<mo>)</mo><mo>=</mo>${sub('𝐝', '1')}<mo>·</mo>${sub('𝐦', '2')}<mo>+</mo>${sub('𝐝', '2')}<mo>·</mo>${sub('𝐦', '1')}`;
+/** Ω(L_i, L_{i+1}) = −h_{i,i+1} sin φ_{i,i+1} */
+const relation = `<mi>Ω</mi><mo>(</mo>${sub('L', 'i')}<mo>,</mo>${sub('L', 'i + 1')}<mo>)</mo><mo>=</mo><mo>−</mo>${sub('h', 'i , i + 1')}${row('sin')}${sub('φ', 'i , i + 1')}`;
+
+export default {
+  'klein.title': 'Die Klein-Quadrik: Geraden als Punkte (über die Arbeit hinaus)',
+  'klein.param.mix': 'Mischung α der beiden Sphären (°)',
+  'klein.param.turn': 'Drehung β der zweiten Sphäre (°)',
+  'klein.param.unit': 'Längeneinheit ℓ',
+  'klein.param.conic': 'Kegelschnitt der Ebene dreier Erzeugenden',
+  'klein.param.space': 'Die Fläche im Raum, daneben',
+  'klein.param.mark': 'Markierte Erzeugende R_i (fett im Raum, rot auf M)',
+  'klein.legend.points': 'Erzeugende R_i als Punkte von M',
+  'klein.legend.positive': 'Schritt mit Ω(L_i, L_{i+1}) > 0',
+  'klein.legend.negative': 'Schritt mit Ω < 0 (gestrichelt)',
+  'klein.legend.torsal': 'torsaler Schritt: Ω = 0, die Erzeugenden schneiden sich',
+  'klein.legend.outline': 'das Bild von M: die begrenzenden Sphären',
+  'klein.legend.conic': 'Kegelschnitt: die Ebene dreier Erzeugender auf M',
+  'klein.readout.residual': 'größtes Klein-Residuum |Ω(L, L)|/2',
+  'klein.readout.torsal': 'torsale Schritte (Ω = 0)',
+  'klein.readout.least': 'Ω am Schritt mit kleinstem |Ω|',
+  'klein.readout.marked': 'Ω(L_i, L_{i+1}) der markierten Erzeugenden',
+  'klein.readout.noStep': 'die letzte Erzeugende: keine nächste',
+  'klein.readout.plane': 'größter Abstand einer Erzeugenden von der Ebene des Kegelschnitts',
+  'klein.readout.noPlane': 'die drei Erzeugenden spannen keinen Kegelschnitt auf',
+  'klein.readout.complex': 'größtes |Ω(C, L_i)| für den bestpassenden linearen Komplex C',
+  'klein.describe':
+    'Die {n} Erzeugenden der Fläche „{surface}“ als Punkte der Klein-Quadrik M, gezeichnet mit α = {mix}°, β = {turn}°, ℓ = {unit}: Das Bild von M ist die Schale zwischen den Sphären mit den Radien {inner} und {outer} um die Mitte, gezeichnet als graue Kreise. Die Punkte sind der Reihe nach verbunden; {torsal} der {steps} Schritte sind torsal (Ω = 0), das kleinste |Ω| liegt bei Schritt {least}: Ω = {omega}. Das größte Klein-Residuum ist {residual}.',
+  'klein.describe.mark': 'Die Erzeugende R_{i} ist markiert: fett im Raum, ein roter Punkt auf M.',
+  'klein.describe.conic':
+    'Der Kegelschnitt, in dem die Ebene der ersten, mittleren und letzten Erzeugenden M schneidet, ist hellblau gezeichnet; die Erzeugenden liegen höchstens {plane} von dieser Ebene entfernt.',
+  'klein.describe.noConic':
+    'Die erste, mittlere und letzte Erzeugende spannen keine Ebene auf, die M in einem Kegelschnitt schneidet.',
+  'klein.describe.space': 'Links, mit der Mitte bei x = {at}, die Erzeugenden im Raum um ihren Ursprung.',
+  'klein.text': `
+<p>Eine Gerade des Raums ist ein Punkt einer Quadrik in einem fünfdimensionalen projektiven Raum: Eine
+orientierte Gerade mit dem Einheitsvektor ${m('<mi>𝐝</mi>')} als Richtung durch einen Punkt ${m('<mi>𝐩</mi>')}
+hat die Plücker-Koordinaten ${mr('( 𝐝 , 𝐦 )')}, ${mr('𝐦 = 𝐩 × 𝐝')}, und jedes solche Paar erfüllt
+${mr('𝐝 · 𝐦 = 0')}: die Klein-Quadrik M. Die Klein-Form ${m(omega)} verschwindet genau dann, wenn sich
+die beiden Geraden schneiden oder parallel sind.</p>
+${display(relation, 'K7')}
+<p>Für aufeinanderfolgende Erzeugende ist sie der negative vorzeichenbehaftete Abstand mal dem Sinus des
+Winkels, mit den Vorzeichen von Abschnitt 2: null an einem torsalen Schritt, an dem sich die Erzeugenden
+schneiden (jeder Schritt eines Kegels oder einer Tangentenfläche), sonst mit dem Vorzeichen von −δ. Das
+Polygon der Punkte der Erzeugenden ist danach gefärbt.</p>
+<p>M ist vierdimensional; kein Bild zeigt die Quadrik ganz. Hier werden die Koordinaten mit einer
+Längeneinheit ℓ in zwei Vektoren ${mr('𝐱 = ( 𝐝 + 𝐦 / ℓ ) / s')} und ${mr('𝐲 = ( 𝐝 − 𝐦 / ℓ ) / s')}
+zerlegt, die genau auf M Einheitsvektoren sind: M ist ein Paar von Sphären, und zwei Geraden schneiden
+sich, wenn ihre Punkte auf der ersten Sphäre ebenso weit voneinander entfernt sind wie auf der zweiten.
+Die Ansicht zeichnet ${mr('cos α 𝐱 + sin α 𝐲')} (die zweite Sphäre um β um die Hochachse gedreht):
+α = 0 zeigt die erste Sphäre, 90° die zweite, 45° die Richtung der Geraden, umso näher an der Mitte, je
+weiter die Gerade am Ursprung vorbeigeht. Das Bild ist linear: Die Sehne zweier Punkte ist eine Gerade
+des projektiven Raums, die genau an torsalen Schritten auf M liegt.</p>
+<p>Die Erzeugenden des Hyperboloids bilden eine Regelschar: Die Ebene, die drei von ihnen aufspannen,
+schneidet M in einem Kegelschnitt, der durch alle hindurchgeht. Die Erzeugenden der Schraubflächen
+liegen in einem linearen Komplex, einem Hyperebenenschnitt von M: Die Anzeige gibt an, wie weit ihre
+Punkte von der Hyperebene des bestpassenden linearen Komplexes entfernt sind.</p>`,
+};
