@@ -442,3 +442,19 @@ test('an exercise that starts from an edit says its figure as edited, once: the 
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('an answer that cannot be read does not count: said so, and not listed among the checks as "0 of 1 met"', async () => {
+  const { page, problems } = await session.open('index.html#task=coupled-strip');
+  await ready(page);
+  await page.locator('.rl-task-field input').first().fill('five');
+  await page.locator('.rl-task-check').click();
+  assert.match(await page.locator('.rl-task-verdict').innerText(), /could not be read .* does not count/);
+  const history = await page.evaluate(() => document.querySelector('.rl-task-history')?.textContent ?? '');
+  assert.doesNotMatch(history, /0 of 1/);
+  // a readable answer counts
+  await page.locator('.rl-task-field input').first().fill('4');
+  await page.locator('.rl-task-check').click();
+  assert.match(await page.evaluate(() => document.querySelector('.rl-task-history')?.textContent ?? ''), /0 of 1/);
+  assert.deepEqual(problems, []);
+  await page.close();
+});
