@@ -145,6 +145,33 @@ test('the exports: SVG in millimetres with a check square, DXF R12 with CUT and 
   flat.free();
 });
 
+test('the scene hands out its pattern on A4 and Letter pages: a zip of one SVG a page, the pages’ sizes in mm', async () => {
+  const { SCENES } = await import('../../www/scenes/index.js');
+  const { defaults } = await import('../../www/scene.js');
+  const { unzipSync, strFromU8 } = await import('../../pkg/zip.js');
+  const scene = /** @type {any} */ (SCENES.find((x) => x.id === 'developable'));
+  const built = scene.create(
+    { ...defaults(scene), kind: 'cone', n: 24 },
+    { t: (/** @type {string} */ k) => k, lang: 'en' },
+  );
+  for (const [paper, size] of [
+    ['a4', 'width="210mm" height="297mm"'],
+    ['letter', 'width="215.9mm" height="279.4mm"'],
+  ]) {
+    const d = built.downloads.find((/** @type {any} */ x) => x.filename === `pattern-cone-${paper}.zip`);
+    assert.ok(d, `a ${paper} download`);
+    const blob = d.content();
+    assert.equal(blob.type, 'application/zip');
+    const files = unzipSync(new Uint8Array(await blob.arrayBuffer()));
+    const names = Object.keys(files);
+    assert.ok(
+      names.length >= 1 && names.every((n, k) => n === `page-${String(k + 1).padStart(2, '0')}.svg`),
+      names.join(),
+    );
+    for (const n of names) assert.ok(strFromU8(files[n]).includes(size), `${paper} ${n}`);
+  }
+});
+
 test('constructions refuse bad input with stable codes', () => {
   const c = helix(9, 1);
   const reason = (f) => {

@@ -10,6 +10,7 @@ import { AnalyticSurface, stripIndices } from '../../pkg/ruledlab.js';
 import { cam } from '../cam.js';
 import { defineScene, scoped, bounds } from '../scene.js';
 import { rulingSet } from '../edit/sets.js';
+import { makeZip } from '../course/zip.js';
 
 /** @typedef {{kind: string, n: number, turns: number, width: number, repair: boolean}} DevelopableParams */
 
@@ -79,13 +80,21 @@ function patternOf(own, segments) {
 
 /**
  * The flat pattern of the strip with these segments as a file for cutting (made when asked for:
- * the scene's objects are freed by then).
- * @param {Float64Array} segments @param {'svg' | 'dxf'} format
+ * the scene's objects are freed by then): one sheet as SVG or DXF, or the sheet tiled on A4 or
+ * Letter pages with registration marks, a zip of one SVG a page.
+ * @param {Float64Array} segments @param {'svg' | 'dxf' | 'a4' | 'letter'} format
+ * @returns {string | Blob}
  */
 function exported(segments, format) {
   return scoped((own) => {
     const { pattern } = patternOf(own, segments);
-    return format === 'svg' ? pattern.svg() : pattern.dxf();
+    if (format === 'svg') return pattern.svg();
+    if (format === 'dxf') return pattern.dxf();
+    const pages = pattern.pages({ paper: format });
+    const zip = makeZip(
+      Object.fromEntries(pages.map((page, k) => [`page-${String(k + 1).padStart(2, '0')}.svg`, page])),
+    );
+    return new Blob([zip], { type: 'application/zip' });
   });
 }
 
@@ -200,6 +209,12 @@ export const scene = defineScene({
             content: () => exported(segments, 'dxf'),
             type: 'application/dxf',
           },
+          .../** @type {const} */ (['a4', 'letter']).map((paper) => ({
+            label: `developable.download.${paper}`,
+            filename: `pattern-${name}-${paper}.zip`,
+            content: () => exported(segments, paper),
+            type: 'application/zip',
+          })),
         ],
         data: { segments },
         input: { sets: [rulingSet(segments)], from: t('developable.from', { kind: t(`developable.kind.${name}`) }) },

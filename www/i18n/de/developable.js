@@ -27,6 +27,8 @@ export default {
     'Der Streifen „{kind}“ mit {n} Erzeugenden neben der näherungsweisen Abwicklung aus Abschnitt 3, die bei jedem Paar von Erzeugenden eine Lücke lässt; auszuschneidende Teile: {pieces}.',
   'developable.download.svg': 'Schnittmuster (SVG, 1:1 in mm)',
   'developable.download.dxf': 'Schnittmuster (DXF R12, für Laserschneider)',
+  'developable.download.a4': 'Schnittmuster auf A4-Seiten (ZIP mit SVGs, mit Passermarken)',
+  'developable.download.letter': 'Schnittmuster auf Letter-Seiten (ZIP mit SVGs, mit Passermarken)',
   'developable.from': 'der Streifen „{kind}“',
   'developable.text': `
 <p>Eine Regelfläche ist <em>abwickelbar</em> (eine Torse), wenn sie sich ohne Dehnen in die Ebene
@@ -45,7 +47,8 @@ schneiden, liegen in einer Ebene).</p>
 <p>Das Schnittmuster steht neben dem Streifen. Wo es sich selbst überlappt (eine Tangentenfläche
 über mehr als eine Windung ihrer abgewickelten Kante), wird es in Teile zerlegt, die das nicht tun,
 und längs einer Erzeugenden geklebt. Laden Sie es als SVG im Maßstab 1:1 in Millimetern, mit einem
-Prüfquadrat von 100 mm, oder als DXF für einen Laserschneider, und bauen Sie das Modell.</p>
+Prüfquadrat von 100 mm, auf A4- oder Letter-Seiten mit Passermarken verteilt, oder als DXF für
+einen Laserschneider, und bauen Sie das Modell.</p>
 <p>Das <em>Hyperboloid</em> ist nicht abwickelbar: Seine benachbarten Erzeugenden sind windschief.
 Abschnitt 3 wickelt es näherungsweise ab, über sein konoidales Modell; das Muster behält die Länge
 jeder Erzeugenden, verliert aber den Abstand h benachbarter Erzeugender. Ein Papiermodell davon

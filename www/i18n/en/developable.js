@@ -27,6 +27,8 @@ export default {
     'The {kind} with {n} rulings beside Section 3’s approximate development, which leaves a gap at every pair of rulings; pieces to cut: {pieces}.',
   'developable.download.svg': 'Flat pattern (SVG, 1:1 in mm)',
   'developable.download.dxf': 'Flat pattern (DXF R12, for laser cutters)',
+  'developable.download.a4': 'Flat pattern on A4 pages (zip of SVGs, with registration marks)',
+  'developable.download.letter': 'Flat pattern on Letter pages (zip of SVGs, with registration marks)',
   'developable.from': 'the {kind}',
   'developable.text': `
 <p>A ruled surface is <em>developable</em> when it can be flattened without stretching: a sheet of
@@ -41,8 +43,8 @@ the strip follows, and the core turns its neighbours until every pair is coplana
 snapping an end of a ruling onto the next ruling (two lines that meet lie in one plane).</p>
 <p>The flat pattern is drawn beside the strip. Where it overlaps itself (a tangent surface over
 more than a turn of its unrolled edge) it is cut into pieces that do not, glued along a ruling.
-Download it as SVG at 1:1 in millimetres, with a 100 mm square to check the print, or as DXF for a
-laser cutter, and build the model.</p>
+Download it as SVG at 1:1 in millimetres, with a 100 mm square to check the print, tiled on A4 or
+Letter pages with registration marks, or as DXF for a laser cutter, and build the model.</p>
 <p>The <em>hyperboloid</em> is not developable: its consecutive rulings are skew. Section 3
 develops it approximately, through its conoidal model; the pattern keeps every ruling's length but
 drops the distance h between consecutive rulings. A paper model of it cannot close: the gaps add up
