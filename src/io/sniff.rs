@@ -90,7 +90,50 @@ pub fn looks_like_target(text: &str) -> bool {
 
 #[cfg(test)]
 mod detect_tests {
-    use super::detect_import;
+    use super::{detect_import, looks_like_poses, looks_like_target, pose_columns, PoseColumns};
+
+    fn header(text: &str) -> Vec<String> {
+        text.split(',').map(str::to_string).collect()
+    }
+
+    #[test]
+    fn a_header_names_a_poses_columns() {
+        // a tip and an axis, in any order and naming
+        assert_eq!(pose_columns(&header("i,j,k,x,y,z")), Some(PoseColumns::Vector([3, 4, 5, 0, 1, 2])));
+        assert_eq!(pose_columns(&header("tip_x,tip_y,tip_z,nx,ny,nz")), Some(PoseColumns::Vector([0, 1, 2, 3, 4, 5])));
+        // a tip and rotary angles (one-letter columns only), no axis
+        assert_eq!(pose_columns(&header("x,y,z,b,c")), Some(PoseColumns::Angles([0, 1, 2], vec![('b', 3), ('c', 4)])));
+        assert_eq!(pose_columns(&header("x,y,z,ab")), None);
+        // an axis begun but not whole is not angles either; a tip without both is nothing
+        assert_eq!(pose_columns(&header("x,y,z,i,a")), None);
+        assert_eq!(pose_columns(&header("x,y,z")), None);
+        assert_eq!(pose_columns(&header("x,y,i,j,k")), None);
+    }
+
+    #[test]
+    fn poses_are_told_by_their_json_keys_their_comment_or_their_header() {
+        assert!(looks_like_poses("{\"poses\": []}") && looks_like_poses("[{\"tip\": [0, 0, 0]}]"));
+        assert!(!looks_like_poses("{\"points\": []}"));
+        assert!(looks_like_poses("# ruledlab tool path\n0,0,0,0,0,1\n"));
+        // other comments are passed over; the first line that is not decides
+        assert!(looks_like_poses("# a job\n\nTIP_X;TIP_Y;TIP_Z;AXIS_I;AXIS_J;AXIS_K\n"));
+        assert!(looks_like_poses("x y z b c\n1 2 3 10 20\n"));
+        assert!(!looks_like_poses("# rulings\n0,0,0,1,0,0\n# tip\n"));
+        assert!(!looks_like_poses(""));
+    }
+
+    #[test]
+    fn a_target_is_json_points_or_records_of_three_numbers() {
+        assert!(looks_like_target("\u{feff}  {\"points\": [[0, 0, 0]]}"));
+        assert!(!looks_like_target("[[0, 0, 0, 1, 0, 0]]"));
+        // the first record of numbers decides: three of them (commas or semicolons with decimal commas)
+        assert!(looks_like_target("# target\n1,2,3\n"));
+        assert!(looks_like_target("1,5;2,5;3\n"));
+        assert!(!looks_like_target("x,y,z\n"));
+        assert!(!looks_like_target("1,2,3,4\n"));
+        assert!(!looks_like_target("1,2\n"));
+        assert!(!looks_like_target("# only a comment\n"));
+    }
 
     #[test]
     fn a_text_is_poses_a_target_or_segments() {

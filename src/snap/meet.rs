@@ -119,6 +119,22 @@ mod tests {
     }
 
     #[test]
+    fn a_line_and_a_plane_or_two_planes_are_parallel_by_the_sine_whatever_the_lengths() {
+        // a line at a sine of 2e-9 to a plane meets it, at 5e-10 not; two planes likewise — with
+        // vectors of lengths 10³ and 10⁻³ as with unit ones
+        for (ln, lu) in [(1.0f64, 1.0f64), (1e3, 1e-3), (1e-3, 1e3)] {
+            for (sine, meets) in [(2e-9f64, true), (5e-10, false)] {
+                let u = DVec3::new((1.0 - sine * sine).sqrt(), 0.0, sine) * lu;
+                let found = line_through_plane(DVec3::Z, u, DVec3::ZERO, ln * DVec3::Z);
+                assert_eq!(found.is_some(), meets, "line: sine {sine}, lengths {ln} and {lu}");
+                let n2 = DVec3::new(0.0, sine, (1.0 - sine * sine).sqrt()) * lu;
+                let met = planes_meet(DVec3::ZERO, ln * DVec3::Z, DVec3::X, n2, DVec3::ZERO);
+                assert_eq!(met.is_some(), meets, "planes: sine {sine}, lengths {ln} and {lu}");
+            }
+        }
+    }
+
+    #[test]
     fn the_parallel_threshold_is_the_sine_of_the_angle_whatever_the_lengths() {
         // a sine of 2e-9 (above PARALLEL_SIN = 1e-9) has closest points, 5e-10 not — with
         // directions of lengths 10³ and 10⁻³ as with unit ones

@@ -46,9 +46,11 @@ pub(super) fn sane(v: DVec3) -> bool {
     v.is_finite() && v.abs().max_element() <= MAX_COORD
 }
 
-/// Whether the direction `d` from `p` is too short to give a line (relative to where it is).
+/// Whether the direction `d` from `p` is too short to give a line (relative to where it is):
+/// |d| ≤ ZERO_LENGTH_REL·|p| (at the origin only the zero vector; measuring against |p + d| as
+/// well would change nothing, as |p + d| exceeds |p| by at most |d|).
 pub(super) fn vanishes(p: DVec3, d: DVec3) -> bool {
-    d.length() <= ZERO_LENGTH_REL * p.length().max((p + d).length())
+    d.length() <= ZERO_LENGTH_REL * p.length()
 }
 
 impl Target {
@@ -75,6 +77,19 @@ impl Target {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_direction_vanishes_relative_to_where_it_is() {
+        // ZERO_LENGTH_REL (1e-12) of the larger of |p| and |p + d|
+        let p = DVec3::new(3e6, 0.0, 4e6); // |p| = 5e6: directions up to 5e-6 vanish
+        assert!(vanishes(p, DVec3::new(0.0, 4e-6, 0.0)));
+        assert!(!vanishes(p, DVec3::new(0.0, 6e-6, 0.0)));
+        // at the origin no direction vanishes but zero
+        assert!(!vanishes(DVec3::ZERO, DVec3::new(0.0, 1e-100, 0.0)));
+        assert!(vanishes(DVec3::ZERO, DVec3::ZERO));
+        // a long direction from near the origin: its own length is the scale
+        assert!(!vanishes(DVec3::new(1e-3, 0.0, 0.0), DVec3::new(0.0, 0.0, 2.0)));
+    }
 
     #[test]
     fn degenerate_targets_are_points_or_nothing() {
