@@ -245,10 +245,18 @@ test('an option the core names in an error is the formula scenes’ field', asyn
   const fieldOf = (/** @type {string} */ id) => /** @type {any} */ (SCENES.find((s) => s.id === id)).fieldOf;
   const surface = fieldOf('formula');
   const congruence = fieldOf('formula-congruence');
-  assert.deepEqual(
-    ['a[0]', 'a[2]', 'e[1]', 'u[1]', 'v[0]', 'u', 'e', 'parameters', 'p[0]', 'rows'].map(surface),
-    ['ax', 'az', 'ey', 'umax', 'vmin', ['umin', 'umax'], ['ex', 'ey', 'ez'], 'a', null, null],
-  );
+  assert.deepEqual(['a[0]', 'a[2]', 'e[1]', 'u[1]', 'v[0]', 'u', 'e', 'parameters', 'p[0]', 'rows'].map(surface), [
+    'ax',
+    'az',
+    'ey',
+    'umax',
+    'vmin',
+    ['umin', 'umax'],
+    ['ex', 'ey', 'ez'],
+    'a',
+    null,
+    null,
+  ]);
   assert.deepEqual(
     ['p[0]', 'p[2]', 'e[2]', 'u[0]', 'v[1]', 'v', 'rows', 'cols', 'a[0]', 'parameters'].map(congruence),
     ['px', 'pz', 'ez', 'umin', 'vmax', ['vmin', 'vmax'], 'rows', 'cols', null, null],
