@@ -59,7 +59,7 @@ pub const CAM_MESSAGES: Catalogue = &[
     ("warn-slowed", "{count} blocks slowed by the axes' limits, the slowest at {feed} {units}/min at the tip instead of {wanted} ({axis}, pose {pose})"),
     ("warn-acceleration", "{count} blocks still need more acceleration than an axis has, from pose {pose}"),
     ("warn-pole-cone", "{count} poses within {cone}° of the pole, from pose {pose}: their tool axis turned by up to {angle}° to keep the rotary axes smooth"),
-    ("warn-tool-in-stock", "the {part} enters the stock at pose {pose} ({count} poses of the cut)"),
+    ("warn-tool-in-stock", "the {part} enters the stock at pose {pose} ({count} poses of the cut), by up to {depth} {units}"),
     ("part-holder", "holder"),
     ("part-shank", "shank"),
 ];

@@ -193,6 +193,20 @@ impl ToolShape {
             .collect()
     }
 
+    /// How far the part named `part` reaches into the box at this pose: its radius less its
+    /// axis's distance from the box (the ball's centre's too for a ball end's cutter), the largest
+    /// over its stretches — > 0 where it enters; `None` for a part the tool has not.
+    pub fn depth(&self, tip: DVec3, axis: DVec3, part: &str, stock: &Aabb) -> Option<f64> {
+        self.stretches(tip, axis, &[part])
+            .into_iter()
+            .map(|(a, b, r, name)| {
+                let axis_distance = stock.distance_from_axis(a, axis, (b - a).length());
+                let ball = if name == "cutter" && self.ball { stock.distance(a) } else { f64::INFINITY };
+                r - axis_distance.min(ball)
+            })
+            .reduce(f64::max)
+    }
+
     /// The first part of the tool (of `parts`) that enters the box at this pose, if one does:
     /// its cylinder (flat ends; a ball end's half ball too) comes nearer the box than its radius
     /// less 10⁻⁹ mm (a touch is clear), or its axis meets the box (however thin the part).
@@ -282,6 +296,29 @@ mod tests {
         let flat = DVec3::new(1.0, 0.0, 0.05).normalize();
         assert_eq!(tool.enters(DVec3::new(0.0, 0.0, 2.0), flat, &all, &stock), Some("holder"));
         assert_eq!(tool.enters(DVec3::new(0.0, 0.0, 2.0), flat, &["cutter", "shank"], &stock), None);
+    }
+
+    /// How deep a part reaches into the stock: its radius less its axis's distance from the box.
+    #[test]
+    fn a_part_reaches_into_the_stock_by_its_radius_less_its_distance() {
+        let stock = Aabb { min: DVec3::new(-50.0, -50.0, -10.0), max: DVec3::new(50.0, 50.0, 0.0) };
+        let tool = ToolShape {
+            ball: false,
+            cutter: Stretch { from: 0.0, to: 10.0, radius: 1.0 },
+            above: vec![("holder", Stretch { from: 20.0, to: 40.0, radius: 10.0 })],
+        };
+        // lying flat 4 above the top: the holder's axis is 4 from the box, so it reaches 6 in
+        let flat = DVec3::X;
+        let depth = tool.depth(DVec3::new(0.0, 0.0, 4.0), flat, "holder", &stock).unwrap();
+        assert!((depth - 6.0).abs() < 1e-12, "{depth}");
+        // upright: the cutter's axis stands on the top (distance 0); no point of the box lies
+        // beside the holder, 20 up: it reaches nowhere (−∞)
+        assert_eq!(tool.depth(DVec3::ZERO, DVec3::Z, "holder", &stock), Some(f64::NEG_INFINITY));
+        assert_eq!(tool.depth(DVec3::ZERO, DVec3::Z, "cutter", &stock), Some(1.0));
+        assert_eq!(tool.depth(DVec3::ZERO, DVec3::Z, "shank", &stock), None);
+        // a ball end: its centre, a radius up, touches the top at the radius: depth 0
+        let ball = ToolShape { ball: true, ..tool };
+        assert!(ball.depth(DVec3::ZERO, DVec3::Z, "cutter", &stock).unwrap().abs() < 1e-12);
     }
 
     /// A tool of radius 10⁻³²² (a fuzzer's) is checked as quickly as any: its cylinders, not

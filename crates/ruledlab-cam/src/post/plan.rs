@@ -255,7 +255,7 @@ fn plan_named(
         }
     }
     ops.extend([Op::ToleranceOff, Op::Rotate(home), Op::End]);
-    warnings.extend(tool_warnings(&job, &lin, namer));
+    warnings.extend(tool_warnings(&job, &lin, o.units, namer));
 
     // the sweep of the program as posted, and the target's deviation from it
     let sweep = swept_blocks(&lin, how, &job, (start.near, end.near));
@@ -486,8 +486,9 @@ fn cone_warnings(lin: &Linearised, cone: f64, namer: &Namer) -> Vec<Warning> {
     )]
 }
 
-/// The shank or holder entering the stock along the cut.
-fn tool_warnings(job: &Job, lin: &Linearised, namer: &Namer) -> Vec<Warning> {
+/// The shank or holder entering the stock along the cut: the first pose, how many, and how deep
+/// the part reaches in (its radius less its axis's distance from the stock), in `units`.
+fn tool_warnings(job: &Job, lin: &Linearised, units: Units, namer: &Namer) -> Vec<Warning> {
     let mut out = Vec::new();
     for part in ["shank", "holder"] {
         let hits: Vec<usize> = (0..lin.poses.len())
@@ -495,9 +496,21 @@ fn tool_warnings(job: &Job, lin: &Linearised, namer: &Namer) -> Vec<Warning> {
             .collect();
         if let Some(&first) = hits.first() {
             let pose = lin.origin[first].floor() as usize;
-            out.push(
-                namer.warning(pose, crate::msg!("warn-tool-in-stock", part = part, pose = pose, count = hits.len())),
-            );
+            let depth = hits
+                .iter()
+                .filter_map(|&i| job.shape.depth(lin.poses[i].tip, lin.poses[i].axis, part, &job.stock))
+                .fold(0.0f64, f64::max);
+            out.push(namer.warning(
+                pose,
+                crate::msg!(
+                    "warn-tool-in-stock",
+                    part = part,
+                    pose = pose,
+                    count = hits.len(),
+                    depth = (depth / units.mm() * 1e4).round() / 1e4,
+                    units = units.word()
+                ),
+            ));
         }
     }
     out

@@ -347,6 +347,13 @@ fn the_holder_in_the_stock_is_said_and_the_gauge_length_is_the_kinematics() {
         "{:?}",
         p.warnings
     );
+    // how deep: at the first pose the holder's axis passes 2.4 mm from the stock's top edge
+    // ((0, 30, 40) from (0, 30, 36), 4 mm, its part across the axis (0, 0.6, 0.8): 4 · 0.6), so
+    // its radius of 15 reaches 12.6 mm in — at least, the deepest pose of the cut decides
+    let holder = w.iter().find(|w| w.message.arg("part") == Some(&Arg::Text("holder".into()))).unwrap();
+    let Some(Arg::Number(depth)) = holder.message.arg("depth") else { panic!("{holder:?}") };
+    assert!(*depth >= 12.6 - 1e-9 && *depth <= 15.0, "{depth}");
+    assert_eq!(holder.message.arg("units"), Some(&Arg::Text("mm".into())));
     assert!(p.ops.iter().any(|op| matches!(op, Op::Comment(c) if c.contains("gauge length 60.0000 mm, holder radius 15.0000 length 10.0000 mm"))));
     let head = |gauge: f64| {
         let o = PostOptions {
