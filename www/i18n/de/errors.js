@@ -216,7 +216,8 @@ export default {
   'error.warn-acceleration': '{count} Sätze brauchen noch mehr Beschleunigung, als eine Achse hat, ab Lage {pose}',
   'error.warn-pole-cone':
     '{count} Lagen näher als {cone}° am Pol, ab Lage {pose}: ihre Werkzeugachse um bis zu {angle}° gedreht, damit die Drehachsen ruhig laufen',
-  'error.warn-tool-in-stock': 'Der {part} ragt bei Lage {pose} ins Rohteil ({count} Lagen des Schnitts), um bis zu {depth} {units}',
+  'error.warn-tool-in-stock':
+    'Der {part} ragt bei Lage {pose} ins Rohteil ({count} Lagen des Schnitts), um bis zu {depth} {units}',
   'error.csv-pose-numbers':
     '6 Zahlen für eine Lage erwartet (Spitze x, y, z und Werkzeugachse i, j, k), gefunden: {found}',
   'error.csv-pose-angles': 'In jeder der Spalten {columns} eine Zahl erwartet, gefunden: {found} Zahlen',

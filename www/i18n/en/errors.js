@@ -215,7 +215,8 @@ export default {
   'error.warn-acceleration': '{count} blocks still need more acceleration than an axis has, from pose {pose}',
   'error.warn-pole-cone':
     '{count} poses within {cone}° of the pole, from pose {pose}: their tool axis turned by up to {angle}° to keep the rotary axes smooth',
-  'error.warn-tool-in-stock': 'the {part} enters the stock at pose {pose} ({count} poses of the cut), by up to {depth} {units}',
+  'error.warn-tool-in-stock':
+    'the {part} enters the stock at pose {pose} ({count} poses of the cut), by up to {depth} {units}',
   'error.csv-pose-numbers': 'expected 6 numbers for a pose (tip x, y, z and tool axis i, j, k), found {found}',
   'error.csv-pose-angles': 'expected a number in each of the columns {columns}, found {found} numbers',
   'error.pose-angles-machine':
