@@ -119,6 +119,8 @@ mod detect_tests {
         assert!(looks_like_poses("# a job\n\nTIP_X;TIP_Y;TIP_Z;AXIS_I;AXIS_J;AXIS_K\n"));
         assert!(looks_like_poses("x y z b c\n1 2 3 10 20\n"));
         assert!(!looks_like_poses("# rulings\n0,0,0,1,0,0\n# tip\n"));
+        // a header naming a tip alone, or an axis alone, is enough
+        assert!(looks_like_poses("tip,note\n") && looks_like_poses("axis,note\n"));
         assert!(!looks_like_poses(""));
     }
 
@@ -128,6 +130,7 @@ mod detect_tests {
         assert!(!looks_like_target("[[0, 0, 0, 1, 0, 0]]"));
         // the first record of numbers decides: three of them (commas or semicolons with decimal commas)
         assert!(looks_like_target("# target\n1,2,3\n"));
+        assert!(looks_like_target("# target\n\n1,2,3\n"), "an empty line is passed over");
         assert!(looks_like_target("1,5;2,5;3\n"));
         assert!(!looks_like_target("x,y,z\n"));
         assert!(!looks_like_target("1,2,3,4\n"));
