@@ -165,7 +165,7 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @typedef {object} Download
  * @property {string} label          i18n key
  * @property {string} filename
- * @property {string | Blob | (() => string | Blob)} content   (made when asked for where a function)
+ * @property {string | Blob | (() => string | Blob | Promise<Blob>)} content   (made when asked for where a function)
  * @property {string} type
  */
 

@@ -160,7 +160,7 @@ test('the scene hands out its pattern on A4 and Letter pages: a zip of one SVG a
   ]) {
     const d = built.downloads.find((/** @type {any} */ x) => x.filename === `pattern-cone-${paper}.zip`);
     assert.ok(d, `a ${paper} download`);
-    const blob = d.content();
+    const blob = await d.content();
     assert.equal(blob.type, 'application/zip');
     const files = unzipSync(new Uint8Array(await blob.arrayBuffer()));
     const names = Object.keys(files);

@@ -10,7 +10,6 @@ import { AnalyticSurface, stripIndices } from '../../pkg/ruledlab.js';
 import { cam } from '../cam.js';
 import { defineScene, scoped, bounds } from '../scene.js';
 import { rulingSet } from '../edit/sets.js';
-import { makeZip } from '../course/zip.js';
 
 /** @typedef {{kind: string, n: number, turns: number, width: number, repair: boolean}} DevelopableParams */
 
@@ -80,22 +79,31 @@ function patternOf(own, segments) {
 
 /**
  * The flat pattern of the strip with these segments as a file for cutting (made when asked for:
- * the scene's objects are freed by then): one sheet as SVG or DXF, or the sheet tiled on A4 or
- * Letter pages with registration marks, a zip of one SVG a page.
- * @param {Float64Array} segments @param {'svg' | 'dxf' | 'a4' | 'letter'} format
- * @returns {string | Blob}
+ * the scene's objects are freed by then): one sheet as SVG or DXF.
+ * @param {Float64Array} segments @param {'svg' | 'dxf'} format
  */
 function exported(segments, format) {
   return scoped((own) => {
     const { pattern } = patternOf(own, segments);
-    if (format === 'svg') return pattern.svg();
-    if (format === 'dxf') return pattern.dxf();
-    const pages = pattern.pages({ paper: format });
-    const zip = makeZip(
-      Object.fromEntries(pages.map((page, k) => [`page-${String(k + 1).padStart(2, '0')}.svg`, page])),
-    );
-    return new Blob([zip], { type: 'application/zip' });
+    return format === 'svg' ? pattern.svg() : pattern.dxf();
   });
+}
+
+/**
+ * The sheet tiled on A4 or Letter pages with registration marks: a zip of one SVG a page (the
+ * zip's library loaded when first asked for, not with the scene).
+ * @param {Float64Array} segments @param {'a4' | 'letter'} paper
+ * @returns {Promise<Blob>}
+ */
+async function tiled(segments, paper) {
+  const pages = /** @type {string[]} */ (scoped((own) => patternOf(own, segments).pattern.pages({ paper })));
+  const { makeZip } = await import('../course/zip.js');
+  /** @type {Record<string, string>} */
+  const files = {};
+  pages.forEach((page, k) => {
+    files[`page-${String(k + 1).padStart(2, '0')}.svg`] = page;
+  });
+  return new Blob([makeZip(files)], { type: 'application/zip' });
 }
 
 export const scene = defineScene({
@@ -212,7 +220,7 @@ export const scene = defineScene({
           .../** @type {const} */ (['a4', 'letter']).map((paper) => ({
             label: `developable.download.${paper}`,
             filename: `pattern-${name}-${paper}.zip`,
-            content: () => exported(segments, paper),
+            content: () => tiled(segments, paper),
             type: 'application/zip',
           })),
         ],

@@ -134,9 +134,12 @@ export class Results {
     els.downloads.replaceChildren(
       ...(built.downloads ?? []).map((d) => {
         const b = Object.assign(doc.createElement('button'), { type: 'button', textContent: t(d.label) });
-        b.addEventListener('click', () =>
-          download(d.filename, typeof d.content === 'function' ? d.content() : d.content, d.type),
-        );
+        // (a file made when asked for may come later: a zip's library is loaded then)
+        b.addEventListener('click', () => {
+          Promise.resolve(typeof d.content === 'function' ? d.content() : d.content)
+            .then((content) => download(d.filename, content, d.type))
+            .catch((e) => this.fail(state, e));
+        });
         return b;
       }),
     );
