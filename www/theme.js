@@ -100,7 +100,7 @@ export const STYLES = {
   insertedFine: line(PALETTE.vermillion, 1.2, { gray: 0.2, width: 0.5 }, { alpha: 0.85 }),
   insertedPoint: point(PALETTE.vermillion, 5, { gray: 0, size: 2 }),
   insertedAxis: line(PALETTE.blue, 1.6, { gray: 0.4, width: 0.5 }),
-  optimisedAxis: line(PALETTE.orange, 1.8, { gray: 0.5, width: 0.5, dash: [1, 1.5] }, { dash: [2, 3] }),
+  optimisedAxis: line(PALETTE.maroon, 1.8, { gray: 0.5, width: 0.5, dash: [1, 1.5] }, { dash: [2, 3] }),
   result: line(PALETTE.vermillion, 3, { gray: 0, width: 1.4 }),
   resultPoint: point(PALETTE.vermillion, 6, { gray: 0, size: 2.5 }),
   pointA: point(PALETTE.sky, 13, { gray: 0.75, size: 4 }),
