@@ -468,3 +468,19 @@ test('rulingAligned: the tool along each ruling, its radius off the part along t
     );
   }
 });
+
+test('a progress callback that is not a function is refused with a code; one that is hears fractions up to 1', () => {
+  const path = cam.ToolPath.example(7).refine({ steps: 1 });
+  try {
+    assert.throws(
+      () => path.post({}, /** @type {any} */ (5)),
+      (e) => /** @type {any} */ (e).code === 'invalid-argument' && /onProgress must be a function/.test(String(e)),
+    );
+    /** @type {number[]} */
+    const heard = [];
+    path.post({}, (f) => heard.push(f));
+    assert.ok(heard.length > 0 && heard.every((f) => f >= 0 && f <= 1));
+  } finally {
+    path.free();
+  }
+});

@@ -13,7 +13,6 @@ use js_sys::Float64Array;
 use serde::{Deserialize, Serialize};
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
-use wasm_bindgen::JsCast;
 
 /// Options of `optimisePoses`.
 #[derive(Deserialize, Default, Tsify)]
@@ -90,20 +89,7 @@ pub fn optimise_poses(
     let defaults = ruledlab_cam::OptimiseOptions::default();
     let fairness = finite_option(F, "fairness", o.fairness)?.unwrap_or(defaults.fairness);
     let rounds = integer_option(F, "rounds", o.rounds, 0, MAX_OPTIMISE_ROUNDS)?.unwrap_or(defaults.rounds);
-    let report = if on_progress.is_undefined() || on_progress.is_null() {
-        None
-    } else {
-        Some(
-            on_progress
-                .dyn_into::<js_sys::Function>()
-                .map_err(|v| fail(F, format!("onProgress must be a function, got {}", args::describe(&v))))?,
-        )
-    };
-    let mut progress = |f: f64| {
-        if let Some(r) = &report {
-            let _ = r.call1(&JsValue::NULL, &JsValue::from_f64(f));
-        }
-    };
+    let mut progress = args::progress_reporter(F, on_progress)?;
     let r = ruledlab_cam::optimise_poses(
         path.core(),
         &t,

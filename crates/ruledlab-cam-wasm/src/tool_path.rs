@@ -19,7 +19,6 @@ use ruledlab::Segment;
 use serde::{Deserialize, Serialize};
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
-use wasm_bindgen::JsCast;
 
 /// A milling tool: a cylinder of `radius` and `length` (model units), flat or ball end.
 #[derive(Deserialize, Tsify)]
@@ -619,20 +618,7 @@ impl ToolPath {
         const F: &str = "ToolPath.post";
         let _measure = Measure::start(F);
         let o = read_post_options(F, options)?;
-        let report = if on_progress.is_undefined() || on_progress.is_null() {
-            None
-        } else {
-            Some(
-                on_progress
-                    .dyn_into::<js_sys::Function>()
-                    .map_err(|v| fail(F, format!("onProgress must be a function, got {}", args::describe(&v))))?,
-            )
-        };
-        let mut progress = |f: f64| {
-            if let Some(r) = &report {
-                let _ = r.call1(&JsValue::NULL, &JsValue::from_f64(f));
-            }
-        };
+        let mut progress = args::progress_reporter(F, on_progress)?;
         let p = ruledlab_cam::gcode_reporting(&self.inner, &o, &mut progress).map_err(|e| fail(F, e))?;
         let u = o.units.mm();
         let l = &p.linearisation;

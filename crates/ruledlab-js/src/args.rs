@@ -331,3 +331,22 @@ pub fn interval(func: &str, u_min: &JsValue, u_max: &JsValue) -> Result<(f64, f6
         Err(fail(func, format!("need uMin < uMax, got {a} and {b}")))
     }
 }
+
+/// A progress callback `on_progress` as a function called with the fraction done (0 to 1);
+/// undefined or null: none. What it throws is ignored (it cannot stop the computation).
+pub fn progress_reporter(func: &str, on_progress: JsValue) -> Result<impl FnMut(f64), JsValue> {
+    let report = if on_progress.is_undefined() || on_progress.is_null() {
+        None
+    } else {
+        Some(
+            on_progress
+                .dyn_into::<js_sys::Function>()
+                .map_err(|v| fail(func, format!("onProgress must be a function, got {}", describe(&v))))?,
+        )
+    };
+    Ok(move |f: f64| {
+        if let Some(r) = &report {
+            let _ = r.call1(&JsValue::NULL, &JsValue::from_f64(f));
+        }
+    })
+}
