@@ -69,7 +69,7 @@ lane() {
 }
 wasm_lane() {
   # the geometry's integration tests, the CAM crate's, and each module's bindings
-  WASM_TESTS=(-p ruledlab --test kernels --test section2 --test section3 --test section4 --test section5 --test line_space --test formula --test focal --test visibility --test snap -p ruledlab-cam --test milling -p ruledlab-wasm --test bindings)
+  WASM_TESTS=(-p ruledlab --test kernels --test section2 --test section3 --test section4 --test section5 --test line_space --test formula --test focal --test visibility --test snap --test developable -p ruledlab-cam --test milling -p ruledlab-wasm --test bindings)
   CHROMEDRIVER="$(command -v chromedriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
   GECKODRIVER="$(command -v geckodriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
 }

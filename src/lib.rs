@@ -82,9 +82,10 @@ pub use ruled::{envelope_radii, Development, HingeChain};
 // Section 3, beyond it: developable strips, their exact unfolding and flat patterns for cutting
 pub use developable::approximate::ApproximatePattern;
 pub use developable::construct::{cone, cylinder, rectifying_developable, tangent_surface, Span};
+pub use developable::coplanar::{max_abs_delta, max_off_plane, size_of};
 pub use developable::outline::{offset, outline, perimeter, signed_area, Outline, Side, Stroke};
 pub use developable::overlap::{overlapping_faces, pieces};
-pub use developable::repair::{make_developable, max_abs_delta, size_of, Repair};
+pub use developable::repair::{make_developable, Repair};
 pub use developable::sheet::{bends, closes, tile, Paper, Sheet, SheetLabel, SheetOptions, SheetPiece, Tile, Tiling};
 pub use developable::unfold::{crossed_faces, isometry_error, IsometryError, Unfolding};
 

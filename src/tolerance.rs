@@ -207,12 +207,13 @@ pub const HIDDEN_LINE_GRID_ENTRIES: usize = 16;
 /// Hidden lines: most triangles and most line points in one call (checked before binning).
 pub const MAX_HIDDEN_LINE_ITEMS: usize = 1 << 22;
 
-/// Developable strips: a pair of consecutive rulings counts as coplanar (torsal) when its
-/// distribution parameter |δ| (1) is at most this times max(1, the strip's size: the diagonal of
-/// its bounding box). The constructions and the repair of `developable/` reach ~1e-15 on strips
-/// whose consecutive rulings meet at angles φ ≳ 10⁻² (δ = h/φ magnifies the rounding of h by
-/// 1/φ²); the exact unfolding refuses a strip with a pair above it.
-pub const DEVELOPABLE_DELTA: f64 = 1e-12;
+/// Developable strips: a pair of consecutive rulings counts as coplanar (torsal) when the height η
+/// of the tetrahedron of its four ends (the farthest end's distance from the plane of the other
+/// three, `developable::coplanar`) is at most this times max(1, the strip's size: the diagonal of
+/// its bounding box). η, not |δ| = h/φ (1), because δ magnifies the rounding of the ends by 1/φ²
+/// where rulings meet at small angles; the constructions and the repair of `developable/` reach
+/// η ≈ 1e-16 of the size. The exact unfolding refuses a strip with a pair above it.
+pub const TORSAL_HEIGHT: f64 = 1e-12;
 
 /// Developable strips, the repair: most Gauss–Newton steps towards the nearest developable strip
 /// (they converge quadratically: a drag on the page takes 3 to 5; the sweep that follows them makes

@@ -253,10 +253,7 @@ mod tests {
             .collect()
     }
 
-    fn max_abs_delta(s: &RuledSurface) -> f64 {
-        let inv = s.invariants();
-        inv.distribution.iter().zip(&inv.parallel).filter(|(_, &p)| !p).fold(0.0, |m, (d, _)| m.max(d.abs()))
-    }
+    use crate::developable::coplanar::raw_max_abs_delta as max_abs_delta;
 
     #[test]
     fn every_construction_makes_consecutive_rulings_coplanar() {

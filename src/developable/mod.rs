@@ -9,6 +9,7 @@
 //!
 //! - [`construct`]: the tangent surface, the cone, the cylinder and the rectifying developable of
 //!   a directrix polygon, coplanar by construction;
+//! - [`coplanar`]: when two consecutive rulings count as coplanar (torsal), and their δ;
 //! - [`repair`]: a strip edited by hand made developable again, the edited rulings kept;
 //! - [`unfold`]: the exact unfolding, checked to be an isometry;
 //! - [`overlap`]: where a flat pattern overlaps itself, and its pieces that do not;
@@ -19,6 +20,7 @@
 
 pub mod approximate;
 pub mod construct;
+pub mod coplanar;
 pub mod outline;
 pub mod overlap;
 pub mod repair;

@@ -138,7 +138,7 @@ pub fn bends(surface: &RuledSurface) -> Vec<f64> {
 pub fn closes(surface: &RuledSurface) -> bool {
     let p = surface.points();
     let n = p.len();
-    let size = super::repair::size_of(p);
+    let size = super::coplanar::size_of(p);
     n >= 6 && (p[n - 2] - p[0]).length() <= 1e-9 * size && (p[n - 1] - p[1]).length() <= 1e-9 * size
 }
 

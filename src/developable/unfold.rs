@@ -14,11 +14,11 @@
 //! conoidal model ([`crate::ruled::Development`], tested): bending the hinge chain of a strip whose
 //! consecutive rulings meet flattens it, and the projection then changes nothing.
 
-use super::repair::{max_abs_delta, size_of};
+use super::coplanar::{max_off_plane, size_of};
 use crate::error::{Error, Result};
 use crate::msg;
 use crate::ruled::RuledSurface;
-use crate::tolerance::{DEVELOPABLE_DELTA, ZERO_LENGTH_REL};
+use crate::tolerance::{TORSAL_HEIGHT, ZERO_LENGTH_REL};
 use glam::{DVec2, DVec3};
 
 /// A strip unfolded onto the plane: the images A_i, B_i of its ends a_i, b_i.
@@ -41,16 +41,18 @@ pub struct IsometryError {
 
 impl Unfolding {
     /// The exact unfolding of a developable strip (see the module). Refuses a strip with a pair of
-    /// rulings that is not torsal (|δ| above [`DEVELOPABLE_DELTA`] of its size: unfold it with
+    /// rulings that is not torsal (an end off the plane of the other three by more than
+    /// [`TORSAL_HEIGHT`] of its size, `coplanar::height`: unfold it with
     /// Section 3's approximate development instead) and consecutive rulings on one line (a face
     /// without width). O(N).
     pub fn of(surface: &RuledSurface) -> Result<Unfolding> {
         let scale = size_of(surface.points());
-        let (delta, pair) = max_abs_delta(surface);
-        if let Some(i) = pair.filter(|_| delta > DEVELOPABLE_DELTA * scale) {
+        let (height, pair) = max_off_plane(surface);
+        if let Some(i) = pair.filter(|_| height > TORSAL_HEIGHT * scale) {
+            let delta = surface.invariants().distribution[i];
             return Err(Error::degenerate(
                 "strip",
-                msg!("not-developable", i = i, j = i + 1, delta = delta, max = DEVELOPABLE_DELTA * scale),
+                msg!("not-developable", i = i, j = i + 1, height = height, max = TORSAL_HEIGHT * scale, delta = delta),
             ));
         }
         let p = surface.points();

@@ -112,11 +112,24 @@ pub fn make_developable(
     Ok(Float64Array::from(ruledlab::make_developable(&s).surface.flat()))
 }
 
-/// The largest |δ| of the strip's pairs of consecutive rulings that are not parallel (0 for a
-/// developable strip, to rounding); the strip as its segments.
+/// The largest |δ| (1) of the strip's pairs of consecutive rulings that are not coplanar, 0 for a
+/// developable strip (see `maxOffPlane`: where rulings meet at small angles, δ computed from
+/// rounded ends is noise of the order of ε|d|/φ², so a coplanar pair reads 0); the strip as its
+/// segments.
 #[wasm_bindgen(js_name = maxAbsDelta)]
 pub fn max_abs_delta(
     #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] segments: JsValue,
 ) -> Result<f64, JsValue> {
     Ok(ruledlab::max_abs_delta(&strip("maxAbsDelta", &segments)?).0)
+}
+
+/// How far the strip is from developable, as a length: over its pairs of consecutive rulings, the
+/// largest distance of an end from the plane of the other three ends (the tetrahedron's height
+/// over its largest face; 0 exactly for coplanar rulings). A pair counts as coplanar when this is at
+/// most 1e-12 of the strip's size (the diagonal of its bounding box, at least 1).
+#[wasm_bindgen(js_name = maxOffPlane)]
+pub fn max_off_plane(
+    #[wasm_bindgen(unchecked_param_type = "Float64Array | Float32Array | number[]")] segments: JsValue,
+) -> Result<f64, JsValue> {
+    Ok(ruledlab::max_off_plane(&strip("maxOffPlane", &segments)?).0)
 }

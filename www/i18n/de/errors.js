@@ -154,7 +154,7 @@ export default {
   'error.edge-along-ruling':
     'Die Kante der Leitkurve im Punkt {point} verläuft entlang der Erzeugenden dort: Die nächste Erzeugende ist nicht bestimmt',
   'error.not-developable':
-    'Die Erzeugenden {i} und {j} liegen nicht in einer Ebene (δ = {delta}, mehr als {max}): Der Streifen ist nicht abwickelbar; die näherungsweise Abwicklung aus Abschnitt 3 bildet ihn mit Lücken ab',
+    'Die Erzeugenden {i} und {j} liegen nicht in einer Ebene (ein Ende liegt {height} neben der Ebene der anderen drei, mehr als {max}; δ = {delta}): Der Streifen ist nicht abwickelbar; die näherungsweise Abwicklung aus Abschnitt 3 bildet ihn mit Lücken ab',
   'error.rulings-collinear':
     'Die Erzeugenden {i} und {j} liegen auf einer Geraden: Die Fläche zwischen ihnen hat keine Breite',
   'error.out-of-interval': 'muss eine Zahl von {min} bis {max} sein, angegeben ist {value}',

@@ -156,7 +156,7 @@ export default {
   'error.edge-along-ruling':
     'the edge of the directrix at point {point} runs along the ruling there: the next ruling is not defined',
   'error.not-developable':
-    'rulings {i} and {j} are not coplanar (δ = {delta}, more than {max}): the strip is not developable; Section 3’s approximate development maps it with gaps',
+    'rulings {i} and {j} are not coplanar (an end lies {height} off the plane of the other three, more than {max}; δ = {delta}): the strip is not developable; Section 3’s approximate development maps it with gaps',
   'error.rulings-collinear': 'rulings {i} and {j} lie on one line: the face between them has no width',
   'error.out-of-interval': 'must be a number from {min} to {max}, got {value}',
   'error.pattern-points': 'needs {need} numbers (x, y of both ends of every ruling), got {got}',
