@@ -12,6 +12,7 @@ import { cam } from './cam.js';
  * @property {import('../pkg/ruledlab.js').SubdivideOptions} refine   steps included
  * @property {import('../pkg/cam/ruledlab_cam.js').GcodeOptions} post
  * @property {number} [draw]   most tool axes to send back (every k-th above it)
+ * @property {boolean} [sweep]  also the refined path's own sweep against the post's target
  *
  * @typedef {object} PostJobResult
  * @property {string} text          the program
@@ -20,6 +21,8 @@ import { cam } from './cam.js';
  * @property {number} every         k
  * @property {number} maxAngleStep  the refined path's largest orientation step (rad)
  * @property {Omit<import('../pkg/cam/ruledlab_cam.js').PostResult, 'text'>} post   what the post did
+ * @property {import('../pkg/cam/ruledlab_cam.js').EnvelopeResult} [sweep]   the path's own sweep
+ *   against the target (with `sweep` and a target)
  */
 
 /**
@@ -29,7 +32,7 @@ import { cam } from './cam.js';
  *   rejection stops the job)
  * @returns {Promise<PostJobResult>}
  */
-export async function postSteps({ poses, tool, refine, post, draw = Infinity }, progress, pause) {
+export async function postSteps({ poses, tool, refine, post, draw = Infinity, sweep = false }, progress, pause) {
   let path = cam().ToolPath.fromPoses(poses, tool);
   try {
     const steps = refine.steps ?? 1;
@@ -45,7 +48,8 @@ export async function postSteps({ poses, tool, refine, post, draw = Infinity }, 
     const { text, ...done } = path.post(post, (/** @type {number} */ f) => progress(0.3 + 0.7 * f));
     const every = Math.max(1, Math.ceil(path.length / draw));
     const segments = every > 1 ? path.everyF32(every) : path.segmentsF32();
-    return { text, poses: path.length, segments, every, maxAngleStep: path.quality().maxAngleStep, post: done };
+    const own = sweep && post.target ? { sweep: path.envelopeDeviation(post.target) } : {};
+    return { text, poses: path.length, segments, every, maxAngleStep: path.quality().maxAngleStep, post: done, ...own };
   } finally {
     path.free();
   }

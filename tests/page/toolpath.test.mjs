@@ -325,6 +325,57 @@ test('a target curve: the program as posted measured against it, the worst point
   }
 });
 
+test('many poses against many target points: the program is posted and measured in the worker, with progress', async () => {
+  const { page, problems } = await session.open('#scene=data');
+  try {
+    // 200 poses along x at z = 1, the tool axis +z: the ball of radius 1 runs its lowest point (the
+    // tip) along z = 1; refined one step, 399 poses against 1 200 target points (478 800 pairs: the worker's)
+    const poses = ['x,y,z,i,j,k', ...Array.from({ length: 200 }, (_, k) => `${k * 0.5},0,1,0,0,1`)].join('\n');
+    await paste(page, `${poses}\n`);
+    await page.waitForFunction(() => /scene=milling/.test(location.hash));
+    await ready(page);
+    await setControl(page, 'radius', 1);
+    await ready(page);
+    // whether the progress bar and the note were shown while the post was made
+    await page.evaluate(() => {
+      const w = /** @type {any} */ (window);
+      w.seen = { progress: false, note: false };
+      new MutationObserver(() => {
+        const bar = /** @type {HTMLElement | null} */ (document.querySelector('.rl-progress'));
+        if (bar && !bar.hidden) w.seen.progress = true;
+        if (/posted and measured against your target in the background/.test(document.body.innerText))
+          w.seen.note = true;
+      }).observe(document.body, { subtree: true, childList: true, attributes: true, characterData: true });
+    });
+    // the target: a line 0.004 below the ball's lowest point, one point of it 0.05 too high (exact:
+    // gouge 0.05, leave 0.004, one point beyond the tolerance)
+    const points = Array.from({ length: 1200 }, (_, k) => {
+      const x = (k * 99.5) / 1199;
+      return `${x.toFixed(6)},0,${k === 600 ? '1.05' : '0.996'}`;
+    });
+    await paste(page, `x,y,z\n${points.join('\n')}\n`);
+    await ready(page, 120000);
+    const seen = await page.evaluate(() => /** @type {any} */ (window).seen);
+    assert.deepEqual(seen, { progress: true, note: true });
+    const readout = await page.locator('.rl-readout').innerText();
+    assert.match(readout, /^poses\s+399\b/m);
+    assert.match(
+      readout,
+      /max \|deviation\| from the target of the program as posted \(mm\)\s+(5[.,]0+·10⁻²|0[.,]050?)\s/,
+    );
+    assert.match(readout, /deepest gouge of the program as posted \(mm\)\s+(5[.,]0+·10⁻²|0[.,]050?)\s/);
+    assert.match(readout, /most material left by the program as posted \(mm\)\s+(4[.,]0+·10⁻³|0[.,]0040?)\s/);
+    assert.match(readout, /target points beyond the chordal tolerance\s+1\b/);
+    assert.match((await page.locator('.rl-label').allInnerTexts()).join(' '), /worst: [−-](5[.,]0+·10⁻²|0[.,]050?) mm/);
+    // the program is there to download, the plot has the path's own sweep and the blocks
+    assert.ok(await page.locator('.rl-downloads button', { hasText: /G-code/ }).count());
+    assert.equal(await page.locator('.rl-figure svg line[stroke-dasharray="8 4"]:has(title)').count(), 2);
+    assert.deepEqual(problems, []);
+  } finally {
+    await page.close();
+  }
+});
+
 /** `count` tool poses along a gentle wave, 0.1 mm apart (CSV). */
 function wave(/** @type {number} */ count) {
   const rows = ['x,y,z,i,j,k'];
@@ -371,6 +422,13 @@ test('a long job is refined and posted in the worker: progress, the page answeri
     const g = await downloaded(page, /G-code/);
     assert.match(g.text, /^\(ruledlab tool path: \d+ poses, 8001 of the path/);
     assert.ok(g.text.trimEnd().endsWith('M30'));
+    // the optimisation is not made for a job this long, and the page says so
+    await setControl(page, 'optimise', true);
+    await ready(page, 120000);
+    assert.match(
+      await page.locator('.rl-readout-note').innerText(),
+      /optimised for jobs of up to 5[\s,.]?000 refined poses: this one is posted as refined/,
+    );
     assert.deepEqual(problems, []);
   } finally {
     await page.close();
@@ -401,6 +459,13 @@ test('"Optimise the poses": in the worker, the program as posted measured before
     assert.ok(after < 0.5 * before, `optimised ${after} mm against ${before} mm`);
     assert.ok(value(new RegExp(`less by \\(%\\)\\s+${number}`)) > 50);
     assert.ok(value(/rounds of the optimisation\s+(\d+)/) > 0);
+    // the optimised program's deepest gouge and most material left, the larger of them its largest
+    const gouge = value(new RegExp(`deepest gouge of the program as posted, optimised poses \\(mm\\)\\s+${number}`));
+    const leave = value(
+      new RegExp(`most material left by the program as posted, optimised poses \\(mm\\)\\s+${number}`),
+    );
+    assert.ok(gouge >= 0 && leave >= 0);
+    assert.ok(Math.abs(Math.max(gouge, leave) - after) <= 0.005 * after, `${gouge} ${leave} ${after}`);
     // the optimised axes are drawn and named in the legend
     assert.match(await page.locator('.rl-legend').innerText(), /optimised tool axes/);
     assert.deepEqual(problems, []);

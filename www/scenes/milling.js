@@ -11,7 +11,7 @@ import { POST_PARAMS, givenPath, postOf, postOptions, programFile, deviationDiag
 import { JOB_PARAMS, drawnTool, stockOf } from '../layers/job.js';
 import { optimiseInWorker, postInWorker } from '../compute.js';
 import { poseSet, poseValues } from '../edit/sets.js';
-import { DRAW_LIMIT, POST_WORKER_THRESHOLD } from '../limits.js';
+import { DRAW_LIMIT, POST_WORKER_THRESHOLD, SWEEP_WORKER_WORK } from '../limits.js';
 
 /** @type {Record<string, Partial<import('../../pkg/ruledlab.js').SubdivideOptions>>} */
 const SCHEMES = {
@@ -191,7 +191,10 @@ export const scene = defineScene({
       const profile = imported ? null : cam().ToolPath.exampleProfile(400);
       // the target the machined surface is measured against: the example's profile, or yours
       const target = profile ?? data?.target ?? null;
-      const surface = target ? refined.envelopeDeviation(target) : null;
+      // many poses against many target points: the post and its program's deviation are made in
+      // the worker, with progress (the picture comes first)
+      const inWorker = !!target && refined.length * (target.length / 3) > SWEEP_WORKER_WORK;
+      const surface = target && !inWorker ? refined.envelopeDeviation(target) : null;
       const deviation = profile ? maxDeviation(refined, profile) : Number.NaN;
       const quality = refined.quality();
       // every scheme's deviation and orientation at these steps, for the comparisons the text
@@ -232,68 +235,37 @@ export const scene = defineScene({
         const { positions, indices } = cam().ToolPath.examplePart(60, 30);
         layers.push({ kind: 'mesh', style: 'part', positions, indices });
       }
-      // the G-code post for the machine, controller, mode and job chosen
-      // (measured against the target: the deviation of the program as posted)
-      const { result: post, error: postError } = postOf(refined, p, numbering, target);
-      /** @type {import('../scene.js').Label[]} */
-      const labels = [];
-      // the stock box (named at its greatest corner: a label, the legend's colours being taken)
-      if (post) {
-        layers.push({ kind: 'segments', style: 'helper', positions: boxEdges(post.stock, scale) });
-        labels.push({ at: post.stock[1].map((x) => x / scale), text: t('milling.label.stock') });
-      }
-      // the worst point: of the program as posted, else of the path's own sweep
-      const worst = post?.deviation
-        ? { at: post.deviation.at.map((x) => x / scale), value: post.deviation.largest }
-        : surface
-          ? { at: Array.from(surface.worstPoint), value: surface.worstDeviation * scale }
-          : null;
-      if (worst) {
-        layers.push({ kind: 'points', style: 'resultPoint', positions: f32(worst.at) });
-        labels.push({
-          at: worst.at,
-          text: t('milling.worst', { value: ctx.format(worst.value), units: post?.units ?? String(p.units) }),
-        });
-      }
-      const tolerance = Number(p.tolerance);
-      const units = post?.units ?? (p.units === 'inch' ? 'inch' : 'mm');
-      const exports = { json: refined.export('json'), csv: refined.export('csv') };
+      // the G-code post for the machine, controller, mode and job chosen (measured against the
+      // target: the deviation of the program as posted), here or in the worker
+      const { result: post, error: postError } = inWorker
+        ? { result: null, error: null }
+        : postOf(refined, p, numbering, target);
+      // what the worker needs of the path, read now: the scope frees it when create() returns
+      const poses = inWorker || (p.optimise && target) ? interleave(refined.tips(), refined.axes()) : null;
+      const options = postOptions(p, numbering);
       const stockProblem = stockOf(String(p.stock)) === undefined ? [t('milling.note.stock')] : [];
-      /** @type {import('../scene.js').Built} */
-      const built = {
+      /** @type {FixedPart} */
+      const fixedPart = {
         bounds: target ? bounds(given, all, target) : bounds(given, all),
         camera: { yaw: -1.9, pitch: 0.55 },
+        scale,
+        tolerance: Number(p.tolerance),
+        units: p.units === 'inch' ? 'inch' : 'mm',
+        stride: 2 ** steps,
         layers,
-        labels,
-        readouts: [
+        head: [
           { label: 'milling.readout.poses', value: refined.length },
           ...(profile ? [{ label: 'milling.readout.deviation', value: deviation }] : []),
-          ...(surface && !post?.deviation
-            ? [
-                { label: `milling.readout.envelope.${units}`, value: Math.abs(surface.worstDeviation) * scale },
-                {
-                  label: 'milling.readout.beyond',
-                  value: Array.from(surface.points).filter((d) => Math.abs(d) * scale > tolerance).length,
-                },
-              ]
-            : []),
+        ],
+        middle: [
           { label: 'milling.readout.angleStep', value: (quality.maxAngleStep * 180) / Math.PI },
           { label: 'milling.readout.secondDifference', value: quality.maxSecondDifference },
           ...(profile ? [{ label: 'milling.readout.compare.given', value: given0 }] : []),
           ...(steps > 0 && profile
             ? Object.entries(compare).map(([k, v]) => ({ label: `milling.readout.compare.${k}`, value: v }))
             : []),
-          ...(post
-            ? postReadouts(post, ctx.format)
-            : [
-                {
-                  label: 'milling.readout.post',
-                  value: postError instanceof Error ? postError.message : String(postError),
-                },
-              ]),
         ],
-        problems: [...stockProblem, ...(post ? warningTexts(post.warnings, ctx) : [])],
-        invalid: stockProblem.length ? { stock: stockProblem[0] } : undefined,
+        stockProblem,
         // the claims are about the example's own poses, not an edit of them
         claims: edited
           ? []
@@ -339,7 +311,6 @@ export const scene = defineScene({
               total: refined.length,
               deviation,
             }),
-        diagram: deviationDiagram({ target: surface, scale, stride: 2 ** steps, post, t, lang: ctx.lang }),
         // the handles: every given pose's tip (it carries the tool) and a point on its axis (it
         // turns the tool about the tip)
         input: {
@@ -353,63 +324,189 @@ export const scene = defineScene({
           {
             label: 'milling.download.json',
             filename: 'toolpath.json',
-            content: exports.json,
+            content: refined.export('json'),
             type: 'application/json',
           },
-          { label: 'milling.download.csv', filename: 'toolpath.csv', content: exports.csv, type: 'text/csv' },
-          ...(post
-            ? [
-                {
-                  label: 'milling.download.gcode',
-                  filename: programFile(String(p.dialect)),
-                  content: post.text,
-                  type: 'text/plain',
-                },
-              ]
-            : []),
+          { label: 'milling.download.csv', filename: 'toolpath.csv', content: refined.export('csv'), type: 'text/csv' },
         ],
         data: { segments: refined.segments() },
+        programFile: programFile(String(p.dialect)),
       };
-      // "Optimise the poses": in the worker, measured by the program as posted
-      if (p.optimise && target && post?.deviation)
-        built.later = optimiseLater(built, refined, target, postOptions(p, numbering), post);
-      return built;
+      const optimise =
+        p.optimise && target && poses
+          ? { poses, tool: refined.tool, target: Float64Array.from(target), post: options }
+          : null;
+      if (!inWorker) {
+        const built = withPost(fixedPart, post, postError, surface, ctx);
+        // "Optimise the poses": in the worker, measured by the program as posted
+        if (optimise && post?.deviation) built.later = optimiseLater(built, optimise, post);
+        return built;
+      }
+      const first = withPost(fixedPart, null, null, null, ctx);
+      first.note = t('milling.note.posting');
+      const job = {
+        poses: /** @type {Float64Array} */ (poses),
+        tool: refined.tool,
+        // the poses are refined already
+        refine: /** @type {const} */ ({ scheme: 'bspline', degree: 1, steps: 0 }),
+        post: { ...options, target: Float64Array.from(/** @type {ArrayLike<number>} */ (target)) },
+        draw: 1,
+        sweep: true,
+      };
+      // the post's share of the progress, the optimisation's the rest
+      const share = optimise ? 0.25 : 1;
+      first.later = (onProgress) =>
+        postInWorker(job, (f) => onProgress(share * f))
+          .then(
+            (done) => {
+              const posted = /** @type {import('../../pkg/cam/ruledlab_cam.js').PostResult} */ ({
+                ...done.post,
+                text: done.text,
+              });
+              return { posted, built: withPost(fixedPart, posted, null, done.sweep ?? null, ctx) };
+            },
+            (e) => {
+              if (e?.superseded) throw e;
+              return { posted: null, built: withPost(fixedPart, null, e, null, ctx) };
+            },
+          )
+          .then(({ posted, built }) =>
+            optimise && posted?.deviation
+              ? optimiseLater(built, optimise, posted)((f) => onProgress(share + (1 - share) * f))
+              : built,
+          );
+      return first;
     });
   },
 });
 
 /**
+ * @typedef {object} FixedPart   what the milling scene shows before and after its post
+ * @property {import('../scene.js').Built['bounds']} bounds
+ * @property {{ yaw: number, pitch: number }} camera
+ * @property {number} scale       program units per unit of the poses
+ * @property {number} tolerance   the job's, program units
+ * @property {'mm' | 'inch'} units   the job's
+ * @property {number} stride      refined poses per given pose
+ * @property {import('../scene.js').Layer[]} layers
+ * @property {import('../scene.js').Readout[]} head     readouts before the envelope's
+ * @property {import('../scene.js').Readout[]} middle   readouts between the envelope's and the post's
+ * @property {string[]} stockProblem
+ * @property {import('../scene.js').Built['claims']} claims
+ * @property {string} description
+ * @property {import('../scene.js').Built['input']} input
+ * @property {NonNullable<import('../scene.js').Built['downloads']>} downloads
+ * @property {import('../scene.js').Built['data']} data
+ * @property {string} programFile
+ */
+
+/**
+ * The milling scene's picture with what its post gave: the stock box, the worst point (of the
+ * program as posted, else of the path's own sweep), the post's readouts, warnings, figure and
+ * program (or, with neither post nor error, the picture while the post is being made).
+ * @param {FixedPart} f
+ * @param {import('../../pkg/cam/ruledlab_cam.js').PostResult | null} post
+ * @param {unknown} postError
+ * @param {import('../../pkg/cam/ruledlab_cam.js').EnvelopeResult | null} surface   the path's own sweep against the target
+ * @param {import('../scene.js').Context} ctx
+ * @returns {import('../scene.js').Built}
+ */
+function withPost(f, post, postError, surface, ctx) {
+  const { t } = ctx;
+  const layers = [...f.layers];
+  /** @type {import('../scene.js').Label[]} */
+  const labels = [];
+  // the stock box (named at its greatest corner: a label, the legend's colours being taken)
+  if (post) {
+    layers.push({ kind: 'segments', style: 'helper', positions: boxEdges(post.stock, f.scale) });
+    labels.push({ at: post.stock[1].map((x) => x / f.scale), text: t('milling.label.stock') });
+  }
+  const worst = post?.deviation
+    ? { at: post.deviation.at.map((x) => x / f.scale), value: post.deviation.largest }
+    : surface
+      ? { at: Array.from(surface.worstPoint), value: surface.worstDeviation * f.scale }
+      : null;
+  if (worst) {
+    layers.push({ kind: 'points', style: 'resultPoint', positions: f32(worst.at) });
+    labels.push({
+      at: worst.at,
+      text: t('milling.worst', { value: ctx.format(worst.value), units: post?.units ?? f.units }),
+    });
+  }
+  const units = post?.units ?? f.units;
+  const pending = !post && postError === null;
+  return {
+    bounds: f.bounds,
+    camera: f.camera,
+    layers,
+    labels,
+    readouts: [
+      ...f.head,
+      ...(surface && !post?.deviation
+        ? [
+            { label: `milling.readout.envelope.${units}`, value: Math.abs(surface.worstDeviation) * f.scale },
+            {
+              label: 'milling.readout.beyond',
+              value: Array.from(surface.points).filter((d) => Math.abs(d) * f.scale > f.tolerance).length,
+            },
+          ]
+        : []),
+      ...f.middle,
+      ...(post
+        ? postReadouts(post, ctx.format)
+        : pending
+          ? []
+          : [
+              {
+                label: 'milling.readout.post',
+                value: postError instanceof Error ? postError.message : String(postError),
+              },
+            ]),
+    ],
+    problems: [...f.stockProblem, ...(post ? warningTexts(post.warnings, ctx) : [])],
+    invalid: f.stockProblem.length ? { stock: f.stockProblem[0] } : undefined,
+    claims: f.claims,
+    description: f.description,
+    diagram: deviationDiagram({ target: surface, scale: f.scale, stride: f.stride, post, t, lang: ctx.lang }),
+    input: f.input,
+    downloads: [
+      ...f.downloads,
+      ...(post
+        ? [{ label: 'milling.download.gcode', filename: f.programFile, content: post.text, type: 'text/plain' }]
+        : []),
+    ],
+    data: f.data,
+  };
+}
+
+/**
  * The refined poses optimised against the target in the worker (optimise-job.js), with progress:
- * the optimised tool axes drawn over the path, and the largest deviation from the target of the
- * program as posted, of the refined poses and of the optimised ones, in the readout.
+ * the optimised tool axes drawn over the path, and the deviation from the target of the program as
+ * posted — its largest, its deepest gouge and most material left — of the refined poses and of the
+ * optimised ones, in the readout.
  * @param {import('../scene.js').Built} built   what is shown meanwhile
- * @param {import('../../pkg/cam/ruledlab_cam.js').ToolPath} refined
- * @param {Float64Array | number[]} target   3 numbers per point
- * @param {import('../../pkg/cam/ruledlab_cam.js').GcodeOptions} options   the post's
+ * @param {import('../optimise-job.js').OptimiseJob} job   the refined poses, their tool, the target, the post's options
  * @param {import('../../pkg/cam/ruledlab_cam.js').PostResult} post   the refined poses' program
  * @returns {(onProgress: (fraction: number) => void) => Promise<import('../scene.js').Built>}
  */
-function optimiseLater(built, refined, target, options, post) {
-  // what the job needs, read now: the scope frees the path when create() returns
-  const job = {
-    poses: interleave(refined.tips(), refined.axes()),
-    tool: refined.tool,
-    target: Float64Array.from(target),
-    post: options,
-  };
-  const before = Math.abs(post.deviation?.largest ?? Number.NaN);
+function optimiseLater(built, job, post) {
+  const before = post.deviation;
   const u = post.units;
   return (onProgress) =>
     optimiseInWorker(job, onProgress).then((done) => {
-      const after = done.posted ? Math.abs(done.posted.largest) : Number.NaN;
+      const after = done.posted;
+      const largestBefore = Math.abs(before?.largest ?? Number.NaN);
+      const largestAfter = after ? Math.abs(after.largest) : Number.NaN;
       return {
         ...built,
         layers: [...built.layers, { kind: 'segments', style: 'optimisedAxis', positions: done.segments }],
         readouts: [
           ...(built.readouts ?? []),
-          { label: `milling.readout.optimised.before.${u}`, value: before },
-          { label: `milling.readout.optimised.after.${u}`, value: after },
-          { label: 'milling.readout.optimised.less', value: 100 * (1 - after / before) },
+          { label: `milling.readout.optimised.before.${u}`, value: largestBefore },
+          { label: `milling.readout.optimised.after.${u}`, value: largestAfter },
+          { label: 'milling.readout.optimised.less', value: 100 * (1 - largestAfter / largestBefore) },
+          { label: `milling.readout.optimised.gouge.${u}`, value: after ? -after.gouge : Number.NaN },
+          { label: `milling.readout.optimised.leave.${u}`, value: after ? after.leave : Number.NaN },
           { label: 'milling.readout.optimised.rounds', value: done.rounds },
         ],
       };
@@ -450,7 +547,12 @@ function largeJob(path, p, ctx, numbering) {
       total: expected,
     }),
   });
-  const first = picture(new Float32Array(0), t('milling.note.large', { poses: expected }));
+  // the optimisation is offered for the jobs the page refines and posts itself
+  const notOptimised = p.optimise ? t('milling.note.notOptimised', { max: POST_WORKER_THRESHOLD }) : '';
+  const first = picture(
+    new Float32Array(0),
+    [t('milling.note.large', { poses: expected }), notOptimised].filter(Boolean).join(' '),
+  );
   const job = {
     poses: path.tips().length ? interleave(path.tips(), path.axes()) : new Float64Array(0),
     tool: drawnTool(p),
@@ -463,7 +565,9 @@ function largeJob(path, p, ctx, numbering) {
     postInWorker(/** @type {import('../post-job.js').PostJob} */ (job), onProgress).then((done) => {
       const built = picture(
         done.segments,
-        done.every > 1 ? t('milling.note.drawn', { every: done.every, poses: done.poses }) : '',
+        [done.every > 1 ? t('milling.note.drawn', { every: done.every, poses: done.poses }) : '', notOptimised]
+          .filter(Boolean)
+          .join(' '),
       );
       built.readouts = [
         { label: 'milling.readout.poses', value: done.poses },

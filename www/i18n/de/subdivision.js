@@ -184,6 +184,10 @@ export default {
   'milling.readout.optimised.after.mm': 'max. |Abweichung| des ausgegebenen Programms, optimierte Lagen (mm)',
   'milling.readout.optimised.after.inch': 'max. |Abweichung| des ausgegebenen Programms, optimierte Lagen (Zoll)',
   'milling.readout.optimised.less': 'größte Abweichung der optimierten Lagen: kleiner um (%)',
+  'milling.readout.optimised.gouge.mm': 'tiefste Verletzung durch das ausgegebene Programm, optimierte Lagen (mm)',
+  'milling.readout.optimised.gouge.inch': 'tiefste Verletzung durch das ausgegebene Programm, optimierte Lagen (Zoll)',
+  'milling.readout.optimised.leave.mm': 'größtes Restmaterial des ausgegebenen Programms, optimierte Lagen (mm)',
+  'milling.readout.optimised.leave.inch': 'größtes Restmaterial des ausgegebenen Programms, optimierte Lagen (Zoll)',
   'milling.readout.optimised.rounds': 'Runden der Optimierung',
   'milling.readout.gouge.mm': 'tiefste Verletzung durch das ausgegebene Programm (mm)',
   'milling.readout.gouge.inch': 'tiefste Verletzung durch das ausgegebene Programm (Zoll)',
@@ -211,6 +215,10 @@ export default {
   'milling.worst': 'größte Abweichung: {value} {units}',
   'milling.note.stock':
     'Der Rohteilquader braucht sechs Zahlen (x y z kleinste, dann x y z größte): Solange gilt der Quader der Spitzen.',
+  'milling.note.posting':
+    'Viele Lagen gegen viele Zielpunkte: Das Programm wird im Hintergrund ausgegeben und an Ihrem Ziel gemessen (Abbrechen hält es an).',
+  'milling.note.notOptimised':
+    'Die Lagen werden für Aufträge mit bis zu {max} verfeinerten Lagen optimiert: Dieser wird so ausgegeben, wie er verfeinert ist.',
   'milling.note.large':
     '{poses} Lagen: im Hintergrund verfeinert und in ein Programm übersetzt (Abbrechen hält es an).',
   'milling.note.drawn': 'Jede {every}. der {poses} Werkzeugachsen gezeichnet; das Programm hat alle.',

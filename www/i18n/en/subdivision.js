@@ -187,6 +187,10 @@ export default {
   'milling.readout.optimised.after.mm': 'max |deviation| of the program as posted, optimised poses (mm)',
   'milling.readout.optimised.after.inch': 'max |deviation| of the program as posted, optimised poses (inch)',
   'milling.readout.optimised.less': "the optimised poses' largest deviation: less by (%)",
+  'milling.readout.optimised.gouge.mm': 'deepest gouge of the program as posted, optimised poses (mm)',
+  'milling.readout.optimised.gouge.inch': 'deepest gouge of the program as posted, optimised poses (inch)',
+  'milling.readout.optimised.leave.mm': 'most material left by the program as posted, optimised poses (mm)',
+  'milling.readout.optimised.leave.inch': 'most material left by the program as posted, optimised poses (inch)',
   'milling.readout.optimised.rounds': 'rounds of the optimisation',
   'milling.readout.gouge.mm': 'deepest gouge of the program as posted (mm)',
   'milling.readout.gouge.inch': 'deepest gouge of the program as posted (inch)',
@@ -214,6 +218,10 @@ export default {
   'milling.worst': 'worst: {value} {units}',
   'milling.note.stock':
     'The stock box takes six numbers (x y z least, then x y z greatest): the tips’ box is used meanwhile.',
+  'milling.note.posting':
+    'Many poses against many target points: the program is posted and measured against your target in the background (Cancel stops it).',
+  'milling.note.notOptimised':
+    'The poses are optimised for jobs of up to {max} refined poses: this one is posted as refined.',
   'milling.note.large': '{poses} poses: refined and posted in the background (Cancel stops it).',
   'milling.note.drawn': 'Every {every}th of the {poses} tool axes drawn; the program has them all.',
 };
