@@ -88,3 +88,35 @@ test('a parameter an exercise holds, or an edit replaces, changes by no route; a
     ...(preset.sets?.(value, state.params) ?? {}),
   });
 });
+
+test('the units menu converts the job: the same tool, tolerances, feed and part in the other units, and back', () => {
+  const milling = scene('milling');
+  let state = reduce(initialState(), { type: 'open', scene: milling, params: defaults(milling) });
+  state = reduce(state, { type: 'param', key: 'stock', value: '-5 -10 0 75 10 20' });
+  const mm = state.params;
+  assert.equal(mm.units, 'mm');
+  state = reduce(state, { type: 'param', key: 'units', value: 'inch' });
+  const inch = state.params;
+  // every length and feed divided by 25.4 (15 significant digits), the scale of the poses too
+  for (const key of ['radius', 'length', 'gauge', 'holder', 'holderLength', 'tolerance', 'clearance', 'feed', 'scale'])
+    assert.ok(
+      Math.abs(Number(inch[key]) * 25.4 - Number(mm[key])) <= 1e-11 * Number(mm[key]),
+      `${key}: ${mm[key]} mm, ${inch[key]} inch`,
+    );
+  assert.equal(inch.radius, 0.0984251968503937);
+  assert.equal(inch.tolerance, 0.000393700787401575);
+  assert.equal(
+    inch.stock,
+    '-0.196850393700787 -0.393700787401575 0 2.95275590551181 0.393700787401575 0.78740157480315',
+  );
+  // what has no length stays: the spindle's speed, the angular tolerance, the pole cone
+  for (const key of ['spindle', 'angular', 'cone', 'poses', 'steps']) assert.equal(inch[key], mm[key], key);
+  // and back: the values typed before
+  state = reduce(state, { type: 'param', key: 'units', value: 'mm' });
+  for (const key of ['radius', 'length', 'gauge', 'holder', 'holderLength', 'tolerance', 'clearance', 'feed', 'scale'])
+    assert.equal(state.params[key], mm[key], key);
+  assert.equal(state.params.stock, '-5 -10 0 75 10 20');
+  // a stock text that is not six numbers stays as typed
+  state = reduce(state, { type: 'param', key: 'stock', value: '1 2 3' });
+  assert.equal(reduce(state, { type: 'param', key: 'units', value: 'inch' }).params.stock, '1 2 3');
+});

@@ -271,7 +271,14 @@ test('a millimetre job of the user’s tool: the header and the moves say what t
       () => document.querySelector('.rl-row[data-key="feed"] .rl-unit')?.textContent === 'inch/min',
     );
     assert.equal(await unit('radius'), 'inch');
-    assert.equal(await said('radius'), '3 inch');
+    // the same tool in inches: 3 mm is 0.118110236220472 inch, in the field, the link and the program
+    assert.match((await said('radius')) ?? '', /^0[.,]118\d* inch$/);
+    assert.match(await page.locator('.rl-row[data-key="radius"] .rl-exact').inputValue(), /^0\.11811023622/);
+    assert.match(page.url(), /radius=0\.118110236220472(&|$)/);
+    assert.match(page.url(), /feed=59\.0551181102362(&|$)/);
+    const inches = header((await downloaded(page, /G-code/)).text);
+    assert.match(inches, /\(tool 1: ball end, radius 0\.1181 inch, length 1\.1811 inch, gauge length 3\.3465 inch/);
+    assert.match(inches, /\(stock X -0\.1969 to 2\.9528 Y -0\.3937 to 0\.3937 Z 0\.0000 to 0\.7874 inch\)/);
     // a number field that cannot be read says so at once (an alert), with the range to type in
     const field = page.locator('.rl-row[data-key="radius"] .rl-exact');
     await field.fill('3x');

@@ -27,6 +27,8 @@ export const JOB_PARAMS = [
     value: 'mm',
     refit: false,
     options: () => UNITS.map((u) => [u, `milling.units.${u}`]),
+    // the job's lengths and feeds go with the units (the same job in the other units)
+    sets: (value, p) => inUnits(String(value), p),
   },
   { key: 'scale', label: 'milling.param.scale', type: 'range', min: 0.01, max: 1000, step: 0.01, value: 10 },
   {
@@ -139,6 +141,39 @@ export const JOB_PARAMS = [
   },
   { key: 'cone', label: 'milling.param.cone', type: 'range', min: 0, max: 10, step: 0.1, value: 1 },
 ];
+
+/** Millimetres per inch. */
+const MM_PER_INCH = 25.4;
+
+/**
+ * The job of `p` in the units `to`: its lengths and feeds converted from the units of `p` (a
+ * 2.5 mm radius becomes 0.0984251968503937 inch, and 2.5 mm again on the way back), within each
+ * control's range, and the scale of the poses with them, so that the part keeps its size. To 15
+ * significant digits in inches and 12 in millimetres: a value typed in either comes back as typed
+ * after a way there and back (30 mm is 1.18110236220472 inch, which is 29.9999999999999 mm to 15
+ * digits). The stock box too, where it reads as six numbers (written back space-separated); a
+ * text that does not stays as typed. Nothing for the same units.
+ * @param {string} to
+ * @param {import('../scene.js').Params} p
+ * @returns {import('../scene.js').Params}
+ */
+export function inUnits(to, p) {
+  const from = p.units === 'inch' ? 'inch' : 'mm';
+  if (to === from || !UNITS.includes(/** @type {any} */ (to))) return {};
+  const [factor, digits] = to === 'inch' ? [1 / MM_PER_INCH, 15] : [MM_PER_INCH, 12];
+  /** @type {import('../scene.js').Params} */
+  const out = {};
+  const convert = (/** @type {number} */ x) => Number((x * factor).toPrecision(digits));
+  for (const q of JOB_PARAMS) {
+    const value = Number(p[q.key]);
+    if (!(q.unit === length || q.unit === feed || q.key === 'scale') || !Number.isFinite(value)) continue;
+    out[q.key] = Math.min(Number(q.max), Math.max(Number(q.min), convert(value)));
+  }
+  // the stock box, where it reads as one (its six numbers, space-separated)
+  const stock = stockOf(String(p.stock ?? ''));
+  if (stock) out.stock = stock.flat().map(convert).join(' ');
+  return out;
+}
 
 /**
  * The stock box a text gives: six numbers "xmin ymin zmin xmax ymax zmax" (spaces, commas or
