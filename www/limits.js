@@ -49,6 +49,12 @@ export const DRAW_LIMIT = 100_000;
  * strip returns as soon as the camera rests.
  */
 export const MOVING_LIMIT = 2_000;
+/**
+ * Your rulings (the data scene, a notebook's view) above this are drawn at a level of detail: the
+ * strip, the rulings and the striction curve through every k-th ruling, the footpoints, striction
+ * points and handles left out; the numbers are of every ruling.
+ */
+export const DATA_DETAIL_LIMIT = 20_000;
 /** Most rulings drawn as lines: a few pixels apart in a full view; more would merge into a moiré. */
 export const LINE_LIMIT = 160;
 

@@ -8,6 +8,7 @@ import { focalLayers } from '../layers/focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { lineSet, parallelProblems, rulingSet, rulingValues, strictionTargets } from '../edit/sets.js';
 import { least, append } from '../reduce.js';
+import { DATA_DETAIL_LIMIT } from '../limits.js';
 
 /**
  * What the scene shows before anything is imported: five rulings of a small twisted strip.
@@ -88,18 +89,33 @@ export const scene = defineScene({
       }
       const closed = !!p.closed;
       const s = own(RuledSurface.fromSegments(segments));
-      const seg = s.segmentsF32();
       const inv = s.invariants({ closed });
+      const parallel = inv.parallel.reduce((a, b) => a + b, 0);
+      // many rulings: drawn through every k-th of them (the numbers are of all), not editable
+      const every = Math.ceil(s.length / DATA_DETAIL_LIMIT);
+      const seg = every > 1 ? s.everyF32(every) : s.segmentsF32();
+      const drawn = seg.length / 6;
+      const striction = every > 1 ? everyPoint(inv.striction, every) : f32(inv.striction);
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
         { kind: 'segments', style: 'ruling', positions: seg },
-        { kind: 'segments', style: 'normal', positions: f32(inv.footpoints) },
-        { kind: 'polyline', style: 'striction', positions: f32(inv.striction), closed },
-        { kind: 'points', style: 'strictionPoint', positions: f32(inv.striction) },
+        ...(every > 1
+          ? []
+          : /** @type {import('../scene.js').Layer[]} */ ([
+              { kind: 'segments', style: 'normal', positions: f32(inv.footpoints) },
+            ])),
+        { kind: 'polyline', style: 'striction', positions: striction, closed },
+        ...(every > 1
+          ? []
+          : /** @type {import('../scene.js').Layer[]} */ ([
+              { kind: 'points', style: 'strictionPoint', positions: striction },
+            ])),
       ];
-      if (p.strip)
-        layers.push({ kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(s.length, closed) });
-      const parallel = inv.parallel.reduce((a, b) => a + b, 0);
+      if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(drawn, closed) });
+      const notes = [
+        p.focal ? t('data.note.focalRulings') : '',
+        every > 1 ? t('data.note.detail', { every, drawn, max: DATA_DETAIL_LIMIT }) : '',
+      ].filter(Boolean);
       return {
         bounds: bounds(seg),
         layers,
@@ -113,16 +129,42 @@ export const scene = defineScene({
           least: least(Array.from(inv.distribution, Math.abs).filter(Number.isFinite)),
         }),
         problems: parallelProblems(inv.parallel, s.length, t),
-        ...(p.focal ? { note: t('data.note.focalRulings') } : {}),
+        ...(notes.length ? { note: notes.join(' ') } : {}),
         data: { segments },
-        input: {
-          sets: [
-            { ...rulingSet(s.segments(), undefined, closed), targets: [strictionTargets(inv.striction, s.length)] },
-          ],
-          from,
-          values: rulingValues(inv, s.length, t),
-        },
+        ...(every > 1
+          ? {}
+          : {
+              input: {
+                sets: [
+                  {
+                    ...rulingSet(s.segments(), undefined, closed),
+                    targets: [strictionTargets(inv.striction, s.length)],
+                  },
+                ],
+                from,
+                values: rulingValues(inv, s.length, t),
+              },
+            }),
       };
     });
   },
 });
+
+/**
+ * Every k-th point of `points` (3 numbers each), and the last, as f32: the striction curve drawn
+ * through the rulings drawn.
+ * @param {ArrayLike<number>} points @param {number} every
+ */
+function everyPoint(points, every) {
+  const n = points.length / 3;
+  const picked = [];
+  for (let i = 0; i < n; i += every) picked.push(i);
+  if (picked.at(-1) !== n - 1) picked.push(n - 1);
+  const out = new Float32Array(3 * picked.length);
+  picked.forEach((i, k) => {
+    out[3 * k] = points[3 * i];
+    out[3 * k + 1] = points[3 * i + 1];
+    out[3 * k + 2] = points[3 * i + 2];
+  });
+  return out;
+}

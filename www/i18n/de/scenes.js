@@ -199,6 +199,8 @@ export default {
   'data.legend.rulings': 'Ihre Erzeugenden',
   'data.note.closedGrid':
     '„Geschlossen“ lässt auf die letzte Erzeugende einer Fläche die erste folgen; ein Raster von Geraden wird gezeigt, wie es ist, nicht geschlossen.',
+  'data.note.detail':
+    'Detailstufe: Jede {every}. Erzeugende wird gezeichnet ({drawn} davon); die Zahlen gelten für alle Erzeugenden. Ziehen lassen sich Erzeugende in Modellen mit bis zu {max}.',
   'data.note.focalRulings':
     'Brennflächen hat ein Raster von Geraden; Ihre Erzeugenden sind eine Fläche, die keine hat.',
   'data.readout.lines': 'Geraden (Kongruenz)',

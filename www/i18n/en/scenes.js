@@ -206,6 +206,8 @@ export default {
   'data.legend.rulings': 'your rulings',
   'data.note.closedGrid':
     '“Closed” follows the last ruling of a surface by the first; a grid of lines is shown as it is, not closed.',
+  'data.note.detail':
+    'Level of detail: one ruling in {every} is drawn ({drawn} of them); the numbers are of every ruling. Rulings can be dragged in models of up to {max}.',
   'data.note.focalRulings': 'Focal surfaces are those of a grid of lines; your rulings are a surface, which has none.',
   'data.readout.lines': 'lines (congruence)',
   'data.describe':
