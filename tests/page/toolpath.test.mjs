@@ -292,6 +292,24 @@ test('a millimetre job of the user’s tool: the header and the moves say what t
   }
 });
 
+/**
+ * The readout and label of a ball of radius 1 along a line 0.004 above its target, one target point
+ * 0.05 above the ball: the program as posted gouges 0.05 there and leaves 0.004 elsewhere.
+ * @param {import('playwright-core').Page} page
+ */
+async function gougesFiveLeavesFour(page) {
+  const readout = await page.locator('.rl-readout').innerText();
+  const fifty = '(5[.,]0+·10⁻²|0[.,]050?)';
+  assert.match(
+    readout,
+    new RegExp(`max \\|deviation\\| from the target of the program as posted \\(mm\\)\\s+${fifty}\\s`),
+  );
+  assert.match(readout, new RegExp(`deepest gouge of the program as posted \\(mm\\)\\s+${fifty}\\s`));
+  assert.match(readout, /most material left by the program as posted \(mm\)\s+(4[.,]0+·10⁻³|0[.,]0040?)\s/);
+  assert.match(readout, /target points beyond the chordal tolerance\s+1\b/);
+  assert.match((await page.locator('.rl-label').allInnerTexts()).join(' '), new RegExp(`worst: [−-]${fifty} mm`));
+}
+
 test('a target curve: the program as posted measured against it, the worst point marked, the tolerance in the plot', async () => {
   const { page, problems } = await session.open('#scene=data');
   try {
@@ -304,16 +322,8 @@ test('a target curve: the program as posted measured against it, the worst point
     await paste(page, 'x,y,z\n0,0,0.996\n10,0,0.996\n20,0,1.05\n30,0,0.996\n');
     await page.waitForFunction(() => /~t:/.test(decodeURIComponent(location.hash)));
     await ready(page);
-    const readout = await page.locator('.rl-readout').innerText();
     // of the program as posted: the ball cuts 0.05 into the high point, leaves 0.004 on the line
-    assert.match(
-      readout,
-      /max \|deviation\| from the target of the program as posted \(mm\)\s+(5[.,]0+·10⁻²|0[.,]050?)\s/,
-    );
-    assert.match(readout, /deepest gouge of the program as posted \(mm\)\s+(5[.,]0+·10⁻²|0[.,]050?)\s/);
-    assert.match(readout, /most material left by the program as posted \(mm\)\s+(4[.,]0+·10⁻³|0[.,]0040?)\s/);
-    assert.match(readout, /target points beyond the chordal tolerance\s+1\b/);
-    assert.match((await page.locator('.rl-label').allInnerTexts()).join(' '), /worst: [−-](5[.,]0+·10⁻²|0[.,]050?) mm/);
+    await gougesFiveLeavesFour(page);
     // the tolerance's lines in the plot: ±0.01, each titled, and their swatch in the key
     assert.equal(await page.locator('.rl-figure svg line[stroke-dasharray="8 4"]:has(title)').count(), 2);
     assert.equal(await page.locator('.rl-figure svg line[stroke-dasharray="8 4"]').count(), 3);
@@ -364,16 +374,8 @@ test('many poses against many target points: the program is posted and measured 
     await ready(page, 120000);
     const seen = await page.evaluate(() => /** @type {any} */ (window).seen);
     assert.deepEqual(seen, { progress: true, note: true });
-    const readout = await page.locator('.rl-readout').innerText();
-    assert.match(readout, /^poses\s+399\b/m);
-    assert.match(
-      readout,
-      /max \|deviation\| from the target of the program as posted \(mm\)\s+(5[.,]0+·10⁻²|0[.,]050?)\s/,
-    );
-    assert.match(readout, /deepest gouge of the program as posted \(mm\)\s+(5[.,]0+·10⁻²|0[.,]050?)\s/);
-    assert.match(readout, /most material left by the program as posted \(mm\)\s+(4[.,]0+·10⁻³|0[.,]0040?)\s/);
-    assert.match(readout, /target points beyond the chordal tolerance\s+1\b/);
-    assert.match((await page.locator('.rl-label').allInnerTexts()).join(' '), /worst: [−-](5[.,]0+·10⁻²|0[.,]050?) mm/);
+    assert.match(await page.locator('.rl-readout').innerText(), /^poses\s+399\b/m);
+    await gougesFiveLeavesFour(page);
     // the program is there to download, the plot has the path's own sweep and the blocks
     assert.ok(await page.locator('.rl-downloads button', { hasText: /G-code/ }).count());
     assert.equal(await page.locator('.rl-figure svg line[stroke-dasharray="8 4"]:has(title)').count(), 2);
