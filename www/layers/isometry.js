@@ -8,6 +8,22 @@ import { multiply } from '../math.js';
 import { developmentSvg } from '../export/development.js';
 import { parallelProblems, rulingSet, rulingValues, strictionTargets } from '../edit/sets.js';
 
+/**
+ * The bending's time t (0: the surface, 1: its conoidal model), played: the control of every scene
+ * that bends a surface (each adds when it does not apply).
+ * @type {import('../scene.js').Param}
+ */
+export const BENDING_TIME = {
+  key: 't',
+  label: 'isometry.param.t',
+  type: 'range',
+  min: 0,
+  max: 1,
+  step: 0.01,
+  value: 1,
+  play: true,
+};
+
 /** A translation by (x, y, z), column-major. */
 const translation = (/** @type {number} */ x, /** @type {number} */ y, /** @type {number} */ z) =>
   new Float32Array([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, y, z, 1]);

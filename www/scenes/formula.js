@@ -6,7 +6,7 @@ import { AnalyticSurface, fitLine } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
 import { strictionLayers, exactCurve } from '../layers/striction.js';
 import { convergenceLayers } from '../layers/convergence.js';
-import { isometryLayers } from '../layers/isometry.js';
+import { BENDING_TIME, isometryLayers } from '../layers/isometry.js';
 import { subdivisionLayers } from '../layers/subdivision.js';
 import { CLOSING_GAP, STRAIGHTNESS_MIN_EXTENT, STRAIGHTNESS_SAMPLES } from '../limits.js';
 import { SURFACE_PRESETS, formulaFieldOf, formulaParameter, surfaceFields } from '../catalogue.js';
@@ -175,17 +175,7 @@ export const scene = defineScene({
       value: 8,
       unless: onlyFor('convergence'),
     },
-    {
-      key: 't',
-      label: 'isometry.param.t',
-      type: 'range',
-      min: 0,
-      max: 1,
-      step: 0.01,
-      value: 1,
-      play: true,
-      unless: onlyFor('bending'),
-    },
+    { ...BENDING_TIME, unless: onlyFor('bending') },
     {
       key: 'scheme',
       label: 'param.scheme',

@@ -4,7 +4,7 @@
 // the reference frame of the conoidal model (x = e_0, z = n_{0,1}), which the core supplies.
 import { AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { isometryLayers, middleRadius } from '../layers/isometry.js';
+import { BENDING_TIME, isometryLayers, middleRadius } from '../layers/isometry.js';
 import { surfaceOptions, rangesOf } from '../catalogue.js';
 
 /** Open parameter ranges that make good figures (the project's choice: the paper gives no data). */
@@ -80,17 +80,7 @@ export const scene = defineScene({
       ],
     },
     { key: 'n', label: 'param.rulings', type: 'range', min: 4, max: 120, step: 1, value: 24, play: true },
-    {
-      key: 't',
-      label: 'isometry.param.t',
-      type: 'range',
-      min: 0,
-      max: 1,
-      step: 0.01,
-      value: 1,
-      play: true,
-      unless: (p) => (p.layout === 'panels' ? 'isometry.reason.panels' : null),
-    },
+    { ...BENDING_TIME, unless: (p) => (p.layout === 'panels' ? 'isometry.reason.panels' : null) },
     {
       key: 'ghost',
       label: 'isometry.param.ghost',
