@@ -86,6 +86,25 @@ async function check(url, name) {
   return { page, requests };
 }
 
+/**
+ * Type-checks `file` of the app in `dir` under tsc --strict, as a user's TypeScript project would
+ * (the package's own types, no @types), with `options` added to the compiler's.
+ * @param {string} dir @param {string} file @param {Record<string, unknown>} options
+ */
+function typeCheck(dir, file, options) {
+  const compilerOptions = {
+    strict: true,
+    noEmit: true,
+    target: 'es2022',
+    module: 'esnext',
+    moduleResolution: 'bundler',
+    types: [],
+    ...options,
+  };
+  writeFileSync(join(dir, 'tsconfig.json'), JSON.stringify({ compilerOptions, files: [file] }));
+  execFileSync(join(REPO, 'node_modules/.bin/tsc'), ['-p', join(dir, 'tsconfig.json')], { cwd: dir, stdio: 'inherit' });
+}
+
 test('npm pack → installed in a fresh app → <ruled-view controls> from ruledlab/view draws', async () => {
   const dir = app();
   writeFileSync(
@@ -274,23 +293,7 @@ stage.legend;
 s.subdivide({ scheme: 'cubic' });
 `,
   );
-  writeFileSync(
-    join(dir, 'tsconfig.json'),
-    JSON.stringify({
-      compilerOptions: {
-        strict: true,
-        noEmit: true,
-        skipLibCheck: false,
-        target: 'es2022',
-        module: 'esnext',
-        moduleResolution: 'bundler',
-        lib: ['es2022', 'dom', 'esnext.disposable'],
-        types: [],
-      },
-      files: ['main.ts'],
-    }),
-  );
-  execFileSync(join(REPO, 'node_modules/.bin/tsc'), ['-p', join(dir, 'tsconfig.json')], { cwd: dir, stdio: 'inherit' });
+  typeCheck(dir, 'main.ts', { skipLibCheck: false, lib: ['es2022', 'dom', 'esnext.disposable'] });
 });
 
 test('ruledlab/course from the installed tarball in Node: a SCORM 2004 package and an .h5p file, typed', () => {
@@ -320,22 +323,7 @@ console.log(zip.length, e);
 await scormPackage(['torsal-pair'], { standard: 'aicc' });
 `,
   );
-  writeFileSync(
-    join(dir, 'tsconfig.json'),
-    JSON.stringify({
-      compilerOptions: {
-        strict: true,
-        noEmit: true,
-        target: 'es2022',
-        module: 'esnext',
-        moduleResolution: 'bundler',
-        lib: ['es2022', 'dom'],
-        types: [],
-      },
-      files: ['course.ts'],
-    }),
-  );
-  execFileSync(join(REPO, 'node_modules/.bin/tsc'), ['-p', join(dir, 'tsconfig.json')], { cwd: dir, stdio: 'inherit' });
+  typeCheck(dir, 'course.ts', { lib: ['es2022', 'dom'] });
 });
 
 test('every figure and scene in <ruled-view>, cold, from the installed tarball (ruledlab/view)', async () => {
