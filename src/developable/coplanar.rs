@@ -98,9 +98,9 @@ mod tests {
 
     #[test]
     fn the_height_is_the_distance_of_the_farthest_end_from_the_plane_of_the_others() {
-        let (a0, b0, a1) = (DVec3::ZERO, DVec3::new(0.0, 1.0, 0.0), DVec3::new(1.0, 0.0, 0.0));
-        // b1 at 1e-3 above the plane z = 0 of the other three, their face the largest (area 1/2;
-        // the faces with b1 have areas ≈ 0.15, 0.15, 0.2)
+        let (a0, b0, a1) = (DVec3::ZERO, DVec3::new(0.0, 2.0, 0.0), DVec3::new(1.0, 0.0, 0.0));
+        // b1 at 1e-3 above the plane z = 0 of the other three, their face the largest (area 1;
+        // the faces with b1 have areas ≈ 0.3, 0.15, 0.55)
         let b1 = DVec3::new(0.3, 0.3, 1e-3);
         let h = off_plane(a0, b0, a1, b1);
         assert!((h - 1e-3).abs() < 1e-18, "{h}");
@@ -154,7 +154,39 @@ mod tests {
             DVec3::new(1.0, 1.0, 0.5),
         ])
         .unwrap();
-        assert_eq!(max_off_plane(&parallel).0, 0.0, "parallel rulings are coplanar");
+        assert_eq!(max_off_plane(&parallel), (0.0, None), "parallel rulings are coplanar");
         assert_eq!(max_abs_delta(&parallel), (0.0, None));
+    }
+
+    #[test]
+    fn the_tolerance_grows_with_the_strips_size_and_the_first_worst_pair_is_named() {
+        // a pair with an end 5e-10 off its plane: torsal in a strip 1 000 across (1e-9), not in
+        // one of size 1 (1e-12)
+        let pair = |s: f64| {
+            [DVec3::ZERO, DVec3::new(0.0, s, 0.0), DVec3::new(s, 0.0, 0.0), DVec3::new(0.3 * s, 0.3 * s, 5e-10)]
+        };
+        let (big, small) = (pair(1000.0 / 2f64.sqrt()), pair(0.5));
+        assert!(is_torsal(&big, 0, size_of(&big)), "{}", pair_off_plane(&big, 0));
+        assert!(!is_torsal(&small, 0, size_of(&small)));
+        // the size: the box's diagonal, at least 1
+        assert_eq!(size_of(&[DVec3::ONE, DVec3::new(4.0, 5.0, 13.0)]), 13.0);
+        assert_eq!(size_of(&[DVec3::new(-1.0, 0.0, 0.0), DVec3::new(-0.5, 0.0, 0.0)]), 1.0);
+        // three rulings turned by a quarter turn each about z (exact in binary): two pairs with the
+        // same |δ|, the first named
+        let s = RuledSurface::from_points(vec![
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 1.0, 1.0),
+            DVec3::new(0.0, 1.0, 0.0),
+            DVec3::new(-1.0, 1.0, 1.0),
+            DVec3::new(-1.0, 0.0, 0.0),
+            DVec3::new(-1.0, -1.0, 1.0),
+        ])
+        .unwrap();
+        let inv = s.invariants();
+        assert_eq!(inv.distribution[0], inv.distribution[1]);
+        assert_eq!(max_abs_delta(&s), (inv.distribution[0].abs(), Some(0)));
+        let h = pair_off_plane(s.points(), 0);
+        assert!(h > 0.1 && h == pair_off_plane(s.points(), 1));
+        assert_eq!(max_off_plane(&s), (h, Some(0)));
     }
 }

@@ -260,6 +260,8 @@ mod tests {
             assert_eq!(r.anchors, [k]);
             assert!((1..=8).contains(&r.steps), "{} steps", r.steps);
             assert_eq!(r.surface.segment(k), edit.segment(k), "the dragged ruling is kept as given");
+            let turned: Vec<usize> = (0..29).filter(|&i| r.surface.segment(i).b != edit.segment(i).b).collect();
+            assert_eq!(r.turned, turned, "the rulings turned, named");
             let moved: Vec<f64> = (0..29).map(|i| (r.surface.segment(i).b - edit.segment(i).b).length()).collect();
             for i in 0..29 {
                 assert_eq!(r.surface.segment(i).a, s.segment(i).a, "the ends a stay");
@@ -286,6 +288,13 @@ mod tests {
         let swept = RuledSurface::from_points(swept).unwrap();
         assert!(raw_max_abs_delta(&swept) <= 1e-13);
         assert!(moved(repaired.points()) < 0.5 * moved(swept.points()));
+        // the sweep keeps the anchor, turns each other ruling into the plane, does not turn it round
+        assert_eq!(swept.segment(12), edit.segment(12));
+        for i in 0..25 {
+            let (was, now) = (edit.segment(i), swept.segment(i));
+            assert!((now.b - now.a).dot(was.b - was.a) > 0.0, "ruling {i} turned round");
+            assert!((now.length() - was.length()).abs() < 1e-14, "ruling {i} keeps its length");
+        }
     }
 
     #[test]
@@ -355,5 +364,32 @@ mod tests {
         }
         assert!(inv.angle[2] >= 1e-2 && inv.angle[3] >= 1e-2, "the dragged ruling's pairs are resolved");
         assert!(r.turned.contains(&2) && r.turned.contains(&4));
+    }
+
+    /// Two neighbouring rulings dragged: the run of broken pairs has two middle rulings, and the
+    /// one whose repair moves the ends b less is kept — the first in one case, the second in the
+    /// other.
+    #[test]
+    fn of_two_middle_rulings_the_one_whose_repair_moves_the_strip_less_is_kept() {
+        let s = tangent_surface(&helix(30), Span { from: 0.1, to: 1.0 }).unwrap();
+        let (near, far) = (DVec3::new(0.002, 0.0, 0.001), DVec3::new(0.08, -0.05, 0.06));
+        let mut kept = Vec::new();
+        for (k, other) in [(11, 10), (10, 11)] {
+            let mut p = s.points().to_vec();
+            p[2 * k + 1] += far;
+            p[2 * other + 1] += near;
+            let moved = |anchor: usize| {
+                let mut q = p.clone();
+                solve(&mut q, s.len(), &[anchor]);
+                q.iter().zip(&p).map(|(x, y)| (*x - *y).length_squared()).sum::<f64>()
+            };
+            let (m10, m11) = (moved(10), moved(11));
+            assert!((m10 - m11).abs() > 0.1 * m10.min(m11), "{m10} {m11}");
+            let r = make_developable(&RuledSurface::from_points(p).unwrap());
+            assert_eq!(r.anchors, [if m11 < m10 { 11 } else { 10 }], "{m10} {m11}");
+            kept.push(r.anchors[0]);
+        }
+        kept.sort();
+        assert_eq!(kept, [10, 11], "each of the two middles kept once");
     }
 }
