@@ -82,7 +82,7 @@ pub use ruled::{envelope_radii, Development, HingeChain};
 // Section 3, beyond it: developable strips, their exact unfolding and flat patterns for cutting
 pub use developable::approximate::ApproximatePattern;
 pub use developable::construct::{cone, cylinder, rectifying_developable, tangent_surface, Span};
-pub use developable::coplanar::{max_abs_delta, max_off_plane, size_of};
+pub use developable::coplanar::{max_abs_delta, max_off_plane, pair_delta, size_of};
 pub use developable::outline::{offset, outline, perimeter, signed_area, Outline, Side, Stroke};
 pub use developable::overlap::{overlapping_faces, pieces};
 pub use developable::repair::{make_developable, Repair};

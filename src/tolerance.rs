@@ -208,8 +208,8 @@ pub const HIDDEN_LINE_GRID_ENTRIES: usize = 16;
 pub const MAX_HIDDEN_LINE_ITEMS: usize = 1 << 22;
 
 /// Developable strips: a pair of consecutive rulings counts as coplanar (torsal) when the height η
-/// of the tetrahedron of its four ends (the farthest end's distance from the plane of the other
-/// three, `developable::coplanar`) is at most this times max(1, the strip's size: the diagonal of
+/// of the tetrahedron of its four ends over its largest face (an end's distance from the plane of
+/// the other three, where that plane is best defined: `developable::coplanar`) is at most this times max(1, the strip's size: the diagonal of
 /// its bounding box). η, not |δ| = h/φ (1), because δ magnifies the rounding of the ends by 1/φ²
 /// where rulings meet at small angles; the constructions and the repair of `developable/` reach
 /// η ≈ 1e-16 of the size. The exact unfolding refuses a strip with a pair above it.

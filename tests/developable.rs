@@ -3,7 +3,7 @@
 //! repaired by the core after each drag, and after each
 //!
 //! - every pair of consecutive rulings is coplanar: the tetrahedron of its four ends has height
-//!   η ≤ 1e-15 of the strip's size (`developable::coplanar`);
+//!   η ≤ 1e-15 of the strip's size over its largest face (`developable::coplanar`);
 //! - δ_{i,i+1} (1) is 0 to 1e-12 wherever the points resolve it: |δ| ≤ 1e-12 + the rounding floor
 //!   16 ε M |d| / (L φ²) of δ computed from ends rounded to ε M (M the largest coordinate, L the
 //!   shorter ruling, d = a_{i+1} − a_i); the pairs whose floor is below 1e-13 are held to 1e-12
@@ -63,7 +63,7 @@ fn check(name: &str, s: &RuledSurface) -> usize {
     let p = s.points();
     let size = size_of(p);
     let (eta, at) = max_off_plane(s);
-    assert!(eta <= 1e-15 * size, "{name}: pair {at:?} has an end {eta:e} off its plane");
+    assert!(eta <= 1e-15 * size, "{name}: pair {at:?} is {eta:e} off flat");
     let m = p.iter().fold(0.0f64, |m, q| m.max(q.abs().max_element()));
     let inv = s.invariants();
     let mut resolved = 0;

@@ -45,10 +45,11 @@ export async function postSteps({ poses, tool, refine, post, draw = Infinity, sw
       progress((0.3 * (2 ** (k + 1) - 1)) / total);
       await pause?.();
     }
+    // the path's own sweep against the target first (the bar at the refinement's end meanwhile)
+    const own = sweep && post.target ? { sweep: path.envelopeDeviation(post.target) } : {};
     const { text, ...done } = path.post(post, (/** @type {number} */ f) => progress(0.3 + 0.7 * f));
     const every = Math.max(1, Math.ceil(path.length / draw));
     const segments = every > 1 ? path.everyF32(every) : path.segmentsF32();
-    const own = sweep && post.target ? { sweep: path.envelopeDeviation(post.target) } : {};
     return { text, poses: path.length, segments, every, maxAngleStep: path.quality().maxAngleStep, post: done, ...own };
   } finally {
     path.free();

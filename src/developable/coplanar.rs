@@ -6,17 +6,22 @@
 //! a ruling of length L by ε changes δ by up to |d| ε / (L φ²) (d = a_{i+1} − a_i). The ends are
 //! rounded to ε ≈ 2⁻⁵³ |p|, so a coplanar pair at φ = 10⁻⁶ — a cylinder's rulings after one drag —
 //! has |δ| ≈ 10⁻⁵ of pure rounding: no strip of `f64` points does better. The measure the points
-//! resolve is the **height** of the tetrahedron of the pair's four ends a_i, b_i, a_{i+1}, b_{i+1}:
+//! resolve is the **height** of the tetrahedron of the pair's four ends a_i, b_i, a_{i+1}, b_{i+1}
+//! over its largest face:
 //!
-//! η_{i,i+1} = |det(b_i − a_i, a_{i+1} − a_i, b_{i+1} − a_i)| / max |face normal| = 3V / A_max,
+//! η_{i,i+1} = |det(b_i − a_i, a_{i+1} − a_i, b_{i+1} − a_i)| / N_max = 3V / A_max,
 //!
-//! the distance of the farthest end from the plane of the other three, where that plane is best
-//! defined (A_max the largest face). η = 0 exactly when the rulings are coplanar, it is a length
-//! (rigid-motion invariant, of the order of ε where the pair is coplanar to rounding), and
-//! |δ| = η A_max / (|a_i b_i| |a_{i+1} b_{i+1}| sin φ φ) where both are defined. A pair is
-//! **torsal** when η ≤ [`TORSAL_HEIGHT`] times the strip's size; [`max_abs_delta`] reports δ of
-//! the pairs that are not, so that a strip the core finds developable reads δ = 0, not its
-//! rounding.
+//! N_max the largest of the four faces' normals (each twice the face's area A), that is the distance
+//! of the end opposite the largest face from that face's plane — the least of the tetrahedron's four
+//! heights, taken over the plane that its three ends define best. η = 0 exactly when the rulings are
+//! coplanar, it is a length (rigid-motion invariant, of the order of ε where the pair is coplanar
+//! to rounding), and where both are defined
+//!
+//! |δ| = η N_max / (|a_i b_i| |a_{i+1} b_{i+1}| sin φ · φ)
+//!
+//! (the determinant is |a_i b_i| |a_{i+1} b_{i+1}| h sin φ). A pair is **torsal** when η ≤
+//! [`TORSAL_HEIGHT`] times the strip's size; [`max_abs_delta`] reports δ of the pairs that are not,
+//! so that a strip the core finds developable reads δ = 0, not its rounding.
 
 use crate::ruled::RuledSurface;
 use crate::tolerance::TORSAL_HEIGHT;
@@ -30,8 +35,8 @@ pub fn size_of(points: &[DVec3]) -> f64 {
     (hi - lo).length().max(1.0)
 }
 
-/// η (see the module): the height of the tetrahedron a0 b0 a1 b1 over its largest face; 0 when all
-/// four points lie on one line.
+/// η (see the module): the height of the tetrahedron a0 b0 a1 b1 over its largest face (its least
+/// height); 0 when all four points lie on one line.
 pub fn off_plane(a0: DVec3, b0: DVec3, a1: DVec3, b1: DVec3) -> f64 {
     let (u, d, w) = (b0 - a0, a1 - a0, b1 - a0);
     let volume = u.dot(d.cross(w)).abs();
@@ -67,18 +72,29 @@ pub fn max_off_plane(surface: &RuledSurface) -> (f64, Option<usize>) {
     })
 }
 
+/// δ_{i,i+1} = h/φ (1) of pair `i`, also where the pair counts as parallel (then the unsigned
+/// distance of the lines over their angle).
+pub fn pair_delta(inv: &crate::ruled::invariants::Invariants, i: usize) -> f64 {
+    if inv.parallel[i] {
+        inv.distance[i] / inv.angle[i]
+    } else {
+        inv.distribution[i]
+    }
+}
+
 /// The largest |δ_{i,i+1}| (1) of the pairs that are not torsal, and the pair where it is: (0, None)
 /// for a strip whose pairs are all torsal (a developable: δ = 0 to the precision its points carry,
-/// see the module). Pairs that count as parallel ([`crate::tolerance::PARALLEL_SIN`]) have no δ
-/// and are left out.
+/// see the module). A pair that counts as parallel ([`crate::tolerance::PARALLEL_SIN`]) but is
+/// not torsal — rulings 1e-10 apart in angle and a unit apart — has |δ| = distance / φ, huge.
 pub fn max_abs_delta(surface: &RuledSurface) -> (f64, Option<usize>) {
     let p = surface.points();
     let scale = size_of(p);
     let inv = surface.invariants();
     let mut worst = (0.0, None);
-    for (i, (&d, &parallel)) in inv.distribution.iter().zip(&inv.parallel).enumerate() {
-        if !parallel && d.abs() > worst.0 && !is_torsal(p, i, scale) {
-            worst = (d.abs(), Some(i));
+    for i in 0..inv.distribution.len() {
+        let d = pair_delta(&inv, i).abs();
+        if d > worst.0 && !is_torsal(p, i, scale) {
+            worst = (d, Some(i));
         }
     }
     worst
@@ -97,12 +113,13 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_height_is_the_distance_of_the_farthest_end_from_the_plane_of_the_others() {
+    fn the_height_is_the_distance_of_an_end_from_the_plane_of_the_largest_face() {
         let (a0, b0, a1) = (DVec3::ZERO, DVec3::new(0.0, 2.0, 0.0), DVec3::new(1.0, 0.0, 0.0));
         // b1 at 1e-3 above the plane z = 0 of the other three, their face the largest (area 1;
         // the faces with b1 have areas ≈ 0.3, 0.15, 0.55)
         let b1 = DVec3::new(0.3, 0.3, 1e-3);
         let h = off_plane(a0, b0, a1, b1);
+        // (the least height: b0 lies 3.3e-3 off the plane of a0 a1 b1, a1 6.7e-3 off that of a0 b0 b1)
         assert!((h - 1e-3).abs() < 1e-18, "{h}");
         // order and rigid motions do not change it
         assert_eq!(off_plane(a0, b0, a1, b1), off_plane(a1, b1, a0, b0));
@@ -188,5 +205,16 @@ mod tests {
         let h = pair_off_plane(s.points(), 0);
         assert!(h > 0.1 && h == pair_off_plane(s.points(), 1));
         assert_eq!(max_off_plane(&s), (h, Some(0)));
+    }
+
+    #[test]
+    fn rulings_that_count_as_parallel_but_leave_their_plane_report_their_huge_delta() {
+        // φ = 5e-10 (below the parallel threshold), a unit apart: not coplanar, δ ≈ 1/φ
+        let s = RuledSurface::from_points(vec![DVec3::ZERO, DVec3::Y, DVec3::X, DVec3::new(1.0, 1.0, 5e-10)]).unwrap();
+        assert!(s.invariants().parallel[0]);
+        let (d, at) = max_abs_delta(&s);
+        assert_eq!(at, Some(0));
+        assert!((d * 5e-10 - 1.0).abs() < 1e-6, "{d}");
+        assert!(max_off_plane(&s).0 > 4e-10);
     }
 }

@@ -3,8 +3,8 @@
 //!
 //! A pair of consecutive rulings is *torsal* when its rulings are coplanar: they meet, or run
 //! parallel. A strip edited by hand breaks this at the dragged ruling: the repair finds the runs of
-//! consecutive pairs that are not torsal (an end off the plane of the other three by more than
-//! [`TORSAL_HEIGHT`] of the strip's size: [`super::coplanar`]),
+//! consecutive pairs that are not torsal (the tetrahedron of the pair's ends higher than
+//! [`TORSAL_HEIGHT`] of the strip's size over its largest face: [`super::coplanar`]),
 //! keeps one ruling of each run as given — its *anchor* — and moves the ends b of the other rulings
 //! as little as possible until every pair is torsal again. The ends a (the strip's directrix) never
 //! move, nor do the anchors; every ruling keeps its length.

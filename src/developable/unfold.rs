@@ -41,15 +41,15 @@ pub struct IsometryError {
 
 impl Unfolding {
     /// The exact unfolding of a developable strip (see the module). Refuses a strip with a pair of
-    /// rulings that is not torsal (an end off the plane of the other three by more than
-    /// [`TORSAL_HEIGHT`] of its size, `coplanar::height`: unfold it with
+    /// rulings that is not torsal (the tetrahedron of its ends higher than [`TORSAL_HEIGHT`] of its
+    /// size over its largest face, `coplanar::off_plane`: unfold it with
     /// Section 3's approximate development instead) and consecutive rulings on one line (a face
     /// without width). O(N).
     pub fn of(surface: &RuledSurface) -> Result<Unfolding> {
         let scale = size_of(surface.points());
         let (height, pair) = max_off_plane(surface);
         if let Some(i) = pair.filter(|_| height > TORSAL_HEIGHT * scale) {
-            let delta = surface.invariants().distribution[i];
+            let delta = super::coplanar::pair_delta(&surface.invariants(), i);
             return Err(Error::degenerate(
                 "strip",
                 msg!("not-developable", i = i, j = i + 1, height = height, max = TORSAL_HEIGHT * scale, delta = delta),

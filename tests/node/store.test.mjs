@@ -116,6 +116,17 @@ test('the units menu converts the job: the same tool, tolerances, feed and part 
   for (const key of ['radius', 'length', 'gauge', 'holder', 'holderLength', 'tolerance', 'clearance', 'feed', 'scale'])
     assert.equal(state.params[key], mm[key], key);
   assert.equal(state.params.stock, '-5 -10 0 75 10 20');
+  // an inch job (a tool of radius 2.5 in, a tolerance of 0.00004 in) in millimetres: nothing
+  // clamped, though 63.5 mm is beyond the radius slider's 50
+  state = reduce(state, { type: 'param', key: 'units', value: 'inch' });
+  state = reduce(state, { type: 'param', key: 'radius', value: 2.5 });
+  state = reduce(state, { type: 'param', key: 'tolerance', value: 0.00004 });
+  state = reduce(state, { type: 'param', key: 'units', value: 'mm' });
+  assert.equal(state.params.radius, 63.5);
+  assert.equal(state.params.tolerance, 0.001016);
+  state = reduce(state, { type: 'param', key: 'units', value: 'inch' });
+  assert.equal(state.params.radius, 2.5);
+  assert.equal(state.params.tolerance, 0.00004);
   // a stock text that is not six numbers stays as typed
   state = reduce(state, { type: 'param', key: 'stock', value: '1 2 3' });
   assert.equal(reduce(state, { type: 'param', key: 'units', value: 'inch' }).params.stock, '1 2 3');

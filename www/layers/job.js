@@ -147,8 +147,10 @@ const MM_PER_INCH = 25.4;
 
 /**
  * The job of `p` in the units `to`: its lengths and feeds converted from the units of `p` (a
- * 2.5 mm radius becomes 0.0984251968503937 inch, and 2.5 mm again on the way back), within each
- * control's range, and the scale of the poses with them, so that the part keeps its size. To 15
+ * 2.5 mm radius becomes 0.0984251968503937 inch, and 2.5 mm again on the way back), and the scale
+ * of the poses with them, never clamped to a control's range (a 2.5 inch radius is 63.5 mm, beyond
+ * the slider's 50: the slider stands at its end, the field and the program say 63.5; a link read
+ * later clamps it and says so), so that the part keeps its size. To 15
  * significant digits in inches and 12 in millimetres: a value typed in either comes back as typed
  * after a way there and back (30 mm is 1.18110236220472 inch, which is 29.9999999999999 mm to 15
  * digits). The stock box too, where it reads as six numbers (written back space-separated); a
@@ -167,7 +169,7 @@ export function inUnits(to, p) {
   for (const q of JOB_PARAMS) {
     const value = Number(p[q.key]);
     if (!(q.unit === length || q.unit === feed || q.key === 'scale') || !Number.isFinite(value)) continue;
-    out[q.key] = Math.min(Number(q.max), Math.max(Number(q.min), convert(value)));
+    out[q.key] = convert(value);
   }
   // the stock box, where it reads as one (its six numbers, space-separated)
   const stock = stockOf(String(p.stock ?? ''));

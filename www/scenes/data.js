@@ -95,7 +95,7 @@ export const scene = defineScene({
       const every = Math.ceil(s.length / DATA_DETAIL_LIMIT);
       const seg = every > 1 ? s.everyF32(every) : s.segmentsF32();
       const drawn = seg.length / 6;
-      const striction = every > 1 ? everyPoint(inv.striction, every) : f32(inv.striction);
+      const striction = every > 1 ? everyPoint(inv.striction, every, closed ? 0 : 1) : f32(inv.striction);
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
         { kind: 'segments', style: 'ruling', positions: seg },
@@ -151,15 +151,16 @@ export const scene = defineScene({
 });
 
 /**
- * Every k-th point of `points` (3 numbers each), and the last, as f32: the striction curve drawn
- * through the rulings drawn.
- * @param {ArrayLike<number>} points @param {number} every
+ * The striction curve's points at the rulings drawn (0, k, 2k, …, and the last), as f32: point j
+ * belongs to ruling j + `first` (an open strip's curve begins at ruling 1), and the curve keeps
+ * its two ends.
+ * @param {ArrayLike<number>} points @param {number} every @param {number} first
  */
-function everyPoint(points, every) {
+function everyPoint(points, every, first) {
   const n = points.length / 3;
-  const picked = [];
-  for (let i = 0; i < n; i += every) picked.push(i);
-  if (picked.at(-1) !== n - 1) picked.push(n - 1);
+  const picked = [0];
+  for (let r = every; r - first < n - 1; r += every) if (r - first > 0) picked.push(r - first);
+  if (n > 1) picked.push(n - 1);
   const out = new Float32Array(3 * picked.length);
   picked.forEach((i, k) => {
     out[3 * k] = points[3 * i];

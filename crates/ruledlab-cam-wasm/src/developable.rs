@@ -124,8 +124,8 @@ pub fn max_abs_delta(
 }
 
 /// How far the strip is from developable, as a length: over its pairs of consecutive rulings, the
-/// largest distance of an end from the plane of the other three ends (the tetrahedron's height
-/// over its largest face; 0 exactly for coplanar rulings). A pair counts as coplanar when this is at
+/// largest height of the tetrahedron of the pair's four ends over its largest face (the distance
+/// of one end from the plane the other three define best; 0 exactly for coplanar rulings). A pair counts as coplanar when this is at
 /// most 1e-12 of the strip's size (the diagonal of its bounding box, at least 1).
 #[wasm_bindgen(js_name = maxOffPlane)]
 pub fn max_off_plane(
