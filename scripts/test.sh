@@ -15,10 +15,10 @@
 #   then three lanes side by side:
 #   5. wasm: the same integration tests and the bindings tests in headless Chromium and in
 #      headless Firefox ESR (geckodriver)
-#   6. Node: the built package's JS API; the page in headless Chromium (playwright-core driving
-#      Debian's chromium), and the example notebook run in a real JupyterLab (.venv/)
-#   7. short runs of the cargo-fuzz targets (fuzz/); a smoke test of every scene in Firefox ESR,
-#      headed under Xvfb (headless Firefox has no WebGL2 here)
+#   6. the page in headless Chromium (playwright-core driving Debian's chromium), and the example
+#      notebook run in a real JupyterLab and Notebook 7 (.venv/)
+#   7. Node: the built package's JS API; short runs of the cargo-fuzz targets (fuzz/); a smoke
+#      test of every scene in Firefox ESR, headed under Xvfb (headless Firefox has no WebGL2 here)
 # Exits non-zero on the first failing step, or after the lanes when one of them failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -42,6 +42,10 @@ RUSTDOCFLAGS="-D warnings" cargo doc --quiet --workspace --no-deps
 step "native: cargo test, every crate (with LinuxCNC's rs274 reading the G-code: crates/ruledlab-cam/tests/controller.rs)"
 RULEDLAB_REQUIRE_RS274=1 RULEDLAB_REQUIRE_READERS=1 cargo test --workspace --all-targets
 cargo test --workspace --doc
+# the native invariants the Node tests compare the wasm build's with, written now: a cargo run in
+# the Node lane would wait for the build directory as long as the wasm lane holds it
+cargo run -q --example dump_invariants > target/native-invariants.json
+export RULEDLAB_NATIVE_INVARIANTS="$PWD/target/native-invariants.json"
 
 step "build: pkg/"
 bash scripts/build.sh
@@ -61,7 +65,7 @@ node tests/docs/links.mjs
 
 # The rest runs as three lanes side by side (the machine has idle cores while browsers wait for
 # frames): each lane's log is printed when it ends, and the run fails if any lane fails.
-step "three lanes: [wasm tests in Chromium, Firefox] [Node, page tests] [fuzz, Firefox smoke]"
+step "three lanes: [wasm tests in Chromium, Firefox] [page tests] [Node tests, fuzz, Firefox smoke]"
 LOGS=$(mktemp -d)
 lane() {
   local name=$1; shift
@@ -74,11 +78,11 @@ wasm_lane() {
   GECKODRIVER="$(command -v geckodriver)" cargo test --target wasm32-unknown-unknown "${WASM_TESTS[@]}"
 }
 page_lane() {
-  node --expose-gc --test tests/node/*.test.mjs
   # two files at a time: most of a page test is waiting for frames
   node --test --test-concurrency=2 tests/page/*.test.mjs
 }
 other_lane() {
+  node --expose-gc --test tests/node/*.test.mjs
   bash scripts/fuzz.sh 3
   LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1280x1024x24" node tests/firefox/smoke.mjs
 }
