@@ -1,15 +1,13 @@
-// Runs refinements in a Web Worker (www/worker.js, with its own wasm instance), one job at a
-// time; a newer job supersedes an older one, whose result is dropped. Where no worker can
-// start — a sandboxed frame, a page whose Content-Security-Policy forbids the worker's script —
-// the same job (refine.js) runs on the main thread, yielding between steps. A tool path's post
-// (post-job.js) and an optimisation of its poses (optimise-job.js) run the same way; as they can
-// take a minute, a newer job or cancelWork() stops the worker computing one (a new one starts
-// for the next job).
+// Runs the page's long jobs (jobs.js: a refinement, the invariants of many rulings, a tool path's
+// post, an optimisation of its poses) in a Web Worker (www/worker.js, with its own wasm
+// instance), one job at a time; a newer job supersedes an older one, whose result is dropped.
+// Where no worker can start — a sandboxed frame, a page whose Content-Security-Policy forbids the
+// worker's script — the same job runs on the main thread, yielding between steps. A job that is
+// one long call (LONG_KINDS) is stopped by a newer job or cancelWork() by ending the worker (a
+// new one starts for the next job).
 import { newWorker, reportNoWorker, wasmSource } from './core.js';
 import { camSource } from './cam.js';
-import { refineSteps } from './refine.js';
-import { postSteps } from './post-job.js';
-import { optimiseSteps } from './optimise-job.js';
+import { STEPS, CAM_KINDS, LONG_KINDS } from './jobs.js';
 
 /** @type {Worker | null} */
 let worker = null;
@@ -17,9 +15,8 @@ let worker = null;
 let noWorker = false;
 let nextId = 0;
 /**
- * @typedef {{resolve: (v: any) => void, reject: (e: any) => void, onProgress: (f: number) => void, job: any, post?: boolean, optimise?: boolean}} Job
- *   job: a refinement's {segments, options, draw}, a post's (post-job.js) or an optimisation's
- *   (optimise-job.js)
+ * @typedef {{resolve: (v: any) => void, reject: (e: any) => void, onProgress: (f: number) => void, kind: import('./jobs.js').JobKind, job: any}} Job
+ *   job: what the routine of its kind takes (jobs.js)
  */
 /** @type {Map<number, Job>} */
 const jobs = new Map();
@@ -67,12 +64,7 @@ function here(/** @type {number} */ id, /** @type {Job} */ job) {
   pause()
     .then(
       /** @returns {Promise<unknown>} */
-      () =>
-        job.optimise
-          ? optimiseSteps(job.job, job.onProgress)
-          : job.post
-            ? postSteps(job.job, job.onProgress, pause)
-            : refineSteps(job.job, job.onProgress, pause),
+      () => STEPS[job.kind](job.job, job.onProgress, pause),
     )
     .then(
       (done) => {
@@ -89,6 +81,26 @@ function here(/** @type {number} */ id, /** @type {Job} */ job) {
 }
 
 /**
+ * Runs `job` of `kind` in the worker (or here, where there is none), superseding the job before.
+ * @param {import('./jobs.js').JobKind} kind @param {any} job
+ * @param {(fraction: number) => void} onProgress
+ * @returns {Promise<any>}
+ */
+function run(kind, job, onProgress) {
+  const id = ++nextId;
+  supersede();
+  return new Promise((resolve, reject) => {
+    /** @type {Job} */
+    const entry = { resolve, reject, onProgress, kind, job };
+    jobs.set(id, entry);
+    const w = theWorker();
+    // (a CAM job's module is started on this thread already: the worker starts its own from the same source)
+    if (w) w.postMessage({ id, kind, ...job, ...(CAM_KINDS.has(kind) ? { cam: camSource() } : {}) });
+    else here(id, entry);
+  });
+}
+
+/**
  * Refines `segments` with `options` in the worker (or here, where there is none).
  * @param {Float64Array} segments 6 numbers per ruling
  * @param {import('../pkg/ruledlab.js').SubdivideOptions} options RuledSurface.subdivide options, `steps` included
@@ -97,24 +109,25 @@ function here(/** @type {number} */ id, /** @type {Job} */ job) {
  * @returns {Promise<{segments: Float32Array, rulings: number, drawn: number}>}
  */
 export function refineInWorker(segments, options, onProgress = () => {}, draw = Infinity) {
-  const id = ++nextId;
-  supersede();
-  return new Promise((resolve, reject) => {
-    /** @type {Job} */
-    const job = { resolve, reject, onProgress, job: { segments, options, draw } };
-    jobs.set(id, job);
-    const w = theWorker();
-    if (w) w.postMessage({ id, segments, options, draw });
-    else here(id, job);
-  });
+  return run('refine', { segments, options, draw }, onProgress);
 }
 
-/** Drops every pending job (rejected as superseded); a post running in the worker stops it. */
+/**
+ * The invariants of many rulings, reduced to what the data scene shows, in the worker (or here).
+ * @param {import('./invariants-job.js').InvariantsJob} job
+ * @param {(fraction: number) => void} [onProgress]
+ * @returns {Promise<import('./invariants-job.js').InvariantsJobResult>}
+ */
+export function invariantsInWorker(job, onProgress = () => {}) {
+  return run('invariants', job, onProgress);
+}
+
+/** Drops every pending job (rejected as superseded); a long one running in the worker stops it. */
 function supersede() {
   let busy = false;
   for (const [old, job] of jobs) {
     jobs.delete(old);
-    busy ||= !!job.post || !!job.optimise;
+    busy ||= LONG_KINDS.has(job.kind);
     job.reject(superseded());
   }
   if (busy && worker) {
@@ -130,17 +143,7 @@ function supersede() {
  * @returns {Promise<import('./post-job.js').PostJobResult>}
  */
 export function postInWorker(job, onProgress = () => {}) {
-  const id = ++nextId;
-  supersede();
-  return new Promise((resolve, reject) => {
-    /** @type {Job} */
-    const entry = { resolve, reject, onProgress, job, post: true };
-    jobs.set(id, entry);
-    const w = theWorker();
-    // (the CAM module is started on this thread already: the worker starts its own from the same source)
-    if (w) w.postMessage({ id, kind: 'post', ...job, cam: camSource() });
-    else here(id, entry);
-  });
+  return run('post', job, onProgress);
 }
 
 /**
@@ -150,16 +153,7 @@ export function postInWorker(job, onProgress = () => {}) {
  * @returns {Promise<import('./optimise-job.js').OptimiseJobResult>}
  */
 export function optimiseInWorker(job, onProgress = () => {}) {
-  const id = ++nextId;
-  supersede();
-  return new Promise((resolve, reject) => {
-    /** @type {Job} */
-    const entry = { resolve, reject, onProgress, job, optimise: true };
-    jobs.set(id, entry);
-    const w = theWorker();
-    if (w) w.postMessage({ id, kind: 'optimise', ...job, cam: camSource() });
-    else here(id, entry);
-  });
+  return run('optimise', job, onProgress);
 }
 
 /** Stops the work in progress (the view's Cancel): its result will not come. */

@@ -55,6 +55,13 @@ export const MOVING_LIMIT = 2_000;
  * points and handles left out; the numbers are of every ruling.
  */
 export const DATA_DETAIL_LIMIT = 20_000;
+/**
+ * Rulings the data scene draws above DATA_DETAIL_LIMIT (the strip and the striction curve
+ * through every k-th ruling; as lines at most LINE_LIMIT): on a view some thousand pixels wide
+ * more merge into the same pixels, and software WebGL took about 1.5 s a frame for a strip of
+ * 20 000 (SwiftShader; 0.3 s for 2 000).
+ */
+export const DATA_DRAWN = 2_000;
 /** Most rulings drawn as lines: a few pixels apart in a full view; more would merge into a moiré. */
 export const LINE_LIMIT = 160;
 

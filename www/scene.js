@@ -43,6 +43,8 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {ImportedData} [data]   your own segments (the "data" scene)
  * @property {(segments: Float64Array, options: import('../pkg/ruledlab.js').SubdivideOptions, onProgress: (f: number) => void, draw?: number) => Promise<{segments: Float32Array, rulings: number, drawn: number}>} [refine]
  *   refinement in a Web Worker, for large models (at most `draw` rulings come back: every k-th)
+ * @property {(job: import('./invariants-job.js').InvariantsJob, onProgress: (f: number) => void) => Promise<import('./invariants-job.js').InvariantsJobResult>} [invariants]
+ *   the invariants of many rulings in a Web Worker, reduced to what a level of detail shows
  * @property {Input} [input]        the reader's edit of the scene's input (its handles dragged):
  *   the scene computes on it instead of its built-in input, with every tool it has
  *
@@ -152,6 +154,10 @@ import { MAX_TEXT_PARAM } from './limits.js';
  *   `context.input` was given): a scene with handles can be edited by dragging them
  * @property {Record<string, number>} [measures]   named values for exercises' conditions (beside
  *   the numeric readouts, which conditions name by their keys), e.g. "striction.minAbsDelta"
+ * @property {string[]} [legendOff]  the labels of legend entries this picture does not draw (a
+ *   level of detail without some of the scene's layers): left out of the legend wherever it is shown
+ * @property {Record<string, string>} [legendAs]  legend entries this picture draws otherwise: the
+ *   label each is shown with instead, by the entry's label
  * @property {string[]} [problems]  what the input's geometry leaves undefined, in words ("rulings
  *   4 and 5 are parallel: δ undefined there"), shown under the readout
  * @property {Record<string, string>} [invalid]   a parameter's value the scene could not use, by its key:
@@ -397,12 +403,18 @@ export function diagramOf(built) {
 }
 
 /**
- * The entries of `scene`'s legend that apply to `params` (an entry's `when` decides): what the
+ * The entries of `scene`'s legend that apply to `params` (an entry's `when` decides) and that
+ * `built` draws (its `legendOff`), labelled as `built` draws them (its `legendAs`): what the
  * legend on the page, the printed figures and the PNG show alike.
  * @param {Scene} scene
  * @param {Params} params
+ * @param {Built | null} [built]
  * @returns {LegendEntry[]}
  */
-export function legendOf(scene, params) {
-  return scene.legend.filter((entry) => !entry.when || entry.when(params));
+export function legendOf(scene, params, built) {
+  const off = built?.legendOff ?? [];
+  const as = built?.legendAs ?? {};
+  return scene.legend
+    .filter((entry) => (!entry.when || entry.when(params)) && !off.includes(entry.label))
+    .map((entry) => (as[entry.label] ? { ...entry, label: as[entry.label] } : entry));
 }

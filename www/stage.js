@@ -21,7 +21,7 @@ import { translator, pickLanguage } from './i18n/translate.js';
 import { readoutSentence } from './ui/readout.js';
 import { showLegend } from './ui/legend.js';
 import { appendRich } from './ui/richtext.js';
-import { refineInWorker } from './compute.js';
+import { invariantsInWorker, refineInWorker } from './compute.js';
 import { copyInput, inputOf } from './edit/input.js';
 import { stageElements } from './stage/elements.js';
 import { enterScene, leaveExercise, openView } from './stage/open.js';
@@ -449,7 +449,7 @@ export class Stage {
       history: true,
     });
     // (a computation that fails keeps the last picture: its legend speaks the new language too)
-    showLegend(this.els.legend, this.scene, this.params, this.i18n.t);
+    showLegend(this.els.legend, this.scene, this.params, this.i18n.t, this.session.built);
     this.exercise.panel.render();
   }
 
@@ -545,6 +545,7 @@ export class Stage {
       lang: this.i18n.lang,
       data: this.data ?? undefined,
       refine: refineInWorker,
+      invariants: invariantsInWorker,
       input: this.input ?? undefined,
     };
   }

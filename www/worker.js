@@ -1,18 +1,12 @@
-// Heavy refinements off the main thread: a module worker with its own wasm instance.
+// The page's long jobs off the main thread: a module worker with its own wasm instance.
 // First message: { init: wasm source } (a URL, or the bytes in the one-file build).
-// Then { id, segments: Float64Array, options, draw } (RuledSurface.subdivide options, steps
-// included; `draw`: most rulings to send back). Messages out: { id, progress } after each
-// step, then { id, segments: Float32Array, rulings, drawn } (transferred; see refine.js), or
-// { id, error, code, details }. A job with `kind: 'post'` is a tool path refined and posted as
-// G-code (post-job.js): { id, kind, poses, tool, refine, post, draw, cam } in, its result out;
-// `cam` is where the CAM module comes from (its URL or bytes), which this worker starts at its
-// first such job. A job with `kind: 'optimise'` is tool poses optimised against a target and
-// posted (optimise-job.js): { id, kind, poses, tool, target, post, cam } in, its result out.
+// Then { id, kind, ...job } (jobs.js: `kind` names the routine, the rest is what it takes; a CAM
+// job carries `cam`, where the CAM module comes from — its URL or bytes —, which this worker
+// starts at its first such job). Messages out: { id, progress } as the job goes, then
+// { id, ...result } (its `segments` transferred: compute.js), or { id, error, code, details }.
 import init from '../pkg/ruledlab.js';
 import { setCamSource, startCam } from './cam.js';
-import { refineSteps } from './refine.js';
-import { postSteps } from './post-job.js';
-import { optimiseSteps } from './optimise-job.js';
+import { STEPS, CAM_KINDS } from './jobs.js';
 
 /** @type {Promise<unknown> | null} */
 let ready = null;
@@ -22,20 +16,15 @@ self.onmessage = async ({ data }) => {
     ready = init({ module_or_path: data.init });
     return;
   }
-  const { id } = data;
+  const { id, kind } = data;
   try {
     await ready;
-    if (data.kind === 'post' || data.kind === 'optimise') {
+    if (CAM_KINDS.has(kind)) {
       if (data.cam) setCamSource(data.cam);
       await startCam();
     }
     const report = (/** @type {number} */ progress) => self.postMessage({ id, progress });
-    const done =
-      data.kind === 'optimise'
-        ? await optimiseSteps(data, report)
-        : data.kind === 'post'
-          ? await postSteps(data, report)
-          : await refineSteps(data, report);
+    const done = await STEPS[/** @type {import('./jobs.js').JobKind} */ (kind)](data, report);
     self.postMessage({ id, ...done }, { transfer: [done.segments.buffer] });
   } catch (e) {
     const error = /** @type {any} */ (e);

@@ -1,12 +1,14 @@
 // Many rulings given to <ruled-view> as data, as the notebook's View.from_segments sends them (a
 // Float64Array, six numbers a ruling): 100 000 and 10⁶ are drawn with no error and counted in the
-// readout, at the level of detail the view says (above 20 000 rulings the strip, the rulings and
-// the striction curve through every k-th ruling; the numbers of all); how long that took and the
-// page's longest pause meanwhile are reported (speed is measured, not judged: the times go to the
-// artifacts and the book, never into an assertion). Drawing every ruling's strip, lines, normals,
-// points and handles had taken 26 s for 100 000 rulings and more than 5 minutes for 10⁶ in the
-// test machine's software WebGL (SwiftShader), nearly all of it native drawing. The reductions
-// that failed from about 125 000 rulings are tested in Node (tests/node/spreads.test.mjs).
+// readout, at the level of detail the view says (above 20 000 rulings the strip and the striction
+// curve through every k-th ruling, 2 001 of them, and at most 160 rulings as lines; the numbers
+// of all), the invariants computed in the page's worker, not on its thread (no measure of them in
+// the page's timeline; the rulings drawn and counted before they come); how long that took and
+// the page's longest pause meanwhile are reported (speed is measured, not judged: the times go to
+// the artifacts and the book, never into an assertion). Drawing every ruling's strip, lines,
+// normals, points and handles had taken 26 s for 100 000 rulings and more than 5 minutes for 10⁶
+// in the test machine's software WebGL (SwiftShader), nearly all of it native drawing. The
+// reductions that failed from about 125 000 rulings are tested in Node (tests/node/spreads.test.mjs).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -42,22 +44,40 @@ for (const n of [100_000, 1_000_000]) {
         longest = Math.max(longest, now - last);
         last = now;
       }, 20);
+      const readout = (/** @type {string} */ key) =>
+        view.readouts?.().find((/** @type {{key: string}} */ r) => r.key === key)?.value;
+      const noteText = () => view.shadowRoot?.querySelector('.rl-readout-note')?.textContent ?? '';
+      const description = () => view.shadowRoot?.querySelector('canvas')?.getAttribute('aria-describedby');
+      performance.clearMeasures();
       const t0 = performance.now();
       view.data = { segments };
       await view.opening;
-      // drawn: the readout counts the rulings and a frame has been drawn since
+      // first the rulings, counted, with the invariants still to come
+      const first = { counted: readout('readout.rulings'), parallel: readout('readout.parallelPairs') };
+      // drawn: the readout counts the parallel pairs and a frame has been drawn since
       const frames = Number(view.dataset.frames ?? 0);
       for (;;) {
-        const counted = view.readouts?.().find((/** @type {{key: string}} */ r) => r.key === 'readout.rulings');
-        if (counted?.value === count && Number(view.dataset.frames ?? 0) > frames) break;
+        if (readout('readout.parallelPairs') === 0 && Number(view.dataset.frames ?? 0) > frames) break;
         if (errors.length || performance.now() - t0 > 240000) break;
         await new Promise((r) => setTimeout(r, 20));
       }
       const seconds = (performance.now() - t0) / 1000;
       clearInterval(timer);
-      const counted = view.readouts?.().find((/** @type {{key: string}} */ r) => r.key === 'readout.rulings');
-      const note = view.shadowRoot?.querySelector('.rl-readout-note')?.textContent ?? '';
-      return { seconds, longestPause: longest / 1000, counted: counted?.value, errors, note };
+      const id = description();
+      const said = (id && view.shadowRoot?.getElementById(id)?.textContent) || '';
+      return {
+        seconds,
+        longestPause: longest / 1000,
+        first,
+        counted: readout('readout.rulings'),
+        parallel: readout('readout.parallelPairs'),
+        errors,
+        note: noteText(),
+        said,
+        legend: [...(view.shadowRoot?.querySelectorAll('.rl-legend li') ?? [])].map((li) => li.textContent),
+        // the invariants computed on the page's own thread would leave this measure
+        onPage: performance.getEntriesByName('ruledlab:core:RuledSurface.invariants').length,
+      };
     }, n);
     mkdirSync(ARTIFACTS, { recursive: true });
     writeFileSync(`${ARTIFACTS}/million-${n}.json`, JSON.stringify(report, null, 1));
@@ -66,7 +86,24 @@ for (const n of [100_000, 1_000_000]) {
     );
     assert.deepEqual(report.errors, []);
     assert.equal(report.counted, n);
-    assert.match(report.note, new RegExp(`one ruling in ${n / 20_000} is drawn \\(20,?001 of them\\)`));
+    assert.deepEqual(report.first, { counted: n, parallel: undefined }, 'the rulings first, the invariants after');
+    assert.equal(report.parallel, 0);
+    assert.equal(report.onPage, 0, 'no invariants computed on the page');
+    assert.match(
+      report.said,
+      /drawn at a level of detail with its striction curve; the smallest \|δ\| of a pair of rulings is/,
+    );
+    assert.deepEqual(report.legend, ['your rulings', 'striction curve, through the rulings drawn']);
+    assert.doesNotMatch(report.note, /being computed/);
+    // 2 001 rulings through the strip (every k-th and the last), every 13th of them as a line
+    const every = n / 2_000;
+    const digits = (/** @type {number} */ x) => x.toLocaleString('en').replace(',', ',?');
+    assert.match(
+      report.note,
+      new RegExp(
+        `through one ruling in ${digits(every)} \\(2,?001 of them\\), and one ruling in ${digits(13 * every)} is`,
+      ),
+    );
     assert.deepEqual(problems, []);
     await page.close();
   });

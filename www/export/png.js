@@ -29,7 +29,7 @@ export async function png(stage, { scale = 1, legend = true } = {}) {
     drawRich(ctx, label.text, Number(match[1]) + 3, Number(match[2]) + 13, 'italic 15px "Times New Roman", serif');
   });
   if (legend && stage.scene) {
-    const entries = legendOf(stage.scene, stage.params);
+    const entries = legendOf(stage.scene, stage.params, viewer.built);
     ctx.font = '12px system-ui, sans-serif';
     const width =
       greatest(

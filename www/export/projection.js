@@ -99,7 +99,7 @@ export function figureOf(stage) {
       const match = /translate\(([-\d.e]+)px, ([-\d.e]+)px\)/.exec(el.style.transform);
       return { x: match ? Number(match[1]) : 0, y: match ? Number(match[2]) : 0, text };
     });
-  const legend = (stage.scene ? legendOf(stage.scene, stage.params) : []).map((e) => ({
+  const legend = (stage.scene ? legendOf(stage.scene, stage.params, built) : []).map((e) => ({
     style: e.style,
     label: stage.i18n.t(e.label),
   }));

@@ -8,7 +8,8 @@ import { focalLayers } from '../layers/focal.js';
 import { defineScene, scoped, bounds, f32 } from '../scene.js';
 import { lineSet, parallelProblems, rulingSet, rulingValues, strictionTargets } from '../edit/sets.js';
 import { least, append } from '../reduce.js';
-import { DATA_DETAIL_LIMIT } from '../limits.js';
+import { DATA_DETAIL_LIMIT, DATA_DRAWN, LINE_LIMIT } from '../limits.js';
+import { invariantsSummary } from '../invariants-job.js';
 
 /**
  * What the scene shows before anything is imported: five rulings of a small twisted strip.
@@ -34,6 +35,7 @@ export const scene = defineScene({
     // the focal checkbox acts on a grid of lines only, and the surface entries on surfaces only:
     // one legend at a time (their colours are shared: normals and focal sheet 1 are both blue)
     { style: 'normal', label: 'legend.normals', when: (p) => !p.focal },
+    // (many rulings: drawn as a curve through the rulings drawn, the picture's legendAs says)
     { style: 'striction', label: 'legend.striction', when: (p) => !p.focal },
     { style: 'focal1', label: 'focal.legend.focal1', when: (p) => !!p.focal },
     { style: 'focal2', label: 'focal.legend.focal2', when: (p) => !!p.focal },
@@ -89,33 +91,30 @@ export const scene = defineScene({
       }
       const closed = !!p.closed;
       const s = own(RuledSurface.fromSegments(segments));
+      // many rulings: drawn through every k-th of them (the numbers are of all), not editable,
+      // their invariants computed in the worker where the page has one
+      if (s.length > DATA_DETAIL_LIMIT) {
+        const every = Math.ceil(s.length / DATA_DRAWN);
+        const job = { segments, closed, every };
+        if (!ctx.invariants) return detailed(invariantsSummary(s, closed, every), job, p, ctx);
+        const first = detailed({ segments: s.everyF32(every), rulings: s.length }, job, p, ctx);
+        const compute = ctx.invariants;
+        first.later = (onProgress) => compute(job, onProgress).then((done) => detailed(done, job, p, ctx));
+        return first;
+      }
       const inv = s.invariants({ closed });
       const parallel = inv.parallel.reduce((a, b) => a + b, 0);
-      // many rulings: drawn through every k-th of them (the numbers are of all), not editable
-      const every = Math.ceil(s.length / DATA_DETAIL_LIMIT);
-      const seg = every > 1 ? s.everyF32(every) : s.segmentsF32();
+      const seg = s.segmentsF32();
       const drawn = seg.length / 6;
-      const striction = every > 1 ? everyPoint(inv.striction, every, closed ? 0 : 1) : f32(inv.striction);
+      const striction = f32(inv.striction);
       /** @type {import('../scene.js').Layer[]} */
       const layers = [
         { kind: 'segments', style: 'ruling', positions: seg },
-        ...(every > 1
-          ? []
-          : /** @type {import('../scene.js').Layer[]} */ ([
-              { kind: 'segments', style: 'normal', positions: f32(inv.footpoints) },
-            ])),
+        { kind: 'segments', style: 'normal', positions: f32(inv.footpoints) },
         { kind: 'polyline', style: 'striction', positions: striction, closed },
-        ...(every > 1
-          ? []
-          : /** @type {import('../scene.js').Layer[]} */ ([
-              { kind: 'points', style: 'strictionPoint', positions: striction },
-            ])),
+        { kind: 'points', style: 'strictionPoint', positions: striction },
       ];
       if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(drawn, closed) });
-      const notes = [
-        p.focal ? t('data.note.focalRulings') : '',
-        every > 1 ? t('data.note.detail', { every, drawn, max: DATA_DETAIL_LIMIT }) : '',
-      ].filter(Boolean);
       return {
         bounds: bounds(seg),
         layers,
@@ -129,43 +128,63 @@ export const scene = defineScene({
           least: least(Array.from(inv.distribution, Math.abs).filter(Number.isFinite)),
         }),
         problems: parallelProblems(inv.parallel, s.length, t),
-        ...(notes.length ? { note: notes.join(' ') } : {}),
+        ...(p.focal ? { note: t('data.note.focalRulings') } : {}),
         data: { segments },
-        ...(every > 1
-          ? {}
-          : {
-              input: {
-                sets: [
-                  {
-                    ...rulingSet(s.segments(), undefined, closed),
-                    targets: [strictionTargets(inv.striction, s.length)],
-                  },
-                ],
-                from,
-                values: rulingValues(inv, s.length, t),
-              },
-            }),
+        input: {
+          sets: [
+            {
+              ...rulingSet(s.segments(), undefined, closed),
+              targets: [strictionTargets(inv.striction, s.length)],
+            },
+          ],
+          from,
+          values: rulingValues(inv, s.length, t),
+        },
       };
     });
   },
 });
 
 /**
- * The striction curve's points at the rulings drawn (0, k, 2k, …, and the last), as f32: point j
- * belongs to ruling j + `first` (an open strip's curve begins at ruling 1), and the curve keeps
- * its two ends.
- * @param {ArrayLike<number>} points @param {number} every @param {number} first
+ * The picture of many rulings at a level of detail: the rulings and the strip through every k-th
+ * of them and, once computed (`striction` given), the striction curve through them, the parallel
+ * pairs and the smallest |δ|; not editable.
+ * @param {Partial<import('../invariants-job.js').InvariantsJobResult> & {segments: Float32Array, rulings: number}} shown
+ * @param {import('../invariants-job.js').InvariantsJob} job
+ * @param {import('../scene.js').Params} p @param {import('../scene.js').Context} ctx
+ * @returns {import('../scene.js').Built}
  */
-function everyPoint(points, every, first) {
-  const n = points.length / 3;
-  const picked = [0];
-  for (let r = every; r - first < n - 1; r += every) if (r - first > 0) picked.push(r - first);
-  if (n > 1) picked.push(n - 1);
-  const out = new Float32Array(3 * picked.length);
-  picked.forEach((i, k) => {
-    out[3 * k] = points[3 * i];
-    out[3 * k + 1] = points[3 * i + 1];
-    out[3 * k + 2] = points[3 * i + 2];
-  });
-  return out;
+function detailed(shown, { segments, closed, every }, p, ctx) {
+  const { t } = ctx;
+  const { rulings: n, striction, parallel } = shown;
+  const seg = shown.segments;
+  const drawn = seg.length / 6;
+  // as lines, fewer still: thousands of lines merge into a moiré (and cost software WebGL seconds)
+  const lineEvery = Math.ceil(drawn / LINE_LIMIT);
+  const lines = lineEvery > 1 ? scoped((own) => own(RuledSurface.fromSegments(seg)).everyF32(lineEvery)) : seg;
+  /** @type {import('../scene.js').Layer[]} */
+  const layers = [{ kind: 'segments', style: 'ruling', positions: lines }];
+  if (striction) layers.push({ kind: 'polyline', style: 'striction', positions: striction, closed });
+  if (p.strip) layers.push({ kind: 'mesh', style: 'strip', positions: seg, indices: stripIndices(drawn, closed) });
+  const notes = [
+    p.focal ? t('data.note.focalRulings') : '',
+    t('data.note.detail', { every, drawn, lines: every * lineEvery, max: DATA_DETAIL_LIMIT }),
+    parallel ? '' : t('data.note.computing', { n }),
+  ].filter(Boolean);
+  return {
+    bounds: bounds(seg),
+    layers,
+    readouts: [
+      { label: 'readout.rulings', value: n },
+      ...(parallel ? [{ label: 'readout.parallelPairs', value: shown.parallelPairs ?? 0 }] : []),
+    ],
+    description: parallel
+      ? t('data.describeDetail', { n, parallel: shown.parallelPairs ?? 0, least: shown.leastDelta ?? Infinity })
+      : t('data.describePending', { n }),
+    problems: parallel ? parallelProblems(parallel, n, t) : [],
+    note: notes.join(' '),
+    data: { segments },
+    legendOff: ['legend.normals', ...(striction ? [] : ['legend.striction'])],
+    legendAs: { 'legend.striction': 'data.legend.strictionDetail' },
+  };
 }

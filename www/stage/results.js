@@ -111,7 +111,7 @@ export class Results {
       delete els.root.dataset.ready;
       return;
     }
-    showLegend(els.legend, scene, state.params, t);
+    showLegend(els.legend, scene, state.params, t, built);
     // the legend may cover another share of a narrow view now: a fitted view is framed anew (not
     // while the reader moves the geometry: the view holds still under the pointer)
     if (!state.input) this.ports.refit();

@@ -47,16 +47,17 @@ export function swatch(doc, styleKey) {
 }
 
 /**
- * Fills `list` with the scene's legend entries visible for `params`.
+ * Fills `list` with the scene's legend entries visible for `params` in the picture `built`.
  * @param {HTMLElement} list
  * @param {import('../scene.js').Scene} scene
  * @param {import('../scene.js').Params} params
  * @param {(key: string) => string} t
+ * @param {import('../scene.js').Built | null} [built]
  */
-export function showLegend(list, scene, params, t) {
+export function showLegend(list, scene, params, t, built) {
   const doc = list.ownerDocument;
   list.replaceChildren(
-    ...legendOf(scene, params).map((entry) => {
+    ...legendOf(scene, params, built).map((entry) => {
       const li = doc.createElement('li');
       li.dataset.style = entry.style;
       li.append(swatch(doc, entry.style), appendRich(doc.createElement('span'), t(entry.label)));

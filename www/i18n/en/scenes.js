@@ -204,14 +204,19 @@ export default {
   'data.title': 'Your data',
   'data.param.closed': 'Closed (last ruling followed by the first)',
   'data.legend.rulings': 'your rulings',
+  'data.legend.strictionDetail': 'striction curve, through the rulings drawn',
   'data.note.closedGrid':
     '“Closed” follows the last ruling of a surface by the first; a grid of lines is shown as it is, not closed.',
   'data.note.detail':
-    'Level of detail: one ruling in {every} is drawn ({drawn} of them); the numbers are of every ruling. Rulings can be dragged in models of up to {max}.',
+    'Level of detail: the strip and the striction curve go through one ruling in {every} ({drawn} of them), and one ruling in {lines} is drawn as a line; the numbers are of every ruling. Rulings can be dragged in models of up to {max}.',
+  'data.note.computing': 'The invariants of all {n} rulings are being computed in the background (Cancel stops it).',
   'data.note.focalRulings': 'Focal surfaces are those of a grid of lines; your rulings are a surface, which has none.',
   'data.readout.lines': 'lines (congruence)',
   'data.describe':
     'Your ruled surface of {n} rulings ({parallel} parallel pairs), with its common perpendiculars and striction polygon; the smallest |δ| of a pair of rulings is {least}.',
+  'data.describeDetail':
+    'Your ruled surface of {n} rulings ({parallel} parallel pairs), drawn at a level of detail with its striction curve; the smallest |δ| of a pair of rulings is {least}.',
+  'data.describePending': 'Your ruled surface of {n} rulings; its invariants are being computed.',
   'data.describeCongruence': 'Your line congruence of {rows} × {cols} lines.',
 
   // large models
