@@ -276,7 +276,9 @@ pub const KLEIN_OUTLINE_CIRCLES: usize = 5;
 pub const KLEIN_OUTLINE_SAMPLES: usize = 64;
 
 /// Two consecutive normalised rulings meet (a torsal step) when |Ω(L₁, L₂)| ≤ this ·
-/// max(1, |m₁|, |m₂|) (`klein/polygon.rs`): rounding of the moments' few products.
+/// max(1, |m₁|, |m₂|) (`klein/polygon.rs`): rounding of the moments' few products. The plane of
+/// three lines lies on M (they meet pairwise: no conic) when the Klein form is at most this on
+/// its orthonormal basis (`klein/sections.rs`).
 pub const KLEIN_TORSAL: f64 = 1e-12;
 
 /// Tolerances the test suites use, named by what they claim.

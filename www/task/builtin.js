@@ -469,6 +469,29 @@ const RAW = [
     ],
     solution: { answers: { step: 11 } },
   },
+  {
+    id: 'klein-conic',
+    title: { en: 'Rulings on a conic of M', de: 'Erzeugende auf einem Kegelschnitt von M' },
+    prompt: {
+      en: 'Three lines, as points of the Klein quadric M, span a plane of P⁵; where it meets M it cuts out a conic. The rulings of a regulus — one family of a hyperboloid of one sheet or of a hyperbolic paraboloid — all lie on that conic. The helicoid’s do not: its rulings leave the plane of the first three by far. Choose a surface of the menu whose rulings lie on a conic of M: the largest distance of a ruling from the conic’s plane below 10⁻⁹.',
+      de: 'Drei Geraden spannen als Punkte der Klein-Quadrik M eine Ebene des P⁵ auf; wo sie M trifft, schneidet sie einen Kegelschnitt aus. Die Erzeugenden einer Regelschar – einer Schar eines einschaligen Hyperboloids oder eines hyperbolischen Paraboloids – liegen alle auf diesem Kegelschnitt. Die der Wendelfläche nicht: Ihre Erzeugenden verlassen die Ebene der ersten drei weit. Wählen Sie eine Fläche des Menüs, deren Erzeugende auf einem Kegelschnitt von M liegen: der größte Abstand einer Erzeugenden von der Ebene des Kegelschnitts unter 10⁻⁹.',
+    },
+    scene: 'klein',
+    params: { surface: 'helicoid', n: 24, conic: true },
+    change: ['surface', 'mix', 'turn', 'unit', 'space', 'mark'],
+    goal: [{ value: 'klein.readout.plane', below: 1e-9 }],
+    hints: [
+      {
+        en: 'A regulus is a plane section of M; a surface whose rulings belong to a linear complex (a hyperplane section: the helicoid’s, whose residual is 0) need not be one.',
+        de: 'Eine Regelschar ist ein ebener Schnitt von M; eine Fläche, deren Erzeugende einem linearen Komplex angehören (einem Hyperebenenschnitt: die der Wendelfläche, deren Residuum 0 ist), muss keine sein.',
+      },
+      {
+        en: 'The hyperboloid and the hyperbolic paraboloid pass. So does the elliptic cone, in its own way: its rulings pass through one point, and the lines through a point fill a plane lying on M — the distance is 0, but that plane cuts out no conic (the cone’s rulings are a conic within it).',
+        de: 'Das Hyperboloid und das hyperbolische Paraboloid bestehen. Auf eigene Weise auch der elliptische Kegel: Seine Erzeugenden gehen durch einen Punkt, und die Geraden durch einen Punkt füllen eine Ebene, die ganz auf M liegt – der Abstand ist 0, aber diese Ebene schneidet keinen Kegelschnitt aus (die Erzeugenden des Kegels sind ein Kegelschnitt in ihr).',
+      },
+    ],
+    solution: { params: { surface: 'hyperbolic-paraboloid' } },
+  },
 ];
 
 /** An exercise of the list, its solution typed as a catalogue entry's formulas where it says so. */
