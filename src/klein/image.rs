@@ -196,4 +196,64 @@ mod tests {
         assert!(Projection::new(0.5, 0.0, 0.0).is_err());
         assert!(Projection::new(0.5, 0.0, f64::INFINITY).is_err());
     }
+
+    /// The outline as its doc says, curve by curve: parallel j of the outer sphere at height
+    /// outer·(−1 + (2j + 1)/circles), half meridian j from the north pole to the south pole at
+    /// azimuth πj/circles, each of `samples` equal chords; the inner sphere's three great circles
+    /// in the coordinate planes only while its radius is above a thousandth of the outer one.
+    #[test]
+    fn the_outline_is_parallels_half_meridians_and_the_inner_great_circles() {
+        let (circles, samples) = (5, 12);
+        let p = Projection::new(0.3, 0.0, 1.0).unwrap();
+        let (inner, outer) = p.radii();
+        let o = p.outline(circles, samples).unwrap();
+        assert_eq!(o.len(), 2 * circles + 3);
+        let near = |a: DVec3, b: DVec3| (a - b).length() < 1e-12;
+        for j in 0..circles {
+            let (parallel, meridian) = (&o[2 * j], &o[2 * j + 1]);
+            let z = outer * (-1.0 + (2.0 * j as f64 + 1.0) / circles as f64);
+            let r = (outer * outer - z * z).sqrt();
+            for (k, q) in parallel.iter().enumerate() {
+                let t = TAU * k as f64 / samples as f64;
+                assert!(near(*q, DVec3::new(r * t.cos(), r * t.sin(), z)), "parallel {j}, point {k}: {q}");
+            }
+            let a = PI * j as f64 / circles as f64;
+            for (k, q) in meridian.iter().enumerate() {
+                let t = PI * k as f64 / samples as f64;
+                let want = outer * DVec3::new(t.sin() * a.cos(), t.sin() * a.sin(), t.cos());
+                assert!(near(*q, want), "meridian {j}, point {k}: {q}");
+            }
+        }
+        let planes = [DVec3::Z, DVec3::Y, DVec3::X];
+        for (circle, normal) in o[2 * circles..].iter().zip(planes) {
+            assert!(near(circle[0], circle[samples]));
+            assert!(circle.iter().all(|q| (q.length() - inner).abs() < 1e-12 && q.dot(normal).abs() < 1e-15));
+            // equal chords, a turn in all
+            let chord = (circle[1] - circle[0]).length();
+            assert!((chord - 2.0 * inner * (PI / samples as f64).sin()).abs() < 1e-12);
+        }
+        // the inner sphere at a thousandth of the outer one, and below it: drawn, then not
+        let at = |ratio: f64| {
+            // |cos α − sin α| / (cos α + sin α) = ratio at α = π/4 − atan(ratio)
+            Projection::new(FRAC_PI_4 - ratio.atan(), 0.0, 1.0).unwrap().outline(1, 3).unwrap().len()
+        };
+        assert_eq!(at(1.001e-3), 5);
+        assert_eq!(at(0.999e-3), 2);
+    }
+
+    /// The zero 6-vector and one out of range split into zero vectors, not NaN.
+    #[test]
+    fn a_zero_or_infinite_point_splits_into_zero_vectors() {
+        let p = Projection::new(0.3, 0.0, 1.0).unwrap();
+        for d in [DVec3::ZERO, DVec3::new(f64::INFINITY, 0.0, 0.0), DVec3::new(1e300, 1e300, 0.0)] {
+            let (x, y) = p.split(&KleinPoint { d, m: DVec3::ZERO });
+            assert_eq!((x, y), (DVec3::ZERO, DVec3::ZERO), "{d}");
+        }
+        let (x, y) = p.split(&KleinPoint { d: DVec3::X, m: DVec3::ZERO });
+        assert!(near_unit(x) && near_unit(y));
+    }
+
+    fn near_unit(v: DVec3) -> bool {
+        (v.length() - 1.0).abs() < 1e-15
+    }
 }

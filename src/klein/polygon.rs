@@ -134,4 +134,34 @@ mod tests {
             assert!((flipped.omega[i] - sign * k.omega[i]).abs() < 1e-15);
         }
     }
+
+    /// A cone far from the origin: its moments are about 10⁴, Ω's rounding about 10⁻¹², and
+    /// the torsal test scales with |m| (1e-12 alone would call steps of a cone skew).
+    #[test]
+    fn the_torsal_test_scales_with_the_moments() {
+        let apex = DVec3::new(7e3, -4e3, 5e3);
+        let ring: Vec<DVec3> =
+            (0..16).map(|i| apex + DVec3::new((0.4 * i as f64).cos(), (0.4 * i as f64).sin(), 1.3)).collect();
+        let k = KleinPolygon::of(&cone(&ring, apex, Span { from: 0.2, to: 1.5 }).unwrap(), false);
+        let ms: Vec<f64> = k.points.iter().map(|p| p.m.length()).collect();
+        assert!(ms.iter().all(|&m| m > 3e3), "{ms:?}");
+        assert!(k.omega.iter().any(|w| w.abs() > 1e-13), "rounding of moments this long: {:?}", k.omega);
+        assert!(k.torsal.iter().all(|&t| t), "{:?}", k.omega);
+    }
+
+    /// Two rulings make one step, closed or not (a closed polygon needs three); the step of least
+    /// |Ω| is the one the omegas say (the quartic's torsal ruling at u = 0: step 11 of 23).
+    #[test]
+    fn two_rulings_one_step_and_the_least_step() {
+        let s = AnalyticSurface::by_name("hyperboloid").unwrap();
+        let two = s.sample(2, s.ranges()).unwrap();
+        assert_eq!(KleinPolygon::of(&two, true).omega.len(), 1);
+        assert_eq!(KleinPolygon::of(&two, false).omega.len(), 1);
+        let q = AnalyticSurface::by_name("quartic").unwrap();
+        let k = KleinPolygon::of(&q.sample(24, q.ranges()).unwrap(), false);
+        let (i, w) = k.least_omega().unwrap();
+        assert_eq!((i, w), (11, k.omega[11]));
+        assert!(k.omega.iter().all(|x| x.abs() >= w.abs()));
+        assert!(w < 0.0 && w.abs() < 1e-4, "{w}");
+    }
 }

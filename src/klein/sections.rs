@@ -230,4 +230,29 @@ mod tests {
             assert!(plane.distance(&ruling(0.27 * k as f64)) < 1e-14);
         }
     }
+
+    /// The distance is the sine of the angle between a 6-vector and the plane's subspace W:
+    /// 2b₀ + 3u with u a unit vector orthogonal to W lies 3/√13 off it, whatever its length.
+    #[test]
+    fn the_distance_is_the_sine_of_the_angle_to_the_plane() {
+        let l = |p: DVec3, d: DVec3| KleinPoint::of_line(&Line { point: p, dir: d.normalize() });
+        let plane = RegulusPlane::through([
+            &l(DVec3::new(0.3, 1.0, -0.2), DVec3::new(1.0, 0.2, 0.5)),
+            &l(DVec3::new(-1.0, 0.4, 0.9), DVec3::new(0.1, 1.0, -0.3)),
+            &l(DVec3::new(0.2, -0.7, 1.1), DVec3::new(-0.4, 0.3, 1.0)),
+        ])
+        .unwrap();
+        let mut u = [0.3, -1.2, 0.5, 0.8, 0.1, -0.6];
+        for b in &plane.basis {
+            u = axpy(-dot(b, &u), b, &u);
+        }
+        let n = dot(&u, &u).sqrt();
+        let u = u.map(|x| x / n);
+        for scale in [1.0, 1e-3, 250.0] {
+            let v: V6 = std::array::from_fn(|k| scale * (2.0 * plane.basis[0][k] + 3.0 * u[k]));
+            let d = plane.distance(&KleinPoint::from_array(v));
+            assert!((d - 3.0 / 13f64.sqrt()).abs() < 1e-14, "{scale}: {d}");
+        }
+        assert!(plane.distance(&KleinPoint::from_array(u)) > 1.0 - 1e-15);
+    }
 }
