@@ -186,6 +186,8 @@ mod tests {
         let p = Projection::new(0.1, 0.0, 1.0).unwrap();
         assert!(p.outline(0, 24).is_err() && p.outline(4, 2).is_err());
         assert!(p.outline(4, MAX_KLEIN_OUTLINE_SAMPLES + 1).is_err());
+        assert!(p.outline(MAX_KLEIN_OUTLINE_SAMPLES + 1, 3).is_err());
+        assert_eq!(p.outline(MAX_KLEIN_OUTLINE_SAMPLES, 3).unwrap().len(), 2 * MAX_KLEIN_OUTLINE_SAMPLES + 3);
     }
 
     #[test]

@@ -255,4 +255,91 @@ mod tests {
         }
         assert!(plane.distance(&KleinPoint::from_array(u)) > 1.0 - 1e-15);
     }
+
+    /// The conic is on the nappe of the first line's orientation, whichever way the rulings run
+    /// and whichever three are taken: every ruling is near a positive multiple of a sample.
+    #[test]
+    fn the_conic_keeps_the_rulings_orientation() {
+        let unit = |v: V6| {
+            let n = dot(&v, &v).sqrt();
+            v.map(|x| x / n)
+        };
+        for name in ["hyperboloid", "hyperbolic-paraboloid"] {
+            let s = AnalyticSurface::by_name(name).unwrap();
+            let k = KleinPolygon::of(&s.sample(24, s.ranges()).unwrap(), false);
+            for reversed in [false, true] {
+                let points: Vec<KleinPoint> = k
+                    .points
+                    .iter()
+                    .map(|p| if reversed { KleinPoint::from_array(p.to_array().map(|x| -x)) } else { *p })
+                    .collect();
+                for [i, j, l] in [[0, 11, 23], [3, 17, 8], [20, 2, 12]] {
+                    let plane = RegulusPlane::through([&points[i], &points[j], &points[l]]).unwrap();
+                    let conic = plane.conic(600).unwrap();
+                    for p in &points {
+                        let b = unit(p.to_array());
+                        let nearest = conic.iter().map(|w| dot(&unit(w.to_array()), &b)).fold(f64::MIN, f64::max);
+                        assert!(nearest > 0.999, "{name} {reversed} {i} {j} {l}: {nearest}");
+                    }
+                }
+            }
+        }
+    }
+
+    /// Three rulings close together (a tenth of a radian apart) still span a regulus's plane:
+    /// the Klein form on it is small, and the test of its determinant is relative to that.
+    #[test]
+    fn three_close_rulings_still_give_the_conic() {
+        let s = AnalyticSurface::by_name("hyperboloid").unwrap();
+        let k = KleinPolygon::of(&s.sample(200, s.ranges()).unwrap(), true);
+        let plane = RegulusPlane::through([&k.points[0], &k.points[3], &k.points[6]]).unwrap();
+        assert!(plane.conic(64).is_ok());
+        assert!(k.points.iter().all(|p| plane.distance(p) < 1e-9));
+        // three pairwise skew lines 10⁻³ apart (x-axis; along y at height ε; along z through
+        // (ε, ε, 0)): the Klein form on their plane is about ε, its determinant ε³, and they
+        // span a regulus all the same, whose conic passes through each of them (up to its
+        // orientation: lines given at random need not run as one regulus runs)
+        let eps = 1e-3;
+        let l = |at: DVec3, d: DVec3| KleinPoint::of_line(&Line { point: at, dir: d });
+        let three =
+            [l(DVec3::ZERO, DVec3::X), l(DVec3::new(0.0, 0.0, eps), DVec3::Y), l(DVec3::new(eps, eps, 0.0), DVec3::Z)];
+        let plane = RegulusPlane::through([&three[0], &three[1], &three[2]]).unwrap();
+        let conic = plane.conic(720).unwrap();
+        for line in &three {
+            let b = line.to_array();
+            let nearest = conic
+                .iter()
+                .map(|w| {
+                    let a = w.to_array();
+                    dot(&a, &b).abs() / (dot(&a, &a) * dot(&b, &b)).sqrt()
+                })
+                .fold(f64::MIN, f64::max);
+            assert!(nearest > 0.9999, "{nearest}");
+        }
+    }
+
+    /// Three lines of a pencil far from the origin (|m| about 10³), the third moved 10⁻⁴ out of
+    /// the pencil's plane: dependent within 10⁻⁶ of the length of its 6-vector, so no plane.
+    #[test]
+    fn nearly_dependent_lines_far_away_span_no_plane() {
+        let p = DVec3::new(1000.0, 0.0, 0.0);
+        let l = |at: DVec3, d: DVec3| KleinPoint::of_line(&Line { point: at, dir: d.normalize() });
+        let (a, b) = (l(p, DVec3::Y), l(p, DVec3::new(0.0, 1.0, 1.0)));
+        let c = l(p + DVec3::new(1e-4, 0.0, 0.0), DVec3::new(0.0, 1.0, -1.0));
+        assert!(RegulusPlane::through([&a, &b, &c]).is_err());
+        // (50 out of the plane is not: its 6-vector leaves the span by 5·10⁻⁵ of its length)
+        let c = l(p + DVec3::new(50.0, 0.0, 0.0), DVec3::new(0.0, 1.0, -1.0));
+        assert!(RegulusPlane::through([&a, &b, &c]).is_ok());
+    }
+
+    /// Ω(C, L) line by line: the complex C = (ẑ, 0) holds the lines meeting the z-axis; a line
+    /// through (1, 0, 0) along y is its unit moment's z, 1, off it; one through the origin, 0.
+    #[test]
+    fn complex_residuals_line_by_line() {
+        let l = |at: DVec3, d: DVec3| KleinPoint::of_line(&Line { point: at, dir: d });
+        let r = complex_residuals([0.0, 0.0, 1.0, 0.0, 0.0, 0.0], &[l(DVec3::X, DVec3::Y), l(DVec3::ZERO, DVec3::X)]);
+        assert_eq!(r, vec![1.0, 0.0]);
+        let r = complex_residuals([0.0, 0.0, 0.0, 0.0, 0.0, 2.0], &[l(DVec3::X, DVec3::Z)]);
+        assert_eq!(r, vec![2.0]);
+    }
 }
