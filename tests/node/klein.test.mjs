@@ -1,9 +1,13 @@
 // The Klein quadric view through the package (beyond the paper; docs/src/guide/klein.md): the
-// shapes of kleinView's buffers, exact answers (a regulus on one conic, a cone torsal at every step,
-// Ω = −h sin φ against the invariants), and coded errors.
+// shapes of kleinView's buffers, exact answers (a regulus on one conic, a cone torsal at every step
+// and its rulings in a plane on M holding no conic, Ω = −h sin φ against the invariants), the
+// scene's legend naming a conic only where one is drawn, and coded errors.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import ruledlab from './load.mjs';
+import { SCENES } from '../../www/scenes/index.js';
+import { translator } from '../../www/i18n/index.js';
+import { legendOf, defaults } from '../../www/scene.js';
 
 const { AnalyticSurface, kleinView } = ruledlab;
 
@@ -56,6 +60,30 @@ test('kleinView: a cone is torsal at every step, a helical surface lies in a lin
       assert.ok(k.planeDistance > 1e-3, 'not a regulus');
     });
   });
+});
+
+test('the elliptic cone: its rulings lie in a plane on M, which holds no conic — none drawn, none in the legend', () => {
+  using([AnalyticSurface.byName('cone')], (c) => {
+    using([c.sample(24, { uMin: 0, uMax: 2 * Math.PI, vMin: 0.2, vMax: 1.2, closed: true })], (s) => {
+      const k = kleinView(s.segments(), { closed: true });
+      assert.ok(k.planeDistance < 1e-14, `plane ${k.planeDistance}`);
+      assert.equal(k.conic.length, 0);
+    });
+  });
+  const { t, format } = translator('en');
+  const scene = SCENES.find((x) => x.id === 'klein');
+  assert.ok(scene);
+  const labels = (/** @type {string} */ surface) => {
+    const params = { ...defaults(scene), surface, conic: true };
+    const built = scene.create(params, { t, format, lang: 'en' });
+    return { labels: legendOf(scene, params, built).map((e) => e.label), text: built.description };
+  };
+  for (const surface of ['cone', 'helicoid']) {
+    const { labels: shown, text } = labels(surface);
+    assert.ok(!shown.includes('klein.legend.conic'), `${surface}: ${shown}`);
+    assert.match(text, /span no plane cutting M in a conic/);
+  }
+  assert.ok(labels('hyperboloid').labels.includes('klein.legend.conic'));
 });
 
 test('kleinView: wrong options are errors with codes', () => {

@@ -120,6 +120,8 @@ export const scene = defineScene({
           .filter((x) => x)
           .join(' '),
         measures: { 'klein.leastStep': k.leastStep, 'klein.leastOmega': k.leastOmega },
+        // the three rulings span no conic (the description says so): none in the legend either
+        ...(p.conic && !conic ? { legendOff: ['klein.legend.conic'] } : {}),
         data: { segments: surface.segments() },
       };
     });
