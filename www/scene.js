@@ -150,6 +150,8 @@ import { MAX_TEXT_PARAM } from './limits.js';
  *   each checked against the numbers of the readout (tests/node/claims.test.mjs sweeps the
  *   range each claim states and requires it to hold)
  * @property {(onProgress: (fraction: number) => void) => Promise<Built>} [later]   heavy work finishing in a worker
+ * @property {Built} [cancelled]   with `later`: the picture to show if that work is cancelled (what
+ *   this one says of the work in progress, said of work stopped)
  * @property {Editable} [input]     the handles of the scene's input (its edited input when
  *   `context.input` was given): a scene with handles can be edited by dragging them
  * @property {Record<string, number>} [measures]   named values for exercises' conditions (beside

@@ -68,6 +68,20 @@ export class SceneSession {
     return built;
   }
 
+  /**
+   * Stops pending work (the view's Cancel): its result will be dropped, and the picture shown
+   * meanwhile is replaced by what it says it is once the work is stopped (Built.cancelled).
+   */
+  cancel() {
+    const shown = this.built;
+    this.dispose();
+    const stopped = shown?.later ? shown.cancelled : undefined;
+    if (!stopped) return;
+    this.built = stopped;
+    this.viewer.show(stopped);
+    this.hooks.onBuilt(stopped, true);
+  }
+
   /** Forgets pending work (its result will be dropped). */
   dispose() {
     this.generation++;

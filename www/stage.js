@@ -198,7 +198,7 @@ export class Stage {
       fullscreen: () => this.toggleFullscreen(),
       help: () => this.shortcuts.open(),
       cancel: () => {
-        this.session.dispose();
+        this.session.cancel();
         // a long job in the worker (a tool path's post) stops there too
         cancelWork();
       },

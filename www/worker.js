@@ -3,7 +3,7 @@
 // Then { id, kind, ...job } (jobs.js: `kind` names the routine, the rest is what it takes; a CAM
 // job carries `cam`, where the CAM module comes from — its URL or bytes —, which this worker
 // starts at its first such job). Messages out: { id, progress } as the job goes, then
-// { id, ...result } (its `segments` transferred: compute.js), or { id, error, code, details }.
+// { id, ...result } (its typed arrays transferred: compute.js), or { id, error, code, details }.
 import init from '../pkg/ruledlab.js';
 import { setCamSource, startCam } from './cam.js';
 import { STEPS, CAM_KINDS } from './jobs.js';
@@ -25,7 +25,9 @@ self.onmessage = async ({ data }) => {
     }
     const report = (/** @type {number} */ progress) => self.postMessage({ id, progress });
     const done = await STEPS[/** @type {import('./jobs.js').JobKind} */ (kind)](data, report);
-    self.postMessage({ id, ...done }, { transfer: [done.segments.buffer] });
+    // every typed array of the result moves, not copied (each buffer once)
+    const buffers = new Set(Object.values(done).flatMap((v) => (ArrayBuffer.isView(v) ? [v.buffer] : [])));
+    self.postMessage({ id, ...done }, { transfer: [...buffers] });
   } catch (e) {
     const error = /** @type {any} */ (e);
     self.postMessage({ id, error: String(error?.message ?? error), code: error?.code, details: error?.details });

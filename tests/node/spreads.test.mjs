@@ -13,7 +13,7 @@ import { join, relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import ruledlab from './load.mjs';
 import { SCENES } from '../../www/scenes/index.js';
-import { defaults } from '../../www/scene.js';
+import { defaults, legendOf } from '../../www/scene.js';
 import { translator } from '../../www/i18n/index.js';
 import { append, greatest, least } from '../../www/reduce.js';
 
@@ -174,4 +174,47 @@ test('the data scene shows the focal geometry of a congruence of 400 × 400 line
   );
   assert.ok(built.layers.some((l) => l.style === 'focal1'));
   assert.ok(built.readouts?.some((r) => String(r.value).includes(`/ ${rows * cols}`)));
+});
+
+test('the data scene’s level of detail: all of 20 000 rulings, editable; from 20 001 the strip through at most 2 001, at most 160 as lines, the legend as drawn', () => {
+  const { t, format } = translator('en');
+  const scene = SCENES.find((s) => s.id === 'data');
+  assert.ok(scene);
+  /** @param {number} n @param {boolean} closed */
+  const build = (n, closed) => {
+    const segments = new Float64Array(6 * n);
+    for (let i = 0; i < n; i++) {
+      const u = (2 * Math.PI * i) / n;
+      segments.set([Math.cos(u), Math.sin(u), -1, Math.cos(u + 1.2), Math.sin(u + 1.2), 1], 6 * i);
+    }
+    const params = { ...defaults(scene), closed };
+    const built = scene.create(params, { t, format, lang: 'en', data: { segments } });
+    const layer = (/** @type {string} */ style) => built.layers.find((l) => l.style === style);
+    return {
+      built,
+      lines: (layer('ruling')?.positions.length ?? 0) / 6,
+      strip: (layer('strip')?.positions.length ?? 0) / 6,
+      striction: (layer('striction')?.positions.length ?? 0) / 3,
+      legend: legendOf(scene, params, built).map((e) => t(e.label)),
+    };
+  };
+  const all = build(20_000, false);
+  assert.equal(all.lines, 20_000);
+  assert.ok(all.built.input, 'editable');
+  assert.equal(all.built.note, undefined);
+  assert.ok(all.legend.some((l) => /common perpendiculars/.test(l)));
+  for (const n of [20_001, 21_011, 25_000]) {
+    for (const closed of [false, true]) {
+      const lod = build(n, closed);
+      assert.equal(lod.built.input, undefined, `${n}: not editable`);
+      assert.ok(lod.strip > 1_500 && lod.strip <= 2_001, `${n}: ${lod.strip} in the strip`);
+      assert.ok(lod.lines > 100 && lod.lines <= 160, `${n}: ${lod.lines} lines`);
+      // the striction curve through the rulings drawn (a point a pair: an open strip's curve
+      // begins at its first pair and keeps its last)
+      assert.ok(Math.abs(lod.striction - lod.strip) <= 1, `${n} ${closed}: ${lod.striction} of ${lod.strip}`);
+      assert.deepEqual(lod.legend, ['your rulings', 'striction curve, through the rulings drawn']);
+      assert.match(lod.built.note ?? '', /Level of detail: the strip and the striction curve go through one ruling in/);
+      assert.equal(lod.built.readouts?.find((r) => r.label === 'readout.parallelPairs')?.value, 0);
+    }
+  }
 });

@@ -97,7 +97,9 @@ export const scene = defineScene({
         const every = Math.ceil(s.length / DATA_DRAWN);
         const job = { segments, closed, every };
         if (!ctx.invariants) return detailed(invariantsSummary(s, closed, every), job, p, ctx);
-        const first = detailed({ segments: s.everyF32(every), rulings: s.length }, job, p, ctx);
+        const shown = { segments: s.everyF32(every), rulings: s.length };
+        const first = detailed(shown, job, p, ctx);
+        first.cancelled = detailed(shown, job, p, ctx, true);
         const compute = ctx.invariants;
         first.later = (onProgress) => compute(job, onProgress).then((done) => detailed(done, job, p, ctx));
         return first;
@@ -152,15 +154,17 @@ export const scene = defineScene({
  * @param {Partial<import('../invariants-job.js').InvariantsJobResult> & {segments: Float32Array, rulings: number}} shown
  * @param {import('../invariants-job.js').InvariantsJob} job
  * @param {import('../scene.js').Params} p @param {import('../scene.js').Context} ctx
+ * @param {boolean} [cancelled]  the invariants' computation was cancelled (not in progress)
  * @returns {import('../scene.js').Built}
  */
-function detailed(shown, { segments, closed, every }, p, ctx) {
+function detailed(shown, { segments, closed, every }, p, ctx, cancelled = false) {
   const { t } = ctx;
   const { rulings: n, striction, parallel } = shown;
   const seg = shown.segments;
   const drawn = seg.length / 6;
-  // as lines, fewer still: thousands of lines merge into a moiré (and cost software WebGL seconds)
-  const lineEvery = Math.ceil(drawn / LINE_LIMIT);
+  // as lines, fewer still: thousands of lines merge into a moiré (and cost software WebGL seconds);
+  // every k-th and the last of them, at most LINE_LIMIT
+  const lineEvery = Math.ceil((drawn - 1) / (LINE_LIMIT - 1));
   const lines = lineEvery > 1 ? scoped((own) => own(RuledSurface.fromSegments(seg)).everyF32(lineEvery)) : seg;
   /** @type {import('../scene.js').Layer[]} */
   const layers = [{ kind: 'segments', style: 'ruling', positions: lines }];
@@ -169,7 +173,7 @@ function detailed(shown, { segments, closed, every }, p, ctx) {
   const notes = [
     p.focal ? t('data.note.focalRulings') : '',
     t('data.note.detail', { every, drawn, lines: every * lineEvery, max: DATA_DETAIL_LIMIT }),
-    parallel ? '' : t('data.note.computing', { n }),
+    parallel ? '' : t(cancelled ? 'data.note.cancelled' : 'data.note.computing', { n }),
   ].filter(Boolean);
   return {
     bounds: bounds(seg),
@@ -180,7 +184,7 @@ function detailed(shown, { segments, closed, every }, p, ctx) {
     ],
     description: parallel
       ? t('data.describeDetail', { n, parallel: shown.parallelPairs ?? 0, least: shown.leastDelta ?? Infinity })
-      : t('data.describePending', { n }),
+      : t(cancelled ? 'data.describeCancelled' : 'data.describePending', { n }),
     problems: parallel ? parallelProblems(parallel, n, t) : [],
     note: notes.join(' '),
     data: { segments },

@@ -197,13 +197,15 @@ export default {
   'data.title': 'Ihre Daten',
   'data.param.closed': 'Geschlossen (auf die letzte Erzeugende folgt die erste)',
   'data.legend.rulings': 'Ihre Erzeugenden',
-  'data.legend.strictionDetail': 'Kehllinie, durch die gezeichneten Erzeugenden',
+  'data.legend.strictionDetail': 'Kehllinie (durch die gezeichneten Erzeugenden)',
   'data.note.closedGrid':
     '„Geschlossen“ lässt auf die letzte Erzeugende einer Fläche die erste folgen; ein Raster von Geraden wird gezeigt, wie es ist, nicht geschlossen.',
   'data.note.detail':
-    'Detailstufe: Streifen und Kehllinie gehen durch jede {every}. Erzeugende ({drawn} davon), jede {lines}. Erzeugende wird als Gerade gezeichnet; die Zahlen gelten für alle Erzeugenden. Ziehen lassen sich Erzeugende in Modellen mit bis zu {max}.',
+    'Detailstufe: Streifen und Kehllinie gehen durch jede {every}. Erzeugende ({drawn} davon), und jede {lines}. wird als Gerade gezeichnet; die Zahlen gelten für alle Erzeugenden. Ziehen lassen sich Erzeugende in Modellen mit bis zu {max}.',
   'data.note.computing':
-    'Die Invarianten aller {n} Erzeugenden werden im Hintergrund berechnet (Abbrechen hält es an).',
+    'Die Invarianten aller {n} Erzeugenden werden im Hintergrund berechnet („Abbrechen“ beendet die Berechnung).',
+  'data.note.cancelled':
+    'Die Invarianten der {n} Erzeugenden wurden nicht berechnet (abgebrochen): Ändern Sie eine Einstellung, um sie zu berechnen.',
   'data.note.focalRulings':
     'Brennflächen hat ein Raster von Geraden; Ihre Erzeugenden sind eine Fläche, die keine hat.',
   'data.readout.lines': 'Geraden (Kongruenz)',
@@ -211,6 +213,8 @@ export default {
     'Ihre Regelfläche aus {n} Erzeugenden ({parallel} parallele Paare) mit ihren gemeinsamen Loten und ihrem Kehlpolygon; das kleinste |δ| eines Paares von Erzeugenden ist {least}.',
   'data.describeDetail':
     'Ihre Regelfläche aus {n} Erzeugenden ({parallel} parallele Paare), in einer Detailstufe gezeichnet, mit ihrer Kehllinie; das kleinste |δ| eines Paares von Erzeugenden ist {least}.',
+  'data.describeCancelled':
+    'Ihre Regelfläche aus {n} Erzeugenden; ihre Invarianten wurden nicht berechnet (abgebrochen).',
   'data.describePending': 'Ihre Regelfläche aus {n} Erzeugenden; ihre Invarianten werden berechnet.',
   'data.describeCongruence': 'Ihre Geradenkongruenz aus {rows} × {cols} Geraden.',
 

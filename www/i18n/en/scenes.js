@@ -210,12 +210,15 @@ export default {
   'data.note.detail':
     'Level of detail: the strip and the striction curve go through one ruling in {every} ({drawn} of them), and one ruling in {lines} is drawn as a line; the numbers are of every ruling. Rulings can be dragged in models of up to {max}.',
   'data.note.computing': 'The invariants of all {n} rulings are being computed in the background (Cancel stops it).',
+  'data.note.cancelled':
+    'The invariants of the {n} rulings were not computed (cancelled): change a setting to compute them.',
   'data.note.focalRulings': 'Focal surfaces are those of a grid of lines; your rulings are a surface, which has none.',
   'data.readout.lines': 'lines (congruence)',
   'data.describe':
     'Your ruled surface of {n} rulings ({parallel} parallel pairs), with its common perpendiculars and striction polygon; the smallest |δ| of a pair of rulings is {least}.',
   'data.describeDetail':
     'Your ruled surface of {n} rulings ({parallel} parallel pairs), drawn at a level of detail with its striction curve; the smallest |δ| of a pair of rulings is {least}.',
+  'data.describeCancelled': 'Your ruled surface of {n} rulings; its invariants were not computed (cancelled).',
   'data.describePending': 'Your ruled surface of {n} rulings; its invariants are being computed.',
   'data.describeCongruence': 'Your line congruence of {rows} × {cols} lines.',
 
