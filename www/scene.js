@@ -43,8 +43,9 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {ImportedData} [data]   your own segments (the "data" scene)
  * @property {(segments: Float64Array, options: import('../pkg/ruledlab.js').SubdivideOptions, onProgress: (f: number) => void, draw?: number) => Promise<{segments: Float32Array, rulings: number, drawn: number}>} [refine]
  *   refinement in a Web Worker, for large models (at most `draw` rulings come back: every k-th)
- * @property {(job: import('./invariants-job.js').InvariantsJob, onProgress: (f: number) => void) => Promise<import('./invariants-job.js').InvariantsJobResult>} [invariants]
+ * @property {(job: {segments: Float64Array, closed: boolean, every: number}, onProgress: (f: number) => void) => Promise<{segments: Float32Array, striction: Float32Array, parallel: Uint8Array, parallelPairs: number, leastDelta: number, rulings: number}>} [invariants]
  *   the invariants of many rulings in a Web Worker, reduced to what a level of detail shows
+ *   through every `every`-th ruling (invariants-job.js)
  * @property {Input} [input]        the reader's edit of the scene's input (its handles dragged):
  *   the scene computes on it instead of its built-in input, with every tool it has
  *
