@@ -6,7 +6,9 @@
 #      among them), benches in test mode
 #   3. build pkg/ and dist/; types: tsc --strict over www/, the scripts and tests with JSDoc types;
 #      the Python package (python/: the compiled core, crates/ruledlab-py, and the notebook widget
-#      with dist/ruledlab-embed.js inside) built into one wheel and installed into .venv/
+#      with dist/ruledlab-embed.js inside) built into one wheel and installed into .venv/; its
+#      pytest tests (the core against NumPy baselines and against the JavaScript API in Node, the
+#      wheel in a fresh venv, mypy --strict on an example, the book's Python, the widget)
 #   4. docs: every JS/TS snippet of the book and the README verbatim under tsc --strict against
 #      the package's declarations; the site (book, typedoc, rustdoc) built into site/; every
 #      link and anchor of it checked
@@ -15,10 +17,8 @@
 #      headless Firefox ESR (geckodriver)
 #   6. the page in headless Chromium (playwright-core driving Debian's chromium), and the example
 #      notebook run in a real JupyterLab and Notebook 7 (.venv/)
-#   7. Node: the built package's JS API; the wheel's pytest tests (the core against NumPy
-#      baselines and against the JavaScript API in Node, the wheel in a fresh venv, mypy --strict on
-#      an example, the book's Python, the widget); short runs of the cargo-fuzz targets (fuzz/); a
-#      smoke test of every scene in Firefox ESR, headed under Xvfb (headless Firefox has no WebGL2)
+#   7. Node: the built package's JS API; short runs of the cargo-fuzz targets (fuzz/); a smoke
+#      test of every scene in Firefox ESR, headed under Xvfb (headless Firefox has no WebGL2 here)
 # Exits non-zero on the first failing step, or after the lanes when one of them failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -54,8 +54,11 @@ step "types: tsc --strict over www/, scripts and tests"
 npx tsc -p tsconfig.json
 npx tsc -p tsconfig.tests.json
 
-step "python: the wheel (python/ and crates/ruledlab-py into dist/python/, installed into .venv/; its tests run in a lane)"
+step "python: the wheel (python/ and crates/ruledlab-py into dist/python/, installed into .venv/), pytest"
 bash scripts/wheel.sh
+# (not in a lane: its wheel built in a plain venv is a release build of the core that slowed the
+# lanes beside it from 370 to 946 s)
+.venv/bin/python -m pytest -q -p no:cacheprovider python/tests
 
 step "docs: the snippets of the book and the README; the site (book, typedoc, rustdoc); its links"
 node tests/types/snippets.mjs
@@ -64,7 +67,7 @@ node tests/docs/links.mjs
 
 # The rest runs as three lanes side by side (the machine has idle cores while browsers wait for
 # frames): each lane's log is printed when it ends, and the run fails if any lane fails.
-step "three lanes: [wasm tests in Chromium, Firefox] [page tests] [Node tests, pytest, fuzz, Firefox smoke]"
+step "three lanes: [wasm tests in Chromium, Firefox] [page tests] [Node tests, fuzz, Firefox smoke]"
 LOGS=$(mktemp -d)
 lane() {
   local name=$1; shift
@@ -82,7 +85,6 @@ page_lane() {
 }
 other_lane() {
   node --expose-gc --test tests/node/*.test.mjs
-  .venv/bin/python -m pytest -q -p no:cacheprovider python/tests
   bash scripts/fuzz.sh 3
   LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1280x1024x24" node tests/firefox/smoke.mjs
 }

@@ -75,8 +75,11 @@ for (const n of [100_000, 1_000_000]) {
         note: noteText(),
         said,
         legend: [...(view.shadowRoot?.querySelectorAll('.rl-legend li') ?? [])].map((li) => li.textContent),
-        // the invariants computed on the page's own thread would leave this measure
-        onPage: performance.getEntriesByName('ruledlab:core:RuledSurface.invariants').length,
+        // the invariants of these rulings computed on the page's own thread would leave this
+        // measure, of 10 ms and more; the element's first scene (five rulings, before the data
+        // came, on a busy machine after the measures were cleared) leaves one of microseconds
+        onPage: performance.getEntriesByName('ruledlab:core:RuledSurface.invariants').filter((e) => e.duration > 5)
+          .length,
       };
     }, n);
     mkdirSync(ARTIFACTS, { recursive: true });
