@@ -238,7 +238,7 @@ fn propagate(t: &[DVec3], k: usize, rk: DVec3, turn: &dyn Fn(usize) -> DVec3) ->
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::assert_near;
     use std::f64::consts::TAU;

@@ -150,14 +150,7 @@ mod tests {
     use crate::ruled::Development;
     use std::f64::consts::{PI, TAU};
 
-    fn helix(m: usize, r: f64, p: f64, turns: f64) -> Vec<DVec3> {
-        (0..m)
-            .map(|i| {
-                let u = turns * TAU * i as f64 / (m - 1) as f64;
-                DVec3::new(r * u.cos(), r * u.sin(), p * u)
-            })
-            .collect()
-    }
+    use crate::developable::construct::tests::helix;
 
     /// The discrete tangent surface of a helix develops its regression polygon onto a regular
     /// polygon: equal edges ℓ and turns θ, on the circle of radius ℓ/(2 sin(θ/2)).

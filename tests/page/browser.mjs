@@ -18,7 +18,7 @@ export const ARTIFACTS = new URL('../../test-artifacts/', import.meta.url).pathn
  */
 export async function launch(options = {}) {
   const userDataDir = mkdtempSync(join(tmpdir(), 'ruledlab-chromium-'));
-  return chromium.launchPersistentContext(userDataDir, {
+  const context = await chromium.launchPersistentContext(userDataDir, {
     executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
     headless: true,
     viewport: { width: 1200, height: 800 },
@@ -33,6 +33,11 @@ export async function launch(options = {}) {
       '--disable-sync',
     ],
   });
+  // npm test runs the page tests beside builds on 2 cores: a page may take longer to load, or a
+  // wait to end, than Playwright's 30 s by default (a limit of time, not a check)
+  context.setDefaultNavigationTimeout(120_000);
+  context.setDefaultTimeout(90_000);
+  return context;
 }
 
 /**

@@ -16,26 +16,42 @@ import { pageSession, ARTIFACTS } from './browser.mjs';
 
 const session = pageSession();
 
-for (const n of [100_000, 1_000_000]) {
-  test(`a <ruled-view> given ${n.toLocaleString('en')} rulings as data draws them without an error`, {
-    timeout: 300000,
-  }, async () => {
-    const { page, problems } = await session.open('examples/web-component.html', { wait: false });
-    await page.waitForFunction(() => customElements.get('ruled-view'));
-    const report = await page.evaluate(async (count) => {
-      const view = /** @type {any} */ (document.createElement('ruled-view'));
-      view.setAttribute('height', '400');
-      view.setAttribute('controls', '');
-      document.body.append(view);
-      /** @type {unknown[]} */
-      const errors = [];
-      view.addEventListener('error', (/** @type {CustomEvent} */ e) => errors.push(e.detail));
-      // a hyperboloid of one sheet: ruling i from (cos u, sin u, −1) to (cos(u + 1.2), sin(u + 1.2), 1)
+/**
+ * A page with one <ruled-view controls> 400 px high, and `hyperboloid(count)` in it: `count`
+ * rulings of a hyperboloid of one sheet, ruling i from (cos u, sin u, −1) to
+ * (cos(u + 1.2), sin(u + 1.2), 1) with u = 2πi/count.
+ */
+async function openView() {
+  const { page, problems } = await session.open('examples/web-component.html', { wait: false });
+  await page.waitForFunction(() => customElements.get('ruled-view'));
+  await page.evaluate(() => {
+    const view = document.createElement('ruled-view');
+    view.setAttribute('height', '400');
+    view.setAttribute('controls', '');
+    document.body.append(view);
+    /** @type {any} */ (window).hyperboloid = (/** @type {number} */ count) => {
       const segments = new Float64Array(6 * count);
       for (let i = 0; i < count; i++) {
         const u = (2 * Math.PI * i) / count;
         segments.set([Math.cos(u), Math.sin(u), -1, Math.cos(u + 1.2), Math.sin(u + 1.2), 1], 6 * i);
       }
+      return segments;
+    };
+  });
+  return { page, problems };
+}
+
+for (const n of [100_000, 1_000_000]) {
+  test(`a <ruled-view> given ${n.toLocaleString('en')} rulings as data draws them without an error`, {
+    timeout: 300000,
+  }, async () => {
+    const { page, problems } = await openView();
+    const report = await page.evaluate(async (count) => {
+      const view = /** @type {any} */ (document.querySelector('ruled-view'));
+      /** @type {unknown[]} */
+      const errors = [];
+      view.addEventListener('error', (/** @type {CustomEvent} */ e) => errors.push(e.detail));
+      const segments = /** @type {any} */ (window).hyperboloid(count);
       // the page's longest pause: a timer due every 20 ms, and when it actually ran
       let last = performance.now();
       let longest = 0;
@@ -114,19 +130,10 @@ for (const n of [100_000, 1_000_000]) {
 test('Cancel while the invariants of 10⁶ rulings are computed: the rulings stay, and the view says they were not computed', {
   timeout: 300000,
 }, async () => {
-  const { page, problems } = await session.open('examples/web-component.html', { wait: false });
-  await page.waitForFunction(() => customElements.get('ruled-view'));
+  const { page, problems } = await openView();
   const report = await page.evaluate(async (count) => {
-    const view = /** @type {any} */ (document.createElement('ruled-view'));
-    view.setAttribute('height', '400');
-    view.setAttribute('controls', '');
-    document.body.append(view);
-    const segments = new Float64Array(6 * count);
-    for (let i = 0; i < count; i++) {
-      const u = (2 * Math.PI * i) / count;
-      segments.set([Math.cos(u), Math.sin(u), -1, Math.cos(u + 1.2), Math.sin(u + 1.2), 1], 6 * i);
-    }
-    view.data = { segments };
+    const view = /** @type {any} */ (document.querySelector('ruled-view'));
+    view.data = { segments: /** @type {any} */ (window).hyperboloid(count) };
     await view.opening;
     const root = view.shadowRoot;
     const progress = root.querySelector('.rl-progress');
