@@ -162,13 +162,21 @@ function notebookIn(page) {
     const cell = cells.nth(i);
     await cell.scrollIntoViewIfNeeded();
     assert.match(await cell.locator('.jp-InputArea-editor').innerText(), source, `cell ${i} is not the one expected`);
-    await cell.locator('.jp-InputArea-prompt').click();
-    await page.keyboard.press('Shift+Enter');
-    await page.waitForFunction(
-      (el) => /^\[\d+\]:$/.test(el?.textContent?.trim() ?? ''),
-      await cell.locator('.jp-InputArea-prompt').elementHandle(),
-      { timeout: 120000 },
-    );
+    // (a Shift+Enter pressed while the notebook is still starting may be lost — its prompt stays
+    // "[ ]:" where a cell that runs or waits for the kernel shows "[*]:" at once — and is pressed again)
+    const prompt = await cell.locator('.jp-InputArea-prompt').elementHandle();
+    for (let attempt = 0; ; attempt++) {
+      await cell.locator('.jp-InputArea-prompt').click();
+      await page.keyboard.press('Shift+Enter');
+      const taken = await page
+        .waitForFunction((el) => /^\[(\*|\d+)\]:$/.test(el?.textContent?.trim() ?? ''), prompt, { timeout: 20000 })
+        .then(
+          () => true,
+          () => false,
+        );
+      if (taken || attempt === 2) break;
+    }
+    await page.waitForFunction((el) => /^\[\d+\]:$/.test(el?.textContent?.trim() ?? ''), prompt, { timeout: 120000 });
     return cell.locator('.jp-OutputArea').innerText();
   };
   /** The <ruled-view> of cell `i`, once it has drawn. */
@@ -187,6 +195,14 @@ function notebookIn(page) {
 
 /** The view's canvas. @param {import('playwright-core').Locator} view */
 const canvas = (view) => view.locator('canvas').first();
+
+/**
+ * Whether a problem is Jupyter's, not ours: its favicon, and its own server API (kernels,
+ * sessions, workspaces, translations…), whose polls it cuts off with net::ERR_ABORTED as it
+ * reloads for a workspace's reset. The view's requests never go to `/api/`.
+ * @param {string} problem
+ */
+const jupyters = (problem) => /favicon|\/api\//.test(problem);
 
 test('the example notebook runs in JupyterLab, with data both ways', { timeout: 600000 }, async () => {
   if (!browser) throw new Error('no browser');
@@ -349,7 +365,7 @@ test('the example notebook runs in JupyterLab, with data both ways', { timeout: 
     }
     writeFileSync(join(ARTIFACTS, 'notebook-outputs.txt'), outputs.join('\n'));
     assert.deepEqual(
-      problems.filter((p) => !/favicon|api\/(kernels|sessions|lab)/.test(p)),
+      problems.filter((p) => !jupyters(p)),
       [],
     );
   } catch (e) {
@@ -416,7 +432,28 @@ test('a million rulings from NumPy go through the kernel into the view, which dr
     await run(0, /View\.from_segments\(a, b/);
     // drawn, counted, and its invariants arrived from the view's worker
     const view = cells.nth(0).locator('ruled-view');
-    await view.waitFor({ timeout: 120000 });
+    const shown = await view.waitFor({ timeout: 90000 }).then(
+      () => true,
+      () => false,
+    );
+    if (!shown) {
+      // Under load JupyterLab's widget manager can ask the kernel for its widgets while the cell is
+      // still opening this one, and the output then stays "Loading widget…" (an upstream race:
+      // jupyter-widgets/ipywidgets#3549). A reader runs the cell again; so does the test, once,
+      // and fails if the view does not come then.
+      const output = await cells.nth(0).locator('.jp-OutputArea').innerText().catch(() => '(none)');
+      console.log(`the view did not come in 90 s; the cell's output: ${JSON.stringify(output.slice(0, 400))}; run again`);
+      const prompt = cells.nth(0).locator('.jp-InputArea-prompt');
+      const before = (await prompt.innerText()).trim();
+      await prompt.click();
+      await page.keyboard.press('Shift+Enter');
+      await page.waitForFunction(
+        ([el, was]) => /^\[\d+\]:$/.test(el?.textContent?.trim() ?? '') && el?.textContent?.trim() !== was,
+        /** @type {const} */ ([await prompt.elementHandle(), before]),
+        { timeout: 180000 },
+      );
+      await view.waitFor({ timeout: 120000 });
+    }
     await page.waitForFunction(
       (v) => {
         const readouts = /** @type {any} */ (v)?.readouts?.() ?? [];
@@ -436,10 +473,8 @@ test('a million rulings from NumPy go through the kernel into the view, which dr
     console.log(
       `10⁶ rulings from the kernel: drawn, with their invariants, ${seconds.toFixed(1)} s after the cell was run`,
     );
-    // (JupyterLab's own polls, cut off as it reloads for the workspace's reset, are not ours)
-    const reset = /\/(api\/(terminals|me)|lab\/api\/workspaces)\?\d+ net::ERR_ABORTED$/;
     assert.deepEqual(
-      problems.filter((p) => !/favicon|api\/(kernels|sessions|lab|nbconvert)/.test(p) && !reset.test(p)),
+      problems.filter((p) => !jupyters(p)),
       [],
     );
   } catch (e) {
@@ -482,7 +517,7 @@ test('the example notebook runs in Jupyter Notebook 7: the views drawn, data bot
     // handler of its settings' loading that reads a schema it was not given)
     const own = /Cannot read properties of undefined \(reading 'schema'\)/;
     assert.deepEqual(
-      problems.filter((p) => !/favicon|api\/(kernels|sessions|lab|nbconvert)/.test(p) && !own.test(p)),
+      problems.filter((p) => !jupyters(p) && !own.test(p)),
       [],
     );
   } catch (e) {

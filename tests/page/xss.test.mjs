@@ -150,12 +150,22 @@ test('pasted CSV/JSON and typed formulas carrying payloads stay text', async () 
       await control(p, key).dispatchEvent('change');
     }
   }
-  await p.waitForTimeout(600);
+  // the field of the error the core reports is marked (the one the reader changed last loses an
+  // old message when the error is now elsewhere), its message plain text: waited for, not for a
+  // fixed time (the scene is rebuilt after the last change, later on a busy machine)
+  const errors = p.locator('.rl-fielderror:not([hidden])');
+  await p.waitForFunction(
+    () =>
+      document.querySelectorAll('.rl-fielderror:not([hidden])').length === 1 &&
+      /^(The x component of a\(u\)|The field “u from”):/.test(
+        document.querySelector('.rl-fielderror:not([hidden])')?.textContent ?? '',
+      ),
+    undefined,
+    { timeout: 20000 },
+  ).catch(() => {});
   assert.equal(await p.evaluate(() => window.__pwned), 0);
   assert.deepEqual(await injected(p), []);
-  // the field of the error the core reports is marked (the one the reader changed last loses an
-  // old message when the error is now elsewhere), its message plain text
-  const marked = await p.locator('.rl-fielderror:not([hidden])').allInnerTexts();
+  const marked = await errors.allInnerTexts();
   assert.equal(marked.length, 1);
   assert.match(marked[0], /^(The x component of a\(u\)|The field “u from”):/);
   // the share dialog carries the payload as text too
