@@ -28,4 +28,5 @@ bash scripts/wheel.sh
 .venv/bin/python bench/python.py
 node bench/page.mjs
 node bench/drag.mjs
+node bench/klein.mjs
 node bench/lighthouse.mjs

@@ -17,6 +17,7 @@ export const BLOCKS = /** @type {const} */ ({
   'bench-python': 'internals/benchmarks.md',
   'bench-page': 'internals/page-speed.md',
   'bench-drag': 'internals/page-speed.md',
+  'bench-klein': 'internals/page-speed.md',
   'bench-lighthouse': 'internals/page-speed.md',
   sizes: 'internals/sizes.md',
 });

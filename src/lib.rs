@@ -113,6 +113,7 @@ pub use congruence::{
 // the Klein quadric: lines as points of P⁵ (beyond the paper)
 pub use klein::departure::{line_space_departure, Departure};
 pub use klein::image::Projection;
+pub use klein::net::KleinNet;
 pub use klein::point::{klein_form, KleinPoint};
 pub use klein::polygon::KleinPolygon;
 pub use klein::sections::{complex_residuals, RegulusPlane};

@@ -23,7 +23,8 @@ const LAYERS: &[&[&str]] = &[
     &["base", "formula", "linalg", "linear_complex", "line_fit", "snap"],
     &["ruled", "mesh", "visibility"],
     &["subdivision", "developable"],
-    &["congruence", "klein"],
+    &["congruence"],
+    &["klein"],
     &["catalogue", "io"],
 ];
 

@@ -9,8 +9,8 @@ use glam::{DAffine3, DQuat, DVec3};
 use proptest::prelude::*;
 use ruledlab::tolerance::test::KLEIN_RESIDUAL;
 use ruledlab::{
-    klein_form, line_space_departure, subdivide_lines, AnalyticSurface, KleinPoint, KleinPolygon, Line, RuledSurface,
-    Scheme, Segment, SmoothRuled,
+    klein_form, line_space_departure, subdivide_lines, AnalyticCongruence, AnalyticSurface, KleinNet, KleinPoint,
+    KleinPolygon, Line, RuledSurface, Scheme, Segment, SmoothCongruence, SmoothRuled,
 };
 
 /// Ω(L_i, L_{i+1}) = −h_{i,i+1} sin φ_{i,i+1} on every built-in surface, to rounding of the
@@ -64,6 +64,31 @@ fn omega_over_phi_squared_tends_to_minus_delta() {
                 inv.distribution[i]
             );
         }
+    }
+}
+
+/// A congruence's grid as a net on M: Ω on each edge is −h sin φ of the edge's two lines, as
+/// Section 2 computes h and φ for the rulings of the grid's rows and columns read as surfaces.
+#[test]
+fn omega_on_a_congruence_net_is_minus_h_sin_phi_of_its_rows_and_columns() {
+    for c in AnalyticCongruence::ALL {
+        let grid = c.grid(7, 5).unwrap();
+        let net = KleinNet::of(&grid);
+        assert_eq!(net.edges.len(), 7 * 4 + 5 * 6);
+        assert!(net.max_residual <= KLEIN_RESIDUAL);
+        let mut k = 0;
+        let rows = (0..7).map(|i| grid.row(i).unwrap());
+        let cols = (0..5).map(|j| grid.column(j).unwrap());
+        for surface in rows.chain(cols) {
+            let inv = surface.invariants();
+            for step in 0..surface.len() - 1 {
+                let want = -inv.distance[step] * inv.angle[step].sin();
+                let scale = surface.segments().map(|s| s.a.length().max(s.b.length())).fold(1.0, f64::max);
+                assert!((net.omega[k] - want).abs() <= 1e-14 * scale, "{c:?} edge {k}: {} vs {want}", net.omega[k]);
+                k += 1;
+            }
+        }
+        assert_eq!(k, net.edges.len());
     }
 }
 

@@ -206,3 +206,9 @@ export const SCORM_FRAMES = 500;
 export const MAX_PACKAGE_BYTES = 64 * 1024 * 1024;
 /** Height of an exercise in an H5P activity (CSS pixels), by default. */
 export const H5P_HEIGHT = 640;
+
+/**
+ * The most lines the Klein view beside the 3D view draws (its points and steps are drawn in full,
+ * without a lighter stand-in while the camera moves).
+ */
+export const MAX_KLEIN_LINES = 100_000;

@@ -1,5 +1,5 @@
 // The link's codec: a view in the URL hash, and back (the page's address, Share's links):
-//   #scene=striction&surface=hyperboloid&n=36&cam=yaw,pitch,distance,x,y,z&lang=de
+//   #scene=striction&surface=hyperboloid&n=36&cam=yaw,pitch,distance,x,y,z&lang=de&klein
 // The page's own keys (RESERVED_KEYS of scene.js) never collide with a scene's parameters.
 // A hash longer than MAX_HASH characters is not read at all (the page says so); a value that
 // cannot be used falls back to its default with a note, never an exception.
@@ -31,6 +31,7 @@ import { append } from './reduce.js';
  *   many checks that did not solve it (task/solution-rule.js; absent: after a first one)
  * @property {Array<{key: string, note: string, vars?: Record<string, string>}>} notes   values that were not used, and why
  * @property {string | null} [paper]    the figure or example of the paper shown (paper.js), if any
+ * @property {'space' | 'split'} [view]  the 3D view alone, or the Klein view of the scene's lines beside it
  */
 
 /**
@@ -85,6 +86,7 @@ export function readLink(hash, scenes) {
     solution: q.get('solution'),
     notes,
     paper: paper?.id ?? null,
+    view: q.has('klein') ? 'split' : 'space',
   };
 }
 
@@ -108,6 +110,7 @@ export function writeLink(state, { wholeInput = false } = {}) {
   for (const p of state.scene.params) q.set(p.key, serialize(p, state.params[p.key]));
   if (state.camera) q.set('cam', writeCamera(state.camera));
   if (state.lang) q.set('lang', state.lang);
+  if (state.view === 'split') q.set('klein', '');
   if (state.data && linkable(state.data)) q.set('data', writeData(state.data));
   if (state.input && (wholeInput || linkableInput(state.input))) q.set('input', encodeInput(state.input));
   return q.toString().replace(/=(&|$)/g, '$1');

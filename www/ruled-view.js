@@ -16,7 +16,9 @@
 // `data` is the scene's input, `{ set: Float64Array, … }` per handle set (a copy; setting it
 // replaces the input); set to `{ segments: Float64Array, rows?, cols? }` it shows your own
 // rulings or congruence in the "data" scene. `height` sizes the element (pixels or a CSS length,
-// without an inline style a strict Content-Security-Policy would refuse). `handles()` lists every handle with its position
+// without an inline style a strict Content-Security-Policy would refuse), `klein` (the scene's
+// lines as points of the Klein quadric, beside the 3D view; the toolbar's Klein quadric button
+// sets and clears it). `handles()` lists every handle with its position
 // in the element. `task` shows an exercise (a built-in one's id, or the page's "j." link value;
 // the book's "Exercises"), `seed` the seed of its drawn numbers, `leave` offers to leave it,
 // `solution` says when its solution is offered ("never", or after how many checks that did not
@@ -86,6 +88,7 @@ export class RuledView extends HTMLElement {
     'seed',
     'leave',
     'solution',
+    'klein',
   ];
 
   constructor() {
@@ -227,6 +230,13 @@ export class RuledView extends HTMLElement {
     return this.stage ? exerciseApi(this.stage) : null;
   }
 
+  /** Whether the Klein view of the scene's lines stands beside the 3D view. */
+  get klein() {
+    return this.hasAttribute('klein');
+  }
+  set klein(on) {
+    this.toggleAttribute('klein', !!on);
+  }
   /** Whether the reader may drag the scene's handles. */
   get editable() {
     return this.hasAttribute('editable');
@@ -342,6 +352,7 @@ export class RuledView extends HTMLElement {
       text: this.text,
       lang,
       editable: this.editable,
+      view: this.klein ? 'split' : 'space',
       // Leave, where the attribute allows it: the scene without the exercise
       onLeaveTask: () => this.stage?.leaveExercise(),
       mayLeaveTask: () => this.hasAttribute('leave'),
@@ -360,6 +371,8 @@ export class RuledView extends HTMLElement {
         });
       },
       onChange: ({ reason, ended }) => {
+        // the reader's choice of the view, in the attribute
+        if (reason === 'view' && this.stage) this.klein = this.stage.view === 'split';
         if (reason === 'input' && this.stage?.scene) {
           const stage = this.stage;
           const scene = this.stage.scene;
@@ -412,6 +425,7 @@ export class RuledView extends HTMLElement {
     else if (name === 'leave' || name === 'solution') this.stage.exercise.panel.render();
     else if (name === 'controls' || name === 'text') this.stage.setPanel(this.controls, this.text);
     else if (name === 'editable') this.stage.setEditable(this.editable);
+    else if (name === 'klein') this.stage.setView(this.klein ? 'split' : 'space');
     else if (name === 'input') {
       // an edit of its own (the property read back) is already shown
       const now = this.stage.input;

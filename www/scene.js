@@ -145,7 +145,13 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {() => SVGElement} [diagram]   a plot beside the view (built with the DOM)
  * @property {() => SVGElement} [figure]   deprecated: the earlier name of `diagram`
  * @property {Download[]} [downloads]
- * @property {{segments: Float64Array, grid?: {rows: number, cols: number}}} [data]   for export
+ * @property {{segments: Float64Array, grid?: {rows: number, cols: number}, transform?: Float32Array}} [data]
+ *   for export (and for the Klein view beside the 3D view, which draws these lines as points of
+ *   M); `transform`: the 4 × 4 model matrix (column-major) the 3D view draws them with, where it
+ *   moves them (a line marked in both views is drawn there)
+ * @property {{layers: Layer[], legend: Array<{style: string, label: string}>, description: string}} [klein]
+ *   what the Klein view beside the 3D view draws besides the points of `data`'s lines, in its
+ *   image (klein-image.js's KLEIN_PROJECTION): e.g. the line-space scheme's points before N
  * @property {string} [note]          a remark shown under the readout (e.g. the level of detail)
  * @property {Claim[]} [claims]      the comparative sentences that apply to these parameters,
  *   each checked against the numbers of the readout (tests/node/claims.test.mjs sweeps the
@@ -220,6 +226,7 @@ export const RESERVED_KEYS = Object.freeze([
   'data',
   'note',
   'view',
+  'klein',
   'paper',
   'input',
   'edit',
@@ -251,6 +258,17 @@ export function defineScene(scene) {
 }
 
 /** The string a parameter value takes in a link. */
+/**
+ * The scheme menu of a scene that refines: a select of key "scheme" that keeps the view where it is.
+ * @param {string} value  the scheme chosen at first
+ * @param {() => Array<[string, string]>} options  [scheme, i18n key of its title]
+ * @param {Partial<Param>} [more]  anything else of the param (e.g. `unless`)
+ * @returns {Param}
+ */
+export function schemeParam(value, options, more = {}) {
+  return { key: 'scheme', label: 'param.scheme', type: 'select', value, refit: false, options, ...more };
+}
+
 export function serialize(/** @type {Param} */ p, /** @type {number | string | boolean} */ value) {
   if (p.type === 'checkbox') return value ? '1' : '0';
   return String(value);

@@ -33,6 +33,8 @@ import { PaperCard } from './stage/paper-card.js';
 import { EditHost } from './stage/edit-host.js';
 import { ExerciseHost } from './stage/exercise-host.js';
 import { Results } from './stage/results.js';
+import { KleinPane } from './stage/klein-pane.js';
+import { LineMark } from './stage/line-mark.js';
 import { Shortcuts } from './stage/shortcuts.js';
 import { Store, initialState, heldReason } from './store.js';
 import { cancelWork } from './compute.js';
@@ -68,6 +70,7 @@ export class Stage {
         controls: options.controls ?? true,
         text: options.text ?? true,
         editable: !!options.editable,
+        view: options.view === 'split' ? 'split' : 'space',
       }),
       (next, previous, change) => this.render(next, previous, change),
     );
@@ -81,6 +84,8 @@ export class Stage {
       onBuilt: (built, final) => {
         this.results.render(this.state, built, final);
         this.edit.render(this.state, built);
+        this.kleinPane.render(this.state, built);
+        this.lineMark.render(this.state, built);
         options.onBuilt?.(built);
       },
       onError: (e) => this.fail(e),
@@ -156,6 +161,11 @@ export class Stage {
       report: (type, report) => options.onTask?.(type, report),
       say,
     });
+    const mark = (/** @type {number | null} */ line) => this.dispatch({ type: 'mark', line });
+    /** @internal the Klein view beside the 3D view (the split view) */
+    this.kleinPane = new KleinPane(els, { i18n, mark, say, insets: (canvas) => covered(els, canvas) });
+    /** @internal the line marked in both views, drawn in the 3D view */
+    this.lineMark = new LineMark(els, { viewer: this.viewer, mark });
     /** @internal */
     this.edit = new EditHost({
       els,
@@ -196,6 +206,11 @@ export class Stage {
       },
       reset: () => this.reset(),
       fullscreen: () => this.toggleFullscreen(),
+      // (the reader's choice: the page writes it into its link)
+      klein: () => {
+        this.setView(this.state.view === 'split' ? 'space' : 'split');
+        this.report('view', true);
+      },
       help: () => this.shortcuts.open(),
       cancel: () => {
         this.session.cancel();
@@ -203,6 +218,7 @@ export class Stage {
         cancelWork();
       },
     });
+    els.buttons.klein.setAttribute('aria-pressed', String(this.state.view === 'split'));
     /** @internal how the stage is arranged for its box (stage/layout.js) */
     this.layout = {
       host,
@@ -252,6 +268,14 @@ export class Stage {
     if (changed('params', 'paper', 'exercise', 'scene', 'lang')) this.paperCard.render(next);
     if (changed('controls', 'text', 'exercise')) this.showPanel(next);
     if (changed('exercise', 'scene', 'input')) this.player.render(next);
+    if (changed('view', 'lang')) {
+      this.els.buttons.klein.setAttribute('aria-pressed', String(next.view === 'split'));
+      this.kleinPane.render(next, this.session.built);
+    }
+    if (changed('marked', 'view')) {
+      this.kleinPane.showMark(next);
+      this.lineMark.render(next, this.session.built);
+    }
     this.edit.render(next, null);
   }
 
@@ -337,7 +361,7 @@ export class Stage {
 
   /** @internal Tells the stage's owner what changed (the page writes the link, the element fires events). */
   report(
-    /** @type {'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input'} */ reason,
+    /** @type {'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input' | 'view'} */ reason,
     /** @type {boolean} */ ended,
   ) {
     this.options.onChange?.({ reason, ended });
@@ -358,9 +382,23 @@ export class Stage {
     this.dispatch({ type: 'panel', controls, text });
   }
 
+  /**
+   * Shows the 3D view alone ("space") or the Klein view of the scene's lines beside it ("split").
+   * @param {'space' | 'split'} view
+   */
+  setView(view) {
+    this.dispatch({ type: 'view', view });
+  }
+
+  /** The 3D view alone ("space") or the Klein view beside it ("split"). @returns {'space' | 'split'} */
+  get view() {
+    return this.state.view;
+  }
+
   /** @internal The texts that depend on the language but not on the scene. */
   localize() {
     labelToolbar(this.els, this.i18n);
+    this.kleinPane.localize(this.i18n.t);
     this.shortcuts.localize();
     this.edit.localize();
   }
@@ -602,6 +640,7 @@ export class Stage {
     this.editor.dispose();
     this.session.dispose();
     this.viewer.dispose();
+    this.kleinPane.close();
     this.resize.disconnect();
     this.shortcuts.dispose();
     this.els.root.remove();

@@ -20,6 +20,9 @@
  * @property {boolean} controls        the panel shows the controls and the readout
  * @property {boolean} text            the panel shows the explanation
  * @property {boolean} editable        the reader may drag the scene's handles (an exercise decides in it)
+ * @property {'space' | 'split'} view   the 3D view alone, or the Klein view of the scene's lines beside it
+ * @property {number | null} marked   the line marked in both views (of the lines the scene exports), if any;
+ *   forgotten when the lines change (an opening, a parameter, an edit) or the view closes
  * @property {string | null} changed   the parameter the reader changed last (an error names its field)
  * @property {boolean} moving          the input is being moved (a drag or a held key that has not ended)
  *
@@ -33,7 +36,9 @@
  *   | {type: 'exercise', exercise: import('./task/format.js').Task | null}
  *   | {type: 'lang', lang: string}
  *   | {type: 'panel', controls: boolean, text: boolean}
- *   | {type: 'editable', on: boolean}} StageChange
+ *   | {type: 'editable', on: boolean}
+ *   | {type: 'view', view: 'space' | 'split'}
+ *   | {type: 'mark', line: number | null}} StageChange
  */
 
 /** The state of a view that shows nothing yet. @returns {StageState} */
@@ -50,6 +55,8 @@ export function initialState(/** @type {Partial<StageState>} */ given = {}) {
     controls: true,
     text: true,
     editable: false,
+    view: 'space',
+    marked: null,
     changed: null,
     moving: false,
     ...given,
@@ -90,6 +97,7 @@ export function reduce(state, change) {
         inputNote: change.inputNote ?? state.inputNote,
         changed: null,
         moving: false,
+        marked: null,
       };
     case 'param': {
       const { key, value } = change;
@@ -100,12 +108,14 @@ export function reduce(state, change) {
         ...state,
         params: { ...state.params, [key]: value, ...(p?.sets?.(value, state.params) ?? {}) },
         changed: key,
+        // (other lines now: the mark would name another)
+        marked: null,
       };
     }
     case 'params':
-      return { ...state, params: { ...change.params } };
+      return { ...state, params: { ...change.params }, marked: null };
     case 'input':
-      return { ...state, input: change.input, moving: !!change.moving };
+      return { ...state, input: change.input, moving: !!change.moving, marked: null };
     case 'inputNote':
       return state.inputNote === change.note ? state : { ...state, inputNote: change.note };
     case 'exercise':
@@ -118,6 +128,10 @@ export function reduce(state, change) {
         : { ...state, controls: change.controls, text: change.text };
     case 'editable':
       return state.editable === change.on ? state : { ...state, editable: change.on };
+    case 'view':
+      return state.view === change.view ? state : { ...state, view: change.view, marked: null };
+    case 'mark':
+      return state.marked === change.line ? state : { ...state, marked: change.line };
     default:
       return state;
   }

@@ -16,11 +16,13 @@
 //! - [`point`]: a line as a point of P⁵, the Klein form and the Klein residual;
 //! - [`image`]: the 3D image of P⁵ the reader steers, and the image of M in it;
 //! - [`polygon`]: a ruled surface as a polygon on M, Ω of consecutive rulings (Ω = −h sin φ);
+//! - [`net`]: a congruence's grid as a net on M, Ω on each edge;
 //! - [`sections`]: a regulus's conic, a linear complex as a hyperplane section;
 //! - [`departure`]: how far the line-space subdivision's points leave M before N brings them back.
 
 pub mod departure;
 pub mod image;
+pub mod net;
 pub mod point;
 pub mod polygon;
 pub mod sections;

@@ -41,10 +41,9 @@ impl KleinPolygon {
         let steps = if closed && n > 2 { n } else { n.saturating_sub(1) };
         let (mut omega, mut torsal) = (Vec::with_capacity(steps), Vec::with_capacity(steps));
         for i in 0..steps {
-            let (a, b) = (&points[i], &points[(i + 1) % n]);
-            let w = klein_form(a, b);
+            let (w, t) = step(&points[i], &points[(i + 1) % n]);
             omega.push(w);
-            torsal.push(w.abs() <= KLEIN_TORSAL * a.m.length().max(b.m.length()).max(1.0));
+            torsal.push(t);
         }
         let max_residual = points.iter().map(|p| p.residual().abs()).fold(0.0, f64::max);
         KleinPolygon { points, omega, torsal, max_residual }
@@ -54,6 +53,14 @@ impl KleinPolygon {
     pub fn least_omega(&self) -> Option<(usize, f64)> {
         self.omega.iter().copied().enumerate().min_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
     }
+}
+
+/// Ω(A, B) of two neighbouring lines (K7) and whether their step is torsal: |Ω| ≤
+/// [`KLEIN_TORSAL`] · max(1, |m_A|, |m_B|) (the lines meet or are parallel, to rounding of their
+/// moments).
+pub(crate) fn step(a: &KleinPoint, b: &KleinPoint) -> (f64, bool) {
+    let w = klein_form(a, b);
+    (w, w.abs() <= KLEIN_TORSAL * a.m.length().max(b.m.length()).max(1.0))
 }
 
 #[cfg(test)]

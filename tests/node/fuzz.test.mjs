@@ -17,6 +17,7 @@ const {
   meshNormalsF32,
   linearComplex,
   kleinView,
+  kleinDeparture,
   hiddenLines,
 } = ruledlab;
 const { ToolPath } = cam;
@@ -413,6 +414,17 @@ const CALLS = [
         options(),
         { mix: pick(NUMBERS), turn: pick(NUMBERS), unit: pick(NUMBERS), closed: pick([true, false, value()]) },
       ]),
+    ),
+  (f) =>
+    kleinDeparture(
+      pick([value(), f.surface.segments(), [0, 0, 0, 1, 0, 0]]),
+      pick([
+        undefined,
+        value(),
+        options(),
+        { scheme: pick(['chaikin', 'bspline', 'four-point', 'bezier', value()]), steps: pick([...SMALL, value()]) },
+      ]),
+      pick([undefined, value(), options(), { mix: pick(NUMBERS), turn: pick(NUMBERS), unit: pick(NUMBERS) }]),
     ),
   (f) => f.analyticCongruence.focal(pick([undefined, ...SMALL, value()]), pick([undefined, ...SMALL, value()])),
   (f) =>

@@ -9,7 +9,7 @@ import { SCENES } from '../../www/scenes/index.js';
 import { translator } from '../../www/i18n/index.js';
 import { legendOf, defaults } from '../../www/scene.js';
 
-const { AnalyticSurface, kleinView } = ruledlab;
+const { AnalyticCongruence, AnalyticSurface, kleinView } = ruledlab;
 
 /** Runs `body` with the objects, freeing them after. */
 function using(objects, body) {
@@ -95,6 +95,12 @@ test('kleinView: wrong options are errors with codes', () => {
     { turn: Number.NaN },
     { mixx: 3 },
     { closed: 1 },
+    { rows: 3 },
+    { cols: 3 },
+    { rows: 1, cols: 3 },
+    { rows: -3, cols: 1 },
+    { rows: 1.5, cols: 2 },
+    { rows: 3, cols: 1e9 },
     'x',
   ]) {
     assert.throws(
@@ -107,8 +113,238 @@ test('kleinView: wrong options are errors with codes', () => {
     () => kleinView('lines'),
     (e) => e.code === 'invalid-argument',
   );
+  // a grid of the wrong shape, or closed: named for what is wrong
+  const four = [...segments, 0, 0, 0, 0, 0, 1];
+  for (const [lines, options, option] of [
+    [four, { rows: 2, cols: 2, closed: true }, 'closed'],
+    [segments, { rows: 2, cols: 2 }, null],
+    [four, { rows: 2 }, 'cols'],
+    [four, { cols: 2 }, 'rows'],
+    [four, { rows: 2, cols: 2.5 }, 'cols'],
+  ]) {
+    assert.throws(
+      () => kleinView(lines, /** @type {any} */ (options)),
+      (e) => e instanceof Error && e.code === 'invalid-argument' && (option === null || e.details?.option === option),
+      JSON.stringify(options),
+    );
+  }
+  assert.equal(kleinView(four, { rows: 2, cols: 2 }).omega.length, 4);
   // two rulings: one step, no conic
   const k = kleinView([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1]);
   assert.equal(k.omega.length, 1);
   assert.ok(Number.isNaN(k.planeDistance) && k.conic.length === 0);
+});
+
+/** A rows × cols grid of lines: line (i, j) through (j, i, 0) along `direction(j, i)`. */
+function grid(
+  /** @type {number} */ rows,
+  /** @type {number} */ cols,
+  /** @type {(x: number, y: number) => number[]} */ direction,
+) {
+  const out = [];
+  for (let i = 0; i < rows; i++)
+    for (let j = 0; j < cols; j++) {
+      const e = direction(j, i);
+      out.push(j, i, 0, j + e[0], i + e[1], e[2]);
+    }
+  return out;
+}
+
+test('kleinView of a grid: a net on M whose edges join neighbouring lines; a bundle torsal on every edge, a screw’s lines on none', () => {
+  const [rows, cols] = [3, 4];
+  const edges = rows * (cols - 1) + cols * (rows - 1);
+  // lines through the apex (0.3, −0.2, 2): every two meet
+  const bundle = kleinView(
+    grid(rows, cols, (x, y) => [0.3 - x, -0.2 - y, 2]),
+    { rows, cols },
+  );
+  assert.equal(bundle.omega.length, edges);
+  assert.equal(bundle.torsalSteps, edges);
+  assert.equal(bundle.points.length, 3 * rows * cols);
+  assert.equal(bundle.torsal.length, 6 * edges);
+  // the paths' tangents of a screw: neighbouring lines skew, Ω = −h sin φ of each pair
+  const screw = grid(rows, cols, (x, y) => [-y, x, 1]);
+  const k = kleinView(screw, { rows, cols });
+  assert.equal(k.torsalSteps, 0);
+  assert.equal(k.positive.length + k.negative.length, 6 * edges);
+  // edge 0 joins lines (0, 0) and (0, 1); edge rows·(cols − 1) joins (0, 0) and (1, 0)
+  const line = (/** @type {number} */ n) => {
+    const [a, b] = [screw.slice(6 * n, 6 * n + 3), screw.slice(6 * n + 3, 6 * n + 6)];
+    const e = b.map((v, c) => v - a[c]);
+    const len = Math.hypot(...e);
+    return { a, e: e.map((v) => v / len) };
+  };
+  const cross = (/** @type {number[]} */ u, /** @type {number[]} */ v) => [
+    u[1] * v[2] - u[2] * v[1],
+    u[2] * v[0] - u[0] * v[2],
+    u[0] * v[1] - u[1] * v[0],
+  ];
+  const dot = (/** @type {number[]} */ u, /** @type {number[]} */ v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  for (const [edge, m, n] of [
+    [0, 0, 1],
+    [rows * (cols - 1), 0, cols],
+    [edges - 1, cols * (rows - 1) - 1, rows * cols - 1],
+  ]) {
+    const [p, q] = [line(m), line(n)];
+    const c = cross(p.e, q.e);
+    // −h sin φ = −det(a_q − a_p, e_p, e_q)
+    const want = -dot(
+      q.a.map((v, i) => v - p.a[i]),
+      c,
+    );
+    assert.ok(Math.abs(k.omega[edge] - want) < 1e-14, `edge ${edge}: ${k.omega[edge]} vs ${want}`);
+  }
+  // the same lines as a polygon: one step fewer than lines, along the rows and across them
+  assert.equal(kleinView(screw).omega.length, rows * cols - 1);
+});
+
+test('the catalogue’s congruences as nets on M: every point on M to 1e-12, and the scene draws them', () => {
+  const { t, format } = translator('en');
+  const scene = SCENES.find((x) => x.id === 'klein');
+  assert.ok(scene);
+  for (const { name } of AnalyticCongruence.list()) {
+    using([AnalyticCongruence.byName(name)], (c) => {
+      using([c.grid(7, 5)], (g) => {
+        const k = kleinView(g.segments(), { rows: 7, cols: 5 });
+        assert.ok(k.maxResidual <= 1e-12, `${name}: ${k.maxResidual}`);
+        assert.equal(k.omega.length, 7 * 4 + 5 * 6);
+      });
+      // as the book says, on the scene's 12 × 12 grid: no torsal edge; Example 5's lines in one
+      // linear complex, the others' not
+      using([c.grid(12, 12)], (g) => {
+        const k = kleinView(g.segments(), { rows: 12, cols: 12 });
+        assert.equal(k.torsalSteps, 0, name);
+        if (name === 'example5') assert.ok(k.complexResidual < 1e-12, `${name}: ${k.complexResidual}`);
+        else assert.ok(k.complexResidual > 0.1, `${name}: ${k.complexResidual}`);
+      });
+    });
+    const params = { ...defaults(scene), surface: `congruence:${name}`, side: 8, mark: 9 };
+    const built = scene.create(params, { t, format, lang: 'en' });
+    assert.equal(built.data?.grid?.rows, 8);
+    assert.equal(built.data?.segments.length, 6 * 64);
+    assert.match(built.description, /The 8 × 8 lines of the congruence/);
+    assert.match(built.description, /Line 9 of the grid \(row 1, column 1\)/);
+    const labels = legendOf(scene, params, built).map((e) => t(e.label));
+    assert.ok(labels.includes('edge of the net with Ω > 0'), String(labels));
+    const marked = built.readouts?.find((r) => r.label === 'klein.readout.gridMarked');
+    // line 9 = (1, 1): the edge to (1, 2) is edge 1·7 + 1
+    const k = kleinView(built.data?.segments ?? [], {
+      rows: 8,
+      cols: 8,
+      mix: params.mix,
+      turn: params.turn,
+      unit: params.unit,
+    });
+    assert.equal(marked?.value, k.omega[8]);
+  }
+});
+
+test('lines meeting two skew lines: a net on M torsal on every edge, its least |Ω| named by its two lines', () => {
+  const { t, format } = translator('en');
+  const scene = SCENES.find((x) => x.id === 'klein');
+  assert.ok(scene);
+  // every line from (u, 0, −1) to (v, a v, 1): a row's lines share their first point, a
+  // column's their second, so neighbouring lines always meet
+  const params = { ...defaults(scene), surface: 'congruence:two-lines', side: 5, mark: 4 };
+  const built = scene.create(params, { t, format, lang: 'en' });
+  const value = (/** @type {string} */ label) => built.readouts?.find((r) => r.label === label)?.value;
+  assert.equal(value('klein.readout.gridTorsal'), '40 / 40');
+  assert.equal(value('klein.readout.gridMarked'), 'klein.readout.gridNoStep');
+  assert.match(built.description, /torsal edges \(Ω = 0: the two lines meet or are parallel\): 40 of 40/);
+  assert.match(built.description, /between the lines \(\d, \d\)–\(\d, \d\) of the grid/);
+  // the surfaces keep their own slider; a congruence's is the grid's side
+  assert.equal(scene.params.find((q) => q.key === 'n')?.unless?.(params), 'klein.reason.congruence');
+  assert.equal(
+    scene.params.find((q) => q.key === 'side')?.unless?.({ ...params, surface: 'cone' }),
+    'klein.reason.surface',
+  );
+  // the edge the description names: its two lines' Ω, from their points and directions, is the
+  // least |Ω| of all neighbouring pairs of the grid
+  const other = scene.create({ ...params, surface: 'congruence:example5' }, { t, format, lang: 'en' });
+  const segments = other.data?.segments ?? new Float64Array();
+  const omega = (/** @type {number} */ m, /** @type {number} */ n) => {
+    const [a, b] = [segments.slice(6 * m, 6 * m + 6), segments.slice(6 * n, 6 * n + 6)];
+    const unit = (/** @type {Float64Array} */ s) => {
+      const e = [s[3] - s[0], s[4] - s[1], s[5] - s[2]];
+      const l = Math.hypot(...e);
+      return e.map((x) => x / l);
+    };
+    const [e, f] = [unit(a), unit(b)];
+    const d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    const cross = [e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]];
+    return -(d[0] * cross[0] + d[1] * cross[1] + d[2] * cross[2]);
+  };
+  const pairs = [];
+  for (let i = 0; i < 5; i++)
+    for (let j = 0; j < 5; j++) {
+      if (j < 4) pairs.push(Math.abs(omega(5 * i + j, 5 * i + j + 1)));
+      if (i < 4) pairs.push(Math.abs(omega(5 * i + j, 5 * (i + 1) + j)));
+    }
+  const named = other.description.match(/between the lines \((\d), (\d)\)–\((\d), (\d)\) of the grid/);
+  assert.ok(named, other.description);
+  const [r1, c1, r2, c2] = named.slice(1).map(Number);
+  assert.equal(Math.abs(r2 - r1) + Math.abs(c2 - c1), 1, 'neighbours');
+  assert.ok(Math.abs(Math.abs(omega(5 * r1 + c1, 5 * r2 + c2)) - Math.min(...pairs)) < 1e-15);
+});
+
+test('kleinDeparture: Chaikin’s first new line leaves M by ρ = a·a₀/|a|² of ¾ L₀ + ¼ L₁ (computed here from the points); after N, on M; the line scene’s points each joined to its line’s', () => {
+  const { kleinDeparture } = ruledlab;
+  using([AnalyticSurface.byName('helicoid')], (h) => {
+    using([h.sample(24, h.ranges?.() ?? { uMin: -1, uMax: 1 })], (s) => {
+      const seg = s.segments();
+      // the lines' 6-vectors (e, p × e), e the unit direction, from the segments' points alone
+      const line = (/** @type {number} */ i) => {
+        const p = [seg[6 * i], seg[6 * i + 1], seg[6 * i + 2]];
+        const d = [0, 1, 2].map((k) => seg[6 * i + 3 + k] - p[k]);
+        const n = Math.hypot(...d);
+        const e = d.map((x) => x / n);
+        const m = [p[1] * e[2] - p[2] * e[1], p[2] * e[0] - p[0] * e[2], p[0] * e[1] - p[1] * e[0]];
+        return [...e, ...m];
+      };
+      const [l0, l1] = [line(0), line(1)];
+      // (the scheme orients the lines consistently: here the first two already are, e₀·e₁ > 0)
+      assert.ok(l0[0] * l1[0] + l0[1] * l1[1] + l0[2] * l1[2] > 0);
+      const c = l0.map((x, k) => 0.75 * x + 0.25 * l1[k]);
+      const want = (c[0] * c[3] + c[1] * c[4] + c[2] * c[5]) / (c[0] ** 2 + c[1] ** 2 + c[2] ** 2);
+      const d = kleinDeparture(seg, { scheme: 'chaikin', steps: 1 }, { mix: 30, turn: 90, unit: 1 });
+      assert.ok(d.before[0] >= Math.abs(want) && Math.abs(want) > 1e-4, `${d.before[0]} ≥ |${want}|`);
+      assert.ok(d.after[0] < 1e-15, `after N: ${d.after[0]}`);
+      assert.equal(d.points.length, d.lines.length);
+      // the points after N are the refined lines' points on M, as kleinView draws them
+      using([s.subdivide({ scheme: 'chaikin', steps: 1, space: 'lines' })], (r) => {
+        const k = kleinView(r.segments(), { mix: 30, turn: 90, unit: 1 });
+        assert.equal(k.points.length, d.lines.length);
+        for (let i = 0; i < k.points.length; i++) assert.ok(Math.abs(k.points[i] - d.lines[i]) < 1e-6, `${i}`);
+      });
+    });
+  });
+  // errors with codes, naming what is wrong
+  const seg = new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, -1, 0, 2]);
+  for (const [subdivide, image, option] of [
+    [{ scheme: 'bezier', steps: 1 }, undefined, 'space'],
+    [{ scheme: 'chaikin', steps: 1 }, { mix: 91 }, 'mix'],
+    [{ scheme: 'chaikin', steps: 1 }, { angle: 3 }, 'angle'],
+    [{ scheme: 'chaikin', step: 1 }, undefined, 'step'],
+  ]) {
+    assert.throws(
+      () => kleinDeparture(seg, /** @type {any} */ (subdivide), /** @type {any} */ (image)),
+      (/** @type {any} */ e) => e instanceof Error && typeof e.code === 'string' && e.message.includes(option),
+      option,
+    );
+  }
+});
+
+test('the line scene says how far its points leave M, and draws them beside: before N, joined to their lines’ points', () => {
+  const scene = SCENES.find((s) => s.id === 'lines');
+  assert.ok(scene);
+  const { t } = translator('en');
+  const built = scene.create(defaults(scene), { t, lang: 'en', input: null, data: null });
+  const before = built.readouts?.find((r) => r.label === 'lines.readout.departure')?.value;
+  const after = built.readouts?.find((r) => r.label === 'lines.readout.departureAfter')?.value;
+  assert.ok(typeof before === 'number' && before > 1e-6, `before ${before}`);
+  assert.ok(typeof after === 'number' && after < 1e-14, `after ${after}`);
+  const [chords, points] = built.klein?.layers ?? [];
+  assert.equal(points.positions.length, 3 * ((built.data?.segments.length ?? 0) / 6));
+  assert.equal(chords.positions.length, 2 * points.positions.length);
+  assert.match(built.klein?.description ?? '', /leave it by up to ρ = /);
 });

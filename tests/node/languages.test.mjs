@@ -77,7 +77,7 @@ function parseTable(name, source) {
 /**
  * Everything wrong with a set of languages' tables.
  * @param {Record<string, Record<string, string>>} sources   language → file name → source
- *   (index.js left out), English first
+ *   (index.js and tables.js left out), English first
  * @returns {string[]}
  */
 function problems(sources) {
@@ -157,7 +157,7 @@ function problems(sources) {
   return out;
 }
 
-/** The languages' folders, English first, and each one's table files (not index.js). */
+/** The languages' folders, English first, and each one's table files (not index.js, nor tables.js, which gathers them). */
 function readSources() {
   const langs = readdirSync(I18N)
     .filter((name) => statSync(join(I18N, name)).isDirectory())
@@ -167,7 +167,7 @@ function readSources() {
       lang,
       Object.fromEntries(
         readdirSync(join(I18N, lang))
-          .filter((f) => f.endsWith('.js') && f !== 'index.js')
+          .filter((f) => f.endsWith('.js') && f !== 'index.js' && f !== 'tables.js')
           .sort()
           .map((f) => [f, readFileSync(join(I18N, lang, f), 'utf8')]),
       ),
@@ -199,6 +199,22 @@ test('each language’s index.js assembles every file of its folder, and the pag
       }
     }
     assert.deepEqual(Object.keys(table).sort(), [...union].sort(), `${lang}/index.js does not hold every file`);
+  }
+});
+
+test('notation, written alike in every language, is read by every translator and defined by no language', async () => {
+  const { default: notation } = await import('../../www/i18n/notation.js');
+  const { translator, loadLanguage, LANGUAGE_CODES } = await import('../../www/i18n/translate.js');
+  assert.ok(Object.keys(notation).length > 0);
+  for (const lang of LANGUAGE_CODES) {
+    assert.ok(await loadLanguage(lang));
+    const table = (await import(pathToFileURL(join(I18N, lang, 'index.js')).href)).default;
+    const { t, has } = translator(lang);
+    for (const [key, text] of Object.entries(notation)) {
+      assert.ok(!(key in table), `${lang} defines "${key}", which is notation (i18n/notation.js)`);
+      assert.equal(t(key), text, `${lang}: ${key}`);
+      assert.ok(has(key), `${lang}: has(${key})`);
+    }
   }
 });
 

@@ -51,6 +51,26 @@ test('each change gives the state it says; a change that changes nothing tells n
     ['en', false, true, true],
   );
   assert.equal(store.dispatch({ type: 'panel', controls: false, text: true }), false);
+  // the view: the 3D view alone, then the Klein view beside it; the same again changes nothing
+  assert.equal(store.state.view, 'space');
+  store.dispatch({ type: 'view', view: 'split' });
+  assert.equal(store.state.view, 'split');
+  assert.equal(store.dispatch({ type: 'view', view: 'split' }), false);
+  // a line marked in both views; new lines (a parameter, an edit, an opening) or closing the view forget it
+  store.dispatch({ type: 'mark', line: 3 });
+  assert.equal(store.state.marked, 3);
+  store.dispatch({ type: 'view', view: 'space' });
+  assert.equal(store.state.marked, null);
+  for (const change of /** @type {import('../../www/store.js').StageChange[]} */ ([
+    { type: 'input', input: null },
+    { type: 'param', key: 'n', value: 41 },
+    { type: 'params', params: { n: 40 } },
+    { type: 'open', scene: store.state.scene, params: store.state.params },
+  ])) {
+    store.dispatch({ type: 'mark', line: 2 });
+    store.dispatch(change);
+    assert.equal(store.state.marked, null, change.type);
+  }
   // every state told is the one after, the one before is what it was
   for (const [next, previous] of told) assert.notEqual(next, previous);
 });

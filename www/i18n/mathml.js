@@ -25,3 +25,11 @@ export const frac = (/** @type {string} */ a, /** @type {string} */ b) => `<mfra
 
 /** Plain tokens in a row, as inline math: m$('s ( u )'). */
 export const mr = (/** @type {string} */ tokens) => m(row(tokens));
+
+/** The indexed symbols the explanations of every language use: f_{i,i+1}, f_{i,i−1}, R_i. */
+export const fii1 = sub('f', 'i , i + 1');
+export const fiim = sub('f', 'i , i − 1');
+export const Ri = sub('R', 'i');
+
+/** 100000 → "100 000": numbers as the explanations of every language write them. */
+export const grouped = (/** @type {number} */ n) => String(n).replace(/\B(?=(\d{3})+(?!\d))/g, ' ');

@@ -4,6 +4,7 @@
 // always here; another language is loaded on demand (loadLanguage): the page loads only the
 // language it shows. i18n/index.js is this module with every language loaded.
 import en from './en/index.js';
+import notation from './notation.js';
 
 /** The tables of the languages loaded so far. @type {Record<string, Record<string, string>>} */
 export const LANGUAGES = { en };
@@ -130,7 +131,11 @@ export function translator(lang) {
   };
   /** @param {string} key @param {Record<string, string | number>} [vars] */
   const t = (key, vars) => {
-    const text = table[key] ?? /** @type {Record<string, string>} */ (en)[key] ?? key;
+    const text =
+      table[key] ??
+      /** @type {Record<string, string>} */ (en)[key] ??
+      /** @type {Record<string, string>} */ (notation)[key] ??
+      key;
     if (!vars) return text;
     // {n:rule:rules}: the number and the word in the singular or the plural
     return text
@@ -141,7 +146,7 @@ export function translator(lang) {
         name in vars ? (typeof vars[name] === 'number' ? format(vars[name]) : String(vars[name])) : m,
       );
   };
-  return { lang, t, format, has: (/** @type {string} */ key) => key in table };
+  return { lang, t, format, has: (/** @type {string} */ key) => key in table || key in notation };
 }
 
 const SUPERSCRIPT = { '-': '⁻', 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹' };

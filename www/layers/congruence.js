@@ -4,7 +4,7 @@
 // one cell; with the scheme controls and the legend the congruence scene and "Your
 // congruence" share.
 import { gridIndices } from '../../pkg/ruledlab.js';
-import { bounds } from '../scene.js';
+import { bounds, schemeParam } from '../scene.js';
 import { butterflyStencil } from '../diagrams/butterfly.js';
 import { FINE_LINES, ROUNDING } from '../limits.js';
 
@@ -188,14 +188,7 @@ function fig14Cell(refined) {
 
 /** The scheme parameters shared with "Your congruence". */
 export const SCHEME_PARAMS = /** @type {import('../scene.js').Param[]} */ ([
-  {
-    key: 'scheme',
-    label: 'param.scheme',
-    type: 'select',
-    value: 'paper',
-    refit: false,
-    options: () => Object.keys(SCHEMES).map((s) => [s, `congruence.scheme.${s}`]),
-  },
+  schemeParam('paper', () => Object.keys(SCHEMES).map((s) => [s, `congruence.scheme.${s}`])),
   {
     key: 'steps',
     label: 'param.steps',

@@ -163,7 +163,7 @@ export function isometryLayers(own, surface, p, { t }, name, finer = null, from 
         type: 'image/svg+xml',
       },
     ],
-    data: { segments: bent.segments() },
+    data: { segments: bent.segments(), transform: frame },
     problems: parallelProblems(inv.parallel, n, t),
     // the handles snap onto the striction points (a cone's: its apex), with φ, h, δ beside them
     ...(from

@@ -79,6 +79,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       data: stage.data,
       input: stage.input,
       paper: stage.paper?.id ?? null,
+      view: stage.view,
       task: stage.task ? taskLink(stage.task, (id) => builtInTask(id) !== null) : null,
       seed: stage.task?.drawn ? String(stage.task.drawn.seed) : null,
     };
@@ -191,6 +192,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     doc.body.classList.toggle('embed', asked.embed);
     stage.setPanel(!asked.embed || asked.controls, !asked.embed || asked.text);
     stage.setEditable(!asked.embed || !!asked.edit);
+    stage.setView(asked.view ?? 'space');
     const text = stored(STORED);
     // an edit: the link's, or one too large for it that this tab kept
     const input = asked.input ?? keptInput(asked.scene.id);

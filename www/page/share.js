@@ -199,7 +199,7 @@ export function shareDialog(dialog, context) {
             script,
             stage.paper,
             state.camera,
-            { input, readers: who },
+            { input, readers: who, klein: state.view === 'split' },
           ),
       scriptNote,
     );
@@ -402,8 +402,9 @@ export function iframeSnippet(
  *   one-file embed script (a classic script, loads from anywhere) or the module `ruledlab/view`
  * @param {import('../paper.js').PaperPreset | null} [paper]
  * @param {number[] | null} [camera]   yaw, pitch, distance, target x, y, z
- * @param {{input?: import('../scene.js').Input | null, readers?: Readers}} [edit]   the edit of the
- *   input to show, and what readers may do (default: see the controls)
+ * @param {{input?: import('../scene.js').Input | null, readers?: Readers, klein?: boolean}} [edit]   the edit of the
+ *   input to show, what readers may do (default: see the controls), and whether the Klein view
+ *   stands beside the 3D view
  */
 export function elementSnippet(scene, params, lang, script, paper = null, camera = null, edit = {}) {
   /** @type {import('../scene.js').Params} */
@@ -419,6 +420,7 @@ export function elementSnippet(scene, params, lang, script, paper = null, camera
     ? `<script type="module" src="${attr(script.src)}"></script>`
     : `<script defer src="${attr(script.src)}"></script>`;
   const input = edit.input ? ` input="${attr(encodeInput(edit.input))}"` : '';
+  const klein = edit.klein ? ' klein' : '';
   const readers = edit.readers ?? { controls: true, text: false, edit: false, leave: false };
-  return `${tag}\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}"${view}${input} lang="${attr(lang)}"${attributes({ ...readers, leave: false })} height="560"></ruled-view>`;
+  return `${tag}\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}"${view}${input} lang="${attr(lang)}"${attributes({ ...readers, leave: false })}${klein} height="560"></ruled-view>`;
 }

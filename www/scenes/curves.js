@@ -3,7 +3,7 @@
 // core measures the largest turning angle after each step, beyond the steps drawn, and the
 // claims say where the four-point scheme's polygons still straighten out on this polygon.
 import { subdividePolygon, turningAngles } from '../../pkg/ruledlab.js';
-import { defineScene, bounds, f32 } from '../scene.js';
+import { defineScene, bounds, f32, schemeParam } from '../scene.js';
 import { logLogPlot } from '../diagrams/plot.js';
 import { ROUNDING, TURNING_FROM, TURNING_STEPS } from '../limits.js';
 import { pointSet } from '../edit/sets.js';
@@ -52,18 +52,11 @@ export const scene = defineScene({
   text: 'curves.text',
   paper: true,
   params: [
-    {
-      key: 'scheme',
-      label: 'param.scheme',
-      type: 'select',
-      value: 'four-point',
-      refit: false,
-      options: () => [
-        ['chaikin', 'curves.scheme.chaikin'],
-        ['four-point', 'curves.scheme.fourPoint'],
-        ['bspline', 'curves.scheme.bspline'],
-      ],
-    },
+    schemeParam('four-point', () => [
+      ['chaikin', 'curves.scheme.chaikin'],
+      ['four-point', 'curves.scheme.fourPoint'],
+      ['bspline', 'curves.scheme.bspline'],
+    ]),
     { key: 'steps', label: 'param.steps', type: 'range', min: 0, max: 6, step: 1, value: 4, play: true },
     {
       key: 'w',

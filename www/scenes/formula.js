@@ -3,7 +3,7 @@
 // bending, the approximate development, and subdivision. The core parses the formulas and
 // differentiates them exactly; the formulas live in the link, so a lecturer can link an exercise.
 import { AnalyticSurface, fitLine } from '../../pkg/ruledlab.js';
-import { defineScene, scoped } from '../scene.js';
+import { defineScene, scoped, schemeParam } from '../scene.js';
 import { strictionLayers, exactCurve } from '../layers/striction.js';
 import { convergenceLayers } from '../layers/convergence.js';
 import { BENDING_TIME, isometryLayers } from '../layers/isometry.js';
@@ -176,20 +176,16 @@ export const scene = defineScene({
       unless: onlyFor('convergence'),
     },
     { ...BENDING_TIME, unless: onlyFor('bending') },
-    {
-      key: 'scheme',
-      label: 'param.scheme',
-      type: 'select',
-      value: 'four-point',
-      refit: false,
-      options: () => [
+    schemeParam(
+      'four-point',
+      () => [
         ['four-point', 'formula.scheme.fourPoint'],
         ['chaikin', 'formula.scheme.chaikin'],
         ['variational', 'formula.scheme.variational'],
         ['lines', 'formula.scheme.lines'],
       ],
-      unless: onlyFor('subdivision'),
-    },
+      { unless: onlyFor('subdivision') },
+    ),
     {
       key: 'steps',
       label: 'param.steps',

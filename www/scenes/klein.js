@@ -3,73 +3,147 @@
 // core's klein module; the book's chapter "The Klein quadric"): the polygon of the points with
 // the Klein form Ω of consecutive rulings by sign (Ω = −h sin φ: 0 where they meet), the image of
 // M (the shell between two spheres), the conic of a regulus and the residual of a linear complex.
-// The surface itself stands beside, scaled.
-import { AnalyticSurface, kleinView } from '../../pkg/ruledlab.js';
+// A congruence of the catalogue is a net on M instead: its grid's edges join neighbouring lines.
+// The surface or congruence itself stands beside, scaled.
+import { AnalyticCongruence, AnalyticSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
-import { surfaceOptions, rangesOf } from '../catalogue.js';
+import { GRID_LEGEND, KLEIN_LEGEND, kleinImage } from '../klein-image.js';
+import { surfaceOptions, rangesOf, CONGRUENCE_PRESETS, congruencePreset } from '../catalogue.js';
 
 /** The surfaces offered: a regulus, helical surfaces, developables (torsal at every step), a conoid. */
 const SOURCES = ['hyperboloid', 'helicoid', 'helical', 'cone', 'helix-tangent', 'quartic', 'hyperbolic-paraboloid'];
+
+/** A congruence in the menu: its name after this prefix (a surface's value is its own name). */
+const CONGRUENCE = 'congruence:';
+
+/** Whether the menu's choice is a congruence. @param {import('../scene.js').Params} p */
+const isCongruence = (p) => String(p.surface).startsWith(CONGRUENCE);
 
 /** Where the surface in space stands: its centre (the origin of space) left of the image, and its radius there. */
 const SPACE_AT = -3.2;
 const SPACE_RADIUS = 1.3;
 
-/** @typedef {{surface: string, n: number, mix: number, turn: number, unit: number, conic: boolean, space: boolean, mark: number}} KleinParams */
+/** @typedef {{surface: string, n: number, side: number, mix: number, turn: number, unit: number, conic: boolean, space: boolean, mark: number}} KleinParams */
+
+/**
+ * The side × side grid of the catalogue's congruence `name` (from its formulas, as "Your
+ * congruence" makes it).
+ * @param {string} name
+ * @param {number} side
+ */
+function grid(name, side) {
+  const c = congruencePreset(name);
+  if (!c) throw new Error(`unknown congruence "${name}"`);
+  const analytic = AnalyticCongruence.fromFormulas({
+    p: c.p,
+    e: c.e,
+    u: c.u,
+    v: c.v,
+    rows: side,
+    cols: side,
+    parameters: c.parameters,
+  });
+  try {
+    return analytic.grid(side, side, c.reach);
+  } finally {
+    analytic.free();
+  }
+}
+
+/**
+ * Edge `k` of a side × side grid (kleinView's order: the rows' edges row by row, then the
+ * columns' column by column) named by its two lines: "(row, column)–(row, column)".
+ * @param {number} k
+ * @param {number} side
+ */
+function edgeName(k, side) {
+  const along = side * (side - 1);
+  const [a, b] =
+    k < along
+      ? [Math.floor(k / (side - 1)), k % (side - 1)]
+      : [(k - along) % (side - 1), Math.floor((k - along) / (side - 1))];
+  return k < along ? `(${a}, ${b})–(${a}, ${b + 1})` : `(${a}, ${b})–(${a + 1}, ${b})`;
+}
 
 export const scene = defineScene({
   id: 'klein',
   title: 'klein.title',
   text: 'klein.text',
   params: [
-    { key: 'surface', label: 'param.surface', type: 'select', value: 'hyperboloid', options: surfaceOptions(SOURCES) },
-    { key: 'n', label: 'param.rulings', type: 'range', min: 6, max: 80, step: 1, value: 24, play: true },
+    {
+      key: 'surface',
+      label: 'klein.param.source',
+      type: 'select',
+      value: 'hyperboloid',
+      options: () => [
+        ...surfaceOptions(SOURCES)(),
+        ...CONGRUENCE_PRESETS.map(
+          (c) => /** @type {[string, string]} */ ([CONGRUENCE + c.name, `congruence.${c.name}`]),
+        ),
+      ],
+    },
+    {
+      key: 'n',
+      label: 'param.rulings',
+      type: 'range',
+      min: 6,
+      max: 80,
+      step: 1,
+      value: 24,
+      play: true,
+      unless: (p) => (isCongruence(p) ? 'klein.reason.congruence' : null),
+    },
+    {
+      key: 'side',
+      label: 'klein.param.side',
+      type: 'range',
+      min: 2,
+      max: 12,
+      step: 1,
+      value: 12,
+      play: true,
+      unless: (p) => (isCongruence(p) ? null : 'klein.reason.surface'),
+    },
     { key: 'mix', label: 'klein.param.mix', type: 'range', min: 0, max: 90, step: 1, value: 30, play: true },
     { key: 'turn', label: 'klein.param.turn', type: 'range', min: 0, max: 360, step: 1, value: 90, play: true },
     { key: 'unit', label: 'klein.param.unit', type: 'range', min: 0.25, max: 4, step: 0.05, value: 1, play: true },
     { key: 'conic', label: 'klein.param.conic', type: 'checkbox', value: true },
     { key: 'space', label: 'klein.param.space', type: 'checkbox', value: true },
-    { key: 'mark', label: 'klein.param.mark', type: 'range', min: 0, max: 79, step: 1, value: 0, play: true },
+    { key: 'mark', label: 'klein.param.mark', type: 'range', min: 0, max: 143, step: 1, value: 0, play: true },
   ],
-  legend: [
-    { style: 'givenPoint', label: 'klein.legend.points' },
-    { style: 'lineScheme', label: 'klein.legend.positive' },
-    { style: 'endpointScheme', label: 'klein.legend.negative' },
-    { style: 'torsal', label: 'klein.legend.torsal' },
-    { style: 'level', label: 'klein.legend.outline' },
-    { style: 'conic', label: 'klein.legend.conic', when: (p) => !!p.conic },
-  ],
+  legend: [...KLEIN_LEGEND],
   /** @param {KleinParams} p */
   create(p, { t }) {
     return scoped((own) => {
-      const name = String(p.surface);
-      const ranges = rangesOf(name);
-      const surface = own(own(AnalyticSurface.byName(name)).sample(Number(p.n), ranges));
-      const segments = surface.segmentsF32();
-      const k = kleinView(surface.segments(), {
-        mix: Number(p.mix),
-        turn: Number(p.turn),
-        unit: Number(p.unit),
-        closed: ranges.closed,
+      const chosen = String(p.surface);
+      const congruence = chosen.startsWith(CONGRUENCE) ? chosen.slice(CONGRUENCE.length) : null;
+      const name = congruence ?? chosen;
+      const side = Number(p.side);
+      const ranges = congruence ? null : rangesOf(name);
+      const lines = congruence
+        ? own(grid(name, side))
+        : own(own(AnalyticSurface.byName(name)).sample(Number(p.n), ranges ?? {}));
+      const segments = lines.segmentsF32();
+      const projection = { mix: Number(p.mix), turn: Number(p.turn), unit: Number(p.unit) };
+      const { k, layers, conic } = kleinImage(lines.segments(), {
+        ...projection,
+        grid: congruence ? { rows: side, cols: side } : null,
+        closed: !!ranges?.closed,
+        conic: !!p.conic,
       });
-      /** @type {import('../scene.js').Layer[]} */
-      const layers = [
-        { kind: 'polyline', style: 'level', positions: k.outline },
-        { kind: 'segments', style: 'lineScheme', positions: k.positive },
-        { kind: 'segments', style: 'endpointScheme', positions: k.negative },
-        { kind: 'segments', style: 'torsal', positions: k.torsal },
-        { kind: 'points', style: 'givenPoint', positions: k.points },
-      ];
-      const conic = p.conic && k.conic.length > 0;
-      if (conic) layers.push({ kind: 'polyline', style: 'conic', positions: k.conic, closed: true });
+      const count = segments.length / 6;
       // the surface in space, about its own origin (where the moments are taken), scaled to stand beside
       let extent = 0;
       for (const x of segments) extent = Math.max(extent, Math.abs(x));
       const s = SPACE_RADIUS / (extent || 1);
       const transform = new Float32Array([s, 0, 0, 0, 0, s, 0, 0, 0, 0, s, 0, SPACE_AT, 0, 0, 1]);
       if (p.space) layers.push({ kind: 'segments', style: 'ruling', positions: segments, transform });
-      // the marked ruling R_i, bold in space and red on M (i up to the last ruling)
-      const i = Math.min(Number(p.mark), Number(p.n) - 1);
+      // the marked ruling R_i (line i of the grid, row by row), bold in space and red on M
+      const i = Math.min(Number(p.mark), count - 1);
+      // the step from it to the next ruling, or the edge to the next line of its row (the grid's
+      // edges run along the rows first): −1 where there is none
+      const [row, col] = [Math.floor(i / side), i % side];
+      const next = congruence ? (col < side - 1 ? row * (side - 1) + col : -1) : i < k.omega.length ? i : -1;
       if (p.space)
         layers.push({ kind: 'segments', style: 'rulingBold', positions: segments.slice(6 * i, 6 * i + 6), transform });
       layers.push({ kind: 'points', style: 'strictionPoint', positions: k.points.slice(3 * i, 3 * i + 3) });
@@ -79,16 +153,23 @@ export const scene = defineScene({
       /** @type {import('../scene.js').Readout[]} */
       const readouts = [
         { label: 'klein.readout.residual', value: k.maxResidual, exactZero: true },
-        { label: 'klein.readout.torsal', value: `${k.torsalSteps} / ${k.omega.length}` },
-        { label: 'klein.readout.least', value: k.leastOmega, exactZero: true },
         {
-          label: 'klein.readout.marked',
-          value: i < k.omega.length ? k.omega[i] : 'klein.readout.noStep',
+          label: congruence ? 'klein.readout.gridTorsal' : 'klein.readout.torsal',
+          value: `${k.torsalSteps} / ${k.omega.length}`,
+        },
+        { label: congruence ? 'klein.readout.gridLeast' : 'klein.readout.least', value: k.leastOmega, exactZero: true },
+        {
+          label: congruence ? 'klein.readout.gridMarked' : 'klein.readout.marked',
+          value: next >= 0 ? k.omega[next] : congruence ? 'klein.readout.gridNoStep' : 'klein.readout.noStep',
           exactZero: true,
         },
         {
-          label: 'klein.readout.plane',
-          value: Number.isFinite(k.planeDistance) ? k.planeDistance : 'klein.readout.noPlane',
+          label: congruence ? 'klein.readout.gridPlane' : 'klein.readout.plane',
+          value: Number.isFinite(k.planeDistance)
+            ? k.planeDistance
+            : congruence
+              ? 'klein.readout.gridNoPlane'
+              : 'klein.readout.noPlane',
           exactZero: true,
         },
         { label: 'klein.readout.complex', value: k.complexResidual, exactZero: true },
@@ -99,9 +180,9 @@ export const scene = defineScene({
         layers,
         readouts,
         description: [
-          t('klein.describe', {
-            surface: t(`surface.${name}`),
-            n: Number(p.n),
+          t(congruence ? 'klein.describe.grid' : 'klein.describe', {
+            surface: t(congruence ? `congruence.${name}` : `surface.${name}`),
+            n: congruence ? side : Number(p.n),
             mix: Number(p.mix),
             turn: Number(p.turn),
             unit: Number(p.unit),
@@ -109,20 +190,31 @@ export const scene = defineScene({
             outer,
             torsal: k.torsalSteps,
             steps: k.omega.length,
-            least: k.leastStep,
+            least: congruence ? edgeName(k.leastStep, side) : k.leastStep,
             omega: k.leastOmega,
             residual: k.maxResidual,
           }),
-          conic ? t('klein.describe.conic', { plane: k.planeDistance }) : p.conic ? t('klein.describe.noConic') : '',
+          conic
+            ? t(congruence ? 'klein.describe.gridConic' : 'klein.describe.conic', { plane: k.planeDistance })
+            : p.conic
+              ? t(congruence ? 'klein.describe.gridNoConic' : 'klein.describe.noConic')
+              : '',
           p.space ? t('klein.describe.space', { at: SPACE_AT }) : '',
-          t('klein.describe.mark', { i }),
+          congruence ? t('klein.describe.gridMark', { i, row, col }) : t('klein.describe.mark', { i }),
         ]
           .filter((x) => x)
           .join(' '),
         measures: { 'klein.leastStep': k.leastStep, 'klein.leastOmega': k.leastOmega },
         // the three rulings span no conic (the description says so): none in the legend either
         ...(p.conic && !conic ? { legendOff: ['klein.legend.conic'] } : {}),
-        data: { segments: surface.segments() },
+        // a congruence's net: its edges join neighbouring lines of the grid
+        ...(congruence ? { legendAs: GRID_LEGEND } : {}),
+        data: {
+          segments: lines.segments(),
+          // (drawn beside M, scaled: only if drawn at all)
+          ...(p.space ? { transform } : {}),
+          ...(congruence ? { grid: { rows: side, cols: side } } : {}),
+        },
       };
     });
   },

@@ -1,7 +1,8 @@
 // Beyond the paper: subdivision in the space of lines. Sliding the given endpoints along their
 // lines moves the endpoint scheme's surface, but not the line-space scheme's.
-import { AnalyticSurface, RuledSurface, stripIndices } from '../../pkg/ruledlab.js';
+import { AnalyticSurface, RuledSurface, kleinDeparture, stripIndices } from '../../pkg/ruledlab.js';
 import { defineScene, scoped, bounds } from '../scene.js';
+import { KLEIN_PROJECTION } from '../klein-image.js';
 import { rulingSet } from '../edit/sets.js';
 
 const RANGES = { hyperboloid: { uMin: 0, uMax: 3 }, helical: { uMin: 0, uMax: 6 }, quartic: { uMin: -1, uMax: 1 } };
@@ -58,6 +59,15 @@ export const scene = defineScene({
       const lines0 = own(base.subdivide({ ...options, space: 'lines', length }));
       const endpointTurn = ends0.maxAngleTo(ends);
       const lineTurn = lines0.maxAngleTo(lines);
+      // how far the line-space scheme's points leave the Klein quadric before N projects them back
+      const departure = kleinDeparture(slid.segments(), options, KLEIN_PROJECTION);
+      const before = departure.before[departure.before.length - 1];
+      const after = departure.after.reduce((m, x) => Math.max(m, x), 0);
+      const back = new Float32Array(2 * departure.points.length);
+      for (let i = 0; 3 * i < departure.points.length; i++) {
+        back.set(departure.points.subarray(3 * i, 3 * i + 3), 6 * i);
+        back.set(departure.lines.subarray(3 * i, 3 * i + 3), 6 * i + 3);
+      }
       const endsSeg = ends.segmentsF32();
       const linesSeg = lines.segmentsF32();
       return {
@@ -73,6 +83,8 @@ export const scene = defineScene({
         readouts: [
           { label: 'lines.readout.endpoints', value: endpointTurn, exactZero: true },
           { label: 'lines.readout.lines', value: lineTurn, exactZero: true },
+          { label: 'lines.readout.departure', value: before },
+          { label: 'lines.readout.departureAfter', value: after, exactZero: true },
         ],
         description: t(edited ? 'lines.describeEdited' : 'lines.describe', {
           surface: t(`surface.${name}`),
@@ -81,6 +93,18 @@ export const scene = defineScene({
           lineTurn,
         }),
         data: { segments: lines.segments() },
+        // beside, on M: the last step's points before N, each joined to its line's point after N
+        klein: {
+          layers: [
+            { kind: 'segments', style: 'barycentre', positions: back },
+            { kind: 'points', style: 'insertedPoint', positions: departure.points },
+          ],
+          legend: [
+            { style: 'insertedPoint', label: 'lines.klein.before' },
+            { style: 'barycentre', label: 'lines.klein.back' },
+          ],
+          description: t('lines.klein.describe', { steps: Number(p.steps), before, after }),
+        },
         // the handles: the given rulings' endpoints (Shift slides one along its ruling)
         input: { sets: [rulingSet(slid.segments())], from: t('edit.from.lines', { surface: t(`surface.${name}`) }) },
       };

@@ -6,7 +6,7 @@
 // path —, a long job refined and posted in the worker (post-job.js), and the poses optimised
 // against the target in the worker (optimise-job.js), the program's deviation before and after.
 import { cam } from '../cam.js';
-import { defineScene, scoped, bounds, f32 } from '../scene.js';
+import { defineScene, scoped, bounds, f32, schemeParam } from '../scene.js';
 import { POST_PARAMS, givenPath, postOf, postOptions, programFile, deviationDiagram } from '../layers/toolpath.js';
 import { JOB_PARAMS, drawnTool, stockOf } from '../layers/job.js';
 import { optimiseInWorker, postInWorker } from '../compute.js';
@@ -132,15 +132,9 @@ export const scene = defineScene({
   params: [
     { key: 'poses', label: 'milling.param.poses', type: 'range', min: 4, max: 12, step: 1, value: 7 },
     { key: 'steps', label: 'milling.param.steps', type: 'range', min: 0, max: 3, step: 1, value: 1, play: true },
-    {
-      key: 'scheme',
-      label: 'param.scheme',
-      type: 'select',
-      value: 'variational',
-      refit: false,
-      options: () => Object.keys(SCHEMES).map((s) => [s, `milling.scheme.${s}`]),
+    schemeParam('variational', () => Object.keys(SCHEMES).map((s) => [s, `milling.scheme.${s}`]), {
       unless: (p) => (Number(p.steps) === 0 ? 'milling.reason.steps' : null),
-    },
+    }),
     { key: 'tool', label: 'milling.param.tool', type: 'checkbox', value: true },
     {
       key: 'at',

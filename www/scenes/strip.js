@@ -3,7 +3,7 @@
 // triangulations of Fig. 9 with its notation, spheres at the inserted endpoints A_i (light)
 // and B_i (dark).
 import { AnalyticSurface, RuledSurface, stripIndices } from '../../pkg/ruledlab.js';
-import { defineScene, scoped, bounds } from '../scene.js';
+import { defineScene, scoped, bounds, schemeParam } from '../scene.js';
 import { ROUNDING } from '../limits.js';
 import { rulingSet } from '../edit/sets.js';
 
@@ -38,19 +38,12 @@ export const scene = defineScene({
   // an edit of the given rulings replaces the quartic surface (and its faint exact surface)
   fixed: ['exact'],
   params: [
-    {
-      key: 'scheme',
-      label: 'param.scheme',
-      type: 'select',
-      value: 'coupled',
-      refit: false,
-      options: () => [
-        ['literal', 'strip.scheme.literal'],
-        ['coupled', 'strip.scheme.coupled'],
-        ['averaged', 'strip.scheme.averaged'],
-        ['four-point', 'strip.scheme.fourPoint'],
-      ],
-    },
+    schemeParam('coupled', () => [
+      ['literal', 'strip.scheme.literal'],
+      ['coupled', 'strip.scheme.coupled'],
+      ['averaged', 'strip.scheme.averaged'],
+      ['four-point', 'strip.scheme.fourPoint'],
+    ]),
     {
       key: 'n',
       label: 'strip.param.n',

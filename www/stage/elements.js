@@ -20,7 +20,7 @@
  * @property {HTMLElement} modeLabel
  * @property {HTMLButtonElement} snap   snapping on or off
  * @property {HTMLButtonElement} done
- * @property {{edit: HTMLButtonElement, undo: HTMLButtonElement, redo: HTMLButtonElement, fit: HTMLButtonElement, reset: HTMLButtonElement, fullscreen: HTMLButtonElement, help: HTMLButtonElement}} buttons
+ * @property {{edit: HTMLButtonElement, undo: HTMLButtonElement, redo: HTMLButtonElement, klein: HTMLButtonElement, fit: HTMLButtonElement, reset: HTMLButtonElement, fullscreen: HTMLButtonElement, help: HTMLButtonElement}} buttons
  * @property {HTMLElement} progress
  * @property {HTMLProgressElement} progressBar
  * @property {HTMLButtonElement} cancel
@@ -28,6 +28,11 @@
  * @property {HTMLElement} noteBox   notes about link values that were not used
  * @property {HTMLElement} description   what the figure shows, for screen readers
  * @property {HTMLElement} status    the polite live region
+ * @property {HTMLElement} klein     the Klein view's box beside the 3D view (its canvas comes and goes: stage/klein-pane.js)
+ * @property {HTMLElement} kleinLabels
+ * @property {HTMLElement} kleinLegend   in the Klein view's box, or in the panel under the view's legend
+ * @property {HTMLElement} kleinNote     why the Klein view shows nothing
+ * @property {HTMLElement} kleinDescription   what the Klein view shows, for screen readers
  * @property {HTMLElement} panel
  * @property {HTMLElement} heading
  * @property {HTMLElement} authorBox the place of the page's "Make an exercise" panel
@@ -101,6 +106,7 @@ export function stageElements(host, { page = false }) {
     edit: button('rl-edit', true),
     undo: button('rl-undo', true),
     redo: button('rl-redo', true),
+    klein: button('rl-klein-toggle'),
     fit: button('rl-fit'),
     reset: button('rl-reset'),
     fullscreen: button('rl-fullscreen'),
@@ -115,7 +121,15 @@ export function stageElements(host, { page = false }) {
   const legend = el('ul', { className: 'rl-legend' });
   const noteBox = el('p', { className: 'rl-note', hidden: true });
   const view = take('.rl-view') ?? el('div', { className: 'rl-view' });
-  view.append(canvas, labels, legend, bar, progress, noteBox, error, description, status);
+  // the Klein view beside the 3D view (hidden unless asked for)
+  const klein = el('section', { className: 'rl-klein', hidden: true });
+  const kleinLabels = el('div', { className: 'rl-labels' });
+  kleinLabels.setAttribute('aria-hidden', 'true');
+  const kleinLegend = el('ul', { className: 'rl-legend rl-klein-legend', hidden: true });
+  const kleinNote = el('p', { className: 'rl-klein-note', hidden: true });
+  const kleinDescription = el('p', { className: 'rl-sr-only', id: `${id}-klein` });
+  klein.append(kleinLabels, kleinLegend, kleinNote, kleinDescription);
+  view.append(canvas, klein, labels, legend, bar, progress, noteBox, error, description, status);
 
   const paperCard = el('section', { className: 'rl-paper', hidden: true, id: `${id}-paper` });
   // a group, not a form: Enter in a field of a form in a sandboxed frame without allow-forms is a
@@ -174,6 +188,11 @@ export function stageElements(host, { page = false }) {
     noteBox,
     description,
     status,
+    klein,
+    kleinLabels,
+    kleinLegend,
+    kleinNote,
+    kleinDescription,
     panel,
     ...parts,
     shortcuts,

@@ -36,6 +36,11 @@ export function arrange(els, ports) {
   if (legendInPanel && legend.parentElement !== panel) els.heading.after(legend);
   if (!legendInPanel && legend.parentElement !== view) view.insertBefore(legend, bar);
   legend.classList.toggle('rl-legend-panel', legendInPanel);
+  // the Klein view's legend with it, under it
+  const { klein, kleinLegend } = els;
+  if (legendInPanel && kleinLegend.previousElementSibling !== legend) legend.after(kleinLegend);
+  if (!legendInPanel && kleinLegend.parentElement !== klein) klein.insertBefore(kleinLegend, els.kleinNote);
+  kleinLegend.classList.toggle('rl-legend-panel', legendInPanel);
   root.classList.toggle('rl-tiny', width > 0 && width < TINY);
   // the hint under the view only where it fits beside the toolbar on one line
   root.classList.toggle('rl-view-small', view.getBoundingClientRect().width < SMALL_VIEW);
@@ -45,13 +50,15 @@ export function arrange(els, ports) {
 }
 
 /**
- * The shares of the view's height that the legend (top) and the toolbar (bottom) cover in a
- * narrow box; none beside a panel.
+ * The shares of a canvas's height (the 3D view's, or `canvas`: the Klein view's) that the legend
+ * (top) and the toolbar (bottom) cover in a narrow box; none beside a panel. (Split, the 3D view
+ * has the upper half: the toolbar lies over the Klein view.)
  * @param {import('./elements.js').StageElements} els
+ * @param {HTMLElement} [canvas]
  */
-export function covered({ root, view, legend, toolbar }) {
+export function covered({ root, view, legend, toolbar, canvas: space }, canvas = space) {
   if (!root.classList.contains('rl-narrow')) return { top: 0, bottom: 0 };
-  const box = view.getBoundingClientRect();
+  const box = canvas.getBoundingClientRect();
   if (!box.height) return { top: 0, bottom: 0 };
   const top = legend.hidden || !view.contains(legend) ? null : legend.getBoundingClientRect();
   const bar = toolbar.getBoundingClientRect();

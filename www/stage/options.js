@@ -8,9 +8,10 @@
  * @property {string | null} [lang]
  * @property {boolean} [page]       the stage is the page's (the page scrolls; a narrow view stays at the top of the screen)
  * @property {boolean} [editable]   the reader may drag the scene's handles (the page; <ruled-view editable>)
+ * @property {'space' | 'split'} [view]   the 3D view alone (default), or the Klein view of the scene's lines beside it
  * @property {(data: import('../scene.js').ImportedData) => void} [onEditAsData]   "Edit as data" of a
  *   scene without handles: show its sample as your data (the "data" scene)
- * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input', ended: boolean}) => void} [onChange]
+ * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input' | 'view', ended: boolean}) => void} [onChange]
  * @property {(type: 'check' | 'solved' | 'solution', report: import('../task/panel.js').TaskReport) => void} [onTask]
  *   an exercise was checked, solved, or its solution shown (which counts for nothing)
  * @property {() => import('../task/panel.js').SolutionRule} [solutionRule]   when the solution is offered

@@ -13,6 +13,7 @@ const KEYS = [
   ['+  −', 'keys.zoom'],
   ['F  0  Home', 'keys.fit'],
   ['D', 'keys.describe'],
+  ['[  ]', 'keys.kleinMark'],
   ['R', 'keys.reset'],
   ['Space', 'keys.play'],
   ['.', 'keys.step'],

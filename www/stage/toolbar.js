@@ -1,4 +1,4 @@
-// The view's own buttons — Fit, Reset, Fullscreen, ? (the list of keys and gestures) and Cancel
+// The view's own buttons — the Klein view beside it, Fit, Reset, Fullscreen, ? (the list of keys and gestures) and Cancel
 // of long work — and the view's texts that depend on the language but not on the scene (its
 // name, the hint, the labels of the legend, controls and readout). Each button asks the stage for
 // what it does (`actions`).
@@ -9,7 +9,7 @@ import { touchScreen } from './touch.js';
 /**
  * Wires the view's buttons to what they ask of the stage.
  * @param {import('./elements.js').StageElements} els
- * @param {{fit: () => void, reset: () => void, fullscreen: () => void, help: () => void, cancel: () => void}} actions
+ * @param {{fit: () => void, reset: () => void, fullscreen: () => void, klein: () => void, help: () => void, cancel: () => void}} actions
  */
 export function wireToolbar(els, actions) {
   const { buttons, cancel, progress } = els;
@@ -22,6 +22,9 @@ export function wireToolbar(els, actions) {
     const on = els.root.ownerDocument.fullscreenElement === els.root;
     buttons.fullscreen.setAttribute('aria-pressed', String(on));
   });
+  // a toggle: pressed while the Klein view stands beside the 3D view (the stage sets it from its state)
+  buttons.klein.addEventListener('click', actions.klein);
+  buttons.klein.setAttribute('aria-pressed', 'false');
   buttons.help.addEventListener('click', actions.help);
   cancel.addEventListener('click', () => {
     actions.cancel();
@@ -45,6 +48,8 @@ export function labelToolbar(els, { t }) {
   labelButton(buttons.fullscreen, '⤢', t('view.fullscreen'));
   // a frame without allow="fullscreen" cannot: no button that does nothing
   buttons.fullscreen.hidden = !canFullscreen(canvas.ownerDocument);
+  labelButton(buttons.klein, 'M', t('view.klein'));
+  buttons.klein.title = t('view.kleinTitle');
   buttons.help.textContent = '?';
   buttons.help.setAttribute('aria-label', t('view.shortcuts'));
   buttons.help.title = t('view.shortcuts');

@@ -28,8 +28,20 @@ export const CSS = `
 .rl-stage.rl-narrow .rl-bar { left: .35rem; right: .35rem; bottom: .35rem; }
 .rl-view canvas { position: absolute; inset: 0; width: 100%; height: 100%; display: block; touch-action: none; outline: none; }
 .rl-view canvas:focus-visible { outline: 3px solid var(--focus); outline-offset: -3px; }
-.rl-view:has(canvas:focus-visible)::after { content: ""; position: absolute; inset: 0; border: 3px solid var(--focus); pointer-events: none; }
+.rl-view:has(> canvas:focus-visible)::after { content: ""; position: absolute; inset: 0; border: 3px solid var(--focus); pointer-events: none; }
 .rl-labels { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
+.rl-klein { position: absolute; top: 0; right: 0; bottom: 0; left: 50%; overflow: hidden; border-left: 1px solid var(--line); background: var(--paper); }
+.rl-split > .rl-view > canvas { right: 50%; width: 50%; }
+.rl-split > .rl-view::after { right: 50%; }
+.rl-stage.rl-narrow.rl-split > .rl-view::after { right: 0; bottom: 50%; }
+.rl-split > .rl-view > .rl-legend { max-width: calc(50% - 1.2rem); }
+.rl-stage.rl-narrow.rl-split > .rl-view > canvas { right: 0; width: 100%; bottom: 50%; height: 50%; }
+.rl-stage.rl-narrow.rl-split > .rl-view > .rl-legend { max-width: calc(100% - .7rem); max-height: 19%; }
+.rl-stage.rl-narrow .rl-klein { left: 0; top: 50%; border-left: 0; border-top: 1px solid var(--line); }
+.rl-klein-note { position: absolute; inset: 1rem; margin: 0; color: var(--muted); }
+.rl-klein-ring { position: absolute; pointer-events: none; left: -11px; top: -11px; width: 22px; height: 22px; border-radius: 50%; border: 3px solid #d55e00; background: rgb(255 255 255 / .25); }
+.rl-line-mark { position: absolute; left: 0; top: 0; pointer-events: none; overflow: hidden; }
+.rl-line-mark line { stroke: #d55e00; stroke-width: 4; stroke-linecap: round; }
 .rl-label { position: absolute; left: 0; top: 0; font: italic 15px/1 "Times New Roman", "STIX Two Text", serif; color: var(--ink);
   background: rgb(251 250 247 / .8); padding: 1px 3px; border-radius: 3px; white-space: nowrap; }
 .rl-stage sub, .rl-stage sup { font-size: max(12px, .72em); line-height: 1; }
@@ -189,7 +201,7 @@ export const CSS = `
    352 px, so at 360 px the bar reaches to 2 px of the edges and each group's buttons touch, as
    segments (the groups kept apart by a pixel) */
 .rl-narrow .rl-editbar-label { display: none; }
-.rl-narrow .rl-view.rl-editing .rl-toolbar > :is(.rl-reset, .rl-fullscreen, .rl-help) { display: none; }
+.rl-narrow .rl-view.rl-editing .rl-toolbar > :is(.rl-reset, .rl-fullscreen, .rl-help, .rl-klein-toggle) { display: none; }
 .rl-narrow .rl-view.rl-editing .rl-bar { left: 2px; right: 2px; gap: 1px; }
 .rl-narrow .rl-view.rl-editing :is(.rl-toolbar, .rl-modes) { gap: 0; }
 .rl-narrow .rl-view.rl-editing .rl-editbar { gap: 1px; }

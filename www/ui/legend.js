@@ -55,9 +55,19 @@ export function swatch(doc, styleKey) {
  * @param {import('../scene.js').Built | null} [built]
  */
 export function showLegend(list, scene, params, t, built) {
+  showEntries(list, legendOf(scene, params, built), t);
+}
+
+/**
+ * Fills `list` with legend entries (a style and the i18n key of its name each).
+ * @param {HTMLElement} list
+ * @param {Array<{style: string, label: string}>} entries
+ * @param {(key: string) => string} t
+ */
+export function showEntries(list, entries, t) {
   const doc = list.ownerDocument;
   list.replaceChildren(
-    ...legendOf(scene, params, built).map((entry) => {
+    ...entries.map((entry) => {
       const li = doc.createElement('li');
       li.dataset.style = entry.style;
       li.append(swatch(doc, entry.style), appendRich(doc.createElement('span'), t(entry.label)));

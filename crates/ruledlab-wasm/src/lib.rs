@@ -24,6 +24,7 @@ mod ruled_surface;
 // the free functions
 mod hidden_lines;
 mod import;
+mod klein_departure;
 mod klein_view;
 mod line_fit;
 mod mesh;
@@ -42,6 +43,7 @@ pub use analytic_congruence::AnalyticCongruence;
 pub use analytic_surface::AnalyticSurface;
 pub use hidden_lines::hidden_lines;
 pub use import::import_segments;
+pub use klein_departure::klein_departure;
 pub use klein_view::klein_view;
 pub use line_congruence::LineCongruence;
 pub use linear_complex::linear_complex_of;

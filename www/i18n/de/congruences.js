@@ -77,12 +77,6 @@ export default {
     ' Die Brennebenen schneiden sich unter |cos| bis {normality} (0 für die Normalen einer Fläche).',
 
   'formulaCongruence.title': 'Ihre Kongruenz (Formeln)',
-  'formulaCongruence.param.px': 'p(u, v): x',
-  'formulaCongruence.param.py': 'p(u, v): y',
-  'formulaCongruence.param.pz': 'p(u, v): z',
-  'formulaCongruence.param.ex': 'e(u, v): x',
-  'formulaCongruence.param.ey': 'e(u, v): y',
-  'formulaCongruence.param.ez': 'e(u, v): z',
   'formulaCongruence.param.umin': 'u von',
   'formulaCongruence.param.umax': 'u bis',
   'formulaCongruence.param.vmin': 'v von',

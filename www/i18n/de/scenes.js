@@ -151,12 +151,6 @@ export default {
 
   'formula.title': 'Ihre Fläche (Formeln)',
   'formula.param.preset': 'Ausgehend von',
-  'formula.param.ax': 'a(u): x',
-  'formula.param.ay': 'a(u): y',
-  'formula.param.az': 'a(u): z',
-  'formula.param.ex': 'e(u): x',
-  'formula.param.ey': 'e(u): y',
-  'formula.param.ez': 'e(u): z',
   'formula.param.umin': 'u von',
   'formula.param.umax': 'u bis',
   'formula.param.vmin': 'v von',

@@ -72,6 +72,13 @@ export default {
   'lines.legend.lines': 'Vierpunktschema auf den Geraden',
   'lines.readout.endpoints': 'Endpunktschema: neue Erzeugende gedreht um (rad)',
   'lines.readout.lines': 'Geradenraumschema: gedreht um (rad)',
+  'lines.readout.departure':
+    'Geradenraum, letzter Schritt: größter Abstand ρ seiner Punkte von der Klein-Quadrik vor der Rückprojektion',
+  'lines.readout.departureAfter': 'Geradenraum: größtes ρ der Geraden nach der Rückprojektion',
+  'lines.klein.before': 'die kombinierten Punkte des letzten Schritts, vor der Rückprojektion auf M',
+  'lines.klein.back': 'jeder zurück auf den Punkt seiner Geraden auf M projiziert',
+  'lines.klein.describe':
+    'Das Geradenraumschema kombiniert die 6-Vektoren der Geraden linear: Die kombinierten Punkte verlassen M und werden zurückprojiziert. In Schritt {steps}, dem letzten, verlassen sie M um bis zu ρ = {before} (rot, jeder durch eine gestrichelte Sehne mit dem Punkt seiner Geraden auf M verbunden); nach der Projektion ist das größte ρ {after}.',
   'lines.describe':
     'Neun Erzeugende: {surface}, ihre Endpunkte entlang der Erzeugenden um {slide} des Musters verschoben; die neuen Erzeugenden des Endpunktschemas drehten sich um bis zu {endpointTurn} rad, die des Geradenraumschemas um {lineTurn}.',
   'lines.describeEdited':

@@ -76,12 +76,6 @@ export default {
 
   // your congruence
   'formulaCongruence.title': 'Your congruence (formulas)',
-  'formulaCongruence.param.px': 'p(u, v): x',
-  'formulaCongruence.param.py': 'p(u, v): y',
-  'formulaCongruence.param.pz': 'p(u, v): z',
-  'formulaCongruence.param.ex': 'e(u, v): x',
-  'formulaCongruence.param.ey': 'e(u, v): y',
-  'formulaCongruence.param.ez': 'e(u, v): z',
   'formulaCongruence.param.umin': 'u from',
   'formulaCongruence.param.umax': 'u to',
   'formulaCongruence.param.vmin': 'v from',

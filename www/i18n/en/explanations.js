@@ -3,14 +3,8 @@
 //   congruence.text, milling.text, formula.text, focal.text, formulaCongruence.text, lines.text,
 //   large.text, data.text
 // The page's limits are quoted from limits.js, never retyped.
-import { sub, m, mr, display, frac, row } from '../mathml.js';
+import { sub, m, mr, display, frac, row, fii1, fiim, Ri, grouped } from '../mathml.js';
 import { DRAW_LIMIT, MAX_LINK_RULINGS, TURNING_FROM, TURNING_STEPS } from '../../limits.js';
-
-const fii1 = sub('f', 'i , i + 1');
-const fiim = sub('f', 'i , i − 1');
-const Ri = sub('R', 'i');
-/** 100000 → "100 000": numbers as the explanations write them. */
-const grouped = (/** @type {number} */ n) => String(n).replace(/\B(?=(\d{3})+(?!\d))/g, ' ');
 
 export default {
   'striction.text': `

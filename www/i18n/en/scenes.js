@@ -157,12 +157,6 @@ export default {
   // your surface
   'formula.title': 'Your surface (formulas)',
   'formula.param.preset': 'Start from',
-  'formula.param.ax': 'a(u): x',
-  'formula.param.ay': 'a(u): y',
-  'formula.param.az': 'a(u): z',
-  'formula.param.ex': 'e(u): x',
-  'formula.param.ey': 'e(u): y',
-  'formula.param.ez': 'e(u): z',
   'formula.param.umin': 'u from',
   'formula.param.umax': 'u to',
   'formula.param.vmin': 'v from',

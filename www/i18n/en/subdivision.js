@@ -75,6 +75,13 @@ export default {
   'lines.legend.lines': 'four-point on the lines',
   'lines.readout.endpoints': 'endpoint scheme: new rulings turned by (rad)',
   'lines.readout.lines': 'line-space scheme: turned by (rad)',
+  'lines.readout.departure':
+    'line space, last step: its points’ largest distance ρ from the Klein quadric before they are projected back',
+  'lines.readout.departureAfter': 'line space: the lines’ largest ρ after being projected back',
+  'lines.klein.before': 'the last step’s combined points, before they are projected back onto M',
+  'lines.klein.back': 'each projected back to its line’s point on M',
+  'lines.klein.describe':
+    'The line-space scheme combines the lines’ 6-vectors linearly: the combined points leave M and are projected back. In step {steps}, the last, they leave it by up to ρ = {before} (red, each joined by a dashed chord to the point of its line on M); after the projection the largest ρ is {after}.',
   'lines.describe':
     'Nine rulings of the {surface} with their endpoints slid along the rulings by {slide} of the pattern; the endpoint scheme\u2019s new rulings turned by up to {endpointTurn} rad, the line-space scheme\u2019s by {lineTurn}.',
   'lines.describeEdited':
