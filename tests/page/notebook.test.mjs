@@ -441,8 +441,14 @@ test('a million rulings from NumPy go through the kernel into the view, which dr
       // still opening this one, and the output then stays "Loading widget…" (an upstream race:
       // jupyter-widgets/ipywidgets#3549). A reader runs the cell again; so does the test, once,
       // and fails if the view does not come then.
-      const output = await cells.nth(0).locator('.jp-OutputArea').innerText().catch(() => '(none)');
-      console.log(`the view did not come in 90 s; the cell's output: ${JSON.stringify(output.slice(0, 400))}; run again`);
+      const output = await cells
+        .nth(0)
+        .locator('.jp-OutputArea')
+        .innerText()
+        .catch(() => '(none)');
+      console.log(
+        `the view did not come in 90 s; the cell's output: ${JSON.stringify(output.slice(0, 400))}; run again`,
+      );
       const prompt = cells.nth(0).locator('.jp-InputArea-prompt');
       const before = (await prompt.innerText()).trim();
       await prompt.click();

@@ -154,15 +154,17 @@ test('pasted CSV/JSON and typed formulas carrying payloads stay text', async () 
   // old message when the error is now elsewhere), its message plain text: waited for, not for a
   // fixed time (the scene is rebuilt after the last change, later on a busy machine)
   const errors = p.locator('.rl-fielderror:not([hidden])');
-  await p.waitForFunction(
-    () =>
-      document.querySelectorAll('.rl-fielderror:not([hidden])').length === 1 &&
-      /^(The x component of a\(u\)|The field “u from”):/.test(
-        document.querySelector('.rl-fielderror:not([hidden])')?.textContent ?? '',
-      ),
-    undefined,
-    { timeout: 20000 },
-  ).catch(() => {});
+  await p
+    .waitForFunction(
+      () =>
+        document.querySelectorAll('.rl-fielderror:not([hidden])').length === 1 &&
+        /^(The x component of a\(u\)|The field “u from”):/.test(
+          document.querySelector('.rl-fielderror:not([hidden])')?.textContent ?? '',
+        ),
+      undefined,
+      { timeout: 20000 },
+    )
+    .catch(() => {});
   assert.equal(await p.evaluate(() => window.__pwned), 0);
   assert.deepEqual(await injected(p), []);
   const marked = await errors.allInnerTexts();
