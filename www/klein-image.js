@@ -5,9 +5,9 @@
 // image and the conic of the first, middle and last line. The Klein scene draws its catalogue
 // with it, and the Klein view beside the 3D view (stage/klein-pane.js) the lines of any scene.
 import { kleinView } from '../pkg/ruledlab.js';
+import { KLEIN_PROJECTION } from './klein-projection.js';
 
-/** The projection a Klein image is drawn in unless the reader steers it (the Klein scene's defaults). */
-export const KLEIN_PROJECTION = Object.freeze({ mix: 30, turn: 90, unit: 1 });
+export { KLEIN_PROJECTION };
 
 /** What a Klein image draws, in its legend (the conic where it is asked for). */
 export const KLEIN_LEGEND = Object.freeze([

@@ -212,3 +212,14 @@ export const H5P_HEIGHT = 640;
  * without a lighter stand-in while the camera moves).
  */
 export const MAX_KLEIN_LINES = 100_000;
+
+/**
+ * The Klein image's projection (klein-projection.js): α (mix, degrees), β (turn, degrees) and ℓ
+ * (the unit of length), with the steps the sliders take — the Klein scene's and the Klein view's
+ * beside any scene; a link's or an attribute's value outside is held at the nearest end.
+ */
+export const KLEIN_RANGES = Object.freeze({
+  mix: Object.freeze({ min: 0, max: 90, step: 1 }),
+  turn: Object.freeze({ min: 0, max: 360, step: 1 }),
+  unit: Object.freeze({ min: 0.25, max: 4, step: 0.05 }),
+});

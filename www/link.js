@@ -1,5 +1,6 @@
 // The link's codec: a view in the URL hash, and back (the page's address, Share's links):
-//   #scene=striction&surface=hyperboloid&n=36&cam=yaw,pitch,distance,x,y,z&lang=de&klein
+//   #scene=striction&surface=hyperboloid&n=36&cam=yaw,pitch,distance,x,y,z&lang=de&klein=30,90,1
+//   (klein: the Klein view beside, in the image α,β,ℓ; a bare klein: in the scene's own image)
 // The page's own keys (RESERVED_KEYS of scene.js) never collide with a scene's parameters.
 // A hash longer than MAX_HASH characters is not read at all (the page says so); a value that
 // cannot be used falls back to its default with a note, never an exception.
@@ -8,6 +9,7 @@ import { findPreset, withPreset } from './paper.js';
 import { decodeInput, encodeInput, linkableInput } from './edit/input.js';
 import { MAX_HASH, MAX_LINK_RULINGS } from './limits.js';
 import { append } from './reduce.js';
+import { readProjection, writeProjection } from './klein-projection.js';
 
 /**
  * @typedef {object} LinkState
@@ -32,6 +34,8 @@ import { append } from './reduce.js';
  * @property {Array<{key: string, note: string, vars?: Record<string, string>}>} notes   values that were not used, and why
  * @property {string | null} [paper]    the figure or example of the paper shown (paper.js), if any
  * @property {'space' | 'split'} [view]  the 3D view alone, or the Klein view of the scene's lines beside it
+ * @property {{mix: number, turn: number, unit: number} | null} [projection]   the image the Klein
+ *   view beside draws in, as the reader steered it (α, β in degrees, ℓ; null: the scene's own)
  */
 
 /**
@@ -68,6 +72,10 @@ export function readLink(hash, scenes) {
   const input = q.has('input') ? decodeInput(q.get('input') ?? '') : null;
   if (q.has('input') && !input) notes.push({ key: 'input', note: 'note.badInput' });
   const lang = q.get('lang');
+  // the Klein view's image: three numbers, each held in its range (said); anything else is the scene's own (said)
+  const image = q.has('klein') ? readProjection(q.get('klein')) : null;
+  if (image === undefined) notes.push({ key: 'klein', note: 'note.badKlein' });
+  else if (image?.held) notes.push({ key: 'klein', note: 'note.kleinHeld' });
   return {
     scene,
     params: read.params,
@@ -87,6 +95,7 @@ export function readLink(hash, scenes) {
     notes,
     paper: paper?.id ?? null,
     view: q.has('klein') ? 'split' : 'space',
+    projection: image?.projection ?? null,
   };
 }
 
@@ -110,7 +119,7 @@ export function writeLink(state, { wholeInput = false } = {}) {
   for (const p of state.scene.params) q.set(p.key, serialize(p, state.params[p.key]));
   if (state.camera) q.set('cam', writeCamera(state.camera));
   if (state.lang) q.set('lang', state.lang);
-  if (state.view === 'split') q.set('klein', '');
+  if (state.view === 'split') q.set('klein', state.projection ? writeProjection(state.projection) : '');
   if (state.data && linkable(state.data)) q.set('data', writeData(state.data));
   if (state.input && (wholeInput || linkableInput(state.input))) q.set('input', encodeInput(state.input));
   return q.toString().replace(/=(&|$)/g, '$1');

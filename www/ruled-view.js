@@ -18,7 +18,8 @@
 // rulings or congruence in the "data" scene. `height` sizes the element (pixels or a CSS length,
 // without an inline style a strict Content-Security-Policy would refuse), `klein` (the scene's
 // lines as points of the Klein quadric, beside the 3D view; the toolbar's Klein quadric button
-// sets and clears it). `handles()` lists every handle with its position
+// sets and clears it; its value "α,β,ℓ" the image it is drawn in, written back when the reader
+// lets go of the view's sliders; empty: the scene's own image). `handles()` lists every handle with its position
 // in the element. `task` shows an exercise (a built-in one's id, or the page's "j." link value;
 // the book's "Exercises"), `seed` the seed of its drawn numbers, `leave` offers to leave it,
 // `solution` says when its solution is offered ("never", or after how many checks that did not
@@ -37,6 +38,7 @@ import { MAX_SOLUTION_AFTER } from './limits.js';
 import { SCENES } from './scenes/index.js';
 import { readParams, readSome, defaults } from './scene.js';
 import { readCamera, writeCamera } from './link.js';
+import { readProjection, writeProjection } from './klein-projection.js';
 import { decodeInput, encodeInput, fitsSets, linkableInput } from './edit/input.js';
 import { toScreen } from './edit/geometry.js';
 import { plainRich } from './ui/richtext.js';
@@ -47,6 +49,7 @@ import { linkSeed } from './task/format.js';
 import { start } from './core.js';
 import { translator, pickLanguage } from './i18n/index.js';
 import { startFailure } from './ui/errors.js';
+import { append } from './reduce.js';
 import { showFailure } from './ui/failure.js';
 import { PRESETS, findPreset, withPreset } from './paper.js';
 import { adoptStyles } from './ui/css.js';
@@ -230,7 +233,10 @@ export class RuledView extends HTMLElement {
     return this.stage ? exerciseApi(this.stage) : null;
   }
 
-  /** Whether the Klein view of the scene's lines stands beside the 3D view. */
+  /**
+   * Whether the Klein view of the scene's lines stands beside the 3D view (the attribute's value
+   * "α,β,ℓ", the image it is drawn in, stays while it does).
+   */
   get klein() {
     return this.hasAttribute('klein');
   }
@@ -353,6 +359,7 @@ export class RuledView extends HTMLElement {
       lang,
       editable: this.editable,
       view: this.klein ? 'split' : 'space',
+      projection: readProjection(this.getAttribute('klein'))?.projection ?? null,
       // Leave, where the attribute allows it: the scene without the exercise
       onLeaveTask: () => this.stage?.leaveExercise(),
       mayLeaveTask: () => this.hasAttribute('leave'),
@@ -371,8 +378,13 @@ export class RuledView extends HTMLElement {
         });
       },
       onChange: ({ reason, ended }) => {
-        // the reader's choice of the view, in the attribute
-        if (reason === 'view' && this.stage) this.klein = this.stage.view === 'split';
+        // the reader's choice of the view, in the attribute; its image when a slider is let go
+        if (reason === 'view' && this.stage) {
+          const { view, projection } = this.stage;
+          if (view !== 'split') this.removeAttribute('klein');
+          else if (ended) this.setAttribute('klein', projection ? writeProjection(projection) : '');
+          else if (!this.klein) this.setAttribute('klein', '');
+        }
         if (reason === 'input' && this.stage?.scene) {
           const stage = this.stage;
           const scene = this.stage.scene;
@@ -425,7 +437,7 @@ export class RuledView extends HTMLElement {
     else if (name === 'leave' || name === 'solution') this.stage.exercise.panel.render();
     else if (name === 'controls' || name === 'text') this.stage.setPanel(this.controls, this.text);
     else if (name === 'editable') this.stage.setEditable(this.editable);
-    else if (name === 'klein') this.stage.setView(this.klein ? 'split' : 'space');
+    else if (name === 'klein') this.kleinChanged();
     else if (name === 'input') {
       // an edit of its own (the property read back) is already shown
       const now = this.stage.input;
@@ -489,6 +501,7 @@ export class RuledView extends HTMLElement {
           if (this.hasAttribute('input') && !input) notes.push({ key: 'input', note: 'element.note.badInput' });
           const { seed, note } = linkSeed(this.getAttribute('seed'), 'element.note');
           if (note) notes.push(note);
+          append(notes, this.kleinNotes());
           if (this.hasAttribute('solution') && !readSolutionRule(this.getAttribute('solution')))
             notes.push({
               key: 'solution',
@@ -525,6 +538,35 @@ export class RuledView extends HTMLElement {
   }
 
   /**
+   * @internal The klein attribute drawn: the Klein view beside or not, in the image its value
+   * gives (a value it cannot read, or one it holds in range, refused as a note).
+   */
+  kleinChanged() {
+    const stage = this.stage;
+    if (!stage) return;
+    stage.setView(this.klein ? 'split' : 'space');
+    if (!this.klein) return;
+    const notes = this.kleinNotes();
+    stage.setProjection(readProjection(this.getAttribute('klein'))?.projection ?? null);
+    this.refused(notes);
+  }
+
+  /**
+   * @internal What the klein attribute's value cannot give: a note for a value that is not three
+   * numbers (the scene's own image is drawn), or for one outside its range (held there, and the
+   * held value written back into the attribute).
+   * @returns {Array<{key: string, note: string}>}
+   */
+  kleinNotes() {
+    if (!this.klein) return [];
+    const image = readProjection(this.getAttribute('klein'));
+    if (image === undefined) return [{ key: 'klein', note: 'element.note.badKlein' }];
+    if (!image.held || !image.projection) return [];
+    this.setAttribute('klein', writeProjection(image.projection));
+    return [{ key: 'klein', note: 'element.note.kleinHeld' }];
+  }
+
+  /**
    * @internal An attribute the element could not take (a value of `params`, `input`, `camera`,
    * `task`): shown as a note in the box, and an `error` event each, so that the page around can
    * tell — the scene is shown without it. `details.option` names the attribute.
@@ -533,7 +575,7 @@ export class RuledView extends HTMLElement {
     const t = this.stage?.i18n.t;
     if (!t) return;
     for (const n of notes) {
-      const option = ['camera', 'input', 'task'].includes(n.key) ? n.key : 'params';
+      const option = ['camera', 'input', 'task', 'klein'].includes(n.key) ? n.key : 'params';
       this.dispatchEvent(
         new CustomEvent('error', {
           detail: {

@@ -145,13 +145,14 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {() => SVGElement} [diagram]   a plot beside the view (built with the DOM)
  * @property {() => SVGElement} [figure]   deprecated: the earlier name of `diagram`
  * @property {Download[]} [downloads]
- * @property {{segments: Float64Array, grid?: {rows: number, cols: number}, transform?: Float32Array}} [data]
+ * @property {{segments: Float64Array, grid?: {rows: number, cols: number}, transform?: Float32Array, image?: {mix: number, turn: number, unit: number}}} [data]
  *   for export (and for the Klein view beside the 3D view, which draws these lines as points of
  *   M); `transform`: the 4 × 4 model matrix (column-major) the 3D view draws them with, where it
- *   moves them (a line marked in both views is drawn there)
- * @property {{layers: Layer[], legend: Array<{style: string, label: string}>, description: string}} [klein]
- *   what the Klein view beside the 3D view draws besides the points of `data`'s lines, in its
- *   image (klein-image.js's KLEIN_PROJECTION): e.g. the line-space scheme's points before N
+ *   moves them (a line marked in both views is drawn there); `image`: the scene's own Klein image
+ *   (the Klein scene's), which the view beside draws in until the reader steers it
+ * @property {(image: {mix: number, turn: number, unit: number}) => {layers: Layer[], legend: Array<{style: string, label: string}>, description: string}} [klein]
+ *   what the Klein view beside the 3D view draws besides the points of `data`'s lines, in the
+ *   image it draws in: e.g. the line-space scheme's points before N
  * @property {string} [note]          a remark shown under the readout (e.g. the level of detail)
  * @property {Claim[]} [claims]      the comparative sentences that apply to these parameters,
  *   each checked against the numbers of the readout (tests/node/claims.test.mjs sweeps the

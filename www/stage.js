@@ -34,6 +34,7 @@ import { EditHost } from './stage/edit-host.js';
 import { ExerciseHost } from './stage/exercise-host.js';
 import { Results } from './stage/results.js';
 import { KleinPane } from './stage/klein-pane.js';
+import { holdProjection } from './klein-projection.js';
 import { LineMark } from './stage/line-mark.js';
 import { Shortcuts } from './stage/shortcuts.js';
 import { Store, initialState, heldReason } from './store.js';
@@ -71,6 +72,7 @@ export class Stage {
         text: options.text ?? true,
         editable: !!options.editable,
         view: options.view === 'split' ? 'split' : 'space',
+        projection: options.projection ? holdProjection(options.projection).projection : null,
       }),
       (next, previous, change) => this.render(next, previous, change),
     );
@@ -162,8 +164,16 @@ export class Stage {
       say,
     });
     const mark = (/** @type {number | null} */ line) => this.dispatch({ type: 'mark', line });
+    // (the reader's image: the page writes it into its link, the element into its attribute, when let go)
+    const steer = (
+      /** @type {import('./klein-projection.js').KleinProjection} */ projection,
+      /** @type {boolean} */ ended,
+    ) => {
+      this.dispatch({ type: 'projection', projection });
+      this.report('view', ended);
+    };
     /** @internal the Klein view beside the 3D view (the split view) */
-    this.kleinPane = new KleinPane(els, { i18n, mark, say, insets: (canvas) => covered(els, canvas) });
+    this.kleinPane = new KleinPane(els, { i18n, mark, steer, say, insets: (canvas) => covered(els, canvas) });
     /** @internal the line marked in both views, drawn in the 3D view */
     this.lineMark = new LineMark(els, { viewer: this.viewer, mark });
     /** @internal */
@@ -268,7 +278,7 @@ export class Stage {
     if (changed('params', 'paper', 'exercise', 'scene', 'lang')) this.paperCard.render(next);
     if (changed('controls', 'text', 'exercise')) this.showPanel(next);
     if (changed('exercise', 'scene', 'input')) this.player.render(next);
-    if (changed('view', 'lang')) {
+    if (changed('view', 'lang', 'projection')) {
       this.els.buttons.klein.setAttribute('aria-pressed', String(next.view === 'split'));
       this.kleinPane.render(next, this.session.built);
     }
@@ -393,6 +403,31 @@ export class Stage {
   /** The 3D view alone ("space") or the Klein view beside it ("split"). @returns {'space' | 'split'} */
   get view() {
     return this.state.view;
+  }
+
+  /**
+   * Draws the Klein view beside in `projection` (each number held in its range and on its step),
+   * or in the scene's own image (null).
+   * @param {{mix: number, turn: number, unit: number} | null} projection
+   */
+  setProjection(projection) {
+    this.dispatch({ type: 'projection', projection });
+  }
+
+  /**
+   * The image the Klein view beside draws in as the reader steered it, or null (the scene's own).
+   * @returns {{mix: number, turn: number, unit: number} | null}
+   */
+  get projection() {
+    return this.state.projection;
+  }
+
+  /**
+   * The image the Klein view beside draws in now (the reader's, or the scene's own).
+   * @returns {{mix: number, turn: number, unit: number}}
+   */
+  get kleinImage() {
+    return this.kleinPane.image;
   }
 
   /** @internal The texts that depend on the language but not on the scene. */

@@ -6,6 +6,7 @@
 // what the core built (stage.js). Nothing else writes the state; a part that wants a change
 // dispatches one. tests/node/store.test.mjs holds the reducer to its rules,
 // tests/node/architecture.test.mjs holds the rest of www/ to writing nothing of it.
+import { holdProjection, sameProjection } from './klein-projection.js';
 
 /**
  * @typedef {object} StageState
@@ -21,6 +22,9 @@
  * @property {boolean} text            the panel shows the explanation
  * @property {boolean} editable        the reader may drag the scene's handles (an exercise decides in it)
  * @property {'space' | 'split'} view   the 3D view alone, or the Klein view of the scene's lines beside it
+ * @property {{mix: number, turn: number, unit: number} | null} projection   the image of P⁵ the
+ *   Klein view beside draws in, as the reader steered it (null: the scene's own, or KLEIN_PROJECTION);
+ *   each number held in its range and on its step (KLEIN_RANGES)
  * @property {number | null} marked   the line marked in both views (of the lines the scene exports), if any;
  *   forgotten when the lines change (an opening, a parameter, an edit) or the view closes
  * @property {string | null} changed   the parameter the reader changed last (an error names its field)
@@ -38,7 +42,8 @@
  *   | {type: 'panel', controls: boolean, text: boolean}
  *   | {type: 'editable', on: boolean}
  *   | {type: 'view', view: 'space' | 'split'}
- *   | {type: 'mark', line: number | null}} StageChange
+ *   | {type: 'mark', line: number | null}
+ *   | {type: 'projection', projection: {mix: number, turn: number, unit: number} | null}} StageChange
  */
 
 /** The state of a view that shows nothing yet. @returns {StageState} */
@@ -56,6 +61,7 @@ export function initialState(/** @type {Partial<StageState>} */ given = {}) {
     text: true,
     editable: false,
     view: 'space',
+    projection: null,
     marked: null,
     changed: null,
     moving: false,
@@ -132,6 +138,11 @@ export function reduce(state, change) {
       return state.view === change.view ? state : { ...state, view: change.view, marked: null };
     case 'mark':
       return state.marked === change.line ? state : { ...state, marked: change.line };
+    case 'projection': {
+      // (held in its ranges: a change from a link, an attribute or a slider alike)
+      const projection = change.projection && holdProjection(change.projection).projection;
+      return sameProjection(state.projection, projection) ? state : { ...state, projection };
+    }
     default:
       return state;
   }

@@ -8,6 +8,7 @@ import ruledlab from './load.mjs';
 import { SCENES } from '../../www/scenes/index.js';
 import { translator } from '../../www/i18n/index.js';
 import { legendOf, defaults } from '../../www/scene.js';
+import { KLEIN_RANGES } from '../../www/limits.js';
 
 const { AnalyticCongruence, AnalyticSurface, kleinView } = ruledlab;
 
@@ -343,8 +344,81 @@ test('the line scene says how far its points leave M, and draws them beside: bef
   const after = built.readouts?.find((r) => r.label === 'lines.readout.departureAfter')?.value;
   assert.ok(typeof before === 'number' && before > 1e-6, `before ${before}`);
   assert.ok(typeof after === 'number' && after < 1e-14, `after ${after}`);
-  const [chords, points] = built.klein?.layers ?? [];
-  assert.equal(points.positions.length, 3 * ((built.data?.segments.length ?? 0) / 6));
-  assert.equal(chords.positions.length, 2 * points.positions.length);
-  assert.match(built.klein?.description ?? '', /leave it by up to ρ = /);
+  assert.ok(built.klein && built.data);
+  // in the image the view beside draws in, whichever the reader steers: each chord ends at its
+  // line's point as kleinView draws the scene's lines in that image
+  for (const image of [
+    { mix: 30, turn: 90, unit: 1 },
+    { mix: 71, turn: 213, unit: 2.35 },
+  ]) {
+    const [chords, points] = built.klein(image).layers;
+    const count = built.data.segments.length / 6;
+    assert.equal(points.positions.length, 3 * count);
+    assert.equal(chords.positions.length, 2 * points.positions.length);
+    const drawn = ruledlab.kleinView(built.data.segments, image).points;
+    for (let i = 0; i < count; i++)
+      for (let c = 0; c < 3; c++) {
+        assert.equal(chords.positions[6 * i + c], points.positions[3 * i + c]);
+        assert.ok(
+          Math.abs(chords.positions[6 * i + 3 + c] - drawn[3 * i + c]) < 1e-6,
+          `line ${i} in ${JSON.stringify(image)}`,
+        );
+      }
+    assert.match(built.klein(image).description, /leave it by up to ρ = /);
+  }
+  // two images are two pictures
+  assert.notDeepEqual(
+    built.klein({ mix: 30, turn: 90, unit: 1 }).layers[1].positions,
+    built.klein({ mix: 71, turn: 213, unit: 2.35 }).layers[1].positions,
+  );
+});
+
+test('the link keeps the Klein view’s image: klein=α,β,ℓ read and written back, a bare klein the scene’s own, a bad or held value said', async () => {
+  const { readLink, writeLink } = await import('../../www/link.js');
+  const read = (/** @type {string} */ hash) => readLink(hash, SCENES);
+  const steered = read('#scene=striction&klein=12,200,2.35');
+  assert.equal(steered.view, 'split');
+  assert.deepEqual(steered.projection, { mix: 12, turn: 200, unit: 2.35 });
+  assert.deepEqual(steered.notes, []);
+  assert.match(writeLink(steered), /(^|&)klein=12%2C200%2C2\.35(&|$)/);
+  assert.deepEqual(read(`#${writeLink(steered)}`).projection, steered.projection);
+  // a bare klein: the scene's own image, written bare
+  const own = read('#scene=striction&klein');
+  assert.equal(own.projection, null);
+  assert.match(writeLink(own), /(^|&)klein(&|$)/);
+  // the 3D view alone writes no klein, whatever the image
+  assert.doesNotMatch(writeLink({ ...steered, view: 'space' }), /klein/);
+  // not three numbers: the scene's own image, said
+  for (const bad of ['12,200', 'a,b,c', '1,2,3,4', '1,,3', 'Infinity,1,1']) {
+    const link = read(`#scene=striction&klein=${encodeURIComponent(bad)}`);
+    assert.equal(link.view, 'split', bad);
+    assert.equal(link.projection, null, bad);
+    assert.deepEqual(link.notes, [{ key: 'klein', note: 'note.badKlein' }], bad);
+  }
+  // outside the ranges or between steps: held, said
+  const held = read('#scene=striction&klein=120,-3,0.33');
+  assert.deepEqual(held.projection, { mix: 90, turn: 0, unit: 0.35 });
+  assert.deepEqual(held.notes, [{ key: 'klein', note: 'note.kleinHeld' }]);
+  // the notes are in both languages
+  for (const lang of ['en', 'de']) {
+    const { has } = translator(lang);
+    for (const key of ['note.badKlein', 'note.kleinHeld', 'element.note.badKlein', 'element.note.kleinHeld'])
+      assert.ok(has(key), `${lang} ${key}`);
+  }
+});
+
+test('the Klein scene’s sliders α, β, ℓ are the ranges the Klein view beside holds, and its lines carry its image', () => {
+  const scene = SCENES.find((x) => x.id === 'klein');
+  assert.ok(scene);
+  for (const key of /** @type {const} */ (['mix', 'turn', 'unit'])) {
+    const p = scene.params.find((q) => q.key === key);
+    assert.ok(p && p.type === 'range');
+    assert.deepEqual({ min: p.min, max: p.max, step: p.step }, { ...KLEIN_RANGES[key] });
+  }
+  const { t } = translator('en');
+  const built = scene.create(
+    { ...defaults(scene), mix: 64, turn: 12, unit: 1.5 },
+    { t, lang: 'en', input: null, data: null },
+  );
+  assert.deepEqual(built.data?.image, { mix: 64, turn: 12, unit: 1.5 });
 });

@@ -151,3 +151,32 @@ test('the units menu converts the job: the same tool, tolerances, feed and part 
   state = reduce(state, { type: 'param', key: 'stock', value: '1 2 3' });
   assert.equal(reduce(state, { type: 'param', key: 'units', value: 'inch' }).params.stock, '1 2 3');
 });
+
+test('the Klein view’s projection: held in its ranges and on its steps, null for the scene’s own image, the same image changes nothing', () => {
+  let state = initialState();
+  assert.equal(state.projection, null);
+  state = reduce(state, { type: 'projection', projection: { mix: 12, turn: 200, unit: 2.5 } });
+  assert.deepEqual(state.projection, { mix: 12, turn: 200, unit: 2.5 });
+  assert.ok(Object.isFrozen(state.projection));
+  // the same image: the same state
+  assert.equal(reduce(state, { type: 'projection', projection: { mix: 12, turn: 200, unit: 2.5 } }), state);
+  // outside its range: at the nearest end; between steps: on the nearest, written with the step's digits
+  const held = reduce(state, { type: 'projection', projection: { mix: -5, turn: 361.2, unit: 0.1 + 0.2 } });
+  assert.deepEqual(held.projection, { mix: 0, turn: 360, unit: 0.3 });
+  assert.deepEqual(
+    reduce(state, { type: 'projection', projection: { mix: 44.6, turn: 9.4, unit: 1.024 } }).projection,
+    {
+      mix: 45,
+      turn: 9,
+      unit: 1,
+    },
+  );
+  assert.deepEqual(reduce(state, { type: 'projection', projection: { mix: 90, turn: 0, unit: 9 } }).projection, {
+    mix: 90,
+    turn: 0,
+    unit: 4,
+  });
+  // null: the scene's own image again; closing the view keeps the reader's image
+  assert.equal(reduce(state, { type: 'projection', projection: null }).projection, null);
+  assert.deepEqual(reduce(state, { type: 'view', view: 'space' }).projection, state.projection);
+});

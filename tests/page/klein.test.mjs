@@ -189,6 +189,103 @@ after(async () => {
   phone.server?.close();
 });
 
+/** The Klein view's sliders' values, α β ℓ, as the page shows them. @param {import('playwright-core').Locator | Page} root */
+const sliders = (root) =>
+  root
+    .locator('.rl-klein-steer input')
+    .evaluateAll((all) => all.map((e) => Number(/** @type {HTMLInputElement} */ (e).value)));
+
+test('the Klein view’s image steered by its sliders: the picture changes, the link keeps klein=α,β,ℓ and restores it, a bad value is said; <ruled-view klein="α,β,ℓ"> is written back when let go', async () => {
+  const { page, problems } = await session.open('#scene=striction&klein=12,200,2.35');
+  assert.equal(await page.locator('.rl-klein-steer').isVisible(), true);
+  assert.deepEqual(await sliders(page), [12, 200, 2.35]);
+  assert.deepEqual(await page.locator('.rl-klein-steer output').allInnerTexts(), ['12', '200', '2.35']);
+  assert.match((await description(page)) ?? '', /α = 12°, β = 200°, ℓ = 2\.35/);
+  // each slider is named for what it steers, in the Klein view (not the scene's sliders)
+  assert.deepEqual(
+    await page.locator('.rl-klein-steer input').evaluateAll((all) => all.map((e) => e.getAttribute('aria-label'))),
+    [
+      'Klein view: Mix α of the two spheres (°)',
+      'Klein view: Turn β of the second sphere (°)',
+      'Klein view: Unit of length ℓ',
+    ],
+  );
+  const before = await kleinShot(page, 'klein-steer-before');
+  // by keyboard: α five steps up; the picture changes and the link says so
+  const frames = await kleinFrames(page);
+  await page.locator('.rl-klein-steer input').first().focus();
+  for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowRight');
+  await page.waitForFunction(() => location.hash.includes('klein=17%2C200%2C2.35'));
+  assert.match((await description(page)) ?? '', /α = 17°/);
+  const after = await kleinShot(page, 'klein-steer-after', { after: frames });
+  assert.ok(countChanged(before, after) > 300, 'the image follows α');
+  // the link restores it, as handed out
+  const link = await page.evaluate(() => location.href);
+  const again = await page.context().newPage();
+  await again.goto(link);
+  await ready(again);
+  await again.locator('.rl-klein canvas').waitFor();
+  assert.deepEqual(await sliders(again), [17, 200, 2.35]);
+  await again.close();
+  // a link whose image is not three numbers: said, and the default image drawn
+  await page.goto(`${link.split('#')[0]}#scene=striction&klein=12,200`);
+  await ready(page);
+  await page.locator('.rl-klein canvas').waitFor();
+  assert.deepEqual(await sliders(page), [30, 90, 1]);
+  assert.match(await page.locator('.rl-note').innerText(), /not three numbers α,β,ℓ/);
+  assert.deepEqual(problems, []);
+  await page.close();
+
+  // the element: a value out of range held and written back, an error event naming the attribute
+  const { page: host, problems: hostProblems } = await session.open('examples/web-component.html', { wait: false });
+  await host.waitForFunction(() => customElements.get('ruled-view'));
+  const refused = await host.evaluate(async () => {
+    const view = /** @type {any} */ (document.createElement('ruled-view'));
+    /** @type {unknown[]} */
+    const errors = [];
+    view.addEventListener('error', (/** @type {CustomEvent} */ e) => errors.push(e.detail.details));
+    view.setAttribute('scene', 'striction');
+    view.setAttribute('klein', '120,10,1');
+    view.setAttribute('height', '420');
+    view.id = 'steered';
+    document.body.append(view);
+    await view.opening;
+    return errors;
+  });
+  assert.deepEqual(refused, [{ option: 'klein', reason: 'element.note.kleinHeld' }]);
+  const element = host.locator('#steered');
+  assert.equal(await element.getAttribute('klein'), '90,10,1');
+  await element.locator('.rl-klein canvas').waitFor();
+  assert.deepEqual(await sliders(element), [90, 10, 1]);
+  // a step of the slider does not rewrite the attribute; letting go does
+  const turn = element.locator('.rl-klein-steer input').nth(1);
+  await turn.evaluate((e) => {
+    /** @type {HTMLInputElement} */ (e).value = '40';
+    e.dispatchEvent(new Event('input', { bubbles: true }));
+  });
+  assert.equal(await element.getAttribute('klein'), '90,10,1');
+  assert.deepEqual(
+    await host.evaluate(() => /** @type {any} */ (document.querySelector('#steered')).stage.projection),
+    {
+      mix: 90,
+      turn: 40,
+      unit: 1,
+    },
+  );
+  await turn.evaluate((e) => e.dispatchEvent(new Event('change', { bubbles: true })));
+  assert.equal(await element.getAttribute('klein'), '90,40,1');
+  // the attribute steers the view; a bare klein is the scene's own image
+  await element.evaluate((e) => e.setAttribute('klein', '45,0,0.5'));
+  await host.waitForFunction(
+    () => /** @type {any} */ (document.querySelector('#steered')).stage.kleinImage.unit === 0.5,
+  );
+  assert.deepEqual(await sliders(element), [45, 0, 0.5]);
+  await element.evaluate((e) => e.setAttribute('klein', ''));
+  await host.waitForFunction(() => /** @type {any} */ (document.querySelector('#steered')).stage.kleinImage.mix === 30);
+  assert.deepEqual(hostProblems, []);
+  await host.close();
+});
+
 test('by finger at 390 px: the button opens the Klein view under the 3D view, its legend in the panel', async () => {
   const started = await startServer();
   phone.server = started.server;
@@ -218,6 +315,18 @@ test('by finger at 390 px: the button opens the Klein view under the 3D view, it
   assert.ok(Math.abs((await marked(page)) - 7) <= 1, `line ${await marked(page)}`);
   assert.equal(await page.locator('.rl-klein-ring').isVisible(), true);
   assert.equal(await page.locator('.rl-line-mark').isVisible(), true);
+  // the view's sliders under its legend in the panel, big enough for a finger; α dragged up by finger
+  const alpha = page.locator('.rl-panel .rl-klein-steer input').first();
+  assert.equal(await alpha.isVisible(), true);
+  await alpha.scrollIntoViewIfNeeded();
+  const track = /** @type {{x: number, y: number, width: number, height: number}} */ (await alpha.boundingBox());
+  assert.ok(track.height >= 44, `the slider is ${track.height} px high`);
+  const y = track.y + track.height / 2;
+  await hand.drag(track.x + (track.width * 30) / 90, y, track.x + track.width * 0.75, y, 10);
+  await page.waitForFunction(() => /klein=\d+%2C90%2C1(&|$)/.test(location.hash));
+  const [mix] = await sliders(page);
+  assert.ok(mix > 50 && mix <= 90, `α ${mix}`);
+  assert.match((await description(page)) ?? '', new RegExp(`α = ${mix}°`));
   assert.deepEqual(problems, []);
   await page.close();
 });

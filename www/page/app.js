@@ -80,6 +80,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
       input: stage.input,
       paper: stage.paper?.id ?? null,
       view: stage.view,
+      projection: stage.projection,
       task: stage.task ? taskLink(stage.task, (id) => builtInTask(id) !== null) : null,
       seed: stage.task?.drawn ? String(stage.task.drawn.seed) : null,
     };
@@ -193,6 +194,7 @@ export async function startPage({ oneFile = false, embedScript } = {}) {
     stage.setPanel(!asked.embed || asked.controls, !asked.embed || asked.text);
     stage.setEditable(!asked.embed || !!asked.edit);
     stage.setView(asked.view ?? 'space');
+    stage.setProjection(asked.projection ?? null);
     const text = stored(STORED);
     // an edit: the link's, or one too large for it that this tab kept
     const input = asked.input ?? keptInput(asked.scene.id);

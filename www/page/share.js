@@ -16,6 +16,7 @@
 // this view's camera or the answers typed here — each reader drawing her own numbers, and it goes
 // out as a SCORM package or an H5P file too (page/packages.js). Each snippet has a Copy button; the tests paste
 // each into a page on another origin and require it to draw.
+import { writeProjection } from '../klein-projection.js';
 import { defaults } from '../scene.js';
 import { writeLink } from '../link.js';
 import { encodeInput, linkableInput } from '../edit/input.js';
@@ -199,7 +200,7 @@ export function shareDialog(dialog, context) {
             script,
             stage.paper,
             state.camera,
-            { input, readers: who, klein: state.view === 'split' },
+            { input, readers: who, klein: state.view === 'split', projection: state.projection ?? null },
           ),
       scriptNote,
     );
@@ -402,9 +403,10 @@ export function iframeSnippet(
  *   one-file embed script (a classic script, loads from anywhere) or the module `ruledlab/view`
  * @param {import('../paper.js').PaperPreset | null} [paper]
  * @param {number[] | null} [camera]   yaw, pitch, distance, target x, y, z
- * @param {{input?: import('../scene.js').Input | null, readers?: Readers, klein?: boolean}} [edit]   the edit of the
- *   input to show, what readers may do (default: see the controls), and whether the Klein view
- *   stands beside the 3D view
+ * @param {{input?: import('../scene.js').Input | null, readers?: Readers, klein?: boolean,
+ *   projection?: import('../klein-projection.js').KleinProjection | null}} [edit]   the edit of the
+ *   input to show, what readers may do (default: see the controls), whether the Klein view
+ *   stands beside the 3D view, and the image it is drawn in (null: the scene's own)
  */
 export function elementSnippet(scene, params, lang, script, paper = null, camera = null, edit = {}) {
   /** @type {import('../scene.js').Params} */
@@ -420,7 +422,7 @@ export function elementSnippet(scene, params, lang, script, paper = null, camera
     ? `<script type="module" src="${attr(script.src)}"></script>`
     : `<script defer src="${attr(script.src)}"></script>`;
   const input = edit.input ? ` input="${attr(encodeInput(edit.input))}"` : '';
-  const klein = edit.klein ? ' klein' : '';
+  const klein = edit.klein ? (edit.projection ? ` klein="${attr(writeProjection(edit.projection))}"` : ' klein') : '';
   const readers = edit.readers ?? { controls: true, text: false, edit: false, leave: false };
   return `${tag}\n<ruled-view scene="${attr(scene.id)}"${figure} params="${attr(q.toString())}"${view}${input} lang="${attr(lang)}"${attributes({ ...readers, leave: false })}${klein} height="560"></ruled-view>`;
 }

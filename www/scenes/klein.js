@@ -9,6 +9,8 @@ import { AnalyticCongruence, AnalyticSurface } from '../../pkg/ruledlab.js';
 import { defineScene, scoped } from '../scene.js';
 import { GRID_LEGEND, KLEIN_LEGEND, kleinImage } from '../klein-image.js';
 import { surfaceOptions, rangesOf, CONGRUENCE_PRESETS, congruencePreset } from '../catalogue.js';
+import { KLEIN_RANGES } from '../limits.js';
+import { KLEIN_PROJECTION } from '../klein-projection.js';
 
 /** The surfaces offered: a regulus, helical surfaces, developables (torsal at every step), a conoid. */
 const SOURCES = ['hyperboloid', 'helicoid', 'helical', 'cone', 'helix-tangent', 'quartic', 'hyperbolic-paraboloid'];
@@ -104,9 +106,14 @@ export const scene = defineScene({
       play: true,
       unless: (p) => (isCongruence(p) ? null : 'klein.reason.surface'),
     },
-    { key: 'mix', label: 'klein.param.mix', type: 'range', min: 0, max: 90, step: 1, value: 30, play: true },
-    { key: 'turn', label: 'klein.param.turn', type: 'range', min: 0, max: 360, step: 1, value: 90, play: true },
-    { key: 'unit', label: 'klein.param.unit', type: 'range', min: 0.25, max: 4, step: 0.05, value: 1, play: true },
+    .../** @type {const} */ (['mix', 'turn', 'unit']).map((key) => ({
+      key,
+      label: `klein.param.${key}`,
+      type: /** @type {const} */ ('range'),
+      ...KLEIN_RANGES[key],
+      value: KLEIN_PROJECTION[key],
+      play: true,
+    })),
     { key: 'conic', label: 'klein.param.conic', type: 'checkbox', value: true },
     { key: 'space', label: 'klein.param.space', type: 'checkbox', value: true },
     { key: 'mark', label: 'klein.param.mark', type: 'range', min: 0, max: 143, step: 1, value: 0, play: true },
@@ -211,6 +218,8 @@ export const scene = defineScene({
         ...(congruence ? { legendAs: GRID_LEGEND } : {}),
         data: {
           segments: lines.segments(),
+          // the scene's own image: the Klein view beside draws in it until the reader steers that view
+          image: projection,
           // (drawn beside M, scaled: only if drawn at all)
           ...(p.space ? { transform } : {}),
           ...(congruence ? { grid: { rows: side, cols: side } } : {}),

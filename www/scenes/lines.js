@@ -60,14 +60,10 @@ export const scene = defineScene({
       const endpointTurn = ends0.maxAngleTo(ends);
       const lineTurn = lines0.maxAngleTo(lines);
       // how far the line-space scheme's points leave the Klein quadric before N projects them back
-      const departure = kleinDeparture(slid.segments(), options, KLEIN_PROJECTION);
+      const given = slid.segments();
+      const departure = kleinDeparture(given, options, KLEIN_PROJECTION);
       const before = departure.before[departure.before.length - 1];
       const after = departure.after.reduce((m, x) => Math.max(m, x), 0);
-      const back = new Float32Array(2 * departure.points.length);
-      for (let i = 0; 3 * i < departure.points.length; i++) {
-        back.set(departure.points.subarray(3 * i, 3 * i + 3), 6 * i);
-        back.set(departure.lines.subarray(3 * i, 3 * i + 3), 6 * i + 3);
-      }
       const endsSeg = ends.segmentsF32();
       const linesSeg = lines.segmentsF32();
       return {
@@ -93,17 +89,26 @@ export const scene = defineScene({
           lineTurn,
         }),
         data: { segments: lines.segments() },
-        // beside, on M: the last step's points before N, each joined to its line's point after N
-        klein: {
-          layers: [
-            { kind: 'segments', style: 'barycentre', positions: back },
-            { kind: 'points', style: 'insertedPoint', positions: departure.points },
-          ],
-          legend: [
-            { style: 'insertedPoint', label: 'lines.klein.before' },
-            { style: 'barycentre', label: 'lines.klein.back' },
-          ],
-          description: t('lines.klein.describe', { steps: Number(p.steps), before, after }),
+        // beside, on M: the last step's points before N, each joined to its line's point after N,
+        // in the image the view draws in (a plain function of the core's: nothing to free)
+        klein: (image) => {
+          const { points, lines: after1 } = kleinDeparture(given, options, image);
+          const back = new Float32Array(2 * points.length);
+          for (let i = 0; 3 * i < points.length; i++) {
+            back.set(points.subarray(3 * i, 3 * i + 3), 6 * i);
+            back.set(after1.subarray(3 * i, 3 * i + 3), 6 * i + 3);
+          }
+          return {
+            layers: [
+              { kind: 'segments', style: 'barycentre', positions: back },
+              { kind: 'points', style: 'insertedPoint', positions: points },
+            ],
+            legend: [
+              { style: 'insertedPoint', label: 'lines.klein.before' },
+              { style: 'barycentre', label: 'lines.klein.back' },
+            ],
+            description: t('lines.klein.describe', { steps: Number(p.steps), before, after }),
+          };
         },
         // the handles: the given rulings' endpoints (Shift slides one along its ruling)
         input: { sets: [rulingSet(slid.segments())], from: t('edit.from.lines', { surface: t(`surface.${name}`) }) },

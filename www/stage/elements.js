@@ -3,6 +3,7 @@
 // live region) and the panel beside or below it (heading, exercise, paper card, controls,
 // player, readout, figure, downloads, explanation). Nothing here listens or decides: the parts
 // of the stage (stage/*.js) fill and wire these elements.
+import { KLEIN_RANGES } from '../limits.js';
 
 /**
  * @typedef {object} StageElements
@@ -33,6 +34,9 @@
  * @property {HTMLElement} kleinLegend   in the Klein view's box, or in the panel under the view's legend
  * @property {HTMLElement} kleinNote     why the Klein view shows nothing
  * @property {HTMLElement} kleinDescription   what the Klein view shows, for screen readers
+ * @property {HTMLElement} kleinSteer   the Klein view's sliders α, β, ℓ (its image of P⁵), in its
+ *   corner, or in the panel under its legend
+ * @property {Record<'mix' | 'turn' | 'unit', {input: HTMLInputElement, name: HTMLElement, value: HTMLOutputElement}>} kleinSliders
  * @property {HTMLElement} panel
  * @property {HTMLElement} heading
  * @property {HTMLElement} authorBox the place of the page's "Make an exercise" panel
@@ -128,7 +132,25 @@ export function stageElements(host, { page = false }) {
   const kleinLegend = el('ul', { className: 'rl-legend rl-klein-legend', hidden: true });
   const kleinNote = el('p', { className: 'rl-klein-note', hidden: true });
   const kleinDescription = el('p', { className: 'rl-sr-only', id: `${id}-klein` });
-  klein.append(kleinLabels, kleinLegend, kleinNote, kleinDescription);
+  const kleinSteer = el('div', { className: 'rl-klein-steer', hidden: true });
+  kleinSteer.setAttribute('role', 'group');
+  const kleinSliders = /** @type {StageElements['kleinSliders']} */ ({});
+  for (const key of /** @type {const} */ (['mix', 'turn', 'unit'])) {
+    const { min, max, step } = KLEIN_RANGES[key];
+    const input = el('input', {
+      type: 'range',
+      min: String(min),
+      max: String(max),
+      step: String(step),
+      id: `${id}-klein-${key}`,
+    });
+    const name = el('label', { htmlFor: input.id, className: 'rl-klein-name' });
+    const value = el('output', { className: 'rl-klein-value' });
+    value.htmlFor.add(input.id);
+    kleinSliders[key] = { input, name, value };
+    kleinSteer.append(name, input, value);
+  }
+  klein.append(kleinLabels, kleinLegend, kleinSteer, kleinNote, kleinDescription);
   view.append(canvas, klein, labels, legend, bar, progress, noteBox, error, description, status);
 
   const paperCard = el('section', { className: 'rl-paper', hidden: true, id: `${id}-paper` });
@@ -193,6 +215,8 @@ export function stageElements(host, { page = false }) {
     kleinLegend,
     kleinNote,
     kleinDescription,
+    kleinSteer,
+    kleinSliders,
     panel,
     ...parts,
     shortcuts,

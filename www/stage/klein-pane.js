@@ -5,7 +5,8 @@
 // other part of the stage. Its WebGL context exists only while it is shown; its other elements
 // are the stage's (stage/elements.js), its legend placed with the view's (stage/layout.js).
 import { Viewer } from '../viewer.js';
-import { kleinImage, GRID_LEGEND, KLEIN_LEGEND, KLEIN_PROJECTION } from '../klein-image.js';
+import { kleinImage, GRID_LEGEND, KLEIN_LEGEND } from '../klein-image.js';
+import { KLEIN_PROJECTION, PROJECTION_KEYS } from '../klein-projection.js';
 import { showEntries } from '../ui/legend.js';
 import { MAX_KLEIN_LINES } from '../limits.js';
 import { describeError } from '../ui/errors.js';
@@ -19,9 +20,11 @@ export class KleinPane {
   /**
    * @param {import('./elements.js').StageElements} els
    * @param {{i18n: () => import('../i18n/index.js').Translator, mark: (line: number | null) => void,
+   *   steer: (projection: import('../klein-projection.js').KleinProjection, ended: boolean) => void,
    *   say: (text: string) => void, insets: (canvas: HTMLElement) => {top: number, bottom: number}}} ports
-   *   mark: asks for a line to be marked in both views; insets: the shares of a canvas's height
-   *   that the view's overlays cover (a fit frames the figure between them)
+   *   mark: asks for a line to be marked in both views; steer: asks for the view's image (a slider
+   *   moved, `ended` when it is let go); insets: the shares of a canvas's height that the view's
+   *   overlays cover (a fit frames the figure between them)
    */
   constructor(els, ports) {
     this.els = els;
@@ -52,6 +55,16 @@ export class KleinPane {
     this.viewer = null;
     /** The lines drawn last (a new set of lines of the same scene keeps the camera). */
     this.shown = /** @type {{scene: string, count: number} | null} */ (null);
+    /** @type {import('../klein-projection.js').KleinProjection} the image drawn in last */
+    this.image = KLEIN_PROJECTION;
+    // the sliders steer the image: each step asks for it, the last one (let go) says it ended
+    for (const key of PROJECTION_KEYS) {
+      const { input } = els.kleinSliders[key];
+      const steer = (/** @type {boolean} */ ended) =>
+        this.ports.steer({ ...this.image, [key]: Number(input.value) }, ended);
+      input.addEventListener('input', () => steer(false));
+      input.addEventListener('change', () => steer(true));
+    }
   }
 
   /** Whether the pane is shown. */
@@ -70,6 +83,7 @@ export class KleinPane {
     this.box.hidden = !split;
     if (!split) {
       this.legend.hidden = true;
+      this.els.kleinSteer.hidden = true;
       this.close();
       return;
     }
@@ -83,14 +97,25 @@ export class KleinPane {
     else if (count > MAX_KLEIN_LINES) failure = t('klein.pane.tooMany', { count, max: MAX_KLEIN_LINES });
     if (!built || failure) {
       this.showNote(failure);
+      this.els.kleinSteer.hidden = !failure || !data || count < 2;
       return;
     }
+    // the image: the reader's, or the scene's own (the Klein scene's sliders), or the default
+    const image = state.projection ?? data?.image ?? KLEIN_PROJECTION;
+    this.showImage(image);
     try {
       const viewer = this.viewerNow(t);
       const grid = data?.grid ?? null;
-      const { k, layers: drawn, conic } = kleinImage(/** @type {Float64Array} */ (data?.segments), { grid });
+      const {
+        k,
+        layers: drawn,
+        conic,
+      } = kleinImage(/** @type {Float64Array} */ (data?.segments), {
+        grid,
+        ...image,
+      });
       // what the scene adds to its lines' points (drawn in the same image)
-      const extra = built.klein;
+      const extra = built.klein?.(image);
       const layers = extra ? drawn.concat(extra.layers) : drawn;
       const outer = k.radii[1];
       const steps = k.omega.length;
@@ -103,7 +128,7 @@ export class KleinPane {
         least: Math.abs(k.leastOmega),
         residual: k.maxResidual,
         complex: k.complexResidual,
-        ...KLEIN_PROJECTION,
+        ...image,
       }).concat(extra ? ` ${extra.description}` : '');
       const same = this.shown?.scene === state.scene?.id;
       viewer.show(
@@ -131,6 +156,22 @@ export class KleinPane {
       /** @type {HTMLCanvasElement} */ (this.canvas).hidden = false;
     } catch (e) {
       this.showNote(t('klein.pane.failed', { message: describeError(e, this.ports.i18n()) }));
+    }
+  }
+
+  /**
+   * @internal The sliders and their values at `image`, the image drawn in.
+   * @param {import('../klein-projection.js').KleinProjection} image
+   */
+  showImage(image) {
+    this.image = image;
+    this.els.kleinSteer.hidden = false;
+    const { lang } = this.ports.i18n();
+    for (const key of PROJECTION_KEYS) {
+      const { input, value } = this.els.kleinSliders[key];
+      // (not while the reader holds it: the browser's value is the one asked for)
+      if (Number(input.value) !== image[key]) input.value = String(image[key]);
+      value.value = image[key].toLocaleString(lang, { maximumFractionDigits: 2 });
     }
   }
 
@@ -217,12 +258,18 @@ export class KleinPane {
     return this.viewer;
   }
 
-  /** The texts in the stage's language. @param {(key: string) => string} t */
+  /** The texts in the stage's language. @param {(key: string, vars?: Record<string, string | number>) => string} t */
   localize(t) {
     this.box.setAttribute('aria-label', t('klein.pane.label'));
     this.canvas?.setAttribute('aria-label', t('klein.pane.canvas'));
     this.canvas?.setAttribute('aria-roledescription', t('view.role'));
     this.legend.setAttribute('aria-label', t('view.legend'));
+    this.els.kleinSteer.setAttribute('aria-label', t('klein.pane.steer'));
+    for (const key of PROJECTION_KEYS) {
+      const { input, name } = this.els.kleinSliders[key];
+      name.textContent = t(`klein.pane.${key}`);
+      input.setAttribute('aria-label', t('klein.pane.slider', { name: t(`klein.param.${key}`) }));
+    }
   }
 
   /** Releases the pane's WebGL context (the pane is closed or the stage disposed). */

@@ -41,6 +41,11 @@ export function arrange(els, ports) {
   if (legendInPanel && kleinLegend.previousElementSibling !== legend) legend.after(kleinLegend);
   if (!legendInPanel && kleinLegend.parentElement !== klein) klein.insertBefore(kleinLegend, els.kleinNote);
   kleinLegend.classList.toggle('rl-legend-panel', legendInPanel);
+  // and its sliders under its legend
+  const { kleinSteer } = els;
+  if (legendInPanel && kleinSteer.previousElementSibling !== kleinLegend) kleinLegend.after(kleinSteer);
+  if (!legendInPanel && kleinSteer.parentElement !== klein) klein.insertBefore(kleinSteer, els.kleinNote);
+  kleinSteer.classList.toggle('rl-klein-steer-panel', legendInPanel);
   root.classList.toggle('rl-tiny', width > 0 && width < TINY);
   // the hint under the view only where it fits beside the toolbar on one line
   root.classList.toggle('rl-view-small', view.getBoundingClientRect().width < SMALL_VIEW);

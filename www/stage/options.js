@@ -9,6 +9,8 @@
  * @property {boolean} [page]       the stage is the page's (the page scrolls; a narrow view stays at the top of the screen)
  * @property {boolean} [editable]   the reader may drag the scene's handles (the page; <ruled-view editable>)
  * @property {'space' | 'split'} [view]   the 3D view alone (default), or the Klein view of the scene's lines beside it
+ * @property {{mix: number, turn: number, unit: number} | null} [projection]   the image the Klein
+ *   view beside draws in (α, β in degrees, ℓ; default: the scene's own); each number held in its range
  * @property {(data: import('../scene.js').ImportedData) => void} [onEditAsData]   "Edit as data" of a
  *   scene without handles: show its sample as your data (the "data" scene)
  * @property {(change: {reason: 'scene' | 'param' | 'camera' | 'lang' | 'reset' | 'input' | 'view', ended: boolean}) => void} [onChange]

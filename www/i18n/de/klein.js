@@ -46,6 +46,11 @@ export default {
   'klein.pane.tooMany': '{count} Geraden: mehr, als die Klein-Ansicht zeichnet ({max}).',
   'klein.pane.marked': 'Gerade {i} von {count} ist markiert: fett im Raum, auf M umkreist.',
   'klein.pane.failed': 'Die Klein-Ansicht kann diese Geraden nicht zeichnen: {message}',
+  'klein.pane.steer': 'Das Bild des P⁵ in der Klein-Ansicht',
+  'klein.pane.mix': 'α',
+  'klein.pane.turn': 'β',
+  'klein.pane.unit': 'ℓ',
+  'klein.pane.slider': 'Klein-Ansicht: {name}',
   'klein.pane.describe':
     'Daneben die Klein-Ansicht: die {count} Geraden der Szene als Punkte der Klein-Quadrik M, der Reihe nach verbunden (α = {mix}°, β = {turn}°, ℓ = {unit}). Torsale Schritte (Ω = 0: aufeinanderfolgende Geraden schneiden sich): {torsal} von {steps}; das kleinste |Ω| ist {least}. Das größte Klein-Residuum ist {residual}; der bestpassende lineare Komplex verfehlt die Geraden um {complex}.',
   'klein.pane.describeGrid':

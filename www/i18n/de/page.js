@@ -123,6 +123,10 @@ export default {
   'element.set.tooLong': 'Der Wert, den setParams für „{key}“ erhielt, ist zu lang; es gilt die Voreinstellung.',
   'element.set.unknownParam': 'Diese Szene hat keinen Parameter „{key}“; ihre Parameter sind: {known}.',
   'element.note.badInput': 'Das Attribut input passt nicht zu dieser Szene; die eingebaute Eingabe wird gezeigt.',
+  'element.note.badKlein':
+    'Das Attribut klein sind nicht drei Zahlen α,β,ℓ; die Klein-Ansicht wird im eigenen Bild der Szene gezeichnet.',
+  'element.note.kleinHeld':
+    'Eine Zahl des Attributs klein lag außerhalb ihres Bereichs oder zwischen zwei Stufen und wird auf dem nächsten Wert gehalten, den der Schieberegler der Klein-Ansicht annimmt.',
   'element.badCamera':
     'Das Attribut camera ist nicht lesbar (sechs Zahlen: Gier, Neigung, Abstand, x, y, z); die Ansicht wird an die Szene angepasst.',
   'element.note.badTask': 'Das Attribut task ließ sich nicht lesen ({reason}); die Szene wird ohne es gezeigt.',
@@ -139,6 +143,10 @@ export default {
     'Dieser Link ist länger als {max} KiB und wurde nicht gelesen; die Seite beginnt mit ihren Voreinstellungen.',
   'note.unknownScene': 'Der Link nennt eine Szene, die es nicht gibt; die erste Szene wird gezeigt.',
   'note.badCamera': 'Die Kamera im Link konnte nicht gelesen werden; die Ansicht wird an die Szene angepasst.',
+  'note.badKlein':
+    'Das Bild der Klein-Ansicht im Link sind nicht drei Zahlen α,β,ℓ; die Klein-Ansicht wird im eigenen Bild der Szene gezeichnet.',
+  'note.kleinHeld':
+    'Eine Zahl des Bildes der Klein-Ansicht im Link lag außerhalb ihres Bereichs oder zwischen zwei Stufen und wird auf dem nächsten Wert gehalten, den der Schieberegler der Klein-Ansicht annimmt.',
   'note.badData': 'Die Daten im Link konnten nicht gelesen werden; die Beispieldaten werden gezeigt.',
   'note.unknownFigure':
     'Der Link nennt eine Abbildung der Arbeit, die ruledlab nicht kennt; die Szene wird ohne sie gezeigt.',

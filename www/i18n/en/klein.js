@@ -45,6 +45,11 @@ export default {
   'klein.pane.tooMany': '{count} lines: more than the Klein view draws ({max}).',
   'klein.pane.marked': 'Line {i} of {count} is marked: bold in space, ringed on M.',
   'klein.pane.failed': 'The Klein view cannot draw these lines: {message}',
+  'klein.pane.steer': 'The Klein view’s image of P⁵',
+  'klein.pane.mix': 'α',
+  'klein.pane.turn': 'β',
+  'klein.pane.unit': 'ℓ',
+  'klein.pane.slider': 'Klein view: {name}',
   'klein.pane.describe':
     'Beside it, the Klein view: the {count} lines of the scene as points of the Klein quadric M, joined in their order (α = {mix}°, β = {turn}°, ℓ = {unit}). Torsal steps (Ω = 0: consecutive lines meet): {torsal} of {steps}; the least |Ω| is {least}. The largest Klein residual is {residual}; the best-fitting linear complex misses the lines by {complex}.',
   'klein.pane.describeGrid':

@@ -120,6 +120,10 @@ export default {
   'element.set.tooLong': 'The value setParams was given for “{key}” is too long; its default is used.',
   'element.set.unknownParam': 'This scene has no parameter “{key}”; its parameters are: {known}.',
   'element.note.badInput': 'The input attribute does not fit this scene; the built-in input is shown.',
+  'element.note.badKlein':
+    'The klein attribute is not three numbers α,β,ℓ; the Klein view is drawn in the scene\u2019s own image.',
+  'element.note.kleinHeld':
+    'A number of the klein attribute lay outside its range or between its steps and is held at the nearest value the Klein view’s slider takes.',
   'element.badCamera':
     'The camera attribute could not be read (six numbers: yaw, pitch, distance, x, y, z); the view is fitted to the scene.',
   'element.note.badTask': 'The task attribute could not be read ({reason}); the scene is shown without it.',
@@ -136,6 +140,10 @@ export default {
   'note.linkTooLong': 'This link is longer than {max} KiB and was not read; the page starts at its defaults.',
   'note.unknownScene': 'The link names a scene that does not exist; the first scene is shown.',
   'note.badCamera': 'The link\u2019s camera could not be read; the view is fitted to the scene.',
+  'note.badKlein':
+    'The link\u2019s image for the Klein view is not three numbers α,β,ℓ; the Klein view is drawn in the scene\u2019s own image.',
+  'note.kleinHeld':
+    'A number of the link\u2019s image for the Klein view lay outside its range or between its steps and is held at the nearest value the Klein view’s slider takes.',
   'note.badData': 'The link\u2019s data could not be read; the example data is shown.',
   'note.unknownFigure':
     'The link names a figure of the paper that ruledlab does not know; the scene is shown without it.',
