@@ -18,7 +18,7 @@ import {
   linkableInput,
   sameInput,
 } from '../../www/edit/input.js';
-import { clampTo, editBox, invertRigid, pointerRay, toScreen, transformPoint } from '../../www/edit/geometry.js';
+import { clampTo, editBox, invertSimilarity, pointerRay, toScreen, transformPoint } from '../../www/edit/geometry.js';
 import { snapPoint } from '../../pkg/ruledlab.js';
 import { readTask, writeTask } from '../../www/task/format.js';
 import { OrbitCamera } from '../../www/camera.js';
@@ -199,13 +199,24 @@ test('a rigid motion and its inverse give back every point', () => {
     5,
     1,
   ]);
-  const inverse = invertRigid(m);
+  const inverse = invertSimilarity(m);
   for (const p of [
     [0, 0, 0],
     [1, 2, 3],
     [-4, 0.5, 9],
   ])
     assert.ok(close(transformPoint(inverse, transformPoint(m, p)), p, 1e-14));
+  // scaled too (the Klein scene's lines beside M): x ↦ 2.5 R x + t, and back
+  const scaled = m.map((x, i) => (i < 12 && i % 4 < 3 ? 2.5 * x : x));
+  const back = invertSimilarity(scaled);
+  for (const p of [
+    [0, 0, 0],
+    [1, 2, 3],
+    [-4, 0.5, 9],
+  ]) {
+    assert.ok(close(transformPoint(back, transformPoint(scaled, p)), p, 1e-13));
+    assert.ok(close(transformPoint(scaled, transformPoint(back, p)), p, 1e-13));
+  }
 });
 
 test('coordinates are said as the language writes them', () => {
@@ -243,6 +254,7 @@ test('every scene with handles: its input handed back as an edit gives the same 
     'developable',
     'focal',
     'isometry',
+    'klein',
     'lines',
     'milling',
     'notation',

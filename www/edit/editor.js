@@ -8,7 +8,7 @@
 // what is shown over the view and said in words is edit/marks.js and edit/values.js.
 import { copyInput, inputOf, sameInput } from './input.js';
 import { HandleMarks } from './marks.js';
-import { clampTo, editBox, invertRigid, transformPoint } from './geometry.js';
+import { clampTo, editBox, invertSimilarity, transformPoint } from './geometry.js';
 import { PointerInput } from './pointer.js';
 import { KeyInput } from './keys.js';
 import { PickList } from './pick.js';
@@ -139,7 +139,7 @@ export class Editor {
     if (!m) return null;
     let inverse = this.inverses.get(s);
     if (!inverse) {
-      inverse = invertRigid(m);
+      inverse = invertSimilarity(m);
       this.inverses.set(s, inverse);
     }
     return inverse;

@@ -25,14 +25,17 @@ export function transformPoint(m, p) {
 }
 
 /**
- * The inverse of a rigid motion given as a 4 × 4 column-major matrix: the transposed rotation
- * and the translation taken back.
+ * The inverse of a similarity x ↦ s R x + t (a rigid motion scaled by s > 0, as a set is drawn:
+ * the bending scene's turned surface, the Klein scene's lines beside M) given as a 4 × 4
+ * column-major matrix: (s R)⁻¹ = (s R)ᵀ / s², s² the squared length of its first column, and the
+ * translation taken back.
  * @param {ArrayLike<number>} m
  * @returns {Float64Array}
  */
-export function invertRigid(m) {
+export function invertSimilarity(m) {
+  const s2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
   const r = new Float64Array(16);
-  for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) r[4 * j + i] = m[4 * i + j];
+  for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) r[4 * j + i] = m[4 * i + j] / s2;
   for (let i = 0; i < 3; i++) r[12 + i] = -(r[i] * m[12] + r[4 + i] * m[13] + r[8 + i] * m[14]);
   r[15] = 1;
   return r;
