@@ -6,6 +6,15 @@
 import { add, lookAt, multiply, perspective, scale, sub, cross, normalize, length } from './math.js';
 import { CAMERA_NEAREST, PITCH_LIMIT } from './limits.js';
 
+/**
+ * Left on the screen of a camera turned by `yaw` about z (z up, looking at its target from the
+ * direction (cos yaw, sin yaw, ·)): the world direction (sin yaw, −cos yaw, 0).
+ * @param {number} yaw
+ */
+export function screenLeft(yaw) {
+  return [Math.sin(yaw), -Math.cos(yaw), 0];
+}
+
 export class OrbitCamera {
   constructor() {
     this.target = [0, 0, 0];

@@ -9,6 +9,10 @@ import { SCENES } from '../../www/scenes/index.js';
 import { translator } from '../../www/i18n/index.js';
 import { legendOf, defaults } from '../../www/scene.js';
 import { KLEIN_RANGES } from '../../www/limits.js';
+import { invertSimilarity, transformPoint } from '../../www/edit/geometry.js';
+
+const close = (/** @type {number[]} */ a, /** @type {number[]} */ b, eps = 1e-9) =>
+  a.length === b.length && a.every((x, i) => Math.abs(x - b[i]) <= eps);
 
 const { AnalyticCongruence, AnalyticSurface, kleinView } = ruledlab;
 
@@ -421,4 +425,68 @@ test('the Klein scene’s sliders α, β, ℓ are the ranges the Klein view besi
     { t, lang: 'en', input: null, data: null },
   );
   assert.deepEqual(built.data?.image, { mix: 64, turn: 12, unit: 1.5 });
+});
+
+test('the Klein scene’s rulings are handles where they are drawn, left of M as first seen; a ruling screwed about the helix’s axis keeps the complex, its end lifted alone leaves it; every point stays on M', () => {
+  const scene = SCENES.find((x) => x.id === 'klein');
+  assert.ok(scene);
+  const { t } = translator('en');
+  const p = { ...defaults(scene), surface: 'helix-tangent', n: 8, conic: false };
+  const create = (/** @type {Float64Array | null} */ rulings) =>
+    scene.create(p, { t, lang: 'en', input: rulings ? { rulings } : null, data: null });
+  const built = create(null);
+  const set = built.input?.sets[0];
+  assert.ok(set && set.transform);
+  assert.equal(set.key, 'rulings');
+  assert.equal(set.points.length, 6 * 8);
+  // the handles stand where the rulings are drawn: the layer's similarity
+  const drawn = built.layers.find((l) => l.style === 'ruling');
+  assert.deepEqual(Array.from(set.transform), Array.from(drawn?.transform ?? []));
+  // the centre of their box goes 3.2 to the left of M's centre on the camera's screen: (sin yaw, −cos yaw, 0)
+  const yaw = built.camera?.yaw ?? 0;
+  const lo = [0, 1, 2].map((k) => Math.min(...Array.from(set.points).filter((_, i) => i % 3 === k)));
+  const hi = [0, 1, 2].map((k) => Math.max(...Array.from(set.points).filter((_, i) => i % 3 === k)));
+  const centre = transformPoint(
+    set.transform,
+    lo.map((l, k) => (l + hi[k]) / 2),
+  );
+  assert.ok(close(centre, [3.2 * Math.sin(yaw), -3.2 * Math.cos(yaw), 0], 1e-5), `centre ${centre}`);
+  // and the edit goes back through the inverse similarity to the lines themselves
+  const inverse = invertSimilarity(set.transform);
+  const end = Array.from(set.points.subarray(9, 12));
+  assert.ok(close(transformPoint(inverse, transformPoint(set.transform, end)), end, 1e-6));
+  const readout = (/** @type {any} */ b, /** @type {string} */ label) =>
+    Number(b.readouts.find((/** @type {any} */ r) => r.label === label)?.value);
+  const base = Float64Array.from(set.points);
+  assert.ok(readout(built, 'klein.readout.complex') < 1e-12, 'the tangents of a helix lie in a complex');
+  // ruling 5 turned about the helix's axis z by 0.4 and moved along it by 0.25: in the complex still
+  const screwed = base.slice();
+  for (const o of [30, 33]) {
+    const [x, y] = [screwed[o], screwed[o + 1]];
+    screwed.set(
+      [x * Math.cos(0.4) - y * Math.sin(0.4), x * Math.sin(0.4) + y * Math.cos(0.4), screwed[o + 2] + 0.25],
+      o,
+    );
+  }
+  const lifted = base.slice();
+  lifted[35] += 0.3;
+  const before = kleinView(base).points;
+  for (const [edit, inComplex] of /** @type {const} */ ([
+    [screwed, true],
+    [lifted, false],
+  ])) {
+    const after = create(edit);
+    assert.ok(readout(after, 'klein.readout.residual') <= 1e-12, 'every point on M');
+    const residual = readout(after, 'klein.readout.complex');
+    assert.ok(inComplex ? residual < 1e-12 : residual > 0.3, `complex residual ${residual}`);
+    // its point moved on M; the others stayed
+    const points = kleinView(edit).points;
+    assert.ok(Math.hypot(...[0, 1, 2].map((c) => points[15 + c] - before[15 + c])) > 1e-3, 'R_5’s point moved');
+    assert.ok(Math.hypot(...[0, 1, 2].map((c) => points[12 + c] - before[12 + c])) < 1e-12, 'R_4’s point stayed');
+  }
+  // a congruence's lines are not handles
+  assert.equal(
+    scene.create({ ...p, surface: 'congruence:two-lines' }, { t, lang: 'en', input: null, data: null }).input,
+    undefined,
+  );
 });

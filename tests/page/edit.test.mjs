@@ -26,6 +26,7 @@ const EDITABLE = {
   milling: ['poses', ''],
   lines: ['rulings', ''],
   data: ['rulings', ''],
+  klein: ['rulings', 'surface=helix-tangent&n=8'],
 };
 
 // Scenes with handles whose drag moves more than the handle taken, by design: the paper models'

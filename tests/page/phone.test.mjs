@@ -156,6 +156,30 @@ const POINTS = {
     await hand.tap(page.locator('.rl-coords-set'));
     await drawn(page);
   },
+  // R_5's end b, tapped (where other ends lie under the finger, the list that names each; tapped
+  // again where the finger took a neighbour); its z typed lower by 0.3 (the hint's number)
+  async 'klein-complex'(page, hand) {
+    const heading = page.locator('.rl-coords');
+    for (let tries = 0; tries < 6 && !/ruling 5, end b/.test(await heading.innerText().catch(() => '')); tries++) {
+      const end = (await handlesOnPage(page))[11];
+      assert.ok(end.free, 'R_5’s end b is in sight, clear of the bars');
+      await hand.touch('touchStart', end.x, end.y);
+      await hand.lift();
+      const named = page.locator('.rl-pick button', { hasText: 'ruling 5, end b' });
+      if (await named.isVisible().catch(() => false)) {
+        // (a person reads the list first: a tap within PICK_SETTLE of its opening is the press's end)
+        await page.waitForTimeout(500);
+        await hand.tap(named, false);
+      }
+    }
+    assert.match(await heading.innerText(), /ruling 5, end b/, 'the finger took R_5’s end b');
+    const z = page.locator('.rl-coords input').nth(2);
+    const now = Number((await z.inputValue()).replace('−', '-'));
+    await hand.tap(z);
+    await z.fill(String(Math.round((now - 0.3) * 1e6) / 1e6));
+    await hand.tap(page.locator('.rl-coords-set'));
+    await drawn(page);
+  },
   // ends slid along their own rulings (⤡): the lines stay, the endpoints move
   async 'line-space-slide'(page, hand) {
     await hand.tap(page.locator('.rl-edit'));

@@ -4,8 +4,11 @@
 // the Klein form Ω of consecutive rulings by sign (Ω = −h sin φ: 0 where they meet), the image of
 // M (the shell between two spheres), the conic of a regulus and the residual of a linear complex.
 // A congruence of the catalogue is a net on M instead: its grid's edges join neighbouring lines.
-// The surface or congruence itself stands beside, scaled.
-import { AnalyticCongruence, AnalyticSurface } from '../../pkg/ruledlab.js';
+// The surface or congruence itself stands beside, scaled; a surface's rulings are handles there
+// (an edit moves their points on M).
+import { AnalyticCongruence, AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
+import { rulingSet } from '../edit/sets.js';
+import { screenLeft } from '../camera.js';
 import { defineScene, scoped } from '../scene.js';
 import { GRID_LEGEND, KLEIN_LEGEND, kleinImage } from '../klein-image.js';
 import { surfaceOptions, rangesOf, CONGRUENCE_PRESETS, congruencePreset } from '../catalogue.js';
@@ -21,9 +24,37 @@ const CONGRUENCE = 'congruence:';
 /** Whether the menu's choice is a congruence. @param {import('../scene.js').Params} p */
 const isCongruence = (p) => String(p.surface).startsWith(CONGRUENCE);
 
-/** Where the surface in space stands: its centre (the origin of space) left of the image, and its radius there. */
-const SPACE_AT = -3.2;
+/**
+ * Where the lines in space stand: their box's centre this far left of M's image as the scene's
+ * camera first sees it (not behind it), and their radius there.
+ */
+const SPACE_AT = 3.2;
 const SPACE_RADIUS = 1.3;
+/** The scene's camera at first. */
+const CAMERA = { yaw: -0.5, pitch: 0.35 };
+/** Left on the screen of that camera, in space: (sin yaw, −cos yaw, 0). */
+const LEFT = screenLeft(CAMERA.yaw);
+
+/**
+ * The similarity that stands `segments` beside M: scaled by s about their box's centre c, which
+ * goes to SPACE_AT · LEFT (x ↦ s (x − c) + SPACE_AT · LEFT), as a column-major 4 × 4 matrix. Made
+ * from the scene's own lines, not from an edit of them, so that a drag does not move the frame.
+ * @param {Float64Array} segments
+ */
+function standBeside(segments) {
+  const min = [Infinity, Infinity, Infinity];
+  const max = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < segments.length; i++) {
+    min[i % 3] = Math.min(min[i % 3], segments[i]);
+    max[i % 3] = Math.max(max[i % 3], segments[i]);
+  }
+  const c = min.map((m, k) => (m + max[k]) / 2);
+  let half = 0;
+  for (let k = 0; k < 3; k++) half = Math.max(half, max[k] - c[k]);
+  const s = SPACE_RADIUS / (half || 1);
+  const t = LEFT.map((l, k) => SPACE_AT * l - s * c[k]);
+  return new Float32Array([s, 0, 0, 0, 0, s, 0, 0, 0, 0, s, 0, t[0], t[1], t[2], 1]);
+}
 
 /** @typedef {{surface: string, n: number, side: number, mix: number, turn: number, unit: number, conic: boolean, space: boolean, mark: number}} KleinParams */
 
@@ -119,17 +150,22 @@ export const scene = defineScene({
     { key: 'mark', label: 'klein.param.mark', type: 'range', min: 0, max: 143, step: 1, value: 0, play: true },
   ],
   legend: [...KLEIN_LEGEND],
+  // (an edit of the rulings holds what would replace them)
+  fixed: ['surface', 'n', 'side'],
   /** @param {KleinParams} p */
-  create(p, { t }) {
+  create(p, { t, input }) {
     return scoped((own) => {
       const chosen = String(p.surface);
       const congruence = chosen.startsWith(CONGRUENCE) ? chosen.slice(CONGRUENCE.length) : null;
       const name = congruence ?? chosen;
       const side = Number(p.side);
       const ranges = congruence ? null : rangesOf(name);
-      const lines = congruence
+      const sampled = congruence
         ? own(grid(name, side))
         : own(own(AnalyticSurface.byName(name)).sample(Number(p.n), ranges ?? {}));
+      // a surface's rulings as the reader moved them (their handles stand beside M)
+      const edited = congruence ? null : input?.rulings;
+      const lines = edited ? own(RuledSurface.fromSegments(edited)) : sampled;
       const segments = lines.segmentsF32();
       const projection = { mix: Number(p.mix), turn: Number(p.turn), unit: Number(p.unit) };
       const { k, layers, conic } = kleinImage(lines.segments(), {
@@ -139,11 +175,8 @@ export const scene = defineScene({
         conic: !!p.conic,
       });
       const count = segments.length / 6;
-      // the surface in space, about its own origin (where the moments are taken), scaled to stand beside
-      let extent = 0;
-      for (const x of segments) extent = Math.max(extent, Math.abs(x));
-      const s = SPACE_RADIUS / (extent || 1);
-      const transform = new Float32Array([s, 0, 0, 0, 0, s, 0, 0, 0, 0, s, 0, SPACE_AT, 0, 0, 1]);
+      // the lines in space, scaled to stand beside M (the moments are taken in space itself)
+      const transform = standBeside(sampled.segments());
       if (p.space) layers.push({ kind: 'segments', style: 'ruling', positions: segments, transform });
       // the marked ruling R_i (line i of the grid, row by row), bold in space and red on M
       const i = Math.min(Number(p.mark), count - 1);
@@ -156,7 +189,13 @@ export const scene = defineScene({
       layers.push({ kind: 'points', style: 'strictionPoint', positions: k.points.slice(3 * i, 3 * i + 3) });
       const [, outer] = k.radii;
       const r = Math.max(outer, SPACE_RADIUS);
-      const box = { min: [p.space ? SPACE_AT - SPACE_RADIUS : -outer, -r, -r], max: [outer, r, r] };
+      const at = LEFT.map((l) => SPACE_AT * l);
+      const box = p.space
+        ? {
+            min: [Math.min(-outer, at[0] - SPACE_RADIUS), Math.min(-outer, at[1] - SPACE_RADIUS), -r],
+            max: [Math.max(outer, at[0] + SPACE_RADIUS), Math.max(outer, at[1] + SPACE_RADIUS), r],
+          }
+        : { min: [-outer, -outer, -outer], max: [outer, outer, outer] };
       /** @type {import('../scene.js').Readout[]} */
       const readouts = [
         { label: 'klein.readout.residual', value: k.maxResidual, exactZero: true },
@@ -183,7 +222,7 @@ export const scene = defineScene({
       ];
       return {
         bounds: box,
-        camera: { yaw: -0.5, pitch: 0.35 },
+        camera: CAMERA,
         layers,
         readouts,
         description: [
@@ -206,7 +245,7 @@ export const scene = defineScene({
             : p.conic
               ? t(congruence ? 'klein.describe.gridNoConic' : 'klein.describe.noConic')
               : '',
-          p.space ? t('klein.describe.space', { at: SPACE_AT }) : '',
+          p.space ? t('klein.describe.space') : '',
           congruence ? t('klein.describe.gridMark', { i, row, col }) : t('klein.describe.mark', { i }),
         ]
           .filter((x) => x)
@@ -224,6 +263,15 @@ export const scene = defineScene({
           ...(p.space ? { transform } : {}),
           ...(congruence ? { grid: { rows: side, cols: side } } : {}),
         },
+        // the handles: a surface's rulings' ends, where they are drawn beside M
+        ...(p.space && !congruence
+          ? {
+              input: {
+                sets: [rulingSet(lines.segments(), transform, !!ranges?.closed)],
+                from: t('edit.from.surface', { surface: t(`surface.${name}`), n: Number(p.n) }),
+              },
+            }
+          : {}),
       };
     });
   },

@@ -21,6 +21,11 @@ const MILLING_START =
   'poses.uA9c_utesL9NF1zj5purv-BBcOA4j3K_Y0LTWNZ8vL-QjhlOcEHRP9LE2JeuWfc_3fssFErS7T8rJLqSlJLpP_JfhzVgDcw_ju2L-ZpD8j_cBBkY5bbzPyImGKEhPfo_zttNRXXE_j91nR0aO__1P6B_272DeMY_-ALJ7cfnA0AP1hiPu_n7P1nPP66KOPg_H75ZA3BgB0B68Qsrz6P3P4u0Hv4nRNY_cy-9epnzDEBz_SthY6L2Pw2gva2ty_o_817TDop5D0B4wlKHP-jwP7elsBiQZsK_9r7X-A0xEkA4sVnynZLkP_s26eZWk_I_ILBxILa_E0Ba5caWqwjRP7pHCJnTitG_MKgr9azAFEDYOQR-aui6vxa0DJK3hPI_V88zShq8F0DQIh8pgpvjv0pd8F3uL7S_hz1hlpHUF0BCqPVD0S_svx_B04xGWfY_';
 const LINES_SOLUTION =
   'rulings.AAAAAAAA8D9i4iIB8onMv2LiIgHyicy_AAAAAAAA8D_Hy1h0QhvuP8XLWHRCG-4_bUx-5sST8j_6IG3mpUDMP3KkFG2kHdW_Nriq-sse3z9kHV5ANj7uP37LzmRAH-U_IhnN8fCG7D9r_d6Hrw7uPzjZgDaWhMy_DpK3shAKxr_8UOewTDzwP9hQ92Qx_uo_bHrv6akl4L8rHP9vRxfsPyypVZy4t-c_QNREibav9L_n1FI0i-bOP2jE6vezEfw_liKHMoTW67-PX3wrknfvP0ZSCklHWtY_Cq4PmTat8b90W1oFJUHlv1_WiHiSGwBAh3kCzpWM8r-Ny0yL0NC1vwilQGieCO0_f9V8K8Zb5r8NQw9UXOPnv779H6dDafs_xiU-bbnL3L_HYU4Ie6HtvwbzBOnF4vg_nryR30UpyD-7CgKR4ATxvwMR5bV_qwFA55NnXC1b1L8CrJhlaKn1v5nXwLvcIvI_ZLBWrhhe9T9wcZUw_43Xvy9eRQMLeAhAafTfw4WS6z_SoE4gxcbjv-ishhz8YABAX3yk8AMk8j9_QHX7Nk3UP7hVswXIKwhA';
+/** The eight tangents of a helix (the Klein scene's), the end b of R_5 lifted by 0.3 along z; and as they were. */
+const COMPLEX_START =
+  'rulings.AAAAAAAA8D-amZmZmZm5P7gehetRuJ4_AAAAAAAA8D8zMzMzMzPzPwrXo3A9Ctc__r1x8CZz4T9GqeC-hgPrP6yy9ahkJ9M_QqBc7Swk1L8KsaN19Xr4P-WbcH0OI-Q_b1H52Bp71L8TDqz_UXzuP7aJmRmiMeI_vNTIUmlH9r9coT7BI6fmP0VMj0L-wOw_B6WqrSw47r9GmeKRmgDWPxY6uN6Rz-o_v2EhbP6-9r8KmaE-grbkv1L-1gN3r_I_2xPspUxx678eX4AEc8Tgvzt169HAtvE_yuqn9vhW2L9noglGoT34v4JWZuZu_vY_LOgRFOwAwL_AxAUL5ujvv2vNerS4BfY_toYQNApR7j-8mLkkCt_zv7894coZDQBApB2m1Bp05j9REysrAAbnv5slCpewVPo_4hXjHaz8-D9gqEXsvzmhv-IGhatenP8_AAAAAAAA8D-ImZmZmZm5P8t9mXmoo_4_AQAAAAAA8D8yMzMzMzPzP4kvCker9QFA';
+const COMPLEX_SOLUTION =
+  'rulings.AAAAAAAA8D-amZmZmZm5P7gehetRuJ4_AAAAAAAA8D8zMzMzMzPzPwrXo3A9Ctc__r1x8CZz4T9GqeC-hgPrP6yy9ahkJ9M_QqBc7Swk1L8KsaN19Xr4P-WbcH0OI-Q_b1H52Bp71L8TDqz_UXzuP7aJmRmiMeI_vNTIUmlH9r9coT7BI6fmP0VMj0L-wOw_B6WqrSw47r9GmeKRmgDWPxY6uN6Rz-o_v2EhbP6-9r8KmaE-grbkv1L-1gN3r_I_2xPspUxx678eX4AEc8Tgvzt169HAtvE_yuqn9vhW2L9noglGoT34v4JWZuZu_vY_LOgRFOwAwL_AxAUL5ujvv2vNerS4BfY_toYQNApR7j-8mLkkCt_zv7Ku9chmTfs_pB2m1Bp05j9REysrAAbnv5slCpewVPo_4hXjHaz8-D9gqEXsvzmhv-IGhatenP8_AAAAAAAA8D-ImZmZmZm5P8t9mXmoo_4_AQAAAAAA8D8yMzMzMzPzP4kvCker9QFA';
 
 const RAW = [
   {
@@ -491,6 +496,30 @@ const RAW = [
       },
     ],
     solution: { params: { surface: 'hyperbolic-paraboloid' } },
+  },
+  {
+    id: 'klein-complex',
+    title: { en: 'Move a line into the complex', de: 'Eine Gerade in den Komplex bringen' },
+    prompt: {
+      en: 'The tangents of a helix all lie in one linear complex: as points of the Klein quadric M they lie in one hyperplane section of M. Here the end b of ruling R_5 has been lifted, and the eight lines lie in no complex any more: the best one misses them by the residual in the readout. Move an end of R_5 — drag it (✎; ↕ moves it along z) or type its coordinates — until the rulings lie in a linear complex again: the largest |Ω(C, L_i)| for the best complex C below 0.005.',
+      de: 'Die Tangenten einer Schraublinie liegen alle in einem linearen Komplex: Als Punkte der Klein-Quadrik M liegen sie in einem Hyperebenenschnitt von M. Hier wurde das Ende b der Erzeugenden R_5 angehoben, und die acht Geraden liegen in keinem Komplex mehr: Der beste verfehlt sie um das Residuum in den Messwerten. Bewegen Sie ein Ende von R_5 – ziehen Sie es (✎; ↕ bewegt es längs z) oder geben Sie seine Koordinaten ein –, bis die Erzeugenden wieder in einem linearen Komplex liegen: das größte |Ω(C, L_i)| für den besten Komplex C unter 0,005.',
+    },
+    scene: 'klein',
+    params: { surface: 'helix-tangent', n: 8, conic: false, space: true, mark: 5 },
+    input: COMPLEX_START,
+    change: ['handles', 'mix', 'turn', 'unit', 'mark'],
+    goal: [{ value: 'klein.readout.complex', below: 0.005 }],
+    hints: [
+      {
+        en: 'The complex of a helix’s tangents is the complex of its screw motion: a line lies in it exactly when it lies in the null plane of each of its points. Turned about the helix’s axis, or moved along it, a ruling stays in the complex; an end lifted alone takes it out.',
+        de: 'Der Komplex der Tangenten einer Schraublinie ist der Komplex ihrer Schraubung: Eine Gerade liegt genau dann in ihm, wenn sie in der Nullebene jedes ihrer Punkte liegt. Um die Achse der Schraublinie gedreht oder längs ihr verschoben, bleibt eine Erzeugende im Komplex; ein Ende allein angehoben nimmt sie heraus.',
+      },
+      {
+        en: 'The end b of R_5 was lifted by 0.3 along z. Tap it (where ends lie close together, a list names each) and type its z lower by 0.3; or choose ↕ in the ✎ bar and drag it down, after a long press for a fine drag, until the residual is below 0.005.',
+        de: 'Das Ende b von R_5 wurde um 0,3 längs z angehoben. Tippen Sie es an (wo Enden dicht beieinander liegen, nennt eine Liste jedes) und geben Sie sein z um 0,3 kleiner ein; oder wählen Sie ↕ in der ✎-Leiste und ziehen Sie es nach unten, nach langem Drücken fein, bis das Residuum unter 0,005 liegt.',
+      },
+    ],
+    solution: { input: COMPLEX_SOLUTION },
   },
 ];
 

@@ -78,7 +78,8 @@ export default {
     'Der Kegelschnitt, in dem die Ebene der ersten, mittleren und letzten Erzeugenden M schneidet, ist hellblau gezeichnet; die Erzeugenden liegen höchstens {plane} von dieser Ebene entfernt.',
   'klein.describe.noConic':
     'Die erste, mittlere und letzte Erzeugende spannen keine Ebene auf, die M in einem Kegelschnitt schneidet.',
-  'klein.describe.space': 'Links, mit der Mitte bei x = {at}, die Erzeugenden im Raum um ihren Ursprung.',
+  'klein.describe.space':
+    'Links von M, wie die Szene sie zuerst zeigt, die Geraden im Raum, um die Mitte ihres Quaders skaliert; die Erzeugenden einer Fläche sind dort Griffe (Bearbeiten).',
   'klein.text': `
 <p>Eine Gerade des Raums ist ein Punkt einer Quadrik in einem fünfdimensionalen projektiven Raum: Eine
 orientierte Gerade mit dem Einheitsvektor ${m('<mi>𝐝</mi>')} als Richtung durch einen Punkt ${m('<mi>𝐩</mi>')}

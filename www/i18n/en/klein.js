@@ -75,7 +75,8 @@ export default {
   'klein.describe.conic':
     'The conic in which the plane of the first, middle and last ruling cuts M is drawn light blue; the rulings lie at most {plane} from that plane.',
   'klein.describe.noConic': 'The first, middle and last ruling span no plane cutting M in a conic.',
-  'klein.describe.space': 'Left, centred at x = {at}, the rulings in space about their origin.',
+  'klein.describe.space':
+    'Left of M as the scene first shows it, the lines in space, scaled about the centre of their box; a surface’s rulings are handles there (Edit).',
   'klein.text': `
 <p>A line of space is a point of a quadric in a five-dimensional projective space: an oriented line with
 unit direction ${m('<mi>𝐝</mi>')} through a point ${m('<mi>𝐩</mi>')} has the Plücker coordinates
