@@ -145,9 +145,10 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {() => SVGElement} [diagram]   a plot beside the view (built with the DOM)
  * @property {() => SVGElement} [figure]   deprecated: the earlier name of `diagram`
  * @property {Download[]} [downloads]
- * @property {{segments: Float64Array, grid?: {rows: number, cols: number}, transform?: Float32Array, image?: {mix: number, turn: number, unit: number}}} [data]
+ * @property {{segments: Float64Array, grid?: {rows: number, cols: number}, closed?: boolean, transform?: Float32Array, image?: {mix: number, turn: number, unit: number}}} [data]
  *   for export (and for the Klein view beside the 3D view, which draws these lines as points of
- *   M); `transform`: the 4 × 4 model matrix (column-major) the 3D view draws them with, where it
+ *   M); `closed`: the last line and the first are neighbours (a closed surface: the Klein view
+ *   joins their points); `transform`: the 4 × 4 model matrix (column-major) the 3D view draws them with, where it
  *   moves them (a line marked in both views is drawn there); `image`: the scene's own Klein image
  *   (the Klein scene's), which the view beside draws in until the reader steers it
  * @property {(image: {mix: number, turn: number, unit: number}) => {layers: Layer[], legend: Array<{style: string, label: string}>, description: string}} [klein]

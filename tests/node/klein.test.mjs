@@ -490,3 +490,33 @@ test('the Klein scene’s rulings are handles where they are drawn, left of M as
     undefined,
   );
 });
+
+test('a linear congruence is a 3-space section of M: the Klein scene’s second-best complex has residual 0 for the lines meeting two lines, the helicoid and a regulus, not for a helical surface; a closed surface is a closed polygon on M beside any scene', async () => {
+  const scene = SCENES.find((x) => x.id === 'klein');
+  assert.ok(scene);
+  const { t } = translator('en');
+  const value = (/** @type {string} */ surface) =>
+    Number(
+      scene
+        .create({ ...defaults(scene), surface }, { t, lang: 'en', input: null, data: null })
+        .readouts?.find((r) => r.label === 'klein.readout.congruence')?.value,
+    );
+  for (const surface of ['congruence:two-lines', 'helicoid', 'hyperboloid', 'hyperbolic-paraboloid'])
+    assert.ok(value(surface) < 1e-9, `${surface}: ${value(surface)}`);
+  for (const surface of ['helical', 'helix-tangent']) assert.ok(value(surface) > 1e-3, `${surface}: ${value(surface)}`);
+  // the striction scene's hyperboloid is closed: the Klein view beside joins its last ruling to its first
+  const { kleinImage } = await import('../../www/klein-image.js');
+  const striction = SCENES.find((x) => x.id === 'striction');
+  assert.ok(striction);
+  for (const [surface, closed] of /** @type {const} */ ([
+    ['hyperboloid', true],
+    ['helicoid', false],
+  ])) {
+    const built = striction.create({ ...defaults(striction), surface }, { t, lang: 'en', input: null, data: null });
+    assert.equal(!!built.data?.closed, closed, surface);
+    const n = (built.data?.segments.length ?? 0) / 6;
+    const steps = kleinImage(/** @type {Float64Array} */ (built.data?.segments), { closed: !!built.data?.closed }).k
+      .omega.length;
+    assert.equal(steps, closed ? n : n - 1, surface);
+  }
+});

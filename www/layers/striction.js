@@ -158,7 +158,7 @@ export function strictionLayers(surface, analytic, ranges, p, ctx, name, orders 
           parallel: parallelPairs,
           ...keyValues,
         }),
-    data: { segments: surface.segments() },
+    data: { segments: surface.segments(), closed },
     ...(from
       ? {
           input: {

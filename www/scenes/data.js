@@ -131,7 +131,7 @@ export const scene = defineScene({
         }),
         problems: parallelProblems(inv.parallel, s.length, t),
         ...(p.focal ? { note: t('data.note.focalRulings') } : {}),
-        data: { segments },
+        data: { segments, closed },
         input: {
           sets: [
             {

@@ -6,7 +6,7 @@
 // A congruence of the catalogue is a net on M instead: its grid's edges join neighbouring lines.
 // The surface or congruence itself stands beside, scaled; a surface's rulings are handles there
 // (an edit moves their points on M).
-import { AnalyticCongruence, AnalyticSurface, RuledSurface } from '../../pkg/ruledlab.js';
+import { AnalyticCongruence, AnalyticSurface, RuledSurface, linearComplex } from '../../pkg/ruledlab.js';
 import { rulingSet } from '../edit/sets.js';
 import { screenLeft } from '../camera.js';
 import { defineScene, scoped } from '../scene.js';
@@ -219,6 +219,9 @@ export const scene = defineScene({
           exactZero: true,
         },
         { label: 'klein.readout.complex', value: k.complexResidual, exactZero: true },
+        // a linear congruence (a 3-space section of M) lies in two independent complexes: the
+        // second-best one's residual (the fit's spectrum, RMS in its own frame) is 0 too
+        { label: 'klein.readout.congruence', value: linearComplex(lines.segments()).spectrum[1], exactZero: true },
       ];
       return {
         bounds: box,
@@ -257,6 +260,7 @@ export const scene = defineScene({
         ...(congruence ? { legendAs: GRID_LEGEND } : {}),
         data: {
           segments: lines.segments(),
+          closed: !!ranges?.closed,
           // the scene's own image: the Klein view beside draws in it until the reader steers that view
           image: projection,
           // (drawn beside M, scaled: only if drawn at all)

@@ -112,6 +112,7 @@ export class KleinPane {
         conic,
       } = kleinImage(/** @type {Float64Array} */ (data?.segments), {
         grid,
+        closed: !grid && !!data?.closed,
         ...image,
       });
       // what the scene adds to its lines' points (drawn in the same image)

@@ -71,6 +71,8 @@ export default {
   'klein.readout.plane': 'größter Abstand einer Erzeugenden von der Ebene des Kegelschnitts',
   'klein.readout.noPlane': 'die drei Erzeugenden spannen keinen Kegelschnitt auf',
   'klein.readout.complex': 'größtes |Ω(C, L_i)| für den bestpassenden linearen Komplex C',
+  'klein.readout.congruence':
+    'Residuum des zweitbesten linearen Komplexes (0: die Geraden liegen in einer linearen Kongruenz, einem Schnitt von M mit einem 3-Raum)',
   'klein.describe':
     'Die {n} Erzeugenden der Fläche „{surface}“ als Punkte der Klein-Quadrik M, gezeichnet mit α = {mix}°, β = {turn}°, ℓ = {unit}: Das Bild von M ist die Schale zwischen den Sphären mit den Radien {inner} und {outer} um die Mitte, gezeichnet als graue Kreise. Die Punkte sind der Reihe nach verbunden; {torsal} der {steps} Schritte sind torsal (Ω = 0), das kleinste |Ω| liegt bei Schritt {least}: Ω = {omega}. Das größte Klein-Residuum ist {residual}.',
   'klein.describe.mark': 'Die Erzeugende R_{i} ist markiert: fett im Raum, ein roter Punkt auf M.',

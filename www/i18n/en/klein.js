@@ -69,6 +69,8 @@ export default {
   'klein.readout.plane': 'largest distance of a ruling from the conic’s plane',
   'klein.readout.noPlane': 'the three rulings span no conic',
   'klein.readout.complex': 'largest |Ω(C, L_i)| for the best linear complex C',
+  'klein.readout.congruence':
+    'residual of the second-best linear complex (0: the lines lie in a linear congruence, a 3-space section of M)',
   'klein.describe':
     'The {n} rulings of the surface “{surface}” as points of the Klein quadric M, drawn with α = {mix}°, β = {turn}°, ℓ = {unit}: the image of M is the shell between the spheres of radii {inner} and {outer} about the centre, drawn as grey circles. The points are joined in order; {torsal} of the {steps} steps are torsal (Ω = 0), the least |Ω| is at step {least}: Ω = {omega}. The largest Klein residual is {residual}.',
   'klein.describe.mark': 'Ruling R_{i} is marked: bold in space, a red point on M.',
