@@ -36,6 +36,7 @@ import { Results } from './stage/results.js';
 import { KleinPane } from './stage/klein-pane.js';
 import { holdProjection } from './klein-projection.js';
 import { LineMark } from './stage/line-mark.js';
+import { ScenePick } from './stage/scene-pick.js';
 import { Shortcuts } from './stage/shortcuts.js';
 import { Store, initialState, heldReason } from './store.js';
 import { cancelWork } from './compute.js';
@@ -88,6 +89,7 @@ export class Stage {
         this.edit.render(this.state, built);
         this.kleinPane.render(this.state, built);
         this.lineMark.render(this.state, built);
+        this.scenePick.render(built);
         options.onBuilt?.(built);
       },
       onError: (e) => this.fail(e),
@@ -176,6 +178,8 @@ export class Stage {
     this.kleinPane = new KleinPane(els, { i18n, mark, steer, say, insets: (canvas) => covered(els, canvas) });
     /** @internal the line marked in both views, drawn in the 3D view */
     this.lineMark = new LineMark(els, { viewer: this.viewer, mark });
+    /** @internal choosing by pointing where the scene offers it (the Klein scene's marked ruling) */
+    this.scenePick = new ScenePick(els, { viewer: this.viewer, set: (key, value) => this.setParam(key, value) });
     /** @internal */
     this.edit = new EditHost({
       els,

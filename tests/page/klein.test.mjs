@@ -487,3 +487,85 @@ test('milling’s tool axes on M, and the view in German', async () => {
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+test('in the Klein scene itself a click on a point of M, or on a line in space, marks that ruling; a press on a handle keeps the handle', async () => {
+  const { page, problems } = await session.open('#scene=klein&surface=helix-tangent&n=8');
+  /**
+   * Where point `i` of M is drawn, on the page; or a spot on line `i` in space clear of every
+   * handle (a press near a ruling's end takes the handle), where that line is the one nearest.
+   */
+  const at = (/** @type {number} */ i, /** @type {'point' | 'line'} */ what) =>
+    page.evaluate(
+      ([i, what]) => {
+        const { stage } = /** @type {any} */ (window).ruledlab;
+        const pick = stage.session.built.pick;
+        const b = stage.viewer.canvas.getBoundingClientRect();
+        const m = stage.viewer.camera.viewProj(b.width / b.height);
+        const screen = (/** @type {number[]} */ p) => {
+          const w = m[3] * p[0] + m[7] * p[1] + m[11] * p[2] + m[15];
+          return {
+            x: (((m[0] * p[0] + m[4] * p[1] + m[8] * p[2] + m[12]) / w + 1) / 2) * b.width,
+            y: ((1 - (m[1] * p[0] + m[5] * p[1] + m[9] * p[2] + m[13]) / w) / 2) * b.height,
+          };
+        };
+        const page = (/** @type {{x: number, y: number}} */ q) => ({ x: b.left + q.x, y: b.top + q.y });
+        if (what === 'point') return page(screen(Array.from(pick.points.slice(3 * i, 3 * i + 3))));
+        const s = pick.lines;
+        const t = pick.transform;
+        const moved = (/** @type {number} */ u) =>
+          [0, 1, 2].map((k) => {
+            const q = [0, 1, 2].map((c) => (1 - u) * s[6 * i + c] + u * s[6 * i + 3 + c]);
+            return t[k] * q[0] + t[4 + k] * q[1] + t[8 + k] * q[2] + t[12 + k];
+          });
+        const handles = stage.editor.handles().map((/** @type {any} */ h) => screen(h.world));
+        for (let u = 0.2; u <= 0.8; u += 0.05) {
+          const q = screen(moved(u));
+          const clear = handles.every((/** @type {any} */ h) => Math.hypot(h.x - q.x, h.y - q.y) > 14);
+          if (clear && stage.scenePick.nearest(q.x, q.y) === i) return page(q);
+        }
+        throw new Error(`no spot on line ${i} clear of the handles`);
+      },
+      /** @type {const} */ ([i, what]),
+    );
+  const mark = () => page.evaluate(() => /** @type {any} */ (window).ruledlab.stage.params.mark);
+  assert.equal(await mark(), 0);
+  let p = await at(3, 'point');
+  await page.mouse.click(p.x + 2, p.y - 2);
+  await page.waitForFunction(() => /** @type {any} */ (window).ruledlab.stage.params.mark === 3);
+  await page.waitForFunction(() => /&mark=3(&|$)/.test(location.hash));
+  // the view's description says which
+  const said = await page.evaluate(
+    () =>
+      document.getElementById(document.querySelector('.rl-view > canvas')?.getAttribute('aria-describedby') ?? '')
+        ?.textContent,
+  );
+  assert.match(said ?? '', /Ruling R_?3 is marked/);
+  p = await at(6, 'line');
+  await page.mouse.click(p.x, p.y);
+  await page.waitForFunction(() => /** @type {any} */ (window).ruledlab.stage.params.mark === 6);
+  // a drag turns the view and marks nothing
+  p = await at(2, 'point');
+  await page.mouse.move(p.x, p.y);
+  await page.mouse.down();
+  await page.mouse.move(p.x + 60, p.y + 20, { steps: 5 });
+  await page.mouse.up();
+  assert.equal(await mark(), 6);
+  // in Edit, a press on a ruling's end takes the handle: the mark stays
+  await page.locator('.rl-edit').click();
+  const end = await page.evaluate(() => {
+    const { stage } = /** @type {any} */ (window).ruledlab;
+    const b = stage.viewer.canvas.getBoundingClientRect();
+    const m = stage.viewer.camera.viewProj(b.width / b.height);
+    const [x, y, z] = stage.editor.handles()[9].world;
+    const w = m[3] * x + m[7] * y + m[11] * z + m[15];
+    return {
+      x: b.left + (((m[0] * x + m[4] * y + m[8] * z + m[12]) / w + 1) / 2) * b.width,
+      y: b.top + ((1 - (m[1] * x + m[5] * y + m[9] * z + m[13]) / w) / 2) * b.height,
+    };
+  });
+  await page.mouse.click(end.x, end.y);
+  assert.equal(await page.evaluate(() => /** @type {any} */ (window).ruledlab.stage.editor.selected), 9);
+  assert.equal(await mark(), 6);
+  assert.deepEqual(problems, []);
+  await page.close();
+});

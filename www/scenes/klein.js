@@ -254,6 +254,8 @@ export const scene = defineScene({
           .filter((x) => x)
           .join(' '),
         measures: { 'klein.leastStep': k.leastStep, 'klein.leastOmega': k.leastOmega },
+        // a click or a tap on a point of M, or on a line in space, marks that one
+        pick: { param: 'mark', points: k.points, ...(p.space ? { lines: segments, transform } : {}) },
         // the three rulings span no conic (the description says so): none in the legend either
         ...(p.conic && !conic ? { legendOff: ['klein.legend.conic'] } : {}),
         // a congruence's net: its edges join neighbouring lines of the grid

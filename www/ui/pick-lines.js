@@ -47,6 +47,29 @@ export function pickLines(canvas, nearest, mark) {
 }
 
 /**
+ * Listens on `canvas` for a click or a tap (any pointer: a press and release close together and
+ * quick, not a drag) and hands its place, CSS px of the canvas, to `tapped`. A press another
+ * listener took first (a handle's: edit/pointer.js stops it) is not one.
+ * @param {HTMLCanvasElement} canvas
+ * @param {(x: number, y: number) => void} tapped
+ */
+export function onTap(canvas, tapped) {
+  /** @type {{x: number, y: number, t: number} | null} */
+  let down = null;
+  canvas.addEventListener('pointerdown', (e) => {
+    down = e.button === 0 ? { x: e.clientX, y: e.clientY, t: e.timeStamp } : null;
+  });
+  canvas.addEventListener('pointerup', (e) => {
+    const tap =
+      down && Math.hypot(e.clientX - down.x, e.clientY - down.y) < TAP_MOVE && e.timeStamp - down.t < TAP_TIME;
+    down = null;
+    if (!tap) return;
+    const box = canvas.getBoundingClientRect();
+    tapped(e.clientX - box.left, e.clientY - box.top);
+  });
+}
+
+/**
  * The point among `points` (3 floats each, projected by `viewProj` onto a view `w` × `h`)
  * nearest to (x, y) within NEAR px, or −1.
  * @param {Float32Array | Float64Array} points @param {Float32Array} viewProj
