@@ -122,6 +122,26 @@ for (const n of [100_000, 1_000_000]) {
         `through one ruling in ${digits(every)} \\(2,?001 of them\\), and one ruling in ${digits(13 * every)} is`,
       ),
     );
+    // the Klein view beside: 100 000 lines as points of M; more, a note in its place, no context
+    const klein = await page.evaluate(async () => {
+      const view = /** @type {any} */ (document.querySelector('ruled-view'));
+      view.klein = true;
+      const box = view.shadowRoot.querySelector('.rl-klein');
+      const note = box.querySelector('.rl-klein-note');
+      const t0 = performance.now();
+      while (!Number(box.dataset.frames ?? 0) && note.hidden && performance.now() - t0 < 120000)
+        await new Promise((r) => setTimeout(r, 50));
+      return {
+        frames: Number(box.dataset.frames ?? 0),
+        note: note.hidden ? '' : note.textContent,
+        canvas: !!box.querySelector('canvas:not([hidden])'),
+      };
+    });
+    if (n <= 100_000) assert.ok(klein.frames > 0 && klein.canvas && klein.note === '', JSON.stringify(klein));
+    else {
+      assert.match(klein.note, /^1,000,000 lines: more than the Klein view draws \(100,000\)\.$/);
+      assert.equal(klein.canvas, false);
+    }
     assert.deepEqual(problems, []);
     await page.close();
   });
