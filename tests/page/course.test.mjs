@@ -132,6 +132,46 @@ for (const v of VARIANTS) {
   });
 }
 
+test('in a course system: the one-file build in a sandboxed frame shows the Klein view beside, steered, and nothing else loaded', async () => {
+  const url = site.write(
+    'klein-sandbox.html',
+    hostPage(
+      `<iframe sandbox="allow-scripts" src="${session.url}dist/ruledlab.html#embed&amp;controls&amp;scene=strip&amp;klein=40,200,1.5" title="ruledlab" width="1000" height="560"></iframe>`,
+    ),
+  );
+  const { page, problems, requests } = await session.open(url, { wait: false });
+  const frame = page.frameLocator('iframe');
+  await frame.locator('.rl-stage[data-ready="1"]').waitFor({ timeout: 60000 });
+  const pane = frame.locator('.rl-klein');
+  const frames = async () => Number((await pane.getAttribute('data-frames')) ?? 0);
+  for (let k = 0; k < 100 && !(await frames()); k++) await page.waitForTimeout(100);
+  assert.ok((await frames()) > 0, 'the Klein view is drawn in the frame');
+  const sliders = frame.locator('.rl-klein-steer input');
+  assert.deepEqual(
+    await sliders.evaluateAll((all) => all.map((e) => Number(/** @type {HTMLInputElement} */ (e).value))),
+    [40, 200, 1.5],
+  );
+  const before = await pane.screenshot();
+  const drawn = await frames();
+  await sliders.nth(1).focus();
+  for (let i = 0; i < 20; i++) await sliders.nth(1).press('ArrowRight');
+  for (let k = 0; k < 50 && (await frames()) === drawn; k++) await page.waitForTimeout(100);
+  await page.waitForTimeout(300);
+  const after = await pane.screenshot();
+  assert.ok(countChanged(decodePng(before), decodePng(after)) > 300, 'β steers the picture in the frame');
+  const foreign = requests.filter(
+    (u) =>
+      !u.startsWith('data:') &&
+      !u.startsWith('blob:') &&
+      !u.startsWith('about:') &&
+      u.split('#')[0] !== url &&
+      u.split('#')[0] !== `${session.url}dist/ruledlab.html`,
+  );
+  assert.deepEqual(foreign, [], 'requests outside the one file');
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('in a course system: Canvas’s files domain policy (no blob: workers) — a large model refines on the main thread', async () => {
   // the one-file page served with Canvas's policy for user files: inline scripts and eval, no blob:
   const policy =

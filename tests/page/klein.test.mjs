@@ -329,6 +329,27 @@ test('by finger at 390 px: the button opens the Klein view under the 3D view, it
   assert.match((await description(page)) ?? '', new RegExp(`α = ${mix}°`));
   assert.deepEqual(problems, []);
   await page.close();
+
+  // an element without a panel, 390 px wide: the sliders folded under their summary (the Klein
+  // view's half is small), a tap unfolds them
+  const host = await phone.context.newPage();
+  const hostProblems = watch(host);
+  await host.goto(`${started.url}examples/web-component.html`);
+  await host.waitForFunction(() => customElements.get('ruled-view'));
+  await host.evaluate(() => {
+    document.body.innerHTML = '<ruled-view scene="strip" klein height="520"></ruled-view>';
+  });
+  const element = host.locator('ruled-view');
+  await element.locator('.rl-klein canvas').waitFor();
+  const steer = element.locator('.rl-klein-steer');
+  await steer.waitFor();
+  assert.equal(await steer.evaluate((d) => /** @type {HTMLDetailsElement} */ (d).open), false);
+  assert.equal(await element.locator('.rl-klein-steer input').first().isVisible(), false);
+  const fingerOn = new Hand(host, await host.context().newCDPSession(host), finger(11));
+  await fingerOn.tap(element.locator('.rl-klein-steer summary'), false);
+  await element.locator('.rl-klein-steer input').first().waitFor({ state: 'visible' });
+  assert.deepEqual(hostProblems, []);
+  await host.close();
 });
 
 /**

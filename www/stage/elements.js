@@ -34,8 +34,10 @@ import { KLEIN_RANGES } from '../limits.js';
  * @property {HTMLElement} kleinLegend   in the Klein view's box, or in the panel under the view's legend
  * @property {HTMLElement} kleinNote     why the Klein view shows nothing
  * @property {HTMLElement} kleinDescription   what the Klein view shows, for screen readers
- * @property {HTMLElement} kleinSteer   the Klein view's sliders α, β, ℓ (its image of P⁵), in its
- *   corner, or in the panel under its legend
+ * @property {HTMLDetailsElement} kleinSteer   the Klein view's sliders α, β, ℓ (its image of P⁵), in its
+ *   corner, or in the panel under its legend; folded under its summary in a narrow box without a
+ *   panel (stage/layout.js)
+ * @property {HTMLElement} kleinSteerSummary
  * @property {Record<'mix' | 'turn' | 'unit', {input: HTMLInputElement, name: HTMLElement, value: HTMLOutputElement}>} kleinSliders
  * @property {HTMLElement} panel
  * @property {HTMLElement} heading
@@ -132,8 +134,11 @@ export function stageElements(host, { page = false }) {
   const kleinLegend = el('ul', { className: 'rl-legend rl-klein-legend', hidden: true });
   const kleinNote = el('p', { className: 'rl-klein-note', hidden: true });
   const kleinDescription = el('p', { className: 'rl-sr-only', id: `${id}-klein` });
-  const kleinSteer = el('div', { className: 'rl-klein-steer', hidden: true });
-  kleinSteer.setAttribute('role', 'group');
+  const kleinSteer = el('details', { className: 'rl-klein-steer', hidden: true, open: true });
+  const kleinSteerSummary = el('summary', { className: 'rl-klein-steer-summary' });
+  const kleinSteerGrid = el('div', { className: 'rl-klein-steer-grid' });
+  kleinSteerGrid.setAttribute('role', 'group');
+  kleinSteer.append(kleinSteerSummary, kleinSteerGrid);
   const kleinSliders = /** @type {StageElements['kleinSliders']} */ ({});
   for (const key of /** @type {const} */ (['mix', 'turn', 'unit'])) {
     const { min, max, step } = KLEIN_RANGES[key];
@@ -148,7 +153,7 @@ export function stageElements(host, { page = false }) {
     const value = el('output', { className: 'rl-klein-value' });
     value.htmlFor.add(input.id);
     kleinSliders[key] = { input, name, value };
-    kleinSteer.append(name, input, value);
+    kleinSteerGrid.append(name, input, value);
   }
   klein.append(kleinLabels, kleinLegend, kleinSteer, kleinNote, kleinDescription);
   view.append(canvas, klein, labels, legend, bar, progress, noteBox, error, description, status);
@@ -216,6 +221,7 @@ export function stageElements(host, { page = false }) {
     kleinNote,
     kleinDescription,
     kleinSteer,
+    kleinSteerSummary,
     kleinSliders,
     panel,
     ...parts,

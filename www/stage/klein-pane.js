@@ -265,7 +265,8 @@ export class KleinPane {
     this.canvas?.setAttribute('aria-label', t('klein.pane.canvas'));
     this.canvas?.setAttribute('aria-roledescription', t('view.role'));
     this.legend.setAttribute('aria-label', t('view.legend'));
-    this.els.kleinSteer.setAttribute('aria-label', t('klein.pane.steer'));
+    this.els.kleinSteer.querySelector('[role=group]')?.setAttribute('aria-label', t('klein.pane.steer'));
+    this.els.kleinSteerSummary.textContent = t('klein.pane.steerShort');
     for (const key of PROJECTION_KEYS) {
       const { input, name } = this.els.kleinSliders[key];
       name.textContent = t(`klein.pane.${key}`);

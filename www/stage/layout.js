@@ -46,6 +46,11 @@ export function arrange(els, ports) {
   if (legendInPanel && kleinSteer.previousElementSibling !== kleinLegend) kleinLegend.after(kleinSteer);
   if (!legendInPanel && kleinSteer.parentElement !== klein) klein.insertBefore(kleinSteer, els.kleinNote);
   kleinSteer.classList.toggle('rl-klein-steer-panel', legendInPanel);
+  // in a narrow box without a panel the sliders fold under their summary (the Klein view's half
+  // is small); they unfold again where there is room — the reader's own opening kept meanwhile
+  const folded = narrow && !legendInPanel;
+  if (folded !== kleinSteer.classList.contains('rl-klein-steer-folded')) kleinSteer.open = !folded;
+  kleinSteer.classList.toggle('rl-klein-steer-folded', folded);
   root.classList.toggle('rl-tiny', width > 0 && width < TINY);
   // the hint under the view only where it fits beside the toolbar on one line
   root.classList.toggle('rl-view-small', view.getBoundingClientRect().width < SMALL_VIEW);

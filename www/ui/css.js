@@ -39,12 +39,17 @@ export const CSS = `
 .rl-stage.rl-narrow.rl-split > .rl-view > .rl-legend { max-width: calc(100% - .7rem); max-height: 19%; }
 .rl-stage.rl-narrow .rl-klein { left: 0; top: 50%; border-left: 0; border-top: 1px solid var(--line); }
 .rl-klein-note { position: absolute; inset: 1rem; margin: 0; color: var(--muted); }
-.rl-klein-steer { position: absolute; bottom: 3.2rem; right: .5rem; display: grid; grid-template-columns: auto minmax(4rem, 6rem) 2.4rem; align-items: center; gap: .1rem .4rem; padding: .25rem .5rem; font-size: .8rem; background: rgb(255 255 255 / .88); border: 1px solid var(--line); border-radius: 4px; }
+.rl-klein-steer { position: absolute; bottom: 3.2rem; right: .5rem; padding: .25rem .5rem; font-size: .8rem; background: rgb(255 255 255 / .88); border: 1px solid var(--line); border-radius: 4px; }
+.rl-klein-steer-grid { display: grid; grid-template-columns: auto minmax(4rem, 6rem) 2.4rem; align-items: center; gap: .1rem .4rem; }
 .rl-klein-steer[hidden] { display: none; }
+.rl-klein-steer:not(.rl-klein-steer-folded) > summary { display: none; }
+.rl-klein-steer-folded > summary { cursor: pointer; min-height: 24px; display: flex; align-items: center; }
+
 .rl-klein-steer input { width: 100%; margin: 0; min-height: 24px; }
 .rl-klein-name { font-style: italic; font-family: "Times New Roman", "STIX Two Text", serif; font-size: 1rem; }
 .rl-klein-value { font-variant-numeric: tabular-nums; text-align: right; }
-.rl-stage .rl-klein-steer.rl-klein-steer-panel { position: static; margin: 0 0 .7rem; grid-template-columns: auto 1fr 3rem; background: none; }
+.rl-stage .rl-klein-steer.rl-klein-steer-panel { position: static; margin: 0 0 .7rem; background: none; }
+.rl-stage .rl-klein-steer.rl-klein-steer-panel .rl-klein-steer-grid { grid-template-columns: auto 1fr 3rem; }
 .rl-stage .rl-klein-steer.rl-klein-steer-panel input { min-height: 44px; }
 .rl-klein-ring { position: absolute; pointer-events: none; left: -11px; top: -11px; width: 22px; height: 22px; border-radius: 50%; border: 3px solid #d55e00; background: rgb(255 255 255 / .25); }
 .rl-line-mark { position: absolute; left: 0; top: 0; pointer-events: none; overflow: hidden; }

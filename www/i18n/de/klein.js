@@ -47,6 +47,7 @@ export default {
   'klein.pane.marked': 'Gerade {i} von {count} ist markiert: fett im Raum, auf M umkreist.',
   'klein.pane.failed': 'Die Klein-Ansicht kann diese Geraden nicht zeichnen: {message}',
   'klein.pane.steer': 'Das Bild des P⁵ in der Klein-Ansicht',
+  'klein.pane.steerShort': 'Bild α, β, ℓ',
   'klein.pane.mix': 'α',
   'klein.pane.turn': 'β',
   'klein.pane.unit': 'ℓ',

@@ -46,6 +46,7 @@ export default {
   'klein.pane.marked': 'Line {i} of {count} is marked: bold in space, ringed on M.',
   'klein.pane.failed': 'The Klein view cannot draw these lines: {message}',
   'klein.pane.steer': 'The Klein view’s image of P⁵',
+  'klein.pane.steerShort': 'Image α, β, ℓ',
   'klein.pane.mix': 'α',
   'klein.pane.turn': 'β',
   'klein.pane.unit': 'ℓ',
