@@ -71,6 +71,7 @@ try {
     ['#scene=formula', 'screenshot-formula.png'],
     ['#scene=focal&congruence=example5&reach=1', 'screenshot-focal.png'],
     ['#scene=klein', 'screenshot-klein.png'],
+    ['#scene=lines&klein', 'screenshot-klein-beside.png'],
   ]) {
     await page.goto(url + hash);
     await page.waitForFunction(
