@@ -157,7 +157,8 @@ import { MAX_TEXT_PARAM } from './limits.js';
  * @property {{param: string, points?: Float32Array, lines?: Float32Array, transform?: Float32Array}} [pick]
  *   what a click or a tap chooses (stage/scene-pick.js): the one of `points` (3 floats each) or
  *   else of `lines` (6 floats each, drawn moved by `transform`) nearest to it on screen sets
- *   parameter `param` to its index (the Klein scene's marked ruling)
+ *   parameter `param` to its index (the Klein scene's marked ruling), which is a line of `data`
+ *   too: with the Klein view beside, that line is marked there
  * @property {string} [note]          a remark shown under the readout (e.g. the level of detail)
  * @property {Claim[]} [claims]      the comparative sentences that apply to these parameters,
  *   each checked against the numbers of the readout (tests/node/claims.test.mjs sweeps the

@@ -179,7 +179,14 @@ export class Stage {
     /** @internal the line marked in both views, drawn in the 3D view */
     this.lineMark = new LineMark(els, { viewer: this.viewer, mark });
     /** @internal choosing by pointing where the scene offers it (the Klein scene's marked ruling) */
-    this.scenePick = new ScenePick(els, { viewer: this.viewer, set: (key, value) => this.setParam(key, value) });
+    this.scenePick = new ScenePick(els, {
+      viewer: this.viewer,
+      set: (key, value) => {
+        this.setParam(key, value);
+        // (the parameter's change forgets the mark of the view beside: the same line, marked again there)
+        if (this.state.view === 'split') mark(value);
+      },
+    });
     /** @internal */
     this.edit = new EditHost({
       els,

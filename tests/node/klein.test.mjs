@@ -8,11 +8,9 @@ import ruledlab from './load.mjs';
 import { SCENES } from '../../www/scenes/index.js';
 import { translator } from '../../www/i18n/index.js';
 import { legendOf, defaults } from '../../www/scene.js';
-import { KLEIN_RANGES } from '../../www/limits.js';
-import { invertSimilarity, transformPoint } from '../../www/edit/geometry.js';
-
-const close = (/** @type {number[]} */ a, /** @type {number[]} */ b, eps = 1e-9) =>
-  a.length === b.length && a.every((x, i) => Math.abs(x - b[i]) <= eps);
+import { toScreen, transformPoint } from '../../www/edit/geometry.js';
+import { OrbitCamera } from '../../www/camera.js';
+import { holdValue } from '../../www/klein-projection.js';
 
 const { AnalyticCongruence, AnalyticSurface, kleinView } = ruledlab;
 
@@ -411,13 +409,18 @@ test('the link keeps the Klein view’s image: klein=α,β,ℓ read and written 
   }
 });
 
-test('the Klein scene’s sliders α, β, ℓ are the ranges the Klein view beside holds, and its lines carry its image', () => {
+test('the Klein scene’s sliders α, β, ℓ take only values the Klein view beside holds as they are, and its lines carry its image', () => {
   const scene = SCENES.find((x) => x.id === 'klein');
   assert.ok(scene);
   for (const key of /** @type {const} */ (['mix', 'turn', 'unit'])) {
     const p = scene.params.find((q) => q.key === key);
-    assert.ok(p && p.type === 'range');
-    assert.deepEqual({ min: p.min, max: p.max, step: p.step }, { ...KLEIN_RANGES[key] });
+    assert.ok(p && p.type === 'range' && p.min !== undefined && p.max !== undefined && p.step !== undefined);
+    // every value the scene's slider takes is one the view's projection keeps (none held, none moved)
+    for (let k = 0; p.min + k * p.step <= p.max + 1e-9; k++) {
+      const v = Number((p.min + k * p.step).toFixed(2));
+      assert.equal(holdValue(key, v), v, `${key} = ${v}`);
+    }
+    assert.equal(holdValue(key, p.max + p.step), p.max, `${key} beyond its slider`);
   }
   const { t } = translator('en');
   const built = scene.create(
@@ -436,25 +439,28 @@ test('the Klein scene’s rulings are handles where they are drawn, left of M as
     scene.create(p, { t, lang: 'en', input: rulings ? { rulings } : null, data: null });
   const built = create(null);
   const set = built.input?.sets[0];
-  assert.ok(set && set.transform);
+  assert.ok(set?.transform);
   assert.equal(set.key, 'rulings');
   assert.equal(set.points.length, 6 * 8);
   // the handles stand where the rulings are drawn: the layer's similarity
   const drawn = built.layers.find((l) => l.style === 'ruling');
   assert.deepEqual(Array.from(set.transform), Array.from(drawn?.transform ?? []));
-  // the centre of their box goes 3.2 to the left of M's centre on the camera's screen: (sin yaw, −cos yaw, 0)
-  const yaw = built.camera?.yaw ?? 0;
+  // the centre of their box stands left of M's centre on the screen of the scene's camera, level
+  // with it, about 3.2 away in space
   const lo = [0, 1, 2].map((k) => Math.min(...Array.from(set.points).filter((_, i) => i % 3 === k)));
   const hi = [0, 1, 2].map((k) => Math.max(...Array.from(set.points).filter((_, i) => i % 3 === k)));
   const centre = transformPoint(
     set.transform,
     lo.map((l, k) => (l + hi[k]) / 2),
   );
-  assert.ok(close(centre, [3.2 * Math.sin(yaw), -3.2 * Math.cos(yaw), 0], 1e-5), `centre ${centre}`);
-  // and the edit goes back through the inverse similarity to the lines themselves
-  const inverse = invertSimilarity(set.transform);
-  const end = Array.from(set.points.subarray(9, 12));
-  assert.ok(close(transformPoint(inverse, transformPoint(set.transform, end)), end, 1e-6));
+  assert.ok(Math.abs(Math.hypot(...centre) - 3.2) < 1e-5, `centre ${centre}`);
+  const camera = new OrbitCamera();
+  Object.assign(camera, { yaw: built.camera?.yaw, pitch: 0, target: [0, 0, 0], distance: 20 });
+  const m = camera.viewProj(1.5);
+  const screen = (/** @type {number[]} */ p) => toScreen(m, p, 1500, 1000);
+  const [onLeft, ofM] = [screen(centre), screen([0, 0, 0])];
+  assert.ok(ofM.x - onLeft.x > 150, `left of M on screen: ${onLeft.x} < ${ofM.x}`);
+  assert.ok(Math.abs(onLeft.y - ofM.y) < 1, 'level with it');
   const readout = (/** @type {any} */ b, /** @type {string} */ label) =>
     Number(b.readouts.find((/** @type {any} */ r) => r.label === label)?.value);
   const base = Float64Array.from(set.points);
@@ -504,6 +510,8 @@ test('a linear congruence is a 3-space section of M: the Klein scene’s second-
   for (const surface of ['congruence:two-lines', 'helicoid', 'hyperboloid', 'hyperbolic-paraboloid'])
     assert.ok(value(surface) < 1e-9, `${surface}: ${value(surface)}`);
   for (const surface of ['helical', 'helix-tangent']) assert.ok(value(surface) > 1e-3, `${surface}: ${value(surface)}`);
+  // the book's number for the helical surface at 24 rulings
+  assert.ok(Math.abs(value('helical') - 0.3) < 0.01, `helical: ${value('helical')}`);
   // the striction scene's hyperboloid is closed: the Klein view beside joins its last ruling to its first
   const { kleinImage } = await import('../../www/klein-image.js');
   const striction = SCENES.find((x) => x.id === 'striction');

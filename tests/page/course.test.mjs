@@ -96,6 +96,21 @@ const VARIANTS = [
   },
 ];
 
+/**
+ * The requests a frame made outside ruledlab's files: anything but data:, blob: and about:, the
+ * parent page `url`, and ruledlab's own files (`oneFile`: the one-file page alone).
+ * @param {string[]} requests @param {string} url @param {boolean} oneFile
+ */
+const foreign = (requests, url, oneFile) =>
+  requests.filter(
+    (u) =>
+      !u.startsWith('data:') &&
+      !u.startsWith('blob:') &&
+      !u.startsWith('about:') &&
+      u.split('#')[0] !== url &&
+      (oneFile ? u.split('#')[0] !== `${session.url}dist/ruledlab.html` : !u.startsWith(session.url)),
+  );
+
 for (const v of VARIANTS) {
   test(`in a course system: ${v.name} — drawn, controls that move the picture, no error, nothing else loaded`, async () => {
     const url = site.write(`${v.name.replace(/\W+/g, '-')}.html`, hostPage(v.body(session.url)), v.parent);
@@ -118,15 +133,7 @@ for (const v of VARIANTS) {
     await frame
       .locator('.rl-row[data-key="n"] output', { hasText: /^40$/ })
       .waitFor({ state: 'attached', timeout: 10000 });
-    const foreign = requests.filter(
-      (u) =>
-        !u.startsWith('data:') &&
-        !u.startsWith('blob:') &&
-        !u.startsWith('about:') &&
-        u.split('#')[0] !== url &&
-        (v.oneFile ? u.split('#')[0] !== `${session.url}dist/ruledlab.html` : !u.startsWith(session.url)),
-    );
-    assert.deepEqual(foreign, [], 'requests outside ruledlab’s files');
+    assert.deepEqual(foreign(requests, url, v.oneFile), [], 'requests outside ruledlab’s files');
     assert.deepEqual(problems, []);
     await page.close();
   });
@@ -159,15 +166,7 @@ test('in a course system: the one-file build in a sandboxed frame shows the Klei
   await page.waitForTimeout(300);
   const after = await pane.screenshot();
   assert.ok(countChanged(decodePng(before), decodePng(after)) > 300, 'β steers the picture in the frame');
-  const foreign = requests.filter(
-    (u) =>
-      !u.startsWith('data:') &&
-      !u.startsWith('blob:') &&
-      !u.startsWith('about:') &&
-      u.split('#')[0] !== url &&
-      u.split('#')[0] !== `${session.url}dist/ruledlab.html`,
-  );
-  assert.deepEqual(foreign, [], 'requests outside the one file');
+  assert.deepEqual(foreign(requests, url, true), [], 'requests outside the one file');
   assert.deepEqual(problems, []);
   await page.close();
 });

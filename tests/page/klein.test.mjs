@@ -199,7 +199,7 @@ test('the Klein view’s image steered by its sliders: the picture changes, the 
   const { page, problems } = await session.open('#scene=striction&klein=12,200,2.35');
   assert.equal(await page.locator('.rl-klein-steer').isVisible(), true);
   assert.deepEqual(await sliders(page), [12, 200, 2.35]);
-  assert.deepEqual(await page.locator('.rl-klein-steer output').allInnerTexts(), ['12', '200', '2.35']);
+  assert.deepEqual(await page.locator('.rl-klein-steer output').allInnerTexts(), ['12°', '200°', '2.35']);
   assert.match((await description(page)) ?? '', /α = 12°, β = 200°, ℓ = 2\.35/);
   // each slider is named for what it steers, in the Klein view (not the scene's sliders)
   assert.deepEqual(
@@ -587,6 +587,16 @@ test('in the Klein scene itself a click on a point of M, or on a line in space, 
   await page.mouse.click(end.x, end.y);
   assert.equal(await page.evaluate(() => /** @type {any} */ (window).ruledlab.stage.editor.selected), 9);
   assert.equal(await mark(), 6);
+  // with the Klein view beside: the ruling chosen is the line marked there too (its ring stays)
+  await page.locator('.rl-edit').click();
+  await page.locator('.rl-klein-toggle').click();
+  await page.locator('.rl-klein canvas').waitFor();
+  await page.waitForTimeout(300);
+  p = await at(4, 'point');
+  await page.mouse.click(p.x, p.y);
+  await page.waitForFunction(() => /** @type {any} */ (window).ruledlab.stage.params.mark === 4);
+  await page.waitForFunction(() => /** @type {any} */ (window).ruledlab.stage.state.marked === 4);
+  assert.equal(await page.locator('.rl-klein-ring').isVisible(), true);
   assert.deepEqual(problems, []);
   await page.close();
 });

@@ -149,12 +149,7 @@ const POINTS = {
     assert.ok(tip.free, 'pose 3’s tip is in sight, clear of the bars');
     await hand.touch('touchStart', tip.x, tip.y);
     await hand.lift();
-    const z = page.locator('.rl-coords input').nth(2);
-    const now = Number((await z.inputValue()).replace('−', '-'));
-    await hand.tap(z);
-    await z.fill(String(Math.round((now - 0.3) * 1e6) / 1e6));
-    await hand.tap(page.locator('.rl-coords-set'));
-    await drawn(page);
+    await lowerTyped(page, hand, 0.3);
   },
   // R_5's end b, tapped (where other ends lie under the finger, the list that names each; tapped
   // again where the finger took a neighbour); its z typed lower by 0.3 (the hint's number)
@@ -173,12 +168,7 @@ const POINTS = {
       }
     }
     assert.match(await heading.innerText(), /ruling 5, end b/, 'the finger took R_5’s end b');
-    const z = page.locator('.rl-coords input').nth(2);
-    const now = Number((await z.inputValue()).replace('−', '-'));
-    await hand.tap(z);
-    await z.fill(String(Math.round((now - 0.3) * 1e6) / 1e6));
-    await hand.tap(page.locator('.rl-coords-set'));
-    await drawn(page);
+    await lowerTyped(page, hand, 0.3);
   },
   // ends slid along their own rulings (⤡): the lines stay, the endpoints move
   async 'line-space-slide'(page, hand) {
@@ -203,6 +193,16 @@ const POINTS = {
       }
   },
 };
+
+/** The selected point's z, as its coordinates show it, typed lower by `by` and set (a tap on Move it there). */
+async function lowerTyped(/** @type {Page} */ page, /** @type {Hand} */ hand, /** @type {number} */ by) {
+  const z = page.locator('.rl-coords input').nth(2);
+  const now = Number((await z.inputValue()).replace('−', '-'));
+  await hand.tap(z);
+  await z.fill(String(Math.round((now - by) * 1e6) / 1e6));
+  await hand.tap(page.locator('.rl-coords-set'));
+  await drawn(page);
+}
 
 /**
  * A long press on `point`, then the finger moved in small steps (the point follows at a fifth of

@@ -96,8 +96,9 @@ export class KleinPane {
     else if (!data || count < 2) failure = t('klein.pane.none');
     else if (count > MAX_KLEIN_LINES) failure = t('klein.pane.tooMany', { count, max: MAX_KLEIN_LINES });
     if (!built || failure) {
+      // (nothing drawn: no image to steer)
       this.showNote(failure);
-      this.els.kleinSteer.hidden = !failure || !data || count < 2;
+      this.els.kleinSteer.hidden = true;
       return;
     }
     // the image: the reader's, or the scene's own (the Klein scene's sliders), or the default
@@ -172,7 +173,9 @@ export class KleinPane {
       const { input, value } = this.els.kleinSliders[key];
       // (not while the reader holds it: the browser's value is the one asked for)
       if (Number(input.value) !== image[key]) input.value = String(image[key]);
-      value.value = image[key].toLocaleString(lang, { maximumFractionDigits: 2 });
+      // (the angles with their unit, as the description says them)
+      const number = image[key].toLocaleString(lang, { maximumFractionDigits: 2 });
+      value.value = key === 'unit' ? number : `${number}°`;
     }
   }
 

@@ -511,8 +511,8 @@ const RAW = [
     goal: [{ value: 'klein.readout.complex', below: 0.005 }],
     hints: [
       {
-        en: 'The complex of a helix’s tangents is the complex of its screw motion: a line lies in it exactly when it lies in the null plane of each of its points. Turned about the helix’s axis, or moved along it, a ruling stays in the complex; an end lifted alone takes it out.',
-        de: 'Der Komplex der Tangenten einer Schraublinie ist der Komplex ihrer Schraubung: Eine Gerade liegt genau dann in ihm, wenn sie in der Nullebene jedes ihrer Punkte liegt. Um die Achse der Schraublinie gedreht oder längs ihr verschoben, bleibt eine Erzeugende im Komplex; ein Ende allein angehoben nimmt sie heraus.',
+        en: 'The tangents of the helix (cos t, sin t, 0.3 t) lie in the null complex of a screw about its axis — not the helix’s own screw, but the one of pitch −1/0.3 (the opposite sense), whose null plane at each point of the helix is the osculating plane there. Turned about the axis, or moved along it, a ruling stays in that complex; an end lifted alone takes it out.',
+        de: 'Die Tangenten der Schraublinie (cos t, sin t, 0,3 t) liegen im Nullkomplex einer Schraubung um ihre Achse – nicht der eigenen Schraubung der Schraublinie, sondern der mit dem Parameter −1/0,3 (im Gegensinn), deren Nullebene in jedem Punkt der Schraublinie deren Schmiegebene ist. Um die Achse gedreht oder längs der Achse verschoben, bleibt eine Erzeugende in diesem Komplex; ein Ende allein angehoben nimmt sie heraus.',
       },
       {
         en: 'The end b of R_5 was lifted by 0.3 along z. Tap it (where ends lie close together, a list names each) and type its z lower by 0.3; or choose ↕ in the ✎ bar and drag it down, after a long press for a fine drag, until the residual is below 0.005.',

@@ -13,23 +13,6 @@ use ruledlab_js::subdivide_options::read;
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
-/// The image of P⁵ that `kleinDeparture` draws its points in (as `kleinView`'s options; read key
-/// by key: the teaching module's size).
-#[derive(Tsify)]
-#[serde(rename_all = "camelCase")]
-#[allow(dead_code)] // the type is for TypeScript; the options are read by `read_option`
-struct KleinImageOptions {
-    /// α in degrees, 0 to 90; default 45.
-    #[tsify(optional)]
-    mix: Option<f64>,
-    /// β in degrees; default 0.
-    #[tsify(optional)]
-    turn: Option<f64>,
-    /// ℓ, the unit of length; default 1.
-    #[tsify(optional)]
-    unit: Option<f64>,
-}
-
 /// What `kleinDeparture` returns.
 #[derive(Tsify)]
 #[serde(rename_all = "camelCase")]

@@ -16,11 +16,12 @@ use serde::Serialize;
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
-/// Options of `kleinView` (read key by key: the teaching module's size).
+/// The 3D image of P⁵ a Klein image is drawn in (K5): `kleinView`'s and `kleinDeparture`'s
+/// (read key by key: the teaching module's size).
 #[derive(Tsify)]
 #[serde(rename_all = "camelCase")]
-#[allow(dead_code)] // the type is for TypeScript; the options are read by `option`
-struct KleinViewOptions {
+#[allow(dead_code)] // the type is for TypeScript; the options are read by `read_option`
+pub(crate) struct KleinImageOptions {
     /// α of the image q = cos α x + sin α R_β y, in degrees from 0 (the x-sphere) to 90 (the
     /// y-sphere); default 45.
     #[tsify(optional)]
@@ -31,6 +32,17 @@ struct KleinViewOptions {
     /// ℓ, the unit of length that makes moments comparable with directions; default 1.
     #[tsify(optional)]
     unit: Option<f64>,
+}
+
+/// Options of `kleinView`: the image (`KleinImageOptions`) and how the lines are joined (read key
+/// by key: the teaching module's size).
+#[derive(Tsify)]
+#[serde(rename_all = "camelCase")]
+#[allow(dead_code)] // the type is for TypeScript; the options are read by `option`
+struct KleinViewOptions {
+    /// α, β and ℓ of the image.
+    #[serde(flatten)]
+    image: KleinImageOptions,
     /// The last ruling and the first are a step too (a closed surface); default false.
     #[tsify(optional)]
     closed: Option<bool>,

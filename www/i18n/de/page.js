@@ -124,7 +124,7 @@ export default {
   'element.set.unknownParam': 'Diese Szene hat keinen Parameter „{key}“; ihre Parameter sind: {known}.',
   'element.note.badInput': 'Das Attribut input passt nicht zu dieser Szene; die eingebaute Eingabe wird gezeigt.',
   'element.note.badKlein':
-    'Das Attribut klein sind nicht drei Zahlen α,β,ℓ; die Klein-Ansicht wird im eigenen Bild der Szene gezeichnet.',
+    'Der Wert des Attributs klein besteht nicht aus drei Zahlen α,β,ℓ; die Klein-Ansicht wird im eigenen Bild der Szene gezeichnet.',
   'element.note.kleinHeld':
     'Eine Zahl des Attributs klein lag außerhalb ihres Bereichs oder zwischen zwei Stufen und wird auf dem nächsten Wert gehalten, den der Schieberegler der Klein-Ansicht annimmt.',
   'element.badCamera':
@@ -144,7 +144,7 @@ export default {
   'note.unknownScene': 'Der Link nennt eine Szene, die es nicht gibt; die erste Szene wird gezeigt.',
   'note.badCamera': 'Die Kamera im Link konnte nicht gelesen werden; die Ansicht wird an die Szene angepasst.',
   'note.badKlein':
-    'Das Bild der Klein-Ansicht im Link sind nicht drei Zahlen α,β,ℓ; die Klein-Ansicht wird im eigenen Bild der Szene gezeichnet.',
+    'Das Bild der Klein-Ansicht im Link besteht nicht aus drei Zahlen α,β,ℓ; die Klein-Ansicht wird im eigenen Bild der Szene gezeichnet.',
   'note.kleinHeld':
     'Eine Zahl des Bildes der Klein-Ansicht im Link lag außerhalb ihres Bereichs oder zwischen zwei Stufen und wird auf dem nächsten Wert gehalten, den der Schieberegler der Klein-Ansicht annimmt.',
   'note.badData': 'Die Daten im Link konnten nicht gelesen werden; die Beispieldaten werden gezeigt.',
