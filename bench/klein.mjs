@@ -3,7 +3,9 @@
 // WebGL (SwiftShader) on this machine: each view draws a few frames in full one after another,
 // its camera turned before each and each frame waited for. The goal: the Klein view's frame time
 // at most 1.2 × the 3D view's for the same lines, both views the same size (the split view's
-// halves); the 3D view alone (the whole width) for comparison. Rounds alternate, the median
+// halves); the 3D view alone (the whole width) for comparison. Then a step of the Klein view's α
+// slider, as a reader's: from its input event to the Klein view's next frame issued (the core's
+// kleinView of every line again, the buffers uploaded; the GPU's drawing not waited for). Rounds alternate, the median
 // counts. `node bench/klein.mjs` (after npm run build).
 import { cpus } from 'node:os';
 import { chromium } from 'playwright-core';
@@ -46,11 +48,29 @@ function frameTime(page, which) {
   );
 }
 
+/**
+ * Milliseconds from a step of the Klein view's α slider (its input event, as a reader's drag
+ * fires it) to the Klein view's next frame issued.
+ * @param {import('playwright-core').Page} page
+ */
+function stepTime(page) {
+  return page.evaluate(async () => {
+    const box = /** @type {HTMLElement} */ (document.querySelector('.rl-klein'));
+    const input = /** @type {HTMLInputElement} */ (document.querySelector('.rl-klein-steer input'));
+    const before = Number(box.dataset.frames ?? 0);
+    const t0 = performance.now();
+    input.value = String(Number(input.value) >= 89 ? 1 : Number(input.value) + 1);
+    input.dispatchEvent(new Event('input', { bubbles: true }));
+    while (Number(box.dataset.frames ?? 0) === before) await new Promise((r) => requestAnimationFrame(r));
+    return performance.now() - t0;
+  });
+}
+
 const median = (/** @type {number[]} */ xs) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 const { server, url } = await startServer();
 /** @type {Record<string, number[]>} */
-const times = { alone: [], space: [], klein: [] };
+const times = { alone: [], space: [], klein: [], step: [] };
 try {
   const browser = await chromium.launch({
     executablePath: '/usr/bin/chromium',
@@ -81,6 +101,7 @@ try {
     await page.waitForTimeout(300);
     times.space.push(await frameTime(page, 'space'));
     times.klein.push(await frameTime(page, 'klein'));
+    times.step.push(await stepTime(page));
   }
   const description = await page.locator('.rl-klein .rl-sr-only').textContent();
   if (!new RegExp(`the ${LINES.toLocaleString('en').replace(',', '.?')} lines`).test(description ?? ''))
@@ -90,13 +111,14 @@ try {
   server.close();
 }
 
-const [alone, space, klein] = [times.alone, times.space, times.klein].map(median);
+const [alone, space, klein, step] = [times.alone, times.space, times.klein, times.step].map(median);
 const ratio = klein / space;
 console.table({
   '3D view alone (whole width)': alone.toFixed(1),
   '3D view beside the Klein view': space.toFixed(1),
   'Klein view beside the 3D view': klein.toFixed(1),
   'Klein / 3D, same size': ratio.toFixed(2),
+  'a step of α, input to the Klein frame': step.toFixed(1),
 });
 
 // the book's paragraph (docs/src/internals/page-speed.md)
@@ -112,5 +134,7 @@ const block = [
   `| the 3D view beside the Klein view | ${space.toFixed(1)} |`,
   `| the Klein view beside the 3D view | ${klein.toFixed(1)} |`,
   `| **Klein view / 3D view, the same size** | **${ratio.toFixed(2)}** |`,
+  '',
+  `A step of the Klein view's α slider (its input event, as a reader's drag fires it) takes ${step.toFixed(0)} ms until the Klein view's next frame is issued — the image of every line computed again by the core and uploaded — and the GPU then draws it as any frame above (the median of ${ROUNDS}; the frame's drawing is not waited for here).`,
 ].join('\n');
 if (rewriteBlock('bench-klein', block)) console.log('docs/src/internals/page-speed.md: Klein benchmark rewritten');
