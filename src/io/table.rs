@@ -138,6 +138,26 @@ mod tests {
     use super::*;
     use crate::io::rust_number;
 
+    /// The limits are exact: a text of MAX_IMPORT_TEXT bytes is read and one byte more refused
+    /// before anything is parsed; `max_rows` records are read and the next refused, counted as
+    /// the record it would have been.
+    #[test]
+    fn the_size_and_record_limits_are_exact() {
+        let blank = " ".repeat(MAX_IMPORT_TEXT);
+        assert_eq!(read_table(&blank, &rust_number, "csv", 10).unwrap().rows.len(), 0);
+        let over = " ".repeat(MAX_IMPORT_TEXT + 1);
+        assert_eq!(
+            read_table(&over, &rust_number, "csv", 10).unwrap_err(),
+            Error::TooMany { what: "bytes of CSV", got: MAX_IMPORT_TEXT + 1, max: MAX_IMPORT_TEXT }
+        );
+        let three = "1 2 3\n4 5 6\n7 8 9\n";
+        assert_eq!(read_table(three, &rust_number, "csv", 3).unwrap().rows.len(), 3);
+        assert_eq!(
+            read_table(three, &rust_number, "csv", 2).unwrap_err(),
+            Error::TooMany { what: "records in the CSV", got: 3, max: 2 }
+        );
+    }
+
     #[test]
     fn a_table_with_a_header_comments_and_decimal_commas() {
         let t = read_table("\u{feff}# units: inch\nX;Y;Z\n1,5;0;-2\n\n3 4\t5\n", &rust_number, "csv", 10).unwrap();
