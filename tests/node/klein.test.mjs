@@ -528,3 +528,19 @@ test('a linear congruence is a 3-space section of M: the Klein scene’s second-
     assert.equal(steps, closed ? n : n - 1, surface);
   }
 });
+
+test('Share’s element snippet carries the Klein view and its image as the element reads them back', async () => {
+  const { elementSnippet } = await import('../../www/page/share.js');
+  const { readProjection } = await import('../../www/klein-projection.js');
+  const scene = SCENES.find((x) => x.id === 'striction');
+  assert.ok(scene);
+  const snippet = (/** @type {any} */ edit) =>
+    elementSnippet(scene, defaults(scene), 'en', { src: 'ruledlab-embed.js' }, null, null, edit);
+  const steered = snippet({ klein: true, projection: { mix: 40, turn: 200, unit: 1.5 } });
+  const value = /\sklein="([^"]*)"/.exec(steered)?.[1];
+  assert.equal(value, '40,200,1.5');
+  assert.deepEqual(readProjection(value ?? null), { projection: { mix: 40, turn: 200, unit: 1.5 }, held: false });
+  // the scene's own image: a bare attribute; the 3D view alone: none
+  assert.match(snippet({ klein: true, projection: null }), /\sklein\s/);
+  assert.doesNotMatch(snippet({ klein: false, projection: { mix: 40, turn: 200, unit: 1.5 } }), /klein/);
+});

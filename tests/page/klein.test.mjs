@@ -12,7 +12,7 @@ import { mkdirSync, writeFileSync } from 'node:fs';
 import { pageSession, setControl, launch, watch, ready, ARTIFACTS } from './browser.mjs';
 import { startServer } from '../../scripts/serve.mjs';
 import { countDifferent, countChanged, decodePng } from './png.mjs';
-import { finger, Hand } from './hands.mjs';
+import { finger, Hand, handlesOnPage } from './hands.mjs';
 
 const session = pageSession();
 const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
@@ -573,17 +573,7 @@ test('in the Klein scene itself a click on a point of M, or on a line in space, 
   assert.equal(await mark(), 6);
   // in Edit, a press on a ruling's end takes the handle: the mark stays
   await page.locator('.rl-edit').click();
-  const end = await page.evaluate(() => {
-    const { stage } = /** @type {any} */ (window).ruledlab;
-    const b = stage.viewer.canvas.getBoundingClientRect();
-    const m = stage.viewer.camera.viewProj(b.width / b.height);
-    const [x, y, z] = stage.editor.handles()[9].world;
-    const w = m[3] * x + m[7] * y + m[11] * z + m[15];
-    return {
-      x: b.left + (((m[0] * x + m[4] * y + m[8] * z + m[12]) / w + 1) / 2) * b.width,
-      y: b.top + ((1 - (m[1] * x + m[5] * y + m[9] * z + m[13]) / w) / 2) * b.height,
-    };
-  });
+  const end = (await handlesOnPage(page))[9];
   await page.mouse.click(end.x, end.y);
   assert.equal(await page.evaluate(() => /** @type {any} */ (window).ruledlab.stage.editor.selected), 9);
   assert.equal(await mark(), 6);
