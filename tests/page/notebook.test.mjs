@@ -150,6 +150,17 @@ async function grab(locator, name) {
 }
 
 /**
+ * Whether `check` comes true within `ms` milliseconds, asked every 250 ms.
+ * @param {() => Promise<boolean>} check @param {number} ms
+ */
+async function until(check, ms) {
+  for (const t0 = Date.now(); ; await new Promise((r) => setTimeout(r, 250))) {
+    if (await check()) return true;
+    if (Date.now() - t0 > ms) return false;
+  }
+}
+
+/**
  * The notebook open in `page` (JupyterLab's or Notebook 7's: the same cells): its cells, `run(i,
  * source)` (runs cell i as a person does and gives its output's text) and `viewOf(i)` (the
  * <ruled-view> of cell i, once it has drawn).
@@ -160,23 +171,35 @@ function notebookIn(page) {
   /** Runs cell `i` as a person does (click it, Shift+Enter) and waits until it has run; returns its output's text. */
   const run = async (/** @type {number} */ i, /** @type {RegExp} */ source) => {
     const cell = cells.nth(i);
-    await cell.scrollIntoViewIfNeeded();
-    assert.match(await cell.locator('.jp-InputArea-editor').innerText(), source, `cell ${i} is not the one expected`);
+    const text = (/** @type {string} */ selector) =>
+      cell
+        .locator(selector)
+        .innerText({ timeout: 5000 })
+        .then((t) => t.trim())
+        .catch(() => '');
+    // (JupyterLab draws a notebook's cells before their text and may replace them as it loads:
+    // the cell is run once it holds its source, its elements found anew at each step)
+    await until(async () => source.test(await text('.jp-InputArea-editor')), 60000);
+    assert.match(await text('.jp-InputArea-editor'), source, `cell ${i} is not the one expected`);
     // (a Shift+Enter pressed while the notebook is still starting may be lost — its prompt stays
     // "[ ]:" where a cell that runs or waits for the kernel shows "[*]:" at once — and is pressed again)
-    const prompt = await cell.locator('.jp-InputArea-prompt').elementHandle();
+    // (a cell run before shows "[n]:": it has run again when its number changed)
+    const before = await text('.jp-InputArea-prompt');
+    const ran = async () => {
+      const now = await text('.jp-InputArea-prompt');
+      return /^\[\d+\]:$/.test(now) && now !== before;
+    };
     for (let attempt = 0; ; attempt++) {
+      await cell.scrollIntoViewIfNeeded();
       await cell.locator('.jp-InputArea-prompt').click();
       await page.keyboard.press('Shift+Enter');
-      const taken = await page
-        .waitForFunction((el) => /^\[(\*|\d+)\]:$/.test(el?.textContent?.trim() ?? ''), prompt, { timeout: 20000 })
-        .then(
-          () => true,
-          () => false,
-        );
+      const taken = await until(async () => (await text('.jp-InputArea-prompt')) === '[*]:' || (await ran()), 20000);
       if (taken || attempt === 2) break;
     }
-    await page.waitForFunction((el) => /^\[\d+\]:$/.test(el?.textContent?.trim() ?? ''), prompt, { timeout: 120000 });
+    assert.ok(
+      await until(ran, 120000),
+      `cell ${i} did not run in 120 s: its prompt is ${await text('.jp-InputArea-prompt')}`,
+    );
     return cell.locator('.jp-OutputArea').innerText();
   };
   /** The <ruled-view> of cell `i`, once it has drawn. */
@@ -421,10 +444,23 @@ test('a million rulings from NumPy go through the kernel into the view, which dr
   );
   const page = await browser.newPage();
   const problems = watch(page);
+  const { cells, run } = notebookIn(page);
+  /** @type {string[]} everything the page logged, for a failure's message */
+  const logged = [];
+  page.on('console', (m) => logged.push(`${m.type()}: ${m.text().slice(0, 300)}`));
+  /** What the page shows and logged: cell 0's output, its views, the last messages of its console. */
+  const said = async () => {
+    const output = await cells
+      .nth(0)
+      .locator('.jp-OutputArea')
+      .innerText({ timeout: 5000 })
+      .catch(() => '(none)');
+    const views = await page.locator('ruled-view').count();
+    return JSON.stringify({ output: output.slice(0, 400), views, console: logged.slice(-15), problems });
+  };
   await page.goto(lab.url.replace(`/${NOTEBOOK}?`, '/million.ipynb?'));
   // JupyterLab resets the workspace and loads anew without `reset`: a cell run before that is lost
   await page.waitForURL((url) => !url.searchParams.has('reset'), { timeout: 120000 });
-  const { cells, run } = notebookIn(page);
   await cells.first().waitFor({ timeout: 120000 });
   await page.waitForSelector('.jp-Notebook-ExecutionIndicator[data-status="idle"]', { timeout: 120000 });
   try {
@@ -439,26 +475,24 @@ test('a million rulings from NumPy go through the kernel into the view, which dr
     if (!shown) {
       // Under load JupyterLab's widget manager can ask the kernel for its widgets while the cell is
       // still opening this one, and the output then stays "Loading widget…" (an upstream race:
-      // jupyter-widgets/ipywidgets#3549). A reader runs the cell again; so does the test, once,
-      // and fails if the view does not come then.
-      const output = await cells
-        .nth(0)
-        .locator('.jp-OutputArea')
-        .innerText()
-        .catch(() => '(none)');
-      console.log(
-        `the view did not come in 90 s; the cell's output: ${JSON.stringify(output.slice(0, 400))}; run again`,
+      // jupyter-widgets/ipywidgets#3549); running the cell again in the same page did not help (the
+      // manager stays stuck). A reader reloads the page, whose new manager restores the kernel's
+      // widgets, and runs the cell again if the view is still not there; so does the test, once, and
+      // fails, saying what the page showed and logged, if the view does not come then.
+      console.log(`the view did not come in 90 s; the page says: ${await said()}; reloading`);
+      await page.reload();
+      await cells.first().waitFor({ timeout: 120000 });
+      await page.waitForSelector('.jp-Notebook-ExecutionIndicator[data-status="idle"]', { timeout: 120000 });
+      const restored = await view.waitFor({ timeout: 60000 }).then(
+        () => true,
+        () => false,
       );
-      const prompt = cells.nth(0).locator('.jp-InputArea-prompt');
-      const before = (await prompt.innerText()).trim();
-      await prompt.click();
-      await page.keyboard.press('Shift+Enter');
-      await page.waitForFunction(
-        ([el, was]) => /^\[\d+\]:$/.test(el?.textContent?.trim() ?? '') && el?.textContent?.trim() !== was,
-        /** @type {const} */ ([await prompt.elementHandle(), before]),
-        { timeout: 180000 },
-      );
-      await view.waitFor({ timeout: 120000 });
+      if (!restored) {
+        await run(0, /View\.from_segments\(a, b/);
+        await view.waitFor({ timeout: 120000 }).catch(async () => {
+          throw new Error(`no view after a reload and a second run; the page says: ${await said()}`);
+        });
+      }
     }
     await page.waitForFunction(
       (v) => {
