@@ -39,17 +39,18 @@ pub struct PatternOptions {
 }
 
 impl Default for PatternOptions {
+    /// The core's sheet defaults, on A4.
     fn default() -> Self {
-        let o = SheetOptions::default();
-        PatternOptions {
-            scale: o.scale,
-            tabs: o.tabs,
-            tab: o.tab,
-            kerf: o.kerf,
-            fold_angle: o.fold_angle,
-            margin: o.margin,
-            paper: "a4".into(),
-        }
+        let SheetOptions { scale, tabs, tab, kerf, fold_angle, margin } = SheetOptions::default();
+        PatternOptions { scale, tabs, tab, kerf, fold_angle, margin, paper: "a4".into() }
+    }
+}
+
+impl PatternOptions {
+    /// The core's options of the sheet (all but the paper).
+    fn sheet(&self) -> SheetOptions {
+        let PatternOptions { scale, tabs, tab, kerf, fold_angle, margin, paper: _ } = *self;
+        SheetOptions { scale, tabs, tab, kerf, fold_angle, margin }
     }
 }
 
@@ -86,16 +87,7 @@ impl FlatPattern {
                 ))
             }
         };
-        let sheet_options = SheetOptions {
-            scale: o.scale,
-            tabs: o.tabs,
-            tab: o.tab,
-            kerf: o.kerf,
-            fold_angle: o.fold_angle,
-            margin: o.margin,
-        };
-        let sheet =
-            Sheet::lay_out(&self.surface, &self.points, &self.pieces, &sheet_options).map_err(|e| fail(f, e))?;
+        let sheet = Sheet::lay_out(&self.surface, &self.points, &self.pieces, &o.sheet()).map_err(|e| fail(f, e))?;
         Ok((sheet, paper))
     }
 }

@@ -25,6 +25,32 @@ fn with_polygon<'py, T: Send>(
     py.detach(|| f(points)).map_err(|e| fail(func, e))
 }
 
+/// The curve scheme, closedness and steps of a polygon function's keyword arguments (the
+/// options of `subdivide_polygon`: no variational scheme's `n` or `variant`, no `space`).
+fn curve_scheme(
+    func: &str,
+    scheme: &Bound<'_, PyAny>,
+    steps: Option<&Bound<'_, PyAny>>,
+    w: Option<&Bound<'_, PyAny>>,
+    degree: Option<&Bound<'_, PyAny>>,
+    closed: Option<&Bound<'_, PyAny>>,
+) -> PyResult<(ruledlab::Scheme, bool, usize)> {
+    let a = SchemeArgs {
+        scheme: Some(scheme),
+        steps,
+        w,
+        n: None,
+        variant: None,
+        degree,
+        closed,
+        space: None,
+        length: None,
+    };
+    let (scheme, closed, steps, space) = read(func, &a, None)?;
+    debug_assert!(matches!(space, Space::Points));
+    Ok((scheme, closed, steps))
+}
+
 /// A polygon ((N, 3)) refined by a curve scheme of Section 4: ``scheme`` "chaikin", "bspline"
 /// (``degree`` 1 … 7, default 3), "bezier" (de Casteljau) or "four-point" (Dyn–Levin–Gregory
 /// (8), tension ``w``, default 1/16); ``steps`` 0 … 24 (default 1); ``closed``. Releases the GIL.
@@ -41,19 +67,7 @@ pub fn subdivide_polygon<'py>(
     closed: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     const F: &str = "subdivide_polygon";
-    let a = SchemeArgs {
-        scheme: Some(scheme),
-        steps,
-        w,
-        n: None,
-        variant: None,
-        degree,
-        closed,
-        space: None,
-        length: None,
-    };
-    let (scheme, closed, steps, space) = read(F, &a, None)?;
-    debug_assert!(matches!(space, Space::Points));
+    let (scheme, closed, steps) = curve_scheme(F, scheme, steps, w, degree, closed)?;
     let out = with_polygon(py, F, points, |p| ruledlab::subdivide_polygon(p, scheme, closed, steps))?;
     arrays::points(py, out)
 }
@@ -75,18 +89,7 @@ pub fn turning_angles<'py>(
     closed: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     const F: &str = "turning_angles";
-    let a = SchemeArgs {
-        scheme: Some(scheme),
-        steps,
-        w,
-        n: None,
-        variant: None,
-        degree,
-        closed,
-        space: None,
-        length: None,
-    };
-    let (scheme, closed, steps, _) = read(F, &a, None)?;
+    let (scheme, closed, steps) = curve_scheme(F, scheme, steps, w, degree, closed)?;
     let out = with_polygon(py, F, points, |p| ruledlab::turning_angles(p, scheme, closed, steps))?;
     let n = out.len();
     arrays::array(py, out, &[n])
