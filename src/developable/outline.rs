@@ -69,19 +69,17 @@ pub fn outline(points: &[DVec2], first: usize, last: usize, tabs: &[Side], tab: 
     for i in (first..=last).rev() {
         ring.push((points[2 * i + 1], (i == first).then_some(Side::First)));
     }
-    // merge coinciding neighbours (keeping the tag of the edge that leaves the merged point)
+    // merge coinciding neighbours, keeping the tag of the edge that leaves the merged point: the
+    // edge between them has no length, and a tab on it (a ruling of no length) none to stand on
     let mut merged: Vec<(DVec2, Option<Side>)> = Vec::with_capacity(ring.len());
     for (p, tag) in ring {
         match merged.last_mut() {
-            Some((q, t)) if (p - *q).length() <= merge => {
-                *t = tag.or(*t);
-            }
+            Some((q, t)) if (p - *q).length() <= merge => *t = tag,
             _ => merged.push((p, tag)),
         }
     }
     if merged.len() > 1 && (merged[0].0 - merged[merged.len() - 1].0).length() <= merge {
-        let (_, tag) = merged.pop().expect("a point");
-        merged[0].1 = merged[0].1.or(tag);
+        merged.pop();
     }
     let pts: Vec<DVec2> = merged.iter().map(|(p, _)| *p).collect();
     let ccw = signed_area(&pts) >= 0.0;
@@ -210,5 +208,82 @@ mod tests {
             assert!((out[k] - kite[v]).length() <= 0.1 * std::f64::consts::SQRT_2 + 1e-12, "{k}");
         }
         assert_eq!(offset(&square, 0.0), square.to_vec());
+        assert_eq!(offset(&kite, 0.0), kite.to_vec(), "no offset: not even a bevel");
+    }
+
+    /// A regular hexagon offset by d is the regular hexagon of apothem a + d (its corners of 120°
+    /// mitred); an equilateral triangle's corners of 60° are bevelled: two points a corner, each
+    /// moved by d along an edge's outward normal.
+    #[test]
+    fn blunt_corners_are_mitred_and_sharp_ones_bevelled_exactly() {
+        let corner = |r: f64, k: usize, n: usize| {
+            let u = std::f64::consts::TAU * k as f64 / n as f64 + 0.3;
+            DVec2::new(1.5 + r * u.cos(), -0.5 + r * u.sin())
+        };
+        let (d, r) = (0.25, 2.0);
+        let hexagon: Vec<DVec2> = (0..6).map(|k| corner(r, k, 6)).collect();
+        let out = offset(&hexagon, d);
+        // circumradius (a + d)/cos 30° where a = r cos 30°
+        let grown = r + d / 30f64.to_radians().cos();
+        assert_eq!(out.len(), 6);
+        for (k, p) in out.iter().enumerate() {
+            assert_near!(*p, corner(grown, k, 6), 1e-15);
+        }
+        let triangle: Vec<DVec2> = (0..3).map(|k| corner(r, k, 3)).collect();
+        let out = offset(&triangle, d);
+        assert_eq!(out.len(), 6);
+        for k in 0..3 {
+            let v = triangle[k];
+            let normal = |a: DVec2, b: DVec2| {
+                let e = (b - a).normalize();
+                DVec2::new(e.y, -e.x)
+            };
+            let before = normal(triangle[(k + 2) % 3], v);
+            let after = normal(v, triangle[(k + 1) % 3]);
+            assert_near!(out[2 * k], v + d * before, 1e-15);
+            assert_near!(out[2 * k + 1], v + d * after, 1e-15);
+        }
+    }
+
+    /// Tabs on rulings of length 2 (not 1, where a share of the length and the length's inverse
+    /// agree): the trapezoid's corners and its middle exactly.
+    #[test]
+    fn a_tabs_corners_and_middle_are_where_the_tab_width_puts_them() {
+        let tall: Vec<DVec2> = (0..3).flat_map(|i| [DVec2::new(i as f64, 1.0), DVec2::new(i as f64, 3.0)]).collect();
+        // a narrow tab: as high as asked, its sides sloping in by as much
+        let o = outline(&tall, 0, 2, &[Side::Last], 0.2, 1e-9);
+        let expected = [(0.0, 1.0), (1.0, 1.0), (2.0, 1.0), (2.2, 1.2), (2.2, 2.8), (2.0, 3.0), (1.0, 3.0), (0.0, 3.0)];
+        assert_eq!(o.points, expected.map(DVec2::from));
+        let (base, middle) = o.tab_bases[0];
+        assert_eq!((base.a, base.b, base.ruling), (DVec2::new(2.0, 1.0), DVec2::new(2.0, 3.0), Some(2)));
+        assert_near!(middle, DVec2::new(2.1, 2.0), 1e-15);
+        // a wide tab: 0.45 of the ruling high, its sides in by 0.3 of it; on the first ruling, left
+        let o = outline(&tall, 0, 2, &[Side::First], 5.0, 1e-9);
+        assert_eq!(o.points.len(), 8);
+        assert_near!(o.points[6], DVec2::new(-0.9, 2.4), 1e-15);
+        assert_near!(o.points[7], DVec2::new(-0.9, 1.6), 1e-15);
+        assert_near!(o.tab_bases[0].1, DVec2::new(-0.45, 2.0), 1e-15);
+    }
+
+    /// A fan whose apex is not the origin: the apex once, where the first ruling (of no length)
+    /// and the others meet, and the tab on that ruling dropped.
+    #[test]
+    fn coinciding_points_anywhere_are_merged_into_one() {
+        let apex = DVec2::new(3.0, 2.0);
+        let fan: Vec<DVec2> = (0..4)
+            .flat_map(|i| {
+                let u = 0.3 * i as f64;
+                [apex, apex + DVec2::new(u.cos(), u.sin())]
+            })
+            .collect();
+        let o = outline(&fan, 0, 3, &[], 0.0, 1e-9);
+        assert_eq!(o.points.len(), 5, "{:?}", o.points);
+        assert_eq!(o.points.iter().filter(|p| **p == apex).count(), 1);
+        // a strip whose first ruling has no length: its two ends are one point of the outline
+        let mut squares = squares();
+        squares[1] = squares[0];
+        let o = outline(&squares, 0, 3, &[Side::First], 0.2, 1e-9);
+        assert_eq!(o.points.len(), 7, "{:?}", o.points);
+        assert!(o.tab_bases.is_empty(), "no tab on a ruling of no length");
     }
 }

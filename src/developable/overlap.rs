@@ -110,7 +110,100 @@ pub fn pieces(points: &[DVec2], overlaps: &[(usize, usize)]) -> Vec<Range<usize>
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tolerance::test::uniform;
     use std::f64::consts::TAU;
+
+    /// The area common to two triangles, by clipping one with the other's edges
+    /// (Sutherland–Hodgman): the reference the separating axes are checked against.
+    fn common_area(s: &[DVec2; 3], t: &[DVec2; 3]) -> f64 {
+        let orient = |q: &[DVec2; 3]| if (q[1] - q[0]).perp_dot(q[2] - q[0]) >= 0.0 { 1.0 } else { -1.0 };
+        let o = orient(t);
+        let mut poly: Vec<DVec2> = s.to_vec();
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            let side = |p: DVec2| o * (b - a).perp_dot(p - a);
+            let mut out = Vec::new();
+            for i in 0..poly.len() {
+                let (p, q) = (poly[i], poly[(i + 1) % poly.len()]);
+                let (sp, sq) = (side(p), side(q));
+                if sp >= 0.0 {
+                    out.push(p);
+                }
+                if (sp >= 0.0) != (sq >= 0.0) {
+                    out.push(p + (q - p) * (sp / (sp - sq)));
+                }
+            }
+            poly = out;
+            if poly.is_empty() {
+                return 0.0;
+            }
+        }
+        let n = poly.len();
+        (0..n).map(|i| poly[i].perp_dot(poly[(i + 1) % n])).sum::<f64>().abs() / 2.0
+    }
+
+    /// Random zigzag strips, folded onto themselves many times: the pairs of faces found are the
+    /// pairs whose triangles share an area (pairs that share only a sliver, where the separating
+    /// axes and the area may disagree by the tolerance, are left out), and the pieces hold no pair.
+    #[test]
+    fn the_overlaps_found_are_the_faces_that_share_an_area() {
+        let mut seed = 17;
+        let mut found = 0;
+        for _ in 0..40 {
+            let n = 14;
+            let offset = DVec2::new(100.0 * uniform(&mut seed), -50.0 * uniform(&mut seed));
+            let p: Vec<DVec2> =
+                (0..2 * n).map(|_| offset + DVec2::new(10.0 * uniform(&mut seed), 4.0 * uniform(&mut seed))).collect();
+            let got = overlapping_faces(&p);
+            for i in 0..n - 1 {
+                for j in i + 1..n - 1 {
+                    let (ti, tj) = (triangles(&p, i), triangles(&p, j));
+                    let area = ti.iter().flat_map(|s| tj.iter().map(move |t| common_area(s, t))).fold(0.0, f64::max);
+                    if area > 1e-6 {
+                        assert!(got.contains(&(i, j)), "faces {i}, {j} share {area}");
+                        found += 1;
+                    } else if area == 0.0 {
+                        assert!(!got.contains(&(i, j)), "faces {i}, {j} share nothing");
+                    }
+                }
+            }
+            assert!(got.windows(2).all(|w| w[0] < w[1]), "ascending, once each");
+            let pieces = pieces(&p, &got);
+            assert_eq!((pieces[0].start, pieces.last().unwrap().end), (0, n - 1));
+            for w in pieces.windows(2) {
+                assert_eq!(w[0].end, w[1].start, "consecutive pieces share a ruling");
+            }
+            for r in &pieces {
+                assert!(got.iter().all(|&(i, j)| !(r.start <= i && j < r.end)), "{r:?} holds an overlap");
+            }
+        }
+        assert!(found > 200, "{found} overlapping pairs: the strips fold");
+    }
+
+    /// Two triangles side by side, moved into each other by less and by more than the tolerance.
+    #[test]
+    fn triangles_overlap_when_they_reach_into_each_other_by_more_than_the_tolerance() {
+        let tol = 1e-6;
+        let s = [DVec2::new(0.0, 0.0), DVec2::new(1.0, 0.0), DVec2::new(0.0, 1.0)];
+        // its mirror image across x + y = 1, shifted along the normal (1, 1)/√2 by d
+        let t = |d: f64| {
+            let shift = DVec2::splat(d / 2f64.sqrt());
+            [DVec2::new(1.0, 0.0) + shift, DVec2::new(1.0, 1.0) + shift, DVec2::new(0.0, 1.0) + shift]
+        };
+        for (d, overlap) in [(0.0, false), (-0.5 * tol, false), (-2.0 * tol, true), (-0.3, true), (0.1, false)] {
+            assert_eq!(triangles_overlap(&s, &t(d), tol), overlap, "moved by {d}");
+            assert_eq!(triangles_overlap(&t(d), &s, tol), overlap, "moved by {d}, the other way round");
+        }
+        // a triangle without area has no interior, even inside another
+        let flat = [DVec2::new(0.1, 0.1), DVec2::new(0.2, 0.2), DVec2::new(0.3, 0.3)];
+        assert!(!triangles_overlap(&s, &flat, tol) && !triangles_overlap(&flat, &s, tol));
+        // one inside the other
+        let small = [DVec2::new(0.1, 0.1), DVec2::new(0.3, 0.1), DVec2::new(0.1, 0.3)];
+        assert!(triangles_overlap(&s, &small, tol) && triangles_overlap(&small, &s, tol));
+        // a thin triangle whose area is below tol² is none
+        let sliver = [DVec2::new(0.1, 0.1), DVec2::new(0.5, 0.1), DVec2::new(0.1, 0.1 + 1e-12)];
+        assert!(!triangles_overlap(&s, &sliver, tol));
+    }
 
     /// A flat annulus strip turning `turns` times about the origin: rulings from radius 1 to 2.
     fn annulus(n: usize, turns: f64) -> Vec<DVec2> {

@@ -145,6 +145,143 @@ pub fn sheet_dxf(sheet: &Sheet) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::developable::outline::Stroke;
+    use crate::developable::sheet::{SheetLabel, SheetPiece};
+
+    /// A sheet of two pieces with numbers that tell every coordinate apart.
+    fn sheet() -> Sheet {
+        let stroke = |a: (f64, f64), b: (f64, f64)| Stroke { a: DVec2::from(a), b: DVec2::from(b), ruling: None };
+        let piece = |k: f64| SheetPiece {
+            rulings: 0..2,
+            outline: vec![],
+            cut: vec![DVec2::new(10.5 + k, 20.25), DVec2::new(60.125 + k, 21.0), DVec2::new(35.0 + k, 70.75)],
+            score: vec![stroke((11.0 + k, 22.0), (33.5 + k, 44.25))],
+            rulings_drawn: vec![stroke((12.0 + k, 23.0), (34.5, 45.25 + k)), stroke((1.0, 2.0), (3.0, 4.0 + k))],
+            rotation: 0.0,
+            shift: DVec2::ZERO,
+        };
+        Sheet {
+            size: DVec2::new(210.5, 297.25),
+            pieces: vec![piece(0.0), piece(100.0)],
+            check_square: DVec2::new(7.5, 180.25),
+            labels: vec![SheetLabel { at: DVec2::new(40.0, 50.5), angle: -0.5, size: 4.25, text: "A\u{7}1".into() }],
+        }
+    }
+
+    /// The file's entities as (type, its group codes and values in order), read as a reader does:
+    /// a code on one line, its value on the next.
+    fn entities(dxf: &str) -> Vec<(String, Vec<(u16, String)>)> {
+        let lines: Vec<&str> = dxf.lines().collect();
+        assert_eq!(lines.len() % 2, 0);
+        let mut out: Vec<(String, Vec<(u16, String)>)> = Vec::new();
+        for pair in lines.chunks(2) {
+            let code: u16 = pair[0].trim().parse().unwrap();
+            if code == 0 {
+                out.push((pair[1].to_string(), vec![]));
+            } else {
+                out.last_mut().unwrap().1.push((code, pair[1].to_string()));
+            }
+        }
+        out
+    }
+
+    /// The number of group `code` in `groups` (the first, or the n-th with `nth`).
+    fn number(groups: &[(u16, String)], code: u16, nth: usize) -> f64 {
+        groups.iter().filter(|(c, _)| *c == code).nth(nth).unwrap().1.parse().unwrap()
+    }
+
+    fn text(groups: &[(u16, String)], code: u16) -> &str {
+        &groups.iter().find(|(c, _)| *c == code).unwrap().1
+    }
+
+    #[test]
+    fn the_file_read_back_gives_the_sheets_geometry() {
+        let sheet = sheet();
+        let all = entities(&sheet_dxf(&sheet));
+        let close = |a: f64, b: f64| assert!((a - b).abs() <= 1e-6, "{a} vs {b}");
+        // the header: R12 and the sheet's extents
+        let header = &all[0].1;
+        assert_eq!(text(header, 2), "HEADER");
+        assert_eq!(text(header, 1), "AC1009");
+        close(number(header, 10, 1), 210.5);
+        close(number(header, 20, 1), 297.25);
+        assert_eq!((number(header, 10, 0), number(header, 20, 0)), (0.0, 0.0));
+        // the layers, with their colours
+        let layers: Vec<(String, f64)> =
+            all.iter().filter(|(t, _)| t == "LAYER").map(|(_, g)| (text(g, 2).to_string(), number(g, 62, 0))).collect();
+        assert_eq!(
+            layers,
+            [("CUT", 1.0), ("SCORE", 5.0), ("RULING", 8.0), ("TEXT", 7.0), ("CHECK", 3.0)]
+                .map(|(n, c)| (n.to_string(), c))
+        );
+        let table = all.iter().find(|(t, g)| t == "TABLE" && text(g, 2) == "LAYER").unwrap();
+        assert_eq!(number(&table.1, 70, 0), 5.0);
+        // polylines: their layer and their vertices, in order, closed
+        let mut polylines: Vec<(String, Vec<DVec2>)> = Vec::new();
+        let mut lines: Vec<(String, DVec2, DVec2)> = Vec::new();
+        for (kind, g) in &all {
+            match kind.as_str() {
+                "POLYLINE" => {
+                    assert_eq!((number(g, 66, 0), number(g, 70, 0)), (1.0, 1.0), "vertices follow; closed");
+                    polylines.push((text(g, 8).to_string(), vec![]));
+                }
+                "VERTEX" => {
+                    let last = polylines.last_mut().unwrap();
+                    assert_eq!(text(g, 8), last.0);
+                    last.1.push(DVec2::new(number(g, 10, 0), number(g, 20, 0)));
+                }
+                "LINE" => lines.push((
+                    text(g, 8).to_string(),
+                    DVec2::new(number(g, 10, 0), number(g, 20, 0)),
+                    DVec2::new(number(g, 11, 0), number(g, 21, 0)),
+                )),
+                _ => {}
+            }
+        }
+        let s = CHECK_SQUARE_MM;
+        let q = sheet.check_square;
+        let square = vec![q, q + DVec2::new(s, 0.0), q + DVec2::new(s, s), q + DVec2::new(0.0, s)];
+        let expected: Vec<(String, Vec<DVec2>)> = sheet
+            .pieces
+            .iter()
+            .map(|p| ("CUT".to_string(), p.cut.clone()))
+            .chain([("CHECK".to_string(), square)])
+            .collect();
+        assert_eq!(polylines.len(), expected.len());
+        for ((layer, got), (want_layer, want)) in polylines.iter().zip(&expected) {
+            assert_eq!(layer, want_layer);
+            assert_eq!(got.len(), want.len());
+            for (a, b) in got.iter().zip(want) {
+                close(a.x, b.x);
+                close(a.y, b.y);
+            }
+        }
+        let expected: Vec<(&str, &Stroke)> = sheet
+            .pieces
+            .iter()
+            .flat_map(|p| p.score.iter().map(|s| ("SCORE", s)).chain(p.rulings_drawn.iter().map(|s| ("RULING", s))))
+            .collect();
+        assert_eq!(lines.len(), expected.len());
+        for ((layer, a, b), (want_layer, s)) in lines.iter().zip(&expected) {
+            assert_eq!(layer, want_layer);
+            for (got, want) in [(a, s.a), (b, s.b)] {
+                close(got.x, want.x);
+                close(got.y, want.y);
+            }
+        }
+        // the text: centred on its point, its height, its angle in degrees, no control characters
+        let label = &all.iter().find(|(t, _)| t == "TEXT").unwrap().1;
+        assert_eq!(text(label, 8), "TEXT");
+        assert_eq!(text(label, 1), "A1");
+        close(number(label, 10, 0), 40.0);
+        close(number(label, 20, 0), 50.5);
+        close(number(label, 11, 0), 40.0);
+        close(number(label, 21, 0), 50.5);
+        close(number(label, 40, 0), 4.25);
+        close(number(label, 50, 0), -0.5f64.to_degrees());
+        assert_eq!((number(label, 72, 0), number(label, 73, 0)), (1.0, 2.0));
+        assert_eq!(all.last().unwrap().0, "EOF");
+    }
 
     #[test]
     fn coordinates_have_six_decimals_and_no_negative_zero() {

@@ -196,5 +196,142 @@ mod tests {
         assert_eq!(fixed(2.0, 0), "2");
         assert_eq!(fixed(-0.000001, 6), "-0.000001");
         assert_eq!(escape("a<b&\"c\">"), "a&lt;b&amp;&quot;c&quot;&gt;");
+        // zero has no sign; what is not finite, or beyond 2⁶³ units, is written as 0
+        assert_eq!(fixed(0.0, 2), "0.00");
+        assert_eq!(fixed(-0.0, 0), "0");
+        assert_eq!(fixed(-3.0, 0), "-3");
+        assert_eq!(fixed(f64::NAN, 3), "0");
+        assert_eq!(fixed(-f64::INFINITY, 3), "0");
+        assert_eq!(fixed(1e300, 1), "0");
+        assert_eq!(fixed(9.1e14, 4), "910000000000000.0000");
+    }
+
+    use crate::developable::outline::Stroke;
+    use crate::developable::sheet::{tile, Paper, SheetLabel, SheetPiece};
+
+    /// A sheet of two pieces larger than A4, with numbers that tell every coordinate apart.
+    fn sheet() -> Sheet {
+        let stroke = |a: (f64, f64), b: (f64, f64), ruling| Stroke { a: DVec2::from(a), b: DVec2::from(b), ruling };
+        let piece = |k: f64| SheetPiece {
+            rulings: 0..2,
+            outline: vec![],
+            cut: vec![DVec2::new(10.5 + k, 20.25), DVec2::new(60.125 + k, 21.0), DVec2::new(35.0 + k, 70.75)],
+            score: vec![stroke((11.0 + k, 22.0), (33.5 + k, 44.25), None)],
+            rulings_drawn: vec![
+                stroke((12.0 + k, 23.0), (34.5, 45.25 + k), Some(7)),
+                stroke((1.0, 2.0), (3.0, 4.0), None),
+            ],
+            rotation: 0.0,
+            shift: DVec2::ZERO,
+        };
+        Sheet {
+            size: DVec2::new(310.5, 397.25),
+            pieces: vec![piece(0.0), piece(100.0)],
+            check_square: DVec2::new(7.5, 180.25),
+            labels: vec![SheetLabel { at: DVec2::new(40.0, 50.5), angle: 0.5, size: 4.25, text: "B<2".into() }],
+        }
+    }
+
+    /// The numbers of attribute `name` of the elements whose tag starts `tag` (with its id's
+    /// prefix, if any), in order.
+    fn attribute(svg: &str, tag: &str, name: &str) -> Vec<f64> {
+        svg.split('<')
+            .filter(|e| e.starts_with(tag))
+            .map(|e| {
+                let from = e.find(&format!(" {name}=\"")).unwrap_or_else(|| panic!("{name} in {e}")) + name.len() + 3;
+                e[from..from + e[from..].find('"').unwrap()].parse().unwrap()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_drawing_read_back_is_the_sheet_with_y_turned_down() {
+        let sheet = sheet();
+        let svg = sheet_svg(&sheet);
+        let h = sheet.size.y;
+        assert!(svg.contains("width=\"310.5mm\" height=\"397.25mm\" viewBox=\"0 0 310.5 397.25\""));
+        // the cut lines: M x y L x y … Z, each point (x, H − y)
+        for (k, piece) in sheet.pieces.iter().enumerate() {
+            let tag = format!("path id=\"cut-{k}\" d=\"");
+            let e = svg.split('<').find(|e| e.starts_with(&tag)).unwrap();
+            let d = &e[tag.len()..e.find(" Z").unwrap_or_else(|| e.find('Z').unwrap())];
+            let numbers: Vec<f64> =
+                d.split([' ', 'M', 'L']).filter(|t| !t.is_empty()).map(|t| t.parse().unwrap()).collect();
+            let expected: Vec<f64> = piece.cut.iter().flat_map(|q| [q.x, h - q.y]).collect();
+            assert_eq!(numbers, expected, "cut-{k}");
+        }
+        // score lines and rulings, in order, the ruling with its index as id
+        let strokes: Vec<&Stroke> = sheet.pieces.iter().flat_map(|p| &p.score).collect();
+        let rulings: Vec<&Stroke> = sheet.pieces.iter().flat_map(|p| &p.rulings_drawn).collect();
+        for (tag, want) in [("line id=\"score-", &strokes), ("line", &rulings)] {
+            let only = |name| -> Vec<f64> {
+                let all = attribute(&svg, tag, name);
+                // "line" alone matches the score lines too: the rulings are the last ones
+                all[all.len() - want.len()..].to_vec()
+            };
+            assert_eq!(only("x1"), want.iter().map(|s| s.a.x).collect::<Vec<_>>());
+            assert_eq!(only("y1"), want.iter().map(|s| h - s.a.y).collect::<Vec<_>>());
+            assert_eq!(only("x2"), want.iter().map(|s| s.b.x).collect::<Vec<_>>());
+            assert_eq!(only("y2"), want.iter().map(|s| h - s.b.y).collect::<Vec<_>>());
+        }
+        assert!(svg.contains("<line id=\"score-1-0\""));
+        assert_eq!(svg.matches("<line id=\"ruling-7\"").count(), 2);
+        // the check square: its lower left corner at (x, H − y), drawn from its upper left one
+        let q = sheet.check_square;
+        assert_eq!(attribute(&svg, "rect id=\"check-square", "x"), [q.x]);
+        assert_eq!(attribute(&svg, "rect id=\"check-square", "y"), [h - q.y - CHECK_SQUARE_MM]);
+        assert_eq!(attribute(&svg, "rect id=\"check-square", "width"), [CHECK_SQUARE_MM]);
+        // the label: at (x, H − y), turned clockwise by the angle in degrees, its text escaped
+        assert_eq!(attribute(&svg, "text", "x"), [40.0]);
+        assert_eq!(attribute(&svg, "text", "y"), [h - 50.5]);
+        assert_eq!(attribute(&svg, "text", "font-size"), [4.25]);
+        let degrees = num(-0.5f64.to_degrees());
+        assert!(svg.contains(&format!("transform=\"rotate({degrees} 40 {})\">B&lt;2</text>", num(h - 50.5))));
+    }
+
+    #[test]
+    fn each_page_shows_its_window_in_the_printable_area_with_the_marks_where_they_are_on_the_sheet() {
+        let sheet = sheet();
+        let tiling = tile(sheet.size, Paper::A4, 10.0, 12.0).unwrap();
+        assert!(tiling.tiles.len() >= 4);
+        let h = sheet.size.y;
+        for (index, t) in tiling.tiles.iter().enumerate() {
+            let page = page_svg(&sheet, &tiling, index);
+            assert!(page.contains("width=\"210mm\" height=\"297mm\" viewBox=\"0 0 210 297\""));
+            assert_eq!(attribute(&page, "rect x", "width"), [tiling.window.x]);
+            assert_eq!(attribute(&page, "rect x", "height"), [tiling.window.y]);
+            assert_eq!(attribute(&page, "rect x", "x"), [10.0]);
+            assert_eq!(attribute(&page, "rect x", "y"), [10.0]);
+            // the window's upper left corner on the sheet, (origin.x, origin.y + window.y), drawn
+            // at (x, H − y), lands on the printable area's upper left corner (margin, margin)
+            let e = page.split("translate(").nth(1).unwrap();
+            let shift: Vec<f64> = e[..e.find(')').unwrap()].split(' ').map(|t| t.parse().unwrap()).collect();
+            let corner = DVec2::new(t.origin.x, h - (t.origin.y + tiling.window.y));
+            assert!(
+                (corner.x + shift[0] - 10.0).abs() < 1e-4 && (corner.y + shift[1] - 10.0).abs() < 1e-4,
+                "{shift:?}"
+            );
+            // every mark: a circle at (x, H − y) and a cross of 10 mm centred on it
+            // (to the 4 decimals written)
+            let near = |got: Vec<f64>, want: Vec<f64>| {
+                assert_eq!(got.len(), want.len());
+                assert!(got.iter().zip(&want).all(|(a, b)| (a - b).abs() <= 5e-5), "{got:?} vs {want:?}");
+            };
+            near(attribute(&page, "circle", "cx"), tiling.marks.iter().map(|m| m.x).collect());
+            near(attribute(&page, "circle", "cy"), tiling.marks.iter().map(|m| h - m.y).collect());
+            for m in &tiling.marks {
+                let (x, y) = (m.x, h - m.y);
+                let cross = format!("d=\"M{} {}h10M{} {}v10\"", num(x - 5.0), num(y), num(x), num(y - 5.0));
+                assert!(page.contains(&cross), "{cross}");
+            }
+            // the page's place, centred in its bottom margin
+            let place = format!("{} / {} · {}, {}</text>", index + 1, tiling.tiles.len(), t.row + 1, t.column + 1);
+            assert!(
+                page.contains(&format!(
+                    "x=\"105\" y=\"292\" font-family=\"sans-serif\" font-size=\"3.5\" text-anchor=\"middle\">{place}"
+                )),
+                "{place}"
+            );
+        }
     }
 }

@@ -238,3 +238,52 @@ fn whatever_the_input_no_nan_and_nothing_outside_the_box() {
         }
     }
 }
+
+#[test]
+fn a_line_meets_the_box_between_its_exits_the_faces_included() {
+    // a box off the origin, of unequal sides
+    let b = Bounds { min: DVec3::new(1.0, 2.0, 3.0), max: DVec3::new(2.0, 4.0, 7.0) };
+    let centre = DVec3::new(1.5, 3.0, 5.0);
+    // along x: half a side each way; a longer or reversed direction scales the parameters
+    assert_eq!(b.span(centre, DVec3::X), Some((-0.5, 0.5)));
+    assert_eq!(b.span(centre, DVec3::new(4.0, 0.0, 0.0)), Some((-0.125, 0.125)));
+    assert_eq!(b.span(centre, DVec3::new(0.0, -2.0, 0.0)), Some((-0.5, 0.5)));
+    // oblique: the nearer exit of each side wins
+    assert_eq!(b.span(centre, DVec3::new(1.0, 1.0, 1.0)), Some((-0.5, 0.5)));
+    assert_eq!(b.span(DVec3::new(1.0, 2.0, 3.0), DVec3::new(0.5, 4.0, 1.0)), Some((0.0, 0.5)));
+    // on a face, along it: inside; just off it: outside
+    assert_eq!(b.span(DVec3::new(1.5, 4.0, 5.0), DVec3::X), Some((-0.5, 0.5)));
+    assert_eq!(b.span(DVec3::new(1.5, 2.0, 5.0), DVec3::Z), Some((-2.0, 2.0)));
+    assert_eq!(b.span(DVec3::new(1.5, 4.0 + 1e-12, 5.0), DVec3::X), None);
+    assert_eq!(b.span(DVec3::new(1.5, 2.0 - 1e-12, 5.0), DVec3::X), None);
+    // a line that passes the box
+    assert_eq!(b.span(DVec3::new(0.0, 0.0, 5.0), DVec3::new(1.0, -1.0, 0.0)), None);
+    // a line dragged out of the box stops at its exit, on the line
+    let line = Constraint::Line { point: centre, direction: DVec3::new(1.0, 0.5, 0.25) };
+    let eye = DVec3::new(1.5, -20.0, 5.0);
+    let out = place(&ray(eye, DVec3::new(40.0, 3.0, 5.0)), centre, &line, &[], &b).point.unwrap();
+    assert_near!(out, DVec3::new(2.0, 3.25, 5.125), EXACT);
+    let back = place(&ray(eye, DVec3::new(-40.0, 3.0, 5.0)), centre, &line, &[], &b).point.unwrap();
+    assert_near!(back, DVec3::new(1.0, 2.75, 4.875), EXACT);
+    // a plane dragged out: from the start's shadow towards the pointer's point, cut at the box
+    let plane = Constraint::Plane { point: centre, normal: DVec3::Z };
+    let above = DVec3::new(1.5, 3.0, 30.0);
+    let cut = place(&ray(above, DVec3::new(5.5, 9.0, 5.0)), centre, &plane, &[], &b).point.unwrap();
+    // (the shadow (1.5, 3, 5), the point (5.5, 9, 5): x leaves first, at an eighth of the way)
+    assert_near!(cut, DVec3::new(2.0, 3.75, 5.0), EXACT);
+}
+
+#[test]
+fn what_counts_as_on_a_line_is_a_share_of_the_boxs_size() {
+    // the box ±10 is 20√3 across: on means within 1e-9 of that, 3.46e-8
+    let vertical = Constraint::Line { point: DVec3::ZERO, direction: DVec3::Z };
+    let eye = DVec3::new(6.0, -5.0, 4.0);
+    let near = Target::Point(DVec3::new(2e-8, 0.0, 1.0));
+    let off = Target::Point(DVec3::new(5e-8, 0.0, 1.0));
+    let p = place(&ray(eye, DVec3::new(0.0, 0.0, 2.0)), DVec3::ZERO, &vertical, &[near, off], &BOX);
+    assert_eq!(p.snaps, [Some(DVec3::new(0.0, 0.0, 1.0)), None]);
+    // in a box a thousand times larger, both are on
+    let large = Bounds { min: DVec3::splat(-1e4), max: DVec3::splat(1e4) };
+    let p = place(&ray(eye, DVec3::new(0.0, 0.0, 2.0)), DVec3::ZERO, &vertical, &[near, off], &large);
+    assert_eq!(p.snaps, [Some(DVec3::new(0.0, 0.0, 1.0)), Some(DVec3::new(0.0, 0.0, 1.0))]);
+}
