@@ -265,8 +265,8 @@ mod tests {
         assert_near!(o.tab_bases[0].1, DVec2::new(-0.45, 2.0), 1e-15);
     }
 
-    /// A fan whose apex is not the origin: the apex once, where the first ruling (of no length)
-    /// and the others meet, and the tab on that ruling dropped.
+    /// A fan whose apex is not the origin: the apex (every end a) once. A first or a last ruling of
+    /// no length: its two ends one point of the outline, and the tab asked for on it dropped.
     #[test]
     fn coinciding_points_anywhere_are_merged_into_one() {
         let apex = DVec2::new(3.0, 2.0);
@@ -280,10 +280,42 @@ mod tests {
         assert_eq!(o.points.len(), 5, "{:?}", o.points);
         assert_eq!(o.points.iter().filter(|p| **p == apex).count(), 1);
         // a strip whose first ruling has no length: its two ends are one point of the outline
-        let mut squares = squares();
+        let mut squares: Vec<DVec2> = squares().iter().map(|p| *p + DVec2::new(5.0, 7.0)).collect();
         squares[1] = squares[0];
         let o = outline(&squares, 0, 3, &[Side::First], 0.2, 1e-9);
         assert_eq!(o.points.len(), 7, "{:?}", o.points);
         assert!(o.tab_bases.is_empty(), "no tab on a ruling of no length");
+        // the last ruling of no length (the merge along the outline, not round its end)
+        let mut squares: Vec<DVec2> = self::squares().iter().map(|p| *p + DVec2::new(5.0, 7.0)).collect();
+        squares[7] = squares[6];
+        let o = outline(&squares, 0, 3, &[Side::Last], 0.2, 1e-9);
+        assert_eq!(o.points.len(), 7, "{:?}", o.points);
+        assert!(o.tab_bases.is_empty(), "no tab on a ruling of no length");
+        // a piece shrunk to a point is that point
+        let point = [apex; 4];
+        assert_eq!(outline(&point, 0, 1, &[Side::First, Side::Last], 0.2, 1e-9).points, [apex]);
+    }
+
+    /// A tab on a slanted ruling stands square to it, outside: for a counter-clockwise outline to
+    /// the right of the ruling's direction, for a clockwise one (turned afterwards) to its left.
+    #[test]
+    fn a_tab_on_a_slanted_ruling_stands_square_to_it_outside() {
+        // a parallelogram: rulings from (i, 0) to (i + 3, 4), of length 5
+        let strip: Vec<DVec2> =
+            (0..2).flat_map(|i| [DVec2::new(i as f64, 0.0), DVec2::new(i as f64 + 3.0, 4.0)]).collect();
+        let o = outline(&strip, 0, 1, &[Side::Last], 0.5, 1e-9);
+        // the last ruling (1, 0) → (4, 4), its unit direction (0.6, 0.8), outward (0.8, −0.6)
+        let (d, out) = (DVec2::new(0.6, 0.8), DVec2::new(0.8, -0.6));
+        let (p, q) = (DVec2::new(1.0, 0.0), DVec2::new(4.0, 4.0));
+        assert_near!(o.points[2], p + 0.5 * d + 0.5 * out, 1e-15);
+        assert_near!(o.points[3], q - 0.5 * d + 0.5 * out, 1e-15);
+        // mirrored, the outline is built clockwise: the tab still outside, the outline turned
+        let mirrored: Vec<DVec2> = strip.iter().map(|p| DVec2::new(-p.x, p.y)).collect();
+        let o = outline(&mirrored, 0, 1, &[Side::Last], 0.5, 1e-9);
+        let flip = |v: DVec2| DVec2::new(-v.x, v.y);
+        assert!(signed_area(&o.points) > 0.0);
+        for corner in [flip(p + 0.5 * d + 0.5 * out), flip(q - 0.5 * d + 0.5 * out)] {
+            assert!(o.points.iter().any(|x| (*x - corner).length() < 1e-15), "{corner:?} in {:?}", o.points);
+        }
     }
 }

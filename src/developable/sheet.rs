@@ -15,7 +15,8 @@
 //! is creased, as is each tab's base; the other rulings inside a piece are drawn thin, as a guide to
 //! bending. The strip is glued where the pattern was split: a tab on the last ruling of a piece, its
 //! letter on the tab and on the first ruling of the next piece; and, where the strip closes (its
-//! last ruling is its first), a tab on the very last ruling with the first.
+//! last ruling is its first), a tab on the very last ruling with the first. A ruling of no length
+//! (where two pieces only touch) has neither tab nor letter: there is nothing to glue.
 //!
 //! **Pages.** A sheet larger than the paper is printed in tiles: each page's printable area (the
 //! paper less a margin on each side) shows a window of the sheet; neighbouring windows overlap by a
@@ -221,9 +222,10 @@ impl Sheet {
             for (base, middle) in &outline.tab_bases {
                 own.push((*middle, (base.b - base.a).to_angle(), 4.0, letter(k)));
             }
-            if k > 0 || closed {
+            let (a, b) = (scaled[2 * r.start], scaled[2 * r.start + 1]);
+            // (a join on a ruling of no length has no tab to glue, nor a letter)
+            if (k > 0 || closed) && (b - a).length() > merge {
                 let join = if k > 0 { k - 1 } else { joins - 1 };
-                let (a, b) = (scaled[2 * r.start], scaled[2 * r.start + 1]);
                 let inward = (scaled[2 * r.start + 2] + scaled[2 * r.start + 3]) / 2.0 - (a + b) / 2.0;
                 let at = (a + b) / 2.0 + inward.normalize_or_zero() * inward.length().min(4.0);
                 own.push((at, (b - a).to_angle(), 4.0, letter(join)));
@@ -513,6 +515,28 @@ mod tests {
         assert!(tile(DVec2::new(100.0, 100.0), Paper { width: 20.0, height: 20.0 }, 10.0, 10.0).is_err());
         let huge = tile(DVec2::new(20000.0, 20000.0), Paper::A4, 10.0, 10.0).unwrap_err();
         assert_eq!(huge.code(), "too-large");
+    }
+
+    /// Two pieces joined at a ruling: a tab and the letter "A" twice; where the flat points give
+    /// that ruling no length (the pieces only touch), neither.
+    #[test]
+    fn a_join_on_a_ruling_of_no_length_has_no_tab_and_no_letter() {
+        let s = RuledSurface::from_points(
+            (0..5).flat_map(|i| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(i as f64, 1.0, 0.0)]).collect(),
+        )
+        .unwrap();
+        let flat: Vec<DVec2> = s.points().iter().map(|p| p.truncate()).collect();
+        let parts = [0..2, 2..4];
+        let o = SheetOptions { scale: 30.0, ..SheetOptions::default() };
+        let glued = Sheet::lay_out(&s, &flat, &parts, &o).unwrap();
+        assert_eq!(glued.labels.iter().filter(|l| l.text == "A").count(), 2);
+        assert_eq!(glued.pieces[0].score.iter().filter(|s| s.ruling == Some(2)).count(), 1, "the tab's base");
+        let mut touching = flat.clone();
+        touching[5] = touching[4];
+        let touching = Sheet::lay_out(&s, &touching, &parts, &o).unwrap();
+        assert_eq!(touching.labels.iter().filter(|l| l.text == "A").count(), 0);
+        assert!(touching.pieces[0].score.iter().all(|s| s.ruling != Some(2)));
+        assert_eq!(touching.pieces[0].cut.len(), glued.pieces[0].cut.len() - 3, "no tab, the ruling a point");
     }
 
     #[test]

@@ -415,7 +415,8 @@ const notebookOf = (cells) =>
   });
 
 test('a million rulings from NumPy go through the kernel into the view, which draws them and computes their invariants in its worker', {
-  timeout: 600000,
+  // (the retry after a reload may take 10 minutes on its own before it says what the page showed)
+  timeout: 900000,
 }, async () => {
   if (!browser) throw new Error('no browser');
   writeFileSync(
