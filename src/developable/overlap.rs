@@ -157,7 +157,10 @@ mod tests {
             let got = overlapping_faces(&p);
             for i in 0..n - 1 {
                 for j in i + 1..n - 1 {
-                    let (ti, tj) = (triangles(&p, i), triangles(&p, j));
+                    // the faces' triangles as the module defines them: A_i B_i B_{i+1}, A_i B_{i+1} A_{i+1}
+                    let face =
+                        |i: usize| [[p[2 * i], p[2 * i + 1], p[2 * i + 3]], [p[2 * i], p[2 * i + 3], p[2 * i + 2]]];
+                    let (ti, tj) = (face(i), face(j));
                     let area = ti.iter().flat_map(|s| tj.iter().map(move |t| common_area(s, t))).fold(0.0, f64::max);
                     // (a convex common part of area 1e-5 in a strip about 11 across is at least
                     // 1e-6 thick, well beyond the tolerance of 1e-9 of the size)
@@ -205,6 +208,32 @@ mod tests {
         // a thin triangle whose area is below tol² is none
         let sliver = [DVec2::new(0.1, 0.1), DVec2::new(0.5, 0.1), DVec2::new(0.1, 0.1 + 1e-12)];
         assert!(!triangles_overlap(&s, &sliver, tol));
+        // a small one inside: it has an interior while its legs' product (twice its area) is above
+        // tol², none at tol² (numbers exact in binary)
+        let tol = 2f64.powi(-20);
+        let small = |leg: f64| [DVec2::new(0.25, 0.25), DVec2::new(0.25 + leg, 0.25), DVec2::new(0.25, 0.25 + leg)];
+        assert!(triangles_overlap(&s, &small(2.0 * tol), tol) && triangles_overlap(&small(2.0 * tol), &s, tol));
+        assert!(!triangles_overlap(&s, &small(tol), tol) && !triangles_overlap(&small(tol), &s, tol));
+    }
+
+    /// The tolerance is a share of the pattern's size: a face folded back onto its neighbour by
+    /// less than it does not overlap, by more it does, whatever the size.
+    #[test]
+    fn what_counts_as_overlapping_grows_with_the_pattern() {
+        for size in [1.0, 10.0, 1000.0] {
+            // rulings at x = 0 and 1, then back at 1 − δ: the last face folded onto the first by δ
+            let folded = |delta: f64| {
+                [0.0, 1.0, 1.0 - delta]
+                    .into_iter()
+                    .flat_map(|x| [DVec2::new(x, 0.0), DVec2::new(x, 1.0)])
+                    .map(|p| size * p)
+                    .collect::<Vec<_>>()
+            };
+            // the tolerance: 1e-9 of the largest |p|, √2 · size
+            let tol = OVERLAP_REL * 2f64.sqrt() * size;
+            assert!(overlapping_faces(&folded(0.5 * tol / size)).is_empty(), "size {size}");
+            assert_eq!(overlapping_faces(&folded(2.0 * tol / size)), [(0, 1)], "size {size}");
+        }
     }
 
     /// A flat annulus strip turning `turns` times about the origin: rulings from radius 1 to 2.

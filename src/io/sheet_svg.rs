@@ -204,6 +204,7 @@ mod tests {
         assert_eq!(fixed(-f64::INFINITY, 3), "0");
         assert_eq!(fixed(1e300, 1), "0");
         assert_eq!(fixed(9.1e14, 4), "910000000000000.0000");
+        assert_eq!((num(f64::NAN), num(1e300), num(0.0)), ("0".into(), "0".into(), "0".into()));
     }
 
     use crate::developable::outline::Stroke;

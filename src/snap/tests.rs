@@ -287,3 +287,17 @@ fn what_counts_as_on_a_line_is_a_share_of_the_boxs_size() {
     let p = place(&ray(eye, DVec3::new(0.0, 0.0, 2.0)), DVec3::ZERO, &vertical, &[near, off], &large);
     assert_eq!(p.snaps, [Some(DVec3::new(0.0, 0.0, 1.0)), Some(DVec3::new(0.0, 0.0, 1.0))]);
 }
+
+#[test]
+fn a_line_along_a_plane_snaps_onto_it_only_when_it_lies_in_it() {
+    let line = Constraint::Line { point: DVec3::new(0.0, 1.0, 1.0), direction: DVec3::X };
+    let targets = [
+        Target::Plane { point: DVec3::new(5.0, -3.0, 1.0), normal: DVec3::Z },
+        Target::Plane { point: DVec3::new(5.0, -3.0, 1.5), normal: DVec3::Z },
+    ];
+    let eye = DVec3::new(2.0, -6.0, 4.0);
+    let p = place(&ray(eye, DVec3::new(2.0, 1.0, 1.0)), DVec3::new(0.0, 1.0, 1.0), &line, &targets, &BOX);
+    let free = p.point.unwrap();
+    assert_near!(free, DVec3::new(2.0, 1.0, 1.0), EXACT);
+    assert_eq!(p.snaps, [Some(free), None], "in the plane: where the pointer has it; beside it: none");
+}
