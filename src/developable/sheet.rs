@@ -407,6 +407,28 @@ pub fn tile(sheet: DVec2, paper: Paper, margin: f64, overlap: f64) -> Result<Til
     Ok(Tiling { paper, margin, overlap, window, columns, rows, tiles, marks })
 }
 
+/// A sheet of two pieces, larger than A4, with numbers that tell its coordinates apart and carry
+/// few decimals (exact in binary): what the writers' tests read back. One label, `label`.
+#[cfg(test)]
+pub(crate) fn two_pieces(label: SheetLabel) -> Sheet {
+    let stroke = |a: (f64, f64), b: (f64, f64), ruling| Stroke { a: DVec2::from(a), b: DVec2::from(b), ruling };
+    let piece = |k: f64| SheetPiece {
+        rulings: 0..2,
+        outline: vec![],
+        cut: vec![DVec2::new(10.5 + k, 20.25), DVec2::new(60.125 + k, 21.0), DVec2::new(35.0 + k, 70.75)],
+        score: vec![stroke((11.0 + k, 22.0), (33.5 + k, 44.25), None)],
+        rulings_drawn: vec![stroke((12.0 + k, 23.0), (34.5, 45.25 + k), Some(7)), stroke((1.0, 2.0), (3.0, 4.0), None)],
+        rotation: 0.0,
+        shift: DVec2::ZERO,
+    };
+    Sheet {
+        size: DVec2::new(310.5, 397.25),
+        pieces: vec![piece(0.0), piece(100.0)],
+        check_square: DVec2::new(7.5, 180.25),
+        labels: vec![label],
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

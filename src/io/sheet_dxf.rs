@@ -146,26 +146,11 @@ pub fn sheet_dxf(sheet: &Sheet) -> String {
 mod tests {
     use super::*;
     use crate::developable::outline::Stroke;
-    use crate::developable::sheet::{SheetLabel, SheetPiece};
+    use crate::developable::sheet::{two_pieces, SheetLabel};
 
-    /// A sheet of two pieces with numbers that tell every coordinate apart.
+    /// The writers' sheet of two pieces, its label with a control character (not written).
     fn sheet() -> Sheet {
-        let stroke = |a: (f64, f64), b: (f64, f64)| Stroke { a: DVec2::from(a), b: DVec2::from(b), ruling: None };
-        let piece = |k: f64| SheetPiece {
-            rulings: 0..2,
-            outline: vec![],
-            cut: vec![DVec2::new(10.5 + k, 20.25), DVec2::new(60.125 + k, 21.0), DVec2::new(35.0 + k, 70.75)],
-            score: vec![stroke((11.0 + k, 22.0), (33.5 + k, 44.25))],
-            rulings_drawn: vec![stroke((12.0 + k, 23.0), (34.5, 45.25 + k)), stroke((1.0, 2.0), (3.0, 4.0 + k))],
-            rotation: 0.0,
-            shift: DVec2::ZERO,
-        };
-        Sheet {
-            size: DVec2::new(210.5, 297.25),
-            pieces: vec![piece(0.0), piece(100.0)],
-            check_square: DVec2::new(7.5, 180.25),
-            labels: vec![SheetLabel { at: DVec2::new(40.0, 50.5), angle: -0.5, size: 4.25, text: "A\u{7}1".into() }],
-        }
+        two_pieces(SheetLabel { at: DVec2::new(40.0, 50.5), angle: -0.5, size: 4.25, text: "A\u{7}1".into() })
     }
 
     /// The file's entities as (type, its group codes and values in order), read as a reader does:
@@ -203,8 +188,8 @@ mod tests {
         let header = &all[0].1;
         assert_eq!(text(header, 2), "HEADER");
         assert_eq!(text(header, 1), "AC1009");
-        close(number(header, 10, 1), 210.5);
-        close(number(header, 20, 1), 297.25);
+        close(number(header, 10, 1), 310.5);
+        close(number(header, 20, 1), 397.25);
         assert_eq!((number(header, 10, 0), number(header, 20, 0)), (0.0, 0.0));
         // the layers, with their colours
         let layers: Vec<(String, f64)> =

@@ -208,29 +208,11 @@ mod tests {
     }
 
     use crate::developable::outline::Stroke;
-    use crate::developable::sheet::{tile, Paper, SheetLabel, SheetPiece};
+    use crate::developable::sheet::{tile, two_pieces, Paper, SheetLabel};
 
-    /// A sheet of two pieces larger than A4, with numbers that tell every coordinate apart.
+    /// The writers' sheet of two pieces, its label with a character XML escapes.
     fn sheet() -> Sheet {
-        let stroke = |a: (f64, f64), b: (f64, f64), ruling| Stroke { a: DVec2::from(a), b: DVec2::from(b), ruling };
-        let piece = |k: f64| SheetPiece {
-            rulings: 0..2,
-            outline: vec![],
-            cut: vec![DVec2::new(10.5 + k, 20.25), DVec2::new(60.125 + k, 21.0), DVec2::new(35.0 + k, 70.75)],
-            score: vec![stroke((11.0 + k, 22.0), (33.5 + k, 44.25), None)],
-            rulings_drawn: vec![
-                stroke((12.0 + k, 23.0), (34.5, 45.25 + k), Some(7)),
-                stroke((1.0, 2.0), (3.0, 4.0), None),
-            ],
-            rotation: 0.0,
-            shift: DVec2::ZERO,
-        };
-        Sheet {
-            size: DVec2::new(310.5, 397.25),
-            pieces: vec![piece(0.0), piece(100.0)],
-            check_square: DVec2::new(7.5, 180.25),
-            labels: vec![SheetLabel { at: DVec2::new(40.0, 50.5), angle: 0.5, size: 4.25, text: "B<2".into() }],
-        }
+        two_pieces(SheetLabel { at: DVec2::new(40.0, 50.5), angle: 0.5, size: 4.25, text: "B<2".into() })
     }
 
     /// The numbers of attribute `name` of the elements whose tag starts `tag` (with its id's
