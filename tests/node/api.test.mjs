@@ -5,7 +5,7 @@ import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import ruledlab from './load.mjs';
 
-const { RuledSurface, AnalyticSurface } = ruledlab;
+const { RuledSurface, AnalyticSurface, AnalyticCongruence } = ruledlab;
 const GOOD = new Float64Array([0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 1, 0, 0, 2, 1, 1, 2]);
 const near = (a, b, tol = 1e-12) => Math.abs(a - b) <= tol * Math.max(1, Math.abs(a), Math.abs(b));
 
@@ -116,6 +116,24 @@ test('analytic surfaces: list, exact values, sampling and the convergence study'
       'helix-tangent',
     ],
   );
+  // each entry is one plain object with exactly the fields of AnalyticSurfaceInfo (a
+  // CatalogueEntry and `closed`), in the order the declaration gives them
+  for (const entry of list) {
+    assert.deepEqual(Object.keys(entry), ['name', 'title', 'uMin', 'uMax', 'vMin', 'vMax', 'closed']);
+    assert.equal(Object.getPrototypeOf(entry), Object.prototype);
+    assert.equal(typeof entry.closed, 'boolean');
+    assert.ok(entry.uMin < entry.uMax && entry.vMin < entry.vMax, entry.name);
+  }
+  assert.deepEqual(
+    list.filter((s) => s.closed).map((s) => s.name),
+    ['hyperboloid', 'pluecker-conoid', 'cone', 'cylinder'],
+  );
+  const congruences = AnalyticCongruence.list();
+  for (const entry of congruences) {
+    const keys = ['name', 'title', 'uMin', 'uMax', 'vMin', 'vMax', 'rows', 'cols'];
+    assert.deepEqual(Object.keys(entry), keys);
+    assert.ok(Number.isInteger(entry.rows) && Number.isInteger(entry.cols), entry.name);
+  }
   const helicoid = AnalyticSurface.byName('helicoid');
   assert.equal(helicoid.name, 'helicoid');
   const s = helicoid.sample(20, { uMin: 0, uMax: 2 });

@@ -91,6 +91,11 @@ test('focal sheets and torsal strokes are ready buffers', () => {
       assert.ok(sheet.positions instanceof Float32Array && sheet.positions.length === 3 * 81);
       assert.ok(sheet.indices instanceof Uint32Array && sheet.indices.length > 0 && sheet.indices.length % 3 === 0);
       assert.equal(sheet.normals.length, sheet.positions.length);
+      // one plain object with exactly FocalSheetFigure's fields: MeshBuffers' and its own
+      assert.deepEqual(Object.keys(sheet), ['positions', 'indices', 'normals', 'min', 'max']);
+      assert.ok(sheet.min instanceof Float64Array && sheet.min.length === 3);
+      assert.ok(sheet.max instanceof Float64Array && sheet.max.length === 3);
+      for (let k = 0; k < 3; k++) assert.ok(sheet.min[k] <= sheet.max[k]);
       const strokes = g.torsalStrokesF32();
       assert.ok(strokes instanceof Float32Array && strokes.length > 0 && strokes.length % 6 === 0);
       assert.throws(

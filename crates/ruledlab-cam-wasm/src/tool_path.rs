@@ -5,10 +5,12 @@
 use super::gcode_options::{preset, read_post_options};
 use ruledlab::Error;
 use ruledlab_js::args::{self, fail, fail_option, finite_option, integer, numbers, to_js};
-use ruledlab_js::buffers::{self, mesh_buffers, points_f64};
+use ruledlab_js::buffers::{self, mesh_buffers, points_f64, Lines};
+use ruledlab_js::line_buffers;
 use ruledlab_js::live::Live;
 use ruledlab_js::subdivide_options::{read, Space};
 use ruledlab_js::timing::Measure;
+use std::borrow::Cow;
 
 use glam::DVec3;
 use js_sys::{Float32Array, Float64Array, Uint8Array};
@@ -517,25 +519,7 @@ impl ToolPath {
         )
     }
 
-    // --- buffers for WebGL
-    // (the same signatures in every class of lines, as wasm-bindgen binds methods class by class;
-    // one body for them all: ruledlab_js::buffers)
-
-    /// Axis segments tip → tip + L·axis (6 numbers per pose) as 32-bit floats for WebGL.
-    #[wasm_bindgen(js_name = segmentsF32)]
-    pub fn segments_f32(&self) -> Float32Array {
-        buffers::f32s(self.axis_coords())
-    }
-
-    /// The axes (tip → tip + L·axis) of the poses whose index is not a multiple of `stride`
-    /// (after k steps, 2^k: the inserted poses), as f32 segments.
-    #[wasm_bindgen(js_name = insertedF32)]
-    pub fn inserted_f32(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
-    ) -> Result<Float32Array, JsValue> {
-        buffers::inserted_f32("ToolPath", &stride, |stride| Ok(self.core().axis_surface()?.inserted(stride)))
-    }
+    // --- buffers for WebGL (and `segmentsF32()`, `insertedF32(stride)`: `line_buffers!` below)
 
     /// The axes (tip → tip + L·axis) of every `every`-th pose and the last, as f32 segments: a
     /// level of detail of a path too long to draw whole.
@@ -697,5 +681,17 @@ impl ToolPath {
         const F: &str = "ToolPath.machine";
         let name = name.as_string().ok_or_else(|| fail(F, "name must be a string: a preset's name"))?;
         to_js(F, &preset(F, &name)?)
+    }
+}
+
+line_buffers!(ToolPath);
+
+impl Lines for ToolPath {
+    const CLASS: &'static str = "ToolPath";
+    fn coordinates(&self) -> Cow<'_, [f64]> {
+        Cow::Owned(self.axis_coords())
+    }
+    fn inserted(&self, stride: usize) -> ruledlab::Result<Vec<Segment>> {
+        Ok(self.core().axis_surface()?.inserted(stride))
     }
 }

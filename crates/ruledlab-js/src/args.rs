@@ -259,6 +259,19 @@ pub fn to_js<T: Serialize>(func: &str, value: &T) -> Result<JsValue, JsValue> {
     value.serialize(&serde_wasm_bindgen::Serializer::new()).map_err(|e| fail(func, e.to_string()))
 }
 
+/// `base` written by [`to_js`], with `more` fields set on it: a result that shares `base`'s
+/// type with others and adds its own fields. Its TypeScript type is a struct that flattens
+/// `base` (`#[serde(flatten)]`, for tsify alone): serde's flatten itself would write a `Map`,
+/// or, with maps written as objects, bring about 1 KiB gzipped of map serializer into a module.
+pub fn to_js_with<T: Serialize>(func: &str, base: &T, more: &[(&str, JsValue)]) -> Result<JsValue, JsValue> {
+    let object = to_js(func, base)?;
+    for (key, value) in more {
+        // a plain object serde has just made: no setter, not frozen, so setting cannot fail
+        Reflect::set(&object, &JsValue::from_str(key), value).ok();
+    }
+    Ok(object)
+}
+
 /// The field names of a `#[derive(Deserialize)]` struct, as serde passes them to
 /// `deserialize_struct` (renames applied): the keys an options object may have.
 pub fn fields<T: DeserializeOwned>() -> &'static [&'static str] {

@@ -2,12 +2,13 @@
 //! form (Section 5, Examples 4 and 5), and those typed as formulas; listed, sampled as grids,
 //! compared with refined grids, and their exact focal geometry.
 
+use super::catalogue_entry::CatalogueEntry;
 use super::focal::focal_js;
 use super::formula::{congruence_presets, congruence_spec};
 use super::line_congruence::LineCongruence;
 use ruledlab::tolerance::{MAX_REACH, MAX_RULINGS};
 use ruledlab::SmoothCongruence;
-use ruledlab_js::args::{self, fail, to_js};
+use ruledlab_js::args::{self, fail, to_js, to_js_with};
 use ruledlab_js::live::Live;
 use ruledlab_js::timing::Measure;
 use serde::Serialize;
@@ -16,17 +17,15 @@ use wasm_bindgen::prelude::*;
 
 /// One congruence as listed by `AnalyticCongruence.list()`: its domain and the grid size of
 /// the paper's figure.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-// the fields of AnalyticSurfaceInfo's name and domain again: serde's flatten would give JavaScript a Map
+#[derive(Tsify)]
+#[allow(dead_code)] // the type is for TypeScript: `list` sets `rows` and `cols` on the entry
 struct AnalyticCongruenceInfo {
-    name: &'static str,
-    title: &'static str,
-    u_min: f64,
-    u_max: f64,
-    v_min: f64,
-    v_max: f64,
+    /// Name, title and domain.
+    #[serde(flatten)]
+    entry: CatalogueEntry,
+    /// The rows of the paper's grid.
     rows: usize,
+    /// Its columns.
     cols: usize,
 }
 
@@ -65,14 +64,15 @@ impl AnalyticCongruence {
     /// Every congruence: name, title, domain and the grid size of the paper's figure.
     #[wasm_bindgen(unchecked_return_type = "AnalyticCongruenceInfo[]")]
     pub fn list() -> Result<JsValue, JsValue> {
-        let list: Vec<AnalyticCongruenceInfo> = ruledlab::AnalyticCongruence::ALL
+        let list: js_sys::Array = ruledlab::AnalyticCongruence::ALL
             .iter()
             .map(|c| {
                 let ((u_min, u_max), (v_min, v_max), rows, cols) = c.domain();
-                AnalyticCongruenceInfo { name: c.name(), title: c.title(), u_min, u_max, v_min, v_max, rows, cols }
+                let entry = CatalogueEntry { name: c.name(), title: c.title(), u_min, u_max, v_min, v_max };
+                to_js_with("AnalyticCongruence.list", &entry, &[("rows", rows.into()), ("cols", cols.into())])
             })
-            .collect();
-        to_js("AnalyticCongruence.list", &list)
+            .collect::<Result<_, _>>()?;
+        Ok(list.into())
     }
 
     /// The congruence named `name` ("sphere", "hyperbolic-paraboloid", "example5").

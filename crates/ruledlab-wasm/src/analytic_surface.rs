@@ -2,15 +2,18 @@
 //! and those typed as formulas; listed, sampled and evaluated exactly, with the measured
 //! convergence and sampling orders of their discrete invariants (Section 2).
 
+use super::catalogue_entry::CatalogueEntry;
 use super::formula::{surface_presets, surface_spec};
 use super::ruled_surface::RuledSurface;
 use js_sys::Float64Array;
 use ruledlab::tolerance::{MAX_SAMPLES, MAX_STRIDE, MAX_STUDY_LEVELS};
 use ruledlab::SmoothRuled;
-use ruledlab_js::args::{self, fail, finite_option, integer, integer_option, interval, numbers, options, to_js};
+use ruledlab_js::args::{
+    self, fail, finite_option, integer, integer_option, interval, numbers, options, to_js, to_js_with,
+};
 use ruledlab_js::live::Live;
 use ruledlab_js::timing::Measure;
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
@@ -28,16 +31,13 @@ struct SampleOptions {
 
 /// One analytic surface as listed by `AnalyticSurface.list()`: its name, title and default
 /// ranges.
-#[derive(Serialize, Tsify)]
-#[serde(rename_all = "camelCase")]
-// the fields of AnalyticCongruenceInfo's name and domain again: serde's flatten would give JavaScript a Map
+#[derive(Tsify)]
+#[allow(dead_code)] // the type is for TypeScript: `list` sets `closed` on the entry
 struct AnalyticSurfaceInfo {
-    name: &'static str,
-    title: &'static str,
-    u_min: f64,
-    u_max: f64,
-    v_min: f64,
-    v_max: f64,
+    /// Name, title and default ranges.
+    #[serde(flatten)]
+    entry: CatalogueEntry,
+    /// The surface closes (R_{N−1} followed by R_0).
     closed: bool,
 }
 
@@ -117,22 +117,22 @@ impl AnalyticSurface {
     /// Every analytic surface: name, title and default ranges.
     #[wasm_bindgen(unchecked_return_type = "AnalyticSurfaceInfo[]")]
     pub fn list() -> Result<JsValue, JsValue> {
-        let list: Vec<AnalyticSurfaceInfo> = ruledlab::AnalyticSurface::ALL
+        let list: js_sys::Array = ruledlab::AnalyticSurface::ALL
             .iter()
             .map(|s| {
                 let r = s.ranges();
-                AnalyticSurfaceInfo {
+                let entry = CatalogueEntry {
                     name: s.name(),
                     title: s.title(),
                     u_min: r.u.0,
                     u_max: r.u.1,
                     v_min: r.v.0,
                     v_max: r.v.1,
-                    closed: r.closed,
-                }
+                };
+                to_js_with("AnalyticSurface.list", &entry, &[("closed", r.closed.into())])
             })
-            .collect();
-        to_js("AnalyticSurface.list", &list)
+            .collect::<Result<_, _>>()?;
+        Ok(list.into())
     }
 
     /// The surface named `name` (see `list()`); throws for an unknown name.

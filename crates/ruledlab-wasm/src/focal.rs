@@ -4,11 +4,11 @@
 //! `CongruenceFocal`. No JS class.
 
 use glam::DVec3;
-use js_sys::{Float32Array, Float64Array, Uint32Array, Uint8Array};
+use js_sys::{Float32Array, Float64Array, Uint8Array};
 use ruledlab::tolerance::MAX_STROKE_SCALE;
 use ruledlab::Focal;
-use ruledlab_js::args::{self, fail, to_js};
-use ruledlab_js::buffers::{points_f32, segments_f32};
+use ruledlab_js::args::{self, fail, to_js, to_js_with};
+use ruledlab_js::buffers::{points_f32, segments_f32, MeshBuffers};
 use serde::Serialize;
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
@@ -70,24 +70,19 @@ pub(super) fn focal_js(func: &str, rows: usize, cols: usize, all: &[Focal]) -> R
 
 /// A focal sheet for WebGL (positions, triangle indices, smooth vertex normals) with the box of
 /// its drawn vertices.
-#[derive(Serialize, Tsify)]
-// MeshBuffers' fields again (ruledlab_js::buffers), not flattened: serde's flatten would give JavaScript a Map
+#[derive(Tsify)]
+#[allow(dead_code)] // the type is for TypeScript: `sheet_figure` sets the fields on the mesh's buffers
 struct FocalSheetFigure {
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    #[tsify(type = "Float32Array")]
-    positions: Float32Array,
-    #[serde(with = "serde_wasm_bindgen::preserve")]
-    #[tsify(type = "Uint32Array")]
-    indices: Uint32Array,
-    #[serde(with = "serde_wasm_bindgen::preserve")]
+    /// Positions and triangle indices.
+    #[serde(flatten)]
+    mesh: MeshBuffers,
+    /// A unit normal per vertex, 3 floats each.
     #[tsify(type = "Float32Array")]
     normals: Float32Array,
     /// The least x, y, z of the drawn vertices (NaN when nothing is drawn).
-    #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float64Array")]
     min: Float64Array,
     /// The greatest x, y, z of the drawn vertices (NaN when nothing is drawn).
-    #[serde(with = "serde_wasm_bindgen::preserve")]
     #[tsify(type = "Float64Array")]
     max: Float64Array,
 }
@@ -106,16 +101,12 @@ pub(super) fn sheet_figure(
     let (min, max) =
         used.fold((DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)), |(a, b), p| (a.min(p), b.max(p)));
     let finite = |v: DVec3| if v.is_finite() { v } else { DVec3::NAN };
-    to_js(
-        func,
-        &FocalSheetFigure {
-            positions: points_f32(&mesh.positions),
-            indices: Uint32Array::from(&mesh.indices[..]),
-            normals: points_f32(&normals),
-            min: Float64Array::from(&finite(min).to_array()[..]),
-            max: Float64Array::from(&finite(max).to_array()[..]),
-        },
-    )
+    let more = [
+        ("normals", points_f32(&normals).into()),
+        ("min", Float64Array::from(&finite(min).to_array()[..]).into()),
+        ("max", Float64Array::from(&finite(max).to_array()[..]).into()),
+    ];
+    to_js_with(func, &MeshBuffers::of(&mesh), &more)
 }
 
 /// Torsal strokes of `grid` from its focal geometry `all`, `scale` (default 0.35) of a grid step.

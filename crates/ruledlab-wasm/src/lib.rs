@@ -33,6 +33,7 @@ mod polygon;
 mod snap;
 
 // what they share
+mod catalogue_entry;
 mod export;
 mod focal;
 mod formula;

@@ -13,11 +13,13 @@ use ruledlab::tolerance::{MAX_CONGRUENCE_STEPS, MAX_PARTS, MAX_RULINGS, MAX_STRI
 use ruledlab::CongruenceScheme;
 use ruledlab::Segment;
 use ruledlab_js::args::{self, fail, finite_option, integer, integer_option, numbers, only_for};
-use ruledlab_js::buffers::{self, points_f32};
+use ruledlab_js::buffers::{self, points_f32, Lines};
+use ruledlab_js::line_buffers;
 use ruledlab_js::live::Live;
 use ruledlab_js::subdivide_options::SubdivisionSpace;
 use ruledlab_js::timing::Measure;
 use serde::Deserialize;
+use std::borrow::Cow;
 use tsify_next::Tsify;
 use wasm_bindgen::prelude::*;
 
@@ -282,25 +284,7 @@ impl LineCongruence {
         CongruenceFocal::new(c.clone(), ruledlab::focal_grid(c.rows(), c.cols(), &c.p(), &c.q()))
     }
 
-    // --- buffers for WebGL
-    // (the same signatures in every class of lines, as wasm-bindgen binds methods class by class;
-    // one body for them all: ruledlab_js::buffers)
-
-    /// The lines as 32-bit floats for a WebGL buffer.
-    #[wasm_bindgen(js_name = segmentsF32)]
-    pub fn segments_f32(&self) -> Float32Array {
-        buffers::f32s(self.inner.flat().iter().copied())
-    }
-
-    /// The lines (i, j) with i or j not a multiple of `stride` (after k steps, 2^k: the
-    /// inserted lines), as f32 segments.
-    #[wasm_bindgen(js_name = insertedF32)]
-    pub fn inserted_f32(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
-    ) -> Result<Float32Array, JsValue> {
-        buffers::inserted_f32("LineCongruence", &stride, |stride| Ok(self.core().inserted(stride)))
-    }
+    // --- buffers for WebGL (and `segmentsF32()`, `insertedF32(stride)`: `line_buffers!` below)
 
     /// The points of the director surface d₁ (`which` = 1, the p) or d₂ (2, the q), f32,
     /// 3 per line, row-major: draw them as a rows × cols grid.
@@ -354,5 +338,18 @@ impl LineCongruence {
             Some((self.core().rows(), self.core().cols())),
             None,
         )
+    }
+}
+
+line_buffers!(LineCongruence);
+
+// the same shape as RuledSurface's: both cores keep their lines as one flat array and insert by stride
+impl Lines for LineCongruence {
+    const CLASS: &'static str = "LineCongruence";
+    fn coordinates(&self) -> Cow<'_, [f64]> {
+        Cow::Borrowed(self.inner.flat())
+    }
+    fn inserted(&self, stride: usize) -> ruledlab::Result<Vec<Segment>> {
+        Ok(self.core().inserted(stride))
     }
 }

@@ -13,10 +13,12 @@ use ruledlab::Segment;
 use ruledlab::Triangulation;
 use ruledlab::{Development, HingeChain};
 use ruledlab_js::args::{self, fail, integer, numbers, to_js};
-use ruledlab_js::buffers::{self, segments_f32};
+use ruledlab_js::buffers::{self, segments_f32, Lines};
+use ruledlab_js::line_buffers;
 use ruledlab_js::live::Live;
 use ruledlab_js::subdivide_options::{read, Space};
 use ruledlab_js::timing::Measure;
+use std::borrow::Cow;
 use std::cell::OnceCell;
 use wasm_bindgen::prelude::*;
 
@@ -355,25 +357,7 @@ impl RuledSurface {
         Ok(segments_f32(&edges))
     }
 
-    // --- buffers for WebGL
-    // (the same signatures in every class of lines, as wasm-bindgen binds methods class by class;
-    // one body for them all: ruledlab_js::buffers)
-
-    /// The segments as 32-bit floats, ready for a WebGL buffer.
-    #[wasm_bindgen(js_name = segmentsF32)]
-    pub fn segments_f32(&self) -> Float32Array {
-        buffers::f32s(self.inner.flat().iter().copied())
-    }
-
-    /// The rulings whose index is not a multiple of `stride` (after k interpolatory steps,
-    /// stride 2^k: the inserted ones), as f32 segments.
-    #[wasm_bindgen(js_name = insertedF32)]
-    pub fn inserted_f32(
-        &self,
-        #[wasm_bindgen(unchecked_param_type = "number")] stride: JsValue,
-    ) -> Result<Float32Array, JsValue> {
-        buffers::inserted_f32("RuledSurface", &stride, |stride| Ok(self.core().inserted(stride)))
-    }
+    // --- buffers for WebGL (and `segmentsF32()`, `insertedF32(stride)`: `line_buffers!` below)
 
     /// Every k-th ruling (indices 0, k, 2k, …, and the last), as f32 segments: a level of
     /// detail for drawing surfaces with more rulings than a view can show.
@@ -426,5 +410,18 @@ impl RuledSurface {
         #[wasm_bindgen(unchecked_optional_param_type = "ExportOptions")] options: JsValue,
     ) -> Result<String, JsValue> {
         export("RuledSurface.export", &format, options, self.core().flat(), None, Some(self.core()))
+    }
+}
+
+line_buffers!(RuledSurface);
+
+// the same shape as LineCongruence's: both cores keep their lines as one flat array and insert by stride
+impl Lines for RuledSurface {
+    const CLASS: &'static str = "RuledSurface";
+    fn coordinates(&self) -> Cow<'_, [f64]> {
+        Cow::Borrowed(self.inner.flat())
+    }
+    fn inserted(&self, stride: usize) -> ruledlab::Result<Vec<Segment>> {
+        Ok(self.core().inserted(stride))
     }
 }
