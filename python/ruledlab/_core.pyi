@@ -340,6 +340,7 @@ class RuledSurface:
 class AnalyticSurface:
     """An analytic ruled surface x(u, v) = a(u) + v·d(u) with its exact invariants."""
 
+    # (the catalogue's methods, list to title, as AnalyticCongruence's: two classes, one interface)
     @staticmethod
     def list() -> list[SurfaceInfo]: ...
     @staticmethod

@@ -371,3 +371,20 @@ def test_the_gil_is_released_while_the_core_computes():
     # the counting thread ran throughout: no gap as long as the computation
     gaps = np.diff([start, *during, end])
     assert len(during) > 5 and gaps.max() < 0.5 * (end - start)
+
+
+def test_the_catalogue_lists_each_entry_with_its_domain_as_by_name_gives_it():
+    entry = ["name", "title", "u_min", "u_max", "v_min", "v_max"]
+    surfaces = AnalyticSurface.list()
+    assert [list(d) for d in surfaces] == [entry + ["closed"]] * len(surfaces)
+    for d in surfaces:
+        s = AnalyticSurface.by_name(d["name"])
+        assert (s.name, s.title) == (d["name"], d["title"])
+        assert d["u_min"] < d["u_max"] and d["v_min"] < d["v_max"]
+    hyperboloid = surfaces[0]
+    assert hyperboloid["name"] == "hyperboloid" and hyperboloid["closed"] is True
+    assert (hyperboloid["u_min"], hyperboloid["u_max"]) == (0.0, 2 * np.pi)
+    congruences = AnalyticCongruence.list()
+    assert [list(d) for d in congruences] == [entry + ["rows", "cols"]] * len(congruences)
+    sphere = congruences[0]
+    assert (sphere["name"], sphere["u_min"], sphere["v_max"], sphere["rows"]) == ("sphere", -0.8, 0.6, 6)

@@ -4,6 +4,7 @@
 //! (`crates/ruledlab-wasm/src/analytic_congruence.rs`).
 
 use crate::args;
+use crate::catalogue_entry::entry_dict;
 use crate::error::fail;
 use crate::focal::focal_dict;
 use crate::formula::{congruence_presets, congruence_spec};
@@ -31,6 +32,8 @@ fn errors_dict(py: Python<'_>, (distance, angle): (f64, f64)) -> PyResult<Bound<
 #[pymethods]
 impl AnalyticCongruence {
     // --- the catalogue, and congruences typed as formulas
+    // (list, by_name, formula_presets, name and title have AnalyticSurface's signatures: PyO3 binds
+    // methods class by class; what they do is shared: catalogue_entry, args, formula)
 
     /// Every congruence of the catalogue: dicts with ``name``, ``title``, the domain ``u_min``,
     /// ``u_max``, ``v_min``, ``v_max`` and the grid size of the paper's figure ``rows``, ``cols``.
@@ -38,14 +41,8 @@ impl AnalyticCongruence {
     fn list(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
         let list = PyList::empty(py);
         for c in ruledlab::AnalyticCongruence::ALL.iter() {
-            let ((u_min, u_max), (v_min, v_max), rows, cols) = c.domain();
-            let d = PyDict::new(py);
-            d.set_item("name", c.name())?;
-            d.set_item("title", c.title())?;
-            d.set_item("u_min", u_min)?;
-            d.set_item("u_max", u_max)?;
-            d.set_item("v_min", v_min)?;
-            d.set_item("v_max", v_max)?;
+            let (u, v, rows, cols) = c.domain();
+            let d = entry_dict(py, c.name(), c.title(), u, v)?;
             d.set_item("rows", rows)?;
             d.set_item("cols", cols)?;
             list.append(d)?;

@@ -5,6 +5,7 @@
 
 use crate::args;
 use crate::arrays;
+use crate::catalogue_entry::entry_dict;
 use crate::convert::to_python;
 use crate::error::{fail, fail_option};
 use crate::formula::{surface_presets, surface_spec};
@@ -77,6 +78,8 @@ impl AnalyticSurface {
 #[pymethods]
 impl AnalyticSurface {
     // --- the catalogue, and surfaces typed as formulas
+    // (list, by_name, formula_presets, name and title have AnalyticCongruence's signatures: PyO3 binds
+    // methods class by class; what they do is shared: catalogue_entry, args, formula)
 
     /// Every analytic surface of the catalogue: dicts with ``name``, ``title`` and the default
     /// ranges ``u_min``, ``u_max``, ``v_min``, ``v_max``, ``closed``.
@@ -85,13 +88,7 @@ impl AnalyticSurface {
         let list = PyList::empty(py);
         for s in ruledlab::AnalyticSurface::ALL.iter() {
             let r = s.ranges();
-            let d = PyDict::new(py);
-            d.set_item("name", s.name())?;
-            d.set_item("title", s.title())?;
-            d.set_item("u_min", r.u.0)?;
-            d.set_item("u_max", r.u.1)?;
-            d.set_item("v_min", r.v.0)?;
-            d.set_item("v_max", r.v.1)?;
+            let d = entry_dict(py, s.name(), s.title(), r.u, r.v)?;
             d.set_item("closed", r.closed)?;
             list.append(d)?;
         }

@@ -32,6 +32,7 @@ mod polygon;
 mod allocator;
 mod args;
 mod arrays;
+mod catalogue_entry;
 mod convert;
 mod error;
 mod export;

@@ -72,6 +72,8 @@ pub fn subdivide_polygon<'py>(
     arrays::points(py, out)
 }
 
+// subdivide_polygon's keywords again: the two functions take the same options, and PyO3 binds
+// each function's own signature (what reads them is one: curve_scheme, with_polygon)
 /// The largest turning angle (radians, 0 … π: the largest angle between an edge and the next)
 /// of a polygon ((N, 3)) and of each of its refinements by a curve scheme (the options of
 /// ``subdivide_polygon``): (steps + 1,), the first for the polygon itself. Where the limit is a

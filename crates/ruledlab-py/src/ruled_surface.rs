@@ -282,6 +282,8 @@ impl RuledSurface {
 
     // --- subdivision (Section 4)
 
+    // its first keywords (scheme, steps, w) are LineCongruence.subdivide's too: PyO3 binds each
+    // method's own signature; what reads a scheme's keywords is one (scheme_options)
     /// The surface refined by a scheme of Section 4: ``scheme`` "chaikin", "bspline" (of
     /// ``degree`` 1 … 7, default 3), "bezier", "four-point" (Dyn–Levin–Gregory (8), tension
     /// ``w`` ∈ [−1/4, 1/4], default 1/16) or "variational" ((13)/(14): ``n`` parts per segment,
