@@ -111,7 +111,7 @@ pub fn pieces(points: &[DVec2], overlaps: &[(usize, usize)]) -> Vec<Range<usize>
 mod tests {
     use super::*;
     use crate::tolerance::test::uniform;
-    use std::f64::consts::TAU;
+    use std::f64::consts::{PI, TAU};
 
     /// The area common to two triangles, by clipping one with the other's edges
     /// (Sutherland–Hodgman): the reference the separating axes are checked against.
@@ -271,6 +271,20 @@ mod tests {
         // no two faces of a piece overlap
         for r in &pieces {
             assert!(overlaps.iter().all(|&(i, j)| !(r.contains(&i) && r.contains(&j) && j < r.end)));
+        }
+    }
+
+    /// The same pattern turned and moved: the same overlaps (every face of the first one and a
+    /// half turns overlaps the face one turn on, wherever it lies: left of the origin too).
+    #[test]
+    fn the_overlaps_do_not_depend_on_where_the_pattern_lies() {
+        let p = annulus(101, 2.5);
+        let expected = overlapping_faces(&p);
+        assert!((0..60).all(|i| expected.contains(&(i, i + 40))), "{expected:?}");
+        for (angle, shift) in [(PI, DVec2::ZERO), (1.0, DVec2::new(-30.0, -40.0)), (-0.3, DVec2::new(25.0, -7.0))] {
+            let turn = DVec2::from_angle(angle);
+            let q: Vec<DVec2> = p.iter().map(|&x| turn.rotate(x) + shift).collect();
+            assert_eq!(overlapping_faces(&q), expected, "turned by {angle}, moved by {shift}");
         }
     }
 
