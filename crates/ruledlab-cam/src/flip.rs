@@ -95,3 +95,42 @@ fn message(m: &Machine, b: &Pose, t0: f64, (k, from, to): (usize, f64, f64), the
         max = r.max.unwrap_or(f64::INFINITY)
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    /// The block from B = 10° to B = −10° (a swing of 20°) on the table-table B/C preset with
+    /// both axes continuous, its tool axes turning by 17°: a flip where 20° > 17° + 2·cone +
+    /// FLIP_MARGIN.
+    fn swing(cone_degrees: f64) -> Option<Error> {
+        let mut m = Machine::preset("table-table-bc").unwrap();
+        let k = m.rotary.iter().position(|r| r.name.letter() == "B").unwrap();
+        (m.rotary[k].min, m.rotary[k].max) = (None, None);
+        let pose = |degrees: f64| Pose {
+            tip: DVec3::ZERO,
+            axis: DVec3::new(0.0, degrees.to_radians().sin(), degrees.to_radians().cos()),
+        };
+        let (a, b) = (pose(0.0), pose(17.0));
+        let joints = |tilt: f64| {
+            let mut rotary = [0.0; 2];
+            rotary[k] = tilt;
+            Joints { xyz: DVec3::ZERO, rotary }
+        };
+        flip(&m, cone_degrees.to_radians(), (&a, &b), (&joints(10.0), &joints(-10.0)), 3)
+    }
+
+    #[test]
+    fn a_swing_beyond_the_turn_and_twice_the_pole_cone_is_a_flip() {
+        // 17 + 2·1.2 + 0.01 = 19.41 < 20: a flip, between poses 3 and 4
+        let e = swing(1.2).expect("a flip");
+        let Error::Unreachable { pose, message, .. } = &e else { panic!("{e}") };
+        assert_eq!((*pose, message.reason), (3, "flip-in-cut-free"), "{e}");
+        // 17 + 2·2 + 0.01 = 21.01 ≥ 20: the pole cone lets the tilt swing through the pole
+        assert!(swing(2.0).is_none());
+        // the margin: 17 + 2·1.4955 + 0.01 = 20.001: no flip; 17 + 2·1.4945 + 0.01 = 19.999: a flip
+        assert!(swing(1.4955).is_none());
+        assert!(swing(1.4945).is_some());
+    }
+}

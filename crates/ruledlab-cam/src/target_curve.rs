@@ -115,6 +115,12 @@ mod tests {
         assert_eq!(read_target("[[0,0,0],[1,1,1],[2,2,2]]", true, &rust_number).unwrap().points.len(), 3);
         let e = read_target("0,0\n1,1\n", false, &rust_number).unwrap_err();
         assert_eq!((e.details().reason, e.details().line), (Some("target-three-numbers"), Some(1)));
+        // the column said: where the fourth number starts, or just after the last one when
+        // there are fewer than three ("10,20" has its second number at column 4: column 5)
+        let e = read_target("0,0,0\n10,20\n", false, &rust_number).unwrap_err();
+        assert_eq!((e.details().line, e.details().column), (Some(2), Some(5)));
+        let e = read_target("0,0,0\n1,2,3,44\n", false, &rust_number).unwrap_err();
+        assert_eq!((e.details().line, e.details().column), (Some(2), Some(7)));
         let e = read_target("[[0,0,0]]", true, &rust_number).unwrap_err();
         assert_eq!(e.details().reason, Some("target-too-few"));
         // units other than mm and inch are refused, not read as mm

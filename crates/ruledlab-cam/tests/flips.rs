@@ -65,3 +65,39 @@ fn a_flip_inside_the_cut_is_refused_naming_the_axis_and_its_limit() {
         }
     }
 }
+
+/// The same flip on a B axis whose controller counts from another zero, or the other way round:
+/// the same poses, the same axis and limit named, B's values as the controller writes them.
+#[test]
+fn a_flip_is_found_and_said_whatever_the_tilting_axis_counts_from() {
+    for (zero, direction) in [(-30.0, 1.0), (25.0, -1.0), (-30.0, -1.0)] {
+        let counted = |mut m: Machine| {
+            let b = m.rotary.iter().position(|r| r.name.letter() == "B").unwrap();
+            (m.rotary[b].zero, m.rotary[b].direction) = (zero, direction);
+            // its limits, −110° … 110°, as it counts them
+            let (lo, hi) = (-110.0 * direction + zero, 110.0 * direction + zero);
+            (m.rotary[b].min, m.rotary[b].max) = (Some(f64::min(lo, hi)), Some(f64::max(lo, hi)));
+            (m, b)
+        };
+        let (m, b) = counted(machine(true));
+        // the path of the first test: B tilted 17.36°, as this B counts it
+        let p = ToolPath { poses: path(&machine(true)).poses, tool: Tool::new(3.0, 30.0, ToolEnd::Ball).unwrap() };
+        let o =
+            PostOptions { dialect: Dialect::LinuxCnc, mode: Mode::Machine, machine: m.clone(), ..Default::default() };
+        let e = gcode(&p, &o).unwrap_err();
+        let Error::Unreachable { pose, message, .. } = &e else { panic!("{zero} {direction}: {e}") };
+        assert_eq!(message.reason, "flip-in-cut", "{zero} {direction}: {e}");
+        let arg = |n: &str| message.arg(n).cloned();
+        assert_eq!(arg("axis"), Some(Arg::Text("C".into())), "{e}");
+        assert!((4..=5).contains(pose), "{e}");
+        let Some(Arg::Number(v)) = arg("value") else { panic!("{e}") };
+        assert!((-92.0..=-88.0).contains(&v), "{zero} {direction}: {e}");
+        // B from +17.36° to −17.36°, in the controller's counting
+        let value = |degrees: f64| m.rotary[b].value(f64::to_radians(degrees));
+        let near = |a: Option<Arg>, want: f64| matches!(a, Some(Arg::Number(x)) if (x - want).abs() < 0.01);
+        assert!(near(arg("from"), value(17.36)) && near(arg("to"), value(-17.36)), "{zero} {direction}: {e}");
+        // with C continuous, the same path posts
+        let (free, _) = counted(machine(false));
+        assert!(gcode(&p, &PostOptions { machine: free, ..o }).is_ok(), "{zero} {direction}");
+    }
+}

@@ -120,4 +120,30 @@ mod tests {
         assert!(lines[1].starts_with("  word") && lines.concat().matches("word").count() == 60);
         assert_eq!((speed(10000.0), speed(12.5)), ("10000".to_string(), number(12.5, false)));
     }
+
+    #[test]
+    fn numbers_beyond_the_fast_way_and_a_negative_zero_from_format() {
+        // x·10^places of 1e9 and more: format! writes them (an i64 would not hold 1e20·10⁴)
+        assert_eq!(decimals(1e20, 4, false), "100000000000000000000.0000");
+        assert_eq!(decimals(-123_456.789, 4, true), "-123456.7890");
+        assert_eq!(decimals(1e15 + 0.25, 0, true), "+1000000000000000");
+        // a near-tie that rounds to zero goes to format!, which writes "-0.0000": written "0.0000"
+        assert_eq!(format!("{:.4}", -0.000_049_999_95), "-0.0000");
+        assert_eq!(decimals(-0.000_049_999_95, 4, false), "0.0000");
+        assert_eq!(decimals(-0.000_049_999_95, 4, true), "+0.0000");
+    }
+
+    #[test]
+    fn a_comment_line_may_be_exactly_as_wide_as_allowed() {
+        let word = |c: &str, n: usize| c.repeat(n);
+        // 59 + 1 + 60 = 120 characters: one line
+        let exact = format!("{} {}", word("a", 59), word("b", 60));
+        assert_eq!(comment_lines(&exact), [exact.clone()]);
+        // one more: the second word goes to the next line, indented
+        let over = format!("{} {}", word("a", 59), word("b", 61));
+        assert_eq!(comment_lines(&over), [word("a", 59), format!("  {}", word("b", 61))]);
+        // a later line has two characters less room: 58 + 1 + 59 = 118, 120 with its indent
+        let later = format!("{} {} {}", word("a", 120), word("c", 58), word("d", 59));
+        assert_eq!(comment_lines(&later), [word("a", 120), format!("  {} {}", word("c", 58), word("d", 59))]);
+    }
 }
