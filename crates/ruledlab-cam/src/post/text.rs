@@ -138,7 +138,7 @@ mod tests {
         let word = |c: &str, n: usize| c.repeat(n);
         // 59 + 1 + 60 = 120 characters: one line
         let exact = format!("{} {}", word("a", 59), word("b", 60));
-        assert_eq!(comment_lines(&exact), [exact.clone()]);
+        assert_eq!(comment_lines(&exact), std::slice::from_ref(&exact));
         // one more: the second word goes to the next line, indented
         let over = format!("{} {}", word("a", 59), word("b", 61));
         assert_eq!(comment_lines(&over), [word("a", 59), format!("  {}", word("b", 61))]);
