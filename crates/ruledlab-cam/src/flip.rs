@@ -48,15 +48,18 @@ pub fn flip(
 /// The message: the tilting axis's swing, and the axis (with its limits) that keeps the solution
 /// of pose `pose` (tilt `t0`, degrees) from going on to `b`.
 fn message(m: &Machine, b: &Pose, t0: f64, (k, from, to): (usize, f64, f64), theta: f64, pose: usize) -> Message {
-    // the solution of b on the side of a: its tilt has a's sign
+    // the solution of b on the side of a: its tilt has the sign of a's, taken within half a turn
+    // of 0 (a tilting axis limited on one side may stand a turn away: −342.64° is +17.36°)
+    let t0 = t0 - 360.0 * (t0 / 360.0).round();
     let same = orientations(m, b.axis).into_iter().find(|o| o[k].is_some_and(|t| t.to_degrees() * t0 >= 0.0));
-    // the limited axis that solution takes nearest its limits, or beyond (where the flip comes
-    // early, the poses after it are the ones beyond): its value, the turn nearest the limits
+    // the axis limited on both sides that solution takes nearest its limits, or beyond (where the
+    // flip comes early, the poses after it are the ones beyond): its value, the turn nearest the
+    // limits. An axis limited on one side only blocks nothing: a turn of it is within (solve.rs).
     let blocked = same.and_then(|o| {
         (0..2)
             .filter_map(|j| {
                 let r = &m.rotary[j];
-                if r.min.is_none() && r.max.is_none() {
+                if r.min.is_none() || r.max.is_none() {
                     return None;
                 }
                 let v = r.value(o[j]?);

@@ -101,3 +101,65 @@ fn a_flip_is_found_and_said_whatever_the_tilting_axis_counts_from() {
         assert!(gcode(&p, &PostOptions { machine: free, ..o }).is_ok(), "{zero} {direction}");
     }
 }
+
+/// C limited to 270° … 450° (−90° … 90° a turn on): the same flip, C's value said within the
+/// turn of its limits (268°, where staying on the same side would take it below 270°).
+#[test]
+fn the_limited_axis_is_said_within_the_turn_of_its_limits() {
+    let mut m = machine(true);
+    let c = m.rotary.iter().position(|r| r.name.letter() == "C").unwrap();
+    (m.rotary[c].min, m.rotary[c].max) = (Some(270.0), Some(450.0));
+    let p = path(&machine(true));
+    let o = PostOptions { dialect: Dialect::LinuxCnc, mode: Mode::Machine, machine: m, ..Default::default() };
+    let e = gcode(&p, &o).unwrap_err();
+    let Error::Unreachable { pose, message, .. } = &e else { panic!("{e}") };
+    assert_eq!(message.reason, "flip-in-cut", "{e}");
+    assert!((4..=5).contains(pose), "{e}");
+    let arg = |n: &str| message.arg(n).cloned();
+    assert_eq!((arg("min"), arg("max")), (Some(Arg::Number(270.0)), Some(Arg::Number(450.0))), "{e}");
+    let Some(Arg::Number(v)) = arg("value") else { panic!("{e}") };
+    assert!((268.0..=272.0).contains(&v), "{e}");
+}
+
+/// The mirror image: B tilted −17.36° (the other solution at B +17.36°, C 180° round), C from
+/// −80° on: the flip is said from the side B starts on.
+#[test]
+fn a_flip_from_a_negative_tilt_is_said_from_that_side() {
+    let m = machine(true);
+    let b = m.rotary.iter().position(|r| r.name.letter() == "B").unwrap();
+    let mut p = path(&m);
+    for (k, pose) in p.poses.iter_mut().enumerate() {
+        let mut rotary = [0.0; 2];
+        (rotary[b], rotary[1 - b]) = (-17.36, -80.0 - 2.0 * k as f64);
+        pose.axis = tool_axis(&m, rotary);
+    }
+    let o = PostOptions { dialect: Dialect::LinuxCnc, mode: Mode::Machine, machine: m, ..Default::default() };
+    let e = gcode(&p, &o).unwrap_err();
+    let Error::Unreachable { message, .. } = &e else { panic!("{e}") };
+    assert_eq!(message.reason, "flip-in-cut", "{e}");
+    let arg = |n: &str| message.arg(n).cloned();
+    assert_eq!((arg("axis"), arg("tilt")), (Some(Arg::Text("C".into())), Some(Arg::Text("B".into()))), "{e}");
+    let near = |a: Option<Arg>, want: f64| matches!(a, Some(Arg::Number(x)) if (x - want).abs() < 0.01);
+    assert!(near(arg("from"), -17.36) && near(arg("to"), 17.36), "{e}");
+    let Some(Arg::Number(v)) = arg("value") else { panic!("{e}") };
+    assert!((-92.0..=-88.0).contains(&v), "{e}");
+}
+
+/// B limited on one side only (B ≤ 15°): it takes a turn within that (B −342.64° for 17.36°:
+/// the same orientation), so it blocks nothing, and the flip names C, the axis that does, on the
+/// side B leaves.
+#[test]
+fn an_axis_limited_on_one_side_only_is_never_said_to_block() {
+    let mut m = machine(true);
+    let b = m.rotary.iter().position(|r| r.name.letter() == "B").unwrap();
+    (m.rotary[b].min, m.rotary[b].max) = (None, Some(15.0));
+    let p = path(&machine(true));
+    let o = PostOptions { dialect: Dialect::LinuxCnc, mode: Mode::Machine, machine: m, ..Default::default() };
+    let e = gcode(&p, &o).unwrap_err();
+    let Error::Unreachable { message, .. } = &e else { panic!("{e}") };
+    assert_eq!(message.reason, "flip-in-cut", "{e}");
+    assert_eq!(message.arg("axis").cloned(), Some(Arg::Text("C".into())), "{e}");
+    // the same side is B's +17.36° (which this B writes −342.64°): C there at −88° … −92°
+    let Some(Arg::Number(v)) = message.arg("value").cloned() else { panic!("{e}") };
+    assert!((-92.0..=-88.0).contains(&v), "{e}");
+}
