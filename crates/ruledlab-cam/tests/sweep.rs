@@ -10,10 +10,10 @@ mod jobs;
 
 use glam::DVec3;
 use ruledlab::{Scheme, Variant};
-use ruledlab_cam::controller::number;
+use ruledlab_cam::controller::{decimals, number};
 use ruledlab_cam::{
     envelope_deviation, example_profile, example_tool_path, gcode, pose_at, tool_distance, Dialect, Machine, Mode,
-    PostOptions, Program, SweptBlock, Tool, ToolPath,
+    PostOptions, Program, SweptBlock, Tool, ToolPath, Units,
 };
 
 /// Samples a block of the reference.
@@ -157,4 +157,45 @@ fn the_ring_path_and_its_program() {
     );
     // the ruling-aligned cylinder on a hyperboloid, which is not developable: it gouges
     assert!(own.gouge < -0.01 && d.gouge < -0.01, "{} {}", own.gouge, d.gouge);
+}
+
+/// A program in inches says its deviation in inches, to 5 decimals (a micrometre is 0.00004 in),
+/// and checks its rapids against the same stock: the program's box holds every pose's tip, in
+/// millimetres, in either units.
+#[test]
+fn in_inches_the_deviation_is_said_in_inches_and_the_stock_kept_in_millimetres() {
+    let job = jobs().into_iter().next().unwrap();
+    for units in [Units::Mm, Units::Inch] {
+        let u = if units == Units::Inch { 25.4 } else { 1.0 };
+        let o = PostOptions {
+            units,
+            machine: Machine::preset("table-table-ac").unwrap(),
+            // the same part: the path's unit is 10 mm in either
+            scale: job.scale / u,
+            target: Some(job.target.clone()),
+            ..Default::default()
+        };
+        let p = gcode(&job.path, &o).unwrap();
+        let d = p.deviation.as_ref().unwrap();
+        let (places, word) = if units == Units::Inch { (5, "inch") } else { (4, "mm") };
+        let said = format!(
+            "gouge {} {word}, leave {} {word}, rms {}",
+            decimals(d.gouge / u, places, false),
+            decimals(d.leave / u, places, false),
+            decimals(d.rms / u, places, false)
+        );
+        assert!(p.text.contains(&said), "{units:?}: {said}");
+        let [lo, hi] = p.stock.map(DVec3::from);
+        for pose in &p.poses {
+            let tip = pose.tip;
+            assert!(tip.cmpge(lo - 1e-9).all() && tip.cmple(hi + 1e-9).all(), "{units:?}: {tip} outside {lo} … {hi}");
+        }
+        // the box is the part's, not a box a program's unit bigger: its corners touch the tips
+        let (least, most) =
+            p.poses.iter().fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), q| (a.min(q.tip), b.max(q.tip)));
+        assert!(
+            (least - lo).max_element() < 20.0 && (hi - most).max_element() < 20.0,
+            "{units:?}: {lo} … {hi} around {least} … {most}"
+        );
+    }
 }

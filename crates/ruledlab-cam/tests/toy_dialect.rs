@@ -9,11 +9,14 @@
 #[allow(dead_code)] // the blade is not posted here
 mod jobs;
 
+use glam::DVec3;
 use ruledlab::{Scheme, Variant};
 use ruledlab_cam::controller::{
     comment_lines, iso, number, Context, Controller, Iso, LinuxCnc, Mode, Op, Orientation, Rate, Units, Waypoint,
 };
-use ruledlab_cam::{example_tool_path, gcode, gcode_with, Dialect, Machine, PostOptions, Program, ToolPath};
+use ruledlab_cam::{
+    example_tool_path, gcode, gcode_with, Dialect, Limit, Machine, Pose, PostOptions, Program, Tool, ToolEnd, ToolPath,
+};
 
 /// A toy language: `TOY <name>`, one line a step (`RAPID`/`FEED x y z | i j k`, the tool axis as
 /// a vector), `# …` comments, a feed word of at most 5000 a minute.
@@ -172,6 +175,26 @@ fn a_toy_dialects_feed_word_bounds_the_feed() {
     assert!(gcode_with(&example_tool_path(5).unwrap(), &o(5000.0), &toy, &mut |_| {}).is_ok());
     // a registered dialect without a bound takes it
     assert!(gcode(&example_tool_path(5).unwrap(), &o(5000.5)).is_ok());
+    // the feed word measured by the tip's distance (the trait's default) in the program's units:
+    // a feed at most the bound is never slowed by it, in millimetres or in inches, short blocks
+    // (the 33 poses of the example, 10 times smaller: blocks of about a millimetre) included
+    for (units, feed) in [(Units::Mm, 300.0), (Units::Inch, 12.0)] {
+        let o = PostOptions { feed, units, scale: 1.0, ..Default::default() };
+        let p = gcode_with(&example_tool_path(33).unwrap(), &o, &toy, &mut |_| {}).unwrap();
+        assert!(p.motion.iter().all(|b| b.limit != Limit::FeedWord), "{units:?} {feed}");
+        assert!(p.motion.iter().any(|b| b.limit == Limit::Feed), "{units:?} {feed}: blocks at the feed");
+    }
+    // nor are blocks of 0.05 mm, which a fixed measure of 1 would slow (1/5000 min > 0.05/300
+    // min), or at 500 in/min the distance in mm (0.05/5000 min > 0.05/12700 min)
+    let short = ToolPath {
+        poses: (0..11).map(|k| Pose { tip: DVec3::new(0.05 * k as f64, 0.0, 0.0), axis: DVec3::Z }).collect(),
+        tool: Tool::new(3.0, 30.0, ToolEnd::Flat).unwrap(),
+    };
+    for (units, feed) in [(Units::Mm, 300.0), (Units::Inch, 500.0)] {
+        let o = PostOptions { feed, units, ..Default::default() };
+        let p = gcode_with(&short, &o, &toy, &mut |_| {}).unwrap();
+        assert!(p.motion.iter().all(|b| b.limit == Limit::Feed), "{units:?}: {:?}", p.motion);
+    }
 }
 
 /// The interpolation it names is the one the post checks and times: given the angles, the toy's

@@ -189,3 +189,17 @@ pub fn gcode_with(
         deviation,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_warning_in_english_names_its_line_where_known() {
+        let message = crate::msg!("target-three-numbers", found = 2);
+        let at = Warning { pose: 3, line: Some(7), message: message.clone() };
+        assert_eq!(at.text(), "expected 3 numbers for a target point (x, y, z), found 2 (line 7)");
+        let anywhere = Warning { pose: 3, line: None, message };
+        assert_eq!(anywhere.text(), "expected 3 numbers for a target point (x, y, z), found 2");
+    }
+}
