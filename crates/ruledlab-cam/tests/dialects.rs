@@ -11,7 +11,7 @@
 mod jobs;
 
 use ruledlab::{Scheme, Variant};
-use ruledlab_cam::{example_tool_path, gcode, Dialect, Machine, Mode, PostOptions, Program, RotaryAxis};
+use ruledlab_cam::{example_tool_path, gcode, AxisName, Dialect, Machine, Mode, PostOptions, Program, RotaryAxis};
 use ruledlab_cam::{Limit, MACHINE_PRESETS};
 
 fn programs(dialect: Dialect) -> Vec<(String, Mode, Program)> {
@@ -330,4 +330,24 @@ fn linuxcnc_work_offsets() {
         let offsets: Vec<&str> = p.text.lines().filter(|l| l.starts_with("G5") && !l.starts_with("G53")).collect();
         assert_eq!(offsets, [word], "work offset {k}");
     }
+}
+
+/// A bridge mill's head, C carrying B, is LinuxCNC's `5axiskins` (its man page kins(9)): the
+/// header of a program with the tool-centre point names it with the INI line it needs.
+#[test]
+fn a_head_with_c_carrying_b_is_linuxcncs_5axiskins() {
+    let mut m = Machine::preset("head-head-ac").unwrap();
+    m.rotary[1].name = AxisName::B;
+    let o = PostOptions { machine: m, mode: Mode::Tcp, scale: 10.0, ..Default::default() };
+    // the header's comments as one text (long ones wrap onto lines of their own)
+    let text = gcode(&example_tool_path(5).unwrap(), &o).unwrap().text.replace(")\n(  ", " ");
+    assert!(text.contains("[KINS] KINEMATICS = 5axiskins sparm=identityfirst"), "{text}");
+}
+
+/// Each controller's name, as its errors say it ("must be at most … a minute for a Heidenhain
+/// TNC").
+#[test]
+fn each_controller_says_its_name() {
+    let names = [Dialect::LinuxCnc, Dialect::Heidenhain, Dialect::Sinumerik].map(|d| d.controller().name());
+    assert_eq!(names, ["LinuxCNC", "a Heidenhain TNC", "a Sinumerik 840D"]);
 }
