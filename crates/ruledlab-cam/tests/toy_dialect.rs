@@ -12,7 +12,8 @@ mod jobs;
 use glam::DVec3;
 use ruledlab::{Scheme, Variant};
 use ruledlab_cam::controller::{
-    comment_lines, iso, number, Context, Controller, Iso, LinuxCnc, Mode, Op, Orientation, Rate, Units, Waypoint,
+    comment_lines, iso, number, Context, Controller, Iso, LinuxCnc, Mode, Op, Orientation, Rate, Sinumerik, Units,
+    Waypoint, Words,
 };
 use ruledlab_cam::{
     example_tool_path, gcode, gcode_with, Dialect, Limit, Machine, Pose, PostOptions, Program, Tool, ToolEnd, ToolPath,
@@ -256,4 +257,31 @@ fn a_toy_iso_controller_shares_the_iso_writer() {
         assert_eq!(blocks.iter().filter(|b| ["G43.4 H1", "G49"].contains(b)).count(), 2);
         assert!(tcp.text.contains("(mode: tool-centre point - G43.4)\n"));
     }
+}
+
+/// The shared ISO writer leaves inverse time (`G93`) before a rapid as each controller says: in
+/// a `G94` block of its own for LinuxCNC, as a word of the rapid's block for Sinumerik. (The
+/// post's own plans leave every cut with a feed move, so only a controller of one's own, or
+/// ops of one's own, reach this.)
+#[test]
+fn a_rapid_after_inverse_time_leaves_it_as_the_controller_says() {
+    let at = |x: f64| Waypoint { xyz: DVec3::new(x, 0.0, 0.0), rotary: [x, 0.0], axis: DVec3::Z };
+    let ops = [
+        Op::Feed(at(1.0), Rate::Simultaneous { minutes: 0.5, distance: 1.0, linear: 1.0, turn: 1.0 }),
+        Op::Rapid(at(2.0), Words::All),
+    ];
+    let c = Context {
+        letters: ["A", "C"],
+        mode: Mode::Machine,
+        name: "rapid".into(),
+        bounds: (DVec3::ZERO, DVec3::ONE),
+        units: Units::Mm,
+    };
+    let linuxcnc: Vec<String> = iso::program(&LinuxCnc, &ops, &c).lines().map(String::from).collect();
+    assert_eq!(
+        linuxcnc,
+        ["G93 G1 X1.0000 Y0.0000 Z0.0000 A1.0000 C0.0000 F2.0000", "G94", "G0 X2.0000 Y0.0000 Z0.0000 A2.0000 C0.0000"]
+    );
+    let sinumerik: Vec<String> = iso::program(&Sinumerik, &ops, &c).lines().map(String::from).collect();
+    assert_eq!(sinumerik.last().map(String::as_str), Some("N20 G94 G0 X2.0000 Y0.0000 Z0.0000 A2.0000 C0.0000"));
 }
