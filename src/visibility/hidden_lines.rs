@@ -219,6 +219,30 @@ mod tests {
         crate::assert_near!(runs[1][0].points[0], view.project(rising[0]).unwrap(), 1e-9);
     }
 
+    /// The scene of the last test moved off the origin (the square's plane no longer through
+    /// it), the camera with it: the same runs, to rounding.
+    #[test]
+    fn a_moved_scene_hides_the_same() {
+        let (p, idx) = square();
+        let line = [DVec3::new(-5.0, 0.3, -1.0), DVec3::new(5.0, 0.3, -1.0)];
+        let runs = |shift: DVec3| {
+            let view = camera(DVec3::new(0.0, 0.0, 10.0) + shift, shift);
+            let p: Vec<DVec3> = p.iter().map(|&q| q + shift).collect();
+            let line = line.map(|q| q + shift);
+            hidden_lines(&view, &[(&p, &idx)], &[(LineKind::Segments, &line)], exact()).unwrap().remove(0)
+        };
+        let here = runs(DVec3::ZERO);
+        for shift in [DVec3::new(3.0, -2.0, 7.0), DVec3::new(0.0, 0.0, -40.0)] {
+            let there = runs(shift);
+            assert_eq!(seen(&there), seen(&here), "{shift}");
+            for (a, b) in there.iter().zip(&here) {
+                for (x, y) in a.points.iter().zip(&b.points) {
+                    crate::assert_near!(*x, *y, 1e-9);
+                }
+            }
+        }
+    }
+
     #[test]
     fn the_same_in_an_orthographic_view() {
         // x/3, y/2 onto [−1, 1]², looking down −z from z = 10 (near 0.1, far 100)
