@@ -122,27 +122,36 @@ fn the_limited_axis_is_said_within_the_turn_of_its_limits() {
 }
 
 /// The mirror image: B tilted −17.36° (the other solution at B +17.36°, C 180° round), C from
-/// −80° on: the flip is said from the side B starts on.
+/// −80° on: the flip is said from the side B starts on; with B limited to −15° and above, B
+/// stands a turn away (342.64°) and the side is still its tilt's, −17.36°.
 #[test]
 fn a_flip_from_a_negative_tilt_is_said_from_that_side() {
-    let m = machine(true);
-    let b = m.rotary.iter().position(|r| r.name.letter() == "B").unwrap();
-    let mut p = path(&m);
-    for (k, pose) in p.poses.iter_mut().enumerate() {
-        let mut rotary = [0.0; 2];
-        (rotary[b], rotary[1 - b]) = (-17.36, -80.0 - 2.0 * k as f64);
-        pose.axis = tool_axis(&m, rotary);
+    let mirror = |m: &Machine| {
+        let b = m.rotary.iter().position(|r| r.name.letter() == "B").unwrap();
+        let mut p = path(m);
+        for (k, pose) in p.poses.iter_mut().enumerate() {
+            let mut rotary = [0.0; 2];
+            (rotary[b], rotary[1 - b]) = (-17.36, -80.0 - 2.0 * k as f64);
+            pose.axis = tool_axis(m, rotary);
+        }
+        p
+    };
+    let mut above = machine(true);
+    let b = above.rotary.iter().position(|r| r.name.letter() == "B").unwrap();
+    (above.rotary[b].min, above.rotary[b].max) = (Some(-15.0), None);
+    for (m, from, to) in [(machine(true), -17.36, 17.36), (above, 342.64, 377.36)] {
+        let p = mirror(&machine(true));
+        let o = PostOptions { dialect: Dialect::LinuxCnc, mode: Mode::Machine, machine: m, ..Default::default() };
+        let e = gcode(&p, &o).unwrap_err();
+        let Error::Unreachable { message, .. } = &e else { panic!("{e}") };
+        assert_eq!(message.reason, "flip-in-cut", "{e}");
+        let arg = |n: &str| message.arg(n).cloned();
+        assert_eq!((arg("axis"), arg("tilt")), (Some(Arg::Text("C".into())), Some(Arg::Text("B".into()))), "{e}");
+        let near = |a: Option<Arg>, want: f64| matches!(a, Some(Arg::Number(x)) if (x - want).abs() < 0.01);
+        assert!(near(arg("from"), from) && near(arg("to"), to), "{e}");
+        let Some(Arg::Number(v)) = arg("value") else { panic!("{e}") };
+        assert!((-92.0..=-88.0).contains(&v), "{e}");
     }
-    let o = PostOptions { dialect: Dialect::LinuxCnc, mode: Mode::Machine, machine: m, ..Default::default() };
-    let e = gcode(&p, &o).unwrap_err();
-    let Error::Unreachable { message, .. } = &e else { panic!("{e}") };
-    assert_eq!(message.reason, "flip-in-cut", "{e}");
-    let arg = |n: &str| message.arg(n).cloned();
-    assert_eq!((arg("axis"), arg("tilt")), (Some(Arg::Text("C".into())), Some(Arg::Text("B".into()))), "{e}");
-    let near = |a: Option<Arg>, want: f64| matches!(a, Some(Arg::Number(x)) if (x - want).abs() < 0.01);
-    assert!(near(arg("from"), -17.36) && near(arg("to"), 17.36), "{e}");
-    let Some(Arg::Number(v)) = arg("value") else { panic!("{e}") };
-    assert!((-92.0..=-88.0).contains(&v), "{e}");
 }
 
 /// B limited on one side only (B ≤ 15°): it takes a turn within that (B −342.64° for 17.36°:
