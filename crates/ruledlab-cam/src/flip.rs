@@ -59,20 +59,15 @@ fn message(m: &Machine, b: &Pose, t0: f64, (k, from, to): (usize, f64, f64), the
         (0..2)
             .filter_map(|j| {
                 let r = &m.rotary[j];
-                if r.min.is_none() || r.max.is_none() {
-                    return None;
-                }
+                let (Some(lo), Some(hi)) = (r.min, r.max) else { return None };
                 let v = r.value(o[j]?);
-                let mid = 0.5 * (r.min.unwrap_or(v) + r.max.unwrap_or(v));
-                let v = v - 360.0 * ((v - mid) / 360.0).round();
-                let inside = (v - r.min.unwrap_or(f64::NEG_INFINITY)).min(r.max.unwrap_or(f64::INFINITY) - v);
-                Some((inside, j, v))
+                let v = v - 360.0 * ((v - 0.5 * (lo + hi)) / 360.0).round();
+                Some(((v - lo).min(hi - v), j, v, (lo, hi)))
             })
             .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map(|(_, j, v)| (j, v))
     });
     let round = |x: f64| (x * 1e4).round() / 1e4;
-    let Some((j, value)) = blocked else {
+    let Some((_, j, value, (min, max))) = blocked else {
         return crate::msg!(
             "flip-in-cut-free",
             pose = pose,
@@ -83,7 +78,6 @@ fn message(m: &Machine, b: &Pose, t0: f64, (k, from, to): (usize, f64, f64), the
             angle = round(theta)
         );
     };
-    let r = &m.rotary[j];
     crate::msg!(
         "flip-in-cut",
         pose = pose,
@@ -92,10 +86,10 @@ fn message(m: &Machine, b: &Pose, t0: f64, (k, from, to): (usize, f64, f64), the
         from = round(from),
         to = round(to),
         angle = round(theta),
-        axis = r.name.letter(),
+        axis = m.rotary[j].name.letter(),
         value = round(value),
-        min = r.min.unwrap_or(f64::NEG_INFINITY),
-        max = r.max.unwrap_or(f64::INFINITY)
+        min = min,
+        max = max
     )
 }
 

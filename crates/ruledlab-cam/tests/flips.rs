@@ -172,3 +172,24 @@ fn an_axis_limited_on_one_side_only_is_never_said_to_block() {
     let Some(Arg::Number(v)) = message.arg("value").cloned() else { panic!("{e}") };
     assert!((-92.0..=-88.0).contains(&v), "{e}");
 }
+
+/// C the other way, from 80° up: the flip comes where C would pass its upper limit, 90°, and is
+/// said with C on the side it leaves, at 88° … 92°.
+#[test]
+fn a_flip_at_the_upper_limit_names_it() {
+    let m = machine(true);
+    let b = m.rotary.iter().position(|r| r.name.letter() == "B").unwrap();
+    let mut p = path(&m);
+    for (k, pose) in p.poses.iter_mut().enumerate() {
+        let mut rotary = [0.0; 2];
+        (rotary[b], rotary[1 - b]) = (17.36, 80.0 + 2.0 * k as f64);
+        pose.axis = tool_axis(&m, rotary);
+    }
+    let o = PostOptions { dialect: Dialect::LinuxCnc, mode: Mode::Machine, machine: m, ..Default::default() };
+    let e = gcode(&p, &o).unwrap_err();
+    let Error::Unreachable { pose, message, .. } = &e else { panic!("{e}") };
+    assert_eq!((message.reason, message.arg("axis").cloned()), ("flip-in-cut", Some(Arg::Text("C".into()))), "{e}");
+    assert!((4..=5).contains(pose), "{e}");
+    let Some(Arg::Number(v)) = message.arg("value").cloned() else { panic!("{e}") };
+    assert!((88.0..=92.0).contains(&v), "{e}");
+}
