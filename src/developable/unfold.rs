@@ -309,4 +309,25 @@ mod tests {
         let fan = [DVec2::ZERO, DVec2::new(0.0, 2.0), DVec2::ZERO, DVec2::new(1.0, 2.0)];
         assert!(crossed_faces(&fan).is_empty());
     }
+
+    /// A 20 × 10 rectangle (two rulings of length 10, 20 apart) laid flat with B₁ one unit too
+    /// high: its edge A₁B₁ is 10 % long (the largest relative error; in absolute terms 1, so a
+    /// relative error is what is said), the corners at B₀ and B₁ are off by atan(1/20).
+    #[test]
+    fn the_isometry_error_of_a_flat_image_one_corner_off() {
+        let a = |x: f64, y: f64| DVec3::new(x, y, 0.0);
+        let s = RuledSurface::from_points(vec![a(0.0, 0.0), a(0.0, 10.0), a(20.0, 0.0), a(20.0, 10.0)]).unwrap();
+        let exact = [DVec2::new(0.0, 0.0), DVec2::new(0.0, 10.0), DVec2::new(20.0, 0.0), DVec2::new(20.0, 10.0)];
+        assert_eq!(isometry_error(&s, &exact), IsometryError { length: 0.0, angle: 0.0 });
+        let mut off = exact;
+        off[3].y = 11.0;
+        let e = isometry_error(&s, &off);
+        assert_near!(e.length, 0.1, 1e-15);
+        assert_near!(e.angle, (1.0f64 / 20.0).atan(), 1e-15);
+        // a cone's apex (A₀ = A₁, an edge of no length) split by 1.5 in the image: that edge's
+        // error is said in absolute terms (of at least a unit), 1.5, the largest
+        let c = RuledSurface::from_points(vec![a(0.0, 0.0), a(10.0, 0.0), a(0.0, 0.0), a(0.0, 10.0)]).unwrap();
+        let split = [DVec2::new(0.0, 0.0), DVec2::new(10.0, 0.0), DVec2::new(0.0, -1.5), DVec2::new(0.0, 10.0)];
+        assert_near!(isometry_error(&c, &split).length, 1.5, 1e-15);
+    }
 }
