@@ -384,4 +384,30 @@ pub(crate) mod tests {
         assert!(matches!(tangent_surface(&c[..2], span), Err(Error::TooFew { min: 3, .. })));
         assert_eq!(tangent_surface(&c, span).map(|s| s.len()), Ok(8));
     }
+
+    /// What counts as no edge, an apex on the directrix or in line with an edge is relative to
+    /// where the points are (ZERO_LENGTH_REL of their size): far from the origin, near it, and
+    /// with the apex off the origin.
+    #[test]
+    fn degenerate_is_relative_to_where_the_points_are() {
+        let span = Span { from: 0.0, to: 1.0 };
+        let reason = |e: Error| e.message().reason;
+        // edges of 1 a thousand from the origin, and edges of 1e-8 at distance 1: both real edges
+        let far = [DVec3::new(1000.0, 0.0, 0.0), DVec3::new(1001.0, 0.0, 0.0), DVec3::new(1001.0, 1.0, 0.0)];
+        assert_eq!(cylinder(&far, DVec3::Z, span).map(|s| s.len()), Ok(3));
+        let small = [DVec3::X, DVec3::new(1.0, 1e-8, 0.0), DVec3::new(1.0 + 1e-8, 1e-8, 0.0)];
+        assert_eq!(cylinder(&small, DVec3::Z, span).map(|s| s.len()), Ok(3));
+        // near the origin: an edge of 1e-14 at 1e-3 is one (1e-11 of the size), 1e-16 is none
+        let tiny = |e: f64| [DVec3::new(1e-3, 0.0, 0.0), DVec3::new(1e-3, e, 0.0), DVec3::new(1e-3 + e, e, 0.0)];
+        assert_eq!(cylinder(&tiny(1e-14), DVec3::Z, span).map(|s| s.len()), Ok(3));
+        assert_eq!(reason(cylinder(&tiny(1e-16), DVec3::Z, span).unwrap_err()), "directrix-edge-zero");
+        // a directrix point 1e-10 from an apex among points a thousand out: on it (1e-12 · 1000)
+        let apex = DVec3::new(1000.0, 0.0, 0.0);
+        let on = [apex + DVec3::new(0.0, 1e-10, 0.0), DVec3::new(1000.0, 5.0, 3.0), DVec3::new(990.0, 0.0, 4.0)];
+        assert_eq!(reason(cone(&on, apex, span).unwrap_err()), "apex-on-directrix");
+        // an edge in line with an apex off the origin
+        let apex = DVec3::new(5.0, 5.0, 5.0);
+        let in_line = [apex + DVec3::X, apex + 2.0 * DVec3::X, apex + DVec3::new(2.0, 1.0, 0.0)];
+        assert_eq!(reason(cone(&in_line, apex, span).unwrap_err()), "apex-in-line");
+    }
 }
