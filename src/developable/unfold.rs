@@ -330,4 +330,30 @@ mod tests {
         let split = [DVec2::new(0.0, 0.0), DVec2::new(10.0, 0.0), DVec2::new(0.0, -1.5), DVec2::new(0.0, 10.0)];
         assert_near!(isometry_error(&c, &split).length, 1.5, 1e-15);
     }
+
+    /// A flat rectangle 200 × 100 with one end lifted off its plane: by half of TORSAL_HEIGHT of
+    /// its size it is still unfolded (and `flat()` gives its image's x, y per point), by twice it
+    /// is refused as not developable.
+    #[test]
+    fn a_strip_is_unfolded_up_to_the_torsal_height_of_its_size() {
+        let a = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
+        let lifted = |z: f64| {
+            RuledSurface::from_points(vec![
+                a(0.0, 0.0, 0.0),
+                a(0.0, 100.0, 0.0),
+                a(200.0, 0.0, 0.0),
+                a(200.0, 100.0, z),
+            ])
+            .unwrap()
+        };
+        let size = size_of(lifted(0.0).points());
+        let u = Unfolding::of(&lifted(0.5 * TORSAL_HEIGHT * size)).unwrap();
+        assert_eq!(u.flat().len(), 8);
+        for (k, p) in u.points.iter().enumerate() {
+            assert_eq!([u.flat()[2 * k], u.flat()[2 * k + 1]], [p.x, p.y]);
+        }
+        assert_near!(u.points[3], DVec2::new(100.0, 200.0), 1e-9); // ruling 0 along x, the strip to +y
+        let e = Unfolding::of(&lifted(2.0 * TORSAL_HEIGHT * size)).unwrap_err();
+        assert_eq!(e.message().reason, "not-developable");
+    }
 }
