@@ -308,6 +308,21 @@ mod tests {
         assert_eq!(crossed_faces(&bow), [0]);
         let fan = [DVec2::ZERO, DVec2::new(0.0, 2.0), DVec2::ZERO, DVec2::new(1.0, 2.0)];
         assert!(crossed_faces(&fan).is_empty());
+        // turned and moved off the origin: the same; a face whose rulings do not meet, and one
+        // whose second ruling ends on the first, are no crossing either
+        let apart = [DVec2::ZERO, DVec2::new(0.0, 2.0), DVec2::new(1.0, 0.0), DVec2::new(1.5, 2.0)];
+        let touching = [DVec2::ZERO, DVec2::new(0.0, 2.0), DVec2::new(0.0, 1.0), DVec2::new(1.0, 1.5)];
+        for (angle, shift) in [(0.0, DVec2::ZERO), (0.7, DVec2::new(30.0, -20.0)), (-2.0, DVec2::new(-5.0, 8.0))] {
+            let turn = DVec2::from_angle(angle);
+            let moved = |q: &[DVec2; 4]| q.map(|p| turn.rotate(p) + shift);
+            assert_eq!(crossed_faces(&moved(&bow)), [0], "{angle} {shift}");
+            assert!(crossed_faces(&moved(&fan)).is_empty(), "{angle} {shift}");
+            assert!(crossed_faces(&moved(&apart)).is_empty(), "{angle} {shift}");
+            assert!(crossed_faces(&moved(&touching)).is_empty(), "{angle} {shift}");
+        }
+        // two faces: only the second crossed
+        let two = [apart[0], apart[1], apart[2], apart[3], DVec2::new(0.0, 2.5), DVec2::new(2.0, -0.5)];
+        assert_eq!(crossed_faces(&two), [1]);
     }
 
     /// A 20 × 10 rectangle (two rulings of length 10, 20 apart) laid flat with B₁ one unit too
