@@ -371,4 +371,70 @@ mod tests {
         let e = Unfolding::of(&lifted(2.0 * TORSAL_HEIGHT * size)).unwrap_err();
         assert_eq!(e.message().reason, "not-developable");
     }
+
+    /// A crossing is counted only when each ruling's ends lie off the other's line by more than
+    /// ZERO_LENGTH_REL of the pattern's size (at least 1) per unit of that line's length: exactly at
+    /// the tolerance is no crossing, twice it is one. The same with the two rulings' roles swapped,
+    /// for a ruling of length ½ (the tolerance scales with it) and off the origin (it scales with
+    /// the pattern's size, not with the distance from the origin).
+    #[test]
+    fn a_crossing_is_counted_beyond_the_tolerance_of_the_size_and_the_ruling() {
+        let p = DVec2::new;
+        let crossed =
+            |q: [DVec2; 4]| (!crossed_faces(&q).is_empty(), !crossed_faces(&[q[2], q[3], q[0], q[1]]).is_empty());
+        let tol = ZERO_LENGTH_REL;
+        // unit rulings within the unit disc: the tolerance is ZERO_LENGTH_REL itself
+        let unit = |y: f64| [p(0.0, 0.0), p(1.0, 0.0), p(0.5, y), p(0.5, -0.5)];
+        assert_eq!(crossed(unit(tol)), (false, false));
+        assert_eq!(crossed(unit(2.0 * tol)), (true, true));
+        // a ruling of length ½: its tolerance is halved
+        let half = |y: f64| [p(-0.25, 0.0), p(0.25, 0.0), p(0.0, y), p(0.0, -0.5)];
+        assert_eq!(crossed(half(0.5 * tol)), (false, false));
+        assert_eq!(crossed(half(2.0 * tol)), (true, true));
+        // a unit ruling 100 from the origin: the pattern's size is |(100.5, −1)|, the tolerance
+        // about 1.005e-10
+        let far = |y: f64| [p(100.0, 0.0), p(101.0, 0.0), p(100.5, y), p(100.5, -1.0)];
+        let size = p(100.5, -1.0).length();
+        assert_eq!(crossed(far(0.5 * tol * size)), (false, false));
+        assert_eq!(crossed(far(2.0 * tol * size)), (true, true));
+    }
+
+    /// Distances at the rounding of the strip's size: an edge exactly ZERO_LENGTH_REL long in a
+    /// strip of size 1 is compared absolutely (1e-12 too long is an error of 1e-12, not 100 %) and
+    /// has no corner angle (turned by 45° in the image, no angle changes); a cone 1e14 across
+    /// whose apex is split by 1.5 times the rounding of its size has that edge's error said in
+    /// units of that rounding, 1.5.
+    #[test]
+    fn the_isometry_error_measures_short_edges_against_the_rounding_of_the_size() {
+        let a = |x: f64, y: f64| DVec3::new(x, y, 0.0);
+        let floor = ZERO_LENGTH_REL;
+        let s = RuledSurface::from_points(vec![a(0.0, 0.0), a(0.0, 0.5), a(floor, 0.0), a(0.5, 0.5)]).unwrap();
+        assert_eq!(size_of(s.points()), 1.0);
+        let image = |a1: DVec2| [DVec2::new(0.0, 0.0), DVec2::new(0.0, 0.5), a1, DVec2::new(0.5, 0.5)];
+        let longer = isometry_error(&s, &image(DVec2::new(2.0 * floor, 0.0)));
+        assert!(longer.length > 0.5 * floor && longer.length < 4.0 * floor, "{longer:?}");
+        let turned = isometry_error(&s, &image(floor * DVec2::from_angle(-PI / 4.0)));
+        assert!(turned.angle < 1e-11, "{turned:?}");
+        let k = 1e13;
+        let c = RuledSurface::from_points(vec![a(0.0, 0.0), a(10.0 * k, 0.0), a(0.0, 0.0), a(0.0, 10.0 * k)]).unwrap();
+        let floor = ZERO_LENGTH_REL * size_of(c.points());
+        let split =
+            [DVec2::new(0.0, 0.0), DVec2::new(10.0 * k, 0.0), DVec2::new(0.0, -1.5 * floor), DVec2::new(0.0, 10.0 * k)];
+        assert_near!(isometry_error(&c, &split).length, 1.5, 1e-12);
+    }
+
+    /// A face whose next ruling crosses the line of ruling i at its midpoint (to within the
+    /// rounding of the strip's size): the face's side is taken from that ruling's end a_{i+1}, so
+    /// A₁ lands where a₁ is, to the left of ruling 0.
+    #[test]
+    fn a_next_ruling_through_the_line_of_the_last_is_laid_out_from_its_end() {
+        let a = |x: f64, y: f64| DVec3::new(x, y, 0.0);
+        let d = -1e-10; // the midpoint of ruling 1, off ruling 0's line by far less than 1e-12 × 1414
+        let s =
+            RuledSurface::from_points(vec![a(0.0, 0.0), a(0.0, 1000.0), a(500.0, 0.0), a(-500.0 + 2.0 * d, 1000.0)])
+                .unwrap();
+        let u = Unfolding::of(&s).unwrap();
+        assert_near!(u.points[2], DVec2::new(0.0, 500.0), 1e-9);
+        assert_near!(u.points[3], DVec2::new(1000.0, -500.0), 1e-9);
+    }
 }
