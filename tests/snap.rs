@@ -77,7 +77,7 @@ fn an_end_slid_along_its_ruling_keeps_the_line() {
         let eye = DVec3::new(uniform(&mut seed), uniform(&mut seed), uniform(&mut seed)) * 30.0 - DVec3::splat(15.0);
         // the pointer beside the ruling, past its end: the end slides along the line only
         let at = s.at(1.3) + DVec3::splat(0.2);
-        let along = Constraint::Line { point: s.b, direction: s.b - s.a };
+        let along = Constraint::On(Target::Line { point: s.b, direction: s.b - s.a });
         let placed = place(&Ray { origin: eye, direction: at - eye }, s.b, &along, &[], &BOX);
         let b = placed.point.unwrap_or_else(|why| panic!("ruling {i}: {why:?}"));
         assert!(b.distance(s.b) > 0.1, "ruling {i}: the end moved");

@@ -4,12 +4,11 @@
 //! constraints a scene or an exercise declares. The core projects the pointer's ray onto the
 //! constraint, and a snap keeps it.
 
-use super::target::{sane, vanishes, Shape};
+use super::target::{sane, vanishes, Shape, Target};
 use glam::DVec3;
 
 /// Where a dragged handle may go.
 #[derive(Debug, Clone, Copy, PartialEq)]
-// Line and Plane are written as Target's are, but a line here cannot lose its direction: two enums
 pub enum Constraint {
     /// Anywhere: the pointer moves it in the plane through where it started with this normal
     /// (the view's direction), and a snap may take it off that plane.
@@ -17,22 +16,10 @@ pub enum Constraint {
         /// The plane's normal.
         normal: DVec3,
     },
-    /// On the line point + t·direction (it stays on it when snapped).
-    Line {
-        /// A point of the line.
-        point: DVec3,
-        /// Its direction, of any non-zero length.
-        direction: DVec3,
-    },
-    /// In the plane through `point` orthogonal to `normal` (it stays in it when snapped).
-    Plane {
-        /// A point of the plane.
-        point: DVec3,
-        /// Its normal, of any non-zero length.
-        normal: DVec3,
-    },
-    /// Held at this point.
-    Fixed(DVec3),
+    /// On a target, where a snap keeps it too: held at a point, on a line, in a plane. Unlike a
+    /// snap's target, a line here must have a direction (one that vanishes where it is, see
+    /// [`Target`], cannot hold) and a plane a normal.
+    On(Target),
 }
 
 /// A constraint made safe: `None` for anywhere, else its shape; `Err(())` when it cannot hold
@@ -46,27 +33,9 @@ pub(super) fn shape_of(constraint: &Constraint, start: DVec3) -> Result<Option<S
                 Err(())
             }
         }
-        Constraint::Line { point, direction } => {
-            if sane(point) && sane(direction) && !vanishes(point, direction) {
-                Ok(Some(Shape::Line(point, direction)))
-            } else {
-                Err(())
-            }
-        }
-        Constraint::Plane { point, normal } => {
-            if sane(point) && sane(normal) && normal != DVec3::ZERO {
-                Ok(Some(Shape::Plane(point, normal)))
-            } else {
-                Err(())
-            }
-        }
-        Constraint::Fixed(p) => {
-            if sane(p) {
-                Ok(Some(Shape::Point(p)))
-            } else {
-                Err(())
-            }
-        }
+        // a target's line without a direction is its point: a constraint's cannot hold
+        Constraint::On(Target::Line { point, direction }) if vanishes(point, direction) => Err(()),
+        Constraint::On(target) => target.shape().map(Some).ok_or(()),
     }
 }
 
@@ -79,14 +48,15 @@ mod tests {
         let p = DVec3::new(1.0, 2.0, 3.0);
         assert_eq!(shape_of(&Constraint::View { normal: DVec3::Z }, p), Ok(None));
         assert_eq!(shape_of(&Constraint::View { normal: DVec3::ZERO }, p), Err(()));
-        assert_eq!(
-            shape_of(&Constraint::Line { point: p, direction: DVec3::Z }, p),
-            Ok(Some(Shape::Line(p, DVec3::Z)))
-        );
-        assert_eq!(shape_of(&Constraint::Line { point: p, direction: DVec3::ZERO }, p), Err(()));
-        assert_eq!(shape_of(&Constraint::Plane { point: p, normal: DVec3::ZERO }, p), Err(()));
-        assert_eq!(shape_of(&Constraint::Plane { point: DVec3::splat(f64::NAN), normal: DVec3::Z }, p), Err(()));
-        assert_eq!(shape_of(&Constraint::Fixed(DVec3::new(f64::INFINITY, 0.0, 0.0)), p), Err(()));
-        assert_eq!(shape_of(&Constraint::Fixed(p), p), Ok(Some(Shape::Point(p))));
+        let on = |t: Target| shape_of(&Constraint::On(t), p);
+        assert_eq!(on(Target::Line { point: p, direction: DVec3::Z }), Ok(Some(Shape::Line(p, DVec3::Z))));
+        assert_eq!(on(Target::Line { point: p, direction: DVec3::ZERO }), Err(()));
+        assert_eq!(on(Target::Line { point: p, direction: DVec3::splat(1e-16) }), Err(()));
+        assert_eq!(on(Target::Line { point: p, direction: DVec3::new(f64::NAN, 1.0, 0.0) }), Err(()));
+        assert_eq!(on(Target::Plane { point: p, normal: DVec3::Z }), Ok(Some(Shape::Plane(p, DVec3::Z))));
+        assert_eq!(on(Target::Plane { point: p, normal: DVec3::ZERO }), Err(()));
+        assert_eq!(on(Target::Plane { point: DVec3::splat(f64::NAN), normal: DVec3::Z }), Err(()));
+        assert_eq!(on(Target::Point(DVec3::new(f64::INFINITY, 0.0, 0.0))), Err(()));
+        assert_eq!(on(Target::Point(p)), Ok(Some(Shape::Point(p))));
     }
 }

@@ -80,7 +80,7 @@ fn a_rulings_end_snapped_onto_its_neighbour_makes_them_meet() {
 fn a_line_constraint_keeps_the_handle_on_it() {
     // vertical through (−0.4, 0.9, 2.6) (a lifted cone ruling's end), the pointer anywhere
     let start = DVec3::new(-0.403, 0.912, 2.6);
-    let vertical = Constraint::Line { point: start, direction: DVec3::Z };
+    let vertical = Constraint::On(Target::Line { point: start, direction: DVec3::Z });
     let eye = DVec3::new(6.0, -5.0, 4.0);
     let targets = [
         Target::Plane { point: DVec3::new(0.0, 0.0, 2.2), normal: DVec3::Z },
@@ -110,7 +110,7 @@ fn a_line_constraint_keeps_the_handle_on_it() {
 
 #[test]
 fn a_plane_constraint_keeps_the_handle_in_it() {
-    let plane = Constraint::Plane { point: DVec3::ZERO, normal: DVec3::Z };
+    let plane = Constraint::On(Target::Plane { point: DVec3::ZERO, normal: DVec3::Z });
     let eye = DVec3::new(1.0, -6.0, 5.0);
     let targets = [
         Target::Line { point: DVec3::new(2.0, 1.0, 3.0), direction: DVec3::new(0.0, 1.0, -1.0) },
@@ -139,10 +139,16 @@ fn a_plane_constraint_keeps_the_handle_in_it() {
 #[test]
 fn a_fixed_handle_stays_and_snaps_nowhere() {
     let at = DVec3::new(1.0, 2.0, 3.0);
-    let p =
-        place(&ray(DVec3::splat(9.0), DVec3::ZERO), at, &Constraint::Fixed(at), &[Target::Point(DVec3::ZERO)], &BOX);
+    let p = place(
+        &ray(DVec3::splat(9.0), DVec3::ZERO),
+        at,
+        &Constraint::On(Target::Point(at)),
+        &[Target::Point(DVec3::ZERO)],
+        &BOX,
+    );
     assert_eq!(p, Placement { point: Ok(at), snaps: vec![None] });
-    let outside = place(&ray(DVec3::splat(9.0), DVec3::ZERO), at, &Constraint::Fixed(DVec3::splat(20.0)), &[], &BOX);
+    let outside =
+        place(&ray(DVec3::splat(9.0), DVec3::ZERO), at, &Constraint::On(Target::Point(DVec3::splat(20.0))), &[], &BOX);
     assert_eq!(outside.point, Err(Held::Outside));
 }
 
@@ -152,22 +158,22 @@ fn constraints_that_cannot_hold_say_why() {
     let at = DVec3::ZERO;
     let p = |c: Constraint| place(&r, at, &c, &[Target::Point(DVec3::ZERO)], &BOX);
     // the ray runs along the line, parallel to the plane: turn the view
-    assert_eq!(p(Constraint::Line { point: at, direction: DVec3::Y }).point, Err(Held::Parallel));
-    assert_eq!(p(Constraint::Plane { point: at, normal: DVec3::Z }).point, Err(Held::Parallel));
+    assert_eq!(p(Constraint::On(Target::Line { point: at, direction: DVec3::Y })).point, Err(Held::Parallel));
+    assert_eq!(p(Constraint::On(Target::Plane { point: at, normal: DVec3::Z })).point, Err(Held::Parallel));
     // a line or plane that misses the box
     assert_eq!(
-        p(Constraint::Line { point: DVec3::new(0.0, 0.0, 50.0), direction: DVec3::X }).point,
+        p(Constraint::On(Target::Line { point: DVec3::new(0.0, 0.0, 50.0), direction: DVec3::X })).point,
         Err(Held::Outside)
     );
-    let high = Constraint::Plane { point: DVec3::new(0.0, 0.0, 50.0), normal: DVec3::Z };
+    let high = Constraint::On(Target::Plane { point: DVec3::new(0.0, 0.0, 50.0), normal: DVec3::Z });
     assert_eq!(
         place(&ray(DVec3::new(0.0, -9.0, 60.0), DVec3::new(0.0, 500.0, 50.0)), at, &high, &[], &BOX).point,
         Err(Held::Outside)
     );
     // a line without a direction, a plane without a normal, a NaN: degenerate, nothing snaps
     for c in [
-        Constraint::Line { point: at, direction: DVec3::ZERO },
-        Constraint::Plane { point: at, normal: DVec3::ZERO },
+        Constraint::On(Target::Line { point: at, direction: DVec3::ZERO }),
+        Constraint::On(Target::Plane { point: at, normal: DVec3::ZERO }),
         Constraint::View { normal: DVec3::splat(f64::NAN) },
     ] {
         assert_eq!(p(c), Placement { point: Err(Held::Degenerate), snaps: vec![None] });
@@ -201,7 +207,7 @@ fn degenerate_targets_give_a_point_or_none_never_nan() {
     assert_eq!(&p.snaps[1..5], &[None, None, None, None]);
     assert_near!(p.snaps[5].unwrap(), DVec3::new(0.0, 0.0, 1.0), EXACT);
     // two coincident lines as constraint and target: the handle's own place
-    let line = Constraint::Line { point: DVec3::ZERO, direction: DVec3::X };
+    let line = Constraint::On(Target::Line { point: DVec3::ZERO, direction: DVec3::X });
     let same = Target::Line { point: DVec3::new(3.0, 0.0, 0.0), direction: DVec3::new(-2.0, 0.0, 0.0) };
     let q = place(&ray(eye, DVec3::new(2.0, 0.0, 0.0)), DVec3::ZERO, &line, &[same], &BOX);
     assert_eq!(q.snaps[0], Some(q.point.unwrap()));
@@ -222,9 +228,9 @@ fn whatever_the_input_no_nan_and_nothing_outside_the_box() {
         let ray = Ray { origin: pick(30.0), direction: pick(1.0) };
         let constraint = match k % 4 {
             0 => Constraint::View { normal: pick(1.0) },
-            1 => Constraint::Line { point: pick(12.0), direction: pick(1.0) },
-            2 => Constraint::Plane { point: pick(12.0), normal: pick(1.0) },
-            _ => Constraint::Fixed(pick(12.0)),
+            1 => Constraint::On(Target::Line { point: pick(12.0), direction: pick(1.0) }),
+            2 => Constraint::On(Target::Plane { point: pick(12.0), normal: pick(1.0) }),
+            _ => Constraint::On(Target::Point(pick(12.0))),
         };
         let targets = [
             Target::Point(pick(12.0)),
@@ -259,14 +265,14 @@ fn a_line_meets_the_box_between_its_exits_the_faces_included() {
     // a line that passes the box
     assert_eq!(b.span(DVec3::new(0.0, 0.0, 5.0), DVec3::new(1.0, -1.0, 0.0)), None);
     // a line dragged out of the box stops at its exit, on the line
-    let line = Constraint::Line { point: centre, direction: DVec3::new(1.0, 0.5, 0.25) };
+    let line = Constraint::On(Target::Line { point: centre, direction: DVec3::new(1.0, 0.5, 0.25) });
     let eye = DVec3::new(1.5, -20.0, 5.0);
     let out = place(&ray(eye, DVec3::new(40.0, 3.0, 5.0)), centre, &line, &[], &b).point.unwrap();
     assert_near!(out, DVec3::new(2.0, 3.25, 5.125), EXACT);
     let back = place(&ray(eye, DVec3::new(-40.0, 3.0, 5.0)), centre, &line, &[], &b).point.unwrap();
     assert_near!(back, DVec3::new(1.0, 2.75, 4.875), EXACT);
     // a plane dragged out: from the start's shadow towards the pointer's point, cut at the box
-    let plane = Constraint::Plane { point: centre, normal: DVec3::Z };
+    let plane = Constraint::On(Target::Plane { point: centre, normal: DVec3::Z });
     let above = DVec3::new(1.5, 3.0, 30.0);
     let cut = place(&ray(above, DVec3::new(5.5, 9.0, 5.0)), centre, &plane, &[], &b).point.unwrap();
     // (the shadow (1.5, 3, 5), the point (5.5, 9, 5): x leaves first, at an eighth of the way)
@@ -276,7 +282,7 @@ fn a_line_meets_the_box_between_its_exits_the_faces_included() {
 #[test]
 fn what_counts_as_on_a_line_is_a_share_of_the_boxs_size() {
     // the box ±10 is 20√3 across: on means within 1e-9 of that, 3.46e-8
-    let vertical = Constraint::Line { point: DVec3::ZERO, direction: DVec3::Z };
+    let vertical = Constraint::On(Target::Line { point: DVec3::ZERO, direction: DVec3::Z });
     let eye = DVec3::new(6.0, -5.0, 4.0);
     let near = Target::Point(DVec3::new(2e-8, 0.0, 1.0));
     let off = Target::Point(DVec3::new(5e-8, 0.0, 1.0));
@@ -290,7 +296,7 @@ fn what_counts_as_on_a_line_is_a_share_of_the_boxs_size() {
 
 #[test]
 fn a_line_along_a_plane_snaps_onto_it_only_when_it_lies_in_it() {
-    let line = Constraint::Line { point: DVec3::new(0.0, 1.0, 1.0), direction: DVec3::X };
+    let line = Constraint::On(Target::Line { point: DVec3::new(0.0, 1.0, 1.0), direction: DVec3::X });
     let targets = [
         Target::Plane { point: DVec3::new(5.0, -3.0, 1.0), normal: DVec3::Z },
         Target::Plane { point: DVec3::new(5.0, -3.0, 1.5), normal: DVec3::Z },

@@ -99,9 +99,11 @@ pub fn snap_point(#[wasm_bindgen(unchecked_param_type = "SnapQuery")] query: JsV
     let v = DVec3::from_array;
     let constraint = match q.constraint {
         SnapConstraint::View { normal } => Constraint::View { normal: v(normal) },
-        SnapConstraint::Line { point, direction } => Constraint::Line { point: v(point), direction: v(direction) },
-        SnapConstraint::Plane { point, normal } => Constraint::Plane { point: v(point), normal: v(normal) },
-        SnapConstraint::Fixed { point } => Constraint::Fixed(v(point)),
+        SnapConstraint::Line { point, direction } => {
+            Constraint::On(Target::Line { point: v(point), direction: v(direction) })
+        }
+        SnapConstraint::Plane { point, normal } => Constraint::On(Target::Plane { point: v(point), normal: v(normal) }),
+        SnapConstraint::Fixed { point } => Constraint::On(Target::Point(v(point))),
     };
     let targets: Vec<Target> = q
         .targets
