@@ -79,13 +79,17 @@ class ImportedSegments(TypedDict):
     rows: NotRequired[int]
     cols: NotRequired[int]
 
-class SurfaceInfo(TypedDict):
+class CatalogueEntry(TypedDict):
+    """What ``AnalyticSurface.list()`` and ``AnalyticCongruence.list()`` say of every entry."""
+
     name: str
     title: str
     u_min: float
     u_max: float
     v_min: float
     v_max: float
+
+class SurfaceInfo(CatalogueEntry):
     closed: bool
 
 class Ranges(TypedDict, total=False):
@@ -96,6 +100,15 @@ class Ranges(TypedDict, total=False):
     u_max: Optional[float]
     v_min: Optional[float]
     v_max: Optional[float]
+    closed: Optional[bool]
+
+class CurveOptions(TypedDict, total=False):
+    """The keywords of ``subdivide_polygon`` and ``turning_angles`` besides ``scheme`` (None: the
+    default)."""
+
+    steps: Optional[int]
+    w: Optional[float]
+    degree: Optional[int]
     closed: Optional[bool]
 
 class FormulaParameters(TypedDict, total=False):
@@ -112,13 +125,7 @@ class SurfacePreset(TypedDict):
     closed: bool
     parameters: FormulaParameters
 
-class CongruenceInfo(TypedDict):
-    name: str
-    title: str
-    u_min: float
-    u_max: float
-    v_min: float
-    v_max: float
+class CongruenceInfo(CatalogueEntry):
     rows: int
     cols: int
 
@@ -510,24 +517,8 @@ class ToolPath:
 # --- free functions
 
 def linear_complex(a: ArrayLike, b: ArrayLike, *, tolerance: Optional[float] = None) -> LinearComplexFit: ...
-def subdivide_polygon(
-    points: ArrayLike,
-    *,
-    scheme: CurveScheme,
-    steps: Optional[int] = None,
-    w: Optional[float] = None,
-    degree: Optional[int] = None,
-    closed: Optional[bool] = None,
-) -> F64: ...
-def turning_angles(
-    points: ArrayLike,
-    *,
-    scheme: CurveScheme,
-    steps: Optional[int] = None,
-    w: Optional[float] = None,
-    degree: Optional[int] = None,
-    closed: Optional[bool] = None,
-) -> F64: ...
+def subdivide_polygon(points: ArrayLike, *, scheme: CurveScheme, **options: Unpack[CurveOptions]) -> F64: ...
+def turning_angles(points: ArrayLike, *, scheme: CurveScheme, **options: Unpack[CurveOptions]) -> F64: ...
 def fit_line(points: ArrayLike) -> LineFit: ...
 def import_segments(text: str, format: Optional[Literal["csv", "json"]] = None) -> ImportedSegments: ...
 def detect_import(text: str) -> Literal["poses", "target", "segments"]: ...

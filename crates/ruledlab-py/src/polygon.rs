@@ -51,48 +51,54 @@ fn curve_scheme(
     Ok((scheme, closed, steps))
 }
 
-/// A polygon ((N, 3)) refined by a curve scheme of Section 4: ``scheme`` "chaikin", "bspline"
-/// (``degree`` 1 … 7, default 3), "bezier" (de Casteljau) or "four-point" (Dyn–Levin–Gregory
-/// (8), tension ``w``, default 1/16); ``steps`` 0 … 24 (default 1); ``closed``. Releases the GIL.
-#[pyfunction]
-#[pyo3(signature = (points, *, scheme, steps=None, w=None, degree=None, closed=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn subdivide_polygon<'py>(
-    py: Python<'py>,
-    points: &Bound<'py, PyAny>,
-    scheme: &Bound<'py, PyAny>,
-    steps: Option<&Bound<'py, PyAny>>,
-    w: Option<&Bound<'py, PyAny>>,
-    degree: Option<&Bound<'py, PyAny>>,
-    closed: Option<&Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyAny>> {
-    const F: &str = "subdivide_polygon";
-    let (scheme, closed, steps) = curve_scheme(F, scheme, steps, w, degree, closed)?;
-    let out = with_polygon(py, F, points, |p| ruledlab::subdivide_polygon(p, scheme, closed, steps))?;
-    arrays::points(py, out)
+/// A function of a polygon ((N, 3)) and a curve scheme's keywords: `run` gives the core's
+/// answer for the points, the scheme, closedness and steps, and `out` makes it an array. Both
+/// functions take the same keywords and PyO3 reads a function's keywords from its own
+/// signature: it is written once, here.
+macro_rules! polygon_function {
+    ($(#[$doc:meta])* $name:ident, run: $run:path, out: $out:path) => {
+        $(#[$doc])*
+        #[pyfunction]
+        #[pyo3(signature = (points, *, scheme, steps=None, w=None, degree=None, closed=None))]
+        #[allow(clippy::too_many_arguments)]
+        pub fn $name<'py>(
+            py: Python<'py>,
+            points: &Bound<'py, PyAny>,
+            scheme: &Bound<'py, PyAny>,
+            steps: Option<&Bound<'py, PyAny>>,
+            w: Option<&Bound<'py, PyAny>>,
+            degree: Option<&Bound<'py, PyAny>>,
+            closed: Option<&Bound<'py, PyAny>>,
+        ) -> PyResult<Bound<'py, PyAny>> {
+            const F: &str = stringify!($name);
+            let (scheme, closed, steps) = curve_scheme(F, scheme, steps, w, degree, closed)?;
+            let out = with_polygon(py, F, points, |p| $run(p, scheme, closed, steps))?;
+            $out(py, out)
+        }
+    };
 }
 
-// subdivide_polygon's keywords again: the two functions take the same options, and PyO3 binds
-// each function's own signature (what reads them is one: curve_scheme, with_polygon)
-/// The largest turning angle (radians, 0 … π: the largest angle between an edge and the next)
-/// of a polygon ((N, 3)) and of each of its refinements by a curve scheme (the options of
-/// ``subdivide_polygon``): (steps + 1,), the first for the polygon itself. Where the limit is a
-/// regular C¹ curve the polygons turn less and less from step to step.
-#[pyfunction]
-#[pyo3(signature = (points, *, scheme, steps=None, w=None, degree=None, closed=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn turning_angles<'py>(
-    py: Python<'py>,
-    points: &Bound<'py, PyAny>,
-    scheme: &Bound<'py, PyAny>,
-    steps: Option<&Bound<'py, PyAny>>,
-    w: Option<&Bound<'py, PyAny>>,
-    degree: Option<&Bound<'py, PyAny>>,
-    closed: Option<&Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyAny>> {
-    const F: &str = "turning_angles";
-    let (scheme, closed, steps) = curve_scheme(F, scheme, steps, w, degree, closed)?;
-    let out = with_polygon(py, F, points, |p| ruledlab::turning_angles(p, scheme, closed, steps))?;
-    let n = out.len();
-    arrays::array(py, out, &[n])
+polygon_function!(
+    /// A polygon ((N, 3)) refined by a curve scheme of Section 4: ``scheme`` "chaikin", "bspline"
+    /// (``degree`` 1 … 7, default 3), "bezier" (de Casteljau) or "four-point" (Dyn–Levin–Gregory
+    /// (8), tension ``w``, default 1/16); ``steps`` 0 … 24 (default 1); ``closed``. Releases the GIL.
+    subdivide_polygon,
+    run: ruledlab::subdivide_polygon,
+    out: arrays::points
+);
+
+polygon_function!(
+    /// The largest turning angle (radians, 0 … π: the largest angle between an edge and the next)
+    /// of a polygon ((N, 3)) and of each of its refinements by a curve scheme (the options of
+    /// ``subdivide_polygon``): (steps + 1,), the first for the polygon itself. Where the limit is a
+    /// regular C¹ curve the polygons turn less and less from step to step.
+    turning_angles,
+    run: ruledlab::turning_angles,
+    out: angles
+);
+
+/// The turning angles as a 1-D array.
+fn angles(py: Python<'_>, angles: Vec<f64>) -> PyResult<Bound<'_, PyAny>> {
+    let n = angles.len();
+    arrays::array(py, angles, &[n])
 }
