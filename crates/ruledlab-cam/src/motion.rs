@@ -179,6 +179,7 @@ fn accelerate(blocks: &mut [BlockMotion], limits: &[Option<f64>; 5]) {
 mod tests {
     use super::*;
     use glam::DVec3;
+    use ruledlab::assert_near;
 
     fn joints(x: f64, c: f64) -> Joints {
         Joints { xyz: DVec3::new(x, 0.0, 0.0), rotary: [0.0, c] }
@@ -247,5 +248,85 @@ mod tests {
             assert!(!x.over);
         }
         assert!((acceleration(&b[0], &b[1], 4) - 500.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn each_limit_has_its_code_and_axis() {
+        let cases = [
+            (Limit::Feed, 0, None),
+            (Limit::Speed(3), 1, Some(3)),
+            (Limit::Acceleration(4), 2, Some(4)),
+            (Limit::FeedWord, 3, None),
+        ];
+        for (limit, code, axis) in cases {
+            assert_eq!((limit.code(), limit.axis()), (code, axis), "{limit:?}");
+        }
+        // a block of no time has no speed and no acceleration at its junctions
+        let still = BlockMotion { delta: [1.0, 0.0, 0.0, 0.0, 10.0], ..BlockMotion::default() };
+        assert_eq!(still.speed(0), 0.0);
+        let moving = BlockMotion { minutes: 0.01, delta: [0.0, 0.0, 0.0, 0.0, -10.0], ..BlockMotion::default() };
+        assert_eq!((acceleration(&still, &moving, 4), acceleration(&moving, &still, 4)), (0.0, 0.0));
+    }
+
+    /// The feed word's time equal to the feed's (100 in a word of at most 100 000: 0.001 min,
+    /// as 1 mm at 1000 mm/min): the feed set it, the word did not.
+    #[test]
+    fn a_tie_with_the_feed_is_the_feeds() {
+        let mut m = Machine::preset("table-table-ac").unwrap();
+        m.acceleration = None;
+        m.rotary = m.rotary.map(|r| crate::machine::RotaryAxis { acceleration: None, ..r });
+        let b = BlockNeed { word: Some((100.0, 100_000.0)), ..need(joints(0.0, 0.0), joints(1.0, 0.0), 1.0) };
+        assert_eq!(time_blocks(&m, &[b], 1000.0)[0], BlockMotion { minutes: 0.001, delta: [1.0, 0.0, 0.0, 0.0, 0.0], ..BlockMotion::default() });
+    }
+
+    fn c_limited(acceleration: f64) -> Machine {
+        let mut m = Machine::preset("table-table-ac").unwrap();
+        m.speed = None;
+        m.acceleration = None;
+        m.rotary[0].speed = None;
+        m.rotary[0].acceleration = None;
+        m.rotary[1].speed = None;
+        m.rotary[1].acceleration = Some(acceleration);
+        m
+    }
+
+    /// A junction that needs its axis's acceleration exactly is not slowed; one that needs half a
+    /// unit more is, by the square root of the excess and a hair (1e-12) more, so that it then
+    /// needs at most the limit.
+    #[test]
+    fn a_junction_is_slowed_only_beyond_the_limit_and_then_within_it() {
+        let blocks = [need(joints(0.0, 0.0), joints(10.0, 10.0), 10.0), need(joints(10.0, 10.0), joints(20.0, 0.0), 10.0)];
+        let free = time_blocks(&c_limited(1e9), &blocks, 6000.0);
+        let need = acceleration(&free[0], &free[1], 4);
+        assert_near!(need, 2000.0, 1e-9);
+        assert_eq!(time_blocks(&c_limited(need), &blocks, 6000.0), free);
+        let slowed = time_blocks(&c_limited(need - 0.5), &blocks, 6000.0);
+        let s = (need / (need - 0.5)).sqrt() * (1.0 + 1e-12);
+        for (x, f) in slowed.iter().zip(&free) {
+            assert_eq!((x.minutes, x.limit), (f.minutes * s, Limit::Acceleration(4)));
+        }
+        assert!(acceleration(&slowed[0], &slowed[1], 4) <= need - 0.5);
+    }
+
+    /// Slowing a junction changes the one before it: passes until none needs more (three
+    /// blocks C +8°, +2°, +8° over 20, 6 and 20 mm at 100°/s²: within 1e-6 of the limit, none
+    /// over); where eight passes do not settle it (20, 6 and 15 mm) the block after the junction
+    /// still over is marked, and only that one.
+    #[test]
+    fn the_passes_settle_the_junctions_or_say_where_they_do_not() {
+        let m = c_limited(100.0);
+        let chain = |d: [f64; 3]| {
+            let c = [0.0, 8.0, 10.0, 18.0];
+            (0..3).map(|i| need(joints(i as f64, c[i]), joints(i as f64 + 1.0, c[i + 1]), d[i])).collect::<Vec<_>>()
+        };
+        let settled = time_blocks(&m, &chain([20.0, 6.0, 20.0]), 6000.0);
+        assert!(settled.iter().all(|b| !b.over));
+        for i in 1..3 {
+            assert!(acceleration(&settled[i - 1], &settled[i], 4) <= 100.0 * (1.0 + 1e-6));
+        }
+        let unsettled = time_blocks(&m, &chain([20.0, 6.0, 15.0]), 6000.0);
+        assert_eq!(unsettled.iter().map(|b| b.over).collect::<Vec<_>>(), [false, true, false]);
+        let worst = acceleration(&unsettled[0], &unsettled[1], 4);
+        assert!(worst > 100.0 * (1.0 + 1e-6) && worst < 100.01, "{worst}");
     }
 }
