@@ -288,6 +288,7 @@ pub fn validate(o: &PostOptions, controller: &dyn Controller) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DVec3;
 
     #[test]
     fn units() {
@@ -370,6 +371,15 @@ mod tests {
             (PostOptions { numbering: Some(Numbering { stride: 0, lines: vec![] }), ..base() }, "numbering"),
         ] {
             assert_eq!(option(o).as_deref(), Some(name));
+        }
+        // target points: at least one, every coordinate finite and of at most 1e7
+        let target = |t: Vec<DVec3>| option(PostOptions { target: Some(t), ..base() });
+        assert_eq!(target(vec![]).as_deref(), Some("target"));
+        assert_eq!(target(vec![DVec3::ZERO, DVec3::new(-1e7, 1e7, 0.0)]), None);
+        for bad in
+            [DVec3::new(0.0, 0.0, 1e7 * (1.0 + 1e-15)), DVec3::new(-2e7, 0.0, 0.0), DVec3::new(0.0, f64::NAN, 0.0)]
+        {
+            assert_eq!(target(vec![DVec3::ONE, bad]).as_deref(), Some("target"), "{bad}");
         }
         for o in [
             PostOptions { tool: 99_999, work_offset: 6, name: "Z_9".repeat(8), ..base() },
