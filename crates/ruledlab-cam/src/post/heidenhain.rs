@@ -270,4 +270,21 @@ mod tests {
             ("99999.999".into(), "0.001".into(), "12.346".into())
         );
     }
+
+    /// What the feed word's bound is measured on (module documentation): the tip's distance; in
+    /// machine coordinates on a block that turns, X Y Z's distance from 0.01 mm on, below it the
+    /// turn in degrees; lengths in the program's units.
+    #[test]
+    fn the_feed_word_is_bounded_on_what_it_measures() {
+        let travel = |turning, linear| Travel { turning, distance: 25.4, linear, turn: 3.0 };
+        let measure = |mode, t: Travel, units| Heidenhain.feed_measure(mode, &t, units);
+        assert_eq!(measure(Mode::Tcp, travel(true, 0.5), Units::Mm), 25.4);
+        assert_eq!(measure(Mode::Machine, travel(false, 0.5), Units::Mm), 25.4);
+        assert_eq!(measure(Mode::Machine, travel(true, 0.5), Units::Mm), 0.5);
+        assert_eq!(measure(Mode::Machine, travel(true, 0.01), Units::Mm), 0.01);
+        assert_eq!(measure(Mode::Machine, travel(true, 0.0099), Units::Mm), 3.0);
+        assert_eq!(measure(Mode::Tcp, travel(true, 0.5), Units::Inch), 1.0);
+        assert_eq!(measure(Mode::Machine, travel(true, 50.8), Units::Inch), 2.0);
+        assert_eq!(measure(Mode::Machine, travel(true, 0.0099), Units::Inch), 3.0);
+    }
 }
