@@ -229,13 +229,7 @@ mod tests {
     /// 50°/s each way over 0.2 s: 500°/s², at the limit).
     #[test]
     fn a_reversal_beyond_the_acceleration_is_slowed() {
-        let mut m = Machine::preset("table-table-ac").unwrap();
-        m.speed = None;
-        m.acceleration = None;
-        m.rotary[0].speed = None;
-        m.rotary[0].acceleration = None;
-        m.rotary[1].speed = None;
-        m.rotary[1].acceleration = Some(500.0);
+        let m = c_limited(500.0);
         // 10 mm at 6000 mm/min: 0.1 s; C +10°, then −10°
         let b = time_blocks(
             &m,
@@ -276,9 +270,13 @@ mod tests {
         m.acceleration = None;
         m.rotary = m.rotary.map(|r| crate::machine::RotaryAxis { acceleration: None, ..r });
         let b = BlockNeed { word: Some((100.0, 100_000.0)), ..need(joints(0.0, 0.0), joints(1.0, 0.0), 1.0) };
-        assert_eq!(time_blocks(&m, &[b], 1000.0)[0], BlockMotion { minutes: 0.001, delta: [1.0, 0.0, 0.0, 0.0, 0.0], ..BlockMotion::default() });
+        assert_eq!(
+            time_blocks(&m, &[b], 1000.0)[0],
+            BlockMotion { minutes: 0.001, delta: [1.0, 0.0, 0.0, 0.0, 0.0], ..BlockMotion::default() }
+        );
     }
 
+    /// table-table-ac with no limit but C's acceleration.
     fn c_limited(acceleration: f64) -> Machine {
         let mut m = Machine::preset("table-table-ac").unwrap();
         m.speed = None;
@@ -295,7 +293,8 @@ mod tests {
     /// needs at most the limit.
     #[test]
     fn a_junction_is_slowed_only_beyond_the_limit_and_then_within_it() {
-        let blocks = [need(joints(0.0, 0.0), joints(10.0, 10.0), 10.0), need(joints(10.0, 10.0), joints(20.0, 0.0), 10.0)];
+        let blocks =
+            [need(joints(0.0, 0.0), joints(10.0, 10.0), 10.0), need(joints(10.0, 10.0), joints(20.0, 0.0), 10.0)];
         let free = time_blocks(&c_limited(1e9), &blocks, 6000.0);
         let need = acceleration(&free[0], &free[1], 4);
         assert_near!(need, 2000.0, 1e-9);
