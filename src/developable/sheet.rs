@@ -587,4 +587,115 @@ mod tests {
             }
         }
     }
+
+    /// A face's plane is taken through its diagonals: a strip of two faces, the first skew (a₁
+    /// lifted by 1 off the plane of the others), the second flat, bends at its middle ruling by
+    /// the angle between (1, −1, −2) and (−1, −1, −2), the diagonals' normals: acos(2/3).
+    #[test]
+    fn a_skew_face_bends_by_the_plane_of_its_diagonals() {
+        let a = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
+        let s = RuledSurface::from_points(vec![
+            a(0.0, 0.0, 0.0),
+            a(0.0, 1.0, 0.0),
+            a(1.0, 0.0, 1.0),
+            a(1.0, 1.0, 0.0),
+            a(2.0, 0.0, 0.0),
+            a(2.0, 1.0, 0.0),
+        ])
+        .unwrap();
+        let b = bends(&s);
+        assert_eq!((b.len(), b[0], b[2]), (3, 0.0, 0.0));
+        assert_near!(b[1], (2.0f64 / 3.0).acos(), 1e-15);
+    }
+
+    /// A strip closes when its last ruling is its first to 1e-9 of its size: the full cone, and
+    /// the same cone 1000 times larger with its last ruling 1e-7 off, do; a cone whose last
+    /// ruling shares only its end a with the first, one with a gap of 1e-6 of its size, and a
+    /// cone's open half do not.
+    #[test]
+    fn a_strip_closes_where_its_last_ruling_is_its_first() {
+        let s = full_cone();
+        let n = s.points().len();
+        let moved = |f: &dyn Fn(usize, DVec3) -> DVec3| {
+            RuledSurface::from_points(s.points().iter().enumerate().map(|(k, &p)| f(k, p)).collect()).unwrap()
+        };
+        assert!(closes(&s));
+        let size = super::super::coplanar::size_of(s.points());
+        let big = moved(&|k, p| 1000.0 * p + if k == n - 1 { DVec3::new(1e-7, 0.0, 0.0) } else { DVec3::ZERO });
+        assert!(closes(&big));
+        let b_apart = moved(&|k, p| if k == n - 1 { p + DVec3::new(0.0, 0.0, 0.1) } else { p });
+        assert!(!closes(&b_apart));
+        let gap = moved(&|k, p| if k >= n - 2 { p + DVec3::new(1e-6 * size, 0.0, 0.0) } else { p });
+        assert!(!closes(&gap));
+        let half = RuledSurface::from_points(s.points()[..26].to_vec()).unwrap();
+        assert!(!closes(&half));
+    }
+
+    /// The principal direction of points along a line at 30° far from the origin, spread a little
+    /// across it (symmetrically): 30°.
+    #[test]
+    fn the_principal_direction_is_that_of_the_longest_extent() {
+        let dir = DVec2::from_angle(std::f64::consts::FRAC_PI_6);
+        let points: Vec<DVec2> = (0..11)
+            .flat_map(|i| [-0.1, 0.1].map(|w| DVec2::new(100.0, 50.0) + (i as f64 - 5.0) * dir + w * dir.perp()))
+            .collect();
+        assert_near!(principal_angle(&points), std::f64::consts::FRAC_PI_6, 1e-14);
+        // turned by 90°: 120°, said as −60° (the angle is of a line, within (−90°, 90°])
+        let turned: Vec<DVec2> = points.iter().map(|p| p.perp()).collect();
+        assert_near!(principal_angle(&turned), -std::f64::consts::FRAC_PI_3, 1e-14);
+    }
+
+    /// The scale runs from 1/MAX_PATTERN_SCALE to MAX_PATTERN_SCALE millimetres per unit: half a
+    /// millimetre per unit is a scale too.
+    #[test]
+    fn a_scale_below_one_millimetre_per_unit_is_accepted() {
+        let o = |scale: f64| check_options(&SheetOptions { scale, ..SheetOptions::default() }).is_ok();
+        assert!(o(0.5) && o(1.0 / MAX_PATTERN_SCALE) && o(MAX_PATTERN_SCALE));
+        assert!(!o(0.99 / MAX_PATTERN_SCALE) && !o(1.01 * MAX_PATTERN_SCALE));
+    }
+
+    /// The piece's number stands at the centre of its middle face (face 12 of the cone's 24), as
+    /// the piece is turned and placed; a ruling bent by exactly the fold angle is not scored.
+    #[test]
+    fn the_number_is_in_the_middle_face_and_a_bend_at_the_fold_angle_is_no_score() {
+        let s = full_cone();
+        let flat = Unfolding::of(&s).unwrap();
+        let most = bends(&s)[1..24].iter().fold(0.0f64, |m, b| m.max(*b));
+        let o = SheetOptions { scale: 40.0, fold_angle: most, ..SheetOptions::default() };
+        let sheet = Sheet::lay_out(&s, &flat.points, std::slice::from_ref(&(0..24)), &o).unwrap();
+        let piece = &sheet.pieces[0];
+        assert_eq!((piece.rulings_drawn.len(), piece.score.len()), (23, 1), "only the seam tab's base is scored");
+        let p = |k: usize| 40.0 * flat.points[k];
+        let centre = (p(24) + p(25) + p(26) + p(27)) / 4.0;
+        let number = sheet.labels.iter().find(|l| l.text == "1").unwrap();
+        assert_near!(number.at, DMat2::from_angle(piece.rotation) * centre + piece.shift, 1e-9);
+    }
+
+    /// Tabs only where a piece is glued to the next: not on the last piece of an open strip, none
+    /// of width 0; a join on a ruling shorter than the rounding of the pattern's size (3e-13 of
+    /// a unit, 9e-12 mm at 30 mm a unit) has neither tab nor letter.
+    #[test]
+    fn tabs_are_where_pieces_are_glued() {
+        let s = RuledSurface::from_points(
+            (0..5).flat_map(|i| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(i as f64, 1.0, 0.0)]).collect(),
+        )
+        .unwrap();
+        let flat: Vec<DVec2> = s.points().iter().map(|p| p.truncate()).collect();
+        let parts = [0..2, 2..4];
+        let o = SheetOptions { scale: 30.0, ..SheetOptions::default() };
+        let sheet = Sheet::lay_out(&s, &flat, &parts, &o).unwrap();
+        assert_eq!(sheet.pieces.iter().map(|p| p.score.len()).collect::<Vec<_>>(), [1, 0], "the flat strip's one tab");
+        let no_width = Sheet::lay_out(&s, &flat, &parts, &SheetOptions { tab: 0.0, ..o }).unwrap();
+        assert_eq!(no_width.pieces.iter().map(|p| p.score.len()).collect::<Vec<_>>(), [0, 0]);
+        assert_eq!(
+            no_width.labels.iter().filter(|l| l.text == "A").count(),
+            1,
+            "the letter on the next piece's ruling"
+        );
+        let mut short = flat.clone();
+        short[5] = short[4] + DVec2::new(0.0, 3e-13);
+        let short = Sheet::lay_out(&s, &short, &parts, &o).unwrap();
+        assert_eq!(short.labels.iter().filter(|l| l.text == "A").count(), 0);
+        assert_eq!(short.pieces[0].score.len(), 0);
+    }
 }

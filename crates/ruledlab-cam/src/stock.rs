@@ -390,4 +390,40 @@ mod tests {
         assert_eq!(tool.enters(tip(-54.0), DVec3::Z, &["holder"], &stock), None);
         assert_eq!(tool.enters(tip(-60.5), DVec3::Z, &["holder"], &stock), Some("holder"));
     }
+
+    /// The box of points: of none, the origin; of one, that point; a ray along a face of the box
+    /// (its direction below 1e-15 across it) runs inside it, just outside it never enters; a ray
+    /// whose slabs it crosses one after the other misses the box.
+    #[test]
+    fn boxes_of_few_points_and_rays_along_their_faces() {
+        let p = DVec3::new(3.0, -2.0, 5.0);
+        assert_eq!(Aabb::around([]), Aabb { min: DVec3::ZERO, max: DVec3::ZERO });
+        assert_eq!(Aabb::around([p]), Aabb { min: p, max: p });
+        let b = Aabb { min: DVec3::ZERO, max: DVec3::ONE };
+        // along x on the faces y = 0 and y = 1: out at x = 1; just outside them: never in
+        for y in [0.0, 1.0] {
+            assert_eq!(b.exit(DVec3::new(0.5, y, 0.5), DVec3::X), 0.5, "y = {y}");
+        }
+        for y in [-1e-9, 1.0 + 1e-9] {
+            assert_eq!(b.exit(DVec3::new(0.5, y, 0.5), DVec3::X), 0.0, "y = {y}");
+        }
+        // a direction of 1e-16 across the y slab is along it (1e-17 outside: never in); one of
+        // 1e-15 is not (1e-16 outside: in at t = 0.1, out at x = 1)
+        assert_eq!(b.exit(DVec3::new(0.5, -1e-17, 0.5), DVec3::new(1.0, 1e-16, 0.0)), 0.0);
+        assert_eq!(b.exit(DVec3::new(0.5, -1e-16, 0.5), DVec3::new(1.0, 1e-15, 0.0)), 0.5);
+        // in the x slab for t in [1, 2], in the y slab for t in [3, 4]: never in both
+        assert_eq!(b.exit(DVec3::new(-1.0, -3.0, 0.5), DVec3::new(1.0, 1.0, 0.0)), 0.0);
+    }
+
+    /// The hull is counter-clockwise from its lowest-leftmost point, also of three points given
+    /// clockwise; the polygon distance reads it so (0 inside).
+    #[test]
+    fn the_hull_is_counter_clockwise() {
+        let square = vec![(1.0, 1.0), (-1.0, -1.0), (0.0, 0.0), (-1.0, 1.0), (1.0, -1.0)];
+        assert_eq!(hull(square), [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]);
+        let clockwise = vec![(-1.0, -1.0), (0.0, 1.0), (1.0, -1.0)];
+        assert_eq!(hull(clockwise.clone()), [(-1.0, -1.0), (1.0, -1.0), (0.0, 1.0)]);
+        assert_eq!(polygon_distance(&hull(clockwise)), 0.0);
+        assert_eq!(hull(vec![(2.0, 0.0), (1.0, 0.0)]), [(1.0, 0.0), (2.0, 0.0)]);
+    }
 }
