@@ -698,4 +698,50 @@ mod tests {
         assert_eq!(short.labels.iter().filter(|l| l.text == "A").count(), 0);
         assert_eq!(short.pieces[0].score.len(), 0);
     }
+
+    /// Four pieces 40 × 60 mm (a flat strip of 20 × 30 faces, one a piece, at 2 mm a unit) and the
+    /// check square (100 × 108 with its text), 10 mm apart: the rows may be 1.3 √(total area) =
+    /// 1.3 √26 980 ≈ 213.5 wide. Tallest first: the square at (10, 10), piece 1 turned to lie
+    /// along x (60 × 40) beside it at (120, 10); piece 2 would end at 240, so a new row 10 above
+    /// the square: (10, 128), (80, 128), (150, 128). The sheet is 220 × 178. Piece 2's number
+    /// stands at its face's centre and the letter of the join with piece 1 on its first ruling,
+    /// 4 mm inwards from its middle, reading along x.
+    #[test]
+    fn pieces_are_turned_along_x_and_placed_in_rows_tallest_first() {
+        let s = RuledSurface::from_points(
+            (0..5)
+                .flat_map(|i| [DVec3::new(20.0 * i as f64, 0.0, 0.0), DVec3::new(20.0 * i as f64, 30.0, 0.0)])
+                .collect(),
+        )
+        .unwrap();
+        let flat: Vec<DVec2> = s.points().iter().map(|p| p.truncate()).collect();
+        let o = SheetOptions { scale: 2.0, tabs: false, ..SheetOptions::default() };
+        let sheet = Sheet::lay_out(&s, &flat, &[0..1, 1..2, 2..3, 3..4], &o).unwrap();
+        assert_near!(sheet.size, DVec2::new(220.0, 178.0), 1e-9);
+        assert_near!(sheet.check_square, DVec2::new(10.0, 18.0), 1e-9);
+        let places = [(120.0, 10.0), (10.0, 128.0), (80.0, 128.0), (150.0, 128.0)];
+        for (piece, place) in sheet.pieces.iter().zip(places) {
+            assert_near!(piece.rotation, -std::f64::consts::FRAC_PI_2, 1e-15);
+            let lo = piece.outline.iter().fold(DVec2::splat(f64::INFINITY), |m, p| m.min(*p));
+            let hi = piece.outline.iter().fold(DVec2::splat(f64::NEG_INFINITY), |m, p| m.max(*p));
+            assert_near!(lo, DVec2::from(place), 1e-9);
+            assert_near!(hi - lo, DVec2::new(60.0, 40.0), 1e-9);
+        }
+        // piece 1's a₁ (40, 0) turned by −90° lies at its box's lower left
+        let a1 = DMat2::from_angle(sheet.pieces[0].rotation) * DVec2::new(40.0, 0.0) + sheet.pieces[0].shift;
+        assert_near!(a1, DVec2::new(120.0, 10.0), 1e-9);
+        let label = |text: &str| sheet.labels.iter().find(|l| l.text == text).unwrap();
+        assert_near!(label("2").at, DVec2::new(40.0, 148.0), 1e-9);
+        assert_near!(label("A").at, DVec2::new(40.0, 164.0), 1e-9);
+        assert_near!(label("A").angle, 0.0, 1e-15);
+        assert_eq!(["A", "B", "C"].map(|t| sheet.labels.iter().filter(|l| l.text == t).count()), [1, 1, 1]);
+        // with tabs: each letter on its tab too, reading along the tab's base (the ruling) as well
+        let tabbed = Sheet::lay_out(&s, &flat, &[0..1, 1..2, 2..3, 3..4], &SheetOptions { tabs: true, ..o }).unwrap();
+        let letters: Vec<&SheetLabel> =
+            tabbed.labels.iter().filter(|l| ["A", "B", "C"].contains(&l.text.as_str())).collect();
+        assert_eq!(letters.len(), 6);
+        for l in letters {
+            assert_near!(l.angle, 0.0, 1e-12);
+        }
+    }
 }
