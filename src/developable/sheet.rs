@@ -744,4 +744,31 @@ mod tests {
             assert_near!(l.angle, 0.0, 1e-12);
         }
     }
+
+    /// A sheet too large in one direction only is refused by the scale: a flat strip 100 units long
+    /// and 1 wide at 120 mm a unit is 12 020 mm wide (over MAX_SHEET_MM), 258 mm high; at 80 mm a
+    /// unit it fits.
+    #[test]
+    fn a_sheet_too_long_is_refused_by_its_scale() {
+        let s = RuledSurface::from_points(
+            (0..=10)
+                .flat_map(|i| [DVec3::new(10.0 * i as f64, 0.0, 0.0), DVec3::new(10.0 * i as f64, 1.0, 0.0)])
+                .collect(),
+        )
+        .unwrap();
+        let flat: Vec<DVec2> = s.points().iter().map(|p| p.truncate()).collect();
+        let at = |scale: f64| {
+            Sheet::lay_out(
+                &s,
+                &flat,
+                std::slice::from_ref(&(0..10)),
+                &SheetOptions { scale, tabs: false, ..SheetOptions::default() },
+            )
+        };
+        match at(120.0) {
+            Err(Error::InvalidParameter { name, .. }) => assert_eq!(name, "scale"),
+            other => panic!("{other:?}"),
+        }
+        assert_near!(at(80.0).unwrap().size, DVec2::new(8020.0, 218.0), 1e-6);
+    }
 }
