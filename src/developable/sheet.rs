@@ -203,6 +203,8 @@ impl Sheet {
                 tabs.push(Side::Last);
             }
             let outline = outline(&scaled, r.start, r.end, &tabs, o.tab, merge);
+            // turned along its principal axis on the sheet (see below)
+            let rotation = -principal_angle(&outline.points);
             let mut score: Vec<Stroke> = outline.tab_bases.iter().map(|(s, _)| *s).collect();
             let mut thin = Vec::new();
             for i in r.start + 1..r.end {
@@ -213,12 +215,12 @@ impl Sheet {
                     thin.push(stroke);
                 }
             }
-            // the piece's own labels, in pattern coordinates: its number in its middle face, the
-            // glue letters on its tab and on its first ruling
+            // the piece's own labels, in pattern coordinates: its number in its middle face (reading
+            // along x on the sheet), the glue letters on its tab and on its first ruling
             let middle = (r.start + r.end) / 2;
             let face = middle.min(r.end.saturating_sub(1)).max(r.start);
             let centre = (scaled[2 * face] + scaled[2 * face + 1] + scaled[2 * face + 2] + scaled[2 * face + 3]) / 4.0;
-            let mut own = vec![(centre, 0.0, 6.0, format!("{}", k + 1))];
+            let mut own = vec![(centre, -rotation, 6.0, format!("{}", k + 1))];
             for (base, middle) in &outline.tab_bases {
                 own.push((*middle, (base.b - base.a).to_angle(), 4.0, letter(k)));
             }
@@ -230,7 +232,7 @@ impl Sheet {
                 let at = (a + b) / 2.0 + inward.normalize_or_zero() * inward.length().min(4.0);
                 own.push((at, (b - a).to_angle(), 4.0, letter(join)));
             }
-            laid.push((r.clone(), outline.points, score, thin, own));
+            laid.push((r.clone(), outline.points, score, thin, own, rotation));
         }
         // turn each piece along its principal axis, then place the pieces in rows
         struct Item {
@@ -240,8 +242,7 @@ impl Sheet {
         }
         let mut items: Vec<Item> = laid
             .iter()
-            .map(|(_, outline, ..)| {
-                let rotation = -principal_angle(outline);
+            .map(|&(_, ref outline, .., rotation)| {
                 let m = DMat2::from_angle(rotation);
                 let turned: Vec<DVec2> = outline.iter().map(|p| m * *p).collect();
                 let lo = turned.iter().fold(DVec2::splat(f64::INFINITY), |a, p| a.min(*p));
@@ -281,7 +282,7 @@ impl Sheet {
             ));
         }
         let mut out = Vec::with_capacity(count);
-        for (k, (rulings, outline_points, score, thin, own)) in laid.into_iter().enumerate() {
+        for (k, (rulings, outline_points, score, thin, own, _)) in laid.into_iter().enumerate() {
             let it = &items[k];
             let m = DMat2::from_angle(it.rotation);
             let shift = place[k] - it.lo;
@@ -705,7 +706,8 @@ mod tests {
     /// along x (60 × 40) beside it at (120, 10); piece 2 would end at 240, so a new row 10 above
     /// the square: (10, 128), (80, 128), (150, 128). The sheet is 220 × 178. Piece 2's number
     /// stands at its face's centre and the letter of the join with piece 1 on its first ruling,
-    /// 4 mm inwards from its middle, reading along x.
+    /// 4 mm inwards from its middle, both reading along x; the pattern turned in its plane gives
+    /// the same places.
     #[test]
     fn pieces_are_turned_along_x_and_placed_in_rows_tallest_first() {
         let s = RuledSurface::from_points(
@@ -735,6 +737,29 @@ mod tests {
         assert_near!(label("A").at, DVec2::new(40.0, 164.0), 1e-9);
         assert_near!(label("A").angle, 0.0, 1e-15);
         assert_eq!(["A", "B", "C"].map(|t| sheet.labels.iter().filter(|l| l.text == t).count()), [1, 1, 1]);
+        // the numbers read along x, as the pieces run
+        for k in 1..=4 {
+            assert_near!(label(&k.to_string()).angle, 0.0, 1e-12);
+        }
+        // the same pattern turned by 30° in its plane and moved: the pieces in the same places
+        // (each turned along x, perhaps the other way round), the numbers still reading along x
+        let turn = DMat2::from_angle(std::f64::consts::FRAC_PI_6);
+        let turned: Vec<DVec2> = flat.iter().map(|p| turn * *p + DVec2::new(-7.0, 3.0)).collect();
+        let again = Sheet::lay_out(&s, &turned, &[0..1, 1..2, 2..3, 3..4], &o).unwrap();
+        assert_near!(again.size, sheet.size, 1e-9);
+        let bounds = |p: &SheetPiece| {
+            let lo = p.outline.iter().fold(DVec2::splat(f64::INFINITY), |m, q| m.min(*q));
+            (lo, p.outline.iter().fold(DVec2::splat(f64::NEG_INFINITY), |m, q| m.max(*q)))
+        };
+        for (a, b) in again.pieces.iter().zip(&sheet.pieces) {
+            let ((lo, hi), (lo2, hi2)) = (bounds(a), bounds(b));
+            assert_near!(lo, lo2, 1e-9);
+            assert_near!(hi, hi2, 1e-9);
+        }
+        for k in 1..=4 {
+            let number = again.labels.iter().find(|l| l.text == k.to_string()).unwrap();
+            assert_near!(number.angle, 0.0, 1e-12);
+        }
         // with tabs: each letter on its tab too, reading along the tab's base (the ruling) as well
         let tabbed = Sheet::lay_out(&s, &flat, &[0..1, 1..2, 2..3, 3..4], &SheetOptions { tabs: true, ..o }).unwrap();
         let letters: Vec<&SheetLabel> =
