@@ -721,6 +721,8 @@ mod tests {
         let sheet = Sheet::lay_out(&s, &flat, &[0..1, 1..2, 2..3, 3..4], &o).unwrap();
         assert_near!(sheet.size, DVec2::new(220.0, 178.0), 1e-9);
         assert_near!(sheet.check_square, DVec2::new(10.0, 18.0), 1e-9);
+        let length = sheet.labels.iter().find(|l| l.text == "100 mm").unwrap();
+        assert_near!(length.at, DVec2::new(60.0, 14.0), 1e-9); // under the square's middle
         let places = [(120.0, 10.0), (10.0, 128.0), (80.0, 128.0), (150.0, 128.0)];
         for (piece, place) in sheet.pieces.iter().zip(places) {
             assert_near!(piece.rotation, -std::f64::consts::FRAC_PI_2, 1e-15);
