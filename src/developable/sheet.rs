@@ -774,7 +774,7 @@ mod tests {
 
     /// A sheet too large in one direction only is refused by the scale: a flat strip 100 units long
     /// and 1 wide at 120 mm a unit is 12 020 mm wide (over MAX_SHEET_MM), 258 mm high; at 80 mm a
-    /// unit it fits.
+    /// unit it fits, and at exactly MAX_SHEET_MM too.
     #[test]
     fn a_sheet_too_long_is_refused_by_its_scale() {
         let s = RuledSurface::from_points(
@@ -797,5 +797,10 @@ mod tests {
             other => panic!("{other:?}"),
         }
         assert_near!(at(80.0).unwrap().size, DVec2::new(8020.0, 218.0), 1e-6);
+        // 80 units at 124.75 mm a unit and the margins: exactly MAX_SHEET_MM wide, still a sheet
+        let short = RuledSurface::from_points(s.points()[..18].to_vec()).unwrap();
+        let o = SheetOptions { scale: 124.75, tabs: false, ..SheetOptions::default() };
+        let sheet = Sheet::lay_out(&short, &flat[..18], std::slice::from_ref(&(0..8)), &o).unwrap();
+        assert_eq!(sheet.size, DVec2::new(MAX_SHEET_MM, 262.75));
     }
 }
