@@ -426,4 +426,32 @@ mod tests {
         assert_eq!(polygon_distance(&hull(clockwise)), 0.0);
         assert_eq!(hull(vec![(2.0, 0.0), (1.0, 0.0)]), [(1.0, 0.0), (2.0, 0.0)]);
     }
+
+    /// A flat cutter (radius 5, 30 long) and a holder (radius 20, from 40 to 80 up the axis): a
+    /// flat end 1 above the stock is nowhere in it (its depth −∞: no point of the stock lies
+    /// between its ends' planes); its side touching the stock is clear, 0.001 nearer enters. Far
+    /// from the origin, only what lies between a part's ends counts: with the cutter's top 20
+    /// below the stock the holder enters first, with the cutter reaching into it the cutter does.
+    #[test]
+    fn a_part_meets_the_stock_only_between_its_ends() {
+        let tool = ToolShape {
+            ball: false,
+            cutter: Stretch { from: 0.0, to: 30.0, radius: 5.0 },
+            above: vec![("holder", Stretch { from: 40.0, to: 80.0, radius: 20.0 })],
+        };
+        let all = ["cutter", "holder"];
+        let stock = Aabb { min: DVec3::ZERO, max: DVec3::new(100.0, 100.0, 10.0) };
+        let above = DVec3::new(50.0, 50.0, 11.0);
+        assert_eq!(tool.depth(above, DVec3::Z, "cutter", &stock), Some(f64::NEG_INFINITY));
+        assert_eq!(tool.enters(above, DVec3::Z, &all, &stock), None);
+        assert_eq!(tool.enters(DVec3::new(105.0, 50.0, 5.0), DVec3::Z, &all, &stock), None);
+        assert_eq!(tool.enters(DVec3::new(104.999, 50.0, 5.0), DVec3::Z, &all, &stock), Some("cutter"));
+        let far = Aabb { min: DVec3::new(1000.0, 1000.0, 0.0), max: DVec3::new(1100.0, 1100.0, 10.0) };
+        let below = DVec3::new(1104.0, 1050.0, -50.0);
+        assert_eq!(tool.depth(below, DVec3::Z, "cutter", &far), Some(f64::NEG_INFINITY));
+        assert_eq!(tool.enters(below, DVec3::Z, &all, &far), Some("holder"));
+        let into = DVec3::new(1104.0, 1050.0, -25.0);
+        assert_eq!(tool.depth(into, DVec3::Z, "cutter", &far), Some(1.0));
+        assert_eq!(tool.enters(into, DVec3::Z, &all, &far), Some("cutter"));
+    }
 }
