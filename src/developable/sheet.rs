@@ -611,8 +611,8 @@ mod tests {
 
     /// A strip closes when its last ruling is its first to 1e-9 of its size: the full cone, and
     /// the same cone 1000 times larger with its last ruling 1e-7 off, do; a cone whose last
-    /// ruling shares only its end a with the first, one with a gap of 1e-6 of its size, and a
-    /// cone's open half do not.
+    /// ruling shares only its end a with the first, one whose last end a is 1e-6 of its size off
+    /// the first, and a cone's open half do not.
     #[test]
     fn a_strip_closes_where_its_last_ruling_is_its_first() {
         let s = full_cone();
@@ -622,11 +622,11 @@ mod tests {
         };
         assert!(closes(&s));
         let size = super::super::coplanar::size_of(s.points());
-        let big = moved(&|k, p| 1000.0 * p + if k == n - 1 { DVec3::new(1e-7, 0.0, 0.0) } else { DVec3::ZERO });
+        let big = moved(&|k, p| 1000.0 * p + if k >= n - 2 { DVec3::new(1e-7, 0.0, 0.0) } else { DVec3::ZERO });
         assert!(closes(&big));
         let b_apart = moved(&|k, p| if k == n - 1 { p + DVec3::new(0.0, 0.0, 0.1) } else { p });
         assert!(!closes(&b_apart));
-        let gap = moved(&|k, p| if k >= n - 2 { p + DVec3::new(1e-6 * size, 0.0, 0.0) } else { p });
+        let gap = moved(&|k, p| if k == n - 2 { p + DVec3::new(1e-6 * size, 0.0, 0.0) } else { p });
         assert!(!closes(&gap));
         let half = RuledSurface::from_points(s.points()[..26].to_vec()).unwrap();
         assert!(!closes(&half));
