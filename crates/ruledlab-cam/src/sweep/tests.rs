@@ -156,3 +156,29 @@ fn gouge_leave_and_rms() {
     let d = summed(vec![0.5, 0.25], vec![0.0; 2]);
     assert_eq!((d.gouge, d.leave), (0.0, 0.5));
 }
+
+/// The signed distance from the tool in closed form: a ball as short as its radius is the ball
+/// alone (|q − c| − r); inside a flat end's cylinder the distance is minus the depth to its
+/// nearest side or end.
+#[test]
+fn the_distance_from_a_tool_is_signed() {
+    let p = Pose { tip: DVec3::new(1.0, 2.0, 3.0), axis: DVec3::Z };
+    let ball = |q: DVec3| tool_distance(p.tip + q, &p, 5.0, 5.0, ToolEnd::Ball);
+    assert_eq!(ball(DVec3::new(0.0, 0.0, 5.0)), -5.0);
+    assert_eq!(ball(DVec3::new(0.0, 7.0, 5.0)), 2.0);
+    assert_eq!(ball(DVec3::new(0.0, 0.0, 13.0)), 3.0);
+    let flat = |q: DVec3| tool_distance(p.tip + q, &p, 5.0, 20.0, ToolEnd::Flat);
+    assert_eq!(flat(DVec3::new(2.0, 0.0, 10.0)), -3.0);
+    assert_eq!(flat(DVec3::new(0.0, 0.0, 1.0)), -1.0);
+    assert_eq!(flat(DVec3::new(8.0, 0.0, -4.0)), 5.0);
+}
+
+/// Per pose, the deviation of largest size among the points nearest it (the first of two of one
+/// size), NaN where none is.
+#[test]
+fn per_pose_keeps_the_largest_deviation_near_each_pose() {
+    let d = summed(vec![0.1, -0.3, 0.2, 0.2, -0.2], vec![0.0, 0.2, 0.4, 1.0, 1.1]);
+    let per = d.per_pose(3);
+    assert_eq!((per[0], per[1]), (-0.3, 0.2));
+    assert!(per[2].is_nan());
+}
