@@ -762,6 +762,15 @@ mod tests {
             let number = again.labels.iter().find(|l| l.text == k.to_string()).unwrap();
             assert_near!(number.angle, 0.0, 1e-12);
         }
+        // and with tabs, the letters on the tabs and the rulings read along the rulings: along x
+        let o_tabs = SheetOptions { tabs: true, ..o };
+        let again = Sheet::lay_out(&s, &turned, &[0..1, 1..2, 2..3, 3..4], &o_tabs).unwrap();
+        let letters: Vec<&SheetLabel> =
+            again.labels.iter().filter(|l| ["A", "B", "C"].contains(&l.text.as_str())).collect();
+        assert_eq!(letters.len(), 6);
+        for l in letters {
+            assert_near!(l.angle.sin(), 0.0, 1e-12);
+        }
         // with tabs: each letter on its tab too, reading along the tab's base (the ruling) as well
         let tabbed = Sheet::lay_out(&s, &flat, &[0..1, 1..2, 2..3, 3..4], &SheetOptions { tabs: true, ..o }).unwrap();
         let letters: Vec<&SheetLabel> =
@@ -802,5 +811,27 @@ mod tests {
         let o = SheetOptions { scale: 124.75, tabs: false, ..SheetOptions::default() };
         let sheet = Sheet::lay_out(&short, &flat[..18], std::slice::from_ref(&(0..8)), &o).unwrap();
         assert_eq!(sheet.size, DVec2::new(MAX_SHEET_MM, 262.75));
+    }
+
+    /// A piece that just fits the rest of its row stays in it: pieces 200, 95 and 95 mm long and
+    /// 10 high (a flat strip cut at 200, 295 and 390) with the check square; the rows are 200 wide
+    /// (the widest piece; 1.3 √21 380 ≈ 190 is less): the square, then the 200 piece in a row of
+    /// its own, then 95 at x = 10 and the other 95 ending exactly at the row's end, at x = 115.
+    #[test]
+    fn a_piece_that_just_fits_stays_in_its_row() {
+        let xs = [0.0, 200.0, 295.0, 390.0];
+        let s = RuledSurface::from_points(
+            xs.iter().flat_map(|&x| [DVec3::new(x, 0.0, 0.0), DVec3::new(x, 10.0, 0.0)]).collect(),
+        )
+        .unwrap();
+        let flat: Vec<DVec2> = s.points().iter().map(|p| p.truncate()).collect();
+        let o = SheetOptions { scale: 1.0, tabs: false, ..SheetOptions::default() };
+        let sheet = Sheet::lay_out(&s, &flat, &[0..1, 1..2, 2..3], &o).unwrap();
+        let lo = |p: &SheetPiece| p.outline.iter().fold(DVec2::splat(f64::INFINITY), |m, q| m.min(*q));
+        let places: Vec<DVec2> = sheet.pieces.iter().map(lo).collect();
+        assert_near!(places[0], DVec2::new(10.0, 128.0), 1e-9);
+        assert_near!(places[1], DVec2::new(10.0, 148.0), 1e-9);
+        assert_near!(places[2], DVec2::new(115.0, 148.0), 1e-9);
+        assert_near!(sheet.size, DVec2::new(220.0, 168.0), 1e-9);
     }
 }
