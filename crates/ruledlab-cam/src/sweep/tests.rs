@@ -182,3 +182,24 @@ fn per_pose_keeps_the_largest_deviation_near_each_pose() {
     assert_eq!((per[0], per[1]), (-0.3, 0.2));
     assert!(per[2].is_nan());
 }
+
+/// Progress is said every fiftieth of the targets and at the end: 0, 0.02, …, 0.98, 1 for 100
+/// targets; for 30 (fewer than 50), at every target.
+#[test]
+fn progress_is_said_fifty_times_and_at_the_end() {
+    let tool = Tool::new(2.0, 20.0, ToolEnd::Ball).unwrap();
+    let poses = vec![Pose { tip: DVec3::ZERO, axis: DVec3::Z }, Pose { tip: DVec3::X, axis: DVec3::Z }];
+    let path = ToolPath { poses, tool };
+    let m = Machine::preset("table-table-ac").unwrap();
+    for (n, want) in [
+        (100usize, (0..50).map(|k| k as f64 / 50.0).collect::<Vec<_>>()),
+        (30, (0..30).map(|k| k as f64 / 30.0).collect()),
+    ] {
+        let targets: Vec<DVec3> = (0..n).map(|k| DVec3::new(k as f64, 5.0, 0.0)).collect();
+        let mut said = Vec::new();
+        sweep_deviation(&m, 20.0, &path.tool, &path_blocks(&path), &targets, &mut |f| said.push(f));
+        assert_eq!(said.last(), Some(&1.0));
+        said.pop();
+        assert_eq!(said, want, "{n} targets");
+    }
+}
