@@ -834,4 +834,35 @@ mod tests {
         assert_near!(places[2], DVec2::new(115.0, 148.0), 1e-9);
         assert_near!(sheet.size, DVec2::new(220.0, 168.0), 1e-9);
     }
+
+    /// A4 with 10 mm margins and overlaps: windows 190 × 277, steps 180 × 267. A 500 × 400 sheet
+    /// takes 3 × 2 pages, row 0 at the top (y from 267), the marks in the middles of the
+    /// overlaps, 5 mm in; a paper whose window is no larger than the overlap either way is
+    /// refused, and 50 × 50 pages (2 500, the most) are a tiling.
+    #[test]
+    fn pages_are_counted_and_placed_from_the_top() {
+        let t = tile(DVec2::new(500.0, 400.0), Paper::A4, 10.0, 10.0).unwrap();
+        let origins: Vec<(usize, usize, DVec2)> = t.tiles.iter().map(|p| (p.row, p.column, p.origin)).collect();
+        assert_eq!(
+            origins,
+            [
+                (0, 0, DVec2::new(0.0, 267.0)),
+                (0, 1, DVec2::new(180.0, 267.0)),
+                (0, 2, DVec2::new(360.0, 267.0)),
+                (1, 0, DVec2::ZERO),
+                (1, 1, DVec2::new(180.0, 0.0)),
+                (1, 2, DVec2::new(360.0, 0.0)),
+            ]
+        );
+        assert_eq!(t.marks.len(), 12);
+        assert_eq!(
+            (t.marks[0], t.marks[5], t.marks[11]),
+            (DVec2::splat(5.0), DVec2::new(185.0, 272.0), DVec2::new(545.0, 539.0))
+        );
+        for paper in [Paper { width: 210.0, height: 30.0 }, Paper { width: 30.0, height: 297.0 }] {
+            assert!(tile(DVec2::new(100.0, 100.0), paper, 10.0, 10.0).is_err(), "{paper:?}");
+        }
+        let most = tile(DVec2::new(190.0 + 49.0 * 180.0, 277.0 + 49.0 * 267.0), Paper::A4, 10.0, 10.0).unwrap();
+        assert_eq!((most.columns, most.rows, most.tiles.len()), (50, 50, MAX_PAGES));
+    }
 }
