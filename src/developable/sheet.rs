@@ -565,6 +565,9 @@ mod tests {
     #[test]
     fn glue_letters_count_on_and_text_stays_upright() {
         assert_eq!([0, 1, 25, 26, 27, 701, 702].map(letter), ["A", "B", "Z", "AA", "AB", "ZZ", "AAA"]);
+        // a quarter turn is upright as it is, its opposite turned to it
+        assert_eq!(upright(std::f64::consts::FRAC_PI_2), std::f64::consts::FRAC_PI_2);
+        assert_eq!(upright(-std::f64::consts::FRAC_PI_2), std::f64::consts::FRAC_PI_2);
         for a in [-3.0, -1.6, -1.0, 0.0, 1.0, 1.6, 3.0, 7.0] {
             let u = upright(a);
             assert!(u > -std::f64::consts::FRAC_PI_2 - 1e-12 && u <= std::f64::consts::FRAC_PI_2 + 1e-12);
@@ -811,6 +814,24 @@ mod tests {
         let o = SheetOptions { scale: 124.75, tabs: false, ..SheetOptions::default() };
         let sheet = Sheet::lay_out(&short, &flat[..18], std::slice::from_ref(&(0..8)), &o).unwrap();
         assert_eq!(sheet.size, DVec2::new(MAX_SHEET_MM, 262.75));
+        // too tall only: strips of one-unit faces with rulings 80 long, one face a piece, each
+        // turned to lie along x (9 600 × 120 mm at 120 mm a unit), one to a row: 70 of them fit
+        // (narrower than the sheet), 81 are too tall
+        let standing = |n: usize| {
+            let s = RuledSurface::from_points(
+                (0..=n).flat_map(|i| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(i as f64, 80.0, 0.0)]).collect(),
+            )
+            .unwrap();
+            let flat: Vec<DVec2> = s.points().iter().map(|p| p.truncate()).collect();
+            let pieces: Vec<Range<usize>> = (0..n).map(|i| i..i + 1).collect();
+            Sheet::lay_out(&s, &flat, &pieces, &SheetOptions { scale: 120.0, tabs: false, ..SheetOptions::default() })
+        };
+        let fits = standing(70).unwrap();
+        assert!(fits.size.x < MAX_SHEET_MM && fits.size.y < MAX_SHEET_MM, "{}", fits.size);
+        match standing(81) {
+            Err(Error::InvalidParameter { name, .. }) => assert_eq!(name, "scale"),
+            other => panic!("{other:?}"),
+        }
     }
 
     /// A piece that just fits the rest of its row stays in it: pieces 200, 95 and 95 mm long and
