@@ -203,3 +203,76 @@ fn progress_is_said_fifty_times_and_at_the_end() {
         assert_eq!(said, want, "{n} targets");
     }
 }
+
+/// A straight block or a turn of the axis about a still tip, sampled with a ball r = 2 on a
+/// cutter L = 5 (step 0.02·min(r, L) = 0.04). Straight, 10 along x with the axis held: 16
+/// coarse moves of 0.625 make 10, so n = 10 / 0.04 = 250 samples, each 0.04 on; the tool's
+/// ends fill the box [0, 10] × {0} × [0, 5] whose centre is (5, 0, 2.5), farthest from it
+/// √(5² + 2.5²), so the sphere's reach is that plus r plus the largest move. The turn from z
+/// to x: the tip stands, the far end moves on the quarter circle of radius L, the coarse sum of
+/// its 16 chords 32 L sin(π/64); each of the n samples' moves is the chord 2 L sin(π/(4n)).
+#[test]
+fn a_block_is_sampled_so_the_ends_move_at_most_the_step() {
+    let m = Machine::preset("table-table-ac").unwrap();
+    let tool = Tool::new(2.0, 5.0, ToolEnd::Ball).unwrap();
+    let still = Joints { xyz: DVec3::ZERO, rotary: [0.0; 2] };
+    let block =
+        |from: Pose, to: Pose, how: Move| SweptBlock { from, to, joints: (still, still), how, start: 0.0, span: 1.0 };
+    let up = |tip: DVec3| Pose { tip, axis: DVec3::Z };
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1.0);
+
+    let s = sample(&m, 5.0, &tool, &block(up(DVec3::ZERO), up(10.0 * DVec3::X), Move::Straight));
+    assert_eq!(s.poses.len(), 251);
+    for (k, p) in s.poses.iter().enumerate() {
+        assert!((p.tip - DVec3::new(0.04 * k as f64, 0.0, 0.0)).length() < 1e-12, "sample {k}: {}", p.tip);
+    }
+    assert!(s.moves.len() == 250 && s.moves.iter().all(|&d| close(d, 0.04)), "{:?}", &s.moves[..3]);
+    assert!((s.centre - DVec3::new(5.0, 0.0, 2.5)).length() < 1e-12, "{}", s.centre);
+    assert!(close(s.reach, 31.25f64.sqrt() + 2.0 + 0.04), "{}", s.reach);
+
+    let turn = block(up(DVec3::ZERO), Pose { tip: DVec3::ZERO, axis: DVec3::X }, Move::Vector);
+    let s = sample(&m, 5.0, &tool, &turn);
+    let n = (32.0 * 5.0 * (PI / 64.0).sin() / 0.04).ceil() as usize;
+    assert_eq!(s.poses.len(), n + 1);
+    let chord = 10.0 * (PI / (4.0 * n as f64)).sin();
+    assert!(s.moves.iter().all(|&d| close(d, chord)), "{} against {chord}", s.moves[0]);
+    assert!((s.centre - DVec3::new(2.5, 0.0, 2.5)).length() < 1e-12, "{}", s.centre);
+    assert!(close(s.reach, 12.5f64.sqrt() + 2.0 + chord), "{}", s.reach);
+
+    // 0.64 on is the coarse samples themselves; no motion, one sample step; a long block at most
+    for (length, want) in [(0.64, 16), (0.0, 1), (1000.0, MAX_SWEEP_SAMPLES)] {
+        let s = sample(&m, 5.0, &tool, &block(up(DVec3::ZERO), up(length * DVec3::Y), Move::Straight));
+        assert_eq!(s.poses.len(), want + 1, "{length} on");
+        let last = s.poses[want].tip;
+        assert!((s.poses[1].tip - last / want as f64).length() < 1e-12, "{length} on: {}", s.poses[1].tip);
+    }
+}
+
+/// Two blocks pass a target point on either side: in one a sample falls on the nearest pose
+/// (1.00003 from it), in the other the nearest pose lies halfway between two samples, which are
+/// √(0.02² + 3²) − 2 ≈ 1.0000667 from it though the pose between comes to 1. The second block's
+/// samples look farther, yet it comes nearer: the search must refine it too (the slack), and
+/// finds 1 in it.
+#[test]
+fn a_block_whose_samples_look_farther_is_refined_when_it_can_come_nearer() {
+    let m = Machine::preset("table-table-ac").unwrap();
+    let tool = Tool::new(2.0, 5.0, ToolEnd::Ball).unwrap();
+    let still = Joints { xyz: DVec3::ZERO, rotary: [0.0; 2] };
+    let along = |y: f64, x0: f64, start: f64| SweptBlock {
+        from: Pose { tip: DVec3::new(x0 - 5.0, y, 0.0), axis: DVec3::Z },
+        to: Pose { tip: DVec3::new(x0 + 5.0, y, 0.0), axis: DVec3::Z },
+        joints: (still, still),
+        how: Move::Straight,
+        start,
+        span: 1.0,
+    };
+    let q = DVec3::new(0.0, 0.0, 3.0);
+    let on_sample = along(-3.00003, 0.0, 0.0);
+    let between = along(3.0, 0.02, 1.0);
+    for blocks in [[on_sample, between], [between, on_sample]] {
+        let d = sweep_deviation(&m, 5.0, &tool, &blocks, &[q], &mut |_| {});
+        assert!((d.points[0] - 1.0).abs() < 1e-9, "{}", d.points[0]);
+        // where: the block passing at 3 (it starts at 1), 0.498 along it (its tip at x = 0)
+        assert!((d.at[0] - 1.498).abs() < 1e-6, "{}", d.at[0]);
+    }
+}
