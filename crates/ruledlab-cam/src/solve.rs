@@ -499,4 +499,51 @@ mod tests {
         let flips = (1..poses.len()).any(|i| (exact.joints[i].rotary[1] - exact.joints[i - 1].rotary[1]).abs() > 50.0);
         assert!(flips);
     }
+
+    /// The price of a block on a limited axis (C of the fork head, −360° … 360°), worked out by
+    /// hand: 170° → −170° is 340° the long way; with unwinding it turns back by the short way's
+    /// 20° at the start (to −190°, within the limits) and then the 20°, so it counts the unwind,
+    /// |−190° − 170°| = 360° of turning back and 20°; without it, twice the unwind and 340°.
+    /// 300° → −300° cannot unwind (−300° − 120° = −420° is beyond −360°). Up to half a turn and
+    /// a rounding margin of 1e-9°, a block turns the way it is given, unpriced.
+    #[test]
+    fn a_block_is_priced_by_its_turn_its_unwind_or_its_long_way() {
+        let m = Machine::preset("head-head-ac").unwrap();
+        let f = Value::Fixed;
+        assert_eq!(transition(&m, 0, f(170.0), f(-170.0), true), (UNWIND_COST + 360.0 + 20.0, true));
+        assert_eq!(transition(&m, 0, f(170.0), f(-170.0), false), (2.0 * UNWIND_COST + 340.0, false));
+        assert_eq!(transition(&m, 0, f(300.0), f(-300.0), true), (2.0 * UNWIND_COST + 600.0, false));
+        let half = 180.0 + 1e-9;
+        for (y, want) in [(180.0, 180.0), (half, half), (-half, half)] {
+            assert_eq!(transition(&m, 0, f(0.0), f(y), true), (want, false), "0° → {y}°");
+        }
+        // a continuous axis takes the short way: no long way, no unwind
+        assert_eq!(transition(&m, 0, Value::Turn(170.0), Value::Turn(-170.0), true), (20.0, false));
+    }
+
+    /// On the pole itself (the tool along the fork head's C axis, A = 0) C is free: with no cone
+    /// the pose keeps its neighbours' C, so that the head does not turn there and back.
+    #[test]
+    fn on_the_pole_the_free_axis_keeps_its_neighbours_value() {
+        let m = Machine::preset("head-head-ac").unwrap();
+        let poses = [pose(0.0, tilted(10.0, 40.0)), pose(1.0, DVec3::Z), pose(2.0, tilted(10.0, 40.0))];
+        let s = solve(&m, &poses, 40.0, &SolveOptions::exact()).unwrap();
+        let (c, a) = (s.joints[0].rotary[0], s.joints[1].rotary[1]);
+        assert!(c.abs() > 1.0, "the neighbours' C is {c}°");
+        assert_eq!(s.joints[1].rotary[0], c);
+        assert_eq!(a, 0.0);
+        assert_eq!(s.joints[2].rotary, s.joints[0].rotary);
+    }
+
+    /// The pole cone holds the poses strictly within its angle of the pole: a pose exactly at
+    /// the cone's angle is outside it (given as the pose's own pole angle, to the last bit).
+    #[test]
+    fn the_cone_holds_the_poses_strictly_within_its_angle() {
+        let m = Machine::preset("head-head-ac").unwrap();
+        let poses: Vec<Pose> =
+            [5.0, 2.0, 1.0, 5.0].iter().enumerate().map(|(k, &t)| pose(k as f64, tilted(t, 30.0))).collect();
+        let cone = pole_angle(&m, poses[1].axis);
+        let s = solve(&m, &poses, 40.0, &SolveOptions { cone, unwind: false, ball: None }).unwrap();
+        assert_eq!(s.in_cone, [false, false, true, false]);
+    }
 }
