@@ -205,10 +205,11 @@ fn progress_is_said_fifty_times_and_at_the_end() {
 }
 
 /// A straight block or a turn of the axis about a still tip, sampled with a ball r = 2 on a
-/// cutter L = 5 (step 0.02·min(r, L) = 0.04). Straight, 10 along x with the axis held: 16
-/// coarse moves of 0.625 make 10, so n = 10 / 0.04 = 250 samples, each 0.04 on; the tool's
-/// ends fill the box [0, 10] × {0} × [0, 5] whose centre is (5, 0, 2.5), farthest from it
-/// √(5² + 2.5²), so the sphere's reach is that plus r plus the largest move. The turn from z
+/// cutter L = 5 (step 0.02·min(r, L) = 0.04). Straight, 10 along x with the axis held, from
+/// o = (−4.5, 0.5, −2): 16 coarse moves of 0.625 make 10, so n = 10 / 0.04 = 250 samples,
+/// each 0.04 on; the tool's ends fill the box o + [0, 10] × {0} × [0, 5] whose centre is
+/// o + (5, 0, 2.5) = (0.5, 0.5, 0.5), farthest from it √(5² + 2.5²) (at both ends), so the
+/// sphere's reach is that plus r plus the largest move. The turn from z
 /// to x: the tip stands, the far end moves on the quarter circle of radius L, the coarse sum of
 /// its 16 chords 32 L sin(π/64); each of the n samples' moves is the chord 2 L sin(π/(4n)).
 #[test]
@@ -221,13 +222,14 @@ fn a_block_is_sampled_so_the_ends_move_at_most_the_step() {
     let up = |tip: DVec3| Pose { tip, axis: DVec3::Z };
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1.0);
 
-    let s = sample(&m, 5.0, &tool, &block(up(DVec3::ZERO), up(10.0 * DVec3::X), Move::Straight));
+    let o = DVec3::new(-4.5, 0.5, -2.0);
+    let s = sample(&m, 5.0, &tool, &block(up(o), up(o + 10.0 * DVec3::X), Move::Straight));
     assert_eq!(s.poses.len(), 251);
     for (k, p) in s.poses.iter().enumerate() {
-        assert!((p.tip - DVec3::new(0.04 * k as f64, 0.0, 0.0)).length() < 1e-12, "sample {k}: {}", p.tip);
+        assert!((p.tip - o - DVec3::new(0.04 * k as f64, 0.0, 0.0)).length() < 1e-12, "sample {k}: {}", p.tip);
     }
     assert!(s.moves.len() == 250 && s.moves.iter().all(|&d| close(d, 0.04)), "{:?}", &s.moves[..3]);
-    assert!((s.centre - DVec3::new(5.0, 0.0, 2.5)).length() < 1e-12, "{}", s.centre);
+    assert!((s.centre - DVec3::splat(0.5)).length() < 1e-12, "{}", s.centre);
     assert!(close(s.reach, 31.25f64.sqrt() + 2.0 + 0.04), "{}", s.reach);
 
     let turn = block(up(DVec3::ZERO), Pose { tip: DVec3::ZERO, axis: DVec3::X }, Move::Vector);
