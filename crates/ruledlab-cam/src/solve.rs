@@ -546,4 +546,24 @@ mod tests {
         let s = solve(&m, &poses, 40.0, &SolveOptions { cone, unwind: false, ball: None }).unwrap();
         assert_eq!(s.in_cone, [false, false, true, false]);
     }
+
+    /// How far a block's middle axis strays, on the fork head: C 160° → −160° unwinds first (to
+    /// −200°, then 40° on), so its middle is C = −180°; A 0° → 50° has its middle at 25°. The
+    /// middle axis is then that of (−180°, 25°): 0° from it, and 25° from the vertical (the
+    /// head's tilt). A continuous axis turns the short way: 170° → −170° has its middle at 180°.
+    /// A block whose axes each turn at most 20° strays by nothing worth a price.
+    #[test]
+    fn a_block_strays_by_the_angle_of_its_middle_axis() {
+        let m = Machine::preset("head-head-ac").unwrap();
+        let (f, t) = (Value::Fixed, Value::Turn);
+        let at = |c: f64, a: f64| tool_axis(&m, [c, a]);
+        let unwinding = ([f(160.0), f(0.0)], [f(-160.0), f(50.0)]);
+        assert_eq!(stray(&m, unwinding.0, unwinding.1, at(-180.0, 25.0), true), 0.0);
+        let tilt = stray(&m, unwinding.0, unwinding.1, DVec3::Z, true);
+        assert!((tilt - 25.0).abs() < 1e-12, "{tilt}");
+        // without unwinding the block turns C the long way, through 0°
+        assert_eq!(stray(&m, unwinding.0, unwinding.1, at(0.0, 25.0), false), 0.0);
+        assert_eq!(stray(&m, [t(170.0), f(0.0)], [t(-170.0), f(50.0)], at(180.0, 25.0), true), 0.0);
+        assert_eq!(stray(&m, [f(0.0), f(0.0)], [f(20.0), f(-20.0)], -DVec3::Z, true), 0.0);
+    }
 }
