@@ -566,4 +566,18 @@ mod tests {
         assert_eq!(stray(&m, [t(170.0), f(0.0)], [t(-170.0), f(50.0)], at(180.0, 25.0), true), 0.0);
         assert_eq!(stray(&m, [f(0.0), f(0.0)], [f(20.0), f(-20.0)], -DVec3::Z, true), 0.0);
     }
+
+    /// Of settings that move alike, to within 1e-9°, the first listed is kept, at the first pose
+    /// and between poses: rounding never flips the choice. C = ±5° (the later 1e-12° nearer 0)
+    /// before C = 0°: the first; one pose with C = ±90°: the first.
+    #[test]
+    fn of_settings_that_move_alike_the_first_is_kept() {
+        let m = Machine::preset("head-head-ac").unwrap();
+        let f = Value::Fixed;
+        let both = vec![[f(5.0), f(0.0)], [f(-5.0 + 1e-12), f(0.0)]];
+        let chosen = choose(&m, &[both.clone(), vec![[f(0.0), f(0.0)]]], &[DVec3::Z, DVec3::Z], false);
+        assert_eq!(chosen[0], both[0]);
+        let start = vec![[f(90.0), f(30.0)], [f(-90.0 + 1e-12), f(-30.0)]];
+        assert_eq!(choose(&m, &[start.clone()], &[DVec3::Z], false), [start[0]]);
+    }
 }
