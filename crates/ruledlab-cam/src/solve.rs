@@ -522,17 +522,24 @@ mod tests {
     }
 
     /// On the pole itself (the tool along the fork head's C axis, A = 0) C is free: with no cone
-    /// the pose keeps its neighbours' C, so that the head does not turn there and back.
+    /// the pose keeps the C of the nearest poses off the pole, so that the head does not turn
+    /// there and back — one pose on the pole, or three in a row.
     #[test]
     fn on_the_pole_the_free_axis_keeps_its_neighbours_value() {
         let m = Machine::preset("head-head-ac").unwrap();
-        let poses = [pose(0.0, tilted(10.0, 40.0)), pose(1.0, DVec3::Z), pose(2.0, tilted(10.0, 40.0))];
-        let s = solve(&m, &poses, 40.0, &SolveOptions::exact()).unwrap();
-        let (c, a) = (s.joints[0].rotary[0], s.joints[1].rotary[1]);
-        assert!(c.abs() > 1.0, "the neighbours' C is {c}°");
-        assert_eq!(s.joints[1].rotary[0], c);
-        assert_eq!(a, 0.0);
-        assert_eq!(s.joints[2].rotary, s.joints[0].rotary);
+        for on in [1, 3] {
+            let axes = std::iter::once(tilted(10.0, 40.0))
+                .chain(std::iter::repeat_n(DVec3::Z, on))
+                .chain(std::iter::once(tilted(10.0, 40.0)));
+            let poses: Vec<Pose> = axes.enumerate().map(|(k, a)| pose(k as f64, a)).collect();
+            let s = solve(&m, &poses, 40.0, &SolveOptions::exact()).unwrap();
+            let c = s.joints[0].rotary[0];
+            assert!(c.abs() > 1.0, "the neighbours' C is {c}°");
+            for k in 1..=on {
+                assert_eq!(s.joints[k].rotary, [c, 0.0], "{on} on the pole: pose {k}");
+            }
+            assert_eq!(s.joints[on + 1].rotary, s.joints[0].rotary);
+        }
     }
 
     /// The pole cone holds the poses strictly within its angle of the pole: a pose exactly at
@@ -577,7 +584,7 @@ mod tests {
         let both = vec![[f(5.0), f(0.0)], [f(-5.0 + 1e-12), f(0.0)]];
         let chosen = choose(&m, &[both.clone(), vec![[f(0.0), f(0.0)]]], &[DVec3::Z, DVec3::Z], false);
         assert_eq!(chosen[0], both[0]);
-        let start = vec![[f(90.0), f(30.0)], [f(-90.0 + 1e-12), f(-30.0)]];
-        assert_eq!(choose(&m, &[start.clone()], &[DVec3::Z], false), [start[0]]);
+        let start = [[f(90.0), f(30.0)], [f(-90.0 + 1e-12), f(-30.0)]];
+        assert_eq!(choose(&m, &[start.to_vec()], &[DVec3::Z], false), [start[0]]);
     }
 }
