@@ -587,4 +587,46 @@ mod tests {
         let start = [[f(90.0), f(30.0)], [f(-90.0 + 1e-12), f(-30.0)]];
         assert_eq!(choose(&m, &[start.to_vec()], &[DVec3::Z], false), [start[0]]);
     }
+
+    /// Inside the pole cone the free axis (C of the fork head) runs linearly in the tip's distance
+    /// along the path, from its value at the pose before the cone to the one at the pose after
+    /// it (held where the cone begins or ends the path, or holds all of it); the tilt A brings
+    /// the tool axis nearest the given one (a hundredth of a degree either way is farther), and
+    /// the pose reports the angle between them. Tips spaced unevenly (x = k²) so that the
+    /// distance, not the index, counts.
+    #[test]
+    fn in_the_cone_the_free_axis_runs_linearly_along_the_tip() {
+        let m = Machine::preset("head-head-ac").unwrap();
+        let cone = 1.5f64.to_radians();
+        let axes = [tilted(3.0, 20.0), tilted(1.0, 40.0), tilted(0.5, 150.0), tilted(1.2, 250.0), tilted(3.0, 260.0)];
+        // the cone in the middle, at the end, at the start, everywhere
+        for run in [0..5, 0..4, 1..5, 1..4] {
+            let poses: Vec<Pose> = axes[run.clone()]
+                .iter()
+                .enumerate()
+                .map(|(k, &a)| Pose { tip: DVec3::new((k * k) as f64, 0.0, 0.0), axis: a })
+                .collect();
+            let s = solve(&m, &poses, 40.0, &SolveOptions { cone, unwind: false, ball: None }).unwrap();
+            let inside: Vec<usize> = (0..poses.len()).filter(|&k| s.in_cone[k]).collect();
+            assert_eq!(inside, if run.start == 0 { [1, 2, 3] } else { [0, 1, 2] }, "{run:?}");
+            let (a, b) = (inside[0], inside[inside.len() - 1] + 1);
+            let c = |k: usize| s.joints[k].rotary[0];
+            let (from, to) = match (a.checked_sub(1), (b < poses.len()).then_some(b)) {
+                (Some(i), Some(j)) => (c(i), c(j)),
+                (Some(i), None) => (c(i), c(i)),
+                (None, Some(j)) => (c(j), c(j)),
+                (None, None) => (c(a), c(a)),
+            };
+            let (lo, hi) = (a.saturating_sub(1), b.min(poses.len() - 1));
+            let along = |k: usize| (poses[k].tip.x - poses[lo].tip.x) / (poses[hi].tip.x - poses[lo].tip.x).max(1e-300);
+            for k in a..b {
+                let want = if hi > lo { from + along(k) * (to - from) } else { from };
+                assert!((c(k) - want).abs() < 1e-9, "{run:?}, pose {k}: C {} against {want}", c(k));
+                let off = |da: f64| tool_axis(&m, [c(k), s.joints[k].rotary[1] + da]).angle_between(poses[k].axis);
+                assert!(off(0.0) < off(0.01) && off(0.0) < off(-0.01), "{run:?}, pose {k}: A is not the nearest");
+                assert!((s.adjusted[k] - off(0.0)).abs() < 1e-12, "{run:?}, pose {k}");
+                assert_eq!(s.poses[k].tip, poses[k].tip, "a flat end keeps its tip");
+            }
+        }
+    }
 }
