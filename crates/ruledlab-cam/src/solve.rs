@@ -639,4 +639,30 @@ mod tests {
             }
         }
     }
+
+    /// A tilt axis that may turn past a whole turn (A of the fork head from −400° to 400°, or
+    /// continuous): the tool tilts about X through a turn and a bit, in 12° steps, and passes the
+    /// pole's two ends, upside down at 180° and upright again at 360° (two poses in the cone of
+    /// 1° at each, 0.5° and 0.6° from it). In the cone A is the tilt's value nearest the path's
+    /// own — 180.6°, not −179.4°; 359.5°, not −0.5° or −360.5° — so A runs on without a jump.
+    #[test]
+    fn in_the_cone_a_tilt_past_a_turn_takes_the_value_nearest_the_path() {
+        let about_x = |alpha: f64| DVec3::new(0.0, -alpha.to_radians().sin(), alpha.to_radians().cos());
+        let steps = |ks: std::ops::Range<i32>| ks.map(|k| 5.0 + 12.0 * k as f64);
+        let alphas: Vec<f64> =
+            steps(0..15).chain([179.5, 180.6]).chain(steps(15..30)).chain([359.5, 360.6, 367.0, 379.0]).collect();
+        let poses: Vec<Pose> = alphas.iter().map(|&a| pose(0.0, about_x(a))).collect();
+        for (min, max) in [(Some(-400.0), Some(400.0)), (None, None)] {
+            let mut m = Machine::preset("head-head-ac").unwrap();
+            (m.rotary[1].min, m.rotary[1].max) = (min, max);
+            let s =
+                solve(&m, &poses, 40.0, &SolveOptions { cone: 1f64.to_radians(), unwind: false, ball: None }).unwrap();
+            assert_eq!(s.in_cone.iter().filter(|&&b| b).count(), 4);
+            for (k, j) in s.joints.iter().enumerate() {
+                let (c, a) = (j.rotary[0], j.rotary[1]);
+                assert!(c.abs() < 1e-9, "{min:?}: pose {k}: C {c}");
+                assert!((a.abs() - alphas[k]).abs() < 1e-9, "{min:?}: pose {k}: A {a} for {}", alphas[k]);
+            }
+        }
+    }
 }
