@@ -392,4 +392,29 @@ mod tests {
         kept.sort();
         assert_eq!(kept, [10, 11], "each of the two middles kept once");
     }
+
+    /// A run of one broken pair at either end of the strip is anchored at the end ruling, which
+    /// was dragged, even where keeping its neighbour would move the strip less: a flat strip whose
+    /// end ruling is short (0.1) has it lifted by 0.05 out of the plane. Keeping the neighbour
+    /// would only undo the drag (0.05); keeping the end turns the neighbour by about 0.45 and
+    /// the strip after it.
+    #[test]
+    fn a_dragged_end_ruling_is_kept_even_where_keeping_its_neighbour_moves_less() {
+        for (end, next) in [(0, 1), (7, 6)] {
+            let mut p: Vec<DVec3> =
+                (0..8).flat_map(|i| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(i as f64, 1.0, 0.0)]).collect();
+            p[2 * end + 1] = DVec3::new(end as f64, 0.1, 0.05);
+            let edit = RuledSurface::from_points(p.clone()).unwrap();
+            let moved = |anchor: usize| {
+                let mut q = p.clone();
+                solve(&mut q, 8, &[anchor]);
+                q.iter().zip(&p).map(|(x, y)| (*x - *y).length_squared()).sum::<f64>()
+            };
+            assert!(moved(next) < 0.01 && moved(end) > 0.1, "{} {}", moved(next), moved(end));
+            let r = make_developable(&edit);
+            assert_eq!(r.anchors, [end]);
+            assert_eq!(r.surface.segment(end), edit.segment(end));
+            assert!(raw_max_abs_delta(&r.surface) <= 1e-13);
+        }
+    }
 }
