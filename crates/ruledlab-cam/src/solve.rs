@@ -467,17 +467,25 @@ mod tests {
 
     /// Three turns around a wall on the fork head (C from −360° to 360°): C runs out of its range
     /// in the middle of the path; with unwinding on it turns back by whole turns there, once
-    /// (the same angle, within the limits), and no block turns it by more than a step's 10°.
+    /// (the same angle, within the limits), and no block turns it by more than a step's 10° —
+    /// with the steps on whole tens of degrees; and over two turns 5° off them, so that the
+    /// unwind does not start at a multiple of 180°.
     #[test]
     fn a_limited_axis_unwinds_where_it_would_leave_its_range() {
         let m = Machine::preset("head-head-ac").unwrap();
-        let poses: Vec<Pose> = (0..=3 * 36)
+        for (offset, steps) in [(0.0, 3 * 36), (5.0, 2 * 36)] {
+            unwinds_once(&m, offset, steps);
+        }
+    }
+
+    fn unwinds_once(m: &Machine, offset: f64, steps: usize) {
+        let poses: Vec<Pose> = (0..=steps)
             .map(|k| {
-                let turn = 10.0 * k as f64;
+                let turn = offset + 10.0 * k as f64;
                 Pose { tip: DVec3::new(0.0, 0.0, -0.1 * k as f64), axis: tilted(30.0, turn) }
             })
             .collect();
-        let s = solve(&m, &poses, 40.0, &SolveOptions { cone: 0.0, unwind: true, ball: None }).unwrap();
+        let s = solve(m, &poses, 40.0, &SolveOptions { cone: 0.0, unwind: true, ball: None }).unwrap();
         let unwinds: Vec<usize> = (0..poses.len()).filter(|&i| s.unwound[i].is_some()).collect();
         assert_eq!(unwinds.len(), 1, "{unwinds:?}");
         for i in 1..poses.len() {
@@ -495,7 +503,7 @@ mod tests {
         // instead: A from +30° to −30° and C by 180° in one block, the tool axis swung
         // through the vertical between two poses 10° apart (the job the issue tracker saw
         // refused for "the pole")
-        let exact = solve(&m, &poses, 40.0, &SolveOptions::exact()).unwrap();
+        let exact = solve(m, &poses, 40.0, &SolveOptions::exact()).unwrap();
         let flips = (1..poses.len()).any(|i| (exact.joints[i].rotary[1] - exact.joints[i - 1].rotary[1]).abs() > 50.0);
         assert!(flips);
     }
