@@ -673,4 +673,22 @@ mod tests {
             }
         }
     }
+
+    /// With unwinding on, a big block is priced by how far its middle axis strays from the middle
+    /// of the path's arc: from upright (C, A) = (0°, 0°) to A = 60°, the block to A = 60° passes
+    /// A = 30°, the arc's middle, and is kept. Each of the others would stray by nothing were the
+    /// middle taken elsewhere: A = 120° passes the arc's end (A = 60°), C = 180° the vertical,
+    /// A = −120° passes A = −60°.
+    #[test]
+    fn a_big_block_is_priced_from_the_middle_of_the_arc() {
+        let m = Machine::preset("head-head-ac").unwrap();
+        let f = Value::Fixed;
+        let end = tool_axis(&m, [0.0, 60.0]);
+        let candidates = [
+            vec![[f(0.0), f(0.0)]],
+            vec![[f(0.0), f(120.0)], [f(180.0), f(0.0)], [f(0.0), f(-120.0)], [f(0.0), f(60.0)]],
+        ];
+        let chosen = choose(&m, &candidates, &[DVec3::Z, end], true);
+        assert_eq!(chosen[1], [f(0.0), f(60.0)]);
+    }
 }
