@@ -691,4 +691,30 @@ mod tests {
         let chosen = choose(&m, &candidates, &[DVec3::Z, end], true);
         assert_eq!(chosen[1], [f(0.0), f(60.0)]);
     }
+
+    /// A path that starts inside the pole cone (1.2° from the pole, the cone 2°) and leaves it
+    /// towards a 3° tilt at 200°: the poses in the cone take C from the first pose outside it,
+    /// whose two settings are C = −70° with A = 3° and C = 110° with A = −3° at the end; of the
+    /// two branches the one that moves least from zero is kept, C near −70° throughout.
+    #[test]
+    fn a_path_starting_in_the_cone_takes_the_branch_that_moves_least() {
+        let m = Machine::preset("head-head-ac").unwrap();
+        let (a, b) = (tilted(1.2, 0.0), tilted(3.0, 200.0));
+        for steps in [4, 7] {
+            let poses: Vec<Pose> = (0..=steps)
+                .map(|k| {
+                    let s = k as f64 / steps as f64;
+                    pose(s * 40.0, (a * (1.0 - s) + b * s).normalize())
+                })
+                .collect();
+            let s =
+                solve(&m, &poses, 40.0, &SolveOptions { cone: 2f64.to_radians(), unwind: false, ball: None }).unwrap();
+            assert!(s.in_cone[0] && !s.in_cone[steps], "{:?}", s.in_cone);
+            for (k, j) in s.joints.iter().enumerate() {
+                assert!((-90.0..-50.0).contains(&j.rotary[0]), "{steps} steps, pose {k}: C {}", j.rotary[0]);
+            }
+            let last = s.joints[steps].rotary;
+            assert!((last[0] + 70.0).abs() < 1e-9 && (last[1] - 3.0).abs() < 1e-9, "{last:?}");
+        }
+    }
 }
