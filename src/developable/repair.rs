@@ -417,4 +417,24 @@ mod tests {
             assert!(raw_max_abs_delta(&r.surface) <= 1e-13);
         }
     }
+
+    /// The repair does not depend on the units: scaled by a power of two (exactly, in floating
+    /// point), a dragged strip is repaired in as many steps to the same strip scaled, bit for
+    /// bit — the steps stop on c_j relative to the three lengths it is the product of, and the
+    /// elimination's threshold is relative to its largest pivot.
+    #[test]
+    fn the_repair_does_not_depend_on_the_units() {
+        let s = tangent_surface(&helix(30), Span { from: 0.1, to: 1.0 }).unwrap();
+        let edit = dragged(&s, 9, DVec3::new(0.04, 0.07, -0.05));
+        let r = make_developable(&edit);
+        assert!(r.steps >= 2, "{} steps", r.steps);
+        for k in [-20, -7, 9, 30] {
+            let f = 2f64.powi(k);
+            let scaled = make_developable(&edit.map_points(|p| f * p).unwrap());
+            assert_eq!((scaled.steps, &scaled.anchors, &scaled.turned), (r.steps, &r.anchors, &r.turned), "2^{k}");
+            for (x, y) in r.surface.points().iter().zip(scaled.surface.points()) {
+                assert_eq!(f * *x, *y, "2^{k}");
+            }
+        }
+    }
 }
