@@ -437,4 +437,36 @@ mod tests {
             }
         }
     }
+
+    /// Two runs whose anchors stand side by side, so that the pair between them cannot move (its
+    /// two rulings held, its row of the elimination zero): a flat strip of six parallel rulings,
+    /// the two middle ones lifted alike (still parallel to each other), the two beside them short
+    /// (0.05), so that moving them is dear.
+    /// Each lifted ruling is its run's anchor; the strip comes out developable with both kept.
+    #[test]
+    fn anchors_side_by_side_hold_the_pair_between_them() {
+        let lengths = [1.0, 0.05, 1.0, 1.0, 0.05, 1.0];
+        let mut p: Vec<DVec3> = lengths
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &l)| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(i as f64, l, 0.0)])
+            .collect();
+        for i in [2, 3] {
+            p[2 * i + 1].z = 0.1;
+        }
+        let moved = |anchor: usize| {
+            let mut q = p.clone();
+            solve(&mut q, 6, &[anchor]);
+            q.iter().zip(&p).map(|(x, y)| (*x - *y).length_squared()).sum::<f64>()
+        };
+        // keeping the lifted ruling moves the strip less than keeping the short one beside it
+        assert!(moved(2) < 0.75 * moved(1) && moved(3) < 0.75 * moved(4), "{} {}", moved(2), moved(1));
+        let edit = RuledSurface::from_points(p).unwrap();
+        let r = make_developable(&edit);
+        assert_eq!(r.anchors, [2, 3]);
+        for i in [2, 3] {
+            assert_eq!(r.surface.segment(i), edit.segment(i));
+        }
+        assert!(raw_max_abs_delta(&r.surface) <= 1e-13, "{}", raw_max_abs_delta(&r.surface));
+    }
 }
