@@ -469,4 +469,17 @@ mod tests {
         }
         assert!(raw_max_abs_delta(&r.surface) <= 1e-13, "{}", raw_max_abs_delta(&r.surface));
     }
+
+    /// The safety net's turn of a ruling whose end a lies on the line of the ruling before it (to
+    /// rounding of the strip's size, here 10⁶): the two are coplanar already, and the plane
+    /// through that line and its end b leaves it as it is — not a plane through the line and a's
+    /// rounding error, which would turn it a quarter turn.
+    #[test]
+    fn a_ruling_through_the_line_before_it_is_left_by_the_safety_net() {
+        let mut p = vec![DVec3::ZERO, DVec3::new(1e6, 0.0, 0.0), DVec3::new(5e5, 1e-9, 0.0), DVec3::new(5e5, 0.0, 1e6)];
+        let was = p[3];
+        let scale = size_of(&p);
+        turn_into_plane(&mut p, 1, 0, scale);
+        assert!((p[3] - was).length() < 1e-6, "{} moved to {}", was, p[3]);
+    }
 }
