@@ -19,9 +19,10 @@
 //! edit (in the sum of the squared moves of the ends b, to first order). The move is largest at the
 //! neighbours of the dragged ruling and fades along the strip. Each ruling is then brought back to
 //! its length along its new direction, which changes no line. Should the steps not reach the
-//! tolerance (a strip folded onto itself), a sweep outwards from each anchor turns each ruling into
-//! the plane of its predecessor and its own end a by the least angle, which makes every pair torsal
-//! by construction.
+//! tolerance (a strip folded onto itself), a sweep outwards from the anchors turns each ruling of a
+//! broken pair into the plane of its predecessor on the way and its own end a by the least angle;
+//! between two anchors the sweeps from both meet at the middle ruling, which is turned onto the
+//! line where its two neighbours' planes meet. That makes every pair torsal by construction.
 //!
 //! **The anchor** of a run of broken pairs is its middle ruling: a dragged interior ruling breaks
 //! the two pairs it belongs to, and is their middle. A run of one pair at an end of the strip is
@@ -173,35 +174,87 @@ fn solve(p: &mut [DVec3], n: usize, held: &[usize]) -> usize {
     steps
 }
 
+/// The unit normal of the plane through the line of ruling `f` and the end a of ruling `j` (or
+/// its end b, where a lies on that line); `None` where ruling `j` lies on that line (torsal with
+/// `f` whatever its direction).
+fn plane_normal(p: &[DVec3], j: usize, f: usize, scale: f64) -> Option<DVec3> {
+    let lf = line(p, f);
+    let through = |q: DVec3| lf.dir.cross(q - lf.point);
+    [through(p[2 * j]), through(p[2 * j + 1])]
+        .into_iter()
+        .find(|n| n.length() > ZERO_LENGTH_REL * scale)
+        .map(DVec3::normalize)
+}
+
 /// Turns ruling `j` about its end a, by the least angle, into the plane through ruling `f` and a_j.
 fn turn_into_plane(p: &mut [DVec3], j: usize, f: usize, scale: f64) {
     let (a, b) = (p[2 * j], p[2 * j + 1]);
     let (old, length) = ((b - a).normalize(), (b - a).length());
-    let lf = line(p, f);
-    // the plane through the line of f and a_j (or b_j, where a_j lies on that line)
-    let through = |q: DVec3| lf.dir.cross(q - lf.point);
-    let Some(normal) =
-        [through(a), through(b)].into_iter().find(|n| n.length() > ZERO_LENGTH_REL * scale).map(DVec3::normalize)
-    else {
+    let Some(normal) = plane_normal(p, j, f, scale) else {
         return; // ruling j lies on the line of f: torsal already
     };
-    let dir = old.reject_from_normalized(normal).try_normalize().unwrap_or(lf.dir);
+    let dir = old.reject_from_normalized(normal).try_normalize().unwrap_or(line(p, f).dir);
     p[2 * j + 1] = a + length * dir;
 }
 
-/// The safety net (see the module): from each anchor outwards, every ruling of a broken pair turned
-/// into the plane of the ruling before it on the way and its own end a.
-fn sweep(p: &mut [DVec3], n: usize, anchors: &[usize], scale: f64) {
-    for &k in anchors {
-        for j in k + 1..n {
-            if broken(p, j - 1, scale) && !anchors.contains(&j) {
+/// Turns ruling `j` about its end a onto the line where the planes through its two neighbours'
+/// lines and a_j meet (the way along it nearer its own), which makes both of its pairs torsal;
+/// where the two planes are one (or a neighbour's line passes through it), into that plane.
+fn turn_onto_meeting(p: &mut [DVec3], j: usize, scale: f64) {
+    let (a, b) = (p[2 * j], p[2 * j + 1]);
+    let (old, length) = ((b - a).normalize(), (b - a).length());
+    match (plane_normal(p, j, j - 1, scale), plane_normal(p, j, j + 1, scale)) {
+        (Some(left), Some(right)) => {
+            // the sine of the angle between the two planes
+            let meet = left.cross(right);
+            if meet.length() > ZERO_LENGTH_REL {
+                let dir = meet.normalize();
+                p[2 * j + 1] = a + length * if dir.dot(old) < 0.0 { -dir } else { dir };
+            } else {
                 turn_into_plane(p, j, j - 1, scale);
             }
         }
-        for j in (0..k).rev() {
-            if broken(p, j, scale) && !anchors.contains(&j) {
+        (Some(_), None) => turn_into_plane(p, j, j - 1, scale),
+        (None, Some(_)) => turn_into_plane(p, j, j + 1, scale),
+        (None, None) => {}
+    }
+}
+
+/// The safety net (see the module): outwards from the first anchor to the strip's start and from
+/// the last to its end, and from both anchors of each pair of neighbouring anchors towards the
+/// middle ruling between them, every ruling of a broken pair turned into the plane of the ruling
+/// before it on the way and its own end a; the middle ruling, where two sweeps meet, onto the
+/// line where its two neighbours' planes meet.
+fn sweep(p: &mut [DVec3], n: usize, anchors: &[usize], scale: f64) {
+    let (Some(&first), Some(&last)) = (anchors.first(), anchors.last()) else { return };
+    for j in (0..first).rev() {
+        if broken(p, j, scale) {
+            turn_into_plane(p, j, j + 1, scale);
+        }
+    }
+    for j in last + 1..n {
+        if broken(p, j - 1, scale) {
+            turn_into_plane(p, j, j - 1, scale);
+        }
+    }
+    for w in anchors.windows(2) {
+        let (k, l) = (w[0], w[1]);
+        if l < k + 2 {
+            continue;
+        }
+        let middle = (k + l) / 2;
+        for j in k + 1..middle {
+            if broken(p, j - 1, scale) {
+                turn_into_plane(p, j, j - 1, scale);
+            }
+        }
+        for j in (middle + 1..l).rev() {
+            if broken(p, j, scale) {
                 turn_into_plane(p, j, j + 1, scale);
             }
+        }
+        if broken(p, middle - 1, scale) || broken(p, middle, scale) {
+            turn_onto_meeting(p, middle, scale);
         }
     }
 }
@@ -481,5 +534,80 @@ mod tests {
         let scale = size_of(&p);
         turn_into_plane(&mut p, 1, 0, scale);
         assert!((p[3] - was).length() < 1e-6, "{} moved to {}", was, p[3]);
+    }
+
+    /// The safety net from one anchor (ruling 12 of a cone, with ruling 10 dragged as well):
+    /// outwards from the anchor each ruling of a broken pair is turned once, by the least angle
+    /// from where it was, into the plane through the line of its neighbour towards the anchor and
+    /// its own end a; a ruling of a pair torsal already is left.
+    #[test]
+    fn the_safety_net_turns_each_ruling_once_by_the_least_angle() {
+        let s = cone(&helix(25), DVec3::new(0.0, 0.0, 4.0), Span { from: 0.2, to: 1.0 }).unwrap();
+        let edit = dragged(&dragged(&s, 12, DVec3::new(0.1, 0.05, -0.08)), 10, DVec3::new(-0.06, 0.04, 0.05));
+        let was = edit.points().to_vec();
+        let mut p = was.clone();
+        let scale = size_of(&p);
+        sweep(&mut p, 25, &[12], scale);
+        let swept = RuledSurface::from_points(p.clone()).unwrap();
+        assert!(raw_max_abs_delta(&swept) <= 1e-13);
+        assert_eq!(swept.segment(12), edit.segment(12));
+        for j in (0..25).filter(|&j| j != 12) {
+            let towards = if j > 12 { j - 1 } else { j + 1 };
+            let (a, old) = (p[2 * j], (was[2 * j + 1] - was[2 * j]).normalize());
+            let lf = line(&p, towards);
+            let normal = lf.dir.cross(a - lf.point).normalize();
+            let want = old.reject_from_normalized(normal).normalize();
+            let now = (p[2 * j + 1] - a).normalize();
+            assert!((now - want).length() < 1e-12 || now == old, "ruling {j}: {now} against {want}");
+        }
+    }
+
+    /// The safety net from two anchors (rulings 6 and 12 of a cone, both dragged): the rulings
+    /// between them are turned from each side in turn, and neither anchor is turned when the
+    /// other's sweep reaches it.
+    #[test]
+    fn the_safety_net_keeps_every_anchor() {
+        let s = cone(&helix(25), DVec3::new(0.0, 0.0, 4.0), Span { from: 0.2, to: 1.0 }).unwrap();
+        let edit = dragged(&dragged(&s, 12, DVec3::new(0.1, 0.05, -0.08)), 6, DVec3::new(-0.06, 0.04, 0.05));
+        let mut p = edit.points().to_vec();
+        let scale = size_of(&p);
+        sweep(&mut p, 25, &[6, 12], scale);
+        let swept = RuledSurface::from_points(p).unwrap();
+        assert!(raw_max_abs_delta(&swept) <= 1e-13);
+        for k in [6, 12] {
+            assert_eq!(swept.segment(k), edit.segment(k), "anchor {k}");
+        }
+        // the middle ruling 9, where the two sweeps meet, lies on the line where its neighbours'
+        // planes (each with a_9) meet, the way nearer where it was
+        let q = swept.points();
+        let (a, dir) = (q[18], (q[19] - q[18]).normalize());
+        for f in [8, 10] {
+            let lf = line(q, f);
+            assert!(lf.dir.cross(a - lf.point).normalize().dot(dir).abs() < 1e-12, "ruling 9 off the plane of {f}");
+        }
+        assert!(dir.dot(edit.segment(9).b - edit.segment(9).a) > 0.0);
+    }
+
+    /// Between anchors two apart the middle ruling is all there is: where the planes of its two
+    /// neighbours meet in a line it turns onto it; where they are one plane (a flat strip, its
+    /// middle ruling lifted), it turns back into that plane by the least angle.
+    #[test]
+    fn the_safety_net_between_anchors_two_apart() {
+        let flat = |i: usize| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(i as f64 + 0.2 * i as f64, 1.0, 0.0)];
+        let mut p: Vec<DVec3> = (0..5).flat_map(flat).collect();
+        p[7] += DVec3::new(0.0, 0.0, 0.5);
+        let scale = size_of(&p);
+        let mut swept = p.clone();
+        sweep(&mut swept, 5, &[2, 4], scale);
+        let back = (swept[7] - swept[6]).normalize();
+        let want = (p[7] - p[6]).reject_from_normalized(DVec3::Z).normalize();
+        assert!((back - want).length() < 1e-15, "{back} against {want}");
+        // the neighbours twisted out of the plane: their planes meet in a line
+        p[5] += DVec3::new(0.0, 0.0, 0.3);
+        p[9] -= DVec3::new(0.0, 0.0, 0.2);
+        let scale = size_of(&p);
+        sweep(&mut p, 5, &[2, 4], scale);
+        let swept = RuledSurface::from_points(p).unwrap();
+        assert!(raw_max_abs_delta(&swept) <= 1e-13, "{}", raw_max_abs_delta(&swept));
     }
 }
