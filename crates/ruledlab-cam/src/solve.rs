@@ -717,4 +717,27 @@ mod tests {
             assert!((last[0] + 70.0).abs() < 1e-9 && (last[1] - 3.0).abs() < 1e-9, "{last:?}");
         }
     }
+
+    /// The same nearest value where it is not the path's own: A of the fork head limited to
+    /// ±800° (five values of every angle), the tool tilted about X past a turn (from 6°, in 12°
+    /// steps), and at 360° two poses in the cone of 5° tilted 3° the other way, about Y. There C
+    /// keeps its neighbours' 0°, the path's own A is the exact 363° or 357°, and A is the tilt
+    /// nearest the axis with C = 0°, 0° modulo a turn: 360°, the value nearest the path's own,
+    /// not 720° or 0°.
+    #[test]
+    fn in_the_cone_the_nearest_of_many_turns_is_taken() {
+        let about_x = |alpha: f64| DVec3::new(0.0, -alpha.to_radians().sin(), alpha.to_radians().cos());
+        let about_y = tilted(3.0, 0.0);
+        let axes: Vec<DVec3> =
+            (0..30).map(|k| about_x(6.0 + 12.0 * k as f64)).chain([about_y, about_y, about_x(367.0)]).collect();
+        let poses: Vec<Pose> = axes.iter().map(|&a| pose(0.0, a)).collect();
+        let mut m = Machine::preset("head-head-ac").unwrap();
+        (m.rotary[1].min, m.rotary[1].max) = (Some(-800.0), Some(800.0));
+        let s = solve(&m, &poses, 40.0, &SolveOptions { cone: 5f64.to_radians(), unwind: false, ball: None }).unwrap();
+        assert_eq!(s.in_cone.iter().filter(|&&b| b).count(), 2);
+        for k in [30, 31] {
+            assert!(s.in_cone[k]);
+            assert!((s.joints[k].rotary[1].abs() - 360.0).abs() < 1e-9, "pose {k}: A {}", s.joints[k].rotary[1]);
+        }
+    }
 }
