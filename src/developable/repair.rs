@@ -174,16 +174,13 @@ fn solve(p: &mut [DVec3], n: usize, held: &[usize]) -> usize {
     steps
 }
 
-/// The unit normal of the plane through the line of ruling `f` and the end a of ruling `j` (or
-/// its end b, where a lies on that line); `None` where ruling `j` lies on that line (torsal with
-/// `f` whatever its direction).
+/// The unit normal of the plane through the line of ruling `f` and the end a of ruling `j`; `None`
+/// where a lies on that line (to rounding of the strip's size `scale`): the two rulings meet there,
+/// torsal whatever the direction of `j`.
 fn plane_normal(p: &[DVec3], j: usize, f: usize, scale: f64) -> Option<DVec3> {
     let lf = line(p, f);
-    let through = |q: DVec3| lf.dir.cross(q - lf.point);
-    [through(p[2 * j]), through(p[2 * j + 1])]
-        .into_iter()
-        .find(|n| n.length() > ZERO_LENGTH_REL * scale)
-        .map(DVec3::normalize)
+    let n = lf.dir.cross(p[2 * j] - lf.point);
+    (n.length() > ZERO_LENGTH_REL * scale).then(|| n.normalize())
 }
 
 /// Turns ruling `j` about its end a, by the least angle, into the plane through ruling `f` and a_j.
@@ -191,7 +188,7 @@ fn turn_into_plane(p: &mut [DVec3], j: usize, f: usize, scale: f64) {
     let (a, b) = (p[2 * j], p[2 * j + 1]);
     let (old, length) = ((b - a).normalize(), (b - a).length());
     let Some(normal) = plane_normal(p, j, f, scale) else {
-        return; // ruling j lies on the line of f: torsal already
+        return; // ruling j meets the line of f at its end a: torsal already
     };
     let dir = old.reject_from_normalized(normal).try_normalize().unwrap_or(line(p, f).dir);
     p[2 * j + 1] = a + length * dir;
@@ -199,7 +196,8 @@ fn turn_into_plane(p: &mut [DVec3], j: usize, f: usize, scale: f64) {
 
 /// Turns ruling `j` about its end a onto the line where the planes through its two neighbours'
 /// lines and a_j meet (the way along it nearer its own), which makes both of its pairs torsal;
-/// where the two planes are one (or a neighbour's line passes through it), into that plane.
+/// where the two planes are one, into that plane; where a neighbour's line passes through a_j
+/// (torsal with it whatever), into the other's plane.
 fn turn_onto_meeting(p: &mut [DVec3], j: usize, scale: f64) {
     let (a, b) = (p[2 * j], p[2 * j + 1]);
     let (old, length) = ((b - a).normalize(), (b - a).length());
@@ -524,9 +522,9 @@ mod tests {
     }
 
     /// The safety net's turn of a ruling whose end a lies on the line of the ruling before it (to
-    /// rounding of the strip's size, here 10⁶): the two are coplanar already, and the plane
-    /// through that line and its end b leaves it as it is — not a plane through the line and a's
-    /// rounding error, which would turn it a quarter turn.
+    /// rounding of the strip's size, here 10⁶): the two meet there, coplanar already, and the
+    /// ruling is left as it is — not turned a quarter turn into a plane through the line and a's
+    /// rounding error.
     #[test]
     fn a_ruling_through_the_line_before_it_is_left_by_the_safety_net() {
         let mut p = vec![DVec3::ZERO, DVec3::new(1e6, 0.0, 0.0), DVec3::new(5e5, 1e-9, 0.0), DVec3::new(5e5, 0.0, 1e6)];
@@ -609,5 +607,29 @@ mod tests {
         sweep(&mut p, 5, &[2, 4], scale);
         let swept = RuledSurface::from_points(p).unwrap();
         assert!(raw_max_abs_delta(&swept) <= 1e-13, "{}", raw_max_abs_delta(&swept));
+    }
+
+    /// Where the two sweeps meet at a ruling whose end a lies on one neighbour's line (torsal with
+    /// it whatever), the ruling turns by the least angle into the other neighbour's plane — here
+    /// the line of ruling 0 is the x axis through a_1, and ruling 2's plane with a_1 is z = 0 —
+    /// either way round.
+    #[test]
+    fn a_meeting_ruling_on_a_neighbours_line_turns_into_the_other_plane() {
+        let strip = [
+            DVec3::ZERO,
+            DVec3::new(2.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 1.0, 0.5),
+            DVec3::new(2.0, 0.1, 0.0),
+            DVec3::new(2.0, 1.0, 0.0),
+        ];
+        let want = DVec3::new(1.0, 1.25f64.sqrt(), 0.0);
+        let mut p = strip.to_vec();
+        turn_onto_meeting(&mut p, 1, size_of(&strip));
+        assert!((p[3] - want).length() < 1e-15, "{}", p[3]);
+        // mirrored: the rulings in the other order
+        let mut q = vec![strip[4], strip[5], strip[2], strip[3], strip[0], strip[1]];
+        turn_onto_meeting(&mut q, 1, size_of(&strip));
+        assert!((q[3] - want).length() < 1e-15, "{}", q[3]);
     }
 }
