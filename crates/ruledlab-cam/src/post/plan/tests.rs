@@ -443,3 +443,54 @@ fn a_program_reports_its_axes_feeds_and_speeds_in_its_units() {
     assert!(speeds.iter().any(|&s| s > 0.0), "the A turns are in the speeds");
     assert_eq!(speeds[1], p.motion[0].speed(4));
 }
+
+/// A refined path's poses named in the input's: with 4 path poses per input pose (two steps of
+/// refinement) path pose 9 is in input pose 2 (its line 30 of the file), and "between poses 9 and
+/// 10" is between input poses 2 and 3; the next input pose after path pose 7 is 2, after 8 it
+/// is 3, after 0 it is 1. Unrefined, a pose is its own number.
+#[test]
+fn a_refined_path_s_poses_are_named_in_the_input_s_numbering() {
+    let numbering = Numbering { stride: 4, lines: vec![10, 20, 30, 40] };
+    let refined = Namer(Some(&numbering));
+    assert_eq!(refined.at(9), (2, Some(30)));
+    assert_eq!([0, 7, 8, 9].map(|i| refined.next(i)), [1, 2, 3, 3]);
+    let given = Namer(None);
+    assert_eq!((given.at(9), given.next(9)), ((9, None), 10));
+    let between = |pose: usize| Error::Unreachable {
+        pose,
+        line: None,
+        message: crate::msg!(
+            "linearisation-tolerance",
+            pose = pose,
+            next = pose + 1,
+            deviation = 0.5,
+            rounds = 3,
+            tolerance = 0.01
+        ),
+    };
+    let Error::Unreachable { pose, line, message } = refined.error(between(9)) else { panic!("an unreachable pose") };
+    assert_eq!((pose, line), (2, Some(30)));
+    let number = |name: &str| message.args.iter().find(|(n, _)| *n == name).map(|(_, v)| v.clone());
+    assert_eq!((number("pose"), number("next")), (Some(Arg::Number(2.0)), Some(Arg::Number(3.0))));
+    assert_eq!(number("deviation"), Some(Arg::Number(0.5)));
+}
+
+/// What the plan says of its progress: 0.05 when it starts; after each round r of the
+/// linearisation 0.8 − 0.75·2^−(r+1), halving what is left before 0.8; 0.85 once the blocks are
+/// timed; then the sweep's share of the target done, from 0.85 to 0.95.
+#[test]
+fn the_plan_says_how_far_it_is() {
+    let o = PostOptions { scale: 2.0, target: Some(vec![DVec3::new(3.0, 1.0, 2.0); 120]), ..PostOptions::default() };
+    let mut said = Vec::new();
+    plan_reporting(&path(), &o, o.dialect.controller(), &mut |f| said.push(f)).unwrap();
+    assert_eq!(said[0], 0.05);
+    let timed = said.iter().position(|&f| f == 0.85).unwrap();
+    assert!(timed >= 2, "{said:?}");
+    for (r, &f) in said[1..timed].iter().enumerate() {
+        let want = 0.8 - 0.75 * 0.5f64.powi(r as i32 + 1);
+        assert!((f - want).abs() < 1e-15, "round {r}: {f} against {want}");
+    }
+    let sweep = &said[timed + 1..];
+    assert!(sweep.windows(2).all(|w| w[0] <= w[1]) && sweep.iter().all(|f| (0.85..=0.95).contains(f)), "{sweep:?}");
+    assert_eq!((sweep[0], sweep[sweep.len() - 1]), (0.85, 0.95));
+}
