@@ -584,6 +584,12 @@ mod tests {
             assert!(lf.dir.cross(a - lf.point).normalize().dot(dir).abs() < 1e-12, "ruling 9 off the plane of {f}");
         }
         assert!(dir.dot(edit.segment(9).b - edit.segment(9).a) > 0.0);
+        for i in 0..25 {
+            assert!(
+                (swept.segment(i).length() - edit.segment(i).length()).abs() < 1e-14,
+                "ruling {i} keeps its length"
+            );
+        }
     }
 
     /// Between anchors two apart the middle ruling is all there is: where the planes of its two
