@@ -606,13 +606,20 @@ mod tests {
         let back = (swept[7] - swept[6]).normalize();
         let want = (p[7] - p[6]).reject_from_normalized(DVec3::Z).normalize();
         assert!((back - want).length() < 1e-15, "{back} against {want}");
-        // the neighbours twisted out of the plane: their planes meet in a line
+        // the neighbours twisted out of the plane: their planes meet in a line, which the middle
+        // ruling takes the way nearer its own, keeping its length; the strip in either order (the
+        // line's two ways swap)
         p[5] += DVec3::new(0.0, 0.0, 0.3);
         p[9] -= DVec3::new(0.0, 0.0, 0.2);
-        let scale = size_of(&p);
-        sweep(&mut p, 5, &[2, 4], scale);
-        let swept = RuledSurface::from_points(p).unwrap();
-        assert!(raw_max_abs_delta(&swept) <= 1e-13, "{}", raw_max_abs_delta(&swept));
+        let reversed: Vec<DVec3> = p.chunks(2).rev().flatten().copied().collect();
+        for (given, anchors, middle) in [(p, [2, 4], 3), (reversed, [0, 2], 1)] {
+            let mut q = given.clone();
+            sweep(&mut q, 5, &anchors, size_of(&given));
+            let (was, now) = (given[2 * middle + 1] - given[2 * middle], q[2 * middle + 1] - q[2 * middle]);
+            assert!(now.dot(was) > 0.0 && (now.length() - was.length()).abs() < 1e-15, "{was} to {now}");
+            let swept = RuledSurface::from_points(q).unwrap();
+            assert!(raw_max_abs_delta(&swept) <= 1e-13, "{}", raw_max_abs_delta(&swept));
+        }
     }
 
     /// Where the two sweeps meet at a ruling whose end a lies on one neighbour's line (torsal with
