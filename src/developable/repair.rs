@@ -645,4 +645,27 @@ mod tests {
         turn_onto_meeting(&mut q, 1, size_of(&strip));
         assert!((q[3] - want).length() < 1e-15, "{}", q[3]);
     }
+
+    /// The safety net between anchors two apart on a flat fan of six rulings: whichever anchors
+    /// (1 and 3, or 3 and 5), the middle ruling lifted out of the plane comes back into it; and
+    /// where only one of its pairs is broken (the anchor after it lifted instead) it still turns,
+    /// onto the line where both neighbours' planes meet. The anchors stay as they were.
+    #[test]
+    fn the_safety_net_fixes_the_middle_between_any_anchors_two_apart() {
+        let fan: Vec<DVec3> =
+            (0..6).flat_map(|i| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(1.2 * i as f64, 1.0, 0.0)]).collect();
+        for (k, lifted) in [(1, 2), (3, 4), (1, 3), (3, 5)] {
+            let mut given = fan.clone();
+            given[2 * lifted + 1].z = 0.5;
+            let scale = size_of(&given);
+            assert!((0..5).any(|j| broken(&given, j, scale)));
+            let mut p = given.clone();
+            sweep(&mut p, 6, &[k, k + 2], scale);
+            let swept = RuledSurface::from_points(p.clone()).unwrap();
+            assert!(raw_max_abs_delta(&swept) <= 1e-13, "anchors {k}, {}: {}", k + 2, raw_max_abs_delta(&swept));
+            for anchor in [k, k + 2] {
+                assert_eq!((p[2 * anchor], p[2 * anchor + 1]), (given[2 * anchor], given[2 * anchor + 1]));
+            }
+        }
+    }
 }
