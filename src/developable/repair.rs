@@ -648,13 +648,13 @@ mod tests {
 
     /// The safety net between anchors two apart on a flat fan of six rulings: whichever anchors
     /// (1 and 3, or 3 and 5), the middle ruling lifted out of the plane comes back into it; and
-    /// where only one of its pairs is broken (the anchor after it lifted instead) it still turns,
+    /// where only one of its pairs is broken (an anchor beside it lifted instead) it still turns,
     /// onto the line where both neighbours' planes meet. The anchors stay as they were.
     #[test]
     fn the_safety_net_fixes_the_middle_between_any_anchors_two_apart() {
         let fan: Vec<DVec3> =
             (0..6).flat_map(|i| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(1.2 * i as f64, 1.0, 0.0)]).collect();
-        for (k, lifted) in [(1, 2), (3, 4), (1, 3), (3, 5)] {
+        for (k, lifted) in [(1, 2), (3, 4), (1, 3), (3, 5), (1, 1), (3, 3)] {
             let mut given = fan.clone();
             given[2 * lifted + 1].z = 0.5;
             let scale = size_of(&given);
