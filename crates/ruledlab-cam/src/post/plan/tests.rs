@@ -494,3 +494,55 @@ fn the_plan_says_how_far_it_is() {
     assert!(sweep.windows(2).all(|w| w[0] <= w[1]) && sweep.iter().all(|f| (0.85..=0.95).contains(f)), "{sweep:?}");
     assert_eq!((sweep[0], sweep[sweep.len() - 1]), (0.85, 0.95));
 }
+
+/// The blocks the program's sweep is measured over, one by one: the approach (the tool on its
+/// axis from the point it comes from down to the first pose, no span along the path), each
+/// block of the cut from the pose before to the next as the controller interpolates it (machine
+/// axes here, from the axis values it leaves with — after an unwinding, the unwound ones), an
+/// unwinding's way out along the tool axis and back at its pose, and the retract from the last
+/// pose. The path turns three times around a wall on the fork head, so C unwinds once.
+#[test]
+fn the_program_is_swept_block_by_block() {
+    let poses: Vec<Pose> = (0..=3 * 36)
+        .map(|k| {
+            let turn = (10.0 * k as f64).to_radians();
+            let axis = DVec3::new(0.5 * turn.cos(), 0.5 * turn.sin(), 0.75f64.sqrt());
+            Pose { tip: DVec3::new(0.0, 0.0, -0.1 * k as f64), axis }
+        })
+        .collect();
+    let path = ToolPath { poses, tool: Tool { radius: 3.0, length: 25.0, end: ToolEnd::Ball } };
+    let o = PostOptions { machine: Machine::preset("head-head-ac").unwrap(), ..PostOptions::default() };
+    let p = plan(&path, &o).unwrap();
+    let lin = &p.linearised;
+    let n = lin.poses.len();
+    let unwinds: Vec<usize> = (0..n).filter(|&i| lin.unwound[i].is_some()).collect();
+    assert_eq!(unwinds.len(), 1, "{unwinds:?}");
+    assert_eq!(p.sweep.len(), (n - 1) + 2 + unwinds.len());
+    let (first, last) = (&p.sweep[0], &p.sweep[p.sweep.len() - 1]);
+    assert_eq!((first.how, first.to, first.start, first.span), (Move::Straight, lin.poses[0], 0.0, 0.0));
+    assert_eq!(first.from.axis, lin.poses[0].axis);
+    assert_eq!((last.how, last.to, last.start, last.span), (Move::Straight, lin.poses[n - 1], (n - 1) as f64, 0.0));
+    let mut k = 1;
+    for i in 1..n {
+        let b = &p.sweep[k];
+        assert_eq!(
+            (b.from, b.to, b.how, b.start, b.span),
+            (lin.poses[i - 1], lin.poses[i], Move::Joints, (i - 1) as f64, 1.0)
+        );
+        assert_eq!(b.joints, (lin.leaving(i - 1), lin.joints[i]), "block {i}");
+        k += 1;
+        if unwinds.contains(&i) {
+            let out = &p.sweep[k];
+            assert_eq!(
+                (out.how, out.to, out.start, out.span, out.joints),
+                (Move::Straight, lin.poses[i], i as f64, 0.0, (lin.joints[i], lin.joints[i]))
+            );
+            let away = out.from.tip - lin.poses[i].tip;
+            assert!(
+                away.cross(lin.poses[i].axis).length() < 1e-9 && away.dot(lin.poses[i].axis) > 0.0,
+                "out along the axis"
+            );
+            k += 1;
+        }
+    }
+}
