@@ -546,3 +546,65 @@ fn the_program_is_swept_block_by_block() {
         }
     }
 }
+
+/// A job in inches is the job in millimetres: every length of the options given in inches
+/// (25.4 mm each) — the scale, feeds, clearance, tolerance, safe height, gauge, shank, holder and
+/// stock — makes the same plan in millimetres inside (the poses and axis values, the blocks'
+/// times, the swept blocks and the target's deviation), and the same warnings.
+#[test]
+fn a_job_in_inches_is_the_job_in_millimetres() {
+    let inch = 25.4;
+    let mm = PostOptions {
+        scale: 2.0,
+        feed: 900.0,
+        approach_feed: Some(300.0),
+        clearance: 5.0,
+        tolerance: 0.02,
+        safe_height: Some(80.0),
+        gauge: Some(60.0),
+        shank: Some(4.0),
+        holder: Some(Holder { radius: 12.0, length: 20.0 }),
+        stock: Some([[-15.0, -15.0, -15.0], [40.0, 15.0, 10.0]]),
+        target: Some((0..12).map(|k| DVec3::new(k as f64, 0.5, -0.2)).collect()),
+        ..PostOptions::default()
+    };
+    let inches = PostOptions {
+        units: Units::Inch,
+        scale: mm.scale / inch,
+        feed: mm.feed / inch,
+        approach_feed: mm.approach_feed.map(|f| f / inch),
+        clearance: mm.clearance / inch,
+        tolerance: mm.tolerance / inch,
+        safe_height: mm.safe_height.map(|h| h / inch),
+        gauge: mm.gauge.map(|g| g / inch),
+        shank: mm.shank.map(|r| r / inch),
+        holder: mm.holder.map(|h| Holder { radius: h.radius / inch, length: h.length / inch }),
+        stock: mm.stock.map(|s| s.map(|c| c.map(|x| x / inch))),
+        ..mm.clone()
+    };
+    let (a, b) = (plan(&path(), &mm).unwrap(), plan(&path(), &inches).unwrap());
+    let (la, lb) = (&a.linearised, &b.linearised);
+    assert_eq!(la.poses.len(), lb.poses.len());
+    for (p, q) in la.poses.iter().zip(&lb.poses) {
+        assert!(near(p.tip, q.tip) && near(p.axis, q.axis), "{p:?} {q:?}");
+    }
+    for (j, k) in la.joints.iter().zip(&lb.joints) {
+        assert!(
+            near(j.xyz, k.xyz) && (j.rotary[0] - k.rotary[0]).abs() < 1e-9 && (j.rotary[1] - k.rotary[1]).abs() < 1e-9
+        );
+    }
+    assert_eq!(a.motion.len(), b.motion.len());
+    for (x, y) in a.motion.iter().zip(&b.motion) {
+        assert!((x.minutes - y.minutes).abs() <= 1e-9 * x.minutes.max(1e-9), "{} {}", x.minutes, y.minutes);
+    }
+    assert_eq!(a.sweep.len(), b.sweep.len());
+    for (x, y) in a.sweep.iter().zip(&b.sweep) {
+        assert!(near(x.from.tip, y.from.tip) && near(x.to.tip, y.to.tip) && x.how == y.how);
+    }
+    let (da, db) = (a.deviation.as_ref().unwrap(), b.deviation.as_ref().unwrap());
+    for (x, y) in da.points.iter().zip(&db.points) {
+        assert!((x - y).abs() < 1e-9, "{x} {y}");
+    }
+    let reasons = |p: &Plan| p.warnings.iter().map(|w| w.message.reason).collect::<Vec<_>>();
+    assert_eq!(reasons(&a), reasons(&b));
+}
