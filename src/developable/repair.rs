@@ -293,6 +293,14 @@ mod tests {
             .collect()
     }
 
+    /// How far keeping ruling `anchor` alone moves the ends of the strip `p` (the sum of the squared
+    /// moves of its points): what `anchors` weighs between two middles.
+    fn moved_by_keeping(p: &[DVec3], anchor: usize) -> f64 {
+        let mut q = p.to_vec();
+        solve(&mut q, p.len() / 2, &[anchor]);
+        q.iter().zip(p).map(|(x, y)| (*x - *y).length_squared()).sum()
+    }
+
     /// `s` with the end b of ruling `k` moved by `by`.
     fn dragged(s: &RuledSurface, k: usize, by: DVec3) -> RuledSurface {
         let mut p = s.points().to_vec();
@@ -429,11 +437,7 @@ mod tests {
             let mut p = s.points().to_vec();
             p[2 * k + 1] += far;
             p[2 * other + 1] += near;
-            let moved = |anchor: usize| {
-                let mut q = p.clone();
-                solve(&mut q, s.len(), &[anchor]);
-                q.iter().zip(&p).map(|(x, y)| (*x - *y).length_squared()).sum::<f64>()
-            };
+            let moved = |anchor: usize| moved_by_keeping(&p, anchor);
             let (m10, m11) = (moved(10), moved(11));
             assert!((m10 - m11).abs() > 0.1 * m10.min(m11), "{m10} {m11}");
             let r = make_developable(&RuledSurface::from_points(p).unwrap());
@@ -456,11 +460,7 @@ mod tests {
                 (0..8).flat_map(|i| [DVec3::new(i as f64, 0.0, 0.0), DVec3::new(i as f64, 1.0, 0.0)]).collect();
             p[2 * end + 1] = DVec3::new(end as f64, 0.1, 0.05);
             let edit = RuledSurface::from_points(p.clone()).unwrap();
-            let moved = |anchor: usize| {
-                let mut q = p.clone();
-                solve(&mut q, 8, &[anchor]);
-                q.iter().zip(&p).map(|(x, y)| (*x - *y).length_squared()).sum::<f64>()
-            };
+            let moved = |anchor: usize| moved_by_keeping(&p, anchor);
             assert!(moved(next) < 0.01 && moved(end) > 0.1, "{} {}", moved(next), moved(end));
             let r = make_developable(&edit);
             assert_eq!(r.anchors, [end]);
@@ -505,11 +505,7 @@ mod tests {
         for i in [2, 3] {
             p[2 * i + 1].z = 0.1;
         }
-        let moved = |anchor: usize| {
-            let mut q = p.clone();
-            solve(&mut q, 6, &[anchor]);
-            q.iter().zip(&p).map(|(x, y)| (*x - *y).length_squared()).sum::<f64>()
-        };
+        let moved = |anchor: usize| moved_by_keeping(&p, anchor);
         // keeping the lifted ruling moves the strip less than keeping the short one beside it
         assert!(moved(2) < 0.75 * moved(1) && moved(3) < 0.75 * moved(4), "{} {}", moved(2), moved(1));
         let edit = RuledSurface::from_points(p).unwrap();

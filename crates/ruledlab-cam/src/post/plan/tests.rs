@@ -456,19 +456,10 @@ fn a_refined_path_s_poses_are_named_in_the_input_s_numbering() {
     assert_eq!([0, 7, 8, 9].map(|i| refined.next(i)), [1, 2, 3, 3]);
     let given = Namer(None);
     assert_eq!((given.at(9), given.next(9)), ((9, None), 10));
-    let between = |pose: usize| Error::Unreachable {
-        pose,
-        line: None,
-        message: crate::msg!(
-            "linearisation-tolerance",
-            pose = pose,
-            next = pose + 1,
-            deviation = 0.5,
-            rounds = 3,
-            tolerance = 0.01
-        ),
-    };
-    let Error::Unreachable { pose, line, message } = refined.error(between(9)) else { panic!("an unreachable pose") };
+    // only "pose" and "next" are renamed; the deviation stands for every other argument
+    let message = crate::msg!("linearisation-tolerance", pose = 9, next = 10, deviation = 0.5);
+    let between = Error::Unreachable { pose: 9, line: None, message };
+    let Error::Unreachable { pose, line, message } = refined.error(between) else { panic!("an unreachable pose") };
     assert_eq!((pose, line), (2, Some(30)));
     let number = |name: &str| message.args.iter().find(|(n, _)| *n == name).map(|(_, v)| v.clone());
     assert_eq!((number("pose"), number("next")), (Some(Arg::Number(2.0)), Some(Arg::Number(3.0))));
